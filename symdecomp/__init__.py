@@ -1,0 +1,67 @@
+"""symdecomp: exact, symbolic eigenanalysis of subdivision surfaces through polygonal decompositions.
+
+Implements and checks I.P. Ivrissimtzis, R. Zayer, H.-P. Seidel, *Polygonal decompositions of
+quadrilateral subdivision meshes*. The public API at a glance:
+"""
+
+from . import symbols
+from .circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
+from .claims import CheckResult, Claim, Status, Step, all_claims, check_claim, get_claim
+from .errors import (
+    FrequencyOutOfRangeError,
+    InvalidPolygonError,
+    InvalidSchemeError,
+    InvalidValenceError,
+    NotAffineError,
+    SymdecompError,
+)
+from .frequency import circulant_blocks, frequency_zero_matrix, per_frequency_matrix, per_frequency_matrix_at
+from .schemes import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
+from .spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
+from .tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "symbols",
+    # Section 2
+    "root_of_unity",
+    "fourier_matrix",
+    "circ",
+    "circ_from_offsets",
+    "generating_polynomial",
+    "circulant_eigenvalue",
+    # schemes and matrices
+    "Scheme",
+    "Stencil",
+    "VertexRule",
+    "catmull_clark",
+    "subdivision_matrix",
+    "circulant_blocks",
+    "per_frequency_matrix",
+    "per_frequency_matrix_at",
+    "frequency_zero_matrix",
+    # Section 5.1
+    "tangent_eigenvalues",
+    "invariant_ratio",
+    "invariant_ratio_at",
+    "invariant_ratio_limit",
+    "Spectrum",
+    "closed_form_spectrum",
+    "frequency_zero_eigenvalues",
+    # claims
+    "Claim",
+    "CheckResult",
+    "Status",
+    "Step",
+    "all_claims",
+    "check_claim",
+    "get_claim",
+    # errors
+    "SymdecompError",
+    "InvalidValenceError",
+    "FrequencyOutOfRangeError",
+    "InvalidPolygonError",
+    "NotAffineError",
+    "InvalidSchemeError",
+]

@@ -1,0 +1,27 @@
+"""The paper's claims, one module per section (``s2_*.py``, ``s4_*.py``, ...)."""
+
+from .registry import (
+    REGISTRY,
+    CheckResult,
+    Claim,
+    Status,
+    Step,
+    all_claims,
+    check_claim,
+    claim,
+    get_claim,
+    is_zero,
+)
+
+__all__ = [
+    "REGISTRY",
+    "CheckResult",
+    "Claim",
+    "Status",
+    "Step",
+    "all_claims",
+    "check_claim",
+    "claim",
+    "get_claim",
+    "is_zero",
+]

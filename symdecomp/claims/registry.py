@@ -1,0 +1,193 @@
+"""The registry of the paper's claims and the results of checking them.
+
+A claim is one numbered equation, proposition or remark of the paper. Each is registered
+with the paper's label, its section, its statement, and a *check*: a function returning a
+:class:`CheckResult` that says what was shown and how, together with the derivation steps
+(sympy objects, so that LaTeX comes from sympy's printer).
+
+Statuses:
+
+``proved``     shown symbolically, for every valence ``n`` (and every frequency).
+``verified``   shown exactly (rational or algebraic arithmetic) for each ``n`` in a stated range.
+``numeric``    agrees to a stated number of digits.
+``refuted``    false; the result carries a counterexample.
+``corrected``  false as printed; a corrected statement is proved, and the correction is shown.
+``error``      the check itself failed to run (never a finding about the paper).
+
+Registering a claim (later issues add modules ``symdecomp/claims/s*.py``; they are found
+automatically)::
+
+    @claim("Eq. 34", section="5.1", title="Eigenvalues of M_j", statement="...")
+    def eq34() -> CheckResult:
+        ...
+        return CheckResult(Status.PROVED, "char. polynomial vanishes identically", steps=(...))
+"""
+
+from __future__ import annotations
+
+import enum
+import importlib
+import pkgutil
+import re
+import traceback
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import Callable
+
+import sympy as sp
+
+__all__ = [
+    "Status",
+    "Step",
+    "CheckResult",
+    "Claim",
+    "claim",
+    "all_claims",
+    "get_claim",
+    "check_claim",
+    "REGISTRY",
+]
+
+
+class Status(str, enum.Enum):
+    """What a check established (see the module docstring)."""
+
+    PROVED = "proved"
+    VERIFIED = "verified"
+    NUMERIC = "numeric"
+    REFUTED = "refuted"
+    CORRECTED = "corrected"
+    ERROR = "error"
+
+    def __str__(self) -> str:
+        return self.value
+
+
+@dataclass(frozen=True)
+class Step:
+    """One displayed step of a derivation: a sentence and, optionally, a sympy object."""
+
+    #: What the step says, in words (may contain inline LaTeX between ``$``).
+    text: str
+    #: The object computed at this step (an expression, an equation, a matrix), or ``None``.
+    expr: object = None
+    #: Optional left-hand side, displayed as ``lhs = expr``.
+    lhs: object = None
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    """The outcome of checking one claim."""
+
+    #: What was established.
+    status: Status
+    #: One line saying how (the range of ``n`` checked, the identity that vanished, ...).
+    evidence: str
+    #: The derivation, as displayed steps.
+    steps: tuple[Step, ...] = ()
+    #: For ``refuted``/``corrected``: a concrete counterexample, in words.
+    counterexample: str | None = None
+    #: For ``corrected``: the corrected statement.
+    correction: str | None = None
+    #: For ``numeric``: the number of significant digits of agreement.
+    digits: int | None = None
+    #: For ``verified``: the valences checked, as ``(first, last)`` inclusive.
+    valences: tuple[int, int] | None = None
+
+    def __post_init__(self):
+        if self.status is Status.REFUTED and not self.counterexample:
+            raise ValueError("a refuted claim needs a counterexample")
+        if self.status is Status.CORRECTED and not self.correction:
+            raise ValueError("a corrected claim needs the corrected statement")
+        if self.status is Status.NUMERIC and self.digits is None:
+            raise ValueError("a numeric claim needs the digits it was checked to")
+        if self.status is Status.VERIFIED and self.valences is None:
+            raise ValueError("a verified claim needs the range of valences it was checked for")
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A claim of the paper, with the function that checks it."""
+
+    #: The paper's label, e.g. ``"Eq. 34"`` or ``"Proposition 5.1"``.
+    label: str
+    #: The paper's section, e.g. ``"5.1"``.
+    section: str
+    #: A short title.
+    title: str
+    #: The statement as the paper makes it (LaTeX allowed between ``$``).
+    statement: str
+    #: Returns the :class:`CheckResult`; pure, may be slow (results are cached).
+    check: Callable[[], CheckResult] = field(repr=False, compare=False)
+    #: Registration order, to list claims in the paper's order within a section.
+    order: int = 0
+
+    def sort_key(self):
+        section = tuple(int(p) for p in self.section.split("."))
+        return (section, _label_key(self.label), self.order)
+
+
+def _label_key(label: str):
+    kind_rank = {"Eq.": 0, "Proposition": 1, "Remark": 2}
+    kind = label.split(" ")[0]
+    nums = tuple(int(x) for x in re.findall(r"\d+", label))
+    return (nums, kind_rank.get(kind, 3), label)
+
+
+REGISTRY: dict[str, Claim] = {}
+
+
+def claim(label: str, *, section: str, title: str, statement: str):
+    """Decorator registering ``check`` as the check of the claim ``label``."""
+
+    def register(check: Callable[[], CheckResult]) -> Callable[[], CheckResult]:
+        if label in REGISTRY:
+            raise ValueError(f"claim {label!r} is registered twice")
+        REGISTRY[label] = Claim(label, section, title, statement, check, order=len(REGISTRY))
+        return check
+
+    return register
+
+
+def _load_sections() -> None:
+    from symdecomp import claims as package
+
+    for info in sorted(pkgutil.iter_modules(package.__path__), key=lambda m: m.name):
+        if info.name.startswith("s") and info.name[1:2].isdigit():
+            importlib.import_module(f"{package.__name__}.{info.name}")
+
+
+def all_claims() -> list[Claim]:
+    """Every registered claim, in the paper's order."""
+    _load_sections()
+    return sorted(REGISTRY.values(), key=Claim.sort_key)
+
+
+def get_claim(label: str) -> Claim:
+    """The claim with the given label (``"Eq. 34"``, ``"Proposition 5.1"``...)."""
+    _load_sections()
+    try:
+        return REGISTRY[label]
+    except KeyError:
+        raise KeyError(f"no claim labelled {label!r}; known: {', '.join(c.label for c in all_claims())}") from None
+
+
+@lru_cache(maxsize=None)
+def check_claim(label: str) -> CheckResult:
+    """Run (once) the check of a claim; an exception becomes status ``error`` with its message."""
+    c = get_claim(label)
+    try:
+        result = c.check()
+    except Exception as exc:  # the registry reports, the caller decides
+        tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
+        return CheckResult(Status.ERROR, f"check raised {tb}")
+    if not isinstance(result, CheckResult):
+        return CheckResult(Status.ERROR, f"check returned {type(result).__name__}, not CheckResult")
+    return result
+
+
+def is_zero(expr) -> bool:
+    """True when ``expr`` simplifies to exactly zero (a matrix: every entry)."""
+    if isinstance(expr, sp.MatrixBase):
+        return all(is_zero(e) for e in expr)
+    return sp.simplify(sp.expand(expr)) == 0

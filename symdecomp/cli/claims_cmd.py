@@ -1,0 +1,66 @@
+"""``symdecomp claims``: check every registered claim of the paper and report its status."""
+
+from __future__ import annotations
+
+from ..claims import Status, all_claims, check_claim
+from .common import print_json, progress
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "claims",
+        help="check the paper's claims and list their statuses",
+        description="Check every claim of the paper registered in symdecomp and print one row per claim: "
+        "label, status (proved, verified, numeric, refuted, corrected, error) and a line of evidence. "
+        "Exit status 1 if any check failed to run (status 'error'); refuted or corrected claims are "
+        "findings about the paper, not failures.",
+    )
+    p.add_argument("--json", action="store_true", help="print a JSON list of {label, section, title, status, evidence, ...}")
+    p.add_argument("--section", help="only the claims of this section of the paper (e.g. 5.1)")
+    p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
+    p.add_argument("--no-progress", action="store_true", help="do not draw a progress bar on stderr")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    claims = all_claims()
+    if args.section:
+        claims = [c for c in claims if c.section == args.section or c.section.startswith(args.section + ".")]
+    if args.label:
+        wanted = set(args.label)
+        unknown = wanted - {c.label for c in claims}
+        if unknown:
+            from ..errors import SymdecompError
+
+            raise SymdecompError(f"no claim labelled {', '.join(sorted(unknown))}")
+        claims = [c for c in claims if c.label in wanted]
+    rows = []
+    for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):
+        r = check_claim(c.label)
+        row = {
+            "label": c.label,
+            "section": c.section,
+            "title": c.title,
+            "status": r.status.value,
+            "evidence": r.evidence,
+        }
+        for key in ("counterexample", "correction", "digits", "valences"):
+            value = getattr(r, key)
+            if value is not None:
+                row[key] = list(value) if isinstance(value, tuple) else value
+        rows.append(row)
+    if args.json:
+        print_json(rows)
+    else:
+        wl = max((len(r["label"]) for r in rows), default=5)
+        for r in rows:
+            print(f"{r['section']:<5} {r['label']:<{wl}}  {r['status']:<9}  {r['evidence']}")
+            if "correction" in r:
+                print(f"{'':<5} {'':<{wl}}  {'':<9}  corrected: {r['correction']}")
+            if "counterexample" in r:
+                print(f"{'':<5} {'':<{wl}}  {'':<9}  counterexample: {r['counterexample']}")
+        counts = {}
+        for r in rows:
+            counts[r["status"]] = counts.get(r["status"], 0) + 1
+        print(f"{len(rows)} claims: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())))
+    return 1 if any(r["status"] == Status.ERROR.value for r in rows) else 0

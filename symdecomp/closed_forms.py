@@ -1,0 +1,221 @@
+"""The closed-form eigenvalues under test, and fast evaluation of them (mpmath or Arb balls).
+
+The cross-checks (:mod:`symdecomp.crosscheck`, :mod:`symdecomp.certify`) compare the full
+subdivision matrix with *closed forms*: the three eigenvalues of the Eq. 43 matrix, as
+expressions in ``n``, and the two eigenvalues of ``M_k`` (Eq. 34), as expressions in
+``c = cos(k pi/n)`` and ``s = sin(k pi/n)``. :func:`derived_closed_forms` takes them from
+:func:`symdecomp.spectrum.frequency_zero_eigenvalues` and
+:func:`symdecomp.tangent.tangent_eigenvalues`, the same ones that ``symdecomp spectrum``
+prints. A :class:`ClosedForms` can also be built by hand, which is how the tests inject a
+deliberately wrong closed form and see both checks fail.
+
+>>> from symdecomp.schemes import catmull_clark
+>>> cf = derived_closed_forms(catmull_clark())
+>>> cf.frequency_k[0]
+c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
+>>> [(str(v.label), v.frequency) for v in cf.eigenvalue_labels(3)][:4]
+[('Eq. 43 root 1', 0), ('Eq. 43 root 2', 0), ('Eq. 43 root 3', 0), ('Eq. 34 dominant', 1)]
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Callable, Mapping
+
+import flint
+import mpmath
+import sympy as sp
+
+from .errors import SymdecompError, check_valence
+from .frequency import COS, SIN
+from .schemes import Scheme
+from .spectrum import frequency_zero_eigenvalues
+from .symbols import n as N
+from .tangent import tangent_eigenvalues
+
+__all__ = ["ClosedForms", "ClosedFormLabel", "derived_closed_forms", "compile_expression", "UnsupportedExpressionError"]
+
+
+class UnsupportedExpressionError(SymdecompError):
+    """A closed form uses a function the fast evaluators do not know."""
+
+
+@dataclass(frozen=True)
+class ClosedFormLabel:
+    """Where one closed-form eigenvalue comes from."""
+
+    #: The n-gon frequency ``k`` (``0`` is the block of Eq. 43).
+    frequency: int
+    #: Which closed form: ``"Eq. 43 root i"``, ``"Eq. 34 dominant"`` or ``"Eq. 34 subdominant"``.
+    label: str
+
+
+@dataclass(frozen=True)
+class ClosedForms:
+    """The closed-form eigenvalues of a scheme's subdivision matrix, for symbolic ``n``."""
+
+    #: The scheme they belong to.
+    scheme: Scheme
+    #: The three eigenvalues of the Eq. 43 matrix, in ``n`` (and the scheme's parameters).
+    frequency_zero: tuple[sp.Expr, ...]
+    #: ``(dominant, subdominant)`` eigenvalue of ``M_k`` (Eq. 34), in ``c``, ``s`` (and ``n``).
+    frequency_k: tuple[sp.Expr, sp.Expr]
+    #: Names of the two ``M_k`` eigenvalues, for messages.
+    names: tuple[str, str] = ("dominant", "subdominant")
+
+    def eigenvalue_labels(self, n: int) -> tuple[ClosedFormLabel, ...]:
+        """The ``2n+1`` labels, in the order of :meth:`values`."""
+        n = check_valence(n)
+        out = [ClosedFormLabel(0, f"Eq. 43 root {i + 1}") for i in range(len(self.frequency_zero))]
+        for k in range(1, n):
+            out.extend(ClosedFormLabel(k, f"Eq. 34 {name}") for name in self.names)
+        return tuple(out)
+
+    def values(self, n: int, parameters: Mapping, *, engine: str = "mpmath", prec: int = 200) -> list:
+        """The ``2n+1`` closed-form eigenvalues at valence ``n``.
+
+        ``engine="mpmath"`` gives ``mpf``/``mpc`` at the current mpmath precision;
+        ``engine="arb"`` gives ``flint.acb`` balls computed at ``prec`` bits (rigorous
+        enclosures: the exact value is inside each ball).
+        """
+        n = check_valence(n)
+        zero, pair = _compiled(self, tuple(sorted(parameters.items(), key=lambda kv: str(kv[0]))), engine)
+        if engine == "arb":
+            old = flint.ctx.prec
+            flint.ctx.prec = prec
+            try:
+                nn = flint.acb(n)
+                out = [f(nn, nn, nn) for f in zero]
+                for k in range(1, n):
+                    c = flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(k, n)))
+                    s = flint.acb(flint.arb.sin_pi_fmpq(flint.fmpq(k, n)))
+                    out.extend(f(c, s, nn) for f in pair)
+            finally:
+                flint.ctx.prec = old
+            return out
+        nn = mpmath.mpf(n)
+        out = [f(nn, nn, nn) for f in zero]
+        for k in range(1, n):
+            c, s = mpmath.cospi(mpmath.mpf(k) / n), mpmath.sinpi(mpmath.mpf(k) / n)
+            out.extend(f(c, s, nn) for f in pair)
+        return [mpmath.mpmathify(v) for v in out]
+
+
+def derived_closed_forms(scheme: Scheme) -> ClosedForms:
+    """The closed forms that symdecomp derives for ``scheme`` (Eq. 34 and Eq. 43)."""
+    ev = tangent_eigenvalues(scheme)
+    return ClosedForms(scheme, tuple(frequency_zero_eigenvalues(scheme)), (ev.dominant, ev.subdominant))
+
+
+# --- fast evaluation -------------------------------------------------------------------------
+
+_MP_OPS = {
+    "const": lambda p, q: mpmath.mpf(p) / q,
+    "add": lambda xs: mpmath.fsum(xs),
+    "mul": lambda xs: mpmath.fprod(xs),
+    "sqrt": mpmath.sqrt,
+    "abs": abs,
+    "pow": lambda x, e: x**e,
+    "cos": mpmath.cos,
+    "sin": mpmath.sin,
+    "pi": lambda: +mpmath.pi,
+    "I": lambda: mpmath.mpc(0, 1),
+}
+
+
+def _acb_sum(xs):
+    total = flint.acb(0)
+    for x in xs:
+        total += x
+    return total
+
+
+def _acb_prod(xs):
+    total = flint.acb(1)
+    for x in xs:
+        total *= x
+    return total
+
+
+_ARB_OPS = {
+    "const": lambda p, q: flint.acb(flint.fmpq(p, q)),
+    "add": _acb_sum,
+    "mul": _acb_prod,
+    "sqrt": lambda x: flint.acb(x).sqrt(),
+    "abs": lambda x: flint.acb(abs(flint.acb(x))),
+    "pow": lambda x, e: flint.acb(x) ** e,
+    "cos": lambda x: flint.acb(x).cos(),
+    "sin": lambda x: flint.acb(x).sin(),
+    "pi": lambda: flint.acb(flint.arb.pi()),
+    "I": lambda: flint.acb(0, 1),
+}
+
+
+def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: str = "mpmath") -> Callable:
+    """Turn a sympy expression into a fast function of ``variables`` (mpmath or Arb).
+
+    Rationals stay exact (``p/q`` at the working precision, or an exact Arb ball), so the Arb
+    version is a rigorous enclosure. Supported: ``+ * **``, ``sqrt``, ``Abs``, ``cos``,
+    ``sin``, ``pi``, ``I``; anything else raises :class:`UnsupportedExpressionError`.
+
+    >>> x = sp.Symbol("x")
+    >>> f = compile_expression(sp.sqrt(x**2 + 1) / 3, (x,))
+    >>> with mpmath.workdps(20):
+    ...     print(f(mpmath.mpf(2)))
+    0.74535599249992989801
+    """
+    ops = {"mpmath": _MP_OPS, "arb": _ARB_OPS}[engine]
+    index = {v: i for i, v in enumerate(variables)}
+
+    def build(e):
+        if e in index:
+            i = index[e]
+            return lambda args: args[i]
+        if e.is_Rational:
+            p, q = int(e.p), int(e.q)
+            return lambda args: ops["const"](p, q)  # at the precision in force when called
+        if e is sp.pi:
+            return lambda args: ops["pi"]()
+        if e is sp.I:
+            return lambda args: ops["I"]()
+        if isinstance(e, sp.Add):
+            parts = [build(a) for a in e.args]
+            return lambda args: ops["add"]([f(args) for f in parts])
+        if isinstance(e, sp.Mul):
+            parts = [build(a) for a in e.args]
+            return lambda args: ops["mul"]([f(args) for f in parts])
+        if isinstance(e, sp.Pow):
+            base = build(e.base)
+            if e.exp == sp.Rational(1, 2):
+                return lambda args: ops["sqrt"](base(args))
+            if e.exp == -sp.Rational(1, 2):
+                one = build(sp.Integer(1))
+                return lambda args: one(args) / ops["sqrt"](base(args))
+            if e.exp.is_Integer:
+                k = int(e.exp)
+                return lambda args: ops["pow"](base(args), k)
+            if e.exp.is_Rational and e.exp.q == 2:
+                k = int(e.exp.p)
+                return lambda args: ops["pow"](ops["sqrt"](base(args)), k)
+        if isinstance(e, sp.Abs):
+            inner = build(e.args[0])
+            return lambda args: ops["abs"](inner(args))
+        if isinstance(e, (sp.cos, sp.sin)):
+            inner = build(e.args[0])
+            name = "cos" if isinstance(e, sp.cos) else "sin"
+            return lambda args: ops[name](inner(args))
+        raise UnsupportedExpressionError(f"cannot evaluate {e} (in a closed form) with {engine}")
+
+    f = build(sp.sympify(expr))
+    return lambda *args: f(args)
+
+
+@lru_cache(maxsize=64)
+def _compiled(cf: ClosedForms, parameters: tuple, engine: str):
+    subs = dict(parameters)
+    variables = (COS, SIN, N)
+    zero = tuple(compile_expression(sp.sympify(e).subs(subs), variables, engine) for e in cf.frequency_zero)
+    pair = tuple(compile_expression(sp.sympify(e).subs(subs), variables, engine) for e in cf.frequency_k)
+    return zero, pair

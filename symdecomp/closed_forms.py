@@ -164,7 +164,7 @@ def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: 
     >>> f = compile_expression(sp.sqrt(x**2 + 1) / 3, (x,))
     >>> with mpmath.workdps(20):
     ...     print(f(mpmath.mpf(2)))
-    0.74535599249992989801
+    0.7453559924999298988
     """
     ops = {"mpmath": _MP_OPS, "arb": _ARB_OPS}[engine]
     index = {v: i for i, v in enumerate(variables)}

@@ -12,7 +12,7 @@ defective: rows 2 and 3 of ``A - mu I`` are never proportional, so ``rank(A - mu
 >>> from symdecomp.symbols import alpha, beta
 >>> w = jordan_vertex_weights(catmull_clark(alpha, beta), 5, sp.Rational(3, 8))
 >>> w[alpha], w[beta]
-(1/20, -1/40)
+(-1/8, 1/8)
 >>> jordan_block_size(catmull_clark(alpha, beta).substitute(w), 5, sp.Rational(3, 8))
 2
 """

@@ -270,7 +270,10 @@ def certify(
         prec *= 2
     order = sorted(clusters, key=lambda cl: (-_mid_abs(balls[cl[0]]), -_mid_re(balls[cl[0]])))
     multiplicities = tuple(len(cl) for cl in order)
-    texts = tuple(_text(balls[cl[0]], digits) for cl in order)
+    # the printed values: a square root of a vanishing discriminant (a defective eigenvalue)
+    # is only known to half the working precision, so they are recomputed with room to spare
+    text_balls = cf.values(n, subs, engine="arb", prec=max(prec, 8 * digits + 128))
+    texts = tuple(_text(text_balls[cl[0]], digits) for cl in order)
     if identity:
         note = "multiplicities certified" if certified else "distinct values not separated at the precision limit"
         return Certificate(
@@ -325,7 +328,7 @@ def _text(ball, digits):
 
     with mpmath.workdps(digits + 5):
         re = mpmath.mpf(ball.real.mid().str(digits + 5, radius=False))
-        im = mpmath.mpf(ball.imag.mid().str(digits + 5, radius=False))
+        im = mpmath.mpf(0) if ball.imag.contains(0) else mpmath.mpf(ball.imag.mid().str(digits + 5, radius=False))
         value = re if im == 0 else mpmath.mpc(re, im)
         return format_value(value, digits)
 
@@ -392,14 +395,26 @@ def _refute(chi, squarefree, balls, labels, n, digits) -> str | None:
         product *= f
     if product.degree() < 1:
         return None
-    for ball, _ in product.complex_roots():
+    roots = [ball for ball, _ in product.complex_roots()]
+    mids = [flint.acb(r.mid()) for r in roots]
+    radii = [r.rad() for r in roots]
+    for i, ball in enumerate(roots):
         owners = [e for (f, e), p in zip(squarefree, polys) if p(ball).contains(0)]
         if len(owners) != 1:
             continue
-        inside = [i for i, v in enumerate(balls) if ball.contains(v)]
+        # a square around the root that meets no other isolating ball holds no other eigenvalue
+        separation = min(
+            ((abs(mids[i] - mids[j]) - 2 * radii[j]).lower() for j in range(len(roots)) if j != i),
+            default=flint.arb(1),
+        )
+        half_side = flint.arb(separation.mid() / 2)
+        if not half_side > 2 * radii[i]:
+            continue
+        square = flint.acb(flint.arb(ball.real.mid(), half_side), flint.arb(ball.imag.mid(), half_side))
+        inside = [k for k, v in enumerate(balls) if square.contains(v)]
         if len(inside) > owners[0]:
             return (
                 f"n = {n}: {len(inside)} closed-form eigenvalues lie at the eigenvalue {_text(ball, digits)} "
-                f"({_describe([labels[i] for i in inside])}), whose multiplicity in the full matrix is {owners[0]} (certified)"
+                f"({_describe([labels[k] for k in inside])}), whose multiplicity in the full matrix is {owners[0]} (certified)"
             )
     return None

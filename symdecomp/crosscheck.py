@@ -214,11 +214,12 @@ def numeric_check(
         raise ValueError(f"max_dps = {max_dps} leaves no room above dps = {dps} (need at least dps + 10)")
     labels = cf.eigenvalue_labels(n)
     # the closed forms are evaluated well beyond any working precision, so that their own
-    # rounding never matters; equal closed forms are grouped at that precision
+    # rounding never matters; values that agree to dps + 2 digits are one value for a
+    # comparison to dps digits (a split finer than that could not be resolved anyway)
     reference = max_dps + 30
     with mpmath.workdps(reference):
         values = cf.values(n, subs)
-        groups = group_values(values, labels, mpmath.mpf(10) ** (-(reference - 10)))
+        groups = group_values(values, labels, mpmath.mpf(10) ** (-(dps + 2)))
     precisions: list[int] = []
     previous = None
     matches: list[EigenvalueMatch] = []

@@ -44,14 +44,14 @@ neither can be shown the result is ``undecided``, which is a failure.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Mapping
 
 import flint
 import sympy as sp
 
-from .closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
+from .closed_forms import ClosedFormLabel, ClosedForms, UnsupportedExpressionError, compile_expression, derived_closed_forms
 from .crosscheck import CheckStatus
 from .errors import check_valence
 from .exact import characteristic_polynomial, parameter_values
@@ -78,6 +78,26 @@ class SymmetricFunctions:
     determinant: dict | None
     #: Why the identity cannot be formed, when one of the above is ``None``.
     reason: str = ""
+    #: Exact evaluators of the coefficients, by expression; not part of the value.
+    _compiled: dict = field(default_factory=dict, init=False, repr=False, compare=False, hash=False)
+
+    def rational_at(self, expr: sp.Expr, at: dict):
+        """``expr`` at ``{n: .., parameter: ..}`` as an ``fmpq``, or ``None`` if it is not rational there."""
+        variables = tuple(sorted(at, key=str))
+        key = (expr, variables)
+        if key not in self._compiled:
+            try:
+                self._compiled[key] = compile_expression(expr, variables, "fmpq")
+            except UnsupportedExpressionError:
+                self._compiled[key] = None
+        f = self._compiled[key]
+        values = [sp.sympify(at[v]) for v in variables]
+        if f is not None and all(v.is_Rational for v in values):
+            try:
+                return f(*(flint.fmpq(int(v.p), int(v.q)) for v in values))
+            except (UnsupportedExpressionError, ZeroDivisionError):
+                pass
+        return _rational(expr, at)
 
 
 def _to_laurent(expr: sp.Expr):
@@ -185,9 +205,9 @@ def closed_form_characteristic_value(sym: SymmetricFunctions, n: int, subs: dict
     ``None`` when the symmetric functions are not rational at this ``n``.
     """
     at = {N: n, **subs}
-    zero = [_rational(e, at) for e in sym.frequency_zero]
-    trace = {p: _rational(c, at) for p, c in sym.trace.items()}
-    det = {p: _rational(c, at) for p, c in sym.determinant.items()}
+    zero = [sym.rational_at(e, at) for e in sym.frequency_zero]
+    trace = {p: sym.rational_at(c, at) for p, c in sym.trace.items()}
+    det = {p: sym.rational_at(c, at) for p, c in sym.determinant.items()}
     if None in zero or None in trace.values() or None in det.values():
         return None
     low = min([0, *trace, *det])
@@ -272,7 +292,11 @@ def certify(
     multiplicities = tuple(len(cl) for cl in order)
     # the printed values: a square root of a vanishing discriminant (a defective eigenvalue)
     # is only known to half the working precision, so they are recomputed with room to spare
-    text_balls = cf.values(n, subs, engine="arb", prec=max(prec, 8 * digits + 128))
+    accurate = flint.arb(10) ** (-(digits + 5))
+    if all(b.rad() < accurate for b in balls):
+        text_balls = balls
+    else:
+        text_balls = cf.values(n, subs, engine="arb", prec=max(2 * prec, 8 * digits + 128))
     texts = tuple(_text(text_balls[cl[0]], digits) for cl in order)
     if identity:
         note = "multiplicities certified" if certified else "distinct values not separated at the precision limit"

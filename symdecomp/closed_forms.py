@@ -19,8 +19,7 @@ c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Callable, Mapping
 
@@ -64,6 +63,17 @@ class ClosedForms:
     frequency_k: tuple[sp.Expr, sp.Expr]
     #: Names of the two ``M_k`` eigenvalues, for messages.
     names: tuple[str, str] = ("dominant", "subdominant")
+    #: Compiled evaluators, by (parameters, engine); not part of the value.
+    _compiled: dict = field(default_factory=dict, init=False, repr=False, compare=False, hash=False)
+
+    def __getstate__(self):
+        state = dict(self.__dict__)
+        state["_compiled"] = {}  # compiled functions do not pickle; they are rebuilt on use
+        return state
+
+    def __setstate__(self, state):
+        for key, value in state.items():
+            object.__setattr__(self, key, value)
 
     def eigenvalue_labels(self, n: int) -> tuple[ClosedFormLabel, ...]:
         """The ``2n+1`` labels, in the order of :meth:`values`."""
@@ -81,7 +91,10 @@ class ClosedForms:
         enclosures: the exact value is inside each ball).
         """
         n = check_valence(n)
-        zero, pair = _compiled(self, tuple(sorted(parameters.items(), key=lambda kv: str(kv[0]))), engine)
+        key = (tuple(sorted(parameters.items(), key=lambda kv: str(kv[0]))), engine)
+        if key not in self._compiled:
+            self._compiled[key] = _compile_closed_forms(self, key[0], engine)
+        zero, pair = self._compiled[key]
         if engine == "arb":
             old = flint.ctx.prec
             flint.ctx.prec = prec
@@ -103,6 +116,7 @@ class ClosedForms:
         return [mpmath.mpmathify(v) for v in out]
 
 
+@lru_cache(maxsize=32)
 def derived_closed_forms(scheme: Scheme) -> ClosedForms:
     """The closed forms that symdecomp derives for ``scheme`` (Eq. 34 and Eq. 43)."""
     ev = tangent_eigenvalues(scheme)
@@ -139,6 +153,34 @@ def _acb_prod(xs):
     return total
 
 
+def _exact_only(name):
+    def fail(*args):
+        raise UnsupportedExpressionError(f"{name} of a rational is not evaluated exactly")
+
+    return fail
+
+
+def _fmpq_prod(xs):
+    total = flint.fmpq(1)
+    for x in xs:
+        total *= x
+    return total
+
+
+_FMPQ_OPS = {
+    "const": lambda p, q: flint.fmpq(p, q),
+    "add": lambda xs: sum(xs, flint.fmpq(0)),
+    "mul": _fmpq_prod,
+    "sqrt": _exact_only("sqrt"),
+    "abs": lambda x: abs(x),
+    "pow": lambda x, e: x**e,
+    "cos": _exact_only("cos"),
+    "sin": _exact_only("sin"),
+    "pi": _exact_only("pi"),
+    "I": _exact_only("I"),
+}
+
+
 _ARB_OPS = {
     "const": lambda p, q: flint.acb(flint.fmpq(p, q)),
     "add": _acb_sum,
@@ -157,7 +199,8 @@ def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: 
     """Turn a sympy expression into a fast function of ``variables`` (mpmath or Arb).
 
     Rationals stay exact (``p/q`` at the working precision, or an exact Arb ball), so the Arb
-    version is a rigorous enclosure. Supported: ``+ * **``, ``sqrt``, ``Abs``, ``cos``,
+    version is a rigorous enclosure; ``engine="fmpq"`` evaluates a rational function exactly
+    (``flint.fmpq``) and refuses square roots and the like. Supported: ``+ * **``, ``sqrt``, ``Abs``, ``cos``,
     ``sin``, ``pi``, ``I``; anything else raises :class:`UnsupportedExpressionError`.
 
     >>> x = sp.Symbol("x")
@@ -166,7 +209,7 @@ def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: 
     ...     print(f(mpmath.mpf(2)))
     0.7453559924999298988
     """
-    ops = {"mpmath": _MP_OPS, "arb": _ARB_OPS}[engine]
+    ops = {"mpmath": _MP_OPS, "arb": _ARB_OPS, "fmpq": _FMPQ_OPS}[engine]
     index = {v: i for i, v in enumerate(variables)}
 
     def build(e):
@@ -212,8 +255,7 @@ def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: 
     return lambda *args: f(args)
 
 
-@lru_cache(maxsize=64)
-def _compiled(cf: ClosedForms, parameters: tuple, engine: str):
+def _compile_closed_forms(cf: ClosedForms, parameters: tuple, engine: str):
     subs = dict(parameters)
     variables = (COS, SIN, N)
     zero = tuple(compile_expression(sp.sympify(e).subs(subs), variables, engine) for e in cf.frequency_zero)

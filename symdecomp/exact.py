@@ -23,6 +23,7 @@ from typing import Mapping
 import flint
 import sympy as sp
 
+from .closed_forms import UnsupportedExpressionError, compile_expression
 from .errors import InvalidSchemeError, check_valence
 from .schemes import Scheme, subdivision_matrix
 from .symbols import n as N
@@ -72,6 +73,50 @@ def exact_weight(weight: sp.Expr, n: int, subs: Mapping) -> flint.fmpq:
     return flint.fmpq(int(value.p), int(value.q))
 
 
+_RULE_CACHE: dict = {}
+
+
+def _weight_evaluator(scheme: Scheme, subs: Mapping):
+    """A function ``weight -> fmpq`` at a valence, compiled once per scheme (exact throughout).
+
+    Weights are rational functions of ``n`` and the parameters; they are compiled to exact
+    FLINT arithmetic. A weight that is not (e.g. with a square root of a parameter value) is
+    evaluated by sympy instead.
+    """
+    cached = _RULE_CACHE.get(id(scheme))
+    if cached is None or cached[0] is not scheme:
+        cached = (scheme, {})
+        _RULE_CACHE[id(scheme)] = cached
+    compiled = cached[1]
+    variables = (N, *scheme.parameters)
+    values = []
+    for p in scheme.parameters:
+        value = sp.sympify(subs[p])
+        values.append(flint.fmpq(int(value.p), int(value.q)) if value.is_Rational else None)
+
+    def at(n: int):
+        args = (flint.fmpq(n), *values)
+
+        def w(expr):
+            if None not in values:
+                if expr not in compiled:
+                    try:
+                        compiled[expr] = compile_expression(expr, variables, "fmpq")
+                    except UnsupportedExpressionError:
+                        compiled[expr] = None
+                f = compiled[expr]
+                if f is not None:
+                    try:
+                        return f(*args)
+                    except (UnsupportedExpressionError, ZeroDivisionError):
+                        pass
+            return exact_weight(expr, n, subs)
+
+        return w
+
+    return at
+
+
 def sparse_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None = None) -> dict:
     """The nonzero entries ``{(row, column): fmpq}`` of the subdivision matrix, from the rules.
 
@@ -82,10 +127,7 @@ def sparse_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None
     if n < scheme.minimum_valence():
         subdivision_matrix(scheme, n)  # raises the error that names the problem
     subs = parameter_values(scheme, parameters)
-
-    def w(expr):
-        return exact_weight(expr, n, subs)
-
+    w = _weight_evaluator(scheme, subs)(n)
     entries: dict = {}
 
     def add(r, c, x):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import multiprocessing
 import os
 import time
@@ -47,22 +48,34 @@ def _one(n, *, scheme, certified, dps, closed_forms):
     return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms)
 
 
+#: The job of the forked workers, set before they start (so only valences are sent to them).
+_JOB: dict = {}
+
+
+def _one_forked(n):
+    return _one(n, **_JOB)
+
+
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
                    jobs: int = 1, show_progress: bool = True):
     """Yield the check of each valence in order (a :class:`~symdecomp.certify.Certificate` or
     :class:`~symdecomp.crosscheck.NumericCheck`), in ``jobs`` processes."""
     valences = list(valences)
     closed_forms = closed_forms or derived_closed_forms(scheme)
-    work = partial(_one, scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms)
+    job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms)
     label = "certify" if certified else f"check {dps} digits"
     if jobs > 1 and len(valences) > 1 and "fork" in multiprocessing.get_all_start_methods():
-        if certified:
-            # the symbolic step is shared: do it once before the workers fork
-            work(valences[0])
-        with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("fork")) as pool:
-            # large valences first would balance better, but rows must come out in order
-            yield from progress(pool.map(work, valences, chunksize=1), len(valences), label, enabled=show_progress)
+        first = _one(valences[0], **job)  # also does the symbolic step once, before the workers fork
+        _JOB.clear()
+        _JOB.update(job)
+        try:
+            with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("fork")) as pool:
+                rest = pool.map(_one_forked, valences[1:], chunksize=1)
+                yield from progress(itertools.chain([first], rest), len(valences), label, enabled=show_progress)
+        finally:
+            _JOB.clear()
     else:
+        work = partial(_one, **job)
         yield from progress(map(work, valences), len(valences), label, enabled=show_progress)
 
 

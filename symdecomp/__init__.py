@@ -18,6 +18,11 @@ from .errors import (
 from .frequency import circulant_blocks, frequency_zero_matrix, per_frequency_matrix, per_frequency_matrix_at
 from .schemes import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from .spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
+from .certify import Certificate, certify
+from .closed_forms import ClosedForms, derived_closed_forms
+from .crosscheck import CheckStatus, NumericCheck, numeric_check
+from .defective import jordan_block_size, jordan_vertex_weights
+from .exact import characteristic_polynomial, exact_subdivision_matrix
 from .tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 
 __version__ = "0.1.0"
@@ -49,6 +54,18 @@ __all__ = [
     "Spectrum",
     "closed_form_spectrum",
     "frequency_zero_eigenvalues",
+    # cross-checks against the full matrix
+    "ClosedForms",
+    "derived_closed_forms",
+    "numeric_check",
+    "NumericCheck",
+    "certify",
+    "Certificate",
+    "CheckStatus",
+    "exact_subdivision_matrix",
+    "characteristic_polynomial",
+    "jordan_vertex_weights",
+    "jordan_block_size",
     # claims
     "Claim",
     "CheckResult",

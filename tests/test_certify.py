@@ -171,3 +171,13 @@ def test_certified_up_to_128():
     for n in range(41, 129):
         r = certify(CC, n)
         assert r.ok and r.multiplicities_certified, r.message
+
+
+def test_claim_full_spectrum_is_verified():
+    from symdecomp.claims import Status, check_claim
+
+    result = check_claim("Spectrum (Eq. 34, Eq. 43)")
+    assert result.status is Status.VERIFIED and result.valences == (3, 48)
+    omega = sp.Symbol("omega")
+    assert sp.simplify(result.steps[0].expr - (omega / 16 + sp.Rational(5, 8) + 1 / (16 * omega))) == 0
+    assert result.steps[1].expr == sp.Rational(1, 16)

@@ -230,7 +230,7 @@ def numeric_check(
             eigs = full_matrix_eigenvalues(scheme, n, work, subs, eigensolver=eigensolver)
         except RuntimeError:  # QR did not converge at this precision: try the next one
             previous = None
-            work = work + max(10, work // 2)
+            work = _next_precision(work)
             continue
         with mpmath.workdps(reference):
             matches, means = _match(groups, [mpmath.mpmathify(e) for e in eigs], dps)
@@ -238,7 +238,7 @@ def numeric_check(
         if converged:
             return _verdict(scheme, n, dps, tuple(precisions), matches)
         previous = means
-        work = work + max(10, work // 2)
+        work = _next_precision(work)
     if not matches:
         return NumericCheck(
             n=n,
@@ -265,6 +265,11 @@ def numeric_check(
         message=f"n = {n}: the numeric spectrum did not converge to {dps} digits by {precisions[-1] if precisions else dps} "
         f"digits of working precision (worst eigenvalue {worst.describe()}); no verdict",
     )
+
+
+def _next_precision(work: int) -> int:
+    """The next working precision: a quarter more (at least 10 digits), enough to see movement."""
+    return work + max(10, work // 4)
 
 
 def _same(previous, means, dps) -> bool:

@@ -181,3 +181,14 @@ def test_claim_full_spectrum_is_verified():
     omega = sp.Symbol("omega")
     assert sp.simplify(result.steps[0].expr - (omega / 16 + sp.Rational(5, 8) + 1 / (16 * omega))) == 0
     assert result.steps[1].expr == sp.Rational(1, 16)
+
+
+def test_complex_frequency_zero_eigenvalues_are_certified():
+    weights = {alpha: sp.Rational(-1, 5), beta: sp.Rational(1, 3)}
+    r = certify(FREE, 5, parameters=weights)
+    assert r.ok and r.multiplicities_certified, r.message
+    assert "0.041666666666666666667+0.43100335136619168624j" in r.values
+    assert "0.041666666666666666667-0.43100335136619168624j" in r.values
+    # the pair is the root pair of lambda^2 - lambda/12 + c: its discriminant is negative, exactly
+    chi = characteristic_polynomial(FREE, 5, weights)
+    assert chi(flint.fmpq(1)) == 0

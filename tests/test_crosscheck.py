@@ -130,3 +130,14 @@ def test_qr_failure_everywhere_is_not_converged():
 def test_bad_arguments():
     with pytest.raises(ValueError, match="max_dps"):
         numeric_check(CC, 3, dps=50, max_dps=55)
+
+
+def test_complex_frequency_zero_eigenvalues():
+    """Vertex weights with a negative Eq. 43 discriminant: a complex pair, matched as such."""
+    weights = {alpha: sp.Rational(-1, 5), beta: sp.Rational(1, 3)}
+    r = numeric_check(FREE, 5, parameters=weights, dps=30)
+    assert r.ok, r.message
+    complex_matches = [m for m in r.matches if mpmath.im(m.value) != 0]
+    assert len(complex_matches) == 2
+    with mpmath.workdps(60):
+        assert abs(complex_matches[0].value - mpmath.conj(complex_matches[1].value)) < mpmath.mpf(10) ** -30

@@ -116,13 +116,23 @@ def _to_laurent(expr: sp.Expr):
         terms[int(power)] = terms.get(int(power), sp.Integer(0)) + coeff
     out = {}
     for power, coeff in terms.items():
-        coeff = sp.simplify(coeff)
+        coeff = sp.cancel(coeff)
         if coeff == 0:
             continue
         if power % 2 or coeff.has(sp.I) or coeff.has(COS, SIN):
             return None
         out[power // 2] = coeff
     return out
+
+
+def _has_radical(expr: sp.Expr) -> bool:
+    return any(not p.exp.is_Integer for p in expr.atoms(sp.Pow))
+
+
+def _rational_function(expr: sp.Expr) -> sp.Expr:
+    """A symmetric function of radicals reduced to a rational function (``simplify`` if need be)."""
+    fast = sp.factor(sp.cancel(sp.expand(sp.radsimp(sp.expand(expr)))))
+    return fast if not _has_radical(fast) else sp.factor(sp.simplify(sp.radsimp(sp.expand(expr))))
 
 
 @lru_cache(maxsize=32)
@@ -140,7 +150,7 @@ def symmetric_functions(cf: ClosedForms) -> SymmetricFunctions:
     if len(cf.frequency_zero) == 3:
         r = cf.frequency_zero
         e = (r[0] + r[1] + r[2], r[0] * r[1] + r[0] * r[2] + r[1] * r[2], r[0] * r[1] * r[2])
-        zero = tuple(sp.factor(sp.simplify(sp.radsimp(sp.expand(x)))) for x in e)
+        zero = tuple(_rational_function(x) for x in e)
     else:
         reasons.append(f"Eq. 43 has 3 eigenvalues, the closed forms give {len(cf.frequency_zero)}")
     return SymmetricFunctions(zero, trace, det, "; ".join(reasons))

@@ -126,3 +126,10 @@ def test_done_when_numeric_3_to_32_at_60_digits(capsys):
 @pytest.mark.slow
 def test_certified_256(capsys):
     assert main(["check", "--n", "256", "--certify"]) == 0
+
+
+def test_too_few_digits_is_an_argparse_error(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["check", "--n", "3", "--dps", "3"])
+    assert exc.value.code == 2
+    assert "--dps must be at least 5" in capsys.readouterr().err

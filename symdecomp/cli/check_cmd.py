@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import itertools
 import multiprocessing
 import os
@@ -20,6 +21,14 @@ from .common import add_scheme_option, positive_int, print_json, progress, valen
 __all__ = ["register", "run", "check_valences"]
 
 
+def _digits(text: str) -> int:
+    """argparse type: digits of agreement, at least 5."""
+    value = positive_int(text)
+    if value < 5:
+        raise argparse.ArgumentTypeError(f"--dps must be at least 5, got {value}")
+    return value
+
+
 def register(sub) -> None:
     p = sub.add_parser(
         "check",
@@ -33,7 +42,7 @@ def register(sub) -> None:
     )
     p.add_argument("--n", dest="valences", type=valence_range, required=True, metavar="A:B",
                    help="valences to check: an inclusive range A:B or a single N")
-    p.add_argument("--dps", type=positive_int, default=50, help="numeric mode: digits of agreement required (default 50)")
+    p.add_argument("--dps", type=_digits, default=50, help="numeric mode: digits of agreement required (default 50)")
     p.add_argument("--certify", action="store_true", help="prove each valence exactly instead of comparing numerically")
     p.add_argument("--jobs", type=positive_int, default=os.cpu_count() or 1,
                    help="worker processes, one valence each at a time (default: the number of CPUs)")

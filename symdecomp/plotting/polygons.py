@@ -14,7 +14,7 @@ from ..circulant import fourier_matrix
 from ..errors import check_valence
 from ._mpl import new_figure
 
-__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d"]
+__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d"]
 
 
 def vertex_labels(points: np.ndarray, *, decimals: int = 9) -> dict[int, str]:
@@ -81,3 +81,30 @@ def regular_polygons_figure(valences: Iterable[int] = (5, 6)):
             ax.tick_params(labelsize=7)
     fig.suptitle(r"The regular planar n-gons: rows of $F_n$ (Eq. 2, Fig. 3)")
     return fig
+
+
+def draw_one_ring_3d(ax, center, a, b, *, color="0.55", a_color="C0", b_color="C3", label_prefix="", lw=0.8) -> None:
+    """Draw a 1-ring in R^3: the quads ``(O, a_i, b_i, a_{i+1})`` and the n-gons ``A`` (a's) and ``B`` (b's).
+
+    ``center`` is a point, ``a`` and ``b`` are ``(n, 3)`` arrays.
+    """
+    O = np.asarray(center, dtype=float)
+    a = np.asarray(a, dtype=float)
+    b = np.asarray(b, dtype=float)
+    n = len(a)
+    for i in range(n):
+        path = np.array([O, a[i], b[i], a[(i + 1) % n]])
+        ax.plot(path[:, 0], path[:, 1], path[:, 2], color=color, lw=lw)
+    draw_polygon_3d(ax, a, color=a_color, ls="--", lw=1.2, label=f"{label_prefix}A (the $a_i$)")
+    draw_polygon_3d(ax, b, color=b_color, ls=":", lw=1.5, label=f"{label_prefix}B (the $b_i$)")
+    ax.scatter([O[0]], [O[1]], [O[2]], color="black", s=25)
+
+
+def set_equal_3d(ax, points) -> None:
+    """Give a 3-D axes equal scales on x, y, z around the given points (an ``(m, 3)`` array)."""
+    p = np.asarray(points, dtype=float).reshape(-1, 3)
+    centre = (p.max(axis=0) + p.min(axis=0)) / 2
+    radius = max(float(np.max(p.max(axis=0) - p.min(axis=0))) / 2, 1e-12)
+    for setter, c in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), centre):
+        setter(c - radius, c + radius)
+    ax.set_box_aspect((1, 1, 1))

@@ -10,11 +10,15 @@ array([2. +0.j, 0.5+0.j])
 
 from __future__ import annotations
 
-from typing import Callable, Iterable, Sequence
+from typing import Iterable, Mapping, Sequence
 
 import numpy as np
 import sympy as sp
 
+from ..errors import check_valence
+from ..schemes import Scheme, subdivision_matrix
+from ..spectrum import frequency_zero_eigenvalues
+from ..symbols import n as N
 from ._mpl import new_figure
 
 __all__ = ["numeric_eigenvalues", "unmatched_eigenvalues", "eigenvalue_shift_figure", "vertex_weight_sweep_figure"]
@@ -95,44 +99,46 @@ def eigenvalue_shift_figure(before, after, predicted, *, title: str, labels: Seq
     return fig
 
 
-def vertex_weight_sweep_figure(
-    matrix_at: Callable[[float], sp.Matrix],
-    moving: Callable[[float], Iterable],
-    values: Iterable,
-    *,
-    parameter: str,
-    title: str,
-    standard=None,
-):
-    """Every eigenvalue of ``matrix_at(t)`` over a sweep of ``t`` (dots), with the ``moving(t)`` curves.
+def vertex_weight_sweep_figure(scheme: Scheme, n: int, parameter: sp.Symbol, values: Iterable, *, fixed: Mapping | None = None, standard=None):
+    """Every eigenvalue of the subdivision matrix while one vertex-rule weight is swept (Section 6).
 
-    Used for the subdivision matrix with one vertex-rule weight swept: the eigenvalues that do
-    not depend on the weight are rows of dots; the others follow ``moving(t)`` (for Section 6:
-    the eigenvalues of the frequency-0 matrix of Eq. 43 other than 1). Real parts are shown;
-    complex pairs are marked.
+    ``scheme`` has the vertex-rule weights free (``catmull_clark(alpha, beta)``); ``parameter``
+    is swept over ``values`` with the others set by ``fixed``. Dots: the eigenvalues of the exact
+    ``(2n+1) x (2n+1)`` matrix (:func:`symdecomp.schemes.subdivision_matrix`) at each value; the
+    ones the weight does not move form horizontal rows. Curves: the two eigenvalues of the
+    frequency-0 matrix of Eq. 43 other than 1, from their closed forms
+    (:func:`symdecomp.spectrum.frequency_zero_eigenvalues`): Proposition 6.3 says these are the
+    only ones that move. Real parts are shown; eigenvalues of a complex pair are marked.
     """
-    values = list(values)
-    fig = new_figure(11, 4.8)
+    n = check_valence(n)
+    fixed = {k: sp.sympify(v) for k, v in (fixed or {}).items()}
+    values = [sp.sympify(t) for t in values]
+    missing = set(scheme.parameters) - set(fixed) - {parameter}
+    if missing:
+        raise ValueError(f"give values for the scheme's other free parameters {sorted(map(str, missing))} in fixed=")
+    S = subdivision_matrix(scheme, n)
+    moving = [e.subs({N: n, **fixed}) for e in frequency_zero_eigenvalues(scheme)[1:]]
+    fig = new_figure(11, 5.4)
     ax = fig.add_subplot()
     curves = []
     for t in values:
-        ev = numeric_eigenvalues(matrix_at(t))
-        real = np.abs(ev.imag) < 1e-9
+        ev = numeric_eigenvalues(S.subs({parameter: t, **fixed}))
+        real = ev.imag == 0
         ax.scatter(np.full(real.sum(), float(t)), ev.real[real], s=9, color="0.45", zorder=2)
         if (~real).any():
-            ax.scatter(np.full((~real).sum(), float(t)), ev.real[~real], s=14, marker="^", color="0.45", zorder=2)
-        curves.append([complex(sp.N(x, 20)) for x in moving(t)])
+            ax.scatter(np.full((~real).sum(), float(t)), ev.real[~real], s=16, marker="^", color="0.45", zorder=2)
+        curves.append([complex(sp.N(e.subs(parameter, t), 20)) for e in moving])
     curves = np.array(curves)
+    ts = [float(t) for t in values]
     for k in range(curves.shape[1]):
-        ax.plot([float(t) for t in values], curves[:, k].real, color=f"C{k + 1}", lw=1.5,
-                label=f"eigenvalue {k + 1} of the frequency-0 matrix (Eq. 43), real part")
-    ax.scatter([], [], s=9, color="0.45", label="eigenvalues of the full matrix (real)")
-    ax.scatter([], [], s=14, marker="^", color="0.45", label="eigenvalues of the full matrix (complex: real part)")
+        ax.plot(ts, curves[:, k].real, color=f"C{k + 1}", lw=1.5, label=f"closed form: eigenvalue {k + 2} of the Eq. 43 matrix")
+    ax.scatter([], [], s=9, color="0.45", label=f"eigenvalues of the {2 * n + 1}x{2 * n + 1} subdivision matrix")
+    ax.scatter([], [], s=16, marker="^", color="0.45", label="(complex pair: real part)")
     if standard is not None:
-        ax.axvline(float(standard), color="0.3", ls=":", label="standard weight")
-    ax.set_xlabel(parameter)
+        ax.axvline(float(standard), color="0.3", ls=":", label=f"standard {parameter} = {standard}")
+    ax.set_xlabel(f"vertex-rule weight {parameter}" + (f"   ({', '.join(f'{k} = {v}' for k, v in fixed.items())})" if fixed else ""))
     ax.set_ylabel("Re(eigenvalue)")
-    ax.set_title(title)
-    ax.legend(fontsize=8, loc="best")
+    ax.set_title(f"{scheme.name}, n = {n}: the eigenvalues that the vertex weight moves")
+    fig.legend(fontsize=8, loc="outside lower center", ncol=3)
     ax.grid(alpha=0.3)
     return fig

@@ -14,7 +14,7 @@ from ..circulant import fourier_matrix
 from ..errors import check_valence
 from ._mpl import new_figure
 
-__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d"]
+__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d", "ring_split_figure"]
 
 
 def vertex_labels(points: np.ndarray, *, decimals: int = 9) -> dict[int, str]:
@@ -108,3 +108,94 @@ def set_equal_3d(ax, points) -> None:
     for setter, c in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), centre):
         setter(c - radius, c + radius)
     ax.set_box_aspect((1, 1, 1))
+
+
+def _plane_patch(ax, points, color, alpha=0.12) -> None:
+    """Shade the convex hull (in its own plane) of a planar polygon given as an ``(m, 3)`` array."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    p = np.asarray(points, dtype=float)
+    centre = p.mean(axis=0)
+    u = p[0] - centre
+    normal = np.cross(u, p[1] - centre)
+    if np.linalg.norm(normal) < 1e-12 or np.linalg.norm(u) < 1e-12:
+        return
+    v = np.cross(normal, u)
+    angles = np.arctan2((p - centre) @ v / np.linalg.norm(v), (p - centre) @ u / np.linalg.norm(u))
+    ax.add_collection3d(Poly3DCollection([p[np.argsort(angles)]], facecolor=color, alpha=alpha, edgecolor="none"))
+
+
+def _few_ticks(ax, count: int = 4) -> None:
+    from matplotlib.ticker import MaxNLocator
+
+    for axis in (ax.xaxis, ax.yaxis, getattr(ax, "zaxis", None)):
+        if axis is not None:
+            axis.set_major_locator(MaxNLocator(count))
+            axis.set_tick_params(labelsize=7)
+
+
+def ring_split_figure(rings, *, titles=None, suptitle: str = "A planar 2n-gon splits into two parallel n-gons (Fig. 2)"):
+    """Fig. 2: a 1-ring before and after subdivision steps, in 3-D, with the planes of ``A`` and ``B``.
+
+    ``rings`` are ``(2n+1, 3)`` arrays in the vertex order ``(O, a's, b's)``
+    (:mod:`symdecomp.evolution`), e.g. ``subdivide_ring(scheme, ring, 1)``. The ``a``'s and the
+    ``b``'s of each ring are drawn as the n-gons ``A`` and ``B`` with their planes shaded; a last
+    panel shows the heights (z) of ``O``, of the ``a``'s and of the ``b``'s in each ring.
+    """
+    from ..evolution import split_ring
+
+    rings = [np.asarray(r, dtype=float) for r in rings]
+    if titles is None:
+        titles = ["initial 1-ring"] + [f"after {k} step{'s' if k != 1 else ''}" for k in range(1, len(rings))]
+    titles = list(titles)
+    fig = new_figure(5.0 * len(rings) + 4.0, 5.0)
+    for k, (ring, title) in enumerate(zip(rings, titles)):
+        ax = fig.add_subplot(1, len(rings) + 1, k + 1, projection="3d")
+        O, a, b = split_ring(ring)
+        n = len(a)
+        planar = np.ptp(np.append(a[:, 2], b[:, 2])) < 1e-9 * max(1.0, float(np.abs(ring).max()))
+        for i in range(n):
+            spoke = np.array([O, a[i]])
+            ax.plot(spoke[:, 0], spoke[:, 1], spoke[:, 2], color="0.7", lw=0.6)
+        if planar:
+            polygon = np.empty((2 * n, 3))
+            polygon[0::2], polygon[1::2] = a, b
+            draw_polygon_3d(ax, polygon, color="C2", lw=1.6, label=f"the {2 * n}-gon $(a_0, b_0, a_1, \\dots)$")
+            _plane_patch(ax, polygon, "C2")
+        else:
+            draw_polygon_3d(ax, a, color="C0", lw=1.6, label="$A$ (the $a_i$)")
+            draw_polygon_3d(ax, b, color="C3", lw=1.6, label="$B$ (the $b_i$)")
+            _plane_patch(ax, a, "C0", alpha=0.18)
+            _plane_patch(ax, b, "C3", alpha=0.18)
+        ax.scatter([O[0]], [O[1]], [O[2]], color="black", s=30, label="O")
+        centre = np.vstack([a, b]).mean(axis=0)
+        ax.plot([O[0], centre[0]], [O[1], centre[1]], [O[2], centre[2]], color="0.3", lw=0.8, ls="-.")
+        points = np.vstack([O, a, b])
+        lo, hi = points.min(axis=0), points.max(axis=0)
+        half = (hi[:2] - lo[:2]).max() / 2 * 1.05
+        mid = (hi + lo) / 2
+        ax.set_xlim(mid[0] - half, mid[0] + half)
+        ax.set_ylim(mid[1] - half, mid[1] + half)
+        ax.set_zlim(lo[2] - 0.05 * (hi[2] - lo[2] + 1e-9), hi[2] + 0.05 * (hi[2] - lo[2] + 1e-9))
+        ax.set_box_aspect((1, 1, 0.7))
+        _few_ticks(ax)
+        ax.view_init(elev=12, azim=-60)
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.set_zlabel("z")
+        ax.set_title(title)
+        ax.legend(fontsize=8, loc="upper left")
+    heights = fig.add_subplot(1, len(rings) + 1, len(rings) + 1)
+    for k, ring in enumerate(rings):
+        O, a, b = split_ring(ring)
+        heights.scatter([k], [O[2]], color="black", marker="o", label="O" if k == 0 else None)
+        heights.scatter(np.full(len(a), k - 0.08), a[:, 2], color="C0", marker="o", s=14, label="a's" if k == 0 else None)
+        heights.scatter(np.full(len(b), k + 0.08), b[:, 2], color="C3", marker="s", s=14, label="b's" if k == 0 else None)
+    heights.set_xticks(range(len(rings)), titles, fontsize=8)
+    heights.set_xlabel("ring")
+    heights.set_ylabel("height z")
+    heights.set_title("Heights of O, the a's and the b's")
+    heights.legend(fontsize=8)
+    heights.grid(alpha=0.3)
+    fig.suptitle(suptitle)
+    return fig

@@ -16,6 +16,7 @@ complex numbers). One subdivision step is the exact matrix of the scheme applied
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
@@ -23,7 +24,17 @@ import numpy as np
 from .errors import InvalidPolygonError, check_valence
 from .schemes import Scheme, subdivision_matrix
 
-__all__ = ["one_ring", "split_ring", "subdivide_ring", "subdivision_matrix_numeric", "fourier_coefficients"]
+__all__ = [
+    "one_ring",
+    "split_ring",
+    "subdivide_ring",
+    "subdivision_matrix_numeric",
+    "fourier_coefficients",
+    "Ellipse",
+    "inscribed_ellipse",
+    "EllipticProfile",
+    "elliptic_profile",
+]
 
 
 def one_ring(center, a, b) -> np.ndarray:
@@ -90,3 +101,98 @@ def fourier_coefficients(polygon) -> np.ndarray:
     P = np.asarray(polygon, dtype=complex)
     return np.fft.fft(P, axis=0) / P.shape[0]
 
+
+
+@dataclass(frozen=True)
+class Ellipse:
+    """The ellipse ``center + U cos t + V sin t`` in R^3 through an affine-regular n-gon (Section 5.2)."""
+
+    #: Its centre (the centroid of the polygon).
+    center: np.ndarray
+    #: ``U = 2 Re z_1``: the point at ``t = 0`` minus the centre.
+    u: np.ndarray
+    #: ``V = -2 Im z_1``: the point at ``t = pi/2`` minus the centre.
+    v: np.ndarray
+
+    def points(self, samples: int = 200) -> np.ndarray:
+        """``samples`` points of the ellipse, an ``(samples, 3)`` array (closed: first = last)."""
+        t = np.linspace(0.0, 2.0 * np.pi, samples)
+        return self.center + np.outer(np.cos(t), self.u) + np.outer(np.sin(t), self.v)
+
+    def semi_axes(self) -> tuple[float, float]:
+        """The two semi-axes, largest first (``l_1/2``, ``l_2/2`` of Eq. 40 for planar rings)."""
+        s = np.linalg.svd(np.column_stack([self.u, self.v]), compute_uv=False)
+        return float(s[0]), float(s[1])
+
+    def normal(self) -> np.ndarray:
+        """The unit normal ``U x V / |U x V|`` of its plane."""
+        w = np.cross(self.u, self.v)
+        return w / np.linalg.norm(w)
+
+    def scale(self) -> float:
+        """``sqrt(area / pi)``: the radius of the circle with the same area."""
+        return float(np.sqrt(np.linalg.norm(np.cross(self.u, self.v))))
+
+
+def inscribed_ellipse(polygon) -> Ellipse:
+    """The ellipse through the frequency-1 part of an n-gon in R^3 (``A^1 + A^{n-1}``, Eq. 40-41).
+
+    With ``p_i = sum_k z_k omega^(k i)`` (Eq. 5) and ``p`` real, ``z_0 + z_1 omega^i + z_{n-1} omega^{-i}
+    = z_0 + 2 Re(z_1 omega^i)``: the vertices of the affine-regular polygon ``A^1 + A^{n-1}`` lie on
+    ``z_0 + 2 Re(z_1 e^{it})``. Other frequencies of the polygon are ignored.
+    """
+    z = fourier_coefficients(np.asarray(polygon, dtype=float))
+    if z.ndim != 2 or z.shape[1] != 3:
+        raise InvalidPolygonError(f"an n-gon in R^3 is an (n, 3) array, got shape {np.shape(polygon)}")
+    if np.linalg.norm(np.cross(z[1].real, z[1].imag)) < 1e-300:
+        raise InvalidPolygonError("the polygon's frequency-1 part is degenerate (a segment or a point): no ellipse")
+    return Ellipse(z[0].real, 2 * z[1].real, -2 * z[1].imag)
+
+
+@dataclass(frozen=True)
+class EllipticProfile:
+    """Per step, the ellipses ``E_a``, ``E_b`` of a ring and where they sit relative to ``O`` (Section 5.2).
+
+    ``kappa = d / scale^2`` is the curvature of the paraboloid of revolution (about the normal
+    through ``O``) on which an ellipse of that scale and distance lies; the scheme has nice
+    elliptic properties when ``kappa_a = kappa_b`` and both stay constant over the steps.
+    """
+
+    #: The rings, step 0 first (``(2n+1, 3)`` arrays).
+    rings: tuple
+    #: ``E_a`` at each step (through the ``a_i``).
+    ellipses_a: tuple
+    #: ``E_b`` at each step (through the ``b_i``).
+    ellipses_b: tuple
+    #: ``d_a``: signed distance from ``O`` to the plane of ``E_a``, along ``E_a``'s normal.
+    distance_a: np.ndarray
+    #: ``d_b``: the same for ``E_b`` (along ``E_a``'s normal; the planes are parallel, Prop. 4.1).
+    distance_b: np.ndarray
+    #: ``d_a / scale(E_a)^2``.
+    kappa_a: np.ndarray
+    #: ``d_b / scale(E_b)^2``.
+    kappa_b: np.ndarray
+
+
+def elliptic_profile(scheme: Scheme, ring, steps: int) -> EllipticProfile:
+    """Iterate ``ring`` (``(2n+1, 3)``) and measure ``E_a``, ``E_b``, ``d_a``, ``d_b`` at every step."""
+    rings = subdivide_ring(scheme, np.asarray(ring, dtype=float), steps)
+    ea, eb, da, db = [], [], [], []
+    for r in rings:
+        O, a, b = split_ring(r)
+        A, B = inscribed_ellipse(a), inscribed_ellipse(b)
+        normal = A.normal()
+        ea.append(A)
+        eb.append(B)
+        da.append(float((A.center - O) @ normal))
+        db.append(float((B.center - O) @ normal))
+    da, db = np.array(da), np.array(db)
+    return EllipticProfile(
+        rings=tuple(rings),
+        ellipses_a=tuple(ea),
+        ellipses_b=tuple(eb),
+        distance_a=da,
+        distance_b=db,
+        kappa_a=da / np.array([e.scale() ** 2 for e in ea]),
+        kappa_b=db / np.array([e.scale() ** 2 for e in eb]),
+    )

@@ -12,7 +12,7 @@ import numpy as np
 
 from ..evolution import EllipticProfile, split_ring
 from ._mpl import new_figure
-from .polygons import _few_ticks, draw_polygon_3d
+from .polygons import _few_ticks, draw_polygon_3d, set_equal_3d
 
 __all__ = ["ellipses_figure", "nested_rings_figure", "defect_figure", "tuned_weights_figure"]
 
@@ -92,6 +92,7 @@ def nested_rings_figure(rings: Sequence, *, title: str, highlight: np.ndarray | 
         for p in h:
             left.plot([p[0], p[0]], [p[1], p[1]], [0, p[2]], color="0.6", lw=0.6)
         left.scatter([0], [0], [0], color="black", s=20, label="O")
+        set_equal_3d(left, np.vstack([h, np.zeros((1, 3))]))
         left.set_xlabel("x")
         left.set_ylabel("y")
         left.set_zlabel("z")
@@ -100,18 +101,21 @@ def nested_rings_figure(rings: Sequence, *, title: str, highlight: np.ndarray | 
         _few_ticks(left)
     ax = fig.add_subplot(1, panels, panels, projection="3d")
     origin = split_ring(rings[-1])[0]
-    for k, ring in enumerate(rings):
+    points = np.vstack([np.asarray(r, dtype=float) - origin for r in rings])
+    # The vertices of all the rings, triangulated over the tangent plane (x, y): near O they
+    # lie on the limit surface's graph, so the triangulation shows its shape.
+    ax.plot_trisurf(points[:, 0], points[:, 1], points[:, 2], cmap="coolwarm", alpha=0.6, linewidth=0.1, edgecolor="0.5")
+    for ring in rings:
         O, a, b = split_ring(np.asarray(ring, dtype=float) - origin)
-        n = len(a)
-        shade = 0.15 + 0.7 * k / max(1, len(rings) - 1)
-        for i in range(n):
-            quad = np.array([O, a[i], b[i], a[(i + 1) % n], O])
-            ax.plot(quad[:, 0], quad[:, 1], quad[:, 2], color=(shade * 0.2, shade * 0.4, shade), lw=0.8)
+        polygon = np.empty((2 * len(a), 3))
+        polygon[0::2], polygon[1::2] = a, b
+        draw_polygon_3d(ax, polygon, color="0.15", lw=0.8)
+    ax.set_box_aspect((1, 1, 0.6))
     ax.scatter([0], [0], [0], color="black", s=20)
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_zlabel("z")
-    ax.set_title(f"1-rings of steps 0..{len(rings) - 1} (darker = later), around the last O")
+    ax.set_title(f"The 1-rings ($2n$-gons) of {len(rings)} steps, and a surface through their vertices")
     ax.view_init(elev=22, azim=-50)
     _few_ticks(ax)
     fig.suptitle(title)

@@ -14,7 +14,9 @@ from typing import Iterable
 import numpy as np
 import sympy as sp
 
+from ..circulant import fourier_matrix
 from ..errors import check_valence
+from ..evolution import one_ring, subdivide_ring
 from ..frequency import COS, SIN, per_frequency_matrix_at
 from ..schemes import Scheme
 from ..symbols import omega as OMEGA
@@ -26,6 +28,9 @@ __all__ = [
     "invariant_ring_figure",
     "invariant_ratio_sweep_figure",
     "invariant_ratios",
+    "component_rings",
+    "component_decay",
+    "component_decay_figure",
 ]
 
 
@@ -198,4 +203,53 @@ def invariant_ratio_sweep_figure(scheme: Scheme, valences: Iterable[int] = range
     right.legend()
     right.grid(alpha=0.3)
     fig.suptitle(f"{scheme.name}: the invariant ratio of Eq. 39 over the valence")
+    return fig
+
+
+def component_rings(n: int) -> list[np.ndarray]:
+    """For ``j = 0..2n-1``, the planar 1-ring whose 2n-gon is the regular ``v_j`` (Eq. 11-12), ``O = 0``.
+
+    Row ``j`` of the Fourier matrix ``F_{2n}`` split as in Eq. 12: ``a_i = v_j[2i]``,
+    ``b_i = v_j[2i+1]``. Each ring is a ``(2n+1, 1)`` complex array (:mod:`symdecomp.evolution`).
+    """
+    n = check_valence(n)
+    F = np.array(fourier_matrix(2 * n).evalf(20), dtype=complex)
+    return [one_ring([0j], F[j, 0::2], F[j, 1::2]) for j in range(2 * n)]
+
+
+def component_decay(scheme: Scheme, n: int, steps: int) -> np.ndarray:
+    """``|P_k - O_k| / (|P_0 - O_0| lambda_1^k)`` for each 2n-gon component ``j`` (rows) and step ``k``.
+
+    ``P_k`` is the 1-ring of :func:`component_rings` after ``k`` exact subdivision steps and
+    ``lambda_1`` the largest eigenvalue of ``M_1`` (Eq. 34). A component that the scheme filters
+    out relative to the tangent plane goes to 0; one that shrinks at the rate ``lambda_1`` stays
+    bounded away from 0.
+    """
+    lam1 = max(abs(complex(sp.N(v, 20))) for v in tangent_eigenvalues(scheme).at(check_valence(n), 1))
+    table = []
+    for ring in component_rings(n):
+        history = subdivide_ring(scheme, ring, steps)
+        size = np.array([np.linalg.norm(r - r[0]) for r in history])
+        table.append(size / size[0] / lam1 ** np.arange(steps + 1))
+    return np.array(table)
+
+
+def component_decay_figure(scheme: Scheme, n: int, steps: int = 12):
+    """Each 2n-gon component's size relative to ``lambda_1^k`` over subdivision steps (Prop. 5.1, Remark 5.1)."""
+    n = check_valence(n)
+    table = component_decay(scheme, n, steps)
+    fig = new_figure(8.5, 5)
+    ax = fig.add_subplot()
+    tangent = {1, n - 1, n + 1, 2 * n - 1}
+    k = np.arange(steps + 1)
+    for j, row in enumerate(table):
+        style = {"lw": 2.0, "marker": "o", "ms": 3} if j in tangent else {"lw": 0.9, "ls": "--"}
+        ax.plot(k, row, label=f"j = {j}", **style)
+    ax.set_yscale("log")
+    ax.set_xlabel("subdivision step k")
+    ax.set_ylabel(r"$|P_k - O_k| \,/\, (|P_0 - O_0|\, \lambda_1^k)$")
+    ax.set_title(f"{scheme.name}, n = {n}: the 1-ring of each 2n-gon component $v_j$, relative to $\\lambda_1^k$\n"
+                 f"(thick: j = 1, n-1, n+1, 2n-1)", fontsize=10)
+    ax.legend(fontsize=7, ncol=2, loc="lower left")
+    ax.grid(alpha=0.3, which="both")
     return fig

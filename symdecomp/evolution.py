@@ -34,6 +34,8 @@ __all__ = [
     "inscribed_ellipse",
     "EllipticProfile",
     "elliptic_profile",
+    "tangent_configuration",
+    "hyperbolic_configuration",
 ]
 
 
@@ -196,3 +198,43 @@ def elliptic_profile(scheme: Scheme, ring, steps: int) -> EllipticProfile:
         kappa_a=da / np.array([e.scale() ** 2 for e in ea]),
         kappa_b=db / np.array([e.scale() ** 2 for e in eb]),
     )
+
+
+def _two_n_gon(n: int, j: int) -> np.ndarray:
+    """Row ``j`` of ``F_{2n}`` (the regular 2n-gon ``v_j`` of Eq. 11), numerically."""
+    w = np.exp(2j * np.pi * j * np.arange(2 * n) / (2 * n))
+    return w
+
+
+def tangent_configuration(n: int, heights=(0.0, 0.0, 0.0), *, radius: float = 1.0) -> np.ndarray:
+    """A 1-ring in R^3 made of the tangent-plane components and the heights of Remark 5.2.
+
+    In the plane: the regular convex 2n-gon ``v_1`` of Eq. 11 (``A^1 + A^{2n-1}``,
+    ``B^1 + B^{2n-1}``: the real 2n-gon through ``radius * exp(i pi k/n)``), with ``O`` at the
+    centre. Heights (z): ``heights = (h_O, h_a, h_b)`` for ``O``, every ``a_i`` and every ``b_i``.
+    Remark 5.2's two cases are ``(1, 1, 1)`` (no elliptic component) and ``(0, 1, 1)``.
+    """
+    n = check_valence(n)
+    h_O, h_a, h_b = (float(h) for h in heights)
+    p = radius * _two_n_gon(n, 1)
+    a, b = p[0::2], p[1::2]
+    return one_ring(
+        [0.0, 0.0, h_O],
+        np.column_stack([a.real, a.imag, np.full(n, h_a)]),
+        np.column_stack([b.real, b.imag, np.full(n, h_b)]),
+    )
+
+
+def hyperbolic_configuration(n: int, amplitude: float = 0.5, *, radius: float = 1.0) -> np.ndarray:
+    """Section 5.3's configuration with only hyperbolic components outside the tangent plane.
+
+    ``O`` on the plane of ``A^1, A^{2n-1}, B^1, B^{2n-1}`` (so the elliptic component is zero),
+    plus the combination ``amplitude * (v_2 + v_{2n-2})/2`` of the 2n-gons of Eq. 11, placed
+    perpendicular to the 1-ring: each ``a_i``, ``b_i`` is lifted by ``amplitude * cos(2 phi)``,
+    ``phi`` its angle.
+    """
+    ring = tangent_configuration(n, (0.0, 0.0, 0.0), radius=radius)
+    lift = amplitude * _two_n_gon(n, 2).real
+    ring[1 : n + 1, 2] = lift[0::2]
+    ring[n + 1 :, 2] = lift[1::2]
+    return ring

@@ -12,9 +12,15 @@ import numpy as np
 
 from ..evolution import EllipticProfile, split_ring
 from ._mpl import new_figure
-from .polygons import _few_ticks, draw_polygon_3d, set_equal_3d
+from .polygons import _few_ticks, draw_one_ring_3d, draw_polygon_3d, set_equal_3d
 
-__all__ = ["ellipses_figure", "nested_rings_figure", "defect_figure", "tuned_weights_figure"]
+__all__ = [
+    "ellipses_figure",
+    "nested_rings_figure",
+    "hyperbolic_rates_figure",
+    "defect_figure",
+    "tuned_weights_figure",
+]
 
 
 def _paraboloid(ax, kappa: float, radius: float, color: str = "C2") -> None:
@@ -75,29 +81,29 @@ def ellipses_figure(profile: EllipticProfile, steps: Iterable[int] = range(1, 6)
     return fig
 
 
-def nested_rings_figure(rings: Sequence, *, title: str, highlight: np.ndarray | None = None, highlight_label: str = ""):
-    """Fig. 8 (right) and the like: the 1-rings of successive steps drawn together, in 3-D.
+def nested_rings_figure(rings: Sequence, *, title: str, initial=None, initial_label: str = "the initial 1-ring"):
+    """Fig. 8: the 1-rings of successive steps drawn together in 3-D, with a surface through them.
 
     The 1-ring of step ``k`` covers a neighbourhood of ``O`` that shrinks with ``lambda_1^k``; drawn
-    together, relative to the last ``O``, the quads trace the shape of the limit surface near
-    ``O`` (a hyperbolic paraboloid when only hyperbolic components leave the tangent plane).
-    ``highlight`` (an ``(m, 3)`` polygon, e.g. the eigencomponent ``A^2``) is drawn on the left.
+    together, relative to the last ``O``, their vertices trace the shape of the limit surface
+    near ``O`` (a hyperbolic paraboloid when only the hyperbolic components leave the tangent
+    plane). ``initial`` (a ``(2n+1, 3)`` ring) is drawn on the left with its quads.
     """
-    fig = new_figure(12 if highlight is not None else 6.5, 5.4)
-    panels = 2 if highlight is not None else 1
-    if highlight is not None:
+    panels = 2 if initial is not None else 1
+    fig = new_figure(12 if initial is not None else 6.5, 5.4)
+    if initial is not None:
         left = fig.add_subplot(1, panels, 1, projection="3d")
-        draw_polygon_3d(left, highlight, color="C1", lw=1.6, label=highlight_label)
-        h = np.asarray(highlight, dtype=float)
-        for p in h:
-            left.plot([p[0], p[0]], [p[1], p[1]], [0, p[2]], color="0.6", lw=0.6)
-        left.scatter([0], [0], [0], color="black", s=20, label="O")
-        set_equal_3d(left, np.vstack([h, np.zeros((1, 3))]))
+        O, a, b = split_ring(np.asarray(initial, dtype=float))
+        draw_one_ring_3d(left, O, a, b)
+        for p in np.vstack([a, b]):
+            left.plot([p[0], p[0]], [p[1], p[1]], [0, p[2]], color="0.75", lw=0.6)
+        set_equal_3d(left, np.asarray(initial, dtype=float))
         left.set_xlabel("x")
         left.set_ylabel("y")
         left.set_zlabel("z")
-        left.set_title(highlight_label or "component")
+        left.set_title(initial_label)
         left.legend(fontsize=8, loc="upper left")
+        left.view_init(elev=22, azim=-50)
         _few_ticks(left)
     ax = fig.add_subplot(1, panels, panels, projection="3d")
     origin = split_ring(rings[-1])[0]
@@ -115,10 +121,40 @@ def nested_rings_figure(rings: Sequence, *, title: str, highlight: np.ndarray | 
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_zlabel("z")
-    ax.set_title(f"The 1-rings ($2n$-gons) of {len(rings)} steps, and a surface through their vertices")
+    ax.set_title(f"The 1-rings ($2n$-gons) of {len(rings)} steps, and a surface through their vertices", fontsize=10)
     ax.view_init(elev=22, azim=-50)
     _few_ticks(ax)
     fig.suptitle(title)
+    return fig
+
+
+def hyperbolic_rates_figure(scheme, valences: Iterable[int]):
+    """The eigenvalues of ``M_2`` (the hyperbolic components, Section 5.3) against ``lambda_1^2`` over ``n``.
+
+    The hyperbolic components have to shrink like ``lambda_1^2`` for the surface near ``O`` to be
+    a quadric; both come from the closed forms of Eq. 34.
+    """
+    import sympy as sp
+
+    from ..errors import check_valence
+    from ..tangent import tangent_eigenvalues
+
+    ev = tangent_eigenvalues(scheme)
+    ns, lam1_sq, m2 = [], [], []
+    for n in valences:
+        n = check_valence(n)
+        ns.append(n)
+        lam1_sq.append(max(abs(complex(sp.N(v, 20))) for v in ev.at(n, 1)) ** 2)
+        m2.append(max(abs(complex(sp.N(v, 20))) for v in ev.at(n, 2)))
+    fig = new_figure(9, 4.6)
+    ax = fig.add_subplot()
+    ax.plot(ns, lam1_sq, marker="s", ms=4, label=r"$\lambda_1^2$")
+    ax.plot(ns, m2, marker="o", ms=4, label=r"largest eigenvalue of $M_2$ (hyperbolic components)")
+    ax.set_xlabel("valence n")
+    ax.set_ylabel("eigenvalue")
+    ax.set_title(f"{scheme.name}: hyperbolic rate against the square of the tangent-plane rate")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
     return fig
 
 
@@ -153,31 +189,25 @@ def defect_figure(rows, *, title: str = "How far Catmull-Clark is from nice elli
     return fig
 
 
-def tuned_weights_figure(valences: Sequence[int], series: dict, *, standard: dict | None = None, title: str = "Tuned vertex-rule weights"):
-    """Vertex-rule weights over ``n``: ``series`` maps a label to ``(alphas, betas)`` (``None`` where none exist).
+def tuned_weights_figure(valences: Sequence[int], series: dict, *, standard: Sequence | None = None, note: str = "",
+                         title: str = "Vertex-rule weight tuned for each elliptic condition"):
+    """The vertex-rule weight ``alpha`` over ``n`` for each tuning in ``series`` (label -> values).
 
-    Weights are shown multiplied by ``n`` (the total weight ``n alpha`` of the ``a``'s, ``n beta`` of the
-    ``b``'s), which stay of order 1 as ``n`` grows.
+    Shown as ``n alpha``, the total weight of the ``a_i`` in the new ``O``, which stays of order 1
+    as ``n`` grows; ``None`` marks a valence without a value. ``standard`` adds the scheme's own.
     """
-    fig = new_figure(12, 4.6)
-    left, right = fig.subplots(1, 2)
+    fig = new_figure(9, 4.8)
+    ax = fig.add_subplot()
     ns = np.array(valences, dtype=float)
-    for k, (label, (alphas, betas)) in enumerate(series.items()):
-        a = np.array([np.nan if x is None else float(x) for x in alphas])
-        b = np.array([np.nan if x is None else float(x) for x in betas])
-        left.plot(ns, ns * a, marker="o", ms=4, color=f"C{k}", label=label)
-        right.plot(ns, ns * b, marker="o", ms=4, color=f"C{k}", label=label)
+    markers = "os^Dv"
+    for k, (label, values) in enumerate(series.items()):
+        a = np.array([np.nan if x is None else float(x) for x in values])
+        ax.plot(ns, ns * a, marker=markers[k % len(markers)], ms=5, color=f"C{k}", label=label)
     if standard is not None:
-        left.plot(ns, ns * np.array([float(x) for x in standard["alpha"]]), color="0.3", ls=":", label="standard Catmull-Clark")
-        right.plot(ns, ns * np.array([float(x) for x in standard["beta"]]), color="0.3", ls=":", label="standard Catmull-Clark")
-    left.set_xlabel("valence n")
-    left.set_ylabel(r"$n\,\alpha$ (total weight of the $a_i$)")
-    left.set_title(r"$\alpha$")
-    right.set_xlabel("valence n")
-    right.set_ylabel(r"$n\,\beta$ (total weight of the $b_i$)")
-    right.set_title(r"$\beta$")
-    for ax in (left, right):
-        ax.legend(fontsize=8)
-        ax.grid(alpha=0.3)
-    fig.suptitle(title)
+        ax.plot(ns, ns * np.array([float(x) for x in standard]), color="0.3", ls=":", marker=".", label="standard Catmull-Clark")
+    ax.set_xlabel("valence n")
+    ax.set_ylabel(r"$n\,\alpha$ (total weight of the $a_i$ in the new O)")
+    ax.set_title(title + (f"\n({note})" if note else ""), fontsize=10)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
     return fig

@@ -14,7 +14,7 @@ from ..circulant import fourier_matrix
 from ..errors import check_valence
 from ._mpl import new_figure
 
-__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d", "ring_split_figure"]
+__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d", "ring_split_figure", "decomposition_figure"]
 
 
 def vertex_labels(points: np.ndarray, *, decimals: int = 9) -> dict[int, str]:
@@ -198,4 +198,58 @@ def ring_split_figure(rings, *, titles=None, suptitle: str = "A planar 2n-gon sp
     heights.legend(fontsize=8)
     heights.grid(alpha=0.3)
     fig.suptitle(suptitle)
+    return fig
+
+
+def decomposition_figure(polygon, components, *, pairs=None, title: str = "An n-gon in R^3 decomposed into planar regular n-gons (Eq. 5-6)"):
+    """A polygon in R^3, its components (regular planar n-gons), and their sum.
+
+    ``polygon`` is an ``(n, 3)`` array; ``components[j]`` the ``(n, 3)`` vertices of the component
+    ``z_j v_j`` of Eq. 5. ``pairs`` lists groups of indices drawn in one panel (by default
+    ``{j, n-j}``, which Eq. 6 says are coplanar; their common plane is shaded). The last panel
+    overlays the sum of the components on the polygon and states the largest deviation.
+    """
+    P = np.asarray(polygon, dtype=float)
+    comps = [np.asarray(c, dtype=float) for c in components]
+    n = len(P)
+    if pairs is None:
+        pairs = [[0]] + [[j, n - j] if j != n - j else [j] for j in range(1, n // 2 + 1)]
+    panels = len(pairs) + 2
+    cols = min(panels, 4)
+    rows = -(-panels // cols)
+    fig = new_figure(4.2 * cols, 4.0 * rows)
+    everything = np.vstack([P] + comps)
+    lo, hi = everything.min(axis=0), everything.max(axis=0)
+    centre, half = (lo + hi) / 2, float((hi - lo).max()) / 2 * 1.05
+
+    def frame(ax, label):
+        for setter, c in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), centre):
+            setter(c - half, c + half)
+        ax.set_box_aspect((1, 1, 1))
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.set_zlabel("z")
+        ax.set_title(label, fontsize=10)
+        _few_ticks(ax, 3)
+
+    ax = fig.add_subplot(rows, cols, 1, projection="3d")
+    draw_polygon_3d(ax, P, color="black", lw=1.5)
+    ax.scatter(*P[0], color="black", s=50, facecolors="none")
+    frame(ax, f"the polygon P (n = {n}; circle: vertex 0)")
+    for k, group in enumerate(pairs):
+        ax = fig.add_subplot(rows, cols, k + 2, projection="3d")
+        for j in group:
+            draw_polygon_3d(ax, comps[j], color=f"C{j % 10}", lw=1.4, label=f"$z_{{{j}}} v_{{{j}}}$")
+            ax.scatter(*comps[j][0], color=f"C{j % 10}", s=40, facecolors="none")
+        if len(group) > 1 or np.linalg.matrix_rank(comps[group[0]] - comps[group[0]].mean(axis=0), tol=1e-9) == 2:
+            _plane_patch(ax, np.vstack([comps[j] for j in group]), "C7", alpha=0.15)
+        frame(ax, ", ".join(f"$z_{{{j}}} v_{{{j}}}$" for j in group) + (" (coplanar pair)" if len(group) == 2 else ""))
+        ax.legend(fontsize=7, loc="upper left")
+    ax = fig.add_subplot(rows, cols, len(pairs) + 2, projection="3d")
+    total = np.sum(comps, axis=0)
+    draw_polygon_3d(ax, P, color="black", lw=2.5, alpha=0.35, label="P")
+    draw_polygon_3d(ax, total, color="C3", lw=1.0, ls="--", label=r"$\sum_j z_j v_j$")
+    frame(ax, f"sum of the components: max deviation {np.abs(total - P).max():.1e}")
+    ax.legend(fontsize=7, loc="upper left")
+    fig.suptitle(title)
     return fig

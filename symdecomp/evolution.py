@@ -36,6 +36,8 @@ __all__ = [
     "elliptic_profile",
     "tangent_configuration",
     "hyperbolic_configuration",
+    "ring_polygon",
+    "ring_from_polygon",
 ]
 
 
@@ -238,3 +240,19 @@ def hyperbolic_configuration(n: int, amplitude: float = 0.5, *, radius: float = 
     ring[1 : n + 1, 2] = lift[0::2]
     ring[n + 1 :, 2] = lift[1::2]
     return ring
+
+
+def ring_polygon(ring) -> np.ndarray:
+    """The 2n-gon ``P = (a_0, b_0, a_1, b_1, ..., a_{n-1}, b_{n-1})`` of a 1-ring (Eq. 10)."""
+    _, a, b = split_ring(ring)
+    P = np.empty((2 * len(a),) + a.shape[1:], dtype=np.result_type(a, b))
+    P[0::2], P[1::2] = a, b
+    return P
+
+
+def ring_from_polygon(center, polygon) -> np.ndarray:
+    """The 1-ring with centre ``center`` whose 2n-gon is ``polygon`` (Eq. 10, split as in Eq. 12)."""
+    P = np.asarray(polygon)
+    if len(P) % 2:
+        raise InvalidPolygonError(f"the polygon of a 1-ring has 2n vertices, got {len(P)}")
+    return one_ring(center, P[0::2], P[1::2])

@@ -14,7 +14,7 @@ from ..circulant import fourier_matrix
 from ..errors import check_valence
 from ._mpl import new_figure
 
-__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d", "ring_split_figure", "decomposition_figure"]
+__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d", "ring_split_figure", "decomposition_figure", "regular_components"]
 
 
 def vertex_labels(points: np.ndarray, *, decimals: int = 9) -> dict[int, str]:
@@ -148,7 +148,7 @@ def ring_split_figure(rings, *, titles=None, suptitle: str = "A planar 2n-gon sp
     if titles is None:
         titles = ["initial 1-ring"] + [f"after {k} step{'s' if k != 1 else ''}" for k in range(1, len(rings))]
     titles = list(titles)
-    fig = new_figure(5.0 * len(rings) + 4.0, 5.0)
+    fig = new_figure(5.6 * len(rings) + 4.6, 5.0)
     for k, (ring, title) in enumerate(zip(rings, titles)):
         ax = fig.add_subplot(1, len(rings) + 1, k + 1, projection="3d")
         O, a, b = split_ring(ring)
@@ -215,7 +215,7 @@ def decomposition_figure(polygon, components, *, pairs=None, title: str = "An n-
     if pairs is None:
         pairs = [[0]] + [[j, n - j] if j != n - j else [j] for j in range(1, n // 2 + 1)]
     panels = len(pairs) + 2
-    cols = min(panels, 4)
+    cols = min(panels, 3)
     rows = -(-panels // cols)
     fig = new_figure(4.2 * cols, 4.0 * rows)
     everything = np.vstack([P] + comps)
@@ -253,3 +253,21 @@ def decomposition_figure(polygon, components, *, pairs=None, title: str = "An n-
     ax.legend(fontsize=7, loc="upper left")
     fig.suptitle(title)
     return fig
+
+
+def regular_components(decomposition) -> list[np.ndarray]:
+    """The ``n`` planar regular n-gons ``z_j v_j`` of a decomposition of an n-gon in R^3, as float arrays.
+
+    ``decomposition`` is a :class:`symdecomp.polygons.PolygonDecomposition` of a polygon in R^3;
+    component ``j`` is the regular polygon of frequency ``j`` of its coplanar pair
+    (:meth:`~symdecomp.polygons.PolygonDecomposition.planar_pair`, Eq. 6). For ``j = 0`` (the
+    centroid) and ``j = n/2`` (a segment) the pair is one degenerate polygon.
+    """
+    n = decomposition.n
+    out = []
+    for j in range(n):
+        k = min(j, n - j)
+        first, second = decomposition.planar_pair(k)
+        component = first if j == k else second
+        out.append(np.array(component.vertices(), dtype=float))
+    return out

@@ -20,7 +20,7 @@ ratio of Eq. 44, depends on ``mu`` and the edge and face rules only, never on th
 >>> recursion_eigenvector(cc, sp.Rational(1, 4), 4).T
 Matrix([[-1/16, 1/32, 1/8]])
 >>> eq44_ratio(cc, MU)
-MU/(MU - 1/8)
+8*MU/(8*MU - 1)
 >>> nice_elliptic_conditions(cc).subdominant
 (3*n + sqrt(5*n**2 - 30*n + 49) - 7)/(8*n)
 """

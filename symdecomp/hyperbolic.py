@@ -22,7 +22,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
-import flint
+from fractions import Fraction
+
 import mpmath
 import sympy as sp
 
@@ -32,7 +33,6 @@ from .errors import check_valence
 from .frequency import COS, per_frequency_matrix
 from .schemes import Scheme, subdivision_matrix
 from .symbols import n as N
-from .symbols import omega as OMEGA
 from .tangent import tangent_eigenvalues
 
 __all__ = [
@@ -43,6 +43,7 @@ __all__ = [
     "hyperbolic_ring",
     "HyperbolicIteration",
     "iterate_hyperbolic_ring",
+    "apply_rational_matrix",
 ]
 
 
@@ -135,17 +136,32 @@ class HyperbolicIteration:
     predicted_factor: object
 
 
-def _conj(F: CyclotomicField, p) -> flint.fmpq_poly:
-    total = flint.fmpq_poly([0])
-    for k, a in enumerate(p.coeffs()):
-        if a != 0:
-            total += F.zeta(-k) * a
-    return F.reduce(total)
+def apply_rational_matrix(matrix: sp.MatrixBase, vector: list) -> list:
+    """``matrix @ vector`` for a rational sympy matrix and cyclotomic-field elements (exact).
+
+    For ``vector^T @ matrix`` pass ``matrix.T``.
+    """
+    rows, cols = matrix.shape
+    if cols != len(vector):
+        raise ValueError(f"matrix has {cols} columns but the vector has {len(vector)} entries")
+    out = []
+    for r in range(rows):
+        acc = None
+        for s_ in range(cols):
+            w = matrix[r, s_]
+            if w != 0:
+                term = vector[s_] * Fraction(int(w.p), int(w.q))
+                acc = term if acc is None else acc + term
+        out.append(acc if acc is not None else vector[0] * 0)
+    return out
 
 
-def _modulus(F: CyclotomicField, p) -> mpmath.mpf:
-    z = mpmath.exp(2j * mpmath.pi / F.m)
-    return abs(sum(mpmath.mpf(int(a.p)) / int(a.q) * z**k for k, a in enumerate(p.coeffs())))
+def _laurent_in(K: CyclotomicField, expr, unit: int):
+    """A Laurent polynomial in ``omega`` (rational coefficients) at ``omega = zeta^unit``."""
+    total = K(0)
+    for k, c in _laurent(expr).items():
+        total = total + K.zeta(unit * k) * K(sp.Rational(c))
+    return total
 
 
 def iterate_hyperbolic_ring(scheme: Scheme, n: int, steps: int = 4, *, digits: int = 30) -> HyperbolicIteration:
@@ -158,41 +174,41 @@ def iterate_hyperbolic_ring(scheme: Scheme, n: int, steps: int = 4, *, digits: i
     n = check_valence(n)
     if steps < 0:
         raise ValueError(f"steps must be >= 0, got {steps}")
-    F = CyclotomicField(4 * n)
+    K = CyclotomicField(4 * n)
     S = subdivision_matrix(scheme, n)
-    zero, half = F.rational(0), F.rational(1, 2)
-    x = [zero] + [F.cos(2 * (2 * i)) for i in range(n)] + [F.cos(2 * (2 * i + 1)) for i in range(n)]
-    y = [zero] + [F.sin(2 * (2 * i)) for i in range(n)] + [F.sin(2 * (2 * i + 1)) for i in range(n)]
-    z = [zero] + [F.cos(4 * (2 * i)) for i in range(n)] + [F.cos(4 * (2 * i + 1)) for i in range(n)]
+
+    def cos(k):  # cos(2 pi k/(4n))
+        return (K.zeta(k) + K.zeta(-k)) / 2
+
+    def sin(k):
+        return (K.zeta(k) - K.zeta(-k)) / (2 * K.i)
+
+    zero = K(0)
+    x = [zero] + [cos(2 * (2 * i)) for i in range(n)] + [cos(2 * (2 * i + 1)) for i in range(n)]
+    y = [zero] + [sin(2 * (2 * i)) for i in range(n)] + [sin(2 * (2 * i + 1)) for i in range(n)]
+    z = [zero] + [cos(4 * (2 * i)) for i in range(n)] + [cos(4 * (2 * i + 1)) for i in range(n)]
 
     M = per_frequency_matrix(scheme)
-
-    def block(j):
-        return [[F.from_laurent(_laurent(M[r, s]), 4 * j) for s in range(2)] for r in range(2)]
-
-    M1, M2 = block(1), block(2)
-    X1, Y1 = F.rational(1), F.zeta(2)  # (1, omega_2n)
-    X2, Y2 = F.rational(1), F.zeta(4)  # (1, omega_2n^2)
-    i_unit = F.zeta(n)
+    M1 = [[_laurent_in(K, M[r, c], 4) for c in range(2)] for r in range(2)]
+    M2 = [[_laurent_in(K, M[r, c], 8) for c in range(2)] for r in range(2)]
+    X1, Y1 = K(1), K.zeta(2)  # (1, omega_2n)
+    X2, Y2 = K(1), K.zeta(4)  # (1, omega_2n^2)
     ok, flat = True, True
     ratios = []
     with mpmath.workdps(digits + 10):
         for k in range(steps + 1):
             if k:
-                x, y, z = F.matvec(S, x), F.matvec(S, y), F.matvec(S, z)
-                X1, Y1 = F.reduce(M1[0][0] * X1 + M1[0][1] * Y1), F.reduce(M1[1][0] * X1 + M1[1][1] * Y1)
-                X2, Y2 = F.reduce(M2[0][0] * X2 + M2[0][1] * Y2), F.reduce(M2[1][0] * X2 + M2[1][1] * Y2)
+                x, y, z = apply_rational_matrix(S, x), apply_rational_matrix(S, y), apply_rational_matrix(S, z)
+                X1, Y1 = M1[0][0] * X1 + M1[0][1] * Y1, M1[1][0] * X1 + M1[1][1] * Y1
+                X2, Y2 = M2[0][0] * X2 + M2[0][1] * Y2, M2[1][0] * X2 + M2[1][1] * Y2
             for i in range(n):
                 for idx, (amp1, amp2) in ((1 + i, (X1, X2)), (1 + n + i, (Y1, Y2))):
-                    t = F.mul(amp1, F.zeta(4 * i))
-                    tc = _conj(F, t)
-                    px, py = F.mul(t + tc, half), F.mul(F.mul(t - tc, half), -i_unit)
-                    h = F.mul(amp2, F.zeta(8 * i))
-                    pz = F.mul(h + _conj(F, h), half)
-                    ok &= F.is_zero(x[idx] - px) and F.is_zero(y[idx] - py) and F.is_zero(z[idx] - pz)
-            flat &= F.is_zero(x[0]) and F.is_zero(y[0]) and F.is_zero(z[0])
-            flat &= F.is_zero(sum(z[1 : n + 1], zero)) and F.is_zero(sum(z[n + 1 :], zero))
-            ratios.append(_modulus(F, X2) / _modulus(F, X1) ** 2)
+                    t = amp1 * K.zeta(4 * i)  # x + i y of the vertex
+                    h = amp2 * K.zeta(8 * i)
+                    ok &= x[idx] == t.real() and y[idx] == t.imag() and z[idx] == h.real()
+            flat &= x[0] == 0 and y[0] == 0 and z[0] == 0
+            flat &= sum(z[1 : n + 1], zero) == 0 and sum(z[n + 1 :], zero) == 0
+            ratios.append(abs(X2.to_mpc()) / abs(X1.to_mpc()) ** 2)
         lam1 = mpmath.mpf(sp.Float(sp.N(tangent_lambda(scheme, 1).subs(N, n), digits + 10), digits + 10)._mpf_)
         lam2 = mpmath.mpf(sp.Float(sp.N(hyperbolic_lambda(scheme).subs(N, n), digits + 10), digits + 10)._mpf_)
         factor = lam2 / lam1**2

@@ -32,6 +32,7 @@ import mpmath
 import sympy as sp
 
 from .cyclotomic import CyclotomicField
+from .hyperbolic import apply_rational_matrix
 from .elliptic import tangent_lambda
 from .errors import InvalidSchemeError, check_valence
 from .frequency import COS, circulant_blocks, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
@@ -155,36 +156,38 @@ def check_masks_exactly(scheme: Scheme, n: int) -> tuple[bool, bool, bool]:
     w = sp.Matrix([masks.position])
     position_ok = all(sp.nsimplify(x) == 0 for x in (w * S - w)) and sp.nsimplify(sum(w)) == 1
 
-    F = CyclotomicField(4 * n)
+    K = CyclotomicField(4 * n)
     ev = tangent_eigenvalues(scheme)
-    c = F.cos(2)  # cos(pi/n) = cos(2 pi * 2/(4n))
+    c = (K.zeta(2) + K.zeta(-2)) / 2  # cos(pi/n) = cos(2 pi * 2/(4n))
+
+    def cos(k):  # cos(2 pi k/(4n))
+        return (K.zeta(k) + K.zeta(-k)) / 2
+
+    def sin(k):
+        return (K.zeta(k) - K.zeta(-k)) / (2 * K.i)
 
     def in_c(expr):
         poly = sp.Poly(sp.expand(expr), COS)
-        total = F.rational(0)
+        total = K(0)
         for (power,), coeff in poly.terms():
-            term = F.rational(coeff)
-            for _ in range(power):
-                term = F.mul(term, c)
-            total = total + term
-        return F.reduce(total)
+            total = total + K(sp.Rational(coeff)) * c**power
+        return total
 
     trace, det = in_c(ev.trace), in_c(ev.determinant)
     m22 = in_c(laurent_to_cos(per_frequency_matrix(scheme)[1, 1]))
     ab = circulant_blocks(scheme).ab
+    ST = S.T
     results = []
-    for trig in (F.cos, F.sin):
+    for trig in (cos, sin):
         # (lambda_1 - m22) * mask, as pairs (p0, p1) meaning p0 + p1*L.
-        zero = F.rational(0)
-        p0 = [zero] + [F.mul(-m22, trig(4 * i)) for i in range(n)]
+        zero = K(0)
+        p0 = [zero] + [-m22 * trig(4 * i) for i in range(n)]
         p1 = [zero] + [trig(4 * i) for i in range(n)]
-        b = [F.reduce(sum((trig(4 * (i - k)) * F.rational(wk) for k, wk in ab.items()), F.rational(0))) for i in range(n)]
-        p0 += b
+        p0 += [sum((trig(4 * (i - k)) * K(sp.Rational(wk)) for k, wk in ab.items()), zero) for i in range(n)]
         p1 += [zero] * n
-        q0, q1 = F.vecmat(p0, S), F.vecmat(p1, S)
+        q0, q1 = apply_rational_matrix(ST, p0), apply_rational_matrix(ST, p1)
         # L*(p0 + p1 L) = -det*p1 + (p0 + tr*p1) L
-        l0 = [F.mul(-det, y) for y in p1]
-        l1 = [F.reduce(x + F.mul(trace, y)) for x, y in zip(p0, p1)]
-        ok = all(F.is_zero(a - b_) for a, b_ in zip(q0, l0)) and all(F.is_zero(a - b_) for a, b_ in zip(q1, l1))
-        results.append(ok)
+        l0 = [-det * v for v in p1]
+        l1 = [u + trace * v for u, v in zip(p0, p1)]
+        results.append(all(a == b for a, b in zip(q0, l0)) and all(a == b for a, b in zip(q1, l1)))
     return position_ok, results[0], results[1]

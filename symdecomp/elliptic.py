@@ -208,7 +208,16 @@ def _value(expr, n: int, dps: int):
 
 
 def elliptic_defect_table(scheme: Scheme, valences, *, digits: int = 20) -> tuple[EllipticDefectRow, ...]:
-    """Evaluate both defects of :func:`nice_elliptic_conditions` for each valence (``digits`` significant)."""
+    """Evaluate both defects of :func:`nice_elliptic_conditions` for each valence (``digits`` significant).
+
+    The values are mpmath numbers computed at ``digits + 10`` digits; compare them inside a
+    ``mpmath.workdps`` block of that precision (arithmetic outside runs at the ambient one).
+    ``symdecomp tune N --table`` prints this table for ``n = 3..N``.
+
+    >>> from symdecomp.schemes import catmull_clark
+    >>> [r.texts[2] for r in elliptic_defect_table(catmull_clark(), [3, 4, 5], digits=6)]
+    ['-0.00151292', '0.0', '0.0199873']
+    """
     if scheme.parameters:
         raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
     cond = nice_elliptic_conditions(scheme)

@@ -30,6 +30,13 @@ def _smaller() -> CheckResult:
     c = sp.Symbol("c", positive=True)  # cos(pi/n); cos(2 pi/n) = 2c^2 - 1
     below = sp.factor(2 * c**2 - 1 - c)  # cos(2pi/n) < cos(pi/n)  <=> (2c+1)(c-1) < 0
     above = sp.factor(-(2 * c**2 - 1) - c)  # -cos(2pi/n) < cos(pi/n) <=> (2c-1)(c+1) > 0, false at c = 1/2 (n = 3)
+    # On c in (1/2, 1) (n >= 4) both polynomials keep one sign: no root inside, negative at c = 3/4.
+    for poly in (below, above):
+        inside = [r for r in sp.Poly(poly, c).real_roots() if sp.Rational(1, 2) < r < 1]
+        if inside or not poly.subs(c, sp.Rational(3, 4)) < 0:
+            return CheckResult(Status.ERROR, f"sign analysis failed for {poly}")
+    if not sp.simplify(slope).is_positive:
+        return CheckResult(Status.ERROR, f"could not show {slope} > 0")
     lam1_3 = tangent_lambda(cc, 1).subs(N, 3)
     lam2_3 = hyperbolic_lambda(cc).subs(N, 3)
     equal_at_3 = sp.simplify(lam1_3 - lam2_3) == 0

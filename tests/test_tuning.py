@@ -34,6 +34,7 @@ def test_line_makes_the_target_an_exact_eigenvalue_all_valences(n):
     _check_line_exactly(n)
     t = tune(CC, n)
     assert t.jointly_possible == (n == 4)
+    assert t.standard_beta_admissible == (True, True) and t.below_lambda1 == (True, True)
 
 
 def _check_line_exactly(n):
@@ -108,3 +109,22 @@ def test_cli_tune_rejects_bad_valence(capsys):
     with pytest.raises(SystemExit):
         main(["tune", "2"])
     assert "valence" in capsys.readouterr().err
+
+
+def test_condition_one_line_is_a_closed_form_in_n():
+    cond = nice_elliptic_conditions(CC)
+    line = condition_line(CC, cond.lambda1**2)
+    alpha_n = line.alpha_on_line.subs(BETA, CC.vertex_rule.each_b)
+    assert alpha_n.free_symbols == {N}
+    assert sp.simplify(alpha_n.subs(N, 4) - sp.Rational(3, 32)) == 0  # the standard weight already works at n = 4
+    with mpmath.workdps(30):  # and agrees with tune() at another valence
+        t = tune(CC, 9)
+        assert abs(mpmath.mpf(str(sp.N(alpha_n.subs(N, 9) - t.at_standard_beta[0][0], 40)))) < mpmath.mpf(10) ** -25
+
+
+def test_tune_rejects_free_parameters():
+    from symdecomp.errors import InvalidSchemeError
+    from symdecomp.symbols import alpha
+
+    with pytest.raises(InvalidSchemeError, match="free parameters"):
+        tune(catmull_clark(alpha, BETA), 5)

@@ -20,7 +20,7 @@ ratio of Eq. 44, depends on ``mu`` and the edge and face rules only, never on th
 >>> recursion_eigenvector(cc, sp.Rational(1, 4), 4).T
 Matrix([[-1/16, 1/32, 1/8]])
 >>> eq44_ratio(cc, MU)
-MU/(MU - 1/8)
+8*MU/(8*MU - 1)
 >>> nice_elliptic_conditions(cc).subdominant
 (3*n + sqrt(5*n**2 - 30*n + 49) - 7)/(8*n)
 """
@@ -208,7 +208,16 @@ def _value(expr, n: int, dps: int):
 
 
 def elliptic_defect_table(scheme: Scheme, valences, *, digits: int = 20) -> tuple[EllipticDefectRow, ...]:
-    """Evaluate both defects of :func:`nice_elliptic_conditions` for each valence (``digits`` significant)."""
+    """Evaluate both defects of :func:`nice_elliptic_conditions` for each valence (``digits`` significant).
+
+    The values are mpmath numbers computed at ``digits + 10`` digits; compare them inside a
+    ``mpmath.workdps`` block of that precision (arithmetic outside runs at the ambient one).
+    ``symdecomp tune N --table`` prints this table for ``n = 3..N``.
+
+    >>> from symdecomp.schemes import catmull_clark
+    >>> [r.texts[2] for r in elliptic_defect_table(catmull_clark(), [3, 4, 5], digits=6)]
+    ['-0.00151292', '0.0', '0.0199873']
+    """
     if scheme.parameters:
         raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
     cond = nice_elliptic_conditions(scheme)

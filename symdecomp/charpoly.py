@@ -185,12 +185,12 @@ def matrix_characteristic_polynomial(scheme: Scheme, n: int, values: Mapping[sp.
     if scheme.parameters:
         raise SymdecompError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; give their values")
     S = subdivision_matrix(scheme, n)
-    entries = []
-    for e in S:
+    F = flint.fmpq_mat(S.rows, S.cols)
+    for (r, c), e in S.todok().items():
         if not e.is_Rational:
             raise SymdecompError(f"subdivision matrix entry {e} is not rational")
-        entries.append(flint.fmpq(int(e.p), int(e.q)))
-    return flint.fmpq_mat(S.rows, S.cols, entries).charpoly()
+        F[r, c] = flint.fmpq(int(e.p), int(e.q))
+    return F.charpoly()
 
 
 def _affine_in(expr: sp.Expr, params) -> bool:

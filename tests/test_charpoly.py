@@ -114,3 +114,18 @@ def test_free_parameters_must_be_given():
         closed_form_characteristic_polynomial(FREE).at(5)
     with pytest.raises(SymdecompError, match="free parameters"):
         matrix_characteristic_polynomial(FREE, 5)
+
+
+@pytest.mark.parametrize("k", range(3, 10))
+def test_symmetric_scheme_frequencies_pair_up(k):
+    """Catmull-Clark: prod_{j=1}^{n-1} q(x, omega^j) is the square Psi_n^2 (frequency j pairs with n - j)."""
+    cf = closed_form_characteristic_polynomial(STANDARD)
+    psi_squared = sp.expand(sp.expand(cf.paired_factor.subs(n, k)) ** 2)
+    rest = cf.at(k)
+    rest, r = divmod(rest, to_fmpq_poly(cf.unit_factor) * to_fmpq_poly(cf.zero_frequency_factor.subs(n, k)))
+    assert r == 0
+    assert to_fmpq_poly(psi_squared) == rest
+
+
+def test_asymmetric_scheme_has_no_paired_factor():
+    assert closed_form_characteristic_polynomial(asymmetric_scheme()).paired_factor is None

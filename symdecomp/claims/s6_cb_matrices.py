@@ -335,7 +335,8 @@ def _prop63() -> CheckResult:
         return CheckResult(Status.ERROR, "a Prop. 6.3 identity failed; see steps")
     return CheckResult(
         Status.CORRECTED,
-        "proved for symbolic block order m: only E_0 changes, into E_0 + m T; the printed t_ij = n a_ij (n = number of blocks) "
+        "proved for symbolic block order m: only E_0 changes, into E_0 + m T; the printed t_ij = n a_ij (in the proposition n is the number of blocks; "
+        "the factor is the block order m, which in the application is the valence) "
         "and 'eigenvectors' are wrong, and the hypothesis 'if Remark 6.1 holds' is not needed",
         steps=(
             Step("$E_k(C)-E_k(B)$ for $k\\ne0$ (banded blocks plus $t_{pq}J$, symbolic order $m$)", sp.simplify(C.frequency_matrix(zero_frequency=False) - Bm.frequency_matrix(zero_frequency=False))),
@@ -364,7 +365,12 @@ def _s_prime() -> CheckResult:
     )
     form_ok = constants == sp.Matrix([[-ALPHA, -BETA], [-ALPHA, -BETA]]) and bands_same and red.reduced.column == (0, 0)
     first_row = (red.reduced.corner, red.reduced.row)
-    concrete_ok = True
+    # the text works on S - xI: after adding all columns the first column is (1 - x, ..., 1 - x)
+    x = sp.Symbol("x")
+    Sx = sp.Matrix(subdivision_matrix(scheme, 4)) - x * sp.eye(9)
+    Q4, _ = reduction_similarity(9)
+    column_ok = is_zero((Sx * sp.Matrix(Q4))[:, 0] - (1 - x) * sp.ones(9, 1))
+    concrete_ok = column_ok
     for n in range(3, 9):
         S = sp.Matrix(subdivision_matrix(scheme, n))
         Q, Qinv = reduction_similarity(2 * n + 1)
@@ -379,7 +385,8 @@ def _s_prime() -> CheckResult:
         "first column (1, 0, ..., 0), first row (1, alpha 1^T, beta 1^T), lower-right [[C1-A, C2-B], [C3-A, C4-B]]; "
         "checked entry by entry against Q^{-1} S Q for n = 3..8",
         steps=(
-            Step("first column after adding all columns (row sums, symbolic $n$)", sp.Matrix([red.after_columns.corner, *red.after_columns.column])),
+            Step("on $S-xI$ ($n=4$) the first column after adding all columns is $(1-x)(1,\\dots,1)^T$, as the text says"),
+            Step("first column after adding all columns to it (row sums, symbolic $n$)", sp.Matrix([red.after_columns.corner, *red.after_columns.column])),
             Step("after subtracting the first row", sp.Matrix([red.reduced.corner, *red.reduced.column])),
             Step("first row of $S'$ (corner, weight on each $a$, each $b$)", sp.Matrix([[first_row[0], *first_row[1]]])),
             Step("constant parts added to the circulant blocks $C_1..C_4$", constants),
@@ -483,6 +490,6 @@ def _eq51() -> CheckResult:
             Step("$\\prod_k(\\rho+c\\,\\omega_n^k)=\\rho^n-(-c)^n$ and $\\prod_k c_+\\omega_n^k=c_+^n\\cdot$", sign),
             Step("$\\prod_{k=0}^{n-1}q(x,\\omega_n^k)=(P-A)(Q-A)/(c_+^n\\,(-1)^{n-1})$ with $P,Q=\\rho_\\pm^n$, $A,B=(-c_\\pm)^n$", combined),
             Step("$\\det(xI-E_0)$", cf.zero_frequency_factor),
-            Step("$\\det(xI-S)$", cf.expression),
+            Step("$\\det(xI-S)$ (the paper's $\\det(S-xI)$ is its negative: the size $2n+1$ is odd)", cf.expression),
         ),
     )

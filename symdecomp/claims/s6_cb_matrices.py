@@ -117,7 +117,7 @@ def _prop61() -> CheckResult:
         Status.CORRECTED,
         "false with the printed index range 0<i,j<n-1; with all entries equal (0<=i,j<=n-1) proved for symbolic n",
         steps=(
-            Step("As printed, for $n=3$ only $c_{11}$ is constrained. Example with $c=1$: eigenvalues", C3.eigenvals(), sp.Symbol("C")),
+            Step("As printed, for $n=3$ only $c_{11}$ is constrained. Example with $c=1$, eigenvalues of", sp.FiniteSet(*C3.eigenvals()), C3),
             Step("Corrected: $C=cJ=\\mathrm{circ}(c,\\dots,c)$; by Prop. 2.1 its eigenvalue on $v_k$ is $c\\sum_{l=0}^{n-1}w^l$, $w=\\omega_n^k$", geometric),
             Step("at $w\\ne1$ (so $w^n=1$) the sum is", at_root),
             Step("at $w=1$ ($k=0$, eigenvector $(1,\\dots,1)$) the eigenvalue is $c$ times", at_one),

@@ -140,3 +140,15 @@ def test_bad_input_is_named():
     with pytest.raises(SymdecompError, match="frequency"):
         frequency_matrix(random_cb(2, 3, 0), 3)
     assert isinstance(random_cb(2, 3, 0), CBMatrix)
+
+
+def test_lift_identity_with_symbolic_blocks():
+    """Prop. 6.2 for a CB-matrix with fully symbolic circulant blocks (2 x 2 blocks of order 3)."""
+    B = cb_matrix([[[sp.Symbol(f"c{p}{q}{l}") for l in range(3)] for q in range(2)] for p in range(2)])
+    a = sp.symbols("a0:2")
+    F = fourier_matrix(3)
+    for k in range(3):
+        v = list(F.row(k))
+        lhs = sp.Matrix(B.matrix()) * sp.Matrix(lifted_vector(a, v))
+        rhs = sp.Matrix(lifted_vector(list(sp.Matrix(frequency_matrix(B, k)) * sp.Matrix(a)), v))
+        assert is_zero_matrix(lhs - rhs)

@@ -3,6 +3,7 @@
 import json
 
 import pytest
+import sympy as sp
 
 from symdecomp.claims import Status, all_claims, check_claim
 from symdecomp.cli import main
@@ -35,6 +36,11 @@ def test_claim_status(label):
     assert result.steps, "a check shows its derivation"
     if result.status is Status.CORRECTED:
         assert result.counterexample and result.correction
+    for step in result.steps:
+        for obj in (step.expr, step.lhs):
+            if obj is not None:
+                assert isinstance(obj, (sp.Basic, sp.MatrixBase))
+                assert sp.latex(obj)
 
 
 def test_cli_charpoly_json(capsys):

@@ -187,7 +187,8 @@ def _eq47() -> CheckResult:
         return CheckResult(Status.ERROR, "block-product form did not check out")
     return CheckResult(
         Status.CORRECTED,
-        "BV = (C_pq v)_pq alpha holds for generic 3x3 blocks of order 3 and any v; the printed first row ends with C_{1,n-1}, a typo for C_{0,n-1}",
+        "BV = (C_pq v)_pq alpha holds for generic 3x3 blocks of order 3 and any v; the printed first row (the visible part; the matrix is cut "
+        "in the text) ends with C_{1,n-1}, a typo for C_{0,n-1}",
         steps=(Step("$BV-\\left(\\sum_q \\alpha_q C_{pq}v\\right)_p$ for generic blocks, generic $v$", sp.simplify(lhs - rhs).T),),
         counterexample="n = 3 blocks of order 3, generic entries: with C_{1,2} in the first row (as printed) the first block row differs from BV",
         correction="The (p, q) entry of the matrix in Eq. 47 is C_{p,q} v; its first row ends with C_{0,n-1} v.",

@@ -78,6 +78,11 @@ class ClosedFormCharpoly:
     frequency_one: sp.Expr
     #: The whole characteristic polynomial, one expression in ``n``, ``x`` and the weights.
     expression: sp.Expr
+    #: For a symmetric ``q`` (``c_+ = c_-``): ``Psi = (sigma_+^n - sigma_-^n)/(sigma_+ - sigma_-)`` with
+    #: ``sigma_+- = (sqrt(c_0 - 2c_+) +- sqrt(c_0 + 2c_+))/2`` (so ``sigma_+-^2 = rho_+-``); then
+    #: ``prod_{k=1}^{n-1} q(x, omega_n^k) = Psi^2``: every frequency ``k`` pairs with ``n - k``.
+    #: ``None`` when ``c_+ != c_-``.
+    paired_factor: sp.Expr | None = None
 
     def at(self, n: int, values: Mapping[sp.Symbol, object] | None = None) -> flint.fmpq_poly:
         """Evaluate the closed form exactly at valence ``n`` (and parameter values), as an ``fmpq_poly``.
@@ -164,6 +169,11 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
     q_one = sp.factor(sp.expand(q.subs(OMEGA, 1)))
     unit = x - reduction.reduced.corner
     zero_factor = sp.expand((x * sp.eye(size) - E0).det())
+    paired = None
+    if sp.expand(c_plus - c_minus) == 0:
+        sigma_p = (sp.sqrt(c_zero - 2 * c_plus) + sp.sqrt(c_zero + 2 * c_plus)) / 2
+        sigma_m = (sp.sqrt(c_zero - 2 * c_plus) - sp.sqrt(c_zero + 2 * c_plus)) / 2
+        paired = (sigma_p**N - sigma_m**N) / (sigma_p - sigma_m)
     return ClosedFormCharpoly(
         unit_factor=unit,
         zero_frequency_matrix=E0,
@@ -174,6 +184,7 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
         frequency_product=product,
         frequency_one=q_one,
         expression=unit * zero_factor * product / q_one,
+        paired_factor=paired,
     )
 
 
@@ -185,12 +196,12 @@ def matrix_characteristic_polynomial(scheme: Scheme, n: int, values: Mapping[sp.
     if scheme.parameters:
         raise SymdecompError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; give their values")
     S = subdivision_matrix(scheme, n)
-    entries = []
-    for e in S:
+    F = flint.fmpq_mat(S.rows, S.cols)
+    for (r, c), e in S.todok().items():
         if not e.is_Rational:
             raise SymdecompError(f"subdivision matrix entry {e} is not rational")
-        entries.append(flint.fmpq(int(e.p), int(e.q)))
-    return flint.fmpq_mat(S.rows, S.cols, entries).charpoly()
+        F[r, c] = flint.fmpq(int(e.p), int(e.q))
+    return F.charpoly()
 
 
 def _affine_in(expr: sp.Expr, params) -> bool:

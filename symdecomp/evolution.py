@@ -20,22 +20,23 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
+import sympy as sp
 
 from .errors import InvalidPolygonError, check_valence
+from .polygons import decompose
 from .schemes import Scheme, subdivision_matrix
 
 __all__ = [
+    "as_ring_array",
     "one_ring",
     "split_ring",
     "subdivide_ring",
     "subdivision_matrix_numeric",
-    "fourier_coefficients",
     "Ellipse",
     "inscribed_ellipse",
     "EllipticProfile",
     "elliptic_profile",
     "tangent_configuration",
-    "hyperbolic_configuration",
     "ring_polygon",
     "ring_from_polygon",
 ]
@@ -61,6 +62,27 @@ def one_ring(center, a, b) -> np.ndarray:
     return ring
 
 
+def as_ring_array(ring) -> np.ndarray:
+    """A ring as a float (or complex) ``(2n+1, d)`` array.
+
+    Accepts arrays, nested lists, sympy matrices in the vertex order (e.g.
+    :func:`symdecomp.hyperbolic.hyperbolic_ring`) and :class:`symdecomp.ring.OneRing`.
+    """
+    from .ring import OneRing
+
+    if isinstance(ring, OneRing):
+        ring = ring.rows()
+    if isinstance(ring, sp.MatrixBase):
+        ring = ring.evalf(20).tolist()
+    values = np.array(ring, dtype=complex)
+    if values.ndim == 1:
+        values = values[:, None]
+    if np.all(values.imag == 0):
+        values = values.real.copy()
+    split_ring(values)
+    return values
+
+
 def split_ring(ring) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(O, a, b)`` of a ``(2n+1, d)`` ring array: the centre, the ``a_i`` and the ``b_i``."""
     ring = np.asarray(ring)
@@ -81,30 +103,21 @@ def subdivision_matrix_numeric(scheme: Scheme, n: int) -> np.ndarray:
 
 
 def subdivide_ring(scheme: Scheme, ring, steps: int = 1) -> list[np.ndarray]:
-    """The ring and its images after ``1..steps`` subdivision steps (a list of ``steps + 1`` arrays)."""
+    """The ring and its images after ``1..steps`` subdivision steps (a list of ``steps + 1`` arrays).
+
+    The floating-point, whole-history counterpart of :func:`symdecomp.ring.subdivide` (same
+    exact matrix, rounded once), for figures that show every step. ``ring`` is anything
+    :func:`as_ring_array` accepts.
+    """
     if isinstance(steps, bool) or not isinstance(steps, int) or steps < 0:
         raise ValueError(f"steps must be a non-negative integer, got {steps!r}")
-    ring = np.asarray(ring)
-    split_ring(ring)
+    ring = as_ring_array(ring)
     n = (ring.shape[0] - 1) // 2
     S = subdivision_matrix_numeric(scheme, n)
     out = [ring]
     for _ in range(steps):
         out.append(S @ out[-1])
     return out
-
-
-def fourier_coefficients(polygon) -> np.ndarray:
-    """The coefficients ``z_k`` of ``P = sum_k z_k v_k`` (Eq. 5) for an ``(m,)`` or ``(m, d)`` polygon.
-
-    Row ``k`` of the result is ``z_k`` (a point of ``C^d``): ``p_i = sum_k z_k omega_m^(k i)``.
-
-    >>> np.round(fourier_coefficients(np.exp(2j * np.pi * np.arange(5) / 5)), 12) + 0
-    array([0.+0.j, 1.+0.j, 0.+0.j, 0.+0.j, 0.+0.j])
-    """
-    P = np.asarray(polygon, dtype=complex)
-    return np.fft.fft(P, axis=0) / P.shape[0]
-
 
 
 @dataclass(frozen=True)
@@ -145,9 +158,10 @@ def inscribed_ellipse(polygon) -> Ellipse:
     = z_0 + 2 Re(z_1 omega^i)``: the vertices of the affine-regular polygon ``A^1 + A^{n-1}`` lie on
     ``z_0 + 2 Re(z_1 e^{it})``. Other frequencies of the polygon are ignored.
     """
-    z = fourier_coefficients(np.asarray(polygon, dtype=float))
-    if z.ndim != 2 or z.shape[1] != 3:
+    P = np.asarray(polygon, dtype=float)
+    if P.ndim != 2 or P.shape[1] != 3:
         raise InvalidPolygonError(f"an n-gon in R^3 is an (n, 3) array, got shape {np.shape(polygon)}")
+    z = np.array(decompose(P).amplitudes, dtype=complex)
     if np.linalg.norm(np.cross(z[1].real, z[1].imag)) < 1e-300:
         raise InvalidPolygonError("the polygon's frequency-1 part is degenerate (a segment or a point): no ellipse")
     return Ellipse(z[0].real, 2 * z[1].real, -2 * z[1].imag)
@@ -180,7 +194,7 @@ class EllipticProfile:
 
 def elliptic_profile(scheme: Scheme, ring, steps: int) -> EllipticProfile:
     """Iterate ``ring`` (``(2n+1, 3)``) and measure ``E_a``, ``E_b``, ``d_a``, ``d_b`` at every step."""
-    rings = subdivide_ring(scheme, np.asarray(ring, dtype=float), steps)
+    rings = subdivide_ring(scheme, ring, steps)
     ea, eb, da, db = [], [], [], []
     for r in rings:
         O, a, b = split_ring(r)
@@ -225,21 +239,6 @@ def tangent_configuration(n: int, heights=(0.0, 0.0, 0.0), *, radius: float = 1.
         np.column_stack([a.real, a.imag, np.full(n, h_a)]),
         np.column_stack([b.real, b.imag, np.full(n, h_b)]),
     )
-
-
-def hyperbolic_configuration(n: int, amplitude: float = 0.5, *, radius: float = 1.0) -> np.ndarray:
-    """Section 5.3's configuration with only hyperbolic components outside the tangent plane.
-
-    ``O`` on the plane of ``A^1, A^{2n-1}, B^1, B^{2n-1}`` (so the elliptic component is zero),
-    plus the combination ``amplitude * (v_2 + v_{2n-2})/2`` of the 2n-gons of Eq. 11, placed
-    perpendicular to the 1-ring: each ``a_i``, ``b_i`` is lifted by ``amplitude * cos(2 phi)``,
-    ``phi`` its angle.
-    """
-    ring = tangent_configuration(n, (0.0, 0.0, 0.0), radius=radius)
-    lift = amplitude * _two_n_gon(n, 2).real
-    ring[1 : n + 1, 2] = lift[0::2]
-    ring[n + 1 :, 2] = lift[1::2]
-    return ring
 
 
 def ring_polygon(ring) -> np.ndarray:

@@ -28,6 +28,16 @@ def test_one_step_is_the_exact_matrix(n):
     assert np.max(np.abs(np.array(exact.evalf(20), dtype=float) - numeric)) < 1e-13
 
 
+def test_as_ring_array_accepts_the_ring_types_of_the_package():
+    from symdecomp.ring import OneRing, subdivide
+
+    ring = OneRing.from_points((0, 0, 1), [(1, 0, 0), (0, 1, 0), (-1, 0, 0), (0, -1, 0)], [(1, 1, 0), (-1, 1, 0), (-1, -1, 0), (1, -1, 0)])
+    ours = evolution.subdivide_ring(CC, ring, 3)[-1]
+    theirs = evolution.as_ring_array(subdivide(CC, ring, 3))
+    assert np.max(np.abs(ours - theirs)) < 1e-15
+    assert evolution.as_ring_array(sd.hyperbolic_ring(3)).shape == (7, 3)
+
+
 def test_ring_polygon_round_trip_is_eq_10_and_12():
     ring = _random_ring(4)
     P = evolution.ring_polygon(ring)
@@ -88,7 +98,7 @@ def test_valence_six_grows_kappa_at_mu_over_lambda1_squared():
 
 def test_hyperbolic_configuration_decays_at_the_rate_of_m2():
     n = 5
-    ring = evolution.hyperbolic_configuration(n)
+    ring = evolution.as_ring_array(sd.hyperbolic_ring(n, sp.Rational(1, 2)))
     O, a, b = evolution.split_ring(ring)
     assert abs(O[2]) < 1e-15 and abs(a[:, 2].mean()) < 1e-15 and abs(b[:, 2].mean()) < 1e-15
     rings = evolution.subdivide_ring(CC, ring, 30)  # the other eigenvalue of M_2 is 0.54 of it: slow

@@ -222,17 +222,19 @@ def _two_n_gon(n: int, j: int) -> np.ndarray:
     return w
 
 
-def tangent_configuration(n: int, heights=(0.0, 0.0, 0.0), *, radius: float = 1.0) -> np.ndarray:
+def tangent_configuration(n: int, heights=(0.0, 0.0, 0.0), *, radius: float = 1.0, stretch: float = 0.0) -> np.ndarray:
     """A 1-ring in R^3 made of the tangent-plane components and the heights of Remark 5.2.
 
-    In the plane: the regular convex 2n-gon ``v_1`` of Eq. 11 (``A^1 + A^{2n-1}``,
-    ``B^1 + B^{2n-1}``: the real 2n-gon through ``radius * exp(i pi k/n)``), with ``O`` at the
-    centre. Heights (z): ``heights = (h_O, h_a, h_b)`` for ``O``, every ``a_i`` and every ``b_i``.
-    Remark 5.2's two cases are ``(1, 1, 1)`` (no elliptic component) and ``(0, 1, 1)``.
+    In the plane (as complex numbers): ``radius * (v_1 + stretch * v_{2n-1})`` of Eq. 11, the
+    components ``A^1 + A^{2n-1}``, ``B^1 + B^{2n-1}``: a regular 2n-gon for ``stretch = 0``, an
+    affine image of one (inscribed in an ellipse with semi-axes ``radius * (1 +- stretch)``,
+    Eq. 40) otherwise; ``O`` at the centre. Heights (z): ``heights = (h_O, h_a, h_b)`` for ``O``,
+    every ``a_i`` and every ``b_i``. Remark 5.2's two cases are ``(1, 1, 1)`` (no elliptic
+    component) and ``(0, 1, 1)``.
     """
     n = check_valence(n)
     h_O, h_a, h_b = (float(h) for h in heights)
-    p = radius * _two_n_gon(n, 1)
+    p = radius * (_two_n_gon(n, 1) + float(stretch) * _two_n_gon(n, 2 * n - 1))
     a, b = p[0::2], p[1::2]
     return one_ring(
         [0.0, 0.0, h_O],

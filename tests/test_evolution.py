@@ -134,3 +134,12 @@ def test_bad_input_is_named():
         evolution.subdivide_ring(CC, _random_ring(4), -1)
     with pytest.raises(InvalidPolygonError):
         evolution.inscribed_ellipse(np.zeros((5, 3)))
+
+
+def test_tangent_configuration_is_on_the_ellipse_of_eq_40():
+    ring = evolution.tangent_configuration(5, (0, 1, 2), radius=2.0, stretch=0.25)
+    O, a, b = evolution.split_ring(ring)
+    assert O.tolist() == [0, 0, 0] and np.allclose(a[:, 2], 1) and np.allclose(b[:, 2], 2)
+    for poly in (a, b):
+        major, minor = evolution.inscribed_ellipse(poly).semi_axes()
+        assert abs(major - 2.5) < 1e-13 and abs(minor - 1.5) < 1e-13

@@ -23,20 +23,26 @@ __all__ = [
 ]
 
 
-def _paraboloid(ax, kappa: float, radius: float, color: str = "C2") -> None:
-    r = np.linspace(0, radius, 20)
+def _paraboloid(ax, ellipse, distance: float, reach: float, color: str = "C2") -> None:
+    """The elliptic paraboloid with apex at the origin through ``ellipse`` at height ``distance``.
+
+    Points ``s (U cos t + V sin t) + s^2 distance N`` (``N`` the ellipse's normal), ``0 <= s <= reach``.
+    """
+    s = np.linspace(0, reach, 20)
     t = np.linspace(0, 2 * np.pi, 48)
-    R, T = np.meshgrid(r, t)
-    ax.plot_surface(R * np.cos(T), R * np.sin(T), kappa * R**2, color=color, alpha=0.15, linewidth=0)
+    S, T = np.meshgrid(s, t)
+    N = ellipse.normal()
+    X, Y, Z = (S * (ellipse.u[k] * np.cos(T) + ellipse.v[k] * np.sin(T)) + S**2 * distance * N[k] for k in range(3))
+    ax.plot_surface(X, Y, Z, color=color, alpha=0.15, linewidth=0)
 
 
 def ellipses_figure(profile: EllipticProfile, steps: Iterable[int] = range(1, 6), *, title: str = ""):
     """Fig. 7: the ellipses ``E_a``, ``E_b`` after several steps, each relative to that step's ``O``.
 
     Left (3-D): for each step ``k`` in ``steps``, ``E_a`` and ``E_b`` translated so that ``O_k`` is at
-    the origin, with the paraboloid of revolution ``z = kappa r^2`` through the last ``E_a``
-    (``kappa = d_a / scale^2``, :class:`symdecomp.evolution.EllipticProfile`). With nice elliptic
-    properties every ellipse lies on it. Right: ``kappa_a`` and ``kappa_b`` at every step; nice
+    the origin, with the elliptic paraboloid with apex ``O`` through the last ``E_a`` (its
+    horizontal sections are scaled copies of ``E_a``, at heights growing with the square of the
+    scale). With nice elliptic properties every ellipse lies on it. Right: ``kappa_a`` and ``kappa_b`` at every step; nice
     elliptic properties make both curves flat (subdominant eigenvalue of Eq. 43 = ``lambda_1^2``)
     and equal (Eq. 44 = the squared scale ratio of Eq. 39).
     """
@@ -52,10 +58,14 @@ def ellipses_figure(profile: EllipticProfile, steps: Iterable[int] = range(1, 6)
             ax.plot(p[:, 0], p[:, 1], p[:, 2], color=color, lw=1.2, label=name if index == 0 else None)
     ax.scatter([0], [0], [0], color="black", s=20, label="$O_k$ (each step's O, at the origin)")
     last = steps[-1]
-    kappa = float(profile.kappa_a[last])
-    radius = max(profile.ellipses_b[k].semi_axes()[0] for k in steps)
-    _paraboloid(ax, kappa, radius)
+    reach = 1.05 * max(profile.ellipses_b[k].scale() for k in steps) / profile.ellipses_a[last].scale()
+    _paraboloid(ax, profile.ellipses_a[last], float(profile.distance_a[last]), reach)
     ax.plot([], [], color="C2", alpha=0.5, lw=6, label=f"paraboloid through $E_a$ of step {last}")
+    # Equal x and y scales, so that the ellipses keep their shape.
+    half = 1.1 * max(float(np.abs(profile.ellipses_b[k].points()[:, :2] - split_ring(profile.rings[k])[0][:2]).max()) for k in steps)
+    ax.set_xlim(-half, half)
+    ax.set_ylim(-half, half)
+    ax.set_box_aspect((1, 1, 0.8))
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_zlabel("height above $O_k$")

@@ -10,7 +10,8 @@ import symdecomp as sd
 from symdecomp.errors import InvalidValenceError
 from symdecomp.symbols import alpha, beta
 
-pytest.importorskip("matplotlib")
+matplotlib = pytest.importorskip("matplotlib")
+matplotlib.use("Agg")  # the figures are built without pyplot; no display is ever needed
 
 from symdecomp.plotting import cbmatrix as cbplots  # noqa: E402
 from symdecomp.plotting import polygons as pplots  # noqa: E402

@@ -35,6 +35,15 @@ void set_error(char *error, int error_len, const char *message) {
     }
 }
 
+// OpenSubdiv reports errors through a callback (by default it prints them); keep the last one.
+char last_osd_error[512];
+bool osd_failed = false;
+
+void record_error(Far::ErrorType, const char *message) {
+    osd_failed = true;
+    std::snprintf(last_osd_error, sizeof(last_osd_error), "OpenSubdiv: %s", message);
+}
+
 bool face_has(Far::TopologyLevel const &level, Far::Index f, Far::Index v) {
     Far::ConstIndexArray fv = level.GetFaceVertices(f);
     for (int k = 0; k < fv.size(); ++k) {
@@ -61,6 +70,8 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
                               const int *ring_faces, int levels, double *rings_out,
                               double *limit_out, char *error, int error_len) {
     try {
+        osd_failed = false;
+        Far::SetErrorCallback(record_error);
         if (n_vertices <= 0 || n_faces <= 0 || n < 3 || levels < 0) {
             set_error(error, error_len, "bad sizes");
             return 1;
@@ -77,11 +88,13 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
         using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
         std::unique_ptr<Far::TopologyRefiner> refiner(
             Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
-        if (!refiner) {
-            set_error(error, error_len, "OpenSubdiv rejected the mesh topology");
+        if (!refiner || osd_failed) {
+            set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
             return 2;
         }
-        refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+        Far::TopologyRefiner::UniformOptions uniform(levels);
+        uniform.fullTopologyInLastLevel = true;  // the limit mask needs the last level's full topology
+        refiner->RefineUniform(uniform);
 
         std::vector<Point> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
         for (int v = 0; v < n_vertices; ++v) {
@@ -153,6 +166,10 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
         std::vector<Point> limit(static_cast<size_t>(refiner->GetLevel(levels).GetNumVertices()));
         Point *limit_dst = limit.data();
         primvar.Limit(level_start[levels], limit_dst);
+        if (osd_failed) {
+            set_error(error, error_len, last_osd_error);
+            return 6;
+        }
         for (int c = 0; c < 3; ++c) limit_out[c] = limit[o].p[c];
         return 0;
     } catch (std::exception const &exc) {

@@ -56,6 +56,8 @@ __all__ = [
     "Refinement",
     "mesh_rules",
     "ring_mesh",
+    "ring_mesh_labels",
+    "cube_mesh",
     "refine",
     "central_rings",
 ]
@@ -267,6 +269,20 @@ class QuadMesh:
         used = {x for f in faces for x in f}
         return QuadMesh(faces, {x: self.values[x] for x in used})
 
+    def boundary_vertices(self) -> frozenset:
+        """The vertices on boundary edges (edges with one face)."""
+        d = self._directed
+        return frozenset(x for (u, v) in d if (v, u) not in d for x in (u, v))
+
+    def is_disk(self) -> bool:
+        """Whether the mesh is a topological disk: Euler characteristic 1 and a boundary.
+
+        (``V - E + F = 1`` with a nonempty boundary; enough for the neighbourhoods this package
+        builds, which are connected and manifold by construction.)
+        """
+        edges = len({frozenset(e) for e in self._directed})
+        return len(self._incident) - edges + len(self.faces) == 1 and bool(self.boundary_vertices())
+
     def with_values(self, values: Mapping[int, tuple]) -> "QuadMesh":
         """The same faces with other values."""
         return QuadMesh(self.faces, values)
@@ -310,6 +326,23 @@ def ring_mesh(n: int, rings: int, values: Callable[[int, int, int], Sequence] | 
         raw = values(s, u, v) if values is not None else (s, u, v)
         vals[i] = tuple(raw) if isinstance(raw, (tuple, list)) else (raw,)
     return QuadMesh(tuple(faces), vals)
+
+
+def cube_mesh(values: Callable[[int], Sequence] | None = None) -> QuadMesh:
+    """The cube as a closed quad mesh: 8 vertices of valence 3 (ids ``x + 2y + 4z``), 6 faces.
+
+    ``values(i)`` gives vertex ``i``'s value (default: its corner ``(x, y, z)``).
+
+    >>> m = cube_mesh()
+    >>> len(m.faces), m.one_ring(0), m.boundary_vertices()
+    (6, (0, (1, 4, 2), (5, 6, 3)), frozenset())
+    """
+    faces = ((0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5))
+    vals = {}
+    for i in range(8):
+        raw = values(i) if values is not None else (i & 1, (i >> 1) & 1, (i >> 2) & 1)
+        vals[i] = tuple(raw) if isinstance(raw, (tuple, list)) else (raw,)
+    return QuadMesh(faces, vals)
 
 
 def ring_mesh_labels(n: int, rings: int) -> tuple[tuple[int, int, int], ...]:

@@ -108,3 +108,25 @@ def test_section_3_claims_are_verified(label):
     result = check_claim(label)
     assert result.status is Status.VERIFIED, result.evidence
     assert result.valences is not None
+
+
+def test_unrefined_cube_opposite_corner_is_inside_but_phi_vanishes_there():
+    """On the cube the 2-ring of a corner is the whole surface (not a disk): the corner opposite P
+    has every sector carrying phi_P, phi_P(Q) = 0, and phi_P > 0 at every nearby vertex of the
+    refined meshes: an isolated zero inside the support, outside the 1-ring of P."""
+    from symdecomp.mesh import cube_mesh, mesh_rules, refine
+    from symdecomp.support import _mask_fractions
+
+    cc = catmull_clark()
+    cube = cube_mesh(lambda i: (Fraction(int(i == 0)),))
+    c = classify_support(cube, 0, cc)
+    assert c.regions[7] is Region.INSIDE and c.limit_values[7] == 0 and not c.consistent
+    assert not cube.neighbourhood(0, 2).is_disk()
+    rules, mesh, q = mesh_rules(cc), cube, 7
+    for level in range(1, 4):
+        step = refine(mesh, rules)
+        mesh, q = step.mesh, step.vertex_point[q]
+        near = mesh.neighbourhood(q, 2 ** (level - 1)).vertices()
+        limits = {v: sum(w * x[0] for w, x in zip(_mask_fractions(cc, mesh.valence(v)), mesh.one_ring_values(v))) for v in near}
+        assert [v for v, x in limits.items() if x == 0] == [q]
+        assert all(x > 0 for v, x in limits.items() if v != q)

@@ -14,7 +14,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from ..mesh import mesh_rules, refine, ring_mesh, ring_mesh_labels
+from ..mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
 from ..schemes import catmull_clark
 from ..support import Region, classify_support, support_relation
 from .registry import CheckResult, Status, Step, claim
@@ -28,6 +28,18 @@ INFLUENCE_VALENCES = (3, 12)
 def _ring(labels, v):
     _, u, w = labels[v]
     return max(u, w)
+
+
+def _cubes(levels=(0, 1, 2)):
+    """The cube refined 0, 1, 2 times: closed meshes with eight valence-3 vertices close together."""
+    rules = mesh_rules(catmull_clark())
+    mesh = cube_mesh(lambda i: (Fraction(0),))
+    out = {}
+    for level in range(max(levels) + 1):
+        if level in levels:
+            out[level] = mesh
+        mesh = refine(mesh, rules).mesh
+    return out
 
 
 @claim(
@@ -58,7 +70,7 @@ def _symmetry() -> CheckResult:
                         f"{labels[p]}, but {labels[p]} is {rel[q, p].value} for the support of {labels[q]}",
                     )
         pairs += len(verts) ** 2
-        if n in (lo, 4, hi):
+        if n in (lo, hi):
             steps.append(
                 Step(
                     f"$n = {n}$: {len(verts)} vertices within {rings - 2} rings of the valence-{n} vertex, "
@@ -66,10 +78,26 @@ def _symmetry() -> CheckResult:
                     sp.Integer(len(verts)),
                 )
             )
+    cube_pairs = 0
+    for level, mesh in _cubes().items():
+        verts = mesh.vertices()
+        rel = support_relation(mesh, cc, verts)
+        for p in verts:
+            for q in verts:
+                if rel[p, q] is not rel[q, p]:
+                    return CheckResult(
+                        Status.REFUTED,
+                        f"asymmetric pair on the cube refined {level} times",
+                        counterexample=f"cube refined {level} times: vertex {q} is {rel[p, q].value} for the support "
+                        f"of {p}, but {p} is {rel[q, p].value} for the support of {q}",
+                    )
+        cube_pairs += len(verts) ** 2
+    steps.append(Step(f"the cube refined 0, 1, 2 times (8, 26, 98 vertices): all {cube_pairs} ordered pairs agree", sp.Integer(cube_pairs)))
     return CheckResult(
         Status.VERIFIED,
         f"Catmull-Clark: all {pairs} ordered pairs of vertices within 3 rings of a vertex of valence "
-        f"{lo}..{hi} (other vertices regular) are classified alike both ways",
+        f"{lo}..{hi} (other vertices regular), and all {cube_pairs} pairs on the cube refined 0-2 times "
+        "(several valence-3 vertices), are classified alike both ways",
         steps=tuple(steps),
         valences=SYMMETRY_VALENCES,
     )
@@ -199,11 +227,50 @@ def _cc_support() -> CheckResult:
                     sp.Integer(c.count(Region.INSIDE) + c.count(Region.BOUNDARY)),
                 )
             )
+    # Meshes with several extraordinary vertices: the cube refined once and twice, every vertex as P.
+    cubes = _cubes()
+    checked = 0
+    for level in (1, 2):
+        mesh = cubes[level]
+        verts = mesh.vertices()
+        rel = support_relation(mesh, cc, verts)
+        for p in verts:
+            two = mesh.neighbourhood(p, 2)
+            if not two.is_disk():
+                return CheckResult(Status.ERROR, f"cube level {level}: the 2-ring of {p} is not a disk")
+            one = set(mesh.neighbourhood(p, 1).vertices())
+            rim = two.boundary_vertices()
+            for q in verts:
+                want = Region.INSIDE if q in one else Region.BOUNDARY if q in rim else Region.OUTSIDE
+                if rel[p, q] is not want:
+                    return CheckResult(
+                        Status.REFUTED,
+                        f"cube refined {level} times: vertex {q} is {rel[p, q].value} for the support of {p}",
+                        counterexample=f"cube refined {level} times, P = {p}, Q = {q}: {rel[p, q].value}, expected {want.value}",
+                    )
+            checked += 1
+    steps.append(Step(f"the cube refined once and twice: all {checked} vertices as $P$ agree", sp.Integer(checked)))
+    # The statement presupposes that the 2-ring of P is a disk (it speaks of its boundary vertices).
+    # On the unrefined cube it is the whole closed surface, and the corner opposite P is inside the
+    # support by the sector definition while phi_P vanishes there (and it is not in the 1-ring).
+    cube = cubes[0]
+    c0 = classify_support(cube, 0, cc)
+    opposite = 7
+    steps.append(
+        Step(
+            "unrefined cube, $P$ = a corner: the 2-ring of $P$ is the whole cube (no boundary); the opposite "
+            f"corner is {c0.regions[opposite].value} the support although $\\varphi_P$ vanishes there",
+            c0.limit_values[opposite],
+        )
+    )
     return CheckResult(
         Status.VERIFIED,
         f"valences {lo}..{hi}: inside = the closed 1-ring (2n+1 vertices), boundary = the 4n vertices at ring "
         "distance 2 (the boundary of the 2-ring), ring 3 outside; sector tests unchanged over 1-2 levels of "
-        "exact refinement of e_P, and inside exactly where phi_P(Q) > 0",
+        f"exact refinement of e_P, inside exactly where phi_P(Q) > 0; also every vertex of the cube refined "
+        f"once and twice ({checked}). The statement presupposes a 2-ring that is a disk: on the unrefined cube "
+        f"(2-ring = whole surface) the corner opposite P is {c0.regions[opposite].value} the support, "
+        "phi_P = 0 there, not in the 1-ring",
         steps=tuple(steps),
         valences=SUPPORT_VALENCES,
     )

@@ -61,7 +61,7 @@ from .errors import InvalidSchemeError, SymdecompError
 from .mesh import InvalidMeshError, QuadMesh, mesh_rules, refine, ring_mesh
 from .schemes import Scheme, subdivision_matrix
 
-__all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme", "ring_mesh"]
+__all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme"]
 
 
 class Region(enum.Enum):

@@ -7,7 +7,7 @@ of the control mesh is a point of it, the limit of ``Q``'s vertex points).
 
 **Definition used here.** Around a vertex ``Q`` lie its faces ``F_0..F_{m-1}`` (the
 *sectors*); at level ``k`` the sector ``s`` is the level-``k`` face at ``Q`` inside ``F_s``.
-Sector ``s`` *carries* ``phi_P`` if ``phi_P`` is not identically zero on it at any level.
+Sector ``s`` *carries* ``phi_P`` if at every level ``phi_P`` is not identically zero on it.
 ``Q`` is
 
 * **outside** the support of ``P`` if no sector carries ``phi_P``: then ``phi_P = 0`` on a
@@ -16,9 +16,13 @@ Sector ``s`` *carries* ``phi_P`` if ``phi_P`` is not identically zero on it at a
   a limit of points where ``phi_P != 0``) and the open faces of the other sectors, on which
   ``phi_P = 0``, touch ``Q``, so ``Q`` is on the boundary of ``Omega``; this is the split of a
   disk around ``Q`` into ``A_in`` and ``A_ex`` that the paper's argument uses;
-* **inside** if every sector carries it. For the schemes below this coincides with
-  ``phi_P(Q) != 0`` (the result records ``phi_P(Q)`` and :attr:`SupportClassification.consistent`
-  checks it), which puts ``Q`` in the interior of ``Omega``.
+* **inside** if every sector carries it. Where this coincides with ``phi_P(Q) != 0`` (the
+  result records ``phi_P(Q)``; :attr:`SupportClassification.consistent` checks it), ``Q`` is
+  in the interior of ``Omega``. It need not coincide: on the unrefined cube (where the 2-ring
+  of a corner is the whole surface) the corner opposite ``P`` has every sector carrying
+  ``phi_P`` but ``phi_P = 0`` there, an isolated zero (``phi_P > 0`` at every vertex near it of
+  the refined meshes; see the tests). On meshes where the 2-ring of ``P`` is a disk the two
+  agree in every case checked.
 
 **How it is computed (from the rules).** Write ``N(F)`` for the vertices of the faces that
 share a vertex with ``F``. Two facts decide every sector at level 0:

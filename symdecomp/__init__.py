@@ -34,6 +34,8 @@ from .frequency import circulant_blocks, frequency_zero_matrix, per_frequency_ma
 from .schemes import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from .spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
 from .tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from .mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from .support import Region, classify_support
 
 __version__ = "0.1.0"
 
@@ -81,6 +83,14 @@ __all__ = [
     "ClosedFormCharpoly",
     "closed_form_characteristic_polynomial",
     "matrix_characteristic_polynomial",
+    # Section 3: whole meshes and supports
+    "QuadMesh",
+    "ring_mesh",
+    "mesh_rules",
+    "refine",
+    "central_rings",
+    "Region",
+    "classify_support",
     # claims
     "Claim",
     "CheckResult",

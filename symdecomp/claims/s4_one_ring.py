@@ -63,6 +63,18 @@ def _identity_b() -> ShiftStencil:
     return ShiftStencil(sp.Integer(0), sp.Integer(0), sp.Integer(1))
 
 
+def composed_stages(a_stages, b_stages) -> tuple[ShiftStencil, ShiftStencil]:
+    """Compose staged rules: the a-steps in turn on the a's, the b-steps in turn on the b's (each chain
+    reading the other family's points of the same level)."""
+    a = _identity_a()
+    for stage in a_stages:
+        a = _then_a(a, stage)
+    b = _identity_b()
+    for stage in b_stages:
+        b = _then_b(b, stage)
+    return a, b
+
+
 # The staged rules as printed (Eq. 17-21).
 EQ17 = ShiftStencil(sp.Integer(0), R(3, 4) + R(1, 8) * (1 / omega + omega), sp.Integer(0))
 EQ18 = ShiftStencil(sp.Integer(0), R(8, 10), R(1, 10) * (1 / omega + 1))
@@ -191,12 +203,7 @@ def _eq16() -> CheckResult:
 def _eq17_21() -> CheckResult:
     cc = catmull_clark()
     edge, face = ShiftStencil.of(cc.edge_rule), ShiftStencil.of(cc.face_rule)
-    a = _identity_a()
-    for stage in (EQ17, EQ18, EQ19):
-        a = _then_a(a, stage)
-    b = _identity_b()
-    for stage in (EQ20, EQ21):
-        b = _then_b(b, stage)
+    a, b = composed_stages((EQ17, EQ18, EQ19), (EQ20, EQ21))
     da = (a.as_matrix() - edge.as_matrix()).applyfunc(sp.expand)
     db = (b.as_matrix() - face.as_matrix()).applyfunc(sp.expand)
     # Reading Eq. 20 with the a's already moved by Eq. 17-19 gives a different rule:

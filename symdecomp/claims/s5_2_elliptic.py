@@ -19,7 +19,6 @@ from ..elliptic import (
 from ..ellipses import ellipse_axes
 from ..frequency import COS, frequency_zero_matrix
 from ..schemes import catmull_clark
-from ..spectrum import frequency_zero_eigenvalues
 from ..symbols import alpha as ALPHA
 from ..symbols import beta as BETA
 from ..symbols import n as N

@@ -9,7 +9,6 @@ nice elliptic behaviour (both defects, from their closed forms in ``n``) for ``n
 
 from __future__ import annotations
 
-import sympy as sp
 
 from ..elliptic import elliptic_defect_table
 from ..tuning import tune

@@ -310,7 +310,7 @@ def _remark52() -> CheckResult:
 
 
 @claim(
-    "Sec. 5.2 Example",
+    "Section 5.2: Catmull-Clark example",
     section="5.2",
     title="Catmull-Clark is nicely elliptic only at n = 4",
     statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "

@@ -39,6 +39,8 @@ from .ellipses import ellipse_axes
 from .hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
 from .masks import limit_masks, limit_masks_at
 from .tuning import joint_obstruction, tune
+from .mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from .support import Region, classify_support
 
 __version__ = "0.1.0"
 
@@ -97,6 +99,14 @@ __all__ = [
     "ClosedFormCharpoly",
     "closed_form_characteristic_polynomial",
     "matrix_characteristic_polynomial",
+    # Section 3: whole meshes and supports
+    "QuadMesh",
+    "ring_mesh",
+    "mesh_rules",
+    "refine",
+    "central_rings",
+    "Region",
+    "classify_support",
     # claims
     "Claim",
     "CheckResult",

@@ -30,7 +30,7 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
-from .elliptic import MU, eq44_ratio, nice_elliptic_conditions, scale_ratio_squared
+from .elliptic import MU, eq44_ratio, nice_elliptic_conditions
 from .errors import InvalidSchemeError, check_valence
 from .frequency import COS, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
 from .schemes import Scheme, VertexRule

@@ -13,11 +13,11 @@ EXPECTED = {
     "Eq. 44": Status.PROVED,
     "Eq. 45": Status.VERIFIED,
     "Remark 5.2": Status.CORRECTED,
-    "Sec. 5.2 Example": Status.PROVED,
-    "Sec. 5.3 eigenvalues": Status.CORRECTED,
-    "Sec. 5.3 quadratic speed": Status.PROVED,
-    "Sec. 5.3 construction": Status.VERIFIED,
-    "Sec. 5.3 basis function": Status.VERIFIED,
+    "Section 5.2: Catmull-Clark example": Status.PROVED,
+    "Section 5.3: smaller eigenvalues": Status.CORRECTED,
+    "Section 5.3: quadratic speed": Status.PROVED,
+    "Section 5.3: construction": Status.VERIFIED,
+    "Section 5.3: basis function": Status.VERIFIED,
 }
 
 

@@ -155,3 +155,13 @@ def test_ring_components_reconstruct_the_ring():
 def test_bad_ring_is_rejected():
     with pytest.raises(InvalidPolygonError, match="1-ring"):
         ellipse_axes(sp.zeros(4, 3))
+
+
+def test_proposition_5_2_check_can_fail_for_an_asymmetric_scheme():
+    from symdecomp.schemes import Scheme, Stencil, VertexRule
+
+    R = sp.Rational
+    edge = Stencil.from_weights(R(1, 4), {0: R(1, 2)}, {0: R(1, 4)})  # leans on b_i only, not b_{i-1}
+    face = Stencil.from_weights(R(1, 4), {0: R(1, 4), 1: R(1, 4)}, {0: R(1, 4)})
+    lopsided = Scheme("lopsided", edge, face, VertexRule.affine(R(1, 4) / N, 0))
+    assert rotation_free_form(lopsided)[1] != sp.zeros(2, 2)

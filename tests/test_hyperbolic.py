@@ -68,3 +68,12 @@ def test_bad_input():
         hyperbolic_ring(2)
     with pytest.raises(ValueError, match="steps"):
         iterate_hyperbolic_ring(CC, 5, steps=-1)
+
+
+def test_the_comparison_can_fail(monkeypatch):
+    import symdecomp.hyperbolic as module
+
+    original = module._laurent_in
+    # predict the heights with M_1 instead of M_2: the exact iteration must disagree
+    monkeypatch.setattr(module, "_laurent_in", lambda K, e, unit: original(K, e, 4 if unit == 8 else unit))
+    assert not iterate_hyperbolic_ring(CC, 5, steps=2).matches_prediction

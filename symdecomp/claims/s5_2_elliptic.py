@@ -19,7 +19,6 @@ from ..elliptic import (
 from ..ellipses import ellipse_axes
 from ..frequency import COS, frequency_zero_matrix
 from ..schemes import catmull_clark
-from ..spectrum import frequency_zero_eigenvalues
 from ..symbols import alpha as ALPHA
 from ..symbols import beta as BETA
 from ..symbols import n as N
@@ -311,7 +310,7 @@ def _remark52() -> CheckResult:
 
 
 @claim(
-    "Sec. 5.2 Example",
+    "Section 5.2: Catmull-Clark example",
     section="5.2",
     title="Catmull-Clark is nicely elliptic only at n = 4",
     statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "

@@ -16,7 +16,7 @@ _VALENCES = (3, 12)
 
 
 @claim(
-    "Sec. 5.3 eigenvalues",
+    "Section 5.3: smaller eigenvalues",
     section="5.3",
     title="Hyperbolic components have smaller eigenvalues",
     statement=r"The eigenvalues of $A^2, A^{2n-2}, B^2, B^{2n-2}$ are smaller than those related to tangent plane "
@@ -60,7 +60,7 @@ def _smaller() -> CheckResult:
 
 
 @claim(
-    "Sec. 5.3 quadratic speed",
+    "Section 5.3: quadratic speed",
     section="5.3",
     title="Hyperbolic components must shrink with quadratic speed",
     statement=r"Similarly to the elliptic case, the hyperbolic components have to shrink with quadratic speed compared "
@@ -85,7 +85,7 @@ def _quadratic() -> CheckResult:
 
 
 @claim(
-    "Sec. 5.3 construction",
+    "Section 5.3: construction",
     section="5.3",
     title="A 1-ring with only hyperbolic components",
     statement=r"Place $O$ on the plane of $A^1, A^{2n-1}, B^1, B^{2n-1}$ (the elliptic component becomes zero) and add "
@@ -111,7 +111,7 @@ def _construction() -> CheckResult:
 
 
 @claim(
-    "Sec. 5.3 basis function",
+    "Section 5.3: basis function",
     section="5.3",
     title="The coarse mesh of the basis function is only elliptic near O",
     statement=r"The coarse mesh of the basis function has only elliptic component near $O$: its 1-ring is planar, so "

@@ -9,9 +9,10 @@ nice elliptic behaviour (both defects, from their closed forms in ``n``) for ``n
 
 from __future__ import annotations
 
+
 import sympy as sp
 
-from ..elliptic import elliptic_defect_table
+from ..elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
 from ..tuning import tune
 from .common import add_scheme_option, positive_int, print_json, progress, valence
 
@@ -40,9 +41,22 @@ def run(args) -> int:
         rows = []
         for n in progress(valences, len(valences), "defects", enabled=not args.json):
             rows.extend(elliptic_defect_table(args.scheme, [n], digits=args.digits))
+        cond = nice_elliptic_conditions(args.scheme)
         if args.json:
-            print_json({"scheme": args.scheme.name, "rows": [r.as_json() for r in rows]})
+            closed = {
+                "subdominant": sp.sstr(cond.subdominant),
+                "lambda1": sp.sstr(cond.lambda1),
+                "eq44_ratio_of_mu": sp.sstr(cond.eq44_ratio_of_mu.subs(MU, sp.Symbol("mu"))),
+                "scale_ratio_squared": sp.sstr(cond.scale_ratio_squared),
+            }
+            print_json({"scheme": args.scheme.name, "closed_forms": closed, "rows": [r.as_json() for r in rows]})
             return 0
+        print(f"{args.scheme.name}: closed forms in n")
+        print(f"  mu(n)            = {cond.subdominant}   (subdominant eigenvalue of Eq. 43)")
+        print(f"  lambda_1(n)      = {cond.lambda1}")
+        print(f"  d_b/d_a at mu    = {cond.eq44_ratio_of_mu.subs(MU, sp.Symbol('mu'))}   (Eq. 44)")
+        print(f"  |B^1/A^1|^2(n)   = {cond.scale_ratio_squared}")
+        print("  defects: mu - lambda_1^2 and d_b/d_a - |B^1/A^1|^2")
         head = ("n", "mu", "lambda1^2", "mu - lambda1^2", "d_b/d_a", "|B1/A1|^2", "ratio defect")
         width = args.digits + 8
         print("  ".join([f"{head[0]:>4}"] + [f"{h:<{width}}" for h in head[1:]]))

@@ -97,3 +97,34 @@ def test_figures_have_titles_and_labelled_axes():
     _assert_labelled(cbplots.vertex_weight_sweep_figure(free, 4, alpha, [0, sp.Rational(1, 20)], fixed={beta: sp.Rational(1, 64)}))
     S = sd.subdivision_matrix(CC, 4)
     _assert_labelled(cbplots.eigenvalue_shift_figure(S, S, sp.Matrix([[1]]), title="same"))
+    _assert_labelled(tplots.component_decay_figure(CC, 3, steps=2))
+
+
+def test_geometry_figures_have_titles_and_labelled_axes():
+    from symdecomp import elliptic, evolution, tuning
+    from symdecomp.plotting import elliptic as eplots
+    from symdecomp.polygons import decompose
+
+    P = np.random.default_rng(0).normal(size=(5, 3))
+    _assert_labelled(pplots.decomposition_figure(P, pplots.regular_components(decompose(P))))
+    rings = evolution.subdivide_ring(CC, evolution.tangent_configuration(4, (1, 0, 0)), 2)
+    _assert_labelled(pplots.ring_split_figure(rings[:2]))
+    profile = evolution.elliptic_profile(CC, evolution.tangent_configuration(4, (0, 1, 1), stretch=0.2), 3)
+    _assert_labelled(eplots.ellipses_figure(profile, range(1, 3)))
+    _assert_labelled(eplots.nested_rings_figure(rings[1:], initial=rings[0], title="rings"))
+    _assert_labelled(eplots.hyperbolic_rates_figure(CC, (3, 4)))
+    _assert_labelled(eplots.defect_figure(elliptic.elliptic_defect_table(CC, (3, 4), digits=10)))
+    _assert_labelled(eplots.tuned_weights_figure([3, 4], {"a": [sp.Rational(1, 9), None]}, standard=[1, 2]))
+
+
+def test_regular_components_sum_to_the_polygon_and_are_regular():
+    from symdecomp.polygons import decompose
+
+    P = np.random.default_rng(3).normal(size=(6, 3))
+    components = pplots.regular_components(decompose(P))
+    assert np.max(np.abs(np.sum(components, axis=0) - P)) < 1e-14
+    for j in (1, 2, 4, 5):
+        c = components[j]
+        sides = np.linalg.norm(np.roll(c, -1, axis=0) - c, axis=1)
+        radii = np.linalg.norm(c, axis=1)
+        assert np.ptp(sides) < 1e-12 and np.ptp(radii) < 1e-12  # a regular polygon about the origin

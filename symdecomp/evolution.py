@@ -39,6 +39,8 @@ __all__ = [
     "tangent_configuration",
     "ring_polygon",
     "ring_from_polygon",
+    "quadric_ring_mesh",
+    "refine_mesh",
 ]
 
 
@@ -257,3 +259,38 @@ def ring_from_polygon(center, polygon) -> np.ndarray:
     if len(P) % 2:
         raise InvalidPolygonError(f"the polygon of a 1-ring has 2n vertices, got {len(P)}")
     return one_ring(center, P[0::2], P[1::2])
+
+
+def quadric_ring_mesh(n: int, rings: int = 3, kind: str = "hyperbolic", height: float = 0.3):
+    """A quad mesh of ``rings`` rings around a valence-``n`` vertex on a quadric (Sections 5.2-5.3).
+
+    Vertex ``(s, u, v)`` of :func:`symdecomp.mesh.ring_mesh` sits at ``p = u e_s + v e_{s+1}`` in the
+    plane (``e_s`` the unit vector at angle ``2 pi s/n``), lifted by ``height * Re(p^2)``
+    (``kind="hyperbolic"``: out of the plane only frequency 2, the components ``A^2, A^{2n-2},
+    B^2, B^{2n-2}``, and no elliptic component) or by ``height * |p|^2`` (``kind="elliptic"``:
+    only frequency 0, the heights of ``O``, the ``a``'s and the ``b``'s of Eq. 43).
+    """
+    from .mesh import ring_mesh
+
+    n = check_valence(n)
+    if kind not in ("hyperbolic", "elliptic"):
+        raise ValueError(f"kind must be 'hyperbolic' or 'elliptic', got {kind!r}")
+    h = float(height)
+
+    def value(s, u, v):
+        p = u * np.exp(2j * np.pi * s / n) + v * np.exp(2j * np.pi * (s + 1) / n)
+        z = h * (p * p).real if kind == "hyperbolic" else h * abs(p) ** 2
+        return (float(p.real), float(p.imag), float(z))
+
+    return ring_mesh(n, rings, value)
+
+
+def refine_mesh(scheme: Scheme, mesh, levels: int):
+    """``levels`` refinement steps of a :class:`symdecomp.mesh.QuadMesh` by the scheme's mesh rules."""
+    from .mesh import refine
+
+    if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
+        raise ValueError(f"levels must be a non-negative integer, got {levels!r}")
+    for _ in range(levels):
+        mesh = refine(mesh, scheme).mesh
+    return mesh

@@ -143,3 +143,35 @@ def test_tangent_configuration_is_on_the_ellipse_of_eq_40():
     for poly in (a, b):
         major, minor = evolution.inscribed_ellipse(poly).semi_axes()
         assert abs(major - 2.5) < 1e-13 and abs(minor - 1.5) < 1e-13
+
+
+@pytest.mark.parametrize("kind", ["hyperbolic", "elliptic"])
+def test_quadric_meshes_have_only_the_stated_components(kind):
+    """Out of the plane, the 1-ring of the hyperbolic mesh has only frequency 2, the elliptic one only 0."""
+    from symdecomp.mesh import central_rings
+
+    n = 5
+    mesh = evolution.quadric_ring_mesh(n, 2, kind, 0.5)
+    ring = np.array(central_rings(mesh, CC, 0, 0)[0], dtype=float)
+    _, a, b = evolution.split_ring(ring)
+    for heights in (a[:, 2], b[:, 2]):
+        amplitudes = np.abs(np.fft.fft(heights)) / n
+        keep = {2, n - 2} if kind == "hyperbolic" else {0}
+        assert all(amplitudes[k] < 1e-14 for k in range(n) if k not in keep)
+        assert any(amplitudes[k] > 0.1 for k in keep)
+    assert ring[0, 2] == 0
+
+
+def test_refine_mesh_agrees_with_the_matrix_on_the_central_ring():
+    from symdecomp.mesh import central_rings
+
+    mesh = evolution.quadric_ring_mesh(5, 2, "hyperbolic", 0.5)
+    refined = evolution.refine_mesh(CC, mesh, 1)
+    start = np.array(central_rings(mesh, CC, 0, 0)[0], dtype=float)
+    after = evolution.subdivide_ring(CC, start, 1)[1]
+    # the refined centre is the vertex point of vertex 0; its value is the first row of S start
+    assert any(np.allclose(np.array(v, dtype=float), after[0], atol=1e-14) for v in refined.values.values())
+    with pytest.raises(ValueError, match="kind"):
+        evolution.quadric_ring_mesh(5, 2, "parabolic")
+    with pytest.raises(ValueError, match="levels"):
+        evolution.refine_mesh(CC, mesh, -1)

@@ -115,6 +115,8 @@ def test_geometry_figures_have_titles_and_labelled_axes():
     _assert_labelled(eplots.hyperbolic_rates_figure(CC, (3, 4)))
     _assert_labelled(eplots.defect_figure(elliptic.elliptic_defect_table(CC, (3, 4), digits=10)))
     _assert_labelled(eplots.tuned_weights_figure([3, 4], {"a": [sp.Rational(1, 9), None]}, standard=[1, 2]))
+    control = evolution.quadric_ring_mesh(3, 2, "hyperbolic")
+    _assert_labelled(eplots.mesh_surface_figure(evolution.refine_mesh(CC, control, 1), initial=control, title="surface"))
 
 
 def test_regular_components_sum_to_the_polygon_and_are_regular():

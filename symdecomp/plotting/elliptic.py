@@ -18,6 +18,7 @@ __all__ = [
     "ellipses_figure",
     "nested_rings_figure",
     "hyperbolic_rates_figure",
+    "mesh_surface_figure",
     "defect_figure",
     "tuned_weights_figure",
 ]
@@ -134,6 +135,46 @@ def nested_rings_figure(rings: Sequence, *, title: str, initial=None, initial_la
     ax.set_title(f"The 1-rings ($2n$-gons) of {len(rings)} steps, and a surface through their vertices", fontsize=10)
     ax.view_init(elev=22, azim=-50)
     _few_ticks(ax)
+    fig.suptitle(title)
+    return fig
+
+
+def mesh_surface_figure(mesh, *, initial=None, title: str, view=(24, -55)):
+    """A refined quad mesh (:class:`symdecomp.mesh.QuadMesh` with ``(x, y, z)`` values) as a surface.
+
+    Faces are coloured by height; ``initial`` (the control mesh) is drawn as a wireframe beside it.
+    """
+    from matplotlib import colormaps
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    panels = 2 if initial is not None else 1
+    fig = new_figure(6.0 * panels, 5.4)
+    for k, (m, label) in enumerate(([(initial, "control mesh")] if initial is not None else []) + [(mesh, "refined mesh")]):
+        ax = fig.add_subplot(1, panels, k + 1, projection="3d")
+        quads = [np.array([m.values[v] for v in f], dtype=float) for f in m.faces]
+        points = np.vstack(quads)
+        if m is mesh:
+            heights = np.array([q[:, 2].mean() for q in quads])
+            scale = max(float(np.abs(points[:, 2]).max()), 1e-300)
+            colors = colormaps["coolwarm"](0.5 + 0.5 * heights / scale)
+            ax.add_collection3d(Poly3DCollection(quads, facecolors=colors, edgecolors="0.3", linewidths=0.15))
+        else:
+            for q in quads:
+                loop = np.vstack([q, q[:1]])
+                ax.plot(loop[:, 0], loop[:, 1], loop[:, 2], color="0.35", lw=0.7)
+        if m is initial and 0 in m.values:  # ring meshes number the central vertex 0
+            ax.scatter(*np.asarray(m.values[0], dtype=float), color="black", s=20)
+        lo, hi = points.min(axis=0), points.max(axis=0)
+        ax.set_xlim(lo[0], hi[0])
+        ax.set_ylim(lo[1], hi[1])
+        ax.set_zlim(lo[2], hi[2])
+        ax.set_box_aspect((1, 1, 0.6))
+        ax.view_init(*view)
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.set_zlabel("z")
+        ax.set_title(f"{label}: {len(m.faces)} quads", fontsize=10)
+        _few_ticks(ax)
     fig.suptitle(title)
     return fig
 

@@ -79,12 +79,8 @@ def ellipses_figure(profile: EllipticProfile, steps: Iterable[int] = range(1, 6)
     k = np.arange(len(profile.rings))
     right.plot(k[1:], profile.kappa_a[1:], marker="o", color="C0", label=r"$\kappa_a = d_a / \mathrm{scale}(E_a)^2$")
     right.plot(k[1:], profile.kappa_b[1:], marker="s", color="C3", label=r"$\kappa_b = d_b / \mathrm{scale}(E_b)^2$")
-    both = np.abs(np.concatenate([profile.kappa_a[1:], profile.kappa_b[1:]]))
-    logarithmic = both.min() > 0 and both.max() / both.min() > 3
-    if logarithmic:
-        right.set_yscale("log")
     right.set_xlabel("subdivision step k")
-    right.set_ylabel(r"$\kappa$" + (" (log scale)" if logarithmic else ""))
+    right.set_ylabel(r"$\kappa$")
     right.set_title("Nice elliptic properties: both flat and equal")
     right.legend(fontsize=8)
     right.grid(alpha=0.3, which="both")

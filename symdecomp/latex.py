@@ -428,7 +428,8 @@ def _anchor(label: str) -> str:
 
 
 def _label_text(label: str) -> str:
-    return text_latex(label, displays=False).replace(". ", ".~", 1)
+    """``Eq. 43`` -> ``Eq.~43``: a label never breaks before its number."""
+    return re.sub(r" (?=\d)", "~", text_latex(label, displays=False))
 
 
 def claim_latex(claim: Claim, result: CheckResult) -> str:

@@ -49,7 +49,7 @@ _WIDE_SYMBOLS = {
     "\\ne": _RELATION, "\\approx": _RELATION, "\\equiv": _RELATION, "\\sim": _RELATION,
     "\\to": 1.6, "\\rightarrow": 1.6, "\\mapsto": 1.6, "\\Rightarrow": 1.6, "\\in": 1.2,
     "\\ldots": 1.3, "\\dots": 1.3, "\\cdots": 1.3, "\\vdots": 0.5, "\\ddots": 1.3,
-    "\\infty": 1.1, "\\wedge": _BINARY, "\\vee": _BINARY, "\\otimes": _BINARY, "\\oplus": _BINARY,
+    "\\infty": 1.1, "\\nabla": 0.9, "\\wedge": _BINARY, "\\vee": _BINARY, "\\otimes": _BINARY, "\\oplus": _BINARY,
     "\\lbrace": 0.55, "\\rbrace": 0.55, "\\{": 0.55, "\\}": 0.55, "\\langle": 0.45, "\\rangle": 0.45,
 }
 # Commands that take one argument and are (about) as wide as it.
@@ -70,11 +70,13 @@ def _char_width(ch: str, upright: bool) -> float:
         return 0.35 if upright else 0.0
     if ch.isdigit():
         return 0.52
+    if ch in "MWNHKQUVX":
+        return 1.1
     if ch.isupper():
-        return 0.85
+        return 0.9
     if ch in "mw":
         return 0.9
-    return 0.6
+    return 0.62
 
 
 class _Reader:
@@ -162,7 +164,7 @@ class _Reader:
             inner = scale if scale >= 1.0 and tok != "\\tfrac" else script
             num = self.group(inner)
             den = self.group(inner)
-            return max(num, den) + 0.4 * scale + (0.9 * scale if tok == "\\binom" else 0.0)
+            return max(num, den) + 0.4 * scale + (1.6 * scale if tok == "\\binom" else 0.0)
         if tok == "\\sqrt":
             self.skip_space()
             index = 0.0

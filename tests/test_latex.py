@@ -1,0 +1,252 @@
+"""The LaTeX output: aslatex, line breaking, the document, its drift and its compilation."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from latex_cases import long_product, long_sum, stress_pairs
+from symdecomp.claims import CheckResult, Status, Step
+from symdecomp.cli import main
+from symdecomp.cli.derive_cmd import write_derivations
+from symdecomp.latex import aslatex, derivation_files, display_math, section_file_name, text_latex
+from symdecomp.symbols import alpha, n, omega
+from symdecomp.texlayout import LINE_WIDTH_EM, break_pieces, estimate_width
+
+COMMITTED = Path(__file__).resolve().parents[1] / "derivations"
+PDFLATEX = shutil.which("pdflatex")
+needs_tex = pytest.mark.skipif(PDFLATEX is None, reason="no pdflatex (CI installs it in .ci/steps/20-latex.sh)")
+#: Overfull boxes up to this width (pt) are tolerated; anything wider runs visibly into the margin.
+OVERFULL_TOLERANCE_PT = 2.0
+
+x, y = sp.symbols("x y")
+
+
+# -- aslatex ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "expr",
+    [sp.Rational(3, 8) + alpha, omega**2 / n, sp.sqrt(5 * n**2 - 30 * n + 49), sp.Matrix([[1, x], [y, 2]]),
+     sp.Piecewise((x, x > 0), (-x, True)), 1 + 2 * sp.I, sp.Abs(x)],
+)
+def test_sympy_objects_are_printed_by_sympy(expr):
+    assert aslatex(expr) == sp.latex(expr)
+
+
+def test_mapping_is_an_aligned_block():
+    assert aslatex({x: sp.Rational(1, 2), y: sp.sqrt(2)}) == "\\begin{aligned}\nx &= \\frac{1}{2} \\\\\ny &= \\sqrt{2}\n\\end{aligned}"
+
+
+def test_unknown_objects_are_refused():
+    with pytest.raises(TypeError, match="object"):
+        aslatex(object())
+
+
+def test_text_is_escaped_and_inline_math_kept():
+    assert text_latex("a_i & b_i: 50% #1 ~ ^ {x} \\ $\\omega_n^j$") == (
+        r"a\_i \& b\_i: 50\% \#1 \textasciitilde{} \textasciicircum{} \{x\} \textbackslash{} $\omega_n^j$"
+    )
+    assert text_latex("costs $5") == r"costs \$5"
+    assert text_latex("ω ≤ 1 — ok") == r"$\omega$ $\leq$ 1 --- ok"
+    # a comment character inside inline math would swallow the rest of the line
+    assert text_latex("$50% x$") == r"$50\% x$"
+
+
+def test_a_long_inline_formula_becomes_a_display():
+    wide = sp.latex(sp.expand((x + y + 1) ** 4))
+    assert "\\[" in text_latex(f"see ${wide}$ here")
+    assert "\\[" not in text_latex(f"see ${wide}$ here", displays=False)
+
+
+# -- line breaking -----------------------------------------------------------------------
+
+
+def _lines_of(block: str) -> list[str]:
+    body = re.sub(r"\\(begin|end)\{multline\*\}|\\\[|\\\]", "", block).strip()
+    return [line.strip() for line in body.split("\\\\")]
+
+
+def test_a_long_sum_is_broken_into_lines_that_fit_and_read_as_sympys_formula():
+    expr = long_sum()
+    assert estimate_width(sp.latex(expr)) > 5 * LINE_WIDTH_EM
+    block = display_math(expr, lhs=sp.Symbol("S"))
+    assert block.startswith("\\begin{multline*}")
+    lines = _lines_of(block)
+    assert len(lines) >= 5
+    assert all(estimate_width(line) <= LINE_WIDTH_EM for line in lines)
+    assert "\\fitwidth" not in block
+    # nothing lost or reordered: the lines put together are sympy's printing of S = expr
+    joined = " ".join(line.removeprefix("{} ") for line in lines)
+    assert re.sub(r"\s+", "", joined) == re.sub(r"\s+", "", "S = " + sp.latex(expr))
+
+
+def test_pieces_of_a_sum_concatenate_to_sympys_printing():
+    expr = sum(sp.Rational(k, k + 1) * omega**k for k in range(1, 60))
+    pieces = break_pieces(expr, budget=20)
+    assert len(pieces) > 10
+    assert "".join(p.tex for p in pieces) == sp.latex(expr)
+
+
+def test_a_long_product_over_a_long_denominator_breaks_inside_its_factors():
+    block = display_math(long_product(), lhs=sp.Symbol("P"))
+    lines = _lines_of(block)
+    assert len(lines) >= 3 and "\\fitwidth" not in block
+    assert all(estimate_width(line) <= LINE_WIDTH_EM for line in lines)
+    assert lines[0].startswith("P = \\frac{1}{")  # the long fraction N/D is set as (1/D) N
+
+
+def test_a_wide_matrix_has_its_long_entries_named_and_listed():
+    wide = sp.Matrix(3, 3, lambda r, c: sp.expand((omega ** (r - c) + alpha + r) ** 2 / (r + c + 2)))
+    block = display_math(wide, lhs=sp.Symbol("W"))
+    assert "where" in block and "\\fitwidth" not in block
+    head = block.split("where")[0]
+    assert estimate_width(head.split("\\[")[1].split("\\]")[0]) <= LINE_WIDTH_EM
+    for name in re.findall(r"m_\{(\d\d)\}", head):
+        r, c = int(name[0]) - 1, int(name[1]) - 1
+        assert sp.latex(wide[r, c]) in block.split("where")[1]
+
+
+def test_a_matrix_of_many_short_columns_is_shrunk_only_as_a_last_resort():
+    small = sp.Matrix(9, 9, lambda r, c: sp.Rational(r + 1, c + 3))
+    assert "\\fitwidth" not in display_math(small, lhs="S")
+    many = sp.Matrix(4, 40, lambda r, c: sp.Rational(r + 1, c + 3))
+    assert "\\fitwidth" in display_math(many, lhs="S")
+
+
+# -- claims as LaTeX -----------------------------------------------------------------------
+
+
+def test_a_refuted_claim_is_boxed_with_its_counterexample():
+    result = CheckResult(Status.REFUTED, "ratio is 0/0", counterexample="at $n = 4$, j_2 & 100%")
+    tex = aslatex(result)
+    assert tex.startswith("\\finding{sdrefuted}")
+    assert r"at $n = 4$, j\_2 \& 100\%" in tex
+
+
+def test_a_corrected_claim_shows_the_correction_and_steps_print_via_sympy():
+    step = Step("the row sums to", 1 + (n - 1) * (alpha + alpha), sp.Symbol("s"))
+    result = CheckResult(Status.CORRECTED, "not affine", steps=(step,), correction="centre $1 - n\\alpha$")
+    tex = aslatex(result)
+    assert "\\finding{sdcorrected}" in tex and "centre $1 - n\\alpha$" in tex
+    assert "s = " + sp.latex(step.expr) in tex
+
+
+def test_status_and_scope_of_a_verified_claim():
+    tex = aslatex(CheckResult(Status.VERIFIED, "exact", valences=(3, 64)))
+    assert "\\status{verified}" in tex and "$n = 3, \\dots, 64$" in tex
+
+
+def test_the_document_mirrors_the_papers_sections_and_is_deterministic():
+    pairs = stress_pairs()
+    files = derivation_files(pairs)
+    assert files == derivation_files(list(reversed(pairs)))
+    assert list(files) == sorted(files)
+    assert set(files) == {"main.tex"} | {section_file_name(s) for s in ("2", "4", "5.1", "5.2", "6")}
+    main_tex = files["main.tex"]
+    # the summary comes first, then the sections in the paper's order
+    order = [main_tex.index(s) for s in ("Summary of the claims", "\\input{section-2}", "\\input{section-4}",
+                                         "Evolution of the eigencomponents", "\\input{section-5-1}",
+                                         "\\input{section-5-2}", "\\input{section-6}")]
+    assert order == sorted(order)
+    assert "\\subsection{Tangent plane properties}" in files["section-5-1.tex"]
+    assert "\\setcounter{section}{3}\n\\section{1-ring decomposition" in files["section-4.tex"]
+    assert "\\claimheading{claim:proposition-5-9}{Proposition~5.9}" in files["section-5-1.tex"]
+
+
+# -- the command and the committed files ------------------------------------------------------
+
+
+def _differences(expected: Path, actual: Path) -> list[str]:
+    """Files that differ between two directories of .tex files (missing, extra or changed)."""
+    a = {p.name: p.read_bytes() for p in expected.glob("*.tex")}
+    b = {p.name: p.read_bytes() for p in actual.glob("*.tex")}
+    return sorted(name for name in a.keys() | b.keys() if a.get(name) != b.get(name))
+
+
+def test_derive_writes_the_files_and_removes_only_its_own_stale_ones(tmp_path, capsys):
+    (tmp_path / "section-9.tex").write_text("stale")
+    (tmp_path / "notes.tex").write_text("mine")
+    assert main(["derive", "--out", str(tmp_path), "--json"]) == 0
+    assert not (tmp_path / "section-9.tex").exists()
+    assert (tmp_path / "notes.tex").read_text() == "mine"
+    assert (tmp_path / "main.tex").read_text().startswith("% Generated by `symdecomp derive`")
+    assert '"' in capsys.readouterr().out
+
+
+def test_committed_derivations_match_the_registry(tmp_path):
+    """Drift: regenerating gives the committed bytes (run `symdecomp derive` after changing a check)."""
+    write_derivations(tmp_path)
+    again = tmp_path / "again"
+    write_derivations(again)
+    assert _differences(tmp_path, again) == []
+    assert _differences(COMMITTED, tmp_path) == [], "derivations/ is stale: run `python -m symdecomp derive`"
+
+
+def test_the_drift_check_catches_a_hand_edit(tmp_path):
+    edited = tmp_path / "edited"
+    shutil.copytree(COMMITTED, edited)
+    target = edited / "main.tex"
+    target.write_text(target.read_text() + "% a hand edit\n")
+    assert _differences(COMMITTED, edited) == ["main.tex"]
+
+
+# -- compiling ------------------------------------------------------------------------------------
+
+
+def _compile(directory: Path) -> str:
+    """Run pdflatex twice (for the page references); return the log; fail on a LaTeX error."""
+    for _ in range(2):
+        run = subprocess.run(
+            [PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", "main.tex"],
+            cwd=directory, capture_output=True, text=True, timeout=300,
+        )
+        log = (directory / "main.log").read_text(errors="replace")
+        assert run.returncode == 0, "LaTeX error:\n" + "\n".join(re.findall(r"^!.*(?:\n.*){0,3}", log, re.M))
+    return log
+
+
+def _overfull(log: str) -> list[str]:
+    return [m.group(0) for m in re.finditer(r"Overfull \\hbox \((\d+(?:\.\d+)?)pt too wide\).*", log)
+            if float(m.group(1)) > OVERFULL_TOLERANCE_PT]
+
+
+@needs_tex
+def test_the_stress_document_compiles_and_nothing_runs_past_the_margin(tmp_path):
+    for name, text in derivation_files(stress_pairs()).items():
+        (tmp_path / name).write_text(text, encoding="utf-8")
+    log = _compile(tmp_path)
+    assert _overfull(log) == []
+    assert "undefined" not in " ".join(re.findall(r"LaTeX Warning:.*", log))
+    assert (tmp_path / "main.pdf").stat().st_size > 0
+
+
+@needs_tex
+def test_the_derivations_of_the_registry_compile(tmp_path):
+    write_derivations(tmp_path)
+    log = _compile(tmp_path)
+    assert _overfull(log) == []
+
+
+@needs_tex
+def test_the_width_estimate_is_never_below_what_tex_sets(tmp_path):
+    from latex_cases import stress_formulas
+
+    texs = [sp.latex(e) for e in stress_formulas()]
+    lines = [r"\documentclass[11pt]{article}\usepackage{amsmath,amssymb}\renewcommand{\arraystretch}{1.3}\begin{document}"]
+    lines += [r"\sbox0{$\displaystyle %s$}\typeout{WIDTH %d:\the\wd0}" % (t, i) for i, t in enumerate(texs)]
+    lines += [r"\typeout{QUAD:\the\fontdimen6\font}\end{document}"]
+    (tmp_path / "main.tex").write_text("\n".join(lines))
+    subprocess.run([PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", "main.tex"], cwd=tmp_path,
+                   capture_output=True, timeout=300, check=True)
+    log = (tmp_path / "main.log").read_text()
+    em = float(re.search(r"QUAD:([\d.]+)pt", log).group(1))
+    measured = {int(i): float(w) / em for i, w in re.findall(r"WIDTH (\d+):([\d.]+)pt", log)}
+    assert len(measured) == len(texs)
+    too_low = [(texs[i], estimate_width(texs[i]), real) for i, real in measured.items() if estimate_width(texs[i]) < real]
+    assert too_low == []

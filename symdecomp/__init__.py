@@ -15,6 +15,7 @@ from .errors import (
     NotAffineError,
     SymdecompError,
 )
+from .latex import aslatex
 from .frequency import circulant_blocks, frequency_zero_matrix, per_frequency_matrix, per_frequency_matrix_at
 from .schemes import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from .spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
@@ -57,6 +58,8 @@ __all__ = [
     "all_claims",
     "check_claim",
     "get_claim",
+    # LaTeX
+    "aslatex",
     # errors
     "SymdecompError",
     "InvalidValenceError",

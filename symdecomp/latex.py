@@ -104,7 +104,7 @@ _TEXT_ESCAPES = {
     "&": r"\&",
     "%": r"\%",
     "#": r"\#",
-    "_": r"\_",
+    "_": r"\_\allowbreak{}",  # long identifiers may break after an underscore
     "$": r"\$",
     "^": r"\textasciicircum{}",
     "~": r"\textasciitilde{}",
@@ -175,11 +175,19 @@ def text_latex(text: str, *, displays: bool = True) -> str:
     An inline formula too wide to sit in a line of text becomes a displayed one (unless
     ``displays`` is false, e.g. in a table cell). An unmatched ``$`` is a dollar sign.
 
-    >>> print(text_latex("50% of a_i & b_i: $\\\\omega_n^j$"))
-    50\\% of a\\_i \\& b\\_i: $\\omega_n^j$
+    >>> print(text_latex("50% of a & b: $\\\\omega_n^j$"))
+    50\\% of a \\& b: $\\omega_n^j$
     >>> print(text_latex("costs $5"))
     costs \\$5
     """
+    if "$$" in text:  # displayed math written as $$...$$
+        chunks = re.split(r"(?<!\\)\$\$(.*?)(?<!\\)\$\$", text, flags=re.S)
+        if len(chunks) > 1:
+            return "".join(
+                text_latex(chunk, displays=displays) if k % 2 == 0
+                else ("\n\\[\n\\fitwidth{%s}\n\\]\n" % _clean_math(chunk).strip() if displays else "$%s$" % _clean_math(chunk))
+                for k, chunk in enumerate(chunks)
+            )
     parts = re.split(r"(?<!\\)\$", text)
     if len(parts) % 2 == 0:  # an odd number of $: the last one is a dollar sign
         parts[-2:] = [parts[-2] + "$" + parts[-1]]
@@ -358,6 +366,8 @@ def aslatex(obj) -> str:
 @aslatex.register(complex)
 @aslatex.register(tuple)
 @aslatex.register(list)
+@aslatex.register(set)
+@aslatex.register(frozenset)
 def _(obj) -> str:
     return sp.latex(obj)
 

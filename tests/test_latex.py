@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import os
 import re
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -50,8 +52,10 @@ def test_unknown_objects_are_refused():
 
 def test_text_is_escaped_and_inline_math_kept():
     assert text_latex("a_i & b_i: 50% #1 ~ ^ {x} \\ $\\omega_n^j$") == (
-        r"a\_i \& b\_i: 50\% \#1 \textasciitilde{} \textasciicircum{} \{x\} \textbackslash{} $\omega_n^j$"
+        r"a\_\allowbreak{}i \& b\_\allowbreak{}i: 50\% \#1 \textasciitilde{} \textasciicircum{} \{x\} "
+        r"\textbackslash{} $\omega_n^j$"
     )
+    assert text_latex("as $$x_1$$ shows") == "as \n\\[\n\\fitwidth{x_1}\n\\]\n shows"
     assert text_latex("costs $5") == r"costs \$5"
     assert text_latex("ω ≤ 1 — ok") == r"$\omega$ $\leq$ 1 --- ok"
     # a comment character inside inline math would swallow the rest of the line
@@ -126,7 +130,7 @@ def test_a_refuted_claim_is_boxed_with_its_counterexample():
     result = CheckResult(Status.REFUTED, "ratio is 0/0", counterexample="at $n = 4$, j_2 & 100%")
     tex = aslatex(result)
     assert tex.startswith("\\finding{sdrefuted}")
-    assert r"at $n = 4$, j\_2 \& 100\%" in tex
+    assert r"at $n = 4$, j\_\allowbreak{}2 \& 100\%" in tex
 
 
 def test_a_corrected_claim_shows_the_correction_and_steps_print_via_sympy():
@@ -157,6 +161,22 @@ def test_the_document_mirrors_the_papers_sections_and_is_deterministic():
     assert "\\subsection{Tangent plane properties}" in files["section-5-1.tex"]
     assert "\\setcounter{section}{3}\n\\section{1-ring decomposition" in files["section-4.tex"]
     assert "\\claimheading{claim:proposition-5-9}{Proposition~5.9}" in files["section-5-1.tex"]
+
+
+def test_the_bytes_do_not_depend_on_the_hash_seed(tmp_path):
+    """Printing order comes from sympy's sort keys, not from set or dict iteration order."""
+    script = (
+        "import hashlib, sys; sys.path.insert(0, 'tests'); from latex_cases import stress_pairs; "
+        "from symdecomp.latex import derivation_files; "
+        "print(hashlib.sha256(repr(sorted(derivation_files(stress_pairs()).items())).encode()).hexdigest())"
+    )
+    root = Path(__file__).resolve().parents[1]
+    digests = {
+        subprocess.run([sys.executable, "-c", script], cwd=root, capture_output=True, text=True, check=True,
+                       env={**os.environ, "PYTHONHASHSEED": seed}).stdout
+        for seed in ("1", "2")
+    }
+    assert len(digests) == 1
 
 
 # -- the command and the committed files ------------------------------------------------------

@@ -153,10 +153,12 @@ def _escape_text(text: str) -> str:
 
 def _clean_math(tex: str) -> str:
     """Inline math written by a claim's author, made safe: no comments, tabs or raw Unicode."""
+    # & separates cells inside an environment (pmatrix, cases...); elsewhere it is a character
+    specials = "%#" if "\\begin" in tex else "%#&"
     out = []
     for i, ch in enumerate(tex):
         escaped = i > 0 and tex[i - 1] == "\\"
-        if ch in "%#&" and not escaped:
+        if ch in specials and not escaped:
             out.append("\\" + ch)
         elif ch in _UNICODE_MATH:
             out.append(_UNICODE_MATH[ch] + " ")
@@ -256,11 +258,11 @@ def _environment(lines: list[str]) -> str:
     return "\\begin{multline*}\n" + " \\\\\n".join(lines) + "\n\\end{multline*}\n"
 
 
-def _split(expr, lhs):
+def _split(expr, lhs, rel: str = "="):
     """(lhs, relation symbol, rhs) of a step: a sympy relation is split at its operator."""
-    if lhs is None and isinstance(expr, sp.Rel) and not isinstance(expr, (sp.And, sp.Or)):
+    if lhs is None and isinstance(expr, sp.Rel):
         return expr.lhs, _RELATIONS.get(expr.rel_op, sp.latex(expr).split()[0]), expr.rhs
-    return lhs, "=", expr
+    return lhs, rel, expr
 
 
 def _entry_symbol(r: int, c: int, shape) -> sp.Symbol:
@@ -292,7 +294,25 @@ def _matrix_display(lhs, rel: str, matrix: sp.MatrixBase) -> str:
     return head + "where\n" + _rows_display(rows)
 
 
-def _rows_display(rows: Sequence[tuple[object, object]]) -> str:
+def _is_name(key) -> bool:
+    """Whether a mapping's key names its value (``x = 1``) rather than maps to it (``2 \\mapsto 1``)."""
+    if isinstance(key, str):
+        return True
+    if isinstance(key, (sp.Symbol, sp.Indexed, sp.MatrixSymbol, sp.IndexedBase)):
+        return True
+    return isinstance(key, sp.Function) and isinstance(key.func, sp.core.function.UndefinedFunction)
+
+
+def _mapping_rows(mapping: Mapping) -> tuple[list, str]:
+    """The rows of a mapping and their relation: names in the given order (``x = 1``);
+    anything else, e.g. eigenvalues with multiplicities, in sympy's sort order (``2 \\mapsto 1``)."""
+    items = list(mapping.items())
+    if all(_is_name(k) for k, _ in items):
+        return items, "="
+    return sorted(items, key=lambda kv: sp.default_sort_key(kv[0])), r"\mapsto"
+
+
+def _rows_display(rows: Sequence[tuple[object, object]], rel: str = "=") -> str:
     """Equations ``lhs = rhs``: the short ones aligned together, the long ones broken."""
     out, group = [], []
 
@@ -302,18 +322,18 @@ def _rows_display(rows: Sequence[tuple[object, object]]) -> str:
             group.clear()
 
     for lhs, rhs in rows:
-        lines = _lines(lhs, "=", rhs) if not isinstance(rhs, (sp.MatrixBase, Mapping, str)) else None
+        lines = _lines(lhs, rel, rhs) if not isinstance(rhs, (sp.MatrixBase, Mapping, str)) else None
         if lines is not None and len(lines) == 1 and not lines[0].startswith(r"\fitwidth"):
             left = lhs if isinstance(lhs, str) else sp.latex(lhs)
-            group.append(left + " &= " + sp.latex(rhs) if not isinstance(rhs, (tuple, list)) else left + " &= " + aslatex(rhs))
+            group.append(left + " &" + rel + " " + sp.latex(rhs))
         else:
             flush()
-            out.append(display_math(rhs, lhs))
+            out.append(display_math(rhs, lhs, rel=rel))
     flush()
     return "".join(out)
 
 
-def display_math(expr, lhs=None) -> str:
+def display_math(expr, lhs=None, *, rel: str = "=") -> str:
     """``expr`` (or ``lhs = expr``) as a displayed formula that fits in the text width.
 
     A formula wider than a line is set in ``multline*``, broken between the terms of its
@@ -328,10 +348,10 @@ def display_math(expr, lhs=None) -> str:
     \\]
     """
     if isinstance(expr, Mapping):
-        return _rows_display(list(expr.items()))
+        return _rows_display(*_mapping_rows(expr))
     if isinstance(expr, str):
         return text_latex(expr) + "\n"
-    lhs, rel, rhs = _split(expr, lhs)
+    lhs, rel, rhs = _split(expr, lhs, rel)
     if isinstance(rhs, sp.MatrixBase):
         width = estimate_width(sp.latex(rhs)) + (estimate_width(lhs if isinstance(lhs, str) else sp.latex(lhs)) + 1.4 if lhs is not None else 0)
         if width > LINE_WIDTH_EM:
@@ -384,7 +404,8 @@ def _(obj: str) -> str:
 
 @aslatex.register(Mapping)
 def _(obj: Mapping) -> str:
-    rows = [(k if isinstance(k, str) else aslatex(k)) + " &= " + aslatex(v) for k, v in obj.items()]
+    items, rel = _mapping_rows(obj)
+    rows = [(k if isinstance(k, str) else aslatex(k)) + " &" + rel + " " + aslatex(v) for k, v in items]
     return "\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}"
 
 

@@ -45,6 +45,12 @@ def test_mapping_is_an_aligned_block():
     assert aslatex({x: sp.Rational(1, 2), y: sp.sqrt(2)}) == "\\begin{aligned}\nx &= \\frac{1}{2} \\\\\ny &= \\sqrt{2}\n\\end{aligned}"
 
 
+def test_a_mapping_that_does_not_name_its_values_maps_them_in_sorted_order():
+    eigenvalues = {sp.Integer(5): 1, sp.Integer(2): 2}  # eigenvalue -> multiplicity
+    assert aslatex(eigenvalues) == "\\begin{aligned}\n2 &\\mapsto 2 \\\\\n5 &\\mapsto 1\n\\end{aligned}"
+    assert "2 = 2" not in display_math(eigenvalues)
+
+
 def test_unknown_objects_are_refused():
     with pytest.raises(TypeError, match="object"):
         aslatex(object())
@@ -54,6 +60,10 @@ def test_text_is_escaped_and_inline_math_kept():
     assert text_latex("a_i & b_i: 50% #1 ~ ^ {x} \\ $\\omega_n^j$") == (
         r"a\_\allowbreak{}i \& b\_\allowbreak{}i: 50\% \#1 \textasciitilde{} \textasciicircum{} \{x\} "
         r"\textbackslash{} $\omega_n^j$"
+    )
+    # & is a cell separator inside an environment, a character elsewhere
+    assert text_latex("$\\begin{pmatrix} a & b \\end{pmatrix}$, $a & b$") == (
+        "$\\begin{pmatrix} a & b \\end{pmatrix}$, $a \\& b$"
     )
     assert text_latex("as $$x_1$$ shows") == "as \n\\[\n\\fitwidth{x_1}\n\\]\n shows"
     assert text_latex("costs $5") == r"costs \$5"

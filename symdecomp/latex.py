@@ -147,8 +147,16 @@ def _unicode_in_text(ch: str) -> str:
     return r"\texttt{[U+%04X]}" % ord(ch)
 
 
+def _escape_word(word: str) -> str:
+    out = "".join(_TEXT_ESCAPES.get(ch) or _unicode_in_text(ch) for ch in word)
+    if len(word) > 16:
+        # a long "word" such as [[1,2],[3,4]] or n=3..16 may break after its punctuation
+        out = re.sub(r"([,;/=\])]|\.\.)(?=.)", r"\1\\allowbreak{}", out)
+    return out
+
+
 def _escape_text(text: str) -> str:
-    return "".join(_TEXT_ESCAPES.get(ch) or _unicode_in_text(ch) for ch in text)
+    return "".join(_escape_word(word) for word in re.split(r"(\s+)", text))
 
 
 def _clean_math(tex: str) -> str:
@@ -273,8 +281,8 @@ def _entry_symbol(r: int, c: int, shape) -> sp.Symbol:
 def _matrix_display(lhs, rel: str, matrix: sp.MatrixBase) -> str:
     """A matrix too wide for a line: its longest entries are named and listed below it."""
     matrix = sp.ImmutableMatrix(matrix)
-    lhs_width = (estimate_width(lhs if isinstance(lhs, str) else sp.latex(lhs)) + 1.4) if lhs is not None else 0.0
-    budget = LINE_WIDTH_EM - lhs_width
+    prefix = "" if lhs is None else (lhs if isinstance(lhs, str) else sp.latex(lhs)) + " " + rel + " "
+    budget = LINE_WIDTH_EM - estimate_width(prefix)
     entries = sorted(
         ((-estimate_width(sp.latex(matrix[r, c])), r, c) for r in range(matrix.rows) for c in range(matrix.cols)),
     )
@@ -287,8 +295,7 @@ def _matrix_display(lhs, rel: str, matrix: sp.MatrixBase) -> str:
         named.append((r, c))
     if not named or estimate_width(sp.latex(shown)) > budget:
         # many columns of short entries: naming entries does not help; shrink (last resort)
-        body = sp.latex(matrix)
-        return _environment([(sp.latex(lhs) if not isinstance(lhs, str) and lhs is not None else (lhs or "")) + (" " + rel + " " if lhs is not None else "") + r"\fitwidth{%s}" % body])
+        return _environment([r"\fitwidth{%s}" % (prefix + sp.latex(matrix))])
     head = _environment(_lines(lhs, rel, sp.ImmutableMatrix(shown)))
     rows = [(_entry_symbol(r, c, matrix.shape), matrix[r, c]) for r, c in sorted(named)]
     return head + "where\n" + _rows_display(rows)
@@ -353,8 +360,8 @@ def display_math(expr, lhs=None, *, rel: str = "=") -> str:
         return text_latex(expr) + "\n"
     lhs, rel, rhs = _split(expr, lhs, rel)
     if isinstance(rhs, sp.MatrixBase):
-        width = estimate_width(sp.latex(rhs)) + (estimate_width(lhs if isinstance(lhs, str) else sp.latex(lhs)) + 1.4 if lhs is not None else 0)
-        if width > LINE_WIDTH_EM:
+        prefix = "" if lhs is None else (lhs if isinstance(lhs, str) else sp.latex(lhs)) + " " + rel + " "
+        if estimate_width(prefix + sp.latex(rhs)) > LINE_WIDTH_EM:
             return _matrix_display(lhs, rel, rhs)
     return _environment(_lines(lhs, rel, rhs))
 

@@ -75,7 +75,21 @@ def stress_pairs() -> list[tuple[Claim, CheckResult]]:
                 steps=(Step("Characteristic polynomial:", tangent.characteristic_polynomial, sp.Symbol("p") ),),
             ),
         ),
-        ("Eq. 960", "6", "Numeric and error", "A numeric one.", CheckResult(Status.NUMERIC, "agrees", digits=30)),
+        (
+            "Eq. 960", "6", "Numeric, long words and awkward objects", "A numeric one.",
+            CheckResult(
+                Status.NUMERIC,
+                "agrees with T=[[1,-1/2],[2,1/3],[4,5/7],[9,9/10],[11,12/13]] for n=3..16 via "
+                "symdecomp.frequency.per_frequency_matrix_at_every_valence_and_frequency_index",
+                digits=30,
+                steps=(
+                    Step("Eigenvalues with multiplicities:", sp.Matrix([[2, 1], [0, 2]]).eigenvals()),
+                    Step("A long left-hand side and a wide matrix:", subdivision_matrix(cc, 10),
+                         sp.Symbol("S") + sp.Symbol("T") * sp.Symbol("U") + sp.Symbol("V") ** 2 + sp.Symbol("W")),
+                    Step("An inequality:", sp.Lt(long_sum(), sp.oo)),
+                ),
+            ),
+        ),
         ("Remark 6.1", "6", "A check that crashed", "Text.", CheckResult(Status.ERROR, "check raised ZeroDivisionError: division by zero")),
     ]
     pairs = []

@@ -474,7 +474,7 @@ def claim_latex(claim: Claim, result: CheckResult) -> str:
     """The entry of one claim: heading, statement as printed, status, derivation."""
     return (
         "\\claimheading{%s}{%s}{%s}\n" % (_anchor(claim.label), _label_text(claim.label), text_latex(claim.title, displays=False))
-        + "\\textit{Statement.} %s\n\n" % text_latex(claim.statement).strip()
+        + "\\textit{Statement, as printed.} %s\n\n" % text_latex(claim.statement).strip()
         + aslatex(result)
     )
 

@@ -209,6 +209,39 @@ def test_derive_writes_the_files_and_removes_only_its_own_stale_ones(tmp_path, c
     assert '"' in capsys.readouterr().out
 
 
+@pytest.fixture
+def temporary_claims(monkeypatch):
+    """Two claims registered for one test: a refuted one in 5.3 and one whose check crashes."""
+    from symdecomp.claims import REGISTRY, Claim, check_claim
+
+    def refuted():
+        return CheckResult(Status.REFUTED, "0/0 at $j = n/2$", counterexample="n = 4, j = 2",
+                           steps=(Step("the determinant", sp.Matrix([[1, omega], [omega, 1]]).det(), "D"),))
+
+    def crashes():
+        raise ZeroDivisionError("division by zero")
+
+    monkeypatch.setitem(REGISTRY, "Eq. 998", Claim("Eq. 998", "5.3", "A refuted one", "as printed", refuted, order=998))
+    monkeypatch.setitem(REGISTRY, "Eq. 999", Claim("Eq. 999", "5.3", "A crashing one", "as printed", crashes, order=999))
+    check_claim.cache_clear()
+    yield
+    check_claim.cache_clear()
+
+
+def test_derive_prints_one_claim_and_reports_failed_checks(temporary_claims, tmp_path, capsys):
+    assert main(["derive", "--label", "Eq. 998"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("\\claimheading{claim:eq-998}{Eq.~998}{A refuted one}")
+    assert "\\finding{sdrefuted}" in out and "D = " + sp.latex(1 - omega**2) in out
+    assert main(["derive", "--label", "Eq. 1000"]) == 2
+    assert "no claim labelled Eq. 1000" in capsys.readouterr().err
+    assert main(["derive", "--out", str(tmp_path), "--no-progress"]) == 1  # Eq. 999 did not run
+    assert "Eq. 999" in capsys.readouterr().err
+    section = (tmp_path / "section-5-3.tex").read_text()
+    assert "\\subsection{Hyperbolic properties}" in section and "\\finding{sderror}" in section
+    assert "\\section{Evolution of the eigencomponents}" in (tmp_path / "main.tex").read_text()
+
+
 def test_committed_derivations_match_the_registry(tmp_path):
     """Drift: regenerating gives the committed bytes (run `symdecomp derive` after changing a check)."""
     write_derivations(tmp_path)

@@ -461,19 +461,24 @@ def _(obj: CheckResult) -> str:
     return out
 
 
+def _one_line(text: str) -> str:
+    """Text for a heading or a table cell: one line, no displayed formulas."""
+    return text_latex(" ".join(text.split()), displays=False)
+
+
 def _anchor(label: str) -> str:
     return "claim:" + re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
 
 
 def _label_text(label: str) -> str:
     """``Eq. 43`` -> ``Eq.~43``: a label never breaks before its number."""
-    return re.sub(r" (?=\d)", "~", text_latex(label, displays=False))
+    return re.sub(r" (?=\d)", "~", _one_line(label))
 
 
 def claim_latex(claim: Claim, result: CheckResult) -> str:
     """The entry of one claim: heading, statement as printed, status, derivation."""
     return (
-        "\\claimheading{%s}{%s}{%s}\n" % (_anchor(claim.label), _label_text(claim.label), text_latex(claim.title, displays=False))
+        "\\claimheading{%s}{%s}{%s}\n" % (_anchor(claim.label), _label_text(claim.label), _one_line(claim.title))
         + "\\textit{Statement, as printed.} %s\n\n" % text_latex(claim.statement).strip()
         + aslatex(result)
     )
@@ -503,7 +508,7 @@ def _heading(section: str) -> str:
     depth = min(len(parts), 3)
     command = ("section", "subsection", "subsubsection")[depth - 1]
     number = parts[min(len(parts), 3) - 1]
-    title = text_latex(SECTION_TITLES.get(section, f"Section {section}"), displays=False)
+    title = _one_line(SECTION_TITLES.get(section, f"Section {section}"))
     counter = f"\\setcounter{{{command}}}{{{int(number) - 1}}}\n" if number.isdigit() else ""
     return f"{counter}\\{command}{{{title}}}\n"
 
@@ -518,8 +523,8 @@ def _summary(pairs: Sequence[tuple[Claim, CheckResult]]) -> str:
     for claim, result in pairs:
         anchor = _anchor(claim.label)
         rows.append(
-            f"{text_latex(claim.section, displays=False)} & \\hyperref[{anchor}]{{{_label_text(claim.label)}}} & "
-            f"{text_latex(claim.title, displays=False)} & {aslatex(result.status)} & \\pageref{{{anchor}}} \\\\"
+            f"{_one_line(claim.section)} & \\hyperref[{anchor}]{{{_label_text(claim.label)}}} & "
+            f"{_one_line(claim.title)} & {aslatex(result.status)} & \\pageref{{{anchor}}} \\\\"
         )
     table = (
         "\\begin{longtable}{@{}>{\\raggedright\\arraybackslash}p{0.07\\linewidth}"

@@ -68,7 +68,7 @@ def stress_pairs() -> list[tuple[Claim, CheckResult]]:
             ),
         ),
         (
-            "Eq. 950", "5.2", "Corrected claim", "As printed: $1 - \\alpha - \\beta$.",
+            "Eq. 950", "5.2", "Corrected claim\n\nwith a title over two paragraphs", "As printed: $1 - \\alpha - \\beta$.",
             CheckResult(
                 Status.CORRECTED, "the row sums to $1 + (n-1)(\\alpha + \\beta)$",
                 correction="the centre weight is $1 - n\\alpha - n\\beta$",

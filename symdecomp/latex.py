@@ -475,10 +475,24 @@ def _label_text(label: str) -> str:
     return re.sub(r" (?=\d)", "~", _one_line(label))
 
 
-def claim_latex(claim: Claim, result: CheckResult) -> str:
+def _anchors(claims: Sequence[Claim]) -> dict[str, str]:
+    """A distinct cross-reference target for each claim (``Eq. 43`` -> ``claim:eq-43``)."""
+    anchors: dict[str, str] = {}
+    taken: set[str] = set()
+    for c in claims:
+        anchor, k = _anchor(c.label), 1
+        while anchor in taken:
+            k += 1
+            anchor = f"{_anchor(c.label)}-{k}"
+        anchors[c.label] = anchor
+        taken.add(anchor)
+    return anchors
+
+
+def claim_latex(claim: Claim, result: CheckResult, anchor: str | None = None) -> str:
     """The entry of one claim: heading, statement as printed, status, derivation."""
     return (
-        "\\claimheading{%s}{%s}{%s}\n" % (_anchor(claim.label), _label_text(claim.label), _one_line(claim.title))
+        "\\claimheading{%s}{%s}{%s}\n" % (anchor or _anchor(claim.label), _label_text(claim.label), _one_line(claim.title))
         + "\\textit{Statement, as printed.} %s\n\n" % text_latex(claim.statement).strip()
         + aslatex(result)
     )
@@ -513,7 +527,7 @@ def _heading(section: str) -> str:
     return f"{counter}\\{command}{{{title}}}\n"
 
 
-def _summary(pairs: Sequence[tuple[Claim, CheckResult]]) -> str:
+def _summary(pairs: Sequence[tuple[Claim, CheckResult]], anchors: Mapping[str, str]) -> str:
     counts: dict[str, int] = {}
     for _, result in pairs:
         counts[result.status.value] = counts.get(result.status.value, 0) + 1
@@ -521,7 +535,7 @@ def _summary(pairs: Sequence[tuple[Claim, CheckResult]]) -> str:
     tally = ", ".join(f"{counts[s]} \\status{{{s}}}" for s in order if s in counts)
     rows = []
     for claim, result in pairs:
-        anchor = _anchor(claim.label)
+        anchor = anchors[claim.label]
         rows.append(
             f"{_one_line(claim.section)} & \\hyperref[{anchor}]{{{_label_text(claim.label)}}} & "
             f"{_one_line(claim.title)} & {aslatex(result.status)} & \\pageref{{{anchor}}} \\\\"
@@ -555,6 +569,7 @@ def derivation_files(pairs: Sequence[tuple[Claim, CheckResult]]) -> dict[str, st
     sorted in the paper's order). The result depends on nothing else.
     """
     pairs = sorted(pairs, key=lambda pair: pair[0].sort_key())
+    anchors = _anchors([c for c, _ in pairs])
     sections: dict[str, list[tuple[Claim, CheckResult]]] = {}
     for claim, result in pairs:
         sections.setdefault(claim.section, []).append((claim, result))
@@ -570,7 +585,7 @@ def derivation_files(pairs: Sequence[tuple[Claim, CheckResult]]) -> dict[str, st
             introduced.add(parent)
         introduced.add(section)
         name = section_file_name(section)
-        body = "\n".join(claim_latex(c, r) for c, r in sections[section])
+        body = "\n".join(claim_latex(c, r, anchors[c.label]) for c, r in sections[section])
         files[name] = GENERATED + _heading(section) + "\n" + body
         inputs.append("\\input{%s}\n" % name[: -len(".tex")])
     files["main.tex"] = (
@@ -583,7 +598,7 @@ def derivation_files(pairs: Sequence[tuple[Claim, CheckResult]]) -> dict[str, st
         "numbering, each with its statement as printed, the outcome of its check, and the "
         "derivation computed by symdecomp (every formula is printed by sympy from the computed "
         "objects). Claims the check found false as printed are marked in colour.\n\n"
-        + _summary(pairs)
+        + _summary(pairs, anchors)
         + "\n"
         + "".join(inputs)
         + "\n\\end{document}\n"

@@ -90,6 +90,8 @@ def stress_pairs() -> list[tuple[Claim, CheckResult]]:
                 ),
             ),
         ),
+        ("Remark 6.1 (b)", "6", "Same anchor as Remark 6.1 b", "Text.", CheckResult(Status.PROVED, "trivially")),
+        ("Remark 6.1 b", "6", "Same anchor as Remark 6.1 (b)", "Text.", CheckResult(Status.PROVED, "trivially")),
         ("Remark 6.1", "6", "A check that crashed", "Text.", CheckResult(Status.ERROR, "check raised ZeroDivisionError: division by zero")),
     ]
     pairs = []

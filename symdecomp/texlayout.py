@@ -374,10 +374,25 @@ def break_pieces(expr, budget: float = LINE_WIDTH_EM) -> list[Piece]:
             else:
                 pieces.extend(_attach(joiner, break_pieces(factor, budget - 2)))
         return pieces
-    if isinstance(expr, sp.Pow) and isinstance(expr.base, sp.Add) and expr.exp.is_Integer and expr.exp > 0:
+    if isinstance(expr, sp.Pow) and isinstance(expr.base, (sp.Add, sp.Mul)):
+        # (long)^k, and also sqrt(long) and 1/long, as a power of a group split across lines
         inner = break_pieces(expr.base, budget - 3)
         left, right = _delimiters(_latex(expr.base))
         return _attach(left, inner, right + "^{%s}" % _latex(expr.exp))
+    if isinstance(expr, sp.Abs):
+        inner = break_pieces(expr.args[0], budget - 2)
+        return _attach(r"\bigl|", inner, r"\bigr|")
+    if isinstance(expr, sp.Function) and len(expr.args) == 1 and isinstance(expr.args[0], (sp.Add, sp.Mul)):
+        # f(long): the name as sympy prints it for a short argument, then the argument broken
+        if expr.func == sp.exp:
+            head = r"\exp"
+        else:
+            name = _latex(expr.func(sp.Symbol("x")))
+            head = name[: name.rfind("x")].replace(r"{\left(", "").replace(r"\left(", "")
+        if r"\right" not in head and head.count("{") == head.count("}"):
+            inner = break_pieces(expr.args[0], budget - 3)
+            left, right = _delimiters(_latex(expr.args[0]))
+            return _attach(head + left, inner, right)
     if isinstance(expr, sp.Tuple):
         return _sequence_pieces(list(expr), budget)
     return [whole]

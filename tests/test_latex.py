@@ -115,6 +115,25 @@ def test_a_long_product_over_a_long_denominator_breaks_inside_its_factors():
     assert lines[0].startswith("P = \\frac{1}{")  # the long fraction N/D is set as (1/D) N
 
 
+@pytest.mark.parametrize("wrap", [sp.sqrt, sp.cos, sp.exp, sp.Abs, lambda e: 1 / e, lambda e: e**3])
+def test_a_function_or_power_of_a_long_sum_breaks_inside_its_argument(wrap):
+    block = display_math(wrap(long_sum()), lhs=sp.Symbol("F"))
+    lines = _lines_of(block)
+    assert len(lines) >= 5 and "\\fitwidth" not in block
+    assert all(estimate_width(line) <= LINE_WIDTH_EM for line in lines)
+
+
+def test_a_formula_too_wide_to_shrink_legibly_is_replaced_by_a_notice():
+    monster = sp.Piecewise((sp.expand(long_sum() * (x + y + 3)), x > 0), (0, True))  # cases cannot break
+    block = display_math(monster)
+    assert "not printed: split it into smaller steps" in block and "\\fitwidth" not in block
+
+
+def test_an_object_sympy_cannot_print_is_reported_in_the_document():
+    step = Step("a power of a Piecewise", sp.Pow(sp.Piecewise((x, x > 0), (y, True)), 2, evaluate=False))
+    assert "\\finding{sderror}{Not printed}" in aslatex(step)
+
+
 def test_a_wide_matrix_has_its_long_entries_named_and_listed():
     wide = sp.Matrix(3, 3, lambda r, c: sp.expand((omega ** (r - c) + alpha + r) ** 2 / (r + c + 2)))
     block = display_math(wide, lhs=sp.Symbol("W"))

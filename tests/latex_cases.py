@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from symdecomp import catmull_clark, per_frequency_matrix, subdivision_matrix, tangent_eigenvalues
@@ -21,7 +23,8 @@ def long_product():
     return sp.Mul(sp.expand((x + y + omega + 2) ** 3), sp.expand((alpha + beta + n) ** 3), evaluate=False) / sp.expand((n + 3) ** 6)
 
 
-def stress_pairs() -> list[tuple[Claim, CheckResult]]:
+@lru_cache(maxsize=1)
+def stress_pairs() -> tuple[tuple[Claim, CheckResult], ...]:
     cc = catmull_clark()
     m_j = per_frequency_matrix(cc)
     tangent = tangent_eigenvalues(cc)
@@ -98,7 +101,7 @@ def stress_pairs() -> list[tuple[Claim, CheckResult]]:
     for order, (label, section, title, statement, result) in enumerate(cases):
         c = Claim(label, section, title, statement, check=lambda r=result: r, order=order)
         pairs.append((c, result))
-    return pairs
+    return tuple(pairs)
 
 
 def stress_formulas() -> list:

@@ -6,12 +6,8 @@ column ``s``. A circulant with a fixed set of nonzero diagonals is described, fo
 ``-1``). Its eigenvalue on the regular polygon ``v_j`` is the generating polynomial (Eq. 9)
 evaluated at ``omega = omega_n^j``, a Laurent polynomial in ``omega``.
 
->>> circ([sp.Rational(1, 2), 0, 0, sp.Rational(1, 2)])
-Matrix([
-[1/2, 0, 0, 1/2],
-[1/2, 1/2, 0, 0],
-[0, 1/2, 1/2, 0],
-[0, 0, 1/2, 1/2]])
+>>> circ([sp.Rational(1, 2), 0, 0, sp.Rational(1, 2)]).tolist()
+[[1/2, 0, 0, 1/2], [1/2, 1/2, 0, 0], [0, 1/2, 1/2, 0], [0, 0, 1/2, 1/2]]
 >>> generating_polynomial({0: sp.Rational(1, 2), -1: sp.Rational(1, 2)})
 1/2 + 1/(2*omega)
 """

@@ -14,10 +14,8 @@ Everything here is derived by applying the rules of a :class:`~symdecomp.schemes
 a Fourier mode at a symbolic row ``i``; nothing is typed in from the paper.
 
 >>> from symdecomp.schemes import catmull_clark
->>> per_frequency_matrix(catmull_clark())
-Matrix([
-[omega/16 + 3/8 + 1/(16*omega), 1/16 + 1/(16*omega)],
-[               omega/4 + 1/4,                1/4]])
+>>> per_frequency_matrix(catmull_clark()).tolist()
+[[omega/16 + 3/8 + 1/(16*omega), 1/16 + 1/(16*omega)], [omega/4 + 1/4, 1/4]]
 """
 
 from __future__ import annotations

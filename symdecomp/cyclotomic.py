@@ -1,0 +1,183 @@
+"""Exact arithmetic in the cyclotomic field Q(zeta_N), for exact polygon decompositions.
+
+An element is a rational polynomial in ``zeta = exp(2 pi i/N)`` reduced modulo the
+cyclotomic polynomial ``Phi_N`` (python-flint). Equality is exact: an element is zero iff
+its reduced polynomial is zero. With ``4 | N`` the field contains ``i = zeta^(N/4)``, so real
+and imaginary parts stay in it.
+
+>>> K = CyclotomicField(20)
+>>> w = K.zeta(4)                  # omega_5 = zeta_20^4
+>>> sum((w**k for k in range(5)), K(0)) == 0
+True
+>>> (K.zeta(5) * K.zeta(5)).to_sympy()    # i * i
+-1
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from functools import lru_cache
+
+import flint
+import mpmath
+import sympy as sp
+
+__all__ = ["CyclotomicField", "Cyclotomic"]
+
+
+@lru_cache(maxsize=None)
+def _phi(N: int) -> flint.fmpq_poly:
+    return flint.fmpq_poly([int(c) for c in flint.fmpz_poly.cyclotomic(N).coeffs()])
+
+
+class CyclotomicField:
+    """The field Q(zeta_N)."""
+
+    def __init__(self, N: int):
+        if N < 1:
+            raise ValueError(f"N must be positive, got {N}")
+        self.N = N
+        self.phi = _phi(N)
+
+    def __eq__(self, other):
+        return isinstance(other, CyclotomicField) and other.N == self.N
+
+    def __hash__(self):
+        return hash(("Q(zeta)", self.N))
+
+    def __call__(self, value) -> "Cyclotomic":
+        """Embed a rational (int, Fraction, sympy Rational) or a Gaussian rational ``a + b*I``."""
+        if isinstance(value, Cyclotomic):
+            return value
+        if isinstance(value, (int, Fraction)):
+            return Cyclotomic(self, flint.fmpq_poly([flint.fmpq(Fraction(value).numerator, Fraction(value).denominator)]))
+        v = sp.sympify(value)
+        re, im = v.as_real_imag()
+        if not (re.is_Rational and im.is_Rational):
+            raise TypeError(f"{value!r} is not a (Gaussian) rational number")
+        out = self(Fraction(int(re.p), int(re.q)))
+        if im != 0:
+            out = out + self.i * self(Fraction(int(im.p), int(im.q)))
+        return out
+
+    def zeta(self, k: int = 1) -> "Cyclotomic":
+        """``zeta_N^k``."""
+        k %= self.N
+        coeffs = [0] * k + [1]
+        return Cyclotomic(self, flint.fmpq_poly(coeffs) % self.phi)
+
+    def root(self, n: int, k: int) -> "Cyclotomic":
+        """``omega_n^k = zeta_N^(k N/n)``; ``n`` must divide ``N``."""
+        if self.N % n:
+            raise ValueError(f"omega_{n} is not in Q(zeta_{self.N})")
+        return self.zeta(k * (self.N // n))
+
+    @property
+    def i(self) -> "Cyclotomic":
+        if self.N % 4:
+            raise ValueError(f"i is not in Q(zeta_{self.N}) (needs 4 | N)")
+        return self.zeta(self.N // 4)
+
+
+class Cyclotomic:
+    """An element of Q(zeta_N)."""
+
+    __slots__ = ("field", "poly")
+
+    def __init__(self, field: CyclotomicField, poly: flint.fmpq_poly):
+        self.field = field
+        self.poly = poly
+
+    def _lift(self, other) -> "Cyclotomic":
+        if isinstance(other, Cyclotomic):
+            if other.field != self.field:
+                raise ValueError("elements of different cyclotomic fields")
+            return other
+        return self.field(other)
+
+    def __add__(self, other):
+        return Cyclotomic(self.field, self.poly + self._lift(other).poly)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        return Cyclotomic(self.field, self.poly - self._lift(other).poly)
+
+    def __rsub__(self, other):
+        return self._lift(other) - self
+
+    def __neg__(self):
+        return Cyclotomic(self.field, -self.poly)
+
+    def __mul__(self, other):
+        return Cyclotomic(self.field, (self.poly * self._lift(other).poly) % self.field.phi)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        if isinstance(other, (int, Fraction)):
+            f = Fraction(other)
+            if f == 0:
+                raise ZeroDivisionError("division by zero")
+            return Cyclotomic(self.field, self.poly * flint.fmpq(f.denominator, f.numerator))
+        other = self._lift(other)
+        g, s, _ = other.poly.xgcd(self.field.phi)  # s*other = g (mod phi), g a nonzero constant
+        if other.poly == 0:
+            raise ZeroDivisionError("division by zero in a cyclotomic field")
+        return Cyclotomic(self.field, (self.poly * s * (1 / g[0])) % self.field.phi)
+
+    def __pow__(self, k: int):
+        out = self.field(1)
+        base = self if k >= 0 else self.field(1) / self
+        for _ in range(abs(k)):
+            out = out * base
+        return out
+
+    def __eq__(self, other):
+        try:
+            return (self - other).poly == 0
+        except (TypeError, ValueError):
+            return NotImplemented
+
+    def __hash__(self):
+        return hash((self.field.N, str(self.poly)))
+
+    def conjugate(self) -> "Cyclotomic":
+        """Complex conjugate: ``zeta -> zeta^(-1)``."""
+        N = self.field.N
+        coeffs = [0] * N
+        for k, c in enumerate(self.poly.coeffs()):
+            coeffs[(-k) % N] = coeffs[(-k) % N] + c
+        return Cyclotomic(self.field, flint.fmpq_poly(coeffs) % self.field.phi)
+
+    def real(self) -> "Cyclotomic":
+        return (self + self.conjugate()) / 2
+
+    def imag(self) -> "Cyclotomic":
+        return (self - self.conjugate()) / (2 * self.field.i)
+
+    def is_rational(self) -> bool:
+        return self.poly.degree() <= 0
+
+    def to_sympy(self) -> sp.Expr:
+        """As a sympy number: ``sum_k c_k (cos(2 pi k/N) + i sin(2 pi k/N))``, expanded."""
+        N = self.field.N
+        total = sp.Integer(0)
+        for k, c in enumerate(self.poly.coeffs()):
+            if c != 0:
+                q = sp.Rational(int(c.p), int(c.q))
+                angle = 2 * sp.pi * sp.Rational(k, N)
+                total += q * (sp.cos(angle) + sp.I * sp.sin(angle))
+        return sp.expand(total)
+
+    def to_mpc(self):
+        """As an mpmath number at the current working precision."""
+        N = self.field.N
+        total = mpmath.mpc(0)
+        for k, c in enumerate(self.poly.coeffs()):
+            if c != 0:
+                total += mpmath.mpf(int(c.p)) / int(c.q) * mpmath.expjpi(mpmath.mpf(2 * k) / N)
+        return total
+
+    def __repr__(self):
+        return f"Cyclotomic({self.poly}, N={self.field.N})"

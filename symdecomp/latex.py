@@ -158,7 +158,9 @@ def _escape_word(word: str) -> str:
 
 
 def _escape_text(text: str) -> str:
-    return "".join(_escape_word(word) for word in re.split(r"(\s+)", text))
+    out = "".join(_escape_word(word) for word in re.split(r"(\s+)", text))
+    # "Eq. 5" is not the end of a sentence: a normal, unbreakable space
+    return re.sub(r"\b(Eqs?|Props?|Figs?|Secs?|cf|e\.g|i\.e|resp|vs)\. (?=\S)", r"\1.~", out)
 
 
 def _clean_math(tex: str) -> str:

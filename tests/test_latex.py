@@ -22,6 +22,7 @@ from symdecomp.texlayout import LINE_WIDTH_EM, break_pieces, estimate_width
 
 COMMITTED = Path(__file__).resolve().parents[1] / "derivations"
 PDFLATEX = shutil.which("pdflatex")
+LATEXMK = shutil.which("latexmk")
 needs_tex = pytest.mark.skipif(PDFLATEX is None, reason="no pdflatex (CI installs it in .ci/steps/20-latex.sh)")
 #: Overfull boxes up to this width (pt) are tolerated; anything wider runs visibly into the margin.
 OVERFULL_TOLERANCE_PT = 2.0
@@ -282,12 +283,13 @@ def test_the_drift_check_catches_a_hand_edit(tmp_path):
 
 
 def _compile(directory: Path) -> str:
-    """Run pdflatex twice (for the page references); return the log; fail on a LaTeX error."""
-    for _ in range(2):
-        run = subprocess.run(
-            [PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", "main.tex"],
-            cwd=directory, capture_output=True, text=True, timeout=300,
-        )
+    """Compile main.tex as a user would (latexmk -pdf, else pdflatex twice); return the log.
+
+    Fails on a LaTeX error."""
+    flags = ["-interaction=nonstopmode", "-halt-on-error"]
+    runs = [[LATEXMK, "-pdf", *flags, "main.tex"]] if LATEXMK else [[PDFLATEX, *flags, "main.tex"]] * 2
+    for command in runs:
+        run = subprocess.run(command, cwd=directory, capture_output=True, text=True, timeout=300)
         log = (directory / "main.log").read_text(errors="replace")
         assert run.returncode == 0, "LaTeX error:\n" + "\n".join(re.findall(r"^!.*(?:\n.*){0,3}", log, re.M))
     return log
@@ -333,3 +335,13 @@ def test_the_width_estimate_is_never_below_what_tex_sets(tmp_path):
     assert len(measured) == len(texs)
     too_low = [(texs[i], estimate_width(texs[i]), real) for i, real in measured.items() if estimate_width(texs[i]) < real]
     assert too_low == []
+
+
+@needs_tex
+def test_the_overfull_check_sees_a_formula_that_runs_into_the_margin(tmp_path):
+    """The compile tests can fail: an unbroken long sum is reported."""
+    unbroken = "\\[\n" + sp.latex(long_sum()) + "\n\\]\n"
+    (tmp_path / "main.tex").write_text(
+        derivation_files([])["main.tex"].replace("\\end{document}", unbroken + "\\end{document}")
+    )
+    assert len(_overfull(_compile(tmp_path))) == 1

@@ -472,7 +472,7 @@ def _(obj: CheckResult) -> str:
     else:
         out = "\\textbf{Status:} %s. %s%s\n" % (aslatex(obj.status), evidence, _scope(obj))
     if obj.steps:
-        out += "\n\\textbf{Derivation.}\n\n" + "\n".join(aslatex(step) for step in obj.steps)
+        out += "\n\\textbf{Derivation.}\\par\\nopagebreak\n" + "\n".join(aslatex(step) for step in obj.steps)
     return out
 
 

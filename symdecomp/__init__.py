@@ -35,6 +35,11 @@ from .frequency import circulant_blocks, frequency_zero_matrix, per_frequency_ma
 from .schemes import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from .spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
 from .tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from .elliptic import elliptic_defect_table, nice_elliptic_conditions
+from .ellipses import ellipse_axes
+from .hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
+from .masks import limit_masks, limit_masks_at
+from .tuning import joint_obstruction, tune
 from .mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from .support import Region, classify_support
 
@@ -67,6 +72,17 @@ __all__ = [
     "Spectrum",
     "closed_form_spectrum",
     "frequency_zero_eigenvalues",
+    # Section 5.2-5.3 and limit masks
+    "nice_elliptic_conditions",
+    "elliptic_defect_table",
+    "ellipse_axes",
+    "tune",
+    "joint_obstruction",
+    "hyperbolic_equality",
+    "hyperbolic_ring",
+    "iterate_hyperbolic_ring",
+    "limit_masks",
+    "limit_masks_at",
     # Section 6
     "CBMatrix",
     "cb_matrix",

@@ -2,6 +2,8 @@
 
 import json
 
+import flint
+
 import mpmath
 import pytest
 import sympy as sp
@@ -11,13 +13,26 @@ from symdecomp.cli import main
 
 
 def full_matrix_eigenvalues(n: int, dps: int = 60):
-    """Eigenvalues of the exact (2n+1)x(2n+1) matrix by mpmath's QR algorithm (no block structure)."""
+    """Eigenvalues of the exact (2n+1)x(2n+1) matrix, without its block structure.
+
+    FLINT computes the characteristic polynomial of the full rational matrix exactly and
+    factors it over Q (so multiplicities are exact exponents); mpmath finds the roots of each
+    irreducible factor at ``dps`` digits, with an error estimate that must be below 10^-(dps-10).
+    """
     S = subdivision_matrix(catmull_clark(), n)
+    matrix = flint.fmpq_mat(S.rows, S.cols, [flint.fmpq(int(x.p), int(x.q)) for x in S])
+    _, factors = matrix.charpoly().factor()
+    values = []
     with mpmath.workdps(dps):
-        A = mpmath.matrix([[mpmath.mpf(x.p) / x.q for x in row] for row in S.tolist()])
-        values = mpmath.eig(A, left=False, right=False)
-        assert max(abs(v.imag) for v in values) < mpmath.mpf(10) ** (-dps + 10)
-        return sorted((v.real for v in values), reverse=True)
+        for poly, exponent in factors:
+            coeffs = [mpmath.mpf(int(c.p)) / int(c.q) for c in reversed(poly.coeffs())]
+            roots, err = mpmath.polyroots(coeffs, maxsteps=200, extraprec=2 * dps, error=True) if len(coeffs) > 2 else ([-coeffs[1] / coeffs[0]], 0)
+            assert err < mpmath.mpf(10) ** (-dps + 10)
+            for r in roots:
+                assert abs(mpmath.im(r)) < mpmath.mpf(10) ** (-dps + 10)
+                values += [mpmath.re(r)] * exponent
+        assert len(values) == 2 * n + 1
+        return sorted(values, reverse=True)
 
 
 @pytest.mark.parametrize("n", range(3, 17))
@@ -25,13 +40,13 @@ def test_cli_spectrum_agrees_with_full_matrix_to_25_digits(n, capsys):
     assert main(["spectrum", str(n), "--json", "--digits", "30"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["n"] == n and out["scheme"] == "catmull-clark"
-    closed = []
-    for e in out["eigenvalues"]:
-        closed += [mpmath.mpf(e["value"])] * e["multiplicity"]
-        assert all(0 <= k < n for k in e["frequencies"])
-    assert len(closed) == 2 * n + 1
     reference = full_matrix_eigenvalues(n)
     with mpmath.workdps(60):
+        closed = []
+        for e in out["eigenvalues"]:
+            closed += [mpmath.mpf(e["value"])] * e["multiplicity"]  # parsed at 60 digits
+            assert all(0 <= k < n for k in e["frequencies"])
+        assert len(closed) == 2 * n + 1
         closed.sort(reverse=True)
         for c, r in zip(closed, reference):
             assert abs(c - r) < mpmath.mpf(10) ** -25, (n, c, r)

@@ -21,6 +21,32 @@ def _random_polygon(n: int, seed: int) -> sp.Matrix:
 
 
 @claim(
+    "Eq. 2-4",
+    section="2",
+    title="The rows of F_n are regular planar polygons",
+    statement="The rows $v_0, \\dots, v_{n-1}$ of $F_n$ (Eq. 2), $\\omega_n = e^{2\\pi i/n}$ (Eq. 3), are regular planar $n$-gons.",
+)
+def _eq2_4() -> CheckResult:
+    from ..symbols import j, n
+
+    vertex = sp.exp(2 * sp.pi * sp.I * j * M / n)
+    step = sp.simplify(vertex.subs(M, M + 1) / vertex)
+    modulus = sp.simplify(sp.Abs(vertex))
+    ok = not step.has(M) and modulus == 1
+    return CheckResult(
+        Status.PROVED if ok else Status.REFUTED,
+        "vertex m of v_j is omega_n^(jm): all on the unit circle, each obtained from the previous by the same rotation "
+        "omega_n^j, for every n and j (v_0 is a point; v_(n/2) for even n is a segment traversed back and forth)",
+        counterexample=None if ok else f"{step}, {modulus}",
+        steps=(
+            Step("Vertex $m$ of $v_j$:", vertex),
+            Step("Ratio of consecutive vertices, free of $m$:", step),
+            Step("Modulus:", modulus),
+        ),
+    )
+
+
+@claim(
     "Eq. 5",
     section="2",
     title="Decomposition into planar regular polygons",

@@ -63,12 +63,51 @@ def _identity_b() -> ShiftStencil:
     return ShiftStencil(sp.Integer(0), sp.Integer(0), sp.Integer(1))
 
 
+def composed_stages(a_stages, b_stages) -> tuple[ShiftStencil, ShiftStencil]:
+    """Compose staged rules: the a-steps in turn on the a's, the b-steps in turn on the b's (each chain
+    reading the other family's points of the same level)."""
+    a = _identity_a()
+    for stage in a_stages:
+        a = _then_a(a, stage)
+    b = _identity_b()
+    for stage in b_stages:
+        b = _then_b(b, stage)
+    return a, b
+
+
 # The staged rules as printed (Eq. 17-21).
 EQ17 = ShiftStencil(sp.Integer(0), R(3, 4) + R(1, 8) * (1 / omega + omega), sp.Integer(0))
 EQ18 = ShiftStencil(sp.Integer(0), R(8, 10), R(1, 10) * (1 / omega + 1))
 EQ19 = ShiftStencil(R(3, 8), R(5, 8), sp.Integer(0))
 EQ20 = ShiftStencil(sp.Integer(0), R(1, 3) * (1 + omega), R(1, 3))
 EQ21 = ShiftStencil(R(1, 4), sp.Integer(0), R(3, 4))
+
+
+@claim(
+    "Eq. 10-11",
+    section="4",
+    title="The 1-ring as a 2n-gon and its decomposition",
+    statement="The 1-ring is the $2n$-gon $P = (a_0, b_0, \\dots, a_{n-1}, b_{n-1})$ (Eq. 10), a sum of $2n$ regular "
+    "planar $2n$-gons $z_j v_j$ (Eq. 11).",
+)
+def _eq10_11() -> CheckResult:
+    import random
+
+    from ..ring import OneRing, one_ring_decomposition
+
+    last = 8
+    for size in range(3, last + 1):
+        rng = random.Random(size)
+        pt = lambda: [sp.Rational(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(3)]  # noqa: E731
+        ring = OneRing.from_points(pt(), [pt() for _ in range(size)], [pt() for _ in range(size)])
+        d = one_ring_decomposition(ring)
+        if d.polygon.reconstruct() != sp.Matrix(ring.polygon()):
+            return CheckResult(Status.REFUTED, f"reconstruction fails at n = {size}", counterexample=f"n = {size}")
+    return CheckResult(
+        Status.PROVED,
+        "Eq. 11 is Eq. 5 for the 2n-gon (proved for every size); random rational 1-rings rebuilt exactly from their "
+        f"2n components for n = 3..{last}",
+    )
 
 
 @claim(
@@ -87,6 +126,41 @@ def _eq12_13() -> CheckResult:
         "vertex 2i of v_j (2n-gon) is omega_2n^(2ij) = omega_n^(ij): A^j = z_j v_(j mod n), a regular n-gon, for every n and j",
         counterexample=None if diff == 0 else str(diff),
         steps=(Step("$a_i^j$ is vertex $2i$ of $z_j v_j$:", a_ij), Step("which is vertex $i$ of $z_j v_j^{(n)}$:", regular)),
+    )
+
+
+@claim(
+    "Eq. 14-15",
+    section="4",
+    title="Catmull-Clark on the 1-ring",
+    statement="$a_i \\rightarrow \\frac38(a_i + O) + \\frac1{16}(a_{i-1} + b_{i-1} + b_i + a_{i+1})$ and "
+    "$b_i \\rightarrow \\frac14(a_i + b_i + a_{i+1} + O)$.",
+)
+def _eq14_15() -> CheckResult:
+    # Catmull-Clark's face point of the face (O, a_i, b_i, a_{i+1}) and edge point of the edge (O, a_i): the mean of
+    # the edge's ends and of the face points of its two faces (i-1 and i).
+    face_i = ShiftStencil(R(1, 4), R(1, 4) * (1 + omega), R(1, 4))
+    edge_i = ShiftStencil(
+        R(1, 4) + R(1, 4) * (face_i.o + face_i.o),
+        R(1, 4) + R(1, 4) * sp.expand(face_i.a + face_i.a / omega),
+        R(1, 4) * sp.expand(face_i.b + face_i.b / omega),
+    )
+    cc = catmull_clark()
+    printed_a = ShiftStencil(R(3, 8), R(3, 8) + (1 / omega + omega) / 16, (1 / omega + 1) / 16)
+    printed_b = ShiftStencil(R(1, 4), (1 + omega) / 4, R(1, 4))
+    ok = all(
+        is_zero(x.as_matrix() - y.as_matrix())
+        for x, y in ((edge_i, printed_a), (face_i, printed_b), (printed_a, ShiftStencil.of(cc.edge_rule)), (printed_b, ShiftStencil.of(cc.face_rule)))
+    )
+    return CheckResult(
+        Status.PROVED if ok else Status.REFUTED,
+        "Catmull-Clark's face point (mean of the face) and edge point (mean of the edge's ends and its two face points), "
+        "composed as shift-operator polynomials for every n, give the printed rules, which are the package's scheme data",
+        counterexample=None if ok else "see steps",
+        steps=(
+            Step("Face point of $(O, a_i, b_i, a_{i+1})$ as $(w_O, A(\\omega), B(\\omega))$:", face_i.as_matrix()),
+            Step("Edge point of $(O, a_i)$:", edge_i.as_matrix()),
+        ),
     )
 
 
@@ -129,12 +203,7 @@ def _eq16() -> CheckResult:
 def _eq17_21() -> CheckResult:
     cc = catmull_clark()
     edge, face = ShiftStencil.of(cc.edge_rule), ShiftStencil.of(cc.face_rule)
-    a = _identity_a()
-    for stage in (EQ17, EQ18, EQ19):
-        a = _then_a(a, stage)
-    b = _identity_b()
-    for stage in (EQ20, EQ21):
-        b = _then_b(b, stage)
+    a, b = composed_stages((EQ17, EQ18, EQ19), (EQ20, EQ21))
     da = (a.as_matrix() - edge.as_matrix()).applyfunc(sp.expand)
     db = (b.as_matrix() - face.as_matrix()).applyfunc(sp.expand)
     # Reading Eq. 20 with the a's already moved by Eq. 17-19 gives a different rule:

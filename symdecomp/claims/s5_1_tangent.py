@@ -12,7 +12,7 @@ from ..spectrum import frequency_zero_eigenvalues
 from ..symbols import lam, n, omega
 from ..tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from .registry import CheckResult, Status, Step, claim, is_zero
-from .s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
+from .s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
 
 R = sp.Rational
 C = COS
@@ -67,14 +67,7 @@ def _eq31_32() -> CheckResult:
     lg = (1 + omega) / 2
     printed = sp.Matrix([[R(5, 8) * R(4, 5) * la, R(5, 8) * R(1, 5) * lb], [R(3, 4) * R(2, 3) * lg, R(3, 4) * R(1, 3)]])
     # the same from composing the staged rules Eq. 17-19 and Eq. 20-21 (O drops out for omega != 1)
-    from .s4_one_ring import _identity_a, _identity_b, _then_a, _then_b
-
-    a = _identity_a()
-    for stage in (EQ17, EQ18, EQ19):
-        a = _then_a(a, stage)
-    b = _identity_b()
-    for stage in (EQ20, EQ21):
-        b = _then_b(b, stage)
+    a, b = composed_stages((EQ17, EQ18, EQ19), (EQ20, EQ21))
     staged = sp.Matrix([[a.a, a.b], [b.a, b.b]])
     derived = per_frequency_matrix(_cc())
     ok = is_zero(printed - staged) and is_zero(staged - derived)

@@ -355,6 +355,47 @@ def _prop63() -> CheckResult:
 
 
 @claim(
+    "Eq. 51",
+    section="6",
+    title="Characteristic polynomial of S in closed form",
+    statement=r"The eigenvalues of $S$ are the roots of $\det(S-xI)$.",
+)
+def _eq51() -> CheckResult:
+    scheme = catmull_clark(ALPHA, BETA)
+    cf = closed_form_characteristic_polynomial(scheme)
+    c_minus, c_zero, c_plus = cf.laurent_coefficients
+    rho_p, rho_m = cf.rho
+    w = sp.Symbol("w")
+    factor_ok = is_zero(sp.expand((rho_p + c_plus * w) * (rho_m + c_plus * w) / (c_plus * w)) - cf.frequency_factor.subs(OMEGA, w))
+    # prod_k c_+ w_k = c_+^n w^(n(n-1)/2), w = exp(2 pi i/n): the sign
+    sign = sp.simplify(sp.exp(2 * sp.pi * sp.I / N * N * (N - 1) / 2))
+    # with P = rho_+^n, Q = rho_-^n, A = (-c_+)^n, B = (-c_-)^n, and P Q = (c_+ c_-)^n = A B:
+    P, Q, A, B = sp.symbols("P Q A B")
+    numerator = sp.expand((P - A) * (Q - A)).subs(P * Q, A * B)
+    combined = sp.expand(sp.powsimp(numerator / (sign * (-1) ** N * A)))  # c_+^n = (-1)^n A
+    combine_ok = is_zero(combined - (P + Q - A - B))
+    concrete = all(verify_closed_form(scheme, n) for n in range(3, 17)) and all(
+        verify_closed_form(catmull_clark(), n) for n in range(3, 17)
+    )
+    if not (factor_ok and combine_ok and concrete and sign == (-1) ** (N - 1)):
+        return CheckResult(Status.ERROR, "a step of the closed form failed")
+    return CheckResult(
+        Status.PROVED,
+        "det(xI - S) = (x-1) det(xI - E_0) (rho_+^n + rho_-^n - (-c_+)^n - (-c_-)^n)/q(x,1), derived for symbolic n and weights; "
+        "exact (FLINT) against the matrix for n = 3..16 with alpha, beta free and standard (tests: 3..64, slow: to 128)",
+        steps=(
+            Step("$q(x,\\omega)=\\det(xI-M(\\omega))$", cf.frequency_factor),
+            Step("$(c_-, c_0, c_+)$", sp.Matrix([list(cf.laurent_coefficients)])),
+            Step("$q=(\\rho_++c_+\\omega)(\\rho_-+c_+\\omega)/(c_+\\omega)$ with $\\rho_\\pm$ the roots of $\\rho^2-c_0\\rho+c_+c_-$", rho_p, sp.Symbol("rho_+")),
+            Step("$\\prod_k(\\rho+c\\,\\omega_n^k)=\\rho^n-(-c)^n$ and $\\prod_k c_+\\omega_n^k=c_+^n\\cdot$", sign),
+            Step("$\\prod_{k=0}^{n-1}q(x,\\omega_n^k)=(P-A)(Q-A)/(c_+^n\\,(-1)^{n-1})$ with $P,Q=\\rho_\\pm^n$, $A,B=(-c_\\pm)^n$", combined),
+            Step("$\\det(xI-E_0)$", cf.zero_frequency_factor),
+            Step("$\\det(xI-S)$ (the paper's $\\det(S-xI)$ is its negative: the size $2n+1$ is odd)", cf.expression),
+        ),
+    )
+
+
+@claim(
     "S' (after Eq. 51)",
     section="6",
     title="The reduction S -> S'",
@@ -461,45 +502,4 @@ def _no_interference() -> CheckResult:
         ),
         counterexample=f"n = 3, alpha = beta = 0 (O fixed): E_0 has the eigenvalue {moved} ~ {sp.N(moved, 6)} > lambda_1 = {sp.N(lam1, 6)}, so the subdominant eigenvalue is no longer the tangent-plane one",
         correction="alpha, beta change only the two eigenvalues of E_0 = M(1) + nT; tangent-plane and hyperbolic behaviour are unaffected provided both stay below lambda_1 in modulus.",
-    )
-
-
-@claim(
-    "Eq. 51",
-    section="6",
-    title="Characteristic polynomial of S in closed form",
-    statement=r"The eigenvalues of $S$ are the roots of $\det(S-xI)$.",
-)
-def _eq51() -> CheckResult:
-    scheme = catmull_clark(ALPHA, BETA)
-    cf = closed_form_characteristic_polynomial(scheme)
-    c_minus, c_zero, c_plus = cf.laurent_coefficients
-    rho_p, rho_m = cf.rho
-    w = sp.Symbol("w")
-    factor_ok = is_zero(sp.expand((rho_p + c_plus * w) * (rho_m + c_plus * w) / (c_plus * w)) - cf.frequency_factor.subs(OMEGA, w))
-    # prod_k c_+ w_k = c_+^n w^(n(n-1)/2), w = exp(2 pi i/n): the sign
-    sign = sp.simplify(sp.exp(2 * sp.pi * sp.I / N * N * (N - 1) / 2))
-    # with P = rho_+^n, Q = rho_-^n, A = (-c_+)^n, B = (-c_-)^n, and P Q = (c_+ c_-)^n = A B:
-    P, Q, A, B = sp.symbols("P Q A B")
-    numerator = sp.expand((P - A) * (Q - A)).subs(P * Q, A * B)
-    combined = sp.expand(sp.powsimp(numerator / (sign * (-1) ** N * A)))  # c_+^n = (-1)^n A
-    combine_ok = is_zero(combined - (P + Q - A - B))
-    concrete = all(verify_closed_form(scheme, n) for n in range(3, 17)) and all(
-        verify_closed_form(catmull_clark(), n) for n in range(3, 17)
-    )
-    if not (factor_ok and combine_ok and concrete and sign == (-1) ** (N - 1)):
-        return CheckResult(Status.ERROR, "a step of the closed form failed")
-    return CheckResult(
-        Status.PROVED,
-        "det(xI - S) = (x-1) det(xI - E_0) (rho_+^n + rho_-^n - (-c_+)^n - (-c_-)^n)/q(x,1), derived for symbolic n and weights; "
-        "exact (FLINT) against the matrix for n = 3..16 with alpha, beta free and standard (tests: 3..64, slow: to 128)",
-        steps=(
-            Step("$q(x,\\omega)=\\det(xI-M(\\omega))$", cf.frequency_factor),
-            Step("$(c_-, c_0, c_+)$", sp.Matrix([list(cf.laurent_coefficients)])),
-            Step("$q=(\\rho_++c_+\\omega)(\\rho_-+c_+\\omega)/(c_+\\omega)$ with $\\rho_\\pm$ the roots of $\\rho^2-c_0\\rho+c_+c_-$", rho_p, sp.Symbol("rho_+")),
-            Step("$\\prod_k(\\rho+c\\,\\omega_n^k)=\\rho^n-(-c)^n$ and $\\prod_k c_+\\omega_n^k=c_+^n\\cdot$", sign),
-            Step("$\\prod_{k=0}^{n-1}q(x,\\omega_n^k)=(P-A)(Q-A)/(c_+^n\\,(-1)^{n-1})$ with $P,Q=\\rho_\\pm^n$, $A,B=(-c_\\pm)^n$", combined),
-            Step("$\\det(xI-E_0)$", cf.zero_frequency_factor),
-            Step("$\\det(xI-S)$ (the paper's $\\det(S-xI)$ is its negative: the size $2n+1$ is odd)", cf.expression),
-        ),
     )

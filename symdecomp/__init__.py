@@ -29,6 +29,7 @@ from .errors import (
     NotAffineError,
     SymdecompError,
 )
+from .latex import aslatex
 from .reduction import reduce_first_column, subdivision_block_form
 from .frequency import circulant_blocks, frequency_zero_matrix, per_frequency_matrix, per_frequency_matrix_at
 from .schemes import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
@@ -115,6 +116,8 @@ __all__ = [
     "all_claims",
     "check_claim",
     "get_claim",
+    # LaTeX
+    "aslatex",
     # errors
     "SymdecompError",
     "InvalidValenceError",

@@ -28,7 +28,6 @@ from __future__ import annotations
 import enum
 import importlib
 import pkgutil
-import re
 import traceback
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -123,15 +122,9 @@ class Claim:
     order: int = 0
 
     def sort_key(self):
+        """Paper order: by section, then in the order the section's module registers its claims."""
         section = tuple(int(p) for p in self.section.split("."))
-        return (section, _label_key(self.label), self.order)
-
-
-def _label_key(label: str):
-    kind_rank = {"Eq.": 0, "Proposition": 1, "Remark": 2}
-    kind = label.split(" ")[0]
-    nums = tuple(int(x) for x in re.findall(r"\d+", label))
-    return (nums, kind_rank.get(kind, 3), label)
+        return (section, self.order)
 
 
 REGISTRY: dict[str, Claim] = {}

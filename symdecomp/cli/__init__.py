@@ -11,7 +11,7 @@ from ..errors import SymdecompError
 __all__ = ["main", "build_parser"]
 
 #: Subcommand modules of this package, in the order ``--help`` lists them.
-COMMANDS = ("claims_cmd", "spectrum_cmd", "check_cmd")
+COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -37,3 +37,9 @@ def main(argv=None) -> int:
         return 2
     except KeyboardInterrupt:  # pragma: no cover
         return 130
+    except BrokenPipeError:  # output piped into e.g. `head`: stop quietly
+        import os
+
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 0

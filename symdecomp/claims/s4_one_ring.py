@@ -1,0 +1,332 @@
+"""Section 4 (1-ring decomposition for Catmull-Clark): Eq. 11-24, Propositions 4.1-4.3."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from ..frequency import frequency_zero_matrix, per_frequency_matrix
+from ..schemes import catmull_clark
+from ..symbols import alpha, beta, n, omega
+from .registry import CheckResult, Status, Step, claim, is_zero
+
+R = sp.Rational
+I_ROW = sp.Symbol("i", integer=True)
+J = sp.Symbol("j", integer=True)
+Z = sp.Symbol("z")
+
+
+@dataclass(frozen=True)
+class ShiftStencil:
+    """A rule ``p_i -> o*O + A(S) a_i + B(S) b_i`` with ``S`` the index shift ``a_i -> a_{i+1}``.
+
+    Shift operators commute and act the same way for every ``n`` (indices mod ``n``), so
+    composing rules is multiplying Laurent polynomials in ``S`` (written ``omega``).
+    """
+
+    o: sp.Expr
+    a: sp.Expr
+    b: sp.Expr
+
+    @classmethod
+    def of(cls, rule) -> "ShiftStencil":
+        return cls(rule.center, sum((w * omega**k for k, w in rule.a), sp.Integer(0)), sum((w * omega**k for k, w in rule.b), sp.Integer(0)))
+
+    def as_matrix(self) -> sp.Matrix:
+        return sp.Matrix([[self.o, self.a, self.b]])
+
+
+def _then_a(first: ShiftStencil, second: ShiftStencil) -> ShiftStencil:
+    """Apply ``second`` to the a's produced by ``first`` (b's and O unchanged)."""
+    return ShiftStencil(
+        sp.expand(second.o + second.a.subs(omega, 1) * first.o),
+        sp.expand(second.a * first.a),
+        sp.expand(second.a * first.b + second.b),
+    )
+
+
+def _then_b(first: ShiftStencil, second: ShiftStencil) -> ShiftStencil:
+    """Apply ``second`` to the b's produced by ``first`` (a's and O unchanged)."""
+    return ShiftStencil(
+        sp.expand(second.o + second.b.subs(omega, 1) * first.o),
+        sp.expand(second.b * first.a + second.a),
+        sp.expand(second.b * first.b),
+    )
+
+
+def _identity_a() -> ShiftStencil:
+    return ShiftStencil(sp.Integer(0), sp.Integer(1), sp.Integer(0))
+
+
+def _identity_b() -> ShiftStencil:
+    return ShiftStencil(sp.Integer(0), sp.Integer(0), sp.Integer(1))
+
+
+def composed_stages(a_stages, b_stages) -> tuple[ShiftStencil, ShiftStencil]:
+    """Compose staged rules: the a-steps in turn on the a's, the b-steps in turn on the b's (each chain
+    reading the other family's points of the same level)."""
+    a = _identity_a()
+    for stage in a_stages:
+        a = _then_a(a, stage)
+    b = _identity_b()
+    for stage in b_stages:
+        b = _then_b(b, stage)
+    return a, b
+
+
+# The staged rules as printed (Eq. 17-21).
+EQ17 = ShiftStencil(sp.Integer(0), R(3, 4) + R(1, 8) * (1 / omega + omega), sp.Integer(0))
+EQ18 = ShiftStencil(sp.Integer(0), R(8, 10), R(1, 10) * (1 / omega + 1))
+EQ19 = ShiftStencil(R(3, 8), R(5, 8), sp.Integer(0))
+EQ20 = ShiftStencil(sp.Integer(0), R(1, 3) * (1 + omega), R(1, 3))
+EQ21 = ShiftStencil(R(1, 4), sp.Integer(0), R(3, 4))
+
+
+@claim(
+    "Eq. 10-11",
+    section="4",
+    title="The 1-ring as a 2n-gon and its decomposition",
+    statement="The 1-ring is the $2n$-gon $P = (a_0, b_0, \\dots, a_{n-1}, b_{n-1})$ (Eq. 10), a sum of $2n$ regular "
+    "planar $2n$-gons $z_j v_j$ (Eq. 11).",
+)
+def _eq10_11() -> CheckResult:
+    import random
+
+    from ..ring import OneRing, one_ring_decomposition
+
+    last = 8
+    for size in range(3, last + 1):
+        rng = random.Random(size)
+        pt = lambda: [sp.Rational(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(3)]  # noqa: E731
+        ring = OneRing.from_points(pt(), [pt() for _ in range(size)], [pt() for _ in range(size)])
+        d = one_ring_decomposition(ring)
+        if d.polygon.reconstruct() != sp.Matrix(ring.polygon()):
+            return CheckResult(Status.REFUTED, f"reconstruction fails at n = {size}", counterexample=f"n = {size}")
+    return CheckResult(
+        Status.PROVED,
+        "Eq. 11 is Eq. 5 for the 2n-gon (proved for every size); random rational 1-rings rebuilt exactly from their "
+        f"2n components for n = 3..{last}",
+    )
+
+
+@claim(
+    "Eq. 12-13",
+    section="4",
+    title="A^j and B^j are regular n-gons",
+    statement="If $z_j v_j = (a_0^j, b_0^j, \\dots, a_{n-1}^j, b_{n-1}^j)$ is a component of Eq. 11, then "
+    "$A^j = (a_i^j)$ and $B^j = (b_i^j)$ are planar regular $n$-gons.",
+)
+def _eq12_13() -> CheckResult:
+    a_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW) / (2 * n))
+    regular = Z * sp.exp(2 * sp.pi * sp.I * J * I_ROW / n)
+    diff = sp.simplify(a_ij - regular)
+    return CheckResult(
+        Status.PROVED if diff == 0 else Status.REFUTED,
+        "vertex 2i of v_j (2n-gon) is omega_2n^(2ij) = omega_n^(ij): A^j = z_j v_(j mod n), a regular n-gon, for every n and j",
+        counterexample=None if diff == 0 else str(diff),
+        steps=(Step("$a_i^j$ is vertex $2i$ of $z_j v_j$:", a_ij), Step("which is vertex $i$ of $z_j v_j^{(n)}$:", regular)),
+    )
+
+
+@claim(
+    "Eq. 14-15",
+    section="4",
+    title="Catmull-Clark on the 1-ring",
+    statement="$a_i \\rightarrow \\frac38(a_i + O) + \\frac1{16}(a_{i-1} + b_{i-1} + b_i + a_{i+1})$ and "
+    "$b_i \\rightarrow \\frac14(a_i + b_i + a_{i+1} + O)$.",
+)
+def _eq14_15() -> CheckResult:
+    # Catmull-Clark's face point of the face (O, a_i, b_i, a_{i+1}) and edge point of the edge (O, a_i): the mean of
+    # the edge's ends and of the face points of its two faces (i-1 and i).
+    face_i = ShiftStencil(R(1, 4), R(1, 4) * (1 + omega), R(1, 4))
+    edge_i = ShiftStencil(
+        R(1, 4) + R(1, 4) * (face_i.o + face_i.o),
+        R(1, 4) + R(1, 4) * sp.expand(face_i.a + face_i.a / omega),
+        R(1, 4) * sp.expand(face_i.b + face_i.b / omega),
+    )
+    cc = catmull_clark()
+    printed_a = ShiftStencil(R(3, 8), R(3, 8) + (1 / omega + omega) / 16, (1 / omega + 1) / 16)
+    printed_b = ShiftStencil(R(1, 4), (1 + omega) / 4, R(1, 4))
+    ok = all(
+        is_zero(x.as_matrix() - y.as_matrix())
+        for x, y in ((edge_i, printed_a), (face_i, printed_b), (printed_a, ShiftStencil.of(cc.edge_rule)), (printed_b, ShiftStencil.of(cc.face_rule)))
+    )
+    return CheckResult(
+        Status.PROVED if ok else Status.REFUTED,
+        "Catmull-Clark's face point (mean of the face) and edge point (mean of the edge's ends and its two face points), "
+        "composed as shift-operator polynomials for every n, give the printed rules, which are the package's scheme data",
+        counterexample=None if ok else "see steps",
+        steps=(
+            Step("Face point of $(O, a_i, b_i, a_{i+1})$ as $(w_O, A(\\omega), B(\\omega))$:", face_i.as_matrix()),
+            Step("Edge point of $(O, a_i)$:", edge_i.as_matrix()),
+        ),
+    )
+
+
+@claim(
+    "Eq. 16",
+    section="4",
+    title="Vertex rule",
+    statement="$O \\rightarrow (1-\\alpha-\\beta) O + \\alpha \\sum_i a_i + \\beta \\sum_i b_i$.",
+)
+def _eq16() -> CheckResult:
+    printed_sum = sp.factor(sp.expand((1 - alpha - beta) + n * alpha + n * beta - 1))
+    corrected_center = 1 - n * alpha - n * beta
+    corrected_sum = sp.expand(corrected_center + n * alpha + n * beta)
+    standard = catmull_clark().vertex_rule
+    std_center = sp.expand(corrected_center.subs({alpha: standard.each_a, beta: standard.each_b}))
+    if printed_sum == 0:
+        return CheckResult(Status.PROVED, "the printed rule is affine")
+    example = {n: 3, alpha: standard.each_a.subs(n, 3), beta: standard.each_b.subs(n, 3)}
+    return CheckResult(
+        Status.CORRECTED,
+        f"as printed the weights sum to 1 + {printed_sum}, so the rule is not affine (not translation invariant) "
+        f"unless alpha + beta = 0; with weight 1 - n alpha - n beta on O it is, and gives standard Catmull-Clark's {std_center}",
+        counterexample=f"n = 3 with the standard weights alpha = 1/6, beta = 1/36: the printed weights sum to "
+        f"{sp.expand((1 - alpha - beta + n * alpha + n * beta).subs(example))}",
+        correction="O -> (1 - n*alpha - n*beta) O + alpha sum_i a_i + beta sum_i b_i",
+        steps=(
+            Step("Sum of the printed weights minus one:", printed_sum),
+            Step("Sum of the corrected weights:", corrected_sum),
+            Step("Corrected weight of $O$ at the standard $\\alpha = 3/(2n^2)$, $\\beta = 1/(4n^2)$:", std_center),
+        ),
+    )
+
+
+@claim(
+    "Eq. 17-21",
+    section="4",
+    title="Staged Catmull-Clark rules",
+    statement="Eq. 14 decomposes into the steps Eq. 17, 18, 19 and Eq. 15 into Eq. 20, 21.",
+)
+def _eq17_21() -> CheckResult:
+    cc = catmull_clark()
+    edge, face = ShiftStencil.of(cc.edge_rule), ShiftStencil.of(cc.face_rule)
+    a, b = composed_stages((EQ17, EQ18, EQ19), (EQ20, EQ21))
+    da = (a.as_matrix() - edge.as_matrix()).applyfunc(sp.expand)
+    db = (b.as_matrix() - face.as_matrix()).applyfunc(sp.expand)
+    # Reading Eq. 20 with the a's already moved by Eq. 17-19 gives a different rule:
+    sequential = _then_b(_identity_b(), ShiftStencil(EQ20.o + EQ20.a.subs(omega, 1) * a.o, sp.expand(EQ20.a * a.a), sp.expand(EQ20.a * a.b + EQ20.b)))
+    sequential = _then_b(sequential, EQ21)
+    differs = not is_zero(sequential.as_matrix() - face.as_matrix())
+    if not (is_zero(da) and is_zero(db)):
+        return CheckResult(Status.REFUTED, "the staged rules do not compose to Eq. 14-15", counterexample=f"{da}, {db}")
+    return CheckResult(
+        Status.PROVED,
+        "as shift-operator polynomials (valid for every n): Eq. 17 -> 18 -> 19 gives Eq. 14 and Eq. 20 -> 21 gives "
+        "Eq. 15, when the b-steps read the a's of the same level (not the a's moved by Eq. 17-19"
+        + (", which would give a different rule)" if differs else ")"),
+        steps=(
+            Step("Each rule as $(w_O, A(\\omega), B(\\omega))$, $\\omega$ the index shift; Eq. 17, 18, 19 composed:", a.as_matrix()),
+            Step("Eq. 14 from the scheme's edge rule:", edge.as_matrix()),
+            Step("Eq. 20, 21 composed:", b.as_matrix()),
+            Step("Eq. 15 from the scheme's face rule:", face.as_matrix()),
+            Step("Eq. 20 applied to the moved a's would instead give", sequential.as_matrix()),
+        ),
+    )
+
+
+@claim(
+    "Proposition 4.1",
+    section="4",
+    title="A^j, B^j stay planar on parallel planes",
+    statement="$A^j$ and $B^j$ remain planar polygons on parallel planes throughout the subdivision process, "
+    "$j = 0, \\dots, 2n-1$.",
+)
+def _prop41() -> CheckResult:
+    cc = catmull_clark(alpha, beta)
+    X, Y = sp.symbols("X Y")
+    rows = []
+    for rule in (cc.edge_rule, cc.face_rule):
+        # the rule at a symbolic row i on the mode a_m = X omega^m, b_m = Y omega^m, O = 0
+        value = sum((w * X * omega ** (I_ROW + k) for k, w in rule.a), sp.Integer(0)) + sum(
+            (w * Y * omega ** (I_ROW + k) for k, w in rule.b), sp.Integer(0)
+        )
+        rows.append(sp.expand(sp.powsimp(sp.expand(value / omega**I_ROW))))
+    free_of_row = not any(r.has(I_ROW) for r in rows)
+    matches = is_zero(sp.Matrix(rows) - per_frequency_matrix(cc) * sp.Matrix([X, Y]))
+    ok = free_of_row and matches
+    return CheckResult(
+        Status.PROVED if ok else Status.REFUTED,
+        "for every n and every frequency with omega != 1 the rules map (X v_k, Y v_k) to (X' v_k, Y' v_k) = M_k (X, Y) "
+        "(symbolic row i): A^j and B^j stay complex multiples of the same z v_k, so they lie in planes parallel to "
+        "span(Re z, Im z); the centres move along the line of Proposition 4.3",
+        counterexample=None if ok else str(rows),
+        steps=(
+            Step("New $a_i$ and $b_i$ on the mode, divided by $\\omega^i$ ($O = 0$):", sp.Matrix(rows)),
+            Step("which is $M_j (X, Y)^T$ (Eq. 33).", per_frequency_matrix(cc) * sp.Matrix([X, Y])),
+        ),
+    )
+
+
+@claim(
+    "Proposition 4.2",
+    section="4",
+    title="A^j and A^{2n-j} stay coplanar",
+    statement="$A^j$ and $A^{2n-j}$ remain coplanar throughout the subdivision process.",
+)
+def _prop42() -> CheckResult:
+    cc = catmull_clark(alpha, beta)
+    M = per_frequency_matrix(cc)
+    weights_real = all(
+        w.is_real is not False for rule in (cc.edge_rule, cc.face_rule) for _, w in rule.a + rule.b
+    )
+    # On |omega| = 1, conj(omega) = 1/omega; with real weights conj(M(omega)) = M(conj(omega)).
+    u = sp.Symbol("u", real=True)
+    on_circle = {omega: sp.exp(sp.I * u)}
+    conj_M = M.subs(on_circle).applyfunc(sp.conjugate)
+    M_inverse = M.subs(omega, 1 / omega).subs(on_circle)
+    diff = (conj_M - M_inverse).applyfunc(lambda e: sp.simplify(e.rewrite(sp.cos)))
+    ok = weights_real and is_zero(diff)
+    return CheckResult(
+        Status.PROVED if ok else Status.REFUTED,
+        "with real weights M_(n-k) = conj(M_k) for every n; a real 1-ring has z_(2n-j) = conj(z_j), so A^(2n-j) stays "
+        "the conjugate of A^j and their sum stays a real planar polygon (the coplanar pair of Eq. 6)",
+        counterexample=None if ok else str(diff),
+        steps=(Step("$\\overline{M_j(\\omega)} - M_j(1/\\omega)$ on $|\\omega| = 1$:", diff),),
+    )
+
+
+@claim(
+    "Proposition 4.3",
+    section="4",
+    title="O and the centres of A^j, B^j stay collinear",
+    statement="The vertex $O$ and the centres of the polygons $A^j, B^j$ remain collinear throughout the subdivision process.",
+)
+def _prop43() -> CheckResult:
+    cc = catmull_clark(alpha, beta)
+    E = frequency_zero_matrix(cc)
+    sums = sp.Matrix([sp.simplify(sum(E.row(r))) for r in range(3)])
+    affine = all(s == 1 for s in sums)
+    printed = sp.Matrix([[1 - alpha - beta, n * alpha, n * beta]])
+    printed_sum = sp.factor(sum(printed) - 1)
+    return CheckResult(
+        Status.PROVED if affine else Status.REFUTED,
+        "the rows of the recursion for (O, centre of A, centre of B) (Eq. 43, derived) sum to 1 for every n, alpha, "
+        "beta: new points are affine combinations of collinear points, so they stay on the line through O and the "
+        f"common initial centre. This needs the affine vertex rule: with Eq. 16 as printed the first row sums to 1 + {printed_sum}",
+        counterexample=None if affine else str(sums),
+        steps=(Step("The recursion matrix (Eq. 43, derived from the rules):", E), Step("Its row sums:", sums)),
+    )
+
+
+@claim(
+    "Eq. 24",
+    section="4",
+    title="B^j = omega_2n^j A^j",
+    statement="$B^j = \\omega_{2n}^j A^j$, $j = 1, \\dots, n-1$.",
+)
+def _eq24() -> CheckResult:
+    b_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW + 1) / (2 * n))
+    a_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW) / (2 * n))
+    ratio = sp.simplify(b_ij / a_ij)
+    expected = sp.exp(sp.pi * sp.I * J / n)
+    ok = sp.simplify(ratio - expected) == 0
+    return CheckResult(
+        Status.PROVED if ok else Status.REFUTED,
+        "b_i^j / a_i^j = omega_2n^(j(2i+1)) / omega_2n^(2ij) = omega_2n^j for every i; it holds for every j = 0..2n-1, "
+        "not only j = 1..n-1",
+        counterexample=None if ok else str(ratio),
+        steps=(Step("$b_i^j / a_i^j$:", ratio),),
+    )

@@ -1,0 +1,338 @@
+"""Section 5.2, elliptic properties: Eq. 40-45, Proposition 5.2, Remark 5.2, the Example."""
+
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+
+from ..elliptic import (
+    MU,
+    elliptic_component,
+    eq44_ratio,
+    nice_elliptic_conditions,
+    recursion_eigenvector,
+    recursion_left_eigenvector,
+    rotation_free_form,
+    scale_ratio_squared,
+)
+from ..ellipses import ellipse_axes
+from ..frequency import COS, frequency_zero_matrix
+from ..schemes import catmull_clark
+from ..symbols import alpha as ALPHA
+from ..symbols import beta as BETA
+from ..symbols import n as N
+from ..tuning import joint_obstruction
+from . import CheckResult, Status, Step, claim, is_zero
+
+
+@claim(
+    "Eq. 40",
+    section="5.2",
+    title="Axes of the ellipse E_a",
+    statement=r"$A^1 + A^{2n-1}$ is inscribed on an ellipse with axes "
+    r"$l_1 = |w_1| + |w_{2n-1}|$, $l_2 = \bigl||w_1| - |w_{2n-1}|\bigr|$.",
+)
+def _eq40() -> CheckResult:
+    # The polygon is L(v_1) with L(zeta) = w1 zeta + w2 conj(zeta), a real-linear map of the plane;
+    # it lies on L(unit circle), whose semi-axes are the singular values of L.
+    p1, q1, p2, q2 = sp.symbols("p1 q1 p2 q2", real=True)
+    # Real 2x2 matrix of L: zeta = x + i y -> (w1 + w2) x + i (w1 - w2) y.
+    w1, w2 = p1 + sp.I * q1, p2 + sp.I * q2
+    col_x = [sp.re(w1 + w2), sp.im(w1 + w2)]
+    col_y = [sp.re(sp.I * (w1 - w2)), sp.im(sp.I * (w1 - w2))]
+    L = sp.Matrix([[col_x[0], col_y[0]], [col_x[1], col_y[1]]])
+    G = L.T * L
+    m1, m2 = p1**2 + q1**2, p2**2 + q2**2  # |w1|^2, |w2|^2
+    # sigma_1^2 + sigma_2^2 = tr G and sigma_1 sigma_2 = |det L|; (|w1| +- |w2|) have the same invariants.
+    sum_sq = sp.expand(G.trace() - 2 * (m1 + m2))
+    prod_sq = sp.expand(L.det() ** 2 - (m1 - m2) ** 2)
+    if not (is_zero(sum_sq) and is_zero(prod_sq)):
+        return CheckResult(Status.REFUTED, "singular values differ from |w1| +- |w2|", counterexample=str((sum_sq, prod_sq)))
+    # Cross-check on random rational 1-rings: Eq. 40 from the decomposition vs the singular values of [U W].
+    rng = random.Random(5)
+    worst = 0
+    for n in (3, 4, 5, 6):
+        ring = sp.Matrix(2 * n + 1, 3, lambda r, c: sp.Rational(rng.randint(-9, 9), rng.randint(1, 4)))
+        e = ellipse_axes(ring, 1, digits=40)
+        for a, b in zip(e.semi_axes, e.singular_values):
+            worst = max(worst, abs(sp.N(a - b, 40)))
+    if worst > sp.Float("1e-35"):
+        return CheckResult(Status.ERROR, f"decomposition and singular values disagree by {worst}")
+    return CheckResult(
+        Status.PROVED,
+        "the semi-axes of w1*e^{it} + w2*e^{-it} are |w1| +- |w2| (singular-value invariants match identically); "
+        "l_1, l_2 are semi-axes (half-axes) for the unit-circumradius v_1; random rings n=3..6 agree to 35 digits",
+        steps=(
+            Step("Real matrix of $\\zeta \\mapsto w_1\\zeta + w_2\\bar\\zeta$", L),
+            Step("$\\operatorname{tr}(L^TL) - 2(|w_1|^2+|w_2|^2)$", sum_sq),
+            Step("$\\det(L)^2 - (|w_1|^2-|w_2|^2)^2$", prod_sq),
+        ),
+    )
+
+
+@claim(
+    "Eq. 41",
+    section="5.2",
+    title="Initially E_a = E_b",
+    statement=r"$A^1 = w_1 \vec{v_1}$, $A^{2n-1} = w_{2n-1}\vec{v_{n-1}}$; initially $E_a = E_b$, the ellipse of the "
+    r"2n-gonal regular convex component of Eq. 11.",
+)
+def _eq41() -> CheckResult:
+    # z_1 = p + i q (p, q in R^3). A-pair: U = 2p, W = -2q; B-pair: z_1 * e^{i phi}, phi = pi/n (Eq. 24).
+    p = sp.Matrix(sp.symbols("p0:3", real=True))
+    q = sp.Matrix(sp.symbols("q0:3", real=True))
+    phi = sp.Symbol("phi", real=True)
+    zb_re = p * sp.cos(phi) - q * sp.sin(phi)
+    zb_im = p * sp.sin(phi) + q * sp.cos(phi)
+    gram_a = 4 * (p * p.T + q * q.T)
+    gram_b = 4 * (zb_re * zb_re.T + zb_im * zb_im.T)
+    diff = (gram_b - gram_a).applyfunc(lambda e: sp.simplify(sp.expand(e)))
+    if not is_zero(diff):
+        return CheckResult(Status.REFUTED, "E_b differs from E_a", counterexample=str(diff))
+    return CheckResult(
+        Status.PROVED,
+        "an ellipse U cos t + W sin t is fixed by its matrix U U^T + W W^T; for the b-part (z_1 rotated by pi/n) it is "
+        "identical for every ring and n",
+        steps=(Step("$G_b - G_a$ (zero)", diff),),
+    )
+
+
+@claim(
+    "Proposition 5.2",
+    section="5.2",
+    title="The components A^j, B^j are not rotated",
+    statement=r"At each subdivision step $A^j \rightarrow r_A^j A^j$ and $B^j \rightarrow r_B^j B^j$ with "
+    r"$r_A^j, r_B^j \in \mathbf{R}$.",
+)
+def _prop52() -> CheckResult:
+    conj, imag = rotation_free_form(catmull_clark(ALPHA, BETA))
+    if not is_zero(imag):
+        return CheckResult(Status.REFUTED, "D^-1 M_j D is not real", counterexample=str(imag))
+    return CheckResult(
+        Status.PROVED,
+        "with z = omega_2n^j, D^{-1} M_j D (D = diag(1, z)) is invariant under z -> 1/z = conj(z): real for every n, j "
+        "(the vertex-rule weights do not enter M_j)",
+        steps=(Step("$D^{-1} M_j D$ with $\\omega = z^2$", conj), Step("$e(z) - e(1/z)$ entrywise", imag)),
+    )
+
+
+@claim(
+    "Eq. 42",
+    section="5.2",
+    title="The induction step of Proposition 5.2",
+    statement=r"$M_j(r_1, r_2\omega_{2n}^j)^T = (r'_1, r'_2\omega_{2n}^j)^T$ with $r'_1, r'_2$ real.",
+)
+def _eq42() -> CheckResult:
+    conj, imag = rotation_free_form(catmull_clark())
+    z = sp.Symbol("z")
+    t = sp.Symbol("t", real=True)  # z = exp(i t), t = j pi/n
+    c = sp.Symbol("c", real=True)  # cos(t)
+    r1, r2 = sp.symbols("r1 r2", real=True)
+    new = conj * sp.Matrix([r1, r2])
+
+    def in_cos(e):
+        value = sp.expand(sp.expand_complex(sp.expand(e).subs(z, sp.exp(sp.I * t))).rewrite(sp.cos))
+        value = sp.expand(sp.expand_trig(value)).subs(sp.cos(t), c)
+        return sp.expand(value.subs(sp.sin(t) ** 2, 1 - c**2))
+
+    in_c = new.applyfunc(in_cos)
+    if not is_zero(imag) or any(e.has(sp.I) or e.has(sp.sin(t)) for e in in_c):
+        return CheckResult(Status.REFUTED, "an entry is not real", counterexample=str(imag))
+    return CheckResult(
+        Status.PROVED,
+        f"r'_1 = {sp.sstr(in_c[0])}, r'_2 = {sp.sstr(in_c[1])} with c = cos(j pi/n): real for real r_1, r_2",
+        steps=(Step("$(r'_1, r'_2)$ in $c = \\cos(j\\pi/n)$", in_c),),
+    )
+
+
+@claim(
+    "Eq. 43",
+    section="5.2",
+    title="The recursion matrix for O, A^0, B^0",
+    statement=r"$\begin{pmatrix}1-\alpha-\beta & \alpha & \beta\\ 3/8 & 1/2 & 1/8\\ 1/4 & 1/2 & 1/4\end{pmatrix}$ "
+    r"with $\alpha, \beta$ as in Eq. 16.",
+)
+def _eq43() -> CheckResult:
+    T = frequency_zero_matrix(catmull_clark(ALPHA, BETA))
+    R = sp.Rational
+    printed_rows = sp.Matrix([[R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
+    printed_first = sp.Matrix([[1 - ALPHA - BETA, ALPHA, BETA]])
+    rows_ok = is_zero(T[1:, :] - printed_rows)
+    first_diff = (T[0, :] - printed_first).applyfunc(sp.factor)
+    total = T[0, :].subs({ALPHA: ALPHA / N, BETA: BETA / N}) - printed_first
+    steps = (
+        Step("Derived from the rules (per-neighbour $\\alpha, \\beta$)", T),
+        Step("Derived first row minus printed first row", first_diff),
+        Step("The same with $\\alpha \\to \\alpha/n$, $\\beta \\to \\beta/n$ (total weights)", total.applyfunc(sp.expand)),
+    )
+    if not rows_ok:
+        return CheckResult(Status.REFUTED, "rows 2-3 differ from the edge/face rules", counterexample=str(T), steps=steps)
+    if is_zero(first_diff):
+        return CheckResult(Status.PROVED, "derived matrix equals the printed one", steps=steps)
+    return CheckResult(
+        Status.CORRECTED,
+        "rows 2-3 derived from Eq. 14-15 agree; the first row derived from Eq. 16 (affine, per-neighbour weights) is "
+        "(1 - n*alpha - n*beta, n*alpha, n*beta), which is the printed row only if alpha, beta are total weights",
+        correction="first row (1 - n*alpha - n*beta, n*alpha, n*beta) with alpha, beta the weights of each a_i, b_i "
+        "(equivalently the printed row with alpha, beta the total weights n*alpha, n*beta)",
+        counterexample="n = 4, standard weights: printed row with alpha = 3/32, beta = 1/64 gives "
+        "(57/64, 3/32, 1/64), not (9/16, 3/8, 1/16) of Eq. 45",
+        steps=steps,
+    )
+
+
+@claim(
+    "Eq. 44",
+    section="5.2",
+    title="Limit ratio of the plane distances",
+    statement=r"If $(u_O, u_a, u_b)^T$ is the subdominant eigenvector, in the limit "
+    r"$\frac{u_b-u_O}{u_a-u_O} = \frac{d_b}{d_a}$.",
+)
+def _eq44() -> CheckResult:
+    scheme = catmull_clark(ALPHA, BETA)
+    T = sp.Matrix(frequency_zero_matrix(scheme))
+    D = sp.Matrix([[-1, 1, 0], [-1, 0, 1]])  # (h_O, h_a, h_b) -> (d_a, d_b)
+    # D T = T' D with T' = D T E, E a right inverse of D on the complement of (1,1,1).
+    E = sp.Matrix([[0, 0], [1, 0], [0, 1]])
+    Tp = (D * T * E).applyfunc(sp.expand)
+    intertwine = (D * T - Tp * D).applyfunc(sp.expand)
+    u = recursion_eigenvector(scheme, MU)
+    du = D * u
+    eig = (Tp * du - MU * du).applyfunc(sp.expand)
+    char = sp.factor((T - MU * sp.eye(3)).det())
+    # eig vanishes whenever MU is an eigenvalue: reduce modulo the non-unit quadratic.
+    quad = sp.Poly(sp.cancel(char / (1 - MU)), MU)
+    reduced = eig.applyfunc(lambda e: sp.rem(sp.Poly(e, MU), quad).as_expr())
+    ratio = eq44_ratio(scheme, MU)
+    if not (is_zero(intertwine) and is_zero(reduced)):
+        return CheckResult(Status.REFUTED, "distances do not follow the non-unit eigenvectors", counterexample=str(reduced))
+    return CheckResult(
+        Status.PROVED,
+        "(d_a, d_b) = (h_a - h_O, h_b - h_O) moves by a 2x2 matrix T' with D T = T' D whose eigenvalues are the non-unit "
+        "ones of Eq. 43 and whose eigenvector is D u; so d_b/d_a -> (u_b-u_O)/(u_a-u_O) when the subdominant component "
+        f"is nonzero. The ratio is {sp.sstr(ratio)}, independent of the vertex rule",
+        steps=(
+            Step("$T'$ on $(d_a, d_b)$", Tp),
+            Step("$DT - T'D$", intertwine),
+            Step("$T'(Du) - \\mu Du$ reduced modulo the eigenvalue equation", reduced),
+            Step("Ratio of Eq. 44 at the eigenvalue $\\mu$", ratio),
+        ),
+    )
+
+
+@claim(
+    "Eq. 45",
+    section="5.2",
+    title="The regular case n = 4",
+    statement=r"For $n=4$ the matrix of Eq. 43 is $\begin{pmatrix}9/16&3/8&1/16\\3/8&1/2&1/8\\1/4&1/2&1/4\end{pmatrix}$ "
+    r"with subdominant eigenvalue $1/4$, eigenvector $(-2,1,4)^T$, $d_b/d_a = 2$, scale ratio $\sqrt2$.",
+)
+def _eq45() -> CheckResult:
+    cc = catmull_clark()
+    R = sp.Rational
+    T4 = frequency_zero_matrix(cc, 4)
+    printed = sp.Matrix([[R(9, 16), R(3, 8), R(1, 16)], [R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
+    eigs = sorted(sp.Matrix(T4).eigenvals(), reverse=True)
+    u = recursion_eigenvector(cc, eigs[1], 4)
+    paper_u = sp.Matrix([-2, 1, 4])
+    parallel = u.cross(paper_u)
+    ratio = eq44_ratio(cc, eigs[1], 4)
+    scale_sq = sp.nsimplify(sp.simplify(scale_ratio_squared(cc).subs(COS, sp.cos(sp.pi / 4))))
+    lam1 = nice_elliptic_conditions(cc).lambda1.subs(N, 4)
+    ok = (
+        T4 == printed
+        and eigs == [1, R(1, 4), R(1, 16)]
+        and is_zero(parallel)
+        and ratio == 2
+        and scale_sq == 2
+        and sp.simplify(lam1**2 - eigs[1]) == 0
+    )
+    steps = (
+        Step("Derived matrix at $n=4$", T4),
+        Step("Eigenvalues", sp.Matrix(eigs)),
+        Step("Eigenvector for $1/4$ (derived)", u),
+        Step("Ratio $d_b/d_a$", ratio),
+        Step("$|B^1/A^1|^2$ at $n=4$", scale_sq),
+        Step("$\\lambda_1$ at $n = 4$", sp.simplify(lam1)),
+    )
+    if not ok:
+        return CheckResult(Status.REFUTED, "the n = 4 example does not hold as printed", counterexample=str(steps), steps=steps)
+    return CheckResult(
+        Status.VERIFIED,
+        f"derived matrix equals the printed one; eigenvalues {', '.join(map(str, eigs))}; eigenvector "
+        f"{tuple(u)} proportional to (-2, 1, 4); ratio {ratio} = |B^1/A^1|^2 = {scale_sq} (scale ratio sqrt 2); "
+        f"{eigs[1]} = lambda_1^2: both conditions hold at n = 4",
+        valences=(4, 4),
+        steps=steps,
+    )
+
+
+@claim(
+    "Remark 5.2",
+    section="5.2",
+    title="Two cases of initial input",
+    statement=r"There are only two essentially different cases for the initial input, $(1,1,1)$ and $(0,1,1)$; in the "
+    r"first there is no elliptic component, in the second it generally exists.",
+)
+def _remark52() -> CheckResult:
+    scheme = catmull_clark(ALPHA, BETA)
+    l = recursion_left_eigenvector(scheme, MU)
+    # l is orthogonal to (1,1,1) for MU != 1, so l.(0,1,1) = -l_O; l_O = 0 forces l = 0:
+    la, lb = sp.symbols("l_a l_b")
+    T = sp.Matrix(frequency_zero_matrix(scheme))
+    eqs = [la * T[1, 0] + lb * T[2, 0], la + lb]  # column 1 of l^T (T - MU I) with l_O = 0, and l.(1,1,1) = 0
+    only_zero = sp.solve(eqs, [la, lb], dict=True) == [{la: 0, lb: 0}]
+    dot111 = sp.factor(sum(l))
+    cc = catmull_clark()
+    comp_011 = [elliptic_component(cc, n, (0, 1, 1)) for n in (3, 4, 5)]
+    comp_01m1_n4 = elliptic_component(cc, 4, (0, 1, -1))
+    comp_111 = elliptic_component(cc, 4, (1, 1, 1))
+    steps = (
+        Step("Left eigenvector $l$ for $\\mu$ (derived)", l),
+        Step("$l\\cdot(1,1,1)$ (vanishes when $\\mu \\neq 1$ is an eigenvalue)", dot111),
+        Step("Elliptic component of $(0,1,1)$ at $n = 3, 4, 5$", sp.Matrix(comp_011)),
+        Step("Elliptic component of $(0,1,-1)$ at $n = 4$", comp_01m1_n4),
+    )
+    if not (only_zero and comp_111 == 0 and all(c != 0 for c in comp_011) and comp_01m1_n4 == 0):
+        return CheckResult(Status.ERROR, "the derivation did not go through", steps=steps)
+    return CheckResult(
+        Status.CORRECTED,
+        "(1,1,1) is the eigenvector of 1: no elliptic component; (0,1,1) has one for every n and all alpha, beta "
+        "(l.(0,1,1) = -l_O and l_O = 0 forces l = 0). But the input (h_O, abar, bbar) also receives the 2n-gon component "
+        "j = n (A^n = z_n, B^n = -z_n), i.e. (0,1,-1), which is neither case: at n = 4 it has no elliptic component",
+        correction="for input from the component j = 0 (abar = bbar) the cases are (1,1,1) (no elliptic component) and "
+        "(0,1,1) (always an elliptic component, not just generally); a general 1-ring adds (0,1,-1) from the component "
+        "j = n, so the input is (0, x, y) modulo (1,1,1), with elliptic component l_a x + l_b y over l.u",
+        counterexample="n = 4, input (0, 1, -1) (a's raised, b's lowered): elliptic component 0",
+        steps=steps,
+    )
+
+
+@claim(
+    "Section 5.2: Catmull-Clark example",
+    section="5.2",
+    title="Catmull-Clark is nicely elliptic only at n = 4",
+    statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "
+    r"does in the regular case $n = 4$.",
+)
+def _example() -> CheckResult:
+    cc = catmull_clark()
+    cond = nice_elliptic_conditions(cc)
+    joint = joint_obstruction(cc)
+    d3 = sp.N(cond.eigenvalue_defect.subs(N, 3), 30)
+    d5 = sp.N(cond.eigenvalue_defect.subs(N, 5), 30)
+    if joint.valences != (4,) or not (d3 < 0 < d5):
+        return CheckResult(Status.ERROR, f"unexpected: valences {joint.valences}, defects {d3}, {d5}")
+    return CheckResult(
+        Status.PROVED,
+        "the two conditions together hold iff ratio(lambda_1^2) = |B^1/A^1|^2, an equation in n alone; its resultant "
+        f"{sp.sstr(joint.polynomial)} has the single root c = cos(pi/n) = sqrt(2)/2 in [1/2, 1): n = 4 only. "
+        f"Condition 1 alone fails for standard weights already at n = 3 (mu - lambda_1^2 = {sp.N(d3, 6)}) and n = 5 "
+        f"({sp.N(d5, 6)})",
+        steps=(
+            Step("Condition 1 defect $\\mu - \\lambda_1^2$", cond.eigenvalue_defect),
+            Step("Condition 2 defect", cond.ratio_defect),
+            Step("Resultant whose roots contain every valence where both can hold", joint.polynomial),
+        ),
+    )

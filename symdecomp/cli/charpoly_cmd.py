@@ -1,0 +1,77 @@
+"""``symdecomp charpoly N``: the characteristic polynomial of the valence-N subdivision matrix, in closed form."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..charpoly import closed_form_characteristic_polynomial, matrix_characteristic_polynomial
+from ..schemes import catmull_clark
+from ..symbols import alpha as ALPHA
+from ..symbols import beta as BETA
+from ..symbols import lam as LAM
+from .common import add_scheme_option, print_json, valence
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "charpoly",
+        help="closed-form characteristic polynomial of the valence-N subdivision matrix, checked exactly",
+        description="Derive det(xI - S) of the (2N+1)x(2N+1) subdivision matrix in closed form (symbolic in n and "
+        "the vertex-rule weights; Section 6: S -> S', Prop. 6.3), evaluate it exactly at valence N and compare "
+        "with the characteristic polynomial of the exact rational matrix (FLINT). With --free-weights the vertex "
+        "weights alpha, beta stay symbolic (Catmull-Clark edge and face rules) and the coefficients are "
+        "polynomials in them.",
+    )
+    p.add_argument("n", type=valence, metavar="N", help="the valence (an integer >= 3)")
+    p.add_argument("--free-weights", action="store_true", help="keep the vertex-rule weights alpha, beta symbolic")
+    p.add_argument(
+        "--json",
+        action="store_true",
+        help='print {"n", "scheme", "closed_form", "zero_frequency_factor", "coefficients" (highest degree first, '
+        'exact strings), "matches_matrix"}',
+    )
+    add_scheme_option(p)
+    p.set_defaults(func=run)
+
+
+def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
+    cf = closed_form_characteristic_polynomial(scheme)
+    if not free:
+        poly = cf.at(n)
+        matches = poly == matrix_characteristic_polynomial(scheme, n)
+        return [sp.Rational(int(c.p), int(c.q)) for c in reversed(poly.coeffs())], matches
+    # affine in (alpha, beta): interpolate from three exact evaluations, each checked against the matrix
+    points = [(0, 0), (1, 0), (0, 1)]
+    polys, matches = [], True
+    for a, b in points:
+        values = {ALPHA: a, BETA: b}
+        poly = cf.at(n, values)
+        matches &= poly == matrix_characteristic_polynomial(scheme, n, values)
+        polys.append([sp.Rational(int(c.p), int(c.q)) for c in reversed(poly.coeffs())])
+    p0, pa, pb = polys
+    return [sp.expand(c0 + ALPHA * (ca - c0) + BETA * (cb - c0)) for c0, ca, cb in zip(p0, pa, pb)], matches
+
+
+def run(args) -> int:
+    scheme = catmull_clark(ALPHA, BETA) if args.free_weights else args.scheme
+    cf = closed_form_characteristic_polynomial(scheme)
+    coefficients, matches = _coefficients(scheme, args.n, args.free_weights)
+    if args.json:
+        print_json(
+            {
+                "n": args.n,
+                "scheme": scheme.name,
+                "closed_form": str(cf.expression),
+                "zero_frequency_factor": str(cf.zero_frequency_factor),
+                "coefficients": [str(c) for c in coefficients],
+                "matches_matrix": bool(matches),
+            }
+        )
+        return 0 if matches else 1
+    print(f"{scheme.name}: det(x I - S), S of size {2 * args.n + 1}, x written as {LAM}")
+    print(f"closed form (all n): {cf.expression}")
+    print(f"the vertex weights enter only: {cf.zero_frequency_factor}")
+    poly = sp.Add(*[c * LAM ** (len(coefficients) - 1 - i) for i, c in enumerate(coefficients)])
+    print(f"at n = {args.n}: {poly}")
+    print(f"equals the characteristic polynomial of the exact matrix: {'yes' if matches else 'NO'}")
+    return 0 if matches else 1

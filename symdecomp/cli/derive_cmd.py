@@ -1,0 +1,82 @@
+"""``symdecomp derive``: regenerate the LaTeX derivations of the paper's claims."""
+
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+
+from ..claims import Status, all_claims, check_claim
+from ..errors import SymdecompError
+from ..latex import aslatex, derivation_files
+from .common import print_json, progress
+
+__all__ = ["register", "run", "write_derivations"]
+
+#: Files this command owns in the output directory (stale ones are removed on regeneration).
+OWNED = re.compile(r"^(main|section-[0-9-]+)\.tex$")
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "derive",
+        help="write the derivations of the paper's claims as LaTeX (main.tex + one file per section)",
+        description="Check every registered claim and write its statement, status, evidence and "
+        "derivation (formulas printed by sympy) as LaTeX: one section-<N>.tex file per section of the "
+        "paper and a main.tex that inputs them after a summary table. The output is deterministic; "
+        "compile it with `latexmk -pdf main.tex` (or pdflatex, twice). Files of earlier runs that no "
+        "longer correspond to a section are removed; other files in the directory are left alone. "
+        "Exit status 1 if a check failed to run (status 'error'; the files are written all the same).",
+    )
+    p.add_argument("--out", type=Path, default=Path("derivations"), help="output directory (default: derivations/)")
+    p.add_argument("--json", action="store_true", help="print a JSON list of the files written")
+    p.add_argument(
+        "--label",
+        action="append",
+        help="print the LaTeX of this claim (repeatable) to stdout instead of writing files, "
+        "e.g. --label 'Eq. 43' (to paste into a paper; needs the preamble of main.tex)",
+    )
+    p.add_argument("--no-progress", action="store_true", help="do not draw a progress bar on stderr")
+    p.set_defaults(func=run)
+
+
+def write_derivations(out: Path, *, show_progress: bool = False) -> list[Path]:
+    """Check every claim and write the derivation files to ``out``; return their paths."""
+    claims = all_claims()
+    pairs = [(c, check_claim(c.label)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
+    return _write(out, derivation_files(pairs))
+
+
+def _write(out: Path, files: dict[str, str]) -> list[Path]:
+    out.mkdir(parents=True, exist_ok=True)
+    for stale in sorted(out.iterdir()):
+        if OWNED.match(stale.name) and stale.name not in files and stale.is_file():
+            stale.unlink()
+    written = []
+    for name, text in files.items():
+        path = out / name
+        with open(path, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
+        written.append(path)
+    return written
+
+
+def run(args) -> int:
+    if args.label:
+        known = {c.label: c for c in all_claims()}
+        unknown = [label for label in args.label if label not in known]
+        if unknown:
+            raise SymdecompError(f"no claim labelled {', '.join(unknown)}; known: {', '.join(known)}")
+        print("\n".join(aslatex(known[label]) for label in args.label), end="")
+        return 1 if any(check_claim(label).status is Status.ERROR for label in args.label) else 0
+    written = write_derivations(args.out, show_progress=not args.no_progress and not args.json)
+    if args.json:
+        print_json([str(p) for p in written])
+    else:
+        for path in written:
+            print(path)
+        print(f"compile with: cd {args.out} && latexmk -pdf main.tex", file=sys.stderr)
+    failed = [c.label for c in all_claims() if check_claim(c.label).status is Status.ERROR]
+    if failed:
+        print(f"symdecomp: the checks of {', '.join(failed)} failed to run (status error)", file=sys.stderr)
+    return 1 if failed else 0

@@ -1,0 +1,184 @@
+// Bridge from symdecomp to OpenSubdiv: uniform Catmull-Clark refinement of a quad mesh in
+// double precision, reading back a vertex and its ordered 1-ring at every level.
+//
+// Built as a shared library by symdecomp/opensubdiv/build.py (g++, -losdCPU) and called from
+// Python through ctypes (symdecomp/opensubdiv/__init__.py). Nothing here knows about the
+// paper: it only drives Far::TopologyRefiner and Far::PrimvarRefinerReal<double>.
+
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <vector>
+
+using namespace OpenSubdiv;
+
+namespace {
+
+struct Point {
+    double p[3];
+    void Clear(void * = nullptr) { p[0] = p[1] = p[2] = 0.0; }
+    void AddWithWeight(Point const &src, double w) {
+        p[0] += w * src.p[0];
+        p[1] += w * src.p[1];
+        p[2] += w * src.p[2];
+    }
+};
+
+void set_error(char *error, int error_len, const char *message) {
+    if (error && error_len > 0) {
+        std::snprintf(error, static_cast<size_t>(error_len), "%s", message);
+    }
+}
+
+// OpenSubdiv reports errors through a callback (by default it prints them); keep the last one.
+char last_osd_error[512];
+bool osd_failed = false;
+
+void record_error(Far::ErrorType, const char *message) {
+    osd_failed = true;
+    std::snprintf(last_osd_error, sizeof(last_osd_error), "OpenSubdiv: %s", message);
+}
+
+bool face_has(Far::TopologyLevel const &level, Far::Index f, Far::Index v) {
+    Far::ConstIndexArray fv = level.GetFaceVertices(f);
+    for (int k = 0; k < fv.size(); ++k) {
+        if (fv[k] == v) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+extern "C" {
+
+// Version of this bridge's C interface (bumped when the signature changes).
+int symdecomp_osd_bridge_version() { return 1; }
+
+// Refine the quad mesh `levels` times with OpenSubdiv's Catmull-Clark scheme and write, for
+// every level 0..levels, the points (O, a_0..a_{n-1}, b_0..b_{n-1}) of the 1-ring of `center`
+// into rings_out ((levels+1) * (2n+1) * 3 doubles). ring_a[i] is the edge neighbour a_i and
+// ring_faces[i] the face (O, a_i, b_i, a_{i+1}) of the base mesh. limit_out receives the limit
+// position of the central vertex computed by OpenSubdiv's limit mask from the last level
+// (3 doubles). Returns 0 on success, nonzero (with a message in `error`) on failure.
+int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_vertices,
+                              const double *positions, int center, int n, const int *ring_a,
+                              const int *ring_faces, int levels, double *rings_out,
+                              double *limit_out, char *error, int error_len) {
+    try {
+        osd_failed = false;
+        Far::SetErrorCallback(record_error);
+        if (n_vertices <= 0 || n_faces <= 0 || n < 3 || levels < 0) {
+            set_error(error, error_len, "bad sizes");
+            return 1;
+        }
+        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), 4);
+        Far::TopologyDescriptor desc;
+        desc.numVertices = n_vertices;
+        desc.numFaces = n_faces;
+        desc.numVertsPerFace = verts_per_face.data();
+        desc.vertIndicesPerFace = face_vertices;
+
+        Sdc::Options sdc;
+        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+        std::unique_ptr<Far::TopologyRefiner> refiner(
+            Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+        if (!refiner || osd_failed) {
+            set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
+            return 2;
+        }
+        Far::TopologyRefiner::UniformOptions uniform(levels);
+        uniform.fullTopologyInLastLevel = true;  // the limit mask needs the last level's full topology
+        refiner->RefineUniform(uniform);
+
+        std::vector<Point> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+        for (int v = 0; v < n_vertices; ++v) {
+            for (int c = 0; c < 3; ++c) buffer[v].p[c] = positions[3 * v + c];
+        }
+        std::vector<Point *> level_start(static_cast<size_t>(levels) + 1);
+        Point *src = buffer.data();
+        level_start[0] = src;
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        for (int level = 1; level <= levels; ++level) {
+            Point *dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+            primvar.Interpolate(level, src, dst);
+            src = dst;
+            level_start[level] = dst;
+        }
+
+        std::vector<int> a(ring_a, ring_a + n), faces(ring_faces, ring_faces + n);
+        int o = center;
+        const int stride = 3 * (2 * n + 1);
+        for (int level = 0; level <= levels; ++level) {
+            Far::TopologyLevel const &topo = refiner->GetLevel(level);
+            Point const *pts = level_start[level];
+            double *out = rings_out + static_cast<size_t>(level) * stride;
+            for (int i = 0; i < n; ++i) {
+                Far::ConstIndexArray fv = topo.GetFaceVertices(faces[i]);
+                int k = -1;
+                for (int m = 0; m < fv.size(); ++m) {
+                    if (fv[m] == o) k = m;
+                }
+                if (fv.size() != 4 || k < 0 || fv[(k + 1) % 4] != a[i] || fv[(k + 3) % 4] != a[(i + 1) % n]) {
+                    set_error(error, error_len, "1-ring face is not (O, a_i, b_i, a_{i+1}) in order");
+                    return 3;
+                }
+                int b = fv[(k + 2) % 4];
+                for (int c = 0; c < 3; ++c) {
+                    out[3 * (1 + i) + c] = pts[a[i]].p[c];
+                    out[3 * (1 + n + i) + c] = pts[b].p[c];
+                }
+            }
+            for (int c = 0; c < 3; ++c) out[c] = pts[o].p[c];
+            if (level == levels) break;
+            // Follow the 1-ring to the next level: O -> its vertex point, a_i -> the edge point of
+            // (O, a_i), face i -> its child face at the corner O.
+            int o_next = topo.GetVertexChildVertex(o);
+            Far::TopologyLevel const &child = refiner->GetLevel(level + 1);
+            std::vector<int> a_next(n), faces_next(n);
+            for (int i = 0; i < n; ++i) {
+                Far::Index e = topo.FindEdge(o, a[i]);
+                if (e < 0) {
+                    set_error(error, error_len, "a_i is not an edge neighbour of O");
+                    return 4;
+                }
+                a_next[i] = topo.GetEdgeChildVertex(e);
+                Far::ConstIndexArray kids = topo.GetFaceChildFaces(faces[i]);
+                faces_next[i] = -1;
+                for (int m = 0; m < kids.size(); ++m) {
+                    if (face_has(child, kids[m], o_next)) faces_next[i] = kids[m];
+                }
+                if (faces_next[i] < 0) {
+                    set_error(error, error_len, "no child face at the central vertex");
+                    return 5;
+                }
+            }
+            o = o_next;
+            a = a_next;
+            faces = faces_next;
+        }
+
+        std::vector<Point> limit(static_cast<size_t>(refiner->GetLevel(levels).GetNumVertices()));
+        Point *limit_dst = limit.data();
+        primvar.Limit(level_start[levels], limit_dst);
+        if (osd_failed) {
+            set_error(error, error_len, last_osd_error);
+            return 6;
+        }
+        for (int c = 0; c < 3; ++c) limit_out[c] = limit[o].p[c];
+        return 0;
+    } catch (std::exception const &exc) {
+        set_error(error, error_len, exc.what());
+        return 9;
+    } catch (...) {
+        set_error(error, error_len, "unknown C++ exception");
+        return 9;
+    }
+}
+
+}  // extern "C"

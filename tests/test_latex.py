@@ -1,0 +1,347 @@
+"""The LaTeX output: aslatex, line breaking, the document, its drift and its compilation."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from latex_cases import long_product, long_sum, stress_pairs
+from symdecomp.claims import CheckResult, Status, Step
+from symdecomp.cli import main
+from symdecomp.cli.derive_cmd import write_derivations
+from symdecomp.latex import aslatex, derivation_files, display_math, section_file_name, text_latex
+from symdecomp.symbols import alpha, n, omega
+from symdecomp.texlayout import LINE_WIDTH_EM, break_pieces, estimate_width
+
+COMMITTED = Path(__file__).resolve().parents[1] / "derivations"
+PDFLATEX = shutil.which("pdflatex")
+LATEXMK = shutil.which("latexmk")
+needs_tex = pytest.mark.skipif(PDFLATEX is None, reason="no pdflatex (CI installs it in .ci/steps/20-latex.sh)")
+#: Overfull boxes up to this width (pt) are tolerated; anything wider runs visibly into the margin.
+OVERFULL_TOLERANCE_PT = 2.0
+
+x, y = sp.symbols("x y")
+
+
+# -- aslatex ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "expr",
+    [sp.Rational(3, 8) + alpha, omega**2 / n, sp.sqrt(5 * n**2 - 30 * n + 49), sp.Matrix([[1, x], [y, 2]]),
+     sp.Piecewise((x, x > 0), (-x, True)), 1 + 2 * sp.I, sp.Abs(x)],
+)
+def test_sympy_objects_are_printed_by_sympy(expr):
+    assert aslatex(expr) == sp.latex(expr)
+
+
+def test_mapping_is_an_aligned_block():
+    assert aslatex({x: sp.Rational(1, 2), y: sp.sqrt(2)}) == "\\begin{aligned}\nx &= \\frac{1}{2} \\\\\ny &= \\sqrt{2}\n\\end{aligned}"
+
+
+def test_a_mapping_that_does_not_name_its_values_maps_them_in_sorted_order():
+    eigenvalues = {sp.Integer(5): 1, sp.Integer(2): 2}  # eigenvalue -> multiplicity
+    assert aslatex(eigenvalues) == "\\begin{aligned}\n2 &\\mapsto 2 \\\\\n5 &\\mapsto 1\n\\end{aligned}"
+    assert "2 = 2" not in display_math(eigenvalues)
+
+
+def test_unknown_objects_are_refused():
+    with pytest.raises(TypeError, match="object"):
+        aslatex(object())
+
+
+def test_text_is_escaped_and_inline_math_kept():
+    assert text_latex("a_i & b_i: 50% #1 ~ ^ {x} \\ $\\omega_n^j$") == (
+        r"a\_\allowbreak{}i \& b\_\allowbreak{}i: 50\% \#1 \textasciitilde{} \textasciicircum{} \{x\} "
+        r"\textbackslash{} $\omega_n^j$"
+    )
+    # & is a cell separator inside an environment, a character elsewhere
+    assert text_latex("$\\begin{pmatrix} a & b \\end{pmatrix}$, $a & b$") == (
+        "$\\begin{pmatrix} a & b \\end{pmatrix}$, $a \\& b$"
+    )
+    assert text_latex("as $$x_1$$ shows") == "as \n\\[\n\\fitwidth{x_1}\n\\]\n shows"
+    assert text_latex("costs $5") == r"costs \$5"
+    assert text_latex("as in Eq. 5, cf. Prop. 2.1. Then") == r"as in Eq.~5, cf.~Prop.~2.1. Then"
+    assert text_latex("ω ≤ 1 — ok") == r"$\omega$ $\leq$ 1 --- ok"
+    # a comment character inside inline math would swallow the rest of the line
+    assert text_latex("$50% x$") == r"$50\% x$"
+
+
+def test_a_long_inline_formula_becomes_a_display():
+    wide = sp.latex(sp.expand((x + y + 1) ** 4))
+    assert "\\[" in text_latex(f"see ${wide}$ here")
+    assert "\\[" not in text_latex(f"see ${wide}$ here", displays=False)
+
+
+# -- line breaking -----------------------------------------------------------------------
+
+
+def _lines_of(block: str) -> list[str]:
+    body = re.sub(r"\\(begin|end)\{multline\*\}|\\\[|\\\]", "", block).strip()
+    return [line.strip() for line in body.split("\\\\")]
+
+
+def test_a_long_sum_is_broken_into_lines_that_fit_and_read_as_sympys_formula():
+    expr = long_sum()
+    assert estimate_width(sp.latex(expr)) > 5 * LINE_WIDTH_EM
+    block = display_math(expr, lhs=sp.Symbol("S"))
+    assert block.startswith("\\begin{multline*}")
+    lines = _lines_of(block)
+    assert len(lines) >= 5
+    assert all(estimate_width(line) <= LINE_WIDTH_EM for line in lines)
+    assert "\\fitwidth" not in block
+    # nothing lost or reordered: the lines put together are sympy's printing of S = expr
+    joined = " ".join(line.removeprefix("{} ") for line in lines)
+    assert re.sub(r"\s+", "", joined) == re.sub(r"\s+", "", "S = " + sp.latex(expr))
+
+
+def test_pieces_of_a_sum_concatenate_to_sympys_printing():
+    expr = sum(sp.Rational(k, k + 1) * omega**k for k in range(1, 60))
+    pieces = break_pieces(expr, budget=20)
+    assert len(pieces) > 10
+    assert "".join(p.tex for p in pieces) == sp.latex(expr)
+
+
+def test_a_long_product_over_a_long_denominator_breaks_inside_its_factors():
+    block = display_math(long_product(), lhs=sp.Symbol("P"))
+    lines = _lines_of(block)
+    assert len(lines) >= 3 and "\\fitwidth" not in block
+    assert all(estimate_width(line) <= LINE_WIDTH_EM for line in lines)
+    assert lines[0].startswith("P = \\frac{1}{")  # the long fraction N/D is set as (1/D) N
+
+
+@pytest.mark.parametrize("wrap", [sp.sqrt, sp.cos, sp.exp, sp.Abs, lambda e: 1 / e, lambda e: e**3])
+def test_a_function_or_power_of_a_long_sum_breaks_inside_its_argument(wrap):
+    block = display_math(wrap(long_sum()), lhs=sp.Symbol("F"))
+    lines = _lines_of(block)
+    assert len(lines) >= 5 and "\\fitwidth" not in block
+    assert all(estimate_width(line) <= LINE_WIDTH_EM for line in lines)
+
+
+def test_a_formula_too_wide_to_shrink_legibly_is_replaced_by_a_notice():
+    monster = sp.Piecewise((sp.expand(long_sum() * (x + y + 3)), x > 0), (0, True))  # cases cannot break
+    block = display_math(monster)
+    assert "not printed: split it into smaller steps" in block and "\\fitwidth" not in block
+
+
+def test_an_object_sympy_cannot_print_is_reported_in_the_document():
+    step = Step("a power of a Piecewise", sp.Pow(sp.Piecewise((x, x > 0), (y, True)), 2, evaluate=False))
+    assert "\\finding{sderror}{Not printed}" in aslatex(step)
+
+
+def test_a_wide_matrix_has_its_long_entries_named_and_listed():
+    wide = sp.Matrix(3, 3, lambda r, c: sp.expand((omega ** (r - c) + alpha + r) ** 2 / (r + c + 2)))
+    block = display_math(wide, lhs=sp.Symbol("W"))
+    assert "where" in block and "\\fitwidth" not in block
+    head = block.split("where")[0]
+    assert estimate_width(head.split("\\[")[1].split("\\]")[0]) <= LINE_WIDTH_EM
+    for name in re.findall(r"m_\{(\d\d)\}", head):
+        r, c = int(name[0]) - 1, int(name[1]) - 1
+        assert sp.latex(wide[r, c]) in block.split("where")[1]
+
+
+def test_a_matrix_of_many_short_columns_is_shrunk_only_as_a_last_resort():
+    small = sp.Matrix(9, 9, lambda r, c: sp.Rational(r + 1, c + 3))
+    assert "\\fitwidth" not in display_math(small, lhs="S")
+    many = sp.Matrix(4, 40, lambda r, c: sp.Rational(r + 1, c + 3))
+    assert "\\fitwidth" in display_math(many, lhs="S")
+
+
+# -- claims as LaTeX -----------------------------------------------------------------------
+
+
+def test_a_refuted_claim_is_boxed_with_its_counterexample():
+    result = CheckResult(Status.REFUTED, "ratio is 0/0", counterexample="at $n = 4$, j_2 & 100%")
+    tex = aslatex(result)
+    assert tex.startswith("\\finding{sdrefuted}")
+    assert r"at $n = 4$, j\_\allowbreak{}2 \& 100\%" in tex
+
+
+def test_a_corrected_claim_shows_the_correction_and_steps_print_via_sympy():
+    step = Step("the row sums to", 1 + (n - 1) * (alpha + alpha), sp.Symbol("s"))
+    result = CheckResult(Status.CORRECTED, "not affine", steps=(step,), correction="centre $1 - n\\alpha$")
+    tex = aslatex(result)
+    assert "\\finding{sdcorrected}" in tex and "centre $1 - n\\alpha$" in tex
+    assert "s = " + sp.latex(step.expr) in tex
+
+
+def test_status_and_scope_of_a_verified_claim():
+    tex = aslatex(CheckResult(Status.VERIFIED, "exact", valences=(3, 64)))
+    assert "\\status{verified}" in tex and "$n = 3, \\dots, 64$" in tex
+
+
+def test_the_document_mirrors_the_papers_sections_and_is_deterministic():
+    pairs = stress_pairs()
+    files = derivation_files(pairs)
+    assert files == derivation_files(list(reversed(pairs)))
+    assert list(files) == sorted(files)
+    assert set(files) == {"main.tex"} | {section_file_name(s) for s in ("2", "4", "5.1", "5.2", "6")}
+    main_tex = files["main.tex"]
+    # the summary comes first, then the sections in the paper's order
+    order = [main_tex.index(s) for s in ("Summary of the claims", "\\input{section-2}", "\\input{section-4}",
+                                         "Evolution of the eigencomponents", "\\input{section-5-1}",
+                                         "\\input{section-5-2}", "\\input{section-6}")]
+    assert order == sorted(order)
+    assert "\\subsection{Tangent plane properties}" in files["section-5-1.tex"]
+    assert "\\setcounter{section}{3}\n\\section{1-ring decomposition" in files["section-4.tex"]
+    assert "\\claimheading{claim:proposition-5-9}{Proposition~5.9}" in files["section-5-1.tex"]
+
+
+def test_the_bytes_do_not_depend_on_the_hash_seed(tmp_path):
+    """Printing order comes from sympy's sort keys, not from set or dict iteration order."""
+    script = (
+        "import hashlib, sys; sys.path.insert(0, 'tests'); from latex_cases import stress_pairs; "
+        "from symdecomp.latex import derivation_files; "
+        "print(hashlib.sha256(repr(sorted(derivation_files(stress_pairs()).items())).encode()).hexdigest())"
+    )
+    root = Path(__file__).resolve().parents[1]
+    digests = {
+        subprocess.run([sys.executable, "-c", script], cwd=root, capture_output=True, text=True, check=True,
+                       env={**os.environ, "PYTHONHASHSEED": seed}).stdout
+        for seed in ("1", "2")
+    }
+    assert len(digests) == 1
+
+
+# -- the command and the committed files ------------------------------------------------------
+
+
+def _differences(expected: Path, actual: Path) -> list[str]:
+    """Files that differ between two directories of .tex files (missing, extra or changed)."""
+    a = {p.name: p.read_bytes() for p in expected.glob("*.tex")}
+    b = {p.name: p.read_bytes() for p in actual.glob("*.tex")}
+    return sorted(name for name in a.keys() | b.keys() if a.get(name) != b.get(name))
+
+
+def test_derive_writes_the_files_and_removes_only_its_own_stale_ones(tmp_path, capsys):
+    (tmp_path / "section-9.tex").write_text("stale")
+    (tmp_path / "notes.tex").write_text("mine")
+    assert main(["derive", "--out", str(tmp_path), "--json"]) == 0
+    assert not (tmp_path / "section-9.tex").exists()
+    assert (tmp_path / "notes.tex").read_text() == "mine"
+    assert (tmp_path / "main.tex").read_text().startswith("% Generated by `symdecomp derive`")
+    assert '"' in capsys.readouterr().out
+
+
+@pytest.fixture
+def temporary_claims(monkeypatch):
+    """Two claims registered for one test: a refuted one in 5.3 and one whose check crashes."""
+    from symdecomp.claims import REGISTRY, Claim
+
+    def refuted():
+        return CheckResult(Status.REFUTED, "0/0 at $j = n/2$", counterexample="n = 4, j = 2",
+                           steps=(Step("the determinant", sp.Matrix([[1, omega], [omega, 1]]).det(), "D"),))
+
+    def crashes():
+        raise ZeroDivisionError("division by zero")
+
+    # labels no real claim uses, so the cached results of the real checks stay valid
+    monkeypatch.setitem(REGISTRY, "Eq. 998", Claim("Eq. 998", "5.3", "A refuted one", "as printed", refuted, order=998))
+    monkeypatch.setitem(REGISTRY, "Eq. 999", Claim("Eq. 999", "5.3", "A crashing one", "as printed", crashes, order=999))
+    yield
+
+
+def test_derive_prints_one_claim_and_reports_failed_checks(temporary_claims, tmp_path, capsys):
+    assert main(["derive", "--label", "Eq. 998"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("\\claimheading{claim:eq-998}{Eq.~998}{A refuted one}")
+    assert "\\finding{sdrefuted}" in out and "D = " + sp.latex(1 - omega**2) in out
+    assert main(["derive", "--label", "Eq. 1000"]) == 2
+    assert "no claim labelled Eq. 1000" in capsys.readouterr().err
+    assert main(["derive", "--out", str(tmp_path), "--no-progress"]) == 1  # Eq. 999 did not run
+    assert "Eq. 999" in capsys.readouterr().err
+    section = (tmp_path / "section-5-3.tex").read_text()
+    assert "\\subsection{Hyperbolic properties}" in section and "\\finding{sderror}" in section
+    assert "\\section{Evolution of the eigencomponents}" in (tmp_path / "main.tex").read_text()
+
+
+def test_committed_derivations_match_the_registry(tmp_path):
+    """Drift: regenerating gives the committed bytes (run `symdecomp derive` after changing a check)."""
+    write_derivations(tmp_path)
+    again = tmp_path / "again"
+    write_derivations(again)
+    assert _differences(tmp_path, again) == []
+    assert _differences(COMMITTED, tmp_path) == [], "derivations/ is stale: run `python -m symdecomp derive`"
+
+
+def test_the_drift_check_catches_a_hand_edit(tmp_path):
+    edited = tmp_path / "edited"
+    shutil.copytree(COMMITTED, edited)
+    target = edited / "main.tex"
+    target.write_text(target.read_text() + "% a hand edit\n")
+    assert _differences(COMMITTED, edited) == ["main.tex"]
+
+
+# -- compiling ------------------------------------------------------------------------------------
+
+
+def _compile(directory: Path) -> str:
+    """Compile main.tex as a user would (latexmk -pdf, else pdflatex twice); return the log.
+
+    Fails on a LaTeX error."""
+    flags = ["-interaction=nonstopmode", "-halt-on-error"]
+    runs = [[LATEXMK, "-pdf", *flags, "main.tex"]] if LATEXMK else [[PDFLATEX, *flags, "main.tex"]] * 2
+    for command in runs:
+        run = subprocess.run(command, cwd=directory, capture_output=True, text=True, timeout=300)
+        log = (directory / "main.log").read_text(errors="replace")
+        assert run.returncode == 0, "LaTeX error:\n" + "\n".join(re.findall(r"^!.*(?:\n.*){0,3}", log, re.M))
+    return log
+
+
+def _overfull(log: str) -> list[str]:
+    return [m.group(0) for m in re.finditer(r"Overfull \\hbox \((\d+(?:\.\d+)?)pt too wide\).*", log)
+            if float(m.group(1)) > OVERFULL_TOLERANCE_PT]
+
+
+@needs_tex
+def test_the_stress_document_compiles_and_nothing_runs_past_the_margin(tmp_path):
+    for name, text in derivation_files(stress_pairs()).items():
+        (tmp_path / name).write_text(text, encoding="utf-8")
+    log = _compile(tmp_path)
+    assert _overfull(log) == []
+    warnings = " ".join(re.findall(r"LaTeX Warning:.*", log))
+    assert "undefined" not in warnings and "multiply defined" not in warnings
+    assert (tmp_path / "main.pdf").stat().st_size > 0
+
+
+@needs_tex
+def test_the_derivations_of_the_registry_compile(tmp_path):
+    write_derivations(tmp_path)
+    log = _compile(tmp_path)
+    assert _overfull(log) == []
+
+
+@needs_tex
+def test_the_width_estimate_is_never_below_what_tex_sets(tmp_path):
+    from latex_cases import stress_formulas
+
+    texs = [sp.latex(e) for e in stress_formulas()]
+    lines = [r"\documentclass[11pt]{article}\usepackage{amsmath,amssymb}\renewcommand{\arraystretch}{1.3}\begin{document}"]
+    lines += [r"\sbox0{$\displaystyle %s$}\typeout{WIDTH %d:\the\wd0}" % (t, i) for i, t in enumerate(texs)]
+    lines += [r"\typeout{QUAD:\the\fontdimen6\font}\end{document}"]
+    (tmp_path / "main.tex").write_text("\n".join(lines))
+    subprocess.run([PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", "main.tex"], cwd=tmp_path,
+                   capture_output=True, timeout=300, check=True)
+    log = (tmp_path / "main.log").read_text()
+    em = float(re.search(r"QUAD:([\d.]+)pt", log).group(1))
+    measured = {int(i): float(w) / em for i, w in re.findall(r"WIDTH (\d+):([\d.]+)pt", log)}
+    assert len(measured) == len(texs)
+    too_low = [(texs[i], estimate_width(texs[i]), real) for i, real in measured.items() if estimate_width(texs[i]) < real]
+    assert too_low == []
+
+
+@needs_tex
+def test_the_overfull_check_sees_a_formula_that_runs_into_the_margin(tmp_path):
+    """The compile tests can fail: an unbroken long sum is reported."""
+    unbroken = "\\[\n" + sp.latex(long_sum()) + "\n\\]\n"
+    (tmp_path / "main.tex").write_text(
+        derivation_files([])["main.tex"].replace("\\end{document}", unbroken + "\\end{document}")
+    )
+    assert len(_overfull(_compile(tmp_path))) == 1

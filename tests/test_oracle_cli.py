@@ -1,0 +1,22 @@
+"""The oracle command without OpenSubdiv: a clear message and exit status 3, no traceback."""
+
+import pytest
+
+import symdecomp.opensubdiv as osd
+from symdecomp.cli import main
+
+
+def test_oracle_without_the_bridge(monkeypatch, capsys):
+    def unavailable(build=True):
+        raise osd.BridgeUnavailableError("OpenSubdiv bridge unavailable: the OpenSubdiv headers are not installed")
+
+    monkeypatch.setattr(osd, "load_bridge", unavailable)
+    assert main(["oracle", "--n", "4"]) == 3
+    assert "OpenSubdiv" in capsys.readouterr().err
+
+
+def test_oracle_rejects_bad_arguments(capsys):
+    with pytest.raises(SystemExit):
+        main(["oracle", "--n", "2:5"])
+    assert "valence" in capsys.readouterr().err
+    assert main(["oracle", "--n", "4", "--levels", "1"]) == 2

@@ -23,7 +23,7 @@ def _random_polygon(n: int, seed: int) -> sp.Matrix:
 @claim(
     "Eq. 2-4",
     section="2",
-    title="The rows of F_n are regular planar polygons",
+    title="The rows of $F_n$ are regular planar polygons",
     statement="The rows $v_0, \\dots, v_{n-1}$ of $F_n$ (Eq. 2), $\\omega_n = e^{2\\pi i/n}$ (Eq. 3), are regular planar $n$-gons.",
 )
 def _eq2_4() -> CheckResult:

@@ -86,7 +86,7 @@ EQ21 = ShiftStencil(R(1, 4), sp.Integer(0), R(3, 4))
 @claim(
     "Eq. 10-11",
     section="4",
-    title="The 1-ring as a 2n-gon and its decomposition",
+    title="The 1-ring as a $2n$-gon and its decomposition",
     statement="The 1-ring is the $2n$-gon $P = (a_0, b_0, \\dots, a_{n-1}, b_{n-1})$ (Eq. 10), a sum of $2n$ regular "
     "planar $2n$-gons $z_j v_j$ (Eq. 11).",
 )
@@ -113,7 +113,7 @@ def _eq10_11() -> CheckResult:
 @claim(
     "Eq. 12-13",
     section="4",
-    title="A^j and B^j are regular n-gons",
+    title="$A^j$ and $B^j$ are regular $n$-gons",
     statement="If $z_j v_j = (a_0^j, b_0^j, \\dots, a_{n-1}^j, b_{n-1}^j)$ is a component of Eq. 11, then "
     "$A^j = (a_i^j)$ and $B^j = (b_i^j)$ are planar regular $n$-gons.",
 )
@@ -230,7 +230,7 @@ def _eq17_21() -> CheckResult:
 @claim(
     "Proposition 4.1",
     section="4",
-    title="A^j, B^j stay planar on parallel planes",
+    title="$A^j$, $B^j$ stay planar on parallel planes",
     statement="$A^j$ and $B^j$ remain planar polygons on parallel planes throughout the subdivision process, "
     "$j = 0, \\dots, 2n-1$.",
 )
@@ -263,7 +263,7 @@ def _prop41() -> CheckResult:
 @claim(
     "Proposition 4.2",
     section="4",
-    title="A^j and A^{2n-j} stay coplanar",
+    title="$A^j$ and $A^{2n-j}$ stay coplanar",
     statement="$A^j$ and $A^{2n-j}$ remain coplanar throughout the subdivision process.",
 )
 def _prop42() -> CheckResult:
@@ -291,7 +291,7 @@ def _prop42() -> CheckResult:
 @claim(
     "Proposition 4.3",
     section="4",
-    title="O and the centres of A^j, B^j stay collinear",
+    title="$O$ and the centres of $A^j$, $B^j$ stay collinear",
     statement="The vertex $O$ and the centres of the polygons $A^j, B^j$ remain collinear throughout the subdivision process.",
 )
 def _prop43() -> CheckResult:
@@ -314,7 +314,7 @@ def _prop43() -> CheckResult:
 @claim(
     "Eq. 24",
     section="4",
-    title="B^j = omega_2n^j A^j",
+    title="$B^j = \\omega_{2n}^j A^j$",
     statement="$B^j = \\omega_{2n}^j A^j$, $j = 1, \\dots, n-1$.",
 )
 def _eq24() -> CheckResult:

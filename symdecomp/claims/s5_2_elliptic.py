@@ -29,7 +29,7 @@ from . import CheckResult, Status, Step, claim, is_zero
 @claim(
     "Eq. 40",
     section="5.2",
-    title="Axes of the ellipse E_a",
+    title="Axes of the ellipse $E_a$",
     statement=r"$A^1 + A^{2n-1}$ is inscribed on an ellipse with axes "
     r"$l_1 = |w_1| + |w_{2n-1}|$, $l_2 = \bigl||w_1| - |w_{2n-1}|\bigr|$.",
 )
@@ -74,7 +74,7 @@ def _eq40() -> CheckResult:
 @claim(
     "Eq. 41",
     section="5.2",
-    title="Initially E_a = E_b",
+    title="Initially $E_a = E_b$",
     statement=r"$A^1 = w_1 \vec{v_1}$, $A^{2n-1} = w_{2n-1}\vec{v_{n-1}}$; initially $E_a = E_b$, the ellipse of the "
     r"2n-gonal regular convex component of Eq. 11.",
 )
@@ -101,7 +101,7 @@ def _eq41() -> CheckResult:
 @claim(
     "Proposition 5.2",
     section="5.2",
-    title="The components A^j, B^j are not rotated",
+    title="The components $A^j$, $B^j$ are not rotated",
     statement=r"At each subdivision step $A^j \rightarrow r_A^j A^j$ and $B^j \rightarrow r_B^j B^j$ with "
     r"$r_A^j, r_B^j \in \mathbf{R}$.",
 )
@@ -149,7 +149,7 @@ def _eq42() -> CheckResult:
 @claim(
     "Eq. 43",
     section="5.2",
-    title="The recursion matrix for O, A^0, B^0",
+    title="The recursion matrix for $O$, $A^0$, $B^0$",
     statement=r"$\begin{pmatrix}1-\alpha-\beta & \alpha & \beta\\ 3/8 & 1/2 & 1/8\\ 1/4 & 1/2 & 1/4\end{pmatrix}$ "
     r"with $\alpha, \beta$ as in Eq. 16.",
 )
@@ -224,7 +224,7 @@ def _eq44() -> CheckResult:
 @claim(
     "Eq. 45",
     section="5.2",
-    title="The regular case n = 4",
+    title="The regular case $n = 4$",
     statement=r"For $n=4$ the matrix of Eq. 43 is $\begin{pmatrix}9/16&3/8&1/16\\3/8&1/2&1/8\\1/4&1/2&1/4\end{pmatrix}$ "
     r"with subdominant eigenvalue $1/4$, eigenvector $(-2,1,4)^T$, $d_b/d_a = 2$, scale ratio $\sqrt2$.",
 )
@@ -312,7 +312,7 @@ def _remark52() -> CheckResult:
 @claim(
     "Section 5.2: Catmull-Clark example",
     section="5.2",
-    title="Catmull-Clark is nicely elliptic only at n = 4",
+    title="Catmull-Clark is nicely elliptic only at $n = 4$",
     statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "
     r"does in the regular case $n = 4$.",
 )

@@ -85,15 +85,16 @@ def frequency_zero_eigenvalues(scheme: Scheme) -> tuple[sp.Expr, ...]:
     """
     charpoly = (frequency_zero_matrix(scheme).charpoly(LAM)).as_expr()
     quotient, remainder = sp.div(sp.Poly(charpoly, LAM), sp.Poly(LAM - 1, LAM))
-    if sp.simplify(remainder.as_expr()) != 0:  # pragma: no cover - affinity is checked on construction
+    if sp.cancel(remainder.as_expr()) != 0:  # pragma: no cover - affinity is checked on construction
         raise ArithmeticError("the Eq. 43 matrix of an affine scheme must have the eigenvalue 1")
+    # cancel/factor are exact normal forms of rational functions, and much cheaper than simplify
     q = sp.Poly(sp.together(quotient.as_expr()), LAM)
-    a2, a1, a0 = [sp.simplify(c) for c in q.all_coeffs()]
-    disc = sp.factor(sp.simplify(a1**2 - 4 * a2 * a0))
+    a2, a1, a0 = [sp.cancel(c) for c in q.all_coeffs()]
+    disc = sp.factor(sp.cancel(a1**2 - 4 * a2 * a0))
     return (
         sp.Integer(1),
-        sp.simplify((-a1 + sp.sqrt(disc)) / (2 * a2)),
-        sp.simplify((-a1 - sp.sqrt(disc)) / (2 * a2)),
+        sp.factor(sp.cancel((-a1 + sp.sqrt(disc)) / (2 * a2))),
+        sp.factor(sp.cancel((-a1 - sp.sqrt(disc)) / (2 * a2))),
     )
 
 

@@ -40,9 +40,10 @@ import flint
 import sympy as sp
 
 from .errors import InvalidSchemeError, SymdecompError, check_valence
+from .exact import characteristic_polynomial as exact_characteristic_polynomial
 from .frequency import per_frequency_matrix
 from .reduction import reduce_first_column, subdivision_block_form
-from .schemes import Scheme, subdivision_matrix
+from .schemes import Scheme
 from .symbols import lam as LAM
 from .symbols import n as N
 from .symbols import omega as OMEGA
@@ -189,19 +190,12 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
 
 
 def matrix_characteristic_polynomial(scheme: Scheme, n: int, values: Mapping[sp.Symbol, object] | None = None) -> flint.fmpq_poly:
-    """``det(x I - S)`` of the exact ``(2n+1) x (2n+1)`` matrix, computed by FLINT over the rationals."""
-    n = check_valence(n)
-    if values:
-        scheme = scheme.substitute(values)
-    if scheme.parameters:
-        raise SymdecompError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; give their values")
-    S = subdivision_matrix(scheme, n)
-    F = flint.fmpq_mat(S.rows, S.cols)
-    for (r, c), e in S.todok().items():
-        if not e.is_Rational:
-            raise SymdecompError(f"subdivision matrix entry {e} is not rational")
-        F[r, c] = flint.fmpq(int(e.p), int(e.q))
-    return F.charpoly()
+    """``det(x I - S)`` of the exact ``(2n+1) x (2n+1)`` matrix, computed by FLINT over the rationals.
+
+    The matrix is built entry by entry from the rules (no block structure); this is
+    :func:`symdecomp.exact.characteristic_polynomial`, with ``values`` for free parameters.
+    """
+    return exact_characteristic_polynomial(scheme, n, values)
 
 
 def _affine_in(expr: sp.Expr, params) -> bool:

@@ -310,42 +310,23 @@ def certify(
     texts = tuple(_text(text_balls[cl[0]], digits) for cl in order)
     if identity:
         note = "multiplicities certified" if certified else "distinct values not separated at the precision limit"
-        return Certificate(
-            n=n,
-            scheme=scheme.name,
-            status=CheckStatus.AGREE,
-            method=method,
-            distinct=distinct,
-            multiplicities=multiplicities,
-            values=texts,
-            multiplicities_certified=certified,
-            height_bits=height,
-            message=f"n = {n}: proved: {method}; {distinct} distinct eigenvalues, {note}",
-        )
-    if refutation is not None:
-        return Certificate(
-            n=n,
-            scheme=scheme.name,
-            status=CheckStatus.DISAGREE,
-            method=method,
-            distinct=distinct,
-            multiplicities=multiplicities,
-            values=texts,
-            multiplicities_certified=False,
-            height_bits=height,
-            message=refutation,
-        )
+        status, message = CheckStatus.AGREE, f"n = {n}: proved: {method}; {distinct} distinct eigenvalues, {note}"
+    elif refutation is not None:
+        status, message, certified = CheckStatus.DISAGREE, refutation, False
+    else:
+        status, certified = CheckStatus.UNDECIDED, False
+        message = f"n = {n}: not certified ({method}), and no closed-form eigenvalue could be refuted at {max_prec} bits"
     return Certificate(
         n=n,
         scheme=scheme.name,
-        status=CheckStatus.UNDECIDED,
+        status=status,
         method=method,
         distinct=distinct,
         multiplicities=multiplicities,
         values=texts,
-        multiplicities_certified=False,
+        multiplicities_certified=certified,
         height_bits=height,
-        message=f"n = {n}: not certified ({method}), and no closed-form eigenvalue could be refuted at {max_prec} bits",
+        message=message,
     )
 
 

@@ -48,7 +48,7 @@ import numpy as np
 import sympy as sp
 
 from .errors import check_valence, SymdecompError
-from .frequency import frequency_zero_matrix
+from .elliptic import recursion_eigenvector
 from .mesh import QuadMesh, ring_mesh
 from .schemes import catmull_clark, subdivision_matrix
 from .spectrum import frequency_zero_eigenvalues
@@ -147,22 +147,20 @@ def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Exp
     """``(mu_2, (u_O, u_a, u_b))``: the subdominant eigenvalue of the Eq. 43 matrix at ``n`` and its eigenvector.
 
     ``mu_2`` is the larger of the two eigenvalues other than 1 (closed form from
-    :func:`symdecomp.spectrum.frequency_zero_eigenvalues`); the eigenvector is the kernel of
-    ``M - mu_2 I`` with ``u_a - u_O = 1``.
+    :func:`symdecomp.spectrum.frequency_zero_eigenvalues`); the eigenvector is
+    :func:`symdecomp.elliptic.recursion_eigenvector`, scaled so that ``u_a - u_O = 1``.
 
     >>> mu, (uo, ua, ub) = elliptic_eigenvector(catmull_clark(), 4)
     >>> mu, (ub - uo) / (ua - uo)
     (1/4, 2)
     """
     n = check_valence(n)
-    M = sp.Matrix(frequency_zero_matrix(scheme, n))
     _, m2, m3 = (sp.nsimplify(sp.simplify(e.subs(N, n))) for e in frequency_zero_eigenvalues(scheme))
     mu = m2 if sp.N(abs(m2)) >= sp.N(abs(m3)) else m3
-    kernel = (M - mu * sp.eye(3)).applyfunc(sp.simplify).nullspace(simplify=True)
-    if len(kernel) != 1:
-        raise SymdecompError(f"the Eq. 43 matrix at n = {n} has a {len(kernel)}-dimensional eigenspace for {mu}")
-    u = kernel[0]
+    u = recursion_eigenvector(scheme, mu, n)
     scale = sp.simplify(u[1] - u[0])
+    if scale == 0:
+        raise SymdecompError(f"the Eq. 43 eigenvector for {mu} at n = {n} has u_a = u_O; Eq. 44's ratio is undefined")
     return mu, tuple(sp.radsimp(sp.simplify(x / scale)) for x in u)
 
 

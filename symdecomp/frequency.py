@@ -28,7 +28,6 @@ import sympy as sp
 from .circulant import mode_eigenvalue_derivation, root_of_unity
 from .errors import check_frequency, check_valence
 from .schemes import Scheme
-from .symbols import lam as LAM
 from .symbols import n as N
 from .symbols import omega as OMEGA
 
@@ -157,7 +156,3 @@ def laurent_to_cos(expr: sp.Expr) -> sp.Expr:
     reduced = sp.rem(poly, sp.Poly(SIN**2 - (1 - COS**2), SIN))
     return sp.expand(reduced.as_expr())
 
-
-def characteristic_polynomial_2x2(matrix: sp.Matrix) -> sp.Expr:
-    """``det(lambda I - M)`` of a 2x2 matrix, expanded."""
-    return sp.expand((LAM * sp.eye(2) - matrix).det())

@@ -33,9 +33,9 @@ import sympy as sp
 
 from .cyclotomic import CyclotomicField
 from .hyperbolic import apply_rational_matrix
-from .elliptic import tangent_lambda
+from .elliptic import recursion_left_eigenvector, tangent_lambda
 from .errors import InvalidSchemeError, check_valence
-from .frequency import COS, circulant_blocks, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
+from .frequency import COS, circulant_blocks, laurent_to_cos, per_frequency_matrix
 from .schemes import Scheme
 from .spectrum import format_value
 from .symbols import n as N
@@ -68,9 +68,8 @@ def limit_masks(scheme: Scheme) -> LimitMasks:
     """Derive the position and tangent masks of ``scheme`` for symbolic ``n``."""
     if scheme.parameters:
         raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
-    T = sp.Matrix(frequency_zero_matrix(scheme)) - sp.eye(3)
-    c1, c2 = T.col(1), T.col(2)
-    left = sp.Matrix([c1[1] * c2[2] - c1[2] * c2[1], c1[2] * c2[0] - c1[0] * c2[2], c1[0] * c2[1] - c1[1] * c2[0]])
+    # the left eigenvector of the Eq. 43 matrix for eigenvalue 1: O's limit as a combination of O, abar, bbar
+    left = recursion_left_eigenvector(scheme, 1)
     total = sum(left)
     l_O, l_a, l_b = (sp.factor(sp.cancel(x / total)) for x in left)
     position = (l_O, sp.factor(l_a / N), sp.factor(l_b / N))

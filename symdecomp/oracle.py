@@ -49,6 +49,7 @@ import sympy as sp
 
 from .errors import check_valence, SymdecompError
 from .elliptic import recursion_eigenvector
+from .masks import limit_masks_at
 from .mesh import QuadMesh, ring_mesh
 from .schemes import catmull_clark, subdivision_matrix
 from .spectrum import frequency_zero_eigenvalues
@@ -196,10 +197,7 @@ def toolkit_predictions(n: int) -> ToolkitPredictions:
     cc = catmull_clark()
     S = subdivision_matrix(cc, n)
     size = 2 * n + 1
-    left = (S.T - sp.eye(size)).nullspace()
-    if len(left) != 1:
-        raise SymdecompError(f"eigenvalue 1 of the valence-{n} subdivision matrix is not simple")
-    mask = left[0] / sum(left[0])
+    mask = limit_masks_at(cc, n).position
     ev = tangent_eigenvalues(cc)
     tangent = {}
     for j in range(1, n):

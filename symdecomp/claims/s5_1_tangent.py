@@ -212,19 +212,31 @@ def _eq38() -> CheckResult:
     )
 
 
-def _dominant_vs_frequency_zero(signs: tuple[int, ...], last: int) -> tuple[bool, int]:
-    """Certify in interval arithmetic (Arb) that lambda_dom(j = 1) exceeds (3n - 7 + s sqrt(5n^2 - 30n + 49))/(8n)
-    for each sign s, for n = 3..last. Returns (all certified, last n reached)."""
+def _dominant_vs_frequency_zero(last: int) -> tuple[bool, int]:
+    """Certify in interval arithmetic (Arb) that the derived dominant eigenvalue of M_1 exceeds the two
+    derived eigenvalues of the Eq. 43 block other than 1, for n = 3..last.
+
+    Returns ``(True, last)``, or ``(False, n)`` at the first ``n`` where it is certainly not larger;
+    raises ``ArithmeticError`` where the balls overlap (undecided at this precision)."""
+    from ..closed_forms import compile_expression
+
+    dominant = compile_expression(tangent_eigenvalues(_cc()).dominant, (C,), engine="arb")
+    block = [compile_expression(e, (n,), engine="arb") for e in frequency_zero_eigenvalues(_cc()) if e != 1]
     old = flint.ctx.prec
     flint.ctx.prec = 128
     try:
         for m in range(3, last + 1):
-            c = (flint.arb(1) / m).cos_pi()
-            lam1 = flint.arb(1) / 4 + c * c / 8 + c * (c * c + 4).sqrt() / 8
-            root = flint.arb(5 * m * m - 30 * m + 49).sqrt()
-            for sign in signs:
-                if not lam1 > (3 * m - 7 + sign * root) / (8 * m):
+            lam1 = dominant(flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(1, m))))
+            for f in block:
+                mu = f(flint.acb(m))
+                # both are real (nonnegative discriminants); comparisons of balls are rigorous
+                if not (lam1.imag == 0 and mu.imag == 0):
+                    raise ArithmeticError(f"n = {m}: an eigenvalue is not certified real")
+                if lam1.real > mu.real:
+                    continue
+                if lam1.real <= mu.real:
                     return False, m
+                raise ArithmeticError(f"n = {m}: lambda_1 and an Eq. 43 eigenvalue not separated at 128 bits")
     finally:
         flint.ctx.prec = old
     return True, last
@@ -242,29 +254,29 @@ def _prop51() -> CheckResult:
     dominant = ev.dominant.subs(C, cp)
     derivative = sp.diff(dominant, cp)
     increasing = all(t.is_positive for t in sp.Add.make_args(sp.expand(derivative)))
-    # the derived closed forms of the Eq. 43 block (besides 1), matched to the form evaluated in Arb below
-    forms_ok = all(
-        sp.simplify(e - f) == 0
-        for e, f in zip(
-            [e for e in frequency_zero_eigenvalues(_cc()) if e != 1],
-            [(3 * n - 7 + s * sp.sqrt(5 * n**2 - 30 * n + 49)) / (8 * n) for s in (1, -1)],
-        )
-    )
+    block = [e for e in frequency_zero_eigenvalues(_cc()) if e != 1]
     last = 1000
-    certified, upto = _dominant_vs_frequency_zero((1, -1), last)
-    if not (increasing and forms_ok and certified):
-        return CheckResult(Status.REFUTED, f"fails at n = {upto}", counterexample=f"n = {upto}")
+    certified, upto = _dominant_vs_frequency_zero(last)
+    if not increasing:
+        return CheckResult(Status.REFUTED, "the dominant eigenvalue is not increasing in c", counterexample=str(derivative))
+    if not certified:
+        return CheckResult(
+            Status.REFUTED,
+            f"at n = {upto} an eigenvalue of the Eq. 43 block is at least lambda_1 (certified)",
+            counterexample=f"n = {upto}",
+        )
     return CheckResult(
         Status.VERIFIED,
         "for all n the dominant eigenvalue of M_j increases with cos^2(j pi/n) (its derivative in c > 0 is a sum of "
         "positive terms), so among the frequencies k = 1..n-1 it is largest at k = 1 and n - 1 (the 2n-gon components "
-        "j = 1, 2n-1 and also j = n-1, n+1, which share M_1); against the Eq. 43 block (eigenvalues "
-        f"(3n - 7 +- sqrt(5n^2 - 30n + 49))/(8n) besides 1) it is larger for n = 3..{last}, certified in interval arithmetic "
-        "(both tend to (3 + sqrt 5)/8 as n -> oo)",
+        "j = 1, 2n-1 and also j = n-1, n+1, which share M_1); against the derived eigenvalues of the Eq. 43 block "
+        f"other than 1 ({', '.join(map(str, block))}) it is larger for n = 3..{last}, certified in interval "
+        f"arithmetic (both tend to {sp.limit(block[0], n, sp.oo)} as n -> oo)",
         valences=(3, last),
         steps=(
             Step("Dominant eigenvalue of $M_j$ for $c = \\cos j\\theta > 0$:", dominant),
             Step("Its derivative in $c$, a sum of positive terms:", derivative),
+            Step("The eigenvalues of the Eq. 43 block other than 1, compared at $c = \\cos(\\pi/n)$:", sp.Matrix(block)),
         ),
     )
 

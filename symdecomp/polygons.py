@@ -42,7 +42,6 @@ __all__ = [
     "PlanarRegularComponent",
     "PolygonDecomposition",
     "decompose",
-    "regular_polygon",
     "coplanar_pairs",
     "as_vertex_rows",
 ]
@@ -180,13 +179,6 @@ _ARITH = {"exact": _Exact, "numpy": _Numpy, "mpmath": _Mpmath}
 def coplanar_pairs(n: int) -> tuple[tuple[int, int], ...]:
     """The index pairs ``(j, n - j)``, ``j = 1..floor((n-1)/2)``, of Eq. 6."""
     return tuple((j, n - j) for j in range(1, (n - 1) // 2 + 1))
-
-
-def regular_polygon(n: int, j: int):
-    """``v_j``, row ``j`` of ``F_n`` (Eq. 4), as a list of exact complex numbers."""
-    from .circulant import root_of_unity
-
-    return [root_of_unity(n, j * m) for m in range(n)]
 
 
 @dataclass(frozen=True)

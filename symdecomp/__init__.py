@@ -1,11 +1,39 @@
 """symdecomp: exact, symbolic eigenanalysis of subdivision surfaces through polygonal decompositions.
 
 Implements and checks I.P. Ivrissimtzis, R. Zayer, H.-P. Seidel, *Polygonal decompositions of
-quadrilateral subdivision meshes*. The public API at a glance:
+quadrilateral subdivision meshes*. The package is layered; each folder imports only from the
+ones above it in this list (``tests/test_layers.py`` checks it):
+
+=================  ===========================================================================
+``errors``,        the package's error types; the symbols ``n``, ``omega``, ``alpha``, ``beta``
+``symbols``
+``algebra/``       no scheme knowledge: circulants and the Fourier matrix (Section 2,
+                   ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
+                   (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
+                   exact/interval evaluation of expressions (``compile``)
+``schemes/``       a scheme as data (edge, face, vertex rules, ``scheme``), its subdivision
+                   matrix (Eq. 13-16, ``scheme``; exact FLINT matrices, ``matrices``), whole quad
+                   meshes refined by its rules (Section 3, ``mesh``), the 1-ring as a pair of
+                   polygons (Section 4, ``ring``)
+``analysis/``      per-frequency matrices M_j and the Eq. 43 matrix (``frequency``), spectra
+                   (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
+                   ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
+                   ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
+                   (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
+                   ``reduction``), Jordan blocks (``defective``), supports (Section 3,
+                   ``support``), rings iterated step by step (``evolution``)
+``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
+                   (``certify``), OpenSubdiv (``oracle``, ``opensubdiv``)
+``claims/``        the paper's claims, one module per section, and their registry
+``output/``        LaTeX (``latex``, one entry point ``aslatex``) and figures (``plotting``)
+``cli/``           the ``symdecomp`` command, one module per subcommand
+=================  ===========================================================================
+
+The names below are the public API (re-exported from the modules above).
 """
 
-from . import symbols
-from .cbmatrix import (
+from symdecomp import symbols
+from symdecomp.algebra.cbmatrix import (
     CBMatrix,
     SymbolicCBMatrix,
     SymbolicCirculant,
@@ -18,10 +46,10 @@ from .cbmatrix import (
     lifted_vector,
     perturbed_frequency_zero_matrix,
 )
-from .charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial, matrix_characteristic_polynomial
-from .circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
-from .claims import CheckResult, Claim, Status, Step, all_claims, check_claim, get_claim
-from .errors import (
+from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial, matrix_characteristic_polynomial
+from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
+from symdecomp.claims import CheckResult, Claim, Status, Step, all_claims, check_claim, get_claim
+from symdecomp.errors import (
     FrequencyOutOfRangeError,
     InvalidPolygonError,
     InvalidSchemeError,
@@ -29,24 +57,24 @@ from .errors import (
     NotAffineError,
     SymdecompError,
 )
-from .latex import aslatex
-from .reduction import reduce_first_column, subdivision_block_form
-from .frequency import circulant_blocks, frequency_zero_matrix, per_frequency_matrix, per_frequency_matrix_at
-from .schemes import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
-from .spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
-from .certify import Certificate, certify
-from .closed_forms import ClosedForms, derived_closed_forms
-from .crosscheck import CheckStatus, NumericCheck, numeric_check
-from .defective import jordan_block_size, jordan_vertex_weights
-from .exact import characteristic_polynomial, exact_subdivision_matrix
-from .tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from .elliptic import elliptic_defect_table, nice_elliptic_conditions
-from .ellipses import ellipse_axes
-from .hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
-from .masks import limit_masks, limit_masks_at
-from .tuning import joint_obstruction, tune
-from .mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
-from .support import Region, classify_support
+from symdecomp.output.latex import aslatex
+from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.analysis.frequency import circulant_blocks, frequency_zero_matrix, per_frequency_matrix, per_frequency_matrix_at
+from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
+from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
+from symdecomp.verify.certify import Certificate, certify
+from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.verify.numeric import CheckStatus, NumericCheck, numeric_check
+from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
+from symdecomp.schemes.matrices import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
+from symdecomp.analysis.ellipses import ellipse_axes
+from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
+from symdecomp.analysis.masks import limit_masks, limit_masks_at
+from symdecomp.analysis.tuning import joint_obstruction, tune
+from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from symdecomp.analysis.support import Region, classify_support
 
 __version__ = "0.1.0"
 

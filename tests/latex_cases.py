@@ -83,7 +83,7 @@ def stress_pairs() -> tuple[tuple[Claim, CheckResult], ...]:
             CheckResult(
                 Status.NUMERIC,
                 "agrees with T=[[1,-1/2],[2,1/3],[4,5/7],[9,9/10],[11,12/13]] for n=3..16 via "
-                "symdecomp.frequency.per_frequency_matrix_at_every_valence_and_frequency_index",
+                "symdecomp.analysis.frequency.per_frequency_matrix_at_every_valence_and_frequency_index",
                 digits=30,
                 steps=(
                     Step("Eigenvalues with multiplicities:", sp.Matrix([[2, 1], [0, 2]]).eigenvals()),

@@ -5,7 +5,7 @@ import random
 import pytest
 import sympy as sp
 
-from symdecomp.cbmatrix import (
+from symdecomp.algebra.cbmatrix import (
     CBMatrix,
     NotCirculantBlockError,
     SymbolicCBMatrix,
@@ -19,7 +19,7 @@ from symdecomp.cbmatrix import (
     lifted_vector,
     perturbed_frequency_zero_matrix,
 )
-from symdecomp.circulant import circ, circ_from_offsets, fourier_matrix
+from symdecomp.algebra.circulant import circ, circ_from_offsets, fourier_matrix
 from symdecomp.errors import SymdecompError
 from symdecomp.symbols import omega
 

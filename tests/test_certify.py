@@ -7,13 +7,13 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.certify import certify, closed_form_characteristic_value, symmetric_functions
-from symdecomp.closed_forms import derived_closed_forms
-from symdecomp.crosscheck import CheckStatus
-from symdecomp.defective import jordan_block_size, jordan_vertex_weights
+from symdecomp.verify.certify import certify, closed_form_characteristic_value, symmetric_functions
+from symdecomp.analysis.closed_forms import derived_closed_forms
+from symdecomp.verify.numeric import CheckStatus
+from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
 from symdecomp.errors import InvalidSchemeError, InvalidValenceError
-from symdecomp.exact import characteristic_polynomial, exact_subdivision_matrix
-from symdecomp.schemes import catmull_clark, subdivision_matrix
+from symdecomp.schemes.matrices import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta, lam
 
 CC = catmull_clark()

@@ -4,14 +4,14 @@ import flint
 import pytest
 import sympy as sp
 
-from symdecomp.charpoly import (
+from symdecomp.analysis.charpoly import (
     closed_form_characteristic_polynomial,
     matrix_characteristic_polynomial,
     to_fmpq_poly,
     verify_closed_form,
 )
 from symdecomp.errors import InvalidSchemeError, SymdecompError
-from symdecomp.schemes import Scheme, Stencil, VertexRule, catmull_clark
+from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
 from symdecomp.symbols import alpha, beta, lam, n, omega
 
 R = sp.Rational

@@ -10,10 +10,10 @@ import sympy as sp
 
 from symdecomp.cli import build_parser, main
 from symdecomp.cli import check_cmd
-from symdecomp.closed_forms import derived_closed_forms
-from symdecomp.crosscheck import full_matrix_eigenvalues
-from symdecomp.exact import characteristic_polynomial
-from symdecomp.schemes import catmull_clark
+from symdecomp.analysis.closed_forms import derived_closed_forms
+from symdecomp.verify.numeric import full_matrix_eigenvalues
+from symdecomp.schemes.matrices import characteristic_polynomial
+from symdecomp.schemes.scheme import catmull_clark
 
 CC = catmull_clark()
 

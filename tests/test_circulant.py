@@ -3,8 +3,8 @@
 import pytest
 import sympy as sp
 
-from symdecomp.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, root_of_unity
-from symdecomp.cyclotomic import CyclotomicField
+from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, root_of_unity
+from symdecomp.algebra.cyclotomic import CyclotomicField
 
 
 def test_convention_of_eq7():

@@ -84,7 +84,7 @@ def test_claims_command_unknown_label(capsys):
 def test_prop51_check_can_fail(monkeypatch):
     # with the vertex held fixed (alpha = beta = 0) an Eq. 43 eigenvalue exceeds lambda_1 at n = 3
     from symdecomp.claims import s5_1_tangent
-    from symdecomp.schemes import catmull_clark
+    from symdecomp.schemes.scheme import catmull_clark
 
     monkeypatch.setattr(s5_1_tangent, "_cc", lambda: catmull_clark(0, 0))
     result = s5_1_tangent._prop51()

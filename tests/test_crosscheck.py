@@ -6,11 +6,11 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.closed_forms import derived_closed_forms
-from symdecomp.crosscheck import CheckStatus, full_matrix_eigenvalues, numeric_check
-from symdecomp.defective import jordan_vertex_weights
-from symdecomp.exact import sparse_subdivision_matrix
-from symdecomp.schemes import catmull_clark
+from symdecomp.analysis.closed_forms import derived_closed_forms
+from symdecomp.verify.numeric import CheckStatus, full_matrix_eigenvalues, numeric_check
+from symdecomp.analysis.defective import jordan_vertex_weights
+from symdecomp.schemes.matrices import sparse_subdivision_matrix
+from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha, beta
 
 CC = catmull_clark()

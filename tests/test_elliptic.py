@@ -6,9 +6,9 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.cyclotomic import CyclotomicField
-from symdecomp.hyperbolic import apply_rational_matrix
-from symdecomp.elliptic import (
+from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.analysis.hyperbolic import apply_rational_matrix
+from symdecomp.analysis.elliptic import (
     MU,
     elliptic_component,
     elliptic_defect_table,
@@ -18,10 +18,10 @@ from symdecomp.elliptic import (
     recursion_left_eigenvector,
     rotation_free_form,
 )
-from symdecomp.ellipses import ellipse_axes, ring_components
+from symdecomp.analysis.ellipses import ellipse_axes, ring_components
 from symdecomp.errors import InvalidPolygonError
-from symdecomp.frequency import frequency_zero_matrix
-from symdecomp.schemes import catmull_clark, subdivision_matrix
+from symdecomp.analysis.frequency import frequency_zero_matrix
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta, n as N
 
 CC = catmull_clark()
@@ -158,7 +158,7 @@ def test_bad_ring_is_rejected():
 
 
 def test_proposition_5_2_check_can_fail_for_an_asymmetric_scheme():
-    from symdecomp.schemes import Scheme, Stencil, VertexRule
+    from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule
 
     R = sp.Rational
     edge = Stencil.from_weights(R(1, 4), {0: R(1, 2)}, {0: R(1, 4)})  # leans on b_i only, not b_{i-1}

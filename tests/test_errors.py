@@ -18,7 +18,7 @@ from symdecomp import (
     subdivision_matrix,
 )
 from symdecomp.cli import main
-from symdecomp.polygons import decompose
+from symdecomp.algebra.polygons import decompose
 
 
 @pytest.mark.parametrize("bad", [2, 0, -3, 3.0, "5", True, sp.Rational(7, 2)])

@@ -1,4 +1,4 @@
-"""symdecomp.evolution: rings iterated by the exact matrix, and the geometry of Sections 4-5 on them."""
+"""symdecomp.analysis.evolution: rings iterated by the exact matrix, and the geometry of Sections 4-5 on them."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pytest
 import sympy as sp
 
 import symdecomp as sd
-from symdecomp import evolution
+from symdecomp.analysis import evolution
 from symdecomp.errors import InvalidPolygonError, InvalidValenceError
 from symdecomp.symbols import alpha, beta
 
@@ -29,7 +29,7 @@ def test_one_step_is_the_exact_matrix(n):
 
 
 def test_as_ring_array_accepts_the_ring_types_of_the_package():
-    from symdecomp.ring import OneRing, subdivide
+    from symdecomp.schemes.ring import OneRing, subdivide
 
     ring = OneRing.from_points((0, 0, 1), [(1, 0, 0), (0, 1, 0), (-1, 0, 0), (0, -1, 0)], [(1, 1, 0), (-1, 1, 0), (-1, -1, 0), (1, -1, 0)])
     ours = evolution.subdivide_ring(CC, ring, 3)[-1]
@@ -49,7 +49,7 @@ def test_ring_polygon_round_trip_is_eq_10_and_12():
 @pytest.mark.parametrize("n, j", [(4, 1), (5, 2), (6, 3), (7, 1)])
 def test_components_stay_planar_and_parallel(n, j):
     """Proposition 4.1 on a random ring's 2n-gon component with O off its plane, over 4 steps."""
-    from symdecomp.polygons import decompose
+    from symdecomp.algebra.polygons import decompose
 
     ring = _random_ring(n, seed=10 * n + j)
     O = ring[0]
@@ -109,7 +109,7 @@ def test_hyperbolic_configuration_decays_at_the_rate_of_m2():
 
 def test_components_n_plus_minus_one_are_not_filtered_out():
     """Remark 5.1 says the 2n-gon components n-1, n+1 are filtered out; they shrink at lambda_1."""
-    from symdecomp.plotting.tangent import component_decay
+    from symdecomp.output.plotting.tangent import component_decay
 
     n = 5
     table = component_decay(CC, n, 20)
@@ -148,7 +148,7 @@ def test_tangent_configuration_is_on_the_ellipse_of_eq_40():
 @pytest.mark.parametrize("kind", ["hyperbolic", "elliptic"])
 def test_quadric_meshes_have_only_the_stated_components(kind):
     """Out of the plane, the 1-ring of the hyperbolic mesh has only frequency 2, the elliptic one only 0."""
-    from symdecomp.mesh import central_rings
+    from symdecomp.schemes.mesh import central_rings
 
     n = 5
     mesh = evolution.quadric_ring_mesh(n, 2, kind, 0.5)
@@ -163,7 +163,7 @@ def test_quadric_meshes_have_only_the_stated_components(kind):
 
 
 def test_refine_mesh_agrees_with_the_matrix_on_the_central_ring():
-    from symdecomp.mesh import central_rings
+    from symdecomp.schemes.mesh import central_rings
 
     mesh = evolution.quadric_ring_mesh(5, 2, "hyperbolic", 0.5)
     refined = evolution.refine_mesh(CC, mesh, 1)

@@ -4,10 +4,10 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.elliptic import tangent_lambda
+from symdecomp.analysis.elliptic import tangent_lambda
 from symdecomp.errors import InvalidValenceError
-from symdecomp.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, hyperbolic_ring, iterate_hyperbolic_ring
-from symdecomp.schemes import catmull_clark, subdivision_matrix
+from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, hyperbolic_ring, iterate_hyperbolic_ring
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 
 CC = catmull_clark()
@@ -71,7 +71,7 @@ def test_bad_input():
 
 
 def test_the_comparison_can_fail(monkeypatch):
-    import symdecomp.hyperbolic as module
+    import symdecomp.analysis.hyperbolic as module
 
     original = module._laurent_in
     # predict the heights with M_1 instead of M_2: the exact iteration must disagree

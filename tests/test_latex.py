@@ -16,9 +16,9 @@ from latex_cases import long_product, long_sum, stress_pairs
 from symdecomp.claims import CheckResult, Status, Step
 from symdecomp.cli import main
 from symdecomp.cli.derive_cmd import write_derivations
-from symdecomp.latex import aslatex, derivation_files, display_math, section_file_name, text_latex
+from symdecomp.output.latex import aslatex, derivation_files, display_math, section_file_name, text_latex
 from symdecomp.symbols import alpha, n, omega
-from symdecomp.texlayout import LINE_WIDTH_EM, break_pieces, estimate_width
+from symdecomp.output.texlayout import LINE_WIDTH_EM, break_pieces, estimate_width
 
 COMMITTED = Path(__file__).resolve().parents[1] / "derivations"
 PDFLATEX = shutil.which("pdflatex")
@@ -198,7 +198,7 @@ def test_the_bytes_do_not_depend_on_the_hash_seed(tmp_path):
     """Printing order comes from sympy's sort keys, not from set or dict iteration order."""
     script = (
         "import hashlib, sys; sys.path.insert(0, 'tests'); from latex_cases import stress_pairs; "
-        "from symdecomp.latex import derivation_files; "
+        "from symdecomp.output.latex import derivation_files; "
         "print(hashlib.sha256(repr(sorted(derivation_files(stress_pairs()).items())).encode()).hexdigest())"
     )
     root = Path(__file__).resolve().parents[1]

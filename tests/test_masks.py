@@ -7,8 +7,8 @@ import pytest
 import sympy as sp
 
 from symdecomp.cli import main
-from symdecomp.masks import check_masks_exactly, limit_masks, limit_masks_at
-from symdecomp.schemes import catmull_clark, subdivision_matrix
+from symdecomp.analysis.masks import check_masks_exactly, limit_masks, limit_masks_at
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 
 CC = catmull_clark()
@@ -87,8 +87,8 @@ def test_cli_masks_text_and_bad_valence(capsys):
 
 
 def test_the_exact_check_can_fail(monkeypatch):
-    import symdecomp.masks as masks_module
-    from symdecomp.frequency import CirculantBlocks, circulant_blocks
+    import symdecomp.analysis.masks as masks_module
+    from symdecomp.analysis.frequency import CirculantBlocks, circulant_blocks
 
     real = circulant_blocks(CC)
     wrong = CirculantBlocks(real.aa, {k: 2 * w for k, w in real.ab.items()}, real.ba, real.bb)

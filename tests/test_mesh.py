@@ -7,8 +7,8 @@ import pytest
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.mesh import InvalidMeshError, QuadMesh, central_rings, mesh_rules, refine, ring_mesh
-from symdecomp.schemes import Scheme, Stencil, catmull_clark, subdivision_matrix
+from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta
 from symdecomp.symbols import n as N
 

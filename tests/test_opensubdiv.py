@@ -14,16 +14,16 @@ import sympy as sp
 
 from symdecomp.cli import main
 from symdecomp.errors import SymdecompError
-from symdecomp.mesh import central_rings, ring_mesh
-from symdecomp.opensubdiv import build as osd_build
-from symdecomp.schemes import catmull_clark
-from symdecomp.support import limit_mask
+from symdecomp.schemes.mesh import central_rings, ring_mesh
+from symdecomp.verify.opensubdiv import build as osd_build
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.analysis.support import limit_mask
 
 if not osd_build.headers_present():
     pytest.skip("OpenSubdiv headers (libosd-dev) or g++ not installed", allow_module_level=True)
 
-from symdecomp.opensubdiv import load_bridge, osd_central_rings  # noqa: E402
-from symdecomp.oracle import compare_with_opensubdiv, elliptic_eigenvector, fourier_components  # noqa: E402
+from symdecomp.verify.opensubdiv import load_bridge, osd_central_rings  # noqa: E402
+from symdecomp.verify.oracle import compare_with_opensubdiv, elliptic_eigenvector, fourier_components  # noqa: E402
 
 load_bridge()  # builds it if needed; raises (an error, not a skip) if the build fails
 

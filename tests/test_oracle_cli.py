@@ -2,7 +2,7 @@
 
 import pytest
 
-import symdecomp.opensubdiv as osd
+import symdecomp.verify.opensubdiv as osd
 from symdecomp.cli import main
 
 

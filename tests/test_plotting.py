@@ -1,4 +1,4 @@
-"""symdecomp.plotting: the numbers behind the figures, labelled axes, clear errors."""
+"""symdecomp.output.plotting: the numbers behind the figures, labelled axes, clear errors."""
 
 from __future__ import annotations
 
@@ -13,9 +13,9 @@ from symdecomp.symbols import alpha, beta
 matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")  # the figures are built without pyplot; no display is ever needed
 
-from symdecomp.plotting import cbmatrix as cbplots  # noqa: E402
-from symdecomp.plotting import polygons as pplots  # noqa: E402
-from symdecomp.plotting import tangent as tplots  # noqa: E402
+from symdecomp.output.plotting import cbmatrix as cbplots  # noqa: E402
+from symdecomp.output.plotting import polygons as pplots  # noqa: E402
+from symdecomp.output.plotting import tangent as tplots  # noqa: E402
 
 CC = sd.catmull_clark()
 
@@ -57,7 +57,7 @@ def test_vertex_labels_group_coinciding_vertices():
 
 def test_unmatched_eigenvalues_of_a_cb_matrix_plus_constant_blocks():
     """Prop. 6.3 on a concrete matrix: exactly K eigenvalues move, to those of E_0 + m T."""
-    from symdecomp import cbmatrix
+    from symdecomp.algebra import cbmatrix
 
     R = sp.Rational
     B = cbmatrix.cb_matrix([[[R(1, 2), R(1, 4), 0, R(1, 4)], [R(1, 8), 0, 0, 0]], [[R(1, 4), 0, 0, R(1, 4)], [R(1, 3), 0, R(1, 6), 0]]])
@@ -101,9 +101,9 @@ def test_figures_have_titles_and_labelled_axes():
 
 
 def test_geometry_figures_have_titles_and_labelled_axes():
-    from symdecomp import elliptic, evolution, tuning
-    from symdecomp.plotting import elliptic as eplots
-    from symdecomp.polygons import decompose
+    from symdecomp.analysis import elliptic, evolution, tuning
+    from symdecomp.output.plotting import elliptic as eplots
+    from symdecomp.algebra.polygons import decompose
 
     P = np.random.default_rng(0).normal(size=(5, 3))
     _assert_labelled(pplots.decomposition_figure(P, pplots.regular_components(decompose(P))))
@@ -120,7 +120,7 @@ def test_geometry_figures_have_titles_and_labelled_axes():
 
 
 def test_regular_components_sum_to_the_polygon_and_are_regular():
-    from symdecomp.polygons import decompose
+    from symdecomp.algebra.polygons import decompose
 
     P = np.random.default_rng(3).normal(size=(6, 3))
     components = pplots.regular_components(decompose(P))

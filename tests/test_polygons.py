@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from symdecomp.circulant import fourier_matrix
-from symdecomp.polygons import coplanar_pairs, decompose
+from symdecomp.algebra.circulant import fourier_matrix
+from symdecomp.algebra.polygons import coplanar_pairs, decompose
 
 
 def random_rational_polygon(n, seed):

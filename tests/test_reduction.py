@@ -4,8 +4,8 @@ import pytest
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.reduction import BorderedCBMatrix, reduce_first_column, reduction_similarity, subdivision_block_form
-from symdecomp.schemes import catmull_clark, subdivision_matrix
+from symdecomp.analysis.reduction import BorderedCBMatrix, reduce_first_column, reduction_similarity, subdivision_block_form
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta
 
 SCHEME = catmull_clark(alpha, beta)

@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 
 from symdecomp import catmull_clark, per_frequency_matrix_at
-from symdecomp.ring import OneRing, ngon_amplitudes, one_ring_decomposition, subdivide
+from symdecomp.schemes.ring import OneRing, ngon_amplitudes, one_ring_decomposition, subdivide
 
 
 def random_ring(n, seed, exact=True):

@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from symdecomp import Scheme, Stencil, VertexRule, catmull_clark, circulant_blocks, subdivision_matrix
-from symdecomp.circulant import circ_from_offsets
+from symdecomp.algebra.circulant import circ_from_offsets
 from symdecomp.symbols import alpha, beta, n
 
 R = sp.Rational

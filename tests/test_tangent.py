@@ -5,7 +5,7 @@ import pytest
 import sympy as sp
 
 from symdecomp import catmull_clark, per_frequency_matrix_at, tangent_eigenvalues
-from symdecomp.tangent import invariant_ratio_at, invariant_ratio_limit
+from symdecomp.analysis.tangent import invariant_ratio_at, invariant_ratio_limit
 
 
 def to_mpc(x):

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# OpenSubdiv from Debian and the symdecomp bridge to it (symdecomp/opensubdiv/osd_bridge.cpp),
+# OpenSubdiv from Debian and the symdecomp bridge to it (symdecomp/verify/opensubdiv/osd_bridge.cpp),
 # so that the oracle tests (tests/test_opensubdiv.py) run instead of being skipped.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -7,4 +7,4 @@ export DEBIAN_FRONTEND=noninteractive
 apt-get update >/dev/null
 apt-get install -y --no-install-recommends g++ libosd-dev libosdcpu3.5.0 >/dev/null
 # Stand-alone build script (standard library only; the package is not installed yet).
-python symdecomp/opensubdiv/build.py --force
+python symdecomp/verify/opensubdiv/build.py --force

@@ -1,6 +1,6 @@
 """The paper's claims, one module per section (``s2_*.py``, ``s4_*.py``, ...)."""
 
-from .registry import (
+from symdecomp.claims.registry import (
     REGISTRY,
     CheckResult,
     Claim,

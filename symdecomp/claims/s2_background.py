@@ -6,9 +6,9 @@ import random
 
 import sympy as sp
 
-from ..circulant import circ, generating_polynomial, mode_eigenvalue_derivation
-from ..polygons import decompose
-from .registry import CheckResult, Status, Step, claim
+from symdecomp.algebra.circulant import circ, generating_polynomial, mode_eigenvalue_derivation
+from symdecomp.algebra.polygons import decompose
+from symdecomp.claims.registry import CheckResult, Status, Step, claim
 
 W = sp.Symbol("w")
 M = sp.Symbol("m", integer=True)
@@ -27,7 +27,7 @@ def _random_polygon(n: int, seed: int) -> sp.Matrix:
     statement="The rows $v_0, \\dots, v_{n-1}$ of $F_n$ (Eq. 2), $\\omega_n = e^{2\\pi i/n}$ (Eq. 3), are regular planar $n$-gons.",
 )
 def _eq2_4() -> CheckResult:
-    from ..symbols import j, n
+    from symdecomp.symbols import j, n
 
     vertex = sp.exp(2 * sp.pi * sp.I * j * M / n)
     step = sp.simplify(vertex.subs(M, M + 1) / vertex)
@@ -54,7 +54,7 @@ def _eq2_4() -> CheckResult:
     "$v_j$ of $F_n$ (Eq. 4) a basis of $\\mathbf{C}^n$.",
 )
 def _eq5() -> CheckResult:
-    from ..symbols import n
+    from symdecomp.symbols import n
 
     geometric = sp.summation(W**M, (M, 0, n - 1))
     general = geometric.args[-1][0] if isinstance(geometric, sp.Piecewise) else geometric
@@ -128,7 +128,7 @@ def _eq6() -> CheckResult:
     "is $p(\\omega_n^k)$ with $p(z) = c_0 + c_1 z + \\dots + c_{n-1} z^{n-1}$ (Eq. 8, 9).",
 )
 def _prop21() -> CheckResult:
-    from ..symbols import omega
+    from symdecomp.symbols import omega
 
     coeffs = {k: sp.Symbol(f"c_{{{k}}}") for k in range(-2, 3)}
     row, eig = mode_eigenvalue_derivation(coeffs)

@@ -2,7 +2,7 @@
 
 The paper separates the control vertices into those inside, on the boundary of and outside
 the support of a vertex ``P`` and makes four claims about them. It defines the three classes
-only informally; the checks use the definition of :mod:`symdecomp.support` (a vertex is
+only informally; the checks use the definition of :mod:`symdecomp.analysis.support` (a vertex is
 inside / on the boundary / outside when all / some / none of its sectors carry ``phi_P``),
 computed from the Catmull-Clark rules on a mesh of rings around a vertex of valence ``n``
 (all other vertices regular), and re-checked by exact refinement of ``e_P``.
@@ -14,10 +14,10 @@ from fractions import Fraction
 
 import sympy as sp
 
-from ..mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
-from ..schemes import catmull_clark
-from ..support import Region, classify_support, support_relation
-from .registry import CheckResult, Status, Step, claim
+from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.analysis.support import Region, classify_support, support_relation
+from symdecomp.claims.registry import CheckResult, Status, Step, claim
 
 #: Valences the exact checks run for (kept small enough for seconds).
 SYMMETRY_VALENCES = (3, 10)

@@ -6,10 +6,10 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from ..frequency import frequency_zero_matrix, per_frequency_matrix
-from ..schemes import catmull_clark
-from ..symbols import alpha, beta, n, omega
-from .registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.analysis.frequency import frequency_zero_matrix, per_frequency_matrix
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.symbols import alpha, beta, n, omega
+from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
 
 R = sp.Rational
 I_ROW = sp.Symbol("i", integer=True)
@@ -93,7 +93,7 @@ EQ21 = ShiftStencil(R(1, 4), sp.Integer(0), R(3, 4))
 def _eq10_11() -> CheckResult:
     import random
 
-    from ..ring import OneRing, one_ring_decomposition
+    from symdecomp.schemes.ring import OneRing, one_ring_decomposition
 
     last = 8
     for size in range(3, last + 1):

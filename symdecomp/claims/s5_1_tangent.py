@@ -5,14 +5,14 @@ from __future__ import annotations
 import flint
 import sympy as sp
 
-from ..circulant import mode_eigenvalue_derivation
-from ..frequency import COS, SIN, per_frequency_matrix
-from ..schemes import catmull_clark
-from ..spectrum import frequency_zero_eigenvalues
-from ..symbols import lam, n, omega
-from ..tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from .registry import CheckResult, Status, Step, claim, is_zero
-from .s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
+from symdecomp.algebra.circulant import mode_eigenvalue_derivation
+from symdecomp.analysis.frequency import COS, SIN, per_frequency_matrix
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
+from symdecomp.symbols import lam, n, omega
+from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
 
 R = sp.Rational
 C = COS
@@ -218,7 +218,7 @@ def _dominant_vs_frequency_zero(last: int) -> tuple[bool, int]:
 
     Returns ``(True, last)``, or ``(False, n)`` at the first ``n`` where it is certainly not larger;
     raises ``ArithmeticError`` where the balls overlap (undecided at this precision)."""
-    from ..closed_forms import compile_expression
+    from symdecomp.algebra.compile import compile_expression
 
     dominant = compile_expression(tangent_eigenvalues(_cc()).dominant, (C,), engine="arb")
     block = [compile_expression(e, (n,), engine="arb") for e in frequency_zero_eigenvalues(_cc()) if e != 1]
@@ -295,7 +295,7 @@ def _rem51() -> CheckResult:
     lam_star, at, roots = _det_condition(-1)
     import mpmath
 
-    from ..ring import OneRing, subdivide
+    from symdecomp.schemes.ring import OneRing, subdivide
 
     size = 5
     with mpmath.workdps(60):

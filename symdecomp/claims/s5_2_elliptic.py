@@ -6,7 +6,7 @@ import random
 
 import sympy as sp
 
-from ..elliptic import (
+from symdecomp.analysis.elliptic import (
     MU,
     elliptic_component,
     eq44_ratio,
@@ -16,14 +16,14 @@ from ..elliptic import (
     rotation_free_form,
     scale_ratio_squared,
 )
-from ..ellipses import ellipse_axes
-from ..frequency import COS, frequency_zero_matrix
-from ..schemes import catmull_clark
-from ..symbols import alpha as ALPHA
-from ..symbols import beta as BETA
-from ..symbols import n as N
-from ..tuning import joint_obstruction
-from . import CheckResult, Status, Step, claim, is_zero
+from symdecomp.analysis.ellipses import ellipse_axes
+from symdecomp.analysis.frequency import COS, frequency_zero_matrix
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.symbols import alpha as ALPHA
+from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import n as N
+from symdecomp.analysis.tuning import joint_obstruction
+from symdecomp.claims import CheckResult, Status, Step, claim, is_zero
 
 
 @claim(

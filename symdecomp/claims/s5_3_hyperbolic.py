@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..elliptic import elliptic_component, tangent_lambda
-from ..hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
-from ..schemes import catmull_clark, subdivision_matrix
-from ..symbols import n as N
-from ..tangent import tangent_eigenvalues
-from ..frequency import COS
-from . import CheckResult, Status, Step, claim
+from symdecomp.analysis.elliptic import elliptic_component, tangent_lambda
+from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+from symdecomp.symbols import n as N
+from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.analysis.frequency import COS
+from symdecomp.claims import CheckResult, Status, Step, claim
 
 _VALENCES = (3, 12)
 

@@ -3,7 +3,7 @@
 Every check works on CB-matrices other than the subdivision matrix too: fully generic
 symbolic blocks, banded blocks of symbolic order ``m``, random exact-rational blocks, and a
 CB-matrix with a non-diagonalizable frequency matrix. The application to the subdivision
-matrix is derived from the scheme (:mod:`symdecomp.reduction`, :mod:`symdecomp.charpoly`).
+matrix is derived from the scheme (:mod:`symdecomp.analysis.reduction`, :mod:`symdecomp.analysis.charpoly`).
 
 Not registered as a claim, but noted: the section's last paragraph refers to "our method
 outlined in proposition 5.3"; the paper has no Proposition 5.3 (only 5.1 and 5.2).
@@ -15,7 +15,7 @@ import random
 
 import sympy as sp
 
-from ..cbmatrix import (
+from symdecomp.algebra.cbmatrix import (
     SymbolicCBMatrix,
     SymbolicCirculant,
     block_diagonalization,
@@ -26,18 +26,18 @@ from ..cbmatrix import (
     lifted_vector,
     perturbed_frequency_zero_matrix,
 )
-from ..charpoly import closed_form_characteristic_polynomial, verify_closed_form
-from ..circulant import circ, mode_eigenvalue_derivation
-from ..frequency import COS
-from ..reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
-from ..schemes import catmull_clark, subdivision_matrix
-from ..symbols import alpha as ALPHA
-from ..symbols import beta as BETA
-from ..symbols import n as N
-from ..symbols import omega as OMEGA
-from ..tangent import tangent_eigenvalues
+from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, verify_closed_form
+from symdecomp.algebra.circulant import circ, mode_eigenvalue_derivation
+from symdecomp.analysis.frequency import COS
+from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+from symdecomp.symbols import alpha as ALPHA
+from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
+from symdecomp.analysis.tangent import tangent_eigenvalues
 
-from .registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
 
 M_SYM = sp.Symbol("m", integer=True, positive=True)
 

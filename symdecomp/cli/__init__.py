@@ -6,7 +6,7 @@ import argparse
 import importlib
 import sys
 
-from ..errors import SymdecompError
+from symdecomp.errors import SymdecompError
 
 __all__ = ["main", "build_parser"]
 

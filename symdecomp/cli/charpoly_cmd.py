@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..charpoly import closed_form_characteristic_polynomial, matrix_characteristic_polynomial
-from ..schemes import catmull_clark
-from ..symbols import alpha as ALPHA
-from ..symbols import beta as BETA
-from ..symbols import lam as LAM
-from .common import add_scheme_option, print_json, valence
+from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, matrix_characteristic_polynomial
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.symbols import alpha as ALPHA
+from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import lam as LAM
+from symdecomp.cli.common import add_scheme_option, print_json, valence
 
 
 def register(sub) -> None:

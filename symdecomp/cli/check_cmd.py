@@ -12,11 +12,11 @@ from functools import partial
 
 import mpmath
 
-from ..certify import certify
-from ..closed_forms import ClosedForms, derived_closed_forms
-from ..crosscheck import CheckStatus, numeric_check
-from ..schemes import Scheme
-from .common import add_scheme_option, positive_int, print_json, progress, valence_range
+from symdecomp.verify.certify import certify
+from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.verify.numeric import CheckStatus, numeric_check
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
 
 __all__ = ["register", "run", "check_valences"]
 
@@ -67,8 +67,8 @@ def _one_forked(n):
 
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
                    jobs: int = 1, show_progress: bool = True):
-    """Yield the check of each valence in order (a :class:`~symdecomp.certify.Certificate` or
-    :class:`~symdecomp.crosscheck.NumericCheck`), in ``jobs`` processes."""
+    """Yield the check of each valence in order (a :class:`~symdecomp.verify.certify.Certificate` or
+    :class:`~symdecomp.verify.numeric.NumericCheck`), in ``jobs`` processes."""
     valences = list(valences)
     closed_forms = closed_forms or derived_closed_forms(scheme)
     job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms)

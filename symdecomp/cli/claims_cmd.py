@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from ..claims import Status, all_claims, check_claim
-from .common import print_json, progress
+from symdecomp.claims import Status, all_claims, check_claim
+from symdecomp.cli.common import print_json, progress
 
 
 def register(sub) -> None:
@@ -30,7 +30,7 @@ def run(args) -> int:
         wanted = set(args.label)
         unknown = wanted - {c.label for c in claims}
         if unknown:
-            from ..errors import SymdecompError
+            from symdecomp.errors import SymdecompError
 
             raise SymdecompError(f"no claim labelled {', '.join(sorted(unknown))}")
         claims = [c for c in claims if c.label in wanted]

@@ -6,8 +6,8 @@ import argparse
 import json
 import sys
 
-from ..errors import InvalidValenceError, check_valence
-from ..schemes import Scheme, catmull_clark
+from symdecomp.errors import InvalidValenceError, check_valence
+from symdecomp.schemes.scheme import Scheme, catmull_clark
 
 __all__ = ["valence", "valence_range", "positive_int", "SCHEMES", "scheme_by_name", "add_scheme_option", "progress", "print_json"]
 

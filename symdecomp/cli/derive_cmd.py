@@ -6,10 +6,10 @@ import re
 import sys
 from pathlib import Path
 
-from ..claims import Status, all_claims, check_claim
-from ..errors import SymdecompError
-from ..latex import aslatex, derivation_files
-from .common import print_json, progress
+from symdecomp.claims import Status, all_claims, check_claim
+from symdecomp.errors import SymdecompError
+from symdecomp.output.latex import aslatex, derivation_files
+from symdecomp.cli.common import print_json, progress
 
 __all__ = ["register", "run", "write_derivations"]
 

@@ -1,6 +1,6 @@
 """``symdecomp masks N``: the limit-position and tangent masks of the central vertex at valence N.
 
-The masks are left eigenvectors of the subdivision matrix (see :mod:`symdecomp.masks`).
+The masks are left eigenvectors of the subdivision matrix (see :mod:`symdecomp.analysis.masks`).
 Scaling: the position mask sums to 1. The tangent masks are unnormalised: the first has
 weight ``cos(2 pi i/N)`` on ``a_i`` and the second ``sin(2 pi i/N)``; their weights on ``b_i``
 follow from the left-eigenvector equation (for Catmull-Clark
@@ -12,8 +12,8 @@ JSON: ``{"n": N, "position": {"O": w, "a": [...], "b": [...]}, "tangents": [{"O"
 
 from __future__ import annotations
 
-from ..masks import limit_masks, limit_masks_at
-from .common import add_scheme_option, positive_int, print_json, valence
+from symdecomp.analysis.masks import limit_masks, limit_masks_at
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, valence
 
 
 def register(sub) -> None:

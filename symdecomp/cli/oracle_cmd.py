@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from .common import positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import positive_int, print_json, progress, valence_range
 
 
 def register(sub) -> None:
@@ -31,9 +31,9 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
-    from ..errors import SymdecompError
-    from ..opensubdiv import BridgeUnavailableError, load_bridge
-    from ..oracle import compare_with_opensubdiv
+    from symdecomp.errors import SymdecompError
+    from symdecomp.verify.opensubdiv import BridgeUnavailableError, load_bridge
+    from symdecomp.verify.oracle import compare_with_opensubdiv
 
     if args.levels < 2:
         raise SymdecompError(f"--levels must be at least 2, got {args.levels}")

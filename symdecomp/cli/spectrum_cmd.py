@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from ..spectrum import closed_form_spectrum
-from .common import add_scheme_option, positive_int, print_json, valence
+from symdecomp.analysis.spectrum import closed_form_spectrum
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, valence
 
 
 def register(sub) -> None:

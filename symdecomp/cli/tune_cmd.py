@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
-from ..tuning import tune
-from .common import add_scheme_option, positive_int, print_json, progress, valence
+from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
+from symdecomp.analysis.tuning import tune
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence
 
 
 def register(sub) -> None:

@@ -1,0 +1,154 @@
+"""Fast evaluation of sympy expressions: mpmath, Arb balls, or exact FLINT rationals.
+
+Used wherever a closed form is evaluated at many points (the cross-checks, the exact
+matrices with weights in ``n``): the expression tree is compiled once into nested closures,
+so each evaluation does no symbolic work.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import flint
+import mpmath
+import sympy as sp
+
+from symdecomp.errors import SymdecompError
+
+__all__ = ["compile_expression", "UnsupportedExpressionError"]
+
+
+class UnsupportedExpressionError(SymdecompError):
+    """A closed form uses a function the fast evaluators do not know."""
+
+
+_MP_OPS = {
+    "const": lambda p, q: mpmath.mpf(p) / q,
+    "add": lambda xs: mpmath.fsum(xs),
+    "mul": lambda xs: mpmath.fprod(xs),
+    "sqrt": mpmath.sqrt,
+    "abs": abs,
+    "pow": lambda x, e: x**e,
+    "cos": mpmath.cos,
+    "sin": mpmath.sin,
+    "pi": lambda: +mpmath.pi,
+    "I": lambda: mpmath.mpc(0, 1),
+}
+
+
+def _acb_sum(xs):
+    total = flint.acb(0)
+    for x in xs:
+        total += x
+    return total
+
+
+def _acb_prod(xs):
+    total = flint.acb(1)
+    for x in xs:
+        total *= x
+    return total
+
+
+def _exact_only(name):
+    def fail(*args):
+        raise UnsupportedExpressionError(f"{name} of a rational is not evaluated exactly")
+
+    return fail
+
+
+def _fmpq_prod(xs):
+    total = flint.fmpq(1)
+    for x in xs:
+        total *= x
+    return total
+
+
+_FMPQ_OPS = {
+    "const": lambda p, q: flint.fmpq(p, q),
+    "add": lambda xs: sum(xs, flint.fmpq(0)),
+    "mul": _fmpq_prod,
+    "sqrt": _exact_only("sqrt"),
+    "abs": lambda x: abs(x),
+    "pow": lambda x, e: x**e,
+    "cos": _exact_only("cos"),
+    "sin": _exact_only("sin"),
+    "pi": _exact_only("pi"),
+    "I": _exact_only("I"),
+}
+
+
+_ARB_OPS = {
+    "const": lambda p, q: flint.acb(flint.fmpq(p, q)),
+    "add": _acb_sum,
+    "mul": _acb_prod,
+    "sqrt": lambda x: flint.acb(x).sqrt(),
+    "abs": lambda x: flint.acb(abs(flint.acb(x))),
+    "pow": lambda x, e: flint.acb(x) ** e,
+    "cos": lambda x: flint.acb(x).cos(),
+    "sin": lambda x: flint.acb(x).sin(),
+    "pi": lambda: flint.acb(flint.arb.pi()),
+    "I": lambda: flint.acb(0, 1),
+}
+
+
+def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: str = "mpmath") -> Callable:
+    """Turn a sympy expression into a fast function of ``variables`` (mpmath or Arb).
+
+    Rationals stay exact (``p/q`` at the working precision, or an exact Arb ball), so the Arb
+    version is a rigorous enclosure; ``engine="fmpq"`` evaluates a rational function exactly
+    (``flint.fmpq``) and refuses square roots and the like. Supported: ``+ * **``, ``sqrt``, ``Abs``, ``cos``,
+    ``sin``, ``pi``, ``I``; anything else raises :class:`UnsupportedExpressionError`.
+
+    >>> x = sp.Symbol("x")
+    >>> f = compile_expression(sp.sqrt(x**2 + 1) / 3, (x,))
+    >>> with mpmath.workdps(20):
+    ...     print(f(mpmath.mpf(2)))
+    0.7453559924999298988
+    """
+    ops = {"mpmath": _MP_OPS, "arb": _ARB_OPS, "fmpq": _FMPQ_OPS}[engine]
+    index = {v: i for i, v in enumerate(variables)}
+
+    def build(e):
+        if e in index:
+            i = index[e]
+            return lambda args: args[i]
+        if e.is_Rational:
+            p, q = int(e.p), int(e.q)
+            return lambda args: ops["const"](p, q)  # at the precision in force when called
+        if e is sp.pi:
+            return lambda args: ops["pi"]()
+        if e is sp.I:
+            return lambda args: ops["I"]()
+        if isinstance(e, sp.Add):
+            parts = [build(a) for a in e.args]
+            return lambda args: ops["add"]([f(args) for f in parts])
+        if isinstance(e, sp.Mul):
+            parts = [build(a) for a in e.args]
+            return lambda args: ops["mul"]([f(args) for f in parts])
+        if isinstance(e, sp.Pow):
+            base = build(e.base)
+            if e.exp == sp.Rational(1, 2):
+                return lambda args: ops["sqrt"](base(args))
+            if e.exp == -sp.Rational(1, 2):
+                one = build(sp.Integer(1))
+                return lambda args: one(args) / ops["sqrt"](base(args))
+            if e.exp.is_Integer:
+                k = int(e.exp)
+                return lambda args: ops["pow"](base(args), k)
+            if e.exp.is_Rational and e.exp.q == 2:
+                k = int(e.exp.p)
+                return lambda args: ops["pow"](ops["sqrt"](base(args)), k)
+        if isinstance(e, sp.Abs):
+            inner = build(e.args[0])
+            return lambda args: ops["abs"](inner(args))
+        if isinstance(e, (sp.cos, sp.sin)):
+            inner = build(e.args[0])
+            name = "cos" if isinstance(e, sp.cos) else "sin"
+            return lambda args: ops[name](inner(args))
+        raise UnsupportedExpressionError(f"cannot evaluate {e} (in a closed form) with {engine}")
+
+    f = build(sp.sympify(expr))
+    return lambda *args: f(args)
+
+

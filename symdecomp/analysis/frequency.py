@@ -1,0 +1,158 @@
+"""Per-frequency matrices derived from a scheme's rules (Eq. 25-33 and Eq. 43).
+
+A subdivision step maps the 1-ring ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` linearly. Writing the
+``a``'s and ``b``'s as sums of regular n-gons ``v_j`` (Eq. 12-13: ``A^j = X v_j``,
+``B^j = Y v_j``), the rules act on each frequency separately:
+
+* for ``omega = omega_n^j != 1`` the amplitudes ``(X, Y)`` move by the ``2 x 2`` matrix
+  ``M_j`` (Eq. 33), whose entries are the eigenvalues (Prop. 2.1) of the four circulant
+  blocks ``C_1..C_4`` of the subdivision matrix on ``v_j``;
+* at ``j = 0`` the centre ``O`` joins in, and the positions of ``O``, of the centroid of the
+  ``a``'s and of the centroid of the ``b``'s move by the ``3 x 3`` matrix of Eq. 43.
+
+Everything here is derived by applying the rules of a :class:`~symdecomp.schemes.scheme.Scheme` to
+a Fourier mode at a symbolic row ``i``; nothing is typed in from the paper.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> per_frequency_matrix(catmull_clark()).tolist()
+[[omega/16 + 3/8 + 1/(16*omega), 1/16 + 1/(16*omega)], [omega/4 + 1/4, 1/4]]
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import sympy as sp
+
+from symdecomp.algebra.circulant import mode_eigenvalue_derivation, root_of_unity
+from symdecomp.errors import check_frequency, check_valence
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
+
+__all__ = [
+    "CirculantBlocks",
+    "circulant_blocks",
+    "per_frequency_matrix",
+    "per_frequency_matrix_at",
+    "frequency_zero_matrix",
+    "laurent_to_cos",
+    "COS",
+    "SIN",
+]
+
+#: A real symbol standing for ``cos(j*theta)`` with ``theta = pi/n`` (Eq. 34).
+COS = sp.Symbol("c", real=True)
+#: A real symbol standing for ``sin(j*theta)``; it disappears for symmetric schemes.
+SIN = sp.Symbol("s", real=True)
+
+
+@dataclass(frozen=True)
+class CirculantBlocks:
+    """The four circulant blocks of the subdivision matrix (Section 6), for symbolic ``n``.
+
+    Each block is given by its offsets ``{k: c_k}`` and its eigenvalue on ``v_j`` as a
+    Laurent polynomial in ``omega = omega_n^j`` (Prop. 2.1).
+    """
+
+    #: ``C_1``: weights of the old ``a``'s in the new ``a``'s.
+    aa: dict
+    #: ``C_2``: weights of the old ``b``'s in the new ``a``'s.
+    ab: dict
+    #: ``C_3``: weights of the old ``a``'s in the new ``b``'s.
+    ba: dict
+    #: ``C_4``: weights of the old ``b``'s in the new ``b``'s.
+    bb: dict
+
+    def __hash__(self):
+        return hash(tuple(tuple(sorted(d.items())) for d in (self.aa, self.ab, self.ba, self.bb)))
+
+    def eigenvalue(self, block: str) -> sp.Expr:
+        """The eigenvalue of one block on ``v_j``, derived by applying it to the mode at row ``i``."""
+        return mode_eigenvalue_derivation(getattr(self, block))[1]
+
+
+def circulant_blocks(scheme: Scheme) -> CirculantBlocks:
+    """The circulant blocks ``C_1..C_4`` of ``scheme`` read off its edge and face rules."""
+    return CirculantBlocks(
+        dict(scheme.edge_rule.a), dict(scheme.edge_rule.b), dict(scheme.face_rule.a), dict(scheme.face_rule.b)
+    )
+
+
+@lru_cache(maxsize=None)
+def per_frequency_matrix(scheme: Scheme) -> sp.ImmutableMatrix:
+    """``M_j`` of Eq. 33 as a matrix of Laurent polynomials in ``omega = omega_n^j``.
+
+    It acts on the column of amplitudes ``(X, Y)`` of ``(A^j, B^j)``; valid for every
+    frequency with ``omega != 1`` (at ``omega = 1`` the centre ``O`` also contributes, see
+    :func:`frequency_zero_matrix`).
+    """
+    blocks = circulant_blocks(scheme)
+    return sp.ImmutableMatrix(
+        [[blocks.eigenvalue("aa"), blocks.eigenvalue("ab")], [blocks.eigenvalue("ba"), blocks.eigenvalue("bb")]]
+    )
+
+
+def per_frequency_matrix_at(scheme: Scheme, n: int, j: int) -> sp.ImmutableMatrix:
+    """``M_j`` at a concrete valence and frequency ``0 <= j < 2n`` (exact, with ``omega_n^j``)."""
+    n = check_valence(n)
+    j = check_frequency(j, n)
+    w = root_of_unity(n, j)
+    return sp.ImmutableMatrix(per_frequency_matrix(scheme).subs(OMEGA, w).applyfunc(sp.expand))
+
+
+@lru_cache(maxsize=None)
+def frequency_zero_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
+    """The ``3 x 3`` recursion matrix of Eq. 43, derived from the rules.
+
+    It acts on the column ``(O, abar, bbar)``: the central vertex, the centroid of the
+    ``a``'s (the centre of ``A^0``) and the centroid of the ``b``'s. Row 1 is the vertex rule
+    with ``sum_i a_i = n*abar``; rows 2 and 3 are the edge and face rules applied to
+    constant polygons (their ``a``- and ``b``-weights summed). Symbolic in ``n`` by default.
+    """
+    if n is not N:
+        n = check_valence(n)
+    v = scheme.vertex_rule
+    rows = [[v.center, N * v.each_a, N * v.each_b]]
+    for rule in (scheme.edge_rule, scheme.face_rule):
+        rows.append([rule.center, sum((w for _, w in rule.a), sp.Integer(0)), sum((w for _, w in rule.b), sp.Integer(0))])
+    matrix = sp.Matrix(rows).applyfunc(lambda e: sp.expand(e.subs(N, n)))
+    return sp.ImmutableMatrix(matrix)
+
+
+def _laurent_terms(expr: sp.Expr) -> dict[int, sp.Expr]:
+    expr = sp.expand(expr)
+    terms: dict[int, sp.Expr] = {}
+    for term in sp.Add.make_args(expr):
+        coeff, power = sp.Integer(1), 0
+        for factor in sp.Mul.make_args(term):
+            base, exp = factor.as_base_exp()
+            if base == OMEGA:
+                if not exp.is_integer:
+                    raise ValueError(f"{expr} is not a Laurent polynomial in omega")
+                power += int(exp)
+            else:
+                coeff *= factor
+        terms[power] = terms.get(power, sp.Integer(0)) + coeff
+    return terms
+
+
+def laurent_to_cos(expr: sp.Expr) -> sp.Expr:
+    """Rewrite a Laurent polynomial in ``omega = exp(2 i j theta)`` in ``c = cos(j theta)``.
+
+    ``omega^k -> (c + i s)^(2k)`` with ``s = sin(j theta)``, then ``s^2 -> 1 - c^2``. For a
+    symmetric polynomial (``p(omega) = p(1/omega)``) the result is a polynomial in :data:`COS`
+    alone; otherwise a term in :data:`SIN` remains.
+
+    >>> laurent_to_cos(OMEGA + 1/OMEGA)
+    4*c**2 - 2
+    """
+    total = sp.Integer(0)
+    for k, coeff in _laurent_terms(expr).items():
+        base = COS + sp.I * SIN if k >= 0 else COS - sp.I * SIN
+        total += coeff * sp.expand(base ** (2 * abs(k)))
+    poly = sp.Poly(sp.expand(total), SIN)
+    reduced = sp.rem(poly, sp.Poly(SIN**2 - (1 - COS**2), SIN))
+    return sp.expand(reduced.as_expr())
+

@@ -1,0 +1,221 @@
+"""Hyperbolic properties (Section 5.3): the ``j = 2`` components against ``lambda_1^2``.
+
+The components ``A^2, A^{2n-2}, B^2, B^{2n-2}`` move by ``M_2`` (Eq. 33 at ``j = 2``). For a
+quadratic (hyperbolic paraboloid) limit shape, their part perpendicular to the tangent
+plane has to shrink like ``lambda_1^2``: the dominant eigenvalue ``lambda_2`` of ``M_2`` should
+equal the square of the dominant eigenvalue ``lambda_1`` of ``M_1``.
+
+:func:`hyperbolic_ring` builds the paper's configuration with only hyperbolic components
+off the tangent plane; :func:`iterate_hyperbolic_ring` iterates it with the exact
+subdivision matrix in ``Q(zeta_4n)`` and compares with the prediction from ``M_1`` and ``M_2``.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> hyperbolic_equality(catmull_clark()).valences
+(4,)
+>>> it = iterate_hyperbolic_ring(catmull_clark(), 5, steps=3)
+>>> it.matches_prediction, it.elliptic_component_zero
+(True, True)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+from fractions import Fraction
+
+import mpmath
+import sympy as sp
+
+from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.analysis.elliptic import tangent_lambda
+from symdecomp.errors import check_valence
+from symdecomp.analysis.frequency import COS, per_frequency_matrix
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.symbols import n as N
+from symdecomp.analysis.tangent import tangent_eigenvalues
+
+__all__ = [
+    "hyperbolic_lambda",
+    "hyperbolic_defect",
+    "HyperbolicEquality",
+    "hyperbolic_equality",
+    "hyperbolic_ring",
+    "HyperbolicIteration",
+    "iterate_hyperbolic_ring",
+    "apply_rational_matrix",
+]
+
+
+def hyperbolic_lambda(scheme: Scheme) -> sp.Expr:
+    """``lambda_2(n)``: the dominant eigenvalue of ``M_2`` (Eq. 34 with ``c = cos(2 pi/n)``)."""
+    return tangent_lambda(scheme, 2)
+
+
+def hyperbolic_defect(scheme: Scheme) -> sp.Expr:
+    """``lambda_2(n) - lambda_1(n)^2``: zero when the hyperbolic part shrinks with quadratic speed."""
+    return hyperbolic_lambda(scheme) - tangent_lambda(scheme, 1) ** 2
+
+
+@dataclass(frozen=True)
+class HyperbolicEquality:
+    """Where ``lambda_2 = lambda_1^2`` holds, decided for every ``n``."""
+
+    #: A polynomial in ``c = cos(pi/n)`` vanishing wherever ``lambda_2 = lambda_1^2`` (a resultant).
+    polynomial: sp.Expr
+    #: Its real roots ``c`` in ``[1/2, 1)``.
+    roots: tuple[sp.Expr, ...]
+    #: The valences where ``lambda_2 = lambda_1^2`` exactly.
+    valences: tuple[int, ...]
+
+
+@lru_cache(maxsize=None)
+def hyperbolic_equality(scheme: Scheme) -> HyperbolicEquality:
+    """Decide ``lambda_2 = lambda_1^2`` for all ``n``.
+
+    ``lambda_1`` is a root ``L`` of the characteristic polynomial of ``M_1`` (in ``c``) and
+    ``lambda_2`` a root of that of ``M_2``, whose coefficients are polynomials in
+    ``cos(2 pi/n) = 2c^2 - 1``. Substituting ``lambda_2 = L^2`` and taking the resultant in ``L``
+    leaves a polynomial in ``c``; only its roots in ``[1/2, 1)`` can be valences, and each
+    candidate is checked exactly.
+    """
+    c = sp.Symbol("c", positive=True)
+    L = sp.Symbol("L", positive=True)
+    ev = tangent_eigenvalues(scheme)
+    char1 = sp.expand(ev.characteristic_polynomial.subs({COS: c, sp.Symbol("lambda"): L}))
+    char2 = sp.expand(ev.characteristic_polynomial.subs({COS: 2 * c**2 - 1, sp.Symbol("lambda"): L**2}))
+    polynomial = sp.factor(sp.resultant(char2, char1, L))
+    defect = hyperbolic_defect(scheme)
+    roots, valences = [], []
+    for root in sp.Poly(polynomial, c).real_roots():
+        if sp.Rational(1, 2) <= root < 1:
+            roots.append(root)
+            with mpmath.workdps(50):
+                m = mpmath.pi / mpmath.acos(mpmath.mpf(sp.N(root, 60)))
+                k = int(mpmath.nint(m))
+                if abs(m - k) < mpmath.mpf(10) ** -40 and sp.simplify(defect.subs(N, k)) == 0:
+                    valences.append(k)
+    return HyperbolicEquality(polynomial, tuple(dict.fromkeys(roots)), tuple(sorted(set(valences))))
+
+
+def hyperbolic_ring(n: int, height=1) -> sp.ImmutableMatrix:
+    """The paper's 1-ring with only hyperbolic components off the tangent plane (Section 5.3).
+
+    ``O`` is at the origin, on the plane of ``A^1, A^{2n-1}, B^1, B^{2n-1}`` (the regular convex
+    2n-gon in the ``xy``-plane), so the elliptic input of Eq. 43 is zero; a real combination of
+    ``v_2`` and ``v_{2n-2}`` (the 2n-gon's frequency 2) is added along ``z``, perpendicular to
+    the ring. Vertex ``k`` of the 2n-gon is ``(cos(pi k/n), sin(pi k/n), height*cos(2 pi k/n))``;
+    ``a_i`` is vertex ``2i`` and ``b_i`` vertex ``2i + 1``. Rows in the order
+    ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` of :func:`~symdecomp.schemes.scheme.subdivision_matrix`.
+    """
+    n = check_valence(n)
+    height = sp.sympify(height)
+
+    def vertex(k):
+        return [sp.cos(sp.pi * k / n), sp.sin(sp.pi * k / n), height * sp.cos(2 * sp.pi * k / n)]
+
+    rows = [[0, 0, 0]] + [vertex(2 * i) for i in range(n)] + [vertex(2 * i + 1) for i in range(n)]
+    return sp.ImmutableMatrix(rows)
+
+
+@dataclass(frozen=True)
+class HyperbolicIteration:
+    """The hyperbolic ring under the exact subdivision matrix, against the per-frequency prediction."""
+
+    #: The valence.
+    n: int
+    #: Number of subdivision steps.
+    steps: int
+    #: Whether ``S^k ring`` equals the prediction from ``M_1^k`` (tangent) and ``M_2^k`` (normal) for every ``k``, exactly.
+    matches_prediction: bool
+    #: Whether ``O`` and the centroids of the ``a``'s and ``b``'s stay at height 0 (no elliptic component), exactly.
+    elliptic_component_zero: bool
+    #: ``|X_2^(k)| / |X_1^(k)|^2`` for ``k = 0..steps``: normal amplitude over squared tangent amplitude.
+    normal_over_tangent_squared: tuple[object, ...]
+    #: ``lambda_2/lambda_1^2``, the predicted asymptotic growth factor of that ratio per step.
+    predicted_factor: object
+
+
+def apply_rational_matrix(matrix: sp.MatrixBase, vector: list) -> list:
+    """``matrix @ vector`` for a rational sympy matrix and cyclotomic-field elements (exact).
+
+    For ``vector^T @ matrix`` pass ``matrix.T``.
+    """
+    rows, cols = matrix.shape
+    if cols != len(vector):
+        raise ValueError(f"matrix has {cols} columns but the vector has {len(vector)} entries")
+    out = []
+    for r in range(rows):
+        acc = None
+        for s_ in range(cols):
+            w = matrix[r, s_]
+            if w != 0:
+                term = vector[s_] * Fraction(int(w.p), int(w.q))
+                acc = term if acc is None else acc + term
+        out.append(acc if acc is not None else vector[0] * 0)
+    return out
+
+
+def _laurent_in(K: CyclotomicField, expr, unit: int):
+    """A Laurent polynomial in ``omega`` (rational coefficients) at ``omega = zeta^unit``."""
+    total = K(0)
+    for k, c in _laurent(expr).items():
+        total = total + K.zeta(unit * k) * K(sp.Rational(c))
+    return total
+
+
+def iterate_hyperbolic_ring(scheme: Scheme, n: int, steps: int = 4, *, digits: int = 30) -> HyperbolicIteration:
+    """Iterate :func:`hyperbolic_ring` (height 1) with the exact matrix and compare with the prediction.
+
+    Exact arithmetic in ``Q(zeta_4n)``: the tangent coordinates ``x + i y`` of ``a_i``, ``b_i`` are
+    ``X_1 omega^i``, ``Y_1 omega^i`` with ``(X_1, Y_1) = M_1^k (1, omega_2n)``; the heights are
+    ``Re(X_2 omega^(2i))``, ``Re(Y_2 omega^(2i))`` with ``(X_2, Y_2) = M_2^k (1, omega_2n^2)``.
+    """
+    n = check_valence(n)
+    if steps < 0:
+        raise ValueError(f"steps must be >= 0, got {steps}")
+    K = CyclotomicField(4 * n)
+    S = subdivision_matrix(scheme, n)
+
+    def cos(k):  # cos(2 pi k/(4n))
+        return (K.zeta(k) + K.zeta(-k)) / 2
+
+    def sin(k):
+        return (K.zeta(k) - K.zeta(-k)) / (2 * K.i)
+
+    zero = K(0)
+    x = [zero] + [cos(2 * (2 * i)) for i in range(n)] + [cos(2 * (2 * i + 1)) for i in range(n)]
+    y = [zero] + [sin(2 * (2 * i)) for i in range(n)] + [sin(2 * (2 * i + 1)) for i in range(n)]
+    z = [zero] + [cos(4 * (2 * i)) for i in range(n)] + [cos(4 * (2 * i + 1)) for i in range(n)]
+
+    M = per_frequency_matrix(scheme)
+    M1 = [[_laurent_in(K, M[r, c], 4) for c in range(2)] for r in range(2)]
+    M2 = [[_laurent_in(K, M[r, c], 8) for c in range(2)] for r in range(2)]
+    X1, Y1 = K(1), K.zeta(2)  # (1, omega_2n)
+    X2, Y2 = K(1), K.zeta(4)  # (1, omega_2n^2)
+    ok, flat = True, True
+    ratios = []
+    with mpmath.workdps(digits + 10):
+        for k in range(steps + 1):
+            if k:
+                x, y, z = apply_rational_matrix(S, x), apply_rational_matrix(S, y), apply_rational_matrix(S, z)
+                X1, Y1 = M1[0][0] * X1 + M1[0][1] * Y1, M1[1][0] * X1 + M1[1][1] * Y1
+                X2, Y2 = M2[0][0] * X2 + M2[0][1] * Y2, M2[1][0] * X2 + M2[1][1] * Y2
+            for i in range(n):
+                for idx, (amp1, amp2) in ((1 + i, (X1, X2)), (1 + n + i, (Y1, Y2))):
+                    t = amp1 * K.zeta(4 * i)  # x + i y of the vertex
+                    h = amp2 * K.zeta(8 * i)
+                    ok &= x[idx] == t.real() and y[idx] == t.imag() and z[idx] == h.real()
+            flat &= x[0] == 0 and y[0] == 0 and z[0] == 0
+            flat &= sum(z[1 : n + 1], zero) == 0 and sum(z[n + 1 :], zero) == 0
+            ratios.append(abs(X2.to_mpc()) / abs(X1.to_mpc()) ** 2)
+        lam1 = mpmath.mpf(sp.Float(sp.N(tangent_lambda(scheme, 1).subs(N, n), digits + 10), digits + 10)._mpf_)
+        lam2 = mpmath.mpf(sp.Float(sp.N(hyperbolic_lambda(scheme).subs(N, n), digits + 10), digits + 10)._mpf_)
+        factor = lam2 / lam1**2
+    return HyperbolicIteration(n, steps, bool(ok), bool(flat), tuple(ratios), factor)
+
+
+def _laurent(expr) -> dict[int, sp.Expr]:
+    from symdecomp.analysis.frequency import _laurent_terms
+
+    return {k: v for k, v in _laurent_terms(sp.expand(expr)).items() if v != 0}

@@ -1,0 +1,192 @@
+"""Limit masks of the central vertex: left eigenvectors of the subdivision matrix.
+
+* The **position mask** is the left eigenvector for the eigenvalue 1, scaled so that its
+  weights sum to 1: the limit position of ``O`` is ``w_O O + sum_i w_a a_i + sum_i w_b b_i``.
+  It is constant on the ``a``'s and on the ``b``'s, so it comes from the left eigenvector
+  ``(l_O, l_a, l_b)`` of the Eq. 43 matrix: ``w_O = l_O``, ``w_a = l_a/n``, ``w_b = l_b/n``.
+* The two **tangent masks** are the real and imaginary parts of the left eigenvector for the
+  subdominant eigenvalue ``lambda_1`` (dominant eigenvalue of ``M_1``, Eq. 34 at ``j = 1``).
+  With the ansatz ``w_{a_i} = X omega^i``, ``w_{b_i} = Y omega^i`` (``omega = omega_n``) the
+  left-eigenvector equations reduce to ``(X, Y) M(1/omega) = lambda_1 (X, Y)`` and ``w_O = 0``.
+
+**Scaling of the tangent masks** (they are unnormalised): ``X = 1``, so the first tangent
+mask has weight ``cos(2 pi i/n)`` on ``a_i`` and the second ``sin(2 pi i/n)``; the weights on
+``b_i`` follow from the second column, ``Y = p_ab(1/omega)/(lambda_1 - m_22)``, i.e. for
+Catmull-Clark ``(cos(2 pi i/n) + cos(2 pi (i+1)/n))/(16 lambda_1 - 4)`` (resp. ``sin``);
+the weight on ``O`` is 0.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> m = limit_masks(catmull_clark())
+>>> m.position
+(n/(n + 5), 4/(n*(n + 5)), 1/(n*(n + 5)))
+>>> m.tangent_b[0]
+(cos(2*pi*i/n) + cos(2*pi*(i + 1)/n))/(4*(4*lambda_1 - 1))
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import mpmath
+import sympy as sp
+
+from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.analysis.hyperbolic import apply_rational_matrix
+from symdecomp.analysis.elliptic import recursion_left_eigenvector, tangent_lambda
+from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.analysis.frequency import COS, circulant_blocks, laurent_to_cos, per_frequency_matrix
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.analysis.spectrum import format_value
+from symdecomp.symbols import n as N
+from symdecomp.analysis.tangent import tangent_eigenvalues
+
+__all__ = ["INDEX", "LAMBDA1", "LimitMasks", "limit_masks", "MasksAtValence", "limit_masks_at", "check_masks_exactly"]
+
+#: The index ``i`` of ``a_i``, ``b_i`` in the closed forms.
+INDEX = sp.Symbol("i", integer=True, nonnegative=True)
+#: ``lambda_1`` as a symbol in the closed forms of the tangent masks.
+LAMBDA1 = sp.Symbol("lambda_1", positive=True)
+
+
+@dataclass(frozen=True)
+class LimitMasks:
+    """The limit masks of ``O`` in closed form in ``n`` and the index ``i`` (see the module docstring)."""
+
+    #: ``(w_O, w_a, w_b)``: the position mask's weights on ``O``, on each ``a_i``, on each ``b_i``.
+    position: tuple[sp.Expr, sp.Expr, sp.Expr]
+    #: The two tangent masks' weights on ``a_i`` (``cos``, ``sin`` of ``2 pi i/n``).
+    tangent_a: tuple[sp.Expr, sp.Expr]
+    #: The two tangent masks' weights on ``b_i``, in ``n``, ``i`` and :data:`LAMBDA1`.
+    tangent_b: tuple[sp.Expr, sp.Expr]
+    #: ``lambda_1(n)``, to substitute for :data:`LAMBDA1`.
+    subdominant: sp.Expr
+
+
+@lru_cache(maxsize=None)
+def limit_masks(scheme: Scheme) -> LimitMasks:
+    """Derive the position and tangent masks of ``scheme`` for symbolic ``n``."""
+    if scheme.parameters:
+        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
+    # the left eigenvector of the Eq. 43 matrix for eigenvalue 1: O's limit as a combination of O, abar, bbar
+    left = recursion_left_eigenvector(scheme, 1)
+    total = sum(left)
+    l_O, l_a, l_b = (sp.factor(sp.cancel(x / total)) for x in left)
+    position = (l_O, sp.factor(l_a / N), sp.factor(l_b / N))
+
+    m22 = laurent_to_cos(per_frequency_matrix(scheme)[1, 1])
+    if m22.has(sp.Symbol("s", real=True)):
+        raise InvalidSchemeError("the face rule is not mirror symmetric; the tangent masks need m_22 real")
+    m22 = m22.subs(COS, sp.cos(sp.pi / N))
+    ab = circulant_blocks(scheme).ab
+    angle = lambda k: 2 * sp.pi * (INDEX - k) / N  # noqa: E731
+    denominator = sp.expand(LAMBDA1 - m22)
+    # w_{b_i} = sum_k c_k omega^(i - k) / (lambda_1 - m22): real and imaginary parts.
+    b_cos = sp.Add(*[w * sp.cos(angle(k)) for k, w in ab.items()])
+    b_sin = sp.Add(*[w * sp.sin(angle(k)) for k, w in ab.items()])
+    return LimitMasks(
+        position=position,
+        tangent_a=(sp.cos(2 * sp.pi * INDEX / N), sp.sin(2 * sp.pi * INDEX / N)),
+        tangent_b=(sp.together(b_cos / denominator), sp.together(b_sin / denominator)),
+        subdominant=tangent_lambda(scheme, 1),
+    )
+
+
+@dataclass(frozen=True)
+class MasksAtValence:
+    """The masks at one valence, exact (sympy), in the vertex order ``O, a_0.., b_0..``."""
+
+    #: The valence.
+    n: int
+    #: The position mask, ``2n + 1`` weights summing to 1.
+    position: tuple[sp.Expr, ...]
+    #: The two tangent masks, each ``2n + 1`` weights (scaling in the module docstring).
+    tangents: tuple[tuple[sp.Expr, ...], tuple[sp.Expr, ...]]
+    #: ``lambda_1``, the subdominant eigenvalue.
+    subdominant: sp.Expr
+
+    def as_json(self, digits: int = 20) -> dict:
+        def num(e):
+            value = sp.N(e, digits + 10)
+            with mpmath.workdps(digits + 10):
+                v = mpmath.mpf(sp.Float(value, digits + 10)._mpf_) if value != 0 else mpmath.mpf(0)
+                return format_value(v, digits)
+
+        def split(mask):
+            return {"O": num(mask[0]), "a": [num(w) for w in mask[1 : self.n + 1]], "b": [num(w) for w in mask[self.n + 1 :]]}
+
+        return {
+            "n": self.n,
+            "position": split(self.position),
+            "tangents": [split(t) for t in self.tangents],
+            "subdominant": num(self.subdominant),
+        }
+
+
+def limit_masks_at(scheme: Scheme, n: int) -> MasksAtValence:
+    """Evaluate :func:`limit_masks` at valence ``n`` (exact)."""
+    n = check_valence(n)
+    if n < scheme.minimum_valence():
+        raise InvalidSchemeError(f"scheme {scheme.name!r} needs valence >= {scheme.minimum_valence()}, got {n}")
+    m = limit_masks(scheme)
+    lam1 = m.subdominant.subs(N, n)
+    position = (m.position[0].subs(N, n),) + (m.position[1].subs(N, n),) * n + (m.position[2].subs(N, n),) * n
+    tangents = []
+    for a_w, b_w in zip(m.tangent_a, m.tangent_b):
+        a_list = tuple(a_w.subs({N: n, INDEX: i}) for i in range(n))
+        b_list = tuple(b_w.subs({N: n, INDEX: i, LAMBDA1: lam1}) for i in range(n))
+        tangents.append((sp.Integer(0),) + a_list + b_list)
+    return MasksAtValence(n, position, (tangents[0], tangents[1]), lam1)
+
+
+def check_masks_exactly(scheme: Scheme, n: int) -> tuple[bool, bool, bool]:
+    """Check ``w^T S = lambda w^T`` exactly for the three masks at valence ``n``.
+
+    The position mask is rational: checked in rational arithmetic. The tangent masks are
+    multiplied by ``(lambda_1 - m_22)`` and checked in ``Q(zeta_4n)[L]/(L^2 - tr L + det)``, with
+    ``L`` a root of the characteristic polynomial of ``M_1`` (exact, python-flint).
+    Returns ``(position ok, first tangent ok, second tangent ok)``.
+    """
+    from symdecomp.schemes.scheme import subdivision_matrix
+
+    n = check_valence(n)
+    S = subdivision_matrix(scheme, n)
+    masks = limit_masks_at(scheme, n)
+    w = sp.Matrix([masks.position])
+    position_ok = all(sp.nsimplify(x) == 0 for x in (w * S - w)) and sp.nsimplify(sum(w)) == 1
+
+    K = CyclotomicField(4 * n)
+    ev = tangent_eigenvalues(scheme)
+    c = (K.zeta(2) + K.zeta(-2)) / 2  # cos(pi/n) = cos(2 pi * 2/(4n))
+
+    def cos(k):  # cos(2 pi k/(4n))
+        return (K.zeta(k) + K.zeta(-k)) / 2
+
+    def sin(k):
+        return (K.zeta(k) - K.zeta(-k)) / (2 * K.i)
+
+    def in_c(expr):
+        poly = sp.Poly(sp.expand(expr), COS)
+        total = K(0)
+        for (power,), coeff in poly.terms():
+            total = total + K(sp.Rational(coeff)) * c**power
+        return total
+
+    trace, det = in_c(ev.trace), in_c(ev.determinant)
+    m22 = in_c(laurent_to_cos(per_frequency_matrix(scheme)[1, 1]))
+    ab = circulant_blocks(scheme).ab
+    ST = S.T
+    results = []
+    for trig in (cos, sin):
+        # (lambda_1 - m22) * mask, as pairs (p0, p1) meaning p0 + p1*L.
+        zero = K(0)
+        p0 = [zero] + [-m22 * trig(4 * i) for i in range(n)]
+        p1 = [zero] + [trig(4 * i) for i in range(n)]
+        p0 += [sum((trig(4 * (i - k)) * K(sp.Rational(wk)) for k, wk in ab.items()), zero) for i in range(n)]
+        p1 += [zero] * n
+        q0, q1 = apply_rational_matrix(ST, p0), apply_rational_matrix(ST, p1)
+        # L*(p0 + p1 L) = -det*p1 + (p0 + tr*p1) L
+        l0 = [-det * v for v in p1]
+        l1 = [u + trace * v for u, v in zip(p0, p1)]
+        results.append(all(a == b for a, b in zip(q0, l0)) and all(a == b for a, b in zip(q1, l1)))
+    return position_ok, results[0], results[1]

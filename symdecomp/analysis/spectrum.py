@@ -1,0 +1,169 @@
+"""The spectrum of the subdivision matrix from the closed forms, per frequency.
+
+The ``2n+1`` eigenvalues of the valence-``n`` subdivision matrix are
+
+* the three eigenvalues of the ``3 x 3`` matrix of Eq. 43 (frequency ``k = 0``), and
+* the two eigenvalues of ``M_k`` (Eq. 34) for each n-gon frequency ``k = 1..n-1``.
+
+Both come from closed forms derived symbolically (:mod:`symdecomp.analysis.frequency`,
+:mod:`symdecomp.analysis.tangent`); here they are evaluated with mpmath and grouped into distinct
+values with multiplicities. Frequencies are n-gon frequencies ``k`` (the 2n-gon components
+``j`` and ``j + n`` of Eq. 11 share ``M_{j mod n}``).
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> sp4 = closed_form_spectrum(catmull_clark(), 4, digits=10)
+>>> [(e.text, e.multiplicity, e.frequencies) for e in sp4.eigenvalues]
+[('1.0', 1, (0,)), ('0.5', 2, (1, 3)), ('0.25', 3, (0, 2)), ('0.125', 2, (1, 3)), ('0.0625', 1, (0,))]
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import mpmath
+import sympy as sp
+
+from symdecomp.errors import check_valence
+from symdecomp.analysis.frequency import COS, SIN, frequency_zero_matrix
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import lam as LAM
+from symdecomp.symbols import n as N
+from symdecomp.analysis.tangent import tangent_eigenvalues
+
+__all__ = ["SpectrumEntry", "Spectrum", "frequency_zero_eigenvalues", "closed_form_spectrum", "format_value"]
+
+
+@dataclass(frozen=True)
+class SpectrumEntry:
+    """One distinct eigenvalue of the subdivision matrix."""
+
+    #: The value, at the working precision of the computation (mpmath ``mpf`` or ``mpc``).
+    value: object
+    #: The value as a decimal string with the requested number of significant digits.
+    text: str
+    #: Algebraic multiplicity (how many closed-form eigenvalues coincide with it).
+    multiplicity: int
+    #: The n-gon frequencies ``k`` whose block contributes it (``0`` is the block of Eq. 43).
+    frequencies: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class Spectrum:
+    """The closed-form spectrum of a scheme's subdivision matrix at one valence."""
+
+    #: The valence.
+    n: int
+    #: The scheme's name.
+    scheme: str
+    #: Significant digits of the printed values.
+    digits: int
+    #: Values were grouped as equal when they agreed to this many digits (computed at more).
+    grouping_digits: int
+    #: Distinct eigenvalues, in decreasing order of modulus (then real part).
+    eigenvalues: tuple[SpectrumEntry, ...]
+
+    def as_json(self) -> dict:
+        return {
+            "n": self.n,
+            "scheme": self.scheme,
+            "digits": self.digits,
+            "grouping_digits": self.grouping_digits,
+            "eigenvalues": [
+                {"value": e.text, "multiplicity": e.multiplicity, "frequencies": list(e.frequencies)}
+                for e in self.eigenvalues
+            ],
+        }
+
+
+@lru_cache(maxsize=None)
+def frequency_zero_eigenvalues(scheme: Scheme) -> tuple[sp.Expr, ...]:
+    """The eigenvalues of the Eq. 43 matrix as closed forms in ``n`` (and the parameters).
+
+    Derived from its characteristic polynomial; an affine scheme always has the factor
+    ``lambda - 1`` (rows sum to 1), and the remaining quadratic is solved by radicals.
+    """
+    charpoly = (frequency_zero_matrix(scheme).charpoly(LAM)).as_expr()
+    quotient, remainder = sp.div(sp.Poly(charpoly, LAM), sp.Poly(LAM - 1, LAM))
+    if sp.cancel(remainder.as_expr()) != 0:  # pragma: no cover - affinity is checked on construction
+        raise ArithmeticError("the Eq. 43 matrix of an affine scheme must have the eigenvalue 1")
+    # cancel/factor are exact normal forms of rational functions, and much cheaper than simplify
+    q = sp.Poly(sp.together(quotient.as_expr()), LAM)
+    a2, a1, a0 = [sp.cancel(c) for c in q.all_coeffs()]
+    disc = sp.factor(sp.cancel(a1**2 - 4 * a2 * a0))
+    return (
+        sp.Integer(1),
+        sp.factor(sp.cancel((-a1 + sp.sqrt(disc)) / (2 * a2))),
+        sp.factor(sp.cancel((-a1 - sp.sqrt(disc)) / (2 * a2))),
+    )
+
+
+def format_value(value, digits: int) -> str:
+    """A decimal string with ``digits`` significant digits; complex as ``a+bj`` (Python syntax)."""
+    if isinstance(value, mpmath.mpc):
+        if value.imag == 0:
+            value = value.real
+        else:
+            re = mpmath.nstr(value.real, digits, min_fixed=-mpmath.inf, max_fixed=mpmath.inf)
+            im = mpmath.nstr(abs(value.imag), digits, min_fixed=-mpmath.inf, max_fixed=mpmath.inf)
+            return f"{re}{'-' if value.imag < 0 else '+'}{im}j"
+    return mpmath.nstr(value, digits, min_fixed=-mpmath.inf, max_fixed=mpmath.inf)
+
+
+def _numeric(expr: sp.Expr, subs: dict, dps: int):
+    value = sp.N(expr.subs(subs), dps + 5)
+    re, im = value.as_real_imag()
+    with mpmath.workdps(dps):
+        re_m = mpmath.mpf(sp.Float(re, dps + 5)._mpf_) if re != 0 else mpmath.mpf(0)
+        im_m = mpmath.mpf(sp.Float(im, dps + 5)._mpf_) if im != 0 else mpmath.mpf(0)
+        return re_m if im_m == 0 else mpmath.mpc(re_m, im_m)
+
+
+def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters: dict | None = None) -> Spectrum:
+    """Evaluate the closed-form eigenvalues at valence ``n`` and group them with multiplicities.
+
+    Values are computed at ``digits + 30`` significant digits and grouped when they agree to
+    ``digits + 15``; each closed form is an explicit radical, so coincidences (``n = 4`` has
+    ``1/4`` three times) are exact up to that rounding. ``parameters`` gives values for free
+    parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
+    """
+    n = check_valence(n)
+    if digits < 1:
+        raise ValueError(f"digits must be a positive integer, got {digits}")
+    if n < scheme.minimum_valence():
+        from symdecomp.schemes.scheme import subdivision_matrix
+
+        subdivision_matrix(scheme, n)  # raises the error naming the problem
+    subs = {sp.Symbol(str(k)) if isinstance(k, str) else k: sp.sympify(v) for k, v in (parameters or {}).items()}
+    missing = set(scheme.parameters) - set(subs)
+    if missing:
+        raise ValueError(f"scheme {scheme.name!r} has free parameters {sorted(map(str, missing))}; give their values")
+    work = digits + 30
+    raw: list[tuple[object, int]] = []
+    for expr in frequency_zero_eigenvalues(scheme):
+        raw.append((_numeric(expr, {N: n, **subs}, work), 0))
+    ev = tangent_eigenvalues(scheme)
+    for k in range(1, n):
+        angle = sp.pi * sp.Rational(k, n)
+        point = {COS: sp.cos(angle), SIN: sp.sin(angle), N: n, **subs}
+        for expr in (ev.dominant, ev.subdominant):
+            raw.append((_numeric(expr, point, work), k))
+    with mpmath.workdps(work):
+        tol = mpmath.mpf(10) ** (-(digits + 15))
+        raw.sort(key=lambda vk: (-abs(vk[0]), -mpmath.re(vk[0]), -mpmath.im(vk[0])))
+        groups: list[list[tuple[object, int]]] = []
+        for value, k in raw:
+            if groups and abs(groups[-1][0][0] - value) <= tol * max(1, abs(value)):
+                groups[-1].append((value, k))
+            else:
+                groups.append([(value, k)])
+        entries = tuple(
+            SpectrumEntry(
+                value=g[0][0],
+                text=format_value(g[0][0], digits),
+                multiplicity=len(g),
+                frequencies=tuple(sorted({k for _, k in g})),
+            )
+            for g in groups
+        )
+    return Spectrum(n=n, scheme=scheme.name, digits=digits, grouping_digits=digits + 15, eigenvalues=entries)

@@ -1,0 +1,119 @@
+"""Tangent-plane behaviour: closed-form eigenvalues and eigenvectors of ``M_j`` (Section 5.1).
+
+The eigenvalues are derived from the characteristic polynomial of the per-frequency matrix
+(Eq. 33) rewritten in ``c = cos(j*theta)``, ``theta = pi/n`` (Eq. 34). The *dominant* one is
+the root with the larger value, which for a real discriminant means ``+ sqrt`` with ``|c|``.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> ev = tangent_eigenvalues(catmull_clark())
+>>> ev.dominant
+c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
+>>> ev.trace, ev.determinant
+(c**2/4 + 1/2, 1/16)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import sympy as sp
+
+from symdecomp.analysis.frequency import COS, SIN, laurent_to_cos, per_frequency_matrix
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta
+from symdecomp.symbols import j as J
+from symdecomp.symbols import lam as LAM
+from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
+
+__all__ = [
+    "TangentEigenvalues",
+    "tangent_eigenvalues",
+    "eigenvector_second_component",
+    "invariant_ratio",
+    "invariant_ratio_at",
+    "invariant_ratio_limit",
+]
+
+
+@dataclass(frozen=True)
+class TangentEigenvalues:
+    """The two eigenvalues of ``M_j`` in closed form, in ``c = cos(j*theta)`` (Eq. 34)."""
+
+    #: ``trace(M_j)`` in ``c`` (and ``s = sin(j*theta)`` for a non-symmetric scheme).
+    trace: sp.Expr
+    #: ``det(M_j)`` in ``c``.
+    determinant: sp.Expr
+    #: ``trace^2 - 4 det``, factored.
+    discriminant: sp.Expr
+    #: The characteristic polynomial ``lambda^2 - trace*lambda + det``.
+    characteristic_polynomial: sp.Expr
+    #: ``(trace + sqrt(discriminant))/2``: the larger eigenvalue when the discriminant is >= 0.
+    dominant: sp.Expr
+    #: ``(trace - sqrt(discriminant))/2``.
+    subdominant: sp.Expr
+
+    def in_frequency(self, expr: sp.Expr) -> sp.Expr:
+        """Substitute ``c = cos(pi j/n)`` (and ``s = sin(pi j/n)``) into an expression."""
+        return expr.subs({COS: cos_jtheta, SIN: sp.sin(sp.pi * J / N)})
+
+    def at(self, n: int, j: int) -> tuple[sp.Expr, sp.Expr]:
+        """The two exact eigenvalues at a concrete valence and frequency."""
+        subs = {COS: sp.cos(sp.pi * sp.Rational(j, n)), SIN: sp.sin(sp.pi * sp.Rational(j, n))}
+        return self.dominant.subs(subs), self.subdominant.subs(subs)
+
+
+@lru_cache(maxsize=None)
+def tangent_eigenvalues(scheme: Scheme) -> TangentEigenvalues:
+    """Derive the closed-form eigenvalues of ``M_j`` for ``scheme`` (Eq. 34)."""
+    M = per_frequency_matrix(scheme)
+    trace = laurent_to_cos(M.trace())
+    det = laurent_to_cos(sp.expand(M.det()))
+    disc = sp.factor(sp.expand(trace**2 - 4 * det))
+    root = sp.sqrt(disc)
+    charpoly = sp.expand(LAM**2 - trace * LAM + det)
+    return TangentEigenvalues(
+        trace=trace,
+        determinant=det,
+        discriminant=disc,
+        characteristic_polynomial=charpoly,
+        dominant=sp.expand(trace / 2 + root / 2),
+        subdominant=sp.expand(trace / 2 - root / 2),
+    )
+
+
+def eigenvector_second_component(scheme: Scheme, eigenvalue: sp.Expr = LAM) -> sp.Expr:
+    """Second component of the eigenvector ``(1, y)`` of ``M_j`` from its second row (Eq. 36-37).
+
+    ``m21 X + (m22 - lambda) Y = 0`` gives ``y = m21/(lambda - m22)``. Undefined where
+    ``lambda = m22`` (for Catmull-Clark: ``lambda = 1/4``, i.e. ``cos(j*theta) = 0``).
+    """
+    M = per_frequency_matrix(scheme)
+    return M[1, 0] / (eigenvalue - M[1, 1])
+
+
+def invariant_ratio(scheme: Scheme) -> sp.Expr:
+    """``B^j / A^j`` on the dominant eigenvector of ``M_j`` (Eq. 39), in ``omega`` and ``c``.
+
+    The paper writes it as the ``r`` with ``A^j = r B^j``; the value it prints for ``n = 4``
+    (``1 + i``) is ``B^1/A^1``, which is what this returns (see the claim "Eq. 39").
+    """
+    return eigenvector_second_component(scheme, tangent_eigenvalues(scheme).dominant)
+
+
+def _omega_and_cos(n, j):
+    return {OMEGA: sp.exp(2 * sp.pi * sp.I * j / n), COS: sp.cos(sp.pi * j / n), SIN: sp.sin(sp.pi * j / n)}
+
+
+def invariant_ratio_at(scheme: Scheme, n: int, j: int = 1) -> sp.Expr:
+    """The exact ratio of Eq. 39 at a concrete ``n`` and ``j``, simplified."""
+    value = invariant_ratio(scheme).subs(_omega_and_cos(sp.Integer(n), sp.Integer(j)))
+    return sp.nsimplify(sp.simplify(sp.expand_complex(value)))
+
+
+def invariant_ratio_limit(scheme: Scheme, j: int = 1) -> sp.Expr:
+    """``lim_{n -> oo}`` of the ratio of Eq. 39 at fixed ``j``, computed by ``sympy.limit``."""
+    m = sp.Symbol("m", positive=True)
+    value = invariant_ratio(scheme).subs(_omega_and_cos(m, sp.Integer(j)))
+    return sp.simplify(sp.limit(value, m, sp.oo))

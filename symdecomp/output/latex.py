@@ -1,0 +1,648 @@
+"""LaTeX output: the one entry point :func:`aslatex` and the document of derivations.
+
+``aslatex`` is a :func:`functools.singledispatch` function (as in ampform): a sympy object
+goes to sympy's printer, a mapping becomes an ``aligned`` block of ``lhs &= rhs`` rows, a
+:class:`~symdecomp.claims.Step` a sentence and a displayed equation, a
+:class:`~symdecomp.claims.CheckResult` its status (a coloured box when the paper was refuted
+or corrected), evidence and derivation, a :class:`~symdecomp.claims.Claim` the whole entry
+of the claim. The document (:func:`derivation_files`) is assembled from the same function;
+``symdecomp derive`` writes it to disk.
+
+The mathematics is never typed in here: every formula is printed by sympy from the objects
+the checks computed. Long formulas are broken across lines by :mod:`symdecomp.output.texlayout`.
+The output is a pure function of its input (no dates, no global printing state), so
+regenerating the files gives the same bytes.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from collections.abc import Mapping, Sequence
+from fractions import Fraction
+
+import sympy as sp
+
+from symdecomp.claims import CheckResult, Claim, Status, Step, check_claim
+from symdecomp.output.texlayout import LINE_WIDTH_EM, Piece, break_pieces, estimate_width, pack_lines
+
+__all__ = [
+    "aslatex",
+    "text_latex",
+    "display_math",
+    "SECTION_TITLES",
+    "section_file_name",
+    "derivation_files",
+    "PREAMBLE",
+]
+
+#: The paper's section titles, so that the document's sections mirror the paper's.
+SECTION_TITLES = {
+    "2": "Background",
+    "3": "Suitable decomposition neighborhoods",
+    "4": "1-ring decomposition for the Catmull-Clark scheme",
+    "5": "Evolution of the eigencomponents",
+    "5.1": "Tangent plane properties",
+    "5.2": "Elliptic properties",
+    "5.3": "Hyperbolic properties",
+    "6": "Exact calculation on CB-matrices",
+}
+
+PAPER = (
+    "I.\\,P. Ivrissimtzis, R. Zayer, H.-P. Seidel, "
+    "\\emph{Polygonal decompositions of quadrilateral subdivision meshes}"
+)
+
+#: The document preamble: packages of a basic TeX Live only (latex-base and latex-recommended).
+PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
+\usepackage[utf8]{inputenc}
+\usepackage[margin=25mm]{geometry}
+\usepackage{amsmath,amssymb}
+\usepackage{graphicx}
+\usepackage{array,booktabs,longtable}
+\usepackage{xcolor}
+\usepackage[hidelinks]{hyperref}
+
+\definecolor{sdproved}{rgb}{0.0,0.45,0.15}
+\definecolor{sdverified}{rgb}{0.05,0.45,0.35}
+\definecolor{sdnumeric}{rgb}{0.1,0.25,0.6}
+\definecolor{sdrefuted}{rgb}{0.75,0.05,0.05}
+\definecolor{sdcorrected}{rgb}{0.75,0.4,0.0}
+\definecolor{sderror}{rgb}{0.45,0.0,0.45}
+
+% Paragraphs with long inline formulas may stretch rather than run into the margin.
+\setlength{\emergencystretch}{3em}
+\setlength{\parindent}{0pt}
+\setlength{\parskip}{0.5\baselineskip}
+% A derivation longer than a page may continue on the next one.
+\allowdisplaybreaks
+% Room between the rows of matrices, whose fractions are set in text style.
+\renewcommand{\arraystretch}{1.3}
+
+% A status, coloured.
+\newcommand{\status}[1]{\textcolor{sd#1}{\textbf{#1}}}
+% The heading of one claim, with a target for the summary table.
+\newcommand{\claimheading}[3]{\subsubsection*{\phantomsection\label{#1}#2\quad #3}}
+% A finding about the paper (refuted, corrected) or a failed check: a coloured box.
+\newcommand{\finding}[3]{\par\noindent\fcolorbox{#1}{#1!7}{%
+  \begin{minipage}{\dimexpr\linewidth-2\fboxsep-2\fboxrule\relax}%
+  \setlength{\parskip}{0.4\baselineskip}\textcolor{#1}{\textbf{#2}}\par #3\end{minipage}}\par}
+% The last resort for a formula that cannot be broken: shrink it, only if too wide.
+\newsavebox{\sdbox}
+\newlength{\sdmaxwidth}
+\newcommand{\fitwidth}[1]{\setlength{\sdmaxwidth}{\dimexpr\linewidth-2em\relax}%
+  \savebox{\sdbox}{$\displaystyle #1$}%
+  \ifdim\wd\sdbox>\sdmaxwidth\resizebox{\sdmaxwidth}{!}{\usebox{\sdbox}}\else\usebox{\sdbox}\fi}
+"""
+
+# --------------------------------------------------------------------------------------
+# Text
+
+
+_TEXT_ESCAPES = {
+    "\\": r"\textbackslash{}",
+    "{": r"\{",
+    "}": r"\}",
+    "&": r"\&",
+    "%": r"\%",
+    "#": r"\#",
+    "_": r"\_\allowbreak{}",  # long identifiers may break after an underscore
+    "$": r"\$",
+    "^": r"\textasciicircum{}",
+    "~": r"\textasciitilde{}",
+    "<": r"\textless{}",
+    ">": r"\textgreater{}",
+    "|": r"\textbar{}",
+}
+
+# Unicode that the default fonts of pdflatex cannot set directly, as math.
+_UNICODE_MATH = {
+    "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon",
+    "ζ": r"\zeta", "η": r"\eta", "θ": r"\theta", "ι": r"\iota", "κ": r"\kappa", "λ": r"\lambda",
+    "μ": r"\mu", "ν": r"\nu", "ξ": r"\xi", "π": r"\pi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau",
+    "υ": r"\upsilon", "φ": r"\varphi", "χ": r"\chi", "ψ": r"\psi", "ω": r"\omega",
+    "Γ": r"\Gamma", "Δ": r"\Delta", "Θ": r"\Theta", "Λ": r"\Lambda", "Ξ": r"\Xi", "Π": r"\Pi",
+    "Σ": r"\Sigma", "Φ": r"\Phi", "Ψ": r"\Psi", "Ω": r"\Omega",
+    "≤": r"\leq", "≥": r"\geq", "≠": r"\neq", "≈": r"\approx", "→": r"\to", "←": r"\leftarrow",
+    "⇒": r"\Rightarrow", "↦": r"\mapsto", "×": r"\times", "·": r"\cdot", "−": "-", "±": r"\pm",
+    "∞": r"\infty", "√": r"\surd", "∑": r"\sum", "∏": r"\prod", "∈": r"\in", "∉": r"\notin",
+    "⊂": r"\subset", "∪": r"\cup", "∩": r"\cap", "ℓ": r"\ell", "∂": r"\partial", "∇": r"\nabla",
+    "≡": r"\equiv", "∼": r"\sim", "°": r"^\circ", "′": r"'", "…": r"\ldots", "⋯": r"\cdots",
+    "²": "^2", "³": "^3", "¹": "^1", "⁰": "^0", "₀": "_0", "₁": "_1", "₂": "_2", "₃": "_3",
+}
+_UNICODE_TEXT = {
+    "–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "”": "''", "\u00a0": "~",
+    "…": r"\ldots{}", "•": r"\textbullet{}", "§": r"\S{}",
+}
+
+# Inline formulas wider than this (em) are set as displays instead (they cannot break).
+_INLINE_LIMIT = 0.6 * LINE_WIDTH_EM
+
+
+def _unicode_in_text(ch: str) -> str:
+    if ch in _UNICODE_TEXT:
+        return _UNICODE_TEXT[ch]
+    if ch in _UNICODE_MATH:
+        return "$" + _UNICODE_MATH[ch] + "$"
+    if ord(ch) < 128 or ch.isalpha() and ord(ch) < 0x250:
+        return ch  # ASCII and Latin letters with accents: inputenc handles them
+    return r"\texttt{[U+%04X]}" % ord(ch)
+
+
+def _escape_word(word: str) -> str:
+    out = "".join(_TEXT_ESCAPES.get(ch) or _unicode_in_text(ch) for ch in word)
+    if len(word) > 16:
+        # a long "word" such as [[1,2],[3,4]] or n=3..16 may break after its punctuation
+        out = re.sub(r"([,;/=\])]|\.\.)(?=.)", r"\1\\allowbreak{}", out)
+    return out
+
+
+def _escape_text(text: str) -> str:
+    out = "".join(_escape_word(word) for word in re.split(r"(\s+)", text))
+    # "Eq. 5" is not the end of a sentence: a normal, unbreakable space
+    return re.sub(r"\b(Eqs?|Props?|Figs?|Secs?|cf|e\.g|i\.e|resp|vs)\. (?=\S)", r"\1.~", out)
+
+
+def _clean_math(tex: str) -> str:
+    """Inline math written by a claim's author, made safe: no comments, tabs or raw Unicode."""
+    # & separates cells inside an environment (pmatrix, cases...); elsewhere it is a character
+    specials = "%#" if "\\begin" in tex else "%#&"
+    out = []
+    for i, ch in enumerate(tex):
+        escaped = i > 0 and tex[i - 1] == "\\"
+        if ch in specials and not escaped:
+            out.append("\\" + ch)
+        elif ch in _UNICODE_MATH:
+            out.append(_UNICODE_MATH[ch] + " ")
+        elif ord(ch) >= 128:
+            out.append(r"\text{%s}" % _unicode_in_text(ch))
+        elif ch == "\n":
+            out.append(" ")
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
+def text_latex(text: str, *, displays: bool = True) -> str:
+    """Prose as LaTeX: special characters escaped, inline math between ``$`` kept.
+
+    An inline formula too wide to sit in a line of text becomes a displayed one (unless
+    ``displays`` is false, e.g. in a table cell). An unmatched ``$`` is a dollar sign.
+
+    >>> print(text_latex("50% of a & b: $\\\\omega_n^j$"))
+    50\\% of a \\& b: $\\omega_n^j$
+    >>> print(text_latex("costs $5"))
+    costs \\$5
+    """
+    if "$$" in text:  # displayed math written as $$...$$
+        chunks = re.split(r"(?<!\\)\$\$(.*?)(?<!\\)\$\$", text, flags=re.S)
+        if len(chunks) > 1:
+            return "".join(
+                text_latex(chunk, displays=displays) if k % 2 == 0
+                else ("\n\\[\n\\fitwidth{%s}\n\\]\n" % _clean_math(chunk).strip() if displays else "$%s$" % _clean_math(chunk))
+                for k, chunk in enumerate(chunks)
+            )
+    parts = re.split(r"(?<!\\)\$", text)
+    if len(parts) % 2 == 0:  # an odd number of $: the last one is a dollar sign
+        parts[-2:] = [parts[-2] + "$" + parts[-1]]
+    out = []
+    for k, part in enumerate(parts):
+        if k % 2 == 0:
+            out.append(_escape_text(part.replace("\\$", "$")))
+            continue
+        math = _clean_math(part)
+        if not math.strip():
+            continue
+        if displays and estimate_width(math) > _INLINE_LIMIT:
+            out.append("\n\\[\n\\fitwidth{%s}\n\\]\n" % math.strip())
+        else:
+            out.append("$" + math + "$")
+    return "".join(out)
+
+
+# --------------------------------------------------------------------------------------
+# Displayed formulas
+
+#: A piece that would have to be shrunk more than this many times is not printed (a notice is).
+_ILLEGIBLE = 12
+
+_RELATIONS = {"==": "=", "!=": r"\neq", "<": "<", "<=": r"\leq", ">": ">", ">=": r"\geq"}
+
+
+def _math_pieces(obj, budget: float) -> list[Piece]:
+    """Breakable pieces of a mathematical object (a raw string is LaTeX already)."""
+    if isinstance(obj, str):
+        return [Piece.of(obj)]
+    if isinstance(obj, (tuple, list)) and not isinstance(obj, sp.Basic):
+        try:
+            obj = sp.Tuple(*obj)
+        except (sp.SympifyError, TypeError):
+            return [Piece.of(aslatex(obj))]
+    if isinstance(obj, sp.MatrixBase) and not isinstance(obj, sp.Basic):
+        obj = sp.ImmutableMatrix(obj)
+    if isinstance(obj, (int, float, complex, Fraction)):
+        obj = sp.sympify(obj)
+    return break_pieces(obj, budget)
+
+
+def _lines(lhs, rel: str, rhs, budget: float = LINE_WIDTH_EM) -> list[str]:
+    """``lhs rel rhs`` (or just ``rhs``) cut into lines of at most ``budget`` em."""
+    pieces: list[Piece] = []
+    if lhs is not None:
+        pieces = _math_pieces(lhs, budget)
+        rhs_pieces = _math_pieces(rhs, budget - 2)
+        first = rhs_pieces[0]
+        pieces.append(Piece(" " + rel + " " + first.tex, first.width + 1.4))
+        pieces.extend(rhs_pieces[1:])
+    else:
+        pieces = _math_pieces(rhs, budget)
+    lines = []
+    for line in pack_lines(pieces, budget):
+        line = line.strip()
+        width = estimate_width(line)
+        if width > _ILLEGIBLE * budget:
+            # shrunk to fit it would be unreadable (and beyond TeX's largest dimension)
+            line = r"\text{\itshape [a formula %d times as wide as a line, not printed: split it into smaller steps]}" % round(width / budget)
+        elif width > budget:
+            line = r"\fitwidth{%s}" % line
+        elif line[:1] in "+-=<>" or line.startswith(r"\cdot"):
+            line = "{} " + line  # keep binary spacing at the start of a continued line
+        lines.append(line)
+    return lines
+
+
+def _environment(lines: list[str]) -> str:
+    if len(lines) == 1:
+        return "\\[\n" + lines[0] + "\n\\]\n"
+    return "\\begin{multline*}\n" + " \\\\\n".join(lines) + "\n\\end{multline*}\n"
+
+
+def _split(expr, lhs, rel: str = "="):
+    """(lhs, relation symbol, rhs) of a step: a sympy relation is split at its operator."""
+    if lhs is None and isinstance(expr, sp.Rel):
+        return expr.lhs, _RELATIONS.get(expr.rel_op, sp.latex(expr).split()[0]), expr.rhs
+    return lhs, rel, expr
+
+
+def _entry_symbol(r: int, c: int, shape) -> sp.Symbol:
+    sep = "," if max(shape) > 9 else ""
+    return sp.Symbol("m_{%d%s%d}" % (r + 1, sep, c + 1))
+
+
+def _matrix_display(lhs, rel: str, matrix: sp.MatrixBase) -> str:
+    """A matrix too wide for a line: its longest entries are named and listed below it."""
+    matrix = sp.ImmutableMatrix(matrix)
+    prefix = "" if lhs is None else (lhs if isinstance(lhs, str) else sp.latex(lhs)) + " " + rel + " "
+    budget = LINE_WIDTH_EM - estimate_width(prefix)
+    entries = sorted(
+        ((-estimate_width(sp.latex(matrix[r, c])), r, c) for r in range(matrix.rows) for c in range(matrix.cols)),
+    )
+    shown = matrix.as_mutable()
+    named = []
+    for negative_width, r, c in entries:
+        if estimate_width(sp.latex(shown)) <= budget or -negative_width <= 2.0:
+            break
+        shown[r, c] = _entry_symbol(r, c, matrix.shape)
+        named.append((r, c))
+    if not named or estimate_width(sp.latex(shown)) > budget:
+        # many columns of short entries: naming entries does not help; shrink (last resort)
+        return _environment([r"\fitwidth{%s}" % (prefix + sp.latex(matrix))])
+    head = _environment(_lines(lhs, rel, sp.ImmutableMatrix(shown)))
+    rows = [(_entry_symbol(r, c, matrix.shape), matrix[r, c]) for r, c in sorted(named)]
+    return head + "where\n" + _rows_display(rows)
+
+
+def _is_name(key) -> bool:
+    """Whether a mapping's key names its value (``x = 1``) rather than maps to it (``2 \\mapsto 1``)."""
+    if isinstance(key, str):
+        return True
+    if isinstance(key, (sp.Symbol, sp.Indexed, sp.MatrixSymbol, sp.IndexedBase)):
+        return True
+    return isinstance(key, sp.Function) and isinstance(key.func, sp.core.function.UndefinedFunction)
+
+
+def _mapping_rows(mapping: Mapping) -> tuple[list, str]:
+    """The rows of a mapping and their relation: names in the given order (``x = 1``);
+    anything else, e.g. eigenvalues with multiplicities, in sympy's sort order (``2 \\mapsto 1``)."""
+    items = list(mapping.items())
+    if all(_is_name(k) for k, _ in items):
+        return items, "="
+    return sorted(items, key=lambda kv: sp.default_sort_key(kv[0])), r"\mapsto"
+
+
+def _rows_display(rows: Sequence[tuple[object, object]], rel: str = "=") -> str:
+    """Equations ``lhs = rhs``: the short ones aligned together, the long ones broken."""
+    out, group = [], []
+
+    def flush():
+        if group:
+            out.append("\\begin{align*}\n" + " \\\\\n".join(group) + "\n\\end{align*}\n")
+            group.clear()
+
+    for lhs, rhs in rows:
+        lines = _lines(lhs, rel, rhs) if not isinstance(rhs, (sp.MatrixBase, Mapping, str)) else None
+        if lines is not None and len(lines) == 1 and not lines[0].startswith(r"\fitwidth"):
+            left = lhs if isinstance(lhs, str) else sp.latex(lhs)
+            group.append(left + " &" + rel + " " + sp.latex(rhs))
+        else:
+            flush()
+            out.append(display_math(rhs, lhs, rel=rel))
+    flush()
+    return "".join(out)
+
+
+def display_math(expr, lhs=None, *, rel: str = "=") -> str:
+    """``expr`` (or ``lhs = expr``) as a displayed formula that fits in the text width.
+
+    A formula wider than a line is set in ``multline*``, broken between the terms of its
+    sums (and inside long products and fractions); a wide matrix has its long entries
+    named and listed below it; a mapping becomes aligned equations. Only a piece that has
+    no place to break is shrunk (``\\fitwidth``), as a last resort.
+
+    >>> from sympy.abc import x
+    >>> print(display_math(x**2, lhs="f(x)"), end="")
+    \\[
+    f(x) = x^{2}
+    \\]
+    """
+    if isinstance(expr, Mapping):
+        return _rows_display(*_mapping_rows(expr))
+    if isinstance(expr, str):
+        return text_latex(expr) + "\n"
+    lhs, rel, rhs = _split(expr, lhs, rel)
+    if isinstance(rhs, sp.MatrixBase):
+        prefix = "" if lhs is None else (lhs if isinstance(lhs, str) else sp.latex(lhs)) + " " + rel + " "
+        if estimate_width(prefix + sp.latex(rhs)) > LINE_WIDTH_EM:
+            return _matrix_display(lhs, rel, rhs)
+    return _environment(_lines(lhs, rel, rhs))
+
+
+# --------------------------------------------------------------------------------------
+# aslatex
+
+
+@functools.singledispatch
+def aslatex(obj) -> str:
+    """LaTeX for ``obj``: the one entry point used by the documents, notebooks and CLI.
+
+    >>> import sympy as sp
+    >>> aslatex(sp.Rational(3, 8) + sp.Symbol("alpha"))
+    '\\\\alpha + \\\\frac{3}{8}'
+    >>> print(aslatex({sp.Symbol("x"): 1, sp.Symbol("y"): sp.sqrt(2)}))
+    \\begin{aligned}
+    x &= 1 \\\\
+    y &= \\sqrt{2}
+    \\end{aligned}
+    """
+    raise TypeError(f"aslatex cannot render a {type(obj).__name__}")
+
+
+@aslatex.register(sp.Basic)
+@aslatex.register(sp.MatrixBase)
+@aslatex.register(int)
+@aslatex.register(float)
+@aslatex.register(complex)
+@aslatex.register(tuple)
+@aslatex.register(list)
+@aslatex.register(set)
+@aslatex.register(frozenset)
+def _(obj) -> str:
+    return sp.latex(obj)
+
+
+@aslatex.register(Fraction)
+def _(obj: Fraction) -> str:
+    return sp.latex(sp.Rational(obj.numerator, obj.denominator))
+
+
+@aslatex.register(str)
+def _(obj: str) -> str:
+    return text_latex(obj)
+
+
+@aslatex.register(Mapping)
+def _(obj: Mapping) -> str:
+    items, rel = _mapping_rows(obj)
+    rows = [(k if isinstance(k, str) else aslatex(k)) + " &" + rel + " " + aslatex(v) for k, v in items]
+    return "\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}"
+
+
+@aslatex.register(Status)
+def _(obj: Status) -> str:
+    return r"\status{%s}" % obj.value
+
+
+@aslatex.register(Step)
+def _(obj: Step) -> str:
+    out = text_latex(obj.text).strip() + "\n" if obj.text else ""
+    if obj.expr is not None:
+        try:
+            out += display_math(obj.expr, obj.lhs)
+        except Exception as exc:  # sympy's printer has gaps; say so in the document, visibly
+            message = f"sympy could not print this {type(obj.expr).__name__}: {type(exc).__name__}: {exc}"
+            out += "\\finding{sderror}{Not printed}{%s}\n" % text_latex(message, displays=False)
+    return out
+
+
+def _scope(result: CheckResult) -> str:
+    """What the status rests on: the valences, the digits."""
+    if result.valences is not None:
+        lo, hi = result.valences
+        return f" (exactly, for $n = {lo}, \\dots, {hi}$)" if hi > lo else f" (exactly, for $n = {lo}$)"
+    if result.digits is not None:
+        return f" (to {result.digits} significant digits)"
+    return ""
+
+
+@aslatex.register(CheckResult)
+def _(obj: CheckResult) -> str:
+    evidence = text_latex(obj.evidence).strip()
+    if obj.status in (Status.REFUTED, Status.CORRECTED, Status.ERROR):
+        heading = {
+            Status.REFUTED: "Refuted: the claim is false as printed.",
+            Status.CORRECTED: "Corrected: the claim is false as printed; the corrected statement is proved.",
+            Status.ERROR: "Error: the check failed to run (this says nothing about the paper).",
+        }[obj.status]
+        body = [evidence + _scope(obj)]
+        if obj.counterexample:
+            body.append(r"\textbf{Counterexample.} " + text_latex(obj.counterexample).strip())
+        if obj.correction:
+            body.append(r"\textbf{Corrected statement.} " + text_latex(obj.correction).strip())
+        out = "\\finding{sd%s}{%s}{%%\n%s}\n" % (obj.status.value, heading, "\\par\n".join(body))
+    else:
+        out = "\\textbf{Status:} %s. %s%s\n" % (aslatex(obj.status), evidence, _scope(obj))
+    if obj.steps:
+        out += "\n\\textbf{Derivation.}\\par\\nopagebreak\n" + "\n".join(aslatex(step) for step in obj.steps)
+    return out
+
+
+def _one_line(text: str) -> str:
+    """Text for a heading or a table cell: one line, no displayed formulas."""
+    return text_latex(" ".join(text.split()), displays=False)
+
+
+def _anchor(label: str) -> str:
+    return "claim:" + re.sub(r"[^a-z0-9]+", "-", label.lower()).strip("-")
+
+
+def _label_text(label: str) -> str:
+    """``Eq. 43`` -> ``Eq.~43``: a label never breaks before its number."""
+    return re.sub(r" (?=\d)", "~", _one_line(label))
+
+
+def _anchors(claims: Sequence[Claim]) -> dict[str, str]:
+    """A distinct cross-reference target for each claim (``Eq. 43`` -> ``claim:eq-43``)."""
+    anchors: dict[str, str] = {}
+    taken: set[str] = set()
+    for c in claims:
+        anchor, k = _anchor(c.label), 1
+        while anchor in taken:
+            k += 1
+            anchor = f"{_anchor(c.label)}-{k}"
+        anchors[c.label] = anchor
+        taken.add(anchor)
+    return anchors
+
+
+def claim_latex(claim: Claim, result: CheckResult, anchor: str | None = None) -> str:
+    """The entry of one claim: heading, statement as printed, status, derivation."""
+    return (
+        "\\claimheading{%s}{%s}{%s}\n" % (anchor or _anchor(claim.label), _label_text(claim.label), _one_line(claim.title))
+        + "\\textit{Statement, as printed.} %s\n\n" % text_latex(claim.statement).strip()
+        + aslatex(result)
+    )
+
+
+@aslatex.register(Claim)
+def _(obj: Claim) -> str:
+    return claim_latex(obj, check_claim(obj.label))
+
+
+# --------------------------------------------------------------------------------------
+# The document
+
+
+def section_file_name(section: str) -> str:
+    """The file holding a section's derivations: ``"5.1"`` -> ``"section-5-1.tex"``."""
+    return "section-" + section.replace(".", "-") + ".tex"
+
+
+def _section_key(section: str):
+    return tuple(int(p) if p.isdigit() else p for p in section.split("."))
+
+
+def _heading(section: str) -> str:
+    """``\\section``/``\\subsection`` numbered as in the paper."""
+    parts = section.split(".")
+    depth = min(len(parts), 3)
+    command = ("section", "subsection", "subsubsection")[depth - 1]
+    number = parts[min(len(parts), 3) - 1]
+    title = _one_line(SECTION_TITLES.get(section, f"Section {section}"))
+    counter = f"\\setcounter{{{command}}}{{{int(number) - 1}}}\n" if number.isdigit() else ""
+    return f"{counter}\\{command}{{{title}}}\n"
+
+
+def _summary(pairs: Sequence[tuple[Claim, CheckResult]], anchors: Mapping[str, str]) -> str:
+    counts: dict[str, int] = {}
+    for _, result in pairs:
+        counts[result.status.value] = counts.get(result.status.value, 0) + 1
+    order = [s.value for s in Status]
+    tally = ", ".join(f"{counts[s]} \\status{{{s}}}" for s in order if s in counts)
+    rows = []
+    for claim, result in pairs:
+        anchor = anchors[claim.label]
+        rows.append(
+            f"{_one_line(claim.section)} & \\hyperref[{anchor}]{{{_label_text(claim.label)}}} & "
+            f"{_one_line(claim.title)} & {aslatex(result.status)} & \\pageref{{{anchor}}} \\\\"
+        )
+    table = (
+        "\\begin{longtable}{@{}>{\\raggedright\\arraybackslash}p{0.07\\linewidth}"
+        ">{\\raggedright\\arraybackslash}p{0.17\\linewidth}"
+        ">{\\raggedright\\arraybackslash}p{0.47\\linewidth}"
+        ">{\\raggedright\\arraybackslash}p{0.13\\linewidth}r@{}}\n"
+        "\\toprule\nSec. & Claim & Title & Status & Page \\\\\n\\midrule\n\\endhead\n"
+        "\\bottomrule\n\\endfoot\n" + "\n".join(rows) + ("\n" if rows else "") + "\\end{longtable}\n"
+    )
+    return (
+        "\\section*{Summary of the claims}\n"
+        f"{len(pairs)} claims: {tally or 'none registered'}.\n"
+        "A claim is \\status{proved} when shown symbolically for every valence $n$, "
+        "\\status{verified} when shown in exact arithmetic for a stated range of $n$, "
+        "\\status{numeric} when it agrees to a stated number of digits; "
+        "\\status{refuted} and \\status{corrected} are findings about the paper as printed; "
+        "\\status{error} means that the check itself failed to run.\n\n" + table
+    )
+
+
+def wrap_source(tex: str, width: int = 100) -> str:
+    """Break long source lines at spaces (not after a backslash), keeping the typeset result.
+
+    TeX reads a newline as a space, and spaces in math are ignored, so this changes nothing
+    on the page; it keeps diffs of the committed files readable and every line far below
+    TeX's input buffer. Lines with a comment are left alone.
+
+    >>> wrap_source("a + b + c + d", width=6)
+    'a + b\\n+ c +\\nd'
+    """
+    out = []
+    for line in tex.split("\n"):
+        if re.search(r"(?<!\\)%", line):
+            out.append(line)
+            continue
+        while len(line) > width:
+            cut = next((i for i in range(width, 0, -1) if line[i] == " " and line[i - 1] not in " \\"), None)
+            if cut is None:
+                cut = next((i for i in range(width + 1, len(line)) if line[i] == " " and line[i - 1] not in " \\"), None)
+            if cut is None:
+                break
+            out.append(line[:cut])
+            line = line[cut + 1:]
+        out.append(line)
+    return "\n".join(out)
+
+
+GENERATED = "% Generated by `symdecomp derive` from the claims registry. Do not edit: regenerate.\n"
+
+
+def derivation_files(pairs: Sequence[tuple[Claim, CheckResult]]) -> dict[str, str]:
+    """The document: ``{file name: contents}``, ``main.tex`` and one file per section.
+
+    ``pairs`` are the claims with the results of their checks, in any order (they are
+    sorted in the paper's order). The result depends on nothing else.
+    """
+    pairs = sorted(pairs, key=lambda pair: pair[0].sort_key())
+    anchors = _anchors([c for c, _ in pairs])
+    sections: dict[str, list[tuple[Claim, CheckResult]]] = {}
+    for claim, result in pairs:
+        sections.setdefault(claim.section, []).append((claim, result))
+    files: dict[str, str] = {}
+    inputs = []
+    introduced: set[str] = set()
+    for section in sorted(sections, key=_section_key):
+        parts = section.split(".")
+        for depth in range(1, len(parts)):
+            parent = ".".join(parts[:depth])
+            if parent not in introduced and parent not in sections:
+                inputs.append(_heading(parent))
+            introduced.add(parent)
+        introduced.add(section)
+        name = section_file_name(section)
+        body = "\n".join(claim_latex(c, r, anchors[c.label]) for c, r in sections[section])
+        files[name] = GENERATED + _heading(section) + "\n" + wrap_source(body)
+        inputs.append("\\input{%s}\n" % name[: -len(".tex")])
+    files["main.tex"] = (
+        GENERATED
+        + PREAMBLE
+        + "\n\\title{Derivations and checks of the claims of\\\\[0.3em] \\emph{Polygonal decompositions of "
+        "quadrilateral subdivision meshes}}\n"
+        "\\author{Generated by symdecomp}\n\\date{}\n\n\\begin{document}\n\\maketitle\n\n"
+        "This appendix lists the claims of " + PAPER + ", section by section with the paper's "
+        "numbering, each with its statement as printed, the outcome of its check, and the "
+        "derivation computed by symdecomp (every formula is printed by sympy from the computed "
+        "objects). Claims the check found false as printed are marked in colour.\n\n"
+        + _summary(pairs, anchors)
+        + "\n"
+        + "".join(inputs)
+        + "\n\\end{document}\n"
+    )
+    return dict(sorted(files.items()))

@@ -1,0 +1,10 @@
+"""Subdivision schemes as data, and the matrices and meshes built from their rules.
+
+A scheme's rules (:mod:`.scheme`), the subdivision matrix of the 1-ring, symbolic and exact
+(:mod:`.matrices`), whole quad meshes refined by the scheme's rules (:mod:`.mesh`), and the
+1-ring as a polygon pair (:mod:`.ring`).
+"""
+
+from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix, vertex_order
+
+__all__ = ["Scheme", "Stencil", "VertexRule", "catmull_clark", "subdivision_matrix", "vertex_order"]

@@ -1,0 +1,227 @@
+"""The subdivision matrix in exact rational arithmetic (FLINT), built straight from the rules.
+
+:func:`symdecomp.schemes.scheme.subdivision_matrix` builds a sympy matrix: right for derivations,
+but a dense symbolic ``(2n+1) x (2n+1)`` matrix is slow and large at ``n = 256``. Here the
+same matrix is built as a ``flint.fmpq_mat``: each weight of the scheme is evaluated once at
+the valence (and at the given parameter values), then the rows are filled from the rules,
+entry by entry, exactly as :func:`~symdecomp.schemes.scheme.subdivision_matrix` does, without any
+circulant or block structure.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> S = exact_subdivision_matrix(catmull_clark(), 4)
+>>> S[0, 0], S[0, 1], S[0, 5]
+(9/16, 3/32, 1/64)
+>>> characteristic_polynomial(catmull_clark(), 3).degree()
+7
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Mapping
+
+import flint
+import sympy as sp
+
+from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
+from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.symbols import n as N
+
+__all__ = [
+    "parameter_values",
+    "exact_weight",
+    "sparse_subdivision_matrix",
+    "exact_subdivision_matrix",
+    "characteristic_polynomial",
+]
+
+
+def parameter_values(scheme: Scheme, parameters: Mapping | None) -> dict:
+    """Values for the scheme's free parameters as a sympy substitution (keys may be names).
+
+    Raises :class:`~symdecomp.errors.InvalidSchemeError` naming the parameters left without
+    a value or given a value that is not an exact number.
+    """
+    subs = {}
+    for key, value in dict(parameters or {}).items():
+        symbol = sp.Symbol(key) if isinstance(key, str) else key
+        match = [p for p in scheme.parameters if p == symbol or str(p) == str(symbol)]
+        if not match:
+            raise InvalidSchemeError(
+                f"scheme {scheme.name!r} has no parameter {key!s}; its parameters are {[str(p) for p in scheme.parameters]}"
+            )
+        expr = sp.sympify(value)
+        if expr.has(sp.Float):
+            raise InvalidSchemeError(f"parameter {key!s} = {value!r} is a float; give an exact value (e.g. sympy.Rational)")
+        subs[match[0]] = expr
+    missing = [str(p) for p in scheme.parameters if p not in subs]
+    if missing:
+        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {missing}; give their values")
+    return subs
+
+
+def exact_weight(weight: sp.Expr, n: int, subs: Mapping) -> flint.fmpq:
+    """One weight of a rule at valence ``n`` as an exact ``fmpq``."""
+    value = weight.subs({N: n, **subs}) if weight.free_symbols else weight
+    if not value.is_Rational and value.is_number:
+        value = sp.simplify(value)  # e.g. a parameter value written as an unevaluated expression
+    if not value.is_Rational:
+        raise InvalidSchemeError(
+            f"weight {weight} is not rational at n = {n} (it is {value}); the exact checks need rational weights"
+        )
+    return flint.fmpq(int(value.p), int(value.q))
+
+
+_RULE_CACHE: dict = {}
+
+
+def _weight_evaluator(scheme: Scheme, subs: Mapping):
+    """A function ``weight -> fmpq`` at a valence, compiled once per scheme (exact throughout).
+
+    Weights are rational functions of ``n`` and the parameters; they are compiled to exact
+    FLINT arithmetic. A weight that is not (e.g. with a square root of a parameter value) is
+    evaluated by sympy instead.
+    """
+    cached = _RULE_CACHE.get(id(scheme))
+    if cached is None or cached[0] is not scheme:
+        cached = (scheme, {})
+        _RULE_CACHE[id(scheme)] = cached
+    compiled = cached[1]
+    variables = (N, *scheme.parameters)
+    values = []
+    for p in scheme.parameters:
+        value = sp.sympify(subs[p])
+        values.append(flint.fmpq(int(value.p), int(value.q)) if value.is_Rational else None)
+
+    def at(n: int):
+        args = (flint.fmpq(n), *values)
+
+        def w(expr):
+            if None not in values:
+                if expr not in compiled:
+                    try:
+                        compiled[expr] = compile_expression(expr, variables, "fmpq")
+                    except UnsupportedExpressionError:
+                        compiled[expr] = None
+                f = compiled[expr]
+                if f is not None:
+                    try:
+                        return f(*args)
+                    except (UnsupportedExpressionError, ZeroDivisionError):
+                        pass
+            return exact_weight(expr, n, subs)
+
+        return w
+
+    return at
+
+
+def sparse_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None = None) -> dict:
+    """The nonzero entries ``{(row, column): fmpq}`` of the subdivision matrix, from the rules.
+
+    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})``, built entry by entry
+    as in :func:`symdecomp.schemes.scheme.subdivision_matrix`: ``O(n)`` entries, no block structure.
+    """
+    n = check_valence(n)
+    if n < scheme.minimum_valence():
+        subdivision_matrix(scheme, n)  # raises the error that names the problem
+    subs = parameter_values(scheme, parameters)
+    w = _weight_evaluator(scheme, subs)(n)
+    entries: dict = {}
+
+    def add(r, c, x):
+        value = entries.get((r, c), flint.fmpq(0)) + x
+        if value == 0:
+            entries.pop((r, c), None)
+        else:
+            entries[(r, c)] = value
+
+    v = scheme.vertex_rule
+    add(0, 0, w(v.center))
+    each_a, each_b = w(v.each_a), w(v.each_b)
+    for i in range(n):
+        add(0, 1 + i, each_a)
+        add(0, 1 + n + i, each_b)
+    for row_offset, rule in ((1, scheme.edge_rule), (1 + n, scheme.face_rule)):
+        center = w(rule.center)
+        a = [(k, w(x)) for k, x in rule.a]
+        b = [(k, w(x)) for k, x in rule.b]
+        for i in range(n):
+            r = row_offset + i
+            add(r, 0, center)
+            for k, x in a:
+                add(r, 1 + (i + k) % n, x)
+            for k, x in b:
+                add(r, 1 + n + (i + k) % n, x)
+    return entries
+
+
+def exact_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None = None) -> flint.fmpq_mat:
+    """The ``(2n+1) x (2n+1)`` subdivision matrix as a ``flint.fmpq_mat``, from the rules.
+
+    Equal entry for entry to :func:`symdecomp.schemes.scheme.subdivision_matrix` (the tests check
+    that). Memory is that of ``(2n+1)^2`` small rationals; no symbolic matrix is built.
+    """
+    size = 2 * check_valence(n) + 1
+    S = flint.fmpq_mat(size, size)
+    for (r, c), x in sparse_subdivision_matrix(scheme, n, parameters).items():
+        S[r, c] = x
+    return S
+
+
+def _lcm(values) -> int:
+    out = 1
+    for v in values:
+        v = int(v)
+        out = out * v // math.gcd(out, v)
+    return out
+
+
+def _divisors(m: int) -> list[int]:
+    small = [d for d in range(1, math.isqrt(m) + 1) if m % d == 0]
+    return sorted(set(small + [m // d for d in small]))
+
+
+def _balanced_integer_matrix(entries: dict, size: int) -> tuple[flint.fmpz_mat, int]:
+    """An integer matrix ``A`` and ``d`` with ``A = d * T S T^-1`` for a diagonal ``T``.
+
+    ``T`` scales row and column 0 (the central vertex, whose weights carry the ``1/n^2``
+    denominators) by the factor ``t`` that makes the common denominator ``d`` smallest.
+    A similarity leaves the characteristic polynomial unchanged, and the cost of FLINT's
+    exact characteristic polynomial grows with the bit size of ``d``.
+    """
+    row = {x for (r, c), x in entries.items() if r == 0 and c}
+    col = {x for (r, c), x in entries.items() if c == 0 and r}
+    den_rest = _lcm(x.q for (r, c), x in entries.items() if (r == 0) == (c == 0))
+    den_row = _lcm(x.q for x in row)
+
+    def common_denominator(t):
+        return _lcm([den_rest] + [(x * t).q for x in row] + [(x / t).q for x in col])
+
+    t = min((flint.fmpq(den_row, g) for g in _divisors(den_row)), key=lambda t: (common_denominator(t), t))
+    d = common_denominator(t)
+    A = flint.fmpz_mat(size, size)
+    for (r, c), x in entries.items():
+        if r == 0 and c:
+            x = x * t
+        elif c == 0 and r:
+            x = x / t
+        A[r, c] = (x * d).p
+    return A, d
+
+
+def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None = None) -> flint.fmpq_poly:
+    """``det(lambda I - S)`` of the full subdivision matrix, exactly (FLINT ``fmpz_mat.charpoly``).
+
+    Computed on ``d * T S T^-1`` (integer, see above) and rescaled:
+    ``chi_S(lambda) = d^-(2n+1) chi_A(d lambda)``. No block structure is used.
+    """
+    size = 2 * check_valence(n) + 1
+    A, d = _balanced_integer_matrix(sparse_subdivision_matrix(scheme, n, parameters), size)
+    p = A.charpoly()
+    coeffs = p.coeffs()
+    size = len(coeffs) - 1
+    d = flint.fmpz(d)
+    # coefficient of lambda^k in chi_S is c_k(A) * d^k / d^size
+    return flint.fmpq_poly([flint.fmpq(c * d**k, d**size) for k, c in enumerate(coeffs)])

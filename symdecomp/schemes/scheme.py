@@ -1,0 +1,257 @@
+"""A subdivision scheme as data: the stencils of its 1-ring rules (Eq. 14-16).
+
+A scheme of the shape the paper studies moves the 1-ring of a valence-``n`` vertex ``O``
+(edge neighbours ``a_i``, face neighbours ``b_i``, indices mod ``n``) by three affine rules:
+
+* the edge rule, for the new ``a_i``: a weight on ``O`` and weights on ``a_{i+k}``, ``b_{i+k}``
+  for a few offsets ``k``;
+* the face rule, for the new ``b_i``: the same shape;
+* the vertex rule, for the new ``O``: a weight on ``O`` and one weight shared by all ``a_i``
+  and one shared by all ``b_i``.
+
+Weights are sympy expressions: exact rationals, or expressions in the valence symbol
+``symdecomp.symbols.n`` and in free parameters (such as ``alpha``, ``beta``). Every rule is
+checked to be affine (its weights sum to 1, identically in ``n`` and the parameters) when
+the scheme is built.
+
+>>> cc = catmull_clark()
+>>> cc.vertex_rule.center
+1 - 7/(4*n)
+>>> subdivision_matrix(cc, 4)[0, :]
+Matrix([[9/16, 3/32, 3/32, 3/32, 3/32, 1/64, 1/64, 1/64, 1/64]])
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Mapping
+
+import sympy as sp
+
+from symdecomp.errors import InvalidSchemeError, NotAffineError, check_valence
+from symdecomp.symbols import alpha as ALPHA
+from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import n as N
+
+__all__ = [
+    "Stencil",
+    "VertexRule",
+    "Scheme",
+    "catmull_clark",
+    "subdivision_matrix",
+    "vertex_order",
+]
+
+
+def _sympify_weight(value, where: str) -> sp.Expr:
+    try:
+        expr = sp.sympify(value, strict=True) if not isinstance(value, sp.Basic) else value
+    except (sp.SympifyError, TypeError) as exc:
+        raise InvalidSchemeError(f"{where}: weight {value!r} is not a number or sympy expression") from exc
+    if isinstance(expr, sp.Float) or expr.has(sp.Float):
+        raise InvalidSchemeError(
+            f"{where}: weight {value!r} is a float; give exact rationals (e.g. sympy.Rational(3, 8))"
+        )
+    if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise InvalidSchemeError(f"{where}: weight {value!r} is not finite")
+    return expr
+
+
+def _weights(mapping: Mapping[int, object], where: str) -> tuple[tuple[int, sp.Expr], ...]:
+    out = []
+    for k, w in sorted(dict(mapping).items()):
+        if isinstance(k, bool) or not isinstance(k, int):
+            raise InvalidSchemeError(f"{where}: offset {k!r} is not an integer")
+        expr = _sympify_weight(w, f"{where}[{k}]")
+        if expr != 0:
+            out.append((k, expr))
+    return tuple(out)
+
+
+@dataclass(frozen=True)
+class Stencil:
+    """An affine rule for a new 1-ring point ``p_i`` (Eq. 14 or Eq. 15).
+
+    ``p_i -> center*O + sum_k a[k]*a_{i+k} + sum_k b[k]*b_{i+k}``, indices mod ``n``.
+    """
+
+    #: Weight on the central vertex ``O``.
+    center: sp.Expr
+    #: Pairs ``(k, weight)``: the weight on ``a_{i+k}``, sorted by offset.
+    a: tuple[tuple[int, sp.Expr], ...]
+    #: Pairs ``(k, weight)``: the weight on ``b_{i+k}``, sorted by offset.
+    b: tuple[tuple[int, sp.Expr], ...]
+
+    @classmethod
+    def from_weights(cls, center, a: Mapping[int, object], b: Mapping[int, object], *, name: str = "rule") -> "Stencil":
+        """Build a stencil and check that it is affine."""
+        stencil = cls(_sympify_weight(center, f"{name}: center"), _weights(a, f"{name}: a"), _weights(b, f"{name}: b"))
+        total = sp.simplify(stencil.weight_sum() - 1)
+        if total != 0:
+            raise NotAffineError(
+                f"{name} is not affine: its weights sum to {sp.simplify(stencil.weight_sum())}, not 1"
+            )
+        return stencil
+
+    def weight_sum(self) -> sp.Expr:
+        """The sum of all weights (1 for an affine rule)."""
+        return self.center + sum((w for _, w in self.a), sp.Integer(0)) + sum((w for _, w in self.b), sp.Integer(0))
+
+    def offsets(self) -> tuple[int, ...]:
+        return tuple(sorted({k for k, _ in self.a} | {k for k, _ in self.b}))
+
+
+@dataclass(frozen=True)
+class VertexRule:
+    """The rule for the new central vertex (Eq. 16, in affine form).
+
+    ``O -> center*O + each_a * sum_i a_i + each_b * sum_i b_i``. Affine means
+    ``center + n*each_a + n*each_b = 1`` identically.
+    """
+
+    #: Weight on ``O``.
+    center: sp.Expr
+    #: Weight on each edge neighbour ``a_i`` (the paper's ``alpha``).
+    each_a: sp.Expr
+    #: Weight on each face neighbour ``b_i`` (the paper's ``beta``).
+    each_b: sp.Expr
+
+    @classmethod
+    def from_weights(cls, center, each_a, each_b, *, name: str = "vertex rule") -> "VertexRule":
+        rule = cls(
+            _sympify_weight(center, f"{name}: center"),
+            _sympify_weight(each_a, f"{name}: each_a"),
+            _sympify_weight(each_b, f"{name}: each_b"),
+        )
+        total = sp.simplify(rule.weight_sum() - 1)
+        if total != 0:
+            raise NotAffineError(
+                f"{name} is not affine: center + n*each_a + n*each_b = {sp.simplify(rule.weight_sum())}, not 1"
+            )
+        return rule
+
+    @classmethod
+    def affine(cls, each_a, each_b, *, name: str = "vertex rule") -> "VertexRule":
+        """The affine vertex rule with the given weights: ``center = 1 - n*each_a - n*each_b``."""
+        a = _sympify_weight(each_a, f"{name}: each_a")
+        b = _sympify_weight(each_b, f"{name}: each_b")
+        return cls.from_weights(sp.expand(1 - N * a - N * b), a, b, name=name)
+
+    def weight_sum(self) -> sp.Expr:
+        return self.center + N * self.each_a + N * self.each_b
+
+
+@dataclass(frozen=True)
+class Scheme:
+    """A subdivision scheme on the 1-ring of a quad mesh, given by its three rules."""
+
+    #: A short name, used in reports.
+    name: str
+    #: The rule for the new edge neighbours ``a_i`` (Eq. 14 for Catmull-Clark).
+    edge_rule: Stencil
+    #: The rule for the new face neighbours ``b_i`` (Eq. 15 for Catmull-Clark).
+    face_rule: Stencil
+    #: The rule for the new ``O`` (Eq. 16).
+    vertex_rule: VertexRule
+    #: Free parameters of the scheme (symbols other than ``n`` in its weights).
+    parameters: tuple[sp.Symbol, ...] = field(default=())
+
+    def __post_init__(self):
+        free = set()
+        for rule in (self.edge_rule, self.face_rule):
+            free |= rule.center.free_symbols
+            for _, w in rule.a + rule.b:
+                free |= w.free_symbols
+        for w in (self.vertex_rule.center, self.vertex_rule.each_a, self.vertex_rule.each_b):
+            free |= w.free_symbols
+        free.discard(N)
+        declared = set(self.parameters)
+        if free - declared:
+            object.__setattr__(
+                self, "parameters", tuple(self.parameters) + tuple(sorted(free - declared, key=str))
+            )
+        span = max(self.edge_rule.offsets() + self.face_rule.offsets()) - min(
+            self.edge_rule.offsets() + self.face_rule.offsets()
+        )
+        object.__setattr__(self, "_span", span)
+
+    def minimum_valence(self) -> int:
+        """The smallest valence for which the stencil offsets are distinct mod ``n`` (at least 3)."""
+        return max(3, self._span + 1)
+
+    def substitute(self, values: Mapping[sp.Symbol, object], *, name: str | None = None) -> "Scheme":
+        """The scheme with some parameters replaced (e.g. tuned vertex weights)."""
+        subs = {k: sp.sympify(v) for k, v in values.items()}
+
+        def st(rule: Stencil, label: str) -> Stencil:
+            return Stencil.from_weights(
+                rule.center.subs(subs), {k: w.subs(subs) for k, w in rule.a}, {k: w.subs(subs) for k, w in rule.b}, name=label
+            )
+
+        v = self.vertex_rule
+        return Scheme(
+            name or self.name,
+            st(self.edge_rule, "edge rule"),
+            st(self.face_rule, "face rule"),
+            VertexRule.from_weights(v.center.subs(subs), v.each_a.subs(subs), v.each_b.subs(subs)),
+            tuple(p for p in self.parameters if p not in subs),
+        )
+
+
+def catmull_clark(alpha=None, beta=None) -> Scheme:
+    """Catmull-Clark on the 1-ring (Eq. 14-16), with the vertex-rule weights as parameters.
+
+    With no arguments the standard weights ``alpha = 3/(2n^2)``, ``beta = 1/(4n^2)``; pass
+    ``symdecomp.symbols.alpha, symdecomp.symbols.beta`` (or any expressions) to keep them free.
+    The weight of ``O`` is ``1 - n*alpha - n*beta`` so that the rule is affine (Eq. 16 as printed
+    has ``1 - alpha - beta``; see the claim "Eq. 16").
+
+    >>> catmull_clark(ALPHA, BETA).vertex_rule.center
+    -alpha*n - beta*n + 1
+    """
+    standard = alpha is None and beta is None
+    if alpha is None:
+        alpha = sp.Rational(3, 2) / N**2
+    if beta is None:
+        beta = sp.Rational(1, 4) / N**2
+    R = sp.Rational
+    edge = Stencil.from_weights(R(3, 8), {-1: R(1, 16), 0: R(3, 8), 1: R(1, 16)}, {-1: R(1, 16), 0: R(1, 16)}, name="edge rule (Eq. 14)")
+    face = Stencil.from_weights(R(1, 4), {0: R(1, 4), 1: R(1, 4)}, {0: R(1, 4)}, name="face rule (Eq. 15)")
+    vertex = VertexRule.affine(alpha, beta, name="vertex rule (Eq. 16)")
+    return Scheme("catmull-clark" if standard else "catmull-clark (tuned vertex rule)", edge, face, vertex)
+
+
+def vertex_order(n: int) -> tuple[str, ...]:
+    """Names of the rows/columns of the subdivision matrix: ``O, a_0..a_{n-1}, b_0..b_{n-1}``."""
+    n = check_valence(n)
+    return ("O",) + tuple(f"a_{i}" for i in range(n)) + tuple(f"b_{i}" for i in range(n))
+
+
+def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:
+    """The exact ``(2n+1) x (2n+1)`` subdivision matrix of ``scheme`` at valence ``n``.
+
+    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` (Section 6). Built entry
+    by entry from the rules, without any circulant structure.
+    """
+    n = check_valence(n)
+    if n < scheme.minimum_valence():
+        raise InvalidSchemeError(
+            f"scheme {scheme.name!r} has stencils {scheme._span + 1} wide, wider than the valence n = {n}"
+        )
+    size = 2 * n + 1
+    S = sp.zeros(size, size)
+    v = scheme.vertex_rule
+    S[0, 0] = v.center.subs(N, n)
+    for i in range(n):
+        S[0, 1 + i] = v.each_a.subs(N, n)
+        S[0, 1 + n + i] = v.each_b.subs(N, n)
+    for row_offset, rule in ((1, scheme.edge_rule), (1 + n, scheme.face_rule)):
+        for i in range(n):
+            r = row_offset + i
+            S[r, 0] += rule.center.subs(N, n)
+            for k, w in rule.a:
+                S[r, 1 + (i + k) % n] += w.subs(N, n)
+            for k, w in rule.b:
+                S[r, 1 + n + (i + k) % n] += w.subs(N, n)
+    return sp.ImmutableMatrix(S)
+

@@ -1,0 +1,6 @@
+"""Independent checks of the closed forms against the full matrices.
+
+Numeric (:mod:`.numeric`, mpmath at raised precision until the answer stops moving),
+certified (:mod:`.certify`, FLINT exact characteristic polynomials and Arb balls), and the
+OpenSubdiv oracle (:mod:`.oracle`, through the bridge in :mod:`.opensubdiv`).
+"""

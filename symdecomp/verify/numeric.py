@@ -1,0 +1,321 @@
+"""Independent numeric spectra of the full subdivision matrix, matched with the closed forms.
+
+The ``(2n+1) x (2n+1)`` matrix is built from the scheme's rules (no block structure) and its
+eigenvalues are computed by mpmath's QR algorithm (``mpmath.eig``) at a working precision of
+more than the requested ``dps`` digits. They are matched with the closed-form eigenvalues
+(:mod:`symdecomp.analysis.closed_forms`) *with multiplicities*:
+
+* every numeric eigenvalue goes to the nearest distinct closed-form value; each distinct
+  value must receive exactly as many as its multiplicity (``n = 4`` has ``1/4`` three
+  times: from ``k = 0`` and twice from ``k = n/2 = 2``, where ``M_k = I/4``);
+* a value is compared through the *mean* of the eigenvalues it received. A defective
+  eigenvalue (a Jordan block, e.g. of the Eq. 43 block for the weights of
+  :mod:`symdecomp.analysis.defective`) splits under rounding into a cluster of radius about the
+  square root of the working precision, but the mean of the cluster is accurate to the
+  working precision. The cluster radius is reported as ``spread``;
+* the computation is repeated at a higher precision until the matched means stop moving
+  (agree to ``dps + 2`` digits). If they never do within ``max_dps``, the result is
+  ``not converged``, which is a failure: an unconverged comparison never passes.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> r = numeric_check(catmull_clark(), 4, dps=20)
+>>> r.status.value, [(m.text, m.multiplicity) for m in r.matches][:3]
+('agree', [('1.0', 1), ('0.5', 2), ('0.25', 3)])
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+from typing import Callable, Mapping
+
+import mpmath
+
+from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
+from symdecomp.errors import check_valence
+from symdecomp.schemes.matrices import parameter_values, sparse_subdivision_matrix
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.analysis.spectrum import format_value
+
+__all__ = ["CheckStatus", "EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
+
+
+class CheckStatus(str, enum.Enum):
+    """The outcome of a cross-check at one valence."""
+
+    #: The closed forms agree with the full matrix (to ``dps`` digits, or exactly if certified).
+    AGREE = "agree"
+    #: They do not: the message names the valence and the eigenvalue.
+    DISAGREE = "disagree"
+    #: The numeric spectrum did not stop moving within the precision limit: no verdict (a failure).
+    NOT_CONVERGED = "not converged"
+    #: Certified mode could neither prove nor refute (a failure).
+    UNDECIDED = "undecided"
+
+
+@dataclass(frozen=True)
+class EigenvalueMatch:
+    """One distinct closed-form eigenvalue and the numeric eigenvalues matched with it."""
+
+    #: The closed-form value (mpmath number at the working precision).
+    value: object
+    #: The value as a decimal string (``dps`` significant digits).
+    text: str
+    #: How many closed-form eigenvalues have this value.
+    multiplicity: int
+    #: Where they come from (frequency ``k`` and which closed form).
+    labels: tuple[ClosedFormLabel, ...]
+    #: How many eigenvalues of the full matrix were nearest to it.
+    matched: int
+    #: ``|mean of the matched eigenvalues - value|`` (distance to the nearest eigenvalue if none matched).
+    deviation: object
+    #: ``max |matched eigenvalue - value|``: about ``eps^(1/m)`` for an ``m x m`` Jordan block.
+    spread: object
+
+    def describe(self) -> str:
+        ks = sorted({lab.frequency for lab in self.labels})
+        kinds = sorted({lab.label for lab in self.labels})
+        return f"{self.text} ({'; '.join(kinds)}; k = {', '.join(map(str, ks))}; multiplicity {self.multiplicity})"
+
+
+@dataclass(frozen=True)
+class NumericCheck:
+    """The numeric cross-check of one valence."""
+
+    #: The valence.
+    n: int
+    #: The scheme's name.
+    scheme: str
+    #: Digits to which the closed forms must agree.
+    dps: int
+    #: Working precisions (decimal digits) of the eigenvalue computations, in order.
+    precisions: tuple[int, ...]
+    #: Agree, disagree or not converged.
+    status: CheckStatus
+    #: The largest deviation of a matched mean from its closed form (at the last precision).
+    max_deviation: object
+    #: The largest spread of a cluster (large for defective eigenvalues).
+    max_spread: object
+    #: One entry per distinct closed-form value.
+    matches: tuple[EigenvalueMatch, ...]
+    #: A one-line verdict; on failure it names the valence and the eigenvalue.
+    message: str
+
+    @property
+    def ok(self) -> bool:
+        return self.status is CheckStatus.AGREE
+
+    def as_json(self) -> dict:
+        return {
+            "n": self.n,
+            "scheme": self.scheme,
+            "mode": "numeric",
+            "status": self.status.value,
+            "dps": self.dps,
+            "precisions": list(self.precisions),
+            "max_deviation": mpmath.nstr(self.max_deviation, 3),
+            "max_spread": mpmath.nstr(self.max_spread, 3),
+            "distinct": len(self.matches),
+            "message": self.message,
+        }
+
+
+def full_matrix_eigenvalues(scheme: Scheme, n: int, dps: int, parameters: Mapping | None = None, *, eigensolver=None) -> list:
+    """The ``2n+1`` eigenvalues of the full matrix by ``mpmath.eig`` at ``dps`` digits.
+
+    The matrix is built from the exact rational entries given by the rules; ``eigensolver``
+    (a function of an ``mpmath.matrix`` returning its eigenvalues) replaces ``mpmath.eig``.
+    """
+    n = check_valence(n)
+    size = 2 * n + 1
+    entries = sparse_subdivision_matrix(scheme, n, parameters)
+    with mpmath.workdps(dps):
+        A = mpmath.matrix(size, size)
+        for (r, c), x in entries.items():
+            A[r, c] = mpmath.mpf(int(x.p)) / int(x.q)
+        if eigensolver is not None:
+            return [+v for v in eigensolver(A)]
+        # mpmath's shifted QR occasionally stalls on these highly structured matrices
+        # ("failed to converge"); the transpose has the same eigenvalues and usually does not
+        try:
+            values = mpmath.eig(A, left=False, right=False)
+        except RuntimeError:
+            values = mpmath.eig(A.T, left=False, right=False)
+        return [+v for v in values]
+
+
+def group_values(values, labels, tol) -> list[tuple[object, list]]:
+    """Group equal closed-form values (within ``tol``): ``[(value, [labels])]``, largest first."""
+    order = sorted(range(len(values)), key=lambda i: (-abs(values[i]), -mpmath.re(values[i]), -mpmath.im(values[i])))
+    groups: list[tuple[object, list]] = []
+    for i in order:
+        v = values[i]
+        for g in groups:
+            if abs(g[0] - v) <= tol * max(1, abs(v)):
+                g[1].append(labels[i])
+                break
+        else:
+            groups.append((v, [labels[i]]))
+    return groups
+
+
+def _match(groups, eigs, dps):
+    assigned = [[] for _ in groups]
+    for mu in eigs:
+        best = min(range(len(groups)), key=lambda g: abs(groups[g][0] - mu))
+        assigned[best].append(mu)
+    matches = []
+    for (value, labels), got in zip(groups, assigned):
+        if got:
+            mean = mpmath.fsum(got) / len(got)
+            deviation = abs(mean - value)
+            spread = max(abs(mu - value) for mu in got)
+        else:
+            deviation = min(abs(mu - value) for mu in eigs)
+            spread = deviation
+        matches.append(
+            EigenvalueMatch(
+                value=value,
+                text=format_value(value, dps),
+                multiplicity=len(labels),
+                labels=tuple(labels),
+                matched=len(got),
+                deviation=deviation,
+                spread=spread,
+            )
+        )
+    return matches, [mpmath.fsum(got) / len(got) if got else None for got in assigned]
+
+
+def numeric_check(
+    scheme: Scheme,
+    n: int,
+    *,
+    dps: int = 50,
+    parameters: Mapping | None = None,
+    closed_forms: ClosedForms | None = None,
+    max_dps: int | None = None,
+    eigensolver: Callable | None = None,
+) -> NumericCheck:
+    """Match the numeric spectrum of the full valence-``n`` matrix with the closed forms.
+
+    ``dps``: the closed forms must agree to this many digits. ``closed_forms``: the closed
+    forms under test (default: the derived ones; tests pass a wrong one). ``max_dps``: the
+    highest working precision tried (default ``4 * dps + 40``). ``eigensolver``: replaces
+    ``mpmath.eig`` (see :func:`full_matrix_eigenvalues`).
+    """
+    n = check_valence(n)
+    if dps < 5:
+        raise ValueError(f"dps must be at least 5, got {dps}")
+    subs = parameter_values(scheme, parameters)
+    cf = closed_forms or derived_closed_forms(scheme)
+    max_dps = max_dps or 4 * dps + 40
+    if max_dps < dps + 10:
+        raise ValueError(f"max_dps = {max_dps} leaves no room above dps = {dps} (need at least dps + 10)")
+    labels = cf.eigenvalue_labels(n)
+    # the closed forms are evaluated well beyond any working precision, so that their own
+    # rounding never matters; values that agree to dps + 2 digits are one value for a
+    # comparison to dps digits (a split finer than that could not be resolved anyway)
+    reference = max_dps + 30
+    with mpmath.workdps(reference):
+        values = cf.values(n, subs)
+        groups = group_values(values, labels, mpmath.mpf(10) ** (-(dps + 2)))
+    precisions: list[int] = []
+    previous = None
+    matches: list[EigenvalueMatch] = []
+    work = dps + 10
+    while work <= max_dps:
+        precisions.append(work)
+        try:
+            eigs = full_matrix_eigenvalues(scheme, n, work, subs, eigensolver=eigensolver)
+        except RuntimeError:  # QR did not converge at this precision: try the next one
+            previous = None
+            work = _next_precision(work)
+            continue
+        with mpmath.workdps(reference):
+            matches, means = _match(groups, [mpmath.mpmathify(e) for e in eigs], dps)
+            converged = previous is not None and _same(previous, means, dps)
+        if converged:
+            return _verdict(scheme, n, dps, tuple(precisions), matches)
+        previous = means
+        work = _next_precision(work)
+    if not matches:
+        return NumericCheck(
+            n=n,
+            scheme=scheme.name,
+            dps=dps,
+            precisions=tuple(precisions),
+            status=CheckStatus.NOT_CONVERGED,
+            max_deviation=mpmath.inf,
+            max_spread=mpmath.inf,
+            matches=(),
+            message=f"n = {n}: mpmath's QR iteration failed at every working precision up to {max_dps} digits; no verdict",
+        )
+    with mpmath.workdps(reference):
+        worst = max(matches, key=lambda m: m.deviation)
+    return NumericCheck(
+        n=n,
+        scheme=scheme.name,
+        dps=dps,
+        precisions=tuple(precisions),
+        status=CheckStatus.NOT_CONVERGED,
+        max_deviation=worst.deviation,
+        max_spread=max(m.spread for m in matches),
+        matches=tuple(matches),
+        message=f"n = {n}: the numeric spectrum did not converge to {dps} digits by {precisions[-1] if precisions else dps} "
+        f"digits of working precision (worst eigenvalue {worst.describe()}); no verdict",
+    )
+
+
+def _next_precision(work: int) -> int:
+    """The next working precision: a quarter more (at least 10 digits), enough to see movement."""
+    return work + max(10, work // 4)
+
+
+def _same(previous, means, dps) -> bool:
+    tol = mpmath.mpf(10) ** (-(dps + 2))
+    for a, b in zip(previous, means):
+        if (a is None) != (b is None):
+            return False
+        if a is not None and abs(a - b) > tol * max(1, abs(b)):
+            return False
+    return True
+
+
+def _verdict(scheme, n, dps, precisions, matches) -> NumericCheck:
+    tol = mpmath.mpf(10) ** (-dps)
+    bad_count = [m for m in matches if m.matched != m.multiplicity]
+    bad_value = [m for m in matches if m.matched and m.deviation > tol * max(1, abs(m.value))]
+    max_dev = max(m.deviation for m in matches)
+    max_spread = max(m.spread for m in matches)
+    if bad_count:
+        m = bad_count[0]
+        message = (
+            f"n = {n}: closed-form eigenvalue {m.describe()} has {m.matched} eigenvalue(s) of the full matrix nearest "
+            f"to it, not {m.multiplicity} (nearest at distance {mpmath.nstr(m.deviation, 3)})"
+        )
+        status = CheckStatus.DISAGREE
+    elif bad_value:
+        m = max(bad_value, key=lambda m: m.deviation)
+        message = (
+            f"n = {n}: closed-form eigenvalue {m.describe()} differs from the full matrix's eigenvalue(s) by "
+            f"{mpmath.nstr(m.deviation, 3)} (tolerance 1e-{dps})"
+        )
+        status = CheckStatus.DISAGREE
+    else:
+        message = (
+            f"n = {n}: {sum(m.multiplicity for m in matches)} eigenvalues ({len(matches)} distinct) agree to {dps} digits; "
+            f"largest deviation {mpmath.nstr(max_dev, 3)}"
+        )
+        status = CheckStatus.AGREE
+    return NumericCheck(
+        n=n,
+        scheme=scheme.name,
+        dps=dps,
+        precisions=precisions,
+        status=status,
+        max_deviation=max_dev,
+        max_spread=max_spread,
+        matches=tuple(matches),
+        message=message,
+    )

@@ -1,0 +1,125 @@
+"""A bridge to OpenSubdiv's Catmull-Clark refinement (optional; needs the built C++ library).
+
+:func:`osd_central_rings` pushes a quad mesh through OpenSubdiv's uniform Catmull-Clark
+refinement (``Far::TopologyRefiner`` and ``Far::PrimvarRefinerReal<double>``, double
+precision) and reads back a vertex's 1-ring ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` at every level,
+in the order of :func:`symdecomp.schemes.scheme.subdivision_matrix`, plus OpenSubdiv's own limit
+position of the vertex. It is the outside reference the oracle comparisons
+(:mod:`symdecomp.verify.oracle`) check the toolkit against.
+
+The bridge is a small C++ library (``osd_bridge.cpp``) built with the system g++ by
+``python symdecomp/verify/opensubdiv/build.py`` (CI does this). :func:`bridge_available` says whether
+it can be used; :func:`load_bridge` builds it on demand when the compiler and the OpenSubdiv
+headers are present. Nothing else in symdecomp needs it.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import threading
+from dataclasses import dataclass
+
+import numpy as np
+
+from symdecomp.errors import SymdecompError
+from symdecomp.schemes.mesh import QuadMesh
+from symdecomp.verify.opensubdiv import build as _build
+
+__all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings"]
+
+
+class BridgeUnavailableError(SymdecompError):
+    """The OpenSubdiv bridge is not built and cannot be built here (no g++ or no OpenSubdiv)."""
+
+
+_lock = threading.Lock()
+_lib = None
+_why_not: str | None = None
+
+
+def load_bridge(build: bool = True):
+    """The loaded bridge library; builds it first if needed (and ``build``). Raises if impossible."""
+    global _lib, _why_not
+    with _lock:
+        if _lib is not None:
+            return _lib
+        try:
+            path = _build.build() if build else _build.LIBRARY
+            if not path.exists():
+                raise BridgeUnavailableError(f"the OpenSubdiv bridge is not built ({path})")
+            lib = ctypes.CDLL(str(path))
+        except (_build.BridgeBuildError, OSError) as exc:
+            _why_not = str(exc)
+            raise BridgeUnavailableError(f"OpenSubdiv bridge unavailable: {exc}") from exc
+        fn = lib.symdecomp_osd_refine_ring
+        ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
+        fn.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, ip, ctypes.c_int, dp, dp, ctypes.c_char_p, ctypes.c_int]
+        fn.restype = ctypes.c_int
+        _lib = lib
+        return lib
+
+
+def bridge_available(build: bool = True) -> bool:
+    """Whether the OpenSubdiv bridge can be used (building it on demand if ``build``)."""
+    try:
+        load_bridge(build)
+        return True
+    except BridgeUnavailableError:
+        return False
+
+
+def why_unavailable() -> str | None:
+    """The reason the last :func:`load_bridge` failed (None if it has not failed)."""
+    return _why_not
+
+
+@dataclass(frozen=True)
+class OsdRings:
+    """What OpenSubdiv computed for one vertex."""
+
+    #: ``(levels + 1, 2n + 1, 3)`` array: the 1-ring ``(O, a_0.., b_0..)`` at levels ``0..levels``.
+    rings: np.ndarray
+    #: OpenSubdiv's limit position of the vertex (its limit mask applied at the last level).
+    limit: np.ndarray
+
+
+def osd_central_rings(mesh: QuadMesh, center: int, levels: int, *, start: int | None = None) -> OsdRings:
+    """Refine ``mesh`` (3-vector values) ``levels`` times in OpenSubdiv; the 1-ring of ``center`` per level.
+
+    ``center`` must be an interior vertex. Its ring starts at ``start`` (default as in
+    :meth:`~symdecomp.schemes.mesh.QuadMesh.one_ring`). Values are converted to double.
+    """
+    lib = load_bridge()
+    if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
+        raise SymdecompError(f"levels must be a non-negative integer, got {levels!r}")
+    o, a, _ = mesh.one_ring(center, start)
+    n = len(a)
+    ids = mesh.vertices()
+    index = {v: i for i, v in enumerate(ids)}
+    pos = np.array([[float(x) for x in mesh.values[v]] for v in ids], dtype=np.float64)
+    if pos.shape[1] != 3:
+        raise SymdecompError(f"OpenSubdiv bridge needs 3-vector values, got length {pos.shape[1]}")
+    faces = np.array([[index[v] for v in f] for f in mesh.faces], dtype=np.intc)
+    # face i of the ring: the one where O is followed by a_i
+    ring_faces = []
+    for ai in a:
+        for fi, f in enumerate(mesh.faces):
+            k = f.index(o) if o in f else -1
+            if k >= 0 and f[(k + 1) % 4] == ai:
+                ring_faces.append(fi)
+                break
+    ring_a = np.array([index[x] for x in a], dtype=np.intc)
+    ring_faces = np.array(ring_faces, dtype=np.intc)
+    out = np.zeros((levels + 1, 2 * n + 1, 3), dtype=np.float64)
+    limit = np.zeros(3, dtype=np.float64)
+    err = ctypes.create_string_buffer(512)
+    ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
+    pos = np.ascontiguousarray(pos)
+    rc = lib.symdecomp_osd_refine_ring(
+        len(ids), len(mesh.faces), faces.ctypes.data_as(ip), pos.ctypes.data_as(dp), index[o], n,
+        ring_a.ctypes.data_as(ip), ring_faces.ctypes.data_as(ip), levels, out.ctypes.data_as(dp),
+        limit.ctypes.data_as(dp), err, len(err),
+    )
+    if rc != 0:
+        raise SymdecompError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
+    return OsdRings(out, limit)

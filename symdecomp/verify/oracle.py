@@ -1,0 +1,433 @@
+"""The toolkit's predictions for Catmull-Clark checked against OpenSubdiv (an outside oracle).
+
+For a valence ``n`` a random 1-ring in ``R^3`` (seeded) is pushed through OpenSubdiv's
+uniform Catmull-Clark refinement (:mod:`symdecomp.verify.opensubdiv`), and what OpenSubdiv computes
+is compared with what the toolkit predicts from the scheme's rules:
+
+======================  ===========================================  ======================
+prediction              toolkit side                                 expected agreement
+======================  ===========================================  ======================
+one-step matrix         ``subdivision_matrix`` (exact) times the     double precision
+                        ring OpenSubdiv started the step from
+1-ring locality         OpenSubdiv on the 1-ring alone vs on a       double precision
+                        3-ring mesh containing it
+limit mask              left eigenvector of eigenvalue 1 of the      double precision
+                        exact matrix vs OpenSubdiv's ``Limit``
+limit position          ``O_k -> l . ring_0``                        error ~ mu_2^k
+shrink rate, freq. j    ``lambda_dom(j)`` (Eq. 34,                   ~ (lambda_sub/lambda_dom)^k
+                        ``tangent_eigenvalues``); ``j = 0``: the
+                        subdominant ``mu_2`` of Eq. 43
+Eq. 39 ratio            ``B^1/A^1 -> invariant_ratio_at(n, 1)``      ~ (lambda_sub/lambda_dom)^k
+elliptic ratio Eq. 44   ``(bbar-O)/(abar-O) -> (u_b-u_O)/(u_a-u_O)`` ~ (mu_3/mu_2)^k
+hyperbolic decay        shrink rate of frequency 2                   as for frequency 2
+======================  ===========================================  ======================
+
+Levels are chained one at a time: the 1-ring read back after a step is the next step's
+input mesh (the new 1-ring of an interior vertex depends only on its old 1-ring, which the
+"1-ring locality" row checks in OpenSubdiv itself). Between steps the ring is translated
+to put ``O`` at the origin and scaled by a power of two, which keeps the shrinking
+components at full relative precision; every compared quantity is invariant under that
+(ratios, rates) or is computed in the original coordinates (limit position).
+
+The Fourier components follow :func:`symdecomp.analysis.tangent.invariant_ratio`: ``a_i = sum_j
+A^j omega^{ij}``, i.e. ``A^j = (1/n) sum_i a_i omega^{-ij}``, ``omega = exp(2 pi i/n)``.
+OpenSubdiv implements the standard vertex rule, so everything is compared with
+``catmull_clark()`` (standard weights).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import lru_cache
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from symdecomp.errors import check_valence, SymdecompError
+from symdecomp.analysis.elliptic import recursion_eigenvector
+from symdecomp.analysis.masks import limit_masks_at
+from symdecomp.schemes.mesh import QuadMesh, ring_mesh
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
+from symdecomp.symbols import n as N
+from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
+
+__all__ = [
+    "Prediction",
+    "ValenceComparison",
+    "ToolkitPredictions",
+    "toolkit_predictions",
+    "elliptic_eigenvector",
+    "random_ring",
+    "fourier_components",
+    "compare_with_opensubdiv",
+]
+
+#: Agreement required of the quantities that are exact in exact arithmetic (data of size ~1).
+EXACT_TOLERANCE = 1e-13
+
+
+@dataclass(frozen=True)
+class Prediction:
+    """One predicted quantity compared with OpenSubdiv at one valence."""
+
+    #: Short name, e.g. ``"one-step matrix"`` or ``"shrink rate j=1"``.
+    name: str
+    #: ``"exact"`` (agrees to double precision) or ``"limit"`` (converges with the levels).
+    kind: str
+    #: The toolkit's value (a float, or a complex for the Eq. 39 ratio; None for matrix checks).
+    predicted: complex | float | None
+    #: OpenSubdiv's value at the last level (same type as ``predicted``).
+    observed: complex | float | None
+    #: The largest disagreement (absolute).
+    disagreement: float
+    #: For ``"limit"`` rows: the factor by which the disagreement should shrink per level.
+    rate: float | None
+    #: For ``"limit"`` rows: the disagreement's observed shrink factor over the last levels
+    #: still above rounding (None if it could not be measured).
+    observed_rate: float | None
+    #: Whether the disagreement is within what the kind allows (see :func:`compare_with_opensubdiv`).
+    agrees: bool
+
+    def as_json(self) -> dict:
+        def enc(x):
+            if x is None:
+                return None
+            if isinstance(x, complex):
+                return [x.real, x.imag]
+            return float(x)
+
+        return {
+            "name": self.name,
+            "kind": self.kind,
+            "predicted": enc(self.predicted),
+            "observed": enc(self.observed),
+            "disagreement": self.disagreement,
+            "rate": self.rate,
+            "observed_rate": self.observed_rate,
+            "agrees": self.agrees,
+        }
+
+
+@dataclass(frozen=True)
+class ValenceComparison:
+    """All predictions at one valence."""
+
+    #: The valence.
+    n: int
+    #: Number of refinement levels run in OpenSubdiv.
+    levels: int
+    #: Seed of the random 1-ring.
+    seed: int
+    #: The compared predictions.
+    predictions: tuple[Prediction, ...]
+
+    @property
+    def agrees(self) -> bool:
+        return all(p.agrees for p in self.predictions)
+
+    def as_json(self) -> dict:
+        return {
+            "n": self.n,
+            "levels": self.levels,
+            "seed": self.seed,
+            "agrees": self.agrees,
+            "predictions": [p.as_json() for p in self.predictions],
+        }
+
+
+# --------------------------------------------------------------------------------------------
+# the toolkit's side
+
+
+def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Expr, sp.Expr]]:
+    """``(mu_2, (u_O, u_a, u_b))``: the subdominant eigenvalue of the Eq. 43 matrix at ``n`` and its eigenvector.
+
+    ``mu_2`` is the larger of the two eigenvalues other than 1 (closed form from
+    :func:`symdecomp.analysis.spectrum.frequency_zero_eigenvalues`); the eigenvector is
+    :func:`symdecomp.analysis.elliptic.recursion_eigenvector`, scaled so that ``u_a - u_O = 1``.
+
+    >>> mu, (uo, ua, ub) = elliptic_eigenvector(catmull_clark(), 4)
+    >>> mu, (ub - uo) / (ua - uo)
+    (1/4, 2)
+    """
+    n = check_valence(n)
+    _, m2, m3 = (sp.nsimplify(sp.simplify(e.subs(N, n))) for e in frequency_zero_eigenvalues(scheme))
+    mu = m2 if sp.N(abs(m2)) >= sp.N(abs(m3)) else m3
+    u = recursion_eigenvector(scheme, mu, n)
+    scale = sp.simplify(u[1] - u[0])
+    if scale == 0:
+        raise SymdecompError(f"the Eq. 43 eigenvector for {mu} at n = {n} has u_a = u_O; Eq. 44's ratio is undefined")
+    return mu, tuple(sp.radsimp(sp.simplify(x / scale)) for x in u)
+
+
+@dataclass(frozen=True)
+class ToolkitPredictions:
+    """The toolkit's numbers for Catmull-Clark at one valence (derived, then evaluated)."""
+
+    #: The valence.
+    n: int
+    #: The exact subdivision matrix with Fraction entries (rows ``O, a_0.., b_0..``).
+    matrix: tuple[tuple[Fraction, ...], ...]
+    #: The limit mask: left eigenvector of eigenvalue 1, weights summing to 1 (Fractions).
+    limit_mask: tuple[Fraction, ...]
+    #: ``j -> (lambda_dom, lambda_sub)`` of ``M_j`` for ``j = 1..n-1`` (floats, by magnitude).
+    tangent: dict
+    #: Eigenvalues of the Eq. 43 matrix other than 1, larger first.
+    mu: tuple[float, float]
+    #: ``(u_b - u_O)/(u_a - u_O)`` on the ``mu_2`` eigenvector (Eq. 44).
+    elliptic_ratio: float
+    #: ``B^1/A^1`` on the dominant eigenvector of ``M_1`` (Eq. 39).
+    eq39_ratio: complex
+
+
+def _f(expr, dps=30) -> float:
+    with mpmath.workdps(dps):
+        return float(sp.N(expr, dps))
+
+
+@lru_cache(maxsize=None)
+def toolkit_predictions(n: int) -> ToolkitPredictions:
+    """Derive the predictions for standard Catmull-Clark at valence ``n``."""
+    n = check_valence(n)
+    cc = catmull_clark()
+    S = subdivision_matrix(cc, n)
+    size = 2 * n + 1
+    mask = limit_masks_at(cc, n).position
+    ev = tangent_eigenvalues(cc)
+    tangent = {}
+    for j in range(1, n):
+        d, s = ev.at(n, j)
+        d, s = _f(d), _f(s)
+        tangent[j] = (d, s) if abs(d) >= abs(s) else (s, d)
+    mu, (uo, ua, ub) = elliptic_eigenvector(cc, n)
+    others = sorted((_f(e.subs(N, n)) for e in frequency_zero_eigenvalues(cc)[1:]), key=abs, reverse=True)
+    r39 = complex(sp.N(invariant_ratio_at(cc, n, 1), 30))
+    frac = lambda x: Fraction(int(x.p), int(x.q))  # noqa: E731
+    return ToolkitPredictions(
+        n,
+        tuple(tuple(frac(S[i, k]) for k in range(size)) for i in range(size)),
+        tuple(frac(x) for x in mask),
+        tangent,
+        (others[0], others[1]),
+        _f((ub - uo) / (ua - uo)),
+        r39,
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# data and measurements
+
+
+def random_ring(n: int, seed: int) -> tuple[tuple[float, float, float], ...]:
+    """A random 1-ring ``(O, a_0.., b_0..)`` in ``[-1, 1]^3`` (floats, reproducible from ``seed``)."""
+    n = check_valence(n)
+    rng = random.Random(f"symdecomp-oracle:{seed}:{n}")
+    return tuple(tuple(rng.uniform(-1.0, 1.0) for _ in range(3)) for _ in range(2 * n + 1))
+
+
+def _ring_as_mesh(ring, n: int, rings: int = 1, seed: int = 0) -> QuadMesh:
+    """A ``rings``-ring mesh whose 1-ring is ``ring`` (outer rings random)."""
+    rng = random.Random(f"symdecomp-oracle-outer:{seed}:{n}")
+
+    def value(s, u, v):
+        if (u, v) == (0, 0):
+            return ring[0]
+        if (u, v) == (1, 0):
+            return ring[1 + s]
+        if (u, v) == (0, 1):  # pragma: no cover - ring_mesh labels these as (s+1, 1, 0)
+            return ring[1 + (s + 1) % n]
+        if (u, v) == (1, 1):
+            return ring[1 + n + s]
+        return tuple(rng.uniform(-1.0, 1.0) for _ in range(3))
+
+    return ring_mesh(n, rings, value)
+
+
+def fourier_components(ring: np.ndarray, n: int):
+    """``(O, A, B)``: the centre and the ``n x 3`` complex arrays ``A[j] = (1/n) sum_i a_i omega^{-ij}``."""
+    ring = np.asarray(ring, dtype=np.float64)
+    a, b = ring[1 : 1 + n], ring[1 + n :]
+    return ring[0], np.fft.fft(a, axis=0) / n, np.fft.fft(b, axis=0) / n
+
+
+def _matvec(matrix, ring) -> np.ndarray:
+    x = [[Fraction(float(c)) for c in p] for p in ring]
+    out = []
+    for row in matrix:
+        acc = [Fraction(0)] * 3
+        for w, p in zip(row, x):
+            if w:
+                for c in range(3):
+                    acc[c] += w * p[c]
+        out.append([float(c) for c in acc])
+    return np.array(out)
+
+
+def _lsq_ratio(num: np.ndarray, den: np.ndarray):
+    """The scalar ``r`` minimising ``|num - r den|`` (complex inner product)."""
+    return complex(np.vdot(den, num) / np.vdot(den, den))
+
+
+def _rate_from(errors: list[float], floor: float) -> float | None:
+    """Shrink factor of a disagreement sequence over its last two levels above ``floor``."""
+    usable = [k for k in range(1, len(errors)) if errors[k] > floor and errors[k - 1] > floor]
+    if not usable:
+        return None
+    k = usable[-1]
+    return errors[k] / errors[k - 1]
+
+
+def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceComparison:
+    """Run the comparisons of this module at valence ``n`` (needs the OpenSubdiv bridge).
+
+    ``"exact"`` rows agree when the disagreement is below ``EXACT_TOLERANCE`` (1e-13, on data
+    of size about 1). ``"limit"`` rows agree when the disagreement at the last level is below
+    ``100 * rate^levels + 1e-12`` (the constant absorbs the random data's eigen-coefficients).
+    """
+    from symdecomp.verify.opensubdiv import osd_central_rings
+
+    n = check_valence(n)
+    if isinstance(levels, bool) or not isinstance(levels, int) or levels < 2:
+        raise SymdecompError(f"levels must be an integer >= 2, got {levels!r}")
+    pred = toolkit_predictions(n)
+    ring0 = random_ring(n, seed)
+    rows: list[Prediction] = []
+
+    # 1-ring locality, inside OpenSubdiv: the 1-ring alone vs a 3-ring mesh containing it.
+    alone = osd_central_rings(_ring_as_mesh(ring0, n, 1, seed), 0, 3)
+    larger = osd_central_rings(_ring_as_mesh(ring0, n, 3, seed), 0, 3)
+    rows.append(_exact("1-ring locality", float(np.max(np.abs(alone.rings - larger.rings)))))
+
+    # limit mask vs OpenSubdiv's limit positions
+    limit = np.array([float(sum(w * Fraction(p[c]) for w, p in zip(pred.limit_mask, ring0))) for c in range(3)])
+    rows.append(_exact("limit mask", float(max(np.max(np.abs(alone.limit - limit)), np.max(np.abs(larger.limit - limit))))))
+
+    # The whole random ring, chained: the one-step matrix and the limit position.
+    chain = _chain(ring0, n, levels, pred.matrix, limit=limit)
+    rows.insert(0, _exact("one-step matrix", chain.one_step))
+    mu2, mu3 = pred.mu
+    floor = 1e-13
+    rows.append(_limit("limit position", None, None, chain.centre_errors, abs(mu2), floor, levels))
+
+    # Per frequency: the ring's frequency-j part alone (j and n - j together, so it stays real),
+    # projected back onto frequency j after every OpenSubdiv step so that rounding noise in the
+    # other frequencies cannot outgrow it.
+    leak = 0.0
+    chains = {}
+    for j in range(0, n // 2 + 1):
+        part = _frequency_part(np.array(ring0), n, j)
+        chains[j] = _chain(part, n, levels, pred.matrix, frequency=j)
+        leak = max(leak, chains[j].leak)
+    rows.append(_exact("frequencies decouple", leak))
+
+    # The shrink rate of frequency j is read as ell(Z_{k+1}) / ell(Z_k) for a fixed generic linear
+    # functional ell of Z = (A^j, B^j) (j = 0: (abar - O, bbar - O)); its error is exactly
+    # C (lambda_sub/lambda_dom)^k to first order (a norm ratio can have a vanishing first-order term).
+    ell = np.array([complex(*x) for x in np.random.default_rng(12345).uniform(-1, 1, (6, 2))])
+    for j in range(0, n // 2 + 1):
+        seq = []
+        for (o0, a0, b0), (o1, a1, b1) in chains[j].steps:
+            if j == 0:
+                z0 = np.concatenate([a0[0].real - o0, b0[0].real - o0])
+                z1 = np.concatenate([a1[0].real - o1, b1[0].real - o1])
+            else:
+                z0 = np.concatenate([a0[j], b0[j]])
+                z1 = np.concatenate([a1[j], b1[j]])
+            seq.append(complex(np.dot(ell, z1) / np.dot(ell, z0)))
+        if j == 0:
+            dom, q = abs(mu2), abs(mu3 / mu2)
+        else:
+            d, s_ = pred.tangent[j]
+            dom, q = abs(d), abs(s_ / d)
+        name = f"shrink rate j={j}" + (" (hyperbolic)" if j == 2 else "")
+        errs = [abs(x - dom) for x in seq]
+        seen = abs(seq[-1])
+        if q >= 1 - 1e-12:  # a double eigenvalue (M_j = I/4 at j = n/2): the rate is exact
+            rows.append(_exact(name, max(errs), predicted=dom, observed=seen))
+        else:
+            rows.append(_limit(name, dom, seen, errs, q, floor, levels))
+
+    # Eq. 39: B^1/A^1 on the frequency-1 chain
+    q1 = abs(pred.tangent[1][1] / pred.tangent[1][0])
+    ratios = [_lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
+    rows.append(_limit("Eq. 39 ratio B1/A1", pred.eq39_ratio, ratios[-1], [abs(r - pred.eq39_ratio) for r in ratios], q1, floor, levels))
+
+    # Eq. 44: (bbar - O)/(abar - O) on the frequency-0 chain
+    ell = [_lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
+    q0 = abs(mu3 / mu2)
+    rows.append(_limit("Eq. 44 elliptic ratio", pred.elliptic_ratio, ell[-1], [abs(r - pred.elliptic_ratio) for r in ell], q0, floor, levels))
+    return ValenceComparison(n, levels, seed, tuple(rows))
+
+
+def _frequency_part(ring: np.ndarray, n: int, j: int) -> np.ndarray:
+    """The part of a real ring in the frequencies ``j`` and ``n - j`` (``j = 0``: ``O`` and the centroids)."""
+    o, A, B = fourier_components(ring, n)
+    keep = np.zeros(n, dtype=bool)
+    keep[j % n] = keep[(n - j) % n] = True
+    A = np.where(keep[:, None], A, 0)
+    B = np.where(keep[:, None], B, 0)
+    a = np.fft.ifft(A * n, axis=0).real
+    b = np.fft.ifft(B * n, axis=0).real
+    centre = o if j == 0 else np.zeros(3)
+    return np.vstack([centre[None, :], a, b])
+
+
+@dataclass(frozen=True)
+class _Chain:
+    steps: list
+    one_step: float
+    centre_errors: list
+    leak: float
+
+
+def _chain(ring, n, levels, matrix, *, limit=None, frequency=None) -> _Chain:
+    """Single OpenSubdiv steps, each fed the ring the previous one returned (renormalised)."""
+    from symdecomp.verify.opensubdiv import osd_central_rings
+
+    one_step, leak = 0.0, 0.0
+    offset, scale = np.zeros(3), 1.0  # real coordinates = offset + scale * stored
+    current = np.array(ring, dtype=np.float64)
+    centre_errors = [] if limit is None else [float(np.max(np.abs(current[0] - limit)))]
+    steps = []
+    for _ in range(levels):
+        out = osd_central_rings(_ring_as_mesh(tuple(map(tuple, current)), n, 1), 0, 1).rings[1]
+        predicted = _matvec(matrix, current)
+        one_step = max(one_step, float(np.max(np.abs(predicted - out)) / max(1.0, np.max(np.abs(current)))))
+        if frequency is not None:
+            kept = _frequency_part(out, n, frequency)
+            base = out[0] if frequency != 0 else np.zeros(3)
+            # what OpenSubdiv put into other frequencies, relative to what it kept
+            leak = max(leak, float(np.max(np.abs(out - kept - _centre_only(base, n))) / np.max(np.abs(kept - _centre_only(kept[0], n)))))
+            out = kept if frequency == 0 else kept + _centre_only(base, n)
+        steps.append((fourier_components(current, n), fourier_components(out, n)))
+        if limit is not None:
+            centre_errors.append(float(np.max(np.abs(offset + scale * out[0] - limit))))
+        # renormalise: O to the origin and magnitude about 1 (power-of-two scaling is exact)
+        shift = out[0].copy()
+        moved = out - shift
+        size = float(np.max(np.abs(moved)))
+        power = 2.0 ** (-math.floor(math.log2(size))) if size > 0 else 1.0
+        offset = offset + scale * shift
+        scale = scale / power
+        current = moved * power
+    return _Chain(steps, one_step, centre_errors, leak)
+
+
+def _centre_only(o: np.ndarray, n: int) -> np.ndarray:
+    """The ring with every point at ``o`` (a translation)."""
+    return np.tile(o, (2 * n + 1, 1))
+
+
+def _exact(name, disagreement, predicted=None, observed=None) -> Prediction:
+    return Prediction(name, "exact", predicted, observed, disagreement, None, None, disagreement <= EXACT_TOLERANCE)
+
+
+def _limit(name, predicted, observed, errors, rate, floor, levels) -> Prediction:
+    last = errors[-1]
+    bound = 100.0 * rate**levels + 1e-12
+    return Prediction(name, "limit", predicted, observed, last, rate, _rate_from(errors, floor), last <= bound)

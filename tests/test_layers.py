@@ -1,0 +1,59 @@
+"""The package's folders are layers, and imports only go downwards (the map is in symdecomp/__init__.py)."""
+
+import ast
+import pathlib
+
+import pytest
+
+PACKAGE = pathlib.Path(__file__).resolve().parents[1] / "symdecomp"
+
+#: Lowest first; a module may import from its own layer and the ones before it.
+LAYERS = ["errors", "symbols", "algebra", "schemes", "analysis", "verify", "claims", "output", "cli"]
+
+
+def _layer(module: str) -> int:
+    parts = module.split(".")
+    assert parts[0] == "symdecomp"
+    if len(parts) == 1 or parts[1] in {"__init__", "__main__"}:
+        return len(LAYERS)  # the package itself re-exports everything
+    return LAYERS.index(parts[1])
+
+
+def _imports(path: pathlib.Path):
+    tree = ast.parse(path.read_text())
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.level == 0 and node.module and node.module.split(".")[0] == "symdecomp":
+            yield node.lineno, node.module
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.name.split(".")[0] == "symdecomp":
+                    yield node.lineno, alias.name
+
+
+MODULES = sorted(p for p in PACKAGE.rglob("*.py") if "_build" not in p.parts)
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_imports_only_go_downwards(path):
+    rel = path.relative_to(PACKAGE.parent).with_suffix("")
+    here = _layer(".".join(rel.parts))
+    upward = [(line, module) for line, module in _imports(path) if module != "symdecomp" and _layer(module) > here]
+    assert not upward, f"{rel} imports a higher layer: {upward}"
+
+
+def test_relative_imports_stay_inside_their_folder():
+    """Relative imports only reach siblings (``from .x``), so a module's layer is visible from its path."""
+    offenders = []
+    for path in MODULES:
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ImportFrom) and node.level > 1:
+                offenders.append((str(path.relative_to(PACKAGE)), node.lineno))
+    assert not offenders
+
+
+def test_the_layer_check_can_fail(tmp_path):
+    bad = tmp_path / "symdecomp" / "algebra" / "bad.py"
+    bad.parent.mkdir(parents=True)
+    bad.write_text("from symdecomp.analysis.spectrum import Spectrum\n")
+    assert list(_imports(bad)) == [(1, "symdecomp.analysis.spectrum")]
+    assert _layer("symdecomp.analysis.spectrum") > _layer("symdecomp.algebra.bad")

@@ -17,6 +17,7 @@ __all__ = [
     "InvalidPolygonError",
     "NotAffineError",
     "InvalidSchemeError",
+    "InvalidExpressionError",
     "check_valence",
     "check_frequency",
 ]
@@ -44,6 +45,10 @@ class NotAffineError(SymdecompError):
 
 class InvalidSchemeError(SymdecompError):
     """A scheme is malformed in a way other than affinity (e.g. a stencil wider than the ring)."""
+
+
+class InvalidExpressionError(SymdecompError):
+    """Text or a value given as an exact number is outside the accepted grammar (see :mod:`symdecomp.expressions`)."""
 
 
 def check_valence(n, *, minimum: int = 3) -> int:

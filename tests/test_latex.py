@@ -345,3 +345,16 @@ def test_the_overfull_check_sees_a_formula_that_runs_into_the_margin(tmp_path):
         derivation_files([])["main.tex"].replace("\\end{document}", unbroken + "\\end{document}")
     )
     assert len(_overfull(_compile(tmp_path))) == 1
+
+
+def test_findings_typeset_objects_as_math_and_words_as_text():
+    import sympy as sp
+
+    from symdecomp.claims import Text
+    from symdecomp.output.latex import findings_latex
+
+    lam = sp.Symbol("lambda_1")
+    finding = Text("at n = 3 the eigenvalue ", sp.sqrt(5) / 4 + lam, " exceeds 50% of it")
+    tex = findings_latex(finding)
+    assert r"\sqrt{5}" in tex and r"\lambda_{1}" in tex and r"50\%" in tex
+    assert str(finding) == "at n = 3 the eigenvalue lambda_1 + sqrt(5)/4 exceeds 50% of it"

@@ -36,6 +36,7 @@ from typing import Callable
 import sympy as sp
 
 __all__ = [
+    "Text",
     "Status",
     "Step",
     "CheckResult",
@@ -62,6 +63,43 @@ class Status(str, enum.Enum):
         return self.value
 
 
+@dataclass(frozen=True, init=False)
+class Text:
+    """Prose with mathematics in it: words (``str``) and computed objects (sympy), in order.
+
+    The findings of a check (evidence, counterexample, corrected statement) are ``Text``, so
+    that LaTeX typesets the objects as formulas (:func:`symdecomp.output.latex.aslatex`) and a
+    terminal prints them readably (``str``), from the same source. A plain ``str`` part is
+    prose and is never parsed as mathematics.
+
+    >>> import sympy as sp
+    >>> x = sp.Symbol("x")
+    >>> str(Text("the root ", sp.sqrt(x) / 2, " is simple"))
+    'the root sqrt(x)/2 is simple'
+    """
+
+    #: The words and objects, in reading order.
+    parts: tuple
+
+    def __init__(self, *parts):
+        flat = []
+        for part in parts:
+            flat.extend(part.parts if isinstance(part, Text) else (part,))
+        object.__setattr__(self, "parts", tuple(flat))
+
+    def __str__(self) -> str:
+        return "".join(part if isinstance(part, str) else sp.sstr(part) for part in self.parts)
+
+    def __bool__(self) -> bool:
+        return bool(self.parts)
+
+    def __add__(self, other) -> "Text":
+        return Text(self, other)
+
+    def __radd__(self, other) -> "Text":
+        return Text(other, self)
+
+
 @dataclass(frozen=True)
 class Step:
     """One displayed step of a derivation: a sentence and, optionally, a sympy object."""
@@ -81,13 +119,13 @@ class CheckResult:
     #: What was established.
     status: Status
     #: One line saying how (the range of ``n`` checked, the identity that vanished, ...).
-    evidence: str
+    evidence: str | Text
     #: The derivation, as displayed steps.
     steps: tuple[Step, ...] = ()
     #: For ``refuted``/``corrected``: a concrete counterexample, in words.
-    counterexample: str | None = None
+    counterexample: str | Text | None = None
     #: For ``corrected``: the corrected statement.
-    correction: str | None = None
+    correction: str | Text | None = None
     #: For ``numeric``: the number of significant digits of agreement.
     digits: int | None = None
     #: For ``verified``: the valences checked, as ``(first, last)`` inclusive.

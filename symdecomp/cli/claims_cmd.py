@@ -42,12 +42,12 @@ def run(args) -> int:
             "section": c.section,
             "title": c.title,
             "status": r.status.value,
-            "evidence": r.evidence,
+            "evidence": str(r.evidence),
         }
         for key in ("counterexample", "correction", "digits", "valences"):
             value = getattr(r, key)
             if value is not None:
-                row[key] = list(value) if isinstance(value, tuple) else value
+                row[key] = list(value) if isinstance(value, tuple) else value if isinstance(value, int) else str(value)
         rows.append(row)
     if args.json:
         print_json(rows)

@@ -23,7 +23,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from symdecomp.claims import CheckResult, Claim, Status, Step, check_claim
+from symdecomp.claims import CheckResult, Claim, Status, Step, Text, check_claim
 from symdecomp.output.texlayout import LINE_WIDTH_EM, Piece, break_pieces, estimate_width, pack_lines
 
 __all__ = [
@@ -180,6 +180,19 @@ def _clean_math(tex: str) -> str:
             out.append(" ")
         else:
             out.append(ch)
+    return "".join(out)
+
+
+def findings_latex(text, *, displays: bool = True) -> str:
+    """A finding (:class:`~symdecomp.claims.Text` or ``str``) as LaTeX: words as text, objects as math."""
+    if not isinstance(text, Text):
+        return text_latex(text, displays=displays)
+    out = []
+    for part in text.parts:
+        if isinstance(part, str):
+            out.append(text_latex(part, displays=displays))
+        else:
+            out.append("$%s$" % _clean_math(sp.latex(part)))
     return "".join(out)
 
 
@@ -456,7 +469,7 @@ def _scope(result: CheckResult) -> str:
 
 @aslatex.register(CheckResult)
 def _(obj: CheckResult) -> str:
-    evidence = text_latex(obj.evidence).strip()
+    evidence = findings_latex(obj.evidence).strip()
     if obj.status in (Status.REFUTED, Status.CORRECTED, Status.ERROR):
         heading = {
             Status.REFUTED: "Refuted: the claim is false as printed.",
@@ -465,9 +478,9 @@ def _(obj: CheckResult) -> str:
         }[obj.status]
         body = [evidence + _scope(obj)]
         if obj.counterexample:
-            body.append(r"\textbf{Counterexample.} " + text_latex(obj.counterexample).strip())
+            body.append(r"\textbf{Counterexample.} " + findings_latex(obj.counterexample).strip())
         if obj.correction:
-            body.append(r"\textbf{Corrected statement.} " + text_latex(obj.correction).strip())
+            body.append(r"\textbf{Corrected statement.} " + findings_latex(obj.correction).strip())
         out = "\\finding{sd%s}{%s}{%%\n%s}\n" % (obj.status.value, heading, "\\par\n".join(body))
     else:
         out = "\\textbf{Status:} %s. %s%s\n" % (aslatex(obj.status), evidence, _scope(obj))

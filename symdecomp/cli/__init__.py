@@ -6,6 +6,7 @@ import argparse
 import importlib
 import sys
 
+from symdecomp.cli.common import resolve_scheme
 from symdecomp.errors import SymdecompError
 
 __all__ = ["main", "build_parser"]
@@ -31,6 +32,7 @@ def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
+        resolve_scheme(args)
         return int(args.func(args) or 0)
     except SymdecompError as exc:
         print(f"symdecomp: error: {exc}", file=sys.stderr)

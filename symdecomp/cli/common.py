@@ -7,28 +7,26 @@ import json
 import sys
 
 from symdecomp.errors import InvalidValenceError, check_valence
-from symdecomp.schemes.scheme import Scheme, catmull_clark
+from symdecomp.schemes.files import SCHEMES, load_scheme
 
-__all__ = ["valence", "valence_range", "positive_int", "SCHEMES", "scheme_by_name", "add_scheme_option", "progress", "print_json"]
-
-#: Schemes selectable by name on the command line.
-SCHEMES = {"catmull-clark": catmull_clark}
-
-
-def scheme_by_name(name: str) -> Scheme:
-    try:
-        return SCHEMES[name]()
-    except KeyError:
-        raise argparse.ArgumentTypeError(f"unknown scheme {name!r}; known: {', '.join(SCHEMES)}") from None
+__all__ = ["valence", "valence_range", "positive_int", "SCHEMES", "add_scheme_option", "resolve_scheme", "progress", "print_json"]
 
 
 def add_scheme_option(parser: argparse.ArgumentParser) -> None:
+    """``--scheme NAME|FILE``; :func:`resolve_scheme` turns it into a scheme inside ``main``'s error handling."""
     parser.add_argument(
         "--scheme",
-        type=scheme_by_name,
         default="catmull-clark",
-        help=f"subdivision scheme (default: catmull-clark; known: {', '.join(SCHEMES)})",
+        metavar="NAME|FILE",
+        help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
+        "(format in the README)",
     )
+
+
+def resolve_scheme(args: argparse.Namespace) -> None:
+    """Replace ``args.scheme`` (a name or a path) by the scheme; a bad file raises InvalidSchemeError (one line, exit 2)."""
+    if isinstance(getattr(args, "scheme", None), str):
+        args.scheme = load_scheme(args.scheme)
 
 
 def valence(text: str) -> int:

@@ -81,11 +81,9 @@ def test_claims_command_unknown_label(capsys):
     assert "no claim labelled Eq. 99" in capsys.readouterr().err
 
 
-def test_prop51_check_can_fail(monkeypatch):
+def test_prop51_check_can_fail():
     # with the vertex held fixed (alpha = beta = 0) an Eq. 43 eigenvalue exceeds lambda_1 at n = 3
-    from symdecomp.claims import s5_1_tangent
     from symdecomp.schemes.scheme import catmull_clark
 
-    monkeypatch.setattr(s5_1_tangent, "_cc", lambda: catmull_clark(0, 0))
-    result = s5_1_tangent._prop51()
-    assert result.status is Status.REFUTED and result.counterexample == "n = 3"
+    result = check_claim("Proposition 5.1", catmull_clark(0, 0))
+    assert result.status is Status.REFUTED and "n = 3" in str(result.counterexample)

@@ -9,6 +9,7 @@ import sympy as sp
 from symdecomp.algebra.circulant import circ, generating_polynomial, mode_eigenvalue_derivation
 from symdecomp.algebra.polygons import decompose
 from symdecomp.claims.registry import CheckResult, Status, Step, claim
+from symdecomp.schemes.scheme import Scheme
 
 W = sp.Symbol("w")
 M = sp.Symbol("m", integer=True)
@@ -26,7 +27,7 @@ def _random_polygon(n: int, seed: int) -> sp.Matrix:
     title="The rows of $F_n$ are regular planar polygons",
     statement="The rows $v_0, \\dots, v_{n-1}$ of $F_n$ (Eq. 2), $\\omega_n = e^{2\\pi i/n}$ (Eq. 3), are regular planar $n$-gons.",
 )
-def _eq2_4() -> CheckResult:
+def _eq2_4(scheme: Scheme) -> CheckResult:
     from symdecomp.symbols import j, n
 
     vertex = sp.exp(2 * sp.pi * sp.I * j * M / n)
@@ -53,7 +54,7 @@ def _eq2_4() -> CheckResult:
     statement="Every $n$-gon $P$ in $\\mathbf{R}^3$ is $P = z_0 v_0 + \\dots + z_{n-1} v_{n-1}$ with the rows "
     "$v_j$ of $F_n$ (Eq. 4) a basis of $\\mathbf{C}^n$.",
 )
-def _eq5() -> CheckResult:
+def _eq5(scheme: Scheme) -> CheckResult:
     from symdecomp.symbols import n
 
     geometric = sp.summation(W**M, (M, 0, n - 1))
@@ -85,7 +86,7 @@ def _eq5() -> CheckResult:
     statement="The decomposition of Eq. 5 can be chosen so that the pairs $\\{z_j v_j, z_{n-j} v_{n-j}\\}$, "
     "$j = 1, \\dots, \\lfloor (n-1)/2 \\rfloor$, are coplanar.",
 )
-def _eq6() -> CheckResult:
+def _eq6(scheme: Scheme) -> CheckResult:
     r, s = sp.symbols("r s")
     pair = sp.Symbol("R") * sp.cos(PHI) - sp.Symbol("I") * sp.sin(PHI)
     two_regular = sp.exp(sp.I * PHI) * (r + sp.I * s) / 2 + sp.exp(-sp.I * PHI) * (r - sp.I * s) / 2
@@ -127,7 +128,7 @@ def _eq6() -> CheckResult:
     statement="The eigenvectors of any $n \\times n$ circulant $C$ are the rows of $F_n$; the eigenvalue on $v_k$ "
     "is $p(\\omega_n^k)$ with $p(z) = c_0 + c_1 z + \\dots + c_{n-1} z^{n-1}$ (Eq. 8, 9).",
 )
-def _prop21() -> CheckResult:
+def _prop21(scheme: Scheme) -> CheckResult:
     from symdecomp.symbols import omega
 
     coeffs = {k: sp.Symbol(f"c_{{{k}}}") for k in range(-2, 3)}

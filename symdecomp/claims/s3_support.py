@@ -15,7 +15,7 @@ from fractions import Fraction
 import sympy as sp
 
 from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.support import Region, classify_support, support_relation
 from symdecomp.claims.registry import CheckResult, Status, Step, claim
 
@@ -30,9 +30,9 @@ def _ring(labels, v):
     return max(u, w)
 
 
-def _cubes(levels=(0, 1, 2)):
+def _cubes(scheme: Scheme, levels=(0, 1, 2)):
     """The cube refined 0, 1, 2 times: closed meshes with eight valence-3 vertices close together."""
-    rules = mesh_rules(catmull_clark())
+    rules = mesh_rules(scheme)
     mesh = cube_mesh(lambda i: (Fraction(0),))
     out = {}
     for level in range(max(levels) + 1):
@@ -49,8 +49,8 @@ def _cubes(levels=(0, 1, 2)):
     statement="$P'$ is inside, on the boundary, or outside the support of $P$ if and only if $P$ is "
     "inside, on the boundary, or outside the support of $P'$, correspondingly.",
 )
-def _symmetry() -> CheckResult:
-    cc = catmull_clark()
+def _symmetry(scheme: Scheme) -> CheckResult:
+    cc = scheme
     lo, hi = SYMMETRY_VALENCES
     pairs = 0
     steps = []
@@ -79,7 +79,7 @@ def _symmetry() -> CheckResult:
                 )
             )
     cube_pairs = 0
-    for level, mesh in _cubes().items():
+    for level, mesh in _cubes(scheme).items():
         verts = mesh.vertices()
         rel = support_relation(mesh, cc, verts)
         for p in verts:
@@ -110,8 +110,8 @@ def _symmetry() -> CheckResult:
     statement="In the regular case of the Catmull-Clark scheme nine points determine the continuous "
     "derivatives at $P$, and 25 points are needed to prove continuity.",
 )
-def _regular_counts() -> CheckResult:
-    c = classify_support(ring_mesh(4, 5), 0, catmull_clark(), levels=2)
+def _regular_counts(scheme: Scheme) -> CheckResult:
+    c = classify_support(ring_mesh(4, 5), 0, scheme, levels=2)
     inside, boundary = c.count(Region.INSIDE), c.count(Region.BOUNDARY)
     steps = (
         Step("vertices inside the support of $P$ (valence 4)", sp.Integer(inside)),
@@ -145,8 +145,8 @@ def _regular_counts() -> CheckResult:
     "the continuous derivatives of $P$; this is also the case when $P'$ is on the boundary of the support "
     "of $P$.",
 )
-def _boundary_influence() -> CheckResult:
-    cc = catmull_clark()
+def _boundary_influence(scheme: Scheme) -> CheckResult:
+    cc = scheme
     rules = mesh_rules(cc)
     lo, hi = INFLUENCE_VALENCES
     levels = 3
@@ -200,8 +200,8 @@ def _boundary_influence() -> CheckResult:
     statement="For the Catmull-Clark scheme the vertices inside the support of $P$ are in its 1-ring "
     "neighbourhood, while the vertices on the boundary of the support are the boundary vertices of the 2-ring.",
 )
-def _cc_support() -> CheckResult:
-    cc = catmull_clark()
+def _cc_support(scheme: Scheme) -> CheckResult:
+    cc = scheme
     lo, hi = SUPPORT_VALENCES
     rings = 5
     steps = []
@@ -228,7 +228,7 @@ def _cc_support() -> CheckResult:
                 )
             )
     # Meshes with several extraordinary vertices: the cube refined once and twice, every vertex as P.
-    cubes = _cubes()
+    cubes = _cubes(scheme)
     checked = 0
     for level in (1, 2):
         mesh = cubes[level]

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp.analysis.frequency import frequency_zero_matrix, per_frequency_matrix
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.analysis.tuning import with_free_vertex_rule
+from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import alpha, beta, n, omega
 from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
 
@@ -90,7 +91,7 @@ EQ21 = ShiftStencil(R(1, 4), sp.Integer(0), R(3, 4))
     statement="The 1-ring is the $2n$-gon $P = (a_0, b_0, \\dots, a_{n-1}, b_{n-1})$ (Eq. 10), a sum of $2n$ regular "
     "planar $2n$-gons $z_j v_j$ (Eq. 11).",
 )
-def _eq10_11() -> CheckResult:
+def _eq10_11(scheme: Scheme) -> CheckResult:
     import random
 
     from symdecomp.schemes.ring import OneRing, one_ring_decomposition
@@ -117,7 +118,7 @@ def _eq10_11() -> CheckResult:
     statement="If $z_j v_j = (a_0^j, b_0^j, \\dots, a_{n-1}^j, b_{n-1}^j)$ is a component of Eq. 11, then "
     "$A^j = (a_i^j)$ and $B^j = (b_i^j)$ are planar regular $n$-gons.",
 )
-def _eq12_13() -> CheckResult:
+def _eq12_13(scheme: Scheme) -> CheckResult:
     a_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW) / (2 * n))
     regular = Z * sp.exp(2 * sp.pi * sp.I * J * I_ROW / n)
     diff = sp.simplify(a_ij - regular)
@@ -136,7 +137,7 @@ def _eq12_13() -> CheckResult:
     statement="$a_i \\rightarrow \\frac38(a_i + O) + \\frac1{16}(a_{i-1} + b_{i-1} + b_i + a_{i+1})$ and "
     "$b_i \\rightarrow \\frac14(a_i + b_i + a_{i+1} + O)$.",
 )
-def _eq14_15() -> CheckResult:
+def _eq14_15(scheme: Scheme) -> CheckResult:
     # Catmull-Clark's face point of the face (O, a_i, b_i, a_{i+1}) and edge point of the edge (O, a_i): the mean of
     # the edge's ends and of the face points of its two faces (i-1 and i).
     face_i = ShiftStencil(R(1, 4), R(1, 4) * (1 + omega), R(1, 4))
@@ -145,7 +146,7 @@ def _eq14_15() -> CheckResult:
         R(1, 4) + R(1, 4) * sp.expand(face_i.a + face_i.a / omega),
         R(1, 4) * sp.expand(face_i.b + face_i.b / omega),
     )
-    cc = catmull_clark()
+    cc = scheme
     printed_a = ShiftStencil(R(3, 8), R(3, 8) + (1 / omega + omega) / 16, (1 / omega + 1) / 16)
     printed_b = ShiftStencil(R(1, 4), (1 + omega) / 4, R(1, 4))
     ok = all(
@@ -170,11 +171,11 @@ def _eq14_15() -> CheckResult:
     title="Vertex rule",
     statement="$O \\rightarrow (1-\\alpha-\\beta) O + \\alpha \\sum_i a_i + \\beta \\sum_i b_i$.",
 )
-def _eq16() -> CheckResult:
+def _eq16(scheme: Scheme) -> CheckResult:
     printed_sum = sp.factor(sp.expand((1 - alpha - beta) + n * alpha + n * beta - 1))
     corrected_center = 1 - n * alpha - n * beta
     corrected_sum = sp.expand(corrected_center + n * alpha + n * beta)
-    standard = catmull_clark().vertex_rule
+    standard = scheme.vertex_rule
     std_center = sp.expand(corrected_center.subs({alpha: standard.each_a, beta: standard.each_b}))
     if printed_sum == 0:
         return CheckResult(Status.PROVED, "the printed rule is affine")
@@ -200,8 +201,8 @@ def _eq16() -> CheckResult:
     title="Staged Catmull-Clark rules",
     statement="Eq. 14 decomposes into the steps Eq. 17, 18, 19 and Eq. 15 into Eq. 20, 21.",
 )
-def _eq17_21() -> CheckResult:
-    cc = catmull_clark()
+def _eq17_21(scheme: Scheme) -> CheckResult:
+    cc = scheme
     edge, face = ShiftStencil.of(cc.edge_rule), ShiftStencil.of(cc.face_rule)
     a, b = composed_stages((EQ17, EQ18, EQ19), (EQ20, EQ21))
     da = (a.as_matrix() - edge.as_matrix()).applyfunc(sp.expand)
@@ -234,8 +235,8 @@ def _eq17_21() -> CheckResult:
     statement="$A^j$ and $B^j$ remain planar polygons on parallel planes throughout the subdivision process, "
     "$j = 0, \\dots, 2n-1$.",
 )
-def _prop41() -> CheckResult:
-    cc = catmull_clark(alpha, beta)
+def _prop41(scheme: Scheme) -> CheckResult:
+    cc = with_free_vertex_rule(scheme)
     X, Y = sp.symbols("X Y")
     rows = []
     for rule in (cc.edge_rule, cc.face_rule):
@@ -266,8 +267,8 @@ def _prop41() -> CheckResult:
     title="$A^j$ and $A^{2n-j}$ stay coplanar",
     statement="$A^j$ and $A^{2n-j}$ remain coplanar throughout the subdivision process.",
 )
-def _prop42() -> CheckResult:
-    cc = catmull_clark(alpha, beta)
+def _prop42(scheme: Scheme) -> CheckResult:
+    cc = with_free_vertex_rule(scheme)
     M = per_frequency_matrix(cc)
     weights_real = all(
         w.is_real is not False for rule in (cc.edge_rule, cc.face_rule) for _, w in rule.a + rule.b
@@ -294,8 +295,8 @@ def _prop42() -> CheckResult:
     title="$O$ and the centres of $A^j$, $B^j$ stay collinear",
     statement="The vertex $O$ and the centres of the polygons $A^j, B^j$ remain collinear throughout the subdivision process.",
 )
-def _prop43() -> CheckResult:
-    cc = catmull_clark(alpha, beta)
+def _prop43(scheme: Scheme) -> CheckResult:
+    cc = with_free_vertex_rule(scheme)
     E = frequency_zero_matrix(cc)
     sums = sp.Matrix([sp.simplify(sum(E.row(r))) for r in range(3)])
     affine = all(s == 1 for s in sums)
@@ -317,7 +318,7 @@ def _prop43() -> CheckResult:
     title="$B^j = \\omega_{2n}^j A^j$",
     statement="$B^j = \\omega_{2n}^j A^j$, $j = 1, \\dots, n-1$.",
 )
-def _eq24() -> CheckResult:
+def _eq24(scheme: Scheme) -> CheckResult:
     b_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW + 1) / (2 * n))
     a_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW) / (2 * n))
     ratio = sp.simplify(b_ij / a_ij)

@@ -18,11 +18,11 @@ from symdecomp.analysis.elliptic import (
 )
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.frequency import COS, frequency_zero_matrix
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tuning import joint_obstruction
+from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Status, Step, claim, is_zero
 
 
@@ -33,7 +33,7 @@ from symdecomp.claims import CheckResult, Status, Step, claim, is_zero
     statement=r"$A^1 + A^{2n-1}$ is inscribed on an ellipse with axes "
     r"$l_1 = |w_1| + |w_{2n-1}|$, $l_2 = \bigl||w_1| - |w_{2n-1}|\bigr|$.",
 )
-def _eq40() -> CheckResult:
+def _eq40(scheme: Scheme) -> CheckResult:
     # The polygon is L(v_1) with L(zeta) = w1 zeta + w2 conj(zeta), a real-linear map of the plane;
     # it lies on L(unit circle), whose semi-axes are the singular values of L.
     p1, q1, p2, q2 = sp.symbols("p1 q1 p2 q2", real=True)
@@ -78,7 +78,7 @@ def _eq40() -> CheckResult:
     statement=r"$A^1 = w_1 \vec{v_1}$, $A^{2n-1} = w_{2n-1}\vec{v_{n-1}}$; initially $E_a = E_b$, the ellipse of the "
     r"2n-gonal regular convex component of Eq. 11.",
 )
-def _eq41() -> CheckResult:
+def _eq41(scheme: Scheme) -> CheckResult:
     # z_1 = p + i q (p, q in R^3). A-pair: U = 2p, W = -2q; B-pair: z_1 * e^{i phi}, phi = pi/n (Eq. 24).
     p = sp.Matrix(sp.symbols("p0:3", real=True))
     q = sp.Matrix(sp.symbols("q0:3", real=True))
@@ -105,8 +105,8 @@ def _eq41() -> CheckResult:
     statement=r"At each subdivision step $A^j \rightarrow r_A^j A^j$ and $B^j \rightarrow r_B^j B^j$ with "
     r"$r_A^j, r_B^j \in \mathbf{R}$.",
 )
-def _prop52() -> CheckResult:
-    conj, imag = rotation_free_form(catmull_clark(ALPHA, BETA))
+def _prop52(scheme: Scheme) -> CheckResult:
+    conj, imag = rotation_free_form(with_free_vertex_rule(scheme))
     if not is_zero(imag):
         return CheckResult(Status.REFUTED, "D^-1 M_j D is not real", counterexample=str(imag))
     return CheckResult(
@@ -123,8 +123,8 @@ def _prop52() -> CheckResult:
     title="The induction step of Proposition 5.2",
     statement=r"$M_j(r_1, r_2\omega_{2n}^j)^T = (r'_1, r'_2\omega_{2n}^j)^T$ with $r'_1, r'_2$ real.",
 )
-def _eq42() -> CheckResult:
-    conj, imag = rotation_free_form(catmull_clark())
+def _eq42(scheme: Scheme) -> CheckResult:
+    conj, imag = rotation_free_form(scheme)
     z = sp.Symbol("z")
     t = sp.Symbol("t", real=True)  # z = exp(i t), t = j pi/n
     c = sp.Symbol("c", real=True)  # cos(t)
@@ -153,8 +153,8 @@ def _eq42() -> CheckResult:
     statement=r"$\begin{pmatrix}1-\alpha-\beta & \alpha & \beta\\ 3/8 & 1/2 & 1/8\\ 1/4 & 1/2 & 1/4\end{pmatrix}$ "
     r"with $\alpha, \beta$ as in Eq. 16.",
 )
-def _eq43() -> CheckResult:
-    T = frequency_zero_matrix(catmull_clark(ALPHA, BETA))
+def _eq43(scheme: Scheme) -> CheckResult:
+    T = frequency_zero_matrix(with_free_vertex_rule(scheme))
     R = sp.Rational
     printed_rows = sp.Matrix([[R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
     printed_first = sp.Matrix([[1 - ALPHA - BETA, ALPHA, BETA]])
@@ -189,22 +189,22 @@ def _eq43() -> CheckResult:
     statement=r"If $(u_O, u_a, u_b)^T$ is the subdominant eigenvector, in the limit "
     r"$\frac{u_b-u_O}{u_a-u_O} = \frac{d_b}{d_a}$.",
 )
-def _eq44() -> CheckResult:
-    scheme = catmull_clark(ALPHA, BETA)
-    T = sp.Matrix(frequency_zero_matrix(scheme))
+def _eq44(scheme: Scheme) -> CheckResult:
+    free = with_free_vertex_rule(scheme)
+    T = sp.Matrix(frequency_zero_matrix(free))
     D = sp.Matrix([[-1, 1, 0], [-1, 0, 1]])  # (h_O, h_a, h_b) -> (d_a, d_b)
     # D T = T' D with T' = D T E, E a right inverse of D on the complement of (1,1,1).
     E = sp.Matrix([[0, 0], [1, 0], [0, 1]])
     Tp = (D * T * E).applyfunc(sp.expand)
     intertwine = (D * T - Tp * D).applyfunc(sp.expand)
-    u = recursion_eigenvector(scheme, MU)
+    u = recursion_eigenvector(free, MU)
     du = D * u
     eig = (Tp * du - MU * du).applyfunc(sp.expand)
     char = sp.factor((T - MU * sp.eye(3)).det())
     # eig vanishes whenever MU is an eigenvalue: reduce modulo the non-unit quadratic.
     quad = sp.Poly(sp.cancel(char / (1 - MU)), MU)
     reduced = eig.applyfunc(lambda e: sp.rem(sp.Poly(e, MU), quad).as_expr())
-    ratio = eq44_ratio(scheme, MU)
+    ratio = eq44_ratio(free, MU)
     if not (is_zero(intertwine) and is_zero(reduced)):
         return CheckResult(Status.REFUTED, "distances do not follow the non-unit eigenvectors", counterexample=str(reduced))
     return CheckResult(
@@ -228,8 +228,8 @@ def _eq44() -> CheckResult:
     statement=r"For $n=4$ the matrix of Eq. 43 is $\begin{pmatrix}9/16&3/8&1/16\\3/8&1/2&1/8\\1/4&1/2&1/4\end{pmatrix}$ "
     r"with subdominant eigenvalue $1/4$, eigenvector $(-2,1,4)^T$, $d_b/d_a = 2$, scale ratio $\sqrt2$.",
 )
-def _eq45() -> CheckResult:
-    cc = catmull_clark()
+def _eq45(scheme: Scheme) -> CheckResult:
+    cc = scheme
     R = sp.Rational
     T4 = frequency_zero_matrix(cc, 4)
     printed = sp.Matrix([[R(9, 16), R(3, 8), R(1, 16)], [R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
@@ -275,16 +275,16 @@ def _eq45() -> CheckResult:
     statement=r"There are only two essentially different cases for the initial input, $(1,1,1)$ and $(0,1,1)$; in the "
     r"first there is no elliptic component, in the second it generally exists.",
 )
-def _remark52() -> CheckResult:
-    scheme = catmull_clark(ALPHA, BETA)
-    l = recursion_left_eigenvector(scheme, MU)
+def _remark52(scheme: Scheme) -> CheckResult:
+    free = with_free_vertex_rule(scheme)
+    l = recursion_left_eigenvector(free, MU)
     # l is orthogonal to (1,1,1) for MU != 1, so l.(0,1,1) = -l_O; l_O = 0 forces l = 0:
     la, lb = sp.symbols("l_a l_b")
-    T = sp.Matrix(frequency_zero_matrix(scheme))
+    T = sp.Matrix(frequency_zero_matrix(free))
     eqs = [la * T[1, 0] + lb * T[2, 0], la + lb]  # column 1 of l^T (T - MU I) with l_O = 0, and l.(1,1,1) = 0
     only_zero = sp.solve(eqs, [la, lb], dict=True) == [{la: 0, lb: 0}]
     dot111 = sp.factor(sum(l))
-    cc = catmull_clark()
+    cc = scheme
     comp_011 = [elliptic_component(cc, n, (0, 1, 1)) for n in (3, 4, 5)]
     comp_01m1_n4 = elliptic_component(cc, 4, (0, 1, -1))
     comp_111 = elliptic_component(cc, 4, (1, 1, 1))
@@ -316,8 +316,8 @@ def _remark52() -> CheckResult:
     statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "
     r"does in the regular case $n = 4$.",
 )
-def _example() -> CheckResult:
-    cc = catmull_clark()
+def _example(scheme: Scheme) -> CheckResult:
+    cc = scheme
     cond = nice_elliptic_conditions(cc)
     joint = joint_obstruction(cc)
     d3 = sp.N(cond.eigenvalue_defect.subs(N, 3), 30)

@@ -6,7 +6,7 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import elliptic_component, tangent_lambda
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
-from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.frequency import COS
@@ -22,8 +22,8 @@ _VALENCES = (3, 12)
     statement=r"The eigenvalues of $A^2, A^{2n-2}, B^2, B^{2n-2}$ are smaller than those related to tangent plane "
     r"continuity.",
 )
-def _smaller() -> CheckResult:
-    cc = catmull_clark()
+def _smaller(scheme: Scheme) -> CheckResult:
+    cc = scheme
     dominant = tangent_eigenvalues(cc).dominant
     t = sp.Symbol("t", positive=True)  # t = |c|
     slope = sp.factor(sp.diff(dominant.subs(sp.Abs(COS), t).subs(COS**2, t**2), t))
@@ -66,8 +66,8 @@ def _smaller() -> CheckResult:
     statement=r"Similarly to the elliptic case, the hyperbolic components have to shrink with quadratic speed compared "
     r"to the tangent plane ($\lambda_2 = \lambda_1^2$).",
 )
-def _quadratic() -> CheckResult:
-    cc = catmull_clark()
+def _quadratic(scheme: Scheme) -> CheckResult:
+    cc = scheme
     eq = hyperbolic_equality(cc)
     defect = hyperbolic_defect(cc)
     d5 = sp.N(defect.subs(N, 5), 30)
@@ -91,8 +91,8 @@ def _quadratic() -> CheckResult:
     statement=r"Place $O$ on the plane of $A^1, A^{2n-1}, B^1, B^{2n-1}$ (the elliptic component becomes zero) and add "
     r"a combination of $\vec{v_2}, \vec{v_{2n-2}}$ on a plane perpendicular to the 1-ring.",
 )
-def _construction() -> CheckResult:
-    cc = catmull_clark()
+def _construction(scheme: Scheme) -> CheckResult:
+    cc = scheme
     lo, hi = 3, 8
     for n in range(lo, hi + 1):
         it = iterate_hyperbolic_ring(cc, n, steps=3, digits=15)
@@ -117,8 +117,8 @@ def _construction() -> CheckResult:
     statement=r"The coarse mesh of the basis function has only elliptic component near $O$: its 1-ring is planar, so "
     r"the components perpendicular to the tangent plane are zero.",
 )
-def _basis() -> CheckResult:
-    cc = catmull_clark()
+def _basis(scheme: Scheme) -> CheckResult:
+    cc = scheme
     lo, hi = _VALENCES
     for n in range(lo, hi + 1):
         S = subdivision_matrix(cc, n)

@@ -30,7 +30,8 @@ from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, v
 from symdecomp.algebra.circulant import circ, mode_eigenvalue_derivation
 from symdecomp.analysis.frequency import COS
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
-from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+from symdecomp.analysis.tuning import with_free_vertex_rule
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
@@ -91,7 +92,7 @@ def _banded_symbolic_identity(K: int):
     title="Constant matrices",
     statement=r"Let $C$ be $n\times n$ with $c_{ij}=c$ for $0<i,j<n-1$. The only nonzero eigenvalue of $C$ is $nc$, with eigenvector $(1,\dots,1)$.",
 )
-def _prop61() -> CheckResult:
+def _prop61(scheme: Scheme) -> CheckResult:
     c = sp.Symbol("c")
     # As printed only the interior entries are constrained: n = 3 constrains c_11 alone (here c = 1).
     C3 = sp.Matrix([[2, 0, 0], [0, 1, 0], [0, 0, 5]])
@@ -133,7 +134,7 @@ def _prop61() -> CheckResult:
     title="Eigenvectors of CB-matrices",
     statement=r"Let $B$ be a CB-matrix of $n\times n$ circulant blocks $C_{ij}$ of size $m$, $0<i,j<n-1$. If $v$ is an eigenvector of the circulants of order $m$, there is $\alpha$ with $V=(\alpha_0v,\dots,\alpha_{n-1}v)$ an eigenvector of $B$; $\alpha$ is an eigenvector of $E$, $e_{ij}$ the eigenvalue of $C_{ij}$ on $v$.",
 )
-def _prop62() -> CheckResult:
+def _prop62(scheme: Scheme) -> CheckResult:
     residues = _banded_symbolic_identity(3)
     symbolic_ok = all(r == 0 for r in residues)
     a = sp.symbols("a0:2")
@@ -169,7 +170,7 @@ def _prop62() -> CheckResult:
     title="BV as a matrix of block products",
     statement=r"$BV=\begin{pmatrix}C_{0,0}v&\dots&C_{1,n-1}v\\\vdots&&\vdots\end{pmatrix}\begin{pmatrix}\alpha_0\\\vdots\\\alpha_{n-1}\end{pmatrix}$",
 )
-def _eq47() -> CheckResult:
+def _eq47(scheme: Scheme) -> CheckResult:
     cb = _generic_cb(3, 3)
     a = sp.symbols("a0:3")
     v = sp.symbols("v0:3")
@@ -201,7 +202,7 @@ def _eq47() -> CheckResult:
     title="Replacing C_ij v by e_ij v",
     statement=r"$BV=\begin{pmatrix}e_{0,0}v&\dots&e_{1,n-1}v\\\vdots&&\vdots\end{pmatrix}\begin{pmatrix}\alpha_0\\\vdots\\\alpha_{n-1}\end{pmatrix}$",
 )
-def _eq48() -> CheckResult:
+def _eq48(scheme: Scheme) -> CheckResult:
     cb = _generic_cb(2, 4)
     ok = True
     for k in range(4):
@@ -227,7 +228,7 @@ def _eq48() -> CheckResult:
     title="BV = (E alpha) . (v, ..., v)",
     statement=r"$BV=E\begin{pmatrix}\alpha_0\\\vdots\\\alpha_{n-1}\end{pmatrix}.\begin{pmatrix}v\\\vdots\\v\end{pmatrix}$",
 )
-def _eq49() -> CheckResult:
+def _eq49(scheme: Scheme) -> CheckResult:
     a = sp.symbols("a0:2")
     ok = _lift_identity_holds(_generic_cb(2, 4), list(a)) and all(r == 0 for r in _banded_symbolic_identity(2))
     if not ok:
@@ -245,7 +246,7 @@ def _eq49() -> CheckResult:
     title="BV = lambda V",
     statement=r"If $E\alpha=\lambda\alpha$ then $BV=\lambda\,\alpha.(v,\dots,v)^T=\lambda V$.",
 )
-def _eq50() -> CheckResult:
+def _eq50(scheme: Scheme) -> CheckResult:
     cb = _random_cb(2, 4, 7)
     ok = True
     for value, k, vectors in cb_eigensystem(cb):
@@ -266,7 +267,7 @@ def _eq50() -> CheckResult:
     title="Full eigensystem when every E is diagonalizable",
     statement=r"The eigensystem of $B$ can be fully determined if all the matrices $E$ are diagonalizable.",
 )
-def _remark61() -> CheckResult:
+def _remark61(scheme: Scheme) -> CheckResult:
     # B P = P diag(E_0..E_{m-1}) with P = [e_p (x) v_k]: B is similar to the block diagonal matrix.
     ok = True
     for K, m in ((3, 2), (2, 4)):
@@ -302,7 +303,7 @@ def _remark61() -> CheckResult:
     title="Adding constant blocks",
     statement=r"$B$ with circulant blocks, $A$ with constant blocks $a_{ij}$ ($n\times n$ blocks of size $m$), $C=B+A$. If Remark 6.1 holds, the eigenvalues of $C$ and $B$ agree except for $n$ of them, found as the eigenvectors of $E_1+T$, $t_{ij}=na_{ij}$.",
 )
-def _prop63() -> CheckResult:
+def _prop63(scheme: Scheme) -> CheckResult:
     # symbolic order: a constant block t J is the circulant with zero band and constant t.
     K = 2
     t = sp.Matrix(2, 2, sp.symbols("t0:4"))
@@ -360,9 +361,9 @@ def _prop63() -> CheckResult:
     title="Characteristic polynomial of S in closed form",
     statement=r"The eigenvalues of $S$ are the roots of $\det(S-xI)$.",
 )
-def _eq51() -> CheckResult:
-    scheme = catmull_clark(ALPHA, BETA)
-    cf = closed_form_characteristic_polynomial(scheme)
+def _eq51(scheme: Scheme) -> CheckResult:
+    free = with_free_vertex_rule(scheme)
+    cf = closed_form_characteristic_polynomial(free)
     c_minus, c_zero, c_plus = cf.laurent_coefficients
     rho_p, rho_m = cf.rho
     w = sp.Symbol("w")
@@ -374,8 +375,8 @@ def _eq51() -> CheckResult:
     numerator = sp.expand((P - A) * (Q - A)).subs(P * Q, A * B)
     combined = sp.expand(sp.powsimp(numerator / (sign * (-1) ** N * A)))  # c_+^n = (-1)^n A
     combine_ok = is_zero(combined - (P + Q - A - B))
-    concrete = all(verify_closed_form(scheme, n) for n in range(3, 17)) and all(
-        verify_closed_form(catmull_clark(), n) for n in range(3, 17)
+    concrete = all(verify_closed_form(free, n) for n in range(3, 17)) and all(
+        verify_closed_form(scheme, n) for n in range(3, 17)
     )
     if not (factor_ok and combine_ok and concrete and sign == (-1) ** (N - 1)):
         return CheckResult(Status.ERROR, "a step of the closed form failed")
@@ -401,9 +402,9 @@ def _eq51() -> CheckResult:
     title="The reduction S -> S'",
     statement=r"Adding all columns to the first and subtracting the first row from the others, the characteristic polynomial of $S$ equals that of $S'$ with lower-right block $\begin{pmatrix}C_1-A&C_2-B\\C_3-A&C_4-B\end{pmatrix}$, $a_{ij}=\alpha$, $b_{ij}=\beta$.",
 )
-def _s_prime() -> CheckResult:
-    scheme = catmull_clark(ALPHA, BETA)
-    red = reduce_first_column(subdivision_block_form(scheme))
+def _s_prime(scheme: Scheme) -> CheckResult:
+    free = with_free_vertex_rule(scheme)
+    red = reduce_first_column(subdivision_block_form(free))
     constants = sp.Matrix([[b.constant for b in row] for row in red.reduced.body.blocks])
     bands_same = all(
         red.reduced.body.blocks[p][q].offsets == red.original.body.blocks[p][q].offsets for p in range(2) for q in range(2)
@@ -412,18 +413,18 @@ def _s_prime() -> CheckResult:
     first_row = (red.reduced.corner, red.reduced.row)
     # the text works on S - xI: after adding all columns the first column is (1 - x, ..., 1 - x)
     x = sp.Symbol("x")
-    Sx = sp.Matrix(subdivision_matrix(scheme, 4)) - x * sp.eye(9)
+    Sx = sp.Matrix(subdivision_matrix(free, 4)) - x * sp.eye(9)
     Q4, _ = reduction_similarity(9)
     column_ok = is_zero((Sx * sp.Matrix(Q4))[:, 0] - (1 - x) * sp.ones(9, 1))
     concrete_ok = column_ok
     for n in range(3, 9):
-        S = sp.Matrix(subdivision_matrix(scheme, n))
+        S = sp.Matrix(subdivision_matrix(free, n))
         Q, Qinv = reduction_similarity(2 * n + 1)
         concrete_ok &= sp.Matrix(Q * Qinv) == sp.eye(2 * n + 1)
         concrete_ok &= is_zero(sp.Matrix(Qinv) * S * sp.Matrix(Q) - sp.Matrix(red.reduced.at(n)))
         concrete_ok &= is_zero(S - sp.Matrix(red.original.at(n)))
     # with Eq. 16 as printed (weight 1 - alpha - beta on O) the first row does not sum to 1
-    printed_rule = subdivision_block_form(scheme)
+    printed_rule = subdivision_block_form(free)
     printed_form = BorderedCBMatrix(1 - ALPHA - BETA, printed_rule.row, printed_rule.column, printed_rule.body)
     printed_sums = add_columns_to_first(printed_form)
     printed_not_constant = sp.simplify(printed_sums.corner - printed_sums.column[0]) != 0
@@ -452,15 +453,15 @@ def _s_prime() -> CheckResult:
     title="alpha, beta change only two eigenvalues",
     statement=r"From Prop. 6.3 and the form of $S'$, the fine tuning parameters $\alpha,\beta$ of Eq. 16 affect only two eigenvalues of the subdivision matrix.",
 )
-def _two_eigenvalues() -> CheckResult:
-    scheme = catmull_clark(ALPHA, BETA)
-    cf = closed_form_characteristic_polynomial(scheme)
-    L = reduce_first_column(subdivision_block_form(scheme)).lower_right
+def _two_eigenvalues(scheme: Scheme) -> CheckResult:
+    free = with_free_vertex_rule(scheme)
+    cf = closed_form_characteristic_polynomial(free)
+    L = reduce_first_column(subdivision_block_form(free)).lower_right
     E = L.frequency_matrix(zero_frequency=False)
     free_of_weights = not (E.free_symbols & {ALPHA, BETA})
     E0 = cf.zero_frequency_matrix
     dependence = sp.Matrix([[sp.diff(cf.zero_frequency_factor, ALPHA), sp.diff(cf.zero_frequency_factor, BETA)]])
-    concrete_ok = all(verify_closed_form(scheme, n) for n in range(3, 13))
+    concrete_ok = all(verify_closed_form(free, n) for n in range(3, 13))
     if not (free_of_weights and concrete_ok and dependence != sp.zeros(1, 2)):
         return CheckResult(Status.ERROR, "the weights enter a frequency k != 0, or the exact check failed")
     return CheckResult(
@@ -481,12 +482,12 @@ def _two_eigenvalues() -> CheckResult:
     title="Tuning does not interfere with tangent-plane properties",
     statement=r"Hence $\alpha,\beta$ affect only elliptic properties of Catmull-Clark without interfering with tangent plane or hyperbolic properties.",
 )
-def _no_interference() -> CheckResult:
+def _no_interference(scheme: Scheme) -> CheckResult:
     # the two weight-dependent eigenvalues are those of E_0; at alpha = beta = 0 (O kept fixed) at n = 3:
-    cf = closed_form_characteristic_polynomial(catmull_clark(ALPHA, BETA))
+    cf = closed_form_characteristic_polynomial(with_free_vertex_rule(scheme))
     E0 = cf.zero_frequency_matrix.subs({ALPHA: 0, BETA: 0, N: 3})
     moved = max(sp.Matrix(E0).eigenvals(), key=lambda e: float(e))
-    lam1 = tangent_eigenvalues(catmull_clark()).dominant.subs(COS, sp.cos(sp.pi / 3))
+    lam1 = tangent_eigenvalues(scheme).dominant.subs(COS, sp.cos(sp.pi / 3))
     lam1 = sp.nsimplify(sp.simplify(lam1))
     larger = sp.simplify(moved - lam1) > 0
     if not larger:

@@ -6,7 +6,7 @@ import sympy as sp
 
 from symdecomp.verify.certify import certify, symmetric_functions
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam
 from symdecomp.claims.registry import CheckResult, Status, Step, claim
 
@@ -22,8 +22,7 @@ VALENCES = (3, 48)
     r"matrix $S$, with their multiplicities, are the three eigenvalues of the matrix of Eq. 43 and the two "
     r"eigenvalues of $M_k$ given by Eq. 34 for $k = 1, \dots, n-1$.",
 )
-def _full_spectrum() -> CheckResult:
-    scheme = catmull_clark()
+def _full_spectrum(scheme: Scheme) -> CheckResult:
     cf = derived_closed_forms(scheme)
     sym = symmetric_functions(cf)
     omega = sp.Symbol("omega")

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import print_json, progress
+from symdecomp.cli.common import add_scheme_option, print_json, progress
 
 
 def register(sub) -> None:
@@ -12,12 +12,16 @@ def register(sub) -> None:
         help="check the paper's claims and list their statuses",
         description="Check every claim of the paper registered in symdecomp and print one row per claim: "
         "label, status (proved, verified, numeric, refuted, corrected, error) and a line of evidence. "
+        "Every claim is checked for the scheme given by --scheme (a name or a TOML file; default "
+        "catmull-clark): the printed statement is one input, the scheme the other. Statuses: proved, "
+        "verified, numeric, refuted, corrected, undecided, not applicable (with the reason), error. "
         "Exit status 1 if any check failed to run (status 'error'); refuted or corrected claims are "
         "findings about the paper, not failures.",
     )
     p.add_argument("--json", action="store_true", help="print a JSON list of {label, section, title, status, evidence, ...}")
     p.add_argument("--section", help="only the claims of this section of the paper (e.g. 5.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
+    add_scheme_option(p)
     p.add_argument("--no-progress", action="store_true", help="do not draw a progress bar on stderr")
     p.set_defaults(func=run)
 
@@ -36,12 +40,13 @@ def run(args) -> int:
         claims = [c for c in claims if c.label in wanted]
     rows = []
     for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):
-        r = check_claim(c.label)
+        r = check_claim(c.label, args.scheme)
         row = {
             "label": c.label,
             "section": c.section,
             "title": c.title,
             "status": r.status.value,
+            "scheme": args.scheme.name,
             "evidence": str(r.evidence),
         }
         for key in ("counterexample", "correction", "digits", "valences"):
@@ -62,5 +67,5 @@ def run(args) -> int:
         counts = {}
         for r in rows:
             counts[r["status"]] = counts.get(r["status"], 0) + 1
-        print(f"{len(rows)} claims: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())))
+        print(f"{len(rows)} claims for the scheme {args.scheme.name!r}: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())))
     return 1 if any(r["status"] == Status.ERROR.value for r in rows) else 0

@@ -8,8 +8,8 @@ from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
 from symdecomp.errors import SymdecompError
-from symdecomp.output.latex import aslatex, derivation_files
-from symdecomp.cli.common import print_json, progress
+from symdecomp.output.latex import claim_latex, derivation_files
+from symdecomp.cli.common import add_scheme_option, print_json, progress
 
 __all__ = ["register", "run", "write_derivations"]
 
@@ -36,14 +36,15 @@ def register(sub) -> None:
         help="print the LaTeX of this claim (repeatable) to stdout instead of writing files, "
         "e.g. --label 'Eq. 43' (to paste into a paper; needs the preamble of main.tex)",
     )
+    add_scheme_option(p)
     p.add_argument("--no-progress", action="store_true", help="do not draw a progress bar on stderr")
     p.set_defaults(func=run)
 
 
-def write_derivations(out: Path, *, show_progress: bool = False) -> list[Path]:
-    """Check every claim and write the derivation files to ``out``; return their paths."""
+def write_derivations(out: Path, *, show_progress: bool = False, scheme=None) -> list[Path]:
+    """Check every claim (for ``scheme``, default Catmull-Clark) and write the derivation files to ``out``."""
     claims = all_claims()
-    pairs = [(c, check_claim(c.label)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
+    pairs = [(c, check_claim(c.label, scheme)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
     return _write(out, derivation_files(pairs))
 
 
@@ -67,16 +68,16 @@ def run(args) -> int:
         unknown = [label for label in args.label if label not in known]
         if unknown:
             raise SymdecompError(f"no claim labelled {', '.join(unknown)}; known: {', '.join(known)}")
-        print("\n".join(aslatex(known[label]) for label in args.label), end="")
-        return 1 if any(check_claim(label).status is Status.ERROR for label in args.label) else 0
-    written = write_derivations(args.out, show_progress=not args.no_progress and not args.json)
+        print("\n".join(claim_latex(known[label], check_claim(label, args.scheme)) for label in args.label), end="")
+        return 1 if any(check_claim(label, args.scheme).status is Status.ERROR for label in args.label) else 0
+    written = write_derivations(args.out, show_progress=not args.no_progress and not args.json, scheme=args.scheme)
     if args.json:
         print_json([str(p) for p in written])
     else:
         for path in written:
             print(path)
         print(f"compile with: cd {args.out} && latexmk -pdf main.tex", file=sys.stderr)
-    failed = [c.label for c in all_claims() if check_claim(c.label).status is Status.ERROR]
+    failed = [c.label for c in all_claims() if check_claim(c.label, args.scheme).status is Status.ERROR]
     if failed:
         print(f"symdecomp: the checks of {', '.join(failed)} failed to run (status error)", file=sys.stderr)
     return 1 if failed else 0

@@ -6,12 +6,13 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
+from symdecomp.analysis.components import ZETA, initial_vector_condition, root_of_unity_orders
 from symdecomp.analysis.frequency import COS, SIN, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
 from symdecomp.symbols import lam, n, omega
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
 
 R = sp.Rational
@@ -95,6 +96,17 @@ def _eq33(scheme: Scheme) -> CheckResult:
     )
 
 
+def _at(expr, valence: int, j: int = 1):
+    """``expr`` (in c = cos(j pi/n), s = sin(j pi/n), omega = omega_n^j) at a valence and frequency, exactly."""
+    angle = sp.pi * sp.Rational(j, valence)
+    return expr.subs({C: sp.cos(angle), SIN: sp.sin(angle), omega: sp.exp(2 * sp.I * angle), n: valence})
+
+
+def _num(expr, digits: int = 12):
+    """A computed number, shown to ``digits`` digits (for reading; the verdicts are exact)."""
+    return sp.N(expr, digits)
+
+
 @claim(
     "Eq. 34",
     section="5.1",
@@ -106,24 +118,37 @@ def _eq34(scheme: Scheme) -> CheckResult:
     printed = [R(1, 4) + C**2 / 8 + sign * C / 4 * sp.sqrt(1 + C**2 / 4) for sign in (1, -1)]
     residuals = [sp.expand(ev.characteristic_polynomial.subs(lam, p)) for p in printed]
     ok = all(r == 0 for r in residuals)
-    gap = sp.simplify(printed[0] - printed[1])
+    steps = (
+        Step("$\\operatorname{tr} M_j$ in $c = \\cos j\\theta$:", ev.trace),
+        Step("$\\det M_j$:", ev.determinant),
+        Step("Characteristic polynomial:", ev.characteristic_polynomial),
+        Step("Discriminant:", ev.discriminant),
+        Step("Dominant eigenvalue:", ev.dominant, sp.Symbol("lambda_1")),
+        Step("Other eigenvalue:", ev.subdominant, sp.Symbol("lambda_2")),
+        Step("The printed values substituted into the characteristic polynomial give", sp.Matrix(residuals)),
+    )
+    if not ok:
+        derived = [_num(_at(e, 5)) for e in (ev.dominant, ev.subdominant)]
+        shown = [_num(_at(p, 5)) for p in printed]
+        return CheckResult(
+            Status.REFUTED,
+            Text("the printed values are not roots of the characteristic polynomial of this scheme's M_j: substituted, "
+                 "they leave ", sp.Matrix(residuals).T),
+            counterexample=Text("n = 5, j = 1: the printed values are ", shown[0], " and ", shown[1],
+                                ", the eigenvalues of this scheme's M_1 are ", derived[0], " and ", derived[1]),
+            steps=steps,
+        )
     return CheckResult(
-        Status.PROVED if ok else Status.REFUTED,
+        Status.PROVED,
         "both printed values are roots of det(lambda I - M_j) rewritten in c = cos(j theta), identically in c (every n, j); "
         "they differ unless c = 0. The printed lambda_1 is the larger one only when cos(j theta) >= 0 (j <= n/2); "
         "in general the dominant eigenvalue is 1/4 + c^2/8 + |c|/4 sqrt(1 + c^2/4)",
-        counterexample=None if ok else str(residuals),
-        steps=(
-            Step("$\\operatorname{tr} M_j$ in $c = \\cos j\\theta$:", ev.trace),
-            Step("$\\det M_j$:", ev.determinant),
-            Step("Characteristic polynomial:", ev.characteristic_polynomial),
-            Step("Discriminant:", ev.discriminant),
-            Step("Dominant eigenvalue:", ev.dominant, sp.Symbol("lambda_1")),
-            Step("Other eigenvalue:", ev.subdominant, sp.Symbol("lambda_2")),
-            Step("The printed values substituted into the characteristic polynomial give", sp.Matrix(residuals)),
-            Step("$\\lambda_1 - \\lambda_2$ as printed:", gap),
-        ),
+        steps=steps + (Step("$\\lambda_1 - \\lambda_2$ as printed:", sp.simplify(printed[0] - printed[1])),),
     )
+
+
+#: Eq. 36-37 as printed: the second component of the eigenvector of lambda.
+PRINTED_EIGENVECTOR = (1 + omega) / 4 / (lam - R(1, 4))
 
 
 @claim(
@@ -134,50 +159,76 @@ def _eq34(scheme: Scheme) -> CheckResult:
     "$(1, \\frac{\\frac14(1 + \\omega_n^j)}{\\lambda_{1,2} - \\frac14})^T$.",
 )
 def _eq35_37(scheme: Scheme) -> CheckResult:
-    cc = scheme
-    M = per_frequency_matrix(cc)
-    y = eigenvector_second_component(cc)
-    v = sp.Matrix([1, y])
-    residual = (M * v - lam * v).applyfunc(sp.together)
-    first_num = sp.numer(sp.together(residual[0]))
-    # reduce modulo the characteristic polynomial of M_j in lambda (with omega free)
-    charpoly = sp.expand((lam * sp.eye(2) - M).det() * omega)
-    remainder = sp.rem(sp.expand(first_num * omega**2), charpoly, lam)
-    ok = sp.simplify(remainder) == 0 and sp.simplify(residual[1]) == 0
-    where = sp.solve(sp.Eq(lam, M[1, 1]), lam)
-    at_half = per_frequency_matrix(cc).subs(omega, -1)
-    if not ok:
-        return CheckResult(Status.REFUTED, "the vector is not an eigenvector", counterexample=str(remainder))
+    M = per_frequency_matrix(scheme)
+    derived = eigenvector_second_component(scheme)
+    printed = PRINTED_EIGENVECTOR
+    v = sp.Matrix([1, printed])
+    # M (1, y) - lambda (1, y), numerators, reduced modulo the characteristic polynomial of M_j in lambda
+    charpoly = sp.Poly(sp.expand((lam * sp.eye(2) - M).det() * omega**2), lam)
+    residual = [sp.rem(sp.Poly(sp.expand(sp.numer(sp.together(e)) * omega**4), lam), charpoly).as_expr() for e in (M * v - lam * v)]
+    is_eigenvector = all(sp.simplify(r) == 0 for r in residual)
+    steps = (
+        Step("Second component derived from the second row of $M_j - \\lambda I$:", derived, sp.Symbol("y")),
+        Step("$M_j(1, y)^T - \\lambda(1, y)^T$ for the printed $y$, numerators reduced modulo the characteristic polynomial:", sp.Matrix(residual)),
+    )
+    if not is_eigenvector:
+        lam1 = _at(tangent_eigenvalues(scheme).dominant, 5)
+        y = _at(printed.subs(lam, lam1), 5)
+        image = (_at(M, 5) * sp.Matrix([1, y])).applyfunc(lambda e: _num(e))
+        return CheckResult(
+            Status.REFUTED,
+            "the printed vector is not an eigenvector of this scheme's M_j (the residual does not vanish modulo the "
+            "characteristic polynomial)",
+            counterexample=Text("n = 5, j = 1, lambda_1 = ", _num(lam1), ": the printed vector (1, ", _num(y),
+                                ") is mapped by M_1 to ", image.T, ", not to lambda_1 times it"),
+            steps=steps,
+        )
+    # where is y = m21/(lambda - m22) undefined (0/0)? where m21 vanishes, at a root of unity zeta = omega_2n^j
+    orders = root_of_unity_orders(M[1, 0].subs(omega, ZETA**2))
+    orders = tuple(m for m in (orders or ()) if m >= 3)
+    if not orders:
+        return CheckResult(
+            Status.PROVED,
+            Text("the printed vector is an eigenvector of M_j for both eigenvalues, and m_21 = ", M[1, 0],
+                 " vanishes at no frequency j of any valence, so it is defined everywhere"),
+            steps=steps,
+        )
+    m = orders[0]
+    valence = m // 2 if m % 2 == 0 and m // 2 >= 3 else m
+    j = 2 * valence // m
+    at = _at(M, valence, j).applyfunc(sp.simplify)
     return CheckResult(
         Status.CORRECTED,
-        "M_j (1, y)^T = lambda (1, y)^T reduces to 0 modulo the characteristic polynomial, whenever y is defined; "
-        "y is 0/0 where lambda = 1/4, i.e. cos(j theta) = 0: for even n and j = n/2 (and 3n/2) M_j = I/4 and "
-        "every vector is an eigenvector",
-        counterexample="n = 4, j = 2: M_2 = I/4, lambda_1 = lambda_2 = 1/4 and (1 + omega^2)/4 = 0, so the printed vector is (1, 0/0)",
-        correction="for cos(j pi/n) != 0 the eigenspace of lambda_(1,2) is spanned by (1, (1 + omega_n^j)/(4 lambda_(1,2) - 1)); "
-        "for cos(j pi/n) = 0, M_j = I/4",
-        steps=(
-            Step("Second component from the second row of $M_j - \\lambda I$:", y, sp.Symbol("y")),
-            Step("First row of $(M_j - \\lambda I)(1, y)^T$, numerator, reduced modulo the characteristic polynomial:", remainder),
-            Step("$y$ is undefined at", where[0] if where else None, lam),
-            Step("where $M_j$ at $\\omega_n^j = -1$ is", at_half),
-        ),
+        Text("the printed vector solves M_j (1, y)^T = lambda (1, y)^T modulo the characteristic polynomial wherever it is "
+             "defined; it is 0/0 where m_21 = ", M[1, 0], " vanishes, i.e. where omega_2n^j is a root of unity of order ",
+             sp.FiniteSet(*orders)),
+        counterexample=Text("n = ", valence, ", j = ", j, ": M_j = ", at, " and m_21 = 0, so the printed vector is (1, 0/0)"),
+        correction=Text("for m_21(omega_n^j) != 0 the eigenspace of lambda is spanned by (1, ", derived,
+                        "); where m_21 = 0, M_j is triangular (for this scheme at n = ", valence, ", j = ", j, ": ", at, ")"),
+        steps=steps,
     )
 
 
-def _det_condition(scheme: Scheme, sign: int):
-    """lambda at which (1, sign*omega_2n^j) is an eigenvector, and the char. poly there (in c)."""
-    cc = scheme
-    M = per_frequency_matrix(cc)
-    # (1, y) with y = m21/(lambda - m22) equals (1, sign*e^{i phi}) iff lambda = m22 + m21 * sign * e^{-i phi}
-    e_minus = C - sp.I * SIN
-    m21 = M[1, 0].subs(omega, (C + sp.I * SIN) ** 2)
-    lam_star = sp.expand(M[1, 1] + sign * m21 * e_minus)
-    poly = sp.Poly(lam_star, SIN)
-    lam_star = sp.expand(sp.rem(poly, sp.Poly(SIN**2 - 1 + C**2, SIN)).as_expr())
-    at = sp.factor(sp.expand(tangent_eigenvalues(cc).characteristic_polynomial.subs(lam, lam_star)))
-    roots = sp.solveset(at, C, sp.Interval(-1, 1))
-    return lam_star, at, roots
+def _representative(order: int, k: int = 1) -> tuple[int, int]:
+    """The smallest valence ``n >= 3`` and the component ``j`` with ``omega_2n^j = exp(2 pi i k/order)``."""
+    step = order // 2 if order % 2 == 0 else order
+    valence = step * -(-3 // step)
+    return valence, 2 * valence * k // order
+
+
+def _start_points(scheme: Scheme):
+    """Every class of frequencies where a component starts on one eigenvector: one (n, j) per root of unity."""
+    cond = initial_vector_condition(scheme)
+    if cond.orders is None:
+        return cond, None
+    points = []
+    for m in cond.orders:
+        if m < 3:
+            continue
+        for k in range(1, m):
+            if sp.gcd(k, m) == 1:
+                points.append(cond.point(*_representative(m, k)))
+    return cond, points
 
 
 @claim(
@@ -188,23 +239,46 @@ def _det_condition(scheme: Scheme, sign: int):
     "the initial vector $(1, \\omega_{2n}^j)^T$ always has a component on the dominant eigenvector of $M_j$.",
 )
 def _eq38(scheme: Scheme) -> CheckResult:
-    lam_star, at, roots = _det_condition(scheme, +1)
-    if roots != sp.FiniteSet(0):
-        return CheckResult(Status.REFUTED, f"the determinant vanishes for cos(j theta) in {roots}", counterexample=str(roots))
+    cond, points = _start_points(scheme)
+    steps = (
+        Step("$(1, \\zeta)$, $\\zeta = \\omega_{2n}^j$, is an eigenvector of $M_j$ iff this vanishes:", sp.factor(cond.residual), sp.Symbol("R(zeta)")),
+        Step("Orders of the roots of unity among its roots (cyclotomic factors):", sp.FiniteSet(*(cond.orders or ()))),
+    )
+    if points is None:
+        points = [cond.point(5, 1)]
+    bad = [p for p in points if p.below_dominant]
+    if bad:
+        p = bad[0]
+        return CheckResult(
+            Status.REFUTED,
+            Text("R(zeta) = ", sp.factor(cond.residual), " vanishes at roots of unity of order ", sp.FiniteSet(*(cond.orders or ())),
+                 "; at some of them the initial vector is the eigenvector of the smaller eigenvalue"),
+            counterexample=Text("n = ", p.n, ", j = ", p.j, ": the initial vector is the eigenvector of ", p.eigenvalue,
+                                ", with no component on that of ", p.other, ", which is larger in modulus"),
+            steps=steps,
+        )
+    if not points:
+        return CheckResult(
+            Status.PROVED,
+            Text("R(zeta) = ", sp.factor(cond.residual), " has no root of unity among its roots (no cyclotomic factor), so for "
+                 "every n and j the initial vector lies on neither eigenvector: the determinant is nonzero for both eigenvalues"),
+            steps=steps,
+        )
+    where = sp.FiniteSet(*sorted({(p.n, p.j) for p in points}))
+    scalar = all(p.scalar for p in points)
     return CheckResult(
         Status.CORRECTED,
-        f"the determinant vanishes iff lambda = {lam_star}; the characteristic polynomial there is {at}, whose only root "
-        "with |c| <= 1 is c = 0: for cos(j theta) != 0 the initial vector lies on neither eigenvector (so it has a "
-        "component on the dominant one); at cos(j theta) = 0 the printed entry is 0/0 and the initial vector is itself "
-        "an eigenvector of M_j = I/4",
-        counterexample="n = 4, j = 2: the determinant's entry (1 + omega_4^2)/(4 (lambda - 1/4)) = 0/0",
-        correction="for every j with cos(j pi/n) != 0 the determinant is nonzero for both eigenvalues; for cos(j pi/n) = 0 "
-        "(even n, j = n/2 or 3n/2) M_j = I/4 and the conclusion holds trivially",
-        steps=(
-            Step("$(1, \\omega_{2n}^j)$ is an eigenvector iff $\\lambda$ equals", lam_star, lam),
-            Step("The characteristic polynomial of $M_j$ there:", at),
-            Step("Its roots with $|c| \\le 1$:", roots),
-        ),
+        Text("R(zeta) = ", sp.factor(cond.residual), " vanishes only at roots of unity of order ", sp.FiniteSet(*cond.orders),
+             " (first at (n, j) in ", where, "); there ",
+             "M_j is a multiple of the identity, so the printed entry is 0/0" if scalar else
+             "the initial vector is an eigenvector of the eigenvalue of larger (or equal) modulus",
+             ", and the conclusion still holds; at every other frequency the determinant is nonzero"),
+        counterexample=Text("n = ", points[0].n, ", j = ", points[0].j, ": the determinant is 0 or undefined, the initial vector is an "
+                            "eigenvector (eigenvalue ", points[0].eigenvalue, ")"),
+        correction=Text("the determinant is nonzero unless omega_2n^j is a root of unity of order in ", sp.FiniteSet(*cond.orders),
+                        "; there the initial vector is an eigenvector whose eigenvalue is not smaller in modulus than the other, "
+                        "so it never lacks the dominant part"),
+        steps=steps,
     )
 
 
@@ -218,23 +292,16 @@ def _dominant_vs_frequency_zero(scheme: Scheme, last: int) -> tuple[bool, int]:
 
     dominant = compile_expression(tangent_eigenvalues(scheme).dominant, (C,), engine="arb")
     block = [compile_expression(e, (n,), engine="arb") for e in frequency_zero_eigenvalues(scheme) if e != 1]
-    old = flint.ctx.prec
-    flint.ctx.prec = 128
-    try:
+    with flint.ctx.workprec(128):
         for m in range(3, last + 1):
-            lam1 = dominant(flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(1, m))))
+            lam1 = abs(dominant(flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(1, m)))))
             for f in block:
-                mu = f(flint.acb(m))
-                # both are real (nonnegative discriminants); comparisons of balls are rigorous
-                if not (lam1.imag == 0 and mu.imag == 0):
-                    raise ArithmeticError(f"n = {m}: an eigenvalue is not certified real")
-                if lam1.real > mu.real:
+                mu = abs(f(flint.acb(m)))  # comparisons of balls are rigorous: true only when certain
+                if lam1 > mu:
                     continue
-                if lam1.real <= mu.real:
+                if lam1 <= mu:
                     return False, m
                 raise ArithmeticError(f"n = {m}: lambda_1 and an Eq. 43 eigenvalue not separated at 128 bits")
-    finally:
-        flint.ctx.prec = old
     return True, last
 
 
@@ -252,29 +319,61 @@ def _prop51(scheme: Scheme) -> CheckResult:
     increasing = all(t.is_positive for t in sp.Add.make_args(sp.expand(derivative)))
     block = [e for e in frequency_zero_eigenvalues(scheme) if e != 1]
     last = 1000
-    certified, upto = _dominant_vs_frequency_zero(scheme, last)
-    if not increasing:
-        return CheckResult(Status.REFUTED, "the dominant eigenvalue is not increasing in c", counterexample=str(derivative))
+    steps = (
+        Step("Dominant eigenvalue of $M_j$ for $c = \\cos j\\theta > 0$:", dominant),
+        Step("Its derivative in $c$:", derivative),
+        Step("The eigenvalues of the Eq. 43 block other than 1, compared at $c = \\cos(\\pi/n)$:", sp.Matrix(block)),
+    )
+    try:
+        certified, upto = _dominant_vs_frequency_zero(scheme, last)
+    except ArithmeticError as exc:
+        return CheckResult(Status.UNDECIDED, Text("the interval comparison did not separate the eigenvalues: ", str(exc)), steps=steps)
     if not certified:
+        lam1 = _num(_at(ev.dominant, upto))
+        mus = [_num(e.subs(n, upto)) for e in block]
         return CheckResult(
             Status.REFUTED,
-            f"at n = {upto} an eigenvalue of the Eq. 43 block is at least lambda_1 (certified)",
-            counterexample=f"n = {upto}",
+            Text("at n = ", upto, " an eigenvalue of the Eq. 43 block is at least lambda_1 (certified in interval arithmetic)"),
+            counterexample=Text("n = ", upto, ": lambda_1 = ", lam1, ", the Eq. 43 eigenvalues other than 1 are ", sp.Matrix(mus).T),
+            steps=steps,
+        )
+    if not increasing:
+        return CheckResult(
+            Status.UNDECIDED,
+            Text("the Eq. 43 eigenvalues stay below lambda_1 for n = 3..", last, " (certified), but the sufficient test that the "
+                 "dominant eigenvalue of M_j increases with |cos(j pi/n)| (a derivative that is a sum of positive terms) failed: ",
+                 derivative),
+            steps=steps,
         )
     return CheckResult(
         Status.VERIFIED,
-        "for all n the dominant eigenvalue of M_j increases with cos^2(j pi/n) (its derivative in c > 0 is a sum of "
-        "positive terms), so among the frequencies k = 1..n-1 it is largest at k = 1 and n - 1 (the 2n-gon components "
-        "j = 1, 2n-1 and also j = n-1, n+1, which share M_1); against the derived eigenvalues of the Eq. 43 block "
-        f"other than 1 ({', '.join(map(str, block))}) it is larger for n = 3..{last}, certified in interval "
-        f"arithmetic (both tend to {sp.limit(block[0], n, sp.oo)} as n -> oo)",
+        Text("for all n the dominant eigenvalue of M_j increases with cos^2(j pi/n) (its derivative in c > 0 is a sum of "
+             "positive terms), so among the frequencies k = 1..n-1 it is largest at k = 1 and n - 1 (the 2n-gon components "
+             "j = 1, 2n-1 and also j = n-1, n+1, which share M_1); against the derived eigenvalues of the Eq. 43 block "
+             "other than 1 (", sp.Matrix(block).T, ") it is larger for n = 3..", last, ", certified in interval arithmetic"),
         valences=(3, last),
-        steps=(
-            Step("Dominant eigenvalue of $M_j$ for $c = \\cos j\\theta > 0$:", dominant),
-            Step("Its derivative in $c$, a sum of positive terms:", derivative),
-            Step("The eigenvalues of the Eq. 43 block other than 1, compared at $c = \\cos(\\pi/n)$:", sp.Matrix(block)),
-        ),
+        steps=steps,
     )
+
+
+def _filtering_evidence(scheme: Scheme, valence: int):
+    """|1-ring after k steps| / lambda_1^k for the component j = n + 1 alone, k = 10, 20, 40 (60 digits)."""
+    import mpmath
+
+    from symdecomp.schemes.ring import OneRing, subdivide
+
+    with mpmath.workdps(60):
+        j = valence + 1
+        pts = [mpmath.expjpi(mpmath.mpf(j * m) / valence) for m in range(2 * valence)]
+        ring = OneRing.from_points((0, 0, 0), [(p.real, p.imag, 0) for p in pts[0::2]], [(p.real, p.imag, 0) for p in pts[1::2]])
+        lam1 = mpmath.mpf(sp.N(_at(tangent_eigenvalues(scheme).dominant, valence), 70))
+        ratios, current = [], ring
+        for k in range(1, 41):
+            current = subdivide(scheme, current)
+            if k in (10, 20, 40):
+                norm = mpmath.sqrt(mpmath.fsum(x**2 for p in current.a + current.b for x in p))
+                ratios.append(sp.Float(mpmath.nstr(norm / lam1**k, 15), 15))
+    return ratios
 
 
 @claim(
@@ -285,44 +384,46 @@ def _prop51(scheme: Scheme) -> CheckResult:
     "the subdivision scheme in the same way as the non-convex components.",
 )
 def _rem51(scheme: Scheme) -> CheckResult:
-    # The 2n-gon component j = n + 1 has A^{n+1} = z v_1 and B^{n+1} = omega_2n^{n+1} A^{n+1} = -omega_2n A^{n+1}:
-    # it is moved by M_1, like A^1, with initial vector (1, -omega_2n). It is filtered out only if that vector is
-    # the subdominant eigenvector of M_1.
-    lam_star, at, roots = _det_condition(scheme, -1)
-    import mpmath
-
-    from symdecomp.schemes.ring import OneRing, subdivide
-
-    size = 5
-    with mpmath.workdps(60):
-        j = size + 1
-        pts = [mpmath.expjpi(mpmath.mpf(j * m) / size) for m in range(2 * size)]
-        ring = OneRing.from_points((0, 0, 0), [(p.real, p.imag, 0) for p in pts[0::2]], [(p.real, p.imag, 0) for p in pts[1::2]])
-        lam1 = mpmath.mpf(sp.N(tangent_eigenvalues(scheme).dominant.subs(C, sp.cos(sp.pi / size)), 70))
-        ratios = []
-        current = ring
-        for k in range(1, 41):
-            current = subdivide(scheme, current)
-            if k in (10, 20, 40):
-                norm = mpmath.sqrt(mpmath.fsum(x**2 for p in current.a + current.b for x in p))
-                ratios.append(norm / lam1**k)
-        text = ", ".join(mpmath.nstr(r, 15) for r in ratios)
-    if roots == sp.EmptySet or roots == sp.FiniteSet(0):
+    # Component j = n + 1 moves by M(omega_n^(n+1)) = M_1 from (1, zeta), zeta = omega_2n^(n+1) = -omega_2n, of
+    # order n (odd n) or 2n (even n); j = n - 1 is its conjugate. It is filtered out (shrinks faster than lambda_1)
+    # only where (1, zeta) is the eigenvector of the eigenvalue of smaller modulus.
+    cond = initial_vector_condition(scheme)
+    steps = (
+        Step("$(1, \\zeta)$ is an eigenvector of $M(\\zeta^2)$ iff this vanishes ($\\zeta = \\omega_{2n}^{n+1}$ here):", sp.factor(cond.residual), sp.Symbol("R(zeta)")),
+        Step("Orders of the roots of unity among its roots:", sp.FiniteSet(*(cond.orders or ()))),
+    )
+    if cond.orders is None:
+        candidates = list(range(3, 21))
+    else:
+        candidates = [v for v in range(3, max(cond.orders, default=0) + 1) if cond.holds_at(v, v + 1)]
+    filtered = [v for v in candidates if cond.point(v, v + 1).below_dominant]
+    if cond.orders is None and filtered == candidates:
         return CheckResult(
-            Status.REFUTED,
-            f"the components j = n +- 1 are moved by M_1 (omega_n^(n+1) = omega_n) with initial vector (1, -omega_2n^j); it is an "
-            f"eigenvector only where {at} = 0, i.e. cos(j theta) = 0, so for every n they keep a component on the dominant "
-            "eigenvector and shrink like lambda_1 of j = 1, the slowest rate after 1, not like the non-convex components",
-            counterexample=f"n = {size}, the 1-ring with O = 0 and 2n-gon component j = {size + 1} only (and its conjugate "
-            f"j = {size - 1}): |ring after k steps| / lambda_1^k at k = 10, 20, 40 is {text} (60 digits), converging to a "
-            "nonzero constant",
-            steps=(
-                Step("$(1, -\\omega_{2n}^j)$ is an eigenvector of $M_j$ iff $\\lambda$ equals", lam_star, lam),
-                Step("The characteristic polynomial there:", at),
-                Step("Its roots with $|c| \\le 1$:", roots),
-            ),
+            Status.VERIFIED,
+            "R(zeta) vanishes identically: every component starts on one eigenvector, and for j = n +- 1 it is the one of "
+            "smaller modulus, for each n checked",
+            valences=(3, 20),
+            steps=steps,
         )
-    return CheckResult(Status.PROVED, "the initial vector is the subdominant eigenvector")
+    valence = next(v for v in range(3, 100) if v not in filtered)
+    ratios = _filtering_evidence(scheme, valence)
+    return CheckResult(
+        Status.REFUTED,
+        Text("the components j = n +- 1 are moved by M_1 (omega_n^(n+1) = omega_n) from the vector (1, omega_2n^(n+1)); R vanishes "
+             "there, so that it is an eigenvector of M_1, ",
+             Text("at the valences ", sp.FiniteSet(*candidates), " (filtered out at ", sp.FiniteSet(*filtered), ")") if candidates
+             else "at no valence",
+             "; at every other n they keep a component on the dominant eigenvector and shrink like lambda_1, the "
+             "tangent-plane rate, not like the non-convex components"),
+        counterexample=Text("n = ", valence, ", the 1-ring with O = 0 and only the 2n-gon component j = ", valence + 1,
+                            ": |ring after k steps| / lambda_1^k at k = 10, 20, 40 is ", sp.Matrix(ratios).T,
+                            " (60 digits), converging to a nonzero constant"),
+        steps=steps,
+    )
+
+
+#: Eq. 39 as printed (read as B^j / A^j, see the claim).
+PRINTED_RATIO = (1 + omega) / 4 / (C / 4 * sp.sqrt(1 + C**2 / 4) + C**2 / 8)
 
 
 @claim(
@@ -333,26 +434,34 @@ def _rem51(scheme: Scheme) -> CheckResult:
     "$\\frac{\\frac14(1 + \\omega_n^j)}{\\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta} + \\frac18\\cos^2 j\\theta}$.",
 )
 def _eq39(scheme: Scheme) -> CheckResult:
-    cc = scheme
-    derived = invariant_ratio(cc)  # B/A on the dominant eigenvector
-    printed = (1 + omega) / 4 / (C / 4 * sp.sqrt(1 + C**2 / 4) + C**2 / 8)
+    derived = invariant_ratio(scheme)  # B/A on the dominant eigenvector
     positive_c = sp.Symbol("c", positive=True)
-    same = sp.simplify((derived - printed).subs(C, positive_c)) == 0
-    at4 = invariant_ratio_at(cc, 4, 1)
-    a_over_b = sp.simplify(1 / at4)
+    same = sp.simplify((derived - PRINTED_RATIO).subs(C, positive_c)) == 0
+    at4 = invariant_ratio_at(scheme, 4, 1)
+    printed4 = sp.simplify(_at(PRINTED_RATIO, 4))
+    steps = (
+        Step("$B^j/A^j$ on the dominant eigenvector, derived:", derived, sp.Symbol("r")),
+        Step("At $n = 4$, $j = 1$:", at4),
+    )
     if not same:
-        return CheckResult(Status.REFUTED, "printed ratio differs from the eigenvector ratio", counterexample=str(derived - printed))
+        return CheckResult(
+            Status.REFUTED,
+            "the printed expression is neither B^j/A^j nor A^j/B^j on the dominant eigenvector of this scheme's M_j",
+            counterexample=Text("n = 4, j = 1: the printed expression is ", printed4, ", while B^1/A^1 = ", at4,
+                                " and A^1/B^1 = ", sp.simplify(1 / at4)),
+            steps=steps,
+        )
+    a_over_b = sp.simplify(1 / at4)
+    if sp.simplify(a_over_b - printed4) == 0:
+        return CheckResult(Status.PROVED, "the printed expression is A^j/B^j on the dominant eigenvector (cos(j theta) > 0)", steps=steps)
     return CheckResult(
         Status.CORRECTED,
-        "the printed expression is y/x = B^j/A^j on the dominant eigenvector (1, y) of M_j (for cos(j theta) > 0; "
-        "for cos(j theta) < 0 use |cos|), not the r of A^j = r B^j: at n = 4, j = 1 it gives 1 + i = B^1/A^1, "
-        f"while A^1/B^1 = {a_over_b}",
-        counterexample=f"n = 4, j = 1: with A^1 = r B^1 the ratio would be {a_over_b}, not the printed value 1 + i",
+        Text("the printed expression is y/x = B^j/A^j on the dominant eigenvector (1, y) of M_j (for cos(j theta) > 0; "
+             "for cos(j theta) < 0 use |cos|), not the r of A^j = r B^j: at n = 4, j = 1 it gives ", printed4,
+             " = B^1/A^1, while A^1/B^1 = ", a_over_b),
+        counterexample=Text("n = 4, j = 1: with A^1 = r B^1 the ratio would be ", a_over_b, ", not the printed value ", printed4),
         correction="in the limit B^j = r A^j with r given by Eq. 39 (and |cos(j theta)| in place of cos(j theta))",
-        steps=(
-            Step("$B^j/A^j$ on the dominant eigenvector, derived:", derived, sp.Symbol("r")),
-            Step("At $n = 4$, $j = 1$:", at4),
-        ),
+        steps=steps,
     )
 
 
@@ -365,14 +474,13 @@ def _eq39(scheme: Scheme) -> CheckResult:
 def _eq39_n4(scheme: Scheme) -> CheckResult:
     value = invariant_ratio_at(scheme, 4, 1)
     ok = sp.simplify(value - (1 + sp.I)) == 0
-    return CheckResult(
-        Status.VERIFIED if ok else Status.REFUTED,
-        f"the derived ratio B^1/A^1 at n = 4 is exactly {value} (modulus {sp.sqrt(sp.simplify(value * sp.conjugate(value)))}, "
-        f"argument {sp.simplify(sp.arg(value))})",
-        counterexample=None if ok else f"n = 4: {value}",
-        valences=(4, 4),
-        steps=(Step("$r$ at $n = 4$, $j = 1$:", value),),
-    )
+    modulus = sp.sqrt(sp.simplify(value * sp.conjugate(value)))
+    evidence = Text("the derived ratio B^1/A^1 at n = 4 is exactly ", value, " (modulus ", modulus, ", argument ",
+                    sp.simplify(sp.arg(value)), ")")
+    steps = (Step("$r$ at $n = 4$, $j = 1$:", value),)
+    if not ok:
+        return CheckResult(Status.REFUTED, evidence, counterexample=Text("n = 4: B^1/A^1 = ", value, " ~ ", _num(value), ", not 1 + i"), steps=steps)
+    return CheckResult(Status.VERIFIED, evidence, valences=(4, 4), steps=steps)
 
 
 @claim(
@@ -385,9 +493,16 @@ def _eq39_limit(scheme: Scheme) -> CheckResult:
     value = invariant_ratio_limit(scheme, 1)
     printed = 4 / (sp.sqrt(5) + 1)
     ok = sp.simplify(value - printed) == 0
+    steps = (Step("$\\lim_{n \\to \\infty} r$ at $j = 1$:", value),)
+    if not ok:
+        return CheckResult(
+            Status.REFUTED,
+            Text("sympy.limit of the derived ratio as n -> oo at j = 1 is ", value),
+            counterexample=Text("the limit is ", value, " ~ ", _num(value), ", not 4/(sqrt(5) + 1) ~ ", _num(printed)),
+            steps=steps,
+        )
     return CheckResult(
-        Status.PROVED if ok else Status.REFUTED,
-        f"sympy.limit of the derived ratio as n -> oo at j = 1 is {value}, equal to 4/(sqrt(5) + 1)",
-        counterexample=None if ok else str(value),
-        steps=(Step("$\\lim_{n \\to \\infty} r$ at $j = 1$:", value),),
+        Status.PROVED,
+        Text("sympy.limit of the derived ratio as n -> oo at j = 1 is ", value, ", equal to 4/(sqrt(5) + 1)"),
+        steps=steps,
     )

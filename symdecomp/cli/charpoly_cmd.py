@@ -5,7 +5,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, matrix_characteristic_polynomial
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import lam as LAM
@@ -53,7 +53,7 @@ def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
 
 
 def run(args) -> int:
-    scheme = catmull_clark(ALPHA, BETA) if args.free_weights else args.scheme
+    scheme = with_free_vertex_rule(args.scheme) if args.free_weights else args.scheme
     cf = closed_form_characteristic_polynomial(scheme)
     coefficients, matches = _coefficients(scheme, args.n, args.free_weights)
     if args.json:

@@ -18,11 +18,22 @@ from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine, ring_mesh, rin
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.support import Region, classify_support, support_relation
 from symdecomp.claims.registry import CheckResult, Status, Step, claim
+from symdecomp.errors import InvalidSchemeError
 
 #: Valences the exact checks run for (kept small enough for seconds).
 SYMMETRY_VALENCES = (3, 10)
 SUPPORT_VALENCES = (3, 12)
 INFLUENCE_VALENCES = (3, 12)
+
+
+def _not_a_mesh_scheme(scheme: Scheme) -> CheckResult | None:
+    """``not applicable`` when the scheme's 1-ring rules are not rules of a whole quad mesh (the supports of
+    Section 3 are defined on meshes), else ``None``."""
+    try:
+        mesh_rules(scheme)
+    except InvalidSchemeError as exc:
+        return CheckResult(Status.NOT_APPLICABLE, f"the supports of Section 3 live on whole meshes, and {exc}")
+    return None
 
 
 def _ring(labels, v):
@@ -50,6 +61,8 @@ def _cubes(scheme: Scheme, levels=(0, 1, 2)):
     "inside, on the boundary, or outside the support of $P'$, correspondingly.",
 )
 def _symmetry(scheme: Scheme) -> CheckResult:
+    if (result := _not_a_mesh_scheme(scheme)) is not None:
+        return result
     cc = scheme
     lo, hi = SYMMETRY_VALENCES
     pairs = 0
@@ -111,6 +124,8 @@ def _symmetry(scheme: Scheme) -> CheckResult:
     "derivatives at $P$, and 25 points are needed to prove continuity.",
 )
 def _regular_counts(scheme: Scheme) -> CheckResult:
+    if (result := _not_a_mesh_scheme(scheme)) is not None:
+        return result
     c = classify_support(ring_mesh(4, 5), 0, scheme, levels=2)
     inside, boundary = c.count(Region.INSIDE), c.count(Region.BOUNDARY)
     steps = (
@@ -146,6 +161,8 @@ def _regular_counts(scheme: Scheme) -> CheckResult:
     "of $P$.",
 )
 def _boundary_influence(scheme: Scheme) -> CheckResult:
+    if (result := _not_a_mesh_scheme(scheme)) is not None:
+        return result
     cc = scheme
     rules = mesh_rules(cc)
     lo, hi = INFLUENCE_VALENCES
@@ -201,6 +218,8 @@ def _boundary_influence(scheme: Scheme) -> CheckResult:
     "neighbourhood, while the vertices on the boundary of the support are the boundary vertices of the 2-ring.",
 )
 def _cc_support(scheme: Scheme) -> CheckResult:
+    if (result := _not_a_mesh_scheme(scheme)) is not None:
+        return result
     cc = scheme
     lo, hi = SUPPORT_VALENCES
     rings = 5

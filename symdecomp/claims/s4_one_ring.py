@@ -10,7 +10,7 @@ from symdecomp.analysis.frequency import frequency_zero_matrix, per_frequency_ma
 from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import alpha, beta, n, omega
-from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 
 R = sp.Rational
 I_ROW = sp.Symbol("i", integer=True)
@@ -149,15 +149,19 @@ def _eq14_15(scheme: Scheme) -> CheckResult:
     cc = scheme
     printed_a = ShiftStencil(R(3, 8), R(3, 8) + (1 / omega + omega) / 16, (1 / omega + 1) / 16)
     printed_b = ShiftStencil(R(1, 4), (1 + omega) / 4, R(1, 4))
-    ok = all(
-        is_zero(x.as_matrix() - y.as_matrix())
-        for x, y in ((edge_i, printed_a), (face_i, printed_b), (printed_a, ShiftStencil.of(cc.edge_rule)), (printed_b, ShiftStencil.of(cc.face_rule)))
+    pairs = (
+        ("Catmull-Clark's edge point", edge_i, printed_a),
+        ("Catmull-Clark's face point", face_i, printed_b),
+        ("this scheme's edge rule", ShiftStencil.of(cc.edge_rule), printed_a),
+        ("this scheme's face rule", ShiftStencil.of(cc.face_rule), printed_b),
     )
+    wrong = [(name, x.as_matrix(), y.as_matrix()) for name, x, y in pairs if not is_zero(x.as_matrix() - y.as_matrix())]
+    ok = not wrong
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
         "Catmull-Clark's face point (mean of the face) and edge point (mean of the edge's ends and its two face points), "
         "composed as shift-operator polynomials for every n, give the printed rules, which are the package's scheme data",
-        counterexample=None if ok else "see steps",
+        counterexample=None if ok else Text(wrong[0][0], " as (w_O, A(omega), B(omega)) is ", wrong[0][1], ", the printed rule ", wrong[0][2]),
         steps=(
             Step("Face point of $(O, a_i, b_i, a_{i+1})$ as $(w_O, A(\\omega), B(\\omega))$:", face_i.as_matrix()),
             Step("Edge point of $(O, a_i)$:", edge_i.as_matrix()),
@@ -180,12 +184,14 @@ def _eq16(scheme: Scheme) -> CheckResult:
     if printed_sum == 0:
         return CheckResult(Status.PROVED, "the printed rule is affine")
     example = {n: 3, alpha: standard.each_a.subs(n, 3), beta: standard.each_b.subs(n, 3)}
+    if sp.expand((alpha + beta).subs(example)) == 0:
+        example = {n: 3, alpha: sp.Rational(1, 6), beta: sp.Rational(1, 36)}
     return CheckResult(
         Status.CORRECTED,
         f"as printed the weights sum to 1 + {printed_sum}, so the rule is not affine (not translation invariant) "
         f"unless alpha + beta = 0; with weight 1 - n alpha - n beta on O it is, and gives standard Catmull-Clark's {std_center}",
-        counterexample=f"n = 3 with the standard weights alpha = 1/6, beta = 1/36: the printed weights sum to "
-        f"{sp.expand((1 - alpha - beta + n * alpha + n * beta).subs(example))}",
+        counterexample=Text("n = 3 with the weights alpha = ", example[alpha], ", beta = ", example[beta],
+                            ": the printed weights sum to ", sp.expand((1 - alpha - beta + n * alpha + n * beta).subs(example))),
         correction="O -> (1 - n*alpha - n*beta) O + alpha sum_i a_i + beta sum_i b_i",
         steps=(
             Step("Sum of the printed weights minus one:", printed_sum),
@@ -212,7 +218,11 @@ def _eq17_21(scheme: Scheme) -> CheckResult:
     sequential = _then_b(sequential, EQ21)
     differs = not is_zero(sequential.as_matrix() - face.as_matrix())
     if not (is_zero(da) and is_zero(db)):
-        return CheckResult(Status.REFUTED, "the staged rules do not compose to Eq. 14-15", counterexample=f"{da}, {db}")
+        return CheckResult(
+            Status.REFUTED,
+            "the staged rules do not compose to this scheme's rules",
+            counterexample=Text("composed minus the scheme's edge rule: ", da, "; face rule: ", db),
+        )
     return CheckResult(
         Status.PROVED,
         "as shift-operator polynomials (valid for every n): Eq. 17 -> 18 -> 19 gives Eq. 14 and Eq. 20 -> 21 gives "

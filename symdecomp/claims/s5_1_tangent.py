@@ -71,7 +71,7 @@ def _eq31_32(scheme: Scheme) -> CheckResult:
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
         "the printed combinations equal the staged rules composed, and the matrix derived from Eq. 14-15, for every n",
-        counterexample=None if ok else str(printed - derived),
+        counterexample=None if ok else Text("printed minus derived: ", (printed - derived).applyfunc(sp.expand)),
         steps=(Step("Eq. 31-32 as a matrix on $(A^j, B^j)$:", printed), Step("Derived from the scheme's rules:", derived)),
     )
 
@@ -91,7 +91,8 @@ def _eq33(scheme: Scheme) -> CheckResult:
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
         "M_j derived by applying Eq. 14-15 to the modes (X v_j, Y v_j) at a symbolic row equals the printed matrix, every n",
-        counterexample=None if ok else str(diff),
+        counterexample=None if ok else Text("printed minus derived: ", diff, "; at n = 5, j = 1 the derived M_1 is ",
+                                            _at(derived, 5).applyfunc(lambda e: _num(e, 6))),
         steps=(Step("Derived:", derived, sp.Symbol("M_j")), Step("Printed minus derived:", diff)),
     )
 

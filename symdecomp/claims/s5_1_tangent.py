@@ -14,9 +14,18 @@ from symdecomp.symbols import lam, n, omega
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
+from symdecomp.claims.applicability import needs_mirror_symmetry
 
 R = sp.Rational
 C = COS
+
+
+#: The circulants of Eq. 25-30 as printed, as offsets (``c_{n-1}`` is offset -1).
+PRINTED_CIRCULANTS = {
+    "alpha": {0: R(3, 4), 1: R(1, 8), -1: R(1, 8)},
+    "beta": {0: R(1, 2), -1: R(1, 2)},
+    "gamma": {0: R(1, 2), 1: R(1, 2)},
+}
 
 
 @claim(
@@ -28,11 +37,7 @@ C = COS
     "$\\lambda^\\alpha_j, \\lambda^\\beta_j, \\lambda^\\gamma_j$.",
 )
 def _eq25_30(scheme: Scheme) -> CheckResult:
-    printed = {
-        "alpha": {0: R(3, 4), 1: R(1, 8), -1: R(1, 8)},
-        "beta": {0: R(1, 2), -1: R(1, 2)},  # c_{n-1} is offset -1
-        "gamma": {0: R(1, 2), 1: R(1, 2)},
-    }
+    printed = PRINTED_CIRCULANTS
     eig = {k: mode_eigenvalue_derivation(v)[1] for k, v in printed.items()}
     # the steps: Eq. 17 acts on the a's by C_alpha; Eq. 18 reads (b_{i-1} + b_i)/10 = (1/5) C_beta B; Eq. 20 reads
     # (a_i + a_{i+1})/3 = (2/3) C_gamma A.
@@ -245,14 +250,15 @@ def _eq38(scheme: Scheme) -> CheckResult:
         Step("$(1, \\zeta)$, $\\zeta = \\omega_{2n}^j$, is an eigenvector of $M_j$ iff this vanishes:", sp.factor(cond.residual), sp.Symbol("R(zeta)")),
         Step("Orders of the roots of unity among its roots (cyclotomic factors):", sp.FiniteSet(*(cond.orders or ()))),
     )
-    if points is None:
-        points = [cond.point(5, 1)]
+    if points is None:  # every component starts on an eigenvector: look at each one, n = 3..8
+        points = cond.points(8)
     bad = [p for p in points if p.below_dominant]
     if bad:
         p = bad[0]
         return CheckResult(
             Status.REFUTED,
-            Text("R(zeta) = ", sp.factor(cond.residual), " vanishes at roots of unity of order ", sp.FiniteSet(*(cond.orders or ())),
+            Text("R(zeta) = ", sp.factor(cond.residual), " vanishes at roots of unity of order ",
+                 sp.FiniteSet(*cond.orders) if cond.orders is not None else "every order (identically)",
                  "; at some of them the initial vector is the eigenvector of the smaller eigenvalue"),
             counterexample=Text("n = ", p.n, ", j = ", p.j, ": the initial vector is the eigenvector of ", p.eigenvalue,
                                 ", with no component on that of ", p.other, ", which is larger in modulus"),
@@ -269,14 +275,16 @@ def _eq38(scheme: Scheme) -> CheckResult:
     scalar = all(p.scalar for p in points)
     return CheckResult(
         Status.CORRECTED,
-        Text("R(zeta) = ", sp.factor(cond.residual), " vanishes only at roots of unity of order ", sp.FiniteSet(*cond.orders),
+        Text("R(zeta) = ", sp.factor(cond.residual), " vanishes at roots of unity of order ",
+             sp.FiniteSet(*cond.orders) if cond.orders is not None else "every order",
              " (first at (n, j) in ", where, "); there ",
              "M_j is a multiple of the identity, so the printed entry is 0/0" if scalar else
              "the initial vector is an eigenvector of the eigenvalue of larger (or equal) modulus",
              ", and the conclusion still holds; at every other frequency the determinant is nonzero"),
         counterexample=Text("n = ", points[0].n, ", j = ", points[0].j, ": the determinant is 0 or undefined, the initial vector is an "
                             "eigenvector (eigenvalue ", points[0].eigenvalue, ")"),
-        correction=Text("the determinant is nonzero unless omega_2n^j is a root of unity of order in ", sp.FiniteSet(*cond.orders),
+        correction=Text("the determinant is nonzero unless omega_2n^j is a root of unity of order in ",
+                        sp.FiniteSet(*cond.orders) if cond.orders is not None else "(all orders)",
                         "; there the initial vector is an eigenvector whose eigenvalue is not smaller in modulus than the other, "
                         "so it never lacks the dominant part"),
         steps=steps,
@@ -313,6 +321,8 @@ def _dominant_vs_frequency_zero(scheme: Scheme, last: int) -> tuple[bool, int]:
     statement="The regular convex components $A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues.",
 )
 def _prop51(scheme: Scheme) -> CheckResult:
+    if (result := needs_mirror_symmetry(scheme)) is not None:
+        return result
     ev = tangent_eigenvalues(scheme)
     cp = sp.Symbol("c", positive=True)
     dominant = ev.dominant.subs(C, cp)
@@ -385,6 +395,8 @@ def _filtering_evidence(scheme: Scheme, valence: int):
     "the subdivision scheme in the same way as the non-convex components.",
 )
 def _rem51(scheme: Scheme) -> CheckResult:
+    if (result := needs_mirror_symmetry(scheme)) is not None:
+        return result
     # Component j = n + 1 moves by M(omega_n^(n+1)) = M_1 from (1, zeta), zeta = omega_2n^(n+1) = -omega_2n, of
     # order n (odd n) or 2n (even n); j = n - 1 is its conjugate. It is filtered out (shrinks faster than lambda_1)
     # only where (1, zeta) is the eigenvector of the eigenvalue of smaller modulus.
@@ -406,7 +418,7 @@ def _rem51(scheme: Scheme) -> CheckResult:
             valences=(3, 20),
             steps=steps,
         )
-    valence = next(v for v in range(3, 100) if v not in filtered)
+    valence = next(v for v in range(scheme.minimum_valence(), 100) if v not in filtered)
     ratios = _filtering_evidence(scheme, valence)
     return CheckResult(
         Status.REFUTED,
@@ -438,12 +450,15 @@ def _eq39(scheme: Scheme) -> CheckResult:
     derived = invariant_ratio(scheme)  # B/A on the dominant eigenvector
     positive_c = sp.Symbol("c", positive=True)
     same = sp.simplify((derived - PRINTED_RATIO).subs(C, positive_c)) == 0
+    inverse = sp.simplify((derived * PRINTED_RATIO - 1).subs(C, positive_c)) == 0  # A^j = r B^j, as the text says
     at4 = invariant_ratio_at(scheme, 4, 1)
     printed4 = sp.simplify(_at(PRINTED_RATIO, 4))
     steps = (
         Step("$B^j/A^j$ on the dominant eigenvector, derived:", derived, sp.Symbol("r")),
         Step("At $n = 4$, $j = 1$:", at4),
     )
+    if inverse:
+        return CheckResult(Status.PROVED, "the printed expression is A^j/B^j on the dominant eigenvector (cos(j theta) > 0)", steps=steps)
     if not same:
         return CheckResult(
             Status.REFUTED,
@@ -453,8 +468,6 @@ def _eq39(scheme: Scheme) -> CheckResult:
             steps=steps,
         )
     a_over_b = sp.simplify(1 / at4)
-    if sp.simplify(a_over_b - printed4) == 0:
-        return CheckResult(Status.PROVED, "the printed expression is A^j/B^j on the dominant eigenvector (cos(j theta) > 0)", steps=steps)
     return CheckResult(
         Status.CORRECTED,
         Text("the printed expression is y/x = B^j/A^j on the dominant eigenvector (1, y) of M_j (for cos(j theta) > 0; "

@@ -24,6 +24,7 @@ from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
 from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Status, Step, Text, claim, is_zero
+from symdecomp.claims.applicability import needs_mirror_symmetry
 
 
 @claim(
@@ -207,7 +208,14 @@ def _eq44(scheme: Scheme) -> CheckResult:
     eig = (Tp * du - MU * du).applyfunc(sp.expand)
     char = sp.factor((T - MU * sp.eye(3)).det())
     # eig vanishes whenever MU is an eigenvalue: reduce modulo the non-unit quadratic.
-    quad = sp.Poly(sp.cancel(char / (1 - MU)), MU)
+    quotient, remainder = sp.div(sp.Poly(sp.expand(char), MU), sp.Poly(1 - MU, MU))
+    if not remainder.is_zero or not is_zero(intertwine):
+        return CheckResult(
+            Status.REFUTED,
+            "the plane distances do not move by a 2x2 matrix: the rows of the Eq. 43 matrix do not all sum to 1",
+            counterexample=Text("row sums of the Eq. 43 matrix: ", sp.Matrix([sp.simplify(sum(T.row(r))) for r in range(3)]).T),
+        )
+    quad = quotient
     reduced = eig.applyfunc(lambda e: sp.rem(sp.Poly(e, MU), quad).as_expr())
     ratio = eq44_ratio(free, MU)
     if not (is_zero(intertwine) and is_zero(reduced)):
@@ -335,6 +343,8 @@ def _remark52(scheme: Scheme) -> CheckResult:
     r"does in the regular case $n = 4$.",
 )
 def _example(scheme: Scheme) -> CheckResult:
+    if (result := needs_mirror_symmetry(scheme)) is not None:
+        return result
     cond = nice_elliptic_conditions(scheme)
     joint = joint_obstruction(scheme)
     defects = {k: [sp.simplify(cond.eigenvalue_defect.subs(N, k)), sp.simplify(cond.ratio_defect.subs(N, k))] for k in (3, 4, 5)}

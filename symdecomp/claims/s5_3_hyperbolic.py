@@ -11,6 +11,7 @@ from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.frequency import COS
 from symdecomp.claims import CheckResult, Status, Step, Text, claim
+from symdecomp.claims.applicability import needs_mirror_symmetry
 
 _VALENCES = (3, 12)
 
@@ -23,6 +24,8 @@ _VALENCES = (3, 12)
     r"continuity.",
 )
 def _smaller(scheme: Scheme) -> CheckResult:
+    if (result := needs_mirror_symmetry(scheme)) is not None:
+        return result
     ev = tangent_eigenvalues(scheme)
     t = sp.Symbol("t", positive=True)  # t = |c|
     slope = sp.factor(sp.diff(ev.dominant.subs(sp.Abs(COS), t).subs(COS**2, t**2), t))
@@ -75,6 +78,8 @@ def _smaller(scheme: Scheme) -> CheckResult:
     r"to the tangent plane ($\lambda_2 = \lambda_1^2$).",
 )
 def _quadratic(scheme: Scheme) -> CheckResult:
+    if (result := needs_mirror_symmetry(scheme)) is not None:
+        return result
     # The requirement is modelled on the regular case: the scheme meets it at n = 4 (checked exactly), and the
     # resultant decides every other valence.
     eq = hyperbolic_equality(scheme)
@@ -106,6 +111,8 @@ def _quadratic(scheme: Scheme) -> CheckResult:
     r"a combination of $\vec{v_2}, \vec{v_{2n-2}}$ on a plane perpendicular to the 1-ring.",
 )
 def _construction(scheme: Scheme) -> CheckResult:
+    if (result := needs_mirror_symmetry(scheme)) is not None:
+        return result
     cc = scheme
     lo, hi = 3, 8
     for n in range(lo, hi + 1):

@@ -39,6 +39,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.analysis.tangent import tangent_eigenvalues
 
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
+from symdecomp.claims.applicability import needs_mirror_symmetry
 
 M_SYM = sp.Symbol("m", integer=True, positive=True)
 
@@ -569,6 +570,8 @@ def _two_eigenvalues(scheme: Scheme) -> CheckResult:
     statement=r"Hence $\alpha,\beta$ affect only elliptic properties of Catmull-Clark without interfering with tangent plane or hyperbolic properties.",
 )
 def _no_interference(scheme: Scheme) -> CheckResult:
+    if (result := needs_mirror_symmetry(scheme)) is not None:
+        return result
     # the two weight-dependent eigenvalues are those of E_0; look for vertex weights that lift one above lambda_1
     cf = closed_form_characteristic_polynomial(with_free_vertex_rule(scheme))
     lam1_expr = tangent_eigenvalues(scheme).dominant

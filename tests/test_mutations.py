@@ -58,6 +58,9 @@ def scheme(name: str) -> Scheme:
     if name == "complex weights":  # a rotation in the face rule: not a real scheme
         return _rules(name, (Q(3, 8), dict(cc.edge_rule.a), dict(cc.edge_rule.b)),
                       (Q(1, 4), {0: Q(1, 4) + sp.I / 16, 1: Q(1, 4) - sp.I / 16}, {0: Q(1, 4)}))
+    if name == "wide":  # offsets -2..2 in the edge rule: Eq. 51's closed form needs -1..1
+        return _rules(name, (Q(3, 8), {-2: Q(1, 64), -1: Q(1, 16), 0: Q(11, 32), 1: Q(1, 16), 2: Q(1, 64)}, {-1: Q(1, 16), 0: Q(1, 16)}),
+                      (Q(1, 4), {0: Q(1, 4), 1: Q(1, 4)}, {0: Q(1, 4)}))
     if name == "not affine":  # the edge rule's weights sum to 65/64 (built past the affinity check on purpose)
         return Scheme(name, Stencil(Q(3, 8) + Q(1, 64), cc.edge_rule.a, cc.edge_rule.b), cc.face_rule, cc.vertex_rule)
     raise KeyError(name)
@@ -133,8 +136,11 @@ TABLE = [
     ("Proposition 6.3", printed("s6_cb_matrices", "PRINTED_63_FACTOR", lambda blocks, order: order), P),
     ("Tangent plane unaffected (after Eq. 51)", "asymmetric", NA),
     ("Eq. 51", "moved", P),
+    ("Eq. 51", "wide", NA),
     ("S' (after Eq. 51)", "moved", P),
+    ("S' (after Eq. 51)", "wide", NA),
     ("Tuning weights (after Eq. 51)", "moved", P),
+    ("Tuning weights (after Eq. 51)", "wide", NA),
     ("Spectrum (Eq. 34, Eq. 43)", "moved", V),
 ]
 
@@ -142,8 +148,7 @@ TABLE = [
 #: statements involve no scheme and no formula held as data): listed so that a new claim cannot go unseen.
 WITHOUT_A_FLIP = {
     "Eq. 2-4", "Eq. 5", "Eq. 6", "Proposition 2.1", "Eq. 10-11", "Eq. 12-13", "Eq. 24", "Proposition 4.1",
-    "Eq. 40", "Eq. 41", "Eq. 49", "Eq. 50", "Remark 6.1", "Eq. 51", "S' (after Eq. 51)",
-    "Tuning weights (after Eq. 51)", "Spectrum (Eq. 34, Eq. 43)", "Section 5.3: basis function",
+    "Eq. 40", "Eq. 41", "Eq. 49", "Eq. 50", "Remark 6.1", "Spectrum (Eq. 34, Eq. 43)", "Section 5.3: basis function",
 }
 
 

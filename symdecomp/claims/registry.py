@@ -43,6 +43,7 @@ from typing import Callable
 
 import sympy as sp
 
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 
 __all__ = [
@@ -228,6 +229,8 @@ def _check_claim(label: str, scheme: Scheme) -> CheckResult:
     c = get_claim(label)
     try:
         result = c.check(scheme)
+    except InvalidSchemeError as exc:  # the scheme is outside what the claim's derivation covers
+        return CheckResult(Status.NOT_APPLICABLE, f"not applicable to the scheme {scheme.name!r}: {exc}")
     except Exception as exc:  # the registry reports, the caller decides
         tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
         return CheckResult(Status.ERROR, f"check raised {tb}")

@@ -114,7 +114,7 @@ def _construction(scheme: Scheme) -> CheckResult:
     if (result := needs_mirror_symmetry(scheme)) is not None:
         return result
     cc = scheme
-    lo, hi = 3, 8
+    lo, hi = max(3, scheme.minimum_valence()), 8
     for n in range(lo, hi + 1):
         it = iterate_hyperbolic_ring(cc, n, steps=3, digits=15)
         if not (it.matches_prediction and it.elliptic_component_zero):
@@ -140,7 +140,7 @@ def _construction(scheme: Scheme) -> CheckResult:
 )
 def _basis(scheme: Scheme) -> CheckResult:
     cc = scheme
-    lo, hi = _VALENCES
+    lo, hi = max(_VALENCES[0], scheme.minimum_valence()), _VALENCES[1]
     for n in range(lo, hi + 1):
         S = subdivision_matrix(cc, n)
         h = sp.Matrix([1] + [0] * (2 * n))

@@ -35,7 +35,7 @@ def _full_spectrum(scheme: Scheme) -> CheckResult:
              lam**3 - sym.frequency_zero[0] * lam**2 + sym.frequency_zero[1] * lam - sym.frequency_zero[2],
              sp.Function("F_0")(lam)),
     ]
-    lo, hi = VALENCES
+    lo, hi = max(VALENCES[0], scheme.minimum_valence()), VALENCES[1]
     for valence in range(lo, hi + 1):
         r = certify(scheme, valence, closed_forms=cf)
         if not r.ok:

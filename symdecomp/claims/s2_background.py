@@ -8,7 +8,7 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import circ, generating_polynomial, mode_eigenvalue_derivation
 from symdecomp.algebra.polygons import decompose
-from symdecomp.claims.registry import CheckResult, Status, Step, claim
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.schemes.scheme import Scheme
 
 W = sp.Symbol("w")
@@ -21,6 +21,19 @@ def _random_polygon(n: int, seed: int) -> sp.Matrix:
     return sp.Matrix([[sp.Rational(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(3)] for _ in range(n)])
 
 
+def PRINTED_VERTEX(j, m, n):
+    """Entry ``(j, m)`` of ``F_n`` as printed (Eq. 2-3): ``omega_n^(j m)``."""
+    return sp.exp(2 * sp.pi * sp.I * j * m / n)
+
+
+def PRINTED_ORDER(n):
+    """The order of the root of unity in ``F_n`` as printed (Eq. 3): ``omega_n^n = 1``."""
+    return n
+
+#: The sign in the real pair ``R cos(phi) -+ I sin(phi)`` of Eq. 6 (``-`` as printed).
+PRINTED_PAIR_SIGN = -1
+
+
 @claim(
     "Eq. 2-4",
     section="2",
@@ -30,7 +43,7 @@ def _random_polygon(n: int, seed: int) -> sp.Matrix:
 def _eq2_4(scheme: Scheme) -> CheckResult:
     from symdecomp.symbols import j, n
 
-    vertex = sp.exp(2 * sp.pi * sp.I * j * M / n)
+    vertex = PRINTED_VERTEX(j, M, n)
     step = sp.simplify(vertex.subs(M, M + 1) / vertex)
     modulus = sp.simplify(sp.Abs(vertex))
     ok = not step.has(M) and modulus == 1
@@ -59,9 +72,9 @@ def _eq5(scheme: Scheme) -> CheckResult:
 
     geometric = sp.summation(W**M, (M, 0, n - 1))
     general = geometric.args[-1][0] if isinstance(geometric, sp.Piecewise) else geometric
-    reduced = sp.simplify(general.subs(W**n, 1))
+    reduced = sp.simplify(general.subs(W ** PRINTED_ORDER(n), 1))
     if reduced != 0:
-        return CheckResult(Status.REFUTED, f"sum of w^m does not vanish: {reduced}", counterexample=str(reduced))
+        return CheckResult(Status.REFUTED, "the rows of F_n are not orthogonal", counterexample=Text("sum of w^m over a period: ", reduced))
     last = 12
     for size in range(3, last + 1):
         P = _random_polygon(size, seed=size)
@@ -88,11 +101,12 @@ def _eq5(scheme: Scheme) -> CheckResult:
 )
 def _eq6(scheme: Scheme) -> CheckResult:
     r, s = sp.symbols("r s")
-    pair = sp.Symbol("R") * sp.cos(PHI) - sp.Symbol("I") * sp.sin(PHI)
+    pair = sp.Symbol("R") * sp.cos(PHI) + PRINTED_PAIR_SIGN * sp.Symbol("I") * sp.sin(PHI)
     two_regular = sp.exp(sp.I * PHI) * (r + sp.I * s) / 2 + sp.exp(-sp.I * PHI) * (r - sp.I * s) / 2
-    identity = sp.simplify(sp.expand((two_regular - (r * sp.cos(PHI) - s * sp.sin(PHI))).rewrite(sp.cos)))
+    identity = sp.simplify(sp.expand((two_regular - (r * sp.cos(PHI) + PRINTED_PAIR_SIGN * s * sp.sin(PHI))).rewrite(sp.cos)))
     if identity != 0:
-        return CheckResult(Status.REFUTED, "identity fails", counterexample=str(identity))
+        return CheckResult(Status.REFUTED, "the pair is not the sum of two regular polygons in one frame",
+                           counterexample=Text("the difference is ", identity))
     import mpmath
 
     worst = mpmath.mpf(0)
@@ -121,6 +135,11 @@ def _eq6(scheme: Scheme) -> CheckResult:
     )
 
 
+def PRINTED_EIGENVALUE(coeffs):
+    """Prop. 2.1 as printed: the eigenvalue on ``v_k`` is ``p(omega_n^k)``, ``p(z) = sum_l c_l z^l``."""
+    return generating_polynomial(coeffs)
+
+
 @claim(
     "Proposition 2.1",
     section="2",
@@ -133,7 +152,7 @@ def _prop21(scheme: Scheme) -> CheckResult:
 
     coeffs = {k: sp.Symbol(f"c_{{{k}}}") for k in range(-2, 3)}
     row, eig = mode_eigenvalue_derivation(coeffs)
-    expected = generating_polynomial(coeffs)
+    expected = PRINTED_EIGENVALUE(coeffs)
     if sp.expand(eig - expected) != 0 or eig.has(sp.Symbol("i", integer=True)):
         return CheckResult(Status.REFUTED, "eigenvalue depends on the row", counterexample=str(eig))
     last = 10

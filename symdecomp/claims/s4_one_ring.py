@@ -326,6 +326,10 @@ def _prop43(scheme: Scheme) -> CheckResult:
     )
 
 
+#: Eq. 24 as printed: ``B^j / A^j = omega_2n^j``.
+PRINTED_B_OVER_A = sp.exp(sp.pi * sp.I * J / n)
+
+
 @claim(
     "Eq. 24",
     section="4",
@@ -336,12 +340,12 @@ def _eq24(scheme: Scheme) -> CheckResult:
     b_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW + 1) / (2 * n))
     a_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW) / (2 * n))
     ratio = sp.simplify(b_ij / a_ij)
-    expected = sp.exp(sp.pi * sp.I * J / n)
+    expected = PRINTED_B_OVER_A
     ok = sp.simplify(ratio - expected) == 0
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
         "b_i^j / a_i^j = omega_2n^(j(2i+1)) / omega_2n^(2ij) = omega_2n^j for every i; it holds for every j = 0..2n-1, "
         "not only j = 1..n-1",
-        counterexample=None if ok else str(ratio),
+        counterexample=None if ok else Text("b_i^j / a_i^j = ", ratio, ", not ", expected),
         steps=(Step("$b_i^j / a_i^j$:", ratio),),
     )

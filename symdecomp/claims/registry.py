@@ -74,6 +74,10 @@ class _TextPrinter(StrPrinter):
     def _print_MatrixBase(self, expr):
         return "[%s]" % ", ".join("[%s]" % ", ".join(self._print(e) for e in row) for row in expr.tolist())
 
+    def _print_Derivative(self, expr):
+        variables = "".join(" d%s" % self._print(v) for v in expr.variables)
+        return "d%s/%s" % (self._print(expr.expr), variables.strip())
+
     def _print_Abs(self, expr):
         return "|%s|" % self._print(expr.args[0])
 

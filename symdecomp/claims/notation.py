@@ -15,6 +15,7 @@ from __future__ import annotations
 from typing import Iterable
 
 import sympy as sp
+from sympy.printing.precedence import PRECEDENCE
 
 from symdecomp.claims.registry import Text
 
@@ -22,7 +23,7 @@ from symdecomp.analysis.frequency import COS
 from symdecomp.symbols import j, lam, n, omega
 
 __all__ = [
-    "A", "B", "I", "M", "c", "cos_j_theta", "eq", "ge", "gt", "j", "lam", "lambda_1", "lambda_2",
+    "A", "B", "I", "Kron", "M", "c", "cos_j_theta", "eq", "ge", "gt", "j", "lam", "lambda_1", "lambda_2",
     "lambda_12", "le", "listed", "lt", "n", "ne", "omega", "omega_2n", "omega_n", "theta", "tup",
 ]
 
@@ -41,6 +42,25 @@ omega_n = sp.Symbol("omega_n")
 omega_2n = sp.Symbol("omega_2n")
 #: The identity matrix, as a name.
 I = sp.Symbol("I")  # noqa: E741 (the paper's name)
+
+
+class Kron(sp.Expr):
+    """The Kronecker product ``alpha (x) v`` of named vectors (Section 6), as the paper writes it.
+
+    >>> a, v = sp.Symbol("alpha", commutative=False), sp.Symbol("v", commutative=False)
+    >>> print(Text(Kron(a, v)), sp.latex(Kron(a, v)))
+    alpha (x) v \\alpha \\otimes v
+    """
+
+    is_commutative = False
+    #: binds less than a product: ``B (alpha (x) v)``
+    precedence = PRECEDENCE["Add"]
+
+    def _sympystr(self, printer):
+        return " (x) ".join(printer.parenthesize(a, PRECEDENCE["Mul"]) for a in self.args)
+
+    def _latex(self, printer):
+        return " \\otimes ".join(printer.parenthesize(a, PRECEDENCE["Mul"]) for a in self.args)
 
 
 def A(k) -> sp.Symbol:

@@ -37,7 +37,19 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.analysis.tangent import tangent_eigenvalues
 
-from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims.notation import Kron, eq, ge, gt, j, lambda_1, listed, lt, ne, tup
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
+
+
+def _nc(name: str) -> sp.Symbol:
+    """A matrix or vector, by name (products of names keep their order)."""
+    return sp.Symbol(name, commutative=False)
+
+
+_kron = Kron
+
+
+_det = sp.Function("det")
 
 M_SYM = sp.Symbol("m", integer=True, positive=True)
 
@@ -93,6 +105,7 @@ def _banded_symbolic_identity(K: int):
 )
 def _prop61() -> CheckResult:
     c = sp.Symbol("c")
+    i_, j_ = sp.Symbol("i"), sp.Symbol("j")
     # As printed only the interior entries are constrained: n = 3 constrains c_11 alone (here c = 1).
     C3 = sp.Matrix([[2, 0, 0], [0, 1, 0], [0, 0, 5]])
     ev = C3.eigenvals()
@@ -102,7 +115,7 @@ def _prop61() -> CheckResult:
     w = sp.Symbol("w")
     geometric = sp.summation(w**l, (l, 0, N - 1))
     if not isinstance(geometric, sp.Piecewise):
-        return CheckResult(Status.ERROR, f"unexpected form of the geometric sum: {geometric}")
+        return CheckResult(Status.ERROR, Text("unexpected form of the geometric sum: ", geometric))
     at_one = sp.simplify(geometric.subs(w, 1))
     at_root = sp.simplify(geometric.args[-1][0].subs(w**N, 1))
     corrected_ok = at_root == 0 and at_one == N
@@ -115,15 +128,26 @@ def _prop61() -> CheckResult:
         return CheckResult(Status.ERROR, "the corrected statement did not check out; see steps")
     return CheckResult(
         Status.CORRECTED,
-        "false with the printed index range 0<i,j<n-1; with all entries equal (0<=i,j<=n-1) proved for symbolic n",
+        Text(
+            "false with the printed index range ", i_, ", ", j_, " in ", sp.Interval.open(0, N - 1),
+            "; with all entries equal (", i_, ", ", j_, " in ", sp.Interval(0, N - 1), ") proved for symbolic ", N,
+        ),
         steps=(
             Step("As printed, for $n=3$ only $c_{11}$ is constrained. Example with $c=1$, eigenvalues of", sp.FiniteSet(*C3.eigenvals()), C3),
             Step("Corrected: $C=cJ=\\mathrm{circ}(c,\\dots,c)$; by Prop. 2.1 its eigenvalue on $v_k$ is $c\\sum_{l=0}^{n-1}w^l$, $w=\\omega_n^k$", geometric),
             Step("at $w\\ne1$ (so $w^n=1$) the sum is", at_root),
             Step("at $w=1$ ($k=0$, eigenvector $(1,\\dots,1)$) the eigenvalue is $c$ times", at_one),
         ),
-        counterexample="n = 3, C = diag(2, 1, 5) has c_11 = c = 1 (the only entry 0<i,j<2 constrains) but eigenvalues 2, 1, 5, not 3 = nc and zeros",
-        correction="If c_ij = c for all 0 <= i, j <= n-1, the eigenvalues of C are nc (eigenvector (1,...,1)) and 0 with multiplicity n-1 (eigenvectors v_1..v_{n-1}).",
+        counterexample=Text(
+            eq(N, 3), ", ", eq(_nc("C"), C3), " has ", eq(sp.Symbol("c_11"), C3[1, 1]), " (the only entry the printed range "
+            "constrains, so ", eq(c, C3[1, 1]), ") but eigenvalues ", listed(ev), ", not ",
+            eq(N * c, (N * c).subs({N: 3, c: C3[1, 1]})), " and zeros",
+        ),
+        correction=Text(
+            "If ", eq(sp.Symbol("c_ij"), c), " for all ", i_, ", ", j_, " in ", sp.Interval(0, N - 1), ", the "
+            "eigenvalues of ", _nc("C"), " are ", N * c, " (eigenvector ", tup(1, sp.Symbol("..."), 1), ") and 0 with "
+            "multiplicity ", N - 1, " (eigenvectors ", sp.Symbol("v_1"), " to ", sp.Symbol("v_n-1"), ").",
+        ),
     )
 
 
@@ -149,17 +173,31 @@ def _prop62() -> CheckResult:
         literal_fails &= all(sol.get(x, x) == 0 and sol.get(y, y) == 0 for sol in solutions)
     if not (symbolic_ok and generic_ok and rational_ok and literal_fails):
         return CheckResult(Status.ERROR, "a Prop. 6.2 identity failed; see steps")
+    Bn, En, E_k, xn, vn, v_k, alpha_n = (_nc(name) for name in ("B", "E", "E_k", "x", "v", "v_k", "alpha"))
+    lam_ = sp.Symbol("lambda")
     return CheckResult(
         Status.CORRECTED,
-        "B(x (x) v_k) = (E_k x) (x) v_k proved for every x at symbolic order m (banded blocks) and for generic blocks; "
-        "the printed index range 0<i,j<n-1 leaves (for n = 2 blocks) no block required circulant",
+        Text(
+            eq(Bn * _kron(xn, v_k), _kron(E_k * xn, v_k)), " proved for every ", xn, " at symbolic order ", sp.Symbol("m"),
+            " (banded blocks) and for generic blocks; the printed index range ", sp.Symbol("i"), ", ", sp.Symbol("j"), " in ",
+            sp.Interval.open(0, N - 1), " leaves (for ", eq(N, 2), " blocks) no block required circulant",
+        ),
         steps=(
             Step("Row $i$ of block row $p$ of $B(\\alpha\\otimes v)$ minus $(E\\alpha)_p\\,\\omega^i$, three banded blocks per row, symbolic order (residues)", sp.Matrix(residues)),
             Step("So $BV=\\lambda V$ with $V=\\alpha\\otimes v$ exactly when $E\\alpha=\\lambda\\alpha$; $E$ always has an eigenvector, so $\\alpha$ exists"),
             Step("Literal reading with 2 blocks: no eigenvector of the form $(xv, yv)$ for $v=(1,\\pm1)$", Bad),
         ),
-        counterexample="2 x 2 blocks of order 2 (the printed range 0<i,j<1 is empty, so no block need be circulant): B = [[1,2,0,0],[0,0,0,0],[0,0,1,2],[0,0,0,0]] has no eigenvector (x v, y v) for v = (1, 1) or (1, -1), the eigenvectors of all circulants of order 2",
-        correction="If every block C_ij (0 <= i, j <= n-1) is circulant and v = v_k, then B (alpha (x) v) = (E alpha) (x) v for every alpha; hence alpha (x) v is an eigenvector of B for the eigenvalue lambda iff E alpha = lambda alpha.",
+        counterexample=Text(
+            "2 x 2 blocks of order 2 (the printed range ", sp.Interval.open(0, 1), " holds no integer, so no block need be "
+            "circulant): ", eq(Bn, Bad), " has no eigenvector ", tup(x * vn, y * vn), " for ", vn, " = ",
+            listed((tup(1, 1), tup(1, -1)), " or "), ", the eigenvectors of all circulants of order 2",
+        ),
+        correction=Text(
+            "If every block ", sp.Symbol("C_ij"), " (", sp.Symbol("i"), ", ", sp.Symbol("j"), " in ", sp.Interval(0, N - 1),
+            ") is circulant and ", eq(vn, sp.Symbol("v_k")), ", then ", eq(Bn * _kron(alpha_n, vn), _kron(En * alpha_n, vn)),
+            " for every ", alpha_n, "; hence ", _kron(alpha_n, vn), " is an eigenvector of ", Bn, " for the eigenvalue ",
+            lam_, " iff ", eq(En * alpha_n, lam_ * alpha_n), ".",
+        ),
     )
 
 
@@ -187,11 +225,20 @@ def _eq47() -> CheckResult:
         return CheckResult(Status.ERROR, "block-product form did not check out")
     return CheckResult(
         Status.CORRECTED,
-        "BV = (C_pq v)_pq alpha holds for generic 3x3 blocks of order 3 and any v; the printed first row (the visible part; the matrix is cut "
-        "in the text) ends with C_{1,n-1}, a typo for C_{0,n-1}",
+        Text(
+            _nc("B") * _nc("V"), " = (", _nc("C_pq") * _nc("v"), ") ", _nc("alpha"), " holds for generic 3x3 blocks of order 3 and any ",
+            _nc("v"), "; the printed first row (the visible part; the matrix is cut in the text) ends with ", _nc("C_1,n-1"),
+            ", a typo for ", _nc("C_0,n-1"),
+        ),
         steps=(Step("$BV-\\left(\\sum_q \\alpha_q C_{pq}v\\right)_p$ for generic blocks, generic $v$", sp.simplify(lhs - rhs).T),),
-        counterexample="n = 3 blocks of order 3, generic entries: with C_{1,2} in the first row (as printed) the first block row differs from BV",
-        correction="The (p, q) entry of the matrix in Eq. 47 is C_{p,q} v; its first row ends with C_{0,n-1} v.",
+        counterexample=Text(
+            eq(N, 3), " blocks of order 3, generic entries: with ", _nc("C_1,2"), " in the first row (as printed) the first "
+            "block row differs from ", _nc("B") * _nc("V"), " (first entry of the difference: ", sp.factor(sp.simplify(lhs - printed)[0]), ")",
+        ),
+        correction=Text(
+            "The ", tup(sp.Symbol("p"), sp.Symbol("q")), " entry of the matrix in Eq. 47 is ", _nc("C_p,q") * _nc("v"),
+            "; its first row ends with ", _nc("C_0,n-1") * _nc("v"), ".",
+        ),
     )
 
 
@@ -214,10 +261,17 @@ def _eq48() -> CheckResult:
         return CheckResult(Status.ERROR, "C_pq v = e_pq v failed")
     return CheckResult(
         Status.CORRECTED,
-        "C_pq v_k = e_pq v_k for generic circulant blocks of order 4 and every k (Prop. 2.1); same index typo e_{1,n-1} for e_{0,n-1} as Eq. 47",
+        Text(
+            eq(_nc("C_pq") * _nc("v_k"), sp.Symbol("e_pq") * _nc("v_k")), " for generic circulant blocks of order 4 and every ",
+            sp.Symbol("k"), " (Prop. 2.1); same index typo ", sp.Symbol("e_1,n-1"), " for ", sp.Symbol("e_0,n-1"), " as Eq. 47",
+        ),
         steps=(Step("$E$ for $v_1$, generic blocks of order 4", frequency_matrix(cb, 1)),),
-        counterexample="the first row of the printed matrix ends with e_{1,n-1} v (see Eq. 47)",
-        correction="The (p, q) entry is e_{p,q} v with e_{p,q} the eigenvalue of C_{p,q} on v; the first row ends with e_{0,n-1} v.",
+        counterexample=Text("the first row of the printed matrix ends with ", sp.Symbol("e_1,n-1") * _nc("v"), " (see Eq. 47)"),
+        correction=Text(
+            "The ", tup(sp.Symbol("p"), sp.Symbol("q")), " entry is ", sp.Symbol("e_p,q") * _nc("v"), " with ",
+            sp.Symbol("e_p,q"), " the eigenvalue of ", _nc("C_p,q"), " on ", _nc("v"), "; the first row ends with ",
+            sp.Symbol("e_0,n-1") * _nc("v"), ".",
+        ),
     )
 
 
@@ -234,7 +288,10 @@ def _eq49() -> CheckResult:
         return CheckResult(Status.ERROR, "identity failed")
     return CheckResult(
         Status.PROVED,
-        "B(alpha (x) v) - (E alpha) (x) v vanishes at a symbolic row i for banded blocks of symbolic order and for generic blocks of order 4, every alpha",
+        Text(
+            _nc("B") * _kron(_nc("alpha"), _nc("v")) - _kron(_nc("E") * _nc("alpha"), _nc("v")), " vanishes at a symbolic row ",
+            sp.Symbol("i"), " for banded blocks of symbolic order and for generic blocks of order 4, every ", _nc("alpha"),
+        ),
         steps=(Step("residues, two block rows, symbolic order", sp.Matrix(_banded_symbolic_identity(2))),),
     )
 
@@ -287,8 +344,12 @@ def _remark61() -> CheckResult:
         return CheckResult(Status.ERROR, "block diagonalization or the examples failed")
     return CheckResult(
         Status.PROVED,
-        "B P = P diag(E_k) with P = [e_p (x) v_k] invertible (Eq. 49 with alpha = e_p, proved for every order); "
-        "so B is diagonalizable iff every E_k is (the condition is also necessary: a Jordan E_0 example)",
+        Text(
+            eq(_nc("B") * _nc("P"), _nc("P") * sp.Function("diag")(_nc("E_k"))), " with ", _nc("P"), " the matrix of columns ",
+            _kron(_nc("e_p"), _nc("v_k")), ", invertible (Eq. 49 with ", eq(_nc("alpha"), _nc("e_p")),
+            ", proved for every order); so ", _nc("B"), " is diagonalizable iff every ", _nc("E_k"),
+            " is (the condition is also necessary: an example with a Jordan block ", _nc("E_0"), ")",
+        ),
         steps=(
             Step("$E_0$ of a CB-matrix whose $B$ is not diagonalizable", E0),
             Step("that CB-matrix", jordan.matrix()),

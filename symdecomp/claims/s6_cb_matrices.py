@@ -398,11 +398,20 @@ def _prop63() -> CheckResult:
     nodiag_ok = chi_J == sp.Poly(sp.expand((x * sp.eye(2) - perturbed_frequency_zero_matrix(jordan, T2)).det() * rest), x)
     if not (other_same and zero_ok and exact_ok and nodiag_ok):
         return CheckResult(Status.ERROR, "a Prop. 6.3 identity failed; see steps")
+    Kn, Tn, In, E_0, k_ = sp.Symbol("K"), _nc("T"), _nc("I"), _nc("E_0"), sp.Symbol("k")
+    t_ij, a_ij = sp.Symbol("t_ij"), sp.Symbol("a_ij")
+
+    def rest_of(last):
+        return sp.Product(_det(x * In - _nc("E_k")), (k_, 1, last))
+
     return CheckResult(
         Status.CORRECTED,
-        "proved for symbolic block order m: only E_0 changes, into E_0 + m T; the printed t_ij = n a_ij (in the proposition n is the number of blocks; "
-        "the factor is the block order m, which in the application is the valence) "
-        "and 'eigenvectors' are wrong, and the hypothesis 'if Remark 6.1 holds' is not needed",
+        Text(
+            "proved for symbolic block order ", M_SYM, ": only ", E_0, " changes, into ", E_0 + M_SYM * Tn,
+            "; the printed ", eq(t_ij, N * a_ij), " (in the proposition ", N, " is the number of blocks; the factor is the "
+            "block order ", M_SYM, ", which in the application is the valence) and 'eigenvectors' are wrong, and the "
+            "hypothesis 'if Remark 6.1 holds' is not needed",
+        ),
         steps=(
             Step("$E_k(C)-E_k(B)$ for $k\\ne0$ (banded blocks plus $t_{pq}J$, symbolic order $m$)", sp.simplify(C.frequency_matrix(zero_frequency=False) - Bm.frequency_matrix(zero_frequency=False))),
             Step("$E_0(C)-E_0(B)$ (Prop. 6.1: $Jv_0=m v_0$, $Jv_k=0$)", zero_shift),
@@ -410,8 +419,20 @@ def _prop63() -> CheckResult:
             Step("its characteristic polynomial", chi_C.as_expr()),
             Step("with the printed $t_{ij}=n a_{ij}$, $n=K=2$, instead of $m=4$", printed.as_expr()),
         ),
-        counterexample="K = 2 blocks of order m = 4 (random rational circulants, T = [[1,-1/2],[2,1/3]]): det(xI - C) = det(xI - E_0 - 4T) prod_{k=1,2,3} det(xI - E_k), not with E_0 + 2T; the non-matching values are eigenvalues (not eigenvectors) of that matrix",
-        correction="For every circulant B (K x K blocks of order m) and constant blocks a_ij: det(xI - (B + A)) = det(xI - (E_0 + m T)) prod_{k=1}^{m-1} det(xI - E_k), t_ij = a_ij, E_0 the eigenvalues of the blocks on (1,...,1). So the eigenvalues of B + A and B agree except for the K eigenvalues of E_0 + m T (replacing those of E_0), whether or not any E_k is diagonalizable; index ranges are 0 <= i, j <= K-1 and 0 <= l, k <= m-1.",
+        counterexample=Text(
+            eq(Kn, K), " blocks of order ", eq(M_SYM, 4), " (random rational circulants, ", eq(Tn, T), "): ",
+            eq(_det(x * In - _nc("C")), _det(x * In - E_0 - 4 * Tn) * rest_of(3)), ", not with ", E_0 + K * Tn,
+            "; the non-matching values are eigenvalues (not eigenvectors) of that matrix",
+        ),
+        correction=Text(
+            "For every circulant ", _nc("B"), " (", Kn, " x ", Kn, " blocks of order ", M_SYM, ") and constant blocks ",
+            a_ij, ": ", eq(_det(x * In - (_nc("B") + _nc("A"))), _det(x * In - (E_0 + M_SYM * Tn)) * rest_of(M_SYM - 1)),
+            ", ", eq(t_ij, a_ij), ", ", E_0, " the eigenvalues of the blocks on ", tup(1, sp.Symbol("..."), 1),
+            ". So the eigenvalues of ", _nc("B") + _nc("A"), " and ", _nc("B"), " agree except for the ", Kn,
+            " eigenvalues of ", E_0 + M_SYM * Tn, " (replacing those of ", E_0, "), whether or not any ", _nc("E_k"),
+            " is diagonalizable; index ranges are ", sp.Symbol("i"), ", ", sp.Symbol("j"), " in ", sp.Interval(0, Kn - 1),
+            " and ", sp.Symbol("l"), ", ", sp.Symbol("k"), " in ", sp.Interval(0, M_SYM - 1), ".",
+        ),
     )
 
 
@@ -440,10 +461,19 @@ def _eq51() -> CheckResult:
     )
     if not (factor_ok and combine_ok and concrete and sign == (-1) ** (N - 1)):
         return CheckResult(Status.ERROR, "a step of the closed form failed")
+    x_ = sp.Symbol("x")
+    rho_p_, rho_m_, c_p_, c_m_ = sp.symbols("rho_+ rho_- c_+ c_-")
     return CheckResult(
         Status.PROVED,
-        "det(xI - S) = (x-1) det(xI - E_0) (rho_+^n + rho_-^n - (-c_+)^n - (-c_-)^n)/q(x,1), derived for symbolic n and weights; "
-        "exact (FLINT) against the matrix for n = 3..16 with alpha, beta free and standard (tests: 3..64, slow: to 128)",
+        Text(
+            eq(
+                _det(x_ * _nc("I") - _nc("S")),
+                (x_ - 1) * _det(x_ * _nc("I") - _nc("E_0"))
+                * (rho_p_**N + rho_m_**N - (-c_p_) ** N - (-c_m_) ** N) / sp.Function("q")(x_, 1),
+            ),
+            ", derived for symbolic ", N, " and weights; exact (FLINT) against the matrix for ", N, " from 3 to 16 with ",
+            ALPHA, ", ", BETA, " free and standard (tests: to 64, slow: to 128)",
+        ),
         steps=(
             Step("$q(x,\\omega)=\\det(xI-M(\\omega))$", cf.frequency_factor),
             Step("$(c_-, c_0, c_+)$", sp.Matrix([list(cf.laurent_coefficients)])),
@@ -490,11 +520,17 @@ def _s_prime() -> CheckResult:
     printed_not_constant = sp.simplify(printed_sums.corner - printed_sums.column[0]) != 0
     if not (form_ok and concrete_ok and printed_not_constant):
         return CheckResult(Status.ERROR, "the derived S' does not have the stated form")
+    Sn, Qn = _nc("S"), _nc("Q")
+    blocks = [_nc(f"C_{k}") for k in range(1, 5)]
     return CheckResult(
         Status.PROVED,
-        "the two operations are S -> Q^{-1} S Q (a similarity); derived on the block form for symbolic n, alpha, beta: "
-        "first column (1, 0, ..., 0), first row (1, alpha 1^T, beta 1^T), lower-right [[C1-A, C2-B], [C3-A, C4-B]]; "
-        "checked entry by entry against Q^{-1} S Q for n = 3..8",
+        Text(
+            "the two operations are the similarity ", Sn, " to ", Qn**-1 * Sn * Qn, "; derived on the block form for symbolic ",
+            N, ", ", ALPHA, ", ", BETA, ": first column ", tup(*([red.reduced.corner, *red.reduced.column] + [sp.Symbol("...")])),
+            ", first row ", tup(first_row[0], *first_row[1]), " (the weight on each ", sp.Symbol("a"), ", each ",
+            sp.Symbol("b"), "), constant parts ", constants, " added to the circulant blocks ", listed(blocks),
+            "; checked entry by entry against ", Qn**-1 * Sn * Qn, " for ", N, " from 3 to 8",
+        ),
         steps=(
             Step("on $S-xI$ ($n=4$) the first column after adding all columns is $(1-x)(1,\\dots,1)^T$, as the text says"),
             Step("first column after adding all columns to it (row sums, symbolic $n$)", sp.Matrix([red.after_columns.corner, *red.after_columns.column])),
@@ -524,10 +560,18 @@ def _two_eigenvalues() -> CheckResult:
     concrete_ok = all(verify_closed_form(scheme, n) for n in range(3, 13))
     if not (free_of_weights and concrete_ok and dependence != sp.zeros(1, 2)):
         return CheckResult(Status.ERROR, "the weights enter a frequency k != 0, or the exact check failed")
+    x_, k_, In, E_0 = sp.Symbol("x"), sp.Symbol("k"), _nc("I"), _nc("E_0")
     return CheckResult(
         Status.PROVED,
-        "for symbolic n, alpha, beta: det(xI - S) = (x-1) det(xI - E_0) prod_{k=1}^{n-1} det(xI - M(omega^k)) and only E_0 contains alpha, beta; "
-        "exact for n = 3..12 with alpha, beta free",
+        Text(
+            "for symbolic ", N, ", ", ALPHA, ", ", BETA, ": ",
+            eq(
+                _det(x_ * In - _nc("S")),
+                (x_ - 1) * _det(x_ * In - E_0) * sp.Product(_det(x_ * In - sp.Function("M")(OMEGA**k_)), (k_, 1, N - 1)),
+            ),
+            " and only ", E_0, " contains ", ALPHA, ", ", BETA, "; exact for ", N, " from 3 to 12 with ", ALPHA, ", ", BETA,
+            " free",
+        ),
         steps=(
             Step("$E_k$ of the CB-block of $S'$ for $k\\ne0$ (free of $\\alpha,\\beta$)", E),
             Step("$E_0 = M(1)+nT$", E0),
@@ -552,15 +596,26 @@ def _no_interference() -> CheckResult:
     larger = sp.simplify(moved - lam1) > 0
     if not larger:
         return CheckResult(Status.ERROR, "counterexample did not hold")
+    k_, E_0 = sp.Symbol("k"), _nc("E_0")
     return CheckResult(
         Status.CORRECTED,
-        "the eigenvalues of frequencies k != 0 (tangent-plane lambda_1, hyperbolic j = 2) do not depend on alpha, beta (proved), "
-        "but the weights can push an E_0 eigenvalue above lambda_1, and then the tangent-plane pair is no longer subdominant",
+        Text(
+            "the eigenvalues of frequencies ", ne(k_, 0), " (tangent-plane ", lambda_1, ", hyperbolic ", eq(j, 2),
+            ") do not depend on ", ALPHA, ", ", BETA, " (proved), but the weights can push an eigenvalue of ", E_0,
+            " above ", lambda_1, ", and then the tangent-plane pair is no longer subdominant",
+        ),
         steps=(
             Step("$E_0$ at $\\alpha=\\beta=0$, $n=3$", E0),
             Step("its larger eigenvalue", moved),
             Step("$\\lambda_1$ at $n=3$ (unchanged by $\\alpha,\\beta$)", lam1),
         ),
-        counterexample=f"n = 3, alpha = beta = 0 (O fixed): E_0 has the eigenvalue {moved} ~ {sp.N(moved, 6)} > lambda_1 = {sp.N(lam1, 6)}, so the subdominant eigenvalue is no longer the tangent-plane one",
-        correction="alpha, beta change only the two eigenvalues of E_0 = M(1) + nT; tangent-plane and hyperbolic behaviour are unaffected provided both stay below lambda_1 in modulus.",
+        counterexample=Text(
+            eq(N, 3), ", ", eq(ALPHA, 0), ", ", eq(BETA, 0), " (O fixed): ", E_0, " has the eigenvalue ", moved, " = ",
+            sp.N(moved, 6), ", larger than ", eq(lambda_1, sp.N(lam1, 6)),
+            ", so the subdominant eigenvalue is no longer the tangent-plane one",
+        ),
+        correction=Text(
+            ALPHA, ", ", BETA, " change only the two eigenvalues of ", eq(E_0, sp.Function("M")(1) + N * _nc("T")),
+            "; tangent-plane and hyperbolic behaviour are unaffected provided both stay below ", lambda_1, " in modulus.",
+        ),
     )

@@ -78,9 +78,12 @@ class _TextPrinter(StrPrinter):
         variables = "".join(" d%s" % self._print(v) for v in expr.variables)
         return "d%s/%s" % (self._print(expr.expr), variables.strip())
 
-    def _print_Product(self, expr):
+    def _print_Product(self, expr, name="prod"):
         limits = ", ".join("%s=%s..%s" % tuple(self._print(x) for x in lim) for lim in expr.limits)
-        return "prod_{%s} %s" % (limits, self.parenthesize(expr.function, 50))
+        return "%s_{%s} %s" % (name, limits, self.parenthesize(expr.function, 50))
+
+    def _print_Sum(self, expr):
+        return self._print_Product(expr, "sum")
 
     def _print_Abs(self, expr):
         return "|%s|" % self._print(expr.args[0])

@@ -167,7 +167,8 @@ def _eq35_37() -> CheckResult:
         return CheckResult(Status.REFUTED, "the vector is not an eigenvector", counterexample=Text("the remainder ", remainder))
     y_name = S("y")
     quarter = I / 4
-    at_4_2 = (1 + omega**2) / 4
+    # the numerator of y at n = 4, j = 2, where omega = omega_4^2 = -1
+    numerator_4_2 = eq(M[1, 0].subs(omega, S("omega_4") ** 2), at_half[1, 0])
     return CheckResult(
         Status.CORRECTED,
         Text(
@@ -178,7 +179,7 @@ def _eq35_37() -> CheckResult:
         ),
         counterexample=Text(
             eq(n, 4), ", ", eq(j, 2), ": ", eq(Mk(2), at_half), ", ", eq(lambda_1, lambda_2), " = ", at_half[1, 1], " and ",
-            eq(at_4_2, at_4_2.subs(omega, -1)), ", so the printed vector is (1, 0/0)",
+            numerator_4_2, ", so the printed vector is (1, 0/0)",
         ),
         correction=Text(
             "for ", ne(cos_j_theta, 0), " the eigenspace of ", lambda_12, " is spanned by ",

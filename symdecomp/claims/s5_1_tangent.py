@@ -12,12 +12,15 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
 from symdecomp.symbols import lam, n, omega
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from symdecomp.claims.notation import M as Mk
+from symdecomp.claims.notation import A, B, I, cos_j_theta, eq, ge, gt, j, lambda_1, lambda_2, lambda_12, le, listed, lt, ne, omega_2n, omega_n, tup
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
 from symdecomp.claims.applicability import needs_mirror_symmetry
 
 R = sp.Rational
 C = COS
+S = sp.Symbol
 
 
 #: The circulants of Eq. 25-30 as printed, as offsets (``c_{n-1}`` is offset -1).
@@ -49,9 +52,12 @@ def _eq25_30(scheme: Scheme) -> CheckResult:
     ok = all(c == 0 for c in checks)
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "with circ's convention (entry c_(s-r)), C_alpha is Eq. 17, C_beta (c_0 = c_(n-1) = 1/2) reads b_i and b_(i-1) as "
-        "in Eq. 18, C_gamma reads a_i and a_(i+1) as in Eq. 20; their eigenvalues from Prop. 2.1, for every n",
-        counterexample=None if ok else str(checks),
+        Text(
+            "with circ's convention (entry ", S("c_s-r"), "), ", S("C_alpha"), " is Eq. 17, ", S("C_beta"), " (",
+            S("c_0"), " = ", S("c_n-1"), " = ", R(1, 2), ") reads ", S("b_i"), " and ", S("b_i-1"), " as in Eq. 18, ",
+            S("C_gamma"), " reads ", S("a_i"), " and ", S("a_i+1"), " as in Eq. 20; their eigenvalues from Prop. 2.1, for every ", n,
+        ),
+        counterexample=None if ok else Text("the differences ", sp.Tuple(*checks)),
         steps=tuple(Step(f"$\\lambda^\\{k}_j$ (Prop. 2.1, $\\omega = \\omega_n^j$):", v) for k, v in eig.items()),
     )
 
@@ -138,17 +144,21 @@ def _eq34(scheme: Scheme) -> CheckResult:
         shown = [_num(_at(p, 5)) for p in printed]
         return CheckResult(
             Status.REFUTED,
-            Text("the printed values are not roots of the characteristic polynomial of this scheme's M_j: substituted, "
-                 "they leave ", sp.Matrix(residuals).T),
-            counterexample=Text("n = 5, j = 1: the printed values are ", shown[0], " and ", shown[1],
-                                ", the eigenvalues of this scheme's M_1 are ", derived[0], " and ", derived[1]),
+            Text("the printed values are not roots of the characteristic polynomial of this scheme's ", Mk("j"),
+                 ": substituted, they leave ", sp.Matrix(residuals).T),
+            counterexample=Text(eq(n, 5), ", ", eq(j, 1), ": the printed values are ", shown[0], " and ", shown[1],
+                                ", the eigenvalues of this scheme's ", Mk(1), " are ", derived[0], " and ", derived[1]),
             steps=steps,
         )
     return CheckResult(
         Status.PROVED,
-        "both printed values are roots of det(lambda I - M_j) rewritten in c = cos(j theta), identically in c (every n, j); "
-        "they differ unless c = 0. The printed lambda_1 is the larger one only when cos(j theta) >= 0 (j <= n/2); "
-        "in general the dominant eigenvalue is 1/4 + c^2/8 + |c|/4 sqrt(1 + c^2/4)",
+        Text(
+            "both printed values are roots of the characteristic polynomial ", ev.characteristic_polynomial,
+            " of ", Mk("j"), ", written in ", eq(C, cos_j_theta), ", identically in ", C, " (every ", n, ", ", j,
+            "); they differ unless ", eq(C, 0), ". The printed ", lambda_1, " is the larger one only when ",
+            ge(cos_j_theta, 0), " (", le(j, n / 2), "); in general the dominant eigenvalue is ",
+            eq(lambda_1, ev.dominant),
+        ),
         steps=steps + (Step("$\\lambda_1 - \\lambda_2$ as printed:", sp.simplify(printed[0] - printed[1])),),
     )
 
@@ -183,10 +193,10 @@ def _eq35_37(scheme: Scheme) -> CheckResult:
         image = (_at(M, 5) * sp.Matrix([1, y])).applyfunc(lambda e: _num(e))
         return CheckResult(
             Status.REFUTED,
-            "the printed vector is not an eigenvector of this scheme's M_j (the residual does not vanish modulo the "
-            "characteristic polynomial)",
-            counterexample=Text("n = 5, j = 1, lambda_1 = ", _num(lam1), ": the printed vector (1, ", _num(y),
-                                ") is mapped by M_1 to ", image.T, ", not to lambda_1 times it"),
+            Text("the printed vector is not an eigenvector of this scheme's ", Mk("j"), " (the residual does not vanish modulo "
+                 "the characteristic polynomial)"),
+            counterexample=Text(eq(n, 5), ", ", eq(j, 1), ", ", eq(lambda_1, _num(lam1)), ": the printed vector ", tup(1, _num(y)),
+                                " is mapped by ", Mk(1), " to ", image.T, ", not to ", lambda_1, " times it"),
             steps=steps,
         )
     # where is y = m21/(lambda - m22) undefined (0/0)? where m21 vanishes, at a root of unity zeta = omega_2n^j
@@ -195,22 +205,24 @@ def _eq35_37(scheme: Scheme) -> CheckResult:
     if not orders:
         return CheckResult(
             Status.PROVED,
-            Text("the printed vector is an eigenvector of M_j for both eigenvalues, and m_21 = ", M[1, 0],
-                 " vanishes at no frequency j of any valence, so it is defined everywhere"),
+            Text("the printed vector is an eigenvector of ", Mk("j"), " for both eigenvalues, and ", eq(S("m_21"), M[1, 0]),
+                 " vanishes at no frequency of any valence, so it is defined everywhere"),
             steps=steps,
         )
     m = orders[0]
     valence = m // 2 if m % 2 == 0 and m // 2 >= 3 else m
-    j = 2 * valence // m
-    at = _at(M, valence, j).applyfunc(sp.simplify)
+    jj = 2 * valence // m
+    at = _at(M, valence, jj).applyfunc(sp.simplify)
     return CheckResult(
         Status.CORRECTED,
-        Text("the printed vector solves M_j (1, y)^T = lambda (1, y)^T modulo the characteristic polynomial wherever it is "
-             "defined; it is 0/0 where m_21 = ", M[1, 0], " vanishes, i.e. where omega_2n^j is a root of unity of order ",
-             sp.FiniteSet(*orders)),
-        counterexample=Text("n = ", valence, ", j = ", j, ": M_j = ", at, " and m_21 = 0, so the printed vector is (1, 0/0)"),
-        correction=Text("for m_21(omega_n^j) != 0 the eigenspace of lambda is spanned by (1, ", derived,
-                        "); where m_21 = 0, M_j is triangular (for this scheme at n = ", valence, ", j = ", j, ": ", at, ")"),
+        Text("the printed vector solves ", Mk("j"), " ", tup(1, S("y")), " = ", lam, " ", tup(1, S("y")), " modulo the characteristic "
+             "polynomial wherever it is defined; it is 0/0 where ", eq(S("m_21"), M[1, 0]), " vanishes, i.e. where ",
+             omega_2n**j, " is a root of unity of order ", sp.FiniteSet(*orders)),
+        counterexample=Text(eq(n, valence), ", ", eq(j, jj), ": ", eq(Mk(jj), at), " and ", eq(S("m_21"), 0),
+                            ", so the printed vector is (1, 0/0)"),
+        correction=Text("for ", ne(S("m_21"), 0), " the eigenspace of ", lam, " is spanned by ", tup(1, derived), "; where ",
+                        eq(S("m_21"), 0), ", ", Mk("j"), " is triangular (for this scheme at ", eq(n, valence), ", ",
+                        eq(j, jj), ": ", at, ")"),
         steps=steps,
     )
 
@@ -283,7 +295,7 @@ def _eq38(scheme: Scheme) -> CheckResult:
              ", and the conclusion still holds; at every other frequency the determinant is nonzero"),
         counterexample=Text("n = ", points[0].n, ", j = ", points[0].j, ": the determinant is 0 or undefined, the initial vector is an "
                             "eigenvector (eigenvalue ", points[0].eigenvalue, ")"),
-        correction=Text("the determinant is nonzero unless omega_2n^j is a root of unity of order in ",
+        correction=Text("the determinant is nonzero unless ", omega_2n**j, " is a root of unity of order in ",
                         sp.FiniteSet(*cond.orders) if cond.orders is not None else "(all orders)",
                         "; there the initial vector is an eigenvector whose eigenvalue is not smaller in modulus than the other, "
                         "so it never lacks the dominant part"),
@@ -344,24 +356,26 @@ def _prop51(scheme: Scheme) -> CheckResult:
         mus = [_num(e.subs(n, upto)) for e in block]
         return CheckResult(
             Status.REFUTED,
-            Text("at n = ", upto, " an eigenvalue of the Eq. 43 block is at least lambda_1 (certified in interval arithmetic)"),
-            counterexample=Text("n = ", upto, ": lambda_1 = ", lam1, ", the Eq. 43 eigenvalues other than 1 are ", sp.Matrix(mus).T),
+            Text("at ", eq(n, upto), " an eigenvalue of the Eq. 43 block is at least ", lambda_1, " (certified in interval arithmetic)"),
+            counterexample=Text(eq(n, upto), ": ", eq(lambda_1, lam1), ", the Eq. 43 eigenvalues other than 1 are ", sp.Matrix(mus).T),
             steps=steps,
         )
     if not increasing:
         return CheckResult(
             Status.UNDECIDED,
-            Text("the Eq. 43 eigenvalues stay below lambda_1 for n = 3..", last, " (certified), but the sufficient test that the "
-                 "dominant eigenvalue of M_j increases with |cos(j pi/n)| (a derivative that is a sum of positive terms) failed: ",
-                 derivative),
+            Text("the Eq. 43 eigenvalues stay below ", lambda_1, " for n = 3..", last, " (certified), but the sufficient test "
+                 "that the dominant eigenvalue of ", Mk("j"), " increases with ", sp.Abs(cos_j_theta), " (a derivative that is a "
+                 "sum of positive terms) failed: ", derivative),
             steps=steps,
         )
+    k = S("k")
     return CheckResult(
         Status.VERIFIED,
-        Text("for all n the dominant eigenvalue of M_j increases with cos^2(j pi/n) (its derivative in c > 0 is a sum of "
-             "positive terms), so among the frequencies k = 1..n-1 it is largest at k = 1 and n - 1 (the 2n-gon components "
-             "j = 1, 2n-1 and also j = n-1, n+1, which share M_1); against the derived eigenvalues of the Eq. 43 block "
-             "other than 1 (", sp.Matrix(block).T, ") it is larger for n = 3..", last, ", certified in interval arithmetic"),
+        Text("for all ", n, " the dominant eigenvalue of ", Mk("j"), " increases with ", cos_j_theta**2, " (its derivative in ",
+             gt(C, 0), " is a sum of positive terms), so among the frequencies k = 1..n-1 it is largest at k = 1 and n - 1 "
+             "(the 2n-gon components j = 1, 2n-1 and also j = n-1, n+1, which share ", Mk(1), "); against the derived "
+             "eigenvalues of the Eq. 43 block other than 1 (", sp.Matrix(block).T, ") it is larger for n = 3..", last,
+             ", certified in interval arithmetic"),
         valences=(3, last),
         steps=steps,
     )
@@ -422,15 +436,16 @@ def _rem51(scheme: Scheme) -> CheckResult:
     ratios = _filtering_evidence(scheme, valence)
     return CheckResult(
         Status.REFUTED,
-        Text("the components j = n +- 1 are moved by M_1 (omega_n^(n+1) = omega_n) from the vector (1, omega_2n^(n+1)); R vanishes "
-             "there, so that it is an eigenvector of M_1, ",
+        Text("the components ", eq(j, n + 1), " and ", eq(j, n - 1), " are moved by ", Mk(1), " (",
+             eq(omega_n ** (n + 1), omega_n), ") from the vector ", tup(1, omega_2n ** (n + 1)), "; R vanishes there, so that "
+             "it is an eigenvector of ", Mk(1), ", ",
              Text("at the valences ", sp.FiniteSet(*candidates), " (filtered out at ", sp.FiniteSet(*filtered), ")") if candidates
              else "at no valence",
-             "; at every other n they keep a component on the dominant eigenvector and shrink like lambda_1, the "
-             "tangent-plane rate, not like the non-convex components"),
-        counterexample=Text("n = ", valence, ", the 1-ring with O = 0 and only the 2n-gon component j = ", valence + 1,
-                            ": |ring after k steps| / lambda_1^k at k = 10, 20, 40 is ", sp.Matrix(ratios).T,
-                            " (60 digits), converging to a nonzero constant"),
+             "; at every other ", n, " they keep a component on the dominant eigenvector and shrink like ", lambda_1,
+             ", the tangent-plane rate, not like the non-convex components"),
+        counterexample=Text(eq(n, valence), ", the 1-ring with O = 0 and only the 2n-gon component ", eq(j, valence + 1),
+                            ": the norm of the ring after k steps divided by ", lambda_1 ** S("k"), " at k = 10, 20, 40 is ",
+                            sp.Matrix(ratios).T, " (60 digits), converging to a nonzero constant"),
         steps=steps,
     )
 
@@ -458,23 +473,27 @@ def _eq39(scheme: Scheme) -> CheckResult:
         Step("At $n = 4$, $j = 1$:", at4),
     )
     if inverse:
-        return CheckResult(Status.PROVED, "the printed expression is A^j/B^j on the dominant eigenvector (cos(j theta) > 0)", steps=steps)
+        return CheckResult(Status.PROVED, Text("the printed expression is ", A("j") / B("j"), " on the dominant eigenvector"), steps=steps)
     if not same:
         return CheckResult(
             Status.REFUTED,
-            "the printed expression is neither B^j/A^j nor A^j/B^j on the dominant eigenvector of this scheme's M_j",
-            counterexample=Text("n = 4, j = 1: the printed expression is ", printed4, ", while B^1/A^1 = ", at4,
-                                " and A^1/B^1 = ", sp.simplify(1 / at4)),
+            Text("the printed expression is neither ", B("j") / A("j"), " nor ", A("j") / B("j"), " on the dominant eigenvector "
+                 "of this scheme's ", Mk("j")),
+            counterexample=Text(eq(n, 4), ", ", eq(j, 1), ": the printed expression is ", printed4, ", while ",
+                                eq(B(1) / A(1), at4), " and ", eq(A(1) / B(1), sp.simplify(1 / at4))),
             steps=steps,
         )
     a_over_b = sp.simplify(1 / at4)
     return CheckResult(
         Status.CORRECTED,
-        Text("the printed expression is y/x = B^j/A^j on the dominant eigenvector (1, y) of M_j (for cos(j theta) > 0; "
-             "for cos(j theta) < 0 use |cos|), not the r of A^j = r B^j: at n = 4, j = 1 it gives ", printed4,
-             " = B^1/A^1, while A^1/B^1 = ", a_over_b),
-        counterexample=Text("n = 4, j = 1: with A^1 = r B^1 the ratio would be ", a_over_b, ", not the printed value ", printed4),
-        correction="in the limit B^j = r A^j with r given by Eq. 39 (and |cos(j theta)| in place of cos(j theta))",
+        Text("the printed expression is ", eq(S("y") / S("x"), B("j") / A("j")), " on the dominant eigenvector ", tup(1, S("y")),
+             " of ", Mk("j"), " (for ", gt(cos_j_theta, 0), "; otherwise use ", sp.Abs(cos_j_theta), "), not the r of ",
+             eq(A("j"), S("r") * B("j")), ": at ", eq(n, 4), ", ", eq(j, 1), " it gives ", eq(printed4, B(1) / A(1)),
+             ", while ", eq(A(1) / B(1), a_over_b)),
+        counterexample=Text(eq(n, 4), ", ", eq(j, 1), ": with ", eq(A(1), S("r") * B(1)), " the ratio would be ", a_over_b,
+                            ", not the printed value ", printed4),
+        correction=Text("in the limit ", eq(B("j"), S("r") * A("j")), " with r given by Eq. 39 (and ", sp.Abs(cos_j_theta),
+                        " in place of ", cos_j_theta, ")"),
         steps=steps,
     )
 
@@ -489,11 +508,12 @@ def _eq39_n4(scheme: Scheme) -> CheckResult:
     value = invariant_ratio_at(scheme, 4, 1)
     ok = sp.simplify(value - (1 + sp.I)) == 0
     modulus = sp.sqrt(sp.simplify(value * sp.conjugate(value)))
-    evidence = Text("the derived ratio B^1/A^1 at n = 4 is exactly ", value, " (modulus ", modulus, ", argument ",
-                    sp.simplify(sp.arg(value)), ")")
+    evidence = Text("the derived ratio ", B(1) / A(1), " at ", eq(n, 4), " is exactly ", value, " (modulus ", modulus,
+                    ", argument ", sp.simplify(sp.arg(value)), ")")
     steps = (Step("$r$ at $n = 4$, $j = 1$:", value),)
     if not ok:
-        return CheckResult(Status.REFUTED, evidence, counterexample=Text("n = 4: B^1/A^1 = ", value, " ~ ", _num(value), ", not 1 + i"), steps=steps)
+        return CheckResult(Status.REFUTED, evidence, counterexample=Text(eq(n, 4), ": ", eq(B(1) / A(1), value), " = ", _num(value),
+                                                                          ", not ", 1 + sp.I), steps=steps)
     return CheckResult(Status.VERIFIED, evidence, valences=(4, 4), steps=steps)
 
 
@@ -511,12 +531,12 @@ def _eq39_limit(scheme: Scheme) -> CheckResult:
     if not ok:
         return CheckResult(
             Status.REFUTED,
-            Text("sympy.limit of the derived ratio as n -> oo at j = 1 is ", value),
-            counterexample=Text("the limit is ", value, " ~ ", _num(value), ", not 4/(sqrt(5) + 1) ~ ", _num(printed)),
+            Text("the limit of the derived ratio as ", n, " grows, at ", eq(j, 1), ", is ", value),
+            counterexample=Text("the limit is ", value, " = ", _num(value), ", not ", printed, " = ", _num(printed)),
             steps=steps,
         )
     return CheckResult(
         Status.PROVED,
-        Text("sympy.limit of the derived ratio as n -> oo at j = 1 is ", value, ", equal to 4/(sqrt(5) + 1)"),
+        Text("the limit of the derived ratio as ", n, " grows (sympy.limit), at ", eq(j, 1), ", is ", value, ", equal to ", printed),
         steps=steps,
     )

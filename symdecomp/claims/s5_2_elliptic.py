@@ -25,6 +25,9 @@ from symdecomp.symbols import n as N
 from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.applicability import needs_mirror_symmetry
+from symdecomp.claims.notation import A, B, M, c, eq, gt, j, lambda_1, listed, ne, omega_2n, tup
+
+S = sp.Symbol
 
 
 @claim(
@@ -49,7 +52,11 @@ def _eq40(scheme: Scheme) -> CheckResult:
     sum_sq = sp.expand(G.trace() - 2 * (m1 + m2))
     prod_sq = sp.expand(L.det() ** 2 - (m1 - m2) ** 2)
     if not (is_zero(sum_sq) and is_zero(prod_sq)):
-        return CheckResult(Status.REFUTED, "singular values differ from |w1| +- |w2|", counterexample=str((sum_sq, prod_sq)))
+        return CheckResult(
+            Status.REFUTED,
+            "the singular values differ from the printed axes",
+            counterexample=Text("invariants off by ", sum_sq, " and ", prod_sq),
+        )
     # Cross-check on random rational 1-rings: Eq. 40 from the decomposition vs the singular values of [U W].
     rng = random.Random(5)
     worst = 0
@@ -59,11 +66,16 @@ def _eq40(scheme: Scheme) -> CheckResult:
         for a, b in zip(e.semi_axes, e.singular_values):
             worst = max(worst, abs(sp.N(a - b, 40)))
     if worst > sp.Float("1e-35"):
-        return CheckResult(Status.ERROR, f"decomposition and singular values disagree by {worst}")
+        return CheckResult(Status.ERROR, Text("decomposition and singular values disagree by ", worst))
+    w_1, w_2, t = S("w_1"), S("w_2"), S("t", real=True)
     return CheckResult(
         Status.PROVED,
-        "the semi-axes of w1*e^{it} + w2*e^{-it} are |w1| +- |w2| (singular-value invariants match identically); "
-        "l_1, l_2 are semi-axes (half-axes) for the unit-circumradius v_1; random rings n=3..6 agree to 35 digits",
+        Text(
+            "the semi-axes of ", w_1 * sp.exp(sp.I * t) + w_2 * sp.exp(-sp.I * t), " are ", abs(w_1), " + ", abs(w_2),
+            " and ", abs(abs(w_1) - abs(w_2)), " (singular-value invariants match identically); ", S("l_1"), ", ",
+            S("l_2"), " are semi-axes (half-axes) for the unit-circumradius ", S("v_1"),
+            "; random rings of valence 3 to 6 agree to 35 digits",
+        ),
         steps=(
             Step("Real matrix of $\\zeta \\mapsto w_1\\zeta + w_2\\bar\\zeta$", L),
             Step("$\\operatorname{tr}(L^TL) - 2(|w_1|^2+|w_2|^2)$", sum_sq),
@@ -90,11 +102,14 @@ def _eq41(scheme: Scheme) -> CheckResult:
     gram_b = 4 * (zb_re * zb_re.T + zb_im * zb_im.T)
     diff = (gram_b - gram_a).applyfunc(lambda e: sp.simplify(sp.expand(e)))
     if not is_zero(diff):
-        return CheckResult(Status.REFUTED, "E_b differs from E_a", counterexample=str(diff))
+        return CheckResult(Status.REFUTED, Text(S("E_b"), " differs from ", S("E_a")), counterexample=Text(diff))
+    U, W, t = S("U"), S("W"), S("t")
     return CheckResult(
         Status.PROVED,
-        "an ellipse U cos t + W sin t is fixed by its matrix U U^T + W W^T; for the b-part (z_1 rotated by pi/n) it is "
-        "identical for every ring and n",
+        Text(
+            "an ellipse ", U * sp.cos(t) + W * sp.sin(t), " is fixed by its matrix ", U * S("U^T") + W * S("W^T"),
+            "; for the b-part (", S("z_1"), " rotated by ", sp.pi / N, ") it is identical for every ring and ", N,
+        ),
         steps=(Step("$G_b - G_a$ (zero)", diff),),
     )
 
@@ -108,12 +123,20 @@ def _eq41(scheme: Scheme) -> CheckResult:
 )
 def _prop52(scheme: Scheme) -> CheckResult:
     conj, imag = rotation_free_form(with_free_vertex_rule(scheme))
+    z, D, M_j = S("z"), S("D", commutative=False), S("M_j", commutative=False)
     if not is_zero(imag):
-        return CheckResult(Status.REFUTED, "D^-1 M_j D is not real", counterexample=str(imag))
+        return CheckResult(
+            Status.REFUTED,
+            Text(D**-1 * M_j * D, " is not real"),
+            counterexample=Text("imaginary part ", imag),
+        )
     return CheckResult(
         Status.PROVED,
-        "with z = omega_2n^j, D^{-1} M_j D (D = diag(1, z)) is invariant under z -> 1/z = conj(z): real for every n, j "
-        "(the vertex-rule weights do not enter M_j)",
+        Text(
+            "with ", eq(z, omega_2n**j), ", ", D**-1 * M_j * D, " (", eq(D, sp.Function("diag")(1, z)),
+            ") is invariant under ", z, " to ", eq(1 / z, sp.conjugate(z)), ": real for every ", N, ", ", j,
+            " (the vertex-rule weights do not enter ", M("j"), ")",
+        ),
         steps=(Step("$D^{-1} M_j D$ with $\\omega = z^2$", conj), Step("$e(z) - e(1/z)$ entrywise", imag)),
     )
 
@@ -139,10 +162,13 @@ def _eq42(scheme: Scheme) -> CheckResult:
 
     in_c = new.applyfunc(in_cos)
     if not is_zero(imag) or any(e.has(sp.I) or e.has(sp.sin(t)) for e in in_c):
-        return CheckResult(Status.REFUTED, "an entry is not real", counterexample=str(imag))
+        return CheckResult(Status.REFUTED, "an entry is not real", counterexample=Text("imaginary part ", imag))
     return CheckResult(
         Status.PROVED,
-        f"r'_1 = {sp.sstr(in_c[0])}, r'_2 = {sp.sstr(in_c[1])} with c = cos(j pi/n): real for real r_1, r_2",
+        Text(
+            eq(S("r'_1"), in_c[0]), ", ", eq(S("r'_2"), in_c[1]), " with ",
+            eq(c, sp.cos(j * sp.pi / N)), ": real for real ", S("r_1"), ", ", S("r_2"),
+        ),
         steps=(Step("$(r'_1, r'_2)$ in $c = \\cos(j\\pi/n)$", in_c),),
     )
 
@@ -176,14 +202,25 @@ def _eq43(scheme: Scheme) -> CheckResult:
         )
     if is_zero(first_diff):
         return CheckResult(Status.PROVED, "derived matrix equals the printed one", steps=steps)
+    derived_first = tup(*T[0, :])
+    # the counterexample: the scheme's weights at n = 4, per neighbour (the derived row is n alpha, n beta)
+    standard = frequency_zero_matrix(scheme, 4)
+    per_neighbour = {ALPHA: standard[0, 1] / 4, BETA: standard[0, 2] / 4}
     return CheckResult(
         Status.CORRECTED,
-        "rows 2-3 derived from Eq. 14-15 agree; the first row derived from Eq. 16 (affine, per-neighbour weights) is "
-        "(1 - n*alpha - n*beta, n*alpha, n*beta), which is the printed row only if alpha, beta are total weights",
-        correction="first row (1 - n*alpha - n*beta, n*alpha, n*beta) with alpha, beta the weights of each a_i, b_i "
-        "(equivalently the printed row with alpha, beta the total weights n*alpha, n*beta)",
-        counterexample="n = 4, standard weights: printed row with alpha = 3/32, beta = 1/64 gives "
-        "(57/64, 3/32, 1/64), not (9/16, 3/8, 1/16) of Eq. 45",
+        Text(
+            "rows 2-3 derived from Eq. 14-15 agree; the first row derived from Eq. 16 (affine, per-neighbour weights) is ",
+            derived_first, ", which is the printed row only if ", ALPHA, ", ", BETA, " are total weights",
+        ),
+        correction=Text(
+            "first row ", derived_first, " with ", ALPHA, ", ", BETA, " the weights of each ", S("a_i"), ", ", S("b_i"),
+            " (equivalently the printed row with ", ALPHA, ", ", BETA, " the total weights ", N * ALPHA, ", ", N * BETA, ")",
+        ),
+        counterexample=Text(
+            eq(N, 4), ", this scheme's weights: the printed row with ", eq(ALPHA, per_neighbour[ALPHA]), ", ",
+            eq(BETA, per_neighbour[BETA]), " gives ", tup(*printed_first.subs(per_neighbour)), ", not ",
+            tup(*standard[0, :]), " of Eq. 45",
+        ),
         steps=steps,
     )
 
@@ -219,12 +256,23 @@ def _eq44(scheme: Scheme) -> CheckResult:
     reduced = eig.applyfunc(lambda e: sp.rem(sp.Poly(e, MU), quad).as_expr())
     ratio = eq44_ratio(free, MU)
     if not (is_zero(intertwine) and is_zero(reduced)):
-        return CheckResult(Status.REFUTED, "distances do not follow the non-unit eigenvectors", counterexample=str(reduced))
+        return CheckResult(
+            Status.REFUTED,
+            "distances do not follow the non-unit eigenvectors",
+            counterexample=Text("the remainder ", reduced),
+        )
+    d_a, d_b, h_O, u_O = S("d_a"), S("d_b"), S("h_O"), S("u_O")
+    Tn, Tp_, Dn, un = (S(name, commutative=False) for name in ("T", "T'", "D", "u"))
+    mu = S("mu")
     return CheckResult(
         Status.PROVED,
-        "(d_a, d_b) = (h_a - h_O, h_b - h_O) moves by a 2x2 matrix T' with D T = T' D whose eigenvalues are the non-unit "
-        "ones of Eq. 43 and whose eigenvector is D u; so d_b/d_a -> (u_b-u_O)/(u_a-u_O) when the subdominant component "
-        f"is nonzero. The ratio is {sp.sstr(ratio)}, independent of the vertex rule",
+        Text(
+            tup(d_a, d_b), " = ", tup(S("h_a") - h_O, S("h_b") - h_O), " moves by a 2x2 matrix ", Tp_, " with ",
+            eq(Dn * Tn, Tp_ * Dn),
+            " whose eigenvalues are the non-unit ones of Eq. 43 and whose eigenvector is ", Dn * un,
+            "; so ", d_b / d_a, " tends to ", (S("u_b") - u_O) / (S("u_a") - u_O),
+            " when the subdominant component is nonzero. The ratio is ", ratio.subs(MU, mu), " at the eigenvalue ", mu, ", independent of the vertex rule",
+        ),
         steps=(
             Step("$T'$ on $(d_a, d_b)$", Tp),
             Step("$DT - T'D$", intertwine),
@@ -277,9 +325,10 @@ def _eq45(scheme: Scheme) -> CheckResult:
     both = sp.simplify(lam1**2 - eigs[1]) == 0
     return CheckResult(
         Status.VERIFIED,
-        Text("derived matrix equals the printed one; eigenvalues ", sp.Matrix(eigs).T, "; eigenvector ", u.T,
-             " proportional to (-2, 1, 4); ratio ", ratio, " = |B^1/A^1|^2 = ", scale_sq, " (scale ratio sqrt 2); ",
-             "mu = lambda_1^2, both conditions hold at n = 4" if both else "but mu != lambda_1^2"),
+        Text("derived matrix equals the printed one; eigenvalues ", listed(eigs), "; eigenvector ", tup(*u),
+             " proportional to ", tup(-2, 1, 4), "; ratio ", eq(ratio, abs(B(1) / A(1)) ** 2), " = ", scale_sq,
+             " (scale ratio ", sp.sqrt(scale_sq), "); ",
+             Text(eq(eigs[1], lambda_1**2), ": both conditions hold at ", eq(N, 4)) if both else Text(ne(eigs[1], lambda_1**2))),
         valences=(4, 4),
         steps=steps,
     )
@@ -325,8 +374,9 @@ def _remark52(scheme: Scheme) -> CheckResult:
         )
     return CheckResult(
         Status.CORRECTED,
-        "(1,1,1) is the eigenvector of 1: no elliptic component; (0,1,1) has one. But the input (h_O, abar, bbar) also "
-        "receives the 2n-gon component j = n (A^n = z_n, B^n = -z_n), i.e. (0,1,-1), which is neither case",
+        Text("(1,1,1) is the eigenvector of 1: no elliptic component; (0,1,1) has one. But the input ", tup(S("h_O"), S("abar"), S("bbar")),
+             " also receives the 2n-gon component ", eq(j, N), " (", eq(A(N), S("z_n")), ", ", eq(B(N), -S("z_n")),
+             "), i.e. (0,1,-1), which is neither case"),
         correction="for input from the component j = 0 (abar = bbar) the cases are (1,1,1) (no elliptic component) and "
         "(0,1,1); a general 1-ring adds (0,1,-1) from the component j = n, so the input is (0, x, y) modulo (1,1,1), "
         "with elliptic component l_a x + l_b y over l.u",
@@ -358,9 +408,9 @@ def _example(scheme: Scheme) -> CheckResult:
     if not at4:
         return CheckResult(
             Status.REFUTED,
-            Text("with this scheme's own vertex weights the two conditions do not both hold at n = 4"),
-            counterexample=Text("n = 4: mu - lambda_1^2 = ", sp.N(defects[4][0], 12), ", Eq. 44 ratio minus |B^1/A^1|^2 = ",
-                                sp.N(defects[4][1], 12)),
+            Text("with this scheme's own vertex weights the two conditions do not both hold at ", eq(N, 4)),
+            counterexample=Text(eq(N, 4), ": ", eq(S("mu") - lambda_1**2, sp.N(defects[4][0], 12)), ", the Eq. 44 ratio minus ",
+                                abs(B(1) / A(1)) ** 2, " is ", sp.N(defects[4][1], 12)),
             steps=steps,
         )
     if not failing:
@@ -371,8 +421,9 @@ def _example(scheme: Scheme) -> CheckResult:
         )
     return CheckResult(
         Status.PROVED,
-        Text("both defects vanish exactly at n = 4; at n = ", failing[0], " they are ", sp.N(defects[failing[0]][0], 6), " and ",
-             sp.N(defects[failing[0]][1], 6), ". With any vertex rule both can hold only at the valences ",
-             sp.FiniteSet(*joint.valences), " (roots cos(pi/n) of the resultant ", joint.polynomial, " in [1/2, 1))"),
+        Text("both defects vanish exactly at ", eq(N, 4), "; at ", eq(N, failing[0]), " they are ", sp.N(defects[failing[0]][0], 6),
+             " and ", sp.N(defects[failing[0]][1], 6), ". With any vertex rule both can hold only at the valences ",
+             sp.FiniteSet(*joint.valences), " (roots ", sp.cos(sp.pi / N), " of the resultant ", joint.polynomial, " in ",
+             sp.Interval.Ropen(sp.Rational(1, 2), 1), ")"),
         steps=steps,
     )

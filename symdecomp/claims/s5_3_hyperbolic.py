@@ -11,9 +11,11 @@ from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.frequency import COS
 from symdecomp.claims import CheckResult, Status, Step, Text, claim
+from symdecomp.claims.notation import A, M, eq, ge, gt, j, lambda_1, lambda_2, listed, lt, ne, tup
 from symdecomp.claims.applicability import needs_mirror_symmetry
 
 _VALENCES = (3, 12)
+Sym = sp.Symbol
 
 
 @claim(
@@ -43,29 +45,36 @@ def _smaller(scheme: Scheme) -> CheckResult:
         k = larger[0]
         return CheckResult(
             Status.REFUTED,
-            Text("the dominant eigenvalue of M_2 is not below that of M_1 at n = ", k),
-            counterexample=Text("n = ", k, ": lambda_2 = ", sp.N(hyperbolic_lambda(scheme).subs(N, k), 12), " >= lambda_1 = ",
-                                sp.N(tangent_lambda(scheme, 1).subs(N, k), 12)),
+            Text("the dominant eigenvalue of ", M(2), " is not below that of ", M(1), " at ", eq(N, k)),
+            counterexample=Text(eq(N, k), ": ", eq(lambda_2, sp.N(hyperbolic_lambda(scheme).subs(N, k), 12)), " is at least ",
+                                eq(lambda_1, sp.N(tangent_lambda(scheme, 1).subs(N, k), 12))),
             steps=steps,
         )
     if not increasing:
         return CheckResult(
             Status.UNDECIDED,
-            Text("lambda_2 < lambda_1 for n = 4..40, but the sufficient test that the dominant eigenvalue increases with "
-                 "|cos(j pi/n)| failed: ", slope),
+            Text(lt(lambda_2, lambda_1), " for n = 4..40, but the sufficient test that the dominant eigenvalue increases with ",
+                 sp.Abs(sp.cos(j * sp.pi / N)), " failed: ", slope),
             steps=steps,
         )
     if not equal_at_3:
-        return CheckResult(Status.PROVED, Text("the dominant eigenvalue increases with |cos(j pi/n)| (d/dt = ", slope, " > 0) and "
-                                               "|cos(2 pi/n)| < cos(pi/n) for n >= 4; at n = 3 lambda_2 < lambda_1 too"), steps=steps)
+        return CheckResult(Status.PROVED, Text("the dominant eigenvalue increases with ", sp.Abs(sp.cos(j * sp.pi / N)), " and ",
+                                               lt(sp.Abs(sp.cos(2 * sp.pi / N)), sp.cos(sp.pi / N)), " for ", ge(N, 4), "; at ",
+                                               eq(N, 3), " too, ", lt(lambda_2, lambda_1)), steps=steps)
     return CheckResult(
         Status.CORRECTED,
-        Text("the dominant eigenvalue of M_j increases with |cos(j pi/n)| (d/dt = ", slope, " > 0), and "
-             "|cos(2pi/n)| < cos(pi/n) iff n >= 4; at n = 3, j = 2 is the conjugate frequency of j = 1 "
-             "(cos(2pi/3) = -cos(pi/3)) and lambda_2 = lambda_1"),
-        correction=Text("for n >= 4 the j = 2 eigenvalues are strictly smaller than lambda_1 (det M_j = ", ev.determinant,
-                        "); at n = 3 the components A^2, A^4 are tangent-plane components with eigenvalue lambda_1"),
-        counterexample=Text("n = 3: lambda_2 = lambda_1 = ", sp.N(lam1_3, 15)),
+        Text(
+            "the dominant eigenvalue of ", M("j"), " increases with ", eq(t, sp.Abs(sp.cos(j * sp.pi / N))), " (",
+            eq(sp.Derivative(Sym("lambda"), t), slope), ", positive), and ", lt(sp.Abs(sp.cos(2 * sp.pi / N)), sp.cos(sp.pi / N)),
+            " iff ", ge(N, 4), "; at ", eq(N, 3), ", ", eq(j, 2), " is the conjugate frequency of ", eq(j, 1), " (",
+            eq(sp.cos(2 * sp.pi / 3, evaluate=False), -sp.cos(sp.pi / 3, evaluate=False)), ") and ", eq(lambda_2, lambda_1),
+        ),
+        correction=Text(
+            "for ", ge(N, 4), " the ", eq(j, 2), " eigenvalues are strictly smaller than ", lambda_1, " (",
+            eq(sp.Function("det")(M("j")), ev.determinant), "); at ", eq(N, 3), " the components ", A(2), ", ", A(4),
+            " are tangent-plane components with eigenvalue ", lambda_1,
+        ),
+        counterexample=Text(eq(N, 3), ": ", eq(lambda_2, lambda_1), " = ", sp.N(lam1_3, 15)),
         steps=steps,
     )
 
@@ -82,23 +91,24 @@ def _quadratic(scheme: Scheme) -> CheckResult:
         return result
     # The requirement is modelled on the regular case: the scheme meets it at n = 4 (checked exactly), and the
     # resultant decides every other valence.
-    eq = hyperbolic_equality(scheme)
+    heq = hyperbolic_equality(scheme)
     defect = hyperbolic_defect(scheme)
     at4 = sp.simplify(defect.subs(N, 4))
-    steps = (Step("$\\lambda_2 - \\lambda_1^2$", defect), Step("Resultant in $c = \\cos(\\pi/n)$", eq.polynomial))
+    steps = (Step("$\\lambda_2 - \\lambda_1^2$", defect), Step("Resultant in $c = \\cos(\\pi/n)$", heq.polynomial))
     if at4 != 0:
         return CheckResult(
             Status.REFUTED,
-            "lambda_2 = lambda_1^2 fails already in the regular case n = 4",
-            counterexample=Text("n = 4: lambda_2 - lambda_1^2 = ", at4, " ~ ", sp.N(at4, 12)),
+            Text(eq(lambda_2, lambda_1**2), " fails already in the regular case ", eq(N, 4)),
+            counterexample=Text(eq(N, 4), ": ", eq(lambda_2 - lambda_1**2, at4), " = ", sp.N(at4, 12)),
             steps=steps,
         )
     others = [k for k in (3, 5) if abs(sp.N(defect.subs(N, k), 30)) > sp.Float(10) ** -20]
     return CheckResult(
         Status.PROVED,
-        Text("lambda_2 = lambda_1^2 holds exactly at n = 4; it holds exactly at the valences ", sp.FiniteSet(*eq.valences),
-             " (roots cos(pi/n) in [1/2, 1) of the resultant ", eq.polynomial, "), elsewhere the hyperbolic part shrinks at "
-             "another rate", Text(" (lambda_2 - lambda_1^2 at n = ", others[0], ": ", sp.N(defect.subs(N, others[0]), 6), ")") if others else ""),
+        Text(eq(lambda_2, lambda_1**2), " holds exactly at ", eq(N, 4), "; it holds exactly at the valences ",
+             sp.FiniteSet(*heq.valences), " (roots ", sp.cos(sp.pi / N), " in ", sp.Interval.Ropen(sp.Rational(1, 2), 1),
+             " of the resultant ", heq.polynomial, "), elsewhere the hyperbolic part shrinks at another rate",
+             Text(" (at ", eq(N, others[0]), ", ", eq(lambda_2 - lambda_1**2, sp.N(defect.subs(N, others[0]), 6)), ")") if others else ""),
         steps=steps,
     )
 
@@ -121,12 +131,15 @@ def _construction(scheme: Scheme) -> CheckResult:
             return CheckResult(
                 Status.REFUTED,
                 f"n = {n}: exact iteration differs from the per-frequency prediction",
-                counterexample=f"n = {n}, hyperbolic_ring, 3 steps",
+                counterexample=Text(eq(N, n), ", hyperbolic_ring, 3 steps"),
             )
     return CheckResult(
         Status.VERIFIED,
-        "hyperbolic_ring(n) iterated 3 steps with the exact subdivision matrix in Q(zeta_4n) equals the prediction "
-        "(tangent part by M_1^k, heights by M_2^k) exactly; O and the centroids of the a's and b's stay at height 0",
+        Text(
+            "hyperbolic_ring(n) iterated 3 steps with the exact subdivision matrix in ", sp.Function("Q")(Sym("zeta_4n")),
+            " equals the prediction (tangent part by ", M(1) ** Sym("k"), ", heights by ", M(2) ** Sym("k"),
+            ") exactly; O and the centroids of the a's and b's stay at height 0",
+        ),
         valences=(lo, hi),
     )
 
@@ -147,14 +160,24 @@ def _basis(scheme: Scheme) -> CheckResult:
         for _ in range(3):
             h = S * h
             if len(set(h[1 : n + 1])) != 1 or len(set(h[n + 1 :])) != 1:
-                return CheckResult(Status.REFUTED, f"n = {n}: heights leave the frequency-0 subspace", counterexample=f"n = {n}")
+                return CheckResult(
+                    Status.REFUTED,
+                    Text(eq(N, n), ": heights leave the frequency-0 subspace"),
+                    counterexample=Text(eq(N, n), ": heights ", tup(*h)),
+                )
     comps = [elliptic_component(cc, n, (1, 0, 0)) for n in (3, 4, 5)]
     if any(c == 0 for c in comps):
-        return CheckResult(Status.REFUTED, "the basis function has no elliptic component", counterexample=str(comps))
+        return CheckResult(
+            Status.REFUTED,
+            "the basis function has no elliptic component",
+            counterexample=Text("elliptic components at n = 3, 4, 5: ", listed(comps)),
+        )
     return CheckResult(
         Status.VERIFIED,
-        "heights (1, 0, ..., 0) stay constant on the a's and on the b's under the exact matrix (3 steps): no j != 0 "
-        "component off the plane; the input (1, 0, 0) of Eq. 43 has a nonzero elliptic component "
-        f"(n = 3, 4, 5: {', '.join(sp.sstr(sp.nsimplify(sp.N(c, 20))) if c.is_Rational else sp.sstr(sp.N(c, 6)) for c in comps)})",
+        Text(
+            "heights ", tup(1, 0, Sym("..."), 0), " stay constant on the a's and on the b's under the exact matrix (3 steps): "
+            "no ", ne(j, 0), " component off the plane; the input ", tup(1, 0, 0), " of Eq. 43 has a nonzero elliptic "
+            "component (", N, " = 3, 4, 5: ", listed(c if c.is_Rational else sp.N(c, 6) for c in comps), ")",
+        ),
         valences=(lo, hi),
     )

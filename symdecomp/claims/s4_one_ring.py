@@ -10,7 +10,7 @@ from symdecomp.analysis.frequency import frequency_zero_matrix, per_frequency_ma
 from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import alpha, beta, n, omega
-from symdecomp.claims.notation import A, B, eq, listed, ne, omega_2n, omega_n, tup
+from symdecomp.claims.notation import A, B, eq, ne, omega_2n, omega_n, tup
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 
 R = sp.Rational

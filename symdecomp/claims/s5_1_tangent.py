@@ -2,21 +2,21 @@
 
 from __future__ import annotations
 
-import flint
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
 from symdecomp.analysis.components import ZETA, initial_vector_condition, root_of_unity_orders
-from symdecomp.analysis.frequency import COS, SIN, per_frequency_matrix
+from symdecomp.analysis.frequency import COS, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
 from symdecomp.symbols import lam, n, omega
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from symdecomp.claims.notation import M as Mk
-from symdecomp.claims.notation import A, B, I, cos_j_theta, eq, ge, gt, j, lambda_1, lambda_2, lambda_12, le, listed, lt, ne, omega_2n, omega_n, tup
+from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
 from symdecomp.claims.applicability import needs_mirror_symmetry
+from symdecomp.claims.evidence import at_valence, dominant_vs_frequency_zero, filtering_evidence, number, start_points
 
 R = sp.Rational
 C = COS
@@ -103,20 +103,9 @@ def _eq33(scheme: Scheme) -> CheckResult:
         Status.PROVED if ok else Status.REFUTED,
         "M_j derived by applying Eq. 14-15 to the modes (X v_j, Y v_j) at a symbolic row equals the printed matrix, every n",
         counterexample=None if ok else Text("printed minus derived: ", diff, "; at n = 5, j = 1 the derived M_1 is ",
-                                            _at(derived, 5).applyfunc(lambda e: _num(e, 6))),
+                                            at_valence(derived, 5).applyfunc(lambda e: number(e, 6))),
         steps=(Step("Derived:", derived, sp.Symbol("M_j")), Step("Printed minus derived:", diff)),
     )
-
-
-def _at(expr, valence: int, j: int = 1):
-    """``expr`` (in c = cos(j pi/n), s = sin(j pi/n), omega = omega_n^j) at a valence and frequency, exactly."""
-    angle = sp.pi * sp.Rational(j, valence)
-    return expr.subs({C: sp.cos(angle), SIN: sp.sin(angle), omega: sp.exp(2 * sp.I * angle), n: valence})
-
-
-def _num(expr, digits: int = 12):
-    """A computed number, shown to ``digits`` digits (for reading; the verdicts are exact)."""
-    return sp.N(expr, digits)
 
 
 @claim(
@@ -140,8 +129,8 @@ def _eq34(scheme: Scheme) -> CheckResult:
         Step("The printed values substituted into the characteristic polynomial give", sp.Matrix(residuals)),
     )
     if not ok:
-        derived = [_num(_at(e, 5)) for e in (ev.dominant, ev.subdominant)]
-        shown = [_num(_at(p, 5)) for p in printed]
+        derived = [number(at_valence(e, 5)) for e in (ev.dominant, ev.subdominant)]
+        shown = [number(at_valence(p, 5)) for p in printed]
         return CheckResult(
             Status.REFUTED,
             Text("the printed values are not roots of the characteristic polynomial of this scheme's ", Mk("j"),
@@ -188,14 +177,14 @@ def _eq35_37(scheme: Scheme) -> CheckResult:
         Step("$M_j(1, y)^T - \\lambda(1, y)^T$ for the printed $y$, numerators reduced modulo the characteristic polynomial:", sp.Matrix(residual)),
     )
     if not is_eigenvector:
-        lam1 = _at(tangent_eigenvalues(scheme).dominant, 5)
-        y = _at(printed.subs(lam, lam1), 5)
-        image = (_at(M, 5) * sp.Matrix([1, y])).applyfunc(lambda e: _num(e))
+        lam1 = at_valence(tangent_eigenvalues(scheme).dominant, 5)
+        y = at_valence(printed.subs(lam, lam1), 5)
+        image = (at_valence(M, 5) * sp.Matrix([1, y])).applyfunc(lambda e: number(e))
         return CheckResult(
             Status.REFUTED,
             Text("the printed vector is not an eigenvector of this scheme's ", Mk("j"), " (the residual does not vanish modulo "
                  "the characteristic polynomial)"),
-            counterexample=Text(eq(n, 5), ", ", eq(j, 1), ", ", eq(lambda_1, _num(lam1)), ": the printed vector ", tup(1, _num(y)),
+            counterexample=Text(eq(n, 5), ", ", eq(j, 1), ", ", eq(lambda_1, number(lam1)), ": the printed vector ", tup(1, number(y)),
                                 " is mapped by ", Mk(1), " to ", image.T, ", not to ", lambda_1, " times it"),
             steps=steps,
         )
@@ -212,7 +201,7 @@ def _eq35_37(scheme: Scheme) -> CheckResult:
     m = orders[0]
     valence = m // 2 if m % 2 == 0 and m // 2 >= 3 else m
     jj = 2 * valence // m
-    at = _at(M, valence, jj).applyfunc(sp.simplify)
+    at = at_valence(M, valence, jj).applyfunc(sp.simplify)
     return CheckResult(
         Status.CORRECTED,
         Text("the printed vector solves ", Mk("j"), " ", tup(1, S("y")), " = ", lam, " ", tup(1, S("y")), " modulo the characteristic "
@@ -227,28 +216,6 @@ def _eq35_37(scheme: Scheme) -> CheckResult:
     )
 
 
-def _representative(order: int, k: int = 1) -> tuple[int, int]:
-    """The smallest valence ``n >= 3`` and the component ``j`` with ``omega_2n^j = exp(2 pi i k/order)``."""
-    step = order // 2 if order % 2 == 0 else order
-    valence = step * -(-3 // step)
-    return valence, 2 * valence * k // order
-
-
-def _start_points(scheme: Scheme):
-    """Every class of frequencies where a component starts on one eigenvector: one (n, j) per root of unity."""
-    cond = initial_vector_condition(scheme)
-    if cond.orders is None:
-        return cond, None
-    points = []
-    for m in cond.orders:
-        if m < 3:
-            continue
-        for k in range(1, m):
-            if sp.gcd(k, m) == 1:
-                points.append(cond.point(*_representative(m, k)))
-    return cond, points
-
-
 @claim(
     "Eq. 38",
     section="5.1",
@@ -257,7 +224,7 @@ def _start_points(scheme: Scheme):
     "the initial vector $(1, \\omega_{2n}^j)^T$ always has a component on the dominant eigenvector of $M_j$.",
 )
 def _eq38(scheme: Scheme) -> CheckResult:
-    cond, points = _start_points(scheme)
+    cond, points = start_points(scheme)
     steps = (
         Step("$(1, \\zeta)$, $\\zeta = \\omega_{2n}^j$, is an eigenvector of $M_j$ iff this vanishes:", sp.factor(cond.residual), sp.Symbol("R(zeta)")),
         Step("Orders of the roots of unity among its roots (cyclotomic factors):", sp.FiniteSet(*(cond.orders or ()))),
@@ -303,29 +270,6 @@ def _eq38(scheme: Scheme) -> CheckResult:
     )
 
 
-def _dominant_vs_frequency_zero(scheme: Scheme, last: int) -> tuple[bool, int]:
-    """Certify in interval arithmetic (Arb) that the derived dominant eigenvalue of M_1 exceeds the two
-    derived eigenvalues of the Eq. 43 block other than 1, for n = 3..last.
-
-    Returns ``(True, last)``, or ``(False, n)`` at the first ``n`` where it is certainly not larger;
-    raises ``ArithmeticError`` where the balls overlap (undecided at this precision)."""
-    from symdecomp.algebra.compile import compile_expression
-
-    dominant = compile_expression(tangent_eigenvalues(scheme).dominant, (C,), engine="arb")
-    block = [compile_expression(e, (n,), engine="arb") for e in frequency_zero_eigenvalues(scheme) if e != 1]
-    with flint.ctx.workprec(128):
-        for m in range(3, last + 1):
-            lam1 = abs(dominant(flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(1, m)))))
-            for f in block:
-                mu = abs(f(flint.acb(m)))  # comparisons of balls are rigorous: true only when certain
-                if lam1 > mu:
-                    continue
-                if lam1 <= mu:
-                    return False, m
-                raise ArithmeticError(f"n = {m}: lambda_1 and an Eq. 43 eigenvalue not separated at 128 bits")
-    return True, last
-
-
 @claim(
     "Proposition 5.1",
     section="5.1",
@@ -348,12 +292,12 @@ def _prop51(scheme: Scheme) -> CheckResult:
         Step("The eigenvalues of the Eq. 43 block other than 1, compared at $c = \\cos(\\pi/n)$:", sp.Matrix(block)),
     )
     try:
-        certified, upto = _dominant_vs_frequency_zero(scheme, last)
+        certified, upto = dominant_vs_frequency_zero(scheme, last)
     except ArithmeticError as exc:
         return CheckResult(Status.UNDECIDED, Text("the interval comparison did not separate the eigenvalues: ", str(exc)), steps=steps)
     if not certified:
-        lam1 = _num(_at(ev.dominant, upto))
-        mus = [_num(e.subs(n, upto)) for e in block]
+        lam1 = number(at_valence(ev.dominant, upto))
+        mus = [number(e.subs(n, upto)) for e in block]
         return CheckResult(
             Status.REFUTED,
             Text("at ", eq(n, upto), " an eigenvalue of the Eq. 43 block is at least ", lambda_1, " (certified in interval arithmetic)"),
@@ -368,7 +312,6 @@ def _prop51(scheme: Scheme) -> CheckResult:
                  "sum of positive terms) failed: ", derivative),
             steps=steps,
         )
-    k = S("k")
     return CheckResult(
         Status.VERIFIED,
         Text("for all ", n, " the dominant eigenvalue of ", Mk("j"), " increases with ", cos_j_theta**2, " (its derivative in ",
@@ -379,26 +322,6 @@ def _prop51(scheme: Scheme) -> CheckResult:
         valences=(3, last),
         steps=steps,
     )
-
-
-def _filtering_evidence(scheme: Scheme, valence: int):
-    """|1-ring after k steps| / lambda_1^k for the component j = n + 1 alone, k = 10, 20, 40 (60 digits)."""
-    import mpmath
-
-    from symdecomp.schemes.ring import OneRing, subdivide
-
-    with mpmath.workdps(60):
-        j = valence + 1
-        pts = [mpmath.expjpi(mpmath.mpf(j * m) / valence) for m in range(2 * valence)]
-        ring = OneRing.from_points((0, 0, 0), [(p.real, p.imag, 0) for p in pts[0::2]], [(p.real, p.imag, 0) for p in pts[1::2]])
-        lam1 = mpmath.mpf(sp.N(_at(tangent_eigenvalues(scheme).dominant, valence), 70))
-        ratios, current = [], ring
-        for k in range(1, 41):
-            current = subdivide(scheme, current)
-            if k in (10, 20, 40):
-                norm = mpmath.sqrt(mpmath.fsum(x**2 for p in current.a + current.b for x in p))
-                ratios.append(sp.Float(mpmath.nstr(norm / lam1**k, 15), 15))
-    return ratios
 
 
 @claim(
@@ -433,7 +356,7 @@ def _rem51(scheme: Scheme) -> CheckResult:
             steps=steps,
         )
     valence = next(v for v in range(scheme.minimum_valence(), 100) if v not in filtered)
-    ratios = _filtering_evidence(scheme, valence)
+    ratios = filtering_evidence(scheme, valence)
     return CheckResult(
         Status.REFUTED,
         Text("the components ", eq(j, n + 1), " and ", eq(j, n - 1), " are moved by ", Mk(1), " (",
@@ -467,7 +390,7 @@ def _eq39(scheme: Scheme) -> CheckResult:
     same = sp.simplify((derived - PRINTED_RATIO).subs(C, positive_c)) == 0
     inverse = sp.simplify((derived * PRINTED_RATIO - 1).subs(C, positive_c)) == 0  # A^j = r B^j, as the text says
     at4 = invariant_ratio_at(scheme, 4, 1)
-    printed4 = sp.simplify(_at(PRINTED_RATIO, 4))
+    printed4 = sp.simplify(at_valence(PRINTED_RATIO, 4))
     steps = (
         Step("$B^j/A^j$ on the dominant eigenvector, derived:", derived, sp.Symbol("r")),
         Step("At $n = 4$, $j = 1$:", at4),
@@ -512,7 +435,7 @@ def _eq39_n4(scheme: Scheme) -> CheckResult:
                     ", argument ", sp.simplify(sp.arg(value)), ")")
     steps = (Step("$r$ at $n = 4$, $j = 1$:", value),)
     if not ok:
-        return CheckResult(Status.REFUTED, evidence, counterexample=Text(eq(n, 4), ": ", eq(B(1) / A(1), value), " = ", _num(value),
+        return CheckResult(Status.REFUTED, evidence, counterexample=Text(eq(n, 4), ": ", eq(B(1) / A(1), value), " = ", number(value),
                                                                           ", not ", 1 + sp.I), steps=steps)
     return CheckResult(Status.VERIFIED, evidence, valences=(4, 4), steps=steps)
 
@@ -532,7 +455,7 @@ def _eq39_limit(scheme: Scheme) -> CheckResult:
         return CheckResult(
             Status.REFUTED,
             Text("the limit of the derived ratio as ", n, " grows, at ", eq(j, 1), ", is ", value),
-            counterexample=Text("the limit is ", value, " = ", _num(value), ", not ", printed, " = ", _num(printed)),
+            counterexample=Text("the limit is ", value, " = ", number(value), ", not ", printed, " = ", number(printed)),
             steps=steps,
         )
     return CheckResult(

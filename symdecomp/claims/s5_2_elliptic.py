@@ -25,7 +25,7 @@ from symdecomp.symbols import n as N
 from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.applicability import needs_mirror_symmetry
-from symdecomp.claims.notation import A, B, M, c, eq, gt, j, lambda_1, listed, ne, omega_2n, tup
+from symdecomp.claims.notation import A, B, M, eq, j, lambda_1, listed, ne, omega_2n, tup
 
 S = sp.Symbol
 

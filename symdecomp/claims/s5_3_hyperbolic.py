@@ -11,7 +11,7 @@ from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.frequency import COS
 from symdecomp.claims import CheckResult, Status, Step, Text, claim
-from symdecomp.claims.notation import A, M, eq, ge, gt, j, lambda_1, lambda_2, listed, lt, ne, tup
+from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
 from symdecomp.claims.applicability import needs_mirror_symmetry
 
 _VALENCES = (3, 12)

@@ -42,11 +42,11 @@ from symdecomp.algebra.cbmatrix import (
     cb_matrix,
     cb_matrix_from,
     constant_blocks,
-    frequency_matrix,
+    block_eigenvalue_matrix,
     lifted_vector,
-    perturbed_frequency_zero_matrix,
+    perturbed_block_eigenvalue_matrix,
 )
-from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial, matrix_characteristic_polynomial
+from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
 from symdecomp.claims import CheckResult, Claim, Status, Step, all_claims, check_claim, get_claim
 from symdecomp.errors import (
@@ -59,14 +59,14 @@ from symdecomp.errors import (
 )
 from symdecomp.output.latex import aslatex
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
-from symdecomp.analysis.frequency import circulant_blocks, frequency_zero_matrix, per_frequency_matrix, per_frequency_matrix_at
+from symdecomp.analysis.frequency import circulant_blocks, recursion_matrix, per_frequency_matrix, per_frequency_matrix_at
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
-from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
+from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, recursion_eigenvalues
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.verify.numeric import CheckStatus, NumericCheck, numeric_check
+from symdecomp.verify.numeric import CrossCheckStatus, NumericCheck, numeric_check
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
-from symdecomp.schemes.matrices import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.ellipses import ellipse_axes
@@ -96,7 +96,7 @@ __all__ = [
     "circulant_blocks",
     "per_frequency_matrix",
     "per_frequency_matrix_at",
-    "frequency_zero_matrix",
+    "recursion_matrix",
     # Section 5.1
     "tangent_eigenvalues",
     "invariant_ratio",
@@ -104,7 +104,7 @@ __all__ = [
     "invariant_ratio_limit",
     "Spectrum",
     "closed_form_spectrum",
-    "frequency_zero_eigenvalues",
+    "recursion_eigenvalues",
     # Section 5.2-5.3 and limit masks
     "nice_elliptic_conditions",
     "elliptic_defect_table",
@@ -120,19 +120,18 @@ __all__ = [
     "CBMatrix",
     "cb_matrix",
     "cb_matrix_from",
-    "frequency_matrix",
+    "block_eigenvalue_matrix",
     "lifted_vector",
     "block_diagonalization",
     "cb_eigensystem",
     "constant_blocks",
-    "perturbed_frequency_zero_matrix",
+    "perturbed_block_eigenvalue_matrix",
     "SymbolicCirculant",
     "SymbolicCBMatrix",
     "subdivision_block_form",
     "reduce_first_column",
     "ClosedFormCharpoly",
     "closed_form_characteristic_polynomial",
-    "matrix_characteristic_polynomial",
     # Section 3: whole meshes and supports
     "QuadMesh",
     "ring_mesh",
@@ -148,7 +147,7 @@ __all__ = [
     "NumericCheck",
     "certify",
     "Certificate",
-    "CheckStatus",
+    "CrossCheckStatus",
     "exact_subdivision_matrix",
     "characteristic_polynomial",
     "jordan_vertex_weights",

@@ -12,7 +12,7 @@ from symdecomp.cli import build_parser, main
 from symdecomp.cli import check_cmd
 from symdecomp.analysis.closed_forms import derived_closed_forms
 from symdecomp.verify.numeric import full_matrix_eigenvalues
-from symdecomp.schemes.matrices import characteristic_polynomial
+from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import catmull_clark
 
 CC = catmull_clark()

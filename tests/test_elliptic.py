@@ -20,7 +20,7 @@ from symdecomp.analysis.elliptic import (
 )
 from symdecomp.analysis.ellipses import ellipse_axes, ring_components
 from symdecomp.errors import InvalidPolygonError
-from symdecomp.analysis.frequency import frequency_zero_matrix
+from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta, n as N
 
@@ -29,16 +29,16 @@ FREE = catmull_clark(alpha, beta)
 
 
 def test_eq43_first_row_uses_total_weights():
-    T = frequency_zero_matrix(FREE)
+    T = recursion_matrix(FREE)
     assert sp.expand(T[0, 0] - (1 - N * alpha - N * beta)) == 0
     assert sp.expand(T[0, 1] - N * alpha) == 0 and sp.expand(T[0, 2] - N * beta) == 0
-    assert frequency_zero_matrix(CC, 4) == sp.Matrix([[sp.Rational(9, 16), sp.Rational(3, 8), sp.Rational(1, 16)],
+    assert recursion_matrix(CC, 4) == sp.Matrix([[sp.Rational(9, 16), sp.Rational(3, 8), sp.Rational(1, 16)],
                                                      [sp.Rational(3, 8), sp.Rational(1, 2), sp.Rational(1, 8)],
                                                      [sp.Rational(1, 4), sp.Rational(1, 2), sp.Rational(1, 4)]])
 
 
 def test_eigenvector_is_an_eigenvector_for_symbolic_n_and_weights():
-    T = sp.Matrix(frequency_zero_matrix(FREE))
+    T = sp.Matrix(recursion_matrix(FREE))
     u = recursion_eigenvector(FREE, MU)
     quad = sp.Poly(sp.cancel((T - MU * sp.eye(3)).det() / (1 - MU)), MU)
     residual = (T * u - MU * u).applyfunc(lambda e: sp.rem(sp.Poly(sp.expand(e), MU), quad).as_expr())

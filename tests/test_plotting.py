@@ -65,7 +65,7 @@ def test_unmatched_eigenvalues_of_a_cb_matrix_plus_constant_blocks():
     C = B + cbmatrix.constant_blocks(T, B.order)
     moved_to, moved_from = cbplots.unmatched_eigenvalues(cbplots.numeric_eigenvalues(B.matrix()), cbplots.numeric_eigenvalues(C.matrix()))
     assert len(moved_to) == len(moved_from) == 2
-    predicted = cbplots.numeric_eigenvalues(cbmatrix.perturbed_frequency_zero_matrix(B, T))
+    predicted = cbplots.numeric_eigenvalues(cbmatrix.perturbed_block_eigenvalue_matrix(B, T))
     unmatched, _ = cbplots.unmatched_eigenvalues(predicted, moved_to)
     assert len(unmatched) == 0, f"moved to {moved_to}, predicted {predicted}"
 

@@ -23,7 +23,7 @@ Two representations:
 >>> B = cb_matrix([[[R(1, 2), R(1, 4), 0], [1, 0, 0]], [[0, 0, 1], [R(1, 3), 0, 0]]])
 >>> B.block_count, B.order
 (2, 3)
->>> frequency_matrix(B, 0)
+>>> block_eigenvalue_matrix(B, 0)
 Matrix([
 [3/4,   1],
 [  1, 1/3]])
@@ -46,13 +46,13 @@ __all__ = [
     "CBMatrix",
     "cb_matrix",
     "cb_matrix_from",
-    "frequency_matrix",
+    "block_eigenvalue_matrix",
     "lifted_vector",
     "BlockDiagonalization",
     "block_diagonalization",
     "cb_eigensystem",
     "constant_blocks",
-    "perturbed_frequency_zero_matrix",
+    "perturbed_block_eigenvalue_matrix",
     "SymbolicCirculant",
     "SymbolicCBMatrix",
 ]
@@ -148,7 +148,7 @@ def cb_matrix_from(matrix, order: int) -> CBMatrix:
     return cb_matrix(blocks)
 
 
-def frequency_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
+def block_eigenvalue_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
     """The ``K x K`` matrix ``E`` of Prop. 6.2 for the eigenvector ``v_k`` of the circulants.
 
     ``e_pq`` is the eigenvalue of ``C_pq`` on ``v_k``: ``sum_l c_l omega_m^(k l)`` (Eq. 8-9).
@@ -195,7 +195,7 @@ def block_diagonalization(cb: CBMatrix) -> BlockDiagonalization:
         for p in range(K):
             columns.append(lifted_vector([1 if r == p else 0 for r in range(K)], v))
     basis = sp.ImmutableMatrix.hstack(*columns)
-    return BlockDiagonalization(basis, tuple(frequency_matrix(cb, k) for k in range(m)))
+    return BlockDiagonalization(basis, tuple(block_eigenvalue_matrix(cb, k) for k in range(m)))
 
 
 def cb_eigensystem(cb: CBMatrix) -> list[tuple[sp.Expr, int, list[sp.ImmutableMatrix]]]:
@@ -210,7 +210,7 @@ def cb_eigensystem(cb: CBMatrix) -> list[tuple[sp.Expr, int, list[sp.ImmutableMa
     F = fourier_matrix(m) if m > 1 else sp.ImmutableMatrix([[1]])
     for k in range(m):
         v = [F[k, s] for s in range(m)]
-        for value, _mult, vectors in sp.Matrix(frequency_matrix(cb, k)).eigenvects():
+        for value, _mult, vectors in sp.Matrix(block_eigenvalue_matrix(cb, k)).eigenvects():
             out.append((value, k, [lifted_vector(list(a), v) for a in vectors]))
     return out
 
@@ -224,7 +224,7 @@ def constant_blocks(T, order: int) -> CBMatrix:
     return cb_matrix([[[T[p, q]] * order for q in range(T.cols)] for p in range(T.rows)])
 
 
-def perturbed_frequency_zero_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
+def perturbed_block_eigenvalue_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
     """``E_0 + m T`` (Prop. 6.3, where the paper writes ``E_1``): the frequency-0 matrix of ``cb + A``.
 
     The eigenvalues of ``cb + constant_blocks(T, m)`` are those of ``E_1, ..., E_{m-1}``
@@ -233,7 +233,7 @@ def perturbed_frequency_zero_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
     T = sp.Matrix(T)
     if T.shape != (cb.block_count, cb.block_count):
         raise NotCirculantBlockError(f"T must be {cb.block_count} x {cb.block_count}, got {T.rows} x {T.cols}")
-    return sp.ImmutableMatrix(frequency_matrix(cb, 0) + cb.order * T)
+    return sp.ImmutableMatrix(block_eigenvalue_matrix(cb, 0) + cb.order * T)
 
 
 # --- symbolic order -------------------------------------------------------------------------
@@ -295,7 +295,7 @@ class SymbolicCBMatrix:
     def block_count(self) -> int:
         return len(self.blocks)
 
-    def frequency_matrix(self, *, zero_frequency: bool, order=N) -> sp.ImmutableMatrix:
+    def block_eigenvalue_matrix(self, *, zero_frequency: bool, order=N) -> sp.ImmutableMatrix:
         """``E`` of Prop. 6.2: in ``omega`` for ``k != 0``, or the ``k = 0`` matrix (with ``n``)."""
         return sp.ImmutableMatrix(
             [[b.eigenvalue(zero_frequency=zero_frequency, order=order) for b in row] for row in self.blocks]

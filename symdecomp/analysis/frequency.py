@@ -28,6 +28,7 @@ import sympy as sp
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation, root_of_unity
 from symdecomp.errors import check_frequency, check_valence
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
@@ -36,16 +37,9 @@ __all__ = [
     "circulant_blocks",
     "per_frequency_matrix",
     "per_frequency_matrix_at",
-    "frequency_zero_matrix",
+    "recursion_matrix",
     "laurent_to_cos",
-    "COS",
-    "SIN",
 ]
-
-#: A real symbol standing for ``cos(j*theta)`` with ``theta = pi/n`` (Eq. 34).
-COS = sp.Symbol("c", real=True)
-#: A real symbol standing for ``sin(j*theta)``; it disappears for symmetric schemes.
-SIN = sp.Symbol("s", real=True)
 
 
 @dataclass(frozen=True)
@@ -86,7 +80,7 @@ def per_frequency_matrix(scheme: Scheme) -> sp.ImmutableMatrix:
 
     It acts on the column of amplitudes ``(X, Y)`` of ``(A^j, B^j)``; valid for every
     frequency with ``omega != 1`` (at ``omega = 1`` the centre ``O`` also contributes, see
-    :func:`frequency_zero_matrix`).
+    :func:`recursion_matrix`).
     """
     blocks = circulant_blocks(scheme)
     return sp.ImmutableMatrix(
@@ -103,7 +97,7 @@ def per_frequency_matrix_at(scheme: Scheme, n: int, j: int) -> sp.ImmutableMatri
 
 
 @lru_cache(maxsize=None)
-def frequency_zero_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
+def recursion_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
     """The ``3 x 3`` recursion matrix of Eq. 43, derived from the rules.
 
     It acts on the column ``(O, abar, bbar)``: the central vertex, the centroid of the
@@ -142,17 +136,17 @@ def laurent_to_cos(expr: sp.Expr) -> sp.Expr:
     """Rewrite a Laurent polynomial in ``omega = exp(2 i j theta)`` in ``c = cos(j theta)``.
 
     ``omega^k -> (c + i s)^(2k)`` with ``s = sin(j theta)``, then ``s^2 -> 1 - c^2``. For a
-    symmetric polynomial (``p(omega) = p(1/omega)``) the result is a polynomial in :data:`COS`
-    alone; otherwise a term in :data:`SIN` remains.
+    symmetric polynomial (``p(omega) = p(1/omega)``) the result is a polynomial in :data:`symdecomp.symbols.cos_jtheta`
+    alone; otherwise a term in :data:`symdecomp.symbols.sin_jtheta` remains.
 
     >>> laurent_to_cos(OMEGA + 1/OMEGA)
     4*c**2 - 2
     """
     total = sp.Integer(0)
     for k, coeff in _laurent_terms(expr).items():
-        base = COS + sp.I * SIN if k >= 0 else COS - sp.I * SIN
+        base = cos_jtheta + sp.I * sin_jtheta if k >= 0 else cos_jtheta - sp.I * sin_jtheta
         total += coeff * sp.expand(base ** (2 * abs(k)))
-    poly = sp.Poly(sp.expand(total), SIN)
-    reduced = sp.rem(poly, sp.Poly(SIN**2 - (1 - COS**2), SIN))
+    poly = sp.Poly(sp.expand(total), sin_jtheta)
+    reduced = sp.rem(poly, sp.Poly(sin_jtheta**2 - (1 - cos_jtheta**2), sin_jtheta))
     return sp.expand(reduced.as_expr())
 

@@ -30,7 +30,8 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.elliptic import tangent_lambda
 from symdecomp.errors import check_valence
-from symdecomp.analysis.frequency import COS, per_frequency_matrix
+from symdecomp.analysis.frequency import per_frequency_matrix
+from symdecomp.symbols import cos_jtheta
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
@@ -82,8 +83,8 @@ def hyperbolic_equality(scheme: Scheme) -> HyperbolicEquality:
     c = sp.Symbol("c", positive=True)
     L = sp.Symbol("L", positive=True)
     ev = tangent_eigenvalues(scheme)
-    char1 = sp.expand(ev.characteristic_polynomial.subs({COS: c, sp.Symbol("lambda"): L}))
-    char2 = sp.expand(ev.characteristic_polynomial.subs({COS: 2 * c**2 - 1, sp.Symbol("lambda"): L**2}))
+    char1 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: c, sp.Symbol("lambda"): L}))
+    char2 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: 2 * c**2 - 1, sp.Symbol("lambda"): L**2}))
     polynomial = sp.factor(sp.resultant(char2, char1, L))
     defect = hyperbolic_defect(scheme)
     roots, valences = [], []

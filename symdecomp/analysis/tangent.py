@@ -19,9 +19,9 @@ from functools import lru_cache
 
 import sympy as sp
 
-from symdecomp.analysis.frequency import COS, SIN, laurent_to_cos, per_frequency_matrix
+from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import j as J
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
@@ -56,11 +56,11 @@ class TangentEigenvalues:
 
     def in_frequency(self, expr: sp.Expr) -> sp.Expr:
         """Substitute ``c = cos(pi j/n)`` (and ``s = sin(pi j/n)``) into an expression."""
-        return expr.subs({COS: cos_jtheta, SIN: sp.sin(sp.pi * J / N)})
+        return expr.subs({cos_jtheta: sp.cos(sp.pi * J / N), sin_jtheta: sp.sin(sp.pi * J / N)})
 
     def at(self, n: int, j: int) -> tuple[sp.Expr, sp.Expr]:
         """The two exact eigenvalues at a concrete valence and frequency."""
-        subs = {COS: sp.cos(sp.pi * sp.Rational(j, n)), SIN: sp.sin(sp.pi * sp.Rational(j, n))}
+        subs = {cos_jtheta: sp.cos(sp.pi * sp.Rational(j, n)), sin_jtheta: sp.sin(sp.pi * sp.Rational(j, n))}
         return self.dominant.subs(subs), self.subdominant.subs(subs)
 
 
@@ -103,7 +103,7 @@ def invariant_ratio(scheme: Scheme) -> sp.Expr:
 
 
 def _omega_and_cos(n, j):
-    return {OMEGA: sp.exp(2 * sp.pi * sp.I * j / n), COS: sp.cos(sp.pi * j / n), SIN: sp.sin(sp.pi * j / n)}
+    return {OMEGA: sp.exp(2 * sp.pi * sp.I * j / n), cos_jtheta: sp.cos(sp.pi * j / n), sin_jtheta: sp.sin(sp.pi * j / n)}
 
 
 def invariant_ratio_at(scheme: Scheme, n: int, j: int = 1) -> sp.Expr:

@@ -32,7 +32,8 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
 from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.analysis.frequency import COS, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
+from symdecomp.analysis.frequency import recursion_matrix, laurent_to_cos, per_frequency_matrix
+from symdecomp.symbols import cos_jtheta
 from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.symbols import alpha as ALPHA
@@ -61,7 +62,7 @@ def with_free_vertex_rule(scheme: Scheme) -> Scheme:
 @lru_cache(maxsize=None)
 def eigenvalue_quadratic(scheme: Scheme) -> sp.Poly:
     """``det(lambda I - T)/(lambda - 1)`` for the Eq. 43 matrix with a free vertex rule, in ``lambda``."""
-    T = frequency_zero_matrix(with_free_vertex_rule(scheme))
+    T = recursion_matrix(with_free_vertex_rule(scheme))
     charpoly = sp.Poly(sp.expand((LAM * sp.eye(3) - T).det()), LAM)
     quotient, remainder = sp.div(charpoly, sp.Poly(LAM - 1, LAM))
     if sp.expand(remainder.as_expr()) != 0:  # pragma: no cover - affine rules guarantee it
@@ -161,9 +162,9 @@ def joint_obstruction(scheme: Scheme) -> JointObstruction:
     m22 = laurent_to_cos(M[1, 1])
     trace = laurent_to_cos(M.trace())
     det = laurent_to_cos(sp.expand(M.det()))
-    g = sp.together(eq44_ratio(scheme, MU).subs(MU, L**2) - m21sq / (L - m22) ** 2).subs(COS, c)
+    g = sp.together(eq44_ratio(scheme, MU).subs(MU, L**2) - m21sq / (L - m22) ** 2).subs(cos_jtheta, c)
     numerator = sp.numer(g)
-    charpoly = (L**2 - trace * L + det).subs(COS, c)
+    charpoly = (L**2 - trace * L + det).subs(cos_jtheta, c)
     polynomial = sp.factor(sp.resultant(sp.expand(numerator), sp.expand(charpoly), L))
     roots = []
     valences = []

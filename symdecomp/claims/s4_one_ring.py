@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.analysis.frequency import frequency_zero_matrix, per_frequency_matrix
+from symdecomp.analysis.frequency import recursion_matrix, per_frequency_matrix
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha, beta, n, omega
 from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
@@ -296,7 +296,7 @@ def _prop42() -> CheckResult:
 )
 def _prop43() -> CheckResult:
     cc = catmull_clark(alpha, beta)
-    E = frequency_zero_matrix(cc)
+    E = recursion_matrix(cc)
     sums = sp.Matrix([sp.simplify(sum(E.row(r))) for r in range(3)])
     affine = all(s == 1 for s in sums)
     printed = sp.Matrix([[1 - alpha - beta, n * alpha, n * beta]])

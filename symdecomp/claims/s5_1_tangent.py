@@ -6,16 +6,17 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
-from symdecomp.analysis.frequency import COS, SIN, per_frequency_matrix
+from symdecomp.analysis.frequency import per_frequency_matrix
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.schemes.scheme import catmull_clark
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.symbols import lam, n, omega
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
 
 R = sp.Rational
-C = COS
+C = cos_jtheta
 
 
 def _cc():
@@ -174,11 +175,11 @@ def _det_condition(sign: int):
     cc = _cc()
     M = per_frequency_matrix(cc)
     # (1, y) with y = m21/(lambda - m22) equals (1, sign*e^{i phi}) iff lambda = m22 + m21 * sign * e^{-i phi}
-    e_minus = C - sp.I * SIN
-    m21 = M[1, 0].subs(omega, (C + sp.I * SIN) ** 2)
+    e_minus = C - sp.I * sin_jtheta
+    m21 = M[1, 0].subs(omega, (C + sp.I * sin_jtheta) ** 2)
     lam_star = sp.expand(M[1, 1] + sign * m21 * e_minus)
-    poly = sp.Poly(lam_star, SIN)
-    lam_star = sp.expand(sp.rem(poly, sp.Poly(SIN**2 - 1 + C**2, SIN)).as_expr())
+    poly = sp.Poly(lam_star, sin_jtheta)
+    lam_star = sp.expand(sp.rem(poly, sp.Poly(sin_jtheta**2 - 1 + C**2, sin_jtheta)).as_expr())
     at = sp.factor(sp.expand(tangent_eigenvalues(cc).characteristic_polynomial.subs(lam, lam_star)))
     roots = sp.solveset(at, C, sp.Interval(-1, 1))
     return lam_star, at, roots
@@ -221,7 +222,7 @@ def _dominant_vs_frequency_zero(last: int) -> tuple[bool, int]:
     from symdecomp.algebra.compile import compile_expression
 
     dominant = compile_expression(tangent_eigenvalues(_cc()).dominant, (C,), engine="arb")
-    block = [compile_expression(e, (n,), engine="arb") for e in frequency_zero_eigenvalues(_cc()) if e != 1]
+    block = [compile_expression(e, (n,), engine="arb") for e in recursion_eigenvalues(_cc()) if e != 1]
     old = flint.ctx.prec
     flint.ctx.prec = 128
     try:
@@ -254,7 +255,7 @@ def _prop51() -> CheckResult:
     dominant = ev.dominant.subs(C, cp)
     derivative = sp.diff(dominant, cp)
     increasing = all(t.is_positive for t in sp.Add.make_args(sp.expand(derivative)))
-    block = [e for e in frequency_zero_eigenvalues(_cc()) if e != 1]
+    block = [e for e in recursion_eigenvalues(_cc()) if e != 1]
     last = 1000
     certified, upto = _dominant_vs_frequency_zero(last)
     if not increasing:

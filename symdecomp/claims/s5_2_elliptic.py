@@ -17,7 +17,8 @@ from symdecomp.analysis.elliptic import (
     scale_ratio_squared,
 )
 from symdecomp.analysis.ellipses import ellipse_axes
-from symdecomp.analysis.frequency import COS, frequency_zero_matrix
+from symdecomp.analysis.frequency import recursion_matrix
+from symdecomp.symbols import cos_jtheta
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -154,7 +155,7 @@ def _eq42() -> CheckResult:
     r"with $\alpha, \beta$ as in Eq. 16.",
 )
 def _eq43() -> CheckResult:
-    T = frequency_zero_matrix(catmull_clark(ALPHA, BETA))
+    T = recursion_matrix(catmull_clark(ALPHA, BETA))
     R = sp.Rational
     printed_rows = sp.Matrix([[R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
     printed_first = sp.Matrix([[1 - ALPHA - BETA, ALPHA, BETA]])
@@ -191,7 +192,7 @@ def _eq43() -> CheckResult:
 )
 def _eq44() -> CheckResult:
     scheme = catmull_clark(ALPHA, BETA)
-    T = sp.Matrix(frequency_zero_matrix(scheme))
+    T = sp.Matrix(recursion_matrix(scheme))
     D = sp.Matrix([[-1, 1, 0], [-1, 0, 1]])  # (h_O, h_a, h_b) -> (d_a, d_b)
     # D T = T' D with T' = D T E, E a right inverse of D on the complement of (1,1,1).
     E = sp.Matrix([[0, 0], [1, 0], [0, 1]])
@@ -231,14 +232,14 @@ def _eq44() -> CheckResult:
 def _eq45() -> CheckResult:
     cc = catmull_clark()
     R = sp.Rational
-    T4 = frequency_zero_matrix(cc, 4)
+    T4 = recursion_matrix(cc, 4)
     printed = sp.Matrix([[R(9, 16), R(3, 8), R(1, 16)], [R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
     eigs = sorted(sp.Matrix(T4).eigenvals(), reverse=True)
     u = recursion_eigenvector(cc, eigs[1], 4)
     paper_u = sp.Matrix([-2, 1, 4])
     parallel = u.cross(paper_u)
     ratio = eq44_ratio(cc, eigs[1], 4)
-    scale_sq = sp.nsimplify(sp.simplify(scale_ratio_squared(cc).subs(COS, sp.cos(sp.pi / 4))))
+    scale_sq = sp.nsimplify(sp.simplify(scale_ratio_squared(cc).subs(cos_jtheta, sp.cos(sp.pi / 4))))
     lam1 = nice_elliptic_conditions(cc).lambda1.subs(N, 4)
     ok = (
         T4 == printed
@@ -280,7 +281,7 @@ def _remark52() -> CheckResult:
     l = recursion_left_eigenvector(scheme, MU)
     # l is orthogonal to (1,1,1) for MU != 1, so l.(0,1,1) = -l_O; l_O = 0 forces l = 0:
     la, lb = sp.symbols("l_a l_b")
-    T = sp.Matrix(frequency_zero_matrix(scheme))
+    T = sp.Matrix(recursion_matrix(scheme))
     eqs = [la * T[1, 0] + lb * T[2, 0], la + lb]  # column 1 of l^T (T - MU I) with l_O = 0, and l.(1,1,1) = 0
     only_zero = sp.solve(eqs, [la, lb], dict=True) == [{la: 0, lb: 0}]
     dot111 = sp.factor(sum(l))

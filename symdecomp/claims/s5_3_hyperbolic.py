@@ -9,7 +9,7 @@ from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.analysis.frequency import COS
+from symdecomp.symbols import cos_jtheta
 from symdecomp.claims import CheckResult, Status, Step, claim
 
 _VALENCES = (3, 12)
@@ -26,7 +26,7 @@ def _smaller() -> CheckResult:
     cc = catmull_clark()
     dominant = tangent_eigenvalues(cc).dominant
     t = sp.Symbol("t", positive=True)  # t = |c|
-    slope = sp.factor(sp.diff(dominant.subs(sp.Abs(COS), t).subs(COS**2, t**2), t))
+    slope = sp.factor(sp.diff(dominant.subs(sp.Abs(cos_jtheta), t).subs(cos_jtheta**2, t**2), t))
     c = sp.Symbol("c", positive=True)  # cos(pi/n); cos(2 pi/n) = 2c^2 - 1
     below = sp.factor(2 * c**2 - 1 - c)  # cos(2pi/n) < cos(pi/n)  <=> (2c+1)(c-1) < 0
     above = sp.factor(-(2 * c**2 - 1) - c)  # -cos(2pi/n) < cos(pi/n) <=> (2c-1)(c+1) > 0, false at c = 1/2 (n = 3)

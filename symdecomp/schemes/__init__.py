@@ -1,7 +1,7 @@
 """Subdivision schemes as data, and the matrices and meshes built from their rules.
 
 A scheme's rules (:mod:`.scheme`), the subdivision matrix of the 1-ring, symbolic and exact
-(:mod:`.matrices`), whole quad meshes refined by the scheme's rules (:mod:`.mesh`), and the
+(:mod:`.scheme`; the full matrix in FLINT rationals and its characteristic polynomial, :mod:`.full_matrix`), whole quad meshes refined by the scheme's rules (:mod:`.mesh`), and the
 1-ring as a polygon pair (:mod:`.ring`).
 """
 

@@ -2,7 +2,7 @@
 
 The certificate is an exact polynomial identity. Let ``chi_S`` be the characteristic
 polynomial of the full ``(2n+1) x (2n+1)`` subdivision matrix, computed exactly over ``Q``
-by FLINT from the matrix built out of the rules (:mod:`symdecomp.schemes.matrices`; no block
+by FLINT from the matrix built out of the rules (:mod:`symdecomp.schemes.full_matrix`; no block
 structure). Let ``v_1..v_{2n+1}`` be the closed-form eigenvalues (:mod:`symdecomp.analysis.closed_forms`)
 and ``C(lambda) = prod_i (lambda - v_i)`` their characteristic polynomial. The claim
 "the closed forms are the eigenvalues, with multiplicities" is exactly ``chi_S = C``. It is
@@ -53,10 +53,10 @@ import sympy as sp
 
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
-from symdecomp.verify.numeric import CheckStatus
+from symdecomp.verify.numeric import CrossCheckStatus
 from symdecomp.errors import check_valence
-from symdecomp.schemes.matrices import characteristic_polynomial, parameter_values
-from symdecomp.analysis.frequency import COS, SIN
+from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.symbols import n as N
@@ -105,10 +105,10 @@ def _to_laurent(expr: sp.Expr):
     """Rewrite a polynomial in ``c, s`` as a Laurent polynomial in ``omega``; ``None`` if impossible."""
     expr = sp.expand(expr)
     if expr.has(sp.Abs) or any(
-        isinstance(p, sp.Pow) and not p.exp.is_Integer and p.base.has(COS, SIN) for p in expr.atoms(sp.Pow)
+        isinstance(p, sp.Pow) and not p.exp.is_Integer and p.base.has(cos_jtheta, sin_jtheta) for p in expr.atoms(sp.Pow)
     ):
         return None
-    z = sp.expand(expr.subs({COS: (_ETA + 1 / _ETA) / 2, SIN: (_ETA - 1 / _ETA) / (2 * sp.I)}))
+    z = sp.expand(expr.subs({cos_jtheta: (_ETA + 1 / _ETA) / 2, sin_jtheta: (_ETA - 1 / _ETA) / (2 * sp.I)}))
     terms: dict = {}
     for term in sp.Add.make_args(z):
         coeff, power = term.as_coeff_exponent(_ETA)
@@ -120,7 +120,7 @@ def _to_laurent(expr: sp.Expr):
         coeff = sp.cancel(coeff)
         if coeff == 0:
             continue
-        if power % 2 or coeff.has(sp.I) or coeff.has(COS, SIN):
+        if power % 2 or coeff.has(sp.I) or coeff.has(cos_jtheta, sin_jtheta):
             return None
         out[power // 2] = coeff
     return out
@@ -166,7 +166,7 @@ class Certificate:
     #: The scheme's name.
     scheme: str
     #: ``agree`` (proved), ``disagree`` (refuted, rigorously) or ``undecided`` (neither: a failure).
-    status: CheckStatus
+    status: CrossCheckStatus
     #: How the verdict was reached, e.g. ``"chi_S = C at 2n+1 points"``.
     method: str
     #: Number of distinct eigenvalues (from the squarefree part of ``chi_S``).
@@ -184,7 +184,7 @@ class Certificate:
 
     @property
     def ok(self) -> bool:
-        return self.status is CheckStatus.AGREE
+        return self.status is CrossCheckStatus.AGREE
 
     def as_json(self) -> dict:
         return {
@@ -311,11 +311,11 @@ def certify(
     texts = tuple(_text(text_balls[cl[0]], digits) for cl in order)
     if identity:
         note = "multiplicities certified" if certified else "distinct values not separated at the precision limit"
-        status, message = CheckStatus.AGREE, f"n = {n}: proved: {method}; {distinct} distinct eigenvalues, {note}"
+        status, message = CrossCheckStatus.AGREE, f"n = {n}: proved: {method}; {distinct} distinct eigenvalues, {note}"
     elif refutation is not None:
-        status, message, certified = CheckStatus.DISAGREE, refutation, False
+        status, message, certified = CrossCheckStatus.DISAGREE, refutation, False
     else:
-        status, certified = CheckStatus.UNDECIDED, False
+        status, certified = CrossCheckStatus.UNDECIDED, False
         message = f"n = {n}: not certified ({method}), and no closed-form eigenvalue could be refuted at {max_prec} bits"
     return Certificate(
         n=n,

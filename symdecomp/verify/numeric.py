@@ -33,14 +33,14 @@ import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
 from symdecomp.errors import check_valence
-from symdecomp.schemes.matrices import parameter_values, sparse_subdivision_matrix
+from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value
 
-__all__ = ["CheckStatus", "EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
+__all__ = ["CrossCheckStatus", "EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
 
 
-class CheckStatus(str, enum.Enum):
+class CrossCheckStatus(str, enum.Enum):
     """The outcome of a cross-check at one valence."""
 
     #: The closed forms agree with the full matrix (to ``dps`` digits, or exactly if certified).
@@ -91,7 +91,7 @@ class NumericCheck:
     #: Working precisions (decimal digits) of the eigenvalue computations, in order.
     precisions: tuple[int, ...]
     #: Agree, disagree or not converged.
-    status: CheckStatus
+    status: CrossCheckStatus
     #: The largest deviation of a matched mean from its closed form (at the last precision).
     max_deviation: object
     #: The largest spread of a cluster (large for defective eigenvalues).
@@ -103,7 +103,7 @@ class NumericCheck:
 
     @property
     def ok(self) -> bool:
-        return self.status is CheckStatus.AGREE
+        return self.status is CrossCheckStatus.AGREE
 
     def as_json(self) -> dict:
         return {
@@ -245,7 +245,7 @@ def numeric_check(
             scheme=scheme.name,
             dps=dps,
             precisions=tuple(precisions),
-            status=CheckStatus.NOT_CONVERGED,
+            status=CrossCheckStatus.NOT_CONVERGED,
             max_deviation=mpmath.inf,
             max_spread=mpmath.inf,
             matches=(),
@@ -258,7 +258,7 @@ def numeric_check(
         scheme=scheme.name,
         dps=dps,
         precisions=tuple(precisions),
-        status=CheckStatus.NOT_CONVERGED,
+        status=CrossCheckStatus.NOT_CONVERGED,
         max_deviation=worst.deviation,
         max_spread=max(m.spread for m in matches),
         matches=tuple(matches),
@@ -294,20 +294,20 @@ def _verdict(scheme, n, dps, precisions, matches) -> NumericCheck:
             f"n = {n}: closed-form eigenvalue {m.describe()} has {m.matched} eigenvalue(s) of the full matrix nearest "
             f"to it, not {m.multiplicity} (nearest at distance {mpmath.nstr(m.deviation, 3)})"
         )
-        status = CheckStatus.DISAGREE
+        status = CrossCheckStatus.DISAGREE
     elif bad_value:
         m = max(bad_value, key=lambda m: m.deviation)
         message = (
             f"n = {n}: closed-form eigenvalue {m.describe()} differs from the full matrix's eigenvalue(s) by "
             f"{mpmath.nstr(m.deviation, 3)} (tolerance 1e-{dps})"
         )
-        status = CheckStatus.DISAGREE
+        status = CrossCheckStatus.DISAGREE
     else:
         message = (
             f"n = {n}: {sum(m.multiplicity for m in matches)} eigenvalues ({len(matches)} distinct) agree to {dps} digits; "
             f"largest deviation {mpmath.nstr(max_dev, 3)}"
         )
-        status = CheckStatus.AGREE
+        status = CrossCheckStatus.AGREE
     return NumericCheck(
         n=n,
         scheme=scheme.name,

@@ -52,7 +52,7 @@ from symdecomp.analysis.elliptic import recursion_eigenvector
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
 
@@ -148,7 +148,7 @@ def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Exp
     """``(mu_2, (u_O, u_a, u_b))``: the subdominant eigenvalue of the Eq. 43 matrix at ``n`` and its eigenvector.
 
     ``mu_2`` is the larger of the two eigenvalues other than 1 (closed form from
-    :func:`symdecomp.analysis.spectrum.frequency_zero_eigenvalues`); the eigenvector is
+    :func:`symdecomp.analysis.spectrum.recursion_eigenvalues`); the eigenvector is
     :func:`symdecomp.analysis.elliptic.recursion_eigenvector`, scaled so that ``u_a - u_O = 1``.
 
     >>> mu, (uo, ua, ub) = elliptic_eigenvector(catmull_clark(), 4)
@@ -156,7 +156,7 @@ def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Exp
     (1/4, 2)
     """
     n = check_valence(n)
-    _, m2, m3 = (sp.nsimplify(sp.simplify(e.subs(N, n))) for e in frequency_zero_eigenvalues(scheme))
+    _, m2, m3 = (sp.nsimplify(sp.simplify(e.subs(N, n))) for e in recursion_eigenvalues(scheme))
     mu = m2 if sp.N(abs(m2)) >= sp.N(abs(m3)) else m3
     u = recursion_eigenvector(scheme, mu, n)
     scale = sp.simplify(u[1] - u[0])
@@ -205,7 +205,7 @@ def toolkit_predictions(n: int) -> ToolkitPredictions:
         d, s = _f(d), _f(s)
         tangent[j] = (d, s) if abs(d) >= abs(s) else (s, d)
     mu, (uo, ua, ub) = elliptic_eigenvector(cc, n)
-    others = sorted((_f(e.subs(N, n)) for e in frequency_zero_eigenvalues(cc)[1:]), key=abs, reverse=True)
+    others = sorted((_f(e.subs(N, n)) for e in recursion_eigenvalues(cc)[1:]), key=abs, reverse=True)
     r39 = complex(sp.N(invariant_ratio_at(cc, n, 1), 30))
     frac = lambda x: Fraction(int(x.p), int(x.q))  # noqa: E731
     return ToolkitPredictions(

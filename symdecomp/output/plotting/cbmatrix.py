@@ -17,7 +17,7 @@ import sympy as sp
 
 from symdecomp.errors import check_valence
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.symbols import n as N
 from symdecomp.output.plotting._mpl import new_figure
 
@@ -107,7 +107,7 @@ def vertex_weight_sweep_figure(scheme: Scheme, n: int, parameter: sp.Symbol, val
     ``(2n+1) x (2n+1)`` matrix (:func:`symdecomp.schemes.scheme.subdivision_matrix`) at each value; the
     ones the weight does not move form horizontal rows. Curves: the two eigenvalues of the
     frequency-0 matrix of Eq. 43 other than 1, from their closed forms
-    (:func:`symdecomp.analysis.spectrum.frequency_zero_eigenvalues`): Proposition 6.3 says these are the
+    (:func:`symdecomp.analysis.spectrum.recursion_eigenvalues`): Proposition 6.3 says these are the
     only ones that move. Real parts are shown; eigenvalues of a complex pair are marked.
     """
     n = check_valence(n)
@@ -117,7 +117,7 @@ def vertex_weight_sweep_figure(scheme: Scheme, n: int, parameter: sp.Symbol, val
     if missing:
         raise ValueError(f"give values for the scheme's other free parameters {sorted(map(str, missing))} in fixed=")
     S = subdivision_matrix(scheme, n)
-    moving = [e.subs({N: n, **fixed}) for e in frequency_zero_eigenvalues(scheme)[1:]]
+    moving = [e.subs({N: n, **fixed}) for e in recursion_eigenvalues(scheme)[1:]]
     fig = new_figure(11, 5.4)
     ax = fig.add_subplot()
     curves = []

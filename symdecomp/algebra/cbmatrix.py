@@ -36,7 +36,7 @@ from typing import Mapping, Sequence
 
 import sympy as sp
 
-from symdecomp.algebra.circulant import circ, fourier_matrix, generating_polynomial, root_of_unity
+from symdecomp.algebra.circulant import circ, fourier_matrix, fourier_row, generating_polynomial
 from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -156,7 +156,7 @@ def block_eigenvalue_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
     m = cb.order
     if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k < m:
         raise SymdecompError(f"frequency k must be an integer with 0 <= k < m = {m}, got {k!r}")
-    w = [root_of_unity(m, k * l) if m > 1 else sp.Integer(1) for l in range(m)]
+    w = fourier_row(m, k)
     return sp.ImmutableMatrix(
         cb.block_count,
         cb.block_count,

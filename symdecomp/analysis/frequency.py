@@ -23,6 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
+import mpmath
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation, root_of_unity
@@ -39,6 +40,7 @@ __all__ = [
     "per_frequency_matrix_at",
     "recursion_matrix",
     "laurent_to_cos",
+    "valences_at_roots",
 ]
 
 
@@ -150,3 +152,29 @@ def laurent_to_cos(expr: sp.Expr) -> sp.Expr:
     reduced = sp.rem(poly, sp.Poly(sin_jtheta**2 - (1 - cos_jtheta**2), sin_jtheta))
     return sp.expand(reduced.as_expr())
 
+
+def valences_at_roots(polynomial: sp.Expr, c: sp.Symbol, vanishes) -> tuple[tuple[sp.Expr, ...], tuple[int, ...]]:
+    """The real roots of ``polynomial`` in ``c = cos(pi/n)`` that can be valences, and the valences.
+
+    A valence ``n >= 3`` has ``c = cos(pi/n)`` in ``[1/2, 1)``, so only the real roots there
+    are candidates (returned as exact algebraic numbers, each once). For each, the valence
+    ``k`` nearest to ``pi/acos(c)`` is a candidate if it matches to 40 digits; it is kept
+    only if ``vanishes(k)``, an exact test at that valence (the numeric match only selects
+    which valence to test, it proves nothing).
+
+    >>> c = sp.Symbol("c", positive=True)
+    >>> valences_at_roots(2 * c**2 - 1, c, lambda k: True)
+    ((sqrt(2)/2,), (4,))
+    """
+    roots, valences = [], []
+    for root in sp.Poly(polynomial, c).real_roots():
+        if not sp.Rational(1, 2) <= root < 1 or root in roots:
+            continue
+        roots.append(root)
+        with mpmath.workdps(50):
+            m = mpmath.pi / mpmath.acos(mpmath.mpf(sp.N(root, 60)))
+            k = int(mpmath.nint(m))
+            close = abs(m - k) < mpmath.mpf(10) ** -40
+        if close and vanishes(k):
+            valences.append(k)
+    return tuple(roots), tuple(sorted(set(valences)))

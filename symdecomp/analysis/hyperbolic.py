@@ -30,7 +30,7 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.elliptic import tangent_lambda
 from symdecomp.errors import check_valence
-from symdecomp.analysis.frequency import per_frequency_matrix
+from symdecomp.analysis.frequency import per_frequency_matrix, valences_at_roots
 from symdecomp.symbols import cos_jtheta
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
@@ -87,16 +87,8 @@ def hyperbolic_equality(scheme: Scheme) -> HyperbolicEquality:
     char2 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: 2 * c**2 - 1, sp.Symbol("lambda"): L**2}))
     polynomial = sp.factor(sp.resultant(char2, char1, L))
     defect = hyperbolic_defect(scheme)
-    roots, valences = [], []
-    for root in sp.Poly(polynomial, c).real_roots():
-        if sp.Rational(1, 2) <= root < 1:
-            roots.append(root)
-            with mpmath.workdps(50):
-                m = mpmath.pi / mpmath.acos(mpmath.mpf(sp.N(root, 60)))
-                k = int(mpmath.nint(m))
-                if abs(m - k) < mpmath.mpf(10) ** -40 and sp.simplify(defect.subs(N, k)) == 0:
-                    valences.append(k)
-    return HyperbolicEquality(polynomial, tuple(dict.fromkeys(roots)), tuple(sorted(set(valences))))
+    roots, valences = valences_at_roots(polynomial, c, lambda k: sp.simplify(defect.subs(N, k)) == 0)
+    return HyperbolicEquality(polynomial, roots, valences)
 
 
 def hyperbolic_ring(n: int, height=1) -> sp.ImmutableMatrix:

@@ -32,7 +32,7 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
 from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.analysis.frequency import recursion_matrix, laurent_to_cos, per_frequency_matrix
+from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix, valences_at_roots
 from symdecomp.symbols import cos_jtheta
 from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.analysis.spectrum import format_value
@@ -166,19 +166,10 @@ def joint_obstruction(scheme: Scheme) -> JointObstruction:
     numerator = sp.numer(g)
     charpoly = (L**2 - trace * L + det).subs(cos_jtheta, c)
     polynomial = sp.factor(sp.resultant(sp.expand(numerator), sp.expand(charpoly), L))
-    roots = []
-    valences = []
     cond = nice_elliptic_conditions(scheme)
     defect = cond.eq44_ratio_of_mu.subs(MU, cond.lambda1**2) - cond.scale_ratio_squared
-    for root in sp.Poly(polynomial, c).real_roots():
-        if sp.Rational(1, 2) <= root < 1:
-            roots.append(root)
-            with mpmath.workdps(50):
-                m = mpmath.pi / mpmath.acos(mpmath.mpf(sp.N(root, 60)))
-                k = int(mpmath.nint(m))
-                if abs(m - k) < mpmath.mpf(10) ** -40 and sp.simplify(defect.subs(N, k)) == 0:
-                    valences.append(k)
-    return JointObstruction(sp.simplify(defect), polynomial, tuple(roots), tuple(valences))
+    roots, valences = valences_at_roots(polynomial, c, lambda k: sp.simplify(defect.subs(N, k)) == 0)
+    return JointObstruction(sp.simplify(defect), polynomial, roots, valences)
 
 
 @dataclass(frozen=True)

@@ -27,7 +27,7 @@ from symdecomp.algebra.cbmatrix import (
     perturbed_block_eigenvalue_matrix,
 )
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, verify_closed_form
-from symdecomp.algebra.circulant import circ, mode_eigenvalue_derivation
+from symdecomp.algebra.circulant import circ, fourier_row, mode_eigenvalue_derivation
 from symdecomp.symbols import cos_jtheta
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
@@ -51,15 +51,11 @@ def _generic_cb(K: int, m: int):
     return cb_matrix([[[sp.Symbol(f"c{p}{q}_{l}") for l in range(m)] for q in range(K)] for p in range(K)])
 
 
-def _fourier_row(m: int, k: int):
-    return [sp.expand(sp.I ** (k * s)) if m == 4 else sp.exp(2 * sp.pi * sp.I * k * s / m) for s in range(m)]
-
-
 def _lift_identity_holds(cb, coefficients) -> bool:
     """``B (alpha (x) v_k) == (E_k alpha) (x) v_k`` for every frequency ``k``."""
     B = sp.Matrix(cb.matrix())
     for k in range(cb.order):
-        v = _fourier_row(cb.order, k)
+        v = fourier_row(cb.order, k)
         E = sp.Matrix(block_eigenvalue_matrix(cb, k))
         lhs = B * sp.Matrix(lifted_vector(coefficients, v))
         rhs = sp.Matrix(lifted_vector(list(E * sp.Matrix(coefficients)), v))
@@ -205,7 +201,7 @@ def _eq48() -> CheckResult:
     cb = _generic_cb(2, 4)
     ok = True
     for k in range(4):
-        v = sp.Matrix(_fourier_row(4, k))
+        v = sp.Matrix(fourier_row(4, k))
         E = block_eigenvalue_matrix(cb, k)
         for p in range(2):
             for q in range(2):

@@ -30,7 +30,22 @@ from symdecomp.errors import FrequencyOutOfRangeError, InvalidPolygonError
 from symdecomp.algebra.polygons import PolygonDecomposition, as_vertex_rows, decompose
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
-__all__ = ["OneRing", "subdivide", "one_ring_decomposition", "OneRingDecomposition", "ngon_amplitudes"]
+__all__ = ["interleaved_polygon", "OneRing", "subdivide", "one_ring_decomposition", "OneRingDecomposition", "ngon_amplitudes"]
+
+
+def interleaved_polygon(a, b) -> list:
+    """The 2n-gon ``P = (a_0, b_0, a_1, b_1, ..., a_{n-1}, b_{n-1})`` of a 1-ring (Eq. 10).
+
+    ``a`` and ``b`` are the ``n`` edge and face neighbours (any sequences of points); the
+    result lists the points themselves, interleaved.
+
+    >>> interleaved_polygon(["a0", "a1"], ["b0", "b1"])
+    ['a0', 'b0', 'a1', 'b1']
+    """
+    a, b = list(a), list(b)
+    if len(a) != len(b):
+        raise InvalidPolygonError(f"a 1-ring needs as many face neighbours as edge neighbours, got {len(a)} and {len(b)}")
+    return [p for pair in zip(a, b) for p in pair]
 
 
 @dataclass(frozen=True)
@@ -74,11 +89,8 @@ class OneRing:
         return len(self.a)
 
     def polygon(self) -> list:
-        """The 2n-gon ``(a_0, b_0, a_1, b_1, ..., a_{n-1}, b_{n-1})`` of Eq. 10."""
-        out = []
-        for p, q in zip(self.a, self.b):
-            out += [list(p), list(q)]
-        return out
+        """The 2n-gon ``(a_0, b_0, a_1, b_1, ..., a_{n-1}, b_{n-1})`` of Eq. 10, as lists."""
+        return [list(p) for p in interleaved_polygon(self.a, self.b)]
 
     def rows(self) -> list:
         """The points in the order of the subdivision matrix: ``O, a_0..a_{n-1}, b_0..b_{n-1}``."""

@@ -64,7 +64,8 @@ from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark,
 from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, recursion_eigenvalues
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.verify.numeric import CrossCheckStatus, NumericCheck, numeric_check
+from symdecomp.verify.numeric import NumericCheck, numeric_check
+from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
@@ -148,6 +149,7 @@ __all__ = [
     "certify",
     "Certificate",
     "CrossCheckStatus",
+    "CrossCheckResult",
     "exact_subdivision_matrix",
     "characteristic_polynomial",
     "jordan_vertex_weights",

@@ -9,7 +9,7 @@ import sympy as sp
 
 from symdecomp.verify.certify import certify, closed_form_characteristic_value, symmetric_functions
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.verify.numeric import CrossCheckStatus
+from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
 from symdecomp.errors import InvalidSchemeError, InvalidValenceError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix

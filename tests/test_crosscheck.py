@@ -7,7 +7,8 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.verify.numeric import CrossCheckStatus, full_matrix_eigenvalues, numeric_check
+from symdecomp.verify.numeric import full_matrix_eigenvalues, numeric_check
+from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.analysis.defective import jordan_vertex_weights
 from symdecomp.schemes.full_matrix import sparse_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark

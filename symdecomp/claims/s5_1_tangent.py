@@ -13,7 +13,8 @@ from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.symbols import lam, n, omega
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
-from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
+from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
+from symdecomp.schemes.shift_stencil import composed_stages
 
 R = sp.Rational
 C = cos_jtheta

@@ -46,14 +46,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Mapping
+from typing import ClassVar, Mapping
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
-from symdecomp.verify.numeric import CrossCheckStatus
+from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 from symdecomp.errors import check_valence
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
 from symdecomp.symbols import cos_jtheta, sin_jtheta
@@ -64,7 +64,6 @@ from symdecomp.symbols import n as N
 __all__ = ["SymmetricFunctions", "symmetric_functions", "Certificate", "certify", "closed_form_characteristic_value"]
 
 _ETA = sp.Symbol("eta")
-_OMEGA = sp.Symbol("omega")
 
 
 @dataclass(frozen=True)
@@ -158,15 +157,12 @@ def symmetric_functions(cf: ClosedForms) -> SymmetricFunctions:
 
 
 @dataclass(frozen=True)
-class Certificate:
-    """The certified cross-check of one valence."""
+class Certificate(CrossCheckResult):
+    """The certified cross-check of one valence.
 
-    #: The valence.
-    n: int
-    #: The scheme's name.
-    scheme: str
-    #: ``agree`` (proved), ``disagree`` (refuted, rigorously) or ``undecided`` (neither: a failure).
-    status: CrossCheckStatus
+    Status ``agree`` (proved), ``disagree`` (refuted, rigorously) or ``undecided`` (neither: a failure).
+    """
+
     #: How the verdict was reached, e.g. ``"chi_S = C at 2n+1 points"``.
     method: str
     #: Number of distinct eigenvalues (from the squarefree part of ``chi_S``).
@@ -179,25 +175,16 @@ class Certificate:
     multiplicities_certified: bool
     #: Bits of the largest coefficient numerator of ``chi_S``.
     height_bits: int
-    #: A one-line verdict; on failure it names the valence and the eigenvalue.
-    message: str
 
-    @property
-    def ok(self) -> bool:
-        return self.status is CrossCheckStatus.AGREE
+    mode: ClassVar[str] = "certified"
 
-    def as_json(self) -> dict:
+    def details(self) -> dict:
         return {
-            "n": self.n,
-            "scheme": self.scheme,
-            "mode": "certified",
-            "status": self.status.value,
             "method": self.method,
             "distinct": self.distinct,
             "multiplicities": list(self.multiplicities),
             "multiplicities_certified": self.multiplicities_certified,
             "height_bits": self.height_bits,
-            "message": self.message,
         }
 
 

@@ -25,9 +25,8 @@ more than the requested ``dps`` digits. They are matched with the closed-form ei
 
 from __future__ import annotations
 
-import enum
 from dataclasses import dataclass
-from typing import Callable, Mapping
+from typing import Callable, ClassVar, Mapping
 
 import mpmath
 
@@ -36,21 +35,9 @@ from symdecomp.errors import check_valence
 from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value
+from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
-__all__ = ["CrossCheckStatus", "EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
-
-
-class CrossCheckStatus(str, enum.Enum):
-    """The outcome of a cross-check at one valence."""
-
-    #: The closed forms agree with the full matrix (to ``dps`` digits, or exactly if certified).
-    AGREE = "agree"
-    #: They do not: the message names the valence and the eigenvalue.
-    DISAGREE = "disagree"
-    #: The numeric spectrum did not stop moving within the precision limit: no verdict (a failure).
-    NOT_CONVERGED = "not converged"
-    #: Certified mode could neither prove nor refute (a failure).
-    UNDECIDED = "undecided"
+__all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
 
 
 @dataclass(frozen=True)
@@ -79,44 +66,29 @@ class EigenvalueMatch:
 
 
 @dataclass(frozen=True)
-class NumericCheck:
-    """The numeric cross-check of one valence."""
+class NumericCheck(CrossCheckResult):
+    """The numeric cross-check of one valence (status: agree, disagree or not converged)."""
 
-    #: The valence.
-    n: int
-    #: The scheme's name.
-    scheme: str
     #: Digits to which the closed forms must agree.
     dps: int
     #: Working precisions (decimal digits) of the eigenvalue computations, in order.
     precisions: tuple[int, ...]
-    #: Agree, disagree or not converged.
-    status: CrossCheckStatus
     #: The largest deviation of a matched mean from its closed form (at the last precision).
     max_deviation: object
     #: The largest spread of a cluster (large for defective eigenvalues).
     max_spread: object
     #: One entry per distinct closed-form value.
     matches: tuple[EigenvalueMatch, ...]
-    #: A one-line verdict; on failure it names the valence and the eigenvalue.
-    message: str
 
-    @property
-    def ok(self) -> bool:
-        return self.status is CrossCheckStatus.AGREE
+    mode: ClassVar[str] = "numeric"
 
-    def as_json(self) -> dict:
+    def details(self) -> dict:
         return {
-            "n": self.n,
-            "scheme": self.scheme,
-            "mode": "numeric",
-            "status": self.status.value,
             "dps": self.dps,
             "precisions": list(self.precisions),
             "max_deviation": mpmath.nstr(self.max_deviation, 3),
             "max_spread": mpmath.nstr(self.max_spread, 3),
             "distinct": len(self.matches),
-            "message": self.message,
         }
 
 

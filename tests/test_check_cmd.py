@@ -75,9 +75,7 @@ def test_spectrum_json_agrees_with_full_matrix_roots(n, capsys):
     """Issue 2: ``spectrum N --json --digits 30`` against the roots of the exact chi_S (Arb), >= 25 digits."""
     data = _spectrum_json(n, capsys)
     chi = characteristic_polynomial(CC, n)
-    old = flint.ctx.prec
-    flint.ctx.prec = 256
-    try:
+    with flint.ctx.workprec(256):
         roots = []  # (ball, multiplicity in chi_S), every distinct eigenvalue once
         for f, e in chi.numer().factor_squarefree()[1]:
             roots.extend((r, e) for r, _ in f.complex_roots())
@@ -95,8 +93,6 @@ def test_spectrum_json_agrees_with_full_matrix_roots(n, capsys):
                 assert entry["multiplicity"] == roots[best][1]
                 used.add(best)
             assert len(used) == len(roots)
-    finally:
-        flint.ctx.prec = old
 
 
 @pytest.mark.slow

@@ -156,9 +156,6 @@ class Cyclotomic:
     def imag(self) -> "Cyclotomic":
         return (self - self.conjugate()) / (2 * self.field.i)
 
-    def is_rational(self) -> bool:
-        return self.poly.degree() <= 0
-
     def to_sympy(self) -> sp.Expr:
         """As a sympy number: ``sum_k c_k (cos(2 pi k/N) + i sin(2 pi k/N))``, expanded."""
         N = self.field.N

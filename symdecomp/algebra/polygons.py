@@ -280,19 +280,6 @@ class PolygonDecomposition:
         freqs = sorted({j, (self.n - j) % self.n})
         return self._output(self._sum(freqs), real=self.dim == 3)
 
-    def pair_plane(self, j: int) -> tuple[tuple, tuple]:
-        """Two real vectors ``(2 Re z_j, 2 Im z_j)`` spanning the plane of the pair ``{j, n-j}``.
-
-        The pair polygon is ``p_m = R cos(2 pi jm/n) - I sin(2 pi jm/n)``.
-        """
-        if self.dim != 3:
-            raise InvalidPolygonError("pair planes are defined for polygons in R^3")
-        self._check_j(j)
-        a = self._arith()
-        R = tuple(a.out(2 * a.re(z)) for z in self._internal[j])
-        I = tuple(a.out(2 * a.im(z)) for z in self._internal[j])
-        return R, I
-
     def planar_pair(self, j: int) -> tuple[PlanarRegularComponent, PlanarRegularComponent]:
         """The coplanar regular polygons of frequencies ``j`` and ``n - j`` (Eq. 6).
 

@@ -93,17 +93,13 @@ class ClosedForms:
             self._compiled[key] = _compile_closed_forms(self, key[0], engine)
         zero, pair = self._compiled[key]
         if engine == "arb":
-            old = flint.ctx.prec
-            flint.ctx.prec = prec
-            try:
+            with flint.ctx.workprec(prec):
                 nn = flint.acb(n)
                 out = [f(nn, nn, nn) for f in zero]
                 for k in range(1, n):
                     c = flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(k, n)))
                     s = flint.acb(flint.arb.sin_pi_fmpq(flint.fmpq(k, n)))
                     out.extend(f(c, s, nn) for f in pair)
-            finally:
-                flint.ctx.prec = old
             return out
         nn = mpmath.mpf(n)
         out = [f(nn, nn, nn) for f in zero]

@@ -54,10 +54,6 @@ class TangentEigenvalues:
     #: ``(trace - sqrt(discriminant))/2``.
     subdominant: sp.Expr
 
-    def in_frequency(self, expr: sp.Expr) -> sp.Expr:
-        """Substitute ``c = cos(pi j/n)`` (and ``s = sin(pi j/n)``) into an expression."""
-        return expr.subs({cos_jtheta: sp.cos(sp.pi * J / N), sin_jtheta: sp.sin(sp.pi * J / N)})
-
     def at(self, n: int, j: int) -> tuple[sp.Expr, sp.Expr]:
         """The two exact eigenvalues at a concrete valence and frequency."""
         subs = {cos_jtheta: sp.cos(sp.pi * sp.Rational(j, n)), sin_jtheta: sp.sin(sp.pi * sp.Rational(j, n))}
@@ -107,9 +103,9 @@ def _omega_and_cos(n, j):
 
 
 def invariant_ratio_at(scheme: Scheme, n: int, j: int = 1) -> sp.Expr:
-    """The exact ratio of Eq. 39 at a concrete ``n`` and ``j``, simplified."""
+    """The exact ratio of Eq. 39 at a concrete ``n`` and ``j``, simplified (radicals, no guessing)."""
     value = invariant_ratio(scheme).subs(_omega_and_cos(sp.Integer(n), sp.Integer(j)))
-    return sp.nsimplify(sp.simplify(sp.expand_complex(value)))
+    return sp.radsimp(sp.simplify(sp.expand_complex(value)))
 
 
 def invariant_ratio_limit(scheme: Scheme, j: int = 1) -> sp.Expr:

@@ -97,7 +97,7 @@ class MeshRules:
     def vertex_weights(self, valence: int) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """``(center, each edge neighbour, each face neighbour)`` of the vertex point at this valence."""
         v = self.scheme.vertex_rule
-        return tuple(sp.nsimplify(w.subs(N, valence)) for w in (v.center, v.each_a, v.each_b))
+        return tuple(sp.simplify(w.subs(N, valence)) for w in (v.center, v.each_a, v.each_b))
 
 
 def mesh_rules(scheme: Scheme) -> MeshRules:
@@ -202,10 +202,6 @@ class QuadMesh:
     def _check_vertex(self, v):
         if v not in self._incident:
             raise InvalidMeshError(f"vertex {v!r} is not a corner of any face of the mesh")
-
-    def edge_faces(self, u: int, v: int) -> tuple[int | None, int | None]:
-        """``(left, right)``: the faces on the left of ``u -> v`` and of ``v -> u`` (None on a boundary)."""
-        return self._directed.get((u, v)), self._directed.get((v, u))
 
     def is_interior(self, v: int) -> bool:
         """Whether ``v`` is surrounded by a closed fan of faces (each of its edges has two faces)."""
@@ -360,12 +356,6 @@ def ring_mesh_labels(n: int, rings: int) -> tuple[tuple[int, int, int], ...]:
                     if max(u, v) == r:
                         out.append((s, u, v))
     return tuple(out)
-
-
-def ring_distance(label: tuple[int, int, int]) -> int:
-    """Ring number of a :func:`ring_mesh` vertex: ``max(u, v)`` (0 for the centre)."""
-    _, u, v = label
-    return max(u, v)
 
 
 # --------------------------------------------------------------------------------------------

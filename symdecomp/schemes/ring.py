@@ -114,7 +114,7 @@ def subdivide(scheme: Scheme, ring: OneRing, steps: int = 1) -> OneRing:
         X = sp.Matrix(rows)
         for _ in range(steps):
             X = S * X
-        return OneRing.from_rows([tuple(sp.nsimplify(x) for x in X.row(i)) for i in range(X.rows)], "exact")
+        return OneRing.from_rows([tuple(sp.expand(x) for x in X.row(i)) for i in range(X.rows)], "exact")
     if ring.arithmetic == "numpy":
         A = np.array(S.tolist(), dtype=float)
         X = np.array(rows)

@@ -277,12 +277,8 @@ def certify(
             if certified or prec >= max_prec:
                 break
         else:
-            old = flint.ctx.prec
-            flint.ctx.prec = prec
-            try:
+            with flint.ctx.workprec(prec):
                 refutation = _refute(chi, squarefree, balls, labels, n, digits)
-            finally:
-                flint.ctx.prec = old
             if refutation is not None or prec >= max_prec:
                 break
         prec *= 2

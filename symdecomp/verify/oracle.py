@@ -156,7 +156,7 @@ def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Exp
     (1/4, 2)
     """
     n = check_valence(n)
-    _, m2, m3 = (sp.nsimplify(sp.simplify(e.subs(N, n))) for e in recursion_eigenvalues(scheme))
+    _, m2, m3 = (sp.radsimp(sp.simplify(e.subs(N, n))) for e in recursion_eigenvalues(scheme))
     mu = m2 if sp.N(abs(m2)) >= sp.N(abs(m3)) else m3
     u = recursion_eigenvector(scheme, mu, n)
     scale = sp.simplify(u[1] - u[0])

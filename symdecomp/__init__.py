@@ -38,16 +38,28 @@ from symdecomp.algebra.cbmatrix import (
     SymbolicCBMatrix,
     SymbolicCirculant,
     block_diagonalization,
+    block_eigenvalue_matrix,
     cb_eigensystem,
     cb_matrix,
     cb_matrix_from,
     constant_blocks,
-    block_eigenvalue_matrix,
     lifted_vector,
     perturbed_block_eigenvalue_matrix,
 )
-from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
+from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
+from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
+from symdecomp.analysis.ellipses import ellipse_axes
+from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
+from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
+from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
+from symdecomp.analysis.masks import limit_masks, limit_masks_at
+from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, recursion_eigenvalues
+from symdecomp.analysis.support import Region, classify_support
+from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from symdecomp.analysis.tuning import joint_obstruction, tune
 from symdecomp.claims import CheckResult, Claim, Status, Step, all_claims, check_claim, get_claim
 from symdecomp.errors import (
     FrequencyOutOfRangeError,
@@ -58,24 +70,12 @@ from symdecomp.errors import (
     SymdecompError,
 )
 from symdecomp.output.latex import aslatex
-from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
-from symdecomp.analysis.frequency import circulant_blocks, recursion_matrix, per_frequency_matrix, per_frequency_matrix_at
+from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
-from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, recursion_eigenvalues
 from symdecomp.verify.certify import Certificate, certify
-from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
-from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
-from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
-from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
-from symdecomp.analysis.ellipses import ellipse_axes
-from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
-from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.analysis.tuning import joint_obstruction, tune
-from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
-from symdecomp.analysis.support import Region, classify_support
 
 __version__ = "0.1.0"
 

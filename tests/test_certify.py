@@ -7,14 +7,14 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.verify.certify import certify, closed_form_characteristic_value, symmetric_functions
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
 from symdecomp.errors import InvalidSchemeError, InvalidValenceError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta, lam
+from symdecomp.verify.certify import certify, closed_form_characteristic_value, symmetric_functions
+from symdecomp.verify.result import CrossCheckStatus
 
 CC = catmull_clark()
 FREE = catmull_clark(alpha, beta)
@@ -61,7 +61,8 @@ def test_resultant_step_equals_direct_product_of_closed_forms(n):
     """Step 2 of the proof (resultants, signs) against a 40-digit product over the closed forms."""
     cf = derived_closed_forms(CC)
     points = [0, 1, sp.Rational(-3, 7), 2]
-    exact = closed_form_characteristic_value(symmetric_functions(cf), n, {}, [flint.fmpq(int(p.p), int(p.q)) if isinstance(p, sp.Rational) else p for p in points])
+    rational_points = [flint.fmpq(int(p.p), int(p.q)) if isinstance(p, sp.Rational) else p for p in points]
+    exact = closed_form_characteristic_value(symmetric_functions(cf), n, {}, rational_points)
     with mpmath.workdps(40):
         values = cf.values(n, {})
         for p, e in zip(points, exact):

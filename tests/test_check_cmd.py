@@ -8,12 +8,11 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.cli import build_parser, main
-from symdecomp.cli import check_cmd
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.verify.numeric import full_matrix_eigenvalues
+from symdecomp.cli import build_parser, check_cmd, main
 from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.verify.numeric import full_matrix_eigenvalues
 
 CC = catmull_clark()
 

@@ -7,12 +7,12 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.verify.numeric import full_matrix_eigenvalues, numeric_check
-from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.analysis.defective import jordan_vertex_weights
 from symdecomp.schemes.full_matrix import sparse_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha, beta
+from symdecomp.verify.numeric import full_matrix_eigenvalues, numeric_check
+from symdecomp.verify.result import CrossCheckStatus
 
 CC = catmull_clark()
 FREE = catmull_clark(alpha, beta)
@@ -81,7 +81,9 @@ def test_perturbed_defective_eigenvalue_moves_by_sqrt_eps():
         before = full_matrix_eigenvalues(CC, n, 80)
         A[1, 0] += mpmath.mpf(10) ** -40
         after = mpmath.eig(A, left=False, right=False)
-        one = lambda vs: min(vs, key=lambda v: abs(v - 1))
+
+        def one(vs):
+            return min(vs, key=lambda v: abs(v - 1))
         assert abs(one(after) - one(before)) < mpmath.mpf(10) ** -38
 
 

@@ -7,7 +7,7 @@ import pytest
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
-from symdecomp.analysis.hyperbolic import apply_rational_matrix
+from symdecomp.analysis.ellipses import ellipse_axes, ring_components
 from symdecomp.analysis.elliptic import (
     MU,
     elliptic_component,
@@ -18,11 +18,12 @@ from symdecomp.analysis.elliptic import (
     recursion_left_eigenvector,
     rotation_free_form,
 )
-from symdecomp.analysis.ellipses import ellipse_axes, ring_components
-from symdecomp.errors import InvalidPolygonError
 from symdecomp.analysis.frequency import recursion_matrix
+from symdecomp.analysis.hyperbolic import apply_rational_matrix
+from symdecomp.errors import InvalidPolygonError
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.symbols import alpha, beta, n as N
+from symdecomp.symbols import alpha, beta
+from symdecomp.symbols import n as N
 
 CC = catmull_clark()
 FREE = catmull_clark(alpha, beta)

@@ -6,8 +6,8 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.cli import main
 from symdecomp.analysis.masks import check_masks_exactly, limit_masks, limit_masks_at
+from symdecomp.cli import main
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 

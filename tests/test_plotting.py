@@ -101,9 +101,9 @@ def test_figures_have_titles_and_labelled_axes():
 
 
 def test_geometry_figures_have_titles_and_labelled_axes():
-    from symdecomp.analysis import elliptic, evolution, tuning
-    from symdecomp.output.plotting import elliptic as eplots
     from symdecomp.algebra.polygons import decompose
+    from symdecomp.analysis import elliptic, evolution
+    from symdecomp.output.plotting import elliptic as eplots
 
     P = np.random.default_rng(0).normal(size=(5, 3))
     _assert_labelled(pplots.decomposition_figure(P, pplots.regular_components(decompose(P))))

@@ -3,7 +3,6 @@
 import json
 
 import flint
-
 import mpmath
 import pytest
 import sympy as sp

@@ -6,12 +6,12 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.cli import main
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions, recursion_eigenvector
+from symdecomp.analysis.tuning import condition_line, joint_obstruction, ratio_target, tune
+from symdecomp.cli import main
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tuning import condition_line, joint_obstruction, ratio_target, tune
 
 CC = catmull_clark()
 

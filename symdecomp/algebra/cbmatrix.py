@@ -31,8 +31,8 @@ Matrix([
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Mapping, Sequence
 
 import sympy as sp
 
@@ -96,9 +96,10 @@ class CBMatrix:
 
     def matrix(self) -> sp.ImmutableMatrix:
         """The full ``Km x Km`` matrix."""
-        return sp.ImmutableMatrix(sp.BlockMatrix([[self.block(p, q) for q in range(self.block_count)] for p in range(self.block_count)]).as_explicit())
+        blocks = [[self.block(p, q) for q in range(self.block_count)] for p in range(self.block_count)]
+        return sp.ImmutableMatrix(sp.BlockMatrix(blocks).as_explicit())
 
-    def __add__(self, other: "CBMatrix") -> "CBMatrix":
+    def __add__(self, other: CBMatrix) -> CBMatrix:
         if not isinstance(other, CBMatrix) or (other.block_count, other.order) != (self.block_count, self.order):
             return NotImplemented
         return CBMatrix(
@@ -254,7 +255,7 @@ class SymbolicCirculant:
     constant: sp.Expr = sp.Integer(0)
 
     @classmethod
-    def from_offsets(cls, offsets: Mapping[int, object], constant=0) -> "SymbolicCirculant":
+    def from_offsets(cls, offsets: Mapping[int, object], constant=0) -> SymbolicCirculant:
         return cls(tuple(sorted((int(k), sp.sympify(w)) for k, w in dict(offsets).items())), sp.sympify(constant))
 
     def symbol(self) -> sp.Expr:
@@ -279,7 +280,7 @@ class SymbolicCirculant:
         banded = circ_from_offsets({k: w.subs(N, n) for k, w in self.offsets}, n)
         return sp.ImmutableMatrix(banded + sp.ones(n, n) * self.constant.subs(N, n))
 
-    def minus_constant(self, value) -> "SymbolicCirculant":
+    def minus_constant(self, value) -> SymbolicCirculant:
         """``C - value*J``."""
         return SymbolicCirculant(self.offsets, sp.expand(self.constant - sp.sympify(value)))
 

@@ -14,7 +14,7 @@ evaluated at ``omega = omega_n^j``, a Laurent polynomial in ``omega``.
 
 from __future__ import annotations
 
-from typing import Mapping, Sequence
+from collections.abc import Mapping, Sequence
 
 import sympy as sp
 

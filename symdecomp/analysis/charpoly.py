@@ -32,17 +32,17 @@ True
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import lru_cache
-from typing import Mapping
+from functools import cache
 
 import flint
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, SymdecompError, check_valence
-from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.errors import InvalidSchemeError, SymdecompError, check_valence
+from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
@@ -136,7 +136,7 @@ def to_fmpq_poly(expr, variable: sp.Symbol = LAM) -> flint.fmpq_poly:
     return flint.fmpq_poly(coeffs)
 
 
-@lru_cache(maxsize=None)
+@cache
 def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
     """Derive ``det(x I - S)`` of ``scheme`` in closed form, symbolic in ``n`` and the weights.
 

@@ -19,21 +19,21 @@ c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Callable, Mapping
 
 import flint
 import mpmath
 import sympy as sp
 
-from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
-from symdecomp.errors import check_valence
-from symdecomp.symbols import cos_jtheta, sin_jtheta
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.spectrum import recursion_eigenvalues
-from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import check_valence
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
+from symdecomp.symbols import n as N
 
 __all__ = ["ClosedForms", "ClosedFormLabel", "derived_closed_forms"]
 

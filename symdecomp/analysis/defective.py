@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.analysis.frequency import recursion_matrix
+from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 

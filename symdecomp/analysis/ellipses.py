@@ -26,8 +26,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.errors import InvalidPolygonError, check_frequency
 from symdecomp.algebra.polygons import decompose
+from symdecomp.errors import InvalidPolygonError, check_frequency
 from symdecomp.schemes.ring import interleaved_polygon
 
 __all__ = ["ring_components", "EllipseAxes", "ellipse_axes"]

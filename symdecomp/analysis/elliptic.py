@@ -28,19 +28,19 @@ Matrix([[-1/16, 1/32, 1/8]])
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.analysis.frequency import recursion_matrix, laurent_to_cos, per_frequency_matrix
-from symdecomp.symbols import cos_jtheta, sin_jtheta
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
+from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.analysis.tangent import tangent_eigenvalues
 
 __all__ = [
     "MU",
@@ -114,7 +114,7 @@ def tangent_lambda(scheme: Scheme, frequency: int = 1) -> sp.Expr:
     return dominant.subs(cos_jtheta, c)
 
 
-@lru_cache(maxsize=None)
+@cache
 def scale_ratio_squared(scheme: Scheme) -> sp.Expr:
     """``|B^1/A^1|^2`` on the dominant eigenvector of ``M_1``, in ``c = cos(pi/n)``.
 
@@ -154,7 +154,7 @@ class NiceEllipticConditions:
     ratio_defect: sp.Expr
 
 
-@lru_cache(maxsize=None)
+@cache
 def nice_elliptic_conditions(scheme: Scheme) -> NiceEllipticConditions:
     """Derive both conditions and their defects for ``scheme``, closed forms in ``n``."""
     _, mu, third = recursion_eigenvalues(scheme)

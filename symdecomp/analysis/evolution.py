@@ -22,9 +22,9 @@ from functools import lru_cache
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import InvalidPolygonError, check_valence
 from symdecomp.algebra.circulant import fourier_row
 from symdecomp.algebra.polygons import decompose
+from symdecomp.errors import InvalidPolygonError, check_valence
 from symdecomp.schemes.ring import interleaved_polygon
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 

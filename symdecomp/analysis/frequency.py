@@ -21,7 +21,7 @@ a Fourier mode at a symbolic row ``i``; nothing is typed in from the paper.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
@@ -76,7 +76,7 @@ def circulant_blocks(scheme: Scheme) -> CirculantBlocks:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def per_frequency_matrix(scheme: Scheme) -> sp.ImmutableMatrix:
     """``M_j`` of Eq. 33 as a matrix of Laurent polynomials in ``omega = omega_n^j``.
 
@@ -98,7 +98,7 @@ def per_frequency_matrix_at(scheme: Scheme, n: int, j: int) -> sp.ImmutableMatri
     return sp.ImmutableMatrix(per_frequency_matrix(scheme).subs(OMEGA, w).applyfunc(sp.expand))
 
 
-@lru_cache(maxsize=None)
+@cache
 def recursion_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
     """The ``3 x 3`` recursion matrix of Eq. 43, derived from the rules.
 

@@ -20,21 +20,20 @@ subdivision matrix in ``Q(zeta_4n)`` and compares with the prediction from ``M_1
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
-
 from fractions import Fraction
+from functools import cache
 
 import mpmath
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.elliptic import tangent_lambda
-from symdecomp.errors import check_valence
 from symdecomp.analysis.frequency import per_frequency_matrix, valences_at_roots
-from symdecomp.symbols import cos_jtheta
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
-from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import check_valence
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.symbols import cos_jtheta
+from symdecomp.symbols import n as N
 
 __all__ = [
     "hyperbolic_lambda",
@@ -70,7 +69,7 @@ class HyperbolicEquality:
     valences: tuple[int, ...]
 
 
-@lru_cache(maxsize=None)
+@cache
 def hyperbolic_equality(scheme: Scheme) -> HyperbolicEquality:
     """Decide ``lambda_2 = lambda_1^2`` for all ``n``.
 

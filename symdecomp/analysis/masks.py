@@ -26,21 +26,21 @@ the weight on ``O`` is 0.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
-from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.analysis.elliptic import recursion_left_eigenvector, tangent_lambda
-from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.analysis.frequency import circulant_blocks, laurent_to_cos, per_frequency_matrix
-from symdecomp.symbols import cos_jtheta
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.analysis.spectrum import format_value
-from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta
+from symdecomp.symbols import n as N
 
 __all__ = ["INDEX", "LAMBDA1", "LimitMasks", "limit_masks", "MasksAtValence", "limit_masks_at", "check_masks_exactly"]
 
@@ -64,7 +64,7 @@ class LimitMasks:
     subdominant: sp.Expr
 
 
-@lru_cache(maxsize=None)
+@cache
 def limit_masks(scheme: Scheme) -> LimitMasks:
     """Derive the position and tangent masks of ``scheme`` for symbolic ``n``."""
     if scheme.parameters:

@@ -19,18 +19,18 @@ values with multiplicities. Frequencies are n-gon frequencies ``k`` (the 2n-gon 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
 
-from symdecomp.errors import check_valence
 from symdecomp.analysis.frequency import recursion_matrix
-from symdecomp.symbols import cos_jtheta, sin_jtheta
+from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import check_valence
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tangent import tangent_eigenvalues
 
 __all__ = ["SpectrumEntry", "Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
 
@@ -77,7 +77,7 @@ class Spectrum:
         }
 
 
-@lru_cache(maxsize=None)
+@cache
 def recursion_eigenvalues(scheme: Scheme) -> tuple[sp.Expr, ...]:
     """The eigenvalues of the Eq. 43 matrix as closed forms in ``n`` (and the parameters).
 

@@ -53,16 +53,16 @@ from __future__ import annotations
 
 import enum
 import numbers
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
+from functools import cache
 from types import MappingProxyType
-from typing import Iterable, Mapping
 
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError, SymdecompError
-from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, mesh_rules, refine, ring_mesh
+from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, mesh_rules, refine
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme"]
@@ -76,7 +76,7 @@ class Region(enum.Enum):
     OUTSIDE = "outside"
 
 
-@lru_cache(maxsize=None)
+@cache
 def limit_mask(scheme: Scheme, valence: int) -> tuple[sp.Expr, ...]:
     """The limit mask at a vertex of this valence: the left eigenvector of eigenvalue 1 of the
     exact subdivision matrix, normalised to sum 1, in the order ``(O, a_0.., b_0..)``.
@@ -188,7 +188,7 @@ def _region(carried: tuple[bool, ...]) -> Region:
     return Region.INSIDE if all(carried) else Region.OUTSIDE if not any(carried) else Region.BOUNDARY
 
 
-@lru_cache(maxsize=None)
+@cache
 def _mask_fractions(scheme: Scheme, valence: int) -> tuple[Fraction, ...]:
     return tuple(Fraction(int(w.p), int(w.q)) for w in limit_mask(scheme, valence))
 

@@ -15,16 +15,14 @@ c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix
-from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.symbols import j as J
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
-from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
 __all__ = [
@@ -60,7 +58,7 @@ class TangentEigenvalues:
         return self.dominant.subs(subs), self.subdominant.subs(subs)
 
 
-@lru_cache(maxsize=None)
+@cache
 def tangent_eigenvalues(scheme: Scheme) -> TangentEigenvalues:
     """Derive the closed-form eigenvalues of ``M_j`` for ``scheme`` (Eq. 34)."""
     M = per_frequency_matrix(scheme)

@@ -25,19 +25,19 @@ Hence:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
-from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix, valences_at_roots
-from symdecomp.symbols import cos_jtheta
-from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.analysis.spectrum import format_value
+from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 
@@ -59,7 +59,7 @@ def with_free_vertex_rule(scheme: Scheme) -> Scheme:
     return Scheme(scheme.name + " (free vertex rule)", scheme.edge_rule, scheme.face_rule, VertexRule.affine(ALPHA, BETA))
 
 
-@lru_cache(maxsize=None)
+@cache
 def eigenvalue_quadratic(scheme: Scheme) -> sp.Poly:
     """``det(lambda I - T)/(lambda - 1)`` for the Eq. 43 matrix with a free vertex rule, in ``lambda``."""
     T = recursion_matrix(with_free_vertex_rule(scheme))
@@ -86,7 +86,7 @@ class ConditionLine:
     beta_bounds: tuple[sp.Expr, sp.Expr]
 
 
-@lru_cache(maxsize=None)
+@cache
 def _generic_line(scheme: Scheme) -> ConditionLine:
     Q = eigenvalue_quadratic(scheme)
     equation = sp.expand(Q.as_expr().subs(LAM, MU))
@@ -122,7 +122,7 @@ def condition_line(scheme: Scheme, target: sp.Expr = MU) -> ConditionLine:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def ratio_target(scheme: Scheme) -> sp.Expr:
     """The eigenvalue ``mu_2(n)`` whose Eq. 44 ratio equals ``|B^1/A^1|^2`` (condition 2's target)."""
     R = sp.Symbol("R", positive=True)
@@ -146,7 +146,7 @@ class JointObstruction:
     valences: tuple[int, ...]
 
 
-@lru_cache(maxsize=None)
+@cache
 def joint_obstruction(scheme: Scheme) -> JointObstruction:
     """Decide for every ``n`` whether both conditions can hold together.
 
@@ -223,7 +223,9 @@ class TuningAtValence:
             "lambda1_squared": num(self.lambda1**2),
             "scale_ratio_squared": num(self.scale_ratio_squared),
             "standard": {"alpha": str(self.standard[0]), "beta": str(self.standard[1])},
-            "eigenvalue_condition": line(self.eigenvalue_condition, self.at_standard_beta[0], self.standard_beta_admissible[0], self.below_lambda1[0]),
+            "eigenvalue_condition": line(
+                self.eigenvalue_condition, self.at_standard_beta[0], self.standard_beta_admissible[0], self.below_lambda1[0]
+            ),
             "ratio_condition": line(self.ratio_condition, self.at_standard_beta[1], self.standard_beta_admissible[1], self.below_lambda1[1]),
             "jointly_possible": self.jointly_possible,
             "joint_defect": num(self.joint_defect),

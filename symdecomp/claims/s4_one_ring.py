@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.analysis.frequency import recursion_matrix, per_frequency_matrix
-from symdecomp.schemes.scheme import catmull_clark
-from symdecomp.schemes.shift_stencil import ShiftStencil, identity_b, then_b
-from symdecomp.symbols import alpha, beta, n, omega
+from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.shift_stencil import ShiftStencil, composed_stages, identity_b, then_b
+from symdecomp.symbols import alpha, beta, n, omega
 
 R = sp.Rational
 I_ROW = sp.Symbol("i", integer=True)
@@ -39,7 +39,7 @@ def _eq10_11() -> CheckResult:
     last = 8
     for size in range(3, last + 1):
         rng = random.Random(size)
-        pt = lambda: [sp.Rational(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(3)]  # noqa: E731
+        pt = lambda: [sp.Rational(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(3)]  # noqa: E731, B023 (called in this iteration)
         ring = OneRing.from_points(pt(), [pt() for _ in range(size)], [pt() for _ in range(size)])
         d = one_ring_decomposition(ring)
         if d.polygon.reconstruct() != sp.Matrix(ring.polygon()):

@@ -7,14 +7,13 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
 from symdecomp.analysis.frequency import per_frequency_matrix
-from symdecomp.symbols import cos_jtheta, sin_jtheta
-from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.analysis.spectrum import recursion_eigenvalues
-from symdecomp.symbols import lam, n, omega
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
+from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.shift_stencil import composed_stages
+from symdecomp.symbols import cos_jtheta, lam, n, omega, sin_jtheta
 
 R = sp.Rational
 C = cos_jtheta
@@ -105,7 +104,8 @@ def _eq33() -> CheckResult:
     "Eq. 34",
     section="5.1",
     title="Eigenvalues of $M_j$",
-    statement="$\\lambda_{1,2} = \\frac14 + \\frac18\\cos^2 j\\theta \\pm \\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta}$, $\\theta = \\pi/n$.",
+    statement="$\\lambda_{1,2} = \\frac14 + \\frac18\\cos^2 j\\theta \\pm \\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta}$, "
+    "$\\theta = \\pi/n$.",
 )
 def _eq34() -> CheckResult:
     ev = tangent_eigenvalues(_cc())

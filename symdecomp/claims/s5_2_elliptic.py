@@ -6,6 +6,7 @@ import random
 
 import sympy as sp
 
+from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import (
     MU,
     elliptic_component,
@@ -16,15 +17,14 @@ from symdecomp.analysis.elliptic import (
     rotation_free_form,
     scale_ratio_squared,
 )
-from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.frequency import recursion_matrix
-from symdecomp.symbols import cos_jtheta
+from symdecomp.analysis.tuning import joint_obstruction
+from symdecomp.claims import CheckResult, Status, Step, claim, is_zero
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tuning import joint_obstruction
-from symdecomp.claims import CheckResult, Status, Step, claim, is_zero
 
 
 @claim(

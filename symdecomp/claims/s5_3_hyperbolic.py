@@ -6,11 +6,11 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import elliptic_component, tangent_lambda
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
-from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.symbols import cos_jtheta
 from symdecomp.claims import CheckResult, Status, Step, claim
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+from symdecomp.symbols import cos_jtheta
+from symdecomp.symbols import n as N
 
 _VALENCES = (3, 12)
 

@@ -19,25 +19,24 @@ from symdecomp.algebra.cbmatrix import (
     SymbolicCBMatrix,
     SymbolicCirculant,
     block_diagonalization,
+    block_eigenvalue_matrix,
     cb_eigensystem,
     cb_matrix,
     constant_blocks,
-    block_eigenvalue_matrix,
     lifted_vector,
     perturbed_block_eigenvalue_matrix,
 )
-from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, verify_closed_form
 from symdecomp.algebra.circulant import circ, fourier_row, mode_eigenvalue_derivation
-from symdecomp.symbols import cos_jtheta
+from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, verify_closed_form
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
+from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.analysis.tangent import tangent_eigenvalues
-
-from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
 
 M_SYM = sp.Symbol("m", integer=True, positive=True)
 
@@ -244,7 +243,7 @@ def _eq49() -> CheckResult:
 def _eq50() -> CheckResult:
     cb = _random_cb(2, 4, 7)
     ok = True
-    for value, k, vectors in cb_eigensystem(cb):
+    for value, _k, vectors in cb_eigensystem(cb):
         for V in vectors:
             ok &= is_zero(sp.Matrix(cb.matrix()) * V - value * V)
     if not ok or not _lift_identity_holds(cb, [1, 1]):

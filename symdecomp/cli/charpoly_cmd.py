@@ -5,12 +5,12 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
+from symdecomp.cli.common import add_scheme_option, print_json, valence
 from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import lam as LAM
-from symdecomp.cli.common import add_scheme_option, print_json, valence
 
 
 def register(sub) -> None:

@@ -12,12 +12,12 @@ from functools import partial
 
 import mpmath
 
-from symdecomp.verify.certify import certify
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.verify.certify import certify
 from symdecomp.verify.numeric import numeric_check
 from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
 
 __all__ = ["register", "run", "check_valences"]
 

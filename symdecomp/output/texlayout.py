@@ -217,7 +217,8 @@ class _Reader:
         if name in ("array", "tabular"):
             self.raw_group()  # column specification
         # cells of matrices and cases are in text style: their fractions are script size
-        cell_scale = scale if name not in ("matrix", "pmatrix", "bmatrix", "vmatrix", "Vmatrix", "smallmatrix", "cases", "array") else min(scale, 0.999)
+        grids = ("matrix", "pmatrix", "bmatrix", "vmatrix", "Vmatrix", "smallmatrix", "cases", "array")
+        cell_scale = scale if name not in grids else min(scale, 0.999)
         if name == "smallmatrix":
             cell_scale = scale * 0.72
         columns: list[float] = []
@@ -273,7 +274,7 @@ class Piece:
     width: float
 
     @classmethod
-    def of(cls, tex: str) -> "Piece":
+    def of(cls, tex: str) -> Piece:
         return cls(tex, estimate_width(tex))
 
 

@@ -18,7 +18,7 @@ circulant or block structure.
 from __future__ import annotations
 
 import math
-from typing import Mapping
+from collections.abc import Mapping
 
 import flint
 import sympy as sp

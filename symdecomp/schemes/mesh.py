@@ -38,10 +38,10 @@ Values at vertices are tuples of coordinates (any length; scalar fields are 1-tu
 from __future__ import annotations
 
 import numbers
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from types import MappingProxyType
-from typing import Callable, Iterable, Mapping, Sequence
 
 import sympy as sp
 
@@ -252,7 +252,7 @@ class QuadMesh:
         o, a, b = self.one_ring(v, start)
         return tuple(self.values[x] for x in (o,) + a + b)
 
-    def neighbourhood(self, v: int, rings: int) -> "QuadMesh":
+    def neighbourhood(self, v: int, rings: int) -> QuadMesh:
         """The sub-mesh of faces within ``rings`` face-rings of ``v`` (1: the faces at ``v``)."""
         if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or rings < 1:
             raise InvalidMeshError(f"rings must be a positive integer, got {rings!r}")
@@ -279,7 +279,7 @@ class QuadMesh:
         edges = len({frozenset(e) for e in self._directed})
         return len(self._incident) - edges + len(self.faces) == 1 and bool(self.boundary_vertices())
 
-    def with_values(self, values: Mapping[int, tuple]) -> "QuadMesh":
+    def with_values(self, values: Mapping[int, tuple]) -> QuadMesh:
         """The same faces with other values."""
         return QuadMesh(self.faces, values)
 

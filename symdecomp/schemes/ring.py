@@ -26,8 +26,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import FrequencyOutOfRangeError, InvalidPolygonError
 from symdecomp.algebra.polygons import PolygonDecomposition, as_vertex_rows, decompose
+from symdecomp.errors import FrequencyOutOfRangeError, InvalidPolygonError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = ["interleaved_polygon", "OneRing", "subdivide", "one_ring_decomposition", "OneRingDecomposition", "ngon_amplitudes"]
@@ -62,7 +62,7 @@ class OneRing:
     arithmetic: str
 
     @classmethod
-    def from_points(cls, center, a, b) -> "OneRing":
+    def from_points(cls, center, a, b) -> OneRing:
         """Build and validate a 1-ring (same rules as polygons: exact, numpy or mpmath)."""
         a_rows, kind_a, dim_a = as_vertex_rows(a, name="edge neighbours a")
         b_rows, kind_b, dim_b = as_vertex_rows(b, name="face neighbours b")
@@ -97,7 +97,7 @@ class OneRing:
         return [list(self.center)] + [list(p) for p in self.a] + [list(q) for q in self.b]
 
     @classmethod
-    def from_rows(cls, rows, arithmetic: str) -> "OneRing":
+    def from_rows(cls, rows, arithmetic: str) -> OneRing:
         n = (len(rows) - 1) // 2
         return cls(tuple(rows[0]), tuple(tuple(r) for r in rows[1 : 1 + n]), tuple(tuple(r) for r in rows[1 + n :]), arithmetic)
 

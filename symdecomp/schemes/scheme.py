@@ -23,14 +23,13 @@ Matrix([[9/16, 3/32, 3/32, 3/32, 3/32, 1/64, 1/64, 1/64, 1/64]])
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping
+from typing import Any
 
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError, NotAffineError, check_valence
-from symdecomp.symbols import alpha as ALPHA
-from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
 
 __all__ = [
@@ -84,7 +83,7 @@ class Stencil:
     b: tuple[tuple[int, sp.Expr], ...]
 
     @classmethod
-    def from_weights(cls, center, a: Mapping[int, object], b: Mapping[int, object], *, name: str = "rule") -> "Stencil":
+    def from_weights(cls, center, a: Mapping[int, object], b: Mapping[int, object], *, name: str = "rule") -> Stencil:
         """Build a stencil and check that it is affine."""
         stencil = cls(_sympify_weight(center, f"{name}: center"), _weights(a, f"{name}: a"), _weights(b, f"{name}: b"))
         total = sp.simplify(stencil.weight_sum() - 1)
@@ -118,7 +117,7 @@ class VertexRule:
     each_b: sp.Expr
 
     @classmethod
-    def from_weights(cls, center, each_a, each_b, *, name: str = "vertex rule") -> "VertexRule":
+    def from_weights(cls, center, each_a, each_b, *, name: str = "vertex rule") -> VertexRule:
         rule = cls(
             _sympify_weight(center, f"{name}: center"),
             _sympify_weight(each_a, f"{name}: each_a"),
@@ -132,7 +131,7 @@ class VertexRule:
         return rule
 
     @classmethod
-    def affine(cls, each_a, each_b, *, name: str = "vertex rule") -> "VertexRule":
+    def affine(cls, each_a, each_b, *, name: str = "vertex rule") -> VertexRule:
         """The affine vertex rule with the given weights: ``center = 1 - n*each_a - n*each_b``."""
         a = _sympify_weight(each_a, f"{name}: each_a")
         b = _sympify_weight(each_b, f"{name}: each_b")
@@ -187,7 +186,7 @@ class Scheme:
             raise InvalidSchemeError(f"scheme {self.name!r} has stencils {self._span + 1} wide, wider than the valence n = {n}")
         return n
 
-    def substitute(self, values: Mapping[sp.Symbol, object], *, name: str | None = None) -> "Scheme":
+    def substitute(self, values: Mapping[sp.Symbol, object], *, name: str | None = None) -> Scheme:
         """The scheme with some parameters replaced (e.g. tuned vertex weights)."""
         subs = {k: sp.sympify(v) for k, v in values.items()}
 

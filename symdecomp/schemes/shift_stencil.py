@@ -42,7 +42,7 @@ class ShiftStencil:
     b: sp.Expr
 
     @classmethod
-    def of(cls, rule) -> "ShiftStencil":
+    def of(cls, rule) -> ShiftStencil:
         """A scheme's :class:`~symdecomp.schemes.scheme.Stencil` as a rule in the shift ``S``."""
         return cls(rule.center, sum((w * omega**k for k, w in rule.a), sp.Integer(0)), sum((w * omega**k for k, w in rule.b), sp.Integer(0)))
 

@@ -44,22 +44,23 @@ neither can be shown the result is ``undecided``, which is a failure.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import ClassVar, Mapping
+from typing import ClassVar
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
-from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
+from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import check_valence
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
-from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.analysis.spectrum import format_value
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
+from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
 __all__ = ["SymmetricFunctions", "symmetric_functions", "Certificate", "certify", "closed_form_characteristic_value"]
 

@@ -25,16 +25,17 @@ more than the requested ``dps`` digits. They are matched with the closed-form ei
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Callable, ClassVar, Mapping
+from typing import ClassVar
 
 import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
+from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import check_valence
 from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.analysis.spectrum import format_value
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
 __all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]

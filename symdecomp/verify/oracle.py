@@ -41,20 +41,20 @@ import math
 import random
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import check_valence, SymdecompError
 from symdecomp.analysis.elliptic import recursion_eigenvector
 from symdecomp.analysis.masks import limit_masks_at
+from symdecomp.analysis.spectrum import recursion_eigenvalues
+from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
+from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
 
 __all__ = [
     "Prediction",
@@ -190,7 +190,7 @@ def _f(expr, dps=30) -> float:
         return float(sp.N(expr, dps))
 
 
-@lru_cache(maxsize=None)
+@cache
 def toolkit_predictions(n: int) -> ToolkitPredictions:
     """Derive the predictions for standard Catmull-Clark at valence ``n``."""
     n = check_valence(n)

@@ -10,16 +10,16 @@ array([2. +0.j, 0.5+0.j])
 
 from __future__ import annotations
 
-from typing import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import check_valence
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.analysis.spectrum import recursion_eigenvalues
-from symdecomp.symbols import n as N
+from symdecomp.errors import check_valence
 from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.symbols import n as N
 
 __all__ = ["numeric_eigenvalues", "unmatched_eigenvalues", "eigenvalue_shift_figure", "vertex_weight_sweep_figure"]
 

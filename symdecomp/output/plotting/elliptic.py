@@ -6,7 +6,7 @@ matrix); the closed forms from the scheme's derived matrices.
 
 from __future__ import annotations
 
-from typing import Iterable, Sequence
+from collections.abc import Iterable, Sequence
 
 import numpy as np
 
@@ -183,8 +183,8 @@ def hyperbolic_rates_figure(scheme, valences: Iterable[int]):
     """
     import sympy as sp
 
-    from symdecomp.errors import check_valence
     from symdecomp.analysis.tangent import tangent_eigenvalues
+    from symdecomp.errors import check_valence
 
     ev = tangent_eigenvalues(scheme)
     ns, lam1_sq, m2 = [], [], []

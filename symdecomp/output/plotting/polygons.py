@@ -6,7 +6,7 @@
 
 from __future__ import annotations
 
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 
@@ -14,7 +14,17 @@ from symdecomp.algebra.circulant import fourier_matrix
 from symdecomp.errors import check_valence
 from symdecomp.output.plotting._mpl import new_figure
 
-__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d", "ring_split_figure", "decomposition_figure", "regular_components"]
+__all__ = [
+    "regular_polygons_figure",
+    "vertex_labels",
+    "draw_polygon_2d",
+    "draw_polygon_3d",
+    "draw_one_ring_3d",
+    "set_equal_3d",
+    "ring_split_figure",
+    "decomposition_figure",
+    "regular_components",
+]
 
 
 def vertex_labels(points: np.ndarray, *, decimals: int = 9) -> dict[int, str]:

@@ -9,20 +9,20 @@ The numbers behind the figures come from :mod:`symdecomp.analysis.tangent`:
 
 from __future__ import annotations
 
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 import sympy as sp
 
 from symdecomp.algebra.circulant import fourier_matrix
-from symdecomp.errors import check_valence
 from symdecomp.analysis.evolution import one_ring, subdivide_ring
 from symdecomp.analysis.frequency import per_frequency_matrix_at
-from symdecomp.symbols import cos_jtheta, sin_jtheta
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.symbols import omega as OMEGA
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from symdecomp.errors import check_valence
 from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
+from symdecomp.symbols import omega as OMEGA
 
 __all__ = [
     "tangent_eigenvalues_figure",

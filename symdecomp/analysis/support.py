@@ -43,6 +43,7 @@ data ``e_P`` iff ``P`` is in ``N(F_s)``. :func:`classify_support` computes this,
 ``levels > 0`` also refines ``e_P`` exactly that many times and recomputes every sector's
 ``N(F)`` test at every level (the conclusion of fact 2, checked rather than assumed).
 
+>>> from symdecomp.schemes.mesh import ring_mesh
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> c = classify_support(ring_mesh(4, 4), 0, catmull_clark())
 >>> sorted(r.value for r in c.regions.values()).count("inside"), c.count(Region.BOUNDARY)
@@ -214,6 +215,25 @@ def support_relation(mesh: QuadMesh, scheme: Scheme, vertices: Iterable[int]) ->
     return {(p, q): _region(tuple(p in nf for nf in hoods[q])) for p in vertices for q in vertices}
 
 
+def _child_sectors(step, current: QuadMesh, q: int, v: int, faces) -> tuple[int, tuple[int, ...]]:
+    """Follow vertex ``v`` (tracking candidate ``q``) and its sector faces through one refinement ``step``."""
+    v2 = step.vertex_point.get(v)
+    if v2 is None:
+        raise InvalidMeshError(f"vertex {q} left the exactly refinable part of the mesh (add rings)")
+    child_faces = []
+    for fi in faces:
+        f = current.faces[fi]
+        k = f.index(v)
+        want = {v2, step.edge_point.get(frozenset((v, f[(k + 1) % 4]))), step.face_point.get(fi)}
+        match = [g for g in step.mesh.faces_of(v2) if want <= set(step.mesh.faces[g])]
+        if len(match) != 1:
+            raise InvalidMeshError(f"could not follow sector {fi} of vertex {q} (add rings)")
+        child_faces.append(match[0])
+    if not all(all(step.mesh.is_interior(c) for c in step.mesh.faces[g]) for g in step.mesh.faces_of(v2)):
+        raise InvalidMeshError(f"vertex {q} is too close to the boundary at the refined level (add rings)")
+    return v2, tuple(child_faces)
+
+
 def classify_support(
     mesh: QuadMesh, source: int, scheme: Scheme, *, vertices: Iterable[int] | None = None, levels: int = 0
 ) -> SupportClassification:
@@ -253,23 +273,8 @@ def classify_support(
             step = refine(current, rules)
             new_track = {}
             for q, (v, faces) in track.items():
-                v2 = step.vertex_point.get(v)
-                if v2 is None:
-                    raise InvalidMeshError(f"vertex {q} left the exactly refinable part of the mesh (add rings)")
-                child_faces = []
-                for fi in faces:
-                    f = current.faces[fi]
-                    k = f.index(v)
-                    want = {v2, step.edge_point.get(frozenset((v, f[(k + 1) % 4]))), step.face_point.get(fi)}
-                    match = [g for g in step.mesh.faces_of(v2) if want <= set(step.mesh.faces[g])]
-                    if len(match) != 1:
-                        raise InvalidMeshError(f"could not follow sector {fi} of vertex {q} (add rings)")
-                    child_faces.append(match[0])
-                new_track[q] = (v2, tuple(child_faces))
-                if not all(
-                    all(step.mesh.is_interior(c) for c in step.mesh.faces[g]) for g in step.mesh.faces_of(v2)
-                ):
-                    raise InvalidMeshError(f"vertex {q} is too close to the boundary at the refined level (add rings)")
+                v2, child_faces = _child_sectors(step, current, q, v, faces)
+                new_track[q] = (v2, child_faces)
                 vals = step.mesh.values
                 again = tuple(any(vals[x][0] != 0 for x in _n_of_face(step.mesh, g)) for g in child_faces)
                 if again != sectors[q]:

@@ -389,6 +389,23 @@ def _combine(terms: Iterable[tuple[object, tuple]]) -> tuple:
     return tuple(acc)
 
 
+def _child_faces(mesh: QuadMesh, vertex_point: dict, edge_point: dict, face_point: dict) -> list[tuple[int, ...]]:
+    """The four children of each face (vertex, edge, face and edge point), where all four exist."""
+    new_faces = []
+    for fi, f in enumerate(mesh.faces):
+        for k in range(4):
+            corner, nxt, prv = f[k], f[(k + 1) % 4], f[(k + 3) % 4]
+            quad = (
+                vertex_point.get(corner),
+                edge_point.get(frozenset((corner, nxt))),
+                face_point[fi],
+                edge_point.get(frozenset((prv, corner))),
+            )
+            if None not in quad:
+                new_faces.append(quad)
+    return new_faces
+
+
 def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules) -> Refinement:
     """One exact refinement step of ``mesh`` by the scheme's mesh rules (:func:`mesh_rules`).
 
@@ -432,18 +449,7 @@ def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules) -> Refinement:
         i = next(counter)
         vertex_point[v] = i
         new_values[i] = _combine([(wc, vals[v])] + [(wa, vals[x]) for x in a] + [(wb, vals[x]) for x in b])
-    new_faces = []
-    for fi, f in enumerate(mesh.faces):
-        for k in range(4):
-            corner, nxt, prv = f[k], f[(k + 1) % 4], f[(k + 3) % 4]
-            quad = (
-                vertex_point.get(corner),
-                edge_point.get(frozenset((corner, nxt))),
-                face_point[fi],
-                edge_point.get(frozenset((prv, corner))),
-            )
-            if None not in quad:
-                new_faces.append(quad)
+    new_faces = _child_faces(mesh, vertex_point, edge_point, face_point)
     used = {x for f in new_faces for x in f}
     refined = QuadMesh(tuple(new_faces), {i: val for i, val in new_values.items() if i in used})
     return Refinement(

@@ -213,7 +213,8 @@ def catmull_clark(alpha=None, beta=None) -> Scheme:
     The weight of ``O`` is ``1 - n*alpha - n*beta`` so that the rule is affine (Eq. 16 as printed
     has ``1 - alpha - beta``; see the claim "Eq. 16").
 
-    >>> catmull_clark(ALPHA, BETA).vertex_rule.center
+    >>> from symdecomp.symbols import alpha, beta
+    >>> catmull_clark(alpha, beta).vertex_rule.center
     -alpha*n - beta*n + 1
     """
     standard = alpha is None and beta is None

@@ -249,57 +249,26 @@ def certify(
     n = check_valence(n)
     subs = parameter_values(scheme, parameters)
     cf = closed_forms or derived_closed_forms(scheme)
-    labels = cf.eigenvalue_labels(n)
     chi = characteristic_polynomial(scheme, n, subs)
     height = max(int(c.p).bit_length() for c in chi.coeffs())
     squarefree = chi.numer().factor_squarefree()[1]  # [(f, e)]: chi ~ prod f^e, f squarefree, coprime
     distinct = sum(f.degree() for f, _ in squarefree)
-    sym = symmetric_functions(cf)
-    size = 2 * n + 1
-    identity = False
-    method = ""
-    if sym.frequency_zero is not None and sym.trace is not None and sym.determinant is not None:
-        points = range(size)
-        values = closed_form_characteristic_value(sym, n, subs, points)
-        if values is not None:
-            identity = all(chi(flint.fmpq(x)) == v for x, v in zip(points, values))
-            method = f"chi_S = prod(closed-form factors) at {size} points" if identity else "chi_S != closed-form char. poly"
-        else:
-            method = "symmetric functions not rational at this n"
-    else:
-        method = f"identity not formed: {sym.reason}"
-
-    prec = 128
-    while True:
-        balls = cf.values(n, subs, engine="arb", prec=prec)
-        clusters = _clusters(balls)
-        if identity:
-            certified = len(clusters) == distinct
-            if certified or prec >= max_prec:
-                break
-        else:
-            with flint.ctx.workprec(prec):
-                refutation = _refute(chi, squarefree, balls, labels, n, digits)
-            if refutation is not None or prec >= max_prec:
-                break
-        prec *= 2
+    identity, method = _polynomial_identity(chi, symmetric_functions(cf), n, subs)
+    balls, clusters, prec, refutation = _separate_or_refute(cf, n, subs, chi, squarefree, identity, digits, max_prec)
     order = sorted(clusters, key=lambda cl: (-_mid_abs(balls[cl[0]]), -_mid_re(balls[cl[0]])))
-    multiplicities = tuple(len(cl) for cl in order)
     # the printed values: a square root of a vanishing discriminant (a defective eigenvalue)
     # is only known to half the working precision, so they are recomputed with room to spare
     accurate = flint.arb(10) ** (-(digits + 5))
-    if all(b.rad() < accurate for b in balls):
-        text_balls = balls
-    else:
-        text_balls = cf.values(n, subs, engine="arb", prec=max(2 * prec, 8 * digits + 128))
-    texts = tuple(_text(text_balls[cl[0]], digits) for cl in order)
+    if any(b.rad() >= accurate for b in balls):
+        balls = cf.values(n, subs, engine="arb", prec=max(2 * prec, 8 * digits + 128))
+    certified = identity and len(clusters) == distinct
     if identity:
         note = "multiplicities certified" if certified else "distinct values not separated at the precision limit"
         status, message = CrossCheckStatus.AGREE, f"n = {n}: proved: {method}; {distinct} distinct eigenvalues, {note}"
     elif refutation is not None:
-        status, message, certified = CrossCheckStatus.DISAGREE, refutation, False
+        status, message = CrossCheckStatus.DISAGREE, refutation
     else:
-        status, certified = CrossCheckStatus.UNDECIDED, False
+        status = CrossCheckStatus.UNDECIDED
         message = f"n = {n}: not certified ({method}), and no closed-form eigenvalue could be refuted at {max_prec} bits"
     return Certificate(
         n=n,
@@ -307,12 +276,47 @@ def certify(
         status=status,
         method=method,
         distinct=distinct,
-        multiplicities=multiplicities,
-        values=texts,
+        multiplicities=tuple(len(cl) for cl in order),
+        values=tuple(_text(balls[cl[0]], digits) for cl in order),
         multiplicities_certified=certified,
         height_bits=height,
         message=message,
     )
+
+
+def _polynomial_identity(chi, sym: SymmetricFunctions, n: int, subs: dict) -> tuple[bool, str]:
+    """Step 2 of the proof: whether ``chi_S = C`` (at ``2n+1`` points), and how that was decided."""
+    if sym.frequency_zero is None or sym.trace is None or sym.determinant is None:
+        return False, f"identity not formed: {sym.reason}"
+    points = range(2 * n + 1)
+    values = closed_form_characteristic_value(sym, n, subs, points)
+    if values is None:
+        return False, "symmetric functions not rational at this n"
+    identity = all(chi(flint.fmpq(x)) == v for x, v in zip(points, values))
+    return identity, f"chi_S = prod(closed-form factors) at {2 * n + 1} points" if identity else "chi_S != closed-form char. poly"
+
+
+def _separate_or_refute(cf, n, subs, chi, squarefree, identity, digits, max_prec):
+    """``(balls, clusters, prec, refutation)``: the closed forms as Arb balls, doubling the precision.
+
+    When the identity holds, until the balls fall into as many clusters as ``chi_S`` has
+    distinct roots; otherwise until one closed form is rigorously refuted. Either way at most
+    up to ``max_prec`` bits.
+    """
+    labels = cf.eigenvalue_labels(n)
+    prec, refutation = 128, None
+    while True:
+        balls = cf.values(n, subs, engine="arb", prec=prec)
+        clusters = _clusters(balls)
+        if identity:
+            done = len(clusters) == sum(f.degree() for f, _ in squarefree)
+        else:
+            with flint.ctx.workprec(prec):
+                refutation = _refute(chi, squarefree, balls, labels, n, digits)
+            done = refutation is not None
+        if done or prec >= max_prec:
+            return balls, clusters, prec, refutation
+        prec *= 2
 
 
 def _mid_abs(z):

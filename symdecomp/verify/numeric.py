@@ -212,31 +212,32 @@ def numeric_check(
             return _verdict(scheme, n, dps, tuple(precisions), matches)
         previous = means
         work = _next_precision(work)
+    return _not_converged(scheme, n, dps, tuple(precisions), matches, max_dps, reference)
+
+
+def _not_converged(scheme, n, dps, precisions, matches, max_dps, reference) -> NumericCheck:
+    """The result when the matched means never stopped moving (or QR never converged): no verdict."""
     if not matches:
-        return NumericCheck(
-            n=n,
-            scheme=scheme.name,
-            dps=dps,
-            precisions=tuple(precisions),
-            status=CrossCheckStatus.NOT_CONVERGED,
-            max_deviation=mpmath.inf,
-            max_spread=mpmath.inf,
-            matches=(),
-            message=f"n = {n}: mpmath's QR iteration failed at every working precision up to {max_dps} digits; no verdict",
+        message = f"n = {n}: mpmath's QR iteration failed at every working precision up to {max_dps} digits; no verdict"
+        deviation = spread = mpmath.inf
+    else:
+        with mpmath.workdps(reference):
+            worst = max(matches, key=lambda m: m.deviation)
+        deviation, spread = worst.deviation, max(m.spread for m in matches)
+        message = (
+            f"n = {n}: the numeric spectrum did not converge to {dps} digits by {precisions[-1] if precisions else dps} "
+            f"digits of working precision (worst eigenvalue {worst.describe()}); no verdict"
         )
-    with mpmath.workdps(reference):
-        worst = max(matches, key=lambda m: m.deviation)
     return NumericCheck(
         n=n,
         scheme=scheme.name,
         dps=dps,
-        precisions=tuple(precisions),
+        precisions=precisions,
         status=CrossCheckStatus.NOT_CONVERGED,
-        max_deviation=worst.deviation,
-        max_spread=max(m.spread for m in matches),
+        max_deviation=deviation,
+        max_spread=spread,
         matches=tuple(matches),
-        message=f"n = {n}: the numeric spectrum did not converge to {dps} digits by {precisions[-1] if precisions else dps} "
-        f"digits of working precision (worst eigenvalue {worst.describe()}); no verdict",
+        message=message,
     )
 
 

@@ -325,9 +325,29 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
         leak = max(leak, chains[j].leak)
     rows.append(_exact("frequencies decouple", leak))
 
-    # The shrink rate of frequency j is read as ell(Z_{k+1}) / ell(Z_k) for a fixed generic linear
-    # functional ell of Z = (A^j, B^j) (j = 0: (abar - O, bbar - O)); its error is exactly
-    # C (lambda_sub/lambda_dom)^k to first order (a norm ratio can have a vanishing first-order term).
+    rows.extend(_shrink_rates(n, chains, pred, floor, levels))
+
+    # Eq. 39: B^1/A^1 on the frequency-1 chain
+    q1 = abs(pred.tangent[1][1] / pred.tangent[1][0])
+    ratios = [_lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
+    rows.append(_limit("Eq. 39 ratio B1/A1", pred.eq39_ratio, ratios[-1], [abs(r - pred.eq39_ratio) for r in ratios], q1, floor, levels))
+
+    # Eq. 44: (bbar - O)/(abar - O) on the frequency-0 chain
+    ell = [_lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
+    q0 = abs(mu3 / mu2)
+    rows.append(_limit("Eq. 44 elliptic ratio", pred.elliptic_ratio, ell[-1], [abs(r - pred.elliptic_ratio) for r in ell], q0, floor, levels))
+    return ValenceComparison(n, levels, seed, tuple(rows))
+
+
+def _shrink_rates(n: int, chains: dict, pred, floor: float, levels: int) -> list:
+    """The ``shrink rate j=..`` rows: each frequency's chain against its dominant eigenvalue.
+
+    The shrink rate of frequency j is read as ell(Z_{k+1}) / ell(Z_k) for a fixed generic linear
+    functional ell of Z = (A^j, B^j) (j = 0: (abar - O, bbar - O)); its error is exactly
+    C (lambda_sub/lambda_dom)^k to first order (a norm ratio can have a vanishing first-order term).
+    """
+    rows = []
+    mu2, mu3 = pred.mu
     ell = np.array([complex(*x) for x in np.random.default_rng(12345).uniform(-1, 1, (6, 2))])
     for j in range(0, n // 2 + 1):
         seq = []
@@ -351,17 +371,7 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
             rows.append(_exact(name, max(errs), predicted=dom, observed=seen))
         else:
             rows.append(_limit(name, dom, seen, errs, q, floor, levels))
-
-    # Eq. 39: B^1/A^1 on the frequency-1 chain
-    q1 = abs(pred.tangent[1][1] / pred.tangent[1][0])
-    ratios = [_lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
-    rows.append(_limit("Eq. 39 ratio B1/A1", pred.eq39_ratio, ratios[-1], [abs(r - pred.eq39_ratio) for r in ratios], q1, floor, levels))
-
-    # Eq. 44: (bbar - O)/(abar - O) on the frequency-0 chain
-    ell = [_lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
-    q0 = abs(mu3 / mu2)
-    rows.append(_limit("Eq. 44 elliptic ratio", pred.elliptic_ratio, ell[-1], [abs(r - pred.elliptic_ratio) for r in ell], q0, floor, levels))
-    return ValenceComparison(n, levels, seed, tuple(rows))
+    return rows
 
 
 def _frequency_part(ring: np.ndarray, n: int, j: int) -> np.ndarray:

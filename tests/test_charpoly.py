@@ -1,6 +1,5 @@
 """The closed-form characteristic polynomial of S against the matrix's own, exactly (FLINT rationals)."""
 
-import flint
 import pytest
 import sympy as sp
 
@@ -48,14 +47,6 @@ def test_a_wrong_closed_form_is_caught():
     good = cf.at(5)
     assert good != characteristic_polynomial(catmull_clark(R(1, 50), R(1, 100)), 5)
     assert good.degree() == 11 and good.leading_coefficient() == 1
-
-
-def test_pinned_value_n4_standard():
-    """n = 4 is the regular bicubic B-spline: eigenvalues 1, 1/2 (x2), 1/4 (x3), 1/8 (x2), 1/16."""
-    x = flint.fmpq_poly([0, 1])
-    expected = (x - 1) * (x - flint.fmpq(1, 2)) ** 2 * (x - flint.fmpq(1, 4)) ** 3 * (x - flint.fmpq(1, 8)) ** 2 * (x - flint.fmpq(1, 16))
-    assert characteristic_polynomial(STANDARD, 4) == expected
-    assert closed_form_characteristic_polynomial(STANDARD).at(4) == expected
 
 
 @pytest.mark.parametrize("k", [3, 4, 5, 6])

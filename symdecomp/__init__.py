@@ -5,17 +5,19 @@ quadrilateral subdivision meshes*. The package is layered; each folder imports o
 ones above it in this list (``tests/test_layers.py`` checks it):
 
 =================  ===========================================================================
-``errors``,        the package's error types; the symbols ``n``, ``omega``, ``alpha``, ``beta``
-``symbols``
-``algebra/``       no scheme knowledge: circulants and the Fourier matrix (Section 2,
+``errors``,        the package's error types; the symbols ``n``, ``omega``, ``alpha``, ``beta``,
+``symbols``        ``cos_jtheta`` (``c = cos(j pi/n)``) and ``sin_jtheta``
+``algebra/``       no scheme knowledge: circulants and the Fourier matrix and its rows (Section 2,
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
                    exact/interval evaluation of expressions (``compile``)
-``schemes/``       a scheme as data (edge, face, vertex rules, ``scheme``), its subdivision
-                   matrix (Eq. 13-16, ``scheme``; exact FLINT matrices, ``matrices``), whole quad
-                   meshes refined by its rules (Section 3, ``mesh``), the 1-ring as a pair of
-                   polygons (Section 4, ``ring``)
-``analysis/``      per-frequency matrices M_j and the Eq. 43 matrix (``frequency``), spectra
+``schemes/``       a scheme as data (edge, face, vertex rules) and the one assembly of its
+                   subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
+                   rationals and its characteristic polynomial (``full_matrix``), rules as
+                   polynomials in the index shift (Eq. 17-23, ``shift_stencil``), whole quad
+                   meshes refined by its rules (Section 3, ``mesh``), the 1-ring and its 2n-gon
+                   (Eq. 10-13, ``ring``)
+``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
                    ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
@@ -23,7 +25,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
                    ``support``), rings iterated step by step (``evolution``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
-                   (``certify``), OpenSubdiv (``oracle``, ``opensubdiv``)
+                   (``certify``), both returning a ``CrossCheckResult`` (``result``),
+                   OpenSubdiv (``oracle``, ``opensubdiv``)
 ``claims/``        the paper's claims, one module per section, and their registry
 ``output/``        LaTeX (``latex``, one entry point ``aslatex``) and figures (``plotting``)
 ``cli/``           the ``symdecomp`` command, one module per subcommand

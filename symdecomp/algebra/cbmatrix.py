@@ -178,7 +178,7 @@ class BlockDiagonalization:
 
     #: Columns ``e_p (x) v_k``, ordered by frequency ``k`` and then block ``p``.
     basis: sp.ImmutableMatrix
-    #: The frequency matrices ``E_0, ..., E_{m-1}`` of Prop. 6.2.
+    #: The block-eigenvalue matrices ``E_0, ..., E_{m-1}`` of Prop. 6.2.
     frequency_matrices: tuple[sp.ImmutableMatrix, ...]
 
     def block_diagonal(self) -> sp.ImmutableMatrix:
@@ -187,7 +187,7 @@ class BlockDiagonalization:
 
 
 def block_diagonalization(cb: CBMatrix) -> BlockDiagonalization:
-    """The Fourier basis of Remark 6.1 and the frequency matrices ``E_k`` of ``cb``."""
+    """The Fourier basis of Remark 6.1 and the block-eigenvalue matrices ``E_k`` of ``cb``."""
     K, m = cb.block_count, cb.order
     F = fourier_matrix(m) if m > 1 else sp.ImmutableMatrix([[1]])
     columns = []
@@ -226,7 +226,7 @@ def constant_blocks(T, order: int) -> CBMatrix:
 
 
 def perturbed_block_eigenvalue_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
-    """``E_0 + m T`` (Prop. 6.3, where the paper writes ``E_1``): the frequency-0 matrix of ``cb + A``.
+    """``E_0 + m T`` (Prop. 6.3, where the paper writes ``E_1``): the block-eigenvalue matrix ``E_0`` of ``cb + A``.
 
     The eigenvalues of ``cb + constant_blocks(T, m)`` are those of ``E_1, ..., E_{m-1}``
     (unchanged) and the ``K`` eigenvalues of this matrix.

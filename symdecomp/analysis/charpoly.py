@@ -62,7 +62,7 @@ class ClosedFormCharpoly:
 
     #: ``x - 1``: the eigenvalue 1 separated by the reduction ``S -> S'``.
     unit_factor: sp.Expr
-    #: ``E_0 = M(1) + n T``, the frequency-0 matrix of ``L`` (Prop. 6.3); the only place the vertex weights enter.
+    #: ``E_0 = M(1) + n T``, the block-eigenvalue matrix at frequency 0 of ``L`` (Prop. 6.3); the only place the vertex weights enter.
     zero_frequency_matrix: sp.ImmutableMatrix
     #: ``det(x I - E_0)``: its two roots are the eigenvalues the vertex weights move.
     zero_frequency_factor: sp.Expr

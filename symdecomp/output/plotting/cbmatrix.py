@@ -51,7 +51,7 @@ def eigenvalue_shift_figure(before, after, predicted, *, title: str, labels: Seq
     """Eigenvalues of ``before`` and ``after`` in the complex plane, and the ``predicted`` moved ones.
 
     Proposition 6.3: adding constant blocks to a CB-matrix changes only the eigenvalues of the
-    frequency-0 matrix; ``predicted`` are the eigenvalues the proposition gives for them.
+    block-eigenvalue matrix ``E_0``; ``predicted`` are the eigenvalues the proposition gives for them.
     """
     ev_before = numeric_eigenvalues(before)
     ev_after = numeric_eigenvalues(after)
@@ -106,7 +106,7 @@ def vertex_weight_sweep_figure(scheme: Scheme, n: int, parameter: sp.Symbol, val
     is swept over ``values`` with the others set by ``fixed``. Dots: the eigenvalues of the exact
     ``(2n+1) x (2n+1)`` matrix (:func:`symdecomp.schemes.scheme.subdivision_matrix`) at each value; the
     ones the weight does not move form horizontal rows. Curves: the two eigenvalues of the
-    frequency-0 matrix of Eq. 43 other than 1, from their closed forms
+    recursion matrix of Eq. 43 other than 1, from their closed forms
     (:func:`symdecomp.analysis.spectrum.recursion_eigenvalues`): Proposition 6.3 says these are the
     only ones that move. Real parts are shown; eigenvalues of a complex pair are marked.
     """

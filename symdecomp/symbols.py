@@ -2,7 +2,7 @@
 
 import sympy as sp
 
-__all__ = ["n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "sin_jtheta"]
+__all__ = ["n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "sin_jtheta", "cos_theta"]
 
 #: The valence of the central vertex O.
 n = sp.Symbol("n", integer=True, positive=True)
@@ -19,3 +19,5 @@ lam = sp.Symbol("lambda")
 cos_jtheta = sp.Symbol("c", real=True)
 #: ``s = sin(j*theta)``; it disappears for mirror-symmetric schemes.
 sin_jtheta = sp.Symbol("s", real=True)
+#: ``c = cos(theta) = cos(pi/n)``: ``cos_jtheta`` at frequency ``j = 1``, positive (``>= 1/2`` for ``n >= 3``).
+cos_theta = sp.Symbol("c", positive=True)

@@ -38,7 +38,7 @@ from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.symbols import cos_jtheta, sin_jtheta
+from symdecomp.symbols import cos_jtheta, cos_theta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
@@ -126,8 +126,8 @@ def scale_ratio_squared(scheme: Scheme) -> sp.Expr:
     numerator = _symmetric_in_cos(sp.expand(M[1, 0] * M[1, 0].subs(OMEGA, 1 / OMEGA)), "|m_21|^2")
     m22 = _symmetric_in_cos(M[1, 1], "m_22")
     lam1 = tangent_eigenvalues(scheme).dominant.subs(sp.Abs(cos_jtheta), cos_jtheta)
-    positive = sp.Symbol("c", positive=True)  # j = 1: c = cos(pi/n) >= 1/2
-    return sp.simplify((numerator / (lam1 - m22) ** 2).subs(cos_jtheta, positive)).subs(positive, cos_jtheta)
+    # j = 1: c = cos(pi/n) >= 1/2
+    return sp.simplify((numerator / (lam1 - m22) ** 2).subs(cos_jtheta, cos_theta)).subs(cos_theta, cos_jtheta)
 
 
 @dataclass(frozen=True)

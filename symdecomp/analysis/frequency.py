@@ -162,7 +162,7 @@ def valences_at_roots(polynomial: sp.Expr, c: sp.Symbol, vanishes) -> tuple[tupl
     only if ``vanishes(k)``, an exact test at that valence (the numeric match only selects
     which valence to test, it proves nothing).
 
-    >>> c = sp.Symbol("c", positive=True)
+    >>> from symdecomp.symbols import cos_theta as c
     >>> valences_at_roots(2 * c**2 - 1, c, lambda k: True)
     ((sqrt(2)/2,), (4,))
     """

@@ -32,7 +32,8 @@ from symdecomp.analysis.frequency import per_frequency_matrix, valences_at_roots
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import check_valence
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
-from symdecomp.symbols import cos_jtheta
+from symdecomp.symbols import cos_jtheta, cos_theta
+from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 
 __all__ = [
@@ -79,11 +80,11 @@ def hyperbolic_equality(scheme: Scheme) -> HyperbolicEquality:
     leaves a polynomial in ``c``; only its roots in ``[1/2, 1)`` can be valences, and each
     candidate is checked exactly.
     """
-    c = sp.Symbol("c", positive=True)
+    c = cos_theta
     L = sp.Symbol("L", positive=True)
     ev = tangent_eigenvalues(scheme)
-    char1 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: c, sp.Symbol("lambda"): L}))
-    char2 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: 2 * c**2 - 1, sp.Symbol("lambda"): L**2}))
+    char1 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: c, LAM: L}))
+    char2 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: 2 * c**2 - 1, LAM: L**2}))
     polynomial = sp.factor(sp.resultant(char2, char1, L))
     defect = hyperbolic_defect(scheme)
     roots, valences = valences_at_roots(polynomial, c, lambda k: sp.simplify(defect.subs(N, k)) == 0)

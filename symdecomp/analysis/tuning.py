@@ -37,9 +37,10 @@ from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
-from symdecomp.symbols import cos_jtheta
+from symdecomp.symbols import cos_jtheta, cos_theta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
 
 __all__ = [
     "with_free_vertex_rule",
@@ -155,10 +156,10 @@ def joint_obstruction(scheme: Scheme) -> JointObstruction:
     characteristic polynomial of ``M_1`` is a polynomial in ``c`` that vanishes wherever ``g``
     does. Its roots in ``[1/2, 1)`` are the only candidates; each is tested exactly.
     """
-    c = sp.Symbol("c", positive=True)
+    c = cos_theta
     L = sp.Symbol("L", positive=True)
     M = per_frequency_matrix(scheme)
-    m21sq = laurent_to_cos(sp.expand(M[1, 0] * M[1, 0].subs(sp.Symbol("omega"), 1 / sp.Symbol("omega"))))
+    m21sq = laurent_to_cos(sp.expand(M[1, 0] * M[1, 0].subs(OMEGA, 1 / OMEGA)))
     m22 = laurent_to_cos(M[1, 1])
     trace = laurent_to_cos(M.trace())
     det = laurent_to_cos(sp.expand(M.det()))

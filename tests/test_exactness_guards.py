@@ -27,7 +27,6 @@ PATTERNS = {
 NOT_YET = {
     ("claims/s5_1_tangent.py", "precision assigned by hand"): 2,
     ("claims/s5_2_elliptic.py", "nsimplify"): 1,
-    ("claims/s5_3_hyperbolic.py", "nsimplify"): 1,
     ("claims/s6_cb_matrices.py", "nsimplify"): 1,
 }
 

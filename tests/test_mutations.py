@@ -20,6 +20,8 @@ from tests.test_claim_statuses import EXPECTED
 
 P, V, R, C, U, NA = Status.PROVED, Status.VERIFIED, Status.REFUTED, Status.CORRECTED, Status.UNDECIDED, Status.NOT_APPLICABLE
 Q = sp.Rational
+OMEGA = sp.Symbol("omega")
+CJ = sp.Symbol("c", real=True)  # cos(j pi/n)
 
 #: The issue's scheme: Catmull-Clark with the edge rule's weight on a_i moved by 1/64 (O takes the difference).
 MOVED = """\
@@ -54,7 +56,8 @@ def scheme(name: str) -> Scheme:
     if name == "2n-gon smoothing":  # p_k -> p_k/2 + (p_(k-1) + p_(k+1))/4 on the 1-ring 2n-gon
         return _rules(name, (0, {0: Q(1, 2)}, {-1: Q(1, 4), 0: Q(1, 4)}), (0, {0: Q(1, 4), 1: Q(1, 4)}, {0: Q(1, 2)}))
     if name == "asymmetric":  # more weight on a_(i+1) than on a_(i-1)
-        return _rules(name, (Q(3, 8), {-1: Q(3, 64), 0: Q(3, 8), 1: Q(5, 64)}, {-1: Q(1, 16), 0: Q(1, 16)}), (Q(1, 4), {0: Q(1, 4), 1: Q(1, 4)}, {0: Q(1, 4)}))
+        return _rules(name, (Q(3, 8), {-1: Q(3, 64), 0: Q(3, 8), 1: Q(5, 64)}, {-1: Q(1, 16), 0: Q(1, 16)}),
+                      (Q(1, 4), {0: Q(1, 4), 1: Q(1, 4)}, {0: Q(1, 4)}))
     if name == "complex weights":  # a rotation in the face rule: not a real scheme
         return _rules(name, (Q(3, 8), dict(cc.edge_rule.a), dict(cc.edge_rule.b)),
                       (Q(1, 4), {0: Q(1, 4) + sp.I / 16, 1: Q(1, 4) - sp.I / 16}, {0: Q(1, 4)}))
@@ -76,7 +79,7 @@ TABLE = [
     ("Eq. 2-4", printed("s2_background", "PRINTED_VERTEX", lambda j, m, size: sp.exp(2 * sp.pi * sp.I * j * m**2 / size)), R),
     ("Eq. 5", printed("s2_background", "PRINTED_ORDER", lambda size: size + 1), R),
     ("Eq. 6", printed("s2_background", "PRINTED_PAIR_SIGN", 1), R),
-    ("Proposition 2.1", printed("s2_background", "PRINTED_EIGENVALUE", lambda coeffs: sum(c * sp.Symbol("omega") ** (-k) for k, c in coeffs.items())), R),
+    ("Proposition 2.1", printed("s2_background", "PRINTED_EIGENVALUE", lambda coeffs: sum(c * OMEGA ** (-k) for k, c in coeffs.items())), R),
     # Section 3: the supports live on meshes; the moved edge rule is not a mesh rule
     ("Section 3: symmetry", "moved", NA),
     ("Section 3: 9 and 25 points", "moved", NA),
@@ -94,7 +97,8 @@ TABLE = [
     ("Proposition 4.3", "moved", P),
     # Section 5.1
     ("Eq. 24", printed("s4_one_ring", "PRINTED_B_OVER_A", sp.exp(2 * sp.pi * sp.I * sp.Symbol("j", integer=True) / n)), R),
-    ("Eq. 25-30", printed("s5_1_tangent", "PRINTED_CIRCULANTS", {"alpha": {0: Q(1, 2), 1: Q(1, 4), -1: Q(1, 4)}, "beta": {0: Q(1, 2), -1: Q(1, 2)}, "gamma": {0: Q(1, 2), 1: Q(1, 2)}}), R),
+    ("Eq. 25-30", printed("s5_1_tangent", "PRINTED_CIRCULANTS", {"alpha": {0: Q(1, 2), 1: Q(1, 4), -1: Q(1, 4)},
+                                                                 "beta": {0: Q(1, 2), -1: Q(1, 2)}, "gamma": {0: Q(1, 2), 1: Q(1, 2)}}), R),
     ("Eq. 31-32", "moved", R),
     ("Eq. 31-32", "tuned", P),
     ("Eq. 33", "moved", R),
@@ -112,7 +116,7 @@ TABLE = [
     ("Remark 5.1", "2n-gon smoothing", V),
     ("Remark 5.1", "moved", R),
     ("Eq. 39", "moved", R),
-    ("Eq. 39", printed("s5_1_tangent", "PRINTED_RATIO", 1 / ((1 + sp.Symbol("omega")) / 4 / (sp.Symbol("c", real=True) / 4 * sp.sqrt(1 + sp.Symbol("c", real=True) ** 2 / 4) + sp.Symbol("c", real=True) ** 2 / 8))), P),
+    ("Eq. 39", printed("s5_1_tangent", "PRINTED_RATIO", (CJ / 4 * sp.sqrt(1 + CJ**2 / 4) + CJ**2 / 8) / ((1 + OMEGA) / 4)), P),
     ("Eq. 39 (n = 4)", "moved", R),
     ("Eq. 39 (n = 4)", "tuned", V),
     ("Eq. 39 (n → ∞)", "moved", R),

@@ -24,7 +24,7 @@ found exactly, for every valence at once.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 from math import gcd
 
 import mpmath
@@ -144,7 +144,7 @@ class InitialVectorCondition:
         return out
 
 
-@lru_cache(maxsize=None)
+@cache
 def initial_vector_condition(scheme: Scheme) -> InitialVectorCondition:
     """The exact condition for ``(1, zeta)`` to be an eigenvector of ``M(zeta^2)`` (module docstring)."""
     M = per_frequency_matrix(scheme).subs(OMEGA, ZETA**2)

@@ -8,10 +8,10 @@ term that breaks it, instead of failing inside sympy.
 
 from __future__ import annotations
 
-from symdecomp.analysis.frequency import SIN
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import CheckResult, Status, Text
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import sin_jtheta as SIN
 
 __all__ = ["needs_mirror_symmetry"]
 

@@ -7,11 +7,12 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.components import initial_vector_condition
-from symdecomp.analysis.frequency import COS, SIN
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta as COS
 from symdecomp.symbols import n, omega
+from symdecomp.symbols import sin_jtheta as SIN
 
 __all__ = ["at_valence", "number", "representative", "start_points", "dominant_vs_frequency_zero", "filtering_evidence"]
 
@@ -60,7 +61,7 @@ def dominant_vs_frequency_zero(scheme: Scheme, last: int) -> tuple[bool, int]:
     from symdecomp.algebra.compile import compile_expression
 
     dominant = compile_expression(tangent_eigenvalues(scheme).dominant, (C,), engine="arb")
-    block = [compile_expression(e, (n,), engine="arb") for e in frequency_zero_eigenvalues(scheme) if e != 1]
+    block = [compile_expression(e, (n,), engine="arb") for e in recursion_eigenvalues(scheme) if e != 1]
     with flint.ctx.workprec(128):
         for m in range(3, last + 1):
             lam1 = abs(dominant(flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(1, m)))))

@@ -37,9 +37,9 @@ import enum
 import importlib
 import pkgutil
 import traceback
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import lru_cache
-from typing import Callable
+from functools import cache
 
 import sympy as sp
 from sympy.printing.str import StrPrinter
@@ -139,10 +139,10 @@ class Text:
     def __bool__(self) -> bool:
         return bool(self.parts)
 
-    def __add__(self, other) -> "Text":
+    def __add__(self, other) -> Text:
         return Text(self, other)
 
-    def __radd__(self, other) -> "Text":
+    def __radd__(self, other) -> Text:
         return Text(other, self)
 
 
@@ -257,7 +257,7 @@ def check_claim(label: str, scheme: Scheme | None = None) -> CheckResult:
     return _check_claim(label, catmull_clark() if scheme is None else scheme)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _check_claim(label: str, scheme: Scheme) -> CheckResult:
     c = get_claim(label)
     try:

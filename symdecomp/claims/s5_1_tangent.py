@@ -6,17 +6,19 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
 from symdecomp.analysis.components import ZETA, initial_vector_condition, root_of_unity_orders
-from symdecomp.analysis.frequency import COS, per_frequency_matrix
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
-from symdecomp.symbols import lam, n, omega
+from symdecomp.analysis.frequency import per_frequency_matrix
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.claims.notation import M as Mk
-from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
-from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
 from symdecomp.claims.applicability import needs_mirror_symmetry
 from symdecomp.claims.evidence import at_valence, dominant_vs_frequency_zero, filtering_evidence, number, start_points
+from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
+from symdecomp.claims.notation import M as Mk
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
+from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.shift_stencil import composed_stages
+from symdecomp.symbols import cos_jtheta as COS
+from symdecomp.symbols import lam, n, omega
 
 R = sp.Rational
 C = COS
@@ -112,7 +114,8 @@ def _eq33(scheme: Scheme) -> CheckResult:
     "Eq. 34",
     section="5.1",
     title="Eigenvalues of $M_j$",
-    statement="$\\lambda_{1,2} = \\frac14 + \\frac18\\cos^2 j\\theta \\pm \\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta}$, $\\theta = \\pi/n$.",
+    statement="$\\lambda_{1,2} = \\frac14 + \\frac18\\cos^2 j\\theta \\pm \\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta}$, "
+    "$\\theta = \\pi/n$.",
 )
 def _eq34(scheme: Scheme) -> CheckResult:
     ev = tangent_eigenvalues(scheme)
@@ -226,7 +229,8 @@ def _eq35_37(scheme: Scheme) -> CheckResult:
 def _eq38(scheme: Scheme) -> CheckResult:
     cond, points = start_points(scheme)
     steps = (
-        Step("$(1, \\zeta)$, $\\zeta = \\omega_{2n}^j$, is an eigenvector of $M_j$ iff this vanishes:", sp.factor(cond.residual), sp.Symbol("R(zeta)")),
+        Step("$(1, \\zeta)$, $\\zeta = \\omega_{2n}^j$, is an eigenvector of $M_j$ iff this vanishes:",
+             sp.factor(cond.residual), sp.Symbol("R(zeta)")),
         Step("Orders of the roots of unity among its roots (cyclotomic factors):", sp.FiniteSet(*(cond.orders or ()))),
     )
     if points is None:  # every component starts on an eigenvector: look at each one, n = 3..8
@@ -284,7 +288,7 @@ def _prop51(scheme: Scheme) -> CheckResult:
     dominant = ev.dominant.subs(C, cp)
     derivative = sp.diff(dominant, cp)
     increasing = all(t.is_positive for t in sp.Add.make_args(sp.expand(derivative)))
-    block = [e for e in frequency_zero_eigenvalues(scheme) if e != 1]
+    block = [e for e in recursion_eigenvalues(scheme) if e != 1]
     last = 1000
     steps = (
         Step("Dominant eigenvalue of $M_j$ for $c = \\cos j\\theta > 0$:", dominant),
@@ -339,7 +343,8 @@ def _rem51(scheme: Scheme) -> CheckResult:
     # only where (1, zeta) is the eigenvector of the eigenvalue of smaller modulus.
     cond = initial_vector_condition(scheme)
     steps = (
-        Step("$(1, \\zeta)$ is an eigenvector of $M(\\zeta^2)$ iff this vanishes ($\\zeta = \\omega_{2n}^{n+1}$ here):", sp.factor(cond.residual), sp.Symbol("R(zeta)")),
+        Step("$(1, \\zeta)$ is an eigenvector of $M(\\zeta^2)$ iff this vanishes ($\\zeta = \\omega_{2n}^{n+1}$ here):",
+             sp.factor(cond.residual), sp.Symbol("R(zeta)")),
         Step("Orders of the roots of unity among its roots:", sp.FiniteSet(*(cond.orders or ()))),
     )
     if cond.orders is None:

@@ -6,6 +6,7 @@ import random
 
 import sympy as sp
 
+from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import (
     MU,
     elliptic_component,
@@ -16,16 +17,16 @@ from symdecomp.analysis.elliptic import (
     rotation_free_form,
     scale_ratio_squared,
 )
-from symdecomp.analysis.ellipses import ellipse_axes
-from symdecomp.analysis.frequency import COS, frequency_zero_matrix
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.symbols import alpha as ALPHA
-from symdecomp.symbols import beta as BETA
-from symdecomp.symbols import n as N
+from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.applicability import needs_mirror_symmetry
 from symdecomp.claims.notation import A, B, M, eq, j, lambda_1, listed, ne, omega_2n, tup
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import alpha as ALPHA
+from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_jtheta as COS
+from symdecomp.symbols import n as N
 
 S = sp.Symbol
 
@@ -181,7 +182,7 @@ def _eq42(scheme: Scheme) -> CheckResult:
     r"with $\alpha, \beta$ as in Eq. 16.",
 )
 def _eq43(scheme: Scheme) -> CheckResult:
-    T = frequency_zero_matrix(with_free_vertex_rule(scheme))
+    T = recursion_matrix(with_free_vertex_rule(scheme))
     R = sp.Rational
     printed_rows = sp.Matrix([[R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
     printed_first = sp.Matrix([[1 - ALPHA - BETA, ALPHA, BETA]])
@@ -204,7 +205,7 @@ def _eq43(scheme: Scheme) -> CheckResult:
         return CheckResult(Status.PROVED, "derived matrix equals the printed one", steps=steps)
     derived_first = tup(*T[0, :])
     # the counterexample: the scheme's weights at n = 4, per neighbour (the derived row is n alpha, n beta)
-    standard = frequency_zero_matrix(scheme, 4)
+    standard = recursion_matrix(scheme, 4)
     per_neighbour = {ALPHA: standard[0, 1] / 4, BETA: standard[0, 2] / 4}
     return CheckResult(
         Status.CORRECTED,
@@ -234,7 +235,7 @@ def _eq43(scheme: Scheme) -> CheckResult:
 )
 def _eq44(scheme: Scheme) -> CheckResult:
     free = with_free_vertex_rule(scheme)
-    T = sp.Matrix(frequency_zero_matrix(free))
+    T = sp.Matrix(recursion_matrix(free))
     D = sp.Matrix([[-1, 1, 0], [-1, 0, 1]])  # (h_O, h_a, h_b) -> (d_a, d_b)
     # D T = T' D with T' = D T E, E a right inverse of D on the complement of (1,1,1).
     E = sp.Matrix([[0, 0], [1, 0], [0, 1]])
@@ -271,7 +272,8 @@ def _eq44(scheme: Scheme) -> CheckResult:
             eq(Dn * Tn, Tp_ * Dn),
             " whose eigenvalues are the non-unit ones of Eq. 43 and whose eigenvector is ", Dn * un,
             "; so ", d_b / d_a, " tends to ", (S("u_b") - u_O) / (S("u_a") - u_O),
-            " when the subdominant component is nonzero. The ratio is ", ratio.subs(MU, mu), " at the eigenvalue ", mu, ", independent of the vertex rule",
+            " when the subdominant component is nonzero. The ratio is ", ratio.subs(MU, mu),
+            " at the eigenvalue ", mu, ", independent of the vertex rule",
         ),
         steps=(
             Step("$T'$ on $(d_a, d_b)$", Tp),
@@ -291,7 +293,7 @@ def _eq44(scheme: Scheme) -> CheckResult:
 )
 def _eq45(scheme: Scheme) -> CheckResult:
     R = sp.Rational
-    T4 = frequency_zero_matrix(scheme, 4)
+    T4 = recursion_matrix(scheme, 4)
     printed = sp.Matrix([[R(9, 16), R(3, 8), R(1, 16)], [R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
     eigs = sorted(sp.Matrix(T4).eigenvals(), key=lambda e: -abs(complex(sp.N(e, 30))))
     u = recursion_eigenvector(scheme, eigs[1], 4).applyfunc(sp.radsimp)

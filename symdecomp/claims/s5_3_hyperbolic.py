@@ -6,13 +6,13 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import elliptic_component, tangent_lambda
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
-from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.analysis.frequency import COS
 from symdecomp.claims import CheckResult, Status, Step, Text, claim
-from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
 from symdecomp.claims.applicability import needs_mirror_symmetry
+from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.symbols import cos_jtheta as COS
+from symdecomp.symbols import n as N
 
 _VALENCES = (3, 12)
 Sym = sp.Symbol

@@ -19,20 +19,19 @@ from symdecomp.algebra.cbmatrix import (
     SymbolicCBMatrix,
     SymbolicCirculant,
     block_diagonalization,
+    block_eigenvalue_matrix,
     cb_eigensystem,
     cb_matrix,
     constant_blocks,
-    frequency_matrix,
     lifted_vector,
-    perturbed_frequency_zero_matrix,
+    perturbed_block_eigenvalue_matrix,
 )
-from symdecomp.algebra.circulant import circ, mode_eigenvalue_derivation
+from symdecomp.algebra.circulant import circ, fourier_row, mode_eigenvalue_derivation
+from symdecomp.claims.notation import Kron, eq, tup
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-
-from symdecomp.claims.notation import Kron, eq, tup
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 
 
 def _nc(name: str) -> sp.Symbol:
@@ -57,16 +56,12 @@ def _generic_cb(K: int, m: int):
     return cb_matrix([[[sp.Symbol(f"c{p}{q}_{l}") for l in range(m)] for q in range(K)] for p in range(K)])
 
 
-def _fourier_row(m: int, k: int):
-    return [sp.expand(sp.I ** (k * s)) if m == 4 else sp.exp(2 * sp.pi * sp.I * k * s / m) for s in range(m)]
-
-
 def _lift_identity_holds(cb, coefficients) -> bool:
     """``B (alpha (x) v_k) == (E_k alpha) (x) v_k`` for every frequency ``k``."""
     B = sp.Matrix(cb.matrix())
     for k in range(cb.order):
-        v = _fourier_row(cb.order, k)
-        E = sp.Matrix(frequency_matrix(cb, k))
+        v = fourier_row(cb.order, k)
+        E = sp.Matrix(block_eigenvalue_matrix(cb, k))
         lhs = B * sp.Matrix(lifted_vector(coefficients, v))
         rhs = sp.Matrix(lifted_vector(list(E * sp.Matrix(coefficients)), v))
         if not is_zero(sp.expand(lhs - rhs)):
@@ -100,8 +95,8 @@ def _prop61_counterexample():
     """The smallest matrix obeying the printed constraint (constrained entries 1, the others 2, 3, ...) whose
     eigenvalues are not ``n c`` and zeros; ``None`` if every such test matrix obeys the proposition."""
     for size in (3, 4):
-        free = iter(range(2, 2 + size * size))
-        C = sp.Matrix(size, size, lambda i, j: 1 if _printed_range(i, j, size) else (next(free) if i == j else 0))
+        diagonal = [1 if _printed_range(i, i, size) else 2 + i for i in range(size)]
+        C = sp.Matrix(size, size, lambda i, j, size=size, diagonal=diagonal: 1 if _printed_range(i, j, size) else (diagonal[i] if i == j else 0))
         if any(e not in (0, size) for e in C.eigenvals()):
             return C
     return None
@@ -264,16 +259,16 @@ def _eq48(scheme: Scheme) -> CheckResult:
     cb = _generic_cb(2, 4)
     ok = True
     for k in range(4):
-        v = sp.Matrix(_fourier_row(4, k))
-        E = frequency_matrix(cb, k)
+        v = sp.Matrix(fourier_row(4, k))
+        E = block_eigenvalue_matrix(cb, k)
         for p in range(2):
             for q in range(2):
                 ok &= is_zero(sp.Matrix(cb.block(p, q)) * v - E[p, q] * v)
     # the printed matrix, with e_{1,n-1} as the last entry of its first row, applied to alpha, against B V (3 blocks)
     cb3 = _generic_cb(3, 4)
     a = sp.symbols("a0:3")
-    v1 = _fourier_row(4, 1)
-    E1 = frequency_matrix(cb3, 1)
+    v1 = fourier_row(4, 1)
+    E1 = block_eigenvalue_matrix(cb3, 1)
     printed_E = sp.Matrix(3, 3, lambda p_, q_: E1[PRINTED_FIRST_ROW_LAST if (p_ == 0 and q_ == 2) else p_, q_])
     BV = sp.Matrix(cb3.matrix()) * sp.Matrix(lifted_vector(a, v1))
     printed_BV = sp.Matrix(lifted_vector(list(printed_E * sp.Matrix(a)), v1))
@@ -287,7 +282,7 @@ def _eq48(scheme: Scheme) -> CheckResult:
         Status.CORRECTED,
         "C_pq v_k = e_pq v_k for generic circulant blocks of order 4 and every k (Prop. 2.1); with e_{1,n-1} in the first row "
         "(as printed) the matrix does not give BV",
-        steps=(Step("$E$ for $v_1$, generic blocks of order 4", frequency_matrix(cb, 1)),),
+        steps=(Step("$E$ for $v_1$, generic blocks of order 4", block_eigenvalue_matrix(cb, 1)),),
         counterexample=Text("3 generic blocks of order 4, v = v_1: the first entry of BV minus the printed product is ", sp.factor(difference[0])),
         correction="The (p, q) entry is e_{p,q} v with e_{p,q} the eigenvalue of C_{p,q} on v; the first row ends with e_{0,n-1} v.",
     )
@@ -323,7 +318,7 @@ def _eq49(scheme: Scheme) -> CheckResult:
 def _eq50(scheme: Scheme) -> CheckResult:
     cb = _random_cb(2, 4, 7)
     ok = True
-    for value, k, vectors in cb_eigensystem(cb):
+    for value, _k, vectors in cb_eigensystem(cb):
         for V in vectors:
             ok &= is_zero(sp.Matrix(cb.matrix()) * V - value * V)
     if not ok or not _lift_identity_holds(cb, [1, 1]):
@@ -352,7 +347,7 @@ def _remark61(scheme: Scheme) -> CheckResult:
         ok &= sp.expand(P.det()) != 0
     # necessity: E_0 a Jordan block makes B non-diagonalizable
     jordan = cb_matrix([[[1, 0, 0], [1, 0, 0]], [[0, 0, 0], [1, 0, 0]]])
-    E0 = frequency_matrix(jordan, 0)
+    E0 = block_eigenvalue_matrix(jordan, 0)
     not_diag = not sp.Matrix(jordan.matrix()).is_diagonalizable() and not sp.Matrix(E0).is_diagonalizable()
     diag_case = _random_cb(2, 4, 11)
     eigvecs = [V for _, _, vs in cb_eigensystem(diag_case) for V in vs]
@@ -396,8 +391,8 @@ def _prop63(scheme: Scheme) -> CheckResult:
     )
     C = SymbolicCBMatrix(blocks)
     Bm = SymbolicCBMatrix(tuple(tuple(SymbolicCirculant(b.offsets) for b in row) for row in blocks))
-    other_same = is_zero(C.frequency_matrix(zero_frequency=False) - Bm.frequency_matrix(zero_frequency=False))
-    zero_shift = sp.simplify(C.frequency_matrix(zero_frequency=True, order=M_SYM) - Bm.frequency_matrix(zero_frequency=True, order=M_SYM))
+    other_same = is_zero(C.block_eigenvalue_matrix(zero_frequency=False) - Bm.block_eigenvalue_matrix(zero_frequency=False))
+    zero_shift = sp.simplify(C.block_eigenvalue_matrix(zero_frequency=True, order=M_SYM) - Bm.block_eigenvalue_matrix(zero_frequency=True, order=M_SYM))
     zero_ok = is_zero(zero_shift - M_SYM * t)
     # exact, rational: blocks K = 2, order m = 3; compare E_0 + m T (corrected) and E_0 + K T (printed n = block count)
     x = sp.Symbol("x")
@@ -407,9 +402,9 @@ def _prop63(scheme: Scheme) -> CheckResult:
     chi_C = sp.Poly(Cfull.charpoly(x).as_expr(), x)
     chi_B_other = sp.Integer(1)
     for k in (1, 2, 3):
-        chi_B_other *= (x * sp.eye(2) - frequency_matrix(cb, k)).det()
-    corrected = sp.Poly(sp.expand((x * sp.eye(2) - perturbed_frequency_zero_matrix(cb, T)).det() * chi_B_other), x)
-    printed = sp.Poly(sp.expand((x * sp.eye(2) - (frequency_matrix(cb, 0) + PRINTED_63_FACTOR(K, 4) * T)).det() * chi_B_other), x)
+        chi_B_other *= (x * sp.eye(2) - block_eigenvalue_matrix(cb, k)).det()
+    corrected = sp.Poly(sp.expand((x * sp.eye(2) - perturbed_block_eigenvalue_matrix(cb, T)).det() * chi_B_other), x)
+    printed = sp.Poly(sp.expand((x * sp.eye(2) - (block_eigenvalue_matrix(cb, 0) + PRINTED_63_FACTOR(K, 4) * T)).det() * chi_B_other), x)
     exact_ok = corrected == chi_C
     printed_wrong = printed != chi_C
     # no diagonalizability needed: Jordan E_0 example, constant blocks added
@@ -418,8 +413,8 @@ def _prop63(scheme: Scheme) -> CheckResult:
     chi_J = sp.Poly(sp.Matrix((jordan + constant_blocks(T2, 4)).matrix()).charpoly(x).as_expr(), x)
     rest = sp.Integer(1)
     for k in (1, 2, 3):
-        rest *= (x * sp.eye(2) - frequency_matrix(jordan, k)).det()
-    nodiag_ok = chi_J == sp.Poly(sp.expand((x * sp.eye(2) - perturbed_frequency_zero_matrix(jordan, T2)).det() * rest), x)
+        rest *= (x * sp.eye(2) - block_eigenvalue_matrix(jordan, k)).det()
+    nodiag_ok = chi_J == sp.Poly(sp.expand((x * sp.eye(2) - perturbed_block_eigenvalue_matrix(jordan, T2)).det() * rest), x)
     if not (other_same and zero_ok and exact_ok and nodiag_ok):
         return CheckResult(Status.REFUTED, "adding constant blocks changes more than E_0 -> E_0 + m T",
                            counterexample=Text("K = 2 blocks of order 4: det(xI - C) = ", chi_C.as_expr()))
@@ -440,7 +435,7 @@ def _prop63(scheme: Scheme) -> CheckResult:
             "hypothesis 'if Remark 6.1 holds' is not needed",
         ),
         steps=(
-            Step("$E_k(C)-E_k(B)$ for $k\\ne0$ (banded blocks plus $t_{pq}J$, symbolic order $m$)", sp.simplify(C.frequency_matrix(zero_frequency=False) - Bm.frequency_matrix(zero_frequency=False))),
+            Step("$E_k(C)-E_k(B)$ for $k\\ne0$ (banded blocks plus $t_{pq}J$, symbolic order $m$)", sp.simplify(C.block_eigenvalue_matrix(zero_frequency=False) - Bm.block_eigenvalue_matrix(zero_frequency=False))),
             Step("$E_0(C)-E_0(B)$ (Prop. 6.1: $Jv_0=m v_0$, $Jv_k=0$)", zero_shift),
             Step("so $\\det(xI-C)=\\det(xI-E_0-mT)\\prod_{k\\ne0}\\det(xI-E_k)$ (Remark 6.1's similarity; no diagonalizability used). Rational example, $K=2$ blocks of order $m=4$:", Cfull),
             Step("its characteristic polynomial", chi_C.as_expr()),

@@ -4,30 +4,29 @@ Split from :mod:`symdecomp.claims.s6_cb_matrices` (the CB-matrix algebra), which
 
 from __future__ import annotations
 
-
 import sympy as sp
 
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, verify_closed_form
-from symdecomp.analysis.frequency import COS
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
-from symdecomp.analysis.tuning import with_free_vertex_rule
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
-from symdecomp.symbols import alpha as ALPHA
-from symdecomp.symbols import beta as BETA
-from symdecomp.symbols import n as N
-from symdecomp.symbols import omega as OMEGA
 from symdecomp.analysis.tangent import tangent_eigenvalues
-
+from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.claims.applicability import needs_mirror_symmetry
 from symdecomp.claims.notation import eq, j, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s6_cb_matrices import _det, _nc
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.symbols import alpha as ALPHA
+from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_jtheta as COS
+from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
 
 
 def _displayed_expression_agrees(free: Scheme, expression: sp.Expr, valences) -> str | None:
     """Expand the displayed closed form at each valence (vertex weights 0 and 1) and compare it with the matrix;
     ``None`` when they agree, else where they differ."""
-    from symdecomp.analysis.charpoly import matrix_characteristic_polynomial, to_fmpq_poly
+    from symdecomp.analysis.charpoly import to_fmpq_poly
+    from symdecomp.schemes.full_matrix import characteristic_polynomial as matrix_characteristic_polynomial
     from symdecomp.symbols import lam
 
     for k in valences:
@@ -165,7 +164,7 @@ def _two_eigenvalues(scheme: Scheme) -> CheckResult:
     free = with_free_vertex_rule(scheme)
     cf = closed_form_characteristic_polynomial(free)
     L = reduce_first_column(subdivision_block_form(free)).lower_right
-    E = L.frequency_matrix(zero_frequency=False)
+    E = L.block_eigenvalue_matrix(zero_frequency=False)
     free_of_weights = not (E.free_symbols & {ALPHA, BETA})
     E0 = cf.zero_frequency_matrix
     dependence = sp.Matrix([[sp.diff(cf.zero_frequency_factor, ALPHA), sp.diff(cf.zero_frequency_factor, BETA)]])

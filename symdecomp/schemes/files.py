@@ -36,10 +36,10 @@ from __future__ import annotations
 
 import os
 import re
-import tomllib
-from typing import Callable, Mapping
+from collections.abc import Callable, Mapping
 
 import sympy as sp
+import tomllib
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError, SymdecompError
 from symdecomp.expressions import parse_expression

@@ -6,7 +6,7 @@ import sympy as sp
 
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
 from symdecomp.analysis.tuning import with_free_vertex_rule
-from symdecomp.cli.common import add_scheme_option, print_json, valence
+from symdecomp.cli.common import add_scheme_option, print_json, resolve_scheme, valence
 from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -54,6 +54,7 @@ def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
 
 
 def run(args) -> int:
+    resolve_scheme(args)  # also when run() is called without main()
     scheme = with_free_vertex_rule(args.scheme) if args.free_weights else args.scheme
     cf = closed_form_characteristic_polynomial(scheme)
     coefficients, matches = _coefficients(scheme, args.n, args.free_weights)

@@ -13,7 +13,7 @@ from functools import partial
 import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, resolve_scheme, valence_range
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.certify import certify
 from symdecomp.verify.numeric import numeric_check
@@ -90,6 +90,7 @@ def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, 
 
 
 def run(args, *, closed_forms: ClosedForms | None = None) -> int:
+    resolve_scheme(args)  # also when run() is called without main()
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
     start = time.perf_counter()
     rows = []

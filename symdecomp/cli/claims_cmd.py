@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import add_scheme_option, print_json, progress
+from symdecomp.cli.common import add_scheme_option, print_json, progress, resolve_scheme
 
 
 def register(sub) -> None:
@@ -27,6 +27,7 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
+    resolve_scheme(args)  # also when run() is called without main()
     claims = all_claims()
     if args.section:
         claims = [c for c in claims if c.section == args.section or c.section.startswith(args.section + ".")]

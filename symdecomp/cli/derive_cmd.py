@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import add_scheme_option, print_json, progress
+from symdecomp.cli.common import add_scheme_option, print_json, progress, resolve_scheme
 from symdecomp.errors import SymdecompError
 from symdecomp.output.latex import claim_latex, derivation_files
 
@@ -63,6 +63,7 @@ def _write(out: Path, files: dict[str, str]) -> list[Path]:
 
 
 def run(args) -> int:
+    resolve_scheme(args)  # also when run() is called without main()
     if args.label:
         known = {c.label: c for c in all_claims()}
         unknown = [label for label in args.label if label not in known]

@@ -13,7 +13,7 @@ JSON: ``{"n": N, "position": {"O": w, "a": [...], "b": [...]}, "tangents": [{"O"
 from __future__ import annotations
 
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, valence
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, resolve_scheme, valence
 
 
 def register(sub) -> None:
@@ -32,6 +32,7 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
+    resolve_scheme(args)  # also when run() is called without main()
     masks = limit_masks_at(args.scheme, args.n)
     data = masks.as_json(args.digits)
     if args.json:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from symdecomp.analysis.spectrum import closed_form_spectrum
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, valence
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, resolve_scheme, valence
 
 
 def register(sub) -> None:
@@ -22,6 +22,7 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
+    resolve_scheme(args)  # also when run() is called without main()
     spectrum = closed_form_spectrum(args.scheme, args.n, digits=args.digits)
     if args.json:
         print_json(spectrum.as_json())

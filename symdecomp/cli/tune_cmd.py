@@ -13,7 +13,7 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.tuning import tune
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence
+from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, resolve_scheme, valence
 
 
 def register(sub) -> None:
@@ -35,6 +35,7 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
+    resolve_scheme(args)  # also when run() is called without main()
     if args.table:
         valences = list(range(3, args.n + 1))
         rows = []

@@ -28,7 +28,7 @@ import mpmath
 import sympy as sp
 
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
-from symdecomp.errors import check_valence
+from symdecomp.validate import check_valence
 from symdecomp.analysis.frequency import COS, SIN
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import frequency_zero_eigenvalues

@@ -21,7 +21,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.validate import check_valence
 from symdecomp.analysis.frequency import frequency_zero_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM

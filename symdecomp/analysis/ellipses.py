@@ -26,7 +26,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.errors import InvalidPolygonError, check_frequency
+from symdecomp.errors import InvalidPolygonError
+from symdecomp.validate import check_frequency
 from symdecomp.algebra.polygons import decompose
 
 __all__ = ["ring_components", "EllipseAxes", "ellipse_axes"]

@@ -33,7 +33,8 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.validate import check_valence
 from symdecomp.analysis.frequency import COS, SIN, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value, frequency_zero_eigenvalues

@@ -22,7 +22,8 @@ from functools import lru_cache
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import InvalidPolygonError, check_valence
+from symdecomp.errors import InvalidPolygonError
+from symdecomp.validate import check_valence
 from symdecomp.algebra.polygons import decompose
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 

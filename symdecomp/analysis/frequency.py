@@ -26,7 +26,7 @@ from functools import lru_cache
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation, root_of_unity
-from symdecomp.errors import check_frequency, check_valence
+from symdecomp.validate import check_frequency, check_valence
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA

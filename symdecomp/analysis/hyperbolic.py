@@ -29,7 +29,7 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.elliptic import tangent_lambda
-from symdecomp.errors import check_valence
+from symdecomp.validate import check_valence
 from symdecomp.analysis.frequency import COS, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N

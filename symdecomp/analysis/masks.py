@@ -34,7 +34,8 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.analysis.elliptic import recursion_left_eigenvector, tangent_lambda
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.validate import check_valence
 from symdecomp.analysis.frequency import COS, circulant_blocks, laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value

@@ -24,7 +24,7 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
-from symdecomp.errors import check_valence
+from symdecomp.validate import check_valence
 from symdecomp.analysis.frequency import COS, SIN, frequency_zero_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM

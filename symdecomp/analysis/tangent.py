@@ -21,6 +21,8 @@ import sympy as sp
 
 from symdecomp.analysis.frequency import COS, SIN, laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.errors import FrequencyOutOfRangeError
+from symdecomp.validate import check_frequency, check_valence
 from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import j as J
 from symdecomp.symbols import lam as LAM
@@ -59,7 +61,9 @@ class TangentEigenvalues:
         return expr.subs({COS: cos_jtheta, SIN: sp.sin(sp.pi * J / N)})
 
     def at(self, n: int, j: int) -> tuple[sp.Expr, sp.Expr]:
-        """The two exact eigenvalues at a concrete valence and frequency."""
+        """The two exact eigenvalues at a concrete valence ``n`` and frequency ``0 <= j < 2n``."""
+        n = check_valence(n)
+        j = check_frequency(j, n)
         subs = {COS: sp.cos(sp.pi * sp.Rational(j, n)), SIN: sp.sin(sp.pi * sp.Rational(j, n))}
         return self.dominant.subs(subs), self.subdominant.subs(subs)
 
@@ -107,8 +111,12 @@ def _omega_and_cos(n, j):
 
 
 def invariant_ratio_at(scheme: Scheme, n: int, j: int = 1) -> sp.Expr:
-    """The exact ratio of Eq. 39 at a concrete ``n`` and ``j``, simplified."""
+    """The exact ratio of Eq. 39 at a concrete ``n`` and ``0 <= j < 2n``, simplified."""
+    n = check_valence(n)
+    j = check_frequency(j, n)
     value = invariant_ratio(scheme).subs(_omega_and_cos(sp.Integer(n), sp.Integer(j)))
+    if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise FrequencyOutOfRangeError(f"the ratio of Eq. 39 is undefined at n = {n}, j = {j} (lambda = m22 there)")
     return sp.nsimplify(sp.simplify(sp.expand_complex(value)))
 
 

@@ -31,7 +31,8 @@ import mpmath
 import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.validate import check_valence
 from symdecomp.analysis.frequency import COS, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.analysis.spectrum import format_value

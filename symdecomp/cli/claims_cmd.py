@@ -30,9 +30,9 @@ def run(args) -> int:
         wanted = set(args.label)
         unknown = wanted - {c.label for c in claims}
         if unknown:
-            from symdecomp.errors import SymdecompError
+            from symdecomp.errors import InvalidInputError
 
-            raise SymdecompError(f"no claim labelled {', '.join(sorted(unknown))}")
+            raise InvalidInputError(f"no claim labelled {', '.join(sorted(unknown))}")
         claims = [c for c in claims if c.label in wanted]
     rows = []
     for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):

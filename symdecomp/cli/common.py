@@ -6,7 +6,8 @@ import argparse
 import json
 import sys
 
-from symdecomp.errors import InvalidValenceError, check_valence
+from symdecomp.errors import InvalidValenceError
+from symdecomp.validate import check_valence
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 
 __all__ = ["valence", "valence_range", "positive_int", "SCHEMES", "scheme_by_name", "add_scheme_option", "progress", "print_json"]

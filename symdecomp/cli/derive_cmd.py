@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.errors import SymdecompError
+from symdecomp.errors import InvalidInputError
 from symdecomp.output.latex import aslatex, derivation_files
 from symdecomp.cli.common import print_json, progress
 
@@ -66,7 +66,7 @@ def run(args) -> int:
         known = {c.label: c for c in all_claims()}
         unknown = [label for label in args.label if label not in known]
         if unknown:
-            raise SymdecompError(f"no claim labelled {', '.join(unknown)}; known: {', '.join(known)}")
+            raise InvalidInputError(f"no claim labelled {', '.join(unknown)}; known: {', '.join(known)}")
         print("\n".join(aslatex(known[label]) for label in args.label), end="")
         return 1 if any(check_claim(label).status is Status.ERROR for label in args.label) else 0
     written = write_derivations(args.out, show_progress=not args.no_progress and not args.json)

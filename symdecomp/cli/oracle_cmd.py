@@ -31,12 +31,12 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
-    from symdecomp.errors import SymdecompError
+    from symdecomp.errors import InvalidInputError
     from symdecomp.verify.opensubdiv import BridgeUnavailableError, load_bridge
     from symdecomp.verify.oracle import compare_with_opensubdiv
 
     if args.levels < 2:
-        raise SymdecompError(f"--levels must be at least 2, got {args.levels}")
+        raise InvalidInputError(f"--levels must be at least 2, got {args.levels}")
     try:
         load_bridge()
     except BridgeUnavailableError as exc:

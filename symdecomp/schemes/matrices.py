@@ -24,8 +24,10 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
-from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.errors import InvalidSchemeError
+from symdecomp import validate
+from symdecomp.validate import check_valence
+from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
 
 __all__ = [
@@ -41,24 +43,10 @@ def parameter_values(scheme: Scheme, parameters: Mapping | None) -> dict:
     """Values for the scheme's free parameters as a sympy substitution (keys may be names).
 
     Raises :class:`~symdecomp.errors.InvalidSchemeError` naming the parameters left without
-    a value or given a value that is not an exact number.
+    a value or given a value that is not an exact number (see :func:`symdecomp.validate.parameter_values`).
     """
-    subs = {}
-    for key, value in dict(parameters or {}).items():
-        symbol = sp.Symbol(key) if isinstance(key, str) else key
-        match = [p for p in scheme.parameters if p == symbol or str(p) == str(symbol)]
-        if not match:
-            raise InvalidSchemeError(
-                f"scheme {scheme.name!r} has no parameter {key!s}; its parameters are {[str(p) for p in scheme.parameters]}"
-            )
-        expr = sp.sympify(value)
-        if expr.has(sp.Float):
-            raise InvalidSchemeError(f"parameter {key!s} = {value!r} is a float; give an exact value (e.g. sympy.Rational)")
-        subs[match[0]] = expr
-    missing = [str(p) for p in scheme.parameters if p not in subs]
-    if missing:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {missing}; give their values")
-    return subs
+    return validate.parameter_values(scheme.parameters, parameters, owner=f"scheme {scheme.name!r}",
+                                     symbols=WEIGHT_SYMBOLS)
 
 
 def exact_weight(weight: sp.Expr, n: int, subs: Mapping) -> flint.fmpq:

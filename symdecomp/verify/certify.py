@@ -54,7 +54,7 @@ import sympy as sp
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
 from symdecomp.verify.numeric import CheckStatus
-from symdecomp.errors import check_valence
+from symdecomp.validate import check_valence
 from symdecomp.schemes.matrices import characteristic_polynomial, parameter_values
 from symdecomp.analysis.frequency import COS, SIN
 from symdecomp.schemes.scheme import Scheme

@@ -32,7 +32,7 @@ from typing import Callable, Mapping
 import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
-from symdecomp.errors import check_valence
+from symdecomp.validate import check_valence
 from symdecomp.schemes.matrices import parameter_values, sparse_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value

@@ -47,7 +47,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import check_valence, SymdecompError
+from symdecomp.errors import InternalError, InvalidInputError
+from symdecomp.validate import check_valence
 from symdecomp.analysis.elliptic import recursion_eigenvector
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
@@ -161,7 +162,7 @@ def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Exp
     u = recursion_eigenvector(scheme, mu, n)
     scale = sp.simplify(u[1] - u[0])
     if scale == 0:
-        raise SymdecompError(f"the Eq. 43 eigenvector for {mu} at n = {n} has u_a = u_O; Eq. 44's ratio is undefined")
+        raise InternalError(f"the Eq. 43 eigenvector for {mu} at n = {n} has u_a = u_O; Eq. 44's ratio is undefined")
     return mu, tuple(sp.radsimp(sp.simplify(x / scale)) for x in u)
 
 
@@ -293,7 +294,7 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
 
     n = check_valence(n)
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 2:
-        raise SymdecompError(f"levels must be an integer >= 2, got {levels!r}")
+        raise InvalidInputError(f"levels must be an integer >= 2, got {levels!r}")
     pred = toolkit_predictions(n)
     ring0 = random_ring(n, seed)
     rows: list[Prediction] = []

@@ -15,7 +15,7 @@ from typing import Iterable, Mapping, Sequence
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import check_valence
+from symdecomp.validate import check_valence
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
 from symdecomp.symbols import n as N

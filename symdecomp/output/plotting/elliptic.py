@@ -183,7 +183,7 @@ def hyperbolic_rates_figure(scheme, valences: Iterable[int]):
     """
     import sympy as sp
 
-    from symdecomp.errors import check_valence
+    from symdecomp.validate import check_valence
     from symdecomp.analysis.tangent import tangent_eigenvalues
 
     ev = tangent_eigenvalues(scheme)

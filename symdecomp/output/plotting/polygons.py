@@ -11,7 +11,7 @@ from typing import Iterable
 import numpy as np
 
 from symdecomp.algebra.circulant import fourier_matrix
-from symdecomp.errors import check_valence
+from symdecomp.validate import check_valence
 from symdecomp.output.plotting._mpl import new_figure
 
 __all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d", "ring_split_figure", "decomposition_figure", "regular_components"]

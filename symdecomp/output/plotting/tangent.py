@@ -15,7 +15,7 @@ import numpy as np
 import sympy as sp
 
 from symdecomp.algebra.circulant import fourier_matrix
-from symdecomp.errors import check_valence
+from symdecomp.validate import check_valence
 from symdecomp.analysis.evolution import one_ring, subdivide_ring
 from symdecomp.analysis.frequency import COS, SIN, per_frequency_matrix_at
 from symdecomp.schemes.scheme import Scheme

@@ -21,14 +21,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symdecomp.errors import SymdecompError
+from symdecomp.errors import InternalError, InvalidInputError, UnavailableError
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.verify.opensubdiv import build as _build
 
 __all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings"]
 
 
-class BridgeUnavailableError(SymdecompError):
+class BridgeUnavailableError(UnavailableError):
     """The OpenSubdiv bridge is not built and cannot be built here (no g++ or no OpenSubdiv)."""
 
 
@@ -91,14 +91,14 @@ def osd_central_rings(mesh: QuadMesh, center: int, levels: int, *, start: int | 
     """
     lib = load_bridge()
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
-        raise SymdecompError(f"levels must be a non-negative integer, got {levels!r}")
+        raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
     o, a, _ = mesh.one_ring(center, start)
     n = len(a)
     ids = mesh.vertices()
     index = {v: i for i, v in enumerate(ids)}
     pos = np.array([[float(x) for x in mesh.values[v]] for v in ids], dtype=np.float64)
     if pos.shape[1] != 3:
-        raise SymdecompError(f"OpenSubdiv bridge needs 3-vector values, got length {pos.shape[1]}")
+        raise InvalidInputError(f"OpenSubdiv bridge needs 3-vector values, got length {pos.shape[1]}")
     faces = np.array([[index[v] for v in f] for f in mesh.faces], dtype=np.intc)
     # face i of the ring: the one where O is followed by a_i
     ring_faces = []
@@ -121,5 +121,5 @@ def osd_central_rings(mesh: QuadMesh, center: int, levels: int, *, start: int | 
         limit.ctypes.data_as(dp), err, len(err),
     )
     if rc != 0:
-        raise SymdecompError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
+        raise InternalError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
     return OsdRings(out, limit)

@@ -34,7 +34,7 @@ import mpmath
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_digits, check_valence
 from symdecomp.analysis.frequency import COS, SIN, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value, frequency_zero_eigenvalues
@@ -221,6 +221,8 @@ def elliptic_defect_table(scheme: Scheme, valences, *, digits: int = 20) -> tupl
     """
     if scheme.parameters:
         raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
+    digits = check_digits(digits)
+    valences = [check_valence(n) for n in valences]
     cond = nice_elliptic_conditions(scheme)
     exprs = (
         cond.subdominant,

@@ -35,7 +35,7 @@ from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.analysis.elliptic import recursion_left_eigenvector, tangent_lambda
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_digits, check_valence
 from symdecomp.analysis.frequency import COS, circulant_blocks, laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value
@@ -107,6 +107,8 @@ class MasksAtValence:
     subdominant: sp.Expr
 
     def as_json(self, digits: int = 20) -> dict:
+        digits = check_digits(digits)
+
         def num(e):
             value = sp.N(e, digits + 10)
             with mpmath.workdps(digits + 10):

@@ -24,7 +24,8 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
-from symdecomp.validate import check_valence
+from symdecomp.schemes.matrices import parameter_values
+from symdecomp.validate import check_digits, check_valence
 from symdecomp.analysis.frequency import COS, SIN, frequency_zero_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
@@ -128,16 +129,12 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
     """
     n = check_valence(n)
-    if digits < 1:
-        raise ValueError(f"digits must be a positive integer, got {digits}")
+    digits = check_digits(digits)
     if n < scheme.minimum_valence():
         from symdecomp.schemes.scheme import subdivision_matrix
 
         subdivision_matrix(scheme, n)  # raises the error naming the problem
-    subs = {sp.Symbol(str(k)) if isinstance(k, str) else k: sp.sympify(v) for k, v in (parameters or {}).items()}
-    missing = set(scheme.parameters) - set(subs)
-    if missing:
-        raise ValueError(f"scheme {scheme.name!r} has free parameters {sorted(map(str, missing))}; give their values")
+    subs = parameter_values(scheme, parameters)
     work = digits + 30
     raw: list[tuple[object, int]] = []
     for expr in frequency_zero_eigenvalues(scheme):

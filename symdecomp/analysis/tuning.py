@@ -32,7 +32,7 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_digits, check_valence
 from symdecomp.analysis.frequency import COS, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.analysis.spectrum import format_value
@@ -211,6 +211,8 @@ class TuningAtValence:
     alpha_on_line_in_mu: sp.Expr
 
     def as_json(self, digits: int = 20) -> dict:
+        digits = check_digits(digits)
+
         def num(e):
             with mpmath.workdps(digits + 10):
                 return format_value(mpmath.mpf(sp.Float(sp.N(e, digits + 10), digits + 10)._mpf_), digits)

@@ -26,7 +26,7 @@ import sympy as sp
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.errors import InvalidSchemeError
 from symdecomp import validate
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_memory, check_valence
 from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
 
@@ -152,6 +152,7 @@ def exact_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None 
     that). Memory is that of ``(2n+1)^2`` small rationals; no symbolic matrix is built.
     """
     size = 2 * check_valence(n) + 1
+    check_memory(size * size * 64, f"the exact {size} x {size} subdivision matrix")
     S = flint.fmpq_mat(size, size)
     for (r, c), x in sparse_subdivision_matrix(scheme, n, parameters).items():
         S[r, c] = x
@@ -199,6 +200,16 @@ def _balanced_integer_matrix(entries: dict, size: int) -> tuple[flint.fmpz_mat, 
     return A, d
 
 
+def charpoly_memory(size: int, bits: int) -> int:
+    """An estimate (bytes) of FLINT's exact characteristic polynomial of a ``size x size`` integer matrix.
+
+    Entries of ``bits`` bits grow, during the elimination, to about ``size * (bits + log2 size)``
+    bits (Hadamard's bound); a dense matrix of such numbers is the peak.
+    """
+    grown = size * (bits + max(1, size.bit_length()))
+    return size * size * (grown // 8 + 16)
+
+
 def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None = None) -> flint.fmpq_poly:
     """``det(lambda I - S)`` of the full subdivision matrix, exactly (FLINT ``fmpz_mat.charpoly``).
 
@@ -207,6 +218,8 @@ def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None
     """
     size = 2 * check_valence(n) + 1
     A, d = _balanced_integer_matrix(sparse_subdivision_matrix(scheme, n, parameters), size)
+    bits = max(int(d).bit_length(), max((abs(int(A[r, c])).bit_length() for r in range(size) for c in range(size)), default=1))
+    check_memory(charpoly_memory(size, bits), f"the exact characteristic polynomial at n = {n}")
     p = A.charpoly()
     coeffs = p.coeffs()
     size = len(coeffs) - 1

@@ -54,7 +54,7 @@ import sympy as sp
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
 from symdecomp.verify.numeric import CheckStatus
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_digits, check_int, check_valence
 from symdecomp.schemes.matrices import characteristic_polynomial, parameter_values
 from symdecomp.analysis.frequency import COS, SIN
 from symdecomp.schemes.scheme import Scheme
@@ -259,6 +259,8 @@ def certify(
     largest Arb precision (bits) tried when clustering or refuting.
     """
     n = check_valence(n)
+    digits = check_digits(digits)
+    max_prec = check_int(max_prec, "max_prec", minimum=128, maximum=1 << 20)
     subs = parameter_values(scheme, parameters)
     cf = closed_forms or derived_closed_forms(scheme)
     labels = cf.eigenvalue_labels(n)

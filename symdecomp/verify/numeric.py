@@ -32,7 +32,7 @@ from typing import Callable, Mapping
 import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
-from symdecomp.validate import check_valence
+from symdecomp.validate import MAX_DPS, check_memory, check_precision, check_valence
 from symdecomp.schemes.matrices import parameter_values, sparse_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value
@@ -128,6 +128,8 @@ def full_matrix_eigenvalues(scheme: Scheme, n: int, dps: int, parameters: Mappin
     """
     n = check_valence(n)
     size = 2 * n + 1
+    # mpmath.eig keeps a few dense complex copies of the matrix, each entry an mpc at dps digits
+    check_memory(6 * size * size * (2 * (dps * 3.33 / 8 + 100)), f"the {size} x {size} eigenvalue solve at {dps} digits")
     entries = sparse_subdivision_matrix(scheme, n, parameters)
     with mpmath.workdps(dps):
         A = mpmath.matrix(size, size)
@@ -205,8 +207,9 @@ def numeric_check(
     ``mpmath.eig`` (see :func:`full_matrix_eigenvalues`).
     """
     n = check_valence(n)
-    if dps < 5:
-        raise ValueError(f"dps must be at least 5, got {dps}")
+    dps = check_precision(dps)
+    if max_dps is not None:
+        max_dps = check_precision(max_dps, "max_dps", maximum=4 * MAX_DPS + 40)
     subs = parameter_values(scheme, parameters)
     cf = closed_forms or derived_closed_forms(scheme)
     max_dps = max_dps or 4 * dps + 40

@@ -47,8 +47,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import InternalError, InvalidInputError
-from symdecomp.validate import check_valence
+from symdecomp.errors import InternalError
+from symdecomp.validate import check_int, check_levels, check_valence
 from symdecomp.analysis.elliptic import recursion_eigenvector
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
@@ -283,6 +283,10 @@ def _rate_from(errors: list[float], floor: float) -> float | None:
     return errors[k] / errors[k - 1]
 
 
+#: Most refinement levels compared (double precision: beyond this the ring is below rounding).
+MAX_LEVELS = 40
+
+
 def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceComparison:
     """Run the comparisons of this module at valence ``n`` (needs the OpenSubdiv bridge).
 
@@ -293,8 +297,8 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
     from symdecomp.verify.opensubdiv import osd_central_rings
 
     n = check_valence(n)
-    if isinstance(levels, bool) or not isinstance(levels, int) or levels < 2:
-        raise InvalidInputError(f"levels must be an integer >= 2, got {levels!r}")
+    levels = check_levels(levels, minimum=2, maximum=MAX_LEVELS, reason="double precision: beyond this the ring is below rounding")
+    seed = check_int(seed, "seed", minimum=0, maximum=2**32 - 1)
     pred = toolkit_predictions(n)
     ring0 = random_ring(n, seed)
     rows: list[Prediction] = []

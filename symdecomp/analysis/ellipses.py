@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.errors import InvalidPolygonError
+from symdecomp.errors import InvalidInputError, InvalidPolygonError
 from symdecomp.validate import check_frequency
 from symdecomp.algebra.polygons import decompose
 
@@ -88,7 +88,7 @@ def ellipse_axes(ring, j: int = 1, part: str = "a", *, digits: int | None = 30) 
     M, n = _check_ring(ring)
     j = check_frequency(j, n)
     if part not in ("a", "b"):
-        raise ValueError(f"part must be 'a' or 'b', got {part!r}")
+        raise InvalidInputError(f"part must be 'a' or 'b', got {part!r}")
     d = decompose(_two_n_gon(M, n))
     first, second = d.planar_pair(j)
     w_j, w_conj = first.amplitude, second.amplitude

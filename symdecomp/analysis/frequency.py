@@ -30,6 +30,7 @@ from symdecomp.validate import check_frequency, check_valence
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.errors import InvalidSchemeError
 
 __all__ = [
     "CirculantBlocks",
@@ -130,7 +131,7 @@ def _laurent_terms(expr: sp.Expr) -> dict[int, sp.Expr]:
             base, exp = factor.as_base_exp()
             if base == OMEGA:
                 if not exp.is_integer:
-                    raise ValueError(f"{expr} is not a Laurent polynomial in omega")
+                    raise InvalidSchemeError(f"{expr} is not a Laurent polynomial in omega")
                 power += int(exp)
             else:
                 coeff *= factor

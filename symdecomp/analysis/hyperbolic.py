@@ -34,6 +34,7 @@ from symdecomp.analysis.frequency import COS, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import InvalidInputError
 
 __all__ = [
     "hyperbolic_lambda",
@@ -143,7 +144,7 @@ def apply_rational_matrix(matrix: sp.MatrixBase, vector: list) -> list:
     """
     rows, cols = matrix.shape
     if cols != len(vector):
-        raise ValueError(f"matrix has {cols} columns but the vector has {len(vector)} entries")
+        raise InvalidInputError(f"matrix has {cols} columns but the vector has {len(vector)} entries")
     out = []
     for r in range(rows):
         acc = None
@@ -173,7 +174,7 @@ def iterate_hyperbolic_ring(scheme: Scheme, n: int, steps: int = 4, *, digits: i
     """
     n = check_valence(n)
     if steps < 0:
-        raise ValueError(f"steps must be >= 0, got {steps}")
+        raise InvalidInputError(f"steps must be >= 0, got {steps}")
     K = CyclotomicField(4 * n)
     S = subdivision_matrix(scheme, n)
 

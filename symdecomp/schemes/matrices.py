@@ -217,6 +217,8 @@ def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None
     ``chi_S(lambda) = d^-(2n+1) chi_A(d lambda)``. No block structure is used.
     """
     size = 2 * check_valence(n) + 1
+    # a first estimate before anything is built (entries of about 2 log2(n) + 8 bits), then the real one
+    check_memory(charpoly_memory(size, 2 * n.bit_length() + 8), f"the exact characteristic polynomial at n = {n}")
     A, d = _balanced_integer_matrix(sparse_subdivision_matrix(scheme, n, parameters), size)
     bits = max(int(d).bit_length(), max((abs(int(A[r, c])).bit_length() for r in range(size) for c in range(size)), default=1))
     check_memory(charpoly_memory(size, bits), f"the exact characteristic polynomial at n = {n}")

@@ -13,6 +13,7 @@ import numpy as np
 from symdecomp.analysis.evolution import EllipticProfile, split_ring
 from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.output.plotting.polygons import _few_ticks, draw_one_ring_3d, draw_polygon_3d, set_equal_3d
+from symdecomp.errors import InvalidInputError
 
 __all__ = [
     "ellipses_figure",
@@ -49,7 +50,7 @@ def ellipses_figure(profile: EllipticProfile, steps: Iterable[int] = range(1, 6)
     """
     steps = [k for k in steps if 0 <= k < len(profile.rings)]
     if not steps:
-        raise ValueError(f"no step to show: the profile has steps 0..{len(profile.rings) - 1}")
+        raise InvalidInputError(f"no step to show: the profile has steps 0..{len(profile.rings) - 1}")
     fig = new_figure(12, 5.2)
     ax = fig.add_subplot(1, 2, 1, projection="3d")
     for index, k in enumerate(steps):

@@ -10,7 +10,7 @@ from pathlib import Path
 from symdecomp.claims import Status, all_claims, check_claim
 from symdecomp.errors import InvalidInputError
 from symdecomp.output.latex import aslatex, derivation_files
-from symdecomp.cli.common import Once, flag, print_json, progress, refuse_together
+from symdecomp.cli.common import Once, flag, given, print_json, progress
 from symdecomp.cli.files import check_output_directory, replace_owned_files
 
 __all__ = ["register", "run", "write_derivations"]
@@ -66,7 +66,8 @@ def _out(text: str) -> Path:
 
 def run(args) -> int:
     for option in ("--out", "--json", "--no-progress"):
-        refuse_together(args, "--label", option, "--label prints LaTeX to stdout and writes no files")
+        if args.label and given(args, option[2:].replace("-", "_")):
+            raise InvalidInputError(f"--label and {option} cannot be used together: --label prints LaTeX to stdout and writes no files")
     if args.label:
         known = {c.label: c for c in all_claims()}
         unknown = [label for label in args.label if label not in known]

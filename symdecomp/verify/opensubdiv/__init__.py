@@ -72,6 +72,8 @@ def _load_checked(build: bool, *, force: bool):
         raise BridgeUnavailableError(f"OpenSubdiv bridge unavailable: cannot build it ({exc}); {fix}") from None
     if not path.exists():
         raise BridgeUnavailableError(f"the OpenSubdiv bridge is not built ({path}); {fix}")
+    if not build and not _build.is_current():
+        raise BridgeUnavailableError(f"the OpenSubdiv bridge library {path} is stale or damaged; {fix}")
     try:
         lib = ctypes.CDLL(str(path))
         version = lib.symdecomp_osd_bridge_version

@@ -5,8 +5,8 @@ Uses only the standard library, so CI can run it before the package is installed
     python symdecomp/verify/opensubdiv/build.py [--force]   # prints the path of the built library
 
 The library goes to ``_build/`` next to this file (ignored by git), with a stamp naming the
-interface version and the hash of the source it was built from; a library without a matching
-stamp is rebuilt. The loader (:func:`symdecomp.verify.opensubdiv.load_bridge`) also runs a
+interface version and the hashes of the source and of the library itself; a library without a
+matching stamp (stale, truncated, altered) is rebuilt before it is ever loaded. The loader (:func:`symdecomp.verify.opensubdiv.load_bridge`) also runs a
 self-test before trusting it. It needs g++ and the
 OpenSubdiv headers and CPU library (Debian: ``libosd-dev``, ``libosdcpu3.5.0``).
 """
@@ -59,15 +59,20 @@ STAMP = BUILD_DIR / "libsymdecomp_osd.stamp"
 REBUILD_COMMAND = "python -m symdecomp.verify.opensubdiv.build --force"
 
 
-def _fingerprint() -> str:
-    digest = hashlib.sha256(SOURCE.read_bytes()).hexdigest()
-    return f"version {BRIDGE_VERSION} source sha256 {digest}\n"
+def _fingerprint(library: Path) -> str:
+    source = hashlib.sha256(SOURCE.read_bytes()).hexdigest()
+    built = hashlib.sha256(library.read_bytes()).hexdigest()
+    return f"version {BRIDGE_VERSION}\nsource sha256 {source}\nlibrary sha256 {built}\n"
 
 
 def is_current() -> bool:
-    """Whether the built library exists and was built from this source and interface version."""
+    """Whether the library exists, whole, built from this source for this interface version.
+
+    The stamp holds the library's own hash: a truncated or altered library is never loaded
+    (loading a truncated shared library can crash the process, not just fail).
+    """
     try:
-        return LIBRARY.is_file() and LIBRARY.stat().st_size > 0 and STAMP.read_text() == _fingerprint()
+        return LIBRARY.is_file() and STAMP.read_text() == _fingerprint(LIBRARY)
     except OSError:
         return False
 
@@ -103,7 +108,7 @@ def build(force: bool = False) -> Path:
             os.unlink(tmp)
     fd, tmp = tempfile.mkstemp(suffix=".stamp", dir=BUILD_DIR)
     with os.fdopen(fd, "w") as fh:
-        fh.write(_fingerprint())
+        fh.write(_fingerprint(LIBRARY))
     os.replace(tmp, STAMP)
     return LIBRARY
 

@@ -53,7 +53,10 @@ def write_derivations(out: Path, *, show_progress: bool = False) -> list[Path]:
 
 def _write(out: Path, files: dict[str, str]) -> list[Path]:
     """Replace the owned files of ``out`` by ``files`` in one step (stale owned files go, others stay)."""
-    return replace_owned_files(out, files, OWNED)
+    try:
+        return replace_owned_files(out, files, OWNED)
+    except OSError as exc:
+        raise InvalidInputError(f"--out {out}: cannot write there ({exc.strerror or exc})") from None
 
 
 def _out(text: str) -> Path:

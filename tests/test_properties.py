@@ -154,7 +154,8 @@ def test_tangent_and_ratio_refuse_bad_valences(n, j):
 
 
 @FAST
-@given(st.one_of(junk, st.dictionaries(st.one_of(st.integers(-2, 2), junk), junk, max_size=3)))
+@given(st.one_of(junk, st.dictionaries(st.one_of(st.integers(-2, 2), st.booleans(), st.none(), st.text(max_size=3),
+                                                 st.floats(allow_nan=False)), junk, max_size=3)))
 def test_stencils_refuse_junk_with_package_errors(weights):
     try:
         Stencil.from_weights(weights if not isinstance(weights, dict) else 0, weights, {})

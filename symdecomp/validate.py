@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import numbers
 import os
-from typing import Iterable, Mapping
+from collections.abc import Iterable, Mapping
 
 import sympy as sp
 

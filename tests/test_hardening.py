@@ -34,7 +34,7 @@ from symdecomp.errors import (
     InvalidValenceError,
     ResourceLimitError,
 )
-from symdecomp.schemes.matrices import characteristic_polynomial
+from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N

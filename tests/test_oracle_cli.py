@@ -1,6 +1,5 @@
 """The oracle command without OpenSubdiv: a clear message and exit status 3, no traceback."""
 
-import pytest
 
 import symdecomp.verify.opensubdiv as osd
 from symdecomp.cli import main

@@ -18,7 +18,7 @@ from symdecomp import (
     catmull_clark,
     cb_matrix,
     circ,
-    frequency_matrix,
+    block_eigenvalue_matrix,
     invariant_ratio_at,
     lifted_vector,
     root_of_unity,
@@ -203,7 +203,7 @@ def test_exact_values_are_exact_or_refused(value):
 def test_frequency_matrix_of_a_cb_matrix(m, k):
     B = cb_matrix([[[Fraction(i + 1, 3) for i in range(m)]]])
     try:
-        E = frequency_matrix(B, k)
+        E = block_eigenvalue_matrix(B, k)
     except SymdecompError:
         return
     assert 0 <= k < m

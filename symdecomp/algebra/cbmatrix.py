@@ -23,7 +23,7 @@ Two representations:
 >>> B = cb_matrix([[[R(1, 2), R(1, 4), 0], [1, 0, 0]], [[0, 0, 1], [R(1, 3), 0, 0]]])
 >>> B.block_count, B.order
 (2, 3)
->>> frequency_matrix(B, 0)
+>>> block_eigenvalue_matrix(B, 0)
 Matrix([
 [3/4,   1],
 [  1, 1/3]])
@@ -31,29 +31,29 @@ Matrix([
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Mapping, Sequence
 
 import sympy as sp
 
-from symdecomp.algebra.circulant import _offsets, _sequence, circ, coefficient, fourier_matrix, generating_polynomial, root_of_unity
+from symdecomp.algebra.circulant import _offsets, _sequence, circ, coefficient, fourier_matrix, fourier_row, generating_polynomial
 from symdecomp.errors import FrequencyOutOfRangeError, InvalidExpressionError, InvalidInputError, InvalidTypeError
-from symdecomp.validate import check_int, check_valence
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_int, check_valence
 
 __all__ = [
     "NotCirculantBlockError",
     "CBMatrix",
     "cb_matrix",
     "cb_matrix_from",
-    "frequency_matrix",
+    "block_eigenvalue_matrix",
     "lifted_vector",
     "BlockDiagonalization",
     "block_diagonalization",
     "cb_eigensystem",
     "constant_blocks",
-    "perturbed_frequency_zero_matrix",
+    "perturbed_block_eigenvalue_matrix",
     "SymbolicCirculant",
     "SymbolicCBMatrix",
 ]
@@ -63,7 +63,7 @@ class NotCirculantBlockError(InvalidInputError):
     """A block of a matrix meant to be a CB-matrix is not circulant (or has the wrong size)."""
 
 
-def _cb(cb) -> "CBMatrix":
+def _cb(cb) -> CBMatrix:
     if not isinstance(cb, CBMatrix):
         raise InvalidTypeError(f"expected a CBMatrix (see cb_matrix), got {type(cb).__name__}")
     return cb
@@ -100,9 +100,10 @@ class CBMatrix:
 
     def matrix(self) -> sp.ImmutableMatrix:
         """The full ``Km x Km`` matrix."""
-        return sp.ImmutableMatrix(sp.BlockMatrix([[self.block(p, q) for q in range(self.block_count)] for p in range(self.block_count)]).as_explicit())
+        blocks = [[self.block(p, q) for q in range(self.block_count)] for p in range(self.block_count)]
+        return sp.ImmutableMatrix(sp.BlockMatrix(blocks).as_explicit())
 
-    def __add__(self, other: "CBMatrix") -> "CBMatrix":
+    def __add__(self, other: CBMatrix) -> CBMatrix:
         if not isinstance(other, CBMatrix) or (other.block_count, other.order) != (self.block_count, self.order):
             return NotImplemented
         return CBMatrix(
@@ -154,14 +155,14 @@ def cb_matrix_from(matrix, order: int) -> CBMatrix:
     return cb_matrix(blocks)
 
 
-def frequency_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
+def block_eigenvalue_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
     """The ``K x K`` matrix ``E`` of Prop. 6.2 for the eigenvector ``v_k`` of the circulants.
 
     ``e_pq`` is the eigenvalue of ``C_pq`` on ``v_k``: ``sum_l c_l omega_m^(k l)`` (Eq. 8-9).
     """
     m = _cb(cb).order
     k = check_int(k, "frequency k", minimum=0, maximum=m - 1, error=FrequencyOutOfRangeError)
-    w = [root_of_unity(m, k * l) if m > 1 else sp.Integer(1) for l in range(m)]
+    w = fourier_row(m, k)
     return sp.ImmutableMatrix(
         cb.block_count,
         cb.block_count,
@@ -182,7 +183,7 @@ class BlockDiagonalization:
 
     #: Columns ``e_p (x) v_k``, ordered by frequency ``k`` and then block ``p``.
     basis: sp.ImmutableMatrix
-    #: The frequency matrices ``E_0, ..., E_{m-1}`` of Prop. 6.2.
+    #: The block-eigenvalue matrices ``E_0, ..., E_{m-1}`` of Prop. 6.2.
     frequency_matrices: tuple[sp.ImmutableMatrix, ...]
 
     def block_diagonal(self) -> sp.ImmutableMatrix:
@@ -191,7 +192,7 @@ class BlockDiagonalization:
 
 
 def block_diagonalization(cb: CBMatrix) -> BlockDiagonalization:
-    """The Fourier basis of Remark 6.1 and the frequency matrices ``E_k`` of ``cb``."""
+    """The Fourier basis of Remark 6.1 and the block-eigenvalue matrices ``E_k`` of ``cb``."""
     _cb(cb)
     K, m = cb.block_count, cb.order
     F = fourier_matrix(m) if m > 1 else sp.ImmutableMatrix([[1]])
@@ -201,7 +202,7 @@ def block_diagonalization(cb: CBMatrix) -> BlockDiagonalization:
         for p in range(K):
             columns.append(lifted_vector([1 if r == p else 0 for r in range(K)], v))
     basis = sp.ImmutableMatrix.hstack(*columns)
-    return BlockDiagonalization(basis, tuple(frequency_matrix(cb, k) for k in range(m)))
+    return BlockDiagonalization(basis, tuple(block_eigenvalue_matrix(cb, k) for k in range(m)))
 
 
 def cb_eigensystem(cb: CBMatrix) -> list[tuple[sp.Expr, int, list[sp.ImmutableMatrix]]]:
@@ -217,7 +218,7 @@ def cb_eigensystem(cb: CBMatrix) -> list[tuple[sp.Expr, int, list[sp.ImmutableMa
     F = fourier_matrix(m) if m > 1 else sp.ImmutableMatrix([[1]])
     for k in range(m):
         v = [F[k, s] for s in range(m)]
-        for value, _mult, vectors in sp.Matrix(frequency_matrix(cb, k)).eigenvects():
+        for value, _mult, vectors in sp.Matrix(block_eigenvalue_matrix(cb, k)).eigenvects():
             out.append((value, k, [lifted_vector(list(a), v) for a in vectors]))
     return out
 
@@ -242,8 +243,8 @@ def _constants(T) -> sp.Matrix:
     return sp.Matrix([[_exact(t, f"T[{p}][{q}]") for q, t in enumerate(r)] for p, r in enumerate(rows)])
 
 
-def perturbed_frequency_zero_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
-    """``E_0 + m T`` (Prop. 6.3, where the paper writes ``E_1``): the frequency-0 matrix of ``cb + A``.
+def perturbed_block_eigenvalue_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
+    """``E_0 + m T`` (Prop. 6.3, where the paper writes ``E_1``): the block-eigenvalue matrix ``E_0`` of ``cb + A``.
 
     The eigenvalues of ``cb + constant_blocks(T, m)`` are those of ``E_1, ..., E_{m-1}``
     (unchanged) and the ``K`` eigenvalues of this matrix.
@@ -252,7 +253,7 @@ def perturbed_frequency_zero_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
     T = _constants(T)
     if T.shape != (cb.block_count, cb.block_count):
         raise NotCirculantBlockError(f"T must be {cb.block_count} x {cb.block_count}, got {T.rows} x {T.cols}")
-    return sp.ImmutableMatrix(frequency_matrix(cb, 0) + cb.order * T)
+    return sp.ImmutableMatrix(block_eigenvalue_matrix(cb, 0) + cb.order * T)
 
 
 # --- symbolic order -------------------------------------------------------------------------
@@ -273,7 +274,7 @@ class SymbolicCirculant:
     constant: sp.Expr = sp.Integer(0)
 
     @classmethod
-    def from_offsets(cls, offsets: Mapping[int, object], constant=0) -> "SymbolicCirculant":
+    def from_offsets(cls, offsets: Mapping[int, object], constant=0) -> SymbolicCirculant:
         return cls(tuple(sorted(_offsets(offsets).items())), coefficient(constant, "constant"))
 
     def symbol(self) -> sp.Expr:
@@ -298,7 +299,7 @@ class SymbolicCirculant:
         banded = circ_from_offsets({k: w.subs(N, n) for k, w in self.offsets}, n)
         return sp.ImmutableMatrix(banded + sp.ones(n, n) * self.constant.subs(N, n))
 
-    def minus_constant(self, value) -> "SymbolicCirculant":
+    def minus_constant(self, value) -> SymbolicCirculant:
         """``C - value*J``."""
         return SymbolicCirculant(self.offsets, sp.expand(self.constant - coefficient(value, "value")))
 
@@ -314,7 +315,7 @@ class SymbolicCBMatrix:
     def block_count(self) -> int:
         return len(self.blocks)
 
-    def frequency_matrix(self, *, zero_frequency: bool, order=N) -> sp.ImmutableMatrix:
+    def block_eigenvalue_matrix(self, *, zero_frequency: bool, order=N) -> sp.ImmutableMatrix:
         """``E`` of Prop. 6.2: in ``omega`` for ``k != 0``, or the ``k = 0`` matrix (with ``n``)."""
         return sp.ImmutableMatrix(
             [[b.eigenvalue(zero_frequency=zero_frequency, order=order) for b in row] for row in self.blocks]

@@ -29,9 +29,9 @@ import sympy as sp
 
 from symdecomp.algebra.cbmatrix import SymbolicCBMatrix, SymbolicCirculant
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.validate import check_valence
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = [
     "BorderedCBMatrix",

@@ -21,8 +21,8 @@ import os
 import signal
 import sys
 
-from symdecomp.errors import InternalError, ResourceLimitError, SymdecompError, UnavailableError
 from symdecomp.cli.common import LIMITS, Parser
+from symdecomp.errors import InternalError, ResourceLimitError, SymdecompError, UnavailableError
 
 __all__ = ["main", "build_parser", "EXIT_CODES"]
 
@@ -102,7 +102,7 @@ def main(argv=None) -> int:
             _install(signal.SIGTERM, previous)
     except UnavailableError as exc:
         return _fail(exc, 3)
-    except (InternalError,) as exc:
+    except InternalError as exc:
         return _fail(f"internal error (please report): {exc}", 1)
     except ResourceLimitError as exc:
         return _fail(exc, 2)

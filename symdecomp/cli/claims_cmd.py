@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from symdecomp.claims import Status, all_claims, check_claim
 import argparse
 
+from symdecomp.claims import Status, all_claims, check_claim
 from symdecomp.cli.common import Once, flag, print_json, progress
 
 

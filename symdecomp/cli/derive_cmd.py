@@ -8,10 +8,10 @@ import sys
 from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.errors import InvalidInputError
-from symdecomp.output.latex import aslatex, derivation_files
 from symdecomp.cli.common import Once, flag, given, print_json, progress
 from symdecomp.cli.files import check_output_directory, replace_owned_files
+from symdecomp.errors import InvalidInputError
+from symdecomp.output.latex import aslatex, derivation_files
 
 __all__ = ["register", "run", "write_derivations"]
 

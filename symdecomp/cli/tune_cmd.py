@@ -9,13 +9,12 @@ nice elliptic behaviour (both defects, from their closed forms in ``n``) for ``n
 
 from __future__ import annotations
 
-
 import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.tuning import tune
-from symdecomp.errors import InvalidInputError
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, digits, flag, print_json, progress, valence
+from symdecomp.errors import InvalidInputError
 
 
 def register(sub) -> None:

@@ -34,7 +34,6 @@ class BridgeUnavailableError(UnavailableError):
 
 _lock = threading.Lock()
 _lib = None
-_why_not: str | None = None
 
 
 def load_bridge(build: bool = True):
@@ -120,11 +119,6 @@ def bridge_available(build: bool = True) -> bool:
         return True
     except BridgeUnavailableError:
         return False
-
-
-def why_unavailable() -> str | None:
-    """The reason the last :func:`load_bridge` failed (None if it has not failed)."""
-    return _why_not
 
 
 @dataclass(frozen=True)

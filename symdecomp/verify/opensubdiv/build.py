@@ -6,9 +6,9 @@ Uses only the standard library, so CI can run it before the package is installed
 
 The library goes to ``_build/`` next to this file (ignored by git), with a stamp naming the
 interface version and the hashes of the source and of the library itself; a library without a
-matching stamp (stale, truncated, altered) is rebuilt before it is ever loaded. The loader (:func:`symdecomp.verify.opensubdiv.load_bridge`) also runs a
-self-test before trusting it. It needs g++ and the
-OpenSubdiv headers and CPU library (Debian: ``libosd-dev``, ``libosdcpu3.5.0``).
+matching stamp (stale, truncated, altered) is rebuilt before it is ever loaded. The loader
+(:func:`symdecomp.verify.opensubdiv.load_bridge`) also runs a self-test before trusting it.
+It needs g++ and the OpenSubdiv headers and CPU library (Debian: ``libosd-dev``, ``libosdcpu3.5.0``).
 """
 
 from __future__ import annotations

@@ -23,6 +23,7 @@ value, so a coefficient whose ball lies right of 0 *is* positive.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from math import comb
 
@@ -131,8 +132,11 @@ def certify_sign(nets, max_depth: int = 6) -> SignCertificate:
     if undecided is not None or len(signs) != 1:
         return SignCertificate("undecided", None, depth, pieces, undecided)
     sign = signs.pop()
-    bound = min((sign * c).lower() for leaf in leaves for c in leaf)
-    return SignCertificate("positive" if sign > 0 else "negative", float(bound), depth, pieces)
+    bound = min(((sign * c).lower() for leaf in leaves for c in leaf), key=float)
+    value = float(bound)
+    if not flint.arb(value) <= bound:  # round down, so that the float is still a lower bound
+        value = math.nextafter(value, -math.inf)
+    return SignCertificate("positive" if sign > 0 else "negative", value, depth, pieces)
 
 
 def curve_angle(points, max_depth: int = 12) -> flint.arb | None:

@@ -24,6 +24,7 @@ is exact: the Eq. 43 characteristic polynomial is ``(x - 1) q(x)`` over ``Q``, a
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -38,7 +39,7 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
-__all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text"]
+__all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down"]
 
 _X = sp.Symbol("x")
 
@@ -51,6 +52,12 @@ def ball_text(ball, digits: int = 6) -> str:
         else:
             return f"{ball.real.str(digits, radius=False)} {'+' if ball.imag > 0 else '-'} {abs(ball.imag).str(digits, radius=False)}i"
     return ball.str(digits, radius=False)
+
+
+def float_down(x: flint.arb) -> float:
+    """A float ``<=`` every point of the ball ``x`` (its lower end, rounded down, not to nearest)."""
+    value = float(x.lower())
+    return value if flint.arb(value) <= x.lower() else math.nextafter(value, -math.inf)
 
 
 @dataclass(frozen=True)
@@ -173,7 +180,7 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
             )
     if not top < 1:
         return SpectralResult(n, "not-c1" if top > 1 else "undecided", f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus")
-    gap = float((top - second).lower())
+    gap = float_down((top - second).lower())
     if dom.frequency == 0 or 2 * dom.frequency == n:
         tangent = max((e for e in eigen if e.frequency == 1), key=lambda e: abs(e.value).mid())
         if dom.defective:

@@ -187,3 +187,11 @@ def test_command_line_json_and_exit_status(capsys):
         assert {"reason", "method", "lambda"} <= set(row)
     assert main(["c1", "--n", "3"]) == 0
     assert "n =   3: C1 certified" in capsys.readouterr().out
+
+
+def test_command_line_rejects_a_bad_depth_in_one_line(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["c1", "--n", "3", "--depth", "13"])
+    assert exc.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err[-1].endswith("argument --depth: expected an integer from 0 to 12, got 13")

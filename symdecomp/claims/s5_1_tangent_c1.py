@@ -9,22 +9,20 @@ weights ``alpha = beta = 0`` break it at ``n = 3``.
 
 from __future__ import annotations
 
-import math
-
 import sympy as sp
 
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.verify.c1 import c1_test
+from symdecomp.verify.c1_spectrum import round_down
 
 #: The valences of the table (a second; ``symdecomp c1`` does more).
 VALENCES = (3, 16)
 
 
-def _down(x: float, digits: int = 4) -> sp.Float:
-    """``x`` rounded *down* to ``digits`` significant digits (a lower bound stays a lower bound)."""
-    scale = 10 ** (digits - 1 - math.floor(math.log10(abs(x))))
-    return sp.Float(math.floor(x * scale) / scale, digits)
+def _down(x: float) -> sp.Float:
+    """A lower bound shown to 4 significant digits, rounded down."""
+    return sp.Float(round_down(x), 4)
 
 
 @claim(

@@ -51,7 +51,7 @@ from symdecomp.analysis.characteristic import frequency_eigenvector, inner_bound
 from symdecomp.errors import check_valence
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, curve_angle, jacobian_net
-from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, spectral_conditions
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down, spectral_conditions
 
 __all__ = ["C1Result", "c1_test", "characteristic_nets", "METHOD"]
 
@@ -153,8 +153,8 @@ def _test(scheme: Scheme, n: int, max_depth: int, prec: int) -> C1Result:
     if winding is None:
         return C1Result(verdict="undecided", reason="the winding number of the inner boundary is not certified", **base)
     if winding == s:
-        return C1Result(verdict="c1", reason=f"lambda = {lam} (frequency {j}, gap {spectral.gap:.4g}); the characteristic "
-                        f"map is regular (|J| >= {sign.lower_bound:.4g}) and winds once: injective", **base)
+        return C1Result(verdict="c1", reason=f"lambda = {lam} (frequency {j}, gap >= {round_down(spectral.gap)}); the "
+                        f"characteristic map is regular (|J| >= {round_down(sign.lower_bound)}) and winds once: injective", **base)
     if abs(winding) > 1:
         return C1Result(verdict="not-c1", reason=f"the characteristic map (lambda = {lam} at frequency {j}) is regular but "
                         f"winds {winding} times around the origin: it is not injective", **base)

@@ -39,7 +39,7 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
-__all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down"]
+__all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down", "round_down"]
 
 _X = sp.Symbol("x")
 
@@ -58,6 +58,16 @@ def float_down(x: flint.arb) -> float:
     """A float ``<=`` every point of the ball ``x`` (its lower end, rounded down, not to nearest)."""
     value = float(x.lower())
     return value if flint.arb(value) <= x.lower() else math.nextafter(value, -math.inf)
+
+
+def round_down(x: float, digits: int = 4) -> float:
+    """``x > 0`` rounded *down* to ``digits`` significant digits, so that a lower bound stays one when printed.
+
+    >>> round_down(0.27999076), round_down(0.25)
+    (0.2799, 0.25)
+    """
+    scale = 10 ** (digits - 1 - math.floor(math.log10(x)))
+    return math.floor(x * scale) / scale
 
 
 @dataclass(frozen=True)
@@ -143,14 +153,9 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
     return [Eigen(r1, 0, 1, root=0, pair=pair), Eigen(r2, 0, 1, root=1, pair=pair)], None
 
 
-def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
-    """Reif's spectral conditions at valence ``n``, certified (see the module docstring)."""
-    n = check_valence(n)
-    check_applicable(scheme)
-    eigen, failure = _frequency_zero(scheme, n)
-    if failure:
-        return SpectralResult(n, "not-c1", failure)
-    outer = []
+def _other_frequencies(scheme: Scheme, n: int) -> tuple[list[Eigen], list[tuple[int, flint.arb]]]:
+    """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``)."""
+    eigen, outer = [], []
     for j in range(0, n // 2 + 1):
         B = frequency_block(scheme, n, j)
         S = flint.acb_mat([[B[2 + r, 2 + c] for c in range(4)] for r in range(4)])
@@ -161,6 +166,18 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
         mult = 1 if 2 * j == n else 2
         r1, r2 = _quadratic_roots(t, d)
         eigen += [Eigen(r1, j, mult, root=0), Eigen(r2, j, mult, root=1)]
+    return eigen, outer
+
+
+def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
+    """Reif's spectral conditions at valence ``n``, certified (see the module docstring)."""
+    n = check_valence(n)
+    check_applicable(scheme)
+    eigen, failure = _frequency_zero(scheme, n)
+    if failure:
+        return SpectralResult(n, "not-c1", failure)
+    more, outer = _other_frequencies(scheme, n)
+    eigen += more
     dom = max(eigen, key=lambda e: abs(e.value).mid())
     top = abs(dom.value)
     # the conjugate of a non-real frequency-0 root has the same modulus: compare the pair as one
@@ -200,7 +217,7 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
         disc = (t * t - 4 * d).real
         if disc > 0:
             return SpectralResult(n, "ok", f"lambda = {ball_text(dom.value)} at frequency {dom.frequency}, real, "
-                                  f"multiplicity 2, gap {gap:.4g}", dom, gap, float(second.upper()))
+                                  f"multiplicity 2, gap >= {round_down(gap)}", dom, gap, float(second.upper()))
     if not dom.value.imag.contains(0):
         return SpectralResult(n, "not-c1", f"the subdominant eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not real", dom)
     return SpectralResult(n, "undecided", f"could not show that the subdominant eigenvalue {ball_text(dom.value)} is real and simple", dom)

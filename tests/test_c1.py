@@ -195,3 +195,37 @@ def test_command_line_rejects_a_bad_depth_in_one_line(capsys):
     assert exc.value.code == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err[-1].endswith("argument --depth: expected an integer from 0 to 12, got 13")
+
+
+def test_complex_subdominant_eigenvalue_is_not_c1():
+    """Edge rule at O with the a_{i+-1} weights 1/16 + 3(n - 4)/16 (Catmull-Clark's at n = 4): at n = 5 M_1 has complex roots."""
+    cc = catmull_clark()
+    t = R(1, 16) + R(3, 16) * (N - 4)
+    b = (1 - 2 * R(3, 8) - 2 * t) / 2
+    edge = Stencil.from_weights(R(3, 8), {-1: t, 0: R(3, 8), 1: t}, {-1: b, 0: b})
+    scheme = Scheme("complex", edge, cc.face_rule, cc.vertex_rule)
+    check_applicable(scheme)
+    r = c1_test(scheme, 5)
+    assert r.verdict == "not-c1" and "not real" in r.reason and r.spectral.subdominant.frequency == 1
+    lam = r.spectral.subdominant.value
+    # the roots of x^2 - tr x + det for M_1 at omega_5: tr and det from the exact matrix, numerically
+    import numpy as np
+    from symdecomp.analysis.frequency import per_frequency_matrix_at
+
+    exact = per_frequency_matrix_at(scheme, 5, 1).subs(N, 5)  # the weights depend on n
+    M = np.array([[complex(sp.N(x, 30)) for x in row] for row in exact.tolist()])
+    roots = np.linalg.eigvals(M)
+    assert min(abs(roots - complex(float(lam.real.mid()), float(lam.imag.mid())))) < 1e-12
+    assert abs(abs(roots[0]) - abs(roots[1])) < 1e-12 and abs(roots[0].imag) > 0.2
+
+
+def test_subdominant_eigenvalue_is_the_closed_form_of_eq_34():
+    """The per-frequency Arb route agrees with the paper's closed form at j = 1 (c = cos(pi/n)), to the ball's width."""
+    from symdecomp.analysis.tangent import tangent_eigenvalues
+
+    dominant = tangent_eigenvalues(catmull_clark()).dominant
+    c = sorted(dominant.free_symbols, key=str)[0]
+    for n in range(3, 17):
+        lam = spectral_conditions(catmull_clark(), n).subdominant.value
+        exact = dominant.subs(c, sp.cos(sp.pi / n))
+        assert lam.imag.contains(0) and abs(float(lam.real.mid()) - float(sp.N(exact, 30))) < 1e-13

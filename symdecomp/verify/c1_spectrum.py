@@ -82,7 +82,7 @@ class Eigen:
     defective: bool = False
     #: Index of the root within its block (0: the larger in modulus).
     root: int = 0
-    #: One of the two non-real roots of the (rational) Eq. 43 block: a conjugate pair of equal modulus.
+    #: One of two complex conjugate roots of the same block (real trace and determinant): equal moduli.
     pair: bool = False
 
 
@@ -114,7 +114,16 @@ def _real_at(scheme: Scheme, n: int) -> bool:
 
 
 def _quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
-    root = (t * t - 4 * d).sqrt()
+    """The roots of ``x^2 - t x + d``, larger modulus first (midpoints; a double root gets two equal balls)."""
+    disc = t * t - 4 * d
+    if disc.real.contains(0) and disc.imag.contains(0):
+        # near a double root: |sqrt(disc)| <= sqrt(|disc|), a far tighter ball than Arb's branch-cut-safe sqrt
+        r = abs(disc).upper().sqrt().upper()
+        root = flint.acb(flint.arb(0, r), flint.arb(0, r))
+    elif disc.real < 0:
+        root = flint.acb(0, 1) * (-disc).sqrt()  # away from the branch cut of sqrt: either root of disc will do
+    else:
+        root = disc.sqrt()
     a, b = (t + root) / 2, (t - root) / 2
     return (a, b) if abs(a).mid() >= abs(b).mid() else (b, a)
 
@@ -156,6 +165,7 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
 def _other_frequencies(scheme: Scheme, n: int) -> tuple[list[Eigen], list[tuple[int, flint.arb]]]:
     """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``)."""
     eigen, outer = [], []
+    real = _real_at(scheme, n)
     for j in range(0, n // 2 + 1):
         B = frequency_block(scheme, n, j)
         S = flint.acb_mat([[B[2 + r, 2 + c] for c in range(4)] for r in range(4)])
@@ -165,7 +175,8 @@ def _other_frequencies(scheme: Scheme, n: int) -> tuple[list[Eigen], list[tuple[
         t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
         mult = 1 if 2 * j == n else 2
         r1, r2 = _quadratic_roots(t, d)
-        eigen += [Eigen(r1, j, mult, root=0), Eigen(r2, j, mult, root=1)]
+        pair = real and (t * t - 4 * d).real < 0  # real trace and determinant: the roots are conjugate
+        eigen += [Eigen(r1, j, mult, root=0, pair=pair), Eigen(r2, j, mult, root=1, pair=pair)]
     return eigen, outer
 
 
@@ -180,8 +191,8 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
     eigen += more
     dom = max(eigen, key=lambda e: abs(e.value).mid())
     top = abs(dom.value)
-    # the conjugate of a non-real frequency-0 root has the same modulus: compare the pair as one
-    others = [e for e in eigen if e is not dom and not (dom.pair and e.pair)]
+    # the conjugate of a non-real root of the same block has the same modulus: compare the pair as one
+    others = [e for e in eigen if e is not dom and not (dom.pair and e.pair and e.frequency == dom.frequency)]
     second = max([abs(e.value) for e in others] + [b for _, b in outer], key=lambda x: x.upper())
     for e in others:
         if not abs(e.value) < top:
@@ -198,12 +209,15 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
     if not top < 1:
         return SpectralResult(n, "not-c1" if top > 1 else "undecided", f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus")
     gap = float_down((top - second).lower())
+    if dom.pair:
+        return SpectralResult(
+            n, "not-c1", f"the largest eigenvalues after 1 are the complex conjugate pair {ball_text(dom.value)} at "
+            f"frequency {dom.frequency}: the subdominant eigenvalue is not real", dom, gap, float(second.upper()),
+        )
     if dom.frequency == 0 or 2 * dom.frequency == n:
         tangent = max((e for e in eigen if e.frequency == 1), key=lambda e: abs(e.value).mid())
         if dom.defective:
             what = "has algebraic multiplicity 2 but geometric multiplicity 1 (a Jordan block)"
-        elif dom.pair:
-            what = "is not real (a complex conjugate pair of the Eq. 43 block)"
         else:
             what = f"has multiplicity {dom.multiplicity}, not 2"
         return SpectralResult(

@@ -21,9 +21,11 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
                    (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
-                   ``support``), rings iterated step by step (``evolution``)
+                   ``support``), rings iterated step by step (``evolution``), the 2-ring
+                   matrix by frequency and the characteristic map's nets (``characteristic``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
-                   (``certify``), OpenSubdiv (``oracle``, ``opensubdiv``)
+                   (``certify``), OpenSubdiv (``oracle``, ``opensubdiv``); certified C1 by
+                   Reif's test (``c1``, ``c1_spectrum``, Bernstein-Bezier nets ``bezier``)
 ``claims/``        the paper's claims, one module per section, and their registry
 ``output/``        LaTeX (``latex``, one entry point ``aslatex``) and figures (``plotting``)
 ``cli/``           the ``symdecomp`` command, one module per subcommand
@@ -63,6 +65,7 @@ from symdecomp.analysis.frequency import circulant_blocks, frequency_zero_matrix
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
 from symdecomp.verify.certify import Certificate, certify
+from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.verify.numeric import CheckStatus, NumericCheck, numeric_check
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
@@ -148,6 +151,9 @@ __all__ = [
     "NumericCheck",
     "certify",
     "Certificate",
+    # C1 at an extraordinary vertex (Reif's test)
+    "c1_test",
+    "C1Result",
     "CheckStatus",
     "exact_subdivision_matrix",
     "characteristic_polynomial",

@@ -229,3 +229,9 @@ def test_subdominant_eigenvalue_is_the_closed_form_of_eq_34():
         lam = spectral_conditions(catmull_clark(), n).subdominant.value
         exact = dominant.subs(c, sp.cos(sp.pi / n))
         assert lam.imag.contains(0) and abs(float(lam.real.mid()) - float(sp.N(exact, 30))) < 1e-13
+
+
+def test_irrational_weights_get_one_line_not_a_traceback():
+    scheme = catmull_clark(R(3, 2) / N**2 + sp.sqrt(2) / 100, R(1, 4) / N**2)
+    with pytest.raises(InvalidSchemeError, match="needs rational weights at each valence; at n = 5"):
+        c1_test(scheme, 5)

@@ -167,8 +167,8 @@ def omega_ball(n: int, j: int) -> flint.acb:
 
 
 def _ball(w) -> flint.acb:
-    w = sp.nsimplify(w) if not isinstance(w, (sp.Basic, Fraction)) else w
-    if isinstance(w, Fraction):
+    if isinstance(w, (Fraction, int)):
+        w = Fraction(w)
         return flint.acb(flint.fmpq(w.numerator, w.denominator))
     w = sp.sympify(w)
     if not w.is_Rational:

@@ -34,7 +34,7 @@ import sympy as sp
 from symdecomp.analysis.characteristic import check_applicable, frequency_block
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import frequency_zero_matrix, per_frequency_matrix
-from symdecomp.errors import check_valence
+from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -149,7 +149,13 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
         return [], "1 is not an eigenvalue of the frequency-0 block (the rules are not affine)"
     if q.eval(1) == 0:
         return [], "the eigenvalue 1 is not simple: it is a double root of the frequency-0 block (Eq. 43)"
-    _, b, c = (sp.Rational(x) for x in q.all_coeffs())
+    coefficients = q.all_coeffs()
+    if not all(sp.sympify(x).is_Rational for x in coefficients):
+        raise InvalidSchemeError(
+            f"scheme {scheme.name!r}: the C1 test needs rational weights at each valence; at n = {n} the frequency-0 "
+            f"block has the characteristic polynomial {p.as_expr()}"
+        )
+    _, b, c = (sp.Rational(x) for x in coefficients)
     disc = b * b - 4 * c
     if disc == 0:
         mu = -b / 2

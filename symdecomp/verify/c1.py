@@ -31,6 +31,13 @@ swept by sector 0's part of the inner boundary (from the level-1 point ``(1, 0)`
 over curve pieces whose control points lie in an open half-plane through 0
 (:func:`~symdecomp.verify.bezier.curve_angle`), so the sum is rigorous.
 
+**Scope.** Schemes of Catmull-Clark type (:func:`~symdecomp.analysis.characteristic.check_applicable`).
+For Loop's scheme the same verdict logic applies with three pieces replaced: the per-frequency
+2-ring blocks of the triangle mesh, the ring as quartic box-spline sub-patches (triangular
+Bernstein-Bezier nets of degree 4, so a Jacobian of degree 6 with triangular de Casteljau
+subdivision), and the inner boundary's quartic curves; :func:`~symdecomp.verify.bezier.curve_angle`
+and the spectral comparisons are shared. That is not done yet.
+
 The verdict is ``c1`` when everything is certified, ``not-c1`` when a condition is shown to fail
 (named, with its numbers), ``undecided`` otherwise (saying what would decide it).
 

@@ -210,6 +210,7 @@ def test_complex_subdominant_eigenvalue_is_not_c1():
     lam = r.spectral.subdominant.value
     # the roots of x^2 - tr x + det for M_1 at omega_5: tr and det from the exact matrix, numerically
     import numpy as np
+
     from symdecomp.analysis.frequency import per_frequency_matrix_at
 
     exact = per_frequency_matrix_at(scheme, 5, 1).subs(N, 5)  # the weights depend on n

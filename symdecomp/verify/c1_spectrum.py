@@ -33,7 +33,7 @@ import sympy as sp
 
 from symdecomp.analysis.characteristic import check_applicable, frequency_block
 from symdecomp.analysis.defective import jordan_block_size
-from symdecomp.analysis.frequency import frequency_zero_matrix, per_frequency_matrix
+from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -142,7 +142,7 @@ def _outer_bound(S: flint.acb_mat) -> flint.arb:
 
 def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
     """The non-unit eigenvalues of Eq. 43 (exact where it matters); a failure reason if 1 is not simple."""
-    A = sp.Matrix(frequency_zero_matrix(scheme, n))
+    A = sp.Matrix(recursion_matrix(scheme, n))
     p = sp.Poly((_X * sp.eye(3) - A).det(), _X)
     q, r = sp.div(p, sp.Poly(_X - 1, _X))
     if r.as_expr() != 0:
@@ -213,7 +213,10 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
                 f"not below |lambda| = {ball_text(top)}",
             )
     if not top < 1:
-        return SpectralResult(n, "not-c1" if top > 1 else "undecided", f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus")
+        return SpectralResult(
+            n, "not-c1" if top > 1 else "undecided",
+            f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus",
+        )
     gap = float_down((top - second).lower())
     if dom.pair:
         return SpectralResult(

@@ -25,6 +25,8 @@ INTEGER_SLOTS = [
     (["check", "--n", "3", "--dps"], [], "--dps"),
     (["oracle", "--levels"], [], "--levels"),
     (["charpoly"], [], "argument N"),
+    (["c1", "--n"], [], "--n"),
+    (["c1", "--n", "3", "--depth"], [], "--depth"),
 ]
 
 #: Out of range values, with the word the message names.
@@ -56,6 +58,11 @@ OUT_OF_RANGE = [
     (["oracle", "--n", "65"], "--n"),
     (["oracle", "--seed", "-1"], "--seed"),
     (["oracle", "--seed", "4294967296"], "--seed"),
+    (["c1", "--n", "2"], "--n"),
+    (["c1", "--n", "129"], "--n"),
+    (["c1", "--n", "3", "--depth", "13"], "--depth"),
+    (["c1", "--n", "3", "--depth", "-1"], "--depth"),
+    (["c1", "--n", "3", "--n", "4"], "more than once"),
 ]
 
 #: Wrong options, repeated options, contradictions, unknown names.

@@ -15,10 +15,10 @@ from hypothesis import strategies as st
 
 from symdecomp import (
     SymdecompError,
+    block_eigenvalue_matrix,
     catmull_clark,
     cb_matrix,
     circ,
-    block_eigenvalue_matrix,
     invariant_ratio_at,
     lifted_vector,
     root_of_unity,

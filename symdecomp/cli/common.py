@@ -50,6 +50,8 @@ LIMITS = {
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
     "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),
+    "c1": (128, "each valence needs the spectrum of the 2-ring matrix and interval bounds of its characteristic map"),
+    "c1 --depth": (12, "each level splits a piece in four: depth 12 is 16 million pieces"),
 }
 
 _INTEGER = re.compile(r"[+-]?[0-9]{1,12}", re.ASCII)

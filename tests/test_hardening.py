@@ -272,3 +272,31 @@ def test_a_bridge_that_returns_nothing_is_reported_with_the_fix(private_bridge, 
     assert main(["oracle", "--n", "4", "--levels", "2"]) == 3
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "self-test" in err[0]
+
+
+def test_no_progress_bar_when_stderr_is_not_a_terminal(capsys):
+    from symdecomp.cli.common import progress
+
+    assert list(progress(range(5), 5, "work")) == [0, 1, 2, 3, 4]
+    assert capsys.readouterr().err == ""
+
+    class Terminal:
+        text = ""
+
+        def isatty(self):
+            return True
+
+        def write(self, s):
+            Terminal.text += s
+
+        def flush(self):
+            pass
+
+    import sys as _sys
+
+    real, _sys.stderr = _sys.stderr, Terminal()
+    try:
+        assert list(progress(range(5), 5, "work")) == [0, 1, 2, 3, 4]
+    finally:
+        _sys.stderr = real
+    assert Terminal.text.count("\r") == 5 and "5/5" in Terminal.text

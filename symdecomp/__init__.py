@@ -23,11 +23,14 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
                    (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
-                   ``support``), rings iterated step by step (``evolution``), where a 1-ring
-                   component starts on one eigenvector of M_j (Eq. 35-38, ``components``)
+                   ``support``), rings iterated step by step (``evolution``), the 2-ring
+                   matrix by frequency and the characteristic map's nets (``characteristic``),
+                   where a 1-ring component starts on one eigenvector of M_j (Eq. 35-38,
+                   ``components``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
                    (``certify``), both returning a ``CrossCheckResult`` (``result``),
-                   OpenSubdiv (``oracle``, ``opensubdiv``)
+                   OpenSubdiv (``oracle``, ``opensubdiv``); certified C1 by Reif's test
+                   (``c1``, ``c1_spectrum``, Bernstein-Bezier nets ``bezier``)
 ``claims/``        the paper's claims, one module per section, and their registry; every claim
                    is checked for a scheme (``check_claim(label, scheme)``); ``applicability``
                    and ``evidence`` hold what several checks share
@@ -79,6 +82,7 @@ from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
+from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
@@ -154,6 +158,9 @@ __all__ = [
     "NumericCheck",
     "certify",
     "Certificate",
+    # C1 at an extraordinary vertex (Reif's test)
+    "c1_test",
+    "C1Result",
     "CrossCheckStatus",
     "CrossCheckResult",
     "exact_subdivision_matrix",

@@ -45,6 +45,7 @@ EXPECTED = {
     "Eq. 39": C,  # B^j = r A^j, not A^j = r B^j
     "Eq. 39 (n = 4)": V,
     "Eq. 39 (n → ∞)": P,
+    "C1 (Reif's test)": V,
     # Section 5.2
     "Eq. 40": P,
     "Eq. 41": P,

@@ -120,6 +120,7 @@ TABLE = [
     ("Eq. 39 (n = 4)", "moved", R),
     ("Eq. 39 (n = 4)", "tuned", V),
     ("Eq. 39 (n → ∞)", "moved", R),
+    ("C1 (Reif's test)", "O fixed", R),
     # Section 5.2
     ("Proposition 5.2", "asymmetric", R),
     ("Proposition 5.2", "moved", P),

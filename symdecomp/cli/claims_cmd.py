@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import argparse
+
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import add_scheme_option, print_json, progress, resolve_scheme
+from symdecomp.cli.common import Once, add_scheme_option, flag, print_json, progress
 
 
 def register(sub) -> None:
@@ -11,23 +13,29 @@ def register(sub) -> None:
         "claims",
         help="check the paper's claims and list their statuses",
         description="Check every claim of the paper registered in symdecomp and print one row per claim: "
-        "label, status (proved, verified, numeric, refuted, corrected, error) and a line of evidence. "
-        "Every claim is checked for the scheme given by --scheme (a name or a TOML file; default "
-        "catmull-clark): the printed statement is one input, the scheme the other. Statuses: proved, "
-        "verified, numeric, refuted, corrected, undecided, not applicable (with the reason), error. "
-        "Exit status 1 if any check failed to run (status 'error'); refuted or corrected claims are "
-        "findings about the paper, not failures.",
+        "label, status (proved, verified, numeric, refuted, corrected, undecided, not applicable, error) and a line "
+        "of evidence. Every claim is checked for the scheme given by --scheme (a name or a TOML file; default "
+        "catmull-clark): the printed statement is one input, the scheme the other. Exit status 1 if any check "
+        "failed to run (status 'error'); refuted or corrected claims are findings about the paper, not failures.",
     )
-    p.add_argument("--json", action="store_true", help="print a JSON list of {label, section, title, status, evidence, ...}")
-    p.add_argument("--section", help="only the claims of this section of the paper (e.g. 5.1)")
+    flag(p, "--json", help="print a JSON list of {label, section, title, status, evidence, ...}")
+    p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
     add_scheme_option(p)
-    p.add_argument("--no-progress", action="store_true", help="do not draw a progress bar on stderr")
+    flag(p, "--no-progress", help="do not draw a progress bar on stderr")
     p.set_defaults(func=run)
 
 
+def section(text: str) -> str:
+    """argparse type: a section of the paper that has claims (``5`` or ``5.1``)."""
+    sections = sorted({c.section for c in all_claims()})
+    known = set(sections) | {s.split(".")[0] for s in sections}
+    if text not in known:
+        raise argparse.ArgumentTypeError(f"no claims in section {text!r}; known sections: {', '.join(sections)}")
+    return text
+
+
 def run(args) -> int:
-    resolve_scheme(args)  # also when run() is called without main()
     claims = all_claims()
     if args.section:
         claims = [c for c in claims if c.section == args.section or c.section.startswith(args.section + ".")]
@@ -35,9 +43,9 @@ def run(args) -> int:
         wanted = set(args.label)
         unknown = wanted - {c.label for c in claims}
         if unknown:
-            from symdecomp.errors import SymdecompError
+            from symdecomp.errors import InvalidInputError
 
-            raise SymdecompError(f"no claim labelled {', '.join(sorted(unknown))}")
+            raise InvalidInputError(f"no claim labelled {', '.join(sorted(unknown))}")
         claims = [c for c in claims if c.label in wanted]
     rows = []
     for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):
@@ -68,5 +76,5 @@ def run(args) -> int:
         counts = {}
         for r in rows:
             counts[r["status"]] = counts.get(r["status"], 0) + 1
-        print(f"{len(rows)} claims for the scheme {args.scheme.name!r}: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())))
+        print(f"{len(rows)} claims: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())))
     return 1 if any(r["status"] == Status.ERROR.value for r in rows) else 0

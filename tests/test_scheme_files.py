@@ -82,7 +82,7 @@ def test_command_line_one_line_exit_2(tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "float" in err and "Traceback" not in err
     assert main(["spectrum", "--scheme", "no-such-scheme", "5"]) == 2
-    assert "neither a known name" in capsys.readouterr().err
+    assert "unknown scheme" in capsys.readouterr().err
 
 
 def test_command_line_takes_a_file(tmp_path, capsys):

@@ -72,7 +72,7 @@ def load_scheme(name_or_path: str | os.PathLike) -> Scheme:
         return SCHEMES[text_name]()
     if not os.path.isfile(text_name):
         raise InvalidSchemeError(
-            f"scheme {text_name!r} is neither a known name ({', '.join(SCHEMES)}) nor a readable file"
+            f"unknown scheme {text_name!r}: neither a known name ({', '.join(SCHEMES)}) nor a readable file"
         )
     try:
         with open(text_name, "rb") as handle:

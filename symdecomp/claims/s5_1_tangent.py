@@ -83,7 +83,8 @@ def _eq31_32(scheme: Scheme) -> CheckResult:
     ok = is_zero(printed - staged) and is_zero(staged - derived)
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "the printed combinations equal the staged rules composed, and the matrix derived from Eq. 14-15, for every n",
+        "the printed combinations equal the staged rules composed, and the matrix derived from Eq. 14-15, for every n"
+        if ok else "the printed combinations are not the matrix derived from this scheme's rules",
         counterexample=None if ok else Text("printed minus derived: ", (printed - derived).applyfunc(sp.expand)),
         steps=(Step("Eq. 31-32 as a matrix on $(A^j, B^j)$:", printed), Step("Derived from the scheme's rules:", derived)),
     )
@@ -103,7 +104,8 @@ def _eq33(scheme: Scheme) -> CheckResult:
     ok = is_zero(diff)
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "M_j derived by applying Eq. 14-15 to the modes (X v_j, Y v_j) at a symbolic row equals the printed matrix, every n",
+        "M_j derived by applying Eq. 14-15 to the modes (X v_j, Y v_j) at a symbolic row equals the printed matrix, every n"
+        if ok else "M_j derived from this scheme's rules differs from the printed matrix",
         counterexample=None if ok else Text("printed minus derived: ", diff, "; at n = 5, j = 1 the derived M_1 is ",
                                             at_valence(derived, 5).applyfunc(lambda e: number(e, 6))),
         steps=(Step("Derived:", derived, sp.Symbol("M_j")), Step("Printed minus derived:", diff)),

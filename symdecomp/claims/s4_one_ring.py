@@ -26,6 +26,11 @@ EQ20 = ShiftStencil(sp.Integer(0), R(1, 3) * (1 + omega), R(1, 3))
 EQ21 = ShiftStencil(R(1, 4), sp.Integer(0), R(3, 4))
 
 
+def PRINTED_COMPONENT_VERTEX(j, k, size):
+    """Vertex ``k`` of the component ``v_j`` of the 1-ring 2n-gon as printed (Eq. 11, the rows of ``F_2n``)."""
+    return sp.exp(2 * sp.pi * sp.I * j * k / size)
+
+
 @claim(
     "Eq. 10-11",
     section="4",
@@ -38,6 +43,17 @@ def _eq10_11(scheme: Scheme) -> CheckResult:
 
     from symdecomp.schemes.ring import OneRing, one_ring_decomposition
 
+    # The printed components (Eq. 11): vertex k of v_j is omega_2n^(j k); each must be a regular planar 2n-gon.
+    k = sp.Symbol("k", integer=True)
+    vertex = PRINTED_COMPONENT_VERTEX(J, k, 2 * n)
+    step = sp.simplify(vertex.subs(k, k + 1) / vertex)
+    closes, modulus = sp.simplify(step ** (2 * n)), sp.simplify(sp.Abs(vertex))
+    if step.has(k) or closes != 1 or modulus != 1:
+        return CheckResult(
+            Status.REFUTED,
+            Text("the printed components are not regular 2n-gons: vertex ", k, " of ", sp.Symbol("v_j"), " is ", vertex),
+            counterexample=Text("ratio of consecutive vertices ", step, ", its 2n-th power ", closes, ", modulus ", modulus),
+        )
     last = 8
     for size in range(3, last + 1):
         rng = random.Random(size)
@@ -59,6 +75,11 @@ def _eq10_11(scheme: Scheme) -> CheckResult:
     )
 
 
+def PRINTED_RING_POSITION(vertex: str, i):
+    """The place of ``a_i`` and ``b_i`` in the 2n-gon ``P = (a_0, b_0, ..., a_(n-1), b_(n-1))`` as printed (Eq. 10)."""
+    return 2 * i if vertex == "a" else 2 * i + 1
+
+
 @claim(
     "Eq. 12-13",
     section="4",
@@ -67,17 +88,26 @@ def _eq10_11(scheme: Scheme) -> CheckResult:
     "$A^j = (a_i^j)$ and $B^j = (b_i^j)$ are planar regular $n$-gons.",
 )
 def _eq12_13(scheme: Scheme) -> CheckResult:
-    a_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW) / (2 * n))
-    regular = Z * sp.exp(2 * sp.pi * sp.I * J * I_ROW / n)
-    diff = sp.simplify(a_ij - regular)
+    # Vertex k of the 2n-gon z_j v_j is z_j omega_2n^(j k) (Eq. 11); a_i^j and b_i^j sit where Eq. 10 puts them.
+    found, failures = [], []
+    for name in ("a", "b"):
+        vertex = Z * sp.exp(2 * sp.pi * sp.I * J * PRINTED_RING_POSITION(name, I_ROW) / (2 * n))
+        step = sp.simplify(vertex.subs(I_ROW, I_ROW + 1) / vertex)
+        closes = sp.simplify(step**n)  # a regular n-gon: the same rotation each step, back after n steps
+        found.append(Step(f"${name}_i^j$ and the ratio of consecutive vertices, its $n$-th power:", sp.Tuple(vertex, step, closes)))
+        if step.has(I_ROW) or closes != 1 or sp.simplify(sp.Abs(step)) != 1:
+            failures.append(Text(name, " vertices ", vertex, ": ratio ", step, ", its n-th power ", closes))
+    ok = not failures
     return CheckResult(
-        Status.PROVED if diff == 0 else Status.REFUTED,
+        Status.PROVED if ok else Status.REFUTED,
         Text(
             "vertex ", 2 * I_ROW, " of ", sp.Symbol("v_j"), " (2n-gon) is ", eq(omega_2n ** (2 * I_ROW * J), omega_n ** (I_ROW * J)),
-            ": ", eq(A(J), sp.Symbol("z_j") * sp.Symbol("v_j mod n", commutative=False)), ", a regular n-gon, for every ", n, " and ", J,
-        ),
-        counterexample=None if diff == 0 else Text("the difference ", diff),
-        steps=(Step("$a_i^j$ is vertex $2i$ of $z_j v_j$:", a_ij), Step("which is vertex $i$ of $z_j v_j^{(n)}$:", regular)),
+            ": ", eq(A(J), sp.Symbol("z_j") * sp.Symbol("v_j mod n", commutative=False)), ", a regular n-gon (the same rotation ",
+            omega_n**J, " from vertex to vertex, closing after n), likewise ", B(J), " from vertex ", 2 * I_ROW + 1, ", for every ",
+            n, " and ", J,
+        ) if ok else "the printed positions do not give regular n-gons",
+        counterexample=None if ok else failures[0],
+        steps=tuple(found),
     )
 
 
@@ -218,7 +248,19 @@ def _prop41(scheme: Scheme) -> CheckResult:
             (w * Y * omega ** (I_ROW + k) for k, w in rule.b), sp.Integer(0)
         )
         rows.append(sp.expand(sp.powsimp(sp.expand(value / omega**I_ROW))))
-    free_of_row = not any(r.has(I_ROW) for r in rows)
+    # The same on the components as printed (Eq. 10-13): a_m^j and b_m^j read off vertex PRINTED_RING_POSITION of
+    # z_j v_j (Eq. 11), X and Y their amplitudes; the new a_i, b_i over the old must not depend on the row i.
+    def printed_vertex(name, m):
+        return PRINTED_COMPONENT_VERTEX(J, PRINTED_RING_POSITION(name, m), 2 * n)
+
+    amplitude = {"a": X, "b": Y * printed_vertex("a", 0) / printed_vertex("b", 0)}
+    printed_rows = []
+    for name, rule in (("a", cc.edge_rule), ("b", cc.face_rule)):
+        value = sum((w * amplitude["a"] * printed_vertex("a", I_ROW + k) for k, w in rule.a), sp.Integer(0)) + sum(
+            (w * amplitude["b"] * printed_vertex("b", I_ROW + k) for k, w in rule.b), sp.Integer(0)
+        )
+        printed_rows.append(sp.simplify(sp.powsimp(sp.expand(value / printed_vertex(name, I_ROW)))))
+    free_of_row = not any(r.has(I_ROW) for r in rows + printed_rows)
     matches = is_zero(sp.Matrix(rows) - per_frequency_matrix(cc) * sp.Matrix([X, Y]))
     ok = free_of_row and matches
     v_k, z_ = sp.Symbol("v_k", commutative=False), sp.Symbol("z")
@@ -231,7 +273,9 @@ def _prop41(scheme: Scheme) -> CheckResult:
             " stay complex multiples of the same ", z_ * v_k, ", so they lie in planes parallel to ",
             sp.Function("span")(sp.re(z_), sp.im(z_)), "; the centres move along the line of Proposition 4.3",
         ),
-        counterexample=None if ok else Text("the rows ", sp.Tuple(*rows)),
+        counterexample=None if ok else Text(
+            "the new vertices over the old: ", sp.Tuple(*rows), ", on the printed components ", sp.Tuple(*printed_rows)
+        ),
         steps=(
             Step("New $a_i$ and $b_i$ on the mode, divided by $\\omega^i$ ($O = 0$):", sp.Matrix(rows)),
             Step("which is $M_j (X, Y)^T$ (Eq. 33).", per_frequency_matrix(cc) * sp.Matrix([X, Y])),

@@ -31,6 +31,11 @@ from symdecomp.symbols import n as N
 S = sp.Symbol
 
 
+def PRINTED_AXES(w1, w2):
+    """The axes of Eq. 40 as printed: ``l_1 = |w_1| + |w_(2n-1)|``, ``l_2 = ||w_1| - |w_(2n-1)||``."""
+    return abs(w1) + abs(w2), abs(abs(w1) - abs(w2))
+
+
 @claim(
     "Eq. 40",
     section="5.2",
@@ -48,10 +53,10 @@ def _eq40(scheme: Scheme) -> CheckResult:
     col_y = [sp.re(sp.I * (w1 - w2)), sp.im(sp.I * (w1 - w2))]
     L = sp.Matrix([[col_x[0], col_y[0]], [col_x[1], col_y[1]]])
     G = L.T * L
-    m1, m2 = p1**2 + q1**2, p2**2 + q2**2  # |w1|^2, |w2|^2
-    # sigma_1^2 + sigma_2^2 = tr G and sigma_1 sigma_2 = |det L|; (|w1| +- |w2|) have the same invariants.
-    sum_sq = sp.expand(G.trace() - 2 * (m1 + m2))
-    prod_sq = sp.expand(L.det() ** 2 - (m1 - m2) ** 2)
+    l1, l2 = PRINTED_AXES(w1, w2)
+    # sigma_1^2 + sigma_2^2 = tr G and sigma_1 sigma_2 = |det L|: the printed axes must have the same invariants.
+    sum_sq = sp.simplify(sp.expand(G.trace() - (l1**2 + l2**2)))
+    prod_sq = sp.simplify(sp.expand(L.det() ** 2 - (l1 * l2) ** 2))
     if not (is_zero(sum_sq) and is_zero(prod_sq)):
         return CheckResult(
             Status.REFUTED,
@@ -85,6 +90,10 @@ def _eq40(scheme: Scheme) -> CheckResult:
     )
 
 
+#: The factor taking the a-part ``z_1`` of the component to its b-part as printed (Eq. 24 at ``j = 1``).
+PRINTED_B_FACTOR = sp.exp(sp.pi * sp.I / N)
+
+
 @claim(
     "Eq. 41",
     section="5.2",
@@ -93,12 +102,13 @@ def _eq40(scheme: Scheme) -> CheckResult:
     r"2n-gonal regular convex component of Eq. 11.",
 )
 def _eq41(scheme: Scheme) -> CheckResult:
-    # z_1 = p + i q (p, q in R^3). A-pair: U = 2p, W = -2q; B-pair: z_1 * e^{i phi}, phi = pi/n (Eq. 24).
+    # z_1 = p + i q (p, q in R^3). A-pair: U = 2p, W = -2q; B-pair: z_1 times the printed factor (Eq. 24).
     p = sp.Matrix(sp.symbols("p0:3", real=True))
     q = sp.Matrix(sp.symbols("q0:3", real=True))
-    phi = sp.Symbol("phi", real=True)
-    zb_re = p * sp.cos(phi) - q * sp.sin(phi)
-    zb_im = p * sp.sin(phi) + q * sp.cos(phi)
+    factor = sp.expand_complex(PRINTED_B_FACTOR.subs(N, S("n", positive=True, integer=True)))
+    c, s = sp.re(factor), sp.im(factor)
+    zb_re = p * c - q * s
+    zb_im = p * s + q * c
     gram_a = 4 * (p * p.T + q * q.T)
     gram_b = 4 * (zb_re * zb_re.T + zb_im * zb_im.T)
     diff = (gram_b - gram_a).applyfunc(lambda e: sp.simplify(sp.expand(e)))
@@ -109,7 +119,7 @@ def _eq41(scheme: Scheme) -> CheckResult:
         Status.PROVED,
         Text(
             "an ellipse ", U * sp.cos(t) + W * sp.sin(t), " is fixed by its matrix ", U * S("U^T") + W * S("W^T"),
-            "; for the b-part (", S("z_1"), " rotated by ", sp.pi / N, ") it is identical for every ring and ", N,
+            "; for the b-part (", S("z_1"), " times ", PRINTED_B_FACTOR, ", a rotation) it is identical for every ring and ", N,
         ),
         steps=(Step("$G_b - G_a$ (zero)", diff),),
     )

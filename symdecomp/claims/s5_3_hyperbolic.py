@@ -5,7 +5,9 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.analysis.elliptic import elliptic_component, tangent_lambda
+from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims import CheckResult, Status, Step, Text, claim
 from symdecomp.claims.applicability import needs_mirror_symmetry
@@ -144,6 +146,20 @@ def _construction(scheme: Scheme) -> CheckResult:
     )
 
 
+def _elliptic_component(scheme: Scheme, n: int):
+    """The elliptic component of the input ``(1, 0, 0)`` of Eq. 43 at valence ``n``; exact null spaces where the
+    closed-form eigenvectors degenerate (their two rows dependent), ``None`` if the eigenvalue is not simple."""
+    c = elliptic_component(scheme, n, (1, 0, 0))
+    if c.is_finite:
+        return c
+    T = sp.Matrix(recursion_matrix(scheme, n))
+    mu = recursion_eigenvalues(scheme)[1].subs(N, n)
+    right, left = (T - mu * sp.eye(3)).nullspace(), (T.T - mu * sp.eye(3)).nullspace()
+    if len(right) != 1 or len(left) != 1:
+        return None
+    return sp.simplify(left[0][0] / left[0].dot(right[0]))
+
+
 @claim(
     "Section 5.3: basis function",
     section="5.3",
@@ -165,7 +181,9 @@ def _basis(scheme: Scheme) -> CheckResult:
                     Text(eq(N, n), ": heights leave the frequency-0 subspace"),
                     counterexample=Text(eq(N, n), ": heights ", tup(*h)),
                 )
-    comps = [elliptic_component(cc, n, (1, 0, 0)) for n in (3, 4, 5)]
+    comps = [_elliptic_component(cc, n) for n in (3, 4, 5)]
+    if any(c is None for c in comps):
+        return CheckResult(Status.UNDECIDED, "the subdominant eigenvalue of Eq. 43 is not simple: no single elliptic component")
     if any(c == 0 for c in comps):
         return CheckResult(
             Status.REFUTED,

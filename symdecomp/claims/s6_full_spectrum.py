@@ -10,6 +10,9 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam
 from symdecomp.verify.certify import certify, symmetric_functions
 
+#: The closed forms the statement names, Eq. 34 and Eq. 43, as derived for the scheme (a function of the scheme).
+CLOSED_FORMS = derived_closed_forms
+
 #: The valences proved by the claim's check (a second or two; ``symdecomp check`` does more).
 VALENCES = (3, 48)
 
@@ -23,8 +26,10 @@ VALENCES = (3, 48)
     r"eigenvalues of $M_k$ given by Eq. 34 for $k = 1, \dots, n-1$.",
 )
 def _full_spectrum(scheme: Scheme) -> CheckResult:
-    cf = derived_closed_forms(scheme)
+    cf = CLOSED_FORMS(scheme)
     sym = symmetric_functions(cf)
+    if sym.trace is None or sym.determinant is None or sym.frequency_zero is None:
+        return CheckResult(Status.UNDECIDED, Text("the certified comparison needs symmetric polynomial closed forms: ", sym.reason))
     omega = sp.Symbol("omega")
     steps = [
         Step("Sum of the two closed forms of $M_k$ (Eq. 34), as a Laurent polynomial in $\\omega = \\omega_n^k$",

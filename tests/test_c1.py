@@ -234,3 +234,14 @@ def test_irrational_weights_get_one_line_not_a_traceback():
     scheme = catmull_clark(R(3, 2) / N**2 + sp.sqrt(2) / 100, R(1, 4) / N**2)
     with pytest.raises(InvalidSchemeError, match="needs rational weights at each valence; at n = 5"):
         c1_test(scheme, 5)
+
+
+def test_an_exact_eigenvalue_minus_one_is_not_c1_not_undecided():
+    """alpha = 1/10, beta = 1/4 at n = 5: the Eq. 43 block has the exact eigenvalue -1, so 1 is not strictly dominant."""
+    scheme = catmull_clark(R(1, 10), R(1, 4))
+    from symdecomp.analysis.frequency import recursion_matrix
+
+    assert sp.Matrix(recursion_matrix(scheme, 5)).eigenvals() == {1: 1, -1: 1, 0: 1}
+    r = c1_test(scheme, 5)
+    assert r.verdict == "not-c1" and "frequency 0" in r.reason and "not smaller than 1" in r.reason
+    assert (r.spectral.subdominant.value + 1).contains(0) and r.spectral.subdominant.value.imag.contains(0)

@@ -215,8 +215,9 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
             )
     if not top < 1:
         return SpectralResult(
-            n, "not-c1" if top > 1 else "undecided",
-            f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus",
+            # Arb's ``>=`` holds only when every point of the ball is >= 1 (an exact -1 at frequency 0 is)
+            n, "not-c1" if top >= 1 else "undecided",
+            f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus", dom,
         )
     gap = float_down((top - second).lower())
     if dom.pair:

@@ -245,3 +245,22 @@ def test_an_exact_eigenvalue_minus_one_is_not_c1_not_undecided():
     r = c1_test(scheme, 5)
     assert r.verdict == "not-c1" and "frequency 0" in r.reason and "not smaller than 1" in r.reason
     assert (r.spectral.subdominant.value + 1).contains(0) and r.spectral.subdominant.value.imag.contains(0)
+
+
+def test_an_exact_tie_of_frequencies_0_and_1_is_multiplicity_3_not_undecided():
+    """alpha = 0, beta = 1/16 at n = 3: (9 +- sqrt 17)/32 is a root at frequencies 0, 1 and 2 (triple), so not C1.
+
+    More precision never separates equal eigenvalues; the tie is shown exactly (in Q(e^{2 pi i / n})).
+    """
+    from symdecomp.schemes.scheme import subdivision_matrix
+
+    scheme = catmull_clark(0, R(1, 16))
+    x = sp.Symbol("x")
+    poly = sp.Matrix(subdivision_matrix(scheme, 3)).charpoly(x).as_expr()
+    assert sp.expand(poly - (x - 1) * (x**2 - R(9, 16) * x + R(1, 16)) ** 3) == 0
+    r = c1_test(scheme, 3)
+    assert r.verdict == "not-c1" and "multiplicity 3" in r.reason and "frequencies 0, 1" in r.reason
+    assert (r.spectral.subdominant.value - (9 + flint.arb(17).sqrt()) / 32).contains(0)
+    # a nearby beta separates the eigenvalues, and the test decides by the ordinary route
+    assert c1_test(catmull_clark(0, R(1, 15)), 3).verdict in ("c1", "not-c1")
+    assert "multiplicity 3" not in c1_test(catmull_clark(0, R(1, 15)), 3).reason

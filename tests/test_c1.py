@@ -264,3 +264,58 @@ def test_an_exact_tie_of_frequencies_0_and_1_is_multiplicity_3_not_undecided():
     # a nearby beta separates the eigenvalues, and the test decides by the ordinary route
     assert c1_test(catmull_clark(0, R(1, 15)), 3).verdict in ("c1", "not-c1")
     assert "multiplicity 3" not in c1_test(catmull_clark(0, R(1, 15)), 3).reason
+
+
+def _two_ring_matrix(scheme, n):
+    """The ``(6n + 1) x (6n + 1)`` 2-ring matrix (floats) by refining the whole 2-ring mesh of unit vectors.
+
+    Independent of the frequency blocks: every level-1 point is read off :func:`refine` with
+    Catmull-Clark's rules, except the new ``O``, read off ``refine`` with ``scheme``'s rules
+    (the C1 test applies ``scheme``'s vertex rule at ``O`` only).
+    """
+    from fractions import Fraction
+
+    import numpy as np
+
+    labels = ring_mesh_labels(n, 2)
+    ident = {lab: i for i, lab in enumerate(labels)}
+    size = len(labels)
+    mesh = ring_mesh(n, 2, lambda s, u, v: tuple(Fraction(int(ident[(s, u, v)] == k)) for k in range(size)))
+    step = refine(mesh, catmull_clark())
+
+    def old(s, u, v):
+        s %= n
+        return 0 if (u, v) == (0, 0) else ident[((s + 1) % n, v, 0)] if u == 0 else ident[(s, u, v)]
+
+    rows = {}
+    for s in range(n):
+        rows[ident[(s, 1, 0)]] = step.edge_point[frozenset((0, old(s, 1, 0)))]
+        rows[ident[(s, 1, 1)]] = step.face_point[s * 4]
+        rows[ident[(s, 1, 2)]] = step.edge_point[frozenset((old(s, 0, 1), old(s, 1, 1)))]
+        rows[ident[(s, 2, 0)]] = step.vertex_point[old(s, 1, 0)]
+        rows[ident[(s, 2, 1)]] = step.edge_point[frozenset((old(s, 1, 0), old(s, 1, 1)))]
+        rows[ident[(s, 2, 2)]] = step.vertex_point[old(s, 1, 1)]
+    A = [[float(x) for x in step.mesh.values[rows[i]]] if i else None for i in range(size)]
+    at_o = refine(mesh, scheme)
+    A[0] = [float(x) for x in at_o.mesh.values[at_o.vertex_point[0]]]
+    return np.array(A)
+
+
+@pytest.mark.parametrize(
+    "alpha_beta, n",
+    [(None, 3), (None, 5), (None, 6), (None, 8), ((R(-1, 4), R(1, 2)), 5), ((R(-1, 4), R(1, 4)), 6)],
+)
+def test_the_certified_spectrum_is_the_whole_two_ring_spectrum(alpha_beta, n):
+    """lambda, its multiplicity 2 and the bound of every other eigenvalue hold for the full (6n+1) matrix (numpy)."""
+    import numpy as np
+
+    scheme = catmull_clark(*alpha_beta) if alpha_beta else catmull_clark()
+    A = _two_ring_matrix(scheme, n)
+    assert A.shape == (6 * n + 1, 6 * n + 1) and np.allclose(A.sum(axis=1), 1)
+    moduli = sorted(abs(np.linalg.eigvals(A)), reverse=True)
+    r = c1_test(scheme, n)
+    assert r.verdict == "c1", r.reason
+    lam = float(r.spectral.subdominant.value.real.mid())
+    assert abs(moduli[0] - 1) < 1e-9 and moduli[1] < 1 - 1e-6  # 1 simple
+    assert abs(moduli[1] - lam) < 1e-9 and abs(moduli[2] - lam) < 1e-9  # lambda twice
+    assert moduli[3] <= r.spectral.second + 1e-9 and r.spectral.gap <= lam - moduli[3] + 1e-9  # every other one

@@ -319,3 +319,34 @@ def test_the_certified_spectrum_is_the_whole_two_ring_spectrum(alpha_beta, n):
     assert abs(moduli[0] - 1) < 1e-9 and moduli[1] < 1 - 1e-6  # 1 simple
     assert abs(moduli[1] - lam) < 1e-9 and abs(moduli[2] - lam) < 1e-9  # lambda twice
     assert moduli[3] <= r.spectral.second + 1e-9 and r.spectral.gap <= lam - moduli[3] + 1e-9  # every other one
+
+
+def _triangular_scheme():
+    """At n = 3 the edge rule at O has no b weights, so M_1 is lower triangular and lambda = 7/16 is its b-b entry."""
+    cc = catmull_clark()
+    e, t = R(5, 8) - N / 16, N / 16 - R(3, 16)
+    edge = Stencil.from_weights(e, {-1: R(1, 16), 0: e, 1: R(1, 16)}, {-1: t, 0: t})
+    face = Stencil.from_weights(N / 16, {0: N / 16, 1: N / 16}, {0: 1 - 3 * N / 16})
+    return Scheme("triangular", edge, face, cc.vertex_rule)
+
+
+def test_an_eigenvector_vanishing_on_the_a_i_gets_a_verdict_not_an_error():
+    """lambda's eigenvector is 0 at every a_i (normalised at b_0 instead); before, 'could not be normalised'."""
+    from symdecomp.analysis.frequency import per_frequency_matrix_at
+    from symdecomp.verify.c1 import characteristic_nets
+
+    scheme = _triangular_scheme()
+    check_applicable(scheme)
+    M = per_frequency_matrix_at(scheme, 3, 1).subs(N, 3)
+    assert M[0, 1] == 0 and M[1, 1] == R(7, 16) and sp.expand_complex(M[0, 0] - R(3, 8)) == 0
+    r = c1_test(scheme, 3)
+    assert r.verdict == "c1" and r.frequency == 1 and r.winding_number == 1, r.reason
+    assert (r.spectral.subdominant.value - flint.fmpq(7, 16)).contains(0)
+    nets, vec = characteristic_nets(scheme, 3)
+    assert vec.values[(1, 0)].contains(0) and (vec.values[(1, 1)] - flint.fmpq(7, 16)).contains(0)  # lambda (a_0, b_0)
+    # the certified bound is a lower bound of the Jacobian sampled on each sub-patch
+    from symdecomp.verify.bezier import jacobian_net
+
+    grid = [i / 8 for i in range(9)]
+    sampled = min(_bernstein(jacobian_net(x, y), u, v) for x, y in nets for u in grid for v in grid)
+    assert 0 < r.jacobian_lower_bound <= sampled

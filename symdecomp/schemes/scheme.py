@@ -36,6 +36,7 @@ from symdecomp.symbols import n as N
 __all__ = [
     "Stencil",
     "VertexRule",
+    "MESH_TYPES",
     "Scheme",
     "catmull_clark",
     "subdivision_matrix",
@@ -141,24 +142,46 @@ class VertexRule:
         return self.center + N * self.each_a + N * self.each_b
 
 
+#: The mesh types a scheme can live on.
+MESH_TYPES = ("quad", "triangle")
+
+
 @dataclass(frozen=True)
 class Scheme:
-    """A subdivision scheme on the 1-ring of a quad mesh, given by its three rules."""
+    """A subdivision scheme on the 1-ring of a quad or triangle mesh, given by its rules.
+
+    On a quad mesh (``mesh = "quad"``, the paper's shape) the 1-ring is ``(O, a_i, b_i)`` and
+    the scheme has an edge, a face and a vertex rule. On a triangle mesh
+    (``mesh = "triangle"``) the 1-ring is ``(O, a_0..a_{n-1})`` with faces ``(O, a_i, a_{i+1})``:
+    there are no face neighbours, so ``face_rule`` is ``None``, the edge rule has no ``b``
+    weights and the vertex rule's ``each_b`` is 0.
+    """
 
     #: A short name, used in reports.
     name: str
     #: The rule for the new edge neighbours ``a_i`` (Eq. 14 for Catmull-Clark).
     edge_rule: Stencil
-    #: The rule for the new face neighbours ``b_i`` (Eq. 15 for Catmull-Clark).
-    face_rule: Stencil
+    #: The rule for the new face neighbours ``b_i`` (Eq. 15 for Catmull-Clark); ``None`` on triangles.
+    face_rule: Stencil | None
     #: The rule for the new ``O`` (Eq. 16).
     vertex_rule: VertexRule
     #: Free parameters of the scheme (symbols other than ``n`` in its weights).
     parameters: tuple[sp.Symbol, ...] = field(default=())
+    #: ``"quad"`` (the paper's shape) or ``"triangle"`` (e.g. Loop).
+    mesh: str = "quad"
 
     def __post_init__(self):
+        if self.mesh not in MESH_TYPES:
+            raise InvalidSchemeError(f"scheme {self.name!r}: mesh must be one of {MESH_TYPES}, got {self.mesh!r}")
+        if (self.face_rule is None) != (self.mesh == "triangle"):
+            raise InvalidSchemeError(
+                f"scheme {self.name!r}: a {self.mesh} scheme "
+                + ("has no face rule" if self.mesh == "triangle" else "needs a face rule")
+            )
+        if self.mesh == "triangle" and (self.edge_rule.b or self.vertex_rule.each_b != 0):
+            raise InvalidSchemeError(f"scheme {self.name!r}: a triangle 1-ring has no face neighbours b_i; give no b weights")
         free = set()
-        for rule in (self.edge_rule, self.face_rule):
+        for rule in self.stencils():
             free |= rule.center.free_symbols
             for _, w in rule.a + rule.b:
                 free |= w.free_symbols
@@ -170,10 +193,16 @@ class Scheme:
             object.__setattr__(
                 self, "parameters", tuple(self.parameters) + tuple(sorted(free - declared, key=str))
             )
-        span = max(self.edge_rule.offsets() + self.face_rule.offsets()) - min(
-            self.edge_rule.offsets() + self.face_rule.offsets()
-        )
-        object.__setattr__(self, "_span", span)
+        offsets = tuple(k for rule in self.stencils() for k in rule.offsets()) or (0,)
+        object.__setattr__(self, "_span", max(offsets) - min(offsets))
+
+    def stencils(self) -> tuple[Stencil, ...]:
+        """The 1-ring stencils: ``(edge rule, face rule)`` on quads, ``(edge rule,)`` on triangles."""
+        return (self.edge_rule,) if self.face_rule is None else (self.edge_rule, self.face_rule)
+
+    def ring_size(self, n: int) -> int:
+        """Points of the 1-ring at valence ``n``: ``2n + 1`` on quads, ``n + 1`` on triangles."""
+        return (n if self.mesh == "triangle" else 2 * n) + 1
 
     def minimum_valence(self) -> int:
         """The smallest valence for which the stencil offsets are distinct mod ``n`` (at least 3)."""
@@ -192,9 +221,10 @@ class Scheme:
         return Scheme(
             name or self.name,
             st(self.edge_rule, "edge rule"),
-            st(self.face_rule, "face rule"),
+            None if self.face_rule is None else st(self.face_rule, "face rule"),
             VertexRule.from_weights(v.center.subs(subs), v.each_a.subs(subs), v.each_b.subs(subs)),
             tuple(p for p in self.parameters if p not in subs),
+            self.mesh,
         )
 
 
@@ -221,31 +251,36 @@ def catmull_clark(alpha=None, beta=None) -> Scheme:
     return Scheme("catmull-clark" if standard else "catmull-clark (tuned vertex rule)", edge, face, vertex)
 
 
-def vertex_order(n: int) -> tuple[str, ...]:
-    """Names of the rows/columns of the subdivision matrix: ``O, a_0..a_{n-1}, b_0..b_{n-1}``."""
+def vertex_order(n: int, mesh: str = "quad") -> tuple[str, ...]:
+    """Names of the rows/columns of the subdivision matrix: ``O, a_0..a_{n-1}, b_0..b_{n-1}``.
+
+    On a triangle mesh (``mesh="triangle"``) there are no ``b_i``.
+    """
     n = check_valence(n)
-    return ("O",) + tuple(f"a_{i}" for i in range(n)) + tuple(f"b_{i}" for i in range(n))
+    b = () if mesh == "triangle" else tuple(f"b_{i}" for i in range(n))
+    return ("O",) + tuple(f"a_{i}" for i in range(n)) + b
 
 
 def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:
-    """The exact ``(2n+1) x (2n+1)`` subdivision matrix of ``scheme`` at valence ``n``.
+    """The exact subdivision matrix of ``scheme`` at valence ``n``: ``(2n+1)`` or ``(n+1)`` square.
 
-    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` (Section 6). Built entry
-    by entry from the rules, without any circulant structure.
+    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` (Section 6; no ``b_i`` on
+    a triangle mesh). Built entry by entry from the rules, without any circulant structure.
     """
     n = check_valence(n)
     if n < scheme.minimum_valence():
         raise InvalidSchemeError(
             f"scheme {scheme.name!r} has stencils {scheme._span + 1} wide, wider than the valence n = {n}"
         )
-    size = 2 * n + 1
+    size = scheme.ring_size(n)
     S = sp.zeros(size, size)
     v = scheme.vertex_rule
     S[0, 0] = v.center.subs(N, n)
     for i in range(n):
         S[0, 1 + i] = v.each_a.subs(N, n)
-        S[0, 1 + n + i] = v.each_b.subs(N, n)
-    for row_offset, rule in ((1, scheme.edge_rule), (1 + n, scheme.face_rule)):
+        if scheme.face_rule is not None:
+            S[0, 1 + n + i] = v.each_b.subs(N, n)
+    for row_offset, rule in zip((1, 1 + n), scheme.stencils()):
         for i in range(n):
             r = row_offset + i
             S[r, 0] += rule.center.subs(N, n)

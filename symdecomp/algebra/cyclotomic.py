@@ -23,7 +23,7 @@ import flint
 import mpmath
 import sympy as sp
 
-__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "to_acb"]
+__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "matrix_rank", "to_acb"]
 
 
 @lru_cache(maxsize=None)
@@ -193,12 +193,13 @@ def _trig_fraction(term: sp.Expr, values: dict) -> sp.Rational:
     return r
 
 
-def cyclotomic_value(expr, values: dict | None = None) -> Cyclotomic:
+def cyclotomic_value(expr, values: dict | None = None, field: CyclotomicField | None = None) -> Cyclotomic:
     """An exact number built from rationals and ``cos``/``sin``/``exp(i .)`` of rational multiples of ``pi``.
 
     ``values`` substitutes symbols first (e.g. ``{n: 7}``); trigonometric terms are replaced
     *before* the substitution so that sympy cannot rewrite ``cos(2 pi/5)`` into radicals. The
-    result lies in the smallest ``Q(zeta_N)`` holding every term. Raises ``ValueError`` when the
+    result lies in the smallest ``Q(zeta_N)`` holding every term, or in ``field`` when given (it
+    must contain them). Raises ``ValueError`` when the
     expression is not of that kind (a square root, a free symbol left, a float).
 
     >>> from sympy import cos, pi, Symbol
@@ -217,7 +218,11 @@ def cyclotomic_value(expr, values: dict | None = None) -> Cyclotomic:
         dummies[t], fractions[d] = d, (type(t), r)
         order = order * (2 * int(r.q)) // math.gcd(order, 2 * int(r.q))
     plain = expr.xreplace(dummies).xreplace(values) if values else expr.xreplace(dummies)
-    K = CyclotomicField(order)
+    if field is not None:
+        if field.N % order:
+            raise ValueError(f"{expr} is not in Q(zeta_{field.N})")
+        order = field.N
+    K = field or CyclotomicField(order)
     leaves = {}
     for d, (kind, r) in fractions.items():
         z = K.zeta(int(r.p) * (order // (2 * int(r.q))))  # exp(i r pi)
@@ -245,6 +250,23 @@ def _walk(e: sp.Expr, K: CyclotomicField, leaves: dict) -> Cyclotomic:
     if isinstance(e, sp.Pow) and e.exp.is_Integer:
         return _walk(e.base, K, leaves) ** int(e.exp)
     raise ValueError(f"{e} is not a rational function of roots of unity")
+
+
+def matrix_rank(rows: list[list[Cyclotomic]]) -> int:
+    """The rank of a matrix over ``Q(zeta_N)`` (exact Gaussian elimination)."""
+    rows = [list(r) for r in rows]
+    rank, cols = 0, len(rows[0]) if rows else 0
+    for c in range(cols):
+        pivot = next((r for r in range(rank, len(rows)) if rows[r][c].poly != 0), None)
+        if pivot is None:
+            continue
+        rows[rank], rows[pivot] = rows[pivot], rows[rank]
+        for r in range(rank + 1, len(rows)):
+            if rows[r][c].poly != 0:
+                f = rows[r][c] / rows[rank][c]
+                rows[r] = [x - f * y for x, y in zip(rows[r], rows[rank])]
+        rank += 1
+    return rank
 
 
 def to_acb(x: Cyclotomic, prec: int = 128):

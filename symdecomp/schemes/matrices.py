@@ -34,6 +34,7 @@ __all__ = [
     "sparse_subdivision_matrix",
     "exact_subdivision_matrix",
     "characteristic_polynomial",
+    "entries_characteristic_polynomial",
 ]
 
 
@@ -218,7 +219,17 @@ def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None
     ``chi_S(lambda) = d^-(2n+1) chi_A(d lambda)``. No block structure is used.
     """
     size = 2 * check_valence(n) + 1
-    A, d = _balanced_integer_matrix(sparse_subdivision_matrix(scheme, n, parameters), size)
+    return entries_characteristic_polynomial(sparse_subdivision_matrix(scheme, n, parameters), size)
+
+
+def entries_characteristic_polynomial(entries: dict, size: int) -> flint.fmpq_poly:
+    """``det(lambda I - S)`` of the ``size x size`` rational matrix ``{(row, column): value}``, exactly.
+
+    Row and column 0 are balanced as in :func:`characteristic_polynomial` (the centre carries the
+    ``1/n`` denominators); FLINT's ``fmpz_mat.charpoly`` does the rest.
+    """
+    entries = {k: v if isinstance(v, flint.fmpq) else flint.fmpq(v.numerator, v.denominator) for k, v in entries.items()}
+    A, d = _balanced_integer_matrix(entries, size)
     p = A.charpoly()
     coeffs = p.coeffs()
     size = len(coeffs) - 1

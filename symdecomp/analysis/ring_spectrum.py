@@ -258,10 +258,11 @@ def _exact_root(root: sp.Expr, k: int, n: int, weights: dict) -> sp.Expr:
     return expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * k / n)})
 
 
-def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, exact: bool = True) -> RingSpectrum:
+def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, exact: bool = True, jordan: bool = True) -> RingSpectrum:
     """The eigenvalues of the ``rings``-ring matrix at valence ``n``, from the frequency factors.
 
     ``exact``: attach exact closed forms to the values (costs a little sympy per value).
+    ``jordan``: decide the Jordan structure of repeated values (exact ranks; ``None`` if not asked).
     """
     n = check_valence(n)
     blocks = ring_blocks(scheme, rings)
@@ -296,7 +297,7 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
                     frequencies=tuple(sorted({items[x][1] for x in g})),
                     exact=value,
                     factor=f.poly.xreplace({N: n}) if k == 0 else f.poly,
-                    jordan=_jordan(blocks, ff, items, g, n, exact_w),
+                    jordan=_jordan(blocks, ff, items, g, n, exact_w) if jordan else None,
                 )
             )
     finally:
@@ -343,6 +344,9 @@ def _partition(A, m: int) -> list[int]:
     ranks, P = [size], [row[:] for row in A]
     for _ in range(m):
         ranks.append(matrix_rank(P))
+        if ranks[-1] == ranks[-2] or size - ranks[-1] >= m:
+            break  # the ranks are stable from here on
         P = [[sum((P[r][t] * A[t][c] for t in range(size)), A[0][0] * 0) for c in range(size)] for r in range(size)]
+    ranks += [ranks[-1]] * (m + 1 - len(ranks))
     more = [ranks[i] - ranks[i + 1] for i in range(m)]  # number of blocks of size > i
     return [i + 1 for i in range(m) for _ in range(more[i] - (more[i + 1] if i + 1 < m else 0))]

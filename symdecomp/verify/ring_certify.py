@@ -121,7 +121,7 @@ def certify_ring(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks |
         if bad is not None:
             identity, failure = False, (point, bad, chi(flint.fmpq(bad)), values[bad])
             break
-    spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False)
+    spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False, jordan=False)
     multiplicities = tuple(e.multiplicity for e in spectrum.eigenvalues)
     texts = tuple(e.text for e in spectrum.eigenvalues)
     height = max(int(c.p).bit_length() for c in chis[0].coeffs())

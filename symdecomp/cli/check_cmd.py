@@ -16,7 +16,10 @@ from symdecomp.verify.certify import certify
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.verify.numeric import CheckStatus, numeric_check
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import add_rings_option, add_scheme_option, general_path, positive_int, print_json, progress, valence_range
+from symdecomp.errors import SymdecompError
+from symdecomp.verify.ring_certify import certify_ring
+from symdecomp.verify.ring_numeric import MAX_DOUBLE_DIGITS, ring_numeric_check
 
 __all__ = ["register", "run", "check_valences"]
 
@@ -38,20 +41,28 @@ def register(sub) -> None:
         "rising precision until the answer stops moving, matched with multiplicities, agreement to "
         "--dps digits. Certified mode (--certify): an exact proof, chi_S = product of the closed-form "
         "factors, checked with FLINT at 2n+1 rational points, with certified multiplicities. "
+        "For triangle schemes and --rings K > 1 the frequency matrices E_0, E(omega) of the K-ring matrix "
+        "(built by exact refinement) are checked instead: numeric mode in double precision (--dps at most "
+        f"{MAX_DOUBLE_DIGITS}, default 10), certified mode by chi_S = product of the frequency factors. "
         "Exit status 1 if any valence disagrees or is left without a verdict.",
     )
     p.add_argument("--n", dest="valences", type=valence_range, required=True, metavar="A:B",
                    help="valences to check: an inclusive range A:B or a single N")
-    p.add_argument("--dps", type=_digits, default=50, help="numeric mode: digits of agreement required (default 50)")
+    p.add_argument("--dps", type=_digits, default=None,
+                   help=f"numeric mode: digits of agreement required (default 50; {MAX_DOUBLE_DIGITS} at most and 10 by default "
+                   "for triangle schemes and --rings > 1)")
     p.add_argument("--certify", action="store_true", help="prove each valence exactly instead of comparing numerically")
     p.add_argument("--jobs", type=positive_int, default=os.cpu_count() or 1,
                    help="worker processes, one valence each at a time (default: the number of CPUs)")
     p.add_argument("--json", action="store_true", help="print one JSON object: {rows: [...], summary: {...}}")
     add_scheme_option(p)
+    add_rings_option(p)
     p.set_defaults(func=run)
 
 
-def _one(n, *, scheme, certified, dps, closed_forms):
+def _one(n, *, scheme, certified, dps, closed_forms, rings=None):
+    if rings is not None:  # the any-scheme route: K-ring frequency matrices
+        return certify_ring(scheme, n, rings) if certified else ring_numeric_check(scheme, n, rings, digits=dps)
     if certified:
         return certify(scheme, n, closed_forms=closed_forms)
     return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms)
@@ -66,12 +77,16 @@ def _one_forked(n):
 
 
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
-                   jobs: int = 1, show_progress: bool = True):
+                   jobs: int = 1, show_progress: bool = True, rings: int | None = None):
     """Yield the check of each valence in order (a :class:`~symdecomp.verify.certify.Certificate` or
-    :class:`~symdecomp.verify.numeric.NumericCheck`), in ``jobs`` processes."""
+    :class:`~symdecomp.verify.numeric.NumericCheck`), in ``jobs`` processes.
+
+    ``rings``: check the ``rings``-ring frequency matrices (any scheme) instead of the 1-ring closed forms.
+    """
     valences = list(valences)
-    closed_forms = closed_forms or derived_closed_forms(scheme)
-    job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms)
+    if rings is None:
+        closed_forms = closed_forms or derived_closed_forms(scheme)
+    job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms, rings=rings)
     label = "certify" if certified else f"check {dps} digits"
     if jobs > 1 and len(valences) > 1 and "fork" in multiprocessing.get_all_start_methods():
         first = _one(valences[0], **job)  # also does the symbolic step once, before the workers fork
@@ -92,15 +107,22 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
     start = time.perf_counter()
     rows = []
+    rings = args.rings if general_path(args) else None
+    if args.dps is None:
+        args.dps = 50 if rings is None else 10
+    elif rings is not None and args.dps > MAX_DOUBLE_DIGITS:
+        raise SymdecompError(f"--dps: the numeric check of triangle schemes and --rings > 1 runs in double precision; "
+                             f"give at most {MAX_DOUBLE_DIGITS}, or use --certify")
     if not args.json:
         mode = "certified (exact)" if args.certify else f"numeric, {args.dps} digits"
-        print(f"{args.scheme.name}: closed forms vs full matrix, {mode}")
+        what = "closed forms" if rings is None else f"{rings}-ring frequency matrices E_0, E(omega)"
+        print(f"{args.scheme.name}: {what} vs full matrix, {mode}")
         if args.certify:
             print(f"{'n':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'chi_S bits':>10}  certificate")
         else:
             print(f"{'n':>4}  {'status':<13} {'distinct':>8}  {'max deviation':>13}  {'max spread':>10}  precisions")
     for r in check_valences(args.scheme, args.valences, certified=args.certify, dps=args.dps,
-                            closed_forms=closed_forms, jobs=args.jobs, show_progress=True):
+                            closed_forms=closed_forms, jobs=args.jobs, show_progress=True, rings=rings):
         rows.append(r)
         if args.json:
             continue
@@ -123,7 +145,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         "ok": not failed,
     }
     if args.json:
-        print_json({"scheme": args.scheme.name, "rows": [r.as_json() for r in rows], "summary": summary})
+        print_json({"scheme": args.scheme.name, "rings": args.rings, "rows": [r.as_json() for r in rows], "summary": summary})
     else:
         tally = ", ".join(f"{v} {k}" for k, v in counts.items() if v)
         print(f"{len(rows)} valences: {tally} ({elapsed:.2f} s)")

@@ -7,12 +7,17 @@ import json
 import sys
 
 from symdecomp.errors import InvalidValenceError, check_valence
+from symdecomp.schemes.loop import loop, loop_warren
+from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 
-__all__ = ["valence", "valence_range", "positive_int", "SCHEMES", "scheme_by_name", "add_scheme_option", "progress", "print_json"]
+__all__ = [
+    "valence", "valence_range", "positive_int", "SCHEMES", "scheme_by_name", "add_scheme_option", "add_rings_option",
+    "general_path", "progress", "print_json",
+]
 
 #: Schemes selectable by name on the command line.
-SCHEMES = {"catmull-clark": catmull_clark}
+SCHEMES = {"catmull-clark": catmull_clark, "loop": loop, "loop-warren": loop_warren}
 
 
 def scheme_by_name(name: str) -> Scheme:
@@ -29,6 +34,29 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         default="catmull-clark",
         help=f"subdivision scheme (default: catmull-clark; known: {', '.join(SCHEMES)})",
     )
+
+
+def _rings(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--rings must be an integer from 1 to {MAX_RINGS}, got {text!r}") from None
+    if not 1 <= value <= MAX_RINGS:
+        raise argparse.ArgumentTypeError(f"--rings must be an integer from 1 to {MAX_RINGS}, got {value}")
+    return value
+
+
+def add_rings_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--rings", type=_rings, default=1, metavar="K",
+        help=f"the K-ring neighbourhood of the centre (1..{MAX_RINGS}; default 1: the paper's 1-ring), "
+        "its matrix built by exact refinement with the scheme's mesh rules",
+    )
+
+
+def general_path(args) -> bool:
+    """Whether a command takes the any-scheme route (triangle meshes or ``--rings`` > 1)."""
+    return args.scheme.mesh != "quad" or getattr(args, "rings", 1) != 1
 
 
 def valence(text: str) -> int:

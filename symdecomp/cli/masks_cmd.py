@@ -7,13 +7,16 @@ follow from the left-eigenvector equation (for Catmull-Clark
 ``(cos(2 pi i/N) + cos(2 pi (i+1)/N))/(16 lambda_1 - 4)``, resp. with ``sin``); ``O`` has weight 0.
 
 JSON: ``{"n": N, "position": {"O": w, "a": [...], "b": [...]}, "tangents": [{"O": w, "a": [...],
-"b": [...]}, {...}], "subdominant": "<decimal>"}``, every weight a decimal string.
+"b": [...]}, {...}], "subdominant": "<decimal>"}``, every weight a decimal string. Triangle schemes
+and ``--rings K > 1`` (:mod:`symdecomp.analysis.ring_masks`) add ``"rings"``, ``"scheme"`` and per
+mask ``"classes"`` (``"u,v"``: the weight of each sector's vertex of that class); ``"b"`` only on quads.
 """
 
 from __future__ import annotations
 
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, valence
+from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.cli.common import add_rings_option, add_scheme_option, general_path, positive_int, print_json, valence
 
 
 def register(sub) -> None:
@@ -28,10 +31,27 @@ def register(sub) -> None:
     p.add_argument("--digits", type=positive_int, default=20, help="significant digits of the weights (default 20)")
     p.add_argument("--json", action="store_true", help='print {"n", "position", "tangents", "subdominant"}')
     add_scheme_option(p)
+    add_rings_option(p)
     p.set_defaults(func=run)
 
 
+def _run_general(args) -> int:
+    data = ring_masks(args.scheme, args.n, args.rings, digits=args.digits)
+    if args.json:
+        print_json(data)
+        return 0
+    print(f"{args.scheme.name}, valence n = {args.n}, {args.rings}-ring; subdominant eigenvalue lambda_1 = {data['subdominant']}")
+    for title, mask in [("position", data["position"]), ("tangent 1", data["tangents"][0]), ("tangent 2", data["tangents"][1])]:
+        print(f"{title}:")
+        print(f"  O: {mask['O']}")
+        for key, weights in mask["classes"].items():
+            print(f"  class ({key}), sectors 0..{args.n - 1}: {', '.join(weights)}")
+    return 0
+
+
 def run(args) -> int:
+    if general_path(args):
+        return _run_general(args)
     masks = limit_masks_at(args.scheme, args.n)
     data = masks.as_json(args.digits)
     if args.json:

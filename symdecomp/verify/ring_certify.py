@@ -35,13 +35,13 @@ in ``Q(zeta_2n)`` is tested exactly for being a root of ``R`` (or of another roo
 from __future__ import annotations
 
 from fractions import Fraction
-from functools import lru_cache
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.analysis.ring_charpoly import _fmpq, frequency_product_values
 from symdecomp.analysis.ring_spectrum import frequency_factors, ring_spectrum
 from symdecomp.errors import check_valence
 from symdecomp.schemes.matrices import entries_characteristic_polynomial
@@ -49,53 +49,10 @@ from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.symbols import omega as OMEGA
 from symdecomp.verify.certify import Certificate
 from symdecomp.verify.numeric import CheckStatus
 
-__all__ = ["certify_ring", "frequency_product_values"]
-
-
-def _fmpq(x) -> flint.fmpq:
-    x = sp.Rational(x)
-    return flint.fmpq(int(x.p), int(x.q))
-
-
-@lru_cache(maxsize=32)
-def _laurent_charpoly(blocks: RingBlocks) -> tuple[int, tuple[flint.fmpq_poly, ...]]:
-    """``(m, (Q_0, Q_1, ...))`` with ``omega^m det(lambda I - E(omega)) = sum_i lambda^i Q_i(omega)``."""
-    K = blocks.class_count
-    det = sp.expand((LAM * sp.eye(K) - blocks.frequency_matrix()).det(method="berkowitz"))
-    terms = sp.Poly(sp.expand(det * OMEGA ** (4 * K * 8)), LAM, OMEGA).terms()
-    low = min(b for (_, b), _ in terms)
-    m = 4 * K * 8 - low
-    degree = max(a for (a, _), _ in terms)
-    polys = [dict() for _ in range(degree + 1)]
-    for (a, b), c in terms:
-        polys[a][b - low] = _fmpq(c)
-    return m, tuple(flint.fmpq_poly([p.get(j, 0) for j in range(max(p, default=0) + 1)]) for p in polys)
-
-
-def frequency_product_values(blocks: RingBlocks, n: int, weights: dict, points) -> list:
-    """``det(l I - E_0) prod_{k=1}^{n-1} det(l I - E(omega^k))`` exactly at each rational ``l``.
-
-    ``weights``: rational values for every symbol of :data:`CENTRE_WEIGHTS`.
-    """
-    m, Q = _laurent_charpoly(blocks)
-    E0 = blocks.frequency_zero_matrix(n, symbolic_weights=True).xreplace(weights)
-    f0 = sp.Poly((LAM * sp.eye(E0.shape[0]) - E0).det(method="berkowitz"), LAM)
-    zero = flint.fmpq_poly([_fmpq(c) for c in reversed(f0.all_coeffs())])
-    cyclotomic = flint.fmpq_poly([1] * n)
-    sign = -1 if (m * (n - 1)) % 2 else 1
-    out = []
-    for lam in points:
-        lam = flint.fmpq(lam)
-        G, power = flint.fmpq_poly(0), flint.fmpq(1)
-        for q in Q:
-            G += q * power
-            power *= lam
-        out.append(zero(lam) * cyclotomic.resultant(G) * sign)
-    return out
+__all__ = ["certify_ring"]
 
 
 def certify_ring(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks | None = None, digits: int = 20) -> Certificate:

@@ -11,19 +11,24 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
                    exact/interval evaluation of expressions (``compile``)
-``schemes/``       a scheme as data (edge, face, vertex rules, ``scheme``), its subdivision
-                   matrix (Eq. 13-16, ``scheme``; exact FLINT matrices, ``matrices``), whole quad
-                   meshes refined by its rules (Section 3, ``mesh``), the 1-ring as a pair of
-                   polygons (Section 4, ``ring``)
+``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes,
+                   ``scheme``; Loop, ``loop``), its subdivision matrix (Eq. 13-16, ``scheme``;
+                   exact FLINT matrices, ``matrices``), whole quad and triangle meshes refined
+                   by its rules (Section 3, ``mesh``, ``trimesh``), K-ring matrices by exact
+                   refinement (``rings``), the 1-ring as a pair of polygons (Section 4, ``ring``)
 ``analysis/``      per-frequency matrices M_j and the Eq. 43 matrix (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
                    ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
                    (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
-                   ``support``), rings iterated step by step (``evolution``)
-``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
-                   (``certify``), OpenSubdiv (``oracle``, ``opensubdiv``)
+                   ``support``), rings iterated step by step (``evolution``); any scheme and
+                   K-ring: block form and E_k (``ring_blocks``), factored spectra
+                   (``ring_spectrum``), product-form charpoly (``ring_charpoly``), masks
+                   (``ring_masks``)
+``verify/``        cross-checks against the full matrices: numeric (``numeric``,
+                   ``ring_numeric``), certified (``certify``, ``ring_certify``), OpenSubdiv
+                   (``oracle``, ``opensubdiv``)
 ``claims/``        the paper's claims, one module per section, and their registry
 ``output/``        LaTeX (``latex``, one entry point ``aslatex``) and figures (``plotting``)
 ``cli/``           the ``symdecomp`` command, one module per subcommand
@@ -75,6 +80,12 @@ from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.tuning import joint_obstruction, tune
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from symdecomp.analysis.support import Region, classify_support
+from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
+from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
+from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.analysis.ring_spectrum import RingSpectrum, ring_spectrum
+from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.verify.ring_certify import certify_ring
 
 __version__ = "0.1.0"
 
@@ -141,6 +152,18 @@ __all__ = [
     "central_rings",
     "Region",
     "classify_support",
+    # any scheme (triangle meshes, Loop) and K-ring matrices
+    "loop",
+    "loop_warren",
+    "triangle_scheme",
+    "RingMatrix",
+    "ring_subdivision_matrix",
+    "RingBlocks",
+    "ring_blocks",
+    "RingSpectrum",
+    "ring_spectrum",
+    "ring_masks",
+    "certify_ring",
     # cross-checks against the full matrix
     "ClosedForms",
     "derived_closed_forms",

@@ -141,6 +141,17 @@ def test_wrong_blocks_are_refuted():
     bad = RingBlocks(b.scheme, b.mesh, b.rings, b.classes, b.centre, b.centre_row, b.centre_column, ((wrong,),), b.weights)
     c = certify_ring(loop(), 5, 1, blocks=bad)
     assert c.status is CheckStatus.DISAGREE and "refuted" in c.message
+    c = certify_ring(loop(), 5, 1, blocks=bad, method="structure")
+    assert c.status is CheckStatus.DISAGREE and "refuted" in c.message
+
+
+@pytest.mark.parametrize("name", ["loop", "catmull-clark"])
+def test_structural_certificate(name):
+    for n in (3, 4, 7, 40):
+        for rings in (1, 2):
+            c = certify_ring(SCHEMES[name], n, rings, method="structure")
+            assert c.ok, c.message
+            assert c.multiplicities == certify_ring(SCHEMES[name], n, rings).multiplicities
 
 
 def test_numeric_ring_check():

@@ -52,6 +52,10 @@ def register(sub) -> None:
                    help=f"numeric mode: digits of agreement required (default 50; {MAX_DOUBLE_DIGITS} at most and 10 by default "
                    "for triangle schemes and --rings > 1)")
     p.add_argument("--certify", action="store_true", help="prove each valence exactly instead of comparing numerically")
+    p.add_argument("--structural", action="store_true",
+                   help="with --certify: the O(n) proof (the refined matrix equals the bordered circulant-block matrix "
+                   "of the frequency matrices, entry by entry; Remark 6.1) instead of the dense characteristic "
+                   "polynomial; for large valences; multiplicities are then not certified")
     p.add_argument("--jobs", type=positive_int, default=os.cpu_count() or 1,
                    help="worker processes, one valence each at a time (default: the number of CPUs)")
     p.add_argument("--json", action="store_true", help="print one JSON object: {rows: [...], summary: {...}}")
@@ -60,9 +64,9 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def _one(n, *, scheme, certified, dps, closed_forms, rings=None):
+def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly"):
     if rings is not None:  # the any-scheme route: K-ring frequency matrices
-        return certify_ring(scheme, n, rings) if certified else ring_numeric_check(scheme, n, rings, digits=dps)
+        return certify_ring(scheme, n, rings, method=method) if certified else ring_numeric_check(scheme, n, rings, digits=dps)
     if certified:
         return certify(scheme, n, closed_forms=closed_forms)
     return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms)
@@ -77,16 +81,19 @@ def _one_forked(n):
 
 
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
-                   jobs: int = 1, show_progress: bool = True, rings: int | None = None):
+                   jobs: int = 1, show_progress: bool = True, rings: int | None = None, method: str = "charpoly"):
     """Yield the check of each valence in order (a :class:`~symdecomp.verify.certify.Certificate` or
     :class:`~symdecomp.verify.numeric.NumericCheck`), in ``jobs`` processes.
 
-    ``rings``: check the ``rings``-ring frequency matrices (any scheme) instead of the 1-ring closed forms.
+    ``rings``: check the ``rings``-ring frequency matrices (any scheme) instead of the 1-ring closed forms;
+    ``method``: their certificate (``"charpoly"`` or ``"structure"``, see :func:`~symdecomp.verify.ring_certify.certify_ring`).
     """
     valences = list(valences)
     if rings is None:
         closed_forms = closed_forms or derived_closed_forms(scheme)
     job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms, rings=rings)
+    if rings is not None:
+        job["method"] = method
     label = "certify" if certified else f"check {dps} digits"
     if jobs > 1 and len(valences) > 1 and "fork" in multiprocessing.get_all_start_methods():
         first = _one(valences[0], **job)  # also does the symbolic step once, before the workers fork
@@ -107,7 +114,9 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
     start = time.perf_counter()
     rows = []
-    rings = args.rings if general_path(args) else None
+    if args.structural and not args.certify:
+        raise SymdecompError("--structural: give it with --certify (it is a kind of certificate)")
+    rings = args.rings if general_path(args) or args.structural else None
     if args.dps is None:
         args.dps = 50 if rings is None else 10
     elif rings is not None and args.dps > MAX_DOUBLE_DIGITS:
@@ -122,7 +131,8 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         else:
             print(f"{'n':>4}  {'status':<13} {'distinct':>8}  {'max deviation':>13}  {'max spread':>10}  precisions")
     for r in check_valences(args.scheme, args.valences, certified=args.certify, dps=args.dps,
-                            closed_forms=closed_forms, jobs=args.jobs, show_progress=True, rings=rings):
+                            closed_forms=closed_forms, jobs=args.jobs, show_progress=True, rings=rings,
+                            method="structure" if args.structural else "charpoly"):
         rows.append(r)
         if args.json:
             continue

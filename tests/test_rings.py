@@ -189,7 +189,8 @@ def test_cli_any_scheme_route():
     r = _cli("check", "--scheme", "loop", "--rings", "2", "--n", "3:6", "--certify", "--json", "--jobs", "1")
     assert r.returncode == 0 and json.loads(r.stdout)["summary"]["agree"] == 4
     for bad in (("spectrum", "5", "--rings", "4"), ("check", "--scheme", "loop", "--n", "5", "--dps", "30"),
-                ("charpoly", "5", "--scheme", "loop", "--free-weights"), ("spectrum", "5", "--scheme", "nope")):
+                ("charpoly", "5", "--scheme", "loop", "--free-weights"), ("spectrum", "5", "--scheme", "nope"),
+                ("tune", "5", "--scheme", "loop"), ("check", "--n", "5", "--structural")):
         r = _cli(*bad)
         assert r.returncode == 2 and "error:" in r.stderr.strip().splitlines()[-1] and "Traceback" not in r.stderr
     r = _cli("charpoly", "5", "--scheme", "loop", "--json")

@@ -14,6 +14,7 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.tuning import tune
+from symdecomp.errors import SymdecompError
 from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence
 
 
@@ -36,6 +37,9 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
+    if args.scheme.mesh != "quad":
+        raise SymdecompError(f"--scheme {args.scheme.name}: tune solves the paper's quad 1-ring conditions (Section 5.2); "
+                             f"it does not apply to {args.scheme.mesh} meshes")
     if args.table:
         valences = list(range(3, args.n + 1))
         rows = []

@@ -15,7 +15,7 @@ import ctypes
 from symdecomp.schemes.trimesh import TriangleMesh, triangle_ring_mesh
 from symdecomp.verify.opensubdiv import BridgeUnavailableError, load_bridge
 
-__all__ = ["osd_loop_step", "osd_loop_one_ring_matrix", "osd_loop_position_mask"]
+__all__ = ["osd_loop_step", "osd_loop_one_ring_matrix", "osd_loop_position_mask", "osd_loop_tangent_masks"]
 
 
 def _function(build: bool = True):
@@ -25,13 +25,16 @@ def _function(build: bool = True):
     except AttributeError as exc:  # an old build without the Loop entry point
         raise BridgeUnavailableError("the OpenSubdiv bridge has no Loop entry point; rebuild it") from exc
     ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
-    fn.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ip, dp, dp, dp, ctypes.c_char_p, ctypes.c_int]
+    fn.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ip, dp, dp, dp, dp, dp, ctypes.c_char_p, ctypes.c_int]
     fn.restype = ctypes.c_int
     return fn
 
 
-def osd_loop_step(mesh: TriangleMesh, edges) -> tuple[dict, list, dict]:
-    """``(vertex points, edge points, limit positions)`` of one OpenSubdiv Loop step (3-D values)."""
+def osd_loop_step(mesh: TriangleMesh, edges, *, tangents: bool = False) -> tuple:
+    """``(vertex points, edge points, limit positions)`` of one OpenSubdiv Loop step (3-D values).
+
+    With ``tangents`` also the two limit tangents of every vertex (two more dictionaries).
+    """
     fn = _function()
     ids = mesh.vertices()
     index = {v: i for i, v in enumerate(ids)}
@@ -41,15 +44,22 @@ def osd_loop_step(mesh: TriangleMesh, edges) -> tuple[dict, list, dict]:
     flat_edges = [index[v] for e in edges for v in e]
     out_v = (ctypes.c_double * (3 * len(ids)))()
     out_l = (ctypes.c_double * (3 * len(ids)))()
+    out_t1 = (ctypes.c_double * (3 * len(ids)))()
+    out_t2 = (ctypes.c_double * (3 * len(ids)))()
     out_e = (ctypes.c_double * max(1, 3 * len(edges)))()
     error = ctypes.create_string_buffer(512)
     code = fn(len(ids), len(mesh.faces), (ctypes.c_int * len(faces))(*faces), (ctypes.c_double * len(positions))(*positions),
-              len(edges), (ctypes.c_int * max(1, len(flat_edges)))(*flat_edges), out_v, out_e, out_l, error, 512)
+              len(edges), (ctypes.c_int * max(1, len(flat_edges)))(*flat_edges), out_v, out_e, out_l, out_t1, out_t2, error, 512)
     if code:
         raise BridgeUnavailableError(f"OpenSubdiv Loop step failed ({code}): {error.value.decode()}")
     vertex = {v: tuple(out_v[3 * i:3 * i + 3]) for i, v in enumerate(ids)}
     limit = {v: tuple(out_l[3 * i:3 * i + 3]) for i, v in enumerate(ids)}
-    return vertex, [tuple(out_e[3 * i:3 * i + 3]) for i in range(len(edges))], limit
+    edge = [tuple(out_e[3 * i:3 * i + 3]) for i in range(len(edges))]
+    if not tangents:
+        return vertex, edge, limit
+    t1 = {v: tuple(out_t1[3 * i:3 * i + 3]) for i, v in enumerate(ids)}
+    t2 = {v: tuple(out_t2[3 * i:3 * i + 3]) for i, v in enumerate(ids)}
+    return vertex, edge, limit, t1, t2
 
 
 def _columns(n: int):
@@ -76,6 +86,20 @@ def osd_loop_one_ring_matrix(n: int) -> list[list[float]]:
             for i in range(n):
                 M[1 + i][c] = edge[i][t]
     return M
+
+
+def osd_loop_tangent_masks(n: int) -> tuple[list[float], list[float]]:
+    """OpenSubdiv's two Loop limit-tangent masks of the centre (weights of ``O, a_0..a_{n-1}``).
+
+    OpenSubdiv's tangents are some basis of the tangent plane, so they equal the toolkit's two
+    masks only up to a 2 x 2 change of basis: compare spans.
+    """
+    first, second = [0.0] * (n + 1), [0.0] * (n + 1)
+    for cols, mesh in _columns(n):
+        _, _, _, t1, t2 = osd_loop_step(mesh, [], tangents=True)
+        for t, c in enumerate(cols):
+            first[c], second[c] = t1[0][t], t2[0][t]
+    return first, second
 
 
 def osd_loop_position_mask(n: int) -> list[float]:

@@ -190,13 +190,14 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
 extern "C" {
 
 // Refine the triangle mesh once with OpenSubdiv's Loop scheme. For every base vertex v,
-// vertex_out[3v..] is its child vertex point and limit_out[3v..] the limit position of that
-// child (= the limit of v); both are NaN for a vertex without a child. For each of the
+// vertex_out[3v..] is its child vertex point, limit_out[3v..] the limit position of that
+// child (= the limit of v) and tan1_out, tan2_out its two limit tangents (OpenSubdiv's
+// first derivatives); all are NaN for a vertex without a child. For each of the
 // n_edges pairs (edges[2i], edges[2i+1]), edge_out[3i..] is the edge point. Returns 0 on
 // success, nonzero (with a message in `error`) on failure.
 int symdecomp_osd_loop_step(int n_vertices, int n_faces, const int *face_vertices, const double *positions,
                             int n_edges, const int *edges, double *vertex_out, double *edge_out,
-                            double *limit_out, char *error, int error_len) {
+                            double *limit_out, double *tan1_out, double *tan2_out, char *error, int error_len) {
     try {
         osd_failed = false;
         Far::SetErrorCallback(record_error);
@@ -229,9 +230,12 @@ int symdecomp_osd_loop_step(int n_vertices, int n_faces, const int *face_vertice
         Point *fine = buffer.data() + n_vertices;
         Far::PrimvarRefinerReal<double> primvar(*refiner);
         primvar.Interpolate(1, buffer.data(), fine);
-        std::vector<Point> limit(static_cast<size_t>(refiner->GetLevel(1).GetNumVertices()));
+        size_t fine_count = static_cast<size_t>(refiner->GetLevel(1).GetNumVertices());
+        std::vector<Point> limit(fine_count), tan1(fine_count), tan2(fine_count);
         Point *limit_dst = limit.data();
-        primvar.Limit(fine, limit_dst);
+        Point *tan1_dst = tan1.data();
+        Point *tan2_dst = tan2.data();
+        primvar.Limit(fine, limit_dst, tan1_dst, tan2_dst);
         if (osd_failed) {
             set_error(error, error_len, last_osd_error);
             return 6;
@@ -242,6 +246,8 @@ int symdecomp_osd_loop_step(int n_vertices, int n_faces, const int *face_vertice
             for (int c = 0; c < 3; ++c) {
                 vertex_out[3 * v + c] = child < 0 ? std::nan("") : fine[child].p[c];
                 limit_out[3 * v + c] = child < 0 ? std::nan("") : limit[child].p[c];
+                tan1_out[3 * v + c] = child < 0 ? std::nan("") : tan1[child].p[c];
+                tan2_out[3 * v + c] = child < 0 ? std::nan("") : tan2[child].p[c];
             }
         }
         for (int i = 0; i < n_edges; ++i) {

@@ -23,8 +23,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 from symdecomp.analysis.ring_masks import ring_masks  # noqa: E402
 from symdecomp.analysis.ring_spectrum import ring_spectrum  # noqa: E402
+from symdecomp.schemes.full_matrix import entries_characteristic_polynomial  # noqa: E402
 from symdecomp.schemes.loop import loop  # noqa: E402
-from symdecomp.schemes.matrices import entries_characteristic_polynomial  # noqa: E402
 from symdecomp.schemes.rings import ring_subdivision_matrix  # noqa: E402
 from symdecomp.schemes.scheme import catmull_clark  # noqa: E402
 from symdecomp.verify.ring_certify import certify_ring  # noqa: E402
@@ -58,11 +58,11 @@ def main(argv=None) -> int:
     for scheme in (catmull_clark(), loop()):
         certify_ring(scheme, 5, 1, method="structure")  # the one-time symbolic step
         rows = []
-        cpu, wall, results = timed(lambda: [certify_ring(scheme, n, 1, method="structure") for n in range(3, top + 1)])
+        cpu, wall, results = timed(lambda s=scheme: [certify_ring(s, n, 1, method="structure") for n in range(3, top + 1)])
         assert all(r.ok for r in results)
         rows.append((f"certify 3..{top}", cpu, wall))
         d_cpu, d_wall, _ = timed(dense, scheme, range(3, dense_max + 1))
-        s_cpu, s_wall, _ = timed(lambda: [certify_ring(scheme, n, 1, method="structure") for n in range(3, dense_max + 1)])
+        s_cpu, s_wall, _ = timed(lambda s=scheme: [certify_ring(s, n, 1, method="structure") for n in range(3, dense_max + 1)])
         cpu, wall, r = timed(certify_ring, scheme, big, 1, method="structure")
         assert r.ok
         rows.append((f"certify n={big}", cpu, wall))

@@ -10,11 +10,11 @@ from symdecomp.verify.opensubdiv import build as osd_build
 if not osd_build.headers_present():
     pytest.skip("OpenSubdiv headers (libosd-dev) or g++ not installed", allow_module_level=True)
 
+import numpy as np  # noqa: E402
+
 from symdecomp.analysis.ring_masks import ring_masks  # noqa: E402
 from symdecomp.schemes.loop import loop  # noqa: E402
 from symdecomp.schemes.rings import ring_subdivision_matrix  # noqa: E402
-import numpy as np  # noqa: E402
-
 from symdecomp.verify.opensubdiv.loop import osd_loop_one_ring_matrix, osd_loop_position_mask, osd_loop_tangent_masks  # noqa: E402
 
 

@@ -7,19 +7,20 @@ import pytest
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import cyclotomic_value
+from symdecomp.analysis.defective import jordan_vertex_weights
+from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.analysis.ring_spectrum import ring_spectrum
-from symdecomp.analysis.masks import limit_masks_at
-from symdecomp.analysis.defective import jordan_vertex_weights
 from symdecomp.cli import main
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.loop import loop, loop_beta, loop_warren, triangle_scheme
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.symbols import alpha, beta, n as N
+from symdecomp.symbols import alpha, beta
+from symdecomp.symbols import n as N
 from symdecomp.verify.certify import certify
-from symdecomp.verify.numeric import CheckStatus
+from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
 from symdecomp.verify.ring_numeric import ring_numeric_check
 
@@ -147,9 +148,9 @@ def test_wrong_blocks_are_refuted():
     wrong = tuple((l, c + (sp.Rational(1, 64) if l == 0 else 0)) for l, c in offsets)
     bad = RingBlocks(b.scheme, b.mesh, b.rings, b.classes, b.centre, b.centre_row, b.centre_column, ((wrong,),), b.weights)
     c = certify_ring(loop(), 5, 1, blocks=bad)
-    assert c.status is CheckStatus.DISAGREE and "refuted" in c.message
+    assert c.status is CrossCheckStatus.DISAGREE and "refuted" in c.message
     c = certify_ring(loop(), 5, 1, blocks=bad, method="structure")
-    assert c.status is CheckStatus.DISAGREE and "refuted" in c.message
+    assert c.status is CrossCheckStatus.DISAGREE and "refuted" in c.message
 
 
 @pytest.mark.parametrize("name", ["loop", "catmull-clark"])

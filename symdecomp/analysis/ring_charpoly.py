@@ -23,7 +23,7 @@ import sympy as sp
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_spectrum import frequency_factors
 from symdecomp.errors import check_valence
-from symdecomp.schemes.matrices import entries_characteristic_polynomial
+from symdecomp.schemes.full_matrix import entries_characteristic_polynomial
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM

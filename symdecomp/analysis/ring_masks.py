@@ -78,9 +78,7 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
     first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
     lam1 = max(first, key=lambda e: float(e.ball.abs_upper())).ball
     prec = max(128, 4 * digits + 64)
-    old = flint.ctx.prec
-    flint.ctx.prec = prec
-    try:
+    with flint.ctx.workprec(prec):
         E0 = sp.Matrix(blocks.frequency_zero_matrix(n))
         one = flint.acb_mat([[flint.acb(int(r == c)) for c in range(E0.shape[0])] for r in range(E0.shape[0])])
         A0 = _acb_matrix(E0, (), ()) - one
@@ -114,5 +112,3 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
             if scheme.mesh == "quad":
                 mask["b"] = mask["classes"]["1,1"]
         return {"n": n, "scheme": scheme.name, "rings": rings, "subdominant": acb_text(lam1, digits), **masks}
-    finally:
-        flint.ctx.prec = old

@@ -269,9 +269,7 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
     ff = frequency_factors(blocks)
     exact_w, field_w = _centre_values(scheme, n)
     prec = max(128, 4 * digits + 64)
-    old = flint.ctx.prec
-    flint.ctx.prec = prec
-    try:
+    with flint.ctx.workprec(prec):
         zero = _Roots(ff.zero, (N, W_A, W_B))
         other = _Roots(ff.other, (OMEGA, COSK))
         wa, wb = (to_acb(field_w[s], prec) for s in (W_A, W_B))
@@ -300,8 +298,6 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
                     jordan=_jordan(blocks, ff, items, g, n, exact_w) if jordan else None,
                 )
             )
-    finally:
-        flint.ctx.prec = old
     size = 1 + blocks.class_count * n
     return RingSpectrum(scheme.name, scheme.mesh, n, rings, size, digits, tuple(entries))
 
@@ -331,7 +327,8 @@ def _jordan(blocks, ff, items, group, n, weights) -> tuple[int, ...] | None:
         E = blocks.frequency_zero_matrix(n) if k == 0 else blocks.frequency_matrix()
         try:
             value = cyclotomic_value(sp.sympify(f.roots[j]).xreplace(at), field=field)
-            A = [[cyclotomic_value(sp.sympify(E[r, c]).xreplace(at), field=field) - (value if r == c else 0) for c in range(E.shape[1])] for r in range(E.shape[0])]
+            A = [[cyclotomic_value(sp.sympify(E[r, c]).xreplace(at), field=field) - (value if r == c else 0) for c in range(E.shape[1])]
+                 for r in range(E.shape[0])]
         except ValueError:
             return None
         sizes += _partition(A, len(members))

@@ -12,12 +12,13 @@ from functools import partial
 
 import mpmath
 
-from symdecomp.verify.certify import certify
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.verify.numeric import CheckStatus, numeric_check
-from symdecomp.schemes.scheme import Scheme
 from symdecomp.cli.common import add_rings_option, add_scheme_option, general_path, positive_int, print_json, progress, valence_range
 from symdecomp.errors import SymdecompError
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.verify.certify import certify
+from symdecomp.verify.numeric import numeric_check
+from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
 from symdecomp.verify.ring_numeric import MAX_DOUBLE_DIGITS, ring_numeric_check
 
@@ -144,7 +145,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
                     f"{mpmath.nstr(r.max_spread, 3):>10}  {','.join(map(str, r.precisions))}")
         print(line if r.ok else f"{line}\n      {r.message}", flush=True)
     elapsed = time.perf_counter() - start
-    counts = {s.value: sum(1 for r in rows if r.status is s) for s in CheckStatus}
+    counts = {s.value: sum(1 for r in rows if r.status is s) for s in CrossCheckStatus}
     failed = [r for r in rows if not r.ok]
     summary = {
         "mode": "certified" if args.certify else "numeric",

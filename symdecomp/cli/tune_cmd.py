@@ -9,13 +9,12 @@ nice elliptic behaviour (both defects, from their closed forms in ``n``) for ``n
 
 from __future__ import annotations
 
-
 import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.tuning import tune
-from symdecomp.errors import SymdecompError
 from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence
+from symdecomp.errors import SymdecompError
 
 
 def register(sub) -> None:

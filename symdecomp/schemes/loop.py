@@ -39,11 +39,14 @@ def warren_beta() -> sp.Expr:
     return sp.Piecewise((R(3, 16), sp.Eq(N, 3)), (R(3, 8) / N, True))
 
 
-def triangle_scheme(name: str, beta, *, edge_end=R(3, 8), edge_side=R(1, 8)) -> Scheme:
+def triangle_scheme(name: str, beta, *, edge_end=None, edge_side=None) -> Scheme:
     """A Loop-type scheme: vertex weight ``beta`` (an expression in ``n``), edge weights ``edge_end``, ``edge_side``.
 
-    The edge rule must be affine: ``2 edge_end + 2 edge_side = 1``.
+    The edge weights default to Loop's ``3/8`` and ``1/8``; the edge rule must be affine:
+    ``2 edge_end + 2 edge_side = 1``.
     """
+    edge_end = R(3, 8) if edge_end is None else edge_end
+    edge_side = R(1, 8) if edge_side is None else edge_side
     edge = Stencil.from_weights(edge_end, {0: edge_end, -1: edge_side, 1: edge_side}, {}, name="edge rule")
     vertex = VertexRule.affine(beta, 0, name="vertex rule")
     return Scheme(name, edge, None, vertex, mesh="triangle")

@@ -27,9 +27,9 @@ regular), and :meth:`RingMatrix.weight_values` gives their exact values.
 from __future__ import annotations
 
 import numbers
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Mapping
 
 import sympy as sp
 
@@ -58,7 +58,7 @@ class SparseRow:
     def __rmul__(self, w):
         return SparseRow({k: w * x for k, x in self.entries.items()})
 
-    def __add__(self, other: "SparseRow") -> "SparseRow":
+    def __add__(self, other: SparseRow) -> SparseRow:
         out = dict(self.entries)
         for k, x in other.entries.items():
             out[k] = out[k] + x if k in out else x

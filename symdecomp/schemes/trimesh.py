@@ -23,9 +23,9 @@ the new triangles whose three corners were computed, so everything it returns is
 from __future__ import annotations
 
 import numbers
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Callable, Mapping, Sequence
 
 import sympy as sp
 

@@ -44,13 +44,13 @@ from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_charpoly import _fmpq, frequency_product_values
 from symdecomp.analysis.ring_spectrum import frequency_factors, ring_spectrum
 from symdecomp.errors import check_valence
-from symdecomp.schemes.matrices import entries_characteristic_polynomial
+from symdecomp.schemes.full_matrix import entries_characteristic_polynomial
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.verify.certify import Certificate
-from symdecomp.verify.numeric import CheckStatus
+from symdecomp.verify.result import CrossCheckStatus
 
 __all__ = ["certify_ring", "structural_certificate"]
 
@@ -92,16 +92,20 @@ def certify_ring(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks |
         where = f" with centre weights {point}" if free else ""
         message = (f"n = {n}: refuted: chi_S({bad}) = {left} but the frequency factors give {right}{where} "
                    "(exact): the frequency matrices are not the spectrum of the full matrix")
-        return Certificate(n, scheme.name, CheckStatus.DISAGREE, "chi_S != product of frequency factors", 0, multiplicities,
-                           texts, False, height, message)
+        return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.DISAGREE, message=message,
+                           method="chi_S != product of frequency factors", distinct=0, multiplicities=multiplicities,
+                           values=texts, multiplicities_certified=False, height_bits=height)
     count = 1 + len(free)
-    method = f"chi_S = prod(frequency factors) at {size} points" + (f", for {count} values of the centre weights {', '.join(map(str, free))} (affine in them)" if free else "")
+    method = f"chi_S = prod(frequency factors) at {size} points"
+    if free:
+        method += f", for {count} values of the centre weights {', '.join(map(str, free))} (affine in them)"
     distinct = _distinct(scheme, blocks, n, chis, free, fixed)
     certified = distinct is not None and distinct == len(spectrum.eigenvalues)
     note = "multiplicities certified" if certified else "multiplicities not certified (distinct values not separated or not decidable)"
     message = f"n = {n}: proved: {method}; {len(spectrum.eigenvalues)} distinct eigenvalues, {note}"
-    return Certificate(n, scheme.name, CheckStatus.AGREE, method, distinct if distinct is not None else len(spectrum.eigenvalues),
-                       multiplicities, texts, certified, height, message)
+    return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.AGREE, message=message, method=method,
+                       distinct=distinct if distinct is not None else len(spectrum.eigenvalues), multiplicities=multiplicities,
+                       values=texts, multiplicities_certified=certified, height_bits=height)
 
 
 def _squarefree_degree(p: flint.fmpq_poly) -> int:
@@ -180,11 +184,14 @@ def structural_certificate(scheme: Scheme, n: int, rings: int = 1, *, blocks: Ri
         i, c, got, want = mismatch
         message = (f"n = {n}: refuted: entry ({i}, {c}) of the refined matrix (block order) is {got}, the block form "
                    f"gives {want} (exact)")
-        return Certificate(n, scheme.name, CheckStatus.DISAGREE, "refined matrix != block form", 0, multiplicities, texts,
-                           False, 0, message)
+        return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.DISAGREE, message=message,
+                           method="refined matrix != block form", distinct=0, multiplicities=multiplicities, values=texts,
+                           multiplicities_certified=False, height_bits=0)
     method = f"refined matrix = bordered CB-matrix of E_0, E(omega), entry by entry ({sum(len(r) for r in S.rows)} entries); Remark 6.1"
     message = f"n = {n}: proved: {method}; {len(spectrum.eigenvalues)} distinct values (Arb clusters, multiplicities not certified)"
-    return Certificate(n, scheme.name, CheckStatus.AGREE, method, len(spectrum.eigenvalues), multiplicities, texts, False, 0, message)
+    return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.AGREE, message=message, method=method,
+                       distinct=len(spectrum.eigenvalues), multiplicities=multiplicities, values=texts,
+                       multiplicities_certified=False, height_bits=0)
 
 
 _POS_CACHE: dict = {}

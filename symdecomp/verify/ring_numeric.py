@@ -23,7 +23,8 @@ from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.verify.numeric import CheckStatus, EigenvalueMatch, NumericCheck
+from symdecomp.verify.numeric import EigenvalueMatch, NumericCheck
+from symdecomp.verify.result import CrossCheckStatus
 
 __all__ = ["MAX_DOUBLE_DIGITS", "ring_numeric_check"]
 
@@ -63,7 +64,7 @@ def ring_numeric_check(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 
             failures.append(f"{e.text} (k = {', '.join(map(str, e.frequencies))}; multiplicity {e.multiplicity}): "
                             f"the full matrix's eigenvalues average {mean:.12g}, off by {deviation:.3g}")
     matches.sort(key=lambda m: -abs(m.value))
-    status = CheckStatus.DISAGREE if failures else CheckStatus.AGREE
+    status = CrossCheckStatus.DISAGREE if failures else CrossCheckStatus.AGREE
     message = f"n = {n}: " + ("; ".join(failures) if failures else f"all {len(matches)} distinct values agree to {digits} digits (double precision)")
     return NumericCheck(
         n=n, scheme=scheme.name, dps=digits, precisions=(15,), status=status,

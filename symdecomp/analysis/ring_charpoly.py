@@ -22,13 +22,13 @@ import sympy as sp
 
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_spectrum import frequency_factors
-from symdecomp.errors import check_valence
 from symdecomp.schemes.full_matrix import entries_characteristic_polynomial
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_valence
 
 __all__ = ["ring_charpoly", "product_form", "frequency_product_values"]
 

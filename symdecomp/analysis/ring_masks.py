@@ -30,9 +30,10 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.analysis.ring_spectrum import acb_text, ring_spectrum
-from symdecomp.errors import SymdecompError, check_valence
+from symdecomp.errors import SymdecompError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_valence
 
 __all__ = ["ring_masks"]
 

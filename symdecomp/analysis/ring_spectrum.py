@@ -31,12 +31,13 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value, matrix_rank, to_acb
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_valence
 
 __all__ = ["Factor", "FrequencyFactors", "frequency_factors", "RingEigenvalue", "RingSpectrum", "ring_spectrum", "acb_text"]
 

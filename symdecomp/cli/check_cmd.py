@@ -2,19 +2,33 @@
 
 from __future__ import annotations
 
-import argparse
+import ctypes
 import itertools
 import multiprocessing
 import os
+import signal
 import time
-from concurrent.futures import ProcessPoolExecutor
 from functools import partial
 
 import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.cli.common import add_rings_option, add_scheme_option, general_path, positive_int, print_json, progress, valence_range
-from symdecomp.errors import SymdecompError
+from symdecomp.cli.common import (
+    LIMITS,
+    Once,
+    add_rings_option,
+    add_scheme_option,
+    digits,
+    flag,
+    general_path,
+    given,
+    positive_int,
+    print_json,
+    progress,
+    refuse_together,
+    valence_range,
+)
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.certify import certify
 from symdecomp.verify.numeric import numeric_check
@@ -22,15 +36,7 @@ from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
 from symdecomp.verify.ring_numeric import MAX_DOUBLE_DIGITS, ring_numeric_check
 
-__all__ = ["register", "run", "check_valences"]
-
-
-def _digits(text: str) -> int:
-    """argparse type: digits of agreement, at least 5."""
-    value = positive_int(text)
-    if value < 5:
-        raise argparse.ArgumentTypeError(f"--dps must be at least 5, got {value}")
-    return value
+__all__ = ["register", "run", "check_valences", "pool_size"]
 
 
 def register(sub) -> None:
@@ -44,22 +50,21 @@ def register(sub) -> None:
         "factors, checked with FLINT at 2n+1 rational points, with certified multiplicities. "
         "For triangle schemes and --rings K > 1 the frequency matrices E_0, E(omega) of the K-ring matrix "
         "(built by exact refinement) are checked instead: numeric mode in double precision (--dps at most "
-        f"{MAX_DOUBLE_DIGITS}, default 10), certified mode by chi_S = product of the frequency factors. "
+        f"{MAX_DOUBLE_DIGITS}, default 10), certified mode by chi_S = product of the frequency factors "
+        "(or, with --structural, the O(n) proof that the refined matrix is the block matrix). "
         "Exit status 1 if any valence disagrees or is left without a verdict.",
     )
-    p.add_argument("--n", dest="valences", type=valence_range, required=True, metavar="A:B",
-                   help="valences to check: an inclusive range A:B or a single N")
-    p.add_argument("--dps", type=_digits, default=None,
-                   help=f"numeric mode: digits of agreement required (default 50; {MAX_DOUBLE_DIGITS} at most and 10 by default "
-                   "for triangle schemes and --rings > 1)")
-    p.add_argument("--certify", action="store_true", help="prove each valence exactly instead of comparing numerically")
-    p.add_argument("--structural", action="store_true",
-                   help="with --certify: the O(n) proof (the refined matrix equals the bordered circulant-block matrix "
-                   "of the frequency matrices, entry by entry; Remark 6.1) instead of the dense characteristic "
-                   "polynomial; for large valences; multiplicities are then not certified")
-    p.add_argument("--jobs", type=positive_int, default=os.cpu_count() or 1,
-                   help="worker processes, one valence each at a time (default: the number of CPUs)")
-    p.add_argument("--json", action="store_true", help="print one JSON object: {rows: [...], summary: {...}}")
+    p.add_argument("--n", dest="valences", type=valence_range("check --certify"), action=Once, required=True, metavar="A:B",
+                   help="valences to check: an inclusive range A:B or a single N (at most 128; with --certify 512)")
+    p.add_argument("--dps", type=digits("--dps", minimum=5, limit="dps"), action=Once, default=50,
+                   help="numeric mode: digits of agreement required (default 50; 5 <= dps <= 1000)")
+    flag(p, "--certify", help="prove each valence exactly instead of comparing numerically (not with --dps)")
+    flag(p, "--structural", help="with --certify: the O(n) proof (the refined matrix equals the bordered circulant-block "
+         "matrix of the frequency matrices, entry by entry; Remark 6.1) instead of the dense characteristic polynomial; "
+         "multiplicities are then not certified")
+    p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=os.cpu_count() or 1,
+                   help="worker processes at most (default: the number of CPUs; never more than the valences or CPUs)")
+    flag(p, "--json", help="print one JSON object: {rows: [...], summary: {...}}")
     add_scheme_option(p)
     add_rings_option(p)
     p.set_defaults(func=run)
@@ -81,30 +86,58 @@ def _one_forked(n):
     return _one(n, **_JOB)
 
 
+def pool_size(jobs: int, work: int) -> int:
+    """Worker processes for ``work`` items: never more than the work, the CPUs or ``jobs``."""
+    return max(1, min(jobs, work, os.cpu_count() or 1))
+
+
+def _worker_init(parent: int) -> None:
+    """In each forked worker: die with the parent, leave Ctrl-C and SIGTERM to the parent's cleanup."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent terminates the pool (no traceback per worker)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _die_with_parent(parent)
+
+
+def _die_with_parent(parent: int) -> None:
+    """Ask Linux to send SIGTERM to this process when its parent exits (prctl PR_SET_PDEATHSIG)."""
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, signal.SIGTERM, 0, 0, 0)  # PR_SET_PDEATHSIG = 1
+    except (OSError, AttributeError):  # pragma: no cover - not Linux
+        pass
+    if os.getppid() != parent:  # the parent died before the request took effect
+        os._exit(1)
+
+
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
                    jobs: int = 1, show_progress: bool = True, rings: int | None = None, method: str = "charpoly"):
     """Yield the check of each valence in order (a :class:`~symdecomp.verify.certify.Certificate` or
-    :class:`~symdecomp.verify.numeric.NumericCheck`), in ``jobs`` processes.
+    :class:`~symdecomp.verify.numeric.NumericCheck`), in at most ``jobs`` processes.
 
-    ``rings``: check the ``rings``-ring frequency matrices (any scheme) instead of the 1-ring closed forms;
-    ``method``: their certificate (``"charpoly"`` or ``"structure"``, see :func:`~symdecomp.verify.ring_certify.certify_ring`).
+    The pool is never larger than the remaining valences or the CPU count; its workers die with
+    this process (on SIGTERM, SIGINT, or if it is killed) and are terminated if the caller stops.
+    ``rings``: check the ``rings``-ring frequency matrices (any scheme) instead of the 1-ring closed
+    forms; ``method``: their certificate (``"charpoly"`` or ``"structure"``, see
+    :func:`~symdecomp.verify.ring_certify.certify_ring`).
     """
     valences = list(valences)
     if rings is None:
         closed_forms = closed_forms or derived_closed_forms(scheme)
-    job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms, rings=rings)
-    if rings is not None:
-        job["method"] = method
+    job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms, rings=rings, method=method)
     label = "certify" if certified else f"check {dps} digits"
-    if jobs > 1 and len(valences) > 1 and "fork" in multiprocessing.get_all_start_methods():
+    workers = pool_size(jobs, len(valences) - 1)
+    if workers > 1 and "fork" in multiprocessing.get_all_start_methods():
         first = _one(valences[0], **job)  # also does the symbolic step once, before the workers fork
         _JOB.clear()
         _JOB.update(job)
+        pool = multiprocessing.get_context("fork").Pool(workers, initializer=_worker_init, initargs=(os.getpid(),))
         try:
-            with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("fork")) as pool:
-                rest = pool.map(_one_forked, valences[1:], chunksize=1)
-                yield from progress(itertools.chain([first], rest), len(valences), label, enabled=show_progress)
+            rest = pool.imap(_one_forked, valences[1:], chunksize=1)
+            yield from progress(itertools.chain([first], rest), len(valences), label, enabled=show_progress)
+            pool.close()
         finally:
+            pool.terminate()
+            pool.join()
             _JOB.clear()
     else:
         work = partial(_one, **job)
@@ -113,16 +146,22 @@ def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, 
 
 def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
+    refuse_together(args, "--certify", "--dps", "the certified check is exact and has no precision")
+    bound, why = LIMITS["check"]
+    if not args.certify and max(args.valences) > bound:
+        raise InvalidInputError(f"check --n: numeric mode goes up to N = {bound}, got {max(args.valences)} ({why}); "
+                                "use --certify for larger valences")
+    if args.structural and not args.certify:
+        raise InvalidInputError("--structural: give it with --certify (it is a kind of certificate)")
+    rings = args.rings if general_path(args) or args.structural else None
+    if rings is not None and not args.certify:
+        if not given(args, "dps"):
+            args.dps = 10
+        elif args.dps > MAX_DOUBLE_DIGITS:
+            raise InvalidInputError(f"--dps: the numeric check of triangle schemes and --rings > 1 runs in double precision; "
+                                    f"give at most {MAX_DOUBLE_DIGITS}, or use --certify")
     start = time.perf_counter()
     rows = []
-    if args.structural and not args.certify:
-        raise SymdecompError("--structural: give it with --certify (it is a kind of certificate)")
-    rings = args.rings if general_path(args) or args.structural else None
-    if args.dps is None:
-        args.dps = 50 if rings is None else 10
-    elif rings is not None and args.dps > MAX_DOUBLE_DIGITS:
-        raise SymdecompError(f"--dps: the numeric check of triangle schemes and --rings > 1 runs in double precision; "
-                             f"give at most {MAX_DOUBLE_DIGITS}, or use --certify")
     if not args.json:
         mode = "certified (exact)" if args.certify else f"numeric, {args.dps} digits"
         what = "closed forms" if rings is None else f"{rings}-ring frequency matrices E_0, E(omega)"

@@ -7,16 +7,14 @@ follow from the left-eigenvector equation (for Catmull-Clark
 ``(cos(2 pi i/N) + cos(2 pi (i+1)/N))/(16 lambda_1 - 4)``, resp. with ``sin``); ``O`` has weight 0.
 
 JSON: ``{"n": N, "position": {"O": w, "a": [...], "b": [...]}, "tangents": [{"O": w, "a": [...],
-"b": [...]}, {...}], "subdominant": "<decimal>"}``, every weight a decimal string. Triangle schemes
-and ``--rings K > 1`` (:mod:`symdecomp.analysis.ring_masks`) add ``"rings"``, ``"scheme"`` and per
-mask ``"classes"`` (``"u,v"``: the weight of each sector's vertex of that class); ``"b"`` only on quads.
+"b": [...]}, {...}], "subdominant": "<decimal>"}``, every weight a decimal string.
 """
 
 from __future__ import annotations
 
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.cli.common import add_rings_option, add_scheme_option, general_path, positive_int, print_json, valence
+from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, valence
 
 
 def register(sub) -> None:
@@ -27,9 +25,10 @@ def register(sub) -> None:
         "weights summing to 1) and for the subdominant eigenvalue lambda_1 (two tangent masks: weight cos(2 pi i/N), "
         "resp. sin(2 pi i/N), on a_i; b_i weights from the eigenvector equation; 0 on O).",
     )
-    p.add_argument("n", type=valence, metavar="N", help="the valence (an integer >= 3)")
-    p.add_argument("--digits", type=positive_int, default=20, help="significant digits of the weights (default 20)")
-    p.add_argument("--json", action="store_true", help='print {"n", "position", "tangents", "subdominant"}')
+    p.add_argument("n", type=valence("masks"), metavar="N", help="the valence (an integer, 3 <= N <= 1000)")
+    p.add_argument("--digits", type=digits(), action=Once, default=20,
+                   help="significant digits of the weights (default 20, at most 1000)")
+    flag(p, "--json", help='print {"n", "position", "tangents", "subdominant"}')
     add_scheme_option(p)
     add_rings_option(p)
     p.set_defaults(func=run)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.analysis.spectrum import closed_form_spectrum
-from symdecomp.cli.common import add_rings_option, add_scheme_option, general_path, positive_int, print_json, valence
+from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, valence
 
 #: Above this valence the any-scheme route leaves out the exact expressions unless --exact is given.
 EXACT_UP_TO = 64
@@ -21,11 +21,11 @@ def register(sub) -> None:
         "closed forms where their characteristic polynomials factor into degrees <= 2, certified Arb balls "
         "otherwise, with exact values and Jordan block sizes where decidable.",
     )
-    p.add_argument("n", type=valence, metavar="N", help="the valence (an integer >= 3)")
-    p.add_argument("--digits", type=positive_int, default=20, help="significant digits of the values (default 20)")
-    p.add_argument("--json", action="store_true", help='print {"n", "scheme", "eigenvalues": [{"value", "multiplicity", "frequencies"}]}')
-    p.add_argument("--exact", action="store_true",
-                   help=f"any-scheme route: print exact expressions also for N > {EXACT_UP_TO} (slower)")
+    p.add_argument("n", type=valence("spectrum"), metavar="N", help="the valence (an integer, 3 <= N <= 2000)")
+    p.add_argument("--digits", type=digits(), action=Once, default=20,
+                   help="significant digits of the values (default 20, at most 1000)")
+    flag(p, "--json", help='print {"n", "scheme", "eigenvalues": [{"value", "multiplicity", "frequencies"}]}')
+    flag(p, "--exact", help=f"any-scheme route: print exact expressions also for N > {EXACT_UP_TO} (slower)")
     add_scheme_option(p)
     add_rings_option(p)
     p.set_defaults(func=run)

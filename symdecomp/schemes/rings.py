@@ -33,11 +33,12 @@ from fractions import Fraction
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import MeshRules, mesh_rules, refine, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.schemes.trimesh import refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = ["CENTRE_WEIGHTS", "MAX_RINGS", "SparseRow", "RingMatrix", "ring_labels", "ring_size", "regular_valence", "ring_subdivision_matrix"]
 

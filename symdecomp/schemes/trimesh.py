@@ -29,10 +29,11 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import InvalidMeshError, _as_weight, _combine
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = [
     "TriangleMesh",

@@ -43,12 +43,12 @@ from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_charpoly import _fmpq, frequency_product_values
 from symdecomp.analysis.ring_spectrum import frequency_factors, ring_spectrum
-from symdecomp.errors import check_valence
 from symdecomp.schemes.full_matrix import entries_characteristic_polynomial
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 from symdecomp.verify.certify import Certificate
 from symdecomp.verify.result import CrossCheckStatus
 

@@ -20,9 +20,10 @@ import numpy as np
 
 from symdecomp.analysis.closed_forms import ClosedFormLabel
 from symdecomp.analysis.ring_spectrum import ring_spectrum
-from symdecomp.errors import SymdecompError, check_valence
+from symdecomp.errors import SymdecompError
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_valence
 from symdecomp.verify.numeric import EigenvalueMatch, NumericCheck
 from symdecomp.verify.result import CrossCheckStatus
 

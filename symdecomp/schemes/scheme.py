@@ -203,7 +203,7 @@ class Scheme:
             object.__setattr__(
                 self, "parameters", tuple(self.parameters) + tuple(sorted(free - declared, key=str))
             )
-        offsets = tuple(k for rule in self.stencils() for k in rule.offsets()) or (0,)
+        offsets = tuple(k for rule in self.stencils() for k in rule.offsets()) + (0,)
         object.__setattr__(self, "_span", max(offsets) - min(offsets))
 
     def stencils(self) -> tuple[Stencil, ...]:

@@ -11,12 +11,15 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
                    exact/interval evaluation of expressions (``compile``)
-``schemes/``       a scheme as data (edge, face, vertex rules) and the one assembly of its
+``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes;
+                   Loop, ``loop``) and the one assembly of its
                    subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
                    rationals and its characteristic polynomial (``full_matrix``), rules as
                    polynomials in the index shift (Eq. 17-23, ``shift_stencil``), whole quad
-                   meshes refined by its rules (Section 3, ``mesh``), the 1-ring and its 2n-gon
-                   (Eq. 10-13, ``ring``), schemes from TOML files and by name (``files``)
+                   meshes refined by its rules (Section 3, ``mesh``; triangle meshes,
+                   ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
+                   its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
+                   (``files``; Loop, ``loop``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
@@ -26,11 +29,14 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``support``), rings iterated step by step (``evolution``), the 2-ring
                    matrix by frequency and the characteristic map's nets (``characteristic``),
                    where a 1-ring component starts on one eigenvector of M_j (Eq. 35-38,
-                   ``components``)
-``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
-                   (``certify``), both returning a ``CrossCheckResult`` (``result``),
-                   OpenSubdiv (``oracle``, ``opensubdiv``); certified C1 by Reif's test
-                   (``c1``, ``c1_spectrum``, Bernstein-Bezier nets ``bezier``)
+                   ``components``); any scheme and K-ring: block form and E_k
+                   (``ring_blocks``), factored spectra (``ring_spectrum``), product-form
+                   charpoly (``ring_charpoly``), masks (``ring_masks``)
+``verify/``        cross-checks against the full matrices: numeric (``numeric``,
+                   ``ring_numeric``), certified (``certify``, ``ring_certify``), both returning a
+                   ``CrossCheckResult`` (``result``), OpenSubdiv (``oracle``, ``opensubdiv``);
+                   certified C1 by Reif's test (``c1``, ``c1_spectrum``, Bernstein-Bezier nets
+                   ``bezier``)
 ``claims/``        the paper's claims, one module per section, and their registry; every claim
                    is checked for a scheme (``check_claim(label, scheme)``); ``applicability``
                    and ``evidence`` hold what several checks share
@@ -65,6 +71,9 @@ from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix,
 from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.ring_spectrum import RingSpectrum, ring_spectrum
 from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, recursion_eigenvalues
 from symdecomp.analysis.support import Region, classify_support
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
@@ -80,12 +89,15 @@ from symdecomp.errors import (
 )
 from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
+from symdecomp.verify.ring_certify import certify_ring
 
 __version__ = "0.1.0"
 
@@ -151,6 +163,18 @@ __all__ = [
     "central_rings",
     "Region",
     "classify_support",
+    # any scheme (triangle meshes, Loop) and K-ring matrices
+    "loop",
+    "loop_warren",
+    "triangle_scheme",
+    "RingMatrix",
+    "ring_subdivision_matrix",
+    "RingBlocks",
+    "ring_blocks",
+    "RingSpectrum",
+    "ring_spectrum",
+    "ring_masks",
+    "certify_ring",
     # cross-checks against the full matrix
     "ClosedForms",
     "derived_closed_forms",

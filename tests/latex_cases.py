@@ -102,27 +102,3 @@ def stress_pairs() -> tuple[tuple[Claim, CheckResult], ...]:
         c = Claim(label, section, title, statement, check=lambda r=result: r, order=order)
         pairs.append((c, result))
     return tuple(pairs)
-
-
-def stress_formulas() -> list:
-    """Formulas of the kinds the checks produce, to compare estimated and real widths."""
-    cc = catmull_clark()
-    tangent = tangent_eigenvalues(cc)
-    m_j = per_frequency_matrix(cc)
-    k = sp.Symbol("k")
-    formulas = [
-        m_j, m_j.det(), m_j.trace(), sp.factor(m_j.charpoly(lam).as_expr()),
-        tangent.dominant, tangent.subdominant, tangent.discriminant, tangent.characteristic_polynomial,
-        subdivision_matrix(cc, 3), subdivision_matrix(catmull_clark(alpha, beta), 4),
-        sp.Matrix(3, 3, lambda r, c: (omega ** (r - c) + 1) / (r + c + 2)),
-        sp.Matrix(9, 9, lambda r, c: sp.Rational(r + 1, c + 3)),
-        sp.Piecewise((x**2, x > 0), (sp.Abs(x), True)), sp.Abs(omega - 1) ** 2,
-        sp.sqrt(2) * sp.I + 3, (1 + sp.I) / sp.sqrt(5), sp.exp(2 * sp.pi * sp.I / n),
-        sp.cos(sp.pi * sp.Symbol("j") / n) ** 2 + sp.sin(sp.pi / n), sp.Sum(omega**k, (k, 0, n - 1)),
-        sp.Eq(lam**2 - lam / 2 + sp.Rational(1, 16), 0), sp.root(n + 1, 3), sp.Tuple(1, omega, omega**2),
-        sp.Symbol("a_0") + sp.Symbol("b_{n-1}") + sp.Symbol("omega_n^j"), sp.binomial(n, 2),
-        long_sum(), sp.Mul(sp.expand((x + y) ** 3), sp.expand((alpha + n) ** 2), evaluate=False),
-        sp.Matrix([[sp.Rational(1, 4) * sp.eye(2), sp.zeros(2, 1)]]), sp.Integer(123456789) / 987654321,
-        sp.Float("3.14159265358979323846", 20), sp.oo, sp.Symbol("W") * sp.Symbol("M") * sp.Symbol("m"),
-    ]
-    return formulas

@@ -24,7 +24,7 @@ from collections.abc import Sequence
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-__all__ = ["SETTINGS", "latex", "size", "name_long_parts", "formula_display", "matrix_display", "LINE"]
+__all__ = ["SETTINGS", "latex", "size", "name_long_parts", "formula_display", "matrix_display", "matrix_width", "LINE"]
 
 #: The settings of sympy's LaTeX printer for everything this package typesets.
 SETTINGS = {"long_frac_ratio": 4}
@@ -188,7 +188,7 @@ def _entry_name(r: int, c: int, shape) -> sp.Symbol:
     return sp.Symbol("m_{%d%s%d}" % (r + 1, sep, c + 1))
 
 
-def _width(matrix: sp.MatrixBase) -> int:
+def matrix_width(matrix: sp.MatrixBase) -> int:
     """Plain-text width of a matrix: its widest entry per column, and room between columns."""
     columns = [max(size(matrix[r, c]) for r in range(matrix.rows)) for c in range(matrix.cols)]
     return sum(columns) + 2 * len(columns)
@@ -200,7 +200,7 @@ def _name_entries(matrix: sp.MatrixBase, budget: int) -> tuple[sp.Matrix, list]:
     entries = sorted((-size(matrix[r, c]), r, c) for r in range(matrix.rows) for c in range(matrix.cols))
     named = []
     for negative, r, c in entries:
-        if _width(shown) <= budget or -negative <= ENTRY:
+        if matrix_width(shown) <= budget or -negative <= ENTRY:
             break
         shown[r, c] = _entry_name(r, c, matrix.shape)
         named.append((r, c))
@@ -211,7 +211,7 @@ def _column_blocks(matrix: sp.MatrixBase, budget: int) -> list[tuple[int, int]]:
     """Consecutive column ranges ``[start, stop)`` each of which fits in ``budget``."""
     blocks, start = [], 0
     for stop in range(1, matrix.cols + 1):
-        if stop - start > 1 and _width(matrix[:, start:stop]) > budget:
+        if stop - start > 1 and matrix_width(matrix[:, start:stop]) > budget:
             blocks.append((start, stop - 1))
             start = stop - 1
     blocks.append((start, matrix.cols))
@@ -224,14 +224,13 @@ def matrix_display(lhs, rel: str, matrix: sp.MatrixBase) -> str:
     prefix = "" if lhs is None else latex(lhs) + " " + rel + " "
     budget = LINE - size(prefix)
     shown, named = _name_entries(matrix, budget)
-    if _width(shown) <= budget:
+    if matrix_width(shown) <= budget:
         out = "\\[\n%s%s\n\\]\n" % (prefix, latex(sp.ImmutableMatrix(shown)))
     else:
-        blocks = _column_blocks(shown, LINE)
-        out = "%s in blocks of columns:\n" % ("$" + latex(lhs) + "$" if lhs is not None else "The matrix")
-        for start, stop in blocks:
-            label = "columns %d to %d" % (start + 1, stop) if stop - start > 1 else "column %d" % (start + 1)
-            out += "\\[\n\\text{%s:}\\quad %s\n\\]\n" % (label, latex(sp.ImmutableMatrix(shown[:, start:stop])))
+        out, name = "", "$%s$, c" % latex(lhs) if lhs is not None else "C"
+        for start, stop in _column_blocks(shown, LINE):
+            label = "olumns %d to %d" % (start + 1, stop) if stop - start > 1 else "olumn %d" % (start + 1)
+            out += "%s%s:\n\\[\n%s\n\\]\n" % (name, label, latex(sp.ImmutableMatrix(shown[:, start:stop])))
     if named:
         rows = [(_entry_name(r, c, matrix.shape), matrix[r, c]) for r, c in named]
         out += "where\n" + rows_display(rows)

@@ -58,7 +58,7 @@ def stress_pairs() -> tuple[tuple[Claim, CheckResult], ...]:
         ),
         (
             "Proposition 5.9", "5.1", "Piecewise, Abs, sqrt and complex numbers",
-            "Refuted claim with unicode ω ≤ 1 — and a long inline formula "
+            "Refuted claim with unicode ω ≤ 1 — ☃ and a long inline formula "
             "$" + sp.latex(sp.expand((x + y + 1) ** 4)) + "$ inside the text.",
             CheckResult(
                 Status.REFUTED, "counterexample found", counterexample="at $n = 4$, $j = 2$ the ratio is $0/0$ (100% degenerate)",

@@ -69,7 +69,9 @@ def test_text_is_escaped_and_inline_math_kept():
     assert text_latex("as $$x_1$$ shows") == "as \n\\begin{dmath*}\nx_1\n\\end{dmath*}\n shows"
     assert text_latex("costs $5") == r"costs \$5"
     assert text_latex("as in Eq. 5, cf. Prop. 2.1. Then") == r"as in Eq.~5, cf.~Prop.~2.1. Then"
-    assert text_latex("ω ≤ 1 — ok") == r"$\omega$ $\leq$ 1 --- ok"
+    # Unicode the preamble declares is kept (the stress document compiles with it); other as a code point
+    assert text_latex("ω ≤ 1 — ok ☃, $ω + ☃$") == r"ω ≤ 1 — ok \texttt{[U+2603]}, $ω + \text{\texttt{[U+2603]}}$"
+    assert "\\DeclareUnicodeCharacter{03C9}{\\ensuremath{\\omega}}" in PREAMBLE
     # a comment character inside inline math would swallow the rest of the line
     assert text_latex("$50% x$") == r"$50\% x$"
 

@@ -9,9 +9,10 @@ of the claim. The document (:func:`derivation_files`) is assembled from the same
 ``symdecomp derive`` writes it to disk.
 
 The mathematics is never typed in here: every formula is printed by sympy from the objects
-the checks computed. Long formulas are broken across lines by :mod:`symdecomp.output.texlayout`.
-The output is a pure function of its input (no dates, no global printing state), so
-regenerating the files gives the same bytes.
+the checks computed. Displayed formulas are laid out by :mod:`symdecomp.output.texlayout`
+(TeX breaks them, with ``breqn``); the preamble is the package file ``preamble.tex``. The
+output is a pure function of its input (no dates, no global printing state), so regenerating
+the files gives the same bytes.
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ from fractions import Fraction
 import sympy as sp
 
 from symdecomp.claims import CheckResult, Claim, Status, Step, Text, check_claim
-from symdecomp.output.texlayout import formula_display, latex, rows_display, size
+from symdecomp.output.texlayout import formula_display, latex, mapping_rows, rows_display, size
 
 __all__ = [
     "aslatex",
@@ -78,43 +79,24 @@ _TEXT_ESCAPES = {
     "|": r"\textbar{}",
 }
 
-# Unicode that the default fonts of pdflatex cannot set directly, as math.
-_UNICODE_MATH = {
-    "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon",
-    "ζ": r"\zeta", "η": r"\eta", "θ": r"\theta", "ι": r"\iota", "κ": r"\kappa", "λ": r"\lambda",
-    "μ": r"\mu", "ν": r"\nu", "ξ": r"\xi", "π": r"\pi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau",
-    "υ": r"\upsilon", "φ": r"\varphi", "χ": r"\chi", "ψ": r"\psi", "ω": r"\omega",
-    "Γ": r"\Gamma", "Δ": r"\Delta", "Θ": r"\Theta", "Λ": r"\Lambda", "Ξ": r"\Xi", "Π": r"\Pi",
-    "Σ": r"\Sigma", "Φ": r"\Phi", "Ψ": r"\Psi", "Ω": r"\Omega",
-    "≤": r"\leq", "≥": r"\geq", "≠": r"\neq", "≈": r"\approx", "→": r"\to", "←": r"\leftarrow",
-    "⇒": r"\Rightarrow", "↦": r"\mapsto", "×": r"\times", "·": r"\cdot", "−": "-", "±": r"\pm",
-    "∞": r"\infty", "√": r"\surd", "∑": r"\sum", "∏": r"\prod", "∈": r"\in", "∉": r"\notin",
-    "⊂": r"\subset", "∪": r"\cup", "∩": r"\cap", "ℓ": r"\ell", "∂": r"\partial", "∇": r"\nabla",
-    "≡": r"\equiv", "∼": r"\sim", "°": r"^\circ", "′": r"'", "…": r"\ldots", "⋯": r"\cdots",
-    "²": "^2", "³": "^3", "¹": "^1", "⁰": "^0", "₀": "_0", "₁": "_1", "₂": "_2", "₃": "_3",
-}
-_UNICODE_TEXT = {
-    "–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "”": "''", "\u00a0": "~",
-    "…": r"\ldots{}", "•": r"\textbullet{}", "§": r"\S{}",
-}
+#: The characters beyond ASCII that the preamble declares (``\DeclareUnicodeCharacter``).
+_DECLARED = {chr(int(code, 16)) for code in re.findall(r"\\DeclareUnicodeCharacter\{([0-9A-F]+)\}", PREAMBLE)}
 
 #: Inline formulas longer than this (characters, see :func:`~symdecomp.output.texlayout.size`)
 #: are displayed instead: TeX does not break them well within a paragraph.
 _INLINE_LIMIT = 48
 
 
-def _unicode_in_text(ch: str) -> str:
-    if ch in _UNICODE_TEXT:
-        return _UNICODE_TEXT[ch]
-    if ch in _UNICODE_MATH:
-        return "$" + _UNICODE_MATH[ch] + "$"
-    if ord(ch) < 128 or ch.isalpha() and ord(ch) < 0x250:
-        return ch  # ASCII and Latin letters with accents: inputenc handles them
+def _unicode(ch: str) -> str:
+    """A character as the document can set it: ASCII, Latin letters (inputenc), the declared
+    ones (see the preamble), any other as its code point."""
+    if ord(ch) < 128 or ch in _DECLARED or ch.isalpha() and ord(ch) < 0x250:
+        return ch
     return r"\texttt{[U+%04X]}" % ord(ch)
 
 
 def _escape_word(word: str) -> str:
-    out = "".join(_TEXT_ESCAPES.get(ch) or _unicode_in_text(ch) for ch in word)
+    out = "".join(_TEXT_ESCAPES.get(ch) or _unicode(ch) for ch in word)
     if len(word) > 16:
         # a long "word" such as [[1,2],[3,4]] or n=3..16 may break after its punctuation
         out = re.sub(r"([,;/=\])]|\.\.)(?=.)", r"\1\\allowbreak{}", out)
@@ -128,7 +110,7 @@ def _escape_text(text: str) -> str:
 
 
 def _clean_math(tex: str) -> str:
-    """Inline math written by a claim's author, made safe: no comments, tabs or raw Unicode."""
+    """Inline math written by a claim's author, made safe: no comments or unknown Unicode."""
     # & separates cells inside an environment (pmatrix, cases...); elsewhere it is a character
     specials = "%#" if "\\begin" in tex else "%#&"
     out = []
@@ -136,10 +118,8 @@ def _clean_math(tex: str) -> str:
         escaped = i > 0 and tex[i - 1] == "\\"
         if ch in specials and not escaped:
             out.append("\\" + ch)
-        elif ch in _UNICODE_MATH:
-            out.append(_UNICODE_MATH[ch] + " ")
-        elif ord(ch) >= 128:
-            out.append(r"\text{%s}" % _unicode_in_text(ch))
+        elif _unicode(ch) != ch:
+            out.append(r"\text{%s}" % _unicode(ch))
         elif ch == "\n":
             out.append(" ")
         else:
@@ -212,48 +192,6 @@ def text_latex(text: str, *, displays: bool = True) -> str:
 # --------------------------------------------------------------------------------------
 # Displayed formulas
 
-_RELATIONS = {"==": "=", "!=": r"\neq", "<": "<", "<=": r"\leq", ">": ">", ">=": r"\geq"}
-
-
-def _split(expr, lhs, rel: str = "="):
-    """(lhs, relation symbol, rhs) of a step: a sympy relation is split at its operator."""
-    if lhs is None and isinstance(expr, sp.Rel):
-        return expr.lhs, _RELATIONS.get(expr.rel_op, latex(expr).split()[0]), expr.rhs
-    return lhs, rel, expr
-
-
-def _is_name(key) -> bool:
-    """Whether a mapping's key names its value (``x = 1``) rather than maps to it (``2 \\mapsto 1``)."""
-    if isinstance(key, str):
-        return True
-    if isinstance(key, (sp.Symbol, sp.Indexed, sp.MatrixSymbol, sp.IndexedBase)):
-        return True
-    return isinstance(key, sp.Function) and isinstance(key.func, sp.core.function.UndefinedFunction)
-
-
-def _mapping_rows(mapping: Mapping) -> tuple[list, str]:
-    """The rows of a mapping and their relation: names in the given order (``x = 1``);
-    anything else, e.g. eigenvalues with multiplicities, in sympy's sort order (``2 \\mapsto 1``)."""
-    items = list(mapping.items())
-    if all(_is_name(k) for k, _ in items):
-        return items, "="
-    return sorted(items, key=lambda kv: sp.default_sort_key(kv[0])), r"\mapsto"
-
-
-def _sympify(obj):
-    """Plain Python numbers, fractions, tuples and matrices as sympy objects (a str is LaTeX)."""
-    if isinstance(obj, (tuple, list)):
-        try:
-            return sp.Tuple(*obj)
-        except (sp.SympifyError, TypeError):
-            return aslatex(obj)
-    if isinstance(obj, sp.MatrixBase):
-        return sp.ImmutableMatrix(obj)
-    if isinstance(obj, (int, float, complex, Fraction)):
-        return sp.sympify(obj)
-    return obj
-
-
 def display_math(expr, lhs=None, *, rel: str = "=") -> str:
     """``expr`` (or ``lhs = expr``) as a displayed formula that fits in the text width.
 
@@ -268,11 +206,10 @@ def display_math(expr, lhs=None, *, rel: str = "=") -> str:
     \\end{dmath*}
     """
     if isinstance(expr, Mapping):
-        return rows_display(*_mapping_rows(expr))
+        return rows_display(*mapping_rows(expr))
     if isinstance(expr, str):
         return text_latex(expr) + "\n"
-    lhs, rel, rhs = _split(_sympify(expr), lhs, rel)
-    return formula_display(lhs, rel, rhs)
+    return formula_display(lhs, rel, expr)
 
 
 # --------------------------------------------------------------------------------------
@@ -320,7 +257,7 @@ def _(obj: str) -> str:
 
 @aslatex.register(Mapping)
 def _(obj: Mapping) -> str:
-    items, rel = _mapping_rows(obj)
+    items, rel = mapping_rows(obj)
     rows = [(k if isinstance(k, str) else aslatex(k)) + " &" + rel + " " + aslatex(v) for k, v in items]
     return "\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}"
 

@@ -19,12 +19,14 @@ and fail on any overfull box.
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from fractions import Fraction
 
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-__all__ = ["SETTINGS", "latex", "size", "name_long_parts", "formula_display", "matrix_display", "matrix_width", "LINE"]
+__all__ = ["SETTINGS", "latex", "size", "name_long_parts", "formula_display", "matrix_display", "matrix_width", "mapping_rows",
+           "rows_display", "LINE"]
 
 #: The settings of sympy's LaTeX printer for everything this package typesets.
 SETTINGS = {"long_frac_ratio": 4}
@@ -153,6 +155,48 @@ def name_long_parts(expr, names: Names):
 # --------------------------------------------------------------------------------------
 # Displays
 
+_RELATIONS = {"==": "=", "!=": r"\neq", "<": "<", "<=": r"\leq", ">": ">", ">=": r"\geq"}
+
+
+def _split(expr, lhs, rel: str = "="):
+    """(lhs, relation symbol, rhs) of a step: a sympy relation is split at its operator."""
+    if lhs is None and isinstance(expr, sp.Rel):
+        return expr.lhs, _RELATIONS.get(expr.rel_op, latex(expr).split()[0]), expr.rhs
+    return lhs, rel, expr
+
+
+def _is_name(key) -> bool:
+    """Whether a mapping's key names its value (``x = 1``) rather than maps to it (``2 \\mapsto 1``)."""
+    if isinstance(key, str):
+        return True
+    if isinstance(key, (sp.Symbol, sp.Indexed, sp.MatrixSymbol, sp.IndexedBase)):
+        return True
+    return isinstance(key, sp.Function) and isinstance(key.func, sp.core.function.UndefinedFunction)
+
+
+def mapping_rows(mapping: Mapping) -> tuple[list, str]:
+    """The rows of a mapping and their relation: names in the given order (``x = 1``);
+    anything else, e.g. eigenvalues with multiplicities, in sympy's sort order (``2 \\mapsto 1``)."""
+    items = list(mapping.items())
+    if all(_is_name(k) for k, _ in items):
+        return items, "="
+    return sorted(items, key=lambda kv: sp.default_sort_key(kv[0])), r"\mapsto"
+
+
+def _sympify(obj):
+    """Plain Python numbers, fractions, tuples and matrices as sympy objects (else LaTeX)."""
+    if isinstance(obj, (tuple, list)):
+        try:
+            return sp.Tuple(*obj)
+        except (sp.SympifyError, TypeError):
+            return latex(obj)
+    if isinstance(obj, sp.MatrixBase):
+        return sp.ImmutableMatrix(obj)
+    if isinstance(obj, (int, float, complex, Fraction)):
+        return sp.sympify(obj)
+    return obj
+
+
 
 def _dmath(tex: str) -> str:
     return "\\begin{dmath*}\n%s\n\\end{dmath*}\n" % tex
@@ -172,9 +216,11 @@ def _definitions(names: Names, start: int = 0) -> str:
     return "where\n" + "".join(out) if out else ""
 
 
-def formula_display(lhs, rel: str, rhs, names: Names | None = None) -> str:
-    """``lhs rel rhs`` (or ``rhs`` alone) in ``dmath*``, with the definitions of named parts below."""
-    names = names or Names()
+def formula_display(lhs, rel: str, rhs) -> str:
+    """``lhs rel rhs`` (or ``rhs`` alone) in ``dmath*``, with the definitions of named parts below;
+    a sympy relation without ``lhs`` is split at its operator, a matrix goes to :func:`matrix_display`."""
+    names = Names()
+    lhs, rel, rhs = _split(_sympify(rhs), lhs, rel)
     if isinstance(rhs, sp.MatrixBase):
         return matrix_display(lhs, rel, rhs)
     tex = _side(rhs, names)

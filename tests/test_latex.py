@@ -122,6 +122,14 @@ def test_a_long_part_tex_cannot_break_is_named_and_nothing_is_lost(wrap):
     assert _definitions(block) == {latex(k): latex(name_long_parts(v, Names())) for k, v in names.parts.items()}
 
 
+def test_a_fraction_of_long_products_keeps_its_numerator_and_denominator_whole():
+    """The numerator of ``A B / D`` is no sub-tree of sympy's flat product: it is rebuilt, not lost."""
+    names = Names()
+    shown = name_long_parts(long_product(), names)
+    assert _restored(shown, names) == long_product()
+    assert size(shown) < ATOM and all(size(name_long_parts(v, Names())) > ATOM for v in names.parts.values())
+
+
 def test_a_power_of_a_long_sum_is_left_to_tex_and_equal_parts_share_a_name():
     names = Names()
     assert name_long_parts(long_sum() ** 3, names) == long_sum() ** 3 and not names.parts

@@ -29,7 +29,7 @@ __all__ = ["SETTINGS", "latex", "size", "name_long_parts", "formula_display", "m
            "rows_display", "LINE"]
 
 #: The settings of sympy's LaTeX printer for everything this package typesets.
-SETTINGS = {"long_frac_ratio": 4}
+SETTINGS = {"long_frac_ratio": 6}
 _PRINTER = LatexPrinter(SETTINGS)
 
 #: A line of a displayed formula, in characters (:func:`size`, about 0.5 em each).
@@ -44,8 +44,8 @@ def latex(obj) -> str:
     """``obj`` printed by sympy with :data:`SETTINGS`.
 
     >>> from sympy.abc import n
-    >>> latex((3 * n + sp.sqrt(5 * n**2 + 1) - 7) / (8 * n))
-    '\\\\frac{1}{8 n} \\\\left(3 n + \\\\sqrt{5 n^{2} + 1} - 7\\\\right)'
+    >>> latex(sp.expand((n + 1) ** 6) / (8 * n))
+    '\\\\frac{1}{8 n} \\\\left(n^{6} + 6 n^{5} + 15 n^{4} + 20 n^{3} + 15 n^{2} + 6 n + 1\\\\right)'
     """
     return obj if isinstance(obj, str) else _PRINTER.doprint(obj)
 
@@ -89,36 +89,26 @@ def _fraction(expr):
     return expr, sp.Integer(1)
 
 
-def _long_parts(expr, found: list) -> None:
-    """Collect the long sub-expressions of ``expr`` in places TeX cannot break.
+def _named(expr, names: Names):
+    """``expr``, in a place where TeX may break it, with its long unbreakable parts named.
 
-    ``expr`` itself is in a breakable place: the terms of its sums and the factors of its
-    products may go on separate lines; everything else is a box.
+    The terms of a sum, the factors of a product, the base of an integer power and the sides
+    of a relation may go on separate lines; a denominator, a numerator that sympy keeps in
+    its fraction, the arguments of anything else (a root, a function, a case) are boxes.
     """
-    if not isinstance(expr, sp.Basic) or size(expr) <= ATOM:
-        return
+    if not isinstance(expr, sp.Basic) or isinstance(expr, sp.MatrixBase) or size(expr) <= ATOM:
+        return expr
     numer, denom = _fraction(expr)
     if denom != 1:
-        _boxed(denom, found)
-        if _pulled_out(numer, denom):
-            _long_parts(numer, found)
-        else:
-            _boxed(numer, found)
-    elif isinstance(expr, (sp.Add, sp.Mul)):
-        for arg in expr.args:
-            _long_parts(arg, found)
-    elif isinstance(expr, sp.Pow) and expr.exp.is_Integer:
-        _long_parts(expr.base, found)
-    elif isinstance(expr, sp.Rel):
-        _long_parts(expr.lhs, found)
-        _long_parts(expr.rhs, found)
-    elif isinstance(expr, sp.Piecewise):
-        for piece in expr.args:
-            _boxed(piece.expr, found)
-            _boxed(piece.cond, found)
-    elif not isinstance(expr, sp.MatrixBase):
-        for arg in expr.args:
-            _boxed(arg, found)
+        top = _named(numer, names) if _pulled_out(numer, denom) else _boxed(numer, names)
+        return sp.Mul(top, sp.Pow(_boxed(denom, names), -1))
+    if isinstance(expr, (sp.Add, sp.Mul)) or isinstance(expr, sp.Pow) and expr.exp.is_Integer:
+        return expr.func(*[_named(arg, names) for arg in expr.args])
+    if isinstance(expr, sp.Rel):
+        return expr.func(_named(expr.lhs, names), _named(expr.rhs, names), evaluate=False)
+    if isinstance(expr, sp.Piecewise):
+        return sp.Piecewise(*[(_boxed(piece.expr, names), piece.cond) for piece in expr.args])
+    return expr.xreplace({arg: _boxed(arg, names) for arg in expr.args})
 
 
 def _pulled_out(numer, denom) -> bool:
@@ -128,9 +118,11 @@ def _pulled_out(numer, denom) -> bool:
     return len(latex(numer).split()) > SETTINGS["long_frac_ratio"] * tokens
 
 
-def _boxed(part, found: list) -> None:
-    if isinstance(part, sp.Basic) and size(part) > ATOM and not part.is_Atom:
-        found.append(part)
+def _boxed(part, names: Names):
+    """A part TeX cannot break: named if it is a long expression."""
+    if isinstance(part, sp.Expr) and not part.is_Atom and size(part) > ATOM:
+        return names.name(part)
+    return part
 
 
 def name_long_parts(expr, names: Names):
@@ -143,13 +135,7 @@ def name_long_parts(expr, names: Names):
     >>> list(names.parts.values())[0].has(x**12)
     True
     """
-    if not isinstance(expr, sp.Basic) or isinstance(expr, sp.MatrixBase):
-        return expr
-    found: list = []
-    _long_parts(expr, found)
-    if not found:
-        return expr
-    return expr.xreplace({part: names.name(part) for part in found})
+    return _named(expr, names)
 
 
 # --------------------------------------------------------------------------------------

@@ -7,8 +7,8 @@ from functools import lru_cache
 import sympy as sp
 
 from symdecomp import catmull_clark, per_frequency_matrix, subdivision_matrix, tangent_eigenvalues
-from symdecomp.claims import CheckResult, Claim, Status, Step
-from symdecomp.symbols import alpha, beta, lam, n, omega
+from symdecomp.claims import CheckResult, Claim, Status, Step, Text
+from symdecomp.symbols import alpha, beta, n, omega
 
 x, y = sp.symbols("x y")
 
@@ -61,7 +61,8 @@ def stress_pairs() -> tuple[tuple[Claim, CheckResult], ...]:
             "Refuted claim with unicode ω ≤ 1 — ☃ and a long inline formula "
             "$" + sp.latex(sp.expand((x + y + 1) ** 4)) + "$ inside the text.",
             CheckResult(
-                Status.REFUTED, "counterexample found", counterexample="at $n = 4$, $j = 2$ the ratio is $0/0$ (100% degenerate)",
+                Status.REFUTED, Text("the defect is ", sp.sqrt(long_sum()) / (n + 3), ", not 0 (a long formula in a box)"),
+                counterexample="at $n = 4$, $j = 2$ the ratio is $0/0$ (100% degenerate)",
                 steps=(
                     Step("Piecewise:", sp.Piecewise((x**2, x > 0), (sp.Abs(x), True)), sp.Symbol("f")),
                     Step("Complex:", (1 + sp.I) / sp.sqrt(5) + sp.sqrt(2) * sp.I),

@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
-
 from latex_cases import long_product, long_sum, stress_pairs
+
 from symdecomp.claims import CheckResult, Status, Step
 from symdecomp.cli import main
 from symdecomp.cli.derive_cmd import write_derivations

@@ -19,24 +19,17 @@ from __future__ import annotations
 
 import functools
 import re
-from importlib import resources
 from collections.abc import Mapping, Sequence
 from fractions import Fraction
+from importlib import resources
 
 import sympy as sp
 
 from symdecomp.claims import CheckResult, Claim, Status, Step, Text, check_claim
 from symdecomp.output.texlayout import formula_display, latex, mapping_rows, rows_display, size
 
-__all__ = [
-    "aslatex",
-    "text_latex",
-    "display_math",
-    "SECTION_TITLES",
-    "section_file_name",
-    "derivation_files",
-    "PREAMBLE",
-]
+__all__ = ["aslatex", "text_latex", "findings_latex", "display_math", "SECTION_TITLES", "section_file_name",
+           "derivation_files", "PREAMBLE"]
 
 #: The paper's section titles, so that the document's sections mirror the paper's.
 SECTION_TITLES = {
@@ -64,18 +57,9 @@ PREAMBLE = resources.files("symdecomp.output").joinpath("preamble.tex").read_tex
 
 
 _TEXT_ESCAPES = {
-    "\\": r"\textbackslash{}",
-    "{": r"\{",
-    "}": r"\}",
-    "&": r"\&",
-    "%": r"\%",
-    "#": r"\#",
+    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "&": r"\&", "%": r"\%", "#": r"\#", "$": r"\$",
     "_": r"\_\allowbreak{}",  # long identifiers may break after an underscore
-    "$": r"\$",
-    "^": r"\textasciicircum{}",
-    "~": r"\textasciitilde{}",
-    "<": r"\textless{}",
-    ">": r"\textgreater{}",
+    "^": r"\textasciicircum{}", "~": r"\textasciitilde{}", "<": r"\textless{}", ">": r"\textgreater{}",
     "|": r"\textbar{}",
 }
 

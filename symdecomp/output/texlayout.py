@@ -36,8 +36,11 @@ _PRINTER = LatexPrinter(SETTINGS)
 LINE = 80
 #: A part TeX cannot break is named when its plain text is longer than this.
 ATOM = 48
-#: A matrix entry is named when the matrix is too wide and the entry longer than this.
+#: A matrix entry is named when the matrix is too wide and the entry longer than this;
+#: when even short entries leave it too wide, it is shown in blocks of columns, and only an
+#: entry longer than ``BLOCK_ENTRY`` is named.
 ENTRY = 8
+BLOCK_ENTRY = 24
 
 
 def latex(obj) -> str:
@@ -226,13 +229,14 @@ def matrix_width(matrix: sp.MatrixBase) -> int:
     return sum(columns) + 2 * len(columns)
 
 
-def _name_entries(matrix: sp.MatrixBase, budget: int) -> tuple[sp.Matrix, list]:
-    """The matrix with its longest entries named (longest first) until it fits or none is long."""
+def _name_entries(matrix: sp.MatrixBase, budget: int, longer_than: int) -> tuple[sp.Matrix, list]:
+    """The matrix with its longest entries named (longest first) until it fits in ``budget`` or
+    no entry is ``longer_than``; and the positions named."""
     shown = sp.Matrix(matrix)
     entries = sorted((-size(matrix[r, c]), r, c) for r in range(matrix.rows) for c in range(matrix.cols))
     named = []
     for negative, r, c in entries:
-        if matrix_width(shown) <= budget or -negative <= ENTRY:
+        if matrix_width(shown) <= budget or -negative <= longer_than:
             break
         shown[r, c] = _entry_name(r, c, matrix.shape)
         named.append((r, c))
@@ -255,14 +259,17 @@ def matrix_display(lhs, rel: str, matrix: sp.MatrixBase) -> str:
     matrix = sp.ImmutableMatrix(matrix)
     prefix = "" if lhs is None else latex(lhs) + " " + rel + " "
     budget = LINE - size(prefix)
-    shown, named = _name_entries(matrix, budget)
+    shown, named = _name_entries(matrix, budget, ENTRY)
     if matrix_width(shown) <= budget:
         out = "\\[\n%s%s\n\\]\n" % (prefix, latex(sp.ImmutableMatrix(shown)))
-    else:
-        out, name = "", "$%s$, c" % latex(lhs) if lhs is not None else "C"
+    else:  # too many columns: blocks of them, naming only the entries too long for a block
+        shown, named = _name_entries(matrix, 0, BLOCK_ENTRY)
+        out = ""
         for start, stop in _column_blocks(shown, LINE):
-            label = "olumns %d to %d" % (start + 1, stop) if stop - start > 1 else "olumn %d" % (start + 1)
-            out += "%s%s:\n\\[\n%s\n\\]\n" % (name, label, latex(sp.ImmutableMatrix(shown[:, start:stop])))
+            label = "columns %d to %d" % (start + 1, stop) if stop - start > 1 else "column %d" % (start + 1)
+            if lhs is not None:
+                label = "$%s$, %s" % (latex(lhs), label)
+            out += "%s:\n\\[\n%s\n\\]\n" % (label[0].upper() + label[1:], latex(sp.ImmutableMatrix(shown[:, start:stop])))
     if named:
         rows = [(_entry_name(r, c, matrix.shape), matrix[r, c]) for r, c in named]
         out += "where\n" + rows_display(rows)

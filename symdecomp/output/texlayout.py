@@ -25,8 +25,8 @@ from fractions import Fraction
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-__all__ = ["SETTINGS", "latex", "size", "name_long_parts", "formula_display", "matrix_display", "matrix_width", "mapping_rows",
-           "rows_display", "LINE"]
+__all__ = ["SETTINGS", "LINE", "ATOM", "latex", "size", "Names", "name_long_parts", "formula_display", "matrix_display",
+           "matrix_width", "mapping_rows", "rows_display"]
 
 #: The settings of sympy's LaTeX printer for everything this package typesets.
 SETTINGS = {"long_frac_ratio": 6}
@@ -34,7 +34,7 @@ _PRINTER = LatexPrinter(SETTINGS)
 
 #: A line of a displayed formula, in characters (:func:`size`, about 0.5 em each).
 LINE = 80
-#: A part TeX cannot break is named when its plain text is longer than this.
+#: A part TeX cannot break is named when its size is larger than this.
 ATOM = 48
 #: A matrix entry is named when the matrix is too wide and the entry longer than this;
 #: when even short entries leave it too wide, it is shown in blocks of columns, and only an
@@ -104,14 +104,19 @@ def _named(expr, names: Names):
     numer, denom = _fraction(expr)
     if denom != 1:
         top = _named(numer, names) if _pulled_out(numer, denom) else _boxed(numer, names)
-        return sp.Mul(top, sp.Pow(_boxed(denom, names), -1))
+        bottom = _boxed(denom, names)
+        return expr if (top, bottom) == (numer, denom) else sp.Mul(top, sp.Pow(bottom, -1))
     if isinstance(expr, (sp.Add, sp.Mul)) or isinstance(expr, sp.Pow) and expr.exp.is_Integer:
-        return expr.func(*[_named(arg, names) for arg in expr.args])
-    if isinstance(expr, sp.Rel):
-        return expr.func(_named(expr.lhs, names), _named(expr.rhs, names), evaluate=False)
-    if isinstance(expr, sp.Piecewise):
-        return sp.Piecewise(*[(_boxed(piece.expr, names), piece.cond) for piece in expr.args])
-    return expr.xreplace({arg: _boxed(arg, names) for arg in expr.args})
+        args = [_named(arg, names) for arg in expr.args]
+    elif isinstance(expr, sp.Rel):
+        args = [_named(expr.lhs, names), _named(expr.rhs, names)]
+    elif isinstance(expr, sp.Piecewise):
+        args = [sp.ExprCondPair(_boxed(piece.expr, names), piece.cond) for piece in expr.args]
+    else:
+        args = [_boxed(arg, names) for arg in expr.args]
+    if args == list(expr.args):
+        return expr  # unchanged, also a form the caller built unevaluated
+    return expr.func(*args, evaluate=False) if isinstance(expr, sp.Rel) else expr.func(*args)
 
 
 def _pulled_out(numer, denom) -> bool:

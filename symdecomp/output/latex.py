@@ -68,7 +68,7 @@ _DECLARED = {chr(int(code, 16)) for code in re.findall(r"\\DeclareUnicodeCharact
 
 #: Inline formulas longer than this (characters, see :func:`~symdecomp.output.texlayout.size`)
 #: are displayed instead: TeX does not break them well within a paragraph.
-_INLINE_LIMIT = 48
+_INLINE_LIMIT = 30
 
 
 def _unicode(ch: str) -> str:

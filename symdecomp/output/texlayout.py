@@ -111,7 +111,7 @@ def _named(expr, names: Names):
     elif isinstance(expr, sp.Rel):
         args = [_named(expr.lhs, names), _named(expr.rhs, names)]
     elif isinstance(expr, sp.Piecewise):
-        args = [sp.ExprCondPair(_boxed(piece.expr, names), piece.cond) for piece in expr.args]
+        args = [piece.func(_boxed(piece.expr, names), piece.cond) for piece in expr.args]
     else:
         args = [_boxed(arg, names) for arg in expr.args]
     if args == list(expr.args):

@@ -191,7 +191,6 @@ def _sympify(obj):
     return obj
 
 
-
 def _dmath(tex: str) -> str:
     return "\\begin{dmath*}\n%s\n\\end{dmath*}\n" % tex
 

@@ -23,10 +23,12 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
                    (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
-                   ``support``), rings iterated step by step (``evolution``)
+                   ``support``), rings iterated step by step (``evolution``), the 2-ring
+                   matrix by frequency and the characteristic map's nets (``characteristic``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
                    (``certify``), both returning a ``CrossCheckResult`` (``result``),
-                   OpenSubdiv (``oracle``, ``opensubdiv``)
+                   OpenSubdiv (``oracle``, ``opensubdiv``); certified C1 by Reif's test
+                   (``c1``, ``c1_spectrum``, Bernstein-Bezier nets ``bezier``)
 ``claims/``        the paper's claims, one module per section, and their registry
 ``output/``        LaTeX (``latex``, one entry point ``aslatex``) and figures (``plotting``)
 ``cli/``           the ``symdecomp`` command, one module per subcommand
@@ -76,6 +78,7 @@ from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
+from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
@@ -151,6 +154,9 @@ __all__ = [
     "NumericCheck",
     "certify",
     "Certificate",
+    # C1 at an extraordinary vertex (Reif's test)
+    "c1_test",
+    "C1Result",
     "CrossCheckStatus",
     "CrossCheckResult",
     "exact_subdivision_matrix",

@@ -44,10 +44,11 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import mesh_rules, refine, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme, catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = [
     "RING2_LABELS",

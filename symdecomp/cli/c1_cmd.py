@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-import argparse
 import sys
 
-from symdecomp.cli.common import add_scheme_option, print_json, progress, valence_range
+from symdecomp.cli.common import Once, add_scheme_option, flag, integer, print_json, progress, valence_range
 from symdecomp.verify.c1 import METHOD, c1_test
 
 __all__ = ["register", "run"]
@@ -15,13 +14,7 @@ _LABEL = {"c1": "C1 certified", "not-c1": "not C1", "undecided": "undecided"}
 
 def _depth(text: str) -> int:
     """argparse type: a subdivision depth, 0 to 12."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected an integer from 0 to 12, got {text!r}") from None
-    if not 0 <= value <= 12:
-        raise argparse.ArgumentTypeError(f"expected an integer from 0 to 12, got {value}")
-    return value
+    return integer(text, "--depth", minimum=0, limit="c1 --depth")
 
 
 def register(sub) -> None:
@@ -35,11 +28,11 @@ def register(sub) -> None:
         "ring's inner boundary). Prints 'C1 certified', 'not C1' with the failing condition, or "
         "'undecided' with what would decide it. Exit status 1 unless every valence is certified C1.",
     )
-    p.add_argument("--n", dest="valences", type=valence_range, required=True, metavar="A:B",
-                   help="valences to test: an inclusive range A:B or a single N")
-    p.add_argument("--depth", type=_depth, default=6,
+    p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, required=True, metavar="A:B",
+                   help="valences to test: an inclusive range A:B or a single N (at most 128)")
+    p.add_argument("--depth", type=_depth, action=Once, default=6,
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a piece in four)")
-    p.add_argument("--json", action="store_true",
+    flag(p, "--json",
                    help='print a list with one object per valence: {"n", "verdict" (c1/not-c1/undecided), "reason", '
                    '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}')
     add_scheme_option(p)

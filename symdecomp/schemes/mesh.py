@@ -45,9 +45,10 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, SymdecompError, check_valence
+from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = [
     "InvalidMeshError",
@@ -63,7 +64,7 @@ __all__ = [
 ]
 
 
-class InvalidMeshError(SymdecompError):
+class InvalidMeshError(InvalidInputError):
     """A mesh is not a consistently oriented quad mesh, or a vertex asked about is not in it."""
 
 

@@ -55,8 +55,8 @@ from dataclasses import dataclass
 import flint
 
 from symdecomp.analysis.characteristic import frequency_eigenvector, inner_boundary_nets, subpatch_nets
-from symdecomp.errors import check_valence
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_valence
 from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, curve_angle, jacobian_net
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down, spectral_conditions
 

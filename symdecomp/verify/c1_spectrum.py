@@ -34,10 +34,11 @@ import sympy as sp
 from symdecomp.analysis.characteristic import check_applicable, frequency_block
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_valence
 
 __all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down", "round_down"]
 

@@ -14,9 +14,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from symdecomp.errors import check_valence
 from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_valence
 from symdecomp.verify.c1 import c1_test, characteristic_nets
 
 __all__ = ["ring_curves", "characteristic_map_figure"]

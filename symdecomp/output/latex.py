@@ -248,6 +248,8 @@ def _(obj: Mapping) -> str:
 
 @aslatex.register(Status)
 def _(obj: Status) -> str:
+    if " " in obj.value:
+        return r"\status[%s]{%s}" % (obj.value.replace(" ", ""), obj.value)
     return r"\status{%s}" % obj.value
 
 
@@ -365,8 +367,7 @@ def _summary(pairs: Sequence[tuple[Claim, CheckResult]], anchors: Mapping[str, s
     counts: dict[str, int] = {}
     for _, result in pairs:
         counts[result.status.value] = counts.get(result.status.value, 0) + 1
-    order = [s.value for s in Status]
-    tally = ", ".join(f"{counts[s]} \\status{{{s}}}" for s in order if s in counts)
+    tally = ", ".join(f"{counts[s.value]} {aslatex(s)}" for s in Status if s.value in counts)
     rows = []
     for claim, result in pairs:
         anchor = anchors[claim.label]

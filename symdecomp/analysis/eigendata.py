@@ -1,0 +1,536 @@
+"""Certified eigenstructure of the (2N+8)-point patch matrix (Stam's exact-evaluation data).
+
+The patch matrix (:func:`~symdecomp.schemes.patch.patch_matrices`) is block lower triangular,
+``A = [[S, 0], [S11, S12]]``: ``S`` is the 1-ring matrix, ``S12`` the 7 x 7 matrix of the
+regular points beyond the patch. Its eigenstructure is assembled from exact pieces:
+
+* ``S`` is block circulant; in the real Fourier basis (``cos`` and ``sin`` of ``2 pi j k/N`` on
+  ``e_k``, shifted by half a step on ``f_k``, which makes every block real because the rules
+  are mirror symmetric) it splits into a 3 x 3 rational block (``j = 0``), real 2 x 2 blocks
+  (``0 < j < N/2``) whose entries are cosines of rational multiples of pi, and for even ``N`` a
+  rational 2 x 2 block (``j = N/2``). Rational blocks are diagonalized exactly (factored
+  characteristic polynomial, exact null spaces); the others in Arb balls from the quadratic
+  formula. Left eigenvectors come from the same blocks, normalized against the right ones, so
+  ``V0^-1`` is written down, not computed by elimination.
+* ``S12`` is rational: exact eigenvalues and eigenvectors ``W``.
+* An eigenvector ``u0`` of ``S`` for ``lam`` extends to ``[u0; W (lam - D)^-1 W^-1 S11 u0]``;
+  when ``lam`` equals an eigenvalue ``nu`` of ``S12`` (decided exactly, in a cyclotomic field)
+  the matching component of ``W^-1 S11 u0`` must vanish exactly, else ``A`` is not
+  diagonalizable and :class:`NotDiagonalizableError` says so.
+* ``V^-1 = [[V0^-1, 0], [-C V0^-1, W^-1]]`` with ``C = (lam_k - nu_r)^-1 (W^-1 S11 V0)``.
+
+Every number is an Arb ball containing the exact value, at a working precision chosen by the
+caller; :func:`certified_eigendata` raises it until every entry rounds correctly to float64.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> data, arrays = certified_eigendata(catmull_clark(), 4)
+>>> sorted(set(arrays.values.tolist()))
+[0.015625, 0.03125, 0.0625, 0.125, 0.25, 0.5, 1.0]
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+import flint
+import numpy as np
+
+from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.errors import SymdecompError, check_valence
+from symdecomp.schemes.patch import PatchMatrices, patch_matrices
+from symdecomp.schemes.scheme import Scheme
+
+__all__ = [
+    "NotDiagonalizableError",
+    "PrecisionError",
+    "PatchEigenData",
+    "RoundedEigenData",
+    "patch_eigendata",
+    "certified_eigendata",
+    "round_ball",
+]
+
+arb, acb = flint.arb, flint.acb
+
+
+class NotDiagonalizableError(SymdecompError):
+    """The patch matrix has no basis of eigenvectors at this valence (or complex eigenvalues)."""
+
+
+class PrecisionError(SymdecompError):
+    """A ball stayed too wide to decide a sign or round correctly, up to the precision cap."""
+
+
+class _NeedPrecision(Exception):
+    pass
+
+
+@dataclass(frozen=True)
+class PatchEigenData:
+    """Eigenvalues, right eigenvectors ``V``, ``V^-1`` and the sub-patch tables, as Arb balls."""
+
+    n: int
+    prec: int
+    values: tuple  # K arb
+    vectors: flint.arb_mat  # V, K x K, column i belongs to values[i]
+    inverse: flint.arb_mat  # V^-1
+    phi: tuple  # three arb_mat, K x 16: phi[k][i, l] = B-spline coefficient l of eigenfunction i on sub-patch k
+
+    @property
+    def size(self) -> int:
+        return 2 * self.n + 8
+
+
+@dataclass(frozen=True)
+class RoundedEigenData:
+    """The correctly rounded float64 arrays of one valence, in the data file's element order."""
+
+    n: int
+    values: np.ndarray  # (K,)
+    inverse: np.ndarray  # (K, K): inverse[i, j]
+    phi: np.ndarray  # (3, K, 16): phi[k, i, l]
+
+
+# ---------------------------------------------------------------------------------------------
+# exact helpers
+
+
+def _fq(x) -> flint.fmpq:
+    x = Fraction(x)
+    return flint.fmpq(x.numerator, x.denominator)
+
+
+def _arb(x) -> arb:
+    if isinstance(x, arb):
+        return x
+    x = Fraction(x)
+    return arb(x.numerator) / x.denominator
+
+
+def _trig_pi(m: int, den: int, fn: str) -> arb:
+    """``cos`` or ``sin`` of ``pi m/den``, exact when the value is rational."""
+    q = Fraction(m, den) % 2
+    if fn == "sin":
+        q = (q - Fraction(1, 2)) % 2
+    exact = {Fraction(0): 1, Fraction(1): -1, Fraction(1, 2): 0, Fraction(3, 2): 0}
+    exact.update({Fraction(1, 3): Fraction(1, 2), Fraction(5, 3): Fraction(1, 2)})
+    exact.update({Fraction(2, 3): Fraction(-1, 2), Fraction(4, 3): Fraction(-1, 2)})
+    if q in exact:
+        return _arb(exact[q])
+    return arb.cos_pi_fmpq(_fq(q))
+
+
+def _rational_eigen(m: list[list[Fraction]]):
+    """Exact eigen-decomposition of a small rational matrix: ``[(value, right basis, left basis)]``.
+
+    Values of irrational factors come as Arb balls with Arb eigenvectors (sizes 2 and 3 only).
+    Raises :class:`NotDiagonalizableError` if a null space is smaller than the multiplicity.
+    """
+    size = len(m)
+    mat = flint.fmpq_mat(size, size, [_fq(x) for row in m for x in row])
+    _, factors = mat.charpoly().factor()
+    out = []
+    for poly, mult in factors:
+        if poly.degree() == 1:
+            lam = Fraction(int(-poly[0].p) * int(poly[1].q), int(poly[0].q) * int(poly[1].p))
+            shifted = [[m[i][j] - (lam if i == j else 0) for j in range(size)] for i in range(size)]
+            right, left = _nullspace(shifted), _nullspace([list(r) for r in zip(*shifted)])
+            if len(right) != mult:
+                raise NotDiagonalizableError(f"eigenvalue {lam} has multiplicity {mult} but {len(right)} eigenvectors")
+            out.append((lam, right, left))
+            continue
+        if mult != 1:
+            raise NotDiagonalizableError(f"repeated irrational eigenvalues (factor {poly}) are not supported")
+        for root, _ in poly.complex_roots():
+            if not root.imag.contains(0):
+                raise NotDiagonalizableError(f"complex eigenvalue {root}: the data file holds real eigenvalues only")
+            lam = root.real
+            shifted = [[_arb(m[i][j]) - (lam if i == j else 0) for j in range(size)] for i in range(size)]
+            out.append((lam, [_adjugate_null(shifted)], [_adjugate_null([list(r) for r in zip(*shifted)])]))
+    return out
+
+
+def _nullspace(m: list[list[Fraction]]) -> list[list[Fraction]]:
+    rows, cols = len(m), len(m[0])
+    r, rank = flint.fmpq_mat(rows, cols, [_fq(x) for row in m for x in row]).rref()
+    pivots, basis = [], []
+    for i in range(rank):
+        pivots.append(next(j for j in range(cols) if r[i, j] != 0))
+    for free in (j for j in range(cols) if j not in pivots):
+        v = [Fraction(0)] * cols
+        v[free] = Fraction(1)
+        for i, p in enumerate(pivots):
+            v[p] = -Fraction(int(r[i, free].p), int(r[i, free].q))
+        basis.append(v)
+    return basis
+
+
+def _adjugate_null(m: list[list[arb]]) -> list[arb]:
+    """A null vector of a rank-deficient 2 x 2 or 3 x 3 Arb matrix: its largest adjugate column."""
+    size = len(m)
+    if size == 2:
+        cands = [[m[0][1], -m[0][0]], [m[1][1], -m[1][0]]]
+    elif size == 3:
+        cands = []
+        for a, b in ((0, 1), (0, 2), (1, 2)):
+            u, v = m[a], m[b]
+            cands.append([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]])
+    else:
+        raise NotDiagonalizableError(f"irrational eigenvalues of a {size} x {size} rational block are not supported")
+    best = max(cands, key=lambda c: sum(abs(float(x.mid())) for x in c))
+    if all(x.contains(0) for x in best):
+        raise _NeedPrecision
+    return best
+
+
+def _biorthogonal(right: list, left: list, scale) -> list:
+    """Rescale the left basis so that ``scale * (left_i . right_j) = delta_ij`` (exact or Arb)."""
+    if len(right) == 1:
+        dot = sum((a * b for a, b in zip(left[0], right[0])), 0) * scale
+        if isinstance(dot, arb) and dot.contains(0):
+            raise _NeedPrecision
+        return [[y / dot for y in left[0]]]
+    gram = flint.fmpq_mat(len(left), len(right), [_fq(sum(a * b for a, b in zip(l_, r)) * scale) for l_ in left for r in right])
+    g = gram.inv()
+    return [[sum((Fraction(int(g[i, k].p), int(g[i, k].q)) * left[k][c] for k in range(len(left))), Fraction(0)) for c in range(len(left[0]))] for i in range(len(left))]
+
+
+# ---------------------------------------------------------------------------------------------
+# the 1-ring matrix as circulant blocks
+
+
+def _circulant(p: PatchMatrices) -> dict:
+    """Circulant weights of the 1-ring block ``S``, checked exactly (circulant, mirror symmetric)."""
+    n = p.n
+
+    def split(row, i):
+        ee, ef = {}, {}
+        for c, w in row.items():
+            if c == 0 or w == 0:
+                continue
+            if c > 2 * n:
+                raise NotDiagonalizableError(f"the 1-ring of valence {n} depends on points beyond it: not block triangular")
+            target = ee if c % 2 else ef
+            target[((c - 1) // 2 - i) % n] = w
+        return row.get(0, Fraction(0)), ee, ef
+
+    eo, ee, ef = split(p.sparse[1], 0)
+    fo, fe, ff = split(p.sparse[2], 0)
+    for i in range(n):
+        if split(p.sparse[1 + 2 * i], i) != (eo, ee, ef) or split(p.sparse[2 + 2 * i], i) != (fo, fe, ff):
+            raise NotDiagonalizableError(f"the 1-ring matrix at valence {n} is not block circulant")
+    oo, oe, of = split(p.sparse[0], 0)
+    if any(oe.get(k, 0) != oe.get(0, 0) for k in range(n)) or any(of.get(k, 0) != of.get(0, 0) for k in range(n)):
+        raise NotDiagonalizableError(f"the centre rule at valence {n} is not rotation invariant")
+    mirror = all(
+        ee.get(k, 0) == ee.get(-k % n, 0)
+        and ef.get(k, 0) == ef.get((-1 - k) % n, 0)
+        and fe.get(k, 0) == fe.get((1 - k) % n, 0)
+        and ff.get(k, 0) == ff.get(-k % n, 0)
+        for k in range(n)
+    )
+    if not mirror:
+        raise NotDiagonalizableError(f"the 1-ring rules at valence {n} are not mirror symmetric (the Fourier blocks are not real)")
+    return dict(oo=oo, oe=oe.get(0, Fraction(0)), of=of.get(0, Fraction(0)), eo=eo, ee=ee, ef=ef, fo=fo, fe=fe, ff=ff)
+
+
+def _block_entries(w: dict, n: int, j: int, cos, conv=lambda x: x):
+    """``(b_ee, b_ef, b_fe, b_ff)`` of frequency ``j`` with ``cos(m)`` = cos(pi m/n) in some arithmetic."""
+    b_ee = sum((conv(x) * cos(2 * j * k) for k, x in w["ee"].items()), 0)
+    b_ef = sum((conv(x) * cos(j * (2 * k + 1)) for k, x in w["ef"].items()), 0)
+    b_fe = sum((conv(x) * cos(j * (2 * k - 1)) for k, x in w["fe"].items()), 0)
+    b_ff = sum((conv(x) * cos(2 * j * k) for k, x in w["ff"].items()), 0)
+    return b_ee, b_ef, b_fe, b_ff
+
+
+def _choose(a: list, b: list) -> tuple[int, list]:
+    pick = 0 if sum(abs(float(x.mid())) for x in a) >= sum(abs(float(x.mid())) for x in b) else 1
+    v = (a, b)[pick]
+    if all(x.contains(0) for x in v):
+        raise _NeedPrecision
+    return pick, v
+
+
+class _Column:
+    """One eigenvector of ``S``: value, its entries in ``V0``, its row of ``V0^-1``, exact data."""
+
+    __slots__ = ("value", "right", "left", "exact_value", "exact_check")
+
+    def __init__(self, value, right, left, exact_value=None, exact_check=None):
+        self.value, self.right, self.left = value, right, left
+        self.exact_value, self.exact_check = exact_value, exact_check
+
+
+def _trig_table(n: int) -> list:
+    """``cos(pi m/(2n))`` for ``m = 0..4n-1``: cos(pi m/n) is entry ``2m``, sin(pi m/n) entry ``2m - n``."""
+    return [_trig_pi(m, 2 * n, "cos") for m in range(4 * n)]
+
+
+def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> list:
+    """``[0, ce T(2jk), cf T(j(2k+1)), ...]``: a Fourier pattern on ``(O, e_0, f_0, ...)``."""
+    shift = 0 if fn == "cos" else -n
+    out = [arb(0)]
+    for k in range(n):
+        out.append(ce * table[(4 * j * k + shift) % (4 * n)])
+        out.append(cf * table[(2 * j * (2 * k + 1) + shift) % (4 * n)])
+    return out
+
+
+def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
+    """The four eigenvectors of ``S`` at frequencies ``j`` and ``n - j`` (``0 < j < n/2``)."""
+    b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: table[(2 * m) % (4 * n)], _arb)
+    t, d = b_ee + b_ff, b_ee * b_ff - b_ef * b_fe
+    disc = t * t - 4 * d
+    if disc < 0:
+        raise NotDiagonalizableError(f"valence {n}, frequency {j}: complex eigenvalues (the data file holds real ones)")
+    if not disc > 0:
+        raise _NeedPrecision
+    cols = []
+    for lam in ((t + disc.sqrt()) / 2, (t - disc.sqrt()) / 2):
+        pick, z = _choose([b_ef, lam - b_ee], [lam - b_ff, b_fe])
+        _, y = _choose([b_fe, lam - b_ee], [lam - b_ff, b_ef])
+        (y,) = _biorthogonal([z], [y], arb(n))
+        check = _exact_frequency_check(w, n, j, pick)
+        for fn in ("cos", "sin"):
+            right = _pattern(table, n, j, fn, z[0], z[1])
+            left = _pattern(table, n, j, fn, 2 * y[0], 2 * y[1])
+            cols.append(_Column(lam, right, left, None, check))
+    return cols
+
+
+def _exact_frequency_check(w: dict, n: int, j: int, pick: int):
+    """Exact test, in Q(zeta_2n), of a coincidence ``lam = nu`` and of ``g . u0 = 0`` for both patterns."""
+
+    def check(nu: Fraction, g: dict):
+        field = CyclotomicField(2 * n)
+        zeta = lambda m: field.zeta(m % (2 * n))  # noqa: E731
+        b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: (zeta(m) + zeta(-m)) / 2)
+        if nu * nu - (b_ee + b_ff) * nu + (b_ee * b_ff - b_ef * b_fe) != 0:
+            return None
+        ze, zf = (b_ef, nu - b_ee) if pick == 0 else (nu - b_ff, b_fe)
+        total = field(0)
+        for c, x in g.items():
+            if 1 <= c <= 2 * n:
+                k = (c - 1) // 2
+                total = total + x * (ze * zeta(2 * j * k) if c % 2 else zf * zeta(j * (2 * k + 1)))
+        return total == 0
+
+    return check
+
+
+def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
+    """Eigenvectors of ``S`` at frequency 0 (3 x 3 block) or ``n/2`` (2 x 2 block in the (-1)^k basis)."""
+    if j == 0:
+        block = [[w["oo"], n * w["oe"], n * w["of"]], [w["eo"], sum(w["ee"].values()), sum(w["ef"].values())],
+                 [w["fo"], sum(w["fe"].values()), sum(w["ff"].values())]]
+    else:
+        alt = lambda d: sum((x * (-1) ** k for k, x in d.items()), Fraction(0))  # noqa: E731
+        block = [[alt(w["ee"]), alt(w["ef"])], [alt(w["fe"]), alt(w["ff"])]]
+    cols = []
+    for lam, right, left in _rational_eigen(block):
+        left = _biorthogonal(right, left, 1 if j == 0 else n)
+        for z, y in zip(right, left):
+            if j == 0:
+                full_r = [z[0]] + [z[1], z[2]] * n
+                full_l = [y[0]] + [y[1] / n, y[2] / n] * n
+            else:
+                full_r = [0] + [(-1) ** k * v for k in range(n) for v in (z[0], z[1])]
+                full_l = [0] + [(-1) ** k * v for k in range(n) for v in (y[0], y[1])]
+            exact = lam if isinstance(lam, Fraction) else None
+            check = None
+            if exact is not None:
+                check = lambda nu, g, lam=lam, r=full_r: None if nu != lam else sum(x * r[c] for c, x in g.items() if c < len(r)) == 0  # noqa: E731
+            cols.append(_Column(_arb(lam), [_arb(x) for x in full_r], [_arb(x) for x in full_l], exact, check))
+    return cols
+
+
+# ---------------------------------------------------------------------------------------------
+# assembly
+
+
+def _fraction(x: flint.fmpq) -> Fraction:
+    return Fraction(int(x.p), int(x.q))
+
+
+def _regular_part(p: PatchMatrices):
+    """Exact eigenvalues ``nu``, eigenvectors ``W`` and ``W^-1`` of the 7 x 7 block ``S12``."""
+    k0 = 2 * p.n + 1
+    s12 = [[p.sparse[k0 + i].get(k0 + j, Fraction(0)) for j in range(7)] for i in range(7)]
+    nus, columns = [], []
+    for lam, right, _ in _rational_eigen(s12):
+        if not isinstance(lam, Fraction):
+            raise NotDiagonalizableError(f"the regular block has an irrational eigenvalue {lam}: not supported")
+        for z in right:
+            nus.append(lam)
+            columns.append(z)
+    w = flint.fmpq_mat(7, 7, [_fq(columns[c][r]) for r in range(7) for c in range(7)])
+    return nus, w, w.inv()
+
+
+def patch_eigendata(scheme: Scheme, n: int, prec: int = 128) -> PatchEigenData:
+    """The eigenstructure of the patch matrix at valence ``n`` in Arb balls at ``prec`` bits.
+
+    Raises :class:`NotDiagonalizableError` when there is no eigenvector basis, and
+    :class:`PrecisionError` when ``prec`` is too low to decide a sign on the way.
+    """
+    n = check_valence(n)
+    old = flint.ctx.prec
+    flint.ctx.prec = prec
+    try:
+        return _eigendata(patch_matrices(scheme, n), prec)
+    except _NeedPrecision:
+        raise PrecisionError(f"valence {n}: {prec} bits do not separate the eigenvalues") from None
+    finally:
+        flint.ctx.prec = old
+
+
+def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
+    n, k0, size = p.n, 2 * p.n + 1, 2 * p.n + 8
+    w = _circulant(p)
+    table = _trig_table(n)
+    cols = _rational_columns(w, n, 0)
+    for j in range(1, (n + 1) // 2):
+        cols += _frequency_columns(w, n, j, table)
+    if n % 2 == 0:
+        cols += _rational_columns(w, n, n // 2)
+    assert len(cols) == k0
+    nus, wmat, winv = _regular_part(p)
+    v0 = flint.arb_mat(k0, k0)
+    v0inv = flint.arb_mat(k0, k0)
+    for c, col in enumerate(cols):
+        for r in range(k0):
+            v0[r, c] = col.right[r]
+            v0inv[c, r] = col.left[r]
+    s11 = flint.fmpq_mat(7, k0)
+    for i in range(7):
+        for c, x in p.sparse[k0 + i].items():
+            if c < k0:
+                s11[i, c] = _fq(x)
+    g_exact = winv * s11
+    g_rows = [{c: _fraction(g_exact[r, c]) for c in range(k0) if g_exact[r, c] != 0} for r in range(7)]
+    coeff = flint.arb_mat(g_exact) * v0
+    dmat = flint.arb_mat(7, k0)
+    for r, nu in enumerate(nus):
+        for c, col in enumerate(cols):
+            gap = col.value - _arb(nu)
+            if not gap.contains(0):
+                dmat[r, c] = coeff[r, c] / gap
+                continue
+            verdict = col.exact_check(nu, g_rows[r]) if col.exact_check else None
+            if verdict is None:
+                raise _NeedPrecision
+            if not verdict:
+                raise NotDiagonalizableError(
+                    f"valence {n}: the eigenvalue {nu} of the 1-ring and of the regular block has fewer eigenvectors "
+                    "than its multiplicity (the patch matrix is not diagonalizable)"
+                )
+    v1 = flint.arb_mat(wmat) * dmat
+    lower = -(dmat * v0inv)
+    vec, inv = flint.arb_mat(size, size), flint.arb_mat(size, size)
+    wa, wia = flint.arb_mat(wmat), flint.arb_mat(winv)
+    for r in range(k0):
+        for c in range(k0):
+            vec[r, c], inv[r, c] = v0[r, c], v0inv[r, c]
+    for r in range(7):
+        for c in range(k0):
+            vec[k0 + r, c], inv[k0 + r, c] = v1[r, c], lower[r, c]
+        for c in range(7):
+            vec[k0 + r, k0 + c], inv[k0 + r, k0 + c] = wa[r, c], wia[r, c]
+    values = tuple(col.value for col in cols) + tuple(_arb(nu) for nu in nus)
+    extra = flint.arb_mat(9, size)
+    for i in range(9):
+        for c, x in p.sparse[size + i].items():
+            extra[i, c] = _arb(x)
+    beyond = extra * vec
+    phi = []
+    for rows in p.subpatches:
+        table_k = flint.arb_mat(size, 16)
+        for l_, idx in enumerate(rows):
+            for c in range(size):
+                table_k[c, l_] = values[c] * vec[idx, c] if idx < size else beyond[idx - size, c]
+        phi.append(table_k)
+    return PatchEigenData(n, prec, values, vec, inv, tuple(phi))
+
+
+# ---------------------------------------------------------------------------------------------
+# correct rounding
+
+_SAFE = 1 + 2.0**-50
+_INF = math.inf
+
+
+def _round_slow(x: arb) -> float | None:
+    if x.contains(0):
+        return 0.0 if abs(x) < arb(2) ** -1075 else None
+    m = float(x.mid())
+    for c in (m, math.nextafter(m, _INF), math.nextafter(m, -_INF)):
+        below, above = math.nextafter(c, -_INF), math.nextafter(c, _INF)
+        if math.isfinite(below) and math.isfinite(above):
+            d = x - arb(c)
+            if d > (arb(below) - arb(c)) / 2 and d < (arb(above) - arb(c)) / 2:
+                return c
+    return None
+
+
+def round_ball(x: arb) -> float | None:
+    """The float64 nearest to every point of the ball ``x`` (ties to even), or None if that differs.
+
+    The ball's midpoint ``man 2^exp`` is rounded exactly (integer to float is correctly rounded),
+    and the ball must keep a safe distance from the two rounding boundaries around it.
+
+    >>> round_ball(arb(1) / 3) == 1 / 3, round_ball(arb("0.5 +/- 0.1"))
+    (True, None)
+    """
+    man, exp = x.mid().man_exp()
+    man, exp = int(man), int(exp)
+    if man == 0:
+        return _round_slow(x)
+    extra = abs(man).bit_length() - 100
+    if extra > 0:  # keep 100 bits and a sticky bit: rounding to 53 bits is unchanged
+        sticky = 1 if abs(man) & ((1 << extra) - 1) else 0
+        man = (abs(man) >> extra | sticky) * (1 if man > 0 else -1)
+        exp += extra
+    f = float(man)
+    slack = math.ldexp(1.0, exp) if extra > 0 else 0.0
+    m = math.ldexp(f, exp)
+    a = abs(m)
+    if not 2.0**-1000 < a < 2.0**1000:
+        return _round_slow(x)
+    err = (math.ldexp(abs(float(man - int(f))), exp) + slack + float(x.rad())) * _SAFE
+    if err < min(a - math.nextafter(a, 0), math.nextafter(a, _INF) - a) / 2:
+        return m
+    return None
+
+
+def _round_all(data: PatchEigenData) -> RoundedEigenData | None:
+    size = data.size
+    values = [round_ball(v) for v in data.values]
+    inverse = [round_ball(x) for x in data.inverse.entries()]
+    phi = [round_ball(x) for t in data.phi for x in t.entries()]
+    if None in values or None in inverse or None in phi:
+        return None
+    return RoundedEigenData(
+        data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, 16)
+    )
+
+
+def certified_eigendata(scheme: Scheme, n: int, prec: int = 128, max_prec: int = 1 << 14) -> tuple[PatchEigenData, RoundedEigenData]:
+    """The eigen-data at valence ``n`` at the lowest precision (doubling from ``prec``) that rounds it all.
+
+    Every float64 returned is the correctly rounded value of the exact number, whose Arb ball
+    is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits.
+    """
+    while True:
+        try:
+            data = patch_eigendata(scheme, n, prec)
+            rounded = _round_all(data)
+        except PrecisionError:
+            rounded = None
+        if rounded is not None:
+            return data, rounded
+        if prec >= max_prec:
+            raise PrecisionError(f"valence {n}: the eigen-data did not round correctly at {prec} bits")
+        # Exact zeros (symmetries) round only once the ball is inside (-2^-1075, 2^-1075).
+        prec = max(2 * prec, 1200)

@@ -11,7 +11,7 @@ from symdecomp.errors import SymdecompError
 __all__ = ["main", "build_parser"]
 
 #: Subcommand modules of this package, in the order ``--help`` lists them.
-COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd")
+COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd", "evaldata_cmd")
 
 
 def build_parser() -> argparse.ArgumentParser:

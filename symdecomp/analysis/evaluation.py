@@ -1,0 +1,164 @@
+"""Exact evaluation of the patch next to an extraordinary vertex (Stam's method).
+
+The patch ``(O, e_2, f_1, e_1)`` of a valence-``N`` vertex is evaluated from its ``K = 2N + 8``
+control points (order: :mod:`symdecomp.schemes.patch`) and the eigen-data of the patch matrix
+(:mod:`symdecomp.analysis.eigendata`): for ``(u, v)`` in ``[0, 1]^2`` other than ``(0, 0)``,
+
+* ``n = floor(-log2 max(u, v)) + 1``, ``(u, v) <- 2^(n-1) (u, v)``;
+* sub-patch ``k`` and local ``(s, t)``: ``v < 1/2``: ``k = 0``, ``(2u - 1, 2v)``; else ``u < 1/2``:
+  ``k = 2``, ``(2u, 2v - 1)``; else ``k = 1``, ``(2u - 1, 2v - 1)``;
+* ``s(u, v) = sum_i lam_i^(n-1) (sum_l Phi_k[i, l] b_l(s, t)) (V^-1 C)_i`` with the bicubic
+  B-spline basis ``b_{a + 4b}(s, t) = N_a(s) N_b(t)``.
+
+Derivatives follow by the chain rule (``d/du = 2^n d/ds``). At ``(0, 0)`` the point is the
+limit position (the position mask) and the normal the cross product of the two tangent masks'
+images; the derivatives there are not defined by the parametrization (NaN).
+
+Two arithmetics, one formula: :class:`PatchEvaluator` holds numpy float64 arrays (from the data
+file, vectorized over many parameters) or numpy object arrays of mpmath numbers at any
+precision (from the Arb balls, :meth:`PatchEvaluator.exact`).
+
+>>> import numpy as np
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> ev = PatchEvaluator.exact(catmull_clark(), 4, dps=30)
+>>> grid = [(a, b) for b in (-1, 0, 1, 2) for a in (-1, 0, 1, 2)]
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath
+import numpy as np
+
+from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, certified_eigendata, patch_eigendata
+from symdecomp.analysis.masks import limit_masks_at
+from symdecomp.errors import SymdecompError, check_valence
+from symdecomp.schemes.scheme import Scheme
+
+__all__ = ["EvaluationError", "PatchEvaluator", "bspline_basis", "patch_order"]
+
+
+class EvaluationError(SymdecompError):
+    """Parameters outside ``[0, 1]^2`` or control points of the wrong shape."""
+
+
+def patch_order(n: int) -> np.ndarray:
+    """Index permutation from the masks' order ``(O, a_0.., b_0..)`` to the patch's ``(O, e_0, f_0, ..)``."""
+    return np.array([0] + [x for i in range(n) for x in (1 + i, 1 + n + i)])
+
+
+def bspline_basis(t, derivative: int = 0):
+    """The uniform cubic B-spline basis ``N_0..N_3`` (or a derivative) at ``t``: shape ``(4,) + t.shape``."""
+    one = t * 0 + 1
+    if derivative == 0:
+        return np.array([(one - t) ** 3 / 6, (3 * t**3 - 6 * t**2 + 4 * one) / 6, (-3 * t**3 + 3 * t**2 + 3 * t + one) / 6, t**3 / 6])
+    if derivative == 1:
+        return np.array([-((one - t) ** 2) / 2, (9 * t**2 - 12 * t) / 6, (-9 * t**2 + 6 * t + 3 * one) / 6, t**2 / 2])
+    return np.array([one - t, 3 * t - 2 * one, -3 * t + one, t])
+
+
+@dataclass(frozen=True)
+class PatchEvaluator:
+    """Evaluate the valence-``n`` patch; arrays float64 or objects (mpmath numbers)."""
+
+    n: int
+    values: np.ndarray  # (K,)
+    inverse: np.ndarray  # (K, K)
+    phi: np.ndarray  # (3, K, 16)
+    position_mask: np.ndarray  # (K,) limit position, patch order
+    tangent_masks: np.ndarray  # (2, K)
+
+    @classmethod
+    def from_rounded(cls, scheme: Scheme, data: RoundedEigenData) -> "PatchEvaluator":
+        pos, tan = _masks(scheme, data.n, float)
+        return cls(data.n, data.values, data.inverse, data.phi, pos, tan)
+
+    @classmethod
+    def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi) -> "PatchEvaluator":
+        pos, tan = _masks(scheme, n, float)
+        return cls(n, np.asarray(values, float), np.asarray(inverse, float), np.asarray(phi, float), pos, tan)
+
+    @classmethod
+    def exact(cls, scheme: Scheme, n: int, dps: int = 30) -> "PatchEvaluator":
+        """mpmath numbers good to about ``dps`` digits (Arb balls at ``3.4 dps + 64`` bits)."""
+        n = check_valence(n)
+        data: PatchEigenData = patch_eigendata(scheme, n, int(3.4 * dps) + 64)
+        with mpmath.workdps(dps + 10):
+            mp = lambda x: mpmath.mpf(x.mid().str(dps + 15, radius=False))  # noqa: E731
+            size = data.size
+            values = np.array([mp(x) for x in data.values], dtype=object)
+            inverse = np.array([[mp(data.inverse[i, j]) for j in range(size)] for i in range(size)], dtype=object)
+            phi = np.array([[[mp(t[i, l]) for l in range(16)] for i in range(size)] for t in data.phi], dtype=object)
+            pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(e.evalf(dps + 10)) if e != 0 else mpmath.mpf(0))
+        return cls(n, values, inverse, phi, pos, tan)
+
+    def evaluate(self, control_points, u, v) -> dict:
+        """Point, first and second derivatives and unit normal at the parameters ``(u, v)`` (arrays).
+
+        Returns ``{"point", "du", "dv", "duu", "duv", "dvv", "normal"}``, each of shape
+        ``u.shape + (d,)`` for ``d``-dimensional control points of shape ``(K, d)``.
+        """
+        c = np.asarray(control_points)
+        if c.ndim != 2 or c.shape[0] != 2 * self.n + 8:
+            raise EvaluationError(f"control points must have shape ({2 * self.n + 8}, d), got {c.shape}")
+        exact = self.values.dtype == object
+        u = np.atleast_1d(np.asarray(u, dtype=object if exact else float))
+        v = np.atleast_1d(np.asarray(v, dtype=object if exact else float))
+        u, v = np.broadcast_arrays(u, v)
+        if any(x < 0 or x > 1 for x in np.concatenate([u.ravel(), v.ravel()])):
+            raise EvaluationError("parameters must lie in [0, 1]")
+        shape, u, v = u.shape, u.ravel(), v.ravel()
+        proj = self.inverse.dot(c)  # (K, d): the control points in the eigenbasis
+        out = {key: np.empty((u.size, c.shape[1]), dtype=proj.dtype) for key in ("point", "du", "dv", "duu", "duv", "dvv")}
+        for p in range(u.size):
+            self._one(proj, c, u[p], v[p], out, p)
+        out["normal"] = _normals(out["du"], out["dv"])
+        origin = [p for p in range(u.size) if u[p] == 0 and v[p] == 0]
+        if origin:
+            t1, t2 = self.tangent_masks.dot(c)
+            nrm = _normals(t1[None, :], t2[None, :])[0]
+            for p in origin:
+                out["normal"][p] = nrm
+        return {k: a.reshape(shape + (c.shape[1],)) for k, a in out.items()}
+
+    def _one(self, proj, c, u, v, out, p):
+        if u == 0 and v == 0:
+            out["point"][p] = self.position_mask.dot(c)
+            for key in ("du", "dv", "duu", "duv", "dvv"):
+                out[key][p] = np.nan if self.values.dtype != object else mpmath.nan
+            return
+        level = 1
+        while max(u, v) <= 0.5:
+            u, v, level = u * 2, v * 2, level + 1
+        if v < 0.5:
+            k, s, t = 0, 2 * u - 1, 2 * v
+        elif u < 0.5:
+            k, s, t = 2, 2 * u, 2 * v - 1
+        else:
+            k, s, t = 1, 2 * u - 1, 2 * v - 1
+        scale = 2**level
+        weights = self.values ** (level - 1)
+        for key, (ds, dt) in (("point", (0, 0)), ("du", (1, 0)), ("dv", (0, 1)), ("duu", (2, 0)), ("duv", (1, 1)), ("dvv", (0, 2))):
+            basis = np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel()  # index a + 4 b
+            out[key][p] = (weights * self.phi[k].dot(basis)).dot(proj) * scale ** (ds + dt)
+
+
+def _normals(du, dv):
+    n = np.cross(du, dv) if du.shape[-1] == 3 else np.zeros_like(du)
+    if du.dtype == object:
+        norms = np.array([mpmath.sqrt(sum(x * x for x in row)) for row in n], dtype=object)
+    else:
+        norms = np.sqrt((n * n).sum(axis=-1))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return n / norms[:, None]
+
+
+def _masks(scheme: Scheme, n: int, conv):
+    m = limit_masks_at(scheme, n)
+    order = patch_order(n)
+    pos = np.array([conv(m.position[i]) for i in order] + [conv(0)] * 7, dtype=object)
+    tan = np.array([[conv(t[i]) for i in order] + [conv(0)] * 7 for t in m.tangents], dtype=object)
+    if conv is float:
+        pos, tan = pos.astype(float), tan.astype(float)
+    return pos, tan

@@ -501,7 +501,7 @@ def round_ball(x: arb) -> float | None:
     err = (math.ldexp(abs(float(man - int(f))), exp) + slack + float(x.rad())) * _SAFE
     if err < min(a - math.nextafter(a, 0), math.nextafter(a, _INF) - a) / 2:
         return m
-    return None
+    return _round_slow(x)  # near a rounding boundary: decide with exact ball comparisons
 
 
 def _round_all(data: PatchEigenData) -> RoundedEigenData | None:

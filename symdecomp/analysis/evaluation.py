@@ -43,6 +43,10 @@ class EvaluationError(SymdecompError):
     """Parameters outside ``[0, 1]^2`` or control points of the wrong shape."""
 
 
+#: Output key -> order of the derivative in (u, v).
+_DERIVATIVES = {"point": (0, 0), "du": (1, 0), "dv": (0, 1), "duu": (2, 0), "duv": (1, 1), "dvv": (0, 2)}
+
+
 def patch_order(n: int) -> np.ndarray:
     """Index permutation from the masks' order ``(O, a_0.., b_0..)`` to the patch's ``(O, e_0, f_0, ..)``."""
     return np.array([0] + [x for i in range(n) for x in (1 + i, 1 + n + i)])
@@ -68,6 +72,8 @@ class PatchEvaluator:
     phi: np.ndarray  # (3, K, 16)
     position_mask: np.ndarray  # (K,) limit position, patch order
     tangent_masks: np.ndarray  # (2, K)
+    #: Working precision (decimal digits) of the mpmath arithmetic; None for float64.
+    dps: int | None = None
 
     @classmethod
     def from_rounded(cls, scheme: Scheme, data: RoundedEigenData) -> "PatchEvaluator":
@@ -91,7 +97,7 @@ class PatchEvaluator:
             inverse = np.array([[mp(data.inverse[i, j]) for j in range(size)] for i in range(size)], dtype=object)
             phi = np.array([[[mp(t[i, l]) for l in range(16)] for i in range(size)] for t in data.phi], dtype=object)
             pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(e.evalf(dps + 10)) if e != 0 else mpmath.mpf(0))
-        return cls(n, values, inverse, phi, pos, tan)
+        return cls(n, values, inverse, phi, pos, tan, dps + 10)
 
     def evaluate(self, control_points, u, v) -> dict:
         """Point, first and second derivatives and unit normal at the parameters ``(u, v)`` (arrays).
@@ -99,6 +105,12 @@ class PatchEvaluator:
         Returns ``{"point", "du", "dv", "duu", "duv", "dvv", "normal"}``, each of shape
         ``u.shape + (d,)`` for ``d``-dimensional control points of shape ``(K, d)``.
         """
+        if self.dps is not None:
+            with mpmath.workdps(self.dps):
+                return self._evaluate(control_points, u, v)
+        return self._evaluate(control_points, u, v)
+
+    def _evaluate(self, control_points, u, v) -> dict:
         c = np.asarray(control_points)
         if c.ndim != 2 or c.shape[0] != 2 * self.n + 8:
             raise EvaluationError(f"control points must have shape ({2 * self.n + 8}, d), got {c.shape}")
@@ -110,23 +122,47 @@ class PatchEvaluator:
             raise EvaluationError("parameters must lie in [0, 1]")
         shape, u, v = u.shape, u.ravel(), v.ravel()
         proj = self.inverse.dot(c)  # (K, d): the control points in the eigenbasis
-        out = {key: np.empty((u.size, c.shape[1]), dtype=proj.dtype) for key in ("point", "du", "dv", "duu", "duv", "dvv")}
-        for p in range(u.size):
-            self._one(proj, c, u[p], v[p], out, p)
+        if exact:
+            out = {key: np.empty((u.size, c.shape[1]), dtype=object) for key in _DERIVATIVES}
+            for p in range(u.size):
+                self._one(proj, c, u[p], v[p], out, p)
+        else:
+            out = self._vectorized(proj, u, v)
         out["normal"] = _normals(out["du"], out["dv"])
-        origin = [p for p in range(u.size) if u[p] == 0 and v[p] == 0]
-        if origin:
+        origin = np.flatnonzero([a == 0 and b == 0 for a, b in zip(u, v)])
+        if origin.size:
             t1, t2 = self.tangent_masks.dot(c)
-            nrm = _normals(t1[None, :], t2[None, :])[0]
+            nrm = _normals(t2[None, :], t1[None, :])[0]  # (t1, t2) turn from e_0 to e_1: against (u, v)
             for p in origin:
+                out["point"][p] = self.position_mask.dot(c)
                 out["normal"][p] = nrm
+                for key in list(_DERIVATIVES)[1:]:
+                    out[key][p] = mpmath.nan if exact else np.nan
         return {k: a.reshape(shape + (c.shape[1],)) for k, a in out.items()}
 
+    def _vectorized(self, proj, u, v) -> dict:
+        origin = (u == 0) & (v == 0)
+        m, e = np.frexp(np.where(origin, 1.0, np.maximum(u, v)))
+        level = 1 - e + (m == 0.5)
+        us, vs = np.ldexp(u, level - 1), np.ldexp(v, level - 1)
+        k = np.where(vs < 0.5, 0, np.where(us < 0.5, 2, 1))
+        s, t = np.where(k == 2, 2 * us, 2 * us - 1), np.where(k == 0, 2 * vs, 2 * vs - 1)
+        weights = self.values[None, :] ** (level - 1)[:, None]
+        scale = np.ldexp(1.0, level)[:, None]
+        out = {}
+        for key, (ds, dt) in _DERIVATIVES.items():
+            basis = np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(u.size, 16)
+            g = np.empty((u.size, self.values.size))
+            for kk in range(3):
+                sel = k == kk
+                g[sel] = basis[sel] @ self.phi[kk].T
+            out[key] = (g * weights) @ proj * scale ** (ds + dt)
+        return out
+
     def _one(self, proj, c, u, v, out, p):
-        if u == 0 and v == 0:
-            out["point"][p] = self.position_mask.dot(c)
-            for key in ("du", "dv", "duu", "duv", "dvv"):
-                out[key][p] = np.nan if self.values.dtype != object else mpmath.nan
+        if u == 0 and v == 0:  # filled in by the caller from the masks
+            for key in _DERIVATIVES:
+                out[key][p] = mpmath.mpf(0)
             return
         level = 1
         while max(u, v) <= 0.5:
@@ -139,7 +175,7 @@ class PatchEvaluator:
             k, s, t = 1, 2 * u - 1, 2 * v - 1
         scale = 2**level
         weights = self.values ** (level - 1)
-        for key, (ds, dt) in (("point", (0, 0)), ("du", (1, 0)), ("dv", (0, 1)), ("duu", (2, 0)), ("duv", (1, 1)), ("dvv", (0, 2))):
+        for key, (ds, dt) in _DERIVATIVES.items():
             basis = np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel()  # index a + 4 b
             out[key][p] = (weights * self.phi[k].dot(basis)).dot(proj) * scale ** (ds + dt)
 
@@ -147,7 +183,7 @@ class PatchEvaluator:
 def _normals(du, dv):
     n = np.cross(du, dv) if du.shape[-1] == 3 else np.zeros_like(du)
     if du.dtype == object:
-        norms = np.array([mpmath.sqrt(sum(x * x for x in row)) for row in n], dtype=object)
+        norms = np.array([mpmath.sqrt(sum(x * x for x in row)) or mpmath.nan for row in n], dtype=object)
     else:
         norms = np.sqrt((n * n).sum(axis=-1))
     with np.errstate(invalid="ignore", divide="ignore"):

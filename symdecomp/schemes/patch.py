@@ -29,7 +29,7 @@ from symdecomp.errors import InvalidSchemeError, check_valence
 from symdecomp.schemes.mesh import refinement_matrix, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme
 
-__all__ = ["OUTER_POINTS", "EXTRA_POINTS", "SUBPATCH_CORNERS", "PatchMatrices", "patch_matrices", "lattice_index"]
+__all__ = ["OUTER_POINTS", "EXTRA_POINTS", "SUBPATCH_CORNERS", "PatchMatrices", "patch_matrices", "lattice_index", "patch_mesh"]
 
 #: The seven control points beyond the patch, (u, v) lattice coordinates, in file order.
 OUTER_POINTS = ((2, 2), (2, 1), (2, 0), (2, -1), (1, 2), (0, 2), (-1, 2))
@@ -100,15 +100,25 @@ def _refined_element(vid, point: tuple[int, int]):
     return frozenset(vid(a, b) for a in us for b in vs)
 
 
-@lru_cache(maxsize=256)
-def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
-    """The ``(2n + 8)``-point patch matrices of ``scheme`` at valence ``n``, from one exact refinement."""
+def patch_mesh(n: int, values=None):
+    """``(mesh, vid, columns)``: the 2-ring mesh of valence ``n``, lattice point -> vertex id, and the
+    ids of the ``2n + 8`` control points in the patch order. ``values(s, u, v)`` as in
+    :func:`~symdecomp.schemes.mesh.ring_mesh`."""
     n = check_valence(n)
-    mesh = ring_mesh(n, 2)
+    mesh = ring_mesh(n, 2, values)
     ids = {lab: i for i, lab in enumerate(ring_mesh_labels(n, 2))}
     vid = _chart(n, ids)
     o, a, b = mesh.one_ring(0, start=ids[(0, 1, 0)])
     columns = [o] + [x for i in range(n) for x in (a[i], b[i])] + [vid(*p) for p in OUTER_POINTS]
+    return mesh, vid, columns
+
+
+@lru_cache(maxsize=256)
+def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
+    """The ``(2n + 8)``-point patch matrices of ``scheme`` at valence ``n``, from one exact refinement."""
+    n = check_valence(n)
+    mesh, vid, columns = patch_mesh(n)
+    o, a, b = mesh.one_ring(0, start=columns[1])
     rows = [o]
     for i in range(n):
         rows += [frozenset((o, a[i])), frozenset((o, a[i], b[i], a[(i + 1) % n]))]

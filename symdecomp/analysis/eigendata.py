@@ -49,6 +49,7 @@ __all__ = [
     "RoundedEigenData",
     "patch_eigendata",
     "certified_eigendata",
+    "rounded_eigendata",
     "round_ball",
 ]
 
@@ -397,12 +398,36 @@ def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
         cols += _rational_columns(w, n, n // 2)
     assert len(cols) == k0
     nus, wmat, winv = _regular_part(p)
-    v0 = flint.arb_mat(k0, k0)
-    v0inv = flint.arb_mat(k0, k0)
-    for c, col in enumerate(cols):
-        for r in range(k0):
-            v0[r, c] = col.right[r]
-            v0inv[c, r] = col.left[r]
+    right_rows = [list(r) for r in zip(*(col.right for col in cols))]  # V0 as rows
+    dmat = _outer_coefficients(p, cols, nus, winv, right_rows)
+    v0inv = flint.arb_mat([col.left for col in cols])
+    lower = (-(flint.arb_mat(dmat) * v0inv)).tolist()
+    v1 = (flint.arb_mat(wmat) * flint.arb_mat(dmat)).tolist()
+    wa, wia = flint.arb_mat(wmat).tolist(), flint.arb_mat(winv).tolist()
+    zeros = [arb(0)] * 7
+    vec_rows = [row + zeros for row in right_rows] + [v1[r] + wa[r] for r in range(7)]
+    inv_rows = [col.left + zeros for col in cols] + [lower[r] + wia[r] for r in range(7)]
+    values = tuple(col.value for col in cols) + tuple(_arb(nu) for nu in nus)
+    # rows of the refined points beyond the K control points: sparse rows times V
+    beyond = [_sparse_times(p.sparse[size + i], vec_rows, size) for i in range(9)]
+    phi = []
+    for rows in p.subpatches:
+        cols_k = [[values[c] * vec_rows[idx][c] for c in range(size)] if idx < size else beyond[idx - size] for idx in rows]
+        phi.append(flint.arb_mat(cols_k).transpose())
+    return PatchEigenData(n, prec, values, flint.arb_mat(vec_rows), flint.arb_mat(inv_rows), tuple(phi))
+
+
+def _sparse_times(row: dict, rows: list, size: int) -> list:
+    out = [arb(0)] * size
+    for c, x in row.items():
+        w = _arb(x)
+        out = [o + w * y for o, y in zip(out, rows[c])]
+    return out
+
+
+def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
+    """``D[r][c] = (W^-1 S11 u_c)_r / (lam_c - nu_r)``, exactly 0 where ``lam_c = nu_r`` (checked exactly)."""
+    n, k0 = p.n, 2 * p.n + 1
     s11 = flint.fmpq_mat(7, k0)
     for i in range(7):
         for c, x in p.sparse[k0 + i].items():
@@ -410,13 +435,14 @@ def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
                 s11[i, c] = _fq(x)
     g_exact = winv * s11
     g_rows = [{c: _fraction(g_exact[r, c]) for c in range(k0) if g_exact[r, c] != 0} for r in range(7)]
-    coeff = flint.arb_mat(g_exact) * v0
-    dmat = flint.arb_mat(7, k0)
+    dmat = []
     for r, nu in enumerate(nus):
+        coeff = _sparse_times(g_rows[r], right_rows, k0)
+        row = []
         for c, col in enumerate(cols):
             gap = col.value - _arb(nu)
             if not gap.contains(0):
-                dmat[r, c] = coeff[r, c] / gap
+                row.append(coeff[c] / gap)
                 continue
             verdict = col.exact_check(nu, g_rows[r]) if col.exact_check else None
             if verdict is None:
@@ -426,44 +452,24 @@ def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
                     f"valence {n}: the eigenvalue {nu} of the 1-ring and of the regular block has fewer eigenvectors "
                     "than its multiplicity (the patch matrix is not diagonalizable)"
                 )
-    v1 = flint.arb_mat(wmat) * dmat
-    lower = -(dmat * v0inv)
-    vec, inv = flint.arb_mat(size, size), flint.arb_mat(size, size)
-    wa, wia = flint.arb_mat(wmat), flint.arb_mat(winv)
-    for r in range(k0):
-        for c in range(k0):
-            vec[r, c], inv[r, c] = v0[r, c], v0inv[r, c]
-    for r in range(7):
-        for c in range(k0):
-            vec[k0 + r, c], inv[k0 + r, c] = v1[r, c], lower[r, c]
-        for c in range(7):
-            vec[k0 + r, k0 + c], inv[k0 + r, k0 + c] = wa[r, c], wia[r, c]
-    values = tuple(col.value for col in cols) + tuple(_arb(nu) for nu in nus)
-    extra = flint.arb_mat(9, size)
-    for i in range(9):
-        for c, x in p.sparse[size + i].items():
-            extra[i, c] = _arb(x)
-    beyond = extra * vec
-    phi = []
-    for rows in p.subpatches:
-        table_k = flint.arb_mat(size, 16)
-        for l_, idx in enumerate(rows):
-            for c in range(size):
-                table_k[c, l_] = values[c] * vec[idx, c] if idx < size else beyond[idx - size, c]
-        phi.append(table_k)
-    return PatchEigenData(n, prec, values, vec, inv, tuple(phi))
+            row.append(arb(0))
+        dmat.append(row)
+    return dmat
 
 
 # ---------------------------------------------------------------------------------------------
 # correct rounding
 
-_SAFE = 1 + 2.0**-50
+_TINY = None  # 2^-1075 as an Arb number, made on first use
 _INF = math.inf
 
 
 def _round_slow(x: arb) -> float | None:
+    global _TINY
     if x.contains(0):
-        return 0.0 if abs(x) < arb(2) ** -1075 else None
+        if _TINY is None:
+            _TINY = arb(2) ** -1075
+        return 0.0 if abs(x) < _TINY else None
     m = float(x.mid())
     for c in (m, math.nextafter(m, _INF), math.nextafter(m, -_INF)):
         below, above = math.nextafter(c, -_INF), math.nextafter(c, _INF)
@@ -477,38 +483,31 @@ def _round_slow(x: arb) -> float | None:
 def round_ball(x: arb) -> float | None:
     """The float64 nearest to every point of the ball ``x`` (ties to even), or None if that differs.
 
-    The ball's midpoint ``man 2^exp`` is rounded exactly (integer to float is correctly rounded),
-    and the ball must keep a safe distance from the two rounding boundaries around it.
+    A candidate ``m`` (the midpoint converted to float) is accepted when the whole ball lies
+    strictly between the midpoints to its two neighbours (certified Arb comparisons); otherwise
+    its neighbours are tried, and a ball around 0 rounds to 0.0 inside ``(-2^-1075, 2^-1075)``.
 
     >>> round_ball(arb(1) / 3) == 1 / 3, round_ball(arb("0.5 +/- 0.1"))
     (True, None)
     """
-    man, exp = x.mid().man_exp()
-    man, exp = int(man), int(exp)
-    if man == 0:
-        return _round_slow(x)
-    extra = abs(man).bit_length() - 100
-    if extra > 0:  # keep 100 bits and a sticky bit: rounding to 53 bits is unchanged
-        sticky = 1 if abs(man) & ((1 << extra) - 1) else 0
-        man = (abs(man) >> extra | sticky) * (1 if man > 0 else -1)
-        exp += extra
-    f = float(man)
-    slack = math.ldexp(1.0, exp) if extra > 0 else 0.0
-    m = math.ldexp(f, exp)
-    a = abs(m)
-    if not 2.0**-1000 < a < 2.0**1000:
-        return _round_slow(x)
-    err = (math.ldexp(abs(float(man - int(f))), exp) + slack + float(x.rad())) * _SAFE
-    if err < min(a - math.nextafter(a, 0), math.nextafter(a, _INF) - a) / 2:
-        return m
-    return _round_slow(x)  # near a rounding boundary: decide with exact ball comparisons
+    m = float(x)
+    if m != 0.0 and 2.0**-1020 < abs(m) < 2.0**1020:
+        d = x - m
+        if d > (math.nextafter(m, -_INF) - m) / 2 and d < (math.nextafter(m, _INF) - m) / 2:
+            return m
+    return _round_slow(x)
 
 
 def _round_all(data: PatchEigenData) -> RoundedEigenData | None:
     size = data.size
-    values = [round_ball(v) for v in data.values]
-    inverse = [round_ball(x) for x in data.inverse.entries()]
-    phi = [round_ball(x) for t in data.phi for x in t.entries()]
+    old = flint.ctx.prec
+    flint.ctx.prec = 128  # ``+x`` rounds a ball to 128 bits (still containing it): cheaper to inspect
+    try:
+        values = [round_ball(+v) for v in data.values]
+        inverse = [round_ball(+x) for x in data.inverse.entries()]
+        phi = [round_ball(+x) for t in data.phi for x in t.entries()]
+    finally:
+        flint.ctx.prec = old
     if None in values or None in inverse or None in phi:
         return None
     return RoundedEigenData(
@@ -516,8 +515,11 @@ def _round_all(data: PatchEigenData) -> RoundedEigenData | None:
     )
 
 
-def certified_eigendata(scheme: Scheme, n: int, prec: int = 128, max_prec: int = 1 << 14) -> tuple[PatchEigenData, RoundedEigenData]:
+def certified_eigendata(scheme: Scheme, n: int, prec: int = 1200, max_prec: int = 1 << 14) -> tuple[PatchEigenData, RoundedEigenData]:
     """The eigen-data at valence ``n`` at the lowest precision (doubling from ``prec``) that rounds it all.
+
+    The default start, 1200 bits, is what the exact zeros need (symmetries make many entries 0,
+    and a ball around 0 rounds to 0.0 only inside ``(-2^-1075, 2^-1075)``).
 
     Every float64 returned is the correctly rounded value of the exact number, whose Arb ball
     is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits.
@@ -534,3 +536,24 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 128, max_prec: int =
             raise PrecisionError(f"valence {n}: the eigen-data did not round correctly at {prec} bits")
         # Exact zeros (symmetries) round only once the ball is inside (-2^-1075, 2^-1075).
         prec = max(2 * prec, 1200)
+
+
+def _rounded_one(args) -> tuple[int, RoundedEigenData]:
+    scheme, n = args
+    data, rounded = certified_eigendata(scheme, n)
+    return data.prec, rounded
+
+
+def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1):
+    """Yield ``(precision, RoundedEigenData)`` for the valences ``ns`` in order, on ``jobs`` processes."""
+    tasks = [(scheme, n) for n in ns]
+    if jobs <= 1 or len(tasks) < 2:
+        yield from map(_rounded_one, tasks)
+        return
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(max_workers=jobs) as pool:
+        # largest valences first keeps both processes busy; results come back in order
+        futures = {n: pool.submit(_rounded_one, t) for t, n in sorted(zip(tasks, ns), key=lambda tn: -tn[1])}
+        for n in ns:
+            yield futures[n].result()

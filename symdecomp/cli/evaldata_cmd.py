@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import sys
 
-from symdecomp.analysis.eigendata import certified_eigendata, patch_eigendata
+from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
 from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
 from symdecomp.output.evaldata import EvalDataFileError, binary_bytes, check_writable, dumps, json_document, write_atomic
 
@@ -27,6 +27,7 @@ def register(sub) -> None:
     p.add_argument("--out", required=True, metavar="FILE", help="output file (written atomically)")
     p.add_argument("--format", choices=("binary", "json"), default="binary", help="binary (default) or json")
     p.add_argument("--digits", type=positive_int, default=20, help="significant digits in the JSON form (default 20)")
+    p.add_argument("--jobs", type=positive_int, default=2, help="worker processes for the binary file (default 2)")
     p.add_argument("--json", action="store_true", help="print a JSON summary")
     add_scheme_option(p)
     p.set_defaults(func=run)
@@ -41,9 +42,8 @@ def run(args) -> int:
     precs = []
     if args.format == "binary":
         rounded = []
-        for n in progress(ns, len(ns), "evaldata", enabled=show):
-            data, r = certified_eigendata(args.scheme, n)
-            precs.append(data.prec)
+        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs), len(ns), "evaldata", enabled=show):
+            precs.append(prec)
             rounded.append(r)
         content = binary_bytes(rounded)
     else:

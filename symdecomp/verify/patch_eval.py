@@ -59,3 +59,35 @@ def dyadic_limits(scheme: Scheme, n: int, level: int, values) -> tuple[list, dic
             masks[m] = [Fraction(int(w.p), int(w.q)) for w in limit_masks_at(scheme, m).position]
         limits[(u, v)] = tuple(sum(w * p[c] for w, p in zip(masks[m], ring)) for c in range(len(ring[0])))
     return control, limits
+
+
+def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed: int = 0) -> tuple[float, float]:
+    """``(match, error)`` against OpenSubdiv at the dyadic points ``(i/2^L, j/2^L)`` of the patch.
+
+    The ring mesh gets random values; OpenSubdiv refines it ``level`` times and takes limits
+    (``Far::PrimvarRefiner::Limit``). Each lattice vertex of the toolkit's exact refinement is
+    found among OpenSubdiv's vertices by its position (``match``: the largest distance, which
+    must be at rounding level), and ``evaluator`` (a float64
+    :class:`~symdecomp.analysis.evaluation.PatchEvaluator`) is compared with OpenSubdiv's limit
+    there (``error``: the largest coordinate difference). Needs the OpenSubdiv bridge.
+    """
+    import random
+
+    import numpy as np
+
+    from symdecomp.verify.opensubdiv import osd_limit_points
+
+    rnd = random.Random(seed)
+    mesh, vid, columns = patch_mesh(n, lambda s, u, v: tuple(Fraction(rnd.randint(-2**20, 2**20), 2**20) for _ in range(3)))
+    refined, ids = refined_lattice(mesh, vid, scheme, level)
+    points, limits = osd_limit_points(mesh, level)
+    keys = sorted(ids)
+    ours = np.array([[float(x) for x in refined.values[ids[k]]] for k in keys])
+    dist = ((ours[:, None, :] - points[None, :, :]) ** 2).sum(axis=2)
+    nearest = dist.argmin(axis=1)
+    match = float(np.sqrt(dist[np.arange(len(keys)), nearest]).max())
+    control = np.array([[float(x) for x in mesh.values[c]] for c in columns])
+    u = np.array([a / 2**level for a, _ in keys])
+    v = np.array([b / 2**level for _, b in keys])
+    got = evaluator.evaluate(control, u, v)["point"]
+    return match, float(np.abs(got - limits[nearest]).max())

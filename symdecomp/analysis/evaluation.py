@@ -152,7 +152,7 @@ class PatchEvaluator:
         out = {}
         for key, (ds, dt) in _DERIVATIVES.items():
             basis = np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(u.size, 16)
-            g = np.empty((u.size, self.values.size))
+            g = np.empty((u.size, self.values.size), dtype=np.result_type(self.phi, self.values))
             for kk in range(3):
                 sel = k == kk
                 g[sel] = basis[sel] @ self.phi[kk].T

@@ -30,7 +30,6 @@ caller; :func:`certified_eigendata` raises it until every entry rounds correctly
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -38,12 +37,16 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.algebra.rounding import round_ball
+from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
+from symdecomp.algebra.small_eigen import NotDiagonalizableError, arb_value as _arb, biorthogonal as _biorthogonal
+from symdecomp.algebra.small_eigen import fmpq_value as _fq, rational_eigen as _rational_eigen
 from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
 
 __all__ = [
-    "NotDiagonalizableError",
+    "NotDiagonalizableError",  # from symdecomp.algebra.small_eigen
     "PrecisionError",
     "PatchEigenData",
     "RoundedEigenData",
@@ -56,16 +59,8 @@ __all__ = [
 arb, acb = flint.arb, flint.acb
 
 
-class NotDiagonalizableError(SymdecompError):
-    """The patch matrix has no basis of eigenvectors at this valence (or complex eigenvalues)."""
-
-
 class PrecisionError(SymdecompError):
     """A ball stayed too wide to decide a sign or round correctly, up to the precision cap."""
-
-
-class _NeedPrecision(Exception):
-    pass
 
 
 @dataclass(frozen=True)
@@ -98,18 +93,6 @@ class RoundedEigenData:
 # exact helpers
 
 
-def _fq(x) -> flint.fmpq:
-    x = Fraction(x)
-    return flint.fmpq(x.numerator, x.denominator)
-
-
-def _arb(x) -> arb:
-    if isinstance(x, arb):
-        return x
-    x = Fraction(x)
-    return arb(x.numerator) / x.denominator
-
-
 def _trig_pi(m: int, den: int, fn: str) -> arb:
     """``cos`` or ``sin`` of ``pi m/den``, exact when the value is rational."""
     q = Fraction(m, den) % 2
@@ -121,81 +104,6 @@ def _trig_pi(m: int, den: int, fn: str) -> arb:
     if q in exact:
         return _arb(exact[q])
     return arb.cos_pi_fmpq(_fq(q))
-
-
-def _rational_eigen(m: list[list[Fraction]]):
-    """Exact eigen-decomposition of a small rational matrix: ``[(value, right basis, left basis)]``.
-
-    Values of irrational factors come as Arb balls with Arb eigenvectors (sizes 2 and 3 only).
-    Raises :class:`NotDiagonalizableError` if a null space is smaller than the multiplicity.
-    """
-    size = len(m)
-    mat = flint.fmpq_mat(size, size, [_fq(x) for row in m for x in row])
-    _, factors = mat.charpoly().factor()
-    out = []
-    for poly, mult in factors:
-        if poly.degree() == 1:
-            lam = Fraction(int(-poly[0].p) * int(poly[1].q), int(poly[0].q) * int(poly[1].p))
-            shifted = [[m[i][j] - (lam if i == j else 0) for j in range(size)] for i in range(size)]
-            right, left = _nullspace(shifted), _nullspace([list(r) for r in zip(*shifted)])
-            if len(right) != mult:
-                raise NotDiagonalizableError(f"eigenvalue {lam} has multiplicity {mult} but {len(right)} eigenvectors")
-            out.append((lam, right, left))
-            continue
-        if mult != 1:
-            raise NotDiagonalizableError(f"repeated irrational eigenvalues (factor {poly}) are not supported")
-        for root, _ in poly.complex_roots():
-            if not root.imag.contains(0):
-                raise NotDiagonalizableError(f"complex eigenvalue {root}: the data file holds real eigenvalues only")
-            lam = root.real
-            shifted = [[_arb(m[i][j]) - (lam if i == j else 0) for j in range(size)] for i in range(size)]
-            out.append((lam, [_adjugate_null(shifted)], [_adjugate_null([list(r) for r in zip(*shifted)])]))
-    return out
-
-
-def _nullspace(m: list[list[Fraction]]) -> list[list[Fraction]]:
-    rows, cols = len(m), len(m[0])
-    r, rank = flint.fmpq_mat(rows, cols, [_fq(x) for row in m for x in row]).rref()
-    pivots, basis = [], []
-    for i in range(rank):
-        pivots.append(next(j for j in range(cols) if r[i, j] != 0))
-    for free in (j for j in range(cols) if j not in pivots):
-        v = [Fraction(0)] * cols
-        v[free] = Fraction(1)
-        for i, p in enumerate(pivots):
-            v[p] = -Fraction(int(r[i, free].p), int(r[i, free].q))
-        basis.append(v)
-    return basis
-
-
-def _adjugate_null(m: list[list[arb]]) -> list[arb]:
-    """A null vector of a rank-deficient 2 x 2 or 3 x 3 Arb matrix: its largest adjugate column."""
-    size = len(m)
-    if size == 2:
-        cands = [[m[0][1], -m[0][0]], [m[1][1], -m[1][0]]]
-    elif size == 3:
-        cands = []
-        for a, b in ((0, 1), (0, 2), (1, 2)):
-            u, v = m[a], m[b]
-            cands.append([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]])
-    else:
-        raise NotDiagonalizableError(f"irrational eigenvalues of a {size} x {size} rational block are not supported")
-    best = max(cands, key=lambda c: sum(abs(float(x.mid())) for x in c))
-    if all(x.contains(0) for x in best):
-        raise _NeedPrecision
-    return best
-
-
-def _biorthogonal(right: list, left: list, scale) -> list:
-    """Rescale the left basis so that ``scale * (left_i . right_j) = delta_ij`` (exact or Arb)."""
-    if len(right) == 1:
-        dot = sum((a * b for a, b in zip(left[0], right[0])), 0) * scale
-        if isinstance(dot, arb) and dot.contains(0):
-            raise _NeedPrecision
-        return [[y / dot for y in left[0]]]
-    gram = flint.fmpq_mat(len(left), len(right), [_fq(sum(a * b for a, b in zip(l_, r)) * scale) for l_ in left for r in right])
-    g = gram.inv()
-    return [[sum((Fraction(int(g[i, k].p), int(g[i, k].q)) * left[k][c] for k in range(len(left))), Fraction(0)) for c in range(len(left[0]))] for i in range(len(left))]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -460,42 +368,6 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
 # ---------------------------------------------------------------------------------------------
 # correct rounding
 
-_TINY = None  # 2^-1075 as an Arb number, made on first use
-_INF = math.inf
-
-
-def _round_slow(x: arb) -> float | None:
-    global _TINY
-    if x.contains(0):
-        if _TINY is None:
-            _TINY = arb(2) ** -1075
-        return 0.0 if abs(x) < _TINY else None
-    m = float(x.mid())
-    for c in (m, math.nextafter(m, _INF), math.nextafter(m, -_INF)):
-        below, above = math.nextafter(c, -_INF), math.nextafter(c, _INF)
-        if math.isfinite(below) and math.isfinite(above):
-            d = x - arb(c)
-            if d > (arb(below) - arb(c)) / 2 and d < (arb(above) - arb(c)) / 2:
-                return c
-    return None
-
-
-def round_ball(x: arb) -> float | None:
-    """The float64 nearest to every point of the ball ``x`` (ties to even), or None if that differs.
-
-    A candidate ``m`` (the midpoint converted to float) is accepted when the whole ball lies
-    strictly between the midpoints to its two neighbours (certified Arb comparisons); otherwise
-    its neighbours are tried, and a ball around 0 rounds to 0.0 inside ``(-2^-1075, 2^-1075)``.
-
-    >>> round_ball(arb(1) / 3) == 1 / 3, round_ball(arb("0.5 +/- 0.1"))
-    (True, None)
-    """
-    m = float(x)
-    if m != 0.0 and 2.0**-1020 < abs(m) < 2.0**1020:
-        d = x - m
-        if d > (math.nextafter(m, -_INF) - m) / 2 and d < (math.nextafter(m, _INF) - m) / 2:
-            return m
-    return _round_slow(x)
 
 
 def _round_all(data: PatchEigenData) -> RoundedEigenData | None:

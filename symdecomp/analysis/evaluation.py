@@ -18,10 +18,16 @@ Two arithmetics, one formula: :class:`PatchEvaluator` holds numpy float64 arrays
 file, vectorized over many parameters) or numpy object arrays of mpmath numbers at any
 precision (from the Arb balls, :meth:`PatchEvaluator.exact`).
 
+Affine invariance as a check: equal control points give that point everywhere.
+
 >>> import numpy as np
 >>> from symdecomp.schemes.scheme import catmull_clark
->>> ev = PatchEvaluator.exact(catmull_clark(), 4, dps=30)
->>> grid = [(a, b) for b in (-1, 0, 1, 2) for a in (-1, 0, 1, 2)]
+>>> from symdecomp.analysis.eigendata import certified_eigendata
+>>> cc = catmull_clark()
+>>> ev = PatchEvaluator.from_rounded(cc, certified_eigendata(cc, 7)[1])
+>>> out = ev.evaluate(np.ones((22, 1)), [0.3, 0.01], [0.7, 0.02])
+>>> np.allclose(out["point"], 1), np.allclose(out["du"], 0)
+(True, True)
 """
 
 from __future__ import annotations
@@ -31,7 +37,7 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, certified_eigendata, patch_eigendata
+from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch_eigendata
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.schemes.scheme import Scheme

@@ -391,11 +391,8 @@ def _combine(terms: Iterable[tuple[object, tuple]]) -> tuple:
 
 
 def point_stencils(mesh: QuadMesh, rules: MeshRules) -> tuple[dict, dict, dict]:
-    """``(face, edge, vertex)`` stencils of the refined points: the one place the mesh rules are applied.
-
-    Keys: old face index, ``frozenset({u, v})`` of an edge with two faces, interior vertex id;
-    values: tuples of ``(weight, old vertex id)``.
-    """
+    """``(face, edge, vertex)`` stencils ``{key: ((weight, old vertex id), ...)}`` of the refined points
+    (keys: face index, ``frozenset({u, v})`` of an edge with two faces, interior vertex id)."""
     fc = _as_weight(rules.face_corner)
     ee, es = _as_weight(rules.edge_end), _as_weight(rules.edge_side)
     face = {fi: tuple((fc, x) for x in f) for fi, f in enumerate(mesh.faces)}
@@ -410,27 +407,21 @@ def point_stencils(mesh: QuadMesh, rules: MeshRules) -> tuple[dict, dict, dict]:
         # left face (u, v, x, y), right face (v, u, p, q): the ends and the four side corners.
         sides = (fl[(kl + 2) % 4], fl[(kl + 3) % 4], fr[(kr + 2) % 4], fr[(kr + 3) % 4])
         edge[key] = ((ee, u), (ee, v)) + tuple((es, x) for x in sides)
-    vertex, weights_cache = {}, {}
-    for v in mesh.vertices():
-        if not mesh.is_interior(v):
-            continue
-        o, a, b = mesh.one_ring(v)
-        m = len(a)
-        if m not in weights_cache:
-            weights_cache[m] = tuple(_as_weight(w) for w in rules.vertex_weights(m))
-        wc, wa, wb = weights_cache[m]
+    vertex, cache = {}, {}
+    for v in (v for v in mesh.vertices() if mesh.is_interior(v)):
+        _, a, b = mesh.one_ring(v)
+        if len(a) not in cache:
+            cache[len(a)] = tuple(_as_weight(w) for w in rules.vertex_weights(len(a)))
+        wc, wa, wb = cache[len(a)]
         vertex[v] = ((wc, v),) + tuple((wa, x) for x in a) + tuple((wb, x) for x in b)
     return face, edge, vertex
 
 
 def refinement_matrix(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules, columns: Sequence[int], rows: Sequence) -> list[dict]:
-    """The exact matrix taking the values at ``columns`` (old vertex ids) to the refined points ``rows``.
-
-    A row names a refined point by what it comes from: a vertex id (vertex point), a 2-set of
-    ids (edge point) or a face's 4 corners (face point); it is returned sparse, as
-    ``{column index: weight}``. Raises :class:`InvalidMeshError` when a point depends on a vertex
-    outside ``columns`` or is not computable in ``mesh``.
-    """
+    """The exact matrix, sparse rows ``{column index: weight}``, from the values at ``columns`` (old ids)
+    to the refined points ``rows``, each named by a vertex id, a 2-set of ids (edge) or a face's 4
+    corners. Raises :class:`InvalidMeshError` for a point outside ``mesh`` or depending on a vertex
+    outside ``columns``."""
     rules = scheme_or_rules if isinstance(scheme_or_rules, MeshRules) else mesh_rules(scheme_or_rules)
     face, edge, vertex = point_stencils(mesh, rules)
     face_by_corners = {frozenset(f): fi for fi, f in enumerate(mesh.faces)}
@@ -477,12 +468,8 @@ def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules) -> Refinement:
                 new_faces.append(quad)
     used = {x for f in new_faces for x in f}
     refined = QuadMesh(tuple(new_faces), {i: val for i, val in new_values.items() if i in used})
-    return Refinement(
-        refined,
-        MappingProxyType({k: i for k, i in vertex_point.items() if i in used}),
-        MappingProxyType({k: i for k, i in edge_point.items() if i in used}),
-        MappingProxyType({k: i for k, i in face_point.items() if i in used}),
-    )
+    kept = (MappingProxyType({k: i for k, i in m.items() if i in used}) for m in (vertex_point, edge_point, face_point))
+    return Refinement(refined, *kept)
 
 
 def central_rings(

@@ -31,7 +31,7 @@ import numpy as np  # noqa: E402
 from symdecomp.analysis.eigendata import rounded_eigendata  # noqa: E402
 from symdecomp.analysis.evaluation import PatchEvaluator  # noqa: E402
 from symdecomp.output.evaldata import binary_bytes, write_atomic  # noqa: E402
-from symdecomp.schemes.patch import patch_matrices  # noqa: E402
+from symdecomp.verify.patch_eval import baseline_error, numpy_baseline  # noqa: E402
 from symdecomp.schemes.scheme import catmull_clark  # noqa: E402
 
 TARGET_SECONDS = 60.0
@@ -44,31 +44,13 @@ def certified_file(scheme, nmax: int, jobs: int, folder: str):
     return time.perf_counter() - start, rounded
 
 
-def baseline(scheme, n: int):
-    """numpy float64: eigenvalues, V^-1 and the sub-patch tables of the patch matrix (complex, as eig gives them)."""
-    p = patch_matrices(scheme, n)
-    size = p.size
-    ext = np.array([[float(p.extended[i, j]) for j in range(size)] for i in range(size + 9)])
-    start = time.perf_counter()
-    values, vectors = np.linalg.eig(ext[:size])  # complex: repeated eigenvalues get complex bases
-    inverse = np.linalg.inv(vectors)
-    beyond = ext @ vectors
-    phi = np.stack([beyond[list(rows)].T for rows in p.subpatches])
-    return time.perf_counter() - start, values, inverse, phi
-
-
-def baseline_errors(scheme, rounded, rng):
+def baseline_errors(scheme, rounded):
     seconds, worst_value, worst_point = 0.0, 0.0, 0.0
     for r in rounded:
-        spent, values, inverse, phi = baseline(scheme, r.n)
+        spent, base = numpy_baseline(scheme, r.n)
         seconds += spent
-        worst_value = max(worst_value, float(np.abs(np.sort_complex(values) - np.sort(r.values)).max()))
-        certified = PatchEvaluator.from_rounded(scheme, r)
-        base = PatchEvaluator(r.n, values, inverse, phi, certified.position_mask, certified.tangent_masks)
-        control = rng.uniform(-1, 1, size=(r.values.size, 3))
-        u, v = rng.random(200), rng.random(200)
-        diff = base.evaluate(control, u, v)["point"].real - certified.evaluate(control, u, v)["point"]
-        worst_point = max(worst_point, float(np.abs(diff).max()))
+        worst_value = max(worst_value, float(np.abs(np.sort_complex(base.values) - np.sort(r.values)).max()))
+        worst_point = max(worst_point, baseline_error(PatchEvaluator.from_rounded(scheme, r), base, seed=r.n))
     return seconds, worst_value, worst_point
 
 
@@ -79,14 +61,13 @@ def main() -> int:
     args = parser.parse_args()
     ranges = (12, 24) if args.quick else (50, 128)
     scheme = catmull_clark()
-    rng = np.random.default_rng(0)
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, load {os.getloadavg()[0]:.1f}")
     with tempfile.TemporaryDirectory() as folder:
         for nmax in ranges:
             load = os.getloadavg()[0]
             wall, rounded = certified_file(scheme, nmax, args.jobs, folder)
             size = os.path.getsize(os.path.join(folder, f"cc{nmax}.dat"))
-            base_seconds, err_value, err_point = baseline_errors(scheme, rounded, rng)
+            base_seconds, err_value, err_point = baseline_errors(scheme, rounded)
             print(f"N = 3..{nmax}: certified file {wall:.1f} s ({args.jobs} processes, load {load:.1f} at the start), {size} bytes")
             print(f"  numpy eig baseline (eig, inv, tables; matrices given): {base_seconds:.2f} s; largest error: eigenvalues {err_value:.2e}, "
                   f"evaluated points {err_point:.2e}")

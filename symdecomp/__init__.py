@@ -10,22 +10,26 @@ ones above it in this list (``tests/test_layers.py`` checks it):
 ``algebra/``       no scheme knowledge: circulants and the Fourier matrix (Section 2,
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
-                   exact/interval evaluation of expressions (``compile``)
+                   exact/interval evaluation of expressions (``compile``), small exact
+                   eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``)
 ``schemes/``       a scheme as data (edge, face, vertex rules, ``scheme``), its subdivision
                    matrix (Eq. 13-16, ``scheme``; exact FLINT matrices, ``matrices``), whole quad
                    meshes refined by its rules (Section 3, ``mesh``), the 1-ring as a pair of
-                   polygons (Section 4, ``ring``)
+                   polygons (Section 4, ``ring``), Stam's (2N+8)-point patch matrix (``patch``)
 ``analysis/``      per-frequency matrices M_j and the Eq. 43 matrix (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
                    ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
                    (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
-                   ``support``), rings iterated step by step (``evolution``)
+                   ``support``), rings iterated step by step (``evolution``), the patch's
+                   certified eigen-data (``eigendata``) and exact evaluation (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
-                   (``certify``), OpenSubdiv (``oracle``, ``opensubdiv``)
+                   (``certify``), OpenSubdiv (``oracle``, ``opensubdiv``), dyadic limit
+                   positions for the evaluator (``patch_eval``)
 ``claims/``        the paper's claims, one module per section, and their registry
-``output/``        LaTeX (``latex``, one entry point ``aslatex``) and figures (``plotting``)
+``output/``        LaTeX (``latex``, one entry point ``aslatex``), figures (``plotting``), Stam's
+                   data file (``evaldata``)
 ``cli/``           the ``symdecomp`` command, one module per subcommand
 =================  ===========================================================================
 
@@ -75,6 +79,9 @@ from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.tuning import joint_obstruction, tune
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from symdecomp.analysis.support import Region, classify_support
+from symdecomp.schemes.patch import patch_matrices
+from symdecomp.analysis.eigendata import NotDiagonalizableError, certified_eigendata
+from symdecomp.analysis.evaluation import PatchEvaluator
 
 __version__ = "0.1.0"
 
@@ -141,6 +148,11 @@ __all__ = [
     "central_rings",
     "Region",
     "classify_support",
+    # exact evaluation near an extraordinary vertex (Stam)
+    "patch_matrices",
+    "certified_eigendata",
+    "NotDiagonalizableError",
+    "PatchEvaluator",
     # cross-checks against the full matrix
     "ClosedForms",
     "derived_closed_forms",

@@ -42,7 +42,7 @@ from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.schemes.scheme import Scheme
 
-__all__ = ["EvaluationError", "PatchEvaluator", "bspline_basis", "patch_order"]
+__all__ = ["EvaluationError", "PatchEvaluator", "bspline_basis", "patch_order", "patch_masks", "curvatures"]
 
 
 class EvaluationError(SymdecompError):
@@ -194,6 +194,20 @@ def _normals(du, dv):
         norms = np.sqrt((n * n).sum(axis=-1))
     with np.errstate(invalid="ignore", divide="ignore"):
         return n / norms[:, None]
+
+
+def patch_masks(scheme: Scheme, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The limit-position mask and the two tangent masks in the patch's order (float64, K entries)."""
+    return _masks(scheme, n, float)
+
+
+def curvatures(result: dict) -> tuple[np.ndarray, np.ndarray]:
+    """Gaussian and mean curvature from :meth:`PatchEvaluator.evaluate`'s derivatives (3D points)."""
+    du, dv, nrm = result["du"], result["dv"], result["normal"]
+    e, f, g = (du * du).sum(-1), (du * dv).sum(-1), (dv * dv).sum(-1)
+    l_, m, n_ = ((result[k] * nrm).sum(-1) for k in ("duu", "duv", "dvv"))
+    det = e * g - f * f
+    return (l_ * n_ - m * m) / det, (e * n_ - 2 * f * m + g * l_) / (2 * det)
 
 
 def _masks(scheme: Scheme, n: int, conv):

@@ -16,7 +16,7 @@ from symdecomp.schemes.mesh import QuadMesh, refine
 from symdecomp.schemes.patch import patch_mesh
 from symdecomp.schemes.scheme import Scheme
 
-__all__ = ["refined_lattice", "dyadic_limits"]
+__all__ = ["dyadic_limits", "numpy_baseline", "opensubdiv_dyadic_errors", "refined_lattice", "baseline_error"]
 
 
 def refined_lattice(mesh: QuadMesh, vid, scheme: Scheme, level: int):
@@ -91,3 +91,39 @@ def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed
     v = np.array([b / 2**level for _, b in keys])
     got = evaluator.evaluate(control, u, v)["point"]
     return match, float(np.abs(got - limits[nearest]).max())
+
+
+def numpy_baseline(scheme: Scheme, n: int):
+    """``(seconds, evaluator)``: the patch data from ``numpy.linalg.eig`` in float64, as others compute it.
+
+    Complex arrays (``eig`` gives complex bases for repeated eigenvalues); take the real part of
+    what the evaluator returns. ``seconds`` times ``eig``, ``inv`` and the tables only.
+    """
+    import time
+
+    import numpy as np
+
+    from symdecomp.analysis.evaluation import PatchEvaluator, patch_masks
+    from symdecomp.schemes.patch import patch_matrices
+
+    p = patch_matrices(scheme, n)
+    size = p.size
+    ext = np.array([[float(p.extended[i, j]) for j in range(size)] for i in range(size + 9)])
+    start = time.perf_counter()
+    values, vectors = np.linalg.eig(ext[:size])
+    inverse = np.linalg.inv(vectors)
+    beyond = ext @ vectors
+    phi = np.stack([beyond[list(rows)].T for rows in p.subpatches])
+    seconds = time.perf_counter() - start
+    return seconds, PatchEvaluator(n, values, inverse, phi, *patch_masks(scheme, n))
+
+
+def baseline_error(certified, baseline, samples: int = 200, seed: int = 0) -> float:
+    """Largest coordinate difference of the two evaluators' points at random parameters and control points."""
+    import numpy as np
+
+    rng = np.random.default_rng(seed)
+    control = rng.uniform(-1, 1, size=(certified.values.size, 3))
+    u, v = rng.random(samples), rng.random(samples)
+    diff = baseline.evaluate(control, u, v)["point"].real - certified.evaluate(control, u, v)["point"]
+    return float(np.abs(diff).max())

@@ -358,3 +358,46 @@ def test_findings_typeset_objects_as_math_and_words_as_text():
     tex = findings_latex(finding)
     assert r"\sqrt{5}" in tex and r"\lambda_{1}" in tex and r"50\%" in tex
     assert str(finding) == "at n = 3 the eigenvalue lambda_1 + sqrt(5)/4 exceeds 50% of it"
+
+
+# -- findings as mathematics ------------------------------------------------------------------
+
+#: ASCII mathematics that a finding must not print as text (its formulas are sympy objects).
+_ASCII_MATH = re.compile(r"lambda|omega|sqrt|\\textasciicircum|\*\*")
+_FINDING = re.compile(
+    r"(?:\\finding\{|\\textbf\{Status:\})(.*?)(?=\\textbf\{Derivation\.\}|\\claimheading|\\(?:sub)*section\{|\Z)", re.S
+)
+_MATH = re.compile(r"\\\[.*?\\\]|(?<!\\)\$.*?(?<!\\)\$", re.S)
+
+
+def _ascii_math_in_findings(files: dict[str, str]) -> list[str]:
+    """The words of the findings (evidence, counterexample, correction; math removed) that spell a formula in ASCII."""
+    found = []
+    for name, tex in sorted(files.items()):
+        for finding in _FINDING.findall(tex):
+            words = _MATH.sub(" ", finding)
+            found += ["%s: %s" % (name, m.group(0)) for m in _ASCII_MATH.finditer(words)]
+    return found
+
+
+def test_the_findings_of_the_registry_typeset_their_formulas(tmp_path):
+    """Issue 10: no lambda_, omega^ or sqrt( as text in the findings of the regenerated document."""
+    write_derivations(tmp_path)
+    files = {p.name: p.read_text(encoding="utf-8") for p in tmp_path.glob("*.tex")}
+    assert sum(len(_FINDING.findall(t)) for t in files.values()) >= 50  # every claim has one
+    assert _ascii_math_in_findings(files) == []
+
+
+def test_the_findings_check_catches_a_formula_written_as_text():
+    from symdecomp.claims import Claim, Text
+
+    lam1 = sp.Symbol("lambda_1")
+
+    def pair(result):
+        return (Claim("Eq. 997", "5.1", "t", "s", lambda: result), result)
+
+    plain = CheckResult(Status.REFUTED, "the ratio", counterexample="n = 4: lambda_1 = sqrt(5)/8 and omega^2 = -1")
+    typeset = CheckResult(Status.REFUTED, "the ratio", counterexample=Text("n = 4: ", sp.Eq(lam1, sp.sqrt(5) / 8)))
+    words = ("lambda", "sqrt", "omega", "\\textasciicircum")
+    assert _ascii_math_in_findings(derivation_files([pair(plain)])) == ["section-5-1.tex: " + w for w in words]
+    assert _ascii_math_in_findings(derivation_files([pair(typeset)])) == []

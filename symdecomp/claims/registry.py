@@ -34,6 +34,7 @@ from functools import lru_cache
 from typing import Callable
 
 import sympy as sp
+from sympy.printing.str import StrPrinter
 
 __all__ = [
     "Text",
@@ -63,6 +64,36 @@ class Status(str, enum.Enum):
         return self.value
 
 
+class _TextPrinter(StrPrinter):
+    """sympy's ``str`` printer, with relations and intervals written as in prose (``x = 1``, ``[0, 1)``)."""
+
+    def _print_Relational(self, expr):
+        op = "=" if expr.rel_op == "==" else expr.rel_op
+        return "%s %s %s" % (self._print(expr.lhs), op, self._print(expr.rhs))
+
+    def _print_MatrixBase(self, expr):
+        return "[%s]" % ", ".join("[%s]" % ", ".join(self._print(e) for e in row) for row in expr.tolist())
+
+    def _print_Derivative(self, expr):
+        variables = "".join(" d%s" % self._print(v) for v in expr.variables)
+        return "d%s/%s" % (self._print(expr.expr), variables.strip())
+
+    def _print_Product(self, expr, name="prod"):
+        limits = ", ".join("%s=%s..%s" % tuple(self._print(x) for x in lim) for lim in expr.limits)
+        return "%s_{%s} %s" % (name, limits, self.parenthesize(expr.function, 50))
+
+    def _print_Sum(self, expr):
+        return self._print_Product(expr, "sum")
+
+    def _print_Abs(self, expr):
+        return "|%s|" % self._print(expr.args[0])
+
+    def _print_Interval(self, expr):
+        left = "(" if expr.left_open else "["
+        right = ")" if expr.right_open else "]"
+        return "%s%s, %s%s" % (left, self._print(expr.start), self._print(expr.end), right)
+
+
 @dataclass(frozen=True, init=False)
 class Text:
     """Prose with mathematics in it: words (``str``) and computed objects (sympy), in order.
@@ -76,6 +107,8 @@ class Text:
     >>> x = sp.Symbol("x")
     >>> str(Text("the root ", sp.sqrt(x) / 2, " is simple"))
     'the root sqrt(x)/2 is simple'
+    >>> str(Text("where ", sp.Eq(x, 1, evaluate=False), " in ", sp.Interval.Ropen(0, 1)))
+    'where x = 1 in [0, 1)'
     """
 
     #: The words and objects, in reading order.
@@ -88,7 +121,7 @@ class Text:
         object.__setattr__(self, "parts", tuple(flat))
 
     def __str__(self) -> str:
-        return "".join(part if isinstance(part, str) else sp.sstr(part) for part in self.parts)
+        return "".join(part if isinstance(part, str) else _TextPrinter().doprint(part) for part in self.parts)
 
     def __bool__(self) -> bool:
         return bool(self.parts)

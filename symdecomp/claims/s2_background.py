@@ -8,7 +8,8 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import circ, generating_polynomial, mode_eigenvalue_derivation
 from symdecomp.algebra.polygons import decompose
-from symdecomp.claims.registry import CheckResult, Status, Step, claim
+from symdecomp.claims.notation import eq, j, listed, n, ne, omega_n
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 
 W = sp.Symbol("w")
 M = sp.Symbol("m", integer=True)
@@ -35,9 +36,13 @@ def _eq2_4() -> CheckResult:
     ok = not step.has(M) and modulus == 1
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "vertex m of v_j is omega_n^(jm): all on the unit circle, each obtained from the previous by the same rotation "
-        "omega_n^j, for every n and j (v_0 is a point; v_(n/2) for even n is a segment traversed back and forth)",
-        counterexample=None if ok else f"{step}, {modulus}",
+        Text(
+            "vertex ", M, " of ", sp.Symbol("v_j"), " is ", vertex, " = ", omega_n ** (j * M), ": all on the unit circle "
+            "(modulus ", modulus, "), each obtained from the previous by the same rotation ", step, " = ", omega_n**j,
+            ", for every ", n, " and ", j, " (", sp.Symbol("v_0"), " is a point; ", sp.Symbol("v_n/2"),
+            " for even ", n, " is a segment traversed back and forth)",
+        ),
+        counterexample=None if ok else Text("ratio ", step, ", modulus ", modulus),
         steps=(
             Step("Vertex $m$ of $v_j$:", vertex),
             Step("Ratio of consecutive vertices, free of $m$:", step),
@@ -60,16 +65,24 @@ def _eq5() -> CheckResult:
     general = geometric.args[-1][0] if isinstance(geometric, sp.Piecewise) else geometric
     reduced = sp.simplify(general.subs(W**n, 1))
     if reduced != 0:
-        return CheckResult(Status.REFUTED, f"sum of w^m does not vanish: {reduced}", counterexample=str(reduced))
+        return CheckResult(
+            Status.REFUTED, Text("the sum of ", W**M, " does not vanish: ", reduced), counterexample=Text(reduced)
+        )
     last = 12
+    F_n = sp.Symbol("F_n", commutative=False)
     for size in range(3, last + 1):
         P = _random_polygon(size, seed=size)
         if decompose(P).reconstruct() != P:
-            return CheckResult(Status.REFUTED, f"reconstruction failed at n = {size}", counterexample=f"n = {size}: {P.tolist()}")
+            return CheckResult(
+                Status.REFUTED, Text("reconstruction failed at ", eq(n, size)), counterexample=Text(eq(n, size), ": ", P)
+            )
     return CheckResult(
         Status.PROVED,
-        "F_n conj(F_n)^T = n I for every n (geometric sum with w^n = 1, w != 1), so the v_j are a basis; "
-        f"exact reconstruction of random rational polygons checked for n = 3..{last}",
+        Text(
+            eq(F_n * sp.adjoint(F_n), n * sp.Symbol("I", commutative=False)), " for every ", n,
+            " (geometric sum with ", eq(W**n, 1), ", ", ne(W, 1), "), so the ", sp.Symbol("v_j"), " are a basis; "
+            "exact reconstruction of random rational polygons checked for ", n, f" from 3 to {last}",
+        ),
         steps=(
             Step("Entry $(k, l)$ of $F_n \\overline{F_n}^T$ is a geometric sum in $w = \\omega_n^{k-l}$:", geometric, sp.Sum(W**M, (M, 0, n - 1))),
             Step("For $k \\ne l$, $w \\ne 1$ and $w^n = 1$, so it vanishes:", reduced, general),
@@ -91,7 +104,7 @@ def _eq6() -> CheckResult:
     two_regular = sp.exp(sp.I * PHI) * (r + sp.I * s) / 2 + sp.exp(-sp.I * PHI) * (r - sp.I * s) / 2
     identity = sp.simplify(sp.expand((two_regular - (r * sp.cos(PHI) - s * sp.sin(PHI))).rewrite(sp.cos)))
     if identity != 0:
-        return CheckResult(Status.REFUTED, "identity fails", counterexample=str(identity))
+        return CheckResult(Status.REFUTED, "identity fails", counterexample=Text("the difference ", identity))
     import mpmath
 
     worst = mpmath.mpf(0)
@@ -106,12 +119,20 @@ def _eq6() -> CheckResult:
                     worst = max(worst, max(abs(p[k] + q[k] - Q[m_, k]) for k in range(3)))
         ok = worst < mpmath.mpf(10) ** -45
     if not ok:
-        return CheckResult(Status.REFUTED, f"pair reconstruction off by {worst}", counterexample="see evidence")
+        return CheckResult(
+            Status.REFUTED,
+            Text("pair reconstruction off by ", sp.Float(worst, 15)),
+            counterexample=Text("a vertex of a random polygon rebuilt from its pairs off by ", sp.Float(worst, 15)),
+        )
+    R_, I_ = sp.Symbol("R"), sp.Symbol("I")
     return CheckResult(
         Status.PROVED,
-        "the real pair R cos(phi) - I sin(phi) lies in span(R, I) and equals the regular polygons of amplitudes "
-        "(r + i s)/2, (r - i s)/2 in one orthonormal frame of that plane (identity in phi); "
-        f"random polygons n = 3..10 rebuilt from the pairs to 45 digits (max deviation {mpmath.nstr(worst, 3)})",
+        Text(
+            "the real pair ", pair, " lies in ", sp.Function("span")(R_, I_), " and equals the regular polygons of "
+            "amplitudes ", listed(((r + sp.I * s) / 2, (r - sp.I * s) / 2)), " in one orthonormal frame of that plane "
+            "(identity in ", PHI, "); random polygons of ", n, " = 3 to 10 vertices rebuilt from the pairs to 45 digits "
+            "(max deviation ", sp.Float(worst, 3), ")",
+        ),
         steps=(
             Step("The pair $z_j v_j + z_{n-j} v_{n-j}$ of a real polygon, with $R = 2\\,\\mathrm{Re}\\,z_j$, $I = 2\\,\\mathrm{Im}\\,z_j$:", pair),
             Step("In an orthonormal frame of $\\mathrm{span}(R, I)$, with $r, s$ the complex coordinates of $R, I$:", two_regular),
@@ -134,8 +155,10 @@ def _prop21() -> CheckResult:
     row, eig = mode_eigenvalue_derivation(coeffs)
     expected = generating_polynomial(coeffs)
     if sp.expand(eig - expected) != 0 or eig.has(sp.Symbol("i", integer=True)):
-        return CheckResult(Status.REFUTED, "eigenvalue depends on the row", counterexample=str(eig))
+        return CheckResult(Status.REFUTED, "eigenvalue depends on the row", counterexample=Text("the eigenvalue ", eig))
     last = 10
+    i_, p_ = sp.Symbol("i"), sp.Function("p")
+    C_, v_ = sp.Symbol("C", commutative=False), sp.Symbol("v", commutative=False)
     for size in range(3, last + 1):
         cs = sp.symbols(f"c0:{size}")
         C = circ(cs)
@@ -143,11 +166,17 @@ def _prop21() -> CheckResult:
         p = sum(cs[k] * omega**k for k in range(size))
         residual = (C * v - p * v).applyfunc(lambda e: sp.rem(sp.expand(e), omega**size - 1, omega))
         if any(x != 0 for x in residual):
-            return CheckResult(Status.REFUTED, f"fails at n = {size}", counterexample=f"n = {size}")
+            return CheckResult(
+                Status.REFUTED, Text("fails at ", eq(n, size)), counterexample=Text(eq(n, size), ": residual ", residual)
+            )
     return CheckResult(
         Status.PROVED,
-        "row i of C v_j is omega^(ij) p(omega^j) at a symbolic row i (any n > band width, symbolic c_k); "
-        f"general symbolic circulants of order 3..{last}: C v - p(w) v = 0 modulo w^n - 1",
+        Text(
+            "row ", i_, " of ", C_ * sp.Symbol("v_j", commutative=False), " is ", omega_n ** (i_ * j) * p_(omega_n**j),
+            " at a symbolic row ", i_, " (any ", n, " larger than the band width, symbolic ", sp.Symbol("c_k"),
+            f"); general symbolic circulants of order 3 to {last}: ",
+            eq(C_ * v_ - p_(W) * v_, 0), " modulo ", W**n - 1,
+        ),
         steps=(
             Step("Row $i$ of $C v_j$ for a circulant with diagonals $-2..2$, $\\omega = \\omega_n^j$:", row),
             Step("Divided by $\\omega^i$ it is free of $i$: the generating polynomial (Eq. 9)", eig, sp.Symbol("p(omega)")),

@@ -17,7 +17,9 @@ import sympy as sp
 from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.analysis.support import Region, classify_support, support_relation
-from symdecomp.claims.registry import CheckResult, Status, Step, claim
+from symdecomp.claims.notation import eq, gt
+from symdecomp.claims.notation import n as N
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 
 #: Valences the exact checks run for (kept small enough for seconds).
 SYMMETRY_VALENCES = (3, 10)
@@ -263,14 +265,18 @@ def _cc_support() -> CheckResult:
             c0.limit_values[opposite],
         )
     )
+    phi_P = sp.Function("phi_P")
     return CheckResult(
         Status.VERIFIED,
-        f"valences {lo}..{hi}: inside = the closed 1-ring (2n+1 vertices), boundary = the 4n vertices at ring "
-        "distance 2 (the boundary of the 2-ring), ring 3 outside; sector tests unchanged over 1-2 levels of "
-        f"exact refinement of e_P, inside exactly where phi_P(Q) > 0; also every vertex of the cube refined "
-        f"once and twice ({checked}). The statement presupposes a 2-ring that is a disk: on the unrefined cube "
-        f"(2-ring = whole surface) the corner opposite P is {c0.regions[opposite].value} the support, "
-        "phi_P = 0 there, not in the 1-ring",
+        Text(
+            f"valences {lo} to {hi}: inside = the closed 1-ring (", 2 * N + 1, " vertices), boundary = the ", 4 * N,
+            " vertices at ring distance 2 (the boundary of the 2-ring), ring 3 outside; sector tests unchanged over 1-2 "
+            "levels of exact refinement of ", sp.Symbol("e_P"), ", inside exactly where ", gt(phi_P(sp.Symbol("Q")), 0),
+            f"; also every vertex of the cube refined once and twice ({checked}). The statement presupposes a 2-ring "
+            f"that is a disk: on the unrefined cube (2-ring = whole surface) the corner opposite P is "
+            f"{c0.regions[opposite].value} the support, ", eq(phi_P(sp.Symbol("Q")), c0.limit_values[opposite]),
+            " there, not in the 1-ring",
+        ),
         steps=tuple(steps),
         valences=SUPPORT_VALENCES,
     )

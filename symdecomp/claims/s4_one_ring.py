@@ -9,7 +9,8 @@ import sympy as sp
 from symdecomp.analysis.frequency import frequency_zero_matrix, per_frequency_matrix
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha, beta, n, omega
-from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims.notation import A, B, eq, listed, ne, omega_2n, omega_n, tup
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 
 R = sp.Rational
 I_ROW = sp.Symbol("i", integer=True)
@@ -102,11 +103,17 @@ def _eq10_11() -> CheckResult:
         ring = OneRing.from_points(pt(), [pt() for _ in range(size)], [pt() for _ in range(size)])
         d = one_ring_decomposition(ring)
         if d.polygon.reconstruct() != sp.Matrix(ring.polygon()):
-            return CheckResult(Status.REFUTED, f"reconstruction fails at n = {size}", counterexample=f"n = {size}")
+            return CheckResult(
+                Status.REFUTED,
+                Text("reconstruction fails at ", eq(n, size)),
+                counterexample=Text(eq(n, size), ": the 1-ring ", sp.Matrix(ring.polygon())),
+            )
     return CheckResult(
         Status.PROVED,
-        "Eq. 11 is Eq. 5 for the 2n-gon (proved for every size); random rational 1-rings rebuilt exactly from their "
-        f"2n components for n = 3..{last}",
+        Text(
+            "Eq. 11 is Eq. 5 for the 2n-gon (proved for every size); random rational 1-rings rebuilt exactly from their ",
+            2 * n, " components for ", n, f" from 3 to {last}",
+        ),
     )
 
 
@@ -123,8 +130,11 @@ def _eq12_13() -> CheckResult:
     diff = sp.simplify(a_ij - regular)
     return CheckResult(
         Status.PROVED if diff == 0 else Status.REFUTED,
-        "vertex 2i of v_j (2n-gon) is omega_2n^(2ij) = omega_n^(ij): A^j = z_j v_(j mod n), a regular n-gon, for every n and j",
-        counterexample=None if diff == 0 else str(diff),
+        Text(
+            "vertex ", 2 * I_ROW, " of ", sp.Symbol("v_j"), " (2n-gon) is ", eq(omega_2n ** (2 * I_ROW * J), omega_n ** (I_ROW * J)),
+            ": ", eq(A(J), sp.Symbol("z_j") * sp.Symbol("v_j mod n", commutative=False)), ", a regular n-gon, for every ", n, " and ", J,
+        ),
+        counterexample=None if diff == 0 else Text("the difference ", diff),
         steps=(Step("$a_i^j$ is vertex $2i$ of $z_j v_j$:", a_ij), Step("which is vertex $i$ of $z_j v_j^{(n)}$:", regular)),
     )
 
@@ -156,7 +166,7 @@ def _eq14_15() -> CheckResult:
         Status.PROVED if ok else Status.REFUTED,
         "Catmull-Clark's face point (mean of the face) and edge point (mean of the edge's ends and its two face points), "
         "composed as shift-operator polynomials for every n, give the printed rules, which are the package's scheme data",
-        counterexample=None if ok else "see steps",
+        counterexample=None if ok else Text("the rules differ from the printed ones (see the steps)"),
         steps=(
             Step("Face point of $(O, a_i, b_i, a_{i+1})$ as $(w_O, A(\\omega), B(\\omega))$:", face_i.as_matrix()),
             Step("Edge point of $(O, a_i)$:", edge_i.as_matrix()),
@@ -179,13 +189,21 @@ def _eq16() -> CheckResult:
     if printed_sum == 0:
         return CheckResult(Status.PROVED, "the printed rule is affine")
     example = {n: 3, alpha: standard.each_a.subs(n, 3), beta: standard.each_b.subs(n, 3)}
+    O, i = sp.Symbol("O"), sp.Symbol("i")
     return CheckResult(
         Status.CORRECTED,
-        f"as printed the weights sum to 1 + {printed_sum}, so the rule is not affine (not translation invariant) "
-        f"unless alpha + beta = 0; with weight 1 - n alpha - n beta on O it is, and gives standard Catmull-Clark's {std_center}",
-        counterexample=f"n = 3 with the standard weights alpha = 1/6, beta = 1/36: the printed weights sum to "
-        f"{sp.expand((1 - alpha - beta + n * alpha + n * beta).subs(example))}",
-        correction="O -> (1 - n*alpha - n*beta) O + alpha sum_i a_i + beta sum_i b_i",
+        Text(
+            "as printed the weights sum to ", 1 + sp.UnevaluatedExpr(printed_sum), ", so the rule is not affine (not "
+            "translation invariant) unless ", eq(alpha + beta, 0), "; with weight ", corrected_center, " on O it is, and "
+            "gives standard Catmull-Clark's ", std_center,
+        ),
+        counterexample=Text(
+            eq(n, 3), " with the standard weights ", eq(alpha, example[alpha]), ", ", eq(beta, example[beta]),
+            ": the printed weights sum to ", sp.expand((1 - alpha - beta + n * alpha + n * beta).subs(example)),
+        ),
+        correction=Text(
+            O, " becomes ", corrected_center * O + alpha * sp.Sum(sp.Symbol("a_i"), (i, 0, n - 1)) + beta * sp.Sum(sp.Symbol("b_i"), (i, 0, n - 1)),
+        ),
         steps=(
             Step("Sum of the printed weights minus one:", printed_sum),
             Step("Sum of the corrected weights:", corrected_sum),
@@ -211,7 +229,9 @@ def _eq17_21() -> CheckResult:
     sequential = _then_b(sequential, EQ21)
     differs = not is_zero(sequential.as_matrix() - face.as_matrix())
     if not (is_zero(da) and is_zero(db)):
-        return CheckResult(Status.REFUTED, "the staged rules do not compose to Eq. 14-15", counterexample=f"{da}, {db}")
+        return CheckResult(
+            Status.REFUTED, "the staged rules do not compose to Eq. 14-15", counterexample=Text("differences ", da, ", ", db)
+        )
     return CheckResult(
         Status.PROVED,
         "as shift-operator polynomials (valid for every n): Eq. 17 -> 18 -> 19 gives Eq. 14 and Eq. 20 -> 21 gives "
@@ -247,12 +267,17 @@ def _prop41() -> CheckResult:
     free_of_row = not any(r.has(I_ROW) for r in rows)
     matches = is_zero(sp.Matrix(rows) - per_frequency_matrix(cc) * sp.Matrix([X, Y]))
     ok = free_of_row and matches
+    v_k, z_ = sp.Symbol("v_k", commutative=False), sp.Symbol("z")
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "for every n and every frequency with omega != 1 the rules map (X v_k, Y v_k) to (X' v_k, Y' v_k) = M_k (X, Y) "
-        "(symbolic row i): A^j and B^j stay complex multiples of the same z v_k, so they lie in planes parallel to "
-        "span(Re z, Im z); the centres move along the line of Proposition 4.3",
-        counterexample=None if ok else str(rows),
+        Text(
+            "for every ", n, " and every frequency with ", ne(omega, 1), " the rules map ", tup(X * v_k, Y * v_k), " to ",
+            tup(sp.Symbol("X'") * v_k, sp.Symbol("Y'") * v_k), " with ", tup(sp.Symbol("X'"), sp.Symbol("Y'")), " = ",
+            sp.Symbol("M_k"), " ", tup(X, Y), " (symbolic row ", I_ROW, "): ", A(J), " and ", B(J),
+            " stay complex multiples of the same ", z_ * v_k, ", so they lie in planes parallel to ",
+            sp.Function("span")(sp.re(z_), sp.im(z_)), "; the centres move along the line of Proposition 4.3",
+        ),
+        counterexample=None if ok else Text("the rows ", sp.Tuple(*rows)),
         steps=(
             Step("New $a_i$ and $b_i$ on the mode, divided by $\\omega^i$ ($O = 0$):", sp.Matrix(rows)),
             Step("which is $M_j (X, Y)^T$ (Eq. 33).", per_frequency_matrix(cc) * sp.Matrix([X, Y])),
@@ -281,9 +306,12 @@ def _prop42() -> CheckResult:
     ok = weights_real and is_zero(diff)
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "with real weights M_(n-k) = conj(M_k) for every n; a real 1-ring has z_(2n-j) = conj(z_j), so A^(2n-j) stays "
-        "the conjugate of A^j and their sum stays a real planar polygon (the coplanar pair of Eq. 6)",
-        counterexample=None if ok else str(diff),
+        Text(
+            "with real weights ", eq(sp.Symbol("M_n-k"), sp.conjugate(sp.Symbol("M_k"))), " for every ", n,
+            "; a real 1-ring has ", eq(sp.Symbol("z_2n-j"), sp.conjugate(sp.Symbol("z_j"))), ", so ", A("2n-j"),
+            " stays the conjugate of ", A(J), " and their sum stays a real planar polygon (the coplanar pair of Eq. 6)",
+        ),
+        counterexample=None if ok else Text("the difference ", diff),
         steps=(Step("$\\overline{M_j(\\omega)} - M_j(1/\\omega)$ on $|\\omega| = 1$:", diff),),
     )
 
@@ -303,10 +331,13 @@ def _prop43() -> CheckResult:
     printed_sum = sp.factor(sum(printed) - 1)
     return CheckResult(
         Status.PROVED if affine else Status.REFUTED,
-        "the rows of the recursion for (O, centre of A, centre of B) (Eq. 43, derived) sum to 1 for every n, alpha, "
-        "beta: new points are affine combinations of collinear points, so they stay on the line through O and the "
-        f"common initial centre. This needs the affine vertex rule: with Eq. 16 as printed the first row sums to 1 + {printed_sum}",
-        counterexample=None if affine else str(sums),
+        Text(
+            "the rows of the recursion for (O, centre of A, centre of B) (Eq. 43, derived) sum to 1 for every ", n, ", ",
+            alpha, ", ", beta, ": new points are affine combinations of collinear points, so they stay on the line "
+            "through O and the common initial centre. This needs the affine vertex rule: with Eq. 16 as printed the "
+            "first row sums to ", 1 + sp.UnevaluatedExpr(printed_sum),
+        ),
+        counterexample=None if affine else Text("the row sums ", tup(*sums)),
         steps=(Step("The recursion matrix (Eq. 43, derived from the rules):", E), Step("Its row sums:", sums)),
     )
 
@@ -325,8 +356,11 @@ def _eq24() -> CheckResult:
     ok = sp.simplify(ratio - expected) == 0
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "b_i^j / a_i^j = omega_2n^(j(2i+1)) / omega_2n^(2ij) = omega_2n^j for every i; it holds for every j = 0..2n-1, "
-        "not only j = 1..n-1",
-        counterexample=None if ok else str(ratio),
+        Text(
+            sp.Symbol("b_i^j") / sp.Symbol("a_i^j"), " = ", omega_2n ** (J * (2 * I_ROW + 1) - 2 * I_ROW * J),
+            " = ", omega_2n**J, " (derived: ", ratio, ") for every ", I_ROW,
+            "; it holds for every ", J, " from 0 to ", 2 * n - 1, ", not only from 1 to ", n - 1,
+        ),
+        counterexample=None if ok else Text("the ratio ", ratio),
         steps=(Step("$b_i^j / a_i^j$:", ratio),),
     )

@@ -11,11 +11,14 @@ from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
 from symdecomp.symbols import lam, n, omega
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims.notation import M as Mk
+from symdecomp.claims.notation import A, B, I, cos_j_theta, eq, ge, gt, j, lambda_1, lambda_2, lambda_12, le, listed, lt, ne, omega_2n, omega_n, tup
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
 
 R = sp.Rational
 C = COS
+S = sp.Symbol
 
 
 def _cc():
@@ -47,9 +50,12 @@ def _eq25_30() -> CheckResult:
     ok = all(c == 0 for c in checks)
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "with circ's convention (entry c_(s-r)), C_alpha is Eq. 17, C_beta (c_0 = c_(n-1) = 1/2) reads b_i and b_(i-1) as "
-        "in Eq. 18, C_gamma reads a_i and a_(i+1) as in Eq. 20; their eigenvalues from Prop. 2.1, for every n",
-        counterexample=None if ok else str(checks),
+        Text(
+            "with circ's convention (entry ", S("c_s-r"), "), ", S("C_alpha"), " is Eq. 17, ", S("C_beta"), " (",
+            S("c_0"), " = ", S("c_n-1"), " = ", R(1, 2), ") reads ", S("b_i"), " and ", S("b_i-1"), " as in Eq. 18, ",
+            S("C_gamma"), " reads ", S("a_i"), " and ", S("a_i+1"), " as in Eq. 20; their eigenvalues from Prop. 2.1, for every ", n,
+        ),
+        counterexample=None if ok else Text("the differences ", sp.Tuple(*checks)),
         steps=tuple(Step(f"$\\lambda^\\{k}_j$ (Prop. 2.1, $\\omega = \\omega_n^j$):", v) for k, v in eig.items()),
     )
 
@@ -74,7 +80,7 @@ def _eq31_32() -> CheckResult:
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
         "the printed combinations equal the staged rules composed, and the matrix derived from Eq. 14-15, for every n",
-        counterexample=None if ok else str(printed - derived),
+        counterexample=None if ok else Text("printed minus derived: ", printed - derived),
         steps=(Step("Eq. 31-32 as a matrix on $(A^j, B^j)$:", printed), Step("Derived from the scheme's rules:", derived)),
     )
 
@@ -93,8 +99,11 @@ def _eq33() -> CheckResult:
     ok = is_zero(diff)
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "M_j derived by applying Eq. 14-15 to the modes (X v_j, Y v_j) at a symbolic row equals the printed matrix, every n",
-        counterexample=None if ok else str(diff),
+        Text(
+            Mk("j"), " derived by applying Eq. 14-15 to the modes ", tup(S("X") * S("v_j"), S("Y") * S("v_j")),
+            " at a symbolic row equals the printed matrix, every ", n,
+        ),
+        counterexample=None if ok else Text("printed minus derived: ", diff),
         steps=(Step("Derived:", derived, sp.Symbol("M_j")), Step("Printed minus derived:", diff)),
     )
 
@@ -113,10 +122,14 @@ def _eq34() -> CheckResult:
     gap = sp.simplify(printed[0] - printed[1])
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        "both printed values are roots of det(lambda I - M_j) rewritten in c = cos(j theta), identically in c (every n, j); "
-        "they differ unless c = 0. The printed lambda_1 is the larger one only when cos(j theta) >= 0 (j <= n/2); "
-        "in general the dominant eigenvalue is 1/4 + c^2/8 + |c|/4 sqrt(1 + c^2/4)",
-        counterexample=None if ok else str(residuals),
+        Text(
+            "both printed values are roots of the characteristic polynomial ", ev.characteristic_polynomial,
+            " of ", Mk("j"), ", written in ", eq(C, cos_j_theta), ", identically in ", C, " (every ", n, ", ", j,
+            "); they differ unless ", eq(C, 0), ". The printed ", lambda_1, " is the larger one only when ",
+            ge(cos_j_theta, 0), " (", le(j, n / 2), "); in general the dominant eigenvalue is ",
+            eq(lambda_1, ev.dominant),
+        ),
+        counterexample=None if ok else Text("the printed values leave the residuals ", sp.Tuple(*residuals)),
         steps=(
             Step("$\\operatorname{tr} M_j$ in $c = \\cos j\\theta$:", ev.trace),
             Step("$\\det M_j$:", ev.determinant),
@@ -151,15 +164,27 @@ def _eq35_37() -> CheckResult:
     where = sp.solve(sp.Eq(lam, M[1, 1]), lam)
     at_half = per_frequency_matrix(cc).subs(omega, -1)
     if not ok:
-        return CheckResult(Status.REFUTED, "the vector is not an eigenvector", counterexample=str(remainder))
+        return CheckResult(Status.REFUTED, "the vector is not an eigenvector", counterexample=Text("the remainder ", remainder))
+    y_name = S("y")
+    quarter = I / 4
+    # the numerator of y at n = 4, j = 2, where omega = omega_4^2 = -1
+    numerator_4_2 = eq(M[1, 0].subs(omega, S("omega_4") ** 2), at_half[1, 0])
     return CheckResult(
         Status.CORRECTED,
-        "M_j (1, y)^T = lambda (1, y)^T reduces to 0 modulo the characteristic polynomial, whenever y is defined; "
-        "y is 0/0 where lambda = 1/4, i.e. cos(j theta) = 0: for even n and j = n/2 (and 3n/2) M_j = I/4 and "
-        "every vector is an eigenvector",
-        counterexample="n = 4, j = 2: M_2 = I/4, lambda_1 = lambda_2 = 1/4 and (1 + omega^2)/4 = 0, so the printed vector is (1, 0/0)",
-        correction="for cos(j pi/n) != 0 the eigenspace of lambda_(1,2) is spanned by (1, (1 + omega_n^j)/(4 lambda_(1,2) - 1)); "
-        "for cos(j pi/n) = 0, M_j = I/4",
+        Text(
+            Mk("j"), " ", tup(1, y_name), " = ", lam, " ", tup(1, y_name), " reduces to 0 modulo the characteristic polynomial, "
+            "whenever ", eq(y_name, y), " is defined; ", y_name, " is 0/0 where ", eq(lam, where[0]), ", i.e. ",
+            eq(cos_j_theta, 0), ": for even ", n, " and ", eq(j, n / 2), " (and ", 3 * n / 2, ") ", eq(Mk("j"), quarter),
+            " and every vector is an eigenvector",
+        ),
+        counterexample=Text(
+            eq(n, 4), ", ", eq(j, 2), ": ", eq(Mk(2), at_half), ", ", eq(lambda_1, lambda_2), " = ", at_half[1, 1], " and ",
+            numerator_4_2, ", so the printed vector is (1, 0/0)",
+        ),
+        correction=Text(
+            "for ", ne(cos_j_theta, 0), " the eigenspace of ", lambda_12, " is spanned by ",
+            tup(1, (1 + omega_n**j) / (4 * lambda_12 - 1)), "; for ", eq(cos_j_theta, 0), ", ", eq(Mk("j"), quarter),
+        ),
         steps=(
             Step("Second component from the second row of $M_j - \\lambda I$:", y, sp.Symbol("y")),
             Step("First row of $(M_j - \\lambda I)(1, y)^T$, numerator, reduced modulo the characteristic polynomial:", remainder),
@@ -194,16 +219,30 @@ def _det_condition(sign: int):
 def _eq38() -> CheckResult:
     lam_star, at, roots = _det_condition(+1)
     if roots != sp.FiniteSet(0):
-        return CheckResult(Status.REFUTED, f"the determinant vanishes for cos(j theta) in {roots}", counterexample=str(roots))
+        return CheckResult(
+            Status.REFUTED,
+            Text("the determinant vanishes for ", C, " in ", roots),
+            counterexample=Text("the roots ", roots, " of ", at, " in ", C),
+        )
+    omega_4 = S("omega_4")
     return CheckResult(
         Status.CORRECTED,
-        f"the determinant vanishes iff lambda = {lam_star}; the characteristic polynomial there is {at}, whose only root "
-        "with |c| <= 1 is c = 0: for cos(j theta) != 0 the initial vector lies on neither eigenvector (so it has a "
-        "component on the dominant one); at cos(j theta) = 0 the printed entry is 0/0 and the initial vector is itself "
-        "an eigenvector of M_j = I/4",
-        counterexample="n = 4, j = 2: the determinant's entry (1 + omega_4^2)/(4 (lambda - 1/4)) = 0/0",
-        correction="for every j with cos(j pi/n) != 0 the determinant is nonzero for both eigenvalues; for cos(j pi/n) = 0 "
-        "(even n, j = n/2 or 3n/2) M_j = I/4 and the conclusion holds trivially",
+        Text(
+            "the determinant vanishes iff ", eq(lam, lam_star), "; the characteristic polynomial there is ", at,
+            ", whose only root with ", le(sp.Abs(C), 1), " is ", eq(C, *roots), ": for ", ne(cos_j_theta, 0),
+            " the initial vector lies on neither eigenvector (so it has a component on the dominant one); at ",
+            eq(cos_j_theta, 0), " the printed entry is 0/0 and the initial vector is itself an eigenvector of ",
+            eq(Mk("j"), I / 4),
+        ),
+        counterexample=Text(
+            eq(n, 4), ", ", eq(j, 2), ": the determinant's entry ",
+            (1 + omega_4**2) / (4 * lam - 1), " is 0/0",
+        ),
+        correction=Text(
+            "for every ", j, " with ", ne(cos_j_theta, 0), " the determinant is nonzero for both eigenvalues; for ",
+            eq(cos_j_theta, 0), " (even ", n, ", ", eq(j, n / 2), " or ", 3 * n / 2, ") ", eq(Mk("j"), I / 4),
+            " and the conclusion holds trivially",
+        ),
         steps=(
             Step("$(1, \\omega_{2n}^j)$ is an eigenvector iff $\\lambda$ equals", lam_star, lam),
             Step("The characteristic polynomial of $M_j$ there:", at),
@@ -258,20 +297,28 @@ def _prop51() -> CheckResult:
     last = 1000
     certified, upto = _dominant_vs_frequency_zero(last)
     if not increasing:
-        return CheckResult(Status.REFUTED, "the dominant eigenvalue is not increasing in c", counterexample=str(derivative))
+        return CheckResult(
+            Status.REFUTED,
+            Text("the dominant eigenvalue is not increasing in ", C),
+            counterexample=Text("its derivative ", derivative),
+        )
     if not certified:
         return CheckResult(
             Status.REFUTED,
-            f"at n = {upto} an eigenvalue of the Eq. 43 block is at least lambda_1 (certified)",
-            counterexample=f"n = {upto}",
+            Text("at ", eq(n, upto), " an eigenvalue of the Eq. 43 block is at least ", lambda_1, " (certified)"),
+            counterexample=Text(eq(n, upto)),
         )
+    k = S("k")
     return CheckResult(
         Status.VERIFIED,
-        "for all n the dominant eigenvalue of M_j increases with cos^2(j pi/n) (its derivative in c > 0 is a sum of "
-        "positive terms), so among the frequencies k = 1..n-1 it is largest at k = 1 and n - 1 (the 2n-gon components "
-        "j = 1, 2n-1 and also j = n-1, n+1, which share M_1); against the derived eigenvalues of the Eq. 43 block "
-        f"other than 1 ({', '.join(map(str, block))}) it is larger for n = 3..{last}, certified in interval "
-        f"arithmetic (both tend to {sp.limit(block[0], n, sp.oo)} as n -> oo)",
+        Text(
+            "for all ", n, " the dominant eigenvalue of ", Mk("j"), " increases with ", cos_j_theta**2, " (its derivative in ",
+            gt(C, 0), " is a sum of positive terms), so among the frequencies ", k, " from 1 to ", n - 1,
+            " it is largest at ", eq(k, 1), " and ", n - 1, " (the 2n-gon components ", eq(j, 1), ", ", 2 * n - 1,
+            " and also ", eq(j, n - 1), ", ", n + 1, ", which share ", Mk(1), "); against the derived eigenvalues ",
+            sp.Tuple(*block), " of the Eq. 43 block other than 1 it is larger for ", n, f" from 3 to {last}, certified in "
+            "interval arithmetic (both tend to ", sp.limit(block[0], n, sp.oo), " as ", n, " tends to infinity)",
+        ),
         valences=(3, last),
         steps=(
             Step("Dominant eigenvalue of $M_j$ for $c = \\cos j\\theta > 0$:", dominant),
@@ -299,8 +346,8 @@ def _rem51() -> CheckResult:
 
     size = 5
     with mpmath.workdps(60):
-        j = size + 1
-        pts = [mpmath.expjpi(mpmath.mpf(j * m) / size) for m in range(2 * size)]
+        component = size + 1
+        pts = [mpmath.expjpi(mpmath.mpf(component * m) / size) for m in range(2 * size)]
         ring = OneRing.from_points((0, 0, 0), [(p.real, p.imag, 0) for p in pts[0::2]], [(p.real, p.imag, 0) for p in pts[1::2]])
         lam1 = mpmath.mpf(sp.N(tangent_eigenvalues(_cc()).dominant.subs(C, sp.cos(sp.pi / size)), 70))
         ratios = []
@@ -310,16 +357,22 @@ def _rem51() -> CheckResult:
             if k in (10, 20, 40):
                 norm = mpmath.sqrt(mpmath.fsum(x**2 for p in current.a + current.b for x in p))
                 ratios.append(norm / lam1**k)
-        text = ", ".join(mpmath.nstr(r, 15) for r in ratios)
+        shown = listed(sp.Float(r, 15) for r in ratios)
     if roots == sp.EmptySet or roots == sp.FiniteSet(0):
         return CheckResult(
             Status.REFUTED,
-            f"the components j = n +- 1 are moved by M_1 (omega_n^(n+1) = omega_n) with initial vector (1, -omega_2n^j); it is an "
-            f"eigenvector only where {at} = 0, i.e. cos(j theta) = 0, so for every n they keep a component on the dominant "
-            "eigenvector and shrink like lambda_1 of j = 1, the slowest rate after 1, not like the non-convex components",
-            counterexample=f"n = {size}, the 1-ring with O = 0 and 2n-gon component j = {size + 1} only (and its conjugate "
-            f"j = {size - 1}): |ring after k steps| / lambda_1^k at k = 10, 20, 40 is {text} (60 digits), converging to a "
-            "nonzero constant",
+            Text(
+                "the components ", eq(j, n + 1), " and ", n - 1, " are moved by ", Mk(1), " (", eq(omega_n ** (n + 1), omega_n),
+                ") with initial vector ", tup(1, -(omega_2n**j)), "; it is an eigenvector only where ", eq(at, 0), ", i.e. ",
+                eq(cos_j_theta, 0), ", so for every ", n, " they keep a component on the dominant eigenvector and shrink like ",
+                lambda_1, " of ", eq(j, 1), ", the slowest rate after 1, not like the non-convex components",
+            ),
+            counterexample=Text(
+                eq(n, size), ", the 1-ring with ", eq(S("O"), 0), " and 2n-gon component ", eq(j, size + 1),
+                " only (and its conjugate ", eq(j, size - 1), "): ", abs(S("r_k")) / lambda_1 ** S("k"),
+                " (", S("r_k"), " the ring after ", S("k"), " steps) at ", S("k"), " = ", listed((10, 20, 40)),
+                " is ", shown, " (60 digits), converging to a nonzero constant",
+            ),
             steps=(
                 Step("$(1, -\\omega_{2n}^j)$ is an eigenvector of $M_j$ iff $\\lambda$ equals", lam_star, lam),
                 Step("The characteristic polynomial there:", at),
@@ -345,14 +398,28 @@ def _eq39() -> CheckResult:
     at4 = invariant_ratio_at(cc, 4, 1)
     a_over_b = sp.simplify(1 / at4)
     if not same:
-        return CheckResult(Status.REFUTED, "printed ratio differs from the eigenvector ratio", counterexample=str(derived - printed))
+        return CheckResult(
+            Status.REFUTED,
+            "printed ratio differs from the eigenvector ratio",
+            counterexample=Text("derived minus printed: ", derived - printed),
+        )
+    r, x, y = S("r"), S("x"), S("y")
     return CheckResult(
         Status.CORRECTED,
-        "the printed expression is y/x = B^j/A^j on the dominant eigenvector (1, y) of M_j (for cos(j theta) > 0; "
-        "for cos(j theta) < 0 use |cos|), not the r of A^j = r B^j: at n = 4, j = 1 it gives 1 + i = B^1/A^1, "
-        f"while A^1/B^1 = {a_over_b}",
-        counterexample=f"n = 4, j = 1: with A^1 = r B^1 the ratio would be {a_over_b}, not the printed value 1 + i",
-        correction="in the limit B^j = r A^j with r given by Eq. 39 (and |cos(j theta)| in place of cos(j theta))",
+        Text(
+            "the printed expression is ", eq(y / x, B("j") / A("j")), " on the dominant eigenvector ", tup(1, y), " of ",
+            Mk("j"), " (for ", gt(cos_j_theta, 0), "; for ", lt(cos_j_theta, 0), " use ",
+            sp.Abs(cos_j_theta), "), not the ", r, " of ", eq(A("j"), r * B("j")), ": at ", eq(n, 4), ", ", eq(j, 1),
+            " it gives ", eq(at4, B(1) / A(1)), ", while ", eq(A(1) / B(1), a_over_b),
+        ),
+        counterexample=Text(
+            eq(n, 4), ", ", eq(j, 1), ": with ", eq(A(1), r * B(1)), " the ratio would be ", a_over_b,
+            ", not the printed value ", at4,
+        ),
+        correction=Text(
+            "in the limit ", eq(B("j"), r * A("j")), " with ", r, " given by Eq. 39 (and ", sp.Abs(cos_j_theta),
+            " in place of ", cos_j_theta, ")",
+        ),
         steps=(
             Step("$B^j/A^j$ on the dominant eigenvector, derived:", derived, sp.Symbol("r")),
             Step("At $n = 4$, $j = 1$:", at4),
@@ -371,9 +438,11 @@ def _eq39_n4() -> CheckResult:
     ok = sp.simplify(value - (1 + sp.I)) == 0
     return CheckResult(
         Status.VERIFIED if ok else Status.REFUTED,
-        f"the derived ratio B^1/A^1 at n = 4 is exactly {value} (modulus {sp.sqrt(sp.simplify(value * sp.conjugate(value)))}, "
-        f"argument {sp.simplify(sp.arg(value))})",
-        counterexample=None if ok else f"n = 4: {value}",
+        Text(
+            "the derived ratio ", B(1) / A(1), " at ", eq(n, 4), " is exactly ", value, " (modulus ",
+            sp.sqrt(sp.simplify(value * sp.conjugate(value))), ", argument ", sp.simplify(sp.arg(value)), ")",
+        ),
+        counterexample=None if ok else Text(eq(n, 4), ": ", value),
         valences=(4, 4),
         steps=(Step("$r$ at $n = 4$, $j = 1$:", value),),
     )
@@ -391,7 +460,10 @@ def _eq39_limit() -> CheckResult:
     ok = sp.simplify(value - printed) == 0
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
-        f"sympy.limit of the derived ratio as n -> oo at j = 1 is {value}, equal to 4/(sqrt(5) + 1)",
-        counterexample=None if ok else str(value),
+        Text(
+            "sympy.limit of the derived ratio as ", n, " tends to infinity at ", eq(j, 1), " is ", value,
+            ", equal to the printed ", printed,
+        ),
+        counterexample=None if ok else Text("the limit is ", value),
         steps=(Step("$\\lim_{n \\to \\infty} r$ at $j = 1$:", value),),
     )

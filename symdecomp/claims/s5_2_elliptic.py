@@ -23,7 +23,10 @@ from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
 from symdecomp.analysis.tuning import joint_obstruction
-from symdecomp.claims import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims import CheckResult, Status, Step, Text, claim, is_zero
+from symdecomp.claims.notation import A, B, M, c, eq, gt, j, lambda_1, listed, omega_2n, tup
+
+S = sp.Symbol
 
 
 @claim(
@@ -48,7 +51,11 @@ def _eq40() -> CheckResult:
     sum_sq = sp.expand(G.trace() - 2 * (m1 + m2))
     prod_sq = sp.expand(L.det() ** 2 - (m1 - m2) ** 2)
     if not (is_zero(sum_sq) and is_zero(prod_sq)):
-        return CheckResult(Status.REFUTED, "singular values differ from |w1| +- |w2|", counterexample=str((sum_sq, prod_sq)))
+        return CheckResult(
+            Status.REFUTED,
+            "the singular values differ from the printed axes",
+            counterexample=Text("invariants off by ", sum_sq, " and ", prod_sq),
+        )
     # Cross-check on random rational 1-rings: Eq. 40 from the decomposition vs the singular values of [U W].
     rng = random.Random(5)
     worst = 0
@@ -58,11 +65,16 @@ def _eq40() -> CheckResult:
         for a, b in zip(e.semi_axes, e.singular_values):
             worst = max(worst, abs(sp.N(a - b, 40)))
     if worst > sp.Float("1e-35"):
-        return CheckResult(Status.ERROR, f"decomposition and singular values disagree by {worst}")
+        return CheckResult(Status.ERROR, Text("decomposition and singular values disagree by ", worst))
+    w_1, w_2, t = S("w_1"), S("w_2"), S("t", real=True)
     return CheckResult(
         Status.PROVED,
-        "the semi-axes of w1*e^{it} + w2*e^{-it} are |w1| +- |w2| (singular-value invariants match identically); "
-        "l_1, l_2 are semi-axes (half-axes) for the unit-circumradius v_1; random rings n=3..6 agree to 35 digits",
+        Text(
+            "the semi-axes of ", w_1 * sp.exp(sp.I * t) + w_2 * sp.exp(-sp.I * t), " are ", abs(w_1), " + ", abs(w_2),
+            " and ", abs(abs(w_1) - abs(w_2)), " (singular-value invariants match identically); ", S("l_1"), ", ",
+            S("l_2"), " are semi-axes (half-axes) for the unit-circumradius ", S("v_1"),
+            "; random rings of valence 3 to 6 agree to 35 digits",
+        ),
         steps=(
             Step("Real matrix of $\\zeta \\mapsto w_1\\zeta + w_2\\bar\\zeta$", L),
             Step("$\\operatorname{tr}(L^TL) - 2(|w_1|^2+|w_2|^2)$", sum_sq),
@@ -89,11 +101,14 @@ def _eq41() -> CheckResult:
     gram_b = 4 * (zb_re * zb_re.T + zb_im * zb_im.T)
     diff = (gram_b - gram_a).applyfunc(lambda e: sp.simplify(sp.expand(e)))
     if not is_zero(diff):
-        return CheckResult(Status.REFUTED, "E_b differs from E_a", counterexample=str(diff))
+        return CheckResult(Status.REFUTED, Text(S("E_b"), " differs from ", S("E_a")), counterexample=Text(diff))
+    U, W, t = S("U"), S("W"), S("t")
     return CheckResult(
         Status.PROVED,
-        "an ellipse U cos t + W sin t is fixed by its matrix U U^T + W W^T; for the b-part (z_1 rotated by pi/n) it is "
-        "identical for every ring and n",
+        Text(
+            "an ellipse ", U * sp.cos(t) + W * sp.sin(t), " is fixed by its matrix ", U * S("U^T") + W * S("W^T"),
+            "; for the b-part (", S("z_1"), " rotated by ", sp.pi / N, ") it is identical for every ring and ", N,
+        ),
         steps=(Step("$G_b - G_a$ (zero)", diff),),
     )
 
@@ -107,12 +122,20 @@ def _eq41() -> CheckResult:
 )
 def _prop52() -> CheckResult:
     conj, imag = rotation_free_form(catmull_clark(ALPHA, BETA))
+    z, D, M_j = S("z"), S("D", commutative=False), S("M_j", commutative=False)
     if not is_zero(imag):
-        return CheckResult(Status.REFUTED, "D^-1 M_j D is not real", counterexample=str(imag))
+        return CheckResult(
+            Status.REFUTED,
+            Text(D**-1 * M_j * D, " is not real"),
+            counterexample=Text("imaginary part ", imag),
+        )
     return CheckResult(
         Status.PROVED,
-        "with z = omega_2n^j, D^{-1} M_j D (D = diag(1, z)) is invariant under z -> 1/z = conj(z): real for every n, j "
-        "(the vertex-rule weights do not enter M_j)",
+        Text(
+            "with ", eq(z, omega_2n**j), ", ", D**-1 * M_j * D, " (", eq(D, sp.Function("diag")(1, z)),
+            ") is invariant under ", z, " to ", eq(1 / z, sp.conjugate(z)), ": real for every ", N, ", ", j,
+            " (the vertex-rule weights do not enter ", M("j"), ")",
+        ),
         steps=(Step("$D^{-1} M_j D$ with $\\omega = z^2$", conj), Step("$e(z) - e(1/z)$ entrywise", imag)),
     )
 
@@ -138,10 +161,13 @@ def _eq42() -> CheckResult:
 
     in_c = new.applyfunc(in_cos)
     if not is_zero(imag) or any(e.has(sp.I) or e.has(sp.sin(t)) for e in in_c):
-        return CheckResult(Status.REFUTED, "an entry is not real", counterexample=str(imag))
+        return CheckResult(Status.REFUTED, "an entry is not real", counterexample=Text("imaginary part ", imag))
     return CheckResult(
         Status.PROVED,
-        f"r'_1 = {sp.sstr(in_c[0])}, r'_2 = {sp.sstr(in_c[1])} with c = cos(j pi/n): real for real r_1, r_2",
+        Text(
+            eq(S("r'_1"), in_c[0]), ", ", eq(S("r'_2"), in_c[1]), " with ",
+            eq(c, sp.cos(j * sp.pi / N)), ": real for real ", S("r_1"), ", ", S("r_2"),
+        ),
         steps=(Step("$(r'_1, r'_2)$ in $c = \\cos(j\\pi/n)$", in_c),),
     )
 
@@ -167,17 +193,30 @@ def _eq43() -> CheckResult:
         Step("The same with $\\alpha \\to \\alpha/n$, $\\beta \\to \\beta/n$ (total weights)", total.applyfunc(sp.expand)),
     )
     if not rows_ok:
-        return CheckResult(Status.REFUTED, "rows 2-3 differ from the edge/face rules", counterexample=str(T), steps=steps)
+        return CheckResult(
+            Status.REFUTED, "rows 2-3 differ from the edge/face rules", counterexample=Text("the derived matrix ", T), steps=steps
+        )
     if is_zero(first_diff):
         return CheckResult(Status.PROVED, "derived matrix equals the printed one", steps=steps)
+    derived_first = tup(*T[0, :])
+    # the counterexample: the standard weights at n = 4, per neighbour (the derived row is n alpha, n beta)
+    standard = frequency_zero_matrix(catmull_clark(), 4)
+    per_neighbour = {ALPHA: standard[0, 1] / 4, BETA: standard[0, 2] / 4}
     return CheckResult(
         Status.CORRECTED,
-        "rows 2-3 derived from Eq. 14-15 agree; the first row derived from Eq. 16 (affine, per-neighbour weights) is "
-        "(1 - n*alpha - n*beta, n*alpha, n*beta), which is the printed row only if alpha, beta are total weights",
-        correction="first row (1 - n*alpha - n*beta, n*alpha, n*beta) with alpha, beta the weights of each a_i, b_i "
-        "(equivalently the printed row with alpha, beta the total weights n*alpha, n*beta)",
-        counterexample="n = 4, standard weights: printed row with alpha = 3/32, beta = 1/64 gives "
-        "(57/64, 3/32, 1/64), not (9/16, 3/8, 1/16) of Eq. 45",
+        Text(
+            "rows 2-3 derived from Eq. 14-15 agree; the first row derived from Eq. 16 (affine, per-neighbour weights) is ",
+            derived_first, ", which is the printed row only if ", ALPHA, ", ", BETA, " are total weights",
+        ),
+        correction=Text(
+            "first row ", derived_first, " with ", ALPHA, ", ", BETA, " the weights of each ", S("a_i"), ", ", S("b_i"),
+            " (equivalently the printed row with ", ALPHA, ", ", BETA, " the total weights ", N * ALPHA, ", ", N * BETA, ")",
+        ),
+        counterexample=Text(
+            eq(N, 4), ", standard weights: the printed row with ", eq(ALPHA, per_neighbour[ALPHA]), ", ",
+            eq(BETA, per_neighbour[BETA]), " gives ", tup(*printed_first.subs(per_neighbour)), ", not ",
+            tup(*standard[0, :]), " of Eq. 45",
+        ),
         steps=steps,
     )
 
@@ -206,12 +245,23 @@ def _eq44() -> CheckResult:
     reduced = eig.applyfunc(lambda e: sp.rem(sp.Poly(e, MU), quad).as_expr())
     ratio = eq44_ratio(scheme, MU)
     if not (is_zero(intertwine) and is_zero(reduced)):
-        return CheckResult(Status.REFUTED, "distances do not follow the non-unit eigenvectors", counterexample=str(reduced))
+        return CheckResult(
+            Status.REFUTED,
+            "distances do not follow the non-unit eigenvectors",
+            counterexample=Text("the remainder ", reduced),
+        )
+    d_a, d_b, h_O, u_O = S("d_a"), S("d_b"), S("h_O"), S("u_O")
+    Tn, Tp_, Dn, un = (S(name, commutative=False) for name in ("T", "T'", "D", "u"))
+    mu = S("mu")
     return CheckResult(
         Status.PROVED,
-        "(d_a, d_b) = (h_a - h_O, h_b - h_O) moves by a 2x2 matrix T' with D T = T' D whose eigenvalues are the non-unit "
-        "ones of Eq. 43 and whose eigenvector is D u; so d_b/d_a -> (u_b-u_O)/(u_a-u_O) when the subdominant component "
-        f"is nonzero. The ratio is {sp.sstr(ratio)}, independent of the vertex rule",
+        Text(
+            tup(d_a, d_b), " = ", tup(S("h_a") - h_O, S("h_b") - h_O), " moves by a 2x2 matrix ", Tp_, " with ",
+            eq(Dn * Tn, Tp_ * Dn),
+            " whose eigenvalues are the non-unit ones of Eq. 43 and whose eigenvector is ", Dn * un,
+            "; so ", d_b / d_a, " tends to ", (S("u_b") - u_O) / (S("u_a") - u_O),
+            " when the subdominant component is nonzero. The ratio is ", ratio.subs(MU, mu), " at the eigenvalue ", mu, ", independent of the vertex rule",
+        ),
         steps=(
             Step("$T'$ on $(d_a, d_b)$", Tp),
             Step("$DT - T'D$", intertwine),
@@ -257,12 +307,23 @@ def _eq45() -> CheckResult:
         Step("$\\lambda_1$ at $n = 4$", sp.simplify(lam1)),
     )
     if not ok:
-        return CheckResult(Status.REFUTED, "the n = 4 example does not hold as printed", counterexample=str(steps), steps=steps)
+        return CheckResult(
+            Status.REFUTED,
+            Text("the example does not hold as printed at ", eq(N, 4)),
+            counterexample=Text(
+                eq(N, 4), ": matrix ", T4, ", eigenvalues ", listed(eigs), ", eigenvector ", tup(*u), ", ratio ", ratio,
+                ", ", eq(abs(B(1) / A(1)) ** 2, scale_sq), ", ", eq(lambda_1, lam1),
+            ),
+            steps=steps,
+        )
     return CheckResult(
         Status.VERIFIED,
-        f"derived matrix equals the printed one; eigenvalues {', '.join(map(str, eigs))}; eigenvector "
-        f"{tuple(u)} proportional to (-2, 1, 4); ratio {ratio} = |B^1/A^1|^2 = {scale_sq} (scale ratio sqrt 2); "
-        f"{eigs[1]} = lambda_1^2: both conditions hold at n = 4",
+        Text(
+            "derived matrix equals the printed one; eigenvalues ", listed(eigs), "; eigenvector ", tup(*u),
+            " proportional to ", tup(*paper_u), "; ratio ", eq(ratio, abs(B(1) / A(1)) ** 2), " = ", scale_sq,
+            " (scale ratio ", sp.sqrt(scale_sq), "); ", eq(eigs[1], lambda_1**2),
+            ": both conditions hold at ", eq(N, 4),
+        ),
         valences=(4, 4),
         steps=steps,
     )
@@ -296,15 +357,27 @@ def _remark52() -> CheckResult:
     )
     if not (only_zero and comp_111 == 0 and all(c != 0 for c in comp_011) and comp_01m1_n4 == 0):
         return CheckResult(Status.ERROR, "the derivation did not go through", steps=steps)
+    ones, case_011, case_01m1 = tup(1, 1, 1), tup(0, 1, 1), tup(0, 1, -1)
+    l_name, l_O, abar, bbar, z_n, x, y = S("l"), S("l_O"), S("abar"), S("bbar"), S("z_n"), S("x"), S("y")
     return CheckResult(
         Status.CORRECTED,
-        "(1,1,1) is the eigenvector of 1: no elliptic component; (0,1,1) has one for every n and all alpha, beta "
-        "(l.(0,1,1) = -l_O and l_O = 0 forces l = 0). But the input (h_O, abar, bbar) also receives the 2n-gon component "
-        "j = n (A^n = z_n, B^n = -z_n), i.e. (0,1,-1), which is neither case: at n = 4 it has no elliptic component",
-        correction="for input from the component j = 0 (abar = bbar) the cases are (1,1,1) (no elliptic component) and "
-        "(0,1,1) (always an elliptic component, not just generally); a general 1-ring adds (0,1,-1) from the component "
-        "j = n, so the input is (0, x, y) modulo (1,1,1), with elliptic component l_a x + l_b y over l.u",
-        counterexample="n = 4, input (0, 1, -1) (a's raised, b's lowered): elliptic component 0",
+        Text(
+            ones, " is the eigenvector of 1: no elliptic component (", comp_111, " at ", eq(N, 4), "); ", case_011,
+            " has one for every ", N, " and all ", ALPHA, ", ", BETA, " (the left eigenvector ", l_name, " has ",
+            eq(S("l_a") + S("l_b"), -l_O), " on it, and ", eq(l_O, 0), " forces ", eq(l_name, 0),
+            "). But the input ", tup(S("h_O"), abar, bbar), " also receives the 2n-gon component ", eq(j, N), " (",
+            eq(A(N), z_n), ", ", eq(B(N), -z_n), "), i.e. ", case_01m1, ", which is neither case: at ", eq(N, 4),
+            " it has no elliptic component",
+        ),
+        correction=Text(
+            "for input from the component ", eq(j, 0), " (", eq(abar, bbar), ") the cases are ", ones,
+            " (no elliptic component) and ", case_011, " (always an elliptic component, not just generally); a general "
+            "1-ring adds ", case_01m1, " from the component ", eq(j, N), ", so the input is ", tup(0, x, y), " modulo ",
+            ones, ", with elliptic component ", S("l_a") * x + S("l_b") * y, " over ", l_name, " times ", S("u"),
+        ),
+        counterexample=Text(
+            eq(N, 4), ", input ", case_01m1, " (a's raised, b's lowered): elliptic component ", comp_01m1_n4,
+        ),
         steps=steps,
     )
 
@@ -324,12 +397,17 @@ def _example() -> CheckResult:
     d5 = sp.N(cond.eigenvalue_defect.subs(N, 5), 30)
     if joint.valences != (4,) or not (d3 < 0 < d5):
         return CheckResult(Status.ERROR, f"unexpected: valences {joint.valences}, defects {d3}, {d5}")
+    c_n = sp.cos(sp.pi / N)
+    (root,) = [c_n.subs(N, v) for v in joint.valences]
     return CheckResult(
         Status.PROVED,
-        "the two conditions together hold iff ratio(lambda_1^2) = |B^1/A^1|^2, an equation in n alone; its resultant "
-        f"{sp.sstr(joint.polynomial)} has the single root c = cos(pi/n) = sqrt(2)/2 in [1/2, 1): n = 4 only. "
-        f"Condition 1 alone fails for standard weights already at n = 3 (mu - lambda_1^2 = {sp.N(d3, 6)}) and n = 5 "
-        f"({sp.N(d5, 6)})",
+        Text(
+            "the two conditions together hold iff the ratio of Eq. 44 at ", lambda_1**2, " equals ", abs(B(1) / A(1)) ** 2,
+            ", an equation in ", N, " alone; its resultant ", joint.polynomial, " has the single root ",
+            eq(c, c_n), " = ", root, " in ", sp.Interval.Ropen(sp.Rational(1, 2), 1), ": ",
+            eq(N, joint.valences[0]), " only. Condition 1 alone fails for standard weights already at ", eq(N, 3), " (",
+            eq(S("mu") - lambda_1**2, sp.N(d3, 6)), ") and ", eq(N, 5), " (", sp.N(d5, 6), ")",
+        ),
         steps=(
             Step("Condition 1 defect $\\mu - \\lambda_1^2$", cond.eigenvalue_defect),
             Step("Condition 2 defect", cond.ratio_defect),

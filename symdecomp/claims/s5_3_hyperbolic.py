@@ -10,9 +10,11 @@ from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.frequency import COS
-from symdecomp.claims import CheckResult, Status, Step, claim
+from symdecomp.claims import CheckResult, Status, Step, Text, claim
+from symdecomp.claims.notation import A, M, eq, ge, gt, j, lambda_1, lambda_2, listed, lt, ne, tup
 
 _VALENCES = (3, 12)
+Sym = sp.Symbol
 
 
 @claim(
@@ -34,23 +36,31 @@ def _smaller() -> CheckResult:
     for poly in (below, above):
         inside = [r for r in sp.Poly(poly, c).real_roots() if sp.Rational(1, 2) < r < 1]
         if inside or not poly.subs(c, sp.Rational(3, 4)) < 0:
-            return CheckResult(Status.ERROR, f"sign analysis failed for {poly}")
+            return CheckResult(Status.ERROR, Text("sign analysis failed for ", poly))
     if not sp.simplify(slope).is_positive:
-        return CheckResult(Status.ERROR, f"could not show {slope} > 0")
+        return CheckResult(Status.ERROR, Text("could not show ", gt(slope, 0)))
     lam1_3 = tangent_lambda(cc, 1).subs(N, 3)
     lam2_3 = hyperbolic_lambda(cc).subs(N, 3)
     equal_at_3 = sp.simplify(lam1_3 - lam2_3) == 0
     if not equal_at_3:
-        return CheckResult(Status.ERROR, "expected lambda_2 = lambda_1 at n = 3")
+        return CheckResult(Status.ERROR, Text("expected ", eq(lambda_2, lambda_1), " at ", eq(N, 3)))
+    cos_n = sp.cos(sp.pi / N)
     return CheckResult(
         Status.CORRECTED,
-        f"the dominant eigenvalue of M_j increases with |cos(j pi/n)| (d/dt = {sp.sstr(slope)} > 0), and "
-        "|cos(2pi/n)| < cos(pi/n) iff n >= 4; at n = 3, j = 2 is the conjugate frequency of j = 1 "
-        "(cos(2pi/3) = -cos(pi/3)) and lambda_2 = lambda_1",
-        correction=f"for n >= 4 the j = 2 eigenvalues are strictly smaller than lambda_1 (both of them: det M_j = "
-        f"{sp.sstr(tangent_eigenvalues(cc).determinant)} > 0, so the other one is smaller still); "
-        "at n = 3 the components A^2, A^4 are tangent-plane components with eigenvalue lambda_1",
-        counterexample=f"n = 3: lambda_2 = lambda_1 = {sp.N(lam1_3, 15)}",
+        Text(
+            "the dominant eigenvalue of ", M("j"), " increases with ", eq(t, sp.Abs(sp.cos(j * sp.pi / N))), " (",
+            eq(sp.Derivative(Sym("lambda"), t), slope), ", positive), and ", lt(sp.Abs(sp.cos(2 * sp.pi / N)), cos_n),
+            " iff ", ge(N, 4), "; at ", eq(N, 3), ", ", eq(j, 2), " is the conjugate frequency of ", eq(j, 1), " (",
+            eq(sp.cos(2 * sp.pi / 3, evaluate=False), -sp.cos(sp.pi / 3, evaluate=False)), ") and ",
+            eq(lambda_2, lambda_1),
+        ),
+        correction=Text(
+            "for ", ge(N, 4), " the ", eq(j, 2), " eigenvalues are strictly smaller than ", lambda_1, " (both of them: ",
+            eq(sp.Function("det")(M("j")), tangent_eigenvalues(cc).determinant), ", positive, so the other one is "
+            "smaller still); at ", eq(N, 3), " the components ", A(2), ", ", A(4),
+            " are tangent-plane components with eigenvalue ", lambda_1,
+        ),
+        counterexample=Text(eq(N, 3), ": ", eq(lambda_2, lambda_1), " = ", sp.N(lam1_3, 15)),
         steps=(
             Step("$d\\lambda/d|c|$ of the dominant eigenvalue of $M_j$", slope),
             Step("$\\cos(2\\pi/n) - \\cos(\\pi/n)$ in $c = \\cos(\\pi/n)$", below),
@@ -68,19 +78,24 @@ def _smaller() -> CheckResult:
 )
 def _quadratic() -> CheckResult:
     cc = catmull_clark()
-    eq = hyperbolic_equality(cc)
+    eq_ = hyperbolic_equality(cc)
     defect = hyperbolic_defect(cc)
     d5 = sp.N(defect.subs(N, 5), 30)
     d3 = sp.N(defect.subs(N, 3), 30)
-    if eq.valences != (4,) or not (d5 > 0 and d3 > 0):
-        return CheckResult(Status.ERROR, f"unexpected: {eq.valences}, {d3}, {d5}")
+    if eq_.valences != (4,) or not (d5 > 0 and d3 > 0):
+        return CheckResult(Status.ERROR, f"unexpected: {eq_.valences}, {d3}, {d5}")
+    cos_n = sp.cos(sp.pi / N)
+    (root,) = [cos_n.subs(N, v) for v in eq_.valences]
     return CheckResult(
         Status.PROVED,
-        "for Catmull-Clark lambda_2 = lambda_1^2 only at n = 4: the resultant "
-        f"{sp.sstr(eq.polynomial)} has the single root cos(pi/n) = sqrt(2)/2 in [1/2, 1); lambda_2 - lambda_1^2 is "
-        f"continuous in c and positive at n = 3 ({sp.N(d3, 6)}) and n = 5 ({sp.N(d5, 6)}), hence > 0 for every n != 4: "
-        "the hyperbolic part shrinks slower than quadratically (the requirement fails for n != 4)",
-        steps=(Step("$\\lambda_2 - \\lambda_1^2$", defect), Step("Resultant in $c = \\cos(\\pi/n)$", eq.polynomial)),
+        Text(
+            "for Catmull-Clark ", eq(lambda_2, lambda_1**2), " only at ", eq(N, eq_.valences[0]), ": the resultant ",
+            eq_.polynomial, " has the single root ", eq(cos_n, root), " in ", sp.Interval.Ropen(sp.Rational(1, 2), 1),
+            "; ", lambda_2 - lambda_1**2, " is continuous in ", COS, " and positive at ", eq(N, 3), " (", sp.N(d3, 6),
+            ") and ", eq(N, 5), " (", sp.N(d5, 6), "), hence positive for every ", ne(N, 4),
+            ": the hyperbolic part shrinks slower than quadratically (the requirement fails for ", ne(N, 4), ")",
+        ),
+        steps=(Step("$\\lambda_2 - \\lambda_1^2$", defect), Step("Resultant in $c = \\cos(\\pi/n)$", eq_.polynomial)),
     )
 
 
@@ -100,12 +115,15 @@ def _construction() -> CheckResult:
             return CheckResult(
                 Status.REFUTED,
                 f"n = {n}: exact iteration differs from the per-frequency prediction",
-                counterexample=f"n = {n}, hyperbolic_ring, 3 steps",
+                counterexample=Text(eq(N, n), ", hyperbolic_ring, 3 steps"),
             )
     return CheckResult(
         Status.VERIFIED,
-        "hyperbolic_ring(n) iterated 3 steps with the exact subdivision matrix in Q(zeta_4n) equals the prediction "
-        "(tangent part by M_1^k, heights by M_2^k) exactly; O and the centroids of the a's and b's stay at height 0",
+        Text(
+            "hyperbolic_ring(n) iterated 3 steps with the exact subdivision matrix in ", sp.Function("Q")(Sym("zeta_4n")),
+            " equals the prediction (tangent part by ", M(1) ** Sym("k"), ", heights by ", M(2) ** Sym("k"),
+            ") exactly; O and the centroids of the a's and b's stay at height 0",
+        ),
         valences=(lo, hi),
     )
 
@@ -126,14 +144,24 @@ def _basis() -> CheckResult:
         for _ in range(3):
             h = S * h
             if len(set(h[1 : n + 1])) != 1 or len(set(h[n + 1 :])) != 1:
-                return CheckResult(Status.REFUTED, f"n = {n}: heights leave the frequency-0 subspace", counterexample=f"n = {n}")
+                return CheckResult(
+                    Status.REFUTED,
+                    Text(eq(N, n), ": heights leave the frequency-0 subspace"),
+                    counterexample=Text(eq(N, n), ": heights ", tup(*h)),
+                )
     comps = [elliptic_component(cc, n, (1, 0, 0)) for n in (3, 4, 5)]
     if any(c == 0 for c in comps):
-        return CheckResult(Status.REFUTED, "the basis function has no elliptic component", counterexample=str(comps))
+        return CheckResult(
+            Status.REFUTED,
+            "the basis function has no elliptic component",
+            counterexample=Text("elliptic components at n = 3, 4, 5: ", listed(comps)),
+        )
     return CheckResult(
         Status.VERIFIED,
-        "heights (1, 0, ..., 0) stay constant on the a's and on the b's under the exact matrix (3 steps): no j != 0 "
-        "component off the plane; the input (1, 0, 0) of Eq. 43 has a nonzero elliptic component "
-        f"(n = 3, 4, 5: {', '.join(sp.sstr(sp.nsimplify(sp.N(c, 20))) if c.is_Rational else sp.sstr(sp.N(c, 6)) for c in comps)})",
+        Text(
+            "heights ", tup(1, 0, Sym("..."), 0), " stay constant on the a's and on the b's under the exact matrix (3 steps): "
+            "no ", ne(j, 0), " component off the plane; the input ", tup(1, 0, 0), " of Eq. 43 has a nonzero elliptic "
+            "component (", N, " = 3, 4, 5: ", listed(c if c.is_Rational else sp.N(c, 6) for c in comps), ")",
+        ),
         valences=(lo, hi),
     )

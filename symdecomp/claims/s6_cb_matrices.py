@@ -37,7 +37,19 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.analysis.tangent import tangent_eigenvalues
 
-from symdecomp.claims.registry import CheckResult, Status, Step, claim, is_zero
+from symdecomp.claims.notation import Kron, eq, ge, gt, j, lambda_1, listed, lt, ne, tup
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
+
+
+def _nc(name: str) -> sp.Symbol:
+    """A matrix or vector, by name (products of names keep their order)."""
+    return sp.Symbol(name, commutative=False)
+
+
+_kron = Kron
+
+
+_det = sp.Function("det")
 
 M_SYM = sp.Symbol("m", integer=True, positive=True)
 
@@ -93,6 +105,7 @@ def _banded_symbolic_identity(K: int):
 )
 def _prop61() -> CheckResult:
     c = sp.Symbol("c")
+    i_, j_ = sp.Symbol("i"), sp.Symbol("j")
     # As printed only the interior entries are constrained: n = 3 constrains c_11 alone (here c = 1).
     C3 = sp.Matrix([[2, 0, 0], [0, 1, 0], [0, 0, 5]])
     ev = C3.eigenvals()
@@ -102,7 +115,7 @@ def _prop61() -> CheckResult:
     w = sp.Symbol("w")
     geometric = sp.summation(w**l, (l, 0, N - 1))
     if not isinstance(geometric, sp.Piecewise):
-        return CheckResult(Status.ERROR, f"unexpected form of the geometric sum: {geometric}")
+        return CheckResult(Status.ERROR, Text("unexpected form of the geometric sum: ", geometric))
     at_one = sp.simplify(geometric.subs(w, 1))
     at_root = sp.simplify(geometric.args[-1][0].subs(w**N, 1))
     corrected_ok = at_root == 0 and at_one == N
@@ -115,15 +128,26 @@ def _prop61() -> CheckResult:
         return CheckResult(Status.ERROR, "the corrected statement did not check out; see steps")
     return CheckResult(
         Status.CORRECTED,
-        "false with the printed index range 0<i,j<n-1; with all entries equal (0<=i,j<=n-1) proved for symbolic n",
+        Text(
+            "false with the printed index range ", i_, ", ", j_, " in ", sp.Interval.open(0, N - 1),
+            "; with all entries equal (", i_, ", ", j_, " in ", sp.Interval(0, N - 1), ") proved for symbolic ", N,
+        ),
         steps=(
             Step("As printed, for $n=3$ only $c_{11}$ is constrained. Example with $c=1$, eigenvalues of", sp.FiniteSet(*C3.eigenvals()), C3),
             Step("Corrected: $C=cJ=\\mathrm{circ}(c,\\dots,c)$; by Prop. 2.1 its eigenvalue on $v_k$ is $c\\sum_{l=0}^{n-1}w^l$, $w=\\omega_n^k$", geometric),
             Step("at $w\\ne1$ (so $w^n=1$) the sum is", at_root),
             Step("at $w=1$ ($k=0$, eigenvector $(1,\\dots,1)$) the eigenvalue is $c$ times", at_one),
         ),
-        counterexample="n = 3, C = diag(2, 1, 5) has c_11 = c = 1 (the only entry 0<i,j<2 constrains) but eigenvalues 2, 1, 5, not 3 = nc and zeros",
-        correction="If c_ij = c for all 0 <= i, j <= n-1, the eigenvalues of C are nc (eigenvector (1,...,1)) and 0 with multiplicity n-1 (eigenvectors v_1..v_{n-1}).",
+        counterexample=Text(
+            eq(N, 3), ", ", eq(_nc("C"), C3), " has ", eq(sp.Symbol("c_11"), C3[1, 1]), " (the only entry the printed range "
+            "constrains, so ", eq(c, C3[1, 1]), ") but eigenvalues ", listed(ev), ", not ",
+            eq(N * c, (N * c).subs({N: 3, c: C3[1, 1]})), " and zeros",
+        ),
+        correction=Text(
+            "If ", eq(sp.Symbol("c_ij"), c), " for all ", i_, ", ", j_, " in ", sp.Interval(0, N - 1), ", the "
+            "eigenvalues of ", _nc("C"), " are ", N * c, " (eigenvector ", tup(1, sp.Symbol("..."), 1), ") and 0 with "
+            "multiplicity ", N - 1, " (eigenvectors ", sp.Symbol("v_1"), " to ", sp.Symbol("v_n-1"), ").",
+        ),
     )
 
 
@@ -149,17 +173,31 @@ def _prop62() -> CheckResult:
         literal_fails &= all(sol.get(x, x) == 0 and sol.get(y, y) == 0 for sol in solutions)
     if not (symbolic_ok and generic_ok and rational_ok and literal_fails):
         return CheckResult(Status.ERROR, "a Prop. 6.2 identity failed; see steps")
+    Bn, En, E_k, xn, vn, v_k, alpha_n = (_nc(name) for name in ("B", "E", "E_k", "x", "v", "v_k", "alpha"))
+    lam_ = sp.Symbol("lambda")
     return CheckResult(
         Status.CORRECTED,
-        "B(x (x) v_k) = (E_k x) (x) v_k proved for every x at symbolic order m (banded blocks) and for generic blocks; "
-        "the printed index range 0<i,j<n-1 leaves (for n = 2 blocks) no block required circulant",
+        Text(
+            eq(Bn * _kron(xn, v_k), _kron(E_k * xn, v_k)), " proved for every ", xn, " at symbolic order ", sp.Symbol("m"),
+            " (banded blocks) and for generic blocks; the printed index range ", sp.Symbol("i"), ", ", sp.Symbol("j"), " in ",
+            sp.Interval.open(0, N - 1), " leaves (for ", eq(N, 2), " blocks) no block required circulant",
+        ),
         steps=(
             Step("Row $i$ of block row $p$ of $B(\\alpha\\otimes v)$ minus $(E\\alpha)_p\\,\\omega^i$, three banded blocks per row, symbolic order (residues)", sp.Matrix(residues)),
             Step("So $BV=\\lambda V$ with $V=\\alpha\\otimes v$ exactly when $E\\alpha=\\lambda\\alpha$; $E$ always has an eigenvector, so $\\alpha$ exists"),
             Step("Literal reading with 2 blocks: no eigenvector of the form $(xv, yv)$ for $v=(1,\\pm1)$", Bad),
         ),
-        counterexample="2 x 2 blocks of order 2 (the printed range 0<i,j<1 is empty, so no block need be circulant): B = [[1,2,0,0],[0,0,0,0],[0,0,1,2],[0,0,0,0]] has no eigenvector (x v, y v) for v = (1, 1) or (1, -1), the eigenvectors of all circulants of order 2",
-        correction="If every block C_ij (0 <= i, j <= n-1) is circulant and v = v_k, then B (alpha (x) v) = (E alpha) (x) v for every alpha; hence alpha (x) v is an eigenvector of B for the eigenvalue lambda iff E alpha = lambda alpha.",
+        counterexample=Text(
+            "2 x 2 blocks of order 2 (the printed range ", sp.Interval.open(0, 1), " holds no integer, so no block need be "
+            "circulant): ", eq(Bn, Bad), " has no eigenvector ", tup(x * vn, y * vn), " for ", vn, " = ",
+            listed((tup(1, 1), tup(1, -1)), " or "), ", the eigenvectors of all circulants of order 2",
+        ),
+        correction=Text(
+            "If every block ", sp.Symbol("C_ij"), " (", sp.Symbol("i"), ", ", sp.Symbol("j"), " in ", sp.Interval(0, N - 1),
+            ") is circulant and ", eq(vn, sp.Symbol("v_k")), ", then ", eq(Bn * _kron(alpha_n, vn), _kron(En * alpha_n, vn)),
+            " for every ", alpha_n, "; hence ", _kron(alpha_n, vn), " is an eigenvector of ", Bn, " for the eigenvalue ",
+            lam_, " iff ", eq(En * alpha_n, lam_ * alpha_n), ".",
+        ),
     )
 
 
@@ -187,11 +225,20 @@ def _eq47() -> CheckResult:
         return CheckResult(Status.ERROR, "block-product form did not check out")
     return CheckResult(
         Status.CORRECTED,
-        "BV = (C_pq v)_pq alpha holds for generic 3x3 blocks of order 3 and any v; the printed first row (the visible part; the matrix is cut "
-        "in the text) ends with C_{1,n-1}, a typo for C_{0,n-1}",
+        Text(
+            _nc("B") * _nc("V"), " = (", _nc("C_pq") * _nc("v"), ") ", _nc("alpha"), " holds for generic 3x3 blocks of order 3 and any ",
+            _nc("v"), "; the printed first row (the visible part; the matrix is cut in the text) ends with ", _nc("C_1,n-1"),
+            ", a typo for ", _nc("C_0,n-1"),
+        ),
         steps=(Step("$BV-\\left(\\sum_q \\alpha_q C_{pq}v\\right)_p$ for generic blocks, generic $v$", sp.simplify(lhs - rhs).T),),
-        counterexample="n = 3 blocks of order 3, generic entries: with C_{1,2} in the first row (as printed) the first block row differs from BV",
-        correction="The (p, q) entry of the matrix in Eq. 47 is C_{p,q} v; its first row ends with C_{0,n-1} v.",
+        counterexample=Text(
+            eq(N, 3), " blocks of order 3, generic entries: with ", _nc("C_1,2"), " in the first row (as printed) the first "
+            "block row differs from ", _nc("B") * _nc("V"), " (first entry of the difference: ", sp.factor(sp.simplify(lhs - printed)[0]), ")",
+        ),
+        correction=Text(
+            "The ", tup(sp.Symbol("p"), sp.Symbol("q")), " entry of the matrix in Eq. 47 is ", _nc("C_p,q") * _nc("v"),
+            "; its first row ends with ", _nc("C_0,n-1") * _nc("v"), ".",
+        ),
     )
 
 
@@ -214,10 +261,17 @@ def _eq48() -> CheckResult:
         return CheckResult(Status.ERROR, "C_pq v = e_pq v failed")
     return CheckResult(
         Status.CORRECTED,
-        "C_pq v_k = e_pq v_k for generic circulant blocks of order 4 and every k (Prop. 2.1); same index typo e_{1,n-1} for e_{0,n-1} as Eq. 47",
+        Text(
+            eq(_nc("C_pq") * _nc("v_k"), sp.Symbol("e_pq") * _nc("v_k")), " for generic circulant blocks of order 4 and every ",
+            sp.Symbol("k"), " (Prop. 2.1); same index typo ", sp.Symbol("e_1,n-1"), " for ", sp.Symbol("e_0,n-1"), " as Eq. 47",
+        ),
         steps=(Step("$E$ for $v_1$, generic blocks of order 4", frequency_matrix(cb, 1)),),
-        counterexample="the first row of the printed matrix ends with e_{1,n-1} v (see Eq. 47)",
-        correction="The (p, q) entry is e_{p,q} v with e_{p,q} the eigenvalue of C_{p,q} on v; the first row ends with e_{0,n-1} v.",
+        counterexample=Text("the first row of the printed matrix ends with ", sp.Symbol("e_1,n-1") * _nc("v"), " (see Eq. 47)"),
+        correction=Text(
+            "The ", tup(sp.Symbol("p"), sp.Symbol("q")), " entry is ", sp.Symbol("e_p,q") * _nc("v"), " with ",
+            sp.Symbol("e_p,q"), " the eigenvalue of ", _nc("C_p,q"), " on ", _nc("v"), "; the first row ends with ",
+            sp.Symbol("e_0,n-1") * _nc("v"), ".",
+        ),
     )
 
 
@@ -234,7 +288,10 @@ def _eq49() -> CheckResult:
         return CheckResult(Status.ERROR, "identity failed")
     return CheckResult(
         Status.PROVED,
-        "B(alpha (x) v) - (E alpha) (x) v vanishes at a symbolic row i for banded blocks of symbolic order and for generic blocks of order 4, every alpha",
+        Text(
+            _nc("B") * _kron(_nc("alpha"), _nc("v")) - _kron(_nc("E") * _nc("alpha"), _nc("v")), " vanishes at a symbolic row ",
+            sp.Symbol("i"), " for banded blocks of symbolic order and for generic blocks of order 4, every ", _nc("alpha"),
+        ),
         steps=(Step("residues, two block rows, symbolic order", sp.Matrix(_banded_symbolic_identity(2))),),
     )
 
@@ -287,8 +344,12 @@ def _remark61() -> CheckResult:
         return CheckResult(Status.ERROR, "block diagonalization or the examples failed")
     return CheckResult(
         Status.PROVED,
-        "B P = P diag(E_k) with P = [e_p (x) v_k] invertible (Eq. 49 with alpha = e_p, proved for every order); "
-        "so B is diagonalizable iff every E_k is (the condition is also necessary: a Jordan E_0 example)",
+        Text(
+            eq(_nc("B") * _nc("P"), _nc("P") * sp.Function("diag")(_nc("E_k"))), " with ", _nc("P"), " the matrix of columns ",
+            _kron(_nc("e_p"), _nc("v_k")), ", invertible (Eq. 49 with ", eq(_nc("alpha"), _nc("e_p")),
+            ", proved for every order); so ", _nc("B"), " is diagonalizable iff every ", _nc("E_k"),
+            " is (the condition is also necessary: an example with a Jordan block ", _nc("E_0"), ")",
+        ),
         steps=(
             Step("$E_0$ of a CB-matrix whose $B$ is not diagonalizable", E0),
             Step("that CB-matrix", jordan.matrix()),
@@ -337,11 +398,20 @@ def _prop63() -> CheckResult:
     nodiag_ok = chi_J == sp.Poly(sp.expand((x * sp.eye(2) - perturbed_frequency_zero_matrix(jordan, T2)).det() * rest), x)
     if not (other_same and zero_ok and exact_ok and nodiag_ok):
         return CheckResult(Status.ERROR, "a Prop. 6.3 identity failed; see steps")
+    Kn, Tn, In, E_0, k_ = sp.Symbol("K"), _nc("T"), _nc("I"), _nc("E_0"), sp.Symbol("k")
+    t_ij, a_ij = sp.Symbol("t_ij"), sp.Symbol("a_ij")
+
+    def rest_of(last):
+        return sp.Product(_det(x * In - _nc("E_k")), (k_, 1, last))
+
     return CheckResult(
         Status.CORRECTED,
-        "proved for symbolic block order m: only E_0 changes, into E_0 + m T; the printed t_ij = n a_ij (in the proposition n is the number of blocks; "
-        "the factor is the block order m, which in the application is the valence) "
-        "and 'eigenvectors' are wrong, and the hypothesis 'if Remark 6.1 holds' is not needed",
+        Text(
+            "proved for symbolic block order ", M_SYM, ": only ", E_0, " changes, into ", E_0 + M_SYM * Tn,
+            "; the printed ", eq(t_ij, N * a_ij), " (in the proposition ", N, " is the number of blocks; the factor is the "
+            "block order ", M_SYM, ", which in the application is the valence) and 'eigenvectors' are wrong, and the "
+            "hypothesis 'if Remark 6.1 holds' is not needed",
+        ),
         steps=(
             Step("$E_k(C)-E_k(B)$ for $k\\ne0$ (banded blocks plus $t_{pq}J$, symbolic order $m$)", sp.simplify(C.frequency_matrix(zero_frequency=False) - Bm.frequency_matrix(zero_frequency=False))),
             Step("$E_0(C)-E_0(B)$ (Prop. 6.1: $Jv_0=m v_0$, $Jv_k=0$)", zero_shift),
@@ -349,8 +419,20 @@ def _prop63() -> CheckResult:
             Step("its characteristic polynomial", chi_C.as_expr()),
             Step("with the printed $t_{ij}=n a_{ij}$, $n=K=2$, instead of $m=4$", printed.as_expr()),
         ),
-        counterexample="K = 2 blocks of order m = 4 (random rational circulants, T = [[1,-1/2],[2,1/3]]): det(xI - C) = det(xI - E_0 - 4T) prod_{k=1,2,3} det(xI - E_k), not with E_0 + 2T; the non-matching values are eigenvalues (not eigenvectors) of that matrix",
-        correction="For every circulant B (K x K blocks of order m) and constant blocks a_ij: det(xI - (B + A)) = det(xI - (E_0 + m T)) prod_{k=1}^{m-1} det(xI - E_k), t_ij = a_ij, E_0 the eigenvalues of the blocks on (1,...,1). So the eigenvalues of B + A and B agree except for the K eigenvalues of E_0 + m T (replacing those of E_0), whether or not any E_k is diagonalizable; index ranges are 0 <= i, j <= K-1 and 0 <= l, k <= m-1.",
+        counterexample=Text(
+            eq(Kn, K), " blocks of order ", eq(M_SYM, 4), " (random rational circulants, ", eq(Tn, T), "): ",
+            eq(_det(x * In - _nc("C")), _det(x * In - E_0 - 4 * Tn) * rest_of(3)), ", not with ", E_0 + K * Tn,
+            "; the non-matching values are eigenvalues (not eigenvectors) of that matrix",
+        ),
+        correction=Text(
+            "For every circulant ", _nc("B"), " (", Kn, " x ", Kn, " blocks of order ", M_SYM, ") and constant blocks ",
+            a_ij, ": ", eq(_det(x * In - (_nc("B") + _nc("A"))), _det(x * In - (E_0 + M_SYM * Tn)) * rest_of(M_SYM - 1)),
+            ", ", eq(t_ij, a_ij), ", ", E_0, " the eigenvalues of the blocks on ", tup(1, sp.Symbol("..."), 1),
+            ". So the eigenvalues of ", _nc("B") + _nc("A"), " and ", _nc("B"), " agree except for the ", Kn,
+            " eigenvalues of ", E_0 + M_SYM * Tn, " (replacing those of ", E_0, "), whether or not any ", _nc("E_k"),
+            " is diagonalizable; index ranges are ", sp.Symbol("i"), ", ", sp.Symbol("j"), " in ", sp.Interval(0, Kn - 1),
+            " and ", sp.Symbol("l"), ", ", sp.Symbol("k"), " in ", sp.Interval(0, M_SYM - 1), ".",
+        ),
     )
 
 
@@ -379,10 +461,19 @@ def _eq51() -> CheckResult:
     )
     if not (factor_ok and combine_ok and concrete and sign == (-1) ** (N - 1)):
         return CheckResult(Status.ERROR, "a step of the closed form failed")
+    x_ = sp.Symbol("x")
+    rho_p_, rho_m_, c_p_, c_m_ = sp.symbols("rho_+ rho_- c_+ c_-")
     return CheckResult(
         Status.PROVED,
-        "det(xI - S) = (x-1) det(xI - E_0) (rho_+^n + rho_-^n - (-c_+)^n - (-c_-)^n)/q(x,1), derived for symbolic n and weights; "
-        "exact (FLINT) against the matrix for n = 3..16 with alpha, beta free and standard (tests: 3..64, slow: to 128)",
+        Text(
+            eq(
+                _det(x_ * _nc("I") - _nc("S")),
+                (x_ - 1) * _det(x_ * _nc("I") - _nc("E_0"))
+                * (rho_p_**N + rho_m_**N - (-c_p_) ** N - (-c_m_) ** N) / sp.Function("q")(x_, 1),
+            ),
+            ", derived for symbolic ", N, " and weights; exact (FLINT) against the matrix for ", N, " from 3 to 16 with ",
+            ALPHA, ", ", BETA, " free and standard (tests: to 64, slow: to 128)",
+        ),
         steps=(
             Step("$q(x,\\omega)=\\det(xI-M(\\omega))$", cf.frequency_factor),
             Step("$(c_-, c_0, c_+)$", sp.Matrix([list(cf.laurent_coefficients)])),
@@ -429,11 +520,17 @@ def _s_prime() -> CheckResult:
     printed_not_constant = sp.simplify(printed_sums.corner - printed_sums.column[0]) != 0
     if not (form_ok and concrete_ok and printed_not_constant):
         return CheckResult(Status.ERROR, "the derived S' does not have the stated form")
+    Sn, Qn = _nc("S"), _nc("Q")
+    blocks = [_nc(f"C_{k}") for k in range(1, 5)]
     return CheckResult(
         Status.PROVED,
-        "the two operations are S -> Q^{-1} S Q (a similarity); derived on the block form for symbolic n, alpha, beta: "
-        "first column (1, 0, ..., 0), first row (1, alpha 1^T, beta 1^T), lower-right [[C1-A, C2-B], [C3-A, C4-B]]; "
-        "checked entry by entry against Q^{-1} S Q for n = 3..8",
+        Text(
+            "the two operations are the similarity ", Sn, " to ", Qn**-1 * Sn * Qn, "; derived on the block form for symbolic ",
+            N, ", ", ALPHA, ", ", BETA, ": first column ", tup(*([red.reduced.corner, *red.reduced.column] + [sp.Symbol("...")])),
+            ", first row ", tup(first_row[0], *first_row[1]), " (the weight on each ", sp.Symbol("a"), ", each ",
+            sp.Symbol("b"), "), constant parts ", constants, " added to the circulant blocks ", listed(blocks),
+            "; checked entry by entry against ", Qn**-1 * Sn * Qn, " for ", N, " from 3 to 8",
+        ),
         steps=(
             Step("on $S-xI$ ($n=4$) the first column after adding all columns is $(1-x)(1,\\dots,1)^T$, as the text says"),
             Step("first column after adding all columns to it (row sums, symbolic $n$)", sp.Matrix([red.after_columns.corner, *red.after_columns.column])),
@@ -463,10 +560,18 @@ def _two_eigenvalues() -> CheckResult:
     concrete_ok = all(verify_closed_form(scheme, n) for n in range(3, 13))
     if not (free_of_weights and concrete_ok and dependence != sp.zeros(1, 2)):
         return CheckResult(Status.ERROR, "the weights enter a frequency k != 0, or the exact check failed")
+    x_, k_, In, E_0 = sp.Symbol("x"), sp.Symbol("k"), _nc("I"), _nc("E_0")
     return CheckResult(
         Status.PROVED,
-        "for symbolic n, alpha, beta: det(xI - S) = (x-1) det(xI - E_0) prod_{k=1}^{n-1} det(xI - M(omega^k)) and only E_0 contains alpha, beta; "
-        "exact for n = 3..12 with alpha, beta free",
+        Text(
+            "for symbolic ", N, ", ", ALPHA, ", ", BETA, ": ",
+            eq(
+                _det(x_ * In - _nc("S")),
+                (x_ - 1) * _det(x_ * In - E_0) * sp.Product(_det(x_ * In - sp.Function("M")(OMEGA**k_)), (k_, 1, N - 1)),
+            ),
+            " and only ", E_0, " contains ", ALPHA, ", ", BETA, "; exact for ", N, " from 3 to 12 with ", ALPHA, ", ", BETA,
+            " free",
+        ),
         steps=(
             Step("$E_k$ of the CB-block of $S'$ for $k\\ne0$ (free of $\\alpha,\\beta$)", E),
             Step("$E_0 = M(1)+nT$", E0),
@@ -491,15 +596,26 @@ def _no_interference() -> CheckResult:
     larger = sp.simplify(moved - lam1) > 0
     if not larger:
         return CheckResult(Status.ERROR, "counterexample did not hold")
+    k_, E_0 = sp.Symbol("k"), _nc("E_0")
     return CheckResult(
         Status.CORRECTED,
-        "the eigenvalues of frequencies k != 0 (tangent-plane lambda_1, hyperbolic j = 2) do not depend on alpha, beta (proved), "
-        "but the weights can push an E_0 eigenvalue above lambda_1, and then the tangent-plane pair is no longer subdominant",
+        Text(
+            "the eigenvalues of frequencies ", ne(k_, 0), " (tangent-plane ", lambda_1, ", hyperbolic ", eq(j, 2),
+            ") do not depend on ", ALPHA, ", ", BETA, " (proved), but the weights can push an eigenvalue of ", E_0,
+            " above ", lambda_1, ", and then the tangent-plane pair is no longer subdominant",
+        ),
         steps=(
             Step("$E_0$ at $\\alpha=\\beta=0$, $n=3$", E0),
             Step("its larger eigenvalue", moved),
             Step("$\\lambda_1$ at $n=3$ (unchanged by $\\alpha,\\beta$)", lam1),
         ),
-        counterexample=f"n = 3, alpha = beta = 0 (O fixed): E_0 has the eigenvalue {moved} ~ {sp.N(moved, 6)} > lambda_1 = {sp.N(lam1, 6)}, so the subdominant eigenvalue is no longer the tangent-plane one",
-        correction="alpha, beta change only the two eigenvalues of E_0 = M(1) + nT; tangent-plane and hyperbolic behaviour are unaffected provided both stay below lambda_1 in modulus.",
+        counterexample=Text(
+            eq(N, 3), ", ", eq(ALPHA, 0), ", ", eq(BETA, 0), " (O fixed): ", E_0, " has the eigenvalue ", moved, " = ",
+            sp.N(moved, 6), ", larger than ", eq(lambda_1, sp.N(lam1, 6)),
+            ", so the subdominant eigenvalue is no longer the tangent-plane one",
+        ),
+        correction=Text(
+            ALPHA, ", ", BETA, " change only the two eigenvalues of ", eq(E_0, sp.Function("M")(1) + N * _nc("T")),
+            "; tangent-plane and hyperbolic behaviour are unaffected provided both stay below ", lambda_1, " in modulus.",
+        ),
     )

@@ -8,7 +8,7 @@ from symdecomp.verify.certify import certify, symmetric_functions
 from symdecomp.analysis.closed_forms import derived_closed_forms
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import lam
-from symdecomp.claims.registry import CheckResult, Status, Step, claim
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 
 #: The valences proved by the claim's check (a second or two; ``symdecomp check`` does more).
 VALENCES = (3, 48)
@@ -49,8 +49,11 @@ def _full_spectrum() -> CheckResult:
         "multiplicities certified by Arb clusters against the squarefree part"))
     return CheckResult(
         Status.VERIFIED,
-        "det(lambda I - S) equals the closed forms' characteristic polynomial, multiplicities certified "
-        "(symdecomp check --certify extends the range)",
+        Text(
+            sp.Function("det")(lam * sp.Symbol("I", commutative=False) - sp.Symbol("S", commutative=False)),
+            " equals the closed forms' characteristic polynomial, multiplicities certified "
+            "(symdecomp check --certify extends the range)",
+        ),
         steps=tuple(steps),
         valences=VALENCES,
     )

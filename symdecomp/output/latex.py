@@ -192,8 +192,15 @@ def findings_latex(text, *, displays: bool = True) -> str:
         if isinstance(part, str):
             out.append(text_latex(part, displays=displays))
         else:
-            out.append("$%s$" % _clean_math(sp.latex(part)))
+            out.append(_inline_math(_clean_math(sp.latex(part)), displays=displays))
     return "".join(out)
+
+
+def _inline_math(math: str, *, displays: bool) -> str:
+    """A formula inside prose; one too wide to sit in a line of text is displayed (unless ``displays`` is false)."""
+    if displays and estimate_width(math) > _INLINE_LIMIT:
+        return "\n\\[\n\\fitwidth{%s}\n\\]\n" % math.strip()
+    return "$" + math + "$"
 
 
 def text_latex(text: str, *, displays: bool = True) -> str:
@@ -226,10 +233,7 @@ def text_latex(text: str, *, displays: bool = True) -> str:
         math = _clean_math(part)
         if not math.strip():
             continue
-        if displays and estimate_width(math) > _INLINE_LIMIT:
-            out.append("\n\\[\n\\fitwidth{%s}\n\\]\n" % math.strip())
-        else:
-            out.append("$" + math + "$")
+        out.append(_inline_math(math, displays=displays))
     return "".join(out)
 
 

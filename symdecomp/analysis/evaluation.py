@@ -36,11 +36,13 @@ from dataclasses import dataclass
 
 import mpmath
 import numpy as np
+import sympy as sp
 
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch_eigendata
-from symdecomp.analysis.masks import limit_masks_at
+from symdecomp.analysis.masks import INDEX, LAMBDA1, limit_masks
 from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import n as N
 
 __all__ = ["EvaluationError", "PatchEvaluator", "bspline_basis", "patch_order", "patch_masks", "curvatures"]
 
@@ -102,7 +104,7 @@ class PatchEvaluator:
             values = np.array([mp(x) for x in data.values], dtype=object)
             inverse = np.array([[mp(data.inverse[i, j]) for j in range(size)] for i in range(size)], dtype=object)
             phi = np.array([[[mp(t[i, l]) for l in range(16)] for i in range(size)] for t in data.phi], dtype=object)
-            pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(e.evalf(dps + 10)) if e != 0 else mpmath.mpf(0))
+            pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(sp.N(e, dps + 10)) if isinstance(e, sp.Basic) else mpmath.mpf(e))
         return cls(n, values, inverse, phi, pos, tan, dps + 10)
 
     def evaluate(self, control_points, u, v) -> dict:
@@ -211,10 +213,24 @@ def curvatures(result: dict) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _masks(scheme: Scheme, n: int, conv):
-    m = limit_masks_at(scheme, n)
+    """The masks of :mod:`symdecomp.analysis.masks` at valence ``n`` in patch order, through ``conv``.
+
+    The closed forms are evaluated with mpmath (one compiled function per weight) rather than
+    by substituting every index: the exact masks at ``n = 128`` would take seconds.
+    """
+    m = limit_masks(scheme)
     order = patch_order(n)
-    pos = np.array([conv(m.position[i]) for i in order] + [conv(0)] * 7, dtype=object)
-    tan = np.array([[conv(t[i]) for i in order] + [conv(0)] * 7 for t in m.tangents], dtype=object)
+    with mpmath.workdps(max(mpmath.mp.dps, 30)):
+        lam1 = mpmath.mpf(sp.N(m.subdominant.subs(N, n), mpmath.mp.dps + 5))
+        position = [m.position[0].subs(N, n)] + [m.position[1].subs(N, n)] * n + [m.position[2].subs(N, n)] * n
+        pos = [conv(position[i]) for i in order]
+        tangents = []
+        for a_w, b_w in zip(m.tangent_a, m.tangent_b):
+            fa, fb = (sp.lambdify((N, INDEX, LAMBDA1), w, "mpmath") for w in (a_w, b_w))
+            mask = [0] + [fa(n, i, lam1) for i in range(n)] + [fb(n, i, lam1) for i in range(n)]
+            tangents.append([conv(mask[i]) for i in order])
+    pos = np.array(pos + [conv(0)] * 7, dtype=object)
+    tan = np.array([t + [conv(0)] * 7 for t in tangents], dtype=object)
     if conv is float:
         pos, tan = pos.astype(float), tan.astype(float)
     return pos, tan

@@ -27,11 +27,11 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 import mpmath  # noqa: E402
 
-from symdecomp.verify.certify import certify, symmetric_functions  # noqa: E402
-from symdecomp.cli.check_cmd import check_valences  # noqa: E402
 from symdecomp.analysis.closed_forms import derived_closed_forms  # noqa: E402
-from symdecomp.verify.numeric import numeric_check  # noqa: E402
+from symdecomp.cli.check_cmd import check_valences  # noqa: E402
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix  # noqa: E402
+from symdecomp.verify.certify import certify, symmetric_functions  # noqa: E402
+from symdecomp.verify.numeric import numeric_check  # noqa: E402
 
 
 def baseline(scheme, n: int, dps: int) -> tuple[float, int]:
@@ -98,7 +98,7 @@ def main(argv=None) -> int:
 
     long = list(range(3, args.certify_max + 1))
     for jobs in (1, 2):
-        t, rows = timed(lambda: list(check_valences(scheme, long, certified=True, jobs=jobs, show_progress=False)))
+        t, rows = timed(lambda: list(check_valences(scheme, long, certified=True, jobs=jobs, show_progress=False)))  # noqa: B023 (called at once)
         ok = all(r.ok for r in rows)
         print(f"  certified check, n = 3..{args.certify_max}, {jobs} process(es): {t:8.3f} s  "
               f"({'all agree' if ok else 'FAILURES'})")

@@ -31,8 +31,8 @@ import numpy as np  # noqa: E402
 from symdecomp.analysis.eigendata import rounded_eigendata  # noqa: E402
 from symdecomp.analysis.evaluation import PatchEvaluator  # noqa: E402
 from symdecomp.output.evaldata import binary_bytes, write_atomic  # noqa: E402
-from symdecomp.verify.patch_eval import baseline_error, numpy_baseline  # noqa: E402
 from symdecomp.schemes.scheme import catmull_clark  # noqa: E402
+from symdecomp.verify.patch_eval import baseline_error, numpy_baseline  # noqa: E402
 
 TARGET_SECONDS = 60.0
 

@@ -5,18 +5,20 @@ quadrilateral subdivision meshes*. The package is layered; each folder imports o
 ones above it in this list (``tests/test_layers.py`` checks it):
 
 =================  ===========================================================================
-``errors``,        the package's error types; the symbols ``n``, ``omega``, ``alpha``, ``beta``
-``symbols``
-``algebra/``       no scheme knowledge: circulants and the Fourier matrix (Section 2,
+``errors``,        the package's error types; the symbols ``n``, ``omega``, ``alpha``, ``beta``,
+``symbols``        ``cos_jtheta`` (``c = cos(j pi/n)``) and ``sin_jtheta``
+``algebra/``       no scheme knowledge: circulants and the Fourier matrix and its rows (Section 2,
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
                    exact/interval evaluation of expressions (``compile``), small exact
                    eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``)
-``schemes/``       a scheme as data (edge, face, vertex rules, ``scheme``), its subdivision
-                   matrix (Eq. 13-16, ``scheme``; exact FLINT matrices, ``matrices``), whole quad
-                   meshes refined by its rules (Section 3, ``mesh``), the 1-ring as a pair of
-                   polygons (Section 4, ``ring``), Stam's (2N+8)-point patch matrix (``patch``)
-``analysis/``      per-frequency matrices M_j and the Eq. 43 matrix (``frequency``), spectra
+``schemes/``       a scheme as data (edge, face, vertex rules) and the one assembly of its
+                   subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
+                   rationals and its characteristic polynomial (``full_matrix``), rules as
+                   polynomials in the index shift (Eq. 17-23, ``shift_stencil``), whole quad
+                   meshes refined by its rules (Section 3, ``mesh``), the 1-ring and its 2n-gon
+                   (Eq. 10-13, ``ring``), Stam's (2N+8)-point patch matrix (``patch``)
+``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
                    ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
@@ -25,8 +27,9 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``support``), rings iterated step by step (``evolution``), the patch's
                    certified eigen-data (``eigendata``) and exact evaluation (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
-                   (``certify``), OpenSubdiv (``oracle``, ``opensubdiv``), dyadic limit
-                   positions for the evaluator (``patch_eval``)
+                   (``certify``), both returning a ``CrossCheckResult`` (``result``),
+                   OpenSubdiv (``oracle``, ``opensubdiv``), dyadic limit positions for the
+                   patch evaluator (``patch_eval``)
 ``claims/``        the paper's claims, one module per section, and their registry
 ``output/``        LaTeX (``latex``, one entry point ``aslatex``), figures (``plotting``), Stam's
                    data file (``evaldata``)
@@ -42,16 +45,30 @@ from symdecomp.algebra.cbmatrix import (
     SymbolicCBMatrix,
     SymbolicCirculant,
     block_diagonalization,
+    block_eigenvalue_matrix,
     cb_eigensystem,
     cb_matrix,
     cb_matrix_from,
     constant_blocks,
-    frequency_matrix,
     lifted_vector,
-    perturbed_frequency_zero_matrix,
+    perturbed_block_eigenvalue_matrix,
 )
-from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial, matrix_characteristic_polynomial
 from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
+from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
+from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
+from symdecomp.analysis.eigendata import NotDiagonalizableError, certified_eigendata
+from symdecomp.analysis.ellipses import ellipse_axes
+from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
+from symdecomp.analysis.evaluation import PatchEvaluator
+from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
+from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
+from symdecomp.analysis.masks import limit_masks, limit_masks_at
+from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, recursion_eigenvalues
+from symdecomp.analysis.support import Region, classify_support
+from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from symdecomp.analysis.tuning import joint_obstruction, tune
 from symdecomp.claims import CheckResult, Claim, Status, Step, all_claims, check_claim, get_claim
 from symdecomp.errors import (
     FrequencyOutOfRangeError,
@@ -62,26 +79,13 @@ from symdecomp.errors import (
     SymdecompError,
 )
 from symdecomp.output.latex import aslatex
-from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
-from symdecomp.analysis.frequency import circulant_blocks, frequency_zero_matrix, per_frequency_matrix, per_frequency_matrix_at
-from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
-from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, frequency_zero_eigenvalues
-from symdecomp.verify.certify import Certificate, certify
-from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.verify.numeric import CheckStatus, NumericCheck, numeric_check
-from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
-from symdecomp.schemes.matrices import characteristic_polynomial, exact_subdivision_matrix
-from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
-from symdecomp.analysis.ellipses import ellipse_axes
-from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
-from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.analysis.tuning import joint_obstruction, tune
+from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
-from symdecomp.analysis.support import Region, classify_support
 from symdecomp.schemes.patch import patch_matrices
-from symdecomp.analysis.eigendata import NotDiagonalizableError, certified_eigendata
-from symdecomp.analysis.evaluation import PatchEvaluator
+from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
+from symdecomp.verify.certify import Certificate, certify
+from symdecomp.verify.numeric import NumericCheck, numeric_check
+from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
 __version__ = "0.1.0"
 
@@ -103,7 +107,7 @@ __all__ = [
     "circulant_blocks",
     "per_frequency_matrix",
     "per_frequency_matrix_at",
-    "frequency_zero_matrix",
+    "recursion_matrix",
     # Section 5.1
     "tangent_eigenvalues",
     "invariant_ratio",
@@ -111,7 +115,7 @@ __all__ = [
     "invariant_ratio_limit",
     "Spectrum",
     "closed_form_spectrum",
-    "frequency_zero_eigenvalues",
+    "recursion_eigenvalues",
     # Section 5.2-5.3 and limit masks
     "nice_elliptic_conditions",
     "elliptic_defect_table",
@@ -127,19 +131,18 @@ __all__ = [
     "CBMatrix",
     "cb_matrix",
     "cb_matrix_from",
-    "frequency_matrix",
+    "block_eigenvalue_matrix",
     "lifted_vector",
     "block_diagonalization",
     "cb_eigensystem",
     "constant_blocks",
-    "perturbed_frequency_zero_matrix",
+    "perturbed_block_eigenvalue_matrix",
     "SymbolicCirculant",
     "SymbolicCBMatrix",
     "subdivision_block_form",
     "reduce_first_column",
     "ClosedFormCharpoly",
     "closed_form_characteristic_polynomial",
-    "matrix_characteristic_polynomial",
     # Section 3: whole meshes and supports
     "QuadMesh",
     "ring_mesh",
@@ -160,7 +163,8 @@ __all__ = [
     "NumericCheck",
     "certify",
     "Certificate",
-    "CheckStatus",
+    "CrossCheckStatus",
+    "CrossCheckResult",
     "exact_subdivision_matrix",
     "characteristic_polynomial",
     "jordan_vertex_weights",

@@ -38,8 +38,8 @@ from __future__ import annotations
 
 import ast
 import numbers
+from collections.abc import Mapping
 from fractions import Fraction
-from typing import Mapping
 
 import sympy as sp
 
@@ -155,7 +155,9 @@ def _build(node: ast.AST, names: Mapping[str, sp.Expr], where: str, depth: int, 
         if node.keywords or len(node.args) != 1:
             raise InvalidExpressionError(f"{where}: {node.func.id} takes one argument")
         return _FUNCTIONS[node.func.id](_build(node.args[0], names, where, deeper, source))
-    raise InvalidExpressionError(f"{where}: only numbers, + - * / **, parentheses, {', '.join(sorted(names))} and {', '.join(_FUNCTIONS)} are allowed")
+    raise InvalidExpressionError(
+        f"{where}: only numbers, + - * / **, parentheses, {', '.join(sorted(names))} and {', '.join(_FUNCTIONS)} are allowed"
+    )
 
 
 def exact_value(value, symbols: Mapping[str, sp.Symbol] | None = None, *, argument: str = "value") -> sp.Expr:

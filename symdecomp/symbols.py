@@ -2,7 +2,7 @@
 
 import sympy as sp
 
-__all__ = ["n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "theta"]
+__all__ = ["n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "sin_jtheta", "cos_theta"]
 
 #: The valence of the central vertex O.
 n = sp.Symbol("n", integer=True, positive=True)
@@ -15,7 +15,9 @@ alpha = sp.Symbol("alpha", real=True)
 beta = sp.Symbol("beta", real=True)
 #: An eigenvalue.
 lam = sp.Symbol("lambda")
-#: ``theta = pi/n`` of Eq. 34.
-theta = sp.pi / n
-#: ``cos(j*theta)``, the variable in which Eq. 34 is written.
-cos_jtheta = sp.cos(sp.pi * j / n)
+#: ``c = cos(j*theta)`` with ``theta = pi/n``: the variable in which Eq. 34 is written (a real symbol).
+cos_jtheta = sp.Symbol("c", real=True)
+#: ``s = sin(j*theta)``; it disappears for mirror-symmetric schemes.
+sin_jtheta = sp.Symbol("s", real=True)
+#: ``c = cos(theta) = cos(pi/n)``: ``cos_jtheta`` at frequency ``j = 1``, positive (``>= 1/2`` for ``n >= 3``).
+cos_theta = sp.Symbol("c", positive=True)

@@ -11,13 +11,13 @@ from symdecomp.algebra.cbmatrix import (
     SymbolicCBMatrix,
     SymbolicCirculant,
     block_diagonalization,
+    block_eigenvalue_matrix,
     cb_eigensystem,
     cb_matrix,
     cb_matrix_from,
     constant_blocks,
-    frequency_matrix,
     lifted_vector,
-    perturbed_frequency_zero_matrix,
+    perturbed_block_eigenvalue_matrix,
 )
 from symdecomp.algebra.circulant import circ, circ_from_offsets, fourier_matrix
 from symdecomp.errors import SymdecompError
@@ -52,7 +52,7 @@ def test_lift_identity_on_random_rational_cb_matrices(K, m, seed):
     for k in range(m):
         v = list(F.row(k))
         lhs = sp.Matrix(B.matrix()) * sp.Matrix(lifted_vector(a, v))
-        rhs = sp.Matrix(lifted_vector(list(sp.Matrix(frequency_matrix(B, k)) * sp.Matrix(a)), v))
+        rhs = sp.Matrix(lifted_vector(list(sp.Matrix(block_eigenvalue_matrix(B, k)) * sp.Matrix(a)), v))
         assert is_zero_matrix(lhs - rhs)
 
 
@@ -70,7 +70,7 @@ def test_eigensystem_is_a_basis_when_every_E_is_diagonalizable():
     B = random_cb(2, 4, 11)
     pairs = cb_eigensystem(B)
     vectors = []
-    for value, k, vecs in pairs:
+    for value, _k, vecs in pairs:
         for V in vecs:
             assert sp.expand(sp.Matrix(B.matrix()) * V - value * V) == sp.zeros(8, 1)
             vectors.append(V)
@@ -79,7 +79,7 @@ def test_eigensystem_is_a_basis_when_every_E_is_diagonalizable():
 
 def test_non_diagonalizable_E_gives_non_diagonalizable_B():
     J = cb_matrix([[[1, 0, 0], [1, 0, 0]], [[0, 0, 0], [1, 0, 0]]])
-    assert frequency_matrix(J, 0) == sp.Matrix([[1, 1], [0, 1]])
+    assert block_eigenvalue_matrix(J, 0) == sp.Matrix([[1, 1], [0, 1]])
     assert not sp.Matrix(J.matrix()).is_diagonalizable()
 
 
@@ -93,11 +93,11 @@ def test_constant_blocks_change_only_frequency_zero(seed):
     T = sp.Matrix(2, 2, lambda i, j: sp.Rational(rng.randint(-5, 5), rng.randint(1, 4)))
     C = B + constant_blocks(T, m)
     lhs = sp.Matrix(C.matrix()).charpoly(x).as_expr()
-    rhs = (x * sp.eye(2) - perturbed_frequency_zero_matrix(B, T)).det()
+    rhs = (x * sp.eye(2) - perturbed_block_eigenvalue_matrix(B, T)).det()
     for k in range(1, m):
-        rhs *= (x * sp.eye(2) - frequency_matrix(B, k)).det()
+        rhs *= (x * sp.eye(2) - block_eigenvalue_matrix(B, k)).det()
     assert sp.expand(lhs - rhs) == 0
-    assert perturbed_frequency_zero_matrix(B, T) == frequency_matrix(C, 0)
+    assert perturbed_block_eigenvalue_matrix(B, T) == block_eigenvalue_matrix(C, 0)
 
 
 def test_constant_matrix_prop61_corrected():
@@ -123,9 +123,10 @@ def test_symbolic_cb_frequency_matrices_match_concrete():
     )
     S = SymbolicCBMatrix(blocks)
     concrete = S.concrete(4)
-    assert sp.Matrix(frequency_matrix(concrete, 0)) == sp.Matrix(S.frequency_matrix(zero_frequency=True, order=4))
+    assert sp.Matrix(block_eigenvalue_matrix(concrete, 0)) == sp.Matrix(S.block_eigenvalue_matrix(zero_frequency=True, order=4))
     for k in (1, 2, 3):
-        assert sp.expand(sp.Matrix(frequency_matrix(concrete, k)) - S.frequency_matrix(zero_frequency=False).subs(omega, sp.I**k)) == sp.zeros(2, 2)
+        symbolic = S.block_eigenvalue_matrix(zero_frequency=False).subs(omega, sp.I**k)
+        assert sp.expand(sp.Matrix(block_eigenvalue_matrix(concrete, k)) - symbolic) == sp.zeros(2, 2)
 
 
 def test_bad_input_is_named():
@@ -138,7 +139,7 @@ def test_bad_input_is_named():
     with pytest.raises(NotCirculantBlockError, match="square"):
         cb_matrix([[[1, 2], [1, 2]]])
     with pytest.raises(SymdecompError, match="frequency"):
-        frequency_matrix(random_cb(2, 3, 0), 3)
+        block_eigenvalue_matrix(random_cb(2, 3, 0), 3)
     assert isinstance(random_cb(2, 3, 0), CBMatrix)
 
 
@@ -150,5 +151,5 @@ def test_lift_identity_with_symbolic_blocks():
     for k in range(3):
         v = list(F.row(k))
         lhs = sp.Matrix(B.matrix()) * sp.Matrix(lifted_vector(a, v))
-        rhs = sp.Matrix(lifted_vector(list(sp.Matrix(frequency_matrix(B, k)) * sp.Matrix(a)), v))
+        rhs = sp.Matrix(lifted_vector(list(sp.Matrix(block_eigenvalue_matrix(B, k)) * sp.Matrix(a)), v))
         assert is_zero_matrix(lhs - rhs)

@@ -7,14 +7,14 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.verify.certify import certify, closed_form_characteristic_value, symmetric_functions
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.verify.numeric import CheckStatus
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
 from symdecomp.errors import InvalidSchemeError, InvalidValenceError
-from symdecomp.schemes.matrices import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta, lam
+from symdecomp.verify.certify import certify, closed_form_characteristic_value, symmetric_functions
+from symdecomp.verify.result import CrossCheckStatus
 
 CC = catmull_clark()
 FREE = catmull_clark(alpha, beta)
@@ -61,7 +61,8 @@ def test_resultant_step_equals_direct_product_of_closed_forms(n):
     """Step 2 of the proof (resultants, signs) against a 40-digit product over the closed forms."""
     cf = derived_closed_forms(CC)
     points = [0, 1, sp.Rational(-3, 7), 2]
-    exact = closed_form_characteristic_value(symmetric_functions(cf), n, {}, [flint.fmpq(int(p.p), int(p.q)) if isinstance(p, sp.Rational) else p for p in points])
+    rational_points = [flint.fmpq(int(p.p), int(p.q)) if isinstance(p, sp.Rational) else p for p in points]
+    exact = closed_form_characteristic_value(symmetric_functions(cf), n, {}, rational_points)
     with mpmath.workdps(40):
         values = cf.values(n, {})
         for p, e in zip(points, exact):
@@ -73,7 +74,7 @@ def test_resultant_step_equals_direct_product_of_closed_forms(n):
 @pytest.mark.parametrize("n", list(range(3, 41)))
 def test_certified_for_every_valence_up_to_40(n):
     r = certify(CC, n)
-    assert r.status is CheckStatus.AGREE, r.message
+    assert r.status is CrossCheckStatus.AGREE, r.message
     assert r.multiplicities_certified
     assert sum(r.multiplicities) == 2 * n + 1
     # the number of distinct eigenvalues is the degree of the squarefree part of chi_S
@@ -131,7 +132,7 @@ def _shifted(cf, offset, which=0):
 def test_wrong_dominant_closed_form_is_refuted_naming_valence_and_eigenvalue():
     wrong = _shifted(derived_closed_forms(CC), sp.Rational(1, 10**40))
     r = certify(CC, 5, closed_forms=wrong)
-    assert r.status is CheckStatus.DISAGREE
+    assert r.status is CrossCheckStatus.DISAGREE
     assert "n = 5" in r.message and "Eq. 34 dominant" in r.message and "0.5499883545" in r.message
     assert "distance 1.00e-40" in r.message
 
@@ -143,17 +144,17 @@ def test_tiny_error_below_any_tolerance_is_still_refuted():
     wrong = dataclasses.replace(cf, frequency_k=(cf.frequency_k[0] + eps, cf.frequency_k[1] + eps))
     assert symmetric_functions(wrong).trace is not None
     r = certify(CC, 7, closed_forms=wrong)
-    assert r.status is CheckStatus.DISAGREE and "n = 7" in r.message
+    assert r.status is CrossCheckStatus.DISAGREE and "n = 7" in r.message
     # at too low a precision nothing can be shown either way: undecided, never agree
     r = certify(CC, 7, closed_forms=wrong, max_prec=128)
-    assert r.status is CheckStatus.UNDECIDED and not r.ok
+    assert r.status is CrossCheckStatus.UNDECIDED and not r.ok
 
 
 def test_wrong_multiplicity_is_refuted():
     cf = derived_closed_forms(CC)
     wrong = dataclasses.replace(cf, frequency_k=(cf.frequency_k[0], cf.frequency_k[0]))
     r = certify(CC, 5, closed_forms=wrong)
-    assert r.status is CheckStatus.DISAGREE
+    assert r.status is CrossCheckStatus.DISAGREE
     assert "n = 5" in r.message and "multiplicity in the full matrix is 2" in r.message
 
 
@@ -162,7 +163,7 @@ def test_wrong_frequency_zero_closed_form_is_refuted():
     zero = list(cf.frequency_zero)
     zero[1] = zero[1] * (1 + sp.Rational(1, 10**30))
     r = certify(CC, 7, closed_forms=dataclasses.replace(cf, frequency_zero=tuple(zero)))
-    assert r.status is CheckStatus.DISAGREE
+    assert r.status is CrossCheckStatus.DISAGREE
     assert "n = 7" in r.message and "Eq. 43 root 2" in r.message
 
 

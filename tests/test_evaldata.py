@@ -66,9 +66,7 @@ def test_regular_patch_matrix_is_the_bspline_refinement():
 @pytest.mark.parametrize("n", [3, 4, 5, 8, 12])
 def test_eigendata_certified_against_the_full_matrix(n):
     data = patch_eigendata(CC, n, 160)
-    old = flint.ctx.prec
-    flint.ctx.prec = 160
-    try:
+    with flint.ctx.workprec(160):
         a = flint.arb_mat(patch_matrices(CC, n).matrix)
         lam = flint.arb_mat(data.size, data.size)
         for i, x in enumerate(data.values):
@@ -81,15 +79,11 @@ def test_eigendata_certified_against_the_full_matrix(n):
         lam[1, 1] += flint.arb(10) ** -30
         residual = a * data.vectors - data.vectors * lam
         assert not all(residual[i, 1].contains(0) for i in range(data.size))
-    finally:
-        flint.ctx.prec = old
 
 
 def test_rounding_is_correct_or_refused():
     assert round_ball(flint.arb(1) / 3) is None  # 53 bits (the default context) cannot decide
-    old = flint.ctx.prec
-    flint.ctx.prec = 200
-    try:
+    with flint.ctx.workprec(200):
         assert round_ball(flint.arb(1) / 3) == 1 / 3
         assert round_ball(flint.arb(2) ** -1100) == 0.0
         assert round_ball(flint.arb("0.5 +/- 1e-10")) is None
@@ -98,8 +92,6 @@ def test_rounding_is_correct_or_refused():
         assert round_ball(1 + flint.arb(2) ** -53 - flint.arb(2) ** -120) == 1.0
         third = [round_ball(flint.arb(k) / 3) for k in range(1, 200)]
         assert third == [float(Fraction(k, 3)) for k in range(1, 200)]
-    finally:
-        flint.ctx.prec = old
 
 
 def test_regular_spectrum_exact():

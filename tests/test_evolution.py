@@ -91,7 +91,7 @@ def test_regular_case_has_nice_elliptic_properties():
 
 def test_valence_six_grows_kappa_at_mu_over_lambda1_squared():
     profile = evolution.elliptic_profile(CC, evolution.tangent_configuration(6, (0, 1, 1)), 14)
-    mu = float(sp.N(sd.frequency_zero_eigenvalues(CC)[1].subs(sd.symbols.n, 6), 20))
+    mu = float(sp.N(sd.recursion_eigenvalues(CC)[1].subs(sd.symbols.n, 6), 20))
     lam1 = max(abs(complex(sp.N(v))) for v in sd.tangent_eigenvalues(CC).at(6, 1))
     assert abs(profile.kappa_a[-1] / profile.kappa_a[-2] - mu / lam1**2) < 1e-6
 

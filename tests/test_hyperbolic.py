@@ -5,8 +5,8 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.elliptic import tangent_lambda
-from symdecomp.errors import InvalidValenceError
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, hyperbolic_ring, iterate_hyperbolic_ring
+from symdecomp.errors import InvalidValenceError
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 

@@ -11,14 +11,14 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
-
 from latex_cases import long_product, long_sum, stress_pairs
+
 from symdecomp.claims import CheckResult, Status, Step
 from symdecomp.cli import main
 from symdecomp.cli.derive_cmd import write_derivations
 from symdecomp.output.latex import aslatex, derivation_files, display_math, section_file_name, text_latex
-from symdecomp.symbols import alpha, n, omega
 from symdecomp.output.texlayout import LINE_WIDTH_EM, break_pieces, estimate_width
+from symdecomp.symbols import alpha, n, omega
 
 COMMITTED = Path(__file__).resolve().parents[1] / "derivations"
 PDFLATEX = shutil.which("pdflatex")

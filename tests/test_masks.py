@@ -6,8 +6,8 @@ import mpmath
 import pytest
 import sympy as sp
 
+from symdecomp.analysis.masks import check_masks_exactly, limit_masks
 from symdecomp.cli import main
-from symdecomp.analysis.masks import check_masks_exactly, limit_masks, limit_masks_at
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 
@@ -68,14 +68,6 @@ def test_the_residual_check_can_fail(capsys):
     bad = dict(data["tangents"][0])
     bad["b"] = [str(2 * mpmath.mpf(x)) for x in bad["b"]]
     assert _residual(bad, 5, data["subdominant"]) > 1e-3
-
-
-def test_regular_case_values():
-    m = limit_masks_at(CC, 4)
-    assert m.position == (sp.Rational(4, 9),) + (sp.Rational(1, 9),) * 4 + (sp.Rational(1, 36),) * 4
-    assert sp.simplify(m.subdominant - sp.Rational(1, 2)) == 0
-    # the familiar 4 : 1 ratio of the regular tangent mask (a_0 : b_0 weights 1 : 1/4)
-    assert sp.simplify(m.tangents[0][1]) == 1 and sp.simplify(m.tangents[0][5] - sp.Rational(1, 4)) == 0
 
 
 def test_cli_masks_text_and_bad_valence(capsys):

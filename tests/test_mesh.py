@@ -19,7 +19,9 @@ def _random_mesh(n, rings, seed, dim=1):
 
 
 def _column(ring, coord=0):
-    return sp.Matrix([sp.sympify(x[coord]) if not isinstance(x[coord], Fraction) else sp.Rational(x[coord].numerator, x[coord].denominator) for x in ring])
+    return sp.Matrix(
+        [sp.sympify(x[coord]) if not isinstance(x[coord], Fraction) else sp.Rational(x[coord].numerator, x[coord].denominator) for x in ring]
+    )
 
 
 def test_catmull_clark_mesh_rules_are_the_textbook_ones():

@@ -12,12 +12,12 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from symdecomp.analysis.support import limit_mask
 from symdecomp.cli import main
 from symdecomp.errors import SymdecompError
 from symdecomp.schemes.mesh import central_rings, ring_mesh
-from symdecomp.verify.opensubdiv import build as osd_build
 from symdecomp.schemes.scheme import catmull_clark
-from symdecomp.analysis.support import limit_mask
+from symdecomp.verify.opensubdiv import build as osd_build
 
 if not osd_build.headers_present():
     pytest.skip("OpenSubdiv headers (libosd-dev) or g++ not installed", allow_module_level=True)

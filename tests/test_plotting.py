@@ -65,7 +65,7 @@ def test_unmatched_eigenvalues_of_a_cb_matrix_plus_constant_blocks():
     C = B + cbmatrix.constant_blocks(T, B.order)
     moved_to, moved_from = cbplots.unmatched_eigenvalues(cbplots.numeric_eigenvalues(B.matrix()), cbplots.numeric_eigenvalues(C.matrix()))
     assert len(moved_to) == len(moved_from) == 2
-    predicted = cbplots.numeric_eigenvalues(cbmatrix.perturbed_frequency_zero_matrix(B, T))
+    predicted = cbplots.numeric_eigenvalues(cbmatrix.perturbed_block_eigenvalue_matrix(B, T))
     unmatched, _ = cbplots.unmatched_eigenvalues(predicted, moved_to)
     assert len(unmatched) == 0, f"moved to {moved_to}, predicted {predicted}"
 
@@ -101,9 +101,9 @@ def test_figures_have_titles_and_labelled_axes():
 
 
 def test_geometry_figures_have_titles_and_labelled_axes():
-    from symdecomp.analysis import elliptic, evolution, tuning
-    from symdecomp.output.plotting import elliptic as eplots
     from symdecomp.algebra.polygons import decompose
+    from symdecomp.analysis import elliptic, evolution
+    from symdecomp.output.plotting import elliptic as eplots
 
     P = np.random.default_rng(0).normal(size=(5, 3))
     _assert_labelled(pplots.decomposition_figure(P, pplots.regular_components(decompose(P))))

@@ -3,8 +3,8 @@
 import pytest
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError
 from symdecomp.analysis.reduction import BorderedCBMatrix, reduce_first_column, reduction_similarity, subdivision_block_form
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta
 

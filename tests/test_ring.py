@@ -54,9 +54,13 @@ def test_exact_subdivision_of_the_regular_ring():
 
 def test_mpmath_ring_keeps_precision():
     with mpmath.workdps(50):
-        ring = OneRing.from_points([mpmath.mpf(1) / 3] * 3, [[mpmath.mpf(k) / 7, 1, 0] for k in range(5)], [[0, mpmath.mpf(k) / 9, 1] for k in range(5)])
+        a = [[mpmath.mpf(k) / 7, 1, 0] for k in range(5)]
+        b = [[0, mpmath.mpf(k) / 9, 1] for k in range(5)]
+        ring = OneRing.from_points([mpmath.mpf(1) / 3] * 3, a, b)
         out = subdivide(catmull_clark(), ring, steps=2)
-        exact = subdivide(catmull_clark(), OneRing.from_points([sp.Rational(1, 3)] * 3, [[sp.Rational(k, 7), 1, 0] for k in range(5)], [[0, sp.Rational(k, 9), 1] for k in range(5)]), steps=2)
+        a = [[sp.Rational(k, 7), 1, 0] for k in range(5)]
+        b = [[0, sp.Rational(k, 9), 1] for k in range(5)]
+        exact = subdivide(catmull_clark(), OneRing.from_points([sp.Rational(1, 3)] * 3, a, b), steps=2)
         assert abs(out.center[0] - mpmath.mpf(sp.Rational(exact.center[0]).p) / sp.Rational(exact.center[0]).q) < mpmath.mpf(10) ** -45
 
 

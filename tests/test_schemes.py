@@ -23,11 +23,6 @@ def test_matrix_blocks_are_the_derived_circulants(valence):
     assert [sp.simplify(sum(S.row(r))) for r in range(2 * m + 1)] == [1] * (2 * m + 1)
 
 
-def test_standard_catmull_clark_vertex_rule():
-    S = subdivision_matrix(catmull_clark(), 5)
-    assert S[0, 0] == 1 - R(7, 20) and S[0, 1] == R(3, 50) and S[0, 6] == R(1, 100)
-
-
 def test_user_defined_scheme_without_touching_the_package():
     edge = Stencil.from_weights(R(1, 2), {0: R(1, 4)}, {0: R(1, 8), -1: R(1, 8)}, name="my edge rule")
     face = Stencil.from_weights(R(1, 4), {0: R(1, 4), 1: R(1, 4)}, {0: R(1, 4)}, name="my face rule")

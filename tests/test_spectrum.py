@@ -3,7 +3,6 @@
 import json
 
 import flint
-
 import mpmath
 import pytest
 import sympy as sp
@@ -68,11 +67,11 @@ def test_n4_has_one_quarter_three_times_exactly():
 
 def test_frequency_zero_block_closed_form_is_catmull_clarks():
     # derived from the rules; compare with the eigenvalues of the 3x3 matrix computed by sympy at n = 7
-    from symdecomp import frequency_zero_eigenvalues, frequency_zero_matrix
+    from symdecomp import recursion_eigenvalues, recursion_matrix
     from symdecomp.symbols import n
 
-    closed = sorted(sp.N(e.subs(n, 7), 40) for e in frequency_zero_eigenvalues(catmull_clark()))
-    direct = sorted(sp.N(e, 40) for e in frequency_zero_matrix(catmull_clark(), 7).eigenvals(multiple=True))
+    closed = sorted(sp.N(e.subs(n, 7), 40) for e in recursion_eigenvalues(catmull_clark()))
+    direct = sorted(sp.N(e, 40) for e in recursion_matrix(catmull_clark(), 7).eigenvals(multiple=True))
     assert all(abs(a - b) < 1e-35 for a, b in zip(closed, direct))
 
 

@@ -6,11 +6,11 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
+from symdecomp.analysis.support import Region, classify_support, limit_mask, support_relation
 from symdecomp.claims import Status, check_claim
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import InvalidMeshError, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import catmull_clark
-from symdecomp.analysis.support import Region, classify_support, limit_mask, support_relation
 from symdecomp.symbols import alpha, beta
 
 
@@ -114,8 +114,8 @@ def test_unrefined_cube_opposite_corner_is_inside_but_phi_vanishes_there():
     """On the cube the 2-ring of a corner is the whole surface (not a disk): the corner opposite P
     has every sector carrying phi_P, phi_P(Q) = 0, and phi_P > 0 at every nearby vertex of the
     refined meshes: an isolated zero inside the support, outside the 1-ring of P."""
-    from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine
     from symdecomp.analysis.support import _mask_fractions
+    from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine
 
     cc = catmull_clark()
     cube = cube_mesh(lambda i: (Fraction(int(i == 0)),))

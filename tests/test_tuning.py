@@ -6,12 +6,13 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.cli import main
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions, recursion_eigenvector
+from symdecomp.analysis.tuning import condition_line, joint_obstruction, ratio_target, tune
+from symdecomp.cli import main
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_theta
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tuning import condition_line, joint_obstruction, ratio_target, tune
 
 CC = catmull_clark()
 
@@ -81,7 +82,7 @@ def test_tuned_weights_give_the_spectrum_claimed(n):
 def test_joint_obstruction_only_n4():
     j = joint_obstruction(CC)
     assert j.valences == (4,)
-    c = sp.Symbol("c", positive=True)
+    c = cos_theta  # cos(pi/n)
     assert sp.expand(j.polynomial - c**4 * (2 * c**2 - 1) * (4 * c**4 + 10 * c**2 - 25) / 4) == 0
     assert sp.simplify(j.defect.subs(N, 4)) == 0
     assert sp.N(j.defect.subs(N, 5)) < 0

@@ -23,7 +23,7 @@ Two representations:
 >>> B = cb_matrix([[[R(1, 2), R(1, 4), 0], [1, 0, 0]], [[0, 0, 1], [R(1, 3), 0, 0]]])
 >>> B.block_count, B.order
 (2, 3)
->>> frequency_matrix(B, 0)
+>>> block_eigenvalue_matrix(B, 0)
 Matrix([
 [3/4,   1],
 [  1, 1/3]])
@@ -31,12 +31,12 @@ Matrix([
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Mapping, Sequence
 
 import sympy as sp
 
-from symdecomp.algebra.circulant import circ, fourier_matrix, generating_polynomial, root_of_unity
+from symdecomp.algebra.circulant import circ, fourier_matrix, fourier_row, generating_polynomial
 from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -46,13 +46,13 @@ __all__ = [
     "CBMatrix",
     "cb_matrix",
     "cb_matrix_from",
-    "frequency_matrix",
+    "block_eigenvalue_matrix",
     "lifted_vector",
     "BlockDiagonalization",
     "block_diagonalization",
     "cb_eigensystem",
     "constant_blocks",
-    "perturbed_frequency_zero_matrix",
+    "perturbed_block_eigenvalue_matrix",
     "SymbolicCirculant",
     "SymbolicCBMatrix",
 ]
@@ -96,9 +96,10 @@ class CBMatrix:
 
     def matrix(self) -> sp.ImmutableMatrix:
         """The full ``Km x Km`` matrix."""
-        return sp.ImmutableMatrix(sp.BlockMatrix([[self.block(p, q) for q in range(self.block_count)] for p in range(self.block_count)]).as_explicit())
+        blocks = [[self.block(p, q) for q in range(self.block_count)] for p in range(self.block_count)]
+        return sp.ImmutableMatrix(sp.BlockMatrix(blocks).as_explicit())
 
-    def __add__(self, other: "CBMatrix") -> "CBMatrix":
+    def __add__(self, other: CBMatrix) -> CBMatrix:
         if not isinstance(other, CBMatrix) or (other.block_count, other.order) != (self.block_count, self.order):
             return NotImplemented
         return CBMatrix(
@@ -148,7 +149,7 @@ def cb_matrix_from(matrix, order: int) -> CBMatrix:
     return cb_matrix(blocks)
 
 
-def frequency_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
+def block_eigenvalue_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
     """The ``K x K`` matrix ``E`` of Prop. 6.2 for the eigenvector ``v_k`` of the circulants.
 
     ``e_pq`` is the eigenvalue of ``C_pq`` on ``v_k``: ``sum_l c_l omega_m^(k l)`` (Eq. 8-9).
@@ -156,7 +157,7 @@ def frequency_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
     m = cb.order
     if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k < m:
         raise SymdecompError(f"frequency k must be an integer with 0 <= k < m = {m}, got {k!r}")
-    w = [root_of_unity(m, k * l) if m > 1 else sp.Integer(1) for l in range(m)]
+    w = fourier_row(m, k)
     return sp.ImmutableMatrix(
         cb.block_count,
         cb.block_count,
@@ -177,7 +178,7 @@ class BlockDiagonalization:
 
     #: Columns ``e_p (x) v_k``, ordered by frequency ``k`` and then block ``p``.
     basis: sp.ImmutableMatrix
-    #: The frequency matrices ``E_0, ..., E_{m-1}`` of Prop. 6.2.
+    #: The block-eigenvalue matrices ``E_0, ..., E_{m-1}`` of Prop. 6.2.
     frequency_matrices: tuple[sp.ImmutableMatrix, ...]
 
     def block_diagonal(self) -> sp.ImmutableMatrix:
@@ -186,7 +187,7 @@ class BlockDiagonalization:
 
 
 def block_diagonalization(cb: CBMatrix) -> BlockDiagonalization:
-    """The Fourier basis of Remark 6.1 and the frequency matrices ``E_k`` of ``cb``."""
+    """The Fourier basis of Remark 6.1 and the block-eigenvalue matrices ``E_k`` of ``cb``."""
     K, m = cb.block_count, cb.order
     F = fourier_matrix(m) if m > 1 else sp.ImmutableMatrix([[1]])
     columns = []
@@ -195,7 +196,7 @@ def block_diagonalization(cb: CBMatrix) -> BlockDiagonalization:
         for p in range(K):
             columns.append(lifted_vector([1 if r == p else 0 for r in range(K)], v))
     basis = sp.ImmutableMatrix.hstack(*columns)
-    return BlockDiagonalization(basis, tuple(frequency_matrix(cb, k) for k in range(m)))
+    return BlockDiagonalization(basis, tuple(block_eigenvalue_matrix(cb, k) for k in range(m)))
 
 
 def cb_eigensystem(cb: CBMatrix) -> list[tuple[sp.Expr, int, list[sp.ImmutableMatrix]]]:
@@ -210,7 +211,7 @@ def cb_eigensystem(cb: CBMatrix) -> list[tuple[sp.Expr, int, list[sp.ImmutableMa
     F = fourier_matrix(m) if m > 1 else sp.ImmutableMatrix([[1]])
     for k in range(m):
         v = [F[k, s] for s in range(m)]
-        for value, _mult, vectors in sp.Matrix(frequency_matrix(cb, k)).eigenvects():
+        for value, _mult, vectors in sp.Matrix(block_eigenvalue_matrix(cb, k)).eigenvects():
             out.append((value, k, [lifted_vector(list(a), v) for a in vectors]))
     return out
 
@@ -224,8 +225,8 @@ def constant_blocks(T, order: int) -> CBMatrix:
     return cb_matrix([[[T[p, q]] * order for q in range(T.cols)] for p in range(T.rows)])
 
 
-def perturbed_frequency_zero_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
-    """``E_0 + m T`` (Prop. 6.3, where the paper writes ``E_1``): the frequency-0 matrix of ``cb + A``.
+def perturbed_block_eigenvalue_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
+    """``E_0 + m T`` (Prop. 6.3, where the paper writes ``E_1``): the block-eigenvalue matrix ``E_0`` of ``cb + A``.
 
     The eigenvalues of ``cb + constant_blocks(T, m)`` are those of ``E_1, ..., E_{m-1}``
     (unchanged) and the ``K`` eigenvalues of this matrix.
@@ -233,7 +234,7 @@ def perturbed_frequency_zero_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
     T = sp.Matrix(T)
     if T.shape != (cb.block_count, cb.block_count):
         raise NotCirculantBlockError(f"T must be {cb.block_count} x {cb.block_count}, got {T.rows} x {T.cols}")
-    return sp.ImmutableMatrix(frequency_matrix(cb, 0) + cb.order * T)
+    return sp.ImmutableMatrix(block_eigenvalue_matrix(cb, 0) + cb.order * T)
 
 
 # --- symbolic order -------------------------------------------------------------------------
@@ -254,7 +255,7 @@ class SymbolicCirculant:
     constant: sp.Expr = sp.Integer(0)
 
     @classmethod
-    def from_offsets(cls, offsets: Mapping[int, object], constant=0) -> "SymbolicCirculant":
+    def from_offsets(cls, offsets: Mapping[int, object], constant=0) -> SymbolicCirculant:
         return cls(tuple(sorted((int(k), sp.sympify(w)) for k, w in dict(offsets).items())), sp.sympify(constant))
 
     def symbol(self) -> sp.Expr:
@@ -279,7 +280,7 @@ class SymbolicCirculant:
         banded = circ_from_offsets({k: w.subs(N, n) for k, w in self.offsets}, n)
         return sp.ImmutableMatrix(banded + sp.ones(n, n) * self.constant.subs(N, n))
 
-    def minus_constant(self, value) -> "SymbolicCirculant":
+    def minus_constant(self, value) -> SymbolicCirculant:
         """``C - value*J``."""
         return SymbolicCirculant(self.offsets, sp.expand(self.constant - sp.sympify(value)))
 
@@ -295,7 +296,7 @@ class SymbolicCBMatrix:
     def block_count(self) -> int:
         return len(self.blocks)
 
-    def frequency_matrix(self, *, zero_frequency: bool, order=N) -> sp.ImmutableMatrix:
+    def block_eigenvalue_matrix(self, *, zero_frequency: bool, order=N) -> sp.ImmutableMatrix:
         """``E`` of Prop. 6.2: in ``omega`` for ``k != 0``, or the ``k = 0`` matrix (with ``n``)."""
         return sp.ImmutableMatrix(
             [[b.eigenvalue(zero_frequency=zero_frequency, order=order) for b in row] for row in self.blocks]

@@ -14,7 +14,7 @@ evaluated at ``omega = omega_n^j``, a Laurent polynomial in ``omega``.
 
 from __future__ import annotations
 
-from typing import Mapping, Sequence
+from collections.abc import Mapping, Sequence
 
 import sympy as sp
 
@@ -24,6 +24,7 @@ from symdecomp.symbols import omega as OMEGA
 __all__ = [
     "root_of_unity",
     "fourier_matrix",
+    "fourier_row",
     "circ",
     "circ_from_offsets",
     "generating_polynomial",
@@ -38,10 +39,20 @@ def root_of_unity(n: int, power: int = 1) -> sp.Expr:
     return sp.exp(2 * sp.pi * sp.I * sp.Rational(power % n, n))
 
 
+def fourier_row(n: int, k: int) -> list[sp.Expr]:
+    """Row ``k`` of the Fourier matrix ``F_n`` (Eq. 2): the regular n-gon ``v_k``, exact.
+
+    >>> fourier_row(4, 1)
+    [1, I, -1, -I]
+    """
+    n = check_valence(n, minimum=1)
+    return [root_of_unity(n, k * m) for m in range(n)]
+
+
 def fourier_matrix(n: int) -> sp.ImmutableMatrix:
     """The Fourier matrix ``F_n`` of Eq. 2: row ``k`` is the regular n-gon ``v_k``."""
     n = check_valence(n, minimum=1)
-    return sp.ImmutableMatrix(n, n, lambda k, m: root_of_unity(n, k * m))
+    return sp.ImmutableMatrix([fourier_row(n, k) for k in range(n)])
 
 
 def circ(c: Sequence) -> sp.ImmutableMatrix:

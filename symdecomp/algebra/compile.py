@@ -7,7 +7,7 @@ so each evaluation does no symbolic work.
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import flint
 import mpmath

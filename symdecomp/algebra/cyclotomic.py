@@ -16,7 +16,7 @@ True
 from __future__ import annotations
 
 from fractions import Fraction
-from functools import lru_cache
+from functools import cache
 
 import flint
 import mpmath
@@ -25,7 +25,7 @@ import sympy as sp
 __all__ = ["CyclotomicField", "Cyclotomic"]
 
 
-@lru_cache(maxsize=None)
+@cache
 def _phi(N: int) -> flint.fmpq_poly:
     return flint.fmpq_poly([int(c) for c in flint.fmpz_poly.cyclotomic(N).coeffs()])
 
@@ -45,7 +45,7 @@ class CyclotomicField:
     def __hash__(self):
         return hash(("Q(zeta)", self.N))
 
-    def __call__(self, value) -> "Cyclotomic":
+    def __call__(self, value) -> Cyclotomic:
         """Embed a rational (int, Fraction, sympy Rational) or a Gaussian rational ``a + b*I``."""
         if isinstance(value, Cyclotomic):
             return value
@@ -60,20 +60,20 @@ class CyclotomicField:
             out = out + self.i * self(Fraction(int(im.p), int(im.q)))
         return out
 
-    def zeta(self, k: int = 1) -> "Cyclotomic":
+    def zeta(self, k: int = 1) -> Cyclotomic:
         """``zeta_N^k``."""
         k %= self.N
         coeffs = [0] * k + [1]
         return Cyclotomic(self, flint.fmpq_poly(coeffs) % self.phi)
 
-    def root(self, n: int, k: int) -> "Cyclotomic":
+    def root(self, n: int, k: int) -> Cyclotomic:
         """``omega_n^k = zeta_N^(k N/n)``; ``n`` must divide ``N``."""
         if self.N % n:
             raise ValueError(f"omega_{n} is not in Q(zeta_{self.N})")
         return self.zeta(k * (self.N // n))
 
     @property
-    def i(self) -> "Cyclotomic":
+    def i(self) -> Cyclotomic:
         if self.N % 4:
             raise ValueError(f"i is not in Q(zeta_{self.N}) (needs 4 | N)")
         return self.zeta(self.N // 4)
@@ -88,7 +88,7 @@ class Cyclotomic:
         self.field = field
         self.poly = poly
 
-    def _lift(self, other) -> "Cyclotomic":
+    def _lift(self, other) -> Cyclotomic:
         if isinstance(other, Cyclotomic):
             if other.field != self.field:
                 raise ValueError("elements of different cyclotomic fields")
@@ -142,7 +142,7 @@ class Cyclotomic:
     def __hash__(self):
         return hash((self.field.N, str(self.poly)))
 
-    def conjugate(self) -> "Cyclotomic":
+    def conjugate(self) -> Cyclotomic:
         """Complex conjugate: ``zeta -> zeta^(-1)``."""
         N = self.field.N
         coeffs = [0] * N
@@ -150,14 +150,11 @@ class Cyclotomic:
             coeffs[(-k) % N] = coeffs[(-k) % N] + c
         return Cyclotomic(self.field, flint.fmpq_poly(coeffs) % self.field.phi)
 
-    def real(self) -> "Cyclotomic":
+    def real(self) -> Cyclotomic:
         return (self + self.conjugate()) / 2
 
-    def imag(self) -> "Cyclotomic":
+    def imag(self) -> Cyclotomic:
         return (self - self.conjugate()) / (2 * self.field.i)
-
-    def is_rational(self) -> bool:
-        return self.poly.degree() <= 0
 
     def to_sympy(self) -> sp.Expr:
         """As a sympy number: ``sum_k c_k (cos(2 pi k/N) + i sin(2 pi k/N))``, expanded."""

@@ -63,31 +63,7 @@ def as_vertex_rows(polygon, *, name: str = "polygon"):
 
     ``dim`` is 3 for points of R^3 and 1 for complex numbers (C^n).
     """
-    if isinstance(polygon, sp.MatrixBase):
-        rows = [list(polygon.row(i)) for i in range(polygon.rows)] if polygon.cols > 1 else [[x] for x in polygon]
-        kind = "exact"
-    elif isinstance(polygon, np.ndarray):
-        if polygon.dtype == object or not np.issubdtype(polygon.dtype, np.number):
-            raise InvalidPolygonError(f"{name}: a numpy polygon must have a float or complex dtype, not {polygon.dtype}")
-        if polygon.ndim not in (1, 2):
-            raise InvalidPolygonError(f"{name}: expected an n x 3 array or a vector of C^n, got shape {polygon.shape}")
-        arr = polygon if polygon.ndim == 2 else polygon.reshape(-1, 1)
-        rows = [list(r) for r in arr]
-        kind = "numpy"
-    elif isinstance(polygon, mpmath.matrix):
-        rows = [[polygon[i, k] for k in range(polygon.cols)] for i in range(polygon.rows)]
-        kind = "mpmath"
-    elif isinstance(polygon, (list, tuple)):
-        rows = [list(p) if isinstance(p, (list, tuple, np.ndarray)) else [p] for p in polygon]
-        flat = [x for r in rows for x in r]
-        if any(isinstance(x, (mpmath.mpf, mpmath.mpc)) for x in flat):
-            kind = "mpmath"
-        elif any(isinstance(x, (float, complex, np.floating, np.complexfloating)) for x in flat):
-            kind = "numpy"
-        else:
-            kind = "exact"
-    else:
-        raise InvalidPolygonError(f"{name}: expected an n x 3 array or a vector of C^n, got {type(polygon).__name__}")
+    rows, kind = _rows_and_kind(polygon, name)
     if len(rows) < 3:
         raise InvalidPolygonError(f"{name}: a polygon needs at least 3 vertices, got {len(rows)}")
     dims = {len(r) for r in rows}
@@ -98,38 +74,65 @@ def as_vertex_rows(polygon, *, name: str = "polygon"):
         raise InvalidPolygonError(
             f"{name}: vertices must be points of R^3 (3 coordinates) or complex numbers (1), got {dim} coordinates"
         )
-    out = []
-    for i, r in enumerate(rows):
-        row = []
-        for x in r:
-            if kind == "exact":
-                if not _is_exact_scalar(x):
-                    raise InvalidPolygonError(
-                        f"{name}: vertex {i} has coordinate {x!r}, which is not a (Gaussian) rational; "
-                        "use floats (numpy) or mpmath numbers for other values"
-                    )
-                v = sp.sympify(x) if not isinstance(x, Fraction) else sp.Rational(x.numerator, x.denominator)
-                if dim == 3 and not v.is_real:
-                    raise InvalidPolygonError(f"{name}: vertex {i}: coordinate {x!r} of a point of R^3 is not real")
-            elif kind == "numpy":
-                v = complex(x)
-                if not (math.isfinite(v.real) and math.isfinite(v.imag)):
-                    raise InvalidPolygonError(f"{name}: vertex {i} has a coordinate that is not finite ({x!r})")
-                if dim == 3:
-                    if v.imag != 0:
-                        raise InvalidPolygonError(f"{name}: vertex {i}: coordinate {x!r} of a point of R^3 is not real")
-                    v = v.real
-            else:
-                v = mpmath.mpmathify(x)
-                if not mpmath.isfinite(v):
-                    raise InvalidPolygonError(f"{name}: vertex {i} has a coordinate that is not finite ({x!r})")
-                if dim == 3 and isinstance(v, mpmath.mpc):
-                    if v.imag != 0:
-                        raise InvalidPolygonError(f"{name}: vertex {i}: coordinate {x!r} of a point of R^3 is not real")
-                    v = v.real
-            row.append(v)
-        out.append(row)
+    out = [[_coordinate(x, kind, dim, f"{name}: vertex {i}") for x in r] for i, r in enumerate(rows)]
     return out, kind, dim
+
+
+def _rows_and_kind(polygon, name: str) -> tuple[list[list], str]:
+    """The vertices as lists of coordinates, and the arithmetic the input asks for."""
+    if isinstance(polygon, sp.MatrixBase):
+        rows = [list(polygon.row(i)) for i in range(polygon.rows)] if polygon.cols > 1 else [[x] for x in polygon]
+        return rows, "exact"
+    if isinstance(polygon, np.ndarray):
+        if polygon.dtype == object or not np.issubdtype(polygon.dtype, np.number):
+            raise InvalidPolygonError(f"{name}: a numpy polygon must have a float or complex dtype, not {polygon.dtype}")
+        if polygon.ndim not in (1, 2):
+            raise InvalidPolygonError(f"{name}: expected an n x 3 array or a vector of C^n, got shape {polygon.shape}")
+        arr = polygon if polygon.ndim == 2 else polygon.reshape(-1, 1)
+        return [list(r) for r in arr], "numpy"
+    if isinstance(polygon, mpmath.matrix):
+        return [[polygon[i, k] for k in range(polygon.cols)] for i in range(polygon.rows)], "mpmath"
+    if isinstance(polygon, (list, tuple)):
+        rows = [list(p) if isinstance(p, (list, tuple, np.ndarray)) else [p] for p in polygon]
+        flat = [x for r in rows for x in r]
+        if any(isinstance(x, (mpmath.mpf, mpmath.mpc)) for x in flat):
+            return rows, "mpmath"
+        if any(isinstance(x, (float, complex, np.floating, np.complexfloating)) for x in flat):
+            return rows, "numpy"
+        return rows, "exact"
+    raise InvalidPolygonError(f"{name}: expected an n x 3 array or a vector of C^n, got {type(polygon).__name__}")
+
+
+def _coordinate(x, kind: str, dim: int, where: str):
+    """One coordinate, checked and converted to the arithmetic ``kind`` (real if ``dim == 3``)."""
+    not_real = f"{where}: coordinate {x!r} of a point of R^3 is not real"
+    if kind == "exact":
+        if not _is_exact_scalar(x):
+            raise InvalidPolygonError(
+                f"{where} has coordinate {x!r}, which is not a (Gaussian) rational; "
+                "use floats (numpy) or mpmath numbers for other values"
+            )
+        v = sp.sympify(x) if not isinstance(x, Fraction) else sp.Rational(x.numerator, x.denominator)
+        if dim == 3 and not v.is_real:
+            raise InvalidPolygonError(not_real)
+        return v
+    if kind == "numpy":
+        v = complex(x)
+        if not (math.isfinite(v.real) and math.isfinite(v.imag)):
+            raise InvalidPolygonError(f"{where} has a coordinate that is not finite ({x!r})")
+        if dim == 3:
+            if v.imag != 0:
+                raise InvalidPolygonError(not_real)
+            return v.real
+        return v
+    v = mpmath.mpmathify(x)
+    if not mpmath.isfinite(v):
+        raise InvalidPolygonError(f"{where} has a coordinate that is not finite ({x!r})")
+    if dim == 3 and isinstance(v, mpmath.mpc):
+        if v.imag != 0:
+            raise InvalidPolygonError(not_real)
+        return v.real
+    return v
 
 
 # ------------------------------------------------------------------------- arithmetics
@@ -279,19 +282,6 @@ class PolygonDecomposition:
         self._check_j(j)
         freqs = sorted({j, (self.n - j) % self.n})
         return self._output(self._sum(freqs), real=self.dim == 3)
-
-    def pair_plane(self, j: int) -> tuple[tuple, tuple]:
-        """Two real vectors ``(2 Re z_j, 2 Im z_j)`` spanning the plane of the pair ``{j, n-j}``.
-
-        The pair polygon is ``p_m = R cos(2 pi jm/n) - I sin(2 pi jm/n)``.
-        """
-        if self.dim != 3:
-            raise InvalidPolygonError("pair planes are defined for polygons in R^3")
-        self._check_j(j)
-        a = self._arith()
-        R = tuple(a.out(2 * a.re(z)) for z in self._internal[j])
-        I = tuple(a.out(2 * a.im(z)) for z in self._internal[j])
-        return R, I
 
     def planar_pair(self, j: int) -> tuple[PlanarRegularComponent, PlanarRegularComponent]:
         """The coplanar regular polygons of frequencies ``j`` and ``n - j`` (Eq. 6).

@@ -116,4 +116,5 @@ def biorthogonal(right: list, left: list, scale) -> list:
         return [[y / dot for y in left[0]]]
     gram = flint.fmpq_mat(len(left), len(right), [fmpq_value(sum(a * b for a, b in zip(l_, r)) * scale) for l_ in left for r in right])
     g = gram.inv()
-    return [[sum((Fraction(int(g[i, k].p), int(g[i, k].q)) * left[k][c] for k in range(len(left))), Fraction(0)) for c in range(len(left[0]))] for i in range(len(left))]
+    coeff = [[Fraction(int(g[i, k].p), int(g[i, k].q)) for k in range(len(left))] for i in range(len(left))]
+    return [[sum((coeff[i][k] * left[k][c] for k in range(len(left))), Fraction(0)) for c in range(len(left[0]))] for i in range(len(left))]

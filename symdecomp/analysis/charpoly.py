@@ -26,23 +26,23 @@ Derivation (every ingredient is computed from the scheme):
 >>> cf = closed_form_characteristic_polynomial(catmull_clark())
 >>> cf.laurent_coefficients
 (-lambda/16, lambda**2 - 5*lambda/8 + 1/16, -lambda/16)
->>> cf.at(3) == matrix_characteristic_polynomial(catmull_clark(), 3)
+>>> cf.at(3) == characteristic_polynomial(catmull_clark(), 3)
 True
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import lru_cache
-from typing import Mapping
+from functools import cache
 
 import flint
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, SymdecompError, check_valence
-from symdecomp.schemes.matrices import characteristic_polynomial as exact_characteristic_polynomial
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.errors import InvalidSchemeError, SymdecompError, check_valence
+from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
@@ -51,7 +51,6 @@ from symdecomp.symbols import omega as OMEGA
 __all__ = [
     "ClosedFormCharpoly",
     "closed_form_characteristic_polynomial",
-    "matrix_characteristic_polynomial",
     "to_fmpq_poly",
     "verify_closed_form",
 ]
@@ -63,7 +62,7 @@ class ClosedFormCharpoly:
 
     #: ``x - 1``: the eigenvalue 1 separated by the reduction ``S -> S'``.
     unit_factor: sp.Expr
-    #: ``E_0 = M(1) + n T``, the frequency-0 matrix of ``L`` (Prop. 6.3); the only place the vertex weights enter.
+    #: ``E_0 = M(1) + n T``, the block-eigenvalue matrix at frequency 0 of ``L`` (Prop. 6.3); the only place the vertex weights enter.
     zero_frequency_matrix: sp.ImmutableMatrix
     #: ``det(x I - E_0)``: its two roots are the eigenvalues the vertex weights move.
     zero_frequency_factor: sp.Expr
@@ -137,7 +136,7 @@ def to_fmpq_poly(expr, variable: sp.Symbol = LAM) -> flint.fmpq_poly:
     return flint.fmpq_poly(coeffs)
 
 
-@lru_cache(maxsize=None)
+@cache
 def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
     """Derive ``det(x I - S)`` of ``scheme`` in closed form, symbolic in ``n`` and the weights.
 
@@ -148,10 +147,10 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
     reduction = reduce_first_column(subdivision_block_form(scheme))
     L = reduction.lower_right
     x = LAM
-    M = sp.Matrix(L.frequency_matrix(zero_frequency=False))
+    M = sp.Matrix(L.block_eigenvalue_matrix(zero_frequency=False))
     if sp.expand(M - sp.Matrix(per_frequency_matrix(scheme))) != sp.zeros(*M.shape):
         raise SymdecompError("the CB-block of S' disagrees with the per-frequency matrix (internal inconsistency)")
-    E0 = sp.ImmutableMatrix(L.frequency_matrix(zero_frequency=True).applyfunc(sp.expand))
+    E0 = sp.ImmutableMatrix(L.block_eigenvalue_matrix(zero_frequency=True).applyfunc(sp.expand))
     size = M.rows
     q = sp.expand((x * sp.eye(size) - M).det())
     try:
@@ -189,15 +188,6 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
     )
 
 
-def matrix_characteristic_polynomial(scheme: Scheme, n: int, values: Mapping[sp.Symbol, object] | None = None) -> flint.fmpq_poly:
-    """``det(x I - S)`` of the exact ``(2n+1) x (2n+1)`` matrix, computed by FLINT over the rationals.
-
-    The matrix is built entry by entry from the rules (no block structure); this is
-    :func:`symdecomp.schemes.matrices.characteristic_polynomial`, with ``values`` for free parameters.
-    """
-    return exact_characteristic_polynomial(scheme, n, values)
-
-
 def _affine_in(expr: sp.Expr, params) -> bool:
     poly = sp.Poly(sp.expand(expr), *params) if params else None
     return poly is None or poly.total_degree() <= 1
@@ -213,7 +203,7 @@ def verify_closed_form(scheme: Scheme, n: int) -> bool:
     """
     params = tuple(scheme.parameters)
     if not params:
-        return closed_form_characteristic_polynomial(scheme).at(n) == matrix_characteristic_polynomial(scheme, n)
+        return closed_form_characteristic_polynomial(scheme).at(n) == characteristic_polynomial(scheme, n)
     for rule in (scheme.edge_rule, scheme.face_rule):
         weights = [rule.center] + [w for _, w in rule.a + rule.b]
         if any(w.free_symbols & set(params) for w in weights):
@@ -223,4 +213,4 @@ def verify_closed_form(scheme: Scheme, n: int) -> bool:
     if not all(_affine_in(w, params) for w in (v.center, v.each_a, v.each_b, cf.zero_frequency_factor)):
         raise SymdecompError("the vertex-rule weights do not enter affinely; a finite exact check is not a proof")
     points = [{p: 0 for p in params}] + [{p: (1 if p == q else 0) for p in params} for q in params]
-    return all(cf.at(n, pt) == matrix_characteristic_polynomial(scheme, n, pt) for pt in points)
+    return all(cf.at(n, pt) == characteristic_polynomial(scheme, n, pt) for pt in points)

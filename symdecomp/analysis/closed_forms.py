@@ -4,7 +4,7 @@ The cross-checks (:mod:`symdecomp.verify.numeric`, :mod:`symdecomp.verify.certif
 subdivision matrix with *closed forms*: the three eigenvalues of the Eq. 43 matrix, as
 expressions in ``n``, and the two eigenvalues of ``M_k`` (Eq. 34), as expressions in
 ``c = cos(k pi/n)`` and ``s = sin(k pi/n)``. :func:`derived_closed_forms` takes them from
-:func:`symdecomp.analysis.spectrum.frequency_zero_eigenvalues` and
+:func:`symdecomp.analysis.spectrum.recursion_eigenvalues` and
 :func:`symdecomp.analysis.tangent.tangent_eigenvalues`, the same ones that ``symdecomp spectrum``
 prints. A :class:`ClosedForms` can also be built by hand, which is how the tests inject a
 deliberately wrong closed form and see both checks fail.
@@ -19,21 +19,21 @@ c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Callable, Mapping
 
 import flint
 import mpmath
 import sympy as sp
 
-from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
-from symdecomp.errors import check_valence
-from symdecomp.analysis.frequency import COS, SIN
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
-from symdecomp.symbols import n as N
+from symdecomp.algebra.compile import compile_expression
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import check_valence
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
+from symdecomp.symbols import n as N
 
 __all__ = ["ClosedForms", "ClosedFormLabel", "derived_closed_forms"]
 
@@ -93,17 +93,13 @@ class ClosedForms:
             self._compiled[key] = _compile_closed_forms(self, key[0], engine)
         zero, pair = self._compiled[key]
         if engine == "arb":
-            old = flint.ctx.prec
-            flint.ctx.prec = prec
-            try:
+            with flint.ctx.workprec(prec):
                 nn = flint.acb(n)
                 out = [f(nn, nn, nn) for f in zero]
                 for k in range(1, n):
                     c = flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(k, n)))
                     s = flint.acb(flint.arb.sin_pi_fmpq(flint.fmpq(k, n)))
                     out.extend(f(c, s, nn) for f in pair)
-            finally:
-                flint.ctx.prec = old
             return out
         nn = mpmath.mpf(n)
         out = [f(nn, nn, nn) for f in zero]
@@ -117,12 +113,12 @@ class ClosedForms:
 def derived_closed_forms(scheme: Scheme) -> ClosedForms:
     """The closed forms that symdecomp derives for ``scheme`` (Eq. 34 and Eq. 43)."""
     ev = tangent_eigenvalues(scheme)
-    return ClosedForms(scheme, tuple(frequency_zero_eigenvalues(scheme)), (ev.dominant, ev.subdominant))
+    return ClosedForms(scheme, tuple(recursion_eigenvalues(scheme)), (ev.dominant, ev.subdominant))
 
 
 def _compile_closed_forms(cf: ClosedForms, parameters: tuple, engine: str):
     subs = dict(parameters)
-    variables = (COS, SIN, N)
+    variables = (cos_jtheta, sin_jtheta, N)
     zero = tuple(compile_expression(sp.sympify(e).subs(subs), variables, engine) for e in cf.frequency_zero)
     pair = tuple(compile_expression(sp.sympify(e).subs(subs), variables, engine) for e in cf.frequency_k)
     return zero, pair

@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.analysis.frequency import frequency_zero_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 
@@ -42,7 +42,7 @@ def jordan_vertex_weights(scheme: Scheme, n: int, eigenvalue) -> dict:
         raise InvalidSchemeError(
             f"scheme {scheme.name!r} has free parameters {[str(p) for p in params]}; need exactly two (e.g. alpha, beta)"
         )
-    A = frequency_zero_matrix(scheme, n)
+    A = recursion_matrix(scheme, n)
     charpoly = sp.Poly(sp.expand((LAM * sp.eye(3) - A).det()), LAM)
     target = sp.Poly(sp.expand((LAM - 1) * (LAM - mu) ** 2), LAM)
     equations = [sp.expand(a - b) for a, b in zip(charpoly.all_coeffs(), target.all_coeffs())]
@@ -57,7 +57,7 @@ def jordan_block_size(scheme: Scheme, n: int, eigenvalue) -> int:
 
     ``0`` if it is not an eigenvalue.
     """
-    A = sp.Matrix(frequency_zero_matrix(scheme, check_valence(n)))
+    A = sp.Matrix(recursion_matrix(scheme, check_valence(n)))
     mu = sp.sympify(eigenvalue)
     B = A - mu * sp.eye(3)
     ranks = [3] + [(B**k).rank() for k in range(1, 4)]

@@ -39,8 +39,11 @@ import numpy as np
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
-from symdecomp.algebra.small_eigen import NotDiagonalizableError, arb_value as _arb, biorthogonal as _biorthogonal
-from symdecomp.algebra.small_eigen import fmpq_value as _fq, rational_eigen as _rational_eigen
+from symdecomp.algebra.small_eigen import NotDiagonalizableError
+from symdecomp.algebra.small_eigen import arb_value as _arb
+from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
+from symdecomp.algebra.small_eigen import fmpq_value as _fq
+from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
@@ -285,14 +288,11 @@ def patch_eigendata(scheme: Scheme, n: int, prec: int = 128) -> PatchEigenData:
     :class:`PrecisionError` when ``prec`` is too low to decide a sign on the way.
     """
     n = check_valence(n)
-    old = flint.ctx.prec
-    flint.ctx.prec = prec
     try:
-        return _eigendata(patch_matrices(scheme, n), prec)
+        with flint.ctx.workprec(prec):
+            return _eigendata(patch_matrices(scheme, n), prec)
     except _NeedPrecision:
         raise PrecisionError(f"valence {n}: {prec} bits do not separate the eigenvalues") from None
-    finally:
-        flint.ctx.prec = old
 
 
 def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
@@ -372,14 +372,10 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
 
 def _round_all(data: PatchEigenData) -> RoundedEigenData | None:
     size = data.size
-    old = flint.ctx.prec
-    flint.ctx.prec = 128  # ``+x`` rounds a ball to 128 bits (still containing it): cheaper to inspect
-    try:
+    with flint.ctx.workprec(128):  # ``+x`` rounds a ball to 128 bits (still containing it): cheaper to inspect
         values = [round_ball(+v) for v in data.values]
         inverse = [round_ball(+x) for x in data.inverse.entries()]
         phi = [round_ball(+x) for t in data.phi for x in t.entries()]
-    finally:
-        flint.ctx.prec = old
     if None in values or None in inverse or None in phi:
         return None
     return RoundedEigenData(

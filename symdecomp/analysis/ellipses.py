@@ -26,8 +26,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.errors import InvalidPolygonError, check_frequency
 from symdecomp.algebra.polygons import decompose
+from symdecomp.errors import InvalidPolygonError, check_frequency
+from symdecomp.schemes.ring import interleaved_polygon
 
 __all__ = ["ring_components", "EllipseAxes", "ellipse_axes"]
 
@@ -44,9 +45,11 @@ def _check_ring(ring) -> tuple[sp.Matrix, int]:
     return M, (rows - 1) // 2
 
 
-def _two_n_gon(M: sp.Matrix, n: int) -> sp.Matrix:
-    """The 1-ring as the 2n-gon ``P = (a_0, b_0, a_1, b_1, ...)`` of Eq. 10."""
-    return sp.Matrix([list(M.row(1 + k // 2)) if k % 2 == 0 else list(M.row(1 + n + k // 2)) for k in range(2 * n)])
+def _ring_polygon(M: sp.Matrix, n: int) -> sp.Matrix:
+    """The 1-ring as the 2n-gon ``P = (a_0, b_0, a_1, b_1, ...)`` of Eq. 10, one row per vertex."""
+    a = [list(M.row(1 + i)) for i in range(n)]
+    b = [list(M.row(1 + n + i)) for i in range(n)]
+    return sp.Matrix(interleaved_polygon(a, b))
 
 
 def ring_components(ring) -> list[sp.Matrix]:
@@ -57,7 +60,7 @@ def ring_components(ring) -> list[sp.Matrix]:
     (:func:`symdecomp.algebra.polygons.decompose` of the 2n-gon).
     """
     M, n = _check_ring(ring)
-    return [sp.Matrix(z) for z in decompose(_two_n_gon(M, n)).amplitudes]
+    return [sp.Matrix(z) for z in decompose(_ring_polygon(M, n)).amplitudes]
 
 
 @dataclass(frozen=True)
@@ -88,7 +91,7 @@ def ellipse_axes(ring, j: int = 1, part: str = "a", *, digits: int | None = 30) 
     j = check_frequency(j, n)
     if part not in ("a", "b"):
         raise ValueError(f"part must be 'a' or 'b', got {part!r}")
-    d = decompose(_two_n_gon(M, n))
+    d = decompose(_ring_polygon(M, n))
     first, second = d.planar_pair(j)
     w_j, w_conj = first.amplitude, second.amplitude
     z = sp.Matrix(d.amplitudes[j])

@@ -2,7 +2,7 @@
 
 The heights of ``O``, of the plane of ``A^0`` (centroid of the ``a``'s) and of the plane of
 ``B^0`` (centroid of the ``b``'s) along the normal move by the ``3 x 3`` matrix ``T`` of Eq. 43
-(:func:`symdecomp.analysis.frequency.frequency_zero_matrix`, derived from the rules). A scheme has
+(:func:`symdecomp.analysis.frequency.recursion_matrix`, derived from the rules). A scheme has
 *nice elliptic properties* when
 
 1. the subdominant eigenvalue ``mu`` of ``T`` equals ``lambda_1^2``, with ``lambda_1`` the
@@ -28,18 +28,19 @@ Matrix([[-1/16, 1/32, 1/8]])
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
 
+from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
+from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
+from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.analysis.frequency import COS, SIN, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.analysis.spectrum import format_value, frequency_zero_eigenvalues
+from symdecomp.symbols import cos_jtheta, cos_theta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.analysis.tangent import tangent_eigenvalues
 
 __all__ = [
     "MU",
@@ -71,7 +72,7 @@ def recursion_eigenvector(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Matrix:
     vertex rule, is not used: it holds automatically when ``eigenvalue`` is an eigenvalue).
     Zero when those two rows are dependent.
     """
-    T = frequency_zero_matrix(scheme, n)
+    T = recursion_matrix(scheme, n)
     A = sp.Matrix(T) - eigenvalue * sp.eye(3)
     return _cross(A.row(1), A.row(2)).applyfunc(sp.expand)
 
@@ -82,7 +83,7 @@ def recursion_left_eigenvector(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Matrix:
     The cross product of columns 2 and 3 of ``T - eigenvalue*I``; it gives the component of an
     input on the eigenvector: ``(l . x)/(l . u)``.
     """
-    T = frequency_zero_matrix(scheme, n)
+    T = recursion_matrix(scheme, n)
     A = sp.Matrix(T) - eigenvalue * sp.eye(3)
     return _cross(A.col(1), A.col(2)).applyfunc(sp.expand)
 
@@ -95,7 +96,7 @@ def eq44_ratio(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Expr:
 
 def _symmetric_in_cos(expr, what):
     value = laurent_to_cos(expr)
-    if value.has(SIN):
+    if value.has(sin_jtheta):
         raise InvalidSchemeError(f"{what} is not symmetric in omega <-> 1/omega; the scheme is not mirror symmetric")
     return value
 
@@ -109,11 +110,11 @@ def tangent_lambda(scheme: Scheme, frequency: int = 1) -> sp.Expr:
     dominant = tangent_eigenvalues(scheme).dominant
     c = sp.cos(frequency * sp.pi / N)
     if frequency == 1:
-        dominant = dominant.subs(sp.Abs(COS), COS)
-    return dominant.subs(COS, c)
+        dominant = dominant.subs(sp.Abs(cos_jtheta), cos_jtheta)
+    return dominant.subs(cos_jtheta, c)
 
 
-@lru_cache(maxsize=None)
+@cache
 def scale_ratio_squared(scheme: Scheme) -> sp.Expr:
     """``|B^1/A^1|^2`` on the dominant eigenvector of ``M_1``, in ``c = cos(pi/n)``.
 
@@ -124,9 +125,9 @@ def scale_ratio_squared(scheme: Scheme) -> sp.Expr:
     M = per_frequency_matrix(scheme)
     numerator = _symmetric_in_cos(sp.expand(M[1, 0] * M[1, 0].subs(OMEGA, 1 / OMEGA)), "|m_21|^2")
     m22 = _symmetric_in_cos(M[1, 1], "m_22")
-    lam1 = tangent_eigenvalues(scheme).dominant.subs(sp.Abs(COS), COS)
-    positive = sp.Symbol("c", positive=True)  # j = 1: c = cos(pi/n) >= 1/2
-    return sp.simplify((numerator / (lam1 - m22) ** 2).subs(COS, positive)).subs(positive, COS)
+    lam1 = tangent_eigenvalues(scheme).dominant.subs(sp.Abs(cos_jtheta), cos_jtheta)
+    # j = 1: c = cos(pi/n) >= 1/2
+    return sp.simplify((numerator / (lam1 - m22) ** 2).subs(cos_jtheta, cos_theta)).subs(cos_theta, cos_jtheta)
 
 
 @dataclass(frozen=True)
@@ -153,16 +154,16 @@ class NiceEllipticConditions:
     ratio_defect: sp.Expr
 
 
-@lru_cache(maxsize=None)
+@cache
 def nice_elliptic_conditions(scheme: Scheme) -> NiceEllipticConditions:
     """Derive both conditions and their defects for ``scheme``, closed forms in ``n``."""
-    _, mu, third = frequency_zero_eigenvalues(scheme)
+    _, mu, third = recursion_eigenvalues(scheme)
     c = sp.cos(sp.pi / N)
     lam1 = tangent_lambda(scheme, 1)
     ratio_of_mu = eq44_ratio(scheme, MU)
-    R = scale_ratio_squared(scheme).subs(COS, c)
+    R = scale_ratio_squared(scheme).subs(cos_jtheta, c)
     return NiceEllipticConditions(
-        recursion_matrix=frequency_zero_matrix(scheme),
+        recursion_matrix=recursion_matrix(scheme),
         subdominant=mu,
         third=third,
         eigenvector=recursion_eigenvector(scheme, MU),
@@ -260,7 +261,7 @@ def elliptic_component(scheme: Scheme, n, initial, eigenvalue=None) -> sp.Expr:
     """
     if n is not N:
         n = check_valence(n)
-    mu = frequency_zero_eigenvalues(scheme)[1].subs(N, n) if eigenvalue is None else eigenvalue
+    mu = recursion_eigenvalues(scheme)[1].subs(N, n) if eigenvalue is None else eigenvalue
     left = recursion_left_eigenvector(scheme, mu, n)
     right = recursion_eigenvector(scheme, mu, n)
     x = sp.Matrix(initial)

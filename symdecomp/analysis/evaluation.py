@@ -84,17 +84,17 @@ class PatchEvaluator:
     dps: int | None = None
 
     @classmethod
-    def from_rounded(cls, scheme: Scheme, data: RoundedEigenData) -> "PatchEvaluator":
+    def from_rounded(cls, scheme: Scheme, data: RoundedEigenData) -> PatchEvaluator:
         pos, tan = _masks(scheme, data.n, float)
         return cls(data.n, data.values, data.inverse, data.phi, pos, tan)
 
     @classmethod
-    def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi) -> "PatchEvaluator":
+    def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi) -> PatchEvaluator:
         pos, tan = _masks(scheme, n, float)
         return cls(n, np.asarray(values, float), np.asarray(inverse, float), np.asarray(phi, float), pos, tan)
 
     @classmethod
-    def exact(cls, scheme: Scheme, n: int, dps: int = 30) -> "PatchEvaluator":
+    def exact(cls, scheme: Scheme, n: int, dps: int = 30) -> PatchEvaluator:
         """mpmath numbers good to about ``dps`` digits (Arb balls at ``3.4 dps + 64`` bits)."""
         n = check_valence(n)
         data: PatchEigenData = patch_eigendata(scheme, n, int(3.4 * dps) + 64)

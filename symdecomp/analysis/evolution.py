@@ -22,8 +22,10 @@ from functools import lru_cache
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import InvalidPolygonError, check_valence
+from symdecomp.algebra.circulant import fourier_row
 from symdecomp.algebra.polygons import decompose
+from symdecomp.errors import InvalidPolygonError, check_valence
+from symdecomp.schemes.ring import interleaved_polygon
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = [
@@ -218,10 +220,9 @@ def elliptic_profile(scheme: Scheme, ring, steps: int) -> EllipticProfile:
     )
 
 
-def _two_n_gon(n: int, j: int) -> np.ndarray:
-    """Row ``j`` of ``F_{2n}`` (the regular 2n-gon ``v_j`` of Eq. 11), numerically."""
-    w = np.exp(2j * np.pi * j * np.arange(2 * n) / (2 * n))
-    return w
+def _regular_2n_gon(n: int, j: int) -> np.ndarray:
+    """The regular 2n-gon ``v_j`` of Eq. 11 (row ``j`` of ``F_{2n}``), as complex floats."""
+    return np.array([complex(w) for w in fourier_row(2 * n, j)])
 
 
 def tangent_configuration(n: int, heights=(0.0, 0.0, 0.0), *, radius: float = 1.0, stretch: float = 0.0) -> np.ndarray:
@@ -236,7 +237,7 @@ def tangent_configuration(n: int, heights=(0.0, 0.0, 0.0), *, radius: float = 1.
     """
     n = check_valence(n)
     h_O, h_a, h_b = (float(h) for h in heights)
-    p = radius * (_two_n_gon(n, 1) + float(stretch) * _two_n_gon(n, 2 * n - 1))
+    p = radius * (_regular_2n_gon(n, 1) + float(stretch) * _regular_2n_gon(n, 2 * n - 1))
     a, b = p[0::2], p[1::2]
     return one_ring(
         [0.0, 0.0, h_O],
@@ -248,9 +249,7 @@ def tangent_configuration(n: int, heights=(0.0, 0.0, 0.0), *, radius: float = 1.
 def ring_polygon(ring) -> np.ndarray:
     """The 2n-gon ``P = (a_0, b_0, a_1, b_1, ..., a_{n-1}, b_{n-1})`` of a 1-ring (Eq. 10)."""
     _, a, b = split_ring(ring)
-    P = np.empty((2 * len(a),) + a.shape[1:], dtype=np.result_type(a, b))
-    P[0::2], P[1::2] = a, b
-    return P
+    return np.array(interleaved_polygon(a, b), dtype=np.result_type(a, b))
 
 
 def ring_from_polygon(center, polygon) -> np.ndarray:

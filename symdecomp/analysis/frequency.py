@@ -21,13 +21,15 @@ a Fourier mode at a symbolic row ``i``; nothing is typed in from the paper.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
+import mpmath
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation, root_of_unity
 from symdecomp.errors import check_frequency, check_valence
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
@@ -36,16 +38,10 @@ __all__ = [
     "circulant_blocks",
     "per_frequency_matrix",
     "per_frequency_matrix_at",
-    "frequency_zero_matrix",
+    "recursion_matrix",
     "laurent_to_cos",
-    "COS",
-    "SIN",
+    "valences_at_roots",
 ]
-
-#: A real symbol standing for ``cos(j*theta)`` with ``theta = pi/n`` (Eq. 34).
-COS = sp.Symbol("c", real=True)
-#: A real symbol standing for ``sin(j*theta)``; it disappears for symmetric schemes.
-SIN = sp.Symbol("s", real=True)
 
 
 @dataclass(frozen=True)
@@ -80,13 +76,13 @@ def circulant_blocks(scheme: Scheme) -> CirculantBlocks:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def per_frequency_matrix(scheme: Scheme) -> sp.ImmutableMatrix:
     """``M_j`` of Eq. 33 as a matrix of Laurent polynomials in ``omega = omega_n^j``.
 
     It acts on the column of amplitudes ``(X, Y)`` of ``(A^j, B^j)``; valid for every
     frequency with ``omega != 1`` (at ``omega = 1`` the centre ``O`` also contributes, see
-    :func:`frequency_zero_matrix`).
+    :func:`recursion_matrix`).
     """
     blocks = circulant_blocks(scheme)
     return sp.ImmutableMatrix(
@@ -102,8 +98,8 @@ def per_frequency_matrix_at(scheme: Scheme, n: int, j: int) -> sp.ImmutableMatri
     return sp.ImmutableMatrix(per_frequency_matrix(scheme).subs(OMEGA, w).applyfunc(sp.expand))
 
 
-@lru_cache(maxsize=None)
-def frequency_zero_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
+@cache
+def recursion_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
     """The ``3 x 3`` recursion matrix of Eq. 43, derived from the rules.
 
     It acts on the column ``(O, abar, bbar)``: the central vertex, the centroid of the
@@ -142,17 +138,43 @@ def laurent_to_cos(expr: sp.Expr) -> sp.Expr:
     """Rewrite a Laurent polynomial in ``omega = exp(2 i j theta)`` in ``c = cos(j theta)``.
 
     ``omega^k -> (c + i s)^(2k)`` with ``s = sin(j theta)``, then ``s^2 -> 1 - c^2``. For a
-    symmetric polynomial (``p(omega) = p(1/omega)``) the result is a polynomial in :data:`COS`
-    alone; otherwise a term in :data:`SIN` remains.
+    symmetric polynomial (``p(omega) = p(1/omega)``) the result is a polynomial in :data:`symdecomp.symbols.cos_jtheta`
+    alone; otherwise a term in :data:`symdecomp.symbols.sin_jtheta` remains.
 
     >>> laurent_to_cos(OMEGA + 1/OMEGA)
     4*c**2 - 2
     """
     total = sp.Integer(0)
     for k, coeff in _laurent_terms(expr).items():
-        base = COS + sp.I * SIN if k >= 0 else COS - sp.I * SIN
+        base = cos_jtheta + sp.I * sin_jtheta if k >= 0 else cos_jtheta - sp.I * sin_jtheta
         total += coeff * sp.expand(base ** (2 * abs(k)))
-    poly = sp.Poly(sp.expand(total), SIN)
-    reduced = sp.rem(poly, sp.Poly(SIN**2 - (1 - COS**2), SIN))
+    poly = sp.Poly(sp.expand(total), sin_jtheta)
+    reduced = sp.rem(poly, sp.Poly(sin_jtheta**2 - (1 - cos_jtheta**2), sin_jtheta))
     return sp.expand(reduced.as_expr())
 
+
+def valences_at_roots(polynomial: sp.Expr, c: sp.Symbol, vanishes) -> tuple[tuple[sp.Expr, ...], tuple[int, ...]]:
+    """The real roots of ``polynomial`` in ``c = cos(pi/n)`` that can be valences, and the valences.
+
+    A valence ``n >= 3`` has ``c = cos(pi/n)`` in ``[1/2, 1)``, so only the real roots there
+    are candidates (returned as exact algebraic numbers, each once). For each, the valence
+    ``k`` nearest to ``pi/acos(c)`` is a candidate if it matches to 40 digits; it is kept
+    only if ``vanishes(k)``, an exact test at that valence (the numeric match only selects
+    which valence to test, it proves nothing).
+
+    >>> from symdecomp.symbols import cos_theta as c
+    >>> valences_at_roots(2 * c**2 - 1, c, lambda k: True)
+    ((sqrt(2)/2,), (4,))
+    """
+    roots, valences = [], []
+    for root in sp.Poly(polynomial, c).real_roots():
+        if not sp.Rational(1, 2) <= root < 1 or root in roots:
+            continue
+        roots.append(root)
+        with mpmath.workdps(50):
+            m = mpmath.pi / mpmath.acos(mpmath.mpf(sp.N(root, 60)))
+            k = int(mpmath.nint(m))
+            close = abs(m - k) < mpmath.mpf(10) ** -40
+        if close and vanishes(k):
+            valences.append(k)
+    return tuple(roots), tuple(sorted(set(valences)))

@@ -20,20 +20,21 @@ subdivision matrix in ``Q(zeta_4n)`` and compares with the prediction from ``M_1
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
-
 from fractions import Fraction
+from functools import cache
 
 import mpmath
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.elliptic import tangent_lambda
-from symdecomp.errors import check_valence
-from symdecomp.analysis.frequency import COS, per_frequency_matrix
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
-from symdecomp.symbols import n as N
+from symdecomp.analysis.frequency import per_frequency_matrix, valences_at_roots
 from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import check_valence
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.symbols import cos_jtheta, cos_theta
+from symdecomp.symbols import lam as LAM
+from symdecomp.symbols import n as N
 
 __all__ = [
     "hyperbolic_lambda",
@@ -69,7 +70,7 @@ class HyperbolicEquality:
     valences: tuple[int, ...]
 
 
-@lru_cache(maxsize=None)
+@cache
 def hyperbolic_equality(scheme: Scheme) -> HyperbolicEquality:
     """Decide ``lambda_2 = lambda_1^2`` for all ``n``.
 
@@ -79,23 +80,15 @@ def hyperbolic_equality(scheme: Scheme) -> HyperbolicEquality:
     leaves a polynomial in ``c``; only its roots in ``[1/2, 1)`` can be valences, and each
     candidate is checked exactly.
     """
-    c = sp.Symbol("c", positive=True)
+    c = cos_theta
     L = sp.Symbol("L", positive=True)
     ev = tangent_eigenvalues(scheme)
-    char1 = sp.expand(ev.characteristic_polynomial.subs({COS: c, sp.Symbol("lambda"): L}))
-    char2 = sp.expand(ev.characteristic_polynomial.subs({COS: 2 * c**2 - 1, sp.Symbol("lambda"): L**2}))
+    char1 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: c, LAM: L}))
+    char2 = sp.expand(ev.characteristic_polynomial.subs({cos_jtheta: 2 * c**2 - 1, LAM: L**2}))
     polynomial = sp.factor(sp.resultant(char2, char1, L))
     defect = hyperbolic_defect(scheme)
-    roots, valences = [], []
-    for root in sp.Poly(polynomial, c).real_roots():
-        if sp.Rational(1, 2) <= root < 1:
-            roots.append(root)
-            with mpmath.workdps(50):
-                m = mpmath.pi / mpmath.acos(mpmath.mpf(sp.N(root, 60)))
-                k = int(mpmath.nint(m))
-                if abs(m - k) < mpmath.mpf(10) ** -40 and sp.simplify(defect.subs(N, k)) == 0:
-                    valences.append(k)
-    return HyperbolicEquality(polynomial, tuple(dict.fromkeys(roots)), tuple(sorted(set(valences))))
+    roots, valences = valences_at_roots(polynomial, c, lambda k: sp.simplify(defect.subs(N, k)) == 0)
+    return HyperbolicEquality(polynomial, roots, valences)
 
 
 def hyperbolic_ring(n: int, height=1) -> sp.ImmutableMatrix:

@@ -19,19 +19,20 @@ values with multiplicities. Frequencies are n-gon frequencies ``k`` (the 2n-gon 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
 
+from symdecomp.analysis.frequency import recursion_matrix
+from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import check_valence
-from symdecomp.analysis.frequency import COS, SIN, frequency_zero_matrix
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tangent import tangent_eigenvalues
 
-__all__ = ["SpectrumEntry", "Spectrum", "frequency_zero_eigenvalues", "closed_form_spectrum", "format_value"]
+__all__ = ["SpectrumEntry", "Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
 
 
 @dataclass(frozen=True)
@@ -76,14 +77,14 @@ class Spectrum:
         }
 
 
-@lru_cache(maxsize=None)
-def frequency_zero_eigenvalues(scheme: Scheme) -> tuple[sp.Expr, ...]:
+@cache
+def recursion_eigenvalues(scheme: Scheme) -> tuple[sp.Expr, ...]:
     """The eigenvalues of the Eq. 43 matrix as closed forms in ``n`` (and the parameters).
 
     Derived from its characteristic polynomial; an affine scheme always has the factor
     ``lambda - 1`` (rows sum to 1), and the remaining quadratic is solved by radicals.
     """
-    charpoly = (frequency_zero_matrix(scheme).charpoly(LAM)).as_expr()
+    charpoly = (recursion_matrix(scheme).charpoly(LAM)).as_expr()
     quotient, remainder = sp.div(sp.Poly(charpoly, LAM), sp.Poly(LAM - 1, LAM))
     if sp.cancel(remainder.as_expr()) != 0:  # pragma: no cover - affinity is checked on construction
         raise ArithmeticError("the Eq. 43 matrix of an affine scheme must have the eigenvalue 1")
@@ -140,12 +141,12 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
         raise ValueError(f"scheme {scheme.name!r} has free parameters {sorted(map(str, missing))}; give their values")
     work = digits + 30
     raw: list[tuple[object, int]] = []
-    for expr in frequency_zero_eigenvalues(scheme):
+    for expr in recursion_eigenvalues(scheme):
         raw.append((_numeric(expr, {N: n, **subs}, work), 0))
     ev = tangent_eigenvalues(scheme)
     for k in range(1, n):
         angle = sp.pi * sp.Rational(k, n)
-        point = {COS: sp.cos(angle), SIN: sp.sin(angle), N: n, **subs}
+        point = {cos_jtheta: sp.cos(angle), sin_jtheta: sp.sin(angle), N: n, **subs}
         for expr in (ev.dominant, ev.subdominant):
             raw.append((_numeric(expr, point, work), k))
     with mpmath.workdps(work):

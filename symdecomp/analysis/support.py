@@ -43,6 +43,7 @@ data ``e_P`` iff ``P`` is in ``N(F_s)``. :func:`classify_support` computes this,
 ``levels > 0`` also refines ``e_P`` exactly that many times and recomputes every sector's
 ``N(F)`` test at every level (the conclusion of fact 2, checked rather than assumed).
 
+>>> from symdecomp.schemes.mesh import ring_mesh
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> c = classify_support(ring_mesh(4, 4), 0, catmull_clark())
 >>> sorted(r.value for r in c.regions.values()).count("inside"), c.count(Region.BOUNDARY)
@@ -53,16 +54,16 @@ from __future__ import annotations
 
 import enum
 import numbers
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
+from functools import cache
 from types import MappingProxyType
-from typing import Iterable, Mapping
 
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError, SymdecompError
-from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, mesh_rules, refine, ring_mesh
+from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, mesh_rules, refine
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme"]
@@ -76,7 +77,7 @@ class Region(enum.Enum):
     OUTSIDE = "outside"
 
 
-@lru_cache(maxsize=None)
+@cache
 def limit_mask(scheme: Scheme, valence: int) -> tuple[sp.Expr, ...]:
     """The limit mask at a vertex of this valence: the left eigenvector of eigenvalue 1 of the
     exact subdivision matrix, normalised to sum 1, in the order ``(O, a_0.., b_0..)``.
@@ -188,7 +189,7 @@ def _region(carried: tuple[bool, ...]) -> Region:
     return Region.INSIDE if all(carried) else Region.OUTSIDE if not any(carried) else Region.BOUNDARY
 
 
-@lru_cache(maxsize=None)
+@cache
 def _mask_fractions(scheme: Scheme, valence: int) -> tuple[Fraction, ...]:
     return tuple(Fraction(int(w.p), int(w.q)) for w in limit_mask(scheme, valence))
 
@@ -212,6 +213,25 @@ def support_relation(mesh: QuadMesh, scheme: Scheme, vertices: Iterable[int]) ->
     check_positive_scheme(scheme, {mesh.valence(v) for v in mesh.vertices() if mesh.is_interior(v)})
     hoods = {q: _sector_neighbourhoods(mesh, q) for q in vertices}
     return {(p, q): _region(tuple(p in nf for nf in hoods[q])) for p in vertices for q in vertices}
+
+
+def _child_sectors(step, current: QuadMesh, q: int, v: int, faces) -> tuple[int, tuple[int, ...]]:
+    """Follow vertex ``v`` (tracking candidate ``q``) and its sector faces through one refinement ``step``."""
+    v2 = step.vertex_point.get(v)
+    if v2 is None:
+        raise InvalidMeshError(f"vertex {q} left the exactly refinable part of the mesh (add rings)")
+    child_faces = []
+    for fi in faces:
+        f = current.faces[fi]
+        k = f.index(v)
+        want = {v2, step.edge_point.get(frozenset((v, f[(k + 1) % 4]))), step.face_point.get(fi)}
+        match = [g for g in step.mesh.faces_of(v2) if want <= set(step.mesh.faces[g])]
+        if len(match) != 1:
+            raise InvalidMeshError(f"could not follow sector {fi} of vertex {q} (add rings)")
+        child_faces.append(match[0])
+    if not all(all(step.mesh.is_interior(c) for c in step.mesh.faces[g]) for g in step.mesh.faces_of(v2)):
+        raise InvalidMeshError(f"vertex {q} is too close to the boundary at the refined level (add rings)")
+    return v2, tuple(child_faces)
 
 
 def classify_support(
@@ -253,23 +273,8 @@ def classify_support(
             step = refine(current, rules)
             new_track = {}
             for q, (v, faces) in track.items():
-                v2 = step.vertex_point.get(v)
-                if v2 is None:
-                    raise InvalidMeshError(f"vertex {q} left the exactly refinable part of the mesh (add rings)")
-                child_faces = []
-                for fi in faces:
-                    f = current.faces[fi]
-                    k = f.index(v)
-                    want = {v2, step.edge_point.get(frozenset((v, f[(k + 1) % 4]))), step.face_point.get(fi)}
-                    match = [g for g in step.mesh.faces_of(v2) if want <= set(step.mesh.faces[g])]
-                    if len(match) != 1:
-                        raise InvalidMeshError(f"could not follow sector {fi} of vertex {q} (add rings)")
-                    child_faces.append(match[0])
-                new_track[q] = (v2, tuple(child_faces))
-                if not all(
-                    all(step.mesh.is_interior(c) for c in step.mesh.faces[g]) for g in step.mesh.faces_of(v2)
-                ):
-                    raise InvalidMeshError(f"vertex {q} is too close to the boundary at the refined level (add rings)")
+                v2, child_faces = _child_sectors(step, current, q, v, faces)
+                new_track[q] = (v2, child_faces)
                 vals = step.mesh.values
                 again = tuple(any(vals[x][0] != 0 for x in _n_of_face(step.mesh, g)) for g in child_faces)
                 if again != sectors[q]:

@@ -15,16 +15,14 @@ c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
-from symdecomp.analysis.frequency import COS, SIN, laurent_to_cos, per_frequency_matrix
+from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.symbols import cos_jtheta
-from symdecomp.symbols import j as J
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
-from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
 __all__ = [
@@ -54,17 +52,13 @@ class TangentEigenvalues:
     #: ``(trace - sqrt(discriminant))/2``.
     subdominant: sp.Expr
 
-    def in_frequency(self, expr: sp.Expr) -> sp.Expr:
-        """Substitute ``c = cos(pi j/n)`` (and ``s = sin(pi j/n)``) into an expression."""
-        return expr.subs({COS: cos_jtheta, SIN: sp.sin(sp.pi * J / N)})
-
     def at(self, n: int, j: int) -> tuple[sp.Expr, sp.Expr]:
         """The two exact eigenvalues at a concrete valence and frequency."""
-        subs = {COS: sp.cos(sp.pi * sp.Rational(j, n)), SIN: sp.sin(sp.pi * sp.Rational(j, n))}
+        subs = {cos_jtheta: sp.cos(sp.pi * sp.Rational(j, n)), sin_jtheta: sp.sin(sp.pi * sp.Rational(j, n))}
         return self.dominant.subs(subs), self.subdominant.subs(subs)
 
 
-@lru_cache(maxsize=None)
+@cache
 def tangent_eigenvalues(scheme: Scheme) -> TangentEigenvalues:
     """Derive the closed-form eigenvalues of ``M_j`` for ``scheme`` (Eq. 34)."""
     M = per_frequency_matrix(scheme)
@@ -103,13 +97,13 @@ def invariant_ratio(scheme: Scheme) -> sp.Expr:
 
 
 def _omega_and_cos(n, j):
-    return {OMEGA: sp.exp(2 * sp.pi * sp.I * j / n), COS: sp.cos(sp.pi * j / n), SIN: sp.sin(sp.pi * j / n)}
+    return {OMEGA: sp.exp(2 * sp.pi * sp.I * j / n), cos_jtheta: sp.cos(sp.pi * j / n), sin_jtheta: sp.sin(sp.pi * j / n)}
 
 
 def invariant_ratio_at(scheme: Scheme, n: int, j: int = 1) -> sp.Expr:
-    """The exact ratio of Eq. 39 at a concrete ``n`` and ``j``, simplified."""
+    """The exact ratio of Eq. 39 at a concrete ``n`` and ``j``, simplified (radicals, no guessing)."""
     value = invariant_ratio(scheme).subs(_omega_and_cos(sp.Integer(n), sp.Integer(j)))
-    return sp.nsimplify(sp.simplify(sp.expand_complex(value)))
+    return sp.radsimp(sp.simplify(sp.expand_complex(value)))
 
 
 def invariant_ratio_limit(scheme: Scheme, j: int = 1) -> sp.Expr:

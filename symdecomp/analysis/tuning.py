@@ -25,20 +25,22 @@ Hence:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
-from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.analysis.frequency import COS, frequency_zero_matrix, laurent_to_cos, per_frequency_matrix
-from symdecomp.schemes.scheme import Scheme, VertexRule
+from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix, valences_at_roots
 from symdecomp.analysis.spectrum import format_value
+from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_jtheta, cos_theta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
 
 __all__ = [
     "with_free_vertex_rule",
@@ -58,10 +60,10 @@ def with_free_vertex_rule(scheme: Scheme) -> Scheme:
     return Scheme(scheme.name + " (free vertex rule)", scheme.edge_rule, scheme.face_rule, VertexRule.affine(ALPHA, BETA))
 
 
-@lru_cache(maxsize=None)
+@cache
 def eigenvalue_quadratic(scheme: Scheme) -> sp.Poly:
     """``det(lambda I - T)/(lambda - 1)`` for the Eq. 43 matrix with a free vertex rule, in ``lambda``."""
-    T = frequency_zero_matrix(with_free_vertex_rule(scheme))
+    T = recursion_matrix(with_free_vertex_rule(scheme))
     charpoly = sp.Poly(sp.expand((LAM * sp.eye(3) - T).det()), LAM)
     quotient, remainder = sp.div(charpoly, sp.Poly(LAM - 1, LAM))
     if sp.expand(remainder.as_expr()) != 0:  # pragma: no cover - affine rules guarantee it
@@ -85,7 +87,7 @@ class ConditionLine:
     beta_bounds: tuple[sp.Expr, sp.Expr]
 
 
-@lru_cache(maxsize=None)
+@cache
 def _generic_line(scheme: Scheme) -> ConditionLine:
     Q = eigenvalue_quadratic(scheme)
     equation = sp.expand(Q.as_expr().subs(LAM, MU))
@@ -121,7 +123,7 @@ def condition_line(scheme: Scheme, target: sp.Expr = MU) -> ConditionLine:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def ratio_target(scheme: Scheme) -> sp.Expr:
     """The eigenvalue ``mu_2(n)`` whose Eq. 44 ratio equals ``|B^1/A^1|^2`` (condition 2's target)."""
     R = sp.Symbol("R", positive=True)
@@ -145,7 +147,7 @@ class JointObstruction:
     valences: tuple[int, ...]
 
 
-@lru_cache(maxsize=None)
+@cache
 def joint_obstruction(scheme: Scheme) -> JointObstruction:
     """Decide for every ``n`` whether both conditions can hold together.
 
@@ -154,30 +156,21 @@ def joint_obstruction(scheme: Scheme) -> JointObstruction:
     characteristic polynomial of ``M_1`` is a polynomial in ``c`` that vanishes wherever ``g``
     does. Its roots in ``[1/2, 1)`` are the only candidates; each is tested exactly.
     """
-    c = sp.Symbol("c", positive=True)
+    c = cos_theta
     L = sp.Symbol("L", positive=True)
     M = per_frequency_matrix(scheme)
-    m21sq = laurent_to_cos(sp.expand(M[1, 0] * M[1, 0].subs(sp.Symbol("omega"), 1 / sp.Symbol("omega"))))
+    m21sq = laurent_to_cos(sp.expand(M[1, 0] * M[1, 0].subs(OMEGA, 1 / OMEGA)))
     m22 = laurent_to_cos(M[1, 1])
     trace = laurent_to_cos(M.trace())
     det = laurent_to_cos(sp.expand(M.det()))
-    g = sp.together(eq44_ratio(scheme, MU).subs(MU, L**2) - m21sq / (L - m22) ** 2).subs(COS, c)
+    g = sp.together(eq44_ratio(scheme, MU).subs(MU, L**2) - m21sq / (L - m22) ** 2).subs(cos_jtheta, c)
     numerator = sp.numer(g)
-    charpoly = (L**2 - trace * L + det).subs(COS, c)
+    charpoly = (L**2 - trace * L + det).subs(cos_jtheta, c)
     polynomial = sp.factor(sp.resultant(sp.expand(numerator), sp.expand(charpoly), L))
-    roots = []
-    valences = []
     cond = nice_elliptic_conditions(scheme)
     defect = cond.eq44_ratio_of_mu.subs(MU, cond.lambda1**2) - cond.scale_ratio_squared
-    for root in sp.Poly(polynomial, c).real_roots():
-        if sp.Rational(1, 2) <= root < 1:
-            roots.append(root)
-            with mpmath.workdps(50):
-                m = mpmath.pi / mpmath.acos(mpmath.mpf(sp.N(root, 60)))
-                k = int(mpmath.nint(m))
-                if abs(m - k) < mpmath.mpf(10) ** -40 and sp.simplify(defect.subs(N, k)) == 0:
-                    valences.append(k)
-    return JointObstruction(sp.simplify(defect), polynomial, tuple(roots), tuple(valences))
+    roots, valences = valences_at_roots(polynomial, c, lambda k: sp.simplify(defect.subs(N, k)) == 0)
+    return JointObstruction(sp.simplify(defect), polynomial, roots, valences)
 
 
 @dataclass(frozen=True)
@@ -231,7 +224,9 @@ class TuningAtValence:
             "lambda1_squared": num(self.lambda1**2),
             "scale_ratio_squared": num(self.scale_ratio_squared),
             "standard": {"alpha": str(self.standard[0]), "beta": str(self.standard[1])},
-            "eigenvalue_condition": line(self.eigenvalue_condition, self.at_standard_beta[0], self.standard_beta_admissible[0], self.below_lambda1[0]),
+            "eigenvalue_condition": line(
+                self.eigenvalue_condition, self.at_standard_beta[0], self.standard_beta_admissible[0], self.below_lambda1[0]
+            ),
             "ratio_condition": line(self.ratio_condition, self.at_standard_beta[1], self.standard_beta_admissible[1], self.below_lambda1[1]),
             "jointly_possible": self.jointly_possible,
             "joint_defect": num(self.joint_defect),

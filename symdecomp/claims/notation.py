@@ -12,15 +12,13 @@ for cos(j*theta) != 0
 
 from __future__ import annotations
 
-from typing import Iterable
+from collections.abc import Iterable
 
 import sympy as sp
 from sympy.printing.precedence import PRECEDENCE
 
 from symdecomp.claims.registry import Text
-
-from symdecomp.analysis.frequency import COS
-from symdecomp.symbols import j, lam, n, omega
+from symdecomp.symbols import cos_jtheta, j, lam, n, omega
 
 __all__ = [
     "A", "B", "I", "Kron", "M", "c", "cos_j_theta", "eq", "ge", "gt", "j", "lam", "lambda_1", "lambda_2",
@@ -28,7 +26,7 @@ __all__ = [
 ]
 
 #: ``c = cos(j theta)``, the variable of Eq. 34 (the same symbol as the analysis uses).
-c = COS
+c = cos_jtheta
 #: ``theta = pi/n`` of Eq. 34, as a name.
 theta = sp.Symbol("theta")
 #: ``cos(j theta)`` written as in the paper.

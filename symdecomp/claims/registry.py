@@ -29,9 +29,9 @@ import enum
 import importlib
 import pkgutil
 import traceback
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import lru_cache
-from typing import Callable
+from functools import cache
 
 import sympy as sp
 from sympy.printing.str import StrPrinter
@@ -126,10 +126,10 @@ class Text:
     def __bool__(self) -> bool:
         return bool(self.parts)
 
-    def __add__(self, other) -> "Text":
+    def __add__(self, other) -> Text:
         return Text(self, other)
 
-    def __radd__(self, other) -> "Text":
+    def __radd__(self, other) -> Text:
         return Text(other, self)
 
 
@@ -236,7 +236,7 @@ def get_claim(label: str) -> Claim:
         raise KeyError(f"no claim labelled {label!r}; known: {', '.join(c.label for c in all_claims())}") from None
 
 
-@lru_cache(maxsize=None)
+@cache
 def check_claim(label: str) -> CheckResult:
     """Run (once) the check of a claim; an exception becomes status ``error`` with its message."""
     c = get_claim(label)

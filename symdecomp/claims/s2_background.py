@@ -164,7 +164,7 @@ def _prop21() -> CheckResult:
         C = circ(cs)
         v = sp.Matrix([omega**m for m in range(size)])
         p = sum(cs[k] * omega**k for k in range(size))
-        residual = (C * v - p * v).applyfunc(lambda e: sp.rem(sp.expand(e), omega**size - 1, omega))
+        residual = (C * v - p * v).applyfunc(lambda e: sp.rem(sp.expand(e), omega**size - 1, omega))  # noqa: B023 (applied at once)
         if any(x != 0 for x in residual):
             return CheckResult(
                 Status.REFUTED, Text("fails at ", eq(n, size)), counterexample=Text(eq(n, size), ": residual ", residual)

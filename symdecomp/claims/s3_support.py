@@ -14,12 +14,12 @@ from fractions import Fraction
 
 import sympy as sp
 
-from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
-from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.analysis.support import Region, classify_support, support_relation
 from symdecomp.claims.notation import eq, gt
 from symdecomp.claims.notation import n as N
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
+from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.scheme import catmull_clark
 
 #: Valences the exact checks run for (kept small enough for seconds).
 SYMMETRY_VALENCES = (3, 10)
@@ -185,7 +185,8 @@ def _boundary_influence() -> CheckResult:
         Status.VERIFIED,
         f"valences {lo}..{hi}: the {checked} vertices within 3 rings that are on the boundary of or outside "
         f"the support of P have zero weight in the 1-ring of P at levels 0..{levels} of exact refinement "
-        "(while their sum is nonzero on the 2-ring of P at every level); at every further level too, because the new 1-ring depends only on the old one "
+        "(while their sum is nonzero on the 2-ring of P at every level); at every further level too, "
+        "because the new 1-ring depends only on the old one "
         "(the subdivision matrix, checked against the mesh rules), and the 1-ring at all levels "
         "determines the limit position and the derivatives at P (the eigen-expansion of Section 5)",
         steps=(

@@ -6,18 +6,19 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
-from symdecomp.analysis.frequency import COS, SIN, per_frequency_matrix
-from symdecomp.schemes.scheme import catmull_clark
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
-from symdecomp.symbols import lam, n, omega
+from symdecomp.analysis.frequency import per_frequency_matrix
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.claims.notation import M as Mk
 from symdecomp.claims.notation import A, B, I, cos_j_theta, eq, ge, gt, j, lambda_1, lambda_2, lambda_12, le, listed, lt, ne, omega_2n, omega_n, tup
+from symdecomp.claims.notation import M as Mk
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
-from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21, composed_stages
+from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.shift_stencil import composed_stages
+from symdecomp.symbols import cos_jtheta, lam, n, omega, sin_jtheta
 
 R = sp.Rational
-C = COS
+C = cos_jtheta
 S = sp.Symbol
 
 
@@ -112,7 +113,8 @@ def _eq33() -> CheckResult:
     "Eq. 34",
     section="5.1",
     title="Eigenvalues of $M_j$",
-    statement="$\\lambda_{1,2} = \\frac14 + \\frac18\\cos^2 j\\theta \\pm \\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta}$, $\\theta = \\pi/n$.",
+    statement="$\\lambda_{1,2} = \\frac14 + \\frac18\\cos^2 j\\theta \\pm \\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta}$, "
+    "$\\theta = \\pi/n$.",
 )
 def _eq34() -> CheckResult:
     ev = tangent_eigenvalues(_cc())
@@ -199,11 +201,11 @@ def _det_condition(sign: int):
     cc = _cc()
     M = per_frequency_matrix(cc)
     # (1, y) with y = m21/(lambda - m22) equals (1, sign*e^{i phi}) iff lambda = m22 + m21 * sign * e^{-i phi}
-    e_minus = C - sp.I * SIN
-    m21 = M[1, 0].subs(omega, (C + sp.I * SIN) ** 2)
+    e_minus = C - sp.I * sin_jtheta
+    m21 = M[1, 0].subs(omega, (C + sp.I * sin_jtheta) ** 2)
     lam_star = sp.expand(M[1, 1] + sign * m21 * e_minus)
-    poly = sp.Poly(lam_star, SIN)
-    lam_star = sp.expand(sp.rem(poly, sp.Poly(SIN**2 - 1 + C**2, SIN)).as_expr())
+    poly = sp.Poly(lam_star, sin_jtheta)
+    lam_star = sp.expand(sp.rem(poly, sp.Poly(sin_jtheta**2 - 1 + C**2, sin_jtheta)).as_expr())
     at = sp.factor(sp.expand(tangent_eigenvalues(cc).characteristic_polynomial.subs(lam, lam_star)))
     roots = sp.solveset(at, C, sp.Interval(-1, 1))
     return lam_star, at, roots
@@ -260,7 +262,7 @@ def _dominant_vs_frequency_zero(last: int) -> tuple[bool, int]:
     from symdecomp.algebra.compile import compile_expression
 
     dominant = compile_expression(tangent_eigenvalues(_cc()).dominant, (C,), engine="arb")
-    block = [compile_expression(e, (n,), engine="arb") for e in frequency_zero_eigenvalues(_cc()) if e != 1]
+    block = [compile_expression(e, (n,), engine="arb") for e in recursion_eigenvalues(_cc()) if e != 1]
     old = flint.ctx.prec
     flint.ctx.prec = 128
     try:
@@ -293,7 +295,7 @@ def _prop51() -> CheckResult:
     dominant = ev.dominant.subs(C, cp)
     derivative = sp.diff(dominant, cp)
     increasing = all(t.is_positive for t in sp.Add.make_args(sp.expand(derivative)))
-    block = [e for e in frequency_zero_eigenvalues(_cc()) if e != 1]
+    block = [e for e in recursion_eigenvalues(_cc()) if e != 1]
     last = 1000
     certified, upto = _dominant_vs_frequency_zero(last)
     if not increasing:

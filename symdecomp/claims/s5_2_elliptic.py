@@ -6,6 +6,7 @@ import random
 
 import sympy as sp
 
+from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import (
     MU,
     elliptic_component,
@@ -16,15 +17,15 @@ from symdecomp.analysis.elliptic import (
     rotation_free_form,
     scale_ratio_squared,
 )
-from symdecomp.analysis.ellipses import ellipse_axes
-from symdecomp.analysis.frequency import COS, frequency_zero_matrix
+from symdecomp.analysis.frequency import recursion_matrix
+from symdecomp.analysis.tuning import joint_obstruction
+from symdecomp.claims import CheckResult, Status, Step, Text, claim, is_zero
+from symdecomp.claims.notation import A, B, M, c, eq, j, lambda_1, listed, omega_2n, tup
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tuning import joint_obstruction
-from symdecomp.claims import CheckResult, Status, Step, Text, claim, is_zero
-from symdecomp.claims.notation import A, B, M, c, eq, gt, j, lambda_1, listed, omega_2n, tup
 
 S = sp.Symbol
 
@@ -180,7 +181,7 @@ def _eq42() -> CheckResult:
     r"with $\alpha, \beta$ as in Eq. 16.",
 )
 def _eq43() -> CheckResult:
-    T = frequency_zero_matrix(catmull_clark(ALPHA, BETA))
+    T = recursion_matrix(catmull_clark(ALPHA, BETA))
     R = sp.Rational
     printed_rows = sp.Matrix([[R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
     printed_first = sp.Matrix([[1 - ALPHA - BETA, ALPHA, BETA]])
@@ -200,7 +201,7 @@ def _eq43() -> CheckResult:
         return CheckResult(Status.PROVED, "derived matrix equals the printed one", steps=steps)
     derived_first = tup(*T[0, :])
     # the counterexample: the standard weights at n = 4, per neighbour (the derived row is n alpha, n beta)
-    standard = frequency_zero_matrix(catmull_clark(), 4)
+    standard = recursion_matrix(catmull_clark(), 4)
     per_neighbour = {ALPHA: standard[0, 1] / 4, BETA: standard[0, 2] / 4}
     return CheckResult(
         Status.CORRECTED,
@@ -230,7 +231,7 @@ def _eq43() -> CheckResult:
 )
 def _eq44() -> CheckResult:
     scheme = catmull_clark(ALPHA, BETA)
-    T = sp.Matrix(frequency_zero_matrix(scheme))
+    T = sp.Matrix(recursion_matrix(scheme))
     D = sp.Matrix([[-1, 1, 0], [-1, 0, 1]])  # (h_O, h_a, h_b) -> (d_a, d_b)
     # D T = T' D with T' = D T E, E a right inverse of D on the complement of (1,1,1).
     E = sp.Matrix([[0, 0], [1, 0], [0, 1]])
@@ -260,7 +261,8 @@ def _eq44() -> CheckResult:
             eq(Dn * Tn, Tp_ * Dn),
             " whose eigenvalues are the non-unit ones of Eq. 43 and whose eigenvector is ", Dn * un,
             "; so ", d_b / d_a, " tends to ", (S("u_b") - u_O) / (S("u_a") - u_O),
-            " when the subdominant component is nonzero. The ratio is ", ratio.subs(MU, mu), " at the eigenvalue ", mu, ", independent of the vertex rule",
+            " when the subdominant component is nonzero. The ratio is ", ratio.subs(MU, mu),
+            " at the eigenvalue ", mu, ", independent of the vertex rule",
         ),
         steps=(
             Step("$T'$ on $(d_a, d_b)$", Tp),
@@ -281,14 +283,14 @@ def _eq44() -> CheckResult:
 def _eq45() -> CheckResult:
     cc = catmull_clark()
     R = sp.Rational
-    T4 = frequency_zero_matrix(cc, 4)
+    T4 = recursion_matrix(cc, 4)
     printed = sp.Matrix([[R(9, 16), R(3, 8), R(1, 16)], [R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
     eigs = sorted(sp.Matrix(T4).eigenvals(), reverse=True)
     u = recursion_eigenvector(cc, eigs[1], 4)
     paper_u = sp.Matrix([-2, 1, 4])
     parallel = u.cross(paper_u)
     ratio = eq44_ratio(cc, eigs[1], 4)
-    scale_sq = sp.nsimplify(sp.simplify(scale_ratio_squared(cc).subs(COS, sp.cos(sp.pi / 4))))
+    scale_sq = sp.nsimplify(sp.simplify(scale_ratio_squared(cc).subs(cos_jtheta, sp.cos(sp.pi / 4))))
     lam1 = nice_elliptic_conditions(cc).lambda1.subs(N, 4)
     ok = (
         T4 == printed
@@ -341,7 +343,7 @@ def _remark52() -> CheckResult:
     l = recursion_left_eigenvector(scheme, MU)
     # l is orthogonal to (1,1,1) for MU != 1, so l.(0,1,1) = -l_O; l_O = 0 forces l = 0:
     la, lb = sp.symbols("l_a l_b")
-    T = sp.Matrix(frequency_zero_matrix(scheme))
+    T = sp.Matrix(recursion_matrix(scheme))
     eqs = [la * T[1, 0] + lb * T[2, 0], la + lb]  # column 1 of l^T (T - MU I) with l_O = 0, and l.(1,1,1) = 0
     only_zero = sp.solve(eqs, [la, lb], dict=True) == [{la: 0, lb: 0}]
     dot111 = sp.factor(sum(l))

@@ -6,12 +6,12 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import elliptic_component, tangent_lambda
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
-from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.symbols import n as N
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.analysis.frequency import COS
 from symdecomp.claims import CheckResult, Status, Step, Text, claim
 from symdecomp.claims.notation import A, M, eq, ge, gt, j, lambda_1, lambda_2, listed, lt, ne, tup
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+from symdecomp.symbols import cos_jtheta
+from symdecomp.symbols import n as N
 
 _VALENCES = (3, 12)
 Sym = sp.Symbol
@@ -28,7 +28,7 @@ def _smaller() -> CheckResult:
     cc = catmull_clark()
     dominant = tangent_eigenvalues(cc).dominant
     t = sp.Symbol("t", positive=True)  # t = |c|
-    slope = sp.factor(sp.diff(dominant.subs(sp.Abs(COS), t).subs(COS**2, t**2), t))
+    slope = sp.factor(sp.diff(dominant.subs(sp.Abs(cos_jtheta), t).subs(cos_jtheta**2, t**2), t))
     c = sp.Symbol("c", positive=True)  # cos(pi/n); cos(2 pi/n) = 2c^2 - 1
     below = sp.factor(2 * c**2 - 1 - c)  # cos(2pi/n) < cos(pi/n)  <=> (2c+1)(c-1) < 0
     above = sp.factor(-(2 * c**2 - 1) - c)  # -cos(2pi/n) < cos(pi/n) <=> (2c-1)(c+1) > 0, false at c = 1/2 (n = 3)
@@ -91,7 +91,7 @@ def _quadratic() -> CheckResult:
         Text(
             "for Catmull-Clark ", eq(lambda_2, lambda_1**2), " only at ", eq(N, eq_.valences[0]), ": the resultant ",
             eq_.polynomial, " has the single root ", eq(cos_n, root), " in ", sp.Interval.Ropen(sp.Rational(1, 2), 1),
-            "; ", lambda_2 - lambda_1**2, " is continuous in ", COS, " and positive at ", eq(N, 3), " (", sp.N(d3, 6),
+            "; ", lambda_2 - lambda_1**2, " is continuous in ", cos_jtheta, " and positive at ", eq(N, 3), " (", sp.N(d3, 6),
             ") and ", eq(N, 5), " (", sp.N(d5, 6), "), hence positive for every ", ne(N, 4),
             ": the hyperbolic part shrinks slower than quadratically (the requirement fails for ", ne(N, 4), ")",
         ),

@@ -19,26 +19,25 @@ from symdecomp.algebra.cbmatrix import (
     SymbolicCBMatrix,
     SymbolicCirculant,
     block_diagonalization,
+    block_eigenvalue_matrix,
     cb_eigensystem,
     cb_matrix,
     constant_blocks,
-    frequency_matrix,
     lifted_vector,
-    perturbed_frequency_zero_matrix,
+    perturbed_block_eigenvalue_matrix,
 )
+from symdecomp.algebra.circulant import circ, fourier_row, mode_eigenvalue_derivation
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, verify_closed_form
-from symdecomp.algebra.circulant import circ, mode_eigenvalue_derivation
-from symdecomp.analysis.frequency import COS
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
+from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.claims.notation import Kron, eq, j, lambda_1, listed, ne, tup
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.analysis.tangent import tangent_eigenvalues
-
-from symdecomp.claims.notation import Kron, eq, ge, gt, j, lambda_1, listed, lt, ne, tup
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
 
 
 def _nc(name: str) -> sp.Symbol:
@@ -63,16 +62,12 @@ def _generic_cb(K: int, m: int):
     return cb_matrix([[[sp.Symbol(f"c{p}{q}_{l}") for l in range(m)] for q in range(K)] for p in range(K)])
 
 
-def _fourier_row(m: int, k: int):
-    return [sp.expand(sp.I ** (k * s)) if m == 4 else sp.exp(2 * sp.pi * sp.I * k * s / m) for s in range(m)]
-
-
 def _lift_identity_holds(cb, coefficients) -> bool:
     """``B (alpha (x) v_k) == (E_k alpha) (x) v_k`` for every frequency ``k``."""
     B = sp.Matrix(cb.matrix())
     for k in range(cb.order):
-        v = _fourier_row(cb.order, k)
-        E = sp.Matrix(frequency_matrix(cb, k))
+        v = fourier_row(cb.order, k)
+        E = sp.Matrix(block_eigenvalue_matrix(cb, k))
         lhs = B * sp.Matrix(lifted_vector(coefficients, v))
         rhs = sp.Matrix(lifted_vector(list(E * sp.Matrix(coefficients)), v))
         if not is_zero(sp.expand(lhs - rhs)):
@@ -252,8 +247,8 @@ def _eq48() -> CheckResult:
     cb = _generic_cb(2, 4)
     ok = True
     for k in range(4):
-        v = sp.Matrix(_fourier_row(4, k))
-        E = frequency_matrix(cb, k)
+        v = sp.Matrix(fourier_row(4, k))
+        E = block_eigenvalue_matrix(cb, k)
         for p in range(2):
             for q in range(2):
                 ok &= is_zero(sp.Matrix(cb.block(p, q)) * v - E[p, q] * v)
@@ -265,7 +260,7 @@ def _eq48() -> CheckResult:
             eq(_nc("C_pq") * _nc("v_k"), sp.Symbol("e_pq") * _nc("v_k")), " for generic circulant blocks of order 4 and every ",
             sp.Symbol("k"), " (Prop. 2.1); same index typo ", sp.Symbol("e_1,n-1"), " for ", sp.Symbol("e_0,n-1"), " as Eq. 47",
         ),
-        steps=(Step("$E$ for $v_1$, generic blocks of order 4", frequency_matrix(cb, 1)),),
+        steps=(Step("$E$ for $v_1$, generic blocks of order 4", block_eigenvalue_matrix(cb, 1)),),
         counterexample=Text("the first row of the printed matrix ends with ", sp.Symbol("e_1,n-1") * _nc("v"), " (see Eq. 47)"),
         correction=Text(
             "The ", tup(sp.Symbol("p"), sp.Symbol("q")), " entry is ", sp.Symbol("e_p,q") * _nc("v"), " with ",
@@ -305,7 +300,7 @@ def _eq49() -> CheckResult:
 def _eq50() -> CheckResult:
     cb = _random_cb(2, 4, 7)
     ok = True
-    for value, k, vectors in cb_eigensystem(cb):
+    for value, _k, vectors in cb_eigensystem(cb):
         for V in vectors:
             ok &= is_zero(sp.Matrix(cb.matrix()) * V - value * V)
     if not ok or not _lift_identity_holds(cb, [1, 1]):
@@ -334,7 +329,7 @@ def _remark61() -> CheckResult:
         ok &= sp.expand(P.det()) != 0
     # necessity: E_0 a Jordan block makes B non-diagonalizable
     jordan = cb_matrix([[[1, 0, 0], [1, 0, 0]], [[0, 0, 0], [1, 0, 0]]])
-    E0 = frequency_matrix(jordan, 0)
+    E0 = block_eigenvalue_matrix(jordan, 0)
     not_diag = not sp.Matrix(jordan.matrix()).is_diagonalizable() and not sp.Matrix(E0).is_diagonalizable()
     diag_case = _random_cb(2, 4, 11)
     eigvecs = [V for _, _, vs in cb_eigensystem(diag_case) for V in vs]
@@ -373,8 +368,8 @@ def _prop63() -> CheckResult:
     )
     C = SymbolicCBMatrix(blocks)
     Bm = SymbolicCBMatrix(tuple(tuple(SymbolicCirculant(b.offsets) for b in row) for row in blocks))
-    other_same = is_zero(C.frequency_matrix(zero_frequency=False) - Bm.frequency_matrix(zero_frequency=False))
-    zero_shift = sp.simplify(C.frequency_matrix(zero_frequency=True, order=M_SYM) - Bm.frequency_matrix(zero_frequency=True, order=M_SYM))
+    other_same = is_zero(C.block_eigenvalue_matrix(zero_frequency=False) - Bm.block_eigenvalue_matrix(zero_frequency=False))
+    zero_shift = sp.simplify(C.block_eigenvalue_matrix(zero_frequency=True, order=M_SYM) - Bm.block_eigenvalue_matrix(zero_frequency=True, order=M_SYM))
     zero_ok = is_zero(zero_shift - M_SYM * t)
     # exact, rational: blocks K = 2, order m = 3; compare E_0 + m T (corrected) and E_0 + K T (printed n = block count)
     x = sp.Symbol("x")
@@ -384,9 +379,9 @@ def _prop63() -> CheckResult:
     chi_C = sp.Poly(Cfull.charpoly(x).as_expr(), x)
     chi_B_other = sp.Integer(1)
     for k in (1, 2, 3):
-        chi_B_other *= (x * sp.eye(2) - frequency_matrix(cb, k)).det()
-    corrected = sp.Poly(sp.expand((x * sp.eye(2) - perturbed_frequency_zero_matrix(cb, T)).det() * chi_B_other), x)
-    printed = sp.Poly(sp.expand((x * sp.eye(2) - (frequency_matrix(cb, 0) + 2 * T)).det() * chi_B_other), x)
+        chi_B_other *= (x * sp.eye(2) - block_eigenvalue_matrix(cb, k)).det()
+    corrected = sp.Poly(sp.expand((x * sp.eye(2) - perturbed_block_eigenvalue_matrix(cb, T)).det() * chi_B_other), x)
+    printed = sp.Poly(sp.expand((x * sp.eye(2) - (block_eigenvalue_matrix(cb, 0) + 2 * T)).det() * chi_B_other), x)
     exact_ok = corrected == chi_C and printed != chi_C
     # no diagonalizability needed: Jordan E_0 example, constant blocks added
     jordan = cb_matrix([[[1, 0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0, 0], [1, 0, 0, 0]]])
@@ -394,8 +389,8 @@ def _prop63() -> CheckResult:
     chi_J = sp.Poly(sp.Matrix((jordan + constant_blocks(T2, 4)).matrix()).charpoly(x).as_expr(), x)
     rest = sp.Integer(1)
     for k in (1, 2, 3):
-        rest *= (x * sp.eye(2) - frequency_matrix(jordan, k)).det()
-    nodiag_ok = chi_J == sp.Poly(sp.expand((x * sp.eye(2) - perturbed_frequency_zero_matrix(jordan, T2)).det() * rest), x)
+        rest *= (x * sp.eye(2) - block_eigenvalue_matrix(jordan, k)).det()
+    nodiag_ok = chi_J == sp.Poly(sp.expand((x * sp.eye(2) - perturbed_block_eigenvalue_matrix(jordan, T2)).det() * rest), x)
     if not (other_same and zero_ok and exact_ok and nodiag_ok):
         return CheckResult(Status.ERROR, "a Prop. 6.3 identity failed; see steps")
     Kn, Tn, In, E_0, k_ = sp.Symbol("K"), _nc("T"), _nc("I"), _nc("E_0"), sp.Symbol("k")
@@ -413,7 +408,7 @@ def _prop63() -> CheckResult:
             "hypothesis 'if Remark 6.1 holds' is not needed",
         ),
         steps=(
-            Step("$E_k(C)-E_k(B)$ for $k\\ne0$ (banded blocks plus $t_{pq}J$, symbolic order $m$)", sp.simplify(C.frequency_matrix(zero_frequency=False) - Bm.frequency_matrix(zero_frequency=False))),
+            Step("$E_k(C)-E_k(B)$ for $k\\ne0$ (banded blocks plus $t_{pq}J$, symbolic order $m$)", sp.simplify(C.block_eigenvalue_matrix(zero_frequency=False) - Bm.block_eigenvalue_matrix(zero_frequency=False))),
             Step("$E_0(C)-E_0(B)$ (Prop. 6.1: $Jv_0=m v_0$, $Jv_k=0$)", zero_shift),
             Step("so $\\det(xI-C)=\\det(xI-E_0-mT)\\prod_{k\\ne0}\\det(xI-E_k)$ (Remark 6.1's similarity; no diagonalizability used). Rational example, $K=2$ blocks of order $m=4$:", Cfull),
             Step("its characteristic polynomial", chi_C.as_expr()),
@@ -553,7 +548,7 @@ def _two_eigenvalues() -> CheckResult:
     scheme = catmull_clark(ALPHA, BETA)
     cf = closed_form_characteristic_polynomial(scheme)
     L = reduce_first_column(subdivision_block_form(scheme)).lower_right
-    E = L.frequency_matrix(zero_frequency=False)
+    E = L.block_eigenvalue_matrix(zero_frequency=False)
     free_of_weights = not (E.free_symbols & {ALPHA, BETA})
     E0 = cf.zero_frequency_matrix
     dependence = sp.Matrix([[sp.diff(cf.zero_frequency_factor, ALPHA), sp.diff(cf.zero_frequency_factor, BETA)]])
@@ -591,7 +586,7 @@ def _no_interference() -> CheckResult:
     cf = closed_form_characteristic_polynomial(catmull_clark(ALPHA, BETA))
     E0 = cf.zero_frequency_matrix.subs({ALPHA: 0, BETA: 0, N: 3})
     moved = max(sp.Matrix(E0).eigenvals(), key=lambda e: float(e))
-    lam1 = tangent_eigenvalues(catmull_clark()).dominant.subs(COS, sp.cos(sp.pi / 3))
+    lam1 = tangent_eigenvalues(catmull_clark()).dominant.subs(cos_jtheta, sp.cos(sp.pi / 3))
     lam1 = sp.nsimplify(sp.simplify(lam1))
     larger = sp.simplify(moved - lam1) > 0
     if not larger:

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.verify.certify import certify, symmetric_functions
 from symdecomp.analysis.closed_forms import derived_closed_forms
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import lam
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
+from symdecomp.verify.certify import certify, symmetric_functions
 
 #: The valences proved by the claim's check (a second or two; ``symdecomp check`` does more).
 VALENCES = (3, 48)

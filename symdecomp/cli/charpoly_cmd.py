@@ -4,12 +4,13 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, matrix_characteristic_polynomial
+from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
+from symdecomp.cli.common import add_scheme_option, print_json, valence
+from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import lam as LAM
-from symdecomp.cli.common import add_scheme_option, print_json, valence
 
 
 def register(sub) -> None:
@@ -38,7 +39,7 @@ def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
     cf = closed_form_characteristic_polynomial(scheme)
     if not free:
         poly = cf.at(n)
-        matches = poly == matrix_characteristic_polynomial(scheme, n)
+        matches = poly == characteristic_polynomial(scheme, n)
         return [sp.Rational(int(c.p), int(c.q)) for c in reversed(poly.coeffs())], matches
     # affine in (alpha, beta): interpolate from three exact evaluations, each checked against the matrix
     points = [(0, 0), (1, 0), (0, 1)]
@@ -46,7 +47,7 @@ def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
     for a, b in points:
         values = {ALPHA: a, BETA: b}
         poly = cf.at(n, values)
-        matches &= poly == matrix_characteristic_polynomial(scheme, n, values)
+        matches &= poly == characteristic_polynomial(scheme, n, values)
         polys.append([sp.Rational(int(c.p), int(c.q)) for c in reversed(poly.coeffs())])
     p0, pa, pb = polys
     return [sp.expand(c0 + ALPHA * (ca - c0) + BETA * (cb - c0)) for c0, ca, cb in zip(p0, pa, pb)], matches

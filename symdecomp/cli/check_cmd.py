@@ -12,11 +12,12 @@ from functools import partial
 
 import mpmath
 
-from symdecomp.verify.certify import certify
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.verify.numeric import CheckStatus, numeric_check
-from symdecomp.schemes.scheme import Scheme
 from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.verify.certify import certify
+from symdecomp.verify.numeric import numeric_check
+from symdecomp.verify.result import CrossCheckStatus
 
 __all__ = ["register", "run", "check_valences"]
 
@@ -112,7 +113,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
                     f"{mpmath.nstr(r.max_spread, 3):>10}  {','.join(map(str, r.precisions))}")
         print(line if r.ok else f"{line}\n      {r.message}", flush=True)
     elapsed = time.perf_counter() - start
-    counts = {s.value: sum(1 for r in rows if r.status is s) for s in CheckStatus}
+    counts = {s.value: sum(1 for r in rows if r.status is s) for s in CrossCheckStatus}
     failed = [r for r in rows if not r.ok]
     summary = {
         "mode": "certified" if args.certify else "numeric",

@@ -7,9 +7,9 @@ import sys
 from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
+from symdecomp.cli.common import print_json, progress
 from symdecomp.errors import SymdecompError
 from symdecomp.output.latex import aslatex, derivation_files
-from symdecomp.cli.common import print_json, progress
 
 __all__ = ["register", "run", "write_derivations"]
 

@@ -9,7 +9,6 @@ nice elliptic behaviour (both defects, from their closed forms in ``n``) for ``n
 
 from __future__ import annotations
 
-
 import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions

@@ -20,7 +20,7 @@ import json
 import os
 import struct
 import tempfile
-from typing import Iterable
+from collections.abc import Iterable
 
 import flint
 import numpy as np

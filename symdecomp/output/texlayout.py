@@ -217,7 +217,8 @@ class _Reader:
         if name in ("array", "tabular"):
             self.raw_group()  # column specification
         # cells of matrices and cases are in text style: their fractions are script size
-        cell_scale = scale if name not in ("matrix", "pmatrix", "bmatrix", "vmatrix", "Vmatrix", "smallmatrix", "cases", "array") else min(scale, 0.999)
+        grids = ("matrix", "pmatrix", "bmatrix", "vmatrix", "Vmatrix", "smallmatrix", "cases", "array")
+        cell_scale = scale if name not in grids else min(scale, 0.999)
         if name == "smallmatrix":
             cell_scale = scale * 0.72
         columns: list[float] = []
@@ -273,15 +274,11 @@ class Piece:
     width: float
 
     @classmethod
-    def of(cls, tex: str) -> "Piece":
+    def of(cls, tex: str) -> Piece:
         return cls(tex, estimate_width(tex))
 
 
 _PRINTER = LatexPrinter()
-
-
-def _latex(expr) -> str:
-    return sp.latex(expr)
 
 
 def _delimiters(tex: str) -> tuple[str, str]:
@@ -327,14 +324,14 @@ def break_pieces(expr, budget: float = LINE_WIDTH_EM) -> list[Piece]:
     >>> len(parts) > 1 and all(p.width <= 20 for p in parts)
     True
     """
-    tex = _latex(expr)
+    tex = sp.latex(expr)
     whole = Piece.of(tex)
     if whole.width <= budget or not isinstance(expr, sp.Basic):
         return [whole]
     if isinstance(expr, sp.Add):
         pieces: list[Piece] = []
         for sign, term in _add_terms(expr):
-            term_tex = _latex(term)
+            term_tex = sp.latex(term)
             if _PRINTER._needs_add_brackets(term):
                 inner = break_pieces(term, budget - 2)
                 if len(inner) == 1:
@@ -350,18 +347,18 @@ def break_pieces(expr, budget: float = LINE_WIDTH_EM) -> list[Piece]:
             return _attach("- ", break_pieces(-expr, budget - 2))
         numer, denom = sp.fraction(expr)
         if denom != 1:
-            front = r"\frac{1}{%s}" % _latex(denom)
+            front = r"\frac{1}{%s}" % sp.latex(denom)
             inner = break_pieces(numer, budget - 2)
             if isinstance(numer, sp.Add):
                 if len(inner) == 1:
                     return [Piece.of(front + r" \left(" + inner[0].tex + r"\right)")]
-                left, right = _delimiters(_latex(numer))
+                left, right = _delimiters(sp.latex(numer))
                 return _attach(front + " " + left, inner, right)
             return _attach(front + " ", inner)
         factors = expr.as_ordered_factors()
         pieces = []
         for k, factor in enumerate(factors):
-            factor_tex = _latex(factor)
+            factor_tex = sp.latex(factor)
             # sympy separates a factor that starts with a digit by \cdot; so do we
             joiner = "" if k == 0 else (r" \cdot " if factor_tex[:1].isdigit() else " ")
             if isinstance(factor, sp.Add):
@@ -377,8 +374,8 @@ def break_pieces(expr, budget: float = LINE_WIDTH_EM) -> list[Piece]:
     if isinstance(expr, sp.Pow) and isinstance(expr.base, (sp.Add, sp.Mul)):
         # (long)^k, and also sqrt(long) and 1/long, as a power of a group split across lines
         inner = break_pieces(expr.base, budget - 3)
-        left, right = _delimiters(_latex(expr.base))
-        return _attach(left, inner, right + "^{%s}" % _latex(expr.exp))
+        left, right = _delimiters(sp.latex(expr.base))
+        return _attach(left, inner, right + "^{%s}" % sp.latex(expr.exp))
     if isinstance(expr, sp.Abs):
         inner = break_pieces(expr.args[0], budget - 2)
         return _attach(r"\bigl|", inner, r"\bigr|")
@@ -387,11 +384,11 @@ def break_pieces(expr, budget: float = LINE_WIDTH_EM) -> list[Piece]:
         if expr.func == sp.exp:
             head = r"\exp"
         else:
-            name = _latex(expr.func(sp.Symbol("x")))
+            name = sp.latex(expr.func(sp.Symbol("x")))
             head = name[: name.rfind("x")].replace(r"{\left(", "").replace(r"\left(", "")
         if r"\right" not in head and head.count("{") == head.count("}"):
             inner = break_pieces(expr.args[0], budget - 3)
-            left, right = _delimiters(_latex(expr.args[0]))
+            left, right = _delimiters(sp.latex(expr.args[0]))
             return _attach(head + left, inner, right)
     if isinstance(expr, sp.Tuple):
         return _sequence_pieces(list(expr), budget)
@@ -400,7 +397,7 @@ def break_pieces(expr, budget: float = LINE_WIDTH_EM) -> list[Piece]:
 
 def _sequence_pieces(items: list, budget: float) -> list[Piece]:
     """The items of a tuple as pieces ``(x_1,``, ``x_2,`` ..., ``x_k)``."""
-    texts = [_latex(item) for item in items]
+    texts = [sp.latex(item) for item in items]
     left, right = _delimiters(" ".join(texts))
     pieces: list[Piece] = []
     for k, item in enumerate(items):

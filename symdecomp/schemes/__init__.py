@@ -1,8 +1,9 @@
 """Subdivision schemes as data, and the matrices and meshes built from their rules.
 
-A scheme's rules (:mod:`.scheme`), the subdivision matrix of the 1-ring, symbolic and exact
-(:mod:`.matrices`), whole quad meshes refined by the scheme's rules (:mod:`.mesh`), and the
-1-ring as a polygon pair (:mod:`.ring`).
+A scheme's rules and the one assembly of its subdivision matrix (:mod:`.scheme`), the full
+matrix in FLINT rationals and its characteristic polynomial (:mod:`.full_matrix`), rules as
+polynomials in the index shift (:mod:`.shift_stencil`), whole quad meshes refined by the
+scheme's rules (:mod:`.mesh`), and the 1-ring as a polygon pair (:mod:`.ring`).
 """
 
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix, vertex_order

@@ -38,10 +38,10 @@ Values at vertices are tuples of coordinates (any length; scalar fields are 1-tu
 from __future__ import annotations
 
 import numbers
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from types import MappingProxyType
-from typing import Callable, Iterable, Mapping, Sequence
 
 import sympy as sp
 
@@ -58,9 +58,7 @@ __all__ = [
     "ring_mesh",
     "ring_mesh_labels",
     "cube_mesh",
-    "refine",
-    "point_stencils",
-    "refinement_matrix",
+    "refine", "point_stencils", "refinement_matrix",
     "central_rings",
 ]
 
@@ -99,8 +97,8 @@ class MeshRules:
     def vertex_weights(self, valence: int) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """``(center, each edge neighbour, each face neighbour)`` of the vertex point at this valence."""
         v = self.scheme.vertex_rule
-        values = (sp.sympify(w).subs(N, valence) for w in (v.center, v.each_a, v.each_b))
-        return tuple(x if x.is_Rational else sp.nsimplify(x) for x in values)
+        values = (w.subs(N, valence) for w in (v.center, v.each_a, v.each_b))
+        return tuple(x if x.is_Rational else sp.simplify(x) for x in values)
 
 
 def mesh_rules(scheme: Scheme) -> MeshRules:
@@ -206,10 +204,6 @@ class QuadMesh:
         if v not in self._incident:
             raise InvalidMeshError(f"vertex {v!r} is not a corner of any face of the mesh")
 
-    def edge_faces(self, u: int, v: int) -> tuple[int | None, int | None]:
-        """``(left, right)``: the faces on the left of ``u -> v`` and of ``v -> u`` (None on a boundary)."""
-        return self._directed.get((u, v)), self._directed.get((v, u))
-
     def is_interior(self, v: int) -> bool:
         """Whether ``v`` is surrounded by a closed fan of faces (each of its edges has two faces)."""
         self._check_vertex(v)
@@ -259,7 +253,7 @@ class QuadMesh:
         o, a, b = self.one_ring(v, start)
         return tuple(self.values[x] for x in (o,) + a + b)
 
-    def neighbourhood(self, v: int, rings: int) -> "QuadMesh":
+    def neighbourhood(self, v: int, rings: int) -> QuadMesh:
         """The sub-mesh of faces within ``rings`` face-rings of ``v`` (1: the faces at ``v``)."""
         if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or rings < 1:
             raise InvalidMeshError(f"rings must be a positive integer, got {rings!r}")
@@ -286,7 +280,7 @@ class QuadMesh:
         edges = len({frozenset(e) for e in self._directed})
         return len(self._incident) - edges + len(self.faces) == 1 and bool(self.boundary_vertices())
 
-    def with_values(self, values: Mapping[int, tuple]) -> "QuadMesh":
+    def with_values(self, values: Mapping[int, tuple]) -> QuadMesh:
         """The same faces with other values."""
         return QuadMesh(self.faces, values)
 
@@ -442,6 +436,18 @@ def refinement_matrix(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules, colum
     return out
 
 
+def _child_faces(mesh: QuadMesh, vertex_point: dict, edge_point: dict, face_point: dict) -> list[tuple[int, ...]]:
+    """The four children of each face (vertex, edge, face and edge point), where all four exist."""
+    new_faces = []
+    for fi, f in enumerate(mesh.faces):
+        for k in range(4):
+            corner, nxt, prv = f[k], f[(k + 1) % 4], f[(k + 3) % 4]
+            quad = (vertex_point.get(corner), edge_point.get(frozenset((corner, nxt))), face_point[fi], edge_point.get(frozenset((prv, corner))))
+            if None not in quad:
+                new_faces.append(quad)
+    return new_faces
+
+
 def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules) -> Refinement:
     """One exact refinement step of ``mesh`` by the scheme's mesh rules (:func:`mesh_rules`).
 
@@ -459,13 +465,7 @@ def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules) -> Refinement:
             i = next(counter)
             ids[key] = i
             new_values[i] = _combine((w, vals[x]) for w, x in stencil)
-    new_faces = []
-    for fi, f in enumerate(mesh.faces):
-        for k in range(4):
-            corner, nxt, prv = f[k], f[(k + 1) % 4], f[(k + 3) % 4]
-            quad = (vertex_point.get(corner), edge_point.get(frozenset((corner, nxt))), face_point[fi], edge_point.get(frozenset((prv, corner))))
-            if None not in quad:
-                new_faces.append(quad)
+    new_faces = _child_faces(mesh, vertex_point, edge_point, face_point)
     used = {x for f in new_faces for x in f}
     refined = QuadMesh(tuple(new_faces), {i: val for i, val in new_values.items() if i in used})
     kept = (MappingProxyType({k: i for k, i in m.items() if i in used}) for m in (vertex_point, edge_point, face_point))

@@ -26,11 +26,26 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import FrequencyOutOfRangeError, InvalidPolygonError
 from symdecomp.algebra.polygons import PolygonDecomposition, as_vertex_rows, decompose
+from symdecomp.errors import FrequencyOutOfRangeError, InvalidPolygonError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
-__all__ = ["OneRing", "subdivide", "one_ring_decomposition", "OneRingDecomposition", "ngon_amplitudes"]
+__all__ = ["interleaved_polygon", "OneRing", "subdivide", "one_ring_decomposition", "OneRingDecomposition", "ngon_amplitudes"]
+
+
+def interleaved_polygon(a, b) -> list:
+    """The 2n-gon ``P = (a_0, b_0, a_1, b_1, ..., a_{n-1}, b_{n-1})`` of a 1-ring (Eq. 10).
+
+    ``a`` and ``b`` are the ``n`` edge and face neighbours (any sequences of points); the
+    result lists the points themselves, interleaved.
+
+    >>> interleaved_polygon(["a0", "a1"], ["b0", "b1"])
+    ['a0', 'b0', 'a1', 'b1']
+    """
+    a, b = list(a), list(b)
+    if len(a) != len(b):
+        raise InvalidPolygonError(f"a 1-ring needs as many face neighbours as edge neighbours, got {len(a)} and {len(b)}")
+    return [p for pair in zip(a, b) for p in pair]
 
 
 @dataclass(frozen=True)
@@ -47,7 +62,7 @@ class OneRing:
     arithmetic: str
 
     @classmethod
-    def from_points(cls, center, a, b) -> "OneRing":
+    def from_points(cls, center, a, b) -> OneRing:
         """Build and validate a 1-ring (same rules as polygons: exact, numpy or mpmath)."""
         a_rows, kind_a, dim_a = as_vertex_rows(a, name="edge neighbours a")
         b_rows, kind_b, dim_b = as_vertex_rows(b, name="face neighbours b")
@@ -74,18 +89,15 @@ class OneRing:
         return len(self.a)
 
     def polygon(self) -> list:
-        """The 2n-gon ``(a_0, b_0, a_1, b_1, ..., a_{n-1}, b_{n-1})`` of Eq. 10."""
-        out = []
-        for p, q in zip(self.a, self.b):
-            out += [list(p), list(q)]
-        return out
+        """The 2n-gon ``(a_0, b_0, a_1, b_1, ..., a_{n-1}, b_{n-1})`` of Eq. 10, as lists."""
+        return [list(p) for p in interleaved_polygon(self.a, self.b)]
 
     def rows(self) -> list:
         """The points in the order of the subdivision matrix: ``O, a_0..a_{n-1}, b_0..b_{n-1}``."""
         return [list(self.center)] + [list(p) for p in self.a] + [list(q) for q in self.b]
 
     @classmethod
-    def from_rows(cls, rows, arithmetic: str) -> "OneRing":
+    def from_rows(cls, rows, arithmetic: str) -> OneRing:
         n = (len(rows) - 1) // 2
         return cls(tuple(rows[0]), tuple(tuple(r) for r in rows[1 : 1 + n]), tuple(tuple(r) for r in rows[1 + n :]), arithmetic)
 
@@ -102,7 +114,7 @@ def subdivide(scheme: Scheme, ring: OneRing, steps: int = 1) -> OneRing:
         X = sp.Matrix(rows)
         for _ in range(steps):
             X = S * X
-        return OneRing.from_rows([tuple(sp.nsimplify(x) for x in X.row(i)) for i in range(X.rows)], "exact")
+        return OneRing.from_rows([tuple(sp.expand(x) for x in X.row(i)) for i in range(X.rows)], "exact")
     if ring.arithmetic == "numpy":
         A = np.array(S.tolist(), dtype=float)
         X = np.array(rows)

@@ -23,14 +23,13 @@ Matrix([[9/16, 3/32, 3/32, 3/32, 3/32, 1/64, 1/64, 1/64, 1/64]])
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Mapping
+from typing import Any
 
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError, NotAffineError, check_valence
-from symdecomp.symbols import alpha as ALPHA
-from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
 
 __all__ = [
@@ -38,6 +37,7 @@ __all__ = [
     "VertexRule",
     "Scheme",
     "catmull_clark",
+    "subdivision_entries",
     "subdivision_matrix",
     "vertex_order",
 ]
@@ -83,7 +83,7 @@ class Stencil:
     b: tuple[tuple[int, sp.Expr], ...]
 
     @classmethod
-    def from_weights(cls, center, a: Mapping[int, object], b: Mapping[int, object], *, name: str = "rule") -> "Stencil":
+    def from_weights(cls, center, a: Mapping[int, object], b: Mapping[int, object], *, name: str = "rule") -> Stencil:
         """Build a stencil and check that it is affine."""
         stencil = cls(_sympify_weight(center, f"{name}: center"), _weights(a, f"{name}: a"), _weights(b, f"{name}: b"))
         total = sp.simplify(stencil.weight_sum() - 1)
@@ -117,7 +117,7 @@ class VertexRule:
     each_b: sp.Expr
 
     @classmethod
-    def from_weights(cls, center, each_a, each_b, *, name: str = "vertex rule") -> "VertexRule":
+    def from_weights(cls, center, each_a, each_b, *, name: str = "vertex rule") -> VertexRule:
         rule = cls(
             _sympify_weight(center, f"{name}: center"),
             _sympify_weight(each_a, f"{name}: each_a"),
@@ -131,7 +131,7 @@ class VertexRule:
         return rule
 
     @classmethod
-    def affine(cls, each_a, each_b, *, name: str = "vertex rule") -> "VertexRule":
+    def affine(cls, each_a, each_b, *, name: str = "vertex rule") -> VertexRule:
         """The affine vertex rule with the given weights: ``center = 1 - n*each_a - n*each_b``."""
         a = _sympify_weight(each_a, f"{name}: each_a")
         b = _sympify_weight(each_b, f"{name}: each_b")
@@ -179,7 +179,14 @@ class Scheme:
         """The smallest valence for which the stencil offsets are distinct mod ``n`` (at least 3)."""
         return max(3, self._span + 1)
 
-    def substitute(self, values: Mapping[sp.Symbol, object], *, name: str | None = None) -> "Scheme":
+    def fitting_valence(self, n) -> int:
+        """``n``, checked to be a valence at which the stencils fit (else :class:`InvalidSchemeError`)."""
+        n = check_valence(n)
+        if n < self.minimum_valence():
+            raise InvalidSchemeError(f"scheme {self.name!r} has stencils {self._span + 1} wide, wider than the valence n = {n}")
+        return n
+
+    def substitute(self, values: Mapping[sp.Symbol, object], *, name: str | None = None) -> Scheme:
         """The scheme with some parameters replaced (e.g. tuned vertex weights)."""
         subs = {k: sp.sympify(v) for k, v in values.items()}
 
@@ -206,7 +213,8 @@ def catmull_clark(alpha=None, beta=None) -> Scheme:
     The weight of ``O`` is ``1 - n*alpha - n*beta`` so that the rule is affine (Eq. 16 as printed
     has ``1 - alpha - beta``; see the claim "Eq. 16").
 
-    >>> catmull_clark(ALPHA, BETA).vertex_rule.center
+    >>> from symdecomp.symbols import alpha, beta
+    >>> catmull_clark(alpha, beta).vertex_rule.center
     -alpha*n - beta*n + 1
     """
     standard = alpha is None and beta is None
@@ -227,31 +235,53 @@ def vertex_order(n: int) -> tuple[str, ...]:
     return ("O",) + tuple(f"a_{i}" for i in range(n)) + tuple(f"b_{i}" for i in range(n))
 
 
-def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:
-    """The exact ``(2n+1) x (2n+1)`` subdivision matrix of ``scheme`` at valence ``n``.
+def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]) -> dict[tuple[int, int], Any]:
+    """The nonzero entries ``{(row, column): value}`` of the subdivision matrix at valence ``n``.
 
-    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` (Section 6). Built entry
-    by entry from the rules, without any circulant structure.
+    The one assembly of the matrix from the rules (Eq. 14-16; Section 6), for any number type:
+    ``weight`` turns a weight of a rule (a sympy expression in ``n`` and the parameters) into
+    a number at this valence (a sympy expression for :func:`subdivision_matrix`, a FLINT
+    rational for :mod:`symdecomp.schemes.full_matrix`). Rows and columns in the order
+    ``(O, a_0..a_{n-1}, b_0..b_{n-1})``; ``O(n)`` entries, no circulant or block structure.
+    Weights that land on the same entry (offsets equal mod ``n``) are added.
     """
-    n = check_valence(n)
-    if n < scheme.minimum_valence():
-        raise InvalidSchemeError(
-            f"scheme {scheme.name!r} has stencils {scheme._span + 1} wide, wider than the valence n = {n}"
-        )
-    size = 2 * n + 1
-    S = sp.zeros(size, size)
+    n = scheme.fitting_valence(n)
+    entries: dict[tuple[int, int], Any] = {}
+
+    def add(r: int, c: int, x) -> None:
+        value = entries.get((r, c), 0) + x
+        if value == 0:
+            entries.pop((r, c), None)
+        else:
+            entries[(r, c)] = value
+
     v = scheme.vertex_rule
-    S[0, 0] = v.center.subs(N, n)
+    add(0, 0, weight(v.center))
+    each_a, each_b = weight(v.each_a), weight(v.each_b)
     for i in range(n):
-        S[0, 1 + i] = v.each_a.subs(N, n)
-        S[0, 1 + n + i] = v.each_b.subs(N, n)
+        add(0, 1 + i, each_a)
+        add(0, 1 + n + i, each_b)
     for row_offset, rule in ((1, scheme.edge_rule), (1 + n, scheme.face_rule)):
+        center = weight(rule.center)
+        a = [(k, weight(x)) for k, x in rule.a]
+        b = [(k, weight(x)) for k, x in rule.b]
         for i in range(n):
             r = row_offset + i
-            S[r, 0] += rule.center.subs(N, n)
-            for k, w in rule.a:
-                S[r, 1 + (i + k) % n] += w.subs(N, n)
-            for k, w in rule.b:
-                S[r, 1 + n + (i + k) % n] += w.subs(N, n)
-    return sp.ImmutableMatrix(S)
+            add(r, 0, center)
+            for k, x in a:
+                add(r, 1 + (i + k) % n, x)
+            for k, x in b:
+                add(r, 1 + n + (i + k) % n, x)
+    return entries
 
+
+def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:
+    """The exact ``(2n+1) x (2n+1)`` subdivision matrix of ``scheme`` at valence ``n``, in sympy.
+
+    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` (Section 6), assembled by
+    :func:`subdivision_entries`, without any circulant structure.
+    """
+    n = check_valence(n)
+    size = 2 * n + 1
+    entries = subdivision_entries(scheme, n, lambda w: w.subs(N, n))
+    return sp.ImmutableMatrix(size, size, lambda r, c: entries.get((r, c), sp.Integer(0)))

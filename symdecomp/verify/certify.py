@@ -2,7 +2,7 @@
 
 The certificate is an exact polynomial identity. Let ``chi_S`` be the characteristic
 polynomial of the full ``(2n+1) x (2n+1)`` subdivision matrix, computed exactly over ``Q``
-by FLINT from the matrix built out of the rules (:mod:`symdecomp.schemes.matrices`; no block
+by FLINT from the matrix built out of the rules (:mod:`symdecomp.schemes.full_matrix`; no block
 structure). Let ``v_1..v_{2n+1}`` be the closed-form eigenvalues (:mod:`symdecomp.analysis.closed_forms`)
 and ``C(lambda) = prod_i (lambda - v_i)`` their characteristic polynomial. The claim
 "the closed forms are the eigenvalues, with multiplicities" is exactly ``chi_S = C``. It is
@@ -44,27 +44,27 @@ neither can be shown the result is ``undecided``, which is a failure.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Mapping
+from typing import ClassVar
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
-from symdecomp.verify.numeric import CheckStatus
-from symdecomp.errors import check_valence
-from symdecomp.schemes.matrices import characteristic_polynomial, parameter_values
-from symdecomp.analysis.frequency import COS, SIN
-from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value
+from symdecomp.errors import check_valence
+from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
+from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
 __all__ = ["SymmetricFunctions", "symmetric_functions", "Certificate", "certify", "closed_form_characteristic_value"]
 
 _ETA = sp.Symbol("eta")
-_OMEGA = sp.Symbol("omega")
 
 
 @dataclass(frozen=True)
@@ -105,10 +105,10 @@ def _to_laurent(expr: sp.Expr):
     """Rewrite a polynomial in ``c, s`` as a Laurent polynomial in ``omega``; ``None`` if impossible."""
     expr = sp.expand(expr)
     if expr.has(sp.Abs) or any(
-        isinstance(p, sp.Pow) and not p.exp.is_Integer and p.base.has(COS, SIN) for p in expr.atoms(sp.Pow)
+        isinstance(p, sp.Pow) and not p.exp.is_Integer and p.base.has(cos_jtheta, sin_jtheta) for p in expr.atoms(sp.Pow)
     ):
         return None
-    z = sp.expand(expr.subs({COS: (_ETA + 1 / _ETA) / 2, SIN: (_ETA - 1 / _ETA) / (2 * sp.I)}))
+    z = sp.expand(expr.subs({cos_jtheta: (_ETA + 1 / _ETA) / 2, sin_jtheta: (_ETA - 1 / _ETA) / (2 * sp.I)}))
     terms: dict = {}
     for term in sp.Add.make_args(z):
         coeff, power = term.as_coeff_exponent(_ETA)
@@ -120,7 +120,7 @@ def _to_laurent(expr: sp.Expr):
         coeff = sp.cancel(coeff)
         if coeff == 0:
             continue
-        if power % 2 or coeff.has(sp.I) or coeff.has(COS, SIN):
+        if power % 2 or coeff.has(sp.I) or coeff.has(cos_jtheta, sin_jtheta):
             return None
         out[power // 2] = coeff
     return out
@@ -158,15 +158,12 @@ def symmetric_functions(cf: ClosedForms) -> SymmetricFunctions:
 
 
 @dataclass(frozen=True)
-class Certificate:
-    """The certified cross-check of one valence."""
+class Certificate(CrossCheckResult):
+    """The certified cross-check of one valence.
 
-    #: The valence.
-    n: int
-    #: The scheme's name.
-    scheme: str
-    #: ``agree`` (proved), ``disagree`` (refuted, rigorously) or ``undecided`` (neither: a failure).
-    status: CheckStatus
+    Status ``agree`` (proved), ``disagree`` (refuted, rigorously) or ``undecided`` (neither: a failure).
+    """
+
     #: How the verdict was reached, e.g. ``"chi_S = C at 2n+1 points"``.
     method: str
     #: Number of distinct eigenvalues (from the squarefree part of ``chi_S``).
@@ -179,25 +176,16 @@ class Certificate:
     multiplicities_certified: bool
     #: Bits of the largest coefficient numerator of ``chi_S``.
     height_bits: int
-    #: A one-line verdict; on failure it names the valence and the eigenvalue.
-    message: str
 
-    @property
-    def ok(self) -> bool:
-        return self.status is CheckStatus.AGREE
+    mode: ClassVar[str] = "certified"
 
-    def as_json(self) -> dict:
+    def details(self) -> dict:
         return {
-            "n": self.n,
-            "scheme": self.scheme,
-            "mode": "certified",
-            "status": self.status.value,
             "method": self.method,
             "distinct": self.distinct,
             "multiplicities": list(self.multiplicities),
             "multiplicities_certified": self.multiplicities_certified,
             "height_bits": self.height_bits,
-            "message": self.message,
         }
 
 
@@ -261,61 +249,26 @@ def certify(
     n = check_valence(n)
     subs = parameter_values(scheme, parameters)
     cf = closed_forms or derived_closed_forms(scheme)
-    labels = cf.eigenvalue_labels(n)
     chi = characteristic_polynomial(scheme, n, subs)
     height = max(int(c.p).bit_length() for c in chi.coeffs())
     squarefree = chi.numer().factor_squarefree()[1]  # [(f, e)]: chi ~ prod f^e, f squarefree, coprime
     distinct = sum(f.degree() for f, _ in squarefree)
-    sym = symmetric_functions(cf)
-    size = 2 * n + 1
-    identity = False
-    method = ""
-    if sym.frequency_zero is not None and sym.trace is not None and sym.determinant is not None:
-        points = range(size)
-        values = closed_form_characteristic_value(sym, n, subs, points)
-        if values is not None:
-            identity = all(chi(flint.fmpq(x)) == v for x, v in zip(points, values))
-            method = f"chi_S = prod(closed-form factors) at {size} points" if identity else "chi_S != closed-form char. poly"
-        else:
-            method = "symmetric functions not rational at this n"
-    else:
-        method = f"identity not formed: {sym.reason}"
-
-    prec = 128
-    while True:
-        balls = cf.values(n, subs, engine="arb", prec=prec)
-        clusters = _clusters(balls)
-        if identity:
-            certified = len(clusters) == distinct
-            if certified or prec >= max_prec:
-                break
-        else:
-            old = flint.ctx.prec
-            flint.ctx.prec = prec
-            try:
-                refutation = _refute(chi, squarefree, balls, labels, n, digits)
-            finally:
-                flint.ctx.prec = old
-            if refutation is not None or prec >= max_prec:
-                break
-        prec *= 2
+    identity, method = _polynomial_identity(chi, symmetric_functions(cf), n, subs)
+    balls, clusters, prec, refutation = _separate_or_refute(cf, n, subs, chi, squarefree, identity, digits, max_prec)
     order = sorted(clusters, key=lambda cl: (-_mid_abs(balls[cl[0]]), -_mid_re(balls[cl[0]])))
-    multiplicities = tuple(len(cl) for cl in order)
     # the printed values: a square root of a vanishing discriminant (a defective eigenvalue)
     # is only known to half the working precision, so they are recomputed with room to spare
     accurate = flint.arb(10) ** (-(digits + 5))
-    if all(b.rad() < accurate for b in balls):
-        text_balls = balls
-    else:
-        text_balls = cf.values(n, subs, engine="arb", prec=max(2 * prec, 8 * digits + 128))
-    texts = tuple(_text(text_balls[cl[0]], digits) for cl in order)
+    if any(b.rad() >= accurate for b in balls):
+        balls = cf.values(n, subs, engine="arb", prec=max(2 * prec, 8 * digits + 128))
+    certified = identity and len(clusters) == distinct
     if identity:
         note = "multiplicities certified" if certified else "distinct values not separated at the precision limit"
-        status, message = CheckStatus.AGREE, f"n = {n}: proved: {method}; {distinct} distinct eigenvalues, {note}"
+        status, message = CrossCheckStatus.AGREE, f"n = {n}: proved: {method}; {distinct} distinct eigenvalues, {note}"
     elif refutation is not None:
-        status, message, certified = CheckStatus.DISAGREE, refutation, False
+        status, message = CrossCheckStatus.DISAGREE, refutation
     else:
-        status, certified = CheckStatus.UNDECIDED, False
+        status = CrossCheckStatus.UNDECIDED
         message = f"n = {n}: not certified ({method}), and no closed-form eigenvalue could be refuted at {max_prec} bits"
     return Certificate(
         n=n,
@@ -323,12 +276,47 @@ def certify(
         status=status,
         method=method,
         distinct=distinct,
-        multiplicities=multiplicities,
-        values=texts,
+        multiplicities=tuple(len(cl) for cl in order),
+        values=tuple(_text(balls[cl[0]], digits) for cl in order),
         multiplicities_certified=certified,
         height_bits=height,
         message=message,
     )
+
+
+def _polynomial_identity(chi, sym: SymmetricFunctions, n: int, subs: dict) -> tuple[bool, str]:
+    """Step 2 of the proof: whether ``chi_S = C`` (at ``2n+1`` points), and how that was decided."""
+    if sym.frequency_zero is None or sym.trace is None or sym.determinant is None:
+        return False, f"identity not formed: {sym.reason}"
+    points = range(2 * n + 1)
+    values = closed_form_characteristic_value(sym, n, subs, points)
+    if values is None:
+        return False, "symmetric functions not rational at this n"
+    identity = all(chi(flint.fmpq(x)) == v for x, v in zip(points, values))
+    return identity, f"chi_S = prod(closed-form factors) at {2 * n + 1} points" if identity else "chi_S != closed-form char. poly"
+
+
+def _separate_or_refute(cf, n, subs, chi, squarefree, identity, digits, max_prec):
+    """``(balls, clusters, prec, refutation)``: the closed forms as Arb balls, doubling the precision.
+
+    When the identity holds, until the balls fall into as many clusters as ``chi_S`` has
+    distinct roots; otherwise until one closed form is rigorously refuted. Either way at most
+    up to ``max_prec`` bits.
+    """
+    labels = cf.eigenvalue_labels(n)
+    prec, refutation = 128, None
+    while True:
+        balls = cf.values(n, subs, engine="arb", prec=prec)
+        clusters = _clusters(balls)
+        if identity:
+            done = len(clusters) == sum(f.degree() for f, _ in squarefree)
+        else:
+            with flint.ctx.workprec(prec):
+                refutation = _refute(chi, squarefree, balls, labels, n, digits)
+            done = refutation is not None
+        if done or prec >= max_prec:
+            return balls, clusters, prec, refutation
+        prec *= 2
 
 
 def _mid_abs(z):

@@ -25,32 +25,20 @@ more than the requested ``dps`` digits. They are matched with the closed-form ei
 
 from __future__ import annotations
 
-import enum
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Callable, Mapping
+from typing import ClassVar
 
 import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
-from symdecomp.errors import check_valence
-from symdecomp.schemes.matrices import parameter_values, sparse_subdivision_matrix
-from symdecomp.schemes.scheme import Scheme
 from symdecomp.analysis.spectrum import format_value
+from symdecomp.errors import check_valence
+from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
-__all__ = ["CheckStatus", "EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
-
-
-class CheckStatus(str, enum.Enum):
-    """The outcome of a cross-check at one valence."""
-
-    #: The closed forms agree with the full matrix (to ``dps`` digits, or exactly if certified).
-    AGREE = "agree"
-    #: They do not: the message names the valence and the eigenvalue.
-    DISAGREE = "disagree"
-    #: The numeric spectrum did not stop moving within the precision limit: no verdict (a failure).
-    NOT_CONVERGED = "not converged"
-    #: Certified mode could neither prove nor refute (a failure).
-    UNDECIDED = "undecided"
+__all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
 
 
 @dataclass(frozen=True)
@@ -79,44 +67,29 @@ class EigenvalueMatch:
 
 
 @dataclass(frozen=True)
-class NumericCheck:
-    """The numeric cross-check of one valence."""
+class NumericCheck(CrossCheckResult):
+    """The numeric cross-check of one valence (status: agree, disagree or not converged)."""
 
-    #: The valence.
-    n: int
-    #: The scheme's name.
-    scheme: str
     #: Digits to which the closed forms must agree.
     dps: int
     #: Working precisions (decimal digits) of the eigenvalue computations, in order.
     precisions: tuple[int, ...]
-    #: Agree, disagree or not converged.
-    status: CheckStatus
     #: The largest deviation of a matched mean from its closed form (at the last precision).
     max_deviation: object
     #: The largest spread of a cluster (large for defective eigenvalues).
     max_spread: object
     #: One entry per distinct closed-form value.
     matches: tuple[EigenvalueMatch, ...]
-    #: A one-line verdict; on failure it names the valence and the eigenvalue.
-    message: str
 
-    @property
-    def ok(self) -> bool:
-        return self.status is CheckStatus.AGREE
+    mode: ClassVar[str] = "numeric"
 
-    def as_json(self) -> dict:
+    def details(self) -> dict:
         return {
-            "n": self.n,
-            "scheme": self.scheme,
-            "mode": "numeric",
-            "status": self.status.value,
             "dps": self.dps,
             "precisions": list(self.precisions),
             "max_deviation": mpmath.nstr(self.max_deviation, 3),
             "max_spread": mpmath.nstr(self.max_spread, 3),
             "distinct": len(self.matches),
-            "message": self.message,
         }
 
 
@@ -239,31 +212,32 @@ def numeric_check(
             return _verdict(scheme, n, dps, tuple(precisions), matches)
         previous = means
         work = _next_precision(work)
+    return _not_converged(scheme, n, dps, tuple(precisions), matches, max_dps, reference)
+
+
+def _not_converged(scheme, n, dps, precisions, matches, max_dps, reference) -> NumericCheck:
+    """The result when the matched means never stopped moving (or QR never converged): no verdict."""
     if not matches:
-        return NumericCheck(
-            n=n,
-            scheme=scheme.name,
-            dps=dps,
-            precisions=tuple(precisions),
-            status=CheckStatus.NOT_CONVERGED,
-            max_deviation=mpmath.inf,
-            max_spread=mpmath.inf,
-            matches=(),
-            message=f"n = {n}: mpmath's QR iteration failed at every working precision up to {max_dps} digits; no verdict",
+        message = f"n = {n}: mpmath's QR iteration failed at every working precision up to {max_dps} digits; no verdict"
+        deviation = spread = mpmath.inf
+    else:
+        with mpmath.workdps(reference):
+            worst = max(matches, key=lambda m: m.deviation)
+        deviation, spread = worst.deviation, max(m.spread for m in matches)
+        message = (
+            f"n = {n}: the numeric spectrum did not converge to {dps} digits by {precisions[-1] if precisions else dps} "
+            f"digits of working precision (worst eigenvalue {worst.describe()}); no verdict"
         )
-    with mpmath.workdps(reference):
-        worst = max(matches, key=lambda m: m.deviation)
     return NumericCheck(
         n=n,
         scheme=scheme.name,
         dps=dps,
-        precisions=tuple(precisions),
-        status=CheckStatus.NOT_CONVERGED,
-        max_deviation=worst.deviation,
-        max_spread=max(m.spread for m in matches),
+        precisions=precisions,
+        status=CrossCheckStatus.NOT_CONVERGED,
+        max_deviation=deviation,
+        max_spread=spread,
         matches=tuple(matches),
-        message=f"n = {n}: the numeric spectrum did not converge to {dps} digits by {precisions[-1] if precisions else dps} "
-        f"digits of working precision (worst eigenvalue {worst.describe()}); no verdict",
+        message=message,
     )
 
 
@@ -294,20 +268,20 @@ def _verdict(scheme, n, dps, precisions, matches) -> NumericCheck:
             f"n = {n}: closed-form eigenvalue {m.describe()} has {m.matched} eigenvalue(s) of the full matrix nearest "
             f"to it, not {m.multiplicity} (nearest at distance {mpmath.nstr(m.deviation, 3)})"
         )
-        status = CheckStatus.DISAGREE
+        status = CrossCheckStatus.DISAGREE
     elif bad_value:
         m = max(bad_value, key=lambda m: m.deviation)
         message = (
             f"n = {n}: closed-form eigenvalue {m.describe()} differs from the full matrix's eigenvalue(s) by "
             f"{mpmath.nstr(m.deviation, 3)} (tolerance 1e-{dps})"
         )
-        status = CheckStatus.DISAGREE
+        status = CrossCheckStatus.DISAGREE
     else:
         message = (
             f"n = {n}: {sum(m.multiplicity for m in matches)} eigenvalues ({len(matches)} distinct) agree to {dps} digits; "
             f"largest deviation {mpmath.nstr(max_dev, 3)}"
         )
-        status = CheckStatus.AGREE
+        status = CrossCheckStatus.AGREE
     return NumericCheck(
         n=n,
         scheme=scheme.name,

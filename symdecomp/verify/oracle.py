@@ -41,20 +41,20 @@ import math
 import random
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.errors import check_valence, SymdecompError
 from symdecomp.analysis.elliptic import recursion_eigenvector
 from symdecomp.analysis.masks import limit_masks_at
+from symdecomp.analysis.spectrum import recursion_eigenvalues
+from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
+from symdecomp.errors import SymdecompError, check_valence
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
 from symdecomp.symbols import n as N
-from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
 
 __all__ = [
     "Prediction",
@@ -148,7 +148,7 @@ def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Exp
     """``(mu_2, (u_O, u_a, u_b))``: the subdominant eigenvalue of the Eq. 43 matrix at ``n`` and its eigenvector.
 
     ``mu_2`` is the larger of the two eigenvalues other than 1 (closed form from
-    :func:`symdecomp.analysis.spectrum.frequency_zero_eigenvalues`); the eigenvector is
+    :func:`symdecomp.analysis.spectrum.recursion_eigenvalues`); the eigenvector is
     :func:`symdecomp.analysis.elliptic.recursion_eigenvector`, scaled so that ``u_a - u_O = 1``.
 
     >>> mu, (uo, ua, ub) = elliptic_eigenvector(catmull_clark(), 4)
@@ -156,7 +156,7 @@ def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Exp
     (1/4, 2)
     """
     n = check_valence(n)
-    _, m2, m3 = (sp.nsimplify(sp.simplify(e.subs(N, n))) for e in frequency_zero_eigenvalues(scheme))
+    _, m2, m3 = (sp.radsimp(sp.simplify(e.subs(N, n))) for e in recursion_eigenvalues(scheme))
     mu = m2 if sp.N(abs(m2)) >= sp.N(abs(m3)) else m3
     u = recursion_eigenvector(scheme, mu, n)
     scale = sp.simplify(u[1] - u[0])
@@ -190,7 +190,7 @@ def _f(expr, dps=30) -> float:
         return float(sp.N(expr, dps))
 
 
-@lru_cache(maxsize=None)
+@cache
 def toolkit_predictions(n: int) -> ToolkitPredictions:
     """Derive the predictions for standard Catmull-Clark at valence ``n``."""
     n = check_valence(n)
@@ -205,7 +205,7 @@ def toolkit_predictions(n: int) -> ToolkitPredictions:
         d, s = _f(d), _f(s)
         tangent[j] = (d, s) if abs(d) >= abs(s) else (s, d)
     mu, (uo, ua, ub) = elliptic_eigenvector(cc, n)
-    others = sorted((_f(e.subs(N, n)) for e in frequency_zero_eigenvalues(cc)[1:]), key=abs, reverse=True)
+    others = sorted((_f(e.subs(N, n)) for e in recursion_eigenvalues(cc)[1:]), key=abs, reverse=True)
     r39 = complex(sp.N(invariant_ratio_at(cc, n, 1), 30))
     frac = lambda x: Fraction(int(x.p), int(x.q))  # noqa: E731
     return ToolkitPredictions(
@@ -325,9 +325,29 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
         leak = max(leak, chains[j].leak)
     rows.append(_exact("frequencies decouple", leak))
 
-    # The shrink rate of frequency j is read as ell(Z_{k+1}) / ell(Z_k) for a fixed generic linear
-    # functional ell of Z = (A^j, B^j) (j = 0: (abar - O, bbar - O)); its error is exactly
-    # C (lambda_sub/lambda_dom)^k to first order (a norm ratio can have a vanishing first-order term).
+    rows.extend(_shrink_rates(n, chains, pred, floor, levels))
+
+    # Eq. 39: B^1/A^1 on the frequency-1 chain
+    q1 = abs(pred.tangent[1][1] / pred.tangent[1][0])
+    ratios = [_lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
+    rows.append(_limit("Eq. 39 ratio B1/A1", pred.eq39_ratio, ratios[-1], [abs(r - pred.eq39_ratio) for r in ratios], q1, floor, levels))
+
+    # Eq. 44: (bbar - O)/(abar - O) on the frequency-0 chain
+    ell = [_lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
+    q0 = abs(mu3 / mu2)
+    rows.append(_limit("Eq. 44 elliptic ratio", pred.elliptic_ratio, ell[-1], [abs(r - pred.elliptic_ratio) for r in ell], q0, floor, levels))
+    return ValenceComparison(n, levels, seed, tuple(rows))
+
+
+def _shrink_rates(n: int, chains: dict, pred, floor: float, levels: int) -> list:
+    """The ``shrink rate j=..`` rows: each frequency's chain against its dominant eigenvalue.
+
+    The shrink rate of frequency j is read as ell(Z_{k+1}) / ell(Z_k) for a fixed generic linear
+    functional ell of Z = (A^j, B^j) (j = 0: (abar - O, bbar - O)); its error is exactly
+    C (lambda_sub/lambda_dom)^k to first order (a norm ratio can have a vanishing first-order term).
+    """
+    rows = []
+    mu2, mu3 = pred.mu
     ell = np.array([complex(*x) for x in np.random.default_rng(12345).uniform(-1, 1, (6, 2))])
     for j in range(0, n // 2 + 1):
         seq = []
@@ -351,17 +371,7 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
             rows.append(_exact(name, max(errs), predicted=dom, observed=seen))
         else:
             rows.append(_limit(name, dom, seen, errs, q, floor, levels))
-
-    # Eq. 39: B^1/A^1 on the frequency-1 chain
-    q1 = abs(pred.tangent[1][1] / pred.tangent[1][0])
-    ratios = [_lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
-    rows.append(_limit("Eq. 39 ratio B1/A1", pred.eq39_ratio, ratios[-1], [abs(r - pred.eq39_ratio) for r in ratios], q1, floor, levels))
-
-    # Eq. 44: (bbar - O)/(abar - O) on the frequency-0 chain
-    ell = [_lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
-    q0 = abs(mu3 / mu2)
-    rows.append(_limit("Eq. 44 elliptic ratio", pred.elliptic_ratio, ell[-1], [abs(r - pred.elliptic_ratio) for r in ell], q0, floor, levels))
-    return ValenceComparison(n, levels, seed, tuple(rows))
+    return rows
 
 
 def _frequency_part(ring: np.ndarray, n: int, j: int) -> np.ndarray:

@@ -10,16 +10,16 @@ array([2. +0.j, 0.5+0.j])
 
 from __future__ import annotations
 
-from typing import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 
 import numpy as np
 import sympy as sp
 
+from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.errors import check_valence
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
-from symdecomp.analysis.spectrum import frequency_zero_eigenvalues
-from symdecomp.symbols import n as N
 from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.symbols import n as N
 
 __all__ = ["numeric_eigenvalues", "unmatched_eigenvalues", "eigenvalue_shift_figure", "vertex_weight_sweep_figure"]
 
@@ -51,7 +51,7 @@ def eigenvalue_shift_figure(before, after, predicted, *, title: str, labels: Seq
     """Eigenvalues of ``before`` and ``after`` in the complex plane, and the ``predicted`` moved ones.
 
     Proposition 6.3: adding constant blocks to a CB-matrix changes only the eigenvalues of the
-    frequency-0 matrix; ``predicted`` are the eigenvalues the proposition gives for them.
+    block-eigenvalue matrix ``E_0``; ``predicted`` are the eigenvalues the proposition gives for them.
     """
     ev_before = numeric_eigenvalues(before)
     ev_after = numeric_eigenvalues(after)
@@ -106,8 +106,8 @@ def vertex_weight_sweep_figure(scheme: Scheme, n: int, parameter: sp.Symbol, val
     is swept over ``values`` with the others set by ``fixed``. Dots: the eigenvalues of the exact
     ``(2n+1) x (2n+1)`` matrix (:func:`symdecomp.schemes.scheme.subdivision_matrix`) at each value; the
     ones the weight does not move form horizontal rows. Curves: the two eigenvalues of the
-    frequency-0 matrix of Eq. 43 other than 1, from their closed forms
-    (:func:`symdecomp.analysis.spectrum.frequency_zero_eigenvalues`): Proposition 6.3 says these are the
+    recursion matrix of Eq. 43 other than 1, from their closed forms
+    (:func:`symdecomp.analysis.spectrum.recursion_eigenvalues`): Proposition 6.3 says these are the
     only ones that move. Real parts are shown; eigenvalues of a complex pair are marked.
     """
     n = check_valence(n)
@@ -117,7 +117,7 @@ def vertex_weight_sweep_figure(scheme: Scheme, n: int, parameter: sp.Symbol, val
     if missing:
         raise ValueError(f"give values for the scheme's other free parameters {sorted(map(str, missing))} in fixed=")
     S = subdivision_matrix(scheme, n)
-    moving = [e.subs({N: n, **fixed}) for e in frequency_zero_eigenvalues(scheme)[1:]]
+    moving = [e.subs({N: n, **fixed}) for e in recursion_eigenvalues(scheme)[1:]]
     fig = new_figure(11, 5.4)
     ax = fig.add_subplot()
     curves = []

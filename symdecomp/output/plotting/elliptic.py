@@ -6,11 +6,11 @@ matrix); the closed forms from the scheme's derived matrices.
 
 from __future__ import annotations
 
-from typing import Iterable, Sequence
+from collections.abc import Iterable, Sequence
 
 import numpy as np
 
-from symdecomp.analysis.evolution import EllipticProfile, split_ring
+from symdecomp.analysis.evolution import EllipticProfile, ring_polygon, split_ring
 from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.output.plotting.polygons import _few_ticks, draw_one_ring_3d, draw_polygon_3d, set_equal_3d
 
@@ -119,9 +119,7 @@ def nested_rings_figure(rings: Sequence, *, title: str, initial=None, initial_la
     # lie on the limit surface's graph, so the triangulation shows its shape.
     ax.plot_trisurf(points[:, 0], points[:, 1], points[:, 2], cmap="coolwarm", alpha=0.6, linewidth=0.1, edgecolor="0.5")
     for ring in rings:
-        O, a, b = split_ring(np.asarray(ring, dtype=float) - origin)
-        polygon = np.empty((2 * len(a), 3))
-        polygon[0::2], polygon[1::2] = a, b
+        polygon = ring_polygon(np.asarray(ring, dtype=float) - origin)
         draw_polygon_3d(ax, polygon, color="0.15", lw=0.8)
     ax.set_box_aspect((1, 1, 0.6))
     ax.scatter([0], [0], [0], color="black", s=20)
@@ -183,8 +181,8 @@ def hyperbolic_rates_figure(scheme, valences: Iterable[int]):
     """
     import sympy as sp
 
-    from symdecomp.errors import check_valence
     from symdecomp.analysis.tangent import tangent_eigenvalues
+    from symdecomp.errors import check_valence
 
     ev = tangent_eigenvalues(scheme)
     ns, lam1_sq, m2 = [], [], []

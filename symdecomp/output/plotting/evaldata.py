@@ -11,8 +11,8 @@ plane and lifted onto a quadric, so the curvature shown is the scheme's, not the
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from functools import lru_cache
-from typing import Sequence
 
 import numpy as np
 

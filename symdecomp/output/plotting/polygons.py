@@ -6,7 +6,7 @@
 
 from __future__ import annotations
 
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 
@@ -14,7 +14,17 @@ from symdecomp.algebra.circulant import fourier_matrix
 from symdecomp.errors import check_valence
 from symdecomp.output.plotting._mpl import new_figure
 
-__all__ = ["regular_polygons_figure", "vertex_labels", "draw_polygon_2d", "draw_polygon_3d", "draw_one_ring_3d", "set_equal_3d", "ring_split_figure", "decomposition_figure", "regular_components"]
+__all__ = [
+    "regular_polygons_figure",
+    "vertex_labels",
+    "draw_polygon_2d",
+    "draw_polygon_3d",
+    "draw_one_ring_3d",
+    "set_equal_3d",
+    "ring_split_figure",
+    "decomposition_figure",
+    "regular_components",
+]
 
 
 def vertex_labels(points: np.ndarray, *, decimals: int = 9) -> dict[int, str]:
@@ -134,6 +144,46 @@ def _few_ticks(ax, count: int = 4) -> None:
             axis.set_tick_params(labelsize=7)
 
 
+def _ring_panel(ax, ring, title: str) -> None:
+    """One 3-D panel of :func:`ring_split_figure`: the ring, its n-gons or 2n-gon, and their planes."""
+    from symdecomp.analysis.evolution import split_ring
+    from symdecomp.schemes.ring import interleaved_polygon
+
+    O, a, b = split_ring(ring)
+    n = len(a)
+    planar = np.ptp(np.append(a[:, 2], b[:, 2])) < 1e-9 * max(1.0, float(np.abs(ring).max()))
+    for i in range(n):
+        spoke = np.array([O, a[i]])
+        ax.plot(spoke[:, 0], spoke[:, 1], spoke[:, 2], color="0.7", lw=0.6)
+    if planar:
+        polygon = np.array(interleaved_polygon(a, b))
+        draw_polygon_3d(ax, polygon, color="C2", lw=1.6, label=f"the {2 * n}-gon $(a_0, b_0, a_1, \\dots)$")
+        _plane_patch(ax, polygon, "C2")
+    else:
+        draw_polygon_3d(ax, a, color="C0", lw=1.6, label="$A$ (the $a_i$)")
+        draw_polygon_3d(ax, b, color="C3", lw=1.6, label="$B$ (the $b_i$)")
+        _plane_patch(ax, a, "C0", alpha=0.18)
+        _plane_patch(ax, b, "C3", alpha=0.18)
+    ax.scatter([O[0]], [O[1]], [O[2]], color="black", s=30, label="O")
+    centre = np.vstack([a, b]).mean(axis=0)
+    ax.plot([O[0], centre[0]], [O[1], centre[1]], [O[2], centre[2]], color="0.3", lw=0.8, ls="-.")
+    points = np.vstack([O, a, b])
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    half = (hi[:2] - lo[:2]).max() / 2 * 1.05
+    mid = (hi + lo) / 2
+    ax.set_xlim(mid[0] - half, mid[0] + half)
+    ax.set_ylim(mid[1] - half, mid[1] + half)
+    ax.set_zlim(lo[2] - 0.05 * (hi[2] - lo[2] + 1e-9), hi[2] + 0.05 * (hi[2] - lo[2] + 1e-9))
+    ax.set_box_aspect((1, 1, 0.7))
+    _few_ticks(ax)
+    ax.view_init(elev=12, azim=-60)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_zlabel("z")
+    ax.set_title(title)
+    ax.legend(fontsize=8, loc="upper left")
+
+
 def ring_split_figure(rings, *, titles=None, suptitle: str = "A planar 2n-gon splits into two parallel n-gons (Fig. 2)"):
     """Fig. 2: a 1-ring before and after subdivision steps, in 3-D, with the planes of ``A`` and ``B``.
 
@@ -150,41 +200,7 @@ def ring_split_figure(rings, *, titles=None, suptitle: str = "A planar 2n-gon sp
     titles = list(titles)
     fig = new_figure(5.6 * len(rings) + 4.6, 5.0)
     for k, (ring, title) in enumerate(zip(rings, titles)):
-        ax = fig.add_subplot(1, len(rings) + 1, k + 1, projection="3d")
-        O, a, b = split_ring(ring)
-        n = len(a)
-        planar = np.ptp(np.append(a[:, 2], b[:, 2])) < 1e-9 * max(1.0, float(np.abs(ring).max()))
-        for i in range(n):
-            spoke = np.array([O, a[i]])
-            ax.plot(spoke[:, 0], spoke[:, 1], spoke[:, 2], color="0.7", lw=0.6)
-        if planar:
-            polygon = np.empty((2 * n, 3))
-            polygon[0::2], polygon[1::2] = a, b
-            draw_polygon_3d(ax, polygon, color="C2", lw=1.6, label=f"the {2 * n}-gon $(a_0, b_0, a_1, \\dots)$")
-            _plane_patch(ax, polygon, "C2")
-        else:
-            draw_polygon_3d(ax, a, color="C0", lw=1.6, label="$A$ (the $a_i$)")
-            draw_polygon_3d(ax, b, color="C3", lw=1.6, label="$B$ (the $b_i$)")
-            _plane_patch(ax, a, "C0", alpha=0.18)
-            _plane_patch(ax, b, "C3", alpha=0.18)
-        ax.scatter([O[0]], [O[1]], [O[2]], color="black", s=30, label="O")
-        centre = np.vstack([a, b]).mean(axis=0)
-        ax.plot([O[0], centre[0]], [O[1], centre[1]], [O[2], centre[2]], color="0.3", lw=0.8, ls="-.")
-        points = np.vstack([O, a, b])
-        lo, hi = points.min(axis=0), points.max(axis=0)
-        half = (hi[:2] - lo[:2]).max() / 2 * 1.05
-        mid = (hi + lo) / 2
-        ax.set_xlim(mid[0] - half, mid[0] + half)
-        ax.set_ylim(mid[1] - half, mid[1] + half)
-        ax.set_zlim(lo[2] - 0.05 * (hi[2] - lo[2] + 1e-9), hi[2] + 0.05 * (hi[2] - lo[2] + 1e-9))
-        ax.set_box_aspect((1, 1, 0.7))
-        _few_ticks(ax)
-        ax.view_init(elev=12, azim=-60)
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
-        ax.set_zlabel("z")
-        ax.set_title(title)
-        ax.legend(fontsize=8, loc="upper left")
+        _ring_panel(fig.add_subplot(1, len(rings) + 1, k + 1, projection="3d"), ring, title)
     heights = fig.add_subplot(1, len(rings) + 1, len(rings) + 1)
     for k, ring in enumerate(rings):
         O, a, b = split_ring(ring)

@@ -9,19 +9,20 @@ The numbers behind the figures come from :mod:`symdecomp.analysis.tangent`:
 
 from __future__ import annotations
 
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 import sympy as sp
 
 from symdecomp.algebra.circulant import fourier_matrix
-from symdecomp.errors import check_valence
 from symdecomp.analysis.evolution import one_ring, subdivide_ring
-from symdecomp.analysis.frequency import COS, SIN, per_frequency_matrix_at
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.symbols import omega as OMEGA
+from symdecomp.analysis.frequency import per_frequency_matrix_at
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
+from symdecomp.errors import check_valence
 from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta, sin_jtheta
+from symdecomp.symbols import omega as OMEGA
 
 __all__ = [
     "tangent_eigenvalues_figure",
@@ -42,7 +43,7 @@ def _closed_form_curves(scheme: Scheme, samples: int = 401):
     x = np.linspace(0.0, 1.0, samples)
     curves = []
     for expr in (ev.dominant, ev.subdominant):
-        f = sp.lambdify((COS, SIN), expr, modules="numpy")
+        f = sp.lambdify((cos_jtheta, sin_jtheta), expr, modules="numpy")
         values = np.asarray(f(np.cos(np.pi * x), np.sin(np.pi * x)), dtype=complex) * np.ones_like(x)
         curves.append(values)
     return x, curves
@@ -128,7 +129,7 @@ def invariant_ratios(scheme: Scheme, valences: Iterable[int], j: int = 1, *, exa
     for n in valences:
         n = check_valence(n)
         angle = sp.pi * sp.Rational(j, n)
-        point = {OMEGA: sp.exp(2 * sp.I * angle), COS: sp.cos(angle), SIN: sp.sin(angle)}
+        point = {OMEGA: sp.exp(2 * sp.I * angle), cos_jtheta: sp.cos(angle), sin_jtheta: sp.sin(angle)}
         values.append(complex(sp.N(closed_form.subs(point), 20)))
     return values
 

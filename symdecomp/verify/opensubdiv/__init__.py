@@ -34,12 +34,11 @@ class BridgeUnavailableError(SymdecompError):
 
 _lock = threading.Lock()
 _lib = None
-_why_not: str | None = None
 
 
 def load_bridge(build: bool = True):
     """The loaded bridge library; builds it first if needed (and ``build``). Raises if impossible."""
-    global _lib, _why_not
+    global _lib
     with _lock:
         if _lib is not None:
             return _lib
@@ -49,7 +48,6 @@ def load_bridge(build: bool = True):
                 raise BridgeUnavailableError(f"the OpenSubdiv bridge is not built ({path})")
             lib = ctypes.CDLL(str(path))
         except (_build.BridgeBuildError, OSError) as exc:
-            _why_not = str(exc)
             raise BridgeUnavailableError(f"OpenSubdiv bridge unavailable: {exc}") from exc
         fn = lib.symdecomp_osd_refine_ring
         ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
@@ -69,11 +67,6 @@ def bridge_available(build: bool = True) -> bool:
         return True
     except BridgeUnavailableError:
         return False
-
-
-def why_unavailable() -> str | None:
-    """The reason the last :func:`load_bridge` failed (None if it has not failed)."""
-    return _why_not
 
 
 @dataclass(frozen=True)

@@ -3,8 +3,8 @@
 :func:`symdecomp.schemes.scheme.subdivision_matrix` builds a sympy matrix: right for derivations,
 but a dense symbolic ``(2n+1) x (2n+1)`` matrix is slow and large at ``n = 256``. Here the
 same matrix is built as a ``flint.fmpq_mat``: each weight of the scheme is evaluated once at
-the valence (and at the given parameter values), then the rows are filled from the rules,
-entry by entry, exactly as :func:`~symdecomp.schemes.scheme.subdivision_matrix` does, without any
+the valence (and at the given parameter values), exactly, and the entries come from the one
+assembly of the matrix, :func:`~symdecomp.schemes.scheme.subdivision_entries`, without any
 circulant or block structure.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
@@ -18,14 +18,14 @@ circulant or block structure.
 from __future__ import annotations
 
 import math
-from typing import Mapping
+from collections.abc import Mapping
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.schemes.scheme import Scheme, subdivision_entries
 from symdecomp.symbols import n as N
 
 __all__ = [
@@ -120,41 +120,12 @@ def _weight_evaluator(scheme: Scheme, subs: Mapping):
 def sparse_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None = None) -> dict:
     """The nonzero entries ``{(row, column): fmpq}`` of the subdivision matrix, from the rules.
 
-    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})``, built entry by entry
-    as in :func:`symdecomp.schemes.scheme.subdivision_matrix`: ``O(n)`` entries, no block structure.
+    :func:`symdecomp.schemes.scheme.subdivision_entries` with each weight evaluated exactly
+    as a FLINT rational: ``O(n)`` entries, no block structure.
     """
-    n = check_valence(n)
-    if n < scheme.minimum_valence():
-        subdivision_matrix(scheme, n)  # raises the error that names the problem
+    n = scheme.fitting_valence(n)
     subs = parameter_values(scheme, parameters)
-    w = _weight_evaluator(scheme, subs)(n)
-    entries: dict = {}
-
-    def add(r, c, x):
-        value = entries.get((r, c), flint.fmpq(0)) + x
-        if value == 0:
-            entries.pop((r, c), None)
-        else:
-            entries[(r, c)] = value
-
-    v = scheme.vertex_rule
-    add(0, 0, w(v.center))
-    each_a, each_b = w(v.each_a), w(v.each_b)
-    for i in range(n):
-        add(0, 1 + i, each_a)
-        add(0, 1 + n + i, each_b)
-    for row_offset, rule in ((1, scheme.edge_rule), (1 + n, scheme.face_rule)):
-        center = w(rule.center)
-        a = [(k, w(x)) for k, x in rule.a]
-        b = [(k, w(x)) for k, x in rule.b]
-        for i in range(n):
-            r = row_offset + i
-            add(r, 0, center)
-            for k, x in a:
-                add(r, 1 + (i + k) % n, x)
-            for k, x in b:
-                add(r, 1 + n + (i + k) % n, x)
-    return entries
+    return subdivision_entries(scheme, n, _weight_evaluator(scheme, subs)(n))
 
 
 def exact_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None = None) -> flint.fmpq_mat:

@@ -24,12 +24,15 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
                    (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
-                   ``support``), rings iterated step by step (``evolution``), the patch's
-                   certified eigen-data (``eigendata``) and exact evaluation (``evaluation``)
+                   ``support``), rings iterated step by step (``evolution``), the 2-ring
+                   matrix by frequency and the characteristic map's nets (``characteristic``),
+                   the patch's certified eigen-data (``eigendata``) and exact evaluation
+                   (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
                    (``certify``), both returning a ``CrossCheckResult`` (``result``),
-                   OpenSubdiv (``oracle``, ``opensubdiv``), dyadic limit positions for the
-                   patch evaluator (``patch_eval``)
+                   OpenSubdiv (``oracle``, ``opensubdiv``); certified C1 by Reif's test
+                   (``c1``, ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit
+                   positions for the patch evaluator (``patch_eval``)
 ``claims/``        the paper's claims, one module per section, and their registry
 ``output/``        LaTeX (``latex``, one entry point ``aslatex``), figures (``plotting``), Stam's
                    data file (``evaldata``)
@@ -83,6 +86,7 @@ from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdi
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from symdecomp.schemes.patch import patch_matrices
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
+from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
@@ -163,6 +167,9 @@ __all__ = [
     "NumericCheck",
     "certify",
     "Certificate",
+    # C1 at an extraordinary vertex (Reif's test)
+    "c1_test",
+    "C1Result",
     "CrossCheckStatus",
     "CrossCheckResult",
     "exact_subdivision_matrix",

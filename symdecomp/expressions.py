@@ -160,14 +160,21 @@ def _build(node: ast.AST, names: Mapping[str, sp.Expr], where: str, depth: int, 
     )
 
 
-def exact_value(value, symbols: Mapping[str, sp.Symbol] | None = None, *, argument: str = "value") -> sp.Expr:
+def exact_value(value, symbols: Mapping[str, sp.Symbol] | None = None, *, argument: str = "value",
+                other_symbols: bool = False) -> sp.Expr:
     """``value`` as an exact sympy expression: the one door for numbers given to the API.
 
     Accepts ``int`` (not ``bool``), :class:`fractions.Fraction`, sympy expressions without
     floats, and text (parsed by :func:`parse_expression` with ``symbols``). Refuses floats,
     booleans and anything else with :class:`~symdecomp.errors.InvalidExpressionError` naming
     ``argument``. A sympy expression may only contain the given ``symbols`` (and ``pi``) when
-    ``symbols`` is given.
+    ``symbols`` is given, unless ``other_symbols`` (then other symbols are free parameters).
+    A symbol of the expression that has the *name* of one of ``symbols`` but other assumptions
+    (a user's own ``Symbol('n')``) is read as that symbol, never as a second ``n``.
+
+    >>> n = sp.Symbol("n", integer=True, positive=True)
+    >>> exact_value(1 / sp.Symbol("n"), {"n": n}) == 1 / n
+    True
     """
     if isinstance(value, bool):
         raise InvalidExpressionError(f"{argument} {value!r} is a boolean, not a number")
@@ -186,8 +193,12 @@ def exact_value(value, symbols: Mapping[str, sp.Symbol] | None = None, *, argume
             raise InvalidExpressionError(f"{argument} {value} is not finite")
         if symbols is not None:
             allowed = set(symbols.values())
+            renames = {s: symbols[s.name] for s in value.free_symbols
+                       if isinstance(s, sp.Symbol) and s.name in symbols and s not in allowed}
+            if renames:
+                value = value.xreplace(renames)
             stray = sorted(str(s) for s in value.free_symbols - allowed)
-            if stray:
+            if stray and not other_symbols:
                 raise InvalidExpressionError(f"{argument} {value} has unknown symbols {', '.join(stray)}")
         return value
     if isinstance(value, numbers.Integral):  # numpy integers and the like

@@ -34,6 +34,7 @@ EXPECTED = {
     "Eq. 39": Status.CORRECTED,
     "Eq. 39 (n = 4)": Status.VERIFIED,
     "Eq. 39 (n → ∞)": Status.PROVED,
+    "C1 (Reif's test)": Status.VERIFIED,
 }
 
 
@@ -68,7 +69,7 @@ def test_claims_command_json(capsys):
     rows = json.loads(capsys.readouterr().out)
     by_label = {r["label"]: r for r in rows}
     section_51 = {"Eq. 25-30", "Eq. 31-32", "Eq. 33", "Eq. 34", "Eq. 35-37", "Eq. 38", "Proposition 5.1"}
-    section_51 |= {"Remark 5.1", "Eq. 39", "Eq. 39 (n = 4)", "Eq. 39 (n → ∞)"}
+    section_51 |= {"Remark 5.1", "Eq. 39", "Eq. 39 (n = 4)", "Eq. 39 (n → ∞)", "C1 (Reif's test)"}
     assert set(by_label) == section_51
     assert by_label["Remark 5.1"]["status"] == "refuted" and "counterexample" in by_label["Remark 5.1"]
     assert by_label["Proposition 5.1"]["valences"] == [3, 1000]

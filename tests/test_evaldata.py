@@ -207,6 +207,5 @@ def test_cli_errors(tmp_path, capsys):
     assert "3..N" in capsys.readouterr().err
     assert main(["evaldata", "--n", "3:4", "--out", str(tmp_path / "no" / "x")]) == 2
     assert "no such directory" in capsys.readouterr().err
-    with pytest.raises(SystemExit) as exc:
-        main(["evaldata", "--n", "3:x", "--out", "x"])
-    assert exc.value.code == 2
+    assert main(["evaldata", "--n", "3:x", "--out", "x"]) == 2
+    assert "argument --n" in capsys.readouterr().err

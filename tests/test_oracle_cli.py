@@ -1,6 +1,5 @@
 """The oracle command without OpenSubdiv: a clear message and exit status 3, no traceback."""
 
-import pytest
 
 import symdecomp.verify.opensubdiv as osd
 from symdecomp.cli import main
@@ -16,7 +15,6 @@ def test_oracle_without_the_bridge(monkeypatch, capsys):
 
 
 def test_oracle_rejects_bad_arguments(capsys):
-    with pytest.raises(SystemExit):
-        main(["oracle", "--n", "2:5"])
+    assert main(["oracle", "--n", "2:5"]) == 2
     assert "valence" in capsys.readouterr().err
     assert main(["oracle", "--n", "4", "--levels", "1"]) == 2

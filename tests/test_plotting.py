@@ -130,3 +130,16 @@ def test_regular_components_sum_to_the_polygon_and_are_regular():
         sides = np.linalg.norm(np.roll(c, -1, axis=0) - c, axis=1)
         radii = np.linalg.norm(c, axis=1)
         assert np.ptp(sides) < 1e-12 and np.ptp(radii) < 1e-12  # a regular polygon about the origin
+
+
+def test_characteristic_map_figure_and_its_ring():
+    from symdecomp.output.plotting import characteristic as cplots
+
+    curves = cplots.ring_curves(CC, 4, samples=3)
+    # n = 4: the ring at level 1 is the grid [0, 1]^2 \ [0, 1/2)^2 in each quadrant: the inner boundary is |x|, |y| <= 1/2
+    inner = np.concatenate(curves["inner"])
+    assert np.max(np.abs(np.maximum(abs(inner.real), abs(inner.imag)) - 0.5)) < 1e-12
+    assert len(curves["rays"]) == 4
+    fig = cplots.characteristic_map_figure(CC, (3, 5))
+    _assert_labelled(fig)
+    assert "c1 (winding 1)" in fig.axes[0].get_title()

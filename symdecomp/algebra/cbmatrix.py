@@ -36,10 +36,11 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.algebra.circulant import circ, fourier_matrix, fourier_row, generating_polynomial
-from symdecomp.errors import SymdecompError, check_valence
+from symdecomp.algebra.circulant import _offsets, _sequence, circ, coefficient, fourier_matrix, fourier_row, generating_polynomial
+from symdecomp.errors import FrequencyOutOfRangeError, InvalidExpressionError, InvalidInputError, InvalidTypeError
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_int, check_valence
 
 __all__ = [
     "NotCirculantBlockError",
@@ -58,18 +59,21 @@ __all__ = [
 ]
 
 
-class NotCirculantBlockError(SymdecompError):
+class NotCirculantBlockError(InvalidInputError):
     """A block of a matrix meant to be a CB-matrix is not circulant (or has the wrong size)."""
+
+
+def _cb(cb) -> CBMatrix:
+    if not isinstance(cb, CBMatrix):
+        raise InvalidTypeError(f"expected a CBMatrix (see cb_matrix), got {type(cb).__name__}")
+    return cb
 
 
 def _exact(value, where: str) -> sp.Expr:
     try:
-        expr = value if isinstance(value, sp.Basic) else sp.sympify(value, strict=True)
-    except (sp.SympifyError, TypeError) as exc:
-        raise NotCirculantBlockError(f"{where}: {value!r} is not a number or sympy expression") from exc
-    if expr.has(sp.Float):
-        raise NotCirculantBlockError(f"{where}: {value!r} is a float; give exact rationals")
-    return expr
+        return coefficient(value, where)
+    except InvalidExpressionError as exc:
+        raise NotCirculantBlockError(str(exc)) from None
 
 
 @dataclass(frozen=True)
@@ -112,6 +116,8 @@ class CBMatrix:
 
 def cb_matrix(blocks: Sequence[Sequence[Sequence]]) -> CBMatrix:
     """Build a :class:`CBMatrix` from the first rows of its blocks (``blocks[p][q]``)."""
+    blocks = [[_sequence(first, "a block's first row") for first in _sequence(row, "a row of blocks")]
+              for row in _sequence(blocks, "blocks")]
     K = len(blocks)
     if K == 0 or any(len(row) != K for row in blocks):
         raise NotCirculantBlockError(f"a CB-matrix needs a square K x K array of blocks, got rows of lengths {[len(r) for r in blocks]}")
@@ -131,7 +137,7 @@ def cb_matrix(blocks: Sequence[Sequence[Sequence]]) -> CBMatrix:
 
 def cb_matrix_from(matrix, order: int) -> CBMatrix:
     """Read a square matrix as a CB-matrix with blocks of the given order; every block must be circulant."""
-    M = sp.Matrix(matrix)
+    M = matrix if isinstance(matrix, sp.MatrixBase) else _constants(matrix)
     order = check_valence(order, minimum=1)
     if M.rows != M.cols or M.rows % order:
         raise NotCirculantBlockError(f"a {M.rows} x {M.cols} matrix is not square with blocks of order {order}")
@@ -154,9 +160,8 @@ def block_eigenvalue_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
 
     ``e_pq`` is the eigenvalue of ``C_pq`` on ``v_k``: ``sum_l c_l omega_m^(k l)`` (Eq. 8-9).
     """
-    m = cb.order
-    if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k < m:
-        raise SymdecompError(f"frequency k must be an integer with 0 <= k < m = {m}, got {k!r}")
+    m = _cb(cb).order
+    k = check_int(k, "frequency k", minimum=0, maximum=m - 1, error=FrequencyOutOfRangeError)
     w = fourier_row(m, k)
     return sp.ImmutableMatrix(
         cb.block_count,
@@ -167,8 +172,8 @@ def block_eigenvalue_matrix(cb: CBMatrix, k: int) -> sp.ImmutableMatrix:
 
 def lifted_vector(coefficients: Sequence, v: Sequence) -> sp.ImmutableMatrix:
     """``V = (alpha_0 v, ..., alpha_{K-1} v)`` of Prop. 6.2 (the Kronecker product ``alpha (x) v``)."""
-    coefficients = [sp.sympify(a) for a in coefficients]
-    v = [sp.sympify(x) for x in v]
+    coefficients = [coefficient(a, f"coefficient {i}") for i, a in enumerate(_sequence(coefficients, "coefficients"))]
+    v = [coefficient(x, f"vertex {i} of v") for i, x in enumerate(_sequence(v, "v"))]
     return sp.ImmutableMatrix([a * x for a in coefficients for x in v])
 
 
@@ -188,6 +193,7 @@ class BlockDiagonalization:
 
 def block_diagonalization(cb: CBMatrix) -> BlockDiagonalization:
     """The Fourier basis of Remark 6.1 and the block-eigenvalue matrices ``E_k`` of ``cb``."""
+    _cb(cb)
     K, m = cb.block_count, cb.order
     F = fourier_matrix(m) if m > 1 else sp.ImmutableMatrix([[1]])
     columns = []
@@ -206,6 +212,7 @@ def cb_eigensystem(cb: CBMatrix) -> list[tuple[sp.Expr, int, list[sp.ImmutableMa
     each ``E_k``. By Remark 6.1 the eigenvectors form a basis of the whole space exactly when
     every ``E_k`` is diagonalizable; :func:`block_diagonalization` shows why.
     """
+    _cb(cb)
     out = []
     m = cb.order
     F = fourier_matrix(m) if m > 1 else sp.ImmutableMatrix([[1]])
@@ -218,11 +225,22 @@ def cb_eigensystem(cb: CBMatrix) -> list[tuple[sp.Expr, int, list[sp.ImmutableMa
 
 def constant_blocks(T, order: int) -> CBMatrix:
     """The block matrix ``A`` of Prop. 6.3: block ``(p, q)`` is ``m x m`` with every entry ``t_pq``."""
-    T = sp.Matrix(T)
+    T = _constants(T)
     order = check_valence(order, minimum=1)
     if T.rows != T.cols:
         raise NotCirculantBlockError(f"the matrix of constants must be square, got {T.rows} x {T.cols}")
     return cb_matrix([[[T[p, q]] * order for q in range(T.cols)] for p in range(T.rows)])
+
+
+def _constants(T) -> sp.Matrix:
+    """A square matrix of exact constants ``t_pq`` (text parsed, never evaluated)."""
+    if isinstance(T, sp.MatrixBase):
+        rows = T.tolist()
+    else:
+        rows = [_sequence(r, "a row of T") for r in _sequence(T, "T")]
+    if not rows or len({len(r) for r in rows}) != 1:
+        raise NotCirculantBlockError(f"the matrix of constants T must be a non-empty rectangular array, got rows of lengths {[len(r) for r in rows]}")
+    return sp.Matrix([[_exact(t, f"T[{p}][{q}]") for q, t in enumerate(r)] for p, r in enumerate(rows)])
 
 
 def perturbed_block_eigenvalue_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
@@ -231,7 +249,8 @@ def perturbed_block_eigenvalue_matrix(cb: CBMatrix, T) -> sp.ImmutableMatrix:
     The eigenvalues of ``cb + constant_blocks(T, m)`` are those of ``E_1, ..., E_{m-1}``
     (unchanged) and the ``K`` eigenvalues of this matrix.
     """
-    T = sp.Matrix(T)
+    _cb(cb)
+    T = _constants(T)
     if T.shape != (cb.block_count, cb.block_count):
         raise NotCirculantBlockError(f"T must be {cb.block_count} x {cb.block_count}, got {T.rows} x {T.cols}")
     return sp.ImmutableMatrix(block_eigenvalue_matrix(cb, 0) + cb.order * T)
@@ -256,7 +275,7 @@ class SymbolicCirculant:
 
     @classmethod
     def from_offsets(cls, offsets: Mapping[int, object], constant=0) -> SymbolicCirculant:
-        return cls(tuple(sorted((int(k), sp.sympify(w)) for k, w in dict(offsets).items())), sp.sympify(constant))
+        return cls(tuple(sorted(_offsets(offsets).items())), coefficient(constant, "constant"))
 
     def symbol(self) -> sp.Expr:
         """The generating polynomial ``p(omega)`` of the banded part (Eq. 9)."""
@@ -282,7 +301,7 @@ class SymbolicCirculant:
 
     def minus_constant(self, value) -> SymbolicCirculant:
         """``C - value*J``."""
-        return SymbolicCirculant(self.offsets, sp.expand(self.constant - sp.sympify(value)))
+        return SymbolicCirculant(self.offsets, sp.expand(self.constant - coefficient(value, "value")))
 
 
 @dataclass(frozen=True)

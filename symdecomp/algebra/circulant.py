@@ -18,10 +18,14 @@ from collections.abc import Mapping, Sequence
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidInputError, InvalidSchemeError
+from symdecomp.expressions import exact_value
+from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_int, check_valence
 
 __all__ = [
+    "coefficient",
     "root_of_unity",
     "fourier_matrix",
     "fourier_row",
@@ -33,9 +37,38 @@ __all__ = [
 ]
 
 
+#: Names a coefficient given as text may use: the valence ``n``.
+COEFFICIENT_SYMBOLS = {"n": N}
+
+
+def coefficient(value, argument: str) -> sp.Expr:
+    """An exact coefficient: numbers, sympy expressions, or text parsed by :func:`symdecomp.expressions.parse_expression`.
+
+    Text is never evaluated; a symbol named ``n`` is the valence. Other symbols are free.
+
+    >>> coefficient("3/8", "c_0")
+    3/8
+    """
+    return exact_value(value, COEFFICIENT_SYMBOLS, argument=argument, other_symbols=True)
+
+
+def _sequence(values, argument: str) -> list:
+    if isinstance(values, (str, bytes, Mapping, sp.Expr)) or not hasattr(values, "__iter__"):
+        raise InvalidInputError(f"{argument} must be a sequence, got {type(values).__name__}")
+    return list(values)
+
+
+def _offsets(offsets) -> dict:
+    """Offsets ``{k: c_k}`` with integer keys and exact coefficients."""
+    if not isinstance(offsets, Mapping):
+        raise InvalidInputError(f"offsets must be a mapping {{offset: coefficient}}, got {type(offsets).__name__}")
+    return {check_int(k, "offset"): coefficient(w, f"offset {k!r}") for k, w in offsets.items()}
+
+
 def root_of_unity(n: int, power: int = 1) -> sp.Expr:
     """``omega_n^power = exp(2*pi*i*power/n)`` (Eq. 3), exact."""
     n = check_valence(n, minimum=1)
+    power = check_int(power, "power")
     return sp.exp(2 * sp.pi * sp.I * sp.Rational(power % n, n))
 
 
@@ -57,7 +90,7 @@ def fourier_matrix(n: int) -> sp.ImmutableMatrix:
 
 def circ(c: Sequence) -> sp.ImmutableMatrix:
     """``circ(c_0, ..., c_{n-1})`` with the convention of Eq. 7."""
-    c = [sp.sympify(x) for x in c]
+    c = [coefficient(x, f"circ: c_{i}") for i, x in enumerate(_sequence(c, "circ: the coefficients"))]
     size = len(c)
     if size == 0:
         raise InvalidSchemeError("circ needs at least one coefficient")
@@ -69,17 +102,17 @@ def circ_from_offsets(offsets: Mapping[int, object], n: int) -> sp.ImmutableMatr
     n = check_valence(n, minimum=1)
     c = [sp.Integer(0)] * n
     seen = {}
-    for k, w in offsets.items():
+    for k, w in _offsets(offsets).items():
         if k % n in seen:
             raise InvalidSchemeError(f"offsets {seen[k % n]} and {k} coincide mod n = {n}")
         seen[k % n] = k
-        c[k % n] = sp.sympify(w)
+        c[k % n] = coefficient(w, f"offset {k}")
     return circ(c)
 
 
 def generating_polynomial(offsets: Mapping[int, object], variable: sp.Symbol = OMEGA) -> sp.Expr:
     """The generating polynomial of Eq. 9, ``p(z) = sum_k c_k z^k``, as a Laurent polynomial."""
-    return sp.Add(*[sp.sympify(w) * variable**k for k, w in offsets.items()])
+    return sp.Add(*[w * variable**k for k, w in _offsets(offsets).items()])
 
 
 def mode_eigenvalue_derivation(offsets: Mapping[int, object]) -> tuple[sp.Expr, sp.Expr]:
@@ -91,11 +124,12 @@ def mode_eigenvalue_derivation(offsets: Mapping[int, object]) -> tuple[sp.Expr, 
     Proposition 2.1 for every ``n``.
     """
     i = sp.Symbol("i", integer=True)
-    row = sp.Add(*[sp.sympify(w) * OMEGA ** (i + k) for k, w in offsets.items()])
+    row = sp.Add(*[w * OMEGA ** (i + k) for k, w in _offsets(offsets).items()])
     return row, sp.expand(sp.powsimp(sp.expand(row / OMEGA**i)))
 
 
 def circulant_eigenvalue(offsets: Mapping[int, object], n: int, k: int) -> sp.Expr:
     """The eigenvalue of ``circ_from_offsets(offsets, n)`` on ``v_k`` (Eq. 8), exact."""
     n = check_valence(n, minimum=1)
+    k = check_int(k, "frequency k")
     return sp.expand(generating_polynomial(offsets).subs(OMEGA, root_of_unity(n, k)))

@@ -13,12 +13,12 @@ import flint
 import mpmath
 import sympy as sp
 
-from symdecomp.errors import SymdecompError
+from symdecomp.errors import InvalidInputError
 
 __all__ = ["compile_expression", "UnsupportedExpressionError"]
 
 
-class UnsupportedExpressionError(SymdecompError):
+class UnsupportedExpressionError(InvalidInputError):
     """A closed form uses a function the fast evaluators do not know."""
 
 

@@ -22,6 +22,8 @@ import flint
 import mpmath
 import sympy as sp
 
+from symdecomp.errors import InvalidInputError, InvalidTypeError
+
 __all__ = ["CyclotomicField", "Cyclotomic"]
 
 
@@ -35,7 +37,7 @@ class CyclotomicField:
 
     def __init__(self, N: int):
         if N < 1:
-            raise ValueError(f"N must be positive, got {N}")
+            raise InvalidInputError(f"N must be positive, got {N}")
         self.N = N
         self.phi = _phi(N)
 
@@ -54,7 +56,7 @@ class CyclotomicField:
         v = sp.sympify(value)
         re, im = v.as_real_imag()
         if not (re.is_Rational and im.is_Rational):
-            raise TypeError(f"{value!r} is not a (Gaussian) rational number")
+            raise InvalidTypeError(f"{value!r} is not a (Gaussian) rational number")
         out = self(Fraction(int(re.p), int(re.q)))
         if im != 0:
             out = out + self.i * self(Fraction(int(im.p), int(im.q)))
@@ -69,13 +71,13 @@ class CyclotomicField:
     def root(self, n: int, k: int) -> Cyclotomic:
         """``omega_n^k = zeta_N^(k N/n)``; ``n`` must divide ``N``."""
         if self.N % n:
-            raise ValueError(f"omega_{n} is not in Q(zeta_{self.N})")
+            raise InvalidInputError(f"omega_{n} is not in Q(zeta_{self.N})")
         return self.zeta(k * (self.N // n))
 
     @property
     def i(self) -> Cyclotomic:
         if self.N % 4:
-            raise ValueError(f"i is not in Q(zeta_{self.N}) (needs 4 | N)")
+            raise InvalidInputError(f"i is not in Q(zeta_{self.N}) (needs 4 | N)")
         return self.zeta(self.N // 4)
 
 
@@ -91,7 +93,7 @@ class Cyclotomic:
     def _lift(self, other) -> Cyclotomic:
         if isinstance(other, Cyclotomic):
             if other.field != self.field:
-                raise ValueError("elements of different cyclotomic fields")
+                raise InvalidInputError("elements of different cyclotomic fields")
             return other
         return self.field(other)
 

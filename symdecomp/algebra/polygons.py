@@ -291,7 +291,10 @@ class PolygonDecomposition:
         polygon ``R cos(phi) - I sin(phi)`` equals ``e^(i phi)(r + i s)/2 + e^(-i phi)(r - i s)/2``:
         regular polygons of frequencies ``j`` (amplitude ``(r + i s)/2``) and ``n - j``
         (amplitude ``(r - i s)/2``) in the same plane. For ``j = 0`` and ``j = n/2`` the pair is a
-        single degenerate regular polygon (a point; a segment).
+        single frequency (``j = n - j`` mod ``n``) and a single degenerate regular polygon (a point;
+        a segment traversed back and forth): the first component carries all of it (amplitude
+        ``(r + i s)/2``, with ``s = 0``) and the second has amplitude 0. In every case the two
+        components sum to :meth:`pair_polygon`.
         Exact input gives exact sympy amplitudes and frames with square roots, unsimplified.
         """
         if self.dim != 3:
@@ -311,6 +314,10 @@ class PolygonDecomposition:
             imag_unit = mpmath.mpc(0, 1) if mp else 1j
             r = dot(R, f1) + imag_unit * dot(R, f2)
             s = dot(I, f1) + imag_unit * dot(I, f2)
+        if k == j:  # z_j v_j alone is the pair polygon (z_j real, R = 2 z_j): count it once, not twice
+            first = PlanarRegularComponent(j, (r + imag_unit * s) / 2, tuple(f1), tuple(f2), self.n)
+            second = PlanarRegularComponent(k, 0 * r, tuple(f1), tuple(f2), self.n)
+            return first, second
         first = PlanarRegularComponent(j, (r + imag_unit * s) / 2, tuple(f1), tuple(f2), self.n)
         second = PlanarRegularComponent(k, (r - imag_unit * s) / 2, tuple(f1), tuple(f2), self.n)
         return first, second

@@ -16,14 +16,14 @@ from fractions import Fraction
 
 import flint
 
-from symdecomp.errors import SymdecompError
+from symdecomp.errors import InvalidInputError
 
 __all__ = ["NotDiagonalizableError", "NeedPrecision", "rational_eigen", "nullspace", "biorthogonal", "fmpq_value", "arb_value"]
 
 arb = flint.arb
 
 
-class NotDiagonalizableError(SymdecompError):
+class NotDiagonalizableError(InvalidInputError):
     """A matrix has no basis of (real) eigenvectors."""
 
 

@@ -41,12 +41,13 @@ import sympy as sp
 
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
-from symdecomp.errors import InvalidSchemeError, SymdecompError, check_valence
+from symdecomp.errors import InternalError, InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.full_matrix import characteristic_polynomial
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_valence, parameter_values
 
 __all__ = [
     "ClosedFormCharpoly",
@@ -92,7 +93,8 @@ class ClosedFormCharpoly:
         """
         n = check_valence(n)
         subs = {N: n}
-        subs.update({k: sp.sympify(v) for k, v in (values or {}).items()})
+        declared = sorted(self.expression.free_symbols - {N, LAM}, key=str)
+        subs.update(parameter_values(declared, values, owner="the closed form", symbols=WEIGHT_SYMBOLS))
         c_minus, c_zero, c_plus = (to_fmpq_poly(c.subs(subs)) for c in self.laurent_coefficients)
         D = c_zero * c_zero - 4 * c_plus * c_minus
         half = flint.fmpq(1, 2)
@@ -101,7 +103,7 @@ class ClosedFormCharpoly:
         numerator = to_fmpq_poly(self.unit_factor.subs(subs)) * to_fmpq_poly(self.zero_frequency_factor.subs(subs)) * product
         quotient, remainder = divmod(numerator, to_fmpq_poly(self.frequency_one.subs(subs)))
         if not remainder.is_zero():
-            raise SymdecompError(f"closed form at n = {n}: q(x, 1) does not divide the frequency product")
+            raise InternalError(f"closed form at n = {n}: q(x, 1) does not divide the frequency product")
         return quotient
 
 
@@ -126,12 +128,12 @@ def to_fmpq_poly(expr, variable: sp.Symbol = LAM) -> flint.fmpq_poly:
     expr = sp.expand(sp.sympify(expr))
     free = expr.free_symbols - {variable}
     if free:
-        raise SymdecompError(f"cannot evaluate exactly: free symbols {sorted(map(str, free))} left; give their values")
+        raise InvalidInputError(f"cannot evaluate exactly: free symbols {sorted(map(str, free))} left; give their values")
     poly = sp.Poly(expr, variable)
     coeffs = []
     for c in reversed(poly.all_coeffs()):
         if not c.is_Rational:
-            raise SymdecompError(f"coefficient {c} of {expr} is not rational")
+            raise InvalidInputError(f"coefficient {c} of {expr} is not rational")
         coeffs.append(flint.fmpq(int(c.p), int(c.q)))
     return flint.fmpq_poly(coeffs)
 
@@ -149,7 +151,7 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
     x = LAM
     M = sp.Matrix(L.block_eigenvalue_matrix(zero_frequency=False))
     if sp.expand(M - sp.Matrix(per_frequency_matrix(scheme))) != sp.zeros(*M.shape):
-        raise SymdecompError("the CB-block of S' disagrees with the per-frequency matrix (internal inconsistency)")
+        raise InternalError("the CB-block of S' disagrees with the per-frequency matrix (internal inconsistency)")
     E0 = sp.ImmutableMatrix(L.block_eigenvalue_matrix(zero_frequency=True).applyfunc(sp.expand))
     size = M.rows
     q = sp.expand((x * sp.eye(size) - M).det())
@@ -207,10 +209,10 @@ def verify_closed_form(scheme: Scheme, n: int) -> bool:
     for rule in (scheme.edge_rule, scheme.face_rule):
         weights = [rule.center] + [w for _, w in rule.a + rule.b]
         if any(w.free_symbols & set(params) for w in weights):
-            raise SymdecompError("parameters outside the vertex rule: the exact check covers only vertex-rule weights")
+            raise InvalidSchemeError("parameters outside the vertex rule: the exact check covers only vertex-rule weights")
     v = scheme.vertex_rule
     cf = closed_form_characteristic_polynomial(scheme)
     if not all(_affine_in(w, params) for w in (v.center, v.each_a, v.each_b, cf.zero_frequency_factor)):
-        raise SymdecompError("the vertex-rule weights do not enter affinely; a finite exact check is not a proof")
+        raise InvalidSchemeError("the vertex-rule weights do not enter affinely; a finite exact check is not a proof")
     points = [{p: 0 for p in params}] + [{p: (1 if p == q else 0) for p in params} for q in params]
     return all(cf.at(n, pt) == characteristic_polynomial(scheme, n, pt) for pt in points)

@@ -30,10 +30,10 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import check_valence
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = ["ClosedForms", "ClosedFormLabel", "derived_closed_forms"]
 

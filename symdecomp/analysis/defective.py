@@ -22,9 +22,10 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.analysis.frequency import recursion_matrix
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
+from symdecomp.validate import check_valence
 
 __all__ = ["jordan_vertex_weights", "jordan_block_size"]
 

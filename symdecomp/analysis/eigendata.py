@@ -44,9 +44,10 @@ from symdecomp.algebra.small_eigen import arb_value as _arb
 from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
 from symdecomp.algebra.small_eigen import fmpq_value as _fq
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
-from symdecomp.errors import SymdecompError, check_valence
+from symdecomp.errors import InternalError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_valence
 
 __all__ = [
     "NotDiagonalizableError",  # from symdecomp.algebra.small_eigen
@@ -62,7 +63,7 @@ __all__ = [
 arb, acb = flint.arb, flint.acb
 
 
-class PrecisionError(SymdecompError):
+class PrecisionError(InternalError):
     """A ball stayed too wide to decide a sign or round correctly, up to the precision cap."""
 
 

@@ -27,8 +27,9 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp.algebra.polygons import decompose
-from symdecomp.errors import InvalidPolygonError, check_frequency
+from symdecomp.errors import InvalidInputError, InvalidPolygonError
 from symdecomp.schemes.ring import interleaved_polygon
+from symdecomp.validate import check_frequency
 
 __all__ = ["ring_components", "EllipseAxes", "ellipse_axes"]
 
@@ -90,7 +91,7 @@ def ellipse_axes(ring, j: int = 1, part: str = "a", *, digits: int | None = 30) 
     M, n = _check_ring(ring)
     j = check_frequency(j, n)
     if part not in ("a", "b"):
-        raise ValueError(f"part must be 'a' or 'b', got {part!r}")
+        raise InvalidInputError(f"part must be 'a' or 'b', got {part!r}")
     d = decompose(_ring_polygon(M, n))
     first, second = d.planar_pair(j)
     w_j, w_conj = first.amplitude, second.amplitude

@@ -36,11 +36,12 @@ import sympy as sp
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, cos_theta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_digits, check_valence
 
 __all__ = [
     "MU",
@@ -221,6 +222,8 @@ def elliptic_defect_table(scheme: Scheme, valences, *, digits: int = 20) -> tupl
     """
     if scheme.parameters:
         raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
+    digits = check_digits(digits)
+    valences = [check_valence(n) for n in valences]
     cond = nice_elliptic_conditions(scheme)
     exprs = (
         cond.subdominant,

@@ -24,9 +24,10 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import fourier_row
 from symdecomp.algebra.polygons import decompose
-from symdecomp.errors import InvalidPolygonError, check_valence
+from symdecomp.errors import InvalidInputError, InvalidPolygonError, InvalidSchemeError
 from symdecomp.schemes.ring import interleaved_polygon
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.validate import check_valence
 
 __all__ = [
     "as_ring_array",
@@ -102,7 +103,7 @@ def split_ring(ring) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 def subdivision_matrix_numeric(scheme: Scheme, n: int) -> np.ndarray:
     """The exact subdivision matrix of ``scheme`` at valence ``n``, rounded once to double precision."""
     if scheme.parameters:
-        raise ValueError(f"scheme {scheme.name!r} has free parameters {list(map(str, scheme.parameters))}; substitute them first")
+        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {list(map(str, scheme.parameters))}; substitute them first")
     return np.array(subdivision_matrix(scheme, check_valence(n)).evalf(20), dtype=float)
 
 
@@ -114,7 +115,7 @@ def subdivide_ring(scheme: Scheme, ring, steps: int = 1) -> list[np.ndarray]:
     :func:`as_ring_array` accepts.
     """
     if isinstance(steps, bool) or not isinstance(steps, int) or steps < 0:
-        raise ValueError(f"steps must be a non-negative integer, got {steps!r}")
+        raise InvalidInputError(f"steps must be a non-negative integer, got {steps!r}")
     ring = as_ring_array(ring)
     n = (ring.shape[0] - 1) // 2
     S = subdivision_matrix_numeric(scheme, n)
@@ -273,7 +274,7 @@ def quadric_ring_mesh(n: int, rings: int = 3, kind: str = "hyperbolic", height: 
 
     n = check_valence(n)
     if kind not in ("hyperbolic", "elliptic"):
-        raise ValueError(f"kind must be 'hyperbolic' or 'elliptic', got {kind!r}")
+        raise InvalidInputError(f"kind must be 'hyperbolic' or 'elliptic', got {kind!r}")
     h = float(height)
 
     def value(s, u, v):
@@ -289,7 +290,7 @@ def refine_mesh(scheme: Scheme, mesh, levels: int):
     from symdecomp.schemes.mesh import refine
 
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
-        raise ValueError(f"levels must be a non-negative integer, got {levels!r}")
+        raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
     for _ in range(levels):
         mesh = refine(mesh, scheme).mesh
     return mesh

@@ -27,11 +27,12 @@ import mpmath
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation, root_of_unity
-from symdecomp.errors import check_frequency, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_frequency, check_valence
 
 __all__ = [
     "CirculantBlocks",
@@ -126,7 +127,7 @@ def _laurent_terms(expr: sp.Expr) -> dict[int, sp.Expr]:
             base, exp = factor.as_base_exp()
             if base == OMEGA:
                 if not exp.is_integer:
-                    raise ValueError(f"{expr} is not a Laurent polynomial in omega")
+                    raise InvalidSchemeError(f"{expr} is not a Laurent polynomial in omega")
                 power += int(exp)
             else:
                 coeff *= factor

@@ -30,11 +30,12 @@ from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.elliptic import tangent_lambda
 from symdecomp.analysis.frequency import per_frequency_matrix, valences_at_roots
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import check_valence
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import cos_jtheta, cos_theta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = [
     "hyperbolic_lambda",
@@ -136,7 +137,7 @@ def apply_rational_matrix(matrix: sp.MatrixBase, vector: list) -> list:
     """
     rows, cols = matrix.shape
     if cols != len(vector):
-        raise ValueError(f"matrix has {cols} columns but the vector has {len(vector)} entries")
+        raise InvalidInputError(f"matrix has {cols} columns but the vector has {len(vector)} entries")
     out = []
     for r in range(rows):
         acc = None
@@ -166,7 +167,7 @@ def iterate_hyperbolic_ring(scheme: Scheme, n: int, steps: int = 4, *, digits: i
     """
     n = check_valence(n)
     if steps < 0:
-        raise ValueError(f"steps must be >= 0, got {steps}")
+        raise InvalidInputError(f"steps must be >= 0, got {steps}")
     K = CyclotomicField(4 * n)
     S = subdivision_matrix(scheme, n)
 

@@ -37,10 +37,11 @@ from symdecomp.analysis.frequency import circulant_blocks, laurent_to_cos, per_f
 from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_digits, check_valence
 
 __all__ = ["INDEX", "LAMBDA1", "LimitMasks", "limit_masks", "MasksAtValence", "limit_masks_at", "check_masks_exactly"]
 
@@ -107,6 +108,8 @@ class MasksAtValence:
     subdominant: sp.Expr
 
     def as_json(self, digits: int = 20) -> dict:
+        digits = check_digits(digits)
+
         def num(e):
             value = sp.N(e, digits + 10)
             with mpmath.workdps(digits + 10):

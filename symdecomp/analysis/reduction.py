@@ -28,9 +28,10 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp.algebra.cbmatrix import SymbolicCBMatrix, SymbolicCirculant
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = [
     "BorderedCBMatrix",

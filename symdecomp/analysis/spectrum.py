@@ -26,11 +26,12 @@ import sympy as sp
 
 from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import check_valence
+from symdecomp.schemes.full_matrix import parameter_values
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_digits, check_valence
 
 __all__ = ["SpectrumEntry", "Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
 
@@ -129,16 +130,12 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
     """
     n = check_valence(n)
-    if digits < 1:
-        raise ValueError(f"digits must be a positive integer, got {digits}")
+    digits = check_digits(digits)
     if n < scheme.minimum_valence():
         from symdecomp.schemes.scheme import subdivision_matrix
 
         subdivision_matrix(scheme, n)  # raises the error naming the problem
-    subs = {sp.Symbol(str(k)) if isinstance(k, str) else k: sp.sympify(v) for k, v in (parameters or {}).items()}
-    missing = set(scheme.parameters) - set(subs)
-    if missing:
-        raise ValueError(f"scheme {scheme.name!r} has free parameters {sorted(map(str, missing))}; give their values")
+    subs = parameter_values(scheme, parameters)
     work = digits + 30
     raw: list[tuple[object, int]] = []
     for expr in recursion_eigenvalues(scheme):

@@ -62,7 +62,7 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, SymdecompError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, mesh_rules, refine
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
@@ -248,7 +248,7 @@ def classify_support(
     if source not in mesh.values or not mesh.faces_of(source):
         raise InvalidMeshError(f"vertex {source!r} is not in the mesh")
     if isinstance(levels, bool) or not isinstance(levels, numbers.Integral) or levels < 0:
-        raise SymdecompError(f"levels must be a non-negative integer, got {levels!r}")
+        raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
     candidates = [v for v in mesh.vertices() if _classifiable(mesh, v)] if vertices is None else list(vertices)
     for v in candidates:
         if not _classifiable(mesh, v):

@@ -20,10 +20,12 @@ from functools import cache
 import sympy as sp
 
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix
+from symdecomp.errors import FrequencyOutOfRangeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_frequency, check_valence
 
 __all__ = [
     "TangentEigenvalues",
@@ -53,7 +55,9 @@ class TangentEigenvalues:
     subdominant: sp.Expr
 
     def at(self, n: int, j: int) -> tuple[sp.Expr, sp.Expr]:
-        """The two exact eigenvalues at a concrete valence and frequency."""
+        """The two exact eigenvalues at a concrete valence ``n`` and frequency ``0 <= j < 2n``."""
+        n = check_valence(n)
+        j = check_frequency(j, n)
         subs = {cos_jtheta: sp.cos(sp.pi * sp.Rational(j, n)), sin_jtheta: sp.sin(sp.pi * sp.Rational(j, n))}
         return self.dominant.subs(subs), self.subdominant.subs(subs)
 
@@ -101,8 +105,12 @@ def _omega_and_cos(n, j):
 
 
 def invariant_ratio_at(scheme: Scheme, n: int, j: int = 1) -> sp.Expr:
-    """The exact ratio of Eq. 39 at a concrete ``n`` and ``j``, simplified (radicals, no guessing)."""
+    """The exact ratio of Eq. 39 at a concrete ``n`` and ``0 <= j < 2n``, simplified (radicals, no guessing)."""
+    n = check_valence(n)
+    j = check_frequency(j, n)
     value = invariant_ratio(scheme).subs(_omega_and_cos(sp.Integer(n), sp.Integer(j)))
+    if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise FrequencyOutOfRangeError(f"the ratio of Eq. 39 is undefined at n = {n}, j = {j} (lambda = m22 there)")
     return sp.radsimp(sp.simplify(sp.expand_complex(value)))
 
 

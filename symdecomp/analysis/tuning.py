@@ -33,7 +33,7 @@ import sympy as sp
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix, valences_at_roots
 from symdecomp.analysis.spectrum import format_value
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -41,6 +41,7 @@ from symdecomp.symbols import cos_jtheta, cos_theta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_digits, check_valence
 
 __all__ = [
     "with_free_vertex_rule",
@@ -203,6 +204,8 @@ class TuningAtValence:
     alpha_on_line_in_mu: sp.Expr
 
     def as_json(self, digits: int = 20) -> dict:
+        digits = check_digits(digits)
+
         def num(e):
             with mpmath.workdps(digits + 10):
                 return format_value(mpmath.mpf(sp.Float(sp.N(e, digits + 10), digits + 10)._mpf_), digits)

@@ -1,45 +1,137 @@
-"""The ``symdecomp`` command line. One module per subcommand, each with ``register(sub)``."""
+"""The ``symdecomp`` command line. One module per subcommand, each with ``register(sub)``.
+
+Exit codes (also in ``symdecomp --help`` and the README):
+
+===  =====================================================================================
+0    success
+1    a check disagrees or could not reach a verdict (or an internal error, reported in one line)
+2    bad input: the message names the argument and the problem
+3    an optional component is missing (the OpenSubdiv bridge); the message says how to get it
+130  interrupted (Ctrl-C or SIGTERM); worker processes are stopped with the command
+===  =====================================================================================
+
+No traceback is ever printed: every error is one line on stderr.
+"""
 
 from __future__ import annotations
 
-import argparse
+import errno
 import importlib
+import os
+import signal
 import sys
 
-from symdecomp.errors import SymdecompError
+from symdecomp.cli.common import LIMITS, Parser
+from symdecomp.errors import InternalError, ResourceLimitError, SymdecompError, UnavailableError
 
-__all__ = ["main", "build_parser"]
+__all__ = ["main", "build_parser", "EXIT_CODES"]
 
 #: Subcommand modules of this package, in the order ``--help`` lists them.
-COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd", "evaldata_cmd")
+COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd", "c1_cmd", "evaldata_cmd")
+
+#: The exit codes of every command.
+EXIT_CODES = {
+    0: "success",
+    1: "a check disagrees or could not reach a verdict",
+    2: "bad input (the message names the argument)",
+    3: "an optional component is missing (the message says how to get it)",
+    130: "interrupted (Ctrl-C or SIGTERM)",
+}
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+class Interrupted(BaseException):
+    """Raised in the main process by SIGTERM, so that cleanup runs as for Ctrl-C."""
+
+
+def _epilog() -> str:
+    codes = "; ".join(f"{code} {text}" for code, text in EXIT_CODES.items())
+    limits = "; ".join(f"{name} <= {bound} ({why})" for name, (bound, why) in LIMITS.items())
+    return f"exit codes: {codes}. limits: {limits}."
+
+
+def build_parser() -> Parser:
+    from symdecomp import __version__
+
+    parser = Parser(
         prog="symdecomp",
         description="Exact, symbolic eigenanalysis of subdivision surfaces through polygonal decompositions "
         "(Ivrissimtzis, Zayer, Seidel: Polygonal decompositions of quadrilateral subdivision meshes).",
+        epilog=_epilog(),
     )
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    parser.add_argument("--version", action="version", version=f"symdecomp {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     sub.required = True
     for name in COMMANDS:
         importlib.import_module(f"{__name__}.{name}").register(sub)
     return parser
 
 
-def main(argv=None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
-    try:
-        return int(args.func(args) or 0)
-    except SymdecompError as exc:
-        print(f"symdecomp: error: {exc}", file=sys.stderr)
-        return 2
-    except KeyboardInterrupt:  # pragma: no cover
-        return 130
-    except BrokenPipeError:  # output piped into e.g. `head`: stop quietly
-        import os
+def _fail(message: str, code: int) -> int:
+    message = " ".join(str(message).split())  # one line, whatever the exception carried
+    print(f"symdecomp: error: {message}", file=sys.stderr)
+    return code
 
+
+def _on_sigterm(signum, frame):
+    raise Interrupted
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null so that the interpreter's final flush cannot fail again."""
+    try:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+
+
+def main(argv=None) -> int:
+    """Run the command line; return the exit code (never raises, never prints a traceback)."""
+    try:
+        parser = build_parser()
+        try:
+            args = parser.parse_args(argv)
+        except SystemExit as exc:  # --help, --version, or a usage error (already printed, one line)
+            return exc.code if isinstance(exc.code, int) else 2
+        previous = _install(signal.SIGTERM, _on_sigterm)
+        try:
+            code = int(args.func(args) or 0)
+            sys.stdout.flush()
+            return code
+        finally:
+            _install(signal.SIGTERM, previous)
+    except UnavailableError as exc:
+        return _fail(exc, 3)
+    except InternalError as exc:
+        return _fail(f"internal error (please report): {exc}", 1)
+    except ResourceLimitError as exc:
+        return _fail(exc, 2)
+    except SymdecompError as exc:
+        return _fail(exc, 2)
+    except (KeyboardInterrupt, Interrupted):
+        print("symdecomp: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:  # output piped into e.g. `head`: stop quietly
+        _silence_stdout()
         return 0
+    except MemoryError:
+        return _fail("out of memory; try a smaller valence or range", 1)
+    except OSError as exc:
+        if exc.errno in (errno.ENOSPC, errno.EDQUOT, errno.EIO, errno.EBADF):
+            _silence_stdout()
+            return _fail(f"cannot write the output: {exc.strerror or exc}", 1)
+        return _fail(f"{exc.strerror or exc}" + (f": {exc.filename}" if exc.filename else ""), 1)
+    except RecursionError:
+        return _fail("an expression is nested too deeply", 2)
+    except Exception as exc:  # noqa: BLE001 - the last line of defence against a traceback
+        return _fail(f"internal error (please report): {type(exc).__name__}: {exc}", 1)
+
+
+def _install(signum, handler):
+    """Set a signal handler; return the previous one (None where it cannot be set: not the main thread)."""
+    if handler is None:
+        return None
+    try:
+        return signal.signal(signum, handler)
+    except ValueError:
+        return None

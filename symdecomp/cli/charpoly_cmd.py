@@ -5,7 +5,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
-from symdecomp.cli.common import add_scheme_option, print_json, valence
+from symdecomp.cli.common import add_scheme_option, flag, print_json, refuse_together, valence
 from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha as ALPHA
@@ -23,11 +23,11 @@ def register(sub) -> None:
         "weights alpha, beta stay symbolic (Catmull-Clark edge and face rules) and the coefficients are "
         "polynomials in them.",
     )
-    p.add_argument("n", type=valence, metavar="N", help="the valence (an integer >= 3)")
-    p.add_argument("--free-weights", action="store_true", help="keep the vertex-rule weights alpha, beta symbolic")
-    p.add_argument(
+    p.add_argument("n", type=valence("charpoly"), metavar="N", help="the valence (an integer, 3 <= N <= 300)")
+    flag(p, "--free-weights", help="keep the vertex-rule weights alpha, beta symbolic (Catmull-Clark edge and face rules)")
+    flag(
+        p,
         "--json",
-        action="store_true",
         help='print {"n", "scheme", "closed_form", "zero_frequency_factor", "coefficients" (highest degree first, '
         'exact strings), "matches_matrix"}',
     )
@@ -54,6 +54,7 @@ def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
 
 
 def run(args) -> int:
+    refuse_together(args, "--free-weights", "--scheme", "--free-weights uses the Catmull-Clark edge and face rules")
     scheme = catmull_clark(ALPHA, BETA) if args.free_weights else args.scheme
     cf = closed_form_characteristic_polynomial(scheme)
     coefficients, matches = _coefficients(scheme, args.n, args.free_weights)

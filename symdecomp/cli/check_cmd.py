@@ -2,32 +2,25 @@
 
 from __future__ import annotations
 
-import argparse
+import ctypes
 import itertools
 import multiprocessing
 import os
+import signal
 import time
-from concurrent.futures import ProcessPoolExecutor
 from functools import partial
 
 import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import LIMITS, Once, add_scheme_option, digits, flag, positive_int, print_json, progress, refuse_together, valence_range
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.certify import certify
 from symdecomp.verify.numeric import numeric_check
 from symdecomp.verify.result import CrossCheckStatus
 
-__all__ = ["register", "run", "check_valences"]
-
-
-def _digits(text: str) -> int:
-    """argparse type: digits of agreement, at least 5."""
-    value = positive_int(text)
-    if value < 5:
-        raise argparse.ArgumentTypeError(f"--dps must be at least 5, got {value}")
-    return value
+__all__ = ["register", "run", "check_valences", "pool_size"]
 
 
 def register(sub) -> None:
@@ -41,13 +34,14 @@ def register(sub) -> None:
         "factors, checked with FLINT at 2n+1 rational points, with certified multiplicities. "
         "Exit status 1 if any valence disagrees or is left without a verdict.",
     )
-    p.add_argument("--n", dest="valences", type=valence_range, required=True, metavar="A:B",
-                   help="valences to check: an inclusive range A:B or a single N")
-    p.add_argument("--dps", type=_digits, default=50, help="numeric mode: digits of agreement required (default 50)")
-    p.add_argument("--certify", action="store_true", help="prove each valence exactly instead of comparing numerically")
-    p.add_argument("--jobs", type=positive_int, default=os.cpu_count() or 1,
-                   help="worker processes, one valence each at a time (default: the number of CPUs)")
-    p.add_argument("--json", action="store_true", help="print one JSON object: {rows: [...], summary: {...}}")
+    p.add_argument("--n", dest="valences", type=valence_range("check --certify"), action=Once, required=True, metavar="A:B",
+                   help="valences to check: an inclusive range A:B or a single N (at most 128; with --certify 512)")
+    p.add_argument("--dps", type=digits("--dps", minimum=5, limit="dps"), action=Once, default=50,
+                   help="numeric mode: digits of agreement required (default 50; 5 <= dps <= 1000)")
+    flag(p, "--certify", help="prove each valence exactly instead of comparing numerically (not with --dps)")
+    p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=os.cpu_count() or 1,
+                   help="worker processes at most (default: the number of CPUs; never more than the valences or CPUs)")
+    flag(p, "--json", help="print one JSON object: {rows: [...], summary: {...}}")
     add_scheme_option(p)
     p.set_defaults(func=run)
 
@@ -66,23 +60,54 @@ def _one_forked(n):
     return _one(n, **_JOB)
 
 
+def pool_size(jobs: int, work: int) -> int:
+    """Worker processes for ``work`` items: never more than the work, the CPUs or ``jobs``."""
+    return max(1, min(jobs, work, os.cpu_count() or 1))
+
+
+def _worker_init(parent: int) -> None:
+    """In each forked worker: die with the parent, leave Ctrl-C and SIGTERM to the parent's cleanup."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent terminates the pool (no traceback per worker)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _die_with_parent(parent)
+
+
+def _die_with_parent(parent: int) -> None:
+    """Ask Linux to send SIGTERM to this process when its parent exits (prctl PR_SET_PDEATHSIG)."""
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, signal.SIGTERM, 0, 0, 0)  # PR_SET_PDEATHSIG = 1
+    except (OSError, AttributeError):  # pragma: no cover - not Linux
+        pass
+    if os.getppid() != parent:  # the parent died before the request took effect
+        os._exit(1)
+
+
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
                    jobs: int = 1, show_progress: bool = True):
     """Yield the check of each valence in order (a :class:`~symdecomp.verify.certify.Certificate` or
-    :class:`~symdecomp.verify.numeric.NumericCheck`), in ``jobs`` processes."""
+    :class:`~symdecomp.verify.numeric.NumericCheck`), in at most ``jobs`` processes.
+
+    The pool is never larger than the remaining valences or the CPU count; its workers die with
+    this process (on SIGTERM, SIGINT, or if it is killed) and are terminated if the caller stops.
+    """
     valences = list(valences)
     closed_forms = closed_forms or derived_closed_forms(scheme)
     job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms)
     label = "certify" if certified else f"check {dps} digits"
-    if jobs > 1 and len(valences) > 1 and "fork" in multiprocessing.get_all_start_methods():
+    workers = pool_size(jobs, len(valences) - 1)
+    if workers > 1 and "fork" in multiprocessing.get_all_start_methods():
         first = _one(valences[0], **job)  # also does the symbolic step once, before the workers fork
         _JOB.clear()
         _JOB.update(job)
+        pool = multiprocessing.get_context("fork").Pool(workers, initializer=_worker_init, initargs=(os.getpid(),))
         try:
-            with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("fork")) as pool:
-                rest = pool.map(_one_forked, valences[1:], chunksize=1)
-                yield from progress(itertools.chain([first], rest), len(valences), label, enabled=show_progress)
+            rest = pool.imap(_one_forked, valences[1:], chunksize=1)
+            yield from progress(itertools.chain([first], rest), len(valences), label, enabled=show_progress)
+            pool.close()
         finally:
+            pool.terminate()
+            pool.join()
             _JOB.clear()
     else:
         work = partial(_one, **job)
@@ -91,6 +116,11 @@ def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, 
 
 def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
+    refuse_together(args, "--certify", "--dps", "the certified check is exact and has no precision")
+    bound, why = LIMITS["check"]
+    if not args.certify and max(args.valences) > bound:
+        raise InvalidInputError(f"check --n: numeric mode goes up to N = {bound}, got {max(args.valences)} ({why}); "
+                                "use --certify for larger valences")
     start = time.perf_counter()
     rows = []
     if not args.json:

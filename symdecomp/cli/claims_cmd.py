@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import argparse
+
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import print_json, progress
+from symdecomp.cli.common import Once, flag, print_json, progress
 
 
 def register(sub) -> None:
@@ -15,11 +17,20 @@ def register(sub) -> None:
         "Exit status 1 if any check failed to run (status 'error'); refuted or corrected claims are "
         "findings about the paper, not failures.",
     )
-    p.add_argument("--json", action="store_true", help="print a JSON list of {label, section, title, status, evidence, ...}")
-    p.add_argument("--section", help="only the claims of this section of the paper (e.g. 5.1)")
+    flag(p, "--json", help="print a JSON list of {label, section, title, status, evidence, ...}")
+    p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
-    p.add_argument("--no-progress", action="store_true", help="do not draw a progress bar on stderr")
+    flag(p, "--no-progress", help="do not draw a progress bar on stderr")
     p.set_defaults(func=run)
+
+
+def section(text: str) -> str:
+    """argparse type: a section of the paper that has claims (``5`` or ``5.1``)."""
+    sections = sorted({c.section for c in all_claims()})
+    known = set(sections) | {s.split(".")[0] for s in sections}
+    if text not in known:
+        raise argparse.ArgumentTypeError(f"no claims in section {text!r}; known sections: {', '.join(sections)}")
+    return text
 
 
 def run(args) -> int:
@@ -30,9 +41,9 @@ def run(args) -> int:
         wanted = set(args.label)
         unknown = wanted - {c.label for c in claims}
         if unknown:
-            from symdecomp.errors import SymdecompError
+            from symdecomp.errors import InvalidInputError
 
-            raise SymdecompError(f"no claim labelled {', '.join(sorted(unknown))}")
+            raise InvalidInputError(f"no claim labelled {', '.join(sorted(unknown))}")
         claims = [c for c in claims if c.label in wanted]
     rows = []
     for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):

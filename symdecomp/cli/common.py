@@ -1,15 +1,175 @@
-"""Helpers shared by the subcommands: argument types, scheme lookup, progress, JSON output."""
+"""Helpers shared by the subcommands: the parser, strict argument types, limits, progress, output.
+
+Every argument type is strict: integers are ASCII digits with an optional sign (``5_0``,
+Unicode digits, ``5.0`` and ``0x5`` are refused), each bounded by a documented limit
+(:data:`LIMITS`, with the reason). Every option may be given once (:class:`Once`); a
+repeated option is an error, not "the last one wins". The checks call
+:mod:`symdecomp.validate`, the same functions the API uses.
+"""
 
 from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 
-from symdecomp.errors import InvalidValenceError, check_valence
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme, catmull_clark
+from symdecomp.validate import MAX_DIGITS, MAX_DPS
 
-__all__ = ["valence", "valence_range", "positive_int", "SCHEMES", "scheme_by_name", "add_scheme_option", "progress", "print_json"]
+__all__ = [
+    "Parser",
+    "Once",
+    "LIMITS",
+    "integer",
+    "valence",
+    "valence_range",
+    "positive_int",
+    "digits",
+    "SCHEMES",
+    "scheme_by_name",
+    "add_scheme_option",
+    "given",
+    "refuse_together",
+    "progress",
+    "print_json",
+]
+
+#: Upper bounds of the command line and why they are there: ``name: (bound, reason)``.
+LIMITS = {
+    "digits": (MAX_DIGITS, "more digits than anyone reads; each one costs evaluation time"),
+    "dps": (MAX_DPS, "an eigenvalue solve at this precision takes hours"),
+    "spectrum": (2000, "the time grows with N: N = 1000 takes about half a minute"),
+    "masks": (1000, "the exact left eigenvectors grow with N: N = 300 takes about 10 s"),
+    "charpoly": (300, "the exact characteristic polynomial of the (2N+1)x(2N+1) matrix grows like N^3"),
+    "tune": (1000, "the exact solve grows with N: N = 300 takes about 10 s"),
+    "tune --table": (200, "one exact evaluation per valence: N = 60 takes about 10 s"),
+    "check": (128, "numeric mode solves a (2N+1)x(2N+1) eigenproblem at rising precision, time ~ N^3"),
+    "check --certify": (512, "the memory of the exact characteristic polynomial grows like N^3; N = 256 takes minutes"),
+    "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
+    "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
+    "jobs": (256, "more worker processes than this only cost memory"),
+    "c1": (128, "each valence needs the spectrum of the 2-ring matrix and interval bounds of its characteristic map"),
+    "c1 --depth": (12, "each level splits a piece in four: depth 12 is 16 million pieces"),
+    "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 1200 bits"),
+}
+
+_INTEGER = re.compile(r"[+-]?[0-9]{1,12}", re.ASCII)
+_DIGITS = re.compile(r"[+-]?[0-9]+", re.ASCII)
+
+
+class Parser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line (``symdecomp CMD: error: ...``) and exit code 2."""
+
+    def error(self, message: str):  # noqa: D401 - argparse's hook
+        self.exit(2, f"{self.prog}: error: {message} (see '{self.prog} --help')\n")
+
+
+class Once(argparse.Action):
+    """Store an option's value, refusing a second occurrence (``--n 3 --n 4`` is an error)."""
+
+    def __init__(self, option_strings, dest, nargs=None, const=None, **kwargs):
+        self._flag = nargs == 0
+        if self._flag:
+            kwargs.setdefault("default", False)
+        super().__init__(option_strings, dest, nargs=nargs, const=True if self._flag else const, **kwargs)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        seen = namespace.__dict__.setdefault("_given", set())
+        if self.dest in seen:
+            raise argparse.ArgumentError(self, "given more than once")
+        seen.add(self.dest)
+        setattr(namespace, self.dest, self.const if self._flag else values)
+
+
+def flag(parser, *names, **kwargs):
+    """A boolean ``--flag`` that may be given once."""
+    return parser.add_argument(*names, action=Once, nargs=0, **kwargs)
+
+
+def given(args, dest: str) -> bool:
+    """Whether the user gave the option stored in ``dest`` (as opposed to its default)."""
+    return dest in getattr(args, "_given", set())
+
+
+def refuse_together(args, first: str, second: str, why: str) -> None:
+    """Refuse two options given together (contradictory, or one would be ignored)."""
+    if given(args, first.lstrip("-").replace("-", "_")) and given(args, second.lstrip("-").replace("-", "_")):
+        raise InvalidInputError(f"{first} and {second} cannot be used together: {why}")
+
+
+def integer(text: str, name: str, *, minimum: int | None = None, limit: str | None = None, noun: str = "an integer") -> int:
+    """Parse strict ASCII integer text for the option ``name``, within ``minimum`` and ``LIMITS[limit]``.
+
+    The messages leave the option's name to argparse (which prefixes ``argument NAME:``).
+    """
+    maximum, reason = LIMITS[limit] if limit else (None, "")
+    bounds = " and ".join(part for part in (f">= {minimum}" if minimum is not None else "",
+                                             f"<= {maximum}" if maximum is not None else "") if part)
+    expected = f"{noun}{' ' + bounds if bounds else ''}"
+    shown = text if len(text) <= 40 else text[:37] + "..."
+    if not _DIGITS.fullmatch(text):
+        raise argparse.ArgumentTypeError(f"expected {expected} written with the digits 0-9, got {shown!r}")
+    if not _INTEGER.fullmatch(text):
+        raise argparse.ArgumentTypeError(f"expected {expected}, got {shown!r}, which has too many digits"
+                                         + (f" ({reason})" if reason else ""))
+    value = int(text)
+    if minimum is not None and value < minimum:
+        raise argparse.ArgumentTypeError(f"expected {expected}, got {value}")
+    if maximum is not None and value > maximum:
+        raise argparse.ArgumentTypeError(f"expected {expected}, got {value} ({reason})")
+    return value
+
+
+def valence(limit: str):
+    """argparse type: an integer valence ``3 <= N <= LIMITS[limit]``."""
+
+    def parse(text: str) -> int:
+        return integer(text, "N", minimum=3, limit=limit, noun="a valence: an integer")
+
+    parse.__name__ = "valence"
+    return parse
+
+
+def valence_range(limit: str):
+    """argparse type: ``N`` or an inclusive range ``A:B`` of valences, ``3 <= A <= B <= LIMITS[limit]``."""
+    one = valence(limit)
+
+    def parse(text: str) -> list[int]:
+        if text.count(":") > 1:
+            raise argparse.ArgumentTypeError(f"expected N or A:B, got {text!r}")
+        if ":" in text:
+            lo, _, hi = text.partition(":")
+            a, b = one(lo), one(hi)
+            if b < a:
+                raise argparse.ArgumentTypeError(f"empty valence range {text!r}: {b} < {a}")
+            return list(range(a, b + 1))
+        return [one(text)]
+
+    parse.__name__ = "valence range"
+    return parse
+
+
+def positive_int(name: str, limit: str | None = None):
+    """argparse type: an integer ``>= 1`` (and ``<= LIMITS[limit]``)."""
+
+    def parse(text: str) -> int:
+        return integer(text, name, minimum=1, limit=limit)
+
+    parse.__name__ = "positive integer"
+    return parse
+
+
+def digits(name: str = "--digits", *, minimum: int = 1, limit: str = "digits"):
+    """argparse type: digits of a printed value or of working precision, bounded."""
+
+    def parse(text: str) -> int:
+        return integer(text, name, minimum=minimum, limit=limit)
+
+    parse.__name__ = "digits"
+    return parse
+
 
 #: Schemes selectable by name on the command line.
 SCHEMES = {"catmull-clark": catmull_clark}
@@ -26,56 +186,36 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--scheme",
         type=scheme_by_name,
-        default="catmull-clark",
+        action=Once,
+        default=SCHEMES["catmull-clark"](),
         help=f"subdivision scheme (default: catmull-clark; known: {', '.join(SCHEMES)})",
     )
 
 
-def valence(text: str) -> int:
-    """argparse type: an integer valence >= 3."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"valence must be an integer >= 3, got {text!r}") from None
-    try:
-        return check_valence(value)
-    except InvalidValenceError as exc:
-        raise argparse.ArgumentTypeError(str(exc)) from None
-
-
-def valence_range(text: str) -> list[int]:
-    """argparse type: ``N`` or an inclusive range ``A:B`` of valences."""
-    if ":" in text:
-        lo, _, hi = text.partition(":")
-        a, b = valence(lo), valence(hi)
-        if b < a:
-            raise argparse.ArgumentTypeError(f"empty valence range {text!r}: {b} < {a}")
-        return list(range(a, b + 1))
-    return [valence(text)]
-
-
-def positive_int(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {value}")
-    return value
-
-
 def progress(iterable, total: int, label: str, *, enabled: bool = True):
-    """Yield from ``iterable`` while drawing a progress bar on stderr (when it is a terminal or forced)."""
-    show = enabled and total > 1
+    """Yield from ``iterable``, drawing a progress bar on stderr only when stderr is a terminal.
+
+    The one progress helper of the command line: a log file or a pipe gets no carriage-return
+    updates at all.
+    """
+    stream = sys.stderr
+    show = enabled and total > 1 and _is_terminal(stream)
     for done, item in enumerate(iterable, 1):
         yield item
         if show:
             width = 30
             filled = int(width * done / total)
-            sys.stderr.write(f"\r{label} [{'#' * filled}{'.' * (width - filled)}] {done}/{total}")
-            sys.stderr.flush()
+            stream.write(f"\r{label} [{'#' * filled}{'.' * (width - filled)}] {done}/{total}")
+            stream.flush()
     if show:
-        sys.stderr.write("\n")
+        stream.write("\n")
+
+
+def _is_terminal(stream) -> bool:
+    try:
+        return stream.isatty()
+    except (AttributeError, ValueError):
+        return False
 
 
 def print_json(obj) -> None:

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import argparse
 import re
 import sys
 from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import print_json, progress
-from symdecomp.errors import SymdecompError
+from symdecomp.cli.common import Once, flag, given, print_json, progress
+from symdecomp.cli.files import check_output_directory, replace_owned_files
+from symdecomp.errors import InvalidInputError
 from symdecomp.output.latex import aslatex, derivation_files
 
 __all__ = ["register", "run", "write_derivations"]
@@ -28,15 +30,17 @@ def register(sub) -> None:
         "longer correspond to a section are removed; other files in the directory are left alone. "
         "Exit status 1 if a check failed to run (status 'error'; the files are written all the same).",
     )
-    p.add_argument("--out", type=Path, default=Path("derivations"), help="output directory (default: derivations/)")
-    p.add_argument("--json", action="store_true", help="print a JSON list of the files written")
+    p.add_argument("--out", type=_out, action=Once, default=Path("derivations"),
+                   help="output directory (default: derivations/); written as a whole, so an interrupted run "
+                   "leaves the old files or the new ones, never a mix")
+    flag(p, "--json", help="print a JSON list of the files written")
     p.add_argument(
         "--label",
         action="append",
         help="print the LaTeX of this claim (repeatable) to stdout instead of writing files, "
         "e.g. --label 'Eq. 43' (to paste into a paper; needs the preamble of main.tex)",
     )
-    p.add_argument("--no-progress", action="store_true", help="do not draw a progress bar on stderr")
+    flag(p, "--no-progress", help="do not draw a progress bar on stderr")
     p.set_defaults(func=run)
 
 
@@ -48,25 +52,30 @@ def write_derivations(out: Path, *, show_progress: bool = False) -> list[Path]:
 
 
 def _write(out: Path, files: dict[str, str]) -> list[Path]:
-    out.mkdir(parents=True, exist_ok=True)
-    for stale in sorted(out.iterdir()):
-        if OWNED.match(stale.name) and stale.name not in files and stale.is_file():
-            stale.unlink()
-    written = []
-    for name, text in files.items():
-        path = out / name
-        with open(path, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
-        written.append(path)
-    return written
+    """Replace the owned files of ``out`` by ``files`` in one step (stale owned files go, others stay)."""
+    try:
+        return replace_owned_files(out, files, OWNED)
+    except OSError as exc:
+        raise InvalidInputError(f"--out {out}: cannot write there ({exc.strerror or exc})") from None
+
+
+def _out(text: str) -> Path:
+    """argparse type: the output directory, checked before any claim is computed."""
+    try:
+        return check_output_directory(text)
+    except InvalidInputError as exc:
+        raise argparse.ArgumentTypeError(str(exc).removeprefix("--out ").removeprefix("--out: ")) from None
 
 
 def run(args) -> int:
+    for option in ("--out", "--json", "--no-progress"):
+        if args.label and given(args, option[2:].replace("-", "_")):
+            raise InvalidInputError(f"--label and {option} cannot be used together: --label prints LaTeX to stdout and writes no files")
     if args.label:
         known = {c.label: c for c in all_claims()}
         unknown = [label for label in args.label if label not in known]
         if unknown:
-            raise SymdecompError(f"no claim labelled {', '.join(unknown)}; known: {', '.join(known)}")
+            raise InvalidInputError(f"no claim labelled {', '.join(unknown)}; known: {', '.join(known)}")
         print("\n".join(aslatex(known[label]) for label in args.label), end="")
         return 1 if any(check_claim(label).status is Status.ERROR for label in args.label) else 0
     written = write_derivations(args.out, show_progress=not args.no_progress and not args.json)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import sys
 
 from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import Once, add_scheme_option, digits, positive_int, print_json, progress, valence_range
 from symdecomp.output.evaldata import EvalDataFileError, binary_bytes, check_writable, dumps, json_document, write_atomic
 
 
@@ -23,11 +23,13 @@ def register(sub) -> None:
         "patch matrix for valences 3..N, each float64 the correctly rounded value of the exact number "
         "(certified Arb balls), in the layout of the published data file; or as JSON decimal strings.",
     )
-    p.add_argument("--n", type=valence_range, required=True, metavar="3:N", help="valences 3..N (the binary file starts at 3)")
-    p.add_argument("--out", required=True, metavar="FILE", help="output file (written atomically)")
-    p.add_argument("--format", choices=("binary", "json"), default="binary", help="binary (default) or json")
-    p.add_argument("--digits", type=positive_int, default=20, help="significant digits in the JSON form (default 20)")
-    p.add_argument("--jobs", type=positive_int, default=2, help="worker processes for the binary file (default 2)")
+    p.add_argument("--n", type=valence_range("evaldata"), action=Once, required=True, metavar="3:N",
+                   help="valences 3..N (the binary file starts at 3)")
+    p.add_argument("--out", action=Once, required=True, metavar="FILE", help="output file (written atomically)")
+    p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary", help="binary (default) or json")
+    p.add_argument("--digits", type=digits(), action=Once, default=20, help="significant digits in the JSON form (default 20)")
+    p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=2,
+                   help="worker processes for the binary file (default 2)")
     p.add_argument("--json", action="store_true", help="print a JSON summary")
     add_scheme_option(p)
     p.set_defaults(func=run)

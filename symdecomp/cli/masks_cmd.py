@@ -13,7 +13,7 @@ JSON: ``{"n": N, "position": {"O": w, "a": [...], "b": [...]}, "tangents": [{"O"
 from __future__ import annotations
 
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, valence
+from symdecomp.cli.common import Once, add_scheme_option, digits, flag, print_json, valence
 
 
 def register(sub) -> None:
@@ -24,9 +24,10 @@ def register(sub) -> None:
         "weights summing to 1) and for the subdominant eigenvalue lambda_1 (two tangent masks: weight cos(2 pi i/N), "
         "resp. sin(2 pi i/N), on a_i; b_i weights from the eigenvector equation; 0 on O).",
     )
-    p.add_argument("n", type=valence, metavar="N", help="the valence (an integer >= 3)")
-    p.add_argument("--digits", type=positive_int, default=20, help="significant digits of the weights (default 20)")
-    p.add_argument("--json", action="store_true", help='print {"n", "position", "tangents", "subdominant"}')
+    p.add_argument("n", type=valence("masks"), metavar="N", help="the valence (an integer, 3 <= N <= 1000)")
+    p.add_argument("--digits", type=digits(), action=Once, default=20,
+                   help="significant digits of the weights (default 20, at most 1000)")
+    flag(p, "--json", help='print {"n", "position", "tangents", "subdominant"}')
     add_scheme_option(p)
     p.set_defaults(func=run)
 

@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+import argparse
 import sys
 
-from symdecomp.cli.common import positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import LIMITS, Once, flag, integer, print_json, progress, valence_range
 
 
 def register(sub) -> None:
@@ -19,24 +20,32 @@ def register(sub) -> None:
         "precision; 'limit' rows converge, the disagreement shrinking by the stated rate per level. "
         "Needs the OpenSubdiv bridge (built on demand with g++ if libosd-dev is installed).",
     )
-    p.add_argument("--n", type=valence_range, default=valence_range("3:12"), metavar="A:B",
-                   help="valence or inclusive range of valences (default 3:12)")
-    p.add_argument("--levels", type=positive_int, default=20, metavar="K",
-                   help="refinement levels run in OpenSubdiv (default 20; at least 2)")
-    p.add_argument("--seed", type=int, default=0, help="seed of the random 1-rings (default 0)")
-    p.add_argument("--json", action="store_true",
+    p.add_argument("--n", type=valence_range("oracle"), action=Once, default=list(range(3, 13)), metavar="A:B",
+                   help="valence or inclusive range of valences (default 3:12, at most 64)")
+    p.add_argument("--levels", type=_levels, action=Once, default=20, metavar="K",
+                   help=f"refinement levels run in OpenSubdiv (default 20; 2 <= K <= {LIMITS['levels'][0]})")
+    p.add_argument("--seed", type=_seed, action=Once, default=0, help="seed of the random 1-rings (default 0; 0 <= seed < 2^32)")
+    flag(p, "--json",
                    help='print [{"n", "levels", "seed", "agrees", "predictions": [{"name", "kind", "predicted", '
                         '"observed", "disagreement", "rate", "observed_rate", "agrees"}]}]')
     p.set_defaults(func=run)
 
 
+def _levels(text: str) -> int:
+    return integer(text, "--levels", minimum=2, limit="levels")
+
+
+def _seed(text: str) -> int:
+    value = integer(text, "--seed", minimum=0)
+    if value >= 2**32:
+        raise argparse.ArgumentTypeError(f"--seed must be below 2^32, got {value}")
+    return value
+
+
 def run(args) -> int:
-    from symdecomp.errors import SymdecompError
     from symdecomp.verify.opensubdiv import BridgeUnavailableError, load_bridge
     from symdecomp.verify.oracle import compare_with_opensubdiv
 
-    if args.levels < 2:
-        raise SymdecompError(f"--levels must be at least 2, got {args.levels}")
     try:
         load_bridge()
     except BridgeUnavailableError as exc:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from symdecomp.analysis.spectrum import closed_form_spectrum
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, valence
+from symdecomp.cli.common import Once, add_scheme_option, digits, flag, print_json, valence
 
 
 def register(sub) -> None:
@@ -14,9 +14,10 @@ def register(sub) -> None:
         "3x3 matrix of Eq. 43 for k = 0) at valence N and print each distinct value with its "
         "multiplicity and the n-gon frequencies k it comes from.",
     )
-    p.add_argument("n", type=valence, metavar="N", help="the valence (an integer >= 3)")
-    p.add_argument("--digits", type=positive_int, default=20, help="significant digits of the values (default 20)")
-    p.add_argument("--json", action="store_true", help='print {"n", "scheme", "eigenvalues": [{"value", "multiplicity", "frequencies"}]}')
+    p.add_argument("n", type=valence("spectrum"), metavar="N", help="the valence (an integer, 3 <= N <= 2000)")
+    p.add_argument("--digits", type=digits(), action=Once, default=20,
+                   help="significant digits of the values (default 20, at most 1000)")
+    flag(p, "--json", help='print {"n", "scheme", "eigenvalues": [{"value", "multiplicity", "frequencies"}]}')
     add_scheme_option(p)
     p.set_defaults(func=run)
 

@@ -13,7 +13,8 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.tuning import tune
-from symdecomp.cli.common import add_scheme_option, positive_int, print_json, progress, valence
+from symdecomp.cli.common import LIMITS, Once, add_scheme_option, digits, flag, print_json, progress, valence
+from symdecomp.errors import InvalidInputError
 
 
 def register(sub) -> None:
@@ -26,15 +27,19 @@ def register(sub) -> None:
         "an equation in n alone holds (for Catmull-Clark: n = 4), since the Eq. 44 ratio at a given eigenvalue "
         "does not depend on the vertex rule. --table prints both defects of the scheme for n = 3..N.",
     )
-    p.add_argument("n", type=valence, metavar="N", help="the valence (an integer >= 3)")
-    p.add_argument("--digits", type=positive_int, default=20, help="significant digits of printed values (default 20)")
-    p.add_argument("--table", action="store_true", help="print the defects of both conditions for n = 3..N instead")
-    p.add_argument("--json", action="store_true", help="print JSON")
+    p.add_argument("n", type=valence("tune"), metavar="N", help="the valence (an integer, 3 <= N <= 1000; with --table N <= 200)")
+    p.add_argument("--digits", type=digits(), action=Once, default=20,
+                   help="significant digits of printed values (default 20, at most 1000)")
+    flag(p, "--table", help="print the defects of both conditions for n = 3..N instead")
+    flag(p, "--json", help="print JSON")
     add_scheme_option(p)
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
+    bound, why = LIMITS["tune --table"]
+    if args.table and args.n > bound:
+        raise InvalidInputError(f"tune --table: N must be at most {bound}, got {args.n} ({why})")
     if args.table:
         valences = list(range(3, args.n + 1))
         rows = []

@@ -26,14 +26,14 @@ import flint
 import numpy as np
 
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData
-from symdecomp.errors import SymdecompError
+from symdecomp.errors import InvalidInputError
 
 __all__ = ["EvalDataFileError", "binary_bytes", "write_atomic", "read_binary", "json_document", "dumps", "check_writable"]
 
 FORMAT = "stam-catmull-clark"
 
 
-class EvalDataFileError(SymdecompError):
+class EvalDataFileError(InvalidInputError):
     """An eigen-data file cannot be written or read (path, truncated or malformed content)."""
 
 

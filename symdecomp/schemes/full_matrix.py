@@ -23,10 +23,12 @@ from collections.abc import Mapping
 import flint
 import sympy as sp
 
+from symdecomp import validate
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
-from symdecomp.errors import InvalidSchemeError, check_valence
-from symdecomp.schemes.scheme import Scheme, subdivision_entries
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, subdivision_entries
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_memory, check_valence
 
 __all__ = [
     "parameter_values",
@@ -41,24 +43,10 @@ def parameter_values(scheme: Scheme, parameters: Mapping | None) -> dict:
     """Values for the scheme's free parameters as a sympy substitution (keys may be names).
 
     Raises :class:`~symdecomp.errors.InvalidSchemeError` naming the parameters left without
-    a value or given a value that is not an exact number.
+    a value or given a value that is not an exact number (see :func:`symdecomp.validate.parameter_values`).
     """
-    subs = {}
-    for key, value in dict(parameters or {}).items():
-        symbol = sp.Symbol(key) if isinstance(key, str) else key
-        match = [p for p in scheme.parameters if p == symbol or str(p) == str(symbol)]
-        if not match:
-            raise InvalidSchemeError(
-                f"scheme {scheme.name!r} has no parameter {key!s}; its parameters are {[str(p) for p in scheme.parameters]}"
-            )
-        expr = sp.sympify(value)
-        if expr.has(sp.Float):
-            raise InvalidSchemeError(f"parameter {key!s} = {value!r} is a float; give an exact value (e.g. sympy.Rational)")
-        subs[match[0]] = expr
-    missing = [str(p) for p in scheme.parameters if p not in subs]
-    if missing:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {missing}; give their values")
-    return subs
+    return validate.parameter_values(scheme.parameters, parameters, owner=f"scheme {scheme.name!r}",
+                                     symbols=WEIGHT_SYMBOLS)
 
 
 def exact_weight(weight: sp.Expr, n: int, subs: Mapping) -> flint.fmpq:
@@ -135,6 +123,7 @@ def exact_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None 
     that). Memory is that of ``(2n+1)^2`` small rationals; no symbolic matrix is built.
     """
     size = 2 * check_valence(n) + 1
+    check_memory(size * size * 64, f"the exact {size} x {size} subdivision matrix")
     S = flint.fmpq_mat(size, size)
     for (r, c), x in sparse_subdivision_matrix(scheme, n, parameters).items():
         S[r, c] = x
@@ -182,6 +171,16 @@ def _balanced_integer_matrix(entries: dict, size: int) -> tuple[flint.fmpz_mat, 
     return A, d
 
 
+def charpoly_memory(size: int, bits: int) -> int:
+    """An estimate (bytes) of FLINT's exact characteristic polynomial of a ``size x size`` integer matrix.
+
+    Entries of ``bits`` bits grow, during the elimination, to about ``size * (bits + log2 size)``
+    bits (Hadamard's bound); a dense matrix of such numbers is the peak.
+    """
+    grown = size * (bits + max(1, size.bit_length()))
+    return size * size * (grown // 8 + 16)
+
+
 def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None = None) -> flint.fmpq_poly:
     """``det(lambda I - S)`` of the full subdivision matrix, exactly (FLINT ``fmpz_mat.charpoly``).
 
@@ -189,7 +188,11 @@ def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None
     ``chi_S(lambda) = d^-(2n+1) chi_A(d lambda)``. No block structure is used.
     """
     size = 2 * check_valence(n) + 1
+    # a first estimate before anything is built (entries of about 2 log2(n) + 8 bits), then the real one
+    check_memory(charpoly_memory(size, 2 * n.bit_length() + 8), f"the exact characteristic polynomial at n = {n}")
     A, d = _balanced_integer_matrix(sparse_subdivision_matrix(scheme, n, parameters), size)
+    bits = max(int(d).bit_length(), max((abs(int(A[r, c])).bit_length() for r in range(size) for c in range(size)), default=1))
+    check_memory(charpoly_memory(size, bits), f"the exact characteristic polynomial at n = {n}")
     p = A.charpoly()
     coeffs = p.coeffs()
     size = len(coeffs) - 1

@@ -45,9 +45,10 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, SymdecompError, check_valence
+from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 
 __all__ = [
     "InvalidMeshError",
@@ -63,7 +64,7 @@ __all__ = [
 ]
 
 
-class InvalidMeshError(SymdecompError):
+class InvalidMeshError(InvalidInputError):
     """A mesh is not a consistently oriented quad mesh, or a vertex asked about is not in it."""
 
 
@@ -387,8 +388,7 @@ def _combine(terms: Iterable[tuple[object, tuple]]) -> tuple:
 def point_stencils(mesh: QuadMesh, rules: MeshRules) -> tuple[dict, dict, dict]:
     """``(face, edge, vertex)`` stencils ``{key: ((weight, old vertex id), ...)}`` of the refined points
     (keys: face index, ``frozenset({u, v})`` of an edge with two faces, interior vertex id)."""
-    fc = _as_weight(rules.face_corner)
-    ee, es = _as_weight(rules.edge_end), _as_weight(rules.edge_side)
+    fc, ee, es = (_as_weight(w) for w in (rules.face_corner, rules.edge_end, rules.edge_side))
     face = {fi: tuple((fc, x) for x in f) for fi, f in enumerate(mesh.faces)}
     edge = {}
     for (u, v), left in mesh._directed.items():

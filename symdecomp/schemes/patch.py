@@ -25,9 +25,10 @@ from functools import lru_cache
 
 import flint
 
-from symdecomp.errors import InvalidSchemeError, check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import refinement_matrix, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_valence
 
 __all__ = ["OUTER_POINTS", "EXTRA_POINTS", "SUBPATCH_CORNERS", "PatchMatrices", "patch_matrices", "lattice_index", "patch_mesh"]
 

@@ -27,7 +27,7 @@ import numpy as np
 import sympy as sp
 
 from symdecomp.algebra.polygons import PolygonDecomposition, as_vertex_rows, decompose
-from symdecomp.errors import FrequencyOutOfRangeError, InvalidPolygonError
+from symdecomp.errors import FrequencyOutOfRangeError, InvalidInputError, InvalidPolygonError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = ["interleaved_polygon", "OneRing", "subdivide", "one_ring_decomposition", "OneRingDecomposition", "ngon_amplitudes"]
@@ -105,10 +105,10 @@ class OneRing:
 def subdivide(scheme: Scheme, ring: OneRing, steps: int = 1) -> OneRing:
     """Apply ``steps`` subdivision steps of ``scheme`` to a 1-ring (through the exact matrix)."""
     if isinstance(steps, bool) or not isinstance(steps, int) or steps < 0:
-        raise ValueError(f"steps must be a non-negative integer, got {steps!r}")
+        raise InvalidInputError(f"steps must be a non-negative integer, got {steps!r}")
     S = subdivision_matrix(scheme, ring.n)
     if scheme.parameters:
-        raise ValueError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute values first")
+        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute values first")
     rows = ring.rows()
     if ring.arithmetic == "exact":
         X = sp.Matrix(rows)

@@ -23,14 +23,19 @@ Matrix([[9/16, 3/32, 3/32, 3/32, 3/32, 1/64, 1/64, 1/64, 1/64]])
 
 from __future__ import annotations
 
+import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, NotAffineError, check_valence
+from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError
+from symdecomp.expressions import exact_value
+from symdecomp.symbols import alpha as ALPHA
+from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence, parameter_values
 
 __all__ = [
     "Stencil",
@@ -43,25 +48,30 @@ __all__ = [
 ]
 
 
+#: Names a weight given as text may use: the valence and the vertex-rule weights of Eq. 16.
+WEIGHT_SYMBOLS = {"n": N, "alpha": ALPHA, "beta": BETA}
+
+
 def _sympify_weight(value, where: str) -> sp.Expr:
+    """A weight as an exact expression (text is parsed, never evaluated; see :mod:`symdecomp.expressions`).
+
+    A symbol named ``n`` is the valence, whatever its assumptions; other symbols are free parameters.
+    """
     try:
-        expr = sp.sympify(value, strict=True) if not isinstance(value, sp.Basic) else value
-    except (sp.SympifyError, TypeError) as exc:
-        raise InvalidSchemeError(f"{where}: weight {value!r} is not a number or sympy expression") from exc
-    if isinstance(expr, sp.Float) or expr.has(sp.Float):
-        raise InvalidSchemeError(
-            f"{where}: weight {value!r} is a float; give exact rationals (e.g. sympy.Rational(3, 8))"
-        )
-    if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-        raise InvalidSchemeError(f"{where}: weight {value!r} is not finite")
-    return expr
+        return exact_value(value, WEIGHT_SYMBOLS, argument=f"{where}: weight", other_symbols=True)
+    except InvalidExpressionError as exc:
+        raise InvalidSchemeError(str(exc)) from None
 
 
 def _weights(mapping: Mapping[int, object], where: str) -> tuple[tuple[int, sp.Expr], ...]:
     out = []
-    for k, w in sorted(dict(mapping).items()):
-        if isinstance(k, bool) or not isinstance(k, int):
+    if not isinstance(mapping, Mapping):
+        raise InvalidSchemeError(f"{where}: expected a mapping {{offset: weight}}, got {type(mapping).__name__}")
+    keys = list(mapping)
+    for k in keys:
+        if isinstance(k, bool) or not isinstance(k, numbers.Integral):
             raise InvalidSchemeError(f"{where}: offset {k!r} is not an integer")
+    for k, w in sorted((int(k), w) for k, w in mapping.items()):
         expr = _sympify_weight(w, f"{where}[{k}]")
         if expr != 0:
             out.append((k, expr))
@@ -184,11 +194,13 @@ class Scheme:
         n = check_valence(n)
         if n < self.minimum_valence():
             raise InvalidSchemeError(f"scheme {self.name!r} has stencils {self._span + 1} wide, wider than the valence n = {n}")
+        _check_defined(self, n)
         return n
 
     def substitute(self, values: Mapping[sp.Symbol, object], *, name: str | None = None) -> Scheme:
         """The scheme with some parameters replaced (e.g. tuned vertex weights)."""
-        subs = {k: sp.sympify(v) for k, v in values.items()}
+        subs = parameter_values(self.parameters, values, owner=f"scheme {self.name!r}", symbols=WEIGHT_SYMBOLS,
+                                require_all=False)
 
         def st(rule: Stencil, label: str) -> Stencil:
             return Stencil.from_weights(
@@ -273,6 +285,22 @@ def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]
             for k, x in b:
                 add(r, 1 + n + (i + k) % n, x)
     return entries
+
+
+
+def _check_defined(scheme: Scheme, n: int) -> None:
+    """Refuse a valence at which a weight of the scheme is undefined (e.g. ``1/(n - 5)`` at ``n = 5``)."""
+    for label, rule in (("edge rule", scheme.edge_rule), ("face rule", scheme.face_rule)):
+        for w in (rule.center, *(w for _, w in rule.a + rule.b)):
+            _check_weight_at(w, n, f"{scheme.name!r} {label}")
+    v = scheme.vertex_rule
+    for w in (v.center, v.each_a, v.each_b):
+        _check_weight_at(w, n, f"{scheme.name!r} vertex rule")
+
+
+def _check_weight_at(weight: sp.Expr, n: int, where: str) -> None:
+    if N in weight.free_symbols and weight.subs(N, n).has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}")
 
 
 def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:

@@ -55,11 +55,11 @@ import sympy as sp
 from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
 from symdecomp.analysis.spectrum import format_value
-from symdecomp.errors import check_valence
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_digits, check_int, check_valence
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
 __all__ = ["SymmetricFunctions", "symmetric_functions", "Certificate", "certify", "closed_form_characteristic_value"]
@@ -247,6 +247,8 @@ def certify(
     largest Arb precision (bits) tried when clustering or refuting.
     """
     n = check_valence(n)
+    digits = check_digits(digits)
+    max_prec = check_int(max_prec, "max_prec", minimum=128, maximum=1 << 20)
     subs = parameter_values(scheme, parameters)
     cf = closed_forms or derived_closed_forms(scheme)
     chi = characteristic_polynomial(scheme, n, subs)

@@ -33,9 +33,10 @@ import mpmath
 
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
 from symdecomp.analysis.spectrum import format_value
-from symdecomp.errors import check_valence
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import MAX_DPS, check_memory, check_precision, check_valence
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
 __all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
@@ -93,6 +94,12 @@ class NumericCheck(CrossCheckResult):
         }
 
 
+def _check_solve_memory(size: int, dps: int) -> None:
+    """Refuse an eigenvalue solve whose estimated memory is too large (mpmath.eig keeps a few
+    dense complex copies of the matrix, each entry an mpc of ``dps`` digits plus object overhead)."""
+    check_memory(6 * size * size * (2 * (dps * 3.33 / 8 + 100)), f"the {size} x {size} eigenvalue solve at {dps} digits")
+
+
 def full_matrix_eigenvalues(scheme: Scheme, n: int, dps: int, parameters: Mapping | None = None, *, eigensolver=None) -> list:
     """The ``2n+1`` eigenvalues of the full matrix by ``mpmath.eig`` at ``dps`` digits.
 
@@ -101,6 +108,7 @@ def full_matrix_eigenvalues(scheme: Scheme, n: int, dps: int, parameters: Mappin
     """
     n = check_valence(n)
     size = 2 * n + 1
+    _check_solve_memory(size, dps)
     entries = sparse_subdivision_matrix(scheme, n, parameters)
     with mpmath.workdps(dps):
         A = mpmath.matrix(size, size)
@@ -178,13 +186,15 @@ def numeric_check(
     ``mpmath.eig`` (see :func:`full_matrix_eigenvalues`).
     """
     n = check_valence(n)
-    if dps < 5:
-        raise ValueError(f"dps must be at least 5, got {dps}")
+    dps = check_precision(dps)
+    if max_dps is not None:
+        max_dps = check_precision(max_dps, "max_dps", maximum=4 * MAX_DPS + 40)
+    _check_solve_memory(2 * n + 1, max_dps or 4 * dps + 40)
     subs = parameter_values(scheme, parameters)
     cf = closed_forms or derived_closed_forms(scheme)
     max_dps = max_dps or 4 * dps + 40
     if max_dps < dps + 10:
-        raise ValueError(f"max_dps = {max_dps} leaves no room above dps = {dps} (need at least dps + 10)")
+        raise InvalidInputError(f"max_dps = {max_dps} leaves no room above dps = {dps} (need at least dps + 10)")
     labels = cf.eigenvalue_labels(n)
     # the closed forms are evaluated well beyond any working precision, so that their own
     # rounding never matters; values that agree to dps + 2 digits are one value for a

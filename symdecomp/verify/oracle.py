@@ -51,10 +51,11 @@ from symdecomp.analysis.elliptic import recursion_eigenvector
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
-from symdecomp.errors import SymdecompError, check_valence
+from symdecomp.errors import InternalError
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_int, check_levels, check_valence
 
 __all__ = [
     "Prediction",
@@ -161,7 +162,7 @@ def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Exp
     u = recursion_eigenvector(scheme, mu, n)
     scale = sp.simplify(u[1] - u[0])
     if scale == 0:
-        raise SymdecompError(f"the Eq. 43 eigenvector for {mu} at n = {n} has u_a = u_O; Eq. 44's ratio is undefined")
+        raise InternalError(f"the Eq. 43 eigenvector for {mu} at n = {n} has u_a = u_O; Eq. 44's ratio is undefined")
     return mu, tuple(sp.radsimp(sp.simplify(x / scale)) for x in u)
 
 
@@ -282,6 +283,10 @@ def _rate_from(errors: list[float], floor: float) -> float | None:
     return errors[k] / errors[k - 1]
 
 
+#: Most refinement levels compared (double precision: beyond this the ring is below rounding).
+MAX_LEVELS = 40
+
+
 def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceComparison:
     """Run the comparisons of this module at valence ``n`` (needs the OpenSubdiv bridge).
 
@@ -292,8 +297,8 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
     from symdecomp.verify.opensubdiv import osd_central_rings
 
     n = check_valence(n)
-    if isinstance(levels, bool) or not isinstance(levels, int) or levels < 2:
-        raise SymdecompError(f"levels must be an integer >= 2, got {levels!r}")
+    levels = check_levels(levels, minimum=2, maximum=MAX_LEVELS, reason="double precision: beyond this the ring is below rounding")
+    seed = check_int(seed, "seed", minimum=0, maximum=2**32 - 1)
     pred = toolkit_predictions(n)
     ring0 = random_ring(n, seed)
     rows: list[Prediction] = []

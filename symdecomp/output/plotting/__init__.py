@@ -10,12 +10,13 @@ Each function returns a :class:`matplotlib.figure.Figure` built from the package
 * :mod:`.elliptic`: Sections 5.2-5.3, the ellipses ``E_a``, ``E_b`` (Fig. 7), a hyperbolic
   configuration (Fig. 8), the elliptic defects and tuned weights;
 * :mod:`.cbmatrix`: Section 6, the eigenvalues constant blocks and vertex weights move
-  (Prop. 6.3).
+  (Prop. 6.3);
+* :mod:`.characteristic`: Reif's test, the characteristic map's ring per valence.
 
 Importing this package does not import matplotlib; calling a plotting function does, and
 says how to install it if it is missing.
 """
 
-from symdecomp.output.plotting import cbmatrix, elliptic, polygons, tangent
+from symdecomp.output.plotting import cbmatrix, characteristic, elliptic, polygons, tangent
 
-__all__ = ["polygons", "tangent", "elliptic", "cbmatrix"]
+__all__ = ["polygons", "tangent", "elliptic", "cbmatrix", "characteristic"]

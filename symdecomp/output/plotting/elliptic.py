@@ -11,6 +11,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 
 from symdecomp.analysis.evolution import EllipticProfile, ring_polygon, split_ring
+from symdecomp.errors import InvalidInputError
 from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.output.plotting.polygons import _few_ticks, draw_one_ring_3d, draw_polygon_3d, set_equal_3d
 
@@ -49,7 +50,7 @@ def ellipses_figure(profile: EllipticProfile, steps: Iterable[int] = range(1, 6)
     """
     steps = [k for k in steps if 0 <= k < len(profile.rings)]
     if not steps:
-        raise ValueError(f"no step to show: the profile has steps 0..{len(profile.rings) - 1}")
+        raise InvalidInputError(f"no step to show: the profile has steps 0..{len(profile.rings) - 1}")
     fig = new_figure(12, 5.2)
     ax = fig.add_subplot(1, 2, 1, projection="3d")
     for index, k in enumerate(steps):
@@ -182,7 +183,7 @@ def hyperbolic_rates_figure(scheme, valences: Iterable[int]):
     import sympy as sp
 
     from symdecomp.analysis.tangent import tangent_eigenvalues
-    from symdecomp.errors import check_valence
+    from symdecomp.validate import check_valence
 
     ev = tangent_eigenvalues(scheme)
     ns, lam1_sq, m2 = [], [], []

@@ -1,4 +1,4 @@
-"""Figures for exact evaluation near an extraordinary vertex (Stam's method, notebook 5).
+"""Figures for exact evaluation near an extraordinary vertex (Stam's method, notebook 6).
 
 The surfaces are evaluated by :class:`~symdecomp.analysis.evaluation.PatchEvaluator` from the
 certified float64 data; the control net is a valence-``n`` ring mesh laid out regularly in the

@@ -11,8 +11,8 @@ from collections.abc import Iterable
 import numpy as np
 
 from symdecomp.algebra.circulant import fourier_matrix
-from symdecomp.errors import check_valence
 from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.validate import check_valence
 
 __all__ = [
     "regular_polygons_figure",

@@ -18,11 +18,12 @@ from symdecomp.algebra.circulant import fourier_matrix
 from symdecomp.analysis.evolution import one_ring, subdivide_ring
 from symdecomp.analysis.frequency import per_frequency_matrix_at
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.errors import check_valence
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_valence
 
 __all__ = [
     "tangent_eigenvalues_figure",
@@ -39,7 +40,7 @@ def _closed_form_curves(scheme: Scheme, samples: int = 401):
     """The two closed-form eigenvalues of Eq. 34 sampled over ``x = j/n`` in ``[0, 1]``."""
     ev = tangent_eigenvalues(scheme)
     if scheme.parameters:
-        raise ValueError(f"scheme {scheme.name!r} has free parameters {list(scheme.parameters)}; substitute them first")
+        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {list(scheme.parameters)}; substitute them first")
     x = np.linspace(0.0, 1.0, samples)
     curves = []
     for expr in (ev.dominant, ev.subdominant):

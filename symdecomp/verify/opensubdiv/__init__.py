@@ -21,14 +21,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symdecomp.errors import SymdecompError
+from symdecomp.errors import InternalError, InvalidInputError, SymdecompError, UnavailableError
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.verify.opensubdiv import build as _build
 
 __all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings", "osd_limit_points"]
 
 
-class BridgeUnavailableError(SymdecompError):
+class BridgeUnavailableError(UnavailableError):
     """The OpenSubdiv bridge is not built and cannot be built here (no g++ or no OpenSubdiv)."""
 
 
@@ -37,27 +37,82 @@ _lib = None
 
 
 def load_bridge(build: bool = True):
-    """The loaded bridge library; builds it first if needed (and ``build``). Raises if impossible."""
-    global _lib
+    """The loaded bridge library, trusted only after a version check and a self-test.
+
+    Builds it first if it is missing or stale (and ``build``). A library that does not load,
+    reports another interface version or fails the self-test is rebuilt once; if it still
+    fails, :class:`BridgeUnavailableError` says why and names the command that fixes it.
+    """
+    global _lib, _why_not
     with _lock:
         if _lib is not None:
             return _lib
         try:
-            path = _build.build() if build else _build.LIBRARY
-            if not path.exists():
-                raise BridgeUnavailableError(f"the OpenSubdiv bridge is not built ({path})")
-            lib = ctypes.CDLL(str(path))
-        except (_build.BridgeBuildError, OSError) as exc:
-            raise BridgeUnavailableError(f"OpenSubdiv bridge unavailable: {exc}") from exc
-        fn = lib.symdecomp_osd_refine_ring
-        ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
-        fn.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, ip, ctypes.c_int, dp, dp, ctypes.c_char_p, ctypes.c_int]
-        fn.restype = ctypes.c_int
-        lim = lib.symdecomp_osd_limit_points
-        lim.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, dp, dp, ctypes.c_char_p, ctypes.c_int]
-        lim.restype = ctypes.c_int
+            try:
+                lib = _load_checked(build, force=False)
+            except BridgeUnavailableError:
+                if not build:
+                    raise
+                lib = _load_checked(build, force=True)  # a truncated or stale library: rebuild once
+        except BridgeUnavailableError as exc:
+            _why_not = str(exc)
+            raise
         _lib = lib
         return lib
+
+
+def _load_checked(build: bool, *, force: bool):
+    fix = f"run: {_build.REBUILD_COMMAND}"
+    try:
+        path = _build.build(force=force) if build else _build.LIBRARY
+    except _build.BridgeBuildError as exc:
+        raise BridgeUnavailableError(f"OpenSubdiv bridge unavailable: {exc}") from None
+    except OSError as exc:
+        raise BridgeUnavailableError(f"OpenSubdiv bridge unavailable: cannot build it ({exc}); {fix}") from None
+    if not path.exists():
+        raise BridgeUnavailableError(f"the OpenSubdiv bridge is not built ({path}); {fix}")
+    if not build and not _build.is_current():
+        raise BridgeUnavailableError(f"the OpenSubdiv bridge library {path} is stale or damaged; {fix}")
+    try:
+        lib = ctypes.CDLL(str(path))
+        version = lib.symdecomp_osd_bridge_version
+        fn = lib.symdecomp_osd_refine_ring
+        lim = lib.symdecomp_osd_limit_points
+    except (OSError, AttributeError) as exc:
+        raise BridgeUnavailableError(f"the OpenSubdiv bridge library {path} does not load ({exc}); {fix}") from None
+    version.restype = ctypes.c_int
+    if version() != _build.BRIDGE_VERSION:
+        raise BridgeUnavailableError(
+            f"the OpenSubdiv bridge library {path} has interface version {version()}, not {_build.BRIDGE_VERSION}; {fix}"
+        )
+    ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
+    fn.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, ip, ctypes.c_int, dp, dp, ctypes.c_char_p, ctypes.c_int]
+    fn.restype = ctypes.c_int
+    lim.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, dp, dp, ctypes.c_char_p, ctypes.c_int]
+    lim.restype = ctypes.c_int
+    problem = _self_test(lib)
+    if problem:
+        raise BridgeUnavailableError(f"the OpenSubdiv bridge library {path} fails its self-test ({problem}); {fix}")
+    return lib
+
+
+def _self_test(lib) -> str | None:
+    """Refine a small valence-5 mesh two levels in OpenSubdiv and compare with the exact rules."""
+    from fractions import Fraction
+
+    from symdecomp.schemes.mesh import central_rings, ring_mesh
+    from symdecomp.schemes.scheme import catmull_clark
+
+    mesh = ring_mesh(5, 3, lambda s, u, v: (Fraction(s + 2 * u), Fraction(u * v - s), Fraction(v * v + 1, 3)))
+    try:
+        got = _refine(lib, mesh, 0, 2, None)
+    except SymdecompError as exc:
+        return str(exc)
+    want = np.array([[[float(x) for x in point] for point in ring] for ring in central_rings(mesh, catmull_clark(), 0, 2)])
+    if got.rings.shape != want.shape or not np.all(np.isfinite(got.rings)):
+        return "it returned no finite values"
+    error = float(np.max(np.abs(got.rings - want)))
+    return None if error < 1e-12 else f"its refinement differs from Catmull-Clark's rules by {error:.2e}"
 
 
 def bridge_available(build: bool = True) -> bool:
@@ -86,15 +141,19 @@ def osd_central_rings(mesh: QuadMesh, center: int, levels: int, *, start: int | 
     :meth:`~symdecomp.schemes.mesh.QuadMesh.one_ring`). Values are converted to double.
     """
     lib = load_bridge()
+    return _refine(lib, mesh, center, levels, start)
+
+
+def _refine(lib, mesh: QuadMesh, center: int, levels: int, start: int | None) -> OsdRings:
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
-        raise SymdecompError(f"levels must be a non-negative integer, got {levels!r}")
+        raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
     o, a, _ = mesh.one_ring(center, start)
     n = len(a)
     ids = mesh.vertices()
     index = {v: i for i, v in enumerate(ids)}
     pos = np.array([[float(x) for x in mesh.values[v]] for v in ids], dtype=np.float64)
     if pos.shape[1] != 3:
-        raise SymdecompError(f"OpenSubdiv bridge needs 3-vector values, got length {pos.shape[1]}")
+        raise InvalidInputError(f"OpenSubdiv bridge needs 3-vector values, got length {pos.shape[1]}")
     faces = np.array([[index[v] for v in f] for f in mesh.faces], dtype=np.intc)
     # face i of the ring: the one where O is followed by a_i
     ring_faces = []
@@ -117,7 +176,7 @@ def osd_central_rings(mesh: QuadMesh, center: int, levels: int, *, start: int | 
         limit.ctypes.data_as(dp), err, len(err),
     )
     if rc != 0:
-        raise SymdecompError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
+        raise InternalError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
     return OsdRings(out, limit)
 
 
@@ -129,12 +188,12 @@ def osd_limit_points(mesh: QuadMesh, levels: int) -> tuple[np.ndarray, np.ndarra
     """
     lib = load_bridge()
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
-        raise SymdecompError(f"levels must be a non-negative integer, got {levels!r}")
+        raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
     ids = mesh.vertices()
     index = {v: i for i, v in enumerate(ids)}
     pos = np.ascontiguousarray([[float(x) for x in mesh.values[v]] for v in ids], dtype=np.float64)
     if pos.shape[1] != 3:
-        raise SymdecompError(f"OpenSubdiv bridge needs 3-vector values, got length {pos.shape[1]}")
+        raise InvalidInputError(f"OpenSubdiv bridge needs 3-vector values, got length {pos.shape[1]}")
     faces = np.ascontiguousarray([[index[v] for v in f] for f in mesh.faces], dtype=np.intc)
     capacity = len(ids) * 4**levels + len(mesh.faces) * 4**levels + 16
     points = np.zeros((capacity, 3))
@@ -147,5 +206,5 @@ def osd_limit_points(mesh: QuadMesh, levels: int) -> tuple[np.ndarray, np.ndarra
         ctypes.byref(count), points.ctypes.data_as(dp), limits.ctypes.data_as(dp), err, len(err),
     )
     if rc != 0:
-        raise SymdecompError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
+        raise InternalError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
     return points[: count.value], limits[: count.value]

@@ -2,14 +2,18 @@
 
 Uses only the standard library, so CI can run it before the package is installed::
 
-    python symdecomp/verify/opensubdiv/build.py        # prints the path of the built library
+    python symdecomp/verify/opensubdiv/build.py [--force]   # prints the path of the built library
 
-The library goes to ``_build/`` next to this file (ignored by git). It needs g++ and the
-OpenSubdiv headers and CPU library (Debian: ``libosd-dev``, ``libosdcpu3.5.0``).
+The library goes to ``_build/`` next to this file (ignored by git), with a stamp naming the
+interface version and the hashes of the source and of the library itself; a library without a
+matching stamp (stale, truncated, altered) is rebuilt before it is ever loaded. The loader
+(:func:`symdecomp.verify.opensubdiv.load_bridge`) also runs a self-test before trusting it.
+It needs g++ and the OpenSubdiv headers and CPU library (Debian: ``libosd-dev``, ``libosdcpu3.5.0``).
 """
 
 from __future__ import annotations
 
+import hashlib
 import os
 import shutil
 import subprocess
@@ -47,25 +51,65 @@ def headers_present(cxx: str | None = None) -> bool:
     return probe.returncode == 0
 
 
+#: The version of the bridge's C interface this package expects (``symdecomp_osd_bridge_version()``).
+BRIDGE_VERSION = 1
+#: Records what the library in ``_build/`` was built from (interface version and source hash).
+STAMP = BUILD_DIR / "libsymdecomp_osd.stamp"
+#: The command that rebuilds the bridge from scratch.
+REBUILD_COMMAND = "python -m symdecomp.verify.opensubdiv.build --force"
+
+
+def _fingerprint(library: Path) -> str:
+    source = hashlib.sha256(SOURCE.read_bytes()).hexdigest()
+    built = hashlib.sha256(library.read_bytes()).hexdigest()
+    return f"version {BRIDGE_VERSION}\nsource sha256 {source}\nlibrary sha256 {built}\n"
+
+
+def is_current() -> bool:
+    """Whether the library exists, whole, built from this source for this interface version.
+
+    The stamp holds the library's own hash: a truncated or altered library is never loaded
+    (loading a truncated shared library can crash the process, not just fail).
+    """
+    try:
+        return LIBRARY.is_file() and STAMP.read_text() == _fingerprint(LIBRARY)
+    except OSError:
+        return False
+
+
 def build(force: bool = False) -> Path:
-    """Compile the bridge (unless an up-to-date build exists) and return the library's path."""
-    if not force and LIBRARY.exists() and LIBRARY.stat().st_mtime >= SOURCE.stat().st_mtime:
+    """Compile the bridge (unless a current build exists) and return the library's path.
+
+    The library and its stamp are each written to a temporary name and renamed, so a
+    concurrent loader never sees half a file, and an interrupted build leaves no stamp that
+    vouches for a library it did not finish.
+    """
+    if not force and is_current():
         return LIBRARY
     cxx = compiler()
     if cxx is None:
-        raise BridgeBuildError("no C++ compiler: install g++ (or set CXX)")
+        raise BridgeBuildError("no C++ compiler: install g++ (Debian: apt-get install g++), or set CXX")
     if not headers_present(cxx):
-        raise BridgeBuildError(f"the OpenSubdiv headers (<{HEADER}>) are not installed: install libosd-dev")
+        raise BridgeBuildError(f"the OpenSubdiv headers (<{HEADER}>) are not installed: "
+                               "apt-get install libosd-dev libosdcpu3.5.0")
     BUILD_DIR.mkdir(exist_ok=True)
-    # Build to a temporary name and rename, so a concurrent loader never sees half a file.
     fd, tmp = tempfile.mkstemp(suffix=".so", dir=BUILD_DIR)
     os.close(fd)
     cmd = [cxx, "-O2", "-std=c++14", "-shared", "-fPIC", str(SOURCE), "-o", tmp, "-losdCPU"]
-    result = subprocess.run(cmd, capture_output=True, text=True)
-    if result.returncode != 0:
-        os.unlink(tmp)
-        raise BridgeBuildError(f"compiling the OpenSubdiv bridge failed:\n{' '.join(cmd)}\n{result.stderr}")
-    os.replace(tmp, LIBRARY)
+    try:
+        result = subprocess.run(cmd, capture_output=True, text=True)
+        if result.returncode != 0:
+            raise BridgeBuildError(f"compiling the OpenSubdiv bridge failed: {' '.join(cmd)}: "
+                                   + " ".join(result.stderr.split())[:500])
+        STAMP.unlink(missing_ok=True)
+        os.replace(tmp, LIBRARY)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    fd, tmp = tempfile.mkstemp(suffix=".stamp", dir=BUILD_DIR)
+    with os.fdopen(fd, "w") as fh:
+        fh.write(_fingerprint(LIBRARY))
+    os.replace(tmp, STAMP)
     return LIBRARY
 
 

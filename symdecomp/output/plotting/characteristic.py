@@ -1,0 +1,88 @@
+"""The characteristic map of Reif's test: the ring's image, sector by sector (issue: certified C1).
+
+The numbers come from :mod:`symdecomp.verify.c1` (the Bezier nets of sector 0's three bicubic
+sub-patches, as Arb balls; the figure uses their midpoints) and the rotational symmetry: the
+ring of sector ``s`` is that of sector 0 times ``omega^(j s)``.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> curves = ring_curves(catmull_clark(), 4, samples=3)
+>>> [round(abs(complex(curves["inner"][0][0])), 6)]   # a_0 at level 1: lambda = 1/2
+[0.5]
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_valence
+from symdecomp.verify.c1 import c1_test, characteristic_nets
+
+__all__ = ["ring_curves", "characteristic_map_figure"]
+
+
+def _bernstein(degree: int, t: np.ndarray) -> np.ndarray:
+    from math import comb
+
+    return np.array([comb(degree, i) * t**i * (1 - t) ** (degree - i) for i in range(degree + 1)])
+
+
+def _patch(net_x, net_y, s: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Complex points of a bicubic Bezier patch on the grid ``s x t`` (rows: s)."""
+    z = np.array([[complex(float(x.mid()), float(y.mid())) for x, y in zip(rx, ry)] for rx, ry in zip(net_x, net_y)])
+    return _bernstein(3, s).T @ z @ _bernstein(3, t)
+
+
+def ring_curves(scheme: Scheme, n: int, *, samples: int = 9) -> dict:
+    """Iso-parameter lines of the ring (all sectors), its inner boundary, and the sector boundaries, as complex arrays."""
+    n = check_valence(n)
+    nets, vec = characteristic_nets(scheme, n)
+    rotation = np.exp(2j * np.pi * vec.j / n)
+    t = np.linspace(0.0, 1.0, 4 * samples + 1)
+    grid = np.linspace(0.0, 1.0, samples)
+    lines, inner, rays = [], [], []
+    for sector in range(n):
+        r = rotation**sector
+        for p, (x, y) in enumerate(nets):
+            for g in grid:
+                lines.append(r * _patch(x, y, np.array([g]), t)[0])
+                lines.append(r * _patch(x, y, t, np.array([g]))[:, 0])
+            if p == 0:  # face (1, 0): its edge u = 1 is the inner boundary, v = 0 the sector boundary
+                inner.append(r * _patch(x, y, np.array([0.0]), t)[0])
+                rays.append(r * _patch(x, y, t, np.array([0.0]))[:, 0])
+            if p == 2:  # face (0, 1): its edge v = 1 is the inner boundary
+                inner.append(r * _patch(x, y, t, np.array([0.0]))[:, 0])
+    return {"lines": lines, "inner": inner, "rays": rays}
+
+
+def characteristic_map_figure(scheme: Scheme, valences=(3, 5, 16), *, samples: int = 7):
+    """One panel per valence: the ring's image, its inner boundary (thick) and the sector boundaries (dashed).
+
+    Each panel's title carries the certified verdict of :func:`~symdecomp.verify.c1.c1_test`.
+    """
+    valences = [check_valence(n) for n in valences]
+    fig = new_figure(3.6 * len(valences), 3.8)
+    axes = fig.subplots(1, len(valences), squeeze=False)[0]
+    for ax, n in zip(axes, valences):
+        result = c1_test(scheme, n)
+        if result.spectral.status != "ok":
+            ax.set_title(f"n = {n}: {result.verdict}")
+            ax.text(0.5, 0.5, "no characteristic map:\n" + result.reason[:60], ha="center", va="center", transform=ax.transAxes, fontsize=7)
+            ax.set_xlabel("x")
+            ax.set_ylabel("y")
+            continue
+        curves = ring_curves(scheme, n, samples=samples)
+        for z in curves["lines"]:
+            ax.plot(z.real, z.imag, color="0.6", lw=0.5)
+        for z in curves["inner"]:
+            ax.plot(z.real, z.imag, color="C0", lw=1.8)
+        for z in curves["rays"]:
+            ax.plot(z.real, z.imag, color="C3", lw=1.2, ls="--")
+        ax.plot([0], [0], "k+")
+        ax.set_aspect("equal")
+        ax.set_title(f"n = {n}: {result.verdict} (winding {result.winding_number})", fontsize=9)
+        ax.set_xlabel("x (Re of the eigenvector)")
+        ax.set_ylabel("y (Im)")
+    fig.suptitle(f"Characteristic map of {scheme.name}: the ring at level 1, sector boundaries dashed")
+    return fig

@@ -1,0 +1,216 @@
+"""One validation layer for everything that enters the package from outside.
+
+Valences, frequencies, digits, precisions, levels, parameter values and exact numbers are
+checked here, once, at the public boundary, and refused with the package's own errors
+(:mod:`symdecomp.errors`) naming the argument and the value. Integers must be integers:
+``5.9``, ``"5"``, ``True`` and ``Symbol('n')`` are refused, never truncated or guessed
+(numpy and sympy integers are accepted). Loaders of user data (the command line, scheme
+files) call the same functions.
+
+>>> check_valence(5)
+5
+>>> check_valence(5.9)
+Traceback (most recent call last):
+...
+symdecomp.errors.InvalidValenceError: valence n must be an integer >= 3, got 5.9 (float)
+>>> check_frequency(3, 4, period=4)
+3
+>>> check_int(True, "levels")
+Traceback (most recent call last):
+...
+symdecomp.errors.InvalidInputError: levels must be an integer, got True (bool)
+"""
+
+from __future__ import annotations
+
+import numbers
+import os
+from collections.abc import Iterable, Mapping
+
+import sympy as sp
+
+from symdecomp.errors import (
+    FrequencyOutOfRangeError,
+    InvalidExpressionError,
+    InvalidInputError,
+    InvalidSchemeError,
+    InvalidValenceError,
+    ResourceLimitError,
+)
+from symdecomp.expressions import exact_value
+
+__all__ = [
+    "check_int",
+    "check_valence",
+    "check_frequency",
+    "check_digits",
+    "check_precision",
+    "check_levels",
+    "parameter_values",
+    "check_memory",
+    "MAX_DIGITS",
+    "MAX_DPS",
+    "MEMORY_LIMIT",
+]
+
+#: Most significant digits printed (a value is evaluated at a little more than this).
+MAX_DIGITS = 1000
+#: Most decimal digits of working precision (an eigenvalue solve at this precision and n = 64
+#: takes minutes; beyond it, hours).
+MAX_DPS = 1000
+#: Largest memory (bytes) a single dense step may be estimated to need before it is refused:
+#: half the machine's physical memory, and never more than 16 GiB.
+MEMORY_LIMIT = None  # computed lazily by _memory_limit()
+
+
+def _kind(value) -> str:
+    return type(value).__name__
+
+
+def _is_integer(value) -> bool:
+    if isinstance(value, bool):
+        return False
+    if isinstance(value, sp.Basic):
+        return bool(value.is_Integer)
+    return isinstance(value, numbers.Integral)
+
+
+def check_int(value, argument: str, *, minimum: int | None = None, maximum: int | None = None,
+              error: type = InvalidInputError, reason: str = "") -> int:
+    """``value`` as an ``int`` if it is an integer in ``[minimum, maximum]``; else ``error``.
+
+    ``reason`` (shown when ``value`` is above ``maximum``) says why the bound is there.
+    """
+    bounds = ""
+    if minimum is not None and maximum is not None:
+        bounds = f" with {minimum} <= {argument.split()[-1]} <= {maximum}"
+    elif minimum is not None:
+        bounds = f" >= {minimum}"
+    elif maximum is not None:
+        bounds = f" <= {maximum}"
+    if not _is_integer(value):
+        shown = repr(value) if not isinstance(value, sp.Basic) else str(value)
+        raise error(f"{argument} must be an integer{bounds}, got {shown} ({_kind(value)})")
+    value = int(value)
+    if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
+        why = f" ({reason})" if reason and maximum is not None and value > maximum else ""
+        raise error(f"{argument} must be an integer{bounds}, got {value}{why}")
+    return value
+
+
+def check_valence(n, *, minimum: int = 3, maximum: int | None = None, argument: str = "valence n") -> int:
+    """Return ``n`` as an ``int`` if it is an integer valence ``>= minimum`` (and ``<= maximum``).
+
+    >>> check_valence(2)
+    Traceback (most recent call last):
+    ...
+    symdecomp.errors.InvalidValenceError: valence n must be an integer >= 3, got 2
+    """
+    if isinstance(n, sp.Symbol):
+        raise InvalidValenceError(
+            f"{argument} must be a concrete integer >= {minimum}, got the symbol {n}; the closed forms in "
+            "symbolic n are the functions without a valence argument"
+        )
+    return check_int(n, argument, minimum=minimum, maximum=maximum, error=InvalidValenceError)
+
+
+def check_frequency(j, n: int, *, period: int | None = None, start: int = 0, argument: str = "frequency j") -> int:
+    """Return ``j`` as an ``int`` if ``start <= j < period`` (``period`` defaults to ``2n``).
+
+    The paper indexes the components of the 1-ring 2n-gon by ``j = 0..2n-1`` (Eq. 11), so
+    that is the default range.
+
+    >>> check_frequency(8, 4)
+    Traceback (most recent call last):
+    ...
+    symdecomp.errors.FrequencyOutOfRangeError: frequency j must be an integer with 0 <= j < 8 (valence n = 4), got 8
+    """
+    n = check_valence(n)
+    period = 2 * n if period is None else period
+    if not _is_integer(j):
+        shown = repr(j) if not isinstance(j, sp.Basic) else str(j)
+        raise FrequencyOutOfRangeError(
+            f"{argument} must be an integer with {start} <= j < {period}, got {shown} ({_kind(j)})"
+        )
+    j = int(j)
+    if not start <= j < period:
+        raise FrequencyOutOfRangeError(
+            f"{argument} must be an integer with {start} <= j < {period} (valence n = {n}), got {j}"
+        )
+    return j
+
+
+def check_digits(digits, argument: str = "digits", *, maximum: int = MAX_DIGITS) -> int:
+    """Significant digits of printed values: an integer in ``[1, MAX_DIGITS]``."""
+    return check_int(digits, argument, minimum=1, maximum=maximum,
+                     reason="more digits than anyone reads; each one costs evaluation time")
+
+
+def check_precision(dps, argument: str = "dps", *, minimum: int = 5, maximum: int = MAX_DPS) -> int:
+    """Decimal digits of working precision: an integer in ``[minimum, MAX_DPS]``."""
+    return check_int(dps, argument, minimum=minimum, maximum=maximum,
+                     reason="an eigenvalue solve at this precision takes hours")
+
+
+def check_levels(levels, argument: str = "levels", *, minimum: int = 0, maximum: int | None = None,
+                 reason: str = "") -> int:
+    """A number of refinement levels or steps: an integer in ``[minimum, maximum]``."""
+    return check_int(levels, argument, minimum=minimum, maximum=maximum, reason=reason)
+
+
+def parameter_values(declared: Iterable[sp.Symbol], given: Mapping | None, *, owner: str = "scheme",
+                     symbols: Mapping[str, sp.Symbol] | None = None, require_all: bool = True) -> dict:
+    """Values of free parameters as a sympy substitution ``{symbol: exact value}``.
+
+    ``declared`` are the parameters the owner (a scheme) has. Keys of ``given`` may be the
+    symbols or their names; values are exact numbers, sympy expressions or text (parsed by
+    :func:`symdecomp.expressions.parse_expression` in ``symbols``, e.g. ``{"n": n}``), never
+    floats. With ``require_all`` every declared parameter needs a value.
+    """
+    declared = tuple(declared)
+    if given is not None and not isinstance(given, Mapping):
+        raise InvalidSchemeError(f"parameters must be a mapping {{name: value}}, got {_kind(given)}")
+    subs = {}
+    for key, value in dict(given or {}).items():
+        name = key if isinstance(key, str) else str(key) if isinstance(key, sp.Symbol) else None
+        if name is None:
+            raise InvalidSchemeError(f"parameter names must be strings or symbols, got {key!r} ({_kind(key)})")
+        match = [p for p in declared if str(p) == name]
+        if not match:
+            raise InvalidSchemeError(
+                f"{owner} has no parameter {name}; its parameters are {[str(p) for p in declared] or 'none'}"
+            )
+        try:
+            subs[match[0]] = exact_value(value, symbols, argument=f"parameter {name}")
+        except InvalidExpressionError as exc:
+            raise InvalidSchemeError(str(exc)) from None
+    missing = [str(p) for p in declared if p not in subs]
+    if require_all and missing:
+        raise InvalidSchemeError(f"{owner} has free parameters {missing}; give their values")
+    return subs
+
+
+def _memory_limit() -> int:
+    try:
+        physical = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):  # pragma: no cover - not POSIX
+        physical = 8 << 30
+    return min(physical // 2, 16 << 30)
+
+
+def check_memory(estimate: int, what: str) -> None:
+    """Refuse a step whose estimated memory ``estimate`` (bytes) is beyond :func:`_memory_limit`."""
+    limit = _memory_limit() if MEMORY_LIMIT is None else MEMORY_LIMIT
+    if estimate > limit:
+        raise ResourceLimitError(
+            f"{what} would need about {_human(estimate)} of memory, more than the limit of {_human(limit)}; "
+            "choose a smaller valence"
+        )
+
+
+def _human(size: float) -> str:
+    for unit in ("B", "KiB", "MiB", "GiB", "TiB", "PiB"):
+        if size < 1024:
+            return f"{size:.0f} {unit}"
+        size /= 1024
+    return f"{size:.0f} EiB"

@@ -1,0 +1,161 @@
+"""Bernstein-Bezier arithmetic in Arb: Jacobians of bicubic patches, their sign, and winding angles.
+
+Everything is rigorous interval arithmetic (python-flint ``arb``): a ball holds the true
+value, so a coefficient whose ball lies right of 0 *is* positive.
+
+* A uniform bicubic B-spline patch ``P`` (``4 x 4`` control points) is a bicubic Bezier patch
+  with control points ``M P M^T``, ``M = 1/6 [[1,4,1,0],[0,4,2,0],[0,2,4,0],[0,1,4,1]]``.
+* For a planar bicubic map ``(x, y)`` the Jacobian determinant ``x_u y_v - x_v y_u`` is a
+  polynomial of bidegree ``(5, 5)``: ``x_u`` has bidegree ``(2, 3)`` (Bezier points
+  ``3 (b_{i+1,k} - b_{i,k})``), ``y_v`` bidegree ``(3, 2)``, and the product of Bernstein
+  polynomials has the coefficients
+  ``h_{ab} = sum f_{ik} g_{i'k'} C(2,i) C(3,i') / C(5,a) * C(3,k) C(2,k') / C(5,b)`` over
+  ``i + i' = a``, ``k + k' = b``.
+* A Bernstein polynomial lies in the convex hull of its coefficients, so if all coefficients
+  are positive the polynomial is, and its smallest coefficient is a lower bound. Where a ball
+  straddles 0 the patch is split at ``1/2`` in both directions (de Casteljau), up to a
+  depth; a *corner* coefficient is the polynomial's value there, so corners of opposite sign
+  prove a sign change.
+* The argument swept by a planar Bezier curve is the sum of ``arg(z_end / z_start)`` over pieces
+  whose control points lie in an open half-plane through the origin (then the piece turns by
+  less than ``pi``, and the principal argument is the true increment).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from math import comb
+
+import flint
+
+__all__ = [
+    "bspline_to_bezier",
+    "jacobian_net",
+    "split_net",
+    "SignCertificate",
+    "certify_sign",
+    "curve_angle",
+]
+
+_M = ((1, 4, 1, 0), (0, 4, 2, 0), (0, 2, 4, 0), (0, 1, 4, 1))
+
+
+def bspline_to_bezier(net):
+    """``M P M^T / 36`` for a ``4 x 4`` net of balls (real or complex)."""
+    rows = [[sum((_M[i][a] * net[a][k] for a in range(4)), 0 * net[0][0]) for k in range(4)] for i in range(4)]
+    return [[sum((_M[k][b] * rows[i][b] for b in range(4)), 0 * net[0][0]) / 36 for k in range(4)] for i in range(4)]
+
+
+def jacobian_net(x, y):
+    """The ``6 x 6`` Bernstein coefficients of ``x_u y_v - x_v y_u`` for bicubic Bezier nets ``x``, ``y``."""
+    xu = [[3 * (x[i + 1][k] - x[i][k]) for k in range(4)] for i in range(3)]
+    yu = [[3 * (y[i + 1][k] - y[i][k]) for k in range(4)] for i in range(3)]
+    xv = [[3 * (x[i][k + 1] - x[i][k]) for k in range(3)] for i in range(4)]
+    yv = [[3 * (y[i][k + 1] - y[i][k]) for k in range(3)] for i in range(4)]
+    out = [[flint.arb(0) for _ in range(6)] for _ in range(6)]
+    for i in range(3):
+        for k in range(4):
+            for i2 in range(4):
+                for k2 in range(3):
+                    w = flint.fmpq(comb(2, i) * comb(3, i2) * comb(3, k) * comb(2, k2), comb(5, i + i2) * comb(5, k + k2))
+                    # f = x_u (2,3) times g = y_v (3,2), minus y_u (2,3) times x_v (3,2)
+                    out[i + i2][k + k2] += w * (xu[i][k] * yv[i2][k2] - yu[i][k] * xv[i2][k2])
+    return out
+
+
+def _split_1d(coeffs):
+    """de Casteljau at 1/2: the coefficients of the two halves."""
+    left, right = [coeffs[0]], [coeffs[-1]]
+    row = list(coeffs)
+    while len(row) > 1:
+        row = [(row[t] + row[t + 1]) / 2 for t in range(len(row) - 1)]
+        left.append(row[0])
+        right.append(row[-1])
+    return left, right[::-1]
+
+
+def split_net(net):
+    """The four quarter nets ``(u low/high) x (v low/high)`` of a tensor Bezier net."""
+    halves_v = [_split_1d(row) for row in net]  # split each row (in v)
+    out = []
+    for side_v in (0, 1):
+        part = [h[side_v] for h in halves_v]
+        cols = [_split_1d([part[i][k] for i in range(len(part))]) for k in range(len(part[0]))]
+        for side_u in (0, 1):
+            out.append((side_u, side_v, [[cols[k][side_u][i] for k in range(len(cols))] for i in range(len(part))]))
+    return out
+
+
+@dataclass(frozen=True)
+class SignCertificate:
+    """The sign of a family of Bernstein nets: ``status`` is ``'positive'``, ``'negative'``, ``'changes'`` or ``'undecided'``."""
+
+    status: str
+    #: A rigorous lower bound of ``sign * J`` over all patches (when the sign is certified).
+    lower_bound: float | None
+    #: The deepest subdivision used (0: the coefficients of the whole patches sufficed).
+    depth: int
+    #: Nets examined in all.
+    pieces: int
+    #: Where it failed: ``(patch index, (u0, u1), (v0, v1))`` of a piece (for 'changes'/'undecided').
+    where: tuple | None = None
+
+
+def certify_sign(nets, max_depth: int = 6) -> SignCertificate:
+    """Show all nets' polynomials have one strict sign, subdividing (de Casteljau) up to ``max_depth``."""
+    corners = {1: None, -1: None}
+    stack = [(p, net, (0.0, 1.0), (0.0, 1.0), 0) for p, net in enumerate(nets)]
+    leaves, pieces, depth, undecided = [], 0, 0, None
+    while stack:
+        p, net, ur, vr, d = stack.pop()
+        pieces += 1
+        depth = max(depth, d)
+        for i, k in ((0, 0), (0, -1), (-1, 0), (-1, -1)):
+            c = net[i][k]
+            for sign in (1, -1):
+                if sign * c > 0 and corners[sign] is None:
+                    corners[sign] = (p, ur, vr)
+        if corners[1] is not None and corners[-1] is not None:
+            return SignCertificate("changes", None, depth, pieces, corners[-1])
+        flat = [c for row in net for c in row]
+        if all(c > 0 for c in flat) or all(c < 0 for c in flat):
+            leaves.append(flat)
+            continue
+        if d >= max_depth:
+            undecided = undecided or (p, ur, vr)
+            continue
+        um, vm = (ur[0] + ur[1]) / 2, (vr[0] + vr[1]) / 2
+        for side_u, side_v, sub in split_net(net):
+            stack.append((p, sub, (ur[0], um) if side_u == 0 else (um, ur[1]), (vr[0], vm) if side_v == 0 else (vm, vr[1]), d + 1))
+    signs = {1 if leaf[0] > 0 else -1 for leaf in leaves}
+    if undecided is not None or len(signs) != 1:
+        return SignCertificate("undecided", None, depth, pieces, undecided)
+    sign = signs.pop()
+    bound = min(((sign * c).lower() for leaf in leaves for c in leaf), key=float)
+    value = float(bound)
+    if not flint.arb(value) <= bound:  # round down, so that the float is still a lower bound
+        value = math.nextafter(value, -math.inf)
+    return SignCertificate("positive" if sign > 0 else "negative", value, depth, pieces)
+
+
+def curve_angle(points, max_depth: int = 12) -> flint.arb | None:
+    """The argument swept by the planar Bezier curve with complex control ``points`` (``None``: not decided).
+
+    Fails (``None``) when a piece at ``max_depth`` still has control points on both sides of
+    every line through the origin that the test tries (the curve may pass through 0).
+    """
+    total = flint.arb(0)
+    stack = [(list(points), 0)]
+    while stack:
+        pts, d = stack.pop()
+        direction = pts[0] + pts[-1]
+        if all((q * direction.conjugate()).real > 0 for q in pts):
+            total += (pts[-1] * pts[0].conjugate()).arg()
+            continue
+        if d >= max_depth:
+            return None
+        left, right = _split_1d(pts)
+        stack.append((right, d + 1))
+        stack.append((left, d + 1))
+    return total

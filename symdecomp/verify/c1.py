@@ -1,0 +1,179 @@
+"""Certified C1 at an extraordinary vertex: Reif's sufficient test on the characteristic map.
+
+**The test** (Reif 1995, *A unified approach to subdivision algorithms near extraordinary
+vertices*, CAGD 12; Peters and Reif 2008, *Subdivision Surfaces*, Springer, Chapter 5). A
+subdivision scheme whose regular patches are C1 generates C1 surfaces at a vertex of valence
+``n`` for almost every initial mesh if
+
+1. the subdivision matrix has the spectral structure of :mod:`symdecomp.verify.c1_spectrum`
+   (1 simple; ``lambda`` real, double, non-defective, strictly dominant), and
+2. the characteristic map ``chi`` (the spline ring of the two real eigenvectors of ``lambda``:
+   real and imaginary parts of the complex eigenvector, see
+   :mod:`symdecomp.analysis.characteristic`) is *regular* (Jacobian of one strict sign on the
+   ring) and *injective*.
+
+**Regularity.** On each of the three bicubic sub-patches of sector 0 the Jacobian determinant is
+a polynomial of bidegree (5, 5); its Bernstein-Bezier coefficients are computed in Arb and must
+all be of one strict sign, with de Casteljau subdivision where a ball straddles 0
+(:func:`~symdecomp.verify.bezier.certify_sign`). One sector suffices: the eigenvector of
+frequency ``j`` has sector values ``omega^s c``, so the ring of sector ``s`` is the ring of sector 0
+rotated by ``2 pi j s / n`` in the same local parameters, and a rotation has determinant 1.
+The Jacobian is taken in the local parameters of the level-1 faces.
+
+**Injectivity.** Criterion (Peters and Reif 2008, Section 5.3; Zorin 2000, *A method for
+analysis of C1-continuity of subdivision surfaces*, SIAM J. Numer. Anal. 37): a regular
+characteristic map is injective if and only if the image of the ring's inner boundary winds
+around the origin exactly once (``+1`` for a positive Jacobian, ``-1`` for a negative one); a
+regular ring winding ``w`` times with ``|w| > 1`` covers points ``|w|`` times, so it is not
+injective and the scheme is not C1 in general. The winding number is ``n`` times the argument
+swept by sector 0's part of the inner boundary (from the level-1 point ``(1, 0)`` through
+``(1, 1)`` to ``(0, 1)``, two cubic Bezier curves), divided by ``2 pi``; the argument is summed
+over curve pieces whose control points lie in an open half-plane through 0
+(:func:`~symdecomp.verify.bezier.curve_angle`), so the sum is rigorous.
+
+**Scope.** Schemes of Catmull-Clark type (:func:`~symdecomp.analysis.characteristic.check_applicable`).
+For Loop's scheme the same verdict logic applies with three pieces replaced: the per-frequency
+2-ring blocks of the triangle mesh, the ring as quartic box-spline sub-patches (triangular
+Bernstein-Bezier nets of degree 4, so a Jacobian of degree 6 with triangular de Casteljau
+subdivision), and the inner boundary's quartic curves; :func:`~symdecomp.verify.bezier.curve_angle`
+and the spectral comparisons are shared. That is not done yet.
+
+The verdict is ``c1`` when everything is certified, ``not-c1`` when a condition is shown to fail
+(named, with its numbers), ``undecided`` otherwise (saying what would decide it).
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> r = c1_test(catmull_clark(), 5)
+>>> r.verdict, r.winding_number, r.jacobian_sign
+('c1', 1, 1)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import flint
+
+from symdecomp.analysis.characteristic import frequency_eigenvector, inner_boundary_nets, subpatch_nets
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_valence
+from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, curve_angle, jacobian_net
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down, spectral_conditions
+
+__all__ = ["C1Result", "c1_test", "characteristic_nets", "METHOD"]
+
+#: The method, as reported with each verdict.
+METHOD = (
+    "Reif's test: spectrum per frequency (Arb, exact at frequency 0); Jacobian of the three bicubic "
+    "sub-patches in Bernstein-Bezier form (bidegree 5x5, Arb, de Casteljau); winding number of the inner boundary"
+)
+
+
+@dataclass(frozen=True)
+class C1Result:
+    """Reif's test at one valence."""
+
+    n: int
+    scheme: str
+    #: ``'c1'``, ``'not-c1'`` or ``'undecided'``.
+    verdict: str
+    reason: str
+    spectral: SpectralResult
+    #: Frequency of the subdominant eigenvalue (1 for a standard scheme).
+    frequency: int | None = None
+    #: ``+1`` / ``-1``: the Jacobian's certified sign; ``None`` if not certified.
+    jacobian_sign: int | None = None
+    #: A rigorous lower bound of ``sign * J`` over the ring (level-1 local parameters).
+    jacobian_lower_bound: float | None = None
+    #: Deepest de Casteljau subdivision used, and the limit.
+    subdivision_depth: int | None = None
+    max_depth: int = 6
+    winding_number: int | None = None
+    #: Working precision (bits) of the balls.
+    precision: int = 64
+
+    def as_json(self) -> dict:
+        lam = self.spectral.subdominant
+        return {
+            "n": self.n,
+            "scheme": self.scheme,
+            "verdict": self.verdict,
+            "reason": self.reason,
+            "lambda": None if lam is None else float(lam.value.real.mid()),
+            "frequency": self.frequency,
+            "gap": self.spectral.gap,
+            "jacobian_sign": self.jacobian_sign,
+            "jacobian_lower_bound": self.jacobian_lower_bound,
+            "subdivision_depth": self.subdivision_depth,
+            "max_depth": self.max_depth,
+            "winding_number": self.winding_number,
+            "precision_bits": self.precision,
+            "method": METHOD,
+        }
+
+
+def characteristic_nets(scheme: Scheme, n: int, spectral: SpectralResult | None = None):
+    """The Bezier nets ``(x, y)`` of sector 0's three sub-patches, and the eigenvector they come from."""
+    spectral = spectral or spectral_conditions(scheme, n)
+    lam = spectral.subdominant
+    vec = frequency_eigenvector(scheme, n, lam.frequency, lam.value)
+    nets = []
+    for net in subpatch_nets(vec):
+        x = bspline_to_bezier([[z.real for z in row] for row in net])
+        y = bspline_to_bezier([[z.imag for z in row] for row in net])
+        nets.append((x, y))
+    return nets, vec
+
+
+def _winding(vec, n: int):
+    """The winding number (an ``int``) of the inner boundary, or ``None`` if not decided."""
+    first, last = (bspline_to_bezier(net) for net in inner_boundary_nets(vec))
+    a = curve_angle([first[0][k] for k in range(4)])  # face (1, 0), edge u = 1: (1,0) -> (1,1)
+    b = curve_angle([last[i][0] for i in range(3, -1, -1)])  # face (0, 1), edge v = 1: (1,1) -> (0,1)
+    if a is None or b is None:
+        return None
+    w = (a + b) * n / (2 * flint.arb.pi())
+    lo, hi = math.ceil(float(w.lower())), math.floor(float(w.upper()))
+    return lo if lo == hi else None
+
+
+def _test(scheme: Scheme, n: int, max_depth: int, prec: int) -> C1Result:
+    spectral = spectral_conditions(scheme, n)
+    base = dict(n=n, scheme=scheme.name, spectral=spectral, max_depth=max_depth, precision=prec)
+    if spectral.status != "ok":
+        return C1Result(verdict=spectral.status, reason=spectral.reason, **base)
+    j = spectral.subdominant.frequency
+    nets, vec = characteristic_nets(scheme, n, spectral)
+    sign = certify_sign([jacobian_net(x, y) for x, y in nets], max_depth)
+    winding = _winding(vec, n)
+    base.update(frequency=j, subdivision_depth=sign.depth, winding_number=winding)
+    lam = ball_text(spectral.subdominant.value)
+    if sign.status == "changes":
+        p, ur, vr = sign.where
+        return C1Result(verdict="not-c1", reason=f"the Jacobian of the characteristic map changes sign (sub-patch {p}, "
+                        f"u in [{ur[0]:g}, {ur[1]:g}], v in [{vr[0]:g}, {vr[1]:g}]): it is not regular", **base)
+    if sign.status == "undecided":
+        return C1Result(verdict="undecided", reason=f"the Jacobian's sign is not certified at subdivision depth {max_depth} "
+                        f"and {prec} bits (a deeper subdivision or more precision would decide)", **base)
+    s = 1 if sign.status == "positive" else -1
+    base.update(jacobian_sign=s, jacobian_lower_bound=sign.lower_bound)
+    if winding is None:
+        return C1Result(verdict="undecided", reason="the winding number of the inner boundary is not certified", **base)
+    if winding == s:
+        return C1Result(verdict="c1", reason=f"lambda = {lam} (frequency {j}, gap >= {round_down(spectral.gap)}); the "
+                        f"characteristic map is regular (|J| >= {round_down(sign.lower_bound)}) and winds once: injective", **base)
+    if abs(winding) > 1:
+        return C1Result(verdict="not-c1", reason=f"the characteristic map (lambda = {lam} at frequency {j}) is regular but "
+                        f"winds {winding} times around the origin: it is not injective", **base)
+    return C1Result(verdict="undecided", reason=f"winding number {winding} does not match the Jacobian's sign {s}", **base)
+
+
+def c1_test(scheme: Scheme, n: int, *, max_depth: int = 6, prec: int = 64) -> C1Result:
+    """Reif's test at valence ``n`` (see the module docstring); retried once at twice the precision if undecided."""
+    n = check_valence(n)
+    with flint.ctx.workprec(prec):
+        result = _test(scheme, n, max_depth, prec)
+    if result.verdict == "undecided":
+        with flint.ctx.workprec(2 * prec):
+            result = _test(scheme, n, max_depth, 2 * prec)
+    return result

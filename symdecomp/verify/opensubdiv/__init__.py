@@ -77,7 +77,6 @@ def _load_checked(build: bool, *, force: bool):
         lib = ctypes.CDLL(str(path))
         version = lib.symdecomp_osd_bridge_version
         fn = lib.symdecomp_osd_refine_ring
-        lim = lib.symdecomp_osd_limit_points
     except (OSError, AttributeError) as exc:
         raise BridgeUnavailableError(f"the OpenSubdiv bridge library {path} does not load ({exc}); {fix}") from None
     version.restype = ctypes.c_int
@@ -88,8 +87,6 @@ def _load_checked(build: bool, *, force: bool):
     ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
     fn.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, ip, ctypes.c_int, dp, dp, ctypes.c_char_p, ctypes.c_int]
     fn.restype = ctypes.c_int
-    lim.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, dp, dp, ctypes.c_char_p, ctypes.c_int]
-    lim.restype = ctypes.c_int
     problem = _self_test(lib)
     if problem:
         raise BridgeUnavailableError(f"the OpenSubdiv bridge library {path} fails its self-test ({problem}); {fix}")
@@ -189,6 +186,13 @@ def osd_limit_points(mesh: QuadMesh, levels: int) -> tuple[np.ndarray, np.ndarra
     lib = load_bridge()
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
         raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
+    try:
+        fn = lib.symdecomp_osd_limit_points
+    except AttributeError:
+        raise BridgeUnavailableError(f"the OpenSubdiv bridge has no limit-points function; run: {_build.REBUILD_COMMAND}") from None
+    ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
+    fn.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, dp, dp, ctypes.c_char_p, ctypes.c_int]
+    fn.restype = ctypes.c_int
     ids = mesh.vertices()
     index = {v: i for i, v in enumerate(ids)}
     pos = np.ascontiguousarray([[float(x) for x in mesh.values[v]] for v in ids], dtype=np.float64)
@@ -201,7 +205,7 @@ def osd_limit_points(mesh: QuadMesh, levels: int) -> tuple[np.ndarray, np.ndarra
     count = ctypes.c_int(0)
     err = ctypes.create_string_buffer(512)
     ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
-    rc = lib.symdecomp_osd_limit_points(
+    rc = fn(
         len(ids), len(mesh.faces), faces.ctypes.data_as(ip), pos.ctypes.data_as(dp), levels, capacity,
         ctypes.byref(count), points.ctypes.data_as(dp), limits.ctypes.data_as(dp), err, len(err),
     )

@@ -17,7 +17,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    rationals and its characteristic polynomial (``full_matrix``), rules as
                    polynomials in the index shift (Eq. 17-23, ``shift_stencil``), whole quad
                    meshes refined by its rules (Section 3, ``mesh``), the 1-ring and its 2n-gon
-                   (Eq. 10-13, ``ring``), Stam's (2N+8)-point patch matrix (``patch``)
+                   (Eq. 10-13, ``ring``), schemes from TOML files and by name (``files``),
+                   Stam's (2N+8)-point patch matrix (``patch``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
@@ -26,14 +27,17 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
                    ``support``), rings iterated step by step (``evolution``), the 2-ring
                    matrix by frequency and the characteristic map's nets (``characteristic``),
-                   the patch's certified eigen-data (``eigendata``) and exact evaluation
-                   (``evaluation``)
+                   where a 1-ring component starts on one eigenvector of M_j (Eq. 35-38,
+                   ``components``), the patch's certified eigen-data (``eigendata``) and exact
+                   evaluation (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
                    (``certify``), both returning a ``CrossCheckResult`` (``result``),
                    OpenSubdiv (``oracle``, ``opensubdiv``); certified C1 by Reif's test
                    (``c1``, ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit
                    positions for the patch evaluator (``patch_eval``)
-``claims/``        the paper's claims, one module per section, and their registry
+``claims/``        the paper's claims, one module per section, and their registry; every claim
+                   is checked for a scheme (``check_claim(label, scheme)``); ``applicability``
+                   and ``evidence`` hold what several checks share
 ``output/``        LaTeX (``latex``, one entry point ``aslatex``), figures (``plotting``), Stam's
                    data file (``evaldata``)
 ``cli/``           the ``symdecomp`` command, one module per subcommand

@@ -24,11 +24,7 @@ PATTERNS = {
 }
 
 #: ``(module, pattern name): count`` still present, in the claims modules (issue 10, item 5).
-NOT_YET = {
-    ("claims/s5_1_tangent.py", "precision assigned by hand"): 2,
-    ("claims/s5_2_elliptic.py", "nsimplify"): 1,
-    ("claims/s6_cb_matrices.py", "nsimplify"): 1,
-}
+NOT_YET: dict[tuple[str, str], int] = {}
 
 
 def _count(path: pathlib.Path, pattern: re.Pattern) -> int:

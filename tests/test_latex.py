@@ -235,11 +235,11 @@ def temporary_claims(monkeypatch):
     """Two claims registered for one test: a refuted one in 5.3 and one whose check crashes."""
     from symdecomp.claims import REGISTRY, Claim
 
-    def refuted():
+    def refuted(scheme):
         return CheckResult(Status.REFUTED, "0/0 at $j = n/2$", counterexample="n = 4, j = 2",
                            steps=(Step("the determinant", sp.Matrix([[1, omega], [omega, 1]]).det(), "D"),))
 
-    def crashes():
+    def crashes(scheme):
         raise ZeroDivisionError("division by zero")
 
     # labels no real claim uses, so the cached results of the real checks stay valid

@@ -7,7 +7,6 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.support import Region, classify_support, limit_mask, support_relation
-from symdecomp.claims import Status, check_claim
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import InvalidMeshError, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import catmull_clark
@@ -98,16 +97,6 @@ def test_vertices_too_close_to_the_boundary_are_refused():
     edge = next(v for v in mesh.vertices() if max(labels[v][1:]) == 2)
     with pytest.raises(InvalidMeshError, match="boundary"):
         classify_support(mesh, 0, catmull_clark(), vertices=[edge])
-
-
-@pytest.mark.parametrize(
-    "label",
-    ["Section 3: symmetry", "Section 3: 9 and 25 points", "Section 3: boundary influence", "Section 3: Catmull-Clark support"],
-)
-def test_section_3_claims_are_verified(label):
-    result = check_claim(label)
-    assert result.status is Status.VERIFIED, result.evidence
-    assert result.valences is not None
 
 
 def test_unrefined_cube_opposite_corner_is_inside_but_phi_vanishes_there():

@@ -161,7 +161,7 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
         shifted = None
     if shifted is None or shifted.degree() > 2:
         raise InvalidSchemeError(
-            f"det(xI - M(omega)) = {q} is not of Laurent degree 1 in omega; no closed form of this shape"
+            f"det(xI - M(omega)) = {q} is not of Laurent degree 1 in omega; the closed form of Eq. 51 needs the narrow shape (offsets -1..1)"
         )
     c_minus, c_zero, c_plus = (sp.expand(shifted.coeff_monomial(OMEGA**k)) for k in range(3))
     disc = sp.expand(c_zero**2 - 4 * c_plus * c_minus)

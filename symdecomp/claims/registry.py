@@ -12,13 +12,21 @@ Statuses:
 ``numeric``    agrees to a stated number of digits.
 ``refuted``    false; the result carries a counterexample.
 ``corrected``  false as printed; a corrected statement is proved, and the correction is shown.
+``undecided``  the check ran but could not decide (a sufficient test failed, intervals overlapped).
+``not applicable``  the statement cannot be evaluated for the given scheme (it is about Catmull-Clark
+               by name, or needs rules the scheme does not have); the evidence says why.
 ``error``      the check itself failed to run (never a finding about the paper).
+
+Every claim is checked *for a scheme* (:func:`check_claim`, default Catmull-Clark): the printed
+statement of the paper is one input, the scheme the other, and the status follows from both.
+Statements that do not involve the scheme (Section 2, the CB-matrix algebra of Section 6) have the
+same status for every scheme.
 
 Registering a claim (later issues add modules ``symdecomp/claims/s*.py``; they are found
 automatically)::
 
     @claim("Eq. 34", section="5.1", title="Eigenvalues of M_j", statement="...")
-    def eq34() -> CheckResult:
+    def eq34(scheme: Scheme) -> CheckResult:
         ...
         return CheckResult(Status.PROVED, "char. polynomial vanishes identically", steps=(...))
 """
@@ -35,6 +43,9 @@ from functools import cache
 
 import sympy as sp
 from sympy.printing.str import StrPrinter
+
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.scheme import Scheme, catmull_clark
 
 __all__ = [
     "Text",
@@ -58,6 +69,8 @@ class Status(str, enum.Enum):
     NUMERIC = "numeric"
     REFUTED = "refuted"
     CORRECTED = "corrected"
+    UNDECIDED = "undecided"
+    NOT_APPLICABLE = "not applicable"
     ERROR = "error"
 
     def __str__(self) -> str:
@@ -187,8 +200,8 @@ class Claim:
     title: str
     #: The statement as the paper makes it (LaTeX allowed between ``$``).
     statement: str
-    #: Returns the :class:`CheckResult`; pure, may be slow (results are cached).
-    check: Callable[[], CheckResult] = field(repr=False, compare=False)
+    #: Returns the :class:`CheckResult` for a scheme; pure, may be slow (results are cached per scheme).
+    check: Callable[[Scheme], CheckResult] = field(repr=False, compare=False)
     #: Registration order, to list claims in the paper's order within a section.
     order: int = 0
 
@@ -204,7 +217,7 @@ REGISTRY: dict[str, Claim] = {}
 def claim(label: str, *, section: str, title: str, statement: str):
     """Decorator registering ``check`` as the check of the claim ``label``."""
 
-    def register(check: Callable[[], CheckResult]) -> Callable[[], CheckResult]:
+    def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:
         if label in REGISTRY:
             raise ValueError(f"claim {label!r} is registered twice")
         REGISTRY[label] = Claim(label, section, title, statement, check, order=len(REGISTRY))
@@ -236,12 +249,21 @@ def get_claim(label: str) -> Claim:
         raise KeyError(f"no claim labelled {label!r}; known: {', '.join(c.label for c in all_claims())}") from None
 
 
+def check_claim(label: str, scheme: Scheme | None = None) -> CheckResult:
+    """Check a claim for ``scheme`` (default: standard Catmull-Clark), once per scheme.
+
+    An exception inside the check becomes status ``error`` with its message.
+    """
+    return _check_claim(label, catmull_clark() if scheme is None else scheme)
+
+
 @cache
-def check_claim(label: str) -> CheckResult:
-    """Run (once) the check of a claim; an exception becomes status ``error`` with its message."""
+def _check_claim(label: str, scheme: Scheme) -> CheckResult:
     c = get_claim(label)
     try:
-        result = c.check()
+        result = c.check(scheme)
+    except InvalidSchemeError as exc:  # the scheme is outside what the claim's derivation covers
+        return CheckResult(Status.NOT_APPLICABLE, f"not applicable to the scheme {scheme.name!r}: {exc}")
     except Exception as exc:  # the registry reports, the caller decides
         tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
         return CheckResult(Status.ERROR, f"check raised {tb}")

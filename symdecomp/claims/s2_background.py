@@ -10,6 +10,7 @@ from symdecomp.algebra.circulant import circ, generating_polynomial, mode_eigenv
 from symdecomp.algebra.polygons import decompose
 from symdecomp.claims.notation import eq, j, listed, n, ne, omega_n
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
+from symdecomp.schemes.scheme import Scheme
 
 W = sp.Symbol("w")
 M = sp.Symbol("m", integer=True)
@@ -21,16 +22,29 @@ def _random_polygon(n: int, seed: int) -> sp.Matrix:
     return sp.Matrix([[sp.Rational(rng.randint(-9, 9), rng.randint(1, 4)) for _ in range(3)] for _ in range(n)])
 
 
+def PRINTED_VERTEX(j, m, n):
+    """Entry ``(j, m)`` of ``F_n`` as printed (Eq. 2-3): ``omega_n^(j m)``."""
+    return sp.exp(2 * sp.pi * sp.I * j * m / n)
+
+
+def PRINTED_ORDER(n):
+    """The order of the root of unity in ``F_n`` as printed (Eq. 3): ``omega_n^n = 1``."""
+    return n
+
+#: The sign in the real pair ``R cos(phi) -+ I sin(phi)`` of Eq. 6 (``-`` as printed).
+PRINTED_PAIR_SIGN = -1
+
+
 @claim(
     "Eq. 2-4",
     section="2",
     title="The rows of $F_n$ are regular planar polygons",
     statement="The rows $v_0, \\dots, v_{n-1}$ of $F_n$ (Eq. 2), $\\omega_n = e^{2\\pi i/n}$ (Eq. 3), are regular planar $n$-gons.",
 )
-def _eq2_4() -> CheckResult:
+def _eq2_4(scheme: Scheme) -> CheckResult:
     from symdecomp.symbols import j, n
 
-    vertex = sp.exp(2 * sp.pi * sp.I * j * M / n)
+    vertex = PRINTED_VERTEX(j, M, n)
     step = sp.simplify(vertex.subs(M, M + 1) / vertex)
     modulus = sp.simplify(sp.Abs(vertex))
     ok = not step.has(M) and modulus == 1
@@ -58,12 +72,12 @@ def _eq2_4() -> CheckResult:
     statement="Every $n$-gon $P$ in $\\mathbf{R}^3$ is $P = z_0 v_0 + \\dots + z_{n-1} v_{n-1}$ with the rows "
     "$v_j$ of $F_n$ (Eq. 4) a basis of $\\mathbf{C}^n$.",
 )
-def _eq5() -> CheckResult:
+def _eq5(scheme: Scheme) -> CheckResult:
     from symdecomp.symbols import n
 
     geometric = sp.summation(W**M, (M, 0, n - 1))
     general = geometric.args[-1][0] if isinstance(geometric, sp.Piecewise) else geometric
-    reduced = sp.simplify(general.subs(W**n, 1))
+    reduced = sp.simplify(general.subs(W ** PRINTED_ORDER(n), 1))
     if reduced != 0:
         return CheckResult(
             Status.REFUTED, Text("the sum of ", W**M, " does not vanish: ", reduced), counterexample=Text(reduced)
@@ -98,11 +112,11 @@ def _eq5() -> CheckResult:
     statement="The decomposition of Eq. 5 can be chosen so that the pairs $\\{z_j v_j, z_{n-j} v_{n-j}\\}$, "
     "$j = 1, \\dots, \\lfloor (n-1)/2 \\rfloor$, are coplanar.",
 )
-def _eq6() -> CheckResult:
+def _eq6(scheme: Scheme) -> CheckResult:
     r, s = sp.symbols("r s")
-    pair = sp.Symbol("R") * sp.cos(PHI) - sp.Symbol("I") * sp.sin(PHI)
+    pair = sp.Symbol("R") * sp.cos(PHI) + PRINTED_PAIR_SIGN * sp.Symbol("I") * sp.sin(PHI)
     two_regular = sp.exp(sp.I * PHI) * (r + sp.I * s) / 2 + sp.exp(-sp.I * PHI) * (r - sp.I * s) / 2
-    identity = sp.simplify(sp.expand((two_regular - (r * sp.cos(PHI) - s * sp.sin(PHI))).rewrite(sp.cos)))
+    identity = sp.simplify(sp.expand((two_regular - (r * sp.cos(PHI) + PRINTED_PAIR_SIGN * s * sp.sin(PHI))).rewrite(sp.cos)))
     if identity != 0:
         return CheckResult(Status.REFUTED, "identity fails", counterexample=Text("the difference ", identity))
     import mpmath
@@ -141,6 +155,11 @@ def _eq6() -> CheckResult:
     )
 
 
+def PRINTED_EIGENVALUE(coeffs):
+    """Prop. 2.1 as printed: the eigenvalue on ``v_k`` is ``p(omega_n^k)``, ``p(z) = sum_l c_l z^l``."""
+    return generating_polynomial(coeffs)
+
+
 @claim(
     "Proposition 2.1",
     section="2",
@@ -148,12 +167,12 @@ def _eq6() -> CheckResult:
     statement="The eigenvectors of any $n \\times n$ circulant $C$ are the rows of $F_n$; the eigenvalue on $v_k$ "
     "is $p(\\omega_n^k)$ with $p(z) = c_0 + c_1 z + \\dots + c_{n-1} z^{n-1}$ (Eq. 8, 9).",
 )
-def _prop21() -> CheckResult:
+def _prop21(scheme: Scheme) -> CheckResult:
     from symdecomp.symbols import omega
 
     coeffs = {k: sp.Symbol(f"c_{{{k}}}") for k in range(-2, 3)}
     row, eig = mode_eigenvalue_derivation(coeffs)
-    expected = generating_polynomial(coeffs)
+    expected = PRINTED_EIGENVALUE(coeffs)
     if sp.expand(eig - expected) != 0 or eig.has(sp.Symbol("i", integer=True)):
         return CheckResult(Status.REFUTED, "eigenvalue depends on the row", counterexample=Text("the eigenvalue ", eig))
     last = 10

@@ -18,8 +18,9 @@ from symdecomp.analysis.support import Region, classify_support, support_relatio
 from symdecomp.claims.notation import eq, gt
 from symdecomp.claims.notation import n as N
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.scheme import Scheme
 
 #: Valences the exact checks run for (kept small enough for seconds).
 SYMMETRY_VALENCES = (3, 10)
@@ -27,14 +28,24 @@ SUPPORT_VALENCES = (3, 12)
 INFLUENCE_VALENCES = (3, 12)
 
 
+def _not_a_mesh_scheme(scheme: Scheme) -> CheckResult | None:
+    """``not applicable`` when the scheme's 1-ring rules are not rules of a whole quad mesh (the supports of
+    Section 3 are defined on meshes), else ``None``."""
+    try:
+        mesh_rules(scheme)
+    except InvalidSchemeError as exc:
+        return CheckResult(Status.NOT_APPLICABLE, f"the supports of Section 3 live on whole meshes, and {exc}")
+    return None
+
+
 def _ring(labels, v):
     _, u, w = labels[v]
     return max(u, w)
 
 
-def _cubes(levels=(0, 1, 2)):
+def _cubes(scheme: Scheme, levels=(0, 1, 2)):
     """The cube refined 0, 1, 2 times: closed meshes with eight valence-3 vertices close together."""
-    rules = mesh_rules(catmull_clark())
+    rules = mesh_rules(scheme)
     mesh = cube_mesh(lambda i: (Fraction(0),))
     out = {}
     for level in range(max(levels) + 1):
@@ -51,8 +62,10 @@ def _cubes(levels=(0, 1, 2)):
     statement="$P'$ is inside, on the boundary, or outside the support of $P$ if and only if $P$ is "
     "inside, on the boundary, or outside the support of $P'$, correspondingly.",
 )
-def _symmetry() -> CheckResult:
-    cc = catmull_clark()
+def _symmetry(scheme: Scheme) -> CheckResult:
+    if (result := _not_a_mesh_scheme(scheme)) is not None:
+        return result
+    cc = scheme
     lo, hi = SYMMETRY_VALENCES
     pairs = 0
     steps = []
@@ -81,7 +94,7 @@ def _symmetry() -> CheckResult:
                 )
             )
     cube_pairs = 0
-    for level, mesh in _cubes().items():
+    for level, mesh in _cubes(scheme).items():
         verts = mesh.vertices()
         rel = support_relation(mesh, cc, verts)
         for p in verts:
@@ -112,8 +125,10 @@ def _symmetry() -> CheckResult:
     statement="In the regular case of the Catmull-Clark scheme nine points determine the continuous "
     "derivatives at $P$, and 25 points are needed to prove continuity.",
 )
-def _regular_counts() -> CheckResult:
-    c = classify_support(ring_mesh(4, 5), 0, catmull_clark(), levels=2)
+def _regular_counts(scheme: Scheme) -> CheckResult:
+    if (result := _not_a_mesh_scheme(scheme)) is not None:
+        return result
+    c = classify_support(ring_mesh(4, 5), 0, scheme, levels=2)
     inside, boundary = c.count(Region.INSIDE), c.count(Region.BOUNDARY)
     steps = (
         Step("vertices inside the support of $P$ (valence 4)", sp.Integer(inside)),
@@ -147,8 +162,10 @@ def _regular_counts() -> CheckResult:
     "the continuous derivatives of $P$; this is also the case when $P'$ is on the boundary of the support "
     "of $P$.",
 )
-def _boundary_influence() -> CheckResult:
-    cc = catmull_clark()
+def _boundary_influence(scheme: Scheme) -> CheckResult:
+    if (result := _not_a_mesh_scheme(scheme)) is not None:
+        return result
+    cc = scheme
     rules = mesh_rules(cc)
     lo, hi = INFLUENCE_VALENCES
     levels = 3
@@ -203,8 +220,10 @@ def _boundary_influence() -> CheckResult:
     statement="For the Catmull-Clark scheme the vertices inside the support of $P$ are in its 1-ring "
     "neighbourhood, while the vertices on the boundary of the support are the boundary vertices of the 2-ring.",
 )
-def _cc_support() -> CheckResult:
-    cc = catmull_clark()
+def _cc_support(scheme: Scheme) -> CheckResult:
+    if (result := _not_a_mesh_scheme(scheme)) is not None:
+        return result
+    cc = scheme
     lo, hi = SUPPORT_VALENCES
     rings = 5
     steps = []
@@ -231,7 +250,7 @@ def _cc_support() -> CheckResult:
                 )
             )
     # Meshes with several extraordinary vertices: the cube refined once and twice, every vertex as P.
-    cubes = _cubes()
+    cubes = _cubes(scheme)
     checked = 0
     for level in (1, 2):
         mesh = cubes[level]

@@ -12,7 +12,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.scheme import Scheme, catmull_clark
 from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.c1_spectrum import round_down
 
@@ -33,9 +33,8 @@ def _down(x: float) -> sp.Float:
     r"condition (1 simple, the subdominant eigenvalue $\lambda$ real, double, non-defective and strictly dominant, "
     r"and a regular, injective characteristic map) holds for Catmull-Clark at every valence $n$.",
 )
-def _c1_reif() -> CheckResult:
-    scheme = catmull_clark()
-    lo, hi = VALENCES
+def _c1_reif(scheme: Scheme) -> CheckResult:
+    lo, hi = max(VALENCES[0], scheme.minimum_valence()), VALENCES[1]
     rows = []
     for n in range(lo, hi + 1):
         r = c1_test(scheme, n)
@@ -59,5 +58,5 @@ def _c1_reif() -> CheckResult:
         Text(f"Reif's test certified for n = {lo}..{hi} in rigorous interval arithmetic (Arb balls; exact "
              "rationals at frequency 0); symdecomp c1 extends the range"),
         steps=steps,
-        valences=VALENCES,
+        valences=(lo, hi),
     )

@@ -18,13 +18,14 @@ from symdecomp.analysis.elliptic import (
     scale_ratio_squared,
 )
 from symdecomp.analysis.frequency import recursion_matrix
-from symdecomp.analysis.tuning import joint_obstruction
+from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Status, Step, Text, claim, is_zero
-from symdecomp.claims.notation import A, B, M, c, eq, j, lambda_1, listed, omega_2n, tup
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.claims.applicability import needs_mirror_symmetry
+from symdecomp.claims.notation import A, B, M, eq, j, lambda_1, listed, ne, omega_2n, tup
+from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
-from symdecomp.symbols import cos_jtheta
+from symdecomp.symbols import cos_jtheta as COS
 from symdecomp.symbols import n as N
 
 S = sp.Symbol
@@ -37,7 +38,7 @@ S = sp.Symbol
     statement=r"$A^1 + A^{2n-1}$ is inscribed on an ellipse with axes "
     r"$l_1 = |w_1| + |w_{2n-1}|$, $l_2 = \bigl||w_1| - |w_{2n-1}|\bigr|$.",
 )
-def _eq40() -> CheckResult:
+def _eq40(scheme: Scheme) -> CheckResult:
     # The polygon is L(v_1) with L(zeta) = w1 zeta + w2 conj(zeta), a real-linear map of the plane;
     # it lies on L(unit circle), whose semi-axes are the singular values of L.
     p1, q1, p2, q2 = sp.symbols("p1 q1 p2 q2", real=True)
@@ -91,7 +92,7 @@ def _eq40() -> CheckResult:
     statement=r"$A^1 = w_1 \vec{v_1}$, $A^{2n-1} = w_{2n-1}\vec{v_{n-1}}$; initially $E_a = E_b$, the ellipse of the "
     r"2n-gonal regular convex component of Eq. 11.",
 )
-def _eq41() -> CheckResult:
+def _eq41(scheme: Scheme) -> CheckResult:
     # z_1 = p + i q (p, q in R^3). A-pair: U = 2p, W = -2q; B-pair: z_1 * e^{i phi}, phi = pi/n (Eq. 24).
     p = sp.Matrix(sp.symbols("p0:3", real=True))
     q = sp.Matrix(sp.symbols("q0:3", real=True))
@@ -121,8 +122,8 @@ def _eq41() -> CheckResult:
     statement=r"At each subdivision step $A^j \rightarrow r_A^j A^j$ and $B^j \rightarrow r_B^j B^j$ with "
     r"$r_A^j, r_B^j \in \mathbf{R}$.",
 )
-def _prop52() -> CheckResult:
-    conj, imag = rotation_free_form(catmull_clark(ALPHA, BETA))
+def _prop52(scheme: Scheme) -> CheckResult:
+    conj, imag = rotation_free_form(with_free_vertex_rule(scheme))
     z, D, M_j = S("z"), S("D", commutative=False), S("M_j", commutative=False)
     if not is_zero(imag):
         return CheckResult(
@@ -147,8 +148,8 @@ def _prop52() -> CheckResult:
     title="The induction step of Proposition 5.2",
     statement=r"$M_j(r_1, r_2\omega_{2n}^j)^T = (r'_1, r'_2\omega_{2n}^j)^T$ with $r'_1, r'_2$ real.",
 )
-def _eq42() -> CheckResult:
-    conj, imag = rotation_free_form(catmull_clark())
+def _eq42(scheme: Scheme) -> CheckResult:
+    conj, imag = rotation_free_form(scheme)
     z = sp.Symbol("z")
     t = sp.Symbol("t", real=True)  # z = exp(i t), t = j pi/n
     c = sp.Symbol("c", real=True)  # cos(t)
@@ -180,8 +181,8 @@ def _eq42() -> CheckResult:
     statement=r"$\begin{pmatrix}1-\alpha-\beta & \alpha & \beta\\ 3/8 & 1/2 & 1/8\\ 1/4 & 1/2 & 1/4\end{pmatrix}$ "
     r"with $\alpha, \beta$ as in Eq. 16.",
 )
-def _eq43() -> CheckResult:
-    T = recursion_matrix(catmull_clark(ALPHA, BETA))
+def _eq43(scheme: Scheme) -> CheckResult:
+    T = recursion_matrix(with_free_vertex_rule(scheme))
     R = sp.Rational
     printed_rows = sp.Matrix([[R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
     printed_first = sp.Matrix([[1 - ALPHA - BETA, ALPHA, BETA]])
@@ -195,13 +196,16 @@ def _eq43() -> CheckResult:
     )
     if not rows_ok:
         return CheckResult(
-            Status.REFUTED, "rows 2-3 differ from the edge/face rules", counterexample=Text("the derived matrix ", T), steps=steps
+            Status.REFUTED,
+            "rows 2-3 derived from this scheme's edge and face rules differ from the printed ones",
+            counterexample=Text("rows 2-3 derived: ", T[1:, :], "; printed: ", printed_rows),
+            steps=steps,
         )
     if is_zero(first_diff):
         return CheckResult(Status.PROVED, "derived matrix equals the printed one", steps=steps)
     derived_first = tup(*T[0, :])
-    # the counterexample: the standard weights at n = 4, per neighbour (the derived row is n alpha, n beta)
-    standard = recursion_matrix(catmull_clark(), 4)
+    # the counterexample: the scheme's weights at n = 4, per neighbour (the derived row is n alpha, n beta)
+    standard = recursion_matrix(scheme, 4)
     per_neighbour = {ALPHA: standard[0, 1] / 4, BETA: standard[0, 2] / 4}
     return CheckResult(
         Status.CORRECTED,
@@ -214,7 +218,7 @@ def _eq43() -> CheckResult:
             " (equivalently the printed row with ", ALPHA, ", ", BETA, " the total weights ", N * ALPHA, ", ", N * BETA, ")",
         ),
         counterexample=Text(
-            eq(N, 4), ", standard weights: the printed row with ", eq(ALPHA, per_neighbour[ALPHA]), ", ",
+            eq(N, 4), ", this scheme's weights: the printed row with ", eq(ALPHA, per_neighbour[ALPHA]), ", ",
             eq(BETA, per_neighbour[BETA]), " gives ", tup(*printed_first.subs(per_neighbour)), ", not ",
             tup(*standard[0, :]), " of Eq. 45",
         ),
@@ -229,22 +233,29 @@ def _eq43() -> CheckResult:
     statement=r"If $(u_O, u_a, u_b)^T$ is the subdominant eigenvector, in the limit "
     r"$\frac{u_b-u_O}{u_a-u_O} = \frac{d_b}{d_a}$.",
 )
-def _eq44() -> CheckResult:
-    scheme = catmull_clark(ALPHA, BETA)
-    T = sp.Matrix(recursion_matrix(scheme))
+def _eq44(scheme: Scheme) -> CheckResult:
+    free = with_free_vertex_rule(scheme)
+    T = sp.Matrix(recursion_matrix(free))
     D = sp.Matrix([[-1, 1, 0], [-1, 0, 1]])  # (h_O, h_a, h_b) -> (d_a, d_b)
     # D T = T' D with T' = D T E, E a right inverse of D on the complement of (1,1,1).
     E = sp.Matrix([[0, 0], [1, 0], [0, 1]])
     Tp = (D * T * E).applyfunc(sp.expand)
     intertwine = (D * T - Tp * D).applyfunc(sp.expand)
-    u = recursion_eigenvector(scheme, MU)
+    u = recursion_eigenvector(free, MU)
     du = D * u
     eig = (Tp * du - MU * du).applyfunc(sp.expand)
     char = sp.factor((T - MU * sp.eye(3)).det())
     # eig vanishes whenever MU is an eigenvalue: reduce modulo the non-unit quadratic.
-    quad = sp.Poly(sp.cancel(char / (1 - MU)), MU)
+    quotient, remainder = sp.div(sp.Poly(sp.expand(char), MU), sp.Poly(1 - MU, MU))
+    if not remainder.is_zero or not is_zero(intertwine):
+        return CheckResult(
+            Status.REFUTED,
+            "the plane distances do not move by a 2x2 matrix: the rows of the Eq. 43 matrix do not all sum to 1",
+            counterexample=Text("row sums of the Eq. 43 matrix: ", sp.Matrix([sp.simplify(sum(T.row(r))) for r in range(3)]).T),
+        )
+    quad = quotient
     reduced = eig.applyfunc(lambda e: sp.rem(sp.Poly(e, MU), quad).as_expr())
-    ratio = eq44_ratio(scheme, MU)
+    ratio = eq44_ratio(free, MU)
     if not (is_zero(intertwine) and is_zero(reduced)):
         return CheckResult(
             Status.REFUTED,
@@ -280,52 +291,46 @@ def _eq44() -> CheckResult:
     statement=r"For $n=4$ the matrix of Eq. 43 is $\begin{pmatrix}9/16&3/8&1/16\\3/8&1/2&1/8\\1/4&1/2&1/4\end{pmatrix}$ "
     r"with subdominant eigenvalue $1/4$, eigenvector $(-2,1,4)^T$, $d_b/d_a = 2$, scale ratio $\sqrt2$.",
 )
-def _eq45() -> CheckResult:
-    cc = catmull_clark()
+def _eq45(scheme: Scheme) -> CheckResult:
     R = sp.Rational
-    T4 = recursion_matrix(cc, 4)
+    T4 = recursion_matrix(scheme, 4)
     printed = sp.Matrix([[R(9, 16), R(3, 8), R(1, 16)], [R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
-    eigs = sorted(sp.Matrix(T4).eigenvals(), reverse=True)
-    u = recursion_eigenvector(cc, eigs[1], 4)
-    paper_u = sp.Matrix([-2, 1, 4])
-    parallel = u.cross(paper_u)
-    ratio = eq44_ratio(cc, eigs[1], 4)
-    scale_sq = sp.nsimplify(sp.simplify(scale_ratio_squared(cc).subs(cos_jtheta, sp.cos(sp.pi / 4))))
-    lam1 = nice_elliptic_conditions(cc).lambda1.subs(N, 4)
-    ok = (
-        T4 == printed
-        and eigs == [1, R(1, 4), R(1, 16)]
-        and is_zero(parallel)
-        and ratio == 2
-        and scale_sq == 2
-        and sp.simplify(lam1**2 - eigs[1]) == 0
+    eigs = sorted(sp.Matrix(T4).eigenvals(), key=lambda e: -abs(complex(sp.N(e, 30))))
+    u = recursion_eigenvector(scheme, eigs[1], 4).applyfunc(sp.radsimp)
+    ratio = sp.radsimp(eq44_ratio(scheme, eigs[1], 4))
+    scale_sq = sp.radsimp(sp.simplify(scale_ratio_squared(scheme).subs(COS, sp.cos(sp.pi / 4))))
+    lam1 = sp.simplify(nice_elliptic_conditions(scheme).lambda1.subs(N, 4))
+    items = (
+        ("the matrix", T4, printed, sp.Matrix(T4) == printed),
+        ("the subdominant eigenvalue", eigs[1], R(1, 4), sp.simplify(eigs[1] - R(1, 4)) == 0),
+        ("the eigenvector", u.T, sp.Matrix([[-2, 1, 4]]), is_zero(u.cross(sp.Matrix([-2, 1, 4])))),
+        ("d_b/d_a", ratio, 2, sp.simplify(ratio - 2) == 0),
+        ("the squared scale ratio", scale_sq, 2, sp.simplify(scale_sq - 2) == 0),
     )
     steps = (
         Step("Derived matrix at $n=4$", T4),
         Step("Eigenvalues", sp.Matrix(eigs)),
-        Step("Eigenvector for $1/4$ (derived)", u),
+        Step("Eigenvector for the subdominant eigenvalue (derived)", u),
         Step("Ratio $d_b/d_a$", ratio),
         Step("$|B^1/A^1|^2$ at $n=4$", scale_sq),
-        Step("$\\lambda_1$ at $n = 4$", sp.simplify(lam1)),
+        Step("$\\lambda_1$ at $n = 4$", lam1),
     )
-    if not ok:
+    wrong = [(name, derived, shown) for name, derived, shown, ok in items if not ok]
+    if wrong:
+        name, derived, shown = wrong[0]
         return CheckResult(
             Status.REFUTED,
-            Text("the example does not hold as printed at ", eq(N, 4)),
-            counterexample=Text(
-                eq(N, 4), ": matrix ", T4, ", eigenvalues ", listed(eigs), ", eigenvector ", tup(*u), ", ratio ", ratio,
-                ", ", eq(abs(B(1) / A(1)) ** 2, scale_sq), ", ", eq(lambda_1, lam1),
-            ),
+            Text("for this scheme at n = 4 ", ", ".join(w[0] for w in wrong), " differ from the printed values"),
+            counterexample=Text("n = 4: ", name, " is ", derived, ", printed ", shown),
             steps=steps,
         )
+    both = sp.simplify(lam1**2 - eigs[1]) == 0
     return CheckResult(
         Status.VERIFIED,
-        Text(
-            "derived matrix equals the printed one; eigenvalues ", listed(eigs), "; eigenvector ", tup(*u),
-            " proportional to ", tup(*paper_u), "; ratio ", eq(ratio, abs(B(1) / A(1)) ** 2), " = ", scale_sq,
-            " (scale ratio ", sp.sqrt(scale_sq), "); ", eq(eigs[1], lambda_1**2),
-            ": both conditions hold at ", eq(N, 4),
-        ),
+        Text("derived matrix equals the printed one; eigenvalues ", listed(eigs), "; eigenvector ", tup(*u),
+             " proportional to ", tup(-2, 1, 4), "; ratio ", eq(ratio, abs(B(1) / A(1)) ** 2), " = ", scale_sq,
+             " (scale ratio ", sp.sqrt(scale_sq), "); ",
+             Text(eq(eigs[1], lambda_1**2), ": both conditions hold at ", eq(N, 4)) if both else Text(ne(eigs[1], lambda_1**2))),
         valences=(4, 4),
         steps=steps,
     )
@@ -338,48 +343,46 @@ def _eq45() -> CheckResult:
     statement=r"There are only two essentially different cases for the initial input, $(1,1,1)$ and $(0,1,1)$; in the "
     r"first there is no elliptic component, in the second it generally exists.",
 )
-def _remark52() -> CheckResult:
-    scheme = catmull_clark(ALPHA, BETA)
-    l = recursion_left_eigenvector(scheme, MU)
-    # l is orthogonal to (1,1,1) for MU != 1, so l.(0,1,1) = -l_O; l_O = 0 forces l = 0:
-    la, lb = sp.symbols("l_a l_b")
-    T = sp.Matrix(recursion_matrix(scheme))
-    eqs = [la * T[1, 0] + lb * T[2, 0], la + lb]  # column 1 of l^T (T - MU I) with l_O = 0, and l.(1,1,1) = 0
-    only_zero = sp.solve(eqs, [la, lb], dict=True) == [{la: 0, lb: 0}]
+def _remark52(scheme: Scheme) -> CheckResult:
+    free = with_free_vertex_rule(scheme)
+    l = recursion_left_eigenvector(free, MU)
     dot111 = sp.factor(sum(l))
-    cc = catmull_clark()
-    comp_011 = [elliptic_component(cc, n, (0, 1, 1)) for n in (3, 4, 5)]
-    comp_01m1_n4 = elliptic_component(cc, 4, (0, 1, -1))
-    comp_111 = elliptic_component(cc, 4, (1, 1, 1))
+    valences = range(3, 9)
+    comp_111 = [elliptic_component(scheme, n, (1, 1, 1)) for n in valences]
+    comp_011 = [elliptic_component(scheme, n, (0, 1, 1)) for n in valences]
+    # the 2n-gon component j = n (A^n = z, B^n = -z) feeds (0, 1, -1) into the Eq. 43 recursion
+    comp_01m1 = [elliptic_component(scheme, n, (0, 1, -1)) for n in valences]
     steps = (
-        Step("Left eigenvector $l$ for $\\mu$ (derived)", l),
+        Step("Left eigenvector $l$ for $\\mu$ (derived, free vertex weights)", l),
         Step("$l\\cdot(1,1,1)$ (vanishes when $\\mu \\neq 1$ is an eigenvalue)", dot111),
-        Step("Elliptic component of $(0,1,1)$ at $n = 3, 4, 5$", sp.Matrix(comp_011)),
-        Step("Elliptic component of $(0,1,-1)$ at $n = 4$", comp_01m1_n4),
+        Step("Elliptic component of $(0,1,1)$ at $n = 3, \\dots, 8$", sp.Matrix(comp_011)),
+        Step("Elliptic component of $(0,1,-1)$ (the component $j = n$) at $n = 3, \\dots, 8$", sp.Matrix(comp_01m1)),
     )
-    if not (only_zero and comp_111 == 0 and all(c != 0 for c in comp_011) and comp_01m1_n4 == 0):
-        return CheckResult(Status.ERROR, "the derivation did not go through", steps=steps)
-    ones, case_011, case_01m1 = tup(1, 1, 1), tup(0, 1, 1), tup(0, 1, -1)
-    l_name, l_O, abar, bbar, z_n, x, y = S("l"), S("l_O"), S("abar"), S("bbar"), S("z_n"), S("x"), S("y")
+    nonzero = [n for n, c in zip(valences, comp_111) if sp.simplify(c) != 0]
+    if nonzero:
+        return CheckResult(
+            Status.REFUTED,
+            "the input (1,1,1) has an elliptic component",
+            counterexample=Text("n = ", nonzero[0], ": elliptic component of (1,1,1) is ", comp_111[nonzero[0] - 3]),
+            steps=steps,
+        )
+    third = [n for n, c in zip(valences, comp_01m1) if sp.simplify(c) == 0]
+    if not third:
+        return CheckResult(
+            Status.PROVED,
+            Text("(1,1,1) is the eigenvector of 1 (no elliptic component); the other inputs (0, x, y) modulo (1,1,1), including "
+                 "(0,1,-1) from the component j = n, have an elliptic component at n = 3..8 (", sp.Matrix(comp_01m1).T, ")"),
+            steps=steps,
+        )
     return CheckResult(
         Status.CORRECTED,
-        Text(
-            ones, " is the eigenvector of 1: no elliptic component (", comp_111, " at ", eq(N, 4), "); ", case_011,
-            " has one for every ", N, " and all ", ALPHA, ", ", BETA, " (the left eigenvector ", l_name, " has ",
-            eq(S("l_a") + S("l_b"), -l_O), " on it, and ", eq(l_O, 0), " forces ", eq(l_name, 0),
-            "). But the input ", tup(S("h_O"), abar, bbar), " also receives the 2n-gon component ", eq(j, N), " (",
-            eq(A(N), z_n), ", ", eq(B(N), -z_n), "), i.e. ", case_01m1, ", which is neither case: at ", eq(N, 4),
-            " it has no elliptic component",
-        ),
-        correction=Text(
-            "for input from the component ", eq(j, 0), " (", eq(abar, bbar), ") the cases are ", ones,
-            " (no elliptic component) and ", case_011, " (always an elliptic component, not just generally); a general "
-            "1-ring adds ", case_01m1, " from the component ", eq(j, N), ", so the input is ", tup(0, x, y), " modulo ",
-            ones, ", with elliptic component ", S("l_a") * x + S("l_b") * y, " over ", l_name, " times ", S("u"),
-        ),
-        counterexample=Text(
-            eq(N, 4), ", input ", case_01m1, " (a's raised, b's lowered): elliptic component ", comp_01m1_n4,
-        ),
+        Text("(1,1,1) is the eigenvector of 1: no elliptic component; (0,1,1) has one. But the input ", tup(S("h_O"), S("abar"), S("bbar")),
+             " also receives the 2n-gon component ", eq(j, N), " (", eq(A(N), S("z_n")), ", ", eq(B(N), -S("z_n")),
+             "), i.e. (0,1,-1), which is neither case"),
+        correction="for input from the component j = 0 (abar = bbar) the cases are (1,1,1) (no elliptic component) and "
+        "(0,1,1); a general 1-ring adds (0,1,-1) from the component j = n, so the input is (0, x, y) modulo (1,1,1), "
+        "with elliptic component l_a x + l_b y over l.u",
+        counterexample=Text("n = ", third[0], ", input (0, 1, -1) (a's raised, b's lowered): elliptic component 0"),
         steps=steps,
     )
 
@@ -391,28 +394,38 @@ def _remark52() -> CheckResult:
     statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "
     r"does in the regular case $n = 4$.",
 )
-def _example() -> CheckResult:
-    cc = catmull_clark()
-    cond = nice_elliptic_conditions(cc)
-    joint = joint_obstruction(cc)
-    d3 = sp.N(cond.eigenvalue_defect.subs(N, 3), 30)
-    d5 = sp.N(cond.eigenvalue_defect.subs(N, 5), 30)
-    if joint.valences != (4,) or not (d3 < 0 < d5):
-        return CheckResult(Status.ERROR, f"unexpected: valences {joint.valences}, defects {d3}, {d5}")
-    c_n = sp.cos(sp.pi / N)
-    (root,) = [c_n.subs(N, v) for v in joint.valences]
+def _example(scheme: Scheme) -> CheckResult:
+    if (result := needs_mirror_symmetry(scheme)) is not None:
+        return result
+    cond = nice_elliptic_conditions(scheme)
+    joint = joint_obstruction(scheme)
+    defects = {k: [sp.simplify(cond.eigenvalue_defect.subs(N, k)), sp.simplify(cond.ratio_defect.subs(N, k))] for k in (3, 4, 5)}
+    at4 = all(d == 0 for d in defects[4])
+    failing = [k for k in (3, 5) if any(abs(sp.N(d, 30)) > sp.Float(10) ** -20 for d in defects[k])]
+    steps = (
+        Step("Condition 1 defect $\\mu - \\lambda_1^2$", cond.eigenvalue_defect),
+        Step("Condition 2 defect", cond.ratio_defect),
+        Step("Resultant whose roots contain every valence where both can hold (any vertex rule)", joint.polynomial),
+    )
+    if not at4:
+        return CheckResult(
+            Status.REFUTED,
+            Text("with this scheme's own vertex weights the two conditions do not both hold at ", eq(N, 4)),
+            counterexample=Text(eq(N, 4), ": ", eq(S("mu") - lambda_1**2, sp.N(defects[4][0], 12)), ", the Eq. 44 ratio minus ",
+                                abs(B(1) / A(1)) ** 2, " is ", sp.N(defects[4][1], 12)),
+            steps=steps,
+        )
+    if not failing:
+        return CheckResult(
+            Status.UNDECIDED,
+            "both conditions hold at n = 4, and no valence checked (3, 5) shows them failing",
+            steps=steps,
+        )
     return CheckResult(
         Status.PROVED,
-        Text(
-            "the two conditions together hold iff the ratio of Eq. 44 at ", lambda_1**2, " equals ", abs(B(1) / A(1)) ** 2,
-            ", an equation in ", N, " alone; its resultant ", joint.polynomial, " has the single root ",
-            eq(c, c_n), " = ", root, " in ", sp.Interval.Ropen(sp.Rational(1, 2), 1), ": ",
-            eq(N, joint.valences[0]), " only. Condition 1 alone fails for standard weights already at ", eq(N, 3), " (",
-            eq(S("mu") - lambda_1**2, sp.N(d3, 6)), ") and ", eq(N, 5), " (", sp.N(d5, 6), ")",
-        ),
-        steps=(
-            Step("Condition 1 defect $\\mu - \\lambda_1^2$", cond.eigenvalue_defect),
-            Step("Condition 2 defect", cond.ratio_defect),
-            Step("Resultant whose roots contain every valence where both can hold", joint.polynomial),
-        ),
+        Text("both defects vanish exactly at ", eq(N, 4), "; at ", eq(N, failing[0]), " they are ", sp.N(defects[failing[0]][0], 6),
+             " and ", sp.N(defects[failing[0]][1], 6), ". With any vertex rule both can hold only at the valences ",
+             sp.FiniteSet(*joint.valences), " (roots ", sp.cos(sp.pi / N), " of the resultant ", joint.polynomial, " in ",
+             sp.Interval.Ropen(sp.Rational(1, 2), 1), ")"),
+        steps=steps,
     )

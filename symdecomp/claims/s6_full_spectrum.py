@@ -6,7 +6,7 @@ import sympy as sp
 
 from symdecomp.analysis.closed_forms import derived_closed_forms
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
-from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam
 from symdecomp.verify.certify import certify, symmetric_functions
 
@@ -22,8 +22,7 @@ VALENCES = (3, 48)
     r"matrix $S$, with their multiplicities, are the three eigenvalues of the matrix of Eq. 43 and the two "
     r"eigenvalues of $M_k$ given by Eq. 34 for $k = 1, \dots, n-1$.",
 )
-def _full_spectrum() -> CheckResult:
-    scheme = catmull_clark()
+def _full_spectrum(scheme: Scheme) -> CheckResult:
     cf = derived_closed_forms(scheme)
     sym = symmetric_functions(cf)
     omega = sp.Symbol("omega")
@@ -36,7 +35,7 @@ def _full_spectrum() -> CheckResult:
              lam**3 - sym.frequency_zero[0] * lam**2 + sym.frequency_zero[1] * lam - sym.frequency_zero[2],
              sp.Function("F_0")(lam)),
     ]
-    lo, hi = VALENCES
+    lo, hi = max(VALENCES[0], scheme.minimum_valence()), VALENCES[1]
     for valence in range(lo, hi + 1):
         r = certify(scheme, valence, closed_forms=cf)
         if not r.ok:

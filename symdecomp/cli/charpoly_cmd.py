@@ -5,9 +5,9 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
+from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.cli.common import add_scheme_option, flag, print_json, refuse_together, valence
 from symdecomp.schemes.full_matrix import characteristic_polynomial
-from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import lam as LAM
@@ -55,7 +55,7 @@ def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
 
 def run(args) -> int:
     refuse_together(args, "--free-weights", "--scheme", "--free-weights uses the Catmull-Clark edge and face rules")
-    scheme = catmull_clark(ALPHA, BETA) if args.free_weights else args.scheme
+    scheme = with_free_vertex_rule(args.scheme) if args.free_weights else args.scheme
     cf = closed_form_characteristic_polynomial(scheme)
     coefficients, matches = _coefficients(scheme, args.n, args.free_weights)
     if args.json:

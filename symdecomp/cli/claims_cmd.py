@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import Once, flag, print_json, progress
+from symdecomp.cli.common import Once, add_scheme_option, flag, print_json, progress
 
 
 def register(sub) -> None:
@@ -13,13 +13,15 @@ def register(sub) -> None:
         "claims",
         help="check the paper's claims and list their statuses",
         description="Check every claim of the paper registered in symdecomp and print one row per claim: "
-        "label, status (proved, verified, numeric, refuted, corrected, error) and a line of evidence. "
-        "Exit status 1 if any check failed to run (status 'error'); refuted or corrected claims are "
-        "findings about the paper, not failures.",
+        "label, status (proved, verified, numeric, refuted, corrected, undecided, not applicable, error) and a line "
+        "of evidence. Every claim is checked for the scheme given by --scheme (a name or a TOML file; default "
+        "catmull-clark): the printed statement is one input, the scheme the other. Exit status 1 if any check "
+        "failed to run (status 'error'); refuted or corrected claims are findings about the paper, not failures.",
     )
     flag(p, "--json", help="print a JSON list of {label, section, title, status, evidence, ...}")
     p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
+    add_scheme_option(p)
     flag(p, "--no-progress", help="do not draw a progress bar on stderr")
     p.set_defaults(func=run)
 
@@ -47,12 +49,13 @@ def run(args) -> int:
         claims = [c for c in claims if c.label in wanted]
     rows = []
     for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):
-        r = check_claim(c.label)
+        r = check_claim(c.label, args.scheme)
         row = {
             "label": c.label,
             "section": c.section,
             "title": c.title,
             "status": r.status.value,
+            "scheme": args.scheme.name,
             "evidence": str(r.evidence),
         }
         for key in ("counterexample", "correction", "digits", "valences"):

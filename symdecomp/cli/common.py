@@ -14,8 +14,9 @@ import json
 import re
 import sys
 
-from symdecomp.errors import InvalidInputError
-from symdecomp.schemes.scheme import Scheme, catmull_clark
+from symdecomp.errors import InvalidInputError, SymdecompError
+from symdecomp.schemes.files import SCHEMES, load_scheme
+from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import MAX_DIGITS, MAX_DPS
 
 __all__ = [
@@ -171,15 +172,12 @@ def digits(name: str = "--digits", *, minimum: int = 1, limit: str = "digits"):
     return parse
 
 
-#: Schemes selectable by name on the command line.
-SCHEMES = {"catmull-clark": catmull_clark}
-
-
 def scheme_by_name(name: str) -> Scheme:
+    """argparse type: a scheme by name (``SCHEMES``) or a TOML scheme file; a bad file is one line naming the key."""
     try:
-        return SCHEMES[name]()
-    except KeyError:
-        raise argparse.ArgumentTypeError(f"unknown scheme {name!r}; known: {', '.join(SCHEMES)}") from None
+        return load_scheme(name)
+    except SymdecompError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def add_scheme_option(parser: argparse.ArgumentParser) -> None:
@@ -188,7 +186,9 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         type=scheme_by_name,
         action=Once,
         default=SCHEMES["catmull-clark"](),
-        help=f"subdivision scheme (default: catmull-clark; known: {', '.join(SCHEMES)})",
+        metavar="NAME|FILE",
+        help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
+        "(format in the README)",
     )
 
 

@@ -69,6 +69,8 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \definecolor{sdrefuted}{rgb}{0.75,0.05,0.05}
 \definecolor{sdcorrected}{rgb}{0.75,0.4,0.0}
 \definecolor{sderror}{rgb}{0.45,0.0,0.45}
+\definecolor{sdundecided}{rgb}{0.4,0.4,0.4}
+\definecolor{sdnotapplicable}{rgb}{0.4,0.4,0.4}
 
 % Paragraphs with long inline formulas may stretch rather than run into the margin.
 \setlength{\emergencystretch}{3em}
@@ -79,8 +81,8 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 % Room between the rows of matrices, whose fractions are set in text style.
 \renewcommand{\arraystretch}{1.3}
 
-% A status, coloured.
-\newcommand{\status}[1]{\textcolor{sd#1}{\textbf{#1}}}
+% A status, coloured (the colour's name is the status without spaces).
+\newcommand{\status}[2][]{\textcolor{sd#1#2}{\textbf{#2}}}
 % The heading of one claim, with a target for the summary table.
 \newcommand{\claimheading}[3]{\subsubsection*{\phantomsection\label{#1}#2\quad #3}}
 % A finding about the paper (refuted, corrected) or a failed check: a coloured box.
@@ -446,6 +448,8 @@ def _(obj: Mapping) -> str:
 
 @aslatex.register(Status)
 def _(obj: Status) -> str:
+    if " " in obj.value:
+        return r"\status[%s]{%s}" % (obj.value.replace(" ", ""), obj.value)
     return r"\status{%s}" % obj.value
 
 
@@ -563,8 +567,7 @@ def _summary(pairs: Sequence[tuple[Claim, CheckResult]], anchors: Mapping[str, s
     counts: dict[str, int] = {}
     for _, result in pairs:
         counts[result.status.value] = counts.get(result.status.value, 0) + 1
-    order = [s.value for s in Status]
-    tally = ", ".join(f"{counts[s]} \\status{{{s}}}" for s in order if s in counts)
+    tally = ", ".join(f"{counts[s.value]} {aslatex(s)}" for s in Status if s.value in counts)
     rows = []
     for claim, result in pairs:
         anchor = anchors[claim.label]

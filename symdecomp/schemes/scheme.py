@@ -180,9 +180,8 @@ class Scheme:
             object.__setattr__(
                 self, "parameters", tuple(self.parameters) + tuple(sorted(free - declared, key=str))
             )
-        span = max(self.edge_rule.offsets() + self.face_rule.offsets()) - min(
-            self.edge_rule.offsets() + self.face_rule.offsets()
-        )
+        offsets = self.edge_rule.offsets() + self.face_rule.offsets() + (0,)
+        span = max(offsets) - min(offsets)
         object.__setattr__(self, "_span", span)
 
     def minimum_valence(self) -> int:

@@ -1,0 +1,95 @@
+"""Computed evidence for the Section 5.1 claims: values at a valence, start points of components, certified
+comparisons and iterations of the 1-ring (kept apart from the claims so that each module stays short)."""
+
+from __future__ import annotations
+
+import flint
+import sympy as sp
+
+from symdecomp.analysis.components import initial_vector_condition
+from symdecomp.analysis.spectrum import recursion_eigenvalues
+from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta as COS
+from symdecomp.symbols import n, omega
+from symdecomp.symbols import sin_jtheta as SIN
+
+__all__ = ["at_valence", "number", "representative", "start_points", "dominant_vs_frequency_zero", "filtering_evidence"]
+
+C = COS
+
+
+def at_valence(expr, valence: int, j: int = 1):
+    """``expr`` (in c = cos(j pi/n), s = sin(j pi/n), omega = omega_n^j) at a valence and frequency, exactly."""
+    angle = sp.pi * sp.Rational(j, valence)
+    return expr.subs({C: sp.cos(angle), SIN: sp.sin(angle), omega: sp.exp(2 * sp.I * angle), n: valence})
+
+
+def number(expr, digits: int = 12):
+    """A computed number, shown to ``digits`` digits (for reading; the verdicts are exact)."""
+    return sp.N(expr, digits)
+
+
+def representative(order: int, k: int = 1) -> tuple[int, int]:
+    """The smallest valence ``n >= 3`` and the component ``j`` with ``omega_2n^j = exp(2 pi i k/order)``."""
+    step = order // 2 if order % 2 == 0 else order
+    valence = step * -(-3 // step)
+    return valence, 2 * valence * k // order
+
+
+def start_points(scheme: Scheme):
+    """Every class of frequencies where a component starts on one eigenvector: one (n, j) per root of unity."""
+    cond = initial_vector_condition(scheme)
+    if cond.orders is None:
+        return cond, None
+    points = []
+    for m in cond.orders:
+        if m < 3:
+            continue
+        for k in range(1, m):
+            if sp.gcd(k, m) == 1:
+                points.append(cond.point(*representative(m, k)))
+    return cond, points
+
+
+def dominant_vs_frequency_zero(scheme: Scheme, last: int) -> tuple[bool, int]:
+    """Certify in interval arithmetic (Arb) that the derived dominant eigenvalue of M_1 exceeds the two
+    derived eigenvalues of the Eq. 43 block other than 1, for n = 3..last.
+
+    Returns ``(True, last)``, or ``(False, n)`` at the first ``n`` where it is certainly not larger;
+    raises ``ArithmeticError`` where the balls overlap (undecided at this precision)."""
+    from symdecomp.algebra.compile import compile_expression
+
+    dominant = compile_expression(tangent_eigenvalues(scheme).dominant, (C,), engine="arb")
+    block = [compile_expression(e, (n,), engine="arb") for e in recursion_eigenvalues(scheme) if e != 1]
+    with flint.ctx.workprec(128):
+        for m in range(3, last + 1):
+            lam1 = abs(dominant(flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(1, m)))))
+            for f in block:
+                mu = abs(f(flint.acb(m)))  # comparisons of balls are rigorous: true only when certain
+                if lam1 > mu:
+                    continue
+                if lam1 <= mu:
+                    return False, m
+                raise ArithmeticError(f"n = {m}: lambda_1 and an Eq. 43 eigenvalue not separated at 128 bits")
+    return True, last
+
+
+def filtering_evidence(scheme: Scheme, valence: int):
+    """|1-ring after k steps| / lambda_1^k for the component j = n + 1 alone, k = 10, 20, 40 (60 digits)."""
+    import mpmath
+
+    from symdecomp.schemes.ring import OneRing, subdivide
+
+    with mpmath.workdps(60):
+        j = valence + 1
+        pts = [mpmath.expjpi(mpmath.mpf(j * m) / valence) for m in range(2 * valence)]
+        ring = OneRing.from_points((0, 0, 0), [(p.real, p.imag, 0) for p in pts[0::2]], [(p.real, p.imag, 0) for p in pts[1::2]])
+        lam1 = mpmath.mpf(sp.N(at_valence(tangent_eigenvalues(scheme).dominant, valence), 70))
+        ratios, current = [], ring
+        for k in range(1, 41):
+            current = subdivide(scheme, current)
+            if k in (10, 20, 40):
+                norm = mpmath.sqrt(mpmath.fsum(x**2 for p in current.a + current.b for x in p))
+                ratios.append(sp.Float(mpmath.nstr(norm / lam1**k, 15), 15))
+    return ratios

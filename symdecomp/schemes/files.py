@@ -1,0 +1,229 @@
+"""Schemes written in TOML files, and schemes looked up by name.
+
+A scheme of the paper's shape (Eq. 14-16) is three affine rules on the 1-ring of a vertex of
+valence ``n``. Standard Catmull-Clark, written as a file::
+
+    name = "catmull-clark"
+    [edge]            # new a_i = O*w + sum_k a[k]*a_{i+k} + sum_k b[k]*b_{i+k}
+    O = "3/8"
+    a = { "-1" = "1/16", "0" = "3/8", "1" = "1/16" }
+    b = { "-1" = "1/16", "0" = "1/16" }
+    [face]            # new b_i (b_i lies between a_i and a_{i+1})
+    O = "1/4"
+    a = { "0" = "1/4", "1" = "1/4" }
+    b = { "0" = "1/4" }
+    [vertex]          # new O; the weight of O is 1 - n*a - n*b
+    a = "3/(2*n**2)"
+    b = "1/(4*n**2)"
+
+Every weight is exact: an integer or a string read by
+:func:`symdecomp.expressions.parse_expression` (rationals, ``n``, the names listed in an optional
+``parameters = ["alpha", "beta"]``, ``pi``, ``sqrt``, ``cos``, ``sin``); nothing is evaluated.
+Offsets are integers of any size (``"-2"``, ``"3"``): a stencil wider than the valence is refused
+where the matrix is built. ``[vertex]`` may also give ``O``; it must then equal ``1 - n*a - n*b``.
+``mesh = "quad"`` (the default) is the only mesh type so far.
+
+Every problem is reported as one :class:`~symdecomp.errors.InvalidSchemeError` (or
+:class:`~symdecomp.errors.NotAffineError`) naming the file and the key:
+
+>>> scheme_from_text('[edge]\\nO = 0.375', source="s.toml")
+Traceback (most recent call last):
+...
+symdecomp.errors.InvalidSchemeError: s.toml: [edge] O: 0.375 is a float; give an exact rational such as "3/8"
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable, Mapping
+
+import sympy as sp
+import tomllib
+
+from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError, SymdecompError
+from symdecomp.expressions import parse_expression
+from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
+from symdecomp.symbols import alpha as ALPHA
+from symdecomp.symbols import beta as BETA
+from symdecomp.symbols import n as N
+
+__all__ = ["SCHEMES", "load_scheme", "scheme_from_text", "scheme_to_text"]
+
+#: Schemes known by name (``--scheme NAME``).
+SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark}
+
+#: Mesh types a file may name; ``"quad"`` is the default.
+MESHES = ("quad",)
+
+_TOP_KEYS = {"name", "mesh", "parameters", "edge", "face", "vertex"}
+_RULE_KEYS = {"O", "a", "b"}
+_OFFSET = re.compile(r"^[+-]?[0-9]{1,4}$")
+_IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,15}$")
+_RESERVED = {"n", "pi", "sqrt", "cos", "sin"}
+_KNOWN_SYMBOLS = {"alpha": ALPHA, "beta": BETA}
+MAX_FILE_BYTES = 100_000
+
+
+def load_scheme(name_or_path: str | os.PathLike) -> Scheme:
+    """A scheme by name (``"catmull-clark"``) or from a TOML file (see the module docstring)."""
+    text_name = os.fspath(name_or_path)
+    if text_name in SCHEMES:
+        return SCHEMES[text_name]()
+    if not os.path.isfile(text_name):
+        raise InvalidSchemeError(
+            f"unknown scheme {text_name!r}: neither a known name ({', '.join(SCHEMES)}) nor a readable file"
+        )
+    try:
+        with open(text_name, "rb") as handle:
+            raw = handle.read(MAX_FILE_BYTES + 1)
+    except OSError as exc:
+        raise InvalidSchemeError(f"{text_name}: cannot read the file ({exc.strerror})") from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise InvalidSchemeError(f"{text_name}: larger than {MAX_FILE_BYTES} bytes; a scheme file is a few lines")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        raise InvalidSchemeError(f"{text_name}: not UTF-8 text") from None
+    default_name = os.path.splitext(os.path.basename(text_name))[0]
+    return scheme_from_text(text, source=text_name, default_name=default_name)
+
+
+def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str = "scheme") -> Scheme:
+    """Build a :class:`~symdecomp.schemes.scheme.Scheme` from the text of a scheme file."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InvalidSchemeError(f"{source}: not valid TOML ({exc})") from None
+    unknown = sorted(set(data) - _TOP_KEYS)
+    if unknown:
+        raise InvalidSchemeError(f"{source}: unknown key {unknown[0]!r} (known: {', '.join(sorted(_TOP_KEYS))})")
+    name = data.get("name", default_name)
+    if not isinstance(name, str) or not name.strip() or len(name) > 100:
+        raise InvalidSchemeError(f"{source}: name must be a non-empty string of at most 100 characters")
+    mesh = data.get("mesh", "quad")
+    if mesh not in MESHES:
+        raise InvalidSchemeError(f"{source}: mesh {mesh!r} is not supported (known: {', '.join(MESHES)})")
+    symbols = _parameters(data.get("parameters", []), source)
+    rules = {}
+    for section in ("edge", "face", "vertex"):
+        if section not in data:
+            raise InvalidSchemeError(f"{source}: missing section [{section}]")
+        if not isinstance(data[section], dict):
+            raise InvalidSchemeError(f"{source}: {section} must be a table [{section}]")
+        build = _vertex if section == "vertex" else _stencil
+        rules[section] = build(data[section], section, source, symbols)
+    edge, face, vertex = rules["edge"], rules["face"], rules["vertex"]
+    declared = tuple(s for key, s in symbols.items() if key != "n")
+    try:
+        scheme = Scheme(name.strip(), edge, face, vertex, declared)
+    except SymdecompError as exc:
+        raise InvalidSchemeError(f"{source}: {exc}") from None
+    undeclared = set(scheme.parameters) - set(declared)
+    if undeclared:  # pragma: no cover - the parser only knows declared names
+        raise InvalidSchemeError(f"{source}: undeclared symbols {sorted(map(str, undeclared))}")
+    return scheme
+
+
+def _parameters(value, source: str) -> dict[str, sp.Symbol]:
+    if not isinstance(value, list) or not all(isinstance(p, str) for p in value):
+        raise InvalidSchemeError(f"{source}: parameters must be a list of names, e.g. [\"alpha\", \"beta\"]")
+    symbols = {"n": N}
+    for p in value:
+        if not _IDENTIFIER.match(p) or p in _RESERVED:
+            raise InvalidSchemeError(
+                f"{source}: parameters: {p!r} is not a usable name (letters and digits, at most 16, not n, pi, sqrt, cos, sin)"
+            )
+        if p in symbols:
+            raise InvalidSchemeError(f"{source}: parameters: {p!r} is declared twice")
+        symbols[p] = _KNOWN_SYMBOLS.get(p, sp.Symbol(p, real=True))
+    return symbols
+
+
+def _weight(value, where: str, source: str, symbols: Mapping[str, sp.Symbol]) -> sp.Expr:
+    if isinstance(value, bool):
+        raise InvalidSchemeError(f"{source}: {where}: {value!r} is a boolean, not a weight")
+    if isinstance(value, float):
+        raise InvalidSchemeError(f"{source}: {where}: {value!r} is a float; give an exact rational such as \"3/8\"")
+    if isinstance(value, int):
+        return sp.Integer(value)
+    if not isinstance(value, str):
+        raise InvalidSchemeError(f"{source}: {where}: expected a weight such as \"3/8\", got a {type(value).__name__}")
+    try:
+        expr = parse_expression(value, symbols, argument="weight")
+    except InvalidExpressionError as exc:
+        raise InvalidSchemeError(f"{source}: {where}: {exc}") from None
+    if expr.has(sp.I) or expr.is_real is False:
+        raise InvalidSchemeError(f"{source}: {where}: {value!r} is not real")
+    return expr
+
+
+def _offsets(value, where: str, source: str, symbols) -> dict[int, sp.Expr]:
+    if not isinstance(value, dict):
+        raise InvalidSchemeError(f"{source}: {where}: expected a table of offsets, e.g. {{ \"-1\" = \"1/16\", \"0\" = \"3/8\" }}")
+    out: dict[int, sp.Expr] = {}
+    for key, weight in value.items():
+        if not _OFFSET.match(key):
+            raise InvalidSchemeError(f"{source}: {where}.{key!r}: an offset must be an integer such as \"-1\", \"0\" or \"2\"")
+        k = int(key)
+        if k in out:
+            raise InvalidSchemeError(f"{source}: {where}.{key!r}: offset {k} is given twice")
+        out[k] = _weight(weight, f"{where}.{key!r}", source, symbols)
+    return out
+
+
+def _check_keys(table: dict, allowed: set, section: str, source: str) -> None:
+    unknown = sorted(set(table) - allowed)
+    if unknown:
+        raise InvalidSchemeError(f"{source}: [{section}] unknown key {unknown[0]!r} (known: {', '.join(sorted(allowed))})")
+
+
+def _stencil(table: dict, section: str, source: str, symbols) -> Stencil:
+    _check_keys(table, _RULE_KEYS, section, source)
+    center = _weight(table.get("O", 0), f"[{section}] O", source, symbols)
+    a = _offsets(table.get("a", {}), f"[{section}] a", source, symbols)
+    b = _offsets(table.get("b", {}), f"[{section}] b", source, symbols)
+    total = sp.simplify(center + sum(a.values(), sp.Integer(0)) + sum(b.values(), sp.Integer(0)))
+    if sp.simplify(total - 1) != 0:
+        raise NotAffineError(f"{source}: [{section}] is not affine: O + sum of a + sum of b = {total}, not 1")
+    return Stencil.from_weights(center, a, b, name=f"{section} rule")
+
+
+def _vertex(table: dict, section: str, source: str, symbols) -> VertexRule:
+    _check_keys(table, _RULE_KEYS, "vertex", source)
+    for key in ("a", "b"):
+        if key not in table:
+            raise InvalidSchemeError(f"{source}: [vertex] {key} is missing (the weight of each {key}_i in the new O)")
+    a = _weight(table["a"], "[vertex] a", source, symbols)
+    b = _weight(table["b"], "[vertex] b", source, symbols)
+    rule = VertexRule.affine(a, b)
+    if "O" in table:
+        center = _weight(table["O"], "[vertex] O", source, symbols)
+        if sp.simplify(center - rule.center) != 0:
+            raise NotAffineError(f"{source}: [vertex] is not affine: O = {center}, but 1 - n*a - n*b = {rule.center}")
+    return rule
+
+
+def _text(expr: sp.Expr) -> str:
+    return sp.sstr(expr)
+
+
+def scheme_to_text(scheme: Scheme) -> str:
+    """The scheme file of ``scheme`` (read back by :func:`scheme_from_text` to an equal scheme).
+
+    >>> cc = catmull_clark()
+    >>> scheme_from_text(scheme_to_text(cc)) == cc
+    True
+    """
+
+    def offsets(pairs):
+        return "{ " + ", ".join(f'"{k}" = "{_text(w)}"' for k, w in pairs) + " }"
+
+    lines = [f'name = "{scheme.name}"']
+    if scheme.parameters:
+        lines.append("parameters = [" + ", ".join(f'"{p}"' for p in scheme.parameters) + "]")
+    for section, rule in (("edge", scheme.edge_rule), ("face", scheme.face_rule)):
+        lines += [f"[{section}]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", f"b = {offsets(rule.b)}"]
+    v = scheme.vertex_rule
+    lines += ["[vertex]", f'a = "{_text(v.each_a)}"', f'b = "{_text(v.each_b)}"']
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,95 @@
+"""Claims for a scheme given as a file: the issue's Catmull-Clark file gives the built-in statuses, and a file
+with one weight moved by 1/64 gives statuses that agree with iterating that scheme's own subdivision matrix."""
+
+import json
+
+import mpmath
+import sympy as sp
+
+from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.claims import Status, all_claims, check_claim
+from symdecomp.cli import main
+from symdecomp.schemes.files import scheme_from_text
+from symdecomp.schemes.scheme import subdivision_matrix
+from tests.test_claim_statuses import EXPECTED
+from tests.test_mutations import MOVED
+from tests.test_scheme_files import CC_TOML
+
+
+def test_the_catmull_clark_file_gives_the_built_in_statuses(tmp_path, capsys):
+    path = tmp_path / "cc.toml"
+    path.write_text(CC_TOML)
+    assert main(["claims", "--scheme", str(path), "--json", "--section", "5.1"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert {r["label"]: r["status"] for r in rows} == {k: v.value for k, v in EXPECTED.items() if k in {r["label"] for r in rows}}
+    scheme = scheme_from_text(CC_TOML)
+    assert {c.label: check_claim(c.label, scheme).status for c in all_claims()} == EXPECTED
+
+
+def _iterate(S, x, steps):
+    with mpmath.workdps(40):
+        A = mpmath.matrix(S.tolist())
+        v = mpmath.matrix(x)
+        norms = []
+        for _ in range(steps):
+            v = A * v
+            norms.append(mpmath.norm(v))
+        return norms
+
+
+def _lambda1(scheme, n):
+    return sp.N(tangent_eigenvalues(scheme).dominant.subs(sp.Symbol("c", real=True), sp.cos(sp.pi / n)), 40)
+
+
+def test_moved_scheme_remark_5_1_agrees_with_its_matrix():
+    moved = scheme_from_text(MOVED)
+    result = check_claim("Remark 5.1", moved)
+    assert result.status is Status.REFUTED
+    # iterate the component j = n + 1 alone (a's and b's on the 2n-gon mode) with the scheme's own matrix
+    n = 5
+    S = subdivision_matrix(moved, n).evalf(40)
+    zeta = [sp.exp(sp.I * sp.pi * (n + 1) * m / n) for m in range(2 * n)]
+    x = [0] + [sp.re(zeta[2 * i]).evalf(40) for i in range(n)] + [sp.re(zeta[2 * i + 1]).evalf(40) for i in range(n)]
+    norms = _iterate(S, x, 60)
+    rate = norms[-1] / norms[-2]
+    assert abs(rate - _lambda1(moved, n)) < 1e-12  # it shrinks at the tangent-plane rate: not filtered out
+    assert "n = 3" in str(result.counterexample)  # the smallest valence, computed for this scheme
+
+
+def test_moved_scheme_eq_34_and_prop_5_1_agree_with_its_matrix():
+    moved = scheme_from_text(MOVED)
+    assert check_claim("Eq. 34", moved).status is Status.REFUTED
+    assert check_claim("Proposition 5.1", moved).status is Status.VERIFIED
+    n = 5
+    with mpmath.workdps(30):
+        eigs = sorted((abs(e) for e in mpmath.eig(mpmath.matrix(subdivision_matrix(moved, n).evalf(30).tolist()))[0]), reverse=True)
+    lam1 = _lambda1(moved, n)
+    # the largest eigenvalue after 1 is the derived lambda_1, twice (j = 1 and j = n - 1): Prop. 5.1
+    assert abs(eigs[1] - lam1) < 1e-20 and abs(eigs[2] - lam1) < 1e-20 and eigs[3] < lam1 - 1e-3
+    # the printed Eq. 34 value at j = 1 is not an eigenvalue of this matrix; the counterexample names both
+    printed = sp.N(sp.Rational(1, 4) + sp.cos(sp.pi / n) ** 2 / 8 + sp.cos(sp.pi / n) / 4 * sp.sqrt(1 + sp.cos(sp.pi / n) ** 2 / 4), 30)
+    assert min(abs(e - printed) for e in eigs) > 1e-3
+    counterexample = str(check_claim("Eq. 34", moved).counterexample)
+    assert str(sp.N(lam1, 12)) in counterexample and str(sp.N(printed, 12)) in counterexample
+
+
+def test_moved_scheme_eq_39_and_the_n4_finding_agree_with_its_matrix():
+    moved = scheme_from_text(MOVED)
+    n = 4
+    S = subdivision_matrix(moved, n).evalf(40)
+    # component j = 1 of the 2n-gon: after many steps B^1/A^1 settles to the ratio on the dominant eigenvector
+    zeta = [sp.exp(sp.I * sp.pi * m / n).evalf(40) for m in range(2 * n)]
+    x = sp.Matrix([0] + [zeta[2 * i] for i in range(n)] + [zeta[2 * i + 1] for i in range(n)])
+    for _ in range(80):
+        x = (S * x).evalf(40)
+    ratio = sp.N(x[1 + n] / x[1], 20)  # b_0 / a_0
+    result = check_claim("Eq. 39 (n = 4)", moved)
+    assert result.status is Status.REFUTED
+    derived = sp.N(sp.sympify(result.steps[0].expr), 20)
+    assert abs(complex(ratio) - complex(derived)) < 1e-12 and abs(complex(ratio) - (1 + 1j)) > 1e-3
+    # the n = 4 finding: with this scheme's weights mu != lambda_1^2 at n = 4 (eigenvalues of S itself)
+    assert check_claim("Section 5.2: Catmull-Clark example", moved).status is Status.REFUTED
+    with mpmath.workdps(30):
+        eigs = sorted((abs(e) for e in mpmath.eig(mpmath.matrix(S.tolist()))[0]), reverse=True)
+    lam1 = _lambda1(moved, n)
+    assert min(abs(e - lam1**2) for e in eigs) > 1e-4

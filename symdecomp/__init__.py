@@ -10,7 +10,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
 ``algebra/``       no scheme knowledge: circulants and the Fourier matrix and its rows (Section 2,
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
-                   exact/interval evaluation of expressions (``compile``)
+                   exact/interval evaluation of expressions (``compile``), small exact
+                   eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``)
 ``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes;
                    Loop, ``loop``) and the one assembly of its
                    subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
@@ -19,7 +20,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    meshes refined by its rules (Section 3, ``mesh``; triangle meshes,
                    ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
                    its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
-                   (``files``; Loop, ``loop``)
+                   (``files``; Loop, ``loop``),
+                   Stam's (2N+8)-point patch matrix (``patch``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
@@ -31,16 +33,18 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    where a 1-ring component starts on one eigenvector of M_j (Eq. 35-38,
                    ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form
-                   charpoly (``ring_charpoly``), masks (``ring_masks``)
+                   charpoly (``ring_charpoly``), masks (``ring_masks``); the patch's certified
+                   eigen-data (``eigendata``) and exact evaluation (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``,
                    ``ring_numeric``), certified (``certify``, ``ring_certify``), both returning a
                    ``CrossCheckResult`` (``result``), OpenSubdiv (``oracle``, ``opensubdiv``);
                    certified C1 by Reif's test (``c1``, ``c1_spectrum``, Bernstein-Bezier nets
-                   ``bezier``)
+                   ``bezier``); dyadic limit positions for the patch evaluator (``patch_eval``)
 ``claims/``        the paper's claims, one module per section, and their registry; every claim
                    is checked for a scheme (``check_claim(label, scheme)``); ``applicability``
                    and ``evidence`` hold what several checks share
-``output/``        LaTeX (``latex``, one entry point ``aslatex``) and figures (``plotting``)
+``output/``        LaTeX (``latex``, one entry point ``aslatex``), figures (``plotting``), Stam's
+                   data file (``evaldata``)
 ``cli/``           the ``symdecomp`` command, one module per subcommand
 =================  ===========================================================================
 
@@ -65,8 +69,10 @@ from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigen
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
+from symdecomp.analysis.eigendata import NotDiagonalizableError, certified_eigendata
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
+from symdecomp.analysis.evaluation import PatchEvaluator
 from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
@@ -92,6 +98,7 @@ from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdi
 from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
+from symdecomp.schemes.patch import patch_matrices
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
@@ -175,6 +182,11 @@ __all__ = [
     "ring_spectrum",
     "ring_masks",
     "certify_ring",
+    # exact evaluation near an extraordinary vertex (Stam)
+    "patch_matrices",
+    "certified_eigendata",
+    "NotDiagonalizableError",
+    "PatchEvaluator",
     # cross-checks against the full matrix
     "ClosedForms",
     "derived_closed_forms",

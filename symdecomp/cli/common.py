@@ -57,6 +57,7 @@ LIMITS = {
     "c1": (128, "each valence needs the spectrum of the 2-ring matrix and interval bounds of its characteristic map"),
     "c1 --depth": (12, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
+    "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 1200 bits"),
 }
 
 _INTEGER = re.compile(r"[+-]?[0-9]{1,12}", re.ASCII)

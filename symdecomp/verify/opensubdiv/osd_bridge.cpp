@@ -182,6 +182,79 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
     }
 }
 
+// Refine the quad mesh `levels` times (uniform Catmull-Clark) and write, for every vertex of
+// the last level, its refined position (points_out) and OpenSubdiv's limit position
+// (Far::PrimvarRefiner::Limit; limits_out), 3 doubles each. *count receives the number of
+// last-level vertices; if it exceeds `capacity` nothing is written and 7 is returned.
+int symdecomp_osd_limit_points(int n_vertices, int n_faces, const int *face_vertices,
+                               const double *positions, int levels, int capacity, int *count,
+                               double *points_out, double *limits_out, char *error,
+                               int error_len) {
+    try {
+        osd_failed = false;
+        Far::SetErrorCallback(record_error);
+        if (n_vertices <= 0 || n_faces <= 0 || levels < 0) {
+            set_error(error, error_len, "bad sizes");
+            return 1;
+        }
+        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), 4);
+        Far::TopologyDescriptor desc;
+        desc.numVertices = n_vertices;
+        desc.numFaces = n_faces;
+        desc.numVertsPerFace = verts_per_face.data();
+        desc.vertIndicesPerFace = face_vertices;
+        Sdc::Options sdc;
+        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+        std::unique_ptr<Far::TopologyRefiner> refiner(
+            Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+        if (!refiner || osd_failed) {
+            set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
+            return 2;
+        }
+        Far::TopologyRefiner::UniformOptions uniform(levels);
+        uniform.fullTopologyInLastLevel = true;
+        refiner->RefineUniform(uniform);
+        const int last = refiner->GetLevel(levels).GetNumVertices();
+        *count = last;
+        if (last > capacity) {
+            set_error(error, error_len, "output capacity too small");
+            return 7;
+        }
+        std::vector<Point> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+        for (int v = 0; v < n_vertices; ++v) {
+            for (int c = 0; c < 3; ++c) buffer[v].p[c] = positions[3 * v + c];
+        }
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        Point *src = buffer.data();
+        for (int level = 1; level <= levels; ++level) {
+            Point *dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+            primvar.Interpolate(level, src, dst);
+            src = dst;
+        }
+        std::vector<Point> limit(static_cast<size_t>(last));
+        Point *limit_dst = limit.data();
+        primvar.Limit(src, limit_dst);
+        if (osd_failed) {
+            set_error(error, error_len, last_osd_error);
+            return 6;
+        }
+        for (int v = 0; v < last; ++v) {
+            for (int c = 0; c < 3; ++c) {
+                points_out[3 * v + c] = src[v].p[c];
+                limits_out[3 * v + c] = limit[v].p[c];
+            }
+        }
+        return 0;
+    } catch (std::exception const &exc) {
+        set_error(error, error_len, exc.what());
+        return 9;
+    } catch (...) {
+        set_error(error, error_len, "unknown C++ exception");
+        return 9;
+    }
+}
+
 }  // extern "C"
 
 // ---------------------------------------------------------------------------------------------

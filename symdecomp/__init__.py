@@ -97,8 +97,8 @@ from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
-from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.patch import patch_matrices
+from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify

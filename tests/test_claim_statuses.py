@@ -17,6 +17,9 @@ EXPECTED = {
     "Eq. 2-4": P,
     "Eq. 5": P,
     "Eq. 6": P,
+    "Eq. 7": P,
+    "Eq. 8": P,
+    "Eq. 9": P,
     "Proposition 2.1": P,
     # Section 3
     "Section 3: symmetry": V,

@@ -79,6 +79,10 @@ TABLE = [
     ("Eq. 2-4", printed("s2_background", "PRINTED_VERTEX", lambda j, m, size: sp.exp(2 * sp.pi * sp.I * j * m**2 / size)), R),
     ("Eq. 5", printed("s2_background", "PRINTED_ORDER", lambda size: size + 1), R),
     ("Eq. 6", printed("s2_background", "PRINTED_PAIR_SIGN", 1), R),
+    ("Eq. 7", printed("s2_circulants", "PRINTED_INDEX", lambda r, s, size: sp.Mod(r - s, size)), R),
+    ("Eq. 8", printed("s2_circulants", "PRINTED_EIGENVALUE_TERM", lambda l, k, size: sp.exp(-sp.I * 2 * sp.pi * l * k / size)), R),
+    ("Eq. 8", printed("s2_circulants", "PRINTED_INDEX", lambda r, s, size: sp.Mod(r - s, size)), R),
+    ("Eq. 9", printed("s2_circulants", "PRINTED_POLYNOMIAL_TERM", lambda l, z: z ** (l + 1)), R),
     ("Proposition 2.1", printed("s2_background", "PRINTED_EIGENVALUE", lambda coeffs: sum(c * OMEGA ** (-k) for k, c in coeffs.items())), R),
     # Section 3: the supports live on meshes; the moved edge rule is not a mesh rule
     ("Section 3: symmetry", "moved", NA),

@@ -43,7 +43,7 @@ EXPECTED = {
     "Eq. 34": P,
     "Eq. 35-37": C,  # 0/0 at j = n/2
     "Eq. 38": C,  # M_j = I/4 at j = n/2
-    "Proposition 5.1": V,
+    "Proposition 5.1": P,  # certified n = 3..1000, exact tail bound from n = 4
     "Remark 5.1": R,  # j = n +- 1 shrink at the tangent-plane rate
     "Eq. 39": C,  # B^j = r A^j, not A^j = r B^j
     "Eq. 39 (n = 4)": V,

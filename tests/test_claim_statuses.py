@@ -62,7 +62,7 @@ EXPECTED = {
     # Section 5.3
     "Section 5.3: smaller eigenvalues": C,  # equal at n = 3
     "Section 5.3: quadratic speed": P,
-    "Section 5.3: construction": V,
+    "Section 5.3: construction": P,  # frequencies j = 1, 2 closed under the rules for every n (symbolic row i)
     "Section 5.3: basis function": V,
     # Section 6
     "Proposition 6.1": C,  # index range 0<i,j<n-1 as printed

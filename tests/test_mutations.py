@@ -145,7 +145,8 @@ TABLE = [
     ("Section 5.3: smaller eigenvalues", "moved", C),
     ("Section 5.3: quadratic speed", "moved", R),
     ("Section 5.3: construction", "asymmetric", NA),
-    ("Section 5.3: construction", "moved", V),
+    ("Section 5.3: construction", "moved", P),
+    ("Section 5.3: construction", "wide", P),
     # Section 6
     ("Proposition 6.1", printed("s6_cb_matrices", "_printed_range", lambda i, j, size: True), P),
     ("Proposition 6.2", printed("s6_cb_matrices", "_printed_range", lambda i, j, size: True), P),

@@ -35,6 +35,8 @@ EXPECTED = {
     "Proposition 4.1": P,
     "Proposition 4.2": P,
     "Proposition 4.3": P,
+    "Eq. 22": P,
+    "Eq. 23": P,
     "Eq. 24": P,
     # Section 5.1
     "Eq. 25-30": P,

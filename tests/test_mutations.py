@@ -102,6 +102,8 @@ TABLE = [
     ("Proposition 4.3", "not affine", R),
     ("Proposition 4.3", "moved", P),
     # Section 5.1
+    ("Eq. 22", printed("s4_components", "PRINTED_EQ22", (Q(7, 10), {-1: Q(1, 10), 0: Q(1, 10)})), R),
+    ("Eq. 23", printed("s4_components", "PRINTED_EQ23", (Q(8, 10), {0: Q(1, 10), 1: Q(1, 10)})), R),
     ("Eq. 24", printed("s4_one_ring", "PRINTED_B_OVER_A", sp.exp(2 * sp.pi * sp.I * sp.Symbol("j", integer=True) / n)), R),
     ("Eq. 25-30", printed("s5_1_tangent", "PRINTED_CIRCULANTS", {"alpha": {0: Q(1, 2), 1: Q(1, 4), -1: Q(1, 4)},
                                                                  "beta": {0: Q(1, 2), -1: Q(1, 2)}, "gamma": {0: Q(1, 2), 1: Q(1, 2)}}), R),

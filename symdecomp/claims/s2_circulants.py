@@ -72,7 +72,7 @@ def _eq7(scheme: Scheme) -> CheckResult:
     return CheckResult(
         Status.PROVED,
         Text(
-            "entry ", CIRC[PRINTED_INDEX(ROW, COL, n)], ": the index is unchanged by ", eq(ROW, ROW + 1), ", ", eq(COL, COL + 1),
+            "entry ", CIRC[PRINTED_INDEX(ROW, COL, n)], ": the index is unchanged when ", ROW, " and ", COL, " both increase by 1",
             " (so each row is the previous one shifted right), and the first row is ", CIRC[0], "..", CIRC[n - 1],
             ", the last row starts ", CIRC[1], " and ends ", CIRC[0], ", for every ", n,
         ),

@@ -234,3 +234,119 @@ def test_irrational_weights_get_one_line_not_a_traceback():
     scheme = catmull_clark(R(3, 2) / N**2 + sp.sqrt(2) / 100, R(1, 4) / N**2)
     with pytest.raises(InvalidSchemeError, match="needs rational weights at each valence; at n = 5"):
         c1_test(scheme, 5)
+
+
+def test_an_exact_eigenvalue_minus_one_is_not_c1_not_undecided():
+    """alpha = 1/10, beta = 1/4 at n = 5: the Eq. 43 block has the exact eigenvalue -1, so 1 is not strictly dominant."""
+    scheme = catmull_clark(R(1, 10), R(1, 4))
+    from symdecomp.analysis.frequency import recursion_matrix
+
+    assert sp.Matrix(recursion_matrix(scheme, 5)).eigenvals() == {1: 1, -1: 1, 0: 1}
+    r = c1_test(scheme, 5)
+    assert r.verdict == "not-c1" and "frequency 0" in r.reason and "not smaller than 1" in r.reason
+    assert (r.spectral.subdominant.value + 1).contains(0) and r.spectral.subdominant.value.imag.contains(0)
+
+
+def test_an_exact_tie_of_frequencies_0_and_1_is_multiplicity_3_not_undecided():
+    """alpha = 0, beta = 1/16 at n = 3: (9 +- sqrt 17)/32 is a root at frequencies 0, 1 and 2 (triple), so not C1.
+
+    More precision never separates equal eigenvalues; the tie is shown exactly (in Q(e^{2 pi i / n})).
+    """
+    from symdecomp.schemes.scheme import subdivision_matrix
+
+    scheme = catmull_clark(0, R(1, 16))
+    x = sp.Symbol("x")
+    poly = sp.Matrix(subdivision_matrix(scheme, 3)).charpoly(x).as_expr()
+    assert sp.expand(poly - (x - 1) * (x**2 - R(9, 16) * x + R(1, 16)) ** 3) == 0
+    r = c1_test(scheme, 3)
+    assert r.verdict == "not-c1" and "multiplicity 3" in r.reason and "frequencies 0, 1" in r.reason
+    assert (r.spectral.subdominant.value - (9 + flint.arb(17).sqrt()) / 32).contains(0)
+    # a nearby beta separates the eigenvalues, and the test decides by the ordinary route
+    assert c1_test(catmull_clark(0, R(1, 15)), 3).verdict in ("c1", "not-c1")
+    assert "multiplicity 3" not in c1_test(catmull_clark(0, R(1, 15)), 3).reason
+
+
+def _two_ring_matrix(scheme, n):
+    """The ``(6n + 1) x (6n + 1)`` 2-ring matrix (floats) by refining the whole 2-ring mesh of unit vectors.
+
+    Independent of the frequency blocks: every level-1 point is read off :func:`refine` with
+    Catmull-Clark's rules, except the new ``O``, read off ``refine`` with ``scheme``'s rules
+    (the C1 test applies ``scheme``'s vertex rule at ``O`` only).
+    """
+    from fractions import Fraction
+
+    import numpy as np
+
+    labels = ring_mesh_labels(n, 2)
+    ident = {lab: i for i, lab in enumerate(labels)}
+    size = len(labels)
+    mesh = ring_mesh(n, 2, lambda s, u, v: tuple(Fraction(int(ident[(s, u, v)] == k)) for k in range(size)))
+    step = refine(mesh, catmull_clark())
+
+    def old(s, u, v):
+        s %= n
+        return 0 if (u, v) == (0, 0) else ident[((s + 1) % n, v, 0)] if u == 0 else ident[(s, u, v)]
+
+    rows = {}
+    for s in range(n):
+        rows[ident[(s, 1, 0)]] = step.edge_point[frozenset((0, old(s, 1, 0)))]
+        rows[ident[(s, 1, 1)]] = step.face_point[s * 4]
+        rows[ident[(s, 1, 2)]] = step.edge_point[frozenset((old(s, 0, 1), old(s, 1, 1)))]
+        rows[ident[(s, 2, 0)]] = step.vertex_point[old(s, 1, 0)]
+        rows[ident[(s, 2, 1)]] = step.edge_point[frozenset((old(s, 1, 0), old(s, 1, 1)))]
+        rows[ident[(s, 2, 2)]] = step.vertex_point[old(s, 1, 1)]
+    A = [[float(x) for x in step.mesh.values[rows[i]]] if i else None for i in range(size)]
+    at_o = refine(mesh, scheme)
+    A[0] = [float(x) for x in at_o.mesh.values[at_o.vertex_point[0]]]
+    return np.array(A)
+
+
+@pytest.mark.parametrize(
+    "alpha_beta, n",
+    [(None, 3), (None, 5), (None, 6), (None, 8), ((R(-1, 4), R(1, 2)), 5), ((R(-1, 4), R(1, 4)), 6)],
+)
+def test_the_certified_spectrum_is_the_whole_two_ring_spectrum(alpha_beta, n):
+    """lambda, its multiplicity 2 and the bound of every other eigenvalue hold for the full (6n+1) matrix (numpy)."""
+    import numpy as np
+
+    scheme = catmull_clark(*alpha_beta) if alpha_beta else catmull_clark()
+    A = _two_ring_matrix(scheme, n)
+    assert A.shape == (6 * n + 1, 6 * n + 1) and np.allclose(A.sum(axis=1), 1)
+    moduli = sorted(abs(np.linalg.eigvals(A)), reverse=True)
+    r = c1_test(scheme, n)
+    assert r.verdict == "c1", r.reason
+    lam = float(r.spectral.subdominant.value.real.mid())
+    assert abs(moduli[0] - 1) < 1e-9 and moduli[1] < 1 - 1e-6  # 1 simple
+    assert abs(moduli[1] - lam) < 1e-9 and abs(moduli[2] - lam) < 1e-9  # lambda twice
+    assert moduli[3] <= r.spectral.second + 1e-9 and r.spectral.gap <= lam - moduli[3] + 1e-9  # every other one
+
+
+def _triangular_scheme():
+    """At n = 3 the edge rule at O has no b weights, so M_1 is lower triangular and lambda = 7/16 is its b-b entry."""
+    cc = catmull_clark()
+    e, t = R(5, 8) - N / 16, N / 16 - R(3, 16)
+    edge = Stencil.from_weights(e, {-1: R(1, 16), 0: e, 1: R(1, 16)}, {-1: t, 0: t})
+    face = Stencil.from_weights(N / 16, {0: N / 16, 1: N / 16}, {0: 1 - 3 * N / 16})
+    return Scheme("triangular", edge, face, cc.vertex_rule)
+
+
+def test_an_eigenvector_vanishing_on_the_a_i_gets_a_verdict_not_an_error():
+    """lambda's eigenvector is 0 at every a_i (normalised at b_0 instead); before, 'could not be normalised'."""
+    from symdecomp.analysis.frequency import per_frequency_matrix_at
+    from symdecomp.verify.c1 import characteristic_nets
+
+    scheme = _triangular_scheme()
+    check_applicable(scheme)
+    M = per_frequency_matrix_at(scheme, 3, 1).subs(N, 3)
+    assert M[0, 1] == 0 and M[1, 1] == R(7, 16) and sp.expand_complex(M[0, 0] - R(3, 8)) == 0
+    r = c1_test(scheme, 3)
+    assert r.verdict == "c1" and r.frequency == 1 and r.winding_number == 1, r.reason
+    assert (r.spectral.subdominant.value - flint.fmpq(7, 16)).contains(0)
+    nets, vec = characteristic_nets(scheme, 3)
+    assert vec.values[(1, 0)].contains(0) and (vec.values[(1, 1)] - flint.fmpq(7, 16)).contains(0)  # lambda (a_0, b_0)
+    # the certified bound is a lower bound of the Jacobian sampled on each sub-patch
+    from symdecomp.verify.bezier import jacobian_net
+
+    grid = [i / 8 for i in range(9)]
+    sampled = min(_bernstein(jacobian_net(x, y), u, v) for x, y in nets for u in grid for v in grid)
+    assert 0 < r.jacobian_lower_bound <= sampled

@@ -223,7 +223,8 @@ class FrequencyEigenvector:
 def frequency_eigenvector(scheme: Scheme, n: int, j: int, eigenvalue: flint.acb) -> FrequencyEigenvector:
     """The eigenvector of ``M_j`` for ``eigenvalue`` (a ball around a simple root), lifted to the 2-ring and refined once.
 
-    Normalised to the value 1 at ``a_0`` (level 0), so ``a_s`` is ``omega^s``.
+    Normalised to the value 1 at ``a_0`` (level 0), so ``a_s`` is ``omega^s``; to 1 at ``b_0`` when ``a_0``
+    is 0 (``M_j`` triangular).
 
     The outer part solves ``(lambda I - S_j) c_out = (lower left block) c_1ring`` (Arb's certified
     solve); ``lambda`` must not be an eigenvalue of ``S_j``, which the spectral test has shown.
@@ -231,11 +232,16 @@ def frequency_eigenvector(scheme: Scheme, n: int, j: int, eigenvalue: flint.acb)
     B = frequency_block(scheme, n, j, rows=12)
     lam = eigenvalue
     m00, m01, m10, m11 = B[0, 0], B[0, 1], B[1, 0], B[1, 1]
-    # a null vector of M_j - lambda: take the row with the larger off-diagonal entry
-    if abs(m01).mid() >= abs(m10).mid():
-        c1 = [m01, lam - m00]
-    else:
-        c1 = [lam - m11, m10]
+    # a null vector of M_j - lambda: [m01, lambda - m00] or [lambda - m11, m10]; for a simple root one of them
+    # is not 0 (m01 = 0: M_j is triangular and lambda is m00 or m11, not both), so take one with an entry that
+    # is certainly not 0, the row with the larger off-diagonal entry first
+    candidates = [[m01, lam - m00], [lam - m11, m10]]
+    if abs(m01).mid() < abs(m10).mid():
+        candidates.reverse()
+    usable = [v for v in candidates if v[0] != 0 or v[1] != 0]
+    if not usable:
+        raise InvalidSchemeError(f"the frequency-{j} eigenvector for {lam} could not be separated from 0")
+    c1 = usable[0]
     A = flint.acb_mat(4, 4)
     rhs = flint.acb_mat(4, 1)
     for r in range(4):
@@ -244,9 +250,10 @@ def frequency_eigenvector(scheme: Scheme, n: int, j: int, eigenvalue: flint.acb)
         rhs[r, 0] = B[2 + r, 0] * c1[0] + B[2 + r, 1] * c1[1]
     out = A.solve(rhs)
     c = c1 + [out[r, 0] for r in range(4)]
-    if not c[0] != 0:
-        raise InvalidSchemeError(f"the frequency-{j} eigenvector for {lam} could not be normalised (its a_0 value contains 0)")
-    c = [x / c[0] for x in c]  # normalised: 1 at a_0, so the map and its Jacobian are comparable across n
+    # normalised: 1 at a_0, so the map and its Jacobian are comparable across n; at b_0 if a_0 is 0 (an eigenvector
+    # that vanishes on the a_i is still one: a complex factor only rotates and scales the map)
+    scale = c[0] if c[0] != 0 else c[1]
+    c = [x / scale for x in c]
     values = {}
     for r, label in enumerate(LEVEL1_LABELS):
         values[label] = sum((B[r, k] * c[k] for k in range(6)), flint.acb(0))

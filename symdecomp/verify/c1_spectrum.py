@@ -19,7 +19,10 @@ geometric multiplicity 2 (one eigenvector at ``j``, one at ``n - j``). ``lambda`
 the trace and determinant of ``M_j`` are real (exactly: Laurent polynomials in ``omega``
 symmetric under ``omega -> 1/omega``) and the discriminant is positive. At ``j = 0`` everything
 is exact: the Eq. 43 characteristic polynomial is ``(x - 1) q(x)`` over ``Q``, a double root of
-``q`` is rational and its Jordan block is found by exact ranks.
+``q`` is rational and its Jordan block is found by exact ranks. Balls of two frequencies that
+overlap at the top are compared exactly (characteristic polynomials over ``Q(e^{2 pi i / n})``,
+reduced modulo the cyclotomic polynomial): equal values make ``lambda``'s multiplicity larger than
+2 (not C1), which no precision would separate.
 """
 
 from __future__ import annotations
@@ -187,6 +190,65 @@ def _other_frequencies(scheme: Scheme, n: int) -> tuple[list[Eigen], list[tuple[
     return eigen, outer
 
 
+_Z = sp.Symbol("z")
+
+
+def _exact_coefficients(scheme: Scheme, n: int, j: int) -> tuple[sp.Poly, sp.Poly] | None:
+    """``(t, d)`` with ``x^2 - t x + d`` the characteristic polynomial of the block of frequency ``j``, exactly.
+
+    ``t`` and ``d`` are polynomials in ``z = e^{2 pi i / n}`` reduced modulo the cyclotomic polynomial
+    ``Phi_n`` (irreducible over Q, so a reduced polynomial is 0 iff its value at ``z`` is). At
+    ``j = 0`` the block is the quotient ``q`` of Eq. 43 by ``x - 1``; ``None`` if it is not a quadratic.
+    """
+    phi = sp.Poly(sp.cyclotomic_poly(n, _Z), _Z)
+    if j == 0:
+        A = sp.Matrix(recursion_matrix(scheme, n))
+        q = sp.div(sp.Poly((_X * sp.eye(3) - A).det(), _X), sp.Poly(_X - 1, _X))[0]
+        if q.degree() != 2:
+            return None
+        _, b, c = q.all_coeffs()
+        return sp.Poly(-b, _Z), sp.Poly(c, _Z)
+    out = []
+    for e in _symmetric_trace_det(scheme):
+        num, den = sp.fraction(sp.together(sp.expand(e.subs(N, n))))
+        # den = const * omega^k: divide by omega^k as multiplying by z^(j (n k - k)) = z^(-j k) mod z^n - 1
+        k = sp.Poly(den, OMEGA).degree()
+        const = sp.Poly(den, OMEGA).LC()
+        value = sp.expand(num.subs(OMEGA, _Z**j) * _Z ** (j * k * (n - 1)) / const)
+        out.append(sp.Poly(value, _Z).rem(phi))
+    return out[0], out[1]
+
+
+def _ball_at(poly: sp.Poly, n: int) -> flint.acb:
+    from symdecomp.analysis.characteristic import omega_ball
+
+    z = omega_ball(n, 1)
+    return sum((flint.acb(flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q))) * z**e for (e,), c in poly.terms()), flint.acb(0))
+
+
+def _exactly_equal(scheme: Scheme, n: int, eigen: list[Eigen], e1: Eigen, e2: Eigen) -> bool:
+    """Whether the (overlapping) balls ``e1`` and ``e2`` of two different frequencies hold the same eigenvalue, exactly.
+
+    Monic quadratics ``x^2 - t_i x + d_i`` share a root iff they are equal or, with ``a = t_2 - t_1 != 0``,
+    ``b = d_1 - d_2``, the root ``r = -b / a`` of their difference satisfies ``b^2 + t_1 a b + d_1 a^2 = 0``
+    (exact, in ``Q(z)``); the shared root is ``e1`` and ``e2`` when ``r``'s ball misses both other roots.
+    """
+    p1, p2 = _exact_coefficients(scheme, n, e1.frequency), _exact_coefficients(scheme, n, e2.frequency)
+    if p1 is None or p2 is None:
+        return False
+    siblings = [e for e in eigen if (e.frequency, e.root) in ((e1.frequency, 1 - e1.root), (e2.frequency, 1 - e2.root))]
+    (t1, d1), (t2, d2) = p1, p2
+    a, b = t2 - t1, d1 - d2
+    if a.is_zero:
+        if not b.is_zero:
+            return False
+        return all(not s.value.overlaps(e1.value) for s in siblings)  # the same polynomial: e1, e2 the same root
+    if not (b * b + t1 * a * b + d1 * a * a).rem(sp.Poly(sp.cyclotomic_poly(n, _Z), _Z)).is_zero:
+        return False
+    r = -_ball_at(b, n) / _ball_at(a, n)
+    return all(not s.value.overlaps(r) for s in siblings)
+
+
 def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
     """Reif's spectral conditions at valence ``n``, certified (see the module docstring)."""
     n = check_valence(n)
@@ -200,6 +262,9 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
     top = abs(dom.value)
     # the conjugate of a non-real root of the same block has the same modulus: compare the pair as one
     others = [e for e in eigen if e is not dom and not (dom.pair and e.pair and e.frequency == dom.frequency)]
+    tied = [e for e in others if not abs(e.value) < top and e.frequency != dom.frequency
+            and _exactly_equal(scheme, n, eigen, dom, e)]
+    others = [e for e in others if e not in tied]
     second = max([abs(e.value) for e in others] + [b for _, b in outer], key=lambda x: x.upper())
     for e in others:
         if not abs(e.value) < top:
@@ -215,8 +280,16 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
             )
     if not top < 1:
         return SpectralResult(
-            n, "not-c1" if top > 1 else "undecided",
-            f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus",
+            # Arb's ``>=`` holds only when every point of the ball is >= 1 (an exact -1 at frequency 0 is)
+            n, "not-c1" if top >= 1 else "undecided",
+            f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus", dom,
+        )
+    if tied:
+        where = ", ".join(str(e.frequency) for e in [dom, *tied])
+        total = dom.multiplicity + sum(e.multiplicity for e in tied)
+        return SpectralResult(
+            n, "not-c1", f"the largest eigenvalue after 1, {ball_text(dom.value)}, is exactly the same at frequencies "
+            f"{where}: multiplicity {total}, not 2", dom,
         )
     gap = float_down((top - second).lower())
     if dom.pair:
@@ -235,13 +308,18 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
             f"{what}; it exceeds the frequency-1 (tangent-plane) eigenvalue {ball_text(tangent.value)}",
             dom, gap, float(second.upper()),
         )
+    return _real_subdominant(scheme, n, dom, gap, float(second.upper()))
+
+
+def _real_subdominant(scheme: Scheme, n: int, dom: Eigen, gap: float, second: float) -> SpectralResult:
+    """The verdict once ``dom`` (frequency ``0 < j < n/2``) is strictly dominant: ok iff it is certainly real and simple."""
     if dom.value.imag.contains(0) and _real_at(scheme, n):
         B = frequency_block(scheme, n, dom.frequency)
         t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
         disc = (t * t - 4 * d).real
         if disc > 0:
             return SpectralResult(n, "ok", f"lambda = {ball_text(dom.value)} at frequency {dom.frequency}, real, "
-                                  f"multiplicity 2, gap >= {round_down(gap)}", dom, gap, float(second.upper()))
+                                  f"multiplicity 2, gap >= {round_down(gap)}", dom, gap, second)
     if not dom.value.imag.contains(0):
         return SpectralResult(n, "not-c1", f"the subdominant eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not real", dom)
     return SpectralResult(n, "undecided", f"could not show that the subdominant eigenvalue {ball_text(dom.value)} is real and simple", dom)

@@ -10,13 +10,18 @@ ones above it in this list (``tests/test_layers.py`` checks it):
 ``algebra/``       no scheme knowledge: circulants and the Fourier matrix and its rows (Section 2,
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
-                   exact/interval evaluation of expressions (``compile``)
-``schemes/``       a scheme as data (edge, face, vertex rules) and the one assembly of its
+                   exact/interval evaluation of expressions (``compile``), small exact
+                   eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``)
+``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes;
+                   Loop, ``loop``) and the one assembly of its
                    subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
                    rationals and its characteristic polynomial (``full_matrix``), rules as
                    polynomials in the index shift (Eq. 17-23, ``shift_stencil``), whole quad
-                   meshes refined by its rules (Section 3, ``mesh``), the 1-ring and its 2n-gon
-                   (Eq. 10-13, ``ring``), schemes from TOML files and by name (``files``)
+                   meshes refined by its rules (Section 3, ``mesh``; triangle meshes,
+                   ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
+                   its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
+                   (``files``; Loop, ``loop``),
+                   Stam's (2N+8)-point patch matrix (``patch``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
@@ -26,15 +31,20 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``support``), rings iterated step by step (``evolution``), the 2-ring
                    matrix by frequency and the characteristic map's nets (``characteristic``),
                    where a 1-ring component starts on one eigenvector of M_j (Eq. 35-38,
-                   ``components``)
-``verify/``        cross-checks against the full matrices: numeric (``numeric``), certified
-                   (``certify``), both returning a ``CrossCheckResult`` (``result``),
-                   OpenSubdiv (``oracle``, ``opensubdiv``); certified C1 by Reif's test
-                   (``c1``, ``c1_spectrum``, Bernstein-Bezier nets ``bezier``)
+                   ``components``); any scheme and K-ring: block form and E_k
+                   (``ring_blocks``), factored spectra (``ring_spectrum``), product-form
+                   charpoly (``ring_charpoly``), masks (``ring_masks``); the patch's certified
+                   eigen-data (``eigendata``) and exact evaluation (``evaluation``)
+``verify/``        cross-checks against the full matrices: numeric (``numeric``,
+                   ``ring_numeric``), certified (``certify``, ``ring_certify``), both returning a
+                   ``CrossCheckResult`` (``result``), OpenSubdiv (``oracle``, ``opensubdiv``);
+                   certified C1 by Reif's test (``c1``, ``c1_spectrum``, Bernstein-Bezier nets
+                   ``bezier``); dyadic limit positions for the patch evaluator (``patch_eval``)
 ``claims/``        the paper's claims, one module per section, and their registry; every claim
                    is checked for a scheme (``check_claim(label, scheme)``); ``applicability``
                    and ``evidence`` hold what several checks share
-``output/``        LaTeX (``latex``, one entry point ``aslatex``) and figures (``plotting``)
+``output/``        LaTeX (``latex``, one entry point ``aslatex``), figures (``plotting``), Stam's
+                   data file (``evaldata``)
 ``cli/``           the ``symdecomp`` command, one module per subcommand
 =================  ===========================================================================
 
@@ -59,12 +69,17 @@ from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigen
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
+from symdecomp.analysis.eigendata import NotDiagonalizableError, certified_eigendata
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
+from symdecomp.analysis.evaluation import PatchEvaluator
 from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.ring_spectrum import RingSpectrum, ring_spectrum
 from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, recursion_eigenvalues
 from symdecomp.analysis.support import Region, classify_support
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
@@ -80,12 +95,16 @@ from symdecomp.errors import (
 )
 from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from symdecomp.schemes.patch import patch_matrices
+from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
+from symdecomp.verify.ring_certify import certify_ring
 
 __version__ = "0.1.0"
 
@@ -151,6 +170,23 @@ __all__ = [
     "central_rings",
     "Region",
     "classify_support",
+    # any scheme (triangle meshes, Loop) and K-ring matrices
+    "loop",
+    "loop_warren",
+    "triangle_scheme",
+    "RingMatrix",
+    "ring_subdivision_matrix",
+    "RingBlocks",
+    "ring_blocks",
+    "RingSpectrum",
+    "ring_spectrum",
+    "ring_masks",
+    "certify_ring",
+    # exact evaluation near an extraordinary vertex (Stam)
+    "patch_matrices",
+    "certified_eigendata",
+    "NotDiagonalizableError",
+    "PatchEvaluator",
     # cross-checks against the full matrix
     "ClosedForms",
     "derived_closed_forms",

@@ -7,8 +7,8 @@ from functools import lru_cache
 import sympy as sp
 
 from symdecomp import catmull_clark, per_frequency_matrix, subdivision_matrix, tangent_eigenvalues
-from symdecomp.claims import CheckResult, Claim, Status, Step
-from symdecomp.symbols import alpha, beta, lam, n, omega
+from symdecomp.claims import CheckResult, Claim, Status, Step, Text
+from symdecomp.symbols import alpha, beta, n, omega
 
 x, y = sp.symbols("x y")
 
@@ -58,10 +58,11 @@ def stress_pairs() -> tuple[tuple[Claim, CheckResult], ...]:
         ),
         (
             "Proposition 5.9", "5.1", "Piecewise, Abs, sqrt and complex numbers",
-            "Refuted claim with unicode ω ≤ 1 — and a long inline formula "
+            "Refuted claim with unicode ω ≤ 1 — ☃ and a long inline formula "
             "$" + sp.latex(sp.expand((x + y + 1) ** 4)) + "$ inside the text.",
             CheckResult(
-                Status.REFUTED, "counterexample found", counterexample="at $n = 4$, $j = 2$ the ratio is $0/0$ (100% degenerate)",
+                Status.REFUTED, Text("the defect is ", sp.sqrt(long_sum()) / (n + 3), ", not 0 (a long formula in a box)"),
+                counterexample="at $n = 4$, $j = 2$ the ratio is $0/0$ (100% degenerate)",
                 steps=(
                     Step("Piecewise:", sp.Piecewise((x**2, x > 0), (sp.Abs(x), True)), sp.Symbol("f")),
                     Step("Complex:", (1 + sp.I) / sp.sqrt(5) + sp.sqrt(2) * sp.I),
@@ -102,27 +103,3 @@ def stress_pairs() -> tuple[tuple[Claim, CheckResult], ...]:
         c = Claim(label, section, title, statement, check=lambda r=result: r, order=order)
         pairs.append((c, result))
     return tuple(pairs)
-
-
-def stress_formulas() -> list:
-    """Formulas of the kinds the checks produce, to compare estimated and real widths."""
-    cc = catmull_clark()
-    tangent = tangent_eigenvalues(cc)
-    m_j = per_frequency_matrix(cc)
-    k = sp.Symbol("k")
-    formulas = [
-        m_j, m_j.det(), m_j.trace(), sp.factor(m_j.charpoly(lam).as_expr()),
-        tangent.dominant, tangent.subdominant, tangent.discriminant, tangent.characteristic_polynomial,
-        subdivision_matrix(cc, 3), subdivision_matrix(catmull_clark(alpha, beta), 4),
-        sp.Matrix(3, 3, lambda r, c: (omega ** (r - c) + 1) / (r + c + 2)),
-        sp.Matrix(9, 9, lambda r, c: sp.Rational(r + 1, c + 3)),
-        sp.Piecewise((x**2, x > 0), (sp.Abs(x), True)), sp.Abs(omega - 1) ** 2,
-        sp.sqrt(2) * sp.I + 3, (1 + sp.I) / sp.sqrt(5), sp.exp(2 * sp.pi * sp.I / n),
-        sp.cos(sp.pi * sp.Symbol("j") / n) ** 2 + sp.sin(sp.pi / n), sp.Sum(omega**k, (k, 0, n - 1)),
-        sp.Eq(lam**2 - lam / 2 + sp.Rational(1, 16), 0), sp.root(n + 1, 3), sp.Tuple(1, omega, omega**2),
-        sp.Symbol("a_0") + sp.Symbol("b_{n-1}") + sp.Symbol("omega_n^j"), sp.binomial(n, 2),
-        long_sum(), sp.Mul(sp.expand((x + y) ** 3), sp.expand((alpha + n) ** 2), evaluate=False),
-        sp.Matrix([[sp.Rational(1, 4) * sp.eye(2), sp.zeros(2, 1)]]), sp.Integer(123456789) / 987654321,
-        sp.Float("3.14159265358979323846", 20), sp.oo, sp.Symbol("W") * sp.Symbol("M") * sp.Symbol("m"),
-    ]
-    return formulas

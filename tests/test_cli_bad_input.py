@@ -94,7 +94,7 @@ MISUSE = [
     (["derive", "--out", "/dev/null"], "not a directory"),
     (["derive", "--out", "/nonexistent-dir/derivations"], "does not exist"),
     (["derive", "--out", "a", "--out", "b"], "more than once"),
-    (["spectrum", "5", "--scheme", "loop"], "unknown scheme"),
+    (["spectrum", "5", "--scheme", "butterfly"], "unknown scheme"),
     (["spectrum", "5", "--scheme", ""], "unknown scheme"),
     (["spectrum", "5", "--bogus"], "unrecognized arguments"),
     (["spectrum", "5", "6"], "unrecognized arguments"),

@@ -15,6 +15,7 @@ True
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from functools import cache
 
@@ -24,7 +25,7 @@ import sympy as sp
 
 from symdecomp.errors import InvalidInputError, InvalidTypeError
 
-__all__ = ["CyclotomicField", "Cyclotomic"]
+__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "matrix_rank", "to_acb"]
 
 
 @cache
@@ -180,3 +181,99 @@ class Cyclotomic:
 
     def __repr__(self):
         return f"Cyclotomic({self.poly}, N={self.field.N})"
+
+
+def _trig_fraction(term: sp.Expr, values: dict) -> sp.Rational:
+    """``r`` with ``term = cos(r pi)``, ``sin(r pi)`` or ``exp(i r pi)`` (after ``values``), ``r`` rational."""
+    arg = term.args[0] if not isinstance(term, sp.exp) else term.args[0] / sp.I
+    r = sp.cancel(arg.xreplace(values) / sp.pi)
+    if not r.is_Rational:
+        raise ValueError(f"{term} is not a cosine, sine or exponential of a rational multiple of pi")
+    return r
+
+
+def cyclotomic_value(expr, values: dict | None = None, field: CyclotomicField | None = None) -> Cyclotomic:
+    """An exact number built from rationals and ``cos``/``sin``/``exp(i .)`` of rational multiples of ``pi``.
+
+    ``values`` substitutes symbols first (e.g. ``{n: 7}``); trigonometric terms are replaced
+    *before* the substitution so that sympy cannot rewrite ``cos(2 pi/5)`` into radicals. The
+    result lies in the smallest ``Q(zeta_N)`` holding every term, or in ``field`` when given (it
+    must contain them). Raises ``ValueError`` when the
+    expression is not of that kind (a square root, a free symbol left, a float).
+
+    >>> from sympy import cos, pi, Symbol
+    >>> m = Symbol("m")
+    >>> x = cyclotomic_value((cos(2*pi/m) + 1) / 4, {m: 5})
+    >>> x.field.N, float(x.to_mpc().real)
+    (10, 0.32725424859373686)
+    """
+    expr = sp.sympify(expr)
+    values = {sp.sympify(k): sp.sympify(v) for k, v in (values or {}).items()}
+    trig = sorted(expr.atoms(sp.cos, sp.sin, sp.exp), key=sp.default_sort_key)
+    dummies, fractions, order = {}, {}, 4 if any(isinstance(t, sp.sin) for t in trig) else 1
+    for t in trig:
+        r = _trig_fraction(t, values)
+        d = sp.Dummy("t")
+        dummies[t], fractions[d] = d, (type(t), r)
+        order = order * (2 * int(r.q)) // math.gcd(order, 2 * int(r.q))
+    plain = expr.xreplace(dummies).xreplace(values) if values else expr.xreplace(dummies)
+    if field is not None:
+        if field.N % order:
+            raise ValueError(f"{expr} is not in Q(zeta_{field.N})")
+        order = field.N
+    K = field or CyclotomicField(order)
+    leaves = {}
+    for d, (kind, r) in fractions.items():
+        z = K.zeta(int(r.p) * (order // (2 * int(r.q))))  # exp(i r pi)
+        leaves[d] = z if kind is sp.exp else (z + z.conjugate()) / 2 if kind is sp.cos else (z - z.conjugate()) / (2 * K.i)
+    return _walk(sp.sympify(plain), K, leaves)
+
+
+def _walk(e: sp.Expr, K: CyclotomicField, leaves: dict) -> Cyclotomic:
+    if e in leaves:
+        return leaves[e]
+    if e.is_Rational:
+        return K(Fraction(int(e.p), int(e.q)))
+    if e is sp.I:
+        return K.i
+    if isinstance(e, sp.Add):
+        out = K(0)
+        for a in e.args:
+            out = out + _walk(a, K, leaves)
+        return out
+    if isinstance(e, sp.Mul):
+        out = K(1)
+        for a in e.args:
+            out = out * _walk(a, K, leaves)
+        return out
+    if isinstance(e, sp.Pow) and e.exp.is_Integer:
+        return _walk(e.base, K, leaves) ** int(e.exp)
+    raise ValueError(f"{e} is not a rational function of roots of unity")
+
+
+def matrix_rank(rows: list[list[Cyclotomic]]) -> int:
+    """The rank of a matrix over ``Q(zeta_N)`` (exact Gaussian elimination)."""
+    rows = [list(r) for r in rows]
+    rank, cols = 0, len(rows[0]) if rows else 0
+    for c in range(cols):
+        pivot = next((r for r in range(rank, len(rows)) if rows[r][c].poly != 0), None)
+        if pivot is None:
+            continue
+        rows[rank], rows[pivot] = rows[pivot], rows[rank]
+        for r in range(rank + 1, len(rows)):
+            if rows[r][c].poly != 0:
+                f = rows[r][c] / rows[rank][c]
+                rows[r] = [x - f * y for x, y in zip(rows[r], rows[rank])]
+        rank += 1
+    return rank
+
+
+def to_acb(x: Cyclotomic, prec: int = 128):
+    """A certified complex ball (FLINT ``acb``) containing ``x``, at ``prec`` bits."""
+    with flint.ctx.workprec(prec):
+        N = x.field.N
+        total = flint.acb(0)
+        for k, c in enumerate(x.poly.coeffs()):
+            if c != 0:
+                total += flint.acb(flint.arb(c)) * flint.acb(flint.arb(flint.fmpq(2 * k, N))).exp_pi_i()
+        return total

@@ -6,7 +6,8 @@ import sympy as sp
 
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
 from symdecomp.analysis.tuning import with_free_vertex_rule
-from symdecomp.cli.common import add_scheme_option, flag, print_json, refuse_together, valence
+from symdecomp.cli.common import add_rings_option, add_scheme_option, flag, general_path, print_json, refuse_together, valence
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -32,7 +33,26 @@ def register(sub) -> None:
         'exact strings), "matches_matrix"}',
     )
     add_scheme_option(p)
+    add_rings_option(p)
     p.set_defaults(func=run)
+
+
+def _run_general(args) -> int:
+    from symdecomp.analysis.ring_charpoly import ring_charpoly
+
+    if args.free_weights:
+        raise InvalidInputError("--free-weights applies to the Catmull-Clark 1-ring only (not to triangle schemes or --rings > 1)")
+    data = ring_charpoly(args.scheme, args.n, args.rings)
+    if args.json:
+        print_json(data)
+        return 0 if data["matches_matrix"] else 1
+    print(f"{args.scheme.name}: det(x I - S), S the {args.rings}-ring matrix of size {data['size']}, x written as {LAM}")
+    print(f"product form (all n): {data['product_form']}")
+    print(f"  det(x I - E_0) = {' * '.join(data['frequency_zero_factors'])}   (w_O = 1 - n w_a - n w_b: the centre's weights)")
+    print(f"  det(x I - E(omega)) = {' * '.join(data['frequency_factors'])}")
+    print(f"at n = {args.n}: {data['polynomial']}")
+    print(f"equals the characteristic polynomial of the full matrix: {'yes' if data['matches_matrix'] else 'NO'} ({data['method']})")
+    return 0 if data["matches_matrix"] else 1
 
 
 def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
@@ -54,6 +74,8 @@ def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
 
 
 def run(args) -> int:
+    if general_path(args):
+        return _run_general(args)
     refuse_together(args, "--free-weights", "--scheme", "--free-weights uses the Catmull-Clark edge and face rules")
     scheme = with_free_vertex_rule(args.scheme) if args.free_weights else args.scheme
     cf = closed_form_characteristic_polynomial(scheme)

@@ -16,6 +16,7 @@ import sys
 
 from symdecomp.errors import InvalidInputError, SymdecompError
 from symdecomp.schemes.files import SCHEMES, load_scheme
+from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import MAX_DIGITS, MAX_DPS
 
@@ -31,6 +32,8 @@ __all__ = [
     "SCHEMES",
     "scheme_by_name",
     "add_scheme_option",
+    "add_rings_option",
+    "general_path",
     "given",
     "refuse_together",
     "progress",
@@ -53,6 +56,8 @@ LIMITS = {
     "jobs": (256, "more worker processes than this only cost memory"),
     "c1": (128, "each valence needs the spectrum of the 2-ring matrix and interval bounds of its characteristic map"),
     "c1 --depth": (12, "each level splits a piece in four: depth 12 is 16 million pieces"),
+    "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
+    "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 1200 bits"),
 }
 
 _INTEGER = re.compile(r"[+-]?[0-9]{1,12}", re.ASCII)
@@ -189,6 +194,23 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
         "(format in the README)",
     )
+
+
+def _rings(text: str) -> int:
+    return integer(text, "--rings", minimum=1, limit="rings")
+
+
+def add_rings_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--rings", type=_rings, action=Once, default=1, metavar="K",
+        help=f"the K-ring neighbourhood of the centre (1..{MAX_RINGS}; default 1: the paper's 1-ring), "
+        "its matrix built by exact refinement with the scheme's mesh rules",
+    )
+
+
+def general_path(args) -> bool:
+    """Whether a command takes the any-scheme route (triangle meshes or ``--rings`` > 1)."""
+    return args.scheme.mesh != "quad" or getattr(args, "rings", 1) != 1
 
 
 def progress(iterable, total: int, label: str, *, enabled: bool = True):

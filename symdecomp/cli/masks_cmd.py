@@ -13,7 +13,8 @@ JSON: ``{"n": N, "position": {"O": w, "a": [...], "b": [...]}, "tangents": [{"O"
 from __future__ import annotations
 
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.cli.common import Once, add_scheme_option, digits, flag, print_json, valence
+from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, valence
 
 
 def register(sub) -> None:
@@ -29,10 +30,27 @@ def register(sub) -> None:
                    help="significant digits of the weights (default 20, at most 1000)")
     flag(p, "--json", help='print {"n", "position", "tangents", "subdominant"}')
     add_scheme_option(p)
+    add_rings_option(p)
     p.set_defaults(func=run)
 
 
+def _run_general(args) -> int:
+    data = ring_masks(args.scheme, args.n, args.rings, digits=args.digits)
+    if args.json:
+        print_json(data)
+        return 0
+    print(f"{args.scheme.name}, valence n = {args.n}, {args.rings}-ring; subdominant eigenvalue lambda_1 = {data['subdominant']}")
+    for title, mask in [("position", data["position"]), ("tangent 1", data["tangents"][0]), ("tangent 2", data["tangents"][1])]:
+        print(f"{title}:")
+        print(f"  O: {mask['O']}")
+        for key, weights in mask["classes"].items():
+            print(f"  class ({key}), sectors 0..{args.n - 1}: {', '.join(weights)}")
+    return 0
+
+
 def run(args) -> int:
+    if general_path(args):
+        return _run_general(args)
     masks = limit_masks_at(args.scheme, args.n)
     data = masks.as_json(args.digits)
     if args.json:

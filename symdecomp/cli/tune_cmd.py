@@ -37,6 +37,9 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
+    if args.scheme.mesh != "quad":
+        raise InvalidInputError(f"--scheme {args.scheme.name}: tune solves the paper's quad 1-ring conditions (Section 5.2); "
+                                f"it does not apply to {args.scheme.mesh} meshes")
     bound, why = LIMITS["tune --table"]
     if args.table and args.n > bound:
         raise InvalidInputError(f"tune --table: N must be at most {bound}, got {args.n} ({why})")

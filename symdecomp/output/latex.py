@@ -9,9 +9,10 @@ of the claim. The document (:func:`derivation_files`) is assembled from the same
 ``symdecomp derive`` writes it to disk.
 
 The mathematics is never typed in here: every formula is printed by sympy from the objects
-the checks computed. Long formulas are broken across lines by :mod:`symdecomp.output.texlayout`.
-The output is a pure function of its input (no dates, no global printing state), so
-regenerating the files gives the same bytes.
+the checks computed. Displayed formulas are laid out by :mod:`symdecomp.output.texlayout`
+(TeX breaks them, with ``breqn``); the preamble is the package file ``preamble.tex``. The
+output is a pure function of its input (no dates, no global printing state), so regenerating
+the files gives the same bytes.
 """
 
 from __future__ import annotations
@@ -20,21 +21,15 @@ import functools
 import re
 from collections.abc import Mapping, Sequence
 from fractions import Fraction
+from importlib import resources
 
 import sympy as sp
 
 from symdecomp.claims import CheckResult, Claim, Status, Step, Text, check_claim
-from symdecomp.output.texlayout import LINE_WIDTH_EM, Piece, break_pieces, estimate_width, pack_lines
+from symdecomp.output.texlayout import formula_display, latex, mapping_rows, rows_display, size
 
-__all__ = [
-    "aslatex",
-    "text_latex",
-    "display_math",
-    "SECTION_TITLES",
-    "section_file_name",
-    "derivation_files",
-    "PREAMBLE",
-]
+__all__ = ["aslatex", "text_latex", "findings_latex", "display_math", "SECTION_TITLES", "section_file_name",
+           "derivation_files", "PREAMBLE"]
 
 #: The paper's section titles, so that the document's sections mirror the paper's.
 SECTION_TITLES = {
@@ -53,106 +48,39 @@ PAPER = (
     "\\emph{Polygonal decompositions of quadrilateral subdivision meshes}"
 )
 
-#: The document preamble: packages of a basic TeX Live only (latex-base and latex-recommended).
-PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
-\usepackage[utf8]{inputenc}
-\usepackage[margin=25mm]{geometry}
-\usepackage{amsmath,amssymb}
-\usepackage{graphicx}
-\usepackage{array,booktabs,longtable}
-\usepackage{xcolor}
-\usepackage[hidelinks]{hyperref}
-
-\definecolor{sdproved}{rgb}{0.0,0.45,0.15}
-\definecolor{sdverified}{rgb}{0.05,0.45,0.35}
-\definecolor{sdnumeric}{rgb}{0.1,0.25,0.6}
-\definecolor{sdrefuted}{rgb}{0.75,0.05,0.05}
-\definecolor{sdcorrected}{rgb}{0.75,0.4,0.0}
-\definecolor{sderror}{rgb}{0.45,0.0,0.45}
-\definecolor{sdundecided}{rgb}{0.4,0.4,0.4}
-\definecolor{sdnotapplicable}{rgb}{0.4,0.4,0.4}
-
-% Paragraphs with long inline formulas may stretch rather than run into the margin.
-\setlength{\emergencystretch}{3em}
-\setlength{\parindent}{0pt}
-\setlength{\parskip}{0.5\baselineskip}
-% A derivation longer than a page may continue on the next one.
-\allowdisplaybreaks
-% Room between the rows of matrices, whose fractions are set in text style.
-\renewcommand{\arraystretch}{1.3}
-
-% A status, coloured (the colour's name is the status without spaces).
-\newcommand{\status}[2][]{\textcolor{sd#1#2}{\textbf{#2}}}
-% The heading of one claim, with a target for the summary table.
-\newcommand{\claimheading}[3]{\subsubsection*{\phantomsection\label{#1}#2\quad #3}}
-% A finding about the paper (refuted, corrected) or a failed check: a coloured box.
-\newcommand{\finding}[3]{\par\noindent\fcolorbox{#1}{#1!7}{%
-  \begin{minipage}{\dimexpr\linewidth-2\fboxsep-2\fboxrule\relax}%
-  \setlength{\parskip}{0.4\baselineskip}\textcolor{#1}{\textbf{#2}}\par #3\end{minipage}}\par}
-% The last resort for a formula that cannot be broken: shrink it, only if too wide.
-\newsavebox{\sdbox}
-\newlength{\sdmaxwidth}
-\newcommand{\fitwidth}[1]{\setlength{\sdmaxwidth}{\dimexpr\linewidth-2em\relax}%
-  \savebox{\sdbox}{$\displaystyle #1$}%
-  \ifdim\wd\sdbox>\sdmaxwidth\resizebox{\sdmaxwidth}{!}{\usebox{\sdbox}}\else\usebox{\sdbox}\fi}
-"""
+#: The document preamble (``preamble.tex``, shipped with the package): packages of a basic
+#: TeX Live only (latex-base and latex-recommended).
+PREAMBLE = resources.files("symdecomp.output").joinpath("preamble.tex").read_text(encoding="utf-8")
 
 # --------------------------------------------------------------------------------------
 # Text
 
 
 _TEXT_ESCAPES = {
-    "\\": r"\textbackslash{}",
-    "{": r"\{",
-    "}": r"\}",
-    "&": r"\&",
-    "%": r"\%",
-    "#": r"\#",
+    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "&": r"\&", "%": r"\%", "#": r"\#", "$": r"\$",
     "_": r"\_\allowbreak{}",  # long identifiers may break after an underscore
-    "$": r"\$",
-    "^": r"\textasciicircum{}",
-    "~": r"\textasciitilde{}",
-    "<": r"\textless{}",
-    ">": r"\textgreater{}",
+    "^": r"\textasciicircum{}", "~": r"\textasciitilde{}", "<": r"\textless{}", ">": r"\textgreater{}",
     "|": r"\textbar{}",
 }
 
-# Unicode that the default fonts of pdflatex cannot set directly, as math.
-_UNICODE_MATH = {
-    "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon",
-    "ζ": r"\zeta", "η": r"\eta", "θ": r"\theta", "ι": r"\iota", "κ": r"\kappa", "λ": r"\lambda",
-    "μ": r"\mu", "ν": r"\nu", "ξ": r"\xi", "π": r"\pi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau",
-    "υ": r"\upsilon", "φ": r"\varphi", "χ": r"\chi", "ψ": r"\psi", "ω": r"\omega",
-    "Γ": r"\Gamma", "Δ": r"\Delta", "Θ": r"\Theta", "Λ": r"\Lambda", "Ξ": r"\Xi", "Π": r"\Pi",
-    "Σ": r"\Sigma", "Φ": r"\Phi", "Ψ": r"\Psi", "Ω": r"\Omega",
-    "≤": r"\leq", "≥": r"\geq", "≠": r"\neq", "≈": r"\approx", "→": r"\to", "←": r"\leftarrow",
-    "⇒": r"\Rightarrow", "↦": r"\mapsto", "×": r"\times", "·": r"\cdot", "−": "-", "±": r"\pm",
-    "∞": r"\infty", "√": r"\surd", "∑": r"\sum", "∏": r"\prod", "∈": r"\in", "∉": r"\notin",
-    "⊂": r"\subset", "∪": r"\cup", "∩": r"\cap", "ℓ": r"\ell", "∂": r"\partial", "∇": r"\nabla",
-    "≡": r"\equiv", "∼": r"\sim", "°": r"^\circ", "′": r"'", "…": r"\ldots", "⋯": r"\cdots",
-    "²": "^2", "³": "^3", "¹": "^1", "⁰": "^0", "₀": "_0", "₁": "_1", "₂": "_2", "₃": "_3",
-}
-_UNICODE_TEXT = {
-    "–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "”": "''", "\u00a0": "~",
-    "…": r"\ldots{}", "•": r"\textbullet{}", "§": r"\S{}",
-}
+#: The characters beyond ASCII that the preamble declares (``\DeclareUnicodeCharacter``).
+_DECLARED = {chr(int(code, 16)) for code in re.findall(r"\\DeclareUnicodeCharacter\{([0-9A-F]+)\}", PREAMBLE)}
 
-# Inline formulas wider than this (em) are set as displays instead (they cannot break).
-_INLINE_LIMIT = 0.6 * LINE_WIDTH_EM
+#: Inline formulas longer than this (characters, see :func:`~symdecomp.output.texlayout.size`)
+#: are displayed instead: TeX does not break them well within a paragraph.
+_INLINE_LIMIT = 30
 
 
-def _unicode_in_text(ch: str) -> str:
-    if ch in _UNICODE_TEXT:
-        return _UNICODE_TEXT[ch]
-    if ch in _UNICODE_MATH:
-        return "$" + _UNICODE_MATH[ch] + "$"
-    if ord(ch) < 128 or ch.isalpha() and ord(ch) < 0x250:
-        return ch  # ASCII and Latin letters with accents: inputenc handles them
+def _unicode(ch: str) -> str:
+    """A character as the document can set it: ASCII, Latin letters (inputenc), the declared
+    ones (see the preamble), any other as its code point."""
+    if ord(ch) < 128 or ch in _DECLARED or ch.isalpha() and ord(ch) < 0x250:
+        return ch
     return r"\texttt{[U+%04X]}" % ord(ch)
 
 
 def _escape_word(word: str) -> str:
-    out = "".join(_TEXT_ESCAPES.get(ch) or _unicode_in_text(ch) for ch in word)
+    out = "".join(_TEXT_ESCAPES.get(ch) or _unicode(ch) for ch in word)
     if len(word) > 16:
         # a long "word" such as [[1,2],[3,4]] or n=3..16 may break after its punctuation
         out = re.sub(r"([,;/=\])]|\.\.)(?=.)", r"\1\\allowbreak{}", out)
@@ -166,7 +94,7 @@ def _escape_text(text: str) -> str:
 
 
 def _clean_math(tex: str) -> str:
-    """Inline math written by a claim's author, made safe: no comments, tabs or raw Unicode."""
+    """Inline math written by a claim's author, made safe: no comments or unknown Unicode."""
     # & separates cells inside an environment (pmatrix, cases...); elsewhere it is a character
     specials = "%#" if "\\begin" in tex else "%#&"
     out = []
@@ -174,15 +102,25 @@ def _clean_math(tex: str) -> str:
         escaped = i > 0 and tex[i - 1] == "\\"
         if ch in specials and not escaped:
             out.append("\\" + ch)
-        elif ch in _UNICODE_MATH:
-            out.append(_UNICODE_MATH[ch] + " ")
-        elif ord(ch) >= 128:
-            out.append(r"\text{%s}" % _unicode_in_text(ch))
+        elif _unicode(ch) != ch:
+            out.append(r"\text{%s}" % _unicode(ch))
         elif ch == "\n":
             out.append(" ")
         else:
             out.append(ch)
     return "".join(out)
+
+
+def _displayed(math: str) -> str:
+    """Author-written math, displayed (TeX breaks it at its relations and operators)."""
+    return "\n\\begin{dmath*}\n%s\n\\end{dmath*}\n" % math.strip()
+
+
+def _inline(obj, displays: bool) -> str:
+    """A computed object inside prose: inline math, or a display when it is long."""
+    if displays and size(obj) > _INLINE_LIMIT:
+        return "\n" + display_math(obj)
+    return "$%s$" % _clean_math(latex(obj))
 
 
 def findings_latex(text, *, displays: bool = True) -> str:
@@ -194,15 +132,8 @@ def findings_latex(text, *, displays: bool = True) -> str:
         if isinstance(part, str):
             out.append(text_latex(part, displays=displays))
         else:
-            out.append(_inline_math(_clean_math(sp.latex(part)), displays=displays))
+            out.append(_inline(part, displays))
     return "".join(out)
-
-
-def _inline_math(math: str, *, displays: bool) -> str:
-    """A formula inside prose; one too wide to sit in a line of text is displayed (unless ``displays`` is false)."""
-    if displays and estimate_width(math) > _INLINE_LIMIT:
-        return "\n\\[\n\\fitwidth{%s}\n\\]\n" % math.strip()
-    return "$" + math + "$"
 
 
 def text_latex(text: str, *, displays: bool = True) -> str:
@@ -221,7 +152,7 @@ def text_latex(text: str, *, displays: bool = True) -> str:
         if len(chunks) > 1:
             return "".join(
                 text_latex(chunk, displays=displays) if k % 2 == 0
-                else ("\n\\[\n\\fitwidth{%s}\n\\]\n" % _clean_math(chunk).strip() if displays else "$%s$" % _clean_math(chunk))
+                else (_displayed(_clean_math(chunk)) if displays else "$%s$" % _clean_math(chunk))
                 for k, chunk in enumerate(chunks)
             )
     parts = re.split(r"(?<!\\)\$", text)
@@ -235,165 +166,34 @@ def text_latex(text: str, *, displays: bool = True) -> str:
         math = _clean_math(part)
         if not math.strip():
             continue
-        out.append(_inline_math(math, displays=displays))
+        if displays and size(math) > _INLINE_LIMIT:
+            out.append(_displayed(math))
+        else:
+            out.append("$" + math + "$")
     return "".join(out)
 
 
 # --------------------------------------------------------------------------------------
 # Displayed formulas
 
-#: A piece that would have to be shrunk more than this many times is not printed (a notice is).
-_ILLEGIBLE = 12
-
-_RELATIONS = {"==": "=", "!=": r"\neq", "<": "<", "<=": r"\leq", ">": ">", ">=": r"\geq"}
-
-
-def _math_pieces(obj, budget: float) -> list[Piece]:
-    """Breakable pieces of a mathematical object (a raw string is LaTeX already)."""
-    if isinstance(obj, str):
-        return [Piece.of(obj)]
-    if isinstance(obj, (tuple, list)) and not isinstance(obj, sp.Basic):
-        try:
-            obj = sp.Tuple(*obj)
-        except (sp.SympifyError, TypeError):
-            return [Piece.of(aslatex(obj))]
-    if isinstance(obj, sp.MatrixBase) and not isinstance(obj, sp.Basic):
-        obj = sp.ImmutableMatrix(obj)
-    if isinstance(obj, (int, float, complex, Fraction)):
-        obj = sp.sympify(obj)
-    return break_pieces(obj, budget)
-
-
-def _lines(lhs, rel: str, rhs, budget: float = LINE_WIDTH_EM) -> list[str]:
-    """``lhs rel rhs`` (or just ``rhs``) cut into lines of at most ``budget`` em."""
-    pieces: list[Piece] = []
-    if lhs is not None:
-        pieces = _math_pieces(lhs, budget)
-        rhs_pieces = _math_pieces(rhs, budget - 2)
-        first = rhs_pieces[0]
-        pieces.append(Piece(" " + rel + " " + first.tex, first.width + 1.4))
-        pieces.extend(rhs_pieces[1:])
-    else:
-        pieces = _math_pieces(rhs, budget)
-    lines = []
-    for line in pack_lines(pieces, budget):
-        line = line.strip()
-        width = estimate_width(line)
-        if width > _ILLEGIBLE * budget:
-            # shrunk to fit it would be unreadable (and beyond TeX's largest dimension)
-            line = r"\text{\itshape [a formula %d times as wide as a line, not printed: split it into smaller steps]}" % round(width / budget)
-        elif width > budget:
-            line = r"\fitwidth{%s}" % line
-        elif line[:1] in "+-=<>" or line.startswith(r"\cdot"):
-            line = "{} " + line  # keep binary spacing at the start of a continued line
-        lines.append(line)
-    return lines
-
-
-def _environment(lines: list[str]) -> str:
-    if len(lines) == 1:
-        return "\\[\n" + lines[0] + "\n\\]\n"
-    return "\\begin{multline*}\n" + " \\\\\n".join(lines) + "\n\\end{multline*}\n"
-
-
-def _split(expr, lhs, rel: str = "="):
-    """(lhs, relation symbol, rhs) of a step: a sympy relation is split at its operator."""
-    if lhs is None and isinstance(expr, sp.Rel):
-        return expr.lhs, _RELATIONS.get(expr.rel_op, sp.latex(expr).split()[0]), expr.rhs
-    return lhs, rel, expr
-
-
-def _entry_symbol(r: int, c: int, shape) -> sp.Symbol:
-    sep = "," if max(shape) > 9 else ""
-    return sp.Symbol("m_{%d%s%d}" % (r + 1, sep, c + 1))
-
-
-def _matrix_display(lhs, rel: str, matrix: sp.MatrixBase) -> str:
-    """A matrix too wide for a line: its longest entries are named and listed below it."""
-    matrix = sp.ImmutableMatrix(matrix)
-    prefix = "" if lhs is None else (lhs if isinstance(lhs, str) else sp.latex(lhs)) + " " + rel + " "
-    budget = LINE_WIDTH_EM - estimate_width(prefix)
-    entries = sorted(
-        ((-estimate_width(sp.latex(matrix[r, c])), r, c) for r in range(matrix.rows) for c in range(matrix.cols)),
-    )
-    shown = matrix.as_mutable()
-    named = []
-    for negative_width, r, c in entries:
-        if estimate_width(sp.latex(shown)) <= budget or -negative_width <= 2.0:
-            break
-        shown[r, c] = _entry_symbol(r, c, matrix.shape)
-        named.append((r, c))
-    if not named or estimate_width(sp.latex(shown)) > budget:
-        # many columns of short entries: naming entries does not help; shrink (last resort)
-        return _environment([r"\fitwidth{%s}" % (prefix + sp.latex(matrix))])
-    head = _environment(_lines(lhs, rel, sp.ImmutableMatrix(shown)))
-    rows = [(_entry_symbol(r, c, matrix.shape), matrix[r, c]) for r, c in sorted(named)]
-    return head + "where\n" + _rows_display(rows)
-
-
-def _is_name(key) -> bool:
-    """Whether a mapping's key names its value (``x = 1``) rather than maps to it (``2 \\mapsto 1``)."""
-    if isinstance(key, str):
-        return True
-    if isinstance(key, (sp.Symbol, sp.Indexed, sp.MatrixSymbol, sp.IndexedBase)):
-        return True
-    return isinstance(key, sp.Function) and isinstance(key.func, sp.core.function.UndefinedFunction)
-
-
-def _mapping_rows(mapping: Mapping) -> tuple[list, str]:
-    """The rows of a mapping and their relation: names in the given order (``x = 1``);
-    anything else, e.g. eigenvalues with multiplicities, in sympy's sort order (``2 \\mapsto 1``)."""
-    items = list(mapping.items())
-    if all(_is_name(k) for k, _ in items):
-        return items, "="
-    return sorted(items, key=lambda kv: sp.default_sort_key(kv[0])), r"\mapsto"
-
-
-def _rows_display(rows: Sequence[tuple[object, object]], rel: str = "=") -> str:
-    """Equations ``lhs = rhs``: the short ones aligned together, the long ones broken."""
-    out, group = [], []
-
-    def flush():
-        if group:
-            out.append("\\begin{align*}\n" + " \\\\\n".join(group) + "\n\\end{align*}\n")
-            group.clear()
-
-    for lhs, rhs in rows:
-        lines = _lines(lhs, rel, rhs) if not isinstance(rhs, (sp.MatrixBase, Mapping, str)) else None
-        if lines is not None and len(lines) == 1 and not lines[0].startswith(r"\fitwidth"):
-            left = lhs if isinstance(lhs, str) else sp.latex(lhs)
-            group.append(left + " &" + rel + " " + sp.latex(rhs))
-        else:
-            flush()
-            out.append(display_math(rhs, lhs, rel=rel))
-    flush()
-    return "".join(out)
-
-
 def display_math(expr, lhs=None, *, rel: str = "=") -> str:
     """``expr`` (or ``lhs = expr``) as a displayed formula that fits in the text width.
 
-    A formula wider than a line is set in ``multline*``, broken between the terms of its
-    sums (and inside long products and fractions); a wide matrix has its long entries
-    named and listed below it; a mapping becomes aligned equations. Only a piece that has
-    no place to break is shrunk (``\\fitwidth``), as a last resort.
+    TeX breaks the formula between the terms of its sums (``dmath*``); the long parts it
+    cannot break are named and defined below it; a wide matrix has its long entries named,
+    or is shown in blocks of columns; a mapping becomes a group of equations.
 
     >>> from sympy.abc import x
     >>> print(display_math(x**2, lhs="f(x)"), end="")
-    \\[
+    \\begin{dmath*}
     f(x) = x^{2}
-    \\]
+    \\end{dmath*}
     """
     if isinstance(expr, Mapping):
-        return _rows_display(*_mapping_rows(expr))
+        return rows_display(*mapping_rows(expr))
     if isinstance(expr, str):
         return text_latex(expr) + "\n"
-    lhs, rel, rhs = _split(expr, lhs, rel)
-    if isinstance(rhs, sp.MatrixBase):
-        prefix = "" if lhs is None else (lhs if isinstance(lhs, str) else sp.latex(lhs)) + " " + rel + " "
-        if estimate_width(prefix + sp.latex(rhs)) > LINE_WIDTH_EM:
-            return _matrix_display(lhs, rel, rhs)
-    return _environment(_lines(lhs, rel, rhs))
+    return formula_display(lhs, rel, expr)
 
 
 # --------------------------------------------------------------------------------------
@@ -426,12 +226,12 @@ def aslatex(obj) -> str:
 @aslatex.register(set)
 @aslatex.register(frozenset)
 def _(obj) -> str:
-    return sp.latex(obj)
+    return latex(obj)
 
 
 @aslatex.register(Fraction)
 def _(obj: Fraction) -> str:
-    return sp.latex(sp.Rational(obj.numerator, obj.denominator))
+    return latex(sp.Rational(obj.numerator, obj.denominator))
 
 
 @aslatex.register(str)
@@ -441,7 +241,7 @@ def _(obj: str) -> str:
 
 @aslatex.register(Mapping)
 def _(obj: Mapping) -> str:
-    items, rel = _mapping_rows(obj)
+    items, rel = mapping_rows(obj)
     rows = [(k if isinstance(k, str) else aslatex(k)) + " &" + rel + " " + aslatex(v) for k, v in items]
     return "\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}"
 

@@ -43,6 +43,7 @@ import tomllib
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError, SymdecompError
 from symdecomp.expressions import parse_expression
+from symdecomp.schemes.loop import loop, loop_warren
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -51,7 +52,7 @@ from symdecomp.symbols import n as N
 __all__ = ["SCHEMES", "load_scheme", "scheme_from_text", "scheme_to_text"]
 
 #: Schemes known by name (``--scheme NAME``).
-SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark}
+SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark, "loop": loop, "loop-warren": loop_warren}
 
 #: Mesh types a file may name; ``"quad"`` is the default.
 MESHES = ("quad",)

@@ -36,6 +36,7 @@ __all__ = [
     "sparse_subdivision_matrix",
     "exact_subdivision_matrix",
     "characteristic_polynomial",
+    "entries_characteristic_polynomial",
 ]
 
 
@@ -198,4 +199,20 @@ def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None
     size = len(coeffs) - 1
     d = flint.fmpz(d)
     # coefficient of lambda^k in chi_S is c_k(A) * d^k / d^size
+    return flint.fmpq_poly([flint.fmpq(c * d**k, d**size) for k, c in enumerate(coeffs)])
+
+
+def entries_characteristic_polynomial(entries: dict, size: int) -> flint.fmpq_poly:
+    """``det(lambda I - S)`` of the ``size x size`` rational matrix ``{(row, column): value}``, exactly.
+
+    Row and column 0 are balanced as in :func:`characteristic_polynomial` (the centre carries the
+    ``1/n`` denominators); FLINT's ``fmpz_mat.charpoly`` does the rest. Used by the K-ring
+    certificates (:mod:`symdecomp.verify.ring_certify`).
+    """
+    entries = {k: v if isinstance(v, flint.fmpq) else flint.fmpq(v.numerator, v.denominator) for k, v in entries.items()}
+    A, d = _balanced_integer_matrix(entries, size)
+    p = A.charpoly()
+    coeffs = p.coeffs()
+    size = len(coeffs) - 1
+    d = flint.fmpz(d)
     return flint.fmpq_poly([flint.fmpq(c * d**k, d**size) for k, c in enumerate(coeffs)])

@@ -59,7 +59,7 @@ __all__ = [
     "ring_mesh",
     "ring_mesh_labels",
     "cube_mesh",
-    "refine",
+    "refine", "point_stencils", "refinement_matrix",
     "central_rings",
 ]
 
@@ -98,7 +98,8 @@ class MeshRules:
     def vertex_weights(self, valence: int) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """``(center, each edge neighbour, each face neighbour)`` of the vertex point at this valence."""
         v = self.scheme.vertex_rule
-        return tuple(sp.simplify(w.subs(N, valence)) for w in (v.center, v.each_a, v.each_b))
+        values = (w.subs(N, valence) for w in (v.center, v.each_a, v.each_b))
+        return tuple(x if x.is_Rational else sp.simplify(x) for x in values)
 
 
 def mesh_rules(scheme: Scheme) -> MeshRules:
@@ -378,16 +379,61 @@ class Refinement:
 
 
 def _combine(terms: Iterable[tuple[object, tuple]]) -> tuple:
-    acc = None
-    for w, val in terms:
-        if acc is None:
-            acc = [w * x for x in val]
-        else:
-            if len(val) != len(acc):
-                raise InvalidMeshError("vertex values have different lengths")
-            for k, x in enumerate(val):
-                acc[k] += w * x
-    return tuple(acc)
+    terms = list(terms)
+    if len({len(val) for _, val in terms}) != 1:
+        raise InvalidMeshError("vertex values have different lengths")
+    return tuple(sum((w * val[k] for w, val in terms[1:]), terms[0][0] * terms[0][1][k]) for k in range(len(terms[0][1])))
+
+
+def point_stencils(mesh: QuadMesh, rules: MeshRules) -> tuple[dict, dict, dict]:
+    """``(face, edge, vertex)`` stencils ``{key: ((weight, old vertex id), ...)}`` of the refined points
+    (keys: face index, ``frozenset({u, v})`` of an edge with two faces, interior vertex id)."""
+    fc, ee, es = (_as_weight(w) for w in (rules.face_corner, rules.edge_end, rules.edge_side))
+    face = {fi: tuple((fc, x) for x in f) for fi, f in enumerate(mesh.faces)}
+    edge = {}
+    for (u, v), left in mesh._directed.items():
+        key = frozenset((u, v))
+        right = mesh._directed.get((v, u))
+        if key in edge or right is None:
+            continue
+        fl, fr = mesh.faces[left], mesh.faces[right]
+        kl, kr = fl.index(u), fr.index(v)
+        # left face (u, v, x, y), right face (v, u, p, q): the ends and the four side corners.
+        sides = (fl[(kl + 2) % 4], fl[(kl + 3) % 4], fr[(kr + 2) % 4], fr[(kr + 3) % 4])
+        edge[key] = ((ee, u), (ee, v)) + tuple((es, x) for x in sides)
+    vertex, cache = {}, {}
+    for v in (v for v in mesh.vertices() if mesh.is_interior(v)):
+        _, a, b = mesh.one_ring(v)
+        if len(a) not in cache:
+            cache[len(a)] = tuple(_as_weight(w) for w in rules.vertex_weights(len(a)))
+        wc, wa, wb = cache[len(a)]
+        vertex[v] = ((wc, v),) + tuple((wa, x) for x in a) + tuple((wb, x) for x in b)
+    return face, edge, vertex
+
+
+def refinement_matrix(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules, columns: Sequence[int], rows: Sequence) -> list[dict]:
+    """The exact matrix, sparse rows ``{column index: weight}``, from the values at ``columns`` (old ids)
+    to the refined points ``rows``, each named by a vertex id, a 2-set of ids (edge) or a face's 4
+    corners. Raises :class:`InvalidMeshError` for a point outside ``mesh`` or depending on a vertex
+    outside ``columns``."""
+    rules = scheme_or_rules if isinstance(scheme_or_rules, MeshRules) else mesh_rules(scheme_or_rules)
+    face, edge, vertex = point_stencils(mesh, rules)
+    face_by_corners = {frozenset(f): fi for fi, f in enumerate(mesh.faces)}
+    col = {v: k for k, v in enumerate(columns)}
+    out = []
+    for r in rows:
+        key = frozenset(r) if isinstance(r, (set, frozenset, tuple, list)) else frozenset((r,))
+        table = {1: vertex, 2: edge, 4: face}.get(len(key))
+        index = next(iter(key)) if len(key) == 1 else face_by_corners.get(key) if len(key) == 4 else key
+        if table is None or index not in table:
+            raise InvalidMeshError(f"refined point of {sorted(key)} is not computable in this mesh")
+        row: dict = {}
+        for w, x in table[index]:
+            if x not in col:
+                raise InvalidMeshError(f"refined point of {sorted(key)} depends on vertex {x}, outside the given columns")
+            row[col[x]] = row.get(col[x], 0) + w
+        out.append(row)
+    return out
 
 
 def _child_faces(mesh: QuadMesh, vertex_point: dict, edge_point: dict, face_point: dict) -> list[tuple[int, ...]]:
@@ -396,12 +442,7 @@ def _child_faces(mesh: QuadMesh, vertex_point: dict, edge_point: dict, face_poin
     for fi, f in enumerate(mesh.faces):
         for k in range(4):
             corner, nxt, prv = f[k], f[(k + 1) % 4], f[(k + 3) % 4]
-            quad = (
-                vertex_point.get(corner),
-                edge_point.get(frozenset((corner, nxt))),
-                face_point[fi],
-                edge_point.get(frozenset((prv, corner))),
-            )
+            quad = (vertex_point.get(corner), edge_point.get(frozenset((corner, nxt))), face_point[fi], edge_point.get(frozenset((prv, corner))))
             if None not in quad:
                 new_faces.append(quad)
     return new_faces
@@ -414,51 +455,21 @@ def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules) -> Refinement:
     computed, and new faces with such a corner are dropped.
     """
     rules = scheme_or_rules if isinstance(scheme_or_rules, MeshRules) else mesh_rules(scheme_or_rules)
-    fc = _as_weight(rules.face_corner)
-    ee, es = _as_weight(rules.edge_end), _as_weight(rules.edge_side)
+    face, edge, vertex = point_stencils(mesh, rules)
     vals = mesh.values
     new_values: dict[int, tuple] = {}
     counter = iter(range(10**12))
     face_point, edge_point, vertex_point = {}, {}, {}
-    for fi, f in enumerate(mesh.faces):
-        i = next(counter)
-        face_point[fi] = i
-        new_values[i] = _combine((fc, vals[x]) for x in f)
-    for (u, v), left in mesh._directed.items():
-        key = frozenset((u, v))
-        if key in edge_point:
-            continue
-        right = mesh._directed.get((v, u))
-        if right is None:
-            continue
-        fl, fr = mesh.faces[left], mesh.faces[right]
-        kl, kr = fl.index(u), fr.index(v)
-        # left face (u, v, x, y), right face (v, u, p, q): the ends and the four side corners.
-        sides = (fl[(kl + 2) % 4], fl[(kl + 3) % 4], fr[(kr + 2) % 4], fr[(kr + 3) % 4])
-        i = next(counter)
-        edge_point[key] = i
-        new_values[i] = _combine([(ee, vals[u]), (ee, vals[v])] + [(es, vals[x]) for x in sides])
-    weights_cache: dict[int, tuple] = {}
-    for v in mesh.vertices():
-        if not mesh.is_interior(v):
-            continue
-        o, a, b = mesh.one_ring(v)
-        m = len(a)
-        if m not in weights_cache:
-            weights_cache[m] = tuple(_as_weight(w) for w in rules.vertex_weights(m))
-        wc, wa, wb = weights_cache[m]
-        i = next(counter)
-        vertex_point[v] = i
-        new_values[i] = _combine([(wc, vals[v])] + [(wa, vals[x]) for x in a] + [(wb, vals[x]) for x in b])
+    for table, ids in ((face, face_point), (edge, edge_point), (vertex, vertex_point)):
+        for key, stencil in table.items():
+            i = next(counter)
+            ids[key] = i
+            new_values[i] = _combine((w, vals[x]) for w, x in stencil)
     new_faces = _child_faces(mesh, vertex_point, edge_point, face_point)
     used = {x for f in new_faces for x in f}
     refined = QuadMesh(tuple(new_faces), {i: val for i, val in new_values.items() if i in used})
-    return Refinement(
-        refined,
-        MappingProxyType({k: i for k, i in vertex_point.items() if i in used}),
-        MappingProxyType({k: i for k, i in edge_point.items() if i in used}),
-        MappingProxyType({k: i for k, i in face_point.items() if i in used}),
-    )
+    kept = (MappingProxyType({k: i for k, i in m.items() if i in used}) for m in (vertex_point, edge_point, face_point))
+    return Refinement(refined, *kept)
 
 
 def central_rings(

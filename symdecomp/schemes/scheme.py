@@ -40,6 +40,7 @@ from symdecomp.validate import check_valence, parameter_values
 __all__ = [
     "Stencil",
     "VertexRule",
+    "MESH_TYPES",
     "Scheme",
     "catmull_clark",
     "subdivision_entries",
@@ -151,24 +152,46 @@ class VertexRule:
         return self.center + N * self.each_a + N * self.each_b
 
 
+#: The mesh types a scheme can live on.
+MESH_TYPES = ("quad", "triangle")
+
+
 @dataclass(frozen=True)
 class Scheme:
-    """A subdivision scheme on the 1-ring of a quad mesh, given by its three rules."""
+    """A subdivision scheme on the 1-ring of a quad or triangle mesh, given by its rules.
+
+    On a quad mesh (``mesh = "quad"``, the paper's shape) the 1-ring is ``(O, a_i, b_i)`` and
+    the scheme has an edge, a face and a vertex rule. On a triangle mesh
+    (``mesh = "triangle"``) the 1-ring is ``(O, a_0..a_{n-1})`` with faces ``(O, a_i, a_{i+1})``:
+    there are no face neighbours, so ``face_rule`` is ``None``, the edge rule has no ``b``
+    weights and the vertex rule's ``each_b`` is 0.
+    """
 
     #: A short name, used in reports.
     name: str
     #: The rule for the new edge neighbours ``a_i`` (Eq. 14 for Catmull-Clark).
     edge_rule: Stencil
-    #: The rule for the new face neighbours ``b_i`` (Eq. 15 for Catmull-Clark).
-    face_rule: Stencil
+    #: The rule for the new face neighbours ``b_i`` (Eq. 15 for Catmull-Clark); ``None`` on triangles.
+    face_rule: Stencil | None
     #: The rule for the new ``O`` (Eq. 16).
     vertex_rule: VertexRule
     #: Free parameters of the scheme (symbols other than ``n`` in its weights).
     parameters: tuple[sp.Symbol, ...] = field(default=())
+    #: ``"quad"`` (the paper's shape) or ``"triangle"`` (e.g. Loop).
+    mesh: str = "quad"
 
     def __post_init__(self):
+        if self.mesh not in MESH_TYPES:
+            raise InvalidSchemeError(f"scheme {self.name!r}: mesh must be one of {MESH_TYPES}, got {self.mesh!r}")
+        if (self.face_rule is None) != (self.mesh == "triangle"):
+            raise InvalidSchemeError(
+                f"scheme {self.name!r}: a {self.mesh} scheme "
+                + ("has no face rule" if self.mesh == "triangle" else "needs a face rule")
+            )
+        if self.mesh == "triangle" and (self.edge_rule.b or self.vertex_rule.each_b != 0):
+            raise InvalidSchemeError(f"scheme {self.name!r}: a triangle 1-ring has no face neighbours b_i; give no b weights")
         free = set()
-        for rule in (self.edge_rule, self.face_rule):
+        for rule in self.stencils():
             free |= rule.center.free_symbols
             for _, w in rule.a + rule.b:
                 free |= w.free_symbols
@@ -180,9 +203,16 @@ class Scheme:
             object.__setattr__(
                 self, "parameters", tuple(self.parameters) + tuple(sorted(free - declared, key=str))
             )
-        offsets = self.edge_rule.offsets() + self.face_rule.offsets() + (0,)
-        span = max(offsets) - min(offsets)
-        object.__setattr__(self, "_span", span)
+        offsets = tuple(k for rule in self.stencils() for k in rule.offsets()) + (0,)
+        object.__setattr__(self, "_span", max(offsets) - min(offsets))
+
+    def stencils(self) -> tuple[Stencil, ...]:
+        """The 1-ring stencils: ``(edge rule, face rule)`` on quads, ``(edge rule,)`` on triangles."""
+        return (self.edge_rule,) if self.face_rule is None else (self.edge_rule, self.face_rule)
+
+    def ring_size(self, n: int) -> int:
+        """Points of the 1-ring at valence ``n``: ``2n + 1`` on quads, ``n + 1`` on triangles."""
+        return (n if self.mesh == "triangle" else 2 * n) + 1
 
     def minimum_valence(self) -> int:
         """The smallest valence for which the stencil offsets are distinct mod ``n`` (at least 3)."""
@@ -210,9 +240,10 @@ class Scheme:
         return Scheme(
             name or self.name,
             st(self.edge_rule, "edge rule"),
-            st(self.face_rule, "face rule"),
+            None if self.face_rule is None else st(self.face_rule, "face rule"),
             VertexRule.from_weights(v.center.subs(subs), v.each_a.subs(subs), v.each_b.subs(subs)),
             tuple(p for p in self.parameters if p not in subs),
+            self.mesh,
         )
 
 
@@ -240,10 +271,14 @@ def catmull_clark(alpha=None, beta=None) -> Scheme:
     return Scheme("catmull-clark" if standard else "catmull-clark (tuned vertex rule)", edge, face, vertex)
 
 
-def vertex_order(n: int) -> tuple[str, ...]:
-    """Names of the rows/columns of the subdivision matrix: ``O, a_0..a_{n-1}, b_0..b_{n-1}``."""
+def vertex_order(n: int, mesh: str = "quad") -> tuple[str, ...]:
+    """Names of the rows/columns of the subdivision matrix: ``O, a_0..a_{n-1}, b_0..b_{n-1}``.
+
+    On a triangle mesh (``mesh="triangle"``) there are no ``b_i``.
+    """
     n = check_valence(n)
-    return ("O",) + tuple(f"a_{i}" for i in range(n)) + tuple(f"b_{i}" for i in range(n))
+    b = () if mesh == "triangle" else tuple(f"b_{i}" for i in range(n))
+    return ("O",) + tuple(f"a_{i}" for i in range(n)) + b
 
 
 def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]) -> dict[tuple[int, int], Any]:
@@ -271,8 +306,9 @@ def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]
     each_a, each_b = weight(v.each_a), weight(v.each_b)
     for i in range(n):
         add(0, 1 + i, each_a)
-        add(0, 1 + n + i, each_b)
-    for row_offset, rule in ((1, scheme.edge_rule), (1 + n, scheme.face_rule)):
+        if scheme.face_rule is not None:
+            add(0, 1 + n + i, each_b)
+    for row_offset, rule in zip((1, 1 + n), scheme.stencils()):
         center = weight(rule.center)
         a = [(k, weight(x)) for k, x in rule.a]
         b = [(k, weight(x)) for k, x in rule.b]
@@ -289,7 +325,7 @@ def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]
 
 def _check_defined(scheme: Scheme, n: int) -> None:
     """Refuse a valence at which a weight of the scheme is undefined (e.g. ``1/(n - 5)`` at ``n = 5``)."""
-    for label, rule in (("edge rule", scheme.edge_rule), ("face rule", scheme.face_rule)):
+    for label, rule in zip(("edge rule", "face rule"), scheme.stencils()):
         for w in (rule.center, *(w for _, w in rule.a + rule.b)):
             _check_weight_at(w, n, f"{scheme.name!r} {label}")
     v = scheme.vertex_rule
@@ -303,12 +339,12 @@ def _check_weight_at(weight: sp.Expr, n: int, where: str) -> None:
 
 
 def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:
-    """The exact ``(2n+1) x (2n+1)`` subdivision matrix of ``scheme`` at valence ``n``, in sympy.
+    """The exact subdivision matrix of ``scheme`` at valence ``n``, in sympy: ``(2n+1)`` or ``(n+1)`` square.
 
-    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` (Section 6), assembled by
-    :func:`subdivision_entries`, without any circulant structure.
+    Rows and columns in the order ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` (Section 6; no ``b_i`` on a
+    triangle mesh), assembled by :func:`subdivision_entries`, without any circulant structure.
     """
     n = check_valence(n)
-    size = 2 * n + 1
+    size = scheme.ring_size(n)
     entries = subdivision_entries(scheme, n, lambda w: w.subs(N, n))
     return sp.ImmutableMatrix(size, size, lambda r, c: entries.get((r, c), sp.Integer(0)))

@@ -25,7 +25,7 @@ from symdecomp.errors import InternalError, InvalidInputError, SymdecompError, U
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.verify.opensubdiv import build as _build
 
-__all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings"]
+__all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings", "osd_limit_points"]
 
 
 class BridgeUnavailableError(UnavailableError):
@@ -175,3 +175,40 @@ def _refine(lib, mesh: QuadMesh, center: int, levels: int, start: int | None) ->
     if rc != 0:
         raise InternalError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
     return OsdRings(out, limit)
+
+
+def osd_limit_points(mesh: QuadMesh, levels: int) -> tuple[np.ndarray, np.ndarray]:
+    """``(points, limits)``: every vertex of ``mesh`` refined ``levels`` times in OpenSubdiv, and its limit position.
+
+    Both ``(V_L, 3)`` arrays in OpenSubdiv's vertex order of the last level (match the points
+    to find a vertex). Boundary vertices use OpenSubdiv's edge-only boundary rules.
+    """
+    lib = load_bridge()
+    if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
+        raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
+    try:
+        fn = lib.symdecomp_osd_limit_points
+    except AttributeError:
+        raise BridgeUnavailableError(f"the OpenSubdiv bridge has no limit-points function; run: {_build.REBUILD_COMMAND}") from None
+    ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
+    fn.argtypes = [ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ctypes.c_int, ip, dp, dp, ctypes.c_char_p, ctypes.c_int]
+    fn.restype = ctypes.c_int
+    ids = mesh.vertices()
+    index = {v: i for i, v in enumerate(ids)}
+    pos = np.ascontiguousarray([[float(x) for x in mesh.values[v]] for v in ids], dtype=np.float64)
+    if pos.shape[1] != 3:
+        raise InvalidInputError(f"OpenSubdiv bridge needs 3-vector values, got length {pos.shape[1]}")
+    faces = np.ascontiguousarray([[index[v] for v in f] for f in mesh.faces], dtype=np.intc)
+    capacity = len(ids) * 4**levels + len(mesh.faces) * 4**levels + 16
+    points = np.zeros((capacity, 3))
+    limits = np.zeros((capacity, 3))
+    count = ctypes.c_int(0)
+    err = ctypes.create_string_buffer(512)
+    ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
+    rc = fn(
+        len(ids), len(mesh.faces), faces.ctypes.data_as(ip), pos.ctypes.data_as(dp), levels, capacity,
+        ctypes.byref(count), points.ctypes.data_as(dp), limits.ctypes.data_as(dp), err, len(err),
+    )
+    if rc != 0:
+        raise InternalError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
+    return points[: count.value], limits[: count.value]

@@ -9,6 +9,7 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -171,6 +172,166 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
             return 6;
         }
         for (int c = 0; c < 3; ++c) limit_out[c] = limit[o].p[c];
+        return 0;
+    } catch (std::exception const &exc) {
+        set_error(error, error_len, exc.what());
+        return 9;
+    } catch (...) {
+        set_error(error, error_len, "unknown C++ exception");
+        return 9;
+    }
+}
+
+// Refine the quad mesh `levels` times (uniform Catmull-Clark) and write, for every vertex of
+// the last level, its refined position (points_out) and OpenSubdiv's limit position
+// (Far::PrimvarRefiner::Limit; limits_out), 3 doubles each. *count receives the number of
+// last-level vertices; if it exceeds `capacity` nothing is written and 7 is returned.
+int symdecomp_osd_limit_points(int n_vertices, int n_faces, const int *face_vertices,
+                               const double *positions, int levels, int capacity, int *count,
+                               double *points_out, double *limits_out, char *error,
+                               int error_len) {
+    try {
+        osd_failed = false;
+        Far::SetErrorCallback(record_error);
+        if (n_vertices <= 0 || n_faces <= 0 || levels < 0) {
+            set_error(error, error_len, "bad sizes");
+            return 1;
+        }
+        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), 4);
+        Far::TopologyDescriptor desc;
+        desc.numVertices = n_vertices;
+        desc.numFaces = n_faces;
+        desc.numVertsPerFace = verts_per_face.data();
+        desc.vertIndicesPerFace = face_vertices;
+        Sdc::Options sdc;
+        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+        std::unique_ptr<Far::TopologyRefiner> refiner(
+            Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+        if (!refiner || osd_failed) {
+            set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
+            return 2;
+        }
+        Far::TopologyRefiner::UniformOptions uniform(levels);
+        uniform.fullTopologyInLastLevel = true;
+        refiner->RefineUniform(uniform);
+        const int last = refiner->GetLevel(levels).GetNumVertices();
+        *count = last;
+        if (last > capacity) {
+            set_error(error, error_len, "output capacity too small");
+            return 7;
+        }
+        std::vector<Point> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+        for (int v = 0; v < n_vertices; ++v) {
+            for (int c = 0; c < 3; ++c) buffer[v].p[c] = positions[3 * v + c];
+        }
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        Point *src = buffer.data();
+        for (int level = 1; level <= levels; ++level) {
+            Point *dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+            primvar.Interpolate(level, src, dst);
+            src = dst;
+        }
+        std::vector<Point> limit(static_cast<size_t>(last));
+        Point *limit_dst = limit.data();
+        primvar.Limit(src, limit_dst);
+        if (osd_failed) {
+            set_error(error, error_len, last_osd_error);
+            return 6;
+        }
+        for (int v = 0; v < last; ++v) {
+            for (int c = 0; c < 3; ++c) {
+                points_out[3 * v + c] = src[v].p[c];
+                limits_out[3 * v + c] = limit[v].p[c];
+            }
+        }
+        return 0;
+    } catch (std::exception const &exc) {
+        set_error(error, error_len, exc.what());
+        return 9;
+    } catch (...) {
+        set_error(error, error_len, "unknown C++ exception");
+        return 9;
+    }
+}
+
+}  // extern "C"
+
+// ---------------------------------------------------------------------------------------------
+// Loop's scheme on triangle meshes (a separate entry point; the Catmull-Clark one is above).
+
+extern "C" {
+
+// Refine the triangle mesh once with OpenSubdiv's Loop scheme. For every base vertex v,
+// vertex_out[3v..] is its child vertex point, limit_out[3v..] the limit position of that
+// child (= the limit of v) and tan1_out, tan2_out its two limit tangents (OpenSubdiv's
+// first derivatives); all are NaN for a vertex without a child. For each of the
+// n_edges pairs (edges[2i], edges[2i+1]), edge_out[3i..] is the edge point. Returns 0 on
+// success, nonzero (with a message in `error`) on failure.
+int symdecomp_osd_loop_step(int n_vertices, int n_faces, const int *face_vertices, const double *positions,
+                            int n_edges, const int *edges, double *vertex_out, double *edge_out,
+                            double *limit_out, double *tan1_out, double *tan2_out, char *error, int error_len) {
+    try {
+        osd_failed = false;
+        Far::SetErrorCallback(record_error);
+        if (n_vertices <= 0 || n_faces <= 0 || n_edges < 0) {
+            set_error(error, error_len, "bad sizes");
+            return 1;
+        }
+        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), 3);
+        Far::TopologyDescriptor desc;
+        desc.numVertices = n_vertices;
+        desc.numFaces = n_faces;
+        desc.numVertsPerFace = verts_per_face.data();
+        desc.vertIndicesPerFace = face_vertices;
+        Sdc::Options sdc;
+        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+        std::unique_ptr<Far::TopologyRefiner> refiner(
+            Factory::Create(desc, Factory::Options(Sdc::SCHEME_LOOP, sdc)));
+        if (!refiner || osd_failed) {
+            set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
+            return 2;
+        }
+        Far::TopologyRefiner::UniformOptions uniform(1);
+        uniform.fullTopologyInLastLevel = true;
+        refiner->RefineUniform(uniform);
+        std::vector<Point> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+        for (int v = 0; v < n_vertices; ++v) {
+            for (int c = 0; c < 3; ++c) buffer[v].p[c] = positions[3 * v + c];
+        }
+        Point *fine = buffer.data() + n_vertices;
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        primvar.Interpolate(1, buffer.data(), fine);
+        size_t fine_count = static_cast<size_t>(refiner->GetLevel(1).GetNumVertices());
+        std::vector<Point> limit(fine_count), tan1(fine_count), tan2(fine_count);
+        Point *limit_dst = limit.data();
+        Point *tan1_dst = tan1.data();
+        Point *tan2_dst = tan2.data();
+        primvar.Limit(fine, limit_dst, tan1_dst, tan2_dst);
+        if (osd_failed) {
+            set_error(error, error_len, last_osd_error);
+            return 6;
+        }
+        Far::TopologyLevel const &base = refiner->GetLevel(0);
+        for (int v = 0; v < n_vertices; ++v) {
+            Far::Index child = base.GetVertexChildVertex(v);
+            for (int c = 0; c < 3; ++c) {
+                vertex_out[3 * v + c] = child < 0 ? std::nan("") : fine[child].p[c];
+                limit_out[3 * v + c] = child < 0 ? std::nan("") : limit[child].p[c];
+                tan1_out[3 * v + c] = child < 0 ? std::nan("") : tan1[child].p[c];
+                tan2_out[3 * v + c] = child < 0 ? std::nan("") : tan2[child].p[c];
+            }
+        }
+        for (int i = 0; i < n_edges; ++i) {
+            Far::Index e = base.FindEdge(edges[2 * i], edges[2 * i + 1]);
+            if (e < 0) {
+                set_error(error, error_len, "a requested edge is not in the mesh");
+                return 4;
+            }
+            Far::Index child = base.GetEdgeChildVertex(e);
+            for (int c = 0; c < 3; ++c) edge_out[3 * i + c] = fine[child].p[c];
+        }
         return 0;
     } catch (std::exception const &exc) {
         set_error(error, error_len, exc.what());

@@ -1,0 +1,237 @@
+"""Exact evaluation of the patch next to an extraordinary vertex (Stam's method).
+
+The patch ``(O, e_2, f_1, e_1)`` of a valence-``N`` vertex is evaluated from its ``K = 2N + 8``
+control points (order: :mod:`symdecomp.schemes.patch`) and the eigen-data of the patch matrix
+(:mod:`symdecomp.analysis.eigendata`): for ``(u, v)`` in ``[0, 1]^2`` other than ``(0, 0)``,
+
+* ``n = floor(-log2 max(u, v)) + 1``, ``(u, v) <- 2^(n-1) (u, v)``;
+* sub-patch ``k`` and local ``(s, t)``: ``v < 1/2``: ``k = 0``, ``(2u - 1, 2v)``; else ``u < 1/2``:
+  ``k = 2``, ``(2u, 2v - 1)``; else ``k = 1``, ``(2u - 1, 2v - 1)``;
+* ``s(u, v) = sum_i lam_i^(n-1) (sum_l Phi_k[i, l] b_l(s, t)) (V^-1 C)_i`` with the bicubic
+  B-spline basis ``b_{a + 4b}(s, t) = N_a(s) N_b(t)``.
+
+Derivatives follow by the chain rule (``d/du = 2^n d/ds``). At ``(0, 0)`` the point is the
+limit position (the position mask) and the normal the cross product of the two tangent masks'
+images; the derivatives there are not defined by the parametrization (NaN).
+
+Two arithmetics, one formula: :class:`PatchEvaluator` holds numpy float64 arrays (from the data
+file, vectorized over many parameters) or numpy object arrays of mpmath numbers at any
+precision (from the Arb balls, :meth:`PatchEvaluator.exact`).
+
+Affine invariance as a check: equal control points give that point everywhere.
+
+>>> import numpy as np
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> from symdecomp.analysis.eigendata import certified_eigendata
+>>> cc = catmull_clark()
+>>> ev = PatchEvaluator.from_rounded(cc, certified_eigendata(cc, 7)[1])
+>>> out = ev.evaluate(np.ones((22, 1)), [0.3, 0.01], [0.7, 0.02])
+>>> np.allclose(out["point"], 1), np.allclose(out["du"], 0)
+(True, True)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch_eigendata
+from symdecomp.analysis.masks import INDEX, LAMBDA1, limit_masks
+from symdecomp.errors import InvalidInputError
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
+
+__all__ = ["EvaluationError", "PatchEvaluator", "bspline_basis", "patch_order", "patch_masks", "curvatures"]
+
+
+class EvaluationError(InvalidInputError):
+    """Parameters outside ``[0, 1]^2`` or control points of the wrong shape."""
+
+
+#: Output key -> order of the derivative in (u, v).
+_DERIVATIVES = {"point": (0, 0), "du": (1, 0), "dv": (0, 1), "duu": (2, 0), "duv": (1, 1), "dvv": (0, 2)}
+
+
+def patch_order(n: int) -> np.ndarray:
+    """Index permutation from the masks' order ``(O, a_0.., b_0..)`` to the patch's ``(O, e_0, f_0, ..)``."""
+    return np.array([0] + [x for i in range(n) for x in (1 + i, 1 + n + i)])
+
+
+def bspline_basis(t, derivative: int = 0):
+    """The uniform cubic B-spline basis ``N_0..N_3`` (or a derivative) at ``t``: shape ``(4,) + t.shape``."""
+    one = t * 0 + 1
+    if derivative == 0:
+        return np.array([(one - t) ** 3 / 6, (3 * t**3 - 6 * t**2 + 4 * one) / 6, (-3 * t**3 + 3 * t**2 + 3 * t + one) / 6, t**3 / 6])
+    if derivative == 1:
+        return np.array([-((one - t) ** 2) / 2, (9 * t**2 - 12 * t) / 6, (-9 * t**2 + 6 * t + 3 * one) / 6, t**2 / 2])
+    return np.array([one - t, 3 * t - 2 * one, -3 * t + one, t])
+
+
+@dataclass(frozen=True)
+class PatchEvaluator:
+    """Evaluate the valence-``n`` patch; arrays float64 or objects (mpmath numbers)."""
+
+    n: int
+    values: np.ndarray  # (K,)
+    inverse: np.ndarray  # (K, K)
+    phi: np.ndarray  # (3, K, 16)
+    position_mask: np.ndarray  # (K,) limit position, patch order
+    tangent_masks: np.ndarray  # (2, K)
+    #: Working precision (decimal digits) of the mpmath arithmetic; None for float64.
+    dps: int | None = None
+
+    @classmethod
+    def from_rounded(cls, scheme: Scheme, data: RoundedEigenData) -> PatchEvaluator:
+        pos, tan = _masks(scheme, data.n, float)
+        return cls(data.n, data.values, data.inverse, data.phi, pos, tan)
+
+    @classmethod
+    def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi) -> PatchEvaluator:
+        pos, tan = _masks(scheme, n, float)
+        return cls(n, np.asarray(values, float), np.asarray(inverse, float), np.asarray(phi, float), pos, tan)
+
+    @classmethod
+    def exact(cls, scheme: Scheme, n: int, dps: int = 30) -> PatchEvaluator:
+        """mpmath numbers good to about ``dps`` digits (Arb balls at ``3.4 dps + 64`` bits)."""
+        n = check_valence(n)
+        data: PatchEigenData = patch_eigendata(scheme, n, int(3.4 * dps) + 64)
+        with mpmath.workdps(dps + 10):
+            mp = lambda x: mpmath.mpf(x.mid().str(dps + 15, radius=False))  # noqa: E731
+            size = data.size
+            values = np.array([mp(x) for x in data.values], dtype=object)
+            inverse = np.array([[mp(data.inverse[i, j]) for j in range(size)] for i in range(size)], dtype=object)
+            phi = np.array([[[mp(t[i, l]) for l in range(16)] for i in range(size)] for t in data.phi], dtype=object)
+            pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(sp.N(e, dps + 10)) if isinstance(e, sp.Basic) else mpmath.mpf(e))
+        return cls(n, values, inverse, phi, pos, tan, dps + 10)
+
+    def evaluate(self, control_points, u, v) -> dict:
+        """Point, first and second derivatives and unit normal at the parameters ``(u, v)`` (arrays).
+
+        Returns ``{"point", "du", "dv", "duu", "duv", "dvv", "normal"}``, each of shape
+        ``u.shape + (d,)`` for ``d``-dimensional control points of shape ``(K, d)``.
+        """
+        if self.dps is not None:
+            with mpmath.workdps(self.dps):
+                return self._evaluate(control_points, u, v)
+        return self._evaluate(control_points, u, v)
+
+    def _evaluate(self, control_points, u, v) -> dict:
+        c = np.asarray(control_points)
+        if c.ndim != 2 or c.shape[0] != 2 * self.n + 8:
+            raise EvaluationError(f"control points must have shape ({2 * self.n + 8}, d), got {c.shape}")
+        exact = self.values.dtype == object
+        u = np.atleast_1d(np.asarray(u, dtype=object if exact else float))
+        v = np.atleast_1d(np.asarray(v, dtype=object if exact else float))
+        u, v = np.broadcast_arrays(u, v)
+        if any(x < 0 or x > 1 for x in np.concatenate([u.ravel(), v.ravel()])):
+            raise EvaluationError("parameters must lie in [0, 1]")
+        shape, u, v = u.shape, u.ravel(), v.ravel()
+        proj = self.inverse.dot(c)  # (K, d): the control points in the eigenbasis
+        if exact:
+            out = {key: np.empty((u.size, c.shape[1]), dtype=object) for key in _DERIVATIVES}
+            for p in range(u.size):
+                self._one(proj, c, u[p], v[p], out, p)
+        else:
+            out = self._vectorized(proj, u, v)
+        out["normal"] = _normals(out["du"], out["dv"])
+        origin = np.flatnonzero([a == 0 and b == 0 for a, b in zip(u, v)])
+        if origin.size:
+            t1, t2 = self.tangent_masks.dot(c)
+            nrm = _normals(t2[None, :], t1[None, :])[0]  # (t1, t2) turn from e_0 to e_1: against (u, v)
+            for p in origin:
+                out["point"][p] = self.position_mask.dot(c)
+                out["normal"][p] = nrm
+                for key in list(_DERIVATIVES)[1:]:
+                    out[key][p] = mpmath.nan if exact else np.nan
+        return {k: a.reshape(shape + (c.shape[1],)) for k, a in out.items()}
+
+    def _vectorized(self, proj, u, v) -> dict:
+        origin = (u == 0) & (v == 0)
+        m, e = np.frexp(np.where(origin, 1.0, np.maximum(u, v)))
+        level = 1 - e + (m == 0.5)
+        us, vs = np.ldexp(u, level - 1), np.ldexp(v, level - 1)
+        k = np.where(vs < 0.5, 0, np.where(us < 0.5, 2, 1))
+        s, t = np.where(k == 2, 2 * us, 2 * us - 1), np.where(k == 0, 2 * vs, 2 * vs - 1)
+        weights = self.values[None, :] ** (level - 1)[:, None]
+        scale = np.ldexp(1.0, level)[:, None]
+        out = {}
+        for key, (ds, dt) in _DERIVATIVES.items():
+            basis = np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(u.size, 16)
+            g = np.empty((u.size, self.values.size), dtype=np.result_type(self.phi, self.values))
+            for kk in range(3):
+                sel = k == kk
+                g[sel] = basis[sel] @ self.phi[kk].T
+            out[key] = (g * weights) @ proj * scale ** (ds + dt)
+        return out
+
+    def _one(self, proj, c, u, v, out, p):
+        if u == 0 and v == 0:  # filled in by the caller from the masks
+            for key in _DERIVATIVES:
+                out[key][p] = mpmath.mpf(0)
+            return
+        level = 1
+        while max(u, v) <= 0.5:
+            u, v, level = u * 2, v * 2, level + 1
+        if v < 0.5:
+            k, s, t = 0, 2 * u - 1, 2 * v
+        elif u < 0.5:
+            k, s, t = 2, 2 * u, 2 * v - 1
+        else:
+            k, s, t = 1, 2 * u - 1, 2 * v - 1
+        scale = 2**level
+        weights = self.values ** (level - 1)
+        for key, (ds, dt) in _DERIVATIVES.items():
+            basis = np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel()  # index a + 4 b
+            out[key][p] = (weights * self.phi[k].dot(basis)).dot(proj) * scale ** (ds + dt)
+
+
+def _normals(du, dv):
+    n = np.cross(du, dv) if du.shape[-1] == 3 else np.zeros_like(du)
+    if du.dtype == object:
+        norms = np.array([mpmath.sqrt(sum(x * x for x in row)) or mpmath.nan for row in n], dtype=object)
+    else:
+        norms = np.sqrt((n * n).sum(axis=-1))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return n / norms[:, None]
+
+
+def patch_masks(scheme: Scheme, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The limit-position mask and the two tangent masks in the patch's order (float64, K entries)."""
+    return _masks(scheme, n, float)
+
+
+def curvatures(result: dict) -> tuple[np.ndarray, np.ndarray]:
+    """Gaussian and mean curvature from :meth:`PatchEvaluator.evaluate`'s derivatives (3D points)."""
+    du, dv, nrm = result["du"], result["dv"], result["normal"]
+    e, f, g = (du * du).sum(-1), (du * dv).sum(-1), (dv * dv).sum(-1)
+    l_, m, n_ = ((result[k] * nrm).sum(-1) for k in ("duu", "duv", "dvv"))
+    det = e * g - f * f
+    return (l_ * n_ - m * m) / det, (e * n_ - 2 * f * m + g * l_) / (2 * det)
+
+
+def _masks(scheme: Scheme, n: int, conv):
+    """The masks of :mod:`symdecomp.analysis.masks` at valence ``n`` in patch order, through ``conv``.
+
+    The closed forms are evaluated with mpmath (one compiled function per weight) rather than
+    by substituting every index: the exact masks at ``n = 128`` would take seconds.
+    """
+    m = limit_masks(scheme)
+    order = patch_order(n)
+    with mpmath.workdps(max(mpmath.mp.dps, 30)):
+        lam1 = mpmath.mpf(sp.N(m.subdominant.subs(N, n), mpmath.mp.dps + 5))
+        position = [m.position[0].subs(N, n)] + [m.position[1].subs(N, n)] * n + [m.position[2].subs(N, n)] * n
+        pos = [conv(position[i]) for i in order]
+        tangents = []
+        for a_w, b_w in zip(m.tangent_a, m.tangent_b):
+            fa, fb = (sp.lambdify((N, INDEX, LAMBDA1), w, "mpmath") for w in (a_w, b_w))
+            mask = [0] + [fa(n, i, lam1) for i in range(n)] + [fb(n, i, lam1) for i in range(n)]
+            tangents.append([conv(mask[i]) for i in order])
+    pos = np.array(pos + [conv(0)] * 7, dtype=object)
+    tan = np.array([t + [conv(0)] * 7 for t in tangents], dtype=object)
+    if conv is float:
+        pos, tan = pos.astype(float), tan.astype(float)
+    return pos, tan

@@ -1,0 +1,158 @@
+"""Block structure of the K-ring subdivision matrix, for symbolic valence and frequency.
+
+By rotational symmetry the ``K``-ring matrix of :mod:`symdecomp.schemes.rings`, with its rows
+in :meth:`~symdecomp.schemes.rings.RingMatrix.block_order`, is bordered by the centre and has
+``K' x K'`` circulant blocks of order ``n`` (``K'`` vertex classes per sector):
+
+    S = [[w_O, w^T (x) 1^T], [c (x) 1, (C_pq)]].
+
+Each block is banded (its stencils reach a fixed number of sectors), so it is given by a few
+offsets independent of ``n``. As in Prop. 6.2 and Remark 6.1 the spectrum splits into
+
+* frequency ``k = 0``: the ``(K'+1) x (K'+1)`` matrix ``E_0 = [[w_O, n w^T], [c, C(1)]]``;
+* frequency ``k = 1..n-1``: the ``K' x K'`` matrix ``E(omega) = (sum_l c^pq_l omega^l)`` at
+  ``omega = omega_n^k``, ``C(omega)`` the matrix of block symbols.
+
+The blocks are *read off* the matrix built by exact refinement at one valence ``n_0`` (with the
+centre weights kept as symbols) and checked against the refinement at ``n_0 + 1`` and
+``n_0 + 2``: the blocks must reproduce those matrices entry by entry, or an error says so.
+
+>>> from symdecomp.schemes.loop import loop
+>>> b = ring_blocks(loop(), 1)
+>>> b.frequency_matrix()
+Matrix([[omega/8 + 3/8 + 1/(8*omega)]])
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import lru_cache
+
+import sympy as sp
+
+from symdecomp.errors import InvalidSchemeError, SymdecompError
+from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, regular_valence, ring_subdivision_matrix
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
+
+__all__ = ["RingBlocks", "ring_blocks", "read_blocks"]
+
+
+def _q(x) -> sp.Expr:
+    return sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x)
+
+
+@dataclass(frozen=True)
+class RingBlocks:
+    """The bordered circulant-block form of the ``K``-ring matrix, for every valence."""
+
+    scheme: str
+    mesh: str
+    rings: int
+    #: The vertex classes ``(u, v)`` of a sector.
+    classes: tuple[tuple[int, int], ...]
+    #: ``w_O``: the weight of the centre in the new centre, in terms of :data:`CENTRE_WEIGHTS`.
+    centre: sp.Expr
+    #: ``w_q``: the weight of each vertex of class ``q`` in the new centre (same symbols).
+    centre_row: tuple[sp.Expr, ...]
+    #: ``c_p``: the weight of the centre in each new vertex of class ``p``.
+    centre_column: tuple[sp.Expr, ...]
+    #: ``offsets[p][q]``: ``{l: c_l}``, the block ``C_pq`` is ``sum_l c_l P^l`` (``P`` the cyclic shift).
+    offsets: tuple[tuple[tuple[tuple[int, sp.Expr], ...], ...], ...]
+    #: The scheme's centre weights: :data:`CENTRE_WEIGHTS` symbol -> expression in ``n``.
+    weights: tuple[tuple[sp.Symbol, sp.Expr], ...]
+
+    @property
+    def class_count(self) -> int:
+        return len(self.classes)
+
+    def frequency_matrix(self, omega=OMEGA) -> sp.ImmutableMatrix:
+        """``E(omega)``: the ``K' x K'`` matrix of block symbols (frequencies ``k != 0``)."""
+        K, omega = self.class_count, sp.sympify(omega)
+        return sp.ImmutableMatrix(K, K, lambda p, q: sp.Add(*[c * omega**l for l, c in self.offsets[p][q]]))
+
+    def frequency_zero_matrix(self, n=N, *, symbolic_weights: bool = False) -> sp.ImmutableMatrix:
+        """``E_0 = [[w_O, n w^T], [c, C(1)]]``; the centre weights as symbols or as the scheme's (in ``n``)."""
+        C1 = self.frequency_matrix(1)
+        subs = {} if symbolic_weights else {s: w.subs(N, n) for s, w in self.weights}
+        top = [self.centre.xreplace(subs)] + [n * w.xreplace(subs) for w in self.centre_row]
+        rows = [top] + [[self.centre_column[p]] + list(C1.row(p)) for p in range(self.class_count)]
+        return sp.ImmutableMatrix(rows)
+
+    def full_matrix(self, n: int, weights: dict | None = None) -> sp.ImmutableMatrix:
+        """The concrete matrix in block order, rebuilt from the blocks (to compare with a refinement)."""
+        K = self.class_count
+        subs = weights if weights is not None else {s: w.subs(N, n) for s, w in self.weights}
+        M = sp.zeros(1 + K * n, 1 + K * n)
+        M[0, 0] = self.centre.xreplace(subs)
+        for q in range(K):
+            for s in range(n):
+                M[0, 1 + q * n + s] = self.centre_row[q].xreplace(subs)
+        for p in range(K):
+            for s in range(n):
+                M[1 + p * n + s, 0] = self.centre_column[p]
+                for q in range(K):
+                    for l, c in self.offsets[p][q]:
+                        M[1 + p * n + s, 1 + q * n + (s + l) % n] += c
+        return sp.ImmutableMatrix(M)
+
+
+def _signed(l: int, n: int) -> int:
+    l %= n
+    return l - n if l > n // 2 else l
+
+
+def read_blocks(S: RingMatrix, scheme: Scheme) -> RingBlocks:
+    """Read the block form off a refinement matrix built with ``symbolic_centre=True``."""
+    n, classes = S.n, S.classes()
+    K = len(classes)
+    order = S.block_order()
+    position = {r: i for i, r in enumerate(order)}
+    rows = [dict() for _ in order]
+    for r, row in enumerate(S.rows):
+        rows[position[r]] = {position[c]: _q(x) for c, x in row.items()}
+
+    def uniform(values, what):
+        values = set(values)
+        if len(values) != 1:
+            raise SymdecompError(f"the {what} is not the same in every sector: the matrix is not rotationally symmetric")
+        return values.pop()
+
+    centre = rows[0].get(0, sp.Integer(0))
+    centre_row = tuple(uniform([rows[0].get(1 + q * n + s, sp.Integer(0)) for s in range(n)], "centre row") for q in range(K))
+    centre_column = tuple(uniform([rows[1 + p * n + s].get(0, sp.Integer(0)) for s in range(n)], "centre column") for p in range(K))
+    offsets = []
+    for p in range(K):
+        block_row = []
+        for q in range(K):
+            first = {_signed(c - 1 - q * n, n): x for c, x in rows[1 + p * n].items() if c and (c - 1) // n == q}
+            block_row.append(tuple(sorted(first.items())))
+        offsets.append(tuple(block_row))
+    v = scheme.vertex_rule
+    weights = tuple(zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)))
+    return RingBlocks(scheme.name, scheme.mesh, S.rings, classes, centre, centre_row, centre_column, tuple(offsets), weights)
+
+
+@lru_cache(maxsize=32)
+def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
+    """The block form of ``scheme``'s ``rings``-ring matrix, read at one valence and checked at two more."""
+    n0 = 4 * rings + 7
+    if n0 == regular_valence(scheme.mesh):  # pragma: no cover - 4K + 7 is odd
+        n0 += 1
+    blocks = read_blocks(ring_subdivision_matrix(scheme, n0, rings, symbolic_centre=True), scheme)
+    for n in (n0 + 1, n0 + 2):
+        S = ring_subdivision_matrix(scheme, n, rings, symbolic_centre=True)
+        order = S.block_order()
+        symbols = {s: s for s in CENTRE_WEIGHTS}
+        built = blocks.full_matrix(n, symbols)
+        refined = sp.zeros(S.size, S.size)
+        for r, row in enumerate(S.rows):
+            for c, x in row.items():
+                refined[r, c] = _q(x)
+        if refined.extract(order, order) != built:
+            raise InvalidSchemeError(
+                f"scheme {scheme.name!r}: the {rings}-ring matrix at n = {n} is not the banded block form read at n = {n0}"
+            )
+    return blocks

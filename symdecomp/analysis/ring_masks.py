@@ -1,0 +1,115 @@
+"""Limit-position and tangent masks of the centre for any scheme and K-ring, from the frequency matrices.
+
+Left eigenvectors of the full ``K``-ring matrix ``S`` come from those of the frequency matrices
+(the transpose of Prop. 6.2):
+
+* position (eigenvalue 1, frequency 0): if ``y E_0 = y`` then ``l_O = y_0`` and every vertex of
+  class ``q`` gets ``y_q / n``; scaled so that the weights sum to 1;
+* tangents (the subdominant eigenvalue ``lambda_1``, frequency 1): if ``y E(omega) = lambda_1 y``
+  with ``omega = exp(2 pi i/n)``, then ``l`` with weight ``y_q omega^(-s)`` on the vertex of class
+  ``q`` in sector ``s`` (0 on ``O``) is a complex left eigenvector; its real part and minus its
+  imaginary part are the two tangent masks, scaled so that ``a_s`` (class ``(1, 0)``) has weight
+  ``cos(2 pi s/n)``, resp. ``sin(2 pi s/n)``.
+
+``y`` is computed in certified Arb arithmetic (a square linear solve with one coordinate fixed)
+at the value's Arb ball, and checked: the residual ``|y (E - lambda I)|`` must be a ball around 0.
+
+>>> from symdecomp.schemes.loop import loop
+>>> m = ring_masks(loop(), 6, 1, digits=6)
+>>> m["position"]["O"], m["position"]["a"][:2], m["subdominant"]
+('0.5', ['0.0833333', '0.0833333'], '0.5')
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import flint
+import sympy as sp
+
+from symdecomp.algebra.compile import compile_expression
+from symdecomp.analysis.ring_blocks import ring_blocks
+from symdecomp.analysis.ring_spectrum import acb_text, ring_spectrum
+from symdecomp.errors import SymdecompError
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_valence
+
+__all__ = ["ring_masks"]
+
+
+def _left_null_vector(A, fixed_first: int | None = None):
+    """A nonzero ``y`` with ``y A = 0`` for a (numerically) singular acb matrix ``A``, or ``None``."""
+    K = A.nrows()
+    if K == 1:
+        return [flint.acb(1)]
+    At = A.transpose()
+    cols = [fixed_first] + [j for j in range(K) if j != fixed_first] if fixed_first is not None else range(K)
+    for j, i in itertools.product(cols, range(K)):
+        rows = [r for r in range(K) if r != i]
+        others = [c for c in range(K) if c != j]
+        M = flint.acb_mat([[At[r, c] for c in others] for r in rows])
+        rhs = flint.acb_mat([[-At[r, j]] for r in rows])
+        try:
+            x = M.solve(rhs)
+        except ZeroDivisionError:
+            continue
+        y = [flint.acb(0)] * K
+        y[j] = flint.acb(1)
+        for t, c in enumerate(others):
+            y[c] = x[t, 0]
+        return y
+    return None
+
+
+def _acb_matrix(M: sp.Matrix, variables, values):
+    return flint.acb_mat([[compile_expression(sp.sympify(M[r, c]), variables, "arb")(*values) for c in range(M.shape[1])]
+                          for r in range(M.shape[0])])
+
+
+def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> dict:
+    """The masks as JSON-ready decimal strings: ``{"n", "scheme", "rings", "subdominant", "position", "tangents"}``.
+
+    Each mask is ``{"O": w, "classes": {"u,v": [weight per sector]}}`` plus ``"a"`` (class ``(1, 0)``)
+    and, on quads, ``"b"`` (class ``(1, 1)``), the 1-ring names.
+    """
+    n = check_valence(n)
+    blocks = ring_blocks(scheme, rings)
+    spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False, jordan=False)
+    first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
+    lam1 = max(first, key=lambda e: float(e.ball.abs_upper())).ball
+    prec = max(128, 4 * digits + 64)
+    with flint.ctx.workprec(prec):
+        E0 = sp.Matrix(blocks.frequency_zero_matrix(n))
+        one = flint.acb_mat([[flint.acb(int(r == c)) for c in range(E0.shape[0])] for r in range(E0.shape[0])])
+        A0 = _acb_matrix(E0, (), ()) - one
+        y0 = _left_null_vector(A0, fixed_first=0)
+        w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
+        E1 = _acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,))
+        K = blocks.class_count
+        eye = flint.acb_mat([[flint.acb(int(r == c)) for c in range(K)] for r in range(K)])
+        A1 = E1 - lam1 * eye
+        y1 = _left_null_vector(A1, fixed_first=blocks.classes.index((1, 0)))
+        if y0 is None or y1 is None:
+            raise SymdecompError(f"n = {n}: no left eigenvector found for the masks (eigenvalue not simple?)")
+        for y, A in ((y0, A0), (y1, A1)):
+            residual = flint.acb_mat([y]) * A
+            if not all(residual[0, c].contains(0) for c in range(A.ncols())):
+                raise SymdecompError(f"n = {n}: the left eigenvector does not solve y (E - lambda I) = 0 (certified)")
+        total = y0[0] + sum(y0[1:], flint.acb(0))
+        position = [y / total for y in y0]
+        scale = y1[blocks.classes.index((1, 0))]
+        tangent = [y / scale for y in y1]
+        text = lambda z: acb_text(z, digits)  # noqa: E731
+        masks = {"position": {"O": text(position[0]), "classes": {}}, "tangents": [{"O": "0", "classes": {}}, {"O": "0", "classes": {}}]}
+        for q, (u, v) in enumerate(blocks.classes):
+            key = f"{u},{v}"
+            masks["position"]["classes"][key] = [text(position[1 + q] / n)] * n
+            rot = [tangent[q] * (flint.acb(flint.arb(flint.fmpq(-2 * s, n))).exp_pi_i()) for s in range(n)]
+            masks["tangents"][0]["classes"][key] = [text(flint.acb(z.real)) for z in rot]
+            masks["tangents"][1]["classes"][key] = [text(flint.acb(-z.imag)) for z in rot]
+        for mask in [masks["position"], *masks["tangents"]]:
+            mask["a"] = mask["classes"]["1,0"]
+            if scheme.mesh == "quad":
+                mask["b"] = mask["classes"]["1,1"]
+        return {"n": n, "scheme": scheme.name, "rings": rings, "subdominant": acb_text(lam1, digits), **masks}

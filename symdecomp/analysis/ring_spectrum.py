@@ -1,0 +1,350 @@
+"""Spectra of any rotationally symmetric scheme, K-ring, frequency by frequency.
+
+The spectrum of the ``K``-ring matrix is that of ``E_0`` and of ``E(omega_n^k)``,
+``k = 1..n-1`` (:mod:`symdecomp.analysis.ring_blocks`). Their characteristic polynomials are
+factored once, symbolically: ``det(lambda I - E(omega))`` over ``Q(omega)``, and
+``det(lambda I - E_0)`` over ``Q(n, w_a, w_b)`` with the centre weights as symbols (and
+``w_O = 1 - n w_a - n w_b``, the vertex rule being affine). A factor of degree ``<= 2`` in
+``lambda`` has closed-form roots; a higher one has roots that are exact algebraic numbers
+(roots of an exact polynomial with coefficients in a cyclotomic field), isolated at a
+valence by certified Arb balls (``acb_poly.roots``). All values are computed as Arb balls
+(the centre weights, e.g. Loop's ``cos(2 pi/n)``, enter exactly through
+:func:`~symdecomp.algebra.cyclotomic.cyclotomic_value`) and grouped into distinct values by
+overlapping balls; multiplicities count roots. A factor that is repeated (symbolically) or a
+cluster fed by one frequency twice is tested for a Jordan block: exactly, when the matrix
+and the value are rational there, otherwise the Jordan structure is reported unknown.
+
+>>> from symdecomp.schemes.loop import loop
+>>> sp7 = ring_spectrum(loop(), 7, digits=8)
+>>> [(e.text, e.multiplicity) for e in sp7.eigenvalues][:3]
+[('1.0', 1), ('0.53087245', 2), ('0.31936977', 2)]
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import flint
+import sympy as sp
+
+from symdecomp.algebra.compile import compile_expression
+from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value, matrix_rank, to_acb
+from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.rings import CENTRE_WEIGHTS
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import lam as LAM
+from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_valence
+
+__all__ = ["Factor", "FrequencyFactors", "frequency_factors", "RingEigenvalue", "RingSpectrum", "ring_spectrum", "acb_text"]
+
+W_O, W_A, W_B = CENTRE_WEIGHTS
+#: ``cos(2 pi k/n)``: the variable of the closed forms of frequency ``k`` when they are real.
+COSK = sp.Symbol("c_k", real=True)
+
+
+def _cosine_form(expr: sp.Expr) -> sp.Expr | None:
+    """A Laurent polynomial in ``omega`` with ``p(omega) = p(1/omega)`` as a polynomial in ``c_k``; else ``None``."""
+    numer, denom = sp.fraction(sp.together(sp.expand(expr)))
+    if not denom.free_symbols <= {OMEGA} or numer.free_symbols - {OMEGA}:
+        return None
+    dp, np_ = sp.Poly(denom, OMEGA), sp.Poly(numer, OMEGA)
+    if not dp.is_monomial:
+        return None
+    terms = {m[0] - dp.degree(): c / dp.LC() for m, c in np_.terms()}
+    if any(terms.get(-p, 0) != c for p, c in terms.items()):
+        return None
+    return sp.expand(sp.Add(*[c * (2 * sp.chebyshevt_poly(p, COSK) if p else 1) for p, c in terms.items() if p >= 0]))
+
+
+@dataclass(frozen=True)
+class Factor:
+    """An irreducible factor of a frequency's characteristic polynomial, with its exponent."""
+
+    #: The factor as a polynomial in ``lambda`` (coefficients in ``omega`` or in ``n, w_a, w_b``).
+    poly: sp.Expr
+    #: Its exponent in the characteristic polynomial.
+    exponent: int
+    #: Closed-form roots (degree <= 2), else ``None``. Frequencies ``k != 0``: in ``c_k =
+    #: cos(2 pi k/n)`` when the coefficients are symmetric in ``omega``, else in ``omega``.
+    roots: tuple[sp.Expr, ...] | None
+
+    @property
+    def degree(self) -> int:
+        return sp.degree(self.poly, LAM)
+
+
+@dataclass(frozen=True)
+class FrequencyFactors:
+    """The factored characteristic polynomials: ``E_0`` and ``E(omega)``."""
+
+    zero: tuple[Factor, ...]
+    other: tuple[Factor, ...]
+
+
+def _factors(charpoly: sp.Expr, gens) -> tuple[Factor, ...]:
+    numer, _ = sp.fraction(sp.together(sp.expand(charpoly)))
+    _, items = sp.factor_list(sp.expand(numer), *gens)
+    out = []
+    for f, e in items:
+        if not f.has(LAM):
+            continue  # a constant or a power of omega (the Laurent denominator)
+        p = sp.Poly(f, LAM)
+        lead = p.LC()
+        c = [sp.cancel(x / lead) for x in p.all_coeffs()]
+        if OMEGA in gens:
+            cos_c = [_cosine_form(x) for x in c]
+            if None not in cos_c:
+                c = cos_c
+        monic = sp.Add(*[x * LAM ** (p.degree() - i) for i, x in enumerate(c)])
+        roots = None
+        if p.degree() == 1:
+            roots = (sp.cancel(-c[1]),)
+        elif p.degree() == 2:
+            disc = sp.factor(sp.cancel(c[1] ** 2 - 4 * c[2]))
+            roots = tuple(sp.cancel(-c[1] / 2) + s * sp.sqrt(disc) / 2 for s in (1, -1))
+        out.append(Factor(monic, int(e), roots))
+    return tuple(out)
+
+
+@lru_cache(maxsize=32)
+def frequency_factors(blocks: RingBlocks) -> FrequencyFactors:
+    """Factor ``det(lambda I - E_0)`` and ``det(lambda I - E(omega))`` once, symbolically (exact)."""
+    K = blocks.class_count
+    E = blocks.frequency_matrix()
+    other = _factors((LAM * sp.eye(K) - E).det(method="berkowitz"), (LAM, OMEGA))
+    affine = 1 - N * W_A - (N * W_B if blocks.mesh == "quad" else 0)  # the vertex rule sums to 1
+    E0 = blocks.frequency_zero_matrix(symbolic_weights=True).xreplace({W_O: affine})
+    zero = _factors((LAM * sp.eye(K + 1) - E0).det(method="berkowitz"), (LAM, N, W_A, W_B))
+    return FrequencyFactors(zero, other)
+
+
+@dataclass(frozen=True)
+class RingEigenvalue:
+    """One distinct eigenvalue of the ``K``-ring matrix at a valence."""
+
+    #: A certified ball containing it (``flint.acb``).
+    ball: object
+    #: Decimal text.
+    text: str
+    multiplicity: int
+    #: The n-gon frequencies ``k`` it comes from.
+    frequencies: tuple[int, ...]
+    #: An exact expression (closed-form roots), or ``None`` for a root of a factor of degree > 2.
+    exact: sp.Expr | None
+    #: The factor (a polynomial in ``lambda``) it is a root of, at its first frequency.
+    factor: sp.Expr
+    #: Sizes of its Jordan blocks when known (all 1: not defective), else ``None``.
+    jordan: tuple[int, ...] | None
+
+    def as_json(self) -> dict:
+        return {
+            "value": self.text,
+            "multiplicity": self.multiplicity,
+            "frequencies": list(self.frequencies),
+            "exact": None if self.exact is None else str(self.exact),
+            "jordan_blocks": None if self.jordan is None else list(self.jordan),
+        }
+
+
+@dataclass(frozen=True)
+class RingSpectrum:
+    scheme: str
+    mesh: str
+    n: int
+    rings: int
+    size: int
+    digits: int
+    eigenvalues: tuple[RingEigenvalue, ...]
+
+    def as_json(self) -> dict:
+        return {
+            "n": self.n,
+            "scheme": self.scheme,
+            "mesh": self.mesh,
+            "rings": self.rings,
+            "size": self.size,
+            "digits": self.digits,
+            "eigenvalues": [e.as_json() for e in self.eigenvalues],
+        }
+
+
+def acb_text(z, digits: int) -> str:
+    """A ball's midpoint as decimal text with ``digits`` significant digits (``a+bj`` if complex)."""
+    import mpmath
+
+    from symdecomp.analysis.spectrum import format_value
+
+    with mpmath.workdps(digits + 10):
+        re = mpmath.mpf(z.real.mid().str(digits + 10, radius=False))
+        if z.imag.contains(0):
+            return format_value(re, digits)
+        return format_value(mpmath.mpc(re, mpmath.mpf(z.imag.mid().str(digits + 10, radius=False))), digits)
+
+
+def _centre_values(scheme: Scheme, n: int) -> tuple[dict, dict]:
+    """The centre weights at ``n``: exact sympy values and Cyclotomic values, by symbol."""
+    v = scheme.vertex_rule
+    exact, field = {}, {}
+    for s, w in ((W_A, v.each_a), (W_B, v.each_b)):
+        exact[s] = sp.sympify(w).subs(N, n)
+        try:
+            field[s] = cyclotomic_value(w, {N: n})
+        except ValueError as exc:
+            raise InvalidSchemeError(f"scheme {scheme.name!r}: vertex weight {w} at n = {n} is not exact in a cyclotomic field ({exc})") from None
+    return exact, field
+
+
+def _evaluator(expr: sp.Expr, variables):
+    return compile_expression(sp.sympify(expr), variables, "arb")
+
+
+class _Roots:
+    """Roots of the factors at a frequency as Arb balls (closed forms compiled once)."""
+
+    def __init__(self, factors: tuple[Factor, ...], variables):
+        self.factors = factors
+        self.variables = variables
+        self.closed = [[_evaluator(r, variables) for r in f.roots] if f.roots is not None else None for f in factors]
+        self.coeffs = [
+            None if f.roots is not None else [_evaluator(c, variables) for c in reversed(sp.Poly(f.poly, LAM).all_coeffs())]
+            for f in factors
+        ]
+
+    def at(self, args) -> list[tuple[object, int, int]]:
+        """``[(ball, factor index, root index)]`` with each root repeated by the factor's exponent."""
+        out = []
+        for i, f in enumerate(self.factors):
+            if self.closed[i] is not None:
+                balls = [g(*args) for g in self.closed[i]]
+            else:
+                poly = flint.acb_poly([flint.acb(c(*args)) for c in self.coeffs[i]])
+                balls = list(poly.roots())
+            for j, b in enumerate(balls):
+                out += [(flint.acb(b), i, j)] * f.exponent
+        return out
+
+
+def _clusters(items):
+    """Group balls that overlap (transitively); items are ``(ball, ...)`` tuples."""
+    order = sorted(range(len(items)), key=lambda i: (float(items[i][0].real.mid()), float(items[i][0].imag.mid())))
+    groups: list[list[int]] = []
+    for i in order:
+        ball = items[i][0]
+        for g in groups[-4:]:  # sorted by midpoint: overlapping balls are neighbours
+            if any(items[j][0].overlaps(ball) for j in g):
+                g.append(i)
+                break
+        else:
+            groups.append([i])
+    return groups
+
+
+def _exact_root(root: sp.Expr, k: int, n: int, weights: dict) -> sp.Expr:
+    """A closed-form root at frequency ``k``: ``omega -> exp(2 pi i k/n)`` written with cosines."""
+    expr = sp.sympify(root).xreplace({N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), **weights})
+    if not expr.has(OMEGA):
+        return sp.sympify(expr)
+    numer, denom = sp.fraction(sp.together(expr))
+    radical = any(not p.exp.is_Integer for p in numer.atoms(sp.Pow))
+    if denom.free_symbols <= {OMEGA} and sp.Poly(denom, OMEGA).is_monomial and not radical:
+        poly = sp.Poly(sp.expand(numer), OMEGA)
+        shift = sp.Poly(denom, OMEGA).degree()
+        terms = {m[0] - shift: c / sp.Poly(denom, OMEGA).LC() for m, c in poly.terms()}
+        if all(terms.get(-p, 0) == c for p, c in terms.items()):  # symmetric: a cosine polynomial
+            return sp.Add(*[c * (sp.cos(2 * sp.pi * p * k / n) if p else 1) for p, c in terms.items()])
+    return expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * k / n)})
+
+
+def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, exact: bool = True, jordan: bool = True) -> RingSpectrum:
+    """The eigenvalues of the ``rings``-ring matrix at valence ``n``, from the frequency factors.
+
+    ``exact``: attach exact closed forms to the values (costs a little sympy per value).
+    ``jordan``: decide the Jordan structure of repeated values (exact ranks; ``None`` if not asked).
+    """
+    n = check_valence(n)
+    blocks = ring_blocks(scheme, rings)
+    ff = frequency_factors(blocks)
+    exact_w, field_w = _centre_values(scheme, n)
+    prec = max(128, 4 * digits + 64)
+    with flint.ctx.workprec(prec):
+        zero = _Roots(ff.zero, (N, W_A, W_B))
+        other = _Roots(ff.other, (OMEGA, COSK))
+        wa, wb = (to_acb(field_w[s], prec) for s in (W_A, W_B))
+        items = [(b, 0, i, j) for b, i, j in zero.at((flint.acb(n), wa, wb))]
+        for k in range(1, n):
+            w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
+            items += [(b, k, i, j) for b, i, j in other.at((w, w.real))]
+        groups = _clusters(items)
+        groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
+        entries = []
+        for g in groups:
+            b, k, i, j = items[g[0]]
+            factors = ff.zero if k == 0 else ff.other
+            f = factors[i]
+            value = None
+            if exact and f.roots is not None:
+                value = _exact_root(f.roots[j], k, n, exact_w)
+            entries.append(
+                RingEigenvalue(
+                    ball=b,
+                    text=acb_text(b, digits),
+                    multiplicity=len(g),
+                    frequencies=tuple(sorted({items[x][1] for x in g})),
+                    exact=value,
+                    factor=f.poly.xreplace({N: n}) if k == 0 else f.poly,
+                    jordan=_jordan(blocks, ff, items, g, n, exact_w) if jordan else None,
+                )
+            )
+    size = 1 + blocks.class_count * n
+    return RingSpectrum(scheme.name, scheme.mesh, n, rings, size, digits, tuple(entries))
+
+
+def _jordan(blocks, ff, items, group, n, weights) -> tuple[int, ...] | None:
+    """Jordan block sizes of a cluster, exactly (ranks over ``Q(zeta_2n)``); ``None`` if not decidable.
+
+    Frequencies are independent (different Fourier subspaces), so the blocks are those of each
+    frequency matrix at the value. A value is handled when its closed form lies in ``Q(zeta_2n)``
+    there; otherwise (a radical, a root of a factor of degree > 2) a value repeated at one
+    frequency is left undecided (``None``).
+    """
+    by_k: dict[int, list[int]] = {}
+    for x in group:
+        by_k.setdefault(items[x][1], []).append(x)
+    sizes: list[int] = []
+    field = CyclotomicField(2 * n)
+    for k, members in sorted(by_k.items()):
+        if len(members) == 1:
+            sizes.append(1)
+            continue
+        _, _, i, j = items[members[0]]
+        f = (ff.zero if k == 0 else ff.other)[i]
+        if f.roots is None:
+            return None
+        at = {N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), **weights}
+        E = blocks.frequency_zero_matrix(n) if k == 0 else blocks.frequency_matrix()
+        try:
+            value = cyclotomic_value(sp.sympify(f.roots[j]).xreplace(at), field=field)
+            A = [[cyclotomic_value(sp.sympify(E[r, c]).xreplace(at), field=field) - (value if r == c else 0) for c in range(E.shape[1])]
+                 for r in range(E.shape[0])]
+        except ValueError:
+            return None
+        sizes += _partition(A, len(members))
+    return tuple(sorted(sizes, reverse=True))
+
+
+def _partition(A, m: int) -> list[int]:
+    """Jordan block sizes of the eigenvalue 0 of ``A`` (algebraic multiplicity ``m``) from exact ranks."""
+    size = len(A)
+    ranks, P = [size], [row[:] for row in A]
+    for _ in range(m):
+        ranks.append(matrix_rank(P))
+        if ranks[-1] == ranks[-2] or size - ranks[-1] >= m:
+            break  # the ranks are stable from here on
+        P = [[sum((P[r][t] * A[t][c] for t in range(size)), A[0][0] * 0) for c in range(size)] for r in range(size)]
+    ranks += [ranks[-1]] * (m + 1 - len(ranks))
+    more = [ranks[i] - ranks[i + 1] for i in range(m)]  # number of blocks of size > i
+    return [i + 1 for i in range(m) for _ in range(more[i] - (more[i + 1] if i + 1 < m else 0))]

@@ -1,0 +1,65 @@
+"""``symdecomp evaldata --n 3:N --out FILE``: Stam's eigen-data file, every float64 correctly rounded.
+
+Binary (default): the published file's layout (``int32 Nmax``, then per valence ``3..Nmax`` the
+eigenvalues, ``V^-1`` and the three sub-patch tables, little-endian), a drop-in replacement.
+``--format json --digits D``: the same data as decimal strings of ``D`` significant digits.
+``--json``: a summary for programs (``{"out", "format", "nmax", "bytes", "precision_bits"}``).
+"""
+
+from __future__ import annotations
+
+import sys
+
+from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
+from symdecomp.cli.common import Once, add_scheme_option, digits, positive_int, print_json, progress, valence_range
+from symdecomp.output.evaldata import EvalDataFileError, binary_bytes, check_writable, dumps, json_document, write_atomic
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "evaldata",
+        help="Stam's eigen-data file for exact evaluation near an extraordinary vertex",
+        description="Write the eigenvalues, inverse eigenvector matrix and sub-patch tables of the (2N+8)-point "
+        "patch matrix for valences 3..N, each float64 the correctly rounded value of the exact number "
+        "(certified Arb balls), in the layout of the published data file; or as JSON decimal strings.",
+    )
+    p.add_argument("--n", type=valence_range("evaldata"), action=Once, required=True, metavar="3:N",
+                   help="valences 3..N (the binary file starts at 3)")
+    p.add_argument("--out", action=Once, required=True, metavar="FILE", help="output file (written atomically)")
+    p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary", help="binary (default) or json")
+    p.add_argument("--digits", type=digits(), action=Once, default=20, help="significant digits in the JSON form (default 20)")
+    p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=2,
+                   help="worker processes for the binary file (default 2)")
+    p.add_argument("--json", action="store_true", help="print a JSON summary")
+    add_scheme_option(p)
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    ns = args.n
+    if ns[0] != 3:
+        raise EvalDataFileError(f"--n {ns[0]}:{ns[-1]}: the file holds valences 3..N; give --n 3:{ns[-1]}")
+    check_writable(args.out)
+    show = sys.stderr.isatty() and not args.json
+    precs = []
+    if args.format == "binary":
+        rounded = []
+        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs), len(ns), "evaldata", enabled=show):
+            precs.append(prec)
+            rounded.append(r)
+        content = binary_bytes(rounded)
+    else:
+        balls = []
+        for n in progress(ns, len(ns), "evaldata", enabled=show):
+            prec = max(1200, int(3.33 * args.digits) + 128)
+            data = patch_eigendata(args.scheme, n, prec)
+            precs.append(prec)
+            balls.append(data)
+        content = dumps(json_document(balls, args.digits))
+    write_atomic(args.out, content)
+    summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": len(content), "precision_bits": max(precs)}
+    if args.json:
+        print_json(summary)
+    else:
+        print(f"wrote {args.out}: {args.format}, valences 3..{ns[-1]}, {len(content)} bytes (working precision up to {max(precs)} bits)")
+    return 0

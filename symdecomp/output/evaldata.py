@@ -1,0 +1,148 @@
+"""Stam's eigen-data file for Catmull-Clark: the binary layout and a high-precision JSON form.
+
+Binary (little-endian, no padding; a drop-in replacement for the published ``ccdata50NT.dat``)::
+
+    int32 Nmax
+    for N = 3 .. Nmax (K = 2N + 8):
+        float64 val[K]; float64 vecI[K*K]  (element (i, j) at i + K*j)
+        float64 Phi0[K*16], Phi1[K*16], Phi2[K*16]  (element (i, l) at i + K*l)
+
+JSON: ``{"format": "stam-catmull-clark", "nmax", "digits", "valences": [{"n", "values",
+"inverse", "phi": [Phi0, Phi1, Phi2]}]}``, arrays flattened in the binary file's element order,
+every number a decimal string of ``digits`` significant digits.
+
+Files are written atomically: a temporary file in the target directory, then ``os.replace``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import struct
+import tempfile
+from collections.abc import Iterable
+
+import flint
+import numpy as np
+
+from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData
+from symdecomp.errors import InvalidInputError
+
+__all__ = ["EvalDataFileError", "binary_bytes", "write_atomic", "read_binary", "json_document", "dumps", "check_writable"]
+
+FORMAT = "stam-catmull-clark"
+
+
+class EvalDataFileError(InvalidInputError):
+    """An eigen-data file cannot be written or read (path, truncated or malformed content)."""
+
+
+def _check_sequence(ns: list[int]) -> None:
+    if not ns or ns != list(range(3, 3 + len(ns))):
+        raise EvalDataFileError(f"the file holds valences 3..Nmax in order, got {ns[:3]}...")
+
+
+def binary_bytes(data: Iterable[RoundedEigenData]) -> bytes:
+    """The binary file's content for the valences ``3..Nmax`` (in that order)."""
+    data = list(data)
+    _check_sequence([d.n for d in data])
+    parts = [struct.pack("<i", data[-1].n)]
+    for d in data:
+        parts.append(np.asarray(d.values, "<f8").tobytes())
+        parts.append(np.asarray(d.inverse, "<f8").ravel(order="F").tobytes())
+        for k in range(3):
+            parts.append(np.asarray(d.phi[k], "<f8").ravel(order="F").tobytes())
+    return b"".join(parts)
+
+
+def read_binary(path) -> dict[int, RoundedEigenData]:
+    """Read a binary eigen-data file back: valence -> arrays (``inverse[i, j]``, ``phi[k, i, l]``)."""
+    try:
+        with open(path, "rb") as fh:
+            raw = fh.read()
+    except OSError as exc:
+        raise EvalDataFileError(f"cannot read {path}: {exc.strerror}") from None
+    if len(raw) < 4:
+        raise EvalDataFileError(f"{path}: too short for an eigen-data file")
+    (nmax,) = struct.unpack_from("<i", raw, 0)
+    expected = 4 + 8 * sum((2 * n + 8) * (1 + (2 * n + 8) + 48) for n in range(3, nmax + 1)) if nmax >= 3 else -1
+    if len(raw) != expected:
+        raise EvalDataFileError(f"{path}: {len(raw)} bytes, but Nmax = {nmax} needs {expected}")
+    out, pos = {}, 4
+    for n in range(3, nmax + 1):
+        k = 2 * n + 8
+
+        offset = pos
+        values = np.frombuffer(raw, "<f8", k, offset)
+        offset += 8 * k
+        inverse = np.frombuffer(raw, "<f8", k * k, offset).reshape((k, k), order="F")
+        offset += 8 * k * k
+        phi = np.stack([np.frombuffer(raw, "<f8", 16 * k, offset + 8 * 16 * k * i).reshape((k, 16), order="F") for i in range(3)])
+        pos = offset + 8 * 48 * k
+        out[n] = RoundedEigenData(n, values.astype(float), inverse.astype(float), phi.astype(float))
+    return out
+
+
+def json_document(data: Iterable[PatchEigenData], digits: int) -> dict:
+    """The JSON form: the Arb balls' midpoints to ``digits`` significant digits (balls must be that narrow).
+
+    A ball that contains 0 and is narrower than ``10^-(digits + 20)`` is written ``"0"`` (the
+    entries are of order 1; the exact zeros come from symmetries).
+    """
+    tiny = flint.arb(10) ** (-(digits + 20))
+
+    def dec(x) -> str:
+        if x.contains(0) and x.rad() < tiny:
+            return "0"
+        if x.rel_accuracy_bits() < digits * 3.33 + 4:
+            raise EvalDataFileError(f"a ball is too wide for {digits} digits; raise the working precision")
+        return x.str(digits, radius=False)
+
+    valences = []
+    ns = []
+    for d in data:
+        ns.append(d.n)
+        k = d.size
+        valences.append(
+            {
+                "n": d.n,
+                "values": [dec(x) for x in d.values],
+                "inverse": [dec(d.inverse[i, j]) for j in range(k) for i in range(k)],
+                "phi": [[dec(t[i, l]) for l in range(16) for i in range(k)] for t in d.phi],
+            }
+        )
+    _check_sequence(ns)
+    return {"format": FORMAT, "nmax": ns[-1], "digits": digits, "valences": valences}
+
+
+def check_writable(path) -> None:
+    """Raise :class:`EvalDataFileError` now (before a long computation) if ``path`` cannot be written."""
+    folder = os.path.dirname(os.path.abspath(path)) or "."
+    if os.path.isdir(path):
+        raise EvalDataFileError(f"--out {path}: is a directory")
+    if not os.path.isdir(folder):
+        raise EvalDataFileError(f"--out {path}: no such directory {folder}")
+    if not os.access(folder, os.W_OK):
+        raise EvalDataFileError(f"--out {path}: directory {folder} is not writable")
+
+
+def write_atomic(path, content: bytes | str) -> None:
+    """Write ``content`` to ``path`` through a temporary file and ``os.replace`` (never half a file)."""
+    check_writable(path)
+    folder = os.path.dirname(os.path.abspath(path))
+    raw = content.encode() if isinstance(content, str) else content
+    fd, tmp = tempfile.mkstemp(prefix=".evaldata-", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(raw)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except OSError as exc:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise EvalDataFileError(f"cannot write {path}: {exc.strerror}") from None
+
+
+def dumps(document: dict) -> str:
+    return json.dumps(document, indent=1) + "\n"

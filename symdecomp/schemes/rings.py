@@ -1,0 +1,243 @@
+"""The subdivision matrix of the K-ring neighbourhood of a vertex, by exact refinement of a mesh.
+
+For a valence-``n`` vertex ``O`` the ``K``-ring neighbourhood is the vertex and the ``K``
+rings of vertices around it: ``1 + n K (K + 1)`` points on a quad mesh (Catmull-Clark 2-ring:
+``6n + 1``), ``1 + n K (K + 1)/2`` on a triangle mesh (Loop 2-ring: ``3n + 1``). The matrix is
+*not* assembled from 1-ring stencils: a ring mesh with ``K`` rings around ``O`` (every other
+vertex regular) is refined once by the scheme's mesh rules (face, edge and vertex points of
+the whole mesh: :func:`~symdecomp.schemes.mesh.refine`,
+:func:`~symdecomp.schemes.trimesh.refine_triangles`), with the unit vector ``e_j`` as the value
+of old vertex ``j``; the value of a new point is then its row of the matrix. Points are
+ordered by :func:`ring_labels` (ring by ring, sector by sector), and the new point with label
+``(s, u, v)`` is the one at lattice position ``(u/2, v/2)`` of the old mesh (a vertex point if
+``u, v`` are even, an edge point if one is odd, a face point (quads) if both are).
+
+The centre's vertex rule is the only rule evaluated at valence ``n``; when its weights are
+not rational there (Loop's ``cos(2 pi/n)``) the matrix keeps them as the symbols
+:data:`CENTRE_WEIGHTS` in row 0 (every other entry is rational: the other vertices are
+regular), and :meth:`RingMatrix.weight_values` gives their exact values.
+
+>>> from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+>>> S = ring_subdivision_matrix(catmull_clark(), 5, 2)
+>>> order = S.block_order()
+>>> S.size, S.classes(), S.exact_matrix().extract(order[:11], order[:11]) == subdivision_matrix(catmull_clark(), 5)
+(31, ((1, 0), (1, 1), (1, 2), (2, 0), (2, 1), (2, 2)), True)
+"""
+
+from __future__ import annotations
+
+import numbers
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import sympy as sp
+
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.mesh import MeshRules, mesh_rules, refine, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.trimesh import refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
+from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
+
+__all__ = ["CENTRE_WEIGHTS", "MAX_RINGS", "SparseRow", "RingMatrix", "ring_labels", "ring_size", "regular_valence", "ring_subdivision_matrix"]
+
+#: The deepest neighbourhood supported.
+MAX_RINGS = 3
+#: Symbols for the centre's vertex-rule weights ``(on O, each edge neighbour, each face neighbour)``.
+CENTRE_WEIGHTS = (sp.Symbol("w_O"), sp.Symbol("w_a"), sp.Symbol("w_b"))
+
+
+class SparseRow:
+    """A sparse vector ``{index: coefficient}``: the value carried through refinement."""
+
+    __slots__ = ("entries",)
+
+    def __init__(self, entries: Mapping):
+        self.entries = dict(entries)
+
+    def __rmul__(self, w):
+        return SparseRow({k: w * x for k, x in self.entries.items()})
+
+    def __add__(self, other: SparseRow) -> SparseRow:
+        out = dict(self.entries)
+        for k, x in other.entries.items():
+            out[k] = out[k] + x if k in out else x
+        return SparseRow(out)
+
+
+def regular_valence(mesh: str) -> int:
+    """The valence of a regular vertex: 4 on quad meshes, 6 on triangle meshes."""
+    return 6 if mesh == "triangle" else 4
+
+
+def ring_labels(mesh: str, n: int, rings: int) -> tuple[tuple[int, int, int], ...]:
+    """Labels ``(s, u, v)`` of the closed ``rings``-ring, in matrix order (the centre first)."""
+    return triangle_ring_labels(n, rings) if mesh == "triangle" else ring_mesh_labels(n, rings)
+
+
+def ring_size(mesh: str, n: int, rings: int) -> int:
+    """``1 + n K (K + 1)`` (quad) or ``1 + n K (K + 1)/2`` (triangle)."""
+    return 1 + n * rings * (rings + 1) // (2 if mesh == "triangle" else 1)
+
+
+def _check_rings(rings) -> int:
+    if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or not 1 <= rings <= MAX_RINGS:
+        raise InvalidSchemeError(f"rings must be an integer from 1 to {MAX_RINGS}, got {rings!r}")
+    return int(rings)
+
+
+@dataclass(frozen=True)
+class RingMatrix:
+    """The exact subdivision matrix of a ``K``-ring neighbourhood, as sparse rows."""
+
+    scheme: str
+    mesh: str
+    n: int
+    rings: int
+    #: Labels ``(s, u, v)`` of rows and columns (see :func:`ring_labels`).
+    labels: tuple[tuple[int, int, int], ...]
+    #: Row ``i``: ``{column: weight}``; weights are ``Fraction`` or linear in :data:`CENTRE_WEIGHTS` (row 0).
+    rows: tuple[Mapping[int, object], ...]
+    #: Symbol of :data:`CENTRE_WEIGHTS` -> the vertex rule's weight, an expression in ``n``
+    #: (only the symbols left in row 0; :meth:`weight_values` evaluates them).
+    weights: Mapping[sp.Symbol, sp.Expr] = field(default_factory=dict)
+
+    @property
+    def size(self) -> int:
+        return len(self.labels)
+
+    def weight_values(self) -> dict:
+        """Symbol -> exact value of the centre weight at this ``n`` (sympy)."""
+        return {s: sp.sympify(w).subs(N, self.n) for s, w in self.weights.items()}
+
+    def classes(self) -> tuple[tuple[int, int], ...]:
+        """The vertex classes ``(u, v)`` of a sector (the labels of sector 0), in label order."""
+        return tuple((u, v) for s, u, v in self.labels[1:] if s == 0)
+
+    def block_order(self) -> tuple[int, ...]:
+        """A permutation of the rows: the centre, then class by class, each over the sectors ``0..n-1``.
+
+        In this order the matrix is bordered with ``n x n`` circulant blocks (Section 6).
+        """
+        index = {lab: i for i, lab in enumerate(self.labels)}
+        return (0,) + tuple(index[(s, u, v)] for u, v in self.classes() for s in range(self.n))
+
+    def entries(self, weights: Mapping | None = None) -> dict:
+        """``{(row, column): Fraction}`` with the centre weights set to the rational ``weights``."""
+        subs = {k: sp.Rational(v) for k, v in (weights or {}).items()}
+        out = {}
+        for r, row in enumerate(self.rows):
+            for c, x in row.items():
+                if not isinstance(x, Fraction):
+                    x = sp.sympify(x).xreplace(subs)
+                    if not x.is_Rational:
+                        raise InvalidSchemeError(f"entry ({r}, {c}) = {x} is not rational; give values for {sorted(map(str, self.weights))}")
+                    x = Fraction(int(x.p), int(x.q))
+                if x:
+                    out[(r, c)] = x
+        return out
+
+    def exact_matrix(self) -> sp.ImmutableMatrix:
+        """The matrix as sympy, the centre weights replaced by their exact values."""
+        values = self.weight_values()
+        M = sp.zeros(self.size, self.size)
+        for r, row in enumerate(self.rows):
+            for c, x in row.items():
+                M[r, c] = sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x).xreplace(values)
+        return sp.ImmutableMatrix(M)
+
+
+def _exact_weights(scheme: Scheme, valence: int) -> tuple:
+    v = scheme.vertex_rule
+    out = tuple(sp.sympify(w).subs(N, valence) for w in (v.center, v.each_a, v.each_b))
+    return out
+
+
+def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_centre: bool = False) -> RingMatrix:
+    """The ``rings``-ring subdivision matrix of ``scheme`` at valence ``n``, by one exact refinement.
+
+    ``symbolic_centre``: keep the centre's vertex-rule weights as :data:`CENTRE_WEIGHTS` even
+    when they are rational (used to read the block structure for symbolic ``n``; needs ``n``
+    other than the regular valence).
+    """
+    n, rings = check_valence(n), _check_rings(rings)
+    if scheme.parameters:
+        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; substitute values first")
+    regular = regular_valence(scheme.mesh)
+    if symbolic_centre and n == regular:
+        raise InvalidSchemeError(f"symbolic centre weights need n != {regular}")
+    used: dict = {}
+
+    def weights_at(valence: int):
+        exact = _exact_weights(scheme, valence)
+        if valence == n and (symbolic_centre or not all(w.is_Rational for w in exact)):
+            v = scheme.vertex_rule
+            for s, w in zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)):
+                used[s] = w
+            return CENTRE_WEIGHTS if scheme.mesh == "quad" else CENTRE_WEIGHTS[:2]
+        if not all(w.is_Rational for w in exact):
+            raise InvalidSchemeError(
+                f"scheme {scheme.name!r}: the vertex rule at valence {valence} is not rational ({exact}); "
+                "the ring matrices need rational weights at the regular valence"
+            )
+        return exact if scheme.mesh == "quad" else exact[:2]
+
+    labels = ring_labels(scheme.mesh, n, rings)
+    unit = lambda s, u, v: (SparseRow({_index(labels, n, s, u, v): Fraction(1)}),)  # noqa: E731
+    if scheme.mesh == "triangle":
+        mesh = triangle_ring_mesh(n, rings, unit)
+        step = refine_triangles(mesh, triangle_mesh_rules(scheme), vertex_weights=weights_at)
+    else:
+        rules = _CentreRules(**{f: getattr(mesh_rules(scheme), f) for f in ("scheme", "face_corner", "edge_end", "edge_side")}, weights_at=weights_at)
+        mesh = ring_mesh(n, rings, unit)
+        step = refine(mesh, rules)
+    face_of = {frozenset(f): fi for fi, f in enumerate(mesh.faces)}
+    rows = []
+    for s, u, v in labels:
+        point = _new_point(step, scheme.mesh, labels, n, s, u, v, face_of)
+        row = step.mesh.values[point][0].entries
+        rows.append({c: x for c, x in sorted(row.items()) if x != 0})
+    weights = {s: w for s, w in used.items() if any(sp.sympify(x).has(s) for x in rows[0].values())}
+    return RingMatrix(scheme.name, scheme.mesh, n, rings, labels, tuple(rows), weights)
+
+
+@dataclass(frozen=True)
+class _CentreRules(MeshRules):
+    """Quad mesh rules whose vertex weights come from a function (symbolic at the centre)."""
+
+    weights_at: object = None
+
+    def vertex_weights(self, valence: int):
+        return self.weights_at(valence)
+
+
+_INDEX_CACHE: dict = {}
+
+
+def _index(labels, n, s, u, v) -> int:
+    key = id(labels)
+    if key not in _INDEX_CACHE or _INDEX_CACHE[key][0] is not labels:
+        _INDEX_CACHE.clear()
+        _INDEX_CACHE[key] = (labels, {lab: i for i, lab in enumerate(labels)})
+    return _INDEX_CACHE[key][1][_normal(n, s, u, v)]
+
+
+def _normal(n, s, u, v):
+    if u == 0 and v == 0:
+        return (0, 0, 0)
+    return ((s + 1) % n, v, 0) if u == 0 else (s % n, u, v)
+
+
+def _new_point(step, mesh: str, labels, n: int, s: int, u: int, v: int, face_of=None) -> int:
+    """The id, in the refined mesh, of the new point with label ``(s, u, v)``."""
+    old = lambda a, b: _index(labels, n, s, a, b)  # noqa: E731
+    if u % 2 == 0 and v % 2 == 0:
+        return step.vertex_point[old(u // 2, v // 2)]
+    if u % 2 == 0 or v % 2 == 0:
+        du, dv = u % 2, v % 2
+        return step.edge_point[frozenset((old((u - du) // 2, (v - dv) // 2), old((u + du) // 2, (v + dv) // 2)))]
+    if mesh == "triangle":  # both odd: the midpoint of the diagonal edge
+        return step.edge_point[frozenset((old((u - 1) // 2, (v + 1) // 2), old((u + 1) // 2, (v - 1) // 2)))]
+    corners = frozenset(old((u + a) // 2, (v + b) // 2) for a in (-1, 1) for b in (-1, 1))
+    return step.face_point[face_of[corners]]

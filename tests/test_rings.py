@@ -1,0 +1,225 @@
+"""Triangle schemes (Loop), K-ring matrices by refinement, their frequency matrices and spectra."""
+
+import json
+
+import mpmath
+import pytest
+import sympy as sp
+
+from symdecomp.algebra.cyclotomic import cyclotomic_value
+from symdecomp.analysis.defective import jordan_vertex_weights
+from symdecomp.analysis.masks import limit_masks_at
+from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.cli import main
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.loop import loop, loop_beta, loop_warren, triangle_scheme
+from symdecomp.schemes.rings import ring_subdivision_matrix
+from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
+from symdecomp.symbols import alpha, beta
+from symdecomp.symbols import n as N
+from symdecomp.verify.certify import certify
+from symdecomp.verify.result import CrossCheckStatus
+from symdecomp.verify.ring_certify import certify_ring
+from symdecomp.verify.ring_numeric import ring_numeric_check
+
+SCHEMES = {"loop": loop(), "loop-warren": loop_warren(), "catmull-clark": catmull_clark()}
+
+
+def _zero(expr) -> bool:
+    """Exactly zero: in a cyclotomic field (cosines of rational multiples of pi stay exact)."""
+    return cyclotomic_value(sp.expand(expr)).poly == 0
+
+
+@pytest.mark.parametrize("name", ["loop", "loop-warren"])
+@pytest.mark.parametrize("n", [3, 4, 5, 6, 7, 9])
+def test_triangle_refinement_reproduces_the_one_ring_rules(name, n):
+    scheme = SCHEMES[name]
+    S = ring_subdivision_matrix(scheme, n, 1).exact_matrix()
+    T = subdivision_matrix(scheme, n)
+    assert S.shape == (n + 1, n + 1)
+    assert all(_zero(S[r, c] - T[r, c]) for r in range(n + 1) for c in range(n + 1))
+
+
+def test_loop_and_warren_weights():
+    assert loop_beta().subs(N, 6) == sp.Rational(1, 16)
+    assert loop_beta().subs(N, 3) == sp.Rational(3, 16)  # (5/8 - (3/8 - 1/8)^2)/3
+    assert loop_warren().vertex_rule.each_a.subs(N, 3) == sp.Rational(3, 16)
+    assert loop_warren().vertex_rule.each_a.subs(N, 10) == sp.Rational(3, 80)
+    depends_on_n = triangle_scheme("bad", sp.Rational(1, 8), edge_end=sp.Rational(3, 8) + 1 / N, edge_side=sp.Rational(1, 8) - 1 / N)
+    with pytest.raises(InvalidSchemeError, match="depends on the valence"):
+        ring_subdivision_matrix(depends_on_n, 5, 1)
+    lopsided = triangle_scheme("lopsided", sp.Rational(1, 8), edge_end=sp.Rational(1, 2), edge_side=0)
+    assert ring_subdivision_matrix(lopsided, 5, 2).size == 16
+
+
+@pytest.mark.parametrize("name,rings,per_sector", [("catmull-clark", 2, 6), ("loop", 2, 3), ("catmull-clark", 3, 12), ("loop", 3, 6)])
+def test_ring_sizes_and_closure(name, rings, per_sector):
+    scheme = SCHEMES[name]
+    for n in (3, 5):
+        S = ring_subdivision_matrix(scheme, n, rings)
+        assert S.size == 1 + per_sector * n
+        inner = ring_subdivision_matrix(scheme, n, rings - 1)
+        # the (K-1)-ring is invariant: its rows reach no further, and equal the smaller matrix
+        for r in range(inner.size):
+            assert max(S.rows[r]) < inner.size
+            assert S.rows[r] == inner.rows[r]
+
+
+@pytest.mark.parametrize("name", ["loop", "catmull-clark"])
+@pytest.mark.parametrize("rings", [1, 2])
+def test_blocks_rebuild_the_refined_matrix_at_small_valences(name, rings):
+    scheme = SCHEMES[name]
+    blocks = ring_blocks(scheme, rings)
+    for n in (3, 4, 5, 6):
+        S = ring_subdivision_matrix(scheme, n, rings)
+        order = S.block_order()
+        A, B = S.exact_matrix().extract(order, order), blocks.full_matrix(n)
+        assert all(_zero(A[r, c] - B[r, c]) for r in range(S.size) for c in range(S.size))
+
+
+def test_loop_spectrum_at_seven_is_the_closed_forms():
+    spectrum = ring_spectrum(loop(), 7, digits=30)
+    beta7 = loop_beta().subs(N, 7)
+    expected = [sp.Integer(1), sp.Rational(5, 8) - 7 * beta7] + [sp.Rational(3, 8) + sp.cos(2 * sp.pi * k / 7) / 4 for k in range(1, 7)]
+    found = [(e.exact, e.multiplicity) for e in spectrum.eigenvalues]
+    assert sum(m for _, m in found) == 8
+    for value in expected:  # each expected value is, exactly, one of the listed ones
+        assert any(_zero(value - x) for x, _ in found)
+    assert _zero(spectrum.eigenvalues[1].exact - (sp.Rational(3, 8) + sp.cos(2 * sp.pi / 7) / 4))
+    assert spectrum.eigenvalues[1].multiplicity == 2 and spectrum.eigenvalues[1].frequencies == (1, 6)
+    with mpmath.workdps(40):  # the printed value is the closed form to the stated digits
+        assert abs(mpmath.mpf(spectrum.eigenvalues[1].text) - (mpmath.mpf(3) / 8 + mpmath.cos(2 * mpmath.pi / 7) / 4)) < mpmath.mpf(10) ** -29
+
+
+@pytest.mark.parametrize("name", ["loop", "loop-warren", "catmull-clark"])
+def test_two_ring_spectrum_contains_the_one_ring_spectrum(name):
+    for n in (3, 4, 5, 7):
+        one = {(e.text, e.multiplicity) for e in ring_spectrum(SCHEMES[name], n, 1, digits=25).eigenvalues}
+        two = {e.text: e.multiplicity for e in ring_spectrum(SCHEMES[name], n, 2, digits=25).eigenvalues}
+        assert all(two.get(text, 0) >= m for text, m in one)
+
+
+def test_regular_two_ring_spectra():
+    cc = {e.text: e.multiplicity for e in ring_spectrum(catmull_clark(), 4, 2, digits=10).eigenvalues}
+    assert cc["1.0"] == 1 and cc["0.5"] == 2 and cc["0.25"] == 3 and sum(cc.values()) == 25
+    lp = {e.text: e.multiplicity for e in ring_spectrum(loop(), 6, 2, digits=10).eigenvalues}
+    assert lp["1.0"] == 1 and lp["0.5"] == 2 and lp["0.25"] == 3 and sum(lp.values()) == 19
+
+
+def test_jordan_block_of_a_defective_vertex_rule():
+    tuned = catmull_clark(alpha, beta)
+    weights = jordan_vertex_weights(tuned, 5, sp.Rational(3, 8))
+    spectrum = ring_spectrum(tuned.substitute(weights), 5, 1, digits=15)
+    entry = next(e for e in spectrum.eigenvalues if e.text == "0.375")
+    assert entry.jordan == (2,) and entry.multiplicity == 2
+    plain = next(e for e in ring_spectrum(catmull_clark(), 4, 1, digits=15).eigenvalues if e.text == "0.25")
+    assert plain.jordan == (1, 1, 1)
+
+
+@pytest.mark.parametrize("name", ["loop", "loop-warren", "catmull-clark"])
+@pytest.mark.parametrize("rings", [1, 2])
+def test_certified_ring_spectra(name, rings):
+    for n in (3, 4, 5, 7):
+        c = certify_ring(SCHEMES[name], n, rings)
+        assert c.ok and c.multiplicities_certified, c.message
+        assert sum(c.multiplicities) == ring_subdivision_matrix(SCHEMES[name], n, rings).size
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["loop", "loop-warren", "catmull-clark"])
+@pytest.mark.parametrize("rings", [1, 2, 3])
+def test_certified_ring_spectra_wider(name, rings):
+    for n in range(3, 25):
+        c = certify_ring(SCHEMES[name], n, rings)
+        assert c.ok and c.multiplicities_certified, c.message
+
+
+def test_ring_certificate_agrees_with_the_one_ring_certificate():
+    for n in (3, 4, 5, 8):
+        a, b = certify_ring(catmull_clark(), n, 1), certify(catmull_clark(), n)
+        assert (a.distinct, a.multiplicities) == (b.distinct, b.multiplicities)
+
+
+def test_wrong_blocks_are_refuted():
+    b = ring_blocks(loop(), 1)
+    (offsets,), = b.offsets
+    wrong = tuple((l, c + (sp.Rational(1, 64) if l == 0 else 0)) for l, c in offsets)
+    bad = RingBlocks(b.scheme, b.mesh, b.rings, b.classes, b.centre, b.centre_row, b.centre_column, ((wrong,),), b.weights)
+    c = certify_ring(loop(), 5, 1, blocks=bad)
+    assert c.status is CrossCheckStatus.DISAGREE and "refuted" in c.message
+    c = certify_ring(loop(), 5, 1, blocks=bad, method="structure")
+    assert c.status is CrossCheckStatus.DISAGREE and "refuted" in c.message
+
+
+@pytest.mark.parametrize("name", ["loop", "catmull-clark"])
+def test_structural_certificate(name):
+    for n in (3, 4, 7, 40):
+        for rings in (1, 2):
+            c = certify_ring(SCHEMES[name], n, rings, method="structure")
+            assert c.ok, c.message
+            assert c.multiplicities == certify_ring(SCHEMES[name], n, rings).multiplicities
+
+
+def test_numeric_ring_check():
+    for name in ("loop", "catmull-clark"):
+        for n in (3, 6, 10):
+            r = ring_numeric_check(SCHEMES[name], n, 2, digits=10)
+            assert r.ok, r.message
+
+
+def test_masks_match_the_one_ring_masks_and_loop_limit_formula():
+    for n in (3, 5, 8):
+        a = ring_masks(catmull_clark(), n, 1, digits=15)
+        b = limit_masks_at(catmull_clark(), n).as_json(15)
+        for key in ("a", "b"):
+            assert a["position"][key] == b["position"][key]
+            assert all(float(x) == pytest.approx(float(y), abs=1e-14) for x, y in zip(a["tangents"][0][key], b["tangents"][0][key]))
+        # Loop: limit position (1 - n chi) O + chi sum a_i, chi = 1/(3/(8 beta) + n)
+        m = ring_masks(loop(), n, 1, digits=20)
+        with mpmath.workdps(30):
+            bn = mpmath.mpf(sp.N(loop_beta().subs(N, n), 40))
+            chi = 1 / (3 / (8 * bn) + n)
+            assert abs(mpmath.mpf(m["position"]["a"][0]) - chi) < mpmath.mpf(10) ** -18
+            assert abs(mpmath.mpf(m["position"]["O"]) - (1 - n * chi)) < mpmath.mpf(10) ** -18
+
+
+def _cli(capsys, *args):
+    """Run the command in-process: ``(exit code, stdout, stderr)`` (argparse errors exit 2)."""
+    try:
+        code = main(list(args))
+    except SystemExit as exc:
+        code = exc.code
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_cli_any_scheme_route(capsys):
+    code, out, err = _cli(capsys, "spectrum", "7", "--scheme", "loop", "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["eigenvalues"][0]["exact"] == "1" and data["eigenvalues"][1]["multiplicity"] == 2
+    code, out, _ = _cli(capsys, "check", "--scheme", "loop", "--rings", "2", "--n", "3:6", "--certify", "--json", "--jobs", "1")
+    assert code == 0 and json.loads(out)["summary"]["agree"] == 4
+    code, out, _ = _cli(capsys, "check", "--n", "3:5", "--certify", "--structural", "--json", "--jobs", "1")
+    assert code == 0 and json.loads(out)["summary"]["agree"] == 3
+    for bad in (("spectrum", "5", "--rings", "4"), ("check", "--scheme", "loop", "--n", "5", "--dps", "30"),
+                ("charpoly", "5", "--scheme", "loop", "--free-weights"), ("spectrum", "5", "--scheme", "nope"),
+                ("tune", "5", "--scheme", "loop"), ("check", "--n", "5", "--structural")):
+        code, _, err = _cli(capsys, *bad)
+        assert code == 2 and "error:" in err.strip().splitlines()[-1] and "Traceback" not in err
+    code, out, _ = _cli(capsys, "charpoly", "5", "--scheme", "loop", "--json")
+    assert code == 0 and json.loads(out)["matches_matrix"] is True
+    code, out, _ = _cli(capsys, "masks", "5", "--scheme", "loop", "--rings", "2", "--json")
+    assert code == 0 and json.loads(out)["position"]["classes"]["2,0"][0] == "0.0"
+
+
+def test_cyclotomic_values_are_exact():
+    m = sp.Symbol("m")
+    c7 = cyclotomic_value(sp.cos(2 * sp.pi / m), {m: 7})
+    # 8 c^3 + 4 c^2 - 4 c - 1 = 0 for c = cos(2 pi/7): exact in Q(zeta_14)
+    assert (c7 * c7 * c7 * 8 + c7 * c7 * 4 - c7 * 4 - 1).poly == 0
+    assert cyclotomic_value(sp.cos(2 * sp.pi / m) ** 2 + sp.sin(2 * sp.pi / m) ** 2, {m: 9}).poly == 1
+    with pytest.raises(ValueError):
+        cyclotomic_value(sp.sqrt(2))

@@ -17,6 +17,9 @@ EXPECTED = {
     "Eq. 2-4": P,
     "Eq. 5": P,
     "Eq. 6": P,
+    "Eq. 7": P,
+    "Eq. 8": P,
+    "Eq. 9": P,
     "Proposition 2.1": P,
     # Section 3
     "Section 3: symmetry": V,
@@ -32,6 +35,8 @@ EXPECTED = {
     "Proposition 4.1": P,
     "Proposition 4.2": P,
     "Proposition 4.3": P,
+    "Eq. 22": P,
+    "Eq. 23": P,
     "Eq. 24": P,
     # Section 5.1
     "Eq. 25-30": P,
@@ -40,7 +45,7 @@ EXPECTED = {
     "Eq. 34": P,
     "Eq. 35-37": C,  # 0/0 at j = n/2
     "Eq. 38": C,  # M_j = I/4 at j = n/2
-    "Proposition 5.1": V,
+    "Proposition 5.1": P,  # certified n = 3..1000, exact tail bound from n = 4
     "Remark 5.1": R,  # j = n +- 1 shrink at the tangent-plane rate
     "Eq. 39": C,  # B^j = r A^j, not A^j = r B^j
     "Eq. 39 (n = 4)": V,
@@ -59,7 +64,7 @@ EXPECTED = {
     # Section 5.3
     "Section 5.3: smaller eigenvalues": C,  # equal at n = 3
     "Section 5.3: quadratic speed": P,
-    "Section 5.3: construction": V,
+    "Section 5.3: construction": P,  # frequencies j = 1, 2 closed under the rules for every n (symbolic row i)
     "Section 5.3: basis function": V,
     # Section 6
     "Proposition 6.1": C,  # index range 0<i,j<n-1 as printed

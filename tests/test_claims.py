@@ -27,7 +27,7 @@ def test_claims_command_json(capsys):
     section_51 |= {"Remark 5.1", "Eq. 39", "Eq. 39 (n = 4)", "Eq. 39 (n → ∞)", "C1 (Reif's test)"}
     assert set(by_label) == section_51
     assert by_label["Remark 5.1"]["status"] == "refuted" and "counterexample" in by_label["Remark 5.1"]
-    assert by_label["Proposition 5.1"]["valences"] == [3, 1000]
+    assert by_label["Proposition 5.1"]["status"] == "proved"  # certified range plus the exact tail bound
     for r in rows:
         assert {"label", "status", "evidence"} <= set(r)
 

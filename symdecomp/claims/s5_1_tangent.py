@@ -6,6 +6,7 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
 from symdecomp.analysis.components import ZETA, initial_vector_condition, root_of_unity_orders
+from symdecomp.analysis.dominance import tail_bound
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
@@ -318,14 +319,22 @@ def _prop51(scheme: Scheme) -> CheckResult:
                  "sum of positive terms) failed: ", derivative),
             steps=steps,
         )
+    tail = tail_bound(scheme)
+    proved = tail is not None and tail.start <= last + 1
+    if proved:
+        steps += (Step(f"Beyond $n = {tail.start - 1}$, with $\\cos(\\pi/n) \\ge 1 - 5/n^2$, these are positive "
+                       "(dominance/tail_bound), so $\\lambda_1 > |\\mu|$ for every larger $n$:", sp.Matrix(tail.facts)),)
     return CheckResult(
-        Status.VERIFIED,
+        Status.PROVED if proved else Status.VERIFIED,
         Text("for all ", n, " the dominant eigenvalue of ", Mk("j"), " increases with ", cos_j_theta**2, " (its derivative in ",
              gt(C, 0), " is a sum of positive terms), so among the frequencies k = 1..n-1 it is largest at k = 1 and n - 1 "
              "(the 2n-gon components j = 1, 2n-1 and also j = n-1, n+1, which share ", Mk(1), "); against the derived "
              "eigenvalues of the Eq. 43 block other than 1 (", sp.Matrix(block).T, ") it is larger for n = 3..", last,
-             ", certified in interval arithmetic"),
-        valences=(3, last),
+             ", certified in interval arithmetic",
+             *(() if not proved else ("; for ", ge(n, tail.start), " an exact bound (", ge(sp.cos(sp.pi / n), 1 - 5 / n**2),
+                                      ", eigenvalue comparisons as signs of rational functions of ", n, ") covers the rest")),
+             *(() if proved else ("; no analytic bound beyond ", eq(n, last), " was found",))),
+        valences=None if proved else (3, last),
         steps=steps,
     )
 

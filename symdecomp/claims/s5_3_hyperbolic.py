@@ -6,11 +6,7 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
 from symdecomp.analysis.elliptic import elliptic_component, tangent_lambda
-<<<<<<< HEAD
-from symdecomp.analysis.frequency import recursion_matrix
-=======
-from symdecomp.analysis.frequency import per_frequency_matrix
->>>>>>> proofs
+from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues

@@ -16,13 +16,15 @@ MAX_FUNCTION_LINES = 60
 
 #: Paths (relative to the package) not checked yet, each with the reason. Remove an entry once
 #: its owner has brought the module within the limits.
-NOT_CHECKED_YET = {
-    "claims": "the claims modules are being rewritten with structured findings (issue 10, item 5)",
-}
+NOT_CHECKED_YET: dict[str, str] = {}
 
 #: ``"module/path.py:function"`` of the functions allowed over the limit (each also states its
 #: reason in a ``# long:`` comment in its body).
-LONG_FUNCTIONS: set[str] = set()
+LONG_FUNCTIONS: set[str] = {
+    "claims/s3_support.py:_cc_support",
+    "claims/s3_support.py:_symmetry",
+    "claims/s6_cb_matrices.py:_prop63",
+}
 
 
 def _checked(path: pathlib.Path) -> bool:

@@ -63,6 +63,7 @@ def _cubes(scheme: Scheme, levels=(0, 1, 2)):
     "inside, on the boundary, or outside the support of $P'$, correspondingly.",
 )
 def _symmetry(scheme: Scheme) -> CheckResult:
+    # long: the symmetry check and its counterexample search share one loop over the valences.
     if (result := _not_a_mesh_scheme(scheme)) is not None:
         return result
     cc = scheme
@@ -221,6 +222,8 @@ def _boundary_influence(scheme: Scheme) -> CheckResult:
     "neighbourhood, while the vertices on the boundary of the support are the boundary vertices of the 2-ring.",
 )
 def _cc_support(scheme: Scheme) -> CheckResult:
+    # long: one pass over the valences gathers the classification, the paper's counts and the
+    # derivation steps together; split, each piece would re-run the exact refinement.
     if (result := _not_a_mesh_scheme(scheme)) is not None:
         return result
     cc = scheme

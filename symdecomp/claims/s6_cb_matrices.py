@@ -411,6 +411,8 @@ def PRINTED_63_FACTOR(blocks: int, order: int) -> int:
     statement=r"$B$ with circulant blocks, $A$ with constant blocks $a_{ij}$ ($n\times n$ blocks of size $m$), $C=B+A$. If Remark 6.1 holds, the eigenvalues of $C$ and $B$ agree except for $n$ of them, found as the eigenvectors of $E_1+T$, $t_{ij}=na_{ij}$.",
 )
 def _prop63(scheme: Scheme) -> CheckResult:
+    # long: the symbolic-order proof, the printed factor and the counterexample are three
+    # readings of one set of blocks, built once here.
     # symbolic order: a constant block t J is the circulant with zero band and constant t.
     K = 2
     t = sp.Matrix(2, 2, sp.symbols("t0:4"))

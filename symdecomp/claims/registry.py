@@ -8,7 +8,7 @@ with the paper's label, its section, its statement, and a *check*: a function re
 Statuses:
 
 ``proved``     shown symbolically, for every valence ``n`` (and every frequency).
-``verified``   shown exactly (rational or algebraic arithmetic) for each ``n`` in a stated range.
+``verified``   shown for each ``n`` in a stated range, exactly or in certified interval arithmetic.
 ``numeric``    agrees to a stated number of digits.
 ``refuted``    false; the result carries a counterexample.
 ``corrected``  false as printed; a corrected statement is proved, and the correction is shown.

@@ -269,7 +269,8 @@ def _scope(result: CheckResult) -> str:
     """What the status rests on: the valences, the digits."""
     if result.valences is not None:
         lo, hi = result.valences
-        return f" (exactly, for $n = {lo}, \\dots, {hi}$)" if hi > lo else f" (exactly, for $n = {lo}$)"
+        # verified: exact arithmetic or certified intervals (the evidence says which), per valence
+        return f" (for each $n = {lo}, \\dots, {hi}$)" if hi > lo else f" (for $n = {lo}$)"
     if result.digits is not None:
         return f" (to {result.digits} significant digits)"
     return ""

@@ -67,12 +67,13 @@ def run(args) -> int:
         print_json(rows)
     else:
         wl = max((len(r["label"]) for r in rows), default=5)
+        ws = max((len(r["status"]) for r in rows), default=9)
         for r in rows:
-            print(f"{r['section']:<5} {r['label']:<{wl}}  {r['status']:<9}  {r['evidence']}")
+            print(f"{r['section']:<5} {r['label']:<{wl}}  {r['status']:<{ws}}  {r['evidence']}")
             if "correction" in r:
-                print(f"{'':<5} {'':<{wl}}  {'':<9}  corrected: {r['correction']}")
+                print(f"{'':<5} {'':<{wl}}  {'':<{ws}}  corrected: {r['correction']}")
             if "counterexample" in r:
-                print(f"{'':<5} {'':<{wl}}  {'':<9}  counterexample: {r['counterexample']}")
+                print(f"{'':<5} {'':<{wl}}  {'':<{ws}}  counterexample: {r['counterexample']}")
         counts = {}
         for r in rows:
             counts[r["status"]] = counts.get(r["status"], 0) + 1

@@ -350,3 +350,21 @@ def test_an_eigenvector_vanishing_on_the_a_i_gets_a_verdict_not_an_error():
     grid = [i / 8 for i in range(9)]
     sampled = min(_bernstein(jacobian_net(x, y), u, v) for x, y in nets for u in grid for v in grid)
     assert 0 < r.jacobian_lower_bound <= sampled
+
+
+def test_an_undecided_valence_makes_the_claim_undecided_not_an_error(monkeypatch):
+    """The claim's status follows the test's verdict: undecided stays undecided (never 'error')."""
+    import dataclasses
+
+    from symdecomp.claims import Status
+    from symdecomp.claims import s5_1_tangent_c1 as module
+
+    real = module.c1_test
+
+    def undecided_at_5(scheme, n):
+        r = real(scheme, n)
+        return dataclasses.replace(r, verdict="undecided", reason="not separated") if n == 5 else r
+
+    monkeypatch.setattr(module, "c1_test", undecided_at_5)
+    result = module._c1_reif(catmull_clark())
+    assert result.status is Status.UNDECIDED and "n = 5" in str(result.evidence)

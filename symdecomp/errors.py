@@ -76,7 +76,17 @@ class NotAffineError(InvalidInputError):
 
 
 class InvalidSchemeError(InvalidInputError):
-    """A scheme is malformed in a way other than affinity (e.g. a stencil wider than the ring)."""
+    """A scheme is malformed in a way other than affinity (e.g. a stencil wider than the ring).
+
+    ``parts``, when given, is the message as words (``str``) and computed objects (sympy), in
+    order, so that a report can typeset the formulas (``symdecomp.claims.Text``); the message
+    itself stays plain text.
+    """
+
+    def __init__(self, message: str, *, parts: tuple | None = None):
+        super().__init__(message)
+        #: The message as words and objects, or ``None``.
+        self.parts = parts
 
 
 class InvalidExpressionError(InvalidInputError):

@@ -14,6 +14,7 @@ P, V, R, C, U, NA = Status.PROVED, Status.VERIFIED, Status.REFUTED, Status.CORRE
 
 EXPECTED = {
     # Section 2
+    "Eq. 1": P,  # F_n invertible for every n: any n-tuple decomposes (closing rows: issue 12 item 5)
     "Eq. 2-4": P,
     "Eq. 5": P,
     "Eq. 6": P,
@@ -48,7 +49,7 @@ EXPECTED = {
     "Proposition 5.1": P,  # certified n = 3..1000, exact tail bound from n = 4
     "Remark 5.1": R,  # j = n +- 1 shrink at the tangent-plane rate
     "Eq. 39": C,  # B^j = r A^j, not A^j = r B^j
-    "Eq. 39 (n = 4)": V,
+    "Eq. 39 (n = 4)": P,  # a statement about n = 4 alone, exact there
     "Eq. 39 (n → ∞)": P,
     "C1 (Reif's test)": V,
     # Section 5.2
@@ -58,7 +59,7 @@ EXPECTED = {
     "Eq. 42": P,
     "Eq. 43": C,  # alpha, beta are per-neighbour weights
     "Eq. 44": P,
-    "Eq. 45": V,
+    "Eq. 45": P,  # a statement about n = 4 alone, exact there
     "Remark 5.2": C,  # the component j = n feeds (0, 1, -1)
     "Section 5.2: Catmull-Clark example": P,
     # Section 5.3
@@ -69,6 +70,7 @@ EXPECTED = {
     # Section 6
     "Proposition 6.1": C,  # index range 0<i,j<n-1 as printed
     "Proposition 6.2": C,  # same index range
+    "Eq. 46": V,  # the block vector is alpha (x) v; block products for symbolic order, 2..6 blocks
     "Eq. 47": C,  # C_{1,n-1} in the first row
     "Eq. 48": C,  # e_{1,n-1} in the first row
     "Eq. 49": P,
@@ -79,6 +81,10 @@ EXPECTED = {
     "S' (after Eq. 51)": P,
     "Tuning weights (after Eq. 51)": P,
     "Tangent plane unaffected (after Eq. 51)": C,
+    # the closing paragraph of Section 6 (issue 12 item 5)
+    "Tuning and multiplicities (after Eq. 51)": P,
+    "1-ring suffices (after Eq. 51)": P,  # left eigenvectors of 1, lambda_1 vanish outside the 1-ring, every n
+    "Larger neighbourhoods (after Eq. 51)": C,  # the 2-ring adds 1/8, 1/16, 1/32, 1/64, not null columns
     "Spectrum (Eq. 34, Eq. 43)": V,  # certified cross-check, n = 3..48
 }
 

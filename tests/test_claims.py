@@ -3,8 +3,9 @@
 import json
 
 import pytest
+import sympy as sp
 
-from symdecomp.claims import CheckResult, Status, check_claim
+from symdecomp.claims import CheckResult, Scope, Status, Text, all_claims, check_claim, scope_summary
 from symdecomp.cli import main
 
 
@@ -19,6 +20,34 @@ def test_result_invariants():
         CheckResult(Status.VERIFIED, "x")
 
 
+def test_the_scope_of_a_verdict_is_computed():
+    exact, rounded = Text("n = 3: ", sp.sqrt(5) / 8), Text("n = 3: ", sp.Float(0.2795, 4))
+    assert CheckResult(Status.PROVED, "x").scope is Scope.EVERY_N
+    assert CheckResult(Status.VERIFIED, "x", valences=(3, 12)).scope is Scope.RANGE
+    assert CheckResult(Status.VERIFIED, "x", valences=(4, 4)).scope is Scope.SINGLE_CASE
+    assert CheckResult(Status.REFUTED, "x", counterexample=exact).scope is Scope.EVERY_N
+    assert CheckResult(Status.REFUTED, "x", counterexample=rounded).scope is Scope.SINGLE_CASE  # a number to 4 digits
+    assert CheckResult(Status.REFUTED, "x", counterexample="n = 3 fails").scope is Scope.SINGLE_CASE  # words only
+    # a correction states its scope; a counterexample that is not exact lowers it
+    assert CheckResult(Status.CORRECTED, "x", correction="c", counterexample=exact, scope=Scope.EVERY_N).scope is Scope.EVERY_N
+    assert CheckResult(Status.CORRECTED, "x", correction="c", counterexample=rounded, scope=Scope.EVERY_N).scope is Scope.SINGLE_CASE
+    assert CheckResult(Status.UNDECIDED, "x").scope is None
+    with pytest.raises(ValueError, match="every n"):
+        CheckResult(Status.PROVED, "x", scope=Scope.RANGE)
+    with pytest.raises(ValueError, match="valences"):
+        CheckResult(Status.VERIFIED, "x", valences=(3, 5), scope=Scope.EVERY_N)
+
+
+def test_the_scope_summary_counts_errata_established_for_every_n():
+    results = [check_claim(c.label) for c in all_claims()]
+    summary = scope_summary(results)
+    assert summary.total == len(results) == summary.every_n + summary.range_of_n + summary.single_case + summary.no_verdict
+    assert summary.proved == sum(r.status is Status.PROVED for r in results)
+    assert summary.errata_every_n == sum(r.status in (Status.CORRECTED, Status.REFUTED) and r.scope is Scope.EVERY_N for r in results)
+    # Eq. 47 and Eq. 48 are corrected on one size of blocks: a single case, not every n
+    assert check_claim("Eq. 47").scope is Scope.SINGLE_CASE and check_claim("Eq. 16").scope is Scope.EVERY_N
+
+
 def test_claims_command_json(capsys):
     assert main(["claims", "--json", "--section", "5.1"]) == 0
     rows = json.loads(capsys.readouterr().out)
@@ -29,7 +58,8 @@ def test_claims_command_json(capsys):
     assert by_label["Remark 5.1"]["status"] == "refuted" and "counterexample" in by_label["Remark 5.1"]
     assert by_label["Proposition 5.1"]["status"] == "proved"  # certified range plus the exact tail bound
     for r in rows:
-        assert {"label", "status", "evidence"} <= set(r)
+        assert {"label", "status", "scope", "evidence"} <= set(r)
+    assert by_label["Eq. 39 (n = 4)"]["scope"] == "every n" and by_label["C1 (Reif's test)"]["scope"] == "range of n"
 
 
 def test_claims_command_unknown_label(capsys):

@@ -71,6 +71,12 @@ def scheme(name: str) -> Scheme:
         # by its eigenvalue 3/8 (the subdominant, the vertex rule's centre weight being 0): (1, 0, 0) has no part on it
         return _rules(name, (Q(1, 8), {-1: Q(1, 8), 0: Q(3, 8), 1: Q(1, 8)}, {-1: Q(1, 8), 0: Q(1, 8)}),
                       (Q(1, 8), {0: Q(1, 8), 1: Q(1, 8)}, {0: Q(5, 8)}), catmull_clark(1 / (2 * n), 1 / (2 * n)).vertex_rule)
+    if name == "bilinear":  # midpoints, centroids, old vertices kept: every new point reads only the 1-ring
+        return _rules(name, (Q(1, 2), {0: Q(1, 2)}, {}), (Q(1, 4), {0: Q(1, 4), 1: Q(1, 4)}, {0: Q(1, 4)}), catmull_clark(0, 0).vertex_rule)
+    if name == "loop":
+        from symdecomp.schemes.loop import loop
+
+        return loop()
     if name == "not affine":  # the edge rule's weights sum to 65/64 (built past the affinity check on purpose)
         return Scheme(name, Stencil(Q(3, 8) + Q(1, 64), cc.edge_rule.a, cc.edge_rule.b), cc.face_rule, cc.vertex_rule)
     raise KeyError(name)
@@ -149,7 +155,7 @@ TABLE = [
     ("Eq. 39", "moved", R),
     ("Eq. 39", printed("s5_1_tangent", "PRINTED_RATIO", (CJ / 4 * sp.sqrt(1 + CJ**2 / 4) + CJ**2 / 8) / ((1 + OMEGA) / 4)), P),
     ("Eq. 39 (n = 4)", "moved", R),
-    ("Eq. 39 (n = 4)", "tuned", V),
+    ("Eq. 39 (n = 4)", "tuned", P),
     ("Eq. 39 (n → ∞)", "moved", R),
     ("C1 (Reif's test)", "O fixed", R),
     # Section 5.2
@@ -192,6 +198,17 @@ TABLE = [
     ("Eq. 49", printed("s6_cb_matrices", "PRINTED_LIFT", INTERLEAVED_LIFT), R),
     ("Eq. 50", printed("s6_cb_matrices", "PRINTED_LIFT", INTERLEAVED_LIFT), R),
     ("Remark 6.1", printed("s6_cb_matrices", "PRINTED_LIFT", INTERLEAVED_LIFT), R),
+    # issue 12 item 5: Eq. 1, Eq. 46 and the closing paragraph of Section 6 (kept together)
+    ("Eq. 1", printed("s2_background", "PRINTED_VERTEX", lambda j, m, size: sp.exp(2 * sp.pi * sp.I * j * m**2 / size)), R),
+    ("Eq. 46", printed("s6_cb_matrices", "PRINTED_LIFT", INTERLEAVED_LIFT), R),
+    ("Tuning and multiplicities (after Eq. 51)", "not affine", NA),
+    ("Tuning and multiplicities (after Eq. 51)", "moved", P),
+    ("Tuning and multiplicities (after Eq. 51)", "loop", NA),
+    ("1-ring suffices (after Eq. 51)", printed("s6_closing", "PRINTED_SUFFICIENT_RINGS", 0), R),
+    ("1-ring suffices (after Eq. 51)", "loop", P),
+    ("1-ring suffices (after Eq. 51)", "moved", NA),
+    ("Larger neighbourhoods (after Eq. 51)", "bilinear", P),
+    ("Larger neighbourhoods (after Eq. 51)", "loop", C),
     ("Spectrum (Eq. 34, Eq. 43)", "moved", V),
     ("Spectrum (Eq. 34, Eq. 43)", printed("s6_full_spectrum", "CLOSED_FORMS", _shifted_closed_forms), R),
 ]

@@ -160,8 +160,11 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
     except sp.PolynomialError:
         shifted = None
     if shifted is None or shifted.degree() > 2:
+        det_M = sp.Function("det")(x * sp.Symbol("I", commutative=False) - sp.Function("M")(OMEGA))
         raise InvalidSchemeError(
-            f"det(xI - M(omega)) = {q} is not of Laurent degree 1 in omega; the closed form of Eq. 51 needs the narrow shape (offsets -1..1)"
+            f"det(xI - M(omega)) = {q} is not of Laurent degree 1 in omega; the closed form of Eq. 51 needs the narrow shape (offsets -1..1)",
+            parts=(sp.Eq(det_M, q, evaluate=False), " is not of Laurent degree 1 in ", OMEGA,
+                   "; the closed form of Eq. 51 needs the narrow shape (offsets -1..1)"),
         )
     c_minus, c_zero, c_plus = (sp.expand(shifted.coeff_monomial(OMEGA**k)) for k in range(3))
     disc = sp.expand(c_zero**2 - 4 * c_plus * c_minus)

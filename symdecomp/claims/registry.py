@@ -17,6 +17,14 @@ Statuses:
                by name, or needs rules the scheme does not have); the evidence says why.
 ``error``      the check itself failed to run (never a finding about the paper).
 
+Each result also says the *scope* of its evidence (:class:`Scope`): ``every n`` (symbolic, for every
+valence the statement is about), ``range of n`` (each valence of a finite range), or ``single case``.
+A check computes it: ``proved`` is ``every n``; ``verified`` is a range or a single case by its
+valences; a refutation is ``every n`` when its counterexample is exact (no floating-point number in
+it) and a ``single case`` otherwise (a check may state ``every n`` when it decided the refutation
+symbolically and the numbers only illustrate it); a ``corrected`` check states the scope of its corrected
+statement, lowered to ``single case`` when the counterexample is not exact (:func:`erratum_scope`).
+
 Every claim is checked *for a scheme* (:func:`check_claim`, default Catmull-Clark): the printed
 statement of the paper is one input, the scheme the other, and the status follows from both.
 Statements that do not involve the scheme (Section 2, the CB-matrix algebra of Section 6) have the
@@ -50,6 +58,10 @@ from symdecomp.schemes.scheme import Scheme, catmull_clark
 __all__ = [
     "Text",
     "Status",
+    "Scope",
+    "erratum_scope",
+    "ScopeSummary",
+    "scope_summary",
     "Step",
     "CheckResult",
     "Claim",
@@ -75,6 +87,45 @@ class Status(str, enum.Enum):
 
     def __str__(self) -> str:
         return self.value
+
+
+class Scope(str, enum.Enum):
+    """For which valences a verdict is established (see the module docstring)."""
+
+    #: Symbolically, for every valence the statement is about (a statement about n = 4 alone: that case, exactly).
+    EVERY_N = "every n"
+    #: For each valence of a finite range, exactly or in certified arithmetic.
+    RANGE = "range of n"
+    #: One valence or one example (or a numeric counterexample).
+    SINGLE_CASE = "single case"
+
+    def __str__(self) -> str:
+        return self.value
+
+    @property
+    def strength(self) -> int:
+        return {"every n": 2, "range of n": 1, "single case": 0}[self.value]
+
+
+def is_exact(finding) -> bool:
+    """True when a finding (a counterexample) holds only exact objects: computed sympy objects or
+    integers, and no floating-point number. Words alone (a ``str``) are not an exact counterexample."""
+    if not isinstance(finding, Text):
+        return False
+    for part in finding.parts:
+        if isinstance(part, str):
+            continue
+        if isinstance(part, float) or (isinstance(part, sp.Basic) and part.atoms(sp.Float)):
+            return False
+        if isinstance(part, sp.MatrixBase) and any(e.atoms(sp.Float) for e in part):
+            return False
+    return True
+
+
+def erratum_scope(correction: Scope, counterexample) -> Scope:
+    """The scope of a ``corrected`` verdict: the corrected statement's (``correction``), lowered to
+    ``single case`` when the counterexample is not exact (:func:`is_exact`)."""
+    return correction if is_exact(counterexample) else Scope.SINGLE_CASE
 
 
 class _TextPrinter(StrPrinter):
@@ -176,8 +227,12 @@ class CheckResult:
     digits: int | None = None
     #: For ``verified``: the valences checked, as ``(first, last)`` inclusive.
     valences: tuple[int, int] | None = None
+    #: For which valences the verdict is established (:class:`Scope`); computed from the status, the
+    #: valences and the counterexample unless the check states it (a ``corrected`` check must).
+    scope: Scope | None = None
 
     def __post_init__(self):
+        object.__setattr__(self, "scope", self._computed_scope())
         if self.status is Status.REFUTED and not self.counterexample:
             raise ValueError("a refuted claim needs a counterexample")
         if self.status is Status.CORRECTED and not self.correction:
@@ -186,6 +241,73 @@ class CheckResult:
             raise ValueError("a numeric claim needs the digits it was checked to")
         if self.status is Status.VERIFIED and self.valences is None:
             raise ValueError("a verified claim needs the range of valences it was checked for")
+
+    def _computed_scope(self) -> Scope | None:
+        stated, status = self.scope, self.status
+        if status in (Status.UNDECIDED, Status.NOT_APPLICABLE, Status.ERROR):
+            return None
+        if status is Status.PROVED:
+            if stated not in (None, Scope.EVERY_N):
+                raise ValueError(f"a proved claim holds for every n, not for a {stated}")
+            return Scope.EVERY_N
+        if status in (Status.VERIFIED, Status.NUMERIC):
+            lo, hi = self.valences if self.valences is not None else (0, 0)
+            computed = Scope.RANGE if hi > lo else Scope.SINGLE_CASE
+            if stated is not None and stated is not computed:
+                raise ValueError(f"valences {self.valences} are a {computed}, not {stated}")
+            return computed
+        if status is Status.CORRECTED:
+            if stated is None:
+                raise ValueError("a corrected claim states the scope of its corrected statement")
+            return erratum_scope(stated, self.counterexample)
+        computed = Scope.EVERY_N if is_exact(self.counterexample) else Scope.SINGLE_CASE  # refuted
+        return computed if stated is None else stated
+
+
+@dataclass(frozen=True)
+class ScopeSummary:
+    """How many verdicts are established for every n, for a range, in a single case (:class:`Scope`)."""
+
+    #: The number of results counted.
+    total: int
+    #: ``proved`` (every n).
+    proved: int
+    #: ``corrected`` or ``refuted`` with scope every n: the correction proved for every n, the counterexample exact.
+    errata_every_n: int
+    #: Any status with scope ``range of n``.
+    range_of_n: int
+    #: Any status with scope ``single case``.
+    single_case: int
+    #: No verdict (undecided, not applicable, error).
+    no_verdict: int
+
+    @property
+    def every_n(self) -> int:
+        return self.proved + self.errata_every_n
+
+    def as_json(self) -> dict:
+        return {"total": self.total, "every n": self.every_n, "proved": self.proved, "errata for every n": self.errata_every_n,
+                "range of n": self.range_of_n, "single case": self.single_case, "no verdict": self.no_verdict}
+
+    def __str__(self) -> str:
+        share = f" ({100 * self.every_n / self.total:.0f} %)" if self.total else ""
+        return (f"verdict for every n: {self.every_n} of {self.total}{share} ({self.proved} proved, {self.errata_every_n} errata "
+                f"with the correction proved for every n and an exact counterexample); for a range of n only: "
+                f"{self.range_of_n}; single case: {self.single_case}; no verdict: {self.no_verdict}")
+
+
+def scope_summary(results) -> ScopeSummary:
+    """Tally :class:`CheckResult` objects by the scope of their verdicts."""
+    results = list(results)
+    scopes = [r.scope for r in results]
+    return ScopeSummary(
+        total=len(results),
+        proved=sum(r.status is Status.PROVED for r in results),
+        errata_every_n=sum(r.status in (Status.CORRECTED, Status.REFUTED) and r.scope is Scope.EVERY_N for r in results),
+        range_of_n=scopes.count(Scope.RANGE),
+        single_case=scopes.count(Scope.SINGLE_CASE),
+        no_verdict=scopes.count(None),
+    )
 
 
 @dataclass(frozen=True)
@@ -263,7 +385,8 @@ def _check_claim(label: str, scheme: Scheme) -> CheckResult:
     try:
         result = c.check(scheme)
     except InvalidSchemeError as exc:  # the scheme is outside what the claim's derivation covers
-        return CheckResult(Status.NOT_APPLICABLE, f"not applicable to the scheme {scheme.name!r}: {exc}")
+        why = Text(*exc.parts) if exc.parts else str(exc)
+        return CheckResult(Status.NOT_APPLICABLE, Text(f"not applicable to the scheme {scheme.name!r}: ", why))
     except Exception as exc:  # the registry reports, the caller decides
         tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
         return CheckResult(Status.ERROR, f"check raised {tb}")

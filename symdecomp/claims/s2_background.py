@@ -1,4 +1,4 @@
-"""Section 2 (Background): Eq. 5, Eq. 6 and Proposition 2.1."""
+"""Section 2 (Background): Eq. 1, Eq. 2-6 and Proposition 2.1."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import circ, generating_polynomial, mode_eigenvalue_derivation
 from symdecomp.algebra.polygons import decompose
-from symdecomp.claims.notation import eq, j, listed, n, ne, omega_n
+from symdecomp.claims.notation import eq, ge, j, listed, lt, n, ne, omega_n
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.schemes.scheme import Scheme
 
@@ -33,6 +33,94 @@ def PRINTED_ORDER(n):
 
 #: The sign in the real pair ``R cos(phi) -+ I sin(phi)`` of Eq. 6 (``-`` as printed).
 PRINTED_PAIR_SIGN = -1
+
+
+def _special_polygons(size: int) -> dict[str, sp.Matrix]:
+    """Exact n-gons of the kinds Eq. 1 allows: collapsed, degenerate, self-intersecting."""
+    collapsed = sp.Matrix([[sp.Rational(1, 2), -3, 2]] * size)
+    repeated = sp.Matrix([[0, 0, 0] if m < 2 else [m, m * m % 5, 1] for m in range(size)])  # two vertices coincide
+    collinear = sp.Matrix([[m % 3, 2 * (m % 3), 3 * (m % 3)] for m in range(size)])  # on a line, back and forth
+    crossing = sp.Matrix([[m % 2, (m // 2) % 2, sp.Rational(m, size)] for m in range(size)])  # edges that cross
+    return {"collapsed": collapsed, "repeated vertex": repeated, "collinear": collinear, "self-intersecting": crossing}
+
+
+def _singular_basis(last: int):
+    """The first ``(n, m, m')`` with equal nodes ``x_m = x_m'`` of the printed rows (columns ``m, m'`` of ``F_n``)."""
+    for size in range(3, last + 1):
+        nodes = [PRINTED_VERTEX(1, m, size) for m in range(size)]
+        for m in range(size):
+            for m2 in range(m + 1, size):
+                if sp.simplify(nodes[m2] / nodes[m]) == 1:
+                    return size, m, m2, nodes[m]
+    return None
+
+
+@claim(
+    "Eq. 1",
+    section="2",
+    title="An $n$-gon is any $n$-tuple of points",
+    statement="An $n$-gon is an $n$-tuple $P = (p_0, \\dots, p_{n-1})$ of points of $\\mathbf{R}^3$, with no restriction on "
+    "their positions: it may intersect itself, degenerate, or collapse to a single point (and the decomposition of "
+    "Section 2 applies to it).",
+)
+def _eq1(scheme: Scheme) -> CheckResult:
+    from symdecomp.symbols import n
+
+    d = sp.Symbol("d", integer=True, positive=True)
+    e = sp.Symbol("e", integer=True, positive=True)  # n = d + e: 0 < d < n
+    node = lambda m: PRINTED_VERTEX(1, m, n)  # noqa: E731
+    vandermonde = sp.simplify(sp.powsimp(PRINTED_VERTEX(j, M, n) / node(M) ** j, force=True)) == 1
+    ones = sp.simplify(PRINTED_VERTEX(0, M, n)) == 1
+    ratio = sp.powsimp(node(M + d) / node(M), force=True)
+    turn = sp.simplify(ratio.args[0] / (2 * sp.pi * sp.I)) if isinstance(ratio, sp.exp) else None
+    distinct = turn is not None and not turn.has(M) and all(
+        sp.simplify(x.subs(n, d + e)).is_positive for x in (turn, 1 - turn)
+    )
+    x_m = sp.Symbol("x_m")
+    if not (vandermonde and ones and distinct):
+        found = _singular_basis(12)
+        if found is None:
+            return CheckResult(Status.UNDECIDED, Text("the rows are not shown to be a basis for every ", n,
+                                                      ", and they are for n = 3..12"))
+        size, m, m2, value = found
+        gon = tuple(1 if k == m else 0 for k in range(size))
+        return CheckResult(
+            Status.REFUTED,
+            Text("the rows ", sp.Symbol("v_j"), " of ", sp.Symbol("F_n"), " as printed are not a basis of ", sp.Symbol("C^n"),
+                 " for every ", n, ": not every n-tuple decomposes"),
+            counterexample=Text(eq(n, size), ": vertices ", m, " and ", m2, " of every row are equal (", eq(x_m, value),
+                                " for both), so every combination of the rows has ", eq(sp.Symbol(f"p_{m}"), sp.Symbol(f"p_{m2}")),
+                                ", and the degenerate polygon ", sp.Tuple(*gon), " has no decomposition"),
+        )
+    last, kinds = 12, ()
+    for size in range(3, last + 1):
+        for kind, P in _special_polygons(size).items():
+            dec = decompose(P)
+            exact = dec.reconstruct() == P
+            if kind == "collapsed":
+                exact &= all(all(z == 0 for z in zs) for zs in dec.amplitudes[1:])
+            if not exact:
+                return CheckResult(Status.REFUTED, Text("a ", kind, " polygon is not rebuilt exactly"),
+                                   counterexample=Text(eq(n, size), ", the ", kind, " polygon ", P.T))
+        kinds = tuple(_special_polygons(size))
+    return CheckResult(
+        Status.PROVED,
+        Text(
+            "entry ", M, " of the row ", sp.Symbol("v_j"), " of ", sp.Symbol("F_n"), " is ", x_m**j, " with the node ",
+            eq(x_m, node(M)), ": a Vandermonde matrix; two nodes differ by the turn ", turn, " with ", ge(d, 1), " and ",
+            lt(d, n), ", never an integer, so the nodes are distinct and ", sp.Symbol("F_n"), " is invertible for every ",
+            n, ": every n-tuple has one decomposition, whatever its vertices; a collapsed polygon is ", sp.Symbol("p v_0"),
+            " (", eq(sp.Symbol("v_0"), sp.Tuple(1, sp.Symbol("..."), 1)), "); exact decompositions of "
+            + ", ".join(kinds) + " polygons rebuilt exactly for n = 3..",
+            last, ", the collapsed ones with ", eq(sp.Symbol("z_j"), 0), " for every ", ne(j, 0),
+        ),
+        steps=(
+            Step("Row $j$ over the $j$-th power of the node $x_m$ of column $m$ (Vandermonde):",
+                 sp.powsimp(PRINTED_VERTEX(j, M, n) / node(M) ** j, force=True)),
+            Step("Ratio of the nodes of columns $m + d$ and $m$, $0 < d < n$:", sp.simplify(ratio)),
+            Step("Its turn, free of $m$, strictly between 0 and 1:", turn),
+        ),
+    )
 
 
 @claim(

@@ -7,7 +7,7 @@ import sympy as sp
 from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.claims.notation import A, B, eq, ne, omega_2n, omega_n, tup
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
+from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.schemes.shift_stencil import ShiftStencil, composed_stages, identity_b, then_b
 from symdecomp.symbols import alpha, beta, n, omega
@@ -141,14 +141,18 @@ def _eq14_15(scheme: Scheme) -> CheckResult:
     return CheckResult(
         Status.PROVED if ok else Status.REFUTED,
         "Catmull-Clark's face point (mean of the face) and edge point (mean of the edge's ends and its two face points), "
-        "composed as shift-operator polynomials for every n, give the printed rules, which are the package's scheme data",
-        counterexample=None if ok else Text(wrong[0][0], " as (w_O, A(omega), B(omega)) is ", wrong[0][1], ", the printed rule ", wrong[0][2]),
+        "composed as shift-operator polynomials for every n, give the printed rules"
+        + (", which are the package's scheme data" if ok else "; this scheme's rules differ from them"),
+        counterexample=None if ok else Text(wrong[0][0], " as ", _SHIFT_FORM, " is ", wrong[0][1], ", the printed rule ", wrong[0][2]),
         steps=(
             Step("Face point of $(O, a_i, b_i, a_{i+1})$ as $(w_O, A(\\omega), B(\\omega))$:", face_i.as_matrix()),
             Step("Edge point of $(O, a_i)$:", edge_i.as_matrix()),
         ),
     )
 
+
+#: A rule as shift-operator polynomials: the weight on O and the polynomials on the a's and b's.
+_SHIFT_FORM = sp.Tuple(sp.Symbol("w_O"), sp.Function("A")(sp.Symbol("omega")), sp.Function("B")(sp.Symbol("omega")))
 
 #: The weight of O in Eq. 16 as printed.
 PRINTED_VERTEX_CENTER = 1 - alpha - beta
@@ -179,6 +183,7 @@ def _eq16(scheme: Scheme) -> CheckResult:
             "translation invariant) unless ", eq(alpha + beta, 0), "; with weight ", corrected_center, " on O it is, and "
             "gives standard Catmull-Clark's ", std_center,
         ),
+        scope=Scope.EVERY_N,
         counterexample=Text(
             eq(n, 3), " with the weights ", eq(alpha, example[alpha]), ", ", eq(beta, example[beta]),
             ": the printed weights sum to ", sp.expand((PRINTED_VERTEX_CENTER + n * alpha + n * beta).subs(example)),

@@ -14,7 +14,7 @@ from symdecomp.claims.applicability import needs_mirror_symmetry
 from symdecomp.claims.evidence import at_valence, dominant_vs_frequency_zero, filtering_evidence, number, start_points
 from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
 from symdecomp.claims.notation import M as Mk
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
+from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.schemes.shift_stencil import composed_stages
@@ -213,6 +213,7 @@ def _eq35_37(scheme: Scheme) -> CheckResult:
         Text("the printed vector solves ", Mk("j"), " ", tup(1, S("y")), " = ", lam, " ", tup(1, S("y")), " modulo the characteristic "
              "polynomial wherever it is defined; it is 0/0 where ", eq(S("m_21"), M[1, 0]), " vanishes, i.e. where ",
              omega_2n**j, " is a root of unity of order ", sp.FiniteSet(*orders)),
+        scope=Scope.EVERY_N,
         counterexample=Text(eq(n, valence), ", ", eq(j, jj), ": ", eq(Mk(jj), at), " and ", eq(S("m_21"), 0),
                             ", so the printed vector is (1, 0/0)"),
         correction=Text("for ", ne(S("m_21"), 0), " the eigenspace of ", lam, " is spanned by ", tup(1, derived), "; where ",
@@ -267,6 +268,7 @@ def _eq38(scheme: Scheme) -> CheckResult:
              "M_j is a multiple of the identity, so the printed entry is 0/0" if scalar else
              "the initial vector is an eigenvector of the eigenvalue of larger (or equal) modulus",
              ", and the conclusion still holds; at every other frequency the determinant is nonzero"),
+        scope=Scope.EVERY_N,
         counterexample=Text("n = ", points[0].n, ", j = ", points[0].j, ": the determinant is 0 or undefined, the initial vector is an "
                             "eigenvector (eigenvalue ", points[0].eigenvalue, ")"),
         correction=Text("the determinant is nonzero unless ", omega_2n**j, " is a root of unity of order in ",
@@ -373,6 +375,9 @@ def _rem51(scheme: Scheme) -> CheckResult:
         )
     valence = next(v for v in range(scheme.minimum_valence(), 100) if v not in filtered)
     ratios = filtering_evidence(scheme, valence)
+    order = 2 * valence // sp.gcd(valence + 1, 2 * valence)
+    why = (Text("the vector ", tup(1, S("zeta")), " is an eigenvector of the dominant eigenvalue there") if cond.holds_at(valence, valence + 1)
+           else Text(ne(S("R(zeta)"), 0), " there (", S("zeta"), " is a root of unity of order ", order, ", not a root of R)"))
     return CheckResult(
         Status.REFUTED,
         Text("the components ", eq(j, n + 1), " and ", eq(j, n - 1), " are moved by ", Mk(1), " (",
@@ -383,8 +388,11 @@ def _rem51(scheme: Scheme) -> CheckResult:
              "; at every other ", n, " they keep a component on the dominant eigenvector and shrink like ", lambda_1,
              ", the tangent-plane rate, not like the non-convex components"),
         counterexample=Text(eq(n, valence), ", the 1-ring with O = 0 and only the 2n-gon component ", eq(j, valence + 1),
-                            ": the norm of the ring after k steps divided by ", lambda_1 ** S("k"), " at k = 10, 20, 40 is ",
+                            ": ", why, ", so it keeps a part on the dominant eigenvector; the norm of the ring after k steps "
+                            "divided by ", lambda_1 ** S("k"), " at k = 10, 20, 40 is ",
                             sp.Matrix(ratios).T, " (60 digits), converging to a nonzero constant"),
+        # the decision is exact (R's cyclotomic factors, for every n); the iterated norms only illustrate it
+        scope=Scope.EVERY_N,
         steps=steps,
     )
 
@@ -429,6 +437,7 @@ def _eq39(scheme: Scheme) -> CheckResult:
              " of ", Mk("j"), " (for ", gt(cos_j_theta, 0), "; otherwise use ", sp.Abs(cos_j_theta), "), not the r of ",
              eq(A("j"), S("r") * B("j")), ": at ", eq(n, 4), ", ", eq(j, 1), " it gives ", eq(printed4, B(1) / A(1)),
              ", while ", eq(A(1) / B(1), a_over_b)),
+        scope=Scope.EVERY_N,
         counterexample=Text(eq(n, 4), ", ", eq(j, 1), ": with ", eq(A(1), S("r") * B(1)), " the ratio would be ", a_over_b,
                             ", not the printed value ", printed4),
         correction=Text("in the limit ", eq(B("j"), S("r") * A("j")), " with r given by Eq. 39 (and ", sp.Abs(cos_j_theta),
@@ -453,7 +462,9 @@ def _eq39_n4(scheme: Scheme) -> CheckResult:
     if not ok:
         return CheckResult(Status.REFUTED, evidence, counterexample=Text(eq(n, 4), ": ", eq(B(1) / A(1), value), " = ", number(value),
                                                                           ", not ", 1 + sp.I), steps=steps)
-    return CheckResult(Status.VERIFIED, evidence, valences=(4, 4), steps=steps)
+    # the statement is about n = 4 alone: the exact value there is its proof
+    return CheckResult(Status.PROVED, Text(evidence, "; the statement concerns ", eq(n, 4), " alone, so this exact computation at "
+                                           "its only valence is its proof"), steps=steps)
 
 
 @claim(

@@ -10,7 +10,7 @@ from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.claims import CheckResult, Status, Step, Text, claim
+from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim
 from symdecomp.claims.applicability import needs_mirror_symmetry
 from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
@@ -72,12 +72,13 @@ def _smaller(scheme: Scheme) -> CheckResult:
             " iff ", ge(N, 4), "; at ", eq(N, 3), ", ", eq(j, 2), " is the conjugate frequency of ", eq(j, 1), " (",
             eq(sp.cos(2 * sp.pi / 3, evaluate=False), -sp.cos(sp.pi / 3, evaluate=False)), ") and ", eq(lambda_2, lambda_1),
         ),
+        scope=Scope.EVERY_N,
         correction=Text(
             "for ", ge(N, 4), " the ", eq(j, 2), " eigenvalues are strictly smaller than ", lambda_1, " (",
             eq(sp.Function("det")(M("j")), ev.determinant), "); at ", eq(N, 3), " the components ", A(2), ", ", A(4),
             " are tangent-plane components with eigenvalue ", lambda_1,
         ),
-        counterexample=Text(eq(N, 3), ": ", eq(lambda_2, lambda_1), " = ", sp.N(lam1_3, 15)),
+        counterexample=Text(eq(N, 3), ": ", eq(lambda_2, lambda_1), " = ", sp.radsimp(sp.simplify(lam1_3))),
         steps=steps,
     )
 

@@ -11,8 +11,6 @@ outlined in proposition 5.3"; the paper has no Proposition 5.3 (only 5.1 and 5.2
 
 from __future__ import annotations
 
-import random
-
 import sympy as sp
 
 from symdecomp.algebra.cbmatrix import (
@@ -26,34 +24,12 @@ from symdecomp.algebra.cbmatrix import (
     lifted_vector,
     perturbed_block_eigenvalue_matrix,
 )
-from symdecomp.algebra.circulant import circ, fourier_row, mode_eigenvalue_derivation
-from symdecomp.claims.notation import Kron, eq, tup
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim, is_zero
+from symdecomp.algebra.circulant import circ, fourier_row
+from symdecomp.claims.cb_examples import M_SYM, _banded_symbolic_identity, _blockwise_product_residues, _det, _generic_cb, _kron, _nc, _random_cb
+from symdecomp.claims.notation import eq, tup
+from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
-from symdecomp.symbols import omega as OMEGA
-
-
-def _nc(name: str) -> sp.Symbol:
-    """A matrix or vector, by name (products of names keep their order)."""
-    return sp.Symbol(name, commutative=False)
-
-
-_kron = Kron
-
-
-_det = sp.Function("det")
-
-M_SYM = sp.Symbol("m", integer=True, positive=True)
-
-
-def _random_cb(K: int, m: int, seed: int):
-    rng = random.Random(seed)
-    return cb_matrix([[[sp.Rational(rng.randint(-9, 9), rng.randint(1, 7)) for _ in range(m)] for _ in range(K)] for _ in range(K)])
-
-
-def _generic_cb(K: int, m: int):
-    return cb_matrix([[[sp.Symbol(f"c{p}{q}_{l}") for l in range(m)] for q in range(K)] for p in range(K)])
 
 
 def PRINTED_LIFT(coefficients, v) -> sp.Matrix:
@@ -72,23 +48,6 @@ def _lift_identity_holds(cb, coefficients) -> bool:
         if not is_zero(sp.expand(lhs - rhs)):
             return False
     return True
-
-
-def _banded_symbolic_identity(K: int):
-    """Row ``i`` of block row ``p`` of ``B (alpha (x) v)`` minus ``(E alpha)_p omega^i``, symbolic order."""
-    coeffs = sp.symbols(f"a0:{K}")
-    i = sp.Symbol("i", integer=True)
-    residues = []
-    for p in range(K):
-        row = sp.Integer(0)
-        e_alpha = sp.Integer(0)
-        for q in range(K):
-            offsets = {l: sp.Symbol(f"c{p}{q}_{l % 7}") for l in (-1, 0, 1, 2)}
-            block_row, eig = mode_eigenvalue_derivation(offsets)
-            row += coeffs[q] * block_row
-            e_alpha += eig * coeffs[q]
-        residues.append(sp.expand(sp.powsimp(sp.expand(row / OMEGA**i)) - e_alpha))
-    return residues
 
 
 def _printed_range(i: int, j: int, size: int) -> bool:
@@ -143,6 +102,7 @@ def _prop61(scheme: Scheme) -> CheckResult:
             "false with the printed index range ", i_, ", ", j_, " in ", sp.Interval.open(0, N - 1),
             "; with all entries equal (", i_, ", ", j_, " in ", sp.Interval(0, N - 1), ") proved for symbolic ", N,
         ),
+        scope=Scope.EVERY_N,
         steps=(
             Step("As printed, for $n=%d$ few entries are constrained. Example with $c=1$, eigenvalues of" % C3.rows, sp.FiniteSet(*C3.eigenvals()), C3),
             Step("Corrected: $C=cJ=\\mathrm{circ}(c,\\dots,c)$; by Prop. 2.1 its eigenvalue on $v_k$ is $c\\sum_{l=0}^{n-1}w^l$, $w=\\omega_n^k$", geometric),
@@ -195,6 +155,7 @@ def _prop62(scheme: Scheme) -> CheckResult:
             " (banded blocks) and for generic blocks; the printed index range ", sp.Symbol("i"), ", ", sp.Symbol("j"), " in ",
             sp.Interval.open(0, N - 1), " leaves (for ", eq(N, 2), " blocks) no block required circulant",
         ),
+        scope=Scope.EVERY_N,
         steps=(
             Step("Row $i$ of block row $p$ of $B(\\alpha\\otimes v)$ minus $(E\\alpha)_p\\,\\omega^i$, three banded blocks per row, symbolic order (residues)", sp.Matrix(residues)),
             Step("So $BV=\\lambda V$ with $V=\\alpha\\otimes v$ exactly when $E\\alpha=\\lambda\\alpha$; $E$ always has an eigenvector, so $\\alpha$ exists"),
@@ -209,6 +170,44 @@ def _prop62(scheme: Scheme) -> CheckResult:
             " for every ", alpha_n, "; hence ", _kron(alpha_n, vn), " is an eigenvector of ", Bn, " for the eigenvalue ",
             lam_, " iff ", eq(En * alpha_n, lam_ * alpha_n), ".",
         ),
+    )
+
+
+@claim(
+    "Eq. 46",
+    section="6",
+    title="BV on the block vector",
+    statement=r"$BV=B\begin{pmatrix}\alpha_0v\\\vdots\\\alpha_{n-1}v\end{pmatrix}$, with $V^T=(\alpha_0v,\dots,\alpha_{n-1}v)$ of Prop. 6.2.",
+)
+def _eq46(scheme: Scheme) -> CheckResult:
+    # V of Prop. 6.2 as the printed block column is the Kronecker product alpha (x) v (sympy's, built independently)
+    for K in range(1, 5):
+        for m in range(1, 7):
+            a, v = sp.Matrix(sp.symbols(f"a0:{K}")), sp.Matrix(sp.symbols(f"v0:{m}"))
+            printed = sp.Matrix(PRINTED_LIFT(list(a), list(v)))
+            kron = sp.kronecker_product(a, v)
+            if printed != kron:
+                return CheckResult(
+                    Status.REFUTED,
+                    Text("the printed block vector is not ", _kron(_nc("alpha"), _nc("v")), ", the V of Prop. 6.2"),
+                    counterexample=Text(eq(sp.Symbol("K"), K), " blocks of order ", eq(sp.Symbol("m"), m), ": the printed ",
+                                        printed.T, " against ", kron.T),
+                )
+    last = 6
+    residues = {K: _blockwise_product_residues(K) for K in range(2, last + 1)}
+    if any(r != 0 for rs in residues.values() for r in rs):
+        return CheckResult(Status.ERROR, "block multiplication with symbolic block order failed")
+    return CheckResult(
+        Status.VERIFIED,
+        Text(
+            "the printed block column ", tup(sp.Symbol("alpha_0 v"), sp.Symbol("..."), sp.Symbol("alpha_n-1 v")), " is ",
+            _kron(_nc("alpha"), _nc("v")), " (entry for entry against sympy's Kronecker product, up to 4 blocks of order up "
+            "to 6), and block ", sp.Symbol("p"), " of ", _nc("B") * _nc("V"), " is ",
+            sp.Sum(sp.Symbol("alpha_q") * _nc("C_pq") * _nc("v"), (sp.Symbol("q"), 0, N - 1)),
+            " for every block order ", M_SYM, " (symbolic, sympy's block matrices) and ", N, f" = 2..{last} blocks",
+        ),
+        valences=(2, last),
+        steps=(Step("Block residues $(BV)_p-\\sum_q\\alpha_q C_{pq}v$, 3 blocks of symbolic order $m$", sp.Matrix(residues[3])),),
     )
 
 
@@ -247,6 +246,7 @@ def _eq47(scheme: Scheme) -> CheckResult:
             _nc("v"), "; the printed first row (the visible part; the matrix is cut in the text) ends with ", _nc("C_1,n-1"),
             ", a typo for ", _nc("C_0,n-1"),
         ),
+        scope=Scope.SINGLE_CASE,
         steps=(Step("$BV-\\left(\\sum_q \\alpha_q C_{pq}v\\right)_p$ for generic blocks, generic $v$", sp.simplify(lhs - rhs).T),),
         counterexample=Text("n = 3 blocks of order 3, generic entries: with C_{1,2} in the first row (as printed) the first block "
                             "row differs from BV by ", sp.simplify((lhs - printed)[0, 0])),
@@ -287,6 +287,7 @@ def _eq48(scheme: Scheme) -> CheckResult:
         Status.CORRECTED,
         "C_pq v_k = e_pq v_k for generic circulant blocks of order 4 and every k (Prop. 2.1); with e_{1,n-1} in the first row "
         "(as printed) the matrix does not give BV",
+        scope=Scope.SINGLE_CASE,
         steps=(Step("$E$ for $v_1$, generic blocks of order 4", block_eigenvalue_matrix(cb, 1)),),
         counterexample=Text("3 generic blocks of order 4, v = v_1: the first entry of BV minus the printed product is ", sp.factor(difference[0])),
         correction="The (p, q) entry is e_{p,q} v with e_{p,q} the eigenvalue of C_{p,q} on v; the first row ends with e_{0,n-1} v.",
@@ -465,6 +466,7 @@ def _prop63(scheme: Scheme) -> CheckResult:
             "block order ", M_SYM, ", which in the application is the valence) and 'eigenvectors' are wrong, and the "
             "hypothesis 'if Remark 6.1 holds' is not needed",
         ),
+        scope=Scope.EVERY_N,
         steps=(
             Step("$E_k(C)-E_k(B)$ for $k\\ne0$ (banded blocks plus $t_{pq}J$, symbolic order $m$)", sp.simplify(C.block_eigenvalue_matrix(zero_frequency=False) - Bm.block_eigenvalue_matrix(zero_frequency=False))),
             Step("$E_0(C)-E_0(B)$ (Prop. 6.1: $Jv_0=m v_0$, $Jv_k=0$)", zero_shift),

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from symdecomp.claims import Status, all_claims, check_claim
+from symdecomp.claims import Status, all_claims, check_claim, scope_summary
 from symdecomp.cli.common import Once, add_scheme_option, flag, print_json, progress
 
 
@@ -16,9 +16,12 @@ def register(sub) -> None:
         "label, status (proved, verified, numeric, refuted, corrected, undecided, not applicable, error) and a line "
         "of evidence. Every claim is checked for the scheme given by --scheme (a name or a TOML file; default "
         "catmull-clark): the printed statement is one input, the scheme the other. Exit status 1 if any check "
-        "failed to run (status 'error'); refuted or corrected claims are findings about the paper, not failures.",
+        "failed to run (status 'error'); refuted or corrected claims are findings about the paper, not failures. "
+        "Each row also gives the scope of its verdict (every n, range of n, single case), and the last line counts "
+        "the verdicts established for every n (proved, or an erratum whose correction is proved for every n with an "
+        "exact counterexample).",
     )
-    flag(p, "--json", help="print a JSON list of {label, section, title, status, evidence, ...}")
+    flag(p, "--json", help="print a JSON list of {label, section, title, status, scope, evidence, ...}")
     p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
     add_scheme_option(p)
@@ -47,14 +50,16 @@ def run(args) -> int:
 
             raise InvalidInputError(f"no claim labelled {', '.join(sorted(unknown))}")
         claims = [c for c in claims if c.label in wanted]
-    rows = []
+    rows, results = [], []
     for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):
         r = check_claim(c.label, args.scheme)
+        results.append(r)
         row = {
             "label": c.label,
             "section": c.section,
             "title": c.title,
             "status": r.status.value,
+            "scope": r.scope.value if r.scope is not None else None,
             "scheme": args.scheme.name,
             "evidence": str(r.evidence),
         }
@@ -68,14 +73,17 @@ def run(args) -> int:
     else:
         wl = max((len(r["label"]) for r in rows), default=5)
         ws = max((len(r["status"]) for r in rows), default=9)
+        wc = max((len(r["scope"] or "-") for r in rows), default=5)
         for r in rows:
-            print(f"{r['section']:<5} {r['label']:<{wl}}  {r['status']:<{ws}}  {r['evidence']}")
+            print(f"{r['section']:<5} {r['label']:<{wl}}  {r['status']:<{ws}}  {r['scope'] or '-':<{wc}}  {r['evidence']}")
+            pad = f"{'':<5} {'':<{wl}}  {'':<{ws}}  {'':<{wc}}"
             if "correction" in r:
-                print(f"{'':<5} {'':<{wl}}  {'':<{ws}}  corrected: {r['correction']}")
+                print(f"{pad}  corrected: {r['correction']}")
             if "counterexample" in r:
-                print(f"{'':<5} {'':<{wl}}  {'':<{ws}}  counterexample: {r['counterexample']}")
+                print(f"{pad}  counterexample: {r['counterexample']}")
         counts = {}
         for r in rows:
             counts[r["status"]] = counts.get(r["status"], 0) + 1
         print(f"{len(rows)} claims: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())))
+        print(scope_summary(results))
     return 1 if any(r["status"] == Status.ERROR.value for r in rows) else 0

@@ -25,7 +25,7 @@ from importlib import resources
 
 import sympy as sp
 
-from symdecomp.claims import CheckResult, Claim, Status, Step, Text, check_claim
+from symdecomp.claims import CheckResult, Claim, Status, Step, Text, check_claim, scope_summary
 from symdecomp.output.texlayout import formula_display, latex, mapping_rows, rows_display, size
 
 __all__ = ["aslatex", "text_latex", "findings_latex", "display_math", "SECTION_TITLES", "section_file_name",
@@ -391,7 +391,20 @@ def _summary(pairs: Sequence[tuple[Claim, CheckResult]], anchors: Mapping[str, s
         "\\status{verified} when shown in exact arithmetic for a stated range of $n$, "
         "\\status{numeric} when it agrees to a stated number of digits; "
         "\\status{refuted} and \\status{corrected} are findings about the paper as printed; "
-        "\\status{error} means that the check itself failed to run.\n\n" + table
+        "\\status{error} means that the check itself failed to run.\n"
+        + _scope_sentence(scope_summary(result for _, result in pairs))
+        + "\n\n" + table
+    )
+
+
+def _scope_sentence(summary) -> str:
+    """How many verdicts hold for every n (proved, or an erratum established for every n), a range, a single case."""
+    return (
+        f"Verdicts established for every $n$: {summary.every_n} of {summary.total} ({summary.proved} \\status{{proved}}, "
+        f"{summary.errata_every_n} \\status{{corrected}} or \\status{{refuted}} with the corrected statement proved for "
+        f"every $n$ and an exact counterexample); for a range of $n$ only: {summary.range_of_n}; in a single case: "
+        f"{summary.single_case}; no verdict: {summary.no_verdict}. A statement about $n = 4$ alone is proved by the exact "
+        "computation at $n = 4$."
     )
 
 

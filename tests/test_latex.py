@@ -385,6 +385,45 @@ def test_the_findings_of_the_registry_typeset_their_formulas(tmp_path):
     assert _ascii_math_in_findings(files) == []
 
 
+#: Branches of the checks that only other schemes reach (tests/test_mutations.py): their findings typeset
+#: their formulas too, including the reasons a claim is not applicable.
+OTHER_SCHEME_BRANCHES = [
+    ("moved", "Eq. 14-15"),
+    ("moved", "Eq. 17-21"),
+    ("wide", "Eq. 51"),
+    ("wide", "Tuning weights (after Eq. 51)"),
+    ("asymmetric", "Eq. 42"),
+    ("asymmetric", "Proposition 5.2"),
+    ("complex weights", "Proposition 4.2"),
+    ("2n-gon smoothing", "Eq. 35-37"),
+    ("2n-gon smoothing", "Eq. 38"),
+    ("loop", "1-ring suffices (after Eq. 51)"),
+    ("loop", "Larger neighbourhoods (after Eq. 51)"),
+    ("bilinear", "Larger neighbourhoods (after Eq. 51)"),
+]
+
+
+@pytest.mark.parametrize("name, label", OTHER_SCHEME_BRANCHES, ids=[f"{a} / {b}" for a, b in OTHER_SCHEME_BRANCHES])
+def test_the_findings_on_other_schemes_typeset_their_formulas(name, label):
+    from symdecomp.claims import check_claim, get_claim
+    from tests.test_mutations import scheme
+
+    result = check_claim(label, scheme(name))
+    assert result.status is not Status.ERROR
+    assert _ascii_math_in_findings(derivation_files([(get_claim(label), result)])) == []
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["moved", "O fixed", "2n-gon smoothing", "asymmetric", "complex weights", "wide",
+                                  "balanced rings", "not affine", "tuned", "late crossing", "bilinear", "loop"])
+def test_every_finding_on_the_mutated_schemes_typesets_its_formulas(name):
+    from symdecomp.claims import all_claims, check_claim
+    from tests.test_mutations import scheme
+
+    pairs = [(c, check_claim(c.label, scheme(name))) for c in all_claims()]
+    assert _ascii_math_in_findings(derivation_files(pairs)) == []
+
+
 def test_the_findings_check_catches_a_formula_written_as_text():
     from symdecomp.claims import Claim, Text
 

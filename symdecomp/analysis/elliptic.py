@@ -98,7 +98,10 @@ def eq44_ratio(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Expr:
 def _symmetric_in_cos(expr, what):
     value = laurent_to_cos(expr)
     if value.has(sin_jtheta):
-        raise InvalidSchemeError(f"{what} is not symmetric in omega <-> 1/omega; the scheme is not mirror symmetric")
+        raise InvalidSchemeError(
+            f"{what} is not symmetric in omega <-> 1/omega; the scheme is not mirror symmetric",
+            parts=(what, " is not symmetric under ", OMEGA, " -> ", 1 / OMEGA, "; the scheme is not mirror symmetric"),
+        )
     return value
 
 
@@ -124,8 +127,8 @@ def scale_ratio_squared(scheme: Scheme) -> sp.Expr:
     in ``c`` (real-coefficient, mirror-symmetric schemes).
     """
     M = per_frequency_matrix(scheme)
-    numerator = _symmetric_in_cos(sp.expand(M[1, 0] * M[1, 0].subs(OMEGA, 1 / OMEGA)), "|m_21|^2")
-    m22 = _symmetric_in_cos(M[1, 1], "m_22")
+    numerator = _symmetric_in_cos(sp.expand(M[1, 0] * M[1, 0].subs(OMEGA, 1 / OMEGA)), sp.Abs(sp.Symbol("m_21")) ** 2)
+    m22 = _symmetric_in_cos(M[1, 1], sp.Symbol("m_22"))
     lam1 = tangent_eigenvalues(scheme).dominant.subs(sp.Abs(cos_jtheta), cos_jtheta)
     # j = 1: c = cos(pi/n) >= 1/2
     return sp.simplify((numerator / (lam1 - m22) ** 2).subs(cos_jtheta, cos_theta)).subs(cos_theta, cos_jtheta)

@@ -127,7 +127,8 @@ def _laurent_terms(expr: sp.Expr) -> dict[int, sp.Expr]:
             base, exp = factor.as_base_exp()
             if base == OMEGA:
                 if not exp.is_integer:
-                    raise InvalidSchemeError(f"{expr} is not a Laurent polynomial in omega")
+                    raise InvalidSchemeError(f"{expr} is not a Laurent polynomial in omega",
+                                             parts=(expr, " is not a Laurent polynomial in ", OMEGA))
                 power += int(exp)
             else:
                 coeff *= factor

@@ -369,7 +369,7 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
             n, "not-c1" if top >= 1 else "undecided",
             f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus", dom,
         )
-    failure = _tie_failure(dom, ties)
+    failure = _tie_failure(dom, ties, n)
     if failure:
         return SpectralResult(n, "not-c1", failure, dom)
     second = max([abs(e.value) for e in others] + [b for _, b in outer], key=lambda x: x.upper())
@@ -384,7 +384,7 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
     return _real_subdominant(scheme, n, dom, gap, float(second.upper()))
 
 
-def _tie_failure(dom: Eigen, ties: dict) -> str | None:
+def _tie_failure(dom: Eigen, ties: dict, n: int) -> str | None:
     """Why exact ties make ``lambda`` fail: multiplicity above 2, or a different eigenvalue of the same modulus."""
     lam = ball_text(dom.value)
     if ties["equal"]:

@@ -176,7 +176,7 @@ def test_an_exact_double_root_at_frequency_one_is_multiplicity_four():
 
 def test_a_triangle_scheme_with_other_regular_rules_is_refused_in_one_line():
     scheme = triangle_scheme("butterfly-ish", R(1, 16), edge_end=R(1, 2), edge_side=R(0))
-    with pytest.raises(InvalidSchemeError, match=r"edge rule at valence 6 are not Loop's, so its regular patches are not quartic"):
+    with pytest.raises(InvalidSchemeError, match=r"edge rule at valence 6 is not Loop's, so its regular patches are not quartic"):
         check_applicable(scheme)
     with pytest.raises(InvalidSchemeError) as info:
         spectral_conditions(scheme, 5)
@@ -192,3 +192,22 @@ def test_command_line_loop(capsys):
 def test_characteristic_nets_of_loop_have_fifteen_coefficients():
     nets, vec = characteristic_nets(loop(), 5)
     assert len(nets) == 3 and all(len(x) == len(y) == 15 for x, y in nets) and vec.mesh == "triangle"
+
+
+def test_scheme_files_get_a_verdict_or_one_line(tmp_path, capsys):
+    """A triangle file with Loop's rules is certified; one with other regular rules gets one line and exit status 2."""
+    from symdecomp.schemes.files import scheme_to_text
+
+    good = tmp_path / "mine.toml"
+    good.write_text(scheme_to_text(loop()))
+    assert main(["c1", "--scheme", str(good), "--n", "5"]) == 0
+    assert "n =   5: C1 certified" in capsys.readouterr().out
+    quad = tmp_path / "quad.toml"
+    quad.write_text(scheme_to_text(catmull_clark()))
+    assert main(["c1", "--scheme", str(quad), "--n", "5"]) == 0
+    assert "bicubic" in capsys.readouterr().out
+    other = tmp_path / "other.toml"
+    other.write_text('mesh = "triangle"\n[edge]\nO = "1/2"\na = { "0" = "1/2" }\n[vertex]\na = "1/(2*n)"\n')
+    assert main(["c1", "--scheme", str(other), "--n", "5"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "does not apply" in err[0] and "not quartic box-splines" in err[0]

@@ -195,7 +195,7 @@ def check_applicable(scheme: Scheme) -> None:
         layout = ring_layout(scheme.mesh)
         rules = "edge rule" if triangle else "edge and face rules"
         raise InvalidSchemeError(
-            f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} are not "
+            f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} {'is' if triangle else 'are'} not "
             f"{layout.reference}'s, so its regular patches are not {layout.spline}s (the only regular splines it knows)"
         )
 

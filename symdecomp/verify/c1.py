@@ -1,7 +1,7 @@
 """Certified C1 at an extraordinary vertex: Reif's sufficient test on the characteristic map.
 
 **The test** (Reif 1995, *A unified approach to subdivision algorithms near extraordinary
-vertices*, CAGD 12; Peters and Reif 2008, *Subdivision Surfaces*, Springer, Chapter 5). A
+vertices*, CAGD 12, 153-174; Peters and Reif 2008, *Subdivision Surfaces*, Springer). A
 subdivision scheme whose regular patches are C1 generates C1 surfaces at a vertex of valence
 ``n`` for almost every initial mesh if
 
@@ -12,31 +12,43 @@ subdivision scheme whose regular patches are C1 generates C1 surfaces at a verte
    :mod:`symdecomp.analysis.characteristic`) is *regular* (Jacobian of one strict sign on the
    ring) and *injective*.
 
-**Regularity.** On each of the three bicubic sub-patches of sector 0 the Jacobian determinant is
-a polynomial of bidegree (5, 5); its Bernstein-Bezier coefficients are computed in Arb and must
-all be of one strict sign, with de Casteljau subdivision where a ball straddles 0
-(:func:`~symdecomp.verify.bezier.certify_sign`). One sector suffices: the eigenvector of
-frequency ``j`` has sector values ``omega^s c``, so the ring of sector ``s`` is the ring of sector 0
-rotated by ``2 pi j s / n`` in the same local parameters, and a rotation has determinant 1.
-The Jacobian is taken in the local parameters of the level-1 faces.
+**Regularity.** Catmull-Clark type: on each of the three bicubic sub-patches of sector 0 the
+Jacobian determinant is a polynomial of bidegree (5, 5); its Bernstein-Bezier coefficients are
+computed in Arb and must all be of one strict sign, with de Casteljau subdivision where a ball
+straddles 0 (:func:`~symdecomp.verify.bezier.certify_sign`, depth ``max_depth``). Loop type: on
+each of the three quartic box-spline sub-patches (the regular patch's Bezier basis,
+:func:`~symdecomp.schemes.box_spline.regular_patch`, on the level-1 triangles
+:data:`~symdecomp.analysis.characteristic.TRIANGLES`) the Jacobian is a triangular
+Bernstein polynomial of degree 6, certified the same way with bisection
+(:func:`~symdecomp.verify.bezier.certify_sign_triangles`, at most ``2 max_depth`` bisections,
+as many halvings of the edges as ``max_depth`` tensor splits; the reported depth counts
+bisections). One sector suffices: the eigenvector of frequency ``j`` has sector values
+``omega^s c``, so the ring of sector ``s`` is the ring of sector 0 rotated by ``2 pi j s / n``
+in the same local parameters, and a rotation has determinant 1. The Jacobian is taken in the
+local parameters of the level-1 faces (quads) or triangles (lattice-unit triangles).
 
-**Injectivity.** Criterion (Peters and Reif 2008, Section 5.3; Zorin 2000, *A method for
-analysis of C1-continuity of subdivision surfaces*, SIAM J. Numer. Anal. 37): a regular
-characteristic map is injective if and only if the image of the ring's inner boundary winds
-around the origin exactly once (``+1`` for a positive Jacobian, ``-1`` for a negative one); a
-regular ring winding ``w`` times with ``|w| > 1`` covers points ``|w|`` times, so it is not
-injective and the scheme is not C1 in general. The winding number is ``n`` times the argument
-swept by sector 0's part of the inner boundary (from the level-1 point ``(1, 0)`` through
-``(1, 1)`` to ``(0, 1)``, two cubic Bezier curves), divided by ``2 pi``; the argument is summed
-over curve pieces whose control points lie in an open half-plane through 0
+**Injectivity.** Criterion: for a regular characteristic map, injectivity is decided by the
+index (winding number) of a closed curve, the image of the ring's boundary, around the origin
+(Zorin 2000, *A method for analysis of C1-continuity of subdivision surfaces*, SIAM J. Numer.
+Anal. 37(5), 1677-1708: "injectivity can be verified by computing the index of a curve"; Peters
+and Reif 2008 give the criterion in their chapter on C1 analysis). *What was checked*: Zorin's
+title, journal, pages and that sentence of his abstract, and Reif 1995's journal and pages as
+Zorin's abstract cites them; the section numbers of Peters and Reif's book were not checked
+(an earlier version of this docstring cited "Section 5.3" from memory and is corrected here).
+Applied here: the map is injective when the image of the inner boundary winds around the
+origin exactly once (``+1`` for a positive Jacobian, ``-1`` for a negative one); a regular ring
+winding ``w`` times with ``|w| > 1`` covers points ``|w|`` times, so it is not injective and the
+scheme is not C1 in general. The winding number is ``n`` times the argument swept by sector 0's
+part of the inner boundary, divided by ``2 pi``: from the level-1 point ``(1, 0)`` through
+``(1, 1)`` to ``(0, 1)`` (two cubic Bezier curves) on quads, the edge from ``(1, 0)`` to
+``(0, 1)`` of the middle triangle (a quartic) on triangles. The argument is summed over curve
+pieces whose control points lie in an open half-plane through 0
 (:func:`~symdecomp.verify.bezier.curve_angle`), so the sum is rigorous.
 
-**Scope.** Schemes of Catmull-Clark type (:func:`~symdecomp.analysis.characteristic.check_applicable`).
-For Loop's scheme the same verdict logic applies with three pieces replaced: the per-frequency
-2-ring blocks of the triangle mesh, the ring as quartic box-spline sub-patches (triangular
-Bernstein-Bezier nets of degree 4, so a Jacobian of degree 6 with triangular de Casteljau
-subdivision), and the inner boundary's quartic curves; :func:`~symdecomp.verify.bezier.curve_angle`
-and the spectral comparisons are shared. That is not done yet.
+**Scope.** Schemes whose regular rules are Catmull-Clark's (bicubic B-splines) or Loop's
+(quartic box-splines), with any rules on the extraordinary vertex's 1-ring
+(:func:`~symdecomp.analysis.characteristic.check_applicable` says in one line why the test
+does not apply to other schemes).
 
 The verdict is ``c1`` when everything is certified, ``not-c1`` when a condition is shown to fail
 (named, with its numbers), ``undecided`` otherwise (saying what would decide it).
@@ -45,6 +57,9 @@ The verdict is ``c1`` when everything is certified, ``not-c1`` when a condition 
 >>> r = c1_test(catmull_clark(), 5)
 >>> r.verdict, r.winding_number, r.jacobian_sign
 ('c1', 1, 1)
+>>> from symdecomp.schemes.loop import loop
+>>> c1_test(loop(), 5).verdict
+'c1'
 """
 
 from __future__ import annotations

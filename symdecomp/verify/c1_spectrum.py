@@ -1,8 +1,8 @@
 """Reif's spectral conditions for C1, certified per frequency in Arb (with exact steps where they decide).
 
-The conditions (Reif 1995; Peters and Reif 2008, Section 5.1) on the ``(6n + 1) x (6n + 1)``
-2-ring subdivision matrix whose eigenvectors generate the characteristic map
-(:mod:`symdecomp.analysis.characteristic`):
+The conditions (Reif 1995; Peters and Reif 2008) on the 2-ring subdivision matrix whose
+eigenvectors generate the characteristic map (:mod:`symdecomp.analysis.characteristic`;
+``(6n + 1)`` square on quads, ``(3n + 1)`` on triangles):
 
 1. 1 is an eigenvalue, simple;
 2. the next largest eigenvalue in modulus, ``lambda``, is real, of algebraic and geometric
@@ -10,19 +10,33 @@ The conditions (Reif 1995; Peters and Reif 2008, Section 5.1) on the ``(6n + 1) 
 
 The matrix is block-circulant, so its spectrum is the union over frequencies ``j`` of the
 spectra of ``B_j``; each ``B_j`` is block lower triangular, so that is the union of the spectra
-of the 1-ring blocks (the exact ``3 x 3`` Eq. 43 matrix at ``j = 0``, the ``2 x 2`` ``M_j``
-otherwise) and of the outer blocks ``S_j`` (the regular rules). The eigenvalues of ``M_j``
-(and those of ``M_{n-j} = conj(M_j)``) are enclosed from its trace and determinant; those of
+of the 1-ring blocks (:func:`~symdecomp.analysis.frequency.one_ring_matrices`: at ``j = 0`` the
+Eq. 43 matrix, ``3 x 3`` on quads and ``2 x 2`` on triangles; otherwise ``M_j``, ``2 x 2`` or
+``1 x 1``) and of the outer blocks ``S_j`` (the regular rules). The eigenvalues of ``M_j`` (and
+those of ``M_{n-j} = conj(M_j)``) are enclosed from its characteristic polynomial; those of
 ``S_j`` are bounded by ``||S_j^k||_inf^{1/k}`` (``k = 1, 2, 4``). If ``lambda`` is a simple root of
 ``M_j`` for some ``0 < j < n/2`` and strictly dominates everything else, it has algebraic and
-geometric multiplicity 2 (one eigenvector at ``j``, one at ``n - j``). ``lambda`` is real when
-the trace and determinant of ``M_j`` are real (exactly: Laurent polynomials in ``omega``
-symmetric under ``omega -> 1/omega``) and the discriminant is positive. At ``j = 0`` everything
-is exact: the Eq. 43 characteristic polynomial is ``(x - 1) q(x)`` over ``Q``, a double root of
-``q`` is rational and its Jordan block is found by exact ranks. Balls of two frequencies that
-overlap at the top are compared exactly (characteristic polynomials over ``Q(e^{2 pi i / n})``,
-reduced modulo the cyclotomic polynomial): equal values make ``lambda``'s multiplicity larger than
-2 (not C1), which no precision would separate.
+geometric multiplicity 2 (one eigenvector at ``j``, one at ``n - j``: the *conjugate-frequency
+copy*, the same eigenvalue, which is why it is never compared with itself). ``lambda`` is real
+when ``M_j``'s characteristic polynomial is real (exactly: Laurent polynomials in ``omega``
+symmetric under ``omega -> 1/omega``) and, for ``2 x 2`` blocks, the discriminant is positive.
+
+**Exact steps**, in the cyclotomic field ``Q(e^{2 pi i / 2n})``
+(:mod:`symdecomp.algebra.cyclotomic`, which also holds Loop's ``cos(2 pi / n)`` weights):
+
+* at ``j = 0`` the characteristic polynomial is ``(x - 1) q(x)``; a double root of ``q`` is
+  found exactly, and its Jordan block by exact ranks when it is rational;
+* a ``2 x 2`` block ``M_j`` (``j != 0``) whose discriminant ball holds 0 is tested for a double
+  root exactly; a double root has multiplicity 4 with its conjugate-frequency copy (2 at
+  ``j = n/2``), so as ``lambda`` it fails condition 2;
+* two eigenvalues whose moduli cannot be separated by the balls (a *tie*) are compared exactly:
+  the blocks' characteristic polynomials (for ``-lambda``: the other one at ``-x``) share a
+  root, and the shared root is ``lambda`` when its ball misses the blocks' other roots. The
+  same value at another frequency makes ``lambda``'s multiplicity larger than 2; ``-lambda``
+  anywhere (another frequency, or the other root of ``lambda``'s block) means ``lambda`` is not
+  strictly dominant. Both fail condition 2, and no precision would have separated them. A tie
+  with a non-real eigenvalue of the same modulus is not decided exactly and stays
+  ``undecided``.
 """
 
 from __future__ import annotations

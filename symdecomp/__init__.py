@@ -31,7 +31,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
                    ``support``), rings iterated step by step (``evolution``), the 2-ring
-                   matrix by frequency and the characteristic map's nets (``characteristic``),
+                   matrix by frequency and the characteristic map's nets, quads and
+                   triangles (``characteristic``, its regular rows from ``ring_blocks``),
                    where a 1-ring component starts on one eigenvector of M_j (Eq. 35-38,
                    ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form

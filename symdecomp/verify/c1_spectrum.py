@@ -48,9 +48,9 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
 from symdecomp.analysis.characteristic import check_applicable, frequency_block, ring_layout
 from symdecomp.analysis.defective import jordan_block_size
-from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme

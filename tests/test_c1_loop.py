@@ -211,3 +211,48 @@ def test_scheme_files_get_a_verdict_or_one_line(tmp_path, capsys):
     assert main(["c1", "--scheme", str(other), "--n", "5"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "does not apply" in err[0] and "not quartic box-splines" in err[0]
+
+
+def test_loop_ring_values_agree_with_refining_the_mesh():
+    """The level-1 3-ring from the frequency blocks equals the 3-ring matrix (exact refinement) applied to the eigenvector.
+
+    The 2-ring rows check that it is an eigenvector; the ring-3 rows the extension the sub-patches read.
+    """
+    n = 5
+    lam = spectral_conditions(loop(), n).subdominant.value
+    vec = frequency_eigenvector(loop(), n, 1, lam)
+    ring = ring_subdivision_matrix(loop(), n, 3)
+    A = np.array([[complex(sp.N(x, 30)) for x in row] for row in ring.exact_matrix().tolist()])
+    w = np.exp(2j * np.pi / n)
+    before = np.zeros(ring.size, dtype=complex)  # level 0: the eigenvector on the 2-ring (lambda^-1 times level 1), 0 on ring 3
+    for i, (s, u, v) in enumerate(ring.labels):
+        if 0 < u + v <= 2:
+            before[i] = w**s * complex(vec.values[(u, v)].mid()) / complex(lam.mid())
+    after = A @ before
+    for i, (s, u, v) in enumerate(ring.labels):
+        if i:
+            assert abs(after[i] - w**s * complex(vec.values[(u, v)].mid())) < 1e-12, (s, u, v)
+
+
+def test_loop_jacobian_bound_is_below_the_sampled_jacobian():
+    """The certified |J| bound is <= the Jacobian of the patches evaluated from the box-spline basis (central differences)."""
+    from symdecomp.analysis.characteristic import subpatch_nets
+    from symdecomp.schemes.box_spline import BOX_POINTS, regular_patch
+    from symdecomp.verify.c1 import _TRIANGLE_MAPS
+
+    patch = regular_patch()
+    for n in (3, 7):
+        r = c1_test(loop(), n)
+        vec = frequency_eigenvector(loop(), n, 1, r.spectral.subdominant.value)
+        sampled = math.inf
+        for values, (o, e1, e2) in zip(subpatch_nets(vec), _TRIANGLE_MAPS):
+            P = [complex(values[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])].mid()) for a, b in BOX_POINTS]
+
+            def f(u, v):
+                return sum(p * b for p, b in zip(P, patch.basis(u, v)))
+
+            h = 1e-6
+            for u, v in [(0.1, 0.1), (0.5, 0.2), (0.2, 0.7), (1 / 3, 1 / 3), (0.8, 0.1)]:
+                du, dv = (f(u + h, v) - f(u - h, v)) / (2 * h), (f(u, v + h) - f(u, v - h)) / (2 * h)
+                sampled = min(sampled, (du.conjugate() * dv).imag)
+        assert 0 < r.jacobian_lower_bound <= sampled + 1e-8

@@ -248,7 +248,7 @@ def test_loop_jacobian_bound_is_below_the_sampled_jacobian():
         for values, (o, e1, e2) in zip(subpatch_nets(vec), _TRIANGLE_MAPS):
             P = [complex(values[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])].mid()) for a, b in BOX_POINTS]
 
-            def f(u, v):
+            def f(u, v, P=P):
                 return sum(p * b for p, b in zip(P, patch.basis(u, v)))
 
             h = 1e-6

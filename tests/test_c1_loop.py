@@ -256,3 +256,43 @@ def test_loop_jacobian_bound_is_below_the_sampled_jacobian():
                 du, dv = (f(u + h, v) - f(u - h, v)) / (2 * h), (f(u, v + h) - f(u, v - h)) / (2 * h)
                 sampled = min(sampled, (du.conjugate() * dv).imag)
         assert 0 < r.jacobian_lower_bound <= sampled + 1e-8
+
+
+@pytest.mark.parametrize("n", [3, 5])
+def test_loop_sub_patches_are_the_limit_surface(n):
+    """At the level-2 points of ring <= 2 the limit (regular mask 1/2, 1/12 on the twice-refined ring) equals the patches.
+
+    n = 3 included: there the middle triangle's 12 control points name a_2 twice (its corners' 1-rings meet
+    across the extraordinary vertex), and the box-spline patch still is the limit surface.
+    """
+    from symdecomp.analysis.characteristic import canonical_triangle, subpatch_nets
+    from symdecomp.schemes.box_spline import BOX_POINTS, regular_patch
+    from symdecomp.verify.c1 import _TRIANGLE_MAPS
+
+    patch = regular_patch()
+    assert patch.mask == (R(1, 2), R(1, 12))
+    vec = frequency_eigenvector(loop(), n, 1, spectral_conditions(loop(), n).subdominant.value)
+    ring = ring_subdivision_matrix(loop(), n, 3)
+    A = np.array([[complex(sp.N(x, 30)) for x in row] for row in ring.exact_matrix().tolist()])
+    w = np.exp(2j * np.pi / n)
+    level1 = np.array([0] + [w**s * complex(vec.values[(u, v)].mid()) for s, u, v in ring.labels[1:]])
+    level2 = A @ level1
+    index = {label: i for i, label in enumerate(ring.labels)}
+
+    def at(u, v):
+        label = canonical_triangle(0, u, v)
+        return level2[0] if label is None else level2[index[(label[0] % n, label[1], label[2])]]
+
+    def limit(u, v):
+        return at(u, v) / 2 + sum(at(u + a, v + b) for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1), (1, -1), (-1, 1))) / 12
+
+    values = subpatch_nets(vec)
+
+    def patch_at(t, pu, pv):
+        o, e1, e2 = _TRIANGLE_MAPS[t]
+        P = [complex(values[t][(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])].mid()) for a, b in BOX_POINTS]
+        return sum(p * b for p, b in zip(P, patch.basis(pu, pv)))
+
+    # (level-2 point, triangle, its parameters there): the inner edge's midpoint and the corners a_0, a_1 at level 1
+    for (u, v), t, pu, pv in [((1, 1), 1, 0, 0.5), ((2, 0), 1, 0, 0), ((2, 0), 0, 0, 0), ((0, 2), 1, 0, 1), ((0, 2), 2, 0, 0)]:
+        assert abs(limit(u, v) - patch_at(t, pu, pv)) < 1e-13

@@ -80,7 +80,7 @@ class PatchEigenData:
 
     @property
     def size(self) -> int:
-        return 2 * self.n + 8
+        return len(self.values)
 
 
 @dataclass(frozen=True)
@@ -90,7 +90,7 @@ class RoundedEigenData:
     n: int
     values: np.ndarray  # (K,)
     inverse: np.ndarray  # (K, K): inverse[i, j]
-    phi: np.ndarray  # (3, K, 16): phi[k, i, l]
+    phi: np.ndarray  # (3, K, P): phi[k, i, l], P = 16 (quads) or 12 (triangles)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -268,9 +268,9 @@ def _fraction(x: flint.fmpq) -> Fraction:
 
 
 def _regular_part(p: PatchMatrices):
-    """Exact eigenvalues ``nu``, eigenvectors ``W`` and ``W^-1`` of the 7 x 7 block ``S12``."""
-    k0 = 2 * p.n + 1
-    s12 = [[p.sparse[k0 + i].get(k0 + j, Fraction(0)) for j in range(7)] for i in range(7)]
+    """Exact eigenvalues ``nu``, eigenvectors ``W`` and ``W^-1`` of the regular block ``S12`` (7 x 7 quads, 5 x 5 triangles)."""
+    k0, r = p.ring_size, p.size - p.ring_size
+    s12 = [[p.sparse[k0 + i].get(k0 + j, Fraction(0)) for j in range(r)] for i in range(r)]
     nus, columns = [], []
     for lam, right, _ in _rational_eigen(s12):
         if not isinstance(lam, Fraction):
@@ -278,7 +278,7 @@ def _regular_part(p: PatchMatrices):
         for z in right:
             nus.append(lam)
             columns.append(z)
-    w = flint.fmpq_mat(7, 7, [_fq(columns[c][r]) for r in range(7) for c in range(7)])
+    w = flint.fmpq_mat(r, r, [_fq(columns[c][i]) for i in range(r) for c in range(r)])
     return nus, w, w.inv()
 
 
@@ -297,14 +297,9 @@ def patch_eigendata(scheme: Scheme, n: int, prec: int = 128) -> PatchEigenData:
 
 
 def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
-    n, k0, size = p.n, 2 * p.n + 1, 2 * p.n + 8
-    w = _circulant(p)
-    table = _trig_table(n)
-    cols = _rational_columns(w, n, 0)
-    for j in range(1, (n + 1) // 2):
-        cols += _frequency_columns(w, n, j, table)
-    if n % 2 == 0:
-        cols += _rational_columns(w, n, n // 2)
+    n, k0, size = p.n, p.ring_size, p.size
+    r = size - k0
+    cols = _ring_columns(p, prec)
     assert len(cols) == k0
     nus, wmat, winv = _regular_part(p)
     right_rows = [list(r) for r in zip(*(col.right for col in cols))]  # V0 as rows
@@ -313,17 +308,35 @@ def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
     lower = (-(flint.arb_mat(dmat) * v0inv)).tolist()
     v1 = (flint.arb_mat(wmat) * flint.arb_mat(dmat)).tolist()
     wa, wia = flint.arb_mat(wmat).tolist(), flint.arb_mat(winv).tolist()
-    zeros = [arb(0)] * 7
-    vec_rows = [row + zeros for row in right_rows] + [v1[r] + wa[r] for r in range(7)]
-    inv_rows = [col.left + zeros for col in cols] + [lower[r] + wia[r] for r in range(7)]
+    zeros = [arb(0)] * r
+    vec_rows = [row + zeros for row in right_rows] + [v1[i] + wa[i] for i in range(r)]
+    inv_rows = [col.left + zeros for col in cols] + [lower[i] + wia[i] for i in range(r)]
     values = tuple(col.value for col in cols) + tuple(_arb(nu) for nu in nus)
     # rows of the refined points beyond the K control points: sparse rows times V
-    beyond = [_sparse_times(p.sparse[size + i], vec_rows, size) for i in range(9)]
+    beyond = [_sparse_times(p.sparse[i], vec_rows, size) for i in range(size, len(p.sparse))]
     phi = []
     for rows in p.subpatches:
         cols_k = [[values[c] * vec_rows[idx][c] for c in range(size)] if idx < size else beyond[idx - size] for idx in rows]
         phi.append(flint.arb_mat(cols_k).transpose())
     return PatchEigenData(n, prec, values, flint.arb_mat(vec_rows), flint.arb_mat(inv_rows), tuple(phi))
+
+
+def _ring_columns(p: PatchMatrices, prec: int) -> list:
+    """The eigenvectors of the 1-ring block, frequency by frequency (quads here, triangles in
+    :mod:`symdecomp.analysis.triangle_eigendata`)."""
+    n = p.n
+    table = _trig_table(n)
+    if p.mesh == "triangle":
+        from symdecomp.analysis.triangle_eigendata import triangle_ring_columns
+
+        return triangle_ring_columns(p, table, prec)
+    w = _circulant(p)
+    cols = _rational_columns(w, n, 0)
+    for j in range(1, (n + 1) // 2):
+        cols += _frequency_columns(w, n, j, table)
+    if n % 2 == 0:
+        cols += _rational_columns(w, n, n // 2)
+    return cols
 
 
 def _sparse_times(row: dict, rows: list, size: int) -> list:
@@ -336,14 +349,14 @@ def _sparse_times(row: dict, rows: list, size: int) -> list:
 
 def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
     """``D[r][c] = (W^-1 S11 u_c)_r / (lam_c - nu_r)``, exactly 0 where ``lam_c = nu_r`` (checked exactly)."""
-    n, k0 = p.n, 2 * p.n + 1
-    s11 = flint.fmpq_mat(7, k0)
-    for i in range(7):
+    n, k0, r = p.n, p.ring_size, p.size - p.ring_size
+    s11 = flint.fmpq_mat(r, k0)
+    for i in range(r):
         for c, x in p.sparse[k0 + i].items():
             if c < k0:
                 s11[i, c] = _fq(x)
     g_exact = winv * s11
-    g_rows = [{c: _fraction(g_exact[r, c]) for c in range(k0) if g_exact[r, c] != 0} for r in range(7)]
+    g_rows = [{c: _fraction(g_exact[i, c]) for c in range(k0) if g_exact[i, c] != 0} for i in range(r)]
     dmat = []
     for r, nu in enumerate(nus):
         coeff = _sparse_times(g_rows[r], right_rows, k0)
@@ -379,8 +392,9 @@ def _round_all(data: PatchEigenData) -> RoundedEigenData | None:
         phi = [round_ball(+x) for t in data.phi for x in t.entries()]
     if None in values or None in inverse or None in phi:
         return None
+    width = data.phi[0].ncols()
     return RoundedEigenData(
-        data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, 16)
+        data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, width)
     )
 
 

@@ -45,6 +45,7 @@ from types import MappingProxyType
 
 import sympy as sp
 
+from symdecomp.algebra.cyclotomic import Cyclotomic
 from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -69,6 +70,8 @@ class InvalidMeshError(InvalidInputError):
 
 
 def _as_weight(w: sp.Expr):
+    if isinstance(w, (Fraction, Cyclotomic)):  # already exact numbers (a caller's own arithmetic)
+        return w
     w = sp.sympify(w)
     if w.is_Rational:
         return Fraction(int(w.p), int(w.q))

@@ -11,12 +11,20 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+import mpmath
+
+from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.schemes.mesh import QuadMesh, refine
 from symdecomp.schemes.patch import patch_mesh
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.triangle_patch import centre_weights, position_mask, triangle_patch_rows
+from symdecomp.schemes.trimesh import TriangleMesh, refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
 
-__all__ = ["dyadic_limits", "numpy_baseline", "opensubdiv_dyadic_errors", "refined_lattice", "baseline_error"]
+__all__ = [
+    "dyadic_limits", "numpy_baseline", "opensubdiv_dyadic_errors", "refined_lattice", "baseline_error",
+    "triangle_patch_mesh", "refined_triangle_lattice", "triangle_dyadic_limits", "exact_to_mpf",
+]
 
 
 def refined_lattice(mesh: QuadMesh, vid, scheme: Scheme, level: int):
@@ -58,6 +66,71 @@ def dyadic_limits(scheme: Scheme, n: int, level: int, values) -> tuple[list, dic
         if m not in masks:
             masks[m] = [Fraction(int(w.p), int(w.q)) for w in limit_masks_at(scheme, m).position]
         limits[(u, v)] = tuple(sum(w * p[c] for w, p in zip(masks[m], ring)) for c in range(len(ring[0])))
+    return control, limits
+
+
+def triangle_patch_mesh(n: int, values=None):
+    """``(mesh, columns)``: the 3-ring triangle mesh of valence ``n`` and the ids of the ``n + 6`` control points."""
+    mesh = triangle_ring_mesh(n, 3, values)
+    ids = {lab: i for i, lab in enumerate(triangle_ring_labels(n, 3))}
+    return mesh, [ids[lab] for lab in triangle_patch_rows(n)[: n + 6]]
+
+
+def refined_triangle_lattice(mesh: TriangleMesh, scheme: Scheme, level: int):
+    """``(mesh_L, ids)``: the triangle mesh after ``level`` exact refinements and the ids of the patch's
+    lattice points ``(i, j)``, ``i + j <= 2^L`` (the patch is the ring mesh's sector 0).
+
+    The centre's vertex rule is applied exactly (``Q(zeta_2n)`` when irrational, e.g. Loop's
+    ``cos(2 pi/n)``), so every value is exact.
+    """
+    n = len(mesh.one_ring(0)[1])
+    rules = triangle_mesh_rules(scheme)
+    centre = centre_weights(scheme, n)
+    weights = lambda m: centre if m == n else rules.vertex_weights(m)  # noqa: E731
+    ids = {(0, 0): 0, (1, 0): mesh.one_ring(0)[1][0], (0, 1): mesh.one_ring(0)[1][1]}
+    for lev in range(1, level + 1):
+        step = refine_triangles(mesh, rules, vertex_weights=weights)
+        new = {}
+        for u in range(2**lev + 1):
+            for v in range(2**lev + 1 - u):
+                if u % 2 == 0 and v % 2 == 0:
+                    new[(u, v)] = step.vertex_point[ids[(u // 2, v // 2)]]
+                    continue
+                if u % 2 and v % 2:  # the diagonal edge
+                    a, b = ((u - 1) // 2, (v + 1) // 2), ((u + 1) // 2, (v - 1) // 2)
+                else:
+                    a, b = ((u - u % 2) // 2, (v - v % 2) // 2), ((u + u % 2) // 2, (v + v % 2) // 2)
+                new[(u, v)] = step.edge_point[frozenset((ids[a], ids[b]))]
+        mesh, ids = step.mesh, new
+    return mesh, ids
+
+
+def exact_to_mpf(x):
+    """A Fraction or a (real) cyclotomic number as an mpmath number at the current precision."""
+    if isinstance(x, Fraction):
+        return mpmath.mpf(x.numerator) / x.denominator
+    return mpmath.mpf(to_acb(x, mpmath.mp.prec + 32).real.mid().str(mpmath.mp.dps + 10, radius=False))
+
+
+def triangle_dyadic_limits(scheme: Scheme, n: int, level: int, values) -> tuple[list, dict]:
+    """``(control_points, limits)`` of the Loop patch: control values and ``{(i, j): exact limit}``.
+
+    Limits are the position mask (:func:`~symdecomp.schemes.triangle_patch.position_mask`, at
+    valence ``n`` for the centre, 6 elsewhere) on the 1-ring of the vertex at ``(i/2^L, j/2^L)``
+    after ``L`` exact refinements; values are Fractions or elements of ``Q(zeta_2n)``.
+    """
+    mesh, columns = triangle_patch_mesh(n, values)
+    control = [mesh.values[c] for c in columns]
+    refined, ids = refined_triangle_lattice(mesh, scheme, level)
+    masks = {}
+    limits = {}
+    for key, x in ids.items():
+        _, ring = refined.one_ring(x)
+        if len(ring) not in masks:
+            masks[len(ring)] = position_mask(scheme, len(ring))
+        w_o, w_a = masks[len(ring)]
+        val = refined.values[x]
+        limits[key] = tuple(w_o * val[c] + w_a * sum((refined.values[r][c] for r in ring[1:]), refined.values[ring[0]][c]) for c in range(len(val)))
     return control, limits
 
 

@@ -76,7 +76,10 @@ class PatchEigenData:
     values: tuple  # K arb
     vectors: flint.arb_mat  # V, K x K, column i belongs to values[i]
     inverse: flint.arb_mat  # V^-1
-    phi: tuple  # three arb_mat, K x 16: phi[k][i, l] = B-spline coefficient l of eigenfunction i on sub-patch k
+    phi: tuple  # three arb_mat, K x P: phi[k][i, l] = coefficient l of eigenfunction i on sub-patch k
+    #: ``(i, c, gamma)``: ``A v_c = lam_c v_c + gamma v_i`` (``lam_i = lam_c``), so ``V^-1 A V = diag(values) + N``
+    #: with ``N[i, c] = gamma``, ``N^2 = 0``: a Jordan pair (Loop at N = 3). Empty when ``A`` is diagonalizable.
+    jordan: tuple = ()
 
     @property
     def size(self) -> int:
@@ -91,6 +94,7 @@ class RoundedEigenData:
     values: np.ndarray  # (K,)
     inverse: np.ndarray  # (K, K): inverse[i, j]
     phi: np.ndarray  # (3, K, P): phi[k, i, l], P = 16 (quads) or 12 (triangles)
+    jordan: tuple = ()  # (i, c, gamma) as in PatchEigenData, gamma correctly rounded
 
 
 # ---------------------------------------------------------------------------------------------
@@ -303,7 +307,7 @@ def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
     assert len(cols) == k0
     nus, wmat, winv = _regular_part(p)
     right_rows = [list(r) for r in zip(*(col.right for col in cols))]  # V0 as rows
-    dmat = _outer_coefficients(p, cols, nus, winv, right_rows)
+    dmat, jordan = _outer_coefficients(p, cols, nus, winv, right_rows)
     v0inv = flint.arb_mat([col.left for col in cols])
     lower = (-(flint.arb_mat(dmat) * v0inv)).tolist()
     v1 = (flint.arb_mat(wmat) * flint.arb_mat(dmat)).tolist()
@@ -316,9 +320,17 @@ def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
     beyond = [_sparse_times(p.sparse[i], vec_rows, size) for i in range(size, len(p.sparse))]
     phi = []
     for rows in p.subpatches:
-        cols_k = [[values[c] * vec_rows[idx][c] for c in range(size)] if idx < size else beyond[idx - size] for idx in rows]
+        cols_k = [_av_row(vec_rows[idx], values, jordan) if idx < size else beyond[idx - size] for idx in rows]
         phi.append(flint.arb_mat(cols_k).transpose())
-    return PatchEigenData(n, prec, values, flint.arb_mat(vec_rows), flint.arb_mat(inv_rows), tuple(phi))
+    return PatchEigenData(n, prec, values, flint.arb_mat(vec_rows), flint.arb_mat(inv_rows), tuple(phi), tuple(jordan))
+
+
+def _av_row(v_row: list, values, jordan) -> list:
+    """A row of ``A V = V (diag(values) + N)``."""
+    out = [lam * x for lam, x in zip(values, v_row)]
+    for i, c, gamma in jordan:
+        out[c] = out[c] + gamma * v_row[i]
+    return out
 
 
 def _ring_columns(p: PatchMatrices, prec: int) -> list:
@@ -347,8 +359,10 @@ def _sparse_times(row: dict, rows: list, size: int) -> list:
     return out
 
 
-def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
-    """``D[r][c] = (W^-1 S11 u_c)_r / (lam_c - nu_r)``, exactly 0 where ``lam_c = nu_r`` (checked exactly)."""
+def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[list, list]:
+    """``(D, jordan)``: ``D[r][c] = (W^-1 S11 u_c)_r / (lam_c - nu_r)``; where ``lam_c = nu_r`` (decided
+    exactly) ``D[r][c] = 0``, and a nonzero ``gamma = (W^-1 S11 u_c)_r`` is a Jordan pair ``(k0 + r, c, gamma)``
+    (triangle patches; a quad patch that is not diagonalizable is refused)."""
     n, k0, r = p.n, p.ring_size, p.size - p.ring_size
     s11 = flint.fmpq_mat(r, k0)
     for i in range(r):
@@ -357,7 +371,7 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
                 s11[i, c] = _fq(x)
     g_exact = winv * s11
     g_rows = [{c: _fraction(g_exact[i, c]) for c in range(k0) if g_exact[i, c] != 0} for i in range(r)]
-    dmat = []
+    dmat, jordan = [], []
     for r, nu in enumerate(nus):
         coeff = _sparse_times(g_rows[r], right_rows, k0)
         row = []
@@ -369,14 +383,16 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
             verdict = col.exact_check(nu, g_rows[r]) if col.exact_check else None
             if verdict is None:
                 raise _NeedPrecision
-            if not verdict:
+            if not verdict and p.mesh == "triangle":
+                jordan.append((k0 + r, c, coeff[c]))
+            elif not verdict:
                 raise NotDiagonalizableError(
                     f"valence {n}: the eigenvalue {nu} of the 1-ring and of the regular block has fewer eigenvectors "
                     "than its multiplicity (the patch matrix is not diagonalizable)"
                 )
             row.append(arb(0))
         dmat.append(row)
-    return dmat
+    return dmat, jordan
 
 
 # ---------------------------------------------------------------------------------------------
@@ -390,11 +406,12 @@ def _round_all(data: PatchEigenData) -> RoundedEigenData | None:
         values = [round_ball(+v) for v in data.values]
         inverse = [round_ball(+x) for x in data.inverse.entries()]
         phi = [round_ball(+x) for t in data.phi for x in t.entries()]
-    if None in values or None in inverse or None in phi:
+        jordan = tuple((i, c, round_ball(+g)) for i, c, g in data.jordan)
+    if None in values or None in inverse or None in phi or any(g is None for _, _, g in jordan):
         return None
     width = data.phi[0].ncols()
     return RoundedEigenData(
-        data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, width)
+        data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, width), jordan
     )
 
 

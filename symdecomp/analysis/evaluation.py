@@ -87,20 +87,23 @@ class PatchEvaluator:
     #: ``"quad"`` (Catmull-Clark: ``[0, 1]^2``, bicubic sub-patches) or ``"triangle"`` (Loop:
     #: ``u, v >= 0``, ``u + v <= 1``, quartic box-spline sub-patches, :mod:`symdecomp.analysis.triangle_evaluation`).
     mesh: str = "quad"
+    #: Jordan pairs ``(i, c, gamma)`` of the eigen-data (:class:`~symdecomp.analysis.eigendata.PatchEigenData`):
+    #: ``J^m`` adds ``m lam^(m-1) gamma x_c`` to component ``i``.
+    jordan: tuple = ()
 
     @classmethod
     def from_rounded(cls, scheme: Scheme, data: RoundedEigenData) -> PatchEvaluator:
-        return cls.from_file_arrays(scheme, data.n, data.values, data.inverse, data.phi)
+        return cls.from_file_arrays(scheme, data.n, data.values, data.inverse, data.phi, data.jordan)
 
     @classmethod
-    def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi) -> PatchEvaluator:
+    def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi, jordan=()) -> PatchEvaluator:
         values, inverse, phi = np.asarray(values, float), np.asarray(inverse, float), np.asarray(phi, float)
         if scheme.mesh == "triangle":
             check_regular_patch(scheme)
             pos, tan = eigen_masks(values, inverse, phi)
         else:
             pos, tan = _masks(scheme, n, float)
-        return cls(n, values, inverse, phi, pos, tan, None, scheme.mesh)
+        return cls(n, values, inverse, phi, pos, tan, None, scheme.mesh, tuple((i, c, float(g)) for i, c, g in jordan))
 
     @classmethod
     def exact(cls, scheme: Scheme, n: int, dps: int = 30) -> PatchEvaluator:
@@ -118,7 +121,8 @@ class PatchEvaluator:
                 pos, tan = eigen_masks(values, inverse, phi)
             else:
                 pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(sp.N(e, dps + 10)) if isinstance(e, sp.Basic) else mpmath.mpf(e))
-        return cls(n, values, inverse, phi, pos, tan, dps + 10, scheme.mesh)
+            jordan = tuple((i, c, mp(g)) for i, c, g in data.jordan)
+        return cls(n, values, inverse, phi, pos, tan, dps + 10, scheme.mesh, jordan)
 
     def evaluate(self, control_points, u, v) -> dict:
         """Point, first and second derivatives and unit normal at the parameters ``(u, v)`` (arrays).
@@ -187,7 +191,11 @@ class PatchEvaluator:
             for kk in range(3):
                 sel = k == kk
                 g[sel] = basis[sel] @ self.phi[kk].T
-            out[key] = (g * weights) @ proj * scale ** (ds + dt)
+            total = (g * weights) @ proj
+            for i, c, gamma in self.jordan:
+                m = level - 1
+                total = total + (g[:, i] * m * self.values[i] ** np.maximum(m - 1, 0) * gamma)[:, None] * proj[c][None, :]
+            out[key] = total * scale ** (ds + dt)
         return out
 
     def _one(self, proj, c, u, v, out, p):
@@ -214,7 +222,11 @@ class PatchEvaluator:
                 basis = box_basis(np.array([s], dtype=object), np.array([t], dtype=object), ds, dt, mpmath.mpf)[0]
             else:
                 basis = np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel()  # index a + 4 b
-            out[key][p] = (weights * self.phi[k].dot(basis)).dot(proj) * scale ** (ds + dt)
+            g = self.phi[k].dot(basis)
+            total = (weights * g).dot(proj)
+            for i, c, gamma in self.jordan:
+                total = total + g[i] * (level - 1) * self.values[i] ** max(level - 2, 0) * gamma * proj[c]
+            out[key][p] = total * scale ** (ds + dt)
 
 
 def _normals(du, dv):

@@ -142,7 +142,8 @@ def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed
     found among OpenSubdiv's vertices by its position (``match``: the largest distance, which
     must be at rounding level), and ``evaluator`` (a float64
     :class:`~symdecomp.analysis.evaluation.PatchEvaluator`) is compared with OpenSubdiv's limit
-    there (``error``: the largest coordinate difference). Needs the OpenSubdiv bridge.
+    there (``error``: the largest coordinate difference). Needs the OpenSubdiv bridge. Catmull-Clark
+    on the ``(2n + 8)``-point patch's quad mesh, Loop (triangle schemes) on the ``(n + 6)``-point one.
     """
     import random
 
@@ -151,11 +152,17 @@ def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed
     from symdecomp.verify.opensubdiv import osd_limit_points
 
     rnd = random.Random(seed)
-    mesh, vid, columns = patch_mesh(n, lambda s, u, v: tuple(Fraction(rnd.randint(-2**20, 2**20), 2**20) for _ in range(3)))
-    refined, ids = refined_lattice(mesh, vid, scheme, level)
+    values = lambda s, u, v: tuple(Fraction(rnd.randint(-2**20, 2**20), 2**20) for _ in range(3))  # noqa: E731
+    if scheme.mesh == "triangle":
+        mesh, columns = triangle_patch_mesh(n, values)
+        refined, ids = refined_triangle_lattice(mesh, scheme, level)
+    else:
+        mesh, vid, columns = patch_mesh(n, values)
+        refined, ids = refined_lattice(mesh, vid, scheme, level)
     points, limits = osd_limit_points(mesh, level)
     keys = sorted(ids)
-    ours = np.array([[float(x) for x in refined.values[ids[k]]] for k in keys])
+    with mpmath.workdps(30):
+        ours = np.array([[float(exact_to_mpf(x)) for x in refined.values[ids[k]]] for k in keys])
     dist = ((ours[:, None, :] - points[None, :, :]) ** 2).sum(axis=2)
     nearest = dist.argmin(axis=1)
     match = float(np.sqrt(dist[np.arange(len(keys)), nearest]).max())

@@ -1,4 +1,10 @@
-"""Certified eigenstructure of the (2N+8)-point patch matrix (Stam's exact-evaluation data).
+"""Certified eigenstructure of the patch matrix (Stam's exact-evaluation data): Catmull-Clark and Loop.
+
+Written for the (2N+8)-point Catmull-Clark patch below; Loop's (N+6)-point patch
+(:mod:`symdecomp.schemes.triangle_patch`) shares the whole assembly with its own 1-ring columns
+(:mod:`symdecomp.analysis.triangle_eigendata`) and a 5 x 5 regular block, and where its matrix
+is not diagonalizable (N = 3) keeps the Jordan pairs (:attr:`PatchEigenData.jordan`) instead of
+refusing.
 
 The patch matrix (:func:`~symdecomp.schemes.patch.patch_matrices`) is block lower triangular,
 ``A = [[S, 0], [S11, S12]]``: ``S`` is the 1-ring matrix, ``S12`` the 7 x 7 matrix of the

@@ -1,4 +1,7 @@
-"""Exact evaluation of the patch next to an extraordinary vertex (Stam's method).
+"""Exact evaluation of the patch next to an extraordinary vertex (Stam's method): Catmull-Clark and Loop.
+
+Loop's triangle patch takes the same path with its own domain, sub-triangles and box-spline
+basis (:mod:`symdecomp.analysis.triangle_evaluation`); the Catmull-Clark patch is described here.
 
 The patch ``(O, e_2, f_1, e_1)`` of a valence-``N`` vertex is evaluated from its ``K = 2N + 8``
 control points (order: :mod:`symdecomp.schemes.patch`) and the eigen-data of the patch matrix

@@ -52,16 +52,8 @@ from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
 __all__ = [
-    "InvalidMeshError",
-    "QuadMesh",
-    "MeshRules",
-    "Refinement",
-    "mesh_rules",
-    "ring_mesh",
-    "ring_mesh_labels",
-    "cube_mesh",
-    "refine", "point_stencils", "refinement_matrix",
-    "central_rings",
+    "InvalidMeshError", "QuadMesh", "MeshRules", "Refinement", "mesh_rules", "ring_mesh", "ring_mesh_labels",
+    "cube_mesh", "refine", "point_stencils", "refinement_matrix", "central_rings",
 ]
 
 

@@ -129,7 +129,7 @@ def _frequency_check(w: dict, n: int, j: int):
 def triangle_ring_columns(p, table: list, prec: int) -> list:
     """The ``n + 1`` eigenvectors of the 1-ring block: frequency 0, then ``(cos, sin)`` for ``j = 1..``, then ``n/2``.
 
-    ``table[m] = cos(pi m/(2n))`` (:func:`~symdecomp.analysis.eigendata._trig_table`).
+    ``table[m] = cos(pi m/(2n))`` (:func:`~symdecomp.analysis.quad_eigendata.trig_table`).
     """
     n = p.n
     w = triangle_ring_weights(p)

@@ -111,7 +111,19 @@ def _fraction(x: flint.fmpq) -> Fraction:
     return Fraction(int(x.p), int(x.q))
 
 
+_REGULAR: dict = {}
+
+
 def _regular_part(p: PatchMatrices):
+    """:func:`_regular_part_of` ``p``, remembered for the last patch (three steps ask for it)."""
+    key = (p.mesh, p.n, id(p))
+    if key not in _REGULAR or _REGULAR[key][0] is not p:
+        _REGULAR.clear()
+        _REGULAR[key] = (p, _regular_part_of(p))
+    return _REGULAR[key][1]
+
+
+def _regular_part_of(p: PatchMatrices):
     """Exact eigenvalues ``nu``, eigenvectors ``W`` and ``W^-1`` of the regular block ``S12`` (7 x 7 quads, 5 x 5 triangles)."""
     k0, r = p.ring_size, p.size - p.ring_size
     s12 = [[p.sparse[k0 + i].get(k0 + j, Fraction(0)) for j in range(r)] for i in range(r)]

@@ -18,7 +18,6 @@ from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import NotDiagonalizableError
 from symdecomp.algebra.small_eigen import arb_value as _arb
 from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
-from symdecomp.algebra.small_eigen import fmpq_value as _fq
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.schemes.patch import PatchMatrices
 
@@ -31,17 +30,21 @@ arb = flint.arb
 # exact helpers
 
 
+#: ``q`` (in units of pi, mod 2) -> the exact value of ``cos(pi q)`` where it is rational.
+_EXACT_COS = {
+    Fraction(0): 1, Fraction(1): -1, Fraction(1, 2): 0, Fraction(3, 2): 0,
+    Fraction(1, 3): Fraction(1, 2), Fraction(5, 3): Fraction(1, 2), Fraction(2, 3): Fraction(-1, 2), Fraction(4, 3): Fraction(-1, 2),
+}  # fmt: skip
+
+
 def _trig_pi(m: int, den: int, fn: str) -> arb:
     """``cos`` or ``sin`` of ``pi m/den``, exact when the value is rational."""
-    q = Fraction(m, den) % 2
     if fn == "sin":
-        q = (q - Fraction(1, 2)) % 2
-    exact = {Fraction(0): 1, Fraction(1): -1, Fraction(1, 2): 0, Fraction(3, 2): 0}
-    exact.update({Fraction(1, 3): Fraction(1, 2), Fraction(5, 3): Fraction(1, 2)})
-    exact.update({Fraction(2, 3): Fraction(-1, 2), Fraction(4, 3): Fraction(-1, 2)})
-    if q in exact:
-        return _arb(exact[q])
-    return arb.cos_pi_fmpq(_fq(q))
+        m, den = 2 * m - den, 2 * den  # sin(pi m/den) = cos(pi (m/den - 1/2))
+    q = Fraction(m % (2 * den), den)
+    if q in _EXACT_COS:
+        return _arb(_EXACT_COS[q])
+    return arb.cos_pi_fmpq(flint.fmpq(q.numerator, q.denominator))
 
 
 # ---------------------------------------------------------------------------------------------

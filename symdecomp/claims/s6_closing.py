@@ -112,6 +112,29 @@ def _regular_lambda1(scheme: Scheme):
     return valence, _lambda1_at(scheme, valence)
 
 
+def _outer_block_proof(scheme: Scheme, rings: int, inner_rings: int) -> tuple[bool, bool, list]:
+    """For every n: is the ``rings``-ring matrix block lower-triangular with the classes outside ``inner_rings``
+    last, and is its outer block's spectrum free of 1 and of ``lambda_1``? ``(triangular, clear, steps)``."""
+    condition = _subdominant_condition(scheme)
+    blocks, inner, outer = _split(scheme, rings, inner_rings)
+    p_outer = _outer_charpoly(blocks, outer)
+    constant = not p_outer.has(OMEGA)
+    # lambda_1(n) is a root of condition(x, omega_n): it is an eigenvalue of the outer block only where the
+    # resultant vanishes at a root of unity of order n >= 3
+    resultant = sp.resultant(sp.numer(sp.together(p_outer)), sp.numer(sp.together(condition)), X) if constant else None
+    orders = root_of_unity_orders(sp.expand(resultant).subs(OMEGA, ZETA)) if constant else None
+    # at a valence where the resultant vanishes, another root of the frequency-1 polynomial may be the outer
+    # eigenvalue: look at lambda_1 itself there, exactly
+    exceptions = [m for m in orders or () if m >= 3]
+    clear = constant and sp.simplify(p_outer.subs(X, 1)) != 0 and orders is not None and all(
+        sp.simplify(p_outer.subs(X, _lambda1_at(scheme, m))) != 0 for m in exceptions
+    )
+    steps = [Step(f"{rings}-ring: $\\det(xI - Y(\\omega))$ of the classes outside the {inner_rings}-ring", p_outer),
+             Step(f"{rings}-ring: resultant in $x$ with $\\det(xI - E_1(\\omega))$ of the 1-ring (a root at $\\omega_n$ means "
+                  "that an eigenvalue of frequency 1 at valence $n$ is an outer one)", sp.factor(resultant) if resultant is not None else None)]
+    return _triangular(blocks, inner, outer), clear, steps
+
+
 @claim(
     "1-ring suffices (after Eq. 51)",
     section="6",
@@ -120,32 +143,12 @@ def _regular_lambda1(scheme: Scheme):
     r"is sufficient for the computation of all the continuous derivatives.",
 )
 def _sufficient(scheme: Scheme) -> CheckResult:
-    # long: the proof for every n (three facts about the block form) and its exact illustration at small
-    # valences read the same split of the K-ring matrices.
     inner_rings = PRINTED_SUFFICIENT_RINGS
-    condition = _subdominant_condition(scheme)
     proofs, steps = [], []
     for rings in (2, 3):
-        blocks, inner, outer = _split(scheme, rings, inner_rings)
-        triangular = _triangular(blocks, inner, outer)
-        p_outer = _outer_charpoly(blocks, outer)
-        constant = not p_outer.has(OMEGA)
-        at_one = sp.simplify(p_outer.subs(X, 1)) if constant else None
-        # lambda_1(n) is a root of condition(x, omega_n): it is an eigenvalue of the outer block only where the
-        # resultant vanishes at a root of unity of order n >= 3
-        resultant = sp.resultant(sp.numer(sp.together(p_outer)), sp.numer(sp.together(condition)), X) if constant else None
-        orders = root_of_unity_orders(sp.expand(resultant).subs(OMEGA, ZETA)) if constant else None
-        # at a valence where the resultant vanishes, another root of the frequency-1 polynomial may be the outer
-        # eigenvalue: look at lambda_1 itself there, exactly
-        exceptions = [m for m in orders or () if m >= 3]
-        clear = constant and at_one != 0 and orders is not None and all(
-            sp.simplify(p_outer.subs(X, _lambda1_at(scheme, m))) != 0 for m in exceptions
-        )
+        triangular, clear, ring_steps = _outer_block_proof(scheme, rings, inner_rings)
         proofs.append((rings, triangular, clear))
-        steps += [Step(f"{rings}-ring: $\\det(xI - Y(\\omega))$ of the classes outside the {inner_rings}-ring", p_outer),
-                  Step(f"{rings}-ring: resultant in $x$ with $\\det(xI - E_1(\\omega))$ of the 1-ring (a root at $\\omega_n$ means "
-                       "that an eigenvalue of frequency 1 at valence $n$ is an outer one)",
-                       sp.factor(resultant) if resultant is not None else None)]
+        steps += ring_steps
     small = _rational_valences(scheme, 3)
     supports = [(v, rings, 1, _left_support(scheme, v, rings, 1, inner_rings)) for rings in (2,) for v in small]
     valence, lam1 = _regular_lambda1(scheme)

@@ -31,6 +31,7 @@ def test_the_scope_of_a_verdict_is_computed():
     # a correction states its scope; a counterexample that is not exact lowers it
     assert CheckResult(Status.CORRECTED, "x", correction="c", counterexample=exact, scope=Scope.EVERY_N).scope is Scope.EVERY_N
     assert CheckResult(Status.CORRECTED, "x", correction="c", counterexample=rounded, scope=Scope.EVERY_N).scope is Scope.SINGLE_CASE
+    assert CheckResult(Status.CORRECTED, "x", correction="c", counterexample=exact).scope is Scope.SINGLE_CASE  # unstated
     assert CheckResult(Status.UNDECIDED, "x").scope is None
     with pytest.raises(ValueError, match="every n"):
         CheckResult(Status.PROVED, "x", scope=Scope.RANGE)

@@ -23,7 +23,8 @@ A check computes it: ``proved`` is ``every n``; ``verified`` is a range or a sin
 valences; a refutation is ``every n`` when its counterexample is exact (no floating-point number in
 it) and a ``single case`` otherwise (a check may state ``every n`` when it decided the refutation
 symbolically and the numbers only illustrate it); a ``corrected`` check states the scope of its corrected
-statement, lowered to ``single case`` when the counterexample is not exact (:func:`erratum_scope`).
+statement (``single case`` when it does not), lowered to ``single case`` when the counterexample is not
+exact (:func:`erratum_scope`).
 
 Every claim is checked *for a scheme* (:func:`check_claim`, default Catmull-Clark): the printed
 statement of the paper is one input, the scheme the other, and the status follows from both.
@@ -228,7 +229,7 @@ class CheckResult:
     #: For ``verified``: the valences checked, as ``(first, last)`` inclusive.
     valences: tuple[int, int] | None = None
     #: For which valences the verdict is established (:class:`Scope`); computed from the status, the
-    #: valences and the counterexample unless the check states it (a ``corrected`` check must).
+    #: valences and the counterexample unless the check states it (a ``corrected`` check states its correction's).
     scope: Scope | None = None
 
     def __post_init__(self):
@@ -256,10 +257,8 @@ class CheckResult:
             if stated is not None and stated is not computed:
                 raise ValueError(f"valences {self.valences} are a {computed}, not {stated}")
             return computed
-        if status is Status.CORRECTED:
-            if stated is None:
-                raise ValueError("a corrected claim states the scope of its corrected statement")
-            return erratum_scope(stated, self.counterexample)
+        if status is Status.CORRECTED:  # unstated: nothing shown beyond the counterexample
+            return erratum_scope(stated or Scope.SINGLE_CASE, self.counterexample)
         computed = Scope.EVERY_N if is_exact(self.counterexample) else Scope.SINGLE_CASE  # refuted
         return computed if stated is None else stated
 

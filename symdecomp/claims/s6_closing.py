@@ -25,14 +25,17 @@ from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.claims.notation import eq, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim
 from symdecomp.schemes.rings import ring_subdivision_matrix
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
 X = sp.Symbol("x")
 
 
-def S(name: str) -> sp.Symbol:
+_det = sp.Function("det")
+
+
+def _named(name: str) -> sp.Symbol:
     """A matrix by name (products keep their order)."""
     return sp.Symbol(name, commutative=False)
 
@@ -273,8 +276,8 @@ def _larger(scheme: Scheme) -> CheckResult:
              "eigenvalues of the ", rings - 1, "-ring matrix and those of the new ring's block: ", description[0], "; ",
              description[1]),
         scope=Scope.EVERY_N,
-        counterexample=Text(eq(N, valence), ": exactly, ", eq(sp.Function("det")(X * S("I") - S(f"S_{rings}")),
-                                                         sp.Function("det")(X * S("I") - S(f"S_{rings - 1}")) * sp.Symbol("p(x)") ** valence),
+        counterexample=Text(eq(N, valence), ": exactly, ", eq(_det(X * _named("I") - _named(f"S_{rings}")),
+                                                         _det(X * _named("I") - _named(f"S_{rings - 1}")) * sp.Symbol("p(x)") ** valence),
                             " with ", eq(sp.Symbol("p(x)"), growth[rings]["polynomial"]), ": the ", rings, "-ring matrix has the "
                             "added eigenvalues ", listed(values), " (", valence, " times each), rank ", rank, " of ", size,
                             " (the ", rings - 1, "-ring: ", previous[1], " of ", previous[0], ") and ", null, " null columns"),
@@ -305,14 +308,8 @@ def _defective_example(scheme: Scheme, valence: int):
             if (E - mu * sp.eye(E.rows)).applyfunc(sp.simplify).is_zero_matrix:
                 continue  # a multiple of the identity: double, but not defective
             weights = {fixed: 0, solved: value}
-            return weights, mu, sp.Matrix(subdivision_matrix_at(free, valence)).subs(weights)
+            return weights, mu, sp.Matrix(subdivision_matrix(free, valence)).subs(weights)
     return None
-
-
-def subdivision_matrix_at(scheme: Scheme, valence: int):
-    from symdecomp.schemes.scheme import subdivision_matrix
-
-    return subdivision_matrix(scheme, valence)
 
 
 @claim(
@@ -336,7 +333,7 @@ def _multiplicities(scheme: Scheme) -> CheckResult:
         return CheckResult(
             Status.REFUTED,
             "the vertex weights enter a frequency other than 0, or det(xI - S) is not the product over the frequencies",
-            counterexample=Text("for this scheme, ", S("E_k"), " (", ne(sp.Symbol("k"), 0), ") is ", E,
+            counterexample=Text("for this scheme, ", _named("E_k"), " (", ne(sp.Symbol("k"), 0), ") is ", E,
                                 " and the product form holds at n = 3..8: ", identity),
         )
     valence = 3
@@ -350,15 +347,15 @@ def _multiplicities(scheme: Scheme) -> CheckResult:
         if geometric < algebraic:
             steps.append(Step(f"$S$ at $n = {valence}$ and these weights: not diagonalizable", Sm))
             shown = Text("; at ", eq(N, valence), ", ", listed(eq(k, v) for k, v in sorted(weights.items(), key=str)), " the weights make ",
-                         S("E_0"), " a Jordan block for ", eq(sp.Symbol("mu"), mu), ", and ", S("S"), " is not diagonalizable (",
+                         _named("E_0"), " a Jordan block for ", eq(sp.Symbol("mu"), mu), ", and ", _named("S"), " is not diagonalizable (",
                          mu, " has algebraic multiplicity ", algebraic, ", geometric ", geometric, "), while the other "
                          "eigenvalues are those of the frequencies ", ne(sp.Symbol("k"), 0), ", unchanged")
     return CheckResult(
         Status.PROVED,
         Text("the tuning property is an identity of characteristic polynomials, ",
-             eq(sp.Function("det")(X * S("I") - S("S")), (X - 1) * sp.Function("det")(X * S("I") - S("E_0"))
-                * sp.Product(sp.Function("det")(X * S("I") - S("E_k")), (sp.Symbol("k"), 1, N - 1))),
-             " (Prop. 6.3 as corrected: a similarity, no eigenvectors used), with only ", S("E_0"), " depending on ",
+             eq(sp.Function("det")(X * _named("I") - _named("S")), (X - 1) * sp.Function("det")(X * _named("I") - _named("E_0"))
+                * sp.Product(sp.Function("det")(X * _named("I") - _named("E_k")), (sp.Symbol("k"), 1, N - 1))),
+             " (Prop. 6.3 as corrected: a similarity, no eigenvectors used), with only ", _named("E_0"), " depending on ",
              sp.Symbol("alpha"), ", ", sp.Symbol("beta"), "; it holds for every ", N, " and, being polynomial in the "
              "weights, for all of them (exact at n = 3..8 with the weights free), whatever the multiplicities", shown),
         steps=tuple(steps),

@@ -23,9 +23,11 @@ from symdecomp.analysis.support_window import (
     centre_region,
     far_region,
     hypotheses_for_every_valence,
-    region as window_region,
     ring_of,
     window,
+)
+from symdecomp.analysis.support_window import (
+    region as window_region,
 )
 from symdecomp.claims.notation import eq, gt
 from symdecomp.claims.notation import n as N
@@ -227,6 +229,7 @@ def _regular_counts(scheme: Scheme) -> CheckResult:
     "of $P$.",
 )
 def _boundary_influence(scheme: Scheme) -> CheckResult:
+    # long: the exact refinement (the proof below FIRST_VALENCE) and the argument for every n give one verdict.
     if (result := _not_a_mesh_scheme(scheme)) is not None:
         return result
     cc = scheme

@@ -224,7 +224,7 @@ def _nonzero_for_every_valence(scheme: Scheme, lo: int):
         Step("$\\chi(\\mu)=\\det(\\mu I-T)/(\\mu-1)$, the factor of the Eq. 43 matrix whose roots are the two eigenvalues other than 1", chi),
         Step("$l_O(\\mu)$: the weight of $(1,0,0)$ on the left eigenvector $l$ (cross product of columns 2, 3 of $T-\\mu I$)", l_o),
         Step("$\\operatorname{Res}_\\mu(l_O,\\chi)$: zero at a valence iff $l_O$ vanishes at a root of $\\chi$ there", res_o),
-        Step("$\\operatorname{Res}_\\mu(l\\cdot u,\\chi)$, $u$ the right eigenvector: nonzero iff both roots are simple with $l\\cdot u\\ne0$", res_u),
+        Step("$\\operatorname{Res}_\\mu(l\\cdot u,\\chi)$, $u$ the right eigenvector: nonzero iff both roots simple with $l\\cdot u\\ne0$", res_u),
     )
     # the resultant specialises to each valence where the leading coefficients and the denominators do not vanish
     parts = [sp.fraction(sp.together(e)) for e in (chi, l_o, l_u)]

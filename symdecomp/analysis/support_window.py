@@ -30,7 +30,7 @@ from symdecomp.schemes.mesh import QuadMesh
 
 __all__ = [
     "WINDOW", "NEAR", "FIRST_VALENCE", "Window", "window", "region", "far_region", "centre_region", "ring_of",
-    "centre_hoods_local", "hypotheses_for_every_valence", "CENTRE",
+    "centre_hoods_local", "hypotheses_for_every_valence", "CENTRE", "predicted_region",
 ]
 
 #: Sectors ``-WINDOW..WINDOW`` are unrolled; ``N_loc`` of the faces at a vertex of sector 0 is complete there.
@@ -127,6 +127,19 @@ def centre_region(w: Window, p_type) -> tuple[Region, int]:
     return (Region.BOUNDARY if near else Region.OUTSIDE), near
 
 
+def predicted_region(w: Window, p_label, q_label, valence: int) -> Region:
+    """The window's region of ``Q`` relative to the support of ``P`` on the valence-``n`` ring mesh, ``n >= FIRST_VALENCE``
+    (``P``, ``Q`` labels ``(s, u, v)`` of :func:`symdecomp.schemes.mesh.ring_mesh_labels`, within ``rings - 2`` rings)."""
+    if q_label == CENTRE:
+        return Region.INSIDE if p_label == CENTRE else centre_region(w, (0, *p_label[1:]))[0]
+    q_type = (0, *q_label[1:])
+    if p_label == CENTRE:
+        return region(w, CENTRE, q_type)
+    t = (p_label[0] - q_label[0]) % valence
+    t = t - valence if t > valence // 2 else t
+    return region(w, (t, *p_label[1:]), q_type) if abs(t) <= NEAR else far_region(w, (0, *p_label[1:]), q_type)
+
+
 def _region(carried) -> Region:
     return Region.INSIDE if all(carried) else Region.OUTSIDE if not any(carried) else Region.BOUNDARY
 
@@ -173,13 +186,13 @@ def hypotheses_for_every_valence(scheme) -> tuple[list[str], list]:
     try:
         for name, w in (("vertex rule, centre", v.center), ("vertex rule, each a", v.each_a), ("vertex rule, each b", v.each_b),
                         ("limit mask, centre", mask[0]), ("limit mask, each a", mask[1]), ("limit mask, each b", mask[2])):
-            shown.append((name, w))
+            shown.append((f"{name}, positive", w))
             if not positive_from(w, N, 3):
                 failures.append(f"the {name} weight {w} is not positive for every n >= 3")
-        shown.append(("det(I - E_0) (eigenvalue 1 of the Eq. 43 matrix simple)", rest))
+        shown.append(("$\\det(I-E_0)$ (so the eigenvalue 1 of the Eq. 43 matrix is simple)", rest))
         if integer_zeros(rest, N, 3) != ():
             failures.append(f"det(I - E_0) = {rest} vanishes at some n >= 3")
-        shown.append(("det(I - M(omega)) in c = cos(k pi/n)", q_one))
+        shown.append(("$\\det(I-M(\\omega))$ in $c=\\cos(k\\pi/n)$, no root in $[-1,1]$", q_one))
         free = q_one.free_symbols - {cos_jtheta}
         if free or sp.Poly(q_one, cos_jtheta).count_roots(-1, 1) > 0:
             failures.append(f"det(I - M(omega)) = {q_one} may vanish for some frequency")

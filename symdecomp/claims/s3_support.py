@@ -23,6 +23,7 @@ from symdecomp.analysis.support_window import (
     centre_region,
     far_region,
     hypotheses_for_every_valence,
+    predicted_region,
     ring_of,
     window,
 )
@@ -53,7 +54,7 @@ def _every_valence(scheme: Scheme) -> tuple[list[str], tuple[Step, ...]]:
         failures.append(f"N_loc of a face at a vertex of sector 0 reaches beyond sectors -{NEAR}..{NEAR}")
     if not centre_hoods_local(w):
         failures.append("N_loc of the centre's faces is not the rotation of one local set")
-    steps = tuple(Step(f"for every $n \\ge 3$ (rational function of $n$, exact): {what}", expr) for what, expr in shown)
+    steps = tuple(Step(f"for every $n \\ge 3$, exactly: {what}", expr) for what, expr in shown)
     steps += (Step(f"window of sectors $-3..3$: $N_{{loc}}(F)$ for the faces $F$ at the {len(w.types)} vertex types of "
                    f"sector 0 lies in sectors $-{NEAR}..{NEAR}$, so for $n \\ge {FIRST_VALENCE}$ every support test is the "
                    "window's up to relabelling", sp.Integer(len(w.types))),)
@@ -118,6 +119,9 @@ def _symmetry(scheme: Scheme) -> CheckResult:
                         f"{labels[p]}, but {labels[p]} is {rel[q, p].value} for the support of {labels[q]}",
                     )
         pairs += len(verts) ** 2
+        w = window()
+        if n >= FIRST_VALENCE and any(rel[p, q] is not predicted_region(w, labels[p], labels[q], n) for p in verts for q in verts):
+            return CheckResult(Status.ERROR, f"n = {n}: the window of sectors does not predict the support relation of the mesh")
         if n in (lo, hi):
             steps.append(
                 Step(
@@ -154,6 +158,8 @@ def _symmetry(scheme: Scheme) -> CheckResult:
         return CheckResult(Status.VERIFIED, f"{direct}; not for every n: {'; '.join(failures)}", steps=tuple(steps),
                            valences=SYMMETRY_VALENCES)
     pair_types = len(w.types) ** 2
+    steps.append(Step(f"the window's prediction equals the relation computed on the whole mesh for every pair at $n = {FIRST_VALENCE}, "
+                      f"\\dots, {hi}$ (a cross-check of the relabelling)"))
     steps.append(Step(f"$n \\ge {FIRST_VALENCE}$: the {pair_types} pairs of vertex types at sector offsets $-{NEAR}..{NEAR}$ "
                       "(window), the far pairs (they meet only through the star of the centre) and the pairs with the "
                       "centre agree both ways", sp.Integer(pair_types * (2 * NEAR + 2) + len(w.types))))

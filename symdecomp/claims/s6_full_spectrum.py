@@ -22,6 +22,7 @@ import sympy as sp
 from symdecomp.analysis.closed_forms import derived_closed_forms
 from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.claims.notation import eq
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam
@@ -34,6 +35,10 @@ CLOSED_FORMS = derived_closed_forms
 
 #: The valences of the independent per-valence certificate (a second or two; ``symdecomp check`` does more).
 VALENCES = (3, 48)
+
+
+def _nc(name: str) -> sp.Symbol:
+    return sp.Symbol(name, commutative=False)
 
 
 def _zero(expr) -> bool:
@@ -109,15 +114,23 @@ def _full_spectrum(scheme: Scheme) -> CheckResult:
             steps=tuple(steps),
             valences=(lo, hi),
         )
+    x, k = lam, sp.Symbol("k")
+    In = sp.Symbol("I", commutative=False)
+
+    def det(m):
+        return sp.Function("det")(x * In - m)
+
+    rho, L, E_0, T = sp.Symbol("rho"), _nc("L"), _nc("E_0"), _nc("T")
+    lam_p, lam_m = sp.Symbol("lambda_+"), sp.Symbol("lambda_-")
     return CheckResult(
         Status.PROVED,
         Text(
-            "for symbolic ", N, ": ", det_S, " = (lambda - rho) det(lambda I - L) (the reduction S -> S'), det(lambda I - L) = "
-            "det(lambda I - E_0) prod_{k=1..n-1} det(lambda I - M(omega^k)) (Prop. 6.3), (lambda - rho) det(lambda I - E_0) = "
-            "det(lambda I - T) of Eq. 43, whose roots are the three closed forms of Eq. 43 (identically in n), and "
-            "det(lambda I - M(omega)) = (lambda - lambda_+)(lambda - lambda_-) with the closed forms of Eq. 34 (identically in "
-            "omega): the closed forms are the spectrum with multiplicities "
-            f"for every n; independently certified per valence for n = {lo}..{hi} (symdecomp check --certify extends the range)",
+            "for symbolic ", N, ": ", eq(det_S, (x - rho) * det(L)), " (the reduction to S'), ",
+            eq(det(L), det(E_0) * sp.Product(det(sp.Function("M")(OMEGA**k)), (k, 1, N - 1))), " (Prop. 6.3), ",
+            eq((x - rho) * det(E_0), det(T)), " with T the matrix of Eq. 43, whose roots are its three closed forms "
+            "(identically in n), and ", eq(det(sp.Function("M")(OMEGA)), (x - lam_p) * (x - lam_m)), " with the closed forms "
+            "of Eq. 34 (identically in ", OMEGA, "): the closed forms are the spectrum with multiplicities for every n; "
+            f"independently certified per valence for n = {lo}..{hi} (symdecomp check --certify extends the range)",
         ),
         steps=tuple(steps),
     )

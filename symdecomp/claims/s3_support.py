@@ -6,6 +6,14 @@ only informally; the checks use the definition of :mod:`symdecomp.analysis.suppo
 inside / on the boundary / outside when all / some / none of its sectors carry ``phi_P``),
 computed from the Catmull-Clark rules on a mesh of rings around a vertex of valence ``n``
 (all other vertices regular), and re-checked by exact refinement of ``e_P``.
+
+**For every n.** Valences ``3 .. FIRST_VALENCE - 1`` are computed on the mesh. From ``FIRST_VALENCE`` on,
+:mod:`symdecomp.analysis.support_window` gives every support test as the test on one window of sectors (the
+same for every such ``n`` up to rotation and relabelling), a rule for far pairs and one for the centre's ``n``
+sectors; the hypotheses of the propagation argument are checked for every ``n`` at once as rational functions
+of ``n`` (:func:`~symdecomp.analysis.support_window.hypotheses_for_every_valence`). A mesh scheme for which
+they fail at some valence keeps the exact range (``verified``). The exact valences above ``FIRST_VALENCE - 1``
+(to 7) cross-check the window. "9 and 25 points" is about ``n = 4`` only: its exact computation is its proof.
 """
 
 from __future__ import annotations
@@ -54,6 +62,8 @@ def _every_valence(scheme: Scheme) -> tuple[list[str], tuple[Step, ...]]:
         failures.append(f"N_loc of a face at a vertex of sector 0 reaches beyond sectors -{NEAR}..{NEAR}")
     if not centre_hoods_local(w):
         failures.append("N_loc of the centre's faces is not the rotation of one local set")
+    if any(centre_region(w, t)[1] >= FIRST_VALENCE for t in w.types if ring_of(t) > 1):
+        failures.append(f"a vertex off the star is carried by {FIRST_VALENCE} or more of the centre's sectors")
     steps = tuple(Step(f"for every $n \\ge 3$, exactly: {what}", expr) for what, expr in shown)
     steps += (Step(f"window of sectors $-3..3$: $N_{{loc}}(F)$ for the faces $F$ at the {len(w.types)} vertex types of "
                    f"sector 0 lies in sectors $-{NEAR}..{NEAR}$, so for $n \\ge {FIRST_VALENCE}$ every support test is the "

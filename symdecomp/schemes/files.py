@@ -21,7 +21,17 @@ Every weight is exact: an integer or a string read by
 ``parameters = ["alpha", "beta"]``, ``pi``, ``sqrt``, ``cos``, ``sin``); nothing is evaluated.
 Offsets are integers of any size (``"-2"``, ``"3"``): a stencil wider than the valence is refused
 where the matrix is built. ``[vertex]`` may also give ``O``; it must then equal ``1 - n*a - n*b``.
-``mesh = "quad"`` (the default) is the only mesh type so far.
+``mesh = "quad"`` is the default. With ``mesh = "triangle"`` (Loop-type: the 1-ring is ``O, a_i``
+with faces ``(O, a_i, a_{i+1})``) there is no ``[face]`` section and no ``b`` weights; Loop's
+scheme is::
+
+    name = "my-loop"
+    mesh = "triangle"
+    [edge]            # new a_i = O*w + sum_k a[k]*a_{i+k}
+    O = "3/8"
+    a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }
+    [vertex]          # new O; the weight of O is 1 - n*a
+    a = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"
 
 Every problem is reported as one :class:`~symdecomp.errors.InvalidSchemeError` (or
 :class:`~symdecomp.errors.NotAffineError`) naming the file and the key:
@@ -55,7 +65,7 @@ __all__ = ["SCHEMES", "load_scheme", "scheme_from_text", "scheme_to_text"]
 SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark, "loop": loop, "loop-warren": loop_warren}
 
 #: Mesh types a file may name; ``"quad"`` is the default.
-MESHES = ("quad",)
+MESHES = ("quad", "triangle")
 
 _TOP_KEYS = {"name", "mesh", "parameters", "edge", "face", "vertex"}
 _RULE_KEYS = {"O", "a", "b"}
@@ -107,17 +117,24 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
         raise InvalidSchemeError(f"{source}: mesh {mesh!r} is not supported (known: {', '.join(MESHES)})")
     symbols = _parameters(data.get("parameters", []), source)
     rules = {}
-    for section in ("edge", "face", "vertex"):
+    sections = ("edge", "vertex") if mesh == "triangle" else ("edge", "face", "vertex")
+    if mesh == "triangle" and "face" in data:
+        raise InvalidSchemeError(f"{source}: a triangle scheme has no [face] section (its 1-ring is O and the a_i)")
+    for section in sections:
         if section not in data:
             raise InvalidSchemeError(f"{source}: missing section [{section}]")
         if not isinstance(data[section], dict):
             raise InvalidSchemeError(f"{source}: {section} must be a table [{section}]")
-        build = _vertex if section == "vertex" else _stencil
-        rules[section] = build(data[section], section, source, symbols)
-    edge, face, vertex = rules["edge"], rules["face"], rules["vertex"]
+        if mesh == "triangle" and "b" in data[section]:
+            raise InvalidSchemeError(f"{source}: [{section}] b: a triangle scheme has no b_i (no face points)")
+        if section == "vertex":
+            rules[section] = _vertex(data[section], source, symbols, triangle=mesh == "triangle")
+        else:
+            rules[section] = _stencil(data[section], section, source, symbols)
+    edge, face, vertex = rules["edge"], rules.get("face"), rules["vertex"]
     declared = tuple(s for key, s in symbols.items() if key != "n")
     try:
-        scheme = Scheme(name.strip(), edge, face, vertex, declared)
+        scheme = Scheme(name.strip(), edge, face, vertex, declared, mesh=mesh)
     except SymdecompError as exc:
         raise InvalidSchemeError(f"{source}: {exc}") from None
     undeclared = set(scheme.parameters) - set(declared)
@@ -190,13 +207,13 @@ def _stencil(table: dict, section: str, source: str, symbols) -> Stencil:
     return Stencil.from_weights(center, a, b, name=f"{section} rule")
 
 
-def _vertex(table: dict, section: str, source: str, symbols) -> VertexRule:
+def _vertex(table: dict, source: str, symbols, *, triangle: bool = False) -> VertexRule:
     _check_keys(table, _RULE_KEYS, "vertex", source)
-    for key in ("a", "b"):
+    for key in ("a",) if triangle else ("a", "b"):
         if key not in table:
             raise InvalidSchemeError(f"{source}: [vertex] {key} is missing (the weight of each {key}_i in the new O)")
     a = _weight(table["a"], "[vertex] a", source, symbols)
-    b = _weight(table["b"], "[vertex] b", source, symbols)
+    b = sp.Integer(0) if triangle else _weight(table["b"], "[vertex] b", source, symbols)
     rule = VertexRule.affine(a, b)
     if "O" in table:
         center = _weight(table["O"], "[vertex] O", source, symbols)
@@ -221,10 +238,13 @@ def scheme_to_text(scheme: Scheme) -> str:
         return "{ " + ", ".join(f'"{k}" = "{_text(w)}"' for k, w in pairs) + " }"
 
     lines = [f'name = "{scheme.name}"']
+    if scheme.mesh != "quad":
+        lines.append(f'mesh = "{scheme.mesh}"')
     if scheme.parameters:
         lines.append("parameters = [" + ", ".join(f'"{p}"' for p in scheme.parameters) + "]")
-    for section, rule in (("edge", scheme.edge_rule), ("face", scheme.face_rule)):
-        lines += [f"[{section}]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", f"b = {offsets(rule.b)}"]
+    triangle = scheme.mesh == "triangle"
+    for section, rule in (("edge", scheme.edge_rule),) if triangle else (("edge", scheme.edge_rule), ("face", scheme.face_rule)):
+        lines += [f"[{section}]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}"] + ([] if triangle else [f"b = {offsets(rule.b)}"])
     v = scheme.vertex_rule
-    lines += ["[vertex]", f'a = "{_text(v.each_a)}"', f'b = "{_text(v.each_b)}"']
+    lines += ["[vertex]", f'a = "{_text(v.each_a)}"'] + ([] if triangle else [f'b = "{_text(v.each_b)}"'])
     return "\n".join(lines) + "\n"

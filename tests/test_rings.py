@@ -48,8 +48,12 @@ def test_loop_and_warren_weights():
     assert loop_warren().vertex_rule.each_a.subs(N, 3) == sp.Rational(3, 16)
     assert loop_warren().vertex_rule.each_a.subs(N, 10) == sp.Rational(3, 80)
     depends_on_n = triangle_scheme("bad", sp.Rational(1, 8), edge_end=sp.Rational(3, 8) + 1 / N, edge_side=sp.Rational(1, 8) - 1 / N)
+    # its 1-ring matrix is assembled from the stencils; the 2-ring needs rules of the mesh, the block form rules free of n
+    assert ring_subdivision_matrix(depends_on_n, 5, 1).exact_matrix() == subdivision_matrix(depends_on_n, 5)
     with pytest.raises(InvalidSchemeError, match="depends on the valence"):
-        ring_subdivision_matrix(depends_on_n, 5, 1)
+        ring_subdivision_matrix(depends_on_n, 5, 2)
+    with pytest.raises(InvalidSchemeError, match="depends on the valence n, so its circulant blocks change with n"):
+        ring_blocks(depends_on_n, 1)
     lopsided = triangle_scheme("lopsided", sp.Rational(1, 8), edge_end=sp.Rational(1, 2), edge_side=0)
     assert ring_subdivision_matrix(lopsided, 5, 2).size == 16
 

@@ -34,6 +34,7 @@ __all__ = [
     "add_scheme_option",
     "add_rings_option",
     "general_path",
+    "closed_form_obstacle",
     "given",
     "refuse_together",
     "progress",
@@ -211,6 +212,22 @@ def add_rings_option(parser: argparse.ArgumentParser) -> None:
 def general_path(args) -> bool:
     """Whether a command takes the any-scheme route (triangle meshes or ``--rings`` > 1)."""
     return args.scheme.mesh != "quad" or getattr(args, "rings", 1) != 1
+
+
+def closed_form_obstacle(scheme: Scheme) -> str | None:
+    """Why the paper's closed forms in ``c = cos(j pi/n)`` (Section 5) do not apply to ``scheme`` (``None`` when they do).
+
+    They need a quad scheme with mirror-symmetric rules, so that ``M_j`` depends on ``c`` alone.
+    """
+    from symdecomp.analysis.tangent import tangent_eigenvalues
+    from symdecomp.symbols import sin_jtheta
+
+    if scheme.mesh != "quad":
+        return f"they are derived for quad meshes, not {scheme.mesh} meshes"
+    ev = tangent_eigenvalues(scheme)
+    if ev.trace.has(sin_jtheta) or ev.determinant.has(sin_jtheta):
+        return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"
+    return None
 
 
 def progress(iterable, total: int, label: str, *, enabled: bool = True):

@@ -21,7 +21,22 @@ Every weight is exact: an integer or a string read by
 ``parameters = ["alpha", "beta"]``, ``pi``, ``sqrt``, ``cos``, ``sin``); nothing is evaluated.
 Offsets are integers of any size (``"-2"``, ``"3"``): a stencil wider than the valence is refused
 where the matrix is built. ``[vertex]`` may also give ``O``; it must then equal ``1 - n*a - n*b``.
-``mesh = "quad"`` (the default) is the only mesh type so far.
+
+``mesh = "quad"`` is the default. A scheme on triangle meshes (Loop's shape, see
+:mod:`symdecomp.schemes.loop`) says ``mesh = "triangle"``; its 1-ring is ``(O, a_0..a_{n-1})``
+with faces ``(O, a_i, a_{i+1})``, so there is no ``[face]`` section and no ``b`` weights, and
+the vertex rule is one weight ``beta`` on each neighbour (``O`` gets ``1 - n*beta``). Loop::
+
+    name = "loop"
+    mesh = "triangle"
+    [edge]            # new a_i = O*w + sum_k a[k]*a_{i+k}
+    O = "3/8"
+    a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }
+    [vertex]          # new O = (1 - n*beta)*O + beta*sum_i a_i
+    beta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"
+
+A cosine of a rational multiple of ``pi`` stays exact (an algebraic number; the spectra and
+certificates compute with it in a cyclotomic field).
 
 Every problem is reported as one :class:`~symdecomp.errors.InvalidSchemeError` (or
 :class:`~symdecomp.errors.NotAffineError`) naming the file and the key:
@@ -55,7 +70,7 @@ __all__ = ["SCHEMES", "load_scheme", "scheme_from_text", "scheme_to_text"]
 SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark, "loop": loop, "loop-warren": loop_warren}
 
 #: Mesh types a file may name; ``"quad"`` is the default.
-MESHES = ("quad",)
+MESHES = ("quad", "triangle")
 
 _TOP_KEYS = {"name", "mesh", "parameters", "edge", "face", "vertex"}
 _RULE_KEYS = {"O", "a", "b"}
@@ -106,18 +121,23 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
     if mesh not in MESHES:
         raise InvalidSchemeError(f"{source}: mesh {mesh!r} is not supported (known: {', '.join(MESHES)})")
     symbols = _parameters(data.get("parameters", []), source)
+    triangle = mesh == "triangle"
+    if triangle and "face" in data:
+        raise InvalidSchemeError(f"{source}: [face]: a triangle mesh has no face rule (its 1-ring has no face neighbours b_i)")
     rules = {}
-    for section in ("edge", "face", "vertex"):
+    for section in ("edge", "vertex") if triangle else ("edge", "face", "vertex"):
         if section not in data:
             raise InvalidSchemeError(f"{source}: missing section [{section}]")
         if not isinstance(data[section], dict):
             raise InvalidSchemeError(f"{source}: {section} must be a table [{section}]")
-        build = _vertex if section == "vertex" else _stencil
-        rules[section] = build(data[section], section, source, symbols)
-    edge, face, vertex = rules["edge"], rules["face"], rules["vertex"]
+        if section == "vertex":
+            rules[section] = (_triangle_vertex if triangle else _vertex)(data[section], source, symbols)
+        else:
+            rules[section] = _stencil(data[section], section, source, symbols, keys={"O", "a"} if triangle else _RULE_KEYS)
+    edge, face, vertex = rules["edge"], rules.get("face"), rules["vertex"]
     declared = tuple(s for key, s in symbols.items() if key != "n")
     try:
-        scheme = Scheme(name.strip(), edge, face, vertex, declared)
+        scheme = Scheme(name.strip(), edge, face, vertex, declared, mesh)
     except SymdecompError as exc:
         raise InvalidSchemeError(f"{source}: {exc}") from None
     undeclared = set(scheme.parameters) - set(declared)
@@ -179,8 +199,10 @@ def _check_keys(table: dict, allowed: set, section: str, source: str) -> None:
         raise InvalidSchemeError(f"{source}: [{section}] unknown key {unknown[0]!r} (known: {', '.join(sorted(allowed))})")
 
 
-def _stencil(table: dict, section: str, source: str, symbols) -> Stencil:
-    _check_keys(table, _RULE_KEYS, section, source)
+def _stencil(table: dict, section: str, source: str, symbols, *, keys=_RULE_KEYS) -> Stencil:
+    if "b" in table and "b" not in keys:
+        raise InvalidSchemeError(f"{source}: [{section}] b: a triangle mesh has no face neighbours b_i; give only O and a")
+    _check_keys(table, keys, section, source)
     center = _weight(table.get("O", 0), f"[{section}] O", source, symbols)
     a = _offsets(table.get("a", {}), f"[{section}] a", source, symbols)
     b = _offsets(table.get("b", {}), f"[{section}] b", source, symbols)
@@ -190,7 +212,23 @@ def _stencil(table: dict, section: str, source: str, symbols) -> Stencil:
     return Stencil.from_weights(center, a, b, name=f"{section} rule")
 
 
-def _vertex(table: dict, section: str, source: str, symbols) -> VertexRule:
+def _triangle_vertex(table: dict, source: str, symbols) -> VertexRule:
+    if "a" in table or "b" in table:
+        key = "a" if "a" in table else "b"
+        raise InvalidSchemeError(f"{source}: [vertex] {key}: on a triangle mesh the vertex rule is one weight, beta, on each neighbour")
+    _check_keys(table, {"O", "beta"}, "vertex", source)
+    if "beta" not in table:
+        raise InvalidSchemeError(f"{source}: [vertex] beta is missing (the weight of each neighbour a_i in the new O)")
+    beta = _weight(table["beta"], "[vertex] beta", source, symbols)
+    rule = VertexRule.affine(beta, 0)
+    if "O" in table:
+        center = _weight(table["O"], "[vertex] O", source, symbols)
+        if sp.simplify(center - rule.center) != 0:
+            raise NotAffineError(f"{source}: [vertex] is not affine: O = {center}, but 1 - n*beta = {rule.center}")
+    return rule
+
+
+def _vertex(table: dict, source: str, symbols) -> VertexRule:
     _check_keys(table, _RULE_KEYS, "vertex", source)
     for key in ("a", "b"):
         if key not in table:
@@ -221,10 +259,16 @@ def scheme_to_text(scheme: Scheme) -> str:
         return "{ " + ", ".join(f'"{k}" = "{_text(w)}"' for k, w in pairs) + " }"
 
     lines = [f'name = "{scheme.name}"']
+    if scheme.mesh != "quad":
+        lines.append(f'mesh = "{scheme.mesh}"')
     if scheme.parameters:
         lines.append("parameters = [" + ", ".join(f'"{p}"' for p in scheme.parameters) + "]")
+    v = scheme.vertex_rule
+    if scheme.mesh == "triangle":
+        rule = scheme.edge_rule
+        lines += ["[edge]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", "[vertex]", f'beta = "{_text(v.each_a)}"']
+        return "\n".join(lines) + "\n"
     for section, rule in (("edge", scheme.edge_rule), ("face", scheme.face_rule)):
         lines += [f"[{section}]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", f"b = {offsets(rule.b)}"]
-    v = scheme.vertex_rule
     lines += ["[vertex]", f'a = "{_text(v.each_a)}"', f'b = "{_text(v.each_b)}"']
     return "\n".join(lines) + "\n"

@@ -45,8 +45,8 @@ __all__ = [
 LIMITS = {
     "digits": (MAX_DIGITS, "more digits than anyone reads; each one costs evaluation time"),
     "dps": (MAX_DPS, "an eigenvalue solve at this precision takes hours"),
-    "spectrum": (2000, "the time grows with N: N = 1000 takes about half a minute"),
-    "masks": (1000, "the exact left eigenvectors grow with N: N = 300 takes about 10 s"),
+    "spectrum": (2000, "the time grows with N (one evaluation per frequency): N = 1000 takes about a second"),
+    "masks": (1000, "2N + 1 weights per mask, each a certified ball: N = 1000 takes about a second"),
     "charpoly": (300, "the exact characteristic polynomial of the (2N+1)x(2N+1) matrix grows like N^3"),
     "tune": (1000, "the exact solve grows with N: N = 300 takes about 10 s"),
     "tune --table": (200, "one exact evaluation per valence: N = 60 takes about 10 s"),

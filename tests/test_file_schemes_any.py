@@ -9,8 +9,8 @@ import json
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.frequency import per_frequency_matrix_at
 from symdecomp.algebra.circulant import root_of_unity
+from symdecomp.analysis.frequency import per_frequency_matrix_at
 from symdecomp.cli import main
 from symdecomp.errors import SymdecompError
 from symdecomp.schemes.files import scheme_from_text, scheme_to_text

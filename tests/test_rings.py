@@ -227,3 +227,32 @@ def test_cyclotomic_values_are_exact():
     assert cyclotomic_value(sp.cos(2 * sp.pi / m) ** 2 + sp.sin(2 * sp.pi / m) ** 2, {m: 9}).poly == 1
     with pytest.raises(ValueError):
         cyclotomic_value(sp.sqrt(2))
+
+
+@pytest.mark.parametrize("scheme, rings, valences", [(catmull_clark(), 1, range(3, 11)), (loop(), 1, range(3, 11)), (loop(), 2, range(3, 7))])
+def test_structural_certificate_certifies_the_dense_multiplicities(scheme, rings, valences):
+    for n in valences:
+        fast = certify_ring(scheme, n, rings, method="structure")
+        dense = certify_ring(scheme, n, rings)
+        assert fast.multiplicities_certified and dense.multiplicities_certified, fast.message
+        assert fast.multiplicities == dense.multiplicities and fast.distinct == dense.distinct
+
+
+def test_cluster_multiplicities_refuse_what_they_cannot_prove():
+    """Merging two clusters, or listing one twice, is caught (exactly: unequal roots; in Arb: overlap)."""
+    import dataclasses
+
+    from symdecomp.verify.ring_certify import cluster_multiplicities
+
+    def merge_two(spectrum):
+        a, b, *rest = spectrum.eigenvalues[1:]
+        merged = dataclasses.replace(a, members=a.members + b.members, multiplicity=a.multiplicity + b.multiplicity)
+        return dataclasses.replace(spectrum, eigenvalues=(spectrum.eigenvalues[0], merged, *rest))
+
+    for scheme, n, why in ((loop(), 7, "not all equal"), (catmull_clark(), 5, "not decidable exactly")):
+        spectrum = ring_spectrum(scheme, n, 1, exact=False, jordan=False)
+        blocks = ring_blocks(scheme, 1)
+        assert cluster_multiplicities(scheme, blocks, spectrum) is None
+        assert why in cluster_multiplicities(scheme, blocks, merge_two(spectrum))
+        twice = dataclasses.replace(spectrum, eigenvalues=spectrum.eigenvalues + spectrum.eigenvalues[-1:])
+        assert "overlap" in cluster_multiplicities(scheme, blocks, twice)

@@ -213,3 +213,20 @@ def test_a_wide_quad_file_runs_through_every_command(tmp_path, capsys, text):
         assert code == 2 and "not mirror-symmetric" in err and len(err.strip().splitlines()) == 1
     else:
         assert code == 0
+
+
+@pytest.mark.parametrize("argv, why", [
+    (("claims",), "statements about quad meshes"),
+    (("derive", "--out", "OUT"), "statements about quad meshes"),
+    (("tune", "5"), "derived for quad meshes, not triangle meshes"),
+    (("oracle", "--n", "5"), None),
+])
+def test_commands_about_quad_meshes_say_why_in_one_line(tmp_path, capsys, argv, why):
+    path = tmp_path / "my-loop.toml"
+    path.write_text(LOOP_TOML)
+    argv = [str(tmp_path / "out") if a == "OUT" else a for a in argv]
+    code, _, err = _run(capsys, *argv, "--scheme", str(path))
+    if why is None:  # a file with Loop's rules is Loop for OpenSubdiv: it runs (or says the bridge is missing)
+        assert code in (0, 3), err
+        return
+    assert code == 2 and len(err.strip().splitlines()) == 1 and why in err

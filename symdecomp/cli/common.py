@@ -35,6 +35,7 @@ __all__ = [
     "add_rings_option",
     "general_path",
     "closed_form_obstacle",
+    "refuse_non_quad",
     "given",
     "refuse_together",
     "progress",
@@ -212,6 +213,15 @@ def add_rings_option(parser: argparse.ArgumentParser) -> None:
 def general_path(args) -> bool:
     """Whether a command takes the any-scheme route (triangle meshes or ``--rings`` > 1)."""
     return args.scheme.mesh != "quad" or getattr(args, "rings", 1) != 1
+
+
+def refuse_non_quad(scheme: Scheme, command: str) -> None:
+    """One line for a command about the paper's claims given a scheme on triangle meshes."""
+    if scheme.mesh != "quad":
+        raise InvalidInputError(
+            f"--scheme {scheme.name}: {command} works on the paper's claims, statements about quad meshes; a {scheme.mesh}-mesh "
+            "scheme is analysed by spectrum, check, charpoly, masks and oracle"
+        )
 
 
 def closed_form_obstacle(scheme: Scheme) -> str | None:

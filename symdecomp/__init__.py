@@ -11,7 +11,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
                    exact/interval evaluation of expressions (``compile``), small exact
-                   eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``)
+                   eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
+                   polynomials over a triangle in Bezier form (``triangle_bezier``)
 ``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes;
                    Loop, ``loop``) and the one assembly of its
                    subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
@@ -21,7 +22,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
                    its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
                    (``files``; Loop, ``loop``),
-                   Stam's (2N+8)-point patch matrix (``patch``)
+                   Stam's (2N+8)-point patch matrix (``patch``), the regular Loop patch
+                   (quartic box spline) in Bezier form (``box_spline``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
@@ -29,7 +31,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
                    ``reduction``), Jordan blocks (``defective``), supports (Section 3,
                    ``support``), rings iterated step by step (``evolution``), the 2-ring
-                   matrix by frequency and the characteristic map's nets (``characteristic``),
+                   matrix by frequency and the characteristic map's nets, quads and
+                   triangles (``characteristic``, its regular rows from ``ring_blocks``),
                    where a 1-ring component starts on one eigenvector of M_j (Eq. 35-38,
                    ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form

@@ -72,6 +72,7 @@ def test_a_loop_file_is_loop_and_reads_back():
     from symdecomp.schemes.loop import loop
 
     scheme = scheme_from_text(LOOP_TOML)
+    assert scheme_from_text(LOOP_TOML.replace("beta = ", "a = ")) == scheme  # the quad files' key, accepted too
     assert scheme.mesh == "triangle" and scheme.face_rule is None
     assert scheme.vertex_rule.each_a == loop().vertex_rule.each_a
     assert scheme.edge_rule == loop().edge_rule
@@ -130,7 +131,8 @@ def test_a_triangle_file_whose_edge_rule_is_not_a_mesh_rule_works_on_its_1_ring(
     [
         (("[vertex]", '[face]\nO = "1/2"\n[vertex]'), r"\[face\]: a triangle mesh has no face rule"),
         (('"1" = "1/8" }', '"1" = "1/8" }\nb = { "0" = "0" }'), r"\[edge\] b: a triangle mesh has no face neighbours"),
-        (("beta = ", "a = "), r"\[vertex\] a: on a triangle mesh the vertex rule is one weight, beta"),
+        (("beta = ", 'a = "1/8"\nbeta = '), r"\[vertex\] a and beta are the same weight"),
+        (("beta = ", 'b = "0"\nbeta = '), r"\[vertex\] b: on a triangle mesh the vertex rule is one weight, beta"),
         (('beta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"', 'O = "1/2"'), r"\[vertex\] beta is missing"),
         (('beta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"', "beta = 0.1"), r"\[vertex\] beta: 0.1 is a float"),
         (('beta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"', 'beta = "3/(8*n)"\nO = "1/2"'), r"\[vertex\] is not affine: O = 1/2"),

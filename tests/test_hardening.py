@@ -8,6 +8,7 @@ import sys
 import time
 from pathlib import Path
 
+import flint
 import numpy as np
 import pytest
 import sympy as sp
@@ -113,6 +114,18 @@ def test_planar_pairs_sum_to_the_pair_polygon_at_every_j_exactly(polygon):
 def test_memory_hungry_steps_are_refused_with_an_estimate():
     with pytest.raises(ResourceLimitError, match="would need about .* of memory"):
         characteristic_polynomial(catmull_clark(), 20000)
+
+
+def test_the_k_ring_characteristic_polynomial_checks_memory_too(monkeypatch):
+    from symdecomp import validate
+    from symdecomp.schemes.full_matrix import entries_characteristic_polynomial
+
+    entries = {(i, i): flint.fmpq(1, i + 2) for i in range(40)}
+    chi = entries_characteristic_polynomial(entries, 40)  # diagonal: the product of (x - 1/(i + 2))
+    assert all(chi(flint.fmpq(1, i + 2)) == 0 for i in range(40)) and chi.degree() == 40
+    monkeypatch.setattr(validate, "MEMORY_LIMIT", 1000)
+    with pytest.raises(ResourceLimitError, match="of a 40 x 40 matrix would need about"):
+        entries_characteristic_polynomial(entries, 40)
 
 
 def test_pool_is_never_larger_than_the_work_or_the_cpus():

@@ -2,12 +2,13 @@
 
 Reif's test (Reif 1995; Peters and Reif, *Subdivision Surfaces*, Springer 2008, Chapters 4-5)
 looks at the *characteristic map*: the spline ring that the two real subdominant eigenvectors
-generate. For a scheme of Catmull-Clark type (the rules of a
-:class:`~symdecomp.schemes.scheme.Scheme` around the extraordinary vertex ``O``, the bicubic
-B-spline rules of Catmull-Clark everywhere else) the ring is made of bicubic patches, and which
-control points they need is read off the quad grid of one sector.
+generate. It applies where the regular part of the scheme is a known spline: the rules of a
+:class:`~symdecomp.schemes.scheme.Scheme` act on the 1-ring of the extraordinary vertex ``O``
+and every other point is refined by the regular rules, which must be Catmull-Clark's (quad
+meshes: bicubic B-spline patches) or Loop's (triangle meshes: quartic box-spline patches);
+:func:`check_applicable` says in one line why the test does not apply otherwise.
 
-**Which control points, and why.** Label the vertices of sector ``s`` by ``(s, u, v)`` as in
+**Which control points, and why (quads).** Label the vertices of sector ``s`` by ``(s, u, v)`` as in
 :func:`~symdecomp.schemes.mesh.ring_mesh` (``u`` steps along edge ray ``s``, ``v`` along ray
 ``s + 1``). After one refinement the *ring* of sector ``s`` is the L-shaped region
 ``[0, 2]^2 \\ [0, 1)^2`` of level-1 parameters, the union of the three level-1 faces with lower
@@ -23,14 +24,25 @@ eigenvectors are those of the ``(6n + 1) x (6n + 1)`` 2-ring subdivision matrix.
 same three sub-patches Stam's exact evaluation uses at each level (Stam 1998; Peters and Reif
 2008, Section 6.1, for the Catmull-Clark ring).
 
-**By frequency.** The 2-ring matrix is block-circulant (the rules do not depend on the
-sector). For a frequency ``j`` a vector with sector values ``omega^s c`` (``omega = e^{2 pi i j / n}``,
-``c`` the six values of sector 0 at ``(1,0), (1,1), (1,2), (2,0), (2,1), (2,2)``) maps to one
-with sector values ``omega^s B_j c``. ``B_j`` is ``6 x 6`` and block lower triangular: its upper
-left ``2 x 2`` block is the 1-ring matrix ``M_j`` (the new ``a_i``, ``b_i`` depend only on the old
-1-ring), the lower right ``4 x 4`` block ``S_j`` belongs to the outer points, which the regular
-rules move. The stencils are read once, exactly, from :func:`~symdecomp.schemes.mesh.refine`
-applied to unit vectors.
+**Triangles (Loop).** Sector ``s`` is the wedge between edge rays ``s`` and ``s + 1``
+(:func:`~symdecomp.schemes.trimesh.triangle_ring_labels`); its ring at level 1 is the
+triangle ``u, v >= 0, u + v <= 2`` minus the corner ``u + v < 1``: the three level-1 triangles
+:data:`TRIANGLES` ``(1,0),(2,0),(1,1)``, ``(1,0),(1,1),(0,1)`` and ``(0,1),(1,1),(0,2)``. Their three
+corners are regular (valence 6), so each is a regular quartic box-spline patch whose 12 control
+points are the corners' 1-rings (:func:`triangle_patch_points`); those lie in the level-1
+3-ring, which one refinement computes from the level-0 2-ring (``3n + 1`` points). These are the
+sub-patches of Stam's evaluation of Loop surfaces (Stam 1998, *Evaluation of Loop subdivision
+surfaces*).
+
+**By frequency.** The ring matrix is block-circulant (the rules do not depend on the sector):
+a vector with sector values ``omega^s c`` (``omega = e^{2 pi i j / n}``, ``c`` the values of
+sector 0 on the 2-ring classes) maps to one with sector values ``omega^s B_j c``. ``B_j`` is
+block lower triangular: its upper left block is the 1-ring matrix ``M_j`` (``2 x 2`` on
+quads, ``1 x 1`` on triangles: the new 1-ring depends only on the old one), the lower right
+block ``S_j`` belongs to the outer points, which the regular rules move. The regular rows are
+the scheme-independent block form of :func:`~symdecomp.analysis.ring_blocks.ring_blocks` (the
+3-ring matrix of the reference scheme, whose level-1 ring-3 rows read only the level-0
+2-ring); the 1-ring rows are the scheme's own rules at valence ``n``.
 
 The eigen-data are Arb balls (python-flint), so every number here is a rigorous enclosure.
 """
@@ -44,8 +56,9 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
+from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.mesh import mesh_rules, refine, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import Scheme, catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
@@ -54,8 +67,9 @@ __all__ = [
     "RING2_LABELS",
     "LEVEL1_LABELS",
     "SUBPATCH_FACES",
-    "RingStencils",
-    "ring_stencils",
+    "TRIANGLES",
+    "RingLayout",
+    "ring_layout",
     "check_applicable",
     "frequency_block",
     "omega_ball",
@@ -63,20 +77,21 @@ __all__ = [
     "frequency_eigenvector",
     "subpatch_nets",
     "inner_boundary_nets",
+    "triangle_patch_points",
 ]
 
-#: The six per-sector points of the 2-ring, in the order of ``c`` (canonical labels ``u >= 1``).
+#: The six per-sector points of the quad 2-ring, in the order of ``c`` (canonical labels ``u >= 1``).
 RING2_LABELS = ((1, 0), (1, 1), (1, 2), (2, 0), (2, 1), (2, 2))
-#: The twelve per-sector points of the 3-ring at level 1: the 2-ring first, then ring 3.
+#: The twelve per-sector points of the quad 3-ring at level 1: the 2-ring first, then ring 3.
 LEVEL1_LABELS = RING2_LABELS + ((1, 3), (2, 3), (3, 0), (3, 1), (3, 2), (3, 3))
-#: Lower corners of the three level-1 faces of sector 0 that make up the characteristic ring.
+#: Lower corners of the three level-1 faces of sector 0 that make up the quad characteristic ring.
 SUBPATCH_FACES = ((1, 0), (1, 1), (0, 1))
-
-_PROBE_VALENCE = 7  # stencils reach one sector either side; 7 sectors keep the offsets apart
+#: The three level-1 triangles of sector 0 that make up Loop's characteristic ring, counter-clockwise.
+TRIANGLES = (((1, 0), (2, 0), (1, 1)), ((1, 0), (1, 1), (0, 1)), ((0, 1), (1, 1), (0, 2)))
 
 
 def canonical(s: int, u: int, v: int) -> tuple[int, int, int] | None:
-    """The label ``(sector, u, v)`` with ``u >= 1`` of a grid point of sector ``s`` (``None``: ``O``).
+    """The label ``(sector, u, v)`` with ``u >= 1`` of a quad grid point of sector ``s`` (``None``: ``O``).
 
     Points just outside the sector (``u = -1`` or ``v = -1``) are named in the neighbouring
     sector: ``(s, u, -1) = (s - 1, 1, u)`` and ``(s, -1, v) = (s + 1, v, 1)``.
@@ -92,73 +107,96 @@ def canonical(s: int, u: int, v: int) -> tuple[int, int, int] | None:
     return s, u, v
 
 
-@dataclass(frozen=True)
-class RingStencils:
-    """Rows of the refinement from the level-0 2-ring to the level-1 3-ring, for sector 0.
+def canonical_triangle(s: int, u: int, v: int) -> tuple[int, int, int] | None:
+    """The label ``(sector, u, v)`` with ``u >= 1`` of a triangle-lattice point near sector ``s`` (``None``: ``O``).
 
-    ``rows[label] = (weight on O, {(sector offset d, index m into RING2_LABELS): weight})`` for
-    the labels of :data:`LEVEL1_LABELS` other than the 1-ring ones, which come from the scheme.
+    Sector ``s`` spans the lattice directions ``(1, 0)`` (ray ``s``) and ``(0, 1)`` (ray ``s + 1``);
+    its neighbours are the wedges of ``(1, -1), (1, 0)`` (sector ``s - 1``: a point ``(u, v)``, ``v < 0``,
+    is ``(s - 1, -v, u + v)`` there) and of ``(0, 1), (-1, 1)`` (sector ``s + 1``: ``(s + 1, u + v, -u)``).
     """
+    if v < 0:
+        s, u, v = s - 1, -v, u + v
+    elif u < 0:
+        s, u, v = s + 1, u + v, -u
+    if u < 0 or v < 0:
+        raise InvalidSchemeError(f"lattice point ({u}, {v}) lies beyond the neighbouring sectors")
+    if u == 0 and v == 0:
+        return None
+    if u == 0:
+        s, u, v = s + 1, v, 0
+    return s, u, v
 
-    rows: dict
+
+def triangle_patch_points(corners) -> tuple[tuple[int, int], ...]:
+    """The 12 lattice points of a regular Loop patch: the union of its three corners' 1-rings, sorted."""
+    steps = ((1, 0), (-1, 0), (0, 1), (0, -1), (1, -1), (-1, 1))
+    points = {(u + du, v + dv) for u, v in corners for du, dv in steps} | set(corners)
+    return tuple(sorted(points))
 
 
-@lru_cache(maxsize=1)
-def ring_stencils() -> RingStencils:
-    """The bicubic B-spline (Catmull-Clark) rows, read exactly off one refinement of unit vectors."""
-    n0, rings = _PROBE_VALENCE, 2
-    labels = ring_mesh_labels(n0, rings)
-    ident = {lab: i for i, lab in enumerate(labels)}
-    size = len(labels)
-    mesh = ring_mesh(n0, rings, lambda s, u, v: tuple(Fraction(int(ident[(s, u, v)] == k)) for k in range(size)))
-    step = refine(mesh, mesh_rules(catmull_clark()))
+def _q(x) -> flint.fmpq:
+    x = sp.Rational(x)
+    return flint.fmpq(int(x.p), int(x.q))
 
-    def old_id(s, u, v):
-        lab = canonical(s % n0, u, v)
-        return 0 if lab is None else ident[(lab[0] % n0, lab[1], lab[2])]
 
-    rows = {}
-    for u, v in LEVEL1_LABELS[2:]:
-        if u % 2 == 0 and v % 2 == 0:
-            new = step.vertex_point[old_id(0, u // 2, v // 2)]
-        elif u % 2 == 1 and v % 2 == 1:
-            a, b = (u - 1) // 2, (v - 1) // 2
-            new = step.face_point[a * rings + b]  # faces of sector 0 come first, (u, v) row-major
-        elif u % 2 == 1:
-            new = step.edge_point[frozenset((old_id(0, (u - 1) // 2, v // 2), old_id(0, (u + 1) // 2, v // 2)))]
-        else:
-            new = step.edge_point[frozenset((old_id(0, u // 2, (v - 1) // 2), old_id(0, u // 2, (v + 1) // 2)))]
-        value = step.mesh.values[new]
-        center, weights = value[0], {}
-        for k in range(1, size):
-            if value[k]:
-                s, uu, vv = labels[k]
-                d = s if s <= n0 // 2 else s - n0
-                weights[(d, RING2_LABELS.index((uu, vv)))] = value[k]
-        rows[(u, v)] = (center, weights)
-    return RingStencils(rows)
+@dataclass(frozen=True)
+class RingLayout:
+    """The regular part of the ring on one mesh type: its spline, classes and block rows."""
+
+    mesh: str
+    #: The reference scheme whose regular rules the scheme must have, and their spline.
+    reference: str
+    spline: str
+    #: Per-sector classes of the level-1 3-ring (2-ring classes first, 1-ring classes first of all).
+    labels: tuple[tuple[int, int], ...]
+    #: Number of 1-ring and 2-ring classes.
+    one_ring: int
+    two_ring: int
+    #: ``offsets[p][q] = ((l, weight), ...)`` (``q`` below ``two_ring``): block ``C_pq`` of the level-1 3-ring rows.
+    offsets: tuple
+
+
+@lru_cache(maxsize=2)
+def ring_layout(mesh: str) -> RingLayout:
+    """The layout of ``mesh``'s ring (``'quad'``: Catmull-Clark, ``'triangle'``: Loop), read off :func:`ring_blocks`."""
+    triangle = mesh == "triangle"
+    blocks = ring_blocks(loop() if triangle else catmull_clark(), 3)
+    classes = blocks.classes
+    one = sum(1 for u, v in classes if u + v == 1 or (not triangle and max(u, v) == 1))
+    two = sum(1 for u, v in classes if (u + v if triangle else max(u, v)) <= 2)
+    offsets = []
+    for p in range(len(classes)):
+        if any(blocks.offsets[p][q] for q in range(two, len(classes))):  # pragma: no cover - a property of the rules
+            raise InvalidSchemeError(f"level-1 point {classes[p]} reads beyond the level-0 2-ring")
+        offsets.append(tuple(tuple((l, _q(c)) for l, c in blocks.offsets[p][q]) for q in range(two)))
+    spline = "quartic box-spline" if triangle else "bicubic B-spline"
+    return RingLayout(mesh, "Loop" if triangle else "Catmull-Clark", spline, classes, one, two, tuple(offsets))
 
 
 def check_applicable(scheme: Scheme) -> None:
-    """Raise :class:`~symdecomp.errors.InvalidSchemeError` (one line) if the bicubic ring does not apply.
+    """Raise :class:`~symdecomp.errors.InvalidSchemeError` (one line) if the characteristic ring is not a known spline.
 
-    The scheme's rules act on the 1-ring of ``O``; every other point is refined by the
-    bicubic B-spline rules (Catmull-Clark's at valence 4). So that this is one scheme, its edge
-    and face rules at ``n = 4`` must be Catmull-Clark's (they are the rules of the regular
-    mesh); its vertex rule is used at ``O`` only (tuned weights are a change at ``O``).
+    The scheme's rules act on the 1-ring of ``O``; every other point is refined by the regular
+    rules. So that this is one scheme, its edge (and face) rules at the regular valence (4 on
+    quads, 6 on triangles) must be those of Catmull-Clark (bicubic B-splines) or Loop (quartic
+    box-splines); its vertex rule is used at ``O`` only (tuned weights are a change at ``O``).
     """
     if scheme.parameters:
         raise InvalidSchemeError(
             f"scheme {scheme.name!r} has free parameters {', '.join(map(str, scheme.parameters))}; give them values first"
         )
+    triangle = scheme.mesh == "triangle"
+    regular, reference = (6, loop()) if triangle else (4, catmull_clark())
     try:
-        same = subdivision_matrix(scheme, 4)[1:, :] == subdivision_matrix(catmull_clark(), 4)[1:, :]
+        same = subdivision_matrix(scheme, regular)[1:, :] == subdivision_matrix(reference, regular)[1:, :]
     except InvalidSchemeError as exc:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the C1 test does not apply ({exc})") from None
     if not same:
+        layout = ring_layout(scheme.mesh)
+        rules = "edge rule" if triangle else "edge and face rules"
         raise InvalidSchemeError(
-            f"the C1 test does not apply to scheme {scheme.name!r}: its edge and face rules at valence 4 are not "
-            "Catmull-Clark's, so its regular patches are not bicubic B-splines"
+            f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} {'is' if triangle else 'are'} not "
+            f"{layout.reference}'s, so its regular patches are not {layout.spline}s (the only regular splines it knows)"
         )
 
 
@@ -177,34 +215,38 @@ def _ball(w) -> flint.acb:
     return flint.acb(flint.fmpq(int(w.p), int(w.q)))
 
 
-def one_ring_rows(scheme: Scheme, n: int) -> dict:
-    """The rows of the new ``a_0`` and ``b_0`` (scheme rules at valence ``n``) in the form of :class:`RingStencils`."""
-    rows = {}
-    for label, rule in (((1, 0), scheme.edge_rule), ((1, 1), scheme.face_rule)):
+def one_ring_rows(scheme: Scheme, n: int) -> list[dict]:
+    """The rows of the new 1-ring classes (scheme rules at valence ``n``): ``{(sector offset, class): weight}``."""
+    rules = [scheme.edge_rule] if scheme.mesh == "triangle" else [scheme.edge_rule, scheme.face_rule]
+    rows = []
+    for rule in rules:
         weights: dict = {}
         for m, pairs in ((0, rule.a), (1, rule.b)):
             for k, w in pairs:
-                key = (k, m)
-                weights[key] = weights.get(key, 0) + sp.sympify(w).subs(N, n)
-        rows[label] = (sp.sympify(rule.center).subs(N, n), weights)
+                weights[(k, m)] = weights.get((k, m), 0) + sp.sympify(w).subs(N, n)
+        rows.append(weights)
     return rows
 
 
-def frequency_block(scheme: Scheme, n: int, j: int, *, rows: int = 6) -> flint.acb_mat:
-    """``B_j`` (``rows x 6``): the first ``rows`` labels of :data:`LEVEL1_LABELS` from the 2-ring at frequency ``j``.
+def frequency_block(scheme: Scheme, n: int, j: int, *, rows: int | None = None) -> flint.acb_mat:
+    """``B_j``: the first ``rows`` level-1 classes of :func:`ring_layout` from the 2-ring at frequency ``j``.
 
-    ``rows = 6`` gives the 2-ring block (``M_j`` upper left, ``S_j`` lower right); ``rows = 12``
-    also the new ring 3, which the sub-patches need. The ``O`` column is left out: for ``j != 0``
-    ``O`` is 0 in every eigenvector.
+    ``rows = None`` gives the square 2-ring block (``M_j`` upper left, ``S_j`` lower right);
+    ``rows = len(layout.labels)`` also the new ring 3, which the sub-patches need. The ``O``
+    column is left out: for ``j != 0`` ``O`` is 0 in every eigenvector.
     """
     n = check_valence(n)
-    omega = omega_ball(n, j)
-    table = {**ring_stencils().rows, **one_ring_rows(scheme, n)}
-    B = flint.acb_mat(rows, 6)
-    for r, label in enumerate(LEVEL1_LABELS[:rows]):
-        _, weights = table[label]
+    layout = ring_layout(scheme.mesh)
+    rows = layout.two_ring if rows is None else rows
+    powers = [omega_ball(n, j * d % n) for d in range(n)]
+    B = flint.acb_mat(rows, layout.two_ring)
+    for r, weights in enumerate(one_ring_rows(scheme, n)):
         for (d, m), w in weights.items():
-            B[r, m] += _ball(w) * omega ** (d % n)
+            B[r, m] += _ball(w) * powers[d % n]
+    for r in range(layout.one_ring, rows):
+        for q, terms in enumerate(layout.offsets[r]):
+            for l, w in terms:
+                B[r, q] += w * powers[l % n]
     return B
 
 
@@ -216,8 +258,25 @@ class FrequencyEigenvector:
     j: int
     #: The eigenvalue (an Arb ball).
     eigenvalue: flint.acb
-    #: ``{(u, v): value}`` on :data:`LEVEL1_LABELS` of sector 0 (sector ``s``: times ``omega^s``).
+    #: ``{(u, v): value}`` on the layout's classes of sector 0 (sector ``s``: times ``omega^s``).
     values: dict
+    mesh: str = "quad"
+
+
+def _one_ring_null_vector(M: flint.acb_mat, lam: flint.acb, j: int) -> list:
+    """A null vector of ``M - lambda`` (``1 x 1`` or ``2 x 2``) with an entry certainly not 0."""
+    if M.nrows() == 1:
+        return [flint.acb(1)]
+    m00, m01, m10, m11 = M[0, 0], M[0, 1], M[1, 0], M[1, 1]
+    # [m01, lambda - m00] or [lambda - m11, m10]; for a simple root one of them is not 0 (m01 = 0: M_j is triangular
+    # and lambda is m00 or m11, not both), so take one with an entry that is certainly not 0, larger off-diagonal first
+    candidates = [[m01, lam - m00], [lam - m11, m10]]
+    if abs(m01).mid() < abs(m10).mid():
+        candidates.reverse()
+    usable = [v for v in candidates if v[0] != 0 or v[1] != 0]
+    if not usable:
+        raise InvalidSchemeError(f"the frequency-{j} eigenvector for {lam} could not be separated from 0")
+    return usable[0]
 
 
 def frequency_eigenvector(scheme: Scheme, n: int, j: int, eigenvalue: flint.acb) -> FrequencyEigenvector:
@@ -229,50 +288,44 @@ def frequency_eigenvector(scheme: Scheme, n: int, j: int, eigenvalue: flint.acb)
     The outer part solves ``(lambda I - S_j) c_out = (lower left block) c_1ring`` (Arb's certified
     solve); ``lambda`` must not be an eigenvalue of ``S_j``, which the spectral test has shown.
     """
-    B = frequency_block(scheme, n, j, rows=12)
+    layout = ring_layout(scheme.mesh)
+    k1, k2 = layout.one_ring, layout.two_ring
+    B = frequency_block(scheme, n, j, rows=len(layout.labels))
     lam = eigenvalue
-    m00, m01, m10, m11 = B[0, 0], B[0, 1], B[1, 0], B[1, 1]
-    # a null vector of M_j - lambda: [m01, lambda - m00] or [lambda - m11, m10]; for a simple root one of them
-    # is not 0 (m01 = 0: M_j is triangular and lambda is m00 or m11, not both), so take one with an entry that
-    # is certainly not 0, the row with the larger off-diagonal entry first
-    candidates = [[m01, lam - m00], [lam - m11, m10]]
-    if abs(m01).mid() < abs(m10).mid():
-        candidates.reverse()
-    usable = [v for v in candidates if v[0] != 0 or v[1] != 0]
-    if not usable:
-        raise InvalidSchemeError(f"the frequency-{j} eigenvector for {lam} could not be separated from 0")
-    c1 = usable[0]
-    A = flint.acb_mat(4, 4)
-    rhs = flint.acb_mat(4, 1)
-    for r in range(4):
-        for c in range(4):
-            A[r, c] = (lam if r == c else 0) - B[2 + r, 2 + c]
-        rhs[r, 0] = B[2 + r, 0] * c1[0] + B[2 + r, 1] * c1[1]
+    c1 = _one_ring_null_vector(flint.acb_mat([[B[r, c] for c in range(k1)] for r in range(k1)]), lam, j)
+    k = k2 - k1
+    A, rhs = flint.acb_mat(k, k), flint.acb_mat(k, 1)
+    for r in range(k):
+        for c in range(k):
+            A[r, c] = (lam if r == c else 0) - B[k1 + r, k1 + c]
+        rhs[r, 0] = sum((B[k1 + r, m] * c1[m] for m in range(k1)), flint.acb(0))
     out = A.solve(rhs)
-    c = c1 + [out[r, 0] for r in range(4)]
+    c = c1 + [out[r, 0] for r in range(k)]
     # normalised: 1 at a_0, so the map and its Jacobian are comparable across n; at b_0 if a_0 is 0 (an eigenvector
     # that vanishes on the a_i is still one: a complex factor only rotates and scales the map)
     scale = c[0] if c[0] != 0 else c[1]
     c = [x / scale for x in c]
-    values = {}
-    for r, label in enumerate(LEVEL1_LABELS):
-        values[label] = sum((B[r, k] * c[k] for k in range(6)), flint.acb(0))
-    return FrequencyEigenvector(n, j, lam, values)
+    values = {label: sum((B[r, m] * c[m] for m in range(k2)), flint.acb(0)) for r, label in enumerate(layout.labels)}
+    return FrequencyEigenvector(n, j, lam, values, scheme.mesh)
 
 
 def _value(vec: FrequencyEigenvector, u: int, v: int) -> flint.acb:
-    lab = canonical(0, u, v)
+    lab = (canonical_triangle if vec.mesh == "triangle" else canonical)(0, u, v)
     if lab is None:
         return flint.acb(0)
     s, uu, vv = lab
     return omega_ball(vec.n, vec.j * s % vec.n) * vec.values[(uu, vv)]
 
 
-def subpatch_nets(vec: FrequencyEigenvector) -> tuple[list[list[flint.acb]], ...]:
-    """The three ``4 x 4`` B-spline control nets (complex: ``x + i y``) of sector 0's ring.
+def subpatch_nets(vec: FrequencyEigenvector) -> tuple:
+    """Sector 0's control nets (complex: ``x + i y``).
 
-    Net ``P[i][k]`` of face ``(a, b)`` is the level-1 point ``(a - 1 + i, b - 1 + k)``.
+    Quads: three ``4 x 4`` B-spline nets, ``P[i][k]`` of face ``(a, b)`` the level-1 point
+    ``(a - 1 + i, b - 1 + k)``. Triangles: for each of :data:`TRIANGLES` the dict
+    ``{lattice point: value}`` on its 12 :func:`triangle_patch_points`.
     """
+    if vec.mesh == "triangle":
+        return tuple({p: _value(vec, *p) for p in triangle_patch_points(t)} for t in TRIANGLES)
     return tuple(
         [[_value(vec, a - 1 + i, b - 1 + k) for k in range(4)] for i in range(4)] for a, b in SUBPATCH_FACES
     )

@@ -40,6 +40,7 @@ __all__ = [
     "per_frequency_matrix",
     "per_frequency_matrix_at",
     "recursion_matrix",
+    "one_ring_matrices",
     "laurent_to_cos",
     "valences_at_roots",
 ]
@@ -119,6 +120,29 @@ def recursion_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
         rows.append([rule.center, sum((w for _, w in rule.a), sp.Integer(0)), sum((w for _, w in rule.b), sp.Integer(0))])
     matrix = sp.Matrix(rows).applyfunc(lambda e: sp.expand(e.subs(N, n)))
     return sp.ImmutableMatrix(matrix)
+
+
+@cache
+def one_ring_matrices(scheme: Scheme) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
+    """``(M(omega), E_0)``: the 1-ring blocks for ``omega != 1`` and at frequency 0, on either mesh.
+
+    On a quad mesh they are :func:`per_frequency_matrix` (``2 x 2``, on ``(a, b)``) and
+    :func:`recursion_matrix` (``3 x 3``, on ``(O, abar, bbar)``). On a triangle mesh the 1-ring
+    is ``(O, a_i)`` only: ``M(omega)`` is the ``1 x 1`` symbol of the edge rule's ``a``-weights and
+    ``E_0`` the ``2 x 2`` matrix on ``(O, abar)`` (vertex rule, edge rule on a constant polygon).
+    Both are symbolic in ``n`` (and ``omega``).
+
+    >>> from symdecomp.schemes.loop import loop
+    >>> M, E0 = one_ring_matrices(loop())
+    >>> M, E0.shape
+    (Matrix([[omega/8 + 3/8 + 1/(8*omega)]]), (2, 2))
+    """
+    if scheme.mesh != "triangle":
+        return per_frequency_matrix(scheme), recursion_matrix(scheme)
+    edge, v = scheme.edge_rule, scheme.vertex_rule
+    M = sp.ImmutableMatrix([[sp.expand(sum((w * OMEGA**k for k, w in edge.a), sp.Integer(0)))]])
+    E0 = sp.ImmutableMatrix([[v.center, N * v.each_a], [edge.center, sum((w for _, w in edge.a), sp.Integer(0))]])
+    return M, E0.applyfunc(sp.expand)
 
 
 def _laurent_terms(expr: sp.Expr) -> dict[int, sp.Expr]:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 
 from symdecomp.cli.common import Once, add_scheme_option, flag, integer, print_json, progress, valence_range
-from symdecomp.verify.c1 import METHOD, c1_test
+from symdecomp.verify.c1 import c1_test, method
 
 __all__ = ["register", "run"]
 
@@ -23,7 +23,8 @@ def register(sub) -> None:
         help="certify C1 at an extraordinary vertex (Reif's test on the characteristic map)",
         description="For each valence: Reif's spectral conditions (eigenvalue 1 simple; the subdominant "
         "eigenvalue real, double, non-defective, strictly dominant), then regularity of the characteristic "
-        "map (the Jacobian of its bicubic sub-patches in Bernstein-Bezier form, all coefficients of one sign, "
+        "map (the Jacobian of its sub-patches, bicubic for Catmull-Clark-type and quartic box-spline for "
+        "Loop-type schemes, in Bernstein-Bezier form, all coefficients of one sign, "
         "in interval arithmetic with de Casteljau subdivision) and injectivity (winding number 1 of the "
         "ring's inner boundary). Prints 'C1 certified', 'not C1' with the failing condition, or "
         "'undecided' with what would decide it. Exit status 1 unless every valence is certified C1.",
@@ -31,7 +32,8 @@ def register(sub) -> None:
     p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, required=True, metavar="A:B",
                    help="valences to test: an inclusive range A:B or a single N (at most 128)")
     p.add_argument("--depth", type=_depth, action=Once, default=6,
-                   help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a piece in four)")
+                   help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "
+                   "in four, or a triangle twice by bisection)")
     flag(p, "--json",
                    help='print a list with one object per valence: {"n", "verdict" (c1/not-c1/undecided), "reason", '
                    '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}')
@@ -47,7 +49,7 @@ def run(args) -> int:
         print_json([r.as_json() for r in results])
     else:
         print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
-        print(f"method: {METHOD}")
+        print(f"method: {method(args.scheme.mesh)}")
         for r in results:
             print(f"n = {r.n:>3}: {_LABEL[r.verdict]}: {r.reason}")
     return 0 if all(r.verdict == "c1" for r in results) else 1

@@ -25,7 +25,8 @@ where the matrix is built. ``[vertex]`` may also give ``O``; it must then equal 
 ``mesh = "quad"`` is the default. A scheme on triangle meshes (Loop's shape, see
 :mod:`symdecomp.schemes.loop`) says ``mesh = "triangle"``; its 1-ring is ``(O, a_0..a_{n-1})``
 with faces ``(O, a_i, a_{i+1})``, so there is no ``[face]`` section and no ``b`` weights, and
-the vertex rule is one weight ``beta`` on each neighbour (``O`` gets ``1 - n*beta``). Loop::
+the vertex rule is one weight ``beta`` on each neighbour (``O`` gets ``1 - n*beta``; the key
+``a`` is accepted for it too, as in quad files). Loop::
 
     name = "loop"
     mesh = "triangle"
@@ -213,13 +214,15 @@ def _stencil(table: dict, section: str, source: str, symbols, *, keys=_RULE_KEYS
 
 
 def _triangle_vertex(table: dict, source: str, symbols) -> VertexRule:
-    if "a" in table or "b" in table:
-        key = "a" if "a" in table else "b"
-        raise InvalidSchemeError(f"{source}: [vertex] {key}: on a triangle mesh the vertex rule is one weight, beta, on each neighbour")
-    _check_keys(table, {"O", "beta"}, "vertex", source)
-    if "beta" not in table:
+    if "b" in table:
+        raise InvalidSchemeError(f"{source}: [vertex] b: on a triangle mesh the vertex rule is one weight, beta, on each neighbour")
+    _check_keys(table, {"O", "a", "beta"}, "vertex", source)
+    if "a" in table and "beta" in table:
+        raise InvalidSchemeError(f"{source}: [vertex] a and beta are the same weight (beta on each neighbour a_i); give one")
+    key = "a" if "a" in table else "beta"  # ``a`` as in quad files, ``beta`` as Loop's papers name it
+    if key not in table:
         raise InvalidSchemeError(f"{source}: [vertex] beta is missing (the weight of each neighbour a_i in the new O)")
-    beta = _weight(table["beta"], "[vertex] beta", source, symbols)
+    beta = _weight(table[key], f"[vertex] {key}", source, symbols)
     rule = VertexRule.affine(beta, 0)
     if "O" in table:
         center = _weight(table["O"], "[vertex] O", source, symbols)

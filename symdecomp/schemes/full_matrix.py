@@ -191,11 +191,18 @@ def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None
     size = 2 * check_valence(n) + 1
     # a first estimate before anything is built (entries of about 2 log2(n) + 8 bits), then the real one
     check_memory(charpoly_memory(size, 2 * n.bit_length() + 8), f"the exact characteristic polynomial at n = {n}")
-    A, d = _balanced_integer_matrix(sparse_subdivision_matrix(scheme, n, parameters), size)
+    return _rational_charpoly(sparse_subdivision_matrix(scheme, n, parameters), size, f"at n = {n}")
+
+
+def _rational_charpoly(entries: dict, size: int, what: str) -> flint.fmpq_poly:
+    """The exact characteristic polynomial of a sparse rational matrix, after the memory check.
+
+    ``chi_S(lambda) = d^-size chi_A(d lambda)`` for the balanced integer matrix ``A = d T S T^-1``.
+    """
+    A, d = _balanced_integer_matrix(entries, size)
     bits = max(int(d).bit_length(), max((abs(int(A[r, c])).bit_length() for r in range(size) for c in range(size)), default=1))
-    check_memory(charpoly_memory(size, bits), f"the exact characteristic polynomial at n = {n}")
-    p = A.charpoly()
-    coeffs = p.coeffs()
+    check_memory(charpoly_memory(size, bits), f"the exact characteristic polynomial {what}")
+    coeffs = A.charpoly().coeffs()
     size = len(coeffs) - 1
     d = flint.fmpz(d)
     # coefficient of lambda^k in chi_S is c_k(A) * d^k / d^size
@@ -210,9 +217,4 @@ def entries_characteristic_polynomial(entries: dict, size: int) -> flint.fmpq_po
     certificates (:mod:`symdecomp.verify.ring_certify`).
     """
     entries = {k: v if isinstance(v, flint.fmpq) else flint.fmpq(v.numerator, v.denominator) for k, v in entries.items()}
-    A, d = _balanced_integer_matrix(entries, size)
-    p = A.charpoly()
-    coeffs = p.coeffs()
-    size = len(coeffs) - 1
-    d = flint.fmpz(d)
-    return flint.fmpq_poly([flint.fmpq(c * d**k, d**size) for k, c in enumerate(coeffs)])
+    return _rational_charpoly(entries, size, f"of a {size} x {size} matrix")

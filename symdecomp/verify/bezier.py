@@ -16,6 +16,14 @@ value, so a coefficient whose ball lies right of 0 *is* positive.
   straddles 0 the patch is split at ``1/2`` in both directions (de Casteljau), up to a
   depth; a *corner* coefficient is the polynomial's value there, so corners of opposite sign
   prove a sign change.
+* Over a triangle (Loop's quartic patches, nets in the order of
+  :func:`~symdecomp.algebra.triangle_bezier.bezier_indices`) the Jacobian of a planar map of
+  degree 4 has degree 6 (:func:`triangle_jacobian_net`, products of the degree-3 derivative
+  nets). Subdivision is *bisection*: the edge opposite a corner is cut at its midpoint, and
+  along each row of coefficients with a fixed power of that corner the univariate de Casteljau
+  step at ``1/2`` gives the two halves (the blossom at the midpoint is the average of the
+  blossoms at the edge's ends). The longest edge of a piece is cut, so pieces stay similar
+  right isosceles triangles; two bisections halve every edge, as one tensor split does.
 * The argument swept by a planar Bezier curve is the sum of ``arg(z_end / z_start)`` over pieces
   whose control points lie in an open half-plane through the origin (then the piece turns by
   less than ``pi``, and the principal argument is the true increment).
@@ -29,7 +37,12 @@ from math import comb
 
 import flint
 
+from symdecomp.algebra.triangle_bezier import bezier_derivative, bezier_indices, bezier_product
+
 __all__ = [
+    "triangle_jacobian_net",
+    "bisect_triangle",
+    "certify_sign_triangles",
     "bspline_to_bezier",
     "jacobian_net",
     "split_net",
@@ -128,6 +141,73 @@ def certify_sign(nets, max_depth: int = 6) -> SignCertificate:
         um, vm = (ur[0] + ur[1]) / 2, (vr[0] + vr[1]) / 2
         for side_u, side_v, sub in split_net(net):
             stack.append((p, sub, (ur[0], um) if side_u == 0 else (um, ur[1]), (vr[0], vm) if side_v == 0 else (vm, vr[1]), d + 1))
+    return _certificate(leaves, undecided, depth, pieces)
+
+
+def triangle_jacobian_net(x, y, degree: int = 4) -> list:
+    """The Bernstein coefficients (degree ``2 degree - 2``) of ``x_u y_v - x_v y_u`` for triangular nets ``x``, ``y``."""
+    xu, xv = bezier_derivative(x, degree, "u"), bezier_derivative(x, degree, "v")
+    yu, yv = bezier_derivative(y, degree, "u"), bezier_derivative(y, degree, "v")
+    first, second = bezier_product(xu, yv, degree - 1, degree - 1), bezier_product(xv, yu, degree - 1, degree - 1)
+    return [a - b for a, b in zip(first, second)]
+
+
+def bisect_triangle(net, degree: int, corners):
+    """The two halves of a triangular net whose domain has ``corners`` (for ``w``, ``u``, ``v``), split at its longest edge.
+
+    Returns ``[(net, corners), (net, corners)]``; a corner is a pair of floats.
+    """
+    d2 = lambda p, q: (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2  # noqa: E731
+    apex = max(range(3), key=lambda k: d2(corners[(k + 1) % 3], corners[(k + 2) % 3]))
+    e1, e2 = (apex + 1) % 3, (apex + 2) % 3
+    idx = bezier_indices(degree)
+    pos = {i: k for k, i in enumerate(idx)}
+    near_e2, near_e1 = [None] * len(idx), [None] * len(idx)
+    for i in range(degree + 1):
+        def index(t, i=i):
+            out = [0, 0, 0]
+            out[apex], out[e1], out[e2] = i, t, degree - i - t
+            return tuple(out)
+
+        left, right = _split_1d([net[pos[index(t)]] for t in range(degree - i + 1)])
+        for t in range(degree - i + 1):
+            near_e2[pos[index(t)]], near_e1[pos[index(t)]] = left[t], right[t]
+    mid = ((corners[e1][0] + corners[e2][0]) / 2, (corners[e1][1] + corners[e2][1]) / 2)
+    c2, c1 = list(corners), list(corners)
+    c2[e1], c1[e2] = mid, mid
+    return [(near_e2, tuple(c2)), (near_e1, tuple(c1))]
+
+
+def certify_sign_triangles(nets, degree: int, max_depth: int = 12) -> SignCertificate:
+    """:func:`certify_sign` for triangular nets, bisecting (:func:`bisect_triangle`) up to ``max_depth`` times.
+
+    ``where`` is ``(patch index, corners)`` of a piece; the corners are in the patch's own
+    ``(u, v)`` parameters (the triangle ``(0, 0), (1, 0), (0, 1)``).
+    """
+    tips = [pos for pos, i in enumerate(bezier_indices(degree)) if max(i) == degree]
+    corners = {1: None, -1: None}
+    stack = [(p, net, ((0.0, 0.0), (1.0, 0.0), (0.0, 1.0)), 0) for p, net in enumerate(nets)]
+    leaves, pieces, depth, undecided = [], 0, 0, None
+    while stack:
+        p, net, domain, d = stack.pop()
+        pieces, depth = pieces + 1, max(depth, d)
+        for k in tips:
+            for sign in (1, -1):
+                if sign * net[k] > 0 and corners[sign] is None:
+                    corners[sign] = (p, domain)
+        if corners[1] is not None and corners[-1] is not None:
+            return SignCertificate("changes", None, depth, pieces, corners[-1])
+        if all(c > 0 for c in net) or all(c < 0 for c in net):
+            leaves.append(net)
+        elif d >= max_depth:
+            undecided = undecided or (p, domain)
+        else:
+            stack += [(p, half, dom, d + 1) for half, dom in bisect_triangle(net, degree, domain)]
+    return _certificate(leaves, undecided, depth, pieces)
+
+
+def _certificate(leaves, undecided, depth: int, pieces: int) -> SignCertificate:
+    """The certificate once every piece is a leaf of one strict sign (or not)."""
     signs = {1 if leaf[0] > 0 else -1 for leaf in leaves}
     if undecided is not None or len(signs) != 1:
         return SignCertificate("undecided", None, depth, pieces, undecided)

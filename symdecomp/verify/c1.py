@@ -1,7 +1,7 @@
 """Certified C1 at an extraordinary vertex: Reif's sufficient test on the characteristic map.
 
 **The test** (Reif 1995, *A unified approach to subdivision algorithms near extraordinary
-vertices*, CAGD 12; Peters and Reif 2008, *Subdivision Surfaces*, Springer, Chapter 5). A
+vertices*, CAGD 12, 153-174; Peters and Reif 2008, *Subdivision Surfaces*, Springer). A
 subdivision scheme whose regular patches are C1 generates C1 surfaces at a vertex of valence
 ``n`` for almost every initial mesh if
 
@@ -12,31 +12,43 @@ subdivision scheme whose regular patches are C1 generates C1 surfaces at a verte
    :mod:`symdecomp.analysis.characteristic`) is *regular* (Jacobian of one strict sign on the
    ring) and *injective*.
 
-**Regularity.** On each of the three bicubic sub-patches of sector 0 the Jacobian determinant is
-a polynomial of bidegree (5, 5); its Bernstein-Bezier coefficients are computed in Arb and must
-all be of one strict sign, with de Casteljau subdivision where a ball straddles 0
-(:func:`~symdecomp.verify.bezier.certify_sign`). One sector suffices: the eigenvector of
-frequency ``j`` has sector values ``omega^s c``, so the ring of sector ``s`` is the ring of sector 0
-rotated by ``2 pi j s / n`` in the same local parameters, and a rotation has determinant 1.
-The Jacobian is taken in the local parameters of the level-1 faces.
+**Regularity.** Catmull-Clark type: on each of the three bicubic sub-patches of sector 0 the
+Jacobian determinant is a polynomial of bidegree (5, 5); its Bernstein-Bezier coefficients are
+computed in Arb and must all be of one strict sign, with de Casteljau subdivision where a ball
+straddles 0 (:func:`~symdecomp.verify.bezier.certify_sign`, depth ``max_depth``). Loop type: on
+each of the three quartic box-spline sub-patches (the regular patch's Bezier basis,
+:func:`~symdecomp.schemes.box_spline.regular_patch`, on the level-1 triangles
+:data:`~symdecomp.analysis.characteristic.TRIANGLES`) the Jacobian is a triangular
+Bernstein polynomial of degree 6, certified the same way with bisection
+(:func:`~symdecomp.verify.bezier.certify_sign_triangles`, at most ``2 max_depth`` bisections,
+as many halvings of the edges as ``max_depth`` tensor splits; the reported depth counts
+bisections). One sector suffices: the eigenvector of frequency ``j`` has sector values
+``omega^s c``, so the ring of sector ``s`` is the ring of sector 0 rotated by ``2 pi j s / n``
+in the same local parameters, and a rotation has determinant 1. The Jacobian is taken in the
+local parameters of the level-1 faces (quads) or triangles (lattice-unit triangles).
 
-**Injectivity.** Criterion (Peters and Reif 2008, Section 5.3; Zorin 2000, *A method for
-analysis of C1-continuity of subdivision surfaces*, SIAM J. Numer. Anal. 37): a regular
-characteristic map is injective if and only if the image of the ring's inner boundary winds
-around the origin exactly once (``+1`` for a positive Jacobian, ``-1`` for a negative one); a
-regular ring winding ``w`` times with ``|w| > 1`` covers points ``|w|`` times, so it is not
-injective and the scheme is not C1 in general. The winding number is ``n`` times the argument
-swept by sector 0's part of the inner boundary (from the level-1 point ``(1, 0)`` through
-``(1, 1)`` to ``(0, 1)``, two cubic Bezier curves), divided by ``2 pi``; the argument is summed
-over curve pieces whose control points lie in an open half-plane through 0
+**Injectivity.** Criterion: for a regular characteristic map, injectivity is decided by the
+index (winding number) of a closed curve, the image of the ring's boundary, around the origin
+(Zorin 2000, *A method for analysis of C1-continuity of subdivision surfaces*, SIAM J. Numer.
+Anal. 37(5), 1677-1708: "injectivity can be verified by computing the index of a curve"; Peters
+and Reif 2008 give the criterion in their chapter on C1 analysis). *What was checked*: Zorin's
+title, journal, pages and that sentence of his abstract, and Reif 1995's journal and pages as
+Zorin's abstract cites them; the section numbers of Peters and Reif's book were not checked
+(an earlier version of this docstring cited "Section 5.3" from memory and is corrected here).
+Applied here: the map is injective when the image of the inner boundary winds around the
+origin exactly once (``+1`` for a positive Jacobian, ``-1`` for a negative one); a regular ring
+winding ``w`` times with ``|w| > 1`` covers points ``|w|`` times, so it is not injective and the
+scheme is not C1 in general. The winding number is ``n`` times the argument swept by sector 0's
+part of the inner boundary, divided by ``2 pi``: from the level-1 point ``(1, 0)`` through
+``(1, 1)`` to ``(0, 1)`` (two cubic Bezier curves) on quads, the edge from ``(1, 0)`` to
+``(0, 1)`` of the middle triangle (a quartic) on triangles. The argument is summed over curve
+pieces whose control points lie in an open half-plane through 0
 (:func:`~symdecomp.verify.bezier.curve_angle`), so the sum is rigorous.
 
-**Scope.** Schemes of Catmull-Clark type (:func:`~symdecomp.analysis.characteristic.check_applicable`).
-For Loop's scheme the same verdict logic applies with three pieces replaced: the per-frequency
-2-ring blocks of the triangle mesh, the ring as quartic box-spline sub-patches (triangular
-Bernstein-Bezier nets of degree 4, so a Jacobian of degree 6 with triangular de Casteljau
-subdivision), and the inner boundary's quartic curves; :func:`~symdecomp.verify.bezier.curve_angle`
-and the spectral comparisons are shared. That is not done yet.
+**Scope.** Schemes whose regular rules are Catmull-Clark's (bicubic B-splines) or Loop's
+(quartic box-splines), with any rules on the extraordinary vertex's 1-ring
+(:func:`~symdecomp.analysis.characteristic.check_applicable` says in one line why the test
+does not apply to other schemes).
 
 The verdict is ``c1`` when everything is certified, ``not-c1`` when a condition is shown to fail
 (named, with its numbers), ``undecided`` otherwise (saying what would decide it).
@@ -45,6 +57,9 @@ The verdict is ``c1`` when everything is certified, ``not-c1`` when a condition 
 >>> r = c1_test(catmull_clark(), 5)
 >>> r.verdict, r.winding_number, r.jacobian_sign
 ('c1', 1, 1)
+>>> from symdecomp.schemes.loop import loop
+>>> c1_test(loop(), 5).verdict
+'c1'
 """
 
 from __future__ import annotations
@@ -54,19 +69,38 @@ from dataclasses import dataclass
 
 import flint
 
-from symdecomp.analysis.characteristic import frequency_eigenvector, inner_boundary_nets, subpatch_nets
+from symdecomp.algebra.triangle_bezier import bezier_indices
+from symdecomp.analysis.characteristic import TRIANGLES, frequency_eigenvector, inner_boundary_nets, subpatch_nets
+from symdecomp.schemes.box_spline import BOX_POINTS, DEGREE, regular_patch
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
-from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, curve_angle, jacobian_net
+from symdecomp.verify.bezier import (
+    bspline_to_bezier,
+    certify_sign,
+    certify_sign_triangles,
+    curve_angle,
+    jacobian_net,
+    triangle_jacobian_net,
+)
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down, spectral_conditions
 
-__all__ = ["C1Result", "c1_test", "characteristic_nets", "METHOD"]
+__all__ = ["C1Result", "c1_test", "characteristic_nets", "METHOD", "method"]
 
-#: The method, as reported with each verdict.
+#: The method, as reported with each verdict (quad meshes; :func:`method` for either).
 METHOD = (
     "Reif's test: spectrum per frequency (Arb, exact at frequency 0); Jacobian of the three bicubic "
     "sub-patches in Bernstein-Bezier form (bidegree 5x5, Arb, de Casteljau); winding number of the inner boundary"
 )
+_TRIANGLE_METHOD = (
+    "Reif's test: spectrum per frequency (Arb, exact in Q(e^{2 pi i/n}) at frequency 0 and at ties); Jacobian of the "
+    "three quartic box-spline sub-patches in triangular Bernstein-Bezier form (degree 6, Arb, de Casteljau bisection); "
+    "winding number of the inner boundary"
+)
+
+
+def method(mesh: str) -> str:
+    """The method text for a scheme on ``mesh``."""
+    return _TRIANGLE_METHOD if mesh == "triangle" else METHOD
 
 
 @dataclass(frozen=True)
@@ -91,6 +125,7 @@ class C1Result:
     winding_number: int | None = None
     #: Working precision (bits) of the balls.
     precision: int = 64
+    mesh: str = "quad"
 
     def as_json(self) -> dict:
         lam = self.spectral.subdominant
@@ -108,15 +143,38 @@ class C1Result:
             "max_depth": self.max_depth,
             "winding_number": self.winding_number,
             "precision_bits": self.precision,
-            "method": METHOD,
+            "method": method(self.mesh),
         }
 
 
+#: The lattice map of each of :data:`TRIANGLES` from the patch's own triangle ``(0, 0), (1, 0), (0, 1)``:
+#: ``(origin, image of (1, 0), image of (0, 1))`` as steps. The outer two are translations, the middle one is a
+#: rotation by 60 degrees (``(1, 0) -> (0, 1)``, ``(0, 1) -> (-1, 1)``: it permutes the three lattice directions and
+#: has determinant +1, a symmetry of the box spline that keeps the Jacobian's sign and size).
+_TRIANGLE_MAPS = tuple((t[0], (t[1][0] - t[0][0], t[1][1] - t[0][1]), (t[2][0] - t[0][0], t[2][1] - t[0][1])) for t in TRIANGLES)
+
+
+def _triangle_nets(vec):
+    """The degree-4 Bezier nets ``(x, y)`` of sector 0's three box-spline sub-patches (each in its own parameters)."""
+    patch = regular_patch()
+    out = []
+    for values, (o, e1, e2) in zip(subpatch_nets(vec), _TRIANGLE_MAPS):
+        control = [values[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])] for a, b in BOX_POINTS]
+        net = patch.bezier_net(control)
+        out.append(([z.real for z in net], [z.imag for z in net]))
+    return out
+
+
 def characteristic_nets(scheme: Scheme, n: int, spectral: SpectralResult | None = None):
-    """The Bezier nets ``(x, y)`` of sector 0's three sub-patches, and the eigenvector they come from."""
+    """The Bezier nets ``(x, y)`` of sector 0's three sub-patches, and the eigenvector they come from.
+
+    Quads: ``4 x 4`` tensor nets; triangles: 15 coefficients in ``bezier_indices(4)`` order.
+    """
     spectral = spectral or spectral_conditions(scheme, n)
     lam = spectral.subdominant
     vec = frequency_eigenvector(scheme, n, lam.frequency, lam.value)
+    if scheme.mesh == "triangle":
+        return _triangle_nets(vec), vec
     nets = []
     for net in subpatch_nets(vec):
         x = bspline_to_bezier([[z.real for z in row] for row in net])
@@ -125,36 +183,59 @@ def characteristic_nets(scheme: Scheme, n: int, spectral: SpectralResult | None 
     return nets, vec
 
 
-def _winding(vec, n: int):
-    """The winding number (an ``int``) of the inner boundary, or ``None`` if not decided."""
+def _boundary_angle(vec):
+    """The argument swept by sector 0's inner boundary, from the image of ``a_0`` to that of ``a_1`` (or ``None``)."""
+    if vec.mesh == "triangle":
+        # the middle triangle, in its own parameters: corner (0, 0) is the lattice point (1, 0), corner (0, 1) is (0, 1)
+        x, y = _triangle_nets(vec)[1]
+        pos = {i: k for k, i in enumerate(bezier_indices(DEGREE))}
+        edge = [pos[(DEGREE - t, 0, t)] for t in range(DEGREE + 1)]
+        return curve_angle([flint.acb(x[k], y[k]) for k in edge])
     first, last = (bspline_to_bezier(net) for net in inner_boundary_nets(vec))
     a = curve_angle([first[0][k] for k in range(4)])  # face (1, 0), edge u = 1: (1,0) -> (1,1)
     b = curve_angle([last[i][0] for i in range(3, -1, -1)])  # face (0, 1), edge v = 1: (1,1) -> (0,1)
-    if a is None or b is None:
+    return None if a is None or b is None else a + b
+
+
+def _winding(vec, n: int):
+    """The winding number (an ``int``) of the inner boundary, or ``None`` if not decided."""
+    angle = _boundary_angle(vec)
+    if angle is None:
         return None
-    w = (a + b) * n / (2 * flint.arb.pi())
+    w = angle * n / (2 * flint.arb.pi())
     lo, hi = math.ceil(float(w.lower())), math.floor(float(w.upper()))
     return lo if lo == hi else None
 
 
+def _where(where) -> str:
+    """Where a sign change was found: a sub-patch and its parameter box (quads) or triangle (triangles)."""
+    p, *rest = where
+    if len(rest) == 2:
+        ur, vr = rest
+        return f"sub-patch {p}, u in [{ur[0]:g}, {ur[1]:g}], v in [{vr[0]:g}, {vr[1]:g}]"
+    return f"sub-patch {p}, triangle " + ", ".join(f"({u:g}, {v:g})" for u, v in rest[0])
+
+
 def _test(scheme: Scheme, n: int, max_depth: int, prec: int) -> C1Result:
     spectral = spectral_conditions(scheme, n)
-    base = dict(n=n, scheme=scheme.name, spectral=spectral, max_depth=max_depth, precision=prec)
+    base = dict(n=n, scheme=scheme.name, spectral=spectral, max_depth=max_depth, precision=prec, mesh=scheme.mesh)
     if spectral.status != "ok":
         return C1Result(verdict=spectral.status, reason=spectral.reason, **base)
     j = spectral.subdominant.frequency
     nets, vec = characteristic_nets(scheme, n, spectral)
-    sign = certify_sign([jacobian_net(x, y) for x, y in nets], max_depth)
+    if scheme.mesh == "triangle":  # a bisection halves a piece, a tensor split quarters it: twice the depth
+        sign = certify_sign_triangles([triangle_jacobian_net(x, y) for x, y in nets], DEGREE, 2 * max_depth)
+    else:
+        sign = certify_sign([jacobian_net(x, y) for x, y in nets], max_depth)
     winding = _winding(vec, n)
     base.update(frequency=j, subdivision_depth=sign.depth, winding_number=winding)
     lam = ball_text(spectral.subdominant.value)
     if sign.status == "changes":
-        p, ur, vr = sign.where
-        return C1Result(verdict="not-c1", reason=f"the Jacobian of the characteristic map changes sign (sub-patch {p}, "
-                        f"u in [{ur[0]:g}, {ur[1]:g}], v in [{vr[0]:g}, {vr[1]:g}]): it is not regular", **base)
+        return C1Result(verdict="not-c1", reason=f"the Jacobian of the characteristic map changes sign ({_where(sign.where)}): "
+                        "it is not regular", **base)
     if sign.status == "undecided":
-        return C1Result(verdict="undecided", reason=f"the Jacobian's sign is not certified at subdivision depth {max_depth} "
-                        f"and {prec} bits (a deeper subdivision or more precision would decide)", **base)
+        return C1Result(verdict="undecided", reason=f"the Jacobian's sign is not certified at subdivision depth "
+                        f"{sign.depth} and {prec} bits (a deeper subdivision or more precision would decide)", **base)
     s = 1 if sign.status == "positive" else -1
     base.update(jacobian_sign=s, jacobian_lower_bound=sign.lower_bound)
     if winding is None:

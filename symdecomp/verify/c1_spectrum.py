@@ -1,8 +1,8 @@
 """Reif's spectral conditions for C1, certified per frequency in Arb (with exact steps where they decide).
 
-The conditions (Reif 1995; Peters and Reif 2008, Section 5.1) on the ``(6n + 1) x (6n + 1)``
-2-ring subdivision matrix whose eigenvectors generate the characteristic map
-(:mod:`symdecomp.analysis.characteristic`):
+The conditions (Reif 1995; Peters and Reif 2008) on the 2-ring subdivision matrix whose
+eigenvectors generate the characteristic map (:mod:`symdecomp.analysis.characteristic`;
+``(6n + 1)`` square on quads, ``(3n + 1)`` on triangles):
 
 1. 1 is an eigenvalue, simple;
 2. the next largest eigenvalue in modulus, ``lambda``, is real, of algebraic and geometric
@@ -10,19 +10,33 @@ The conditions (Reif 1995; Peters and Reif 2008, Section 5.1) on the ``(6n + 1) 
 
 The matrix is block-circulant, so its spectrum is the union over frequencies ``j`` of the
 spectra of ``B_j``; each ``B_j`` is block lower triangular, so that is the union of the spectra
-of the 1-ring blocks (the exact ``3 x 3`` Eq. 43 matrix at ``j = 0``, the ``2 x 2`` ``M_j``
-otherwise) and of the outer blocks ``S_j`` (the regular rules). The eigenvalues of ``M_j``
-(and those of ``M_{n-j} = conj(M_j)``) are enclosed from its trace and determinant; those of
+of the 1-ring blocks (:func:`~symdecomp.analysis.frequency.one_ring_matrices`: at ``j = 0`` the
+Eq. 43 matrix, ``3 x 3`` on quads and ``2 x 2`` on triangles; otherwise ``M_j``, ``2 x 2`` or
+``1 x 1``) and of the outer blocks ``S_j`` (the regular rules). The eigenvalues of ``M_j`` (and
+those of ``M_{n-j} = conj(M_j)``) are enclosed from its characteristic polynomial; those of
 ``S_j`` are bounded by ``||S_j^k||_inf^{1/k}`` (``k = 1, 2, 4``). If ``lambda`` is a simple root of
 ``M_j`` for some ``0 < j < n/2`` and strictly dominates everything else, it has algebraic and
-geometric multiplicity 2 (one eigenvector at ``j``, one at ``n - j``). ``lambda`` is real when
-the trace and determinant of ``M_j`` are real (exactly: Laurent polynomials in ``omega``
-symmetric under ``omega -> 1/omega``) and the discriminant is positive. At ``j = 0`` everything
-is exact: the Eq. 43 characteristic polynomial is ``(x - 1) q(x)`` over ``Q``, a double root of
-``q`` is rational and its Jordan block is found by exact ranks. Balls of two frequencies that
-overlap at the top are compared exactly (characteristic polynomials over ``Q(e^{2 pi i / n})``,
-reduced modulo the cyclotomic polynomial): equal values make ``lambda``'s multiplicity larger than
-2 (not C1), which no precision would separate.
+geometric multiplicity 2 (one eigenvector at ``j``, one at ``n - j``: the *conjugate-frequency
+copy*, the same eigenvalue, which is why it is never compared with itself). ``lambda`` is real
+when ``M_j``'s characteristic polynomial is real (exactly: Laurent polynomials in ``omega``
+symmetric under ``omega -> 1/omega``) and, for ``2 x 2`` blocks, the discriminant is positive.
+
+**Exact steps**, in the cyclotomic field ``Q(e^{2 pi i / 2n})``
+(:mod:`symdecomp.algebra.cyclotomic`, which also holds Loop's ``cos(2 pi / n)`` weights):
+
+* at ``j = 0`` the characteristic polynomial is ``(x - 1) q(x)``; a double root of ``q`` is
+  found exactly, and its Jordan block by exact ranks when it is rational;
+* a ``2 x 2`` block ``M_j`` (``j != 0``) whose discriminant ball holds 0 is tested for a double
+  root exactly; a double root has multiplicity 4 with its conjugate-frequency copy (2 at
+  ``j = n/2``), so as ``lambda`` it fails condition 2;
+* two eigenvalues whose moduli cannot be separated by the balls (a *tie*) are compared exactly:
+  the blocks' characteristic polynomials (for ``-lambda``: the other one at ``-x``) share a
+  root, and the shared root is ``lambda`` when its ball misses the blocks' other roots. The
+  same value at another frequency makes ``lambda``'s multiplicity larger than 2; ``-lambda``
+  anywhere (another frequency, or the other root of ``lambda``'s block) means ``lambda`` is not
+  strictly dominant. Both fail condition 2, and no precision would have separated them. A tie
+  with a non-real eigenvalue of the same modulus is not decided exactly and stays
+  ``undecided``.
 """
 
 from __future__ import annotations
@@ -34,9 +48,10 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
-from symdecomp.analysis.characteristic import check_applicable, frequency_block
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
+from symdecomp.analysis.characteristic import check_applicable, frequency_block, ring_layout
 from symdecomp.analysis.defective import jordan_block_size
-from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
+from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -88,6 +103,8 @@ class Eigen:
     root: int = 0
     #: One of two complex conjugate roots of the same block (real trace and determinant): equal moduli.
     pair: bool = False
+    #: A double root of ``M_j`` (``j != 0``), shown exactly (discriminant 0 in ``Q(e^{2 pi i/n})``).
+    double: bool = False
 
 
 @dataclass(frozen=True)
@@ -107,14 +124,17 @@ class SpectralResult:
 
 
 @lru_cache(maxsize=32)
-def _symmetric_trace_det(scheme: Scheme) -> tuple[sp.Expr, sp.Expr]:
-    M = per_frequency_matrix(scheme)
-    return sp.expand(M.trace()), sp.expand(M.det())
+def _symbolic_charpoly(scheme: Scheme) -> tuple[sp.Expr, ...]:
+    """The coefficients ``(c_1, .., c_k)`` of ``det(x - M(omega)) = x^k + c_1 x^(k-1) + ..`` (Laurent in omega, in n)."""
+    M = one_ring_matrices(scheme)[0]
+    if M.shape == (1, 1):
+        return (sp.expand(-M[0, 0]),)
+    return (sp.expand(-M.trace()), sp.expand(M.det()))
 
 
 def _real_at(scheme: Scheme, n: int) -> bool:
-    """Whether trace and det of ``M_j`` are real for every ``j`` (symmetric Laurent polynomials in omega)."""
-    return all(sp.expand((e - e.subs(OMEGA, 1 / OMEGA)).subs(N, n)) == 0 for e in _symmetric_trace_det(scheme))
+    """Whether ``M_j``'s characteristic polynomial is real for every ``j`` (symmetric Laurent polynomials in omega)."""
+    return all(sp.expand((e - e.subs(OMEGA, 1 / OMEGA)).subs(N, n)) == 0 for e in _symbolic_charpoly(scheme))
 
 
 def _quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
@@ -144,31 +164,86 @@ def _outer_bound(S: flint.acb_mat) -> flint.arb:
     return best
 
 
-def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
-    """The non-unit eigenvalues of Eq. 43 (exact where it matters); a failure reason if 1 is not simple."""
-    A = sp.Matrix(recursion_matrix(scheme, n))
-    p = sp.Poly((_X * sp.eye(3) - A).det(), _X)
-    q, r = sp.div(p, sp.Poly(_X - 1, _X))
-    if r.as_expr() != 0:
-        return [], "1 is not an eigenvalue of the frequency-0 block (the rules are not affine)"
-    if q.eval(1) == 0:
-        return [], "the eigenvalue 1 is not simple: it is a double root of the frequency-0 block (Eq. 43)"
-    coefficients = q.all_coeffs()
-    if not all(sp.sympify(x).is_Rational for x in coefficients):
+def _field(n: int) -> CyclotomicField:
+    """``Q(zeta_2n)`` (``= Q(zeta_n)`` for odd ``n``): holds ``omega_n^j`` and ``cos(2 pi k/n)``."""
+    return CyclotomicField(2 * n)
+
+
+def _exact(expr, n: int, j: int = 0) -> Cyclotomic | None:
+    """An expression in ``n``, ``omega`` and ``cos``/``sin`` of rational multiples of pi at ``n``, ``omega = omega_n^j``."""
+    expr = sp.sympify(expr)
+    if expr.has(OMEGA):
+        expr = expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(j, n))})
+    try:
+        return cyclotomic_value(expr, {N: n}, _field(n))
+    except ValueError:
+        return None
+
+
+def _rational(x: Cyclotomic) -> sp.Rational | None:
+    """``x`` as a rational, if it is one."""
+    if x.poly.degree() > 0:
+        return None
+    c = x.poly.coeffs()[0] if x.poly.degree() == 0 else flint.fmpq(0)
+    return sp.Rational(int(c.p), int(c.q))
+
+
+def _charpoly(M: list[list[Cyclotomic]]) -> list[Cyclotomic]:
+    """``[c_1, .., c_k]`` with ``det(x - M) = x^k + c_1 x^(k-1) + ..`` for ``k = 1, 2, 3`` (exact)."""
+    k = len(M)
+    if k == 1:
+        return [-M[0][0]]
+    minor = lambda a, b: M[a][a] * M[b][b] - M[a][b] * M[b][a]  # noqa: E731
+    if k == 2:
+        return [-(M[0][0] + M[1][1]), minor(0, 1)]
+    det = (M[0][0] * minor(1, 2) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0])
+           + M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]))
+    return [-(M[0][0] + M[1][1] + M[2][2]), minor(0, 1) + minor(0, 2) + minor(1, 2), -det]
+
+
+def _frequency_zero_quotient(scheme: Scheme, n: int) -> tuple[list, list | None]:
+    """``(p, q)``: the characteristic polynomial of the frequency-0 1-ring block (Eq. 43 on quads) and ``p / (x - 1)``.
+
+    Coefficient lists as in :func:`_charpoly`, exact in :func:`_field`; ``q`` is ``None`` if 1 is not a root.
+    """
+    E0 = one_ring_matrices(scheme)[1]
+    entries = [[_exact(x, n) for x in row] for row in E0.tolist()]
+    if any(x is None for row in entries for x in row):
         raise InvalidSchemeError(
-            f"scheme {scheme.name!r}: the C1 test needs rational weights at each valence; at n = {n} the frequency-0 "
-            f"block has the characteristic polynomial {p.as_expr()}"
+            f"scheme {scheme.name!r}: the C1 test needs rational weights at each valence (or rational in cos(2 pi k/n)); "
+            f"at n = {n} the frequency-0 block is {sp.Matrix(E0).subs(N, n).tolist()}"
         )
-    _, b, c = (sp.Rational(x) for x in coefficients)
+    p = _charpoly(entries)
+    q = [p[0] + 1]  # synthetic division by x - 1
+    for c in p[1:-1]:
+        q.append(c + q[-1])
+    return p, (q if p[-1] + q[-1] == 0 else None)
+
+
+def _ball(x: Cyclotomic) -> flint.acb:
+    return to_acb(x, flint.ctx.prec)
+
+
+def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
+    """The non-unit eigenvalues of the frequency-0 block (exact where it matters); a failure reason if 1 is not simple."""
+    p, q = _frequency_zero_quotient(scheme, n)
+    if q is None:
+        return [], "1 is not an eigenvalue of the frequency-0 block (the rules are not affine)"
+    if sum(q[1:], q[0] + 1) == 0:
+        return [], "the eigenvalue 1 is not simple: it is a double root of the frequency-0 block (Eq. 43)"
+    if len(q) == 1:
+        return [Eigen(-_ball(q[0]), 0, 1)], None
+    b, c = q
     disc = b * b - 4 * c
     if disc == 0:
-        mu = -b / 2
-        ball = flint.acb(flint.fmpq(int(mu.p), int(mu.q)))
-        defective = jordan_block_size(scheme, n, mu) == 2
-        return [Eigen(ball, 0, 2, defective=defective)], None
-    B, C = (flint.acb(flint.fmpq(int(x.p), int(x.q))) for x in (b, c))
-    r1, r2 = _quadratic_roots(-B, C)
-    pair = disc < 0
+        mu = _rational(-b / 2)
+        defective = mu is not None and jordan_block_size(scheme, n, mu) == 2  # Jordan blocks: rational roots only
+        return [Eigen(_ball(-b / 2), 0, 2, defective=defective)], None
+    r1, r2 = _quadratic_roots(-_ball(b), _ball(c))
+    real = _rational(disc)
+    pair = real is not None and real < 0  # a rational negative discriminant: conjugate roots
+    if not pair and disc == disc.conjugate():  # real: conjugate roots iff negative
+        pair = bool(_ball(disc).real < 0)
     return [Eigen(r1, 0, 1, root=0, pair=pair), Eigen(r2, 0, 1, root=1, pair=pair)], None
 
 
@@ -176,77 +251,107 @@ def _other_frequencies(scheme: Scheme, n: int) -> tuple[list[Eigen], list[tuple[
     """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``)."""
     eigen, outer = [], []
     real = _real_at(scheme, n)
+    k1, k2 = ring_layout(scheme.mesh).one_ring, ring_layout(scheme.mesh).two_ring
     for j in range(0, n // 2 + 1):
         B = frequency_block(scheme, n, j)
-        S = flint.acb_mat([[B[2 + r, 2 + c] for c in range(4)] for r in range(4)])
-        outer.append((j, _outer_bound(S)))
+        outer.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
         if j == 0:
             continue
-        t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
         mult = 1 if 2 * j == n else 2
+        if k1 == 1:
+            eigen.append(Eigen(B[0, 0], j, mult))
+            continue
+        t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
+        disc = t * t - 4 * d
+        if disc.real.contains(0) and disc.imag.contains(0) and _exact_discriminant_zero(scheme, n, j):
+            eigen.append(Eigen(t / 2, j, 2 * mult, double=True))  # exactly t/2, twice
+            continue
         r1, r2 = _quadratic_roots(t, d)
-        pair = real and (t * t - 4 * d).real < 0  # real trace and determinant: the roots are conjugate
+        pair = real and disc.real < 0  # real trace and determinant: the roots are conjugate
         eigen += [Eigen(r1, j, mult, root=0, pair=pair), Eigen(r2, j, mult, root=1, pair=pair)]
     return eigen, outer
 
 
-_Z = sp.Symbol("z")
+def _exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | None:
+    """``(c_1, .., c_k)``: the block of frequency ``j`` has ``det(x - M_j) = x^k + c_1 x^(k-1) + ..``, exactly.
 
-
-def _exact_coefficients(scheme: Scheme, n: int, j: int) -> tuple[sp.Poly, sp.Poly] | None:
-    """``(t, d)`` with ``x^2 - t x + d`` the characteristic polynomial of the block of frequency ``j``, exactly.
-
-    ``t`` and ``d`` are polynomials in ``z = e^{2 pi i / n}`` reduced modulo the cyclotomic polynomial
-    ``Phi_n`` (irreducible over Q, so a reduced polynomial is 0 iff its value at ``z`` is). At
-    ``j = 0`` the block is the quotient ``q`` of Eq. 43 by ``x - 1``; ``None`` if it is not a quadratic.
+    The ``c_i`` lie in the cyclotomic field :func:`_field` (exact: an element is 0 iff its
+    reduced polynomial is). At ``j = 0`` the block is the quotient of the frequency-0 polynomial
+    by ``x - 1``. ``None`` when a coefficient is not in the field.
     """
-    phi = sp.Poly(sp.cyclotomic_poly(n, _Z), _Z)
     if j == 0:
-        A = sp.Matrix(recursion_matrix(scheme, n))
-        q = sp.div(sp.Poly((_X * sp.eye(3) - A).det(), _X), sp.Poly(_X - 1, _X))[0]
-        if q.degree() != 2:
-            return None
-        _, b, c = q.all_coeffs()
-        return sp.Poly(-b, _Z), sp.Poly(c, _Z)
-    out = []
-    for e in _symmetric_trace_det(scheme):
-        num, den = sp.fraction(sp.together(sp.expand(e.subs(N, n))))
-        # den = const * omega^k: divide by omega^k as multiplying by z^(j (n k - k)) = z^(-j k) mod z^n - 1
-        k = sp.Poly(den, OMEGA).degree()
-        const = sp.Poly(den, OMEGA).LC()
-        value = sp.expand(num.subs(OMEGA, _Z**j) * _Z ** (j * k * (n - 1)) / const)
-        out.append(sp.Poly(value, _Z).rem(phi))
-    return out[0], out[1]
+        q = _frequency_zero_quotient(scheme, n)[1]
+        return None if q is None else tuple(q)
+    out = tuple(_exact(e, n, j) for e in _symbolic_charpoly(scheme))
+    return None if any(c is None for c in out) else out
 
 
-def _ball_at(poly: sp.Poly, n: int) -> flint.acb:
-    from symdecomp.analysis.characteristic import omega_ball
+def _exact_discriminant_zero(scheme: Scheme, n: int, j: int) -> bool:
+    """Whether ``M_j`` (``2 x 2``) has a double root, exactly: ``c_1^2 - 4 c_2 = 0``."""
+    p = _exact_charpoly(scheme, n, j)
+    return p is not None and len(p) == 2 and p[0] * p[0] - 4 * p[1] == 0
 
-    z = omega_ball(n, 1)
-    return sum((flint.acb(flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q))) * z**e for (e,), c in poly.terms()), flint.acb(0))
 
+def _shared_root(p1: tuple, p2: tuple):
+    """A root common to the monic polynomials with coefficients ``p1``, ``p2`` (degree 1 or 2, exact).
 
-def _exactly_equal(scheme: Scheme, n: int, eigen: list[Eigen], e1: Eigen, e2: Eigen) -> bool:
-    """Whether the (overlapping) balls ``e1`` and ``e2`` of two different frequencies hold the same eigenvalue, exactly.
-
-    Monic quadratics ``x^2 - t_i x + d_i`` share a root iff they are equal or, with ``a = t_2 - t_1 != 0``,
-    ``b = d_1 - d_2``, the root ``r = -b / a`` of their difference satisfies ``b^2 + t_1 a b + d_1 a^2 = 0``
-    (exact, in ``Q(z)``); the shared root is ``e1`` and ``e2`` when ``r``'s ball misses both other roots.
+    ``'all'`` if they are the same polynomial, a ball around the one shared root, or ``None`` if
+    they share none. For different polynomials of degree <= 2 a shared root is a root of their
+    difference (degree <= 1 after the leading terms cancel), tested exactly in the other one.
     """
-    p1, p2 = _exact_coefficients(scheme, n, e1.frequency), _exact_coefficients(scheme, n, e2.frequency)
-    if p1 is None or p2 is None:
-        return False
-    siblings = [e for e in eigen if (e.frequency, e.root) in ((e1.frequency, 1 - e1.root), (e2.frequency, 1 - e2.root))]
-    (t1, d1), (t2, d2) = p1, p2
-    a, b = t2 - t1, d1 - d2
-    if a.is_zero:
-        if not b.is_zero:
-            return False
-        return all(not s.value.overlaps(e1.value) for s in siblings)  # the same polynomial: e1, e2 the same root
-    if not (b * b + t1 * a * b + d1 * a * a).rem(sp.Poly(sp.cyclotomic_poly(n, _Z), _Z)).is_zero:
-        return False
-    r = -_ball_at(b, n) / _ball_at(a, n)
-    return all(not s.value.overlaps(r) for s in siblings)
+    if len(p1) > len(p2):
+        p1, p2 = p2, p1
+    if len(p1) == len(p2) and all(a == b for a, b in zip(p1, p2)):
+        return "all"
+    if len(p1) == 1:  # x + c: the root -c
+        root = -p1[0]
+    else:  # (x^2 + a1 x + b1) - (x^2 + a2 x + b2) = (a1 - a2) x + (b1 - b2)
+        if p1[0] == p2[0]:
+            return None  # equal linear terms, different constants: no common root
+        root = -(p1[1] - p2[1]) / (p1[0] - p2[0])
+    value = root ** len(p2) + sum((c * root ** (len(p2) - 1 - i) for i, c in enumerate(p2)), root.field(0))
+    return _ball(root) if value == 0 else None
+
+
+def _siblings(eigen: list[Eigen], e: Eigen) -> list[flint.acb]:
+    return [x.value for x in eigen if x.frequency == e.frequency and x.root != e.root and not x.double]
+
+
+def _exact_tie(scheme: Scheme, n: int, eigen: list[Eigen], dom: Eigen, e: Eigen) -> str | None:
+    """``'equal'`` if ``e`` is exactly ``dom``'s value, ``'opposite'`` if it is exactly ``-dom``, ``None`` if not shown.
+
+    Exact in ``Q(e^{2 pi i / n})``: the blocks' characteristic polynomials (for ``-dom`` the one of
+    ``e``'s block at ``-x``) share a root; the shared root is ``dom`` when its ball misses the
+    blocks' other roots.
+    """
+    p, q = _exact_charpoly(scheme, n, dom.frequency), _exact_charpoly(scheme, n, e.frequency)
+    if p is None or q is None:
+        return None
+    for kind, sign in (("equal", 1), ("opposite", -1)):
+        qs = tuple(c * sign ** (i + 1) for i, c in enumerate(q))  # the roots of q times sign
+        value = e.value * sign
+        if not value.overlaps(dom.value):
+            continue
+        shared = _shared_root(p, qs)
+        if shared is None:
+            continue
+        others = _siblings(eigen, dom) + [x * sign for x in _siblings(eigen, e)]
+        if shared == "all":
+            if all(not x.overlaps(dom.value) for x in others):
+                return kind
+        elif shared.overlaps(dom.value) and all(not x.overlaps(shared) for x in others):
+            return kind
+    return None
+
+
+def _ties(scheme: Scheme, n: int, eigen: list[Eigen], dom: Eigen, top: flint.arb):
+    """The other eigenvalues whose modulus is not certainly below ``|dom|``, split by :func:`_exact_tie`."""
+    # the conjugate of a non-real root of the same block has the same modulus: compare the pair as one
+    others = [e for e in eigen if e is not dom and not (dom.pair and e.pair and e.frequency == dom.frequency)]
+    close = [e for e in others if not abs(e.value) < top]
+    kinds = {id(e): _exact_tie(scheme, n, eigen, dom, e) for e in close}
+    split = {kind: [e for e in close if kinds[id(e)] == kind] for kind in ("equal", "opposite", None)}
+    return [e for e in others if e not in close], split
 
 
 def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
@@ -260,18 +365,12 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
     eigen += more
     dom = max(eigen, key=lambda e: abs(e.value).mid())
     top = abs(dom.value)
-    # the conjugate of a non-real root of the same block has the same modulus: compare the pair as one
-    others = [e for e in eigen if e is not dom and not (dom.pair and e.pair and e.frequency == dom.frequency)]
-    tied = [e for e in others if not abs(e.value) < top and e.frequency != dom.frequency
-            and _exactly_equal(scheme, n, eigen, dom, e)]
-    others = [e for e in others if e not in tied]
-    second = max([abs(e.value) for e in others] + [b for _, b in outer], key=lambda x: x.upper())
-    for e in others:
-        if not abs(e.value) < top:
-            return SpectralResult(
-                n, "undecided", f"the eigenvalues {ball_text(dom.value)} (frequency {dom.frequency}) and "
-                f"{ball_text(e.value)} (frequency {e.frequency}) are not separated in modulus at this precision",
-            )
+    others, ties = _ties(scheme, n, eigen, dom, top)
+    for e in ties[None]:
+        return SpectralResult(
+            n, "undecided", f"the eigenvalues {ball_text(dom.value)} (frequency {dom.frequency}) and "
+            f"{ball_text(e.value)} (frequency {e.frequency}) are not separated in modulus at this precision",
+        )
     for j, bound in outer:
         if not bound < top:
             return SpectralResult(
@@ -284,13 +383,10 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
             n, "not-c1" if top >= 1 else "undecided",
             f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus", dom,
         )
-    if tied:
-        where = ", ".join(str(e.frequency) for e in [dom, *tied])
-        total = dom.multiplicity + sum(e.multiplicity for e in tied)
-        return SpectralResult(
-            n, "not-c1", f"the largest eigenvalue after 1, {ball_text(dom.value)}, is exactly the same at frequencies "
-            f"{where}: multiplicity {total}, not 2", dom,
-        )
+    failure = _tie_failure(dom, ties, n)
+    if failure:
+        return SpectralResult(n, "not-c1", failure, dom)
+    second = max([abs(e.value) for e in others] + [b for _, b in outer], key=lambda x: x.upper())
     gap = float_down((top - second).lower())
     if dom.pair:
         return SpectralResult(
@@ -298,26 +394,51 @@ def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
             f"frequency {dom.frequency}: the subdominant eigenvalue is not real", dom, gap, float(second.upper()),
         )
     if dom.frequency == 0 or 2 * dom.frequency == n:
-        tangent = max((e for e in eigen if e.frequency == 1), key=lambda e: abs(e.value).mid())
-        if dom.defective:
-            what = "has algebraic multiplicity 2 but geometric multiplicity 1 (a Jordan block)"
-        else:
-            what = f"has multiplicity {dom.multiplicity}, not 2"
-        return SpectralResult(
-            n, "not-c1", f"the largest eigenvalue after 1 is {ball_text(dom.value)} at frequency {dom.frequency}, which "
-            f"{what}; it exceeds the frequency-1 (tangent-plane) eigenvalue {ball_text(tangent.value)}",
-            dom, gap, float(second.upper()),
-        )
+        return SpectralResult(n, "not-c1", _symmetric_failure(eigen, dom, n), dom, gap, float(second.upper()))
     return _real_subdominant(scheme, n, dom, gap, float(second.upper()))
+
+
+def _tie_failure(dom: Eigen, ties: dict, n: int) -> str | None:
+    """Why exact ties make ``lambda`` fail: multiplicity above 2, or a different eigenvalue of the same modulus."""
+    lam = ball_text(dom.value)
+    if ties["equal"]:
+        where = ", ".join(str(e.frequency) for e in [dom, *ties["equal"]])
+        total = dom.multiplicity + sum(e.multiplicity for e in ties["equal"])
+        return (f"the largest eigenvalue after 1, {lam}, is exactly the same at frequencies {where}: "
+                f"multiplicity {total}, not 2")
+    if dom.double and 0 < 2 * dom.frequency < n:
+        return (f"the largest eigenvalue after 1, {lam}, is a double root of the frequency-{dom.frequency} block "
+                f"(discriminant exactly 0), so with its copy at the conjugate frequency it has multiplicity {dom.multiplicity}, not 2")
+    if ties["opposite"]:
+        e = ties["opposite"][0]
+        return (f"the largest eigenvalue after 1, {lam} (frequency {dom.frequency}), is not strictly dominant: "
+                f"{ball_text(e.value)} (frequency {e.frequency}) is exactly its negative, of the same modulus")
+    return None
+
+
+def _symmetric_failure(eigen: list[Eigen], dom: Eigen, n: int) -> str:
+    """Why a dominant eigenvalue at frequency 0 or ``n/2`` fails (its eigenvectors are the same up to sign in every sector)."""
+    tangent = max((e for e in eigen if e.frequency == 1), key=lambda e: abs(e.value).mid())
+    if dom.defective:
+        what = "has algebraic multiplicity 2 but geometric multiplicity 1 (a Jordan block)"
+    elif dom.multiplicity != 2:
+        what = f"has multiplicity {dom.multiplicity}, not 2"
+    else:
+        what = (f"has multiplicity 2, but its eigenvectors repeat every {1 if dom.frequency == 0 else 2} sectors, so "
+                "their characteristic map is not injective")
+    return (f"the largest eigenvalue after 1 is {ball_text(dom.value)} at frequency {dom.frequency}, which {what}; it "
+            f"exceeds the frequency-1 (tangent-plane) eigenvalue {ball_text(tangent.value)}")
 
 
 def _real_subdominant(scheme: Scheme, n: int, dom: Eigen, gap: float, second: float) -> SpectralResult:
     """The verdict once ``dom`` (frequency ``0 < j < n/2``) is strictly dominant: ok iff it is certainly real and simple."""
     if dom.value.imag.contains(0) and _real_at(scheme, n):
         B = frequency_block(scheme, n, dom.frequency)
-        t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
-        disc = (t * t - 4 * d).real
-        if disc > 0:
+        real = True
+        if ring_layout(scheme.mesh).one_ring == 2:  # a real quadratic: real roots iff the discriminant is positive
+            t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
+            real = (t * t - 4 * d).real > 0
+        if real:
             return SpectralResult(n, "ok", f"lambda = {ball_text(dom.value)} at frequency {dom.frequency}, real, "
                                   f"multiplicity 2, gap >= {round_down(gap)}", dom, gap, second)
     if not dom.value.imag.contains(0):

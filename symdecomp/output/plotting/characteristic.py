@@ -1,12 +1,16 @@
 """The characteristic map of Reif's test: the ring's image, sector by sector (issue: certified C1).
 
 The numbers come from :mod:`symdecomp.verify.c1` (the Bezier nets of sector 0's three bicubic
-sub-patches, as Arb balls; the figure uses their midpoints) and the rotational symmetry: the
-ring of sector ``s`` is that of sector 0 times ``omega^(j s)``.
+sub-patches, or Loop's three quartic triangular ones, as Arb balls; the figure uses their
+midpoints) and the rotational symmetry: the ring of sector ``s`` is that of sector 0 times
+``omega^(j s)``.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> curves = ring_curves(catmull_clark(), 4, samples=3)
 >>> [round(abs(complex(curves["inner"][0][0])), 6)]   # a_0 at level 1: lambda = 1/2
+[0.5]
+>>> from symdecomp.schemes.loop import loop
+>>> [round(abs(complex(ring_curves(loop(), 6, samples=3)["inner"][0][0])), 6)]   # Loop, regular: lambda = 1/2
 [0.5]
 """
 
@@ -14,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from symdecomp.algebra.triangle_bezier import bezier_value
 from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
@@ -34,6 +39,28 @@ def _patch(net_x, net_y, s: np.ndarray, t: np.ndarray) -> np.ndarray:
     return _bernstein(3, s).T @ z @ _bernstein(3, t)
 
 
+def _triangle(net_x, net_y, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Complex points of a quartic triangular Bezier patch at the parameters ``(u, v)``."""
+    z = [complex(float(x.mid()), float(y.mid())) for x, y in zip(net_x, net_y)]
+    return bezier_value(z, 4, u, v)
+
+
+def _triangle_curves(nets, rotation: complex, n: int, t: np.ndarray, grid: np.ndarray) -> dict:
+    """:func:`ring_curves` for Loop's sub-patches: lines of constant u, v and w = 1 - u - v in each triangle."""
+    lines, inner, rays = [], [], []
+    for sector in range(n):
+        r = rotation**sector
+        for p, (x, y) in enumerate(nets):
+            for g in grid[:-1]:
+                s = (1 - g) * t
+                lines += [r * _triangle(x, y, g + 0 * s, s), r * _triangle(x, y, s, g + 0 * s), r * _triangle(x, y, s, 1 - g - s)]
+            if p == 1:  # the middle triangle: its edge u = 0 runs from the level-1 point (1, 0) to (0, 1)
+                inner.append(r * _triangle(x, y, 0 * t, t))
+            if p == 0:  # the first triangle: its edge v = 0 runs from (1, 0) to (2, 0), on the edge ray
+                rays.append(r * _triangle(x, y, t, 0 * t))
+    return {"lines": lines, "inner": inner, "rays": rays}
+
+
 def ring_curves(scheme: Scheme, n: int, *, samples: int = 9) -> dict:
     """Iso-parameter lines of the ring (all sectors), its inner boundary, and the sector boundaries, as complex arrays."""
     n = check_valence(n)
@@ -41,6 +68,8 @@ def ring_curves(scheme: Scheme, n: int, *, samples: int = 9) -> dict:
     rotation = np.exp(2j * np.pi * vec.j / n)
     t = np.linspace(0.0, 1.0, 4 * samples + 1)
     grid = np.linspace(0.0, 1.0, samples)
+    if scheme.mesh == "triangle":
+        return _triangle_curves(nets, rotation, n, t, grid)
     lines, inner, rays = [], [], []
     for sector in range(n):
         r = rotation**sector

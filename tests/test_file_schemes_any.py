@@ -232,3 +232,11 @@ def test_commands_about_quad_meshes_say_why_in_one_line(tmp_path, capsys, argv, 
         assert code in (0, 3), err
         return
     assert code == 2 and len(err.strip().splitlines()) == 1 and why in err
+
+
+def test_a_weight_defined_by_cases_is_not_written_to_a_file():
+    from symdecomp.errors import InvalidSchemeError
+    from symdecomp.schemes.loop import loop_warren
+
+    with pytest.raises(InvalidSchemeError, match="defined by cases"):
+        scheme_to_text(loop_warren())

@@ -261,6 +261,11 @@ def scheme_to_text(scheme: Scheme) -> str:
     def offsets(pairs):
         return "{ " + ", ".join(f'"{k}" = "{_text(w)}"' for k, w in pairs) + " }"
 
+    v = scheme.vertex_rule
+    weights = [w for rule in scheme.stencils() for w in (rule.center, *(x for _, x in rule.a + rule.b))] + [v.each_a, v.each_b]
+    piecewise = next((w for w in weights if sp.sympify(w).has(sp.Piecewise)), None)
+    if piecewise is not None:  # e.g. Warren's beta (3/16 at n = 3): the file grammar has no cases
+        raise InvalidSchemeError(f"scheme {scheme.name!r}: the weight {piecewise} is defined by cases, which a scheme file cannot write")
     lines = [f'name = "{scheme.name}"']
     if scheme.mesh != "quad":
         lines.append(f'mesh = "{scheme.mesh}"')

@@ -22,8 +22,9 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
                    its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
                    (``files``; Loop, ``loop``),
-                   Stam's (2N+8)-point patch matrix (``patch``), the regular Loop patch
-                   (quartic box spline) in Bezier form (``box_spline``)
+                   Stam's (2N+8)-point patch matrix (``patch``; Loop's (N+6)-point one,
+                   ``triangle_patch``), the regular Loop patch (quartic box spline) in
+                   Bezier form (``box_spline``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
                    ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
@@ -37,7 +38,9 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form
                    charpoly (``ring_charpoly``), masks (``ring_masks``); the patch's certified
-                   eigen-data (``eigendata``) and exact evaluation (``evaluation``)
+                   eigen-data (``eigendata``; Loop's 1-ring columns, ``triangle_eigendata``)
+                   and exact evaluation (``evaluation``; Loop's sub-triangles,
+                   ``triangle_evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``,
                    ``ring_numeric``), certified (``certify``, ``ring_certify``), both returning a
                    ``CrossCheckResult`` (``result``), OpenSubdiv (``oracle``, ``opensubdiv``);

@@ -32,7 +32,8 @@ class NeedPrecision(Exception):
 
 
 def fmpq_value(x) -> flint.fmpq:
-    x = Fraction(x)
+    if not isinstance(x, Fraction):
+        x = Fraction(x)
     return flint.fmpq(x.numerator, x.denominator)
 
 
@@ -40,7 +41,8 @@ def arb_value(x) -> arb:
     """An Arb ball of a rational (exact when dyadic), or an Arb number itself."""
     if isinstance(x, arb):
         return x
-    x = Fraction(x)
+    if not isinstance(x, Fraction):
+        x = Fraction(x)
     return arb(x.numerator) / x.denominator
 
 

@@ -1,4 +1,10 @@
-"""Certified eigenstructure of the (2N+8)-point patch matrix (Stam's exact-evaluation data).
+"""Certified eigenstructure of the patch matrix (Stam's exact-evaluation data): Catmull-Clark and Loop.
+
+Written for the (2N+8)-point Catmull-Clark patch below; Loop's (N+6)-point patch
+(:mod:`symdecomp.schemes.triangle_patch`) shares the whole assembly with its own 1-ring columns
+(:mod:`symdecomp.analysis.triangle_eigendata`) and a 5 x 5 regular block, and where its matrix
+is not diagonalizable (N = 3) keeps the Jordan pairs (:attr:`PatchEigenData.jordan`) instead of
+refusing.
 
 The patch matrix (:func:`~symdecomp.schemes.patch.patch_matrices`) is block lower triangular,
 ``A = [[S, 0], [S11, S12]]``: ``S`` is the 1-ring matrix, ``S12`` the 7 x 7 matrix of the
@@ -36,14 +42,14 @@ from fractions import Fraction
 import flint
 import numpy as np
 
-from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import NotDiagonalizableError
 from symdecomp.algebra.small_eigen import arb_value as _arb
-from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
 from symdecomp.algebra.small_eigen import fmpq_value as _fq
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
+from symdecomp.analysis.quad_eigendata import LazyTable, circulant_weights, column_group, quad_ring_columns, trig_table
+from symdecomp.analysis.triangle_eigendata import triangle_ring_columns
 from symdecomp.errors import InternalError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
@@ -76,11 +82,14 @@ class PatchEigenData:
     values: tuple  # K arb
     vectors: flint.arb_mat  # V, K x K, column i belongs to values[i]
     inverse: flint.arb_mat  # V^-1
-    phi: tuple  # three arb_mat, K x 16: phi[k][i, l] = B-spline coefficient l of eigenfunction i on sub-patch k
+    phi: tuple  # three arb_mat, K x P: phi[k][i, l] = coefficient l of eigenfunction i on sub-patch k
+    #: ``(i, c, gamma)``: ``A v_c = lam_c v_c + gamma v_i`` (``lam_i = lam_c``), so ``V^-1 A V = diag(values) + N``
+    #: with ``N[i, c] = gamma``, ``N^2 = 0``: a Jordan pair (Loop at N = 3). Empty when ``A`` is diagonalizable.
+    jordan: tuple = ()
 
     @property
     def size(self) -> int:
-        return 2 * self.n + 8
+        return len(self.values)
 
 
 @dataclass(frozen=True)
@@ -90,173 +99,8 @@ class RoundedEigenData:
     n: int
     values: np.ndarray  # (K,)
     inverse: np.ndarray  # (K, K): inverse[i, j]
-    phi: np.ndarray  # (3, K, 16): phi[k, i, l]
-
-
-# ---------------------------------------------------------------------------------------------
-# exact helpers
-
-
-def _trig_pi(m: int, den: int, fn: str) -> arb:
-    """``cos`` or ``sin`` of ``pi m/den``, exact when the value is rational."""
-    q = Fraction(m, den) % 2
-    if fn == "sin":
-        q = (q - Fraction(1, 2)) % 2
-    exact = {Fraction(0): 1, Fraction(1): -1, Fraction(1, 2): 0, Fraction(3, 2): 0}
-    exact.update({Fraction(1, 3): Fraction(1, 2), Fraction(5, 3): Fraction(1, 2)})
-    exact.update({Fraction(2, 3): Fraction(-1, 2), Fraction(4, 3): Fraction(-1, 2)})
-    if q in exact:
-        return _arb(exact[q])
-    return arb.cos_pi_fmpq(_fq(q))
-
-
-# ---------------------------------------------------------------------------------------------
-# the 1-ring matrix as circulant blocks
-
-
-def _circulant(p: PatchMatrices) -> dict:
-    """Circulant weights of the 1-ring block ``S``, checked exactly (circulant, mirror symmetric)."""
-    n = p.n
-
-    def split(row, i):
-        ee, ef = {}, {}
-        for c, w in row.items():
-            if c == 0 or w == 0:
-                continue
-            if c > 2 * n:
-                raise NotDiagonalizableError(f"the 1-ring of valence {n} depends on points beyond it: not block triangular")
-            target = ee if c % 2 else ef
-            target[((c - 1) // 2 - i) % n] = w
-        return row.get(0, Fraction(0)), ee, ef
-
-    eo, ee, ef = split(p.sparse[1], 0)
-    fo, fe, ff = split(p.sparse[2], 0)
-    for i in range(n):
-        if split(p.sparse[1 + 2 * i], i) != (eo, ee, ef) or split(p.sparse[2 + 2 * i], i) != (fo, fe, ff):
-            raise NotDiagonalizableError(f"the 1-ring matrix at valence {n} is not block circulant")
-    oo, oe, of = split(p.sparse[0], 0)
-    if any(oe.get(k, 0) != oe.get(0, 0) for k in range(n)) or any(of.get(k, 0) != of.get(0, 0) for k in range(n)):
-        raise NotDiagonalizableError(f"the centre rule at valence {n} is not rotation invariant")
-    mirror = all(
-        ee.get(k, 0) == ee.get(-k % n, 0)
-        and ef.get(k, 0) == ef.get((-1 - k) % n, 0)
-        and fe.get(k, 0) == fe.get((1 - k) % n, 0)
-        and ff.get(k, 0) == ff.get(-k % n, 0)
-        for k in range(n)
-    )
-    if not mirror:
-        raise NotDiagonalizableError(f"the 1-ring rules at valence {n} are not mirror symmetric (the Fourier blocks are not real)")
-    return dict(oo=oo, oe=oe.get(0, Fraction(0)), of=of.get(0, Fraction(0)), eo=eo, ee=ee, ef=ef, fo=fo, fe=fe, ff=ff)
-
-
-def _block_entries(w: dict, n: int, j: int, cos, conv=lambda x: x):
-    """``(b_ee, b_ef, b_fe, b_ff)`` of frequency ``j`` with ``cos(m)`` = cos(pi m/n) in some arithmetic."""
-    b_ee = sum((conv(x) * cos(2 * j * k) for k, x in w["ee"].items()), 0)
-    b_ef = sum((conv(x) * cos(j * (2 * k + 1)) for k, x in w["ef"].items()), 0)
-    b_fe = sum((conv(x) * cos(j * (2 * k - 1)) for k, x in w["fe"].items()), 0)
-    b_ff = sum((conv(x) * cos(2 * j * k) for k, x in w["ff"].items()), 0)
-    return b_ee, b_ef, b_fe, b_ff
-
-
-def _choose(a: list, b: list) -> tuple[int, list]:
-    pick = 0 if sum(abs(float(x.mid())) for x in a) >= sum(abs(float(x.mid())) for x in b) else 1
-    v = (a, b)[pick]
-    if all(x.contains(0) for x in v):
-        raise _NeedPrecision
-    return pick, v
-
-
-class _Column:
-    """One eigenvector of ``S``: value, its entries in ``V0``, its row of ``V0^-1``, exact data."""
-
-    __slots__ = ("value", "right", "left", "exact_value", "exact_check")
-
-    def __init__(self, value, right, left, exact_value=None, exact_check=None):
-        self.value, self.right, self.left = value, right, left
-        self.exact_value, self.exact_check = exact_value, exact_check
-
-
-def _trig_table(n: int) -> list:
-    """``cos(pi m/(2n))`` for ``m = 0..4n-1``: cos(pi m/n) is entry ``2m``, sin(pi m/n) entry ``2m - n``."""
-    return [_trig_pi(m, 2 * n, "cos") for m in range(4 * n)]
-
-
-def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> list:
-    """``[0, ce T(2jk), cf T(j(2k+1)), ...]``: a Fourier pattern on ``(O, e_0, f_0, ...)``."""
-    shift = 0 if fn == "cos" else -n
-    out = [arb(0)]
-    for k in range(n):
-        out.append(ce * table[(4 * j * k + shift) % (4 * n)])
-        out.append(cf * table[(2 * j * (2 * k + 1) + shift) % (4 * n)])
-    return out
-
-
-def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
-    """The four eigenvectors of ``S`` at frequencies ``j`` and ``n - j`` (``0 < j < n/2``)."""
-    b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: table[(2 * m) % (4 * n)], _arb)
-    t, d = b_ee + b_ff, b_ee * b_ff - b_ef * b_fe
-    disc = t * t - 4 * d
-    if disc < 0:
-        raise NotDiagonalizableError(f"valence {n}, frequency {j}: complex eigenvalues (the data file holds real ones)")
-    if not disc > 0:
-        raise _NeedPrecision
-    cols = []
-    for lam in ((t + disc.sqrt()) / 2, (t - disc.sqrt()) / 2):
-        pick, z = _choose([b_ef, lam - b_ee], [lam - b_ff, b_fe])
-        _, y = _choose([b_fe, lam - b_ee], [lam - b_ff, b_ef])
-        (y,) = _biorthogonal([z], [y], arb(n))
-        check = _exact_frequency_check(w, n, j, pick)
-        for fn in ("cos", "sin"):
-            right = _pattern(table, n, j, fn, z[0], z[1])
-            left = _pattern(table, n, j, fn, 2 * y[0], 2 * y[1])
-            cols.append(_Column(lam, right, left, None, check))
-    return cols
-
-
-def _exact_frequency_check(w: dict, n: int, j: int, pick: int):
-    """Exact test, in Q(zeta_2n), of a coincidence ``lam = nu`` and of ``g . u0 = 0`` for both patterns."""
-
-    def check(nu: Fraction, g: dict):
-        field = CyclotomicField(2 * n)
-        zeta = lambda m: field.zeta(m % (2 * n))  # noqa: E731
-        b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: (zeta(m) + zeta(-m)) / 2)
-        if nu * nu - (b_ee + b_ff) * nu + (b_ee * b_ff - b_ef * b_fe) != 0:
-            return None
-        ze, zf = (b_ef, nu - b_ee) if pick == 0 else (nu - b_ff, b_fe)
-        total = field(0)
-        for c, x in g.items():
-            if 1 <= c <= 2 * n:
-                k = (c - 1) // 2
-                total = total + x * (ze * zeta(2 * j * k) if c % 2 else zf * zeta(j * (2 * k + 1)))
-        return total == 0
-
-    return check
-
-
-def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
-    """Eigenvectors of ``S`` at frequency 0 (3 x 3 block) or ``n/2`` (2 x 2 block in the (-1)^k basis)."""
-    if j == 0:
-        block = [[w["oo"], n * w["oe"], n * w["of"]], [w["eo"], sum(w["ee"].values()), sum(w["ef"].values())],
-                 [w["fo"], sum(w["fe"].values()), sum(w["ff"].values())]]
-    else:
-        alt = lambda d: sum((x * (-1) ** k for k, x in d.items()), Fraction(0))  # noqa: E731
-        block = [[alt(w["ee"]), alt(w["ef"])], [alt(w["fe"]), alt(w["ff"])]]
-    cols = []
-    for lam, right, left in _rational_eigen(block):
-        left = _biorthogonal(right, left, 1 if j == 0 else n)
-        for z, y in zip(right, left):
-            if j == 0:
-                full_r = [z[0]] + [z[1], z[2]] * n
-                full_l = [y[0]] + [y[1] / n, y[2] / n] * n
-            else:
-                full_r = [0] + [(-1) ** k * v for k in range(n) for v in (z[0], z[1])]
-                full_l = [0] + [(-1) ** k * v for k in range(n) for v in (y[0], y[1])]
-            exact = lam if isinstance(lam, Fraction) else None
-            check = None
-            if exact is not None:
-                check = lambda nu, g, lam=lam, r=full_r: None if nu != lam else sum(x * r[c] for c, x in g.items() if c < len(r)) == 0  # noqa: E731
-            cols.append(_Column(_arb(lam), [_arb(x) for x in full_r], [_arb(x) for x in full_l], exact, check))
-    return cols
+    phi: np.ndarray  # (3, K, P): phi[k, i, l], P = 16 (quads) or 12 (triangles)
+    jordan: tuple = ()  # (i, c, gamma) as in PatchEigenData, gamma correctly rounded
 
 
 # ---------------------------------------------------------------------------------------------
@@ -267,10 +111,22 @@ def _fraction(x: flint.fmpq) -> Fraction:
     return Fraction(int(x.p), int(x.q))
 
 
+_REGULAR: dict = {}
+
+
 def _regular_part(p: PatchMatrices):
-    """Exact eigenvalues ``nu``, eigenvectors ``W`` and ``W^-1`` of the 7 x 7 block ``S12``."""
-    k0 = 2 * p.n + 1
-    s12 = [[p.sparse[k0 + i].get(k0 + j, Fraction(0)) for j in range(7)] for i in range(7)]
+    """:func:`_regular_part_of` ``p``, remembered for the last patch (three steps ask for it)."""
+    key = (p.mesh, p.n, id(p))
+    if key not in _REGULAR or _REGULAR[key][0] is not p:
+        _REGULAR.clear()
+        _REGULAR[key] = (p, _regular_part_of(p))
+    return _REGULAR[key][1]
+
+
+def _regular_part_of(p: PatchMatrices):
+    """Exact eigenvalues ``nu``, eigenvectors ``W`` and ``W^-1`` of the regular block ``S12`` (7 x 7 quads, 5 x 5 triangles)."""
+    k0, r = p.ring_size, p.size - p.ring_size
+    s12 = [[p.sparse[k0 + i].get(k0 + j, Fraction(0)) for j in range(r)] for i in range(r)]
     nus, columns = [], []
     for lam, right, _ in _rational_eigen(s12):
         if not isinstance(lam, Fraction):
@@ -278,7 +134,7 @@ def _regular_part(p: PatchMatrices):
         for z in right:
             nus.append(lam)
             columns.append(z)
-    w = flint.fmpq_mat(7, 7, [_fq(columns[c][r]) for r in range(7) for c in range(7)])
+    w = flint.fmpq_mat(r, r, [_fq(columns[c][i]) for i in range(r) for c in range(r)])
     return nus, w, w.inv()
 
 
@@ -297,33 +153,45 @@ def patch_eigendata(scheme: Scheme, n: int, prec: int = 128) -> PatchEigenData:
 
 
 def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
-    n, k0, size = p.n, 2 * p.n + 1, 2 * p.n + 8
-    w = _circulant(p)
-    table = _trig_table(n)
-    cols = _rational_columns(w, n, 0)
-    for j in range(1, (n + 1) // 2):
-        cols += _frequency_columns(w, n, j, table)
-    if n % 2 == 0:
-        cols += _rational_columns(w, n, n // 2)
+    n, k0, size = p.n, p.ring_size, p.size
+    r = size - k0
+    cols = _ring_columns(p, prec)
     assert len(cols) == k0
     nus, wmat, winv = _regular_part(p)
     right_rows = [list(r) for r in zip(*(col.right for col in cols))]  # V0 as rows
-    dmat = _outer_coefficients(p, cols, nus, winv, right_rows)
+    dmat, jordan = _outer_coefficients(p, cols, nus, winv, right_rows)
     v0inv = flint.arb_mat([col.left for col in cols])
     lower = (-(flint.arb_mat(dmat) * v0inv)).tolist()
     v1 = (flint.arb_mat(wmat) * flint.arb_mat(dmat)).tolist()
     wa, wia = flint.arb_mat(wmat).tolist(), flint.arb_mat(winv).tolist()
-    zeros = [arb(0)] * 7
-    vec_rows = [row + zeros for row in right_rows] + [v1[r] + wa[r] for r in range(7)]
-    inv_rows = [col.left + zeros for col in cols] + [lower[r] + wia[r] for r in range(7)]
+    zeros = [arb(0)] * r
+    vec_rows = [row + zeros for row in right_rows] + [v1[i] + wa[i] for i in range(r)]
+    inv_rows = [col.left + zeros for col in cols] + [lower[i] + wia[i] for i in range(r)]
     values = tuple(col.value for col in cols) + tuple(_arb(nu) for nu in nus)
     # rows of the refined points beyond the K control points: sparse rows times V
-    beyond = [_sparse_times(p.sparse[size + i], vec_rows, size) for i in range(9)]
+    beyond = [_sparse_times(p.sparse[i], vec_rows, size) for i in range(size, len(p.sparse))]
     phi = []
     for rows in p.subpatches:
-        cols_k = [[values[c] * vec_rows[idx][c] for c in range(size)] if idx < size else beyond[idx - size] for idx in rows]
+        cols_k = [_av_row(vec_rows[idx], values, jordan) if idx < size else beyond[idx - size] for idx in rows]
         phi.append(flint.arb_mat(cols_k).transpose())
-    return PatchEigenData(n, prec, values, flint.arb_mat(vec_rows), flint.arb_mat(inv_rows), tuple(phi))
+    return PatchEigenData(n, prec, values, flint.arb_mat(vec_rows), flint.arb_mat(inv_rows), tuple(phi), tuple(jordan))
+
+
+def _av_row(v_row: list, values, jordan) -> list:
+    """A row of ``A V = V (diag(values) + N)``."""
+    out = [lam * x for lam, x in zip(values, v_row)]
+    for i, c, gamma in jordan:
+        out[c] = out[c] + gamma * v_row[i]
+    return out
+
+
+def _ring_columns(p: PatchMatrices, prec: int) -> list:
+    """The eigenvectors of the 1-ring block, frequency by frequency (quads here, triangles in
+    :mod:`symdecomp.analysis.triangle_eigendata`)."""
+    table = trig_table(p.n)
+    if p.mesh == "triangle":
+        return triangle_ring_columns(p, table, prec)
+    return quad_ring_columns(p, table)
 
 
 def _sparse_times(row: dict, rows: list, size: int) -> list:
@@ -334,17 +202,25 @@ def _sparse_times(row: dict, rows: list, size: int) -> list:
     return out
 
 
-def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
-    """``D[r][c] = (W^-1 S11 u_c)_r / (lam_c - nu_r)``, exactly 0 where ``lam_c = nu_r`` (checked exactly)."""
-    n, k0 = p.n, 2 * p.n + 1
-    s11 = flint.fmpq_mat(7, k0)
-    for i in range(7):
+def _g_rows(p: PatchMatrices, winv) -> list[dict]:
+    """The rows of ``W^-1 S11`` (exact, sparse)."""
+    k0, r = p.ring_size, p.size - p.ring_size
+    s11 = flint.fmpq_mat(r, k0)
+    for i in range(r):
         for c, x in p.sparse[k0 + i].items():
             if c < k0:
                 s11[i, c] = _fq(x)
     g_exact = winv * s11
-    g_rows = [{c: _fraction(g_exact[r, c]) for c in range(k0) if g_exact[r, c] != 0} for r in range(7)]
-    dmat = []
+    return [{c: _fraction(g_exact[i, c]) for c in range(k0) if g_exact[i, c] != 0} for i in range(r)]
+
+
+def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[list, list]:
+    """``(D, jordan)``: ``D[r][c] = (W^-1 S11 u_c)_r / (lam_c - nu_r)``; where ``lam_c = nu_r`` (decided
+    exactly) ``D[r][c] = 0``, and a nonzero ``gamma = (W^-1 S11 u_c)_r`` is a Jordan pair ``(k0 + r, c, gamma)``
+    (triangle patches; a quad patch that is not diagonalizable is refused)."""
+    n, k0 = p.n, p.ring_size
+    g_rows = _g_rows(p, winv)
+    dmat, jordan = [], []
     for r, nu in enumerate(nus):
         coeff = _sparse_times(g_rows[r], right_rows, k0)
         row = []
@@ -356,14 +232,16 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
             verdict = col.exact_check(nu, g_rows[r]) if col.exact_check else None
             if verdict is None:
                 raise _NeedPrecision
-            if not verdict:
+            if not verdict and p.mesh == "triangle":
+                jordan.append((k0 + r, c, coeff[c]))
+            elif not verdict:
                 raise NotDiagonalizableError(
                     f"valence {n}: the eigenvalue {nu} of the 1-ring and of the regular block has fewer eigenvectors "
                     "than its multiplicity (the patch matrix is not diagonalizable)"
                 )
             row.append(arb(0))
         dmat.append(row)
-    return dmat
+    return dmat, jordan
 
 
 # ---------------------------------------------------------------------------------------------
@@ -371,24 +249,125 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> list:
 
 
 
-def _round_all(data: PatchEigenData) -> RoundedEigenData | None:
-    size = data.size
+def _round_all(data: PatchEigenData, p: PatchMatrices | None = None) -> RoundedEigenData | None:
+    """Every entry correctly rounded, or None. With ``p``, entries that do not round are first
+    sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`) and rounded again."""
+    size, width = data.size, data.phi[0].ncols()
     with flint.ctx.workprec(128):  # ``+x`` rounds a ball to 128 bits (still containing it): cheaper to inspect
         values = [round_ball(+v) for v in data.values]
         inverse = [round_ball(+x) for x in data.inverse.entries()]
         phi = [round_ball(+x) for t in data.phi for x in t.entries()]
-    if None in values or None in inverse or None in phi:
+        jordan = tuple((i, c, round_ball(+g)) for i, c, g in data.jordan)
+    if None in values or any(g is None for _, _, g in jordan):
+        return None
+    bad_inverse = [divmod(q, size) for q, x in enumerate(inverse) if x is None]
+    bad_phi = [(q // (size * width), q // width % size, q % width) for q, x in enumerate(phi) if x is None]
+    if (bad_inverse or bad_phi) and p is not None:
+        _sharpen_lower_block(p, data, bad_inverse)
+        _sharpen_subpatch_zeros(p, data, bad_phi)
+        with flint.ctx.workprec(128):
+            for i, j in bad_inverse:
+                inverse[i * size + j] = round_ball(+data.inverse[i, j])
+            for k, i, l in bad_phi:
+                phi[(k * size + i) * width + l] = round_ball(+data.phi[k][i, l])
+    if None in inverse or None in phi:
         return None
     return RoundedEigenData(
-        data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, 16)
+        data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, width), jordan
     )
 
 
-def certified_eigendata(scheme: Scheme, n: int, prec: int = 1200, max_prec: int = 1 << 14) -> tuple[PatchEigenData, RoundedEigenData]:
-    """The eigen-data at valence ``n`` at the lowest precision (doubling from ``prec``) that rounds it all.
+def _sharpen_lower_block(p: PatchMatrices, data: PatchEigenData, entries) -> None:
+    """Replace the balls of ``V^-1``'s lower-left block that do not round by their exact rational values.
 
-    The default start, 1200 bits, is what the exact zeros need (symmetries make many entries 0,
-    and a ball around 0 rounds to 0.0 only inside ``(-2^-1075, 2^-1075)``).
+    Row ``r`` of that block is ``-D V0^-1 = -g_r (S - nu_r)^-1`` (``g = W^-1 S11``; the sum of
+    ``u_c l_c/(lam_c - nu_r)`` over the eigenvectors of ``S`` is the resolvent), an exact
+    rational row when ``S`` is rational and ``nu_r`` not one of its eigenvalues: one exact solve.
+    Entries that cancel to 0 by symmetry are the ones that need this (a ball around 0 rounds to
+    0.0 only inside ``(-2^-1075, 2^-1075)``, i.e. at over 1075 bits). Anything else is left alone.
+    """
+    k0, size = p.ring_size, p.size
+    bad = {(i, j) for i, j in entries if i >= k0 and j < k0}
+    if not bad or any(not isinstance(w, Fraction) for row in p.sparse[:k0] for w in row.values()):
+        return
+    nus, _, winv = _regular_part(p)
+    S = flint.fmpq_mat(k0, k0)
+    for i in range(k0):
+        for c, x in p.sparse[i].items():
+            S[i, c] = _fq(x)
+    for r in sorted({i - k0 for i, _ in bad}):
+        g = flint.fmpq_mat(k0, 1)
+        for i in range(size - k0):
+            for c, x in p.sparse[k0 + i].items():
+                if c < k0:
+                    g[c, 0] -= winv[r, i] * _fq(x)
+        M = S.transpose()
+        for i in range(k0):
+            M[i, i] -= _fq(nus[r])
+        try:
+            y = M.solve(g)
+        except ZeroDivisionError:  # nu_r is an eigenvalue of S: leave it to the working precision
+            continue
+        for i, j in bad:
+            if i == k0 + r:
+                data.inverse[i, j] = arb(y[j, 0])
+
+
+def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: int = 1200) -> None:
+    """Replace the sub-patch table balls around 0 that do not round by exact zeros, where 1200 bits prove them 0.
+
+    ``bad``: the entries ``(k, i, l)`` that did not round. Entry ``(k, i, l)`` is ``(A-bar v_i)`` at
+    one picked row, linear in the eigenvector ``v_i``; any eigenvector of the same frequency group is a multiple of it, so whether the entry is 0
+    does not depend on the scaling, and the column alone is recomputed at ``prec`` bits (the
+    group's Fourier block, ``D[:, i]``, ``W D[:, i]`` and the picked rows: ``O(N)`` work). An
+    entry is replaced only when its new ball lies inside ``(-2^-1075, 2^-1075)``, i.e. it is
+    exactly 0; everything else is left to the caller's precision loop. Quads only.
+    """
+    if p.mesh != "quad" or data.jordan:
+        return
+    size, k0 = p.size, p.ring_size
+    if not bad or any(i >= k0 or not data.phi[k][i, l].contains(0) for k, i, l in bad):
+        return
+    tiny = arb(2) ** -1075
+    with flint.ctx.workprec(prec):
+        w, table = circulant_weights(p), LazyTable(p.n)
+        nus, wmat, winv = _regular_part(p)
+        g_rows, wa = _g_rows(p, winv), flint.arb_mat(wmat)
+        for i in sorted({i for _, i, _ in bad}):
+            try:
+                cols, off = column_group(p, w, table, i)
+            except _NeedPrecision:
+                return
+            col = cols[off]
+            d = []
+            for r, nu in enumerate(nus):
+                gap = col.value - _arb(nu)
+                coeff = sum((_arb(x) * col.right[c] for c, x in g_rows[r].items()), arb(0))
+                if not gap.contains(0):
+                    d.append(coeff / gap)
+                elif col.exact_check is not None and col.exact_check(nu, g_rows[r]):
+                    d.append(arb(0))
+                else:
+                    return
+            vcol = list(col.right) + (wa * flint.arb_mat([[x] for x in d])).entries()
+            for k, i2, l in bad:
+                idx = p.subpatches[k][l]
+                if i2 != i:
+                    continue
+                val = col.value * vcol[idx] if idx < size else sum((_arb(x) * vcol[c] for c, x in p.sparse[idx].items()), arb(0))
+                if not (val.contains(0) and abs(val) < tiny):
+                    return
+                data.phi[k][i, l] = arb(0)
+
+
+def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int = 1 << 14) -> tuple[PatchEigenData, RoundedEigenData]:
+    """The eigen-data at valence ``n`` at the lowest precision (from ``prec``, then 1200, doubling) that rounds it all.
+
+    Symmetries make some entries exactly 0, and a ball around 0 rounds to 0.0 only inside
+    ``(-2^-1075, 2^-1075)``. Those in ``V^-1``'s lower-left block are computed exactly instead
+    (:func:`_sharpen_lower_block`), and those in the sub-patch tables are proved 0 column by
+    column at 1200 bits (:func:`_sharpen_subpatch_zeros`), so Catmull-Clark rounds at the 256-bit
+    start; anything left (Loop's cyclotomic 1-ring) makes the next try a whole one at 1200 bits.
 
     Every float64 returned is the correctly rounded value of the exact number, whose Arb ball
     is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits.
@@ -396,7 +375,7 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 1200, max_prec: int 
     while True:
         try:
             data = patch_eigendata(scheme, n, prec)
-            rounded = _round_all(data)
+            rounded = _round_all(data, patch_matrices(scheme, n))
         except PrecisionError:
             rounded = None
         if rounded is not None:

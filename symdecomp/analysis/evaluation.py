@@ -1,4 +1,7 @@
-"""Exact evaluation of the patch next to an extraordinary vertex (Stam's method).
+"""Exact evaluation of the patch next to an extraordinary vertex (Stam's method): Catmull-Clark and Loop.
+
+Loop's triangle patch takes the same path with its own domain, sub-triangles and box-spline
+basis (:mod:`symdecomp.analysis.triangle_evaluation`); the Catmull-Clark patch is described here.
 
 The patch ``(O, e_2, f_1, e_1)`` of a valence-``N`` vertex is evaluated from its ``K = 2N + 8``
 control points (order: :mod:`symdecomp.schemes.patch`) and the eigen-data of the patch matrix
@@ -40,6 +43,7 @@ import sympy as sp
 
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch_eigendata
 from symdecomp.analysis.masks import INDEX, LAMBDA1, limit_masks
+from symdecomp.analysis.triangle_evaluation import box_basis, check_regular_patch, eigen_masks, locate_triangle
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -83,16 +87,26 @@ class PatchEvaluator:
     tangent_masks: np.ndarray  # (2, K)
     #: Working precision (decimal digits) of the mpmath arithmetic; None for float64.
     dps: int | None = None
+    #: ``"quad"`` (Catmull-Clark: ``[0, 1]^2``, bicubic sub-patches) or ``"triangle"`` (Loop:
+    #: ``u, v >= 0``, ``u + v <= 1``, quartic box-spline sub-patches, :mod:`symdecomp.analysis.triangle_evaluation`).
+    mesh: str = "quad"
+    #: Jordan pairs ``(i, c, gamma)`` of the eigen-data (:class:`~symdecomp.analysis.eigendata.PatchEigenData`):
+    #: ``J^m`` adds ``m lam^(m-1) gamma x_c`` to component ``i``.
+    jordan: tuple = ()
 
     @classmethod
     def from_rounded(cls, scheme: Scheme, data: RoundedEigenData) -> PatchEvaluator:
-        pos, tan = _masks(scheme, data.n, float)
-        return cls(data.n, data.values, data.inverse, data.phi, pos, tan)
+        return cls.from_file_arrays(scheme, data.n, data.values, data.inverse, data.phi, data.jordan)
 
     @classmethod
-    def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi) -> PatchEvaluator:
-        pos, tan = _masks(scheme, n, float)
-        return cls(n, np.asarray(values, float), np.asarray(inverse, float), np.asarray(phi, float), pos, tan)
+    def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi, jordan=()) -> PatchEvaluator:
+        values, inverse, phi = np.asarray(values, float), np.asarray(inverse, float), np.asarray(phi, float)
+        if scheme.mesh == "triangle":
+            check_regular_patch(scheme)
+            pos, tan = eigen_masks(values, inverse, phi)
+        else:
+            pos, tan = _masks(scheme, n, float)
+        return cls(n, values, inverse, phi, pos, tan, None, scheme.mesh, tuple((i, c, float(g)) for i, c, g in jordan))
 
     @classmethod
     def exact(cls, scheme: Scheme, n: int, dps: int = 30) -> PatchEvaluator:
@@ -104,9 +118,14 @@ class PatchEvaluator:
             size = data.size
             values = np.array([mp(x) for x in data.values], dtype=object)
             inverse = np.array([[mp(data.inverse[i, j]) for j in range(size)] for i in range(size)], dtype=object)
-            phi = np.array([[[mp(t[i, l]) for l in range(16)] for i in range(size)] for t in data.phi], dtype=object)
-            pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(sp.N(e, dps + 10)) if isinstance(e, sp.Basic) else mpmath.mpf(e))
-        return cls(n, values, inverse, phi, pos, tan, dps + 10)
+            phi = np.array([[[mp(t[i, l]) for l in range(t.ncols())] for i in range(size)] for t in data.phi], dtype=object)
+            if scheme.mesh == "triangle":
+                check_regular_patch(scheme)
+                pos, tan = eigen_masks(values, inverse, phi)
+            else:
+                pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(sp.N(e, dps + 10)) if isinstance(e, sp.Basic) else mpmath.mpf(e))
+            jordan = tuple((i, c, mp(g)) for i, c, g in data.jordan)
+        return cls(n, values, inverse, phi, pos, tan, dps + 10, scheme.mesh, jordan)
 
     def evaluate(self, control_points, u, v) -> dict:
         """Point, first and second derivatives and unit normal at the parameters ``(u, v)`` (arrays).
@@ -121,14 +140,16 @@ class PatchEvaluator:
 
     def _evaluate(self, control_points, u, v) -> dict:
         c = np.asarray(control_points)
-        if c.ndim != 2 or c.shape[0] != 2 * self.n + 8:
-            raise EvaluationError(f"control points must have shape ({2 * self.n + 8}, d), got {c.shape}")
+        if c.ndim != 2 or c.shape[0] != self.values.size:
+            raise EvaluationError(f"control points must have shape ({self.values.size}, d), got {c.shape}")
         exact = self.values.dtype == object
         u = np.atleast_1d(np.asarray(u, dtype=object if exact else float))
         v = np.atleast_1d(np.asarray(v, dtype=object if exact else float))
         u, v = np.broadcast_arrays(u, v)
         if any(x < 0 or x > 1 for x in np.concatenate([u.ravel(), v.ravel()])):
             raise EvaluationError("parameters must lie in [0, 1]")
+        if self.mesh == "triangle" and any(a + b > 1 for a, b in zip(u.ravel(), v.ravel())):
+            raise EvaluationError("parameters of a triangle patch must satisfy u + v <= 1")
         shape, u, v = u.shape, u.ravel(), v.ravel()
         proj = self.inverse.dot(c)  # (K, d): the control points in the eigenbasis
         if exact:
@@ -141,7 +162,8 @@ class PatchEvaluator:
         origin = np.flatnonzero([a == 0 and b == 0 for a, b in zip(u, v)])
         if origin.size:
             t1, t2 = self.tangent_masks.dot(c)
-            nrm = _normals(t2[None, :], t1[None, :])[0]  # (t1, t2) turn from e_0 to e_1: against (u, v)
+            # quads: (t1, t2) turn from e_0 to e_1, against (u, v); triangles: from a_0 to a_1, with it
+            nrm = _normals(t1[None, :], t2[None, :])[0] if self.mesh == "triangle" else _normals(t2[None, :], t1[None, :])[0]
             for p in origin:
                 out["point"][p] = self.position_mask.dot(c)
                 out["normal"][p] = nrm
@@ -150,22 +172,33 @@ class PatchEvaluator:
         return {k: a.reshape(shape + (c.shape[1],)) for k, a in out.items()}
 
     def _vectorized(self, proj, u, v) -> dict:
+        triangle = self.mesh == "triangle"
         origin = (u == 0) & (v == 0)
-        m, e = np.frexp(np.where(origin, 1.0, np.maximum(u, v)))
+        m, e = np.frexp(np.where(origin, 1.0, u + v if triangle else np.maximum(u, v)))
         level = 1 - e + (m == 0.5)
         us, vs = np.ldexp(u, level - 1), np.ldexp(v, level - 1)
-        k = np.where(vs < 0.5, 0, np.where(us < 0.5, 2, 1))
-        s, t = np.where(k == 2, 2 * us, 2 * us - 1), np.where(k == 0, 2 * vs, 2 * vs - 1)
+        if triangle:
+            k, s, t, sign = locate_triangle(2 * us, 2 * vs, np)
+        else:
+            k = np.where(vs < 0.5, 0, np.where(us < 0.5, 2, 1))
+            s, t, sign = np.where(k == 2, 2 * us, 2 * us - 1), np.where(k == 0, 2 * vs, 2 * vs - 1), 1
         weights = self.values[None, :] ** (level - 1)[:, None]
-        scale = np.ldexp(1.0, level)[:, None]
+        scale = (np.ldexp(1.0, level) * sign)[:, None]
         out = {}
         for key, (ds, dt) in _DERIVATIVES.items():
-            basis = np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(u.size, 16)
+            if triangle:
+                basis = box_basis(s, t, ds, dt, float)
+            else:
+                basis = np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(u.size, 16)
             g = np.empty((u.size, self.values.size), dtype=np.result_type(self.phi, self.values))
             for kk in range(3):
                 sel = k == kk
                 g[sel] = basis[sel] @ self.phi[kk].T
-            out[key] = (g * weights) @ proj * scale ** (ds + dt)
+            total = (g * weights) @ proj
+            for i, c, gamma in self.jordan:
+                m = level - 1
+                total = total + (g[:, i] * m * self.values[i] ** np.maximum(m - 1, 0) * gamma)[:, None] * proj[c][None, :]
+            out[key] = total * scale ** (ds + dt)
         return out
 
     def _one(self, proj, c, u, v, out, p):
@@ -173,20 +206,30 @@ class PatchEvaluator:
             for key in _DERIVATIVES:
                 out[key][p] = mpmath.mpf(0)
             return
+        triangle = self.mesh == "triangle"
         level = 1
-        while max(u, v) <= 0.5:
+        while (u + v if triangle else max(u, v)) <= 0.5:
             u, v, level = u * 2, v * 2, level + 1
-        if v < 0.5:
-            k, s, t = 0, 2 * u - 1, 2 * v
+        if triangle:
+            k, s, t, sign = locate_triangle(2 * u, 2 * v)
+        elif v < 0.5:
+            k, s, t, sign = 0, 2 * u - 1, 2 * v, 1
         elif u < 0.5:
-            k, s, t = 2, 2 * u, 2 * v - 1
+            k, s, t, sign = 2, 2 * u, 2 * v - 1, 1
         else:
-            k, s, t = 1, 2 * u - 1, 2 * v - 1
-        scale = 2**level
+            k, s, t, sign = 1, 2 * u - 1, 2 * v - 1, 1
+        scale = 2**level * sign
         weights = self.values ** (level - 1)
         for key, (ds, dt) in _DERIVATIVES.items():
-            basis = np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel()  # index a + 4 b
-            out[key][p] = (weights * self.phi[k].dot(basis)).dot(proj) * scale ** (ds + dt)
+            if triangle:
+                basis = box_basis(np.array([s], dtype=object), np.array([t], dtype=object), ds, dt, mpmath.mpf)[0]
+            else:
+                basis = np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel()  # index a + 4 b
+            g = self.phi[k].dot(basis)
+            total = (weights * g).dot(proj)
+            for i, c, gamma in self.jordan:
+                total = total + g[i] * (level - 1) * self.values[i] ** max(level - 2, 0) * gamma * proj[c]
+            out[key][p] = total * scale ** (ds + dt)
 
 
 def _normals(du, dv):

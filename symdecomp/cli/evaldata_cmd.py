@@ -1,5 +1,8 @@
 """``symdecomp evaldata --n 3:N --out FILE``: Stam's eigen-data file, every float64 correctly rounded.
 
+``--scheme loop --format json``: the same for Loop's (N+6)-point patch (JSON only; layout in
+:mod:`symdecomp.output.evaldata`); a binary Loop request is refused with one line.
+
 Binary (default): the published file's layout (``int32 Nmax``, then per valence ``3..Nmax`` the
 eigenvalues, ``V^-1`` and the three sub-patch tables, little-endian), a drop-in replacement.
 ``--format json --digits D``: the same data as decimal strings of ``D`` significant digits.
@@ -21,7 +24,8 @@ def register(sub) -> None:
         help="Stam's eigen-data file for exact evaluation near an extraordinary vertex",
         description="Write the eigenvalues, inverse eigenvector matrix and sub-patch tables of the (2N+8)-point "
         "patch matrix for valences 3..N, each float64 the correctly rounded value of the exact number "
-        "(certified Arb balls), in the layout of the published data file; or as JSON decimal strings.",
+        "(certified Arb balls), in the layout of the published data file; or as JSON decimal strings. "
+        "With --scheme loop (JSON only): the same for Loop's (N+6)-point patch.",
     )
     p.add_argument("--n", type=valence_range("evaldata"), action=Once, required=True, metavar="3:N",
                    help="valences 3..N (the binary file starts at 3)")
@@ -39,6 +43,8 @@ def run(args) -> int:
     ns = args.n
     if ns[0] != 3:
         raise EvalDataFileError(f"--n {ns[0]}:{ns[-1]}: the file holds valences 3..N; give --n 3:{ns[-1]}")
+    if args.format == "binary" and args.scheme.mesh != "quad":
+        raise EvalDataFileError(f"--format binary: the binary layout is Stam's Catmull-Clark file; for --scheme {args.scheme.name} use --format json")
     check_writable(args.out)
     show = sys.stderr.isatty() and not args.json
     precs = []
@@ -55,7 +61,7 @@ def run(args) -> int:
             data = patch_eigendata(args.scheme, n, prec)
             precs.append(prec)
             balls.append(data)
-        content = dumps(json_document(balls, args.digits))
+        content = dumps(json_document(balls, args.digits, args.scheme.name))
     write_atomic(args.out, content)
     summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": len(content), "precision_bits": max(precs)}
     if args.json:

@@ -45,22 +45,15 @@ from types import MappingProxyType
 
 import sympy as sp
 
+from symdecomp.algebra.cyclotomic import Cyclotomic
 from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
 __all__ = [
-    "InvalidMeshError",
-    "QuadMesh",
-    "MeshRules",
-    "Refinement",
-    "mesh_rules",
-    "ring_mesh",
-    "ring_mesh_labels",
-    "cube_mesh",
-    "refine", "point_stencils", "refinement_matrix",
-    "central_rings",
+    "InvalidMeshError", "QuadMesh", "MeshRules", "Refinement", "mesh_rules", "ring_mesh", "ring_mesh_labels",
+    "cube_mesh", "refine", "point_stencils", "refinement_matrix", "central_rings",
 ]
 
 
@@ -69,6 +62,8 @@ class InvalidMeshError(InvalidInputError):
 
 
 def _as_weight(w: sp.Expr):
+    if isinstance(w, (Fraction, Cyclotomic)):  # already exact numbers (a caller's own arithmetic)
+        return w
     w = sp.sympify(w)
     if w.is_Rational:
         return Fraction(int(w.p), int(w.q))

@@ -25,6 +25,7 @@ from functools import lru_cache
 
 import flint
 
+from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import refinement_matrix, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme
@@ -54,22 +55,44 @@ def lattice_index(n: int, point: tuple[int, int]) -> int:
 
 @dataclass(frozen=True)
 class PatchMatrices:
-    """The patch's subdivision matrices at valence ``n`` (exact rationals)."""
+    """The patch's subdivision matrices at valence ``n`` (exact).
+
+    Quad meshes (Catmull-Clark): ``K = 2n + 8`` control points, the 1-ring first (``2n + 1``),
+    sub-patches of 16 B-spline points. Triangle meshes (Loop,
+    :mod:`symdecomp.schemes.triangle_patch`): ``K = n + 6``, the 1-ring ``n + 1``, sub-patches
+    of 12 box-spline points. Either way the matrix is block lower triangular: the 1-ring block,
+    then the regular points beyond it.
+    """
 
     n: int
-    #: ``K x K``, ``K = 2n + 8``: the control points after one refinement, in the same order.
-    matrix: flint.fmpq_mat
-    #: ``(K + 9) x K``: ``matrix`` followed by the rows of :data:`EXTRA_POINTS` (Stam's A-bar).
-    extended: flint.fmpq_mat
-    #: For k = 0, 1, 2, the rows of ``extended`` holding the 16 B-spline control points of
-    #: sub-patch k; point ``l = a + 4 b`` is at lattice ``corner + (a - 1, b - 1)``.
+    #: ``K x K``: the control points after one refinement, in the same order (``None`` when the
+    #: centre's weights are irrational, e.g. Loop's ``cos(2 pi/n)``: see :attr:`sparse`).
+    matrix: flint.fmpq_mat | None
+    #: ``(K + extra) x K``: ``matrix`` followed by the further points the sub-patches need (Stam's A-bar).
+    extended: flint.fmpq_mat | None
+    #: For k = 0, 1, 2, the rows of ``extended`` holding the control points of sub-patch k
+    #: (quads: point ``l = a + 4 b`` at lattice ``corner + (a - 1, b - 1)``; triangles: see
+    #: :mod:`symdecomp.schemes.triangle_patch`).
     subpatches: tuple[tuple[int, ...], ...]
-    #: The rows of ``extended`` as sparse ``{column: Fraction}`` dicts.
+    #: The rows of ``extended`` as sparse ``{column: weight}`` dicts: ``Fraction``, except in
+    #: row 0 where an irrational centre weight is an exact element of a cyclotomic field.
     sparse: tuple[dict, ...]
+    #: ``K``, the number of control points.
+    size: int = 0
+    #: Rows (and columns) ``0..ring_size - 1`` are the 1-ring: ``O`` and its neighbours.
+    ring_size: int = 0
+    #: ``"quad"`` or ``"triangle"``.
+    mesh: str = "quad"
 
-    @property
-    def size(self) -> int:
-        return 2 * self.n + 8
+    def float_extended(self):
+        """``extended`` as a float64 numpy array (irrational centre weights rounded)."""
+        import numpy as np
+
+        out = np.zeros((len(self.sparse), self.size))
+        for i, row in enumerate(self.sparse):
+            for j, w in row.items():
+                out[i, j] = float(w) if isinstance(w, Fraction) else float(to_acb(w).real.mid())
+        return out
 
 
 def _chart(n: int, ids: dict):
@@ -116,8 +139,13 @@ def patch_mesh(n: int, values=None):
 
 @lru_cache(maxsize=256)
 def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
-    """The ``(2n + 8)``-point patch matrices of ``scheme`` at valence ``n``, from one exact refinement."""
+    """The patch matrices of ``scheme`` at valence ``n`` from one exact refinement: ``2n + 8`` points
+    on quad meshes, ``n + 6`` on triangle meshes (:func:`~symdecomp.schemes.triangle_patch.triangle_patch_matrices`)."""
     n = check_valence(n)
+    if scheme.mesh == "triangle":
+        from symdecomp.schemes.triangle_patch import triangle_patch_matrices
+
+        return triangle_patch_matrices(scheme, n)
     mesh, vid, columns = patch_mesh(n)
     o, a, b = mesh.one_ring(0, start=columns[1])
     rows = [o]
@@ -137,4 +165,4 @@ def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     subpatches = tuple(
         tuple(lattice_index(n, (cu + a_ - 1, cv + b_ - 1)) for b_ in range(4) for a_ in range(4)) for cu, cv in SUBPATCH_CORNERS
     )
-    return PatchMatrices(n, matrix, extended, subpatches, tuple(entries))
+    return PatchMatrices(n, matrix, extended, subpatches, tuple(entries), k, 2 * n + 1, "quad")

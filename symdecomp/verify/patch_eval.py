@@ -11,12 +11,20 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+import mpmath
+
+from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.schemes.mesh import QuadMesh, refine
 from symdecomp.schemes.patch import patch_mesh
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.triangle_patch import centre_weights, position_mask, triangle_patch_rows
+from symdecomp.schemes.trimesh import TriangleMesh, refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
 
-__all__ = ["dyadic_limits", "numpy_baseline", "opensubdiv_dyadic_errors", "refined_lattice", "baseline_error"]
+__all__ = [
+    "dyadic_limits", "numpy_baseline", "opensubdiv_dyadic_errors", "refined_lattice", "baseline_error",
+    "triangle_patch_mesh", "refined_triangle_lattice", "triangle_dyadic_limits", "exact_to_mpf",
+]
 
 
 def refined_lattice(mesh: QuadMesh, vid, scheme: Scheme, level: int):
@@ -61,6 +69,71 @@ def dyadic_limits(scheme: Scheme, n: int, level: int, values) -> tuple[list, dic
     return control, limits
 
 
+def triangle_patch_mesh(n: int, values=None):
+    """``(mesh, columns)``: the 3-ring triangle mesh of valence ``n`` and the ids of the ``n + 6`` control points."""
+    mesh = triangle_ring_mesh(n, 3, values)
+    ids = {lab: i for i, lab in enumerate(triangle_ring_labels(n, 3))}
+    return mesh, [ids[lab] for lab in triangle_patch_rows(n)[: n + 6]]
+
+
+def refined_triangle_lattice(mesh: TriangleMesh, scheme: Scheme, level: int):
+    """``(mesh_L, ids)``: the triangle mesh after ``level`` exact refinements and the ids of the patch's
+    lattice points ``(i, j)``, ``i + j <= 2^L`` (the patch is the ring mesh's sector 0).
+
+    The centre's vertex rule is applied exactly (``Q(zeta_2n)`` when irrational, e.g. Loop's
+    ``cos(2 pi/n)``), so every value is exact.
+    """
+    n = len(mesh.one_ring(0)[1])
+    rules = triangle_mesh_rules(scheme)
+    centre = centre_weights(scheme, n)
+    weights = lambda m: centre if m == n else rules.vertex_weights(m)  # noqa: E731
+    ids = {(0, 0): 0, (1, 0): mesh.one_ring(0)[1][0], (0, 1): mesh.one_ring(0)[1][1]}
+    for lev in range(1, level + 1):
+        step = refine_triangles(mesh, rules, vertex_weights=weights)
+        new = {}
+        for u in range(2**lev + 1):
+            for v in range(2**lev + 1 - u):
+                if u % 2 == 0 and v % 2 == 0:
+                    new[(u, v)] = step.vertex_point[ids[(u // 2, v // 2)]]
+                    continue
+                if u % 2 and v % 2:  # the diagonal edge
+                    a, b = ((u - 1) // 2, (v + 1) // 2), ((u + 1) // 2, (v - 1) // 2)
+                else:
+                    a, b = ((u - u % 2) // 2, (v - v % 2) // 2), ((u + u % 2) // 2, (v + v % 2) // 2)
+                new[(u, v)] = step.edge_point[frozenset((ids[a], ids[b]))]
+        mesh, ids = step.mesh, new
+    return mesh, ids
+
+
+def exact_to_mpf(x):
+    """A Fraction or a (real) cyclotomic number as an mpmath number at the current precision."""
+    if isinstance(x, Fraction):
+        return mpmath.mpf(x.numerator) / x.denominator
+    return mpmath.mpf(to_acb(x, mpmath.mp.prec + 32).real.mid().str(mpmath.mp.dps + 10, radius=False))
+
+
+def triangle_dyadic_limits(scheme: Scheme, n: int, level: int, values) -> tuple[list, dict]:
+    """``(control_points, limits)`` of the Loop patch: control values and ``{(i, j): exact limit}``.
+
+    Limits are the position mask (:func:`~symdecomp.schemes.triangle_patch.position_mask`, at
+    valence ``n`` for the centre, 6 elsewhere) on the 1-ring of the vertex at ``(i/2^L, j/2^L)``
+    after ``L`` exact refinements; values are Fractions or elements of ``Q(zeta_2n)``.
+    """
+    mesh, columns = triangle_patch_mesh(n, values)
+    control = [mesh.values[c] for c in columns]
+    refined, ids = refined_triangle_lattice(mesh, scheme, level)
+    masks = {}
+    limits = {}
+    for key, x in ids.items():
+        _, ring = refined.one_ring(x)
+        if len(ring) not in masks:
+            masks[len(ring)] = position_mask(scheme, len(ring))
+        w_o, w_a = masks[len(ring)]
+        val = refined.values[x]
+        limits[key] = tuple(w_o * val[c] + w_a * sum((refined.values[r][c] for r in ring[1:]), refined.values[ring[0]][c]) for c in range(len(val)))
+    return control, limits
+
+
 def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed: int = 0) -> tuple[float, float]:
     """``(match, error)`` against OpenSubdiv at the dyadic points ``(i/2^L, j/2^L)`` of the patch.
 
@@ -69,7 +142,8 @@ def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed
     found among OpenSubdiv's vertices by its position (``match``: the largest distance, which
     must be at rounding level), and ``evaluator`` (a float64
     :class:`~symdecomp.analysis.evaluation.PatchEvaluator`) is compared with OpenSubdiv's limit
-    there (``error``: the largest coordinate difference). Needs the OpenSubdiv bridge.
+    there (``error``: the largest coordinate difference). Needs the OpenSubdiv bridge. Catmull-Clark
+    on the ``(2n + 8)``-point patch's quad mesh, Loop (triangle schemes) on the ``(n + 6)``-point one.
     """
     import random
 
@@ -78,11 +152,17 @@ def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed
     from symdecomp.verify.opensubdiv import osd_limit_points
 
     rnd = random.Random(seed)
-    mesh, vid, columns = patch_mesh(n, lambda s, u, v: tuple(Fraction(rnd.randint(-2**20, 2**20), 2**20) for _ in range(3)))
-    refined, ids = refined_lattice(mesh, vid, scheme, level)
+    values = lambda s, u, v: tuple(Fraction(rnd.randint(-2**20, 2**20), 2**20) for _ in range(3))  # noqa: E731
+    if scheme.mesh == "triangle":
+        mesh, columns = triangle_patch_mesh(n, values)
+        refined, ids = refined_triangle_lattice(mesh, scheme, level)
+    else:
+        mesh, vid, columns = patch_mesh(n, values)
+        refined, ids = refined_lattice(mesh, vid, scheme, level)
     points, limits = osd_limit_points(mesh, level)
     keys = sorted(ids)
-    ours = np.array([[float(x) for x in refined.values[ids[k]]] for k in keys])
+    with mpmath.workdps(30):
+        ours = np.array([[float(exact_to_mpf(x)) for x in refined.values[ids[k]]] for k in keys])
     dist = ((ours[:, None, :] - points[None, :, :]) ** 2).sum(axis=2)
     nearest = dist.argmin(axis=1)
     match = float(np.sqrt(dist[np.arange(len(keys)), nearest]).max())

@@ -177,17 +177,20 @@ def _refine(lib, mesh: QuadMesh, center: int, levels: int, start: int | None) ->
     return OsdRings(out, limit)
 
 
-def osd_limit_points(mesh: QuadMesh, levels: int) -> tuple[np.ndarray, np.ndarray]:
+def osd_limit_points(mesh, levels: int) -> tuple[np.ndarray, np.ndarray]:
     """``(points, limits)``: every vertex of ``mesh`` refined ``levels`` times in OpenSubdiv, and its limit position.
 
-    Both ``(V_L, 3)`` arrays in OpenSubdiv's vertex order of the last level (match the points
-    to find a vertex). Boundary vertices use OpenSubdiv's edge-only boundary rules.
+    A :class:`~symdecomp.schemes.mesh.QuadMesh` goes through Catmull-Clark, a triangle mesh
+    (:class:`~symdecomp.schemes.trimesh.TriangleMesh`) through Loop. Both ``(V_L, 3)`` arrays
+    in OpenSubdiv's vertex order of the last level (match the points to find a vertex).
+    Boundary vertices use OpenSubdiv's edge-only boundary rules.
     """
+    name = "symdecomp_osd_limit_points" if isinstance(mesh, QuadMesh) else "symdecomp_osd_loop_limit_points"
     lib = load_bridge()
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
         raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
     try:
-        fn = lib.symdecomp_osd_limit_points
+        fn = getattr(lib, name)
     except AttributeError:
         raise BridgeUnavailableError(f"the OpenSubdiv bridge has no limit-points function; run: {_build.REBUILD_COMMAND}") from None
     ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)

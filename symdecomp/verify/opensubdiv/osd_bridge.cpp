@@ -182,14 +182,15 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
     }
 }
 
-// Refine the quad mesh `levels` times (uniform Catmull-Clark) and write, for every vertex of
-// the last level, its refined position (points_out) and OpenSubdiv's limit position
+}  // extern "C"
+
+// Refine a mesh of `verts_per_face`-gons `levels` times (uniform, `scheme`) and write, for every
+// vertex of the last level, its refined position (points_out) and OpenSubdiv's limit position
 // (Far::PrimvarRefiner::Limit; limits_out), 3 doubles each. *count receives the number of
 // last-level vertices; if it exceeds `capacity` nothing is written and 7 is returned.
-int symdecomp_osd_limit_points(int n_vertices, int n_faces, const int *face_vertices,
-                               const double *positions, int levels, int capacity, int *count,
-                               double *points_out, double *limits_out, char *error,
-                               int error_len) {
+static int limit_points(Sdc::SchemeType scheme, int verts_per_face_count, int n_vertices, int n_faces,
+                        const int *face_vertices, const double *positions, int levels, int capacity,
+                        int *count, double *points_out, double *limits_out, char *error, int error_len) {
     try {
         osd_failed = false;
         Far::SetErrorCallback(record_error);
@@ -197,7 +198,7 @@ int symdecomp_osd_limit_points(int n_vertices, int n_faces, const int *face_vert
             set_error(error, error_len, "bad sizes");
             return 1;
         }
-        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), 4);
+        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), verts_per_face_count);
         Far::TopologyDescriptor desc;
         desc.numVertices = n_vertices;
         desc.numFaces = n_faces;
@@ -207,7 +208,7 @@ int symdecomp_osd_limit_points(int n_vertices, int n_faces, const int *face_vert
         sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
         using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
         std::unique_ptr<Far::TopologyRefiner> refiner(
-            Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+            Factory::Create(desc, Factory::Options(scheme, sdc)));
         if (!refiner || osd_failed) {
             set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
             return 2;
@@ -253,6 +254,26 @@ int symdecomp_osd_limit_points(int n_vertices, int n_faces, const int *face_vert
         set_error(error, error_len, "unknown C++ exception");
         return 9;
     }
+}
+
+extern "C" {
+
+// limit_points with OpenSubdiv's Catmull-Clark scheme on a quad mesh.
+int symdecomp_osd_limit_points(int n_vertices, int n_faces, const int *face_vertices,
+                               const double *positions, int levels, int capacity, int *count,
+                               double *points_out, double *limits_out, char *error,
+                               int error_len) {
+    return limit_points(Sdc::SCHEME_CATMARK, 4, n_vertices, n_faces, face_vertices, positions, levels,
+                        capacity, count, points_out, limits_out, error, error_len);
+}
+
+// limit_points with OpenSubdiv's Loop scheme on a triangle mesh.
+int symdecomp_osd_loop_limit_points(int n_vertices, int n_faces, const int *face_vertices,
+                                    const double *positions, int levels, int capacity, int *count,
+                                    double *points_out, double *limits_out, char *error,
+                                    int error_len) {
+    return limit_points(Sdc::SCHEME_LOOP, 3, n_vertices, n_faces, face_vertices, positions, levels,
+                        capacity, count, points_out, limits_out, error, error_len);
 }
 
 }  // extern "C"

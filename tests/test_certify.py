@@ -174,14 +174,20 @@ def test_certified_up_to_128():
         assert r.ok and r.multiplicities_certified, r.message
 
 
-def test_claim_full_spectrum_is_verified():
+def test_claim_full_spectrum_is_proved_for_every_n():
     from symdecomp.claims import Status, check_claim
+    from symdecomp.symbols import lam, omega
 
     result = check_claim("Spectrum (Eq. 34, Eq. 43)")
-    assert result.status is Status.VERIFIED and result.valences == (3, 48)
-    omega = sp.Symbol("omega")
-    assert sp.simplify(result.steps[0].expr - (omega / 16 + sp.Rational(5, 8) + 1 / (16 * omega))) == 0
-    assert result.steps[1].expr == sp.Rational(1, 16)
+    assert result.status is Status.PROVED and "n = 3..48" in str(result.evidence)
+    steps = {step.text.split(" (")[0].split(",")[0]: step.expr for step in result.steps}
+    trace = next(e for t, e in steps.items() if t.startswith("Sum of the two closed forms"))
+    product = next(e for t, e in steps.items() if t.startswith("Their product"))
+    assert sp.simplify(trace - (omega / 16 + sp.Rational(5, 8) + 1 / (16 * omega))) == 0
+    assert product == sp.Rational(1, 16)
+    # the chain's last identity: x^2 - trace x + product is det(xI - M(omega)) of Catmull-Clark
+    q = next(e for t, e in steps.items() if t.startswith("$q(x"))
+    assert sp.expand(q - (lam**2 - trace * lam + product)) == 0
 
 
 def test_complex_frequency_zero_eigenvalues_are_certified():

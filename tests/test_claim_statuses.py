@@ -23,10 +23,10 @@ EXPECTED = {
     "Eq. 9": P,
     "Proposition 2.1": P,
     # Section 3
-    "Section 3: symmetry": V,
-    "Section 3: 9 and 25 points": V,
-    "Section 3: boundary influence": V,
-    "Section 3: Catmull-Clark support": V,
+    "Section 3: symmetry": P,  # window of sectors: every n
+    "Section 3: 9 and 25 points": P,  # exact at n = 4, the only case
+    "Section 3: boundary influence": P,  # window of sectors: every n
+    "Section 3: Catmull-Clark support": P,  # window of sectors: every n
     # Section 4
     "Eq. 10-11": P,
     "Eq. 12-13": P,
@@ -66,7 +66,7 @@ EXPECTED = {
     "Section 5.3: smaller eigenvalues": C,  # equal at n = 3
     "Section 5.3: quadratic speed": P,
     "Section 5.3: construction": P,  # frequencies j = 1, 2 closed under the rules for every n (symbolic row i)
-    "Section 5.3: basis function": V,
+    "Section 5.3: basis function": P,  # resultants in n without integer zeros
     # Section 6
     "Proposition 6.1": C,  # index range 0<i,j<n-1 as printed
     "Proposition 6.2": C,  # same index range
@@ -85,7 +85,7 @@ EXPECTED = {
     "Tuning and multiplicities (after Eq. 51)": P,
     "1-ring suffices (after Eq. 51)": P,  # left eigenvectors of 1, lambda_1 vanish outside the 1-ring, every n
     "Larger neighbourhoods (after Eq. 51)": C,  # the 2-ring adds 1/8, 1/16, 1/32, 1/64, not null columns
-    "Spectrum (Eq. 34, Eq. 43)": V,  # certified cross-check, n = 3..48
+    "Spectrum (Eq. 34, Eq. 43)": P,  # block factorization for symbolic n (certified n = 3..48 too)
 }
 
 

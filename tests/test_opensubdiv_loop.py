@@ -37,3 +37,36 @@ def test_loop_tangent_masks_span_opensubdiv_tangents(n):
     C, *_ = np.linalg.lstsq(ours.T, theirs.T, rcond=None)
     assert np.abs(ours.T @ C - theirs.T).max() < 1e-13 * max(1.0, np.abs(theirs).max())
     assert abs(np.linalg.det(C)) > 1e-8  # and they span it (two independent tangents)
+
+
+@pytest.mark.parametrize("n", range(3, 13))
+def test_the_loop_oracle_agrees_row_by_row(n):
+    from symdecomp.verify.oracle_loop import compare_loop_with_opensubdiv
+
+    result = compare_loop_with_opensubdiv(n, levels=16)
+    names = [p.name for p in result.predictions]
+    assert {"one-step matrix", "spectrum", "limit mask", "tangent plane", "limit position"} <= set(names)
+    assert [x for x in names if x.startswith("shrink rate")] == [f"shrink rate j={j}" for j in range(n // 2 + 1)]
+    assert result.agrees, [p for p in result.predictions if not p.agrees]
+
+
+def test_the_loop_oracle_catches_a_wrong_vertex_weight(monkeypatch):
+    """Predicting with Warren's weight (equal to Loop's only at n = 3 and 6) flips the rows it enters."""
+    import symdecomp.verify.oracle_loop as oracle_loop
+    from symdecomp.schemes.loop import loop_warren
+
+    monkeypatch.setattr(oracle_loop, "loop", loop_warren)
+    wrong = {p.name: p.agrees for p in oracle_loop.compare_loop_with_opensubdiv(5, levels=16).predictions}
+    assert not wrong["one-step matrix"] and not wrong["spectrum"] and not wrong["limit mask"] and not wrong["shrink rate j=0"]
+    assert wrong["shrink rate j=1"] and wrong["shrink rate j=2"]  # the edge rule is Loop's: other frequencies agree
+    assert oracle_loop.compare_loop_with_opensubdiv(6, levels=16).agrees  # Warren's weight is Loop's at n = 6
+
+
+def test_oracle_command_for_loop(capsys):
+    from symdecomp.cli import main
+
+    assert main(["oracle", "--scheme", "loop", "--n", "5:6", "--levels", "12", "--json"]) == 0
+    import json
+
+    data = json.loads(capsys.readouterr().out)
+    assert [r["n"] for r in data] == [5, 6] and all(r["agrees"] for r in data)

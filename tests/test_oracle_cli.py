@@ -18,3 +18,9 @@ def test_oracle_rejects_bad_arguments(capsys):
     assert main(["oracle", "--n", "2:5"]) == 2
     assert "valence" in capsys.readouterr().err
     assert main(["oracle", "--n", "4", "--levels", "1"]) == 2
+
+
+def test_oracle_takes_catmull_clark_and_loop_only(capsys):
+    assert main(["oracle", "--n", "4", "--scheme", "loop-warren"]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "Catmull-Clark and Loop with their standard weights" in err

@@ -48,8 +48,12 @@ def test_loop_and_warren_weights():
     assert loop_warren().vertex_rule.each_a.subs(N, 3) == sp.Rational(3, 16)
     assert loop_warren().vertex_rule.each_a.subs(N, 10) == sp.Rational(3, 80)
     depends_on_n = triangle_scheme("bad", sp.Rational(1, 8), edge_end=sp.Rational(3, 8) + 1 / N, edge_side=sp.Rational(1, 8) - 1 / N)
+    # its 1-ring matrix is assembled from the stencils; the 2-ring needs rules of the mesh, the block form rules free of n
+    assert ring_subdivision_matrix(depends_on_n, 5, 1).exact_matrix() == subdivision_matrix(depends_on_n, 5)
     with pytest.raises(InvalidSchemeError, match="depends on the valence"):
-        ring_subdivision_matrix(depends_on_n, 5, 1)
+        ring_subdivision_matrix(depends_on_n, 5, 2)
+    with pytest.raises(InvalidSchemeError, match="depends on the valence n, so its circulant blocks change with n"):
+        ring_blocks(depends_on_n, 1)
     lopsided = triangle_scheme("lopsided", sp.Rational(1, 8), edge_end=sp.Rational(1, 2), edge_side=0)
     assert ring_subdivision_matrix(lopsided, 5, 2).size == 16
 
@@ -223,3 +227,32 @@ def test_cyclotomic_values_are_exact():
     assert cyclotomic_value(sp.cos(2 * sp.pi / m) ** 2 + sp.sin(2 * sp.pi / m) ** 2, {m: 9}).poly == 1
     with pytest.raises(ValueError):
         cyclotomic_value(sp.sqrt(2))
+
+
+@pytest.mark.parametrize("scheme, rings, valences", [(catmull_clark(), 1, range(3, 11)), (loop(), 1, range(3, 11)), (loop(), 2, range(3, 7))])
+def test_structural_certificate_certifies_the_dense_multiplicities(scheme, rings, valences):
+    for n in valences:
+        fast = certify_ring(scheme, n, rings, method="structure")
+        dense = certify_ring(scheme, n, rings)
+        assert fast.multiplicities_certified and dense.multiplicities_certified, fast.message
+        assert fast.multiplicities == dense.multiplicities and fast.distinct == dense.distinct
+
+
+def test_cluster_multiplicities_refuse_what_they_cannot_prove():
+    """Merging two clusters, or listing one twice, is caught (exactly: unequal roots; in Arb: overlap)."""
+    import dataclasses
+
+    from symdecomp.verify.ring_certify import cluster_multiplicities
+
+    def merge_two(spectrum):
+        a, b, *rest = spectrum.eigenvalues[1:]
+        merged = dataclasses.replace(a, members=a.members + b.members, multiplicity=a.multiplicity + b.multiplicity)
+        return dataclasses.replace(spectrum, eigenvalues=(spectrum.eigenvalues[0], merged, *rest))
+
+    for scheme, n, why in ((loop(), 7, "not all equal"), (catmull_clark(), 5, "not decidable exactly")):
+        spectrum = ring_spectrum(scheme, n, 1, exact=False, jordan=False)
+        blocks = ring_blocks(scheme, 1)
+        assert cluster_multiplicities(scheme, blocks, spectrum) is None
+        assert why in cluster_multiplicities(scheme, blocks, merge_two(spectrum))
+        twice = dataclasses.replace(spectrum, eigenvalues=spectrum.eigenvalues + spectrum.eigenvalues[-1:])
+        assert "overlap" in cluster_multiplicities(scheme, blocks, twice)

@@ -93,11 +93,14 @@ def per_frequency_matrix(scheme: Scheme) -> sp.ImmutableMatrix:
 
 
 def per_frequency_matrix_at(scheme: Scheme, n: int, j: int) -> sp.ImmutableMatrix:
-    """``M_j`` at a concrete valence and frequency ``0 <= j < 2n`` (exact, with ``omega_n^j``)."""
+    """``M_j`` at a concrete valence and frequency ``0 <= j < 2n`` (exact, with ``omega_n^j``).
+
+    Weights of the edge and face rules that depend on ``n`` are evaluated at this ``n`` too.
+    """
     n = check_valence(n)
     j = check_frequency(j, n)
     w = root_of_unity(n, j)
-    return sp.ImmutableMatrix(per_frequency_matrix(scheme).subs(OMEGA, w).applyfunc(sp.expand))
+    return sp.ImmutableMatrix(per_frequency_matrix(scheme).subs({OMEGA: w, N: n}).applyfunc(sp.expand))
 
 
 @cache

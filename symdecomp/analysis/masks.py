@@ -26,8 +26,9 @@ the weight on ``O`` is 0.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, cached_property
 
+import flint
 import mpmath
 import sympy as sp
 
@@ -96,16 +97,37 @@ def limit_masks(scheme: Scheme) -> LimitMasks:
 
 @dataclass(frozen=True)
 class MasksAtValence:
-    """The masks at one valence, exact (sympy), in the vertex order ``O, a_0.., b_0..``."""
+    """The masks at one valence, exact (sympy), in the vertex order ``O, a_0.., b_0..``.
+
+    The exact weights are built on first use (``4n`` exact trigonometric values: slow at large
+    ``n``); :meth:`as_json` prints them from certified Arb balls of the closed forms and needs
+    the exact values only where a ball contains 0 (a weight that may vanish exactly).
+    """
 
     #: The valence.
     n: int
-    #: The position mask, ``2n + 1`` weights summing to 1.
-    position: tuple[sp.Expr, ...]
-    #: The two tangent masks, each ``2n + 1`` weights (scaling in the module docstring).
-    tangents: tuple[tuple[sp.Expr, ...], tuple[sp.Expr, ...]]
-    #: ``lambda_1``, the subdominant eigenvalue.
-    subdominant: sp.Expr
+    #: The closed forms (:func:`limit_masks`) they are evaluated from.
+    closed_forms: LimitMasks
+
+    @cached_property
+    def subdominant(self) -> sp.Expr:
+        """``lambda_1``, the subdominant eigenvalue."""
+        return self.closed_forms.subdominant.subs(N, self.n)
+
+    @cached_property
+    def position(self) -> tuple[sp.Expr, ...]:
+        """The position mask, ``2n + 1`` weights summing to 1."""
+        w = [x.subs(N, self.n) for x in self.closed_forms.position]
+        return (w[0],) + (w[1],) * self.n + (w[2],) * self.n
+
+    @cached_property
+    def tangents(self) -> tuple[tuple[sp.Expr, ...], tuple[sp.Expr, ...]]:
+        """The two tangent masks, each ``2n + 1`` weights (scaling in the module docstring)."""
+        return tuple((sp.Integer(0),) + tuple(self._exact(w, i) for w in (a_w, b_w) for i in range(self.n))
+                     for a_w, b_w in zip(self.closed_forms.tangent_a, self.closed_forms.tangent_b))
+
+    def _exact(self, closed_form: sp.Expr, i: int) -> sp.Expr:
+        return closed_form.subs({N: self.n, INDEX: i, LAMBDA1: self.subdominant})
 
     def as_json(self, digits: int = 20) -> dict:
         digits = check_digits(digits)
@@ -119,12 +141,41 @@ class MasksAtValence:
         def split(mask):
             return {"O": num(mask[0]), "a": [num(w) for w in mask[1 : self.n + 1]], "b": [num(w) for w in mask[self.n + 1 :]]}
 
+        position = [num(x.subs(N, self.n)) for x in self.closed_forms.position]
         return {
             "n": self.n,
-            "position": split(self.position),
-            "tangents": [split(t) for t in self.tangents],
+            "position": {"O": position[0], "a": [position[1]] * self.n, "b": [position[2]] * self.n},
+            "tangents": self._tangent_texts(digits, num),
             "subdominant": num(self.subdominant),
         }
+
+    def _tangent_texts(self, digits: int, num) -> list[dict]:
+        """The tangent masks as text, from Arb balls of the closed forms; an entry whose ball
+        contains 0 is printed from its exact value (it may be exactly 0)."""
+        from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
+        from symdecomp.analysis.ring_spectrum import acb_text
+
+        n, cf = self.n, self.closed_forms
+        try:
+            lam = compile_expression(cf.subdominant, (N,), "arb")
+            forms = [[compile_expression(w, (N, INDEX, LAMBDA1), "arb") for w in pair] for pair in zip(cf.tangent_a, cf.tangent_b)]
+        except UnsupportedExpressionError:  # pragma: no cover - the closed forms use + * ** cos sin sqrt only
+            return [{"O": num(t[0]), "a": [num(w) for w in t[1 : n + 1]], "b": [num(w) for w in t[n + 1 :]]} for t in self.tangents]
+        out = []
+        with flint.ctx.workprec(int((digits + 20) * 3.33) + 64):
+            nn, tolerance = flint.acb(n), flint.arb(2) ** int(-3.33 * (digits + 12))
+            lam1 = lam(nn)
+            for pair, exact in zip(forms, zip(cf.tangent_a, cf.tangent_b)):
+                texts = []
+                for f, closed in zip(pair, exact):
+                    row = []
+                    for i in range(n):
+                        z = f(nn, flint.acb(i), lam1)
+                        certain = z.imag.contains(0) and not z.real.contains(0) and z.real.rad() < abs(z.real.mid()) * tolerance
+                        row.append(acb_text(flint.acb(z.real), digits) if certain else num(self._exact(closed, i)))
+                    texts.append(row)
+                out.append({"O": num(sp.Integer(0)), "a": texts[0], "b": texts[1]})
+        return out
 
 
 def limit_masks_at(scheme: Scheme, n: int) -> MasksAtValence:
@@ -132,15 +183,7 @@ def limit_masks_at(scheme: Scheme, n: int) -> MasksAtValence:
     n = check_valence(n)
     if n < scheme.minimum_valence():
         raise InvalidSchemeError(f"scheme {scheme.name!r} needs valence >= {scheme.minimum_valence()}, got {n}")
-    m = limit_masks(scheme)
-    lam1 = m.subdominant.subs(N, n)
-    position = (m.position[0].subs(N, n),) + (m.position[1].subs(N, n),) * n + (m.position[2].subs(N, n),) * n
-    tangents = []
-    for a_w, b_w in zip(m.tangent_a, m.tangent_b):
-        a_list = tuple(a_w.subs({N: n, INDEX: i}) for i in range(n))
-        b_list = tuple(b_w.subs({N: n, INDEX: i, LAMBDA1: lam1}) for i in range(n))
-        tangents.append((sp.Integer(0),) + a_list + b_list)
-    return MasksAtValence(n, position, (tangents[0], tangents[1]), lam1)
+    return MasksAtValence(n, limit_masks(scheme))
 
 
 def check_masks_exactly(scheme: Scheme, n: int) -> tuple[bool, bool, bool]:

@@ -137,7 +137,19 @@ def read_blocks(S: RingMatrix, scheme: Scheme) -> RingBlocks:
 
 @lru_cache(maxsize=32)
 def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
-    """The block form of ``scheme``'s ``rings``-ring matrix, read at one valence and checked at two more."""
+    """The block form of ``scheme``'s ``rings``-ring matrix, read at one valence and checked at two more.
+
+    Only the centre's vertex rule may depend on ``n`` (it enters through :data:`CENTRE_WEIGHTS`);
+    edge or face weights in ``n`` give blocks that change with the valence, which one reading
+    cannot capture, so such a scheme is refused in one line.
+    """
+    dependent = [rule for rule in scheme.stencils() if any(sp.sympify(w).has(N) for w in (rule.center, *(x for _, x in rule.a + rule.b)))]
+    if dependent:
+        raise InvalidSchemeError(
+            f"scheme {scheme.name!r}: its {'edge' if dependent[0] is scheme.edge_rule else 'face'} rule depends on the valence n, "
+            "so its circulant blocks change with n; the any-scheme analysis (triangle meshes, --rings) needs rules other than "
+            "the centre's vertex rule to be independent of n"
+        )
     n0 = 4 * rings + 7
     if n0 == regular_valence(scheme.mesh):  # pragma: no cover - 4K + 7 is odd
         n0 += 1

@@ -15,6 +15,7 @@ At a valence the polynomial is the full matrix's (FLINT), written through the ce
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import lru_cache
 
 import flint
@@ -23,14 +24,14 @@ import sympy as sp
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_spectrum import frequency_factors
 from symdecomp.schemes.full_matrix import entries_characteristic_polynomial
-from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
+from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_valence
 
-__all__ = ["ring_charpoly", "product_form", "frequency_product_values"]
+__all__ = ["ring_charpoly", "product_form", "frequency_product_values", "ProductIdentity", "product_identity"]
 
 
 def _power(f, e):
@@ -88,22 +89,57 @@ def frequency_product_values(blocks: RingBlocks, n: int, weights: dict, points) 
     return out
 
 
-def ring_charpoly(scheme: Scheme, n: int, rings: int = 1) -> dict:
-    """JSON-ready: the product form, the polynomial at ``n`` (exact coefficients) and whether they agree."""
+@dataclass(frozen=True)
+class ProductIdentity:
+    """``chi_S = det(l I - E_0) prod_k det(l I - E(omega^k))`` tested exactly at one valence.
+
+    The one home of the comparison behind ``charpoly`` and ``check --certify``: ``chi_S`` of
+    the refined matrix (FLINT, no block structure) against the product of the frequency
+    factors (resultants, :func:`frequency_product_values`) at ``size`` rational points, for
+    each corner of the centre weights that are not rational (both sides are affine in them).
+    """
+
+    #: The refined matrix.
+    matrix: RingMatrix
+    #: The centre-weight symbols kept free (algebraic weights), sorted by name.
+    free: tuple
+    #: The other centre weights: symbol -> exact rational value at ``n``.
+    fixed: dict
+    #: The corners: ``{symbol: 0 or 1}`` for the free symbols (one corner, ``{}``, if none).
+    corners: tuple
+    #: ``chi_S`` at each corner (``flint.fmpq_poly``).
+    chis: tuple
+    #: ``None`` if the identity holds, else ``(corner, l, chi_S(l), product at l)`` of the first failure.
+    failure: tuple | None
+
+
+def product_identity(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks | None = None) -> ProductIdentity:
+    """Test the product identity at valence ``n`` exactly (``blocks``: the block form under test)."""
     n = check_valence(n)
-    blocks = ring_blocks(scheme, rings)
+    blocks = blocks or ring_blocks(scheme, rings)
     S = ring_subdivision_matrix(scheme, n, rings)
-    free = sorted(S.weights, key=str)
+    free = tuple(sorted(S.weights, key=str))
     v = scheme.vertex_rule
     rule = dict(zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)))
     fixed = {s: sp.sympify(w).subs(N, n) for s, w in rule.items() if s not in free}
-    corners = [{s: 0 for s in free}] + [{s: int(s == t) for s in free} for t in free]
-    polys, matches = [], True
+    corners = tuple([{s: 0 for s in free}] + [{s: int(s == t) for s in free} for t in free])
+    chis, failure = [], None
     for point in corners:
         chi = entries_characteristic_polynomial(S.entries(point), S.size)
-        values = frequency_product_values(blocks, n, {**fixed, **{s: sp.Integer(x) for s, x in point.items()}}, range(S.size))
-        matches &= all(chi(flint.fmpq(x)) == values[x] for x in range(S.size))
-        polys.append([sp.Rational(int(c.p), int(c.q)) for c in chi.coeffs()])
+        chis.append(chi)
+        if failure is None:
+            values = frequency_product_values(blocks, n, {**fixed, **{s: sp.Integer(x) for s, x in point.items()}}, range(S.size))
+            bad = next((x for x in range(S.size) if chi(flint.fmpq(x)) != values[x]), None)
+            if bad is not None:
+                failure = (point, bad, chi(flint.fmpq(bad)), values[bad])
+    return ProductIdentity(S, free, fixed, corners, tuple(chis), failure)
+
+
+def ring_charpoly(scheme: Scheme, n: int, rings: int = 1) -> dict:
+    """JSON-ready: the product form, the polynomial at ``n`` (exact coefficients) and whether they agree."""
+    identity = product_identity(scheme, n, rings)
+    S, free, corners, matches = identity.matrix, identity.free, identity.corners, identity.failure is None
+    polys = [[sp.Rational(int(c.p), int(c.q)) for c in chi.coeffs()] for chi in identity.chis]
     actual = S.weight_values()
     coeffs = [sp.expand(p0 + sum((actual[s] * (p[i] - p0) for s, p in zip(free, polys[1:])), sp.Integer(0))) for i, p0 in enumerate(polys[0])]
     polynomial = sp.Add(*[c * LAM**i for i, c in enumerate(coeffs)])

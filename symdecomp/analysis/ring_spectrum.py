@@ -139,6 +139,9 @@ class RingEigenvalue:
     factor: sp.Expr
     #: Sizes of its Jordan blocks when known (all 1: not defective), else ``None``.
     jordan: tuple[int, ...] | None
+    #: The roots in its cluster, ``(frequency k, factor index, root index)``, one per unit of
+    #: multiplicity (the factor's exponent repeats a root); for certificates of multiplicities.
+    members: tuple[tuple[int, int, int], ...] = ()
 
     def as_json(self) -> dict:
         return {
@@ -297,6 +300,7 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
                     exact=value,
                     factor=f.poly.xreplace({N: n}) if k == 0 else f.poly,
                     jordan=_jordan(blocks, ff, items, g, n, exact_w) if jordan else None,
+                    members=tuple(sorted(items[x][1:] for x in g)),
                 )
             )
     size = 1 + blocks.class_count * n

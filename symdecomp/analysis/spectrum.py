@@ -24,6 +24,7 @@ from functools import cache
 import mpmath
 import sympy as sp
 
+from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
 from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.schemes.full_matrix import parameter_values
@@ -121,6 +122,46 @@ def _numeric(expr: sp.Expr, subs: dict, dps: int):
         return re_m if im_m == 0 else mpmath.mpc(re_m, im_m)
 
 
+def _frequency_values(ev, n: int, subs: dict, work: int) -> list[tuple]:
+    """``(dominant, subdominant)`` of ``M_k`` for ``k = 1..n-1``, each to ``work`` digits.
+
+    The closed forms are compiled once (:func:`~symdecomp.algebra.compile.compile_expression`)
+    and evaluated at ``c = cos(k pi/n)``, ``s = sin(k pi/n)`` with twice the working precision
+    (plus a margin), so that a square root of a discriminant that vanishes (a double eigenvalue)
+    is still right to ``work`` digits and groups as one value. A closed form the compiler does
+    not know is evaluated by sympy instead (slower, same digits).
+    """
+    exprs = [sp.sympify(e).xreplace(subs) for e in (ev.dominant, ev.subdominant)]
+    try:
+        compiled = [compile_expression(e, (cos_jtheta, sin_jtheta, N)) for e in exprs]
+    except UnsupportedExpressionError:
+        out = []
+        for k in range(1, n):
+            angle = sp.pi * sp.Rational(k, n)
+            point = {cos_jtheta: sp.cos(angle), sin_jtheta: sp.sin(angle), N: n}
+            out.append(tuple(_numeric(e, point, work) for e in exprs))
+        return out
+    out = []
+    with mpmath.workdps(2 * work + 10):
+        nn = mpmath.mpf(n)
+        for k in range(1, n):
+            angle = mpmath.pi * k / n
+            c, s = mpmath.cos(angle), mpmath.sin(angle)
+            values = [f(c, s, nn) for f in compiled]
+            out.append(tuple(_rounded(v, work) for v in values))
+    return out
+
+
+def _rounded(value, work: int):
+    """An mpmath value at ``work`` digits (real when its imaginary part is zero at that precision)."""
+    value = mpmath.mpmathify(value)
+    with mpmath.workdps(work):
+        if isinstance(value, mpmath.mpc):
+            re, im = +value.real, +value.imag
+            return re if abs(im) <= mpmath.mpf(10) ** (-work) * max(1, abs(re)) else mpmath.mpc(re, im)
+        return +value
+
+
 def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters: dict | None = None) -> Spectrum:
     """Evaluate the closed-form eigenvalues at valence ``n`` and group them with multiplicities.
 
@@ -141,11 +182,8 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     for expr in recursion_eigenvalues(scheme):
         raw.append((_numeric(expr, {N: n, **subs}, work), 0))
     ev = tangent_eigenvalues(scheme)
-    for k in range(1, n):
-        angle = sp.pi * sp.Rational(k, n)
-        point = {cos_jtheta: sp.cos(angle), sin_jtheta: sp.sin(angle), N: n, **subs}
-        for expr in (ev.dominant, ev.subdominant):
-            raw.append((_numeric(expr, point, work), k))
+    for k, pair in zip(range(1, n), _frequency_values(ev, n, subs, work)):
+        raw.extend((value, k) for value in pair)
     with mpmath.workdps(work):
         tol = mpmath.mpf(10) ** (-(digits + 15))
         raw.sort(key=lambda vk: (-abs(vk[0]), -mpmath.re(vk[0]), -mpmath.im(vk[0])))

@@ -6,6 +6,14 @@ only informally; the checks use the definition of :mod:`symdecomp.analysis.suppo
 inside / on the boundary / outside when all / some / none of its sectors carry ``phi_P``),
 computed from the Catmull-Clark rules on a mesh of rings around a vertex of valence ``n``
 (all other vertices regular), and re-checked by exact refinement of ``e_P``.
+
+**For every n.** Valences ``3 .. FIRST_VALENCE - 1`` are computed on the mesh. From ``FIRST_VALENCE`` on,
+:mod:`symdecomp.analysis.support_window` gives every support test as the test on one window of sectors (the
+same for every such ``n`` up to rotation and relabelling), a rule for far pairs and one for the centre's ``n``
+sectors; the hypotheses of the propagation argument are checked for every ``n`` at once as rational functions
+of ``n`` (:func:`~symdecomp.analysis.support_window.hypotheses_for_every_valence`). A mesh scheme for which
+they fail at some valence keeps the exact range (``verified``). The exact valences above ``FIRST_VALENCE - 1``
+(to 7) cross-check the window. "9 and 25 points" is about ``n = 4`` only: its exact computation is its proof.
 """
 
 from __future__ import annotations
@@ -15,17 +23,52 @@ from fractions import Fraction
 import sympy as sp
 
 from symdecomp.analysis.support import Region, classify_support, support_relation
+from symdecomp.analysis.support_window import (
+    CENTRE,
+    FIRST_VALENCE,
+    NEAR,
+    centre_hoods_local,
+    centre_region,
+    far_region,
+    hypotheses_for_every_valence,
+    predicted_region,
+    ring_of,
+    window,
+)
+from symdecomp.analysis.support_window import (
+    region as window_region,
+)
 from symdecomp.claims.notation import eq, gt
 from symdecomp.claims.notation import n as N
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.mesh import cube_mesh, mesh_rules, point_stencils, refine, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme
 
-#: Valences the exact checks run for (kept small enough for seconds).
-SYMMETRY_VALENCES = (3, 10)
-SUPPORT_VALENCES = (3, 12)
-INFLUENCE_VALENCES = (3, 12)
+#: Valences the exact checks run for: below FIRST_VALENCE they are the proof, from there on a cross-check of the
+#: window argument (and the whole evidence when that argument does not apply to the scheme).
+SYMMETRY_VALENCES = (3, 7)
+SUPPORT_VALENCES = (3, 7)
+INFLUENCE_VALENCES = (3, 7)
+
+
+def _every_valence(scheme: Scheme) -> tuple[list[str], tuple[Step, ...]]:
+    """The part of the argument for every ``n >= FIRST_VALENCE`` shared by the Section 3 claims: the rules' hypotheses
+    for every valence (exact, in ``n``) and the locality of the window (:mod:`symdecomp.analysis.support_window`).
+    Returns the failures (empty: the argument applies) and the steps."""
+    failures, shown = hypotheses_for_every_valence(scheme)
+    w = window()
+    if not w.local_labels_within(NEAR):
+        failures.append(f"N_loc of a face at a vertex of sector 0 reaches beyond sectors -{NEAR}..{NEAR}")
+    if not centre_hoods_local(w):
+        failures.append("N_loc of the centre's faces is not the rotation of one local set")
+    if any(centre_region(w, t)[1] >= FIRST_VALENCE for t in w.types if ring_of(t) > 1):
+        failures.append(f"a vertex off the star is carried by {FIRST_VALENCE} or more of the centre's sectors")
+    steps = tuple(Step(f"for every $n \\ge 3$, exactly: {what}", expr) for what, expr in shown)
+    steps += (Step(f"window of sectors $-3..3$: $N_{{loc}}(F)$ for the faces $F$ at the {len(w.types)} vertex types of "
+                   f"sector 0 lies in sectors $-{NEAR}..{NEAR}$, so for $n \\ge {FIRST_VALENCE}$ every support test is the "
+                   "window's up to relabelling", sp.Integer(len(w.types))),)
+    return failures, steps
 
 
 def _not_a_mesh_scheme(scheme: Scheme) -> CheckResult | None:
@@ -86,6 +129,9 @@ def _symmetry(scheme: Scheme) -> CheckResult:
                         f"{labels[p]}, but {labels[p]} is {rel[q, p].value} for the support of {labels[q]}",
                     )
         pairs += len(verts) ** 2
+        w = window()
+        if n >= FIRST_VALENCE and any(rel[p, q] is not predicted_region(w, labels[p], labels[q], n) for p in verts for q in verts):
+            return CheckResult(Status.ERROR, f"n = {n}: the window of sectors does not predict the support relation of the mesh")
         if n in (lo, hi):
             steps.append(
                 Step(
@@ -109,14 +155,48 @@ def _symmetry(scheme: Scheme) -> CheckResult:
                     )
         cube_pairs += len(verts) ** 2
     steps.append(Step(f"the cube refined 0, 1, 2 times (8, 26, 98 vertices): all {cube_pairs} ordered pairs agree", sp.Integer(cube_pairs)))
+    failures, general = _every_valence(scheme)
+    w = window()
+    asymmetric = _window_asymmetry(w)
+    if asymmetric is not None and not failures:
+        return CheckResult(Status.REFUTED, f"asymmetric pair for every n >= {FIRST_VALENCE}",
+                           counterexample=f"every n >= {FIRST_VALENCE}: {asymmetric}", steps=tuple(steps) + general)
+    direct = (f"all {pairs} ordered pairs of vertices within 3 rings of a vertex of valence {lo}..{hi} (other vertices "
+              f"regular), and all {cube_pairs} pairs on the cube refined 0-2 times (several valence-3 vertices), are "
+              "classified alike both ways")
+    if failures:
+        return CheckResult(Status.VERIFIED, f"{direct}; not for every n: {'; '.join(failures)}", steps=tuple(steps),
+                           valences=SYMMETRY_VALENCES)
+    pair_types = len(w.types) ** 2
+    steps.append(Step(f"the window's prediction equals the relation computed on the whole mesh for every pair at $n = {FIRST_VALENCE}, "
+                      f"\\dots, {hi}$ (a cross-check of the relabelling)"))
+    steps.append(Step(f"$n \\ge {FIRST_VALENCE}$: the {pair_types} pairs of vertex types at sector offsets $-{NEAR}..{NEAR}$ "
+                      "(window), the far pairs (they meet only through the star of the centre) and the pairs with the "
+                      "centre agree both ways", sp.Integer(pair_types * (2 * NEAR + 2) + len(w.types))))
     return CheckResult(
-        Status.VERIFIED,
-        f"Catmull-Clark: all {pairs} ordered pairs of vertices within 3 rings of a vertex of valence "
-        f"{lo}..{hi} (other vertices regular), and all {cube_pairs} pairs on the cube refined 0-2 times "
-        "(several valence-3 vertices), are classified alike both ways",
-        steps=tuple(steps),
-        valences=SYMMETRY_VALENCES,
+        Status.PROVED,
+        f"for every n: n = {lo}..{FIRST_VALENCE - 1} exactly on the mesh; for n >= {FIRST_VALENCE} the support test of a "
+        "pair reads the faces near it and, through the faces at the centre, the star of the centre, so it is the test on "
+        f"one window of sectors -3..3 (the same for every such n, up to rotation and relabelling), a far-pair rule and a "
+        "rule for the centre's n sectors, all computed and symmetric; the rules' hypotheses (nonnegative weights, positive "
+        f"vertex weights and limit mask, a simple eigenvalue 1) hold for every n as rational functions of n. Also {direct}",
+        steps=tuple(steps) + general,
     )
+
+
+def _window_asymmetry(w) -> str | None:
+    """The first pair the window classifies differently both ways (near, far or with the centre), or ``None``."""
+    for p in w.types:
+        for q in w.types:
+            for t in range(-NEAR, NEAR + 1):
+                one, other = window_region(w, (t, *p[1:]), q), window_region(w, (-t, *q[1:]), p)
+                if one is not other:
+                    return f"Q = {q} is {one.value} for the support of P = {(t, *p[1:])}, but P is {other.value} for Q's"
+            if far_region(w, p, q) is not far_region(w, q, p):
+                return f"far pair of types {p}, {q}: {far_region(w, p, q).value} one way, {far_region(w, q, p).value} the other"
+        if window_region(w, CENTRE, p) is not centre_region(w, p)[0]:
+            return f"Q = {p} is {window_region(w, CENTRE, p).value} for the support of the centre, but not conversely"
+    return None
 
 
 @claim(
@@ -146,12 +226,13 @@ def _regular_counts(scheme: Scheme) -> CheckResult:
             counterexample=f"regular Catmull-Clark: {inside} vertices inside, {boundary} on the boundary",
         )
     return CheckResult(
-        Status.VERIFIED,
-        "regular Catmull-Clark: 9 vertices inside the support of P (P and its 8 neighbours), 16 on its "
-        "boundary, 25 in all; that the 9 determine the derivatives is the claim 'Section 3: boundary "
-        "influence'; '25 are needed to prove continuity' is the paper's reading of the count, not checked",
+        Status.PROVED,
+        "the statement concerns one case, the regular vertex (n = 4), and the exact computation there is its proof: "
+        "9 vertices inside the support of P (P and its 8 neighbours), 16 on its boundary, 25 in all (the rules' "
+        "hypotheses checked at valence 4, the sector tests stable over 2 levels of exact refinement); that the 9 "
+        "determine the derivatives is the claim 'Section 3: boundary influence'; '25 are needed to prove continuity' "
+        "is the paper's reading of the count, not checked",
         steps=steps,
-        valences=(4, 4),
     )
 
 
@@ -164,6 +245,7 @@ def _regular_counts(scheme: Scheme) -> CheckResult:
     "of $P$.",
 )
 def _boundary_influence(scheme: Scheme) -> CheckResult:
+    # long: the exact refinement (the proof below FIRST_VALENCE) and the argument for every n give one verdict.
     if (result := _not_a_mesh_scheme(scheme)) is not None:
         return result
     cc = scheme
@@ -199,19 +281,51 @@ def _boundary_influence(scheme: Scheme) -> CheckResult:
             if not any(val[0] != 0 for val in two_ring.values()):
                 return CheckResult(Status.ERROR, f"n = {n}: the test data vanished on the 2-ring of P; the check would be empty")
         checked += len(others)
+    direct = (f"valences {lo}..{hi}: the {checked} vertices within 3 rings that are on the boundary of or outside the support "
+              f"of P have zero weight in the 1-ring of P at levels 0..{levels} of exact refinement (while their sum is "
+              "nonzero on the 2-ring of P at every level)")
+    failures, general = _every_valence(scheme)
+    closure = _one_ring_closure(scheme)
+    if closure is not None:
+        failures.append(closure)
+    w = window()
+    non_inside_ok = all((window_region(w, CENTRE, t) is Region.INSIDE) == (ring_of(t) <= 1) for t in w.types)
+    if not non_inside_ok:
+        failures.append("the vertices inside the support of P are not its closed 1-ring")
+    steps = (Step("weight of a boundary vertex in the 1-ring of $P$ at every checked level", sp.Integer(0)),)
+    if failures:
+        return CheckResult(
+            Status.VERIFIED,
+            f"{direct}; at every further level too, because the new 1-ring depends only on the old one; not for every n: "
+            + "; ".join(failures),
+            steps=steps,
+            valences=INFLUENCE_VALENCES,
+        )
     return CheckResult(
-        Status.VERIFIED,
-        f"valences {lo}..{hi}: the {checked} vertices within 3 rings that are on the boundary of or outside "
-        f"the support of P have zero weight in the 1-ring of P at levels 0..{levels} of exact refinement "
-        "(while their sum is nonzero on the 2-ring of P at every level); at every further level too, "
-        "because the new 1-ring depends only on the old one "
-        "(the subdivision matrix, checked against the mesh rules), and the 1-ring at all levels "
-        "determines the limit position and the derivatives at P (the eigen-expansion of Section 5)",
-        steps=(
-            Step("weight of a boundary vertex in the 1-ring of $P$ at every checked level", sp.Integer(0)),
-        ),
-        valences=INFLUENCE_VALENCES,
+        Status.PROVED,
+        f"for every n: the vertices inside the support of P are its closed 1-ring (n = {lo}..{FIRST_VALENCE - 1} exactly, "
+        f"n >= {FIRST_VALENCE} by the window argument of 'Section 3: Catmull-Clark support'), and the new 1-ring of P reads "
+        "only the old closed 1-ring (vertex point: the vertex rule at valence n; edge and face points at P: the corners of "
+        "the faces at P, computed on the window, the same for every n), so by induction no other vertex has weight in the "
+        "1-ring of P at any level, and the 1-rings at all levels determine the limit position and derivatives at P (the "
+        f"eigen-expansion of Section 5). Also {direct}",
+        steps=steps + general,
     )
+
+
+def _one_ring_closure(scheme: Scheme) -> str | None:
+    """On the window: the edge points of the centre's edges and the face points of its faces read only the closed
+    1-ring of the centre (``None``), or which point reads what else."""
+    w = window()
+    face, edge, _ = point_stencils(w.mesh, mesh_rules(scheme))
+    star = {i for i, lab in w.labels.items() if ring_of(lab) <= 1}
+    for fi in w.mesh.faces_of(0):
+        if {x for _, x in face[fi]} - star:
+            return f"the face point of the centre's face {w.mesh.faces[fi]} reads outside the 1-ring"
+    for key, stencil in edge.items():
+        if 0 in key and {x for _, x in stencil} - star:
+            return f"the edge point of {sorted(w.labels[v] for v in key)} reads outside the 1-ring"
+    return None
 
 
 @claim(
@@ -289,9 +403,27 @@ def _cc_support(scheme: Scheme) -> CheckResult:
         )
     )
     phi_P = sp.Function("phi_P")
+    failures, general = _every_valence(scheme)
+    w = window()
+    expected = {0: Region.INSIDE, 1: Region.INSIDE, 2: Region.BOUNDARY, 3: Region.OUTSIDE}
+    wrong = [t for t in w.types if window_region(w, CENTRE, t) is not expected[ring_of(t)]]
+    if wrong and not failures:
+        t = wrong[0]
+        return CheckResult(Status.REFUTED, f"every n >= {FIRST_VALENCE}: a ring-{ring_of(t)} vertex is {window_region(w, CENTRE, t).value}",
+                           counterexample=f"every valence n >= {FIRST_VALENCE}: vertex {t} (sector, u, v) at ring distance "
+                           f"{ring_of(t)} is {window_region(w, CENTRE, t).value} for the support of P", steps=tuple(steps) + general)
+    counts = {r: sum(1 for t in w.types if window_region(w, CENTRE, t) is r) for r in Region}
+    steps.append(Step(f"$n \\ge {FIRST_VALENCE}$ (window, $n$ sectors): inside $1 + n \\cdot {counts[Region.INSIDE]}$, boundary "
+                      f"$n \\cdot {counts[Region.BOUNDARY]}$", 1 + N * counts[Region.INSIDE] + N * counts[Region.BOUNDARY]))
+    every = not failures and not wrong
     return CheckResult(
-        Status.VERIFIED,
+        Status.PROVED if every else Status.VERIFIED,
         Text(
+            *((f"for every n: n = {lo}..{FIRST_VALENCE - 1} exactly on the mesh, n >= {FIRST_VALENCE} on one window of "
+               "sectors (the support test of a vertex reads the faces near it and the star of the centre, the same for every "
+               "such n up to rotation; the rules' hypotheses hold for every n as rational functions of n): inside = the "
+               "closed 1-ring (", 1 + N * counts[Region.INSIDE], " vertices), boundary = the ", N * counts[Region.BOUNDARY],
+               " vertices at ring distance 2 (the boundary of the 2-ring), ring 3 outside. Also, exactly, ") if every else ()),
             f"valences {lo} to {hi}: inside = the closed 1-ring (", 2 * N + 1, " vertices), boundary = the ", 4 * N,
             " vertices at ring distance 2 (the boundary of the 2-ring), ring 3 outside; sector tests unchanged over 1-2 "
             "levels of exact refinement of ", sp.Symbol("e_P"), ", inside exactly where ", gt(phi_P(sp.Symbol("Q")), 0),
@@ -299,7 +431,8 @@ def _cc_support(scheme: Scheme) -> CheckResult:
             f"that is a disk: on the unrefined cube (2-ring = whole surface) the corner opposite P is "
             f"{c0.regions[opposite].value} the support, ", eq(phi_P(sp.Symbol("Q")), c0.limit_values[opposite]),
             " there, not in the 1-ring",
+            *(() if every else ("; not for every n: ", "; ".join(failures) or "the window disagrees")),
         ),
-        steps=tuple(steps),
-        valences=SUPPORT_VALENCES,
+        steps=tuple(steps) + (general if every else ()),
+        valences=None if every else SUPPORT_VALENCES,
     )

@@ -7,7 +7,7 @@ import sympy as sp
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
 from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.cli.common import add_rings_option, add_scheme_option, flag, general_path, print_json, refuse_together, valence
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -37,7 +37,7 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def _run_general(args) -> int:
+def _run_general(args, why: str = "") -> int:
     from symdecomp.analysis.ring_charpoly import ring_charpoly
 
     if args.free_weights:
@@ -47,6 +47,8 @@ def _run_general(args) -> int:
         print_json(data)
         return 0 if data["matches_matrix"] else 1
     print(f"{args.scheme.name}: det(x I - S), S the {args.rings}-ring matrix of size {data['size']}, x written as {LAM}")
+    if why:
+        print(f"(no closed form: {why}; the product form instead)")
     print(f"product form (all n): {data['product_form']}")
     print(f"  det(x I - E_0) = {' * '.join(data['frequency_zero_factors'])}   (w_O = 1 - n w_a - n w_b: the centre's weights)")
     print(f"  det(x I - E(omega)) = {' * '.join(data['frequency_factors'])}")
@@ -78,7 +80,12 @@ def run(args) -> int:
         return _run_general(args)
     refuse_together(args, "--free-weights", "--scheme", "--free-weights uses the Catmull-Clark edge and face rules")
     scheme = with_free_vertex_rule(args.scheme) if args.free_weights else args.scheme
-    cf = closed_form_characteristic_polynomial(scheme)
+    try:
+        cf = closed_form_characteristic_polynomial(scheme)
+    except InvalidSchemeError as exc:  # wider stencils: Eq. 51 does not apply, the product form does
+        if args.free_weights:
+            raise
+        return _run_general(args, str(exc).split(";")[-1].strip())
     coefficients, matches = _coefficients(scheme, args.n, args.free_weights)
     if args.json:
         print_json(

@@ -61,7 +61,7 @@ def register(sub) -> None:
     flag(p, "--certify", help="prove each valence exactly instead of comparing numerically (not with --dps)")
     flag(p, "--structural", help="with --certify: the O(n) proof (the refined matrix equals the bordered circulant-block "
          "matrix of the frequency matrices, entry by entry; Remark 6.1) instead of the dense characteristic polynomial; "
-         "multiplicities are then not certified")
+         "multiplicities are certified from the frequency factors where exact arguments apply (the mult. column says)")
     p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=os.cpu_count() or 1,
                    help="worker processes at most (default: the number of CPUs; never more than the valences or CPUs)")
     flag(p, "--json", help="print one JSON object: {rows: [...], summary: {...}}")

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from symdecomp.claims import Status, all_claims, check_claim, scope_summary
-from symdecomp.cli.common import Once, add_scheme_option, flag, print_json, progress
+from symdecomp.cli.common import Once, add_scheme_option, flag, print_json, progress, refuse_non_quad
 
 
 def register(sub) -> None:
@@ -39,6 +39,7 @@ def section(text: str) -> str:
 
 
 def run(args) -> int:
+    refuse_non_quad(args.scheme, "claims")
     claims = all_claims()
     if args.section:
         claims = [c for c in claims if c.section == args.section or c.section.startswith(args.section + ".")]

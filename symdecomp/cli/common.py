@@ -34,6 +34,8 @@ __all__ = [
     "add_scheme_option",
     "add_rings_option",
     "general_path",
+    "closed_form_obstacle",
+    "refuse_non_quad",
     "given",
     "refuse_together",
     "progress",
@@ -44,8 +46,8 @@ __all__ = [
 LIMITS = {
     "digits": (MAX_DIGITS, "more digits than anyone reads; each one costs evaluation time"),
     "dps": (MAX_DPS, "an eigenvalue solve at this precision takes hours"),
-    "spectrum": (2000, "the time grows with N: N = 1000 takes about half a minute"),
-    "masks": (1000, "the exact left eigenvectors grow with N: N = 300 takes about 10 s"),
+    "spectrum": (2000, "the time grows with N (one evaluation per frequency): N = 1000 takes about a second"),
+    "masks": (1000, "2N + 1 weights per mask, each a certified ball: N = 1000 takes about a second"),
     "charpoly": (300, "the exact characteristic polynomial of the (2N+1)x(2N+1) matrix grows like N^3"),
     "tune": (1000, "the exact solve grows with N: N = 300 takes about 10 s"),
     "tune --table": (200, "one exact evaluation per valence: N = 60 takes about 10 s"),
@@ -211,6 +213,31 @@ def add_rings_option(parser: argparse.ArgumentParser) -> None:
 def general_path(args) -> bool:
     """Whether a command takes the any-scheme route (triangle meshes or ``--rings`` > 1)."""
     return args.scheme.mesh != "quad" or getattr(args, "rings", 1) != 1
+
+
+def refuse_non_quad(scheme: Scheme, command: str) -> None:
+    """One line for a command about the paper's claims given a scheme on triangle meshes."""
+    if scheme.mesh != "quad":
+        raise InvalidInputError(
+            f"--scheme {scheme.name}: {command} works on the paper's claims, statements about quad meshes; a {scheme.mesh}-mesh "
+            "scheme is analysed by spectrum, check, charpoly, masks and oracle"
+        )
+
+
+def closed_form_obstacle(scheme: Scheme) -> str | None:
+    """Why the paper's closed forms in ``c = cos(j pi/n)`` (Section 5) do not apply to ``scheme`` (``None`` when they do).
+
+    They need a quad scheme with mirror-symmetric rules, so that ``M_j`` depends on ``c`` alone.
+    """
+    from symdecomp.analysis.tangent import tangent_eigenvalues
+    from symdecomp.symbols import sin_jtheta
+
+    if scheme.mesh != "quad":
+        return f"they are derived for quad meshes, not {scheme.mesh} meshes"
+    ev = tangent_eigenvalues(scheme)
+    if ev.trace.has(sin_jtheta) or ev.determinant.has(sin_jtheta):
+        return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"
+    return None
 
 
 def progress(iterable, total: int, label: str, *, enabled: bool = True):

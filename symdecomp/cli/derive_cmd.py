@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import Once, add_scheme_option, flag, given, print_json, progress
+from symdecomp.cli.common import Once, add_scheme_option, flag, given, print_json, progress, refuse_non_quad
 from symdecomp.cli.files import check_output_directory, replace_owned_files
 from symdecomp.errors import InvalidInputError
 from symdecomp.output.latex import claim_latex, derivation_files
@@ -69,6 +69,7 @@ def _out(text: str) -> Path:
 
 
 def run(args) -> int:
+    refuse_non_quad(args.scheme, "derive")
     for option in ("--out", "--json", "--no-progress"):
         if args.label and given(args, option[2:].replace("-", "_")):
             raise InvalidInputError(f"--label and {option} cannot be used together: --label prints LaTeX to stdout and writes no files")

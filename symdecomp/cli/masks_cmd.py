@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, valence
+from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
 
 
 def register(sub) -> None:
@@ -49,7 +49,7 @@ def _run_general(args) -> int:
 
 
 def run(args) -> int:
-    if general_path(args):
+    if general_path(args) or closed_form_obstacle(args.scheme):  # no closed forms: the any-scheme route
         return _run_general(args)
     masks = limit_masks_at(args.scheme, args.n)
     data = masks.as_json(args.digits)

@@ -1,25 +1,29 @@
-"""``symdecomp oracle --n 3:12``: the toolkit's Catmull-Clark predictions checked against OpenSubdiv."""
+"""``symdecomp oracle --n 3:12 [--scheme loop]``: the toolkit's Catmull-Clark or Loop predictions checked against OpenSubdiv."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
-from symdecomp.cli.common import LIMITS, Once, flag, integer, print_json, progress, valence_range
+from symdecomp.cli.common import LIMITS, Once, add_scheme_option, flag, integer, print_json, progress, valence_range
+from symdecomp.errors import InvalidInputError
 
 
 def register(sub) -> None:
     p = sub.add_parser(
         "oracle",
-        help="compare the toolkit's predictions with OpenSubdiv's Catmull-Clark refinement",
+        help="compare the toolkit's predictions with OpenSubdiv's Catmull-Clark or Loop refinement",
         description="For each valence, push a random 1-ring in R^3 through OpenSubdiv (uniform "
         "Catmull-Clark, double precision) and print the largest disagreement of each prediction: the "
         "one-step subdivision matrix, 1-ring locality, the limit mask, the limit position, the shrink "
         "rate of every frequency (Eq. 34; Eq. 43 for j = 0; j = 2 is the hyperbolic decay), the ratio "
         "B^1/A^1 (Eq. 39) and the elliptic ratio (Eq. 44). 'exact' rows should agree to double "
         "precision; 'limit' rows converge, the disagreement shrinking by the stated rate per level. "
+        "With --scheme loop: OpenSubdiv's Loop scheme against the one-step matrix, the spectrum, the limit "
+        "position and tangent masks and the shrink rate of every frequency. "
         "Needs the OpenSubdiv bridge (built on demand with g++ if libosd-dev is installed).",
     )
+    add_scheme_option(p)
     p.add_argument("--n", type=valence_range("oracle"), action=Once, default=list(range(3, 13)), metavar="A:B",
                    help="valence or inclusive range of valences (default 3:12, at most 64)")
     p.add_argument("--levels", type=_levels, action=Once, default=20, metavar="K",
@@ -42,16 +46,36 @@ def _seed(text: str) -> int:
     return value
 
 
+def _comparison(scheme):
+    """The comparison for ``scheme``: OpenSubdiv has Catmull-Clark and Loop with their standard weights only."""
+    from symdecomp.schemes.loop import loop
+    from symdecomp.schemes.scheme import catmull_clark
+
+    def rules(s):
+        return (s.mesh, s.edge_rule, s.face_rule, s.vertex_rule)
+
+    if rules(scheme) == rules(catmull_clark()):
+        from symdecomp.verify.oracle import compare_with_opensubdiv
+
+        return compare_with_opensubdiv
+    if rules(scheme) == rules(loop()):
+        from symdecomp.verify.oracle_loop import compare_loop_with_opensubdiv
+
+        return compare_loop_with_opensubdiv
+    raise InvalidInputError(f"--scheme {scheme.name}: OpenSubdiv implements Catmull-Clark and Loop with their standard "
+                            "weights only; this scheme's rules are neither")
+
+
 def run(args) -> int:
     from symdecomp.verify.opensubdiv import BridgeUnavailableError, load_bridge
-    from symdecomp.verify.oracle import compare_with_opensubdiv
 
+    compare = _comparison(args.scheme)
     try:
         load_bridge()
     except BridgeUnavailableError as exc:
         print(f"symdecomp oracle: {exc}", file=sys.stderr)
         return 3
-    results = [compare_with_opensubdiv(n, args.levels, args.seed) for n in progress(args.n, len(args.n), "oracle")]
+    results = [compare(n, args.levels, args.seed) for n in progress(args.n, len(args.n), "oracle")]
     if args.json:
         print_json([r.as_json() for r in results])
     else:

@@ -13,7 +13,7 @@ import sympy as sp
 
 from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.tuning import tune
-from symdecomp.cli.common import LIMITS, Once, add_scheme_option, digits, flag, print_json, progress, valence
+from symdecomp.cli.common import LIMITS, Once, add_scheme_option, closed_form_obstacle, digits, flag, print_json, progress, valence
 from symdecomp.errors import InvalidInputError
 
 
@@ -37,9 +37,10 @@ def register(sub) -> None:
 
 
 def run(args) -> int:
-    if args.scheme.mesh != "quad":
-        raise InvalidInputError(f"--scheme {args.scheme.name}: tune solves the paper's quad 1-ring conditions (Section 5.2); "
-                                f"it does not apply to {args.scheme.mesh} meshes")
+    obstacle = closed_form_obstacle(args.scheme)
+    if obstacle:
+        raise InvalidInputError(f"--scheme {args.scheme.name}: tune solves the paper's quad 1-ring conditions (Section 5.2) "
+                                f"in closed form, which do not apply: {obstacle}")
     bound, why = LIMITS["tune --table"]
     if args.table and args.n > bound:
         raise InvalidInputError(f"tune --table: N must be at most {bound}, got {args.n} ({why})")

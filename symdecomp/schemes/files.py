@@ -21,17 +21,23 @@ Every weight is exact: an integer or a string read by
 ``parameters = ["alpha", "beta"]``, ``pi``, ``sqrt``, ``cos``, ``sin``); nothing is evaluated.
 Offsets are integers of any size (``"-2"``, ``"3"``): a stencil wider than the valence is refused
 where the matrix is built. ``[vertex]`` may also give ``O``; it must then equal ``1 - n*a - n*b``.
-``mesh = "quad"`` is the default. With ``mesh = "triangle"`` (Loop-type: the 1-ring is ``O, a_i``
-with faces ``(O, a_i, a_{i+1})``) there is no ``[face]`` section and no ``b`` weights; Loop's
-scheme is::
 
-    name = "my-loop"
+``mesh = "quad"`` is the default. A scheme on triangle meshes (Loop's shape, see
+:mod:`symdecomp.schemes.loop`) says ``mesh = "triangle"``; its 1-ring is ``(O, a_0..a_{n-1})``
+with faces ``(O, a_i, a_{i+1})``, so there is no ``[face]`` section and no ``b`` weights, and
+the vertex rule is one weight ``beta`` on each neighbour (``O`` gets ``1 - n*beta``; the key
+``a`` is accepted for it too, as in quad files). Loop::
+
+    name = "loop"
     mesh = "triangle"
     [edge]            # new a_i = O*w + sum_k a[k]*a_{i+k}
     O = "3/8"
     a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }
-    [vertex]          # new O; the weight of O is 1 - n*a
-    a = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"
+    [vertex]          # new O = (1 - n*beta)*O + beta*sum_i a_i
+    beta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"
+
+A cosine of a rational multiple of ``pi`` stays exact (an algebraic number; the spectra and
+certificates compute with it in a cyclotomic field).
 
 Every problem is reported as one :class:`~symdecomp.errors.InvalidSchemeError` (or
 :class:`~symdecomp.errors.NotAffineError`) naming the file and the key:
@@ -116,25 +122,23 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
     if mesh not in MESHES:
         raise InvalidSchemeError(f"{source}: mesh {mesh!r} is not supported (known: {', '.join(MESHES)})")
     symbols = _parameters(data.get("parameters", []), source)
+    triangle = mesh == "triangle"
+    if triangle and "face" in data:
+        raise InvalidSchemeError(f"{source}: [face]: a triangle mesh has no face rule (its 1-ring has no face neighbours b_i)")
     rules = {}
-    sections = ("edge", "vertex") if mesh == "triangle" else ("edge", "face", "vertex")
-    if mesh == "triangle" and "face" in data:
-        raise InvalidSchemeError(f"{source}: a triangle scheme has no [face] section (its 1-ring is O and the a_i)")
-    for section in sections:
+    for section in ("edge", "vertex") if triangle else ("edge", "face", "vertex"):
         if section not in data:
             raise InvalidSchemeError(f"{source}: missing section [{section}]")
         if not isinstance(data[section], dict):
             raise InvalidSchemeError(f"{source}: {section} must be a table [{section}]")
-        if mesh == "triangle" and "b" in data[section]:
-            raise InvalidSchemeError(f"{source}: [{section}] b: a triangle scheme has no b_i (no face points)")
         if section == "vertex":
-            rules[section] = _vertex(data[section], source, symbols, triangle=mesh == "triangle")
+            rules[section] = (_triangle_vertex if triangle else _vertex)(data[section], source, symbols)
         else:
-            rules[section] = _stencil(data[section], section, source, symbols)
+            rules[section] = _stencil(data[section], section, source, symbols, keys={"O", "a"} if triangle else _RULE_KEYS)
     edge, face, vertex = rules["edge"], rules.get("face"), rules["vertex"]
     declared = tuple(s for key, s in symbols.items() if key != "n")
     try:
-        scheme = Scheme(name.strip(), edge, face, vertex, declared, mesh=mesh)
+        scheme = Scheme(name.strip(), edge, face, vertex, declared, mesh)
     except SymdecompError as exc:
         raise InvalidSchemeError(f"{source}: {exc}") from None
     undeclared = set(scheme.parameters) - set(declared)
@@ -196,8 +200,10 @@ def _check_keys(table: dict, allowed: set, section: str, source: str) -> None:
         raise InvalidSchemeError(f"{source}: [{section}] unknown key {unknown[0]!r} (known: {', '.join(sorted(allowed))})")
 
 
-def _stencil(table: dict, section: str, source: str, symbols) -> Stencil:
-    _check_keys(table, _RULE_KEYS, section, source)
+def _stencil(table: dict, section: str, source: str, symbols, *, keys=_RULE_KEYS) -> Stencil:
+    if "b" in table and "b" not in keys:
+        raise InvalidSchemeError(f"{source}: [{section}] b: a triangle mesh has no face neighbours b_i; give only O and a")
+    _check_keys(table, keys, section, source)
     center = _weight(table.get("O", 0), f"[{section}] O", source, symbols)
     a = _offsets(table.get("a", {}), f"[{section}] a", source, symbols)
     b = _offsets(table.get("b", {}), f"[{section}] b", source, symbols)
@@ -207,13 +213,31 @@ def _stencil(table: dict, section: str, source: str, symbols) -> Stencil:
     return Stencil.from_weights(center, a, b, name=f"{section} rule")
 
 
-def _vertex(table: dict, source: str, symbols, *, triangle: bool = False) -> VertexRule:
+def _triangle_vertex(table: dict, source: str, symbols) -> VertexRule:
+    if "b" in table:
+        raise InvalidSchemeError(f"{source}: [vertex] b: on a triangle mesh the vertex rule is one weight, beta, on each neighbour")
+    _check_keys(table, {"O", "a", "beta"}, "vertex", source)
+    if "a" in table and "beta" in table:
+        raise InvalidSchemeError(f"{source}: [vertex] a and beta are the same weight (beta on each neighbour a_i); give one")
+    key = "a" if "a" in table else "beta"  # ``a`` as in quad files, ``beta`` as Loop's papers name it
+    if key not in table:
+        raise InvalidSchemeError(f"{source}: [vertex] beta is missing (the weight of each neighbour a_i in the new O)")
+    beta = _weight(table[key], f"[vertex] {key}", source, symbols)
+    rule = VertexRule.affine(beta, 0)
+    if "O" in table:
+        center = _weight(table["O"], "[vertex] O", source, symbols)
+        if sp.simplify(center - rule.center) != 0:
+            raise NotAffineError(f"{source}: [vertex] is not affine: O = {center}, but 1 - n*beta = {rule.center}")
+    return rule
+
+
+def _vertex(table: dict, source: str, symbols) -> VertexRule:
     _check_keys(table, _RULE_KEYS, "vertex", source)
-    for key in ("a",) if triangle else ("a", "b"):
+    for key in ("a", "b"):
         if key not in table:
             raise InvalidSchemeError(f"{source}: [vertex] {key} is missing (the weight of each {key}_i in the new O)")
     a = _weight(table["a"], "[vertex] a", source, symbols)
-    b = sp.Integer(0) if triangle else _weight(table["b"], "[vertex] b", source, symbols)
+    b = _weight(table["b"], "[vertex] b", source, symbols)
     rule = VertexRule.affine(a, b)
     if "O" in table:
         center = _weight(table["O"], "[vertex] O", source, symbols)
@@ -237,14 +261,22 @@ def scheme_to_text(scheme: Scheme) -> str:
     def offsets(pairs):
         return "{ " + ", ".join(f'"{k}" = "{_text(w)}"' for k, w in pairs) + " }"
 
+    v = scheme.vertex_rule
+    weights = [w for rule in scheme.stencils() for w in (rule.center, *(x for _, x in rule.a + rule.b))] + [v.each_a, v.each_b]
+    piecewise = next((w for w in weights if sp.sympify(w).has(sp.Piecewise)), None)
+    if piecewise is not None:  # e.g. Warren's beta (3/16 at n = 3): the file grammar has no cases
+        raise InvalidSchemeError(f"scheme {scheme.name!r}: the weight {piecewise} is defined by cases, which a scheme file cannot write")
     lines = [f'name = "{scheme.name}"']
     if scheme.mesh != "quad":
         lines.append(f'mesh = "{scheme.mesh}"')
     if scheme.parameters:
         lines.append("parameters = [" + ", ".join(f'"{p}"' for p in scheme.parameters) + "]")
-    triangle = scheme.mesh == "triangle"
-    for section, rule in (("edge", scheme.edge_rule),) if triangle else (("edge", scheme.edge_rule), ("face", scheme.face_rule)):
-        lines += [f"[{section}]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}"] + ([] if triangle else [f"b = {offsets(rule.b)}"])
     v = scheme.vertex_rule
-    lines += ["[vertex]", f'a = "{_text(v.each_a)}"'] + ([] if triangle else [f'b = "{_text(v.each_b)}"'])
+    if scheme.mesh == "triangle":
+        rule = scheme.edge_rule
+        lines += ["[edge]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", "[vertex]", f'beta = "{_text(v.each_a)}"']
+        return "\n".join(lines) + "\n"
+    for section, rule in (("edge", scheme.edge_rule), ("face", scheme.face_rule)):
+        lines += [f"[{section}]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", f"b = {offsets(rule.b)}"]
+    lines += ["[vertex]", f'a = "{_text(v.each_a)}"', f'b = "{_text(v.each_b)}"']
     return "\n".join(lines) + "\n"

@@ -35,7 +35,7 @@ import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import MeshRules, mesh_rules, refine, ring_mesh, ring_mesh_labels
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, subdivision_entries
 from symdecomp.schemes.trimesh import refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
@@ -184,6 +184,17 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
         return exact if scheme.mesh == "quad" else exact[:2]
 
     labels = ring_labels(scheme.mesh, n, rings)
+    mesh_rules_error = _mesh_rules_error(scheme)
+    if mesh_rules_error is not None:
+        if rings > 1:
+            raise InvalidSchemeError(
+                f"{mesh_rules_error}; the {rings}-ring matrix needs the scheme's rules on the whole mesh "
+                "(its 1-ring, --rings 1, is analysed from the stencils)"
+            )
+        row0 = weights_at(n)
+        rows = _stencil_rows(scheme, n, labels, row0)
+        weights = {s: w for s, w in used.items() if any(sp.sympify(x).has(s) for x in rows[0].values())}
+        return RingMatrix(scheme.name, scheme.mesh, n, rings, labels, tuple(rows), weights)
     unit = lambda s, u, v: (SparseRow({_index(labels, n, s, u, v): Fraction(1)}),)  # noqa: E731
     if scheme.mesh == "triangle":
         mesh = triangle_ring_mesh(n, rings, unit)
@@ -200,6 +211,40 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
         rows.append({c: x for c, x in sorted(row.items()) if x != 0})
     weights = {s: w for s, w in used.items() if any(sp.sympify(x).has(s) for x in rows[0].values())}
     return RingMatrix(scheme.name, scheme.mesh, n, rings, labels, tuple(rows), weights)
+
+
+def _mesh_rules_error(scheme: Scheme) -> str | None:
+    """Why the scheme's 1-ring stencils are not rules of the whole mesh (``None`` when they are)."""
+    try:
+        triangle_mesh_rules(scheme) if scheme.mesh == "triangle" else mesh_rules(scheme)
+    except InvalidSchemeError as exc:
+        return str(exc)
+    return None
+
+
+def _stencil_rows(scheme: Scheme, n: int, labels, centre_weights) -> list[dict]:
+    """The 1-ring matrix assembled from the stencils (for rules that are not rules of a mesh).
+
+    Row 0 takes ``centre_weights`` (``(w_O, w_a[, w_b])``: symbols or exact values); the other
+    rows must be rational at this valence.
+    """
+    index = {lab: i for i, lab in enumerate(labels)}
+    # 1-ring order (O, a_0..a_{n-1}, b_0..b_{n-1}) -> label index: a_i = (i, 1, 0), b_i = (i, 1, 1).
+    where = [0] + [index[(i, 1, 0)] for i in range(n)] + ([index[(i, 1, 1)] for i in range(n)] if scheme.mesh == "quad" else [])
+    rows: list[dict] = [dict() for _ in labels]
+    for (r, c), x in subdivision_entries(scheme, n, lambda w: sp.sympify(w).subs(N, n)).items():
+        if r == 0:
+            continue
+        if not x.is_Rational:
+            raise InvalidSchemeError(f"scheme {scheme.name!r}: a weight of its edge or face rule at n = {n} is not rational ({x})")
+        rows[where[r]][where[c]] = Fraction(int(x.p), int(x.q))
+    w_o, w_a, *rest = (Fraction(int(w.p), int(w.q)) if getattr(w, "is_Rational", False) else w for w in centre_weights)
+    rows[0][0] = w_o
+    for i in range(n):
+        rows[0][where[1 + i]] = w_a
+        if scheme.mesh == "quad":
+            rows[0][where[1 + n + i]] = rest[0]
+    return [{c: x for c, x in sorted(row.items()) if x != 0} for row in rows]
 
 
 @dataclass(frozen=True)

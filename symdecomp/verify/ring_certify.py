@@ -25,6 +25,10 @@ distinct eigenvalues; the Arb balls of the spectrum must fall into as many clust
 algebraic weights, ``chi_S = det(lambda I - E_0) R(lambda)`` with ``R`` (the other frequencies)
 rational: the distinct roots of ``R`` come from its squarefree part, and each root of ``E_0``
 in ``Q(zeta_2n)`` is tested exactly for being a root of ``R`` (or of another root of ``E_0``).
+The ``O(n)`` structural certificate (:func:`structural_certificate`) has no ``chi_S``; it
+certifies multiplicities from the frequency factors instead (:func:`cluster_multiplicities`).
+The product identity itself is computed in one place,
+:func:`~symdecomp.analysis.ring_charpoly.product_identity` (also behind ``charpoly``).
 
 >>> from symdecomp.schemes.loop import loop
 >>> c = certify_ring(loop(), 7, 1)
@@ -41,13 +45,13 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_charpoly import _fmpq, frequency_product_values
+from symdecomp.analysis.ring_charpoly import _fmpq, product_identity
 from symdecomp.analysis.ring_spectrum import frequency_factors, ring_spectrum
-from symdecomp.schemes.full_matrix import entries_characteristic_polynomial
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_valence
 from symdecomp.verify.certify import Certificate
 from symdecomp.verify.result import CrossCheckStatus
@@ -67,27 +71,14 @@ def certify_ring(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks |
     blocks = blocks or ring_blocks(scheme, rings)
     if method == "structure":
         return structural_certificate(scheme, n, rings, blocks=blocks, digits=digits)
-    S = ring_subdivision_matrix(scheme, n, rings)
-    free = sorted(S.weights, key=str)
-    v = scheme.vertex_rule
-    rule = dict(zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)))
-    fixed = {s: sp.sympify(w).subs(N, n) for s, w in rule.items() if s not in free}
-    corners = [{s: 0 for s in free}] + [{s: int(s == t) for s in free} for t in free]
+    identity = product_identity(scheme, n, rings, blocks=blocks)
+    S, free, fixed, chis, failure = identity.matrix, list(identity.free), identity.fixed, identity.chis, identity.failure
     size = S.size
-    method, identity, chis, failure = "", True, [], None
-    for point in corners:
-        chi = entries_characteristic_polynomial(S.entries(point), size)
-        chis.append(chi)
-        values = frequency_product_values(blocks, n, {**fixed, **{s: sp.Integer(x) for s, x in point.items()}}, range(size))
-        bad = next((x for x in range(size) if chi(flint.fmpq(x)) != values[x]), None)
-        if bad is not None:
-            identity, failure = False, (point, bad, chi(flint.fmpq(bad)), values[bad])
-            break
     spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False, jordan=False)
     multiplicities = tuple(e.multiplicity for e in spectrum.eigenvalues)
     texts = tuple(e.text for e in spectrum.eigenvalues)
     height = max(int(c.p).bit_length() for c in chis[0].coeffs())
-    if not identity:
+    if failure is not None:
         point, bad, left, right = failure
         where = f" with centre weights {point}" if free else ""
         message = (f"n = {n}: refuted: chi_S({bad}) = {left} but the frequency factors give {right}{where} "
@@ -157,8 +148,9 @@ def structural_certificate(scheme: Scheme, n: int, rings: int = 1, *, blocks: Ri
     spectrum of a bordered CB-matrix is that of ``E_0`` and of ``E(omega^k)`` with multiplicities
     (Prop. 6.2 and Remark 6.1, proved for every ``n`` in ``symdecomp claims --section 6``: the
     vectors ``e_0``, ``e_p (x) v_k`` form a basis in which the matrix is block diagonal). So the
-    frequency factors are the spectrum. Multiplicities are those of the Arb clusters (not
-    certified here: that needs the squarefree part of ``chi_S``, the dense method).
+    frequency factors are the spectrum. Multiplicities are those of the Arb clusters, certified
+    by :func:`cluster_multiplicities` where its exact arguments apply (else the certificate says
+    why not).
     """
     n = check_valence(n)
     blocks = blocks or ring_blocks(scheme, rings)
@@ -188,10 +180,88 @@ def structural_certificate(scheme: Scheme, n: int, rings: int = 1, *, blocks: Ri
                            method="refined matrix != block form", distinct=0, multiplicities=multiplicities, values=texts,
                            multiplicities_certified=False, height_bits=0)
     method = f"refined matrix = bordered CB-matrix of E_0, E(omega), entry by entry ({sum(len(r) for r in S.rows)} entries); Remark 6.1"
-    message = f"n = {n}: proved: {method}; {len(spectrum.eigenvalues)} distinct values (Arb clusters, multiplicities not certified)"
+    why_not = cluster_multiplicities(scheme, blocks, spectrum)
+    note = "multiplicities certified" if why_not is None else f"multiplicities not certified ({why_not})"
+    message = f"n = {n}: proved: {method}; {len(spectrum.eigenvalues)} distinct values, {note}"
     return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.AGREE, message=message, method=method,
                        distinct=len(spectrum.eigenvalues), multiplicities=multiplicities, values=texts,
-                       multiplicities_certified=False, height_bits=0)
+                       multiplicities_certified=why_not is None, height_bits=0)
+
+
+def cluster_multiplicities(scheme: Scheme, blocks: RingBlocks, spectrum) -> str | None:
+    """Prove that the Arb clusters of ``spectrum`` are its distinct eigenvalues with their multiplicities.
+
+    Returns ``None`` when proved, else the reason it could not be. Two parts:
+
+    * *distinct*: the hulls of any two clusters are disjoint balls (checked in Arb), so values
+      in different clusters differ;
+    * *equal*: the roots inside each cluster are equal, by one of two exact arguments:
+      (a) they are one root of one factor at a frequency ``k`` (repeated by the factor's
+      exponent), or of a factor written in ``c_k = cos(2 pi k/n)`` at ``k`` and ``n - k``, where
+      the factor is the same polynomial (one root from each: the other root at ``n - k`` equal
+      to it lies in this cluster since clusters are disjoint); (b) every root has a closed form
+      that is exact in ``Q(zeta_2n)`` there, and they are equal in that field.
+    """
+    n = spectrum.n
+    entries = spectrum.eigenvalues
+    if any(not e.members for e in entries):
+        return "the spectrum does not list its clusters' roots"
+    if not _disjoint([e.ball for e in entries]):
+        return "two clusters of Arb balls overlap"
+    ff = frequency_factors(blocks)
+    field = None
+    for e in entries:
+        roots = sorted(set(e.members))
+        if _same_root_by_symmetry(roots, ff, n):
+            continue
+        field = field or CyclotomicField(2 * n)
+        values = [_root_value(scheme, ff, n, member, field) for member in roots]
+        if any(v is None for v in values):
+            return f"equality of the roots near {e.text} is not decidable exactly (no closed form in Q(zeta_{2 * n}))"
+        if any((v - values[0]).poly != 0 for v in values[1:]):
+            return f"the roots clustered near {e.text} are not all equal (exact)"
+    return None
+
+
+def _same_root_by_symmetry(roots, ff, n: int) -> bool:
+    """Argument (a) of :func:`cluster_multiplicities` for distinct ``(k, factor, root)`` triples."""
+    ks, factors = {k for k, _, _ in roots}, {i for _, i, _ in roots}
+    if len(factors) != 1 or len(roots) != len(ks):  # one factor, one root per frequency
+        return False
+    if len(ks) == 1:
+        return True
+    k = min(ks)
+    (i,) = factors
+    return k != 0 and ks == {k, n - k} and not ff.other[i].poly.has(OMEGA)
+
+
+def _root_value(scheme: Scheme, ff, n: int, member, field):
+    """The exact value of root ``j`` of factor ``i`` at frequency ``k`` in ``Q(zeta_2n)``, or ``None``."""
+    from symdecomp.analysis.ring_spectrum import _centre_values, _exact_root
+
+    k, i, j = member
+    f = (ff.zero if k == 0 else ff.other)[i]
+    if f.roots is None:
+        return None
+    exact_w, _ = _centre_values(scheme, n)
+    try:
+        return cyclotomic_value(_exact_root(f.roots[j], k, n, exact_w), field=field)
+    except ValueError:
+        return None
+
+
+def _disjoint(balls) -> bool:
+    """Whether the (complex) balls are pairwise disjoint; candidates by a sweep on the real parts, decided in Arb."""
+    spans = sorted(((float(b.real.mid()) - float(b.real.rad()), float(b.real.mid()) + float(b.real.rad()), b) for b in balls),
+                   key=lambda t: t[0])
+    margin = 1e-9
+    for a, (_, hi, b) in enumerate(spans):
+        for lo2, _, b2 in spans[a + 1:]:
+            if lo2 > hi + margin * max(1.0, abs(hi)):
+                break
+            if b.overlaps(b2):
+                return False
+    return True
 
 
 _POS_CACHE: dict = {}

@@ -5,15 +5,21 @@
   only displayed).
 * FLINT/Arb precision is set in a scope (``with flint.ctx.workprec(...)``), as mpmath's
   ``workdps``, never assigned and restored by hand.
+* ``sympify`` is always called with ``strict=True``: internal values (numbers, fractions, sympy
+  objects) pass, text never does. User text goes through :mod:`symdecomp.expressions` only, so
+  a string that reached a sympify call by mistake is an error, not an evaluation.
 
 ``NOT_YET`` lists the sites left in modules owned elsewhere; remove an entry once it is gone
 (the last test fails on a stale entry).
 """
 
+import ast
 import pathlib
 import re
+from fractions import Fraction
 
 import pytest
+import sympy as sp
 
 PACKAGE = pathlib.Path(__file__).resolve().parents[1] / "symdecomp"
 MODULES = sorted(p for p in PACKAGE.rglob("*.py") if "_build" not in p.parts)
@@ -52,3 +58,42 @@ def test_the_patterns_see_what_they_forbid():
     assert PATTERNS["precision assigned by hand"].search("    flint.ctx.prec = 128")
     assert PATTERNS["precision assigned by hand"].search("mpmath.mp.dps = 50")
     assert not PATTERNS["precision assigned by hand"].search("with flint.ctx.workprec(128):")
+
+
+def _lenient_sympify_calls(source: str) -> list[int]:
+    """Lines of the calls ``sympify(...)`` / ``x.sympify(...)`` without ``strict=True``."""
+    found = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Call):
+            f = node.func
+            name = f.attr if isinstance(f, ast.Attribute) else getattr(f, "id", None)
+            strict = any(k.arg == "strict" and isinstance(k.value, ast.Constant) and k.value.value is True for k in node.keywords)
+            if name == "sympify" and not strict:
+                found.append(node.lineno)
+    return found
+
+
+def test_sympify_is_always_strict():
+    found = {}
+    for path in MODULES:
+        lines = _lenient_sympify_calls(path.read_text())
+        if lines:
+            found[path.relative_to(PACKAGE).as_posix()] = lines
+    assert not found, f"sympify without strict=True (text would be evaluated) at {found}"
+
+
+def test_the_sympify_guard_sees_what_it_forbids():
+    assert _lenient_sympify_calls("x = sp.sympify(y)") == [1]
+    assert _lenient_sympify_calls("x = sympify(y, strict=False)") == [1]
+    assert _lenient_sympify_calls("x = sp.sympify(y, strict=True)") == []
+
+
+def test_a_string_reaching_an_internal_entry_point_is_refused_not_evaluated():
+    from symdecomp.algebra.cyclotomic import cyclotomic_value
+
+    assert cyclotomic_value(sp.cos(sp.pi / 3), {}).to_mpc().real == 0.5
+    assert cyclotomic_value(Fraction(1, 3)).to_mpc().real * 3 == 1
+    with pytest.raises(sp.SympifyError):
+        cyclotomic_value("__import__('os').getcwd()")
+    with pytest.raises(sp.SympifyError):
+        cyclotomic_value(sp.Symbol("x"), {"x": "1/3"})

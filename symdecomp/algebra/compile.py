@@ -148,7 +148,7 @@ def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: 
             return lambda args: ops[name](inner(args))
         raise UnsupportedExpressionError(f"cannot evaluate {e} (in a closed form) with {engine}")
 
-    f = build(sp.sympify(expr))
+    f = build(sp.sympify(expr, strict=True))
     return lambda *args: f(args)
 
 

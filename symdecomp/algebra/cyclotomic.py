@@ -54,7 +54,7 @@ class CyclotomicField:
             return value
         if isinstance(value, (int, Fraction)):
             return Cyclotomic(self, flint.fmpq_poly([flint.fmpq(Fraction(value).numerator, Fraction(value).denominator)]))
-        v = sp.sympify(value)
+        v = sp.sympify(value, strict=True)
         re, im = v.as_real_imag()
         if not (re.is_Rational and im.is_Rational):
             raise InvalidTypeError(f"{value!r} is not a (Gaussian) rational number")
@@ -207,8 +207,8 @@ def cyclotomic_value(expr, values: dict | None = None, field: CyclotomicField | 
     >>> x.field.N, float(x.to_mpc().real)
     (10, 0.32725424859373686)
     """
-    expr = sp.sympify(expr)
-    values = {sp.sympify(k): sp.sympify(v) for k, v in (values or {}).items()}
+    expr = sp.sympify(expr, strict=True)
+    values = {sp.sympify(k, strict=True): sp.sympify(v, strict=True) for k, v in (values or {}).items()}
     trig = sorted(expr.atoms(sp.cos, sp.sin, sp.exp), key=sp.default_sort_key)
     dummies, fractions, order = {}, {}, 4 if any(isinstance(t, sp.sin) for t in trig) else 1
     for t in trig:
@@ -226,7 +226,7 @@ def cyclotomic_value(expr, values: dict | None = None, field: CyclotomicField | 
     for d, (kind, r) in fractions.items():
         z = K.zeta(int(r.p) * (order // (2 * int(r.q))))  # exp(i r pi)
         leaves[d] = z if kind is sp.exp else (z + z.conjugate()) / 2 if kind is sp.cos else (z - z.conjugate()) / (2 * K.i)
-    return _walk(sp.sympify(plain), K, leaves)
+    return _walk(sp.sympify(plain, strict=True), K, leaves)
 
 
 def _walk(e: sp.Expr, K: CyclotomicField, leaves: dict) -> Cyclotomic:

@@ -53,7 +53,7 @@ def _is_exact_scalar(x) -> bool:
     if isinstance(x, (int, Fraction)):
         return True
     if isinstance(x, sp.Basic):
-        re, im = sp.sympify(x).as_real_imag()
+        re, im = sp.sympify(x, strict=True).as_real_imag()
         return bool(re.is_Rational and im.is_Rational)
     return False
 
@@ -112,7 +112,7 @@ def _coordinate(x, kind: str, dim: int, where: str):
                 f"{where} has coordinate {x!r}, which is not a (Gaussian) rational; "
                 "use floats (numpy) or mpmath numbers for other values"
             )
-        v = sp.sympify(x) if not isinstance(x, Fraction) else sp.Rational(x.numerator, x.denominator)
+        v = sp.sympify(x, strict=True) if not isinstance(x, Fraction) else sp.Rational(x.numerator, x.denominator)
         if dim == 3 and not v.is_real:
             raise InvalidPolygonError(not_real)
         return v

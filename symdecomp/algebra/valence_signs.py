@@ -27,7 +27,7 @@ __all__ = ["integer_zeros", "positive_from"]
 
 
 def _parts(expr, variable: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
-    expr = sp.together(sp.sympify(expr))
+    expr = sp.together(sp.sympify(expr, strict=True))
     numerator, denominator = sp.fraction(sp.cancel(expr))
     free = (numerator.free_symbols | denominator.free_symbols) - {variable}
     if free:

@@ -209,7 +209,7 @@ def _ball(w) -> flint.acb:
     if isinstance(w, (Fraction, int)):
         w = Fraction(w)
         return flint.acb(flint.fmpq(w.numerator, w.denominator))
-    w = sp.sympify(w)
+    w = sp.sympify(w, strict=True)
     if not w.is_Rational:
         raise InvalidSchemeError(f"weight {w} is not an exact rational at this valence")
     return flint.acb(flint.fmpq(int(w.p), int(w.q)))
@@ -223,7 +223,7 @@ def one_ring_rows(scheme: Scheme, n: int) -> list[dict]:
         weights: dict = {}
         for m, pairs in ((0, rule.a), (1, rule.b)):
             for k, w in pairs:
-                weights[(k, m)] = weights.get((k, m), 0) + sp.sympify(w).subs(N, n)
+                weights[(k, m)] = weights.get((k, m), 0) + sp.sympify(w, strict=True).subs(N, n)
         rows.append(weights)
     return rows
 

@@ -125,7 +125,7 @@ def _quadratic_power(base, D, e: int):
 
 def to_fmpq_poly(expr, variable: sp.Symbol = LAM) -> flint.fmpq_poly:
     """An exact polynomial in ``variable`` with rational coefficients as an ``fmpq_poly``."""
-    expr = sp.expand(sp.sympify(expr))
+    expr = sp.expand(sp.sympify(expr, strict=True))
     free = expr.free_symbols - {variable}
     if free:
         raise InvalidInputError(f"cannot evaluate exactly: free symbols {sorted(map(str, free))} left; give their values")

@@ -119,6 +119,6 @@ def derived_closed_forms(scheme: Scheme) -> ClosedForms:
 def _compile_closed_forms(cf: ClosedForms, parameters: tuple, engine: str):
     subs = dict(parameters)
     variables = (cos_jtheta, sin_jtheta, N)
-    zero = tuple(compile_expression(sp.sympify(e).subs(subs), variables, engine) for e in cf.frequency_zero)
-    pair = tuple(compile_expression(sp.sympify(e).subs(subs), variables, engine) for e in cf.frequency_k)
+    zero = tuple(compile_expression(sp.sympify(e, strict=True).subs(subs), variables, engine) for e in cf.frequency_zero)
+    pair = tuple(compile_expression(sp.sympify(e, strict=True).subs(subs), variables, engine) for e in cf.frequency_k)
     return zero, pair

@@ -37,7 +37,7 @@ def jordan_vertex_weights(scheme: Scheme, n: int, eigenvalue) -> dict:
     two free parameters or the linear system has no unique solution.
     """
     n = check_valence(n)
-    mu = sp.sympify(eigenvalue)
+    mu = sp.sympify(eigenvalue, strict=True)
     params = tuple(scheme.parameters)
     if len(params) != 2:
         raise InvalidSchemeError(
@@ -59,7 +59,7 @@ def jordan_block_size(scheme: Scheme, n: int, eigenvalue) -> int:
     ``0`` if it is not an eigenvalue.
     """
     A = sp.Matrix(recursion_matrix(scheme, check_valence(n)))
-    mu = sp.sympify(eigenvalue)
+    mu = sp.sympify(eigenvalue, strict=True)
     B = A - mu * sp.eye(3)
     ranks = [3] + [(B**k).rank() for k in range(1, 4)]
     if ranks[1] == 3:

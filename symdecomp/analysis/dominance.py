@@ -93,7 +93,7 @@ def tail_bound(scheme: Scheme) -> TailBound | None:
     if sp.cancel(remainder.as_expr()) != 0 or quotient.degree() != 2:
         return None
     q = sp.Poly([sp.cancel(c) for c in quotient.all_coeffs()], LAM)
-    if len(P) != 3 or P[0] != 1 or not set().union(*(sp.sympify(c).free_symbols for c in (*P, *q.all_coeffs()))) <= {n}:
+    if len(P) != 3 or P[0] != 1 or not set().union(*(sp.sympify(c, strict=True).free_symbols for c in (*P, *q.all_coeffs()))) <= {n}:
         return None
     facts: list = []
     starts: list = [3]

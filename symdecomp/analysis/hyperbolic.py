@@ -103,7 +103,7 @@ def hyperbolic_ring(n: int, height=1) -> sp.ImmutableMatrix:
     ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` of :func:`~symdecomp.schemes.scheme.subdivision_matrix`.
     """
     n = check_valence(n)
-    height = sp.sympify(height)
+    height = sp.sympify(height, strict=True)
 
     def vertex(k):
         return [sp.cos(sp.pi * k / n), sp.sin(sp.pi * k / n), height * sp.cos(2 * sp.pi * k / n)]

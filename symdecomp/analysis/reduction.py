@@ -60,7 +60,7 @@ class BorderedCBMatrix:
     def at(self, n: int) -> sp.ImmutableMatrix:
         """The concrete ``(Kn+1) x (Kn+1)`` matrix."""
         n = check_valence(n, minimum=1)
-        sub = lambda e: sp.sympify(e).subs(N, n)  # noqa: E731
+        sub = lambda e: sp.sympify(e, strict=True).subs(N, n)  # noqa: E731
         first_row = sp.Matrix([[sub(self.corner)] + [sub(r) for r in self.row for _ in range(n)]])
         first_col = sp.Matrix([sub(c) for c in self.column for _ in range(n)])
         return sp.ImmutableMatrix(sp.Matrix.vstack(first_row, sp.Matrix.hstack(first_col, sp.Matrix(self.body.at(n)))))

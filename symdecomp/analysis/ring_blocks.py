@@ -41,7 +41,7 @@ __all__ = ["RingBlocks", "ring_blocks", "read_blocks"]
 
 
 def _q(x) -> sp.Expr:
-    return sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x)
+    return sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x, strict=True)
 
 
 @dataclass(frozen=True)
@@ -70,7 +70,7 @@ class RingBlocks:
 
     def frequency_matrix(self, omega=OMEGA) -> sp.ImmutableMatrix:
         """``E(omega)``: the ``K' x K'`` matrix of block symbols (frequencies ``k != 0``)."""
-        K, omega = self.class_count, sp.sympify(omega)
+        K, omega = self.class_count, sp.sympify(omega, strict=True)
         return sp.ImmutableMatrix(K, K, lambda p, q: sp.Add(*[c * omega**l for l, c in self.offsets[p][q]]))
 
     def frequency_zero_matrix(self, n=N, *, symbolic_weights: bool = False) -> sp.ImmutableMatrix:
@@ -143,7 +143,8 @@ def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
     edge or face weights in ``n`` give blocks that change with the valence, which one reading
     cannot capture, so such a scheme is refused in one line.
     """
-    dependent = [rule for rule in scheme.stencils() if any(sp.sympify(w).has(N) for w in (rule.center, *(x for _, x in rule.a + rule.b)))]
+    weights = lambda rule: (rule.center, *(x for _, x in rule.a + rule.b))  # noqa: E731
+    dependent = [rule for rule in scheme.stencils() if any(sp.sympify(w, strict=True).has(N) for w in weights(rule))]
     if dependent:
         raise InvalidSchemeError(
             f"scheme {scheme.name!r}: its {'edge' if dependent[0] is scheme.edge_rule else 'face'} rule depends on the valence n, "

@@ -121,7 +121,7 @@ def product_identity(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBloc
     free = tuple(sorted(S.weights, key=str))
     v = scheme.vertex_rule
     rule = dict(zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)))
-    fixed = {s: sp.sympify(w).subs(N, n) for s, w in rule.items() if s not in free}
+    fixed = {s: sp.sympify(w, strict=True).subs(N, n) for s, w in rule.items() if s not in free}
     corners = tuple([{s: 0 for s in free}] + [{s: int(s == t) for s in free} for t in free])
     chis, failure = [], None
     for point in corners:

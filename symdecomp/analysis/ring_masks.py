@@ -63,7 +63,7 @@ def _left_null_vector(A, fixed_first: int | None = None):
 
 
 def _acb_matrix(M: sp.Matrix, variables, values):
-    return flint.acb_mat([[compile_expression(sp.sympify(M[r, c]), variables, "arb")(*values) for c in range(M.shape[1])]
+    return flint.acb_mat([[compile_expression(sp.sympify(M[r, c], strict=True), variables, "arb")(*values) for c in range(M.shape[1])]
                           for r in range(M.shape[0])])
 
 

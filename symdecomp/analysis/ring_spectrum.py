@@ -193,7 +193,7 @@ def _centre_values(scheme: Scheme, n: int) -> tuple[dict, dict]:
     v = scheme.vertex_rule
     exact, field = {}, {}
     for s, w in ((W_A, v.each_a), (W_B, v.each_b)):
-        exact[s] = sp.sympify(w).subs(N, n)
+        exact[s] = sp.sympify(w, strict=True).subs(N, n)
         try:
             field[s] = cyclotomic_value(w, {N: n})
         except ValueError as exc:
@@ -202,7 +202,7 @@ def _centre_values(scheme: Scheme, n: int) -> tuple[dict, dict]:
 
 
 def _evaluator(expr: sp.Expr, variables):
-    return compile_expression(sp.sympify(expr), variables, "arb")
+    return compile_expression(sp.sympify(expr, strict=True), variables, "arb")
 
 
 class _Roots:
@@ -248,9 +248,9 @@ def _clusters(items):
 
 def _exact_root(root: sp.Expr, k: int, n: int, weights: dict) -> sp.Expr:
     """A closed-form root at frequency ``k``: ``omega -> exp(2 pi i k/n)`` written with cosines."""
-    expr = sp.sympify(root).xreplace({N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), **weights})
+    expr = sp.sympify(root, strict=True).xreplace({N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), **weights})
     if not expr.has(OMEGA):
-        return sp.sympify(expr)
+        return sp.sympify(expr, strict=True)
     numer, denom = sp.fraction(sp.together(expr))
     radical = any(not p.exp.is_Integer for p in numer.atoms(sp.Pow))
     if denom.free_symbols <= {OMEGA} and sp.Poly(denom, OMEGA).is_monomial and not radical:
@@ -331,8 +331,8 @@ def _jordan(blocks, ff, items, group, n, weights) -> tuple[int, ...] | None:
         at = {N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), **weights}
         E = blocks.frequency_zero_matrix(n) if k == 0 else blocks.frequency_matrix()
         try:
-            value = cyclotomic_value(sp.sympify(f.roots[j]).xreplace(at), field=field)
-            A = [[cyclotomic_value(sp.sympify(E[r, c]).xreplace(at), field=field) - (value if r == c else 0) for c in range(E.shape[1])]
+            value = cyclotomic_value(sp.sympify(f.roots[j], strict=True).xreplace(at), field=field)
+            A = [[cyclotomic_value(sp.sympify(E[r, c], strict=True).xreplace(at), field=field) - (value if r == c else 0) for c in range(E.shape[1])]
                  for r in range(E.shape[0])]
         except ValueError:
             return None

@@ -131,7 +131,7 @@ def _frequency_values(ev, n: int, subs: dict, work: int) -> list[tuple]:
     is still right to ``work`` digits and groups as one value. A closed form the compiler does
     not know is evaluated by sympy instead (slower, same digits).
     """
-    exprs = [sp.sympify(e).xreplace(subs) for e in (ev.dominant, ev.subdominant)]
+    exprs = [sp.sympify(e, strict=True).xreplace(subs) for e in (ev.dominant, ev.subdominant)]
     try:
         compiled = [compile_expression(e, (cos_jtheta, sin_jtheta, N)) for e in exprs]
     except UnsupportedExpressionError:

@@ -78,32 +78,32 @@ def M(k) -> sp.Symbol:
 
 def eq(lhs, rhs) -> sp.Basic:
     """``lhs = rhs`` as written (not evaluated)."""
-    return sp.Eq(sp.sympify(lhs), sp.sympify(rhs), evaluate=False)
+    return sp.Eq(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
 
 
 def ne(lhs, rhs) -> sp.Basic:
     """``lhs != rhs`` as written."""
-    return sp.Ne(sp.sympify(lhs), sp.sympify(rhs), evaluate=False)
+    return sp.Ne(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
 
 
 def gt(lhs, rhs) -> sp.Basic:
     """``lhs > rhs`` as written."""
-    return sp.StrictGreaterThan(sp.sympify(lhs), sp.sympify(rhs), evaluate=False)
+    return sp.StrictGreaterThan(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
 
 
 def ge(lhs, rhs) -> sp.Basic:
     """``lhs >= rhs`` as written."""
-    return sp.GreaterThan(sp.sympify(lhs), sp.sympify(rhs), evaluate=False)
+    return sp.GreaterThan(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
 
 
 def lt(lhs, rhs) -> sp.Basic:
     """``lhs < rhs`` as written."""
-    return sp.StrictLessThan(sp.sympify(lhs), sp.sympify(rhs), evaluate=False)
+    return sp.StrictLessThan(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
 
 
 def le(lhs, rhs) -> sp.Basic:
     """``lhs <= rhs`` as written."""
-    return sp.LessThan(sp.sympify(lhs), sp.sympify(rhs), evaluate=False)
+    return sp.LessThan(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
 
 
 def tup(*entries) -> sp.Tuple:
@@ -119,5 +119,5 @@ def listed(items: Iterable, sep: str = ", ") -> Text:
     """
     parts = []
     for item in items:
-        parts.extend((sep, sp.sympify(item)) if parts else (sp.sympify(item),))
+        parts.extend((sep, sp.sympify(item, strict=True)) if parts else (sp.sympify(item, strict=True),))
     return Text(*parts)

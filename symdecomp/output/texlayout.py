@@ -187,7 +187,7 @@ def _sympify(obj):
     if isinstance(obj, sp.MatrixBase):
         return sp.ImmutableMatrix(obj)
     if isinstance(obj, (int, float, complex, Fraction)):
-        return sp.sympify(obj)
+        return sp.sympify(obj, strict=True)
     return obj
 
 

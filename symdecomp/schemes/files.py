@@ -263,7 +263,7 @@ def scheme_to_text(scheme: Scheme) -> str:
 
     v = scheme.vertex_rule
     weights = [w for rule in scheme.stencils() for w in (rule.center, *(x for _, x in rule.a + rule.b))] + [v.each_a, v.each_b]
-    piecewise = next((w for w in weights if sp.sympify(w).has(sp.Piecewise)), None)
+    piecewise = next((w for w in weights if sp.sympify(w, strict=True).has(sp.Piecewise)), None)
     if piecewise is not None:  # e.g. Warren's beta (3/16 at n = 3): the file grammar has no cases
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the weight {piecewise} is defined by cases, which a scheme file cannot write")
     lines = [f'name = "{scheme.name}"']

@@ -80,7 +80,7 @@ def _weight_evaluator(scheme: Scheme, subs: Mapping):
     variables = (N, *scheme.parameters)
     values = []
     for p in scheme.parameters:
-        value = sp.sympify(subs[p])
+        value = sp.sympify(subs[p], strict=True)
         values.append(flint.fmpq(int(value.p), int(value.q)) if value.is_Rational else None)
 
     def at(n: int):

@@ -64,7 +64,7 @@ class InvalidMeshError(InvalidInputError):
 def _as_weight(w: sp.Expr):
     if isinstance(w, (Fraction, Cyclotomic)):  # already exact numbers (a caller's own arithmetic)
         return w
-    w = sp.sympify(w)
+    w = sp.sympify(w, strict=True)
     if w.is_Rational:
         return Fraction(int(w.p), int(w.q))
     return w
@@ -114,7 +114,7 @@ def mesh_rules(scheme: Scheme) -> MeshRules:
     face, edge = scheme.face_rule, scheme.edge_rule
     for label, rule in (("face rule", face), ("edge rule", edge)):
         weights = [rule.center] + [w for _, w in rule.a + rule.b]
-        if any(sp.sympify(w).has(N) for w in weights):
+        if any(sp.sympify(w, strict=True).has(N) for w in weights):
             raise InvalidSchemeError(
                 f"scheme {scheme.name!r}: its {label} depends on the valence n, so it is not a rule of the mesh "
                 "(an edge or face is in the 1-rings of vertices of different valences)"
@@ -145,7 +145,7 @@ def mesh_rules(scheme: Scheme) -> MeshRules:
             f"scheme {scheme.name!r}: the edge rule is not mirror symmetric (a_{{i-1}} and a_{{i+1}} weigh differently)"
         )
     # With the mirror symmetry the four side corners (a_{i-1}, b_{i-1}, b_i, a_{i+1}) weigh the same.
-    return MeshRules(scheme, sp.sympify(face.center), sp.sympify(edge.center), sp.sympify(ea.get(1, z)))
+    return MeshRules(scheme, sp.sympify(face.center, strict=True), sp.sympify(edge.center, strict=True), sp.sympify(ea.get(1, z), strict=True))
 
 
 # --------------------------------------------------------------------------------------------

@@ -109,7 +109,7 @@ class RingMatrix:
 
     def weight_values(self) -> dict:
         """Symbol -> exact value of the centre weight at this ``n`` (sympy)."""
-        return {s: sp.sympify(w).subs(N, self.n) for s, w in self.weights.items()}
+        return {s: sp.sympify(w, strict=True).subs(N, self.n) for s, w in self.weights.items()}
 
     def classes(self) -> tuple[tuple[int, int], ...]:
         """The vertex classes ``(u, v)`` of a sector (the labels of sector 0), in label order."""
@@ -130,7 +130,7 @@ class RingMatrix:
         for r, row in enumerate(self.rows):
             for c, x in row.items():
                 if not isinstance(x, Fraction):
-                    x = sp.sympify(x).xreplace(subs)
+                    x = sp.sympify(x, strict=True).xreplace(subs)
                     if not x.is_Rational:
                         raise InvalidSchemeError(f"entry ({r}, {c}) = {x} is not rational; give values for {sorted(map(str, self.weights))}")
                     x = Fraction(int(x.p), int(x.q))
@@ -144,13 +144,13 @@ class RingMatrix:
         M = sp.zeros(self.size, self.size)
         for r, row in enumerate(self.rows):
             for c, x in row.items():
-                M[r, c] = sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x).xreplace(values)
+                M[r, c] = sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x, strict=True).xreplace(values)
         return sp.ImmutableMatrix(M)
 
 
 def _exact_weights(scheme: Scheme, valence: int) -> tuple:
     v = scheme.vertex_rule
-    out = tuple(sp.sympify(w).subs(N, valence) for w in (v.center, v.each_a, v.each_b))
+    out = tuple(sp.sympify(w, strict=True).subs(N, valence) for w in (v.center, v.each_a, v.each_b))
     return out
 
 
@@ -193,7 +193,7 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
             )
         row0 = weights_at(n)
         rows = _stencil_rows(scheme, n, labels, row0)
-        weights = {s: w for s, w in used.items() if any(sp.sympify(x).has(s) for x in rows[0].values())}
+        weights = {s: w for s, w in used.items() if any(sp.sympify(x, strict=True).has(s) for x in rows[0].values())}
         return RingMatrix(scheme.name, scheme.mesh, n, rings, labels, tuple(rows), weights)
     unit = lambda s, u, v: (SparseRow({_index(labels, n, s, u, v): Fraction(1)}),)  # noqa: E731
     if scheme.mesh == "triangle":
@@ -209,7 +209,7 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
         point = _new_point(step, scheme.mesh, labels, n, s, u, v, face_of)
         row = step.mesh.values[point][0].entries
         rows.append({c: x for c, x in sorted(row.items()) if x != 0})
-    weights = {s: w for s, w in used.items() if any(sp.sympify(x).has(s) for x in rows[0].values())}
+    weights = {s: w for s, w in used.items() if any(sp.sympify(x, strict=True).has(s) for x in rows[0].values())}
     return RingMatrix(scheme.name, scheme.mesh, n, rings, labels, tuple(rows), weights)
 
 
@@ -232,7 +232,7 @@ def _stencil_rows(scheme: Scheme, n: int, labels, centre_weights) -> list[dict]:
     # 1-ring order (O, a_0..a_{n-1}, b_0..b_{n-1}) -> label index: a_i = (i, 1, 0), b_i = (i, 1, 1).
     where = [0] + [index[(i, 1, 0)] for i in range(n)] + ([index[(i, 1, 1)] for i in range(n)] if scheme.mesh == "quad" else [])
     rows: list[dict] = [dict() for _ in labels]
-    for (r, c), x in subdivision_entries(scheme, n, lambda w: sp.sympify(w).subs(N, n)).items():
+    for (r, c), x in subdivision_entries(scheme, n, lambda w: sp.sympify(w, strict=True).subs(N, n)).items():
         if r == 0:
             continue
         if not x.is_Rational:

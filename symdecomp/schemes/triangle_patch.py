@@ -105,7 +105,7 @@ def _exact_weight(expr: sp.Expr, n: int):
 def centre_weights(scheme: Scheme, n: int) -> tuple:
     """``(on O, on each neighbour)`` of the vertex rule at valence ``n``, exact (Fraction or ``Q(zeta_2n)``)."""
     v = scheme.vertex_rule
-    return tuple(_exact_weight(sp.sympify(w), check_valence(n)) for w in (v.center, v.each_a))
+    return tuple(_exact_weight(sp.sympify(w, strict=True), check_valence(n)) for w in (v.center, v.each_a))
 
 
 def position_mask(scheme: Scheme, n: int) -> tuple:
@@ -130,7 +130,7 @@ def triangle_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     labels = triangle_patch_rows(n)
     size = n + 6
     column = {index[lab]: c for c, lab in enumerate(labels[:size])}
-    exprs = {sym: sp.sympify(w) for sym, w in ring.weights.items()}
+    exprs = {sym: sp.sympify(w, strict=True) for sym, w in ring.weights.items()}
     sparse = []
     for lab in labels:
         row = {}
@@ -138,7 +138,7 @@ def triangle_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
             if c not in column:
                 raise InvalidSchemeError(f"scheme {scheme.name!r}: the refined patch point {lab} depends on a point beyond the {size} control points")
             if not isinstance(w, Fraction):
-                w = _exact_weight(sp.sympify(w).xreplace(exprs), n)
+                w = _exact_weight(sp.sympify(w, strict=True).xreplace(exprs), n)
             row[column[c]] = w
         sparse.append(row)
     rational = all(isinstance(w, Fraction) for w in sparse[0].values())

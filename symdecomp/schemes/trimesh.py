@@ -74,7 +74,7 @@ def triangle_mesh_rules(scheme: Scheme) -> TriangleMeshRules:
     edge = scheme.edge_rule
     ea = dict(edge.a)
     weights = [edge.center, *ea.values()]
-    if any(sp.sympify(w).has(N) for w in weights):
+    if any(sp.sympify(w, strict=True).has(N) for w in weights):
         raise InvalidSchemeError(f"scheme {scheme.name!r}: its edge rule depends on the valence n, so it is not a rule of the mesh")
     if set(ea) - {-1, 0, 1}:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the edge rule reaches beyond the two triangles of the edge (O, a_i)")
@@ -84,7 +84,7 @@ def triangle_mesh_rules(scheme: Scheme) -> TriangleMeshRules:
             f"scheme {scheme.name!r}: the edge rule weighs the two ends (or the two opposite vertices) differently, "
             "so it is not a rule of the mesh"
         )
-    return TriangleMeshRules(scheme, sp.sympify(edge.center), sp.sympify(ea.get(1, z)))
+    return TriangleMeshRules(scheme, sp.sympify(edge.center, strict=True), sp.sympify(ea.get(1, z), strict=True))
 
 
 @dataclass(frozen=True)

@@ -171,7 +171,7 @@ def _field(n: int) -> CyclotomicField:
 
 def _exact(expr, n: int, j: int = 0) -> Cyclotomic | None:
     """An expression in ``n``, ``omega`` and ``cos``/``sin`` of rational multiples of pi at ``n``, ``omega = omega_n^j``."""
-    expr = sp.sympify(expr)
+    expr = sp.sympify(expr, strict=True)
     if expr.has(OMEGA):
         expr = expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(j, n))})
     try:

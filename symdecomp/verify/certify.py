@@ -92,7 +92,7 @@ class SymmetricFunctions:
             except UnsupportedExpressionError:
                 self._compiled[key] = None
         f = self._compiled[key]
-        values = [sp.sympify(at[v]) for v in variables]
+        values = [sp.sympify(at[v], strict=True) for v in variables]
         if f is not None and all(v.is_Rational for v in values):
             try:
                 return f(*(flint.fmpq(int(v.p), int(v.q)) for v in values))

@@ -123,7 +123,7 @@ def _distinct(scheme, blocks, n, chis, free, fixed) -> int | None:
             return None
         for r in f.roots:
             try:
-                value = cyclotomic_value(sp.sympify(r).xreplace(actual), {N: n}, field=field)
+                value = cyclotomic_value(sp.sympify(r, strict=True).xreplace(actual), {N: n}, field=field)
             except ValueError:
                 return None
             roots += [value] * f.exponent
@@ -157,7 +157,7 @@ def structural_certificate(scheme: Scheme, n: int, rings: int = 1, *, blocks: Ri
     S = ring_subdivision_matrix(scheme, n, rings)
     v = scheme.vertex_rule
     rule = dict(zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)))
-    fixed = {s: sp.sympify(w).subs(N, n) for s, w in rule.items() if s not in S.weights}
+    fixed = {s: sp.sympify(w, strict=True).subs(N, n) for s, w in rule.items() if s not in S.weights}
     order = S.block_order()
     K = blocks.class_count
     mismatch, cache = None, {}
@@ -285,7 +285,7 @@ def _same(a, b) -> bool:
 
 def _exact(x, fixed: dict):
     """A block entry with the fixed centre weights substituted: ``Fraction`` when rational, else sympy."""
-    x = sp.expand(sp.sympify(x).xreplace(fixed))
+    x = sp.expand(sp.sympify(x, strict=True).xreplace(fixed))
     return Fraction(int(x.p), int(x.q)) if x.is_Rational else x
 
 

@@ -112,8 +112,8 @@ def vertex_weight_sweep_figure(scheme: Scheme, n: int, parameter: sp.Symbol, val
     only ones that move. Real parts are shown; eigenvalues of a complex pair are marked.
     """
     n = check_valence(n)
-    fixed = {k: sp.sympify(v) for k, v in (fixed or {}).items()}
-    values = [sp.sympify(t) for t in values]
+    fixed = {k: sp.sympify(v, strict=True) for k, v in (fixed or {}).items()}
+    values = [sp.sympify(t, strict=True) for t in values]
     missing = set(scheme.parameters) - set(fixed) - {parameter}
     if missing:
         raise InvalidSchemeError(f"give values for the scheme's other free parameters {sorted(map(str, missing))} in fixed=")

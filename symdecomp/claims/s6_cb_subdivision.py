@@ -202,8 +202,8 @@ def _certainly_above(value: sp.Expr, bound: sp.Expr) -> bool:
     from symdecomp.algebra.compile import compile_expression
 
     with flint.ctx.workprec(128):
-        left = abs(compile_expression(sp.sympify(value), (), engine="arb")(()))
-        right = compile_expression(sp.sympify(bound), (), engine="arb")(())
+        left = abs(compile_expression(sp.sympify(value, strict=True), (), engine="arb")(()))
+        right = compile_expression(sp.sympify(bound, strict=True), (), engine="arb")(())
         right = right.real if isinstance(right, flint.acb) else right
         return bool(left > right)
 

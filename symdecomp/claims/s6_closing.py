@@ -96,7 +96,7 @@ def _rational_valences(scheme: Scheme, count: int) -> list[int]:
     """The first ``count`` valences from 3 on where the vertex rule's weights are rational (exact matrices stay
     rational there; Loop's ``cos(2 pi/n)`` is rational at n = 3, 4, 6)."""
     v = scheme.vertex_rule
-    out = [k for k in range(3, 13) if all(sp.sympify(w).subs(N, k).is_Rational for w in (v.center, v.each_a, v.each_b))]
+    out = [k for k in range(3, 13) if all(sp.sympify(w, strict=True).subs(N, k).is_Rational for w in (v.center, v.each_a, v.each_b))]
     return out[:count]
 
 

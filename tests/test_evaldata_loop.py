@@ -158,6 +158,8 @@ def test_a_wrong_jordan_coupling_is_caught():
 def test_cli_writes_loop_json_and_refuses_binary(tmp_path, capsys):
     js = tmp_path / "loop.json"
     assert main(["evaldata", "--scheme", "loop", "--n", "3:5", "--out", str(js), "--format", "json", "--digits", "30"]) == 0
+    out = capsys.readouterr().out
+    assert "not diagonalizable at N = 3:" in out  # said, not only stored
     doc = json.loads(js.read_text())
     assert doc["format"] == "stam-loop" and doc["scheme"] == "loop" and doc["nmax"] == 5
     assert len(doc["valences"][2]["inverse"]) == 11 * 11 and len(doc["valences"][2]["phi"][0]) == 11 * 12

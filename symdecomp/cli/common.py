@@ -220,7 +220,7 @@ def refuse_non_quad(scheme: Scheme, command: str) -> None:
     if scheme.mesh != "quad":
         raise InvalidInputError(
             f"--scheme {scheme.name}: {command} works on the paper's claims, statements about quad meshes; a {scheme.mesh}-mesh "
-            "scheme is analysed by spectrum, check, charpoly, masks and oracle"
+            "scheme is analysed by spectrum, check, charpoly, masks, oracle, c1 and evaldata"
         )
 
 

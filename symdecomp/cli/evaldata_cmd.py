@@ -63,9 +63,13 @@ def run(args) -> int:
             balls.append(data)
         content = dumps(json_document(balls, args.digits, args.scheme.name))
     write_atomic(args.out, content)
+    defective = [] if args.format == "binary" else [d.n for d in balls if d.jordan]
     summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": len(content), "precision_bits": max(precs)}
+    summary["jordan_valences"] = defective
     if args.json:
         print_json(summary)
     else:
         print(f"wrote {args.out}: {args.format}, valences 3..{ns[-1]}, {len(content)} bytes (working precision up to {max(precs)} bits)")
+        if defective:  # the matrix has no eigenvector basis there: the file carries its Jordan pairs
+            print(f"not diagonalizable at N = {', '.join(map(str, defective))}: the file holds the Jordan pairs (\"jordan\") for those valences")
     return 0

@@ -32,7 +32,10 @@ def _parts(expr, variable: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
     free = (numerator.free_symbols | denominator.free_symbols) - {variable}
     if free:
         raise InvalidInputError(f"{expr} has free symbols {sorted(map(str, free))} besides {variable}")
-    return sp.Poly(numerator, variable), sp.Poly(denominator, variable)
+    try:
+        return sp.Poly(numerator, variable), sp.Poly(denominator, variable)
+    except sp.PolynomialError as exc:  # e.g. cos(2*pi/n): not a rational function of the variable
+        raise InvalidInputError(f"{expr} is not a rational function of {variable}") from exc
 
 
 def integer_zeros(expr, variable: sp.Symbol, start: int) -> tuple[int, ...] | None:

@@ -77,3 +77,18 @@ def test_the_comparison_can_fail(monkeypatch):
     # predict the heights with M_1 instead of M_2: the exact iteration must disagree
     monkeypatch.setattr(module, "_laurent_in", lambda K, e, unit: original(K, e, 4 if unit == 8 else unit))
     assert not iterate_hyperbolic_ring(CC, 5, steps=2).matches_prediction
+
+
+def test_basis_function_claim_with_a_cos_vertex_weight_keeps_the_range_and_says_why():
+    # cos(2 pi/n) in the vertex rule: the resultants are not rational in n, so no every-n argument, but no error either
+    import sympy as sp
+
+    from symdecomp.claims import Status
+    from symdecomp.claims.registry import check_claim
+    from symdecomp.schemes.scheme import catmull_clark
+    from symdecomp.symbols import n
+
+    scheme = catmull_clark(sp.Rational(3, 2) / n**2 + sp.cos(2 * sp.pi / n) / (100 * n**2), sp.Rational(1, 4) / n**2)
+    result = check_claim("Section 5.3: basis function", scheme)
+    assert result.status is Status.VERIFIED
+    assert "not a rational function of n" in str(result.evidence)

@@ -15,6 +15,7 @@ from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim
 from symdecomp.claims.applicability import needs_mirror_symmetry
 from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import cos_jtheta as COS
 from symdecomp.symbols import n as N
@@ -262,7 +263,11 @@ def _basis(scheme: Scheme) -> CheckResult:
                     counterexample=Text(eq(N, n), ": heights ", tup(*h)),
                 )
     closed, image = _frequency_zero_closed(scheme)
-    bad, steps = (None, ()) if scheme.parameters else _nonzero_for_every_valence(scheme, lo)
+    not_rational = None
+    try:
+        bad, steps = (None, ()) if scheme.parameters else _nonzero_for_every_valence(scheme, lo)
+    except InvalidInputError as exc:  # a weight such as cos(2 pi/n): the resultants are not rational in n
+        bad, steps, not_rational = None, (), str(exc)
     checked = sorted(set(bad or ()) | {3, 4, 5} if bad is not None else {3, 4, 5})
     comps = {n: _elliptic_component(cc, n) for n in checked if n >= lo}
     if any(c is None for c in comps.values()):
@@ -294,7 +299,7 @@ def _basis(scheme: Scheme) -> CheckResult:
             ),
             steps=steps,
         )
-    why = "the scheme has free parameters" if scheme.parameters else "a resultant vanishes identically" if bad is None else (
+    why = "the scheme has free parameters" if scheme.parameters else not_rational or "a resultant vanishes identically" if bad is None else (
         "the block form does not give the Eq. 43 matrix")
     return CheckResult(
         Status.VERIFIED,

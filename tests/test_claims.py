@@ -74,3 +74,15 @@ def test_prop51_check_can_fail():
 
     result = check_claim("Proposition 5.1", catmull_clark(0, 0))
     assert result.status is Status.REFUTED and "n = 3" in str(result.counterexample)
+
+
+def test_eq45_with_a_free_parameter_is_undecided_with_a_reason_not_an_error():
+    # the vertex weight on the a's is a free parameter: Eq. 43's eigenvalues at n = 4 cannot be ordered by modulus
+    from symdecomp.schemes.files import scheme_from_text
+
+    text = ('name = "free"\nparameters = ["alpha"]\n[edge]\nO = "3/8"\na = { "-1" = "1/16", "0" = "3/8", "1" = "1/16" }\n'
+            'b = { "-1" = "1/16", "0" = "1/16" }\n[face]\nO = "1/4"\na = { "0" = "1/4", "1" = "1/4" }\nb = { "0" = "1/4" }\n'
+            '[vertex]\na = "alpha/n**2"\nb = "1/(4*n**2)"\n')
+    result = check_claim("Eq. 45", scheme_from_text(text))
+    assert result.status is Status.UNDECIDED
+    assert "free parameters alpha" in str(result.evidence)

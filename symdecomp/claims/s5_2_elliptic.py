@@ -306,6 +306,9 @@ def _eq45(scheme: Scheme) -> CheckResult:
     R = sp.Rational
     T4 = recursion_matrix(scheme, 4)
     printed = sp.Matrix([[R(9, 16), R(3, 8), R(1, 16)], [R(3, 8), R(1, 2), R(1, 8)], [R(1, 4), R(1, 2), R(1, 4)]])
+    if free := sorted(map(str, sp.Matrix(T4).free_symbols)):  # eigenvalues with free parameters have no order by modulus
+        return CheckResult(Status.UNDECIDED, f"the Eq. 43 matrix at n = 4 has free parameters {', '.join(free)}: its subdominant "
+                           "eigenvalue is not determined (substitute values)", steps=(Step("Derived matrix at $n=4$", T4),))
     eigs = sorted(sp.Matrix(T4).eigenvals(), key=lambda e: -abs(complex(sp.N(e, 30))))
     u = recursion_eigenvector(scheme, eigs[1], 4).applyfunc(sp.radsimp)
     ratio = sp.radsimp(eq44_ratio(scheme, eigs[1], 4))

@@ -3,11 +3,10 @@
 import pytest
 import sympy as sp
 
-from symdecomp.errors import InvalidInputError
-
 from symdecomp.algebra.valence_signs import integer_zeros, positive_from
 from symdecomp.analysis.support import support_relation
 from symdecomp.analysis.support_window import FIRST_VALENCE, predicted_region, window
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.mesh import ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import catmull_clark
 

@@ -175,8 +175,9 @@ def _symmetry(scheme: Scheme) -> CheckResult:
                       "centre agree both ways", sp.Integer(pair_types * (2 * NEAR + 2) + len(w.types))))
     return CheckResult(
         Status.PROVED,
-        f"for every n: n = {lo}..{FIRST_VALENCE - 1} exactly on the mesh; for n >= {FIRST_VALENCE} the support test of a "
-        "pair reads the faces near it and, through the faces at the centre, the star of the centre, so it is the test on "
+        f"for every n, for the pairs of vertices within 3 rings of the vertex of valence n (the claim's neighbourhood; the "
+        f"regular part beyond is not covered): n = {lo}..{FIRST_VALENCE - 1} exactly on the mesh; for n >= {FIRST_VALENCE} "
+        "the support test of a pair reads the faces near it and, through the faces at the centre, the star of the centre, so it is the test on "
         f"one window of sectors -3..3 (the same for every such n, up to rotation and relabelling), a far-pair rule and a "
         "rule for the centre's n sectors, all computed and symmetric; the rules' hypotheses (nonnegative weights, positive "
         f"vertex weights and limit mask, a simple eigenvalue 1) hold for every n as rational functions of n. Also {direct}",

@@ -55,6 +55,27 @@ bool face_has(Far::TopologyLevel const &level, Far::Index f, Far::Index v) {
 
 }  // namespace
 
+// A refiner for a mesh of `per_face`-gons under `scheme` (boundary: edges only), or nullptr
+// with the message in `error` when OpenSubdiv rejects the topology.
+static std::unique_ptr<Far::TopologyRefiner> make_refiner(Sdc::SchemeType scheme, int per_face, int n_vertices, int n_faces,
+                                                          const int *face_vertices, char *error, int error_len) {
+    std::vector<int> verts_per_face(static_cast<size_t>(n_faces), per_face);
+    Far::TopologyDescriptor desc;
+    desc.numVertices = n_vertices;
+    desc.numFaces = n_faces;
+    desc.numVertsPerFace = verts_per_face.data();
+    desc.vertIndicesPerFace = face_vertices;
+    Sdc::Options sdc;
+    sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(scheme, sdc)));
+    if (!refiner || osd_failed) {
+        set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
+        return nullptr;
+    }
+    return refiner;
+}
+
 extern "C" {
 
 // Version of this bridge's C interface (bumped when the signature changes).
@@ -77,22 +98,9 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
             set_error(error, error_len, "bad sizes");
             return 1;
         }
-        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), 4);
-        Far::TopologyDescriptor desc;
-        desc.numVertices = n_vertices;
-        desc.numFaces = n_faces;
-        desc.numVertsPerFace = verts_per_face.data();
-        desc.vertIndicesPerFace = face_vertices;
-
-        Sdc::Options sdc;
-        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-        std::unique_ptr<Far::TopologyRefiner> refiner(
-            Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
-        if (!refiner || osd_failed) {
-            set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
-            return 2;
-        }
+        std::unique_ptr<Far::TopologyRefiner> refiner =
+            make_refiner(Sdc::SCHEME_CATMARK, 4, n_vertices, n_faces, face_vertices, error, error_len);
+        if (!refiner) return 2;
         Far::TopologyRefiner::UniformOptions uniform(levels);
         uniform.fullTopologyInLastLevel = true;  // the limit mask needs the last level's full topology
         refiner->RefineUniform(uniform);
@@ -198,21 +206,9 @@ static int limit_points(Sdc::SchemeType scheme, int verts_per_face_count, int n_
             set_error(error, error_len, "bad sizes");
             return 1;
         }
-        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), verts_per_face_count);
-        Far::TopologyDescriptor desc;
-        desc.numVertices = n_vertices;
-        desc.numFaces = n_faces;
-        desc.numVertsPerFace = verts_per_face.data();
-        desc.vertIndicesPerFace = face_vertices;
-        Sdc::Options sdc;
-        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-        std::unique_ptr<Far::TopologyRefiner> refiner(
-            Factory::Create(desc, Factory::Options(scheme, sdc)));
-        if (!refiner || osd_failed) {
-            set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
-            return 2;
-        }
+        std::unique_ptr<Far::TopologyRefiner> refiner =
+            make_refiner(scheme, verts_per_face_count, n_vertices, n_faces, face_vertices, error, error_len);
+        if (!refiner) return 2;
         Far::TopologyRefiner::UniformOptions uniform(levels);
         uniform.fullTopologyInLastLevel = true;
         refiner->RefineUniform(uniform);
@@ -299,21 +295,9 @@ int symdecomp_osd_loop_step(int n_vertices, int n_faces, const int *face_vertice
             set_error(error, error_len, "bad sizes");
             return 1;
         }
-        std::vector<int> verts_per_face(static_cast<size_t>(n_faces), 3);
-        Far::TopologyDescriptor desc;
-        desc.numVertices = n_vertices;
-        desc.numFaces = n_faces;
-        desc.numVertsPerFace = verts_per_face.data();
-        desc.vertIndicesPerFace = face_vertices;
-        Sdc::Options sdc;
-        sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-        using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-        std::unique_ptr<Far::TopologyRefiner> refiner(
-            Factory::Create(desc, Factory::Options(Sdc::SCHEME_LOOP, sdc)));
-        if (!refiner || osd_failed) {
-            set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
-            return 2;
-        }
+        std::unique_ptr<Far::TopologyRefiner> refiner =
+            make_refiner(Sdc::SCHEME_LOOP, 3, n_vertices, n_faces, face_vertices, error, error_len);
+        if (!refiner) return 2;
         Far::TopologyRefiner::UniformOptions uniform(1);
         uniform.fullTopologyInLastLevel = true;
         refiner->RefineUniform(uniform);

@@ -152,6 +152,31 @@ def mesh_rules(scheme: Scheme) -> MeshRules:
 # the mesh
 
 
+def _set_topology(mesh, corners: int, shape: str) -> None:
+    """Validate ``mesh.faces`` (``corners``-gons, consistently oriented, every corner valued) and set
+    ``faces``, ``values``, ``_directed`` (directed edge -> face) and ``_incident`` (vertex -> faces)."""
+    faces = tuple(tuple(int(v) for v in f) for f in mesh.faces)
+    for f in faces:
+        if len(f) != corners or len(set(f)) != corners:
+            raise InvalidMeshError(f"face {f} is not {shape}")
+    object.__setattr__(mesh, "faces", faces)
+    object.__setattr__(mesh, "values", MappingProxyType(dict(mesh.values)))
+    missing = {v for f in faces for v in f} - set(mesh.values)
+    if missing:
+        raise InvalidMeshError(f"vertices {sorted(missing)[:5]} have no value")
+    directed: dict[tuple[int, int], int] = {}
+    incident: dict[int, list[int]] = {}
+    for fi, f in enumerate(faces):
+        for k in range(corners):
+            e = (f[k], f[(k + 1) % corners])
+            if e in directed:
+                raise InvalidMeshError(f"edge {e} is used twice in the same direction: the faces are not consistently oriented")
+            directed[e] = fi
+            incident.setdefault(f[k], []).append(fi)
+    object.__setattr__(mesh, "_directed", directed)
+    object.__setattr__(mesh, "_incident", {v: tuple(fs) for v, fs in incident.items()})
+
+
 @dataclass(frozen=True)
 class QuadMesh:
     """A consistently oriented quad mesh (possibly with boundary) with values at its vertices."""
@@ -162,28 +187,7 @@ class QuadMesh:
     values: Mapping[int, tuple]
 
     def __post_init__(self):
-        faces = tuple(tuple(int(v) for v in f) for f in self.faces)
-        for f in faces:
-            if len(f) != 4 or len(set(f)) != 4:
-                raise InvalidMeshError(f"face {f} is not a quad with four distinct vertices")
-        object.__setattr__(self, "faces", faces)
-        object.__setattr__(self, "values", MappingProxyType(dict(self.values)))
-        missing = {v for f in faces for v in f} - set(self.values)
-        if missing:
-            raise InvalidMeshError(f"vertices {sorted(missing)[:5]} have no value")
-        directed: dict[tuple[int, int], int] = {}
-        for fi, f in enumerate(faces):
-            for k in range(4):
-                e = (f[k], f[(k + 1) % 4])
-                if e in directed:
-                    raise InvalidMeshError(f"edge {e} is used twice in the same direction: the faces are not consistently oriented")
-                directed[e] = fi
-        object.__setattr__(self, "_directed", directed)
-        incident: dict[int, list[int]] = {}
-        for fi, f in enumerate(faces):
-            for v in f:
-                incident.setdefault(v, []).append(fi)
-        object.__setattr__(self, "_incident", {v: tuple(fs) for v, fs in incident.items()})
+        _set_topology(self, 4, "a quad with four distinct vertices")
 
     # -- topology ------------------------------------------------------------------------------
 

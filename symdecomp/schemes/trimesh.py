@@ -30,7 +30,7 @@ from types import MappingProxyType
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.mesh import InvalidMeshError, _as_weight, _combine
+from symdecomp.schemes.mesh import InvalidMeshError, _as_weight, _combine, _set_topology
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
@@ -97,26 +97,7 @@ class TriangleMesh:
     values: Mapping[int, tuple]
 
     def __post_init__(self):
-        faces = tuple(tuple(int(v) for v in f) for f in self.faces)
-        for f in faces:
-            if len(f) != 3 or len(set(f)) != 3:
-                raise InvalidMeshError(f"face {f} is not a triangle with three distinct vertices")
-        object.__setattr__(self, "faces", faces)
-        object.__setattr__(self, "values", MappingProxyType(dict(self.values)))
-        missing = {v for f in faces for v in f} - set(self.values)
-        if missing:
-            raise InvalidMeshError(f"vertices {sorted(missing)[:5]} have no value")
-        directed: dict[tuple[int, int], int] = {}
-        incident: dict[int, list[int]] = {}
-        for fi, f in enumerate(faces):
-            for k in range(3):
-                e = (f[k], f[(k + 1) % 3])
-                if e in directed:
-                    raise InvalidMeshError(f"edge {e} is used twice in the same direction: the faces are not consistently oriented")
-                directed[e] = fi
-                incident.setdefault(f[k], []).append(fi)
-        object.__setattr__(self, "_directed", directed)
-        object.__setattr__(self, "_incident", {v: tuple(fs) for v, fs in incident.items()})
+        _set_topology(self, 3, "a triangle with three distinct vertices")
 
     def vertices(self) -> tuple[int, ...]:
         return tuple(sorted(self._incident))

@@ -2,7 +2,9 @@
 
 import sympy as sp
 
-__all__ = ["n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "sin_jtheta", "cos_theta"]
+__all__ = [
+    "n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "sin_jtheta", "cos_theta", "Parameter", "RESERVED_NAMES",
+]
 
 #: The valence of the central vertex O.
 n = sp.Symbol("n", integer=True, positive=True)
@@ -21,3 +23,22 @@ cos_jtheta = sp.Symbol("c", real=True)
 sin_jtheta = sp.Symbol("s", real=True)
 #: ``c = cos(theta) = cos(pi/n)``: ``cos_jtheta`` at frequency ``j = 1``, positive (``>= 1/2`` for ``n >= 3``).
 cos_theta = sp.Symbol("c", positive=True)
+
+
+class Parameter(sp.Symbol):
+    """A free parameter named by a user (a scheme file's ``parameters``, a symbol in a weight given to the API).
+
+    A class of its own, so that a user's names live in their own namespace: ``Parameter("c", real=True)``
+    is never equal to :data:`cos_jtheta` (``Symbol("c", real=True)``), nor to any symbol the toolkit makes
+    for its own derivations (``t``, ``r1``, ``x``, ...), although it prints the same. sympy compares
+    symbols by class, name and assumptions, so substituting the toolkit's ``c`` can never touch it.
+    The paper's vertex weights :data:`alpha` and :data:`beta` are the exception: a scheme that names its
+    vertex-rule weights ``alpha``, ``beta`` means the paper's (tuning reads them).
+    """
+
+    __slots__ = ()
+
+
+#: Names a user may not give a parameter: the toolkit's own symbols (which would print the same as
+#: the parameter in every derivation) and the functions and constants of the weight grammar.
+RESERVED_NAMES = ("n", "j", "c", "s", "omega", "lambda", "pi", "sqrt", "cos", "sin")

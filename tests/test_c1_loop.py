@@ -19,6 +19,7 @@ from symdecomp.symbols import n as N
 from symdecomp.verify.bezier import bisect_triangle, certify_sign_triangles, triangle_jacobian_net
 from symdecomp.verify.c1 import c1_test, characteristic_nets
 from symdecomp.verify.c1_spectrum import _exact_charpoly, spectral_conditions
+from tests.test_c1 import standard_at_regular
 
 R = sp.Rational
 POINTS = [(0.1, 0.7), (0.25, 0.25), (0.6, 0.3), (0.0, 1.0), (0.33, 0.01)]
@@ -118,7 +119,7 @@ def test_the_certified_loop_spectrum_is_the_whole_two_ring_spectrum(n):
 
 def test_loop_with_beta_zero_is_not_c1_at_frequency_0():
     """beta = 0: the frequency-0 eigenvalue 5/8 exceeds lambda = 3/8 + cos(2 pi/5)/4; Loop's beta flips it."""
-    r = c1_test(triangle_scheme("beta zero", sp.Integer(0)), 5)
+    r = c1_test(triangle_scheme("beta zero", standard_at_regular(0, loop().vertex_rule.each_a, 6, (5,))), 5)
     assert r.verdict == "not-c1" and "frequency 0" in r.reason
     assert (r.spectral.subdominant.value - flint.fmpq(5, 8)).contains(0)
     assert c1_test(loop(), 5).verdict == "c1"
@@ -138,7 +139,7 @@ def test_loop_with_frequency_two_dominant_is_not_c1():
 
 def test_an_exact_opposite_eigenvalue_is_not_strictly_dominant():
     """beta = (1 + cos(2 pi/n)/4)/n puts -lambda at frequency 0 exactly, for every n (in Q(e^{2 pi i/n}))."""
-    scheme = triangle_scheme("opposite", (1 + sp.cos(2 * sp.pi / N) / 4) / N)
+    scheme = triangle_scheme("opposite", standard_at_regular((1 + sp.cos(2 * sp.pi / N) / 4) / N, R(1, 16), 6, (3, 5, 7)))
     for n in (3, 5, 7):
         r = c1_test(scheme, n)
         assert r.verdict == "not-c1" and "exactly its negative" in r.reason, r.reason
@@ -146,7 +147,7 @@ def test_an_exact_opposite_eigenvalue_is_not_strictly_dominant():
         lam = 3 / 8 + math.cos(2 * math.pi / n) / 4
         assert all(abs(m - lam) < 1e-9 for m in moduli[1:4]) and moduli[4] < lam - 1e-3  # three of modulus lambda
     # a beta off by 1/1000 separates them: the ordinary route decides, and no tie is claimed
-    near = triangle_scheme("near", (1 + sp.cos(2 * sp.pi / N) / 4) / N - R(1, 1000))
+    near = triangle_scheme("near", standard_at_regular((1 + sp.cos(2 * sp.pi / N) / 4) / N - R(1, 1000), R(1, 16), 6, (5,)))
     assert "negative" not in c1_test(near, 5).reason
 
 

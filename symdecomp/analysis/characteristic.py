@@ -176,10 +176,11 @@ def ring_layout(mesh: str) -> RingLayout:
 def check_applicable(scheme: Scheme) -> None:
     """Raise :class:`~symdecomp.errors.InvalidSchemeError` (one line) if the characteristic ring is not a known spline.
 
-    The scheme's rules act on the 1-ring of ``O``; every other point is refined by the regular
-    rules. So that this is one scheme, its edge (and face) rules at the regular valence (4 on
-    quads, 6 on triangles) must be those of Catmull-Clark (bicubic B-splines) or Loop (quartic
-    box-splines); its vertex rule is used at ``O`` only (tuned weights are a change at ``O``).
+    The scheme is one set of rules for the whole mesh (see :mod:`symdecomp.schemes.scheme`): its
+    edge and face rules everywhere, its vertex rule at every vertex by that vertex's valence. Away
+    from ``O`` every vertex has the regular valence (4 on quads, 6 on triangles), so the regular
+    patches are the splines the test knows (bicubic B-splines, quartic box-splines) exactly when
+    all its rules at the regular valence, the vertex rule included, are Catmull-Clark's or Loop's.
     """
     if scheme.parameters:
         raise InvalidSchemeError(
@@ -188,15 +189,25 @@ def check_applicable(scheme: Scheme) -> None:
     triangle = scheme.mesh == "triangle"
     regular, reference = (6, loop()) if triangle else (4, catmull_clark())
     try:
-        same = subdivision_matrix(scheme, regular)[1:, :] == subdivision_matrix(reference, regular)[1:, :]
+        ours, theirs = subdivision_matrix(scheme, regular), subdivision_matrix(reference, regular)
     except InvalidSchemeError as exc:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the C1 test does not apply ({exc})") from None
-    if not same:
+    if ours[1:, :] != theirs[1:, :]:
         layout = ring_layout(scheme.mesh)
         rules = "edge rule" if triangle else "edge and face rules"
         raise InvalidSchemeError(
             f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} {'is' if triangle else 'are'} not "
             f"{layout.reference}'s, so its regular patches are not {layout.spline}s (the only regular splines it knows)"
+        )
+    if ours[0, :] != theirs[0, :]:
+        layout = ring_layout(scheme.mesh)
+        mine = tuple(ours[0, k] for k in (0, 1, 1 + regular) if k < ours.cols)
+        standard = tuple(theirs[0, k] for k in (0, 1, 1 + regular) if k < theirs.cols)
+        raise InvalidSchemeError(
+            f"the C1 test does not apply to scheme {scheme.name!r}: its vertex rule at the regular valence {regular} has the "
+            f"weights {mine} (centre, each neighbour{'' if triangle else ', each face neighbour'}), not {layout.reference}'s "
+            f"{standard}; every regular vertex of the mesh uses it, so its regular patches are not {layout.spline}s "
+            "(the only regular splines it knows)"
         )
 
 

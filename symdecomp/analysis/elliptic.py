@@ -33,6 +33,7 @@ from functools import cache
 import mpmath
 import sympy as sp
 
+from symdecomp.algebra.valence_signs import integer_zeros
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
@@ -56,6 +57,8 @@ __all__ = [
     "elliptic_defect_table",
     "rotation_free_form",
     "elliptic_component",
+    "ComponentResultants",
+    "component_resultants",
 ]
 
 #: A symbol for an eigenvalue of the Eq. 43 matrix.
@@ -259,16 +262,87 @@ def rotation_free_form(scheme: Scheme) -> tuple[sp.Matrix, sp.Matrix]:
     return conj, conj.applyfunc(lambda e: sp.expand(e - e.subs(z, 1 / z)))
 
 
-def elliptic_component(scheme: Scheme, n, initial, eigenvalue=None) -> sp.Expr:
-    """The coefficient of ``initial = (h_O, h_a, h_b)`` on the subdominant eigenvector (Remark 5.2).
+def elliptic_component(scheme: Scheme, n, initial, eigenvalue=None) -> sp.Expr | None:
+    """The coefficient of ``initial = (h_O, h_a, h_b)`` on the subdominant eigenvector (Remark 5.2), or ``None``.
 
     ``(l . x)/(l . u)`` with ``l``, ``u`` the left and right eigenvectors of the Eq. 43 matrix for
-    the subdominant eigenvalue (or ``eigenvalue`` if given). Symbolic ``n`` is allowed.
+    the subdominant eigenvalue (or ``eigenvalue`` if given). The closed-form eigenvectors (cross
+    products of two columns and two rows of ``T - mu I``) vanish where those columns or rows are
+    dependent (a fixed centre, ``alpha = beta = 0``, makes the left one zero); then the eigenvectors
+    are the exact null spaces. ``None`` when no single component exists: the eigenvalue is not simple
+    (a null space of dimension 2, or ``l . u = 0``, a Jordan block). A zero vector is never used as an
+    eigenvector, so the quotient is never ``0/0``. Symbolic ``n`` (or free parameters) uses the closed
+    forms as they are and is ``None`` when they vanish identically.
     """
     if n is not N:
         n = check_valence(n)
     mu = recursion_eigenvalues(scheme)[1].subs(N, n) if eigenvalue is None else eigenvalue
+    x = sp.Matrix(initial)
     left = recursion_left_eigenvector(scheme, mu, n)
     right = recursion_eigenvector(scheme, mu, n)
-    x = sp.Matrix(initial)
-    return sp.simplify(left.dot(x) / left.dot(right))
+    if sp.simplify(left.dot(right)) != 0:
+        return sp.simplify(left.dot(x) / left.dot(right))
+    if n is N or scheme.parameters:
+        return None
+    T = sp.Matrix(recursion_matrix(scheme, n))
+    rights, lefts = (T - mu * sp.eye(3)).nullspace(simplify=True), (T.T - mu * sp.eye(3)).nullspace(simplify=True)
+    if len(rights) != 1 or len(lefts) != 1:
+        return None
+    left, right = lefts[0], rights[0]
+    denominator = sp.simplify(left.dot(right))
+    if denominator == 0:  # a Jordan block: the eigenvector has no complement to project along
+        return None
+    return sp.simplify(left.dot(x) / denominator)
+
+
+@dataclass(frozen=True)
+class ComponentResultants:
+    """Where the component of an input on an eigenvector of the Eq. 43 matrix can vanish, for every ``n`` at once.
+
+    ``chi(mu) = det(mu I - T)/(mu - 1)`` has the two eigenvalues other than 1 as roots; ``l``, ``u``
+    are the left and right eigenvectors as polynomials in ``mu`` (cross products). At a valence where
+    ``Res_mu(l . x, chi)`` and ``Res_mu(l . u, chi)`` are nonzero (and no leading coefficient or
+    denominator vanishes), both roots ``mu`` are simple, their eigenvectors are nonzero and the
+    component ``(l . x)/(l . u)`` of ``x`` is nonzero.
+    """
+
+    #: The input ``x = (h_O, h_a, h_b)``.
+    initial: tuple
+    #: ``chi(mu)``, the non-unit factor of the characteristic polynomial.
+    chi: sp.Expr
+    #: ``l . x`` as a polynomial in ``mu``.
+    weight: sp.Expr
+    #: ``Res_mu(l . x, chi)``, a rational function of ``n``.
+    resultant_weight: sp.Expr
+    #: ``Res_mu(l . u, chi)``.
+    resultant_norm: sp.Expr
+    #: The integers ``n >= start`` where the argument fails (to be checked one by one), or ``None`` when a
+    #: resultant vanishes identically (no argument for every ``n``).
+    exceptions: tuple[int, ...] | None
+
+
+def component_resultants(scheme: Scheme, initial, start: int) -> ComponentResultants:
+    """The resultant argument that the component of ``initial`` is nonzero for every valence ``n >= start``.
+
+    Needs rules rational in ``n`` without free parameters (else :class:`~symdecomp.errors.InvalidInputError`
+    from :func:`~symdecomp.algebra.valence_signs.integer_zeros`).
+    """
+    mu = sp.Symbol("mu")
+    T = sp.Matrix(recursion_matrix(scheme))
+    chi = sp.cancel(sp.expand((mu * sp.eye(3) - T).det()) / (mu - 1))
+    left, right = recursion_left_eigenvector(scheme, mu), recursion_eigenvector(scheme, mu)
+    weight, norm = sp.expand(left.dot(sp.Matrix(initial))), sp.expand(left.dot(right))
+    chi_numerator = sp.numer(sp.together(chi))
+    res_w = sp.factor(sp.resultant(weight, chi_numerator, mu))
+    res_u = sp.factor(sp.resultant(norm, chi_numerator, mu))
+    # the resultant specialises to each valence where the leading coefficients and the denominators do not vanish
+    parts = [sp.fraction(sp.together(e)) for e in (chi, weight, norm)]
+    coefficients = [sp.Poly(p, mu).LC() for p, _ in parts if p.has(mu)] + [q for _, q in parts]
+    bad: set[int] | None = set()
+    for e in [res_w, res_u, *coefficients]:
+        zeros = integer_zeros(e, N, start)
+        if zeros is None:
+            bad = None
+            break
+        bad.update(zeros)
+    return ComponentResultants(tuple(initial), chi, weight, res_w, res_u, None if bad is None else tuple(sorted(bad)))

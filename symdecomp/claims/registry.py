@@ -45,15 +45,18 @@ from __future__ import annotations
 import enum
 import importlib
 import pkgutil
+import signal
+import threading
 import traceback
 from collections.abc import Callable
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cache
 
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 
 __all__ = [
@@ -70,6 +73,10 @@ __all__ = [
     "all_claims",
     "get_claim",
     "check_claim",
+    "DEFAULT_BUDGET",
+    "time_budget",
+    "unbound_parameters",
+    "generic_parameter_values",
     "REGISTRY",
 ]
 
@@ -370,16 +377,72 @@ def get_claim(label: str) -> Claim:
         raise KeyError(f"no claim labelled {label!r}; known: {', '.join(c.label for c in all_claims())}") from None
 
 
-def check_claim(label: str, scheme: Scheme | None = None) -> CheckResult:
+#: Seconds one claim's check may take (wall clock) before it is reported ``undecided``: ``check_claim``'s
+#: ``budget`` and ``symdecomp claims --budget``. Every check on standard Catmull-Clark takes a few seconds.
+DEFAULT_BUDGET = 60.0
+
+
+class BudgetExceeded(BaseException):
+    """Raised inside a check when its time budget runs out (a ``BaseException``, so that no ``except Exception``
+    inside a check or inside sympy can swallow it)."""
+
+
+_ARMED = [False]
+
+
+@contextmanager
+def time_budget(seconds: float | None):
+    """Raise :class:`BudgetExceeded` in the enclosed code after ``seconds`` of wall-clock time.
+
+    A real-time interval timer (``SIGALRM``): it interrupts Python code, sympy's included, between two
+    bytecodes; a single long call into a C library is interrupted when it returns. Only in the main thread
+    (elsewhere, and for ``None``, there is no budget); a budget inside a budget is the outer one.
+    """
+    if (seconds is None or _ARMED[0] or not hasattr(signal, "setitimer")
+            or threading.current_thread() is not threading.main_thread()):
+        yield
+        return
+
+    def expire(signum, frame):
+        raise BudgetExceeded
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    _ARMED[0] = True
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+        _ARMED[0] = False
+
+
+def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | None = DEFAULT_BUDGET) -> CheckResult:
     """Check a claim for ``scheme`` (default: standard Catmull-Clark), once per scheme.
 
-    An exception inside the check becomes status ``error`` with its message.
+    An exception inside the check becomes status ``error`` with its message; a check that is still running
+    after ``budget`` seconds (``None``: no limit) becomes ``undecided``, saying so. On a scheme with free
+    parameters, a check that stops on them (a numeric comparison meeting a symbol) is ``not applicable``
+    with the reason, and a counterexample that is an expression in them is made concrete
+    (:func:`unbound_parameters`).
     """
-    return _check_claim(label, catmull_clark() if scheme is None else scheme)
+    if budget is not None and not (isinstance(budget, (int, float)) and not isinstance(budget, bool) and 0 < budget < 10**6):
+        raise InvalidInputError(f"budget must be a number of seconds between 0 and 1e6, got {budget!r}")
+    return _check_claim(label, catmull_clark() if scheme is None else scheme, budget)
 
 
 @cache
-def _check_claim(label: str, scheme: Scheme) -> CheckResult:
+def _check_claim(label: str, scheme: Scheme, budget: float | None) -> CheckResult:
+    get_claim(label)
+    try:
+        with time_budget(budget):
+            return _run_check(label, scheme)
+    except BudgetExceeded:
+        return CheckResult(Status.UNDECIDED, f"the check did not finish within its budget of {budget:g} s (a longer budget may "
+                                             "decide it: --budget)")
+
+
+def _run_check(label: str, scheme: Scheme) -> CheckResult:
     c = get_claim(label)
     try:
         result = c.check(scheme)
@@ -388,10 +451,82 @@ def _check_claim(label: str, scheme: Scheme) -> CheckResult:
         return CheckResult(Status.NOT_APPLICABLE, Text(f"not applicable to the scheme {scheme.name!r}: ", why))
     except Exception as exc:  # the registry reports, the caller decides
         tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
+        if scheme.parameters:  # a numeric step met a free parameter: the check needs values, it did not fail
+            return CheckResult(Status.NOT_APPLICABLE, Text(
+                f"not applicable to the scheme {scheme.name!r} while its parameters {', '.join(map(str, scheme.parameters))} are "
+                f"free: the check compares numbers (it stopped at {tb}); give the parameters values"))
         return CheckResult(Status.ERROR, f"check raised {tb}")
     if not isinstance(result, CheckResult):
         return CheckResult(Status.ERROR, f"check returned {type(result).__name__}, not CheckResult")
+    if result.status in (Status.REFUTED, Status.CORRECTED) and unbound_parameters(result.counterexample, scheme.parameters):
+        return _at_parameter_values(label, scheme, result)
     return result
+
+
+def unbound_parameters(finding, parameters) -> set:
+    """The parameters that occur in ``finding`` (a counterexample) other than as the left side of an assignment
+    ``p = value``: a counterexample in which they occur is an expression, not a concrete case."""
+    if not parameters or not isinstance(finding, Text):
+        return set()
+    wanted, found = set(parameters), set()
+
+    def visit(obj) -> None:
+        if isinstance(obj, sp.Eq) and obj.lhs.is_Symbol:
+            visit(obj.rhs)
+        elif isinstance(obj, sp.MatrixBase):
+            for entry in obj:
+                visit(entry)
+        elif isinstance(obj, sp.Basic):
+            if isinstance(obj, (sp.Tuple, sp.Add, sp.Mul)) and any(isinstance(a, sp.Eq) for a in obj.args):
+                for a in obj.args:
+                    visit(a)
+            else:
+                found.update(obj.free_symbols & wanted)
+
+    for part in finding.parts:
+        visit(part)
+    return found
+
+
+def generic_parameter_values(parameters) -> dict:
+    """A concrete point for free parameters at which a statement that fails as an expression is tested: distinct
+    small rationals ``1/11, 1/13, 1/17, ...`` (reciprocal primes, so that no parameter is 0 and no two agree)."""
+    primes = sp.sieve.primerange(11, 10**6)
+    return {p: sp.Rational(1, next(primes)) for p in parameters}
+
+
+def _at_parameter_values(label: str, scheme: Scheme, symbolic: CheckResult) -> CheckResult:
+    """A refutation whose counterexample is an expression in free parameters, made concrete.
+
+    The statement fails as an identity in the parameters; it may hold at some values (where the scheme is
+    Catmull-Clark, say). The check runs again with the parameters at :func:`generic_parameter_values`: a
+    refutation there, with a counterexample free of parameters, refutes the statement for the scheme (a
+    universal statement over the parameters), scope ``single case`` (one point of the family). Otherwise
+    the verdict depends on the values and is ``undecided``.
+    """
+    values = generic_parameter_values(scheme.parameters)
+    where = Text(*[part for k, (p, v) in enumerate(values.items())
+                   for part in ((", " if k else ""), sp.Eq(p, v, evaluate=False))])
+    try:
+        concrete_scheme = scheme.substitute(values, name=f"{scheme.name} at {where}")
+    except InvalidSchemeError as exc:
+        return CheckResult(Status.UNDECIDED, Text("the counterexample is an expression in the parameters (", symbolic.counterexample,
+                                                  "), and the scheme is not defined at ", where, ": ", str(exc)))
+    concrete = _run_check(label, concrete_scheme)
+    if concrete.status in (Status.REFUTED, Status.CORRECTED) and not unbound_parameters(concrete.counterexample, scheme.parameters):
+        return CheckResult(
+            concrete.status,
+            Text("with the parameters at ", where, " (the statement fails as an identity in them): ", concrete.evidence),
+            steps=symbolic.steps,
+            counterexample=Text(where, ": ", concrete.counterexample),
+            correction=concrete.correction,
+            scope=Scope.SINGLE_CASE,
+        )
+    return CheckResult(
+        Status.UNDECIDED,
+        Text("the verdict depends on the values of the parameters: as an expression in them the statement fails (",
+             symbolic.counterexample, "), but at ", where, " the check gives ", concrete.status.value),
+    )
 
 
 def is_zero(expr) -> bool:

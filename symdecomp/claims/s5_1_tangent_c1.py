@@ -15,6 +15,7 @@ import sympy as sp
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import Scheme, catmull_clark
+from symdecomp.symbols import n as N
 from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.c1_spectrum import round_down
 
@@ -64,7 +65,8 @@ def _c1_reif(scheme: Scheme) -> CheckResult:
     if failed:
         return failed
     lo, hi = rows[0][0], rows[-1][0]
-    broken = c1_test(catmull_clark(0, 0), 3)
+    # alpha = beta = 0 at n = 3, Catmull-Clark's weights at the regular valence 4 (which every regular vertex uses)
+    broken = c1_test(catmull_clark(sp.Rational(3, 32) * (N - 3), sp.Rational(1, 64) * (N - 3)), 3)
     spline = {"quad": "three bicubic sub-patches", "triangle": "three quartic box-spline sub-patches (degree-6 Jacobian)"}
     steps = (
         Step("For each $n$: $\\lambda$, a lower bound of the gap $|\\lambda| - \\max|\\mu|$ over the other eigenvalues "

@@ -6,9 +6,11 @@ import random
 
 import sympy as sp
 
+from symdecomp.algebra.valence_signs import integer_zeros
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import (
     MU,
+    component_resultants,
     elliptic_component,
     eq44_ratio,
     nice_elliptic_conditions,
@@ -22,6 +24,7 @@ from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.claims.applicability import needs_mirror_symmetry
 from symdecomp.claims.notation import A, B, M, eq, j, lambda_1, listed, ne, omega_2n, tup
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -360,34 +363,68 @@ def _eq45(scheme: Scheme) -> CheckResult:
     r"first there is no elliptic component, in the second it generally exists.",
 )
 def _remark52(scheme: Scheme) -> CheckResult:
+    # long: the three inputs, the exact range and the argument for every n are one verdict.
     free = with_free_vertex_rule(scheme)
     l = recursion_left_eigenvector(free, MU)
     dot111 = sp.factor(sum(l))
-    valences = range(3, 9)
-    comp_111 = [elliptic_component(scheme, n, (1, 1, 1)) for n in valences]
-    comp_011 = [elliptic_component(scheme, n, (0, 1, 1)) for n in valences]
-    # the 2n-gon component j = n (A^n = z, B^n = -z) feeds (0, 1, -1) into the Eq. 43 recursion
-    comp_01m1 = [elliptic_component(scheme, n, (0, 1, -1)) for n in valences]
+    lo = max(3, scheme.minimum_valence())
+    valences = range(lo, 9)
+    inputs = ((1, 1, 1), (0, 1, 1), (0, 1, -1))
+    comps = {x: {n: elliptic_component(scheme, n, x) for n in valences} for x in inputs}
+    comp_111, comp_011, comp_01m1 = (comps[x] for x in inputs)
     steps = (
         Step("Left eigenvector $l$ for $\\mu$ (derived, free vertex weights)", l),
         Step("$l\\cdot(1,1,1)$ (vanishes when $\\mu \\neq 1$ is an eigenvalue)", dot111),
-        Step("Elliptic component of $(0,1,1)$ at $n = 3, \\dots, 8$", sp.Matrix(comp_011)),
-        Step("Elliptic component of $(0,1,-1)$ (the component $j = n$) at $n = 3, \\dots, 8$", sp.Matrix(comp_01m1)),
-    )
-    nonzero = [n for n, c in zip(valences, comp_111) if sp.simplify(c) != 0]
+        Step("Elliptic component of $(0,1,1)$ at $n = 3, \\dots, 8$", sp.Matrix(list(comp_011.values()))),
+        Step("Elliptic component of $(0,1,-1)$ (the component $j = n$) at $n = 3, \\dots, 8$",
+             sp.Matrix(list(comp_01m1.values()))),
+    ) if all(c is not None for x in inputs for c in comps[x].values()) else ()
+    simple = [n for n in valences if any(comps[x][n] is None for x in inputs)]
+    if simple:
+        return CheckResult(Status.UNDECIDED, Text("the subdominant eigenvalue of the Eq. 43 matrix is not simple at ", eq(N, simple[0]),
+                                                  ": there is no single elliptic component to compare"))
+    nonzero = [n for n, c in comp_111.items() if sp.simplify(c) != 0]
     if nonzero:
         return CheckResult(
             Status.REFUTED,
             "the input (1,1,1) has an elliptic component",
-            counterexample=Text("n = ", nonzero[0], ": elliptic component of (1,1,1) is ", comp_111[nonzero[0] - 3]),
+            counterexample=Text("n = ", nonzero[0], ": elliptic component of (1,1,1) is ", comp_111[nonzero[0]]),
             steps=steps,
         )
-    third = [n for n, c in zip(valences, comp_01m1) if sp.simplify(c) == 0]
+    third = [n for n, c in comp_01m1.items() if sp.simplify(c) == 0]
+    zero_011 = [n for n, c in comp_011.items() if sp.simplify(c) == 0]
+    every_n, why_not = _remark52_every_n(scheme, lo)
+    if every_n is not None:  # the exceptional valences of the argument, beyond the range, checked one by one
+        for n in every_n:
+            if n not in comp_011 and elliptic_component(scheme, n, (0, 1, 1)) in (None, 0):
+                zero_011.append(n)
+            if n not in comp_01m1 and elliptic_component(scheme, n, (0, 1, -1)) == 0:
+                third.append(n)
+    if zero_011:
+        return CheckResult(
+            Status.REFUTED,
+            "the input (0,1,1) has no elliptic component",
+            counterexample=Text(eq(N, zero_011[0]), ": the elliptic component of (0,1,1) is 0"),
+            steps=steps,
+        )
+    scope = Scope.EVERY_N if every_n is not None else None
+    where = ("for every n (the component of (1,1,1) on an eigenvector of mu != 1 vanishes, since (1,1,1) is the eigenvector of 1 "
+             "and the rows of the Eq. 43 matrix sum to 1; the others by resultants in n)" if every_n is not None
+             else f"at n = {lo}..8; not for every n: {why_not}")
     if not third:
+        if every_n is None:
+            return CheckResult(
+                Status.VERIFIED,
+                Text("(1,1,1) has no elliptic component, (0,1,1) and (0,1,-1) have one, ", where, " (",
+                     sp.Matrix(list(comp_01m1.values())).T, ")"),
+                valences=(lo, 8),
+                steps=steps,
+            )
         return CheckResult(
             Status.PROVED,
             Text("(1,1,1) is the eigenvector of 1 (no elliptic component); the other inputs (0, x, y) modulo (1,1,1), including "
-                 "(0,1,-1) from the component j = n, have an elliptic component at n = 3..8 (", sp.Matrix(comp_01m1).T, ")"),
+                 "(0,1,-1) from the component j = n, have an elliptic component ", where, " (", sp.Matrix(list(comp_01m1.values())).T,
+                 " at n = ", lo, "..8)"),
             steps=steps,
         )
     return CheckResult(
@@ -395,13 +432,41 @@ def _remark52(scheme: Scheme) -> CheckResult:
         Text("(1,1,1) is the eigenvector of 1: no elliptic component; (0,1,1) has one. But the input ", tup(S("h_O"), S("abar"), S("bbar")),
              " also receives the 2n-gon component ", eq(j, N), " (", eq(A(N), S("z_n")), ", ", eq(B(N), -S("z_n")),
              "), i.e. (0,1,-1), which is neither case"),
-        scope=Scope.EVERY_N,
+        scope=scope or Scope.SINGLE_CASE,
         correction="for input from the component j = 0 (abar = bbar) the cases are (1,1,1) (no elliptic component) and "
         "(0,1,1); a general 1-ring adds (0,1,-1) from the component j = n, so the input is (0, x, y) modulo (1,1,1), "
         "with elliptic component l_a x + l_b y over l.u",
-        counterexample=Text("n = ", third[0], ", input (0, 1, -1) (a's raised, b's lowered): elliptic component 0"),
+        counterexample=Text("n = ", min(third), ", input (0, 1, -1) (a's raised, b's lowered): elliptic component 0"),
         steps=steps,
     )
+
+
+def _remark52_every_n(scheme: Scheme, lo: int) -> tuple[tuple[int, ...] | None, str]:
+    """The valences ``n >= lo`` that the argument for every n leaves to a direct check, or ``None`` and the reason.
+
+    (1,1,1) is the right eigenvector of 1 when the rows of the Eq. 43 matrix sum to 1 identically (checked), so every
+    left eigenvector of an eigenvalue mu != 1 is orthogonal to it; mu = 1 only where chi(1) = 0. (0,1,1) and
+    (0,1,-1) have nonzero components on both non-unit eigenvectors off the integer zeros of two resultants
+    (:func:`component_resultants`)."""
+    if scheme.parameters:
+        return None, "the scheme has free parameters"
+    T = sp.Matrix(recursion_matrix(scheme))
+    if sp.simplify(T * sp.ones(3, 1) - sp.ones(3, 1)) != sp.zeros(3, 1):
+        return None, "the rows of the Eq. 43 matrix do not sum to 1"
+    bad: set[int] = set()
+    try:
+        for x in ((0, 1, 1), (0, 1, -1)):
+            r = component_resultants(scheme, x, lo)
+            if r.exceptions is None:
+                return None, "a resultant vanishes identically"
+            bad.update(r.exceptions)
+            ones = integer_zeros(r.chi.subs(sp.Symbol("mu"), 1), N, lo)
+            if ones is None:
+                return None, "1 is a double eigenvalue of the Eq. 43 matrix for every n"
+            bad.update(ones)
+    except InvalidInputError as exc:  # a weight such as cos(2 pi/n): the resultants are not rational in n
+        return None, str(exc)
+    return tuple(sorted(bad)), ""
 
 
 @claim(

@@ -5,12 +5,10 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
-from symdecomp.algebra.valence_signs import integer_zeros
-from symdecomp.analysis.elliptic import elliptic_component, recursion_eigenvector, recursion_left_eigenvector, tangent_lambda
+from symdecomp.analysis.elliptic import component_resultants, elliptic_component, tangent_lambda
 from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
 from symdecomp.analysis.reduction import subdivision_block_form
-from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim
 from symdecomp.claims.applicability import needs_mirror_symmetry
@@ -186,20 +184,6 @@ def _construction(scheme: Scheme) -> CheckResult:
     )
 
 
-def _elliptic_component(scheme: Scheme, n: int):
-    """The elliptic component of the input ``(1, 0, 0)`` of Eq. 43 at valence ``n``; exact null spaces where the
-    closed-form eigenvectors degenerate (their two rows dependent), ``None`` if the eigenvalue is not simple."""
-    c = elliptic_component(scheme, n, (1, 0, 0))
-    if c.is_finite:
-        return c
-    T = sp.Matrix(recursion_matrix(scheme, n))
-    mu = recursion_eigenvalues(scheme)[1].subs(N, n)
-    right, left = (T - mu * sp.eye(3)).nullspace(), (T.T - mu * sp.eye(3)).nullspace()
-    if len(right) != 1 or len(left) != 1:
-        return None
-    return sp.simplify(left[0][0] / left[0].dot(right[0]))
-
-
 def _frequency_zero_closed(scheme: Scheme) -> tuple[bool, sp.Matrix]:
     """For symbolic ``n``: a circulant block maps the constant vector to its row sum times it, so ``S`` (block form)
     maps ``(h, x 1, y 1)`` to ``(h', x' 1, y' 1)``; the 3 x 3 matrix of that map, and whether it is the Eq. 43 matrix."""
@@ -210,34 +194,23 @@ def _frequency_zero_closed(scheme: Scheme) -> tuple[bool, sp.Matrix]:
     return sp.expand(image - sp.Matrix(recursion_matrix(scheme))) == sp.zeros(3, 3), image
 
 
-def _nonzero_for_every_valence(scheme: Scheme, lo: int):
-    """``(bad valences, steps)``: with ``chi`` the non-unit factor of the Eq. 43 characteristic polynomial and ``l``,
-    ``u`` the left and right eigenvectors at its root ``mu`` (cross products, polynomial in ``mu``), the integers
-    ``n >= lo`` where ``Res_mu(l_O, chi)`` or ``Res_mu(l . u, chi)`` vanishes (or a coefficient has a pole). Elsewhere
-    both roots ``mu`` have ``l_O != 0`` and ``l . u != 0``. ``None`` when a resultant vanishes identically."""
-    mu = Sym("mu")
-    T = sp.Matrix(recursion_matrix(scheme))
-    chi = sp.cancel(sp.expand((mu * sp.eye(3) - T).det()) / (mu - 1))
-    left, right = recursion_left_eigenvector(scheme, mu), recursion_eigenvector(scheme, mu)
-    l_o, l_u = sp.expand(left[0]), sp.expand(left.dot(right))
-    res_o = sp.factor(sp.resultant(l_o, sp.numer(sp.together(chi)), mu))
-    res_u = sp.factor(sp.resultant(l_u, sp.numer(sp.together(chi)), mu))
+def _nonzero_for_every_valence(scheme: Scheme, lo: int, initial=(1, 0, 0)):
+    """``(exceptional valences, steps)`` of the resultant argument (:func:`component_resultants`) that ``initial``
+    has a nonzero component on both non-unit eigenvectors of Eq. 43 for every ``n >= lo``."""
+    r = component_resultants(scheme, initial, lo)
+    x = "l_O" if tuple(initial) == (1, 0, 0) else "l\\cdot x"
+    given = "(" + ",".join(map(str, initial)) + ")"
     steps = (
-        Step("$\\chi(\\mu)=\\det(\\mu I-T)/(\\mu-1)$, the factor of the Eq. 43 matrix whose roots are the two eigenvalues other than 1", chi),
-        Step("$l_O(\\mu)$: the weight of $(1,0,0)$ on the left eigenvector $l$ (cross product of columns 2, 3 of $T-\\mu I$)", l_o),
-        Step("$\\operatorname{Res}_\\mu(l_O,\\chi)$: zero at a valence iff $l_O$ vanishes at a root of $\\chi$ there", res_o),
-        Step("$\\operatorname{Res}_\\mu(l\\cdot u,\\chi)$, $u$ the right eigenvector: nonzero iff both roots simple with $l\\cdot u\\ne0$", res_u),
+        Step("$\\chi(\\mu)=\\det(\\mu I-T)/(\\mu-1)$, the factor of the Eq. 43 matrix whose roots are the two eigenvalues "
+             "other than 1", r.chi),
+        Step(f"${x}(\\mu)$: the weight of ${given}$ on the left eigenvector $l$ (cross product of columns 2, 3 of $T-\\mu I$)",
+             r.weight),
+        Step(f"$\\operatorname{{Res}}_\\mu({x},\\chi)$: zero at a valence iff ${x}$ vanishes at a root of $\\chi$ there",
+             r.resultant_weight),
+        Step("$\\operatorname{Res}_\\mu(l\\cdot u,\\chi)$, $u$ the right eigenvector: nonzero iff both roots simple with "
+             "$l\\cdot u\\ne0$", r.resultant_norm),
     )
-    # the resultant specialises to each valence where the leading coefficients and the denominators do not vanish
-    parts = [sp.fraction(sp.together(e)) for e in (chi, l_o, l_u)]
-    coefficients = [sp.Poly(p, mu).LC() for p, _ in parts] + [q for _, q in parts]
-    bad = set()
-    for e in [res_o, res_u, *coefficients]:
-        zeros = integer_zeros(e, N, lo)
-        if zeros is None:
-            return None, steps
-        bad.update(zeros)
-    return tuple(sorted(bad)), steps
+    return r.exceptions, steps
 
 
 @claim(
@@ -269,7 +242,7 @@ def _basis(scheme: Scheme) -> CheckResult:
     except InvalidInputError as exc:  # a weight such as cos(2 pi/n): the resultants are not rational in n
         bad, steps, not_rational = None, (), str(exc)
     checked = sorted(set(bad or ()) | {3, 4, 5} if bad is not None else {3, 4, 5})
-    comps = {n: _elliptic_component(cc, n) for n in checked if n >= lo}
+    comps = {n: elliptic_component(cc, n, (1, 0, 0)) for n in checked if n >= lo}
     if any(c is None for c in comps.values()):
         return CheckResult(Status.UNDECIDED, "the subdominant eigenvalue of Eq. 43 is not simple: no single elliptic component",
                            steps=steps)

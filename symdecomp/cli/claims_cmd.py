@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from symdecomp.claims import Status, all_claims, check_claim, scope_summary
-from symdecomp.cli.common import Once, add_scheme_option, flag, print_json, progress, refuse_non_quad
+from symdecomp.cli.common import Once, add_budget_option, add_scheme_option, flag, print_json, progress, refuse_non_quad
 
 
 def register(sub) -> None:
@@ -25,6 +25,7 @@ def register(sub) -> None:
     p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
     add_scheme_option(p)
+    add_budget_option(p)
     flag(p, "--no-progress", help="do not draw a progress bar on stderr")
     p.set_defaults(func=run)
 
@@ -53,7 +54,7 @@ def run(args) -> int:
         claims = [c for c in claims if c.label in wanted]
     rows, results = [], []
     for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):
-        r = check_claim(c.label, args.scheme)
+        r = check_claim(c.label, args.scheme, budget=args.budget)
         results.append(r)
         row = {
             "label": c.label,

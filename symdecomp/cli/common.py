@@ -59,6 +59,7 @@ LIMITS = {
     "c1": (128, "each valence needs the spectrum of the 2-ring matrix and interval bounds of its characteristic map"),
     "c1 --depth": (12, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
+    "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),
     "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 1200 bits"),
 }
 
@@ -176,6 +177,15 @@ def digits(name: str = "--digits", *, minimum: int = 1, limit: str = "digits"):
 
     parse.__name__ = "digits"
     return parse
+
+
+def add_budget_option(parser: argparse.ArgumentParser) -> None:
+    """``--budget SECONDS``: the wall-clock time one claim's check may take before it is reported undecided."""
+    from symdecomp.claims.registry import DEFAULT_BUDGET
+
+    parser.add_argument("--budget", type=positive_int("--budget", "budget"), action=Once, default=int(DEFAULT_BUDGET),
+                        metavar="SECONDS", help=f"seconds one claim's check may take; a check still running then is reported "
+                        f"undecided, saying so (default {int(DEFAULT_BUDGET)})")
 
 
 def scheme_by_name(name: str) -> Scheme:

@@ -8,7 +8,8 @@ import sys
 from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.cli.common import Once, add_scheme_option, flag, given, print_json, progress, refuse_non_quad
+from symdecomp.claims.registry import DEFAULT_BUDGET
+from symdecomp.cli.common import Once, add_budget_option, add_scheme_option, flag, given, print_json, progress, refuse_non_quad
 from symdecomp.cli.files import check_output_directory, replace_owned_files
 from symdecomp.errors import InvalidInputError
 from symdecomp.output.latex import claim_latex, derivation_files
@@ -41,14 +42,15 @@ def register(sub) -> None:
         "e.g. --label 'Eq. 43' (to paste into a paper; needs the preamble of main.tex)",
     )
     add_scheme_option(p)
+    add_budget_option(p)
     flag(p, "--no-progress", help="do not draw a progress bar on stderr")
     p.set_defaults(func=run)
 
 
-def write_derivations(out: Path, *, show_progress: bool = False, scheme=None) -> list[Path]:
-    """Check every claim (for ``scheme``, default Catmull-Clark) and write the derivation files to ``out``."""
+def write_derivations(out: Path, *, show_progress: bool = False, scheme=None, budget=DEFAULT_BUDGET) -> list[Path]:
+    """Check every claim (for ``scheme``, default Catmull-Clark; ``budget`` seconds each) and write the derivation files to ``out``."""
     claims = all_claims()
-    pairs = [(c, check_claim(c.label, scheme)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
+    pairs = [(c, check_claim(c.label, scheme, budget=budget)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
     return _write(out, derivation_files(pairs))
 
 
@@ -78,16 +80,16 @@ def run(args) -> int:
         unknown = [label for label in args.label if label not in known]
         if unknown:
             raise InvalidInputError(f"no claim labelled {', '.join(unknown)}; known: {', '.join(known)}")
-        print("\n".join(claim_latex(known[label], check_claim(label, args.scheme)) for label in args.label), end="")
-        return 1 if any(check_claim(label, args.scheme).status is Status.ERROR for label in args.label) else 0
-    written = write_derivations(args.out, show_progress=not args.no_progress and not args.json, scheme=args.scheme)
+        print("\n".join(claim_latex(known[label], check_claim(label, args.scheme, budget=args.budget)) for label in args.label), end="")
+        return 1 if any(check_claim(label, args.scheme, budget=args.budget).status is Status.ERROR for label in args.label) else 0
+    written = write_derivations(args.out, show_progress=not args.no_progress and not args.json, scheme=args.scheme, budget=args.budget)
     if args.json:
         print_json([str(p) for p in written])
     else:
         for path in written:
             print(path)
         print(f"compile with: cd {args.out} && latexmk -pdf main.tex", file=sys.stderr)
-    failed = [c.label for c in all_claims() if check_claim(c.label, args.scheme).status is Status.ERROR]
+    failed = [c.label for c in all_claims() if check_claim(c.label, args.scheme, budget=args.budget).status is Status.ERROR]
     if failed:
         print(f"symdecomp: the checks of {', '.join(failed)} failed to run (status error)", file=sys.stderr)
     return 1 if failed else 0

@@ -61,6 +61,7 @@ from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffi
 from symdecomp.expressions import parse_expression
 from symdecomp.schemes.loop import loop, loop_warren
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
+from symdecomp.symbols import RESERVED_NAMES, Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
@@ -77,7 +78,6 @@ _TOP_KEYS = {"name", "mesh", "parameters", "edge", "face", "vertex"}
 _RULE_KEYS = {"O", "a", "b"}
 _OFFSET = re.compile(r"^[+-]?[0-9]{1,4}$")
 _IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,15}$")
-_RESERVED = {"n", "pi", "sqrt", "cos", "sin"}
 _KNOWN_SYMBOLS = {"alpha": ALPHA, "beta": BETA}
 MAX_FILE_BYTES = 100_000
 
@@ -152,13 +152,14 @@ def _parameters(value, source: str) -> dict[str, sp.Symbol]:
         raise InvalidSchemeError(f"{source}: parameters must be a list of names, e.g. [\"alpha\", \"beta\"]")
     symbols = {"n": N}
     for p in value:
-        if not _IDENTIFIER.match(p) or p in _RESERVED:
+        if not _IDENTIFIER.match(p) or p in RESERVED_NAMES:
             raise InvalidSchemeError(
-                f"{source}: parameters: {p!r} is not a usable name (letters and digits, at most 16, not n, pi, sqrt, cos, sin)"
+                f"{source}: parameters: {p!r} is not a usable name (letters and digits, at most 16; reserved: "
+                f"{', '.join(RESERVED_NAMES)})"
             )
         if p in symbols:
             raise InvalidSchemeError(f"{source}: parameters: {p!r} is declared twice")
-        symbols[p] = _KNOWN_SYMBOLS.get(p, sp.Symbol(p, real=True))
+        symbols[p] = _KNOWN_SYMBOLS.get(p) or Parameter(p, real=True)
     return symbols
 
 

@@ -32,6 +32,7 @@ import sympy as sp
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError
 from symdecomp.expressions import exact_value
+from symdecomp.symbols import Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
@@ -190,6 +191,7 @@ class Scheme:
             )
         if self.mesh == "triangle" and (self.edge_rule.b or self.vertex_rule.each_b != 0):
             raise InvalidSchemeError(f"scheme {self.name!r}: a triangle 1-ring has no face neighbours b_i; give no b weights")
+        _to_parameters(self)
         free = set()
         for rule in self.stencils():
             free |= rule.center.free_symbols
@@ -245,6 +247,36 @@ class Scheme:
             tuple(p for p in self.parameters if p not in subs),
             self.mesh,
         )
+
+
+def _to_parameters(scheme: Scheme) -> None:
+    """Move every user symbol of ``scheme`` into the users' namespace (:class:`~symdecomp.symbols.Parameter`).
+
+    A weight given to the API may hold any sympy symbol, e.g. ``Symbol("c", real=True)``, which is the
+    toolkit's ``c = cos(j pi/n)`` by sympy's equality; replaced by a parameter of the same name and
+    assumptions it can no longer meet the toolkit's symbols. ``n`` stays the valence, and ``alpha``,
+    ``beta`` stay the paper's vertex weights.
+    """
+    weights = [w for rule in scheme.stencils() for w in (rule.center, *(x for _, x in rule.a + rule.b))]
+    v = scheme.vertex_rule
+    weights += [v.center, v.each_a, v.each_b, *scheme.parameters]
+    own = {N, ALPHA, BETA}
+    stray = {s for w in weights for s in sp.sympify(w, strict=True).free_symbols
+             if s not in own and not isinstance(s, Parameter)}
+    if not stray:
+        return
+    move = {s: Parameter(s.name, **s.assumptions0) for s in stray}
+
+    def stencil(rule: Stencil) -> Stencil:
+        return Stencil(rule.center.xreplace(move), tuple((k, w.xreplace(move)) for k, w in rule.a),
+                       tuple((k, w.xreplace(move)) for k, w in rule.b))
+
+    object.__setattr__(scheme, "edge_rule", stencil(scheme.edge_rule))
+    if scheme.face_rule is not None:
+        object.__setattr__(scheme, "face_rule", stencil(scheme.face_rule))
+    object.__setattr__(scheme, "vertex_rule", VertexRule(v.center.xreplace(move), v.each_a.xreplace(move),
+                                                         v.each_b.xreplace(move)))
+    object.__setattr__(scheme, "parameters", tuple(p.xreplace(move) for p in scheme.parameters))
 
 
 def catmull_clark(alpha=None, beta=None) -> Scheme:

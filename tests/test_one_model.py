@@ -1,0 +1,210 @@
+"""One scheme, one model: the defects that let a scheme file fool a verdict, each shown on the mathematics.
+
+1. a user's parameter never meets the toolkit's own symbols (``c = cos(j pi/n)``, ``s``, ...);
+2. a degenerate eigenvector (a zero vector) is never used: no verdict rests on ``0/0``;
+3. the scope of a verdict is what its computation covers;
+4. a counterexample names concrete values, never an expression in free parameters;
+5. every command reads the same whole-mesh rules (C1 included: the vertex rule at the regular valence);
+7. a check on a valid file ends in a verdict, ``undecided`` or ``not applicable`` within its budget.
+"""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+import sympy as sp
+
+from symdecomp.analysis.elliptic import component_resultants, elliptic_component
+from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
+from symdecomp.claims import Scope, Status, check_claim
+from symdecomp.claims.registry import time_budget, unbound_parameters
+from symdecomp.cli import main
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.files import scheme_from_text
+from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark
+from symdecomp.symbols import Parameter, alpha, beta, cos_jtheta, n, sin_jtheta
+from symdecomp.verify.c1 import c1_test
+
+R = sp.Rational
+
+CC_FACE_WITH = """\
+name = "face {p}"
+parameters = ["{p}"]
+[edge]
+O = "3/8"
+a = {{ "-1" = "1/16", "0" = "3/8", "1" = "1/16" }}
+b = {{ "-1" = "1/16", "0" = "1/16" }}
+[face]
+O = "1/4 - {p}"
+a = {{ "0" = "1/4", "1" = "1/4" }}
+b = {{ "0" = "1/4 + {p}" }}
+[vertex]
+a = "3/(2*n**2)"
+b = "1/(4*n**2)"
+"""
+
+
+# --- 1. parameters live in their own namespace ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["c", "s", "j", "omega"])
+def test_a_file_may_not_name_a_parameter_like_a_symbol_of_the_toolkit(name):
+    with pytest.raises(InvalidSchemeError, match=f"parameters: '{name}' is not a usable name .*reserved: n, j, c, s, omega"):
+        scheme_from_text(CC_FACE_WITH.format(p=name))
+
+
+def _face_scheme(symbol) -> Scheme:
+    cc = catmull_clark()
+    face = Stencil.from_weights(R(1, 4) - symbol, {0: R(1, 4), 1: R(1, 4)}, {0: R(1, 4) + symbol})
+    return Scheme("face", cc.edge_rule, face, cc.vertex_rule)
+
+
+@pytest.mark.parametrize("symbol", [cos_jtheta, sin_jtheta, sp.Symbol("c", real=True), sp.Symbol("t", real=True)])
+def test_a_users_symbol_is_a_parameter_and_substituting_it_leaves_the_cosine_alone(symbol):
+    """M_j of the scheme with the parameter, the parameter then set to 1/10, equals M_j of the scheme with 1/10 typed in.
+
+    When the user's ``c`` was the toolkit's ``c = cos(j pi/n)``, setting the parameter also set the cosine."""
+    scheme = _face_scheme(symbol)
+    (p,) = scheme.parameters
+    assert isinstance(p, Parameter) and p != cos_jtheta and p != sin_jtheta
+    free = per_frequency_matrix(scheme)
+    fixed = per_frequency_matrix(_face_scheme(R(1, 10)))
+    assert sp.simplify(free.subs(p, R(1, 10)) - fixed) == sp.zeros(2, 2)
+
+
+def test_a_parameter_named_c_gives_the_verdicts_of_the_same_parameter_named_t():
+    with_c = _face_scheme(sp.Symbol("c", real=True))
+    with_t = _face_scheme(sp.Symbol("t", real=True))
+    for label in ("Eq. 34", "Eq. 43", "Proposition 5.2"):
+        assert check_claim(label, with_c).status == check_claim(label, with_t).status
+
+
+# --- 2. no verdict rests on a zero vector ----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("valence", [3, 4, 5, 7])
+def test_a_fixed_centre_has_no_elliptic_component_of_1_1_1(valence):
+    """alpha = beta = 0: the cross product of two columns of T - mu I is the zero vector; the null spaces are not."""
+    fixed = catmull_clark(0, 0)
+    T = sp.Matrix(recursion_matrix(fixed, valence))
+    mu = sorted(T.eigenvals(), key=lambda e: -abs(sp.N(e)))[1]
+    (left,) = (T.T - mu * sp.eye(3)).nullspace()
+    assert left != sp.zeros(3, 1) and sp.simplify(sum(left)) == 0  # orthogonal to (1, 1, 1), the eigenvector of 1
+    assert elliptic_component(fixed, valence, (1, 1, 1)) == 0
+    component = elliptic_component(fixed, valence, (0, 1, 1))
+    assert component is not None and component.is_finite and sp.simplify(component) != 0
+
+
+def test_remark_5_2_holds_for_a_fixed_centre():
+    r = check_claim("Remark 5.2", catmull_clark(0, 0))
+    assert r.status is Status.VERIFIED and r.scope is Scope.RANGE and "nan" not in str(r.evidence)
+
+
+def test_a_defective_eigenvalue_has_no_single_component():
+    """At a Jordan block of T the left and right eigenvectors are orthogonal: no component, not 0/0."""
+    from symdecomp.analysis.defective import jordan_vertex_weights
+
+    free = catmull_clark(alpha, beta)
+    scheme = free.substitute(jordan_vertex_weights(free, 5, R(3, 4)))
+    assert elliptic_component(scheme, 5, (0, 1, 1), eigenvalue=R(3, 4)) is None
+
+
+# --- 3. the scope is what the computation covers ---------------------------------------------------------------------
+
+
+def test_remark_5_2_with_free_vertex_weights_is_a_range_not_every_n():
+    r = check_claim("Remark 5.2", catmull_clark(alpha, beta))
+    assert r.status is Status.VERIFIED and r.scope is Scope.RANGE and r.valences == (3, 8)
+    assert "free parameters" in str(r.evidence)
+
+
+def test_remark_5_2_for_catmull_clark_is_every_n_by_resultants():
+    """(0,1,1): the resultants have no integer zero n >= 3; (0,1,-1): only n = 4, where the component is 0 exactly."""
+    cc = catmull_clark()
+    assert component_resultants(cc, (0, 1, 1), 3).exceptions == ()
+    assert component_resultants(cc, (0, 1, -1), 3).exceptions == (4,)
+    assert elliptic_component(cc, 4, (0, 1, -1)) == 0
+    r = check_claim("Remark 5.2", cc)
+    assert r.status is Status.CORRECTED and r.scope is Scope.EVERY_N
+
+
+# --- 4. counterexamples name concrete values -------------------------------------------------------------------------
+
+EDGE_ALPHA = CC_FACE_WITH.format(p="P").replace('[face]\nO = "1/4 - P"', '[face]\nO = "1/4"').replace('"1/4 + P"', '"1/4"').replace(
+    '[edge]\nO = "3/8"\na = { "-1" = "1/16", "0" = "3/8"', '[edge]\nO = "3/8 - P"\na = { "-1" = "1/16", "0" = "3/8 + P"')
+
+
+@pytest.mark.parametrize("label", ["Eq. 14-15", "Eq. 17-21", "Eq. 31-32"])
+def test_a_refutation_in_free_parameters_is_shown_at_concrete_values(label):
+    """The edge rule's weight moved by a free P: the printed rules hold at P = 0 (Catmull-Clark) and fail elsewhere."""
+    scheme = scheme_from_text(EDGE_ALPHA)
+    assert check_claim(label, scheme.substitute({"P": 0})).status is Status.PROVED  # Catmull-Clark
+    r = check_claim(label, scheme)
+    assert r.status is Status.REFUTED and r.scope is Scope.SINGLE_CASE
+    assert not unbound_parameters(r.counterexample, scheme.parameters)
+    assert str(r.counterexample).startswith("P = 1/11: ")
+    # the concrete counterexample is the one of the scheme with P = 1/11 typed in
+    assert str(r.counterexample).removeprefix("P = 1/11: ") == str(check_claim(label, scheme.substitute({"P": R(1, 11)})).counterexample)
+
+
+def test_unbound_parameters_reads_assignments_as_concrete():
+    from symdecomp.claims import Text
+
+    p = Parameter("P", real=True)
+    assert unbound_parameters(Text("at ", sp.Eq(p, R(1, 3), evaluate=False), ": 0"), (p,)) == set()
+    assert unbound_parameters(Text("the rule differs by ", 2 * p), (p,)) == {p}
+
+
+# --- 5. one model of the mesh for every command ----------------------------------------------------------------------
+
+OWN_REGULAR_VERTEX = CC_FACE_WITH.format(p="P").replace('parameters = ["P"]\n', "").replace(" - P", "").replace(" + P", "").replace(
+    'a = "3/(2*n**2)"\nb = "1/(4*n**2)"', 'a = "1/(8*n)"\nb = "1/(16*n)"')
+
+
+def test_c1_reads_the_vertex_rule_that_the_two_ring_spectrum_reads():
+    """A file whose vertex rule at n = 4 is not Catmull-Clark's: its regular vertices use it (its own 2-ring matrix
+    shows the eigenvalues of that rule), so the C1 test, which knows bicubic patches, does not apply."""
+    from symdecomp.schemes.rings import ring_subdivision_matrix
+
+    scheme = scheme_from_text(OWN_REGULAR_VERTEX)
+    assert scheme.vertex_rule.each_a.subs(n, 4) == R(1, 32) != R(3, 32)
+    mine, standard = ring_subdivision_matrix(scheme, 5, 2), ring_subdivision_matrix(catmull_clark(), 5, 2)
+    differ = [i for i, (a, b) in enumerate(zip(mine.rows, standard.rows)) if i > 0 and a != b]
+    # only vertex points differ (even labels): the vertices of valence 4 of the 2-ring refined by the file's vertex rule
+    assert differ and all(mine.labels[i][1] % 2 == 0 and mine.labels[i][2] % 2 == 0 for i in differ)
+    with pytest.raises(InvalidSchemeError, match="vertex rule at the regular valence 4 has the weights"):
+        c1_test(scheme, 5)
+
+
+def test_c1_on_the_command_line_says_why_in_one_line(tmp_path, capsys):
+    path = tmp_path / "own.toml"
+    path.write_text(OWN_REGULAR_VERTEX)
+    assert main(["c1", "--scheme", str(path), "--n", "5"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "regular valence 4" in err[0]
+
+
+# --- 7. every check ends in a verdict within its budget ---------------------------------------------------------------
+
+
+def test_the_budget_stops_a_long_check_with_undecided():
+    start = time.monotonic()
+    r = check_claim("Eq. 39", scheme_from_text(EDGE_ALPHA), budget=3)
+    assert time.monotonic() - start < 30
+    assert r.status in (Status.UNDECIDED, Status.REFUTED, Status.CORRECTED, Status.PROVED)
+    if r.status is Status.UNDECIDED:
+        assert "budget of 3 s" in str(r.evidence)
+
+
+def test_a_budget_inside_a_budget_is_the_outer_one():
+    with pytest.raises(BaseException) as caught, time_budget(0.5):
+        with time_budget(100):
+            while True:
+                pass
+    assert type(caught.value).__name__ == "BudgetExceeded"
+
+
+def test_a_check_that_stops_on_a_free_parameter_is_not_applicable_with_the_reason():
+    r = check_claim("Section 5.3: quadratic speed", _face_scheme(sp.Symbol("t", real=True)))
+    assert r.status is Status.NOT_APPLICABLE and "give the parameters values" in str(r.evidence)

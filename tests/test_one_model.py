@@ -15,15 +15,14 @@ import time
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.elliptic import component_resultants, elliptic_component
+from symdecomp.analysis.elliptic import elliptic_component
 from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.claims import Scope, Status, check_claim
-from symdecomp.claims.registry import time_budget, unbound_parameters
 from symdecomp.cli import main
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.files import scheme_from_text
 from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark
-from symdecomp.symbols import Parameter, alpha, beta, cos_jtheta, n, sin_jtheta
+from symdecomp.symbols import alpha, beta, cos_jtheta, n, sin_jtheta
 from symdecomp.verify.c1 import c1_test
 
 R = sp.Rational
@@ -67,7 +66,7 @@ def test_a_users_symbol_is_a_parameter_and_substituting_it_leaves_the_cosine_alo
     When the user's ``c`` was the toolkit's ``c = cos(j pi/n)``, setting the parameter also set the cosine."""
     scheme = _face_scheme(symbol)
     (p,) = scheme.parameters
-    assert isinstance(p, Parameter) and p != cos_jtheta and p != sin_jtheta
+    assert type(p).__name__ == "Parameter" and p != cos_jtheta and p != sin_jtheta
     free = per_frequency_matrix(scheme)
     fixed = per_frequency_matrix(_face_scheme(R(1, 10)))
     assert sp.simplify(free.subs(p, R(1, 10)) - fixed) == sp.zeros(2, 2)
@@ -121,6 +120,8 @@ def test_remark_5_2_with_free_vertex_weights_is_a_range_not_every_n():
 
 def test_remark_5_2_for_catmull_clark_is_every_n_by_resultants():
     """(0,1,1): the resultants have no integer zero n >= 3; (0,1,-1): only n = 4, where the component is 0 exactly."""
+    from symdecomp.analysis.elliptic import component_resultants
+
     cc = catmull_clark()
     assert component_resultants(cc, (0, 1, 1), 3).exceptions == ()
     assert component_resultants(cc, (0, 1, -1), 3).exceptions == (4,)
@@ -138,6 +139,8 @@ EDGE_ALPHA = CC_FACE_WITH.format(p="P").replace('[face]\nO = "1/4 - P"', '[face]
 @pytest.mark.parametrize("label", ["Eq. 14-15", "Eq. 17-21", "Eq. 31-32"])
 def test_a_refutation_in_free_parameters_is_shown_at_concrete_values(label):
     """The edge rule's weight moved by a free P: the printed rules hold at P = 0 (Catmull-Clark) and fail elsewhere."""
+    from symdecomp.claims.registry import unbound_parameters
+
     scheme = scheme_from_text(EDGE_ALPHA)
     assert check_claim(label, scheme.substitute({"P": 0})).status is Status.PROVED  # Catmull-Clark
     r = check_claim(label, scheme)
@@ -150,6 +153,8 @@ def test_a_refutation_in_free_parameters_is_shown_at_concrete_values(label):
 
 def test_unbound_parameters_reads_assignments_as_concrete():
     from symdecomp.claims import Text
+    from symdecomp.claims.registry import unbound_parameters
+    from symdecomp.symbols import Parameter
 
     p = Parameter("P", real=True)
     assert unbound_parameters(Text("at ", sp.Eq(p, R(1, 3), evaluate=False), ": 0"), (p,)) == set()
@@ -198,6 +203,8 @@ def test_the_budget_stops_a_long_check_with_undecided():
 
 
 def test_a_budget_inside_a_budget_is_the_outer_one():
+    from symdecomp.claims.registry import time_budget
+
     with pytest.raises(BaseException) as caught, time_budget(0.5):
         with time_budget(100):
             while True:
@@ -208,3 +215,48 @@ def test_a_budget_inside_a_budget_is_the_outer_one():
 def test_a_check_that_stops_on_a_free_parameter_is_not_applicable_with_the_reason():
     r = check_claim("Section 5.3: quadratic speed", _face_scheme(sp.Symbol("t", real=True)))
     assert r.status is Status.NOT_APPLICABLE and "give the parameters values" in str(r.evidence)
+
+
+# --- 6. masks call lambda_1 subdominant only when it is ----------------------------------------------------------------
+
+FIXED_CENTRE = OWN_REGULAR_VERTEX.replace('a = "1/(8*n)"\nb = "1/(16*n)"', 'a = "0"\nb = "0"')
+#: alpha = 0, beta = 1/16 at n = 3: (9 + sqrt 17)/32 at frequencies 0, 1 and 2 (a triple eigenvalue).
+TRIPLE = OWN_REGULAR_VERTEX.replace('a = "1/(8*n)"\nb = "1/(16*n)"', 'a = "0"\nb = "1/16"')
+#: Loop-type beta = (1 + cos(2 pi/n)/4)/n: -lambda_1 at frequency 0.
+OPPOSITE = """\
+name = "opposite"
+mesh = "triangle"
+[edge]
+O = "3/8"
+a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }
+[vertex]
+beta = "(1 + cos(2*pi/n)/4)/n"
+"""
+
+
+@pytest.mark.parametrize("text, valence, why", [
+    (FIXED_CENTRE, 5, "frequency 0, which has multiplicity 1"),
+    (TRIPLE, 3, "multiplicity 3"),
+    (OPPOSITE, 5, "exactly its negative"),
+], ids=["fixed centre", "triple", "opposite"])
+def test_masks_do_not_call_lambda_1_subdominant_when_it_is_not(tmp_path, capsys, text, valence, why):
+    import json
+
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    assert main(["masks", str(valence), "--scheme", str(path), "--json"]) == 1
+    captured = capsys.readouterr()
+    data = json.loads(captured.out)
+    assert data["lambda_1_subdominant"] is False and why in data["subdominance"]
+    assert len(captured.err.strip().splitlines()) == 1 and "not the subdominant eigenvalue" in captured.err
+    assert main(["masks", str(valence), "--scheme", str(path)]) == 1
+    assert "NOT the subdominant eigenvalue" in capsys.readouterr().out.splitlines()[0]
+
+
+@pytest.mark.parametrize("scheme, valence", [("catmull-clark", 3), ("catmull-clark", 7), ("loop", 3), ("loop", 9)])
+def test_masks_certify_the_subdominant_eigenvalue_of_the_standard_schemes(capsys, scheme, valence):
+    import json
+
+    assert main(["masks", str(valence), "--scheme", scheme, "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["lambda_1_subdominant"] is True and "multiplicity 2" in data["subdominance"]

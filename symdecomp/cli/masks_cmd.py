@@ -7,14 +7,25 @@ follow from the left-eigenvector equation (for Catmull-Clark
 ``(cos(2 pi i/N) + cos(2 pi (i+1)/N))/(16 lambda_1 - 4)``, resp. with ``sin``); ``O`` has weight 0.
 
 JSON: ``{"n": N, "position": {"O": w, "a": [...], "b": [...]}, "tangents": [{"O": w, "a": [...],
-"b": [...]}, {...}], "subdominant": "<decimal>"}``, every weight a decimal string.
+"b": [...]}, {...}], "subdominant": "<decimal>", "lambda_1_subdominant": true, "subdominance": "<why>"}``,
+every weight a decimal string.
+
+``lambda_1`` (the dominant eigenvalue of ``M_1``) is called the subdominant eigenvalue only when that is
+certified at this valence on the 1-ring (:func:`~symdecomp.verify.c1_spectrum.spectral_conditions`: 1 simple,
+``lambda_1`` real, of multiplicity 2, strictly larger in modulus than every other eigenvalue; exact where
+balls tie). Otherwise the tangent masks are eigenvectors of ``lambda_1`` but not of the tangent plane: the
+output says why and the exit status is 1.
 """
 
 from __future__ import annotations
 
+import sys
+
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
+from symdecomp.errors import SymdecompError
+from symdecomp.verify.c1_spectrum import spectral_conditions
 
 
 def register(sub) -> None:
@@ -34,18 +45,45 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+def _subdominance(args) -> tuple[bool, str]:
+    """Whether ``lambda_1`` is certified the subdominant eigenvalue of the 1-ring at this valence, and why (not)."""
+    try:
+        r = spectral_conditions(args.scheme, args.n, one_ring=True)
+    except SymdecompError as exc:
+        return False, f"not certified: {exc}"
+    if r.status == "ok" and r.subdominant is not None and r.subdominant.frequency == 1:
+        return True, r.reason
+    if r.status == "ok":
+        return False, f"the subdominant eigenvalue is at frequency {r.subdominant.frequency}, not 1: {r.reason}"
+    return False, r.reason
+
+
+def _header(args, data, certified: bool, why: str) -> str:
+    what = "subdominant eigenvalue lambda_1" if certified else "lambda_1 (NOT the subdominant eigenvalue: " + why + ")"
+    rings = f", {args.rings}-ring" if general_path(args) or closed_form_obstacle(args.scheme) else ""
+    return f"{args.scheme.name}, valence n = {args.n}{rings}; {what} = {data['subdominant']}"
+
+
+def _finish(args, data, certified: bool, why: str) -> int:
+    if not certified:
+        print(f"symdecomp masks: at n = {args.n} lambda_1 is not the subdominant eigenvalue ({why}); the tangent masks "
+              "are its eigenvectors, not the tangent plane's", file=sys.stderr)
+    return 0 if certified else 1
+
+
 def _run_general(args) -> int:
     data = ring_masks(args.scheme, args.n, args.rings, digits=args.digits)
+    certified, why = _subdominance(args)
     if args.json:
-        print_json(data)
-        return 0
-    print(f"{args.scheme.name}, valence n = {args.n}, {args.rings}-ring; subdominant eigenvalue lambda_1 = {data['subdominant']}")
+        print_json({**data, "lambda_1_subdominant": certified, "subdominance": why})
+        return _finish(args, data, certified, why)
+    print(_header(args, data, certified, why))
     for title, mask in [("position", data["position"]), ("tangent 1", data["tangents"][0]), ("tangent 2", data["tangents"][1])]:
         print(f"{title}:")
         print(f"  O: {mask['O']}")
         for key, weights in mask["classes"].items():
             print(f"  class ({key}), sectors 0..{args.n - 1}: {', '.join(weights)}")
-    return 0
+    return _finish(args, data, certified, why)
 
 
 def run(args) -> int:
@@ -53,11 +91,12 @@ def run(args) -> int:
         return _run_general(args)
     masks = limit_masks_at(args.scheme, args.n)
     data = masks.as_json(args.digits)
+    certified, why = _subdominance(args)
     if args.json:
-        print_json(data)
-        return 0
+        print_json({**data, "lambda_1_subdominant": certified, "subdominance": why})
+        return _finish(args, data, certified, why)
     closed = limit_masks(args.scheme)
-    print(f"{args.scheme.name}, valence n = {args.n}; subdominant eigenvalue lambda_1 = {data['subdominant']}")
+    print(_header(args, data, certified, why))
     print(f"closed forms: position O: {closed.position[0]}, a_i: {closed.position[1]}, b_i: {closed.position[2]}")
     for k in range(2):
         print(f"              tangent {k + 1}: a_i: {closed.tangent_a[k]}, b_i: {closed.tangent_b[k]}")
@@ -66,4 +105,4 @@ def run(args) -> int:
         print(f"  O: {mask['O']}")
         for i, (a, b) in enumerate(zip(mask["a"], mask["b"])):
             print(f"  a_{i}: {a:<{args.digits + 8}} b_{i}: {b}")
-    return 0
+    return _finish(args, data, certified, why)

@@ -354,14 +354,22 @@ def _ties(scheme: Scheme, n: int, eigen: list[Eigen], dom: Eigen, top: flint.arb
     return [e for e in others if e not in close], split
 
 
-def spectral_conditions(scheme: Scheme, n: int) -> SpectralResult:
-    """Reif's spectral conditions at valence ``n``, certified (see the module docstring)."""
+def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> SpectralResult:
+    """Reif's spectral conditions at valence ``n``, certified (see the module docstring).
+
+    ``one_ring``: the conditions on the 1-ring matrix alone (the blocks ``M_j`` and the frequency-0 block, no
+    regular outer blocks), for any scheme: whether the frequency-1 eigenvalue is the subdominant eigenvalue of
+    the 1-ring, which is what the limit and tangent masks need.
+    """
     n = check_valence(n)
-    check_applicable(scheme)
+    if not one_ring:
+        check_applicable(scheme)
     eigen, failure = _frequency_zero(scheme, n)
     if failure:
         return SpectralResult(n, "not-c1", failure)
     more, outer = _other_frequencies(scheme, n)
+    if one_ring:
+        outer = []
     eigen += more
     dom = max(eigen, key=lambda e: abs(e.value).mid())
     top = abs(dom.value)

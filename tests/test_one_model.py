@@ -260,3 +260,13 @@ def test_masks_certify_the_subdominant_eigenvalue_of_the_standard_schemes(capsys
     assert main(["masks", str(valence), "--scheme", scheme, "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["lambda_1_subdominant"] is True and "multiplicity 2" in data["subdominance"]
+
+
+def test_a_file_whose_rules_are_undefined_at_the_regular_valence_is_refused_when_read(tmp_path, capsys):
+    text = OWN_REGULAR_VERTEX.replace('a = "1/(8*n)"', 'a = "1/(8*(n - 4))"')
+    with pytest.raises(InvalidSchemeError, match=r"undefined at valence n = 4 \(the regular valence"):
+        scheme_from_text(text)
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    assert main(["spectrum", "5", "--scheme", str(path)]) == 2
+    assert "regular valence" in capsys.readouterr().err

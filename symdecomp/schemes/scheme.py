@@ -155,11 +155,25 @@ class VertexRule:
 
 #: The mesh types a scheme can live on.
 MESH_TYPES = ("quad", "triangle")
+#: The valence of every vertex away from the extraordinary one, by mesh type.
+REGULAR_VALENCE = {"quad": 4, "triangle": 6}
 
 
 @dataclass(frozen=True)
 class Scheme:
-    """A subdivision scheme on the 1-ring of a quad or triangle mesh, given by its rules.
+    """A subdivision scheme on a quad or triangle mesh, given by its rules for the whole mesh.
+
+    **The model** (one for every command): the edge rule makes every new edge point and the face rule
+    every new face point, anywhere in the mesh; the vertex rule makes the new point of every vertex
+    from that vertex's valence ``n``: at the extraordinary vertex ``O`` with its valence, and at every
+    other vertex of a neighbourhood (all of the regular valence, 4 on quads, 6 on triangles) with
+    ``n = 4`` or ``n = 6``. So the regular rules of the scheme are its rules at the regular valence;
+    a scheme tuned at extraordinary vertices only keeps the standard weights at the regular valence
+    (for instance a vertex weight that is a function of ``n`` equal to the standard one at ``n = 4``).
+    The rules must be defined at the regular valence (checked here). 1-ring commands read the rules at
+    ``O``; K-ring matrices, evaluation and the C1 test read all of them; the C1 test and the evaluation
+    know the regular patches of Catmull-Clark and Loop only, so they apply when the rules at the regular
+    valence are those (they say so in one line otherwise).
 
     On a quad mesh (``mesh = "quad"``, the paper's shape) the 1-ring is ``(O, a_i, b_i)`` and
     the scheme has an edge, a face and a vertex rule. On a triangle mesh
@@ -207,6 +221,8 @@ class Scheme:
             )
         offsets = tuple(k for rule in self.stencils() for k in rule.offsets()) + (0,)
         object.__setattr__(self, "_span", max(offsets) - min(offsets))
+        # the whole-mesh model: every vertex of the regular valence uses these rules there, so they must be defined there
+        _check_defined(self, REGULAR_VALENCE[self.mesh], " (the regular valence: every vertex away from O uses the rules there)")
 
     def stencils(self) -> tuple[Stencil, ...]:
         """The 1-ring stencils: ``(edge rule, face rule)`` on quads, ``(edge rule,)`` on triangles."""
@@ -355,19 +371,19 @@ def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]
 
 
 
-def _check_defined(scheme: Scheme, n: int) -> None:
+def _check_defined(scheme: Scheme, n: int, note: str = "") -> None:
     """Refuse a valence at which a weight of the scheme is undefined (e.g. ``1/(n - 5)`` at ``n = 5``)."""
     for label, rule in zip(("edge rule", "face rule"), scheme.stencils()):
         for w in (rule.center, *(w for _, w in rule.a + rule.b)):
-            _check_weight_at(w, n, f"{scheme.name!r} {label}")
+            _check_weight_at(w, n, f"{scheme.name!r} {label}", note)
     v = scheme.vertex_rule
     for w in (v.center, v.each_a, v.each_b):
-        _check_weight_at(w, n, f"{scheme.name!r} vertex rule")
+        _check_weight_at(w, n, f"{scheme.name!r} vertex rule", note)
 
 
-def _check_weight_at(weight: sp.Expr, n: int, where: str) -> None:
+def _check_weight_at(weight: sp.Expr, n: int, where: str, note: str = "") -> None:
     if N in weight.free_symbols and weight.subs(N, n).has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-        raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}")
+        raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}{note}")
 
 
 def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:

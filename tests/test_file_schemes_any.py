@@ -194,7 +194,12 @@ def test_a_wide_quad_file_runs_through_every_command(tmp_path, capsys, text):
     # charpoly: no closed form (Eq. 51 needs offsets -1..1), the product form equals the matrix's
     assert _json(capsys, "charpoly", str(n), "--scheme", str(path))["matches_matrix"] is True
     # masks: the position mask is a left eigenvector of S for 1, summing to 1
-    masks = _json(capsys, "masks", str(n), "--scheme", str(path))
+    code, out, err = _run(capsys, "masks", str(n), "--scheme", str(path), "--json")
+    masks = _without_names(json.loads(out))
+    if text is WIDE_ASYMMETRIC:  # M_1's dominant eigenvalue is not real: masks says so and exits 1
+        assert code == 1 and masks["lambda_1_subdominant"] is False and "is not real" in masks["subdominance"]
+    else:
+        assert code == 0 and masks["lambda_1_subdominant"] is True, err
     S = subdivision_matrix(scheme, n)
     position = masks["position"]
     row = [position["O"]] + (position["a"] + position["b"] if "a" in position else

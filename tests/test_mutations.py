@@ -5,6 +5,13 @@ A verdict that no change can move is not computed; this table is the evidence th
 statuses without a change are those of tests/test_claim_statuses.py (standard Catmull-Clark).
 Printed formulas are module attributes of the claims modules; a row replaces one for the test and calls
 the check directly (the registry's cache holds the printed statement's results).
+
+The schemes are scheme files (FILES, or Python-built schemes that write and read back as files), except the
+complex and the non-affine ones, which the parser refuses. Every claim is either moved to another verdict by a
+file, or listed with the reason no file moves it: SCHEME_FREE (the check runs without a scheme) and NO_FILE_FLIP
+(each reason backed by the statuses of very different files). WRONG_TODAY holds the verdicts that are wrong
+today, asserted with the correct status as strict xfails. C1_TABLE flips Reif's test from c1 to not-c1 with files
+of the Catmull-Clark and Loop families.
 """
 
 from __future__ import annotations
@@ -348,8 +355,9 @@ NO_FILE_FLIP = {
                                      "det(xI - E_0) has x-coefficient terms n*alpha, n*beta, so it always depends on them",
     "Tuning and multiplicities (after Eq. 51)": "the same identity as 'Tuning weights', with no eigenvectors used: no "
                                                 "multiplicity of any file changes it; Loop's file (no face rule) is 'not applicable'",
-    "Tangent plane unaffected (after Eq. 51)": "the correction is found with vertex weights -1 (an E_0 eigenvalue near "
-                                               "n, above any lambda_1 <= 1): every symmetric file is 'corrected'",
+    "Tangent plane unaffected (after Eq. 51)": "the counterexample is searched among vertex weights (0, 0), (-1, 0), "
+                                               "(0, -1), and -1 adds n to the trace of E_0: every mirror-symmetric file "
+                                               "tried is 'corrected', lopsided ones are 'not applicable'",
     "Spectrum (Eq. 34, Eq. 43)": "the block factorization of det(S - x I) holds for every scheme of the shape, "
                                  "lopsided too; only a change of the printed closed forms refutes it",
     "Section 5.3: construction": "the frequencies 1, 2 are closed under every rotation-invariant rule (Prop. 4.1); "
@@ -443,8 +451,8 @@ def test_the_parser_refuses_what_would_flip_propositions_4_2_and_4_3():
 
 WRONG_TODAY = [
     ("Eq. 51", "bilinear file", P,
-     "status error ('a step of the closed form failed'): the bilinear face rule gives c_+ = 0, and the check divides by "
-     "c_+; the closed form still holds (rho_+ = c_0, rho_- = 0)"),
+     "status error ('a step of the closed form failed'): M(omega) is triangular, so c_+ = c_- = 0 and the check divides "
+     "by c_+; the closed form still holds (rho_+ = c_0, rho_- = 0: rho_+^n + rho_-^n = c_0^n = prod_k q(x, omega^k))"),
     ("Proposition 5.1", "frequency two", R,
      "status error (UnsupportedExpressionError: n in a closed form with arb) for an n-dependent edge rule; at n = 5 the "
      "frequency 2 eigenvalue 0.713 exceeds frequency 1's, so the claim is false"),

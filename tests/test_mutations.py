@@ -79,6 +79,9 @@ FILES = {
     "complex pair": quad_file("complex pair", edge='[edge]\nO = "3/8"\n'
                               'a = { "-1" = "(3*n - 11)/16", "0" = "3/8", "1" = "(3*n - 11)/16" }\n'
                               'b = { "-1" = "(13 - 3*n)/16", "0" = "(13 - 3*n)/16" }\n'),
+    # a mesh rule: edge point 1/4 on its two ends, 1/8 on the four others; det M(omega) = 0 for every omega
+    "singular M": quad_file("singular M", edge='[edge]\nO = "1/4"\na = { "-1" = "1/8", "0" = "1/4", "1" = "1/8" }\n'
+                            'b = { "-1" = "1/8", "0" = "1/8" }\n'),
     # vertex weights only (the regular rules stay Catmull-Clark's)
     "O fixed file": quad_file("O fixed file", vertex='[vertex]\na = "0"\nb = "0"\n'),
     "minus one": quad_file("minus one", vertex='[vertex]\na = "1/10"\nb = "1/4"\n'),
@@ -465,6 +468,11 @@ WRONG_TODAY = [
     ("Tangent plane unaffected (after Eq. 51)", "frequency two", C,
      "status error (UnsupportedExpressionError: n with arb) for an n-dependent edge rule; vertex weight -1 still lifts "
      "an E_0 eigenvalue above lambda_1"),
+    ("1-ring suffices (after Eq. 51)", "singular M", P,
+     "status verified, valences (3, 5), but the left eigenvector of lambda_1 was computed at n = 4 only (scope wider "
+     "than the evidence); the proof fails only because the 3-ring resultant vanishes identically: M(omega) is singular "
+     "for every omega, and the shared root is 0 (the 3-ring's new eigenvalue), never lambda_1; the 2-ring resultant "
+     "has no root on the unit circle, so the proof goes through for every n"),
     ("Spectrum (Eq. 34, Eq. 43)", "loop file", NA,
      "status error (AttributeError: 'NoneType' object has no attribute 'a'): Loop has no face rule, so the quad "
      "factorization is not applicable, as for Eq. 51 and the tuning claims"),
@@ -519,3 +527,19 @@ def test_a_file_flips_the_c1_verdict(name, valence, frequency, value, words):
     assert r.spectral.subdominant.frequency == frequency
     if value is not None:
         assert _ball_holds(r.spectral.subdominant.value, value)
+
+
+def test_the_singular_scheme_is_what_its_wrong_verdict_says():
+    """The facts behind WRONG_TODAY's '1-ring suffices / singular M': det M(omega) vanishes identically, and the
+    2-ring's outer eigenvalues (roots of (8x - 1)(64x - 1)(128x^2 - 28x + 1)) are never a root of det(xI - M(omega_n))."""
+    from symdecomp.analysis.frequency import one_ring_matrices
+    from symdecomp.symbols import omega
+
+    M = one_ring_matrices(scheme("singular M"))[0]
+    assert sp.expand(M.det()) == 0
+    x = sp.Symbol("x")
+    outer = (8 * x - 1) * (64 * x - 1) * (128 * x**2 - 28 * x + 1)
+    resultant = sp.factor(sp.resultant(sp.expand(outer), sp.numer(sp.together(sp.expand((x * sp.eye(2) - M).det()))), x))
+    for factor, _ in sp.factor_list(resultant)[1]:
+        if factor.has(omega):  # no root of the factor is a root of unity: all are off the unit circle
+            assert all(abs(abs(complex(r)) - 1) > 1e-3 for r in sp.Poly(factor, omega).nroots())

@@ -416,6 +416,7 @@ def test_every_claim_is_flipped_by_a_file_or_has_a_reason():
     assert (SCHEME_FREE | set(NO_FILE_FLIP)) <= labels
 
 
+@pytest.mark.slow  # 12 s in all: the checks themselves
 @pytest.mark.parametrize("label", sorted(SCHEME_FREE))
 def test_scheme_free_checks_do_not_read_the_scheme(label):
     """The check runs without a scheme at all (None): its status is the printed statement's."""

@@ -366,9 +366,11 @@ NO_FILE_FLIP = {
     "Section 5.3: construction": "the frequencies 1, 2 are closed under every rotation-invariant rule (Prop. 4.1); "
                                  "lopsided files are 'not applicable' (the construction's closed forms need mirror symmetry)",
     # not a theorem for every file, but no file tried flips it:
-    "Section 3: 9 and 25 points": "a statement about the regular vertex of a mesh scheme; a mesh rule's edge and face "
-                                  "stencils are nearly forced (symmetric from both ends), and the mesh files tried "
-                                  "(tuned vertex weights, midpoint edges) keep 9 and 25; the others are not mesh rules",
+    "Section 3: 9 and 25 points": "a statement about the regular vertex of a mesh scheme: the support of P depends only "
+                                  "on which weights are nonzero, and a mesh rule's stencils are nearly forced (the face "
+                                  "point is the centroid, the edge rule is symmetric from both ends); the mesh files tried "
+                                  "(tuned vertex weights, edge weights 1/2 or 1/4 on the ends) keep 9 and 25, a zero vertex "
+                                  "weight makes the classification 'not applicable', and other files are not mesh rules",
     "1-ring suffices (after Eq. 51)": "the mesh files tried (bilinear, midpoint edges, Loop) keep the left eigenvectors of "
                                       "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable'",
 }
@@ -392,6 +394,7 @@ PANEL_MORE = {
     ("S' (after Eq. 51)", "free edge and face"): P,
     ("Section 3: 9 and 25 points", "midpoint edges"): P,
     ("Section 3: 9 and 25 points", "tuned"): P,
+    ("Section 3: 9 and 25 points", "singular M"): P,
     ("1-ring suffices (after Eq. 51)", "midpoint edges"): P,
     ("Tuning weights (after Eq. 51)", "loop file"): NA,
     ("Tuning and multiplicities (after Eq. 51)", "loop file"): NA,

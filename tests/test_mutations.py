@@ -512,6 +512,7 @@ C1_TABLE = [
 
 
 def _ball_holds(ball, value) -> bool:
+    """The ball contains the real number ``value`` (taken to 40 digits, far inside the ball's own width)."""
     import flint
 
     exact = sp.N(value, 40)

@@ -5,6 +5,13 @@ A verdict that no change can move is not computed; this table is the evidence th
 statuses without a change are those of tests/test_claim_statuses.py (standard Catmull-Clark).
 Printed formulas are module attributes of the claims modules; a row replaces one for the test and calls
 the check directly (the registry's cache holds the printed statement's results).
+
+The schemes are scheme files (FILES, or Python-built schemes that write and read back as files), except the
+complex and the non-affine ones, which the parser refuses. Every claim is either moved to another verdict by a
+file, or listed with the reason no file moves it: SCHEME_FREE (the check runs without a scheme) and NO_FILE_FLIP
+(each reason backed by the statuses of very different files). WRONG_TODAY holds the verdicts that are wrong
+today, asserted with the correct status as strict xfails. C1_TABLE flips Reif's test from c1 to not-c1 with files
+of the Catmull-Clark and Loop families.
 """
 
 from __future__ import annotations
@@ -13,8 +20,9 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.claims import Status, all_claims, get_claim
-from symdecomp.schemes.files import scheme_from_text
+from symdecomp.claims import Status, all_claims, check_claim, get_claim
+from symdecomp.errors import InvalidSchemeError, NotAffineError
+from symdecomp.schemes.files import scheme_from_text, scheme_to_text
 from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark
 from symdecomp.symbols import alpha, beta, n
 from tests.test_claim_statuses import EXPECTED
@@ -41,12 +49,66 @@ b = "1/(4*n**2)"
 """
 
 
+#: Catmull-Clark's rules as scheme-file sections, to build mutated files from.
+CC_EDGE = '[edge]\nO = "3/8"\na = { "-1" = "1/16", "0" = "3/8", "1" = "1/16" }\nb = { "-1" = "1/16", "0" = "1/16" }\n'
+CC_FACE = '[face]\nO = "1/4"\na = { "0" = "1/4", "1" = "1/4" }\nb = { "0" = "1/4" }\n'
+CC_VERTEX = '[vertex]\na = "3/(2*n**2)"\nb = "1/(4*n**2)"\n'
+LOOP_EDGE = '[edge]\nO = "3/8"\na = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }\n'
+
+
+def quad_file(name: str, *, edge: str = CC_EDGE, face: str = CC_FACE, vertex: str = CC_VERTEX, parameters: str = "") -> str:
+    return f'name = "{name}"\n{parameters}{edge}{face}{vertex}'
+
+
+def loop_file(name: str, *, edge: str = LOOP_EDGE, beta: str = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n") -> str:
+    return f'name = "{name}"\nmesh = "triangle"\n{edge}[vertex]\nbeta = "{beta}"\n'
+
+
+#: Mutated schemes written as scheme files (the text is the input; nothing else is built by hand).
+FILES = {
+    # midpoints, centroids, old vertex kept: every new point reads only the 1-ring, M_j triangular
+    "bilinear file": quad_file("bilinear file", edge='[edge]\nO = "1/2"\na = { "0" = "1/2" }\n', vertex='[vertex]\na = "0"\nb = "0"\n'),
+    # the edge point is the edge midpoint, the rest is Catmull-Clark's (a mesh scheme)
+    "midpoint edges": quad_file("midpoint edges", edge='[edge]\nO = "1/2"\na = { "0" = "1/2" }\n'),
+    # edge rule at O: weights (2n - 5)/8 on O and a_i, (9 - 2n)/16 on the four others (Catmull-Clark's at n = 4):
+    # at n = 5 the frequency 2 dominates (the characteristic map winds twice)
+    "frequency two": quad_file("frequency two", edge='[edge]\nO = "(2*n - 5)/8"\n'
+                               'a = { "-1" = "(9 - 2*n)/16", "0" = "(2*n - 5)/8", "1" = "(9 - 2*n)/16" }\n'
+                               'b = { "-1" = "(9 - 2*n)/16", "0" = "(9 - 2*n)/16" }\n'),
+    # edge rule at O: a_(i+-1) weights (3n - 11)/16 (Catmull-Clark's at n = 4): at n = 5 M_1 has complex roots
+    "complex pair": quad_file("complex pair", edge='[edge]\nO = "3/8"\n'
+                              'a = { "-1" = "(3*n - 11)/16", "0" = "3/8", "1" = "(3*n - 11)/16" }\n'
+                              'b = { "-1" = "(13 - 3*n)/16", "0" = "(13 - 3*n)/16" }\n'),
+    # a mesh rule: edge point 1/4 on its two ends, 1/8 on the four others; det M(omega) = 0 for every omega
+    "singular M": quad_file("singular M", edge='[edge]\nO = "1/4"\na = { "-1" = "1/8", "0" = "1/4", "1" = "1/8" }\n'
+                            'b = { "-1" = "1/8", "0" = "1/8" }\n'),
+    # vertex weights only (the regular rules stay Catmull-Clark's)
+    "O fixed file": quad_file("O fixed file", vertex='[vertex]\na = "0"\nb = "0"\n'),
+    "minus one": quad_file("minus one", vertex='[vertex]\na = "1/10"\nb = "1/4"\n'),
+    "negative": quad_file("negative", vertex='[vertex]\na = "0"\nb = "3/10"\n'),
+    # every edge and face weight moved by a free parameter (p, q): one file for a two-parameter family
+    "free edge and face": quad_file("free edge and face", parameters='parameters = ["p", "q"]\n',
+                                    edge='[edge]\nO = "3/8 + p"\na = { "-1" = "1/16", "0" = "3/8 - p", "1" = "1/16" }\n'
+                                    'b = { "-1" = "1/16", "0" = "1/16" }\n',
+                                    face='[face]\nO = "1/4 + q"\na = { "0" = "1/4", "1" = "1/4 - q" }\nb = { "0" = "1/4" }\n'),
+    "loop file": loop_file("loop file"),
+    "loop beta zero": loop_file("loop beta zero", beta="0"),
+    # beta puts -lambda_1 at frequency 0 exactly, for every n
+    "loop opposite": loop_file("loop opposite", beta="(1 + cos(2*pi/n)/4)/n"),
+    # side weights (2n - 11)/8 (Loop's 1/8 at n = 6): at n = 5 the frequency 2 dominates
+    "loop frequency two": loop_file("loop frequency two", edge='[edge]\nO = "(15 - 2*n)/8"\n'
+                                    'a = { "-1" = "(2*n - 11)/8", "0" = "(15 - 2*n)/8", "1" = "(2*n - 11)/8" }\n'),
+}
+
+
 def _rules(name, edge, face, vertex=None):
     cc = catmull_clark()
     return Scheme(name, Stencil.from_weights(*edge, name="edge"), Stencil.from_weights(*face, name="face"), vertex or cc.vertex_rule)
 
 
 def scheme(name: str) -> Scheme:
+    if name in FILES:
+        return scheme_from_text(FILES[name], source=name)
     cc = catmull_clark()
     if name == "moved":
         return scheme_from_text(MOVED)
@@ -221,6 +283,11 @@ TABLE = [
     ("Spectrum (Eq. 34, Eq. 43)", "moved", P),
     ("Spectrum (Eq. 34, Eq. 43)", "asymmetric", P),
     ("Spectrum (Eq. 34, Eq. 43)", printed("s6_full_spectrum", "CLOSED_FORMS", _shifted_closed_forms), R),
+    # scheme files: the frequency 2 dominates at n = 5 (Reif's test fails there); a bilinear file
+    ("C1 (Reif's test)", "frequency two", R),
+    ("Section 5.3: smaller eigenvalues", "bilinear file", R),  # M_2's 1/2 is not below M_1's 1/2 at n = 4
+    ("Section 5.3: basis function", "bilinear file", V),
+    ("Larger neighbourhoods (after Eq. 51)", "bilinear file", P),  # every new ring adds only 0 and null columns
 ]
 
 def _status(label, change, monkeypatch):
@@ -228,8 +295,6 @@ def _status(label, change, monkeypatch):
         _, module, attribute, value = change
         monkeypatch.setattr(module + "." + attribute, value)
         return get_claim(label).check(catmull_clark()).status
-    from symdecomp.claims import check_claim
-
     return check_claim(label, scheme(change)).status
 
 
@@ -241,3 +306,245 @@ def test_the_change_gives_the_status(label, change, status, monkeypatch):
 def test_every_claim_has_a_flip():
     flipped = {label for label, _, status in TABLE if status is not EXPECTED[label]}
     assert {c.label for c in all_claims()} - flipped == set()
+
+
+def test_the_table_schemes_are_scheme_files():
+    """Every scheme of the table is a scheme file (written and read back to an equal scheme), except the two that
+    break what a file guarantees: the parser refuses them, so no file can make those flips (Prop. 4.2, 4.3, Eq. 44)."""
+    not_files = {"complex weights": "not real", "not affine": "is not affine"}
+    for name in sorted({row[1] for row in TABLE if isinstance(row[1], str)} | set(FILES)):
+        s = scheme(name)
+        if name in not_files:
+            with pytest.raises((InvalidSchemeError, NotAffineError), match=not_files[name]):
+                scheme_from_text(scheme_to_text(s).replace("I/16", "sqrt(-1)/16"))
+        else:
+            assert scheme_from_text(scheme_to_text(s)) == s, name
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Claims that no scheme file flips, and why. Together with the table's flips by scheme files they cover every
+# claim (test_every_claim_is_flipped_by_a_file_or_has_a_reason).
+
+#: The check never reads the scheme: the statement is about Fourier bases, circulants, 2n-gons, ellipses,
+#: the printed component formulas of Section 4, or CB-matrices in general (Section 6 before Eq. 51). Its status
+#: is that of the printed statement alone; only a change of the printed formula moves it (the table's rows).
+SCHEME_FREE = {
+    "Eq. 1", "Eq. 2-4", "Eq. 5", "Eq. 6", "Proposition 2.1", "Eq. 7", "Eq. 8", "Eq. 9",  # Section 2
+    "Eq. 10-11", "Eq. 12-13", "Eq. 22", "Eq. 23", "Eq. 24",  # the 2n-gon's components and the printed example rule
+    "Eq. 25-30",  # the printed staged circulants of Catmull-Clark, compared with Eq. 17-21 as printed
+    "Eq. 40", "Eq. 41",  # ellipses of a complex amplitude: geometry
+    "Proposition 6.1", "Proposition 6.2", "Eq. 46", "Eq. 47", "Eq. 48", "Eq. 49", "Eq. 50", "Remark 6.1",
+    "Proposition 6.3",  # adding constant blocks to a CB-matrix: random rational and symbolic blocks, no scheme
+}
+
+#: The check reads the scheme, but every scheme file satisfies what the statement needs, so no file moves the
+#: verdict (a file may still make the claim 'not applicable'). Each reason is backed by the statuses of very
+#: different files in FILE_PANEL (test_no_file_flips_these).
+NO_FILE_FLIP = {
+    "Proposition 4.1": "a file gives one stencil for every i, so the rules commute with the rotation and map each "
+                       "frequency to itself; Python-built complex and wide rules are proved too",
+    "Proposition 4.2": "a file's weights are real (the parser refuses others), and real weights give M_(n-k) = "
+                       "conj(M_k); only the Python-built complex weights refute it",
+    "Proposition 4.3": "a file's rules are affine (the parser refuses others); only the Python-built non-affine rule refutes it",
+    "Eq. 44": "the reduction to differences needs affine rows, which every file has (the non-affine rule refutes it)",
+    "Eq. 16": "the status is that of the printed weight 1 - alpha - beta (not affine for every n); the scheme only "
+              "chooses the example numbers",
+    "Eq. 51": "an identity of characteristic polynomials for every scheme of the paper's shape, checked against the "
+              "matrix; files with wider offsets or parameters outside the vertex rule are 'not applicable'",
+    "S' (after Eq. 51)": "a similarity valid for every scheme whose rows sum to 1; proved even with every edge and face "
+                         "weight moved by free parameters (p, q)",
+    "Tuning weights (after Eq. 51)": "the vertex rule enters only the first row of S, constant across the sectors, so "
+                                     "after the reduction only constant blocks change and (Prop. 6.1) only E_0 moves; "
+                                     "det(xI - E_0) has x-coefficient terms n*alpha, n*beta, so it always depends on them",
+    "Tuning and multiplicities (after Eq. 51)": "the same identity as 'Tuning weights', with no eigenvectors used: no "
+                                                "multiplicity of any file changes it; Loop's file (no face rule) is 'not applicable'",
+    "Tangent plane unaffected (after Eq. 51)": "the counterexample is searched among vertex weights (0, 0), (-1, 0), "
+                                               "(0, -1), and -1 adds n to the trace of E_0: every mirror-symmetric file "
+                                               "tried is 'corrected', lopsided ones are 'not applicable'",
+    "Spectrum (Eq. 34, Eq. 43)": "the block factorization of det(S - x I) holds for every scheme of the shape, "
+                                 "lopsided too; only a change of the printed closed forms refutes it",
+    "Section 5.3: construction": "the frequencies 1, 2 are closed under every rotation-invariant rule (Prop. 4.1); "
+                                 "lopsided files are 'not applicable' (the construction's closed forms need mirror symmetry)",
+    # not a theorem for every file, but no file tried flips it:
+    "Section 3: 9 and 25 points": "a statement about the regular vertex of a mesh scheme: the support of P depends only "
+                                  "on which weights are nonzero, and a mesh rule's stencils are nearly forced (the face "
+                                  "point is the centroid, the edge rule is symmetric from both ends); the mesh files tried "
+                                  "(tuned vertex weights, edge weights 1/2 or 1/4 on the ends) keep 9 and 25, a zero vertex "
+                                  "weight makes the classification 'not applicable', and other files are not mesh rules",
+    "1-ring suffices (after Eq. 51)": "the mesh files tried (bilinear, midpoint edges, Loop) keep the left eigenvectors of "
+                                      "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable'",
+}
+
+#: Very different scheme files, and what each claim of NO_FILE_FLIP is for them (Catmull-Clark's status unless given).
+FILE_PANEL = ("bilinear file", "asymmetric", "frequency two")
+PANEL_EXCEPTIONS = {
+    ("Section 3: 9 and 25 points", "bilinear file"): NA,  # a zero vertex weight: the support classification needs positive ones
+    ("Section 3: 9 and 25 points", "asymmetric"): NA,  # not mesh rules
+    ("Section 3: 9 and 25 points", "frequency two"): NA,
+    ("1-ring suffices (after Eq. 51)", "asymmetric"): NA,
+    ("1-ring suffices (after Eq. 51)", "frequency two"): NA,
+    ("Tangent plane unaffected (after Eq. 51)", "asymmetric"): NA,  # the closed forms need mirror symmetry
+    ("Section 5.3: construction", "asymmetric"): NA,
+}
+#: Rows of the panel whose status today is wrong (WRONG_TODAY): left out here, asserted there.
+PANEL_WRONG_TODAY = {("Eq. 51", "bilinear file"), ("Section 5.3: construction", "frequency two"),
+                     ("Tangent plane unaffected (after Eq. 51)", "frequency two")}
+#: Further files for some claims.
+PANEL_MORE = {
+    ("S' (after Eq. 51)", "free edge and face"): P,
+    ("Section 3: 9 and 25 points", "midpoint edges"): P,
+    ("Section 3: 9 and 25 points", "tuned"): P,
+    ("Section 3: 9 and 25 points", "singular M"): P,
+    ("1-ring suffices (after Eq. 51)", "midpoint edges"): P,
+    ("Tuning weights (after Eq. 51)", "loop file"): NA,
+    ("Tuning and multiplicities (after Eq. 51)", "loop file"): NA,
+}
+
+#: The schemes no file can be: their flips do not count as flips by a file.
+NOT_FILES = {"complex weights", "not affine"}
+
+
+def _flipped_by_files() -> set:
+    """Claims that a scheme file in the table moves to another verdict (not only to 'not applicable')."""
+    return {label for label, change, status in TABLE
+            if isinstance(change, str) and change not in NOT_FILES and status not in (EXPECTED[label], NA)}
+
+
+def test_every_claim_is_flipped_by_a_file_or_has_a_reason():
+    labels = {c.label for c in all_claims()}
+    flipped = _flipped_by_files()
+    assert not SCHEME_FREE & set(NO_FILE_FLIP)
+    assert not flipped & (SCHEME_FREE | set(NO_FILE_FLIP)), "a claim said to be unflippable is flipped by a file"
+    assert labels - flipped - SCHEME_FREE - set(NO_FILE_FLIP) == set()
+    assert (SCHEME_FREE | set(NO_FILE_FLIP)) <= labels
+
+
+@pytest.mark.slow  # 12 s in all: the checks themselves
+@pytest.mark.parametrize("label", sorted(SCHEME_FREE))
+def test_scheme_free_checks_do_not_read_the_scheme(label):
+    """The check runs without a scheme at all (None): its status is the printed statement's."""
+    assert get_claim(label).check(None).status is EXPECTED[label]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("label", sorted(SCHEME_FREE))
+def test_scheme_free_claims_have_one_status_for_very_different_files(label):
+    for name in ("loop file", "asymmetric", "frequency two"):
+        assert check_claim(label, scheme(name)).status is EXPECTED[label], name
+
+
+def _panel_rows():
+    rows = [(label, name, PANEL_EXCEPTIONS.get((label, name), EXPECTED[label])) for label in sorted(NO_FILE_FLIP)
+            for name in FILE_PANEL if (label, name) not in PANEL_WRONG_TODAY]
+    return rows + [(label, name, status) for (label, name), status in PANEL_MORE.items()]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("label, name, status", _panel_rows(), ids=[f"{r[0]} / {r[1]}" for r in _panel_rows()])
+def test_no_file_flips_these(label, name, status):
+    assert check_claim(label, scheme(name)).status is status
+
+
+def test_the_parser_refuses_what_would_flip_propositions_4_2_and_4_3():
+    complex_face = CC_FACE.replace('"0" = "1/4", "1" = "1/4"', '"0" = "1/4 + sqrt(-1)/16", "1" = "1/4 - sqrt(-1)/16"')
+    with pytest.raises(InvalidSchemeError, match="not real"):
+        scheme_from_text(quad_file("complex", face=complex_face))
+    with pytest.raises(NotAffineError, match="65/64"):
+        scheme_from_text(quad_file("not affine", edge=CC_EDGE.replace('O = "3/8"', 'O = "25/64"')))
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Wrong verdicts today: the test asserts the correct status (strict xfail: it fails loudly once fixed).
+
+WRONG_TODAY = [
+    ("Eq. 51", "bilinear file", P,
+     "status error ('a step of the closed form failed'): M(omega) is triangular, so c_+ = c_- = 0 and the check divides "
+     "by c_+; the closed form still holds (rho_+ = c_0, rho_- = 0: rho_+^n + rho_-^n = c_0^n = prod_k q(x, omega^k))"),
+    ("Proposition 5.1", "frequency two", R,
+     "status error (UnsupportedExpressionError: n in a closed form with arb) for an n-dependent edge rule; at n = 5 the "
+     "frequency 2 eigenvalue 0.713 exceeds frequency 1's, so the claim is false"),
+    ("Section 5.3: smaller eigenvalues", "frequency two", R,
+     "status error (TypeError comparing a non-real number) for an n-dependent edge rule; at n = 5 the frequency 2 "
+     "eigenvalue is the largest, so the hyperbolic components are not smaller"),
+    ("Section 5.3: construction", "frequency two", P,
+     "status error (TypeError: invalid input n/4 - 5/8) for an n-dependent edge rule; the construction only uses the "
+     "frequency decomposition, which holds for every file"),
+    ("Tangent plane unaffected (after Eq. 51)", "frequency two", C,
+     "status error (UnsupportedExpressionError: n with arb) for an n-dependent edge rule; vertex weight -1 still lifts "
+     "an E_0 eigenvalue above lambda_1"),
+    ("1-ring suffices (after Eq. 51)", "singular M", P,
+     "status verified, valences (3, 5), but the left eigenvector of lambda_1 was computed at n = 4 only (scope wider "
+     "than the evidence); the proof fails only because the 3-ring resultant vanishes identically: M(omega) is singular "
+     "for every omega, and the shared root is 0 (the 3-ring's new eigenvalue), never lambda_1; the 2-ring resultant "
+     "has no root on the unit circle, so the proof goes through for every n"),
+    ("Spectrum (Eq. 34, Eq. 43)", "loop file", NA,
+     "status error (AttributeError: 'NoneType' object has no attribute 'a'): Loop has no face rule, so the quad "
+     "factorization is not applicable, as for Eq. 51 and the tuning claims"),
+]
+
+
+@pytest.mark.parametrize("label, name, status", [
+    pytest.param(label, name, status, marks=pytest.mark.xfail(strict=True, reason=reason), id=f"{label} / {name}")
+    for label, name, status, reason in WRONG_TODAY
+])
+def test_the_correct_status_of_a_wrong_verdict(label, name, status):
+    assert check_claim(label, scheme(name)).status is status
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# C1 verdicts: scheme files whose Reif test at a valence is 'not-c1' where Catmull-Clark's (or Loop's) is 'c1'.
+# Each keeps the regular rules (Catmull-Clark's at n = 4, Loop's at n = 6), so the test applies; the failing
+# condition is asserted, with the exact eigenvalue where there is one.
+
+SQRT5 = sp.sqrt(5)
+#: (file, valence, frequency of the subdominant eigenvalue, its exact value or None, words of the reason)
+C1_TABLE = [
+    ("O fixed file", 3, 0, (3 + SQRT5) / 8, "frequency 0"),  # above lambda_1(3) = 0.4101
+    ("O fixed file", 5, 0, (3 + SQRT5) / 8, "frequency 0"),  # above lambda_1(5) = 0.5500
+    ("negative", 5, 0, -(3 + SQRT5) / 8, "frequency 0"),  # a negative eigenvalue larger in modulus than lambda_1
+    ("minus one", 5, 0, sp.Integer(-1), "not smaller than 1"),  # 1 is not strictly dominant
+    ("complex pair", 5, 1, None, "not real"),
+    ("frequency two", 5, 2, None, "winds 2 times"),  # regular but not injective
+    ("loop beta zero", 5, 0, Q(5, 8), "frequency 0"),
+    ("loop opposite", 5, 0, -(Q(3, 8) + sp.cos(2 * sp.pi / 5) / 4), "exactly its negative"),
+    ("loop frequency two", 5, 2, None, "changes sign"),  # the Jacobian of the characteristic map folds
+]
+
+
+def _ball_holds(ball, value) -> bool:
+    """The ball contains the real number ``value`` (taken to 40 digits, far inside the ball's own width)."""
+    import flint
+
+    exact = sp.N(value, 40)
+    return (ball - flint.acb(flint.arb(str(exact)))).contains(0) if value.is_real else False
+
+
+@pytest.mark.parametrize("name, valence, frequency, value, words", C1_TABLE, ids=[f"{r[0]} / n = {r[1]}" for r in C1_TABLE])
+def test_a_file_flips_the_c1_verdict(name, valence, frequency, value, words):
+    from symdecomp.schemes.loop import loop
+    from symdecomp.verify.c1 import c1_test
+
+    s = scheme(name)
+    reference = loop() if s.mesh == "triangle" else catmull_clark()
+    assert c1_test(reference, valence).verdict == "c1"
+    r = c1_test(s, valence)
+    assert r.verdict == "not-c1" and words in r.reason, r.reason
+    assert r.spectral.subdominant.frequency == frequency
+    if value is not None:
+        assert _ball_holds(r.spectral.subdominant.value, value)
+
+
+def test_the_singular_scheme_is_what_its_wrong_verdict_says():
+    """The facts behind WRONG_TODAY's '1-ring suffices / singular M': det M(omega) vanishes identically, and the
+    2-ring's outer eigenvalues (roots of (8x - 1)(64x - 1)(128x^2 - 28x + 1)) are never a root of det(xI - M(omega_n))."""
+    from symdecomp.analysis.frequency import one_ring_matrices
+    from symdecomp.symbols import omega
+
+    M = one_ring_matrices(scheme("singular M"))[0]
+    assert sp.expand(M.det()) == 0
+    x = sp.Symbol("x")
+    outer = (8 * x - 1) * (64 * x - 1) * (128 * x**2 - 28 * x + 1)
+    resultant = sp.factor(sp.resultant(sp.expand(outer), sp.numer(sp.together(sp.expand((x * sp.eye(2) - M).det()))), x))
+    for factor, _ in sp.factor_list(resultant)[1]:
+        if factor.has(omega):  # no root of the factor is a root of unity: all are off the unit circle
+            assert all(abs(abs(complex(r)) - 1) > 1e-3 for r in sp.Poly(factor, omega).nroots())

@@ -92,6 +92,13 @@ FILES = {
                                     'b = { "-1" = "1/16", "0" = "1/16" }\n',
                                     face='[face]\nO = "1/4 + q"\na = { "0" = "1/4", "1" = "1/4 - q" }\nb = { "0" = "1/4" }\n'),
     "loop file": loop_file("loop file"),
+    # the same changes at the extraordinary vertex only: the vertex rule is the standard one at the regular valence
+    # (4, 6), which every regular vertex uses (the whole-mesh model), so that the C1 test applies
+    "O fixed at EV": quad_file("O fixed at EV", vertex='[vertex]\na = "-3*(n - 3)*(n - 5)/32"\nb = "-(n - 3)*(n - 5)/64"\n'),
+    "minus one at EV": quad_file("minus one at EV", vertex='[vertex]\na = "1/10 + (n - 5)/160"\nb = "1/4 + 15*(n - 5)/64"\n'),
+    "negative at EV": quad_file("negative at EV", vertex='[vertex]\na = "3*(5 - n)/32"\nb = "3/10 + 91*(n - 5)/320"\n'),
+    "loop beta zero at EV": loop_file("loop beta zero at EV", beta="(n - 5)/16"),
+    "loop opposite at EV": loop_file("loop opposite at EV", beta="(1 + cos(2*pi/n)/4)/n - (n - 5)/8"),
     "loop beta zero": loop_file("loop beta zero", beta="0"),
     # beta puts -lambda_1 at frequency 0 exactly, for every n
     "loop opposite": loop_file("loop opposite", beta="(1 + cos(2*pi/n)/4)/n"),
@@ -227,7 +234,8 @@ TABLE = [
     ("Eq. 39 (n = 4)", "moved", R),
     ("Eq. 39 (n = 4)", "tuned", P),
     ("Eq. 39 (n → ∞)", "moved", R),
-    ("C1 (Reif's test)", "O fixed", R),
+    ("C1 (Reif's test)", "O fixed at EV", R),
+    ("C1 (Reif's test)", "O fixed", NA),  # its vertex rule at 4 is every regular vertex's: the patches are not bicubic
     # Section 5.2
     ("Proposition 5.2", "asymmetric", R),
     ("Proposition 5.2", "moved", P),
@@ -499,14 +507,14 @@ def test_the_correct_status_of_a_wrong_verdict(label, name, status):
 SQRT5 = sp.sqrt(5)
 #: (file, valence, frequency of the subdominant eigenvalue, its exact value or None, words of the reason)
 C1_TABLE = [
-    ("O fixed file", 3, 0, (3 + SQRT5) / 8, "frequency 0"),  # above lambda_1(3) = 0.4101
-    ("O fixed file", 5, 0, (3 + SQRT5) / 8, "frequency 0"),  # above lambda_1(5) = 0.5500
-    ("negative", 5, 0, -(3 + SQRT5) / 8, "frequency 0"),  # a negative eigenvalue larger in modulus than lambda_1
-    ("minus one", 5, 0, sp.Integer(-1), "not smaller than 1"),  # 1 is not strictly dominant
+    ("O fixed at EV", 3, 0, (3 + SQRT5) / 8, "frequency 0"),  # above lambda_1(3) = 0.4101
+    ("O fixed at EV", 5, 0, (3 + SQRT5) / 8, "frequency 0"),  # above lambda_1(5) = 0.5500
+    ("negative at EV", 5, 0, -(3 + SQRT5) / 8, "frequency 0"),  # a negative eigenvalue larger in modulus than lambda_1
+    ("minus one at EV", 5, 0, sp.Integer(-1), "not smaller than 1"),  # 1 is not strictly dominant
     ("complex pair", 5, 1, None, "not real"),
     ("frequency two", 5, 2, None, "winds 2 times"),  # regular but not injective
-    ("loop beta zero", 5, 0, Q(5, 8), "frequency 0"),
-    ("loop opposite", 5, 0, -(Q(3, 8) + sp.cos(2 * sp.pi / 5) / 4), "exactly its negative"),
+    ("loop beta zero at EV", 5, 0, Q(5, 8), "frequency 0"),
+    ("loop opposite at EV", 5, 0, -(Q(3, 8) + sp.cos(2 * sp.pi / 5) / 4), "exactly its negative"),
     ("loop frequency two", 5, 2, None, "changes sign"),  # the Jacobian of the characteristic map folds
 ]
 

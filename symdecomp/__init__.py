@@ -75,7 +75,7 @@ from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigen
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
-from symdecomp.analysis.eigendata import NotDiagonalizableError, certified_eigendata
+from symdecomp.analysis.eigendata import certified_eigendata
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.evaluation import PatchEvaluator
@@ -97,6 +97,7 @@ from symdecomp.errors import (
     InvalidSchemeError,
     InvalidValenceError,
     NotAffineError,
+    NotDiagonalizableError,
     SymdecompError,
 )
 from symdecomp.output.latex import aslatex

@@ -13,13 +13,9 @@ import flint
 import mpmath
 import sympy as sp
 
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import UnsupportedExpressionError
 
 __all__ = ["compile_expression", "UnsupportedExpressionError"]
-
-
-class UnsupportedExpressionError(InvalidInputError):
-    """A closed form uses a function the fast evaluators do not know."""
 
 
 _MP_OPS = {

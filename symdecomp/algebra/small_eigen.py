@@ -16,17 +16,15 @@ from fractions import Fraction
 
 import flint
 
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import NotDiagonalizableError
 
 __all__ = ["NotDiagonalizableError", "NeedPrecision", "rational_eigen", "nullspace", "biorthogonal", "fmpq_value", "arb_value"]
 
 arb = flint.arb
 
 
-class NotDiagonalizableError(InvalidInputError):
-    """A matrix has no basis of (real) eigenvectors."""
-
-
+# Private control flow, not an error of the package: the eigen-data builders catch it and retry at a
+# higher precision (an exhausted cap becomes symdecomp.errors.PrecisionError).
 class NeedPrecision(Exception):
     """A ball was too wide to decide a sign at the working precision (raise it and retry)."""
 

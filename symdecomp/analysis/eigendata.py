@@ -44,13 +44,12 @@ import numpy as np
 
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
-from symdecomp.algebra.small_eigen import NotDiagonalizableError
 from symdecomp.algebra.small_eigen import arb_value as _arb
 from symdecomp.algebra.small_eigen import fmpq_value as _fq
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.analysis.quad_eigendata import LazyTable, circulant_weights, column_group, quad_ring_columns, trig_table
 from symdecomp.analysis.triangle_eigendata import triangle_ring_columns
-from symdecomp.errors import InternalError
+from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
@@ -67,10 +66,6 @@ __all__ = [
 ]
 
 arb, acb = flint.arb, flint.acb
-
-
-class PrecisionError(InternalError):
-    """A ball stayed too wide to decide a sign or round correctly, up to the precision cap."""
 
 
 @dataclass(frozen=True)

@@ -15,10 +15,10 @@ import flint
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
-from symdecomp.algebra.small_eigen import NotDiagonalizableError
 from symdecomp.algebra.small_eigen import arb_value as _arb
 from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
+from symdecomp.errors import NotDiagonalizableError
 from symdecomp.schemes.patch import PatchMatrices
 
 __all__ = ["quad_ring_columns", "column_group", "LazyTable", "trig_table", "circulant_weights"]

@@ -62,8 +62,8 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidInputError, InvalidSchemeError
-from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, mesh_rules, refine
+from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError
+from symdecomp.schemes.mesh import QuadMesh, mesh_rules, refine
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme"]

@@ -26,8 +26,9 @@ from fractions import Fraction
 import flint
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, to_acb
-from symdecomp.algebra.small_eigen import NeedPrecision, NotDiagonalizableError
+from symdecomp.algebra.small_eigen import NeedPrecision
 from symdecomp.algebra.small_eigen import arb_value as _arb
+from symdecomp.errors import NotDiagonalizableError
 
 __all__ = ["triangle_ring_weights", "triangle_ring_columns"]
 

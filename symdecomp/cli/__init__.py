@@ -39,6 +39,8 @@ EXIT_CODES = {
 }
 
 
+# Control flow, not an error of the package: a BaseException like KeyboardInterrupt so that no
+# `except Exception` swallows it; main() turns it into exit code 130.
 class Interrupted(BaseException):
     """Raised in the main process by SIGTERM, so that cleanup runs as for Ctrl-C."""
 

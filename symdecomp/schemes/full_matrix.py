@@ -24,8 +24,8 @@ import flint
 import sympy as sp
 
 from symdecomp import validate
-from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.algebra.compile import compile_expression
+from symdecomp.errors import InvalidSchemeError, UnsupportedExpressionError
 from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, subdivision_entries
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_memory, check_valence

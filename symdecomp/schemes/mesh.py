@@ -46,7 +46,7 @@ from types import MappingProxyType
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic
-from symdecomp.errors import InvalidInputError, InvalidSchemeError
+from symdecomp.errors import InvalidMeshError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
@@ -55,10 +55,6 @@ __all__ = [
     "InvalidMeshError", "QuadMesh", "MeshRules", "Refinement", "mesh_rules", "ring_mesh", "ring_mesh_labels",
     "cube_mesh", "refine", "point_stencils", "refinement_matrix", "central_rings",
 ]
-
-
-class InvalidMeshError(InvalidInputError):
-    """A mesh is not a consistently oriented quad mesh, or a vertex asked about is not in it."""
 
 
 def _as_weight(w: sp.Expr):

@@ -52,9 +52,10 @@ from typing import ClassVar
 import flint
 import sympy as sp
 
-from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
+from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
 from symdecomp.analysis.spectrum import format_value
+from symdecomp.errors import UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta

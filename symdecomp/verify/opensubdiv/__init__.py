@@ -21,15 +21,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symdecomp.errors import InternalError, InvalidInputError, SymdecompError, UnavailableError
+from symdecomp.errors import BridgeUnavailableError, InternalError, InvalidInputError, SymdecompError
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.verify.opensubdiv import build as _build
 
 __all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings", "osd_limit_points"]
-
-
-class BridgeUnavailableError(UnavailableError):
-    """The OpenSubdiv bridge is not built and cannot be built here (no g++ or no OpenSubdiv)."""
 
 
 _lock = threading.Lock()

@@ -46,6 +46,7 @@ from types import MappingProxyType
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic
+from symdecomp.algebra.numbers import to_fraction
 from symdecomp.errors import InvalidMeshError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -62,7 +63,7 @@ def _as_weight(w: sp.Expr):
         return w
     w = sp.sympify(w, strict=True)
     if w.is_Rational:
-        return Fraction(int(w.p), int(w.q))
+        return to_fraction(w)
     return w
 
 

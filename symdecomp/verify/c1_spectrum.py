@@ -52,7 +52,7 @@ from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic
 from symdecomp.analysis.characteristic import check_applicable, frequency_block, ring_layout
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import one_ring_matrices
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -210,7 +210,7 @@ def _frequency_zero_quotient(scheme: Scheme, n: int) -> tuple[list, list | None]
     E0 = one_ring_matrices(scheme)[1]
     entries = [[_exact(x, n) for x in row] for row in E0.tolist()]
     if any(x is None for row in entries for x in row):
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"scheme {scheme.name!r}: the C1 test needs rational weights at each valence (or rational in cos(2 pi k/n)); "
             f"at n = {n} the frequency-0 block is {sp.Matrix(E0).subs(N, n).tolist()}"
         )

@@ -43,7 +43,6 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_int, check_valence
 
 __all__ = [
-    "NotCirculantBlockError",
     "CBMatrix",
     "cb_matrix",
     "cb_matrix_from",

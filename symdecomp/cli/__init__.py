@@ -11,6 +11,8 @@ Exit codes (also in ``symdecomp --help`` and the README):
 ===  =====================================================================================
 
 No traceback is ever printed: every error is one line on stderr.
+
+The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """
 
 from __future__ import annotations

@@ -11,6 +11,8 @@ The bridge is a small C++ library (``osd_bridge.cpp``) built with the system g++
 ``python symdecomp/verify/opensubdiv/build.py`` (CI does this). :func:`bridge_available` says whether
 it can be used; :func:`load_bridge` builds it on demand when the compiler and the OpenSubdiv
 headers are present. Nothing else in symdecomp needs it.
+
+The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """
 
 from __future__ import annotations

@@ -2,80 +2,90 @@
 
 Implements and checks I.P. Ivrissimtzis, R. Zayer, H.-P. Seidel, *Polygonal decompositions of
 quadrilateral subdivision meshes*. The package is layered; each folder imports only from the
-ones above it in this list (``tests/test_layers.py`` checks it):
+ones above it in this list (``tests/test_layers.py`` checks it). This table is the one map of the
+package: it names every module (a folder's modules relative to the folder; the subpackages'
+docstrings point here), and ``tests/test_layers.py`` checks that it names every module and
+nothing else.
 
 =================  ===========================================================================
-``errors``,        the package's error types; the symbols ``n``, ``omega``, ``alpha``, ``beta``,
-``symbols``        ``cos_jtheta`` (``c = cos(j pi/n)``) and ``sin_jtheta``
+``errors``         the package's error types, all of them
+``symbols``        the paper's symbols n, omega, alpha, beta, c = cos(j pi/n) and sin(j pi/n)
+``expressions``    exact weights and expressions from user input, parsed and never evaluated
+``validate``       one validation layer for every input from outside (valences, frequencies, ...)
 ``algebra/``       no scheme knowledge: circulants and the Fourier matrix and its rows (Section 2,
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
-                   exact/interval evaluation of expressions (``compile``), small exact
+                   exact/interval evaluation of expressions (``compile``), the conversions
+                   between sympy, Fraction, FLINT and Arb numbers (``numbers``), small exact
                    eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
-                   polynomials over a triangle in Bezier form (``triangle_bezier``)
-``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes;
-                   Loop, ``loop``) and the one assembly of its
-                   subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
-                   rationals and its characteristic polynomial (``full_matrix``), rules as
+                   polynomials over a triangle in Bezier form (``triangle_bezier``), signs of
+                   rational functions of n for every n (``valence_signs``)
+``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes) and the
+                   one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the full matrix
+                   in FLINT rationals and its characteristic polynomial (``full_matrix``), rules as
                    polynomials in the index shift (Eq. 17-23, ``shift_stencil``), whole quad
                    meshes refined by its rules (Section 3, ``mesh``; triangle meshes,
                    ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
                    its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
-                   (``files``; Loop, ``loop``),
-                   Stam's (2N+8)-point patch matrix (``patch``; Loop's (N+6)-point one,
-                   ``triangle_patch``), the regular Loop patch (quartic box spline) in
-                   Bezier form (``box_spline``)
-``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
-                   (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,
-                   ``tangent``), elliptic and hyperbolic properties (Sections 5.2-5.3,
-                   ``elliptic``, ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning
-                   (``tuning``), the characteristic polynomial (Section 6, ``charpoly``,
-                   ``reduction``), Jordan blocks (``defective``), supports (Section 3,
-                   ``support``), rings iterated step by step (``evolution``), the 2-ring
-                   matrix by frequency and the characteristic map's nets, quads and
-                   triangles (``characteristic``, its regular rows from ``ring_blocks``),
-                   where a 1-ring component starts on one eigenvector of M_j (Eq. 35-38,
-                   ``components``); any scheme and K-ring: block form and E_k
-                   (``ring_blocks``), factored spectra (``ring_spectrum``), product-form
-                   charpoly (``ring_charpoly``), masks (``ring_masks``); the patch's certified
-                   eigen-data (``eigendata``; Loop's 1-ring columns, ``triangle_eigendata``)
-                   and exact evaluation (``evaluation``; Loop's sub-triangles,
-                   ``triangle_evaluation``)
+                   (``files``), Loop's scheme (``loop``), Stam's (2N+8)-point patch matrix
+                   (``patch``; Loop's (N+6)-point one, ``triangle_patch``), the regular Loop
+                   patch (quartic box spline) in Bezier form (``box_spline``)
+``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
+                   spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
+                   5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
+                   elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
+                   ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning (``tuning``),
+                   the characteristic polynomial (Section 6, ``charpoly``, ``reduction``), Jordan
+                   blocks (``defective``), supports (Section 3, ``support``; for every n from one
+                   window of sectors, ``support_window``), rings iterated step by step
+                   (``evolution``), the 2-ring matrix by frequency and the characteristic map's
+                   nets (``characteristic``), where a 1-ring component starts on one eigenvector
+                   of M_j (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
+                   (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
+                   (``ring_charpoly``), masks (``ring_masks``); the patch's certified eigen-data
+                   (``eigendata``; the 1-ring columns by frequency, ``quad_eigendata`` and
+                   Loop's ``triangle_eigendata``) and exact evaluation (``evaluation``; Loop's
+                   sub-triangles, ``triangle_evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``,
-                   ``ring_numeric``), certified (``certify``, ``ring_certify``), both returning a
-                   ``CrossCheckResult`` (``result``), OpenSubdiv (``oracle``, ``opensubdiv``);
-                   certified C1 by Reif's test (``c1``, ``c1_spectrum``, Bernstein-Bezier nets
-                   ``bezier``); dyadic limit positions for the patch evaluator (``patch_eval``)
-``claims/``        the paper's claims, one module per section, and their registry; every claim
-                   is checked for a scheme (``check_claim(label, scheme)``); ``applicability``
-                   and ``evidence`` hold what several checks share
-``output/``        LaTeX (``latex``, one entry point ``aslatex``), figures (``plotting``), Stam's
-                   data file (``evaldata``)
-``cli/``           the ``symdecomp`` command, one module per subcommand
+                   ``ring_numeric``), certified (``certify``, ``ring_certify``), their results and
+                   the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
+                   through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
+                   Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,
+                   ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
+                   the patch evaluator (``patch_eval``)
+``claims/``        the paper's claims, one module per section (``s2_background``,
+                   ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
+                   ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
+                   ``s6_cb_matrices``, ``s6_cb_subdivision``, ``s6_closing``,
+                   ``s6_full_spectrum``) and their registry (``registry``); every claim is checked
+                   for a scheme; what several checks share: the requirements a claim declares
+                   (``applicability``), computed evidence (``evidence``), the paper's notation
+                   (``notation``), example CB-matrices (``cb_examples``)
+``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
+                   ``texlayout``), Stam's data file (``evaldata``), figures (``plotting``):
+                   Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
+                   (``plotting.elliptic``), 6 (``plotting.cbmatrix``), Reif's test
+                   (``plotting.characteristic``), Stam's evaluation (``plotting.evaldata``),
+                   matplotlib loaded only when a figure is drawn (``plotting._mpl``)
+``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
+                   ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
+                   ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``),
+                   shared argument types and output (``common``), output files written whole
+                   (``files``)
+``__main__``       python -m symdecomp: the command line
 =================  ===========================================================================
 
 The names below are the public API (re-exported from the modules above).
 """
 
-from symdecomp import symbols
-from symdecomp.algebra.cbmatrix import (
-    CBMatrix,
-    SymbolicCBMatrix,
-    SymbolicCirculant,
-    block_diagonalization,
-    block_eigenvalue_matrix,
-    cb_eigensystem,
-    cb_matrix,
-    cb_matrix_from,
-    constant_blocks,
-    lifted_vector,
-    perturbed_block_eigenvalue_matrix,
-)
+from symdecomp import errors, symbols
+from symdecomp.algebra import cbmatrix
+from symdecomp.algebra.cbmatrix import *  # noqa: F403 - its __all__ is the Section 6 API
 from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
-from symdecomp.analysis.eigendata import NotDiagonalizableError, certified_eigendata
+from symdecomp.analysis.eigendata import certified_eigendata
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.evaluation import PatchEvaluator
@@ -91,14 +101,7 @@ from symdecomp.analysis.support import Region, classify_support
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from symdecomp.analysis.tuning import joint_obstruction, tune
 from symdecomp.claims import CheckResult, Claim, Status, Step, all_claims, check_claim, get_claim
-from symdecomp.errors import (
-    FrequencyOutOfRangeError,
-    InvalidPolygonError,
-    InvalidSchemeError,
-    InvalidValenceError,
-    NotAffineError,
-    SymdecompError,
-)
+from symdecomp.errors import *  # noqa: F403 - every error type is public
 from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
@@ -109,7 +112,7 @@ from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark,
 from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.verify.numeric import NumericCheck, numeric_check
-from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
+from symdecomp.verify.result import C1Verdict, CrossCheckResult, CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
 
 __version__ = "0.1.0"
@@ -153,17 +156,7 @@ __all__ = [
     "limit_masks",
     "limit_masks_at",
     # Section 6
-    "CBMatrix",
-    "cb_matrix",
-    "cb_matrix_from",
-    "block_eigenvalue_matrix",
-    "lifted_vector",
-    "block_diagonalization",
-    "cb_eigensystem",
-    "constant_blocks",
-    "perturbed_block_eigenvalue_matrix",
-    "SymbolicCirculant",
-    "SymbolicCBMatrix",
+    *cbmatrix.__all__,
     "subdivision_block_form",
     "reduce_first_column",
     "ClosedFormCharpoly",
@@ -191,7 +184,6 @@ __all__ = [
     # exact evaluation near an extraordinary vertex (Stam)
     "patch_matrices",
     "certified_eigendata",
-    "NotDiagonalizableError",
     "PatchEvaluator",
     # cross-checks against the full matrix
     "ClosedForms",
@@ -203,6 +195,7 @@ __all__ = [
     # C1 at an extraordinary vertex (Reif's test)
     "c1_test",
     "C1Result",
+    "C1Verdict",
     "CrossCheckStatus",
     "CrossCheckResult",
     "exact_subdivision_matrix",
@@ -220,10 +213,5 @@ __all__ = [
     # LaTeX
     "aslatex",
     # errors
-    "SymdecompError",
-    "InvalidValenceError",
-    "FrequencyOutOfRangeError",
-    "InvalidPolygonError",
-    "NotAffineError",
-    "InvalidSchemeError",
+    *errors.__all__,
 ]

@@ -3,16 +3,24 @@
 Every error names the problem in the caller's terms (a valence, a frequency, a polygon,
 a rule of a scheme) so that no user meets a traceback from deep inside sympy. The hierarchy:
 
-* :class:`SymdecompError`: the base of every error the package raises on purpose;
+* :class:`SymdecompError`: the base of every error the package raises on purpose (all of them
+  are defined here; the modules that raise them import them from here);
 * :class:`InvalidInputError` (also a ``ValueError``): an input of the right kind with a bad
   value (a valence of 2, a weight that is a float, text outside the grammar), with one
   subclass per kind of input below;
+* :class:`NotApplicableError` (an :class:`InvalidSchemeError`): a well-formed scheme that
+  does not meet the hypotheses of the question asked (a test for mirror-symmetric schemes, a
+  scheme with free parameters where numbers are needed); a claim's check reports it as
+  "not applicable";
 * :class:`InvalidTypeError` (also a ``TypeError``): an input of the wrong kind altogether
   (a polygon that is a dict, a scheme that is not a :class:`~symdecomp.schemes.scheme.Scheme`);
 * :class:`ResourceLimitError` (a ``ValueError``): a request refused because its estimated
   time or memory is beyond the stated limit (the estimate is in the message);
 * :class:`UnavailableError`: an optional component (the OpenSubdiv bridge) is missing;
 * :class:`InternalError`: the package caught itself in an inconsistency (a bug, not bad input).
+
+Private control-flow exceptions that never leave the module raising them (a signal to retry at
+a higher precision, to stop a search) stay in that module; each says why in a comment.
 
 The checks themselves live in :mod:`symdecomp.validate`.
 """
@@ -26,12 +34,21 @@ __all__ = [
     "InvalidPolygonError",
     "NotAffineError",
     "InvalidSchemeError",
+    "NotApplicableError",
     "InvalidExpressionError",
+    "InvalidMeshError",
+    "NotCirculantBlockError",
+    "NotDiagonalizableError",
+    "UnsupportedExpressionError",
+    "EvaluationError",
+    "EvalDataFileError",
     "InvalidInputError",
     "InvalidTypeError",
     "ResourceLimitError",
     "UnavailableError",
     "InternalError",
+    "PrecisionError",
+    "BridgeUnavailableError",
 ]
 
 
@@ -91,3 +108,44 @@ class InvalidSchemeError(InvalidInputError):
 
 class InvalidExpressionError(InvalidInputError):
     """Text or a value given as an exact number is outside the accepted grammar (see :mod:`symdecomp.expressions`)."""
+
+
+class NotApplicableError(InvalidSchemeError):
+    """The question does not apply to this scheme: a test whose hypotheses the scheme does not meet.
+
+    The scheme itself is well formed (unlike a plain :class:`InvalidSchemeError`); e.g. a
+    check written for mirror-symmetric rules asked about a scheme without that symmetry, or a
+    numeric question asked about a scheme with free parameters.
+    """
+
+
+class InvalidMeshError(InvalidInputError):
+    """A mesh is not a consistently oriented quad mesh, or a vertex asked about is not in it."""
+
+
+class NotCirculantBlockError(InvalidInputError):
+    """A block of a matrix meant to be a CB-matrix is not circulant (or has the wrong size)."""
+
+
+class NotDiagonalizableError(InvalidInputError):
+    """A matrix has no basis of (real) eigenvectors."""
+
+
+class UnsupportedExpressionError(InvalidInputError):
+    """A closed form uses a function the fast evaluators do not know."""
+
+
+class EvaluationError(InvalidInputError):
+    """Parameters outside ``[0, 1]^2`` or control points of the wrong shape."""
+
+
+class EvalDataFileError(InvalidInputError):
+    """An eigen-data file cannot be written or read (path, truncated or malformed content)."""
+
+
+class PrecisionError(InternalError):
+    """A ball stayed too wide to decide a sign or round correctly, up to the precision cap."""
+
+
+class BridgeUnavailableError(UnavailableError):
+    """The OpenSubdiv bridge is not built and cannot be built here (no g++ or no OpenSubdiv)."""

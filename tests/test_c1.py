@@ -17,6 +17,7 @@ from symdecomp.symbols import n as N
 from symdecomp.verify.bezier import certify_sign, curve_angle, jacobian_net, split_net
 from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.c1_spectrum import spectral_conditions
+from symdecomp.verify.result import C1Verdict
 
 R = sp.Rational
 
@@ -162,6 +163,13 @@ def test_alpha_beta_zero_at_valence_3_is_not_c1_and_names_frequency_0():
     assert c1_test(catmull_clark(), 3).verdict == "c1"  # the vertex weights flip the verdict
 
 
+def test_the_test_and_its_spectral_part_speak_one_verdict_vocabulary():
+    broken, standard = c1_test(catmull_clark(0, 0), 3), c1_test(catmull_clark(), 3)
+    assert (broken.verdict, broken.spectral.status) == (C1Verdict.NOT_C1, C1Verdict.NOT_C1)  # fails at frequency 0
+    assert (standard.verdict, standard.spectral.status) == (C1Verdict.C1, C1Verdict.C1)
+    assert [json.loads(json.dumps(r.as_json()))["verdict"] for r in (broken, standard)] == ["not-c1", "c1"]
+
+
 def test_defective_subdominant_eigenvalue_is_not_c1():
     free = catmull_clark(alpha, beta)
     weights = jordan_vertex_weights(free, 5, R(3, 4))
@@ -182,7 +190,7 @@ def _frequency_two_scheme():
 
 def test_frequency_two_characteristic_map_winds_twice():
     r = c1_test(_frequency_two_scheme(), 5)
-    assert r.spectral.status == "ok" and r.frequency == 2
+    assert r.spectral.status is C1Verdict.C1 and r.frequency == 2
     assert r.jacobian_sign is not None and r.winding_number == 2
     assert r.verdict == "not-c1" and "winds 2 times" in r.reason
 

@@ -19,6 +19,7 @@ from symdecomp.symbols import n as N
 from symdecomp.verify.bezier import bisect_triangle, certify_sign_triangles, triangle_jacobian_net
 from symdecomp.verify.c1 import c1_test, characteristic_nets
 from symdecomp.verify.c1_spectrum import _exact_charpoly, spectral_conditions
+from symdecomp.verify.result import C1Verdict
 from tests.test_c1 import standard_at_regular
 
 R = sp.Rational
@@ -131,7 +132,7 @@ def test_loop_with_frequency_two_dominant_is_not_c1():
     scheme = triangle_scheme("frequency two", loop().vertex_rule.each_a, edge_end=R(1, 2) - side, edge_side=side)
     check_applicable(scheme)
     r = c1_test(scheme, 5)
-    assert r.spectral.status == "ok" and r.frequency == 2
+    assert r.spectral.status is C1Verdict.C1 and r.frequency == 2
     lam = 5 / 8 - math.cos(4 * math.pi / 5) / 4
     assert abs(float(r.spectral.subdominant.value.real.mid()) - lam) < 1e-14
     assert r.verdict == "not-c1"

@@ -1,5 +1,6 @@
 """The registry: result invariants, the claims command (statuses: tests/test_claim_statuses.py)."""
 
+import itertools
 import json
 
 import pytest
@@ -86,3 +87,77 @@ def test_eq45_with_a_free_parameter_is_undecided_with_a_reason_not_an_error():
     result = check_claim("Eq. 45", scheme_from_text(text))
     assert result.status is Status.UNDECIDED
     assert "free parameters alpha" in str(result.evidence)
+
+
+def _registered(monkeypatch, check, requires=()):
+    """A claim registered for the test only, under a label never used before (the registry caches per label and scheme)."""
+    from symdecomp.claims import REGISTRY, Claim
+
+    label = f"Eq. 99{next(_FRESH)}"
+    monkeypatch.setitem(REGISTRY, label, Claim(label, "5.1", "t", "s", check, order=990, requires=tuple(requires)))
+    return label
+
+
+_FRESH = itertools.count()
+
+
+def test_an_unmet_requirement_gives_not_applicable_with_its_reason_and_the_check_does_not_run(monkeypatch):
+    from symdecomp.claims import Requirement
+    from symdecomp.schemes.scheme import catmull_clark
+    from symdecomp.symbols import alpha, beta
+
+    ran = []
+    concrete = Requirement("no free parameters", lambda s: f"{s.name!r} has free parameters" if s.parameters else None)
+    label = _registered(monkeypatch, lambda s: ran.append(s) or CheckResult(Status.PROVED, "x"), requires=(concrete,))
+    assert check_claim(label, catmull_clark()).status is Status.PROVED and ran == [catmull_clark()]
+    free = catmull_clark(alpha, beta)
+    result = check_claim(label, free)
+    assert result.status is Status.NOT_APPLICABLE and str(result.evidence) == f"{free.name!r} has free parameters"
+    assert ran == [catmull_clark()]
+
+
+def test_not_applicable_and_malformed_scheme_errors_inside_a_check(monkeypatch):
+    from symdecomp.errors import InvalidSchemeError, NotApplicableError
+    from symdecomp.schemes.scheme import catmull_clark
+
+    def raising(error):
+        def check(scheme):
+            raise error
+        return check
+
+    for error in (NotApplicableError("needs a quad mesh"), InvalidSchemeError("needs a quad mesh")):
+        result = check_claim(_registered(monkeypatch, raising(error)), catmull_clark())
+        assert result.status is Status.NOT_APPLICABLE
+        assert str(result.evidence) == "not applicable to the scheme 'catmull-clark': needs a quad mesh"
+    result = check_claim(_registered(monkeypatch, raising(ZeroDivisionError("1/0"))), catmull_clark())
+    assert result.status is Status.ERROR and "ZeroDivisionError" in str(result.evidence)
+
+
+def test_the_mirror_symmetry_requirement_names_the_term_with_sin():
+    from symdecomp.claims.applicability import MIRROR_SYMMETRIC, WHOLE_MESH
+    from symdecomp.schemes.scheme import catmull_clark
+    from symdecomp.symbols import sin_jtheta
+    from tests.test_mutations import scheme
+
+    assert MIRROR_SYMMETRIC.unmet(catmull_clark()) is None and WHOLE_MESH.unmet(catmull_clark()) is None
+    reason = MIRROR_SYMMETRIC.unmet(scheme("asymmetric"))
+    assert any(isinstance(p, sp.Basic) and p.has(sin_jtheta) for p in reason.parts)
+    assert "whole meshes" in WHOLE_MESH.unmet(scheme("moved"))
+    declared = {c.label for c in all_claims() if MIRROR_SYMMETRIC in c.requires}
+    assert {"Proposition 5.1", "Remark 5.1", "Section 5.3: construction"} <= declared
+    for label in declared:
+        assert check_claim(label, scheme("asymmetric")).evidence == reason
+
+
+def test_claims_that_compute_with_numbers_are_not_applicable_to_a_scheme_with_free_parameters():
+    from symdecomp.claims.applicability import NO_FREE_PARAMETERS
+    from symdecomp.schemes.scheme import catmull_clark
+    from symdecomp.symbols import alpha, beta
+
+    free = catmull_clark(alpha, beta)
+    reason = f"the scheme {free.name!r} has free parameters alpha, beta; give them values first"
+    assert NO_FREE_PARAMETERS.unmet(free) == reason and NO_FREE_PARAMETERS.unmet(catmull_clark()) is None
+    # "Section 5.3: construction" raised inside its check (status error) before it declared the requirement
+    for label in ("C1 (Reif's test)", "Section 5.3: construction", "1-ring suffices (after Eq. 51)", "Larger neighbourhoods (after Eq. 51)"):
+        result = check_claim(label, free)
+        assert (result.status, str(result.evidence)) == (Status.NOT_APPLICABLE, reason), label

@@ -57,3 +57,60 @@ def test_the_layer_check_can_fail(tmp_path):
     bad.write_text("from symdecomp.analysis.spectrum import Spectrum\n")
     assert list(_imports(bad)) == [(1, "symdecomp.analysis.spectrum")]
     assert _layer("symdecomp.analysis.spectrum") > _layer("symdecomp.algebra.bad")
+
+
+def _module_map(doc: str) -> list[str]:
+    """The modules the map in a package docstring names: the table's first column names a top-level module or a
+    folder (``name/``); a folder's row names its modules, relative to it, as ``double-quoted literals``."""
+    import re
+
+    lines = doc.splitlines()
+    borders = [i for i, line in enumerate(lines) if re.fullmatch(r"=+ +=+", line)]
+    assert len(borders) == 2, "the map is one table without a header"
+    width = lines[borders[0]].index(" ")
+    named, folder = [], None
+    for line in lines[borders[0] + 1 : borders[1]]:
+        head, text = line[:width].strip(), line[width:]
+        if head:
+            (first,) = re.findall(r"``([^`]+)``", head)
+            folder = first.rstrip("/").replace("/", ".") if first.endswith("/") else None
+            named.append(first.rstrip("/"))
+        inside = re.findall(r"``([^`]+)``", text)
+        assert folder is not None or not inside, f"a top-level module's row names modules: {inside}"
+        named += [f"{folder}.{name}" for name in inside]
+    return named
+
+
+def _package_modules() -> set[str]:
+    import pkgutil
+
+    import symdecomp
+
+    return {m.name.removeprefix("symdecomp.") for m in pkgutil.walk_packages(symdecomp.__path__, "symdecomp.")}
+
+
+def test_the_module_map_names_every_module_once_and_nothing_else():
+    import symdecomp
+
+    named = _module_map(symdecomp.__doc__)
+    assert sorted(n for n in set(named) if named.count(n) > 1) == []
+    assert sorted(_package_modules() - set(named)) == [], "modules missing from the map in symdecomp/__init__.py"
+    assert sorted(set(named) - _package_modules()) == [], "the map names modules that do not exist"
+
+
+def test_the_module_map_check_can_fail():
+    doc = "x\n\n========  ====\n``a``     one\n``b/``    ``c``, ``d``\n          and ``e``\n========  ====\n"
+    assert _module_map(doc) == ["a", "b", "b.c", "b.d", "b.e"]
+    with pytest.raises(AssertionError, match="top-level"):
+        _module_map("========  ====\n``a``     ``x``\n========  ====\n")
+
+
+def test_the_subpackages_point_to_the_one_map():
+    """One map, not partial copies: a subpackage's docstring names none of its modules as a list and points to the root map."""
+    import importlib
+    import re
+
+    for name in sorted(n for n in _package_modules() if (PACKAGE / n.replace(".", "/") / "__init__.py").exists()):
+        doc = importlib.import_module(f"symdecomp.{name}").__doc__ or ""
+        assert "module map" in doc and ":mod:`symdecomp`" in doc, name
+        assert not re.search(r":mod:`\.\w", doc), f"symdecomp.{name} lists its modules again"

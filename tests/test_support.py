@@ -119,3 +119,16 @@ def test_unrefined_cube_opposite_corner_is_inside_but_phi_vanishes_there():
         limits = {v: sum(w * x[0] for w, x in zip(_mask_fractions(cc, mesh.valence(v)), mesh.one_ring_values(v))) for v in near}
         assert [v for v, x in limits.items() if x == 0] == [q]
         assert all(x > 0 for v, x in limits.items() if v != q)
+
+
+def test_an_asymmetric_support_relation_is_refuted_with_the_pair_both_ways(monkeypatch):
+    from symdecomp.claims import Status, s3_support
+
+    rel = {(p, q): Region.INSIDE for p in "PQ" for q in "PQ"}
+    rel["Q", "P"] = Region.OUTSIDE  # P is outside the support of Q, Q inside that of P
+    monkeypatch.setattr(s3_support, "support_relation", lambda mesh, scheme, verts: rel)
+    _, refuted = s3_support._relation_or_refutation(None, None, "PQ", "at valence 5", "n = 5", str.lower)
+    assert refuted.status is Status.REFUTED and refuted.evidence == "asymmetric pair at valence 5"
+    assert refuted.counterexample == "n = 5: vertex q is inside for the support of p, but p is outside for the support of q"
+    rel["Q", "P"] = Region.INSIDE
+    assert s3_support._relation_or_refutation(None, None, "PQ", "", "")[1] is None

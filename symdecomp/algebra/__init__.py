@@ -1,7 +1,4 @@
 """Exact algebra with no knowledge of subdivision schemes.
 
-Circulant matrices and the Fourier matrix (:mod:`.circulant`), matrices of circulant blocks
-(:mod:`.cbmatrix`), cyclotomic fields (:mod:`.cyclotomic`), the polygonal decomposition of
-Section 2 (:mod:`.polygons`), and fast exact or interval evaluation of sympy expressions
-(:mod:`.compile`).
+The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """

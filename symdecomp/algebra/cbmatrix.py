@@ -37,13 +37,12 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp.algebra.circulant import _offsets, _sequence, circ, coefficient, fourier_matrix, fourier_row, generating_polynomial
-from symdecomp.errors import FrequencyOutOfRangeError, InvalidExpressionError, InvalidInputError, InvalidTypeError
+from symdecomp.errors import FrequencyOutOfRangeError, InvalidExpressionError, InvalidTypeError, NotCirculantBlockError
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_int, check_valence
 
 __all__ = [
-    "NotCirculantBlockError",
     "CBMatrix",
     "cb_matrix",
     "cb_matrix_from",
@@ -57,10 +56,6 @@ __all__ = [
     "SymbolicCirculant",
     "SymbolicCBMatrix",
 ]
-
-
-class NotCirculantBlockError(InvalidInputError):
-    """A block of a matrix meant to be a CB-matrix is not circulant (or has the wrong size)."""
 
 
 def _cb(cb) -> CBMatrix:

@@ -7,19 +7,17 @@ so each evaluation does no symbolic work.
 
 from __future__ import annotations
 
+import functools
+import operator
 from collections.abc import Callable
 
 import flint
 import mpmath
 import sympy as sp
 
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import UnsupportedExpressionError
 
 __all__ = ["compile_expression", "UnsupportedExpressionError"]
-
-
-class UnsupportedExpressionError(InvalidInputError):
-    """A closed form uses a function the fast evaluators do not know."""
 
 
 _MP_OPS = {
@@ -36,18 +34,9 @@ _MP_OPS = {
 }
 
 
-def _acb_sum(xs):
-    total = flint.acb(0)
-    for x in xs:
-        total += x
-    return total
-
-
-def _acb_prod(xs):
-    total = flint.acb(1)
-    for x in xs:
-        total *= x
-    return total
+def _product(one):
+    """The product of a list, starting from ``one`` (the unit of the number type: FLINT has no ``math.prod``)."""
+    return lambda xs: functools.reduce(operator.mul, xs, one)
 
 
 def _exact_only(name):
@@ -57,17 +46,10 @@ def _exact_only(name):
     return fail
 
 
-def _fmpq_prod(xs):
-    total = flint.fmpq(1)
-    for x in xs:
-        total *= x
-    return total
-
-
 _FMPQ_OPS = {
     "const": lambda p, q: flint.fmpq(p, q),
     "add": lambda xs: sum(xs, flint.fmpq(0)),
-    "mul": _fmpq_prod,
+    "mul": _product(flint.fmpq(1)),
     "sqrt": _exact_only("sqrt"),
     "abs": lambda x: abs(x),
     "pow": lambda x, e: x**e,
@@ -80,8 +62,8 @@ _FMPQ_OPS = {
 
 _ARB_OPS = {
     "const": lambda p, q: flint.acb(flint.fmpq(p, q)),
-    "add": _acb_sum,
-    "mul": _acb_prod,
+    "add": lambda xs: sum(xs, flint.acb(0)),
+    "mul": _product(flint.acb(1)),
     "sqrt": lambda x: flint.acb(x).sqrt(),
     "abs": lambda x: flint.acb(abs(flint.acb(x))),
     "pow": lambda x, e: flint.acb(x) ** e,

@@ -23,6 +23,7 @@ import flint
 import mpmath
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_fmpq, to_fraction
 from symdecomp.errors import InvalidInputError, InvalidTypeError
 
 __all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "matrix_rank", "to_acb"]
@@ -53,14 +54,14 @@ class CyclotomicField:
         if isinstance(value, Cyclotomic):
             return value
         if isinstance(value, (int, Fraction)):
-            return Cyclotomic(self, flint.fmpq_poly([flint.fmpq(Fraction(value).numerator, Fraction(value).denominator)]))
+            return Cyclotomic(self, flint.fmpq_poly([to_fmpq(value)]))
         v = sp.sympify(value, strict=True)
         re, im = v.as_real_imag()
         if not (re.is_Rational and im.is_Rational):
             raise InvalidTypeError(f"{value!r} is not a (Gaussian) rational number")
-        out = self(Fraction(int(re.p), int(re.q)))
+        out = self(to_fraction(re))
         if im != 0:
-            out = out + self.i * self(Fraction(int(im.p), int(im.q)))
+            out = out + self.i * self(to_fraction(im))
         return out
 
     def zeta(self, k: int = 1) -> Cyclotomic:
@@ -233,7 +234,7 @@ def _walk(e: sp.Expr, K: CyclotomicField, leaves: dict) -> Cyclotomic:
     if e in leaves:
         return leaves[e]
     if e.is_Rational:
-        return K(Fraction(int(e.p), int(e.q)))
+        return K(to_fraction(e))
     if e is sp.I:
         return K.i
     if isinstance(e, sp.Add):

@@ -36,6 +36,7 @@ import numpy as np
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField
+from symdecomp.algebra.numbers import to_sympy
 from symdecomp.errors import FrequencyOutOfRangeError, InvalidPolygonError
 
 __all__ = [
@@ -112,7 +113,7 @@ def _coordinate(x, kind: str, dim: int, where: str):
                 f"{where} has coordinate {x!r}, which is not a (Gaussian) rational; "
                 "use floats (numpy) or mpmath numbers for other values"
             )
-        v = sp.sympify(x, strict=True) if not isinstance(x, Fraction) else sp.Rational(x.numerator, x.denominator)
+        v = sp.sympify(x, strict=True) if not isinstance(x, Fraction) else to_sympy(x)
         if dim == 3 and not v.is_real:
             raise InvalidPolygonError(not_real)
         return v

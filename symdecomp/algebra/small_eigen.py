@@ -16,34 +16,18 @@ from fractions import Fraction
 
 import flint
 
-from symdecomp.errors import InvalidInputError
+from symdecomp.algebra.numbers import to_arb, to_fmpq, to_fraction
+from symdecomp.errors import NotDiagonalizableError
 
-__all__ = ["NotDiagonalizableError", "NeedPrecision", "rational_eigen", "nullspace", "biorthogonal", "fmpq_value", "arb_value"]
+__all__ = ["NotDiagonalizableError", "NeedPrecision", "rational_eigen", "nullspace", "biorthogonal"]
 
 arb = flint.arb
 
 
-class NotDiagonalizableError(InvalidInputError):
-    """A matrix has no basis of (real) eigenvectors."""
-
-
+# Private control flow, not an error of the package: the eigen-data builders catch it and retry at a
+# higher precision (an exhausted cap becomes symdecomp.errors.PrecisionError).
 class NeedPrecision(Exception):
     """A ball was too wide to decide a sign at the working precision (raise it and retry)."""
-
-
-def fmpq_value(x) -> flint.fmpq:
-    if not isinstance(x, Fraction):
-        x = Fraction(x)
-    return flint.fmpq(x.numerator, x.denominator)
-
-
-def arb_value(x) -> arb:
-    """An Arb ball of a rational (exact when dyadic), or an Arb number itself."""
-    if isinstance(x, arb):
-        return x
-    if not isinstance(x, Fraction):
-        x = Fraction(x)
-    return arb(x.numerator) / x.denominator
 
 
 def rational_eigen(m: list[list[Fraction]]):
@@ -53,12 +37,12 @@ def rational_eigen(m: list[list[Fraction]]):
     Raises :class:`NotDiagonalizableError` if a null space is smaller than the multiplicity.
     """
     size = len(m)
-    mat = flint.fmpq_mat(size, size, [fmpq_value(x) for row in m for x in row])
+    mat = flint.fmpq_mat(size, size, [to_fmpq(x) for row in m for x in row])
     _, factors = mat.charpoly().factor()
     out = []
     for poly, mult in factors:
         if poly.degree() == 1:
-            lam = Fraction(int(-poly[0].p) * int(poly[1].q), int(poly[0].q) * int(poly[1].p))
+            lam = -to_fraction(poly[0]) / to_fraction(poly[1])
             shifted = [[m[i][j] - (lam if i == j else 0) for j in range(size)] for i in range(size)]
             right, left = nullspace(shifted), nullspace([list(r) for r in zip(*shifted)])
             if len(right) != mult:
@@ -71,14 +55,14 @@ def rational_eigen(m: list[list[Fraction]]):
             if not root.imag.contains(0):
                 raise NotDiagonalizableError(f"complex eigenvalue {root}: the data file holds real eigenvalues only")
             lam = root.real
-            shifted = [[arb_value(m[i][j]) - (lam if i == j else 0) for j in range(size)] for i in range(size)]
+            shifted = [[to_arb(m[i][j]) - (lam if i == j else 0) for j in range(size)] for i in range(size)]
             out.append((lam, [_adjugate_null(shifted)], [_adjugate_null([list(r) for r in zip(*shifted)])]))
     return out
 
 
 def nullspace(m: list[list[Fraction]]) -> list[list[Fraction]]:
     rows, cols = len(m), len(m[0])
-    r, rank = flint.fmpq_mat(rows, cols, [fmpq_value(x) for row in m for x in row]).rref()
+    r, rank = flint.fmpq_mat(rows, cols, [to_fmpq(x) for row in m for x in row]).rref()
     pivots, basis = [], []
     for i in range(rank):
         pivots.append(next(j for j in range(cols) if r[i, j] != 0))
@@ -86,7 +70,7 @@ def nullspace(m: list[list[Fraction]]) -> list[list[Fraction]]:
         v = [Fraction(0)] * cols
         v[free] = Fraction(1)
         for i, p in enumerate(pivots):
-            v[p] = -Fraction(int(r[i, free].p), int(r[i, free].q))
+            v[p] = -to_fraction(r[i, free])
         basis.append(v)
     return basis
 
@@ -116,7 +100,7 @@ def biorthogonal(right: list, left: list, scale) -> list:
         if isinstance(dot, arb) and dot.contains(0):
             raise NeedPrecision
         return [[y / dot for y in left[0]]]
-    gram = flint.fmpq_mat(len(left), len(right), [fmpq_value(sum(a * b for a, b in zip(l_, r)) * scale) for l_ in left for r in right])
+    gram = flint.fmpq_mat(len(left), len(right), [to_fmpq(sum(a * b for a, b in zip(l_, r)) * scale) for l_ in left for r in right])
     g = gram.inv()
-    coeff = [[Fraction(int(g[i, k].p), int(g[i, k].q)) for k in range(len(left))] for i in range(len(left))]
+    coeff = [[to_fraction(g[i, k]) for k in range(len(left))] for i in range(len(left))]
     return [[sum((coeff[i][k] * left[k][c] for k in range(len(left))), Fraction(0)) for c in range(len(left[0]))] for i in range(len(left))]

@@ -56,8 +56,9 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.ring_blocks import ring_blocks
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import Scheme, catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
@@ -134,11 +135,6 @@ def triangle_patch_points(corners) -> tuple[tuple[int, int], ...]:
     return tuple(sorted(points))
 
 
-def _q(x) -> flint.fmpq:
-    x = sp.Rational(x)
-    return flint.fmpq(int(x.p), int(x.q))
-
-
 @dataclass(frozen=True)
 class RingLayout:
     """The regular part of the ring on one mesh type: its spline, classes and block rows."""
@@ -168,7 +164,7 @@ def ring_layout(mesh: str) -> RingLayout:
     for p in range(len(classes)):
         if any(blocks.offsets[p][q] for q in range(two, len(classes))):  # pragma: no cover - a property of the rules
             raise InvalidSchemeError(f"level-1 point {classes[p]} reads beyond the level-0 2-ring")
-        offsets.append(tuple(tuple((l, _q(c)) for l, c in blocks.offsets[p][q]) for q in range(two)))
+        offsets.append(tuple(tuple((l, to_fmpq(c)) for l, c in blocks.offsets[p][q]) for q in range(two)))
     spline = "quartic box-spline" if triangle else "bicubic B-spline"
     return RingLayout(mesh, "Loop" if triangle else "Catmull-Clark", spline, classes, one, two, tuple(offsets))
 
@@ -183,7 +179,7 @@ def check_applicable(scheme: Scheme) -> None:
     all its rules at the regular valence, the vertex rule included, are Catmull-Clark's or Loop's.
     """
     if scheme.parameters:
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"scheme {scheme.name!r} has free parameters {', '.join(map(str, scheme.parameters))}; give them values first"
         )
     triangle = scheme.mesh == "triangle"
@@ -191,11 +187,11 @@ def check_applicable(scheme: Scheme) -> None:
     try:
         ours, theirs = subdivision_matrix(scheme, regular), subdivision_matrix(reference, regular)
     except InvalidSchemeError as exc:
-        raise InvalidSchemeError(f"scheme {scheme.name!r}: the C1 test does not apply ({exc})") from None
+        raise NotApplicableError(f"scheme {scheme.name!r}: the C1 test does not apply ({exc})") from None
     if ours[1:, :] != theirs[1:, :]:
         layout = ring_layout(scheme.mesh)
         rules = "edge rule" if triangle else "edge and face rules"
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} {'is' if triangle else 'are'} not "
             f"{layout.reference}'s, so its regular patches are not {layout.spline}s (the only regular splines it knows)"
         )
@@ -203,7 +199,7 @@ def check_applicable(scheme: Scheme) -> None:
         layout = ring_layout(scheme.mesh)
         mine = tuple(ours[0, k] for k in (0, 1, 1 + regular) if k < ours.cols)
         standard = tuple(theirs[0, k] for k in (0, 1, 1 + regular) if k < theirs.cols)
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"the C1 test does not apply to scheme {scheme.name!r}: its vertex rule at the regular valence {regular} has the "
             f"weights {mine} (centre, each neighbour{'' if triangle else ', each face neighbour'}), not {layout.reference}'s "
             f"{standard}; every regular vertex of the mesh uses it, so its regular patches are not {layout.spline}s "
@@ -218,12 +214,11 @@ def omega_ball(n: int, j: int) -> flint.acb:
 
 def _ball(w) -> flint.acb:
     if isinstance(w, (Fraction, int)):
-        w = Fraction(w)
-        return flint.acb(flint.fmpq(w.numerator, w.denominator))
+        return flint.acb(to_fmpq(w))
     w = sp.sympify(w, strict=True)
     if not w.is_Rational:
         raise InvalidSchemeError(f"weight {w} is not an exact rational at this valence")
-    return flint.acb(flint.fmpq(int(w.p), int(w.q)))
+    return flint.acb(to_fmpq(w))
 
 
 def one_ring_rows(scheme: Scheme, n: int) -> list[dict]:

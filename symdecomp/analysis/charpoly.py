@@ -39,9 +39,10 @@ from functools import cache
 import flint
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
-from symdecomp.errors import InternalError, InvalidInputError, InvalidSchemeError
+from symdecomp.errors import InternalError, InvalidInputError, NotApplicableError
 from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme
 from symdecomp.symbols import lam as LAM
@@ -134,7 +135,7 @@ def to_fmpq_poly(expr, variable: sp.Symbol = LAM) -> flint.fmpq_poly:
     for c in reversed(poly.all_coeffs()):
         if not c.is_Rational:
             raise InvalidInputError(f"coefficient {c} of {expr} is not rational")
-        coeffs.append(flint.fmpq(int(c.p), int(c.q)))
+        coeffs.append(to_fmpq(c))
     return flint.fmpq_poly(coeffs)
 
 
@@ -161,7 +162,7 @@ def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
         shifted = None
     if shifted is None or shifted.degree() > 2:
         det_M = sp.Function("det")(x * sp.Symbol("I", commutative=False) - sp.Function("M")(OMEGA))
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"det(xI - M(omega)) = {q} is not of Laurent degree 1 in omega; the closed form of Eq. 51 needs the narrow shape (offsets -1..1)",
             parts=(sp.Eq(det_M, q, evaluate=False), " is not of Laurent degree 1 in ", OMEGA,
                    "; the closed form of Eq. 51 needs the narrow shape (offsets -1..1)"),
@@ -212,10 +213,10 @@ def verify_closed_form(scheme: Scheme, n: int) -> bool:
     for rule in (scheme.edge_rule, scheme.face_rule):
         weights = [rule.center] + [w for _, w in rule.a + rule.b]
         if any(w.free_symbols & set(params) for w in weights):
-            raise InvalidSchemeError("parameters outside the vertex rule: the exact check covers only vertex-rule weights")
+            raise NotApplicableError("parameters outside the vertex rule: the exact check covers only vertex-rule weights")
     v = scheme.vertex_rule
     cf = closed_form_characteristic_polynomial(scheme)
     if not all(_affine_in(w, params) for w in (v.center, v.each_a, v.each_b, cf.zero_frequency_factor)):
-        raise InvalidSchemeError("the vertex-rule weights do not enter affinely; a finite exact check is not a proof")
+        raise NotApplicableError("the vertex-rule weights do not enter affinely; a finite exact check is not a proof")
     points = [{p: 0 for p in params}] + [{p: (1 if p == q else 0) for p in params} for q in params]
     return all(cf.at(n, pt) == characteristic_polynomial(scheme, n, pt) for pt in points)

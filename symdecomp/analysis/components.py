@@ -31,7 +31,7 @@ import mpmath
 import sympy as sp
 
 from symdecomp.analysis.frequency import per_frequency_matrix
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -63,7 +63,7 @@ def root_of_unity_orders(expr: sp.Expr) -> tuple[int, ...] | None:
     if poly.is_zero:
         return None
     if not all(c.is_Rational for c in poly.all_coeffs()):
-        raise InvalidSchemeError("the condition has coefficients that are not rational numbers (weights depending on n or on parameters)")
+        raise NotApplicableError("the condition has coefficients that are not rational numbers (weights depending on n or on parameters)")
     orders = set()
     for factor, _ in sp.factor_list(poly.as_expr(), ZETA)[1]:
         d = sp.degree(factor, ZETA)

@@ -22,7 +22,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.analysis.frequency import recursion_matrix
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.validate import check_valence
@@ -40,7 +40,7 @@ def jordan_vertex_weights(scheme: Scheme, n: int, eigenvalue) -> dict:
     mu = sp.sympify(eigenvalue, strict=True)
     params = tuple(scheme.parameters)
     if len(params) != 2:
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"scheme {scheme.name!r} has free parameters {[str(p) for p in params]}; need exactly two (e.g. alpha, beta)"
         )
     A = recursion_matrix(scheme, n)

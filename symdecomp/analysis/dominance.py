@@ -44,6 +44,8 @@ class TailBound:
     facts: tuple[sp.Expr, ...]
 
 
+# Private control flow, not an error of the package: stops the search for an eventual sign and is
+# caught inside this module.
 class _Undecided(Exception):
     pass
 

@@ -42,15 +42,13 @@ from fractions import Fraction
 import flint
 import numpy as np
 
+from symdecomp.algebra.numbers import to_arb, to_fmpq, to_fraction
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
-from symdecomp.algebra.small_eigen import NotDiagonalizableError
-from symdecomp.algebra.small_eigen import arb_value as _arb
-from symdecomp.algebra.small_eigen import fmpq_value as _fq
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.analysis.quad_eigendata import LazyTable, circulant_weights, column_group, quad_ring_columns, trig_table
 from symdecomp.analysis.triangle_eigendata import triangle_ring_columns
-from symdecomp.errors import InternalError
+from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
@@ -67,10 +65,6 @@ __all__ = [
 ]
 
 arb, acb = flint.arb, flint.acb
-
-
-class PrecisionError(InternalError):
-    """A ball stayed too wide to decide a sign or round correctly, up to the precision cap."""
 
 
 @dataclass(frozen=True)
@@ -107,10 +101,6 @@ class RoundedEigenData:
 # assembly
 
 
-def _fraction(x: flint.fmpq) -> Fraction:
-    return Fraction(int(x.p), int(x.q))
-
-
 _REGULAR: dict = {}
 
 
@@ -134,7 +124,7 @@ def _regular_part_of(p: PatchMatrices):
         for z in right:
             nus.append(lam)
             columns.append(z)
-    w = flint.fmpq_mat(r, r, [_fq(columns[c][i]) for i in range(r) for c in range(r)])
+    w = flint.fmpq_mat(r, r, [to_fmpq(columns[c][i]) for i in range(r) for c in range(r)])
     return nus, w, w.inv()
 
 
@@ -167,7 +157,7 @@ def _eigendata(p: PatchMatrices, prec: int) -> PatchEigenData:
     zeros = [arb(0)] * r
     vec_rows = [row + zeros for row in right_rows] + [v1[i] + wa[i] for i in range(r)]
     inv_rows = [col.left + zeros for col in cols] + [lower[i] + wia[i] for i in range(r)]
-    values = tuple(col.value for col in cols) + tuple(_arb(nu) for nu in nus)
+    values = tuple(col.value for col in cols) + tuple(to_arb(nu) for nu in nus)
     # rows of the refined points beyond the K control points: sparse rows times V
     beyond = [_sparse_times(p.sparse[i], vec_rows, size) for i in range(size, len(p.sparse))]
     phi = []
@@ -197,7 +187,7 @@ def _ring_columns(p: PatchMatrices, prec: int) -> list:
 def _sparse_times(row: dict, rows: list, size: int) -> list:
     out = [arb(0)] * size
     for c, x in row.items():
-        w = _arb(x)
+        w = to_arb(x)
         out = [o + w * y for o, y in zip(out, rows[c])]
     return out
 
@@ -209,9 +199,9 @@ def _g_rows(p: PatchMatrices, winv) -> list[dict]:
     for i in range(r):
         for c, x in p.sparse[k0 + i].items():
             if c < k0:
-                s11[i, c] = _fq(x)
+                s11[i, c] = to_fmpq(x)
     g_exact = winv * s11
-    return [{c: _fraction(g_exact[i, c]) for c in range(k0) if g_exact[i, c] != 0} for i in range(r)]
+    return [{c: to_fraction(g_exact[i, c]) for c in range(k0) if g_exact[i, c] != 0} for i in range(r)]
 
 
 def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[list, list]:
@@ -225,7 +215,7 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
         coeff = _sparse_times(g_rows[r], right_rows, k0)
         row = []
         for c, col in enumerate(cols):
-            gap = col.value - _arb(nu)
+            gap = col.value - to_arb(nu)
             if not gap.contains(0):
                 row.append(coeff[c] / gap)
                 continue
@@ -294,16 +284,16 @@ def _sharpen_lower_block(p: PatchMatrices, data: PatchEigenData, entries) -> Non
     S = flint.fmpq_mat(k0, k0)
     for i in range(k0):
         for c, x in p.sparse[i].items():
-            S[i, c] = _fq(x)
+            S[i, c] = to_fmpq(x)
     for r in sorted({i - k0 for i, _ in bad}):
         g = flint.fmpq_mat(k0, 1)
         for i in range(size - k0):
             for c, x in p.sparse[k0 + i].items():
                 if c < k0:
-                    g[c, 0] -= winv[r, i] * _fq(x)
+                    g[c, 0] -= winv[r, i] * to_fmpq(x)
         M = S.transpose()
         for i in range(k0):
-            M[i, i] -= _fq(nus[r])
+            M[i, i] -= to_fmpq(nus[r])
         try:
             y = M.solve(g)
         except ZeroDivisionError:  # nu_r is an eigenvalue of S: leave it to the working precision
@@ -341,8 +331,8 @@ def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: i
             col = cols[off]
             d = []
             for r, nu in enumerate(nus):
-                gap = col.value - _arb(nu)
-                coeff = sum((_arb(x) * col.right[c] for c, x in g_rows[r].items()), arb(0))
+                gap = col.value - to_arb(nu)
+                coeff = sum((to_arb(x) * col.right[c] for c, x in g_rows[r].items()), arb(0))
                 if not gap.contains(0):
                     d.append(coeff / gap)
                 elif col.exact_check is not None and col.exact_check(nu, g_rows[r]):
@@ -354,7 +344,7 @@ def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: i
                 idx = p.subpatches[k][l]
                 if i2 != i:
                     continue
-                val = col.value * vcol[idx] if idx < size else sum((_arb(x) * vcol[c] for c, x in p.sparse[idx].items()), arb(0))
+                val = col.value * vcol[idx] if idx < size else sum((to_arb(x) * vcol[c] for c, x in p.sparse[idx].items()), arb(0))
                 if not (val.contains(0) and abs(val) < tiny):
                     return
                 data.phi[k][i, l] = arb(0)

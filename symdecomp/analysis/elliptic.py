@@ -37,7 +37,7 @@ from symdecomp.algebra.valence_signs import integer_zeros
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, cos_theta, sin_jtheta
 from symdecomp.symbols import n as N
@@ -101,7 +101,7 @@ def eq44_ratio(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Expr:
 def _symmetric_in_cos(expr, what):
     value = laurent_to_cos(expr)
     if value.has(sin_jtheta):
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"{what} is not symmetric in omega <-> 1/omega; the scheme is not mirror symmetric",
             parts=(what, " is not symmetric under ", OMEGA, " -> ", 1 / OMEGA, "; the scheme is not mirror symmetric"),
         )
@@ -227,7 +227,7 @@ def elliptic_defect_table(scheme: Scheme, valences, *, digits: int = 20) -> tupl
     ['-0.00151292', '0.0', '0.0199873']
     """
     if scheme.parameters:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
+        raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
     digits = check_digits(digits)
     valences = [check_valence(n) for n in valences]
     cond = nice_elliptic_conditions(scheme)

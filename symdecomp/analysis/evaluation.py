@@ -44,16 +44,12 @@ import sympy as sp
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch_eigendata
 from symdecomp.analysis.masks import INDEX, LAMBDA1, limit_masks
 from symdecomp.analysis.triangle_evaluation import box_basis, check_regular_patch, eigen_masks, locate_triangle
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import EvaluationError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
 __all__ = ["EvaluationError", "PatchEvaluator", "bspline_basis", "patch_order", "patch_masks", "curvatures"]
-
-
-class EvaluationError(InvalidInputError):
-    """Parameters outside ``[0, 1]^2`` or control points of the wrong shape."""
 
 
 #: Output key -> order of the derivative in (u, v).

@@ -24,7 +24,7 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import fourier_row
 from symdecomp.algebra.polygons import decompose
-from symdecomp.errors import InvalidInputError, InvalidPolygonError, InvalidSchemeError
+from symdecomp.errors import InvalidInputError, InvalidPolygonError, NotApplicableError
 from symdecomp.schemes.ring import interleaved_polygon
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.validate import check_valence
@@ -103,7 +103,7 @@ def split_ring(ring) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 def subdivision_matrix_numeric(scheme: Scheme, n: int) -> np.ndarray:
     """The exact subdivision matrix of ``scheme`` at valence ``n``, rounded once to double precision."""
     if scheme.parameters:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {list(map(str, scheme.parameters))}; substitute them first")
+        raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {list(map(str, scheme.parameters))}; substitute them first")
     return np.array(subdivision_matrix(scheme, check_valence(n)).evalf(20), dtype=float)
 
 

@@ -20,13 +20,13 @@ subdivision matrix in ``Q(zeta_4n)`` and compares with the prediction from ``M_1
 from __future__ import annotations
 
 from dataclasses import dataclass
-from fractions import Fraction
 from functools import cache
 
 import mpmath
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.algebra.numbers import to_fraction
 from symdecomp.analysis.elliptic import tangent_lambda
 from symdecomp.analysis.frequency import per_frequency_matrix, valences_at_roots
 from symdecomp.analysis.tangent import tangent_eigenvalues
@@ -144,7 +144,7 @@ def apply_rational_matrix(matrix: sp.MatrixBase, vector: list) -> list:
         for s_ in range(cols):
             w = matrix[r, s_]
             if w != 0:
-                term = vector[s_] * Fraction(int(w.p), int(w.q))
+                term = vector[s_] * to_fraction(w)
                 acc = term if acc is None else acc + term
         out.append(acc if acc is not None else vector[0] * 0)
     return out

@@ -152,8 +152,9 @@ class MasksAtValence:
     def _tangent_texts(self, digits: int, num) -> list[dict]:
         """The tangent masks as text, from Arb balls of the closed forms; an entry whose ball
         contains 0 is printed from its exact value (it may be exactly 0)."""
-        from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
+        from symdecomp.algebra.compile import compile_expression
         from symdecomp.analysis.ring_spectrum import acb_text
+        from symdecomp.errors import UnsupportedExpressionError
 
         n, cf = self.n, self.closed_forms
         try:

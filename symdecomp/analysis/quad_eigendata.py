@@ -14,11 +14,11 @@ from fractions import Fraction
 import flint
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.algebra.numbers import to_arb, to_fmpq
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
-from symdecomp.algebra.small_eigen import NotDiagonalizableError
-from symdecomp.algebra.small_eigen import arb_value as _arb
 from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
+from symdecomp.errors import NotDiagonalizableError
 from symdecomp.schemes.patch import PatchMatrices
 
 __all__ = ["quad_ring_columns", "column_group", "LazyTable", "trig_table", "circulant_weights"]
@@ -43,8 +43,8 @@ def _trig_pi(m: int, den: int, fn: str) -> arb:
         m, den = 2 * m - den, 2 * den  # sin(pi m/den) = cos(pi (m/den - 1/2))
     q = Fraction(m % (2 * den), den)
     if q in _EXACT_COS:
-        return _arb(_EXACT_COS[q])
-    return arb.cos_pi_fmpq(flint.fmpq(q.numerator, q.denominator))
+        return to_arb(_EXACT_COS[q])
+    return arb.cos_pi_fmpq(to_fmpq(q))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -142,7 +142,7 @@ def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> list:
 
 def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
     """The four eigenvectors of ``S`` at frequencies ``j`` and ``n - j`` (``0 < j < n/2``)."""
-    b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: table[(2 * m) % (4 * n)], _arb)
+    b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: table[(2 * m) % (4 * n)], to_arb)
     t, d = b_ee + b_ff, b_ee * b_ff - b_ef * b_fe
     disc = t * t - 4 * d
     if disc < 0:
@@ -204,7 +204,7 @@ def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
             check = None
             if exact is not None:
                 check = lambda nu, g, lam=lam, r=full_r: None if nu != lam else sum(x * r[c] for c, x in g.items() if c < len(r)) == 0  # noqa: E731
-            cols.append(_Column(_arb(lam), [_arb(x) for x in full_r], [_arb(x) for x in full_l], exact, check))
+            cols.append(_Column(to_arb(lam), [to_arb(x) for x in full_r], [to_arb(x) for x in full_l], exact, check))
     return cols
 
 

@@ -26,22 +26,18 @@ Matrix([[omega/8 + 3/8 + 1/(8*omega)]])
 from __future__ import annotations
 
 from dataclasses import dataclass
-from fractions import Fraction
 from functools import lru_cache
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError, SymdecompError
+from symdecomp.algebra.numbers import to_sympy
+from symdecomp.errors import InvalidSchemeError, NotApplicableError, SymdecompError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, regular_valence, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
 __all__ = ["RingBlocks", "ring_blocks", "read_blocks"]
-
-
-def _q(x) -> sp.Expr:
-    return sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x, strict=True)
 
 
 @dataclass(frozen=True)
@@ -112,7 +108,7 @@ def read_blocks(S: RingMatrix, scheme: Scheme) -> RingBlocks:
     position = {r: i for i, r in enumerate(order)}
     rows = [dict() for _ in order]
     for r, row in enumerate(S.rows):
-        rows[position[r]] = {position[c]: _q(x) for c, x in row.items()}
+        rows[position[r]] = {position[c]: to_sympy(x) for c, x in row.items()}
 
     def uniform(values, what):
         values = set(values)
@@ -146,7 +142,7 @@ def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
     weights = lambda rule: (rule.center, *(x for _, x in rule.a + rule.b))  # noqa: E731
     dependent = [rule for rule in scheme.stencils() if any(sp.sympify(w, strict=True).has(N) for w in weights(rule))]
     if dependent:
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"scheme {scheme.name!r}: its {'edge' if dependent[0] is scheme.edge_rule else 'face'} rule depends on the valence n, "
             "so its circulant blocks change with n; the any-scheme analysis (triangle meshes, --rings) needs rules other than "
             "the centre's vertex rule to be independent of n"
@@ -163,7 +159,7 @@ def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
         refined = sp.zeros(S.size, S.size)
         for r, row in enumerate(S.rows):
             for c, x in row.items():
-                refined[r, c] = _q(x)
+                refined[r, c] = to_sympy(x)
         if refined.extract(order, order) != built:
             raise InvalidSchemeError(
                 f"scheme {scheme.name!r}: the {rings}-ring matrix at n = {n} is not the banded block form read at n = {n0}"

@@ -21,6 +21,7 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_spectrum import frequency_factors
 from symdecomp.schemes.full_matrix import entries_characteristic_polynomial
@@ -47,11 +48,6 @@ def product_form(scheme: Scheme, rings: int = 1) -> tuple[list[str], list[str], 
     return zero, other, formula
 
 
-def _fmpq(x) -> flint.fmpq:
-    x = sp.Rational(x)
-    return flint.fmpq(int(x.p), int(x.q))
-
-
 @lru_cache(maxsize=32)
 def _laurent_charpoly(blocks: RingBlocks) -> tuple[int, tuple[flint.fmpq_poly, ...]]:
     """``(m, (Q_0, Q_1, ...))`` with ``omega^m det(lambda I - E(omega)) = sum_i lambda^i Q_i(omega)``."""
@@ -63,7 +59,7 @@ def _laurent_charpoly(blocks: RingBlocks) -> tuple[int, tuple[flint.fmpq_poly, .
     degree = max(a for (a, _), _ in terms)
     polys = [dict() for _ in range(degree + 1)]
     for (a, b), c in terms:
-        polys[a][b - low] = _fmpq(c)
+        polys[a][b - low] = to_fmpq(c)
     return m, tuple(flint.fmpq_poly([p.get(j, 0) for j in range(max(p, default=0) + 1)]) for p in polys)
 
 
@@ -75,7 +71,7 @@ def frequency_product_values(blocks: RingBlocks, n: int, weights: dict, points) 
     m, Q = _laurent_charpoly(blocks)
     E0 = blocks.frequency_zero_matrix(n, symbolic_weights=True).xreplace(weights)
     f0 = sp.Poly((LAM * sp.eye(E0.shape[0]) - E0).det(method="berkowitz"), LAM)
-    zero = flint.fmpq_poly([_fmpq(c) for c in reversed(f0.all_coeffs())])
+    zero = flint.fmpq_poly([to_fmpq(c) for c in reversed(f0.all_coeffs())])
     cyclotomic = flint.fmpq_poly([1] * n)
     sign = -1 if (m * (n - 1)) % 2 else 1
     out = []

@@ -24,9 +24,10 @@ from functools import cache
 import mpmath
 import sympy as sp
 
-from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
+from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.errors import UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import parameter_values
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta

@@ -62,8 +62,9 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidInputError, InvalidSchemeError
-from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, mesh_rules, refine
+from symdecomp.algebra.numbers import to_fraction, to_sympy
+from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError, NotApplicableError
+from symdecomp.schemes.mesh import QuadMesh, mesh_rules, refine
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme"]
@@ -106,18 +107,18 @@ def check_positive_scheme(scheme: Scheme, valences: Iterable[int]) -> None:
     rules = mesh_rules(scheme)
     for label, w in (("face", rules.face_corner), ("edge end", rules.edge_end), ("edge side", rules.edge_side)):
         if not (w.is_number and w >= 0):
-            raise InvalidSchemeError(
+            raise NotApplicableError(
                 f"support classification needs nonnegative numeric rules; the {label} weight of {scheme.name!r} is {w}"
             )
     for m in sorted(set(valences)):
         for w in rules.vertex_weights(m):
             if not (w.is_number and w > 0):
-                raise InvalidSchemeError(
+                raise NotApplicableError(
                     f"support classification needs positive vertex-rule weights; {scheme.name!r} has {w} at valence {m}"
                 )
         for w in limit_mask(scheme, m):
             if not (w.is_number and w > 0):
-                raise InvalidSchemeError(
+                raise NotApplicableError(
                     f"support classification needs a positive limit mask; {scheme.name!r} has {w} at valence {m}"
                 )
 
@@ -191,13 +192,13 @@ def _region(carried: tuple[bool, ...]) -> Region:
 
 @cache
 def _mask_fractions(scheme: Scheme, valence: int) -> tuple[Fraction, ...]:
-    return tuple(Fraction(int(w.p), int(w.q)) for w in limit_mask(scheme, valence))
+    return tuple(to_fraction(w) for w in limit_mask(scheme, valence))
 
 
 def _limit_value(data: QuadMesh, q: int, scheme: Scheme) -> sp.Rational:
     ring = data.one_ring_values(q)
     value = sum((w * x[0] for w, x in zip(_mask_fractions(scheme, data.valence(q)), ring)), Fraction(0))
-    return sp.Rational(value.numerator, value.denominator)
+    return to_sympy(value)
 
 
 def support_relation(mesh: QuadMesh, scheme: Scheme, vertices: Iterable[int]) -> dict:

@@ -26,8 +26,9 @@ from fractions import Fraction
 import flint
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, to_acb
-from symdecomp.algebra.small_eigen import NeedPrecision, NotDiagonalizableError
-from symdecomp.algebra.small_eigen import arb_value as _arb
+from symdecomp.algebra.numbers import to_arb
+from symdecomp.algebra.small_eigen import NeedPrecision
+from symdecomp.errors import NotDiagonalizableError
 
 __all__ = ["triangle_ring_weights", "triangle_ring_columns"]
 
@@ -66,7 +67,7 @@ class _TriColumn:
 
 
 def _ball(x, prec: int) -> arb:
-    return to_acb(x, prec).real if isinstance(x, Cyclotomic) else _arb(x)
+    return to_acb(x, prec).real if isinstance(x, Cyclotomic) else to_arb(x)
 
 
 def _pick(pairs: list[list], zero) -> list:
@@ -135,7 +136,7 @@ def triangle_ring_columns(p, table: list, prec: int) -> list:
     w = triangle_ring_weights(p)
     cols = _frequency_zero(w, n, prec)
     for j in range(1, (n + 1) // 2):
-        lam = sum((_arb(x) * table[(4 * j * k) % (4 * n)] for k, x in w["ee"].items()), arb(0))
+        lam = sum((to_arb(x) * table[(4 * j * k) % (4 * n)] for k, x in w["ee"].items()), arb(0))
         check = _frequency_check(w, n, j)
         for shift in (0, -n):  # cos, then sin (= cos shifted by a quarter turn)
             pattern = [table[(4 * j * k + shift) % (4 * n)] for k in range(n)]
@@ -147,5 +148,5 @@ def triangle_ring_columns(p, table: list, prec: int) -> list:
             return None if nu != lam else sum((x * (-1) ** (c - 1) for c, x in g.items() if 1 <= c <= n), Fraction(0)) == 0
 
         sign = [arb((-1) ** k) for k in range(n)]
-        cols.append(_TriColumn(_arb(lam), [arb(0)] + sign, [arb(0)] + [x / n for x in sign], check))
+        cols.append(_TriColumn(to_arb(lam), [arb(0)] + sign, [arb(0)] + [x / n for x in sign], check))
     return cols

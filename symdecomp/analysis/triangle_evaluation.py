@@ -26,8 +26,9 @@ from functools import lru_cache
 import mpmath
 import numpy as np
 
+from symdecomp.algebra.numbers import to_mpf
 from symdecomp.algebra.triangle_bezier import bernstein, bezier_derivative
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.box_spline import DEGREE, regular_patch
 from symdecomp.schemes.scheme import Scheme
 
@@ -61,7 +62,7 @@ def _derivative_matrix(ds: int, dt: int, kind: str, prec: int):
     if kind == "float":
         return np.array([[x.numerator / x.denominator for x in row] for row in rows])
     with mpmath.workprec(prec):
-        return np.array([[mpmath.mpf(x.numerator) / x.denominator for x in row] for row in rows], dtype=object)
+        return np.array([[to_mpf(x) for x in row] for row in rows], dtype=object)
 
 
 def box_basis(s, t, ds: int, dt: int, conv) -> np.ndarray:
@@ -85,4 +86,4 @@ def eigen_masks(values, inverse, phi) -> tuple[np.ndarray, np.ndarray]:
 def check_regular_patch(scheme: Scheme) -> None:
     """Raise unless the scheme's regular patch is the one the evaluator uses (Loop's quartic box spline)."""
     if regular_patch(scheme).coefficients != regular_patch().coefficients:
-        raise InvalidSchemeError(f"scheme {scheme.name!r}: its regular patch is not Loop's box spline; the evaluator does not support it")
+        raise NotApplicableError(f"scheme {scheme.name!r}: its regular patch is not Loop's box spline; the evaluator does not support it")

@@ -33,7 +33,7 @@ import sympy as sp
 from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix, valences_at_roots
 from symdecomp.analysis.spectrum import format_value
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, VertexRule
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -247,7 +247,7 @@ def tune(scheme: Scheme, n: int) -> TuningAtValence:
     """Tune the vertex rule of ``scheme`` at valence ``n`` for each condition alone and for both."""
     n = check_valence(n)
     if scheme.parameters:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; tune a concrete scheme")
+        raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; tune a concrete scheme")
     cond = nice_elliptic_conditions(scheme)
     lam1 = cond.lambda1.subs(N, n)
     R = cond.scale_ratio_squared.subs(N, n)

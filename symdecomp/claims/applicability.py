@@ -1,29 +1,59 @@
-"""When a claim's closed forms cannot be evaluated for a scheme: the ``not applicable`` results.
+"""What the claims' derivations need of a scheme: the requirements a claim declares (``requires=``).
 
-Section 5 writes its closed forms in ``c = cos(j pi/n)``, which needs mirror-symmetric rules (the
-weight on ``a_{i+k}`` equal to that on ``a_{i-k}`` and so on, so that ``M_j`` depends on ``c``
-alone). For a scheme without that symmetry those claims are reported as not applicable, with the
-term that breaks it, instead of failing inside sympy.
+Each is a :class:`~symdecomp.claims.registry.Requirement`; the registry tests a claim's requirements
+before its check runs and reports ``not applicable``, with the reason, for a scheme that does not
+meet one (instead of failing inside sympy, or repeating the same guard in every check).
+
+* :data:`MIRROR_SYMMETRIC`: Section 5 writes its closed forms in ``c = cos(j pi/n)``, which needs
+  mirror-symmetric rules (the weight on ``a_{i+k}`` equal to that on ``a_{i-k}`` and so on, so that
+  ``M_j`` depends on ``c`` alone); the reason names the term that breaks it.
+* :data:`NO_FREE_PARAMETERS`: checks that compute with the scheme's numbers (exact matrices at a
+  valence, certified balls) need every weight to be a number at each valence.
+* :data:`WHOLE_MESH`: the supports of Section 3 live on whole quad meshes, so the 1-ring rules must
+  be rules of the mesh (:func:`symdecomp.schemes.mesh.mesh_rules`).
 """
 
 from __future__ import annotations
 
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.claims.registry import CheckResult, Status, Text
+from symdecomp.claims.registry import Requirement, Text
+from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.mesh import mesh_rules
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import sin_jtheta as SIN
 
-__all__ = ["needs_mirror_symmetry"]
+__all__ = ["MIRROR_SYMMETRIC", "NO_FREE_PARAMETERS", "WHOLE_MESH"]
 
 
-def needs_mirror_symmetry(scheme: Scheme) -> CheckResult | None:
-    """``not applicable`` when the trace or determinant of ``M_j`` depends on ``sin(j pi/n)``, else ``None``."""
+def _mirror_asymmetry(scheme: Scheme) -> Text | None:
+    """The trace or determinant of ``M_j`` when it depends on ``sin(j pi/n)``, else ``None``."""
     ev = tangent_eigenvalues(scheme)
     for name, expr in (("trace", ev.trace), ("determinant", ev.determinant)):
         if expr.has(SIN):
-            return CheckResult(
-                Status.NOT_APPLICABLE,
-                Text("the closed forms of Section 5 are written in c = cos(j pi/n) and need mirror-symmetric rules; for this "
-                     "scheme the ", name, " of M_j is ", expr, " (s = sin(j pi/n))"),
-            )
+            return Text("the closed forms of Section 5 are written in c = cos(j pi/n) and need mirror-symmetric rules; for this "
+                        "scheme the ", name, " of M_j is ", expr, " (s = sin(j pi/n))")
     return None
+
+
+def _free_parameters(scheme: Scheme) -> str | None:
+    """The scheme's free parameters, when it has any."""
+    if scheme.parameters:
+        return f"the scheme {scheme.name!r} has free parameters {', '.join(map(str, scheme.parameters))}; give them values first"
+    return None
+
+
+def _not_mesh_rules(scheme: Scheme) -> str | None:
+    """Why the scheme's 1-ring rules are not rules of a whole quad mesh, or ``None`` when they are."""
+    try:
+        mesh_rules(scheme)
+    except InvalidSchemeError as exc:
+        return f"the supports of Section 3 live on whole meshes, and {exc}"
+    return None
+
+
+#: Mirror-symmetric rules: ``M_j`` depends on ``c = cos(j pi/n)`` alone (Section 5's closed forms).
+MIRROR_SYMMETRIC = Requirement("mirror-symmetric rules", _mirror_asymmetry)
+#: No free parameters: every weight is a number at each valence.
+NO_FREE_PARAMETERS = Requirement("no free parameters", _free_parameters)
+#: Rules of a whole quad mesh (Section 3's supports).
+WHOLE_MESH = Requirement("rules of a whole quad mesh", _not_mesh_rules)

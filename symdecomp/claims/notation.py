@@ -76,34 +76,22 @@ def M(k) -> sp.Symbol:
     return sp.Symbol(f"M_{k}")
 
 
-def eq(lhs, rhs) -> sp.Basic:
-    """``lhs = rhs`` as written (not evaluated)."""
-    return sp.Eq(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
+def _relation(kind, written: str):
+    """A builder of the relation ``kind`` between two expressions, as written (not evaluated)."""
+
+    def build(lhs, rhs) -> sp.Basic:
+        return kind(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
+
+    build.__doc__ = f"``lhs {written} rhs`` as written (not evaluated)."
+    return build
 
 
-def ne(lhs, rhs) -> sp.Basic:
-    """``lhs != rhs`` as written."""
-    return sp.Ne(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
-
-
-def gt(lhs, rhs) -> sp.Basic:
-    """``lhs > rhs`` as written."""
-    return sp.StrictGreaterThan(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
-
-
-def ge(lhs, rhs) -> sp.Basic:
-    """``lhs >= rhs`` as written."""
-    return sp.GreaterThan(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
-
-
-def lt(lhs, rhs) -> sp.Basic:
-    """``lhs < rhs`` as written."""
-    return sp.StrictLessThan(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
-
-
-def le(lhs, rhs) -> sp.Basic:
-    """``lhs <= rhs`` as written."""
-    return sp.LessThan(sp.sympify(lhs, strict=True), sp.sympify(rhs, strict=True), evaluate=False)
+eq = _relation(sp.Eq, "=")
+ne = _relation(sp.Ne, "!=")
+gt = _relation(sp.StrictGreaterThan, ">")
+ge = _relation(sp.GreaterThan, ">=")
+lt = _relation(sp.StrictLessThan, "<")
+le = _relation(sp.LessThan, "<=")
 
 
 def tup(*entries) -> sp.Tuple:

@@ -34,10 +34,23 @@ same status for every scheme.
 Registering a claim (later issues add modules ``symdecomp/claims/s*.py``; they are found
 automatically)::
 
-    @claim("Eq. 34", section="5.1", title="Eigenvalues of M_j", statement="...")
+    @claim("Eq. 34", section="5.1", title="Eigenvalues of M_j", statement="...", requires=(MIRROR_SYMMETRIC,))
     def eq34(scheme: Scheme) -> CheckResult:
         ...
         return CheckResult(Status.PROVED, "char. polynomial vanishes identically", steps=(...))
+
+When a check does not apply to a scheme:
+
+* a claim declares the hypotheses its derivation needs (``requires=``, :class:`Requirement`; the shared
+  ones are in :mod:`symdecomp.claims.applicability`); the registry tests them in order before running
+  the check, and the first one the scheme does not meet gives ``not applicable`` with its reason;
+* inside a check, :class:`~symdecomp.errors.NotApplicableError` (raised by an analysis whose
+  hypotheses the scheme does not meet) gives ``not applicable`` with its message;
+* any other :class:`~symdecomp.errors.InvalidSchemeError` also gives ``not applicable``: the scheme was
+  validated when it was built, so such an error inside a check means that the scheme is outside
+  what this claim's derivation covers (e.g. stencils wider than the 1-ring at the valences the claim
+  is about), not that the scheme is broken;
+* any other exception gives ``error`` (a failure of the check, never a finding about the paper).
 """
 
 from __future__ import annotations
@@ -56,7 +69,7 @@ from functools import cache
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
-from symdecomp.errors import InvalidInputError, InvalidSchemeError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 
 __all__ = [
@@ -69,6 +82,7 @@ __all__ = [
     "Step",
     "CheckResult",
     "Claim",
+    "Requirement",
     "claim",
     "all_claims",
     "get_claim",
@@ -317,6 +331,20 @@ def scope_summary(results) -> ScopeSummary:
 
 
 @dataclass(frozen=True)
+class Requirement:
+    """A hypothesis a claim's derivation needs of the scheme, declared with the claim (``requires=``).
+
+    ``unmet(scheme)`` is ``None`` when the scheme meets it, else the reason (words, or :class:`Text`),
+    which becomes the evidence of the ``not applicable`` result; the check then does not run.
+    """
+
+    #: A short name, e.g. ``"mirror-symmetric rules"``.
+    name: str
+    #: ``None`` when the scheme meets the requirement, else the reason it does not.
+    unmet: Callable[[Scheme], str | Text | None] = field(repr=False, compare=False)
+
+
+@dataclass(frozen=True)
 class Claim:
     """A claim of the paper, with the function that checks it."""
 
@@ -332,6 +360,8 @@ class Claim:
     check: Callable[[Scheme], CheckResult] = field(repr=False, compare=False)
     #: Registration order, to list claims in the paper's order within a section.
     order: int = 0
+    #: What the check needs of the scheme, tested in order before it runs (:class:`Requirement`).
+    requires: tuple[Requirement, ...] = ()
 
     def sort_key(self):
         """Paper order: by section, then in the order the section's module registers its claims."""
@@ -342,13 +372,13 @@ class Claim:
 REGISTRY: dict[str, Claim] = {}
 
 
-def claim(label: str, *, section: str, title: str, statement: str):
-    """Decorator registering ``check`` as the check of the claim ``label``."""
+def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = ()):
+    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``."""
 
     def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:
         if label in REGISTRY:
             raise ValueError(f"claim {label!r} is registered twice")
-        REGISTRY[label] = Claim(label, section, title, statement, check, order=len(REGISTRY))
+        REGISTRY[label] = Claim(label, section, title, statement, check, order=len(REGISTRY), requires=tuple(requires))
         return check
 
     return register
@@ -420,11 +450,13 @@ def time_budget(seconds: float | None):
 def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | None = DEFAULT_BUDGET) -> CheckResult:
     """Check a claim for ``scheme`` (default: standard Catmull-Clark), once per scheme.
 
-    An exception inside the check becomes status ``error`` with its message; a check that is still running
-    after ``budget`` seconds (``None``: no limit) becomes ``undecided``, saying so. On a scheme with free
-    parameters, a check that stops on them (a numeric comparison meeting a symbol) is ``not applicable``
-    with the reason, and a counterexample that is an expression in them is made concrete
-    (:func:`unbound_parameters`).
+    A requirement the scheme does not meet, or a :class:`~symdecomp.errors.NotApplicableError` (or
+    other :class:`~symdecomp.errors.InvalidSchemeError`) inside the check, becomes ``not applicable``
+    with the reason; any other exception inside the check becomes status ``error`` with its message
+    (see the module docstring). A check that is still running after ``budget`` seconds (``None``: no
+    limit) becomes ``undecided``, saying so. On a scheme with free parameters, a check that stops on
+    them (a numeric comparison meeting a symbol) is ``not applicable`` with the reason, and a
+    counterexample that is an expression in them is made concrete (:func:`unbound_parameters`).
     """
     if budget is not None and not (isinstance(budget, (int, float)) and not isinstance(budget, bool) and 0 < budget < 10**6):
         raise InvalidInputError(f"budget must be a number of seconds between 0 and 1e6, got {budget!r}")
@@ -445,8 +477,13 @@ def _check_claim(label: str, scheme: Scheme, budget: float | None) -> CheckResul
 def _run_check(label: str, scheme: Scheme) -> CheckResult:
     c = get_claim(label)
     try:
+        for requirement in c.requires:
+            if (reason := requirement.unmet(scheme)) is not None:
+                return CheckResult(Status.NOT_APPLICABLE, reason)
         result = c.check(scheme)
-    except InvalidSchemeError as exc:  # the scheme is outside what the claim's derivation covers
+    # NotApplicableError: the scheme does not meet the hypotheses of an analysis the check uses; another
+    # InvalidSchemeError: the scheme is outside what the claim's derivation covers (module docstring).
+    except (NotApplicableError, InvalidSchemeError) as exc:
         why = Text(*exc.parts) if exc.parts else str(exc)
         return CheckResult(Status.NOT_APPLICABLE, Text(f"not applicable to the scheme {scheme.name!r}: ", why))
     except Exception as exc:  # the registry reports, the caller decides

@@ -38,10 +38,10 @@ from symdecomp.analysis.support_window import (
 from symdecomp.analysis.support_window import (
     region as window_region,
 )
+from symdecomp.claims.applicability import WHOLE_MESH
 from symdecomp.claims.notation import eq, gt
 from symdecomp.claims.notation import n as N
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
-from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import cube_mesh, mesh_rules, point_stencils, refine, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme
 
@@ -71,16 +71,6 @@ def _every_valence(scheme: Scheme) -> tuple[list[str], tuple[Step, ...]]:
     return failures, steps
 
 
-def _not_a_mesh_scheme(scheme: Scheme) -> CheckResult | None:
-    """``not applicable`` when the scheme's 1-ring rules are not rules of a whole quad mesh (the supports of
-    Section 3 are defined on meshes), else ``None``."""
-    try:
-        mesh_rules(scheme)
-    except InvalidSchemeError as exc:
-        return CheckResult(Status.NOT_APPLICABLE, f"the supports of Section 3 live on whole meshes, and {exc}")
-    return None
-
-
 def _ring(labels, v):
     _, u, w = labels[v]
     return max(u, w)
@@ -98,17 +88,30 @@ def _cubes(scheme: Scheme, levels=(0, 1, 2)):
     return out
 
 
+def _relation_or_refutation(mesh, scheme: Scheme, verts, where: str, case: str, name=str):
+    """The support relation on ``verts``, and the refutation at the first ordered pair it classifies differently both
+    ways (``None`` when there is none); ``where`` and ``case`` say where in the evidence and the counterexample,
+    ``name`` names a vertex."""
+    rel = support_relation(mesh, scheme, verts)
+    pair = next(((p, q) for p in verts for q in verts if rel[p, q] is not rel[q, p]), None)
+    if pair is None:
+        return rel, None
+    p, q = map(name, pair)
+    forward, backward = rel[pair].value, rel[pair[::-1]].value
+    return rel, CheckResult(Status.REFUTED, f"asymmetric pair {where}", counterexample=f"{case}: vertex {q} is {forward} for the "
+                            f"support of {p}, but {p} is {backward} for the support of {q}")
+
+
 @claim(
     "Section 3: symmetry",
     section="3",
     title="The support relation is symmetric",
     statement="$P'$ is inside, on the boundary, or outside the support of $P$ if and only if $P$ is "
     "inside, on the boundary, or outside the support of $P'$, correspondingly.",
+    requires=(WHOLE_MESH,),
 )
 def _symmetry(scheme: Scheme) -> CheckResult:
     # long: the symmetry check and its counterexample search share one loop over the valences.
-    if (result := _not_a_mesh_scheme(scheme)) is not None:
-        return result
     cc = scheme
     lo, hi = SYMMETRY_VALENCES
     pairs = 0
@@ -118,16 +121,9 @@ def _symmetry(scheme: Scheme) -> CheckResult:
         mesh = ring_mesh(n, rings)
         labels = ring_mesh_labels(n, rings)
         verts = [v for v in mesh.vertices() if _ring(labels, v) <= rings - 2]
-        rel = support_relation(mesh, cc, verts)
-        for p in verts:
-            for q in verts:
-                if rel[p, q] is not rel[q, p]:
-                    return CheckResult(
-                        Status.REFUTED,
-                        f"asymmetric pair at valence {n}",
-                        counterexample=f"n = {n}: vertex {labels[q]} is {rel[p, q].value} for the support of "
-                        f"{labels[p]}, but {labels[p]} is {rel[q, p].value} for the support of {labels[q]}",
-                    )
+        rel, refuted = _relation_or_refutation(mesh, cc, verts, f"at valence {n}", f"n = {n}", labels.__getitem__)
+        if refuted is not None:
+            return refuted
         pairs += len(verts) ** 2
         w = window()
         if n >= FIRST_VALENCE and any(rel[p, q] is not predicted_region(w, labels[p], labels[q], n) for p in verts for q in verts):
@@ -143,16 +139,9 @@ def _symmetry(scheme: Scheme) -> CheckResult:
     cube_pairs = 0
     for level, mesh in _cubes(scheme).items():
         verts = mesh.vertices()
-        rel = support_relation(mesh, cc, verts)
-        for p in verts:
-            for q in verts:
-                if rel[p, q] is not rel[q, p]:
-                    return CheckResult(
-                        Status.REFUTED,
-                        f"asymmetric pair on the cube refined {level} times",
-                        counterexample=f"cube refined {level} times: vertex {q} is {rel[p, q].value} for the support "
-                        f"of {p}, but {p} is {rel[q, p].value} for the support of {q}",
-                    )
+        rel, refuted = _relation_or_refutation(mesh, cc, verts, f"on the cube refined {level} times", f"cube refined {level} times")
+        if refuted is not None:
+            return refuted
         cube_pairs += len(verts) ** 2
     steps.append(Step(f"the cube refined 0, 1, 2 times (8, 26, 98 vertices): all {cube_pairs} ordered pairs agree", sp.Integer(cube_pairs)))
     failures, general = _every_valence(scheme)
@@ -206,10 +195,9 @@ def _window_asymmetry(w) -> str | None:
     title="Regular Catmull-Clark: 9 points inside, 25 inside or on the boundary",
     statement="In the regular case of the Catmull-Clark scheme nine points determine the continuous "
     "derivatives at $P$, and 25 points are needed to prove continuity.",
+    requires=(WHOLE_MESH,),
 )
 def _regular_counts(scheme: Scheme) -> CheckResult:
-    if (result := _not_a_mesh_scheme(scheme)) is not None:
-        return result
     c = classify_support(ring_mesh(4, 5), 0, scheme, levels=2)
     inside, boundary = c.count(Region.INSIDE), c.count(Region.BOUNDARY)
     steps = (
@@ -244,11 +232,10 @@ def _regular_counts(scheme: Scheme) -> CheckResult:
     statement="If $P'$ is outside the support of $P$, then it has no influence on the position or any of "
     "the continuous derivatives of $P$; this is also the case when $P'$ is on the boundary of the support "
     "of $P$.",
+    requires=(WHOLE_MESH,),
 )
 def _boundary_influence(scheme: Scheme) -> CheckResult:
     # long: the exact refinement (the proof below FIRST_VALENCE) and the argument for every n give one verdict.
-    if (result := _not_a_mesh_scheme(scheme)) is not None:
-        return result
     cc = scheme
     rules = mesh_rules(cc)
     lo, hi = INFLUENCE_VALENCES
@@ -335,12 +322,11 @@ def _one_ring_closure(scheme: Scheme) -> str | None:
     title="Catmull-Clark: inside = 1-ring, boundary = boundary of the 2-ring",
     statement="For the Catmull-Clark scheme the vertices inside the support of $P$ are in its 1-ring "
     "neighbourhood, while the vertices on the boundary of the support are the boundary vertices of the 2-ring.",
+    requires=(WHOLE_MESH,),
 )
 def _cc_support(scheme: Scheme) -> CheckResult:
     # long: one pass over the valences gathers the classification, the paper's counts and the
     # derivation steps together; split, each piece would re-run the exact refinement.
-    if (result := _not_a_mesh_scheme(scheme)) is not None:
-        return result
     cc = scheme
     lo, hi = SUPPORT_VALENCES
     rings = 5

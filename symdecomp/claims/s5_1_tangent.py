@@ -10,7 +10,7 @@ from symdecomp.analysis.dominance import tail_bound
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.claims.applicability import needs_mirror_symmetry
+from symdecomp.claims.applicability import MIRROR_SYMMETRIC
 from symdecomp.claims.evidence import at_valence, dominant_vs_frequency_zero, filtering_evidence, number, start_points
 from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
 from symdecomp.claims.notation import M as Mk
@@ -284,10 +284,9 @@ def _eq38(scheme: Scheme) -> CheckResult:
     section="5.1",
     title="$A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues",
     statement="The regular convex components $A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues.",
+    requires=(MIRROR_SYMMETRIC,),
 )
 def _prop51(scheme: Scheme) -> CheckResult:
-    if (result := needs_mirror_symmetry(scheme)) is not None:
-        return result
     ev = tangent_eigenvalues(scheme)
     cp = sp.Symbol("c", positive=True)
     dominant = ev.dominant.subs(C, cp)
@@ -347,10 +346,9 @@ def _prop51(scheme: Scheme) -> CheckResult:
     title="$A^{n-1}, B^{n-1}, A^{n+1}, B^{n+1}$ are filtered out",
     statement="The components $A^{n-1}, B^{n-1}, A^{n+1}, B^{n+1}$ are also convex regular but they are filtered out by "
     "the subdivision scheme in the same way as the non-convex components.",
+    requires=(MIRROR_SYMMETRIC,),
 )
 def _rem51(scheme: Scheme) -> CheckResult:
-    if (result := needs_mirror_symmetry(scheme)) is not None:
-        return result
     # Component j = n + 1 moves by M(omega_n^(n+1)) = M_1 from (1, zeta), zeta = omega_2n^(n+1) = -omega_2n, of
     # order n (odd n) or 2n (even n); j = n - 1 is its conjugate. It is filtered out (shrinks faster than lambda_1)
     # only where (1, zeta) is the eigenvector of the eigenvalue of smaller modulus.

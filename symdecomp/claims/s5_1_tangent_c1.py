@@ -12,12 +12,14 @@ from __future__ import annotations
 
 import sympy as sp
 
+from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 from symdecomp.symbols import n as N
 from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.c1_spectrum import round_down
+from symdecomp.verify.result import C1Verdict
 
 #: The valences of the table (a second; ``symdecomp c1`` does more).
 VALENCES = (3, 16)
@@ -34,10 +36,10 @@ def _table(scheme: Scheme):
     rows = []
     for n in range(lo, hi + 1):
         r = c1_test(scheme, n)
-        if r.verdict == "not-c1":
+        if r.verdict is C1Verdict.NOT_C1:
             what = f"{scheme.name}, n = {n}: {r.reason}"
             return None, CheckResult(Status.REFUTED, what, counterexample=what)
-        if r.verdict != "c1":  # undecided: the test could not settle it, which is no finding about the scheme
+        if r.verdict is not C1Verdict.C1:  # undecided: the test could not settle it, which is no finding about the scheme
             return None, CheckResult(Status.UNDECIDED, f"{scheme.name}, n = {n}: {r.reason}")
         lam = r.spectral.subdominant.value.real
         rows.append([n, sp.Float(float(lam.mid()), 6), _down(r.spectral.gap), _down(r.jacobian_lower_bound), r.winding_number])
@@ -55,6 +57,7 @@ _HEADER = [sp.Symbol("n"), sp.Symbol("lambda"), sp.Symbol("gap"), sp.Symbol("|J|
     statement=r"Beyond the paper: the tangent-plane conditions of Section 5.1 are necessary; Reif's sufficient "
     r"condition (1 simple, the subdominant eigenvalue $\lambda$ real, double, non-defective and strictly dominant, "
     r"and a regular, injective characteristic map) holds for Catmull-Clark, and for Loop's scheme, at every valence $n$.",
+    requires=(NO_FREE_PARAMETERS,),
 )
 def _c1_reif(scheme: Scheme) -> CheckResult:
     rows, failed = _table(scheme)

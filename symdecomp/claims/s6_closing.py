@@ -22,6 +22,7 @@ import sympy as sp
 
 from symdecomp.analysis.components import ZETA, root_of_unity_orders
 from symdecomp.analysis.ring_blocks import ring_blocks
+from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim
 from symdecomp.schemes.rings import ring_subdivision_matrix
@@ -144,6 +145,7 @@ def _outer_block_proof(scheme: Scheme, rings: int, inner_rings: int) -> tuple[bo
     title="The 1-ring is sufficient for the continuous derivatives",
     statement=r"We restricted the range of our decomposition analysis to a one ring neighborhood. We showed that this "
     r"is sufficient for the computation of all the continuous derivatives.",
+    requires=(NO_FREE_PARAMETERS,),
 )
 def _sufficient(scheme: Scheme) -> CheckResult:
     inner_rings = PRINTED_SUFFICIENT_RINGS
@@ -242,6 +244,7 @@ def _growth_text(rings: int, g: dict) -> Text:
     title="A larger range only adds null columns",
     statement=r"Increasing the range might only increase the rank deficiency of the subdivision matrix by introducing "
     r"null columns.",
+    requires=(NO_FREE_PARAMETERS,),
 )
 def _larger(scheme: Scheme) -> CheckResult:
     growth = {rings: _ring_growth(scheme, rings) for rings in (2, 3)}

@@ -11,6 +11,8 @@ Exit codes (also in ``symdecomp --help`` and the README):
 ===  =====================================================================================
 
 No traceback is ever printed: every error is one line on stderr.
+
+The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """
 
 from __future__ import annotations
@@ -39,6 +41,8 @@ EXIT_CODES = {
 }
 
 
+# Control flow, not an error of the package: a BaseException like KeyboardInterrupt so that no
+# `except Exception` swallows it; main() turns it into exit code 130.
 class Interrupted(BaseException):
     """Raised in the main process by SIGTERM, so that cleanup runs as for Ctrl-C."""
 

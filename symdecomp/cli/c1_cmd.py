@@ -6,10 +6,11 @@ import sys
 
 from symdecomp.cli.common import Once, add_scheme_option, flag, integer, print_json, progress, valence_range
 from symdecomp.verify.c1 import c1_test, method
+from symdecomp.verify.result import C1Verdict
 
 __all__ = ["register", "run"]
 
-_LABEL = {"c1": "C1 certified", "not-c1": "not C1", "undecided": "undecided"}
+_LABEL = {C1Verdict.C1: "C1 certified", C1Verdict.NOT_C1: "not C1", C1Verdict.UNDECIDED: "undecided"}
 
 
 def _depth(text: str) -> int:
@@ -52,4 +53,4 @@ def run(args) -> int:
         print(f"method: {method(args.scheme.mesh)}")
         for r in results:
             print(f"n = {r.n:>3}: {_LABEL[r.verdict]}: {r.reason}")
-    return 0 if all(r.verdict == "c1" for r in results) else 1
+    return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1

@@ -15,7 +15,8 @@ import sys
 
 from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
 from symdecomp.cli.common import Once, add_scheme_option, digits, positive_int, print_json, progress, valence_range
-from symdecomp.output.evaldata import EvalDataFileError, binary_bytes, check_writable, dumps, json_document, write_atomic
+from symdecomp.errors import EvalDataFileError
+from symdecomp.output.evaldata import binary_bytes, check_writable, dumps, json_document, write_atomic
 
 
 def register(sub) -> None:

@@ -67,7 +67,8 @@ def _comparison(scheme):
 
 
 def run(args) -> int:
-    from symdecomp.verify.opensubdiv import BridgeUnavailableError, load_bridge
+    from symdecomp.errors import BridgeUnavailableError
+    from symdecomp.verify.opensubdiv import load_bridge
 
     compare = _comparison(args.scheme)
     try:

@@ -36,7 +36,7 @@ import flint
 import numpy as np
 
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import EvalDataFileError
 
 __all__ = ["EvalDataFileError", "binary_bytes", "write_atomic", "read_binary", "json_document", "read_json", "dumps", "check_writable"]
 
@@ -50,10 +50,6 @@ LOOP_LAYOUT = (
     "(k = 0 at a_0, 1 middle (reversed), 2 at a_1); s = sum_i (J^(n-1) V^-1 C)_i sum_l phi[k][i, l] b_l(s, t), "
     "J = diag(values) + jordan"
 )
-
-
-class EvalDataFileError(InvalidInputError):
-    """An eigen-data file cannot be written or read (path, truncated or malformed content)."""
 
 
 def _check_sequence(ns: list[int]) -> None:

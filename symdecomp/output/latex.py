@@ -25,6 +25,7 @@ from importlib import resources
 
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_sympy
 from symdecomp.claims import CheckResult, Claim, Status, Step, Text, check_claim, scope_summary
 from symdecomp.output.texlayout import formula_display, latex, mapping_rows, rows_display, size
 
@@ -231,7 +232,7 @@ def _(obj) -> str:
 
 @aslatex.register(Fraction)
 def _(obj: Fraction) -> str:
-    return latex(sp.Rational(obj.numerator, obj.denominator))
+    return latex(to_sympy(obj))
 
 
 @aslatex.register(str)

@@ -1,10 +1,6 @@
 """Subdivision schemes as data, and the matrices and meshes built from their rules.
 
-A scheme's rules and the one assembly of its subdivision matrix (:mod:`.scheme`), the full
-matrix in FLINT rationals and its characteristic polynomial (:mod:`.full_matrix`), rules as
-polynomials in the index shift (:mod:`.shift_stencil`), whole quad meshes refined by the
-scheme's rules (:mod:`.mesh`), the 1-ring as a polygon pair (:mod:`.ring`), and the regular Loop patch (the quartic box
-spline) in Bezier form, derived by exact refinement (:mod:`.box_spline`).
+The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """
 
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix, vertex_order

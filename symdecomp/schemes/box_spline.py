@@ -45,6 +45,7 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_mpf, to_sympy
 from symdecomp.algebra.triangle_bezier import bernstein, bezier_indices
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.rings import ring_subdivision_matrix
@@ -78,7 +79,7 @@ class RegularPatch:
 
     def matrix(self) -> flint.fmpq_mat:
         """The 12 x 15 matrix of :attr:`coefficients` (rows: control points)."""
-        return flint.fmpq_mat([[flint.fmpq(c.numerator, c.denominator) for c in row] for row in self.coefficients])
+        return flint.fmpq_mat([[to_fmpq(c) for c in row] for row in self.coefficients])
 
     def bezier_net(self, control) -> list:
         """The 15 Bezier coefficients of the patch with control values ``control[i]`` at ``BOX_POINTS[i]``.
@@ -116,11 +117,10 @@ def _scalar(c: Fraction, like):
     if mod.startswith("numpy") or isinstance(like, float):
         return c.numerator / c.denominator
     if mod.startswith("mpmath"):
-        import mpmath
 
-        return mpmath.mpf(c.numerator) / c.denominator
+        return to_mpf(c)
     if mod.startswith("flint"):
-        return flint.fmpq(c.numerator, c.denominator)
+        return to_fmpq(c)
     return c
 
 
@@ -130,14 +130,14 @@ def regular_limit_mask(scheme: Scheme) -> tuple[Fraction, Fraction]:
     ring = ring_subdivision_matrix(scheme, 6, 1)
     S = sp.zeros(ring.size, ring.size)
     for (r, c), x in ring.entries().items():
-        S[r, c] = sp.Rational(x.numerator, x.denominator)
+        S[r, c] = to_sympy(x)
     null = (S.T - sp.eye(ring.size)).nullspace()
     if len(null) != 1 or sum(null[0]) == 0:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: eigenvalue 1 of the regular 1-ring matrix is not simple, no limit mask")
     mask = [x / sum(null[0]) for x in null[0]]
     if len(set(mask[1:])) != 1:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the regular limit mask is not symmetric")
-    return Fraction(int(mask[0].p), int(mask[0].q)), Fraction(int(mask[1].p), int(mask[1].q))
+    return to_fraction(mask[0]), to_fraction(mask[1])
 
 
 def _lattice_values(s: int, u: int, v: int) -> tuple:
@@ -187,11 +187,10 @@ def regular_patch(scheme: Scheme | None = None) -> RegularPatch:
     idx = bezier_indices(DEGREE)
     limits = refined_limits(scheme, 2)
     points = [(b, c) for _, b, c in idx]
-    fq = lambda x: flint.fmpq(int(x.numerator), int(x.denominator))  # noqa: E731
-    A = flint.fmpq_mat([[fq(x) for x in bernstein(DEGREE, Fraction(b, 4), Fraction(c, 4))] for b, c in points])
-    B = flint.fmpq_mat([[fq(x) for x in limits[p]] for p in points])
+    A = flint.fmpq_mat([[to_fmpq(x) for x in bernstein(DEGREE, Fraction(b, 4), Fraction(c, 4))] for b, c in points])
+    B = flint.fmpq_mat([[to_fmpq(x) for x in limits[p]] for p in points])
     X = A.solve(B)  # 15 x 12: column i holds the coefficients of basis function i
-    coefficients = tuple(tuple(Fraction(int(X[k, i].p), int(X[k, i].q)) for k in range(len(idx))) for i in range(len(BOX_POINTS)))
+    coefficients = tuple(tuple(to_fraction(X[k, i]) for k in range(len(idx))) for i in range(len(BOX_POINTS)))
     patch = RegularPatch(scheme.name, coefficients, regular_limit_mask(scheme))
     for (i, j), want in refined_limits(scheme, 3).items():
         if patch.basis(Fraction(i, 8), Fraction(j, 8)) != list(want):

@@ -24,8 +24,9 @@ import flint
 import sympy as sp
 
 from symdecomp import validate
-from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.algebra.compile import compile_expression
+from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.errors import InvalidSchemeError, UnsupportedExpressionError
 from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, subdivision_entries
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_memory, check_valence
@@ -59,7 +60,7 @@ def exact_weight(weight: sp.Expr, n: int, subs: Mapping) -> flint.fmpq:
         raise InvalidSchemeError(
             f"weight {weight} is not rational at n = {n} (it is {value}); the exact checks need rational weights"
         )
-    return flint.fmpq(int(value.p), int(value.q))
+    return to_fmpq(value)
 
 
 _RULE_CACHE: dict = {}
@@ -81,7 +82,7 @@ def _weight_evaluator(scheme: Scheme, subs: Mapping):
     values = []
     for p in scheme.parameters:
         value = sp.sympify(subs[p], strict=True)
-        values.append(flint.fmpq(int(value.p), int(value.q)) if value.is_Rational else None)
+        values.append(to_fmpq(value) if value.is_Rational else None)
 
     def at(n: int):
         args = (flint.fmpq(n), *values)
@@ -216,5 +217,5 @@ def entries_characteristic_polynomial(entries: dict, size: int) -> flint.fmpq_po
     ``1/n`` denominators); FLINT's ``fmpz_mat.charpoly`` does the rest. Used by the K-ring
     certificates (:mod:`symdecomp.verify.ring_certify`).
     """
-    entries = {k: v if isinstance(v, flint.fmpq) else flint.fmpq(v.numerator, v.denominator) for k, v in entries.items()}
+    entries = {k: to_fmpq(v) for k, v in entries.items()}
     return _rational_charpoly(entries, size, f"of a {size} x {size} matrix")

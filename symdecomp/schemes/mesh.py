@@ -46,7 +46,8 @@ from types import MappingProxyType
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic
-from symdecomp.errors import InvalidInputError, InvalidSchemeError
+from symdecomp.algebra.numbers import to_fraction
+from symdecomp.errors import InvalidMeshError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
@@ -57,16 +58,12 @@ __all__ = [
 ]
 
 
-class InvalidMeshError(InvalidInputError):
-    """A mesh is not a consistently oriented quad mesh, or a vertex asked about is not in it."""
-
-
 def _as_weight(w: sp.Expr):
     if isinstance(w, (Fraction, Cyclotomic)):  # already exact numbers (a caller's own arithmetic)
         return w
     w = sp.sympify(w, strict=True)
     if w.is_Rational:
-        return Fraction(int(w.p), int(w.q))
+        return to_fraction(w)
     return w
 
 

@@ -26,6 +26,7 @@ from functools import lru_cache
 import flint
 
 from symdecomp.algebra.cyclotomic import to_acb
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import refinement_matrix, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme
@@ -159,7 +160,7 @@ def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
         for j, w in row.items():
             if not isinstance(w, Fraction):
                 raise InvalidSchemeError(f"scheme {scheme.name!r}: weight {w} at valence {n} is not rational")
-            extended[i, j] = flint.fmpq(w.numerator, w.denominator)
+            extended[i, j] = to_fmpq(w)
             if i < k:
                 matrix[i, j] = extended[i, j]
     subpatches = tuple(

@@ -26,8 +26,9 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_mpf
 from symdecomp.algebra.polygons import PolygonDecomposition, as_vertex_rows, decompose
-from symdecomp.errors import FrequencyOutOfRangeError, InvalidInputError, InvalidPolygonError, InvalidSchemeError
+from symdecomp.errors import FrequencyOutOfRangeError, InvalidInputError, InvalidPolygonError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = ["interleaved_polygon", "OneRing", "subdivide", "one_ring_decomposition", "OneRingDecomposition", "ngon_amplitudes"]
@@ -108,7 +109,7 @@ def subdivide(scheme: Scheme, ring: OneRing, steps: int = 1) -> OneRing:
         raise InvalidInputError(f"steps must be a non-negative integer, got {steps!r}")
     S = subdivision_matrix(scheme, ring.n)
     if scheme.parameters:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute values first")
+        raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute values first")
     rows = ring.rows()
     if ring.arithmetic == "exact":
         X = sp.Matrix(rows)
@@ -121,7 +122,7 @@ def subdivide(scheme: Scheme, ring: OneRing, steps: int = 1) -> OneRing:
         for _ in range(steps):
             X = A @ X
         return OneRing.from_rows([tuple(r) for r in X.tolist()], "numpy")
-    A = mpmath.matrix([[mpmath.mpf(sp.Rational(x).p) / sp.Rational(x).q for x in row] for row in S.tolist()])
+    A = mpmath.matrix([[to_mpf(x) for x in row] for row in S.tolist()])
     X = mpmath.matrix(rows)
     for _ in range(steps):
         X = A * X

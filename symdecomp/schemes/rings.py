@@ -33,7 +33,8 @@ from fractions import Fraction
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.algebra.numbers import to_fraction, to_sympy
+from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.mesh import MeshRules, mesh_rules, refine, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme, subdivision_entries
 from symdecomp.schemes.trimesh import refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
@@ -133,7 +134,7 @@ class RingMatrix:
                     x = sp.sympify(x, strict=True).xreplace(subs)
                     if not x.is_Rational:
                         raise InvalidSchemeError(f"entry ({r}, {c}) = {x} is not rational; give values for {sorted(map(str, self.weights))}")
-                    x = Fraction(int(x.p), int(x.q))
+                    x = to_fraction(x)
                 if x:
                     out[(r, c)] = x
         return out
@@ -144,7 +145,7 @@ class RingMatrix:
         M = sp.zeros(self.size, self.size)
         for r, row in enumerate(self.rows):
             for c, x in row.items():
-                M[r, c] = sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x, strict=True).xreplace(values)
+                M[r, c] = to_sympy(x) if isinstance(x, Fraction) else sp.sympify(x, strict=True).xreplace(values)
         return sp.ImmutableMatrix(M)
 
 
@@ -163,7 +164,7 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
     """
     n, rings = check_valence(n), _check_rings(rings)
     if scheme.parameters:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; substitute values first")
+        raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; substitute values first")
     regular = regular_valence(scheme.mesh)
     if symbolic_centre and n == regular:
         raise InvalidSchemeError(f"symbolic centre weights need n != {regular}")
@@ -237,8 +238,8 @@ def _stencil_rows(scheme: Scheme, n: int, labels, centre_weights) -> list[dict]:
             continue
         if not x.is_Rational:
             raise InvalidSchemeError(f"scheme {scheme.name!r}: a weight of its edge or face rule at n = {n} is not rational ({x})")
-        rows[where[r]][where[c]] = Fraction(int(x.p), int(x.q))
-    w_o, w_a, *rest = (Fraction(int(w.p), int(w.q)) if getattr(w, "is_Rational", False) else w for w in centre_weights)
+        rows[where[r]][where[c]] = to_fraction(x)
+    w_o, w_a, *rest = (to_fraction(w) if getattr(w, "is_Rational", False) else w for w in centre_weights)
     rows[0][0] = w_o
     for i in range(n):
         rows[0][where[1 + i]] = w_a

@@ -39,6 +39,7 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value
+from symdecomp.algebra.numbers import to_fmpq, to_fraction
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS
 from symdecomp.schemes.patch import PatchMatrices
@@ -98,7 +99,7 @@ def _exact_weight(expr: sp.Expr, n: int):
         raise InvalidSchemeError(f"the centre weight {expr} at valence {n} is not in a cyclotomic field: {exc}") from None
     if x.poly.degree() <= 0:
         c = x.poly[0] if x.poly.degree() == 0 else flint.fmpq(0)
-        return Fraction(int(c.p), int(c.q))
+        return to_fraction(c)
     return x
 
 
@@ -147,6 +148,6 @@ def triangle_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
         extended = flint.fmpq_mat(len(sparse), size)
         for i, row in enumerate(sparse):
             for j, w in row.items():
-                extended[i, j] = flint.fmpq(w.numerator, w.denominator)
+                extended[i, j] = to_fmpq(w)
         matrix = flint.fmpq_mat([[extended[i, j] for j in range(size)] for i in range(size)])
     return PatchMatrices(n, matrix, extended, _subpatch_rows(n, labels), tuple(sparse), size, n + 1, "triangle")

@@ -29,8 +29,8 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.mesh import InvalidMeshError, _as_weight, _combine, _set_topology
+from symdecomp.errors import InvalidMeshError, InvalidSchemeError
+from symdecomp.schemes.mesh import _as_weight, _combine, _set_topology
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence

@@ -1,7 +1,4 @@
-"""Independent checks of the closed forms against the full matrices.
+"""Independent checks of the closed forms against the full matrices, and Reif's certified C1 test.
 
-Numeric (:mod:`.numeric`, mpmath at raised precision until the answer stops moving),
-certified (:mod:`.certify`, FLINT exact characteristic polynomials and Arb balls), both returning a
-:class:`~.result.CrossCheckResult`, and the
-OpenSubdiv oracle (:mod:`.oracle`, through the bridge in :mod:`.opensubdiv`).
+The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """

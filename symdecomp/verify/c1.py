@@ -55,11 +55,11 @@ The verdict is ``c1`` when everything is certified, ``not-c1`` when a condition 
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> r = c1_test(catmull_clark(), 5)
->>> r.verdict, r.winding_number, r.jacobian_sign
+>>> str(r.verdict), r.winding_number, r.jacobian_sign
 ('c1', 1, 1)
 >>> from symdecomp.schemes.loop import loop
->>> c1_test(loop(), 5).verdict
-'c1'
+>>> c1_test(loop(), 5).verdict is C1Verdict.C1
+True
 """
 
 from __future__ import annotations
@@ -83,6 +83,7 @@ from symdecomp.verify.bezier import (
     triangle_jacobian_net,
 )
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down, spectral_conditions
+from symdecomp.verify.result import C1Verdict
 
 __all__ = ["C1Result", "c1_test", "characteristic_nets", "METHOD", "method"]
 
@@ -109,8 +110,8 @@ class C1Result:
 
     n: int
     scheme: str
-    #: ``'c1'``, ``'not-c1'`` or ``'undecided'``.
-    verdict: str
+    #: ``c1``, ``not-c1`` or ``undecided`` (:class:`~symdecomp.verify.result.C1Verdict`).
+    verdict: C1Verdict
     reason: str
     spectral: SpectralResult
     #: Frequency of the subdominant eigenvalue (1 for a standard scheme).
@@ -219,7 +220,7 @@ def _where(where) -> str:
 def _test(scheme: Scheme, n: int, max_depth: int, prec: int) -> C1Result:
     spectral = spectral_conditions(scheme, n)
     base = dict(n=n, scheme=scheme.name, spectral=spectral, max_depth=max_depth, precision=prec, mesh=scheme.mesh)
-    if spectral.status != "ok":
+    if spectral.status is not C1Verdict.C1:
         return C1Result(verdict=spectral.status, reason=spectral.reason, **base)
     j = spectral.subdominant.frequency
     nets, vec = characteristic_nets(scheme, n, spectral)
@@ -231,22 +232,22 @@ def _test(scheme: Scheme, n: int, max_depth: int, prec: int) -> C1Result:
     base.update(frequency=j, subdivision_depth=sign.depth, winding_number=winding)
     lam = ball_text(spectral.subdominant.value)
     if sign.status == "changes":
-        return C1Result(verdict="not-c1", reason=f"the Jacobian of the characteristic map changes sign ({_where(sign.where)}): "
+        return C1Result(verdict=C1Verdict.NOT_C1, reason=f"the Jacobian of the characteristic map changes sign ({_where(sign.where)}): "
                         "it is not regular", **base)
     if sign.status == "undecided":
-        return C1Result(verdict="undecided", reason=f"the Jacobian's sign is not certified at subdivision depth "
+        return C1Result(verdict=C1Verdict.UNDECIDED, reason=f"the Jacobian's sign is not certified at subdivision depth "
                         f"{sign.depth} and {prec} bits (a deeper subdivision or more precision would decide)", **base)
     s = 1 if sign.status == "positive" else -1
     base.update(jacobian_sign=s, jacobian_lower_bound=sign.lower_bound)
     if winding is None:
-        return C1Result(verdict="undecided", reason="the winding number of the inner boundary is not certified", **base)
+        return C1Result(verdict=C1Verdict.UNDECIDED, reason="the winding number of the inner boundary is not certified", **base)
     if winding == s:
-        return C1Result(verdict="c1", reason=f"lambda = {lam} (frequency {j}, gap >= {round_down(spectral.gap)}); the "
+        return C1Result(verdict=C1Verdict.C1, reason=f"lambda = {lam} (frequency {j}, gap >= {round_down(spectral.gap)}); the "
                         f"characteristic map is regular (|J| >= {round_down(sign.lower_bound)}) and winds once: injective", **base)
     if abs(winding) > 1:
-        return C1Result(verdict="not-c1", reason=f"the characteristic map (lambda = {lam} at frequency {j}) is regular but "
+        return C1Result(verdict=C1Verdict.NOT_C1, reason=f"the characteristic map (lambda = {lam} at frequency {j}) is regular but "
                         f"winds {winding} times around the origin: it is not injective", **base)
-    return C1Result(verdict="undecided", reason=f"winding number {winding} does not match the Jacobian's sign {s}", **base)
+    return C1Result(verdict=C1Verdict.UNDECIDED, reason=f"winding number {winding} does not match the Jacobian's sign {s}", **base)
 
 
 def c1_test(scheme: Scheme, n: int, *, max_depth: int = 6, prec: int = 64) -> C1Result:
@@ -254,7 +255,7 @@ def c1_test(scheme: Scheme, n: int, *, max_depth: int = 6, prec: int = 64) -> C1
     n = check_valence(n)
     with flint.ctx.workprec(prec):
         result = _test(scheme, n, max_depth, prec)
-    if result.verdict == "undecided":
+    if result.verdict is C1Verdict.UNDECIDED:
         with flint.ctx.workprec(2 * prec):
             result = _test(scheme, n, max_depth, 2 * prec)
     return result

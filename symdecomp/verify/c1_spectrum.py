@@ -52,11 +52,12 @@ from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic
 from symdecomp.analysis.characteristic import check_applicable, frequency_block, ring_layout
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import one_ring_matrices
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_valence
+from symdecomp.verify.result import C1Verdict
 
 __all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down", "round_down"]
 
@@ -112,12 +113,12 @@ class SpectralResult:
     """The outcome of the spectral test at one valence."""
 
     n: int
-    #: ``'ok'``, ``'not-c1'`` or ``'undecided'``.
-    status: str
+    #: ``C1`` (the spectral conditions hold), ``NOT_C1`` or ``UNDECIDED``.
+    status: C1Verdict
     reason: str
     #: The subdominant eigenvalue (``None`` if not determined).
     subdominant: Eigen | None = None
-    #: Lower bound of ``|lambda| - max |other eigenvalue|`` (``None`` unless ``status == 'ok'``).
+    #: Lower bound of ``|lambda| - max |other eigenvalue|`` (``None`` unless ``status`` is ``C1``).
     gap: float | None = None
     #: Upper bound of the largest modulus of the other eigenvalues.
     second: float | None = None
@@ -209,7 +210,7 @@ def _frequency_zero_quotient(scheme: Scheme, n: int) -> tuple[list, list | None]
     E0 = one_ring_matrices(scheme)[1]
     entries = [[_exact(x, n) for x in row] for row in E0.tolist()]
     if any(x is None for row in entries for x in row):
-        raise InvalidSchemeError(
+        raise NotApplicableError(
             f"scheme {scheme.name!r}: the C1 test needs rational weights at each valence (or rational in cos(2 pi k/n)); "
             f"at n = {n} the frequency-0 block is {sp.Matrix(E0).subs(N, n).tolist()}"
         )
@@ -366,7 +367,7 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
         check_applicable(scheme)
     eigen, failure = _frequency_zero(scheme, n)
     if failure:
-        return SpectralResult(n, "not-c1", failure)
+        return SpectralResult(n, C1Verdict.NOT_C1, failure)
     more, outer = _other_frequencies(scheme, n)
     if one_ring:
         outer = []
@@ -376,33 +377,33 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
     others, ties = _ties(scheme, n, eigen, dom, top)
     for e in ties[None]:
         return SpectralResult(
-            n, "undecided", f"the eigenvalues {ball_text(dom.value)} (frequency {dom.frequency}) and "
+            n, C1Verdict.UNDECIDED, f"the eigenvalues {ball_text(dom.value)} (frequency {dom.frequency}) and "
             f"{ball_text(e.value)} (frequency {e.frequency}) are not separated in modulus at this precision",
         )
     for j, bound in outer:
         if not bound < top:
             return SpectralResult(
-                n, "undecided", f"the outer eigenvalues at frequency {j} are bounded only by {ball_text(bound)}, "
+                n, C1Verdict.UNDECIDED, f"the outer eigenvalues at frequency {j} are bounded only by {ball_text(bound)}, "
                 f"not below |lambda| = {ball_text(top)}",
             )
     if not top < 1:
         return SpectralResult(
             # Arb's ``>=`` holds only when every point of the ball is >= 1 (an exact -1 at frequency 0 is)
-            n, "not-c1" if top >= 1 else "undecided",
+            n, C1Verdict.NOT_C1 if top >= 1 else C1Verdict.UNDECIDED,
             f"the eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not smaller than 1 in modulus", dom,
         )
     failure = _tie_failure(dom, ties, n)
     if failure:
-        return SpectralResult(n, "not-c1", failure, dom)
+        return SpectralResult(n, C1Verdict.NOT_C1, failure, dom)
     second = max([abs(e.value) for e in others] + [b for _, b in outer], key=lambda x: x.upper())
     gap = float_down((top - second).lower())
     if dom.pair:
         return SpectralResult(
-            n, "not-c1", f"the largest eigenvalues after 1 are the complex conjugate pair {ball_text(dom.value)} at "
+            n, C1Verdict.NOT_C1, f"the largest eigenvalues after 1 are the complex conjugate pair {ball_text(dom.value)} at "
             f"frequency {dom.frequency}: the subdominant eigenvalue is not real", dom, gap, float(second.upper()),
         )
     if dom.frequency == 0 or 2 * dom.frequency == n:
-        return SpectralResult(n, "not-c1", _symmetric_failure(eigen, dom, n), dom, gap, float(second.upper()))
+        return SpectralResult(n, C1Verdict.NOT_C1, _symmetric_failure(eigen, dom, n), dom, gap, float(second.upper()))
     return _real_subdominant(scheme, n, dom, gap, float(second.upper()))
 
 
@@ -439,7 +440,7 @@ def _symmetric_failure(eigen: list[Eigen], dom: Eigen, n: int) -> str:
 
 
 def _real_subdominant(scheme: Scheme, n: int, dom: Eigen, gap: float, second: float) -> SpectralResult:
-    """The verdict once ``dom`` (frequency ``0 < j < n/2``) is strictly dominant: ok iff it is certainly real and simple."""
+    """The verdict once ``dom`` (frequency ``0 < j < n/2``) is strictly dominant: C1 iff it is certainly real and simple."""
     if dom.value.imag.contains(0) and _real_at(scheme, n):
         B = frequency_block(scheme, n, dom.frequency)
         real = True
@@ -447,8 +448,8 @@ def _real_subdominant(scheme: Scheme, n: int, dom: Eigen, gap: float, second: fl
             t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
             real = (t * t - 4 * d).real > 0
         if real:
-            return SpectralResult(n, "ok", f"lambda = {ball_text(dom.value)} at frequency {dom.frequency}, real, "
+            return SpectralResult(n, C1Verdict.C1, f"lambda = {ball_text(dom.value)} at frequency {dom.frequency}, real, "
                                   f"multiplicity 2, gap >= {round_down(gap)}", dom, gap, second)
     if not dom.value.imag.contains(0):
-        return SpectralResult(n, "not-c1", f"the subdominant eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not real", dom)
-    return SpectralResult(n, "undecided", f"could not show that the subdominant eigenvalue {ball_text(dom.value)} is real and simple", dom)
+        return SpectralResult(n, C1Verdict.NOT_C1, f"the subdominant eigenvalue {ball_text(dom.value)} at frequency {dom.frequency} is not real", dom)
+    return SpectralResult(n, C1Verdict.UNDECIDED, f"could not show that the subdominant eigenvalue {ball_text(dom.value)} is real and simple", dom)

@@ -52,9 +52,11 @@ from typing import ClassVar
 import flint
 import sympy as sp
 
-from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
+from symdecomp.algebra.compile import compile_expression
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
 from symdecomp.analysis.spectrum import format_value
+from symdecomp.errors import UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
@@ -95,7 +97,7 @@ class SymmetricFunctions:
         values = [sp.sympify(at[v], strict=True) for v in variables]
         if f is not None and all(v.is_Rational for v in values):
             try:
-                return f(*(flint.fmpq(int(v.p), int(v.q)) for v in values))
+                return f(*(to_fmpq(v) for v in values))
             except (UnsupportedExpressionError, ZeroDivisionError):
                 pass
         return _rational(expr, at)
@@ -195,7 +197,7 @@ def _rational(expr: sp.Expr, subs: dict):
         value = sp.radsimp(sp.simplify(value))
     if not value.is_Rational:
         return None
-    return flint.fmpq(int(value.p), int(value.q))
+    return to_fmpq(value)
 
 
 def closed_form_characteristic_value(sym: SymmetricFunctions, n: int, subs: dict, points) -> list | None:

@@ -47,6 +47,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_fraction
 from symdecomp.analysis.elliptic import recursion_eigenvector
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.analysis.spectrum import recursion_eigenvalues
@@ -208,11 +209,10 @@ def toolkit_predictions(n: int) -> ToolkitPredictions:
     mu, (uo, ua, ub) = elliptic_eigenvector(cc, n)
     others = sorted((_f(e.subs(N, n)) for e in recursion_eigenvalues(cc)[1:]), key=abs, reverse=True)
     r39 = complex(sp.N(invariant_ratio_at(cc, n, 1), 30))
-    frac = lambda x: Fraction(int(x.p), int(x.q))  # noqa: E731
     return ToolkitPredictions(
         n,
-        tuple(tuple(frac(S[i, k]) for k in range(size)) for i in range(size)),
-        tuple(frac(x) for x in mask),
+        tuple(tuple(to_fraction(S[i, k]) for k in range(size)) for i in range(size)),
+        tuple(to_fraction(x) for x in mask),
         tangent,
         (others[0], others[1]),
         _f((ub - uo) / (ua - uo)),

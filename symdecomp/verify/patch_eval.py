@@ -14,6 +14,7 @@ from fractions import Fraction
 import mpmath
 
 from symdecomp.algebra.cyclotomic import to_acb
+from symdecomp.algebra.numbers import to_fraction, to_mpf
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.schemes.mesh import QuadMesh, refine
 from symdecomp.schemes.patch import patch_mesh
@@ -64,7 +65,7 @@ def dyadic_limits(scheme: Scheme, n: int, level: int, values) -> tuple[list, dic
         ring = refined.one_ring_values(x)
         m = (len(ring) - 1) // 2
         if m not in masks:
-            masks[m] = [Fraction(int(w.p), int(w.q)) for w in limit_masks_at(scheme, m).position]
+            masks[m] = [to_fraction(w) for w in limit_masks_at(scheme, m).position]
         limits[(u, v)] = tuple(sum(w * p[c] for w, p in zip(masks[m], ring)) for c in range(len(ring[0])))
     return control, limits
 
@@ -108,7 +109,7 @@ def refined_triangle_lattice(mesh: TriangleMesh, scheme: Scheme, level: int):
 def exact_to_mpf(x):
     """A Fraction or a (real) cyclotomic number as an mpmath number at the current precision."""
     if isinstance(x, Fraction):
-        return mpmath.mpf(x.numerator) / x.denominator
+        return to_mpf(x)
     return mpmath.mpf(to_acb(x, mpmath.mp.prec + 32).real.mid().str(mpmath.mp.dps + 10, radius=False))
 
 

@@ -1,7 +1,8 @@
-"""What every cross-check of one valence returns: the status, the verdict, and its JSON form.
+"""The verdict vocabularies of the checks: what a cross-check of one valence returns, and Reif's C1 test's verdicts.
 
-The numeric check (:mod:`.numeric`) and the certified one (:mod:`.certify`) share this
-wrapper, so that the command line reads both the same way.
+The numeric check (:mod:`.numeric`) and the certified one (:mod:`.certify`) share the
+wrapper :class:`CrossCheckResult`, so that the command line reads both the same way. The C1
+test (:mod:`.c1`, and its spectral part in :mod:`.c1_spectrum`) reports a :class:`C1Verdict`.
 """
 
 from __future__ import annotations
@@ -10,7 +11,25 @@ import enum
 from dataclasses import dataclass
 from typing import ClassVar
 
-__all__ = ["CrossCheckStatus", "CrossCheckResult"]
+__all__ = ["C1Verdict", "CrossCheckStatus", "CrossCheckResult"]
+
+
+class C1Verdict(str, enum.Enum):
+    """The verdict of Reif's C1 test at one valence (:func:`symdecomp.verify.c1.c1_test`), printed and in JSON as its value.
+
+    The spectral part alone (:func:`symdecomp.verify.c1_spectrum.spectral_conditions`) uses the same
+    words: ``C1`` there means that the spectral conditions hold, so the characteristic map decides.
+    """
+
+    #: Every condition is certified.
+    C1 = "c1"
+    #: A condition is shown to fail (the reason names it, with its numbers).
+    NOT_C1 = "not-c1"
+    #: Neither (the reason says what would decide).
+    UNDECIDED = "undecided"
+
+    def __str__(self) -> str:
+        return self.value
 
 
 class CrossCheckStatus(str, enum.Enum):

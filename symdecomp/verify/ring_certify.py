@@ -44,8 +44,9 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
+from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_sympy
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_charpoly import _fmpq, product_identity
+from symdecomp.analysis.ring_charpoly import product_identity
 from symdecomp.analysis.ring_spectrum import frequency_factors, ring_spectrum
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
@@ -111,7 +112,7 @@ def _distinct(scheme, blocks, n, chis, free, fixed) -> int | None:
     weights = {**fixed, **{s: sp.Integer(0) for s in free}}
     E0 = blocks.frequency_zero_matrix(n, symbolic_weights=True).xreplace(weights)
     f0 = sp.Poly((LAM * sp.eye(E0.shape[0]) - E0).det(method="berkowitz"), LAM)
-    R, rem = divmod(chis[0], flint.fmpq_poly([_fmpq(c) for c in reversed(f0.all_coeffs())]))
+    R, rem = divmod(chis[0], flint.fmpq_poly([to_fmpq(c) for c in reversed(f0.all_coeffs())]))
     if rem != 0:  # pragma: no cover - the identity was proved above
         return None
     field = CyclotomicField(2 * n)
@@ -133,7 +134,7 @@ def _distinct(scheme, blocks, n, chis, free, fixed) -> int | None:
             continue
         acc = field(0)
         for c in reversed(R.coeffs()):
-            acc = acc * r + field(Fraction(int(c.p), int(c.q)))
+            acc = acc * r + field(to_fraction(c))
         if acc.poly != 0:
             new.append(r)
     return _squarefree_degree(R) + len(new)
@@ -279,14 +280,13 @@ def _same(a, b) -> bool:
     """Exact equality of two entries (``Fraction`` or sympy, linear in the centre-weight symbols)."""
     if isinstance(a, (int, Fraction)) and isinstance(b, (int, Fraction)):
         return a == b
-    to_sympy = lambda x: sp.Rational(x.numerator, x.denominator) if isinstance(x, (int, Fraction)) else x  # noqa: E731
     return sp.expand(to_sympy(a) - to_sympy(b)) == 0
 
 
 def _exact(x, fixed: dict):
     """A block entry with the fixed centre weights substituted: ``Fraction`` when rational, else sympy."""
     x = sp.expand(sp.sympify(x, strict=True).xreplace(fixed))
-    return Fraction(int(x.p), int(x.q)) if x.is_Rational else x
+    return to_fraction(x) if x.is_Rational else x
 
 
 def _expected_row(blocks: RingBlocks, n: int, K: int, i: int, fixed: dict, cache: dict) -> dict:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import importlib
 
-__all__ = ["new_figure", "require_matplotlib"]
+__all__ = ["new_figure", "label_axes", "require_matplotlib"]
 
 
 def require_matplotlib():
@@ -28,3 +28,12 @@ def new_figure(width: float, height: float):
     from matplotlib.figure import Figure
 
     return Figure(figsize=(width, height), layout="constrained")
+
+
+def label_axes(ax, xlabel: str, ylabel: str, title: str, **legend) -> None:
+    """The house style of a panel: axis labels, a title, a small legend (``legend``: more options) and a light grid."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8, **legend)
+    ax.grid(alpha=0.3)

@@ -16,7 +16,7 @@ import numpy as np
 import sympy as sp
 
 from symdecomp.analysis.spectrum import recursion_eigenvalues
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import NotApplicableError
 from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
@@ -116,7 +116,7 @@ def vertex_weight_sweep_figure(scheme: Scheme, n: int, parameter: sp.Symbol, val
     values = [sp.sympify(t, strict=True) for t in values]
     missing = set(scheme.parameters) - set(fixed) - {parameter}
     if missing:
-        raise InvalidSchemeError(f"give values for the scheme's other free parameters {sorted(map(str, missing))} in fixed=")
+        raise NotApplicableError(f"give values for the scheme's other free parameters {sorted(map(str, missing))} in fixed=")
     S = subdivision_matrix(scheme, n)
     moving = [e.subs({N: n, **fixed}) for e in recursion_eigenvalues(scheme)[1:]]
     fig = new_figure(11, 5.4)

@@ -23,6 +23,7 @@ from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
 from symdecomp.verify.c1 import c1_test, characteristic_nets
+from symdecomp.verify.result import C1Verdict
 
 __all__ = ["ring_curves", "characteristic_map_figure"]
 
@@ -95,7 +96,7 @@ def characteristic_map_figure(scheme: Scheme, valences=(3, 5, 16), *, samples: i
     axes = fig.subplots(1, len(valences), squeeze=False)[0]
     for ax, n in zip(axes, valences):
         result = c1_test(scheme, n)
-        if result.spectral.status != "ok":
+        if result.spectral.status is not C1Verdict.C1:
             ax.set_title(f"n = {n}: {result.verdict}")
             ax.text(0.5, 0.5, "no characteristic map:\n" + result.reason[:60], ha="center", va="center", transform=ax.transAxes, fontsize=7)
             ax.set_xlabel("x")

@@ -12,7 +12,7 @@ import numpy as np
 
 from symdecomp.analysis.evolution import EllipticProfile, ring_polygon, split_ring
 from symdecomp.errors import InvalidInputError
-from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.output.plotting._mpl import label_axes, new_figure
 from symdecomp.output.plotting.polygons import _few_ticks, draw_one_ring_3d, draw_polygon_3d, set_equal_3d
 
 __all__ = [
@@ -196,11 +196,7 @@ def hyperbolic_rates_figure(scheme, valences: Iterable[int]):
     ax = fig.add_subplot()
     ax.plot(ns, lam1_sq, marker="s", ms=4, label=r"$\lambda_1^2$")
     ax.plot(ns, m2, marker="o", ms=4, label=r"largest eigenvalue of $M_2$ (hyperbolic components)")
-    ax.set_xlabel("valence n")
-    ax.set_ylabel("eigenvalue")
-    ax.set_title(f"{scheme.name}: hyperbolic rate against the square of the tangent-plane rate")
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3)
+    label_axes(ax, "valence n", "eigenvalue", f"{scheme.name}: hyperbolic rate against the square of the tangent-plane rate")
     return fig
 
 
@@ -217,20 +213,12 @@ def defect_figure(rows, *, title: str = "How far Catmull-Clark is from nice elli
     left.plot(ns, [float(r.lambda1_squared) for r in rows], marker="s", ms=4, label=r"$\lambda_1^2$ (Eq. 34)")
     left.plot(ns, [float(r.eigenvalue_defect) for r in rows], color="C3", ls="--", label=r"defect $\mu - \lambda_1^2$")
     left.axhline(0, color="0.6", lw=0.8)
-    left.set_xlabel("valence n")
-    left.set_ylabel("eigenvalue")
-    left.set_title(r"Condition 1: $\mu = \lambda_1^2$")
-    left.legend(fontsize=8)
-    left.grid(alpha=0.3)
+    label_axes(left, "valence n", "eigenvalue", r"Condition 1: $\mu = \lambda_1^2$")
     right.plot(ns, [float(r.eq44_ratio) for r in rows], marker="o", ms=4, label=r"$d_b/d_a$ (Eq. 44)")
     right.plot(ns, [float(r.scale_ratio_squared) for r in rows], marker="s", ms=4, label=r"$|B^1/A^1|^2$ (Eq. 39 squared)")
     right.plot(ns, [float(r.ratio_defect) for r in rows], color="C3", ls="--", label="defect (difference)")
     right.axhline(0, color="0.6", lw=0.8)
-    right.set_xlabel("valence n")
-    right.set_ylabel("ratio")
-    right.set_title("Condition 2: Eq. 44 = squared scale ratio")
-    right.legend(fontsize=8)
-    right.grid(alpha=0.3)
+    label_axes(right, "valence n", "ratio", "Condition 2: Eq. 44 = squared scale ratio")
     fig.suptitle(title)
     return fig
 

@@ -11,7 +11,7 @@ from collections.abc import Iterable
 import numpy as np
 
 from symdecomp.algebra.circulant import fourier_matrix
-from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.output.plotting._mpl import label_axes, new_figure
 from symdecomp.validate import check_valence
 
 __all__ = [
@@ -208,11 +208,7 @@ def ring_split_figure(rings, *, titles=None, suptitle: str = "A planar 2n-gon sp
         heights.scatter(np.full(len(a), k - 0.08), a[:, 2], color="C0", marker="o", s=14, label="a's" if k == 0 else None)
         heights.scatter(np.full(len(b), k + 0.08), b[:, 2], color="C3", marker="s", s=14, label="b's" if k == 0 else None)
     heights.set_xticks(range(len(rings)), titles, fontsize=8)
-    heights.set_xlabel("ring")
-    heights.set_ylabel("height z")
-    heights.set_title("Heights of O, the a's and the b's")
-    heights.legend(fontsize=8)
-    heights.grid(alpha=0.3)
+    label_axes(heights, "ring", "height z", "Heights of O, the a's and the b's")
     fig.suptitle(suptitle)
     return fig
 

@@ -18,8 +18,8 @@ from symdecomp.algebra.circulant import fourier_matrix
 from symdecomp.analysis.evolution import one_ring, subdivide_ring
 from symdecomp.analysis.frequency import per_frequency_matrix_at
 from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.errors import InvalidSchemeError
-from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.errors import NotApplicableError
+from symdecomp.output.plotting._mpl import label_axes, new_figure
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import omega as OMEGA
@@ -40,7 +40,7 @@ def _closed_form_curves(scheme: Scheme, samples: int = 401):
     """The two closed-form eigenvalues of Eq. 34 sampled over ``x = j/n`` in ``[0, 1]``."""
     ev = tangent_eigenvalues(scheme)
     if scheme.parameters:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {list(scheme.parameters)}; substitute them first")
+        raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {list(scheme.parameters)}; substitute them first")
     x = np.linspace(0.0, 1.0, samples)
     curves = []
     for expr in (ev.dominant, ev.subdominant):
@@ -91,11 +91,8 @@ def tangent_eigenvalues_figure(scheme: Scheme, valences: Iterable[int] = (3, 4, 
         shown, _ = _real_or_modulus(vals)
         left.scatter(np.repeat(js / n, 2), shown.ravel(), marker=markers[k % len(markers)], s=28, zorder=3,
                      label=f"$M_j$, n = {n}", facecolors="none", edgecolors=f"C{k}")
-    left.set_xlabel(r"$j/n$   ($c = \cos(j\pi/n)$)")
-    left.set_ylabel("|eigenvalue|" if modulus else "eigenvalue")
-    left.set_title(r"Eigenvalues of $M_j$: closed form (lines) and exact matrices (markers)")
-    left.legend(fontsize=8, ncol=2)
-    left.grid(alpha=0.3)
+    label_axes(left, r"$j/n$   ($c = \cos(j\pi/n)$)", "|eigenvalue|" if modulus else "eigenvalue",
+               r"Eigenvalues of $M_j$: closed form (lines) and exact matrices (markers)", ncol=2)
 
     lam1 = []
     for n in sweep:
@@ -106,11 +103,7 @@ def tangent_eigenvalues_figure(scheme: Scheme, valences: Iterable[int] = (3, 4, 
     right.scatter([], [], color="0.6", s=10, label=r"eigenvalues of $M_1, \dots, M_{n-1}$")
     right.plot(sweep, lam1, color="C3", marker="o", ms=4, label=r"$\lambda_1$ (largest, of $M_1$)")
     right.plot(sweep, np.square(lam1), color="C0", ls="--", label=r"$\lambda_1^2$")
-    right.set_xlabel("valence n")
-    right.set_ylabel("|eigenvalue|")
-    right.set_title(r"All eigenvalues of $M_j$, $j = 1..n-1$, by valence")
-    right.legend(fontsize=8)
-    right.grid(alpha=0.3)
+    label_axes(right, "valence n", "|eigenvalue|", r"All eigenvalues of $M_j$, $j = 1..n-1$, by valence")
     fig.suptitle(f"{scheme.name}: the per-frequency matrices $M_j$ (Eq. 33)")
     return fig
 

@@ -11,6 +11,8 @@ The bridge is a small C++ library (``osd_bridge.cpp``) built with the system g++
 ``python symdecomp/verify/opensubdiv/build.py`` (CI does this). :func:`bridge_available` says whether
 it can be used; :func:`load_bridge` builds it on demand when the compiler and the OpenSubdiv
 headers are present. Nothing else in symdecomp needs it.
+
+The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """
 
 from __future__ import annotations
@@ -21,15 +23,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symdecomp.errors import InternalError, InvalidInputError, SymdecompError, UnavailableError
+from symdecomp.errors import BridgeUnavailableError, InternalError, InvalidInputError, SymdecompError
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.verify.opensubdiv import build as _build
 
 __all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings", "osd_limit_points"]
-
-
-class BridgeUnavailableError(UnavailableError):
-    """The OpenSubdiv bridge is not built and cannot be built here (no g++ or no OpenSubdiv)."""
 
 
 _lock = threading.Lock()

@@ -28,6 +28,8 @@ LIBRARY = BUILD_DIR / "libsymdecomp_osd.so"
 HEADER = "opensubdiv/far/primvarRefiner.h"
 
 
+# Not in symdecomp.errors: this script runs stand-alone with the standard library only (before the
+# package is installed); the loader turns it into BridgeUnavailableError.
 class BridgeBuildError(RuntimeError):
     """g++ or OpenSubdiv is missing, or compiling the bridge failed."""
 

@@ -12,8 +12,9 @@ from __future__ import annotations
 
 import ctypes
 
+from symdecomp.errors import BridgeUnavailableError
 from symdecomp.schemes.trimesh import TriangleMesh, triangle_ring_mesh
-from symdecomp.verify.opensubdiv import BridgeUnavailableError, load_bridge
+from symdecomp.verify.opensubdiv import load_bridge
 
 __all__ = ["osd_loop_step", "osd_loop_one_ring_matrix", "osd_loop_position_mask", "osd_loop_tangent_masks"]
 

@@ -55,10 +55,11 @@ bool face_has(Far::TopologyLevel const &level, Far::Index f, Far::Index v) {
 
 }  // namespace
 
-// A refiner for a mesh of `per_face`-gons under `scheme` (boundary: edges only), or nullptr
+// A refiner for a mesh of `per_face`-gons under `scheme` (boundary: edges only), refined uniformly
+// `levels` times with the full topology in the last level (the limit masks need it), or nullptr
 // with the message in `error` when OpenSubdiv rejects the topology.
 static std::unique_ptr<Far::TopologyRefiner> make_refiner(Sdc::SchemeType scheme, int per_face, int n_vertices, int n_faces,
-                                                          const int *face_vertices, char *error, int error_len) {
+                                                          const int *face_vertices, int levels, char *error, int error_len) {
     std::vector<int> verts_per_face(static_cast<size_t>(n_faces), per_face);
     Far::TopologyDescriptor desc;
     desc.numVertices = n_vertices;
@@ -73,7 +74,54 @@ static std::unique_ptr<Far::TopologyRefiner> make_refiner(Sdc::SchemeType scheme
         set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
         return nullptr;
     }
+    Far::TopologyRefiner::UniformOptions uniform(levels);
+    uniform.fullTopologyInLastLevel = true;
+    refiner->RefineUniform(uniform);
     return refiner;
+}
+
+// Room for the points of every level, the base level's filled from `positions` (3 doubles each).
+static std::vector<Point> base_points(Far::TopologyRefiner const &refiner, int n_vertices, const double *positions) {
+    std::vector<Point> buffer(static_cast<size_t>(refiner.GetNumVerticesTotal()));
+    for (int v = 0; v < n_vertices; ++v) {
+        for (int c = 0; c < 3; ++c) buffer[v].p[c] = positions[3 * v + c];
+    }
+    return buffer;
+}
+
+// Interpolate the base points of `buffer` through levels 1..levels; returns where each level starts.
+static std::vector<Point *> interpolate(Far::TopologyRefiner const &refiner, Far::PrimvarRefinerReal<double> const &primvar,
+                                        std::vector<Point> &buffer, int levels) {
+    std::vector<Point *> level_start(static_cast<size_t>(levels) + 1);
+    level_start[0] = buffer.data();
+    for (int level = 1; level <= levels; ++level) {
+        level_start[level] = level_start[level - 1] + refiner.GetLevel(level - 1).GetNumVertices();
+        primvar.Interpolate(level, level_start[level - 1], level_start[level]);
+    }
+    return level_start;
+}
+
+// True, with OpenSubdiv's message in `error`, when OpenSubdiv reported an error since the call began.
+static bool osd_error(char *error, int error_len) {
+    if (osd_failed) set_error(error, error_len, last_osd_error);
+    return osd_failed;
+}
+
+// Run an entry point's body with OpenSubdiv's errors recorded, and any C++ exception turned into
+// return code 9 with its message in `error` (nothing may propagate through the C interface).
+template <typename Body>
+static int guarded(char *error, int error_len, Body body) {
+    try {
+        osd_failed = false;
+        Far::SetErrorCallback(record_error);
+        return body();
+    } catch (std::exception const &exc) {
+        set_error(error, error_len, exc.what());
+        return 9;
+    } catch (...) {
+        set_error(error, error_len, "unknown C++ exception");
+        return 9;
+    }
 }
 
 extern "C" {
@@ -91,34 +139,17 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
                               const double *positions, int center, int n, const int *ring_a,
                               const int *ring_faces, int levels, double *rings_out,
                               double *limit_out, char *error, int error_len) {
-    try {
-        osd_failed = false;
-        Far::SetErrorCallback(record_error);
+    return guarded(error, error_len, [&]() -> int {
         if (n_vertices <= 0 || n_faces <= 0 || n < 3 || levels < 0) {
             set_error(error, error_len, "bad sizes");
             return 1;
         }
         std::unique_ptr<Far::TopologyRefiner> refiner =
-            make_refiner(Sdc::SCHEME_CATMARK, 4, n_vertices, n_faces, face_vertices, error, error_len);
+            make_refiner(Sdc::SCHEME_CATMARK, 4, n_vertices, n_faces, face_vertices, levels, error, error_len);
         if (!refiner) return 2;
-        Far::TopologyRefiner::UniformOptions uniform(levels);
-        uniform.fullTopologyInLastLevel = true;  // the limit mask needs the last level's full topology
-        refiner->RefineUniform(uniform);
-
-        std::vector<Point> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-        for (int v = 0; v < n_vertices; ++v) {
-            for (int c = 0; c < 3; ++c) buffer[v].p[c] = positions[3 * v + c];
-        }
-        std::vector<Point *> level_start(static_cast<size_t>(levels) + 1);
-        Point *src = buffer.data();
-        level_start[0] = src;
+        std::vector<Point> buffer = base_points(*refiner, n_vertices, positions);
         Far::PrimvarRefinerReal<double> primvar(*refiner);
-        for (int level = 1; level <= levels; ++level) {
-            Point *dst = src + refiner->GetLevel(level - 1).GetNumVertices();
-            primvar.Interpolate(level, src, dst);
-            src = dst;
-            level_start[level] = dst;
-        }
+        std::vector<Point *> level_start = interpolate(*refiner, primvar, buffer, levels);
 
         std::vector<int> a(ring_a, ring_a + n), faces(ring_faces, ring_faces + n);
         int o = center;
@@ -175,19 +206,10 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
         std::vector<Point> limit(static_cast<size_t>(refiner->GetLevel(levels).GetNumVertices()));
         Point *limit_dst = limit.data();
         primvar.Limit(level_start[levels], limit_dst);
-        if (osd_failed) {
-            set_error(error, error_len, last_osd_error);
-            return 6;
-        }
+        if (osd_error(error, error_len)) return 6;
         for (int c = 0; c < 3; ++c) limit_out[c] = limit[o].p[c];
         return 0;
-    } catch (std::exception const &exc) {
-        set_error(error, error_len, exc.what());
-        return 9;
-    } catch (...) {
-        set_error(error, error_len, "unknown C++ exception");
-        return 9;
-    }
+    });
 }
 
 }  // extern "C"
@@ -199,43 +221,27 @@ int symdecomp_osd_refine_ring(int n_vertices, int n_faces, const int *face_verti
 static int limit_points(Sdc::SchemeType scheme, int verts_per_face_count, int n_vertices, int n_faces,
                         const int *face_vertices, const double *positions, int levels, int capacity,
                         int *count, double *points_out, double *limits_out, char *error, int error_len) {
-    try {
-        osd_failed = false;
-        Far::SetErrorCallback(record_error);
+    return guarded(error, error_len, [&]() -> int {
         if (n_vertices <= 0 || n_faces <= 0 || levels < 0) {
             set_error(error, error_len, "bad sizes");
             return 1;
         }
         std::unique_ptr<Far::TopologyRefiner> refiner =
-            make_refiner(scheme, verts_per_face_count, n_vertices, n_faces, face_vertices, error, error_len);
+            make_refiner(scheme, verts_per_face_count, n_vertices, n_faces, face_vertices, levels, error, error_len);
         if (!refiner) return 2;
-        Far::TopologyRefiner::UniformOptions uniform(levels);
-        uniform.fullTopologyInLastLevel = true;
-        refiner->RefineUniform(uniform);
         const int last = refiner->GetLevel(levels).GetNumVertices();
         *count = last;
         if (last > capacity) {
             set_error(error, error_len, "output capacity too small");
             return 7;
         }
-        std::vector<Point> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-        for (int v = 0; v < n_vertices; ++v) {
-            for (int c = 0; c < 3; ++c) buffer[v].p[c] = positions[3 * v + c];
-        }
+        std::vector<Point> buffer = base_points(*refiner, n_vertices, positions);
         Far::PrimvarRefinerReal<double> primvar(*refiner);
-        Point *src = buffer.data();
-        for (int level = 1; level <= levels; ++level) {
-            Point *dst = src + refiner->GetLevel(level - 1).GetNumVertices();
-            primvar.Interpolate(level, src, dst);
-            src = dst;
-        }
+        Point *src = interpolate(*refiner, primvar, buffer, levels).back();
         std::vector<Point> limit(static_cast<size_t>(last));
         Point *limit_dst = limit.data();
         primvar.Limit(src, limit_dst);
-        if (osd_failed) {
-            set_error(error, error_len, last_osd_error);
-            return 6;
-        }
+        if (osd_error(error, error_len)) return 6;
         for (int v = 0; v < last; ++v) {
             for (int c = 0; c < 3; ++c) {
                 points_out[3 * v + c] = src[v].p[c];
@@ -243,13 +249,7 @@ static int limit_points(Sdc::SchemeType scheme, int verts_per_face_count, int n_
             }
         }
         return 0;
-    } catch (std::exception const &exc) {
-        set_error(error, error_len, exc.what());
-        return 9;
-    } catch (...) {
-        set_error(error, error_len, "unknown C++ exception");
-        return 9;
-    }
+    });
 }
 
 extern "C" {
@@ -288,36 +288,24 @@ extern "C" {
 int symdecomp_osd_loop_step(int n_vertices, int n_faces, const int *face_vertices, const double *positions,
                             int n_edges, const int *edges, double *vertex_out, double *edge_out,
                             double *limit_out, double *tan1_out, double *tan2_out, char *error, int error_len) {
-    try {
-        osd_failed = false;
-        Far::SetErrorCallback(record_error);
+    return guarded(error, error_len, [&]() -> int {
         if (n_vertices <= 0 || n_faces <= 0 || n_edges < 0) {
             set_error(error, error_len, "bad sizes");
             return 1;
         }
         std::unique_ptr<Far::TopologyRefiner> refiner =
-            make_refiner(Sdc::SCHEME_LOOP, 3, n_vertices, n_faces, face_vertices, error, error_len);
+            make_refiner(Sdc::SCHEME_LOOP, 3, n_vertices, n_faces, face_vertices, 1, error, error_len);
         if (!refiner) return 2;
-        Far::TopologyRefiner::UniformOptions uniform(1);
-        uniform.fullTopologyInLastLevel = true;
-        refiner->RefineUniform(uniform);
-        std::vector<Point> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-        for (int v = 0; v < n_vertices; ++v) {
-            for (int c = 0; c < 3; ++c) buffer[v].p[c] = positions[3 * v + c];
-        }
-        Point *fine = buffer.data() + n_vertices;
+        std::vector<Point> buffer = base_points(*refiner, n_vertices, positions);
         Far::PrimvarRefinerReal<double> primvar(*refiner);
-        primvar.Interpolate(1, buffer.data(), fine);
+        Point *fine = interpolate(*refiner, primvar, buffer, 1)[1];
         size_t fine_count = static_cast<size_t>(refiner->GetLevel(1).GetNumVertices());
         std::vector<Point> limit(fine_count), tan1(fine_count), tan2(fine_count);
         Point *limit_dst = limit.data();
         Point *tan1_dst = tan1.data();
         Point *tan2_dst = tan2.data();
         primvar.Limit(fine, limit_dst, tan1_dst, tan2_dst);
-        if (osd_failed) {
-            set_error(error, error_len, last_osd_error);
-            return 6;
-        }
+        if (osd_error(error, error_len)) return 6;
         Far::TopologyLevel const &base = refiner->GetLevel(0);
         for (int v = 0; v < n_vertices; ++v) {
             Far::Index child = base.GetVertexChildVertex(v);
@@ -338,13 +326,7 @@ int symdecomp_osd_loop_step(int n_vertices, int n_faces, const int *face_vertice
             for (int c = 0; c < 3; ++c) edge_out[3 * i + c] = fine[child].p[c];
         }
         return 0;
-    } catch (std::exception const &exc) {
-        set_error(error, error_len, exc.what());
-        return 9;
-    } catch (...) {
-        set_error(error, error_len, "unknown C++ exception");
-        return 9;
-    }
+    });
 }
 
 }  // extern "C"

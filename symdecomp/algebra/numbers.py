@@ -1,0 +1,85 @@
+"""Conversions between the exact number types the package computes with: one home for each of them.
+
+The same rational number travels as a sympy ``Rational`` (symbolic work), a ``fractions.Fraction``
+(exact arithmetic in pure Python: meshes, small matrices), a FLINT ``fmpq`` (fast exact linear
+algebra and polynomials), an Arb ball (certified interval arithmetic) or an mpmath number (the
+numeric cross-checks). Each function here takes any exact rational (``int``, ``Fraction``, sympy
+``Rational``/``Integer``, FLINT ``fmpq``/``fmpz``) and returns one type:
+
+=================  =========================================================================
+:func:`to_fraction`  ``fractions.Fraction``
+:func:`to_fmpq`      ``flint.fmpq``
+:func:`to_sympy`     sympy ``Rational`` (any other sympy object is returned as it is)
+:func:`to_arb`       ``flint.arb`` (exact when the denominator is a power of 2; an ``arb`` is returned as it is)
+:func:`to_mpf`       ``mpmath.mpf`` at the current mpmath precision
+=================  =========================================================================
+
+Floats are refused (exact means exact): :class:`~symdecomp.errors.InvalidInputError` names the value.
+
+>>> to_fmpq(sp.Rational(3, 8)), to_fraction(flint.fmpq(3, 8)), to_sympy(Fraction(3, 8))
+(3/8, Fraction(3, 8), 3/8)
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import flint
+import mpmath
+import sympy as sp
+
+from symdecomp.errors import InvalidInputError
+
+__all__ = ["to_fraction", "to_fmpq", "to_sympy", "to_arb", "to_mpf", "numerator_denominator"]
+
+
+def numerator_denominator(x) -> tuple[int, int]:
+    """``(p, q)`` as Python integers, ``q > 0``, for an exact rational ``x`` (see the module docstring)."""
+    if isinstance(x, bool):
+        return int(x), 1
+    if isinstance(x, int):
+        return x, 1
+    if isinstance(x, Fraction):
+        return x.numerator, x.denominator
+    if isinstance(x, sp.Rational):  # sympy Integer too
+        return int(x.p), int(x.q)
+    if isinstance(x, flint.fmpq):
+        return int(x.p), int(x.q)
+    if isinstance(x, flint.fmpz):
+        return int(x), 1
+    raise InvalidInputError(f"expected an exact rational number, got {x!r} ({type(x).__name__})")
+
+
+def to_fraction(x) -> Fraction:
+    """``x`` as a ``fractions.Fraction``."""
+    if isinstance(x, Fraction):
+        return x
+    return Fraction(*numerator_denominator(x))
+
+
+def to_fmpq(x) -> flint.fmpq:
+    """``x`` as a FLINT ``fmpq``."""
+    if isinstance(x, flint.fmpq):
+        return x
+    return flint.fmpq(*numerator_denominator(x))
+
+
+def to_sympy(x) -> sp.Expr:
+    """``x`` as a sympy ``Rational``; a sympy object is returned as it is (an expression in ``n``, say)."""
+    if isinstance(x, sp.Basic):
+        return x
+    return sp.Rational(*numerator_denominator(x))
+
+
+def to_arb(x) -> flint.arb:
+    """``x`` as an Arb ball at the current FLINT precision; an ``arb`` is returned as it is."""
+    if isinstance(x, flint.arb):
+        return x
+    p, q = numerator_denominator(x)
+    return flint.arb(p) / q
+
+
+def to_mpf(x) -> mpmath.mpf:
+    """``x`` as an mpmath number, correctly rounded at the current mpmath precision."""
+    p, q = numerator_denominator(x)
+    return mpmath.mpf(p) / q

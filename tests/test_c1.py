@@ -164,7 +164,7 @@ def test_alpha_beta_zero_at_valence_3_is_not_c1_and_names_frequency_0():
 
 
 def test_the_test_and_its_spectral_part_speak_one_verdict_vocabulary():
-    broken, standard = c1_test(catmull_clark(0, 0), 3), c1_test(catmull_clark(), 3)
+    broken, standard = c1_test(tuned(0, 0, 3), 3), c1_test(catmull_clark(), 3)
     assert (broken.verdict, broken.spectral.status) == (C1Verdict.NOT_C1, C1Verdict.NOT_C1)  # fails at frequency 0
     assert (standard.verdict, standard.spectral.status) == (C1Verdict.C1, C1Verdict.C1)
     assert [json.loads(json.dumps(r.as_json()))["verdict"] for r in (broken, standard)] == ["not-c1", "c1"]

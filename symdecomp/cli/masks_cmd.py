@@ -26,6 +26,7 @@ from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
 from symdecomp.errors import SymdecompError
 from symdecomp.verify.c1_spectrum import spectral_conditions
+from symdecomp.verify.result import C1Verdict
 
 
 def register(sub) -> None:
@@ -51,9 +52,9 @@ def _subdominance(args) -> tuple[bool, str]:
         r = spectral_conditions(args.scheme, args.n, one_ring=True)
     except SymdecompError as exc:
         return False, f"not certified: {exc}"
-    if r.status == "ok" and r.subdominant is not None and r.subdominant.frequency == 1:
+    if r.status is C1Verdict.C1 and r.subdominant is not None and r.subdominant.frequency == 1:
         return True, r.reason
-    if r.status == "ok":
+    if r.status is C1Verdict.C1:
         return False, f"the subdominant eigenvalue is at frequency {r.subdominant.frequency}, not 1: {r.reason}"
     return False, r.reason
 

@@ -406,6 +406,7 @@ PANEL_MORE = {
     ("1-ring suffices (after Eq. 51)", "midpoint edges"): P,
     ("Tuning weights (after Eq. 51)", "loop file"): NA,
     ("Tuning and multiplicities (after Eq. 51)", "loop file"): NA,
+    ("Spectrum (Eq. 34, Eq. 43)", "loop file"): NA,  # a requirement: the quad 1-ring (face neighbours b_i)
 }
 
 #: The schemes no file can be: their flips do not count as flips by a file.
@@ -469,25 +470,26 @@ WRONG_TODAY = [
      "status error ('a step of the closed form failed'): M(omega) is triangular, so c_+ = c_- = 0 and the check divides "
      "by c_+; the closed form still holds (rho_+ = c_0, rho_- = 0: rho_+^n + rho_-^n = c_0^n = prod_k q(x, omega^k))"),
     ("Proposition 5.1", "frequency two", R,
-     "status error (UnsupportedExpressionError: n in a closed form with arb) for an n-dependent edge rule; at n = 5 the "
+     "status not applicable (the check reads M_j's eigenvalues as closed forms in c alone; it was an error before) for "
+     "an n-dependent edge rule; at n = 5 the "
      "frequency 2 eigenvalue 0.713 exceeds frequency 1's, so the claim is false"),
     ("Section 5.3: smaller eigenvalues", "frequency two", R,
-     "status error (TypeError comparing a non-real number) for an n-dependent edge rule; at n = 5 the frequency 2 "
+     "status not applicable (closed forms in c alone; it was an error, comparing a non-real number) for an "
+     "n-dependent edge rule; at n = 5 the frequency 2 "
      "eigenvalue is the largest, so the hyperbolic components are not smaller"),
     ("Section 5.3: construction", "frequency two", P,
-     "status error (TypeError: invalid input n/4 - 5/8) for an n-dependent edge rule; the construction only uses the "
+     "status not applicable (closed forms in c alone; it was an error before) for an n-dependent edge rule; the "
+     "construction only uses the "
      "frequency decomposition, which holds for every file"),
     ("Tangent plane unaffected (after Eq. 51)", "frequency two", C,
-     "status error (UnsupportedExpressionError: n with arb) for an n-dependent edge rule; vertex weight -1 still lifts "
+     "status not applicable (closed forms in c alone; it was an error before) for an n-dependent edge rule; vertex "
+     "weight -1 still lifts "
      "an E_0 eigenvalue above lambda_1"),
     ("1-ring suffices (after Eq. 51)", "singular M", P,
      "status verified, valences (3, 5), but the left eigenvector of lambda_1 was computed at n = 4 only (scope wider "
      "than the evidence); the proof fails only because the 3-ring resultant vanishes identically: M(omega) is singular "
      "for every omega, and the shared root is 0 (the 3-ring's new eigenvalue), never lambda_1; the 2-ring resultant "
      "has no root on the unit circle, so the proof goes through for every n"),
-    ("Spectrum (Eq. 34, Eq. 43)", "loop file", NA,
-     "status error (AttributeError: 'NoneType' object has no attribute 'a'): Loop has no face rule, so the quad "
-     "factorization is not applicable, as for Eq. 51 and the tuning claims"),
 ]
 
 

@@ -270,3 +270,30 @@ def test_a_file_whose_rules_are_undefined_at_the_regular_valence_is_refused_when
     path.write_text(text)
     assert main(["spectrum", "5", "--scheme", str(path)]) == 2
     assert "regular valence" in capsys.readouterr().err
+
+
+# --- 7. the corpus: every file ends within its budgets, with no error -----------------------------------------------
+
+CORPUS = sorted((__import__("pathlib").Path(__file__).parent / "corpus").glob("*.toml"))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("path", CORPUS, ids=[p.stem for p in CORPUS])
+def test_claims_on_every_corpus_file_end_within_the_budget_with_no_error(path, capsys):
+    import json
+
+    budget = 30
+    start = time.monotonic()
+    code = main(["claims", "--scheme", str(path), "--json", "--budget", str(budget)])
+    elapsed = time.monotonic() - start
+    rows = json.loads(capsys.readouterr().out)
+    assert code == 0 and not [r["label"] for r in rows if r["status"] == "error"]
+    assert elapsed < len(rows) * budget
+    for r in rows:  # a verdict, or a reason for none
+        assert r["status"] != "undecided" or r["evidence"]
+
+
+def test_the_corpus_is_there_and_every_file_reads():
+    assert len(CORPUS) >= 10
+    for path in CORPUS:
+        scheme_from_text(path.read_text(), source=path.name)

@@ -7,6 +7,11 @@ meet one (instead of failing inside sympy, or repeating the same guard in every 
 * :data:`MIRROR_SYMMETRIC`: Section 5 writes its closed forms in ``c = cos(j pi/n)``, which needs
   mirror-symmetric rules (the weight on ``a_{i+k}`` equal to that on ``a_{i-k}`` and so on, so that
   ``M_j`` depends on ``c`` alone); the reason names the term that breaks it.
+* :data:`COSINE_ONLY`: some checks order the eigenvalues of ``M_j`` or evaluate them in intervals from
+  their closed forms in ``c`` alone, which needs edge and face rules that do not depend on the valence
+  ``n`` (otherwise ``n`` enters ``M_j`` beside ``c``); the reason names the term.
+* :data:`FACE_NEIGHBOURS`: statements about the ``(2n+1)``-point 1-ring of a quad mesh (the matrix of
+  Eq. 43, ``M_j`` of order 2) need a face rule.
 * :data:`NO_FREE_PARAMETERS`: checks that compute with the scheme's numbers (exact matrices at a
   valence, certified balls) need every weight to be a number at each valence.
 * :data:`WHOLE_MESH`: the supports of Section 3 live on whole quad meshes, so the 1-ring rules must
@@ -20,9 +25,10 @@ from symdecomp.claims.registry import Requirement, Text
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import mesh_rules
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import n as N
 from symdecomp.symbols import sin_jtheta as SIN
 
-__all__ = ["MIRROR_SYMMETRIC", "NO_FREE_PARAMETERS", "WHOLE_MESH"]
+__all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH"]
 
 
 def _mirror_asymmetry(scheme: Scheme) -> Text | None:
@@ -32,6 +38,24 @@ def _mirror_asymmetry(scheme: Scheme) -> Text | None:
         if expr.has(SIN):
             return Text("the closed forms of Section 5 are written in c = cos(j pi/n) and need mirror-symmetric rules; for this "
                         "scheme the ", name, " of M_j is ", expr, " (s = sin(j pi/n))")
+    return None
+
+
+def _valence_in_blocks(scheme: Scheme) -> Text | None:
+    """The trace or determinant of ``M_j`` when it depends on ``n`` besides ``c``, else ``None``."""
+    ev = tangent_eigenvalues(scheme)
+    for name, expr in (("trace", ev.trace), ("determinant", ev.determinant)):
+        if expr.has(N):
+            return Text("the check evaluates the eigenvalues of M_j from closed forms in c = cos(j pi/n) alone, and this "
+                        "scheme's edge or face rule depends on the valence: the ", name, " of M_j is ", expr)
+    return None
+
+
+def _no_face_rule(scheme: Scheme) -> str | None:
+    """Why a scheme without face neighbours is outside a statement about the quad 1-ring, or ``None``."""
+    if scheme.face_rule is None:
+        return (f"the statement is about the (2n+1)-point 1-ring of a quad mesh, and the scheme {scheme.name!r} has no face "
+                "neighbours b_i (a triangle mesh)")
     return None
 
 
@@ -53,6 +77,10 @@ def _not_mesh_rules(scheme: Scheme) -> str | None:
 
 #: Mirror-symmetric rules: ``M_j`` depends on ``c = cos(j pi/n)`` alone (Section 5's closed forms).
 MIRROR_SYMMETRIC = Requirement("mirror-symmetric rules", _mirror_asymmetry)
+#: Edge and face rules free of ``n``: ``M_j`` depends on ``c`` alone (checks that order or bound its eigenvalues).
+COSINE_ONLY = Requirement("edge and face rules that do not depend on n", _valence_in_blocks)
+#: A face rule: the quad 1-ring ``(O, a_i, b_i)`` of the paper.
+FACE_NEIGHBOURS = Requirement("a quad mesh (face neighbours b_i)", _no_face_rule)
 #: No free parameters: every weight is a number at each valence.
 NO_FREE_PARAMETERS = Requirement("no free parameters", _free_parameters)
 #: Rules of a whole quad mesh (Section 3's supports).

@@ -10,7 +10,7 @@ from symdecomp.analysis.dominance import tail_bound
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.claims.applicability import MIRROR_SYMMETRIC
+from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC
 from symdecomp.claims.evidence import at_valence, dominant_vs_frequency_zero, filtering_evidence, number, start_points
 from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
 from symdecomp.claims.notation import M as Mk
@@ -284,7 +284,7 @@ def _eq38(scheme: Scheme) -> CheckResult:
     section="5.1",
     title="$A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues",
     statement="The regular convex components $A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues.",
-    requires=(MIRROR_SYMMETRIC,),
+    requires=(MIRROR_SYMMETRIC, COSINE_ONLY,),
 )
 def _prop51(scheme: Scheme) -> CheckResult:
     ev = tangent_eigenvalues(scheme)

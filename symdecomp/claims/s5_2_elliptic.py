@@ -22,7 +22,7 @@ from symdecomp.analysis.elliptic import (
 from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim, is_zero
-from symdecomp.claims.applicability import MIRROR_SYMMETRIC
+from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC
 from symdecomp.claims.notation import A, B, M, eq, j, lambda_1, listed, ne, omega_2n, tup
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme
@@ -475,7 +475,7 @@ def _remark52_every_n(scheme: Scheme, lo: int) -> tuple[tuple[int, ...] | None, 
     title="Catmull-Clark is nicely elliptic only at $n = 4$",
     statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "
     r"does in the regular case $n = 4$.",
-    requires=(MIRROR_SYMMETRIC,),
+    requires=(MIRROR_SYMMETRIC, COSINE_ONLY,),
 )
 def _example(scheme: Scheme) -> CheckResult:
     cond = nice_elliptic_conditions(scheme)

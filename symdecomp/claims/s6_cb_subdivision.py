@@ -10,7 +10,7 @@ from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, v
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.tuning import with_free_vertex_rule
-from symdecomp.claims.applicability import MIRROR_SYMMETRIC
+from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC
 from symdecomp.claims.notation import eq, j, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s6_cb_matrices import _det, _nc
@@ -213,7 +213,7 @@ def _certainly_above(value: sp.Expr, bound: sp.Expr) -> bool:
     section="6",
     title="Tuning does not interfere with tangent-plane properties",
     statement=r"Hence $\alpha,\beta$ affect only elliptic properties of Catmull-Clark without interfering with tangent plane or hyperbolic properties.",
-    requires=(MIRROR_SYMMETRIC,),
+    requires=(MIRROR_SYMMETRIC, COSINE_ONLY,),
 )
 def _no_interference(scheme: Scheme) -> CheckResult:
     # the two weight-dependent eigenvalues are those of E_0; look for vertex weights that lift one above lambda_1

@@ -22,6 +22,7 @@ import sympy as sp
 from symdecomp.analysis.closed_forms import derived_closed_forms
 from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
+from symdecomp.claims.applicability import FACE_NEIGHBOURS
 from symdecomp.claims.notation import eq
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.schemes.scheme import Scheme
@@ -85,6 +86,7 @@ def _symbolic_chain(scheme: Scheme, sym) -> tuple[list[str], list[Step]]:
     statement=r"For every valence $n$, the eigenvalues of the $(2n+1)\times(2n+1)$ Catmull-Clark subdivision "
     r"matrix $S$, with their multiplicities, are the three eigenvalues of the matrix of Eq. 43 and the two "
     r"eigenvalues of $M_k$ given by Eq. 34 for $k = 1, \dots, n-1$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _full_spectrum(scheme: Scheme) -> CheckResult:
     cf = CLOSED_FORMS(scheme)

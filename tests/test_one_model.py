@@ -297,3 +297,20 @@ def test_the_corpus_is_there_and_every_file_reads():
     assert len(CORPUS) >= 10
     for path in CORPUS:
         scheme_from_text(path.read_text(), source=path.name)
+
+
+def test_no_verdict_rests_on_an_undefined_value(monkeypatch):
+    """A check whose counterexample holds nan (0/0) gets no verdict, whatever status it returned."""
+    from symdecomp.claims import CheckResult, Text, get_claim
+    from symdecomp.claims.registry import _run_check, undefined_values
+
+    assert undefined_values(Text("x = ", sp.nan)) == "nan" and undefined_values(Text("x = ", sp.Integer(0) / 1)) == ""
+    assert undefined_values(Text("", sp.Matrix([[1, sp.zoo]]))) == "zoo" and undefined_values(Text("", float("nan")))
+    from dataclasses import replace
+
+    from symdecomp.claims.registry import REGISTRY
+
+    fake = CheckResult(Status.REFUTED, "the component is", counterexample=Text("n = 3: ", sp.nan))
+    monkeypatch.setitem(REGISTRY, "Eq. 9", replace(get_claim("Eq. 9"), check=lambda scheme: fake))
+    r = _run_check("Eq. 9", catmull_clark())
+    assert r.status is Status.UNDECIDED and "undefined value (nan)" in str(r.evidence)

@@ -90,6 +90,7 @@ __all__ = [
     "DEFAULT_BUDGET",
     "time_budget",
     "unbound_parameters",
+    "undefined_values",
     "generic_parameter_values",
     "REGISTRY",
 ]
@@ -495,9 +496,44 @@ def _run_check(label: str, scheme: Scheme) -> CheckResult:
         return CheckResult(Status.ERROR, f"check raised {tb}")
     if not isinstance(result, CheckResult):
         return CheckResult(Status.ERROR, f"check returned {type(result).__name__}, not CheckResult")
+    undefined = undefined_values(result.evidence, result.counterexample, result.correction)
+    if undefined and result.status not in (Status.UNDECIDED, Status.NOT_APPLICABLE, Status.ERROR):
+        return CheckResult(Status.UNDECIDED, Text(f"no verdict: the check's findings hold an undefined value ({undefined}), "
+                                                  f"so its '{result.status.value}' rests on nothing: ", result.evidence))
     if result.status in (Status.REFUTED, Status.CORRECTED) and unbound_parameters(result.counterexample, scheme.parameters):
         return _at_parameter_values(label, scheme, result)
     return result
+
+
+def undefined_values(*findings) -> str:
+    """The undefined values (``nan``, ``zoo``, a float ``nan`` or ``inf``) in findings, as text (empty if none).
+
+    No verdict may rest on one: ``0/0`` from a zero vector taken as an eigenvector is ``nan``."""
+    found = set()
+
+    def visit(obj) -> None:
+        if isinstance(obj, Text):
+            for part in obj.parts:
+                visit(part)
+        elif isinstance(obj, float) and (obj != obj or obj in (float("inf"), float("-inf"))):
+            found.add(repr(obj))
+        elif isinstance(obj, sp.MatrixBase):
+            for entry in obj:
+                visit(entry)
+        elif isinstance(obj, (tuple, list)):
+            for entry in obj:
+                visit(entry)
+        elif isinstance(obj, sp.Basic):
+            if obj.has(sp.nan):
+                found.add("nan")
+            if obj.has(sp.zoo):
+                found.add("zoo")
+            if any(f.is_finite is False or f != f for f in obj.atoms(sp.Float)):
+                found.add("a float nan or inf")
+
+    for finding in findings:
+        visit(finding)
+    return ", ".join(sorted(found))
 
 
 def unbound_parameters(finding, parameters) -> set:

@@ -58,7 +58,8 @@ nothing else.
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
                    ``s6_cb_matrices``, ``s6_cb_subdivision``, ``s6_closing``,
                    ``s6_full_spectrum``) and their registry (``registry``); every claim is checked
-                   for a scheme; what several checks share: the requirements a claim declares
+                   for a scheme, within a time budget, and no verdict rests on a free parameter or an
+                   undefined value (``guards``); what several checks share: the requirements a claim declares
                    (``applicability``), computed evidence (``evidence``), the paper's notation
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,

@@ -139,7 +139,7 @@ EDGE_ALPHA = CC_FACE_WITH.format(p="P").replace('[face]\nO = "1/4 - P"', '[face]
 @pytest.mark.parametrize("label", ["Eq. 14-15", "Eq. 17-21", "Eq. 31-32"])
 def test_a_refutation_in_free_parameters_is_shown_at_concrete_values(label):
     """The edge rule's weight moved by a free P: the printed rules hold at P = 0 (Catmull-Clark) and fail elsewhere."""
-    from symdecomp.claims.registry import unbound_parameters
+    from symdecomp.claims.guards import unbound_parameters
 
     scheme = scheme_from_text(EDGE_ALPHA)
     assert check_claim(label, scheme.substitute({"P": 0})).status is Status.PROVED  # Catmull-Clark
@@ -153,7 +153,7 @@ def test_a_refutation_in_free_parameters_is_shown_at_concrete_values(label):
 
 def test_unbound_parameters_reads_assignments_as_concrete():
     from symdecomp.claims import Text
-    from symdecomp.claims.registry import unbound_parameters
+    from symdecomp.claims.guards import unbound_parameters
     from symdecomp.symbols import Parameter
 
     p = Parameter("P", real=True)
@@ -203,7 +203,7 @@ def test_the_budget_stops_a_long_check_with_undecided():
 
 
 def test_a_budget_inside_a_budget_is_the_outer_one():
-    from symdecomp.claims.registry import time_budget
+    from symdecomp.claims.guards import time_budget
 
     with pytest.raises(BaseException) as caught, time_budget(0.5):
         with time_budget(100):
@@ -302,7 +302,8 @@ def test_the_corpus_is_there_and_every_file_reads():
 def test_no_verdict_rests_on_an_undefined_value(monkeypatch):
     """A check whose counterexample holds nan (0/0) gets no verdict, whatever status it returned."""
     from symdecomp.claims import CheckResult, Text, get_claim
-    from symdecomp.claims.registry import _run_check, undefined_values
+    from symdecomp.claims.guards import undefined_values
+    from symdecomp.claims.registry import _run_check
 
     assert undefined_values(Text("x = ", sp.nan)) == "nan" and undefined_values(Text("x = ", sp.Integer(0) / 1)) == ""
     assert undefined_values(Text("", sp.Matrix([[1, sp.zoo]]))) == "zoo" and undefined_values(Text("", float("nan")))

@@ -7,7 +7,7 @@ from symdecomp.cli import main
 from symdecomp.errors import InvalidSchemeError, NotAffineError, SymdecompError
 from symdecomp.schemes.files import load_scheme, scheme_from_text, scheme_to_text
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.symbols import alpha, n
+from symdecomp.symbols import Parameter, alpha, n
 
 CC_TOML = """\
 name = "catmull-clark"
@@ -43,7 +43,8 @@ def test_parameters_and_wide_offsets():
     text = text.replace('a = "3/(2*n**2)"', 'a = "alpha"').replace('a = { "-1" = "1/16", "0" = "3/8", "1" = "1/16" }',
                                                                      'a = { "-2" = "t", "-1" = "1/16", "0" = "3/8 - 2*t", "1" = "1/16", "2" = "t" }')
     scheme = scheme_from_text(text)
-    t = sp.Symbol("t", real=True)
+    t = Parameter("t", real=True)  # the users' namespace: not the toolkit's own t of its derivations
+    assert t != sp.Symbol("t", real=True)
     assert dict(scheme.edge_rule.a)[-2] == t and alpha in scheme.parameters and t in scheme.parameters
     assert scheme.minimum_valence() == 5
     with pytest.raises(InvalidSchemeError, match="wider than the valence"):

@@ -40,7 +40,9 @@ def test_line_makes_the_target_an_exact_eigenvalue_all_valences(n):
 
 def _check_line_exactly(n):
     # Identically in MU: S(alpha(MU)) V(MU) = MU V(MU), with V the lifted Eq. 43 eigenvector.
-    S = subdivision_matrix(_tuned_scheme_in_mu(), n)
+    scheme = _tuned_scheme_in_mu()
+    (target,) = scheme.parameters  # MU, in the users' namespace (a Parameter named MU)
+    S = subdivision_matrix(scheme, n).subs(target, MU)
     u = recursion_eigenvector(CC, MU, n)
     V = sp.Matrix([u[0]] + [u[1]] * n + [u[2]] * n)
     residual = S * V - MU * V

@@ -37,7 +37,7 @@ from symdecomp.algebra.valence_signs import integer_zeros
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import NotApplicableError
+from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, cos_theta, sin_jtheta
 from symdecomp.symbols import n as N
@@ -59,6 +59,7 @@ __all__ = [
     "elliptic_component",
     "ComponentResultants",
     "component_resultants",
+    "components_nonzero_every_n",
 ]
 
 #: A symbol for an eigenvalue of the Eq. 43 matrix.
@@ -346,3 +347,31 @@ def component_resultants(scheme: Scheme, initial, start: int) -> ComponentResult
             break
         bad.update(zeros)
     return ComponentResultants(tuple(initial), chi, weight, res_w, res_u, None if bad is None else tuple(sorted(bad)))
+
+
+def components_nonzero_every_n(scheme: Scheme, lo: int) -> tuple[tuple[int, ...] | None, str]:
+    """Remark 5.2 for every ``n >= lo``: the valences the argument leaves to a direct check, or ``None`` and the reason.
+
+    (1,1,1) is the right eigenvector of 1 when the rows of the Eq. 43 matrix sum to 1 identically (checked), so every
+    left eigenvector of an eigenvalue mu != 1 is orthogonal to it; mu = 1 only where chi(1) = 0. (0,1,1) and
+    (0,1,-1) have nonzero components on both non-unit eigenvectors off the integer zeros of two resultants
+    (:func:`component_resultants`)."""
+    if scheme.parameters:
+        return None, "the scheme has free parameters"
+    T = sp.Matrix(recursion_matrix(scheme))
+    if sp.simplify(T * sp.ones(3, 1) - sp.ones(3, 1)) != sp.zeros(3, 1):
+        return None, "the rows of the Eq. 43 matrix do not sum to 1"
+    bad: set[int] = set()
+    try:
+        for x in ((0, 1, 1), (0, 1, -1)):
+            r = component_resultants(scheme, x, lo)
+            if r.exceptions is None:
+                return None, "a resultant vanishes identically"
+            bad.update(r.exceptions)
+            ones = integer_zeros(r.chi.subs(sp.Symbol("mu"), 1), N, lo)
+            if ones is None:
+                return None, "1 is a double eigenvalue of the Eq. 43 matrix for every n"
+            bad.update(ones)
+    except InvalidInputError as exc:  # a weight such as cos(2 pi/n): the resultants are not rational in n
+        return None, str(exc)
+    return tuple(sorted(bad)), ""

@@ -6,11 +6,10 @@ import random
 
 import sympy as sp
 
-from symdecomp.algebra.valence_signs import integer_zeros
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import (
     MU,
-    component_resultants,
+    components_nonzero_every_n,
     elliptic_component,
     eq44_ratio,
     nice_elliptic_conditions,
@@ -24,7 +23,6 @@ from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC
 from symdecomp.claims.notation import A, B, M, eq, j, lambda_1, listed, ne, omega_2n, tup
-from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -393,7 +391,7 @@ def _remark52(scheme: Scheme) -> CheckResult:
         )
     third = [n for n, c in comp_01m1.items() if sp.simplify(c) == 0]
     zero_011 = [n for n, c in comp_011.items() if sp.simplify(c) == 0]
-    every_n, why_not = _remark52_every_n(scheme, lo)
+    every_n, why_not = components_nonzero_every_n(scheme, lo)
     if every_n is not None:  # the exceptional valences of the argument, beyond the range, checked one by one
         for n in every_n:
             if n not in comp_011 and elliptic_component(scheme, n, (0, 1, 1)) in (None, 0):
@@ -439,34 +437,6 @@ def _remark52(scheme: Scheme) -> CheckResult:
         counterexample=Text("n = ", min(third), ", input (0, 1, -1) (a's raised, b's lowered): elliptic component 0"),
         steps=steps,
     )
-
-
-def _remark52_every_n(scheme: Scheme, lo: int) -> tuple[tuple[int, ...] | None, str]:
-    """The valences ``n >= lo`` that the argument for every n leaves to a direct check, or ``None`` and the reason.
-
-    (1,1,1) is the right eigenvector of 1 when the rows of the Eq. 43 matrix sum to 1 identically (checked), so every
-    left eigenvector of an eigenvalue mu != 1 is orthogonal to it; mu = 1 only where chi(1) = 0. (0,1,1) and
-    (0,1,-1) have nonzero components on both non-unit eigenvectors off the integer zeros of two resultants
-    (:func:`component_resultants`)."""
-    if scheme.parameters:
-        return None, "the scheme has free parameters"
-    T = sp.Matrix(recursion_matrix(scheme))
-    if sp.simplify(T * sp.ones(3, 1) - sp.ones(3, 1)) != sp.zeros(3, 1):
-        return None, "the rows of the Eq. 43 matrix do not sum to 1"
-    bad: set[int] = set()
-    try:
-        for x in ((0, 1, 1), (0, 1, -1)):
-            r = component_resultants(scheme, x, lo)
-            if r.exceptions is None:
-                return None, "a resultant vanishes identically"
-            bad.update(r.exceptions)
-            ones = integer_zeros(r.chi.subs(sp.Symbol("mu"), 1), N, lo)
-            if ones is None:
-                return None, "1 is a double eigenvalue of the Eq. 43 matrix for every n"
-            bad.update(ones)
-    except InvalidInputError as exc:  # a weight such as cos(2 pi/n): the resultants are not rational in n
-        return None, str(exc)
-    return tuple(sorted(bad)), ""
 
 
 @claim(

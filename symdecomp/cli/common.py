@@ -181,7 +181,7 @@ def digits(name: str = "--digits", *, minimum: int = 1, limit: str = "digits"):
 
 def add_budget_option(parser: argparse.ArgumentParser) -> None:
     """``--budget SECONDS``: the wall-clock time one claim's check may take before it is reported undecided."""
-    from symdecomp.claims.registry import DEFAULT_BUDGET
+    from symdecomp.claims.guards import DEFAULT_BUDGET
 
     parser.add_argument("--budget", type=positive_int("--budget", "budget"), action=Once, default=int(DEFAULT_BUDGET),
                         metavar="SECONDS", help=f"seconds one claim's check may take; a check still running then is reported "

@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.claims.registry import DEFAULT_BUDGET
+from symdecomp.claims.guards import DEFAULT_BUDGET
 from symdecomp.cli.common import Once, add_budget_option, add_scheme_option, flag, given, print_json, progress, refuse_non_quad
 from symdecomp.cli.files import check_output_directory, replace_owned_files
 from symdecomp.errors import InvalidInputError

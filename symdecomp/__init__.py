@@ -13,7 +13,9 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    exact/interval evaluation of expressions (``compile``), small exact
                    eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
                    polynomials over a triangle in Bezier form (``triangle_bezier``)
-``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes;
+``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``:
+                   quad, triangle; regular valence, rings and labels, refinement, regular
+                   patch), a scheme as data (edge, face, vertex rules on a lattice;
                    Loop, ``loop``) and the one assembly of its
                    subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
                    rationals and its characteristic polynomial (``full_matrix``), rules as
@@ -39,8 +41,7 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form
                    charpoly (``ring_charpoly``), masks (``ring_masks``); the patch's certified
                    eigen-data (``eigendata``; Loop's 1-ring columns, ``triangle_eigendata``)
-                   and exact evaluation (``evaluation``; Loop's sub-triangles,
-                   ``triangle_evaluation``)
+                   and exact evaluation on either lattice (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``,
                    ``ring_numeric``), certified (``certify``, ``ring_certify``), both returning a
                    ``CrossCheckResult`` (``result``), OpenSubdiv (``oracle``, ``opensubdiv``);
@@ -101,6 +102,7 @@ from symdecomp.errors import (
 )
 from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
 from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
 from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
 from symdecomp.schemes.patch import patch_matrices
@@ -177,6 +179,10 @@ __all__ = [
     "Region",
     "classify_support",
     # any scheme (triangle meshes, Loop) and K-ring matrices
+    "Lattice",
+    "QUAD",
+    "TRIANGLE",
+    "lattice",
     "loop",
     "loop_warren",
     "triangle_scheme",

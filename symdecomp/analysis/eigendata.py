@@ -36,6 +36,7 @@ caller; :func:`certified_eigendata` raises it until every entry rounds correctly
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -51,6 +52,7 @@ from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.analysis.quad_eigendata import LazyTable, circulant_weights, column_group, quad_ring_columns, trig_table
 from symdecomp.analysis.triangle_eigendata import triangle_ring_columns
 from symdecomp.errors import InternalError
+from symdecomp.schemes.lattice import QUAD, TRIANGLE
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
@@ -116,7 +118,7 @@ _REGULAR: dict = {}
 
 def _regular_part(p: PatchMatrices):
     """:func:`_regular_part_of` ``p``, remembered for the last patch (three steps ask for it)."""
-    key = (p.mesh, p.n, id(p))
+    key = (p.lattice, p.n, id(p))
     if key not in _REGULAR or _REGULAR[key][0] is not p:
         _REGULAR.clear()
         _REGULAR[key] = (p, _regular_part_of(p))
@@ -185,13 +187,28 @@ def _av_row(v_row: list, values, jordan) -> list:
     return out
 
 
+@dataclass(frozen=True)
+class _RingEigen:
+    """The 1-ring block's eigen-data on one lattice."""
+
+    #: ``(patch matrices, trig table, prec) -> columns``: the eigenvectors of the 1-ring block, frequency by frequency.
+    columns: Callable
+    #: Whether a defective eigenvalue shared with the regular block is kept as a Jordan pair (else refused).
+    jordan: bool
+    #: Whether sub-patch entries around 0 can be proved 0 column by column (:func:`_sharpen_subpatch_zeros`).
+    sharpen: bool
+
+
+_RING_EIGEN = {
+    QUAD: _RingEigen(lambda p, table, prec: quad_ring_columns(p, table), jordan=False, sharpen=True),
+    TRIANGLE: _RingEigen(triangle_ring_columns, jordan=True, sharpen=False),
+}
+
+
 def _ring_columns(p: PatchMatrices, prec: int) -> list:
-    """The eigenvectors of the 1-ring block, frequency by frequency (quads here, triangles in
+    """The eigenvectors of the 1-ring block, frequency by frequency (:mod:`symdecomp.analysis.quad_eigendata`,
     :mod:`symdecomp.analysis.triangle_eigendata`)."""
-    table = trig_table(p.n)
-    if p.mesh == "triangle":
-        return triangle_ring_columns(p, table, prec)
-    return quad_ring_columns(p, table)
+    return _RING_EIGEN[p.lattice].columns(p, trig_table(p.n), prec)
 
 
 def _sparse_times(row: dict, rows: list, size: int) -> list:
@@ -232,7 +249,7 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
             verdict = col.exact_check(nu, g_rows[r]) if col.exact_check else None
             if verdict is None:
                 raise _NeedPrecision
-            if not verdict and p.mesh == "triangle":
+            if not verdict and _RING_EIGEN[p.lattice].jordan:
                 jordan.append((k0 + r, c, coeff[c]))
             elif not verdict:
                 raise NotDiagonalizableError(
@@ -323,7 +340,7 @@ def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: i
     entry is replaced only when its new ball lies inside ``(-2^-1075, 2^-1075)``, i.e. it is
     exactly 0; everything else is left to the caller's precision loop. Quads only.
     """
-    if p.mesh != "quad" or data.jordan:
+    if not _RING_EIGEN[p.lattice].sharpen or data.jordan:
         return
     size, k0 = p.size, p.ring_size
     if not bad or any(i >= k0 or not data.phi[k][i, l].contains(0) for k, i, l in bad):

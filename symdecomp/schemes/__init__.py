@@ -1,6 +1,7 @@
 """Subdivision schemes as data, and the matrices and meshes built from their rules.
 
-A scheme's rules and the one assembly of its subdivision matrix (:mod:`.scheme`), the full
+The lattice a scheme lives on, one object per kind of mesh (:mod:`.lattice`), a scheme's rules
+and the one assembly of its subdivision matrix (:mod:`.scheme`), the full
 matrix in FLINT rationals and its characteristic polynomial (:mod:`.full_matrix`), rules as
 polynomials in the index shift (:mod:`.shift_stencil`), whole quad meshes refined by the
 scheme's rules (:mod:`.mesh`), the 1-ring as a polygon pair (:mod:`.ring`), and the regular Loop patch (the quartic box

@@ -384,9 +384,10 @@ def _combine(terms: Iterable[tuple[object, tuple]]) -> tuple:
     return tuple(sum((w * val[k] for w, val in terms[1:]), terms[0][0] * terms[0][1][k]) for k in range(len(terms[0][1])))
 
 
-def point_stencils(mesh: QuadMesh, rules: MeshRules) -> tuple[dict, dict, dict]:
+def point_stencils(mesh: QuadMesh, rules: MeshRules, vertex_weights: Callable | None = None) -> tuple[dict, dict, dict]:
     """``(face, edge, vertex)`` stencils ``{key: ((weight, old vertex id), ...)}`` of the refined points
-    (keys: face index, ``frozenset({u, v})`` of an edge with two faces, interior vertex id)."""
+    (keys: face index, ``frozenset({u, v})`` of an edge with two faces, interior vertex id);
+    ``vertex_weights(valence)`` overrides the rules' vertex weights (the ring matrices' symbolic centre)."""
     fc, ee, es = (_as_weight(w) for w in (rules.face_corner, rules.edge_end, rules.edge_side))
     face = {fi: tuple((fc, x) for x in f) for fi, f in enumerate(mesh.faces)}
     edge = {}
@@ -404,7 +405,7 @@ def point_stencils(mesh: QuadMesh, rules: MeshRules) -> tuple[dict, dict, dict]:
     for v in (v for v in mesh.vertices() if mesh.is_interior(v)):
         _, a, b = mesh.one_ring(v)
         if len(a) not in cache:
-            cache[len(a)] = tuple(_as_weight(w) for w in rules.vertex_weights(len(a)))
+            cache[len(a)] = tuple(_as_weight(w) for w in (vertex_weights or rules.vertex_weights)(len(a)))
         wc, wa, wb = cache[len(a)]
         vertex[v] = ((wc, v),) + tuple((wa, x) for x in a) + tuple((wb, x) for x in b)
     return face, edge, vertex
@@ -447,14 +448,14 @@ def _child_faces(mesh: QuadMesh, vertex_point: dict, edge_point: dict, face_poin
     return new_faces
 
 
-def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules) -> Refinement:
+def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules, *, vertex_weights: Callable | None = None) -> Refinement:
     """One exact refinement step of ``mesh`` by the scheme's mesh rules (:func:`mesh_rules`).
 
     Points whose rule needs something outside the mesh (boundary vertices and edges) are not
-    computed, and new faces with such a corner are dropped.
+    computed, and new faces with such a corner are dropped. ``vertex_weights``: :func:`point_stencils`.
     """
     rules = scheme_or_rules if isinstance(scheme_or_rules, MeshRules) else mesh_rules(scheme_or_rules)
-    face, edge, vertex = point_stencils(mesh, rules)
+    face, edge, vertex = point_stencils(mesh, rules, vertex_weights)
     vals = mesh.values
     new_values: dict[int, tuple] = {}
     counter = iter(range(10**12))

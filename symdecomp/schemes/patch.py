@@ -27,6 +27,7 @@ import flint
 
 from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.lattice import QUAD, Lattice
 from symdecomp.schemes.mesh import refinement_matrix, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
@@ -81,8 +82,13 @@ class PatchMatrices:
     size: int = 0
     #: Rows (and columns) ``0..ring_size - 1`` are the 1-ring: ``O`` and its neighbours.
     ring_size: int = 0
-    #: ``"quad"`` or ``"triangle"``.
-    mesh: str = "quad"
+    #: The lattice (:data:`~symdecomp.schemes.lattice.QUAD` or :data:`~symdecomp.schemes.lattice.TRIANGLE`).
+    lattice: Lattice = QUAD
+
+    @property
+    def mesh(self) -> str:
+        """The lattice's name, as files and reports spell it."""
+        return self.lattice.name
 
     def float_extended(self):
         """``extended`` as a float64 numpy array (irrational centre weights rounded)."""
@@ -141,11 +147,12 @@ def patch_mesh(n: int, values=None):
 def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     """The patch matrices of ``scheme`` at valence ``n`` from one exact refinement: ``2n + 8`` points
     on quad meshes, ``n + 6`` on triangle meshes (:func:`~symdecomp.schemes.triangle_patch.triangle_patch_matrices`)."""
-    n = check_valence(n)
-    if scheme.mesh == "triangle":
-        from symdecomp.schemes.triangle_patch import triangle_patch_matrices
+    return scheme.lattice.patch_matrices(scheme, check_valence(n))
 
-        return triangle_patch_matrices(scheme, n)
+
+def quad_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
+    """Stam's ``(2n + 8)``-point patch matrices of a quad scheme at valence ``n`` (exact)."""
+    n = check_valence(n)
     mesh, vid, columns = patch_mesh(n)
     o, a, b = mesh.one_ring(0, start=columns[1])
     rows = [o]
@@ -165,4 +172,4 @@ def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     subpatches = tuple(
         tuple(lattice_index(n, (cu + a_ - 1, cv + b_ - 1)) for b_ in range(4) for a_ in range(4)) for cu, cv in SUBPATCH_CORNERS
     )
-    return PatchMatrices(n, matrix, extended, subpatches, tuple(entries), k, 2 * n + 1, "quad")
+    return PatchMatrices(n, matrix, extended, subpatches, tuple(entries), k, QUAD.one_ring_size(n), QUAD)

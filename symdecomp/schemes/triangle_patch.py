@@ -41,6 +41,7 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS
+from symdecomp.schemes.lattice import TRIANGLE
 from symdecomp.schemes.patch import PatchMatrices
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
@@ -149,4 +150,4 @@ def triangle_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
             for j, w in row.items():
                 extended[i, j] = flint.fmpq(w.numerator, w.denominator)
         matrix = flint.fmpq_mat([[extended[i, j] for j in range(size)] for i in range(size)])
-    return PatchMatrices(n, matrix, extended, _subpatch_rows(n, labels), tuple(sparse), size, n + 1, "triangle")
+    return PatchMatrices(n, matrix, extended, _subpatch_rows(n, labels), tuple(sparse), size, TRIANGLE.one_ring_size(n), TRIANGLE)

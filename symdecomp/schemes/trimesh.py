@@ -1,7 +1,7 @@
 """Local triangle meshes and their exact refinement by a triangle scheme's rules (Loop-type).
 
 The triangle counterpart of :mod:`symdecomp.schemes.mesh`. A triangle scheme
-(``Scheme.mesh == "triangle"``, e.g. :func:`~symdecomp.schemes.loop.loop`) moves the 1-ring
+(``Scheme.lattice`` :data:`~symdecomp.schemes.lattice.TRIANGLE`, e.g. :func:`~symdecomp.schemes.loop.loop`) moves the 1-ring
 ``(O, a_0..a_{n-1})`` of a vertex by an edge rule and a vertex rule; read as rules *of the
 mesh* (:func:`triangle_mesh_rules`) they give
 
@@ -30,6 +30,7 @@ from types import MappingProxyType
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.lattice import TRIANGLE
 from symdecomp.schemes.mesh import InvalidMeshError, _as_weight, _combine, _set_topology
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -69,8 +70,8 @@ def triangle_mesh_rules(scheme: Scheme) -> TriangleMeshRules:
     reaches beyond the two triangles of its edge, or weighs the two ends (or the two opposite
     vertices) differently, so that the edge point would depend on which end is called ``O``.
     """
-    if scheme.mesh != "triangle":
-        raise InvalidSchemeError(f"scheme {scheme.name!r} lives on {scheme.mesh} meshes, not triangle meshes")
+    if scheme.lattice is not TRIANGLE:
+        raise InvalidSchemeError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, not triangle meshes")
     edge = scheme.edge_rule
     ea = dict(edge.a)
     weights = [edge.center, *ea.values()]

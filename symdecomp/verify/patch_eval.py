@@ -15,6 +15,7 @@ import mpmath
 
 from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.analysis.masks import limit_masks_at
+from symdecomp.schemes.lattice import QUAD, TRIANGLE
 from symdecomp.schemes.mesh import QuadMesh, refine
 from symdecomp.schemes.patch import patch_mesh
 from symdecomp.schemes.scheme import Scheme
@@ -105,6 +106,20 @@ def refined_triangle_lattice(mesh: TriangleMesh, scheme: Scheme, level: int):
     return mesh, ids
 
 
+def _refined_quad_patch(scheme: Scheme, n: int, level: int, values):
+    mesh, vid, columns = patch_mesh(n, values)
+    return (mesh, columns, *refined_lattice(mesh, vid, scheme, level))
+
+
+def _refined_triangle_patch(scheme: Scheme, n: int, level: int, values):
+    mesh, columns = triangle_patch_mesh(n, values)
+    return (mesh, columns, *refined_triangle_lattice(mesh, scheme, level))
+
+
+#: ``(mesh, control point ids, refined mesh, {lattice point: id})`` of the patch's ring mesh refined ``level`` times.
+_REFINED_PATCH = {QUAD: _refined_quad_patch, TRIANGLE: _refined_triangle_patch}
+
+
 def exact_to_mpf(x):
     """A Fraction or a (real) cyclotomic number as an mpmath number at the current precision."""
     if isinstance(x, Fraction):
@@ -153,12 +168,7 @@ def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed
 
     rnd = random.Random(seed)
     values = lambda s, u, v: tuple(Fraction(rnd.randint(-2**20, 2**20), 2**20) for _ in range(3))  # noqa: E731
-    if scheme.mesh == "triangle":
-        mesh, columns = triangle_patch_mesh(n, values)
-        refined, ids = refined_triangle_lattice(mesh, scheme, level)
-    else:
-        mesh, vid, columns = patch_mesh(n, values)
-        refined, ids = refined_lattice(mesh, vid, scheme, level)
+    mesh, columns, refined, ids = _REFINED_PATCH[scheme.lattice](scheme, n, level, values)
     points, limits = osd_limit_points(mesh, level)
     keys = sorted(ids)
     with mpmath.workdps(30):

@@ -40,7 +40,7 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form
                    charpoly (``ring_charpoly``), masks (``ring_masks``); the patch's certified
-                   eigen-data (``eigendata``; Loop's 1-ring columns, ``triangle_eigendata``)
+                   eigen-data (``eigendata``; its 1-ring columns per lattice, ``ring_eigendata``)
                    and exact evaluation on either lattice (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``,
                    ``ring_numeric``), certified (``certify``, ``ring_certify``), both returning a

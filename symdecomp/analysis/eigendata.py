@@ -2,7 +2,7 @@
 
 Written for the (2N+8)-point Catmull-Clark patch below; Loop's (N+6)-point patch
 (:mod:`symdecomp.schemes.triangle_patch`) shares the whole assembly with its own 1-ring columns
-(:mod:`symdecomp.analysis.triangle_eigendata`) and a 5 x 5 regular block, and where its matrix
+(:mod:`symdecomp.analysis.ring_eigendata`) and a 5 x 5 regular block, and where its matrix
 is not diagonalizable (N = 3) keeps the Jordan pairs (:attr:`PatchEigenData.jordan`) instead of
 refusing.
 
@@ -36,7 +36,6 @@ caller; :func:`certified_eigendata` raises it until every entry rounds correctly
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -49,10 +48,8 @@ from symdecomp.algebra.small_eigen import NotDiagonalizableError
 from symdecomp.algebra.small_eigen import arb_value as _arb
 from symdecomp.algebra.small_eigen import fmpq_value as _fq
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
-from symdecomp.analysis.quad_eigendata import LazyTable, circulant_weights, column_group, quad_ring_columns, trig_table
-from symdecomp.analysis.triangle_eigendata import triangle_ring_columns
+from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, circulant_weights, column_group, trig_table
 from symdecomp.errors import InternalError
-from symdecomp.schemes.lattice import QUAD, TRIANGLE
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
@@ -187,28 +184,9 @@ def _av_row(v_row: list, values, jordan) -> list:
     return out
 
 
-@dataclass(frozen=True)
-class _RingEigen:
-    """The 1-ring block's eigen-data on one lattice."""
-
-    #: ``(patch matrices, trig table, prec) -> columns``: the eigenvectors of the 1-ring block, frequency by frequency.
-    columns: Callable
-    #: Whether a defective eigenvalue shared with the regular block is kept as a Jordan pair (else refused).
-    jordan: bool
-    #: Whether sub-patch entries around 0 can be proved 0 column by column (:func:`_sharpen_subpatch_zeros`).
-    sharpen: bool
-
-
-_RING_EIGEN = {
-    QUAD: _RingEigen(lambda p, table, prec: quad_ring_columns(p, table), jordan=False, sharpen=True),
-    TRIANGLE: _RingEigen(triangle_ring_columns, jordan=True, sharpen=False),
-}
-
-
 def _ring_columns(p: PatchMatrices, prec: int) -> list:
-    """The eigenvectors of the 1-ring block, frequency by frequency (:mod:`symdecomp.analysis.quad_eigendata`,
-    :mod:`symdecomp.analysis.triangle_eigendata`)."""
-    return _RING_EIGEN[p.lattice].columns(p, trig_table(p.n), prec)
+    """The eigenvectors of the 1-ring block, frequency by frequency (:mod:`symdecomp.analysis.ring_eigendata`)."""
+    return RING_EIGEN[p.lattice].columns(p, trig_table(p.n), prec)
 
 
 def _sparse_times(row: dict, rows: list, size: int) -> list:
@@ -249,7 +227,7 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
             verdict = col.exact_check(nu, g_rows[r]) if col.exact_check else None
             if verdict is None:
                 raise _NeedPrecision
-            if not verdict and _RING_EIGEN[p.lattice].jordan:
+            if not verdict and RING_EIGEN[p.lattice].jordan:
                 jordan.append((k0 + r, c, coeff[c]))
             elif not verdict:
                 raise NotDiagonalizableError(
@@ -340,7 +318,7 @@ def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: i
     entry is replaced only when its new ball lies inside ``(-2^-1075, 2^-1075)``, i.e. it is
     exactly 0; everything else is left to the caller's precision loop. Quads only.
     """
-    if not _RING_EIGEN[p.lattice].sharpen or data.jordan:
+    if not RING_EIGEN[p.lattice].sharpen or data.jordan:
         return
     size, k0 = p.size, p.ring_size
     if not bad or any(i >= k0 or not data.phi[k][i, l].contains(0) for k, i, l in bad):

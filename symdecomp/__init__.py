@@ -24,8 +24,8 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
                    its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
                    (``files``; Loop, ``loop``),
-                   Stam's (2N+8)-point patch matrix (``patch``; Loop's (N+6)-point one,
-                   ``triangle_patch``), the regular Loop patch (quartic box spline) in
+                   Stam's patch matrices, (2N+8)-point and Loop's (N+6)-point
+                   (``patch``), the regular Loop patch (quartic box spline) in
                    Bezier form (``box_spline``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``), spectra
                    (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section 5.1,

@@ -1,7 +1,7 @@
 """Certified eigenstructure of the patch matrix (Stam's exact-evaluation data): Catmull-Clark and Loop.
 
 Written for the (2N+8)-point Catmull-Clark patch below; Loop's (N+6)-point patch
-(:mod:`symdecomp.schemes.triangle_patch`) shares the whole assembly with its own 1-ring columns
+(:mod:`symdecomp.schemes.patch`) shares the whole assembly with its own 1-ring columns
 (:mod:`symdecomp.analysis.ring_eigendata`) and a 5 x 5 regular block, and where its matrix
 is not diagonalizable (N = 3) keeps the Jordan pairs (:attr:`PatchEigenData.jordan`) instead of
 refusing.

@@ -20,7 +20,7 @@ limit position (the position mask) and the normal the cross product of the two t
 images; the derivatives there are not defined by the parametrization (NaN).
 
 **Triangles** (Loop). The patch ``(O, a_0, a_1)`` next to a valence-``N`` vertex (order and
-sub-patches: :mod:`symdecomp.schemes.triangle_patch`) for ``u, v >= 0``, ``u + v <= 1`` other
+sub-patches: :mod:`symdecomp.schemes.patch`) for ``u, v >= 0``, ``u + v <= 1`` other
 than ``(0, 0)``:
 
 * ``n = floor(-log2(u + v)) + 1``, ``(x, y) = 2^n (u, v)`` (so ``1 < x + y <= 2``);

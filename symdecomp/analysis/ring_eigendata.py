@@ -8,7 +8,7 @@ in the real Fourier basis it splits into a 3 x 3 rational block (``j = 0``), rea
 for ``0 < j < N/2`` and a rational 2 x 2 block at ``j = N/2`` (even ``N``).
 
 **Triangles** (Loop). The 1-ring block ``S`` of the ``(N + 6)``-point patch
-(:mod:`symdecomp.schemes.triangle_patch`) acts on ``(O, a_0, .., a_{N-1})``: the centre row
+(:mod:`symdecomp.schemes.patch`) acts on ``(O, a_0, .., a_{N-1})``: the centre row
 ``(w_O, w_a, .., w_a)`` (exact in ``Q(zeta_2N)``: Loop's weights hold ``cos(2 pi/N)``), and the
 circulant rows of the edge points ``a_i = eo O + sum_k ee[k] a_{i+k}`` (rational). In the real
 Fourier basis of the ``a``'s it splits into

@@ -270,7 +270,7 @@ class TriangleLattice(Lattice):
         return loop()
 
     def patch_matrices(self, scheme, n):
-        from symdecomp.schemes.triangle_patch import triangle_patch_matrices
+        from symdecomp.schemes.patch import triangle_patch_matrices
 
         return triangle_patch_matrices(scheme, n)
 

@@ -17,9 +17,8 @@ from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.schemes.lattice import QUAD, TRIANGLE
 from symdecomp.schemes.mesh import QuadMesh, refine
-from symdecomp.schemes.patch import patch_mesh
+from symdecomp.schemes.patch import centre_weights, patch_mesh, position_mask, triangle_patch_rows
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.schemes.triangle_patch import centre_weights, position_mask, triangle_patch_rows
 from symdecomp.schemes.trimesh import TriangleMesh, refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
 
 __all__ = [
@@ -130,7 +129,7 @@ def exact_to_mpf(x):
 def triangle_dyadic_limits(scheme: Scheme, n: int, level: int, values) -> tuple[list, dict]:
     """``(control_points, limits)`` of the Loop patch: control values and ``{(i, j): exact limit}``.
 
-    Limits are the position mask (:func:`~symdecomp.schemes.triangle_patch.position_mask`, at
+    Limits are the position mask (:func:`~symdecomp.schemes.patch.position_mask`, at
     valence ``n`` for the centre, 6 elsewhere) on the 1-ring of the vertex at ``(i/2^L, j/2^L)``
     after ``L`` exact refinements; values are Fractions or elements of ``Q(zeta_2n)``.
     """

@@ -19,9 +19,9 @@ ones above it in this list (``tests/test_layers.py`` checks it):
                    Loop, ``loop``) and the one assembly of its
                    subdivision matrix (Eq. 13-16, ``scheme``), the full matrix in FLINT
                    rationals and its characteristic polynomial (``full_matrix``), rules as
-                   polynomials in the index shift (Eq. 17-23, ``shift_stencil``), whole quad
-                   meshes refined by its rules (Section 3, ``mesh``; triangle meshes,
-                   ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
+                   polynomials in the index shift (Eq. 17-23, ``shift_stencil``), local quad
+                   and triangle meshes and ring meshes (``mesh``), whole meshes refined by
+                   the rules (Section 3, ``refinement``), K-ring matrices by exact refinement (``rings``), the 1-ring and
                    its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
                    (``files``; Loop, ``loop``),
                    Stam's patch matrices, (2N+8)-point and Loop's (N+6)-point
@@ -104,8 +104,9 @@ from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
 from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
-from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from symdecomp.schemes.mesh import QuadMesh, ring_mesh
 from symdecomp.schemes.patch import patch_matrices
+from symdecomp.schemes.refinement import central_rings, mesh_rules, refine
 from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from symdecomp.verify.c1 import C1Result, c1_test

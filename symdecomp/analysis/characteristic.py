@@ -25,7 +25,7 @@ same three sub-patches Stam's exact evaluation uses at each level (Stam 1998; Pe
 2008, Section 6.1, for the Catmull-Clark ring).
 
 **Triangles (Loop).** Sector ``s`` is the wedge between edge rays ``s`` and ``s + 1``
-(:func:`~symdecomp.schemes.trimesh.triangle_ring_labels`); its ring at level 1 is the
+(:func:`~symdecomp.schemes.mesh.triangle_ring_labels`); its ring at level 1 is the
 triangle ``u, v >= 0, u + v <= 2`` minus the corner ``u + v < 1``: the three level-1 triangles
 :data:`TRIANGLES` ``(1,0),(2,0),(1,1)``, ``(1,0),(1,1),(0,1)`` and ``(0,1),(1,1),(0,2)``. Their three
 corners are regular (valence 6), so each is a regular quartic box-spline patch whose 12 control

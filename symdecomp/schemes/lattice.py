@@ -177,12 +177,12 @@ class QuadLattice(Lattice):
         return ring_mesh(n, rings, values)
 
     def mesh_rules(self, scheme):
-        from symdecomp.schemes.mesh import mesh_rules
+        from symdecomp.schemes.refinement import mesh_rules
 
         return mesh_rules(scheme)
 
     def refine(self, mesh, rules, *, vertex_weights=None):
-        from symdecomp.schemes.mesh import refine
+        from symdecomp.schemes.refinement import refine
 
         return refine(mesh, rules, vertex_weights=vertex_weights)
 
@@ -226,7 +226,7 @@ class TriangleLattice(Lattice):
         return 1 + n * rings * (rings + 1) // 2
 
     def ring_labels(self, n, rings):
-        from symdecomp.schemes.trimesh import triangle_ring_labels
+        from symdecomp.schemes.mesh import triangle_ring_labels
 
         return triangle_ring_labels(n, rings)
 
@@ -247,17 +247,17 @@ class TriangleLattice(Lattice):
         return s, u, v
 
     def ring_mesh(self, n, rings, values=None):
-        from symdecomp.schemes.trimesh import triangle_ring_mesh
+        from symdecomp.schemes.mesh import triangle_ring_mesh
 
         return triangle_ring_mesh(n, rings, values)
 
     def mesh_rules(self, scheme):
-        from symdecomp.schemes.trimesh import triangle_mesh_rules
+        from symdecomp.schemes.refinement import triangle_mesh_rules
 
         return triangle_mesh_rules(scheme)
 
     def refine(self, mesh, rules, *, vertex_weights=None):
-        from symdecomp.schemes.trimesh import refine_triangles
+        from symdecomp.schemes.refinement import refine_triangles
 
         return refine_triangles(mesh, rules, vertex_weights=vertex_weights)
 

@@ -11,7 +11,7 @@ of the patch (``u`` along ``O -> e_2``, ``v`` along ``O -> e_1``), which is a ch
 sectors around the patch.
 
 The matrices are not typed in: they are read off one exact refinement of a valence-``N`` ring
-mesh by the scheme's mesh rules (:func:`~symdecomp.schemes.mesh.refinement_matrix`), which also
+mesh by the scheme's mesh rules (:func:`~symdecomp.schemes.refinement.refinement_matrix`), which also
 asserts that the new points depend on the ``K`` old ones only.
 
 **Triangles**: the (N+6) x (N+6) matrix (Stam 1998). Stam's exact evaluation of Loop surfaces
@@ -62,7 +62,8 @@ from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
-from symdecomp.schemes.mesh import refinement_matrix, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.mesh import ring_mesh, ring_mesh_labels
+from symdecomp.schemes.refinement import refinement_matrix
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N

@@ -5,8 +5,8 @@ rings of vertices around it: ``1 + n K (K + 1)`` points on a quad mesh (Catmull-
 ``6n + 1``), ``1 + n K (K + 1)/2`` on a triangle mesh (Loop 2-ring: ``3n + 1``). The matrix is
 *not* assembled from 1-ring stencils: a ring mesh with ``K`` rings around ``O`` (every other
 vertex regular) is refined once by the scheme's mesh rules (face, edge and vertex points of
-the whole mesh: :func:`~symdecomp.schemes.mesh.refine`,
-:func:`~symdecomp.schemes.trimesh.refine_triangles`), with the unit vector ``e_j`` as the value
+the whole mesh: :func:`~symdecomp.schemes.refinement.refine`,
+:func:`~symdecomp.schemes.refinement.refine_triangles`), with the unit vector ``e_j`` as the value
 of old vertex ``j``; the value of a new point is then its row of the matrix. Points are
 ordered by :meth:`~symdecomp.schemes.lattice.Lattice.ring_labels` (ring by ring, sector by sector), and the new point with label
 ``(s, u, v)`` is the one at lattice position ``(u/2, v/2)`` of the old mesh (a vertex point if

@@ -3,7 +3,7 @@
 The vertex at lattice point ``(i, j)`` after ``L`` refinements of the patch's ring mesh sits at
 the parameter ``(i/2^L, j/2^L)`` of the patch; its limit position (the scheme's limit mask on its
 1-ring) is what the evaluator must return there. :func:`dyadic_limits` computes these exactly
-with the toolkit's own refinement (:func:`~symdecomp.schemes.mesh.refine`) and limit masks
+with the toolkit's own refinement (:func:`~symdecomp.schemes.refinement.refine`) and limit masks
 (:func:`~symdecomp.analysis.masks.limit_masks_at`).
 """
 
@@ -16,10 +16,10 @@ import mpmath
 from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.schemes.lattice import QUAD, TRIANGLE
-from symdecomp.schemes.mesh import QuadMesh, refine
+from symdecomp.schemes.mesh import QuadMesh, TriangleMesh, triangle_ring_labels, triangle_ring_mesh
 from symdecomp.schemes.patch import centre_weights, patch_mesh, position_mask, triangle_patch_rows
+from symdecomp.schemes.refinement import refine, refine_triangles, triangle_mesh_rules
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.schemes.trimesh import TriangleMesh, refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
 
 __all__ = [
     "dyadic_limits", "numpy_baseline", "opensubdiv_dyadic_errors", "refined_lattice", "baseline_error",

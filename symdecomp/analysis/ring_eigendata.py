@@ -167,14 +167,9 @@ def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> list:
 def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
     """The four eigenvectors of ``S`` at frequencies ``j`` and ``n - j`` (``0 < j < n/2``)."""
     b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: table[(2 * m) % (4 * n)], _arb)
-    t, d = b_ee + b_ff, b_ee * b_ff - b_ef * b_fe
-    disc = t * t - 4 * d
-    if disc < 0:
-        raise NotDiagonalizableError(f"valence {n}, frequency {j}: complex eigenvalues (the data file holds real ones)")
-    if not disc > 0:
-        raise _NeedPrecision
+    roots = _real_eigenvalues(b_ee, b_ef, b_fe, b_ff, f"valence {n}, frequency {j}: complex eigenvalues (the data file holds real ones)")
     cols = []
-    for lam in ((t + disc.sqrt()) / 2, (t - disc.sqrt()) / 2):
+    for lam in roots:
         pick, z = _choose([b_ef, lam - b_ee], [lam - b_ff, b_fe])
         _, y = _choose([b_fe, lam - b_ee], [lam - b_ff, b_ef])
         (y,) = _biorthogonal([z], [y], arb(n))
@@ -184,6 +179,17 @@ def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
             left = _pattern(table, n, j, fn, 2 * y[0], 2 * y[1])
             cols.append(_Column(lam, right, left, None, check))
     return cols
+
+
+def _real_eigenvalues(a00, a01, a10, a11, complex_message: str) -> tuple:
+    """The eigenvalues of a 2 x 2 block of balls, larger first, once they are certainly real and distinct."""
+    t, d = a00 + a11, a00 * a11 - a01 * a10
+    disc = t * t - 4 * d
+    if disc < 0:
+        raise NotDiagonalizableError(complex_message)
+    if not disc > 0:
+        raise _NeedPrecision
+    return (t + disc.sqrt()) / 2, (t - disc.sqrt()) / 2
 
 
 def _exact_frequency_check(w: dict, n: int, j: int, pick: int):
@@ -298,12 +304,7 @@ def _pick(pairs: list[list], zero) -> list:
 def _frequency_zero(w: dict, n: int, prec: int) -> list[_Column]:
     b00, b01, b10, b11 = w["oo"], n * w["oa"], w["eo"], sum(w["ee"].values(), Fraction(0))
     a00, a01, a10, a11 = (_ball(x, prec) for x in (b00, b01, b10, b11))
-    t, d = a00 + a11, a00 * a11 - a01 * a10
-    disc = t * t - 4 * d
-    if disc < 0:
-        raise NotDiagonalizableError(f"valence {n}, frequency 0: complex eigenvalues")
-    if not disc > 0:
-        raise _NeedPrecision
+    roots = _real_eigenvalues(a00, a01, a10, a11, f"valence {n}, frequency 0: complex eigenvalues")
     field = CyclotomicField(2 * n)
 
     def check(nu: Fraction, g: dict):
@@ -316,7 +317,7 @@ def _frequency_zero(w: dict, n: int, prec: int) -> list[_Column]:
         return g.get(0, 0) * z[0] + sum((x * z[1] for c, x in g.items() if 1 <= c <= n), field(0)) == 0
 
     cols = []
-    for lam in ((t + disc.sqrt()) / 2, (t - disc.sqrt()) / 2):
+    for lam in roots:
         z = _pick([[a01, lam - a00], [lam - a11, a10]], None)
         y = _pick([[a10, lam - a00], [lam - a11, a01]], None)
         dot = y[0] * z[0] + y[1] * z[1]

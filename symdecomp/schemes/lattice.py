@@ -18,8 +18,8 @@ printed output; :func:`lattice` reads it.
 >>> QUAD.vertex_order(3), TRIANGLE.ring_size(5, 2)
 (('O', 'a_0', 'a_1', 'a_2', 'b_0', 'b_1', 'b_2'), 16)
 
-The modules that build meshes, patches and schemes import this one (the scheme holds its
-lattice), so the methods that need them import them when called.
+The scheme holds its lattice, so the lattice reaches the schemes and patches built from
+scheme data (the reference scheme, the patch matrices) only when called.
 """
 
 from __future__ import annotations
@@ -27,6 +27,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes import mesh as _mesh
+from symdecomp.schemes import refinement as _refinement
 
 __all__ = ["Lattice", "QuadLattice", "TriangleLattice", "QUAD", "TRIANGLE", "LATTICES", "PAPER_LATTICE", "lattice"]
 
@@ -154,10 +156,10 @@ class QuadLattice(Lattice):
     def ring_size(self, n, rings):
         return 1 + n * rings * (rings + 1)
 
-    def ring_labels(self, n, rings):
-        from symdecomp.schemes.mesh import ring_mesh_labels
-
-        return ring_mesh_labels(n, rings)
+    ring_labels = staticmethod(_mesh.ring_mesh_labels)
+    ring_mesh = staticmethod(_mesh.ring_mesh)
+    mesh_rules = staticmethod(_refinement.mesh_rules)
+    refine = staticmethod(_refinement.refine)
 
     def canonical(self, s, u, v):
         # points just outside the sector: (s, u, -1) = (s - 1, 1, u) and (s, -1, v) = (s + 1, v, 1)
@@ -170,21 +172,6 @@ class QuadLattice(Lattice):
         if u == 0:
             s, u, v = s + 1, v, 0
         return s, u, v
-
-    def ring_mesh(self, n, rings, values=None):
-        from symdecomp.schemes.mesh import ring_mesh
-
-        return ring_mesh(n, rings, values)
-
-    def mesh_rules(self, scheme):
-        from symdecomp.schemes.refinement import mesh_rules
-
-        return mesh_rules(scheme)
-
-    def refine(self, mesh, rules, *, vertex_weights=None):
-        from symdecomp.schemes.refinement import refine
-
-        return refine(mesh, rules, vertex_weights=vertex_weights)
 
     def _odd_point(self, step, old, u, v, face_of):  # both odd: the face point
         corners = frozenset(old((u + a) // 2, (v + b) // 2) for a in (-1, 1) for b in (-1, 1))
@@ -225,10 +212,10 @@ class TriangleLattice(Lattice):
     def ring_size(self, n, rings):
         return 1 + n * rings * (rings + 1) // 2
 
-    def ring_labels(self, n, rings):
-        from symdecomp.schemes.mesh import triangle_ring_labels
-
-        return triangle_ring_labels(n, rings)
+    ring_labels = staticmethod(_mesh.triangle_ring_labels)
+    ring_mesh = staticmethod(_mesh.triangle_ring_mesh)
+    mesh_rules = staticmethod(_refinement.triangle_mesh_rules)
+    refine = staticmethod(_refinement.refine_triangles)
 
     def canonical(self, s, u, v):
         # sector s spans the lattice directions (1, 0) (ray s) and (0, 1) (ray s + 1); its neighbours are the
@@ -245,21 +232,6 @@ class TriangleLattice(Lattice):
         if u == 0:
             s, u, v = s + 1, v, 0
         return s, u, v
-
-    def ring_mesh(self, n, rings, values=None):
-        from symdecomp.schemes.mesh import triangle_ring_mesh
-
-        return triangle_ring_mesh(n, rings, values)
-
-    def mesh_rules(self, scheme):
-        from symdecomp.schemes.refinement import triangle_mesh_rules
-
-        return triangle_mesh_rules(scheme)
-
-    def refine(self, mesh, rules, *, vertex_weights=None):
-        from symdecomp.schemes.refinement import refine_triangles
-
-        return refine_triangles(mesh, rules, vertex_weights=vertex_weights)
 
     def _odd_point(self, step, old, u, v, face_of):  # both odd: the midpoint of the diagonal edge
         return step.edge_point[frozenset((old((u - 1) // 2, (v + 1) // 2), old((u + 1) // 2, (v - 1) // 2)))]

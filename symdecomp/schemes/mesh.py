@@ -89,6 +89,28 @@ class _Mesh:
                 return False
         return True
 
+    def _fan(self, v: int, start: int | None) -> tuple[tuple[int, tuple[int, ...]], ...]:
+        """``((a_i, rest_i), ...)``: the edge neighbours of an interior vertex counter-clockwise from ``start``
+        (default: the smallest id), each with the corners of the face ``(v, a_i, .., a_{i+1})`` between them."""
+        if not self.is_interior(v):
+            raise InvalidMeshError(f"vertex {v} is on the boundary of the mesh: its 1-ring is not closed")
+        nxt = {}
+        for fi in self._incident[v]:
+            f = self.faces[fi]
+            k, c = f.index(v), len(f)
+            nxt[f[(k + 1) % c]] = tuple(f[(k + i) % c] for i in range(2, c))  # ..., a_{i+1}
+        start = min(nxt) if start is None else start
+        if start not in nxt:
+            raise InvalidMeshError(f"vertex {start} is not an edge neighbour of {v}")
+        fan = [start]
+        while nxt[fan[-1]][-1] != start:
+            fan.append(nxt[fan[-1]][-1])
+            if len(fan) > len(nxt):  # pragma: no cover - guarded by the orientation check
+                raise InvalidMeshError(f"the faces around {v} do not form one fan")
+        if len(fan) != len(nxt):
+            raise InvalidMeshError(f"the faces around {v} form more than one fan (non-manifold vertex)")
+        return tuple((a, nxt[a][:-1]) for a in fan)
+
     def valence(self, v: int) -> int:
         """Number of faces at ``v`` (its valence when it is interior)."""
         return len(self.faces_of(v))
@@ -143,29 +165,8 @@ class QuadMesh(_Mesh):
         ``a_i`` are the edge neighbours counter-clockwise starting at ``start`` (default: the
         smallest id), ``b_i`` the vertex of the face ``(v, a_i, b_i, a_{i+1})`` opposite ``v``.
         """
-        if not self.is_interior(v):
-            raise InvalidMeshError(f"vertex {v} is on the boundary of the mesh: its 1-ring is not closed")
-        nxt = {}
-        for fi in self._incident[v]:
-            f = self.faces[fi]
-            k = f.index(v)
-            nxt[f[(k + 1) % 4]] = (f[(k + 2) % 4], f[(k + 3) % 4])
-        if start is None:
-            start = min(nxt)
-        if start not in nxt:
-            raise InvalidMeshError(f"vertex {start} is not an edge neighbour of {v}")
-        a, b = [start], []
-        while True:
-            bi, an = nxt[a[-1]]
-            b.append(bi)
-            if an == start:
-                break
-            a.append(an)
-            if len(a) > len(nxt):  # pragma: no cover - guarded by the orientation check
-                raise InvalidMeshError(f"the faces around {v} do not form one fan")
-        if len(a) != len(nxt):
-            raise InvalidMeshError(f"the faces around {v} form more than one fan (non-manifold vertex)")
-        return v, tuple(a), tuple(b)
+        fan = self._fan(v, start)
+        return v, tuple(a for a, _ in fan), tuple(rest[0] for _, rest in fan)
 
     def one_ring_values(self, v: int, start: int | None = None) -> tuple:
         """Values at ``(v, a_0..a_{m-1}, b_0..b_{m-1})``: the order of the subdivision matrix."""
@@ -187,29 +188,29 @@ class TriangleMesh(_Mesh):
 
     def one_ring(self, v: int, start: int | None = None) -> tuple[int, tuple[int, ...]]:
         """``(v, (a_0..a_{m-1}))``: the neighbours of an interior vertex, counter-clockwise from ``start``."""
-        if not self.is_interior(v):
-            raise InvalidMeshError(f"vertex {v} is on the boundary of the mesh: its 1-ring is not closed")
-        nxt = {}
-        for fi in self._incident[v]:
-            f = self.faces[fi]
-            k = f.index(v)
-            nxt[f[(k + 1) % 3]] = f[(k + 2) % 3]
-        start = min(nxt) if start is None else start
-        if start not in nxt:
-            raise InvalidMeshError(f"vertex {start} is not a neighbour of {v}")
-        ring = [start]
-        while nxt[ring[-1]] != start:
-            ring.append(nxt[ring[-1]])
-            if len(ring) > len(nxt):  # pragma: no cover - guarded by the orientation check
-                raise InvalidMeshError(f"the faces around {v} do not form one fan")
-        if len(ring) != len(nxt):
-            raise InvalidMeshError(f"the faces around {v} form more than one fan (non-manifold vertex)")
-        return v, tuple(ring)
+        return v, tuple(a for a, _ in self._fan(v, start))
 
 
 def _as_value(raw) -> tuple:
     """A vertex value as a tuple (a scalar is a 1-tuple)."""
     return tuple(raw) if isinstance(raw, (tuple, list)) else (raw,)
+
+
+def _ring_chart(n: int, rings: int, ring_labels: Callable):
+    """``(n, labels, vid)`` of a ring mesh: the checked valence, the labels in id order, and the id of
+    the vertex ``(s, u, v)`` named from any sector (``s`` mod ``n``; ``(s, 0, v) = (s + 1, v, 0)``)."""
+    n = check_valence(n)
+    if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or rings < 1:
+        raise InvalidMeshError(f"rings must be a positive integer, got {rings!r}")
+    labels = ring_labels(n, rings)
+    ident = {lab: i for i, lab in enumerate(labels)}
+
+    def vid(s, u, v):
+        if u == 0 and v == 0:
+            return 0
+        return ident[((s + 1) % n, v, 0)] if u == 0 else ident[(s % n, u, v)]
+
+    return n, labels, vid
 
 
 def _ring_values(labels, values) -> dict:
@@ -231,20 +232,7 @@ def ring_mesh(n: int, rings: int, values: Callable[[int, int, int], Sequence] | 
     >>> len(m.faces), len(m.vertices()), m.one_ring(0)
     (12, 19, (0, (1, 3, 5), (2, 4, 6)))
     """
-    n = check_valence(n)
-    if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or rings < 1:
-        raise InvalidMeshError(f"rings must be a positive integer, got {rings!r}")
-    labels = ring_mesh_labels(n, rings)
-    ident = {lab: i for i, lab in enumerate(labels)}
-
-    def vid(s, u, v):
-        s %= n
-        if u == 0 and v == 0:
-            return 0
-        if u == 0:
-            return ident[((s + 1) % n, v, 0)]
-        return ident[(s, u, v)]
-
+    n, labels, vid = _ring_chart(n, rings, ring_mesh_labels)
     faces = []
     for s in range(n):
         for u in range(rings):
@@ -314,17 +302,7 @@ def triangle_ring_mesh(n: int, rings: int, values: Callable[[int, int, int], Seq
     >>> len(m.faces), len(m.vertices()), m.one_ring(0)
     (20, 16, (0, (1, 2, 3, 4, 5)))
     """
-    n = check_valence(n)
-    if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or rings < 1:
-        raise InvalidMeshError(f"rings must be a positive integer, got {rings!r}")
-    labels = triangle_ring_labels(n, rings)
-    ident = {lab: i for i, lab in enumerate(labels)}
-
-    def vid(s, u, v):
-        if u == 0 and v == 0:
-            return 0
-        return ident[((s + 1) % n, v, 0)] if u == 0 else ident[(s % n, u, v)]
-
+    n, labels, vid = _ring_chart(n, rings, triangle_ring_labels)
     faces = []
     for s in range(n):
         for u in range(rings):

@@ -60,15 +60,17 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from types import MappingProxyType
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.lattice import TRIANGLE
 from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, TriangleMesh
-from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
+
+if TYPE_CHECKING:  # the lattice objects (imported by the scheme) call this module's refinement
+    from symdecomp.schemes.scheme import Scheme
 
 __all__ = [
     "MeshRules", "Refinement", "mesh_rules", "refine", "point_stencils", "refinement_matrix", "central_rings",
@@ -186,8 +188,8 @@ def triangle_mesh_rules(scheme: Scheme) -> TriangleMeshRules:
     reaches beyond the two triangles of its edge, or weighs the two ends (or the two opposite
     vertices) differently, so that the edge point would depend on which end is called ``O``.
     """
-    if scheme.lattice is not TRIANGLE:
-        raise InvalidSchemeError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, not triangle meshes")
+    if scheme.lattice.face_neighbours:
+        raise InvalidSchemeError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, not triangle meshes (its 1-ring has face neighbours)")
     edge = scheme.edge_rule
     ea = dict(edge.a)
     weights = [edge.center, *ea.values()]

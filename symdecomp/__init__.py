@@ -20,15 +20,17 @@ nothing else.
                    eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
                    polynomials over a triangle in Bezier form (``triangle_bezier``), signs of
                    rational functions of n for every n (``valence_signs``)
-``schemes/``       a scheme as data (edge, face, vertex rules, on quad or triangle meshes) and the
-                   one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the full matrix
-                   in FLINT rationals and its characteristic polynomial (``full_matrix``), rules as
-                   polynomials in the index shift (Eq. 17-23, ``shift_stencil``), whole quad
-                   meshes refined by its rules (Section 3, ``mesh``; triangle meshes,
-                   ``trimesh``), K-ring matrices by exact refinement (``rings``), the 1-ring and
-                   its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML files and by name
-                   (``files``), Loop's scheme (``loop``), Stam's (2N+8)-point patch matrix
-                   (``patch``; Loop's (N+6)-point one, ``triangle_patch``), the regular Loop
+``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,
+                   triangle; regular valence, rings and labels, refinement, regular patch), a
+                   scheme as data (edge, face, vertex rules on a lattice, for the whole mesh) and
+                   the one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the full
+                   matrix in FLINT rationals and its characteristic polynomial (``full_matrix``),
+                   rules as polynomials in the index shift (Eq. 17-23, ``shift_stencil``), local
+                   quad and triangle meshes and ring meshes (``mesh``), whole meshes refined by
+                   the rules (Section 3, ``refinement``), K-ring matrices by exact refinement
+                   (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML
+                   files and by name (``files``), Loop's scheme (``loop``), Stam's patch
+                   matrices, (2N+8)-point and Loop's (N+6)-point (``patch``), the regular Loop
                    patch (quartic box spline) in Bezier form (``box_spline``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
                    spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
@@ -43,9 +45,8 @@ nothing else.
                    of M_j (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
                    (``ring_charpoly``), masks (``ring_masks``); the patch's certified eigen-data
-                   (``eigendata``; the 1-ring columns by frequency, ``quad_eigendata`` and
-                   Loop's ``triangle_eigendata``) and exact evaluation (``evaluation``; Loop's
-                   sub-triangles, ``triangle_evaluation``)
+                   (``eigendata``; its 1-ring columns by frequency on every lattice,
+                   ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``,
                    ``ring_numeric``), certified (``certify``, ``ring_certify``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
@@ -105,9 +106,11 @@ from symdecomp.claims import CheckResult, Claim, Status, Step, all_claims, check
 from symdecomp.errors import *  # noqa: F403 - every error type is public
 from symdecomp.output.latex import aslatex
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
+from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
 from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
-from symdecomp.schemes.mesh import QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from symdecomp.schemes.mesh import QuadMesh, ring_mesh
 from symdecomp.schemes.patch import patch_matrices
+from symdecomp.schemes.refinement import central_rings, mesh_rules, refine
 from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
 from symdecomp.verify.c1 import C1Result, c1_test
@@ -171,6 +174,10 @@ __all__ = [
     "Region",
     "classify_support",
     # any scheme (triangle meshes, Loop) and K-ring matrices
+    "Lattice",
+    "QUAD",
+    "TRIANGLE",
+    "lattice",
     "loop",
     "loop_warren",
     "triangle_scheme",

@@ -10,7 +10,7 @@ from symdecomp.algebra.triangle_bezier import bernstein, bezier_derivative, bezi
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS, LATTICE_RAYS, refined_limits, regular_patch
 from symdecomp.schemes.loop import loop, triangle_scheme
-from symdecomp.schemes.trimesh import triangle_ring_mesh
+from symdecomp.schemes.mesh import triangle_ring_mesh
 from symdecomp.symbols import n as N
 
 F = Fraction

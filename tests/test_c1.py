@@ -10,7 +10,8 @@ from symdecomp.analysis.characteristic import LEVEL1_LABELS, check_applicable, f
 from symdecomp.analysis.defective import jordan_vertex_weights
 from symdecomp.cli import main
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.mesh import refine, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.mesh import ring_mesh, ring_mesh_labels
+from symdecomp.schemes.refinement import refine
 from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark
 from symdecomp.symbols import alpha, beta
 from symdecomp.symbols import n as N

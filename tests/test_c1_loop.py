@@ -267,8 +267,9 @@ def test_loop_sub_patches_are_the_limit_surface(n):
     n = 3 included: there the middle triangle's 12 control points name a_2 twice (its corners' 1-rings meet
     across the extraordinary vertex), and the box-spline patch still is the limit surface.
     """
-    from symdecomp.analysis.characteristic import canonical_triangle, subpatch_nets
+    from symdecomp.analysis.characteristic import subpatch_nets
     from symdecomp.schemes.box_spline import BOX_POINTS, regular_patch
+    from symdecomp.schemes.lattice import TRIANGLE
     from symdecomp.verify.c1 import _TRIANGLE_MAPS
 
     patch = regular_patch()
@@ -282,7 +283,7 @@ def test_loop_sub_patches_are_the_limit_surface(n):
     index = {label: i for i, label in enumerate(ring.labels)}
 
     def at(u, v):
-        label = canonical_triangle(0, u, v)
+        label = TRIANGLE.canonical(0, u, v)
         return level2[0] if label is None else level2[index[(label[0] % n, label[1], label[2])]]
 
     def limit(u, v):

@@ -19,8 +19,9 @@ from symdecomp.analysis.eigendata import (
 from symdecomp.analysis.evaluation import EvaluationError, PatchEvaluator, bspline_basis
 from symdecomp.cli import main
 from symdecomp.output.evaldata import binary_bytes, read_binary, write_atomic
-from symdecomp.schemes.mesh import InvalidMeshError, refinement_matrix, ring_mesh
+from symdecomp.schemes.mesh import InvalidMeshError, ring_mesh
 from symdecomp.schemes.patch import OUTER_POINTS, lattice_index, patch_matrices
+from symdecomp.schemes.refinement import refinement_matrix
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.verify.patch_eval import dyadic_limits
 

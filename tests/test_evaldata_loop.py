@@ -14,14 +14,13 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, to_acb
 from symdecomp.analysis.eigendata import certified_eigendata, patch_eigendata
-from symdecomp.analysis.evaluation import EvaluationError, PatchEvaluator
-from symdecomp.analysis.triangle_evaluation import box_basis
+from symdecomp.analysis.evaluation import EvaluationError, PatchEvaluator, box_basis
 from symdecomp.cli import main
 from symdecomp.output.evaldata import read_json
 from symdecomp.schemes.box_spline import BOX_POINTS, LATTICE_RAYS, regular_patch
 from symdecomp.schemes.loop import loop
+from symdecomp.schemes.patch import TRIANGLE_OUTER_POINTS as OUTER_POINTS
 from symdecomp.schemes.patch import patch_matrices
-from symdecomp.schemes.triangle_patch import OUTER_POINTS
 from symdecomp.verify.patch_eval import exact_to_mpf, triangle_dyadic_limits
 
 LOOP = loop()

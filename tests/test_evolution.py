@@ -148,7 +148,7 @@ def test_tangent_configuration_is_on_the_ellipse_of_eq_40():
 @pytest.mark.parametrize("kind", ["hyperbolic", "elliptic"])
 def test_quadric_meshes_have_only_the_stated_components(kind):
     """Out of the plane, the 1-ring of the hyperbolic mesh has only frequency 2, the elliptic one only 0."""
-    from symdecomp.schemes.mesh import central_rings
+    from symdecomp.schemes.refinement import central_rings
 
     n = 5
     mesh = evolution.quadric_ring_mesh(n, 2, kind, 0.5)
@@ -163,7 +163,7 @@ def test_quadric_meshes_have_only_the_stated_components(kind):
 
 
 def test_refine_mesh_agrees_with_the_matrix_on_the_central_ring():
-    from symdecomp.schemes.mesh import central_rings
+    from symdecomp.schemes.refinement import central_rings
 
     mesh = evolution.quadric_ring_mesh(5, 2, "hyperbolic", 0.5)
     refined = evolution.refine_mesh(CC, mesh, 1)

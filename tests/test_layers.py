@@ -114,3 +114,50 @@ def test_the_subpackages_point_to_the_one_map():
         doc = importlib.import_module(f"symdecomp.{name}").__doc__ or ""
         assert "module map" in doc and ":mod:`symdecomp`" in doc, name
         assert not re.search(r":mod:`\.\w", doc), f"symdecomp.{name} lists its modules again"
+#: The names of the mesh kinds; only the lattice objects (``schemes/lattice.py``) may ask which one a scheme has.
+MESH_KINDS = {"quad", "triangle"}
+LATTICE_MODULE = PACKAGE / "schemes" / "lattice.py"
+
+
+def _kind_comparisons(source: str):
+    """Lines that compare with a mesh kind's name (``== "quad"``, ``in ("quad", ...)``) or compare a ``.mesh``."""
+
+    def names_a_kind(node) -> bool:
+        if isinstance(node, ast.Constant):
+            return node.value in MESH_KINDS
+        if isinstance(node, (ast.Tuple, ast.List, ast.Set)):
+            return any(names_a_kind(e) for e in node.elts)
+        return isinstance(node, ast.Attribute) and node.attr == "mesh"
+
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Compare) and any(names_a_kind(x) for x in (node.left, *node.comparators)):
+            yield node.lineno
+        elif isinstance(node, ast.Dict) and any(names_a_kind(k) for k in node.keys if k is not None):
+            yield node.lineno  # a table keyed by the kinds' names is the same question
+
+
+def test_only_the_lattice_asks_which_mesh_kind():
+    """No module outside :mod:`symdecomp.schemes.lattice` branches on the mesh kind by name: it asks the lattice."""
+    offenders = [
+        (str(path.relative_to(PACKAGE)), line)
+        for path in MODULES
+        if path != LATTICE_MODULE
+        for line in _kind_comparisons(path.read_text())
+    ]
+    assert not offenders, f"compare mesh kinds by name (ask scheme.lattice instead): {offenders}"
+
+
+@pytest.mark.parametrize("line", [
+    'if scheme.mesh == "triangle": pass',
+    'x = "quad" != kind',
+    'ok = vec.mesh != other',
+    'ok = m in ("quad", "triangle")',
+    'spline = {"quad": 1, "triangle": 2}',
+])
+def test_the_mesh_kind_check_can_fail(line):
+    assert list(_kind_comparisons(line)) == [1]
+
+
+def test_the_mesh_kind_check_lets_names_be_spelled():
+    """Writing the name (files, JSON, messages) is not a comparison."""
+    assert not list(_kind_comparisons('mesh = "quad"\nlines.append(f\'mesh = "{scheme.lattice.name}"\')\nd = {"mesh": m}'))

@@ -7,7 +7,8 @@ import pytest
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, central_rings, mesh_rules, refine, ring_mesh
+from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, ring_mesh
+from symdecomp.schemes.refinement import central_rings, mesh_rules, refine
 from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta
 from symdecomp.symbols import n as N
@@ -112,3 +113,16 @@ def test_schemes_that_are_not_mesh_rules_are_rejected():
     skewed = Stencil.from_weights(R(3, 8), {-1: R(1, 8), 0: R(3, 8), 1: R(0)}, {-1: R(0), 0: R(1, 8)})
     with pytest.raises(InvalidSchemeError, match="mirror"):
         mesh_rules(Scheme("skewed", skewed, cc.face_rule, cc.vertex_rule))
+
+
+@pytest.mark.parametrize("n", [3, 5, 7])
+def test_triangle_meshes_share_the_topology_questions(n):
+    """The 2-ring triangle mesh: its centre's faces are the 1-ring (a disk of n triangles, bounded by the a_i)."""
+    from symdecomp.schemes.mesh import triangle_ring_mesh
+
+    mesh = triangle_ring_mesh(n, 2)
+    _, ring = mesh.one_ring(0)
+    one = mesh.neighbourhood(0, 1)
+    assert len(one.faces) == mesh.valence(0) == n and one.is_disk() and not mesh.neighbourhood(0, 2).boundary_vertices() & {0, *ring}
+    assert one.boundary_vertices() == frozenset(ring) and one.is_interior(0) and not any(one.is_interior(a) for a in ring)
+    assert all(mesh.valence(a) == 6 for a in ring) and type(one.with_values(one.values)) is type(mesh)

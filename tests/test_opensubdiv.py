@@ -15,7 +15,8 @@ import sympy as sp
 from symdecomp.analysis.support import limit_mask
 from symdecomp.cli import main
 from symdecomp.errors import SymdecompError
-from symdecomp.schemes.mesh import central_rings, ring_mesh
+from symdecomp.schemes.mesh import ring_mesh
+from symdecomp.schemes.refinement import central_rings
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.verify.opensubdiv import build as osd_build
 

@@ -150,7 +150,7 @@ def test_wrong_blocks_are_refuted():
     b = ring_blocks(loop(), 1)
     (offsets,), = b.offsets
     wrong = tuple((l, c + (sp.Rational(1, 64) if l == 0 else 0)) for l, c in offsets)
-    bad = RingBlocks(b.scheme, b.mesh, b.rings, b.classes, b.centre, b.centre_row, b.centre_column, ((wrong,),), b.weights)
+    bad = RingBlocks(b.scheme, b.lattice, b.rings, b.classes, b.centre, b.centre_row, b.centre_column, ((wrong,),), b.weights)
     c = certify_ring(loop(), 5, 1, blocks=bad)
     assert c.status is CrossCheckStatus.DISAGREE and "refuted" in c.message
     c = certify_ring(loop(), 5, 1, blocks=bad, method="structure")

@@ -104,7 +104,8 @@ def test_unrefined_cube_opposite_corner_is_inside_but_phi_vanishes_there():
     has every sector carrying phi_P, phi_P(Q) = 0, and phi_P > 0 at every nearby vertex of the
     refined meshes: an isolated zero inside the support, outside the 1-ring of P."""
     from symdecomp.analysis.support import _mask_fractions
-    from symdecomp.schemes.mesh import cube_mesh, mesh_rules, refine
+    from symdecomp.schemes.mesh import cube_mesh
+    from symdecomp.schemes.refinement import mesh_rules, refine
 
     cc = catmull_clark()
     cube = cube_mesh(lambda i: (Fraction(int(i == 0)),))

@@ -25,7 +25,7 @@ same three sub-patches Stam's exact evaluation uses at each level (Stam 1998; Pe
 2008, Section 6.1, for the Catmull-Clark ring).
 
 **Triangles (Loop).** Sector ``s`` is the wedge between edge rays ``s`` and ``s + 1``
-(:func:`~symdecomp.schemes.trimesh.triangle_ring_labels`); its ring at level 1 is the
+(:func:`~symdecomp.schemes.mesh.triangle_ring_labels`); its ring at level 1 is the
 triangle ``u, v >= 0, u + v <= 2`` minus the corner ``u + v < 1``: the three level-1 triangles
 :data:`TRIANGLES` ``(1,0),(2,0),(1,1)``, ``(1,0),(1,1),(0,1)`` and ``(0,1),(1,1),(0,2)``. Their three
 corners are regular (valence 6), so each is a regular quartic box-spline patch whose 12 control
@@ -59,8 +59,8 @@ import sympy as sp
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
-from symdecomp.schemes.loop import loop
-from symdecomp.schemes.scheme import Scheme, catmull_clark, subdivision_matrix
+from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
+from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
@@ -91,43 +91,6 @@ SUBPATCH_FACES = ((1, 0), (1, 1), (0, 1))
 TRIANGLES = (((1, 0), (2, 0), (1, 1)), ((1, 0), (1, 1), (0, 1)), ((0, 1), (1, 1), (0, 2)))
 
 
-def canonical(s: int, u: int, v: int) -> tuple[int, int, int] | None:
-    """The label ``(sector, u, v)`` with ``u >= 1`` of a quad grid point of sector ``s`` (``None``: ``O``).
-
-    Points just outside the sector (``u = -1`` or ``v = -1``) are named in the neighbouring
-    sector: ``(s, u, -1) = (s - 1, 1, u)`` and ``(s, -1, v) = (s + 1, v, 1)``.
-    """
-    if u == -1:
-        s, u, v = s + 1, v, 1
-    elif v == -1:
-        s, u, v = s - 1, 1, u
-    if u == 0 and v == 0:
-        return None
-    if u == 0:
-        s, u, v = s + 1, v, 0
-    return s, u, v
-
-
-def canonical_triangle(s: int, u: int, v: int) -> tuple[int, int, int] | None:
-    """The label ``(sector, u, v)`` with ``u >= 1`` of a triangle-lattice point near sector ``s`` (``None``: ``O``).
-
-    Sector ``s`` spans the lattice directions ``(1, 0)`` (ray ``s``) and ``(0, 1)`` (ray ``s + 1``);
-    its neighbours are the wedges of ``(1, -1), (1, 0)`` (sector ``s - 1``: a point ``(u, v)``, ``v < 0``,
-    is ``(s - 1, -v, u + v)`` there) and of ``(0, 1), (-1, 1)`` (sector ``s + 1``: ``(s + 1, u + v, -u)``).
-    """
-    if v < 0:
-        s, u, v = s - 1, -v, u + v
-    elif u < 0:
-        s, u, v = s + 1, u + v, -u
-    if u < 0 or v < 0:
-        raise InvalidSchemeError(f"lattice point ({u}, {v}) lies beyond the neighbouring sectors")
-    if u == 0 and v == 0:
-        return None
-    if u == 0:
-        s, u, v = s + 1, v, 0
-    return s, u, v
-
-
 def triangle_patch_points(corners) -> tuple[tuple[int, int], ...]:
     """The 12 lattice points of a regular Loop patch: the union of its three corners' 1-rings, sorted."""
     steps = ((1, 0), (-1, 0), (0, 1), (0, -1), (1, -1), (-1, 1))
@@ -137,9 +100,9 @@ def triangle_patch_points(corners) -> tuple[tuple[int, int], ...]:
 
 @dataclass(frozen=True)
 class RingLayout:
-    """The regular part of the ring on one mesh type: its spline, classes and block rows."""
+    """The regular part of the ring on one lattice: its spline, classes and block rows."""
 
-    mesh: str
+    lattice: Lattice
     #: The reference scheme whose regular rules the scheme must have, and their spline.
     reference: str
     spline: str
@@ -152,21 +115,29 @@ class RingLayout:
     offsets: tuple
 
 
-@lru_cache(maxsize=2)
-def ring_layout(mesh: str) -> RingLayout:
-    """The layout of ``mesh``'s ring (``'quad'``: Catmull-Clark, ``'triangle'``: Loop), read off :func:`ring_blocks`."""
-    triangle = mesh == "triangle"
-    blocks = ring_blocks(loop() if triangle else catmull_clark(), 3)
+def ring_layout(mesh: Lattice | str) -> RingLayout:
+    """The layout of a lattice's ring (quads: Catmull-Clark, triangles: Loop), read off :func:`ring_blocks`."""
+    return _ring_layout(lattice(mesh))
+
+
+@lru_cache(maxsize=4)
+def _ring_layout(lat: Lattice) -> RingLayout:
+    reference = lat.reference()
+    blocks = ring_blocks(reference, 3)
     classes = blocks.classes
-    one = sum(1 for u, v in classes if u + v == 1 or (not triangle and max(u, v) == 1))
-    two = sum(1 for u, v in classes if (u + v if triangle else max(u, v)) <= 2)
+    one = sum(1 for u, v in classes if lat.ring_of(u, v) == 1)
+    two = sum(1 for u, v in classes if lat.ring_of(u, v) <= 2)
     offsets = []
     for p in range(len(classes)):
         if any(blocks.offsets[p][q] for q in range(two, len(classes))):  # pragma: no cover - a property of the rules
             raise InvalidSchemeError(f"level-1 point {classes[p]} reads beyond the level-0 2-ring")
         offsets.append(tuple(tuple((l, to_fmpq(c)) for l, c in blocks.offsets[p][q]) for q in range(two)))
-    spline = "quartic box-spline" if triangle else "bicubic B-spline"
-    return RingLayout(mesh, "Loop" if triangle else "Catmull-Clark", spline, classes, one, two, tuple(offsets))
+    return RingLayout(lat, _display_name(reference.name), lat.spline, classes, one, two, tuple(offsets))
+
+
+def _display_name(name: str) -> str:
+    """``catmull-clark`` -> ``Catmull-Clark``."""
+    return "-".join(part.capitalize() for part in name.split("-"))
 
 
 def check_applicable(scheme: Scheme) -> None:
@@ -182,28 +153,27 @@ def check_applicable(scheme: Scheme) -> None:
         raise NotApplicableError(
             f"scheme {scheme.name!r} has free parameters {', '.join(map(str, scheme.parameters))}; give them values first"
         )
-    triangle = scheme.mesh == "triangle"
-    regular, reference = (6, loop()) if triangle else (4, catmull_clark())
+    lat = scheme.lattice
+    regular, reference = lat.regular_valence, lat.reference()
     try:
         ours, theirs = subdivision_matrix(scheme, regular), subdivision_matrix(reference, regular)
     except InvalidSchemeError as exc:
         raise NotApplicableError(f"scheme {scheme.name!r}: the C1 test does not apply ({exc})") from None
+    layout = ring_layout(lat)
     if ours[1:, :] != theirs[1:, :]:
-        layout = ring_layout(scheme.mesh)
-        rules = "edge rule" if triangle else "edge and face rules"
+        rules, verb = ("edge and face rules", "are") if lat.face_neighbours else ("edge rule", "is")
         raise NotApplicableError(
-            f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} {'is' if triangle else 'are'} not "
+            f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} {verb} not "
             f"{layout.reference}'s, so its regular patches are not {layout.spline}s (the only regular splines it knows)"
         )
     if ours[0, :] != theirs[0, :]:
-        layout = ring_layout(scheme.mesh)
         mine = tuple(ours[0, k] for k in (0, 1, 1 + regular) if k < ours.cols)
         standard = tuple(theirs[0, k] for k in (0, 1, 1 + regular) if k < theirs.cols)
         raise NotApplicableError(
             f"the C1 test does not apply to scheme {scheme.name!r}: its vertex rule at the regular valence {regular} has the "
-            f"weights {mine} (centre, each neighbour{'' if triangle else ', each face neighbour'}), not {layout.reference}'s "
-            f"{standard}; every regular vertex of the mesh uses it, so its regular patches are not {layout.spline}s "
-            "(the only regular splines it knows)"
+            f"weights {mine} (centre, each neighbour{', each face neighbour' if lat.face_neighbours else ''}), not "
+            f"{layout.reference}'s {standard}; every regular vertex of the mesh uses it, so its regular patches are not "
+            f"{layout.spline}s (the only regular splines it knows)"
         )
 
 
@@ -223,9 +193,8 @@ def _ball(w) -> flint.acb:
 
 def one_ring_rows(scheme: Scheme, n: int) -> list[dict]:
     """The rows of the new 1-ring classes (scheme rules at valence ``n``): ``{(sector offset, class): weight}``."""
-    rules = [scheme.edge_rule] if scheme.mesh == "triangle" else [scheme.edge_rule, scheme.face_rule]
     rows = []
-    for rule in rules:
+    for rule in scheme.stencils():
         weights: dict = {}
         for m, pairs in ((0, rule.a), (1, rule.b)):
             for k, w in pairs:
@@ -242,7 +211,7 @@ def frequency_block(scheme: Scheme, n: int, j: int, *, rows: int | None = None) 
     column is left out: for ``j != 0`` ``O`` is 0 in every eigenvector.
     """
     n = check_valence(n)
-    layout = ring_layout(scheme.mesh)
+    layout = ring_layout(scheme.lattice)
     rows = layout.two_ring if rows is None else rows
     powers = [omega_ball(n, j * d % n) for d in range(n)]
     B = flint.acb_mat(rows, layout.two_ring)
@@ -266,7 +235,12 @@ class FrequencyEigenvector:
     eigenvalue: flint.acb
     #: ``{(u, v): value}`` on the layout's classes of sector 0 (sector ``s``: times ``omega^s``).
     values: dict
-    mesh: str = "quad"
+    lattice: Lattice = QUAD
+
+    @property
+    def mesh(self) -> str:
+        """The lattice's name."""
+        return self.lattice.name
 
 
 def _one_ring_null_vector(M: flint.acb_mat, lam: flint.acb, j: int) -> list:
@@ -294,7 +268,7 @@ def frequency_eigenvector(scheme: Scheme, n: int, j: int, eigenvalue: flint.acb)
     The outer part solves ``(lambda I - S_j) c_out = (lower left block) c_1ring`` (Arb's certified
     solve); ``lambda`` must not be an eigenvalue of ``S_j``, which the spectral test has shown.
     """
-    layout = ring_layout(scheme.mesh)
+    layout = ring_layout(scheme.lattice)
     k1, k2 = layout.one_ring, layout.two_ring
     B = frequency_block(scheme, n, j, rows=len(layout.labels))
     lam = eigenvalue
@@ -312,11 +286,11 @@ def frequency_eigenvector(scheme: Scheme, n: int, j: int, eigenvalue: flint.acb)
     scale = c[0] if c[0] != 0 else c[1]
     c = [x / scale for x in c]
     values = {label: sum((B[r, m] * c[m] for m in range(k2)), flint.acb(0)) for r, label in enumerate(layout.labels)}
-    return FrequencyEigenvector(n, j, lam, values, scheme.mesh)
+    return FrequencyEigenvector(n, j, lam, values, scheme.lattice)
 
 
 def _value(vec: FrequencyEigenvector, u: int, v: int) -> flint.acb:
-    lab = (canonical_triangle if vec.mesh == "triangle" else canonical)(0, u, v)
+    lab = vec.lattice.canonical(0, u, v)
     if lab is None:
         return flint.acb(0)
     s, uu, vv = lab
@@ -330,11 +304,16 @@ def subpatch_nets(vec: FrequencyEigenvector) -> tuple:
     ``(a - 1 + i, b - 1 + k)``. Triangles: for each of :data:`TRIANGLES` the dict
     ``{lattice point: value}`` on its 12 :func:`triangle_patch_points`.
     """
-    if vec.mesh == "triangle":
-        return tuple({p: _value(vec, *p) for p in triangle_patch_points(t)} for t in TRIANGLES)
-    return tuple(
+    return _SUBPATCH_NETS[vec.lattice](vec)
+
+
+#: The characteristic ring's sub-patch nets on each lattice.
+_SUBPATCH_NETS = {
+    QUAD: lambda vec: tuple(
         [[_value(vec, a - 1 + i, b - 1 + k) for k in range(4)] for i in range(4)] for a, b in SUBPATCH_FACES
-    )
+    ),
+    TRIANGLE: lambda vec: tuple({p: _value(vec, *p) for p in triangle_patch_points(t)} for t in TRIANGLES),
+}
 
 
 def inner_boundary_nets(vec: FrequencyEigenvector) -> tuple[list[list[flint.acb]], list[list[flint.acb]]]:

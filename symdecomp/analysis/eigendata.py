@@ -1,8 +1,8 @@
 """Certified eigenstructure of the patch matrix (Stam's exact-evaluation data): Catmull-Clark and Loop.
 
 Written for the (2N+8)-point Catmull-Clark patch below; Loop's (N+6)-point patch
-(:mod:`symdecomp.schemes.triangle_patch`) shares the whole assembly with its own 1-ring columns
-(:mod:`symdecomp.analysis.triangle_eigendata`) and a 5 x 5 regular block, and where its matrix
+(:mod:`symdecomp.schemes.patch`) shares the whole assembly with its own 1-ring columns
+(:mod:`symdecomp.analysis.ring_eigendata`) and a 5 x 5 regular block, and where its matrix
 is not diagonalizable (N = 3) keeps the Jordan pairs (:attr:`PatchEigenData.jordan`) instead of
 refusing.
 
@@ -46,8 +46,7 @@ from symdecomp.algebra.numbers import to_arb, to_fmpq, to_fraction
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
-from symdecomp.analysis.quad_eigendata import LazyTable, circulant_weights, column_group, quad_ring_columns, trig_table
-from symdecomp.analysis.triangle_eigendata import triangle_ring_columns
+from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, circulant_weights, column_group, trig_table
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
@@ -106,7 +105,7 @@ _REGULAR: dict = {}
 
 def _regular_part(p: PatchMatrices):
     """:func:`_regular_part_of` ``p``, remembered for the last patch (three steps ask for it)."""
-    key = (p.mesh, p.n, id(p))
+    key = (p.lattice, p.n, id(p))
     if key not in _REGULAR or _REGULAR[key][0] is not p:
         _REGULAR.clear()
         _REGULAR[key] = (p, _regular_part_of(p))
@@ -176,12 +175,8 @@ def _av_row(v_row: list, values, jordan) -> list:
 
 
 def _ring_columns(p: PatchMatrices, prec: int) -> list:
-    """The eigenvectors of the 1-ring block, frequency by frequency (quads here, triangles in
-    :mod:`symdecomp.analysis.triangle_eigendata`)."""
-    table = trig_table(p.n)
-    if p.mesh == "triangle":
-        return triangle_ring_columns(p, table, prec)
-    return quad_ring_columns(p, table)
+    """The eigenvectors of the 1-ring block, frequency by frequency (:mod:`symdecomp.analysis.ring_eigendata`)."""
+    return RING_EIGEN[p.lattice].columns(p, trig_table(p.n), prec)
 
 
 def _sparse_times(row: dict, rows: list, size: int) -> list:
@@ -222,7 +217,7 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
             verdict = col.exact_check(nu, g_rows[r]) if col.exact_check else None
             if verdict is None:
                 raise _NeedPrecision
-            if not verdict and p.mesh == "triangle":
+            if not verdict and RING_EIGEN[p.lattice].jordan:
                 jordan.append((k0 + r, c, coeff[c]))
             elif not verdict:
                 raise NotDiagonalizableError(
@@ -313,7 +308,7 @@ def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: i
     entry is replaced only when its new ball lies inside ``(-2^-1075, 2^-1075)``, i.e. it is
     exactly 0; everything else is left to the caller's precision loop. Quads only.
     """
-    if p.mesh != "quad" or data.jordan:
+    if not RING_EIGEN[p.lattice].sharpen or data.jordan:
         return
     size, k0 = p.size, p.ring_size
     if not bad or any(i >= k0 or not data.phi[k][i, l].contains(0) for k, i, l in bad):

@@ -1,9 +1,11 @@
 """Exact evaluation of the patch next to an extraordinary vertex (Stam's method): Catmull-Clark and Loop.
 
-Loop's triangle patch takes the same path with its own domain, sub-triangles and box-spline
-basis (:mod:`symdecomp.analysis.triangle_evaluation`); the Catmull-Clark patch is described here.
+One evaluator for every lattice (:mod:`symdecomp.schemes.lattice`): the lattice gives the
+parameter domain, the level of a parameter and the sub-patch it falls in
+(:meth:`~symdecomp.schemes.lattice.Lattice.locate`); this module gives each lattice's regular
+basis and the limit masks at the centre (:data:`_BASES`).
 
-The patch ``(O, e_2, f_1, e_1)`` of a valence-``N`` vertex is evaluated from its ``K = 2N + 8``
+**Quads** (Catmull-Clark). The patch ``(O, e_2, f_1, e_1)`` of a valence-``N`` vertex is evaluated from its ``K = 2N + 8``
 control points (order: :mod:`symdecomp.schemes.patch`) and the eigen-data of the patch matrix
 (:mod:`symdecomp.analysis.eigendata`): for ``(u, v)`` in ``[0, 1]^2`` other than ``(0, 0)``,
 
@@ -16,6 +18,24 @@ control points (order: :mod:`symdecomp.schemes.patch`) and the eigen-data of the
 Derivatives follow by the chain rule (``d/du = 2^n d/ds``). At ``(0, 0)`` the point is the
 limit position (the position mask) and the normal the cross product of the two tangent masks'
 images; the derivatives there are not defined by the parametrization (NaN).
+
+**Triangles** (Loop). The patch ``(O, a_0, a_1)`` next to a valence-``N`` vertex (order and
+sub-patches: :mod:`symdecomp.schemes.patch`) for ``u, v >= 0``, ``u + v <= 1`` other
+than ``(0, 0)``:
+
+* ``n = floor(-log2(u + v)) + 1``, ``(x, y) = 2^n (u, v)`` (so ``1 < x + y <= 2``);
+* sub-patch ``k`` and local ``(s, t)``: ``x >= 1``: ``k = 0``, ``(x - 1, y)``; else ``y >= 1``:
+  ``k = 2``, ``(x, y - 1)``; else ``k = 1`` (upside down), ``(1 - x, 1 - y)``, and derivatives
+  change sign once per order (``sigma = -1``);
+* the same sum with the 12 quartic box-spline basis functions ``b_l``
+  (:func:`~symdecomp.schemes.box_spline.regular_patch`, evaluated in Bernstein-Bezier form;
+  derivatives from the derivative nets, :func:`box_basis`).
+
+At ``(0, 0)`` the limit point and the tangent plane come from the eigen-data itself
+(:func:`eigen_masks`): the eigenvalue-1 eigenvector is constant (``Phi_0[0, l]``), so the limit
+position mask is ``Phi_0[0, 0]`` times row 0 of ``V^-1``; rows 2 and 3 (frequency 1, the
+``cos`` and ``sin`` patterns) are the two tangent masks, turning from ``a_0`` to ``a_1`` like
+``(u, v)``, so their images' cross product points along ``du x dv``.
 
 Two arithmetics, one formula: :class:`PatchEvaluator` holds numpy float64 arrays (from the data
 file, vectorized over many parameters) or numpy object arrays of mpmath numbers at any
@@ -35,21 +55,28 @@ Affine invariance as a check: equal control points give that point everywhere.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from functools import lru_cache
 
 import mpmath
 import numpy as np
 import sympy as sp
 
+from symdecomp.algebra.triangle_bezier import bernstein, bezier_derivative
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch_eigendata
 from symdecomp.analysis.masks import INDEX, LAMBDA1, limit_masks
-from symdecomp.analysis.triangle_evaluation import box_basis, check_regular_patch, eigen_masks, locate_triangle
-from symdecomp.errors import EvaluationError
+from symdecomp.errors import EvaluationError, InvalidSchemeError
+from symdecomp.schemes.box_spline import DEGREE, regular_patch
+from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
-__all__ = ["EvaluationError", "PatchEvaluator", "bspline_basis", "patch_order", "patch_masks", "curvatures"]
+__all__ = [
+    "EvaluationError", "PatchEvaluator", "bspline_basis", "box_basis", "patch_order", "patch_masks", "curvatures",
+    "eigen_masks", "check_regular_patch",
+]
 
 
 #: Output key -> order of the derivative in (u, v).
@@ -83,12 +110,18 @@ class PatchEvaluator:
     tangent_masks: np.ndarray  # (2, K)
     #: Working precision (decimal digits) of the mpmath arithmetic; None for float64.
     dps: int | None = None
-    #: ``"quad"`` (Catmull-Clark: ``[0, 1]^2``, bicubic sub-patches) or ``"triangle"`` (Loop:
-    #: ``u, v >= 0``, ``u + v <= 1``, quartic box-spline sub-patches, :mod:`symdecomp.analysis.triangle_evaluation`).
-    mesh: str = "quad"
+    #: The lattice: :data:`~symdecomp.schemes.lattice.QUAD` (Catmull-Clark: ``[0, 1]^2``, bicubic
+    #: sub-patches) or :data:`~symdecomp.schemes.lattice.TRIANGLE` (Loop: ``u, v >= 0``, ``u + v <= 1``,
+    #: quartic box-spline sub-patches).
+    lattice: Lattice = QUAD
     #: Jordan pairs ``(i, c, gamma)`` of the eigen-data (:class:`~symdecomp.analysis.eigendata.PatchEigenData`):
     #: ``J^m`` adds ``m lam^(m-1) gamma x_c`` to component ``i``.
     jordan: tuple = ()
+
+    @property
+    def mesh(self) -> str:
+        """The lattice's name."""
+        return self.lattice.name
 
     @classmethod
     def from_rounded(cls, scheme: Scheme, data: RoundedEigenData) -> PatchEvaluator:
@@ -97,12 +130,8 @@ class PatchEvaluator:
     @classmethod
     def from_file_arrays(cls, scheme: Scheme, n: int, values, inverse, phi, jordan=()) -> PatchEvaluator:
         values, inverse, phi = np.asarray(values, float), np.asarray(inverse, float), np.asarray(phi, float)
-        if scheme.mesh == "triangle":
-            check_regular_patch(scheme)
-            pos, tan = eigen_masks(values, inverse, phi)
-        else:
-            pos, tan = _masks(scheme, n, float)
-        return cls(n, values, inverse, phi, pos, tan, None, scheme.mesh, tuple((i, c, float(g)) for i, c, g in jordan))
+        pos, tan = _basis(scheme.lattice).masks(scheme, n, values, inverse, phi, float)
+        return cls(n, values, inverse, phi, pos, tan, None, scheme.lattice, tuple((i, c, float(g)) for i, c, g in jordan))
 
     @classmethod
     def exact(cls, scheme: Scheme, n: int, dps: int = 30) -> PatchEvaluator:
@@ -115,13 +144,10 @@ class PatchEvaluator:
             values = np.array([mp(x) for x in data.values], dtype=object)
             inverse = np.array([[mp(data.inverse[i, j]) for j in range(size)] for i in range(size)], dtype=object)
             phi = np.array([[[mp(t[i, l]) for l in range(t.ncols())] for i in range(size)] for t in data.phi], dtype=object)
-            if scheme.mesh == "triangle":
-                check_regular_patch(scheme)
-                pos, tan = eigen_masks(values, inverse, phi)
-            else:
-                pos, tan = _masks(scheme, n, lambda e: mpmath.mpf(sp.N(e, dps + 10)) if isinstance(e, sp.Basic) else mpmath.mpf(e))
+            conv = lambda e: mpmath.mpf(sp.N(e, dps + 10)) if isinstance(e, sp.Basic) else mpmath.mpf(e)  # noqa: E731
+            pos, tan = _basis(scheme.lattice).masks(scheme, n, values, inverse, phi, conv)
             jordan = tuple((i, c, mp(g)) for i, c, g in data.jordan)
-        return cls(n, values, inverse, phi, pos, tan, dps + 10, scheme.mesh, jordan)
+        return cls(n, values, inverse, phi, pos, tan, dps + 10, scheme.lattice, jordan)
 
     def evaluate(self, control_points, u, v) -> dict:
         """Point, first and second derivatives and unit normal at the parameters ``(u, v)`` (arrays).
@@ -144,8 +170,8 @@ class PatchEvaluator:
         u, v = np.broadcast_arrays(u, v)
         if any(x < 0 or x > 1 for x in np.concatenate([u.ravel(), v.ravel()])):
             raise EvaluationError("parameters must lie in [0, 1]")
-        if self.mesh == "triangle" and any(a + b > 1 for a, b in zip(u.ravel(), v.ravel())):
-            raise EvaluationError("parameters of a triangle patch must satisfy u + v <= 1")
+        if not all(self.lattice.in_domain(a, b) for a, b in zip(u.ravel(), v.ravel())):
+            raise EvaluationError(f"parameters of a {self.lattice} patch must satisfy u + v <= 1")
         shape, u, v = u.shape, u.ravel(), v.ravel()
         proj = self.inverse.dot(c)  # (K, d): the control points in the eigenbasis
         if exact:
@@ -159,7 +185,9 @@ class PatchEvaluator:
         if origin.size:
             t1, t2 = self.tangent_masks.dot(c)
             # quads: (t1, t2) turn from e_0 to e_1, against (u, v); triangles: from a_0 to a_1, with it
-            nrm = _normals(t1[None, :], t2[None, :])[0] if self.mesh == "triangle" else _normals(t2[None, :], t1[None, :])[0]
+            if not self.lattice.tangents_along_parameters:
+                t1, t2 = t2, t1
+            nrm = _normals(t1[None, :], t2[None, :])[0]
             for p in origin:
                 out["point"][p] = self.position_mask.dot(c)
                 out["normal"][p] = nrm
@@ -168,24 +196,17 @@ class PatchEvaluator:
         return {k: a.reshape(shape + (c.shape[1],)) for k, a in out.items()}
 
     def _vectorized(self, proj, u, v) -> dict:
-        triangle = self.mesh == "triangle"
+        lat, basis_at = self.lattice, _basis(self.lattice).vector
         origin = (u == 0) & (v == 0)
-        m, e = np.frexp(np.where(origin, 1.0, u + v if triangle else np.maximum(u, v)))
+        m, e = np.frexp(np.where(origin, 1.0, lat.level_measure(u, v, np)))
         level = 1 - e + (m == 0.5)
         us, vs = np.ldexp(u, level - 1), np.ldexp(v, level - 1)
-        if triangle:
-            k, s, t, sign = locate_triangle(2 * us, 2 * vs, np)
-        else:
-            k = np.where(vs < 0.5, 0, np.where(us < 0.5, 2, 1))
-            s, t, sign = np.where(k == 2, 2 * us, 2 * us - 1), np.where(k == 0, 2 * vs, 2 * vs - 1), 1
+        k, s, t, sign = lat.locate(2 * us, 2 * vs, np)
         weights = self.values[None, :] ** (level - 1)[:, None]
         scale = (np.ldexp(1.0, level) * sign)[:, None]
         out = {}
         for key, (ds, dt) in _DERIVATIVES.items():
-            if triangle:
-                basis = box_basis(s, t, ds, dt, float)
-            else:
-                basis = np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(u.size, 16)
+            basis = basis_at(s, t, ds, dt)
             g = np.empty((u.size, self.values.size), dtype=np.result_type(self.phi, self.values))
             for kk in range(3):
                 sel = k == kk
@@ -202,26 +223,15 @@ class PatchEvaluator:
             for key in _DERIVATIVES:
                 out[key][p] = mpmath.mpf(0)
             return
-        triangle = self.mesh == "triangle"
+        lat, basis_at = self.lattice, _basis(self.lattice).scalar
         level = 1
-        while (u + v if triangle else max(u, v)) <= 0.5:
+        while lat.level_measure(u, v, None) <= 0.5:
             u, v, level = u * 2, v * 2, level + 1
-        if triangle:
-            k, s, t, sign = locate_triangle(2 * u, 2 * v)
-        elif v < 0.5:
-            k, s, t, sign = 0, 2 * u - 1, 2 * v, 1
-        elif u < 0.5:
-            k, s, t, sign = 2, 2 * u, 2 * v - 1, 1
-        else:
-            k, s, t, sign = 1, 2 * u - 1, 2 * v - 1, 1
+        k, s, t, sign = lat.locate(2 * u, 2 * v)
         scale = 2**level * sign
         weights = self.values ** (level - 1)
         for key, (ds, dt) in _DERIVATIVES.items():
-            if triangle:
-                basis = box_basis(np.array([s], dtype=object), np.array([t], dtype=object), ds, dt, mpmath.mpf)[0]
-            else:
-                basis = np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel()  # index a + 4 b
-            g = self.phi[k].dot(basis)
+            g = self.phi[k].dot(basis_at(s, t, ds, dt))
             total = (weights * g).dot(proj)
             for i, c, gamma in self.jordan:
                 total = total + g[i] * (level - 1) * self.values[i] ** max(level - 2, 0) * gamma * proj[c]
@@ -274,3 +284,80 @@ def _masks(scheme: Scheme, n: int, conv):
     if conv is float:
         pos, tan = pos.astype(float), tan.astype(float)
     return pos, tan
+
+
+@lru_cache(maxsize=64)
+def _derivative_matrix(ds: int, dt: int, kind: str, prec: int):
+    """12 x (Bezier count) matrix: row ``i`` is the net of ``d^ds/ds d^dt/dt b_i`` (degree ``4 - ds - dt``)."""
+    rows = []
+    for net in regular_patch().coefficients:
+        net, degree = list(net), DEGREE
+        for direction, times in (("u", ds), ("v", dt)):
+            for _ in range(times):
+                net, degree = bezier_derivative(net, degree, direction), degree - 1
+        rows.append(net)
+    if kind == "float":
+        return np.array([[x.numerator / x.denominator for x in row] for row in rows])
+    with mpmath.workprec(prec):
+        return np.array([[mpmath.mpf(x.numerator) / x.denominator for x in row] for row in rows], dtype=object)
+
+
+def box_basis(s, t, ds: int, dt: int, conv) -> np.ndarray:
+    """``(P, 12)``: the derivative ``(ds, dt)`` of the 12 box-spline basis functions at the points ``(s, t)``.
+
+    ``conv`` is ``float`` (numpy float64 arrays) or ``mpmath.mpf`` (object arrays at the current precision).
+    """
+    kind = "float" if conv is float else "mpf"
+    D = _derivative_matrix(ds, dt, kind, mpmath.mp.prec if kind == "mpf" else 0)
+    B = np.array(bernstein(DEGREE - ds - dt, s, t), dtype=object if kind == "mpf" else float)
+    return (D @ B.reshape(D.shape[1], -1)).T
+
+
+def eigen_masks(values, inverse, phi) -> tuple[np.ndarray, np.ndarray]:
+    """``(position mask, (cos, sin) tangent masks)`` of the centre from Loop eigen-data (any number type)."""
+    if not (abs(values[0] - 1) < 1e-9 and abs(values[2] - values[3]) < 1e-9 * (1 + abs(values[2]))):
+        raise InvalidSchemeError("the eigen-data is not in the triangle patch's order (1 first, then the frequency-1 pair)")
+    return phi[0][0, 0] * inverse[0], np.array([inverse[2], inverse[3]])
+
+
+def check_regular_patch(scheme: Scheme) -> None:
+    """Raise unless the scheme's regular patch is the one the evaluator uses (Loop's quartic box spline)."""
+    if regular_patch(scheme).coefficients != regular_patch().coefficients:
+        raise InvalidSchemeError(f"scheme {scheme.name!r}: its regular patch is not Loop's box spline; the evaluator does not support it")
+
+
+@dataclass(frozen=True)
+class _PatchBasis:
+    """A lattice's regular patch basis and its centre masks, as the evaluator uses them."""
+
+    #: ``(s, t, ds, dt) -> (P, m)``: the basis (or a derivative) at float64 arrays of local parameters.
+    vector: Callable
+    #: ``(s, t, ds, dt) -> (m,)``: the same at one point, mpmath numbers.
+    scalar: Callable
+    #: ``(scheme, n, values, inverse, phi, conv) -> (position mask, tangent masks)`` in the patch's order.
+    masks: Callable
+
+
+def _triangle_masks(scheme: Scheme, n: int, values, inverse, phi, conv):
+    check_regular_patch(scheme)
+    return eigen_masks(values, inverse, phi)
+
+
+_BASES = {
+    QUAD: _PatchBasis(
+        lambda s, t, ds, dt: np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(s.size, 16),
+        lambda s, t, ds, dt: np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel(),  # index a + 4 b
+        lambda scheme, n, values, inverse, phi, conv: _masks(scheme, n, conv),
+    ),
+    TRIANGLE: _PatchBasis(
+        lambda s, t, ds, dt: box_basis(s, t, ds, dt, float),
+        lambda s, t, ds, dt: box_basis(np.array([s], dtype=object), np.array([t], dtype=object), ds, dt, mpmath.mpf)[0],
+        _triangle_masks,
+    ),
+}
+
+
+def _basis(lat: Lattice) -> _PatchBasis:
+    if lat not in _BASES:  # pragma: no cover - every lattice so far has its patch basis
+        raise InvalidSchemeError(f"the patch evaluator has no regular basis for {lat} meshes")
+    return _BASES[lat]

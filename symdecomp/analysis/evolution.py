@@ -287,7 +287,7 @@ def quadric_ring_mesh(n: int, rings: int = 3, kind: str = "hyperbolic", height: 
 
 def refine_mesh(scheme: Scheme, mesh, levels: int):
     """``levels`` refinement steps of a :class:`symdecomp.schemes.mesh.QuadMesh` by the scheme's mesh rules."""
-    from symdecomp.schemes.mesh import refine
+    from symdecomp.schemes.refinement import refine
 
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
         raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")

@@ -137,7 +137,7 @@ def one_ring_matrices(scheme: Scheme) -> tuple[sp.ImmutableMatrix, sp.ImmutableM
     >>> M, E0.shape
     (Matrix([[omega/8 + 3/8 + 1/(8*omega)]]), (2, 2))
     """
-    if scheme.mesh != "triangle":
+    if scheme.lattice.face_neighbours:
         return per_frequency_matrix(scheme), recursion_matrix(scheme)
     edge, v = scheme.edge_rule, scheme.vertex_rule
     M = sp.ImmutableMatrix([[sp.expand(sum((w * OMEGA**k for k, w in edge.a), sp.Integer(0)))]])

@@ -32,7 +32,8 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_sympy
 from symdecomp.errors import InvalidSchemeError, NotApplicableError, SymdecompError
-from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, regular_valence, ring_subdivision_matrix
+from symdecomp.schemes.lattice import Lattice
+from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -45,7 +46,7 @@ class RingBlocks:
     """The bordered circulant-block form of the ``K``-ring matrix, for every valence."""
 
     scheme: str
-    mesh: str
+    lattice: Lattice
     rings: int
     #: The vertex classes ``(u, v)`` of a sector.
     classes: tuple[tuple[int, int], ...]
@@ -128,7 +129,7 @@ def read_blocks(S: RingMatrix, scheme: Scheme) -> RingBlocks:
         offsets.append(tuple(block_row))
     v = scheme.vertex_rule
     weights = tuple(zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)))
-    return RingBlocks(scheme.name, scheme.mesh, S.rings, classes, centre, centre_row, centre_column, tuple(offsets), weights)
+    return RingBlocks(scheme.name, scheme.lattice, S.rings, classes, centre, centre_row, centre_column, tuple(offsets), weights)
 
 
 @lru_cache(maxsize=32)
@@ -148,7 +149,7 @@ def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
             "the centre's vertex rule to be independent of n"
         )
     n0 = 4 * rings + 7
-    if n0 == regular_valence(scheme.mesh):  # pragma: no cover - 4K + 7 is odd
+    if n0 == scheme.lattice.regular_valence:  # pragma: no cover - 4K + 7 is odd
         n0 += 1
     blocks = read_blocks(ring_subdivision_matrix(scheme, n0, rings, symbolic_centre=True), scheme)
     for n in (n0 + 1, n0 + 2):

@@ -28,7 +28,7 @@ Sector ``s`` *carries* ``phi_P`` if at every level ``phi_P`` is not identically 
 share a vertex with ``F``. Two facts decide every sector at level 0:
 
 1. *Locality*: the limit function on a face ``F`` depends only on the values on ``N(F)``
-   (each rule of :func:`symdecomp.schemes.mesh.mesh_rules` reads a vertex's 1-ring, an edge's two
+   (each rule of :func:`symdecomp.schemes.refinement.mesh_rules` reads a vertex's 1-ring, an edge's two
    faces or one face). So values zero on ``N(F)`` mean ``phi_P = 0`` on ``F``.
 2. *Propagation* (needs nonnegative rules whose vertex rule and limit masks are strictly
    positive; checked from the scheme, else :class:`~symdecomp.errors.InvalidSchemeError`):
@@ -64,7 +64,8 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_fraction, to_sympy
 from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError, NotApplicableError
-from symdecomp.schemes.mesh import QuadMesh, mesh_rules, refine
+from symdecomp.schemes.mesh import QuadMesh
+from symdecomp.schemes.refinement import mesh_rules, refine
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 
 __all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme"]

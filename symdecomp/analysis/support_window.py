@@ -166,7 +166,7 @@ def hypotheses_for_every_valence(scheme) -> tuple[list[str], list]:
     from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
     from symdecomp.analysis.masks import limit_masks
     from symdecomp.errors import InvalidInputError, InvalidSchemeError
-    from symdecomp.schemes.mesh import mesh_rules
+    from symdecomp.schemes.refinement import mesh_rules
     from symdecomp.symbols import cos_jtheta
     from symdecomp.symbols import n as N
 

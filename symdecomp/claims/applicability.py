@@ -23,7 +23,7 @@ from __future__ import annotations
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.mesh import mesh_rules
+from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import sin_jtheta as SIN

@@ -42,7 +42,8 @@ from symdecomp.claims.applicability import WHOLE_MESH
 from symdecomp.claims.notation import eq, gt
 from symdecomp.claims.notation import n as N
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
-from symdecomp.schemes.mesh import cube_mesh, mesh_rules, point_stencils, refine, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.mesh import cube_mesh, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.refinement import mesh_rules, point_stencils, refine
 from symdecomp.schemes.scheme import Scheme
 
 #: Valences the exact checks run for: below FIRST_VALENCE they are the proof, from there on a cross-check of the

@@ -14,7 +14,7 @@ import sympy as sp
 
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
-from symdecomp.schemes.loop import loop
+from symdecomp.schemes.lattice import LATTICES
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 from symdecomp.symbols import n as N
 from symdecomp.verify.c1 import c1_test
@@ -63,21 +63,19 @@ def _c1_reif(scheme: Scheme) -> CheckResult:
     rows, failed = _table(scheme)
     if failed:
         return failed
-    companion = loop() if scheme.mesh == "quad" else catmull_clark()
+    companion = next(lat for lat in LATTICES.values() if lat != scheme.lattice).reference()
     other, failed = _table(companion)
     if failed:
         return failed
     lo, hi = rows[0][0], rows[-1][0]
     # alpha = beta = 0 at n = 3, Catmull-Clark's weights at the regular valence 4 (which every regular vertex uses)
     broken = c1_test(catmull_clark(sp.Rational(3, 32) * (N - 3), sp.Rational(1, 64) * (N - 3)), 3)
-    spline = {"quad": "three bicubic sub-patches", "triangle": "three quartic box-spline sub-patches (degree-6 Jacobian)"}
     steps = (
         Step("For each $n$: $\\lambda$, a lower bound of the gap $|\\lambda| - \\max|\\mu|$ over the other eigenvalues "
              "$\\mu$ of the 2-ring matrix, a lower bound of the Jacobian of the characteristic map (Bernstein-Bezier "
-             f"coefficients of its {spline[scheme.mesh]}, Arb), and the winding number of its inner boundary",
+             f"coefficients of its {scheme.lattice.subpatches_text}, Arb), and the winding number of its inner boundary",
              sp.Matrix([_HEADER] + rows)),
-        Step(f"The same for {companion.name}: {spline[companion.mesh]}"
-             + (", in the local parameters of the level-1 lattice triangles" if companion.mesh == "triangle" else ""),
+        Step(f"The same for {companion.name}: {companion.lattice.subpatches_text}{companion.lattice.subpatches_where}",
              sp.Matrix([_HEADER] + other)),
         Step(f"With the vertex weights $\\alpha = \\beta = 0$ at $n = 3$ the test fails ({broken.verdict}): "
              + broken.reason.replace("lambda", "$\\lambda$")),

@@ -110,9 +110,7 @@ def _lambda1_at(scheme: Scheme, valence: int):
 
 def _regular_lambda1(scheme: Scheme):
     """``(valence, lambda_1)`` at the regular valence, where the frequency-1 eigenvalues are simplest."""
-    from symdecomp.schemes.rings import regular_valence
-
-    valence = regular_valence(scheme.mesh)
+    valence = scheme.lattice.regular_valence
     return valence, _lambda1_at(scheme, valence)
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 
 from symdecomp.cli.common import Once, add_scheme_option, flag, integer, print_json, progress, valence_range
-from symdecomp.verify.c1 import c1_test, method
+from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["register", "run"]
@@ -50,7 +50,7 @@ def run(args) -> int:
         print_json([r.as_json() for r in results])
     else:
         print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
-        print(f"method: {method(args.scheme.mesh)}")
+        print(f"method: {args.scheme.lattice.c1_method}")
         for r in results:
             print(f"n = {r.n:>3}: {_LABEL[r.verdict]}: {r.reason}")
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1

@@ -16,6 +16,7 @@ import sys
 
 from symdecomp.errors import InvalidInputError, SymdecompError
 from symdecomp.schemes.files import SCHEMES, load_scheme
+from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import MAX_DIGITS, MAX_DPS
@@ -222,14 +223,15 @@ def add_rings_option(parser: argparse.ArgumentParser) -> None:
 
 def general_path(args) -> bool:
     """Whether a command takes the any-scheme route (triangle meshes or ``--rings`` > 1)."""
-    return args.scheme.mesh != "quad" or getattr(args, "rings", 1) != 1
+    return args.scheme.lattice != PAPER_LATTICE or getattr(args, "rings", 1) != 1
 
 
 def refuse_non_quad(scheme: Scheme, command: str) -> None:
     """One line for a command about the paper's claims given a scheme on triangle meshes."""
-    if scheme.mesh != "quad":
+    if scheme.lattice != PAPER_LATTICE:
         raise InvalidInputError(
-            f"--scheme {scheme.name}: {command} works on the paper's claims, statements about quad meshes; a {scheme.mesh}-mesh "
+            f"--scheme {scheme.name}: {command} works on the paper's claims, statements about {PAPER_LATTICE} meshes; "
+            f"a {scheme.lattice}-mesh "
             "scheme is analysed by spectrum, check, charpoly, masks, oracle, c1 and evaldata"
         )
 
@@ -242,8 +244,8 @@ def closed_form_obstacle(scheme: Scheme) -> str | None:
     from symdecomp.analysis.tangent import tangent_eigenvalues
     from symdecomp.symbols import sin_jtheta
 
-    if scheme.mesh != "quad":
-        return f"they are derived for quad meshes, not {scheme.mesh} meshes"
+    if scheme.lattice != PAPER_LATTICE:
+        return f"they are derived for {PAPER_LATTICE} meshes, not {scheme.lattice} meshes"
     ev = tangent_eigenvalues(scheme)
     if ev.trace.has(sin_jtheta) or ev.determinant.has(sin_jtheta):
         return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"

@@ -17,6 +17,7 @@ from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
 from symdecomp.cli.common import Once, add_scheme_option, digits, positive_int, print_json, progress, valence_range
 from symdecomp.errors import EvalDataFileError
 from symdecomp.output.evaldata import binary_bytes, check_writable, dumps, json_document, write_atomic
+from symdecomp.schemes.lattice import PAPER_LATTICE
 
 
 def register(sub) -> None:
@@ -44,7 +45,7 @@ def run(args) -> int:
     ns = args.n
     if ns[0] != 3:
         raise EvalDataFileError(f"--n {ns[0]}:{ns[-1]}: the file holds valences 3..N; give --n 3:{ns[-1]}")
-    if args.format == "binary" and args.scheme.mesh != "quad":
+    if args.format == "binary" and args.scheme.lattice != PAPER_LATTICE:
         raise EvalDataFileError(f"--format binary: the binary layout is Stam's Catmull-Clark file; for --scheme {args.scheme.name} use --format json")
     check_writable(args.out)
     show = sys.stderr.isatty() and not args.json

@@ -52,7 +52,7 @@ def _comparison(scheme):
     from symdecomp.schemes.scheme import catmull_clark
 
     def rules(s):
-        return (s.mesh, s.edge_rule, s.face_rule, s.vertex_rule)
+        return (s.lattice, s.edge_rule, s.face_rule, s.vertex_rule)
 
     if rules(scheme) == rules(catmull_clark()):
         from symdecomp.verify.oracle import compare_with_opensubdiv

@@ -18,7 +18,7 @@ Loop (JSON only; the binary layout is Catmull-Clark's): ``{"format": "stam-loop"
 box-spline coefficient ``l`` of eigenfunction ``i`` on sub-patch ``k``); ``jordan`` lists the
 entries ``N[row, column] = value`` of ``V^-1 A V = diag(values) + N`` (empty unless ``A`` is
 not diagonalizable: Loop at ``N = 3``). Control points, sub-patches and the evaluation formula:
-:mod:`symdecomp.schemes.triangle_patch` and :mod:`symdecomp.analysis.triangle_evaluation`; the
+:mod:`symdecomp.schemes.patch` and :mod:`symdecomp.analysis.evaluation`; the
 ``layout`` string says the same in one line.
 
 Files are written atomically: a temporary file in the target directory, then ``os.replace``.

@@ -5,11 +5,11 @@ a quartic polynomial (the three-direction quartic box spline) depending on the 1
 points within one edge of the triangle's corners. This module *derives* its Bernstein-Bezier
 coefficients from the scheme's rules; nothing is typed in:
 
-1. a regular hexagonal mesh (:func:`~symdecomp.schemes.trimesh.triangle_ring_mesh` at valence
+1. a regular hexagonal mesh (:func:`~symdecomp.schemes.mesh.triangle_ring_mesh` at valence
    6) carries, at each vertex, its lattice position and the unit vector of its index among the
    12 control points (zero elsewhere);
 2. it is refined exactly by the scheme's mesh rules
-   (:func:`~symdecomp.schemes.trimesh.refine_triangles`); the refined positions land on the
+   (:func:`~symdecomp.schemes.refinement.refine_triangles`); the refined positions land on the
    finer lattice because the rules reproduce linear functions (checked: a point off the lattice
    is an error), which is how refined vertices are found;
 3. the limit value of a refined vertex is the regular limit mask (the left eigenvector, for
@@ -48,9 +48,10 @@ import sympy as sp
 from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_mpf, to_sympy
 from symdecomp.algebra.triangle_bezier import bernstein, bezier_indices
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.mesh import TriangleMesh, triangle_ring_mesh
+from symdecomp.schemes.refinement import refine_triangles, triangle_mesh_rules
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.schemes.trimesh import TriangleMesh, refine_triangles, triangle_mesh_rules, triangle_ring_mesh
 
 __all__ = ["BOX_POINTS", "DEGREE", "LATTICE_RAYS", "RegularPatch", "regular_patch", "regular_limit_mask", "refined_limits"]
 
@@ -63,7 +64,7 @@ BOX_POINTS = (
     (-1, 1), (0, 1), (1, 1),
     (-1, 2), (0, 2),
 )  # fmt: skip
-#: Lattice direction of the edge ray ``s`` of :func:`~symdecomp.schemes.trimesh.triangle_ring_mesh` at valence 6.
+#: Lattice direction of the edge ray ``s`` of :func:`~symdecomp.schemes.mesh.triangle_ring_mesh` at valence 6.
 LATTICE_RAYS = ((1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1))
 
 

@@ -59,6 +59,7 @@ import tomllib
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError, SymdecompError
 from symdecomp.expressions import parse_expression
+from symdecomp.schemes.lattice import LATTICES, QUAD
 from symdecomp.schemes.loop import loop, loop_warren
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
 from symdecomp.symbols import RESERVED_NAMES, Parameter
@@ -71,8 +72,8 @@ __all__ = ["SCHEMES", "load_scheme", "scheme_from_text", "scheme_to_text"]
 #: Schemes known by name (``--scheme NAME``).
 SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark, "loop": loop, "loop-warren": loop_warren}
 
-#: Mesh types a file may name; ``"quad"`` is the default.
-MESHES = ("quad", "triangle")
+#: Mesh types a file may name (the lattices' names); ``"quad"`` is the default.
+MESHES = tuple(LATTICES)
 
 _TOP_KEYS = {"name", "mesh", "parameters", "edge", "face", "vertex"}
 _RULE_KEYS = {"O", "a", "b"}
@@ -118,13 +119,14 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
     name = data.get("name", default_name)
     if not isinstance(name, str) or not name.strip() or len(name) > 100:
         raise InvalidSchemeError(f"{source}: name must be a non-empty string of at most 100 characters")
-    mesh = data.get("mesh", "quad")
-    if mesh not in MESHES:
+    mesh = data.get("mesh", QUAD.name)
+    if not isinstance(mesh, str) or mesh not in LATTICES:
         raise InvalidSchemeError(f"{source}: mesh {mesh!r} is not supported (known: {', '.join(MESHES)})")
+    mesh = LATTICES[mesh]
     symbols = _parameters(data.get("parameters", []), source)
-    triangle = mesh == "triangle"
+    triangle = not mesh.face_neighbours
     if triangle and "face" in data:
-        raise InvalidSchemeError(f"{source}: [face]: a triangle mesh has no face rule (its 1-ring has no face neighbours b_i)")
+        raise InvalidSchemeError(f"{source}: [face]: a {mesh} mesh has no face rule (its 1-ring has no face neighbours b_i)")
     rules = {}
     for section in ("edge", "vertex") if triangle else ("edge", "face", "vertex"):
         if section not in data:
@@ -268,12 +270,12 @@ def scheme_to_text(scheme: Scheme) -> str:
     if piecewise is not None:  # e.g. Warren's beta (3/16 at n = 3): the file grammar has no cases
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the weight {piecewise} is defined by cases, which a scheme file cannot write")
     lines = [f'name = "{scheme.name}"']
-    if scheme.mesh != "quad":
-        lines.append(f'mesh = "{scheme.mesh}"')
+    if scheme.lattice != QUAD:  # the default is not written
+        lines.append(f'mesh = "{scheme.lattice.name}"')
     if scheme.parameters:
         lines.append("parameters = [" + ", ".join(f'"{p}"' for p in scheme.parameters) + "]")
     v = scheme.vertex_rule
-    if scheme.mesh == "triangle":
+    if not scheme.lattice.face_neighbours:
         rule = scheme.edge_rule
         lines += ["[edge]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", "[vertex]", f'beta = "{_text(v.each_a)}"']
         return "\n".join(lines) + "\n"

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from symdecomp.schemes.lattice import TRIANGLE
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule
 from symdecomp.symbols import n as N
 
@@ -49,7 +50,7 @@ def triangle_scheme(name: str, beta, *, edge_end=None, edge_side=None) -> Scheme
     edge_side = R(1, 8) if edge_side is None else edge_side
     edge = Stencil.from_weights(edge_end, {0: edge_end, -1: edge_side, 1: edge_side}, {}, name="edge rule")
     vertex = VertexRule.affine(beta, 0, name="vertex rule")
-    return Scheme(name, edge, None, vertex, mesh="triangle")
+    return Scheme(name, edge, None, vertex, lattice=TRIANGLE)
 
 
 def loop() -> Scheme:

@@ -1,20 +1,52 @@
-"""The patch next to an extraordinary vertex and its (2N+8) x (2N+8) subdivision matrix (Stam).
+"""The patch next to an extraordinary vertex and its subdivision matrices (Stam): quads and triangles.
 
-Stam's exact evaluation of Catmull-Clark surfaces reads the patch ``(O, e_2, f_1, e_1)`` next
-to a vertex of valence ``N`` from ``K = 2N + 8`` control points, in the order fixed by the data
+The lattice (:attr:`~symdecomp.schemes.lattice.Lattice.patch_matrices`) says which patch a
+scheme has; either way the result is one :class:`PatchMatrices`, assembled by :func:`_assemble`.
+
+**Quads**: the (2N+8) x (2N+8) matrix. Stam's exact evaluation of Catmull-Clark surfaces
+reads the patch ``(O, e_2, f_1, e_1)`` next to a vertex of valence ``N`` from ``K = 2N + 8`` control points, in the order fixed by the data
 file's format note: ``O``, then ``e_0, f_0, ..., e_{N-1}, f_{N-1}`` (edge and face neighbours of
 ``O``), then seven regular points beyond the patch. Points are placed on the ``(u, v)`` lattice
 of the patch (``u`` along ``O -> e_2``, ``v`` along ``O -> e_1``), which is a chart of the three
 sectors around the patch.
 
 The matrices are not typed in: they are read off one exact refinement of a valence-``N`` ring
-mesh by the scheme's mesh rules (:func:`~symdecomp.schemes.mesh.refinement_matrix`), which also
+mesh by the scheme's mesh rules (:func:`~symdecomp.schemes.refinement.refinement_matrix`), which also
 asserts that the new points depend on the ``K`` old ones only.
+
+**Triangles**: the (N+6) x (N+6) matrix (Stam 1998). Stam's exact evaluation of Loop surfaces
+reads the triangle ``(O, a_0, a_1)`` next to a vertex of valence ``N`` from ``K = N + 6`` control points. Points sit on the ``(u, v)`` lattice of the
+patch (the triangle is ``(0, 0), (1, 0), (0, 1)``: ``u`` along ``O -> a_0``, ``v`` along
+``O -> a_1``; lattice edges along ``(1, 0)``, ``(0, 1)`` and ``(1, -1)``), a chart of the three
+sectors ``N - 1, 0, 1`` around the patch. The order (this toolkit's, stated in the data file):
+
+* ``0``: ``O``; ``1 .. N``: its neighbours ``a_0 .. a_{N-1}`` counter-clockwise
+  (``a_0 = (1, 0)``, ``a_1 = (0, 1)``, ``a_2 = (-1, 1)``, ``a_{N-1} = (1, -1)``);
+* ``N + 1 .. N + 5``: the regular points beyond the patch, :data:`TRIANGLE_OUTER_POINTS`;
+* rows ``K .. K + 5`` of the extended matrix: :data:`TRIANGLE_EXTRA_POINTS`, the further points that
+  the three regular sub-triangles of the refined patch need.
+
+After one refinement the patch splits into four triangles; the three away from ``O`` are
+regular, each the box-spline patch (:mod:`symdecomp.schemes.box_spline`) of 12 refined points.
+Sub-patch ``k`` maps its local ``(s, t)`` to the refined lattice point ``c_k + sigma_k (s, t)``
+and takes its point ``l`` at ``c_k + sigma_k BOX_POINTS[l]`` (:data:`TRIANGLE_SUBPATCHES`):
+``k = 0`` next to ``a_0`` (``c = (1, 0)``, ``sigma = 1``), ``k = 1`` the middle one, upside
+down (``c = (1, 1)``, ``sigma = -1``), ``k = 2`` next to ``a_1`` (``c = (0, 1)``, ``sigma = 1``).
+
+The matrices are read off the exact 3-ring matrix of the scheme
+(:func:`~symdecomp.schemes.rings.ring_subdivision_matrix`, one refinement of a valence-``N``
+ring mesh by the mesh rules), which also checks that the new points depend on the ``K`` old
+ones only. The centre's weights stay exact: Fractions, or elements of ``Q(zeta_2N)``
+(:class:`~symdecomp.algebra.cyclotomic.Cyclotomic`) when irrational (Loop's ``cos(2 pi/N)``).
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> p = patch_matrices(catmull_clark(), 3)
 >>> p.size, p.extended.nrows(), p.matrix[0, 0]
 (14, 23, 5/12)
+>>> from symdecomp.schemes.loop import loop
+>>> p = patch_matrices(loop(), 6)
+>>> p.size, len(p.sparse), p.sparse[0][0], p.sparse[1][0]
+(12, 18, Fraction(5, 8), Fraction(3, 8))
 """
 
 from __future__ import annotations
@@ -24,15 +56,25 @@ from fractions import Fraction
 from functools import lru_cache
 
 import flint
+import sympy as sp
 
-from symdecomp.algebra.cyclotomic import to_acb
-from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
+from symdecomp.algebra.numbers import to_fmpq, to_fraction
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.mesh import refinement_matrix, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.box_spline import BOX_POINTS
+from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
+from symdecomp.schemes.mesh import ring_mesh, ring_mesh_labels
+from symdecomp.schemes.refinement import refinement_matrix
+from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
-__all__ = ["OUTER_POINTS", "EXTRA_POINTS", "SUBPATCH_CORNERS", "PatchMatrices", "patch_matrices", "lattice_index", "patch_mesh"]
+__all__ = [
+    "OUTER_POINTS", "EXTRA_POINTS", "SUBPATCH_CORNERS", "PatchMatrices", "patch_matrices", "lattice_index", "patch_mesh",
+    "TRIANGLE_OUTER_POINTS", "TRIANGLE_EXTRA_POINTS", "TRIANGLE_SUBPATCHES",
+    "triangle_lattice_label", "triangle_patch_matrices", "triangle_patch_rows", "centre_weights", "position_mask",
+]
 
 #: The seven control points beyond the patch, (u, v) lattice coordinates, in file order.
 OUTER_POINTS = ((2, 2), (2, 1), (2, 0), (2, -1), (1, 2), (0, 2), (-1, 2))
@@ -59,9 +101,8 @@ class PatchMatrices:
     """The patch's subdivision matrices at valence ``n`` (exact).
 
     Quad meshes (Catmull-Clark): ``K = 2n + 8`` control points, the 1-ring first (``2n + 1``),
-    sub-patches of 16 B-spline points. Triangle meshes (Loop,
-    :mod:`symdecomp.schemes.triangle_patch`): ``K = n + 6``, the 1-ring ``n + 1``, sub-patches
-    of 12 box-spline points. Either way the matrix is block lower triangular: the 1-ring block,
+    sub-patches of 16 B-spline points. Triangle meshes (Loop): ``K = n + 6``, the 1-ring ``n + 1``,
+    sub-patches of 12 box-spline points. Either way the matrix is block lower triangular: the 1-ring block,
     then the regular points beyond it.
     """
 
@@ -72,8 +113,8 @@ class PatchMatrices:
     #: ``(K + extra) x K``: ``matrix`` followed by the further points the sub-patches need (Stam's A-bar).
     extended: flint.fmpq_mat | None
     #: For k = 0, 1, 2, the rows of ``extended`` holding the control points of sub-patch k
-    #: (quads: point ``l = a + 4 b`` at lattice ``corner + (a - 1, b - 1)``; triangles: see
-    #: :mod:`symdecomp.schemes.triangle_patch`).
+    #: (quads: point ``l = a + 4 b`` at lattice ``corner + (a - 1, b - 1)``; triangles: point ``l``
+    #: at ``corner + sigma BOX_POINTS[l]``, :data:`TRIANGLE_SUBPATCHES`).
     subpatches: tuple[tuple[int, ...], ...]
     #: The rows of ``extended`` as sparse ``{column: weight}`` dicts: ``Fraction``, except in
     #: row 0 where an irrational centre weight is an exact element of a cyclotomic field.
@@ -82,8 +123,13 @@ class PatchMatrices:
     size: int = 0
     #: Rows (and columns) ``0..ring_size - 1`` are the 1-ring: ``O`` and its neighbours.
     ring_size: int = 0
-    #: ``"quad"`` or ``"triangle"``.
-    mesh: str = "quad"
+    #: The lattice (:data:`~symdecomp.schemes.lattice.QUAD` or :data:`~symdecomp.schemes.lattice.TRIANGLE`).
+    lattice: Lattice = QUAD
+
+    @property
+    def mesh(self) -> str:
+        """The lattice's name, as files and reports spell it."""
+        return self.lattice.name
 
     def float_extended(self):
         """``extended`` as a float64 numpy array (irrational centre weights rounded)."""
@@ -141,12 +187,13 @@ def patch_mesh(n: int, values=None):
 @lru_cache(maxsize=256)
 def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     """The patch matrices of ``scheme`` at valence ``n`` from one exact refinement: ``2n + 8`` points
-    on quad meshes, ``n + 6`` on triangle meshes (:func:`~symdecomp.schemes.triangle_patch.triangle_patch_matrices`)."""
-    n = check_valence(n)
-    if scheme.mesh == "triangle":
-        from symdecomp.schemes.triangle_patch import triangle_patch_matrices
+    on quad meshes (:func:`quad_patch_matrices`), ``n + 6`` on triangle meshes (:func:`triangle_patch_matrices`)."""
+    return scheme.lattice.patch_matrices(scheme, check_valence(n))
 
-        return triangle_patch_matrices(scheme, n)
+
+def quad_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
+    """Stam's ``(2n + 8)``-point patch matrices of a quad scheme at valence ``n`` (exact)."""
+    n = check_valence(n)
     mesh, vid, columns = patch_mesh(n)
     o, a, b = mesh.one_ring(0, start=columns[1])
     rows = [o]
@@ -154,16 +201,124 @@ def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
         rows += [frozenset((o, a[i])), frozenset((o, a[i], b[i], a[(i + 1) % n]))]
     rows += [_refined_element(vid, p) for p in OUTER_POINTS + EXTRA_POINTS]
     entries = refinement_matrix(mesh, scheme, columns, rows)
-    k = 2 * n + 8
-    extended, matrix = flint.fmpq_mat(len(rows), k), flint.fmpq_mat(k, k)
-    for i, row in enumerate(entries):
-        for j, w in row.items():
-            if not isinstance(w, Fraction):
-                raise InvalidSchemeError(f"scheme {scheme.name!r}: weight {w} at valence {n} is not rational")
-            extended[i, j] = to_fmpq(w)
-            if i < k:
-                matrix[i, j] = extended[i, j]
+    irrational = next((w for row in entries for w in row.values() if not isinstance(w, Fraction)), None)
+    if irrational is not None:
+        raise InvalidSchemeError(f"scheme {scheme.name!r}: weight {irrational} at valence {n} is not rational")
     subpatches = tuple(
         tuple(lattice_index(n, (cu + a_ - 1, cv + b_ - 1)) for b_ in range(4) for a_ in range(4)) for cu, cv in SUBPATCH_CORNERS
     )
-    return PatchMatrices(n, matrix, extended, subpatches, tuple(entries), k, 2 * n + 1, "quad")
+    return _assemble(n, entries, subpatches, 2 * n + 8, QUAD)
+
+
+def _assemble(n: int, sparse: list[dict], subpatches, size: int, lat: Lattice) -> PatchMatrices:
+    """The patch matrices from the sparse rows of the extended matrix (the ``size`` control points first).
+
+    The FLINT matrices exist when every weight is a Fraction (not when the centre's weights are
+    irrational: then :attr:`PatchMatrices.sparse` holds them exactly).
+    """
+    matrix = extended = None
+    if all(isinstance(w, Fraction) for row in sparse for w in row.values()):
+        extended, matrix = flint.fmpq_mat(len(sparse), size), flint.fmpq_mat(size, size)
+        for i, row in enumerate(sparse):
+            for j, w in row.items():
+                extended[i, j] = to_fmpq(w)
+                if i < size:
+                    matrix[i, j] = extended[i, j]
+    return PatchMatrices(n, matrix, extended, subpatches, tuple(sparse), size, lat.one_ring_size(n), lat)
+
+
+# ---------------------------------------------------------------------------------------------
+# triangles
+
+
+#: The five control points beyond the patch (lattice points), in file order.
+TRIANGLE_OUTER_POINTS = ((2, -1), (2, 0), (1, 1), (0, 2), (-1, 2))
+#: The six further refined points the three regular sub-triangles need (rows K..K+5).
+TRIANGLE_EXTRA_POINTS = ((3, -1), (3, 0), (2, 1), (1, 2), (-1, 3), (0, 3))
+#: ``(corner, sigma)`` of sub-patch k = 0, 1, 2 on the refined lattice.
+TRIANGLE_SUBPATCHES = (((1, 0), 1), ((1, 1), -1), ((0, 1), 1))
+
+
+def triangle_lattice_label(n: int, point: tuple[int, int]) -> tuple[int, int, int]:
+    """The ring-mesh label ``(s, u, v)`` (:meth:`~symdecomp.schemes.lattice.Lattice.ring_labels`) of a lattice point."""
+    x, y = point
+    if x >= 0 and y >= 0:
+        s, a, b = 0, x, y
+    elif x <= 0 and y >= -x:
+        s, a, b = 1, x + y, -x
+    elif y <= 0 and x >= -y:
+        s, a, b = n - 1, -y, x + y
+    else:
+        raise KeyError(f"lattice point {point} is outside the three sectors around the patch")
+    if a == 0 and b == 0:
+        return (0, 0, 0)
+    return ((s + 1) % n, b, 0) if a == 0 else (s % n, a, b)
+
+
+def triangle_patch_rows(n: int) -> tuple[tuple[int, int, int], ...]:
+    """The labels of the ``n + 6`` control points and then of the 6 extra refined points, in row order."""
+    n = check_valence(n)
+    beyond = tuple(triangle_lattice_label(n, p) for p in TRIANGLE_OUTER_POINTS + TRIANGLE_EXTRA_POINTS)
+    return ((0, 0, 0),) + tuple((i, 1, 0) for i in range(n)) + beyond
+
+
+def _triangle_subpatch_rows(n: int, labels) -> tuple[tuple[int, ...], ...]:
+    index = {lab: i for i, lab in enumerate(labels)}
+    out = []
+    for (cu, cv), sigma in TRIANGLE_SUBPATCHES:
+        out.append(tuple(index[triangle_lattice_label(n, (cu + sigma * bu, cv + sigma * bv))] for bu, bv in BOX_POINTS))
+    return tuple(out)
+
+
+def _exact_weight(expr: sp.Expr, n: int):
+    """A centre weight at valence ``n``: a Fraction, or an element of a cyclotomic field (exact)."""
+    try:
+        x = cyclotomic_value(expr, {N: n}, field=CyclotomicField(2 * n))
+    except ValueError as exc:
+        raise InvalidSchemeError(f"the centre weight {expr} at valence {n} is not in a cyclotomic field: {exc}") from None
+    if x.poly.degree() <= 0:
+        c = x.poly[0] if x.poly.degree() == 0 else flint.fmpq(0)
+        return to_fraction(c)
+    return x
+
+
+def centre_weights(scheme: Scheme, n: int) -> tuple:
+    """``(on O, on each neighbour)`` of the vertex rule at valence ``n``, exact (Fraction or ``Q(zeta_2n)``)."""
+    v = scheme.vertex_rule
+    return tuple(_exact_weight(sp.sympify(w, strict=True), check_valence(n)) for w in (v.center, v.each_a))
+
+
+def position_mask(scheme: Scheme, n: int) -> tuple:
+    """The limit position mask ``(on O, on each neighbour)`` of a valence-``n`` vertex, exact.
+
+    The left eigenvector for 1 of the 1-ring matrix is rotation invariant, so it solves the
+    frequency-0 block ``[[w_O, n w_a], [e_O, 1 - e_O]]`` (``e_O``: the edge rule's weight on
+    ``O``): ``l_O = e_O/(e_O + 1 - w_O)``, each neighbour ``(1 - l_O)/n``.
+    """
+    w_o, _ = centre_weights(scheme, n)
+    e_o = Fraction(sp.Rational(scheme.edge_rule.center).p, sp.Rational(scheme.edge_rule.center).q)
+    one = w_o.field(1) if isinstance(w_o, Cyclotomic) else Fraction(1)
+    l_o = (one * e_o) / (one * e_o + one - w_o)
+    return l_o, (one - l_o) / n
+
+
+def triangle_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
+    """The ``(n + 6)``-point patch matrices of a triangle scheme at valence ``n`` (exact)."""
+    n = check_valence(n)
+    ring = ring_subdivision_matrix(scheme, n, 3)
+    index = {lab: i for i, lab in enumerate(ring.labels)}
+    labels = triangle_patch_rows(n)
+    size = n + 6
+    column = {index[lab]: c for c, lab in enumerate(labels[:size])}
+    exprs = {sym: sp.sympify(w, strict=True) for sym, w in ring.weights.items()}
+    sparse = []
+    for lab in labels:
+        row = {}
+        for c, w in ring.rows[index[lab]].items():
+            if c not in column:
+                raise InvalidSchemeError(f"scheme {scheme.name!r}: the refined patch point {lab} depends on a point beyond the {size} control points")
+            if not isinstance(w, Fraction):
+                w = _exact_weight(sp.sympify(w, strict=True).xreplace(exprs), n)
+            row[column[c]] = w
+        sparse.append(row)
+    return _assemble(n, sparse, _triangle_subpatch_rows(n, labels), size, TRIANGLE)

@@ -5,10 +5,10 @@ rings of vertices around it: ``1 + n K (K + 1)`` points on a quad mesh (Catmull-
 ``6n + 1``), ``1 + n K (K + 1)/2`` on a triangle mesh (Loop 2-ring: ``3n + 1``). The matrix is
 *not* assembled from 1-ring stencils: a ring mesh with ``K`` rings around ``O`` (every other
 vertex regular) is refined once by the scheme's mesh rules (face, edge and vertex points of
-the whole mesh: :func:`~symdecomp.schemes.mesh.refine`,
-:func:`~symdecomp.schemes.trimesh.refine_triangles`), with the unit vector ``e_j`` as the value
+the whole mesh: :func:`~symdecomp.schemes.refinement.refine`,
+:func:`~symdecomp.schemes.refinement.refine_triangles`), with the unit vector ``e_j`` as the value
 of old vertex ``j``; the value of a new point is then its row of the matrix. Points are
-ordered by :func:`ring_labels` (ring by ring, sector by sector), and the new point with label
+ordered by :meth:`~symdecomp.schemes.lattice.Lattice.ring_labels` (ring by ring, sector by sector), and the new point with label
 ``(s, u, v)`` is the one at lattice position ``(u/2, v/2)`` of the old mesh (a vertex point if
 ``u, v`` are even, an edge point if one is odd, a face point (quads) if both are).
 
@@ -35,13 +35,12 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_fraction, to_sympy
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
-from symdecomp.schemes.mesh import MeshRules, mesh_rules, refine, ring_mesh, ring_mesh_labels
+from symdecomp.schemes.lattice import Lattice
 from symdecomp.schemes.scheme import Scheme, subdivision_entries
-from symdecomp.schemes.trimesh import refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
-__all__ = ["CENTRE_WEIGHTS", "MAX_RINGS", "SparseRow", "RingMatrix", "ring_labels", "ring_size", "regular_valence", "ring_subdivision_matrix"]
+__all__ = ["CENTRE_WEIGHTS", "MAX_RINGS", "SparseRow", "RingMatrix", "ring_subdivision_matrix"]
 
 #: The deepest neighbourhood supported.
 MAX_RINGS = 3
@@ -67,21 +66,6 @@ class SparseRow:
         return SparseRow(out)
 
 
-def regular_valence(mesh: str) -> int:
-    """The valence of a regular vertex: 4 on quad meshes, 6 on triangle meshes."""
-    return 6 if mesh == "triangle" else 4
-
-
-def ring_labels(mesh: str, n: int, rings: int) -> tuple[tuple[int, int, int], ...]:
-    """Labels ``(s, u, v)`` of the closed ``rings``-ring, in matrix order (the centre first)."""
-    return triangle_ring_labels(n, rings) if mesh == "triangle" else ring_mesh_labels(n, rings)
-
-
-def ring_size(mesh: str, n: int, rings: int) -> int:
-    """``1 + n K (K + 1)`` (quad) or ``1 + n K (K + 1)/2`` (triangle)."""
-    return 1 + n * rings * (rings + 1) // (2 if mesh == "triangle" else 1)
-
-
 def _check_rings(rings) -> int:
     if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or not 1 <= rings <= MAX_RINGS:
         raise InvalidSchemeError(f"rings must be an integer from 1 to {MAX_RINGS}, got {rings!r}")
@@ -93,10 +77,10 @@ class RingMatrix:
     """The exact subdivision matrix of a ``K``-ring neighbourhood, as sparse rows."""
 
     scheme: str
-    mesh: str
+    lattice: Lattice
     n: int
     rings: int
-    #: Labels ``(s, u, v)`` of rows and columns (see :func:`ring_labels`).
+    #: Labels ``(s, u, v)`` of rows and columns (:meth:`~symdecomp.schemes.lattice.Lattice.ring_labels`).
     labels: tuple[tuple[int, int, int], ...]
     #: Row ``i``: ``{column: weight}``; weights are ``Fraction`` or linear in :data:`CENTRE_WEIGHTS` (row 0).
     rows: tuple[Mapping[int, object], ...]
@@ -107,6 +91,11 @@ class RingMatrix:
     @property
     def size(self) -> int:
         return len(self.labels)
+
+    @property
+    def mesh(self) -> str:
+        """The lattice's name, as reports spell it."""
+        return self.lattice.name
 
     def weight_values(self) -> dict:
         """Symbol -> exact value of the centre weight at this ``n`` (sympy)."""
@@ -165,7 +154,9 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
     n, rings = check_valence(n), _check_rings(rings)
     if scheme.parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; substitute values first")
-    regular = regular_valence(scheme.mesh)
+    lat = scheme.lattice
+    regular = lat.regular_valence
+    count = len(lat.vertex_order(1))  # the vertex rule's weights: on O, each a_i (and each b_i)
     if symbolic_centre and n == regular:
         raise InvalidSchemeError(f"symbolic centre weights need n != {regular}")
     used: dict = {}
@@ -176,15 +167,15 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
             v = scheme.vertex_rule
             for s, w in zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)):
                 used[s] = w
-            return CENTRE_WEIGHTS if scheme.mesh == "quad" else CENTRE_WEIGHTS[:2]
+            return CENTRE_WEIGHTS[:count]
         if not all(w.is_Rational for w in exact):
             raise InvalidSchemeError(
                 f"scheme {scheme.name!r}: the vertex rule at valence {valence} is not rational ({exact}); "
                 "the ring matrices need rational weights at the regular valence"
             )
-        return exact if scheme.mesh == "quad" else exact[:2]
+        return exact[:count]
 
-    labels = ring_labels(scheme.mesh, n, rings)
+    labels = lat.ring_labels(n, rings)
     mesh_rules_error = _mesh_rules_error(scheme)
     if mesh_rules_error is not None:
         if rings > 1:
@@ -195,29 +186,24 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
         row0 = weights_at(n)
         rows = _stencil_rows(scheme, n, labels, row0)
         weights = {s: w for s, w in used.items() if any(sp.sympify(x, strict=True).has(s) for x in rows[0].values())}
-        return RingMatrix(scheme.name, scheme.mesh, n, rings, labels, tuple(rows), weights)
+        return RingMatrix(scheme.name, lat, n, rings, labels, tuple(rows), weights)
     unit = lambda s, u, v: (SparseRow({_index(labels, n, s, u, v): Fraction(1)}),)  # noqa: E731
-    if scheme.mesh == "triangle":
-        mesh = triangle_ring_mesh(n, rings, unit)
-        step = refine_triangles(mesh, triangle_mesh_rules(scheme), vertex_weights=weights_at)
-    else:
-        rules = _CentreRules(**{f: getattr(mesh_rules(scheme), f) for f in ("scheme", "face_corner", "edge_end", "edge_side")}, weights_at=weights_at)
-        mesh = ring_mesh(n, rings, unit)
-        step = refine(mesh, rules)
+    mesh = lat.ring_mesh(n, rings, unit)
+    step = lat.refine(mesh, lat.mesh_rules(scheme), vertex_weights=weights_at)
     face_of = {frozenset(f): fi for fi, f in enumerate(mesh.faces)}
     rows = []
     for s, u, v in labels:
-        point = _new_point(step, scheme.mesh, labels, n, s, u, v, face_of)
+        point = _new_point(step, lat, labels, n, s, u, v, face_of)
         row = step.mesh.values[point][0].entries
         rows.append({c: x for c, x in sorted(row.items()) if x != 0})
     weights = {s: w for s, w in used.items() if any(sp.sympify(x, strict=True).has(s) for x in rows[0].values())}
-    return RingMatrix(scheme.name, scheme.mesh, n, rings, labels, tuple(rows), weights)
+    return RingMatrix(scheme.name, lat, n, rings, labels, tuple(rows), weights)
 
 
 def _mesh_rules_error(scheme: Scheme) -> str | None:
     """Why the scheme's 1-ring stencils are not rules of the whole mesh (``None`` when they are)."""
     try:
-        triangle_mesh_rules(scheme) if scheme.mesh == "triangle" else mesh_rules(scheme)
+        scheme.lattice.mesh_rules(scheme)
     except InvalidSchemeError as exc:
         return str(exc)
     return None
@@ -230,8 +216,8 @@ def _stencil_rows(scheme: Scheme, n: int, labels, centre_weights) -> list[dict]:
     rows must be rational at this valence.
     """
     index = {lab: i for i, lab in enumerate(labels)}
-    # 1-ring order (O, a_0..a_{n-1}, b_0..b_{n-1}) -> label index: a_i = (i, 1, 0), b_i = (i, 1, 1).
-    where = [0] + [index[(i, 1, 0)] for i in range(n)] + ([index[(i, 1, 1)] for i in range(n)] if scheme.mesh == "quad" else [])
+    # 1-ring order (O, a_0..a_{n-1}, b_0..b_{n-1}) -> label index
+    where = [index[lab] for lab in scheme.lattice.one_ring_labels(n)]
     rows: list[dict] = [dict() for _ in labels]
     for (r, c), x in subdivision_entries(scheme, n, lambda w: sp.sympify(w, strict=True).subs(N, n)).items():
         if r == 0:
@@ -239,23 +225,12 @@ def _stencil_rows(scheme: Scheme, n: int, labels, centre_weights) -> list[dict]:
         if not x.is_Rational:
             raise InvalidSchemeError(f"scheme {scheme.name!r}: a weight of its edge or face rule at n = {n} is not rational ({x})")
         rows[where[r]][where[c]] = to_fraction(x)
-    w_o, w_a, *rest = (to_fraction(w) if getattr(w, "is_Rational", False) else w for w in centre_weights)
+    w_o, *each = (to_fraction(w) if getattr(w, "is_Rational", False) else w for w in centre_weights)
     rows[0][0] = w_o
-    for i in range(n):
-        rows[0][where[1 + i]] = w_a
-        if scheme.mesh == "quad":
-            rows[0][where[1 + n + i]] = rest[0]
+    for k, w in enumerate(each):  # on each a_i, then on each b_i
+        for i in range(n):
+            rows[0][where[1 + k * n + i]] = w
     return [{c: x for c, x in sorted(row.items()) if x != 0} for row in rows]
-
-
-@dataclass(frozen=True)
-class _CentreRules(MeshRules):
-    """Quad mesh rules whose vertex weights come from a function (symbolic at the centre)."""
-
-    weights_at: object = None
-
-    def vertex_weights(self, valence: int):
-        return self.weights_at(valence)
 
 
 _INDEX_CACHE: dict = {}
@@ -275,15 +250,6 @@ def _normal(n, s, u, v):
     return ((s + 1) % n, v, 0) if u == 0 else (s % n, u, v)
 
 
-def _new_point(step, mesh: str, labels, n: int, s: int, u: int, v: int, face_of=None) -> int:
+def _new_point(step, lat: Lattice, labels, n: int, s: int, u: int, v: int, face_of=None) -> int:
     """The id, in the refined mesh, of the new point with label ``(s, u, v)``."""
-    old = lambda a, b: _index(labels, n, s, a, b)  # noqa: E731
-    if u % 2 == 0 and v % 2 == 0:
-        return step.vertex_point[old(u // 2, v // 2)]
-    if u % 2 == 0 or v % 2 == 0:
-        du, dv = u % 2, v % 2
-        return step.edge_point[frozenset((old((u - du) // 2, (v - dv) // 2), old((u + du) // 2, (v + dv) // 2)))]
-    if mesh == "triangle":  # both odd: the midpoint of the diagonal edge
-        return step.edge_point[frozenset((old((u - 1) // 2, (v + 1) // 2), old((u + 1) // 2, (v - 1) // 2)))]
-    corners = frozenset(old((u + a) // 2, (v + b) // 2) for a in (-1, 1) for b in (-1, 1))
-    return step.face_point[face_of[corners]]
+    return lat.refined_point(step, lambda a, b: _index(labels, n, s, a, b), u, v, face_of)

@@ -32,6 +32,7 @@ import sympy as sp
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError
 from symdecomp.expressions import exact_value
+from symdecomp.schemes.lattice import LATTICES, QUAD, Lattice, lattice
 from symdecomp.symbols import Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -153,10 +154,8 @@ class VertexRule:
         return self.center + N * self.each_a + N * self.each_b
 
 
-#: The mesh types a scheme can live on.
-MESH_TYPES = ("quad", "triangle")
-#: The valence of every vertex away from the extraordinary one, by mesh type.
-REGULAR_VALENCE = {"quad": 4, "triangle": 6}
+#: The mesh types a scheme can live on (the names of the lattices).
+MESH_TYPES = tuple(LATTICES)
 
 
 @dataclass(frozen=True)
@@ -175,11 +174,12 @@ class Scheme:
     know the regular patches of Catmull-Clark and Loop only, so they apply when the rules at the regular
     valence are those (they say so in one line otherwise).
 
-    On a quad mesh (``mesh = "quad"``, the paper's shape) the 1-ring is ``(O, a_i, b_i)`` and
+    On a quad mesh (``lattice = QUAD``, the paper's shape) the 1-ring is ``(O, a_i, b_i)`` and
     the scheme has an edge, a face and a vertex rule. On a triangle mesh
-    (``mesh = "triangle"``) the 1-ring is ``(O, a_0..a_{n-1})`` with faces ``(O, a_i, a_{i+1})``:
+    (``lattice = TRIANGLE``) the 1-ring is ``(O, a_0..a_{n-1})`` with faces ``(O, a_i, a_{i+1})``:
     there are no face neighbours, so ``face_rule`` is ``None``, the edge rule has no ``b``
-    weights and the vertex rule's ``each_b`` is 0.
+    weights and the vertex rule's ``each_b`` is 0. The lattice may be given by its name
+    (``lattice="triangle"``); :mod:`symdecomp.schemes.lattice`.
     """
 
     #: A short name, used in reports.
@@ -192,19 +192,24 @@ class Scheme:
     vertex_rule: VertexRule
     #: Free parameters of the scheme (symbols other than ``n`` in its weights).
     parameters: tuple[sp.Symbol, ...] = field(default=())
-    #: ``"quad"`` (the paper's shape) or ``"triangle"`` (e.g. Loop).
-    mesh: str = "quad"
+    #: The lattice the scheme lives on: :data:`~symdecomp.schemes.lattice.QUAD` (the paper's shape)
+    #: or :data:`~symdecomp.schemes.lattice.TRIANGLE` (e.g. Loop).
+    lattice: Lattice = QUAD
 
     def __post_init__(self):
-        if self.mesh not in MESH_TYPES:
-            raise InvalidSchemeError(f"scheme {self.name!r}: mesh must be one of {MESH_TYPES}, got {self.mesh!r}")
-        if (self.face_rule is None) != (self.mesh == "triangle"):
+        try:
+            object.__setattr__(self, "lattice", lattice(self.lattice))
+        except InvalidSchemeError as exc:
+            raise InvalidSchemeError(f"scheme {self.name!r}: {exc}") from None
+        faces = self.lattice.face_neighbours
+        if (self.face_rule is not None) != faces:
             raise InvalidSchemeError(
-                f"scheme {self.name!r}: a {self.mesh} scheme "
-                + ("has no face rule" if self.mesh == "triangle" else "needs a face rule")
+                f"scheme {self.name!r}: a {self.lattice} scheme " + ("needs a face rule" if faces else "has no face rule")
             )
-        if self.mesh == "triangle" and (self.edge_rule.b or self.vertex_rule.each_b != 0):
-            raise InvalidSchemeError(f"scheme {self.name!r}: a triangle 1-ring has no face neighbours b_i; give no b weights")
+        if not faces and (self.edge_rule.b or self.vertex_rule.each_b != 0):
+            raise InvalidSchemeError(
+                f"scheme {self.name!r}: a {self.lattice} 1-ring has no face neighbours b_i; give no b weights"
+            )
         _to_parameters(self)
         free = set()
         for rule in self.stencils():
@@ -222,7 +227,12 @@ class Scheme:
         offsets = tuple(k for rule in self.stencils() for k in rule.offsets()) + (0,)
         object.__setattr__(self, "_span", max(offsets) - min(offsets))
         # the whole-mesh model: every vertex of the regular valence uses these rules there, so they must be defined there
-        _check_defined(self, REGULAR_VALENCE[self.mesh], " (the regular valence: every vertex away from O uses the rules there)")
+        _check_defined(self, self.lattice.regular_valence, " (the regular valence: every vertex away from O uses the rules there)")
+
+    @property
+    def mesh(self) -> str:
+        """The lattice's name (``"quad"``, ``"triangle"``), as files, JSON and reports spell it."""
+        return self.lattice.name
 
     def stencils(self) -> tuple[Stencil, ...]:
         """The 1-ring stencils: ``(edge rule, face rule)`` on quads, ``(edge rule,)`` on triangles."""
@@ -230,7 +240,7 @@ class Scheme:
 
     def ring_size(self, n: int) -> int:
         """Points of the 1-ring at valence ``n``: ``2n + 1`` on quads, ``n + 1`` on triangles."""
-        return (n if self.mesh == "triangle" else 2 * n) + 1
+        return self.lattice.one_ring_size(n)
 
     def minimum_valence(self) -> int:
         """The smallest valence for which the stencil offsets are distinct mod ``n`` (at least 3)."""
@@ -261,7 +271,7 @@ class Scheme:
             None if self.face_rule is None else st(self.face_rule, "face rule"),
             VertexRule.from_weights(v.center.subs(subs), v.each_a.subs(subs), v.each_b.subs(subs)),
             tuple(p for p in self.parameters if p not in subs),
-            self.mesh,
+            self.lattice,
         )
 
 
@@ -319,14 +329,12 @@ def catmull_clark(alpha=None, beta=None) -> Scheme:
     return Scheme("catmull-clark" if standard else "catmull-clark (tuned vertex rule)", edge, face, vertex)
 
 
-def vertex_order(n: int, mesh: str = "quad") -> tuple[str, ...]:
+def vertex_order(n: int, mesh: Lattice | str = QUAD) -> tuple[str, ...]:
     """Names of the rows/columns of the subdivision matrix: ``O, a_0..a_{n-1}, b_0..b_{n-1}``.
 
-    On a triangle mesh (``mesh="triangle"``) there are no ``b_i``.
+    On a triangle mesh (``mesh=TRIANGLE`` or ``"triangle"``) there are no ``b_i``.
     """
-    n = check_valence(n)
-    b = () if mesh == "triangle" else tuple(f"b_{i}" for i in range(n))
-    return ("O",) + tuple(f"a_{i}" for i in range(n)) + b
+    return lattice(mesh).vertex_order(check_valence(n))
 
 
 def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]) -> dict[tuple[int, int], Any]:

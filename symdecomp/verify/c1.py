@@ -65,13 +65,16 @@ True
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import flint
 
 from symdecomp.algebra.triangle_bezier import bezier_indices
 from symdecomp.analysis.characteristic import TRIANGLES, frequency_eigenvector, inner_boundary_nets, subpatch_nets
+from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS, DEGREE, regular_patch
+from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
 from symdecomp.verify.bezier import (
@@ -87,21 +90,13 @@ from symdecomp.verify.result import C1Verdict
 
 __all__ = ["C1Result", "c1_test", "characteristic_nets", "METHOD", "method"]
 
-#: The method, as reported with each verdict (quad meshes; :func:`method` for either).
-METHOD = (
-    "Reif's test: spectrum per frequency (Arb, exact at frequency 0); Jacobian of the three bicubic "
-    "sub-patches in Bernstein-Bezier form (bidegree 5x5, Arb, de Casteljau); winding number of the inner boundary"
-)
-_TRIANGLE_METHOD = (
-    "Reif's test: spectrum per frequency (Arb, exact in Q(e^{2 pi i/n}) at frequency 0 and at ties); Jacobian of the "
-    "three quartic box-spline sub-patches in triangular Bernstein-Bezier form (degree 6, Arb, de Casteljau bisection); "
-    "winding number of the inner boundary"
-)
+#: The method, as reported with each verdict (quad meshes; :func:`method` for any lattice).
+METHOD = QUAD.c1_method
 
 
-def method(mesh: str) -> str:
-    """The method text for a scheme on ``mesh``."""
-    return _TRIANGLE_METHOD if mesh == "triangle" else METHOD
+def method(mesh: Lattice | str) -> str:
+    """The method text for a scheme on ``mesh`` (:attr:`~symdecomp.schemes.lattice.Lattice.c1_method`)."""
+    return lattice(mesh).c1_method
 
 
 @dataclass(frozen=True)
@@ -126,7 +121,12 @@ class C1Result:
     winding_number: int | None = None
     #: Working precision (bits) of the balls.
     precision: int = 64
-    mesh: str = "quad"
+    lattice: Lattice = QUAD
+
+    @property
+    def mesh(self) -> str:
+        """The lattice's name."""
+        return self.lattice.name
 
     def as_json(self) -> dict:
         lam = self.spectral.subdominant
@@ -144,7 +144,7 @@ class C1Result:
             "max_depth": self.max_depth,
             "winding_number": self.winding_number,
             "precision_bits": self.precision,
-            "method": method(self.mesh),
+            "method": self.lattice.c1_method,
         }
 
 
@@ -174,28 +174,66 @@ def characteristic_nets(scheme: Scheme, n: int, spectral: SpectralResult | None 
     spectral = spectral or spectral_conditions(scheme, n)
     lam = spectral.subdominant
     vec = frequency_eigenvector(scheme, n, lam.frequency, lam.value)
-    if scheme.mesh == "triangle":
-        return _triangle_nets(vec), vec
+    return _patches(scheme.lattice).nets(vec), vec
+
+
+def _quad_nets(vec):
+    """The bicubic Bezier nets ``(x, y)`` of sector 0's three B-spline sub-patches."""
     nets = []
     for net in subpatch_nets(vec):
         x = bspline_to_bezier([[z.real for z in row] for row in net])
         y = bspline_to_bezier([[z.imag for z in row] for row in net])
         nets.append((x, y))
-    return nets, vec
+    return nets
 
 
-def _boundary_angle(vec):
-    """The argument swept by sector 0's inner boundary, from the image of ``a_0`` to that of ``a_1`` (or ``None``)."""
-    if vec.mesh == "triangle":
-        # the middle triangle, in its own parameters: corner (0, 0) is the lattice point (1, 0), corner (0, 1) is (0, 1)
-        x, y = _triangle_nets(vec)[1]
-        pos = {i: k for k, i in enumerate(bezier_indices(DEGREE))}
-        edge = [pos[(DEGREE - t, 0, t)] for t in range(DEGREE + 1)]
-        return curve_angle([flint.acb(x[k], y[k]) for k in edge])
+def _quad_boundary_angle(vec):
     first, last = (bspline_to_bezier(net) for net in inner_boundary_nets(vec))
     a = curve_angle([first[0][k] for k in range(4)])  # face (1, 0), edge u = 1: (1,0) -> (1,1)
     b = curve_angle([last[i][0] for i in range(3, -1, -1)])  # face (0, 1), edge v = 1: (1,1) -> (0,1)
     return None if a is None or b is None else a + b
+
+
+def _triangle_boundary_angle(vec):
+    # the middle triangle, in its own parameters: corner (0, 0) is the lattice point (1, 0), corner (0, 1) is (0, 1)
+    x, y = _triangle_nets(vec)[1]
+    pos = {i: k for k, i in enumerate(bezier_indices(DEGREE))}
+    edge = [pos[(DEGREE - t, 0, t)] for t in range(DEGREE + 1)]
+    return curve_angle([flint.acb(x[k], y[k]) for k in edge])
+
+
+@dataclass(frozen=True)
+class _Patches:
+    """How the C1 test reads the characteristic ring's sub-patches on one lattice."""
+
+    #: ``vec -> [(x, y), ...]``: the Bezier nets of sector 0's three sub-patches.
+    nets: Callable
+    #: ``(nets, max_depth) -> sign``: the Jacobian's sign over them, certified.
+    sign: Callable
+    #: ``vec -> angle``: the argument swept by sector 0's inner boundary (or ``None``).
+    boundary_angle: Callable
+
+
+_PATCHES = {
+    QUAD: _Patches(_quad_nets, lambda nets, depth: certify_sign([jacobian_net(x, y) for x, y in nets], depth), _quad_boundary_angle),
+    # a bisection halves a piece, a tensor split quarters it: twice the depth
+    TRIANGLE: _Patches(
+        _triangle_nets,
+        lambda nets, depth: certify_sign_triangles([triangle_jacobian_net(x, y) for x, y in nets], DEGREE, 2 * depth),
+        _triangle_boundary_angle,
+    ),
+}
+
+
+def _patches(lat: Lattice) -> _Patches:
+    if lat not in _PATCHES:  # pragma: no cover - every lattice so far has its patches
+        raise InvalidSchemeError(f"the C1 test has no sub-patches for {lat} meshes")
+    return _PATCHES[lat]
+
+
+def _boundary_angle(vec):
+    """The argument swept by sector 0's inner boundary, from the image of ``a_0`` to that of ``a_1`` (or ``None``)."""
+    return _patches(vec.lattice).boundary_angle(vec)
 
 
 def _winding(vec, n: int):
@@ -219,15 +257,12 @@ def _where(where) -> str:
 
 def _test(scheme: Scheme, n: int, max_depth: int, prec: int) -> C1Result:
     spectral = spectral_conditions(scheme, n)
-    base = dict(n=n, scheme=scheme.name, spectral=spectral, max_depth=max_depth, precision=prec, mesh=scheme.mesh)
+    base = dict(n=n, scheme=scheme.name, spectral=spectral, max_depth=max_depth, precision=prec, lattice=scheme.lattice)
     if spectral.status is not C1Verdict.C1:
         return C1Result(verdict=spectral.status, reason=spectral.reason, **base)
     j = spectral.subdominant.frequency
     nets, vec = characteristic_nets(scheme, n, spectral)
-    if scheme.mesh == "triangle":  # a bisection halves a piece, a tensor split quarters it: twice the depth
-        sign = certify_sign_triangles([triangle_jacobian_net(x, y) for x, y in nets], DEGREE, 2 * max_depth)
-    else:
-        sign = certify_sign([jacobian_net(x, y) for x, y in nets], max_depth)
+    sign = _patches(scheme.lattice).sign(nets, max_depth)
     winding = _winding(vec, n)
     base.update(frequency=j, subdivision_depth=sign.depth, winding_number=winding)
     lam = ball_text(spectral.subdominant.value)

@@ -252,7 +252,7 @@ def _other_frequencies(scheme: Scheme, n: int) -> tuple[list[Eigen], list[tuple[
     """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``)."""
     eigen, outer = [], []
     real = _real_at(scheme, n)
-    k1, k2 = ring_layout(scheme.mesh).one_ring, ring_layout(scheme.mesh).two_ring
+    k1, k2 = ring_layout(scheme.lattice).one_ring, ring_layout(scheme.lattice).two_ring
     for j in range(0, n // 2 + 1):
         B = frequency_block(scheme, n, j)
         outer.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
@@ -444,7 +444,7 @@ def _real_subdominant(scheme: Scheme, n: int, dom: Eigen, gap: float, second: fl
     if dom.value.imag.contains(0) and _real_at(scheme, n):
         B = frequency_block(scheme, n, dom.frequency)
         real = True
-        if ring_layout(scheme.mesh).one_ring == 2:  # a real quadratic: real roots iff the discriminant is positive
+        if ring_layout(scheme.lattice).one_ring == 2:  # a real quadratic: real roots iff the discriminant is positive
             t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
             real = (t * t - 4 * d).real > 0
         if real:

@@ -39,8 +39,8 @@ import numpy as np
 from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.schemes.loop import loop
+from symdecomp.schemes.mesh import triangle_ring_mesh
 from symdecomp.schemes.rings import ring_subdivision_matrix
-from symdecomp.schemes.trimesh import triangle_ring_mesh
 from symdecomp.validate import check_int, check_levels, check_valence
 from symdecomp.verify.oracle import MAX_LEVELS, Prediction, ValenceComparison, _exact, _limit
 

@@ -3,7 +3,7 @@
 The vertex at lattice point ``(i, j)`` after ``L`` refinements of the patch's ring mesh sits at
 the parameter ``(i/2^L, j/2^L)`` of the patch; its limit position (the scheme's limit mask on its
 1-ring) is what the evaluator must return there. :func:`dyadic_limits` computes these exactly
-with the toolkit's own refinement (:func:`~symdecomp.schemes.mesh.refine`) and limit masks
+with the toolkit's own refinement (:func:`~symdecomp.schemes.refinement.refine`) and limit masks
 (:func:`~symdecomp.analysis.masks.limit_masks_at`).
 """
 
@@ -16,11 +16,11 @@ import mpmath
 from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.algebra.numbers import to_fraction, to_mpf
 from symdecomp.analysis.masks import limit_masks_at
-from symdecomp.schemes.mesh import QuadMesh, refine
-from symdecomp.schemes.patch import patch_mesh
+from symdecomp.schemes.lattice import QUAD, TRIANGLE
+from symdecomp.schemes.mesh import QuadMesh, TriangleMesh, triangle_ring_labels, triangle_ring_mesh
+from symdecomp.schemes.patch import centre_weights, patch_mesh, position_mask, triangle_patch_rows
+from symdecomp.schemes.refinement import refine, refine_triangles, triangle_mesh_rules
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.schemes.triangle_patch import centre_weights, position_mask, triangle_patch_rows
-from symdecomp.schemes.trimesh import TriangleMesh, refine_triangles, triangle_mesh_rules, triangle_ring_labels, triangle_ring_mesh
 
 __all__ = [
     "dyadic_limits", "numpy_baseline", "opensubdiv_dyadic_errors", "refined_lattice", "baseline_error",
@@ -106,6 +106,20 @@ def refined_triangle_lattice(mesh: TriangleMesh, scheme: Scheme, level: int):
     return mesh, ids
 
 
+def _refined_quad_patch(scheme: Scheme, n: int, level: int, values):
+    mesh, vid, columns = patch_mesh(n, values)
+    return (mesh, columns, *refined_lattice(mesh, vid, scheme, level))
+
+
+def _refined_triangle_patch(scheme: Scheme, n: int, level: int, values):
+    mesh, columns = triangle_patch_mesh(n, values)
+    return (mesh, columns, *refined_triangle_lattice(mesh, scheme, level))
+
+
+#: ``(mesh, control point ids, refined mesh, {lattice point: id})`` of the patch's ring mesh refined ``level`` times.
+_REFINED_PATCH = {QUAD: _refined_quad_patch, TRIANGLE: _refined_triangle_patch}
+
+
 def exact_to_mpf(x):
     """A Fraction or a (real) cyclotomic number as an mpmath number at the current precision."""
     if isinstance(x, Fraction):
@@ -116,7 +130,7 @@ def exact_to_mpf(x):
 def triangle_dyadic_limits(scheme: Scheme, n: int, level: int, values) -> tuple[list, dict]:
     """``(control_points, limits)`` of the Loop patch: control values and ``{(i, j): exact limit}``.
 
-    Limits are the position mask (:func:`~symdecomp.schemes.triangle_patch.position_mask`, at
+    Limits are the position mask (:func:`~symdecomp.schemes.patch.position_mask`, at
     valence ``n`` for the centre, 6 elsewhere) on the 1-ring of the vertex at ``(i/2^L, j/2^L)``
     after ``L`` exact refinements; values are Fractions or elements of ``Q(zeta_2n)``.
     """
@@ -154,12 +168,7 @@ def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed
 
     rnd = random.Random(seed)
     values = lambda s, u, v: tuple(Fraction(rnd.randint(-2**20, 2**20), 2**20) for _ in range(3))  # noqa: E731
-    if scheme.mesh == "triangle":
-        mesh, columns = triangle_patch_mesh(n, values)
-        refined, ids = refined_triangle_lattice(mesh, scheme, level)
-    else:
-        mesh, vid, columns = patch_mesh(n, values)
-        refined, ids = refined_lattice(mesh, vid, scheme, level)
+    mesh, columns, refined, ids = _REFINED_PATCH[scheme.lattice](scheme, n, level, values)
     points, limits = osd_limit_points(mesh, level)
     keys = sorted(ids)
     with mpmath.workdps(30):

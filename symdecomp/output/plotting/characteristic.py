@@ -20,6 +20,7 @@ import numpy as np
 
 from symdecomp.algebra.triangle_bezier import bezier_value
 from symdecomp.output.plotting._mpl import new_figure
+from symdecomp.schemes.lattice import QUAD, TRIANGLE
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
 from symdecomp.verify.c1 import c1_test, characteristic_nets
@@ -69,8 +70,10 @@ def ring_curves(scheme: Scheme, n: int, *, samples: int = 9) -> dict:
     rotation = np.exp(2j * np.pi * vec.j / n)
     t = np.linspace(0.0, 1.0, 4 * samples + 1)
     grid = np.linspace(0.0, 1.0, samples)
-    if scheme.mesh == "triangle":
-        return _triangle_curves(nets, rotation, n, t, grid)
+    return _CURVES[scheme.lattice](nets, rotation, n, t, grid)
+
+
+def _quad_curves(nets, rotation: complex, n: int, t: np.ndarray, grid: np.ndarray) -> dict:
     lines, inner, rays = [], [], []
     for sector in range(n):
         r = rotation**sector
@@ -84,6 +87,10 @@ def ring_curves(scheme: Scheme, n: int, *, samples: int = 9) -> dict:
             if p == 2:  # face (0, 1): its edge v = 1 is the inner boundary
                 inner.append(r * _patch(x, y, t, np.array([0.0]))[:, 0])
     return {"lines": lines, "inner": inner, "rays": rays}
+
+
+#: The ring's curves from the sub-patch nets of :func:`~symdecomp.verify.c1.characteristic_nets`, per lattice.
+_CURVES = {QUAD: _quad_curves, TRIANGLE: _triangle_curves}
 
 
 def characteristic_map_figure(scheme: Scheme, valences=(3, 5, 16), *, samples: int = 7):

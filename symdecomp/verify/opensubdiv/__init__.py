@@ -95,7 +95,8 @@ def _self_test(lib) -> str | None:
     """Refine a small valence-5 mesh two levels in OpenSubdiv and compare with the exact rules."""
     from fractions import Fraction
 
-    from symdecomp.schemes.mesh import central_rings, ring_mesh
+    from symdecomp.schemes.mesh import ring_mesh
+    from symdecomp.schemes.refinement import central_rings
     from symdecomp.schemes.scheme import catmull_clark
 
     mesh = ring_mesh(5, 3, lambda s, u, v: (Fraction(s + 2 * u), Fraction(u * v - s), Fraction(v * v + 1, 3)))
@@ -179,7 +180,7 @@ def osd_limit_points(mesh, levels: int) -> tuple[np.ndarray, np.ndarray]:
     """``(points, limits)``: every vertex of ``mesh`` refined ``levels`` times in OpenSubdiv, and its limit position.
 
     A :class:`~symdecomp.schemes.mesh.QuadMesh` goes through Catmull-Clark, a triangle mesh
-    (:class:`~symdecomp.schemes.trimesh.TriangleMesh`) through Loop. Both ``(V_L, 3)`` arrays
+    (:class:`~symdecomp.schemes.mesh.TriangleMesh`) through Loop. Both ``(V_L, 3)`` arrays
     in OpenSubdiv's vertex order of the last level (match the points to find a vertex).
     Boundary vertices use OpenSubdiv's edge-only boundary rules.
     """

@@ -1,6 +1,6 @@
 """OpenSubdiv's Loop scheme through the bridge: one refinement step and limit positions of a triangle mesh.
 
-:func:`osd_loop_step` hands a :class:`~symdecomp.schemes.trimesh.TriangleMesh` with 3-D values to
+:func:`osd_loop_step` hands a :class:`~symdecomp.schemes.mesh.TriangleMesh` with 3-D values to
 ``symdecomp_osd_loop_step`` (``osd_bridge.cpp``). :func:`osd_loop_one_ring_matrix` and
 :func:`osd_loop_position_mask` read OpenSubdiv's one-step matrix of the 1-ring and its limit
 position mask column by column (unit vectors as positions, three columns per call), to be
@@ -13,7 +13,7 @@ from __future__ import annotations
 import ctypes
 
 from symdecomp.errors import BridgeUnavailableError
-from symdecomp.schemes.trimesh import TriangleMesh, triangle_ring_mesh
+from symdecomp.schemes.mesh import TriangleMesh, triangle_ring_mesh
 from symdecomp.verify.opensubdiv import load_bridge
 
 __all__ = ["osd_loop_step", "osd_loop_one_ring_matrix", "osd_loop_position_mask", "osd_loop_tangent_masks"]

@@ -1,27 +1,51 @@
-"""The eigenvectors of the Catmull-Clark patch's 1-ring block, frequency by frequency (exact or Arb).
+"""The eigenvectors of the patch matrix's 1-ring block, frequency by frequency (exact or Arb), on each lattice.
 
-The 1-ring block ``S`` acts on ``(O, e_0, f_0, .., e_{N-1}, f_{N-1})``; in the real Fourier basis
-it splits into a 3 x 3 rational block (``j = 0``), real 2 x 2 blocks for ``0 < j < N/2`` and a
-rational 2 x 2 block at ``j = N/2`` (even ``N``); see :mod:`symdecomp.analysis.eigendata`, which
-assembles the patch's eigen-data from these columns (Loop's counterpart:
-:mod:`symdecomp.analysis.triangle_eigendata`).
+:mod:`symdecomp.analysis.eigendata` assembles the patch's eigen-data from these columns; which
+columns, and what it may do with them, is declared per lattice in :data:`RING_EIGEN`.
+
+**Quads** (Catmull-Clark). The 1-ring block ``S`` acts on ``(O, e_0, f_0, .., e_{N-1}, f_{N-1})``;
+in the real Fourier basis it splits into a 3 x 3 rational block (``j = 0``), real 2 x 2 blocks
+for ``0 < j < N/2`` and a rational 2 x 2 block at ``j = N/2`` (even ``N``).
+
+**Triangles** (Loop). The 1-ring block ``S`` of the ``(N + 6)``-point patch
+(:mod:`symdecomp.schemes.patch`) acts on ``(O, a_0, .., a_{N-1})``: the centre row
+``(w_O, w_a, .., w_a)`` (exact in ``Q(zeta_2N)``: Loop's weights hold ``cos(2 pi/N)``), and the
+circulant rows of the edge points ``a_i = eo O + sum_k ee[k] a_{i+k}`` (rational). In the real
+Fourier basis of the ``a``'s it splits into
+
+* frequency 0: the 2 x 2 block ``[[w_O, N w_a], [eo, sum_k ee[k]]]`` on ``(O, sum a)``, entries in
+  ``Q(zeta_2N)``: eigenvalues by the quadratic formula in Arb (1 and, for Loop,
+  ``(3/8 + cos(2 pi/N)/4)^2``), eigenvectors from the block's rows;
+* frequency ``0 < j < N/2``: ``lam_j = sum_k ee[k] cos(2 pi j k/N)`` (real because the rule is
+  mirror symmetric, ``ee[k] = ee[-k]``), twice, with the patterns ``cos(2 pi j k/N)`` and
+  ``sin(2 pi j k/N)`` on ``a_k`` (0 on ``O``); left eigenvectors ``2/N`` times the same patterns;
+* frequency ``N/2`` (even ``N``): ``sum_k ee[k] (-1)^k`` with the pattern ``(-1)^k`` (left: ``/N``).
+
+Every column carries an exact test for a coincidence with a rational eigenvalue ``nu`` of the
+regular block (decided in ``Q(zeta_2N)``, :mod:`symdecomp.algebra.cyclotomic`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from fractions import Fraction
 
 import flint
 
-from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, to_acb
 from symdecomp.algebra.numbers import to_arb, to_fmpq
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.errors import NotDiagonalizableError
+from symdecomp.schemes.lattice import QUAD, TRIANGLE
 from symdecomp.schemes.patch import PatchMatrices
 
-__all__ = ["quad_ring_columns", "column_group", "LazyTable", "trig_table", "circulant_weights"]
+__all__ = [
+    "RingEigen", "RING_EIGEN", "quad_ring_columns", "triangle_ring_columns", "triangle_ring_weights",
+    "column_group", "LazyTable", "trig_table", "circulant_weights",
+]
 
 arb = flint.arb
 
@@ -143,14 +167,9 @@ def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> list:
 def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
     """The four eigenvectors of ``S`` at frequencies ``j`` and ``n - j`` (``0 < j < n/2``)."""
     b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: table[(2 * m) % (4 * n)], to_arb)
-    t, d = b_ee + b_ff, b_ee * b_ff - b_ef * b_fe
-    disc = t * t - 4 * d
-    if disc < 0:
-        raise NotDiagonalizableError(f"valence {n}, frequency {j}: complex eigenvalues (the data file holds real ones)")
-    if not disc > 0:
-        raise _NeedPrecision
+    roots = _real_eigenvalues(b_ee, b_ef, b_fe, b_ff, f"valence {n}, frequency {j}: complex eigenvalues (the data file holds real ones)")
     cols = []
-    for lam in ((t + disc.sqrt()) / 2, (t - disc.sqrt()) / 2):
+    for lam in roots:
         pick, z = _choose([b_ef, lam - b_ee], [lam - b_ff, b_fe])
         _, y = _choose([b_fe, lam - b_ee], [lam - b_ff, b_ef])
         (y,) = _biorthogonal([z], [y], arb(n))
@@ -160,6 +179,17 @@ def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
             left = _pattern(table, n, j, fn, 2 * y[0], 2 * y[1])
             cols.append(_Column(lam, right, left, None, check))
     return cols
+
+
+def _real_eigenvalues(a00, a01, a10, a11, complex_message: str) -> tuple:
+    """The eigenvalues of a 2 x 2 block of balls, larger first, once they are certainly real and distinct."""
+    t, d = a00 + a11, a00 * a11 - a01 * a10
+    disc = t * t - 4 * d
+    if disc < 0:
+        raise NotDiagonalizableError(complex_message)
+    if not disc > 0:
+        raise _NeedPrecision
+    return (t + disc.sqrt()) / 2, (t - disc.sqrt()) / 2
 
 
 def _exact_frequency_check(w: dict, n: int, j: int, pick: int):
@@ -229,3 +259,132 @@ def column_group(p: PatchMatrices, w: dict, table: list, i: int):
     if i - 3 < 4 * J:
         return _frequency_columns(w, n, 1 + (i - 3) // 4, table), (i - 3) % 4
     return _rational_columns(w, n, n // 2), i - 3 - 4 * J
+
+
+# ---------------------------------------------------------------------------------------------
+# triangles
+
+
+def triangle_ring_weights(p) -> dict:
+    """``{"oo", "oa", "eo", "ee"}`` of the 1-ring block, checked exactly (circulant, mirror symmetric, rotation invariant)."""
+    n = p.n
+    oo = p.sparse[0].get(0, Fraction(0))
+    oa = p.sparse[0].get(1, Fraction(0))
+    if any(p.sparse[0].get(1 + i, Fraction(0)) != oa for i in range(n)) or any(c > n for c in p.sparse[0]):
+        raise NotDiagonalizableError(f"the centre rule at valence {n} is not rotation invariant")
+
+    def split(i):
+        row = p.sparse[1 + i]
+        if any(c > n for c, w in row.items() if w != 0):
+            raise NotDiagonalizableError(f"the 1-ring of valence {n} depends on points beyond it: not block triangular")
+        return row.get(0, Fraction(0)), {k: row.get(1 + (i + k) % n, Fraction(0)) for k in range(n)}
+
+    eo, ee = split(0)
+    if any(split(i) != (eo, ee) for i in range(1, n)):
+        raise NotDiagonalizableError(f"the 1-ring matrix at valence {n} is not circulant")
+    if any(ee[k] != ee[-k % n] for k in range(n)):
+        raise NotDiagonalizableError(f"the edge rule at valence {n} is not mirror symmetric (the Fourier blocks are not real)")
+    return dict(oo=oo, oa=oa, eo=eo, ee={k: x for k, x in ee.items() if x != 0})
+
+
+def _ball(x, prec: int) -> arb:
+    return to_acb(x, prec).real if isinstance(x, Cyclotomic) else to_arb(x)
+
+
+def _pick(pairs: list[list], zero) -> list:
+    """The candidate vector with the larger entries (a ball vector must not be all 0)."""
+    if zero is not None:  # exact: the first nonzero candidate
+        return next((v for v in pairs if any(x != zero for x in v)), None)
+    best = max(pairs, key=lambda v: sum(abs(float(x.mid())) for x in v))
+    if all(x.contains(0) for x in best):
+        raise _NeedPrecision
+    return best
+
+
+def _frequency_zero(w: dict, n: int, prec: int) -> list[_Column]:
+    b00, b01, b10, b11 = w["oo"], n * w["oa"], w["eo"], sum(w["ee"].values(), Fraction(0))
+    a00, a01, a10, a11 = (_ball(x, prec) for x in (b00, b01, b10, b11))
+    roots = _real_eigenvalues(a00, a01, a10, a11, f"valence {n}, frequency 0: complex eigenvalues")
+    field = CyclotomicField(2 * n)
+
+    def check(nu: Fraction, g: dict):
+        e00, e01, e10, e11 = (field(x) if not isinstance(x, Cyclotomic) else x for x in (b00, b01, b10, b11))
+        if nu * nu - (e00 + e11) * nu + (e00 * e11 - e01 * e10) != 0:
+            return None
+        z = _pick([[e01, nu - e00], [nu - e11, e10]], field(0))
+        if z is None:  # the block is nu times the identity: every vector is an eigenvector
+            return all(x == 0 for x in g.values())
+        return g.get(0, 0) * z[0] + sum((x * z[1] for c, x in g.items() if 1 <= c <= n), field(0)) == 0
+
+    cols = []
+    for lam in roots:
+        z = _pick([[a01, lam - a00], [lam - a11, a10]], None)
+        y = _pick([[a10, lam - a00], [lam - a11, a01]], None)
+        dot = y[0] * z[0] + y[1] * z[1]
+        if dot.contains(0):
+            raise _NeedPrecision
+        right = [z[0]] + [z[1]] * n
+        left = [y[0] / dot] + [y[1] / (n * dot)] * n
+        cols.append(_Column(lam, right, left, None, check))
+    return cols
+
+
+def _frequency_check(w: dict, n: int, j: int):
+    """Exact test, in ``Q(zeta_2n)``, of ``lam_j = nu`` and of ``g . u = 0`` for the cos and sin patterns together."""
+
+    def check(nu: Fraction, g: dict):
+        field = CyclotomicField(2 * n)
+        zeta = lambda m: field.zeta(m % (2 * n))  # noqa: E731
+        lam = sum(((zeta(2 * j * k) + zeta(-2 * j * k)) * (x / 2) for k, x in w["ee"].items()), field(0))
+        if lam != nu:
+            return None
+        return sum((x * zeta(2 * j * (c - 1)) for c, x in g.items() if 1 <= c <= n), field(0)) == 0
+
+    return check
+
+
+def triangle_ring_columns(p, table: list, prec: int) -> list:
+    """The ``n + 1`` eigenvectors of the 1-ring block: frequency 0, then ``(cos, sin)`` for ``j = 1..``, then ``n/2``.
+
+    ``table[m] = cos(pi m/(2n))`` (:func:`trig_table`).
+    """
+    n = p.n
+    w = triangle_ring_weights(p)
+    cols = _frequency_zero(w, n, prec)
+    for j in range(1, (n + 1) // 2):
+        lam = sum((to_arb(x) * table[(4 * j * k) % (4 * n)] for k, x in w["ee"].items()), arb(0))
+        check = _frequency_check(w, n, j)
+        for shift in (0, -n):  # cos, then sin (= cos shifted by a quarter turn)
+            pattern = [table[(4 * j * k + shift) % (4 * n)] for k in range(n)]
+            cols.append(_Column(lam, [arb(0)] + pattern, [arb(0)] + [x * 2 / n for x in pattern], None, check))
+    if n % 2 == 0:
+        lam = sum((x * (-1) ** k for k, x in w["ee"].items()), Fraction(0))
+
+        def check(nu, g, lam=lam):
+            return None if nu != lam else sum((x * (-1) ** (c - 1) for c, x in g.items() if 1 <= c <= n), Fraction(0)) == 0
+
+        sign = [arb((-1) ** k) for k in range(n)]
+        cols.append(_Column(to_arb(lam), [arb(0)] + sign, [arb(0)] + [x / n for x in sign], None, check))
+    return cols
+
+
+# ---------------------------------------------------------------------------------------------
+# per lattice
+
+
+@dataclass(frozen=True)
+class RingEigen:
+    """The 1-ring block's eigen-data on one lattice."""
+
+    #: ``(patch matrices, trig table, prec) -> columns``: the eigenvectors of the 1-ring block, frequency by frequency.
+    columns: Callable
+    #: Whether a defective eigenvalue shared with the regular block is kept as a Jordan pair (else refused).
+    jordan: bool
+    #: Whether sub-patch entries around 0 can be proved 0 column by column (:func:`column_group`).
+    sharpen: bool
+
+
+RING_EIGEN = {
+    QUAD: RingEigen(lambda p, table, prec: quad_ring_columns(p, table), jordan=False, sharpen=True),
+    TRIANGLE: RingEigen(triangle_ring_columns, jordan=True, sharpen=False),
+}

@@ -20,8 +20,8 @@ from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.claims import Scope, Status, check_claim
 from symdecomp.cli import main
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.files import scheme_from_text
-from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark
+from symdecomp.schemes.files import scheme_from_text, scheme_to_text
+from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta, cos_jtheta, n, sin_jtheta
 from symdecomp.verify.c1 import c1_test
 
@@ -315,3 +315,68 @@ def test_no_verdict_rests_on_an_undefined_value(monkeypatch):
     monkeypatch.setitem(REGISTRY, "Eq. 9", replace(get_claim("Eq. 9"), check=lambda scheme: fake))
     r = _run_check("Eq. 9", catmull_clark())
     assert r.status is Status.UNDECIDED and "undefined value (nan)" in str(r.evidence)
+
+
+# --- a second pair of eyes: files that fooled the verdicts --------------------------------------------------------------
+
+
+def _corpus(name: str) -> Scheme:
+    from pathlib import Path
+
+    path = Path(__file__).parent / "corpus" / f"{name}.toml"
+    return scheme_from_text(path.read_text(), source=path.name)
+
+
+def test_proposition_5_1_compares_the_other_root_of_m_j_in_modulus():
+    """The other eigenvalue of M_1 is negative and larger in modulus than lambda_1: the matrix says so, and so does the claim."""
+    import mpmath
+
+    scheme = _corpus("negative-other-root")
+    S = sp.Matrix(subdivision_matrix(scheme, 3))
+    with mpmath.workdps(30):
+        values = mpmath.eig(mpmath.matrix([[mpmath.mpf(x.p) / x.q for x in S.row(r)] for r in range(S.rows)]), left=False, right=False)
+        moduli = sorted((abs(v) for v in values), reverse=True)
+        second = max((v for v in values if abs(v - 1) > 1e-20), key=abs)
+    assert abs(moduli[0] - 1) < 1e-20 and second.real < -0.68 and abs(second.imag) < 1e-20
+    r = check_claim("Proposition 5.1", scheme)
+    assert r.status is Status.REFUTED and "n = 3" in str(r.counterexample) and "-0.6876562" in str(r.counterexample)
+    assert check_claim("Proposition 5.1", catmull_clark()).status is Status.PROVED
+
+
+def test_a_second_eigenvalue_1_refutes_proposition_5_1_and_stops_masks(capsys, tmp_path):
+    scheme = _corpus("double-one")
+    x = sp.Symbol("x")
+    p = sp.Matrix(recursion_matrix(scheme, 3)).charpoly(x).as_expr()
+    assert sp.rem(p, (x - 1) ** 2, x) == 0  # 1 is a double root of the Eq. 43 block
+    assert check_claim("Proposition 5.1", scheme).status is Status.REFUTED
+    path = tmp_path / "d.toml"
+    path.write_text(scheme_to_text(scheme))
+    assert main(["masks", "5", "--scheme", str(path)]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "not simple" in err[0]
+
+
+def test_complex_tangent_eigenvalues_make_the_ordering_claims_not_applicable(capsys, tmp_path):
+    scheme = _corpus("complex-tangent")
+    M = per_frequency_matrix(scheme).subs({sp.Symbol("omega"): sp.exp(2 * sp.pi * sp.I / 5)})
+    assert any(abs(sp.im(sp.N(v, 20))) > 1e-3 for v in M.eigenvals())  # complex at n = 5, j = 1
+    for label in ("Remark 5.1", "Section 5.3: smaller eigenvalues", "Section 5.3: construction"):
+        r = check_claim(label, scheme)
+        assert r.status is Status.NOT_APPLICABLE and "complex" in str(r.evidence), label
+    path = tmp_path / "c.toml"
+    path.write_text(scheme_to_text(scheme))
+    assert main(["masks", "5", "--scheme", str(path)]) == 1
+    assert "is not real" in capsys.readouterr().err
+
+
+def test_complex_outer_eigenvalues_are_listed_not_compared():
+    r = check_claim("Larger neighbourhoods (after Eq. 51)", _corpus("complex-outer"))
+    assert r.status is Status.CORRECTED and "I" in str(r.evidence)
+
+
+def test_an_n_dependent_edge_rule_gets_no_refutation_in_n():
+    scheme = _corpus("n-dependent-edge")
+    assert subdivision_matrix(scheme, 4) == subdivision_matrix(catmull_clark(), 4)
+    for label in ("Eq. 45", "Eq. 39", "Eq. 39 (n = 4)", "Eq. 39 (n → ∞)"):
+        r = check_claim(label, scheme)
+        assert r.status is Status.NOT_APPLICABLE and "depends on the valence" in str(r.evidence), label

@@ -10,6 +10,9 @@ meet one (instead of failing inside sympy, or repeating the same guard in every 
 * :data:`COSINE_ONLY`: some checks order the eigenvalues of ``M_j`` or evaluate them in intervals from
   their closed forms in ``c`` alone, which needs edge and face rules that do not depend on the valence
   ``n`` (otherwise ``n`` enters ``M_j`` beside ``c``); the reason names the term.
+* :data:`REAL_TANGENT_SPECTRUM`: checks that order the two eigenvalues of ``M_j`` (the dominant one, the
+  other one) need them real at every frequency: the discriminant of ``M_j`` nonnegative for every ``c`` in
+  ``[-1, 1]`` (exactly: no root of odd multiplicity inside, and positive somewhere).
 * :data:`FACE_NEIGHBOURS`: statements about the ``(2n+1)``-point 1-ring of a quad mesh (the matrix of
   Eq. 43, ``M_j`` of order 2) need a face rule.
 * :data:`NO_FREE_PARAMETERS`: checks that compute with the scheme's numbers (exact matrices at a
@@ -20,15 +23,18 @@ meet one (instead of failing inside sympy, or repeating the same guard in every 
 
 from __future__ import annotations
 
+import sympy as sp
+
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import cos_jtheta as C
 from symdecomp.symbols import n as N
 from symdecomp.symbols import sin_jtheta as SIN
 
-__all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH"]
+__all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH"]
 
 
 def _mirror_asymmetry(scheme: Scheme) -> Text | None:
@@ -49,6 +55,24 @@ def _valence_in_blocks(scheme: Scheme) -> Text | None:
             return Text("the check evaluates the eigenvalues of M_j from closed forms in c = cos(j pi/n) alone, and this "
                         "scheme's edge or face rule depends on the valence: the ", name, " of M_j is ", expr)
     return None
+
+
+def _complex_tangent_spectrum(scheme: Scheme) -> Text | None:
+    """The discriminant of ``M_j`` when it is negative somewhere in ``c`` in ``[-1, 1]`` (complex eigenvalues), else ``None``."""
+    d = tangent_eigenvalues(scheme).discriminant
+    try:
+        poly = sp.Poly(sp.expand(d), C)
+    except sp.PolynomialError:
+        return None  # not a polynomial in c: COSINE_ONLY or MIRROR_SYMMETRIC says why
+    if poly.free_symbols - {C}:
+        return None
+    odd = [f for f, mult in poly.sqf_list()[1] if mult % 2 == 1 and f.degree() > 0]
+    inside = sum(f.count_roots(-1, 1) - (f.eval(-1) == 0) - (f.eval(1) == 0) for f in odd)
+    sample = next(x for x in (sp.Integer(0), sp.Rational(1, 2), sp.Rational(-1, 2), sp.Rational(1, 3)) if poly.eval(x) != 0)
+    if inside == 0 and poly.eval(sample) > 0:
+        return None
+    return Text("the check orders the two eigenvalues of M_j, and for this scheme they are complex at some frequencies: the "
+                "discriminant of M_j is ", d, ", negative for some c = cos(j pi/n) in [-1, 1]")
 
 
 def _no_face_rule(scheme: Scheme) -> str | None:
@@ -79,6 +103,8 @@ def _not_mesh_rules(scheme: Scheme) -> str | None:
 MIRROR_SYMMETRIC = Requirement("mirror-symmetric rules", _mirror_asymmetry)
 #: Edge and face rules free of ``n``: ``M_j`` depends on ``c`` alone (checks that order or bound its eigenvalues).
 COSINE_ONLY = Requirement("edge and face rules that do not depend on n", _valence_in_blocks)
+#: Real eigenvalues of ``M_j`` at every frequency (checks that order them).
+REAL_TANGENT_SPECTRUM = Requirement("real eigenvalues of M_j", _complex_tangent_spectrum)
 #: A face rule: the quad 1-ring ``(O, a_i, b_i)`` of the paper.
 FACE_NEIGHBOURS = Requirement("a quad mesh (face neighbours b_i)", _no_face_rule)
 #: No free parameters: every weight is a number at each valence.

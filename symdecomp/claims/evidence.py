@@ -52,6 +52,15 @@ def start_points(scheme: Scheme):
     return cond, points
 
 
+def frequency_zero_others(scheme: Scheme) -> list:
+    """The eigenvalues of the Eq. 43 block other than one eigenvalue 1, with multiplicity: a second 1 (1 not
+    simple) stays in the list, where it is larger than every tangent-plane eigenvalue."""
+    values = list(recursion_eigenvalues(scheme))
+    if 1 in values:
+        values.remove(1)
+    return values
+
+
 def dominant_vs_frequency_zero(scheme: Scheme, last: int) -> tuple[bool, int]:
     """Certify in interval arithmetic (Arb) that the derived dominant eigenvalue of M_1 exceeds the two
     derived eigenvalues of the Eq. 43 block other than 1, for n = 3..last.
@@ -61,7 +70,7 @@ def dominant_vs_frequency_zero(scheme: Scheme, last: int) -> tuple[bool, int]:
     from symdecomp.algebra.compile import compile_expression
 
     dominant = compile_expression(tangent_eigenvalues(scheme).dominant, (C,), engine="arb")
-    block = [compile_expression(e, (n,), engine="arb") for e in recursion_eigenvalues(scheme) if e != 1]
+    block = [compile_expression(e, (n,), engine="arb") for e in frequency_zero_others(scheme)]
     with flint.ctx.workprec(128):
         for m in range(3, last + 1):
             lam1 = abs(dominant(flint.acb(flint.arb.cos_pi_fmpq(flint.fmpq(1, m)))))

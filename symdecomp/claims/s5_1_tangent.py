@@ -8,10 +8,9 @@ from symdecomp.algebra.circulant import mode_eigenvalue_derivation
 from symdecomp.analysis.components import ZETA, initial_vector_condition, root_of_unity_orders
 from symdecomp.analysis.dominance import tail_bound
 from symdecomp.analysis.frequency import per_frequency_matrix
-from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC
-from symdecomp.claims.evidence import at_valence, dominant_vs_frequency_zero, filtering_evidence, number, start_points
+from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM
+from symdecomp.claims.evidence import at_valence, dominant_vs_frequency_zero, filtering_evidence, frequency_zero_others, number, start_points
 from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
 from symdecomp.claims.notation import M as Mk
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
@@ -279,12 +278,36 @@ def _eq38(scheme: Scheme) -> CheckResult:
     )
 
 
+def _positive_on_unit_interval(expr) -> bool:
+    """``expr``, a polynomial in ``c``, is positive for every ``c`` in ``[-1, 1]`` (no root there, positive at 0)."""
+    try:
+        poly = sp.Poly(sp.expand(expr), C)
+    except sp.PolynomialError:
+        return False
+    if poly.free_symbols - {C}:
+        return False
+    return poly.count_roots(-1, 1) == 0 and poly.eval(0) > 0
+
+
+def _larger_other_root(scheme: Scheme, ev):
+    """``(n, k, mu, lambda_1)`` at the first valence ``n <= 12`` where an eigenvalue ``mu`` of ``M_k`` is larger in modulus
+    than ``lambda_1`` by more than ``1e-20`` (40 digits), or ``None``."""
+    for m in range(3, 13):
+        lam1 = sp.N(at_valence(ev.dominant, m), 40)
+        for k in range(1, m):
+            for root in (ev.dominant, ev.subdominant):
+                mu = sp.N(root.subs(C, sp.cos(k * sp.pi / m)), 40)
+                if abs(mu) > abs(lam1) + sp.Float("1e-20", 40):
+                    return m, k, sp.N(mu, 12), sp.N(lam1, 12)
+    return None
+
+
 @claim(
     "Proposition 5.1",
     section="5.1",
     title="$A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues",
     statement="The regular convex components $A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY,),
+    requires=(MIRROR_SYMMETRIC, COSINE_ONLY),
 )
 def _prop51(scheme: Scheme) -> CheckResult:
     ev = tangent_eigenvalues(scheme)
@@ -292,7 +315,9 @@ def _prop51(scheme: Scheme) -> CheckResult:
     dominant = ev.dominant.subs(C, cp)
     derivative = sp.diff(dominant, cp)
     increasing = all(t.is_positive for t in sp.Add.make_args(sp.expand(derivative)))
-    block = [e for e in recursion_eigenvalues(scheme) if e != 1]
+    # |other root| < dominant root at every frequency iff trace(M_j) > 0 there (real roots): for every c in [-1, 1]
+    negative_root_smaller = _positive_on_unit_interval(ev.trace)
+    block = frequency_zero_others(scheme)
     last = 1000
     steps = (
         Step("Dominant eigenvalue of $M_j$ for $c = \\cos j\\theta > 0$:", dominant),
@@ -310,6 +335,23 @@ def _prop51(scheme: Scheme) -> CheckResult:
             Status.REFUTED,
             Text("at ", eq(n, upto), " an eigenvalue of the Eq. 43 block is at least ", lambda_1, " (certified in interval arithmetic)"),
             counterexample=Text(eq(n, upto), ": ", eq(lambda_1, lam1), ", the Eq. 43 eigenvalues other than 1 are ", sp.Matrix(mus).T),
+            steps=steps,
+        )
+    if not negative_root_smaller:
+        found = _larger_other_root(scheme, ev)
+        if found is not None:
+            m, k, value, lam1 = found
+            return CheckResult(
+                Status.REFUTED,
+                Text("the other eigenvalue of ", Mk(k), " is larger in modulus than ", lambda_1, " at ", eq(n, m)),
+                counterexample=Text(eq(n, m), ", ", eq(sp.Symbol("k"), k), ": ", Mk(k), " has the eigenvalue ", value, ", ",
+                                    lambda_1, " = ", lam1),
+                steps=steps,
+            )
+        return CheckResult(
+            Status.UNDECIDED,
+            Text("the trace of ", Mk("j"), " (", ev.trace, ") is not positive for every ", C, " in [-1, 1], so the other "
+                 "root of ", Mk("j"), " may exceed ", lambda_1, " in modulus; no valence n = 3..12 shows it"),
             steps=steps,
         )
     if not increasing:
@@ -346,7 +388,7 @@ def _prop51(scheme: Scheme) -> CheckResult:
     title="$A^{n-1}, B^{n-1}, A^{n+1}, B^{n+1}$ are filtered out",
     statement="The components $A^{n-1}, B^{n-1}, A^{n+1}, B^{n+1}$ are also convex regular but they are filtered out by "
     "the subdivision scheme in the same way as the non-convex components.",
-    requires=(MIRROR_SYMMETRIC,),
+    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM),
 )
 def _rem51(scheme: Scheme) -> CheckResult:
     # Component j = n + 1 moves by M(omega_n^(n+1)) = M_1 from (1, zeta), zeta = omega_2n^(n+1) = -omega_2n, of
@@ -405,6 +447,7 @@ PRINTED_RATIO = (1 + omega) / 4 / (C / 4 * sp.sqrt(1 + C**2 / 4) + C**2 / 8)
     title="The invariant ratio",
     statement="In the limit the ratio $r$ of $A^j, B^j$ given by $A^j = r B^j$ is "
     "$\\frac{\\frac14(1 + \\omega_n^j)}{\\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta} + \\frac18\\cos^2 j\\theta}$.",
+    requires=(COSINE_ONLY,),
 )
 def _eq39(scheme: Scheme) -> CheckResult:
     derived = invariant_ratio(scheme)  # B/A on the dominant eigenvector
@@ -449,6 +492,7 @@ def _eq39(scheme: Scheme) -> CheckResult:
     section="5.1",
     title="The invariant ratio at $n = 4$",
     statement="For $n = 4$ and $j = 1$ the ratio is $1 + i$: $B^1$ is $A^1$ scaled by $\\sqrt2$ and rotated by $\\pi/4$.",
+    requires=(COSINE_ONLY,),
 )
 def _eq39_n4(scheme: Scheme) -> CheckResult:
     value = invariant_ratio_at(scheme, 4, 1)
@@ -470,6 +514,7 @@ def _eq39_n4(scheme: Scheme) -> CheckResult:
     section="5.1",
     title="The invariant ratio for large $n$",
     statement="For large $n$ and $j = 1$ the ratio tends towards $4/(\\sqrt5 + 1)$.",
+    requires=(COSINE_ONLY,),
 )
 def _eq39_limit(scheme: Scheme) -> CheckResult:
     value = invariant_ratio_limit(scheme, 1)

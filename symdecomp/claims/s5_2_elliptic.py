@@ -302,6 +302,7 @@ def _eq44(scheme: Scheme) -> CheckResult:
     title="The regular case $n = 4$",
     statement=r"For $n=4$ the matrix of Eq. 43 is $\begin{pmatrix}9/16&3/8&1/16\\3/8&1/2&1/8\\1/4&1/2&1/4\end{pmatrix}$ "
     r"with subdominant eigenvalue $1/4$, eigenvector $(-2,1,4)^T$, $d_b/d_a = 2$, scale ratio $\sqrt2$.",
+    requires=(COSINE_ONLY,),
 )
 def _eq45(scheme: Scheme) -> CheckResult:
     R = sp.Rational
@@ -420,8 +421,8 @@ def _remark52(scheme: Scheme) -> CheckResult:
             )
         return CheckResult(
             Status.PROVED,
-            Text("(1,1,1) is the eigenvector of 1 (no elliptic component); the other inputs (0, x, y) modulo (1,1,1), including "
-                 "(0,1,-1) from the component j = n, have an elliptic component ", where, " (", sp.Matrix(list(comp_01m1.values())).T,
+            Text("(1,1,1) is the eigenvector of 1 (no elliptic component); the inputs (0,1,1) and (0,1,-1) (the latter from the "
+                 "component j = n) have an elliptic component ", where, " (", sp.Matrix(list(comp_01m1.values())).T,
                  " at n = ", lo, "..8)"),
             steps=steps,
         )
@@ -445,7 +446,7 @@ def _remark52(scheme: Scheme) -> CheckResult:
     title="Catmull-Clark is nicely elliptic only at $n = 4$",
     statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "
     r"does in the regular case $n = 4$.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY,),
+    requires=(MIRROR_SYMMETRIC, COSINE_ONLY),
 )
 def _example(scheme: Scheme) -> CheckResult:
     cond = nice_elliptic_conditions(scheme)

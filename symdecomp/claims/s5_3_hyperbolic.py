@@ -11,7 +11,7 @@ from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality
 from symdecomp.analysis.reduction import subdivision_block_form
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim
-from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, NO_FREE_PARAMETERS
+from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, NO_FREE_PARAMETERS, REAL_TANGENT_SPECTRUM
 from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
@@ -28,7 +28,7 @@ Sym = sp.Symbol
     title="Hyperbolic components have smaller eigenvalues",
     statement=r"The eigenvalues of $A^2, A^{2n-2}, B^2, B^{2n-2}$ are smaller than those related to tangent plane "
     r"continuity.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY),
+    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM),
 )
 def _smaller(scheme: Scheme) -> CheckResult:
     ev = tangent_eigenvalues(scheme)
@@ -149,7 +149,7 @@ def _frequency_closure(scheme: Scheme):
     title="A 1-ring with only hyperbolic components",
     statement=r"Place $O$ on the plane of $A^1, A^{2n-1}, B^1, B^{2n-1}$ (the elliptic component becomes zero) and add "
     r"a combination of $\vec{v_2}, \vec{v_{2n-2}}$ on a plane perpendicular to the 1-ring.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, NO_FREE_PARAMETERS),
+    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM, NO_FREE_PARAMETERS),
 )
 def _construction(scheme: Scheme) -> CheckResult:
     cc = scheme

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.components import ZETA, root_of_unity_orders
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
@@ -223,12 +224,13 @@ def _factor_holds(counts: dict, growth: dict, rings: int, valence: int) -> bool:
     import flint
 
     poly = sp.Poly(sp.expand(growth[rings]["polynomial"]), X)
-    p = flint.fmpq_poly([flint.fmpq(int(c.p), int(c.q)) for c in reversed(poly.all_coeffs())])
+    p = flint.fmpq_poly([to_fmpq(c) for c in reversed(poly.all_coeffs())])
     return counts[rings][3] == counts[rings - 1][3] * p**valence
 
 
 def _growth_text(rings: int, g: dict) -> Text:
-    nonzero = sorted((r for r in g["roots"] if r != 0), reverse=True)
+    # by modulus, then real and imaginary part (outer eigenvalues may be complex: a vertex rule with complex regular roots)
+    nonzero = sorted((r for r in g["roots"] if r != 0), key=lambda r: (-abs(complex(r)), -complex(r).real, -complex(r).imag))
     nulls = Text(len(g["null"]) * N, " null columns")
     if not nonzero:
         return Text("ring ", rings, " adds only the eigenvalue 0 (", len(g["new"]) * N, " times) and ", nulls)

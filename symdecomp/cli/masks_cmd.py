@@ -21,10 +21,14 @@ from __future__ import annotations
 
 import sys
 
+import sympy as sp
+
+from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
 from symdecomp.errors import SymdecompError
+from symdecomp.symbols import n as N
 from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
@@ -87,11 +91,26 @@ def _run_general(args) -> int:
     return _finish(args, data, certified, why)
 
 
+def _one_is_simple(scheme, n: int) -> bool:
+    """1 is a simple eigenvalue of the frequency-0 block at valence ``n`` (exactly): else no limit position mask."""
+    x = sp.Symbol("x")
+    block = sp.Matrix(one_ring_matrices(scheme)[1]).subs(N, n)
+    p = sp.expand(block.charpoly(x).as_expr())
+    return sp.simplify(sp.diff(p, x).subs(x, 1)) != 0
+
+
 def run(args) -> int:
+    if not _one_is_simple(args.scheme, args.n):
+        print(f"symdecomp masks: at n = {args.n} the eigenvalue 1 of {args.scheme.name} is not simple (a double root of the "
+              "frequency-0 block): no limit position mask is defined, and no tangent masks", file=sys.stderr)
+        return 1
     if general_path(args) or closed_form_obstacle(args.scheme):  # no closed forms: the any-scheme route
         return _run_general(args)
-    masks = limit_masks_at(args.scheme, args.n)
-    data = masks.as_json(args.digits)
+    try:
+        masks = limit_masks_at(args.scheme, args.n)
+        data = masks.as_json(args.digits)
+    except (TypeError, ValueError, ZeroDivisionError):  # a complex lambda_1: the closed forms are real; the any-scheme route
+        return _run_general(args)
     certified, why = _subdominance(args)
     if args.json:
         print_json({**data, "lambda_1_subdominant": certified, "subdominance": why})

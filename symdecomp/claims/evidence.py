@@ -102,3 +102,66 @@ def filtering_evidence(scheme: Scheme, valence: int):
                 norm = mpmath.sqrt(mpmath.fsum(x**2 for p in current.a + current.b for x in p))
                 ratios.append(sp.Float(mpmath.nstr(norm / lam1**k, 15), 15))
     return ratios
+
+
+def positive_on_unit_interval(expr) -> bool:
+    """``expr``, a polynomial in ``c``, is positive for every ``c`` in ``[-1, 1]`` (no root there, positive at 0)."""
+    try:
+        poly = sp.Poly(sp.expand(expr), C)
+    except sp.PolynomialError:
+        return False
+    if poly.free_symbols - {C}:
+        return False
+    return poly.count_roots(-1, 1) == 0 and poly.eval(0) > 0
+
+
+def larger_other_root(ev):
+    """``(n, k, mu, lambda_1)`` at the first valence ``n <= 12`` where an eigenvalue ``mu`` of ``M_k`` is larger in modulus
+    than ``lambda_1`` by more than ``1e-20`` (40 digits), or ``None``."""
+    for m in range(3, 13):
+        lam1 = sp.N(at_valence(ev.dominant, m), 40)
+        for k in range(1, m):
+            for root in (ev.dominant, ev.subdominant):
+                mu = sp.N(root.subs(C, sp.cos(k * sp.pi / m)), 40)
+                if abs(mu) > abs(lam1) + sp.Float("1e-20", 40):
+                    return m, k, sp.N(mu, 12), sp.N(lam1, 12)
+    return None
+
+
+def other_root_result(ev, steps):
+    """Prop. 5.1 when the trace of M_j is not positive on [-1, 1]: a larger other root at a small valence, or undecided."""
+    from symdecomp.claims.notation import M as Mk
+    from symdecomp.claims.notation import eq, lambda_1
+    from symdecomp.claims.registry import CheckResult, Status, Text
+
+    found = larger_other_root(ev)
+    if found is not None:
+        m, k, value, lam1 = found
+        return CheckResult(
+            Status.REFUTED,
+            Text("the other eigenvalue of ", Mk(k), " is larger in modulus than ", lambda_1, " at ", eq(n, m)),
+            counterexample=Text(eq(n, m), ", ", eq(sp.Symbol("k"), k), ": ", Mk(k), " has the eigenvalue ", value, ", ",
+                                lambda_1, " = ", lam1),
+            steps=steps,
+        )
+    return CheckResult(
+        Status.UNDECIDED,
+        Text("the trace of ", Mk("j"), " (", ev.trace, ") is not positive for every ", C, " in [-1, 1], so the other "
+             "root of ", Mk("j"), " may exceed ", lambda_1, " in modulus; no valence n = 3..12 shows it"),
+        steps=steps,
+    )
+
+
+def frequency_zero_refutation(ev, block, upto: int, steps):
+    """Prop. 5.1 refuted at ``upto``: an eigenvalue of the Eq. 43 block (``block``) is at least ``lambda_1`` there."""
+    from symdecomp.claims.notation import eq, lambda_1
+    from symdecomp.claims.registry import CheckResult, Status, Text
+
+    lam1 = number(at_valence(ev.dominant, upto))
+    mus = [number(e.subs(n, upto)) for e in block]
+    return CheckResult(
+        Status.REFUTED,
+        Text("at ", eq(n, upto), " an eigenvalue of the Eq. 43 block is at least ", lambda_1, " (certified in interval arithmetic)"),
+        counterexample=Text(eq(n, upto), ": ", eq(lambda_1, lam1), ", the Eq. 43 eigenvalues other than 1 are ", sp.Matrix(mus).T),
+        steps=steps,
+    )

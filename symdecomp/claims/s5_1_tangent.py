@@ -10,7 +10,17 @@ from symdecomp.analysis.dominance import tail_bound
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
 from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM
-from symdecomp.claims.evidence import at_valence, dominant_vs_frequency_zero, filtering_evidence, frequency_zero_others, number, start_points
+from symdecomp.claims.evidence import (
+    at_valence,
+    dominant_vs_frequency_zero,
+    filtering_evidence,
+    frequency_zero_others,
+    frequency_zero_refutation,
+    number,
+    other_root_result,
+    positive_on_unit_interval,
+    start_points,
+)
 from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
 from symdecomp.claims.notation import M as Mk
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
@@ -278,30 +288,6 @@ def _eq38(scheme: Scheme) -> CheckResult:
     )
 
 
-def _positive_on_unit_interval(expr) -> bool:
-    """``expr``, a polynomial in ``c``, is positive for every ``c`` in ``[-1, 1]`` (no root there, positive at 0)."""
-    try:
-        poly = sp.Poly(sp.expand(expr), C)
-    except sp.PolynomialError:
-        return False
-    if poly.free_symbols - {C}:
-        return False
-    return poly.count_roots(-1, 1) == 0 and poly.eval(0) > 0
-
-
-def _larger_other_root(scheme: Scheme, ev):
-    """``(n, k, mu, lambda_1)`` at the first valence ``n <= 12`` where an eigenvalue ``mu`` of ``M_k`` is larger in modulus
-    than ``lambda_1`` by more than ``1e-20`` (40 digits), or ``None``."""
-    for m in range(3, 13):
-        lam1 = sp.N(at_valence(ev.dominant, m), 40)
-        for k in range(1, m):
-            for root in (ev.dominant, ev.subdominant):
-                mu = sp.N(root.subs(C, sp.cos(k * sp.pi / m)), 40)
-                if abs(mu) > abs(lam1) + sp.Float("1e-20", 40):
-                    return m, k, sp.N(mu, 12), sp.N(lam1, 12)
-    return None
-
-
 @claim(
     "Proposition 5.1",
     section="5.1",
@@ -315,8 +301,6 @@ def _prop51(scheme: Scheme) -> CheckResult:
     dominant = ev.dominant.subs(C, cp)
     derivative = sp.diff(dominant, cp)
     increasing = all(t.is_positive for t in sp.Add.make_args(sp.expand(derivative)))
-    # |other root| < dominant root at every frequency iff trace(M_j) > 0 there (real roots): for every c in [-1, 1]
-    negative_root_smaller = _positive_on_unit_interval(ev.trace)
     block = frequency_zero_others(scheme)
     last = 1000
     steps = (
@@ -329,31 +313,9 @@ def _prop51(scheme: Scheme) -> CheckResult:
     except ArithmeticError as exc:
         return CheckResult(Status.UNDECIDED, Text("the interval comparison did not separate the eigenvalues: ", str(exc)), steps=steps)
     if not certified:
-        lam1 = number(at_valence(ev.dominant, upto))
-        mus = [number(e.subs(n, upto)) for e in block]
-        return CheckResult(
-            Status.REFUTED,
-            Text("at ", eq(n, upto), " an eigenvalue of the Eq. 43 block is at least ", lambda_1, " (certified in interval arithmetic)"),
-            counterexample=Text(eq(n, upto), ": ", eq(lambda_1, lam1), ", the Eq. 43 eigenvalues other than 1 are ", sp.Matrix(mus).T),
-            steps=steps,
-        )
-    if not negative_root_smaller:
-        found = _larger_other_root(scheme, ev)
-        if found is not None:
-            m, k, value, lam1 = found
-            return CheckResult(
-                Status.REFUTED,
-                Text("the other eigenvalue of ", Mk(k), " is larger in modulus than ", lambda_1, " at ", eq(n, m)),
-                counterexample=Text(eq(n, m), ", ", eq(sp.Symbol("k"), k), ": ", Mk(k), " has the eigenvalue ", value, ", ",
-                                    lambda_1, " = ", lam1),
-                steps=steps,
-            )
-        return CheckResult(
-            Status.UNDECIDED,
-            Text("the trace of ", Mk("j"), " (", ev.trace, ") is not positive for every ", C, " in [-1, 1], so the other "
-                 "root of ", Mk("j"), " may exceed ", lambda_1, " in modulus; no valence n = 3..12 shows it"),
-            steps=steps,
-        )
+        return frequency_zero_refutation(ev, block, upto, steps)
+    if not positive_on_unit_interval(ev.trace):  # |other root| < dominant root iff trace(M_j) > 0 (real roots)
+        return other_root_result(ev, steps)
     if not increasing:
         return CheckResult(
             Status.UNDECIDED,

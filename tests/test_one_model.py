@@ -195,11 +195,9 @@ def test_c1_on_the_command_line_says_why_in_one_line(tmp_path, capsys):
 
 def test_the_budget_stops_a_long_check_with_undecided():
     start = time.monotonic()
-    r = check_claim("Eq. 39", scheme_from_text(EDGE_ALPHA), budget=3)
-    assert time.monotonic() - start < 30
-    assert r.status in (Status.UNDECIDED, Status.REFUTED, Status.CORRECTED, Status.PROVED)
-    if r.status is Status.UNDECIDED:
-        assert "budget of 3 s" in str(r.evidence)
+    r = check_claim("Eq. 39", scheme_from_text(EDGE_ALPHA), budget=2)  # over 30 s without a budget
+    assert time.monotonic() - start < 20
+    assert r.status is Status.UNDECIDED and "budget of 2 s" in str(r.evidence)
 
 
 def test_a_budget_inside_a_budget_is_the_outer_one():
@@ -289,8 +287,6 @@ def test_claims_on_every_corpus_file_end_within_the_budget_with_no_error(path, c
     rows = json.loads(capsys.readouterr().out)
     assert code == 0 and not [r["label"] for r in rows if r["status"] == "error"]
     assert elapsed < len(rows) * budget
-    for r in rows:  # a verdict, or a reason for none
-        assert r["status"] != "undecided" or r["evidence"]
 
 
 def test_the_corpus_is_there_and_every_file_reads():
@@ -371,7 +367,7 @@ def test_complex_tangent_eigenvalues_make_the_ordering_claims_not_applicable(cap
 
 def test_complex_outer_eigenvalues_are_listed_not_compared():
     r = check_claim("Larger neighbourhoods (after Eq. 51)", _corpus("complex-outer"))
-    assert r.status is Status.CORRECTED and "I" in str(r.evidence)
+    assert r.status is Status.CORRECTED and "ring 2 adds the eigenvalues 1/16 + sqrt(2)*I/16, 1/16 - sqrt(2)*I/16" in str(r.evidence)
 
 
 def test_an_n_dependent_edge_rule_gets_no_refutation_in_n():
@@ -380,3 +376,16 @@ def test_an_n_dependent_edge_rule_gets_no_refutation_in_n():
     for label in ("Eq. 45", "Eq. 39", "Eq. 39 (n = 4)", "Eq. 39 (n → ∞)"):
         r = check_claim(label, scheme)
         assert r.status is Status.NOT_APPLICABLE and "depends on the valence" in str(r.evidence), label
+
+
+def test_the_sign_of_a_polynomial_on_an_interval_is_decided_from_its_roots():
+    """Even roots inside keep the sign (Catmull-Clark's discriminant c^2 (c^2 + 4)/16), odd roots change it."""
+    from symdecomp.algebra.valence_signs import sign_on_interval
+
+    c = sp.Symbol("c")
+    assert sign_on_interval(c**2 * (c**2 + 4) / 16, c, -1, 1, strict=False) is True
+    assert sign_on_interval(c**2 * (c**2 + 4) / 16, c, -1, 1) is False  # 0 at c = 0: not positive
+    assert sign_on_interval(c**2 * (17 * c**2 - 12), c, -1, 1, strict=False) is False  # roots +-2 sqrt(51)/17 inside
+    assert sign_on_interval(1 - c, c, -1, 1, strict=False) is True and sign_on_interval(c - 1, c, -1, 1, strict=False) is False
+    assert sign_on_interval(0 * c, c, -1, 1, strict=False) is True and sign_on_interval(0 * c, c, -1, 1) is False
+    assert sign_on_interval(sp.sqrt(c), c, -1, 1) is None

@@ -6,6 +6,7 @@ that must not vanish, or must be positive, at every integer ``n >= n_0``. Both a
 * :func:`integer_zeros`: the integers ``n >= n_0`` where the numerator or the denominator of ``f``
   vanishes, from the linear factors of their factorisations over ``Q`` (a factor of degree ``>= 2``
   that is irreducible over ``Q`` has no rational, hence no integer, root);
+* :func:`sign_on_interval`: a polynomial positive (or nonnegative) on a closed interval, from its roots there;
 * :func:`positive_from`: ``f(x) > 0`` for every real ``x >= n_0``, when numerator and denominator have
   no real root in ``[n_0, oo)`` (Sturm sequences, :meth:`sympy.Poly.count_roots`) and ``f(n_0) > 0``.
 
@@ -23,7 +24,7 @@ import sympy as sp
 
 from symdecomp.errors import InvalidInputError
 
-__all__ = ["integer_zeros", "positive_from"]
+__all__ = ["integer_zeros", "positive_from", "sign_on_interval"]
 
 
 def _parts(expr, variable: sp.Symbol) -> tuple[sp.Poly, sp.Poly]:
@@ -63,3 +64,27 @@ def positive_from(expr, variable: sp.Symbol, start: int) -> bool:
         if poly.degree() > 0 and poly.count_roots(start, None) > 0:
             return False
     return bool(numerator.eval(start) / denominator.eval(start) > 0)
+
+
+def sign_on_interval(expr, variable: sp.Symbol, low, high, *, strict: bool = True) -> bool | None:
+    """Whether the polynomial ``expr`` in ``variable`` is positive (``strict``) or nonnegative on ``[low, high]``,
+    exactly (Sturm sequences); ``None`` when ``expr`` is not a polynomial in ``variable`` alone.
+
+    Nonnegative: no root of odd multiplicity strictly inside (the sign cannot change) and positive at a point
+    that is no root; the zero polynomial is nonnegative, not positive.
+    """
+    try:
+        poly = sp.Poly(sp.expand(sp.sympify(expr, strict=True)), variable)
+    except sp.PolynomialError:
+        return None
+    if poly.free_symbols - {variable}:
+        return None
+    if poly.is_zero:
+        return not strict
+    if strict:
+        return poly.count_roots(low, high) == 0 and poly.eval(low) > 0
+    odd = [f for f, mult in poly.sqf_list()[1] if mult % 2 == 1 and f.degree() > 0]
+    if sum(f.count_roots(low, high) - (f.eval(low) == 0) - (f.eval(high) == 0) for f in odd):
+        return False
+    points = (low + (high - low) * sp.Rational(k, poly.degree() + 2) for k in range(1, poly.degree() + 2))
+    return bool(poly.eval(next(x for x in points if poly.eval(x) != 0)) > 0)

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text
 from symdecomp.errors import InvalidSchemeError
@@ -37,39 +38,34 @@ from symdecomp.symbols import sin_jtheta as SIN
 __all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH"]
 
 
+def _block_term(scheme: Scheme, symbol) -> tuple[str, sp.Expr] | None:
+    """``(name, expr)``: the trace or determinant of ``M_j`` when it holds ``symbol``, else ``None``."""
+    ev = tangent_eigenvalues(scheme)
+    return next(((name, e) for name, e in (("trace", ev.trace), ("determinant", ev.determinant)) if e.has(symbol)), None)
+
+
 def _mirror_asymmetry(scheme: Scheme) -> Text | None:
     """The trace or determinant of ``M_j`` when it depends on ``sin(j pi/n)``, else ``None``."""
-    ev = tangent_eigenvalues(scheme)
-    for name, expr in (("trace", ev.trace), ("determinant", ev.determinant)):
-        if expr.has(SIN):
-            return Text("the closed forms of Section 5 are written in c = cos(j pi/n) and need mirror-symmetric rules; for this "
-                        "scheme the ", name, " of M_j is ", expr, " (s = sin(j pi/n))")
-    return None
+    if (term := _block_term(scheme, SIN)) is None:
+        return None
+    return Text("the closed forms of Section 5 are written in c = cos(j pi/n) and need mirror-symmetric rules; for this "
+                "scheme the ", term[0], " of M_j is ", term[1], " (s = sin(j pi/n))")
 
 
 def _valence_in_blocks(scheme: Scheme) -> Text | None:
     """The trace or determinant of ``M_j`` when it depends on ``n`` besides ``c``, else ``None``."""
-    ev = tangent_eigenvalues(scheme)
-    for name, expr in (("trace", ev.trace), ("determinant", ev.determinant)):
-        if expr.has(N):
-            return Text("the check evaluates the eigenvalues of M_j from closed forms in c = cos(j pi/n) alone, and this "
-                        "scheme's edge or face rule depends on the valence: the ", name, " of M_j is ", expr)
-    return None
+    if (term := _block_term(scheme, N)) is None:
+        return None
+    return Text("the check evaluates the eigenvalues of M_j from closed forms in c = cos(j pi/n) alone, and this "
+                "scheme's edge or face rule depends on the valence: the ", term[0], " of M_j is ", term[1])
 
 
 def _complex_tangent_spectrum(scheme: Scheme) -> Text | None:
-    """The discriminant of ``M_j`` when it is negative somewhere in ``c`` in ``[-1, 1]`` (complex eigenvalues), else ``None``."""
+    """The discriminant of ``M_j`` when it is negative somewhere in ``c`` in ``[-1, 1]`` (complex eigenvalues), else ``None``.
+
+    Not a polynomial in ``c`` alone: :data:`MIRROR_SYMMETRIC` or :data:`COSINE_ONLY` says why."""
     d = tangent_eigenvalues(scheme).discriminant
-    try:
-        poly = sp.Poly(sp.expand(d), C)
-    except sp.PolynomialError:
-        return None  # not a polynomial in c: COSINE_ONLY or MIRROR_SYMMETRIC says why
-    if poly.free_symbols - {C}:
-        return None
-    odd = [f for f, mult in poly.sqf_list()[1] if mult % 2 == 1 and f.degree() > 0]
-    inside = sum(f.count_roots(-1, 1) - (f.eval(-1) == 0) - (f.eval(1) == 0) for f in odd)
-    sample = next(x for x in (sp.Integer(0), sp.Rational(1, 2), sp.Rational(-1, 2), sp.Rational(1, 3)) if poly.eval(x) != 0)
-    if inside == 0 and poly.eval(sample) > 0:
+    if sign_on_interval(d, C, -1, 1, strict=False) is not False:
         return None
     return Text("the check orders the two eigenvalues of M_j, and for this scheme they are complex at some frequencies: the "
                 "discriminant of M_j is ", d, ", negative for some c = cos(j pi/n) in [-1, 1]")

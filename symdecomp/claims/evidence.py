@@ -104,17 +104,6 @@ def filtering_evidence(scheme: Scheme, valence: int):
     return ratios
 
 
-def positive_on_unit_interval(expr) -> bool:
-    """``expr``, a polynomial in ``c``, is positive for every ``c`` in ``[-1, 1]`` (no root there, positive at 0)."""
-    try:
-        poly = sp.Poly(sp.expand(expr), C)
-    except sp.PolynomialError:
-        return False
-    if poly.free_symbols - {C}:
-        return False
-    return poly.count_roots(-1, 1) == 0 and poly.eval(0) > 0
-
-
 def larger_other_root(ev):
     """``(n, k, mu, lambda_1)`` at the first valence ``n <= 12`` where an eigenvalue ``mu`` of ``M_k`` is larger in modulus
     than ``lambda_1`` by more than ``1e-20`` (40 digits), or ``None``."""

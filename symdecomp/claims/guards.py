@@ -75,12 +75,11 @@ def unbound_parameters(finding, parameters) -> set:
         elif isinstance(obj, sp.MatrixBase):
             for entry in obj:
                 visit(entry)
+        elif isinstance(obj, sp.Tuple):
+            for entry in obj.args:
+                visit(entry)
         elif isinstance(obj, sp.Basic):
-            if isinstance(obj, (sp.Tuple, sp.Add, sp.Mul)) and any(isinstance(a, sp.Eq) for a in obj.args):
-                for a in obj.args:
-                    visit(a)
-            else:
-                found.update(obj.free_symbols & wanted)
+            found.update(obj.free_symbols & wanted)
 
     for part in finding.parts:
         visit(part)

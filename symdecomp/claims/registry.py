@@ -74,7 +74,7 @@ from symdecomp.claims.guards import (
     unbound_parameters,
     undefined_values,
 )
-from symdecomp.errors import InvalidInputError, InvalidSchemeError, NotApplicableError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 
 __all__ = [
@@ -426,7 +426,6 @@ def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | Non
 
 @cache
 def _check_claim(label: str, scheme: Scheme, budget: float | None) -> CheckResult:
-    get_claim(label)
     try:
         with time_budget(budget):
             return _run_check(label, scheme)
@@ -442,9 +441,9 @@ def _run_check(label: str, scheme: Scheme) -> CheckResult:
             if (reason := requirement.unmet(scheme)) is not None:
                 return CheckResult(Status.NOT_APPLICABLE, reason)
         result = c.check(scheme)
-    # NotApplicableError: the scheme does not meet the hypotheses of an analysis the check uses; another
-    # InvalidSchemeError: the scheme is outside what the claim's derivation covers (module docstring).
-    except (NotApplicableError, InvalidSchemeError) as exc:
+    # NotApplicableError (the scheme does not meet the hypotheses of an analysis the check uses) is an
+    # InvalidSchemeError; another one means the scheme is outside what the claim's derivation covers (module docstring).
+    except InvalidSchemeError as exc:
         why = Text(*exc.parts) if exc.parts else str(exc)
         return CheckResult(Status.NOT_APPLICABLE, Text(f"not applicable to the scheme {scheme.name!r}: ", why))
     except Exception as exc:  # the registry reports, the caller decides
@@ -463,9 +462,6 @@ def _run_check(label: str, scheme: Scheme) -> CheckResult:
     if result.status in (Status.REFUTED, Status.CORRECTED) and unbound_parameters(result.counterexample, scheme.parameters):
         return at_parameter_values(scheme, result, lambda concrete: _run_check(label, concrete))
     return result
-
-
-
 
 
 def is_zero(expr) -> bool:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation
+from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.components import ZETA, initial_vector_condition, root_of_unity_orders
 from symdecomp.analysis.dominance import tail_bound
 from symdecomp.analysis.frequency import per_frequency_matrix
@@ -18,7 +19,6 @@ from symdecomp.claims.evidence import (
     frequency_zero_refutation,
     number,
     other_root_result,
-    positive_on_unit_interval,
     start_points,
 )
 from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
@@ -314,7 +314,7 @@ def _prop51(scheme: Scheme) -> CheckResult:
         return CheckResult(Status.UNDECIDED, Text("the interval comparison did not separate the eigenvalues: ", str(exc)), steps=steps)
     if not certified:
         return frequency_zero_refutation(ev, block, upto, steps)
-    if not positive_on_unit_interval(ev.trace):  # |other root| < dominant root iff trace(M_j) > 0 (real roots)
+    if not sign_on_interval(ev.trace, C, -1, 1):  # |other root| < dominant root iff trace(M_j) > 0 (real roots)
         return other_root_result(ev, steps)
     if not increasing:
         return CheckResult(

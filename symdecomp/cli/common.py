@@ -241,13 +241,11 @@ def closed_form_obstacle(scheme: Scheme) -> str | None:
 
     They need a quad scheme with mirror-symmetric rules, so that ``M_j`` depends on ``c`` alone.
     """
-    from symdecomp.analysis.tangent import tangent_eigenvalues
-    from symdecomp.symbols import sin_jtheta
+    from symdecomp.claims.applicability import MIRROR_SYMMETRIC
 
     if scheme.lattice != PAPER_LATTICE:
         return f"they are derived for {PAPER_LATTICE} meshes, not {scheme.lattice} meshes"
-    ev = tangent_eigenvalues(scheme)
-    if ev.trace.has(sin_jtheta) or ev.determinant.has(sin_jtheta):
+    if MIRROR_SYMMETRIC.unmet(scheme) is not None:
         return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"
     return None
 

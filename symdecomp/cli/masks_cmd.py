@@ -23,12 +23,12 @@ import sys
 
 import sympy as sp
 
-from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
 from symdecomp.errors import SymdecompError
-from symdecomp.symbols import n as N
+from symdecomp.symbols import cos_jtheta
 from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
@@ -50,17 +50,24 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def _subdominance(args) -> tuple[bool, str]:
-    """Whether ``lambda_1`` is certified the subdominant eigenvalue of the 1-ring at this valence, and why (not)."""
+def _subdominance(args) -> tuple[bool, str, bool]:
+    """``(certified, why, one_simple)``: whether ``lambda_1`` is certified the subdominant eigenvalue of the 1-ring at
+    this valence and why (not), and whether 1 is a simple eigenvalue there (else no mask is defined)."""
     try:
         r = spectral_conditions(args.scheme, args.n, one_ring=True)
     except SymdecompError as exc:
-        return False, f"not certified: {exc}"
+        return False, f"not certified: {exc}", True
     if r.status is C1Verdict.C1 and r.subdominant is not None and r.subdominant.frequency == 1:
-        return True, r.reason
+        return True, r.reason, True
     if r.status is C1Verdict.C1:
-        return False, f"the subdominant eigenvalue is at frequency {r.subdominant.frequency}, not 1: {r.reason}"
-    return False, r.reason
+        return False, f"the subdominant eigenvalue is at frequency {r.subdominant.frequency}, not 1: {r.reason}", True
+    return False, r.reason, r.one_simple
+
+
+def _complex_lambda_1(scheme, n: int) -> bool:
+    """``M_1`` has complex eigenvalues at valence ``n``: its discriminant is negative at ``c = cos(pi/n)`` (decided exactly)."""
+    disc = tangent_eigenvalues(scheme).discriminant.subs(cos_jtheta, sp.cos(sp.pi / n))
+    return bool(disc.is_negative)
 
 
 def _header(args, data, certified: bool, why: str) -> str:
@@ -76,9 +83,8 @@ def _finish(args, data, certified: bool, why: str) -> int:
     return 0 if certified else 1
 
 
-def _run_general(args) -> int:
+def _run_general(args, certified: bool, why: str) -> int:
     data = ring_masks(args.scheme, args.n, args.rings, digits=args.digits)
-    certified, why = _subdominance(args)
     if args.json:
         print_json({**data, "lambda_1_subdominant": certified, "subdominance": why})
         return _finish(args, data, certified, why)
@@ -91,27 +97,16 @@ def _run_general(args) -> int:
     return _finish(args, data, certified, why)
 
 
-def _one_is_simple(scheme, n: int) -> bool:
-    """1 is a simple eigenvalue of the frequency-0 block at valence ``n`` (exactly): else no limit position mask."""
-    x = sp.Symbol("x")
-    block = sp.Matrix(one_ring_matrices(scheme)[1]).subs(N, n)
-    p = sp.expand(block.charpoly(x).as_expr())
-    return sp.simplify(sp.diff(p, x).subs(x, 1)) != 0
-
-
 def run(args) -> int:
-    if not _one_is_simple(args.scheme, args.n):
-        print(f"symdecomp masks: at n = {args.n} the eigenvalue 1 of {args.scheme.name} is not simple (a double root of the "
-              "frequency-0 block): no limit position mask is defined, and no tangent masks", file=sys.stderr)
+    certified, why, one_simple = _subdominance(args)
+    if not one_simple:
+        print(f"symdecomp masks: at n = {args.n}, {args.scheme.name}: {why}; no limit position mask is defined, and no "
+              "tangent masks", file=sys.stderr)
         return 1
-    if general_path(args) or closed_form_obstacle(args.scheme):  # no closed forms: the any-scheme route
-        return _run_general(args)
-    try:
-        masks = limit_masks_at(args.scheme, args.n)
-        data = masks.as_json(args.digits)
-    except (TypeError, ValueError, ZeroDivisionError):  # a complex lambda_1: the closed forms are real; the any-scheme route
-        return _run_general(args)
-    certified, why = _subdominance(args)
+    # no closed forms (or real closed forms for a complex lambda_1): the any-scheme route, from Arb balls
+    if general_path(args) or closed_form_obstacle(args.scheme) or _complex_lambda_1(args.scheme, args.n):
+        return _run_general(args, certified, why)
+    data = limit_masks_at(args.scheme, args.n).as_json(args.digits)
     if args.json:
         print_json({**data, "lambda_1_subdominant": certified, "subdominance": why})
         return _finish(args, data, certified, why)

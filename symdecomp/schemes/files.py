@@ -265,8 +265,7 @@ def scheme_to_text(scheme: Scheme) -> str:
         return "{ " + ", ".join(f'"{k}" = "{_text(w)}"' for k, w in pairs) + " }"
 
     v = scheme.vertex_rule
-    weights = [w for rule in scheme.stencils() for w in (rule.center, *(x for _, x in rule.a + rule.b))] + [v.each_a, v.each_b]
-    piecewise = next((w for w in weights if sp.sympify(w, strict=True).has(sp.Piecewise)), None)
+    piecewise = next((w for w in scheme.weights() if sp.sympify(w, strict=True).has(sp.Piecewise)), None)
     if piecewise is not None:  # e.g. Warren's beta (3/16 at n = 3): the file grammar has no cases
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the weight {piecewise} is defined by cases, which a scheme file cannot write")
     lines = [f'name = "{scheme.name}"']
@@ -274,7 +273,6 @@ def scheme_to_text(scheme: Scheme) -> str:
         lines.append(f'mesh = "{scheme.lattice.name}"')
     if scheme.parameters:
         lines.append("parameters = [" + ", ".join(f'"{p}"' for p in scheme.parameters) + "]")
-    v = scheme.vertex_rule
     if not scheme.lattice.face_neighbours:
         rule = scheme.edge_rule
         lines += ["[edge]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", "[vertex]", f'beta = "{_text(v.each_a)}"']

@@ -211,14 +211,7 @@ class Scheme:
                 f"scheme {self.name!r}: a {self.lattice} 1-ring has no face neighbours b_i; give no b weights"
             )
         _to_parameters(self)
-        free = set()
-        for rule in self.stencils():
-            free |= rule.center.free_symbols
-            for _, w in rule.a + rule.b:
-                free |= w.free_symbols
-        for w in (self.vertex_rule.center, self.vertex_rule.each_a, self.vertex_rule.each_b):
-            free |= w.free_symbols
-        free.discard(N)
+        free = {s for w in self.weights() for s in w.free_symbols} - {N}
         declared = set(self.parameters)
         if free - declared:
             object.__setattr__(
@@ -233,6 +226,12 @@ class Scheme:
     def mesh(self) -> str:
         """The lattice's name (``"quad"``, ``"triangle"``), as files, JSON and reports spell it."""
         return self.lattice.name
+
+    def weights(self) -> tuple[sp.Expr, ...]:
+        """Every weight of every rule: the stencils' (centre, ``a``, ``b``), then the vertex rule's."""
+        v = self.vertex_rule
+        return tuple(w for rule in self.stencils() for w in (rule.center, *(x for _, x in rule.a + rule.b))) + (
+            v.center, v.each_a, v.each_b)
 
     def stencils(self) -> tuple[Stencil, ...]:
         """The 1-ring stencils: ``(edge rule, face rule)`` on quads, ``(edge rule,)`` on triangles."""
@@ -283,11 +282,8 @@ def _to_parameters(scheme: Scheme) -> None:
     assumptions it can no longer meet the toolkit's symbols. ``n`` stays the valence, and ``alpha``,
     ``beta`` stay the paper's vertex weights.
     """
-    weights = [w for rule in scheme.stencils() for w in (rule.center, *(x for _, x in rule.a + rule.b))]
-    v = scheme.vertex_rule
-    weights += [v.center, v.each_a, v.each_b, *scheme.parameters]
     own = {N, ALPHA, BETA}
-    stray = {s for w in weights for s in sp.sympify(w, strict=True).free_symbols
+    stray = {s for w in (*scheme.weights(), *scheme.parameters) for s in w.free_symbols
              if s not in own and not isinstance(s, Parameter)}
     if not stray:
         return
@@ -297,6 +293,7 @@ def _to_parameters(scheme: Scheme) -> None:
         return Stencil(rule.center.xreplace(move), tuple((k, w.xreplace(move)) for k, w in rule.a),
                        tuple((k, w.xreplace(move)) for k, w in rule.b))
 
+    v = scheme.vertex_rule
     object.__setattr__(scheme, "edge_rule", stencil(scheme.edge_rule))
     if scheme.face_rule is not None:
         object.__setattr__(scheme, "face_rule", stencil(scheme.face_rule))

@@ -122,6 +122,8 @@ class SpectralResult:
     gap: float | None = None
     #: Upper bound of the largest modulus of the other eigenvalues.
     second: float | None = None
+    #: Whether 1 is a simple eigenvalue of the frequency-0 block (else nothing else was tested).
+    one_simple: bool = True
 
 
 @lru_cache(maxsize=32)
@@ -248,14 +250,17 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
     return [Eigen(r1, 0, 1, root=0, pair=pair), Eigen(r2, 0, 1, root=1, pair=pair)], None
 
 
-def _other_frequencies(scheme: Scheme, n: int) -> tuple[list[Eigen], list[tuple[int, flint.arb]]]:
-    """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``)."""
+def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int, flint.arb]]]:
+    """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``;
+    none with ``outer=False``)."""
+    bounds = outer
     eigen, outer = [], []
     real = _real_at(scheme, n)
     k1, k2 = ring_layout(scheme.lattice).one_ring, ring_layout(scheme.lattice).two_ring
     for j in range(0, n // 2 + 1):
         B = frequency_block(scheme, n, j)
-        outer.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
+        if bounds:
+            outer.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
         if j == 0:
             continue
         mult = 1 if 2 * j == n else 2
@@ -367,10 +372,8 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
         check_applicable(scheme)
     eigen, failure = _frequency_zero(scheme, n)
     if failure:
-        return SpectralResult(n, C1Verdict.NOT_C1, failure)
-    more, outer = _other_frequencies(scheme, n)
-    if one_ring:
-        outer = []
+        return SpectralResult(n, C1Verdict.NOT_C1, failure, one_simple=False)
+    more, outer = _other_frequencies(scheme, n, outer=not one_ring)
     eigen += more
     dom = max(eigen, key=lambda e: abs(e.value).mid())
     top = abs(dom.value)

@@ -61,7 +61,8 @@ def test_evaldata_streams_into_a_fifo_and_leaves_it_a_fifo(tmp_path):
         assert main([*EVALDATA, "--out", str(fifo)]) == 0
         reader.join(60)
         assert stat.S_ISFIFO(os.lstat(fifo).st_mode)
-        assert received and _nmax(received[0]) == 4 and len(received[0]) == 15380
+        layout = 4 + 8 * sum((2 * n + 8) * (1 + (2 * n + 8) + 48) for n in (3, 4))  # Nmax, then per valence
+        assert received and _nmax(received[0]) == 4 and len(received[0]) == layout
     finally:
         if reader.is_alive():
             os.close(os.open(keep, os.O_WRONLY | os.O_NONBLOCK))

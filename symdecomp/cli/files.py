@@ -33,8 +33,7 @@ from pathlib import Path
 
 from symdecomp.errors import InvalidInputError, OutputWriteError
 
-__all__ = ["check_output_directory", "check_output_file", "output_stream", "write_output_file", "replace_owned_files",
-           "atomic_write_text"]
+__all__ = ["check_output_directory", "check_output_file", "output_stream", "write_output_file", "replace_owned_files"]
 
 #: The kinds of existing file written in place (opened and streamed into, never replaced).
 _STREAMED = {stat.S_IFCHR: "a character device", stat.S_IFIFO: "a FIFO"}
@@ -144,11 +143,6 @@ def write_output_file(out, content: bytes | str, option: str = "--out") -> None:
     """Write ``content`` (``str``: UTF-8) to the output file ``out`` (:func:`output_stream`)."""
     with output_stream(out, option) as fh:
         fh.write(content.encode("utf-8") if isinstance(content, str) else content)
-
-
-def atomic_write_text(path: Path, text: str) -> None:
-    """Write ``text`` to the file ``path``, whole or not at all (:func:`write_output_file`)."""
-    write_output_file(path, text, option=os.fspath(path))
 
 
 def replace_owned_files(out: Path, files: dict[str, str], owned: re.Pattern, option: str = "--out") -> list[Path]:

@@ -14,7 +14,7 @@ from __future__ import annotations
 import sys
 
 from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
-from symdecomp.cli.common import Once, add_scheme_option, digits, positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, digits, print_json, progress, valence_range
 from symdecomp.errors import EvalDataFileError
 from symdecomp.output.evaldata import binary_bytes, check_writable, dumps, json_document, write_atomic
 from symdecomp.schemes.lattice import PAPER_LATTICE
@@ -34,8 +34,7 @@ def register(sub) -> None:
     p.add_argument("--out", action=Once, required=True, metavar="FILE", help="output file (written atomically)")
     p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary", help="binary (default) or json")
     p.add_argument("--digits", type=digits(), action=Once, default=20, help="significant digits in the JSON form (default 20)")
-    p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=2,
-                   help="worker processes for the binary file (default 2)")
+    add_pool_options(p, default_jobs=2)  # the binary file's valences; the JSON form is computed in this process
     p.add_argument("--json", action="store_true", help="print a JSON summary")
     add_scheme_option(p)
     p.set_defaults(func=run)
@@ -52,7 +51,7 @@ def run(args) -> int:
     precs = []
     if args.format == "binary":
         rounded = []
-        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs), len(ns), "evaldata", enabled=show):
+        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs, args.executor), len(ns), "evaldata", enabled=show):
             precs.append(prec)
             rounded.append(r)
         content = binary_bytes(rounded)

@@ -186,10 +186,12 @@ def write_atomic(path, content: bytes | str) -> None:
             fh.flush()
             os.fsync(fh.fileno())
         os.replace(tmp, path)
-    except OSError as exc:
+    except BaseException as exc:  # an interruption (SIGTERM, Ctrl-C) too: never leave the temporary file
         if os.path.exists(tmp):
             os.unlink(tmp)
-        raise EvalDataFileError(f"cannot write {path}: {exc.strerror}") from None
+        if isinstance(exc, OSError):
+            raise EvalDataFileError(f"cannot write {path}: {exc.strerror}") from None
+        raise
 
 
 def dumps(document: dict) -> str:

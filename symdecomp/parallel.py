@@ -251,7 +251,8 @@ def _dask_client(spec: Executor, workers: int, opened: list):
     from distributed import Client, LocalCluster
 
     if spec.address is None:
-        opened.append(LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+        # ":0": any free port for its HTTP server (8787, the default, may be another cluster's)
+        opened.append(LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0",
                                    silence_logs=logging.CRITICAL))
         opened.append(Client(opened[-1]))
         return opened[-1]

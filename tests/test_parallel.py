@@ -207,10 +207,13 @@ COMMANDS = {
     "check": ["check", "--n", "3:400", "--certify", "--jobs", "2"],
     "evaldata": ["evaldata", "--n", "3:400", "--out", "cc.dat", "--jobs", "256"],
     "c1": ["c1", "--n", "3:128", "--jobs", "2"],
+    "check on dask": ["check", "--n", "3:400", "--certify", "--jobs", "2", "--executor", "dask"],
 }
 
 
 def _interrupt(command, signum, tmp_path):
+    if "dask" in command:
+        pytest.importorskip("distributed")
     proc, processes = _start_with_pool(COMMANDS[command], tmp_path)
     try:
         sent = time.monotonic()
@@ -241,7 +244,8 @@ def test_an_interrupted_command_stops_at_once_with_its_workers(command, signum, 
 @needs_two_cpus
 @pytest.mark.slow
 @pytest.mark.parametrize("command, signum", [("evaldata", signal.SIGINT), ("check", signal.SIGTERM),
-                                             ("c1", signal.SIGTERM), ("c1", signal.SIGINT)])
+                                             ("c1", signal.SIGTERM), ("c1", signal.SIGINT),
+                                             ("check on dask", signal.SIGTERM), ("check on dask", signal.SIGINT)])
 def test_every_pooled_command_stops_at_once_with_its_workers(command, signum, tmp_path):
     _interrupt(command, signum, tmp_path)
 

@@ -39,6 +39,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 
 from symdecomp.errors import InvalidInputError, InvalidTypeError
+from symdecomp.validate import check_int
 
 __all__ = ["Executor", "parse_executor", "pool_size", "ordered_map", "LOCAL"]
 
@@ -117,6 +118,7 @@ def ordered_map(func: Callable, items: Iterable, *, shared: dict | None = None, 
     first (the results still come in order). An exception of ``func`` is raised here.
     """
     spec = parse_executor(executor)
+    jobs = check_int(jobs, "jobs", minimum=1)
     items, shared = list(items), dict(shared or {})
     if warm_up and items:
         yield func(items[0], **shared)

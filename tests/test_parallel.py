@@ -16,7 +16,7 @@ from symdecomp import catmull_clark
 from symdecomp.analysis.eigendata import rounded_eigendata
 from symdecomp.cli import main
 from symdecomp.cli.check_cmd import check_valences
-from symdecomp.errors import InvalidInputError, InvalidValenceError
+from symdecomp.errors import InvalidInputError, InvalidValenceError, SymdecompError
 from symdecomp.output import evaldata as evaldata_file
 from symdecomp.parallel import Executor, ordered_map, parse_executor, pool_size
 
@@ -49,6 +49,9 @@ def test_pool_is_never_larger_than_the_work_the_jobs_or_the_cpus():
     assert pool_size(256, 100) == min(100, CPUS)
     assert pool_size(1, 100) == 1
     assert pool_size(3, 0) == 1
+    for jobs in (0, "2", 2.0, True):
+        with pytest.raises(SymdecompError, match="jobs"):
+            list(ordered_map(_shift, [1], shared={"offset": 0}, jobs=jobs))
 
 
 @needs_two_cpus

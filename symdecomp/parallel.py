@@ -114,13 +114,13 @@ def ordered_map(func: Callable, items: Iterable, *, shared: dict | None = None, 
 
     ``func`` is a module-level function (workers find it by name); ``shared`` its keyword
     arguments common to all items; ``warm_up``: compute the first item in this process before
-    the workers start (they inherit what it cached); ``cost(item)``: hand out the costliest items
+    the local workers fork (they inherit what it cached); ``cost(item)``: hand out the costliest items
     first (the results still come in order). An exception of ``func`` is raised here.
     """
     spec = parse_executor(executor)
     jobs = check_int(jobs, "jobs", minimum=1)
     items, shared = list(items), dict(shared or {})
-    if warm_up and items:
+    if warm_up and items and spec.kind == "local":
         yield func(items[0], **shared)
         items = items[1:]
     order = sorted(range(len(items)), key=lambda i: -cost(items[i])) if cost else list(range(len(items)))

@@ -161,6 +161,15 @@ def test_check_certify_on_a_dask_local_cluster_gives_the_local_rows():
     assert [r["n"] for r in rows["dask"]] == list(range(3, 13)) and rows["dask"] == rows["local"]
 
 
+@pytest.mark.slow
+def test_an_unreachable_scheduler_is_one_line_exit_2(capsys):
+    pytest.importorskip("distributed")
+    assert main(["check", "--n", "3:4", "--certify", "--executor", "dask=tcp://127.0.0.1:1"]) == 2
+    captured = capsys.readouterr()
+    assert captured.err.count("\n") == 1 and "cannot reach the scheduler" in captured.err
+    assert "agree" not in captured.out  # nothing was computed before the connection failed
+
+
 # --- signals: run the command in its own process group (as a shell does), watch its processes in /proc ---
 
 

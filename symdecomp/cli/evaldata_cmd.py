@@ -14,7 +14,7 @@ from __future__ import annotations
 import sys
 
 from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
-from symdecomp.cli.common import Once, add_scheme_option, digits, positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, digits, print_json, progress, valence_range
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import EvalDataFileError
 from symdecomp.output.evaldata import binary_bytes, dumps, json_document
@@ -37,8 +37,7 @@ def register(sub) -> None:
                    "FIFO is written in place; a symbolic link is followed)")
     p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary", help="binary (default) or json")
     p.add_argument("--digits", type=digits(), action=Once, default=20, help="significant digits in the JSON form (default 20)")
-    p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=2,
-                   help="worker processes for the binary file (default 2)")
+    add_pool_options(p, default_jobs=2)  # the binary file's valences; the JSON form is computed in this process
     p.add_argument("--json", action="store_true", help="print a JSON summary")
     add_scheme_option(p)
     p.set_defaults(func=run)
@@ -55,7 +54,7 @@ def run(args) -> int:
     precs = []
     if args.format == "binary":
         rounded = []
-        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs), len(ns), "evaldata", enabled=show):
+        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs, args.executor), len(ns), "evaldata", enabled=show):
             precs.append(prec)
             rounded.append(r)
         content = binary_bytes(rounded)

@@ -175,15 +175,15 @@ def _local_map(func, items, shared, workers, order):
                                initializer=_worker_init, initargs=(os.getpid(), reaper.pid))
     finished = False
     try:
-        futures = [None] * len(items)
-        for i in order:  # the workers fork at the first submit, with _JOBS[token] in place
-            futures[i] = pool.submit(_call, token, items[i])
-        for future in futures:
-            try:
+        try:  # a worker that dies early breaks the pool while the work is still being submitted
+            futures = [None] * len(items)
+            for i in order:  # the workers fork at the first submit, with _JOBS[token] in place
+                futures[i] = pool.submit(_call, token, items[i])
+            for future in futures:
                 yield future.result()
-            except BrokenProcessPool:
-                raise ChildProcessError("a worker process died (killed by the system: out of memory?); "
-                                        "try a smaller --jobs or range") from None
+        except BrokenProcessPool:
+            raise ChildProcessError("a worker process died (killed by the system: out of memory?); "
+                                    "try a smaller --jobs or range") from None
         finished = True
     finally:
         if not finished:  # interrupted, an error, or the caller stopped early: kill the workers now

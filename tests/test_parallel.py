@@ -14,10 +14,10 @@ import pytest
 
 from symdecomp import catmull_clark
 from symdecomp.analysis.eigendata import rounded_eigendata
+from symdecomp.cli import files as output_files
 from symdecomp.cli import main
 from symdecomp.cli.check_cmd import check_valences
 from symdecomp.errors import InvalidInputError, InvalidValenceError, SymdecompError
-from symdecomp.output import evaldata as evaldata_file
 from symdecomp.parallel import Executor, ordered_map, parse_executor, pool_size
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -90,9 +90,9 @@ def test_an_interrupted_evaldata_write_leaves_no_temporary_file(tmp_path, monkey
     def interrupted(fd):
         raise KeyboardInterrupt  # what SIGTERM or Ctrl-C raise in the command
 
-    monkeypatch.setattr(evaldata_file.os, "fsync", interrupted)
+    monkeypatch.setattr(output_files.os, "fsync", interrupted)
     with pytest.raises(KeyboardInterrupt):
-        evaldata_file.write_atomic(tmp_path / "cc.dat", b"x" * 100_000)
+        output_files.write_output_file(tmp_path / "cc.dat", b"x" * 100_000)
     assert list(tmp_path.iterdir()) == []
 
 

@@ -49,7 +49,7 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
-from symdecomp.analysis.characteristic import check_applicable, frequency_block, ring_layout
+from symdecomp.analysis.characteristic import check_applicable, frequency_block, outer_radius, ring_layout
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
@@ -135,9 +135,15 @@ def _symbolic_charpoly(scheme: Scheme) -> tuple[sp.Expr, ...]:
     return (sp.expand(-M.trace()), sp.expand(M.det()))
 
 
+@lru_cache(maxsize=32)
+def _asymmetry(scheme: Scheme) -> tuple[sp.Expr, ...]:
+    """``c_i(omega) - c_i(1/omega)`` for the coefficients of :func:`_symbolic_charpoly`, expanded once per scheme."""
+    return tuple(sp.expand(e - e.subs(OMEGA, 1 / OMEGA)) for e in _symbolic_charpoly(scheme))
+
+
 def _real_at(scheme: Scheme, n: int) -> bool:
     """Whether ``M_j``'s characteristic polynomial is real for every ``j`` (symmetric Laurent polynomials in omega)."""
-    return all(sp.expand((e - e.subs(OMEGA, 1 / OMEGA)).subs(N, n)) == 0 for e in _symbolic_charpoly(scheme))
+    return all(e == 0 or sp.expand(e.subs(N, n)) == 0 for e in _asymmetry(scheme))
 
 
 def _quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
@@ -250,17 +256,24 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
     return [Eigen(r1, 0, 1, root=0, pair=pair), Eigen(r2, 0, 1, root=1, pair=pair)], None
 
 
-def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int, flint.arb]]]:
+def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int | None, flint.arb]]]:
     """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``;
-    none with ``outer=False``)."""
-    bounds = outer
-    eigen, outer = [], []
-    real = _real_at(scheme, n)
+    none with ``outer=False``).
+
+    The outer bound is one entry ``(None, radius)`` for every frequency when the outer block has the
+    same eigenvalues at every frequency
+    (:func:`~symdecomp.analysis.characteristic.outer_radius`), so only the 1-ring rows of each
+    ``B_j`` are built; otherwise ``(j, ||S_j^k||^{1/k})`` per frequency (:func:`_outer_bound`).
+    """
     k1, k2 = ring_layout(scheme.lattice).one_ring, ring_layout(scheme.lattice).two_ring
+    radius = outer_radius(scheme.lattice) if outer else None
+    per_frequency = outer and radius is None
+    eigen, bounds = [], ([] if radius is None else [(None, radius)])
+    real = _real_at(scheme, n)
     for j in range(0, n // 2 + 1):
-        B = frequency_block(scheme, n, j)
-        if bounds:
-            outer.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
+        B = frequency_block(scheme, n, j, rows=None if per_frequency else k1)
+        if per_frequency:
+            bounds.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
         if j == 0:
             continue
         mult = 1 if 2 * j == n else 2
@@ -275,7 +288,7 @@ def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[l
         r1, r2 = _quadratic_roots(t, d)
         pair = real and disc.real < 0  # real trace and determinant: the roots are conjugate
         eigen += [Eigen(r1, j, mult, root=0, pair=pair), Eigen(r2, j, mult, root=1, pair=pair)]
-    return eigen, outer
+    return eigen, bounds
 
 
 def _exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | None:
@@ -385,10 +398,7 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
         )
     for j, bound in outer:
         if not bound < top:
-            return SpectralResult(
-                n, C1Verdict.UNDECIDED, f"the outer eigenvalues at frequency {j} are bounded only by {ball_text(bound)}, "
-                f"not below |lambda| = {ball_text(top)}",
-            )
+            return _outer_failure(j, bound, top, n)
     if not top < 1:
         return SpectralResult(
             # Arb's ``>=`` holds only when every point of the ball is >= 1 (an exact -1 at frequency 0 is)
@@ -408,6 +418,21 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
     if dom.frequency == 0 or 2 * dom.frequency == n:
         return SpectralResult(n, C1Verdict.NOT_C1, _symmetric_failure(eigen, dom, n), dom, gap, float(second.upper()))
     return _real_subdominant(scheme, n, dom, gap, float(second.upper()))
+
+
+def _outer_failure(j: int | None, bound: flint.arb, top: flint.arb, n: int) -> SpectralResult:
+    """The verdict when an outer block's eigenvalues are not certainly below ``|lambda|`` (``j = None``: every frequency)."""
+    if j is None and bound > top:  # exact outer eigenvalues, the same at all n frequencies: that modulus n times
+        return SpectralResult(
+            n, C1Verdict.NOT_C1, f"the regular rules' outer blocks have an eigenvalue of modulus {ball_text(bound)} at every "
+            f"frequency (multiplicity at least {n}), above every 1-ring eigenvalue after 1 (|lambda| = {ball_text(top)}): "
+            "the subdominant eigenvalue does not have multiplicity 2",
+        )
+    where = "every frequency" if j is None else f"frequency {j}"
+    return SpectralResult(
+        n, C1Verdict.UNDECIDED, f"the outer eigenvalues at {where} are bounded only by {ball_text(bound)}, "
+        f"not below |lambda| = {ball_text(top)}",
+    )
 
 
 def _tie_failure(dom: Eigen, ties: dict, n: int) -> str | None:

@@ -76,6 +76,7 @@ __all__ = [
     "outer_radius",
     "check_applicable",
     "frequency_block",
+    "frequency_blocks",
     "omega_ball",
     "FrequencyEigenvector",
     "frequency_eigenvector",
@@ -257,14 +258,43 @@ def one_ring_rows(scheme: Scheme, n: int) -> list[dict]:
     return rows
 
 
-@lru_cache(maxsize=8)
 def _exact_rows(scheme: Scheme, n: int) -> tuple[tuple[tuple[int, int, flint.fmpq], ...], ...]:
-    """:func:`one_ring_rows` as exact FLINT rationals ``((offset, class, weight), ...)`` per row, once per valence.
-
-    :func:`frequency_block` is called for every frequency of a valence; the rules at ``n`` are the
-    same for all of them, so sympy substitutes ``n`` once, not ``n / 2`` times.
-    """
+    """:func:`one_ring_rows` as exact FLINT rationals ``((offset, class, weight), ...)`` per row."""
     return tuple(tuple((d, m, _rational(w)) for (d, m), w in weights.items()) for weights in one_ring_rows(scheme, n))
+
+
+def frequency_blocks(scheme: Scheme, n: int):
+    """``j, rows -> B_j``: :func:`frequency_block` for every frequency of one valence, the rules at ``n`` read once.
+
+    The C1 test builds ``B_j`` for ``n / 2 + 1`` frequencies; sympy substitutes ``n`` into the
+    rules once per valence (not once per frequency), and each block computes only the powers
+    ``omega^(j d)`` of the stencils' offsets ``d`` (a few, not ``n``).
+    """
+    n = check_valence(n)
+    layout = ring_layout(scheme.lattice)
+    exact = _exact_rows(scheme, n)
+
+    def block(j: int, rows: int | None = None) -> flint.acb_mat:
+        rows = layout.two_ring if rows is None else rows
+        powers: dict[int, flint.acb] = {}
+
+        def power(d: int) -> flint.acb:
+            k = j * d % n
+            if k not in powers:
+                powers[k] = omega_ball(n, k)
+            return powers[k]
+
+        B = flint.acb_mat(rows, layout.two_ring)
+        for r, weights in enumerate(exact[:rows]):
+            for d, m, w in weights:
+                B[r, m] += w * power(d)
+        for r in range(layout.one_ring, rows):
+            for q, terms in enumerate(layout.offsets[r]):
+                for l, w in terms:
+                    B[r, q] += w * power(l)
+        return B
+
+    return block
 
 
 def frequency_block(scheme: Scheme, n: int, j: int, *, rows: int | None = None) -> flint.acb_mat:
@@ -272,29 +302,10 @@ def frequency_block(scheme: Scheme, n: int, j: int, *, rows: int | None = None) 
 
     ``rows = None`` gives the square 2-ring block (``M_j`` upper left, ``S_j`` lower right);
     ``rows = len(layout.labels)`` also the new ring 3, which the sub-patches need. The ``O``
-    column is left out: for ``j != 0`` ``O`` is 0 in every eigenvector. Only the powers
-    ``omega^(j d)`` of the stencils' offsets ``d`` are computed (a few per block, not ``n``).
+    column is left out: for ``j != 0`` ``O`` is 0 in every eigenvector. Many frequencies of one
+    valence: :func:`frequency_blocks`.
     """
-    n = check_valence(n)
-    layout = ring_layout(scheme.lattice)
-    rows = layout.two_ring if rows is None else rows
-    powers: dict[int, flint.acb] = {}
-
-    def power(d: int) -> flint.acb:
-        k = j * d % n
-        if k not in powers:
-            powers[k] = omega_ball(n, k)
-        return powers[k]
-
-    B = flint.acb_mat(rows, layout.two_ring)
-    for r, weights in enumerate(_exact_rows(scheme, n)):
-        for d, m, w in weights:
-            B[r, m] += w * power(d)
-    for r in range(layout.one_ring, rows):
-        for q, terms in enumerate(layout.offsets[r]):
-            for l, w in terms:
-                B[r, q] += w * power(l)
-    return B
+    return frequency_blocks(scheme, n)(j, rows)
 
 
 @dataclass(frozen=True)

@@ -49,7 +49,7 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
-from symdecomp.analysis.characteristic import check_applicable, frequency_block, outer_radius, ring_layout
+from symdecomp.analysis.characteristic import check_applicable, frequency_block, frequency_blocks, outer_radius, ring_layout
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
@@ -269,9 +269,9 @@ def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[l
     radius = outer_radius(scheme.lattice) if outer else None
     per_frequency = outer and radius is None
     eigen, bounds = [], ([] if radius is None else [(None, radius)])
-    real = _real_at(scheme, n)
+    real, blocks = _real_at(scheme, n), frequency_blocks(scheme, n)
     for j in range(0, n // 2 + 1):
-        B = frequency_block(scheme, n, j, rows=None if per_frequency else k1)
+        B = blocks(j, None if per_frequency else k1)
         if per_frequency:
             bounds.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
         if j == 0:

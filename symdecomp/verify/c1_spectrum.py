@@ -13,8 +13,13 @@ spectra of ``B_j``; each ``B_j`` is block lower triangular, so that is the union
 of the 1-ring blocks (:func:`~symdecomp.analysis.frequency.one_ring_matrices`: at ``j = 0`` the
 Eq. 43 matrix, ``3 x 3`` on quads and ``2 x 2`` on triangles; otherwise ``M_j``, ``2 x 2`` or
 ``1 x 1``) and of the outer blocks ``S_j`` (the regular rules). The eigenvalues of ``M_j`` (and
-those of ``M_{n-j} = conj(M_j)``) are enclosed from its characteristic polynomial; those of
-``S_j`` are bounded by ``||S_j^k||_inf^{1/k}`` (``k = 1, 2, 4``). If ``lambda`` is a simple root of
+those of ``M_{n-j} = conj(M_j)``) are enclosed from its characteristic polynomial. ``S_j`` holds
+only the regular rules, and its characteristic polynomial is the same at every frequency of every
+valence (:func:`~symdecomp.analysis.characteristic.outer_charpoly`, expanded once in symbolic
+``omega``): its exact roots (Catmull-Clark ``1/8 .. 1/64``, Loop ``1/8, 1/16``) are the outer
+eigenvalues everywhere, so a valence costs ``n / 2`` blocks of size 2 or 1 (linear in ``n``).
+Were it not the same, each ``S_j`` would be bounded by ``||S_j^k||_inf^{1/k}`` (``k = 1, 2, 4``;
+the tests keep that route as a check). If ``lambda`` is a simple root of
 ``M_j`` for some ``0 < j < n/2`` and strictly dominates everything else, it has algebraic and
 geometric multiplicity 2 (one eigenvector at ``j``, one at ``n - j``: the *conjugate-frequency
 copy*, the same eigenvalue, which is why it is never compared with itself). ``lambda`` is real

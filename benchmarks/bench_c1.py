@@ -7,8 +7,8 @@ start-up of about 1.5 s and without worker processes), so one core; the seconds 
 The baseline is the old route, run in the same process on the same range: each frequency block
 computed ``n`` powers of omega and substituted ``n`` into the rules again (a copy of the old
 ``frequency_block`` below), and each of the ``n/2 + 1`` outer blocks was bounded by matrix norms
-(:func:`symdecomp.verify.c1_spectrum._outer_bound`, still there for a block polynomial that depends
-on omega). The old route here shares what this change does once per scheme (the applicability
+(:func:`symdecomp.analysis.characteristic.outer_bounds`, still there for a block polynomial that
+depends on omega, and for the reported gap at small n). The old route here shares what this change does once per scheme (the applicability
 check, the symmetry of M_j's polynomial, Loop's box-spline weights), so the ratio understates
 the change a little. Both routes must give the same verdicts and lambdas; the script says so.
 

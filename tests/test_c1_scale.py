@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.characteristic import frequency_block, outer_charpoly, outer_radius, ring_layout
+from symdecomp.analysis.characteristic import frequency_block, outer_charpoly, outer_radius, outer_row_sum, ring_layout
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.cli import main
 from symdecomp.schemes.loop import loop
@@ -93,29 +93,35 @@ CASES = [
 
 @pytest.mark.parametrize("scheme, valences", CASES, ids=["catmull-clark", "loop", "tuned-5", "tuned-6"])
 def test_the_exact_outer_route_agrees_with_the_norm_bounds(scheme, valences, monkeypatch):
-    """Verdict, lambda, frequency, depth, winding and Jacobian bound are the same; the gap can only grow.
-
-    The gap is |lambda| minus the largest other modulus; the exact outer modulus 1/8 is below every
-    norm bound, so where a bound was that largest modulus (Loop at n = 3: 0.1025) the gap is now exact.
-    """
+    """Verdict, lambda, frequency, gap, depth, winding and Jacobian bound are the same on both routes."""
     new = {n: c1_test(scheme, n) for n in valences}
     _norm_route(monkeypatch)
     for n in valences:
         old = c1_test(scheme, n)
         a, b = new[n].as_json(), old.as_json()
-        for key in ("verdict", "lambda", "frequency", "subdivision_depth", "winding_number", "jacobian_sign", "jacobian_lower_bound"):
+        for key in ("verdict", "lambda", "frequency", "gap", "subdivision_depth", "winding_number", "jacobian_sign",
+                    "jacobian_lower_bound"):
             assert a[key] == b[key], (n, key, a[key], b[key])
-        assert a["verdict"] == "c1"
-        assert a["gap"] >= b["gap"] and new[n].spectral.second <= old.spectral.second
+        assert a["verdict"] == "c1" and new[n].spectral.second == old.spectral.second
         bounds = c1_spectrum._other_frequencies(scheme, n)[1]
-        assert len(bounds) == n // 2 + 1 and all(1 / 8 <= float(bound.upper()) for _, bound in bounds)
+        assert [j for j, _ in bounds] == list(range(n // 2 + 1))
+        assert all(1 / 8 <= float(b.upper()) <= float(outer_row_sum(scheme.lattice)) + 1e-15 for _, b in bounds)
 
 
-def test_loop_gap_at_3_is_lambda_minus_the_outer_eigenvalue():
-    """n = 3: lambda = 1/4, the other 1-ring eigenvalue is 1/16, the outer ones 1/8 and 1/16: the gap is 1/8 exactly."""
-    r = c1_test(loop(), 3)
-    assert (r.spectral.subdominant.value - flint.fmpq(1, 4)).contains(0)
-    assert 0.125 - 1e-15 < r.spectral.gap <= 0.125 and 0.125 <= r.spectral.second < 0.125 + 1e-15
+@pytest.mark.parametrize("scheme", [catmull_clark(), loop()], ids=["catmull-clark", "loop"])
+def test_large_valences_compute_no_norm_bound(scheme, monkeypatch):
+    """At n = 64 a 1-ring eigenvalue after lambda exceeds the outer row sum (CC 15/64, Loop 3/16), which bounds every norm
+    bound: the gap is the same without them, so none is computed (the per-frequency route would cost n/2 + 1 blocks)."""
+    assert outer_row_sum(scheme.lattice) == (flint.fmpq(15, 64) if scheme.lattice.name == "quad" else flint.fmpq(3, 16))
+    expected = c1_test(scheme, 64).as_json()
+
+    def refuse(*args):
+        raise AssertionError("outer_bounds called")
+
+    monkeypatch.setattr(c1_spectrum, "outer_bounds", refuse)
+    assert c1_test(scheme, 64).as_json() == expected
+    with pytest.raises(AssertionError, match="outer_bounds called"):
+        c1_test(scheme, 3)  # at n = 3 the gap is measured against a norm bound (Loop: 1/4 - 0.1475 = 0.1025)
 
 
 def _small_scheme():

@@ -74,6 +74,9 @@ __all__ = [
     "ring_layout",
     "outer_charpoly",
     "outer_radius",
+    "outer_norm_bound",
+    "outer_bounds",
+    "outer_row_sum",
     "check_applicable",
     "frequency_block",
     "frequency_blocks",
@@ -179,6 +182,39 @@ def outer_radius(mesh: Lattice | str) -> flint.arb | None:
         return None
     roots = flint.fmpq_poly(list(reversed(coeffs))).complex_roots()
     return max((abs(r) for r, _ in roots), key=lambda x: x.upper())
+
+
+def outer_norm_bound(S: flint.acb_mat) -> flint.arb:
+    """``min_k ||S^k||_inf^{1/k}`` for ``k = 1, 2, 4``: an upper bound of the spectral radius of ``S``."""
+    best, power = None, S
+    for k in (1, 2, 4):
+        if k > 1:
+            power = power * power
+        norm = max(sum((abs(power[r, c]) for c in range(power.ncols())), flint.arb(0)) for r in range(power.nrows()))
+        bound = norm if k == 1 else norm.root(k)
+        best = bound if best is None or bound.upper() < best.upper() else best
+    return best
+
+
+def outer_bounds(scheme: Scheme, n: int) -> list[tuple[int, flint.arb]]:
+    """``(j, bound)`` for ``0 <= j <= n/2``: :func:`outer_norm_bound` of each outer block ``S_j`` (the per-frequency route)."""
+    layout = ring_layout(scheme.lattice)
+    k1, k2 = layout.one_ring, layout.two_ring
+    blocks = frequency_blocks(scheme, n)
+    out = []
+    for j in range(n // 2 + 1):
+        B = blocks(j)
+        out.append((j, outer_norm_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
+    return out
+
+
+@lru_cache(maxsize=4)
+def outer_row_sum(mesh: Lattice | str) -> flint.fmpq:
+    """The largest row sum of ``|weights|`` of the outer block: ``||S(omega)||_inf`` for every ``|omega| = 1`` is at most this,
+    so every :func:`outer_norm_bound` is (up to rounding)."""
+    layout = ring_layout(mesh)
+    k1, k2 = layout.one_ring, layout.two_ring
+    return max(sum((abs(w) for q in range(k1, k2) for _, w in layout.offsets[r][q]), flint.fmpq(0)) for r in range(k1, k2))
 
 
 def _display_name(name: str) -> str:

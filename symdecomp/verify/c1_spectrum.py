@@ -19,7 +19,8 @@ valence (:func:`~symdecomp.analysis.characteristic.outer_charpoly`, expanded onc
 ``omega``): its exact roots (Catmull-Clark ``1/8 .. 1/64``, Loop ``1/8, 1/16``) are the outer
 eigenvalues everywhere, so a valence costs ``n / 2`` blocks of size 2 or 1 (linear in ``n``).
 Were it not the same, each ``S_j`` would be bounded by ``||S_j^k||_inf^{1/k}`` (``k = 1, 2, 4``;
-the tests keep that route as a check). If ``lambda`` is a simple root of
+the tests keep that route as a check); the reported gap still uses those bounds where one may be
+the largest other modulus (small ``n``). If ``lambda`` is a simple root of
 ``M_j`` for some ``0 < j < n/2`` and strictly dominates everything else, it has algebraic and
 geometric multiplicity 2 (one eigenvector at ``j``, one at ``n - j``: the *conjugate-frequency
 copy*, the same eigenvalue, which is why it is never compared with itself). ``lambda`` is real
@@ -54,7 +55,15 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
-from symdecomp.analysis.characteristic import check_applicable, frequency_block, frequency_blocks, outer_radius, ring_layout
+from symdecomp.analysis.characteristic import (
+    check_applicable,
+    frequency_block,
+    frequency_blocks,
+    outer_bounds,
+    outer_radius,
+    outer_row_sum,
+    ring_layout,
+)
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
@@ -166,18 +175,6 @@ def _quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
     return (a, b) if abs(a).mid() >= abs(b).mid() else (b, a)
 
 
-def _outer_bound(S: flint.acb_mat) -> flint.arb:
-    """``min_k ||S^k||_inf^{1/k}`` for ``k = 1, 2, 4``: an upper bound of the spectral radius."""
-    best, power = None, S
-    for k in (1, 2, 4):
-        if k > 1:
-            power = power * power
-        norm = max(sum((abs(power[r, c]) for c in range(power.ncols())), flint.arb(0)) for r in range(power.nrows()))
-        bound = norm if k == 1 else norm.root(k)
-        best = bound if best is None or bound.upper() < best.upper() else best
-    return best
-
-
 def _field(n: int) -> CyclotomicField:
     """``Q(zeta_2n)`` (``= Q(zeta_n)`` for odd ``n``): holds ``omega_n^j`` and ``cos(2 pi k/n)``."""
     return CyclotomicField(2 * n)
@@ -262,25 +259,18 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
 
 
 def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int | None, flint.arb]]]:
-    """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``;
-    none with ``outer=False``).
+    """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (none with ``outer=False``).
 
     The outer bound is one entry ``(None, radius)`` for every frequency when the outer block has the
-    same eigenvalues at every frequency
-    (:func:`~symdecomp.analysis.characteristic.outer_radius`), so only the 1-ring rows of each
-    ``B_j`` are built; otherwise ``(j, ||S_j^k||^{1/k})`` per frequency (:func:`_outer_bound`).
+    same eigenvalues at every frequency (:func:`~symdecomp.analysis.characteristic.outer_radius`), so
+    only the 1-ring rows of each ``B_j`` are built; otherwise ``(j, ||S_j^k||^{1/k})`` for
+    ``0 <= j <= n/2`` (:func:`~symdecomp.analysis.characteristic.outer_bounds`).
     """
-    k1, k2 = ring_layout(scheme.lattice).one_ring, ring_layout(scheme.lattice).two_ring
-    radius = outer_radius(scheme.lattice) if outer else None
-    per_frequency = outer and radius is None
-    eigen, bounds = [], ([] if radius is None else [(None, radius)])
+    k1 = ring_layout(scheme.lattice).one_ring
+    eigen = []
     real, blocks = _real_at(scheme, n), frequency_blocks(scheme, n)
-    for j in range(0, n // 2 + 1):
-        B = blocks(j, None if per_frequency else k1)
-        if per_frequency:
-            bounds.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
-        if j == 0:
-            continue
+    for j in range(1, n // 2 + 1):
+        B = blocks(j, k1)
         mult = 1 if 2 * j == n else 2
         if k1 == 1:
             eigen.append(Eigen(B[0, 0], j, mult))
@@ -293,7 +283,25 @@ def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[l
         r1, r2 = _quadratic_roots(t, d)
         pair = real and disc.real < 0  # real trace and determinant: the roots are conjugate
         eigen += [Eigen(r1, j, mult, root=0, pair=pair), Eigen(r2, j, mult, root=1, pair=pair)]
-    return eigen, bounds
+    if not outer:
+        return eigen, []
+    radius = outer_radius(scheme.lattice)
+    return eigen, (outer_bounds(scheme, n) if radius is None else [(None, radius)])
+
+
+def _gap_bounds(scheme: Scheme, n: int, outer: list, others: list[Eigen]) -> list[flint.arb]:
+    """The outer bounds the reported gap is measured against: the per-frequency norm bounds, as the gap has always been.
+
+    With the exact outer eigenvalues (``(None, radius)``) the norm bounds are computed only where
+    one of them may exceed every other 1-ring eigenvalue: not when an eigenvalue lies above
+    :func:`~symdecomp.analysis.characteristic.outer_row_sum`, which bounds them all (large ``n``).
+    """
+    if not outer or any(j is not None for j, _ in outer):
+        return [b for _, b in outer]
+    top = max((abs(e.value).lower() for e in others), key=float, default=None)
+    if top is not None and top > outer_row_sum(scheme.lattice) * (1 + flint.arb(2) ** -30):
+        return []
+    return [b for _, b in outer_bounds(scheme, n)]
 
 
 def _exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | None:
@@ -413,7 +421,7 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
     failure = _tie_failure(dom, ties, n)
     if failure:
         return SpectralResult(n, C1Verdict.NOT_C1, failure, dom)
-    second = max([abs(e.value) for e in others] + [b for _, b in outer], key=lambda x: x.upper())
+    second = max([abs(e.value) for e in others] + _gap_bounds(scheme, n, outer, others), key=lambda x: x.upper())
     gap = float_down((top - second).lower())
     if dom.pair:
         return SpectralResult(

@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from typing import NamedTuple
 
-from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, flag, integer, print_json, progress, valence_range
+from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, integer, print_json, progress, valence_range
 from symdecomp.parallel import ordered_map
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.c1 import c1_test
@@ -34,7 +34,7 @@ def register(sub) -> None:
         "'undecided' with what would decide it. Exit status 1 unless every valence is certified C1.",
     )
     p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, required=True, metavar="A:B",
-                   help="valences to test: an inclusive range A:B or a single N (at most 128)")
+                   help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]})")
     p.add_argument("--depth", type=_depth, action=Once, default=6,
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "
                    "in four, or a triangle twice by bisection)")

@@ -236,13 +236,13 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
 
 def _round_all(data: PatchEigenData, p: PatchMatrices | None = None) -> RoundedEigenData | None:
     """Every entry correctly rounded, or None. With ``p``, entries that do not round are first
-    sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`) and rounded again."""
+    sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`, then
+    :func:`_replace_columns`) and rounded again; ``data`` then holds the sharper balls."""
     size, width = data.size, data.phi[0].ncols()
-    with flint.ctx.workprec(128):  # ``+x`` rounds a ball to 128 bits (still containing it): cheaper to inspect
-        values = [round_ball(+v) for v in data.values]
-        inverse = [round_ball(+x) for x in data.inverse.entries()]
-        phi = [round_ball(+x) for t in data.phi for x in t.entries()]
-        jordan = tuple((i, c, round_ball(+g)) for i, c, g in data.jordan)
+    values = [round_ball(v) for v in data.values]
+    inverse = [round_ball(x) for x in data.inverse.entries()]
+    phi = [round_ball(x) for t in data.phi for x in t.entries()]
+    jordan = tuple((i, c, round_ball(g)) for i, c, g in data.jordan)
     if None in values or any(g is None for _, _, g in jordan):
         return None
     bad_inverse = [divmod(q, size) for q, x in enumerate(inverse) if x is None]
@@ -250,16 +250,63 @@ def _round_all(data: PatchEigenData, p: PatchMatrices | None = None) -> RoundedE
     if (bad_inverse or bad_phi) and p is not None:
         _sharpen_lower_block(p, data, bad_inverse)
         _sharpen_subpatch_zeros(p, data, bad_phi)
-        with flint.ctx.workprec(128):
-            for i, j in bad_inverse:
-                inverse[i * size + j] = round_ball(+data.inverse[i, j])
-            for k, i, l in bad_phi:
-                phi[(k * size + i) * width + l] = round_ball(+data.phi[k][i, l])
+        bad_inverse, bad_phi = _reround(data, inverse, phi, bad_inverse, bad_phi)
+        if (bad_inverse or bad_phi) and _replace_columns(p, data, bad_inverse, bad_phi):
+            rows = {i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi}
+            _reround(data, inverse, phi, [(i, j) for i in rows for j in range(size)],
+                     [(k, i, l) for k in range(3) for i in rows for l in range(width)])
     if None in inverse or None in phi:
         return None
     return RoundedEigenData(
         data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, width), jordan
     )
+
+
+def _reround(data: PatchEigenData, inverse: list, phi: list, bad_inverse, bad_phi) -> tuple[list, list]:
+    """Round the listed entries of ``data`` again into the flat lists; return those that still do not round."""
+    size, width = data.size, data.phi[0].ncols()
+    for i, j in bad_inverse:
+        inverse[i * size + j] = round_ball(data.inverse[i, j])
+    for k, i, l in bad_phi:
+        phi[(k * size + i) * width + l] = round_ball(data.phi[k][i, l])
+    return ([(i, j) for i, j in bad_inverse if inverse[i * size + j] is None],
+            [(k, i, l) for k, i, l in bad_phi if phi[(k * size + i) * width + l] is None])
+
+
+#: The precision of :func:`_replace_columns`: a ball around an exact 0 rounds (to 0.0) only
+#: inside ``(-2^-1075, 2^-1075)``.
+ZERO_PREC = 1200
+
+
+def _replace_columns(p: PatchMatrices, data: PatchEigenData, bad_inverse, bad_phi) -> bool:
+    """Replace, in ``data``, the eigenvectors whose entries do not round by the same ones at :data:`ZERO_PREC` bits.
+
+    The patch's eigen-data is computed once more at ``ZERO_PREC`` bits (a single valence's
+    arithmetic: cheap next to rounding every entry) and, for each eigenvector ``i`` with an
+    entry that did not round, column ``i`` of ``V``, row ``i`` of ``V^-1`` and row ``i`` of the
+    three sub-patch tables are taken from it together. That keeps ``V^-1 A V`` diagonal: an
+    eigenvector scaled otherwise comes with its left eigenvector scaled inversely, and the other
+    columns do not change (the entries of ``V^-1``'s rows beyond the 1-ring are sums of
+    ``u_c l_c`` products, independent of the scaling). False, and ``data`` unchanged, when
+    ``A`` has Jordan pairs (their ``gamma`` depends on the scaling) or the precision does not
+    suffice; the caller then recomputes everything.
+    """
+    if data.jordan:
+        return False
+    try:
+        with flint.ctx.workprec(ZERO_PREC):
+            hi = _eigendata(p, ZERO_PREC)
+    except _NeedPrecision:
+        return False
+    size = data.size
+    for i in sorted({i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi}):
+        for j in range(size):
+            data.inverse[i, j] = hi.inverse[i, j]
+            data.vectors[j, i] = hi.vectors[j, i]
+        for k in range(3):
+            for l in range(data.phi[k].ncols()):
+                data.phi[k][i, l] = hi.phi[k][i, l]
+    return True
 
 
 def _sharpen_lower_block(p: PatchMatrices, data: PatchEigenData, entries) -> None:

@@ -50,7 +50,7 @@ from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, circulant_w
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_memory, check_valence
 
 __all__ = [
     "NotDiagonalizableError",  # from symdecomp.algebra.small_eigen
@@ -61,6 +61,9 @@ __all__ = [
     "certified_eigendata",
     "rounded_eigendata",
     "round_ball",
+    "eigendata_cost",
+    "check_eigendata_cost",
+    "ZERO_PREC",
 ]
 
 arb, acb = flint.arb, flint.acb
@@ -418,6 +421,45 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
         prec = max(2 * prec, 1200)
 
 
+#: Calibration of :func:`eigendata_cost` (x86_64, one core, 2026-12): a process with the package
+#: loaded; the peak bytes per entry of the ``K x K`` matrices while one valence is computed (256-bit
+#: balls); CPU seconds per valence, ``a K^2 + b K^3`` (the ``K^3``: the exact solve that proves
+#: Catmull-Clark's zeros); and per number written at ``D > 17`` digits (1200-bit balls).
+_BASE_BYTES, _ENTRY_BYTES, _SECONDS, _DECIMAL_SECONDS = 120 << 20, 1600, (9e-6, 3e-8), 3e-5
+
+
+def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
+    """``(bytes, seconds)``: the estimated peak memory and wall-clock time of the data file for valences ``3..nmax``.
+
+    ``jobs`` processes (each holds one valence at a time; finished valences wait for their turn in
+    the main process); ``digits > 17``: the decimal JSON form, from wider balls (one process).
+    A hint for what a request will cost, checked before the work starts (:func:`check_eigendata_cost`).
+    """
+    p = patch_matrices(scheme, 3)
+    extra, width = p.size - p.ring_size, len(p.subpatches[0])
+    sizes = [scheme.lattice.one_ring_size(n) + extra for n in range(3, nmax + 1)]
+    numbers = [k * k + k + 3 * width * k for k in sizes]
+    workers = 1 if digits > 17 else max(1, min(jobs, len(sizes)))
+    if digits > 17:
+        scale = max(ZERO_PREC, 3.33 * digits + 64) / 256
+        peak = _BASE_BYTES + (_ENTRY_BYTES * scale + 2 * (digits + 60)) * sizes[-1] ** 2
+        seconds = sum(scale * (_SECONDS[0] * k * k + _SECONDS[1] * k**3) for k in sizes) + _DECIMAL_SECONDS * scale / 5 * sum(numbers)
+        return int(peak), seconds
+    peak = _BASE_BYTES * (1 + (workers if workers > 1 else 0)) + workers * _ENTRY_BYTES * sizes[-1] ** 2
+    held = 8 * sum(numbers) if workers > 1 else 0
+    seconds = sum(_SECONDS[0] * k * k + _SECONDS[1] * k**3 for k in sizes) / workers
+    return int(peak + held), seconds
+
+
+def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
+    """:func:`eigendata_cost`, refused (:class:`~symdecomp.errors.ResourceLimitError`, naming the estimate)
+    when the memory exceeds the limit of :func:`symdecomp.validate.check_memory`."""
+    memory, seconds = eigendata_cost(scheme, nmax, jobs, digits)
+    hours = f"{seconds / 3600:.1f} h" if seconds > 3600 else f"{seconds:.0f} s"
+    check_memory(memory, f"the eigen-data for valences 3..{nmax} ({jobs} processes; about {hours} of computing)")
+    return memory, seconds
+
+
 def _rounded_one(args) -> tuple[int, RoundedEigenData]:
     scheme, n = args
     data, rounded = certified_eigendata(scheme, n)
@@ -425,8 +467,13 @@ def _rounded_one(args) -> tuple[int, RoundedEigenData]:
 
 
 def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1):
-    """Yield ``(precision, RoundedEigenData)`` for the valences ``ns`` in order, on ``jobs`` processes."""
+    """Yield ``(precision, RoundedEigenData)`` for the valences ``ns`` in order, on ``jobs`` processes.
+
+    Refused before any work when the memory estimate is beyond the limit (:func:`check_eigendata_cost`).
+    """
     tasks = [(scheme, n) for n in ns]
+    if tasks:
+        check_eigendata_cost(scheme, max(ns), jobs)
     if jobs <= 1 or len(tasks) < 2:
         yield from map(_rounded_one, tasks)
         return

@@ -46,25 +46,16 @@ from symdecomp.algebra.numbers import to_arb, to_fmpq, to_fraction
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
-from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, circulant_weights, column_group, trig_table
+from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, trig_table
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_memory, check_valence
 
 __all__ = [
-    "NotDiagonalizableError",  # from symdecomp.algebra.small_eigen
-    "PrecisionError",
-    "PatchEigenData",
-    "RoundedEigenData",
-    "patch_eigendata",
-    "certified_eigendata",
-    "rounded_eigendata",
-    "round_ball",
-    "eigendata_cost",
-    "check_eigendata_cost",
-    "ZERO_PREC",
-]
+    "NotDiagonalizableError", "PrecisionError", "PatchEigenData", "RoundedEigenData", "patch_eigendata", "certified_eigendata",
+    "rounded_eigendata", "round_ball", "eigendata_cost", "check_eigendata_cost", "ZERO_PREC",
+]  # NotDiagonalizableError, PrecisionError: from symdecomp.errors
 
 arb, acb = flint.arb, flint.acb
 
@@ -284,32 +275,65 @@ ZERO_PREC = 1200
 def _replace_columns(p: PatchMatrices, data: PatchEigenData, bad_inverse, bad_phi) -> bool:
     """Replace, in ``data``, the eigenvectors whose entries do not round by the same ones at :data:`ZERO_PREC` bits.
 
-    The patch's eigen-data is computed once more at ``ZERO_PREC`` bits (a single valence's
-    arithmetic: cheap next to rounding every entry) and, for each eigenvector ``i`` with an
-    entry that did not round, column ``i`` of ``V``, row ``i`` of ``V^-1`` and row ``i`` of the
-    three sub-patch tables are taken from it together. That keeps ``V^-1 A V`` diagonal: an
-    eigenvector scaled otherwise comes with its left eigenvector scaled inversely, and the other
-    columns do not change (the entries of ``V^-1``'s rows beyond the 1-ring are sums of
-    ``u_c l_c`` products, independent of the scaling). False, and ``data`` unchanged, when
-    ``A`` has Jordan pairs (their ``gamma`` depends on the scaling) or the precision does not
-    suffice; the caller then recomputes everything.
+    For each 1-ring eigenvector ``i`` with an entry that did not round (in row ``i`` of ``V^-1``
+    or of a sub-patch table), its frequency group alone is solved again at ``ZERO_PREC`` bits
+    (:attr:`~symdecomp.analysis.ring_eigendata.RingEigen.group`: ``O(N)`` work) and column ``i``
+    of ``V``, row ``i`` of ``V^-1`` and row ``i`` of the three sub-patch tables are taken from it
+    together. That keeps ``V^-1 A V`` diagonal: an eigenvector scaled otherwise comes with its left
+    eigenvector scaled inversely, and the other columns do not change. False, and ``data``
+    unchanged, when ``A`` has Jordan pairs (their ``gamma`` depends on the scaling), an entry
+    outside those rows does not round, or the precision does not suffice; the caller then
+    recomputes everything.
     """
-    if data.jordan:
+    k0, size = p.ring_size, data.size
+    rows = sorted({i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi})
+    if data.jordan or any(i >= k0 for i in rows):
         return False
-    try:
-        with flint.ctx.workprec(ZERO_PREC):
-            hi = _eigendata(p, ZERO_PREC)
-    except _NeedPrecision:
-        return False
-    size = data.size
-    for i in sorted({i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi}):
+    new = {}
+    with flint.ctx.workprec(ZERO_PREC):
+        table, pieces = LazyTable(p.n), _column_pieces(p)
+        for i in rows:
+            try:
+                cols, off = RING_EIGEN[p.lattice].group(p, table, i, ZERO_PREC)
+            except _NeedPrecision:
+                return False
+            column = _column_at(p, cols[off], *pieces)
+            if column is None:
+                return False
+            new[i] = (cols[off].left, *column)
+    for i, (left, vcol, phi_rows) in new.items():
         for j in range(size):
-            data.inverse[i, j] = hi.inverse[i, j]
-            data.vectors[j, i] = hi.vectors[j, i]
-        for k in range(3):
-            for l in range(data.phi[k].ncols()):
-                data.phi[k][i, l] = hi.phi[k][i, l]
+            data.inverse[i, j] = left[j] if j < k0 else arb(0)
+            data.vectors[j, i] = vcol[j]
+        for k, row in enumerate(phi_rows):
+            for l, x in enumerate(row):
+                data.phi[k][i, l] = x
     return True
+
+
+def _column_pieces(p: PatchMatrices) -> tuple:
+    """What :func:`_column_at` needs of the regular block, at the current precision: ``nus``, ``W`` as balls, ``W^-1 S11``."""
+    nus, wmat, winv = _regular_part(p)
+    return nus, flint.arb_mat(wmat), _g_rows(p, winv)
+
+
+def _column_at(p: PatchMatrices, col, nus, wa, g_rows) -> tuple | None:
+    """``(V column, sub-patch rows)`` of the patch eigenvector that extends the 1-ring eigenvector ``col``
+    (``[u0; W D]``, ``D_r = (W^-1 S11 u0)_r/(lam - nu_r)``), or None where ``lam = nu_r`` is not decided
+    or is a Jordan pair. ``O(N)`` work: the column alone, at the current precision."""
+    size, d = p.size, []
+    for r, nu in enumerate(nus):
+        gap = col.value - to_arb(nu)
+        coeff = sum((to_arb(x) * col.right[c] for c, x in g_rows[r].items()), arb(0))
+        if not gap.contains(0):
+            d.append(coeff / gap)
+        elif col.exact_check is not None and col.exact_check(nu, g_rows[r]):
+            d.append(arb(0))
+        else:
+            return None
+    vcol = list(col.right) + (wa * flint.arb_mat([[x] for x in d])).entries()
+    at = lambda idx: col.value * vcol[idx] if idx < size else sum((to_arb(x) * vcol[c] for c, x in p.sparse[idx].items()), arb(0))  # noqa: E731
+    return vcol, [[at(idx) for idx in rows] for rows in p.subpatches]
 
 
 def _sharpen_lower_block(p: PatchMatrices, data: PatchEigenData, entries) -> None:
@@ -351,45 +375,31 @@ def _sharpen_lower_block(p: PatchMatrices, data: PatchEigenData, entries) -> Non
 def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: int = 1200) -> None:
     """Replace the sub-patch table balls around 0 that do not round by exact zeros, where 1200 bits prove them 0.
 
-    ``bad``: the entries ``(k, i, l)`` that did not round. Entry ``(k, i, l)`` is ``(A-bar v_i)`` at
-    one picked row, linear in the eigenvector ``v_i``; any eigenvector of the same frequency group is a multiple of it, so whether the entry is 0
-    does not depend on the scaling, and the column alone is recomputed at ``prec`` bits (the
-    group's Fourier block, ``D[:, i]``, ``W D[:, i]`` and the picked rows: ``O(N)`` work). An
-    entry is replaced only when its new ball lies inside ``(-2^-1075, 2^-1075)``, i.e. it is
-    exactly 0; everything else is left to the caller's precision loop. Quads only.
+    ``bad``: the entries ``(k, i, l)`` that did not round. Entry ``(k, i, l)`` is linear in the
+    eigenvector ``v_i``, so whether it is 0 does not depend on the scaling: the column alone is
+    recomputed at ``prec`` bits (:func:`_column_at`), and an entry is replaced only when its new
+    ball lies inside ``(-2^-1075, 2^-1075)``; everything else is left to the caller. Quads only.
     """
     if not RING_EIGEN[p.lattice].sharpen or data.jordan:
         return
-    size, k0 = p.size, p.ring_size
+    k0 = p.ring_size
     if not bad or any(i >= k0 or not data.phi[k][i, l].contains(0) for k, i, l in bad):
         return
     tiny = arb(2) ** -1075
     with flint.ctx.workprec(prec):
-        w, table = circulant_weights(p), LazyTable(p.n)
-        nus, wmat, winv = _regular_part(p)
-        g_rows, wa = _g_rows(p, winv), flint.arb_mat(wmat)
+        table, pieces = LazyTable(p.n), _column_pieces(p)
         for i in sorted({i for _, i, _ in bad}):
             try:
-                cols, off = column_group(p, w, table, i)
+                cols, off = RING_EIGEN[p.lattice].group(p, table, i, prec)
             except _NeedPrecision:
                 return
-            col = cols[off]
-            d = []
-            for r, nu in enumerate(nus):
-                gap = col.value - to_arb(nu)
-                coeff = sum((to_arb(x) * col.right[c] for c, x in g_rows[r].items()), arb(0))
-                if not gap.contains(0):
-                    d.append(coeff / gap)
-                elif col.exact_check is not None and col.exact_check(nu, g_rows[r]):
-                    d.append(arb(0))
-                else:
-                    return
-            vcol = list(col.right) + (wa * flint.arb_mat([[x] for x in d])).entries()
+            column = _column_at(p, cols[off], *pieces)
+            if column is None:
+                return
             for k, i2, l in bad:
-                idx = p.subpatches[k][l]
                 if i2 != i:
                     continue
-                val = col.value * vcol[idx] if idx < size else sum((to_arb(x) * vcol[c] for c, x in p.sparse[idx].items()), arb(0))
+                val = column[1][k][l]
                 if not (val.contains(0) and abs(val) < tiny):
                     return
                 data.phi[k][i, l] = arb(0)
@@ -402,7 +412,9 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
     ``(-2^-1075, 2^-1075)``. Those in ``V^-1``'s lower-left block are computed exactly instead
     (:func:`_sharpen_lower_block`), and those in the sub-patch tables are proved 0 column by
     column at 1200 bits (:func:`_sharpen_subpatch_zeros`), so Catmull-Clark rounds at the 256-bit
-    start; anything left (Loop's cyclotomic 1-ring) makes the next try a whole one at 1200 bits.
+    start; anything left (Loop's cyclotomic 1-ring) is taken, eigenvector by eigenvector, from one
+    solve at 1200 bits (:func:`_replace_columns`), and only what still does not round (Loop's
+    Jordan pairs at N = 3) makes the next try a whole one at 1200 bits.
 
     Every float64 returned is the correctly rounded value of the exact number, whose Arb ball
     is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits.
@@ -421,30 +433,28 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
         prec = max(2 * prec, 1200)
 
 
-#: Calibration of :func:`eigendata_cost` (x86_64, one core, 2026-12): a process with the package
-#: loaded; the peak bytes per entry of the ``K x K`` matrices while one valence is computed (256-bit
-#: balls); CPU seconds per valence, ``a K^2 + b K^3`` (the ``K^3``: the exact solve that proves
-#: Catmull-Clark's zeros); and per number written at ``D > 17`` digits (1200-bit balls).
+#: Calibration of :func:`eigendata_cost` (x86_64, 2026-12): a process with the package loaded; peak
+#: bytes per entry of the ``K x K`` matrices of one valence (256 bits); CPU seconds per valence,
+#: ``a K^2 + b K^3``; per number written at ``D > 17`` digits (1200-bit balls).
 _BASE_BYTES, _ENTRY_BYTES, _SECONDS, _DECIMAL_SECONDS = 120 << 20, 1600, (9e-6, 3e-8), 3e-5
 
 
 def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
     """``(bytes, seconds)``: the estimated peak memory and wall-clock time of the data file for valences ``3..nmax``.
 
-    ``jobs`` processes (each holds one valence at a time; finished valences wait for their turn in
-    the main process); ``digits > 17``: the decimal JSON form, from wider balls (one process).
-    A hint for what a request will cost, checked before the work starts (:func:`check_eigendata_cost`).
+    ``jobs`` processes each hold one valence at a time (finished valences wait for their turn in
+    the main process); ``digits > 17``: the decimal JSON form, from wider balls, one process.
     """
     p = patch_matrices(scheme, 3)
     extra, width = p.size - p.ring_size, len(p.subpatches[0])
     sizes = [scheme.lattice.one_ring_size(n) + extra for n in range(3, nmax + 1)]
     numbers = [k * k + k + 3 * width * k for k in sizes]
     workers = 1 if digits > 17 else max(1, min(jobs, len(sizes)))
-    if digits > 17:
+    if digits > 17:  # balls of max(1200, 3.33 D + 64) bits, one process, a text per number
         scale = max(ZERO_PREC, 3.33 * digits + 64) / 256
         peak = _BASE_BYTES + (_ENTRY_BYTES * scale + 2 * (digits + 60)) * sizes[-1] ** 2
-        seconds = sum(scale * (_SECONDS[0] * k * k + _SECONDS[1] * k**3) for k in sizes) + _DECIMAL_SECONDS * scale / 5 * sum(numbers)
-        return int(peak), seconds
+        seconds = sum(scale * (_SECONDS[0] * k * k + _SECONDS[1] * k**3) for k in sizes)
+        return int(peak), seconds + _DECIMAL_SECONDS * scale * 256 / ZERO_PREC * sum(numbers)
     peak = _BASE_BYTES * (1 + (workers if workers > 1 else 0)) + workers * _ENTRY_BYTES * sizes[-1] ** 2
     held = 8 * sum(numbers) if workers > 1 else 0
     seconds = sum(_SECONDS[0] * k * k + _SECONDS[1] * k**3 for k in sizes) / workers

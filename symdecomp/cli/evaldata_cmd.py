@@ -55,7 +55,7 @@ def run(args) -> int:
     if args.format == "binary" and args.scheme.lattice != PAPER_LATTICE:
         raise EvalDataFileError(f"--format binary: the binary layout is Stam's Catmull-Clark file; for --scheme {args.scheme.name} use --format json")
     digits = args.digits if args.format == "json" else FLOAT_DIGITS
-    memory, seconds = check_eigendata_cost(args.scheme, ns[-1], args.jobs, digits)
+    memory, seconds = check_eigendata_cost(args.scheme, ns[-1], args.jobs if digits == FLOAT_DIGITS else 1, digits)
     check_writable(args.out)
     show = sys.stderr.isatty() and not args.json
     precs, defective = [], []

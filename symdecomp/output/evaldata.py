@@ -167,7 +167,7 @@ def decimal_valence(scheme, n: int, digits: int, max_prec: int = 1 << 14) -> tup
 
 
 def _decimal_entry(d: PatchEigenData, digits: int) -> dict | None:
-    k, width = d.size, d.phi[0].ncols()
+    width = d.phi[0].ncols()
     order = lambda m: [m[i, j] for j in range(m.ncols()) for i in range(m.nrows())]  # noqa: E731 - column-major
     groups = [list(d.values), order(d.inverse), *(order(t) for t in d.phi), [g for *_, g in d.jordan]]
     texts = []
@@ -180,7 +180,6 @@ def _decimal_entry(d: PatchEigenData, digits: int) -> dict | None:
         entry["jordan"] = [{"row": i, "column": c, "value": v} for (i, c, _), v in zip(d.jordan, texts[5])]
     elif d.jordan:
         raise EvalDataFileError(f"valence {d.n}: the Catmull-Clark layout has no place for a Jordan block")
-    assert len(texts[1]) == k * k
     return entry
 
 

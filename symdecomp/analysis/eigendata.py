@@ -291,10 +291,11 @@ def _replace_columns(p: PatchMatrices, data: PatchEigenData, bad_inverse, bad_ph
         return False
     new = {}
     with flint.ctx.workprec(ZERO_PREC):
-        table, pieces = LazyTable(p.n), _column_pieces(p)
+        ring, table, pieces = RING_EIGEN[p.lattice], LazyTable(p.n), _column_pieces(p)
+        w = ring.weights(p)
         for i in rows:
             try:
-                cols, off = RING_EIGEN[p.lattice].group(p, table, i, ZERO_PREC)
+                cols, off = ring.group(p, w, table, i, ZERO_PREC)
             except _NeedPrecision:
                 return False
             column = _column_at(p, cols[off], *pieces)
@@ -387,10 +388,11 @@ def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: i
         return
     tiny = arb(2) ** -1075
     with flint.ctx.workprec(prec):
-        table, pieces = LazyTable(p.n), _column_pieces(p)
+        ring, table, pieces = RING_EIGEN[p.lattice], LazyTable(p.n), _column_pieces(p)
+        w = ring.weights(p)
         for i in sorted({i for _, i, _ in bad}):
             try:
-                cols, off = RING_EIGEN[p.lattice].group(p, table, i, prec)
+                cols, off = ring.group(p, w, table, i, prec)
             except _NeedPrecision:
                 return
             column = _column_at(p, cols[off], *pieces)

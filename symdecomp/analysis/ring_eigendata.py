@@ -273,18 +273,18 @@ def triangle_ring_weights(p) -> dict:
     if any(p.sparse[0].get(1 + i, Fraction(0)) != oa for i in range(n)) or any(c > n for c in p.sparse[0]):
         raise NotDiagonalizableError(f"the centre rule at valence {n} is not rotation invariant")
 
-    def split(i):
+    def split(i):  # (weight on O, {offset k: nonzero weight on a_{i+k}}): O(nonzeros) per row
         row = p.sparse[1 + i]
         if any(c > n for c, w in row.items() if w != 0):
             raise NotDiagonalizableError(f"the 1-ring of valence {n} depends on points beyond it: not block triangular")
-        return row.get(0, Fraction(0)), {k: row.get(1 + (i + k) % n, Fraction(0)) for k in range(n)}
+        return row.get(0, Fraction(0)), {(c - 1 - i) % n: w for c, w in row.items() if c >= 1 and w != 0}
 
     eo, ee = split(0)
     if any(split(i) != (eo, ee) for i in range(1, n)):
         raise NotDiagonalizableError(f"the 1-ring matrix at valence {n} is not circulant")
-    if any(ee[k] != ee[-k % n] for k in range(n)):
+    if any(ee.get(-k % n, 0) != x for k, x in ee.items()):
         raise NotDiagonalizableError(f"the edge rule at valence {n} is not mirror symmetric (the Fourier blocks are not real)")
-    return dict(oo=oo, oa=oa, eo=eo, ee={k: x for k, x in ee.items() if x != 0})
+    return dict(oo=oo, oa=oa, eo=eo, ee=ee)
 
 
 def _ball(x, prec: int) -> arb:
@@ -358,10 +358,10 @@ def triangle_ring_columns(p, table: list, prec: int) -> list:
     return cols
 
 
-def triangle_column_group(p, table, i: int, prec: int):
+def triangle_column_group(p, w: dict, table, i: int, prec: int):
     """``(columns, offset)``: the frequency group of 1-ring column ``i`` on triangles, at the current precision
-    (``table``: :func:`trig_table` or a :class:`LazyTable`)."""
-    n, w = p.n, triangle_ring_weights(p)
+    (``w``: :func:`triangle_ring_weights`; ``table``: :func:`trig_table` or a :class:`LazyTable`)."""
+    n = p.n
     if i < 2:
         return _frequency_zero(w, n, prec), i
     if i - 2 < 2 * ((n + 1) // 2 - 1):
@@ -405,12 +405,14 @@ class RingEigen:
     jordan: bool
     #: Whether sub-patch entries around 0 can be proved 0 column by column (:func:`column_group`).
     sharpen: bool
-    #: ``(patch matrices, table, i, prec) -> (columns, offset)``: the frequency group of column ``i`` alone.
+    #: ``patch matrices -> w``: the 1-ring block's weights, checked (what :attr:`group` reads).
+    weights: Callable
+    #: ``(patch matrices, w, table, i, prec) -> (columns, offset)``: the frequency group of column ``i`` alone.
     group: Callable
 
 
 RING_EIGEN = {
     QUAD: RingEigen(lambda p, table, prec: quad_ring_columns(p, table), jordan=False, sharpen=True,
-                    group=lambda p, table, i, prec: column_group(p, circulant_weights(p), table, i)),
-    TRIANGLE: RingEigen(triangle_ring_columns, jordan=True, sharpen=False, group=triangle_column_group),
+                    weights=circulant_weights, group=lambda p, w, table, i, prec: column_group(p, w, table, i)),
+    TRIANGLE: RingEigen(triangle_ring_columns, jordan=True, sharpen=False, weights=triangle_ring_weights, group=triangle_column_group),
 }

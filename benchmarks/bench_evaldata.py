@@ -5,7 +5,7 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
 (a) the certified file (every float64 correctly rounded) for N = 3..128 (``--quick``: 3..24),
     written by ``python -m symdecomp evaldata`` in a child process (2 worker processes, the
     default): wall-clock and CPU seconds, and the peak resident memory of the largest process
-    (``wait4``'s ``ru_maxrss`` of the child, which includes the workers it waited for);
+    (``ru_maxrss`` of the children of a small launcher process, :data:`LAUNCHER`: workers included);
 (b) the baseline, in a child process too: the same patch matrices in float64 through
     ``numpy.linalg.eig``, ``inv`` and the sub-patch tables; its seconds time those three steps
     only (the matrices are given: their exact construction is shared with (a)), its memory is the
@@ -42,21 +42,30 @@ LIMIT_SECONDS, LIMIT_MEGABYTES = 15.0, 300.0
 CASES = (("catmull-clark", "binary", "cc.dat"), ("loop", "json", "loop.json"))
 
 
+#: A small launcher: runs the command and reports its rusage. The command is started from this
+#: small process, not from the benchmark (whose own resident memory a child's ``ru_maxrss``
+#: would include: ``fork``/``vfork`` and ``exec`` carry the spawning process's high-water mark).
+LAUNCHER = (
+    "import json, resource, subprocess, sys, time\n"
+    "start = time.perf_counter()\n"
+    "proc = subprocess.run(sys.argv[1:], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)\n"
+    "wall = time.perf_counter() - start\n"
+    "u = resource.getrusage(resource.RUSAGE_CHILDREN)\n"
+    "print(json.dumps([proc.returncode, wall, u.ru_utime + u.ru_stime, u.ru_maxrss / 1024, proc.stdout, proc.stderr]))\n"
+)
+
+
 def _run_child(argv: list[str]) -> tuple[float, float, float, str]:
-    """``(wall seconds, CPU seconds, peak MB, stdout)`` of a child process, from its own ``wait4`` rusage
-    (which covers the processes it waited for: the worker processes)."""
+    """``(wall seconds, CPU seconds, peak MB, stdout)`` of ``python argv`` (with the processes it waited for:
+    the worker processes), started by :data:`LAUNCHER`; peak MB is the largest single process."""
+    import json
+
     env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
-        start = time.perf_counter()
-        proc = subprocess.Popen([sys.executable, *argv], cwd=ROOT, env=env, stdout=out, stderr=err, text=True)
-        _, status, usage = os.wait4(proc.pid, 0)
-        wall = time.perf_counter() - start
-        proc.returncode = os.waitstatus_to_exitcode(status)
-        out.seek(0)
-        err.seek(0)
-        if proc.returncode:
-            raise RuntimeError(f"{' '.join(argv)} failed ({proc.returncode}): {err.read().strip()}")
-        return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024, out.read()
+    out = subprocess.run([sys.executable, "-c", LAUNCHER, sys.executable, *argv], cwd=ROOT, env=env, capture_output=True, text=True)
+    code, wall, cpu, mb, stdout, stderr = json.loads(out.stdout)
+    if code:
+        raise RuntimeError(f"{' '.join(argv)} failed ({code}): {stderr.strip()}")
+    return wall, cpu, mb, stdout
 
 
 def _scheme(name: str):

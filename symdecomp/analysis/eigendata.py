@@ -46,23 +46,17 @@ from symdecomp.algebra.numbers import to_arb, to_fmpq, to_fraction
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
-from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, circulant_weights, column_group, trig_table
+from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, trig_table
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
-from symdecomp.parallel import ordered_map
+from symdecomp.parallel import ordered_map, pool_size
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_memory, check_valence
 
 __all__ = [
-    "NotDiagonalizableError",  # from symdecomp.algebra.small_eigen
-    "PrecisionError",
-    "PatchEigenData",
-    "RoundedEigenData",
-    "patch_eigendata",
-    "certified_eigendata",
-    "rounded_eigendata",
-    "round_ball",
-]
+    "NotDiagonalizableError", "PrecisionError", "PatchEigenData", "RoundedEigenData", "patch_eigendata", "certified_eigendata",
+    "rounded_eigendata", "round_ball", "eigendata_cost", "check_eigendata_cost", "ZERO_PREC",
+]  # NotDiagonalizableError, PrecisionError: from symdecomp.errors
 
 arb, acb = flint.arb, flint.acb
 
@@ -237,13 +231,13 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
 
 def _round_all(data: PatchEigenData, p: PatchMatrices | None = None) -> RoundedEigenData | None:
     """Every entry correctly rounded, or None. With ``p``, entries that do not round are first
-    sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`) and rounded again."""
+    sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`, then
+    :func:`_replace_columns`) and rounded again; ``data`` then holds the sharper balls."""
     size, width = data.size, data.phi[0].ncols()
-    with flint.ctx.workprec(128):  # ``+x`` rounds a ball to 128 bits (still containing it): cheaper to inspect
-        values = [round_ball(+v) for v in data.values]
-        inverse = [round_ball(+x) for x in data.inverse.entries()]
-        phi = [round_ball(+x) for t in data.phi for x in t.entries()]
-        jordan = tuple((i, c, round_ball(+g)) for i, c, g in data.jordan)
+    values = [round_ball(v) for v in data.values]
+    inverse = [round_ball(x) for x in data.inverse.entries()]
+    phi = [round_ball(x) for t in data.phi for x in t.entries()]
+    jordan = tuple((i, c, round_ball(g)) for i, c, g in data.jordan)
     if None in values or any(g is None for _, _, g in jordan):
         return None
     bad_inverse = [divmod(q, size) for q, x in enumerate(inverse) if x is None]
@@ -251,16 +245,97 @@ def _round_all(data: PatchEigenData, p: PatchMatrices | None = None) -> RoundedE
     if (bad_inverse or bad_phi) and p is not None:
         _sharpen_lower_block(p, data, bad_inverse)
         _sharpen_subpatch_zeros(p, data, bad_phi)
-        with flint.ctx.workprec(128):
-            for i, j in bad_inverse:
-                inverse[i * size + j] = round_ball(+data.inverse[i, j])
-            for k, i, l in bad_phi:
-                phi[(k * size + i) * width + l] = round_ball(+data.phi[k][i, l])
+        bad_inverse, bad_phi = _reround(data, inverse, phi, bad_inverse, bad_phi)
+        if (bad_inverse or bad_phi) and _replace_columns(p, data, bad_inverse, bad_phi):
+            rows = {i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi}
+            _reround(data, inverse, phi, [(i, j) for i in rows for j in range(size)],
+                     [(k, i, l) for k in range(3) for i in rows for l in range(width)])
     if None in inverse or None in phi:
         return None
     return RoundedEigenData(
         data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, width), jordan
     )
+
+
+def _reround(data: PatchEigenData, inverse: list, phi: list, bad_inverse, bad_phi) -> tuple[list, list]:
+    """Round the listed entries of ``data`` again into the flat lists; return those that still do not round."""
+    size, width = data.size, data.phi[0].ncols()
+    for i, j in bad_inverse:
+        inverse[i * size + j] = round_ball(data.inverse[i, j])
+    for k, i, l in bad_phi:
+        phi[(k * size + i) * width + l] = round_ball(data.phi[k][i, l])
+    return ([(i, j) for i, j in bad_inverse if inverse[i * size + j] is None],
+            [(k, i, l) for k, i, l in bad_phi if phi[(k * size + i) * width + l] is None])
+
+
+#: The precision of :func:`_replace_columns`: a ball around an exact 0 rounds (to 0.0) only
+#: inside ``(-2^-1075, 2^-1075)``.
+ZERO_PREC = 1200
+
+
+def _replace_columns(p: PatchMatrices, data: PatchEigenData, bad_inverse, bad_phi) -> bool:
+    """Replace, in ``data``, the eigenvectors whose entries do not round by the same ones at :data:`ZERO_PREC` bits.
+
+    For each 1-ring eigenvector ``i`` with an entry that did not round (in row ``i`` of ``V^-1``
+    or of a sub-patch table), its frequency group alone is solved again at ``ZERO_PREC`` bits
+    (:attr:`~symdecomp.analysis.ring_eigendata.RingEigen.group`: ``O(N)`` work) and column ``i``
+    of ``V``, row ``i`` of ``V^-1`` and row ``i`` of the three sub-patch tables are taken from it
+    together. That keeps ``V^-1 A V`` diagonal: an eigenvector scaled otherwise comes with its left
+    eigenvector scaled inversely, and the other columns do not change. False, and ``data``
+    unchanged, when ``A`` has Jordan pairs (their ``gamma`` depends on the scaling), an entry
+    outside those rows does not round, or the precision does not suffice; the caller then
+    recomputes everything.
+    """
+    k0, size = p.ring_size, data.size
+    rows = sorted({i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi})
+    if data.jordan or any(i >= k0 for i in rows):
+        return False
+    new = {}
+    with flint.ctx.workprec(ZERO_PREC):
+        ring, table, pieces = RING_EIGEN[p.lattice], LazyTable(p.n), _column_pieces(p)
+        w = ring.weights(p)
+        for i in rows:
+            try:
+                cols, off = ring.group(p, w, table, i, ZERO_PREC)
+            except _NeedPrecision:
+                return False
+            column = _column_at(p, cols[off], *pieces)
+            if column is None:
+                return False
+            new[i] = (cols[off].left, *column)
+    for i, (left, vcol, phi_rows) in new.items():
+        for j in range(size):
+            data.inverse[i, j] = left[j] if j < k0 else arb(0)
+            data.vectors[j, i] = vcol[j]
+        for k, row in enumerate(phi_rows):
+            for l, x in enumerate(row):
+                data.phi[k][i, l] = x
+    return True
+
+
+def _column_pieces(p: PatchMatrices) -> tuple:
+    """What :func:`_column_at` needs of the regular block, at the current precision: ``nus``, ``W`` as balls, ``W^-1 S11``."""
+    nus, wmat, winv = _regular_part(p)
+    return nus, flint.arb_mat(wmat), _g_rows(p, winv)
+
+
+def _column_at(p: PatchMatrices, col, nus, wa, g_rows) -> tuple | None:
+    """``(V column, sub-patch rows)`` of the patch eigenvector that extends the 1-ring eigenvector ``col``
+    (``[u0; W D]``, ``D_r = (W^-1 S11 u0)_r/(lam - nu_r)``), or None where ``lam = nu_r`` is not decided
+    or is a Jordan pair. ``O(N)`` work: the column alone, at the current precision."""
+    size, d = p.size, []
+    for r, nu in enumerate(nus):
+        gap = col.value - to_arb(nu)
+        coeff = sum((to_arb(x) * col.right[c] for c, x in g_rows[r].items()), arb(0))
+        if not gap.contains(0):
+            d.append(coeff / gap)
+        elif col.exact_check is not None and col.exact_check(nu, g_rows[r]):
+            d.append(arb(0))
+        else:
+            return None
+    vcol = list(col.right) + (wa * flint.arb_mat([[x] for x in d])).entries()
+    at = lambda idx: col.value * vcol[idx] if idx < size else sum((to_arb(x) * vcol[c] for c, x in p.sparse[idx].items()), arb(0))  # noqa: E731
+    return vcol, [[at(idx) for idx in rows] for rows in p.subpatches]
 
 
 def _sharpen_lower_block(p: PatchMatrices, data: PatchEigenData, entries) -> None:
@@ -302,45 +377,32 @@ def _sharpen_lower_block(p: PatchMatrices, data: PatchEigenData, entries) -> Non
 def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: int = 1200) -> None:
     """Replace the sub-patch table balls around 0 that do not round by exact zeros, where 1200 bits prove them 0.
 
-    ``bad``: the entries ``(k, i, l)`` that did not round. Entry ``(k, i, l)`` is ``(A-bar v_i)`` at
-    one picked row, linear in the eigenvector ``v_i``; any eigenvector of the same frequency group is a multiple of it, so whether the entry is 0
-    does not depend on the scaling, and the column alone is recomputed at ``prec`` bits (the
-    group's Fourier block, ``D[:, i]``, ``W D[:, i]`` and the picked rows: ``O(N)`` work). An
-    entry is replaced only when its new ball lies inside ``(-2^-1075, 2^-1075)``, i.e. it is
-    exactly 0; everything else is left to the caller's precision loop. Quads only.
+    ``bad``: the entries ``(k, i, l)`` that did not round. Entry ``(k, i, l)`` is linear in the
+    eigenvector ``v_i``, so whether it is 0 does not depend on the scaling: the column alone is
+    recomputed at ``prec`` bits (:func:`_column_at`), and an entry is replaced only when its new
+    ball lies inside ``(-2^-1075, 2^-1075)``; everything else is left to the caller. Quads only.
     """
     if not RING_EIGEN[p.lattice].sharpen or data.jordan:
         return
-    size, k0 = p.size, p.ring_size
+    k0 = p.ring_size
     if not bad or any(i >= k0 or not data.phi[k][i, l].contains(0) for k, i, l in bad):
         return
     tiny = arb(2) ** -1075
     with flint.ctx.workprec(prec):
-        w, table = circulant_weights(p), LazyTable(p.n)
-        nus, wmat, winv = _regular_part(p)
-        g_rows, wa = _g_rows(p, winv), flint.arb_mat(wmat)
+        ring, table, pieces = RING_EIGEN[p.lattice], LazyTable(p.n), _column_pieces(p)
+        w = ring.weights(p)
         for i in sorted({i for _, i, _ in bad}):
             try:
-                cols, off = column_group(p, w, table, i)
+                cols, off = ring.group(p, w, table, i, prec)
             except _NeedPrecision:
                 return
-            col = cols[off]
-            d = []
-            for r, nu in enumerate(nus):
-                gap = col.value - to_arb(nu)
-                coeff = sum((to_arb(x) * col.right[c] for c, x in g_rows[r].items()), arb(0))
-                if not gap.contains(0):
-                    d.append(coeff / gap)
-                elif col.exact_check is not None and col.exact_check(nu, g_rows[r]):
-                    d.append(arb(0))
-                else:
-                    return
-            vcol = list(col.right) + (wa * flint.arb_mat([[x] for x in d])).entries()
+            column = _column_at(p, cols[off], *pieces)
+            if column is None:
+                return
             for k, i2, l in bad:
-                idx = p.subpatches[k][l]
                 if i2 != i:
                     continue
-                val = col.value * vcol[idx] if idx < size else sum((to_arb(x) * vcol[c] for c, x in p.sparse[idx].items()), arb(0))
+                val = column[1][k][l]
                 if not (val.contains(0) and abs(val) < tiny):
                     return
                 data.phi[k][i, l] = arb(0)
@@ -353,7 +415,9 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
     ``(-2^-1075, 2^-1075)``. Those in ``V^-1``'s lower-left block are computed exactly instead
     (:func:`_sharpen_lower_block`), and those in the sub-patch tables are proved 0 column by
     column at 1200 bits (:func:`_sharpen_subpatch_zeros`), so Catmull-Clark rounds at the 256-bit
-    start; anything left (Loop's cyclotomic 1-ring) makes the next try a whole one at 1200 bits.
+    start; anything left (Loop's cyclotomic 1-ring) is taken, eigenvector by eigenvector, from one
+    solve at 1200 bits (:func:`_replace_columns`), and only what still does not round (Loop's
+    Jordan pairs at N = 3) makes the next try a whole one at 1200 bits.
 
     Every float64 returned is the correctly rounded value of the exact number, whose Arb ball
     is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits.
@@ -372,6 +436,43 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
         prec = max(2 * prec, 1200)
 
 
+#: Calibration of :func:`eigendata_cost` (x86_64, 2026-12): a process with the package loaded; peak
+#: bytes per entry of the ``K x K`` matrices of one valence (256 bits); CPU seconds per valence,
+#: ``a K^2 + b K^3``; per number written at ``D > 17`` digits (1200-bit balls).
+_BASE_BYTES, _ENTRY_BYTES, _SECONDS, _DECIMAL_SECONDS = 120 << 20, 1600, (9e-6, 3e-8), 3e-5
+
+
+def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
+    """``(bytes, seconds)``: the estimated peak memory and wall-clock time of the data file for valences ``3..nmax``.
+
+    ``jobs`` processes each hold one valence at a time (finished valences wait for their turn in
+    the main process); ``digits > 17``: the decimal JSON form, from wider balls, one process.
+    """
+    p = patch_matrices(scheme, 3)
+    extra, width = p.size - p.ring_size, len(p.subpatches[0])
+    sizes = [scheme.lattice.one_ring_size(n) + extra for n in range(3, nmax + 1)]
+    numbers = [k * k + k + 3 * width * k for k in sizes]
+    workers = 1 if digits > 17 else max(1, min(jobs, len(sizes)))
+    if digits > 17:  # balls of max(1200, 3.33 D + 64) bits, one process, a text per number
+        scale = max(ZERO_PREC, 3.33 * digits + 64) / 256
+        peak = _BASE_BYTES + (_ENTRY_BYTES * scale + 2 * (digits + 60)) * sizes[-1] ** 2
+        seconds = sum(scale * (_SECONDS[0] * k * k + _SECONDS[1] * k**3) for k in sizes)
+        return int(peak), seconds + _DECIMAL_SECONDS * scale * 256 / ZERO_PREC * sum(numbers)
+    peak = _BASE_BYTES * (1 + (workers if workers > 1 else 0)) + workers * _ENTRY_BYTES * sizes[-1] ** 2
+    held = 8 * sum(numbers) if workers > 1 else 0
+    seconds = sum(_SECONDS[0] * k * k + _SECONDS[1] * k**3 for k in sizes) / workers
+    return int(peak + held), seconds
+
+
+def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
+    """:func:`eigendata_cost`, refused (:class:`~symdecomp.errors.ResourceLimitError`, naming the estimate)
+    when the memory exceeds the limit of :func:`symdecomp.validate.check_memory`."""
+    memory, seconds = eigendata_cost(scheme, nmax, jobs, digits)
+    hours = f"{seconds / 3600:.1f} h" if seconds > 3600 else f"{seconds:.0f} s"
+    check_memory(memory, f"the eigen-data for valences 3..{nmax} ({jobs} processes; about {hours} of computing)")
+    return memory, seconds
+
+
 def _rounded_one(n: int, scheme: Scheme) -> tuple[int, RoundedEigenData]:
     data, rounded = certified_eigendata(scheme, n)
     return data.prec, rounded
@@ -382,5 +483,9 @@ def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local"):
 
     The pool is :func:`symdecomp.parallel.ordered_map` (``executor``: ``"local"``, ``"dask"`` or
     ``"dask=ADDRESS"``); the largest valences are handed out first, to keep every worker busy.
+    Refused before any work when the memory estimate is beyond the limit (:func:`check_eigendata_cost`).
     """
+    ns = list(ns)
+    if ns:
+        check_eigendata_cost(scheme, max(ns), pool_size(jobs, len(ns)))
     yield from ordered_map(_rounded_one, ns, shared={"scheme": scheme}, jobs=jobs, executor=executor, cost=lambda n: n)

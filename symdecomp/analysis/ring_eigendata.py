@@ -44,7 +44,7 @@ from symdecomp.schemes.patch import PatchMatrices
 
 __all__ = [
     "RingEigen", "RING_EIGEN", "quad_ring_columns", "triangle_ring_columns", "triangle_ring_weights",
-    "column_group", "LazyTable", "trig_table", "circulant_weights",
+    "column_group", "triangle_column_group", "LazyTable", "trig_table", "circulant_weights",
 ]
 
 arb = flint.arb
@@ -273,18 +273,18 @@ def triangle_ring_weights(p) -> dict:
     if any(p.sparse[0].get(1 + i, Fraction(0)) != oa for i in range(n)) or any(c > n for c in p.sparse[0]):
         raise NotDiagonalizableError(f"the centre rule at valence {n} is not rotation invariant")
 
-    def split(i):
+    def split(i):  # (weight on O, {offset k: nonzero weight on a_{i+k}}): O(nonzeros) per row
         row = p.sparse[1 + i]
         if any(c > n for c, w in row.items() if w != 0):
             raise NotDiagonalizableError(f"the 1-ring of valence {n} depends on points beyond it: not block triangular")
-        return row.get(0, Fraction(0)), {k: row.get(1 + (i + k) % n, Fraction(0)) for k in range(n)}
+        return row.get(0, Fraction(0)), {(c - 1 - i) % n: w for c, w in row.items() if c >= 1 and w != 0}
 
     eo, ee = split(0)
     if any(split(i) != (eo, ee) for i in range(1, n)):
         raise NotDiagonalizableError(f"the 1-ring matrix at valence {n} is not circulant")
-    if any(ee[k] != ee[-k % n] for k in range(n)):
+    if any(ee.get(-k % n, 0) != x for k, x in ee.items()):
         raise NotDiagonalizableError(f"the edge rule at valence {n} is not mirror symmetric (the Fourier blocks are not real)")
-    return dict(oo=oo, oa=oa, eo=eo, ee={k: x for k, x in ee.items() if x != 0})
+    return dict(oo=oo, oa=oa, eo=eo, ee=ee)
 
 
 def _ball(x, prec: int) -> arb:
@@ -352,20 +352,43 @@ def triangle_ring_columns(p, table: list, prec: int) -> list:
     w = triangle_ring_weights(p)
     cols = _frequency_zero(w, n, prec)
     for j in range(1, (n + 1) // 2):
-        lam = sum((to_arb(x) * table[(4 * j * k) % (4 * n)] for k, x in w["ee"].items()), arb(0))
-        check = _frequency_check(w, n, j)
-        for shift in (0, -n):  # cos, then sin (= cos shifted by a quarter turn)
-            pattern = [table[(4 * j * k + shift) % (4 * n)] for k in range(n)]
-            cols.append(_Column(lam, [arb(0)] + pattern, [arb(0)] + [x * 2 / n for x in pattern], None, check))
+        cols += _triangle_frequency(w, n, j, table)
     if n % 2 == 0:
-        lam = sum((x * (-1) ** k for k, x in w["ee"].items()), Fraction(0))
-
-        def check(nu, g, lam=lam):
-            return None if nu != lam else sum((x * (-1) ** (c - 1) for c, x in g.items() if 1 <= c <= n), Fraction(0)) == 0
-
-        sign = [arb((-1) ** k) for k in range(n)]
-        cols.append(_Column(to_arb(lam), [arb(0)] + sign, [arb(0)] + [x / n for x in sign], None, check))
+        cols += _triangle_alternating(w, n)
     return cols
+
+
+def triangle_column_group(p, w: dict, table, i: int, prec: int):
+    """``(columns, offset)``: the frequency group of 1-ring column ``i`` on triangles, at the current precision
+    (``w``: :func:`triangle_ring_weights`; ``table``: :func:`trig_table` or a :class:`LazyTable`)."""
+    n = p.n
+    if i < 2:
+        return _frequency_zero(w, n, prec), i
+    if i - 2 < 2 * ((n + 1) // 2 - 1):
+        return _triangle_frequency(w, n, 1 + (i - 2) // 2, table), (i - 2) % 2
+    return _triangle_alternating(w, n), 0
+
+
+def _triangle_frequency(w: dict, n: int, j: int, table) -> list[_Column]:
+    """The cos and sin columns of frequency ``0 < j < n/2``."""
+    lam = sum((to_arb(x) * table[(4 * j * k) % (4 * n)] for k, x in w["ee"].items()), arb(0))
+    check = _frequency_check(w, n, j)
+    cols = []
+    for shift in (0, -n):  # cos, then sin (= cos shifted by a quarter turn)
+        pattern = [table[(4 * j * k + shift) % (4 * n)] for k in range(n)]
+        cols.append(_Column(lam, [arb(0)] + pattern, [arb(0)] + [x * 2 / n for x in pattern], None, check))
+    return cols
+
+
+def _triangle_alternating(w: dict, n: int) -> list[_Column]:
+    """The column of frequency ``n/2`` (even ``n``): the pattern ``(-1)^k``."""
+    lam = sum((x * (-1) ** k for k, x in w["ee"].items()), Fraction(0))
+
+    def check(nu, g, lam=lam):
+        return None if nu != lam else sum((x * (-1) ** (c - 1) for c, x in g.items() if 1 <= c <= n), Fraction(0)) == 0
+
+    sign = [arb((-1) ** k) for k in range(n)]
+    return [_Column(to_arb(lam), [arb(0)] + sign, [arb(0)] + [x / n for x in sign], None, check)]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -382,9 +405,14 @@ class RingEigen:
     jordan: bool
     #: Whether sub-patch entries around 0 can be proved 0 column by column (:func:`column_group`).
     sharpen: bool
+    #: ``patch matrices -> w``: the 1-ring block's weights, checked (what :attr:`group` reads).
+    weights: Callable
+    #: ``(patch matrices, w, table, i, prec) -> (columns, offset)``: the frequency group of column ``i`` alone.
+    group: Callable
 
 
 RING_EIGEN = {
-    QUAD: RingEigen(lambda p, table, prec: quad_ring_columns(p, table), jordan=False, sharpen=True),
-    TRIANGLE: RingEigen(triangle_ring_columns, jordan=True, sharpen=False),
+    QUAD: RingEigen(lambda p, table, prec: quad_ring_columns(p, table), jordan=False, sharpen=True,
+                    weights=circulant_weights, group=lambda p, w, table, i, prec: column_group(p, w, table, i)),
+    TRIANGLE: RingEigen(triangle_ring_columns, jordan=True, sharpen=False, weights=triangle_ring_weights, group=triangle_column_group),
 }

@@ -65,7 +65,8 @@ LIMITS = {
     "c1 --depth": (12, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),
-    "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 1200 bits"),
+    "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 256 bits "
+                 "(a run's memory is estimated and checked before it starts)"),
 }
 
 _INTEGER = re.compile(r"[+-]?[0-9]{1,12}", re.ASCII)

@@ -5,19 +5,25 @@
 
 Binary (default): the published file's layout (``int32 Nmax``, then per valence ``3..Nmax`` the
 eigenvalues, ``V^-1`` and the three sub-patch tables, little-endian), a drop-in replacement.
-``--format json --digits D``: the same data as decimal strings of ``D`` significant digits.
-``--json``: a summary for programs (``{"out", "format", "nmax", "bytes", "precision_bits"}``).
+``--format json``: the same data as decimal strings: the correctly rounded float64s in their
+shortest round-trip form (``--digits 17``, the default), or with ``--digits D > 17`` the exact
+values correctly rounded to ``D`` significant digits. The file is streamed valence by valence.
+Before any work the memory and time are estimated (:func:`~symdecomp.analysis.eigendata.eigendata_cost`)
+and a request beyond the memory limit is refused in one line naming the estimate.
+``--json``: a summary for programs (``{"out", "format", "nmax", "bytes", "precision_bits",
+"jordan_valences", "estimate": {"megabytes", "seconds"}}``).
 """
 
 from __future__ import annotations
 
 import sys
 
-from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
+from symdecomp.analysis.eigendata import check_eigendata_cost, rounded_eigendata
 from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, digits, print_json, progress, valence_range
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import EvalDataFileError
-from symdecomp.output.evaldata import binary_bytes, dumps, json_document
+from symdecomp.output.evaldata import FLOAT_DIGITS, binary_chunks, decimal_valence, json_chunks, json_valence
+from symdecomp.parallel import pool_size
 from symdecomp.schemes.lattice import PAPER_LATTICE
 
 
@@ -36,8 +42,10 @@ def register(sub) -> None:
                    help="output file, checked before the work starts (a regular file is replaced atomically; a device or a "
                    "FIFO is written in place; a symbolic link is followed)")
     p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary", help="binary (default) or json")
-    p.add_argument("--digits", type=digits(), action=Once, default=20, help="significant digits in the JSON form (default 20)")
-    add_pool_options(p, default_jobs=2)  # the binary file's valences; the JSON form is computed in this process
+    p.add_argument("--digits", type=digits(minimum=FLOAT_DIGITS), action=Once, default=FLOAT_DIGITS,
+                   help="JSON numbers: 17 (default) = the correctly rounded float64, shortest text that reads back as it; "
+                   "D > 17 = the exact value correctly rounded to D significant digits (slower, one process)")
+    add_pool_options(p, default_jobs=2)  # the binary file and JSON at 17 digits; JSON at D > 17 digits runs in this process
     p.add_argument("--json", action="store_true", help="print a JSON summary")
     add_scheme_option(p)
     p.set_defaults(func=run)
@@ -49,31 +57,37 @@ def run(args) -> int:
         raise EvalDataFileError(f"--n {ns[0]}:{ns[-1]}: the file holds valences 3..N; give --n 3:{ns[-1]}")
     if args.format == "binary" and args.scheme.lattice != PAPER_LATTICE:
         raise EvalDataFileError(f"--format binary: the binary layout is Stam's Catmull-Clark file; for --scheme {args.scheme.name} use --format json")
+    digits = args.digits if args.format == "json" else FLOAT_DIGITS
+    memory, seconds = check_eigendata_cost(args.scheme, ns[-1], pool_size(args.jobs, len(ns)) if digits == FLOAT_DIGITS else 1, digits)
     check_output_file(args.out)
     show = sys.stderr.isatty() and not args.json
-    precs = []
-    if args.format == "binary":
-        rounded = []
+    precs, defective = [], []
+
+    def rounded():  # the valences as they come, in order; nothing holds the whole file
         for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs, args.executor), len(ns), "evaldata", enabled=show):
             precs.append(prec)
-            rounded.append(r)
-        content = binary_bytes(rounded)
-    else:
-        balls = []
+            defective.extend([r.n] if r.jordan else [])
+            yield r
+
+    def decimal():
         for n in progress(ns, len(ns), "evaldata", enabled=show):
-            prec = max(1200, int(3.33 * args.digits) + 128)
-            data = patch_eigendata(args.scheme, n, prec)
+            prec, entry = decimal_valence(args.scheme, n, digits)
             precs.append(prec)
-            balls.append(data)
-        content = dumps(json_document(balls, args.digits, args.scheme.name))
-    write_output_file(args.out, content)
-    defective = [] if args.format == "binary" else [d.n for d in balls if d.jordan]
-    summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": len(content), "precision_bits": max(precs)}
+            defective.extend([n] if entry.get("jordan") else [])
+            yield entry
+
+    if args.format == "binary":
+        size = write_output_file(args.out, binary_chunks(rounded(), ns[-1]))
+    else:
+        entries = map(json_valence, rounded()) if digits == FLOAT_DIGITS else decimal()
+        size = write_output_file(args.out, json_chunks(entries, ns[-1], digits, args.scheme.name))
+    summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": size, "precision_bits": max(precs)}
     summary["jordan_valences"] = defective
+    summary["estimate"] = {"megabytes": round(memory / 2**20), "seconds": round(seconds, 1)}
     if args.json:
         print_json(summary)
     else:
-        print(f"wrote {args.out}: {args.format}, valences 3..{ns[-1]}, {len(content)} bytes (working precision up to {max(precs)} bits)")
+        print(f"wrote {args.out}: {args.format}, valences 3..{ns[-1]}, {size} bytes (working precision up to {max(precs)} bits)")
         if defective:  # the matrix has no eigenvector basis there: the file carries its Jordan pairs
             print(f"not diagonalizable at N = {', '.join(map(str, defective))}: the file holds the Jordan pairs (\"jordan\") for those valences")
     return 0

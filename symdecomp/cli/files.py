@@ -29,6 +29,7 @@ import re
 import shutil
 import stat
 import tempfile
+from collections.abc import Iterable
 from pathlib import Path
 
 from symdecomp.errors import InvalidInputError, OutputWriteError
@@ -139,10 +140,17 @@ def output_stream(out, option: str = "--out"):
         raise OutputWriteError(f"{option} {os.fspath(out)}: cannot write ({exc.strerror or exc})") from None
 
 
-def write_output_file(out, content: bytes | str, option: str = "--out") -> None:
-    """Write ``content`` (``str``: UTF-8) to the output file ``out`` (:func:`output_stream`)."""
+def write_output_file(out, content: bytes | str | Iterable[bytes | str], option: str = "--out") -> int:
+    """Write ``content`` (``str``: UTF-8), or its pieces as they come, to the output file ``out``
+    (:func:`output_stream`); return the number of bytes written. An error while the pieces are
+    made leaves a regular file as it was."""
+    written = 0
     with output_stream(out, option) as fh:
-        fh.write(content.encode("utf-8") if isinstance(content, str) else content)
+        for piece in [content] if isinstance(content, (bytes, str)) else content:
+            raw = piece.encode("utf-8") if isinstance(piece, str) else piece
+            fh.write(raw)
+            written += len(raw)
+    return written
 
 
 def replace_owned_files(out: Path, files: dict[str, str], owned: re.Pattern, option: str = "--out") -> list[Path]:

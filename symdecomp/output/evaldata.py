@@ -9,7 +9,14 @@ Binary (little-endian, no padding; a drop-in replacement for the published ``ccd
 
 JSON: ``{"format": "stam-catmull-clark", "nmax", "digits", "valences": [{"n", "values",
 "inverse", "phi": [Phi0, Phi1, Phi2]}]}``, arrays flattened in the binary file's element order,
-every number a decimal string of ``digits`` significant digits.
+every number a decimal string. ``"digits": 17`` (the default): each number is the correctly
+rounded float64 of the exact value (one rounding, from the certified ball), written as the
+shortest decimal that reads back as that float64 (Python's ``repr``; at most 17 significant
+digits), so ``float(text)`` is the correctly rounded value and the binary file's number.
+``"digits": D > 17``: each number is the exact value correctly rounded to ``D`` significant
+digits (one rounding, from the ball), ``d.ddd...e+XX``; ``float()`` of it rounds a second time
+and may then differ from the correctly rounded float64 (by one ulp, where the exact value is
+within ``10^-D`` of a float64 rounding boundary). Exact zeros of the symmetries are ``"0"``.
 
 Loop (JSON only; the binary layout is Catmull-Clark's): ``{"format": "stam-loop", "scheme",
 "nmax", "digits", "layout", "valences": [{"n", "values", "inverse", "phi": [Phi0, Phi1, Phi2],
@@ -21,7 +28,8 @@ not diagonalizable: Loop at ``N = 3``). Control points, sub-patches and the eval
 :mod:`symdecomp.schemes.patch` and :mod:`symdecomp.analysis.evaluation`; the
 ``layout`` string says the same in one line.
 
-The command line writes these files (``symdecomp.cli.files``: checked first, replaced atomically,
+The files are streamed valence by valence (:func:`binary_chunks`, :func:`json_chunks`: nothing
+holds the whole file) through :mod:`symdecomp.cli.files` (checked first, replaced atomically,
 devices and FIFOs written in place).
 """
 
@@ -29,15 +37,22 @@ from __future__ import annotations
 
 import json
 import struct
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 
 import flint
 import numpy as np
 
-from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData
-from symdecomp.errors import EvalDataFileError
+from symdecomp.algebra.rounding import round_ball_decimal
+from symdecomp.analysis.eigendata import ZERO_PREC, PatchEigenData, RoundedEigenData, patch_eigendata
+from symdecomp.errors import EvalDataFileError, PrecisionError
 
-__all__ = ["EvalDataFileError", "binary_bytes", "read_binary", "json_document", "read_json", "dumps"]
+__all__ = [
+    "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "read_binary", "json_chunks",
+    "json_valence", "decimal_valence", "read_json",
+]
+
+#: ``digits`` of a JSON document whose numbers are the correctly rounded float64 values (shortest form).
+FLOAT_DIGITS = 17
 
 FORMAT = "stam-catmull-clark"
 LOOP_FORMAT = "stam-loop"
@@ -60,16 +75,26 @@ def binary_bytes(data: Iterable[RoundedEigenData]) -> bytes:
     """The binary file's content for the valences ``3..Nmax`` (in that order)."""
     data = list(data)
     _check_sequence([d.n for d in data])
+    return b"".join(binary_chunks(data, data[-1].n))
+
+
+def binary_chunks(data: Iterable[RoundedEigenData], nmax: int) -> Iterator[bytes]:
+    """The binary file piece by piece: ``Nmax``, then one piece per valence as ``data`` yields it (3..nmax in order)."""
+    yield struct.pack("<i", nmax)
+    ns = []
     for d in data:
+        ns.append(d.n)
+        if d.n != len(ns) + 2:
+            _check_sequence(ns)
         if d.phi.shape[-1] != 16 or d.jordan:
             raise EvalDataFileError(f"valence {d.n}: not Catmull-Clark data of a diagonalizable matrix; the binary layout cannot hold it")
-    parts = [struct.pack("<i", data[-1].n)]
-    for d in data:
-        parts.append(np.asarray(d.values, "<f8").tobytes())
-        parts.append(np.asarray(d.inverse, "<f8").ravel(order="F").tobytes())
-        for k in range(3):
-            parts.append(np.asarray(d.phi[k], "<f8").ravel(order="F").tobytes())
-    return b"".join(parts)
+        yield b"".join([
+            np.asarray(d.values, "<f8").tobytes(),
+            np.asarray(d.inverse, "<f8").ravel(order="F").tobytes(),
+            *(np.asarray(d.phi[k], "<f8").ravel(order="F").tobytes() for k in range(3)),
+        ])
+    if not ns or ns[-1] != nmax:
+        _check_sequence(ns + [nmax + 1] if ns else [])
 
 
 def read_binary(path) -> dict[int, RoundedEigenData]:
@@ -100,42 +125,85 @@ def read_binary(path) -> dict[int, RoundedEigenData]:
     return out
 
 
-def json_document(data: Iterable[PatchEigenData], digits: int, scheme: str | None = None) -> dict:
-    """The JSON form: the Arb balls' midpoints to ``digits`` significant digits (balls must be that narrow).
+def json_valence(d: RoundedEigenData) -> dict:
+    """One valence of the JSON form from the correctly rounded float64 arrays (``"digits": 17``): shortest round-trip text."""
+    width = d.phi.shape[-1]
+    entry = {
+        "n": d.n,
+        "values": [repr(x) for x in d.values.tolist()],
+        "inverse": [repr(x) for x in d.inverse.ravel(order="F").tolist()],
+        "phi": [[repr(x) for x in d.phi[k].ravel(order="F").tolist()] for k in range(3)],
+    }
+    if width == 12:
+        entry["jordan"] = [{"row": i, "column": c, "value": repr(float(g))} for i, c, g in d.jordan]
+    elif d.jordan:
+        raise EvalDataFileError(f"valence {d.n}: the Catmull-Clark layout has no place for a Jordan block")
+    return entry
 
-    A ball that contains 0 and is narrower than ``10^-(digits + 20)`` is written ``"0"`` (the
-    entries are of order 1; the exact zeros come from symmetries).
+
+def decimal_valence(scheme, n: int, digits: int, max_prec: int = 1 << 14) -> tuple[int, dict]:
+    """``(precision, entry)``: one valence of the JSON form at ``digits > 17`` significant digits.
+
+    Every number is the exact value correctly rounded to ``digits`` digits in one step from its
+    Arb ball (:func:`~symdecomp.algebra.rounding.round_ball_decimal`), at the lowest precision
+    from ``max(1200, 3.33 digits + 64)`` bits (doubling) where every ball rounds; exact zeros of
+    the symmetries (balls inside ``(-2^-1075, 2^-1075)``) are ``"0"``.
     """
-    tiny = flint.arb(10) ** (-(digits + 20))
+    prec = max(ZERO_PREC, int(3.33 * digits) + 64)
+    while True:
+        try:
+            data = patch_eigendata(scheme, n, prec)
+            with flint.ctx.workprec(prec):
+                entry = _decimal_entry(data, digits)
+        except PrecisionError:
+            entry = None
+        if entry is not None:
+            return prec, entry
+        if prec >= max_prec:
+            raise PrecisionError(f"valence {n}: the eigen-data did not round to {digits} digits at {prec} bits")
+        prec *= 2
 
-    def dec(x) -> str:
-        if x.contains(0) and x.rad() < tiny:
-            return "0"
-        if x.rel_accuracy_bits() < digits * 3.33 + 4:
-            raise EvalDataFileError(f"a ball is too wide for {digits} digits; raise the working precision")
-        return x.str(digits, radius=False)
 
-    valences = []
-    ns, loop = [], False
-    for d in data:
-        ns.append(d.n)
-        k, width = d.size, d.phi[0].ncols()
-        loop = width == 12
-        entry = {
-            "n": d.n,
-            "values": [dec(x) for x in d.values],
-            "inverse": [dec(d.inverse[i, j]) for j in range(k) for i in range(k)],
-            "phi": [[dec(t[i, l]) for l in range(width) for i in range(k)] for t in d.phi],
-        }
-        if loop:
-            entry["jordan"] = [{"row": i, "column": c, "value": dec(g)} for i, c, g in d.jordan]
-        elif d.jordan:
-            raise EvalDataFileError(f"valence {d.n}: the Catmull-Clark layout has no place for a Jordan block")
-        valences.append(entry)
-    _check_sequence(ns)
-    if loop:
-        return {"format": LOOP_FORMAT, "scheme": scheme, "nmax": ns[-1], "digits": digits, "layout": LOOP_LAYOUT, "valences": valences}
-    return {"format": FORMAT, "nmax": ns[-1], "digits": digits, "valences": valences}
+def _decimal_entry(d: PatchEigenData, digits: int) -> dict | None:
+    width = d.phi[0].ncols()
+    order = lambda m: [m[i, j] for j in range(m.ncols()) for i in range(m.nrows())]  # noqa: E731 - column-major
+    groups = [list(d.values), order(d.inverse), *(order(t) for t in d.phi), [g for *_, g in d.jordan]]
+    texts = []
+    for balls in groups:
+        texts.append([round_ball_decimal(x, digits) for x in balls])
+        if None in texts[-1]:
+            return None
+    entry = {"n": d.n, "values": texts[0], "inverse": texts[1], "phi": texts[2:5]}
+    if width == 12:
+        entry["jordan"] = [{"row": i, "column": c, "value": v} for (i, c, _), v in zip(d.jordan, texts[5])]
+    elif d.jordan:
+        raise EvalDataFileError(f"valence {d.n}: the Catmull-Clark layout has no place for a Jordan block")
+    return entry
+
+
+def json_chunks(entries: Iterable[dict], nmax: int, digits: int, scheme: str | None = None) -> Iterator[str]:
+    """The JSON document piece by piece, one valence per line, from :func:`json_valence` entries (or the
+    decimal ones of :func:`decimal_valence`) for ``3..nmax`` in order.
+
+    The format (Catmull-Clark or Loop) follows from the first valence: 12 box-spline coefficients
+    per sub-patch (Loop, with ``"jordan"``) or 16 (Catmull-Clark).
+    """
+    ns = []
+    for entry in entries:
+        ns.append(entry["n"])
+        if entry["n"] != len(ns) + 2:
+            _check_sequence(ns)
+        if len(ns) == 1:
+            loop = "jordan" in entry
+            head = {"format": LOOP_FORMAT, "scheme": scheme} if loop else {"format": FORMAT}
+            head.update({"nmax": nmax, "digits": digits})
+            if loop:
+                head["layout"] = LOOP_LAYOUT
+            yield json.dumps(head)[:-1] + ', "valences": [\n'
+        yield ("" if len(ns) == 1 else ",\n") + json.dumps(entry, separators=(",", ":"))
+    if not ns or ns[-1] != nmax:
+        _check_sequence(ns + [nmax + 1] if ns else [])
+    yield "\n]}\n"
 
 
 def read_json(path) -> dict[int, RoundedEigenData]:
@@ -162,5 +230,3 @@ def read_json(path) -> dict[int, RoundedEigenData]:
     return out
 
 
-def dumps(document: dict) -> str:
-    return json.dumps(document, indent=1) + "\n"

@@ -311,6 +311,7 @@ def triangle_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     size = n + 6
     column = {index[lab]: c for c, lab in enumerate(labels[:size])}
     exprs = {sym: sp.sympify(w, strict=True) for sym, w in ring.weights.items()}
+    exact: dict = {}  # the few distinct centre expressions, each made exact once (not once per row)
     sparse = []
     for lab in labels:
         row = {}
@@ -318,7 +319,9 @@ def triangle_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
             if c not in column:
                 raise InvalidSchemeError(f"scheme {scheme.name!r}: the refined patch point {lab} depends on a point beyond the {size} control points")
             if not isinstance(w, Fraction):
-                w = _exact_weight(sp.sympify(w, strict=True).xreplace(exprs), n)
+                if w not in exact:
+                    exact[w] = _exact_weight(sp.sympify(w, strict=True).xreplace(exprs), n)
+                w = exact[w]
             row[column[c]] = w
         sparse.append(row)
     return _assemble(n, sparse, _triangle_subpatch_rows(n, labels), size, TRIANGLE)

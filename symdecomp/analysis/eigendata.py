@@ -49,8 +49,8 @@ from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, circulant_weights, column_group, trig_table
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_valence
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import check_bits, check_valence
 
 __all__ = [
     "NotDiagonalizableError",  # from symdecomp.algebra.small_eigen
@@ -131,9 +131,10 @@ def patch_eigendata(scheme: Scheme, n: int, prec: int = 128) -> PatchEigenData:
     """The eigenstructure of the patch matrix at valence ``n`` in Arb balls at ``prec`` bits.
 
     Raises :class:`NotDiagonalizableError` when there is no eigenvector basis, and
-    :class:`PrecisionError` when ``prec`` is too low to decide a sign on the way.
+    :class:`PrecisionError` when ``prec`` is too low to decide a sign on the way. ``prec``: ``16..MAX_BITS`` bits.
     """
-    n = check_valence(n)
+    check_scheme(scheme)
+    n, prec = check_valence(n), check_bits(prec)
     try:
         with flint.ctx.workprec(prec):
             return _eigendata(patch_matrices(scheme, n), prec)
@@ -355,8 +356,10 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
     start; anything left (Loop's cyclotomic 1-ring) makes the next try a whole one at 1200 bits.
 
     Every float64 returned is the correctly rounded value of the exact number, whose Arb ball
-    is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits.
+    is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits (both ``16..MAX_BITS``).
     """
+    check_scheme(scheme)
+    n, prec, max_prec = check_valence(n), check_bits(prec), check_bits(max_prec, "max_prec")
     while True:
         try:
             data = patch_eigendata(scheme, n, prec)

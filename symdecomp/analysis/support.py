@@ -66,7 +66,8 @@ from symdecomp.algebra.numbers import to_fraction, to_sympy
 from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.schemes.refinement import mesh_rules, refine
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.schemes.scheme import Scheme, check_scheme, subdivision_matrix
+from symdecomp.validate import cached, check_valence
 
 __all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme"]
 
@@ -79,7 +80,7 @@ class Region(enum.Enum):
     OUTSIDE = "outside"
 
 
-@cache
+@cached(scheme=check_scheme, valence=check_valence)
 def limit_mask(scheme: Scheme, valence: int) -> tuple[sp.Expr, ...]:
     """The limit mask at a vertex of this valence: the left eigenvector of eigenvalue 1 of the
     exact subdivision matrix, normalised to sum 1, in the order ``(O, a_0.., b_0..)``.

@@ -15,17 +15,16 @@ c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
 
 import sympy as sp
 
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix
 from symdecomp.errors import FrequencyOutOfRangeError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_frequency, check_valence
+from symdecomp.validate import cached, check_frequency, check_valence
 
 __all__ = [
     "TangentEigenvalues",
@@ -62,7 +61,7 @@ class TangentEigenvalues:
         return self.dominant.subs(subs), self.subdominant.subs(subs)
 
 
-@cache
+@cached(scheme=check_scheme)
 def tangent_eigenvalues(scheme: Scheme) -> TangentEigenvalues:
     """Derive the closed-form eigenvalues of ``M_j`` for ``scheme`` (Eq. 34)."""
     M = per_frequency_matrix(scheme)

@@ -189,7 +189,8 @@ def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None
     Computed on ``d * T S T^-1`` (integer, see above) and rescaled:
     ``chi_S(lambda) = d^-(2n+1) chi_A(d lambda)``. No block structure is used.
     """
-    size = 2 * check_valence(n) + 1
+    n = check_valence(n)
+    size = 2 * n + 1
     # a first estimate before anything is built (entries of about 2 log2(n) + 8 bits), then the real one
     check_memory(charpoly_memory(size, 2 * n.bit_length() + 8), f"the exact characteristic polynomial at n = {n}")
     return _rational_charpoly(sparse_subdivision_matrix(scheme, n, parameters), size, f"at n = {n}")

@@ -170,6 +170,7 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     ``1/4`` three times) are exact up to that rounding. ``parameters`` gives values for free
     parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
     """
+    check_scheme(scheme)
     n = check_valence(n)
     digits = check_digits(digits)
     if n < scheme.minimum_valence():

@@ -24,7 +24,7 @@ from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import cached, check_frequency, check_valence
+from symdecomp.validate import cached, check_frequency, check_int, check_valence
 
 __all__ = [
     "TangentEigenvalues",
@@ -115,6 +115,8 @@ def invariant_ratio_at(scheme: Scheme, n: int, j: int = 1) -> sp.Expr:
 
 def invariant_ratio_limit(scheme: Scheme, j: int = 1) -> sp.Expr:
     """``lim_{n -> oo}`` of the ratio of Eq. 39 at fixed ``j``, computed by ``sympy.limit``."""
+    check_scheme(scheme)
+    j = check_int(j, "frequency j", minimum=1, error=FrequencyOutOfRangeError)
     m = sp.Symbol("m", positive=True)
     value = invariant_ratio(scheme).subs(_omega_and_cos(m, sp.Integer(j)))
     return sp.simplify(sp.limit(value, m, sp.oo))

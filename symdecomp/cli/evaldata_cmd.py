@@ -14,8 +14,18 @@ from __future__ import annotations
 import sys
 
 from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
-from symdecomp.cli.common import Once, add_scheme_option, digits, positive_int, print_json, progress, valence_range
-from symdecomp.errors import EvalDataFileError
+from symdecomp.cli.common import (
+    Once,
+    add_scheme_option,
+    digits,
+    flag,
+    given,
+    positive_int,
+    print_json,
+    progress,
+    valence_range,
+)
+from symdecomp.errors import EvalDataFileError, InvalidInputError
 from symdecomp.output.evaldata import binary_bytes, check_writable, dumps, json_document, write_atomic
 from symdecomp.schemes.lattice import PAPER_LATTICE
 
@@ -33,15 +43,26 @@ def register(sub) -> None:
                    help="valences 3..N (the binary file starts at 3)")
     p.add_argument("--out", action=Once, required=True, metavar="FILE", help="output file (written atomically)")
     p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary", help="binary (default) or json")
-    p.add_argument("--digits", type=digits(), action=Once, default=20, help="significant digits in the JSON form (default 20)")
+    p.add_argument("--digits", type=digits(), action=Once, default=20,
+                   help="significant digits in the JSON form (default 20; --format json only)")
     p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=2,
-                   help="worker processes for the binary file (default 2)")
-    p.add_argument("--json", action="store_true", help="print a JSON summary")
+                   help="worker processes for the binary file (default 2; binary format only)")
+    flag(p, "--json", help="print a JSON summary")
     add_scheme_option(p)
     p.set_defaults(func=run)
 
 
+def _refuse_ignored(args) -> None:
+    """An option the chosen format would ignore is refused, not dropped: --digits is JSON's, --jobs the binary file's."""
+    if args.format == "binary" and given(args, "digits"):
+        raise InvalidInputError("--digits applies to --format json only: the binary file holds float64 values, each "
+                                "correctly rounded")
+    if args.format == "json" and given(args, "jobs"):
+        raise InvalidInputError("--jobs applies to the binary format only: --format json computes the valences in one process")
+
+
 def run(args) -> int:
+    _refuse_ignored(args)
     ns = args.n
     if ns[0] != 3:
         raise EvalDataFileError(f"--n {ns[0]}:{ns[-1]}: the file holds valences 3..N; give --n 3:{ns[-1]}")

@@ -27,7 +27,7 @@ from symdecomp import validate
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.errors import InvalidSchemeError, UnsupportedExpressionError
-from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, subdivision_entries
+from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, check_scheme, subdivision_entries
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_memory, check_valence
 
@@ -113,6 +113,7 @@ def sparse_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None
     :func:`symdecomp.schemes.scheme.subdivision_entries` with each weight evaluated exactly
     as a FLINT rational: ``O(n)`` entries, no block structure.
     """
+    check_scheme(scheme)
     n = scheme.fitting_valence(n)
     subs = parameter_values(scheme, parameters)
     return subdivision_entries(scheme, n, _weight_evaluator(scheme, subs)(n))

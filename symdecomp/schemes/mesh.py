@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 
 from symdecomp.errors import InvalidMeshError
-from symdecomp.validate import check_int, check_valence
+from symdecomp.validate import check_int, check_memory, check_valence
 
 __all__ = [
     "InvalidMeshError", "QuadMesh", "TriangleMesh", "ring_mesh", "ring_mesh_labels", "cube_mesh",
@@ -217,6 +217,7 @@ def _ring_chart(n: int, rings: int, ring_labels: Callable):
     n = check_valence(n)
     if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or rings < 1:
         raise InvalidMeshError(f"rings must be a positive integer, got {rings!r}")
+    check_memory(n * int(rings) ** 2 * 512, f"a mesh of {rings} rings around a vertex of valence {n}")
     labels = ring_labels(n, rings)
     ident = {lab: i for i, lab in enumerate(labels)}
 

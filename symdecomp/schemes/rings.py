@@ -36,7 +36,7 @@ import sympy as sp
 from symdecomp.algebra.numbers import to_fraction, to_sympy
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
-from symdecomp.schemes.scheme import Scheme, subdivision_entries
+from symdecomp.schemes.scheme import Scheme, check_scheme, subdivision_entries
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
@@ -151,6 +151,7 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
     when they are rational (used to read the block structure for symbolic ``n``; needs ``n``
     other than the regular valence).
     """
+    check_scheme(scheme)
     n, rings = check_valence(n), check_rings(rings)
     if scheme.parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; substitute values first")

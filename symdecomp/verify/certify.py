@@ -58,7 +58,7 @@ from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derive
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_digits, check_int, check_valence
@@ -248,6 +248,7 @@ def certify(
     a wrong one). ``digits``: significant digits of the printed values. ``max_prec``: the
     largest Arb precision (bits) tried when clustering or refuting.
     """
+    check_scheme(scheme)
     n = check_valence(n)
     digits = check_digits(digits)
     max_prec = check_int(max_prec, "max_prec", minimum=128, maximum=1 << 20)

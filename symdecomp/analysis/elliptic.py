@@ -226,7 +226,7 @@ def elliptic_defect_table(scheme: Scheme, valences, *, digits: int = 20) -> tupl
     >>> [r.texts[2] for r in elliptic_defect_table(catmull_clark(), [3, 4, 5], digits=6)]
     ['-0.00151292', '0.0', '0.0199873']
     """
-    if scheme.parameters:
+    if check_scheme(scheme).parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
     digits = check_digits(digits)
     valences = [check_valence(n) for n in valences]

@@ -61,7 +61,7 @@ from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_v
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_digits, check_int, check_valence
+from symdecomp.validate import check_bits, check_digits, check_valence
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
 __all__ = ["SymmetricFunctions", "symmetric_functions", "Certificate", "certify", "closed_form_characteristic_value"]
@@ -251,7 +251,7 @@ def certify(
     check_scheme(scheme)
     n = check_valence(n)
     digits = check_digits(digits)
-    max_prec = check_int(max_prec, "max_prec", minimum=128, maximum=1 << 20)
+    max_prec = check_bits(max_prec, "max_prec", minimum=128)
     subs = parameter_values(scheme, parameters)
     cf = closed_forms or derived_closed_forms(scheme)
     chi = characteristic_polynomial(scheme, n, subs)

@@ -36,6 +36,7 @@ from symdecomp.errors import (
     InvalidExpressionError,
     InvalidInputError,
     InvalidSchemeError,
+    InvalidTypeError,
     InvalidValenceError,
     ResourceLimitError,
 )
@@ -43,6 +44,7 @@ from symdecomp.expressions import exact_value
 
 __all__ = [
     "check_int",
+    "check_type",
     "check_valence",
     "check_frequency",
     "check_digits",
@@ -108,6 +110,18 @@ def check_int(value, argument: str, *, minimum: int | None = None, maximum: int 
     if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
         why = f" ({reason})" if reason and maximum is not None and value > maximum else ""
         raise error(f"{argument} must be an integer{bounds}, got {value}{why}")
+    return value
+
+
+def check_type(value, kind: type | tuple[type, ...], argument: str, *, hint: str = ""):
+    """``value`` if it is an instance of ``kind``, else :class:`~symdecomp.errors.InvalidTypeError` naming ``argument``.
+
+    ``hint`` says where such a value comes from (e.g. ``"catmull_clark(), loop()"``).
+    """
+    if not isinstance(value, kind):
+        names = " or ".join(k.__name__ for k in (kind if isinstance(kind, tuple) else (kind,)))
+        raise InvalidTypeError(f"{argument} must be a {names}{f' ({hint})' if hint else ''}, got {value!r:.60} "
+                               f"({type(value).__name__})")
     return value
 
 

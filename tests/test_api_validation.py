@@ -11,14 +11,29 @@ numpy integer is as good as an ``int``.
 
 from __future__ import annotations
 
+import functools
+import importlib
 import inspect
+import pkgutil
 from fractions import Fraction
 
 import numpy as np
 import pytest
 
 import symdecomp as sd
+from symdecomp.algebra.triangle_bezier import bezier_indices
+from symdecomp.analysis.components import initial_vector_condition
+from symdecomp.analysis.elliptic import scale_ratio_squared
+from symdecomp.analysis.evolution import subdivision_matrix_numeric
+from symdecomp.analysis.frequency import one_ring_matrices
+from symdecomp.analysis.ring_spectrum import frequency_factors
+from symdecomp.analysis.support import limit_mask
+from symdecomp.analysis.support_window import window
+from symdecomp.analysis.tuning import eigenvalue_quadratic, ratio_target
 from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError, InvalidTypeError, SymdecompError
+from symdecomp.schemes.box_spline import regular_limit_mask, regular_patch
+from symdecomp.verify.certify import symmetric_functions
+from symdecomp.verify.oracle import toolkit_predictions
 
 CC, LOOP = sd.catmull_clark(), sd.loop()
 FREE = sd.catmull_clark(sd.symbols.alpha, sd.symbols.beta)
@@ -84,6 +99,12 @@ INTEGERS = [
     (sd.fourier_matrix, "n", dict(), 5, 1, False),
     (sd.circ_from_offsets, "n", dict(offsets={0: 1}), 5, 1, False),
     (sd.circulant_eigenvalue, "n", dict(offsets={0: 1}, k=1), 5, 1, False),
+    # cached functions of the subpackages
+    (limit_mask, "valence", dict(scheme=CC), 4, 3, False),
+    (subdivision_matrix_numeric, "n", dict(scheme=CC), 5, 3, False),
+    (toolkit_predictions, "n", dict(), 5, 3, False),
+    (bezier_indices, "degree", dict(), 4, 0, True),
+    (window, "rings", dict(), 2, 1, True),
 ]
 
 #: ``(function, the other arguments)`` of the functions that take a scheme.
@@ -129,6 +150,22 @@ SCHEMES = [
     (sd.jordan_block_size, dict(n=5, eigenvalue=1)),
     (sd.jordan_vertex_weights, dict(n=5, eigenvalue=Fraction(3, 8))),
     (sd.check_claim, dict(label="Eq. 1")),
+    # cached functions of the subpackages
+    (one_ring_matrices, dict()),
+    (scale_ratio_squared, dict()),
+    (initial_vector_condition, dict()),
+    (limit_mask, dict(valence=4)),
+    (subdivision_matrix_numeric, dict(n=5)),
+    (eigenvalue_quadratic, dict()),
+    (ratio_target, dict()),
+    (regular_limit_mask, dict()),
+    (regular_patch, dict()),
+]
+
+#: ``(function, argument, a good value)`` of the cached functions that take a computed object.
+OBJECTS = [
+    (frequency_factors, "blocks", sd.ring_blocks(LOOP)),
+    (symmetric_functions, "cf", sd.derived_closed_forms(CC)),
 ]
 
 #: The argument names the tables must cover wherever a public function has them.
@@ -173,6 +210,35 @@ def test_what_is_not_a_scheme_is_refused(function, others):
     for value in NOT_SCHEMES[default_is_none:]:
         with pytest.raises(InvalidTypeError, match="scheme"):
             function(**others, scheme=value)
+
+
+@pytest.mark.parametrize("function, argument, good", OBJECTS, ids=[f.__name__ for f, *_ in OBJECTS])
+def test_what_is_not_the_computed_object_is_refused_before_the_cache(function, argument, good):
+    function(good)
+    for value in (None, "x", 5, CC):
+        with pytest.raises(InvalidTypeError, match=argument.replace("cf", "closed forms")):
+            function(value)
+
+
+def _modules():
+    yield sd
+    for info in pkgutil.walk_packages(sd.__path__, "symdecomp."):
+        if not info.name.endswith("__main__"):
+            yield importlib.import_module(info.name)
+
+
+def test_no_public_function_is_a_bare_cache_and_every_checked_one_is_walked():
+    """A bare ``functools`` cache answers a float from an integer's entry: public caches are ``validate.cached``."""
+    walked = {f.__name__ for f, *_ in INTEGERS + SCHEMES + OBJECTS}
+    bare, unwalked = [], []
+    for module in _modules():
+        for name in getattr(module, "__all__", ()):
+            obj = getattr(module, name, None)
+            if isinstance(obj, functools._lru_cache_wrapper):
+                bare.append(f"{module.__name__}.{name}")
+            elif hasattr(obj, "cache_info") and obj.__name__ not in walked:
+                unwalked.append(f"{module.__name__}.{name}")
+    assert bare == [] and unwalked == []
 
 
 def _public_functions():

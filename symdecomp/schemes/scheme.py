@@ -37,7 +37,7 @@ from symdecomp.symbols import Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_memory, check_valence, parameter_values
+from symdecomp.validate import check_memory, check_type, check_valence, parameter_values
 
 __all__ = [
     "Stencil",
@@ -295,10 +295,7 @@ def _check_parts(scheme: Scheme) -> None:
 def check_scheme(scheme, argument: str = "scheme") -> Scheme:
     """``scheme`` if it is a :class:`Scheme`, else :class:`~symdecomp.errors.InvalidTypeError` (the check of every
     public function that takes a scheme, run before any cache)."""
-    if not isinstance(scheme, Scheme):
-        raise InvalidTypeError(f"{argument} must be a Scheme (catmull_clark(), loop(), load_scheme(NAME_OR_FILE)), "
-                               f"got {scheme!r:.60} ({type(scheme).__name__})")
-    return scheme
+    return check_type(scheme, Scheme, argument, hint="catmull_clark(), loop(), load_scheme(NAME_OR_FILE)")
 
 
 def _to_parameters(scheme: Scheme) -> None:

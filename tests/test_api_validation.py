@@ -306,7 +306,7 @@ def test_scheme_parts_of_the_wrong_kind_are_refused():
         sd.Scheme("x", {"center": 1}, CC.face_rule, CC.vertex_rule)
     with pytest.raises(InvalidTypeError, match="vertex_rule must be a VertexRule"):
         sd.Scheme("x", CC.edge_rule, CC.face_rule, (1, 0, 0))
-    with pytest.raises(InvalidTypeError, match="name must be a string"):
+    with pytest.raises(InvalidTypeError, match="scheme name must be a str"):
         sd.Scheme(5, CC.edge_rule, CC.face_rule, CC.vertex_rule)
     with pytest.raises(InvalidTypeError, match="parameters"):
         sd.Scheme("x", CC.edge_rule, CC.face_rule, CC.vertex_rule, parameters=("alpha",))

@@ -278,15 +278,9 @@ class Scheme:
 
 def _check_parts(scheme: Scheme) -> None:
     """Refuse parts of the wrong kind (a dict for a rule, a number for the name) with :class:`InvalidTypeError`."""
-    if not isinstance(scheme.name, str):
-        raise InvalidTypeError(f"scheme name must be a string, got {scheme.name!r} ({type(scheme.name).__name__})")
-    parts = (("edge_rule", Stencil, False), ("face_rule", Stencil, True), ("vertex_rule", VertexRule, False))
-    for part, kind, optional in parts:
-        value = getattr(scheme, part)
-        if not isinstance(value, kind) and not (optional and value is None):
-            raise InvalidTypeError(f"scheme {scheme.name!r}: {part} must be a {kind.__name__}"
-                                   f"{' or None' if optional else ''} (see {kind.__name__}.from_weights), "
-                                   f"got {type(value).__name__}")
+    check_type(scheme.name, str, "scheme name")
+    for part, kind in (("edge_rule", Stencil), ("face_rule", (Stencil, type(None))), ("vertex_rule", VertexRule)):
+        check_type(getattr(scheme, part), kind, f"scheme {scheme.name!r}: {part}", hint="see Stencil.from_weights, VertexRule.affine")
     if not isinstance(scheme.parameters, (tuple, list)) or not all(isinstance(p, sp.Symbol) for p in scheme.parameters):
         raise InvalidTypeError(f"scheme {scheme.name!r}: parameters must be a tuple of sympy symbols, got {scheme.parameters!r}")
     object.__setattr__(scheme, "parameters", tuple(scheme.parameters))

@@ -351,8 +351,10 @@ def test_cached_keeps_the_checks_before_the_lookup():
         calls.append(n)
         return 2 * n * rings + 1
 
-    assert ring_size(5) == ring_size(np.int64(5)) == ring_size(5, 1) == 11
-    assert calls == [5] and type(calls[0]) is int
+    assert ring_size(5) == ring_size(np.int64(5)) == ring_size(n=np.int32(5)) == 11
+    assert calls[0] == 5 and all(type(n) is int for n in calls)
     with pytest.raises(InvalidInputError):
         ring_size(5.0)
-    assert ring_size.cache_info().currsize == 1
+    with pytest.raises(InvalidInputError):
+        ring_size(n=Fraction(5))
+    assert ring_size(5, 2) == 21

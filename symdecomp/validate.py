@@ -23,9 +23,11 @@ symdecomp.errors.InvalidInputError: levels must be an integer, got True (bool)
 
 from __future__ import annotations
 
+import functools
+import inspect
 import numbers
 import os
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 
 import sympy as sp
 
@@ -34,6 +36,7 @@ from symdecomp.errors import (
     InvalidExpressionError,
     InvalidInputError,
     InvalidSchemeError,
+    InvalidTypeError,
     InvalidValenceError,
     ResourceLimitError,
 )
@@ -41,15 +44,21 @@ from symdecomp.expressions import exact_value
 
 __all__ = [
     "check_int",
+    "check_type",
     "check_valence",
     "check_frequency",
     "check_digits",
     "check_precision",
     "check_levels",
+    "check_bits",
+    "check_depth",
+    "cached",
     "parameter_values",
     "check_memory",
     "MAX_DIGITS",
     "MAX_DPS",
+    "MAX_BITS",
+    "MAX_DEPTH",
     "MEMORY_LIMIT",
 ]
 
@@ -61,6 +70,12 @@ MAX_DPS = 1000
 #: Largest memory (bytes) a single dense step may be estimated to need before it is refused:
 #: half the machine's physical memory, and never more than 16 GiB.
 MEMORY_LIMIT = None  # computed lazily by _memory_limit()
+#: Most bits of working precision of a ball computation (about 20 000 decimal digits; one Arb
+#: eigen-decomposition at this precision takes minutes).
+MAX_BITS = 1 << 16
+#: Deepest subdivision of a Bezier net in a sign test: each level splits a piece in four, so depth
+#: 12 is 16 million pieces.
+MAX_DEPTH = 12
 
 
 def _kind(value) -> str:
@@ -81,6 +96,8 @@ def check_int(value, argument: str, *, minimum: int | None = None, maximum: int 
 
     ``reason`` (shown when ``value`` is above ``maximum``) says why the bound is there.
     """
+    if type(value) is int and (minimum is None or value >= minimum) and (maximum is None or value <= maximum):
+        return value  # the common case, on hot paths (cached functions check before their lookup)
     bounds = ""
     if minimum is not None and maximum is not None:
         bounds = f" with {minimum} <= {argument.split()[-1]} <= {maximum}"
@@ -95,6 +112,18 @@ def check_int(value, argument: str, *, minimum: int | None = None, maximum: int 
     if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
         why = f" ({reason})" if reason and maximum is not None and value > maximum else ""
         raise error(f"{argument} must be an integer{bounds}, got {value}{why}")
+    return value
+
+
+def check_type(value, kind: type | tuple[type, ...], argument: str, *, hint: str = ""):
+    """``value`` if it is an instance of ``kind``, else :class:`~symdecomp.errors.InvalidTypeError` naming ``argument``.
+
+    ``hint`` says where such a value comes from (e.g. ``"catmull_clark(), loop()"``).
+    """
+    if not isinstance(value, kind):
+        names = " or ".join(k.__name__ for k in (kind if isinstance(kind, tuple) else (kind,)))
+        raise InvalidTypeError(f"{argument} must be a {names}{f' ({hint})' if hint else ''}, got {value!r:.60} "
+                               f"({type(value).__name__})")
     return value
 
 
@@ -156,6 +185,64 @@ def check_levels(levels, argument: str = "levels", *, minimum: int = 0, maximum:
                  reason: str = "") -> int:
     """A number of refinement levels or steps: an integer in ``[minimum, maximum]``."""
     return check_int(levels, argument, minimum=minimum, maximum=maximum, reason=reason)
+
+
+def check_bits(prec, argument: str = "prec", *, minimum: int = 16, maximum: int = MAX_BITS) -> int:
+    """Bits of working precision of a ball computation: an integer in ``[minimum, MAX_BITS]``."""
+    return check_int(prec, argument, minimum=minimum, maximum=maximum,
+                     reason="an Arb computation at this precision takes minutes per step")
+
+
+def check_depth(depth, argument: str = "max_depth", *, maximum: int = MAX_DEPTH) -> int:
+    """Depth of a subdivision of Bezier nets: an integer in ``[0, MAX_DEPTH]``."""
+    return check_int(depth, argument, minimum=0, maximum=maximum,
+                     reason="each level splits a piece in four: depth 12 is 16 million pieces")
+
+
+def cached(maxsize: int | None = None, **checks: Callable):
+    """A ``functools.lru_cache`` keyed on the checked arguments: the checks run before the lookup.
+
+    A bare cache answers ``f(scheme, 5.0)`` from the entry of ``f(scheme, 5)`` (``5 == 5.0`` and
+    ``hash(5) == hash(5.0)``) without running the function's own checks. Here ``checks[name]``
+    runs first on the argument ``name`` (defaults filled in), raising the package's error or
+    returning the normalized value (a numpy integer as ``int``), and the cache sees only those.
+
+    >>> @cached(n=check_valence)
+    ... def size(n):
+    ...     return 2 * n + 1
+    >>> size(5), size.cache_info().currsize
+    (11, 1)
+    >>> size(5.0)
+    Traceback (most recent call last):
+    ...
+    symdecomp.errors.InvalidValenceError: valence n must be an integer >= 3, got 5.0 (float)
+    """
+
+    def decorate(function):
+        names = list(inspect.signature(function).parameters)
+        unknown = set(checks) - set(names)
+        if unknown:  # pragma: no cover - a typo in a decorator
+            raise TypeError(f"{function.__qualname__} has no arguments {sorted(unknown)}")
+        store = functools.lru_cache(maxsize)(function)
+        where = tuple((names.index(name), name, check) for name, check in checks.items())
+
+        @functools.wraps(function)
+        def checked(*args, **kwargs):
+            # by position or by keyword, without binding the signature (a hot path: a cache hit costs microseconds);
+            # an argument left at its default is the function's own choice and needs no check
+            args = list(args)
+            for index, name, check in where:
+                if index < len(args):
+                    args[index] = check(args[index])
+                elif name in kwargs:
+                    kwargs[name] = check(kwargs[name])
+            return store(*args, **kwargs)
+
+        checked.cache_clear = store.cache_clear
+        checked.cache_info = store.cache_info
+        return checked
+
+    return decorate
 
 
 def parameter_values(declared: Iterable[sp.Symbol], given: Mapping | None, *, owner: str = "scheme",

@@ -67,6 +67,12 @@ OUT_OF_RANGE = [
 
 #: Wrong options, repeated options, contradictions, unknown names.
 MISUSE = [
+    # an option the chosen mode would ignore is refused, not dropped
+    (["evaldata", "--n", "3:4", "--out", "o.bin", "--digits", "50"], "--digits applies to --format json only"),
+    (["evaldata", "--n", "3:4", "--out", "o.bin", "--format", "binary", "--digits", "50"], "--digits applies"),
+    (["evaldata", "--n", "3:4", "--out", "o.json", "--format", "json", "--jobs", "2"], "--jobs applies to the binary"),
+    (["evaldata", "--n", "3:4", "--out", "o.bin", "--json", "--json"], "more than once"),
+    (["spectrum", "5", "--exact"], "--exact applies to the any-scheme route"),
     (["spectrum", "5", "--digits", "3", "--digits", "4"], "more than once"),
     (["spectrum", "5", "--json", "--json"], "more than once"),
     (["spectrum", "5", "--scheme", "catmull-clark", "--scheme", "catmull-clark"], "more than once"),

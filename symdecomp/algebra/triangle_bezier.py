@@ -22,12 +22,18 @@ from __future__ import annotations
 from functools import cache
 from math import factorial
 
+from symdecomp.validate import check_int
+
 __all__ = ["bezier_indices", "multinomial", "bernstein", "bezier_value", "bezier_derivative", "bezier_product"]
 
 
-@cache
 def bezier_indices(degree: int) -> tuple[tuple[int, int, int], ...]:
     """The ``(a, b, c)`` (powers of ``w, u, v``) of degree ``degree``, in coefficient order."""
+    return _indices(check_int(degree, "degree", minimum=0, maximum=64))
+
+
+@cache  # keyed on checked ints only: bezier_indices checks, and this module's own callers pass their checked degrees
+def _indices(degree: int) -> tuple[tuple[int, int, int], ...]:
     return tuple((degree - b - c, b, c) for c in range(degree + 1) for b in range(degree + 1 - c))
 
 

@@ -34,7 +34,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import cache
 
 import flint
 import sympy as sp
@@ -44,11 +43,11 @@ from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
 from symdecomp.errors import InternalError, InvalidInputError, NotApplicableError
 from symdecomp.schemes.full_matrix import characteristic_polynomial
-from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme
+from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, check_scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_valence, parameter_values
+from symdecomp.validate import cached, check_valence, parameter_values
 
 __all__ = [
     "ClosedFormCharpoly",
@@ -139,7 +138,7 @@ def to_fmpq_poly(expr, variable: sp.Symbol = LAM) -> flint.fmpq_poly:
     return flint.fmpq_poly(coeffs)
 
 
-@cache
+@cached(scheme=check_scheme)
 def closed_form_characteristic_polynomial(scheme: Scheme) -> ClosedFormCharpoly:
     """Derive ``det(x I - S)`` of ``scheme`` in closed form, symbolic in ``n`` and the weights.
 

@@ -21,7 +21,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import flint
 import mpmath
@@ -30,10 +29,10 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_valence
+from symdecomp.validate import cached, check_valence
 
 __all__ = ["ClosedForms", "ClosedFormLabel", "derived_closed_forms"]
 
@@ -109,7 +108,7 @@ class ClosedForms:
         return [mpmath.mpmathify(v) for v in out]
 
 
-@lru_cache(maxsize=32)
+@cached(32, scheme=check_scheme)
 def derived_closed_forms(scheme: Scheme) -> ClosedForms:
     """The closed forms that symdecomp derives for ``scheme`` (Eq. 34 and Eq. 43)."""
     ev = tangent_eigenvalues(scheme)

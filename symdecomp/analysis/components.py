@@ -24,7 +24,6 @@ found exactly, for every valence at once.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
 from math import gcd
 
 import mpmath
@@ -32,9 +31,10 @@ import sympy as sp
 
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.errors import NotApplicableError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import cached
 
 __all__ = ["ZETA", "InitialVectorCondition", "StartPoint", "initial_vector_condition", "root_of_unity_orders", "vanishes_at_root_of_unity"]
 
@@ -144,7 +144,7 @@ class InitialVectorCondition:
         return out
 
 
-@cache
+@cached(scheme=check_scheme)
 def initial_vector_condition(scheme: Scheme) -> InitialVectorCondition:
     """The exact condition for ``(1, zeta)`` to be an eigenvector of ``M(zeta^2)`` (module docstring)."""
     M = per_frequency_matrix(scheme).subs(OMEGA, ZETA**2)

@@ -23,7 +23,8 @@ import sympy as sp
 
 from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.expressions import exact_value
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.validate import check_valence
 
@@ -36,8 +37,9 @@ def jordan_vertex_weights(scheme: Scheme, n: int, eigenvalue) -> dict:
     Raises :class:`~symdecomp.errors.InvalidSchemeError` if the scheme does not have exactly
     two free parameters or the linear system has no unique solution.
     """
+    check_scheme(scheme)
     n = check_valence(n)
-    mu = sp.sympify(eigenvalue, strict=True)
+    mu = exact_value(eigenvalue, argument="eigenvalue")
     params = tuple(scheme.parameters)
     if len(params) != 2:
         raise NotApplicableError(
@@ -59,7 +61,7 @@ def jordan_block_size(scheme: Scheme, n: int, eigenvalue) -> int:
     ``0`` if it is not an eigenvalue.
     """
     A = sp.Matrix(recursion_matrix(scheme, check_valence(n)))
-    mu = sp.sympify(eigenvalue, strict=True)
+    mu = exact_value(eigenvalue, argument="eigenvalue")
     B = A - mu * sp.eye(3)
     ranks = [3] + [(B**k).rank() for k in range(1, 4)]
     if ranks[1] == 3:

@@ -50,8 +50,8 @@ from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, trig_table
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.parallel import ordered_map, pool_size
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_memory, check_valence
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import check_bits, check_memory, check_valence
 
 __all__ = [
     "NotDiagonalizableError", "PrecisionError", "PatchEigenData", "RoundedEigenData", "patch_eigendata", "certified_eigendata",
@@ -126,9 +126,10 @@ def patch_eigendata(scheme: Scheme, n: int, prec: int = 128) -> PatchEigenData:
     """The eigenstructure of the patch matrix at valence ``n`` in Arb balls at ``prec`` bits.
 
     Raises :class:`NotDiagonalizableError` when there is no eigenvector basis, and
-    :class:`PrecisionError` when ``prec`` is too low to decide a sign on the way.
+    :class:`PrecisionError` when ``prec`` is too low to decide a sign on the way. ``prec``: ``16..MAX_BITS`` bits.
     """
-    n = check_valence(n)
+    check_scheme(scheme)
+    n, prec = check_valence(n), check_bits(prec)
     try:
         with flint.ctx.workprec(prec):
             return _eigendata(patch_matrices(scheme, n), prec)
@@ -420,8 +421,10 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
     Jordan pairs at N = 3) makes the next try a whole one at 1200 bits.
 
     Every float64 returned is the correctly rounded value of the exact number, whose Arb ball
-    is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits.
+    is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits (both ``16..MAX_BITS``).
     """
+    check_scheme(scheme)
+    n, prec, max_prec = check_valence(n), check_bits(prec), check_bits(max_prec, "max_prec")
     while True:
         try:
             data = patch_eigendata(scheme, n, prec)

@@ -29,7 +29,7 @@ import sympy as sp
 from symdecomp.algebra.polygons import decompose
 from symdecomp.errors import InvalidInputError, InvalidPolygonError
 from symdecomp.schemes.ring import interleaved_polygon
-from symdecomp.validate import check_frequency
+from symdecomp.validate import check_digits, check_frequency
 
 __all__ = ["ring_components", "EllipseAxes", "ellipse_axes"]
 
@@ -90,6 +90,9 @@ def ellipse_axes(ring, j: int = 1, part: str = "a", *, digits: int | None = 30) 
     """
     M, n = _check_ring(ring)
     j = check_frequency(j, n)
+    digits = None if digits is None else check_digits(digits)
+    if part not in ("a", "b"):
+        raise InvalidInputError(f"part must be 'a' or 'b', got {part!r:.40}")
     if part not in ("a", "b"):
         raise InvalidInputError(f"part must be 'a' or 'b', got {part!r}")
     d = decompose(_ring_polygon(M, n))

@@ -28,7 +28,6 @@ Matrix([[-1/16, 1/32, 1/8]])
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
 
 import mpmath
 import sympy as sp
@@ -38,11 +37,11 @@ from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, r
 from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import InvalidInputError, NotApplicableError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, cos_theta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_digits, check_valence
+from symdecomp.validate import cached, check_digits, check_valence
 
 __all__ = [
     "MU",
@@ -122,7 +121,7 @@ def tangent_lambda(scheme: Scheme, frequency: int = 1) -> sp.Expr:
     return dominant.subs(cos_jtheta, c)
 
 
-@cache
+@cached(scheme=check_scheme)
 def scale_ratio_squared(scheme: Scheme) -> sp.Expr:
     """``|B^1/A^1|^2`` on the dominant eigenvector of ``M_1``, in ``c = cos(pi/n)``.
 
@@ -162,7 +161,7 @@ class NiceEllipticConditions:
     ratio_defect: sp.Expr
 
 
-@cache
+@cached(scheme=check_scheme)
 def nice_elliptic_conditions(scheme: Scheme) -> NiceEllipticConditions:
     """Derive both conditions and their defects for ``scheme``, closed forms in ``n``."""
     _, mu, third = recursion_eigenvalues(scheme)
@@ -227,7 +226,7 @@ def elliptic_defect_table(scheme: Scheme, valences, *, digits: int = 20) -> tupl
     >>> [r.texts[2] for r in elliptic_defect_table(catmull_clark(), [3, 4, 5], digits=6)]
     ['-0.00151292', '0.0', '0.0199873']
     """
-    if scheme.parameters:
+    if check_scheme(scheme).parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; substitute them first")
     digits = check_digits(digits)
     valences = [check_valence(n) for n in valences]

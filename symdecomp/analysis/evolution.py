@@ -17,7 +17,6 @@ complex numbers). One subdivision step is the exact matrix of the scheme applied
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 
 import numpy as np
 import sympy as sp
@@ -26,8 +25,8 @@ from symdecomp.algebra.circulant import fourier_row
 from symdecomp.algebra.polygons import decompose
 from symdecomp.errors import InvalidInputError, InvalidPolygonError, NotApplicableError
 from symdecomp.schemes.ring import interleaved_polygon
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
-from symdecomp.validate import check_valence
+from symdecomp.schemes.scheme import Scheme, check_scheme, subdivision_matrix
+from symdecomp.validate import cached, check_valence
 
 __all__ = [
     "as_ring_array",
@@ -99,7 +98,7 @@ def split_ring(ring) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return ring[0], ring[1 : n + 1], ring[n + 1 :]
 
 
-@lru_cache(maxsize=64)
+@cached(64, scheme=check_scheme, n=check_valence)
 def subdivision_matrix_numeric(scheme: Scheme, n: int) -> np.ndarray:
     """The exact subdivision matrix of ``scheme`` at valence ``n``, rounded once to double precision."""
     if scheme.parameters:

@@ -21,18 +21,17 @@ a Fourier mode at a symbolic row ``i``; nothing is typed in from the paper.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
 
 import mpmath
 import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation, root_of_unity
-from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.errors import InvalidSchemeError, NotApplicableError
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_frequency, check_valence
+from symdecomp.validate import cached, check_frequency, check_valence
 
 __all__ = [
     "CirculantBlocks",
@@ -73,12 +72,15 @@ class CirculantBlocks:
 
 def circulant_blocks(scheme: Scheme) -> CirculantBlocks:
     """The circulant blocks ``C_1..C_4`` of ``scheme`` read off its edge and face rules."""
+    if check_scheme(scheme).face_rule is None:
+        raise NotApplicableError(f"scheme {scheme.name!r} has no face rule: the four circulant blocks are the quad 1-ring's "
+                                 "(one_ring_matrices covers every mesh)")
     return CirculantBlocks(
         dict(scheme.edge_rule.a), dict(scheme.edge_rule.b), dict(scheme.face_rule.a), dict(scheme.face_rule.b)
     )
 
 
-@cache
+@cached(scheme=check_scheme)
 def per_frequency_matrix(scheme: Scheme) -> sp.ImmutableMatrix:
     """``M_j`` of Eq. 33 as a matrix of Laurent polynomials in ``omega = omega_n^j``.
 
@@ -103,7 +105,11 @@ def per_frequency_matrix_at(scheme: Scheme, n: int, j: int) -> sp.ImmutableMatri
     return sp.ImmutableMatrix(per_frequency_matrix(scheme).subs({OMEGA: w, N: n}).applyfunc(sp.expand))
 
 
-@cache
+def _valence_or_symbol(n):
+    return n if n is N else check_valence(n)
+
+
+@cached(scheme=check_scheme, n=_valence_or_symbol)
 def recursion_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
     """The ``3 x 3`` recursion matrix of Eq. 43, derived from the rules.
 
@@ -112,8 +118,6 @@ def recursion_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
     with ``sum_i a_i = n*abar``; rows 2 and 3 are the edge and face rules applied to
     constant polygons (their ``a``- and ``b``-weights summed). Symbolic in ``n`` by default.
     """
-    if n is not N:
-        n = check_valence(n)
     v = scheme.vertex_rule
     rows = [[v.center, N * v.each_a, N * v.each_b]]
     for rule in (scheme.edge_rule, scheme.face_rule):
@@ -122,7 +126,7 @@ def recursion_matrix(scheme: Scheme, n=N) -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix(matrix)
 
 
-@cache
+@cached(scheme=check_scheme)
 def one_ring_matrices(scheme: Scheme) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
     """``(M(omega), E_0)``: the 1-ring blocks for ``omega != 1`` and at frequency 0, on either mesh.
 

@@ -20,7 +20,6 @@ subdivision matrix in ``Q(zeta_4n)`` and compares with the prediction from ``M_1
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
 
 import mpmath
 import sympy as sp
@@ -31,11 +30,12 @@ from symdecomp.analysis.elliptic import tangent_lambda
 from symdecomp.analysis.frequency import per_frequency_matrix, valences_at_roots
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import InvalidInputError
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.expressions import exact_value
+from symdecomp.schemes.scheme import Scheme, check_scheme, subdivision_matrix
 from symdecomp.symbols import cos_jtheta, cos_theta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_valence
+from symdecomp.validate import cached, check_digits, check_levels, check_valence
 
 __all__ = [
     "hyperbolic_lambda",
@@ -47,6 +47,9 @@ __all__ = [
     "iterate_hyperbolic_ring",
     "apply_rational_matrix",
 ]
+
+#: Most subdivision steps :func:`iterate_hyperbolic_ring` takes (exact numbers grow with every step).
+MAX_STEPS = 100
 
 
 def hyperbolic_lambda(scheme: Scheme) -> sp.Expr:
@@ -71,7 +74,7 @@ class HyperbolicEquality:
     valences: tuple[int, ...]
 
 
-@cache
+@cached(scheme=check_scheme)
 def hyperbolic_equality(scheme: Scheme) -> HyperbolicEquality:
     """Decide ``lambda_2 = lambda_1^2`` for all ``n``.
 
@@ -103,7 +106,7 @@ def hyperbolic_ring(n: int, height=1) -> sp.ImmutableMatrix:
     ``(O, a_0..a_{n-1}, b_0..b_{n-1})`` of :func:`~symdecomp.schemes.scheme.subdivision_matrix`.
     """
     n = check_valence(n)
-    height = sp.sympify(height, strict=True)
+    height = exact_value(height, argument="height")
 
     def vertex(k):
         return [sp.cos(sp.pi * k / n), sp.sin(sp.pi * k / n), height * sp.cos(2 * sp.pi * k / n)]
@@ -165,11 +168,11 @@ def iterate_hyperbolic_ring(scheme: Scheme, n: int, steps: int = 4, *, digits: i
     ``X_1 omega^i``, ``Y_1 omega^i`` with ``(X_1, Y_1) = M_1^k (1, omega_2n)``; the heights are
     ``Re(X_2 omega^(2i))``, ``Re(Y_2 omega^(2i))`` with ``(X_2, Y_2) = M_2^k (1, omega_2n^2)``.
     """
-    n = check_valence(n)
-    if steps < 0:
-        raise InvalidInputError(f"steps must be >= 0, got {steps}")
-    K = CyclotomicField(4 * n)
+    check_scheme(scheme)
+    n, digits = check_valence(n), check_digits(digits)
+    steps = check_levels(steps, "steps", maximum=MAX_STEPS, reason="the exact numbers grow with every step")
     S = subdivision_matrix(scheme, n)
+    K = CyclotomicField(4 * n)
 
     def cos(k):  # cos(2 pi k/(4n))
         return (K.zeta(k) + K.zeta(-k)) / 2

@@ -26,7 +26,7 @@ the weight on ``O`` is 0.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache, cached_property
+from functools import cached_property
 
 import flint
 import mpmath
@@ -39,10 +39,10 @@ from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_digits, check_valence
+from symdecomp.validate import cached, check_digits, check_valence
 
 __all__ = ["INDEX", "LAMBDA1", "LimitMasks", "limit_masks", "MasksAtValence", "limit_masks_at", "check_masks_exactly"]
 
@@ -66,7 +66,7 @@ class LimitMasks:
     subdominant: sp.Expr
 
 
-@cache
+@cached(scheme=check_scheme)
 def limit_masks(scheme: Scheme) -> LimitMasks:
     """Derive the position and tangent masks of ``scheme`` for symbolic ``n``."""
     if scheme.parameters:
@@ -181,6 +181,7 @@ class MasksAtValence:
 
 def limit_masks_at(scheme: Scheme, n: int) -> MasksAtValence:
     """Evaluate :func:`limit_masks` at valence ``n`` (exact)."""
+    check_scheme(scheme)
     n = check_valence(n)
     if n < scheme.minimum_valence():
         raise InvalidSchemeError(f"scheme {scheme.name!r} needs valence >= {scheme.minimum_valence()}, got {n}")

@@ -29,7 +29,7 @@ import sympy as sp
 
 from symdecomp.algebra.cbmatrix import SymbolicCBMatrix, SymbolicCirculant
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
@@ -68,6 +68,7 @@ class BorderedCBMatrix:
 
 def subdivision_block_form(scheme: Scheme) -> BorderedCBMatrix:
     """The subdivision matrix of ``scheme`` as a bordered CB-matrix, symbolic in ``n`` (Section 6)."""
+    check_scheme(scheme)
     v = scheme.vertex_rule
     body = SymbolicCBMatrix(
         (

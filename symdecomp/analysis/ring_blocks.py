@@ -26,17 +26,17 @@ Matrix([[omega/8 + 3/8 + 1/(8*omega)]])
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
 
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_sympy
 from symdecomp.errors import InvalidSchemeError, NotApplicableError, SymdecompError
 from symdecomp.schemes.lattice import Lattice
-from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, ring_subdivision_matrix
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, check_rings, ring_subdivision_matrix
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import cached
 
 __all__ = ["RingBlocks", "ring_blocks", "read_blocks"]
 
@@ -132,7 +132,7 @@ def read_blocks(S: RingMatrix, scheme: Scheme) -> RingBlocks:
     return RingBlocks(scheme.name, scheme.lattice, S.rings, classes, centre, centre_row, centre_column, tuple(offsets), weights)
 
 
-@lru_cache(maxsize=32)
+@cached(32, scheme=check_scheme, rings=check_rings)
 def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
     """The block form of ``scheme``'s ``rings``-ring matrix, read at one valence and checked at two more.
 

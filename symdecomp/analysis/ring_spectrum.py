@@ -23,7 +23,7 @@ and the value are rational there, otherwise the Jordan structure is reported unk
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import partial
 
 import flint
 import sympy as sp
@@ -37,7 +37,7 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_valence
+from symdecomp.validate import cached, check_digits, check_type, check_valence
 
 __all__ = ["Factor", "FrequencyFactors", "frequency_factors", "RingEigenvalue", "RingSpectrum", "ring_spectrum", "acb_text"]
 
@@ -110,7 +110,7 @@ def _factors(charpoly: sp.Expr, gens) -> tuple[Factor, ...]:
     return tuple(out)
 
 
-@lru_cache(maxsize=32)
+@cached(32, blocks=partial(check_type, kind=RingBlocks, argument="blocks", hint="ring_blocks(scheme, rings)"))
 def frequency_factors(blocks: RingBlocks) -> FrequencyFactors:
     """Factor ``det(lambda I - E_0)`` and ``det(lambda I - E(omega))`` once, symbolically (exact)."""
     K = blocks.class_count
@@ -268,7 +268,7 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
     ``exact``: attach exact closed forms to the values (costs a little sympy per value).
     ``jordan``: decide the Jordan structure of repeated values (exact ranks; ``None`` if not asked).
     """
-    n = check_valence(n)
+    n, digits = check_valence(n), check_digits(digits)
     blocks = ring_blocks(scheme, rings)
     ff = frequency_factors(blocks)
     exact_w, field_w = _centre_values(scheme, n)

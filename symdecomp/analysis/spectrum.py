@@ -19,7 +19,6 @@ values with multiplicities. Frequencies are n-gon frequencies ``k`` (the 2n-gon 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
 
 import mpmath
 import sympy as sp
@@ -29,11 +28,11 @@ from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import parameter_values
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_digits, check_valence
+from symdecomp.validate import cached, check_digits, check_valence
 
 __all__ = ["SpectrumEntry", "Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
 
@@ -80,7 +79,7 @@ class Spectrum:
         }
 
 
-@cache
+@cached(scheme=check_scheme)
 def recursion_eigenvalues(scheme: Scheme) -> tuple[sp.Expr, ...]:
     """The eigenvalues of the Eq. 43 matrix as closed forms in ``n`` (and the parameters).
 
@@ -171,6 +170,7 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     ``1/4`` three times) are exact up to that rounding. ``parameters`` gives values for free
     parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
     """
+    check_scheme(scheme)
     n = check_valence(n)
     digits = check_digits(digits)
     if n < scheme.minimum_valence():

@@ -53,7 +53,6 @@ data ``e_P`` iff ``P`` is in ``N(F_s)``. :func:`classify_support` computes this,
 from __future__ import annotations
 
 import enum
-import numbers
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
@@ -63,10 +62,11 @@ from types import MappingProxyType
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_fraction, to_sympy
-from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError, NotApplicableError
+from symdecomp.errors import InvalidMeshError, InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.schemes.refinement import mesh_rules, refine
-from symdecomp.schemes.scheme import Scheme, subdivision_matrix
+from symdecomp.schemes.scheme import Scheme, check_scheme, subdivision_matrix
+from symdecomp.validate import cached, check_levels, check_valence
 
 __all__ = ["Region", "SupportClassification", "classify_support", "support_relation", "limit_mask", "check_positive_scheme"]
 
@@ -79,7 +79,7 @@ class Region(enum.Enum):
     OUTSIDE = "outside"
 
 
-@cache
+@cached(scheme=check_scheme, valence=check_valence)
 def limit_mask(scheme: Scheme, valence: int) -> tuple[sp.Expr, ...]:
     """The limit mask at a vertex of this valence: the left eigenvector of eigenvalue 1 of the
     exact subdivision matrix, normalised to sum 1, in the order ``(O, a_0.., b_0..)``.
@@ -247,10 +247,10 @@ def classify_support(
     child sectors (see the module docstring); :attr:`SupportClassification.stable` reports
     whether they all agreed.
     """
+    check_scheme(scheme)
     if source not in mesh.values or not mesh.faces_of(source):
         raise InvalidMeshError(f"vertex {source!r} is not in the mesh")
-    if isinstance(levels, bool) or not isinstance(levels, numbers.Integral) or levels < 0:
-        raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")
+    levels = check_levels(levels, maximum=8, reason="each level refines the whole mesh: four times the faces")
     candidates = [v for v in mesh.vertices() if _classifiable(mesh, v)] if vertices is None else list(vertices)
     for v in candidates:
         if not _classifiable(mesh, v):

@@ -23,10 +23,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import cache
+from functools import partial
 
 from symdecomp.analysis.support import Region
 from symdecomp.schemes.mesh import QuadMesh
+from symdecomp.validate import cached, check_int
 
 __all__ = [
     "WINDOW", "NEAR", "FIRST_VALENCE", "Window", "window", "region", "far_region", "centre_region", "ring_of",
@@ -70,7 +71,7 @@ class Window:
         return all(abs(lab[0]) <= bound for hood in self.hoods.values() for labels, _ in hood for lab in labels)
 
 
-@cache
+@cached(rings=partial(check_int, argument="rings", minimum=1, maximum=20))
 def window(rings: int = 5) -> Window:
     """The window of sectors ``-WINDOW..WINDOW`` with ``rings`` rings (no wrap-around)."""
     ident = {CENTRE: 0}

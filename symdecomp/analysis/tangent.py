@@ -15,17 +15,16 @@ c**2/8 + sqrt(c**2 + 4)*Abs(c)/8 + 1/4
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
 
 import sympy as sp
 
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix
 from symdecomp.errors import FrequencyOutOfRangeError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_frequency, check_valence
+from symdecomp.validate import cached, check_frequency, check_int, check_valence
 
 __all__ = [
     "TangentEigenvalues",
@@ -62,7 +61,7 @@ class TangentEigenvalues:
         return self.dominant.subs(subs), self.subdominant.subs(subs)
 
 
-@cache
+@cached(scheme=check_scheme)
 def tangent_eigenvalues(scheme: Scheme) -> TangentEigenvalues:
     """Derive the closed-form eigenvalues of ``M_j`` for ``scheme`` (Eq. 34)."""
     M = per_frequency_matrix(scheme)
@@ -116,6 +115,8 @@ def invariant_ratio_at(scheme: Scheme, n: int, j: int = 1) -> sp.Expr:
 
 def invariant_ratio_limit(scheme: Scheme, j: int = 1) -> sp.Expr:
     """``lim_{n -> oo}`` of the ratio of Eq. 39 at fixed ``j``, computed by ``sympy.limit``."""
+    check_scheme(scheme)
+    j = check_int(j, "frequency j", minimum=1, error=FrequencyOutOfRangeError)
     m = sp.Symbol("m", positive=True)
     value = invariant_ratio(scheme).subs(_omega_and_cos(m, sp.Integer(j)))
     return sp.simplify(sp.limit(value, m, sp.oo))

@@ -34,14 +34,14 @@ from symdecomp.analysis.elliptic import MU, eq44_ratio, nice_elliptic_conditions
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix, valences_at_roots
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
-from symdecomp.schemes.scheme import Scheme, VertexRule
+from symdecomp.schemes.scheme import Scheme, VertexRule, check_scheme
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import cos_jtheta, cos_theta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_digits, check_valence
+from symdecomp.validate import cached, check_digits, check_valence
 
 __all__ = [
     "with_free_vertex_rule",
@@ -61,7 +61,7 @@ def with_free_vertex_rule(scheme: Scheme) -> Scheme:
     return Scheme(scheme.name + " (free vertex rule)", scheme.edge_rule, scheme.face_rule, VertexRule.affine(ALPHA, BETA))
 
 
-@cache
+@cached(scheme=check_scheme)
 def eigenvalue_quadratic(scheme: Scheme) -> sp.Poly:
     """``det(lambda I - T)/(lambda - 1)`` for the Eq. 43 matrix with a free vertex rule, in ``lambda``."""
     T = recursion_matrix(with_free_vertex_rule(scheme))
@@ -124,7 +124,7 @@ def condition_line(scheme: Scheme, target: sp.Expr = MU) -> ConditionLine:
     )
 
 
-@cache
+@cached(scheme=check_scheme)
 def ratio_target(scheme: Scheme) -> sp.Expr:
     """The eigenvalue ``mu_2(n)`` whose Eq. 44 ratio equals ``|B^1/A^1|^2`` (condition 2's target)."""
     R = sp.Symbol("R", positive=True)
@@ -148,7 +148,7 @@ class JointObstruction:
     valences: tuple[int, ...]
 
 
-@cache
+@cached(scheme=check_scheme)
 def joint_obstruction(scheme: Scheme) -> JointObstruction:
     """Decide for every ``n`` whether both conditions can hold together.
 
@@ -245,6 +245,7 @@ def _less(a, b) -> bool:
 
 def tune(scheme: Scheme, n: int) -> TuningAtValence:
     """Tune the vertex rule of ``scheme`` at valence ``n`` for each condition alone and for both."""
+    check_scheme(scheme)
     n = check_valence(n)
     if scheme.parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; tune a concrete scheme")

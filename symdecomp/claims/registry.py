@@ -74,8 +74,8 @@ from symdecomp.claims.guards import (
     unbound_parameters,
     undefined_values,
 )
-from symdecomp.errors import InvalidInputError, InvalidSchemeError
-from symdecomp.schemes.scheme import Scheme, catmull_clark
+from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
+from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
 
 __all__ = [
     "Text",
@@ -413,12 +413,14 @@ def all_claims() -> list[Claim]:
 
 
 def get_claim(label: str) -> Claim:
-    """The claim with the given label (``"Eq. 34"``, ``"Proposition 5.1"``...)."""
+    """The claim with the given label (``"Eq. 34"``, ``"Proposition 5.1"``...); an unknown label is an
+    :class:`~symdecomp.errors.InvalidInputError` listing the known ones."""
     _load_sections()
-    try:
-        return REGISTRY[label]
-    except KeyError:
-        raise KeyError(f"no claim labelled {label!r}; known: {', '.join(c.label for c in all_claims())}") from None
+    if not isinstance(label, str):
+        raise InvalidTypeError(f"label must be a string such as 'Eq. 34', got {label!r:.60} ({type(label).__name__})")
+    if label not in REGISTRY:
+        raise InvalidInputError(f"no claim labelled {label!r:.60}; known: {', '.join(c.label for c in all_claims())}")
+    return REGISTRY[label]
 
 
 def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | None = DEFAULT_BUDGET) -> CheckResult:
@@ -434,7 +436,8 @@ def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | Non
     """
     if budget is not None and not (isinstance(budget, (int, float)) and not isinstance(budget, bool) and 0 < budget < 10**6):
         raise InvalidInputError(f"budget must be a number of seconds between 0 and 1e6, got {budget!r}")
-    return _check_claim(label, catmull_clark() if scheme is None else scheme, budget)
+    get_claim(label)
+    return _check_claim(label, catmull_clark() if scheme is None else check_scheme(scheme), budget)
 
 
 @cache

@@ -21,7 +21,7 @@ from symdecomp.schemes.files import SCHEMES, load_scheme
 from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import MAX_DIGITS, MAX_DPS
+from symdecomp.validate import MAX_DEPTH, MAX_DIGITS, MAX_DPS
 
 __all__ = [
     "Parser",
@@ -62,7 +62,7 @@ LIMITS = {
     "jobs": (256, "more worker processes than this only cost memory"),
     "c1": (4096, "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 4096 takes about "
            "0.15 s, the range 3:4096 about 5 minutes on one core"),
-    "c1 --depth": (12, "each level splits a piece in four: depth 12 is 16 million pieces"),
+    "c1 --depth": (MAX_DEPTH, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),
     "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 256 bits "

@@ -19,9 +19,9 @@ from __future__ import annotations
 import sys
 
 from symdecomp.analysis.eigendata import check_eigendata_cost, rounded_eigendata
-from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, digits, print_json, progress, valence_range
+from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, digits, flag, given, print_json, progress, valence_range
 from symdecomp.cli.files import check_output_file, write_output_file
-from symdecomp.errors import EvalDataFileError
+from symdecomp.errors import EvalDataFileError, InvalidInputError
 from symdecomp.output.evaldata import FLOAT_DIGITS, binary_chunks, decimal_valence, json_chunks, json_valence
 from symdecomp.parallel import pool_size
 from symdecomp.schemes.lattice import PAPER_LATTICE
@@ -46,12 +46,36 @@ def register(sub) -> None:
                    help="JSON numbers: 17 (default) = the correctly rounded float64, shortest text that reads back as it; "
                    "D > 17 = the exact value correctly rounded to D significant digits (slower, one process)")
     add_pool_options(p, default_jobs=2)  # the binary file and JSON at 17 digits; JSON at D > 17 digits runs in this process
-    p.add_argument("--json", action="store_true", help="print a JSON summary")
+    flag(p, "--json", help="print a JSON summary")
     add_scheme_option(p)
     p.set_defaults(func=run)
 
 
+def _refuse_ignored(args) -> None:
+    """An option the chosen format would ignore is refused, not dropped: --digits is JSON's, --jobs the binary file's."""
+    if args.format == "binary" and given(args, "digits"):
+        raise InvalidInputError("--digits applies to --format json only: the binary file holds float64 values, each "
+                                "correctly rounded")
+    if args.format == "json" and given(args, "jobs"):
+        raise InvalidInputError("--jobs applies to the binary format only: --format json computes the valences in one process")
+
+
+def _refuse_ignored(args) -> None:
+    """An option the chosen format would ignore is refused, not dropped: --digits is JSON's; --jobs and
+    --executor are the binary file's and JSON's at 17 digits (D > 17 digits are computed in one process)."""
+    if args.format == "binary" and given(args, "digits"):
+        raise InvalidInputError("--digits applies to --format json only: the binary file holds float64 values, each "
+                                "correctly rounded")
+    if args.format == "json" and args.digits > FLOAT_DIGITS:
+        for option in ("jobs", "executor"):
+            if given(args, option):
+                raise InvalidInputError(f"--{option}: --format json --digits {args.digits} computes the valences in one "
+                                        f"process (workers apply to the binary file and to --digits {FLOAT_DIGITS})")
+
+
 def run(args) -> int:
+    _refuse_ignored(args)
+    _refuse_ignored(args)
     ns = args.n
     if ns[0] != 3:
         raise EvalDataFileError(f"--n {ns[0]}:{ns[-1]}: the file holds valences 3..N; give --n 3:{ns[-1]}")

@@ -5,6 +5,7 @@ from __future__ import annotations
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.analysis.spectrum import closed_form_spectrum
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, valence
+from symdecomp.errors import InvalidInputError
 
 #: Above this valence the any-scheme route leaves out the exact expressions unless --exact is given.
 EXACT_UP_TO = 64
@@ -51,6 +52,9 @@ def _run_general(args) -> int:
 def run(args) -> int:
     if general_path(args):
         return _run_general(args)
+    if args.exact:
+        raise InvalidInputError(f"--exact applies to the any-scheme route (a triangle scheme or --rings > 1); --scheme "
+                                f"{args.scheme.name} on the 1-ring is read from the closed forms, which it would ignore")
     spectrum = closed_form_spectrum(args.scheme, args.n, digits=args.digits)
     if args.json:
         print_json(spectrum.as_json())

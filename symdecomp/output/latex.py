@@ -27,6 +27,7 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_sympy
 from symdecomp.claims import CheckResult, Claim, Status, Step, Text, Verbatim, check_claim, scope_summary
+from symdecomp.errors import InvalidTypeError
 from symdecomp.output.texlayout import formula_display, latex, mapping_rows, rows_display, size
 
 __all__ = ["aslatex", "text_latex", "findings_latex", "display_math", "SECTION_TITLES", "section_file_name",
@@ -220,7 +221,7 @@ def aslatex(obj) -> str:
     y &= \\sqrt{2}
     \\end{aligned}
     """
-    raise TypeError(f"aslatex cannot render a {type(obj).__name__}")
+    raise InvalidTypeError(f"aslatex cannot render a {type(obj).__name__}")
 
 
 @aslatex.register(sp.Basic)

@@ -40,7 +40,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
 
 import flint
 import sympy as sp
@@ -51,7 +50,8 @@ from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import TriangleMesh, triangle_ring_mesh
 from symdecomp.schemes.refinement import refine_triangles, triangle_mesh_rules
 from symdecomp.schemes.rings import ring_subdivision_matrix
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import cached
 
 __all__ = ["BOX_POINTS", "DEGREE", "LATTICE_RAYS", "RegularPatch", "regular_patch", "regular_limit_mask", "refined_limits"]
 
@@ -125,7 +125,7 @@ def _scalar(c: Fraction, like):
     return c
 
 
-@lru_cache(maxsize=8)
+@cached(8, scheme=check_scheme)
 def regular_limit_mask(scheme: Scheme) -> tuple[Fraction, Fraction]:
     """``(on the vertex, on each neighbour)``: the left eigenvector for 1 of the regular 1-ring matrix, summing to 1."""
     ring = ring_subdivision_matrix(scheme, 6, 1)
@@ -178,7 +178,7 @@ def refined_limits(scheme: Scheme, level: int, mesh: TriangleMesh | None = None)
     return out
 
 
-@lru_cache(maxsize=8)
+@cached(8, scheme=lambda scheme: scheme if scheme is None else check_scheme(scheme))
 def regular_patch(scheme: Scheme | None = None) -> RegularPatch:
     """The regular patch of ``scheme`` (default Loop's) over one triangle, derived by exact refinement."""
     if scheme is None:

@@ -57,7 +57,7 @@ from collections.abc import Callable, Mapping
 import sympy as sp
 import tomllib
 
-from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError, SymdecompError
+from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError, SymdecompError
 from symdecomp.expressions import parse_expression
 from symdecomp.schemes.lattice import LATTICES, QUAD
 from symdecomp.schemes.loop import loop, loop_warren
@@ -85,7 +85,12 @@ MAX_FILE_BYTES = 100_000
 
 def load_scheme(name_or_path: str | os.PathLike) -> Scheme:
     """A scheme by name (``"catmull-clark"``) or from a TOML file (see the module docstring)."""
+    if not isinstance(name_or_path, (str, os.PathLike)):
+        raise InvalidTypeError(f"load_scheme takes a scheme name or a file path, got {name_or_path!r:.60} "
+                               f"({type(name_or_path).__name__})")
     text_name = os.fspath(name_or_path)
+    if not isinstance(text_name, str):
+        raise InvalidTypeError(f"load_scheme takes a scheme name or a file path as text, got {text_name!r:.60}")
     if text_name in SCHEMES:
         return SCHEMES[text_name]()
     if not os.path.isfile(text_name):
@@ -109,10 +114,14 @@ def load_scheme(name_or_path: str | os.PathLike) -> Scheme:
 
 def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str = "scheme") -> Scheme:
     """Build a :class:`~symdecomp.schemes.scheme.Scheme` from the text of a scheme file."""
+    if not isinstance(text, str):
+        raise InvalidTypeError(f"scheme_from_text takes the text of a scheme file, got {type(text).__name__}")
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InvalidSchemeError(f"{source}: not valid TOML ({exc})") from None
+    except RecursionError:  # tomllib parses nested arrays and tables recursively
+        raise InvalidSchemeError(f"{source}: arrays or tables nested too deeply; a scheme file is a few flat tables") from None
     unknown = sorted(set(data) - _TOP_KEYS)
     if unknown:
         raise InvalidSchemeError(f"{source}: unknown key {unknown[0]!r} (known: {', '.join(sorted(_TOP_KEYS))})")

@@ -27,7 +27,7 @@ from symdecomp import validate
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.errors import InvalidSchemeError, UnsupportedExpressionError
-from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, subdivision_entries
+from symdecomp.schemes.scheme import WEIGHT_SYMBOLS, Scheme, check_scheme, subdivision_entries
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_memory, check_valence
 
@@ -113,6 +113,7 @@ def sparse_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None
     :func:`symdecomp.schemes.scheme.subdivision_entries` with each weight evaluated exactly
     as a FLINT rational: ``O(n)`` entries, no block structure.
     """
+    check_scheme(scheme)
     n = scheme.fitting_valence(n)
     subs = parameter_values(scheme, parameters)
     return subdivision_entries(scheme, n, _weight_evaluator(scheme, subs)(n))
@@ -189,7 +190,8 @@ def characteristic_polynomial(scheme: Scheme, n: int, parameters: Mapping | None
     Computed on ``d * T S T^-1`` (integer, see above) and rescaled:
     ``chi_S(lambda) = d^-(2n+1) chi_A(d lambda)``. No block structure is used.
     """
-    size = 2 * check_valence(n) + 1
+    n = check_valence(n)
+    size = 2 * n + 1
     # a first estimate before anything is built (entries of about 2 log2(n) + 8 bits), then the real one
     check_memory(charpoly_memory(size, 2 * n.bit_length() + 8), f"the exact characteristic polynomial at n = {n}")
     return _rational_charpoly(sparse_subdivision_matrix(scheme, n, parameters), size, f"at n = {n}")

@@ -20,12 +20,12 @@ Values at vertices are tuples of coordinates (any length; scalar fields are 1-tu
 from __future__ import annotations
 
 import numbers
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
 
 from symdecomp.errors import InvalidMeshError
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_int, check_memory, check_valence
 
 __all__ = [
     "InvalidMeshError", "QuadMesh", "TriangleMesh", "ring_mesh", "ring_mesh_labels", "cube_mesh",
@@ -35,13 +35,30 @@ __all__ = [
 
 
 
+def _sequence(value, what: str) -> tuple:
+    if isinstance(value, (str, bytes, Mapping)) or not isinstance(value, Iterable):
+        raise InvalidMeshError(f"{what} must be a sequence of vertex ids or faces, got {value!r:.60} ({type(value).__name__})")
+    return tuple(value)
+
+
+def _face(face, corners: int, shape: str) -> tuple[int, ...]:
+    """A face as a tuple of ``int`` vertex ids; a label that is not an integer (``3.5``, ``"a"``) is refused, never truncated."""
+    f = _sequence(face, "a face")
+    try:
+        f = tuple(check_int(v, "a vertex id", error=InvalidMeshError) for v in f)
+    except InvalidMeshError as exc:
+        raise InvalidMeshError(f"face {face!r:.60}: {exc}") from None
+    if len(f) != corners or len(set(f)) != corners:
+        raise InvalidMeshError(f"face {f} is not {shape}")
+    return f
+
+
 def _set_topology(mesh, corners: int, shape: str) -> None:
     """Validate ``mesh.faces`` (``corners``-gons, consistently oriented, every corner valued) and set
     ``faces``, ``values``, ``_directed`` (directed edge -> face) and ``_incident`` (vertex -> faces)."""
-    faces = tuple(tuple(int(v) for v in f) for f in mesh.faces)
-    for f in faces:
-        if len(f) != corners or len(set(f)) != corners:
-            raise InvalidMeshError(f"face {f} is not {shape}")
+    faces = tuple(_face(f, corners, shape) for f in _sequence(mesh.faces, "faces"))
+    if not isinstance(mesh.values, Mapping):
+        raise InvalidMeshError(f"values must be a mapping {{vertex id: coordinates}}, got {type(mesh.values).__name__}")
     object.__setattr__(mesh, "faces", faces)
     object.__setattr__(mesh, "values", MappingProxyType(dict(mesh.values)))
     missing = {v for f in faces for v in f} - set(mesh.values)
@@ -200,6 +217,7 @@ def _ring_chart(n: int, rings: int, ring_labels: Callable):
     n = check_valence(n)
     if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or rings < 1:
         raise InvalidMeshError(f"rings must be a positive integer, got {rings!r}")
+    check_memory(n * int(rings) ** 2 * 512, f"a mesh of {rings} rings around a vertex of valence {n}")
     labels = ring_labels(n, rings)
     ident = {lab: i for i, lab in enumerate(labels)}
 

@@ -53,22 +53,21 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
 from symdecomp.algebra.numbers import to_fmpq, to_fraction
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.mesh import ring_mesh, ring_mesh_labels
 from symdecomp.schemes.refinement import refinement_matrix
 from symdecomp.schemes.rings import ring_subdivision_matrix
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_valence
+from symdecomp.validate import cached, check_valence
 
 __all__ = [
     "OUTER_POINTS", "EXTRA_POINTS", "SUBPATCH_CORNERS", "PatchMatrices", "patch_matrices", "lattice_index", "patch_mesh",
@@ -93,7 +92,7 @@ def lattice_index(n: int, point: tuple[int, int]) -> int:
         return 2 * n + 1 + OUTER_POINTS.index(point)
     if point in EXTRA_POINTS:
         return 2 * n + 8 + EXTRA_POINTS.index(point)
-    raise KeyError(f"lattice point {point} is not a control point of the patch")
+    raise InvalidInputError(f"lattice point {point} is not a control point of the patch")
 
 
 @dataclass(frozen=True)
@@ -184,7 +183,7 @@ def patch_mesh(n: int, values=None):
     return mesh, vid, columns
 
 
-@lru_cache(maxsize=256)
+@cached(256, scheme=check_scheme, n=check_valence)
 def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     """The patch matrices of ``scheme`` at valence ``n`` from one exact refinement: ``2n + 8`` points
     on quad meshes (:func:`quad_patch_matrices`), ``n + 6`` on triangle meshes (:func:`triangle_patch_matrices`)."""
@@ -249,7 +248,7 @@ def triangle_lattice_label(n: int, point: tuple[int, int]) -> tuple[int, int, in
     elif y <= 0 and x >= -y:
         s, a, b = n - 1, -y, x + y
     else:
-        raise KeyError(f"lattice point {point} is outside the three sectors around the patch")
+        raise InvalidInputError(f"lattice point {point} is outside the three sectors around the patch")
     if a == 0 and b == 0:
         return (0, 0, 0)
     return ((s + 1) % n, b, 0) if a == 0 else (s % n, a, b)

@@ -55,7 +55,6 @@ the new triangles whose three corners were computed (:func:`refine_triangles`).
 
 from __future__ import annotations
 
-import numbers
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -69,6 +68,7 @@ from symdecomp.algebra.numbers import to_fraction
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, TriangleMesh
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_levels, check_memory
 
 if TYPE_CHECKING:  # the lattice objects (imported by the scheme) call this module's refinement
     from symdecomp.schemes.scheme import Scheme
@@ -77,6 +77,9 @@ __all__ = [
     "MeshRules", "Refinement", "mesh_rules", "refine", "point_stencils", "refinement_matrix", "central_rings",
     "TriangleMeshRules", "TriangleRefinement", "triangle_mesh_rules", "refine_triangles",
 ]
+
+#: Most refinement levels :func:`central_rings` follows (exact values grow with every level).
+MAX_LEVELS = 64
 
 
 def _as_weight(w: sp.Expr):
@@ -129,6 +132,9 @@ def mesh_rules(scheme: Scheme) -> MeshRules:
     >>> r.vertex_weights(3)
     (5/12, 1/6, 1/36)
     """
+    from symdecomp.schemes.scheme import check_scheme  # the scheme module imports this one (lattices)
+
+    check_scheme(scheme)
     face, edge = scheme.face_rule, scheme.edge_rule
     for label, rule in (("face rule", face), ("edge rule", edge)):
         weights = [rule.center] + [w for _, w in rule.a + rule.b]
@@ -335,8 +341,9 @@ def central_rings(
     >>> [r[0] for r in rings]
     [(0,), (Fraction(1, 2),), (Fraction(5, 8),)]
     """
-    if isinstance(levels, bool) or not isinstance(levels, numbers.Integral) or levels < 0:
-        raise InvalidMeshError(f"levels must be a non-negative integer, got {levels!r}")
+    levels = check_levels(levels, maximum=MAX_LEVELS, reason="the exact values grow with every level")
+    if keep_rings is None:
+        check_memory(len(mesh.faces) * 4**levels * 256, f"{levels} levels of refinement of the whole mesh")
     rules = mesh_rules(scheme)
     o, a, _ = mesh.one_ring(center, start)
     first = a[0]

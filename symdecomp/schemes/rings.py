@@ -36,11 +36,11 @@ import sympy as sp
 from symdecomp.algebra.numbers import to_fraction, to_sympy
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
-from symdecomp.schemes.scheme import Scheme, subdivision_entries
+from symdecomp.schemes.scheme import Scheme, check_scheme, subdivision_entries
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
-__all__ = ["CENTRE_WEIGHTS", "MAX_RINGS", "SparseRow", "RingMatrix", "ring_subdivision_matrix"]
+__all__ = ["CENTRE_WEIGHTS", "MAX_RINGS", "SparseRow", "RingMatrix", "check_rings", "ring_subdivision_matrix"]
 
 #: The deepest neighbourhood supported.
 MAX_RINGS = 3
@@ -66,7 +66,7 @@ class SparseRow:
         return SparseRow(out)
 
 
-def _check_rings(rings) -> int:
+def check_rings(rings) -> int:
     if isinstance(rings, bool) or not isinstance(rings, numbers.Integral) or not 1 <= rings <= MAX_RINGS:
         raise InvalidSchemeError(f"rings must be an integer from 1 to {MAX_RINGS}, got {rings!r}")
     return int(rings)
@@ -151,7 +151,8 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
     when they are rational (used to read the block structure for symbolic ``n``; needs ``n``
     other than the regular valence).
     """
-    n, rings = check_valence(n), _check_rings(rings)
+    check_scheme(scheme)
+    n, rings = check_valence(n), check_rings(rings)
     if scheme.parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; substitute values first")
     lat = scheme.lattice

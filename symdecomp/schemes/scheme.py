@@ -31,20 +31,21 @@ from typing import Any
 
 import sympy as sp
 
-from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError
+from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError
 from symdecomp.expressions import exact_value
 from symdecomp.schemes.lattice import LATTICES, QUAD, Lattice, lattice
 from symdecomp.symbols import Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_valence, parameter_values
+from symdecomp.validate import check_memory, check_type, check_valence, parameter_values
 
 __all__ = [
     "Stencil",
     "VertexRule",
     "MESH_TYPES",
     "Scheme",
+    "check_scheme",
     "catmull_clark",
     "subdivision_entries",
     "subdivision_matrix",
@@ -198,6 +199,7 @@ class Scheme:
     lattice: Lattice = QUAD
 
     def __post_init__(self):
+        _check_parts(self)
         if not isinstance(self.name, str) or not self.name.strip() or not self.name.isprintable():
             # a name is shown in terminals and typeset in documents: one line of text, no control characters
             raise InvalidSchemeError(f"scheme name must be a non-empty line of printable text, got {self.name!r}")
@@ -278,6 +280,22 @@ class Scheme:
         )
 
 
+def _check_parts(scheme: Scheme) -> None:
+    """Refuse parts of the wrong kind (a dict for a rule, a number for the name) with :class:`InvalidTypeError`."""
+    check_type(scheme.name, str, "scheme name")
+    for part, kind in (("edge_rule", Stencil), ("face_rule", (Stencil, type(None))), ("vertex_rule", VertexRule)):
+        check_type(getattr(scheme, part), kind, f"scheme {scheme.name!r}: {part}", hint="see Stencil.from_weights, VertexRule.affine")
+    if not isinstance(scheme.parameters, (tuple, list)) or not all(isinstance(p, sp.Symbol) for p in scheme.parameters):
+        raise InvalidTypeError(f"scheme {scheme.name!r}: parameters must be a tuple of sympy symbols, got {scheme.parameters!r}")
+    object.__setattr__(scheme, "parameters", tuple(scheme.parameters))
+
+
+def check_scheme(scheme, argument: str = "scheme") -> Scheme:
+    """``scheme`` if it is a :class:`Scheme`, else :class:`~symdecomp.errors.InvalidTypeError` (the check of every
+    public function that takes a scheme, run before any cache)."""
+    return check_type(scheme, Scheme, argument, hint="catmull_clark(), loop(), load_scheme(NAME_OR_FILE)")
+
+
 def _to_parameters(scheme: Scheme) -> None:
     """Move every user symbol of ``scheme`` into the users' namespace (:class:`~symdecomp.symbols.Parameter`).
 
@@ -352,7 +370,7 @@ def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]
     ``(O, a_0..a_{n-1}, b_0..b_{n-1})``; ``O(n)`` entries, no circulant or block structure.
     Weights that land on the same entry (offsets equal mod ``n``) are added.
     """
-    n = scheme.fitting_valence(n)
+    n = check_scheme(scheme).fitting_valence(n)
     entries: dict[tuple[int, int], Any] = {}
 
     def add(r: int, c: int, x) -> None:
@@ -406,6 +424,7 @@ def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:
     triangle mesh), assembled by :func:`subdivision_entries`, without any circulant structure.
     """
     n = check_valence(n)
-    size = scheme.ring_size(n)
+    size = check_scheme(scheme).ring_size(n)
+    check_memory(size * size * 64, f"the sympy {size} x {size} subdivision matrix")
     entries = subdivision_entries(scheme, n, lambda w: w.subs(N, n))
     return sp.ImmutableMatrix(size, size, lambda r, c: entries.get((r, c), sp.Integer(0)))

@@ -77,8 +77,8 @@ from symdecomp.analysis.characteristic import TRIANGLES, frequency_eigenvector, 
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS, DEGREE, regular_patch
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_valence
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import check_bits, check_depth, check_valence
 from symdecomp.verify.bezier import (
     bspline_to_bezier,
     certify_sign,
@@ -302,8 +302,14 @@ def _test(scheme: Scheme, n: int, max_depth: int, prec: int) -> C1Result:
 
 
 def c1_test(scheme: Scheme, n: int, *, max_depth: int = 6, prec: int = 64) -> C1Result:
-    """Reif's test at valence ``n`` (see the module docstring); retried once at twice the precision if undecided."""
+    """Reif's test at valence ``n`` (see the module docstring); retried once at twice the precision if undecided.
+
+    ``max_depth``: the deepest subdivision of the Jacobian's nets, ``0..MAX_DEPTH`` (12); ``prec``: bits of the
+    balls, ``16..MAX_BITS`` (65536; :mod:`symdecomp.validate`).
+    """
+    check_scheme(scheme)
     n = check_valence(n)
+    max_depth, prec = check_depth(max_depth), check_bits(prec)
     with flint.ctx.workprec(prec):
         result = _test(scheme, n, max_depth, prec)
     if result.verdict is C1Verdict.UNDECIDED:

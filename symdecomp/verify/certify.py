@@ -46,7 +46,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import partial
 from typing import ClassVar
 
 import flint
@@ -58,10 +58,10 @@ from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derive
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_digits, check_int, check_valence
+from symdecomp.validate import cached, check_bits, check_digits, check_type, check_valence
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
 __all__ = ["SymmetricFunctions", "symmetric_functions", "Certificate", "certify", "closed_form_characteristic_value"]
@@ -138,7 +138,7 @@ def _rational_function(expr: sp.Expr) -> sp.Expr:
     return fast if not _has_radical(fast) else sp.factor(sp.simplify(sp.radsimp(sp.expand(expr))))
 
 
-@lru_cache(maxsize=32)
+@cached(32, cf=partial(check_type, kind=ClosedForms, argument="closed forms", hint="derived_closed_forms(scheme)"))
 def symmetric_functions(cf: ClosedForms) -> SymmetricFunctions:
     """Step 1 of the proof (see the module docstring), cached per set of closed forms."""
     reasons = []
@@ -248,9 +248,10 @@ def certify(
     a wrong one). ``digits``: significant digits of the printed values. ``max_prec``: the
     largest Arb precision (bits) tried when clustering or refuting.
     """
+    check_scheme(scheme)
     n = check_valence(n)
     digits = check_digits(digits)
-    max_prec = check_int(max_prec, "max_prec", minimum=128, maximum=1 << 20)
+    max_prec = check_bits(max_prec, "max_prec", minimum=128)
     subs = parameter_values(scheme, parameters)
     cf = closed_forms or derived_closed_forms(scheme)
     chi = characteristic_polynomial(scheme, n, subs)

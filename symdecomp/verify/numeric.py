@@ -35,7 +35,7 @@ from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derive
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import MAX_DPS, check_memory, check_precision, check_valence
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
@@ -185,6 +185,7 @@ def numeric_check(
     highest working precision tried (default ``4 * dps + 40``). ``eigensolver``: replaces
     ``mpmath.eig`` (see :func:`full_matrix_eigenvalues`).
     """
+    check_scheme(scheme)
     n = check_valence(n)
     dps = check_precision(dps)
     if max_dps is not None:

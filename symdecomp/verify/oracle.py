@@ -41,7 +41,6 @@ import math
 import random
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import cache
 
 import mpmath
 import numpy as np
@@ -56,7 +55,7 @@ from symdecomp.errors import InternalError
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_int, check_levels, check_valence
+from symdecomp.validate import cached, check_int, check_levels, check_valence
 
 __all__ = [
     "Prediction",
@@ -192,7 +191,7 @@ def _f(expr, dps=30) -> float:
         return float(sp.N(expr, dps))
 
 
-@cache
+@cached(n=check_valence)
 def toolkit_predictions(n: int) -> ToolkitPredictions:
     """Derive the predictions for standard Catmull-Clark at valence ``n``."""
     n = check_valence(n)

@@ -48,12 +48,13 @@ from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_sympy
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_charpoly import product_identity
 from symdecomp.analysis.ring_spectrum import frequency_factors, ring_spectrum
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_digits, check_valence
 from symdecomp.verify.certify import Certificate
 from symdecomp.verify.result import CrossCheckStatus
 
@@ -68,7 +69,9 @@ def certify_ring(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks |
     ``method``: ``"charpoly"`` (the identity above, dense FLINT characteristic polynomials) or
     ``"structure"`` (:func:`structural_certificate`: ``O(n)``, for large valences).
     """
-    n = check_valence(n)
+    n, digits = check_valence(n), check_digits(digits)
+    if method not in ("charpoly", "structure"):
+        raise InvalidInputError(f"method must be 'charpoly' or 'structure', got {method!r}")
     blocks = blocks or ring_blocks(scheme, rings)
     if method == "structure":
         return structural_certificate(scheme, n, rings, blocks=blocks, digits=digits)
@@ -153,7 +156,7 @@ def structural_certificate(scheme: Scheme, n: int, rings: int = 1, *, blocks: Ri
     by :func:`cluster_multiplicities` where its exact arguments apply (else the certificate says
     why not).
     """
-    n = check_valence(n)
+    n, digits = check_valence(n), check_digits(digits)
     blocks = blocks or ring_blocks(scheme, rings)
     S = ring_subdivision_matrix(scheme, n, rings)
     v = scheme.vertex_rule

@@ -20,10 +20,9 @@ import numpy as np
 
 from symdecomp.analysis.closed_forms import ClosedFormLabel
 from symdecomp.analysis.ring_spectrum import ring_spectrum
-from symdecomp.errors import SymdecompError
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_int, check_valence
 from symdecomp.verify.numeric import EigenvalueMatch, NumericCheck
 from symdecomp.verify.result import CrossCheckStatus
 
@@ -46,8 +45,8 @@ def _full_matrix(scheme: Scheme, n: int, rings: int) -> np.ndarray:
 def ring_numeric_check(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 10) -> NumericCheck:
     """Compare the frequency-factor spectrum with the full matrix's eigenvalues to ``digits`` digits."""
     n = check_valence(n)
-    if not 1 <= digits <= MAX_DOUBLE_DIGITS:
-        raise SymdecompError(f"digits: the K-ring numeric check runs in double precision, give 1..{MAX_DOUBLE_DIGITS} (or certify)")
+    digits = check_int(digits, "digits", minimum=1, maximum=MAX_DOUBLE_DIGITS,
+                       reason="the K-ring numeric check runs in double precision (or certify)")
     spectrum = ring_spectrum(scheme, n, rings, digits=digits + 5, exact=False, jordan=False)
     numeric = list(np.linalg.eigvals(_full_matrix(scheme, n, rings)))
     tol = 10.0 ** (-digits)

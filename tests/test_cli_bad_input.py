@@ -70,7 +70,8 @@ MISUSE = [
     # an option the chosen mode would ignore is refused, not dropped
     (["evaldata", "--n", "3:4", "--out", "o.bin", "--digits", "50"], "--digits applies to --format json only"),
     (["evaldata", "--n", "3:4", "--out", "o.bin", "--format", "binary", "--digits", "50"], "--digits applies"),
-    (["evaldata", "--n", "3:4", "--out", "o.json", "--format", "json", "--jobs", "2"], "--jobs applies to the binary"),
+    (["evaldata", "--n", "3:4", "--out", "o.json", "--format", "json", "--digits", "30", "--jobs", "2"], "computes the valences in one"),
+    (["evaldata", "--n", "3:4", "--out", "o.json", "--format", "json", "--digits", "30", "--executor", "local"], "computes the valences in one"),
     (["evaldata", "--n", "3:4", "--out", "o.bin", "--json", "--json"], "more than once"),
     (["spectrum", "5", "--exact"], "--exact applies to the any-scheme route"),
     (["spectrum", "5", "--digits", "3", "--digits", "4"], "more than once"),

@@ -208,11 +208,15 @@ def outer_bounds(scheme: Scheme, n: int) -> list[tuple[int, flint.arb]]:
     return out
 
 
-@lru_cache(maxsize=4)
 def outer_row_sum(mesh: Lattice | str) -> flint.fmpq:
     """The largest row sum of ``|weights|`` of the outer block: ``||S(omega)||_inf`` for every ``|omega| = 1`` is at most this,
     so every :func:`outer_norm_bound` is (up to rounding)."""
-    layout = ring_layout(mesh)
+    return _outer_row_sum(lattice(mesh))
+
+
+@lru_cache(maxsize=4)
+def _outer_row_sum(lat: Lattice) -> flint.fmpq:
+    layout = ring_layout(lat)
     k1, k2 = layout.one_ring, layout.two_ring
     return max(sum((abs(w) for q in range(k1, k2) for _, w in layout.offsets[r][q]), flint.fmpq(0)) for r in range(k1, k2))
 

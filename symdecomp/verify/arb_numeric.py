@@ -19,9 +19,9 @@ proved to hold the eigenvalues, so that no answer rests on a guess of convergenc
    leave the question open at this precision: the precision rises (as in numeric mode) up to
    ``max_dps`` digits, after which the answer is ``undecided`` (a failure), never a pass.
 
-A defective eigenvalue (a Jordan block of size ``m``) gives discs of radius about
-``2^(-prec/m)``: its cluster resolves to ``dps`` digits at about ``m`` times the precision.
-Arb's own certified routines (``acb_mat.eig`` with ``multiple=True``) refuse exactly repeated
+A defective eigenvalue (a Jordan block) has one eigenvector: QR returns it for each copy, ``R``
+is nearly singular and the discs do not separate at any precision, so the answer is
+``undecided`` (``--solver mpmath`` matches such a cluster by its mean). Arb's own certified routines (``acb_mat.eig`` with ``multiple=True``) refuse exactly repeated
 eigenvalues in python-flint 0.9 (``diag(1, 1, 2)`` fails to isolate) and solve one system per
 cluster, which is why the certificate is the Gershgorin step above.
 
@@ -150,7 +150,7 @@ def _text(ball, digits: int) -> str:
 
 def _mp(ball, digits: int):
     re = mpmath.mpf(ball.real.mid().str(digits, radius=False))
-    im = mpmath.mpf(ball.imag.mid().str(digits, radius=False))
+    im = mpmath.mpf(0) if ball.imag.contains(0) else mpmath.mpf(ball.imag.mid().str(digits, radius=False))
     return re if im == 0 else mpmath.mpc(re, im)
 
 

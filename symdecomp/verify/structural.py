@@ -59,7 +59,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_valence
 from symdecomp.verify.certify import Certificate, SymmetricFunctions, closed_form_characteristic_value, symmetric_functions
 from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.verify.ring_certify import cluster_multiplicities, structural_certificate
+from symdecomp.verify.ring_certify import structural_certificate
 
 __all__ = ["structural_obstacle", "certify_structural", "STRUCTURAL_BYTES_PER_VALENCE"]
 
@@ -190,32 +190,31 @@ def _refute_by_balls(scheme: Scheme, cf: ClosedForms, n: int, digits: int, max_d
 
     The full matrix's spectrum is the frequency factors' (step 1), enclosed in the balls of
     :func:`~symdecomp.analysis.ring_spectrum.ring_spectrum`: (a) a closed-form value outside
-    every ball is no eigenvalue; (b) where the balls are proved to be the distinct eigenvalues
-    with their multiplicities (:func:`~symdecomp.verify.ring_certify.cluster_multiplicities`), a
-    ball holding more closed-form values than its multiplicity, or overlapping fewer, refutes
-    them. The precision doubles up to ``max_digits``.
+    cluster's ball is no eigenvalue; (b) a cluster's ball apart from the others holds exactly as
+    many eigenvalues as the cluster's multiplicity: holding more closed-form values than that, or
+    overlapping fewer, refutes them. The precision doubles up to ``max_digits``.
     """
     from symdecomp.verify.certify import _describe, _text
 
     labels = cf.eigenvalue_labels(n)
-    blocks = ring_blocks(scheme, 1)
     d = digits
     while True:
-        spectrum = ring_spectrum(scheme, n, 1, digits=d, exact=False, jordan=False)
+        hulls = [(e, e.hull) for e in ring_spectrum(scheme, n, 1, digits=d, exact=False, jordan=False).eigenvalues]
         balls = cf.values(n, {}, engine="arb", prec=max(256, 8 * d + 64))
         for label, v in zip(labels, balls):
-            if not any(e.ball.overlaps(v) for e in spectrum.eigenvalues):
+            if not any(h.overlaps(v) for _, h in hulls):
                 return (f"n = {n}: closed-form eigenvalue {_text(v, digits)} ({_describe([label])}) is not an eigenvalue of "
                         "the full matrix: it lies outside the certified balls of the frequency factors' roots")
-        if cluster_multiplicities(scheme, blocks, spectrum) is None:
-            for e in spectrum.eigenvalues:
-                inside = [i for i, v in enumerate(balls) if e.ball.contains(v)]
-                near = [i for i, v in enumerate(balls) if e.ball.overlaps(v)]
-                if len(inside) > e.multiplicity or len(near) < e.multiplicity:
-                    count = len(inside) if len(inside) > e.multiplicity else len(near)
-                    return (f"n = {n}: {count} closed-form eigenvalues lie at the eigenvalue {e.text} "
-                            f"({_describe([labels[i] for i in inside or near] or labels[:1])}), whose multiplicity in the "
-                            f"full matrix is {e.multiplicity} (certified)")
+        for e, h in hulls:  # a hull apart from the others holds exactly e.multiplicity eigenvalues
+            if any(h.overlaps(other) for f, other in hulls if f is not e):
+                continue
+            inside = [i for i, v in enumerate(balls) if h.contains(v)]
+            near = [i for i, v in enumerate(balls) if h.overlaps(v)]
+            if len(inside) > e.multiplicity or len(near) < e.multiplicity:
+                which = inside if len(inside) > e.multiplicity else near
+                return (f"n = {n}: {len(which)} closed-form eigenvalues lie at the eigenvalue {e.text}"
+                        f"{' (' + _describe([labels[i] for i in which]) + ')' if which else ''}, whose multiplicity in the "
+                        f"full matrix is {e.multiplicity} (certified)")
         if d >= max_digits:
             return None
         d = min(2 * d, max_digits)

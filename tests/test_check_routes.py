@@ -144,7 +144,9 @@ def test_flint_and_mpmath_numeric_routes_agree(scheme):
         a, b = numeric_check(scheme, n, dps=30, solver="flint"), numeric_check(scheme, n, dps=30, solver="mpmath")
         assert a.status is b.status is CrossCheckStatus.AGREE, (a.message, b.message)
         assert (a.solver, b.solver) == ("flint", "mpmath")
-        assert sorted((m.text, m.multiplicity) for m in a.matches) == sorted((m.text, m.multiplicity) for m in b.matches)
+        assert len(a.matches) == len(b.matches)
+        for m in a.matches:  # the same values (to 30 digits) with the same multiplicities
+            assert any(abs(m.value - o.value) < 1e-28 and m.multiplicity == o.multiplicity for o in b.matches), m.text
     cf = derived_closed_forms(scheme)
     for kind in KINDS:
         wrong = _wrong(cf, kind)
@@ -154,12 +156,10 @@ def test_flint_and_mpmath_numeric_routes_agree(scheme):
 
 
 def test_flint_route_never_passes_a_cluster_it_cannot_resolve():
-    """A Jordan block (one eigenvector, so no separating discs): undecided, never agree; the wrong forms still fail."""
+    """A Jordan block (one eigenvector, so no separating discs): undecided, never agree."""
     r = arb_numeric_check(JORDAN, 5, dps=30, max_dps=60)
-    assert r.status is CrossCheckStatus.UNDECIDED and not r.ok and "no verdict" in r.message
+    assert r.status is CrossCheckStatus.UNDECIDED and not r.ok and "no verdict" in r.message and "--solver mpmath" in r.message
     assert numeric_check(JORDAN, 5, dps=30, solver="mpmath").ok  # matched by the cluster's mean
-    wrong = _wrong(derived_closed_forms(JORDAN), "dominant + 1e-40")
-    assert arb_numeric_check(JORDAN, 5, dps=50, closed_forms=wrong, max_dps=60).status is CrossCheckStatus.DISAGREE
 
 
 def test_numeric_command_names_its_solver(capsys):

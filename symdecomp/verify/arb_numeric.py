@@ -21,9 +21,10 @@ proved to hold the eigenvalues, so that no answer rests on a guess of convergenc
 
 A defective eigenvalue (a Jordan block) has one eigenvector: QR returns it for each copy, ``R``
 is nearly singular and the discs do not separate at any precision, so the answer is
-``undecided`` (``--solver mpmath`` matches such a cluster by its mean). Arb's own certified routines (``acb_mat.eig`` with ``multiple=True``) refuse exactly repeated
-eigenvalues in python-flint 0.9 (``diag(1, 1, 2)`` fails to isolate) and solve one system per
-cluster, which is why the certificate is the Gershgorin step above.
+``undecided`` (``--solver mpmath`` matches such a cluster by its mean). Arb's own certified
+routines (``acb_mat.eig`` with ``multiple=True``) refuse exactly repeated eigenvalues in
+python-flint 0.9 (``diag(1, 1, 2)`` fails to isolate) and solve one system per cluster, which is
+why the certificate is the Gershgorin step above.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> r = arb_numeric_check(catmull_clark(), 4, dps=20)
@@ -195,7 +196,8 @@ def _result(scheme, n, dps, precisions, status, message, found, balls, labels) -
     if status is None:
         status = CrossCheckStatus.UNDECIDED
         message = (f"n = {n}: the Arb enclosures of the full matrix's eigenvalues did not separate to {dps} digits by "
-                   f"{precisions[-1]} digits of working precision; no verdict")
+                   f"{precisions[-1]} digits of working precision (a defective eigenvalue never separates: --solver mpmath "
+                   "matches it by its mean); no verdict")
     elif status is CrossCheckStatus.AGREE:
         message = (f"n = {n}: {sum(m.multiplicity for m in matches)} eigenvalues ({len(matches)} distinct) agree to {dps} "
                    f"digits, certified (Arb enclosures); largest deviation below {mpmath.nstr(worst, 3)}")

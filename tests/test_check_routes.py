@@ -39,6 +39,10 @@ a = "3/(2*n**2)"
 b = "1/(4*n**2)"
 """
 
+ALGEBRAIC_VERTEX = N_DEPENDENT_EDGE.replace('name = "edge-in-n"', 'name = "cos-vertex"').replace(
+    '"3/8 - 1/(8*n)"', '"3/8"').replace('"1/16 + 1/(8*n)"', '"1/16"').replace(
+    'a = "3/(2*n**2)"', 'a = "3/(2*n**2) + (cos(2*pi/n) - cos(2*pi/4))/(64*n)"')
+
 
 def _wrong(cf, kind):
     k0, k1 = cf.frequency_k
@@ -118,6 +122,21 @@ def test_structural_route_that_does_not_apply_falls_back_and_says_so(tmp_path, c
         assert main(argv) == 2
         err = capsys.readouterr().err.strip()
         assert len(err.splitlines()) == 1 and why in err and "Traceback" not in err
+
+
+def test_structural_route_proves_algebraic_centre_weights_exactly(tmp_path, capsys):
+    """cos(2 pi/5) in the vertex rule: the dense route needs rational weights (one line, exit 2); the structural
+    route compares E_0's characteristic polynomial with the closed forms in Q(zeta_10), and still refutes wrong ones."""
+    path = tmp_path / "cos.toml"
+    path.write_text(ALGEBRAIC_VERTEX)
+    assert main(["check", "--n", "5", "--certify", "--route", "charpoly", "--scheme", str(path)]) == 2
+    assert "not rational at n = 5" in capsys.readouterr().err
+    assert main(["check", "--n", "5:7", "--certify", "--scheme", str(path), "--json", "--jobs", "1"]) == 0
+    rows = json.loads(capsys.readouterr().out)["rows"]
+    assert [(r["status"], r["route"], r["multiplicities_certified"]) for r in rows] == [("agree", "structural", True)] * 3
+    scheme = load_scheme(str(path))
+    for kind in KINDS:
+        assert certify_structural(scheme, 5, closed_forms=_wrong(derived_closed_forms(scheme), kind)).status is CrossCheckStatus.DISAGREE
 
 
 @pytest.mark.parametrize("argv, why", [

@@ -45,6 +45,7 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
+from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
@@ -104,12 +105,11 @@ def _vanishes_at_roots_of_unity(diff: dict, n: int) -> bool:
 
 
 def _frequency_identity(sym: SymmetricFunctions, blocks: RingBlocks, n: int) -> bool | None:
-    """Step 2: whether the closed forms are the frequency factors factor by factor; ``None`` if not rational at ``n``."""
+    """Step 2: whether the closed forms are the frequency factors factor by factor; ``None`` if undecidable at ``n``."""
     at = {N: n}
     trace = {p: sym.rational_at(c, at) for p, c in sym.trace.items()}
     det = {p: sym.rational_at(c, at) for p, c in sym.determinant.items()}
-    zero = [sym.rational_at(e, at) for e in sym.frequency_zero]
-    if None in trace.values() or None in det.values() or None in zero:
+    if None in trace.values() or None in det.values():
         return None
     tr_E, det_E = _trace_and_determinant(blocks)
 
@@ -121,16 +121,36 @@ def _frequency_identity(sym: SymmetricFunctions, blocks: RingBlocks, n: int) -> 
 
     other = any(_vanishes_at_roots_of_unity(minus(trace, tr_E, s), n) and _vanishes_at_roots_of_unity(minus(det, det_E, s), n)
                 for s in (1, -1))
+    return _zero_identity(sym, blocks, n) if other else False
+
+
+def _zero_identity(sym: SymmetricFunctions, blocks: RingBlocks, n: int) -> bool | None:
+    """``F_0 = det(lambda I - E_0)`` at ``n``, exactly: rational, or in ``Q(zeta_2n)`` for algebraic centre weights."""
     E0 = blocks.frequency_zero_matrix(n)
     f0 = sp.Poly((LAM * sp.eye(E0.shape[0]) - E0).det(method="berkowitz"), LAM).all_coeffs()
-    e1, e2, e3 = zero
-    return other and len(f0) == 4 and [to_fmpq(c) for c in f0] == [1, -e1, e2, -e3]
+    e1, e2, e3 = (e.subs(N, n) for e in sym.frequency_zero)
+    field = None
+    for got, want in zip(f0, (1, -e1, e2, -e3)):
+        difference = sp.expand(got - want)
+        if difference.is_Rational:
+            if difference != 0:
+                return False
+            continue
+        field = field or CyclotomicField(2 * n)
+        try:
+            if cyclotomic_value(difference, field=field).poly != 0:
+                return False
+        except ValueError:
+            return None
+    return len(f0) == 4
 
 
 def _multiset_identity(sym: SymmetricFunctions, blocks: RingBlocks, scheme: Scheme, n: int):
     """Step 3: ``None`` if the closed forms' polynomial is the frequency product, else ``(lambda, C, P)``."""
     v = scheme.vertex_rule
     weights = {s: sp.sympify(w, strict=True).subs(N, n) for s, w in zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b))}
+    if not all(w.is_Rational for w in weights.values()):
+        return "weights"
     for x in range(2 * n + 1):  # one point at a time: a refutation usually stops at the first
         (c,) = closed_form_characteristic_value(sym, n, {}, [x])
         (p,) = frequency_product_values(blocks, n, weights, [x])
@@ -162,15 +182,12 @@ def certify_structural(scheme: Scheme, n: int, *, closed_forms: ClosedForms | No
                   height_bits=0, route="structural")
     by_factor = None if sym.reason else _frequency_identity(sym, blocks, n)
     if by_factor is None:
-        why = f"identity not formed: {sym.reason}" if sym.reason else "symmetric functions not rational at this n"
-        refutation = _refute_by_balls(scheme, cf, n, digits, max_digits)
-        if refutation is not None:
-            return Certificate(status=CrossCheckStatus.DISAGREE, method=why, multiplicities_certified=False,
-                               message=refutation, **fields)
-        return Certificate(status=CrossCheckStatus.UNDECIDED, method=why, multiplicities_certified=False,
-                           message=f"n = {n}: not certified ({why}), and no closed-form eigenvalue could be refuted at "
-                           f"{max_digits} digits", **fields)
+        why = f"identity not formed: {sym.reason}" if sym.reason else "symmetric functions not exact at this n"
+        return _undecided_or_refuted(scheme, cf, n, why, digits, max_digits, fields)
     failure = None if by_factor else _multiset_identity(sym, blocks, scheme, n)
+    if failure == "weights":  # algebraic centre weights: the product of the factors is not rational
+        return _undecided_or_refuted(scheme, cf, n, "closed forms != frequency factors, factor by factor", digits,
+                                     max_digits, fields)
     if failure is not None:
         x, c, p = failure
         return Certificate(status=CrossCheckStatus.DISAGREE, method="prod(closed-form factors) != prod(frequency factors)",
@@ -184,6 +201,16 @@ def certify_structural(scheme: Scheme, n: int, *, closed_forms: ClosedForms | No
     note = "multiplicities certified" if base.multiplicities_certified else "multiplicities not certified"
     return Certificate(status=CrossCheckStatus.AGREE, method=method, multiplicities_certified=base.multiplicities_certified,
                        message=f"n = {n}: proved: {method}; {base.distinct} distinct eigenvalues, {note}", **fields)
+
+
+def _undecided_or_refuted(scheme, cf, n, why, digits, max_digits, fields) -> Certificate:
+    refutation = _refute_by_balls(scheme, cf, n, digits, max_digits)
+    if refutation is not None:
+        return Certificate(status=CrossCheckStatus.DISAGREE, method=why, multiplicities_certified=False,
+                           message=refutation, **fields)
+    return Certificate(status=CrossCheckStatus.UNDECIDED, method=why, multiplicities_certified=False,
+                       message=f"n = {n}: not certified ({why}), and no closed-form eigenvalue could be refuted at "
+                       f"{max_digits} digits", **fields)
 
 
 def _refute_by_balls(scheme: Scheme, cf: ClosedForms, n: int, digits: int, max_digits: int) -> str | None:

@@ -187,3 +187,8 @@ def test_numeric_command_names_its_solver(capsys):
     assert data["summary"]["solver"] == "flint" and {r["solver"] for r in data["rows"]} == {"flint"}
     assert main(["check", "--n", "4", "--dps", "20", "--solver", "mpmath"]) == 0
     assert "solver mpmath" in capsys.readouterr().out
+    assert main(["check", "--n", "5", "--scheme", "loop", "--json"]) == 0  # the any-scheme route: LAPACK doubles
+    data = json.loads(capsys.readouterr().out)
+    assert data["summary"]["solver"] == data["rows"][0]["solver"] == "numpy"
+    assert main(["check", "--n", "5", "--scheme", "loop", "--solver", "flint"]) == 2
+    assert "--solver: the numeric check of triangle schemes" in capsys.readouterr().err

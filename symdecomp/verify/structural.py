@@ -146,7 +146,8 @@ def _zero_identity(sym: SymmetricFunctions, blocks: RingBlocks, n: int) -> bool 
 
 
 def _multiset_identity(sym: SymmetricFunctions, blocks: RingBlocks, scheme: Scheme, n: int):
-    """Step 3: ``None`` if the closed forms' polynomial is the frequency product, else ``(lambda, C, P)``."""
+    """Step 3: ``None`` if the closed forms' polynomial is the frequency product, else ``(lambda, C, P)``;
+    ``"weights"`` when the centre weights are not rational at ``n`` (no exact product to compare with)."""
     v = scheme.vertex_rule
     weights = {s: sp.sympify(w, strict=True).subs(N, n) for s, w in zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b))}
     if not all(w.is_Rational for w in weights.values()):

@@ -192,3 +192,11 @@ def test_numeric_command_names_its_solver(capsys):
     assert data["summary"]["solver"] == data["rows"][0]["solver"] == "numpy"
     assert main(["check", "--n", "5", "--scheme", "loop", "--solver", "flint"]) == 2
     assert "--solver: the numeric check of triangle schemes" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_done_when_certified_3_to_256_by_the_structural_route(capsys):
+    """Issue 24's command: every valence proved, multiplicities certified, each row naming the route."""
+    assert main(["check", "--n", "3:256", "--certify", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)["rows"]
+    assert len(rows) == 254 and all(r["route"] == "structural" and r["multiplicities_certified"] for r in rows)

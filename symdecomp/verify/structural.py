@@ -147,11 +147,12 @@ def _zero_identity(sym: SymmetricFunctions, blocks: RingBlocks, n: int) -> bool 
 
 def _multiset_identity(sym: SymmetricFunctions, blocks: RingBlocks, scheme: Scheme, n: int):
     """Step 3: ``None`` if the closed forms' polynomial is the frequency product, else ``(lambda, C, P)``;
-    ``"weights"`` when the centre weights are not rational at ``n`` (no exact product to compare with)."""
+    ``"inexact"`` when the centre weights or the closed forms' symmetric functions are not rational at ``n``
+    (no exact products to compare)."""
     v = scheme.vertex_rule
     weights = {s: sp.sympify(w, strict=True).subs(N, n) for s, w in zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b))}
-    if not all(w.is_Rational for w in weights.values()):
-        return "weights"
+    if not all(w.is_Rational for w in weights.values()) or closed_form_characteristic_value(sym, n, {}, []) is None:
+        return "inexact"
     for x in range(2 * n + 1):  # one point at a time: a refutation usually stops at the first
         (c,) = closed_form_characteristic_value(sym, n, {}, [x])
         (p,) = frequency_product_values(blocks, n, weights, [x])
@@ -186,7 +187,7 @@ def certify_structural(scheme: Scheme, n: int, *, closed_forms: ClosedForms | No
         why = f"identity not formed: {sym.reason}" if sym.reason else "symmetric functions not exact at this n"
         return _undecided_or_refuted(scheme, cf, n, why, digits, max_digits, fields)
     failure = None if by_factor else _multiset_identity(sym, blocks, scheme, n)
-    if failure == "weights":  # algebraic centre weights: the product of the factors is not rational
+    if failure == "inexact":  # no exact products: the certified roots decide
         return _undecided_or_refuted(scheme, cf, n, "closed forms != frequency factors, factor by factor", digits,
                                      max_digits, fields)
     if failure is not None:

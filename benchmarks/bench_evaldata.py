@@ -30,7 +30,8 @@ import numpy as np  # noqa: E402
 
 from symdecomp.analysis.eigendata import rounded_eigendata  # noqa: E402
 from symdecomp.analysis.evaluation import PatchEvaluator  # noqa: E402
-from symdecomp.output.evaldata import binary_bytes, write_atomic  # noqa: E402
+from symdecomp.cli.files import write_output_file  # noqa: E402
+from symdecomp.output.evaldata import binary_bytes  # noqa: E402
 from symdecomp.schemes.scheme import catmull_clark  # noqa: E402
 from symdecomp.verify.patch_eval import baseline_error, numpy_baseline  # noqa: E402
 
@@ -40,7 +41,7 @@ TARGET_SECONDS = 60.0
 def certified_file(scheme, nmax: int, jobs: int, folder: str):
     start = time.perf_counter()
     rounded = [r for _, r in rounded_eigendata(scheme, range(3, nmax + 1), jobs)]
-    write_atomic(os.path.join(folder, f"cc{nmax}.dat"), binary_bytes(rounded))
+    write_output_file(os.path.join(folder, f"cc{nmax}.dat"), binary_bytes(rounded))
     return time.perf_counter() - start, rounded
 
 

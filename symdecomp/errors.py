@@ -17,6 +17,8 @@ a rule of a scheme) so that no user meets a traceback from deep inside sympy. Th
 * :class:`ResourceLimitError` (a ``ValueError``): a request refused because its estimated
   time or memory is beyond the stated limit (the estimate is in the message);
 * :class:`UnavailableError`: an optional component (the OpenSubdiv bridge) is missing;
+* :class:`OutputWriteError` (also an ``OSError``): an output file checked beforehand could not be
+  written after all (a full disk, an I/O error); not bad input (the command line's exit code 1);
 * :class:`InternalError`: the package caught itself in an inconsistency (a bug, not bad input).
 
 Private control-flow exceptions that never leave the module raising them (a signal to retry at
@@ -46,6 +48,7 @@ __all__ = [
     "InvalidTypeError",
     "ResourceLimitError",
     "UnavailableError",
+    "OutputWriteError",
     "InternalError",
     "PrecisionError",
     "BridgeUnavailableError",
@@ -70,6 +73,10 @@ class ResourceLimitError(InvalidInputError):
 
 class UnavailableError(SymdecompError):
     """An optional component (e.g. the OpenSubdiv bridge) is missing; the message says how to get it."""
+
+
+class OutputWriteError(SymdecompError, OSError):
+    """Writing an output failed (disk full, I/O error) after the path was checked; the message names the path."""
 
 
 class InternalError(SymdecompError):

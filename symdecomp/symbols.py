@@ -1,6 +1,9 @@
 """The symbols shared by every module: the paper's notation as sympy objects."""
 
+import re
+
 import sympy as sp
+from sympy.printing.latex import greek_letters_set, translate
 
 __all__ = [
     "n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "sin_jtheta", "cos_theta", "Parameter", "RESERVED_NAMES",
@@ -34,9 +37,28 @@ class Parameter(sp.Symbol):
     symbols by class, name and assumptions, so substituting the toolkit's ``c`` can never touch it.
     The paper's vertex weights :data:`alpha` and :data:`beta` are the exception: a scheme that names its
     vertex-rule weights ``alpha``, ``beta`` means the paper's (tuning reads them).
+
+    In LaTeX a parameter is its name and nothing else: a Greek name is the letter, digits and the
+    parts after ``_`` are subscripts; no other part of a name becomes a command (sympy would read
+    ``xscr`` as ``\\mathscr{x}``, ``xhat`` as ``\\hat{x}``), and characters other than letters, digits
+    and ``_`` are dropped (the scheme refuses such names; :func:`symdecomp.schemes.scheme.Scheme`).
+
+    >>> sp.latex(Parameter("gamma2") + Parameter("xscr") + Parameter("t_k"))
+    '\\\\gamma_{2} + t_{k} + xscr'
     """
 
     __slots__ = ()
+
+    def _latex(self, printer) -> str:
+        base, *subscripts = [part for part in re.sub(r"[^A-Za-z0-9_]", "", self.name).split("_") if part] or ["p"]
+        letters, digits = re.fullmatch(r"(.*?)(\d*)", base).groups()
+        subscripts = [digits, *subscripts] if digits and letters else subscripts
+
+        def word(text: str) -> str:
+            return translate(text) if text.lower() in greek_letters_set else text
+
+        head = word(letters or base)
+        return head + ("_{%s}" % " ".join(map(word, subscripts)) if subscripts else "")
 
 
 #: Names a user may not give a parameter: the toolkit's own symbols (which would print the same as

@@ -2,10 +2,8 @@
 
 import os
 import re
-import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import flint
@@ -25,7 +23,6 @@ from symdecomp import (
 )
 from symdecomp.algebra.polygons import decompose
 from symdecomp.cli import main
-from symdecomp.cli.check_cmd import pool_size
 from symdecomp.cli.files import replace_owned_files
 from symdecomp.errors import (
     FrequencyOutOfRangeError,
@@ -128,13 +125,6 @@ def test_the_k_ring_characteristic_polynomial_checks_memory_too(monkeypatch):
         entries_characteristic_polynomial(entries, 40)
 
 
-def test_pool_is_never_larger_than_the_work_or_the_cpus():
-    cpus = os.cpu_count() or 1
-    assert pool_size(256, 1) == 1
-    assert pool_size(256, 100) == min(100, cpus)
-    assert pool_size(1, 100) == 1
-
-
 def test_derive_replaces_its_files_as_a_whole(tmp_path):
     owned = re.compile(r"^(main|section-[0-9-]+)\.tex$")
     out = tmp_path / "out"
@@ -194,56 +184,6 @@ def test_help_documents_exit_codes_and_limits(capsys):
     text = " ".join(capsys.readouterr().out.split())
     for phrase in ("0 success", "2 bad input", "3 an optional component is missing", "130 interrupted", "digits <= 1000"):
         assert phrase in text
-
-
-def _children(pid: int) -> list[int]:
-    out = []
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            try:
-                stat = Path(f"/proc/{entry}/stat").read_text()
-            except OSError:
-                continue
-            if int(stat.rsplit(")", 1)[1].split()[1]) == pid:
-                out.append(int(entry))
-    return out
-
-
-def _alive(pid: int) -> bool:
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except OSError:
-        return False
-    return state != "Z"
-
-
-@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
-@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT])
-def test_certify_workers_die_with_their_parent(signum):
-    proc = subprocess.Popen([sys.executable, "-m", "symdecomp", "check", "--n", "3:200", "--certify", "--jobs", "2"],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, cwd=ROOT)
-    try:
-        deadline = time.monotonic() + 240
-        workers = []
-        while time.monotonic() < deadline and not workers:
-            time.sleep(0.5)
-            workers = _children(proc.pid)
-            assert proc.poll() is None, proc.stderr.read()
-        if not workers:
-            pytest.skip("the pool did not start in time (one CPU?)")
-        time.sleep(1)
-        workers = _children(proc.pid)
-        proc.send_signal(signum)
-        assert proc.wait(timeout=60) == 130
-        assert "Traceback" not in proc.stderr.read()
-        deadline = time.monotonic() + 30
-        while time.monotonic() < deadline and any(_alive(w) for w in workers):
-            time.sleep(0.2)
-        assert not [w for w in workers if _alive(w)]
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
 
 
 @pytest.fixture

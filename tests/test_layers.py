@@ -8,7 +8,7 @@ import pytest
 PACKAGE = pathlib.Path(__file__).resolve().parents[1] / "symdecomp"
 
 #: Lowest first; a module may import from its own layer and the ones before it.
-LAYERS = ["errors", "symbols", "expressions", "validate", "algebra", "schemes", "analysis", "verify", "claims", "output", "cli"]
+LAYERS = ["errors", "symbols", "expressions", "validate", "parallel", "algebra", "schemes", "analysis", "verify", "claims", "output", "cli"]
 
 
 def _layer(module: str) -> int:

@@ -74,16 +74,23 @@ def bezier_product(f, g, degree_f: int, degree_g: int) -> list:
     ``h_k = sum f_i g_j C(i) C(j)/C(k)`` over ``i + j = k`` (componentwise), ``C`` the
     :func:`multinomial` coefficient; exact for exact inputs, a ball for balls.
     """
+    out = []
+    for terms, divisor in _product_table(degree_f, degree_g):
+        a, b, w = terms[0]
+        total = f[a] * g[b] * w
+        for a, b, w in terms[1:]:
+            total = total + f[a] * g[b] * w
+        out.append(total / divisor)
+    return out
+
+
+@cache
+def _product_table(degree_f: int, degree_g: int) -> tuple:
+    """For each coefficient ``k`` of :func:`bezier_product`: ``(((i, j, C(i) C(j)), ...), C(k))`` (positions in the nets)."""
     pos = {i: k for k, i in enumerate(bezier_indices(degree_f + degree_g))}
     terms: list[list] = [[] for _ in pos]
-    for fi, i in zip(f, bezier_indices(degree_f)):
-        for gj, j in zip(g, bezier_indices(degree_g)):
+    for a, i in enumerate(bezier_indices(degree_f)):
+        for b, j in enumerate(bezier_indices(degree_g)):
             k = (i[0] + j[0], i[1] + j[1], i[2] + j[2])
-            terms[pos[k]].append(fi * gj * (multinomial(i) * multinomial(j)))
-    out = []
-    for k, ts in zip(bezier_indices(degree_f + degree_g), terms):
-        total = ts[0]
-        for t in ts[1:]:
-            total = total + t
-        out.append(total / multinomial(k))
-    return out
+            terms[pos[k]].append((a, b, multinomial(i) * multinomial(j)))
+    return tuple((tuple(ts), multinomial(k)) for ts, k in zip(terms, bezier_indices(degree_f + degree_g)))

@@ -62,6 +62,7 @@ from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_valence
 
 __all__ = [
@@ -71,8 +72,14 @@ __all__ = [
     "TRIANGLES",
     "RingLayout",
     "ring_layout",
+    "outer_charpoly",
+    "outer_radius",
+    "outer_norm_bound",
+    "outer_bounds",
+    "outer_row_sum",
     "check_applicable",
     "frequency_block",
+    "frequency_blocks",
     "omega_ball",
     "FrequencyEigenvector",
     "frequency_eigenvector",
@@ -135,6 +142,81 @@ def _ring_layout(lat: Lattice) -> RingLayout:
     return RingLayout(lat, _display_name(reference.name), lat.spline, classes, one, two, tuple(offsets))
 
 
+def outer_charpoly(mesh: Lattice | str) -> tuple[flint.fmpq, ...] | None:
+    """``det(x I - S(omega))`` of the outer block when it is the same at every frequency: its coefficients, else ``None``.
+
+    ``S(omega)`` (the lower right block of :func:`frequency_block`) holds only the regular rules of
+    :func:`ring_layout`, the same for every scheme the C1 test applies to, and ``S_j = S(omega_n^j)``
+    for every ``n`` and ``j`` (its entries are Laurent polynomials in ``omega``). Its characteristic
+    polynomial is expanded once in symbolic ``omega``; when no coefficient depends on ``omega`` (both
+    lattices: Catmull-Clark ``(8x - 1)(16x - 1)(32x - 1)(64x - 1)/2^18``, Loop ``(8x - 1)(16x - 1)/2^7``),
+    the outer eigenvalues are its roots at every frequency of every valence. Coefficients from
+    ``x^k`` (monic) down to ``x^0``.
+    """
+    return _outer_charpoly(lattice(mesh))
+
+
+@lru_cache(maxsize=4)
+def _outer_charpoly(lat: Lattice) -> tuple[flint.fmpq, ...] | None:
+    layout = ring_layout(lat)
+    k1, k2 = layout.one_ring, layout.two_ring
+    x = sp.Symbol("x")
+    S = sp.Matrix(k2 - k1, k2 - k1, lambda r, c: sum(
+        (sp.Rational(int(w.p), int(w.q)) * OMEGA**l for l, w in layout.offsets[k1 + r][k1 + c]), sp.Integer(0)))
+    poly = sp.Poly(sp.expand((x * sp.eye(k2 - k1) - S).det()), x)
+    coeffs = [sp.expand(c) for c in poly.all_coeffs()]
+    if any(c.has(OMEGA) for c in coeffs):  # pragma: no cover - not so for Catmull-Clark's or Loop's rules
+        return None
+    return tuple(to_fmpq(c) for c in coeffs)
+
+
+def outer_radius(mesh: Lattice | str) -> flint.arb | None:
+    """The largest modulus of the outer block's eigenvalues, the same at every frequency of every valence, or ``None``.
+
+    The roots of :func:`outer_charpoly` (certified complex roots of a rational polynomial, FLINT,
+    at the working precision); ``None`` when that polynomial depends on ``omega`` (then each
+    frequency needs its own bound).
+    """
+    coeffs = outer_charpoly(mesh)
+    if coeffs is None:  # pragma: no cover - not so for the regular rules the C1 test knows
+        return None
+    roots = flint.fmpq_poly(list(reversed(coeffs))).complex_roots()
+    return max((abs(r) for r, _ in roots), key=lambda x: x.upper())
+
+
+def outer_norm_bound(S: flint.acb_mat) -> flint.arb:
+    """``min_k ||S^k||_inf^{1/k}`` for ``k = 1, 2, 4``: an upper bound of the spectral radius of ``S``."""
+    best, power = None, S
+    for k in (1, 2, 4):
+        if k > 1:
+            power = power * power
+        norm = max(sum((abs(power[r, c]) for c in range(power.ncols())), flint.arb(0)) for r in range(power.nrows()))
+        bound = norm if k == 1 else norm.root(k)
+        best = bound if best is None or bound.upper() < best.upper() else best
+    return best
+
+
+def outer_bounds(scheme: Scheme, n: int) -> list[tuple[int, flint.arb]]:
+    """``(j, bound)`` for ``0 <= j <= n/2``: :func:`outer_norm_bound` of each outer block ``S_j`` (the per-frequency route)."""
+    layout = ring_layout(scheme.lattice)
+    k1, k2 = layout.one_ring, layout.two_ring
+    blocks = frequency_blocks(scheme, n)
+    out = []
+    for j in range(n // 2 + 1):
+        B = blocks(j)
+        out.append((j, outer_norm_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
+    return out
+
+
+@lru_cache(maxsize=4)
+def outer_row_sum(mesh: Lattice | str) -> flint.fmpq:
+    """The largest row sum of ``|weights|`` of the outer block: ``||S(omega)||_inf`` for every ``|omega| = 1`` is at most this,
+    so every :func:`outer_norm_bound` is (up to rounding)."""
+    layout = ring_layout(mesh)
+    k1, k2 = layout.one_ring, layout.two_ring
+    return max(sum((abs(w) for q in range(k1, k2) for _, w in layout.offsets[r][q]), flint.fmpq(0)) for r in range(k1, k2))
+
+
 def _display_name(name: str) -> str:
     """``catmull-clark`` -> ``Catmull-Clark``."""
     return "-".join(part.capitalize() for part in name.split("-"))
@@ -148,33 +230,41 @@ def check_applicable(scheme: Scheme) -> None:
     from ``O`` every vertex has the regular valence (4 on quads, 6 on triangles), so the regular
     patches are the splines the test knows (bicubic B-splines, quartic box-splines) exactly when
     all its rules at the regular valence, the vertex rule included, are Catmull-Clark's or Loop's.
+    The answer depends on the scheme alone, so it is worked out once per scheme (not per valence).
     """
+    reason = _inapplicable(scheme)
+    if reason is not None:
+        raise NotApplicableError(reason)
+
+
+@lru_cache(maxsize=32)
+def _inapplicable(scheme: Scheme) -> str | None:
+    """Why the C1 test does not apply to ``scheme`` (one line), or ``None``: :func:`check_applicable`'s reason."""
     if scheme.parameters:
-        raise NotApplicableError(
-            f"scheme {scheme.name!r} has free parameters {', '.join(map(str, scheme.parameters))}; give them values first"
-        )
+        return f"scheme {scheme.name!r} has free parameters {', '.join(map(str, scheme.parameters))}; give them values first"
     lat = scheme.lattice
     regular, reference = lat.regular_valence, lat.reference()
     try:
         ours, theirs = subdivision_matrix(scheme, regular), subdivision_matrix(reference, regular)
     except InvalidSchemeError as exc:
-        raise NotApplicableError(f"scheme {scheme.name!r}: the C1 test does not apply ({exc})") from None
+        return f"scheme {scheme.name!r}: the C1 test does not apply ({exc})"
     layout = ring_layout(lat)
     if ours[1:, :] != theirs[1:, :]:
         rules, verb = ("edge and face rules", "are") if lat.face_neighbours else ("edge rule", "is")
-        raise NotApplicableError(
+        return (
             f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} {verb} not "
             f"{layout.reference}'s, so its regular patches are not {layout.spline}s (the only regular splines it knows)"
         )
     if ours[0, :] != theirs[0, :]:
         mine = tuple(ours[0, k] for k in (0, 1, 1 + regular) if k < ours.cols)
         standard = tuple(theirs[0, k] for k in (0, 1, 1 + regular) if k < theirs.cols)
-        raise NotApplicableError(
+        return (
             f"the C1 test does not apply to scheme {scheme.name!r}: its vertex rule at the regular valence {regular} has the "
             f"weights {mine} (centre, each neighbour{', each face neighbour' if lat.face_neighbours else ''}), not "
             f"{layout.reference}'s {standard}; every regular vertex of the mesh uses it, so its regular patches are not "
             f"{layout.spline}s (the only regular splines it knows)"
         )
+    return None
 
 
 def omega_ball(n: int, j: int) -> flint.acb:
@@ -182,13 +272,14 @@ def omega_ball(n: int, j: int) -> flint.acb:
     return flint.acb(flint.fmpq(2 * j, n)).exp_pi_i()
 
 
-def _ball(w) -> flint.acb:
+def _rational(w) -> flint.fmpq:
+    """A weight at one valence as an exact FLINT rational (one line if it is not rational)."""
     if isinstance(w, (Fraction, int)):
-        return flint.acb(to_fmpq(w))
+        return to_fmpq(w)
     w = sp.sympify(w, strict=True)
     if not w.is_Rational:
         raise InvalidSchemeError(f"weight {w} is not an exact rational at this valence")
-    return flint.acb(to_fmpq(w))
+    return to_fmpq(w)
 
 
 def one_ring_rows(scheme: Scheme, n: int) -> list[dict]:
@@ -203,26 +294,54 @@ def one_ring_rows(scheme: Scheme, n: int) -> list[dict]:
     return rows
 
 
+def _exact_rows(scheme: Scheme, n: int) -> tuple[tuple[tuple[int, int, flint.fmpq], ...], ...]:
+    """:func:`one_ring_rows` as exact FLINT rationals ``((offset, class, weight), ...)`` per row."""
+    return tuple(tuple((d, m, _rational(w)) for (d, m), w in weights.items()) for weights in one_ring_rows(scheme, n))
+
+
+def frequency_blocks(scheme: Scheme, n: int):
+    """``j, rows -> B_j``: :func:`frequency_block` for every frequency of one valence, the rules at ``n`` read once.
+
+    The C1 test builds ``B_j`` for ``n / 2 + 1`` frequencies; sympy substitutes ``n`` into the
+    rules once per valence (not once per frequency), and each block computes only the powers
+    ``omega^(j d)`` of the stencils' offsets ``d`` (a few, not ``n``).
+    """
+    n = check_valence(n)
+    layout = ring_layout(scheme.lattice)
+    exact = _exact_rows(scheme, n)
+
+    def block(j: int, rows: int | None = None) -> flint.acb_mat:
+        rows = layout.two_ring if rows is None else rows
+        powers: dict[int, flint.acb] = {}
+
+        def power(d: int) -> flint.acb:
+            k = j * d % n
+            if k not in powers:
+                powers[k] = omega_ball(n, k)
+            return powers[k]
+
+        B = flint.acb_mat(rows, layout.two_ring)
+        for r, weights in enumerate(exact[:rows]):
+            for d, m, w in weights:
+                B[r, m] += w * power(d)
+        for r in range(layout.one_ring, rows):
+            for q, terms in enumerate(layout.offsets[r]):
+                for l, w in terms:
+                    B[r, q] += w * power(l)
+        return B
+
+    return block
+
+
 def frequency_block(scheme: Scheme, n: int, j: int, *, rows: int | None = None) -> flint.acb_mat:
     """``B_j``: the first ``rows`` level-1 classes of :func:`ring_layout` from the 2-ring at frequency ``j``.
 
     ``rows = None`` gives the square 2-ring block (``M_j`` upper left, ``S_j`` lower right);
     ``rows = len(layout.labels)`` also the new ring 3, which the sub-patches need. The ``O``
-    column is left out: for ``j != 0`` ``O`` is 0 in every eigenvector.
+    column is left out: for ``j != 0`` ``O`` is 0 in every eigenvector. Many frequencies of one
+    valence: :func:`frequency_blocks`.
     """
-    n = check_valence(n)
-    layout = ring_layout(scheme.lattice)
-    rows = layout.two_ring if rows is None else rows
-    powers = [omega_ball(n, j * d % n) for d in range(n)]
-    B = flint.acb_mat(rows, layout.two_ring)
-    for r, weights in enumerate(one_ring_rows(scheme, n)):
-        for (d, m), w in weights.items():
-            B[r, m] += _ball(w) * powers[d % n]
-    for r in range(layout.one_ring, rows):
-        for q, terms in enumerate(layout.offsets[r]):
-            for l, w in terms:
-                B[r, q] += w * powers[l % n]
-    return B
+    return frequency_blocks(scheme, n)(j, rows)
 
 
 @dataclass(frozen=True)

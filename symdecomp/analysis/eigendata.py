@@ -48,6 +48,7 @@ from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, circulant_weights, column_group, trig_table
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
+from symdecomp.parallel import ordered_map
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
@@ -371,22 +372,15 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
         prec = max(2 * prec, 1200)
 
 
-def _rounded_one(args) -> tuple[int, RoundedEigenData]:
-    scheme, n = args
+def _rounded_one(n: int, scheme: Scheme) -> tuple[int, RoundedEigenData]:
     data, rounded = certified_eigendata(scheme, n)
     return data.prec, rounded
 
 
-def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1):
-    """Yield ``(precision, RoundedEigenData)`` for the valences ``ns`` in order, on ``jobs`` processes."""
-    tasks = [(scheme, n) for n in ns]
-    if jobs <= 1 or len(tasks) < 2:
-        yield from map(_rounded_one, tasks)
-        return
-    from concurrent.futures import ProcessPoolExecutor
+def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local"):
+    """Yield ``(precision, RoundedEigenData)`` for the valences ``ns`` in order, on at most ``jobs`` processes.
 
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
-        # largest valences first keeps both processes busy; results come back in order
-        futures = {n: pool.submit(_rounded_one, t) for t, n in sorted(zip(tasks, ns), key=lambda tn: -tn[1])}
-        for n in ns:
-            yield futures[n].result()
+    The pool is :func:`symdecomp.parallel.ordered_map` (``executor``: ``"local"``, ``"dask"`` or
+    ``"dask=ADDRESS"``); the largest valences are handed out first, to keep every worker busy.
+    """
+    yield from ordered_map(_rounded_one, ns, shared={"scheme": scheme}, jobs=jobs, executor=executor, cost=lambda n: n)

@@ -27,7 +27,7 @@ import sympy as sp
 
 from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.claims.registry import Requirement, Text
+from symdecomp.claims.registry import Requirement, Text, Verbatim
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.scheme import Scheme
@@ -74,15 +74,16 @@ def _complex_tangent_spectrum(scheme: Scheme) -> Text | None:
 def _no_face_rule(scheme: Scheme) -> str | None:
     """Why a scheme without face neighbours is outside a statement about the quad 1-ring, or ``None``."""
     if scheme.face_rule is None:
-        return (f"the statement is about the (2n+1)-point 1-ring of a quad mesh, and the scheme {scheme.name!r} has no face "
-                "neighbours b_i (a triangle mesh)")
+        return Text("the statement is about the (2n+1)-point 1-ring of a quad mesh, and the scheme ", Verbatim(repr(scheme.name)),
+                    " has no face neighbours b_i (a triangle mesh)")
     return None
 
 
 def _free_parameters(scheme: Scheme) -> str | None:
     """The scheme's free parameters, when it has any."""
     if scheme.parameters:
-        return f"the scheme {scheme.name!r} has free parameters {', '.join(map(str, scheme.parameters))}; give them values first"
+        return Text("the scheme ", Verbatim(repr(scheme.name)), f" has free parameters {', '.join(map(str, scheme.parameters))}; "
+                    "give them values first")
     return None
 
 
@@ -91,7 +92,7 @@ def _not_mesh_rules(scheme: Scheme) -> str | None:
     try:
         mesh_rules(scheme)
     except InvalidSchemeError as exc:
-        return f"the supports of Section 3 live on whole meshes, and {exc}"
+        return Text("the supports of Section 3 live on whole meshes, and ", Verbatim(exc))
     return None
 
 

@@ -133,7 +133,7 @@ def at_parameter_values(scheme, symbolic, rerun):
     universal statement over the parameters), scope ``single case`` (one point of the family). Otherwise
     the verdict depends on the values and is ``undecided``. ``rerun(scheme)`` is the check on another scheme.
     """
-    from symdecomp.claims.registry import CheckResult, Scope, Status, Text
+    from symdecomp.claims.registry import CheckResult, Scope, Status, Text, Verbatim
     from symdecomp.errors import InvalidSchemeError
 
     values = generic_parameter_values(scheme.parameters)
@@ -143,7 +143,7 @@ def at_parameter_values(scheme, symbolic, rerun):
         concrete_scheme = scheme.substitute(values, name=f"{scheme.name} at {where}")
     except InvalidSchemeError as exc:
         return CheckResult(Status.UNDECIDED, Text("the counterexample is an expression in the parameters (", symbolic.counterexample,
-                                                  "), and the scheme is not defined at ", where, ": ", str(exc)))
+                                                  "), and the scheme is not defined at ", where, ": ", Verbatim(exc)))
     concrete = rerun(concrete_scheme)
     if concrete.status in (Status.REFUTED, Status.CORRECTED) and not unbound_parameters(concrete.counterexample, scheme.parameters):
         return CheckResult(

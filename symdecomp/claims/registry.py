@@ -79,6 +79,7 @@ from symdecomp.schemes.scheme import Scheme, catmull_clark
 
 __all__ = [
     "Text",
+    "Verbatim",
     "Status",
     "Scope",
     "erratum_scope",
@@ -181,6 +182,18 @@ class _TextPrinter(StrPrinter):
         return "%s%s, %s%s" % (left, self._print(expr.start), self._print(expr.end), right)
 
 
+class Verbatim(str):
+    """Words from outside the package, shown exactly as given: a scheme's name, an error message.
+
+    A finding (or a part of a :class:`Text`) may be one. LaTeX escapes every character of it (a
+    ``$`` in a scheme's name is a dollar sign, never the start of a formula, and a backslash is
+    a backslash, never a command); a terminal prints it as it is. Every text that a check writes
+    from its input is one: the scheme's name, the messages of the errors it caught.
+    """
+
+    __slots__ = ()
+
+
 @dataclass(frozen=True, init=False)
 class Text:
     """Prose with mathematics in it: words (``str``) and computed objects (sympy), in order.
@@ -188,7 +201,7 @@ class Text:
     The findings of a check (evidence, counterexample, corrected statement) are ``Text``, so
     that LaTeX typesets the objects as formulas (:func:`symdecomp.output.latex.aslatex`) and a
     terminal prints them readably (``str``), from the same source. A plain ``str`` part is
-    prose and is never parsed as mathematics.
+    prose and is never parsed as mathematics; a :class:`Verbatim` part is shown exactly as given.
 
     >>> import sympy as sp
     >>> x = sp.Symbol("x")
@@ -444,15 +457,16 @@ def _run_check(label: str, scheme: Scheme) -> CheckResult:
     # NotApplicableError (the scheme does not meet the hypotheses of an analysis the check uses) is an
     # InvalidSchemeError; another one means the scheme is outside what the claim's derivation covers (module docstring).
     except InvalidSchemeError as exc:
-        why = Text(*exc.parts) if exc.parts else str(exc)
-        return CheckResult(Status.NOT_APPLICABLE, Text(f"not applicable to the scheme {scheme.name!r}: ", why))
+        why = Text(*exc.parts) if exc.parts else Verbatim(exc)
+        return CheckResult(Status.NOT_APPLICABLE, Text("not applicable to the scheme ", Verbatim(repr(scheme.name)), ": ", why))
     except Exception as exc:  # the registry reports, the caller decides
-        tb = traceback.format_exception_only(type(exc), exc)[-1].strip()
+        tb = Verbatim(traceback.format_exception_only(type(exc), exc)[-1].strip())
         if scheme.parameters:  # a numeric step met a free parameter: the check needs values, it did not fail
             return CheckResult(Status.NOT_APPLICABLE, Text(
-                f"not applicable to the scheme {scheme.name!r} while its parameters {', '.join(map(str, scheme.parameters))} are "
-                f"free: the check compares numbers (it stopped at {tb}); give the parameters values"))
-        return CheckResult(Status.ERROR, f"check raised {tb}")
+                "not applicable to the scheme ", Verbatim(repr(scheme.name)), f" while its parameters "
+                f"{', '.join(map(str, scheme.parameters))} are free: the check compares numbers (it stopped at ", tb,
+                "); give the parameters values"))
+        return CheckResult(Status.ERROR, Text("check raised ", tb))
     if not isinstance(result, CheckResult):
         return CheckResult(Status.ERROR, f"check returned {type(result).__name__}, not CheckResult")
     undefined = undefined_values(result.evidence, result.counterexample, result.correction)

@@ -23,7 +23,7 @@ from symdecomp.claims.evidence import (
 )
 from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
 from symdecomp.claims.notation import M as Mk
-from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
+from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, Verbatim, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.schemes.shift_stencil import composed_stages
@@ -311,7 +311,7 @@ def _prop51(scheme: Scheme) -> CheckResult:
     try:
         certified, upto = dominant_vs_frequency_zero(scheme, last)
     except ArithmeticError as exc:
-        return CheckResult(Status.UNDECIDED, Text("the interval comparison did not separate the eigenvalues: ", str(exc)), steps=steps)
+        return CheckResult(Status.UNDECIDED, Text("the interval comparison did not separate the eigenvalues: ", Verbatim(exc)), steps=steps)
     if not certified:
         return frequency_zero_refutation(ev, block, upto, steps)
     if not sign_on_interval(ev.trace, C, -1, 1):  # |other root| < dominant root iff trace(M_j) > 0 (real roots)

@@ -13,7 +13,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, Verbatim, claim
 from symdecomp.schemes.lattice import LATTICES
 from symdecomp.schemes.scheme import Scheme, catmull_clark
 from symdecomp.symbols import n as N
@@ -37,10 +37,10 @@ def _table(scheme: Scheme):
     for n in range(lo, hi + 1):
         r = c1_test(scheme, n)
         if r.verdict is C1Verdict.NOT_C1:
-            what = f"{scheme.name}, n = {n}: {r.reason}"
+            what = Verbatim(f"{scheme.name}, n = {n}: {r.reason}")
             return None, CheckResult(Status.REFUTED, what, counterexample=what)
         if r.verdict is not C1Verdict.C1:  # undecided: the test could not settle it, which is no finding about the scheme
-            return None, CheckResult(Status.UNDECIDED, f"{scheme.name}, n = {n}: {r.reason}")
+            return None, CheckResult(Status.UNDECIDED, Verbatim(f"{scheme.name}, n = {n}: {r.reason}"))
         lam = r.spectral.subdominant.value.real
         rows.append([n, sp.Float(float(lam.mid()), 6), _down(r.spectral.gap), _down(r.jacobian_lower_bound), r.winding_number])
     return rows, None
@@ -82,7 +82,7 @@ def _c1_reif(scheme: Scheme) -> CheckResult:
     )
     return CheckResult(
         Status.VERIFIED,
-        Text(f"Reif's test certified for n = {lo}..{hi} for {scheme.name} and {companion.name} in rigorous interval "
+        Text(f"Reif's test certified for n = {lo}..{hi} for ", Verbatim(scheme.name), f" and {companion.name} in rigorous interval "
              "arithmetic (Arb balls; exact in the cyclotomic field at frequency 0); symdecomp c1 extends the range"),
         steps=steps,
         valences=(lo, hi),

@@ -10,7 +10,7 @@ from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality, hyperbolic_lambda, iterate_hyperbolic_ring
 from symdecomp.analysis.reduction import subdivision_block_form
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim
+from symdecomp.claims import CheckResult, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, NO_FREE_PARAMETERS, REAL_TANGENT_SPECTRUM
 from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
 from symdecomp.errors import InvalidInputError
@@ -237,7 +237,7 @@ def _basis(scheme: Scheme) -> CheckResult:
     try:
         bad, steps = (None, ()) if scheme.parameters else _nonzero_for_every_valence(scheme, lo)
     except InvalidInputError as exc:  # a weight such as cos(2 pi/n): the resultants are not rational in n
-        bad, steps, not_rational = None, (), str(exc)
+        bad, steps, not_rational = None, (), Verbatim(exc)
     checked = sorted(set(bad or ()) | {3, 4, 5} if bad is not None else {3, 4, 5})
     comps = {n: elliptic_component(cc, n, (1, 0, 0)) for n in checked if n >= lo}
     if any(c is None for c in comps.values()):

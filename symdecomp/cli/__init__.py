@@ -4,7 +4,8 @@ Exit codes (also in ``symdecomp --help`` and the README):
 
 ===  =====================================================================================
 0    success
-1    a check disagrees or could not reach a verdict (or an internal error, reported in one line)
+1    a check disagrees or could not reach a verdict (or an internal error, or an output that could not
+     be written after its path was checked: a full disk, an I/O error; reported in one line)
 2    bad input: the message names the argument and the problem
 3    an optional component is missing (the OpenSubdiv bridge); the message says how to get it
 130  interrupted (Ctrl-C or SIGTERM); worker processes are stopped with the command
@@ -24,7 +25,7 @@ import signal
 import sys
 
 from symdecomp.cli.common import LIMITS, Parser
-from symdecomp.errors import InternalError, ResourceLimitError, SymdecompError, UnavailableError
+from symdecomp.errors import InternalError, OutputWriteError, ResourceLimitError, SymdecompError, UnavailableError
 
 __all__ = ["main", "build_parser", "EXIT_CODES"]
 
@@ -34,7 +35,7 @@ COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_
 #: The exit codes of every command.
 EXIT_CODES = {
     0: "success",
-    1: "a check disagrees or could not reach a verdict",
+    1: "a check disagrees or could not reach a verdict (or an output could not be written: disk full, I/O error)",
     2: "bad input (the message names the argument)",
     3: "an optional component is missing (the message says how to get it)",
     130: "interrupted (Ctrl-C or SIGTERM)",
@@ -108,6 +109,8 @@ def main(argv=None) -> int:
         return _fail(exc, 3)
     except InternalError as exc:
         return _fail(f"internal error (please report): {exc}", 1)
+    except OutputWriteError as exc:  # the path was fine (checked first); the write failed: not bad input
+        return _fail(exc, 1)
     except ResourceLimitError as exc:
         return _fail(exc, 2)
     except SymdecompError as exc:

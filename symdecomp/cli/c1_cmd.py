@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 import sys
+from typing import NamedTuple
 
-from symdecomp.cli.common import Once, add_scheme_option, flag, integer, print_json, progress, valence_range
+from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, integer, print_json, progress, valence_range
+from symdecomp.parallel import ordered_map
+from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.result import C1Verdict
 
@@ -31,7 +34,7 @@ def register(sub) -> None:
         "'undecided' with what would decide it. Exit status 1 unless every valence is certified C1.",
     )
     p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, required=True, metavar="A:B",
-                   help="valences to test: an inclusive range A:B or a single N (at most 128)")
+                   help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]})")
     p.add_argument("--depth", type=_depth, action=Once, default=6,
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "
                    "in four, or a triangle twice by bisection)")
@@ -39,15 +42,31 @@ def register(sub) -> None:
                    help='print a list with one object per valence: {"n", "verdict" (c1/not-c1/undecided), "reason", '
                    '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}')
     add_scheme_option(p)
+    add_pool_options(p)
     p.set_defaults(func=run)
+
+
+class _Row(NamedTuple):
+    """What the command prints of one valence's :class:`~symdecomp.verify.c1.C1Result` (its Arb balls stay in the worker)."""
+
+    n: int
+    verdict: C1Verdict
+    reason: str
+    json: dict
+
+
+def _one(n: int, scheme: Scheme, max_depth: int) -> _Row:
+    r = c1_test(scheme, n, max_depth=max_depth)
+    return _Row(r.n, r.verdict, r.reason, r.as_json())
 
 
 def run(args) -> int:
     valences = args.valences
-    shown = progress(valences, len(valences), "c1", enabled=sys.stderr.isatty())
-    results = [c1_test(args.scheme, n, max_depth=args.depth) for n in shown]
+    rows = ordered_map(_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
+                       executor=args.executor, warm_up=True)
+    results = list(progress(rows, len(valences), "c1", enabled=sys.stderr.isatty()))
     if args.json:
-        print_json([r.as_json() for r in results])
+        print_json([r.json for r in results])
     else:
         print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
         print(f"method: {args.scheme.lattice.c1_method}")

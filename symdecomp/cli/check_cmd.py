@@ -2,13 +2,7 @@
 
 from __future__ import annotations
 
-import ctypes
-import itertools
-import multiprocessing
-import os
-import signal
 import time
-from functools import partial
 
 import mpmath
 
@@ -16,19 +10,20 @@ from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.cli.common import (
     LIMITS,
     Once,
+    add_pool_options,
     add_rings_option,
     add_scheme_option,
     digits,
     flag,
     general_path,
     given,
-    positive_int,
     print_json,
     progress,
     refuse_together,
     valence_range,
 )
 from symdecomp.errors import InvalidInputError
+from symdecomp.parallel import Executor, ordered_map
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_memory
 from symdecomp.verify.certify import certify
@@ -38,7 +33,7 @@ from symdecomp.verify.ring_certify import certify_ring
 from symdecomp.verify.ring_numeric import MAX_DOUBLE_DIGITS, ring_numeric_check
 from symdecomp.verify.structural import STRUCTURAL_BYTES_PER_VALENCE, certify_structural, structural_obstacle
 
-__all__ = ["register", "run", "check_valences", "pool_size", "ROUTES", "SOLVERS"]
+__all__ = ["register", "run", "check_valences", "ROUTES", "SOLVERS"]
 
 #: The certificates of ``--certify`` (``--route``) and the eigen-solvers of numeric mode (``--solver``).
 ROUTES = ("structural", "charpoly")
@@ -77,8 +72,7 @@ def register(sub) -> None:
                    "6.1) or charpoly (the dense characteristic polynomial of the full matrix, FLINT); default: structural "
                    "where it applies (edge and face rules free of n, no free parameters), else charpoly, saying so")
     flag(p, "--structural", help="with --certify: the same as --route structural (kept for existing scripts)")
-    p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=os.cpu_count() or 1,
-                   help="worker processes at most (default: the number of CPUs; never more than the valences or CPUs)")
+    add_pool_options(p)
     flag(p, "--json", help="print one JSON object: {rows: [...], summary: {...}}")
     add_scheme_option(p)
     add_rings_option(p)
@@ -95,72 +89,26 @@ def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpol
     return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver=solver)
 
 
-#: The job of the forked workers, set before they start (so only valences are sent to them).
-_JOB: dict = {}
-
-
-def _one_forked(n):
-    return _one(n, **_JOB)
-
-
-def pool_size(jobs: int, work: int) -> int:
-    """Worker processes for ``work`` items: never more than the work, the CPUs or ``jobs``."""
-    return max(1, min(jobs, work, os.cpu_count() or 1))
-
-
-def _worker_init(parent: int) -> None:
-    """In each forked worker: die with the parent, leave Ctrl-C and SIGTERM to the parent's cleanup."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent terminates the pool (no traceback per worker)
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    _die_with_parent(parent)
-
-
-def _die_with_parent(parent: int) -> None:
-    """Ask Linux to send SIGTERM to this process when its parent exits (prctl PR_SET_PDEATHSIG)."""
-    try:
-        libc = ctypes.CDLL(None, use_errno=True)
-        libc.prctl(1, signal.SIGTERM, 0, 0, 0)  # PR_SET_PDEATHSIG = 1
-    except (OSError, AttributeError):  # pragma: no cover - not Linux
-        pass
-    if os.getppid() != parent:  # the parent died before the request took effect
-        os._exit(1)
-
-
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
                    jobs: int = 1, show_progress: bool = True, rings: int | None = None, method: str = "charpoly",
-                   solver: str = "mpmath"):
+                   executor: str | Executor = "local", solver: str = "mpmath"):
     """Yield the check of each valence in order (a :class:`~symdecomp.verify.certify.Certificate` or
     :class:`~symdecomp.verify.numeric.NumericCheck`), in at most ``jobs`` processes.
 
-    The pool is never larger than the remaining valences or the CPU count; its workers die with
-    this process (on SIGTERM, SIGINT, or if it is killed) and are terminated if the caller stops.
-    ``rings``: check the ``rings``-ring frequency matrices (any scheme) instead of the 1-ring closed
-    forms; ``method``: the certificate (``"charpoly"`` or ``"structure"``, see
-    :func:`~symdecomp.verify.ring_certify.certify_ring` and :mod:`~symdecomp.verify.structural`);
-    ``solver``: numeric mode's eigen-solver (``"mpmath"`` or ``"flint"``).
+    The pool is :func:`symdecomp.parallel.ordered_map` (``executor``: ``"local"``, ``"dask"`` or
+    ``"dask=ADDRESS"``); the first valence is checked here first, so that the symbolic step is
+    done once, before the workers fork. ``rings``: check the ``rings``-ring frequency matrices
+    (any scheme) instead of the 1-ring closed forms; ``method``: the certificate (``"charpoly"``
+    or ``"structure"``, see :func:`~symdecomp.verify.ring_certify.certify_ring` and
+    :mod:`~symdecomp.verify.structural`); ``solver``: numeric mode's eigen-solver (``"mpmath"`` or ``"flint"``).
     """
     valences = list(valences)
     if rings is None:
         closed_forms = closed_forms or derived_closed_forms(scheme)
     job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms, rings=rings, method=method, solver=solver)
     label = "certify" if certified else f"check {dps} digits"
-    workers = pool_size(jobs, len(valences) - 1)
-    if workers > 1 and "fork" in multiprocessing.get_all_start_methods():
-        first = _one(valences[0], **job)  # also does the symbolic step once, before the workers fork
-        _JOB.clear()
-        _JOB.update(job)
-        pool = multiprocessing.get_context("fork").Pool(workers, initializer=_worker_init, initargs=(os.getpid(),))
-        try:
-            rest = pool.imap(_one_forked, valences[1:], chunksize=1)
-            yield from progress(itertools.chain([first], rest), len(valences), label, enabled=show_progress)
-            pool.close()
-        finally:
-            pool.terminate()
-            pool.join()
-            _JOB.clear()
-    else:
-        work = partial(_one, **job)
-        yield from progress(map(work, valences), len(valences), label, enabled=show_progress)
+    rows = ordered_map(_one, valences, shared=job, jobs=jobs, executor=executor, warm_up=True)
+    yield from progress(rows, len(valences), label, enabled=show_progress)
 
 
 def _route(args, rings) -> tuple[str, str]:
@@ -224,7 +172,8 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         _header(args, rings, solver)
     for r in check_valences(args.scheme, args.valences, certified=args.certify, dps=args.dps,
                             closed_forms=closed_forms, jobs=args.jobs, show_progress=True, rings=rings,
-                            method="structure" if args.route == "structural" else "charpoly", solver=solver):
+                            method="structure" if args.route == "structural" else "charpoly", solver=solver,
+                            executor=args.executor):
         rows.append(r)
         if not args.json:
             _print_row(args, r)

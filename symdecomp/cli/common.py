@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import re
 import sys
 
 from symdecomp.errors import InvalidInputError, SymdecompError
+from symdecomp.parallel import parse_executor
 from symdecomp.schemes.files import SCHEMES, load_scheme
 from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.rings import MAX_RINGS
@@ -34,6 +36,7 @@ __all__ = [
     "scheme_by_name",
     "add_scheme_option",
     "add_rings_option",
+    "add_pool_options",
     "general_path",
     "closed_form_obstacle",
     "refuse_non_quad",
@@ -60,7 +63,8 @@ LIMITS = {
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
     "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),
-    "c1": (128, "each valence needs the spectrum of the 2-ring matrix and interval bounds of its characteristic map"),
+    "c1": (4096, "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 4096 takes about "
+           "0.15 s, the range 3:4096 about 5 minutes on one core"),
     "c1 --depth": (12, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),
@@ -222,6 +226,26 @@ def add_rings_option(parser: argparse.ArgumentParser) -> None:
         help=f"the K-ring neighbourhood of the centre (1..{MAX_RINGS}; default 1: the paper's 1-ring), "
         "its matrix built by exact refinement with the scheme's mesh rules",
     )
+
+
+def _executor(text: str):
+    try:
+        return parse_executor(text, option=None)
+    except InvalidInputError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def add_pool_options(parser: argparse.ArgumentParser, *, default_jobs: int | None = None) -> None:
+    """``--jobs N`` and ``--executor local|dask|dask=ADDRESS``: where the valences are computed (:mod:`symdecomp.parallel`)."""
+    jobs = default_jobs or os.cpu_count() or 1
+    parser.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=jobs,
+                        help=f"worker processes at most (default {'the number of CPUs' if default_jobs is None else jobs}; "
+                        "the local pool and a Dask LocalCluster never have more than the valences or the CPUs)")
+    parser.add_argument("--executor", type=_executor, action=Once, default=parse_executor("local"),
+                        metavar="local|dask|dask=ADDRESS",
+                        help="local: a pool of forked processes (default); dask: a Dask LocalCluster of --jobs workers "
+                        "started for the run; dask=ADDRESS: the Dask scheduler at ADDRESS, e.g. tcp://127.0.0.1:8786, "
+                        "whose workers have symdecomp installed (needs pip install 'symdecomp[dask]')")
 
 
 def general_path(args) -> bool:

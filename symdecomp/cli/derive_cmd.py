@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import argparse
 import re
 import sys
 from pathlib import Path
@@ -31,9 +30,9 @@ def register(sub) -> None:
         "longer correspond to a section are removed; other files in the directory are left alone. "
         "Exit status 1 if a check failed to run (status 'error'; the files are written all the same).",
     )
-    p.add_argument("--out", type=_out, action=Once, default=Path("derivations"),
-                   help="output directory (default: derivations/); written as a whole, so an interrupted run "
-                   "leaves the old files or the new ones, never a mix")
+    p.add_argument("--out", action=Once, default="derivations",
+                   help="output directory (default: derivations/), checked before any claim is computed; written as a "
+                   "whole, so an interrupted run leaves the old files or the new ones, never a mix")
     flag(p, "--json", help="print a JSON list of the files written")
     p.add_argument(
         "--label",
@@ -56,18 +55,7 @@ def write_derivations(out: Path, *, show_progress: bool = False, scheme=None, bu
 
 def _write(out: Path, files: dict[str, str]) -> list[Path]:
     """Replace the owned files of ``out`` by ``files`` in one step (stale owned files go, others stay)."""
-    try:
-        return replace_owned_files(out, files, OWNED)
-    except OSError as exc:
-        raise InvalidInputError(f"--out {out}: cannot write there ({exc.strerror or exc})") from None
-
-
-def _out(text: str) -> Path:
-    """argparse type: the output directory, checked before any claim is computed."""
-    try:
-        return check_output_directory(text)
-    except InvalidInputError as exc:
-        raise argparse.ArgumentTypeError(str(exc).removeprefix("--out ").removeprefix("--out: ")) from None
+    return replace_owned_files(out, files, OWNED)
 
 
 def run(args) -> int:
@@ -82,13 +70,14 @@ def run(args) -> int:
             raise InvalidInputError(f"no claim labelled {', '.join(unknown)}; known: {', '.join(known)}")
         print("\n".join(claim_latex(known[label], check_claim(label, args.scheme, budget=args.budget)) for label in args.label), end="")
         return 1 if any(check_claim(label, args.scheme, budget=args.budget).status is Status.ERROR for label in args.label) else 0
-    written = write_derivations(args.out, show_progress=not args.no_progress and not args.json, scheme=args.scheme, budget=args.budget)
+    out = check_output_directory(args.out)  # before the claims are computed: a bad path is bad input, now
+    written = write_derivations(out, show_progress=not args.no_progress and not args.json, scheme=args.scheme, budget=args.budget)
     if args.json:
         print_json([str(p) for p in written])
     else:
         for path in written:
             print(path)
-        print(f"compile with: cd {args.out} && latexmk -pdf main.tex", file=sys.stderr)
+        print(f"compile with: cd {out} && latexmk -pdf main.tex", file=sys.stderr)
     failed = [c.label for c in all_claims() if check_claim(c.label, args.scheme, budget=args.budget).status is Status.ERROR]
     if failed:
         print(f"symdecomp: the checks of {', '.join(failed)} failed to run (status error)", file=sys.stderr)

@@ -14,9 +14,10 @@ from __future__ import annotations
 import sys
 
 from symdecomp.analysis.eigendata import patch_eigendata, rounded_eigendata
-from symdecomp.cli.common import Once, add_scheme_option, digits, positive_int, print_json, progress, valence_range
+from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, digits, print_json, progress, valence_range
+from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import EvalDataFileError
-from symdecomp.output.evaldata import binary_bytes, check_writable, dumps, json_document, write_atomic
+from symdecomp.output.evaldata import binary_bytes, dumps, json_document
 from symdecomp.schemes.lattice import PAPER_LATTICE
 
 
@@ -31,11 +32,12 @@ def register(sub) -> None:
     )
     p.add_argument("--n", type=valence_range("evaldata"), action=Once, required=True, metavar="3:N",
                    help="valences 3..N (the binary file starts at 3)")
-    p.add_argument("--out", action=Once, required=True, metavar="FILE", help="output file (written atomically)")
+    p.add_argument("--out", action=Once, required=True, metavar="FILE",
+                   help="output file, checked before the work starts (a regular file is replaced atomically; a device or a "
+                   "FIFO is written in place; a symbolic link is followed)")
     p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary", help="binary (default) or json")
     p.add_argument("--digits", type=digits(), action=Once, default=20, help="significant digits in the JSON form (default 20)")
-    p.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=2,
-                   help="worker processes for the binary file (default 2)")
+    add_pool_options(p, default_jobs=2)  # the binary file's valences; the JSON form is computed in this process
     p.add_argument("--json", action="store_true", help="print a JSON summary")
     add_scheme_option(p)
     p.set_defaults(func=run)
@@ -47,12 +49,12 @@ def run(args) -> int:
         raise EvalDataFileError(f"--n {ns[0]}:{ns[-1]}: the file holds valences 3..N; give --n 3:{ns[-1]}")
     if args.format == "binary" and args.scheme.lattice != PAPER_LATTICE:
         raise EvalDataFileError(f"--format binary: the binary layout is Stam's Catmull-Clark file; for --scheme {args.scheme.name} use --format json")
-    check_writable(args.out)
+    check_output_file(args.out)
     show = sys.stderr.isatty() and not args.json
     precs = []
     if args.format == "binary":
         rounded = []
-        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs), len(ns), "evaldata", enabled=show):
+        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs, args.executor), len(ns), "evaldata", enabled=show):
             precs.append(prec)
             rounded.append(r)
         content = binary_bytes(rounded)
@@ -64,7 +66,7 @@ def run(args) -> int:
             precs.append(prec)
             balls.append(data)
         content = dumps(json_document(balls, args.digits, args.scheme.name))
-    write_atomic(args.out, content)
+    write_output_file(args.out, content)
     defective = [] if args.format == "binary" else [d.n for d in balls if d.jordan]
     summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": len(content), "precision_bits": max(precs)}
     summary["jordan_valences"] = defective

@@ -1,94 +1,190 @@
-"""Writing the command line's output files so that an interrupted run never leaves a mix.
+"""Writing the command line's output files: checked before the work starts, never left half written.
+
+Every output path is checked first (:func:`check_output_file`, :func:`check_output_directory`):
+a bad path is bad input, one line naming the option (exit code 2), before anything is computed.
+A write that fails later (a full disk, an I/O error) raises
+:class:`~symdecomp.errors.OutputWriteError` (exit code 1).
+
+How a file is written (:func:`output_stream`, :func:`write_output_file`): a symbolic link is
+followed and its target written (the link stays); a character device or a FIFO (``/dev/null``,
+``/dev/stdout``, a named pipe) is opened and written in place, never renamed over; a regular file
+is written through a temporary file in its directory and ``os.replace``, so that a reader sees the
+old file or the new one. A new file gets the permissions the umask gives; a replaced file keeps
+its mode. Other kinds of file (a block device, a socket) are refused.
 
 :func:`replace_owned_files` writes a whole set of files into a directory as one step: the new
 directory is assembled next to the old one (the new files, plus the files of the old directory
 that the command does not own) and then swapped in with one ``renameat2(RENAME_EXCHANGE)``
 (Linux; elsewhere two renames, with the old copy kept until the new one is in place). Either
-the old set or the new set is there, never some of each. :func:`atomic_write_text` does the
-same for one file (temporary file and ``os.replace``).
+the old set or the new set is there, never some of each. A symbolic link to a directory is
+followed: the directory it points to is replaced, the link stays.
 """
 
 from __future__ import annotations
 
+import contextlib
 import ctypes
 import os
 import re
 import shutil
+import stat
 import tempfile
 from pathlib import Path
 
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import InvalidInputError, OutputWriteError
 
-__all__ = ["check_output_directory", "replace_owned_files", "atomic_write_text"]
+__all__ = ["check_output_directory", "check_output_file", "output_stream", "write_output_file", "replace_owned_files"]
+
+#: The kinds of existing file written in place (opened and streamed into, never replaced).
+_STREAMED = {stat.S_IFCHR: "a character device", stat.S_IFIFO: "a FIFO"}
+_KINDS = {stat.S_IFBLK: "a block device", stat.S_IFSOCK: "a socket", stat.S_IFDIR: "a directory"}
+
+
+def _path_text(out, option: str, what: str) -> str:
+    text = os.fspath(out) if isinstance(out, (str, os.PathLike)) else None
+    if text is None or not text.strip():
+        raise InvalidInputError(f"{option}: the output {what} must be a non-empty path")
+    if isinstance(text, bytes):
+        text = os.fsdecode(text)
+    if "\0" in text:
+        raise InvalidInputError(f"{option}: the path contains a NUL character")
+    return text
+
+
+def _target(text: str) -> Path:
+    """Where writing ``text`` lands: the path with every symbolic link followed (a dangling one: where it points)."""
+    return Path(os.path.realpath(text))
+
+
+def _stat(target: Path, option: str, text: str) -> os.stat_result | None:
+    try:
+        return os.stat(target)
+    except FileNotFoundError:
+        return None
+    except OSError as exc:
+        raise InvalidInputError(f"{option} {text}: {exc.strerror or exc}") from None
+
+
+def _probe(folder: Path, option: str, text: str) -> None:
+    """Create and remove a directory in ``folder``: the only test of writability that also holds for root
+    and for read-only file systems."""
+    if not folder.is_dir():
+        raise InvalidInputError(f"{option} {text}: the parent directory {folder} does not exist")
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=".symdecomp-probe-", dir=folder))
+    except OSError as exc:
+        raise InvalidInputError(f"{option} {text}: the parent directory {folder} is not writable ({exc.strerror or exc})") from None
+
+
+def check_output_file(out, option: str = "--out") -> Path:
+    """``out`` as a Path if an output file can be written there (module docstring); else one clear error."""
+    text = _path_text(out, option, "file")
+    target = _target(text)
+    st = _stat(target, option, text)
+    if st is not None:
+        kind = stat.S_IFMT(st.st_mode)
+        if kind in _STREAMED:
+            if not os.access(target, os.W_OK):
+                raise InvalidInputError(f"{option} {text}: {_STREAMED[kind]} that is not writable")
+            return Path(text)
+        if kind != stat.S_IFREG:
+            raise InvalidInputError(f"{option} {text}: is {_KINDS.get(kind, 'not a regular file')}; give a regular file, "
+                                    "a character device or a FIFO")
+    _probe(target.parent, option, text)
+    return Path(text)
 
 
 def check_output_directory(out, option: str = "--out") -> Path:
     """``out`` as a Path if it is (or can become) a writable directory; else one clear error."""
-    text = os.fspath(out) if isinstance(out, (str, os.PathLike)) else None
-    if text is None or not text.strip():
-        raise InvalidInputError(f"{option}: the output directory must be a non-empty path")
-    if "\0" in text:
-        raise InvalidInputError(f"{option}: the path contains a NUL character")
-    path = Path(text)
-    parent = path.absolute().parent
-    if path.exists() and not path.is_dir():
+    text = _path_text(out, option, "directory")
+    target = _target(text)
+    st = _stat(target, option, text)
+    if st is not None and not stat.S_ISDIR(st.st_mode):
         raise InvalidInputError(f"{option} {text}: exists and is not a directory")
-    if not parent.is_dir():
-        raise InvalidInputError(f"{option} {text}: the parent directory {parent} does not exist")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise InvalidInputError(f"{option} {text}: the parent directory {parent} is not writable")
-    if path.exists() and not os.access(path, os.W_OK | os.X_OK):
+    _probe(target.parent, option, text)
+    if st is not None and not os.access(target, os.R_OK | os.W_OK | os.X_OK):
         raise InvalidInputError(f"{option} {text}: the directory is not writable")
-    return path
+    return Path(text)
 
 
-def atomic_write_text(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` through a temporary file in the same directory and ``os.replace``."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+@contextlib.contextmanager
+def output_stream(out, option: str = "--out"):
+    """A binary file object writing the output file ``out`` as the module docstring says.
+
+    Check ``out`` first (:func:`check_output_file`). An ``OSError`` while writing becomes
+    :class:`~symdecomp.errors.OutputWriteError`; a regular file is then left as it was.
+    """
+    target = _target(_path_text(out, option, "file"))
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.chmod(tmp, 0o666 & ~_umask())
-        os.replace(tmp, path)
-    except BaseException:
-        _remove(tmp)
-        raise
+        st = _stat(target, option, os.fspath(out))
+        if st is not None and stat.S_IFMT(st.st_mode) in _STREAMED:
+            with os.fdopen(os.open(target, os.O_WRONLY), "wb") as fh:
+                yield fh
+            return
+        mode = stat.S_IMODE(st.st_mode) if st is not None else 0o666 & ~_umask()
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
+        try:
+            with os.fdopen(fd, "wb") as fh:
+                yield fh
+                fh.flush()
+                os.fsync(fh.fileno())
+            os.chmod(tmp, mode)
+            os.replace(tmp, target)
+        except BaseException:
+            _remove(tmp)
+            raise
+    except OSError as exc:
+        if isinstance(exc, OutputWriteError):
+            raise
+        raise OutputWriteError(f"{option} {os.fspath(out)}: cannot write ({exc.strerror or exc})") from None
 
 
-def replace_owned_files(out: Path, files: dict[str, str], owned: re.Pattern) -> list[Path]:
+def write_output_file(out, content: bytes | str, option: str = "--out") -> None:
+    """Write ``content`` (``str``: UTF-8) to the output file ``out`` (:func:`output_stream`)."""
+    with output_stream(out, option) as fh:
+        fh.write(content.encode("utf-8") if isinstance(content, str) else content)
+
+
+def replace_owned_files(out: Path, files: dict[str, str], owned: re.Pattern, option: str = "--out") -> list[Path]:
     """Make ``out`` hold exactly ``files`` among the names matching ``owned``, in one step.
 
     Files in ``out`` whose names do not match ``owned`` are carried over unchanged. Returns the
-    paths written. Raises :class:`~symdecomp.errors.InvalidInputError` for an unusable ``out``.
+    paths written. Raises :class:`~symdecomp.errors.InvalidInputError` for an unusable ``out``
+    and :class:`~symdecomp.errors.OutputWriteError` when writing fails (the old files stay).
     """
-    out = check_output_directory(out)
-    parent = out.absolute().parent
-    staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=parent))
+    out = check_output_directory(out, option)
+    target = _target(os.fspath(out))  # a link to a directory: the directory is replaced, the link stays
     try:
-        if out.is_dir():
-            shutil.copymode(out, staging)
-            for entry in sorted(out.iterdir()):
-                if owned.match(entry.name) and entry.is_file():
-                    continue
-                target = staging / entry.name
-                if entry.is_dir() and not entry.is_symlink():
-                    shutil.copytree(entry, target, symlinks=True)
-                else:
-                    shutil.copy2(entry, target, follow_symlinks=False)
-        else:
-            os.chmod(staging, 0o777 & ~_umask())
-        for name, text in files.items():
-            with open(staging / name, "w", encoding="utf-8", newline="\n") as fh:
-                fh.write(text)
-        _swap_in(staging, out)
-    except BaseException:
-        shutil.rmtree(staging, ignore_errors=True)
-        raise
-    shutil.rmtree(staging, ignore_errors=True)  # now holds the old directory, if there was one
+        staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.new-", dir=target.parent))
+        try:
+            _assemble(staging, target, files, owned)
+            _swap_in(staging, target)
+        except BaseException:
+            shutil.rmtree(staging, ignore_errors=True)
+            raise
+        shutil.rmtree(staging, ignore_errors=True)  # now holds the old directory, if there was one
+    except OSError as exc:
+        raise OutputWriteError(f"{option} {out}: cannot write ({exc.strerror or exc})") from None
     return [out / name for name in files]
+
+
+def _assemble(staging: Path, target: Path, files: dict[str, str], owned: re.Pattern) -> None:
+    """Fill ``staging`` with ``files`` and the entries of ``target`` (if it exists) that are not owned."""
+    if target.is_dir():
+        shutil.copymode(target, staging)
+        for entry in sorted(target.iterdir()):
+            if owned.match(entry.name) and entry.is_file():
+                continue
+            copy = staging / entry.name
+            if entry.is_dir() and not entry.is_symlink():
+                shutil.copytree(entry, copy, symlinks=True)
+            else:
+                shutil.copy2(entry, copy, follow_symlinks=False)
+    else:
+        os.chmod(staging, 0o777 & ~_umask())
+    for name, text in files.items():
+        with open(staging / name, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
 
 
 def _swap_in(staging: Path, out: Path) -> None:

@@ -21,15 +21,14 @@ not diagonalizable: Loop at ``N = 3``). Control points, sub-patches and the eval
 :mod:`symdecomp.schemes.patch` and :mod:`symdecomp.analysis.evaluation`; the
 ``layout`` string says the same in one line.
 
-Files are written atomically: a temporary file in the target directory, then ``os.replace``.
+The command line writes these files (``symdecomp.cli.files``: checked first, replaced atomically,
+devices and FIFOs written in place).
 """
 
 from __future__ import annotations
 
 import json
-import os
 import struct
-import tempfile
 from collections.abc import Iterable
 
 import flint
@@ -38,7 +37,7 @@ import numpy as np
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData
 from symdecomp.errors import EvalDataFileError
 
-__all__ = ["EvalDataFileError", "binary_bytes", "write_atomic", "read_binary", "json_document", "read_json", "dumps", "check_writable"]
+__all__ = ["EvalDataFileError", "binary_bytes", "read_binary", "json_document", "read_json", "dumps"]
 
 FORMAT = "stam-catmull-clark"
 LOOP_FORMAT = "stam-loop"
@@ -161,35 +160,6 @@ def read_json(path) -> dict[int, RoundedEigenData]:
     except (KeyError, TypeError, ValueError) as exc:
         raise EvalDataFileError(f"{path}: malformed eigen-data document ({exc})") from None
     return out
-
-
-def check_writable(path) -> None:
-    """Raise :class:`EvalDataFileError` now (before a long computation) if ``path`` cannot be written."""
-    folder = os.path.dirname(os.path.abspath(path)) or "."
-    if os.path.isdir(path):
-        raise EvalDataFileError(f"--out {path}: is a directory")
-    if not os.path.isdir(folder):
-        raise EvalDataFileError(f"--out {path}: no such directory {folder}")
-    if not os.access(folder, os.W_OK):
-        raise EvalDataFileError(f"--out {path}: directory {folder} is not writable")
-
-
-def write_atomic(path, content: bytes | str) -> None:
-    """Write ``content`` to ``path`` through a temporary file and ``os.replace`` (never half a file)."""
-    check_writable(path)
-    folder = os.path.dirname(os.path.abspath(path))
-    raw = content.encode() if isinstance(content, str) else content
-    fd, tmp = tempfile.mkstemp(prefix=".evaldata-", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(raw)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except OSError as exc:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise EvalDataFileError(f"cannot write {path}: {exc.strerror}") from None
 
 
 def dumps(document: dict) -> str:

@@ -26,7 +26,7 @@ from importlib import resources
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_sympy
-from symdecomp.claims import CheckResult, Claim, Status, Step, Text, check_claim, scope_summary
+from symdecomp.claims import CheckResult, Claim, Status, Step, Text, Verbatim, check_claim, scope_summary
 from symdecomp.output.texlayout import formula_display, latex, mapping_rows, rows_display, size
 
 __all__ = ["aslatex", "text_latex", "findings_latex", "display_math", "SECTION_TITLES", "section_file_name",
@@ -142,12 +142,18 @@ def text_latex(text: str, *, displays: bool = True) -> str:
 
     An inline formula too wide to sit in a line of text becomes a displayed one (unless
     ``displays`` is false, e.g. in a table cell). An unmatched ``$`` is a dollar sign.
+    Text from outside the package (:class:`~symdecomp.claims.Verbatim`: a scheme's name, an
+    error message) is shown exactly as given: every character escaped, no formulas.
 
     >>> print(text_latex("50% of a & b: $\\\\omega_n^j$"))
     50\\% of a \\& b: $\\omega_n^j$
     >>> print(text_latex("costs $5"))
     costs \\$5
+    >>> print(text_latex(Verbatim("c $\\input{x}$")))
+    c \\$\\textbackslash{}input\\{x\\}\\$
     """
+    if isinstance(text, Verbatim):
+        return _escape_text(text)
     if "$$" in text:  # displayed math written as $$...$$
         chunks = re.split(r"(?<!\\)\$\$(.*?)(?<!\\)\$\$", text, flags=re.S)
         if len(chunks) > 1:
@@ -249,8 +255,8 @@ def _(obj: Mapping) -> str:
 
 @aslatex.register(Status)
 def _(obj: Status) -> str:
-    if " " in obj.value:
-        return r"\status[%s]{%s}" % (obj.value.replace(" ", ""), obj.value)
+    if " " in obj.value:  # the preamble's \status[colour]{text} would name the colour "sd<colour><text>"
+        return r"\textcolor{sd%s}{\textbf{%s}}" % (obj.value.replace(" ", ""), obj.value)
     return r"\status{%s}" % obj.value
 
 

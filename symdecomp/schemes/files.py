@@ -117,8 +117,9 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
     if unknown:
         raise InvalidSchemeError(f"{source}: unknown key {unknown[0]!r} (known: {', '.join(sorted(_TOP_KEYS))})")
     name = data.get("name", default_name)
-    if not isinstance(name, str) or not name.strip() or len(name) > 100:
-        raise InvalidSchemeError(f"{source}: name must be a non-empty string of at most 100 characters")
+    if not isinstance(name, str) or not name.strip() or len(name) > 100 or not name.isprintable():
+        raise InvalidSchemeError(f"{source}: name must be a non-empty string of at most 100 printable characters (no line "
+                                 "breaks or control characters)")
     mesh = data.get("mesh", QUAD.name)
     if not isinstance(mesh, str) or mesh not in LATTICES:
         raise InvalidSchemeError(f"{source}: mesh {mesh!r} is not supported (known: {', '.join(MESHES)})")

@@ -24,6 +24,7 @@ Matrix([[9/16, 3/32, 3/32, 3/32, 3/32, 1/64, 1/64, 1/64, 1/64]])
 from __future__ import annotations
 
 import numbers
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -197,6 +198,9 @@ class Scheme:
     lattice: Lattice = QUAD
 
     def __post_init__(self):
+        if not isinstance(self.name, str) or not self.name.strip() or not self.name.isprintable():
+            # a name is shown in terminals and typeset in documents: one line of text, no control characters
+            raise InvalidSchemeError(f"scheme name must be a non-empty line of printable text, got {self.name!r}")
         try:
             object.__setattr__(self, "lattice", lattice(self.lattice))
         except InvalidSchemeError as exc:
@@ -287,6 +291,10 @@ def _to_parameters(scheme: Scheme) -> None:
              if s not in own and not isinstance(s, Parameter)}
     if not stray:
         return
+    for s in sorted(stray, key=str):  # printed by sympy in every derivation: a name, never markup
+        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", s.name):
+            raise InvalidSchemeError(f"scheme {scheme.name!r}: the parameter name {s.name!r} is not an identifier (letters, "
+                                     "digits and _, starting with a letter)")
     move = {s: Parameter(s.name, **s.assumptions0) for s in stray}
 
     def stencil(rule: Stencil) -> Stencil:

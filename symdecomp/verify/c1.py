@@ -67,9 +67,11 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import lru_cache
 
 import flint
 
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.algebra.triangle_bezier import bezier_indices
 from symdecomp.analysis.characteristic import TRIANGLES, frequency_eigenvector, inner_boundary_nets, subpatch_nets
 from symdecomp.errors import InvalidSchemeError
@@ -155,13 +157,27 @@ class C1Result:
 _TRIANGLE_MAPS = tuple((t[0], (t[1][0] - t[0][0], t[1][1] - t[0][1]), (t[2][0] - t[0][0], t[2][1] - t[0][1])) for t in TRIANGLES)
 
 
+@lru_cache(maxsize=1)
+def _box_terms() -> tuple[tuple[tuple[int, flint.fmpq], ...], ...]:
+    """The regular patch's Bezier coefficients as FLINT rationals: per coefficient ``((control point, weight), ...)``.
+
+    :meth:`~symdecomp.schemes.box_spline.RegularPatch.bezier_net` on balls, with the exact weights converted once.
+    """
+    rows = regular_patch().coefficients
+    return tuple(tuple((i, to_fmpq(row[k])) for i, row in enumerate(rows) if row[k]) for k in range(len(rows[0])))
+
+
 def _triangle_nets(vec):
     """The degree-4 Bezier nets ``(x, y)`` of sector 0's three box-spline sub-patches (each in its own parameters)."""
-    patch = regular_patch()
     out = []
     for values, (o, e1, e2) in zip(subpatch_nets(vec), _TRIANGLE_MAPS):
         control = [values[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])] for a, b in BOX_POINTS]
-        net = patch.bezier_net(control)
+        net = []
+        for terms in _box_terms():
+            total = control[terms[0][0]] * terms[0][1]
+            for i, w in terms[1:]:
+                total = total + control[i] * w
+            net.append(total)
         out.append(([z.real for z in net], [z.imag for z in net]))
     return out
 
@@ -187,16 +203,16 @@ def _quad_nets(vec):
     return nets
 
 
-def _quad_boundary_angle(vec):
+def _quad_boundary_angle(vec, nets):
     first, last = (bspline_to_bezier(net) for net in inner_boundary_nets(vec))
     a = curve_angle([first[0][k] for k in range(4)])  # face (1, 0), edge u = 1: (1,0) -> (1,1)
     b = curve_angle([last[i][0] for i in range(3, -1, -1)])  # face (0, 1), edge v = 1: (1,1) -> (0,1)
     return None if a is None or b is None else a + b
 
 
-def _triangle_boundary_angle(vec):
+def _triangle_boundary_angle(vec, nets):
     # the middle triangle, in its own parameters: corner (0, 0) is the lattice point (1, 0), corner (0, 1) is (0, 1)
-    x, y = _triangle_nets(vec)[1]
+    x, y = nets[1]
     pos = {i: k for k, i in enumerate(bezier_indices(DEGREE))}
     edge = [pos[(DEGREE - t, 0, t)] for t in range(DEGREE + 1)]
     return curve_angle([flint.acb(x[k], y[k]) for k in edge])
@@ -210,7 +226,7 @@ class _Patches:
     nets: Callable
     #: ``(nets, max_depth) -> sign``: the Jacobian's sign over them, certified.
     sign: Callable
-    #: ``vec -> angle``: the argument swept by sector 0's inner boundary (or ``None``).
+    #: ``(vec, nets) -> angle``: the argument swept by sector 0's inner boundary (or ``None``).
     boundary_angle: Callable
 
 
@@ -231,14 +247,14 @@ def _patches(lat: Lattice) -> _Patches:
     return _PATCHES[lat]
 
 
-def _boundary_angle(vec):
+def _boundary_angle(vec, nets):
     """The argument swept by sector 0's inner boundary, from the image of ``a_0`` to that of ``a_1`` (or ``None``)."""
-    return _patches(vec.lattice).boundary_angle(vec)
+    return _patches(vec.lattice).boundary_angle(vec, nets)
 
 
-def _winding(vec, n: int):
-    """The winding number (an ``int``) of the inner boundary, or ``None`` if not decided."""
-    angle = _boundary_angle(vec)
+def _winding(vec, n: int, nets):
+    """The winding number (an ``int``) of the inner boundary, or ``None`` if not decided (``nets``: the sub-patches')."""
+    angle = _boundary_angle(vec, nets)
     if angle is None:
         return None
     w = angle * n / (2 * flint.arb.pi())
@@ -263,7 +279,7 @@ def _test(scheme: Scheme, n: int, max_depth: int, prec: int) -> C1Result:
     j = spectral.subdominant.frequency
     nets, vec = characteristic_nets(scheme, n, spectral)
     sign = _patches(scheme.lattice).sign(nets, max_depth)
-    winding = _winding(vec, n)
+    winding = _winding(vec, n, nets)
     base.update(frequency=j, subdivision_depth=sign.depth, winding_number=winding)
     lam = ball_text(spectral.subdominant.value)
     if sign.status == "changes":

@@ -13,8 +13,14 @@ spectra of ``B_j``; each ``B_j`` is block lower triangular, so that is the union
 of the 1-ring blocks (:func:`~symdecomp.analysis.frequency.one_ring_matrices`: at ``j = 0`` the
 Eq. 43 matrix, ``3 x 3`` on quads and ``2 x 2`` on triangles; otherwise ``M_j``, ``2 x 2`` or
 ``1 x 1``) and of the outer blocks ``S_j`` (the regular rules). The eigenvalues of ``M_j`` (and
-those of ``M_{n-j} = conj(M_j)``) are enclosed from its characteristic polynomial; those of
-``S_j`` are bounded by ``||S_j^k||_inf^{1/k}`` (``k = 1, 2, 4``). If ``lambda`` is a simple root of
+those of ``M_{n-j} = conj(M_j)``) are enclosed from its characteristic polynomial. ``S_j`` holds
+only the regular rules, and its characteristic polynomial is the same at every frequency of every
+valence (:func:`~symdecomp.analysis.characteristic.outer_charpoly`, expanded once in symbolic
+``omega``): its exact roots (Catmull-Clark ``1/8 .. 1/64``, Loop ``1/8, 1/16``) are the outer
+eigenvalues everywhere, so a valence costs ``n / 2`` blocks of size 2 or 1 (linear in ``n``).
+Were it not the same, each ``S_j`` would be bounded by ``||S_j^k||_inf^{1/k}`` (``k = 1, 2, 4``;
+the tests keep that route as a check); the reported gap still uses those bounds where one may be
+the largest other modulus (small ``n``). If ``lambda`` is a simple root of
 ``M_j`` for some ``0 < j < n/2`` and strictly dominates everything else, it has algebraic and
 geometric multiplicity 2 (one eigenvector at ``j``, one at ``n - j``: the *conjugate-frequency
 copy*, the same eigenvalue, which is why it is never compared with itself). ``lambda`` is real
@@ -49,7 +55,15 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
-from symdecomp.analysis.characteristic import check_applicable, frequency_block, ring_layout
+from symdecomp.analysis.characteristic import (
+    check_applicable,
+    frequency_block,
+    frequency_blocks,
+    outer_bounds,
+    outer_radius,
+    outer_row_sum,
+    ring_layout,
+)
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
@@ -135,9 +149,15 @@ def _symbolic_charpoly(scheme: Scheme) -> tuple[sp.Expr, ...]:
     return (sp.expand(-M.trace()), sp.expand(M.det()))
 
 
+@lru_cache(maxsize=32)
+def _asymmetry(scheme: Scheme) -> tuple[sp.Expr, ...]:
+    """``c_i(omega) - c_i(1/omega)`` for the coefficients of :func:`_symbolic_charpoly`, expanded once per scheme."""
+    return tuple(sp.expand(e - e.subs(OMEGA, 1 / OMEGA)) for e in _symbolic_charpoly(scheme))
+
+
 def _real_at(scheme: Scheme, n: int) -> bool:
     """Whether ``M_j``'s characteristic polynomial is real for every ``j`` (symmetric Laurent polynomials in omega)."""
-    return all(sp.expand((e - e.subs(OMEGA, 1 / OMEGA)).subs(N, n)) == 0 for e in _symbolic_charpoly(scheme))
+    return all(e == 0 or sp.expand(e.subs(N, n)) == 0 for e in _asymmetry(scheme))
 
 
 def _quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
@@ -153,18 +173,6 @@ def _quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
         root = disc.sqrt()
     a, b = (t + root) / 2, (t - root) / 2
     return (a, b) if abs(a).mid() >= abs(b).mid() else (b, a)
-
-
-def _outer_bound(S: flint.acb_mat) -> flint.arb:
-    """``min_k ||S^k||_inf^{1/k}`` for ``k = 1, 2, 4``: an upper bound of the spectral radius."""
-    best, power = None, S
-    for k in (1, 2, 4):
-        if k > 1:
-            power = power * power
-        norm = max(sum((abs(power[r, c]) for c in range(power.ncols())), flint.arb(0)) for r in range(power.nrows()))
-        bound = norm if k == 1 else norm.root(k)
-        best = bound if best is None or bound.upper() < best.upper() else best
-    return best
 
 
 def _field(n: int) -> CyclotomicField:
@@ -250,19 +258,19 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
     return [Eigen(r1, 0, 1, root=0, pair=pair), Eigen(r2, 0, 1, root=1, pair=pair)], None
 
 
-def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int, flint.arb]]]:
-    """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (``0 <= j <= n/2``;
-    none with ``outer=False``)."""
-    bounds = outer
-    eigen, outer = [], []
-    real = _real_at(scheme, n)
-    k1, k2 = ring_layout(scheme.lattice).one_ring, ring_layout(scheme.lattice).two_ring
-    for j in range(0, n // 2 + 1):
-        B = frequency_block(scheme, n, j)
-        if bounds:
-            outer.append((j, _outer_bound(flint.acb_mat([[B[r, c] for c in range(k1, k2)] for r in range(k1, k2)]))))
-        if j == 0:
-            continue
+def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int | None, flint.arb]]]:
+    """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (none with ``outer=False``).
+
+    The outer bound is one entry ``(None, radius)`` for every frequency when the outer block has the
+    same eigenvalues at every frequency (:func:`~symdecomp.analysis.characteristic.outer_radius`), so
+    only the 1-ring rows of each ``B_j`` are built; otherwise ``(j, ||S_j^k||^{1/k})`` for
+    ``0 <= j <= n/2`` (:func:`~symdecomp.analysis.characteristic.outer_bounds`).
+    """
+    k1 = ring_layout(scheme.lattice).one_ring
+    eigen = []
+    real, blocks = _real_at(scheme, n), frequency_blocks(scheme, n)
+    for j in range(1, n // 2 + 1):
+        B = blocks(j, k1)
         mult = 1 if 2 * j == n else 2
         if k1 == 1:
             eigen.append(Eigen(B[0, 0], j, mult))
@@ -275,7 +283,25 @@ def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[l
         r1, r2 = _quadratic_roots(t, d)
         pair = real and disc.real < 0  # real trace and determinant: the roots are conjugate
         eigen += [Eigen(r1, j, mult, root=0, pair=pair), Eigen(r2, j, mult, root=1, pair=pair)]
-    return eigen, outer
+    if not outer:
+        return eigen, []
+    radius = outer_radius(scheme.lattice)
+    return eigen, (outer_bounds(scheme, n) if radius is None else [(None, radius)])
+
+
+def _gap_bounds(scheme: Scheme, n: int, outer: list, others: list[Eigen]) -> list[flint.arb]:
+    """The outer bounds the reported gap is measured against: the per-frequency norm bounds, as the gap has always been.
+
+    With the exact outer eigenvalues (``(None, radius)``) the norm bounds are computed only where
+    one of them may exceed every other 1-ring eigenvalue: not when an eigenvalue lies above
+    :func:`~symdecomp.analysis.characteristic.outer_row_sum`, which bounds them all (large ``n``).
+    """
+    if not outer or any(j is not None for j, _ in outer):
+        return [b for _, b in outer]
+    top = max((abs(e.value).lower() for e in others), key=float, default=None)
+    if top is not None and top > outer_row_sum(scheme.lattice) * (1 + flint.arb(2) ** -30):
+        return []
+    return [b for _, b in outer_bounds(scheme, n)]
 
 
 def _exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | None:
@@ -385,10 +411,7 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
         )
     for j, bound in outer:
         if not bound < top:
-            return SpectralResult(
-                n, C1Verdict.UNDECIDED, f"the outer eigenvalues at frequency {j} are bounded only by {ball_text(bound)}, "
-                f"not below |lambda| = {ball_text(top)}",
-            )
+            return _outer_failure(j, bound, top, n)
     if not top < 1:
         return SpectralResult(
             # Arb's ``>=`` holds only when every point of the ball is >= 1 (an exact -1 at frequency 0 is)
@@ -398,7 +421,7 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
     failure = _tie_failure(dom, ties, n)
     if failure:
         return SpectralResult(n, C1Verdict.NOT_C1, failure, dom)
-    second = max([abs(e.value) for e in others] + [b for _, b in outer], key=lambda x: x.upper())
+    second = max([abs(e.value) for e in others] + _gap_bounds(scheme, n, outer, others), key=lambda x: x.upper())
     gap = float_down((top - second).lower())
     if dom.pair:
         return SpectralResult(
@@ -408,6 +431,21 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
     if dom.frequency == 0 or 2 * dom.frequency == n:
         return SpectralResult(n, C1Verdict.NOT_C1, _symmetric_failure(eigen, dom, n), dom, gap, float(second.upper()))
     return _real_subdominant(scheme, n, dom, gap, float(second.upper()))
+
+
+def _outer_failure(j: int | None, bound: flint.arb, top: flint.arb, n: int) -> SpectralResult:
+    """The verdict when an outer block's eigenvalues are not certainly below ``|lambda|`` (``j = None``: every frequency)."""
+    if j is None and bound > top:  # exact outer eigenvalues, the same at all n frequencies: that modulus n times
+        return SpectralResult(
+            n, C1Verdict.NOT_C1, f"the regular rules' outer blocks have an eigenvalue of modulus {ball_text(bound)} at every "
+            f"frequency (multiplicity at least {n}), above every 1-ring eigenvalue after 1 (|lambda| = {ball_text(top)}): "
+            "the subdominant eigenvalue does not have multiplicity 2",
+        )
+    where = "every frequency" if j is None else f"frequency {j}"
+    return SpectralResult(
+        n, C1Verdict.UNDECIDED, f"the outer eigenvalues at {where} are bounded only by {ball_text(bound)}, "
+        f"not below |lambda| = {ball_text(top)}",
+    )
 
 
 def _tie_failure(dom: Eigen, ties: dict, n: int) -> str | None:

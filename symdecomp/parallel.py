@@ -1,0 +1,291 @@
+"""The toolkit's one pool of worker processes: ``check``, ``c1`` and ``evaldata`` map their valences through it.
+
+:func:`ordered_map` yields ``func(item, **shared)`` for every item, in the items' order, computed
+
+* here (``jobs`` 1, a single item, or no ``fork`` on this platform);
+* in a :class:`concurrent.futures.ProcessPoolExecutor` of forked workers (``executor="local"``):
+  ``shared`` (a scheme, its closed forms) is set before the workers fork, so only the items and
+  the results travel through pipes, and ``warm_up`` computes the first item here first, so that
+  what it caches (the symbolic step) is inherited by every worker;
+* on a Dask cluster (``executor="dask"``: a ``LocalCluster`` started for the run and closed
+  after; ``"dask=ADDRESS"``: the scheduler at ``ADDRESS``, e.g. ``tcp://127.0.0.1:8786``, whose
+  workers must have symdecomp installed). ``shared`` is sent to each worker once.
+
+The guarantees of the local pool:
+
+* it has ``pool_size(jobs, work)`` workers: never more than ``jobs``, the items or the CPUs;
+* SIGTERM or SIGINT in this process (the command line turns them into exceptions) stops every
+  worker at once with SIGKILL, whatever it is computing: no tracebacks, no processes left;
+* if this process is killed outright (SIGKILL), its workers are killed within a fraction of a
+  second. A watchdog thread inside a worker could not do it: python-flint keeps the GIL for the
+  whole of a long computation (a characteristic polynomial takes seconds to minutes), so no
+  other thread of the worker runs meanwhile. Instead a small reaper process (a fresh
+  interpreter, nothing imported) leads a process group that the workers join; it polls its
+  parent and kills the whole group when the parent is gone. The group also keeps a terminal's
+  Ctrl-C away from the workers: only this process receives it.
+"""
+
+from __future__ import annotations
+
+import itertools
+import os
+import re
+import signal
+import subprocess
+import sys
+import threading
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+
+from symdecomp.errors import InvalidInputError, InvalidTypeError
+from symdecomp.validate import check_int
+
+__all__ = ["Executor", "parse_executor", "pool_size", "ordered_map", "LOCAL"]
+
+#: Seconds between the reaper's looks at its parent.
+REAPER_POLL = 0.2
+
+_REAPER = (
+    "import os, signal, sys, time\n"
+    "signal.signal(signal.SIGINT, signal.SIG_IGN)\n"
+    "parent = int(sys.argv[1])\n"
+    "while os.getppid() == parent:\n"
+    f"    time.sleep({REAPER_POLL})\n"
+    "os.killpg(0, signal.SIGKILL)\n"
+)
+
+_ADDRESS = re.compile(r"(?:(?:tcp|tls)://)?(?:[A-Za-z0-9][A-Za-z0-9.-]*|\[[0-9A-Fa-f:.]+\]):([0-9]{1,5})", re.ASCII)
+_EXPECTED = "expected local, dask or dask=ADDRESS (a Dask scheduler such as tcp://127.0.0.1:8786)"
+
+
+@dataclass(frozen=True)
+class Executor:
+    """Where :func:`ordered_map` runs: ``kind`` ``"local"`` or ``"dask"``; ``address`` a Dask scheduler (``None``:
+    a ``LocalCluster`` for the run)."""
+
+    kind: str = "local"
+    address: str | None = None
+
+    def __str__(self) -> str:
+        return self.kind if self.address is None else f"{self.kind}={self.address}"
+
+
+LOCAL = Executor()
+
+
+def parse_executor(spec: str | Executor = "local", option: str | None = "executor") -> Executor:
+    """``"local"``, ``"dask"`` or ``"dask=ADDRESS"`` as an :class:`Executor`; a Dask one only if Dask is installed.
+
+    Raises :class:`~symdecomp.errors.InvalidInputError` naming ``option`` (the command line gives
+    ``None`` and lets argparse name it).
+    """
+    if isinstance(spec, Executor):
+        return spec
+    prefix = f"{option}: " if option else ""
+    if not isinstance(spec, str):
+        raise InvalidTypeError(f"{prefix}{_EXPECTED}, got {type(spec).__name__}")
+    shown = spec if len(spec) <= 60 else spec[:57] + "..."
+    kind, eq, address = spec.partition("=")
+    if kind == "local" and not eq:
+        return LOCAL
+    if kind != "dask" or (eq and not address):
+        raise InvalidInputError(f"{prefix}{_EXPECTED}, got {shown!r}")
+    if eq:
+        match = _ADDRESS.fullmatch(address)
+        if match is None or not 0 < int(match.group(1)) < 65536:
+            raise InvalidInputError(f"{prefix}{shown!r}: the scheduler's address must be [tcp://|tls://]HOST:PORT")
+    try:
+        import distributed  # noqa: F401 - only asking whether it is installed
+    except ImportError:
+        raise InvalidInputError(f"{prefix}{shown!r} needs the optional packages dask and distributed: "
+                                "pip install 'symdecomp[dask]'") from None
+    return Executor("dask", address or None)
+
+
+def pool_size(jobs: int, work: int) -> int:
+    """Worker processes for ``work`` items: never more than the work, the CPUs or ``jobs`` (at least 1)."""
+    return max(1, min(jobs, work, os.cpu_count() or 1))
+
+
+def ordered_map(func: Callable, items: Iterable, *, shared: dict | None = None, jobs: int = 1,
+                executor: str | Executor = "local", warm_up: bool = False, cost: Callable | None = None) -> Iterator:
+    """Yield ``func(item, **shared)`` for each of ``items``, in order, on at most ``jobs`` processes.
+
+    ``func`` is a module-level function (workers find it by name); ``shared`` its keyword
+    arguments common to all items; ``warm_up``: compute the first item in this process before
+    the local workers fork (they inherit what it cached); ``cost(item)``: hand out the costliest items
+    first (the results still come in order). An exception of ``func`` is raised here.
+    """
+    spec = parse_executor(executor)
+    jobs = check_int(jobs, "jobs", minimum=1)
+    items, shared = list(items), dict(shared or {})
+    if warm_up and items and spec.kind == "local":
+        yield func(items[0], **shared)
+        items = items[1:]
+    order = sorted(range(len(items)), key=lambda i: -cost(items[i])) if cost else list(range(len(items)))
+    workers = pool_size(jobs, len(items))
+    if spec.kind == "dask":
+        yield from _dask_map(func, items, shared, spec, workers, order)
+    elif workers > 1 and "fork" in _start_methods() and sys.executable:
+        yield from _local_map(func, items, shared, workers, order)
+    else:
+        for item in items:
+            yield func(item, **shared)
+
+
+def _start_methods() -> list[str]:
+    import multiprocessing
+
+    return multiprocessing.get_all_start_methods()
+
+
+#: What each running local pool computes, by token, set before its workers fork (so only items travel).
+_JOBS: dict[int, tuple[Callable, dict]] = {}
+_TOKENS = itertools.count()
+
+
+def _call(token: int, item):
+    func, shared = _JOBS[token]
+    return func(item, **shared)
+
+
+def _worker_init(parent: int, group: int) -> None:
+    """In each forked worker: join the reaper's group, leave Ctrl-C and SIGTERM to the parent."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent stops the pool (no traceback per worker)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    try:
+        os.setpgid(0, group)
+    except OSError:  # the reaper is gone already: so is the parent, or it is stopping the pool
+        os._exit(1)
+    if os.getppid() != parent:  # the parent died before this worker joined the group
+        os._exit(1)
+
+
+def _local_map(func, items, shared, workers, order):
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures.process import BrokenProcessPool
+
+    reaper = subprocess.Popen([sys.executable, "-I", "-S", "-c", _REAPER, str(os.getpid())], process_group=0,
+                              stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    token = next(_TOKENS)
+    _JOBS[token] = (func, shared)
+    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"),
+                               initializer=_worker_init, initargs=(os.getpid(), reaper.pid))
+    finished = False
+    try:
+        try:  # a worker that dies early breaks the pool while the work is still being submitted
+            futures = [None] * len(items)
+            for i in order:  # the workers fork at the first submit, with _JOBS[token] in place
+                futures[i] = pool.submit(_call, token, items[i])
+            for future in futures:
+                yield future.result()
+        except BrokenProcessPool:
+            raise ChildProcessError("a worker process died (killed by the system: out of memory?); "
+                                    "try a smaller --jobs or range") from None
+        finished = True
+    finally:
+        if not finished:  # interrupted, an error, or the caller stopped early: kill the workers now
+            _kill_group(reaper.pid)
+        pool.shutdown(wait=True, cancel_futures=True)
+        _kill_group(reaper.pid)
+        reaper.wait()
+        _JOBS.pop(token, None)
+
+
+def _kill_group(group: int) -> None:
+    try:
+        os.killpg(group, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+
+
+def _dask_call(func, shared, item):
+    return func(item, **shared)
+
+
+def _dask_map(func, items, shared, spec, workers, order):
+    with _quiet_logs("distributed", "asyncio", "tornado"):  # a cluster closed early logs its lost tasks
+        yield from _dask_run(func, items, shared, spec, workers, order)
+
+
+@contextmanager
+def _quiet_logs(*names):
+    import logging
+
+    loggers = [logging.getLogger(name) for name in names]
+    levels = [logger.level for logger in loggers]
+    for logger in loggers:
+        logger.setLevel(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        for logger, level in zip(loggers, levels):
+            logger.setLevel(level)
+
+
+def _dask_run(func, items, shared, spec, workers, order):
+    opened = []  # the cluster and the client, closed in reverse order whatever happens
+    futures = []
+    try:
+        with _signals_held():
+            client = _dask_client(spec, workers, opened)
+        if not items:
+            return
+        [ref] = client.scatter([shared], broadcast=True, hash=False)
+        futures = [None] * len(items)
+        for i in order:
+            futures[i] = client.submit(_dask_call, func, ref, items[i], pure=False)
+        for future in futures:
+            yield future.result()
+    finally:
+        if opened and futures:
+            opened[-1].cancel([f for f in futures if f is not None])
+        for thing in reversed(opened):
+            thing.close()
+
+
+def _dask_client(spec: Executor, workers: int, opened: list):
+    """A connected ``distributed.Client`` (appended to ``opened``, after the ``LocalCluster`` started for it, if any)."""
+    import logging
+
+    from distributed import Client, LocalCluster
+
+    if spec.address is None:
+        # ":0": any free port for its HTTP server (8787, the default, may be another cluster's)
+        opened.append(LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0",
+                                   silence_logs=logging.CRITICAL))
+        opened.append(Client(opened[-1]))
+        return opened[-1]
+    try:
+        opened.append(Client(spec.address, timeout=10))
+    except (OSError, TimeoutError) as exc:
+        raise InvalidInputError(f"executor {spec}: cannot reach the scheduler ({' '.join(str(exc).split())})") from None
+    return opened[-1]
+
+
+@contextmanager
+def _signals_held():
+    """Hold SIGINT and SIGTERM while Dask starts its processes, then deliver them (so that what started is closed).
+
+    SIGINT is blocked: the processes spawned meanwhile inherit the mask, so a terminal's Ctrl-C
+    reaches only this process, which closes the cluster. SIGTERM is only noted (those processes
+    must stay stoppable by their nanny's SIGTERM) and sent again afterwards.
+    """
+    from multiprocessing import resource_tracker
+
+    resource_tracker.ensure_running()  # now: started later, from Dask's thread, it would unblock SIGINT there
+    held, swapped = [], threading.current_thread() is threading.main_thread()
+    if swapped:
+        previous = signal.signal(signal.SIGTERM, lambda signum, frame: held.append(signum))
+    mask = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT}) if hasattr(signal, "pthread_sigmask") else None
+    try:
+        yield
+    finally:
+        if swapped:
+            signal.signal(signal.SIGTERM, previous)
+        if mask is not None:
+            signal.pthread_sigmask(signal.SIG_SETMASK, mask)  # a Ctrl-C meanwhile is raised here
+        if held:
+            os.kill(os.getpid(), signal.SIGTERM)

@@ -13,6 +13,13 @@ Prints the figures and the ratios. Run from the repository root:
 
     python benchmarks/bench_check.py            # baseline range 3..24, certified range 3..128
     python benchmarks/bench_check.py --quick    # a smoke run: 3..8 and 3..32
+    python benchmarks/bench_check.py --targets  # only issue 24's targets (printed first in every run)
+
+:func:`targets` measures issue 24's commands beside their baselines in one run: ``check --n
+1000 --certify`` and ``check --n 3:256 --certify`` (structural route) beside the dense
+characteristic-polynomial route on a subrange (3..64; the dense route at 256 takes minutes),
+and ``check --n 3:32 --dps 60`` by the Arb solver beside mpmath's, with numpy's float64
+``eigvals`` of the same matrices as a baseline figure.
 """
 
 from __future__ import annotations
@@ -55,13 +62,65 @@ def timed(f, *args, **kwargs):
     return time.perf_counter() - start, out
 
 
+def _cli_seconds(*argv: str) -> float:
+    """Wall-clock seconds of ``python -m symdecomp check ...`` in a fresh process (its exit code must be 0)."""
+    import subprocess
+
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "symdecomp", "check", *argv], cwd=root, capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"check {' '.join(argv)} failed: {done.stdout[-300:]} {done.stderr[-300:]}")
+    return time.perf_counter() - start
+
+
+def _numpy_seconds(valences) -> float:
+    import numpy as np
+
+    from symdecomp.schemes.full_matrix import sparse_subdivision_matrix
+
+    scheme = catmull_clark()
+    start = time.perf_counter()
+    for n in valences:
+        A = np.zeros((2 * n + 1, 2 * n + 1))
+        for (r, c), x in sparse_subdivision_matrix(scheme, n).items():
+            A[r, c] = int(x.p) / int(x.q)
+        np.linalg.eigvals(A)
+    return time.perf_counter() - start
+
+
+def targets(quick: bool = False) -> list[dict]:
+    """Issue 24's targets, each measured beside its baseline in this run (``quick``: smaller ranges)."""
+    big, long, dense, numeric = ("300", "3:64", "3:32", "3:12") if quick else ("1000", "3:256", "3:64", "3:32")
+    rows = []
+    t_dense = _cli_seconds("--n", dense, "--certify", "--route", "charpoly")
+    for valences in (big, long):
+        rows.append({"target": f"check --n {valences} --certify", "limit_seconds": None if quick else 60.0,
+                     "seconds": _cli_seconds("--n", valences, "--certify"),
+                     "baseline": f"check --n {dense} --certify --route charpoly (dense chi_S, on a subrange)",
+                     "baseline_seconds": t_dense})
+    lo, hi = map(int, numeric.split(":"))
+    rows.append({"target": f"check --n {numeric} --dps 60", "limit_seconds": None if quick else 30.0,
+                 "seconds": _cli_seconds("--n", numeric, "--dps", "60", "--solver", "flint"),
+                 "baseline": f"check --n {numeric} --dps 60 --solver mpmath",
+                 "baseline_seconds": _cli_seconds("--n", numeric, "--dps", "60", "--solver", "mpmath")})
+    rows.append({"target": f"numpy float64 eigvals, n = {numeric} (a baseline figure: no certificate, 15 digits)",
+                 "limit_seconds": None, "seconds": _numpy_seconds(range(lo, hi + 1)), "baseline": "none", "baseline_seconds": None})
+    return rows
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--baseline-max", type=int, default=24, help="largest n of the baseline comparison (default 24)")
     parser.add_argument("--certify-max", type=int, default=128, help="largest n of the long certified run (default 128)")
     parser.add_argument("--dps", type=int, default=50, help="digits of the baseline and of the numeric mode (default 50)")
     parser.add_argument("--quick", action="store_true", help="small ranges (3..8 and 3..32), for a smoke run")
+    parser.add_argument("--targets", action="store_true", help="only issue 24's targets (targets()), printed first in any run")
     args = parser.parse_args(argv)
+    for row in targets(args.quick):
+        print(row)
+    if args.targets:
+        return 0
     if args.quick:
         args.baseline_max, args.certify_max = 8, 32
     scheme = catmull_clark()

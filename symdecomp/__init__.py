@@ -48,8 +48,9 @@ nothing else.
                    (``ring_charpoly``), masks (``ring_masks``); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``)
-``verify/``        cross-checks against the full matrices: numeric (``numeric``,
-                   ``ring_numeric``), certified (``certify``, ``ring_certify``), their results and
+``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
+                   enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
+                   ``ring_certify``, the O(n) route ``structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,

@@ -142,6 +142,8 @@ class RingEigenvalue:
     #: The roots in its cluster, ``(frequency k, factor index, root index)``, one per unit of
     #: multiplicity (the factor's exponent repeats a root); for certificates of multiplicities.
     members: tuple[tuple[int, int, int], ...] = ()
+    #: A ball holding every root of its cluster (``ball`` holds the first), or ``None``.
+    hull: object = None
 
     def as_json(self) -> dict:
         return {
@@ -301,10 +303,18 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
                     factor=f.poly.xreplace({N: n}) if k == 0 else f.poly,
                     jordan=_jordan(blocks, ff, items, g, n, exact_w) if jordan else None,
                     members=tuple(sorted(items[x][1:] for x in g)),
+                    hull=_hull([items[x][0] for x in g]),
                 )
             )
     size = 1 + blocks.class_count * n
     return RingSpectrum(scheme.name, scheme.mesh, n, rings, size, digits, tuple(entries))
+
+
+def _hull(balls):
+    """A ball (a square around the first midpoint) holding every ball of ``balls``."""
+    centre = balls[0].mid()
+    radius = max(((abs(b.mid() - centre) + b.rad()).upper() for b in balls), key=float)
+    return flint.acb(flint.arb(centre.real, radius), flint.arb(centre.imag, radius))
 
 
 def _jordan(blocks, ff, items, group, n, weights) -> tuple[int, ...] | None:

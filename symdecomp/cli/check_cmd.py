@@ -25,13 +25,19 @@ from symdecomp.cli.common import (
 from symdecomp.errors import InvalidInputError
 from symdecomp.parallel import Executor, ordered_map
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_memory
 from symdecomp.verify.certify import certify
 from symdecomp.verify.numeric import numeric_check
 from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
 from symdecomp.verify.ring_numeric import MAX_DOUBLE_DIGITS, ring_numeric_check
+from symdecomp.verify.structural import STRUCTURAL_BYTES_PER_VALENCE, certify_structural, structural_obstacle
 
-__all__ = ["register", "run", "check_valences"]
+__all__ = ["register", "run", "check_valences", "ROUTES", "SOLVERS"]
+
+#: The certificates of ``--certify`` (``--route``) and the eigen-solvers of numeric mode (``--solver``).
+ROUTES = ("structural", "charpoly")
+SOLVERS = ("flint", "mpmath")
 
 
 def register(sub) -> None:
@@ -40,23 +46,32 @@ def register(sub) -> None:
         help="cross-check the closed-form spectrum against the full subdivision matrix",
         description="For each valence, compare the closed-form eigenvalues (Eq. 34 and Eq. 43) with the "
         "spectrum of the full (2n+1)x(2n+1) matrix built from the rules. Numeric mode: mpmath.eig at "
-        "rising precision until the answer stops moving, matched with multiplicities, agreement to "
-        "--dps digits. Certified mode (--certify): an exact proof, chi_S = product of the closed-form "
-        "factors, checked with FLINT at 2n+1 rational points, with certified multiplicities. "
-        "For triangle schemes and --rings K > 1 the frequency matrices E_0, E(omega) of the K-ring matrix "
-        "(built by exact refinement) are checked instead: numeric mode in double precision (--dps at most "
-        f"{MAX_DOUBLE_DIGITS}, default 10), certified mode by chi_S = product of the frequency factors "
-        "(or, with --structural, the O(n) proof that the refined matrix is the block matrix). "
+        "certified enclosures (--solver flint, the default: Arb) or mpmath.eig (--solver mpmath) at rising "
+        "precision, matched with multiplicities, agreement to --dps digits. Certified mode (--certify): an exact "
+        "proof per valence, by the structural route where it applies (the full matrix equals the bordered "
+        "circulant-block matrix entry by entry, and the closed forms are its frequency factors: O(n)) or the dense "
+        "route (chi_S = product of the closed-form factors, checked with FLINT at 2n+1 rational points); the output "
+        "names the route. For triangle schemes and --rings K > 1 the frequency matrices E_0, E(omega) of the K-ring "
+        "matrix (built by exact refinement) are checked instead: numeric mode in double precision (--dps at most "
+        f"{MAX_DOUBLE_DIGITS}, default 10), certified mode by the same two routes. "
         "Exit status 1 if any valence disagrees or is left without a verdict.",
     )
-    p.add_argument("--n", dest="valences", type=valence_range("check --certify"), action=Once, required=True, metavar="A:B",
-                   help="valences to check: an inclusive range A:B or a single N (at most 128; with --certify 512)")
+    p.add_argument("--n", dest="valences", type=valence_range("check --certify --route structural"), action=Once,
+                   required=True, metavar="A:B",
+                   help=f"valences to check: an inclusive range A:B or a single N (at most {LIMITS['check'][0]}; with "
+                   f"--certify {LIMITS['check --certify --route structural'][0]} on the structural route, "
+                   f"{LIMITS['check --certify'][0]} on the dense one)")
     p.add_argument("--dps", type=digits("--dps", minimum=5, limit="dps"), action=Once, default=50,
                    help="numeric mode: digits of agreement required (default 50; 5 <= dps <= 1000)")
+    p.add_argument("--solver", choices=SOLVERS, action=Once, default=None,
+                   help="numeric mode, 1-ring closed forms: flint (default; Arb, certified enclosures: a cluster that does "
+                   "not separate is undecided, never a pass) or mpmath (mpmath.eig at rising precision)")
     flag(p, "--certify", help="prove each valence exactly instead of comparing numerically (not with --dps)")
-    flag(p, "--structural", help="with --certify: the O(n) proof (the refined matrix equals the bordered circulant-block "
-         "matrix of the frequency matrices, entry by entry; Remark 6.1) instead of the dense characteristic polynomial; "
-         "multiplicities are certified from the frequency factors where exact arguments apply (the mult. column says)")
+    p.add_argument("--route", choices=ROUTES, action=Once, default=None,
+                   help="with --certify: structural (O(n): the full matrix is the block matrix, entry by entry; Remark "
+                   "6.1) or charpoly (the dense characteristic polynomial of the full matrix, FLINT); default: structural "
+                   "where it applies (edge and face rules free of n, no free parameters), else charpoly, saying so")
+    flag(p, "--structural", help="with --certify: the same as --route structural (kept for existing scripts)")
     add_pool_options(p)
     flag(p, "--json", help="print one JSON object: {rows: [...], summary: {...}}")
     add_scheme_option(p)
@@ -64,46 +79,88 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly"):
+def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):
     if rings is not None:  # the any-scheme route: K-ring frequency matrices
         return certify_ring(scheme, n, rings, method=method) if certified else ring_numeric_check(scheme, n, rings, digits=dps)
     if certified:
+        if method == "structure":
+            return certify_structural(scheme, n, closed_forms=closed_forms)
         return certify(scheme, n, closed_forms=closed_forms)
-    return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms)
+    return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver=solver)
 
 
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
                    jobs: int = 1, show_progress: bool = True, rings: int | None = None, method: str = "charpoly",
-                   executor: str | Executor = "local"):
+                   executor: str | Executor = "local", solver: str = "mpmath"):
     """Yield the check of each valence in order (a :class:`~symdecomp.verify.certify.Certificate` or
     :class:`~symdecomp.verify.numeric.NumericCheck`), in at most ``jobs`` processes.
 
     The pool is :func:`symdecomp.parallel.ordered_map` (``executor``: ``"local"``, ``"dask"`` or
     ``"dask=ADDRESS"``); the first valence is checked here first, so that the symbolic step is
     done once, before the workers fork. ``rings``: check the ``rings``-ring frequency matrices
-    (any scheme) instead of the 1-ring closed forms; ``method``: their certificate
-    (``"charpoly"`` or ``"structure"``, see :func:`~symdecomp.verify.ring_certify.certify_ring`).
+    (any scheme) instead of the 1-ring closed forms; ``method``: the certificate (``"charpoly"``
+    or ``"structure"``, see :func:`~symdecomp.verify.ring_certify.certify_ring` and
+    :mod:`~symdecomp.verify.structural`); ``solver``: numeric mode's eigen-solver (``"mpmath"`` or ``"flint"``).
     """
     valences = list(valences)
     if rings is None:
         closed_forms = closed_forms or derived_closed_forms(scheme)
-    job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms, rings=rings, method=method)
+    job = dict(scheme=scheme, certified=certified, dps=dps, closed_forms=closed_forms, rings=rings, method=method, solver=solver)
     label = "certify" if certified else f"check {dps} digits"
     rows = ordered_map(_one, valences, shared=job, jobs=jobs, executor=executor, warm_up=True)
     yield from progress(rows, len(valences), label, enabled=show_progress)
 
 
+def _route(args, rings) -> tuple[str, str]:
+    """The certificate of ``--certify``: ``(route, note)``, the note saying why the default fell back."""
+    refuse_together(args, "--route", "--structural", "--structural is --route structural")
+    asked = args.route or ("structural" if args.structural else None)
+    obstacle = structural_obstacle(args.scheme) if rings is None and asked != "charpoly" else None
+    if asked == "structural" and obstacle is not None:
+        raise InvalidInputError(f"--route structural: does not apply to scheme {args.scheme.name!r}: {obstacle}; "
+                                "use --route charpoly")
+    if obstacle is not None:
+        return "charpoly", f"the structural certificate does not apply ({obstacle}): dense route"
+    return asked or "structural", ""
+
+
+def _check_options(args, rings) -> None:
+    """Refuse options of the other mode, and valences beyond the bound of the route actually used."""
+    refuse_together(args, "--certify", "--dps", "the certified check is exact and has no precision")
+    refuse_together(args, "--certify", "--solver", "--solver chooses numeric mode's eigen-solver")
+    top = max(args.valences)
+    if not args.certify:
+        if args.route or args.structural:
+            raise InvalidInputError(f"{'--route' if args.route else '--structural'}: give it with --certify (it chooses the "
+                                    "certificate)")
+        bound, why = LIMITS["check"]
+        if top > bound:
+            raise InvalidInputError(f"check --n: numeric mode goes up to N = {bound}, got {top} ({why}); "
+                                    "use --certify for larger valences")
+        if rings is not None and args.solver:
+            raise InvalidInputError("--solver: the numeric check of triangle schemes and --rings > 1 runs in double "
+                                    "precision (numpy); --solver chooses the 1-ring closed forms' solver")
+        return
+    key = "check --certify --route structural" if args.route == "structural" else "check --certify"
+    bound, why = LIMITS[key]
+    if top > bound:
+        route = "structural route" if args.route == "structural" else "dense route (--route charpoly)"
+        raise InvalidInputError(f"check --n: the {route} goes up to N = {bound}, got {top} ({why})"
+                                + (f"; {args.route_note}" if args.route_note else ""))
+    if args.route == "structural":
+        check_memory(STRUCTURAL_BYTES_PER_VALENCE * (rings or 1) ** 2 * top, f"the structural certificate at n = {top}")
+
+
 def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
-    refuse_together(args, "--certify", "--dps", "the certified check is exact and has no precision")
-    bound, why = LIMITS["check"]
-    if not args.certify and max(args.valences) > bound:
-        raise InvalidInputError(f"check --n: numeric mode goes up to N = {bound}, got {max(args.valences)} ({why}); "
-                                "use --certify for larger valences")
-    if args.structural and not args.certify:
-        raise InvalidInputError("--structural: give it with --certify (it is a kind of certificate)")
-    rings = args.rings if general_path(args) or args.structural else None
+    rings = args.rings if general_path(args) else None
+    args.route_note = ""
+    if args.certify:
+        args.route, args.route_note = _route(args, rings)
+    _check_options(args, rings)
+    solver = args.solver or "flint"
     if rings is not None and not args.certify:
+        solver = "numpy"
         if not given(args, "dps"):
             args.dps = 10
         elif args.dps > MAX_DOUBLE_DIGITS:
@@ -112,31 +169,22 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     start = time.perf_counter()
     rows = []
     if not args.json:
-        mode = "certified (exact)" if args.certify else f"numeric, {args.dps} digits"
-        what = "closed forms" if rings is None else f"{rings}-ring frequency matrices E_0, E(omega)"
-        print(f"{args.scheme.name}: {what} vs full matrix, {mode}")
-        if args.certify:
-            print(f"{'n':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'chi_S bits':>10}  certificate")
-        else:
-            print(f"{'n':>4}  {'status':<13} {'distinct':>8}  {'max deviation':>13}  {'max spread':>10}  precisions")
+        _header(args, rings, solver)
     for r in check_valences(args.scheme, args.valences, certified=args.certify, dps=args.dps,
                             closed_forms=closed_forms, jobs=args.jobs, show_progress=True, rings=rings,
-                            method="structure" if args.structural else "charpoly", executor=args.executor):
+                            method="structure" if args.route == "structural" else "charpoly", solver=solver,
+                            executor=args.executor):
         rows.append(r)
-        if args.json:
-            continue
-        if args.certify:
-            mult = "certified" if r.multiplicities_certified else "-"
-            line = f"{r.n:>4}  {r.status.value:<9} {r.distinct:>8}  {mult:<9} {r.height_bits:>10}  {r.method}"
-        else:
-            line = (f"{r.n:>4}  {r.status.value:<13} {len(r.matches):>8}  {mpmath.nstr(r.max_deviation, 3):>13}  "
-                    f"{mpmath.nstr(r.max_spread, 3):>10}  {','.join(map(str, r.precisions))}")
-        print(line if r.ok else f"{line}\n      {r.message}", flush=True)
+        if not args.json:
+            _print_row(args, r)
     elapsed = time.perf_counter() - start
     counts = {s.value: sum(1 for r in rows if r.status is s) for s in CrossCheckStatus}
     failed = [r for r in rows if not r.ok]
     summary = {
         "mode": "certified" if args.certify else "numeric",
+        "route": args.route if args.certify else None,
+        "route_note": args.route_note or None,
+        "solver": None if args.certify else solver,
         "dps": None if args.certify else args.dps,
         "valences": len(rows),
         **counts,
@@ -151,3 +199,31 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         for r in failed:
             print(f"FAILED {r.message}")
     return 1 if failed else 0
+
+
+def _header(args, rings, solver) -> None:
+    if args.certify:
+        route = ("structural route: the full matrix = the block matrix, entry by entry (no characteristic polynomial)"
+                 if args.route == "structural" else "dense route: chi_S of the full matrix (FLINT)")
+        mode = f"certified (exact), {route}"
+    else:
+        mode = f"numeric, {args.dps} digits, solver {solver}"
+    what = "closed forms" if rings is None else f"{rings}-ring frequency matrices E_0, E(omega)"
+    print(f"{args.scheme.name}: {what} vs full matrix, {mode}")
+    if args.route_note:
+        print(f"note: {args.route_note}")
+    if args.certify:
+        print(f"{'n':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'route':<10} {'chi_S bits':>10}  certificate")
+    else:
+        print(f"{'n':>4}  {'status':<13} {'distinct':>8}  {'max deviation':>13}  {'max spread':>10}  precisions")
+
+
+def _print_row(args, r) -> None:
+    if args.certify:
+        mult = "certified" if r.multiplicities_certified else "-"
+        bits = r.height_bits if r.route == "charpoly" else "-"
+        line = f"{r.n:>4}  {r.status.value:<9} {r.distinct:>8}  {mult:<9} {r.route:<10} {bits:>10}  {r.method}"
+    else:
+        line = (f"{r.n:>4}  {r.status.value:<13} {len(r.matches):>8}  {mpmath.nstr(r.max_deviation, 3):>13}  "
+                f"{mpmath.nstr(r.max_spread, 3):>10}  {','.join(map(str, r.precisions))}")
+    print(line if r.ok else f"{line}\n      {r.message}", flush=True)

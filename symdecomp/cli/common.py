@@ -56,7 +56,10 @@ LIMITS = {
     "tune": (1000, "the exact solve grows with N: N = 300 takes about 10 s"),
     "tune --table": (200, "one exact evaluation per valence: N = 60 takes about 10 s"),
     "check": (128, "numeric mode solves a (2N+1)x(2N+1) eigenproblem at rising precision, time ~ N^3"),
-    "check --certify": (512, "the memory of the exact characteristic polynomial grows like N^3; N = 256 takes minutes"),
+    "check --certify": (512, "the dense route (--route charpoly): the memory of the exact characteristic polynomial grows "
+                        "like N^3; N = 256 takes minutes"),
+    "check --certify --route structural": (10000, "the structural route's memory grows like N (about 10 kB per valence "
+                                           "and ring squared); N = 1000 takes about a second on the 1-ring"),
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
     "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),

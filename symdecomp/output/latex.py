@@ -150,7 +150,7 @@ def text_latex(text: str, *, displays: bool = True) -> str:
     50\\% of a \\& b: $\\omega_n^j$
     >>> print(text_latex("costs $5"))
     costs \\$5
-    >>> print(text_latex(Verbatim("c $\\input{x}$")))
+    >>> print(text_latex(Verbatim("c $\\\\input{x}$")))
     c \\$\\textbackslash{}input\\{x\\}\\$
     """
     if isinstance(text, Verbatim):

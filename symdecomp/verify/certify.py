@@ -178,11 +178,15 @@ class Certificate(CrossCheckResult):
     multiplicities_certified: bool
     #: Bits of the largest coefficient numerator of ``chi_S``.
     height_bits: int
+    #: Which proof: ``"charpoly"`` (the dense characteristic polynomial of the full matrix) or
+    #: ``"structural"`` (the full matrix is the block matrix, entry by entry; no ``chi_S``).
+    route: str = "charpoly"
 
     mode: ClassVar[str] = "certified"
 
     def details(self) -> dict:
         return {
+            "route": self.route,
             "method": self.method,
             "distinct": self.distinct,
             "multiplicities": list(self.multiplicities),

@@ -81,11 +81,15 @@ class NumericCheck(CrossCheckResult):
     max_spread: object
     #: One entry per distinct closed-form value.
     matches: tuple[EigenvalueMatch, ...]
+    #: The eigen-solver: ``"mpmath"`` (``mpmath.eig``), ``"flint"`` (Arb, certified enclosures,
+    #: :mod:`symdecomp.verify.arb_numeric`) or ``"numpy"`` (double precision, the K-ring route).
+    solver: str = "mpmath"
 
     mode: ClassVar[str] = "numeric"
 
     def details(self) -> dict:
         return {
+            "solver": self.solver,
             "dps": self.dps,
             "precisions": list(self.precisions),
             "max_deviation": mpmath.nstr(self.max_deviation, 3),
@@ -177,17 +181,22 @@ def numeric_check(
     closed_forms: ClosedForms | None = None,
     max_dps: int | None = None,
     eigensolver: Callable | None = None,
+    solver: str = "mpmath",
 ) -> NumericCheck:
     """Match the numeric spectrum of the full valence-``n`` matrix with the closed forms.
 
     ``dps``: the closed forms must agree to this many digits. ``closed_forms``: the closed
-    forms under test (default: the derived ones; tests pass a wrong one). ``max_dps``: the
-    highest working precision tried (default ``4 * dps + 40``). ``eigensolver``: replaces
-    ``mpmath.eig`` (see :func:`full_matrix_eigenvalues`).
+    forms under test (default: the derived ones; tests pass a wrong one). ``max_dps``: the highest
+    working precision tried (default ``4 * dps + 40``). ``eigensolver``: replaces ``mpmath.eig``
+    (:func:`full_matrix_eigenvalues`). ``solver``: ``"mpmath"`` or ``"flint"`` (:mod:`.arb_numeric`).
     """
     check_scheme(scheme)
     n = check_valence(n)
     dps = check_precision(dps)
+    if _check_solver(solver, eigensolver) == "flint":
+        from symdecomp.verify.arb_numeric import arb_numeric_check
+
+        return arb_numeric_check(scheme, n, dps=dps, parameters=parameters, closed_forms=closed_forms, max_dps=max_dps)
     if max_dps is not None:
         max_dps = check_precision(max_dps, "max_dps", maximum=4 * MAX_DPS + 40)
     _check_solve_memory(2 * n + 1, max_dps or 4 * dps + 40)
@@ -224,6 +233,14 @@ def numeric_check(
         previous = means
         work = _next_precision(work)
     return _not_converged(scheme, n, dps, tuple(precisions), matches, max_dps, reference)
+
+
+def _check_solver(solver, eigensolver) -> str:
+    if solver not in ("mpmath", "flint"):
+        raise InvalidInputError(f"solver: expected 'mpmath' or 'flint', got {solver!r}")
+    if solver == "flint" and eigensolver is not None:
+        raise InvalidInputError("eigensolver: replaces mpmath.eig, so it needs solver='mpmath'")
+    return solver
 
 
 def _not_converged(scheme, n, dps, precisions, matches, max_dps, reference) -> NumericCheck:

@@ -182,14 +182,14 @@ def structural_certificate(scheme: Scheme, n: int, rings: int = 1, *, blocks: Ri
                    f"gives {want} (exact)")
         return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.DISAGREE, message=message,
                            method="refined matrix != block form", distinct=0, multiplicities=multiplicities, values=texts,
-                           multiplicities_certified=False, height_bits=0)
+                           multiplicities_certified=False, height_bits=0, route="structural")
     method = f"refined matrix = bordered CB-matrix of E_0, E(omega), entry by entry ({sum(len(r) for r in S.rows)} entries); Remark 6.1"
     why_not = cluster_multiplicities(scheme, blocks, spectrum)
     note = "multiplicities certified" if why_not is None else f"multiplicities not certified ({why_not})"
     message = f"n = {n}: proved: {method}; {len(spectrum.eigenvalues)} distinct values, {note}"
     return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.AGREE, message=message, method=method,
                        distinct=len(spectrum.eigenvalues), multiplicities=multiplicities, values=texts,
-                       multiplicities_certified=why_not is None, height_bits=0)
+                       multiplicities_certified=why_not is None, height_bits=0, route="structural")
 
 
 def cluster_multiplicities(scheme: Scheme, blocks: RingBlocks, spectrum) -> str | None:

@@ -69,5 +69,5 @@ def ring_numeric_check(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 
     return NumericCheck(
         n=n, scheme=scheme.name, dps=digits, precisions=(15,), status=status,
         max_deviation=max(m.deviation for m in matches), max_spread=max(m.spread for m in matches),
-        matches=tuple(matches), message=message,
+        matches=tuple(matches), message=message, solver="numpy",
     )

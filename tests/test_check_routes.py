@@ -10,6 +10,7 @@ import sympy as sp
 from symdecomp.analysis.closed_forms import derived_closed_forms
 from symdecomp.analysis.defective import jordan_vertex_weights
 from symdecomp.cli import build_parser, check_cmd, main
+from symdecomp.cli.check_cmd import check_valences
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.scheme import catmull_clark
@@ -179,6 +180,14 @@ def test_flint_route_never_passes_a_cluster_it_cannot_resolve():
     r = arb_numeric_check(JORDAN, 5, dps=30, max_dps=60)
     assert r.status is CrossCheckStatus.UNDECIDED and not r.ok and "no verdict" in r.message and "--solver mpmath" in r.message
     assert numeric_check(JORDAN, 5, dps=30, solver="mpmath").ok  # matched by the cluster's mean
+
+
+def test_the_default_solver_hands_what_flint_leaves_undecided_to_mpmath():
+    """The command's default: flint, then mpmath for a valence flint cannot decide; the row names the solver that decided."""
+    (row,) = check_valences(JORDAN, [5], certified=False, dps=30, solver="auto", show_progress=False)
+    assert row.ok and row.solver == "mpmath (flint undecided)"
+    (row,) = check_valences(catmull_clark(), [5], certified=False, dps=30, solver="auto", show_progress=False)
+    assert row.ok and row.solver == "flint"
 
 
 def test_numeric_command_names_its_solver(capsys):

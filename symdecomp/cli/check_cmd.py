@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 import mpmath
 
@@ -64,8 +65,9 @@ def register(sub) -> None:
     p.add_argument("--dps", type=digits("--dps", minimum=5, limit="dps"), action=Once, default=50,
                    help="numeric mode: digits of agreement required (default 50; 5 <= dps <= 1000)")
     p.add_argument("--solver", choices=SOLVERS, action=Once, default=None,
-                   help="numeric mode, 1-ring closed forms: flint (default; Arb, certified enclosures: a cluster that does "
-                   "not separate is undecided, never a pass) or mpmath (mpmath.eig at rising precision)")
+                   help="numeric mode, 1-ring closed forms: flint (Arb, certified enclosures: a cluster that does "
+                   "not separate is undecided, never a pass) or mpmath (mpmath.eig at rising precision); default: flint, "
+                   "and mpmath for a valence flint leaves undecided (a Jordan block), the row says so")
     flag(p, "--certify", help="prove each valence exactly instead of comparing numerically (not with --dps)")
     p.add_argument("--route", choices=ROUTES, action=Once, default=None,
                    help="with --certify: structural (O(n): the full matrix is the block matrix, entry by entry; Remark "
@@ -86,7 +88,13 @@ def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpol
         if method == "structure":
             return certify_structural(scheme, n, closed_forms=closed_forms)
         return certify(scheme, n, closed_forms=closed_forms)
-    return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver=solver)
+    if solver != "auto":
+        return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver=solver)
+    first = numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver="flint")
+    if first.status is not CrossCheckStatus.UNDECIDED:
+        return first
+    # a cluster the certified enclosures cannot separate (a Jordan block): mpmath matches it by its mean
+    return replace(numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver="mpmath"), solver="mpmath (flint undecided)")
 
 
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,
@@ -158,7 +166,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     if args.certify:
         args.route, args.route_note = _route(args, rings)
     _check_options(args, rings)
-    solver = args.solver or "flint"
+    solver = args.solver or "auto"
     if rings is not None and not args.certify:
         solver = "numpy"
         if not given(args, "dps"):
@@ -184,7 +192,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         "mode": "certified" if args.certify else "numeric",
         "route": args.route if args.certify else None,
         "route_note": args.route_note or None,
-        "solver": None if args.certify else solver,
+        "solver": None if args.certify else {"auto": "flint"}.get(solver, solver),
         "dps": None if args.certify else args.dps,
         "valences": len(rows),
         **counts,
@@ -207,7 +215,7 @@ def _header(args, rings, solver) -> None:
                  if args.route == "structural" else "dense route: chi_S of the full matrix (FLINT)")
         mode = f"certified (exact), {route}"
     else:
-        mode = f"numeric, {args.dps} digits, solver {solver}"
+        mode = f"numeric, {args.dps} digits, solver " + ("flint (mpmath where flint leaves a valence undecided)" if solver == "auto" else solver)
     what = "closed forms" if rings is None else f"{rings}-ring frequency matrices E_0, E(omega)"
     print(f"{args.scheme.name}: {what} vs full matrix, {mode}")
     if args.route_note:

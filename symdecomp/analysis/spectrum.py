@@ -33,7 +33,7 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_digits, check_valence
+from symdecomp.validate import check_digits
 
 __all__ = ["SpectrumEntry", "Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
 
@@ -171,12 +171,8 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     ``1/4`` three times) are exact up to that rounding. ``parameters`` gives values for free
     parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
     """
-    n = check_valence(n)
+    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     digits = check_digits(digits)
-    if n < scheme.minimum_valence():
-        from symdecomp.schemes.scheme import subdivision_matrix
-
-        subdivision_matrix(scheme, n)  # raises the error naming the problem
     subs = parameter_values(scheme, parameters)
     work = digits + 30
     raw: list[tuple[object, int]] = []

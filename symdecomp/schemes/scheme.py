@@ -31,7 +31,7 @@ from typing import Any
 import sympy as sp
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError
-from symdecomp.expressions import exact_value
+from symdecomp.expressions import MAX_OFFSET, check_budget, exact_value
 from symdecomp.schemes.lattice import LATTICES, QUAD, Lattice, lattice
 from symdecomp.symbols import Parameter
 from symdecomp.symbols import alpha as ALPHA
@@ -210,6 +210,7 @@ class Scheme:
             raise InvalidSchemeError(
                 f"scheme {self.name!r}: a {self.lattice} 1-ring has no face neighbours b_i; give no b weights"
             )
+        _within_budget(self)
         _to_parameters(self)
         free = {s for w in self.weights() for s in w.free_symbols} - {N}
         declared = set(self.parameters)
@@ -272,6 +273,23 @@ class Scheme:
             tuple(p for p in self.parameters if p not in subs),
             self.lattice,
         )
+
+
+def _within_budget(scheme: Scheme) -> None:
+    """Refuse a scheme whose weights or offsets are beyond the expression budget (:data:`symdecomp.expressions.BUDGET`),
+    before anything is computed with them: the API's door, for rules built without :meth:`Stencil.from_weights`."""
+    for label, rule in zip(("edge rule", "face rule"), scheme.stencils()):
+        wide = [k for k in rule.offsets() if abs(k) > MAX_OFFSET]
+        if wide:
+            raise InvalidSchemeError(
+                f"scheme {scheme.name!r}: {label}: offset {wide[0]} is beyond the budget's {MAX_OFFSET} in magnitude (the "
+                f"closed forms are Laurent polynomials in omega of degree 2*offset, and every valence below the stencil's "
+                "width is refused)")
+    try:
+        for w in scheme.weights():
+            check_budget(sp.sympify(w, strict=True), "weight")
+    except InvalidExpressionError as exc:
+        raise InvalidSchemeError(f"scheme {scheme.name!r}: {exc}") from None
 
 
 def _to_parameters(scheme: Scheme) -> None:
@@ -387,8 +405,12 @@ def _check_defined(scheme: Scheme, n: int, note: str = "") -> None:
 
 
 def _check_weight_at(weight: sp.Expr, n: int, where: str, note: str = "") -> None:
-    if N in weight.free_symbols and weight.subs(N, n).has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+    """Refuse a weight that is undefined (``zoo``, ``nan``) or not real at the valence ``n``."""
+    value = weight.subs(N, n) if N in weight.free_symbols else weight
+    if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
         raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}{note}")
+    if value.has(sp.I) or value.is_real is False:
+        raise InvalidSchemeError(f"{where}: weight {weight} is not real at valence n = {n} (it is {value}){note}")
 
 
 def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:

@@ -283,15 +283,7 @@ def _build(node: ast.AST, names: Mapping[str, sp.Expr], where: str, depth: int, 
         operand, cost = _build(node.operand, names, where, deeper, source)
         return (-operand if isinstance(node.op, ast.USub) else operand), _checked(_product([cost]), where)
     if isinstance(node, ast.BinOp) and type(node.op) in _BINARY:
-        left, lcost = _build(node.left, names, where, deeper, source)
-        right, rcost = _build(node.right, names, where, deeper, source)
-        if isinstance(node.op, (ast.Add, ast.Sub)):
-            cost = _checked(_sum([lcost, rcost]), where)
-        else:
-            cost = _checked(_product([lcost, rcost], isinstance(node.op, ast.Div)), where)
-        if isinstance(node.op, ast.Div) and right == 0:
-            raise ZeroDivisionError
-        return _BINARY[type(node.op)](left, right), cost
+        return _chain(node, names, where, deeper, source)
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Pow):
         base, bcost = _build(node.left, names, where, deeper, source)
         exponent, ecost = _build(node.right, names, where, deeper, source)
@@ -317,6 +309,31 @@ def _build(node: ast.AST, names: Mapping[str, sp.Expr], where: str, depth: int, 
     raise InvalidExpressionError(
         f"{where}: only numbers, + - * / **, parentheses, {', '.join(sorted(names))} and {', '.join(_FUNCTIONS)} are allowed"
     )
+
+
+def _chain(node: ast.BinOp, names, where: str, depth: int, source: str) -> tuple[sp.Expr, _Cost]:
+    """A chain ``a + b - c + ...`` (or ``a * b / c ...``), which Python's parser nests to the left, as one level."""
+    additive = isinstance(node.op, (ast.Add, ast.Sub))
+    family = (ast.Add, ast.Sub) if additive else (ast.Mult, ast.Div)
+    operations = []
+    while isinstance(node, ast.BinOp) and isinstance(node.op, family):
+        operations.append((type(node.op), node.right))
+        node = node.left
+        if len(operations) > MAX_NODES:
+            raise InvalidExpressionError(f"{where}: more than {MAX_NODES} operations, numbers and names")
+    value, cost = _build(node, names, where, depth, source)
+    costs = [cost]
+    for op, operand in reversed(operations):
+        right, rcost = _build(operand, names, where, depth, source)
+        if additive:
+            cost = _checked(_sum([*costs, rcost]), where)
+        else:
+            cost = _checked(_product([*costs, rcost.inverse() if op is ast.Div else rcost]), where)
+        if op is ast.Div and right == 0:
+            raise ZeroDivisionError
+        costs.append(rcost.inverse() if op is ast.Div else rcost)
+        value = _BINARY[op](value, right)
+    return value, cost
 
 
 def check_budget(expr: sp.Expr, argument: str = "expression") -> None:

@@ -18,8 +18,8 @@ import sympy as sp
 from sympy import Rational as R
 
 from symdecomp import Scheme, Stencil, VertexRule, catmull_clark, closed_form_spectrum, limit_masks_at, tune
-from symdecomp.cli import main
 from symdecomp.claims.guards import BudgetExceeded, time_budget
+from symdecomp.cli import main
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError
 from symdecomp.expressions import BUDGET, MAX_NODES, exact_value, parse_expression
 from symdecomp.schemes import full_matrix

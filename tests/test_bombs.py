@@ -183,6 +183,18 @@ def test_the_api_refuses_a_weight_undefined_at_the_valence():
     assert limit_masks_at(scheme, 6).n == 6
 
 
+def test_the_valences_where_a_weight_is_undefined_are_the_integer_roots_of_its_denominator():
+    scheme = scheme_from_text(EDGE_FACE.format(a="1/((n-7)*(2*n-9)*(n**2+1)*(n+3))", offset=1))
+    refused = []
+    for n in range(3, 40):
+        try:
+            scheme.fitting_valence(n)
+        except InvalidSchemeError as exc:
+            refused.append(n)
+            assert f"undefined at valence n = {n}" in str(exc)
+    assert refused == [7]
+
+
 # -- Item 8: number syntax ---------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("text", ["0o7/8", "0b11/8", "0x3/8", "0O7", "0X3/8", "1_0/80"])

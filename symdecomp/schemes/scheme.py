@@ -26,8 +26,10 @@ from __future__ import annotations
 import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 
+import flint
 import sympy as sp
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError
@@ -404,8 +406,38 @@ def _check_defined(scheme: Scheme, n: int, note: str = "") -> None:
         _check_weight_at(w, n, f"{scheme.name!r} vertex rule", note)
 
 
+@lru_cache(maxsize=1024)
+def _poles(weight: sp.Expr) -> frozenset | None:
+    """The valences at which ``weight`` is undefined, when that is decided once for every ``n`` (else ``None``).
+
+    A weight without radicals or ``I`` is real wherever it is defined (``cos``/``sin`` of rational multiples of
+    ``pi`` included: their arguments have no pole at a valence, see :mod:`symdecomp.expressions`), and undefined
+    exactly where its denominator, a polynomial in ``n`` alone, vanishes: at its positive integer roots, read off
+    the linear factors of FLINT's factorization. Anything else is decided at each valence by substitution.
+    """
+    if (weight.has(sp.I, sp.Piecewise) or any(not p.exp.is_Integer for p in weight.atoms(sp.Pow))
+            or any(not isinstance(f, (sp.cos, sp.sin)) for f in weight.atoms(sp.Function))):
+        return None
+    _, den = sp.fraction(sp.together(weight))
+    if not den.free_symbols <= {N} or den.has(sp.Function) or not den.is_polynomial(N):
+        return None
+    poly = sp.Poly(den, N)
+    scale = sp.ilcm(1, 1, *[sp.Rational(c).q for c in poly.all_coeffs()])
+    integer = flint.fmpz_poly([int(c * scale) for c in reversed(poly.all_coeffs())])
+    roots = set()
+    for factor, _ in integer.factor()[1]:
+        if factor.degree() == 1 and factor[0] % factor[1] == 0 and -factor[0] // factor[1] > 0:
+            roots.add(int(-factor[0] // factor[1]))
+    return frozenset(roots)
+
+
 def _check_weight_at(weight: sp.Expr, n: int, where: str, note: str = "") -> None:
     """Refuse a weight that is undefined (``zoo``, ``nan``) or not real at the valence ``n``."""
+    poles = _poles(weight)
+    if poles is not None:
+        if n in poles:
+            raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}{note}")
+        return
     value = weight.subs(N, n) if N in weight.free_symbols else weight
     if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
         raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}{note}")

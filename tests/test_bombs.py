@@ -6,6 +6,7 @@ refused by the parser with the bound it exceeds; the slow test runs each through
 file, under a memory limit (``ulimit -v``) and a timeout, and sees exit code 2 and one line.
 """
 
+import os
 import resource
 import subprocess
 import sys
@@ -254,7 +255,8 @@ def _limited(argv, cwd, timeout=120):
         resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT_KB * 1024, MEMORY_LIMIT_KB * 1024))
 
     return subprocess.run([sys.executable, "-m", "symdecomp", *argv], cwd=cwd, capture_output=True, text=True,
-                          preexec_fn=limit, timeout=timeout, env={"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin"})
+                          preexec_fn=limit, timeout=timeout,
+                          env={**os.environ, "PYTHONPATH": str(ROOT), "OPENBLAS_NUM_THREADS": "1"})
 
 
 def _run_bomb(tmp_path, k: int, text: str) -> None:

@@ -263,7 +263,7 @@ def check_scheme_valences(args) -> None:
     if not isinstance(scheme, Scheme) or valences is None:
         return
     for n in valences if isinstance(valences, list) else [valences]:
-        scheme.fitting_valence(n)
+        scheme.fitting_valence(n, real=True)
 
 
 def progress(iterable, total: int, label: str, *, enabled: bool = True):

@@ -142,6 +142,8 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
     declared = tuple(s for key, s in symbols.items() if key != "n")
     try:
         scheme = Scheme(name.strip(), edge, face, vertex, declared, mesh)
+        scheme.check_values_at(mesh.regular_valence, real=True, note=" (the regular valence: every vertex away from O uses "
+                               "the rules there)")
     except SymdecompError as exc:
         raise InvalidSchemeError(f"{source}: {exc}") from None
     undeclared = set(scheme.parameters) - set(declared)

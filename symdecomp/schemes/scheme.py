@@ -248,13 +248,19 @@ class Scheme:
         """The smallest valence for which the stencil offsets are distinct mod ``n`` (at least 3)."""
         return max(3, self._span + 1)
 
-    def fitting_valence(self, n) -> int:
-        """``n``, checked to be a valence at which the stencils fit (else :class:`InvalidSchemeError`)."""
+    def fitting_valence(self, n, *, real: bool = False) -> int:
+        """``n``, checked to be a valence at which the stencils fit and every weight is defined (else
+        :class:`InvalidSchemeError`); with ``real``, every weight must also be real there (scheme files and the
+        command line ask for real rules; in Python a scheme may have complex weights, e.g. to test a statement)."""
         n = check_valence(n)
         if n < self.minimum_valence():
             raise InvalidSchemeError(f"scheme {self.name!r} has stencils {self._span + 1} wide, wider than the valence n = {n}")
-        _check_defined(self, n)
+        _check_defined(self, n, real=real)
         return n
+
+    def check_values_at(self, n: int, *, real: bool = False, note: str = "") -> None:
+        """Refuse the valence ``n`` if a weight is undefined there (with ``real``: or not real); ``note`` ends the message."""
+        _check_defined(self, check_valence(n), note, real=real)
 
     def substitute(self, values: Mapping[sp.Symbol, object], *, name: str | None = None) -> Scheme:
         """The scheme with some parameters replaced (e.g. tuned vertex weights)."""
@@ -396,14 +402,14 @@ def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]
 
 
 
-def _check_defined(scheme: Scheme, n: int, note: str = "") -> None:
+def _check_defined(scheme: Scheme, n: int, note: str = "", *, real: bool = False) -> None:
     """Refuse a valence at which a weight of the scheme is undefined (e.g. ``1/(n - 5)`` at ``n = 5``)."""
     for label, rule in zip(("edge rule", "face rule"), scheme.stencils()):
         for w in (rule.center, *(w for _, w in rule.a + rule.b)):
-            _check_weight_at(w, n, f"{scheme.name!r} {label}", note)
+            _check_weight_at(w, n, f"{scheme.name!r} {label}", note, real)
     v = scheme.vertex_rule
     for w in (v.center, v.each_a, v.each_b):
-        _check_weight_at(w, n, f"{scheme.name!r} vertex rule", note)
+        _check_weight_at(w, n, f"{scheme.name!r} vertex rule", note, real)
 
 
 @lru_cache(maxsize=1024)
@@ -431,8 +437,8 @@ def _poles(weight: sp.Expr) -> frozenset | None:
     return frozenset(roots)
 
 
-def _check_weight_at(weight: sp.Expr, n: int, where: str, note: str = "") -> None:
-    """Refuse a weight that is undefined (``zoo``, ``nan``) or not real at the valence ``n``."""
+def _check_weight_at(weight: sp.Expr, n: int, where: str, note: str = "", real: bool = False) -> None:
+    """Refuse a weight that is undefined (``zoo``, ``nan``) at the valence ``n``, or with ``real`` not real there."""
     poles = _poles(weight)
     if poles is not None:
         if n in poles:
@@ -441,7 +447,7 @@ def _check_weight_at(weight: sp.Expr, n: int, where: str, note: str = "") -> Non
     value = weight.subs(N, n) if N in weight.free_symbols else weight
     if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
         raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}{note}")
-    if value.has(sp.I) or value.is_real is False:
+    if real and (value.has(sp.I) or value.is_real is False):
         raise InvalidSchemeError(f"{where}: weight {weight} is not real at valence n = {n} (it is {value}){note}")
 
 

@@ -182,9 +182,7 @@ class MasksAtValence:
 def limit_masks_at(scheme: Scheme, n: int) -> MasksAtValence:
     """Evaluate :func:`limit_masks` at valence ``n`` (exact)."""
     check_scheme(scheme)
-    n = check_valence(n)
-    if n < scheme.minimum_valence():
-        raise InvalidSchemeError(f"scheme {scheme.name!r} needs valence >= {scheme.minimum_valence()}, got {n}")
+    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     return MasksAtValence(n, limit_masks(scheme))
 
 

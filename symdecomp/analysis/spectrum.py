@@ -32,7 +32,7 @@ from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.validate import cached, check_digits, check_valence
+from symdecomp.validate import cached, check_digits
 
 __all__ = ["SpectrumEntry", "Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
 
@@ -171,12 +171,8 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
     """
     check_scheme(scheme)
-    n = check_valence(n)
+    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     digits = check_digits(digits)
-    if n < scheme.minimum_valence():
-        from symdecomp.schemes.scheme import subdivision_matrix
-
-        subdivision_matrix(scheme, n)  # raises the error naming the problem
     subs = parameter_values(scheme, parameters)
     work = digits + 30
     raw: list[tuple[object, int]] = []

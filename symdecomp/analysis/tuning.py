@@ -41,7 +41,7 @@ from symdecomp.symbols import cos_jtheta, cos_theta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import cached, check_digits, check_valence
+from symdecomp.validate import cached, check_digits
 
 __all__ = [
     "with_free_vertex_rule",
@@ -246,7 +246,7 @@ def _less(a, b) -> bool:
 def tune(scheme: Scheme, n: int) -> TuningAtValence:
     """Tune the vertex rule of ``scheme`` at valence ``n`` for each condition alone and for both."""
     check_scheme(scheme)
-    n = check_valence(n)
+    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     if scheme.parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; tune a concrete scheme")
     cond = nice_elliptic_conditions(scheme)

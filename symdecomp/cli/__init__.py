@@ -24,7 +24,7 @@ import os
 import signal
 import sys
 
-from symdecomp.cli.common import LIMITS, Parser
+from symdecomp.cli.common import LIMITS, Parser, check_scheme_valences
 from symdecomp.errors import InternalError, OutputWriteError, ResourceLimitError, SymdecompError, UnavailableError
 
 __all__ = ["main", "build_parser", "EXIT_CODES"]
@@ -100,6 +100,7 @@ def main(argv=None) -> int:
             return exc.code if isinstance(exc.code, int) else 2
         previous = _install(signal.SIGTERM, _on_sigterm)
         try:
+            check_scheme_valences(args)
             code = int(args.func(args) or 0)
             sys.stdout.flush()
             return code

@@ -39,6 +39,7 @@ __all__ = [
     "add_pool_options",
     "general_path",
     "closed_form_obstacle",
+    "check_scheme_valences",
     "refuse_non_quad",
     "given",
     "refuse_together",
@@ -276,6 +277,21 @@ def closed_form_obstacle(scheme: Scheme) -> str | None:
     if MIRROR_SYMMETRIC.unmet(scheme) is not None:
         return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"
     return None
+
+
+def check_scheme_valences(args) -> None:
+    """Refuse, before a command starts, a valence of the command at which its scheme cannot be evaluated.
+
+    The one check every command reaches (``main`` calls it): at each valence the command uses (``N``, ``--n A:B``)
+    the stencils must fit and every weight must be defined and real
+    (:meth:`~symdecomp.schemes.scheme.Scheme.fitting_valence`); the error names the valence and the weight.
+    """
+    scheme = getattr(args, "scheme", None)
+    valences = getattr(args, "valences", None) or getattr(args, "n", None)
+    if not isinstance(scheme, Scheme) or valences is None:
+        return
+    for n in valences if isinstance(valences, list) else [valences]:
+        scheme.fitting_valence(n, real=True)
 
 
 def progress(iterable, total: int, label: str, *, enabled: bool = True):

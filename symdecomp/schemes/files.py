@@ -18,9 +18,10 @@ valence ``n``. Standard Catmull-Clark, written as a file::
 
 Every weight is exact: an integer or a string read by
 :func:`symdecomp.expressions.parse_expression` (rationals, ``n``, the names listed in an optional
-``parameters = ["alpha", "beta"]``, ``pi``, ``sqrt``, ``cos``, ``sin``); nothing is evaluated.
-Offsets are integers of any size (``"-2"``, ``"3"``): a stencil wider than the valence is refused
-where the matrix is built. ``[vertex]`` may also give ``O``; it must then equal ``1 - n*a - n*b``.
+``parameters = ["alpha", "beta"]``, ``pi``, ``sqrt``, ``cos``, ``sin``), within the expression budget
+(:data:`symdecomp.expressions.BUDGET`); nothing is evaluated. Offsets are integers of magnitude at most
+:data:`~symdecomp.expressions.MAX_OFFSET` (``"-2"``, ``"3"``): a stencil wider than a valence a command
+uses is refused at that valence. ``[vertex]`` may also give ``O``; it must then equal ``1 - n*a - n*b``.
 
 ``mesh = "quad"`` is the default. A scheme on triangle meshes (Loop's shape, see
 :mod:`symdecomp.schemes.loop`) says ``mesh = "triangle"``; its 1-ring is ``(O, a_0..a_{n-1})``
@@ -151,6 +152,8 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
     declared = tuple(s for key, s in symbols.items() if key != "n")
     try:
         scheme = Scheme(name.strip(), edge, face, vertex, declared, mesh)
+        scheme.check_values_at(mesh.regular_valence, real=True, note=" (the regular valence: every vertex away from O uses "
+                               "the rules there)")
     except SymdecompError as exc:
         raise InvalidSchemeError(f"{source}: {exc}") from None
     undeclared = set(scheme.parameters) - set(declared)

@@ -141,28 +141,74 @@ def _lcm(values) -> int:
     return out
 
 
-def _divisors(m: int) -> list[int]:
-    small = [d for d in range(1, math.isqrt(m) + 1) if m % d == 0]
-    return sorted(set(small + [m // d for d in small]))
+def _coprime_base(values) -> list[int]:
+    """Pairwise coprime integers > 1 of which every one of ``values`` is a product of powers, by gcds alone.
+
+    (A factor refinement: no factoring, so a denominator such as ``10**30`` or a large prime costs a few gcds.)
+    """
+    base = sorted({abs(int(v)) for v in values} - {0, 1})
+    while True:
+        pair = next(((a, b) for i, a in enumerate(base) for b in base[i + 1:] if math.gcd(a, b) > 1), None)
+        if pair is None:
+            return sorted({_root(b) for b in base})
+        a, b = pair
+        g = math.gcd(a, b)
+        base = sorted((set(base) - {a, b}) | ({a // g, g, b // g} - {1}))
+
+
+def _root(b: int) -> int:
+    """The smallest ``r`` with ``b = r^k`` (so that the exponents of a prime power in the base are its own)."""
+    power = sp.perfect_power(b)
+    return int(power[0]) if power else b
+
+
+def _multiplicity(b: int, m: int) -> int:
+    """The exponent of ``b`` in ``m`` (``b`` > 1, ``m`` != 0)."""
+    e, m = 0, abs(m)
+    while m % b == 0:
+        m //= b
+        e += 1
+    return e
+
+
+def _scale(den_rest: int, row, col) -> flint.fmpq:
+    """The ``t`` of :func:`_balanced_integer_matrix`: among the divisors of the row's common denominator, the
+    smallest that makes the common denominator of ``den_rest``, ``x t`` (row) and ``y / t`` (column) smallest.
+
+    The common denominator is a product over the elements ``b`` of a coprime base of all the numbers involved,
+    and the exponent of ``b`` in it depends only on the exponent ``k`` of ``b`` in ``t``: each ``b`` is chosen
+    alone (the smallest best ``k`` for each, which gives the smallest best ``t``).
+    """
+    row, col = list(row), list(col)
+    numbers = [den_rest] + [int(v) for x in row + col for v in (x.p, x.q)]
+    t = 1
+    for b in _coprime_base(numbers):
+        rest = _multiplicity(b, den_rest)
+        rows = [_multiplicity(b, int(x.p)) - _multiplicity(b, int(x.q)) for x in row]
+        cols = [_multiplicity(b, int(y.p)) - _multiplicity(b, int(y.q)) for y in col]
+        top = max([0] + [-v for v in rows])  # the exponent of b in the row's common denominator
+        exponents = [max([rest, 0] + [-(v + k) for v in rows] + [-(v - k) for v in cols]) for k in range(top + 1)]
+        t *= b ** exponents.index(min(exponents))  # the first best k
+    return flint.fmpq(t)
 
 
 def _balanced_integer_matrix(entries: dict, size: int) -> tuple[flint.fmpz_mat, int]:
     """An integer matrix ``A`` and ``d`` with ``A = d * T S T^-1`` for a diagonal ``T``.
 
     ``T`` scales row and column 0 (the central vertex, whose weights carry the ``1/n^2``
-    denominators) by the factor ``t`` that makes the common denominator ``d`` smallest.
+    denominators) by the factor ``t`` that makes the common denominator ``d`` smallest
+    (:func:`_scale`, without factoring any number).
     A similarity leaves the characteristic polynomial unchanged, and the cost of FLINT's
     exact characteristic polynomial grows with the bit size of ``d``.
     """
     row = {x for (r, c), x in entries.items() if r == 0 and c}
     col = {x for (r, c), x in entries.items() if c == 0 and r}
     den_rest = _lcm(x.q for (r, c), x in entries.items() if (r == 0) == (c == 0))
-    den_row = _lcm(x.q for x in row)
 
     def common_denominator(t):
         return _lcm([den_rest] + [(x * t).q for x in row] + [(x / t).q for x in col])
 
-    t = min((flint.fmpq(den_row, g) for g in _divisors(den_row)), key=lambda t: (common_denominator(t), t))
+    t = _scale(den_rest, row, col)
     d = common_denominator(t)
     A = flint.fmpz_mat(size, size)
     for (r, c), x in entries.items():

@@ -27,12 +27,14 @@ import numbers
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 
+import flint
 import sympy as sp
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError
-from symdecomp.expressions import exact_value
+from symdecomp.expressions import MAX_OFFSET, check_budget, exact_value
 from symdecomp.schemes.lattice import LATTICES, QUAD, Lattice, lattice
 from symdecomp.symbols import Parameter
 from symdecomp.symbols import alpha as ALPHA
@@ -216,6 +218,7 @@ class Scheme:
             raise InvalidSchemeError(
                 f"scheme {self.name!r}: a {self.lattice} 1-ring has no face neighbours b_i; give no b weights"
             )
+        _within_budget(self)
         _to_parameters(self)
         free = {s for w in self.weights() for s in w.free_symbols} - {N}
         declared = set(self.parameters)
@@ -251,13 +254,19 @@ class Scheme:
         """The smallest valence for which the stencil offsets are distinct mod ``n`` (at least 3)."""
         return max(3, self._span + 1)
 
-    def fitting_valence(self, n) -> int:
-        """``n``, checked to be a valence at which the stencils fit (else :class:`InvalidSchemeError`)."""
+    def fitting_valence(self, n, *, real: bool = False) -> int:
+        """``n``, checked to be a valence at which the stencils fit and every weight is defined (else
+        :class:`InvalidSchemeError`); with ``real``, every weight must also be real there (scheme files and the
+        command line ask for real rules; in Python a scheme may have complex weights, e.g. to test a statement)."""
         n = check_valence(n)
         if n < self.minimum_valence():
             raise InvalidSchemeError(f"scheme {self.name!r} has stencils {self._span + 1} wide, wider than the valence n = {n}")
-        _check_defined(self, n)
+        _check_defined(self, n, real=real)
         return n
+
+    def check_values_at(self, n: int, *, real: bool = False, note: str = "") -> None:
+        """Refuse the valence ``n`` if a weight is undefined there (with ``real``: or not real); ``note`` ends the message."""
+        _check_defined(self, check_valence(n), note, real=real)
 
     def substitute(self, values: Mapping[sp.Symbol, object], *, name: str | None = None) -> Scheme:
         """The scheme with some parameters replaced (e.g. tuned vertex weights)."""
@@ -294,6 +303,23 @@ def check_scheme(scheme, argument: str = "scheme") -> Scheme:
     """``scheme`` if it is a :class:`Scheme`, else :class:`~symdecomp.errors.InvalidTypeError` (the check of every
     public function that takes a scheme, run before any cache)."""
     return check_type(scheme, Scheme, argument, hint="catmull_clark(), loop(), load_scheme(NAME_OR_FILE)")
+
+
+def _within_budget(scheme: Scheme) -> None:
+    """Refuse a scheme whose weights or offsets are beyond the expression budget (:data:`symdecomp.expressions.BUDGET`),
+    before anything is computed with them: the API's door, for rules built without :meth:`Stencil.from_weights`."""
+    for label, rule in zip(("edge rule", "face rule"), scheme.stencils()):
+        wide = [k for k in rule.offsets() if abs(k) > MAX_OFFSET]
+        if wide:
+            raise InvalidSchemeError(
+                f"scheme {scheme.name!r}: {label}: offset {wide[0]} is beyond the budget's {MAX_OFFSET} in magnitude (the "
+                f"closed forms are Laurent polynomials in omega of degree 2*offset, and every valence below the stencil's "
+                "width is refused)")
+    try:
+        for w in scheme.weights():
+            check_budget(sp.sympify(w, strict=True), "weight")
+    except InvalidExpressionError as exc:
+        raise InvalidSchemeError(f"scheme {scheme.name!r}: {exc}") from None
 
 
 def _to_parameters(scheme: Scheme) -> None:
@@ -402,19 +428,53 @@ def subdivision_entries(scheme: Scheme, n: int, weight: Callable[[sp.Expr], Any]
 
 
 
-def _check_defined(scheme: Scheme, n: int, note: str = "") -> None:
+def _check_defined(scheme: Scheme, n: int, note: str = "", *, real: bool = False) -> None:
     """Refuse a valence at which a weight of the scheme is undefined (e.g. ``1/(n - 5)`` at ``n = 5``)."""
     for label, rule in zip(("edge rule", "face rule"), scheme.stencils()):
         for w in (rule.center, *(w for _, w in rule.a + rule.b)):
-            _check_weight_at(w, n, f"{scheme.name!r} {label}", note)
+            _check_weight_at(w, n, f"{scheme.name!r} {label}", note, real)
     v = scheme.vertex_rule
     for w in (v.center, v.each_a, v.each_b):
-        _check_weight_at(w, n, f"{scheme.name!r} vertex rule", note)
+        _check_weight_at(w, n, f"{scheme.name!r} vertex rule", note, real)
 
 
-def _check_weight_at(weight: sp.Expr, n: int, where: str, note: str = "") -> None:
-    if N in weight.free_symbols and weight.subs(N, n).has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+@lru_cache(maxsize=1024)
+def _poles(weight: sp.Expr) -> frozenset | None:
+    """The valences at which ``weight`` is undefined, when that is decided once for every ``n`` (else ``None``).
+
+    A weight without radicals or ``I`` is real wherever it is defined (``cos``/``sin`` of rational multiples of
+    ``pi`` included: their arguments have no pole at a valence, see :mod:`symdecomp.expressions`), and undefined
+    exactly where its denominator, a polynomial in ``n`` alone, vanishes: at its positive integer roots, read off
+    the linear factors of FLINT's factorization. Anything else is decided at each valence by substitution.
+    """
+    if (weight.has(sp.I, sp.Piecewise) or any(not p.exp.is_Integer for p in weight.atoms(sp.Pow))
+            or any(not isinstance(f, (sp.cos, sp.sin)) for f in weight.atoms(sp.Function))):
+        return None
+    _, den = sp.fraction(sp.together(weight))
+    if not den.free_symbols <= {N} or den.has(sp.Function) or not den.is_polynomial(N):
+        return None
+    poly = sp.Poly(den, N)
+    scale = sp.ilcm(1, 1, *[sp.Rational(c).q for c in poly.all_coeffs()])
+    integer = flint.fmpz_poly([int(c * scale) for c in reversed(poly.all_coeffs())])
+    roots = set()
+    for factor, _ in integer.factor()[1]:
+        if factor.degree() == 1 and factor[0] % factor[1] == 0 and -factor[0] // factor[1] > 0:
+            roots.add(int(-factor[0] // factor[1]))
+    return frozenset(roots)
+
+
+def _check_weight_at(weight: sp.Expr, n: int, where: str, note: str = "", real: bool = False) -> None:
+    """Refuse a weight that is undefined (``zoo``, ``nan``) at the valence ``n``, or with ``real`` not real there."""
+    poles = _poles(weight)
+    if poles is not None:
+        if n in poles:
+            raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}{note}")
+        return
+    value = weight.subs(N, n) if N in weight.free_symbols else weight
+    if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
         raise InvalidSchemeError(f"{where}: weight {weight} is undefined at valence n = {n}{note}")
+    if real and (value.has(sp.I) or value.is_real is False):
+        raise InvalidSchemeError(f"{where}: weight {weight} is not real at valence n = {n} (it is {value}){note}")
 
 
 def subdivision_matrix(scheme: Scheme, n: int) -> sp.ImmutableMatrix:

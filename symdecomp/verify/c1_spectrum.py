@@ -70,7 +70,6 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_valence
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down", "round_down"]
@@ -393,7 +392,7 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
     regular outer blocks), for any scheme: whether the frequency-1 eigenvalue is the subdominant eigenvalue of
     the 1-ring, which is what the limit and tangent masks need.
     """
-    n = check_valence(n)
+    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     if not one_ring:
         check_applicable(scheme)
     eigen, failure = _frequency_zero(scheme, n)

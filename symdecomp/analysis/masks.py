@@ -181,8 +181,7 @@ class MasksAtValence:
 
 def limit_masks_at(scheme: Scheme, n: int) -> MasksAtValence:
     """Evaluate :func:`limit_masks` at valence ``n`` (exact)."""
-    check_scheme(scheme)
-    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
+    n = check_scheme(scheme).fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     return MasksAtValence(n, limit_masks(scheme))
 
 

@@ -33,7 +33,7 @@ from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value, matr
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -270,7 +270,7 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
     ``exact``: attach exact closed forms to the values (costs a little sympy per value).
     ``jordan``: decide the Jordan structure of repeated values (exact ranks; ``None`` if not asked).
     """
-    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
+    n = check_scheme(scheme).fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     digits = check_digits(digits)
     blocks = ring_blocks(scheme, rings)
     ff = frequency_factors(blocks)

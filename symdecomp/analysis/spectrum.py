@@ -170,8 +170,7 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     ``1/4`` three times) are exact up to that rounding. ``parameters`` gives values for free
     parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
     """
-    check_scheme(scheme)
-    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
+    n = check_scheme(scheme).fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     digits = check_digits(digits)
     subs = parameter_values(scheme, parameters)
     work = digits + 30

@@ -245,8 +245,7 @@ def _less(a, b) -> bool:
 
 def tune(scheme: Scheme, n: int) -> TuningAtValence:
     """Tune the vertex rule of ``scheme`` at valence ``n`` for each condition alone and for both."""
-    check_scheme(scheme)
-    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
+    n = check_scheme(scheme).fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     if scheme.parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters {scheme.parameters}; tune a concrete scheme")
     cond = nice_elliptic_conditions(scheme)

@@ -113,8 +113,7 @@ def sparse_subdivision_matrix(scheme: Scheme, n: int, parameters: Mapping | None
     :func:`symdecomp.schemes.scheme.subdivision_entries` with each weight evaluated exactly
     as a FLINT rational: ``O(n)`` entries, no block structure.
     """
-    check_scheme(scheme)
-    n = scheme.fitting_valence(n)
+    n = check_scheme(scheme).fitting_valence(n)
     subs = parameter_values(scheme, parameters)
     return subdivision_entries(scheme, n, _weight_evaluator(scheme, subs)(n))
 

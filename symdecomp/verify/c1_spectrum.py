@@ -67,7 +67,7 @@ from symdecomp.analysis.characteristic import (
 from symdecomp.analysis.defective import jordan_block_size
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.verify.result import C1Verdict
@@ -392,7 +392,7 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
     regular outer blocks), for any scheme: whether the frequency-1 eigenvalue is the subdominant eigenvalue of
     the 1-ring, which is what the limit and tangent masks need.
     """
-    n = scheme.fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
+    n = check_scheme(scheme).fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     if not one_ring:
         check_applicable(scheme)
     eigen, failure = _frequency_zero(scheme, n)

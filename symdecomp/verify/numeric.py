@@ -191,8 +191,7 @@ def numeric_check(
     (:func:`full_matrix_eigenvalues`). ``solver``: ``"mpmath"`` or ``"flint"`` (:mod:`.arb_numeric`).
     """
     check_scheme(scheme)
-    n = check_valence(n)
-    dps = check_precision(dps)
+    n, dps = check_valence(n), check_precision(dps)
     if _check_solver(solver, eigensolver) == "flint":
         from symdecomp.verify.arb_numeric import arb_numeric_check
 

@@ -19,6 +19,7 @@ nothing else.
                    exact/interval evaluation of expressions (``compile``), the conversions
                    between sympy, Fraction, FLINT and Arb numbers (``numbers``), small exact
                    eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
+                   clusters of enclosures that may overlap (``clusters``),
                    polynomials over a triangle in Bezier form (``triangle_bezier``), signs of
                    rational functions of n for every n (``valence_signs``)
 ``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,

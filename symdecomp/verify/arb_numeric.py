@@ -39,6 +39,7 @@ from collections.abc import Mapping
 import flint
 import mpmath
 
+from symdecomp.algebra.clusters import overlap_groups
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import InvalidInputError
@@ -79,28 +80,12 @@ def gershgorin_clusters(entries: dict, size: int, prec: int) -> list[tuple[list,
         for i in range(size):
             radius = B[i, i].rad() + sum((abs(B[i, j]) for j in range(size) if j != i), flint.arb(0))
             discs.append((flint.acb(B[i, i].mid()), flint.arb(radius.upper())))
-    return [([discs[i] for i in group], len(group)) for group in _components(discs)]
+    return [([discs[i] for i in group], len(group)) for group in overlap_groups(discs, _may_overlap)]
 
 
-def _components(discs) -> list[list[int]]:
-    """Connected components of the discs that may overlap (only certainly disjoint discs are apart)."""
-    parent = list(range(len(discs)))
-
-    def find(i):
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-
-    for i, (ci, ri) in enumerate(discs):
-        for j in range(i + 1, len(discs)):
-            cj, rj = discs[j]
-            if not abs(ci - cj) > ri + rj:
-                parent[find(i)] = find(j)
-    groups: dict[int, list[int]] = {}
-    for i in range(len(discs)):
-        groups.setdefault(find(i), []).append(i)
-    return list(groups.values())
+def _may_overlap(a, b) -> bool:
+    """Whether two discs ``(centre, radius)`` may overlap (only certainly disjoint discs are apart)."""
+    return not abs(a[0] - b[0]) > a[1] + b[1]
 
 
 def _in_disc(v, disc) -> tuple[bool, bool]:

@@ -52,6 +52,7 @@ from typing import ClassVar
 import flint
 import sympy as sp
 
+from symdecomp.algebra.clusters import overlap_groups
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
@@ -348,26 +349,8 @@ def _text(ball, digits):
 
 def _clusters(balls) -> list[list[int]]:
     """Connected components of the overlap graph of the balls (equal values always overlap)."""
-    order = sorted(range(len(balls)), key=lambda i: float(balls[i].real.lower()))
-    parent = list(range(len(balls)))
-
-    def find(i):
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-
-    for a_pos, i in enumerate(order):
-        upper = balls[i].real.upper()
-        for j in order[a_pos + 1 :]:
-            if balls[j].real.lower() > upper:
-                break
-            if balls[i].overlaps(balls[j]):
-                parent[find(i)] = find(j)
-    groups: dict[int, list[int]] = {}
-    for i in range(len(balls)):
-        groups.setdefault(find(i), []).append(i)
-    return list(groups.values())
+    return overlap_groups(balls, lambda a, b: a.overlaps(b), key=lambda b: float(b.real.lower()),
+                          beyond=lambda a, b: b.real.lower() > a.real.upper())
 
 
 def _describe(labels: list[ClosedFormLabel]) -> str:

@@ -1,5 +1,3 @@
-import sys
+from symdecomp.cli import entry
 
-from symdecomp.cli import main
-
-sys.exit(main())
+entry()

@@ -23,6 +23,12 @@ The guarantees of the local pool:
   interpreter, nothing imported) leads a process group that the workers join; it polls its
   parent and kills the whole group when the parent is gone. The group also keeps a terminal's
   Ctrl-C away from the workers: only this process receives it.
+
+:func:`run_killable` gives the whole command the same guarantee: the command line runs in a
+forked child, in a reaper's group, and the first process only waits for it. SIGTERM or Ctrl-C
+there asks the child to stop (SIGTERM: its cleanup runs, workers and temporary files); a child
+still inside a native computation after :data:`GRACE_SECONDS` is killed (SIGKILL), and if the
+first process is killed outright, its reaper kills the child.
 """
 
 from __future__ import annotations
@@ -34,14 +40,19 @@ import signal
 import subprocess
 import sys
 import threading
+import time
 from collections.abc import Callable, Iterable, Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from dataclasses import dataclass
 
 from symdecomp.errors import InvalidInputError, InvalidTypeError
 from symdecomp.validate import check_int
 
-__all__ = ["Executor", "parse_executor", "pool_size", "ordered_map", "LOCAL"]
+__all__ = ["Executor", "parse_executor", "pool_size", "ordered_map", "LOCAL", "run_killable", "GRACE_SECONDS"]
+
+#: Seconds a command gets to stop by itself after SIGTERM or Ctrl-C (its workers, its temporary
+#: files) before it is killed: a native computation (FLINT, Arb) returns to Python only when done.
+GRACE_SECONDS = 3.0
 
 #: Seconds between the reaper's looks at its parent.
 REAPER_POLL = 0.2
@@ -167,8 +178,7 @@ def _local_map(func, items, shared, workers, order):
     from concurrent.futures import ProcessPoolExecutor
     from concurrent.futures.process import BrokenProcessPool
 
-    reaper = subprocess.Popen([sys.executable, "-I", "-S", "-c", _REAPER, str(os.getpid())], process_group=0,
-                              stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    reaper = _start_reaper()
     token = next(_TOKENS)
     _JOBS[token] = (func, shared)
     pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"),
@@ -192,6 +202,72 @@ def _local_map(func, items, shared, workers, order):
         _kill_group(reaper.pid)
         reaper.wait()
         _JOBS.pop(token, None)
+
+
+def _start_reaper() -> subprocess.Popen:
+    """A reaper for this process: a fresh interpreter leading a new process group, which kills the
+    group once this process is gone (processes join it with ``os.setpgid(0, reaper.pid)``)."""
+    return subprocess.Popen([sys.executable, "-I", "-S", "-c", _REAPER, str(os.getpid())], process_group=0,
+                            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+
+def run_killable(func: Callable[[], int]) -> int:
+    """``func()`` (an exit code) computed in a forked child that this process can always stop.
+
+    SIGTERM or SIGINT here sends SIGTERM to the child; if it has not ended :data:`GRACE_SECONDS`
+    later (it is inside a native call, which Python signal handlers cannot interrupt), it is
+    killed, and the exit code is 130. A child killed by anything else (the out-of-memory killer)
+    gives exit code 1 with one line. Without ``fork``, ``func()`` runs here.
+    """
+    if "fork" not in _start_methods():
+        return func()
+    sys.stdout.flush()
+    sys.stderr.flush()
+    reaper = _start_reaper()
+    pid = os.fork()
+    if pid == 0:  # the child: run the command in the reaper's group, then leave without the parent's cleanup
+        code = 1
+        try:
+            os.setpgid(0, reaper.pid)
+            code = func()
+            sys.stdout.flush()
+            sys.stderr.flush()
+        finally:
+            os._exit(code)
+    return _supervise(pid, reaper)
+
+
+def _supervise(pid: int, reaper: subprocess.Popen) -> int:
+    asked: list[float] = []
+
+    def stop(signum, frame):
+        if not asked:
+            asked.append(time.monotonic())
+            with suppress(ProcessLookupError):
+                os.kill(pid, signal.SIGTERM)
+
+    previous = {s: signal.signal(s, stop) for s in (signal.SIGTERM, signal.SIGINT)}
+    try:
+        while True:
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                break
+            if asked and time.monotonic() - asked[0] > GRACE_SECONDS:
+                _kill_group(reaper.pid)  # the child, stuck in a native computation, and the reaper
+            time.sleep(0.02)
+    finally:
+        for s, handler in previous.items():
+            signal.signal(s, handler)
+        _kill_group(reaper.pid)
+        reaper.wait()
+    code = os.waitstatus_to_exitcode(status)
+    if code >= 0:
+        return code
+    if asked:
+        print("symdecomp: interrupted", file=sys.stderr)
+        return 130
+    print(f"symdecomp: error: the command was killed by {signal.Signals(-code).name} (out of memory?)", file=sys.stderr)
+    return 1
 
 
 def _kill_group(group: int) -> None:

@@ -18,7 +18,7 @@ from symdecomp.cli import files as output_files
 from symdecomp.cli import main
 from symdecomp.cli.check_cmd import check_valences
 from symdecomp.errors import InvalidInputError, InvalidValenceError, SymdecompError
-from symdecomp.parallel import Executor, ordered_map, parse_executor, pool_size
+from symdecomp.parallel import GRACE_SECONDS, Executor, ordered_map, parse_executor, pool_size, run_killable
 
 ROOT = Path(__file__).resolve().parents[1]
 CPUS = os.cpu_count() or 1
@@ -194,7 +194,9 @@ def _alive(pid: int) -> bool:
 
 
 def _start_with_pool(argv, tmp_path, processes: int = 3):
-    """The command, once its pool is up: two workers and the reaper (local), or a cluster's processes (Dask)."""
+    """The command, once its pool is up: two workers and the reaper (local), or a cluster's processes (Dask);
+    above them, the program's own reaper and the child that runs the command (``run_killable``)."""
+    processes += 2
     proc = subprocess.Popen([sys.executable, "-m", "symdecomp", *argv], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                             text=True, cwd=tmp_path, env={**os.environ, "PYTHONPATH": str(ROOT)}, process_group=0)
     deadline = time.monotonic() + 120
@@ -218,7 +220,7 @@ def _gone_within(pids, seconds: float) -> list[int]:
 COMMANDS = {
     "check": ["check", "--n", "3:400", "--certify", "--jobs", "2"],
     "evaldata": ["evaldata", "--n", "3:400", "--out", "cc.dat", "--jobs", "256"],
-    "c1": ["c1", "--n", "3:128", "--jobs", "2"],
+    "c1": ["c1", "--n", "3:2000", "--jobs", "2"],
     "check on dask": ["check", "--n", "3:400", "--certify", "--jobs", "2", "--executor", "dask"],
 }
 
@@ -271,3 +273,41 @@ def test_the_workers_of_a_killed_command_die_within_a_second_or_two(command, tmp
     proc.kill()
     proc.wait()
     assert _gone_within(processes, 3) == []
+
+
+def _killable_command(tmp_path):
+    """``charpoly 300``: one FLINT call of many seconds, which no Python signal handler interrupts."""
+    proc = subprocess.Popen([sys.executable, "-m", "symdecomp", "charpoly", "300"], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE, text=True, cwd=tmp_path, env={**os.environ, "PYTHONPATH": str(ROOT)})
+    time.sleep(4)  # inside the native characteristic polynomial now
+    assert proc.poll() is None, proc.stderr.read()
+    return proc, _descendants(proc.pid)
+
+
+@linux
+@pytest.mark.slow
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT])
+def test_a_native_computation_is_stopped_within_the_grace_period(signum, tmp_path):
+    """Issue 25: SIGTERM waited for FLINT to return (minutes); the program now kills the command's process."""
+    proc, processes = _killable_command(tmp_path)
+    sent = time.monotonic()
+    proc.send_signal(signum)
+    assert proc.wait(timeout=30) == 130
+    assert time.monotonic() - sent < GRACE_SECONDS + 2
+    assert proc.stderr.read() == "symdecomp: interrupted\n"
+    assert _gone_within(processes, 2) == []
+
+
+@linux
+@pytest.mark.slow
+def test_killing_the_program_kills_the_command(tmp_path):
+    proc, processes = _killable_command(tmp_path)
+    proc.kill()
+    proc.wait()
+    assert len(processes) == 2 and _gone_within(processes, 3) == []  # its reaper and the command's process
+
+
+def test_run_killable_returns_the_exit_code_and_names_a_killing_signal(capsys):
+    assert run_killable(lambda: 3) == 3
+    assert run_killable(lambda: os.kill(os.getpid(), signal.SIGKILL)) == 1
+    assert "killed by SIGKILL" in capsys.readouterr().err

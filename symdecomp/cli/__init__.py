@@ -8,7 +8,8 @@ Exit codes (also in ``symdecomp --help`` and the README):
      be written after its path was checked: a full disk, an I/O error; reported in one line)
 2    bad input: the message names the argument and the problem
 3    an optional component is missing (the OpenSubdiv bridge); the message says how to get it
-130  interrupted (Ctrl-C or SIGTERM); worker processes are stopped with the command
+130  interrupted (Ctrl-C or SIGTERM), within seconds even inside a native computation; worker
+     processes are stopped with the command
 ===  =====================================================================================
 
 No traceback is ever printed: every error is one line on stderr.
@@ -27,7 +28,7 @@ import sys
 from symdecomp.cli.common import LIMITS, Parser, check_scheme_valences
 from symdecomp.errors import InternalError, OutputWriteError, ResourceLimitError, SymdecompError, UnavailableError
 
-__all__ = ["main", "build_parser", "EXIT_CODES"]
+__all__ = ["main", "entry", "build_parser", "EXIT_CODES"]
 
 #: Subcommand modules of this package, in the order ``--help`` lists them.
 COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd", "c1_cmd", "evaldata_cmd")
@@ -88,6 +89,15 @@ def _silence_stdout() -> None:
         os.dup2(devnull, sys.stdout.fileno())
     except (OSError, ValueError):
         pass
+
+
+def entry() -> None:
+    """The ``symdecomp`` program: :func:`main` in a child process that SIGTERM or Ctrl-C can always
+    stop, within :data:`~symdecomp.parallel.GRACE_SECONDS`, even inside a native computation
+    (:func:`~symdecomp.parallel.run_killable`)."""
+    from symdecomp.parallel import run_killable
+
+    sys.exit(run_killable(main))
 
 
 def main(argv=None) -> int:

@@ -228,7 +228,11 @@ def run_killable(func: Callable[[], int]) -> int:
     if pid == 0:  # the child: run the command in the reaper's group, then leave without the parent's cleanup
         code = 1
         try:
-            os.setpgid(0, reaper.pid)
+            try:
+                os.setpgid(0, reaper.pid)
+            except OSError as exc:  # the reaper is gone: the program is stopping
+                print(f"symdecomp: error: cannot start the command ({exc.strerror or exc})", file=sys.stderr)
+                raise
             code = func()
             sys.stdout.flush()
             sys.stderr.flush()

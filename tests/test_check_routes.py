@@ -186,6 +186,7 @@ def test_the_default_solver_hands_what_flint_leaves_undecided_to_mpmath():
     """The command's default: flint, then mpmath for a valence flint cannot decide; the row names the solver that decided."""
     (row,) = check_valences(JORDAN, [5], certified=False, dps=30, solver="auto", show_progress=False)
     assert row.ok and row.solver == "mpmath (flint undecided)"
+    assert numeric_check(JORDAN, 5, dps=30, solver="auto").solver == "mpmath (flint undecided)"  # the API's the same
     (row,) = check_valences(catmull_clark(), [5], certified=False, dps=30, solver="auto", show_progress=False)
     assert row.ok and row.solver == "flint"
 

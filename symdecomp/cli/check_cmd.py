@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import time
-from dataclasses import replace
 
 import mpmath
 
@@ -88,13 +87,7 @@ def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpol
         if method == "structure":
             return certify_structural(scheme, n, closed_forms=closed_forms)
         return certify(scheme, n, closed_forms=closed_forms)
-    if solver != "auto":
-        return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver=solver)
-    first = numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver="flint")
-    if first.status is not CrossCheckStatus.UNDECIDED:
-        return first
-    # a cluster the certified enclosures cannot separate (a Jordan block): mpmath matches it by its mean
-    return replace(numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver="mpmath"), solver="mpmath (flint undecided)")
+    return numeric_check(scheme, n, dps=dps, closed_forms=closed_forms, solver=solver)
 
 
 def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, closed_forms: ClosedForms | None = None,

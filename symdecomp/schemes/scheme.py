@@ -202,7 +202,7 @@ class Scheme:
 
     def __post_init__(self):
         _check_parts(self)
-        if not isinstance(self.name, str) or not self.name.strip() or not self.name.isprintable():
+        if not self.name.strip() or not self.name.isprintable():  # a str: _check_parts
             # a name is shown in terminals and typeset in documents: one line of text, no control characters
             raise InvalidSchemeError(f"scheme name must be a non-empty line of printable text, got {self.name!r}")
         try:

@@ -26,7 +26,7 @@ more than the requested ``dps`` digits. They are matched with the closed-form ei
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import ClassVar
 
 import mpmath
@@ -188,14 +188,14 @@ def numeric_check(
     ``dps``: the closed forms must agree to this many digits. ``closed_forms``: the closed
     forms under test (default: the derived ones; tests pass a wrong one). ``max_dps``: the highest
     working precision tried (default ``4 * dps + 40``). ``eigensolver``: replaces ``mpmath.eig``
-    (:func:`full_matrix_eigenvalues`). ``solver``: ``"mpmath"`` or ``"flint"`` (:mod:`.arb_numeric`).
+    (:func:`full_matrix_eigenvalues`). ``solver``: ``"mpmath"``, ``"flint"`` (:mod:`.arb_numeric`) or ``"auto"`` (flint, and mpmath if flint
+    leaves the valence undecided; the result's ``solver`` says which decided).
     """
     check_scheme(scheme)
     n, dps = check_valence(n), check_precision(dps)
-    if _check_solver(solver, eigensolver) == "flint":
-        from symdecomp.verify.arb_numeric import arb_numeric_check
-
-        return arb_numeric_check(scheme, n, dps=dps, parameters=parameters, closed_forms=closed_forms, max_dps=max_dps)
+    solver = _check_solver(solver, eigensolver)
+    if solver != "mpmath":
+        return _arb_route(scheme, n, solver, dps=dps, parameters=parameters, closed_forms=closed_forms, max_dps=max_dps)
     if max_dps is not None:
         max_dps = check_precision(max_dps, "max_dps", maximum=4 * MAX_DPS + 40)
     _check_solve_memory(2 * n + 1, max_dps or 4 * dps + 40)
@@ -234,10 +234,21 @@ def numeric_check(
     return _not_converged(scheme, n, dps, tuple(precisions), matches, max_dps, reference)
 
 
+def _arb_route(scheme, n, solver, **options) -> NumericCheck:
+    """The flint route; with ``solver="auto"``, mpmath where flint leaves the valence undecided."""
+    from symdecomp.verify.arb_numeric import arb_numeric_check
+
+    first = arb_numeric_check(scheme, n, **options)
+    if solver == "flint" or first.status is not CrossCheckStatus.UNDECIDED:
+        return first
+    # a cluster the enclosures cannot separate (a Jordan block): mpmath matches it by its mean
+    return replace(numeric_check(scheme, n, **options), solver="mpmath (flint undecided)")
+
+
 def _check_solver(solver, eigensolver) -> str:
-    if solver not in ("mpmath", "flint"):
-        raise InvalidInputError(f"solver: expected 'mpmath' or 'flint', got {solver!r}")
-    if solver == "flint" and eigensolver is not None:
+    if solver not in ("mpmath", "flint", "auto"):
+        raise InvalidInputError(f"solver: expected 'mpmath', 'flint' or 'auto', got {solver!r}")
+    if solver != "mpmath" and eigensolver is not None:
         raise InvalidInputError("eigensolver: replaces mpmath.eig, so it needs solver='mpmath'")
     return solver
 

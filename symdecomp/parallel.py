@@ -281,6 +281,9 @@ def _kill_group(group: int) -> None:
         pass
 
 
+_SILENT = 60  # above logging.CRITICAL (50): nothing passes
+
+
 def _dask_call(func, shared, item):
     return func(item, **shared)
 
@@ -292,17 +295,20 @@ def _dask_map(func, items, shared, spec, workers, order):
 
 @contextmanager
 def _quiet_logs(*names):
+    """Silence these loggers, CRITICAL included (a closing scheduler logs its lost comms as CRITICAL).
+
+    They are restored when the work ends normally; an interrupted run leaves them silent, since the
+    scheduler's threads may still log while the interpreter stops.
+    """
     import logging
 
     loggers = [logging.getLogger(name) for name in names]
     levels = [logger.level for logger in loggers]
     for logger in loggers:
-        logger.setLevel(logging.CRITICAL)
-    try:
-        yield
-    finally:
-        for logger, level in zip(loggers, levels):
-            logger.setLevel(level)
+        logger.setLevel(_SILENT)
+    yield
+    for logger, level in zip(loggers, levels):
+        logger.setLevel(level)
 
 
 def _dask_run(func, items, shared, spec, workers, order):
@@ -328,14 +334,12 @@ def _dask_run(func, items, shared, spec, workers, order):
 
 def _dask_client(spec: Executor, workers: int, opened: list):
     """A connected ``distributed.Client`` (appended to ``opened``, after the ``LocalCluster`` started for it, if any)."""
-    import logging
-
     from distributed import Client, LocalCluster
 
     if spec.address is None:
         # ":0": any free port for its HTTP server (8787, the default, may be another cluster's)
         opened.append(LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0",
-                                   silence_logs=logging.CRITICAL))
+                                   silence_logs=_SILENT))
         opened.append(Client(opened[-1]))
         return opened[-1]
     try:

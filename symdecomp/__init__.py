@@ -2,9 +2,9 @@
 
 Implements and checks I.P. Ivrissimtzis, R. Zayer, H.-P. Seidel, *Polygonal decompositions of
 quadrilateral subdivision meshes*. The package is layered; each folder imports only from the
-ones above it in this list (``tests/test_layers.py`` checks it). This table is the one map of the
+ones above it in this list (``tests/project/test_layers.py`` checks it). This table is the one map of the
 package: it names every module (a folder's modules relative to the folder; the subpackages'
-docstrings point here), and ``tests/test_layers.py`` checks that it names every module and
+docstrings point here), and ``tests/project/test_layers.py`` checks that it names every module and
 nothing else.
 
 =================  ===========================================================================

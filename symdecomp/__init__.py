@@ -33,7 +33,9 @@ nothing else.
                    (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML
                    files and by name (``files``), Loop's scheme (``loop``), Stam's patch
                    matrices, (2N+8)-point and Loop's (N+6)-point (``patch``), the regular Loop
-                   patch (quartic box spline) in Bezier form (``box_spline``)
+                   patch (quartic box spline) in Bezier form (``box_spline``), a modeller's polygon
+                   mesh validated with its 1-rings and extraordinary vertices (``meshfile``), read
+                   and written as OBJ, OFF and PLY (``meshformats``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
                    spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
@@ -112,6 +114,8 @@ from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdi
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
 from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
+from symdecomp.schemes.meshfile import PolygonMesh, scheme_for_mesh
+from symdecomp.schemes.meshformats import decode_mesh, encode_mesh, read_mesh
 from symdecomp.schemes.patch import patch_matrices
 from symdecomp.schemes.refinement import central_rings, mesh_rules, refine
 from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
@@ -176,6 +180,12 @@ __all__ = [
     "central_rings",
     "Region",
     "classify_support",
+    # a modeller's mesh files (issue 22)
+    "PolygonMesh",
+    "read_mesh",
+    "decode_mesh",
+    "encode_mesh",
+    "scheme_for_mesh",
     # any scheme (triangle meshes, Loop) and K-ring matrices
     "Lattice",
     "QUAD",

@@ -50,7 +50,9 @@ nothing else.
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
                    (``ring_charpoly``), masks (``ring_masks``); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
-                   ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``)
+                   ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``); the
+                   extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
+                   (``inspection``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -71,12 +73,14 @@ nothing else.
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
                    ``texlayout``), Stam's data file (``evaldata``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
-                   (``plotting.elliptic``), 6 (``plotting.cbmatrix``), Reif's test
+                   (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
+                   vertices (``plotting.meshes``), Reif's test
                    (``plotting.characteristic``), Stam's evaluation (``plotting.evaldata``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
-                   ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``),
+                   ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``,
+                   ``inspect_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``)
 ``__main__``       python -m symdecomp: the command line

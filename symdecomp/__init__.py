@@ -102,6 +102,7 @@ from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_con
 from symdecomp.analysis.evaluation import PatchEvaluator
 from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
+from symdecomp.analysis.inspection import MeshInspection, VertexInspection, inspect_mesh, inspect_vertex
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
@@ -190,6 +191,10 @@ __all__ = [
     "decode_mesh",
     "encode_mesh",
     "scheme_for_mesh",
+    "inspect_mesh",
+    "inspect_vertex",
+    "MeshInspection",
+    "VertexInspection",
     # any scheme (triangle meshes, Loop) and K-ring matrices
     "Lattice",
     "QUAD",

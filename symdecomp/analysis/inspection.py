@@ -50,7 +50,7 @@ import sympy as sp
 from symdecomp.algebra.polygons import coplanar_pairs, decompose
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.errors import InternalError, InvalidMeshError
+from symdecomp.errors import InternalError, InvalidMeshError, NotApplicableError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_valence
@@ -132,6 +132,8 @@ def position_weights(scheme: Scheme, n: int) -> tuple[sp.Expr, ...]:
     # columns 1..K-1 of y (E0 - I) = 0 with y_0 = 1; column 0 then holds too (the rows of E0 sum to 1)
     system = sp.Matrix([[E0[r, c] for r in range(1, K)] for c in range(1, K)])
     rhs = sp.Matrix([-E0[0, c] for c in range(1, K)])
+    if sp.simplify(system.det()) == 0:
+        raise NotApplicableError(f"{scheme.name} at valence {n}: the eigenvalue 1 is not simple, so no limit position mask is defined")
     y = [sp.Integer(1)] + [sp.radsimp(sp.simplify(x)) for x in system.LUsolve(rhs)]
     if sp.simplify(sum((y[r] * E0[r, 0] for r in range(K)), sp.Integer(0))) != 0:
         raise InternalError(f"{scheme.name}, n = {n}: the position mask does not solve y E_0 = y")

@@ -9,6 +9,10 @@ the size of the tangent-plane part (n-gon frequency 1), the elliptic heights (fr
 of the ``a_i`` and ``b_i`` above the tangent plane through ``O``) and the hyperbolic part (frequency 2)
 with its share off the tangent plane. Boundary vertices are counted and skipped.
 
+Exit status 1 (with a line on stderr) when at some valence of the mesh ``lambda_1`` is not certified to be the
+subdominant eigenvalue of the 1-ring (as ``symdecomp masks N`` decides): the normals there are not a tangent
+plane's. A scheme whose eigenvalue 1 is not simple at a valence of the mesh has no limit position there: exit 2.
+
 The scheme: ``--scheme`` (a name or a TOML file), else Catmull-Clark for a mesh of quads and Loop for a mesh
 of triangles; a mesh with other faces is refused with the reason (split it into quads first, e.g. with
 :meth:`~symdecomp.schemes.meshfile.PolygonMesh.split_into_quads`).
@@ -16,7 +20,8 @@ of triangles; a mesh with other faces is refused with the reason (split it into 
 JSON (``--json``): ``{"mesh", "scheme", "vertices": V, "faces": F, "skipped_boundary": [...], "extraordinary":
 [{"vertex", "valence", "ring", "limit_exact": ["x", "y", "z"], "limit": [x, y, z], "normal", "tangents",
 "tangent_size", "tangent_off_plane", "elliptic_heights", "hyperbolic_size", "hyperbolic_off_plane",
-"rest_size", "components": [{"frequencies", "ngon_frequency", "radii", "size", "off_plane"}]}]}``; numbers
+"rest_size", "components": [{"frequencies", "ngon_frequency", "radii", "size", "off_plane"}]}], "subdominance":
+{"N": {"certified", "why"}}}``; numbers
 are doubles, ``limit_exact`` exact (sympy text).
 
 ``--figures DIR`` writes ``vertex-<index>.png`` per extraordinary vertex (the 1-ring in the tangent plane
@@ -32,6 +37,8 @@ import sys
 from symdecomp.analysis.inspection import inspect_mesh
 from symdecomp.cli.common import Once, flag, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_directory, replace_owned_files
+from symdecomp.cli.masks_cmd import lambda_1_subdominance
+from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.meshfile import scheme_for_mesh
 from symdecomp.schemes.meshformats import FORMATS, read_mesh
 
@@ -102,19 +109,38 @@ def _figures(args, mesh, result) -> None:
     replace_owned_files(args.figures, files, _OWNED, "--figures")
 
 
+def _subdominance(mesh, scheme) -> dict[int, tuple[bool, str]]:
+    """Per valence of an extraordinary vertex: whether ``lambda_1`` is certified subdominant (the normal is a tangent plane's)."""
+    out = {}
+    for n in sorted({mesh.valence(v) for v in mesh.extraordinary_vertices(scheme.lattice)}):
+        certified, why, one_simple = lambda_1_subdominance(scheme, n)
+        if not one_simple:
+            raise NotApplicableError(f"{mesh.name}: {scheme.name} at valence {n}: {why}; no limit position is defined there")
+        out[n] = (certified, why)
+    return out
+
+
 def run(args) -> int:
     if args.figures is not None:
         check_output_directory(args.figures, "--figures")
     mesh = read_mesh(args.mesh, args.format)
     scheme = args.scheme if args.scheme is not None else scheme_for_mesh(mesh)
+    mesh.require_lattice(scheme.lattice, scheme.name)
+    subdominant = _subdominance(mesh, scheme)
     result = inspect_mesh(mesh, scheme, progress=lambda xs, total: progress(xs, total, "inspect"))
     if args.figures is not None:
         _figures(args, mesh, result)
     if args.json:
-        print_json(_json(mesh, result))
+        data = _json(mesh, result)
+        data["subdominance"] = {str(n): {"certified": c, "why": why} for n, (c, why) in subdominant.items()}
+        print_json(data)
     else:
         _print_table(mesh, result)
     if result.skipped_boundary and not args.json:
         print(f"note: boundary vertices are not analysed (boundary rules are a later issue): {len(result.skipped_boundary)} skipped",
               file=sys.stderr)
-    return 0
+    for n, (certified, why) in subdominant.items():
+        if not certified:
+            print(f"symdecomp inspect: at valence {n} lambda_1 is not certified the subdominant eigenvalue ({why}); the normals "
+                  "there are the tangent masks' cross product, not a tangent plane's", file=sys.stderr)
+    return 0 if all(c for c, _ in subdominant.values()) else 1

@@ -145,3 +145,17 @@ def test_a_user_sees_no_traceback(tmp_path):
     run = subprocess.run([sys.executable, "-m", "symdecomp", "inspect", str(bad)], capture_output=True, text=True, cwd=ROOT)
     assert run.returncode == 2 and run.stdout == ""
     assert run.stderr == "symdecomp: error: fin.obj: edge (0, 1) is shared by 3 faces [0, 2, 6] (non-manifold edge)\n"
+
+
+def test_a_scheme_without_a_tangent_plane_or_a_limit_is_said_so(capsys):
+    corpus = ROOT / "tests" / "corpus"
+    assert main(["inspect", str(MODEL), "--scheme", str(corpus / "double-one.toml")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "double-one at valence 3: the eigenvalue 1 is not simple" in err
+    # a subdominant eigenvalue at frequency 2 (valence 5): rows printed, exit 1, one line per valence on stderr
+    assert main(["inspect", str(MODEL), "--scheme", str(corpus / "negative-other-root.toml")]) == 1
+    out, err = capsys.readouterr()
+    assert len(out.splitlines()) == 2 + 13
+    assert [line.split(" (")[0] for line in err.splitlines()] == [
+        "symdecomp inspect: at valence 5 lambda_1 is not certified the subdominant eigenvalue",
+        "symdecomp inspect: at valence 6 lambda_1 is not certified the subdominant eigenvalue"]

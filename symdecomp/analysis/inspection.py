@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 import sympy as sp
@@ -161,10 +162,7 @@ def inspect_vertex(mesh: PolygonMesh, vertex: int, scheme: Scheme) -> VertexInsp
     ids = (ring[0],) + tuple(x for part in ring[1:] for x in part)
     n = len(ring[1])
     scheme.fitting_valence(n)
-    exact = [tuple(sp.Rational(c.numerator, c.denominator) for c in mesh.points[v]) for v in ids]
-    weights = position_weights(scheme, n)
-    per_vertex = (weights[0],) + tuple(w for w in weights[1:] for _ in range(n))
-    limit_exact = tuple(sp.radsimp(sum((w * p[c] for w, p in zip(per_vertex, exact)), sp.Integer(0))) for c in range(3))
+    limit_exact = _exact_limit(mesh, ring, position_weights(scheme, n))
     points = np.array([[float(c) for c in mesh.points[v]] for v in ids])
     t1, t2 = (tuple(float(x) for x in w @ points) for w in _tangent_weights(scheme, n))
     cross = np.cross(t1, t2)
@@ -173,6 +171,20 @@ def inspect_vertex(mesh: PolygonMesh, vertex: int, scheme: Scheme) -> VertexInsp
     parts = _decomposition(points, n, np.array(normal) if normal else np.zeros(3))
     return VertexInspection(vertex=int(vertex), valence=n, ring=ids, limit_exact=limit_exact,
                             limit=tuple(float(sp.N(x, 20)) for x in limit_exact), tangents=(t1, t2), normal=normal, **parts)
+
+
+def _exact_limit(mesh: PolygonMesh, ring: tuple, weights: tuple) -> tuple:
+    """``w_O O + sum_q w_q (sum of the class-q points)``: the sums in exact rationals, one product per class."""
+    def rational(x: Fraction) -> sp.Rational:
+        return sp.Rational(x.numerator, x.denominator)
+
+    groups = [(ring[0],)] + [tuple(part) for part in ring[1:]]
+    sums = [[sum((mesh.points[v][c] for v in group), Fraction(0)) for c in range(3)] for group in groups]
+    limit = []
+    for c in range(3):
+        total = sum((w * rational(s[c]) for w, s in zip(weights, sums)), sp.Integer(0))
+        limit.append(total if total.is_Rational else sp.radsimp(total))
+    return tuple(limit)
 
 
 def _decomposition(points: np.ndarray, n: int, normal: np.ndarray) -> dict:

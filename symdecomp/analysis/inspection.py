@@ -36,7 +36,7 @@ subdominant eigenvalue has no tangent plane there (``symdecomp masks N`` says wh
 ...     [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)])
 >>> r = inspect_vertex(cube, 0, catmull_clark())
 >>> r.limit_exact, [round(c, 12) for c in r.normal]      # the corner's limit, and the outward normal
-((5/8, 5/8, 5/8), [-0.57735026919, -0.57735026919, -0.57735026919])
+((1/2, 1/2, 1/2), [-0.57735026919, -0.57735026919, -0.57735026919])
 """
 
 from __future__ import annotations

@@ -15,6 +15,7 @@ import os
 import re
 import sys
 
+from symdecomp.claims.applicability import closed_form_obstacle
 from symdecomp.errors import InvalidInputError, SymdecompError
 from symdecomp.parallel import parse_executor
 from symdecomp.schemes.files import SCHEMES, load_scheme
@@ -263,20 +264,6 @@ def refuse_non_quad(scheme: Scheme, command: str) -> None:
             f"a {scheme.lattice}-mesh "
             "scheme is analysed by spectrum, check, charpoly, masks, oracle, c1 and evaldata"
         )
-
-
-def closed_form_obstacle(scheme: Scheme) -> str | None:
-    """Why the paper's closed forms in ``c = cos(j pi/n)`` (Section 5) do not apply to ``scheme`` (``None`` when they do).
-
-    They need a quad scheme with mirror-symmetric rules, so that ``M_j`` depends on ``c`` alone.
-    """
-    from symdecomp.claims.applicability import MIRROR_SYMMETRIC
-
-    if scheme.lattice != PAPER_LATTICE:
-        return f"they are derived for {PAPER_LATTICE} meshes, not {scheme.lattice} meshes"
-    if MIRROR_SYMMETRIC.unmet(scheme) is not None:
-        return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"
-    return None
 
 
 def check_scheme_valences(args) -> None:

@@ -21,14 +21,11 @@ from __future__ import annotations
 
 import sys
 
-import sympy as sp
-
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.analysis.tangent import complex_at
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
 from symdecomp.errors import SymdecompError
-from symdecomp.symbols import cos_jtheta
 from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
@@ -62,12 +59,6 @@ def _subdominance(args) -> tuple[bool, str, bool]:
     if r.status is C1Verdict.C1:
         return False, f"the subdominant eigenvalue is at frequency {r.subdominant.frequency}, not 1: {r.reason}", True
     return False, r.reason, r.one_simple
-
-
-def _complex_lambda_1(scheme, n: int) -> bool:
-    """``M_1`` has complex eigenvalues at valence ``n``: its discriminant is negative at ``c = cos(pi/n)`` (decided exactly)."""
-    disc = tangent_eigenvalues(scheme).discriminant.subs(cos_jtheta, sp.cos(sp.pi / n))
-    return bool(disc.is_negative)
 
 
 def _header(args, data, certified: bool, why: str) -> str:
@@ -104,7 +95,7 @@ def run(args) -> int:
               "tangent masks", file=sys.stderr)
         return 1
     # no closed forms (or real closed forms for a complex lambda_1): the any-scheme route, from Arb balls
-    if general_path(args) or closed_form_obstacle(args.scheme) or _complex_lambda_1(args.scheme, args.n):
+    if general_path(args) or closed_form_obstacle(args.scheme) or complex_at(args.scheme, args.n):
         return _run_general(args, certified, why)
     data = limit_masks_at(args.scheme, args.n).as_json(args.digits)
     if args.json:

@@ -274,7 +274,7 @@ def c1_section(inp: ReportInput) -> Section:
         rows.append((str(n), str(r.verdict), "-" if lam is None else f"{lam:.{DIGITS}g}",
                      "-" if r.winding_number is None else str(r.winding_number), Verbatim(r.reason)))
     return Section("C1 at the extraordinary vertex", (
-        _para("Reif's sufficient test, certified in interval arithmetic: ", Verbatim(inp.scheme.lattice.c1_method), "."),
+        _para("Certified in interval arithmetic. ", Verbatim(inp.scheme.lattice.c1_method), "."),
         Table(("$n$", "verdict", "$\\lambda$", "winding", "reason"), tuple(rows), (0.05, 0.1, 0.14, 0.08, 0.63)),
     ))
 

@@ -45,7 +45,7 @@ _COMMANDS = {
     "omega": "ω", "Omega": "Ω", "Delta": "Δ", "Lambda": "Λ", "Sigma": "Σ", "infty": "∞", "to": "→",
     "times": "×", "cdot": "·", "leq": "≤", "geq": "≥", "le": "≤", "ge": "≥", "neq": "≠", "pm": "±", "dots": "…",
     "ldots": "…", "cdots": "⋯", "in": "∈", "approx": "≈", "cos": "cos", "sin": "sin", "sqrt": "√", ",": " ",
-    ";": " ", "quad": " ", "{": "{", "}": "}",
+    ";": " ", "{": "{", "}": "}",
 }
 
 _TOKEN = re.compile(r"\\([A-Za-z]+|.)|([_^])|(\{)|(\})|([^\\_^{}]+)", re.S)

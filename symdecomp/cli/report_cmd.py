@@ -18,7 +18,7 @@ from pathlib import Path
 
 from symdecomp.cli.common import LIMITS, Once, add_budget_option, progress, scheme_by_name, valence_range
 from symdecomp.cli.files import check_output_file, write_output_file
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import InvalidInputError, UnavailableError
 
 __all__ = ["register", "run", "FORMATS"]
 
@@ -67,6 +67,7 @@ def run(args: argparse.Namespace) -> int:
 
     fmt = _format(args.out)
     out = check_output_file(args.out)
+    _require_matplotlib()
     if fmt == ".pdf":
         from symdecomp.output.report_tex import require_pdflatex
 
@@ -90,6 +91,16 @@ def run(args: argparse.Namespace) -> int:
             write_output_file(out, _with_figure_names(tex, out, figures))
     print(out)
     return 0
+
+
+def _require_matplotlib() -> None:
+    """The figures need matplotlib: without it, one line saying how to get it (exit status 3), before the work."""
+    from symdecomp.output.plotting._mpl import require_matplotlib
+
+    try:
+        require_matplotlib()
+    except ImportError:
+        raise UnavailableError("the report's figures need matplotlib; install it with  pip install 'symdecomp[report]'") from None
 
 
 def _with_figure_names(tex: str, out: Path, figures) -> str:

@@ -108,3 +108,14 @@ def test_tex_with_figures_next_to_it(tmp_path):
     figures = sorted(p.name for p in tmp_path.iterdir() if p.suffix == ".pdf")
     assert figures == ["my_report__x_-characteristic-map.pdf", "my_report__x_-eigen-polygons.pdf"]
     assert all("\\includegraphics[width=\\linewidth,height=0.4\\textheight,keepaspectratio]{%s}" % f in tex for f in figures)
+
+
+def test_missing_matplotlib_is_one_line_exit_3(capsys, tmp_path, monkeypatch):
+    def missing():
+        raise ImportError("no matplotlib")
+
+    monkeypatch.setattr("symdecomp.output.plotting._mpl.require_matplotlib", missing)
+    monkeypatch.setattr("symdecomp.output.report.build_report", lambda *a, **k: pytest.fail("the work started"))
+    assert main(["report", "loop", "--n", "3", "--out", str(tmp_path / "r.html")]) == 3
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "symdecomp[report]" in err

@@ -87,9 +87,10 @@ def _twice(tmp_path: Path, argv: list[str], suffix: str) -> bytes:
 
 @pytest.mark.slow
 @needs_pdflatex
-@pytest.mark.parametrize("scheme", ["catmull-clark", "loop", str(CORPUS / "lopsided.toml")], ids=["catmull-clark", "loop", "file"])
-def test_pdf_twice_the_same_bytes(scheme, tmp_path):
-    pdf = _twice(tmp_path, [scheme, "--n", "3:8"], ".pdf")
+@pytest.mark.parametrize("scheme, valences", [("catmull-clark", "3:8"), ("loop", "3:8"), (str(CORPUS / "lopsided.toml"), "4:8")],
+                         ids=["catmull-clark", "loop", "file"])
+def test_pdf_twice_the_same_bytes(scheme, valences, tmp_path):
+    pdf = _twice(tmp_path, [scheme, "--n", valences], ".pdf")
     assert pdf.startswith(b"%PDF") and b"CreationDate" not in pdf and str(tmp_path).encode() not in pdf
     assert b"/ID [<> <>]" in pdf or b"/ID" not in pdf
 

@@ -40,7 +40,7 @@ from symdecomp.analysis.tangent import complex_at, tangent_eigenvalues
 from symdecomp.claims import Status, Verbatim, all_claims, check_claim, scope_summary
 from symdecomp.claims.applicability import closed_form_obstacle
 from symdecomp.claims.guards import DEFAULT_BUDGET
-from symdecomp.errors import InvalidInputError, SymdecompError
+from symdecomp.errors import InvalidInputError, NotApplicableError, SymdecompError
 from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_valence
@@ -268,6 +268,10 @@ def masks_section(inp: ReportInput) -> Section:
 def c1_section(inp: ReportInput) -> Section:
     """Reif's test for C1 at each valence (``symdecomp c1 --n A:B``)."""
     rows = []
+    try:
+        c1_test(inp.scheme, inp.valences[0])
+    except NotApplicableError as exc:  # not a regular spline the test knows: the section says why, as the command does
+        return Section("C1 at the extraordinary vertex", (_para("Not applicable: ", Verbatim(str(exc))),))
     for n in inp.valences:
         r = c1_test(inp.scheme, n)
         lam = r.as_json()["lambda"]
@@ -297,10 +301,15 @@ def figures_section(inp: ReportInput) -> Section:
     from symdecomp.output.plotting.tangent import invariant_ring_figure
 
     shown, name = _shown(inp.valences), _name(inp)
-    blocks = [Figure("characteristic-map", ("The characteristic map of ", name, " at the valences "
-                                            f"{', '.join(map(str, shown))}: the ring at level 1, its inner boundary "
-                                            "(thick) and the sector boundaries (dashed); each panel gives the verdict."),
-                     _titled(characteristic_map_figure(inp.scheme, shown, samples=5), "Characteristic map"))]
+    try:
+        characteristic = characteristic_map_figure(inp.scheme, shown, samples=5)
+    except NotApplicableError as exc:
+        blocks = [_para("No characteristic map: ", Verbatim(str(exc)))]
+    else:
+        blocks = [Figure("characteristic-map", ("The characteristic map of ", name, " at the valences "
+                                                f"{', '.join(map(str, shown))}: the ring at level 1, its inner boundary "
+                                                "(thick) and the sector boundaries (dashed); each panel gives the verdict."),
+                         _titled(characteristic, "Characteristic map"))]
     ends = tuple(sorted({inp.valences[0], inp.valences[-1]}))
     blocks.append(Figure("eigen-polygons", ("The eigen-polygons $v_k$ (the rows of the Fourier matrix $F_n$, Eq. 2-4) "
                                             f"for $n = {', '.join(map(str, ends))}$: every ring of ", name,

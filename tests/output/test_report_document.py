@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import re
 from fractions import Fraction
+from pathlib import Path
 
 import pytest
 import sympy as sp
@@ -175,3 +176,13 @@ def test_bad_scheme(scheme):
 
 def test_report_name_is_verbatim():
     assert isinstance(build_report(sd.loop(), [3], sections=()).scheme, Verbatim)
+
+
+def test_scheme_beyond_reifs_test_says_so(capsys):
+    """A scheme whose regular patches are not splines the C1 test knows: the section says why, as ``c1`` does (exit 2)."""
+    lopsided = sd.schemes.files.load_scheme(str(Path(__file__).resolve().parents[1] / "corpus" / "lopsided.toml"))
+    report = build_report(lopsided, [4], sections=(c1_section, figures_section))
+    (c1_text,) = report.sections[0].blocks
+    assert main(["c1", "--n", "4", "--scheme", str(Path(__file__).resolve().parents[1] / "corpus" / "lopsided.toml")]) == 2
+    assert c1_text.parts[0] == "Not applicable: " and c1_text.parts[1] in capsys.readouterr().err
+    assert [getattr(b, "name", None) for b in report.sections[1].blocks] == [None, "eigen-polygons"]

@@ -112,7 +112,7 @@ def _prose(text: str) -> str:
 
 
 def _math(obj) -> str:
-    return "<math>" + sp.mathml(sp.sympify(obj), printer="presentation") + "</math>"
+    return "<math>" + sp.mathml(sp.sympify(obj, strict=True), printer="presentation") + "</math>"
 
 
 def _part(part) -> str:
@@ -142,7 +142,7 @@ def _block(block) -> str:
     if isinstance(block, Paragraph):
         return f"<p>{_parts(block.parts)}</p>\n"
     if isinstance(block, Formula):
-        body = sp.mathml(sp.sympify(block.lhs), printer="presentation") + "<mo>=</mo>" + sp.mathml(block.expr, printer="presentation")
+        body = sp.mathml(sp.sympify(block.lhs, strict=True), printer="presentation") + "<mo>=</mo>" + sp.mathml(block.expr, printer="presentation")
         return f'<math display="block"><mrow>{body}</mrow></math>\n'
     if isinstance(block, Table):
         head = "".join(f"<th>{_part(h)}</th>" for h in block.header)

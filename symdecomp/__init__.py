@@ -76,11 +76,13 @@ nothing else.
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
                    vertices (``plotting.meshes``), Reif's test
                    (``plotting.characteristic``), Stam's evaluation (``plotting.evaldata``),
-                   matplotlib loaded only when a figure is drawn (``plotting._mpl``)
+                   matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
+                   one scheme in one document (``report``: its sections; as LaTeX and PDF,
+                   ``report_tex``; as one HTML file, ``report_html``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``,
-                   ``inspect_cmd``),
+                   ``inspect_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``)
 ``__main__``       python -m symdecomp: the command line

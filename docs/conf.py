@@ -28,7 +28,7 @@ extensions = [
     "sphinx.ext.mathjax",
     "symdecomp_docs",
 ]
-exclude_patterns = ["_build", "_ext", "**.ipynb_checkpoints", "README.md"]
+exclude_patterns = ["_build", "_ext", "**.ipynb_checkpoints"]
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_heading_anchors = 3
 

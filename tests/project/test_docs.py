@@ -45,6 +45,17 @@ def test_the_readme_holds_no_copy_of_a_reference_section():
     assert "| exit code |" not in README and "| bound |" not in README
 
 
+def test_the_readme_tour_shows_real_output(capsys):
+    """The tour's spectrum is what the command prints (the lines shown, up to the ellipsis)."""
+    from symdecomp.cli import main
+
+    shown = README.split("$ symdecomp spectrum 5\n", 1)[1].split("\n...\n", 1)[0].splitlines()
+    assert len(shown) >= 3
+    assert main(["spectrum", "5"]) == 0
+    printed = capsys.readouterr().out.splitlines()
+    assert printed[: len(shown)] == shown
+
+
 def test_the_readme_links_resolve():
     for target in re.findall(r"\]\((docs/[^)#]+)\)", README):
         assert (ROOT / target).is_file(), target

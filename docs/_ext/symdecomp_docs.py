@@ -141,7 +141,7 @@ def subcommands(parser) -> dict:
 
 
 def _literal(text: str) -> list[str]:
-    return ["::", ""] + [f"    {line}".rstrip() for line in text.rstrip().splitlines()] + [""]
+    return [".. code-block:: text", ""] + [f"    {line}".rstrip() for line in text.rstrip().splitlines()] + [""]
 
 
 def command_reference() -> str:

@@ -138,4 +138,4 @@ def test_the_site_builds_with_warnings_as_errors(tmp_path):
     )
     assert result.returncode == 0, result.stderr[-3000:]
     commands = (tmp_path / "html" / "commands.html").read_text()
-    assert "usage: symdecomp check" in commands
+    assert 'id="command-check"' in commands and "usage: symdecomp check" in commands

@@ -195,7 +195,10 @@ def copy_notebooks(srcdir: Path) -> list[Path]:
 def setup(app):
     from docutils import nodes
     from docutils.parsers.rst import Directive, directives
+    from docutils.parsers.rst import Parser as RSTParser
+    from docutils.parsers.rst.states import RSTState
     from docutils.statemachine import StringList
+    from docutils.utils import new_document
     from sphinx.util.nodes import nested_parse_with_titles
 
     def directive(generate, arguments=0):
@@ -205,6 +208,10 @@ def setup(app):
 
             def run(self):
                 text = generate(*self.arguments)
+                if not isinstance(self.state, RSTState):  # a Markdown page (myst): parse the text as rST all the same
+                    document = new_document(self.state.document.current_source, self.state.document.settings)
+                    RSTParser().parse(text, document)
+                    return document.children
                 node = nodes.section()  # a holder: its children (sections, tables) join the page
                 node.document = self.state.document
                 source = self.state.document.current_source

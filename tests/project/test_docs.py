@@ -139,3 +139,5 @@ def test_the_site_builds_with_warnings_as_errors(tmp_path):
     assert result.returncode == 0, result.stderr[-3000:]
     commands = (tmp_path / "html" / "commands.html").read_text()
     assert 'id="command-check"' in commands and "usage: symdecomp check" in commands
+    guide = (tmp_path / "html" / "guide" / "command-line.html").read_text()
+    assert ".. list-table::" not in guide and guide.count("<table") >= 3, "the generated tables are tables on a Markdown page too"

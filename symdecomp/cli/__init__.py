@@ -1,6 +1,6 @@
 """The ``symdecomp`` command line. One module per subcommand, each with ``register(sub)``.
 
-Exit codes (also in ``symdecomp --help`` and the README):
+Exit codes (also in ``symdecomp --help`` and the user guide, docs/guide/command-line.md):
 
 ===  =====================================================================================
 0    success

@@ -218,7 +218,7 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         default=SCHEMES["catmull-clark"](),
         metavar="NAME|FILE",
         help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
-        "(format in the README)",
+        "(the format: docs, File formats; the docstring of symdecomp.schemes.files)",
     )
 
 

@@ -429,6 +429,22 @@ def interval_region(region: TuningRegion) -> list[Interval]:
     return out
 
 
+def _paper_points(concrete: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, sp.Expr]]]:
+    """The paper's Section 5.2 tuning at ``n``: on each condition's line, with the scheme's own ``beta``
+    (:func:`symdecomp.analysis.tuning.tune` without its valence-free joint obstruction)."""
+    from symdecomp.analysis.elliptic import nice_elliptic_conditions
+    from symdecomp.analysis.tuning import condition_line, ratio_target
+    from symdecomp.symbols import beta as BETA
+
+    beta = sp.sympify(concrete.vertex_rule.each_b).subs(N, n)
+    out = []
+    for k, target in enumerate((nice_elliptic_conditions(concrete).lambda1**2, ratio_target(concrete)), start=1):
+        line = condition_line(concrete, target.subs(N, n))
+        alpha = sp.radsimp(line.alpha_on_line.subs(BETA, beta).subs(N, n))
+        out.append((f"paper 5.2 condition {k}", (alpha, beta)))
+    return out
+
+
 def placed_points(scheme: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, ...]]]:
     """Published and paper weights at valence ``n`` as parameter values, where the parameters can express them.
 
@@ -437,7 +453,6 @@ def placed_points(scheme: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, ...]
     ``lambda_1^2``) and condition 2 (the Eq. 44 ratio), each with Catmull-Clark's ``beta``). Triangles: Loop's
     ``beta`` and Warren's ``3/(8n)`` (``3/16`` at ``n = 3``), as :mod:`symdecomp.schemes.loop` defines them.
     """
-    from symdecomp.analysis.tuning import tune
     from symdecomp.errors import SymdecompError
     from symdecomp.schemes.loop import loop, loop_warren
 
@@ -448,12 +463,9 @@ def placed_points(scheme: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, ...]
         weights.append(("Catmull-Clark", _vertex_weights(ref, n, {})))
         concrete = Scheme(scheme.name, scheme.edge_rule, scheme.face_rule, ref.vertex_rule, (), scheme.lattice)
         try:
-            tuned = tune(concrete, n)
-        except SymdecompError:
-            tuned = None
-        if tuned is not None:
-            weights.append(("paper 5.2 condition 1", tuple(sp.radsimp(w) for w in tuned.at_standard_beta[0])))
-            weights.append(("paper 5.2 condition 2", tuple(sp.radsimp(w) for w in tuned.at_standard_beta[1])))
+            weights += _paper_points(concrete, n)
+        except SymdecompError:  # not the paper's shape (e.g. rules not mirror-symmetric): nothing to place
+            pass
     else:
         weights += [("Loop", _vertex_weights(loop(), n, {})), ("Warren", _vertex_weights(loop_warren(), n, {}))]
     out = []

@@ -119,6 +119,13 @@ def _num(e, digits: int) -> str:
     return real_ball(e, 4 * digits + 64).str(digits, radius=False)
 
 
+def _ball(e, digits: int) -> str:
+    """A certified enclosure of an algebraic end, as text ``[mid +/- radius]``."""
+    from symdecomp.algebra.algebraic_sign import real_ball
+
+    return real_ball(e, 4 * digits + 64).str(digits)
+
+
 def run_region(args) -> int:
     """``tune N --region [--plot FILE]``: the region of free vertex weights at valence N (module docstring)."""
     from symdecomp.analysis.tuning_region import interval_region, placed_points
@@ -163,7 +170,9 @@ def _region_data(region, points, intervals, digits: int) -> dict:
         "c1_test": {"verdict": region.witness_verdict, "reason": region.witness_reason},
         "c1": [f.text(">") for f in region.c1_forms],
         "regions": {str(k): v for k, v in region.conditions().items()},
-        "intervals": None if intervals is None else [{"regime": str(i.regime), "interval": i.text()} for i in intervals],
+        "intervals": None if intervals is None else [
+            {"regime": str(i.regime), "interval": i.text(), "ends": [None if e is None else _ball(e, digits) for e in (i.lo, i.hi)]}
+            for i in intervals],
         "points": [{"name": name, "values": [sp.sstr(v) for v in p], "approx": [_num(v, digits) for v in p],
                     "regime": str(region.classify(p)), "on": [f.name for f, s in zip(region.square_forms, region.signs(p)[1]) if s == 0]}
                    for name, p in points],
@@ -186,7 +195,8 @@ def _print_region(data: dict) -> None:
     if data["intervals"] is not None:
         print(f"  {params} by regime:")
         for piece in data["intervals"]:
-            print(f"    {piece['interval']}: {piece['regime']}")
+            ends = ", ".join(inf if e is None else e for e, inf in zip(piece["ends"], ("-oo", "oo")))
+            print(f"    {piece['interval']}: {piece['regime']}   (ends in {ends})")
     for point in data["points"]:
         on = f" (on {', '.join(point['on'])} = 0)" if point["on"] else ""
         print(f"  {point['name']}: ({', '.join(point['values'])}) ~ ({', '.join(point['approx'])}): {point['regime']}{on}")

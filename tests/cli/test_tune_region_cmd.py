@@ -27,6 +27,18 @@ def test_region_json_places_catmull_clark_on_the_bounded_set(free_file, capsys):
     assert cc["values"] == ["3/32", "1/64"] and cc["regime"] == "mu = lambda_1^2" and cc["on"] == ["Q(lambda_1^2)"]
 
 
+def test_region_intervals_one_parameter(tmp_path, capsys):
+    path = tmp_path / "loop-free.toml"
+    path.write_text('name = "loop-free"\nmesh = "triangle"\nparameters = ["beta"]\n[edge]\nO = "3/8"\n'
+                    'a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }\n[vertex]\nbeta = "beta"\n')
+    assert main(["tune", "5", "--region", "--scheme", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    bounded = [i for i in data["intervals"] if i["regime"] == "mu = lambda_1^2"]
+    assert [i["interval"] for i in bounded] == ["{13/128 - sqrt(5)/128}", "{sqrt(5)/128 + 19/128}"]
+    assert {p["name"]: p["regime"] for p in data["points"]} == {"Loop": "mu = lambda_1^2", "Warren": "mu > lambda_1^2"}
+
+
+@pytest.mark.slow
 def test_region_text_and_plot_deterministic(free_file, tmp_path, capsys):
     first, second = tmp_path / "a.png", tmp_path / "b.png"
     assert main(["tune", "3", "--region", "--scheme", str(free_file), "--plot", str(first)]) == 0

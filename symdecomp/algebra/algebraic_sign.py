@@ -25,7 +25,7 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.errors import PrecisionError
 
-__all__ = ["exact_sign", "real_ball", "MAX_BITS"]
+__all__ = ["exact_sign", "real_ball", "rational_between", "MAX_BITS"]
 
 #: The highest precision (bits) tried before a sign is reported as not separated.
 MAX_BITS = 1 << 14
@@ -70,3 +70,33 @@ def exact_sign(expr) -> int:
         prec *= 4
     raise PrecisionError(f"the sign of {sp.sstr(expr)[:80]} is not separated from 0 at {MAX_BITS} bits"
                          + ("" if zero_tested else " (and not shown to be 0)"))
+
+
+def rational_between(lo, hi) -> sp.Rational:
+    """A rational strictly between the real algebraic numbers ``lo < hi`` (either may be ``None``: unbounded), small
+    denominator first; chosen from certified balls, so it is strictly inside."""
+    if lo is None and hi is None:
+        return sp.Integer(0)
+    if lo is None or hi is None:
+        b = real_ball(hi if lo is None else lo, 64)
+        return sp.floor(_to_rational(b.lower())) - 1 if lo is None else sp.ceiling(_to_rational(b.upper())) + 1
+    prec = 64
+    while True:
+        a, b = real_ball(lo, prec), real_ball(hi, prec)
+        if a.upper() < b.lower():
+            break
+        if prec > MAX_BITS:
+            raise PrecisionError(f"{sp.sstr(lo)[:40]} and {sp.sstr(hi)[:40]} are not separated at {MAX_BITS} bits")
+        prec *= 4
+    left, right = _to_rational(a.upper()), _to_rational(b.lower())
+    for q in range(1, 10_001):
+        p = sp.floor(left * q) + 1
+        if sp.Rational(p, q) < right:
+            return sp.Rational(p, q)
+    return (left + right) / 2
+
+
+def _to_rational(x) -> sp.Rational:
+    """The exact (dyadic) midpoint of an Arb ball whose radius is 0 (an end of a ball)."""
+    man, exp = x.mid().man_exp()
+    return sp.Rational(int(man)) * sp.Integer(2) ** int(exp)

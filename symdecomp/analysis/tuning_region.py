@@ -35,9 +35,14 @@ weights, with coefficients in ``Q(lambda_1)``; with ``>=`` they say ``<= r``. Th
   ``n = 4``: the frequency-2 eigenvalue ``1/4``) the closed set is ``mu = lambda_1^2`` and nothing is
   ``< lambda_1^2``; if ``m > lambda_1^2`` every C1 point has ``mu > lambda_1^2``.
 
-The regimes compare moduli, as the issue defines them: the eigenvalue of modulus ``lambda_1^2``
-may be ``-lambda_1^2`` or complex on parts of the boundary, and at the corners where ``Q`` has a
-double root ``+-lambda_1^2`` that root may carry a Jordan block (curvature growing like ``k``).
+The regimes compare moduli, as the issue defines them (the eigenvalue of modulus ``lambda_1^2``
+may be ``-lambda_1^2`` or complex on parts of the boundary). One exception, as in the regime
+definition of ``analysis/curvature_regime.py`` on the ``artifacts`` branch (``|mu| = lambda_1^2`` with
+a Jordan block is unbounded, the curvature growing like ``k``): at the (at most two) corners where
+``Q`` has a double root ``+-lambda_1^2`` and ``T`` is not diagonalizable there (exact rank,
+:meth:`TuningRegion.corners`), the point is ``mu > lambda_1^2`` though it satisfies the closed
+conditions; the printed conditions of ``mu = lambda_1^2`` exclude them in words. ``FLAT`` here is that
+definition's ``zero``. The regime is defined here, not imported, until the branches are merged.
 Membership of an exact point is decided by exact signs (:func:`~symdecomp.algebra.algebraic_sign.exact_sign`);
 for one parameter the sets are unions of intervals with algebraic endpoints (the forms' roots,
 sorted exactly). More than two parameters are refused (a region in 3+ dimensions is not printed
@@ -52,7 +57,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.algebra.algebraic_sign import exact_sign, real_ball
+from symdecomp.algebra.algebraic_sign import exact_sign, rational_between, real_ball
 from symdecomp.analysis.characteristic import outer_charpoly
 from symdecomp.analysis.frequency import laurent_to_cos, one_ring_matrices
 from symdecomp.errors import InvalidInputError, NotApplicableError
@@ -107,6 +112,8 @@ class TuningRegion:
     #: The forms ``> 0`` on the C1 set (``r = lambda_1``), and the forms for ``r = lambda_1^2``.
     c1_forms: tuple[Form, ...]
     square_forms: tuple[Form, ...]
+    #: The frequency-0 block ``T`` at ``n``, its first row in the parameters.
+    block: sp.ImmutableMatrix
     #: Parameter values of a point of the open C1 set (``None``: the set is empty).
     witness: tuple[sp.Expr, ...] | None
     #: Reif's weight-independent conditions at the witness: ``c1``, ``not-c1``, ``undecided``, or ``unchecked`` (this
@@ -126,8 +133,39 @@ class TuningRegion:
                 tuple(exact_sign(f.expr.subs(values)) for f in self.square_forms))
 
     def classify(self, point) -> Regime:
-        """The regime at an exact point (rationals or exact algebraic numbers, one per parameter)."""
-        return regime_from_signs(*self.signs(point), self.fixed_vs_square, self.independent_c1)
+        """The regime at an exact point (rationals or exact algebraic numbers, one per parameter).
+
+        A double root ``+-lambda_1^2`` of ``Q`` with a Jordan block in ``T`` (a corner of the closed set) makes the
+        curvature grow like ``k``: unbounded, although ``mu = lambda_1^2``.
+        """
+        c1, square = self.signs(point)
+        regime = regime_from_signs(c1, square, self.fixed_vs_square, self.independent_c1)
+        if regime is Regime.BOUNDED and self._jordan(point, square):
+            return Regime.UNBOUNDED
+        return regime
+
+    def _jordan(self, point, square: tuple[int, ...]) -> bool:
+        """Whether ``Q`` has a double root ``+-lambda_1^2`` at the point and ``T`` a Jordan block for it (exact rank)."""
+        if len(square) != 3 or square[2] != 0 or 0 not in square[:2]:
+            return False
+        root = self.lambda1**2 if square[0] == 0 else -self.lambda1**2
+        values = dict(zip(self.parameters, _exact_point(point, self.parameters)))
+        A = (self.block.subs(values) - root * sp.eye(3)).applyfunc(sp.expand)
+        return any(exact_sign(A.extract([r for r in range(3) if r != i], [c for c in range(3) if c != j]).det()) != 0
+                   for i in range(3) for j in range(3))
+
+    def corners(self) -> list[tuple[str, tuple[sp.Expr, ...], bool]]:
+        """Two parameters, degree 2: the points where ``Q`` has the double root ``+-lambda_1^2``, and whether ``T`` has a
+        Jordan block there (those corners of the closed set are unbounded)."""
+        if len(self.parameters) != 2 or len(self.square_forms) != 3:
+            return []
+        out = []
+        for k, name in ((0, "lambda_1^2"), (1, "-lambda_1^2")):
+            sol = sp.solve([self.square_forms[k].expr, self.square_forms[2].expr], self.parameters, dict=True)
+            if len(sol) == 1 and all(v in sol[0] for v in self.parameters):
+                point = tuple(sp.radsimp(sol[0][v]) for v in self.parameters)
+                out.append((name, point, self._jordan(point, self.signs(point)[1])))
+        return out
 
     def conditions(self) -> dict[Regime, list[list[str]]]:
         """Each regime's set as alternatives (a union) of conjunctions of exact (in)equalities."""
@@ -283,33 +321,6 @@ def _c1_set_interval(forms, t) -> tuple[sp.Expr | None, sp.Expr | None, bool]:
     return lo, hi, nonempty
 
 
-def rational_between(lo, hi) -> sp.Rational:
-    """A rational strictly between the real algebraic numbers ``lo < hi`` (either may be ``None``: unbounded), small
-    denominator first; chosen from certified balls, so it is strictly inside."""
-    if lo is None and hi is None:
-        return sp.Integer(0)
-    if lo is None or hi is None:
-        b = real_ball(hi if lo is None else lo, 64)
-        return sp.Integer(int(sp.floor(float(b.lower()))) - 1) if lo is None else sp.Integer(int(sp.ceiling(float(b.upper()))) + 1)
-    prec = 64
-    while True:
-        a, b = real_ball(lo, prec), real_ball(hi, prec)
-        if a.upper() < b.lower():
-            break
-        prec *= 4
-    left, right = _to_rational(a.upper()), _to_rational(b.lower())
-    for q in range(1, 10_001):
-        p = sp.floor(left * q) + 1
-        if sp.Rational(p, q) < right:
-            return sp.Rational(p, q)
-    return (left + right) / 2
-
-
-def _to_rational(x) -> sp.Rational:
-    man, exp = x.mid().man_exp()
-    return sp.Rational(int(man)) * sp.Integer(2) ** int(exp)
-
-
 def _witness(scheme: Scheme, n: int, params, Q: sp.Poly, lam1: sp.Expr):
     """Weights at ``O`` (a point of the open C1 set, the roots of ``Q`` of modulus ``< lambda_1/2`` if one parameter allows)."""
     s = sp.Rational(int(float(real_ball(lam1, 64).mid()) * 50), 100)  # about lambda_1 / 2, rational, < lambda_1
@@ -371,7 +382,8 @@ def tuning_region(scheme: Scheme, n: int) -> TuningRegion:
     c1_forms = _forms(Q, lam1, "lambda_1")
     square_forms = _forms(Q, lam1**2, "lambda_1^2")
     witness = _witness(scheme, n, params, Q, lam1)
-    return TuningRegion(scheme.name, n, params, Q.as_expr(), lam1, fixed_sign, fixed_text, c1_forms, square_forms, witness)
+    block = sp.ImmutableMatrix(one_ring_matrices(scheme)[1].subs(N, n).applyfunc(sp.expand))
+    return TuningRegion(scheme.name, n, params, Q.as_expr(), lam1, fixed_sign, fixed_text, c1_forms, square_forms, block, witness)
 
 
 @dataclass(frozen=True)

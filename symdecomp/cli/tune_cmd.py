@@ -170,6 +170,7 @@ def _region_data(region, points, intervals, digits: int) -> dict:
         "c1_test": {"verdict": region.witness_verdict, "reason": region.witness_reason},
         "c1": [f.text(">") for f in region.c1_forms],
         "regions": {str(k): v for k, v in region.conditions().items()},
+        "jordan_corners": [{"double_root": name, "values": [sp.sstr(v) for v in p]} for name, p, jordan in region.corners() if jordan],
         "intervals": None if intervals is None else [
             {"regime": str(i.regime), "interval": i.text(), "ends": [None if e is None else _ball(e, digits) for e in (i.lo, i.hi)]}
             for i in intervals],
@@ -192,6 +193,9 @@ def _print_region(data: dict) -> None:
         print(f"  C1 and {name}:" + ("" if alternatives else " empty"))
         for conj in alternatives:
             print("    " + " and ".join(conj))
+    for corner in data["jordan_corners"]:
+        print(f"  except ({', '.join(corner['values'])}): Q has the double root {corner['double_root']} with a Jordan block "
+              "in T, so mu > lambda_1^2 there")
     if data["intervals"] is not None:
         print(f"  {params} by regime:")
         for piece in data["intervals"]:

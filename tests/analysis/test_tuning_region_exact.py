@@ -114,14 +114,25 @@ def test_published_weights_placed(n, expected):
             assert (gap < 0) == (regime is Regime.FLAT)
 
 
-def test_flat_spot_triangle_corners_are_on_the_bounded_set():
-    region = tuning_region(cc_free(), 3)
+@pytest.mark.parametrize("n", [3, 4])
+def test_corners_of_the_closed_set(n):
+    """Q(lambda_1^2) = Q(-lambda_1^2) = 0: roots +-lambda_1^2, bounded. Where Q has a double root +-lambda_1^2 the
+    block T is not diagonalizable ((T - r)(T - 1) != 0, so its minimal polynomial has (x - r)^2): unbounded."""
+    region = tuning_region(cc_free(), n)
     forms = [f.expr for f in region.square_forms]
-    for i, j in ((0, 1), (0, 2), (1, 2)):
-        sol = sp.solve([forms[i], forms[j]], region.parameters, dict=True)[0]
-        corner = tuple(sp.radsimp(sol[v]) for v in region.parameters)
-        assert is_zero(forms[i].subs(sol)) and is_zero(forms[j].subs(sol))
-        assert region.classify(corner) is Regime.BOUNDED
+    sol = sp.solve([forms[0], forms[1]], region.parameters, dict=True)[0]
+    assert is_zero(forms[0].subs(sol)) and is_zero(forms[1].subs(sol))
+    assert region.classify(tuple(sp.radsimp(sol[v]) for v in region.parameters)) is Regime.BOUNDED
+    corners = region.corners()
+    assert [c[0] for c in corners] == ["lambda_1^2", "-lambda_1^2"]
+    for name, point, jordan in corners:
+        values = dict(zip(region.parameters, point))
+        r = region.lambda1**2 * (1 if name == "lambda_1^2" else -1)
+        assert is_zero(forms[2].subs(values))  # q = lambda_1^4: a double root
+        T = region.block.subs(values)
+        product = ((T - r * sp.eye(3)) * (T - sp.eye(3))).applyfunc(sp.expand)
+        assert jordan == any(not is_zero(e) for e in product)
+        assert jordan and region.classify(point) is Regime.UNBOUNDED
 
 
 def test_loop_intervals_exact_and_loop_warren_placed():

@@ -65,7 +65,7 @@ from symdecomp.schemes.scheme import Scheme, VertexRule, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.validate import cached, check_valence
+from symdecomp.validate import cached, check_type, check_valence
 
 __all__ = ["Regime", "Form", "TuningRegion", "tuning_region", "interval_region"]
 
@@ -346,7 +346,7 @@ def _witness(scheme: Scheme, n: int, params, Q: sp.Poly, lam1: sp.Expr):
 
 def _vertex_weights(scheme: Scheme, n: int, values: dict) -> tuple[sp.Expr, sp.Expr]:
     v = scheme.vertex_rule
-    return tuple(sp.expand(sp.sympify(w).subs(values).subs(N, n)) for w in (v.each_a, v.each_b))
+    return tuple(sp.expand(sp.sympify(w, strict=True).subs(values).subs(N, n)) for w in (v.each_a, v.each_b))
 
 
 def witness_scheme(region: TuningRegion, scheme: Scheme) -> Scheme | None:
@@ -420,6 +420,7 @@ def _sorted_roots(region: TuningRegion) -> list[sp.Expr]:
 
 def interval_region(region: TuningRegion) -> list[Interval]:
     """One parameter: the line cut into maximal intervals of one regime, with exact algebraic ends, in order."""
+    check_type(region, TuningRegion, "region", hint="tuning_region(scheme, n)")
     if len(region.parameters) != 1:
         raise NotApplicableError(f"the region of {region.scheme!r} has {len(region.parameters)} parameters; intervals need one")
     roots = _sorted_roots(region)
@@ -448,7 +449,7 @@ def _paper_points(concrete: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, sp
     from symdecomp.analysis.tuning import condition_line, ratio_target
     from symdecomp.symbols import beta as BETA
 
-    beta = sp.sympify(concrete.vertex_rule.each_b).subs(N, n)
+    beta = sp.sympify(concrete.vertex_rule.each_b, strict=True).subs(N, n)
     out = []
     for k, target in enumerate((nice_elliptic_conditions(concrete).lambda1**2, ratio_target(concrete)), start=1):
         line = condition_line(concrete, target.subs(N, n))
@@ -468,7 +469,8 @@ def placed_points(scheme: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, ...]
     from symdecomp.errors import SymdecompError
     from symdecomp.schemes.loop import loop, loop_warren
 
-    params = _parameters(scheme)
+    params = _parameters(check_scheme(scheme))
+    n = scheme.fitting_valence(check_valence(n), real=True)
     ref = scheme.lattice.reference()
     weights = []
     if scheme.lattice.face_neighbours:

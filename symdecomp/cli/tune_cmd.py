@@ -36,7 +36,12 @@ def register(sub) -> None:
         "(1) the subdominant eigenvalue of the Eq. 43 matrix equals lambda_1^2 and (2) the Eq. 44 ratio d_b/d_a "
         "equals |B^1/A^1|^2; each alone is a line in the (alpha, beta) plane; both together are possible only where "
         "an equation in n alone holds (for Catmull-Clark: n = 4), since the Eq. 44 ratio at a given eigenvalue "
-        "does not depend on the vertex rule. --table prints both defects of the scheme for n = 3..N.",
+        "does not depend on the vertex rule. --table prints both defects of the scheme for n = 3..N. --region (a scheme "
+        "file with parameters = [\"alpha\", \"beta\"] or one parameter in its vertex rule) prints instead the exact region "
+        "of those weights at valence N where the scheme is C1 with mu < lambda_1^2 (curvature tends to 0), mu = lambda_1^2 "
+        "(bounded) or mu > lambda_1^2 (unbounded), mu the largest eigenvalue modulus after 1 and lambda_1 over all "
+        "frequencies: linear inequalities in the weights with exact algebraic coefficients, exact intervals for one "
+        "parameter, and where published weights lie; --plot draws it, cells coloured only where certified signs decide.",
     )
     p.add_argument("n", type=valence("tune"), metavar="N", help="the valence (an integer, 3 <= N <= 1000; with --table N <= 200)")
     p.add_argument("--digits", type=digits(), action=Once, default=20,

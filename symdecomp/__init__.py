@@ -75,7 +75,8 @@ nothing else.
                    ``texlayout``), Stam's data file (``evaldata``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), Reif's test
-                   (``plotting.characteristic``), Stam's evaluation (``plotting.evaldata``),
+                   (``plotting.characteristic``), Stam's evaluation (``plotting.evaldata``), the
+                   second-order height fields and the shape chart (``plotting.shape``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,

@@ -16,6 +16,7 @@ bounds; its zero line (where the Gaussian curvature changes sign) is drawn in bl
 
 from __future__ import annotations
 
+import textwrap
 from math import comb
 
 import flint
@@ -97,7 +98,9 @@ def _panel(ax, scheme: Scheme, n: int, kind: str, samples: int) -> None:
         ring = height_field_samples(scheme, n, kind, samples=samples)
     except NotApplicableError as exc:
         ax.set_title(f"n = {n}: not determined", fontsize=9)
-        ax.text(0.5, 0.5, str(exc)[:160], ha="center", va="center", wrap=True, transform=ax.transAxes, fontsize=6)
+        ax.text(0.5, 0.5, textwrap.fill(str(exc), 42), ha="center", va="center", transform=ax.transAxes, fontsize=6)
+        ax.set_xticks([])
+        ax.set_yticks([])
         ax.set_xlabel("chi_1")
         ax.set_ylabel("chi_2")
         return

@@ -48,7 +48,21 @@ amplitudes ``a``, ``b`` on the two eigenvalues *at one ring*: on ring ``m`` the 
 frequency whose eigenvalue is larger. :func:`shape_chart` classifies a grid of mixtures (``a = 1 -
 r``, ``b = r``) and angles: the chart a designer reads is the row of the input's ratio, and the
 shape it tends to is the end of the chart on the side of the larger eigenvalue (reported as
-``dominant``). Only where ``mu_0 = mu_2`` is one mixture the shape of every ring.
+``dominant``). Only where ``mu_0 = mu_2`` is one mixture the shape of every ring. Both height fields are
+normalised to 1 at the level-1 point ``a_0`` (:mod:`symdecomp.analysis.second_order`), so at the regular
+valence the mixture is ``(1 - r)(x^2 + y^2) + r Re(e^(-it) (x + iy)^2)`` and the chart changes from
+elliptic to hyperbolic exactly at ``r = 1/2`` (a parabolic cylinder: undecided, which no depth decides).
+
+**Findings** (certified here, default depth and precision, ``n = 3..64``). Catmull-Clark: the elliptic
+input is elliptic and the hyperbolic input hyperbolic at every valence (``n = 4``: no hyperbolic pair);
+``mu_0 > mu_2`` at ``n = 3`` and ``mu_2 > mu_0`` for ``n >= 5``. Loop: the elliptic input is elliptic for
+``4 <= n <= 24`` and *hybrid* for ``25 <= n <= 64`` (``n = 3``: ``mu_0 = 1/16`` is also an outer eigenvalue,
+so the 1-ring does not determine the eigenfunction: undecided, with that reason); the hyperbolic input is
+hyperbolic for ``n >= 5``; ``mu_0 > mu_2`` at ``n = 4, 5``, equal at 6, ``mu_2 > mu_0`` for ``n >= 7``.
+Against the case studies' abstract: where ``mu_2 > mu_0`` an input with any frequency-2 part ends at the
+hyperbolic end of the chart (through a hybrid band), where ``mu_0 > mu_2`` at the elliptic end, whatever
+the mesh suggests: the limit shape is a function of the valence, as the abstract says. Their figures and
+tables could not be compared number by number (not available here).
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> r = classify_shape(catmull_clark(), 4)          # regular: the height is x^2 + y^2

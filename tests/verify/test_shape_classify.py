@@ -64,3 +64,14 @@ def test_what_is_not_determined_says_why():
 def test_bad_amplitudes_are_refused_in_one_line(keywords, message):
     with pytest.raises(InvalidInputError, match=message):
         classify_shape(CC, 5, **keywords)
+
+
+@pytest.mark.parametrize("scheme, n, dominant", [(CC, 3, 0), (CC, 5, 2), (CC, 16, 2), (LOOP, 5, 0), (LOOP, 6, None), (LOOP, 7, 2)])
+def test_which_second_order_eigenvalue_wins_depends_on_the_valence(scheme, n, dominant):
+    """The case studies' finding: generic input tends to the shape of the larger of mu_0, mu_2, a function of n alone."""
+    r = classify_shape(scheme, n, elliptic=1, hyperbolic=1, max_depth=0)
+    assert r.dominant == dominant and r.frequencies == (0, 2)
+    if dominant is None:  # the regular valence: both are 1/4 (not separable by balls: they are equal)
+        assert r.mu == pytest.approx((0.25, 0.25), abs=1e-15)
+    else:
+        assert (r.mu[0] > r.mu[1]) == (dominant == 0)

@@ -78,13 +78,12 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 import flint
-import sympy as sp
 
 from symdecomp.analysis.characteristic import check_applicable, frequency_blocks, outer_radius, ring_layout
 from symdecomp.analysis.second_order import height_eigenvector
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import check_bits, check_depth, check_valence
+from symdecomp.validate import check_bits, check_depth, check_rational, check_valence
 from symdecomp.verify.bezier import SignCertificate
 from symdecomp.verify.c1 import bezier_nets, characteristic_nets, place_text
 from symdecomp.verify.c1_spectrum import _frequency_zero, _quadratic_roots, _real_at, ball_text, spectral_conditions
@@ -135,24 +134,6 @@ class HeightFields:
     #: The certified sign of the characteristic map's Jacobian (regularity).
     jacobian: SignCertificate
     lattice: object = None
-
-
-def _rational(x, argument: str) -> Fraction:
-    """An exact rational argument: int, Fraction, sympy Rational or a string such as ``'1/3'`` (parsed, never evaluated)."""
-    if isinstance(x, bool) or x is None or isinstance(x, float):
-        raise InvalidInputError(f"{argument} must be an exact rational (an int, a Fraction or text like '1/3'), got {x!r}")
-    if hasattr(x, "dtype") and getattr(x.dtype, "kind", "") in "iu":
-        x = int(x)
-    if isinstance(x, (int, Fraction)):
-        return Fraction(x)
-    if isinstance(x, sp.Rational):
-        return Fraction(int(x.p), int(x.q))
-    if isinstance(x, str):
-        try:
-            return Fraction(x.strip())
-        except (ValueError, ZeroDivisionError):
-            pass
-    raise InvalidInputError(f"{argument} must be an exact rational (an int, a Fraction or text like '1/3'), got {x!r}")
 
 
 def _above_outer(scheme: Scheme, value: flint.arb) -> bool | None:
@@ -417,7 +398,7 @@ def _classify(scheme: Scheme, n: int, a: Fraction, b: Fraction, t: Fraction, max
 def _arguments(scheme, n, elliptic, hyperbolic, angle, max_depth, prec):
     check_scheme(scheme)
     n = check_valence(n)
-    a, b, t = _rational(elliptic, "elliptic"), _rational(hyperbolic, "hyperbolic"), _rational(angle, "angle")
+    a, b, t = check_rational(elliptic, "elliptic"), check_rational(hyperbolic, "hyperbolic"), check_rational(angle, "angle")
     max_depth, prec = check_depth(max_depth), check_bits(prec)
     if a == 0 and b == 0:
         raise InvalidInputError("elliptic and hyperbolic are both 0: there is no height to classify")
@@ -475,7 +456,7 @@ def _grid(values, default, argument: str) -> tuple[Fraction, ...]:
         return default
     if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
         raise InvalidInputError(f"{argument} must be a sequence of exact rationals, got {values!r}")
-    out = tuple(_rational(x, argument) for x in values)
+    out = tuple(check_rational(x, argument) for x in values)
     if not out or len(out) > 64:
         raise InvalidInputError(f"{argument} must hold 1 to 64 values, got {len(out)}")
     return out

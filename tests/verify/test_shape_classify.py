@@ -56,9 +56,10 @@ def test_what_is_not_determined_says_why():
 
 
 @pytest.mark.parametrize("keywords, message", [
-    (dict(elliptic=0.5), "elliptic must be an exact rational"),
-    (dict(hyperbolic="x"), "hyperbolic must be an exact rational"),
-    (dict(angle=True), "angle must be an exact rational"),
+    (dict(elliptic=0.5), "elliptic"),
+    (dict(hyperbolic="x"), "hyperbolic"),
+    (dict(angle=True), "angle"),
+    (dict(angle="pi"), "angle must be an exact rational number, got pi"),
     (dict(elliptic=0, hyperbolic=0), "both 0"),
 ])
 def test_bad_amplitudes_are_refused_in_one_line(keywords, message):

@@ -113,7 +113,8 @@ class SecondOrderEigen:
     above_outer: bool | None
 
     def text(self) -> str:
-        return f"mu_{self.frequency} = {ball_text(self.value)}"
+        below = " (below the regular part's outer eigenvalues)" if self.above_outer is False else ""
+        return f"mu_{self.frequency} = {ball_text(self.value)}{below}"
 
 
 @dataclass(frozen=True)
@@ -189,6 +190,9 @@ def _height_fields(scheme: Scheme, n: int, elliptic: bool, hyperbolic: bool, max
     spectral = spectral_conditions(scheme, n)
     if spectral.status is not C1Verdict.C1:
         raise _Undecided(f"there is no characteristic map to build the central surface on: {spectral.reason}")
+    if spectral.subdominant.frequency != 1:
+        raise _Undecided(f"the characteristic map comes from frequency {spectral.subdominant.frequency}, not 1: the second-order "
+                         "frequencies 0 and 2 are those of a frequency-1 map")
     chi, _ = characteristic_nets(scheme, n, spectral)
     alg = patch_algebra(scheme.lattice)
     jac = certify_nets(alg, jacobian_nets(alg, chi), alg.add(alg.lower(alg.degree, "u"), alg.lower(alg.degree, "v")), max_depth)

@@ -20,7 +20,8 @@ nothing else.
                    between sympy, Fraction, FLINT and Arb numbers (``numbers``), small exact
                    eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
                    clusters of enclosures that may overlap (``clusters``),
-                   polynomials over a triangle in Bezier form (``triangle_bezier``), signs of
+                   polynomials over a triangle in Bezier form (``triangle_bezier``), products of
+                   tensor and triangular Bernstein polynomials in Arb (``bernstein``), signs of
                    rational functions of n for every n (``valence_signs``), exact signs of real
                    algebraic numbers (``algebraic_sign``)
 ``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,
@@ -54,7 +55,8 @@ nothing else.
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
-                   (``inspection``)
+                   (``inspection``); second-order characteristic maps, the elliptic and hyperbolic
+                   height fields on the ring (``second_order``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -63,7 +65,9 @@ nothing else.
                    Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
                    the patch evaluator (``patch_eval``); the tuning region with Reif's
-                   weight-independent conditions certified (``tuning_c1``)
+                   weight-independent conditions certified (``tuning_c1``); certified shape at the
+                   vertex: the sign of the Gaussian curvature of a central surface (``curvature``),
+                   elliptic, hyperbolic or hybrid, and the shape chart (``shape``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
@@ -79,7 +83,8 @@ nothing else.
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
                    vertices (``plotting.meshes``), Reif's test
                    (``plotting.characteristic``), the tuning region (``plotting.tuning``),
-                   Stam's evaluation (``plotting.evaldata``),
+                   Stam's evaluation (``plotting.evaldata``), the second-order height fields and the
+                   shape chart (``plotting.shape``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
                    one scheme in one document (``report``: its sections; as LaTeX and PDF,
                    ``report_tex``; as one HTML file, ``report_html``)
@@ -136,6 +141,7 @@ from symdecomp.verify.certify import Certificate, certify
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import C1Verdict, CrossCheckResult, CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
+from symdecomp.verify.shape import ShapeChart, ShapeResult, classify_shape, shape_chart
 
 __version__ = "0.1.0"
 
@@ -232,6 +238,11 @@ __all__ = [
     "c1_test",
     "C1Result",
     "C1Verdict",
+    # shape at an extraordinary vertex (central surfaces, certified)
+    "classify_shape",
+    "ShapeResult",
+    "shape_chart",
+    "ShapeChart",
     "CrossCheckStatus",
     "CrossCheckResult",
     "exact_subdivision_matrix",

@@ -28,6 +28,7 @@ import inspect
 import numbers
 import os
 from collections.abc import Callable, Iterable, Mapping
+from fractions import Fraction
 
 import sympy as sp
 
@@ -52,6 +53,7 @@ __all__ = [
     "check_levels",
     "check_bits",
     "check_depth",
+    "check_rational",
     "cached",
     "parameter_values",
     "check_memory",
@@ -197,6 +199,23 @@ def check_depth(depth, argument: str = "max_depth", *, maximum: int = MAX_DEPTH)
     """Depth of a subdivision of Bezier nets: an integer in ``[0, MAX_DEPTH]``."""
     return check_int(depth, argument, minimum=0, maximum=maximum,
                      reason="each level splits a piece in four: depth 12 is 16 million pieces")
+
+
+def check_rational(value, argument: str) -> Fraction:
+    """``value`` as a ``Fraction`` if it is an exact rational number (int, Fraction, sympy Rational, text like ``'1/3'``).
+
+    Read through :func:`~symdecomp.expressions.exact_value` (text is parsed, never evaluated); floats,
+    booleans, symbols and irrational numbers are refused with an error naming ``argument``.
+
+    >>> check_rational("-3/4", "angle")
+    Fraction(-3, 4)
+    """
+    if hasattr(value, "dtype") and getattr(value.dtype, "kind", "") in "iu":  # a numpy integer is an int
+        value = int(value)
+    expr = exact_value(value, {}, argument=argument)
+    if not isinstance(expr, sp.Rational):
+        raise InvalidInputError(f"{argument} must be an exact rational number, got {expr}")
+    return Fraction(int(expr.p), int(expr.q))
 
 
 def cached(maxsize: int | None = None, **checks: Callable):

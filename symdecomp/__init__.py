@@ -52,7 +52,8 @@ nothing else.
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
-                   (``inspection``)
+                   (``inspection``); control nets designed for prescribed limit properties, and
+                   the least change of a 1-ring for a normal or no hyperbolic part (``design``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -80,7 +81,7 @@ nothing else.
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``,
-                   ``inspect_cmd``),
+                   ``inspect_cmd``, ``design_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``)
 ``__main__``       python -m symdecomp: the command line
@@ -102,6 +103,7 @@ from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_con
 from symdecomp.analysis.evaluation import PatchEvaluator
 from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
+from symdecomp.analysis.design import LimitFrame, RingDesign, design_ring, limit_frame, redesign_vertex
 from symdecomp.analysis.inspection import MeshInspection, VertexInspection, inspect_mesh, inspect_vertex
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
@@ -195,6 +197,11 @@ __all__ = [
     "inspect_vertex",
     "MeshInspection",
     "VertexInspection",
+    "design_ring",
+    "redesign_vertex",
+    "limit_frame",
+    "RingDesign",
+    "LimitFrame",
     # any scheme (triangle meshes, Loop) and K-ring matrices
     "Lattice",
     "QUAD",

@@ -97,13 +97,13 @@ from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigen
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
+from symdecomp.analysis.design import LimitFrame, RingDesign, design_ring, limit_frame, redesign_vertex
 from symdecomp.analysis.eigendata import certified_eigendata
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
 from symdecomp.analysis.evaluation import PatchEvaluator
 from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
-from symdecomp.analysis.design import LimitFrame, RingDesign, design_ring, limit_frame, redesign_vertex
 from symdecomp.analysis.inspection import MeshInspection, VertexInspection, inspect_mesh, inspect_vertex
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form

@@ -64,7 +64,10 @@ from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import omega as OMEGA
 
-__all__ = ["LimitFrame", "RingDesign", "design_ring", "limit_frame", "redesign_vertex"]
+__all__ = ["LimitFrame", "RingDesign", "design_ring", "limit_frame", "redesign_vertex", "ring_amounts"]
+
+#: The largest valence designed (40-digit eigenvectors per frequency and exact sums in Q(zeta_4n) per class).
+MAX_VALENCE = 1000
 
 _DPS = 40
 
@@ -140,7 +143,17 @@ def frame(normal, tangent=None) -> tuple:
     u = tuple(x - _dot(t, N) / _dot(N, N) * y for x, y in zip(t, N))
     if not any(u):
         raise InvalidInputError("tangent must not be parallel to the normal")
-    return u, _cross(N, u), N
+    u, N = _primitive(u), _primitive(N)
+    return u, _primitive(_cross(N, u)), N
+
+
+def _primitive(w) -> tuple:
+    """The integer vector with coprime entries along ``w`` (same direction): coordinates ``p + x u + ...`` with
+    dyadic ``x`` then terminate whenever ``p`` does."""
+    scale = sp.ilcm(*[sp.Rational(x).q for x in w])
+    ints = [int(x * scale) for x in w]
+    g = math.gcd(*ints)
+    return tuple(sp.Integer(x // g) for x in ints)
 
 
 def _frequency_matrix(scheme: Scheme, n: int, j: int) -> mpmath.matrix:
@@ -271,6 +284,8 @@ def design_ring(scheme: Scheme, n: int, *, normal, position=(0, 0, 0), tangent=N
     """
     scheme = check_scheme(scheme)
     n = scheme.fitting_valence(n)
+    if n > MAX_VALENCE:
+        raise InvalidInputError(f"valence n must be at most {MAX_VALENCE} for a design, got {n}")
     with mpmath.workdps(_DPS):
         return _design(scheme, n, normal, position, tangent, (elliptic, hyperbolic, angle))
 
@@ -360,6 +375,20 @@ def _amounts(scheme: Scheme, n: int, centre, points: dict, unit) -> tuple:
         A = 2 * L / (n * mpmath.fsum(y * x for y, x in zip(Y2, X2)))
         angle = float((-mpmath.arg(A) / 2) % mpmath.pi) if abs(A) > mpmath.mpf(10) ** -30 else 0.0
         return float(elliptic), float(abs(A)), angle
+
+
+def ring_amounts(scheme: Scheme, points, unit) -> tuple:
+    """``(elliptic, hyperbolic, angle)`` of a 1-ring given as points ``O, a_0.., b_0..`` (doubles suffice), along ``unit``.
+
+    The coefficients of the heights ``P . unit`` on the elliptic eigenvector (frequency 0) and on the dominant
+    frequency-2 eigenvectors (``Re(B e^(-2iT) X_q omega^(2s))``); the hyperbolic pair is ``None`` at ``n <= 4``.
+    """
+    scheme = check_scheme(scheme)
+    K = len(_classes(scheme))
+    if (len(points) - 1) % K or len(points) < 1 + 3 * K:
+        raise InvalidInputError(f"points must be a 1-ring O, then {K} classes of n >= 3 points each; got {len(points)} points")
+    n = (len(points) - 1) // K
+    return _amounts(scheme, n, points[0], {(q, s): points[1 + q * n + s] for q in range(K) for s in range(n)}, unit)
 
 
 def limit_frame(scheme: Scheme, mesh: PolygonMesh, vertex: int, *, normal=None, tangent=None) -> LimitFrame:

@@ -14,7 +14,8 @@ prescribed first tangent direction projected off ``N``, ``v = N x u``):
   ``a_s <-> a_(-s)``, ``b_s <-> b_(-1-s)``) and zero class means; the tangent masks of a mirror-symmetric
   scheme are even (first) and odd (second), so ``t_1`` is exactly along ``u`` and ``t_2`` along ``v``;
 * **heights** along ``N``: ``elliptic`` times the frequency-0 eigenvector of the second largest
-  eigenvalue of ``E_0`` (the Eq. 43 matrix on quads), which the position mask does not see, plus
+  eigenvalue of ``E_0`` (the Eq. 43 matrix on quads; scaled so that its largest class component, the
+  height of the ``a_i`` or of the ``b_i``, is 1), which the position mask does not see, plus
   ``Re(B e^(-2iT) X_q omega^(2s))``, ``X`` the dominant eigenvector of ``E(omega^2)`` with ``X_a = 1`` (the
   hyperbolic component, amount ``B``, angle ``T``; none at ``n = 3`` and not separable at ``n = 4``).
   Heights of frequency 0 and 2 are invisible to the tangent masks, so the normal is ``N``.
@@ -49,6 +50,7 @@ n-2, n-1 only.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -70,6 +72,8 @@ __all__ = ["LimitFrame", "RingDesign", "design_ring", "limit_frame", "redesign_v
 MAX_VALENCE = 1000
 
 _DPS = 40
+#: A decimal number as text: read as the rational it spells (the mesh files' grammar).
+_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]{1,4})?")
 
 
 @dataclass(frozen=True)
@@ -114,10 +118,17 @@ class RingDesign:
     change: float = 0.0
 
 
+def _exact(x, argument: str) -> sp.Expr:
+    """A number from outside: a decimal text (``0.25``) as the rational it spells, else :func:`exact_value` (never evaluated)."""
+    if isinstance(x, str) and _DECIMAL.fullmatch(x.strip()):
+        return sp.Rational(Fraction(x.strip()))
+    return exact_value(x, argument=argument)
+
+
 def _vector(value, argument: str) -> tuple:
     if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 3:
         raise InvalidInputError(f"{argument} must be 3 numbers (x, y, z), got {value!r:.60}")
-    out = tuple(exact_value(x, argument=argument) for x in value)
+    out = tuple(_exact(x, argument) for x in value)
     if not all(x.is_Rational for x in out):
         raise InvalidInputError(f"{argument} must have rational coordinates, got {value!r:.60}")
     return out
@@ -180,12 +191,14 @@ def _dominant(M: mpmath.matrix, skip_one: bool = False):
 
 
 def _elliptic(scheme: Scheme, n: int):
-    """Right and left eigenvectors of ``E_0`` (rows ``O, classes``; acting on class means) for its second eigenvalue."""
+    """Right and left eigenvectors of ``E_0`` (rows ``O, classes``; acting on class means) for its second eigenvalue,
+    the right one scaled so that its largest class component is 1."""
     E0 = ring_blocks(scheme, 1).frequency_zero_matrix(n)
     with mpmath.workdps(_DPS):
         M = mpmath.matrix([[mpmath.mpmathify(sp.N(E0[r, c], _DPS)) for c in range(E0.shape[1])] for r in range(E0.shape[0])])
         _, Y, X = _dominant(M, skip_one=True)
-        return [mpmath.re(x / X[1]) for x in X], [mpmath.re(y) for y in Y]
+        top = max(range(1, len(X)), key=lambda k: abs(X[k]))  # Catmull-Clark at n = 3: the a_i stay (x_a = 0)
+        return [mpmath.re(x / X[top]) for x in X], [mpmath.re(y) for y in Y]
 
 
 def _hyperbolic(scheme: Scheme, n: int):
@@ -259,12 +272,32 @@ def _heights(scheme: Scheme, n: int, elliptic, hyperbolic, angle) -> tuple:
     h_O = Fraction(float(e * Xe[0]))
     w = position_weights(scheme, n)
     means = [sum((h[(q, s)] for s in range(n)), Fraction(0)) / n for q in range(K)]
-    seen = w[0] * _q(h_O) + sum((n * w[1 + q] * _q(means[q]) for q in range(K - 1)), sp.Integer(0))
-    delta = -seen / (n * w[K]) - _q(means[K - 1])
-    delta = Fraction(int(delta.p), int(delta.q)) if delta.is_Rational else Fraction(float(sp.N(delta, _DPS)))
-    for s in range(n):
-        h[(K - 1, s)] += delta
+    # the heights the position mask sees, sum over O and the classes of weight * mean height: made zero by moving one
+    # vertex group (O, or every vertex of one class by a constant); the first whose move is a terminating decimal
+    parts = [w[0] * _q(h_O)] + [n * w[1 + q] * _q(means[q]) for q in range(K)]
+    total = sum(parts, sp.Integer(0))
+    moves = []
+    for g in [K] + list(range(K)):  # group 0 is O, group 1 + q the class q
+        move = -total / (w[0] if g == 0 else n * w[g])
+        if move.is_Rational and _terminates(move):
+            moves.append((g, Fraction(int(move.p), int(move.q))))
+            break
+    if not moves:  # irrational weights (Loop at most valences): the last class, rounded to a double
+        moves.append((K, Fraction(float(sp.N(-total / (n * w[K]), _DPS)))))
+    g, move = moves[0]
+    if g == 0:
+        h_O += move
+    for s in range(n if g else 0):
+        h[(g - 1, s)] += move
     return h_O, h
+
+
+def _terminates(x: sp.Rational) -> bool:
+    d = int(x.q)
+    for p in (2, 5):
+        while d % p == 0:
+            d //= p
+    return d == 1
 
 
 def _q(x: Fraction) -> sp.Rational:
@@ -293,7 +326,7 @@ def design_ring(scheme: Scheme, n: int, *, normal, position=(0, 0, 0), tangent=N
 def _design(scheme: Scheme, n: int, normal, position, tangent, amounts) -> RingDesign:
     u, v, N = frame(normal, tangent)
     p = _vector(position, "position")
-    amounts = [exact_value(x, argument=name) for x, name in zip(amounts, ("elliptic", "hyperbolic", "angle"))]
+    amounts = [_exact(x, name) for x, name in zip(amounts, ("elliptic", "hyperbolic", "angle"))]
     for x, name in zip(amounts, ("elliptic", "hyperbolic", "angle")):
         if not (x.is_real and x.is_finite):
             raise InvalidInputError(f"{name} must be a real number, got {x}")

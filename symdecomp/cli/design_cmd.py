@@ -18,7 +18,8 @@ Two modes (the mathematics is :mod:`symdecomp.analysis.design`):
 
 ``--out FILE`` (``.obj``, ``.off``, ``.ply``, or ``--format``) is checked before any work and written whole. The
 file holds the net exactly when its coordinates are terminating decimals: every coordinate is ``p + x u + y v +
-h N`` with doubles ``x, y, h``, so exact when ``--position``, ``--normal`` and ``--tangent`` are decimals. What is
+h N`` with doubles ``x, y, h`` and integer ``u, v, N``, so exact in OBJ and OFF when ``--position`` is decimal (PLY
+stores doubles: there the coordinates are rounded once more, and the exact checks hold to double precision). What is
 exact: the position (Catmull-Clark: always; Loop: at valences 3, 4, 6 or with no heights), the normal (no
 hyperbolic heights, or valences where they are rational), the tangent direction; the amounts are measured to
 double precision.

@@ -77,7 +77,7 @@ def register(sub) -> None:
     p.add_argument("--elliptic", action=Once, default=None, metavar="A", help="elliptic amount: height of the a_i along the unit normal")
     p.add_argument("--hyperbolic", action=Once, default=None, metavar="B", help="hyperbolic amount (valence >= 5)")
     p.add_argument("--angle", action=Once, default=None, metavar="T", help="hyperbolic angle in radians (default 0)")
-    p.add_argument("--mesh", action=Once, default=None, metavar="FILE", help="redesign a vertex of this mesh (.obj, .off, .ply)")
+    p.add_argument("--mesh", dest="mesh_file", action=Once, default=None, metavar="FILE", help="redesign a vertex of this mesh (.obj, .off, .ply)")
     p.add_argument("--vertex", type=_index, action=Once, default=None, metavar="I", help="the vertex to redesign (0-based)")
     flag(p, "--flatten-hyperbolic", help="with --mesh: remove the hyperbolic heights of the vertex's 1-ring")
     p.add_argument("--out", action=Once, required=True, metavar="FILE", help="the mesh file to write (.obj, .off, .ply)")
@@ -89,7 +89,7 @@ def register(sub) -> None:
 def _mode(args) -> str:
     from symdecomp.errors import InvalidInputError
 
-    if args.mesh is None:
+    if args.mesh_file is None:
         for name in ("vertex", "flatten_hyperbolic"):
             if getattr(args, name):
                 raise InvalidInputError(f"--{name.replace('_', '-')} needs --mesh")
@@ -133,7 +133,8 @@ def _print(data: dict) -> None:
 
 
 def run(args) -> int:
-    from symdecomp.analysis.design import design_ring, redesign_vertex
+    from symdecomp.analysis.design import design_ring
+    from symdecomp.analysis.redesign import redesign_vertex
     from symdecomp.cli.files import check_output_file, write_output_file
     from symdecomp.schemes.meshfile import scheme_for_mesh
     from symdecomp.schemes.meshformats import encode_mesh, mesh_format, read_mesh
@@ -147,7 +148,7 @@ def run(args) -> int:
         amounts = {k: getattr(args, k) for k in ("elliptic", "hyperbolic", "angle") if getattr(args, k) is not None}
         result = design_ring(scheme, args.n, normal=args.normal, position=args.position or (0, 0, 0), tangent=args.tangent, **amounts)
     else:
-        mesh = read_mesh(args.mesh)
+        mesh = read_mesh(args.mesh_file)
         scheme = args.scheme if args.scheme is not None else scheme_for_mesh(mesh)
         result = redesign_vertex(scheme, mesh, args.vertex, normal=args.normal, flatten_hyperbolic=bool(args.flatten_hyperbolic))
     write_output_file(out, encode_mesh(result.mesh, fmt))

@@ -11,8 +11,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.design import design_ring, limit_frame, redesign_vertex, ring_amounts
+from symdecomp.analysis.design import design_ring, limit_frame, ring_amounts
 from symdecomp.analysis.inspection import position_weights
+from symdecomp.analysis.redesign import redesign_vertex
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.errors import InvalidInputError, InvalidMeshError, NotApplicableError

@@ -3,7 +3,9 @@
 Given the 1-ring ``P`` of a vertex of a mesh (:func:`redesign_vertex`), the constraints are linear in the heights
 ``h = P . N`` along the target normal ``N``: the limit normal is parallel to ``N`` when both tangent masks
 (the real and imaginary parts of the frequency-1 left eigenvector ``Y_q omega^(-s)``) give ``t . N = 0``; the
-hyperbolic part vanishes when the two frequency-2 functionals ``Y_q omega^(-2s)`` give 0. Moving the points along
+hyperbolic part vanishes when the frequency-2 functionals ``omega^(-2s)`` on each class give 0 (all of the
+heights' n-gon frequency 2 and n - 2: the dominant eigencomponent of ``M_2``, whose coefficient is the limit's
+hyperbolic amount, and the faster-decaying one, so that ``symdecomp inspect`` sees no saddle either). Moving the points along
 ``N`` changes nothing else those functionals see, so the least change in the Euclidean norm of the ring's points is
 ``dh = -G^T (G G^T)^(-1) G h`` along ``N`` (``G`` the constraint rows): an orthogonal projection, which in the
 orthogonal Fourier basis of each class changes only the frequencies 1, 2, n - 2, n - 1. The eigenvectors are
@@ -26,7 +28,7 @@ from fractions import Fraction
 
 import mpmath
 
-from symdecomp.analysis.design import _DPS, RingDesign, _classes, _dominant, _dot, _frequency_matrix, _hyperbolic, frame, limit_frame
+from symdecomp.analysis.design import _DPS, RingDesign, _classes, _dominant, _dot, _frequency_matrix, frame, limit_frame
 from symdecomp.errors import InvalidInputError, InvalidMeshError, NotApplicableError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -47,7 +49,7 @@ def redesign_vertex(scheme: Scheme, mesh: PolygonMesh, vertex: int, *, normal=No
 
     The change is along the target normal (``normal``, else the measured one): the heights ``h`` of the ring
     are replaced by their orthogonal projection off the span of the constraint functionals (the two tangent
-    masks when ``normal`` is given; the two frequency-2 left eigenvectors when ``flatten_hyperbolic``), the
+    masks when ``normal`` is given; each class's frequency-2 Fourier coefficient when ``flatten_hyperbolic``), the
     least-squares solution; the new points are rounded to doubles. Refused when the projected normal would
     point away from ``normal`` (the tangent plane would have to turn over).
     """
@@ -71,11 +73,12 @@ def redesign_vertex(scheme: Scheme, mesh: PolygonMesh, vertex: int, *, normal=No
     if normal is not None:
         rows += _functionals(scheme, n, 1, _dominant(_frequency_matrix(scheme, n, 1))[1])
     if flatten_hyperbolic:
-        hyper = _hyperbolic(scheme, n)
-        if hyper is None:
+        if n <= 4:
             raise NotApplicableError(f"at valence {n} there is no separate hyperbolic component (frequency 2 is not apart "
                                      "from its conjugate and the tangent frequencies); it needs n >= 5")
-        rows += _functionals(scheme, n, 2, hyper[1])
+        K = len(_classes(scheme))
+        for q in range(K):  # the class indicator: the Fourier coefficient of class q alone
+            rows += _functionals(scheme, n, 2, [int(r == q) for r in range(K)])
     with mpmath.workdps(_DPS):
         h = mpmath.matrix([mpmath.fsum(mpmath.mpf(float(c)) * w for c, w in zip(mesh.points[v], unit)) for v in ring])
         G = mpmath.matrix(rows)

@@ -38,7 +38,7 @@ from symdecomp.analysis.inspection import inspect_mesh
 from symdecomp.cli.common import Once, flag, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_directory, replace_owned_files
 from symdecomp.cli.masks_cmd import lambda_1_subdominance
-from symdecomp.errors import NotApplicableError
+from symdecomp.errors import NotApplicableError, UnavailableError
 from symdecomp.schemes.meshfile import scheme_for_mesh
 from symdecomp.schemes.meshformats import FORMATS, read_mesh
 
@@ -109,6 +109,16 @@ def _figures(args, mesh, result) -> None:
     replace_owned_files(args.figures, files, _OWNED, "--figures")
 
 
+def _require_matplotlib() -> None:
+    """--figures needs matplotlib: say so before the work starts (exit 3), not after."""
+    from symdecomp.output.plotting._mpl import require_matplotlib
+
+    try:
+        require_matplotlib()
+    except ImportError as exc:
+        raise UnavailableError(f"--figures: {exc}") from None
+
+
 def _subdominance(mesh, scheme) -> dict[int, tuple[bool, str]]:
     """Per valence of an extraordinary vertex: whether ``lambda_1`` is certified subdominant (the normal is a tangent plane's)."""
     out = {}
@@ -123,6 +133,7 @@ def _subdominance(mesh, scheme) -> dict[int, tuple[bool, str]]:
 def run(args) -> int:
     if args.figures is not None:
         check_output_directory(args.figures, "--figures")
+        _require_matplotlib()
     mesh = read_mesh(args.mesh, args.format)
     scheme = args.scheme if args.scheme is not None else scheme_for_mesh(mesh)
     mesh.require_lattice(scheme.lattice, scheme.name)

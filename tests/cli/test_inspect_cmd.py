@@ -159,3 +159,20 @@ def test_a_scheme_without_a_tangent_plane_or_a_limit_is_said_so(capsys):
     assert [line.split(" (")[0] for line in err.splitlines()] == [
         "symdecomp inspect: at valence 5 lambda_1 is not certified the subdominant eigenvalue",
         "symdecomp inspect: at valence 6 lambda_1 is not certified the subdominant eigenvalue"]
+
+
+def test_a_triangle_mesh_in_ply_goes_to_loop(tmp_path, capsys):
+    """The octahedron: every vertex has valence 4, extraordinary for Loop; by Loop's mask (beta(4) = 31/256,
+    chi = 31/220) the limit of (1, 0, 0) is (1 - 4 chi) (1, 0, 0) = (24/55, 0, 0), and the normal is (1, 0, 0)."""
+    from symdecomp.schemes.meshfile import PolygonMesh
+    from symdecomp.schemes.meshformats import encode_mesh
+
+    points = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
+    faces = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
+    (tmp_path / "octahedron.ply").write_bytes(encode_mesh(PolygonMesh.from_arrays(points, faces), "ply"))
+    assert main(["inspect", str(tmp_path / "octahedron.ply"), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["scheme"] == "loop" and [v["valence"] for v in data["extraordinary"]] == [4] * 6
+    first = data["extraordinary"][0]
+    assert first["limit_exact"] == ["24/55", "0", "0"]
+    assert first["normal"] == pytest.approx([1, 0, 0], abs=1e-15)

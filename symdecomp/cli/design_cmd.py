@@ -64,7 +64,11 @@ def register(sub) -> None:
         "polygonal decomposition) so that its limit has the prescribed position, normal, tangent direction and "
         "elliptic/hyperbolic amounts; or, with --mesh and --vertex, change a vertex's 1-ring as little as possible "
         "(least squares) so that its limit normal is --normal and/or its hyperbolic heights vanish. Writes a mesh file "
-        "and reports the achieved values, measured exactly on the written net where they are exact.",
+        "and reports the achieved values, measured exactly on the written net where they are exact: the position "
+        "(Catmull-Clark always, Loop where its mask is rational), the normal and the tangent direction (always without "
+        "--hyperbolic; with it where the saddle's heights can be rational: at n = 5 a rational sequence without "
+        "frequency 1 has no frequency 2 either). Example: symdecomp design --n 5 --normal 0,0,1 --position 1,2,3 "
+        "--elliptic 1/2 --out ring.obj",
     )
     p.add_argument("--scheme", type=scheme_by_name, action=Once, default=None, metavar="NAME|FILE",
                    help="subdivision scheme: a name or a TOML scheme file (default catmull-clark; with --mesh: by the mesh's faces)")
@@ -74,10 +78,10 @@ def register(sub) -> None:
     p.add_argument("--normal", type=_vector("normal"), action=Once, default=None, metavar="X,Y,Z", help="limit normal")
     p.add_argument("--tangent", type=_vector("tangent"), action=Once, default=None, metavar="X,Y,Z",
                    help="direction of the first tangent (projected off the normal)")
-    p.add_argument("--elliptic", action=Once, default=None, metavar="A", help="elliptic amount: the coefficient of the heights (along the unit normal) on the "
-                   "elliptic eigenvector of E_0, scaled so that its largest class height (the a_i; the b_i for Catmull-Clark at n = 3) is 1")
-    p.add_argument("--hyperbolic", action=Once, default=None, metavar="B", help="hyperbolic amount B: heights B cos(2 (theta_i - T)) on the a_i, "
-                   "the dominant eigenvector of the frequency-2 matrix on the others (valence >= 5)")
+    p.add_argument("--elliptic", action=Once, default=None, metavar="A",
+                   help="elliptic amount: the coefficient of the heights (along the unit normal) on the elliptic eigenvector of E_0, scaled so that its largest class height (the a_i; the b_i for Catmull-Clark at n = 3) is 1")
+    p.add_argument("--hyperbolic", action=Once, default=None, metavar="B",
+                   help="hyperbolic amount B: heights B cos(2 (theta_i - T)) on the a_i, the dominant eigenvector of the frequency-2 matrix on the others (valence >= 5)")
     p.add_argument("--angle", action=Once, default=None, metavar="T", help="hyperbolic angle in radians (default 0)")
     p.add_argument("--mesh", dest="mesh_file", action=Once, default=None, metavar="FILE", help="redesign a vertex of this mesh (.obj, .off, .ply)")
     p.add_argument("--vertex", type=_index, action=Once, default=None, metavar="I", help="the vertex to redesign (0-based)")

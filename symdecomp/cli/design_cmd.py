@@ -79,9 +79,11 @@ def register(sub) -> None:
     p.add_argument("--tangent", type=_vector("tangent"), action=Once, default=None, metavar="X,Y,Z",
                    help="direction of the first tangent (projected off the normal)")
     p.add_argument("--elliptic", action=Once, default=None, metavar="A",
-                   help="elliptic amount: the coefficient of the heights (along the unit normal) on the elliptic eigenvector of E_0, scaled so that its largest class height (the a_i; the b_i for Catmull-Clark at n = 3) is 1")
+                   help="elliptic amount: the coefficient of the heights (along the unit normal) on the elliptic eigenvector of E_0, "
+                   "scaled so that its largest class height (the a_i; the b_i for Catmull-Clark at n = 3) is 1")
     p.add_argument("--hyperbolic", action=Once, default=None, metavar="B",
-                   help="hyperbolic amount B: heights B cos(2 (theta_i - T)) on the a_i, the dominant eigenvector of the frequency-2 matrix on the others (valence >= 5)")
+                   help="hyperbolic amount B: heights B cos(2 (theta_i - T)) on the a_i, "
+                   "the dominant eigenvector of the frequency-2 matrix on the others (valence >= 5)")
     p.add_argument("--angle", action=Once, default=None, metavar="T", help="hyperbolic angle in radians (default 0)")
     p.add_argument("--mesh", dest="mesh_file", action=Once, default=None, metavar="FILE", help="redesign a vertex of this mesh (.obj, .off, .ply)")
     p.add_argument("--vertex", type=_index, action=Once, default=None, metavar="I", help="the vertex to redesign (0-based)")

@@ -20,11 +20,13 @@ prescribed first tangent direction projected off ``N``, ``v = N x u``):
   hyperbolic component, amount ``B``, angle ``T``; none at ``n = 3`` and not separable at ``n = 4``).
   Heights of frequency 0 and 2 are invisible to the tangent masks, so the normal is ``N``.
 
-Each point is ``p + x u + y v + h N`` with the scalars ``x, y, h`` rounded to doubles (so the coordinates
-are terminating decimals when ``p``, ``u``, ``N`` are, and the file holds the net exactly). What rounding
-cannot spoil is kept exact: class-constant heights stay constant, the symmetry and the means are exact,
-and the last class height is solved exactly from the position mask when its weights are rational
-(Catmull-Clark at every valence). The achieved values are then **measured on the rational net**
+Each point is ``p + x u + y v + h N`` with the scalars ``x, y, h`` rounded to doubles and ``u, v, N`` made
+primitive integer vectors (so the coordinates are terminating decimals when ``p`` is, and an OBJ or OFF file
+holds the net exactly). What rounding cannot spoil is kept exact: class-constant heights stay constant, the
+symmetry and the means are exact, and one vertex group (``O``, or one class by a constant) is moved by exactly
+what the position mask needs, a group whose move is a terminating decimal when the weights are rational
+(Catmull-Clark at every valence, Loop at 3, 4, 6); with irrational weights the move is rounded.
+The achieved values are then **measured on the rational net**
 (:func:`limit_frame`): the position exactly (:func:`~symdecomp.analysis.inspection.position_weights`),
 the tangents' components along ``N`` and across ``u`` exactly in ``Q(zeta_4n)`` (each class's frequency-1
 Fourier sum; a class weight of a mirror-symmetric scheme is real up to the phase of its class's angle),
@@ -37,9 +39,9 @@ the limit point, tangents or normal (the masks see the 1-ring only).
 
 :func:`~symdecomp.analysis.redesign.redesign_vertex` takes a measured 1-ring and makes the smallest change (Euclidean norm on the
 ring's points, along ``N``) that makes the limit normal parallel to ``N`` and/or removes the
-hyperbolic heights: the heights are projected orthogonally off the span of the tangent masks (and the
-two hyperbolic functionals), which in the orthogonal Fourier basis is a change of the frequencies 1, 2,
-n-2, n-1 only.
+hyperbolic heights: the heights are projected orthogonally off the span of the tangent masks (and of each
+class's frequency-2 Fourier coefficient), which in the orthogonal Fourier basis is a change of the
+frequencies 1, 2, n-2, n-1 only.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> d = design_ring(catmull_clark(), 5, normal=(0, 0, 1), position=(1, 2, 3))

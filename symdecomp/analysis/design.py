@@ -18,7 +18,8 @@ prescribed first tangent direction projected off ``N``, ``v = N x u``):
   height of the ``a_i`` or of the ``b_i``, is 1), which the position mask does not see, plus
   ``Re(B e^(-2iT) X_q omega^(2s))``, ``X`` the dominant eigenvector of ``E(omega^2)`` with ``X_a = 1`` (the
   hyperbolic component, amount ``B``, angle ``T``; none at ``n = 3`` and not separable at ``n = 4``).
-  Heights of frequency 0 and 2 are invisible to the tangent masks, so the normal is ``N``.
+  Heights of frequency 0 and 2 are invisible to the tangent masks, so the normal is ``N``; rounded, the
+  saddle keeps that exactly at even ``n`` only (:func:`_rational_saddle`).
 
 Each point is ``p + x u + y v + h N`` with the scalars ``x, y, h`` rounded to doubles and ``u, v, N`` made
 primitive integer vectors (so the coordinates are terminating decimals when ``p`` is, and an OBJ or OFF file
@@ -266,11 +267,9 @@ def _heights(scheme: Scheme, n: int, elliptic, hyperbolic, angle) -> tuple:
         c = mpmath.mpf(float(hyperbolic)) * mpmath.expj(-2 * mpmath.mpf(float(angle)))
     h = {}
     for q in range(K):
-        for s in range(n):
-            value = e * Xe[1 + q]
-            if c is not None:
-                value += mpmath.re(c * hyper[0][q] * mpmath.expjpi(mpmath.mpf(4 * s) / n))
-            h[(q, s)] = Fraction(float(value))
+        saddle = [mpmath.re(c * hyper[0][q] * mpmath.expjpi(mpmath.mpf(4 * s) / n)) for s in range(n)] if c is not None else [0] * n
+        for s, value in enumerate(_rational_saddle(saddle, n)):
+            h[(q, s)] = Fraction(float(e * Xe[1 + q])) + value
     h_O = Fraction(float(e * Xe[0]))
     w = position_weights(scheme, n)
     means = [sum((h[(q, s)] for s in range(n)), Fraction(0)) / n for q in range(K)]
@@ -292,6 +291,34 @@ def _heights(scheme: Scheme, n: int, elliptic, hyperbolic, angle) -> tuple:
     for s in range(n if g else 0):
         h[(g - 1, s)] += move
     return h_O, h
+
+
+def _rational_saddle(values, n: int) -> list[Fraction]:
+    """Heights of n-gon frequency 2 and n - 2 (``values``) as terminating decimals, without frequency 1 where possible.
+
+    For even ``n`` the frequencies ``j`` with ``gcd(j, n) = 2`` (the Galois orbit of 2, which misses 1) span a rational
+    space with integer columns ``b_t(s) = c_(n/2)(s - t)`` (Ramanujan sums): ``values = sum_t values_t/n b_t``, and
+    rounding the coefficients keeps the result in that space, so the tangent masks see none of it. For odd ``n`` the
+    orbit of 2 contains 1 (a rational sequence without frequency 1 has no frequency 2): the values are rounded, and
+    the first moved so that they sum to exactly 0 (as the columns ``b_t`` do).
+    """
+    if n % 2:
+        rounded = [Fraction(float(x)) for x in values]
+        rounded[0] -= sum(rounded, Fraction(0))  # no frequency 0, exactly: the position mask needs no move for it
+        return rounded
+    columns = [_ramanujan_sum(n // 2, k) for k in range(n)]
+    coefficients = [Fraction(float(x / n)) for x in values]
+    return [sum((coefficients[t] * columns[(s - t) % n] for t in range(n)), Fraction(0)) for s in range(n)]
+
+
+def _ramanujan_sum(m: int, k: int) -> int:
+    """``c_m(k)``, the sum of the ``k``-th powers of the primitive ``m``-th roots of unity: ``sum_(d | gcd(m, k)) mu(m/d) d``."""
+    def mobius(x: int) -> int:
+        powers = sp.factorint(x).values()
+        return 0 if any(p > 1 for p in powers) else (-1) ** len(powers)
+
+    g = math.gcd(m, k)
+    return sum(mobius(m // d) * d for d in sp.divisors(g))
 
 
 def _terminates(x: sp.Rational) -> bool:

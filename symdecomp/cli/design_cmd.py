@@ -20,9 +20,9 @@ Two modes (the mathematics is :mod:`symdecomp.analysis.design`):
 file holds the net exactly when its coordinates are terminating decimals: every coordinate is ``p + x u + y v +
 h N`` with doubles ``x, y, h`` and integer ``u, v, N``, so exact in OBJ and OFF when ``--position`` is decimal (PLY
 stores doubles: there the coordinates are rounded once more, and the exact checks hold to double precision). What is
-exact: the position (Catmull-Clark: always; Loop: at valences 3, 4, 6 or with no heights), the normal (no
-hyperbolic heights, or valences where they are rational), the tangent direction; the amounts are measured to
-double precision.
+exact: the position (Catmull-Clark: always; Loop: at valences 3, 4, 6 or with no heights), the normal (without
+``--hyperbolic``, and with it at even valences), the tangent direction; the amounts are measured to double
+precision.
 
 JSON (``--json``): ``{"scheme", "n", "vertex", "ring", "out", "format", "position_exact": ["x", "y", "z"],
 "position", "tangents", "normal", "normal_exact", "tangent_exact", "elliptic", "hyperbolic", "angle", "change"}``
@@ -66,8 +66,8 @@ def register(sub) -> None:
         "(least squares) so that its limit normal is --normal and/or its hyperbolic heights vanish. Writes a mesh file "
         "and reports the achieved values, measured exactly on the written net where they are exact: the position "
         "(Catmull-Clark always, Loop where its mask is rational), the normal and the tangent direction (always without "
-        "--hyperbolic; with it where the saddle's heights can be rational: at n = 5 a rational sequence without "
-        "frequency 1 has no frequency 2 either). Example: symdecomp design --n 5 --normal 0,0,1 --position 1,2,3 "
+        "--hyperbolic; with it at even valences: at odd n a rational sequence without frequency 1 has no frequency 2 "
+        "either). Example: symdecomp design --n 5 --normal 0,0,1 --position 1,2,3 "
         "--elliptic 1/2 --out ring.obj",
     )
     p.add_argument("--scheme", type=scheme_by_name, action=Once, default=None, metavar="NAME|FILE",

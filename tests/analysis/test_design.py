@@ -77,6 +77,20 @@ def test_elliptic_heights_keep_position_and_normal_exact_where_the_mask_is_ratio
         assert a.position == (1, 2, 3)
 
 
+@pytest.mark.parametrize("name, n", [(name, n) for name in SCHEMES for n in (5, 6, 7, 8, 10)])
+def test_a_saddle_keeps_the_normal_exact_exactly_at_even_valences(name, n):
+    """At even n the heights of frequency 2 lie in a rational space without frequency 1 (the Galois orbit of 2 is the
+    j with gcd(j, n) = 2); at odd n the orbit holds 1, so no rational ring has a saddle and an exact normal."""
+    scheme = SCHEMES[name]
+    design = design_ring(scheme, n, normal=(2, 3, 6), position=(1, 0, -1), hyperbolic=Fraction(1, 5), angle=Fraction(2, 5))
+    a = design.achieved
+    assert a.normal_exact is (n % 2 == 0) and a.tangent_exact is True  # t_1 along the default tangent
+    assert np.allclose(a.normal, np.array([2, 3, 6]) / 7, atol=1e-12, rtol=0)
+    assert a.hyperbolic == pytest.approx(0.2, abs=1e-12) and a.angle == pytest.approx(0.4, abs=1e-12)
+    if name == "catmull-clark":
+        assert a.position == (1, 0, -1)
+
+
 def test_a_height_off_frequency_zero_breaks_the_exact_normal():
     """The exactness check can fail: one a_i raised by 1/1024 tilts the normal."""
     design = design_ring(catmull_clark(), 5, normal=(0, 0, 1))

@@ -21,7 +21,8 @@ nothing else.
                    eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
                    clusters of enclosures that may overlap (``clusters``),
                    polynomials over a triangle in Bezier form (``triangle_bezier``), signs of
-                   rational functions of n for every n (``valence_signs``)
+                   rational functions of n for every n (``valence_signs``), exact signs of real
+                   algebraic numbers (``algebraic_sign``)
 ``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,
                    triangle; regular valence, rings and labels, refinement, regular patch), a
                    scheme as data (edge, face, vertex rules on a lattice, for the whole mesh) and
@@ -40,7 +41,8 @@ nothing else.
                    spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
-                   ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning (``tuning``),
+                   ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning (``tuning``; the
+                   regions of free vertex weights by curvature regime, ``tuning_region``),
                    the characteristic polynomial (Section 6, ``charpoly``, ``reduction``), Jordan
                    blocks (``defective``), supports (Section 3, ``support``; for every n from one
                    window of sectors, ``support_window``), rings iterated step by step
@@ -61,7 +63,8 @@ nothing else.
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
-                   the patch evaluator (``patch_eval``)
+                   the patch evaluator (``patch_eval``); the tuning region with Reif's
+                   weight-independent conditions certified (``tuning_c1``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
@@ -76,12 +79,15 @@ nothing else.
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
                    vertices (``plotting.meshes``), Reif's test
-                   (``plotting.characteristic``), Stam's evaluation (``plotting.evaldata``),
-                   matplotlib loaded only when a figure is drawn (``plotting._mpl``)
+                   (``plotting.characteristic``), the tuning region (``plotting.tuning``),
+                   Stam's evaluation (``plotting.evaldata``),
+                   matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
+                   one scheme in one document (``report``: its sections; as LaTeX and PDF,
+                   ``report_tex``; as one HTML file, ``report_html``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``,
-                   ``inspect_cmd``, ``design_cmd``),
+                   ``inspect_cmd``, ``report_cmd``, ``design_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``)
 ``__main__``       python -m symdecomp: the command line

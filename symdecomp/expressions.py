@@ -88,7 +88,7 @@ MAX_OFFSET = 8
 #: Bits a valence (at most 2000 on the command line) or a parameter counts for in :data:`MAX_BITS`.
 VALENCE_BITS = 11
 
-#: The budget and the reason for each bound (the README's table; ``name: (bound, reason)``).
+#: The budget and the reason for each bound (``name: (bound, reason)``; the documentation's table is generated from it).
 BUDGET = {
     "characters": (MAX_LENGTH, "a weight is a formula of a few terms"),
     "operations and numbers": (MAX_NODES, "each one is a step of every exact evaluation"),

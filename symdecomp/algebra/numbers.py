@@ -6,13 +6,13 @@ algebra and polynomials), an Arb ball (certified interval arithmetic) or an mpma
 numeric cross-checks). Each function here takes any exact rational (``int``, ``Fraction``, sympy
 ``Rational``/``Integer``, FLINT ``fmpq``/``fmpz``) and returns one type:
 
-=================  =========================================================================
-:func:`to_fraction`  ``fractions.Fraction``
-:func:`to_fmpq`      ``flint.fmpq``
-:func:`to_sympy`     sympy ``Rational`` (any other sympy object is returned as it is)
-:func:`to_arb`       ``flint.arb`` (exact when the denominator is a power of 2; an ``arb`` is returned as it is)
-:func:`to_mpf`       ``mpmath.mpf`` at the current mpmath precision
-=================  =========================================================================
+======================  =========================================================================
+:func:`to_fraction`     ``fractions.Fraction``
+:func:`to_fmpq`         ``flint.fmpq``
+:func:`to_sympy`        sympy ``Rational`` (any other sympy object is returned as it is)
+:func:`to_arb`          ``flint.arb`` (exact when the denominator is a power of 2; an ``arb`` is returned as it is)
+:func:`to_mpf`          ``mpmath.mpf`` at the current mpmath precision
+======================  =========================================================================
 
 Floats are refused (exact means exact): :class:`~symdecomp.errors.InvalidInputError` names the value.
 

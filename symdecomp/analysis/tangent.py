@@ -29,6 +29,7 @@ from symdecomp.validate import cached, check_frequency, check_int, check_valence
 __all__ = [
     "TangentEigenvalues",
     "tangent_eigenvalues",
+    "complex_at",
     "eigenvector_second_component",
     "invariant_ratio",
     "invariant_ratio_at",
@@ -78,6 +79,14 @@ def tangent_eigenvalues(scheme: Scheme) -> TangentEigenvalues:
         dominant=sp.expand(trace / 2 + root / 2),
         subdominant=sp.expand(trace / 2 - root / 2),
     )
+
+
+def complex_at(scheme: Scheme, n: int) -> bool:
+    """Whether ``M_1`` has complex eigenvalues at valence ``n``: its discriminant (Eq. 34) is negative at
+    ``c = cos(pi/n)``, decided exactly (then the real closed forms of the masks do not apply)."""
+    n = check_valence(n)
+    disc = tangent_eigenvalues(scheme).discriminant.subs(cos_jtheta, sp.cos(sp.pi / n))
+    return bool(disc.is_negative)
 
 
 def eigenvector_second_component(scheme: Scheme, eigenvalue: sp.Expr = LAM) -> sp.Expr:

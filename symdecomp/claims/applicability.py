@@ -29,13 +29,14 @@ from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text, Verbatim
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta as C
 from symdecomp.symbols import n as N
 from symdecomp.symbols import sin_jtheta as SIN
 
-__all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH"]
+__all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH", "closed_form_obstacle"]
 
 
 def _block_term(scheme: Scheme, symbol) -> tuple[str, sp.Expr] | None:
@@ -108,3 +109,15 @@ FACE_NEIGHBOURS = Requirement("a quad mesh (face neighbours b_i)", _no_face_rule
 NO_FREE_PARAMETERS = Requirement("no free parameters", _free_parameters)
 #: Rules of a whole quad mesh (Section 3's supports).
 WHOLE_MESH = Requirement("rules of a whole quad mesh", _not_mesh_rules)
+
+
+def closed_form_obstacle(scheme: Scheme) -> str | None:
+    """Why the paper's closed forms in ``c = cos(j pi/n)`` (Section 5) do not apply to ``scheme`` (``None`` when they do).
+
+    They need a quad scheme with mirror-symmetric rules, so that ``M_j`` depends on ``c`` alone.
+    """
+    if scheme.lattice != PAPER_LATTICE:
+        return f"they are derived for {PAPER_LATTICE} meshes, not {scheme.lattice} meshes"
+    if MIRROR_SYMMETRIC.unmet(scheme) is not None:
+        return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"
+    return None

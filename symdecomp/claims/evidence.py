@@ -85,7 +85,7 @@ def dominant_vs_frequency_zero(scheme: Scheme, last: int) -> tuple[bool, int]:
 
 
 def filtering_evidence(scheme: Scheme, valence: int):
-    """|1-ring after k steps| / lambda_1^k for the component j = n + 1 alone, k = 10, 20, 40 (60 digits)."""
+    """``|1-ring after k steps| / lambda_1^k`` for the component j = n + 1 alone, k = 10, 20, 40 (60 digits)."""
     import mpmath
 
     from symdecomp.schemes.ring import OneRing, subdivide

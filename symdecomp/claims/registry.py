@@ -7,15 +7,17 @@ with the paper's label, its section, its statement, and a *check*: a function re
 
 Statuses:
 
-``proved``     shown symbolically, for every valence ``n`` (and every frequency).
-``verified``   shown for each ``n`` in a stated range, exactly or in certified interval arithmetic.
-``numeric``    agrees to a stated number of digits.
-``refuted``    false; the result carries a counterexample.
-``corrected``  false as printed; a corrected statement is proved, and the correction is shown.
-``undecided``  the check ran but could not decide (a sufficient test failed, intervals overlapped).
+==================  ======================================================================================
+``proved``          shown symbolically, for every valence ``n`` (and every frequency).
+``verified``        shown for each ``n`` in a stated range, exactly or in certified interval arithmetic.
+``numeric``         agrees to a stated number of digits.
+``refuted``         false; the result carries a counterexample.
+``corrected``       false as printed; a corrected statement is proved, and the correction is shown.
+``undecided``       the check ran but could not decide (a sufficient test failed, intervals overlapped).
 ``not applicable``  the statement cannot be evaluated for the given scheme (it is about Catmull-Clark
-               by name, or needs rules the scheme does not have); the evidence says why.
-``error``      the check itself failed to run (never a finding about the paper).
+                    by name, or needs rules the scheme does not have); the evidence says why.
+``error``           the check itself failed to run (never a finding about the paper).
+==================  ======================================================================================
 
 Each result also says the *scope* of its evidence (:class:`Scope`): ``every n`` (symbolic, for every
 valence the statement is about), ``range of n`` (each valence of a finite range), or ``single case``.

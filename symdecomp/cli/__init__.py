@@ -1,6 +1,6 @@
 """The ``symdecomp`` command line. One module per subcommand, each with ``register(sub)``.
 
-Exit codes (also in ``symdecomp --help`` and the README):
+Exit codes (also in ``symdecomp --help`` and the user guide, docs/guide/command-line.md):
 
 ===  =====================================================================================
 0    success
@@ -31,8 +31,8 @@ from symdecomp.errors import InternalError, OutputWriteError, ResourceLimitError
 __all__ = ["main", "entry", "build_parser", "EXIT_CODES"]
 
 #: Subcommand modules of this package, in the order ``--help`` lists them.
-COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd", "c1_cmd", "evaldata_cmd",
-            "inspect_cmd", "design_cmd")
+COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd", "c1_cmd",
+            "evaldata_cmd", "inspect_cmd", "report_cmd", "design_cmd")
 
 #: The exit codes of every command.
 EXIT_CODES = {

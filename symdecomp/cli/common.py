@@ -15,7 +15,9 @@ import os
 import re
 import sys
 
+from symdecomp.claims.applicability import closed_form_obstacle
 from symdecomp.errors import InvalidInputError, SymdecompError
+from symdecomp.output.report import MAX_VALENCES as MAX_REPORT_VALENCE
 from symdecomp.parallel import parse_executor
 from symdecomp.schemes.files import SCHEMES, load_scheme
 from symdecomp.schemes.lattice import PAPER_LATTICE
@@ -70,6 +72,8 @@ LIMITS = {
     "c1 --depth": (MAX_DEPTH, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),
+    "report": (MAX_REPORT_VALENCE, "a report's tables grow with every valence (2N + 1 eigenvalues and mask weights) and its "
+               "eigen-polygon figure has N panels a row; 3:8 takes about half a minute"),
     "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 256 bits "
                  "(a run's memory is estimated and checked before it starts)"),
 }
@@ -215,7 +219,7 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         default=SCHEMES["catmull-clark"](),
         metavar="NAME|FILE",
         help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
-        "(format in the README)",
+        "(the format: docs, File formats; the docstring of symdecomp.schemes.files)",
     )
 
 
@@ -264,20 +268,6 @@ def refuse_non_quad(scheme: Scheme, command: str) -> None:
             f"a {scheme.lattice}-mesh "
             "scheme is analysed by spectrum, check, charpoly, masks, oracle, c1 and evaldata"
         )
-
-
-def closed_form_obstacle(scheme: Scheme) -> str | None:
-    """Why the paper's closed forms in ``c = cos(j pi/n)`` (Section 5) do not apply to ``scheme`` (``None`` when they do).
-
-    They need a quad scheme with mirror-symmetric rules, so that ``M_j`` depends on ``c`` alone.
-    """
-    from symdecomp.claims.applicability import MIRROR_SYMMETRIC
-
-    if scheme.lattice != PAPER_LATTICE:
-        return f"they are derived for {PAPER_LATTICE} meshes, not {scheme.lattice} meshes"
-    if MIRROR_SYMMETRIC.unmet(scheme) is not None:
-        return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"
-    return None
 
 
 def check_scheme_valences(args) -> None:

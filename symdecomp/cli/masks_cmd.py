@@ -21,14 +21,11 @@ from __future__ import annotations
 
 import sys
 
-import sympy as sp
-
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.analysis.tangent import tangent_eigenvalues
+from symdecomp.analysis.tangent import complex_at
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
 from symdecomp.errors import SymdecompError
-from symdecomp.symbols import cos_jtheta
 from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
@@ -69,12 +66,6 @@ def lambda_1_subdominance(scheme, n: int) -> tuple[bool, str, bool]:
     return False, r.reason, r.one_simple
 
 
-def _complex_lambda_1(scheme, n: int) -> bool:
-    """``M_1`` has complex eigenvalues at valence ``n``: its discriminant is negative at ``c = cos(pi/n)`` (decided exactly)."""
-    disc = tangent_eigenvalues(scheme).discriminant.subs(cos_jtheta, sp.cos(sp.pi / n))
-    return bool(disc.is_negative)
-
-
 def _header(args, data, certified: bool, why: str) -> str:
     what = "subdominant eigenvalue lambda_1" if certified else "lambda_1 (NOT the subdominant eigenvalue: " + why + ")"
     rings = f", {args.rings}-ring" if general_path(args) or closed_form_obstacle(args.scheme) else ""
@@ -109,7 +100,7 @@ def run(args) -> int:
               "tangent masks", file=sys.stderr)
         return 1
     # no closed forms (or real closed forms for a complex lambda_1): the any-scheme route, from Arb balls
-    if general_path(args) or closed_form_obstacle(args.scheme) or _complex_lambda_1(args.scheme, args.n):
+    if general_path(args) or closed_form_obstacle(args.scheme) or complex_at(args.scheme, args.n):
         return _run_general(args, certified, why)
     data = limit_masks_at(args.scheme, args.n).as_json(args.digits)
     if args.json:

@@ -22,11 +22,13 @@ Loop (JSON only; the binary layout is Catmull-Clark's): ``{"format": "stam-loop"
 "nmax", "digits", "layout", "valences": [{"n", "values", "inverse", "phi": [Phi0, Phi1, Phi2],
 "jordan": [{"row", "column", "value"}]}]}`` with ``K = N + 6``: ``values[K]``; ``inverse[K*K]``
 (``V^-1``, element ``(i, j)`` at ``i + K*j``); ``Phi_k[K*12]`` (element ``(i, l)`` at ``i + K*l``:
-box-spline coefficient ``l`` of eigenfunction ``i`` on sub-patch ``k``); ``jordan`` lists the
+box-spline coefficient ``l`` of eigenfunction ``i`` on sub-patch ``k``, ``l`` in the order of
+:data:`symdecomp.schemes.box_spline.BOX_POINTS`); ``jordan`` lists the
 entries ``N[row, column] = value`` of ``V^-1 A V = diag(values) + N`` (empty unless ``A`` is
 not diagonalizable: Loop at ``N = 3``). Control points, sub-patches and the evaluation formula:
 :mod:`symdecomp.schemes.patch` and :mod:`symdecomp.analysis.evaluation`; the
-``layout`` string says the same in one line.
+``layout`` string says the same in one line. :func:`read_binary` and :func:`read_json` read the
+files back.
 
 The files are streamed valence by valence (:func:`binary_chunks`, :func:`json_chunks`: nothing
 holds the whole file) through :mod:`symdecomp.cli.files` (checked first, replaced atomically,

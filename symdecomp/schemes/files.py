@@ -1,7 +1,12 @@
 """Schemes written in TOML files, and schemes looked up by name.
 
+This docstring is the one description of the scheme-file format (the documentation's page on it
+is this text, and ``tests/schemes/test_scheme_file_format.py`` reads its examples with the parser).
+Every command that works on a scheme takes ``--scheme NAME|FILE``: a name of :data:`SCHEMES` or
+such a file.
+
 A scheme of the paper's shape (Eq. 14-16) is three affine rules on the 1-ring of a vertex of
-valence ``n``. Standard Catmull-Clark, written as a file::
+valence ``n``, written as a TOML file. Standard Catmull-Clark::
 
     name = "catmull-clark"
     [edge]            # new a_i = O*w + sum_k a[k]*a_{i+k} + sum_k b[k]*b_{i+k}
@@ -16,12 +21,31 @@ valence ``n``. Standard Catmull-Clark, written as a file::
     a = "3/(2*n**2)"
     b = "1/(4*n**2)"
 
+**One model: a scheme is rules for the whole mesh.** The edge rule makes every new edge point and
+the face rule every new face point, anywhere in the mesh; the vertex rule makes the new point of
+every vertex from that vertex's own valence: at the extraordinary vertex with its valence ``n``, at
+every other vertex (all of the regular valence) with ``n = 4`` (quads) or ``n = 6`` (triangles). So
+the scheme's regular rules are its rules at the regular valence, and every command reads the same
+rules: the 1-ring commands at the extraordinary vertex, ``--rings 2/3``, ``evaldata`` and ``c1`` on
+the whole neighbourhood. A scheme tuned at extraordinary vertices only writes a vertex weight that
+is the standard one at the regular valence (e.g. ``a = "3/32 + (n - 4)*(...)"``); the rules must be
+defined there, and real (checked when the file is read). The C1 test knows the regular patches of
+Catmull-Clark and Loop: it applies when all the rules at the regular valence, the vertex rule
+included, are theirs, and says why in one line otherwise.
+
 Every weight is exact: an integer or a string read by
 :func:`symdecomp.expressions.parse_expression` (rationals, ``n``, the names listed in an optional
 ``parameters = ["alpha", "beta"]``, ``pi``, ``sqrt``, ``cos``, ``sin``), within the expression budget
-(:data:`symdecomp.expressions.BUDGET`); nothing is evaluated. Offsets are integers of magnitude at most
-:data:`~symdecomp.expressions.MAX_OFFSET` (``"-2"``, ``"3"``): a stencil wider than a valence a command
-uses is refused at that valence. ``[vertex]`` may also give ``O``; it must then equal ``1 - n*a - n*b``.
+(:data:`symdecomp.expressions.BUDGET`); nothing is evaluated. A parameter lives in its own namespace
+(a symbol of its own class, never equal to the toolkit's ``c = cos(j pi/n)`` or to any symbol of a
+derivation); the names the derivations print for their own symbols are reserved and refused in one
+line: ``n``, ``j``, ``c``, ``s``, ``omega``, ``lambda``, ``pi``, ``sqrt``, ``cos``, ``sin``. ``alpha``
+and ``beta`` are the paper's vertex weights (tuning reads them). Parameter names are letters and
+digits (a letter first, at most 16). ``name`` is one line of printable text (at most 100 characters), shown literally wherever it
+appears. Offsets are integers of magnitude at most :data:`~symdecomp.expressions.MAX_OFFSET`
+(``"-2"``, ``"3"``: wider stencils than -1..1): a stencil wider than a valence a command uses is
+refused at that valence (the valence must exceed the stencil's width). ``[vertex]`` may also give
+``O``; it must then equal ``1 - n*a - n*b``.
 
 ``mesh = "quad"`` is the default. A scheme on triangle meshes (Loop's shape, see
 :mod:`symdecomp.schemes.loop`) says ``mesh = "triangle"``; its 1-ring is ``(O, a_0..a_{n-1})``
@@ -37,11 +61,18 @@ the vertex rule is one weight ``beta`` on each neighbour (``O`` gets ``1 - n*bet
     [vertex]          # new O = (1 - n*beta)*O + beta*sum_i a_i
     beta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"
 
-A cosine of a rational multiple of ``pi`` stays exact (an algebraic number; the spectra and
-certificates compute with it in a cyclotomic field).
+``beta`` may contain cosines and sines of rational multiples of ``pi`` (``cos(2*pi/n)``,
+``cos(4*pi/n)``): at each valence they are exact algebraic numbers, computed with in a cyclotomic
+field, never as floats (a weight outside cyclotomic fields, such as ``sqrt(2)``, is refused by the
+spectra with one line). A file equal to Loop gives Loop's results in every command.
 
-Every problem is reported as one :class:`~symdecomp.errors.InvalidSchemeError` (or
-:class:`~symdecomp.errors.NotAffineError`) naming the file and the key:
+A rule whose weights do not sum to 1, a float weight, an unknown name, a malformed offset, an
+unknown key, a ``[face]`` or a ``b`` weight in a triangle file, or a triangle ``[vertex]`` without
+``beta`` is refused: every problem is reported as one :class:`~symdecomp.errors.InvalidSchemeError`
+(or :class:`~symdecomp.errors.NotAffineError`) naming the file and the key; on the command line it
+is one line and exit status 2 (``symdecomp claims: error: argument --scheme: my.toml: [face] O:
+0.25 is a float; give an exact rational such as "3/8" (see 'symdecomp claims --help')``). In Python: ``load_scheme("my.toml")``, then e.g.
+``symdecomp.check_claim("Remark 5.1", scheme)``. A float weight:
 
 >>> scheme_from_text('[edge]\\nO = 0.375', source="s.toml")
 Traceback (most recent call last):

@@ -279,12 +279,14 @@ class TriangleLattice(Lattice):
         return 1, 1 - x, 1 - y, -1
 
 
+#: The quad lattice (Catmull-Clark's meshes): regular valence 4.
 QUAD = QuadLattice(
     "quad", 4, True, "bicubic B-spline", "three bicubic sub-patches",
     "Reif's test: spectrum per frequency (Arb, exact at frequency 0); Jacobian of the three bicubic "
     "sub-patches in Bernstein-Bezier form (bidegree 5x5, Arb, de Casteljau); winding number of the inner boundary",
     tangents_along_parameters=False,
 )
+#: The triangle lattice (Loop's meshes): regular valence 6.
 TRIANGLE = TriangleLattice(
     "triangle", 6, False, "quartic box-spline", "three quartic box-spline sub-patches (degree-6 Jacobian)",
     "Reif's test: spectrum per frequency (Arb, exact in Q(e^{2 pi i/n}) at frequency 0 and at ties); Jacobian of the "

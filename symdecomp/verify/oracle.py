@@ -4,23 +4,23 @@ For a valence ``n`` a random 1-ring in ``R^3`` (seeded) is pushed through OpenSu
 uniform Catmull-Clark refinement (:mod:`symdecomp.verify.opensubdiv`), and what OpenSubdiv computes
 is compared with what the toolkit predicts from the scheme's rules:
 
-======================  ===========================================  ======================
-prediction              toolkit side                                 expected agreement
-======================  ===========================================  ======================
-one-step matrix         ``subdivision_matrix`` (exact) times the     double precision
+======================  =============================================  ============================
+prediction              toolkit side                                   expected agreement
+======================  =============================================  ============================
+one-step matrix         ``subdivision_matrix`` (exact) times the       double precision
                         ring OpenSubdiv started the step from
-1-ring locality         OpenSubdiv on the 1-ring alone vs on a       double precision
+1-ring locality         OpenSubdiv on the 1-ring alone vs on a         double precision
                         3-ring mesh containing it
-limit mask              left eigenvector of eigenvalue 1 of the      double precision
+limit mask              left eigenvector of eigenvalue 1 of the        double precision
                         exact matrix vs OpenSubdiv's ``Limit``
-limit position          ``O_k -> l . ring_0``                        error ~ mu_2^k
-shrink rate, freq. j    ``lambda_dom(j)`` (Eq. 34,                   ~ (lambda_sub/lambda_dom)^k
+limit position          ``O_k -> l . ring_0``                          error ~ mu_2^k
+shrink rate, freq. j    ``lambda_dom(j)`` (Eq. 34,                     ~ (lambda_sub/lambda_dom)^k
                         ``tangent_eigenvalues``); ``j = 0``: the
                         subdominant ``mu_2`` of Eq. 43
-Eq. 39 ratio            ``B^1/A^1 -> invariant_ratio_at(n, 1)``      ~ (lambda_sub/lambda_dom)^k
-elliptic ratio Eq. 44   ``(bbar-O)/(abar-O) -> (u_b-u_O)/(u_a-u_O)`` ~ (mu_3/mu_2)^k
-hyperbolic decay        shrink rate of frequency 2                   as for frequency 2
-======================  ===========================================  ======================
+Eq. 39 ratio            ``B^1/A^1 -> invariant_ratio_at(n, 1)``        ~ (lambda_sub/lambda_dom)^k
+elliptic ratio Eq. 44   ``(bbar-O)/(abar-O) -> (u_b-u_O)/(u_a-u_O)``   ~ (mu_3/mu_2)^k
+hyperbolic decay        shrink rate of frequency 2                     as for frequency 2
+======================  =============================================  ============================
 
 Levels are chained one at a time: the 1-ring read back after a step is the next step's
 input mesh (the new 1-ring of an interior vertex depends only on its old 1-ring, which the

@@ -31,10 +31,12 @@ from symdecomp.analysis.ring_spectrum import frequency_factors
 from symdecomp.analysis.support import limit_mask
 from symdecomp.analysis.support_window import window
 from symdecomp.analysis.tuning import eigenvalue_quadratic, ratio_target
+from symdecomp.analysis.tuning_region import tuning_region
 from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError, InvalidTypeError, SymdecompError
 from symdecomp.schemes.box_spline import regular_limit_mask, regular_patch
 from symdecomp.verify.certify import symmetric_functions
 from symdecomp.verify.oracle import toolkit_predictions
+from symdecomp.verify.tuning_c1 import certified_tuning_region
 
 CC, LOOP = sd.catmull_clark(), sd.loop()
 FREE = sd.catmull_clark(sd.symbols.alpha, sd.symbols.beta)
@@ -77,6 +79,8 @@ INTEGERS = [
     (sd.ring_masks, "n", dict(scheme=LOOP), 5, 3, False),
     (sd.ring_masks, "rings", dict(scheme=LOOP, n=5), 1, 1, True),
     (sd.ring_masks, "digits", dict(scheme=LOOP, n=5), 10, 1, True),
+    (tuning_region, "n", dict(scheme=FREE), 5, 3, False),
+    (certified_tuning_region, "n", dict(scheme=FREE), 4, 3, False),
     (sd.certify_ring, "n", dict(scheme=LOOP), 5, 3, False),
     (sd.certify_ring, "rings", dict(scheme=LOOP, n=5), 1, 1, True),
     (sd.certify_ring, "digits", dict(scheme=LOOP, n=5), 10, 1, True),
@@ -163,6 +167,7 @@ SCHEMES = [
     (subdivision_matrix_numeric, dict(n=5)),
     (eigenvalue_quadratic, dict()),
     (ratio_target, dict()),
+    (tuning_region, dict(n=5)),
     (regular_limit_mask, dict()),
     (regular_patch, dict()),
     (position_weights, dict(n=5)),

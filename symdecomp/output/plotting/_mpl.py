@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import importlib
 
-__all__ = ["new_figure", "label_axes", "require_matplotlib"]
+__all__ = ["new_figure", "label_axes", "require_matplotlib", "figure_bytes"]
 
 
 def require_matplotlib():
@@ -37,3 +37,27 @@ def label_axes(ax, xlabel: str, ylabel: str, title: str, **legend) -> None:
     ax.set_title(title)
     ax.legend(fontsize=8, **legend)
     ax.grid(alpha=0.3)
+
+
+#: The metadata a saved figure carries, per format: no date, the same creator every time.
+_METADATA = {
+    "pdf": {"Creator": "symdecomp", "Producer": "symdecomp", "CreationDate": None},
+    "svg": {"Creator": "symdecomp", "Date": None},
+}
+
+
+def figure_bytes(fig, fmt: str) -> bytes:
+    """``fig`` saved as ``fmt`` (``pdf`` or ``svg``) with the same bytes every time: no dates, fixed
+    metadata, SVG element ids from a fixed salt (matplotlib draws them from a random one), and the layout
+    fixed at the first save (a constrained layout moves by rounding each time it runs)."""
+    import io
+
+    import matplotlib
+
+    buffer = io.BytesIO()
+    if fig.get_layout_engine() is not None:  # lay it out once and keep it: each further layout moves it a little
+        fig.draw_without_rendering()
+        fig.set_layout_engine("none")
+    with matplotlib.rc_context({"svg.hashsalt": "symdecomp", "svg.fonttype": "path", "pdf.compression": 6}):
+        fig.savefig(buffer, format=fmt, metadata=_METADATA[fmt])
+    return buffer.getvalue()

@@ -1,0 +1,143 @@
+"""The README is a front door and the manual is the documentation site in docs/ (issue 23).
+
+The README is short and starts with the two commands CI and readers run; the site's generated
+pages cover every command of the parser and every module of the module map; the site builds with
+warnings as errors (slow: it executes the notebooks)."""
+
+from __future__ import annotations
+
+import importlib.util
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = next(p for p in Path(__file__).resolve().parents if (p / "pyproject.toml").exists())
+DOCS = ROOT / "docs"
+README = (ROOT / "README.md").read_text()
+
+
+def _extension():
+    spec = importlib.util.spec_from_file_location("symdecomp_docs", DOCS / "_ext" / "symdecomp_docs.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+EXT = _extension()
+
+
+def test_the_readme_is_short_and_starts_with_the_two_commands():
+    lines = README.splitlines()
+    assert len(lines) <= 120
+    assert lines[:9] == [
+        "# symdecomp", "",
+        "```bash", "pip install -e . && symdecomp claims", "```", "",
+        "```bash", 'pip install -e ".[test]" && python -m pytest', "```",
+    ]
+
+
+def test_the_readme_holds_no_copy_of_a_reference_section():
+    """The formats, the exit codes and the limits have their homes in docs/ and the code."""
+    assert "[edge]" not in README and '"format": "stam' not in README
+    assert "| exit code |" not in README and "| bound |" not in README
+
+
+def test_the_readme_tour_shows_real_output(capsys):
+    """The tour's spectrum is what the command prints (the lines shown, up to the ellipsis)."""
+    from symdecomp.cli import main
+
+    shown = README.split("$ symdecomp spectrum 5\n", 1)[1].split("\n...\n", 1)[0].splitlines()
+    assert len(shown) >= 3
+    assert main(["spectrum", "5"]) == 0
+    printed = capsys.readouterr().out.splitlines()
+    assert printed[: len(shown)] == shown
+
+
+def test_the_readme_links_resolve():
+    for target in re.findall(r"\]\((docs/[^)#]+)\)", README):
+        assert (ROOT / target).is_file(), target
+
+
+def test_the_readme_docs_command_is_the_ci_one():
+    command = re.search(r'pip install -e "\.\[docs\]" && (python -m sphinx .*)', README).group(1)
+    assert command in (ROOT / ".ci" / "run").read_text()
+    assert "docs" in __import__("tomllib").loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]
+
+
+def test_every_subcommand_is_in_the_command_reference():
+    from symdecomp.cli import build_parser
+
+    text = EXT.command_reference()
+    commands = EXT.subcommands(build_parser())
+    assert len(commands) >= 10
+    for name, parser in commands.items():
+        section = text.split(f"``symdecomp {name}``\n", 1)[1].split("\n.. _command-", 1)[0]
+        assert f"usage: symdecomp {name}" in section
+        for action in parser._actions:
+            for option in action.option_strings:
+                assert option in section, f"symdecomp {name} {option}"
+    assert (DOCS / "commands.rst").read_text().count(".. symdecomp-commands::") == 1
+
+
+def test_every_exit_code_is_explained_in_the_guide():
+    from symdecomp.cli import EXIT_CODES
+
+    guide = (DOCS / "guide" / "command-line.md").read_text()
+    rows = dict(re.findall(r"^\| (\d+) \| (.+) \|$", guide, re.M))
+    assert sorted(map(int, rows)) == sorted(EXIT_CODES)
+    assert "```{symdecomp-table} limits" in guide and "```{symdecomp-table} budget" in guide
+
+
+def _map_modules():
+    import symdecomp
+
+    return EXT.map_modules(symdecomp.__doc__)
+
+
+def test_every_module_of_the_map_has_an_api_page_entry():
+    import symdecomp
+
+    rows = [head.rstrip("/") for head, _, _ in EXT.map_rows(symdecomp.__doc__)]
+    pages = "".join(path.read_text() for path in (DOCS / "api").glob("*.rst"))
+    covered = re.findall(r"^\.\. symdecomp-api:: (\S+)$", pages, re.M)
+    assert sorted(covered) == sorted(rows), "each row of the module map has its API page"
+    generated = "".join(EXT.api_reference(row) for row in covered)
+    for module in _map_modules():
+        name = f"symdecomp.{module}"
+        assert f".. automodule:: {name}\n" in generated or f".. py:module:: {name}\n" in generated, name
+
+
+def test_the_docs_read_every_module_of_the_map():
+    """The pages are generated from what this reader finds in the map: every module of the package, once."""
+    import pkgutil
+
+    import symdecomp
+
+    found = {m.name.removeprefix("symdecomp.") for m in pkgutil.walk_packages(symdecomp.__path__, "symdecomp.")}
+    assert sorted(_map_modules()) == sorted(found)
+    with pytest.raises(ValueError, match="top-level"):
+        EXT.map_rows("========  ====\n``a``     ``x``\n========  ====\n")
+
+
+def test_the_notebook_pages_are_the_notebooks(tmp_path):
+    copied = EXT.copy_notebooks(tmp_path)
+    assert [p.name for p in copied] == sorted(p.name for p in (ROOT / "notebooks").glob("*.ipynb"))
+    assert all(p.read_bytes() == (ROOT / "notebooks" / p.name).read_bytes() for p in copied)
+
+
+@pytest.mark.slow
+def test_the_site_builds_with_warnings_as_errors(tmp_path):
+    pytest.importorskip("sphinx")
+    pytest.importorskip("myst_nb")
+    result = subprocess.run(
+        [sys.executable, "-m", "sphinx", "-W", "-q", "-b", "html", "-d", str(tmp_path / "doctrees"), str(DOCS), str(tmp_path / "html")],
+        cwd=ROOT, capture_output=True, text=True, timeout=1200,
+    )
+    assert result.returncode == 0, result.stderr[-3000:]
+    commands = (tmp_path / "html" / "commands.html").read_text()
+    assert 'id="command-check"' in commands and "usage: symdecomp check" in commands
+    guide = (tmp_path / "html" / "guide" / "command-line.html").read_text()
+    assert ".. list-table::" not in guide and guide.count("<table") >= 3, "the generated tables are tables on a Markdown page too"

@@ -56,7 +56,9 @@ nothing else.
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); second-order characteristic maps, the elliptic and hyperbolic
-                   height fields on the ring (``second_order``)
+                   height fields on the ring (``second_order``); control nets designed for prescribed
+                   limit properties (``design``), and the least change of a 1-ring for a normal or no
+                   hyperbolic part (``redesign``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -91,7 +93,7 @@ nothing else.
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``,
-                   ``inspect_cmd``, ``report_cmd``),
+                   ``inspect_cmd``, ``report_cmd``, ``design_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``)
 ``__main__``       python -m symdecomp: the command line
@@ -107,6 +109,7 @@ from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigen
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
+from symdecomp.analysis.design import LimitFrame, RingDesign, design_ring, limit_frame
 from symdecomp.analysis.eigendata import certified_eigendata
 from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
@@ -115,6 +118,7 @@ from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix,
 from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
 from symdecomp.analysis.inspection import MeshInspection, VertexInspection, inspect_mesh, inspect_vertex
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
+from symdecomp.analysis.redesign import redesign_vertex
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_masks import ring_masks
@@ -207,6 +211,11 @@ __all__ = [
     "inspect_vertex",
     "MeshInspection",
     "VertexInspection",
+    "design_ring",
+    "redesign_vertex",
+    "limit_frame",
+    "RingDesign",
+    "LimitFrame",
     # any scheme (triangle meshes, Loop) and K-ring matrices
     "Lattice",
     "QUAD",

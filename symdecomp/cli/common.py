@@ -63,6 +63,7 @@ LIMITS = {
                         "like N^3; N = 256 takes minutes"),
     "check --certify --route structural": (10000, "the structural route's memory grows like N (about 10 kB per valence "
                                            "and ring squared); N = 1000 takes about a second on the 1-ring"),
+    "design": (64, "exact checks in Q(zeta_4N) and 40-digit eigenvectors per frequency: N = 64 takes seconds"),
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
     "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),

@@ -60,6 +60,7 @@ INTEGERS = [
     (sd.closed_form_spectrum, "digits", dict(scheme=CC, n=5), 10, 1, True),
     (sd.elliptic_defect_table, "digits", dict(scheme=CC, valences=[5]), 10, 1, True),
     (sd.tune, "n", dict(scheme=CC), 5, 3, False),
+    (sd.design_ring, "n", dict(scheme=CC, normal=(0, 0, 1)), 5, 3, True),
     (sd.hyperbolic_ring, "n", dict(), 5, 3, False),
     (sd.iterate_hyperbolic_ring, "n", dict(scheme=CC, steps=1), 5, 3, False),
     (sd.iterate_hyperbolic_ring, "steps", dict(scheme=CC, n=5), 1, 0, True),
@@ -180,6 +181,9 @@ SCHEMES = [
     (position_weights, dict(n=5)),
     (sd.inspect_vertex, dict(mesh=CUBE, vertex=0)),
     (sd.inspect_mesh, dict(mesh=CUBE)),
+    (sd.design_ring, dict(n=5, normal=(0, 0, 1))),
+    (sd.redesign_vertex, dict(mesh=CUBE, vertex=0, normal=(-1, -1, -1))),
+    (sd.limit_frame, dict(mesh=CUBE, vertex=0)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

@@ -37,7 +37,7 @@ myst_heading_anchors = 3
 autodoc_default_options = {"members": True, "ignore-module-all": True, "member-order": "bysource"}
 autodoc_typehints = "description"
 
-# The committed notebooks carry no outputs (tests/test_notebooks.py), so the site runs them: the
+# The committed notebooks carry no outputs (tests/project/test_notebooks.py), so the site runs them: the
 # figures are those of the current code. Together they take about a minute and a half on two shared
 # cores; the cache (under _build) reruns only the notebooks that changed.
 nb_execution_mode = "cache"

@@ -46,7 +46,8 @@ nothing else.
                    nets (``characteristic``), where a 1-ring component starts on one eigenvector
                    of M_j (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
-                   (``ring_charpoly``), masks (``ring_masks``); the patch's certified eigen-data
+                   (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
+                   vertex mean (``curvature``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
@@ -56,12 +57,14 @@ nothing else.
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
-                   the patch evaluator (``patch_eval``)
+                   the patch evaluator (``patch_eval``); the certified second-order eigenstructure
+                   and curvature regime (``curvature``) and the artifact indicators (``artifacts``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
                    ``s6_cb_matrices``, ``s6_cb_subdivision``, ``s6_closing``,
-                   ``s6_full_spectrum``) and their registry (``registry``); every claim is checked
+                   ``s6_full_spectrum``), the toolkit's own claims beyond the paper (curvature and
+                   shape, ``b1_curvature``) and their registry (``registry``); every claim is checked
                    for a scheme, within a time budget, and no verdict rests on a free parameter or an
                    undefined value (``guards``); what several checks share: the requirements a claim declares
                    (``applicability``), computed evidence (``evidence``), the paper's notation
@@ -74,7 +77,8 @@ nothing else.
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
-                   ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``),
+                   ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
+                   ``evaldata_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``)
 ``__main__``       python -m symdecomp: the command line

@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import enum
 
-from symdecomp.errors import InvalidInputError
 from symdecomp.validate import check_int, check_valence
 
 __all__ = ["CurvatureRegime", "curvature_regime", "frequency_kind", "REGIME_TEXT"]
@@ -70,8 +69,7 @@ def curvature_regime(comparison: int | None, *, defective: bool = False) -> Curv
     """
     if comparison is None:
         return CurvatureRegime.UNDECIDED
-    if isinstance(comparison, bool) or comparison not in (-1, 0, 1):
-        raise InvalidInputError(f"comparison must be -1, 0, 1 or None (the sign of |mu| - lambda_1^2), got {comparison!r:.40}")
+    comparison = check_int(comparison, "comparison (the sign of |mu| - lambda_1^2)", minimum=-1, maximum=1)
     if comparison > 0 or (comparison == 0 and defective):
         return CurvatureRegime.UNBOUNDED
     return CurvatureRegime.ZERO if comparison < 0 else CurvatureRegime.BOUNDED

@@ -93,6 +93,7 @@ from symdecomp.algebra.cbmatrix import *  # noqa: F403 - its __all__ is the Sect
 from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.curvature import CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
 from symdecomp.analysis.eigendata import certified_eigendata
 from symdecomp.analysis.ellipses import ellipse_axes
@@ -120,8 +121,10 @@ from symdecomp.schemes.patch import patch_matrices
 from symdecomp.schemes.refinement import central_rings, mesh_rules, refine
 from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
+from symdecomp.verify.artifacts import ArtifactIndicators, artifact_indicators
 from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
+from symdecomp.verify.curvature import CurvatureResult, second_order_eigenstructure
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import C1Verdict, CrossCheckResult, CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
@@ -211,6 +214,14 @@ __all__ = [
     "c1_test",
     "C1Result",
     "C1Verdict",
+    # curvature and artifacts at an extraordinary vertex (issue 21)
+    "CurvatureRegime",
+    "curvature_regime",
+    "frequency_kind",
+    "second_order_eigenstructure",
+    "CurvatureResult",
+    "artifact_indicators",
+    "ArtifactIndicators",
     "CrossCheckStatus",
     "CrossCheckResult",
     "exact_subdivision_matrix",

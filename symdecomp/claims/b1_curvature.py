@@ -165,16 +165,21 @@ def _loop_weight(scheme: Scheme) -> CheckResult:
     requires=(NO_FREE_PARAMETERS,),
 )
 def _regular(scheme: Scheme) -> CheckResult:
+    return check_regular(scheme, 3)
+
+
+def check_regular(scheme: Scheme, multiplicity: int) -> CheckResult:
+    """At the regular valence: ``mu = lambda_1^2`` exactly, with ``multiplicity`` copies (printed: 3), bounded curvature."""
     n = scheme.lattice.regular_valence
     r = second_order_eigenstructure(scheme, n)
     frequencies = sp.FiniteSet(*(e.frequency for e in r.mu))
     steps = (Step(f"The eigenvalues of largest modulus after 1 and $\\lambda_1$ at $n = {n}$, their frequencies", frequencies),)
-    if r.regime is CurvatureRegime.BOUNDED and r.mu_multiplicity == 3 and all(e.exact for e in r.mu):
+    if r.regime is CurvatureRegime.BOUNDED and r.mu_multiplicity == multiplicity and all(e.exact for e in r.mu):
         return CheckResult(Status.VERIFIED, Text(f"at n = {n}: ", eq(sp.Abs(MU), lambda_1**2), " exactly (",
                                                  eq(lambda_1**2, _number(abs(r.lambda1) ** 2)), "), at the frequencies ", frequencies,
                                                  f" with multiplicity {r.mu_multiplicity}: the curvature is bounded"),
                            steps=steps, valences=(n, n))
     if r.regime is CurvatureRegime.UNDECIDED:
         return CheckResult(Status.UNDECIDED, Verbatim(r.reason), steps=steps)
-    what = Text(Verbatim(scheme.name), f" at n = {n}: ", _computed(r), f"; multiplicity {r.mu_multiplicity}")
+    what = Text(Verbatim(scheme.name), f" at n = {n}: ", _computed(r), f"; multiplicity {r.mu_multiplicity}, not {multiplicity}")
     return CheckResult(Status.REFUTED, what, counterexample=what, steps=steps)

@@ -47,7 +47,7 @@ nothing else.
                    of M_j (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
                    (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
-                   vertex mean (``curvature``: mu against lambda_1^2); the patch's certified eigen-data
+                   vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
@@ -58,7 +58,7 @@ nothing else.
                    Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
                    the patch evaluator (``patch_eval``); the certified second-order eigenstructure
-                   and curvature regime (``curvature``) and the artifact indicators (``artifacts``)
+                   and curvature regime (``second_order_spectrum``) and the artifact indicators (``artifacts``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
@@ -93,7 +93,7 @@ from symdecomp.algebra.cbmatrix import *  # noqa: F403 - its __all__ is the Sect
 from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.analysis.curvature import CurvatureRegime, curvature_regime, frequency_kind
+from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
 from symdecomp.analysis.eigendata import certified_eigendata
 from symdecomp.analysis.ellipses import ellipse_axes
@@ -124,10 +124,10 @@ from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark,
 from symdecomp.verify.artifacts import ArtifactIndicators, artifact_indicators
 from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
-from symdecomp.verify.curvature import CurvatureResult, second_order_eigenstructure
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import C1Verdict, CrossCheckResult, CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
+from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
 
 __version__ = "0.1.0"
 

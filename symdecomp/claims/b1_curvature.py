@@ -2,7 +2,7 @@
 
 The paper ends: "In the future we plan to use the technique presented here to study more systematically
 artifacts on subdivision surfaces." These claims do so for the curvature: the regime at each valence
-(:mod:`symdecomp.verify.curvature`: ``|mu|`` against ``lambda_1^2`` on the 2-ring matrix, certified,
+(:mod:`symdecomp.verify.second_order_spectrum`: ``|mu|`` against ``lambda_1^2`` on the 2-ring matrix, certified,
 exact on ties), against what the shape literature reports.
 
 Sources, and what could be checked of them here: K. Karciauskas, J. Peters, U. Reif, *Shape
@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.analysis.curvature import CurvatureRegime
+from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
@@ -31,7 +31,7 @@ from symdecomp.schemes.lattice import LATTICES
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.verify.curvature import CurvatureResult, second_order_eigenstructure
+from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
 
 #: The valences of the tables (about a second per scheme; ``symdecomp artifacts`` does more).
 VALENCES = (3, 64)

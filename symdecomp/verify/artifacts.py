@@ -1,6 +1,6 @@
 """Artifact indicators at an extraordinary vertex, certified, for any scheme the C1 test reads (issue 21, item 4).
 
-Each indicator is computed from the 2-ring matrix of :mod:`symdecomp.verify.curvature` at one valence;
+Each indicator is computed from the 2-ring matrix of :mod:`symdecomp.verify.second_order_spectrum` at one valence;
 its source:
 
 * **Density** (``lambda_1`` against the regular ``1/2``): a subdivision step scales the rings around the
@@ -19,7 +19,7 @@ its source:
   ``(2s + 1) pi / n``) get ``Re(y_b omega^-s)`` with ``y`` the left eigenvector of ``M_1`` for
   ``lambda_1`` (``y_a = 1``), which follows the direction iff ``y_b e^{i pi/n} > 0`` (certified in Arb).
   On triangles the 1-ring holds only edge points, whose tangent weights follow their directions.
-* **Curvature regime** (:mod:`symdecomp.analysis.curvature`; Peters and Reif, *Shape characterization
+* **Curvature regime** (:mod:`symdecomp.analysis.curvature_regime`; Peters and Reif, *Shape characterization
   of subdivision surfaces: basic principles*, CAGD 21 (2004)).
 * **Non-uniformity of the characteristic map**: the 2-ring matrix is block-circulant, so the
   characteristic map (the eigenvectors of ``lambda_1``) is the same in every sector up to the rotation
@@ -45,7 +45,7 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_valence
 from symdecomp.verify.c1_spectrum import _exact, _exact_charpoly, _other_frequencies, _siblings, ball_text
-from symdecomp.verify.curvature import CurvatureResult, second_order_eigenstructure
+from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
 
 __all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly"]
 
@@ -176,7 +176,7 @@ def _indicators(scheme: Scheme, n: int) -> ArtifactIndicators:
 
 def artifact_indicators(scheme: Scheme, n: int) -> ArtifactIndicators:
     """The artifact indicators at valence ``n`` (module docstring); :class:`~symdecomp.errors.NotApplicableError`
-    for schemes outside the C1 test (:mod:`symdecomp.verify.curvature`).
+    for schemes outside the C1 test (:mod:`symdecomp.verify.second_order_spectrum`).
 
     >>> from symdecomp.schemes.scheme import catmull_clark
     >>> a = artifact_indicators(catmull_clark(), 3)

@@ -1,8 +1,8 @@
-"""The curvature regimes' definitions (analysis/curvature.py): one function decides, from the sign of |mu| - lambda_1^2."""
+"""The curvature regimes' definitions (analysis/curvature_regime.py): one function decides, from the sign of |mu| - lambda_1^2."""
 
 import pytest
 
-from symdecomp.analysis.curvature import CurvatureRegime, curvature_regime, frequency_kind
+from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.errors import InvalidInputError, InvalidValenceError
 
 

@@ -1,4 +1,4 @@
-"""The certified curvature regime (verify/curvature.py) and the artifact indicators (verify/artifacts.py).
+"""The certified curvature regime (verify/second_order_spectrum.py) and the artifact indicators (verify/artifacts.py).
 
 The regimes by valence are what the shape literature reports for Catmull-Clark and Loop (Karciauskas, Peters,
 Reif 2004); each verdict is shown to change when the vertex weights change, and ties are decided exactly.
@@ -9,12 +9,12 @@ import pytest
 import sympy as sp
 
 from symdecomp import catmull_clark, loop, loop_warren, symbols
-from symdecomp.analysis.curvature import CurvatureRegime
+from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.errors import NotApplicableError
 from symdecomp.verify.artifacts import artifact_indicators
-from symdecomp.verify.curvature import second_order_eigenstructure
+from symdecomp.verify.second_order_spectrum import second_order_eigenstructure
 
 B, Z, U = CurvatureRegime.BOUNDED, CurvatureRegime.ZERO, CurvatureRegime.UNBOUNDED
 

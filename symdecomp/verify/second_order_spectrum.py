@@ -10,7 +10,7 @@ eigenvalue of that matrix counts, at every frequency: the roots of the 1-ring bl
 the regular rules and have the same exact rational eigenvalues at every frequency of every valence
 (Catmull-Clark ``1/8, 1/16, 1/32, 1/64``, Loop ``1/8, 1/16``; ``n`` copies each).
 
-**The test** (:mod:`symdecomp.analysis.curvature` for what the regimes mean):
+**The test** (:mod:`symdecomp.analysis.curvature_regime` for what the regimes mean):
 
 1. Reif's spectral conditions must hold (:func:`~symdecomp.verify.c1_spectrum.spectral_conditions`:
    ``lambda_1`` real, double, strictly dominant after 1); otherwise the regime is *not applicable* and
@@ -22,7 +22,7 @@ the regular rules and have the same exact rational eigenvalues at every frequenc
    exactly when that polynomial and ``e``'s block's (at ``-x`` for the minus sign) share the root that
    only ``lambda_1^2`` and ``e`` are near (the shared-root test of the C1 spectrum). A tie with a non-real
    eigenvalue is not decided exactly: it stays undecided (after a retry at higher precision).
-3. The regime follows from the signs of ``|e| - lambda_1^2`` alone (:func:`~symdecomp.analysis.curvature.curvature_regime`):
+3. The regime follows from the signs of ``|e| - lambda_1^2`` alone (:func:`~symdecomp.analysis.curvature_regime.curvature_regime`):
    unbounded if one is positive, zero if all are negative, bounded if the largest are exact ties. ``mu``
    is the largest modulus after ``1`` and ``lambda_1``; when several eigenvalues (different frequencies,
    a complex pair) are not separated from it in modulus they are all reported.
@@ -39,7 +39,7 @@ import flint
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.characteristic import check_applicable, outer_charpoly
-from symdecomp.analysis.curvature import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
+from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_valence

@@ -1,7 +1,7 @@
 """The curvature regime at an extraordinary vertex: what the comparison of ``mu`` with ``lambda_1^2`` means.
 
 The definitions live here, once, so that every user (the certified computation
-:mod:`symdecomp.verify.curvature`, a tuning region in the vertex weights) decides the regime the same way.
+:mod:`symdecomp.verify.second_order_spectrum`, a tuning region in the vertex weights) decides the regime the same way.
 
 Let ``1 > lambda_1`` be the dominant and subdominant eigenvalues of the subdivision matrix whose
 eigenvectors generate the surface near the extraordinary vertex, and ``mu`` the largest eigenvalue

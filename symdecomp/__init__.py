@@ -20,7 +20,8 @@ nothing else.
                    between sympy, Fraction, FLINT and Arb numbers (``numbers``), small exact
                    eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
                    clusters of enclosures that may overlap (``clusters``),
-                   polynomials over a triangle in Bezier form (``triangle_bezier``), signs of
+                   polynomials over a triangle in Bezier form (``triangle_bezier``), products of
+                   tensor and triangular Bernstein polynomials in Arb (``bernstein``), signs of
                    rational functions of n for every n (``valence_signs``)
 ``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,
                    triangle; regular valence, rings and labels, refinement, regular patch), a
@@ -49,7 +50,9 @@ nothing else.
                    (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
                    vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
-                   ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``)
+                   ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``);
+                   second-order characteristic maps, the elliptic and hyperbolic height fields
+                   on the ring (``second_order``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -58,7 +61,10 @@ nothing else.
                    Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
                    the patch evaluator (``patch_eval``); the certified second-order eigenstructure
-                   and curvature regime (``second_order_spectrum``) and the artifact indicators (``artifacts``)
+                   and curvature regime (``second_order_spectrum``) and the artifact indicators
+                   (``artifacts``); certified shape at the vertex: the sign of
+                   the Gaussian curvature of a central surface (``curvature``), elliptic,
+                   hyperbolic or hybrid, and the shape chart (``shape``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
@@ -128,6 +134,7 @@ from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import C1Verdict, CrossCheckResult, CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
 from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
+from symdecomp.verify.shape import ShapeChart, ShapeResult, classify_shape, shape_chart
 
 __version__ = "0.1.0"
 
@@ -222,6 +229,11 @@ __all__ = [
     "CurvatureResult",
     "artifact_indicators",
     "ArtifactIndicators",
+    # shape at an extraordinary vertex (central surfaces, certified)
+    "classify_shape",
+    "ShapeResult",
+    "shape_chart",
+    "ShapeChart",
     "CrossCheckStatus",
     "CrossCheckResult",
     "exact_subdivision_matrix",

@@ -90,7 +90,7 @@ from symdecomp.verify.bezier import (
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down, spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["C1Result", "c1_test", "characteristic_nets", "METHOD", "method"]
+__all__ = ["C1Result", "c1_test", "characteristic_nets", "bezier_nets", "place_text", "METHOD", "method"]
 
 #: The method, as reported with each verdict (quad meshes; :func:`method` for any lattice).
 METHOD = QUAD.c1_method
@@ -245,6 +245,20 @@ def _patches(lat: Lattice) -> _Patches:
     if lat not in _PATCHES:  # pragma: no cover - every lattice so far has its patches
         raise InvalidSchemeError(f"the C1 test has no sub-patches for {lat} meshes")
     return _PATCHES[lat]
+
+
+def bezier_nets(vec) -> list:
+    """The Bezier nets ``(real part, imaginary part)`` of sector 0's three sub-patches of any ring eigenvector ``vec``.
+
+    As :func:`characteristic_nets` for the characteristic map: ``4 x 4`` tensor nets on quads, 15
+    coefficients in ``bezier_indices(4)`` order on triangles (each sub-patch in its own parameters).
+    """
+    return _patches(vec.lattice).nets(vec)
+
+
+def place_text(where) -> str:
+    """A place on the ring as a :class:`~symdecomp.verify.bezier.SignCertificate` reports it, in words."""
+    return _where(where)
 
 
 def _boundary_angle(vec, nets):

@@ -60,13 +60,16 @@ COLUMNS: list[Column] = [
     Column("density", lambda r: r["density"]),
     Column("negative weights", lambda r: r["negative_weights"]),
     Column("spacing", lambda r: _number(r["ring_spacing_ratio"])),
+    Column("shape", lambda r: r["shape"]["text"]),
 ]
 
 _LEGEND = (
     "regime: curvature at the vertex bounded (|mu| = lambda_1^2, exact), zero (flat spot, |mu| < lambda_1^2) or unbounded "
     "(|mu| > lambda_1^2); freq: frequency of mu (0 elliptic, 1 tangent, 2 hyperbolic, outer: the regular rules at every "
     "frequency), '?' after mu: eigenvalues not separated in modulus; density: lambda_1 against the regular 1/2 (dense "
-    "below, sparse above); spacing: the characteristic map's second ring spacing over the first (1 on the regular mesh)"
+    "below, sparse above); spacing: the characteristic map's second ring spacing over the first (1 on the regular mesh); "
+    "shape: the certified class of the central surface for elliptic input (elliptic, hyperbolic, hybrid), and whether the "
+    "hyperbolic part dominates on fine rings (then convex input does not stay convex)"
 )
 
 
@@ -79,7 +82,8 @@ def register(sub) -> None:
         "its frequency and multiplicity, and the curvature regime from |mu| against lambda_1^2 (Peters and Reif "
         "2004): bounded (equal, shown exactly in a cyclotomic field), zero (a flat spot) or unbounded; certified in "
         "interval arithmetic. Then the artifact indicators: density (lambda_1 against the regular 1/2), negative "
-        "weights in the limit and tangent masks, and the characteristic map's ring spacing. Needs Reif's spectral "
+        "weights in the limit and tangent masks, the characteristic map's ring spacing, and the shape class of the "
+        "central surface (elliptic, hyperbolic, hybrid). Needs Reif's spectral "
         "conditions (else 'not applicable') and Catmull-Clark or Loop regular rules. Exit status 1 if a valence's "
         "regime is undecided.",
         epilog=_LEGEND,

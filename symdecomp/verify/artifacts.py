@@ -21,6 +21,13 @@ its source:
   On triangles the 1-ring holds only edge points, whose tangent weights follow their directions.
 * **Curvature regime** (:mod:`symdecomp.analysis.curvature_regime`; Peters and Reif, *Shape characterization
   of subdivision surfaces: basic principles*, CAGD 21 (2004)).
+* **Shape class** (Karciauskas, Peters, Reif, *Shape characterization of subdivision surfaces: case
+  studies*, CAGD 21 (2004): "for generic input data, both schemes fail to converge to the hyperbolic or
+  elliptic limit shape suggested by the geometry of the input mesh"): the certified shape of the central
+  surface (:func:`symdecomp.verify.shape.classify_shape`) for elliptic input (the frequency-0 height,
+  like ``x^2 + y^2``) and for hyperbolic input (frequency 2), and which of the two second-order parts
+  dominates on fine rings (the larger of the largest frequency-0 and frequency-2 eigenvalues after
+  ``lambda_1``): where the hyperbolic part dominates, convex input does not stay convex.
 * **Non-uniformity of the characteristic map**: the 2-ring matrix is block-circulant, so the
   characteristic map (the eigenvectors of ``lambda_1``) is the same in every sector up to the rotation
   by ``2 pi / n``: between sectors it differs from the regular map only by the sector angle, ``2 pi / n``
@@ -41,11 +48,12 @@ import flint
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, to_acb
 from symdecomp.analysis.characteristic import frequency_block, frequency_eigenvector, ring_layout
 from symdecomp.analysis.frequency import one_ring_matrices
-from symdecomp.errors import NotApplicableError
+from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_valence
 from symdecomp.verify.c1_spectrum import _exact, _exact_charpoly, _other_frequencies, _siblings, ball_text
 from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
+from symdecomp.verify.shape import classify_shape
 
 __all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly"]
 
@@ -67,6 +75,14 @@ class ArtifactIndicators:
     spacing: flint.arb | None
     #: ``n_regular / n``: the sector angle of the characteristic map against the regular one.
     sector_angle: float
+    #: The shape class of the central surface for elliptic and for hyperbolic input (:data:`symdecomp.verify.shape.KINDS`,
+    #: or ``'not applicable'``), and the frequency (0, 2) of the part that dominates on fine rings (``None``: a tie or undecided).
+    shape: tuple[str, str, int | None] = ("not applicable", "not applicable", None)
+
+    @property
+    def shape_text(self) -> str:
+        elliptic, _, dominant = self.shape
+        return elliptic + {0: "", 2: ", hyperbolic part dominates", None: ""}[dominant]
 
     @property
     def density_text(self) -> str:
@@ -87,6 +103,8 @@ class ArtifactIndicators:
             "negative_position_classes": list(self.negative_position), "tangent_weights_against_direction": self.tangent_against,
             "ring_spacing_ratio": None if self.spacing is None else ball_text(self.spacing, 8),
             "sector_angle_ratio": self.sector_angle, "curvature": self.curvature.as_json(),
+            "shape": {"text": self.shape_text, "elliptic_input": self.shape[0], "hyperbolic_input": self.shape[1],
+                      "dominant_frequency": self.shape[2]},
         }
 
 
@@ -171,7 +189,30 @@ def _indicators(scheme: Scheme, n: int) -> ArtifactIndicators:
             values = frequency_eigenvector(scheme, n, j, lam).values
             spacing = abs(values[(2, 0)] - values[(1, 0)]) / abs(values[(1, 0)])
     negative = _position_signs(scheme, n)
-    return ArtifactIndicators(n, curvature, density, negative, tangent, spacing, scheme.lattice.regular_valence / n)
+    return ArtifactIndicators(n, curvature, density, negative, tangent, spacing, scheme.lattice.regular_valence / n,
+                              _shape(scheme, n, curvature))
+
+
+def _kind(scheme: Scheme, n: int, elliptic: int, hyperbolic: int) -> str:
+    try:
+        return classify_shape(scheme, n, elliptic=elliptic, hyperbolic=hyperbolic).kind
+    except SymdecompError:  # no characteristic map or no second-order part to classify: the reason is the regime's
+        return "not applicable"
+
+
+def _dominant(curvature: CurvatureResult) -> int | None:
+    """The frequency, 0 or 2, of the larger of the two parts' largest eigenvalues (``None``: equal or not separated)."""
+    tops = {j: max((abs(e.value) for e in curvature.eigenvalues if e.frequency == j), key=lambda x: x.mid(), default=None)
+            for j in (0, 2)}
+    if tops[0] is None or tops[2] is None or curvature.n == 3:  # at n = 3 frequency 2 is the tangent plane's
+        return None
+    return 0 if tops[0] > tops[2] else 2 if tops[2] > tops[0] else None
+
+
+def _shape(scheme: Scheme, n: int, curvature: CurvatureResult) -> tuple[str, str, int | None]:
+    if curvature.lambda1 is None:
+        return ("not applicable", "not applicable", None)
+    return (_kind(scheme, n, 1, 0), _kind(scheme, n, 0, 1), _dominant(curvature))
 
 
 def artifact_indicators(scheme: Scheme, n: int) -> ArtifactIndicators:

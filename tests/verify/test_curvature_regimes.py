@@ -123,3 +123,14 @@ def test_the_characteristic_maps_ring_spacing_is_one_exactly_where_the_mesh_is_r
         assert artifact_indicators(scheme, regular).spacing.contains(1)
         assert artifact_indicators(scheme, 3).spacing > 1 and artifact_indicators(scheme, 8).spacing < 1
     assert artifact_indicators(loop(), 3).spacing.contains(3)  # Loop's characteristic ring at n = 3: 1/4 -> spacing 3
+
+
+def test_the_shape_indicator_names_the_central_surface_and_the_part_that_dominates():
+    regular = artifact_indicators(catmull_clark(), 4).shape
+    assert (regular[0], regular[2]) == ("elliptic", None)  # x^2 + y^2; the two parts tie at 1/4
+    assert artifact_indicators(catmull_clark(), 5).shape == ("elliptic", "hyperbolic", 2)
+    assert artifact_indicators(catmull_clark(), 5).shape_text == "elliptic, hyperbolic part dominates"
+    # a vertex rule that lifts the elliptic eigenvalue above the hyperbolic one at n = 5: the elliptic part dominates
+    lifted = artifact_indicators(_off_regular(sp.Rational(1, 20), sp.Rational(1, 100), 5), 5)
+    assert lifted.shape[2] == 0 and lifted.curvature.cause == "elliptic"
+    assert artifact_indicators(loop(), 64).shape[0] == "hybrid"  # elliptic input, yet the curvature changes sign

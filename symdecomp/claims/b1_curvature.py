@@ -31,6 +31,7 @@ from symdecomp.schemes.lattice import LATTICES
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.verify.artifacts import artifact_indicators, dominant_part
 from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
 
 #: The valences of the tables (about a second per scheme; ``symdecomp artifacts`` does more).
@@ -183,3 +184,52 @@ def check_regular(scheme: Scheme, multiplicity: int) -> CheckResult:
         return CheckResult(Status.UNDECIDED, Verbatim(r.reason), steps=steps)
     what = Text(Verbatim(scheme.name), f" at n = {n}: ", _computed(r), f"; multiplicity {r.mu_multiplicity}, not {multiplicity}")
     return CheckResult(Status.REFUTED, what, counterexample=what, steps=steps)
+
+
+#: As printed: ``(first n, last n or None, the dominant part's frequency or None for neither)``, per lattice.
+DOMINANCE = {False: ((3, 4, None), (5, None, 2)), True: ((3, 3, None), (4, 5, 0), (6, 6, None), (7, None, 2))}
+SHAPE_VALENCES = (3, 32)
+
+
+def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_VALENCES) -> CheckResult:
+    """Compare which second-order part dominates on fine rings (frequency 0 or 2, or neither) with ``printed``."""
+    lo, hi = max(valences[0], scheme.minimum_valence()), valences[1]
+    for n in range(lo, hi + 1):
+        a = artifact_indicators(scheme, n) if n <= 8 else None
+        dominant = a.shape[2] if a else dominant_part(second_order_eigenstructure(scheme, n))
+        expected = next(d for first, last, d in printed if first <= n and (last is None or n <= last))
+        if dominant != expected:
+            name = {0: "the elliptic part", 2: "the hyperbolic part", None: "neither part"}
+            what = Text(Verbatim(scheme.name), f", n = {n}: the statement says {name[expected]} dominates; computed: "
+                        f"{name[dominant]}")
+            return CheckResult(Status.REFUTED, what, counterexample=what)
+    shapes = sp.Matrix([[sp.Integer(n), sp.Symbol(artifact_indicators(scheme, n).shape[0])] for n in range(max(lo, 4), 9)])
+    return CheckResult(
+        Status.VERIFIED,
+        Text("the part that dominates on fine rings agrees with the statement for ", Verbatim(scheme.name),
+             f" at every n = {lo}..{hi} (the largest frequency-0 and frequency-2 eigenvalues after ", lambda_1, ", certified)"),
+        steps=(Step("The certified shape of the central surface for elliptic input (the frequency-0 height), n = 4..8: where "
+                    "the hyperbolic part dominates, this is not the shape the rings tend to", shapes),),
+        valences=(lo, hi))
+
+
+@claim(
+    "Shape: the valence decides",
+    section="B.1",
+    title="Convex input does not stay convex: for $n \\ge 5$ (Catmull-Clark) and $n \\ge 7$ (Loop)",
+    statement=r"For generic input the shape near an extraordinary vertex is decided by the valence, not by the mesh: "
+    r"the hyperbolic (frequency 2) eigenvalue exceeds the elliptic (frequency 0) one for Catmull-Clark at every "
+    r"$n \ge 5$ and for Loop at every $n \ge 7$, so the hyperbolic part dominates on fine rings even for convex input; "
+    r"for Loop at $n = 4, 5$ the elliptic part dominates, and the two tie at the regular valence (Karciauskas, Peters, "
+    r"Reif, CAGD 21 (2004)).",
+    requires=(NO_FREE_PARAMETERS,),
+)
+def _shape(scheme: Scheme) -> CheckResult:
+    quad = check_dominance(_on(scheme, False), DOMINANCE[False])
+    if quad.status is not Status.VERIFIED:
+        return quad
+    tri = check_dominance(_on(scheme, True), DOMINANCE[True])
+    if tri.status is not Status.VERIFIED:
+        return tri
+    return CheckResult(Status.VERIFIED, Text(quad.evidence, "; and ", tri.evidence), steps=quad.steps + tri.steps,
+                       valences=quad.valences)

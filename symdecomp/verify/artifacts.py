@@ -55,7 +55,7 @@ from symdecomp.verify.c1_spectrum import _exact, _exact_charpoly, _other_frequen
 from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
 from symdecomp.verify.shape import classify_shape
 
-__all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly"]
+__all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly", "dominant_part"]
 
 
 @dataclass(frozen=True)
@@ -200,7 +200,7 @@ def _kind(scheme: Scheme, n: int, elliptic: int, hyperbolic: int) -> str:
         return "not applicable"
 
 
-def _dominant(curvature: CurvatureResult) -> int | None:
+def dominant_part(curvature: CurvatureResult) -> int | None:
     """The frequency, 0 or 2, of the larger of the two parts' largest eigenvalues (``None``: equal or not separated)."""
     tops = {j: max((abs(e.value) for e in curvature.eigenvalues if e.frequency == j), key=lambda x: x.mid(), default=None)
             for j in (0, 2)}
@@ -212,7 +212,7 @@ def _dominant(curvature: CurvatureResult) -> int | None:
 def _shape(scheme: Scheme, n: int, curvature: CurvatureResult) -> tuple[str, str, int | None]:
     if curvature.lambda1 is None:
         return ("not applicable", "not applicable", None)
-    return (_kind(scheme, n, 1, 0), _kind(scheme, n, 0, 1), _dominant(curvature))
+    return (_kind(scheme, n, 1, 0), _kind(scheme, n, 0, 1), dominant_part(curvature))
 
 
 def artifact_indicators(scheme: Scheme, n: int) -> ArtifactIndicators:

@@ -7,7 +7,8 @@ from symdecomp.claims import Scope, Status, all_claims, check_claim, section_key
 from symdecomp.claims import b1_curvature as b1
 from symdecomp.output.latex import section_file_name
 
-LABELS = ["Curvature regime: Catmull-Clark", "Curvature regime: Loop", "Loop's vertex weight", "Curvature at the regular valence"]
+LABELS = ["Curvature regime: Catmull-Clark", "Curvature regime: Loop", "Loop's vertex weight", "Curvature at the regular valence",
+          "Shape: the valence decides"]
 
 
 def test_the_beyond_sections_come_after_the_papers_in_their_own_file():
@@ -21,8 +22,8 @@ def test_the_beyond_sections_come_after_the_papers_in_their_own_file():
 
 def test_the_statuses_for_catmull_clark():
     results = [check_claim(label) for label in LABELS]
-    assert [r.status for r in results] == [Status.VERIFIED, Status.VERIFIED, Status.PROVED, Status.VERIFIED]
-    assert [r.scope for r in results] == [Scope.RANGE, Scope.RANGE, Scope.EVERY_N, Scope.SINGLE_CASE]
+    assert [r.status for r in results] == [Status.VERIFIED, Status.VERIFIED, Status.PROVED, Status.VERIFIED, Status.VERIFIED]
+    assert [r.scope for r in results] == [Scope.RANGE, Scope.RANGE, Scope.EVERY_N, Scope.SINGLE_CASE, Scope.RANGE]
     assert results[0].valences == b1.VALENCES
 
 
@@ -60,3 +61,14 @@ def test_the_regular_valence_claim_for_each_lattice_another_count_and_other_regu
     # other weights at the regular valence: the surface is no longer the bicubic spline, and the claim says it cannot tell
     other = catmull_clark(sp.Rational(1, 8), sp.Rational(1, 64))
     assert check_claim("Curvature at the regular valence", other).status is Status.NOT_APPLICABLE
+
+
+def test_the_shape_claim_flips_with_the_vertex_rule_and_with_the_statement():
+    assert check_claim("Shape: the valence decides").status is Status.VERIFIED
+    n, a, b = symbols.n, sp.Rational(3, 2) / symbols.n**2, sp.Rational(1, 4) / symbols.n**2
+    # at n = 5 the weights 1/20, 1/100 (Catmull-Clark's at n = 4): the elliptic eigenvalue rises above the hyperbolic one
+    lifted = catmull_clark(a + (sp.Rational(1, 20) - a.subs(n, 5)) * (n - 4), b + (sp.Rational(1, 100) - b.subs(n, 5)) * (n - 4))
+    r = b1.check_dominance(lifted, b1.DOMINANCE[False], (3, 6))
+    assert r.status is Status.REFUTED and "n = 5" in str(r.counterexample) and "computed: the elliptic part" in str(r.counterexample)
+    assert b1.check_dominance(loop(), b1.DOMINANCE[False], (3, 8)).status is Status.REFUTED  # Loop's n = 5, 6 are not hyperbolic
+    assert b1.check_dominance(loop(), b1.DOMINANCE[True], (3, 8)).status is Status.VERIFIED

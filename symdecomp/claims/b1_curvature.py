@@ -37,6 +37,9 @@ from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order
 #: The valences of the tables (about a second per scheme; ``symdecomp artifacts`` does more).
 VALENCES = (3, 64)
 
+#: As printed: the multiplicity of ``mu = lambda_1^2`` at the regular valence (the three quadratic terms).
+REGULAR_MULTIPLICITY = 3
+
 B, Z, U = CurvatureRegime.BOUNDED, CurvatureRegime.ZERO, CurvatureRegime.UNBOUNDED
 
 #: As printed (the statements below): ``(first n, last n or None, regime, the kind of mu or None)``.
@@ -166,7 +169,7 @@ def _loop_weight(scheme: Scheme) -> CheckResult:
     requires=(NO_FREE_PARAMETERS,),
 )
 def _regular(scheme: Scheme) -> CheckResult:
-    return check_regular(scheme, 3)
+    return check_regular(scheme, REGULAR_MULTIPLICITY)
 
 
 def check_regular(scheme: Scheme, multiplicity: int) -> CheckResult:

@@ -2,9 +2,9 @@
 
 Implements and checks I.P. Ivrissimtzis, R. Zayer, H.-P. Seidel, *Polygonal decompositions of
 quadrilateral subdivision meshes*. The package is layered; each folder imports only from the
-ones above it in this list (``tests/test_layers.py`` checks it). This table is the one map of the
+ones above it in this list (``tests/project/test_layers.py`` checks it). This table is the one map of the
 package: it names every module (a folder's modules relative to the folder; the subpackages'
-docstrings point here), and ``tests/test_layers.py`` checks that it names every module and
+docstrings point here), and ``tests/project/test_layers.py`` checks that it names every module and
 nothing else.
 
 =================  ===========================================================================
@@ -34,7 +34,9 @@ nothing else.
                    (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML
                    files and by name (``files``), Loop's scheme (``loop``), Stam's patch
                    matrices, (2N+8)-point and Loop's (N+6)-point (``patch``), the regular Loop
-                   patch (quartic box spline) in Bezier form (``box_spline``)
+                   patch (quartic box spline) in Bezier form (``box_spline``), a modeller's polygon
+                   mesh validated with its 1-rings and extraordinary vertices (``meshfile``), read
+                   and written as OBJ, OFF and PLY (``meshformats``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
                    spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
@@ -52,7 +54,8 @@ nothing else.
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``);
                    second-order characteristic maps, the elliptic and hyperbolic height fields
-                   on the ring (``second_order``)
+                   on the ring (``second_order``); the extraordinary vertices of a modeller's mesh,
+                   limit frames and 1-ring components (``inspection``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -78,13 +81,14 @@ nothing else.
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
                    ``texlayout``), Stam's data file (``evaldata``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
-                   (``plotting.elliptic``), 6 (``plotting.cbmatrix``), Reif's test
+                   (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
+                   vertices (``plotting.meshes``), Reif's test
                    (``plotting.characteristic``), Stam's evaluation (``plotting.evaldata``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
-                   ``evaldata_cmd``),
+                   ``evaldata_cmd``, ``inspect_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``)
 ``__main__``       python -m symdecomp: the command line
@@ -107,6 +111,7 @@ from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_con
 from symdecomp.analysis.evaluation import PatchEvaluator
 from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
 from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
+from symdecomp.analysis.inspection import MeshInspection, VertexInspection, inspect_mesh, inspect_vertex
 from symdecomp.analysis.masks import limit_masks, limit_masks_at
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
@@ -123,6 +128,8 @@ from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdi
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
 from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
+from symdecomp.schemes.meshfile import PolygonMesh, scheme_for_mesh
+from symdecomp.schemes.meshformats import decode_mesh, encode_mesh, read_mesh
 from symdecomp.schemes.patch import patch_matrices
 from symdecomp.schemes.refinement import central_rings, mesh_rules, refine
 from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
@@ -190,6 +197,16 @@ __all__ = [
     "central_rings",
     "Region",
     "classify_support",
+    # a modeller's mesh files (issue 22)
+    "PolygonMesh",
+    "read_mesh",
+    "decode_mesh",
+    "encode_mesh",
+    "scheme_for_mesh",
+    "inspect_mesh",
+    "inspect_vertex",
+    "MeshInspection",
+    "VertexInspection",
     # any scheme (triangle meshes, Loop) and K-ring matrices
     "Lattice",
     "QUAD",

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A TeX engine from Debian, so that tests/test_latex.py compiles the derivations
+# A TeX engine from Debian, so that tests/output/test_latex.py compiles the derivations
 # (a LaTeX error or a formula running past the margin fails the tests).
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive

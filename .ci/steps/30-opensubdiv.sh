@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # OpenSubdiv from Debian and the symdecomp bridge to it (symdecomp/verify/opensubdiv/osd_bridge.cpp),
-# so that the oracle tests (tests/test_opensubdiv.py) run instead of being skipped.
+# so that the oracle tests (tests/verify/test_opensubdiv.py) run instead of being skipped.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 export DEBIAN_FRONTEND=noninteractive

@@ -2,7 +2,7 @@
 
 Each check is an identity in symbolic integers (valence ``n``, row ``r``, column ``s``, frequency ``k``,
 index ``l``) that sympy reduces: the printed formulas are module attributes, so a changed formula changes
-the verdict (tests/test_mutations.py). None of these statements involves the scheme.
+the verdict (tests/claims/test_mutations.py). None of these statements involves the scheme.
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """Section 4: Eq. 22 and Eq. 23, the staged rule Eq. 18 split by linearity into the components of Eq. 11.
 
 Identities for every ``n``: a symbolic row ``i``, symbolic sums over the components ``j = 0..2n-1``, and
-Laurent polynomials in the shift. The printed coefficients are module attributes (tests/test_mutations.py).
+Laurent polynomials in the shift. The printed coefficients are module attributes (tests/claims/test_mutations.py).
 The statements are steps of the paper's derivation from the printed Eq. 18 and do not involve the scheme.
 """
 

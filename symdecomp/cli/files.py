@@ -153,8 +153,8 @@ def write_output_file(out, content: bytes | str | Iterable[bytes | str], option:
     return written
 
 
-def replace_owned_files(out: Path, files: dict[str, str], owned: re.Pattern, option: str = "--out") -> list[Path]:
-    """Make ``out`` hold exactly ``files`` among the names matching ``owned``, in one step.
+def replace_owned_files(out: Path, files: dict[str, str | bytes], owned: re.Pattern, option: str = "--out") -> list[Path]:
+    """Make ``out`` hold exactly ``files`` (text, written as UTF-8, or bytes) among the names matching ``owned``, in one step.
 
     Files in ``out`` whose names do not match ``owned`` are carried over unchanged. Returns the
     paths written. Raises :class:`~symdecomp.errors.InvalidInputError` for an unusable ``out``
@@ -176,7 +176,7 @@ def replace_owned_files(out: Path, files: dict[str, str], owned: re.Pattern, opt
     return [out / name for name in files]
 
 
-def _assemble(staging: Path, target: Path, files: dict[str, str], owned: re.Pattern) -> None:
+def _assemble(staging: Path, target: Path, files: dict[str, str | bytes], owned: re.Pattern) -> None:
     """Fill ``staging`` with ``files`` and the entries of ``target`` (if it exists) that are not owned."""
     if target.is_dir():
         shutil.copymode(target, staging)
@@ -190,9 +190,12 @@ def _assemble(staging: Path, target: Path, files: dict[str, str], owned: re.Patt
                 shutil.copy2(entry, copy, follow_symlinks=False)
     else:
         os.chmod(staging, 0o777 & ~_umask())
-    for name, text in files.items():
+    for name, content in files.items():
+        if isinstance(content, bytes):
+            (staging / name).write_bytes(content)
+            continue
         with open(staging / name, "w", encoding="utf-8", newline="\n") as fh:
-            fh.write(text)
+            fh.write(content)
 
 
 def _swap_in(staging: Path, out: Path) -> None:

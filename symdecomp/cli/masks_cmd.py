@@ -51,10 +51,15 @@ def register(sub) -> None:
 
 
 def _subdominance(args) -> tuple[bool, str, bool]:
+    return lambda_1_subdominance(args.scheme, args.n)
+
+
+def lambda_1_subdominance(scheme, n: int) -> tuple[bool, str, bool]:
     """``(certified, why, one_simple)``: whether ``lambda_1`` is certified the subdominant eigenvalue of the 1-ring at
-    this valence and why (not), and whether 1 is a simple eigenvalue there (else no mask is defined)."""
+    valence ``n`` and why (not), and whether 1 is a simple eigenvalue there (else no mask is defined).
+    The masks' tangent plane needs the first (``symdecomp inspect`` asks it too)."""
     try:
-        r = spectral_conditions(args.scheme, args.n, one_ring=True)
+        r = spectral_conditions(scheme, n, one_ring=True)
     except SymdecompError as exc:
         return False, f"not certified: {exc}", True
     if r.status is C1Verdict.C1 and r.subdominant is not None and r.subdominant.frequency == 1:

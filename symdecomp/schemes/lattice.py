@@ -89,6 +89,13 @@ class Lattice:
 
     # -- meshes and one refinement --------------------------------------------------------------
 
+    #: Sides of every face of a mesh on this lattice (4 on quads, 3 on triangles).
+    face_sides = 0  # set by each subclass (a class attribute: not a dataclass field)
+
+    def mesh(self, faces, values):
+        """A local mesh of this lattice's kind (:class:`~symdecomp.schemes.mesh.QuadMesh`, ``TriangleMesh``)."""
+        raise NotImplementedError
+
     def ring_mesh(self, n: int, rings: int, values=None):
         """The mesh of ``rings`` rings around a valence-``n`` vertex, every other vertex regular."""
         raise NotImplementedError
@@ -156,6 +163,10 @@ class QuadLattice(Lattice):
     def ring_size(self, n, rings):
         return 1 + n * rings * (rings + 1)
 
+    #: Sides of every face of a mesh on this lattice.
+    face_sides = 4
+    #: The local mesh type of this lattice: ``mesh(faces, values)``.
+    mesh = staticmethod(_mesh.QuadMesh)
     ring_labels = staticmethod(_mesh.ring_mesh_labels)
     ring_mesh = staticmethod(_mesh.ring_mesh)
     mesh_rules = staticmethod(_refinement.mesh_rules)
@@ -212,6 +223,8 @@ class TriangleLattice(Lattice):
     def ring_size(self, n, rings):
         return 1 + n * rings * (rings + 1) // 2
 
+    face_sides = 3
+    mesh = staticmethod(_mesh.TriangleMesh)
     ring_labels = staticmethod(_mesh.triangle_ring_labels)
     ring_mesh = staticmethod(_mesh.triangle_ring_mesh)
     mesh_rules = staticmethod(_refinement.triangle_mesh_rules)

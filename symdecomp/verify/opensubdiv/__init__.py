@@ -27,7 +27,7 @@ from symdecomp.errors import BridgeUnavailableError, InternalError, InvalidInput
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.verify.opensubdiv import build as _build
 
-__all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings", "osd_limit_points"]
+__all__ = ["BridgeUnavailableError", "OsdRings", "bridge_available", "load_bridge", "osd_central_rings", "osd_limit_points", "osd_limit_frames"]
 
 
 _lock = threading.Lock()
@@ -214,3 +214,35 @@ def osd_limit_points(mesh, levels: int) -> tuple[np.ndarray, np.ndarray]:
     if rc != 0:
         raise InternalError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
     return points[: count.value], limits[: count.value]
+
+
+def osd_limit_frames(points, faces, *, loop: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(limits, du, dv)``: OpenSubdiv's limit position and first derivatives at every vertex of a whole mesh.
+
+    ``points`` is a ``(V, 3)`` array of doubles, ``faces`` a ``(F, 4)`` (Catmull-Clark) or, with ``loop``,
+    ``(F, 3)`` (Loop) array of 0-based vertex indices, counter-clockwise. Each result is ``(V, 3)``, in the
+    vertex order of ``points`` (``Far::PrimvarRefiner::Limit`` on the unrefined mesh, double precision;
+    boundary vertices use the edge-only boundary rules).
+    """
+    lib = load_bridge()
+    try:
+        fn = lib.symdecomp_osd_limit_frames
+    except AttributeError:
+        raise BridgeUnavailableError(f"the OpenSubdiv bridge has no limit-frames function; run: {_build.REBUILD_COMMAND}") from None
+    pos = np.ascontiguousarray(points, dtype=np.float64)
+    idx = np.ascontiguousarray(faces, dtype=np.intc)
+    sides = 3 if loop else 4
+    if pos.ndim != 2 or pos.shape[1] != 3 or idx.ndim != 2 or idx.shape[1] != sides:
+        raise InvalidInputError(f"expected (V, 3) points and (F, {sides}) faces, got {pos.shape} and {idx.shape}")
+    if idx.size and (idx.min() < 0 or idx.max() >= len(pos)):
+        raise InvalidInputError("a face refers to a vertex outside the points")
+    ip, dp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double)
+    fn.argtypes = [ctypes.c_int, ctypes.c_int, ctypes.c_int, ip, dp, dp, dp, dp, ctypes.c_char_p, ctypes.c_int]
+    fn.restype = ctypes.c_int
+    limits, du, dv = (np.zeros_like(pos) for _ in range(3))
+    err = ctypes.create_string_buffer(512)
+    rc = fn(int(loop), len(pos), len(idx), idx.ctypes.data_as(ip), pos.ctypes.data_as(dp), limits.ctypes.data_as(dp),
+            du.ctypes.data_as(dp), dv.ctypes.data_as(dp), err, len(err))
+    if rc != 0:
+        raise InternalError(f"OpenSubdiv bridge failed (code {rc}): {err.value.decode(errors='replace')}")
+    return limits, du, dv

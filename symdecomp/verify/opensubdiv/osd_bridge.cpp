@@ -330,3 +330,41 @@ int symdecomp_osd_loop_step(int n_vertices, int n_faces, const int *face_vertice
 }
 
 }  // extern "C"
+
+// ---------------------------------------------------------------------------------------------
+// Limit frames of a whole mesh: for every vertex of the base mesh, OpenSubdiv's limit position and
+// its two first derivatives (Far::PrimvarRefiner::Limit on the unrefined mesh), 3 doubles each.
+// `loop` nonzero: Loop's scheme on triangles; else Catmull-Clark on quads. Boundary: edges only.
+
+extern "C" {
+
+int symdecomp_osd_limit_frames(int loop, int n_vertices, int n_faces, const int *face_vertices,
+                               const double *positions, double *limits_out, double *du_out,
+                               double *dv_out, char *error, int error_len) {
+    return guarded(error, error_len, [&]() -> int {
+        if (n_vertices <= 0 || n_faces <= 0) {
+            set_error(error, error_len, "bad sizes");
+            return 1;
+        }
+        std::unique_ptr<Far::TopologyRefiner> refiner =
+            make_refiner(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, loop ? 3 : 4, n_vertices, n_faces,
+                         face_vertices, 0, error, error_len);
+        if (!refiner) return 2;
+        std::vector<Point> points = base_points(*refiner, n_vertices, positions);
+        std::vector<Point> limit(static_cast<size_t>(n_vertices)), du(limit.size()), dv(limit.size());
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        Point *limit_dst = limit.data(), *du_dst = du.data(), *dv_dst = dv.data();
+        primvar.Limit(points.data(), limit_dst, du_dst, dv_dst);
+        if (osd_error(error, error_len)) return 6;
+        for (int v = 0; v < n_vertices; ++v) {
+            for (int c = 0; c < 3; ++c) {
+                limits_out[3 * v + c] = limit[v].p[c];
+                du_out[3 * v + c] = du[v].p[c];
+                dv_out[3 * v + c] = dv[v].p[c];
+            }
+        }
+        return 0;
+    });
+}
+
+}  // extern "C"

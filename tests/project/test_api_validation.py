@@ -26,6 +26,7 @@ from symdecomp.analysis.components import initial_vector_condition
 from symdecomp.analysis.elliptic import scale_ratio_squared
 from symdecomp.analysis.evolution import subdivision_matrix_numeric
 from symdecomp.analysis.frequency import one_ring_matrices
+from symdecomp.analysis.inspection import position_weights
 from symdecomp.analysis.ring_spectrum import frequency_factors
 from symdecomp.analysis.support import limit_mask
 from symdecomp.analysis.support_window import window
@@ -40,6 +41,8 @@ FREE = sd.catmull_clark(sd.symbols.alpha, sd.symbols.beta)
 NOT_INTEGERS = [5.0, Fraction(5), np.float64(5), True, "5", None]
 NOT_SCHEMES = [None, "catmull-clark", 5, {"edge": {}}]
 MESH = sd.ring_mesh(4, 2)
+CUBE = sd.PolygonMesh.from_arrays([(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)],
+                                  [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)])
 
 #: ``(function, argument, the other arguments, a good value, the smallest good value, bounded)``:
 #: ``bounded`` when ``10**9`` is beyond the argument's documented limit.
@@ -115,6 +118,7 @@ INTEGERS = [
     (toolkit_predictions, "n", dict(), 5, 3, False),
     (bezier_indices, "degree", dict(), 4, 0, True),
     (window, "rings", dict(), 2, 1, True),
+    (position_weights, "n", dict(scheme=CC), 5, 3, False),
 ]
 
 #: ``(function, the other arguments)`` of the functions that take a scheme.
@@ -174,6 +178,9 @@ SCHEMES = [
     (ratio_target, dict()),
     (regular_limit_mask, dict()),
     (regular_patch, dict()),
+    (position_weights, dict(n=5)),
+    (sd.inspect_vertex, dict(mesh=CUBE, vertex=0)),
+    (sd.inspect_mesh, dict(mesh=CUBE)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

@@ -20,7 +20,7 @@ from symdecomp.verify.bezier import bisect_triangle, certify_sign_triangles, tri
 from symdecomp.verify.c1 import c1_test, characteristic_nets
 from symdecomp.verify.c1_spectrum import _exact_charpoly, spectral_conditions
 from symdecomp.verify.result import C1Verdict
-from tests.test_c1 import standard_at_regular
+from tests.verify.test_c1 import standard_at_regular
 
 R = sp.Rational
 POINTS = [(0.1, 0.7), (0.25, 0.25), (0.6, 0.3), (0.0, 1.0), (0.33, 0.01)]

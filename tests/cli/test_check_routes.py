@@ -23,7 +23,7 @@ from symdecomp.verify.structural import certify_structural, structural_obstacle
 
 CC = catmull_clark()
 JORDAN = catmull_clark(alpha, beta).substitute(jordan_vertex_weights(catmull_clark(alpha, beta), 5, sp.Rational(3, 8)))
-CORPUS = Path(__file__).parent / "corpus"
+CORPUS = Path(__file__).parents[1] / "corpus"
 
 N_DEPENDENT_EDGE = """
 name = "edge-in-n"

@@ -2,7 +2,7 @@
 
 A claim registered without an entry here, or an entry without a claim, fails the test: every claim is
 tested. A change of a status is a change in the mathematics, to be reviewed. Statuses are for
-standard Catmull-Clark (the default scheme); tests/test_mutations.py checks other schemes.
+standard Catmull-Clark (the default scheme); tests/claims/test_mutations.py checks other schemes.
 """
 
 import pytest

@@ -5,7 +5,7 @@ import pathlib
 
 import pytest
 
-PACKAGE = pathlib.Path(__file__).resolve().parents[1] / "symdecomp"
+PACKAGE = pathlib.Path(__file__).resolve().parents[2] / "symdecomp"
 
 #: Lowest first; a module may import from its own layer and the ones before it.
 LAYERS = ["errors", "symbols", "expressions", "validate", "parallel", "algebra", "schemes", "analysis", "verify", "claims", "output", "cli"]

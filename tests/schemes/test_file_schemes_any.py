@@ -16,7 +16,7 @@ from symdecomp.errors import SymdecompError
 from symdecomp.schemes.files import scheme_from_text, scheme_to_text
 from symdecomp.schemes.scheme import subdivision_matrix
 from symdecomp.symbols import n as N
-from tests.test_scheme_files import CC_TOML
+from tests.schemes.test_scheme_files import CC_TOML
 
 N_DEPENDENT = CC_TOML.replace('a = { "-1" = "1/16", "0" = "3/8", "1" = "1/16" }',
                               'a = { "-1" = "1/16 + 1/(8*n)", "0" = "3/8 - 1/(4*n)", "1" = "1/16 + 1/(8*n)" }')

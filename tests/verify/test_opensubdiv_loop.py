@@ -1,6 +1,6 @@
 """OpenSubdiv's Loop scheme against the toolkit (skipped where OpenSubdiv is not installed).
 
-As for Catmull-Clark (tests/test_opensubdiv.py) a failing build is an error, not a skip.
+As for Catmull-Clark (tests/verify/test_opensubdiv.py) a failing build is an error, not a skip.
 """
 
 import pytest

@@ -23,7 +23,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.verify import c1_spectrum
 from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.result import C1Verdict
-from tests.test_c1 import standard_at_regular, tuned
+from tests.verify.test_c1 import standard_at_regular, tuned
 
 R = sp.Rational
 

@@ -11,7 +11,6 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
-from latex_cases import long_product, long_sum, stress_pairs
 
 from symdecomp.claims import CheckResult, Status, Step
 from symdecomp.cli import main
@@ -19,8 +18,9 @@ from symdecomp.cli.derive_cmd import write_derivations
 from symdecomp.output.latex import PREAMBLE, aslatex, derivation_files, display_math, section_file_name, text_latex
 from symdecomp.output.texlayout import ATOM, LINE, SETTINGS, Names, latex, matrix_width, name_long_parts, size
 from symdecomp.symbols import alpha, n, omega
+from tests.output.latex_cases import long_product, long_sum, stress_pairs
 
-COMMITTED = Path(__file__).resolve().parents[1] / "derivations"
+COMMITTED = Path(__file__).resolve().parents[2] / "derivations"
 PDFLATEX = shutil.which("pdflatex")
 LATEXMK = shutil.which("latexmk")
 needs_tex = pytest.mark.skipif(PDFLATEX is None, reason="no pdflatex (CI installs it in .ci/steps/20-latex.sh)")
@@ -213,11 +213,11 @@ def test_the_document_mirrors_the_papers_sections_and_is_deterministic():
 def test_the_bytes_do_not_depend_on_the_hash_seed(tmp_path):
     """Printing order comes from sympy's sort keys, not from set or dict iteration order."""
     script = (
-        "import hashlib, sys; sys.path.insert(0, 'tests'); from latex_cases import stress_pairs; "
+        "import hashlib; from tests.output.latex_cases import stress_pairs; "
         "from symdecomp.output.latex import derivation_files; "
         "print(hashlib.sha256(repr(sorted(derivation_files(stress_pairs()).items())).encode()).hexdigest())"
     )
-    root = Path(__file__).resolve().parents[1]
+    root = Path(__file__).resolve().parents[2]
     digests = {
         subprocess.run([sys.executable, "-c", script], cwd=root, capture_output=True, text=True, check=True,
                        env={**os.environ, "PYTHONHASHSEED": seed}).stdout
@@ -385,7 +385,7 @@ def test_the_findings_of_the_registry_typeset_their_formulas(tmp_path):
     assert _ascii_math_in_findings(files) == []
 
 
-#: Branches of the checks that only other schemes reach (tests/test_mutations.py): their findings typeset
+#: Branches of the checks that only other schemes reach (tests/claims/test_mutations.py): their findings typeset
 #: their formulas too, including the reasons a claim is not applicable.
 OTHER_SCHEME_BRANCHES = [
     ("moved", "Eq. 14-15"),
@@ -406,7 +406,7 @@ OTHER_SCHEME_BRANCHES = [
 @pytest.mark.parametrize("name, label", OTHER_SCHEME_BRANCHES, ids=[f"{a} / {b}" for a, b in OTHER_SCHEME_BRANCHES])
 def test_the_findings_on_other_schemes_typeset_their_formulas(name, label):
     from symdecomp.claims import check_claim, get_claim
-    from tests.test_mutations import scheme
+    from tests.claims.test_mutations import scheme
 
     result = check_claim(label, scheme(name))
     assert result.status is not Status.ERROR
@@ -417,7 +417,7 @@ def test_the_findings_on_other_schemes_typeset_their_formulas(name, label):
 @pytest.mark.parametrize("name", ["moved", "O fixed", "2n-gon smoothing", "wide", "balanced rings"])
 def test_every_finding_on_the_mutated_schemes_typesets_its_formulas(name):
     from symdecomp.claims import all_claims, check_claim
-    from tests.test_mutations import scheme
+    from tests.claims.test_mutations import scheme
 
     # the two certified cross-checks (C1, the spectrum) take minutes per scheme; their findings are checked on
     # Catmull-Clark above

@@ -9,7 +9,7 @@ import pathlib
 
 import pytest
 
-PACKAGE = pathlib.Path(__file__).resolve().parents[1] / "symdecomp"
+PACKAGE = pathlib.Path(__file__).resolve().parents[2] / "symdecomp"
 
 MAX_MODULE_LINES = 500
 MAX_FUNCTION_LINES = 60

@@ -2,7 +2,7 @@
 and, where the claim holds for a family of schemes, a change that keeps it.
 
 A verdict that no change can move is not computed; this table is the evidence that each one is. The
-statuses without a change are those of tests/test_claim_statuses.py (standard Catmull-Clark).
+statuses without a change are those of tests/claims/test_claim_statuses.py (standard Catmull-Clark).
 Printed formulas are module attributes of the claims modules; a row replaces one for the test and calls
 the check directly (the registry's cache holds the printed statement's results).
 
@@ -26,7 +26,7 @@ from symdecomp.errors import InvalidSchemeError, NotAffineError
 from symdecomp.schemes.files import scheme_from_text, scheme_to_text
 from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark
 from symdecomp.symbols import alpha, beta, n
-from tests.test_claim_statuses import EXPECTED
+from tests.claims.test_claim_statuses import EXPECTED
 
 P, V, R, C, U, NA = Status.PROVED, Status.VERIFIED, Status.REFUTED, Status.CORRECTED, Status.UNDECIDED, Status.NOT_APPLICABLE
 Q = sp.Rational

@@ -21,7 +21,7 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
-PACKAGE = pathlib.Path(__file__).resolve().parents[1] / "symdecomp"
+PACKAGE = pathlib.Path(__file__).resolve().parents[2] / "symdecomp"
 MODULES = sorted(p for p in PACKAGE.rglob("*.py") if "_build" not in p.parts)
 
 PATTERNS = {

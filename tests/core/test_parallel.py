@@ -20,7 +20,7 @@ from symdecomp.cli.check_cmd import check_valences
 from symdecomp.errors import InvalidInputError, InvalidValenceError, SymdecompError
 from symdecomp.parallel import GRACE_SECONDS, Executor, ordered_map, parse_executor, pool_size, run_killable
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 CPUS = os.cpu_count() or 1
 needs_two_cpus = pytest.mark.skipif(CPUS < 2, reason="a pool needs two CPUs")
 linux = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")

@@ -27,7 +27,7 @@ from symdecomp.schemes import full_matrix
 from symdecomp.schemes.files import scheme_from_text
 from symdecomp.symbols import n as N
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _tower(function: str, inner: str, depth: int) -> str:

@@ -272,7 +272,7 @@ def test_a_file_whose_rules_are_undefined_at_the_regular_valence_is_refused_when
 
 # --- 7. the corpus: every file ends within its budgets, with no error -----------------------------------------------
 
-CORPUS = sorted((__import__("pathlib").Path(__file__).parent / "corpus").glob("*.toml"))
+CORPUS = sorted((__import__("pathlib").Path(__file__).parents[1] / "corpus").glob("*.toml"))
 
 
 @pytest.mark.slow
@@ -319,7 +319,7 @@ def test_no_verdict_rests_on_an_undefined_value(monkeypatch):
 def _corpus(name: str) -> Scheme:
     from pathlib import Path
 
-    path = Path(__file__).parent / "corpus" / f"{name}.toml"
+    path = Path(__file__).parents[1] / "corpus" / f"{name}.toml"
     return scheme_from_text(path.read_text(), source=path.name)
 
 

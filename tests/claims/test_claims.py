@@ -1,4 +1,4 @@
-"""The registry: result invariants, the claims command (statuses: tests/test_claim_statuses.py)."""
+"""The registry: result invariants, the claims command (statuses: tests/claims/test_claim_statuses.py)."""
 
 import itertools
 import json
@@ -137,7 +137,7 @@ def test_the_mirror_symmetry_requirement_names_the_term_with_sin():
     from symdecomp.claims.applicability import MIRROR_SYMMETRIC, WHOLE_MESH
     from symdecomp.schemes.scheme import catmull_clark
     from symdecomp.symbols import sin_jtheta
-    from tests.test_mutations import scheme
+    from tests.claims.test_mutations import scheme
 
     assert MIRROR_SYMMETRIC.unmet(catmull_clark()) is None and WHOLE_MESH.unmet(catmull_clark()) is None
     reason = MIRROR_SYMMETRIC.unmet(scheme("asymmetric"))

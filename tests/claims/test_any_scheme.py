@@ -11,9 +11,9 @@ from symdecomp.claims import Status, all_claims, check_claim
 from symdecomp.cli import main
 from symdecomp.schemes.files import scheme_from_text
 from symdecomp.schemes.scheme import subdivision_matrix
-from tests.test_claim_statuses import EXPECTED
-from tests.test_mutations import MOVED
-from tests.test_scheme_files import CC_TOML
+from tests.claims.test_claim_statuses import EXPECTED
+from tests.claims.test_mutations import MOVED
+from tests.schemes.test_scheme_files import CC_TOML
 
 
 def test_the_catmull_clark_file_gives_the_built_in_statuses(tmp_path, capsys):

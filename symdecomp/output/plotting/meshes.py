@@ -1,0 +1,79 @@
+"""Figures of a mesh's extraordinary vertex: its 1-ring and its main components (``symdecomp inspect --figures``).
+
+:func:`vertex_figure` draws, for one :class:`~symdecomp.analysis.inspection.VertexInspection`, two panels:
+
+* the 1-ring seen from the normal, in the limit tangent plane (first axis along ``t_1``), with ``O``, the
+  limit point and the tangent-plane (n-gon frequency 1) and hyperbolic (frequency 2) components of Eq. 11,
+  each drawn around ``O``;
+* the heights along the normal of the 1-ring's points, in polygon order (``a_0, b_0, a_1, ..`` on quads),
+  with the elliptic (frequency 0: the planes of ``A^0`` and ``B^0``) and hyperbolic parts.
+
+:func:`png_bytes` renders a figure as PNG bytes without metadata that changes from run to run.
+"""
+
+from __future__ import annotations
+
+import io
+
+import numpy as np
+
+from symdecomp.algebra.polygons import decompose
+from symdecomp.output.plotting._mpl import label_axes, new_figure
+
+__all__ = ["vertex_figure", "png_bytes"]
+
+
+def _ring_polygon(points: np.ndarray, n: int) -> np.ndarray:
+    """The 1-ring polygon (Eq. 10 on quads: ``a_0, b_0, a_1, ..``) relative to ``O``, from the rows ``O, a.., b..``."""
+    a, b = points[1 : n + 1], points[n + 1 :]
+    return (np.stack([a, b], axis=1).reshape(-1, 3) if len(b) else a) - points[0]
+
+
+def _frequency_part(polygon: np.ndarray, n: int, k: int) -> np.ndarray:
+    """The sum of the components of the polygon whose n-gon frequency is ``k`` or ``n - k``."""
+    d = decompose(polygon)
+    N = len(polygon)
+    representatives = sorted({min(j, N - j) for j in range(N) if j % n in (k % n, (n - k) % n)})
+    return sum((d.pair_polygon(j) for j in representatives), np.zeros_like(polygon))
+
+
+def vertex_figure(report, points):
+    """The figure of one inspected vertex; ``points`` are the 1-ring's coordinates in the order of ``report.ring``."""
+    points = np.asarray(points, dtype=float)
+    n = report.valence
+    polygon = _ring_polygon(points, n)
+    normal = np.array(report.normal if report.normal is not None else (0.0, 0.0, 1.0))
+    e1 = np.array(report.tangents[0]) - (np.array(report.tangents[0]) @ normal) * normal
+    e1 = e1 / np.linalg.norm(e1) if np.linalg.norm(e1) > 0 else np.array([1.0, 0.0, 0.0])
+    e2 = np.cross(normal, e1)
+    fig = new_figure(10, 4.6)
+    left, right = fig.subplots(1, 2)
+    flat = lambda p: (p @ e1, p @ e2)  # noqa: E731
+    closed = np.vstack([polygon, polygon[:1]])
+    left.plot(*flat(closed), "-o", color="0.3", ms=3, label="1-ring")
+    tangent = _frequency_part(polygon, n, 1)
+    left.plot(*flat(np.vstack([tangent, tangent[:1]])), "-", color="C0", label="tangent plane (k = 1)")
+    if report.hyperbolic_size is not None:
+        hyper = _frequency_part(polygon, n, 2)
+        left.plot(*flat(np.vstack([hyper, hyper[:1]])), "-", color="C3", label="hyperbolic (k = 2)")
+    limit = np.array(report.limit) - points[0]
+    left.plot([0], [0], "ks", ms=5, label="O")
+    left.plot(*flat(limit), "C2*", ms=10, label="limit point")
+    left.set_aspect("equal")
+    label_axes(left, "along t_1", "along n x t_1", f"vertex {report.vertex}, valence {n}: in the tangent plane", loc="best")
+    index = np.arange(len(polygon))
+    right.plot(index, polygon @ normal, "-o", color="0.3", ms=3, label="height of the 1-ring")
+    elliptic = _frequency_part(polygon, n, 0)
+    right.plot(index, elliptic @ normal, "--", color="C1", label="elliptic (k = 0)")
+    if report.hyperbolic_size is not None:
+        right.plot(index, hyper @ normal, "-", color="C3", label="hyperbolic (k = 2)")
+    right.axhline(0, color="k", lw=0.5)
+    label_axes(right, "point of the 1-ring polygon", "height along the normal", "off the tangent plane through O", loc="best")
+    return fig
+
+
+def png_bytes(fig, dpi: int = 100) -> bytes:
+    """The figure as PNG bytes, the same on every run (no software or date entries)."""
+    out = io.BytesIO()
+    fig.savefig(out, format="png", dpi=dpi, metadata={"Software": None})
+    return out.getvalue()

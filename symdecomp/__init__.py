@@ -51,7 +51,8 @@ nothing else.
                    nets (``characteristic``), where a 1-ring component starts on one eigenvector
                    of M_j (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
-                   (``ring_charpoly``), masks (``ring_masks``); the patch's certified eigen-data
+                   (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
+                   vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
@@ -67,14 +68,17 @@ nothing else.
                    Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
                    the patch evaluator (``patch_eval``); the tuning region with Reif's
-                   weight-independent conditions certified (``tuning_c1``); certified shape at the
-                   vertex: the sign of the Gaussian curvature of a central surface (``curvature``),
-                   elliptic, hyperbolic or hybrid, and the shape chart (``shape``)
+                   weight-independent conditions certified (``tuning_c1``); the certified
+                   second-order eigenstructure and curvature regime (``second_order_spectrum``) and
+                   the artifact indicators (``artifacts``); certified shape at the vertex: the sign
+                   of the Gaussian curvature of a central surface (``curvature``), elliptic,
+                   hyperbolic or hybrid, and the shape chart (``shape``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
                    ``s6_cb_matrices``, ``s6_cb_subdivision``, ``s6_closing``,
-                   ``s6_full_spectrum``) and their registry (``registry``); every claim is checked
+                   ``s6_full_spectrum``), the toolkit's own claims beyond the paper (curvature and
+                   shape, ``b1_curvature``) and their registry (``registry``); every claim is checked
                    for a scheme, within a time budget, and no verdict rests on a free parameter or an
                    undefined value (``guards``); what several checks share: the requirements a claim declares
                    (``applicability``), computed evidence (``evidence``), the paper's notation
@@ -92,8 +96,8 @@ nothing else.
                    ``report_tex``; as one HTML file, ``report_html``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
-                   ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``evaldata_cmd``,
-                   ``inspect_cmd``, ``report_cmd``, ``design_cmd``),
+                   ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
+                   ``evaldata_cmd``, ``inspect_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``)
 ``__main__``       python -m symdecomp: the command line
@@ -108,6 +112,7 @@ from symdecomp.algebra.cbmatrix import *  # noqa: F403 - its __all__ is the Sect
 from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
 from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
 from symdecomp.analysis.design import LimitFrame, RingDesign, design_ring, limit_frame
 from symdecomp.analysis.eigendata import certified_eigendata
@@ -140,11 +145,13 @@ from symdecomp.schemes.patch import patch_matrices
 from symdecomp.schemes.refinement import central_rings, mesh_rules, refine
 from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
+from symdecomp.verify.artifacts import ArtifactIndicators, artifact_indicators
 from symdecomp.verify.c1 import C1Result, c1_test
 from symdecomp.verify.certify import Certificate, certify
 from symdecomp.verify.numeric import NumericCheck, numeric_check
 from symdecomp.verify.result import C1Verdict, CrossCheckResult, CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
+from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
 from symdecomp.verify.shape import ShapeChart, ShapeResult, classify_shape, shape_chart
 
 __version__ = "0.1.0"
@@ -247,6 +254,14 @@ __all__ = [
     "c1_test",
     "C1Result",
     "C1Verdict",
+    # curvature and artifacts at an extraordinary vertex (issue 21)
+    "CurvatureRegime",
+    "curvature_regime",
+    "frequency_kind",
+    "second_order_eigenstructure",
+    "CurvatureResult",
+    "artifact_indicators",
+    "ArtifactIndicators",
     # shape at an extraordinary vertex (central surfaces, certified)
     "classify_shape",
     "ShapeResult",

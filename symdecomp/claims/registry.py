@@ -33,7 +33,8 @@ statement of the paper is one input, the scheme the other, and the status follow
 Statements that do not involve the scheme (Section 2, the CB-matrix algebra of Section 6) have the
 same status for every scheme.
 
-Registering a claim (later issues add modules ``symdecomp/claims/s*.py``; they are found
+Registering a claim (later issues add modules ``symdecomp/claims/s*.py``, and ``b*.py`` for the toolkit's
+own claims beyond the paper, sections ``"B.<k>"`` after the paper's: :func:`section_key`; they are found
 automatically)::
 
     @claim("Eq. 34", section="5.1", title="Eigenvalues of M_j", statement="...", requires=(MIRROR_SYMMETRIC,))
@@ -80,22 +81,8 @@ from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeE
 from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
 
 __all__ = [
-    "Text",
-    "Verbatim",
-    "Status",
-    "Scope",
-    "erratum_scope",
-    "ScopeSummary",
-    "scope_summary",
-    "Step",
-    "CheckResult",
-    "Claim",
-    "Requirement",
-    "claim",
-    "all_claims",
-    "get_claim",
-    "check_claim",
-    "REGISTRY",
+    "Text", "Verbatim", "Status", "Scope", "erratum_scope", "ScopeSummary", "scope_summary", "Step", "CheckResult", "Claim",
+    "Requirement", "claim", "all_claims", "get_claim", "check_claim", "REGISTRY", "BEYOND", "section_key",
 ]
 
 
@@ -380,9 +367,23 @@ class Claim:
     requires: tuple[Requirement, ...] = ()
 
     def sort_key(self):
-        """Paper order: by section, then in the order the section's module registers its claims."""
-        section = tuple(int(p) for p in self.section.split("."))
-        return (section, self.order)
+        """Paper order: by section (:func:`section_key`), then in the order the section's module registers its claims."""
+        return (section_key(self.section), self.order)
+
+
+#: The prefix of the sections of the toolkit's own claims (modules ``b<digit>_*.py``), after the paper's: ``"B.1"``.
+BEYOND = "B"
+
+
+def section_key(section: str) -> tuple:
+    """Where a section sorts: the paper's numerically, then the toolkit's own (``"B.1"``, ``"B.2"``).
+
+    >>> sorted(["B.1", "6", "5.10", "5.2"], key=section_key)
+    ['5.2', '5.10', '6', 'B.1']
+    """
+    head, _, rest = section.partition(".")
+    own = head == BEYOND
+    return (int(own), *(int(p) for p in (rest if own else section).split(".")))
 
 
 REGISTRY: dict[str, Claim] = {}
@@ -404,12 +405,12 @@ def _load_sections() -> None:
     from symdecomp import claims as package
 
     for info in sorted(pkgutil.iter_modules(package.__path__), key=lambda m: m.name):
-        if info.name.startswith("s") and info.name[1:2].isdigit():
+        if info.name[:1] in ("s", BEYOND.lower()) and info.name[1:2].isdigit():  # the paper's sections, then the toolkit's
             importlib.import_module(f"{package.__name__}.{info.name}")
 
 
 def all_claims() -> list[Claim]:
-    """Every registered claim, in the paper's order."""
+    """Every registered claim, in the paper's order (the toolkit's own claims after the paper's)."""
     _load_sections()
     return sorted(REGISTRY.values(), key=Claim.sort_key)
 

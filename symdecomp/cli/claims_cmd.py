@@ -22,7 +22,8 @@ def register(sub) -> None:
         "exact counterexample).",
     )
     flag(p, "--json", help="print a JSON list of {label, section, title, status, scope, evidence, ...}")
-    p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1)")
+    p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1), or of the toolkit's "
+                   "own claims beyond the paper (B, B.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
     add_scheme_option(p)
     add_budget_option(p)

@@ -69,6 +69,8 @@ LIMITS = {
     "jobs": (256, "more worker processes than this only cost memory"),
     "c1": (4096, "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 4096 takes about "
            "0.15 s, the range 3:4096 about 5 minutes on one core"),
+    "artifacts": (4096, "a valence costs time ~ N (the C1 test's spectrum plus one exact left eigenvector): N = 64 takes "
+                  "about 0.05 s"),
     "c1 --depth": (MAX_DEPTH, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),

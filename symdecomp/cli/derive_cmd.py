@@ -16,7 +16,7 @@ from symdecomp.output.latex import claim_latex, derivation_files
 __all__ = ["register", "run", "write_derivations"]
 
 #: Files this command owns in the output directory (stale ones are removed on regeneration).
-OWNED = re.compile(r"^(main|section-[0-9-]+)\.tex$")
+OWNED = re.compile(r"^(main|section-[0-9-]+|beyond-[0-9-]+)\.tex$")
 
 
 def register(sub) -> None:

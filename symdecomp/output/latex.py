@@ -26,7 +26,7 @@ from importlib import resources
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_sympy
-from symdecomp.claims import CheckResult, Claim, Status, Step, Text, Verbatim, check_claim, scope_summary
+from symdecomp.claims import CheckResult, Claim, Status, Step, Text, Verbatim, check_claim, scope_summary, section_key
 from symdecomp.errors import InvalidTypeError
 from symdecomp.output.texlayout import formula_display, latex, mapping_rows, rows_display, size
 
@@ -43,6 +43,7 @@ SECTION_TITLES = {
     "5.2": "Elliptic properties",
     "5.3": "Hyperbolic properties",
     "6": "Exact calculation on CB-matrices",
+    "B.1": "Beyond the paper: curvature and shape",
 }
 
 PAPER = (
@@ -353,16 +354,21 @@ def _(obj: Claim) -> str:
 
 
 def section_file_name(section: str) -> str:
-    """The file holding a section's derivations: ``"5.1"`` -> ``"section-5-1.tex"``."""
+    """The file holding a section's derivations: ``"5.1"`` -> ``"section-5-1.tex"``, the toolkit's own ``"B.1"`` -> ``"beyond-1.tex"``."""
+    if _beyond(section):
+        return "beyond-" + section.partition(".")[2].replace(".", "-") + ".tex"
     return "section-" + section.replace(".", "-") + ".tex"
 
 
-def _section_key(section: str):
-    return tuple(int(p) if p.isdigit() else p for p in section.split("."))
+def _beyond(section: str) -> bool:
+    return section_key(section)[0] == 1  # the toolkit's own claims (``BEYOND``), after the paper's
 
 
 def _heading(section: str) -> str:
-    """``\\section``/``\\subsection`` numbered as in the paper."""
+    """``\\section``/``\\subsection`` numbered as in the paper; a section of the toolkit's own claims is unnumbered."""
+    if _beyond(section):
+        title = _one_line(SECTION_TITLES.get(section, f"Beyond the paper {section}"))  # unnumbered, in the contents
+        return f"\\section*{{{title}}}\n\\addcontentsline{{toc}}{{section}}{{{title}}}\n"
     parts = section.split(".")
     depth = min(len(parts), 3)
     command = ("section", "subsection", "subsubsection")[depth - 1]
@@ -460,8 +466,8 @@ def derivation_files(pairs: Sequence[tuple[Claim, CheckResult]]) -> dict[str, st
     files: dict[str, str] = {}
     inputs = []
     introduced: set[str] = set()
-    for section in sorted(sections, key=_section_key):
-        parts = section.split(".")
+    for section in sorted(sections, key=section_key):
+        parts = [] if _beyond(section) else section.split(".")
         for depth in range(1, len(parts)):
             parent = ".".join(parts[:depth])
             if parent not in introduced and parent not in sections:
@@ -482,6 +488,8 @@ def derivation_files(pairs: Sequence[tuple[Claim, CheckResult]]) -> dict[str, st
         "numbering, each with its statement as printed, the outcome of its check, and the "
         "derivation computed by symdecomp (every formula is printed by sympy from the computed "
         "objects). Claims the check found false as printed are marked in colour.\n\n"
+        + ("After the paper's sections come the toolkit's own claims (\\emph{Beyond the paper}): statements from the literature "
+           "the paper builds on, each citing its source, checked in the same way.\n\n" if any(map(_beyond, sections)) else "")
         + _summary(pairs, anchors)
         + "\n"
         + "".join(inputs)

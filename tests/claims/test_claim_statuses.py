@@ -86,6 +86,12 @@ EXPECTED = {
     "1-ring suffices (after Eq. 51)": P,  # left eigenvectors of 1, lambda_1 vanish outside the 1-ring, every n
     "Larger neighbourhoods (after Eq. 51)": C,  # the 2-ring adds 1/8, 1/16, 1/32, 1/64, not null columns
     "Spectrum (Eq. 34, Eq. 43)": P,  # block factorization for symbolic n (certified n = 3..48 too)
+    # beyond the paper: curvature and shape (issue 21)
+    "Curvature regime: Catmull-Clark": V,  # n = 3..64: flat at 3, bounded at 4, unbounded (hyperbolic) from 5
+    "Curvature regime: Loop": V,  # n = 3..64: unbounded at 3 (outer 1/8), bounded 4..6, unbounded (hyperbolic) from 7
+    "Loop's vertex weight": P,  # the elliptic eigenvalue is lambda_1^2 identically in n
+    "Curvature at the regular valence": V,  # mu = 1/4 = lambda_1^2 three times at n = 4
+    "Shape: the valence decides": V,  # the hyperbolic part dominates from n = 5 (Catmull-Clark), 7 (Loop); n = 3..32
 }
 
 

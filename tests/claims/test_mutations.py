@@ -20,6 +20,7 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.claims import Status, all_claims, check_claim, get_claim
 from symdecomp.errors import InvalidSchemeError, NotAffineError
 from symdecomp.schemes.files import scheme_from_text, scheme_to_text
@@ -100,6 +101,12 @@ FILES = {
     "loop beta zero at EV": loop_file("loop beta zero at EV", beta="(n - 5)/16"),
     "loop opposite at EV": loop_file("loop opposite at EV", beta="(1 + cos(2*pi/n)/4)/n - (n - 5)/8"),
     "loop beta zero": loop_file("loop beta zero", beta="0"),
+    # Warren's vertex weights 3/16 at n = 3, 3/(8n) at n = 4, 5, 6 (Loop's 1/16 at 6): the elliptic eigenvalue 1/4 exceeds
+    # lambda_1^2 at n = 4, 5
+    "loop warren file": loop_file("loop warren file", beta="3/(8*n) + (4 - n)*(5 - n)*(6 - n)/96"),
+    # vertex weights 1/20, 1/100 at n = 5 (Catmull-Clark's at 4): the elliptic eigenvalue rises above the hyperbolic one
+    "elliptic above hyperbolic at 5": quad_file("elliptic above hyperbolic at 5",
+                                                vertex='[vertex]\na = "3/(2*n**2) - (n - 4)/100"\nb = "1/(4*n**2)"\n'),
     # beta puts -lambda_1 at frequency 0 exactly, for every n
     "loop opposite": loop_file("loop opposite", beta="(1 + cos(2*pi/n)/4)/n"),
     # side weights (2n - 11)/8 (Loop's 1/8 at n = 6): at n = 5 the frequency 2 dominates
@@ -296,6 +303,16 @@ TABLE = [
     ("Section 5.3: smaller eigenvalues", "bilinear file", R),  # M_2's 1/2 is not below M_1's 1/2 at n = 4
     ("Section 5.3: basis function", "bilinear file", V),
     ("Larger neighbourhoods (after Eq. 51)", "bilinear file", P),  # every new ring adds only 0 and null columns
+    # beyond the paper: curvature and shape (issue 21)
+    ("Curvature regime: Catmull-Clark", "elliptic above hyperbolic at 5", R),  # unbounded at 5, but by the elliptic part
+    ("Curvature regime: Catmull-Clark", printed("b1_curvature", "CATMULL_CLARK", ((3, 4, CurvatureRegime.BOUNDED, None),
+                                                                              (5, None, CurvatureRegime.UNBOUNDED, None))), R),
+    ("Curvature regime: Loop", "loop warren file", R),  # unbounded at n = 4 by the elliptic eigenvalue 1/4
+    ("Curvature regime: Loop", "loop file", V),
+    ("Loop's vertex weight", "loop warren file", R),  # exact: 1/4 - 9/64 at n = 4
+    ("Curvature at the regular valence", printed("b1_curvature", "REGULAR_MULTIPLICITY", 2), R),
+    ("Shape: the valence decides", "elliptic above hyperbolic at 5", R),
+    ("Shape: the valence decides", printed("b1_curvature", "DOMINANCE", {False: ((3, None, None),), True: ((3, None, None),)}), R),
 ]
 
 def _status(label, change, monkeypatch):
@@ -379,6 +396,8 @@ NO_FILE_FLIP = {
                                   "point is the centroid, the edge rule is symmetric from both ends); the mesh files tried "
                                   "(tuned vertex weights, edge weights 1/2 or 1/4 on the ends) keep 9 and 25, a zero vertex "
                                   "weight makes the classification 'not applicable', and other files are not mesh rules",
+    "Curvature at the regular valence": "at the regular valence a scheme the test applies to has the spline's rules "
+                                        "(other regular rules make it 'not applicable'), so mu = lambda_1^2 three times",
     "1-ring suffices (after Eq. 51)": "the mesh files tried (bilinear, midpoint edges, Loop) keep the left eigenvectors of "
                                       "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable'",
 }

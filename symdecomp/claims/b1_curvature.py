@@ -1,0 +1,238 @@
+"""Beyond the paper: curvature and shape at the extraordinary vertex (the toolkit's own claims, section B.1).
+
+The paper ends: "In the future we plan to use the technique presented here to study more systematically
+artifacts on subdivision surfaces." These claims do so for the curvature: the regime at each valence
+(:mod:`symdecomp.verify.second_order_spectrum`: ``|mu|`` against ``lambda_1^2`` on the 2-ring matrix, certified,
+exact on ties), against what the shape literature reports.
+
+Sources, and what could be checked of them here: K. Karciauskas, J. Peters, U. Reif, *Shape
+characterization of subdivision surfaces: case studies*, CAGD 21 (2004) 601-614, and J. Peters, U. Reif,
+*Shape characterization of subdivision surfaces: basic principles*, CAGD 21 (2004) 585-599 (their
+abstracts: the curvature behaviour follows from ``mu`` against ``lambda^2``, and for Catmull-Clark and
+Loop "the limit shape is a function of the valence of the extraordinary point rather than the mesh
+geometry"); M. Sabin, *Eigenanalysis and artifacts of subdivision curves and surfaces* (2002), the
+paper's reference [17]. Their tables of valences could not be read here; the statements below give the
+regimes by valence as those works describe them (flat spots at low valence for Catmull-Clark, divergence
+from the hyperbolic part at high valence, Loop's vertex weight chosen so that the elliptic eigenvalue is
+``lambda_1^2``), and each check computes them from the scheme's rules, so a different scheme or a
+different statement changes the status.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from symdecomp.analysis.curvature_regime import CurvatureRegime
+from symdecomp.analysis.frequency import one_ring_matrices
+from symdecomp.claims.applicability import NO_FREE_PARAMETERS
+from symdecomp.claims.notation import eq, gt, lambda_1, lt
+from symdecomp.claims.registry import CheckResult, Status, Step, Text, Verbatim, claim
+from symdecomp.schemes.lattice import LATTICES
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
+from symdecomp.verify.artifacts import artifact_indicators, dominant_part
+from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
+
+#: The valences of the tables (about a second per scheme; ``symdecomp artifacts`` does more).
+VALENCES = (3, 64)
+
+#: As printed: the multiplicity of ``mu = lambda_1^2`` at the regular valence (the three quadratic terms).
+REGULAR_MULTIPLICITY = 3
+
+B, Z, U = CurvatureRegime.BOUNDED, CurvatureRegime.ZERO, CurvatureRegime.UNBOUNDED
+
+#: As printed (the statements below): ``(first n, last n or None, regime, the kind of mu or None)``.
+CATMULL_CLARK = ((3, 3, Z, "elliptic"), (4, 4, B, None), (5, None, U, "hyperbolic"))
+LOOP = ((3, 3, U, "regular rules (every frequency)"), (4, 5, B, "elliptic"), (6, 6, B, None), (7, None, U, "hyperbolic"))
+
+_HEADER = [sp.Symbol("n"), sp.Symbol("lambda_1"), sp.Symbol("lambda_1") ** 2, sp.Abs(sp.Symbol("mu")), sp.Symbol("j_mu")]
+
+
+def _number(ball) -> sp.Float:
+    return sp.Float(float(abs(ball).mid()), 6)
+
+
+def _row(r: CurvatureResult) -> list:
+    freq = ",".join("outer" if e.frequency is None else str(e.frequency) for e in r.mu)
+    return [r.n, _number(r.lambda1), _number(abs(r.lambda1) ** 2), _number(r.mu[0].value), sp.Symbol(freq)]
+
+
+MU = sp.Symbol("mu")
+_RELATION = {CurvatureRegime.BOUNDED: eq, CurvatureRegime.ZERO: lt, CurvatureRegime.UNBOUNDED: gt}
+
+
+def _computed(r: CurvatureResult) -> Text:
+    """The computed regime as a finding: the comparison of ``|mu|`` with ``lambda_1^2`` and the numbers (6 digits)."""
+    relation = _RELATION.get(r.regime)
+    compared = relation(sp.Abs(MU), lambda_1**2) if relation else Text("no comparison")
+    return Text(f"computed: {r.regime.value} (", compared, ", with ", eq(sp.Abs(MU), _number(r.mu[0].value) if r.mu else sp.nan),
+                " and ", eq(lambda_1**2, _number(abs(r.lambda1) ** 2)), f", mu at the {r.cause} part)")
+
+
+def _expected(n: int, printed) -> tuple[CurvatureRegime, str | None]:
+    return next((regime, kind) for lo, hi, regime, kind in printed if lo <= n and (hi is None or n <= hi))
+
+
+def check_regimes(scheme: Scheme, printed, valences: tuple[int, int] = VALENCES) -> CheckResult:
+    """Compare the certified regime at each valence with ``printed`` (``(lo, hi, regime, kind of mu)`` rows)."""
+    lo, hi = max(valences[0], scheme.minimum_valence()), valences[1]
+    rows = []
+    for n in range(lo, hi + 1):
+        r = second_order_eigenstructure(scheme, n)
+        if r.regime in (CurvatureRegime.UNDECIDED, CurvatureRegime.NOT_APPLICABLE):
+            return CheckResult(Status.UNDECIDED, Verbatim(f"{scheme.name}, n = {n}: {r.reason}"))
+        regime, kind = _expected(n, printed)
+        if r.regime is not regime or (kind is not None and r.cause != kind):
+            what = Text(Verbatim(scheme.name), f", n = {n}: the statement says {regime.value}"
+                        + (f" caused by the {kind} part" if kind else "") + "; ", _computed(r))
+            return CheckResult(Status.REFUTED, what, counterexample=what,
+                               steps=(Step("The regimes up to the counterexample", sp.Matrix([_HEADER] + rows + [_row(r)])),))
+        if n <= 10:
+            rows.append(_row(r))
+    steps = (Step(f"$\\lambda_1$, $\\lambda_1^2$, $|\\mu|$ and the frequency of $\\mu$ for $n = {lo}, \\dots, {min(hi, 10)}$ "
+                  "(to 6 digits; the comparisons are certified, and exact where $|\\mu| = \\lambda_1^2$)",
+                  sp.Matrix([_HEADER] + rows)),)
+    return CheckResult(Status.VERIFIED, Text("the certified regime agrees with the statement for ", Verbatim(scheme.name),
+                                             f" at every n = {lo}..{hi} (Arb balls; ties exact in Q(exp(2 pi i/2n)))"),
+                       steps=steps, valences=(lo, hi))
+
+
+def _on(scheme: Scheme, triangles: bool) -> Scheme:
+    """``scheme`` if it lives on the wanted lattice, else that lattice's reference scheme (Catmull-Clark, Loop)."""
+    if (not scheme.lattice.face_neighbours) == triangles:
+        return scheme
+    return next(lat for lat in LATTICES.values() if (not lat.face_neighbours) == triangles).reference()
+
+
+@claim(
+    "Curvature regime: Catmull-Clark",
+    section="B.1",
+    title="Catmull-Clark: a flat spot at $n = 3$, unbounded curvature for $n \\ge 5$",
+    statement=r"For Catmull-Clark surfaces the curvature at an extraordinary vertex tends to zero at $n = 3$ "
+    r"($|\mu| < \lambda_1^2$, $\mu$ elliptic), is bounded at $n = 4$, and is unbounded for every $n \ge 5$, caused by "
+    r"the hyperbolic (frequency 2) eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004); Peters, Reif, CAGD 21 (2004)).",
+    requires=(NO_FREE_PARAMETERS,),
+)
+def _catmull_clark(scheme: Scheme) -> CheckResult:
+    return check_regimes(_on(scheme, False), CATMULL_CLARK)
+
+
+@claim(
+    "Curvature regime: Loop",
+    section="B.1",
+    title="Loop: bounded curvature for $n = 4, 5, 6$ only",
+    statement=r"For Loop surfaces the curvature at an extraordinary vertex is unbounded at $n = 3$ (the regular rules' "
+    r"eigenvalue $1/8$ exceeds $\lambda_1^2 = 1/16$), bounded at $n = 4, 5$ (Loop's vertex weight puts the elliptic "
+    r"eigenvalue at $\lambda_1^2$) and at $n = 6$, and unbounded for every $n \ge 7$, caused by the hyperbolic "
+    r"eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004)).",
+    requires=(NO_FREE_PARAMETERS,),
+)
+def _loop(scheme: Scheme) -> CheckResult:
+    return check_regimes(_on(scheme, True), LOOP)
+
+
+@claim(
+    "Loop's vertex weight",
+    section="B.1",
+    title="Loop's weight makes the elliptic eigenvalue exactly $\\lambda_1^2$",
+    statement=r"Loop's vertex weight $\beta(n) = (5/8 - (3/8 + \cos(2\pi/n)/4)^2)/n$ makes the frequency-0 (elliptic) "
+    r"eigenvalue equal to $\lambda_1^2$ at every valence (Loop 1987; Peters, Reif 2004).",
+)
+def _loop_weight(scheme: Scheme) -> CheckResult:
+    s = _on(scheme, True)
+    M, E0 = one_ring_matrices(s)
+    elliptic = sp.expand(E0.trace() - 1)  # E_0 is 2 x 2 with the eigenvalue 1: the other one is its trace minus 1
+    lam1 = M[0, 0].subs(OMEGA, sp.exp(2 * sp.pi * sp.I / N))
+    defect = sp.simplify(sp.expand((elliptic - lam1**2).rewrite(sp.cos)))
+    steps = (Step("The elliptic eigenvalue (trace of $E_0$ minus 1)", elliptic),
+             Step("$\\lambda_1 = M(\\omega_n)$", sp.simplify(lam1.rewrite(sp.cos))),
+             Step("The elliptic eigenvalue minus $\\lambda_1^2$", defect))
+    if defect == 0:
+        return CheckResult(Status.PROVED, Text("for ", Verbatim(s.name), ", the elliptic eigenvalue minus ", lambda_1**2,
+                                               " simplifies to 0 for every n"), steps=steps)
+    k = next((k for k in range(3, 65) if sp.simplify(defect.subs(N, k)) != 0), None)
+    if k is None:
+        return CheckResult(Status.UNDECIDED, Text("the difference ", defect, " does not simplify to 0 but vanishes for n = 3..64"),
+                           steps=steps)
+    at = sp.simplify(defect.subs(N, k))
+    return CheckResult(Status.REFUTED, Text("for ", Verbatim(s.name), " the elliptic eigenvalue is not ", lambda_1**2),
+                       counterexample=Text(f"n = {k}: the elliptic eigenvalue minus ", lambda_1**2, " is ", at), steps=steps)
+
+
+@claim(
+    "Curvature at the regular valence",
+    section="B.1",
+    title="At the regular valence the curvature is bounded: $\\mu = \\lambda_1^2$, three times",
+    statement=r"At the regular valence the subdivision surface is the spline, which reproduces quadratic polynomials: "
+    r"$\mu = \lambda_1^2$ exactly, with multiplicity 3 (the quadratic terms), and the curvature is bounded.",
+    requires=(NO_FREE_PARAMETERS,),
+)
+def _regular(scheme: Scheme) -> CheckResult:
+    return check_regular(scheme, REGULAR_MULTIPLICITY)
+
+
+def check_regular(scheme: Scheme, multiplicity: int) -> CheckResult:
+    """At the regular valence: ``mu = lambda_1^2`` exactly, with ``multiplicity`` copies (printed: 3), bounded curvature."""
+    n = scheme.lattice.regular_valence
+    r = second_order_eigenstructure(scheme, n)
+    frequencies = sp.FiniteSet(*(e.frequency for e in r.mu))
+    steps = (Step(f"The eigenvalues of largest modulus after 1 and $\\lambda_1$ at $n = {n}$, their frequencies", frequencies),)
+    if r.regime is CurvatureRegime.BOUNDED and r.mu_multiplicity == multiplicity and all(e.exact for e in r.mu):
+        return CheckResult(Status.VERIFIED, Text(f"at n = {n}: ", eq(sp.Abs(MU), lambda_1**2), " exactly (",
+                                                 eq(lambda_1**2, _number(abs(r.lambda1) ** 2)), "), at the frequencies ", frequencies,
+                                                 f" with multiplicity {r.mu_multiplicity}: the curvature is bounded"),
+                           steps=steps, valences=(n, n))
+    if r.regime is CurvatureRegime.UNDECIDED:
+        return CheckResult(Status.UNDECIDED, Verbatim(r.reason), steps=steps)
+    what = Text(Verbatim(scheme.name), f" at n = {n}: ", _computed(r), f"; multiplicity {r.mu_multiplicity}, not {multiplicity}")
+    return CheckResult(Status.REFUTED, what, counterexample=what, steps=steps)
+
+
+#: As printed: ``(first n, last n or None, the dominant part's frequency or None for neither)``, per lattice.
+DOMINANCE = {False: ((3, 4, None), (5, None, 2)), True: ((3, 3, None), (4, 5, 0), (6, 6, None), (7, None, 2))}
+SHAPE_VALENCES = (3, 32)
+
+
+def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_VALENCES) -> CheckResult:
+    """Compare which second-order part dominates on fine rings (frequency 0 or 2, or neither) with ``printed``."""
+    lo, hi = max(valences[0], scheme.minimum_valence()), valences[1]
+    for n in range(lo, hi + 1):
+        a = artifact_indicators(scheme, n) if n <= 8 else None
+        dominant = a.shape[2] if a else dominant_part(second_order_eigenstructure(scheme, n))
+        expected = next(d for first, last, d in printed if first <= n and (last is None or n <= last))
+        if dominant != expected:
+            name = {0: "the elliptic part", 2: "the hyperbolic part", None: "neither part"}
+            what = Text(Verbatim(scheme.name), f", n = {n}: the statement says {name[expected]} dominates; computed: "
+                        f"{name[dominant]}")
+            return CheckResult(Status.REFUTED, what, counterexample=what)
+    shapes = sp.Matrix([[sp.Integer(n), sp.Symbol(artifact_indicators(scheme, n).shape[0])] for n in range(max(lo, 4), 9)])
+    return CheckResult(
+        Status.VERIFIED,
+        Text("the part that dominates on fine rings agrees with the statement for ", Verbatim(scheme.name),
+             f" at every n = {lo}..{hi} (the largest frequency-0 and frequency-2 eigenvalues after ", lambda_1, ", certified)"),
+        steps=(Step("The certified shape of the central surface for elliptic input (the frequency-0 height), n = 4..8: where "
+                    "the hyperbolic part dominates, this is not the shape the rings tend to", shapes),),
+        valences=(lo, hi))
+
+
+@claim(
+    "Shape: the valence decides",
+    section="B.1",
+    title="Convex input does not stay convex: for $n \\ge 5$ (Catmull-Clark) and $n \\ge 7$ (Loop)",
+    statement=r"For generic input the shape near an extraordinary vertex is decided by the valence, not by the mesh: "
+    r"the hyperbolic (frequency 2) eigenvalue exceeds the elliptic (frequency 0) one for Catmull-Clark at every "
+    r"$n \ge 5$ and for Loop at every $n \ge 7$, so the hyperbolic part dominates on fine rings even for convex input; "
+    r"for Loop at $n = 4, 5$ the elliptic part dominates, and the two tie at the regular valence (Karciauskas, Peters, "
+    r"Reif, CAGD 21 (2004)).",
+    requires=(NO_FREE_PARAMETERS,),
+)
+def _shape(scheme: Scheme) -> CheckResult:
+    quad = check_dominance(_on(scheme, False), DOMINANCE[False])
+    if quad.status is not Status.VERIFIED:
+        return quad
+    tri = check_dominance(_on(scheme, True), DOMINANCE[True])
+    if tri.status is not Status.VERIFIED:
+        return tri
+    return CheckResult(Status.VERIFIED, Text(quad.evidence, "; and ", tri.evidence), steps=quad.steps + tri.steps,
+                       valences=quad.valences)

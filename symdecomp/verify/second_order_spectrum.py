@@ -1,0 +1,292 @@
+"""The second-order eigenstructure at an extraordinary vertex and the curvature regime, certified, for any scheme.
+
+**Which matrix.** The eigenvalues counted are those of the 2-ring subdivision matrix whose eigenvectors
+generate the characteristic map and the rings of patches around the vertex
+(:mod:`symdecomp.analysis.characteristic`; ``(6n + 1)`` square on quads, ``(3n + 1)`` on triangles), the
+matrix of Reif's test (:mod:`symdecomp.verify.c1_spectrum`, whose certified per-frequency enclosures
+are reused here). Every ring of patches is a fixed linear function of those 2-ring points, so every
+eigenvalue of that matrix counts, at every frequency: the roots of the 1-ring blocks (``M_j``; at
+``j = 0`` the Eq. 43 matrix without its eigenvalue 1) and those of the outer blocks, which hold only
+the regular rules and have the same exact rational eigenvalues at every frequency of every valence
+(Catmull-Clark ``1/8, 1/16, 1/32, 1/64``, Loop ``1/8, 1/16``; ``n`` copies each).
+
+**The test** (:mod:`symdecomp.analysis.curvature_regime` for what the regimes mean):
+
+1. Reif's spectral conditions must hold (:func:`~symdecomp.verify.c1_spectrum.spectral_conditions`:
+   ``lambda_1`` real, double, strictly dominant after 1); otherwise the regime is *not applicable* and
+   the reason says why (the second-order terms are measured against ``lambda_1^2`` only then).
+2. Every other eigenvalue ``e`` is compared with ``lambda_1^2`` in Arb. When the balls of ``|e|`` and
+   ``lambda_1^2`` overlap, the tie is decided exactly in the cyclotomic field ``Q(e^{2 pi i/2n})``
+   (:mod:`symdecomp.algebra.cyclotomic`): the squares of the roots of ``lambda_1``'s block are the roots of
+   ``x^2 - (c_1^2 - 2 c_2) x + c_2^2`` (``x - c_1^2`` for a ``1 x 1`` block), and ``e = +-lambda_1^2``
+   exactly when that polynomial and ``e``'s block's (at ``-x`` for the minus sign) share the root that
+   only ``lambda_1^2`` and ``e`` are near (the shared-root test of the C1 spectrum). A tie with a non-real
+   eigenvalue is not decided exactly: it stays undecided (after a retry at higher precision).
+3. The regime follows from the signs of ``|e| - lambda_1^2`` alone (:func:`~symdecomp.analysis.curvature_regime.curvature_regime`):
+   unbounded if one is positive, zero if all are negative, bounded if the largest are exact ties. ``mu``
+   is the largest modulus after ``1`` and ``lambda_1``; when several eigenvalues (different frequencies,
+   a complex pair) are not separated from it in modulus they are all reported.
+
+Schemes outside the test: regular rules other than Catmull-Clark's or Loop's, free parameters, or
+weights outside the cyclotomic field raise :class:`~symdecomp.errors.NotApplicableError` (one line).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import flint
+
+from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.analysis.characteristic import check_applicable, outer_charpoly
+from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
+from symdecomp.analysis.frequency import one_ring_matrices
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import cached, check_valence
+from symdecomp.verify.c1_spectrum import (
+    _exact,
+    _exact_charpoly,
+    _frequency_zero,
+    _other_frequencies,
+    _shared_root,
+    _siblings,
+    ball_text,
+    spectral_conditions,
+)
+from symdecomp.verify.result import C1Verdict
+
+__all__ = ["SecondOrderEigenvalue", "CurvatureResult", "second_order_eigenstructure"]
+
+#: Working precisions (bits): the second is tried only when the first leaves the regime undecided.
+PRECISIONS = (128, 512)
+
+
+@dataclass(frozen=True)
+class SecondOrderEigenvalue:
+    """An eigenvalue of the 2-ring matrix after ``1`` and ``lambda_1``, compared with ``lambda_1^2``."""
+
+    #: An Arb ball around it.
+    value: flint.acb
+    #: Its frequency ``j <= n/2`` (``None``: the outer blocks, the same at every frequency).
+    frequency: int | None
+    #: Copies in the full matrix (frequencies ``j`` and ``n - j``; ``n`` for the outer blocks).
+    multiplicity: int
+    #: The paper's name of the frequency: elliptic (0), tangent (1), hyperbolic (2), ...
+    kind: str
+    #: The sign of ``|value| - lambda_1^2`` (``None``: not decided).
+    comparison: int | None
+    #: ``comparison == 0`` was shown exactly (in the cyclotomic field).
+    exact: bool = False
+    #: A double root of the frequency-0 block with a Jordan block.
+    defective: bool = False
+    #: One of a complex conjugate pair of the same block.
+    pair: bool = False
+
+    def as_json(self) -> dict:
+        return {"value": ball_text(self.value, 10), "frequency": self.frequency, "multiplicity": self.multiplicity,
+                "kind": self.kind, "comparison": self.comparison, "exact": self.exact, "complex": self.pair}
+
+
+@dataclass(frozen=True)
+class CurvatureResult:
+    """The second-order eigenstructure at one valence and the curvature regime it implies."""
+
+    n: int
+    regime: CurvatureRegime
+    #: One line: which eigenvalue decides, and how.
+    reason: str
+    #: ``lambda_1`` (``None`` when the spectral conditions fail).
+    lambda1: flint.acb | None = None
+    #: The frequency of ``lambda_1`` (1 for the schemes in use).
+    lambda1_frequency: int | None = None
+    #: The eigenvalues of largest modulus after ``1`` and ``lambda_1`` (several when they are not separated).
+    mu: tuple[SecondOrderEigenvalue, ...] = ()
+    #: Every eigenvalue after ``1`` and ``lambda_1``, largest modulus first.
+    eigenvalues: tuple[SecondOrderEigenvalue, ...] = ()
+
+    @property
+    def cause(self) -> str:
+        """The part of the surface that decides the regime: the kinds (frequencies) of ``mu``."""
+        return ", ".join(dict.fromkeys(e.kind for e in self.mu))
+
+    @property
+    def mu_multiplicity(self) -> int:
+        return sum(e.multiplicity for e in self.mu)
+
+    def as_json(self) -> dict:
+        lam = self.lambda1
+        return {
+            "n": self.n, "regime": self.regime.value, "reason": self.reason, "cause": self.cause,
+            "lambda1": None if lam is None else ball_text(lam, 10),
+            "lambda1_squared": None if lam is None else ball_text(abs(lam) ** 2, 10),
+            "mu": [e.as_json() for e in self.mu], "mu_multiplicity": self.mu_multiplicity,
+            "eigenvalues": [e.as_json() for e in self.eigenvalues[:8]],
+        }
+
+
+def _outer_eigenvalues(scheme: Scheme, n: int) -> list[tuple[flint.acb, flint.fmpq | None, int]]:
+    """``(ball, exact rational or None, multiplicity)`` for the outer blocks' eigenvalues (the same at every frequency)."""
+    coeffs = outer_charpoly(scheme.lattice)
+    _, factors = flint.fmpq_poly(list(reversed(coeffs))).factor()
+    out = []
+    for poly, exponent in factors:
+        if poly.degree() == 1:
+            root = -poly[0] / poly[1]
+            out.append((flint.acb(root), root, n * exponent))
+        else:  # pragma: no cover - the regular rules in use have rational outer eigenvalues
+            out += [(r, None, n * exponent * m) for r, m in poly.complex_roots()]
+    return out
+
+
+def _square_poly(p: tuple) -> tuple:
+    """The monic polynomial whose roots are the squares of the roots of ``x^k + p_1 x^(k-1) + ..`` (``k = 1, 2``)."""
+    if len(p) == 1:
+        return (-(p[0] * p[0]),)
+    return (-(p[0] * p[0] - 2 * p[1]), p[1] * p[1])
+
+
+def _exact_square_tie(square: tuple | None, others: list, lam_sq: flint.acb, q: tuple | None,
+                      value: flint.acb, siblings: list) -> bool:
+    """Whether ``value`` (a root of ``q``) is exactly ``+-lambda_1^2`` (a root of ``square``; ``others``: its other roots)."""
+    if square is None or q is None:
+        return False
+    for sign in (1, -1):
+        qs = tuple(c * sign ** (i + 1) for i, c in enumerate(q))
+        v = value * sign
+        if not v.overlaps(lam_sq):
+            continue
+        shared = _shared_root(square, qs)
+        if shared is None:
+            continue
+        if shared == "all":
+            if all(not v.overlaps(x) for x in others):
+                return True
+        elif shared.overlaps(lam_sq) and all(not shared.overlaps(x) for x in others + [s * sign for s in siblings]):
+            return True
+    return False
+
+
+def _double_root_tie(scheme: Scheme, n: int, j: int, square: tuple | None) -> tuple[bool, bool]:
+    """For a double root ``r = -c_1/2`` of ``M_j`` (``j != 0``): ``(r^2 = lambda_1^4 exactly, M_j - r I != 0)``.
+
+    ``|r| = lambda_1^2`` iff ``r`` or ``-r`` is a root of ``square``; the root has a Jordan block iff
+    ``M_j`` is not ``r I`` (exact entries in the cyclotomic field).
+    """
+    p = _exact_charpoly(scheme, n, j)
+    if square is None or p is None:
+        return False, False
+    r = -p[0] / 2
+    value = lambda x: sum((c * x ** (len(square) - 1 - i) for i, c in enumerate(square)), x ** len(square))  # noqa: E731
+    if value(r) != 0 and value(-r) != 0:
+        return False, False
+    M = [[_exact(x, n, j) for x in row] for row in one_ring_matrices(scheme)[0].tolist()]
+    return True, any((M[a][b] - (r if a == b else 0)) != 0 for a in range(len(M)) for b in range(len(M)))
+
+
+def _compare(modulus: flint.arb, lam_sq: flint.arb) -> int | None:
+    if modulus < lam_sq:
+        return -1
+    return 1 if modulus > lam_sq else None
+
+
+def _eigenvalues(scheme: Scheme, n: int, dom) -> list[SecondOrderEigenvalue]:
+    """Every eigenvalue after 1 and ``lambda_1`` (``dom``), compared with ``lambda_1^2`` (exactly on a tie)."""
+    inner = _frequency_zero(scheme, n)[0] + _other_frequencies(scheme, n, outer=False)[0]
+    lam_sq = dom.value * dom.value
+    exact_lam = _exact_charpoly(scheme, n, dom.frequency)
+    square = None if exact_lam is None else _square_poly(exact_lam)
+    others = [s * s for s in _siblings(inner, dom)]
+    out = []
+    for e in inner:
+        if e.frequency == dom.frequency and e.root == dom.root:
+            continue
+        comparison, exact = _compare(abs(e.value), abs(lam_sq)), False
+        defective = e.defective
+        if comparison is None and e.double:
+            exact, defective = _double_root_tie(scheme, n, e.frequency, square)
+            comparison = 0 if exact else None
+        elif comparison is None and not e.pair:
+            q = _exact_charpoly(scheme, n, e.frequency)
+            exact = _exact_square_tie(square, others, lam_sq, q, e.value, _siblings(inner, e))
+            comparison = 0 if exact else None
+        out.append(SecondOrderEigenvalue(e.value, e.frequency, e.multiplicity, frequency_kind(e.frequency, n),
+                                         comparison, exact, defective, e.pair))
+    field = CyclotomicField(2 * n)
+    for ball, rational, multiplicity in _outer_eigenvalues(scheme, n):
+        comparison, exact = _compare(abs(ball), abs(lam_sq)), False
+        if comparison is None and rational is not None:
+            exact = _exact_square_tie(square, others, lam_sq, (field(-rational),), ball, [])
+            comparison = 0 if exact else None
+        out.append(SecondOrderEigenvalue(ball, None, multiplicity, frequency_kind(None, n), comparison, exact))
+    return sorted(out, key=lambda e: -abs(e.value).mid())
+
+
+def _mu_text(mu: tuple[SecondOrderEigenvalue, ...], n: int) -> str:
+    """``mu`` in words: its value(s), frequencies, multiplicity; complex, negative, or not separated."""
+    parts = []
+    for e in mu:
+        where = "the outer blocks" if e.frequency is None else f"frequency {e.frequency} ({e.kind})"
+        note = ", complex" if e.pair else (", negative" if e.value.real < 0 else "")
+        parts.append(f"{ball_text(e.value)} at {where}, multiplicity {e.multiplicity}{note}")
+    joined = "; ".join(parts)
+    if len(mu) > 1 and not all(e.exact for e in mu):
+        return f"mu not separated in modulus among: {joined}"
+    return f"mu = {joined}" if len(mu) == 1 else f"mu at several frequencies (exactly equal moduli): {joined}"
+
+
+def _decide(n: int, dom, eigen: list[SecondOrderEigenvalue]) -> CurvatureResult:
+    top = eigen[0]
+    mu = tuple(e for e in eigen if not abs(e.value) < abs(top.value))
+    signs = [e.comparison for e in eigen]
+    if 1 in signs:
+        comparison = 1
+    elif None in signs:
+        comparison = None
+    else:
+        comparison = 0 if 0 in signs else -1
+    defective = any(e.defective and e.comparison == 0 for e in eigen)
+    regime = curvature_regime(comparison, defective=defective)
+    lam_sq = ball_text(abs(dom.value) ** 2)
+    if comparison is None:
+        open_ = next(e for e in eigen if e.comparison is None)
+        why = f"|{ball_text(open_.value)}| (frequency {open_.frequency}) is not separated from lambda_1^2 = {lam_sq}"
+    else:
+        rel = {1: ">", 0: "=", -1: "<"}[comparison]
+        how = " (exactly)" if comparison == 0 else ""
+        why = f"{_mu_text(mu, n)}; |mu| {rel} lambda_1^2 = {lam_sq}{how}"
+        if comparison == 1 and top.comparison != 1:  # pragma: no cover - the largest modulus decides first
+            why += " (another eigenvalue exceeds lambda_1^2)"
+    if defective:
+        why += "; mu has a Jordan block"
+    return CurvatureResult(n, regime, f"{REGIME_TEXT[regime]}: {why}", dom.value, dom.frequency, mu, tuple(eigen))
+
+
+@cached(maxsize=512, n=check_valence)
+def _structure(scheme: Scheme, n: int, prec: int) -> CurvatureResult:
+    with flint.ctx.workprec(prec):
+        spectral = spectral_conditions(scheme, n)
+        if spectral.status is not C1Verdict.C1:
+            regime = CurvatureRegime.UNDECIDED if spectral.status is C1Verdict.UNDECIDED else CurvatureRegime.NOT_APPLICABLE
+            return CurvatureResult(n, regime, f"Reif's spectral conditions do not hold ({spectral.reason}), so there is no "
+                                   "lambda_1 to compare mu with")
+        return _decide(n, spectral.subdominant, _eigenvalues(scheme, n, spectral.subdominant))
+
+
+def second_order_eigenstructure(scheme: Scheme, n: int) -> CurvatureResult:
+    """The eigenvalues after 1 and ``lambda_1`` at valence ``n``, ``mu`` and the curvature regime, certified.
+
+    See the module docstring (which matrix, the exact tie). Raises
+    :class:`~symdecomp.errors.NotApplicableError` for schemes outside the test.
+
+    >>> from symdecomp.schemes.loop import loop
+    >>> r = second_order_eigenstructure(loop(), 5)
+    >>> r.regime.value, r.cause, r.mu[0].exact
+    ('bounded', 'elliptic', True)
+    """
+    n = check_scheme(scheme).fitting_valence(n)
+    check_applicable(scheme)
+    for prec in PRECISIONS:
+        result = _structure(scheme, n, prec)
+        if result.regime is not CurvatureRegime.UNDECIDED:
+            break
+    return result

@@ -1,0 +1,74 @@
+"""The toolkit's own claims beyond the paper (claims/b1_curvature.py): their order, file, and statuses that flip."""
+
+import sympy as sp
+
+from symdecomp import catmull_clark, loop, loop_warren, symbols
+from symdecomp.claims import Scope, Status, all_claims, check_claim, section_key
+from symdecomp.claims import b1_curvature as b1
+from symdecomp.output.latex import section_file_name
+
+LABELS = ["Curvature regime: Catmull-Clark", "Curvature regime: Loop", "Loop's vertex weight", "Curvature at the regular valence",
+          "Shape: the valence decides"]
+
+
+def test_the_beyond_sections_come_after_the_papers_in_their_own_file():
+    sections = [c.section for c in all_claims()]
+    first = sections.index("B.1")
+    assert all(section_key(s)[0] == 0 for s in sections[:first]) and set(sections[first:]) == {"B.1"}
+    assert [c.label for c in all_claims() if c.section == "B.1"] == LABELS
+    assert section_file_name("B.1") == "beyond-1.tex" and section_file_name("5.1") == "section-5-1.tex"
+    assert sorted(["B.2", "B.1", "6", "5.10", "5.2", "2"], key=section_key) == ["2", "5.2", "5.10", "6", "B.1", "B.2"]
+
+
+def test_the_statuses_for_catmull_clark():
+    results = [check_claim(label) for label in LABELS]
+    assert [r.status for r in results] == [Status.VERIFIED, Status.VERIFIED, Status.PROVED, Status.VERIFIED, Status.VERIFIED]
+    assert [r.scope for r in results] == [Scope.RANGE, Scope.RANGE, Scope.EVERY_N, Scope.SINGLE_CASE, Scope.RANGE]
+    assert results[0].valences == b1.VALENCES
+
+
+def _off_regular(alpha3, beta3):
+    """Catmull-Clark with the vertex weights alpha3, beta3 at n = 3 and its own at the regular valence (linear in n)."""
+    n, a, b = symbols.n, sp.Rational(3, 2) / symbols.n**2, sp.Rational(1, 4) / symbols.n**2
+    return catmull_clark(a + (alpha3 - a.subs(n, 3)) * (4 - n), b + (beta3 - b.subs(n, 3)) * (4 - n))
+
+
+def test_another_scheme_refutes_the_statement_with_the_numbers():
+    lifted = _off_regular(sp.Rational(1, 8), sp.Rational(1, 64))  # the elliptic eigenvalue above lambda_1^2 at n = 3
+    r = check_claim("Curvature regime: Catmull-Clark", lifted)
+    assert r.status is Status.REFUTED and "n = 3" in str(r.counterexample) and "unbounded" in str(r.counterexample)
+    assert "|mu| > lambda_1**2" in str(r.counterexample)
+
+
+def test_another_printed_statement_is_refuted_and_the_right_one_verified():
+    swapped = ((3, 3, b1.B, None), (4, None, b1.U, None))  # bounded at n = 3 as printed: Catmull-Clark has a flat spot there
+    assert b1.check_regimes(catmull_clark(), swapped, (3, 8)).status is Status.REFUTED
+    assert b1.check_regimes(catmull_clark(), b1.CATMULL_CLARK, (3, 8)).status is Status.VERIFIED
+    assert b1.check_regimes(loop(), b1.CATMULL_CLARK, (3, 8)).status is Status.REFUTED  # Loop's n = 3 is not flat
+    assert b1.check_regimes(loop_warren(), b1.LOOP, (3, 8)).status is Status.REFUTED  # Warren's weight: unbounded at n = 4
+
+
+def test_loops_weight_is_proved_and_warrens_refuted_exactly():
+    assert b1._loop_weight(loop()).status is Status.PROVED
+    r = b1._loop_weight(loop_warren())
+    assert r.status is Status.REFUTED and r.scope is Scope.EVERY_N  # the counterexample is an exact number
+    assert "n = 4" in str(r.counterexample) and "7/64" in str(r.counterexample)  # 1/4 - 9/64
+
+
+def test_the_regular_valence_claim_for_each_lattice_another_count_and_other_regular_rules():
+    assert b1.check_regular(loop(), 3).status is Status.VERIFIED
+    assert b1.check_regular(catmull_clark(), 2).status is Status.REFUTED  # as if printed "twice"
+    # other weights at the regular valence: the surface is no longer the bicubic spline, and the claim says it cannot tell
+    other = catmull_clark(sp.Rational(1, 8), sp.Rational(1, 64))
+    assert check_claim("Curvature at the regular valence", other).status is Status.NOT_APPLICABLE
+
+
+def test_the_shape_claim_flips_with_the_vertex_rule_and_with_the_statement():
+    assert check_claim("Shape: the valence decides").status is Status.VERIFIED
+    n, a, b = symbols.n, sp.Rational(3, 2) / symbols.n**2, sp.Rational(1, 4) / symbols.n**2
+    # at n = 5 the weights 1/20, 1/100 (Catmull-Clark's at n = 4): the elliptic eigenvalue rises above the hyperbolic one
+    lifted = catmull_clark(a + (sp.Rational(1, 20) - a.subs(n, 5)) * (n - 4), b + (sp.Rational(1, 100) - b.subs(n, 5)) * (n - 4))
+    r = b1.check_dominance(lifted, b1.DOMINANCE[False], (3, 6))
+    assert r.status is Status.REFUTED and "n = 5" in str(r.counterexample) and "computed: the elliptic part" in str(r.counterexample)
+    assert b1.check_dominance(loop(), b1.DOMINANCE[False], (3, 8)).status is Status.REFUTED  # Loop's n = 5, 6 are not hyperbolic
+    assert b1.check_dominance(loop(), b1.DOMINANCE[True], (3, 8)).status is Status.VERIFIED

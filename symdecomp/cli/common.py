@@ -23,7 +23,7 @@ from symdecomp.schemes.files import SCHEMES, load_scheme
 from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import MAX_DEPTH, MAX_DIGITS, MAX_DPS
+from symdecomp.validate import DEFAULT_BUDGET, MAX_DEPTH, MAX_DIGITS, MAX_DPS
 
 __all__ = [
     "Parser",
@@ -195,8 +195,6 @@ def digits(name: str = "--digits", *, minimum: int = 1, limit: str = "digits"):
 
 def add_budget_option(parser: argparse.ArgumentParser) -> None:
     """``--budget SECONDS``: the wall-clock time one claim's check may take before it is reported undecided."""
-    from symdecomp.claims.guards import DEFAULT_BUDGET
-
     parser.add_argument("--budget", type=positive_int("--budget", "budget"), action=Once, default=int(DEFAULT_BUDGET),
                         metavar="SECONDS", help=f"seconds one claim's check may take; a check still running then is reported "
                         f"undecided, saying so (default {int(DEFAULT_BUDGET)})")
@@ -215,7 +213,7 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         "--scheme",
         type=scheme_by_name,
         action=Once,
-        default=SCHEMES["catmull-clark"](),
+        default="catmull-clark",  # text: argparse builds the scheme (type) only when a command runs, not for --help
         metavar="NAME|FILE",
         help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
         "(the format: docs, File formats; the docstring of symdecomp.schemes.files)",

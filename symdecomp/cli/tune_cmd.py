@@ -21,8 +21,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
-from symdecomp.analysis.tuning import tune
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, closed_form_obstacle, digits, flag, print_json, progress, valence
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import InvalidInputError
@@ -60,6 +58,9 @@ def register(sub) -> None:
 def run(args) -> int:
     if args.region or args.plot is not None:
         return run_region(args)
+    from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
+    from symdecomp.analysis.tuning import tune
+
     obstacle = closed_form_obstacle(args.scheme)
     if obstacle:
         raise InvalidInputError(f"--scheme {args.scheme.name}: tune solves the paper's quad 1-ring conditions (Section 5.2) "

@@ -90,6 +90,8 @@ def check_build_dir(create: bool = False) -> Path:
     if create:
         try:
             folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+        except FileExistsError:  # a file or a link in its place: refused below
+            pass
         except OSError as exc:
             raise BridgeBuildError(f"cannot create the bridge's build folder {folder} ({exc.strerror or exc}); "
                                    f"set {BUILD_DIR_VARIABLE} to a writable folder") from None
@@ -135,13 +137,13 @@ def build(force: bool = False) -> Path:
     """
     if not force and is_current():
         return LIBRARY
+    check_build_dir(create=True)
     cxx = compiler()
     if cxx is None:
         raise BridgeBuildError("no C++ compiler: install g++ (Debian: apt-get install g++), or set CXX")
     if not headers_present(cxx):
         raise BridgeBuildError(f"the OpenSubdiv headers (<{HEADER}>) are not installed: "
                                "apt-get install libosd-dev libosdcpu3.5.0")
-    check_build_dir(create=True)
     fd, tmp = tempfile.mkstemp(suffix=".so", dir=BUILD_DIR)
     os.close(fd)
     cmd = [cxx, "-O2", "-std=c++14", "-shared", "-fPIC", str(SOURCE), "-o", tmp, "-losdCPU"]

@@ -76,7 +76,7 @@ def test_every_data_file_is_declared():
 def _source_copy(target: Path) -> Path:
     """This tree's package, pyproject.toml and README, plus a compiled bridge and a test file that must stay out."""
     shutil.copytree(PACKAGE, target / "symdecomp", ignore=shutil.ignore_patterns(*LOCAL))
-    for name in ("pyproject.toml", "README.md"):
+    for name in ("pyproject.toml", "README.md", "MANIFEST.in"):
         shutil.copy(ROOT / name, target / name)
     built = target / "symdecomp" / "verify" / "opensubdiv" / "_build"
     built.mkdir()
@@ -105,7 +105,7 @@ def test_the_wheel_and_the_sdist_hold_the_package_and_nothing_else(tmp_path):
     with tarfile.open(sdist) as archive:
         members = {m.split("/", 1)[1] for m in archive.getnames() if "/" in m}
     assert _modules() | _data_files() <= members
-    assert not [m for m in members if "_build" in m or m.endswith((".so", ".stamp", ".pyc"))]
+    assert not [m for m in members if "_build" in m or m.endswith((".so", ".stamp", ".pyc")) or m.startswith("tests/")]
     pytest.importorskip("twine", reason="needs the 'twine' package (pip install 'symdecomp[test]')")
     checked = subprocess.run([sys.executable, "-m", "twine", "check", "--strict", str(wheel), str(sdist)],
                              capture_output=True, text=True, timeout=120)

@@ -65,6 +65,7 @@ __all__ = [
     "MAX_DOUBLE_DIGITS",
     "FLOAT_DIGITS",
     "DEFAULT_BUDGET",
+    "MAX_REPORT_VALENCE",
 ]
 
 #: Most significant digits printed (a value is evaluated at a little more than this).
@@ -91,6 +92,9 @@ FLOAT_DIGITS = 17
 #: ``budget`` and ``symdecomp claims --budget`` (:mod:`symdecomp.claims.guards`). Every check on standard
 #: Catmull-Clark takes a few seconds.
 DEFAULT_BUDGET = 60.0
+#: The largest valence of a report (:mod:`symdecomp.output.report`, ``symdecomp report --n``): its tables grow
+#: with every valence (2n + 1 eigenvalues, masks of 2n + 1 weights) and the eigen-polygon figure has n panels a row.
+MAX_REPORT_VALENCE = 16
 
 
 def _kind(value) -> str:

@@ -104,185 +104,92 @@ nothing else.
 =================  ===========================================================================
 
 The names below are the public API (re-exported from the modules above).
+
+Importing the package is cheap: the public names are imported from their modules on first use
+(PEP 562 ``__getattr__``), so ``import symdecomp`` and the command line's ``--help`` and
+``--version`` load none of the analysis, verify or claims layers. ``from symdecomp import X`` and
+``symdecomp.X`` work for every name in ``__all__``.
 """
 
-from symdecomp import errors, symbols
-from symdecomp.algebra import cbmatrix
-from symdecomp.algebra.cbmatrix import *  # noqa: F403 - its __all__ is the Section 6 API
-from symdecomp.algebra.circulant import circ, circ_from_offsets, circulant_eigenvalue, fourier_matrix, generating_polynomial, root_of_unity
-from symdecomp.analysis.charpoly import ClosedFormCharpoly, closed_form_characteristic_polynomial
-from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regime, frequency_kind
-from symdecomp.analysis.defective import jordan_block_size, jordan_vertex_weights
-from symdecomp.analysis.design import LimitFrame, RingDesign, design_ring, limit_frame
-from symdecomp.analysis.eigendata import certified_eigendata
-from symdecomp.analysis.ellipses import ellipse_axes
-from symdecomp.analysis.elliptic import elliptic_defect_table, nice_elliptic_conditions
-from symdecomp.analysis.evaluation import PatchEvaluator
-from symdecomp.analysis.frequency import circulant_blocks, per_frequency_matrix, per_frequency_matrix_at, recursion_matrix
-from symdecomp.analysis.hyperbolic import hyperbolic_equality, hyperbolic_ring, iterate_hyperbolic_ring
-from symdecomp.analysis.inspection import MeshInspection, VertexInspection, inspect_mesh, inspect_vertex
-from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.analysis.redesign import redesign_vertex
-from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.analysis.ring_spectrum import RingSpectrum, ring_spectrum
-from symdecomp.analysis.spectrum import Spectrum, closed_form_spectrum, recursion_eigenvalues
-from symdecomp.analysis.support import Region, classify_support
-from symdecomp.analysis.tangent import invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.analysis.tuning import joint_obstruction, tune
-from symdecomp.claims import CheckResult, Claim, Status, Step, all_claims, check_claim, get_claim
-from symdecomp.errors import *  # noqa: F403 - every error type is public
-from symdecomp.output.latex import aslatex
-from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
-from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
-from symdecomp.schemes.loop import loop, loop_warren, triangle_scheme
-from symdecomp.schemes.mesh import QuadMesh, ring_mesh
-from symdecomp.schemes.meshfile import PolygonMesh, scheme_for_mesh
-from symdecomp.schemes.meshformats import decode_mesh, encode_mesh, read_mesh
-from symdecomp.schemes.patch import patch_matrices
-from symdecomp.schemes.refinement import central_rings, mesh_rules, refine
-from symdecomp.schemes.rings import RingMatrix, ring_subdivision_matrix
-from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, subdivision_matrix
-from symdecomp.verify.artifacts import ArtifactIndicators, artifact_indicators
-from symdecomp.verify.c1 import C1Result, c1_test
-from symdecomp.verify.certify import Certificate, certify
-from symdecomp.verify.numeric import NumericCheck, numeric_check
-from symdecomp.verify.result import C1Verdict, CrossCheckResult, CrossCheckStatus
-from symdecomp.verify.ring_certify import certify_ring
-from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
-from symdecomp.verify.shape import ShapeChart, ShapeResult, classify_shape, shape_chart
+from __future__ import annotations
 
+import importlib
+
+from symdecomp import errors
+from symdecomp.errors import *  # noqa: F403 - every error type is public (a small module: imported at once)
+
+#: The package's version, its one source (``pyproject.toml`` reads it; ``symdecomp --version`` prints it).
 __version__ = "0.1.0"
 
-__all__ = [
-    "symbols",
-    # Section 2
-    "root_of_unity",
-    "fourier_matrix",
-    "circ",
-    "circ_from_offsets",
-    "generating_polynomial",
-    "circulant_eigenvalue",
-    # schemes and matrices
-    "Scheme",
-    "Stencil",
-    "VertexRule",
-    "catmull_clark",
-    "subdivision_matrix",
-    "circulant_blocks",
-    "per_frequency_matrix",
-    "per_frequency_matrix_at",
-    "recursion_matrix",
-    # Section 5.1
-    "tangent_eigenvalues",
-    "invariant_ratio",
-    "invariant_ratio_at",
-    "invariant_ratio_limit",
-    "Spectrum",
-    "closed_form_spectrum",
-    "recursion_eigenvalues",
-    # Section 5.2-5.3 and limit masks
-    "nice_elliptic_conditions",
-    "elliptic_defect_table",
-    "ellipse_axes",
-    "tune",
-    "joint_obstruction",
-    "hyperbolic_equality",
-    "hyperbolic_ring",
-    "iterate_hyperbolic_ring",
-    "limit_masks",
-    "limit_masks_at",
-    # Section 6
-    *cbmatrix.__all__,
-    "subdivision_block_form",
-    "reduce_first_column",
-    "ClosedFormCharpoly",
-    "closed_form_characteristic_polynomial",
-    # Section 3: whole meshes and supports
-    "QuadMesh",
-    "ring_mesh",
-    "mesh_rules",
-    "refine",
-    "central_rings",
-    "Region",
-    "classify_support",
-    # a modeller's mesh files (issue 22)
-    "PolygonMesh",
-    "read_mesh",
-    "decode_mesh",
-    "encode_mesh",
-    "scheme_for_mesh",
-    "inspect_mesh",
-    "inspect_vertex",
-    "MeshInspection",
-    "VertexInspection",
-    "design_ring",
-    "redesign_vertex",
-    "limit_frame",
-    "RingDesign",
-    "LimitFrame",
-    # any scheme (triangle meshes, Loop) and K-ring matrices
-    "Lattice",
-    "QUAD",
-    "TRIANGLE",
-    "lattice",
-    "loop",
-    "loop_warren",
-    "triangle_scheme",
-    "RingMatrix",
-    "ring_subdivision_matrix",
-    "RingBlocks",
-    "ring_blocks",
-    "RingSpectrum",
-    "ring_spectrum",
-    "ring_masks",
-    "certify_ring",
-    # exact evaluation near an extraordinary vertex (Stam)
-    "patch_matrices",
-    "certified_eigendata",
-    "PatchEvaluator",
-    # cross-checks against the full matrix
-    "ClosedForms",
-    "derived_closed_forms",
-    "numeric_check",
-    "NumericCheck",
-    "certify",
-    "Certificate",
-    # C1 at an extraordinary vertex (Reif's test)
-    "c1_test",
-    "C1Result",
-    "C1Verdict",
-    # curvature and artifacts at an extraordinary vertex (issue 21)
-    "CurvatureRegime",
-    "curvature_regime",
-    "frequency_kind",
-    "second_order_eigenstructure",
-    "CurvatureResult",
-    "artifact_indicators",
-    "ArtifactIndicators",
-    # shape at an extraordinary vertex (central surfaces, certified)
-    "classify_shape",
-    "ShapeResult",
-    "shape_chart",
-    "ShapeChart",
-    "CrossCheckStatus",
-    "CrossCheckResult",
-    "exact_subdivision_matrix",
-    "characteristic_polynomial",
-    "jordan_vertex_weights",
-    "jordan_block_size",
-    # claims
-    "Claim",
-    "CheckResult",
-    "Status",
-    "Step",
-    "all_claims",
-    "check_claim",
-    "get_claim",
-    # LaTeX
-    "aslatex",
-    # errors
-    *errors.__all__,
-]
+#: Each module and the public names it provides, imported on first use.
+_EXPORTS: dict[str, tuple[str, ...]] = {
+    "symdecomp.algebra.cbmatrix": ("CBMatrix", "cb_matrix", "cb_matrix_from", "block_eigenvalue_matrix", "lifted_vector",
+        "BlockDiagonalization", "block_diagonalization", "cb_eigensystem", "constant_blocks", "perturbed_block_eigenvalue_matrix",
+        "SymbolicCirculant", "SymbolicCBMatrix"),
+    "symdecomp.algebra.circulant": ("circ", "circ_from_offsets", "circulant_eigenvalue", "fourier_matrix", "generating_polynomial", "root_of_unity"),
+    "symdecomp.analysis.charpoly": ("ClosedFormCharpoly", "closed_form_characteristic_polynomial"),
+    "symdecomp.analysis.closed_forms": ("ClosedForms", "derived_closed_forms"),
+    "symdecomp.analysis.curvature_regime": ("CurvatureRegime", "curvature_regime", "frequency_kind"),
+    "symdecomp.analysis.defective": ("jordan_block_size", "jordan_vertex_weights"),
+    "symdecomp.analysis.design": ("LimitFrame", "RingDesign", "design_ring", "limit_frame"),
+    "symdecomp.analysis.eigendata": ("certified_eigendata",),
+    "symdecomp.analysis.ellipses": ("ellipse_axes",),
+    "symdecomp.analysis.elliptic": ("elliptic_defect_table", "nice_elliptic_conditions"),
+    "symdecomp.analysis.evaluation": ("PatchEvaluator",),
+    "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix"),
+    "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
+    "symdecomp.analysis.inspection": ("MeshInspection", "VertexInspection", "inspect_mesh", "inspect_vertex"),
+    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at"),
+    "symdecomp.analysis.redesign": ("redesign_vertex",),
+    "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
+    "symdecomp.analysis.ring_blocks": ("RingBlocks", "ring_blocks"),
+    "symdecomp.analysis.ring_masks": ("ring_masks",),
+    "symdecomp.analysis.ring_spectrum": ("RingSpectrum", "ring_spectrum"),
+    "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues"),
+    "symdecomp.analysis.support": ("Region", "classify_support"),
+    "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
+    "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),
+    "symdecomp.claims": ("CheckResult", "Claim", "Status", "Step", "all_claims", "check_claim", "get_claim"),
+    "symdecomp.output.latex": ("aslatex",),
+    "symdecomp.schemes.full_matrix": ("characteristic_polynomial", "exact_subdivision_matrix"),
+    "symdecomp.schemes.lattice": ("QUAD", "TRIANGLE", "Lattice", "lattice"),
+    "symdecomp.schemes.loop": ("loop", "loop_warren", "triangle_scheme"),
+    "symdecomp.schemes.mesh": ("QuadMesh", "ring_mesh"),
+    "symdecomp.schemes.meshfile": ("PolygonMesh", "scheme_for_mesh"),
+    "symdecomp.schemes.meshformats": ("decode_mesh", "encode_mesh", "read_mesh"),
+    "symdecomp.schemes.patch": ("patch_matrices",),
+    "symdecomp.schemes.refinement": ("central_rings", "mesh_rules", "refine"),
+    "symdecomp.schemes.rings": ("RingMatrix", "ring_subdivision_matrix"),
+    "symdecomp.schemes.scheme": ("Scheme", "Stencil", "VertexRule", "catmull_clark", "subdivision_matrix"),
+    "symdecomp.verify.artifacts": ("ArtifactIndicators", "artifact_indicators"),
+    "symdecomp.verify.c1": ("C1Result", "c1_test"),
+    "symdecomp.verify.certify": ("Certificate", "certify"),
+    "symdecomp.verify.numeric": ("NumericCheck", "numeric_check"),
+    "symdecomp.verify.result": ("C1Verdict", "CrossCheckResult", "CrossCheckStatus"),
+    "symdecomp.verify.ring_certify": ("certify_ring",),
+    "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
+    "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),
+}
+
+#: Modules the package root names (``symdecomp.symbols``; ``symdecomp.cbmatrix``, the Section 6 API).
+_MODULES = {"symbols": "symdecomp.symbols", "cbmatrix": "symdecomp.algebra.cbmatrix"}
+
+_WHERE = {name: module for module, names in _EXPORTS.items() for name in names}
+
+__all__ = ["symbols", *_WHERE, *errors.__all__]  # noqa: F405 - symbols and the rest are imported on first use
+
+
+def __getattr__(name: str):
+    """A public name's value, imported from its module on first use and kept (PEP 562)."""
+    if name in _MODULES:
+        value = importlib.import_module(_MODULES[name])
+    elif name in _WHERE:
+        value = getattr(importlib.import_module(_WHERE[name]), name)
+    else:
+        raise AttributeError(f"module 'symdecomp' has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *__all__, *_MODULES})

@@ -62,6 +62,10 @@ __all__ = [
     "MAX_BITS",
     "MAX_DEPTH",
     "MEMORY_LIMIT",
+    "MAX_DOUBLE_DIGITS",
+    "FLOAT_DIGITS",
+    "DEFAULT_BUDGET",
+    "MAX_REPORT_VALENCE",
 ]
 
 #: Most significant digits printed (a value is evaluated at a little more than this).
@@ -78,6 +82,19 @@ MAX_BITS = 1 << 16
 #: Deepest subdivision of a Bezier net in a sign test: each level splits a piece in four, so depth
 #: 12 is 16 million pieces.
 MAX_DEPTH = 12
+#: The most digits of agreement asked of a double-precision check
+#: (:func:`~symdecomp.verify.ring_numeric.ring_numeric_check`, ``symdecomp check --digits``).
+MAX_DOUBLE_DIGITS = 12
+#: ``digits`` of a JSON document whose numbers are the correctly rounded float64 values (shortest form)
+#: (:mod:`symdecomp.output.evaldata`, the least ``symdecomp evaldata --digits``).
+FLOAT_DIGITS = 17
+#: Seconds one claim's check may take (wall clock) before it is reported ``undecided``: ``check_claim``'s
+#: ``budget`` and ``symdecomp claims --budget`` (:mod:`symdecomp.claims.guards`). Every check on standard
+#: Catmull-Clark takes a few seconds.
+DEFAULT_BUDGET = 60.0
+#: The largest valence of a report (:mod:`symdecomp.output.report`, ``symdecomp report --n``): its tables grow
+#: with every valence (2n + 1 eigenvalues, masks of 2n + 1 weights) and the eigen-polygon figure has n panels a row.
+MAX_REPORT_VALENCE = 16
 
 
 def _kind(value) -> str:

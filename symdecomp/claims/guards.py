@@ -18,13 +18,10 @@ from contextlib import contextmanager
 
 import sympy as sp
 
+from symdecomp.validate import DEFAULT_BUDGET
+
 __all__ = ["DEFAULT_BUDGET", "BudgetExceeded", "time_budget", "unbound_parameters", "generic_parameter_values",
            "at_parameter_values", "undefined_values"]
-
-
-#: Seconds one claim's check may take (wall clock) before it is reported ``undecided``: ``check_claim``'s
-#: ``budget`` and ``symdecomp claims --budget``. Every check on standard Catmull-Clark takes a few seconds.
-DEFAULT_BUDGET = 60.0
 
 
 class BudgetExceeded(BaseException):

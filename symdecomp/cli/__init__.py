@@ -14,6 +14,19 @@ Exit codes (also in ``symdecomp --help`` and the user guide, docs/guide/command-
 
 No traceback is ever printed: every error is one line on stderr.
 
+Adding a command: a module ``NAME_cmd.py`` here, named in :data:`COMMANDS` (in ``--help`` order)
+and in the module map, with ``register(sub)`` (its parser, ``set_defaults(func=run)``) and
+``run(args)`` (the exit code). Start-up stays cheap, so that ``symdecomp --help``, ``--version``
+and ``symdecomp CMD --help`` cost little beyond importing sympy, mpmath and FLINT
+(``benchmarks/bench_startup.py``): every parser is built for every run, so at module level and in
+``register`` a command module imports only the standard library, :mod:`symdecomp.cli.common`
+(argument types, scheme and pool options), :mod:`symdecomp.cli.files`, the errors, the limits of
+:mod:`symdecomp.validate`, and schemes and symbols; what it computes with (the analysis, verify,
+claims and output layers) it imports inside ``run`` and its helpers. A number its help text
+prints (a default, a limit) lives in :mod:`symdecomp.validate` or :data:`~symdecomp.cli.common.LIMITS`.
+``tests/cli/test_lazy_commands.py`` checks every ``*_cmd.py`` it finds, and that :data:`COMMANDS`
+names them all.
+
 The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """
 

@@ -3,17 +3,15 @@
 from __future__ import annotations
 
 import sys
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, integer, print_json, progress, valence_range
-from symdecomp.parallel import ordered_map
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.verify.c1 import c1_test
-from symdecomp.verify.result import C1Verdict
+
+if TYPE_CHECKING:
+    from symdecomp.schemes.scheme import Scheme
+    from symdecomp.verify.result import C1Verdict
 
 __all__ = ["register", "run"]
-
-_LABEL = {C1Verdict.C1: "C1 certified", C1Verdict.NOT_C1: "not C1", C1Verdict.UNDECIDED: "undecided"}
 
 
 def _depth(text: str) -> int:
@@ -56,11 +54,17 @@ class _Row(NamedTuple):
 
 
 def _one(n: int, scheme: Scheme, max_depth: int) -> _Row:
+    from symdecomp.verify.c1 import c1_test
+
     r = c1_test(scheme, n, max_depth=max_depth)
     return _Row(r.n, r.verdict, r.reason, r.as_json())
 
 
 def run(args) -> int:
+    from symdecomp.parallel import ordered_map
+    from symdecomp.verify.result import C1Verdict
+
+    label = {C1Verdict.C1: "C1 certified", C1Verdict.NOT_C1: "not C1", C1Verdict.UNDECIDED: "undecided"}
     valences = args.valences
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
@@ -71,5 +75,5 @@ def run(args) -> int:
         print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
         print(f"method: {args.scheme.lattice.c1_method}")
         for r in results:
-            print(f"n = {r.n:>3}: {_LABEL[r.verdict]}: {r.reason}")
+            print(f"n = {r.n:>3}: {label[r.verdict]}: {r.reason}")
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1

@@ -4,11 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
-from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.cli.common import add_rings_option, add_scheme_option, flag, general_path, print_json, refuse_together, valence
 from symdecomp.errors import InvalidInputError, InvalidSchemeError
-from symdecomp.schemes.full_matrix import characteristic_polynomial
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import lam as LAM
@@ -58,6 +55,9 @@ def _run_general(args, why: str = "") -> int:
 
 
 def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
+    from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
+    from symdecomp.schemes.full_matrix import characteristic_polynomial
+
     cf = closed_form_characteristic_polynomial(scheme)
     if not free:
         poly = cf.at(n)
@@ -76,6 +76,9 @@ def _coefficients(scheme, n, free: bool) -> tuple[list[sp.Expr], bool]:
 
 
 def run(args) -> int:
+    from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial
+    from symdecomp.analysis.tuning import with_free_vertex_rule
+
     if general_path(args):
         return _run_general(args)
     refuse_together(args, "--free-weights", "--scheme", "--free-weights uses the Catmull-Clark edge and face rules")

@@ -3,10 +3,8 @@
 from __future__ import annotations
 
 import time
+from typing import TYPE_CHECKING
 
-import mpmath
-
-from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.cli.common import (
     LIMITS,
     Once,
@@ -23,15 +21,12 @@ from symdecomp.cli.common import (
     valence_range,
 )
 from symdecomp.errors import InvalidInputError
-from symdecomp.parallel import Executor, ordered_map
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_memory
-from symdecomp.verify.certify import certify
-from symdecomp.verify.numeric import numeric_check
-from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.verify.ring_certify import certify_ring
-from symdecomp.verify.ring_numeric import MAX_DOUBLE_DIGITS, ring_numeric_check
-from symdecomp.verify.structural import STRUCTURAL_BYTES_PER_VALENCE, certify_structural, structural_obstacle
+from symdecomp.validate import MAX_DOUBLE_DIGITS, check_memory
+
+if TYPE_CHECKING:
+    from symdecomp.analysis.closed_forms import ClosedForms
+    from symdecomp.parallel import Executor
+    from symdecomp.schemes.scheme import Scheme
 
 __all__ = ["register", "run", "check_valences", "ROUTES", "SOLVERS"]
 
@@ -81,6 +76,12 @@ def register(sub) -> None:
 
 
 def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):
+    from symdecomp.verify.certify import certify
+    from symdecomp.verify.numeric import numeric_check
+    from symdecomp.verify.ring_certify import certify_ring
+    from symdecomp.verify.ring_numeric import ring_numeric_check
+    from symdecomp.verify.structural import certify_structural
+
     if rings is not None:  # the any-scheme route: K-ring frequency matrices
         return certify_ring(scheme, n, rings, method=method) if certified else ring_numeric_check(scheme, n, rings, digits=dps)
     if certified:
@@ -103,6 +104,9 @@ def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, 
     or ``"structure"``, see :func:`~symdecomp.verify.ring_certify.certify_ring` and
     :mod:`~symdecomp.verify.structural`); ``solver``: numeric mode's eigen-solver (``"mpmath"`` or ``"flint"``).
     """
+    from symdecomp.analysis.closed_forms import derived_closed_forms
+    from symdecomp.parallel import ordered_map
+
     valences = list(valences)
     if rings is None:
         closed_forms = closed_forms or derived_closed_forms(scheme)
@@ -114,6 +118,8 @@ def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, 
 
 def _route(args, rings) -> tuple[str, str]:
     """The certificate of ``--certify``: ``(route, note)``, the note saying why the default fell back."""
+    from symdecomp.verify.structural import structural_obstacle
+
     refuse_together(args, "--route", "--structural", "--structural is --route structural")
     asked = args.route or ("structural" if args.structural else None)
     obstacle = structural_obstacle(args.scheme) if rings is None and asked != "charpoly" else None
@@ -149,11 +155,15 @@ def _check_options(args, rings) -> None:
         raise InvalidInputError(f"check --n: the {route} goes up to N = {bound}, got {top} ({why})"
                                 + (f"; {args.route_note}" if args.route_note else ""))
     if args.route == "structural":
+        from symdecomp.verify.structural import STRUCTURAL_BYTES_PER_VALENCE
+
         check_memory(STRUCTURAL_BYTES_PER_VALENCE * (rings or 1) ** 2 * top, f"the structural certificate at n = {top}")
 
 
 def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
+    from symdecomp.verify.result import CrossCheckStatus
+
     rings = args.rings if general_path(args) else None
     args.route_note = ""
     if args.certify:
@@ -220,6 +230,8 @@ def _header(args, rings, solver) -> None:
 
 
 def _print_row(args, r) -> None:
+    import mpmath
+
     if args.certify:
         mult = "certified" if r.multiplicities_certified else "-"
         bits = r.height_bits if r.route == "charpoly" else "-"

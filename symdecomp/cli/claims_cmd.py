@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from symdecomp.claims import Status, all_claims, check_claim, scope_summary
 from symdecomp.cli.common import Once, add_budget_option, add_scheme_option, flag, print_json, progress, refuse_non_quad
 
 
@@ -33,6 +32,8 @@ def register(sub) -> None:
 
 def section(text: str) -> str:
     """argparse type: a section of the paper that has claims (``5`` or ``5.1``)."""
+    from symdecomp.claims import all_claims
+
     sections = sorted({c.section for c in all_claims()})
     known = set(sections) | {s.split(".")[0] for s in sections}
     if text not in known:
@@ -41,6 +42,8 @@ def section(text: str) -> str:
 
 
 def run(args) -> int:
+    from symdecomp.claims import Status, all_claims, check_claim, scope_summary
+
     refuse_non_quad(args.scheme, "claims")
     claims = all_claims()
     if args.section:

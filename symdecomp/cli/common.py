@@ -15,15 +15,13 @@ import os
 import re
 import sys
 
-from symdecomp.claims.applicability import closed_form_obstacle
 from symdecomp.errors import InvalidInputError, SymdecompError
-from symdecomp.output.report import MAX_VALENCES as MAX_REPORT_VALENCE
 from symdecomp.parallel import parse_executor
 from symdecomp.schemes.files import SCHEMES, load_scheme
 from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import MAX_DEPTH, MAX_DIGITS, MAX_DPS
+from symdecomp.validate import DEFAULT_BUDGET, MAX_DEPTH, MAX_DIGITS, MAX_DPS, MAX_REPORT_VALENCE
 
 __all__ = [
     "Parser",
@@ -198,8 +196,6 @@ def digits(name: str = "--digits", *, minimum: int = 1, limit: str = "digits"):
 
 def add_budget_option(parser: argparse.ArgumentParser) -> None:
     """``--budget SECONDS``: the wall-clock time one claim's check may take before it is reported undecided."""
-    from symdecomp.claims.guards import DEFAULT_BUDGET
-
     parser.add_argument("--budget", type=positive_int("--budget", "budget"), action=Once, default=int(DEFAULT_BUDGET),
                         metavar="SECONDS", help=f"seconds one claim's check may take; a check still running then is reported "
                         f"undecided, saying so (default {int(DEFAULT_BUDGET)})")
@@ -218,7 +214,7 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         "--scheme",
         type=scheme_by_name,
         action=Once,
-        default=SCHEMES["catmull-clark"](),
+        default="catmull-clark",  # text: argparse builds the scheme (type) only when a command runs, not for --help
         metavar="NAME|FILE",
         help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
         "(the format: docs, File formats; the docstring of symdecomp.schemes.files)",
@@ -255,6 +251,13 @@ def add_pool_options(parser: argparse.ArgumentParser, *, default_jobs: int | Non
                         help="local: a pool of forked processes (default); dask: a Dask LocalCluster of --jobs workers "
                         "started for the run; dask=ADDRESS: the Dask scheduler at ADDRESS, e.g. tcp://127.0.0.1:8786, "
                         "whose workers have symdecomp installed (needs pip install 'symdecomp[dask]')")
+
+
+def closed_form_obstacle(scheme: Scheme) -> str | None:
+    """:func:`symdecomp.claims.applicability.closed_form_obstacle`, imported when a command runs (not for ``--help``)."""
+    from symdecomp.claims.applicability import closed_form_obstacle
+
+    return closed_form_obstacle(scheme)
 
 
 def general_path(args) -> bool:

@@ -6,12 +6,10 @@ import re
 import sys
 from pathlib import Path
 
-from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.claims.guards import DEFAULT_BUDGET
 from symdecomp.cli.common import Once, add_budget_option, add_scheme_option, flag, given, print_json, progress, refuse_non_quad
 from symdecomp.cli.files import check_output_directory, replace_owned_files
 from symdecomp.errors import InvalidInputError
-from symdecomp.output.latex import claim_latex, derivation_files
+from symdecomp.validate import DEFAULT_BUDGET
 
 __all__ = ["register", "run", "write_derivations"]
 
@@ -46,8 +44,18 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+def all_claims():
+    """The registered claims (:func:`symdecomp.claims.all_claims`), imported when the command runs."""
+    from symdecomp.claims import all_claims
+
+    return all_claims()
+
+
 def write_derivations(out: Path, *, show_progress: bool = False, scheme=None, budget=DEFAULT_BUDGET) -> list[Path]:
     """Check every claim (for ``scheme``, default Catmull-Clark; ``budget`` seconds each) and write the derivation files to ``out``."""
+    from symdecomp.claims import check_claim
+    from symdecomp.output.latex import derivation_files
+
     claims = all_claims()
     pairs = [(c, check_claim(c.label, scheme, budget=budget)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
     return _write(out, derivation_files(pairs))
@@ -59,6 +67,9 @@ def _write(out: Path, files: dict[str, str]) -> list[Path]:
 
 
 def run(args) -> int:
+    from symdecomp.claims import Status, check_claim
+    from symdecomp.output.latex import claim_latex
+
     refuse_non_quad(args.scheme, "derive")
     for option in ("--out", "--json", "--no-progress"):
         if args.label and given(args, option[2:].replace("-", "_")):

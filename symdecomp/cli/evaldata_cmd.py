@@ -18,13 +18,12 @@ from __future__ import annotations
 
 import sys
 
-from symdecomp.analysis.eigendata import check_eigendata_cost, rounded_eigendata
 from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, digits, flag, given, print_json, progress, valence_range
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import EvalDataFileError, InvalidInputError
-from symdecomp.output.evaldata import FLOAT_DIGITS, binary_chunks, decimal_valence, json_chunks, json_valence
 from symdecomp.parallel import pool_size
 from symdecomp.schemes.lattice import PAPER_LATTICE
+from symdecomp.validate import FLOAT_DIGITS
 
 
 def register(sub) -> None:
@@ -73,7 +72,17 @@ def _refuse_ignored(args) -> None:
                                         f"process (workers apply to the binary file and to --digits {FLOAT_DIGITS})")
 
 
+def rounded_eigendata(*args, **kwargs):
+    """:func:`symdecomp.analysis.eigendata.rounded_eigendata`, imported when the command runs."""
+    from symdecomp.analysis.eigendata import rounded_eigendata
+
+    return rounded_eigendata(*args, **kwargs)
+
+
 def run(args) -> int:
+    from symdecomp.analysis.eigendata import check_eigendata_cost
+    from symdecomp.output.evaldata import binary_chunks, decimal_valence, json_chunks, json_valence
+
     _refuse_ignored(args)
     _refuse_ignored(args)
     ns = args.n

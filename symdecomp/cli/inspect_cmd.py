@@ -34,7 +34,6 @@ from __future__ import annotations
 import re
 import sys
 
-from symdecomp.analysis.inspection import inspect_mesh
 from symdecomp.cli.common import Once, flag, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_directory, replace_owned_files
 from symdecomp.cli.masks_cmd import lambda_1_subdominance
@@ -131,6 +130,8 @@ def _subdominance(mesh, scheme) -> dict[int, tuple[bool, str]]:
 
 
 def run(args) -> int:
+    from symdecomp.analysis.inspection import inspect_mesh
+
     if args.figures is not None:
         check_output_directory(args.figures, "--figures")
         _require_matplotlib()

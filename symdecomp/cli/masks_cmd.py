@@ -21,13 +21,8 @@ from __future__ import annotations
 
 import sys
 
-from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.analysis.tangent import complex_at
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
 from symdecomp.errors import SymdecompError
-from symdecomp.verify.c1_spectrum import spectral_conditions
-from symdecomp.verify.result import C1Verdict
 
 
 def register(sub) -> None:
@@ -55,6 +50,9 @@ def lambda_1_subdominance(scheme, n: int) -> tuple[bool, str, bool]:
     """``(certified, why, one_simple)``: whether ``lambda_1`` is certified the subdominant eigenvalue of the 1-ring at
     valence ``n`` and why (not), and whether 1 is a simple eigenvalue there (else no mask is defined).
     The masks' tangent plane needs the first (``symdecomp inspect`` asks it too)."""
+    from symdecomp.verify.c1_spectrum import spectral_conditions
+    from symdecomp.verify.result import C1Verdict
+
     try:
         r = spectral_conditions(scheme, n, one_ring=True)
     except SymdecompError as exc:
@@ -80,6 +78,8 @@ def _finish(args, data, certified: bool, why: str) -> int:
 
 
 def _run_general(args, certified: bool, why: str) -> int:
+    from symdecomp.analysis.ring_masks import ring_masks
+
     data = ring_masks(args.scheme, args.n, args.rings, digits=args.digits)
     if args.json:
         print_json({**data, "lambda_1_subdominant": certified, "subdominance": why})
@@ -94,6 +94,9 @@ def _run_general(args, certified: bool, why: str) -> int:
 
 
 def run(args) -> int:
+    from symdecomp.analysis.masks import limit_masks, limit_masks_at
+    from symdecomp.analysis.tangent import complex_at
+
     certified, why, one_simple = _subdominance(args)
     if not one_simple:
         print(f"symdecomp masks: at n = {args.n}, {args.scheme.name}: {why}; no limit position mask is defined, and no "

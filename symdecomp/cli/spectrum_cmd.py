@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from symdecomp.analysis.ring_spectrum import ring_spectrum
-from symdecomp.analysis.spectrum import closed_form_spectrum
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, valence
 from symdecomp.errors import InvalidInputError
 
@@ -33,6 +31,8 @@ def register(sub) -> None:
 
 
 def _run_general(args) -> int:
+    from symdecomp.analysis.ring_spectrum import ring_spectrum
+
     spectrum = ring_spectrum(args.scheme, args.n, args.rings, digits=args.digits, exact=args.exact or args.n <= EXACT_UP_TO)
     if args.json:
         print_json(spectrum.as_json())
@@ -50,6 +50,8 @@ def _run_general(args) -> int:
 
 
 def run(args) -> int:
+    from symdecomp.analysis.spectrum import closed_form_spectrum
+
     if general_path(args):
         return _run_general(args)
     if args.exact:

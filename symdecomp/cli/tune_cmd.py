@@ -21,8 +21,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.analysis.elliptic import MU, elliptic_defect_table, nice_elliptic_conditions
-from symdecomp.analysis.tuning import tune
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, closed_form_obstacle, digits, flag, print_json, progress, valence
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import InvalidInputError
@@ -60,6 +58,7 @@ def register(sub) -> None:
 def run(args) -> int:
     if args.region or args.plot is not None:
         return run_region(args)
+    from symdecomp.analysis import elliptic, tuning
     obstacle = closed_form_obstacle(args.scheme)
     if obstacle:
         raise InvalidInputError(f"--scheme {args.scheme.name}: tune solves the paper's quad 1-ring conditions (Section 5.2) "
@@ -71,13 +70,13 @@ def run(args) -> int:
         valences = list(range(3, args.n + 1))
         rows = []
         for n in progress(valences, len(valences), "defects", enabled=not args.json):
-            rows.extend(elliptic_defect_table(args.scheme, [n], digits=args.digits))
-        cond = nice_elliptic_conditions(args.scheme)
+            rows.extend(elliptic.elliptic_defect_table(args.scheme, [n], digits=args.digits))
+        cond = elliptic.nice_elliptic_conditions(args.scheme)
         if args.json:
             closed = {
                 "subdominant": sp.sstr(cond.subdominant),
                 "lambda1": sp.sstr(cond.lambda1),
-                "eq44_ratio_of_mu": sp.sstr(cond.eq44_ratio_of_mu.subs(MU, sp.Symbol("mu"))),
+                "eq44_ratio_of_mu": sp.sstr(cond.eq44_ratio_of_mu.subs(elliptic.MU, sp.Symbol("mu"))),
                 "scale_ratio_squared": sp.sstr(cond.scale_ratio_squared),
             }
             print_json({"scheme": args.scheme.name, "closed_forms": closed, "rows": [r.as_json() for r in rows]})
@@ -85,7 +84,7 @@ def run(args) -> int:
         print(f"{args.scheme.name}: closed forms in n")
         print(f"  mu(n)            = {cond.subdominant}   (subdominant eigenvalue of Eq. 43)")
         print(f"  lambda_1(n)      = {cond.lambda1}")
-        print(f"  d_b/d_a at mu    = {cond.eq44_ratio_of_mu.subs(MU, sp.Symbol('mu'))}   (Eq. 44)")
+        print(f"  d_b/d_a at mu    = {cond.eq44_ratio_of_mu.subs(elliptic.MU, sp.Symbol('mu'))}   (Eq. 44)")
         print(f"  |B^1/A^1|^2(n)   = {cond.scale_ratio_squared}")
         print("  defects: mu - lambda_1^2 and d_b/d_a - |B^1/A^1|^2")
         head = ("n", "mu", "lambda1^2", "mu - lambda1^2", "d_b/d_a", "|B1/A1|^2", "ratio defect")
@@ -94,7 +93,7 @@ def run(args) -> int:
         for r in rows:
             print("  ".join([f"{r.n:>4}"] + [f"{t:<{width}}" for t in r.texts]))
         return 0
-    result = tune(args.scheme, args.n)
+    result = tuning.tune(args.scheme, args.n)
     data = result.as_json(args.digits)
     if args.json:
         print_json({"scheme": args.scheme.name, **data})

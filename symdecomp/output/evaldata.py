@@ -47,14 +47,13 @@ import numpy as np
 from symdecomp.algebra.rounding import round_ball_decimal
 from symdecomp.analysis.eigendata import ZERO_PREC, PatchEigenData, RoundedEigenData, patch_eigendata
 from symdecomp.errors import EvalDataFileError, PrecisionError
+from symdecomp.validate import FLOAT_DIGITS
 
 __all__ = [
     "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "read_binary", "json_chunks",
     "json_valence", "decimal_valence", "read_json",
 ]
 
-#: ``digits`` of a JSON document whose numbers are the correctly rounded float64 values (shortest form).
-FLOAT_DIGITS = 17
 
 FORMAT = "stam-catmull-clark"
 LOOP_FORMAT = "stam-loop"

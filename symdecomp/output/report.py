@@ -43,6 +43,7 @@ from symdecomp.claims.guards import DEFAULT_BUDGET
 from symdecomp.errors import InvalidInputError, NotApplicableError, SymdecompError
 from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import MAX_REPORT_VALENCE as MAX_VALENCES
 from symdecomp.validate import check_valence
 from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.c1_spectrum import spectral_conditions
@@ -51,9 +52,6 @@ from symdecomp.verify.result import C1Verdict
 __all__ = ["MAX_VALENCES", "FIGURES", "DIGITS", "Paragraph", "Formula", "Table", "Figure", "Section", "Report", "ReportInput",
            "SECTIONS", "build_report"]
 
-#: The largest valence of a report: its tables grow with every valence (2n + 1 eigenvalues, masks of 2n + 1
-#: weights) and the eigen-polygon figure has n panels a row.
-MAX_VALENCES = 16
 
 #: The names of the figures a report may hold (a ``.tex`` report writes them next to itself).
 FIGURES = ("characteristic-map", "eigen-polygons", "subdominant-ring")

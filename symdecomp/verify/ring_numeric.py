@@ -22,14 +22,12 @@ from symdecomp.analysis.closed_forms import ClosedFormLabel
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_int, check_valence
+from symdecomp.validate import MAX_DOUBLE_DIGITS, check_int, check_valence
 from symdecomp.verify.numeric import EigenvalueMatch, NumericCheck
 from symdecomp.verify.result import CrossCheckStatus
 
 __all__ = ["MAX_DOUBLE_DIGITS", "ring_numeric_check"]
 
-#: The most digits of agreement asked of a double-precision check.
-MAX_DOUBLE_DIGITS = 12
 
 
 def _full_matrix(scheme: Scheme, n: int, rings: int) -> np.ndarray:

@@ -69,6 +69,10 @@ def _load_checked(build: bool, *, force: bool):
         raise BridgeUnavailableError(f"OpenSubdiv bridge unavailable: cannot build it ({exc}); {fix}") from None
     if not path.exists():
         raise BridgeUnavailableError(f"the OpenSubdiv bridge is not built ({path}); {fix}")
+    try:
+        _build.check_build_dir()  # build() checked it too; a library found without building is checked here
+    except _build.BridgeBuildError as exc:
+        raise BridgeUnavailableError(f"OpenSubdiv bridge unavailable: {exc}") from None
     if not build and not _build.is_current():
         raise BridgeUnavailableError(f"the OpenSubdiv bridge library {path} is stale or damaged; {fix}")
     try:

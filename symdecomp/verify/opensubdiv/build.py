@@ -4,9 +4,14 @@ Uses only the standard library, so CI can run it before the package is installed
 
     python symdecomp/verify/opensubdiv/build.py [--force]   # prints the path of the built library
 
-The library goes to ``_build/`` next to this file (ignored by git), with a stamp naming the
-interface version and the hashes of the source and of the library itself; a library without a
-matching stamp (stale, truncated, altered) is rebuilt before it is ever loaded. The loader
+The library goes to :data:`BUILD_DIR` (:func:`build_dir`): ``$SYMDECOMP_BRIDGE_DIR`` if set;
+``_build/`` next to this file (ignored by git) in a source tree (a checkout, an editable install)
+whose folder is writable; otherwise, as in an installed package, the user's cache folder
+(``$XDG_CACHE_HOME`` or ``~/.cache``, then ``symdecomp/opensubdiv-bridge-<interface version>``).
+The folder is trusted only if it is a real folder (not a symbolic link) of this user that no one
+else may write to; a library there is loaded only with a stamp naming the interface version and
+the hashes of the source and of the library itself: one without a matching stamp (stale,
+truncated, altered) is rebuilt before it is ever loaded. The loader
 (:func:`symdecomp.verify.opensubdiv.load_bridge`) also runs a self-test before trusting it.
 It needs g++ and the OpenSubdiv headers and CPU library (Debian: ``libosd-dev``, ``libosdcpu3.5.0``).
 """
@@ -16,6 +21,7 @@ from __future__ import annotations
 import hashlib
 import os
 import shutil
+import stat
 import subprocess
 import sys
 import tempfile
@@ -23,9 +29,27 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 SOURCE = HERE / "osd_bridge.cpp"
-BUILD_DIR = HERE / "_build"
-LIBRARY = BUILD_DIR / "libsymdecomp_osd.so"
 HEADER = "opensubdiv/far/primvarRefiner.h"
+#: The version of the bridge's C interface this package expects (``symdecomp_osd_bridge_version()``).
+BRIDGE_VERSION = 1
+#: The environment variable that chooses the build folder.
+BUILD_DIR_VARIABLE = "SYMDECOMP_BRIDGE_DIR"
+
+
+def build_dir() -> Path:
+    """The folder of the compiled bridge (see the module docstring for the order)."""
+    chosen = os.environ.get(BUILD_DIR_VARIABLE)
+    if chosen:
+        return Path(chosen).absolute()
+    if (HERE.parents[2] / "pyproject.toml").is_file() and os.access(HERE, os.W_OK):
+        return HERE / "_build"
+    cache = os.environ.get("XDG_CACHE_HOME", "")
+    cache = Path(cache) if os.path.isabs(cache) else Path.home() / ".cache"  # a relative XDG path is ignored (the spec)
+    return cache / "symdecomp" / f"opensubdiv-bridge-{BRIDGE_VERSION}"
+
+
+BUILD_DIR = build_dir()
+LIBRARY = BUILD_DIR / "libsymdecomp_osd.so"
 
 
 # Not in symdecomp.errors: this script runs stand-alone with the standard library only (before the
@@ -53,12 +77,36 @@ def headers_present(cxx: str | None = None) -> bool:
     return probe.returncode == 0
 
 
-#: The version of the bridge's C interface this package expects (``symdecomp_osd_bridge_version()``).
-BRIDGE_VERSION = 1
-#: Records what the library in ``_build/`` was built from (interface version and source hash).
+#: Records what the library in ``BUILD_DIR`` was built from (interface version and source hash).
 STAMP = BUILD_DIR / "libsymdecomp_osd.stamp"
 #: The command that rebuilds the bridge from scratch.
 REBUILD_COMMAND = "python -m symdecomp.verify.opensubdiv.build --force"
+
+
+def check_build_dir(create: bool = False) -> Path:
+    """:data:`BUILD_DIR`, made (``create``) and checked: a folder, not a symbolic link, of this user, that
+    no one else may write to (a library loaded from it runs in this process). Raises :class:`BridgeBuildError`."""
+    folder = BUILD_DIR
+    if create:
+        try:
+            folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+        except FileExistsError:  # a file or a link in its place: refused below
+            pass
+        except OSError as exc:
+            raise BridgeBuildError(f"cannot create the bridge's build folder {folder} ({exc.strerror or exc}); "
+                                   f"set {BUILD_DIR_VARIABLE} to a writable folder") from None
+    try:
+        info = os.lstat(folder)
+    except OSError as exc:
+        raise BridgeBuildError(f"the bridge's build folder {folder} is missing ({exc.strerror or exc})") from None
+    problem = ("is not a folder" if not stat.S_ISDIR(info.st_mode)
+               else "belongs to another user" if hasattr(os, "getuid") and info.st_uid != os.getuid()
+               else "may be written by other users" if info.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+               else None)
+    if problem:
+        raise BridgeBuildError(f"the bridge's build folder {folder} {problem}: not trusted; "
+                               f"set {BUILD_DIR_VARIABLE} to a folder of your own")
+    return folder
 
 
 def _fingerprint(library: Path) -> str:
@@ -74,8 +122,9 @@ def is_current() -> bool:
     (loading a truncated shared library can crash the process, not just fail).
     """
     try:
+        check_build_dir()
         return LIBRARY.is_file() and STAMP.read_text() == _fingerprint(LIBRARY)
-    except OSError:
+    except (OSError, BridgeBuildError):
         return False
 
 
@@ -88,13 +137,13 @@ def build(force: bool = False) -> Path:
     """
     if not force and is_current():
         return LIBRARY
+    check_build_dir(create=True)
     cxx = compiler()
     if cxx is None:
         raise BridgeBuildError("no C++ compiler: install g++ (Debian: apt-get install g++), or set CXX")
     if not headers_present(cxx):
         raise BridgeBuildError(f"the OpenSubdiv headers (<{HEADER}>) are not installed: "
                                "apt-get install libosd-dev libosdcpu3.5.0")
-    BUILD_DIR.mkdir(exist_ok=True)
     fd, tmp = tempfile.mkstemp(suffix=".so", dir=BUILD_DIR)
     os.close(fd)
     cmd = [cxx, "-O2", "-std=c++14", "-shared", "-fPIC", str(SOURCE), "-o", tmp, "-losdCPU"]

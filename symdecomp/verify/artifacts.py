@@ -52,10 +52,10 @@ from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_valence
 from symdecomp.verify.c1_spectrum import ball_text, exact_charpoly, exact_entry, other_frequency_eigenvalues, sibling_values
-from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
+from symdecomp.verify.second_order_spectrum import CurvatureResult, dominant_part, second_order_eigenstructure
 from symdecomp.verify.shape import classify_shape
 
-__all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly", "dominant_part"]
+__all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly"]
 
 
 @dataclass(frozen=True)
@@ -198,15 +198,6 @@ def _kind(scheme: Scheme, n: int, elliptic: int, hyperbolic: int) -> str:
         return classify_shape(scheme, n, elliptic=elliptic, hyperbolic=hyperbolic).kind
     except SymdecompError:  # no characteristic map or no second-order part to classify: the reason is the regime's
         return "not applicable"
-
-
-def dominant_part(curvature: CurvatureResult) -> int | None:
-    """The frequency, 0 or 2, of the larger of the two parts' largest eigenvalues (``None``: equal or not separated)."""
-    tops = {j: max((abs(e.value) for e in curvature.eigenvalues if e.frequency == j), key=lambda x: x.mid(), default=None)
-            for j in (0, 2)}
-    if tops[0] is None or tops[2] is None or curvature.n == 3:  # at n = 3 frequency 2 is the tangent plane's
-        return None
-    return 0 if tops[0] > tops[2] else 2 if tops[2] > tops[0] else None
 
 
 def _shape(scheme: Scheme, n: int, curvature: CurvatureResult) -> tuple[str, str, int | None]:

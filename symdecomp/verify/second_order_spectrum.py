@@ -55,7 +55,7 @@ from symdecomp.verify.c1_spectrum import (
 )
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["SecondOrderEigenvalue", "CurvatureResult", "second_order_eigenstructure"]
+__all__ = ["SecondOrderEigenvalue", "CurvatureResult", "second_order_eigenstructure", "dominant_frequency", "dominant_part"]
 
 #: Working precisions (bits): the second is tried only when the first leaves the regime undecided.
 PRECISIONS = (128, 512)
@@ -290,3 +290,29 @@ def second_order_eigenstructure(scheme: Scheme, n: int) -> CurvatureResult:
         if result.regime is not CurvatureRegime.UNDECIDED:
             break
     return result
+
+
+def dominant_frequency(elliptic: flint.arb | flint.acb | None, hyperbolic: flint.arb | flint.acb | None) -> int | None:
+    """Which second-order part dominates on fine rings: ``0`` if ``|mu_0| > |mu_2|``, ``2`` if ``|mu_2| > |mu_0|``.
+
+    ``elliptic``, ``hyperbolic``: balls around the largest eigenvalue of frequency 0 and of frequency 2 after ``lambda_1``;
+    on ring ``m`` the parts scale like ``mu_0^m`` and ``mu_2^m``. ``None`` when one is missing or the balls are not
+    separated in modulus (equal moduli are never separated). The one comparison behind :func:`dominant_part` (the
+    ``artifacts`` table and claims) and :attr:`symdecomp.verify.shape.ShapeResult.dominant` (the shape chart).
+    """
+    if elliptic is None or hyperbolic is None:
+        return None
+    a, b = abs(elliptic), abs(hyperbolic)
+    return 0 if a > b else 2 if b > a else None
+
+
+def dominant_part(curvature: CurvatureResult) -> int | None:
+    """The frequency, 0 or 2, of the larger of the two parts' largest eigenvalues (``None``: equal or not separated).
+
+    At ``n = 3`` frequency 2 is frequency 1, the tangent plane's (its block holds ``lambda_1``): ``None``.
+    """
+    tops = {j: max((abs(e.value) for e in curvature.eigenvalues if e.frequency == j), key=lambda x: x.mid(), default=None)
+            for j in (0, 2)}
+    if curvature.n == 3:  # at n = 3 frequency 2 is the tangent plane's
+        return None
+    return dominant_frequency(tops[0], tops[2])

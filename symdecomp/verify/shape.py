@@ -89,6 +89,7 @@ from symdecomp.verify.c1 import bezier_nets, characteristic_nets, place_text
 from symdecomp.verify.c1_spectrum import ball_text, frequency_zero_eigenvalues, quadratic_roots, real_at, spectral_conditions
 from symdecomp.verify.curvature import certify_nets, combine, curvature_gram, jacobian_nets, patch_algebra
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.second_order_spectrum import dominant_frequency
 
 __all__ = ["KINDS", "SecondOrderEigen", "HeightFields", "height_fields", "ShapeResult", "classify_shape", "ShapeChart", "shape_chart"]
 
@@ -383,11 +384,10 @@ def _verdict(fields: HeightFields, gram: list, degree, a, b, t, max_depth: int, 
 
 
 def _dominant(fields: HeightFields) -> int | None:
-    """The frequency (0 or 2) of the larger second-order eigenvalue, when both are used and separated."""
+    """The frequency (0 or 2) of the larger second-order eigenvalue, when both are used and separated
+    (:func:`~symdecomp.verify.second_order_spectrum.dominant_frequency`, the one comparison)."""
     e, h = fields.elliptic, fields.hyperbolic
-    if e is None or h is None:
-        return None
-    return 0 if abs(e.value) > abs(h.value) else 2 if abs(e.value) < abs(h.value) else None
+    return dominant_frequency(None if e is None else e.value, None if h is None else h.value)
 
 
 def _classify(scheme: Scheme, n: int, a: Fraction, b: Fraction, t: Fraction, max_depth: int, prec: int) -> ShapeResult:

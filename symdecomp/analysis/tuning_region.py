@@ -61,6 +61,7 @@ from symdecomp.algebra.algebraic_sign import exact_sign, rational_between, real_
 from symdecomp.analysis.characteristic import outer_charpoly
 from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regime
 from symdecomp.analysis.frequency import laurent_to_cos, one_ring_matrices
+from symdecomp.analysis.tuning import unit_quotient
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, VertexRule, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
@@ -224,12 +225,7 @@ def _affine_check(expr: sp.Expr, params, scheme: Scheme) -> sp.Expr:
 
 
 def _quadratic(scheme: Scheme, n: int, params) -> sp.Poly:
-    E0 = one_ring_matrices(scheme)[1].subs(N, n)
-    size = E0.rows
-    charpoly = sp.Poly(sp.expand((LAM * sp.eye(size) - E0).det()), LAM)
-    quotient, remainder = sp.div(charpoly, sp.Poly(LAM - 1, LAM))
-    if not remainder.is_zero:  # pragma: no cover - affine rules guarantee it
-        raise NotApplicableError(f"scheme {scheme.name!r}: the frequency-0 block has no eigenvalue 1")
+    quotient = unit_quotient(one_ring_matrices(scheme)[1].subs(N, n))
     coeffs = [_affine_check(c, params, scheme) for c in quotient.all_coeffs()]
     return sp.Poly(sum(c * LAM**k for k, c in enumerate(reversed(coeffs))), LAM)
 

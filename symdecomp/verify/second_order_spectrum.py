@@ -309,7 +309,9 @@ def dominant_frequency(elliptic: flint.arb | flint.acb | None, hyperbolic: flint
 def dominant_part(curvature: CurvatureResult) -> int | None:
     """The frequency, 0 or 2, of the larger of the two parts' largest eigenvalues (``None``: equal or not separated).
 
-    At ``n = 3`` frequency 2 is frequency 1, the tangent plane's (its block holds ``lambda_1``): ``None``.
+    At ``n = 3`` frequency 2 is frequency 1, the tangent plane's (its block holds ``lambda_1``): ``None``. (The shape
+    chart, :func:`symdecomp.verify.shape.shape_chart`, does use the other root of that block as its hyperbolic height at
+    ``n = 3``, so its ``dominant`` may be 0 or 2 there; both compare with :func:`dominant_frequency`.)
     """
     tops = {j: max((abs(e.value) for e in curvature.eigenvalues if e.frequency == j), key=lambda x: x.mid(), default=None)
             for j in (0, 2)}

@@ -46,6 +46,7 @@ from symdecomp.validate import cached, check_digits
 __all__ = [
     "with_free_vertex_rule",
     "eigenvalue_quadratic",
+    "unit_quotient",
     "ConditionLine",
     "condition_line",
     "ratio_target",
@@ -61,15 +62,21 @@ def with_free_vertex_rule(scheme: Scheme) -> Scheme:
     return Scheme(scheme.name + " (free vertex rule)", scheme.edge_rule, scheme.face_rule, VertexRule.affine(ALPHA, BETA))
 
 
+def unit_quotient(T: sp.Matrix) -> sp.Poly:
+    """``det(lambda I - T)/(lambda - 1)`` in ``lambda``: the non-unit eigenvalues of a frequency-0 block ``T`` of an affine
+    scheme (Eq. 43 on quads), its entries in any symbols (``n``, free weights). The one computation of it, for
+    :func:`eigenvalue_quadratic` and :mod:`symdecomp.analysis.tuning_region`."""
+    charpoly = sp.Poly(sp.expand((LAM * sp.eye(T.rows) - T).det()), LAM)
+    quotient, remainder = sp.div(charpoly, sp.Poly(LAM - 1, LAM))
+    if sp.expand(remainder.as_expr()) != 0:  # pragma: no cover - affine rules guarantee it
+        raise InvalidSchemeError("the frequency-0 block (Eq. 43) of an affine scheme must have the eigenvalue 1")
+    return quotient
+
+
 @cached(scheme=check_scheme)
 def eigenvalue_quadratic(scheme: Scheme) -> sp.Poly:
     """``det(lambda I - T)/(lambda - 1)`` for the Eq. 43 matrix with a free vertex rule, in ``lambda``."""
-    T = recursion_matrix(with_free_vertex_rule(scheme))
-    charpoly = sp.Poly(sp.expand((LAM * sp.eye(3) - T).det()), LAM)
-    quotient, remainder = sp.div(charpoly, sp.Poly(LAM - 1, LAM))
-    if sp.expand(remainder.as_expr()) != 0:  # pragma: no cover - affine rules guarantee it
-        raise InvalidSchemeError("the Eq. 43 matrix of an affine scheme must have the eigenvalue 1")
-    return sp.Poly(sp.expand(quotient.as_expr()), LAM)
+    return sp.Poly(sp.expand(unit_quotient(recursion_matrix(with_free_vertex_rule(scheme))).as_expr()), LAM)
 
 
 @dataclass(frozen=True)

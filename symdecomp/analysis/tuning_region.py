@@ -36,13 +36,14 @@ weights, with coefficients in ``Q(lambda_1)``; with ``>=`` they say ``<= r``. Th
   ``< lambda_1^2``; if ``m > lambda_1^2`` every C1 point has ``mu > lambda_1^2``.
 
 The regimes compare moduli, as the issue defines them (the eigenvalue of modulus ``lambda_1^2``
-may be ``-lambda_1^2`` or complex on parts of the boundary). One exception, as in the regime
-definition of ``analysis/curvature_regime.py`` on the ``artifacts`` branch (``|mu| = lambda_1^2`` with
-a Jordan block is unbounded, the curvature growing like ``k``): at the (at most two) corners where
-``Q`` has a double root ``+-lambda_1^2`` and ``T`` is not diagonalizable there (exact rank,
-:meth:`TuningRegion.corners`), the point is ``mu > lambda_1^2`` though it satisfies the closed
-conditions; the printed conditions of ``mu = lambda_1^2`` exclude them in words. ``FLAT`` here is that
-definition's ``zero``. The regime is defined here, not imported, until the branches are merged.
+may be ``-lambda_1^2`` or complex on parts of the boundary), and are those of
+:mod:`symdecomp.analysis.curvature_regime` (:class:`~symdecomp.analysis.curvature_regime.CurvatureRegime`:
+``zero``, ``bounded``, ``unbounded``; ``not applicable`` outside the C1 set, where there is no dominant
+``lambda_1``), decided by its :func:`~symdecomp.analysis.curvature_regime.curvature_regime` from the sign of
+``|mu| - lambda_1^2``. Its Jordan rule (``|mu| = lambda_1^2`` with a Jordan block is unbounded, the curvature
+growing like ``k``) applies at the (at most two) corners where ``Q`` has a double root ``+-lambda_1^2`` and
+``T`` is not diagonalizable there (exact rank, :meth:`TuningRegion.corners`): such a point is unbounded though
+it satisfies the closed conditions; the printed conditions of the bounded set exclude them in words.
 Membership of an exact point is decided by exact signs (:func:`~symdecomp.algebra.algebraic_sign.exact_sign`);
 for one parameter the sets are unions of intervals with algebraic endpoints (the forms' roots,
 sorted exactly). More than two parameters are refused (a region in 3+ dimensions is not printed
@@ -52,14 +53,15 @@ through fewer than two independent combinations.
 
 from __future__ import annotations
 
-import enum
 from dataclasses import dataclass
 
 import sympy as sp
 
 from symdecomp.algebra.algebraic_sign import exact_sign, rational_between, real_ball
 from symdecomp.analysis.characteristic import outer_charpoly
+from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regime
 from symdecomp.analysis.frequency import laurent_to_cos, one_ring_matrices
+from symdecomp.analysis.tuning import unit_quotient
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, VertexRule, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
@@ -67,19 +69,7 @@ from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.validate import cached, check_type, check_valence
 
-__all__ = ["Regime", "Form", "TuningRegion", "tuning_region", "interval_region"]
-
-
-class Regime(enum.Enum):
-    """Where a point of the weights lies at one valence."""
-
-    NOT_C1 = "not C1"
-    FLAT = "mu < lambda_1^2"
-    BOUNDED = "mu = lambda_1^2"
-    UNBOUNDED = "mu > lambda_1^2"
-
-    def __str__(self) -> str:
-        return self.value
+__all__ = ["Form", "TuningRegion", "tuning_region", "interval_region"]
 
 
 @dataclass(frozen=True)
@@ -132,17 +122,17 @@ class TuningRegion:
         return (tuple(exact_sign(f.expr.subs(values)) for f in self.c1_forms),
                 tuple(exact_sign(f.expr.subs(values)) for f in self.square_forms))
 
-    def classify(self, point) -> Regime:
-        """The regime at an exact point (rationals or exact algebraic numbers, one per parameter).
+    def classify(self, point) -> CurvatureRegime:
+        """The regime at an exact point (rationals or exact algebraic numbers, one per parameter); ``not applicable`` outside C1.
 
         A double root ``+-lambda_1^2`` of ``Q`` with a Jordan block in ``T`` (a corner of the closed set) makes the
-        curvature grow like ``k``: unbounded, although ``mu = lambda_1^2``.
+        curvature grow like ``k``: unbounded, although ``|mu| = lambda_1^2`` (:func:`curvature_regime`'s ``defective``).
         """
         c1, square = self.signs(point)
-        regime = regime_from_signs(c1, square, self.fixed_vs_square, self.independent_c1)
-        if regime is Regime.BOUNDED and self._jordan(point, square):
-            return Regime.UNBOUNDED
-        return regime
+        if not in_c1(c1, self.independent_c1):
+            return CurvatureRegime.NOT_APPLICABLE
+        comparison = square_comparison(square, self.fixed_vs_square)
+        return curvature_regime(comparison, defective=comparison == 0 and self._jordan(point, square))
 
     def _jordan(self, point, square: tuple[int, ...]) -> bool:
         """Whether ``Q`` has a double root ``+-lambda_1^2`` at the point and ``T`` a Jordan block for it (exact rank)."""
@@ -167,14 +157,14 @@ class TuningRegion:
                 out.append((name, point, self._jordan(point, self.signs(point)[1])))
         return out
 
-    def conditions(self) -> dict[Regime, list[list[str]]]:
+    def conditions(self) -> dict[CurvatureRegime, list[list[str]]]:
         """Each regime's set as alternatives (a union) of conjunctions of exact (in)equalities."""
         c1 = [f.text(">") for f in self.c1_forms]
         sq = self.square_forms
         if not self.independent_c1:
-            return {Regime.FLAT: [], Regime.BOUNDED: [], Regime.UNBOUNDED: []}
+            return {CurvatureRegime.ZERO: [], CurvatureRegime.BOUNDED: [], CurvatureRegime.UNBOUNDED: []}
         if self.fixed_vs_square > 0:
-            return {Regime.FLAT: [], Regime.BOUNDED: [], Regime.UNBOUNDED: [c1]}
+            return {CurvatureRegime.ZERO: [], CurvatureRegime.BOUNDED: [], CurvatureRegime.UNBOUNDED: [c1]}
         closed = [f.text(">=") for f in sq]
         if self.fixed_vs_square == 0:
             bounded = [closed]
@@ -182,18 +172,19 @@ class TuningRegion:
         else:
             bounded = [[f.text("=")] + [g.text(">=") for g in sq if g is not f] for f in sq]
             flat = [[f.text(">") for f in sq]]
-        return {Regime.FLAT: flat, Regime.BOUNDED: bounded, Regime.UNBOUNDED: [c1 + [f.text("<")] for f in sq]}
+        return {CurvatureRegime.ZERO: flat, CurvatureRegime.BOUNDED: bounded, CurvatureRegime.UNBOUNDED: [c1 + [f.text("<")] for f in sq]}
 
 
-def regime_from_signs(c1: tuple[int, ...], square: tuple[int, ...], fixed_vs_square: int, independent_c1: bool) -> Regime:
-    """The regime from the signs of the forms (module docstring)."""
-    if not independent_c1 or any(s <= 0 for s in c1):
-        return Regime.NOT_C1
+def in_c1(c1: tuple[int, ...], independent_c1: bool) -> bool:
+    """Whether a point with these signs of the C1 forms lies in the (open) C1 set."""
+    return independent_c1 and all(s > 0 for s in c1)
+
+
+def square_comparison(square: tuple[int, ...], fixed_vs_square: int) -> int:
+    """The sign of ``|mu| - lambda_1^2`` at a C1 point, from the signs of the ``lambda_1^2`` forms (module docstring)."""
     if fixed_vs_square > 0 or any(s < 0 for s in square):
-        return Regime.UNBOUNDED
-    if fixed_vs_square == 0 or any(s == 0 for s in square):
-        return Regime.BOUNDED
-    return Regime.FLAT
+        return 1
+    return 0 if fixed_vs_square == 0 or any(s == 0 for s in square) else -1
 
 
 def _exact_point(point, parameters) -> tuple[sp.Expr, ...]:
@@ -234,12 +225,7 @@ def _affine_check(expr: sp.Expr, params, scheme: Scheme) -> sp.Expr:
 
 
 def _quadratic(scheme: Scheme, n: int, params) -> sp.Poly:
-    E0 = one_ring_matrices(scheme)[1].subs(N, n)
-    size = E0.rows
-    charpoly = sp.Poly(sp.expand((LAM * sp.eye(size) - E0).det()), LAM)
-    quotient, remainder = sp.div(charpoly, sp.Poly(LAM - 1, LAM))
-    if not remainder.is_zero:  # pragma: no cover - affine rules guarantee it
-        raise NotApplicableError(f"scheme {scheme.name!r}: the frequency-0 block has no eigenvalue 1")
+    quotient = unit_quotient(one_ring_matrices(scheme)[1].subs(N, n))
     coeffs = [_affine_check(c, params, scheme) for c in quotient.all_coeffs()]
     return sp.Poly(sum(c * LAM**k for k, c in enumerate(reversed(coeffs))), LAM)
 
@@ -390,7 +376,7 @@ def tuning_region(scheme: Scheme, n: int) -> TuningRegion:
 class Interval:
     """A piece of the line of one parameter: ``lo < t < hi`` (ends included where closed; ``None``: unbounded)."""
 
-    regime: Regime
+    regime: CurvatureRegime
     lo: sp.Expr | None
     hi: sp.Expr | None
     lo_closed: bool

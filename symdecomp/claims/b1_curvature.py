@@ -31,8 +31,8 @@ from symdecomp.schemes.lattice import LATTICES
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.verify.artifacts import artifact_indicators, dominant_part
-from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
+from symdecomp.verify.artifacts import artifact_indicators
+from symdecomp.verify.second_order_spectrum import CurvatureResult, dominant_part, second_order_eigenstructure
 
 #: The valences of the tables (about a second per scheme; ``symdecomp artifacts`` does more).
 VALENCES = (3, 64)

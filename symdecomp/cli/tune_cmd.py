@@ -10,8 +10,9 @@ With ``--region`` (a scheme file with free vertex weights, ``parameters = ["alph
 parameter) it prints instead the exact region of those weights at valence N by curvature regime
 (:mod:`symdecomp.analysis.tuning_region`, certified by :mod:`symdecomp.verify.tuning_c1`): the
 quadratic ``Q`` of the frequency-0 eigenvalues, ``lambda_1``, the defining linear conditions of the
-sets "C1 and mu < lambda_1^2", "C1 and mu = lambda_1^2", "C1 and mu > lambda_1^2" (each a union
-of conjunctions), for one parameter the exact intervals, and where the published and the paper's
+sets where the scheme is C1 and the curvature regime (:mod:`symdecomp.analysis.curvature_regime`, its names)
+is zero (``|mu| < lambda_1^2``), bounded (``=``) or unbounded (``>``, or ``=`` with a Jordan block), each a union
+of conjunctions; points outside C1 are "not applicable", for one parameter the exact intervals, and where the published and the paper's
 weights lie (Catmull-Clark's, the paper's Section 5.2 tuning; Loop's and Warren's on triangles).
 ``--plot FILE.png|FILE.pdf`` draws the region (each cell coloured only where certified signs decide
 it; :mod:`symdecomp.output.plotting.tuning`).
@@ -36,8 +37,9 @@ def register(sub) -> None:
         "an equation in n alone holds (for Catmull-Clark: n = 4), since the Eq. 44 ratio at a given eigenvalue "
         "does not depend on the vertex rule. --table prints both defects of the scheme for n = 3..N. --region (a scheme "
         "file with parameters = [\"alpha\", \"beta\"] or one parameter in its vertex rule) prints instead the exact region "
-        "of those weights at valence N where the scheme is C1 with mu < lambda_1^2 (curvature tends to 0), mu = lambda_1^2 "
-        "(bounded) or mu > lambda_1^2 (unbounded), mu the largest eigenvalue modulus after 1 and lambda_1 over all "
+        "of those weights at valence N where the scheme is C1 with curvature regime zero (|mu| < lambda_1^2, "
+        "curvature tends to 0), bounded (|mu| = lambda_1^2) or unbounded (|mu| > lambda_1^2, or = with a Jordan block), "
+        "mu the largest eigenvalue modulus after 1 and lambda_1 over all "
         "frequencies: linear inequalities in the weights with exact algebraic coefficients, exact intervals for one "
         "parameter, and where published weights lie; --plot draws it, cells coloured only where certified signs decide.",
     )
@@ -46,7 +48,8 @@ def register(sub) -> None:
                    help="significant digits of printed values (default 20, at most 1000)")
     flag(p, "--table", help="print the defects of both conditions for n = 3..N instead")
     flag(p, "--region", help="print the exact region of the scheme's free vertex weights (parameters in its file) at valence N "
-         "by regime: C1 and mu < lambda_1^2 (flat spot), = lambda_1^2 (bounded curvature), > lambda_1^2 (unbounded), with "
+         "by curvature regime: zero (|mu| < lambda_1^2, a flat spot), bounded (|mu| = lambda_1^2), unbounded (|mu| > lambda_1^2 "
+         "or a Jordan block), not applicable (not C1), with "
          "Catmull-Clark's, the paper's Section 5.2 and (triangles) Loop's and Warren's weights placed in it")
     p.add_argument("--plot", action=Once, metavar="FILE.png|FILE.pdf",
                    help="with --region: draw the region in the parameter plane (or line) to this file, coloured by regime")
@@ -184,7 +187,16 @@ def _region_data(region, points, intervals, digits: int) -> dict:
     }
 
 
+def _label(regime: str) -> str:
+    """A regime's name as printed: outside the C1 set the regime is not applicable, and the line says why."""
+    from symdecomp.analysis.curvature_regime import CurvatureRegime
+
+    return regime + (" (not C1)" if regime == CurvatureRegime.NOT_APPLICABLE.value else "")
+
+
 def _print_region(data: dict) -> None:
+    from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime
+
     params = ", ".join(data["parameters"])
     print(f"{data['scheme']}, valence n = {data['n']}: free vertex weights ({params}) at O")
     print(f"  Q(x) = {data['Q']}   (det(x - T)/(x - 1), T the frequency-0 block, Eq. 43)")
@@ -194,17 +206,17 @@ def _print_region(data: dict) -> None:
     print(f"  Reif's weight-independent conditions: {data['c1_test']['verdict']} ({data['c1_test']['reason']})")
     print("  C1 (weight-dependent part): " + " and ".join(data["c1"]))
     for name, alternatives in data["regions"].items():
-        print(f"  C1 and {name}:" + ("" if alternatives else " empty"))
+        print(f"  C1 and {REGIME_TEXT[CurvatureRegime(name)]}:" + ("" if alternatives else " empty"))
         for conj in alternatives:
             print("    " + " and ".join(conj))
     for corner in data["jordan_corners"]:
         print(f"  except ({', '.join(corner['values'])}): Q has the double root {corner['double_root']} with a Jordan block "
-              "in T, so mu > lambda_1^2 there")
+              "in T, so the curvature is unbounded there")
     if data["intervals"] is not None:
         print(f"  {params} by regime:")
         for piece in data["intervals"]:
             ends = ", ".join(inf if e is None else e for e, inf in zip(piece["ends"], ("-oo", "oo")))
-            print(f"    {piece['interval']}: {piece['regime']}   (ends in {ends})")
+            print(f"    {piece['interval']}: {_label(piece['regime'])}   (ends in {ends})")
     for point in data["points"]:
         on = f" (on {', '.join(point['on'])} = 0)" if point["on"] else ""
-        print(f"  {point['name']}: ({', '.join(point['values'])}) ~ ({', '.join(point['approx'])}): {point['regime']}{on}")
+        print(f"  {point['name']}: ({', '.join(point['values'])}) ~ ({', '.join(point['approx'])}): {_label(point['regime'])}{on}")

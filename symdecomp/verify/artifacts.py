@@ -51,11 +51,11 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_valence
-from symdecomp.verify.c1_spectrum import _exact, _exact_charpoly, _other_frequencies, _siblings, ball_text
-from symdecomp.verify.second_order_spectrum import CurvatureResult, second_order_eigenstructure
+from symdecomp.verify.c1_spectrum import ball_text, exact_charpoly, exact_entry, other_frequency_eigenvalues, sibling_values
+from symdecomp.verify.second_order_spectrum import CurvatureResult, dominant_part, second_order_eigenstructure
 from symdecomp.verify.shape import classify_shape
 
-__all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly", "dominant_part"]
+__all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly"]
 
 
 @dataclass(frozen=True)
@@ -130,7 +130,7 @@ def compare_exactly(ball: flint.acb, poly: tuple | None, siblings: list, target:
 
 def _position_signs(scheme: Scheme, n: int) -> tuple[str, ...]:
     """The classes whose limit-position weight is negative, exactly (``y (E_0 - I) = 0``, ``y_O = 1``)."""
-    E0 = [[_exact(x, n) for x in row] for row in one_ring_matrices(scheme)[1].tolist()]
+    E0 = [[exact_entry(x, n) for x in row] for row in one_ring_matrices(scheme)[1].tolist()]
     k = len(E0)
     A = [[E0[r][c] - (1 if r == c else 0) for c in range(k)] for r in range(k)]
     # y = (1, z): sum_r y_r A[r][c] = 0 for every c; solve for z on columns where the (k-1) x (k-1) system is regular
@@ -180,11 +180,11 @@ def _indicators(scheme: Scheme, n: int) -> ArtifactIndicators:
         with flint.ctx.workprec(128):
             lam = curvature.lambda1
             j = curvature.lambda1_frequency
-            poly = _exact_charpoly(scheme, n, j)
+            poly = exact_charpoly(scheme, n, j)
             field = CyclotomicField(2 * n)
-            inner = _other_frequencies(scheme, n, outer=False)[0]
+            inner = other_frequency_eigenvalues(scheme, n, outer=False)[0]
             dom = max((e for e in inner if e.frequency == j), key=lambda e: abs(e.value).mid())
-            density = compare_exactly(lam, poly, _siblings(inner, dom), field(flint.fmpq(1, 2)))
+            density = compare_exactly(lam, poly, sibling_values(inner, dom), field(flint.fmpq(1, 2)))
             tangent = _tangent_against(scheme, n, lam)
             values = frequency_eigenvector(scheme, n, j, lam).values
             spacing = abs(values[(2, 0)] - values[(1, 0)]) / abs(values[(1, 0)])
@@ -198,15 +198,6 @@ def _kind(scheme: Scheme, n: int, elliptic: int, hyperbolic: int) -> str:
         return classify_shape(scheme, n, elliptic=elliptic, hyperbolic=hyperbolic).kind
     except SymdecompError:  # no characteristic map or no second-order part to classify: the reason is the regime's
         return "not applicable"
-
-
-def dominant_part(curvature: CurvatureResult) -> int | None:
-    """The frequency, 0 or 2, of the larger of the two parts' largest eigenvalues (``None``: equal or not separated)."""
-    tops = {j: max((abs(e.value) for e in curvature.eigenvalues if e.frequency == j), key=lambda x: x.mid(), default=None)
-            for j in (0, 2)}
-    if tops[0] is None or tops[2] is None or curvature.n == 3:  # at n = 3 frequency 2 is the tangent plane's
-        return None
-    return 0 if tops[0] > tops[2] else 2 if tops[2] > tops[0] else None
 
 
 def _shape(scheme: Scheme, n: int, curvature: CurvatureResult) -> tuple[str, str, int | None]:

@@ -72,7 +72,8 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down", "round_down"]
+__all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down", "round_down", "real_at", "quadratic_roots",
+           "exact_entry", "exact_charpoly", "frequency_zero_eigenvalues", "other_frequency_eigenvalues", "shared_root", "sibling_values"]
 
 _X = sp.Symbol("x")
 
@@ -154,12 +155,12 @@ def _asymmetry(scheme: Scheme) -> tuple[sp.Expr, ...]:
     return tuple(sp.expand(e - e.subs(OMEGA, 1 / OMEGA)) for e in _symbolic_charpoly(scheme))
 
 
-def _real_at(scheme: Scheme, n: int) -> bool:
+def real_at(scheme: Scheme, n: int) -> bool:
     """Whether ``M_j``'s characteristic polynomial is real for every ``j`` (symmetric Laurent polynomials in omega)."""
     return all(e == 0 or sp.expand(e.subs(N, n)) == 0 for e in _asymmetry(scheme))
 
 
-def _quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
+def quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
     """The roots of ``x^2 - t x + d``, larger modulus first (midpoints; a double root gets two equal balls)."""
     disc = t * t - 4 * d
     if disc.real.contains(0) and disc.imag.contains(0):
@@ -179,7 +180,7 @@ def _field(n: int) -> CyclotomicField:
     return CyclotomicField(2 * n)
 
 
-def _exact(expr, n: int, j: int = 0) -> Cyclotomic | None:
+def exact_entry(expr, n: int, j: int = 0) -> Cyclotomic | None:
     """An expression in ``n``, ``omega`` and ``cos``/``sin`` of rational multiples of pi at ``n``, ``omega = omega_n^j``."""
     expr = sp.sympify(expr, strict=True)
     if expr.has(OMEGA):
@@ -217,7 +218,7 @@ def _frequency_zero_quotient(scheme: Scheme, n: int) -> tuple[list, list | None]
     Coefficient lists as in :func:`_charpoly`, exact in :func:`_field`; ``q`` is ``None`` if 1 is not a root.
     """
     E0 = one_ring_matrices(scheme)[1]
-    entries = [[_exact(x, n) for x in row] for row in E0.tolist()]
+    entries = [[exact_entry(x, n) for x in row] for row in E0.tolist()]
     if any(x is None for row in entries for x in row):
         raise NotApplicableError(
             f"scheme {scheme.name!r}: the C1 test needs rational weights at each valence (or rational in cos(2 pi k/n)); "
@@ -234,7 +235,7 @@ def _ball(x: Cyclotomic) -> flint.acb:
     return to_acb(x, flint.ctx.prec)
 
 
-def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
+def frequency_zero_eigenvalues(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
     """The non-unit eigenvalues of the frequency-0 block (exact where it matters); a failure reason if 1 is not simple."""
     p, q = _frequency_zero_quotient(scheme, n)
     if q is None:
@@ -249,7 +250,7 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
         mu = _rational(-b / 2)
         defective = mu is not None and jordan_block_size(scheme, n, mu) == 2  # Jordan blocks: rational roots only
         return [Eigen(_ball(-b / 2), 0, 2, defective=defective)], None
-    r1, r2 = _quadratic_roots(-_ball(b), _ball(c))
+    r1, r2 = quadratic_roots(-_ball(b), _ball(c))
     real = _rational(disc)
     pair = real is not None and real < 0  # a rational negative discriminant: conjugate roots
     if not pair and disc == disc.conjugate():  # real: conjugate roots iff negative
@@ -257,7 +258,7 @@ def _frequency_zero(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
     return [Eigen(r1, 0, 1, root=0, pair=pair), Eigen(r2, 0, 1, root=1, pair=pair)], None
 
 
-def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int | None, flint.arb]]]:
+def other_frequency_eigenvalues(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int | None, flint.arb]]]:
     """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (none with ``outer=False``).
 
     The outer bound is one entry ``(None, radius)`` for every frequency when the outer block has the
@@ -267,7 +268,7 @@ def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[l
     """
     k1 = ring_layout(scheme.lattice).one_ring
     eigen = []
-    real, blocks = _real_at(scheme, n), frequency_blocks(scheme, n)
+    real, blocks = real_at(scheme, n), frequency_blocks(scheme, n)
     for j in range(1, n // 2 + 1):
         B = blocks(j, k1)
         mult = 1 if 2 * j == n else 2
@@ -279,7 +280,7 @@ def _other_frequencies(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[l
         if disc.real.contains(0) and disc.imag.contains(0) and _exact_discriminant_zero(scheme, n, j):
             eigen.append(Eigen(t / 2, j, 2 * mult, double=True))  # exactly t/2, twice
             continue
-        r1, r2 = _quadratic_roots(t, d)
+        r1, r2 = quadratic_roots(t, d)
         pair = real and disc.real < 0  # real trace and determinant: the roots are conjugate
         eigen += [Eigen(r1, j, mult, root=0, pair=pair), Eigen(r2, j, mult, root=1, pair=pair)]
     if not outer:
@@ -303,7 +304,7 @@ def _gap_bounds(scheme: Scheme, n: int, outer: list, others: list[Eigen]) -> lis
     return [b for _, b in outer_bounds(scheme, n)]
 
 
-def _exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | None:
+def exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | None:
     """``(c_1, .., c_k)``: the block of frequency ``j`` has ``det(x - M_j) = x^k + c_1 x^(k-1) + ..``, exactly.
 
     The ``c_i`` lie in the cyclotomic field :func:`_field` (exact: an element is 0 iff its
@@ -313,17 +314,17 @@ def _exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | 
     if j == 0:
         q = _frequency_zero_quotient(scheme, n)[1]
         return None if q is None else tuple(q)
-    out = tuple(_exact(e, n, j) for e in _symbolic_charpoly(scheme))
+    out = tuple(exact_entry(e, n, j) for e in _symbolic_charpoly(scheme))
     return None if any(c is None for c in out) else out
 
 
 def _exact_discriminant_zero(scheme: Scheme, n: int, j: int) -> bool:
     """Whether ``M_j`` (``2 x 2``) has a double root, exactly: ``c_1^2 - 4 c_2 = 0``."""
-    p = _exact_charpoly(scheme, n, j)
+    p = exact_charpoly(scheme, n, j)
     return p is not None and len(p) == 2 and p[0] * p[0] - 4 * p[1] == 0
 
 
-def _shared_root(p1: tuple, p2: tuple):
+def shared_root(p1: tuple, p2: tuple):
     """A root common to the monic polynomials with coefficients ``p1``, ``p2`` (degree 1 or 2, exact).
 
     ``'all'`` if they are the same polynomial, a ball around the one shared root, or ``None`` if
@@ -344,7 +345,7 @@ def _shared_root(p1: tuple, p2: tuple):
     return _ball(root) if value == 0 else None
 
 
-def _siblings(eigen: list[Eigen], e: Eigen) -> list[flint.acb]:
+def sibling_values(eigen: list[Eigen], e: Eigen) -> list[flint.acb]:
     return [x.value for x in eigen if x.frequency == e.frequency and x.root != e.root and not x.double]
 
 
@@ -355,7 +356,7 @@ def _exact_tie(scheme: Scheme, n: int, eigen: list[Eigen], dom: Eigen, e: Eigen)
     ``e``'s block at ``-x``) share a root; the shared root is ``dom`` when its ball misses the
     blocks' other roots.
     """
-    p, q = _exact_charpoly(scheme, n, dom.frequency), _exact_charpoly(scheme, n, e.frequency)
+    p, q = exact_charpoly(scheme, n, dom.frequency), exact_charpoly(scheme, n, e.frequency)
     if p is None or q is None:
         return None
     for kind, sign in (("equal", 1), ("opposite", -1)):
@@ -363,10 +364,10 @@ def _exact_tie(scheme: Scheme, n: int, eigen: list[Eigen], dom: Eigen, e: Eigen)
         value = e.value * sign
         if not value.overlaps(dom.value):
             continue
-        shared = _shared_root(p, qs)
+        shared = shared_root(p, qs)
         if shared is None:
             continue
-        others = _siblings(eigen, dom) + [x * sign for x in _siblings(eigen, e)]
+        others = sibling_values(eigen, dom) + [x * sign for x in sibling_values(eigen, e)]
         if shared == "all":
             if all(not x.overlaps(dom.value) for x in others):
                 return kind
@@ -395,10 +396,10 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
     n = check_scheme(scheme).fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
     if not one_ring:
         check_applicable(scheme)
-    eigen, failure = _frequency_zero(scheme, n)
+    eigen, failure = frequency_zero_eigenvalues(scheme, n)
     if failure:
         return SpectralResult(n, C1Verdict.NOT_C1, failure, one_simple=False)
-    more, outer = _other_frequencies(scheme, n, outer=not one_ring)
+    more, outer = other_frequency_eigenvalues(scheme, n, outer=not one_ring)
     eigen += more
     dom = max(eigen, key=lambda e: abs(e.value).mid())
     top = abs(dom.value)
@@ -481,7 +482,7 @@ def _symmetric_failure(eigen: list[Eigen], dom: Eigen, n: int) -> str:
 
 def _real_subdominant(scheme: Scheme, n: int, dom: Eigen, gap: float, second: float) -> SpectralResult:
     """The verdict once ``dom`` (frequency ``0 < j < n/2``) is strictly dominant: C1 iff it is certainly real and simple."""
-    if dom.value.imag.contains(0) and _real_at(scheme, n):
+    if dom.value.imag.contains(0) and real_at(scheme, n):
         B = frequency_block(scheme, n, dom.frequency)
         real = True
         if ring_layout(scheme.lattice).one_ring == 2:  # a real quadratic: real roots iff the discriminant is positive

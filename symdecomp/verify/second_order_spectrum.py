@@ -44,18 +44,18 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_valence
 from symdecomp.verify.c1_spectrum import (
-    _exact,
-    _exact_charpoly,
-    _frequency_zero,
-    _other_frequencies,
-    _shared_root,
-    _siblings,
     ball_text,
+    exact_charpoly,
+    exact_entry,
+    frequency_zero_eigenvalues,
+    other_frequency_eigenvalues,
+    shared_root,
+    sibling_values,
     spectral_conditions,
 )
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["SecondOrderEigenvalue", "CurvatureResult", "second_order_eigenstructure"]
+__all__ = ["SecondOrderEigenvalue", "CurvatureResult", "second_order_eigenstructure", "dominant_frequency", "dominant_part"]
 
 #: Working precisions (bits): the second is tried only when the first leaves the regime undecided.
 PRECISIONS = (128, 512)
@@ -155,7 +155,7 @@ def _exact_square_tie(square: tuple | None, others: list, lam_sq: flint.acb, q: 
         v = value * sign
         if not v.overlaps(lam_sq):
             continue
-        shared = _shared_root(square, qs)
+        shared = shared_root(square, qs)
         if shared is None:
             continue
         if shared == "all":
@@ -172,14 +172,14 @@ def _double_root_tie(scheme: Scheme, n: int, j: int, square: tuple | None) -> tu
     ``|r| = lambda_1^2`` iff ``r`` or ``-r`` is a root of ``square``; the root has a Jordan block iff
     ``M_j`` is not ``r I`` (exact entries in the cyclotomic field).
     """
-    p = _exact_charpoly(scheme, n, j)
+    p = exact_charpoly(scheme, n, j)
     if square is None or p is None:
         return False, False
     r = -p[0] / 2
     value = lambda x: sum((c * x ** (len(square) - 1 - i) for i, c in enumerate(square)), x ** len(square))  # noqa: E731
     if value(r) != 0 and value(-r) != 0:
         return False, False
-    M = [[_exact(x, n, j) for x in row] for row in one_ring_matrices(scheme)[0].tolist()]
+    M = [[exact_entry(x, n, j) for x in row] for row in one_ring_matrices(scheme)[0].tolist()]
     return True, any((M[a][b] - (r if a == b else 0)) != 0 for a in range(len(M)) for b in range(len(M)))
 
 
@@ -191,11 +191,11 @@ def _compare(modulus: flint.arb, lam_sq: flint.arb) -> int | None:
 
 def _eigenvalues(scheme: Scheme, n: int, dom) -> list[SecondOrderEigenvalue]:
     """Every eigenvalue after 1 and ``lambda_1`` (``dom``), compared with ``lambda_1^2`` (exactly on a tie)."""
-    inner = _frequency_zero(scheme, n)[0] + _other_frequencies(scheme, n, outer=False)[0]
+    inner = frequency_zero_eigenvalues(scheme, n)[0] + other_frequency_eigenvalues(scheme, n, outer=False)[0]
     lam_sq = dom.value * dom.value
-    exact_lam = _exact_charpoly(scheme, n, dom.frequency)
+    exact_lam = exact_charpoly(scheme, n, dom.frequency)
     square = None if exact_lam is None else _square_poly(exact_lam)
-    others = [s * s for s in _siblings(inner, dom)]
+    others = [s * s for s in sibling_values(inner, dom)]
     out = []
     for e in inner:
         if e.frequency == dom.frequency and e.root == dom.root:
@@ -206,8 +206,8 @@ def _eigenvalues(scheme: Scheme, n: int, dom) -> list[SecondOrderEigenvalue]:
             exact, defective = _double_root_tie(scheme, n, e.frequency, square)
             comparison = 0 if exact else None
         elif comparison is None and not e.pair:
-            q = _exact_charpoly(scheme, n, e.frequency)
-            exact = _exact_square_tie(square, others, lam_sq, q, e.value, _siblings(inner, e))
+            q = exact_charpoly(scheme, n, e.frequency)
+            exact = _exact_square_tie(square, others, lam_sq, q, e.value, sibling_values(inner, e))
             comparison = 0 if exact else None
         out.append(SecondOrderEigenvalue(e.value, e.frequency, e.multiplicity, frequency_kind(e.frequency, n),
                                          comparison, exact, defective, e.pair))
@@ -290,3 +290,31 @@ def second_order_eigenstructure(scheme: Scheme, n: int) -> CurvatureResult:
         if result.regime is not CurvatureRegime.UNDECIDED:
             break
     return result
+
+
+def dominant_frequency(elliptic: flint.arb | flint.acb | None, hyperbolic: flint.arb | flint.acb | None) -> int | None:
+    """Which second-order part dominates on fine rings: ``0`` if ``|mu_0| > |mu_2|``, ``2`` if ``|mu_2| > |mu_0|``.
+
+    ``elliptic``, ``hyperbolic``: balls around the largest eigenvalue of frequency 0 and of frequency 2 after ``lambda_1``;
+    on ring ``m`` the parts scale like ``mu_0^m`` and ``mu_2^m``. ``None`` when one is missing or the balls are not
+    separated in modulus (equal moduli are never separated). The one comparison behind :func:`dominant_part` (the
+    ``artifacts`` table and claims) and :attr:`symdecomp.verify.shape.ShapeResult.dominant` (the shape chart).
+    """
+    if elliptic is None or hyperbolic is None:
+        return None
+    a, b = abs(elliptic), abs(hyperbolic)
+    return 0 if a > b else 2 if b > a else None
+
+
+def dominant_part(curvature: CurvatureResult) -> int | None:
+    """The frequency, 0 or 2, of the larger of the two parts' largest eigenvalues (``None``: equal or not separated).
+
+    At ``n = 3`` frequency 2 is frequency 1, the tangent plane's (its block holds ``lambda_1``): ``None``. (The shape
+    chart, :func:`symdecomp.verify.shape.shape_chart`, does use the other root of that block as its hyperbolic height at
+    ``n = 3``, so its ``dominant`` may be 0 or 2 there; both compare with :func:`dominant_frequency`.)
+    """
+    tops = {j: max((abs(e.value) for e in curvature.eigenvalues if e.frequency == j), key=lambda x: x.mid(), default=None)
+            for j in (0, 2)}
+    if curvature.n == 3:  # at n = 3 frequency 2 is the tangent plane's
+        return None
+    return dominant_frequency(tops[0], tops[2])

@@ -86,9 +86,10 @@ from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_bits, check_depth, check_rational, check_valence
 from symdecomp.verify.bezier import SignCertificate
 from symdecomp.verify.c1 import bezier_nets, characteristic_nets, place_text
-from symdecomp.verify.c1_spectrum import _frequency_zero, _quadratic_roots, _real_at, ball_text, spectral_conditions
+from symdecomp.verify.c1_spectrum import ball_text, frequency_zero_eigenvalues, quadratic_roots, real_at, spectral_conditions
 from symdecomp.verify.curvature import certify_nets, combine, curvature_gram, jacobian_nets, patch_algebra
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.second_order_spectrum import dominant_frequency
 
 __all__ = ["KINDS", "SecondOrderEigen", "HeightFields", "height_fields", "ShapeResult", "classify_shape", "ShapeChart", "shape_chart"]
 
@@ -146,7 +147,7 @@ def _above_outer(scheme: Scheme, value: flint.arb) -> bool | None:
 
 def _elliptic_eigenvalue(scheme: Scheme, n: int) -> SecondOrderEigen:
     """The largest non-unit eigenvalue of the frequency-0 1-ring block (Eq. 43 on quads), certified real and simple."""
-    eigen, failure = _frequency_zero(scheme, n)
+    eigen, failure = frequency_zero_eigenvalues(scheme, n)
     if failure:
         raise _Undecided(failure)
     eigen = sorted(eigen, key=lambda e: -abs(e.value).mid())
@@ -167,7 +168,7 @@ def _hyperbolic_eigenvalue(scheme: Scheme, n: int, lam: flint.acb) -> SecondOrde
                                  "cos/sin pair of one complex eigenvector; the hyperbolic input needs n = 3 or n >= 5")
     k1 = ring_layout(scheme.lattice).one_ring
     B = frequency_blocks(scheme, n)(2 % n, k1)
-    roots = [B[0, 0]] if k1 == 1 else list(_quadratic_roots(B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]))
+    roots = [B[0, 0]] if k1 == 1 else list(quadratic_roots(B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]))
     if n == 3:  # frequency 2 is frequency -1: its block is conj(M_1), which holds lambda itself
         roots = [r for r in roots if not r.overlaps(lam)]
         if not roots:
@@ -177,7 +178,7 @@ def _hyperbolic_eigenvalue(scheme: Scheme, n: int, lam: flint.acb) -> SecondOrde
     top = roots[0]
     if len(roots) > 1 and not abs(roots[1]) < abs(top):
         raise _Undecided(f"the frequency-2 eigenvalues {ball_text(top)} and {ball_text(roots[1])} are not separated at this precision")
-    real = top.imag.contains(0) and _real_at(scheme, n)
+    real = top.imag.contains(0) and real_at(scheme, n)
     if real and k1 == 2:
         t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
         real = bool((t * t - 4 * d).real > 0)
@@ -383,11 +384,10 @@ def _verdict(fields: HeightFields, gram: list, degree, a, b, t, max_depth: int, 
 
 
 def _dominant(fields: HeightFields) -> int | None:
-    """The frequency (0 or 2) of the larger second-order eigenvalue, when both are used and separated."""
+    """The frequency (0 or 2) of the larger second-order eigenvalue, when both are used and separated
+    (:func:`~symdecomp.verify.second_order_spectrum.dominant_frequency`, the one comparison)."""
     e, h = fields.elliptic, fields.hyperbolic
-    if e is None or h is None:
-        return None
-    return 0 if abs(e.value) > abs(h.value) else 2 if abs(e.value) < abs(h.value) else None
+    return dominant_frequency(None if e is None else e.value, None if h is None else h.value)
 
 
 def _classify(scheme: Scheme, n: int, a: Fraction, b: Fraction, t: Fraction, max_depth: int, prec: int) -> ShapeResult:

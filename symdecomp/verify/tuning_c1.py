@@ -17,7 +17,7 @@ weights make the scheme C1 at ``n`` (the regions are then empty).
 >>> free = scheme_from_text('parameters = ["alpha", "beta"]\\n' + text)
 >>> region = certified_tuning_region(free, 4)
 >>> region.witness_verdict, str(region.classify((sp.Rational(3, 32), sp.Rational(1, 64))))
-('c1', 'mu = lambda_1^2')
+('c1', 'bounded')
 """
 
 from __future__ import annotations

@@ -6,7 +6,8 @@ import pytest
 import sympy as sp
 
 from symdecomp.algebra.algebraic_sign import exact_sign
-from symdecomp.analysis.tuning_region import Regime, interval_region, placed_points, tuning_region
+from symdecomp.analysis.curvature_regime import CurvatureRegime as Regime
+from symdecomp.analysis.tuning_region import interval_region, placed_points, tuning_region
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import scheme_from_text, scheme_to_text
 from symdecomp.schemes.loop import loop
@@ -61,7 +62,7 @@ def test_n4_standard_weights_on_the_bounded_set():
     assert region.classify((cc[0], cc[1] - sp.Rational(1, 64))) is Regime.UNBOUNDED
     assert numeric_mu_vs_square(scheme, region, (cc[0], cc[1] - sp.Rational(1, 64))) > 1e-6
     assert region.classify((cc[0], cc[1] + sp.Rational(1, 64))) is Regime.BOUNDED  # nothing is below lambda_1^2 at n = 4
-    assert region.conditions()[Regime.FLAT] == []
+    assert region.conditions()[Regime.ZERO] == []
 
 
 def test_moving_off_the_curve_changes_regime_as_predicted():
@@ -76,7 +77,7 @@ def test_moving_off_the_curve_changes_regime_as_predicted():
     eps = sp.Rational(1, 1000)
     up = (point[0] + slope * eps, point[1])
     down = (point[0] - slope * eps, point[1])
-    assert region.classify(up) is Regime.FLAT  # Q(lambda_1^2) > 0 with the other conditions kept: both roots below
+    assert region.classify(up) is Regime.ZERO  # Q(lambda_1^2) > 0 with the other conditions kept: both roots below
     assert region.classify(down) is Regime.UNBOUNDED
     assert numeric_mu_vs_square(scheme, region, up) < -1e-6
     assert numeric_mu_vs_square(scheme, region, down) > 1e-6
@@ -99,7 +100,7 @@ def test_paper_tuning_has_eigenvalue_lambda1_squared(n, regime):
 
 
 @pytest.mark.parametrize("n, expected", [
-    (3, {"Catmull-Clark": Regime.FLAT, "paper 5.2 condition 2": Regime.UNBOUNDED}),
+    (3, {"Catmull-Clark": Regime.ZERO, "paper 5.2 condition 2": Regime.UNBOUNDED}),
     (4, {"Catmull-Clark": Regime.BOUNDED, "paper 5.2 condition 2": Regime.BOUNDED}),
     pytest.param(5, {"Catmull-Clark": Regime.UNBOUNDED, "paper 5.2 condition 2": Regime.UNBOUNDED}, marks=pytest.mark.slow),
 ])
@@ -111,7 +112,7 @@ def test_published_weights_placed(n, expected):
         assert region.classify(points[name]) is regime, name
         if regime is not Regime.BOUNDED:
             gap = numeric_mu_vs_square(scheme, region, points[name])
-            assert (gap < 0) == (regime is Regime.FLAT)
+            assert (gap < 0) == (regime is Regime.ZERO)
 
 
 @pytest.mark.parametrize("n", [3, 4])
@@ -139,8 +140,8 @@ def test_loop_intervals_exact_and_loop_warren_placed():
     scheme = loop_free()
     region = tuning_region(scheme, 5)
     pieces = interval_region(region)
-    assert [p.regime for p in pieces] == [Regime.NOT_C1, Regime.UNBOUNDED, Regime.BOUNDED, Regime.FLAT, Regime.BOUNDED,
-                                          Regime.UNBOUNDED, Regime.NOT_C1]
+    assert [p.regime for p in pieces] == [Regime.NOT_APPLICABLE, Regime.UNBOUNDED, Regime.BOUNDED, Regime.ZERO, Regime.BOUNDED,
+                                          Regime.UNBOUNDED, Regime.NOT_APPLICABLE]
     forms = [f.expr for f in region.c1_forms + region.square_forms]
     for piece in pieces:
         for end in (piece.lo, piece.hi):
@@ -152,7 +153,7 @@ def test_loop_intervals_exact_and_loop_warren_placed():
     assert numeric_mu_vs_square(scheme, region, points["Warren"]) > 1e-6
     at7 = tuning_region(scheme, 7)
     assert at7.fixed_vs_square == 1  # frequency 2 beats lambda_1^2: no beta bounds the curvature
-    assert at7.conditions()[Regime.BOUNDED] == [] and at7.conditions()[Regime.FLAT] == []
+    assert at7.conditions()[Regime.BOUNDED] == [] and at7.conditions()[Regime.ZERO] == []
 
 
 def test_refused_schemes():

@@ -22,9 +22,9 @@ def test_region_json_places_catmull_clark_on_the_bounded_set(free_file, capsys):
     data = json.loads(capsys.readouterr().out)
     assert data["c1_test"]["verdict"] == "c1"
     assert data["fixed_vs_lambda1_squared"] == "="
-    assert data["regions"]["mu < lambda_1^2"] == []
+    assert data["regions"]["zero"] == []
     cc = next(p for p in data["points"] if p["name"] == "Catmull-Clark")
-    assert cc["values"] == ["3/32", "1/64"] and cc["regime"] == "mu = lambda_1^2" and cc["on"] == ["Q(lambda_1^2)"]
+    assert cc["values"] == ["3/32", "1/64"] and cc["regime"] == "bounded" and cc["on"] == ["Q(lambda_1^2)"]
 
 
 def test_region_intervals_one_parameter(tmp_path, capsys):
@@ -33,9 +33,9 @@ def test_region_intervals_one_parameter(tmp_path, capsys):
                     'a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }\n[vertex]\nbeta = "beta"\n')
     assert main(["tune", "5", "--region", "--scheme", str(path), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    bounded = [i for i in data["intervals"] if i["regime"] == "mu = lambda_1^2"]
+    bounded = [i for i in data["intervals"] if i["regime"] == "bounded"]
     assert [i["interval"] for i in bounded] == ["{13/128 - sqrt(5)/128}", "{sqrt(5)/128 + 19/128}"]
-    assert {p["name"]: p["regime"] for p in data["points"]} == {"Loop": "mu = lambda_1^2", "Warren": "mu > lambda_1^2"}
+    assert {p["name"]: p["regime"] for p in data["points"]} == {"Loop": "bounded", "Warren": "unbounded"}
 
 
 @pytest.mark.slow
@@ -43,7 +43,7 @@ def test_region_text_and_plot_deterministic(free_file, tmp_path, capsys):
     first, second = tmp_path / "a.png", tmp_path / "b.png"
     assert main(["tune", "3", "--region", "--scheme", str(free_file), "--plot", str(first)]) == 0
     out = capsys.readouterr().out
-    assert "C1 and mu < lambda_1^2:" in out and "Catmull-Clark: (1/6, 1/36)" in out and "mu < lambda_1^2" in out
+    assert "C1 and curvature tends to zero, a flat spot (|mu| < lambda_1^2):" in out and "Catmull-Clark: (1/6, 1/36)" in out and ": zero" in out
     assert main(["tune", "3", "--region", "--scheme", str(free_file), "--plot", str(second)]) == 0
     assert first.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert first.read_bytes() == second.read_bytes()

@@ -5,7 +5,8 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.tuning_region import Regime, tuning_region
+from symdecomp.analysis.curvature_regime import CurvatureRegime as Regime
+from symdecomp.analysis.tuning_region import tuning_region
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.symbols import alpha, beta
 
@@ -30,7 +31,7 @@ def test_coloured_cells_agree_with_exact_classification():
             seen.add(regime)
             for x, y in ((xs[j], ys[i]), (xs[j + 1], ys[i + 1]), ((xs[j] + xs[j + 1]) / 2, (ys[i] + ys[i + 1]) / 2)):
                 assert region.classify((sp.Rational(x), sp.Rational(y))) is regime, (i, j)
-    assert seen == {Regime.NOT_C1, Regime.UNBOUNDED, Regime.FLAT}  # BOUNDED is a curve at n = 3: no whole cell
+    assert seen == {Regime.NOT_APPLICABLE, Regime.UNBOUNDED, Regime.ZERO}  # BOUNDED is a curve at n = 3: no whole cell
     # a boundary cell really meets a boundary: its corners are not all of one regime, or a form vanishes in it
     boundary = [(i, j) for i in range(22) for j in range(22) if codes[i, j] == 4]
     i, j = boundary[len(boundary) // 2]

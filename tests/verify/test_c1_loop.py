@@ -18,7 +18,7 @@ from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark
 from symdecomp.symbols import n as N
 from symdecomp.verify.bezier import bisect_triangle, certify_sign_triangles, triangle_jacobian_net
 from symdecomp.verify.c1 import c1_test, characteristic_nets
-from symdecomp.verify.c1_spectrum import _exact_charpoly, spectral_conditions
+from symdecomp.verify.c1_spectrum import exact_charpoly, spectral_conditions
 from symdecomp.verify.result import C1Verdict
 from tests.verify.test_c1 import standard_at_regular
 
@@ -155,7 +155,7 @@ def test_an_exact_opposite_eigenvalue_is_not_strictly_dominant():
 def test_the_conjugate_frequency_copy_is_not_a_tie():
     """lambda at frequency j and at n - j is one eigenvalue of multiplicity 2 (exactly the same block), so C1."""
     for n in (5, 8):
-        assert all(a == b for a, b in zip(_exact_charpoly(loop(), n, 1), _exact_charpoly(loop(), n, n - 1)))
+        assert all(a == b for a, b in zip(exact_charpoly(loop(), n, 1), exact_charpoly(loop(), n, n - 1)))
         r = c1_test(loop(), n)
         assert r.verdict == "c1" and r.spectral.subdominant.multiplicity == 2
 

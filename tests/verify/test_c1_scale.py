@@ -103,7 +103,7 @@ def test_the_exact_outer_route_agrees_with_the_norm_bounds(scheme, valences, mon
                     "jacobian_lower_bound"):
             assert a[key] == b[key], (n, key, a[key], b[key])
         assert a["verdict"] == "c1" and new[n].spectral.second == old.spectral.second
-        bounds = c1_spectrum._other_frequencies(scheme, n)[1]
+        bounds = c1_spectrum.other_frequency_eigenvalues(scheme, n)[1]
         assert [j for j, _ in bounds] == list(range(n // 2 + 1))
         assert all(1 / 8 <= float(b.upper()) <= float(outer_row_sum(scheme.lattice)) + 1e-15 for _, b in bounds)
 

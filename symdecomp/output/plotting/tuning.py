@@ -27,15 +27,17 @@ import numpy as np
 import sympy as sp
 
 from symdecomp.algebra.algebraic_sign import real_ball
-from symdecomp.analysis.tuning_region import Regime, TuningRegion, interval_region
+from symdecomp.analysis.curvature_regime import CurvatureRegime
+from symdecomp.analysis.tuning_region import TuningRegion, interval_region
 from symdecomp.output.plotting._mpl import new_figure
 
 __all__ = ["COLOURS", "cell_regimes", "tuning_region_figure", "figure_bytes"]
 
 #: The colour of each regime, and of the cells that meet a boundary (key ``None``).
-COLOURS = {Regime.NOT_C1: "#d9d9d9", Regime.FLAT: "#4575b4", Regime.BOUNDED: "#1a9850", Regime.UNBOUNDED: "#d73027",
+COLOURS = {CurvatureRegime.NOT_APPLICABLE: "#d9d9d9", CurvatureRegime.ZERO: "#4575b4", CurvatureRegime.BOUNDED: "#1a9850",
+           CurvatureRegime.UNBOUNDED: "#d73027",
            None: "#000000"}
-_CODES = [Regime.NOT_C1, Regime.FLAT, Regime.BOUNDED, Regime.UNBOUNDED, None]
+_CODES = [CurvatureRegime.NOT_APPLICABLE, CurvatureRegime.ZERO, CurvatureRegime.BOUNDED, CurvatureRegime.UNBOUNDED, None]
 
 
 def _cell_signs(form: sp.Expr, params, xs, ys) -> np.ndarray:
@@ -54,7 +56,7 @@ def _cell_signs(form: sp.Expr, params, xs, ys) -> np.ndarray:
 
 
 def cell_regimes(region: TuningRegion, xs: list[Fraction], ys: list[Fraction]) -> np.ndarray:
-    """Codes (indices into ``[NOT_C1, FLAT, BOUNDED, UNBOUNDED, boundary]``) of the cells between exact grid lines."""
+    """Codes (indices into ``[NOT_APPLICABLE (not C1), ZERO, BOUNDED, UNBOUNDED, boundary]``) of the cells between exact grid lines."""
     params = region.parameters
     c1 = [_cell_signs(f.expr, params, xs, ys) for f in region.c1_forms]
     sq = [_cell_signs(f.expr, params, xs, ys) for f in region.square_forms]

@@ -177,7 +177,10 @@ def tables() -> dict:
 
 
 def copy_notebooks(srcdir: Path) -> list[Path]:
-    """Copy ``notebooks/*.ipynb`` into ``srcdir/notebooks`` (only those that changed, so that a rebuild is quick)."""
+    """Copy ``notebooks/*.ipynb`` into ``srcdir/notebooks`` (only those that changed, so that a rebuild is quick).
+
+    The data files the notebooks read (``notebooks/data/``) go along, so that they run from the copy.
+    """
     target = srcdir / "notebooks"
     target.mkdir(exist_ok=True)
     copied = []
@@ -189,6 +192,8 @@ def copy_notebooks(srcdir: Path) -> list[Path]:
     for stale in target.glob("*.ipynb"):
         if not (NOTEBOOKS / stale.name).exists():
             stale.unlink()
+    if (NOTEBOOKS / "data").is_dir():
+        shutil.copytree(NOTEBOOKS / "data", target / "data", dirs_exist_ok=True)
     return copied
 
 

@@ -290,7 +290,7 @@ def c1_section(inp: ReportInput) -> Section:
 #: The artifact table's headers in the report (the command's headers, as mathematics where they are symbols).
 ARTIFACT_HEADERS = {"n": "$n$", "lambda_1": "$\\lambda_1$", "lambda_1^2": "$\\lambda_1^2$", "mu": "$\\mu$",
                     "negative weights": "negative weights"}
-ARTIFACT_WIDTHS = (0.04, 0.08, 0.08, 0.08, 0.06, 0.05, 0.08, 0.12, 0.07, 0.12, 0.07, 0.15)
+ARTIFACT_WIDTHS = (0.04, 0.085, 0.085, 0.085, 0.05, 0.045, 0.11, 0.11, 0.075, 0.09, 0.085, 0.14)
 
 _ARTIFACT_LEGEND = (
     "Certified in interval arithmetic, as symdecomp artifacts prints it (6 significant digits). $\\mu$: the largest "

@@ -232,3 +232,13 @@ def test_shape_section_not_applicable_says_why(capsys):
     assert text.parts[0] == "Not applicable: " and str(text.parts[1]) in capsys.readouterr().err
     assert "Catmull-Clark" in str(text.parts[1])
     assert "not applicable" in report_html(report).lower()
+
+
+def test_shape_section_with_free_parameters_says_why():
+    from symdecomp.schemes.files import load_scheme
+
+    scheme = load_scheme(str(Path(__file__).resolve().parents[1] / "corpus" / "free-vertex.toml"))
+    (text,) = build_report(scheme, [5], sections=(shape_section,)).sections[0].blocks
+    with pytest.raises(sd.NotApplicableError) as exc:
+        sd.artifact_indicators(scheme, 5)
+    assert text.parts == ("Not applicable: ", str(exc.value)) and "free parameters alpha, beta" in str(exc.value)

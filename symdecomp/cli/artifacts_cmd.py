@@ -10,12 +10,11 @@ from __future__ import annotations
 import sys
 
 from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, print_json, progress, valence_range
-from symdecomp.output.artifact_table import COLUMNS, Column, table
 from symdecomp.parallel import ordered_map
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.artifacts import artifact_indicators
 
-__all__ = ["register", "run", "Column", "COLUMNS"]
+__all__ = ["register", "run"]
 
 
 _LEGEND = (
@@ -58,6 +57,8 @@ def _one(n: int, scheme: Scheme) -> dict:
 
 
 def run(args) -> int:
+    from symdecomp.output.artifact_table import table
+
     valences = args.valences
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme}, jobs=args.jobs, executor=args.executor, warm_up=True)
     results = list(progress(rows, len(valences), "artifacts", enabled=sys.stderr.isatty()))

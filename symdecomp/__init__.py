@@ -84,7 +84,7 @@ nothing else.
                    (``applicability``), computed evidence (``evidence``), the paper's notation
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
-                   ``texlayout``), Stam's data file (``evaldata``), figures (``plotting``):
+                   ``texlayout``), the artifact table's columns (``artifact_table``), Stam's data file (``evaldata``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
                    vertices (``plotting.meshes``), Reif's test

@@ -1,66 +1,20 @@
 """``symdecomp artifacts --n 3:64``: the curvature regime and artifact indicators at an extraordinary vertex, per valence.
 
-The table is a list of columns (:data:`COLUMNS`), each a header and a function of one valence's JSON
-object (:meth:`~symdecomp.verify.artifacts.ArtifactIndicators.as_json`): a new indicator is one more entry.
+The table is a list of columns (:data:`symdecomp.output.artifact_table.COLUMNS`, shared with the report's section
+"Curvature and shape"), each a header and a function of one valence's JSON object
+(:meth:`~symdecomp.verify.artifacts.ArtifactIndicators.as_json`): a new indicator is one more entry.
 """
 
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable
-from typing import NamedTuple
 
 from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, print_json, progress, valence_range
 from symdecomp.parallel import ordered_map
 from symdecomp.schemes.scheme import Scheme
 
-__all__ = ["register", "run", "Column", "COLUMNS"]
+__all__ = ["register", "run"]
 
-
-class Column(NamedTuple):
-    """One column of the table: its header and its cell, a function of one valence's JSON object."""
-
-    header: str
-    cell: Callable[[dict], str]
-
-
-def _number(text: str | None) -> str:
-    """A decimal from the JSON (a ball's midpoint, 10 digits) shown to 6 significant digits."""
-    return "-" if text is None else f"{float(text):.6g}"
-
-
-def _mu(row: dict) -> dict | None:
-    return row["curvature"]["mu"][0] if row["curvature"]["mu"] else None
-
-
-def _mu_frequency(row: dict) -> str:
-    freqs = [("outer" if e["frequency"] is None else str(e["frequency"])) for e in row["curvature"]["mu"]]
-    return ",".join(freqs) or "-"
-
-
-def _mu_value(row: dict) -> str:
-    mu = _mu(row)
-    if mu is None:
-        return "-"
-    tied = len(row["curvature"]["mu"]) > 1 and not all(e["exact"] for e in row["curvature"]["mu"])
-    return _number(mu["value"]) + ("?" if tied else "")
-
-
-#: The table's columns, in order.
-COLUMNS: list[Column] = [
-    Column("n", lambda r: str(r["n"])),
-    Column("lambda_1", lambda r: _number(r["curvature"]["lambda1"])),
-    Column("lambda_1^2", lambda r: _number(r["curvature"]["lambda1_squared"])),
-    Column("mu", _mu_value),
-    Column("freq", _mu_frequency),
-    Column("mult", lambda r: str(r["curvature"]["mu_multiplicity"] or "-")),
-    Column("regime", lambda r: r["curvature"]["regime"]),
-    Column("cause", lambda r: r["curvature"]["cause"] or "-"),
-    Column("density", lambda r: r["density"]),
-    Column("negative weights", lambda r: r["negative_weights"]),
-    Column("spacing", lambda r: _number(r["ring_spacing_ratio"])),
-    Column("shape", lambda r: r["shape"]["text"]),
-]
 
 _LEGEND = (
     "regime: curvature at the vertex bounded (|mu| = lambda_1^2, exact), zero (flat spot, |mu| < lambda_1^2) or unbounded "
@@ -103,14 +57,9 @@ def _one(n: int, scheme: Scheme) -> dict:
     return artifact_indicators(scheme, n).as_json()
 
 
-def table(rows: list[dict], columns: list[Column] = COLUMNS) -> str:
-    """The rows as a text table, one line per valence, columns padded to their widest cell."""
-    cells = [[c.header for c in columns]] + [[c.cell(r) for c in columns] for r in rows]
-    widths = [max(len(line[i]) for line in cells) for i in range(len(columns))]
-    return "\n".join("  ".join(x.ljust(w) for x, w in zip(line, widths)).rstrip() for line in cells)
-
-
 def run(args) -> int:
+    from symdecomp.output.artifact_table import table
+
     valences = args.valences
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme}, jobs=args.jobs, executor=args.executor, warm_up=True)
     results = list(progress(rows, len(valences), "artifacts", enabled=sys.stderr.isatty()))

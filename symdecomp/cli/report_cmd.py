@@ -1,9 +1,10 @@
 """``symdecomp report SCHEME --n A:B --out report.pdf``: everything about one scheme in one document.
 
 The document (:mod:`symdecomp.output.report`) holds the paper's claims checked for the scheme, its
-spectrum with the closed forms, the limit and tangent masks, the C1 table and the figures (the
-characteristic map, the eigen-polygons), computed by the same functions as ``claims``, ``spectrum``,
-``masks`` and ``c1``. The suffix of ``--out`` chooses the format: ``.pdf`` (typeset by pdflatex, which
+spectrum with the closed forms, the limit and tangent masks, the C1 table, the curvature regime and
+artifact indicators with an elliptic height field, and the figures (the characteristic map, the
+eigen-polygons), computed by the same functions as ``claims``, ``spectrum``, ``masks``, ``c1`` and
+``artifacts``. The suffix of ``--out`` chooses the format: ``.pdf`` (typeset by pdflatex, which
 must be installed: exit status 3 otherwise, as for any missing optional component), ``.html`` (one
 self-contained file, MathML and inline SVG) or ``.tex`` (the LaTeX source; its figures are written
 next to it as ``<stem>-<figure>.pdf``, the stem's characters other than letters, digits, ``.``, ``_``
@@ -32,8 +33,10 @@ def register(sub) -> None:
         help="one document (PDF, HTML or LaTeX) with everything about a scheme",
         description="Write one deterministic document about SCHEME at the valences --n A:B: the paper's claims checked "
         "for the scheme (quad schemes; as 'claims --scheme'), the spectrum with its closed forms ('spectrum'), the limit "
-        "and tangent masks ('masks'), Reif's C1 test ('c1') and the figures of the characteristic map and of the "
-        "eigen-polygons. The suffix of --out chooses the format: .pdf (needs pdflatex; exit status 3 without it), .html "
+        "and tangent masks ('masks'), Reif's C1 test ('c1'), the curvature regime and artifact indicators with the "
+        "elliptic height field ('artifacts'; 'Not applicable' with the reason for schemes with free parameters or regular "
+        "rules other than Catmull-Clark's and Loop's) and the figures of the characteristic map and of the eigen-polygons. "
+        "The suffix of --out chooses the format: .pdf (needs pdflatex; exit status 3 without it), .html "
         "(one self-contained file: formulas as MathML, figures as inline SVG) or .tex (LaTeX source; figures written "
         "next to it as STEM-NAME.pdf). Running it twice writes the same bytes. Catmull-Clark at 3:8 takes about half a "
         "minute, most of it the claims' checks.",

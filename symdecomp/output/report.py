@@ -8,8 +8,10 @@ same library calls as the commands that print the same things: the claims (``cla
 (``masks``), the C1 table (``c1``, :func:`~symdecomp.verify.c1.c1_test`) and the figures of
 :mod:`symdecomp.output.plotting` (the characteristic map; the eigen-polygons: the rows of the
 Fourier matrix, into which every ring decomposes, and, where the paper's closed forms apply, the
-1-ring spanned by the subdominant eigenvector, Fig. 6). A new section (the artifact table, boundary
-results) is one more function in :data:`SECTIONS`.
+1-ring spanned by the subdominant eigenvector, Fig. 6), the curvature regime and artifact indicators
+(``artifacts``, :func:`~symdecomp.verify.artifacts.artifact_indicators`, with the columns of
+:mod:`symdecomp.output.artifact_table`) and the elliptic height field (:mod:`symdecomp.output.plotting.shape`).
+A new section (boundary results) is one more function in :data:`SECTIONS`.
 
 A section is data, not markup: paragraphs, formulas, tables and figures (:class:`Paragraph`,
 :class:`Formula`, :class:`Table`, :class:`Figure`), whose parts are one of
@@ -41,20 +43,22 @@ from symdecomp.claims import Status, Verbatim, all_claims, check_claim, scope_su
 from symdecomp.claims.applicability import closed_form_obstacle
 from symdecomp.claims.guards import DEFAULT_BUDGET
 from symdecomp.errors import InvalidInputError, NotApplicableError, SymdecompError
+from symdecomp.output.artifact_table import COLUMNS as ARTIFACT_COLUMNS
 from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import MAX_REPORT_VALENCE as MAX_VALENCES
 from symdecomp.validate import check_valence
+from symdecomp.verify.artifacts import artifact_indicators
 from symdecomp.verify.c1 import c1_test
 from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["MAX_VALENCES", "FIGURES", "DIGITS", "Paragraph", "Formula", "Table", "Figure", "Section", "Report", "ReportInput",
-           "SECTIONS", "build_report"]
+           "SECTIONS", "build_report", "shape_section"]
 
 
 #: The names of the figures a report may hold (a ``.tex`` report writes them next to itself).
-FIGURES = ("characteristic-map", "eigen-polygons", "subdominant-ring")
+FIGURES = ("characteristic-map", "eigen-polygons", "subdominant-ring", "height-field")
 
 #: Significant digits of the numbers in a report's tables.
 DIGITS = 10
@@ -281,6 +285,59 @@ def c1_section(inp: ReportInput) -> Section:
     ))
 
 
+#: The artifact table's headers in the report (the command's headers, as mathematics where they are symbols).
+ARTIFACT_HEADERS = {"n": "$n$", "lambda_1": "$\\lambda_1$", "lambda_1^2": "$\\lambda_1^2$", "mu": "$\\mu$",
+                    "negative weights": "negative weights"}
+ARTIFACT_WIDTHS = (0.04, 0.085, 0.085, 0.085, 0.05, 0.045, 0.11, 0.11, 0.075, 0.09, 0.085, 0.14)
+
+_ARTIFACT_LEGEND = (
+    "Certified in interval arithmetic, as symdecomp artifacts prints it (6 significant digits). $\\mu$: the largest "
+    "eigenvalue of the 2-ring matrix after 1 and $\\lambda_1$, with its frequency (0 elliptic, 1 tangent, 2 hyperbolic, "
+    "outer: the regular rules) and multiplicity; a ? after it: eigenvalues of that modulus not separated. Regime: the "
+    "curvature at the vertex is bounded ($|\\mu| = \\lambda_1^2$, shown exactly), zero (a flat spot, "
+    "$|\\mu| < \\lambda_1^2$) or unbounded ($|\\mu| > \\lambda_1^2$). Density: $\\lambda_1$ against the regular "
+    "$1/2$ (dense below, sparse above). Negative weights: in the limit and tangent masks. Spacing: the characteristic "
+    "map's second ring spacing over the first (1 on the regular mesh). Shape: the certified class of the central surface "
+    "for elliptic input, and whether the hyperbolic part dominates on fine rings.")
+
+
+def _artifact_row(scheme: Scheme, n: int) -> tuple:
+    """One valence's cells, the command's (``artifacts --json`` through the same columns); a valence the analysis
+    does not reach gets its reason."""
+    try:
+        row = artifact_indicators(scheme, n).as_json()
+    except NotApplicableError as exc:
+        return (str(n), "not applicable: ", Verbatim(str(exc)), *[""] * (len(ARTIFACT_COLUMNS) - 3))
+    return tuple(c.cell(row) if c.header == "n" else Verbatim(c.cell(row)) for c in ARTIFACT_COLUMNS)
+
+
+def _height_field_blocks(inp: ReportInput) -> list:
+    from symdecomp.output.plotting.shape import height_field_figure
+
+    shown = tuple(sorted({inp.valences[0], inp.valences[-1]}))
+    try:
+        fig = height_field_figure(inp.scheme, shown, "elliptic", samples=7)
+    except SymdecompError as exc:
+        return [_para("The height field is not drawn: ", Verbatim(str(exc)))]
+    return [Figure("height-field", ("The elliptic second-order height field of ", _name(inp), " (frequency 0, like "
+                                    f"$x^2 + y^2$) over the characteristic ring at $n = {', '.join(map(str, shown))}$: "
+                                    "colour the height, black the zero line of the Gaussian curvature; each panel's "
+                                    "title gives the certified shape class."),
+                   _titled(fig, "Elliptic height field"))]
+
+
+def shape_section(inp: ReportInput) -> Section:
+    """The curvature regime and the artifact indicators at each valence (``symdecomp artifacts --n A:B``), one height field."""
+    title = "Curvature and shape"
+    try:
+        artifact_indicators(inp.scheme, inp.valences[0])
+    except NotApplicableError as exc:  # free parameters, or regular rules not Catmull-Clark's or Loop's: say why
+        return Section(title, (_para("Not applicable: ", Verbatim(str(exc))),))
+    rows = tuple(_artifact_row(inp.scheme, n) for n in inp.valences)
+    header = tuple(ARTIFACT_HEADERS.get(c.header, c.header) for c in ARTIFACT_COLUMNS)
+    return Section(title, (_para(_ARTIFACT_LEGEND), Table(header, rows, ARTIFACT_WIDTHS), *_height_field_blocks(inp)))
+
+
 def _shown(valences: tuple[int, ...]) -> tuple[int, ...]:
     """At most three valences for a figure: the first, the middle one and the last."""
     return tuple(sorted({valences[0], valences[len(valences) // 2], valences[-1]}))
@@ -327,7 +384,7 @@ def figures_section(inp: ReportInput) -> Section:
 
 #: The sections of a report, in order: each takes a :class:`ReportInput` and returns a :class:`Section`.
 SECTIONS: tuple[Callable[[ReportInput], Section], ...] = (
-    scheme_section, claims_section, spectrum_section, masks_section, c1_section, figures_section,
+    scheme_section, claims_section, spectrum_section, masks_section, c1_section, shape_section, figures_section,
 )
 
 

@@ -53,11 +53,18 @@ def _parts(parts, displays: bool = False) -> str:
     return "".join(_part(p, displays) for p in parts)
 
 
+#: Tables of more columns than this are set smaller, with narrower gaps between the columns (the artifact table).
+WIDE_TABLE = 8
+
+
 def _table(table: Table) -> str:
-    spec = "".join(">{\\raggedright\\arraybackslash}p{%.2f\\linewidth}" % (w - 0.02) for w in table.widths)
+    wide = len(table.widths) > WIDE_TABLE
+    gap = 0.01 if wide else 0.02  # the column's share of the line less its two \tabcolsep
+    spec = "".join(">{\\raggedright\\arraybackslash}p{%s\\linewidth}" % f"{w - gap:.{3 if wide else 2}f}" for w in table.widths)
     head = " & ".join(_part(h) for h in table.header)
     rows = "\n".join(" & ".join(_part(cell) for cell in row) + " \\\\" for row in table.rows)
-    return ("{\\small\\begin{longtable}{@{}%s@{}}\n\\toprule\n%s \\\\\n\\midrule\n\\endhead\n\\bottomrule\n\\endfoot\n%s\n"
+    size = "\\footnotesize\\setlength{\\tabcolsep}{2pt}" if wide else "\\small"
+    return ("{" + size + "\\begin{longtable}{@{}%s@{}}\n\\toprule\n%s \\\\\n\\midrule\n\\endhead\n\\bottomrule\n\\endfoot\n%s\n"
             "\\end{longtable}}\n" % (spec, head, rows))
 
 

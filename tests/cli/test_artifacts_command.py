@@ -5,7 +5,7 @@ import subprocess
 import sys
 
 from symdecomp.cli import main
-from symdecomp.cli.artifacts_cmd import COLUMNS, Column, table
+from symdecomp.output.artifact_table import COLUMNS, Column, table
 
 
 def test_the_table_has_a_row_per_valence_with_the_regime(capsys):

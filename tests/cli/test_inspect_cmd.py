@@ -152,10 +152,11 @@ def test_a_scheme_without_a_tangent_plane_or_a_limit_is_said_so(capsys):
     assert main(["inspect", str(MODEL), "--scheme", str(corpus / "double-one.toml")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "double-one at valence 3: the eigenvalue 1 is not simple" in err
-    # a subdominant eigenvalue at frequency 2 (valence 5): rows printed, exit 1, one line per valence on stderr
+    # a subdominant eigenvalue at frequency 2 (valence 5): rows printed (artifact indicators n/a, the reason once), exit 1,
+    # one line per valence on stderr
     assert main(["inspect", str(MODEL), "--scheme", str(corpus / "negative-other-root.toml")]) == 1
     out, err = capsys.readouterr()
-    assert len(out.splitlines()) == 2 + 13
+    assert len(out.splitlines()) == 2 + 13 + 1 and out.splitlines()[-1].startswith("artifact indicators n/a at valence 3, 5, 6: ")
     assert [line.split(" (")[0] for line in err.splitlines()] == [
         "symdecomp inspect: at valence 5 lambda_1 is not certified the subdominant eigenvalue",
         "symdecomp inspect: at valence 6 lambda_1 is not certified the subdominant eigenvalue"]
@@ -176,3 +177,48 @@ def test_a_triangle_mesh_in_ply_goes_to_loop(tmp_path, capsys):
     first = data["extraordinary"][0]
     assert first["limit_exact"] == ["24/55", "0", "0"]
     assert first["normal"] == pytest.approx([1, 0, 0], abs=1e-15)
+
+
+def test_each_vertex_has_its_valences_artifact_indicators(capsys, monkeypatch):
+    """The regime, cause, shape and density of each vertex are ``artifact_indicators(catmull_clark(), n)``'s for its
+    valence, computed once per valence, and the regime is what |mu| against lambda_1^2 says."""
+    import symdecomp.verify.artifacts as artifacts
+    from symdecomp.schemes.scheme import catmull_clark
+
+    calls = []
+    real = artifacts.artifact_indicators
+    monkeypatch.setattr(artifacts, "artifact_indicators", lambda s, n: calls.append(n) or real(s, n))
+    assert main(["inspect", str(MODEL), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert sorted(calls) == [3, 5, 6] and data["artifacts_not_applicable"] == {}
+    for v in data["extraordinary"]:
+        expected = real(catmull_clark(), v["valence"])
+        assert v["artifacts"] == {"regime": expected.curvature.regime.value, "cause": expected.curvature.as_json()["cause"],
+                                  "shape": expected.shape_text, "density": expected.density_text}
+        curvature = expected.curvature.as_json()
+        mu, square = abs(float(curvature["mu"][0]["value"])), float(curvature["lambda1_squared"])
+        assert v["artifacts"]["regime"] == ("zero" if mu < square else "unbounded")  # no regular valence 4 in the model
+    assert main(["inspect", str(MODEL)]) == 0
+    rows = {int(line.split()[0]): line for line in capsys.readouterr().out.splitlines()[2:]}
+    for v in data["extraordinary"]:
+        a = v["artifacts"]
+        assert rows[v["vertex"]].endswith(f"{a['regime']} ({a['cause']})".ljust(24) + f"  {a['density']:<12}  {a['shape']}")
+
+
+def test_artifact_indicators_not_applicable_say_why_once(capsys):
+    """A scheme file whose regular rules are not Catmull-Clark's: n/a per vertex, the reason once (the library's)."""
+    from symdecomp.errors import NotApplicableError
+    from symdecomp.schemes.files import load_scheme
+    from symdecomp.verify.artifacts import artifact_indicators
+
+    path = ROOT / "tests" / "corpus" / "moved.toml"
+    with pytest.raises(NotApplicableError) as exc:
+        artifact_indicators(load_scheme(str(path)), 3)
+    assert main(["inspect", str(MODEL), "--scheme", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert all(v["artifacts"] is None for v in data["extraordinary"])
+    assert data["artifacts_not_applicable"] == {"3": str(exc.value), "5": str(exc.value), "6": str(exc.value)}
+    assert main(["inspect", str(MODEL), "--scheme", str(path)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert len(lines) == 2 + 13 + 1 and all(line.endswith("n/a") for line in lines[2:-1])
+    assert lines[-1] == f"artifact indicators n/a at valence 3, 5, 6: {exc.value}"

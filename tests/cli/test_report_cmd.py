@@ -107,7 +107,7 @@ def test_tex_with_figures_next_to_it(tmp_path):
     assert main(["report", "loop", "--n", "3:4", "--out", str(out)]) == 0
     tex = out.read_text(encoding="utf-8")
     figures = sorted(p.name for p in tmp_path.iterdir() if p.suffix == ".pdf")
-    assert figures == ["my_report__x_-characteristic-map.pdf", "my_report__x_-eigen-polygons.pdf"]
+    assert figures == ["my_report__x_-characteristic-map.pdf", "my_report__x_-eigen-polygons.pdf", "my_report__x_-height-field.pdf"]
     assert all("\\includegraphics[width=\\linewidth,height=0.4\\textheight,keepaspectratio]{%s}" % f in tex for f in figures)
 
 

@@ -27,6 +27,7 @@ from symdecomp.output.report import (
     figures_section,
     masks_section,
     scheme_section,
+    shape_section,
     spectrum_section,
 )
 from symdecomp.output.report_html import report_html, tex_math_html
@@ -108,6 +109,40 @@ def test_closed_forms_evaluate_to_the_table():
         assert min(abs(value - v) for v in frequency_one) < 1e-9
 
 
+@pytest.mark.parametrize("scheme", [sd.catmull_clark(), sd.loop()], ids=["catmull-clark", "loop"])
+def test_shape_table_is_artifacts_commands(scheme, capsys):
+    """The rows are ``artifacts --json``'s: regime, mu to the 6 digits shown, its frequency; and the regime is what
+    |mu| against lambda_1^2 says (bounded: equal, zero: below, unbounded: above);
+    the regular valence bounded, regular density, spacing 1."""
+    report = build_report(scheme, [3, 4, 5, 6], sections=(shape_section,))
+    header = report.sections[0].blocks[1].header
+    rows = [dict(zip(header, (str(c) for c in r))) for r in _rows(report, "Curvature and shape")]
+    theirs = _command_json(capsys, "artifacts", "--n", "3:6", "--scheme", scheme.name, "--json", "--jobs", "1")
+    assert [r["$n$"] for r in rows] == [str(t["n"]) for t in theirs]
+    for mine, t in zip(rows, theirs):
+        curvature = t["curvature"]
+        assert mine["regime"] == curvature["regime"] and mine["cause"] == (curvature["cause"] or "-")
+        assert mine["freq"] == ",".join("outer" if e["frequency"] is None else str(e["frequency"]) for e in curvature["mu"])
+        mu = float(mine["$\\mu$"].rstrip("?"))
+        assert abs(mu - float(curvature["mu"][0]["value"])) <= 5e-6 * abs(mu)
+        square = float(mine["$\\lambda_1^2$"])
+        assert abs(float(mine["$\\lambda_1$"]) ** 2 - square) <= 1e-5 * square
+        if mine["regime"] == "unbounded":
+            assert abs(mu) > square
+        elif mine["regime"] == "zero":
+            assert abs(mu) < square
+        else:
+            assert mine["regime"] == "bounded" and abs(abs(mu) - square) <= 1e-5 * square
+        if t["n"] == scheme.lattice.regular_valence:
+            assert mine["regime"] == "bounded" and mine["density"] == "regular" and mine["spacing"] == "1"
+
+
+def test_shape_section_draws_the_height_field():
+    report = build_report(sd.catmull_clark(), [3, 5], sections=(shape_section,))
+    figure = report.sections[0].blocks[-1]
+    assert figure.name == "height-field" and len(figure.figure.axes) >= 2  # a panel per valence shown (and colour bars)
+
+
 @pytest.fixture(scope="module")
 def hostile_report():
     scheme = sd.catmull_clark()
@@ -132,8 +167,8 @@ def test_hostile_name_is_text_in_html(hostile_report):
 
 def test_html_twice_the_same():
     """Two builds, fresh figures each time: the same bytes (no random SVG ids, no dates)."""
-    first = build_report(sd.loop(), [3], sections=(scheme_section, figures_section))
-    second = build_report(sd.loop(), [3], sections=(scheme_section, figures_section))
+    first = build_report(sd.loop(), [3], sections=(scheme_section, shape_section, figures_section))
+    second = build_report(sd.loop(), [3], sections=(scheme_section, shape_section, figures_section))
     assert report_html(first) == report_html(second) == report_html(first)  # saved again: laid out once, not again
 
 
@@ -186,3 +221,24 @@ def test_scheme_beyond_reifs_test_says_so(capsys):
     assert main(["c1", "--n", "4", "--scheme", str(Path(__file__).resolve().parents[1] / "corpus" / "lopsided.toml")]) == 2
     assert c1_text.parts[0] == "Not applicable: " and c1_text.parts[1] in capsys.readouterr().err
     assert [getattr(b, "name", None) for b in report.sections[1].blocks] == [None, "eigen-polygons"]
+
+
+def test_shape_section_not_applicable_says_why(capsys):
+    """lopsided's regular rules are not Catmull-Clark's: the section gives the reason ``artifacts`` gives (exit 2)."""
+    path = str(Path(__file__).resolve().parents[1] / "corpus" / "lopsided.toml")
+    report = build_report(sd.schemes.files.load_scheme(path), [4, 5], sections=(shape_section,))
+    (text,) = report.sections[0].blocks
+    assert main(["artifacts", "--n", "4", "--scheme", path]) == 2
+    assert text.parts[0] == "Not applicable: " and str(text.parts[1]) in capsys.readouterr().err
+    assert "Catmull-Clark" in str(text.parts[1])
+    assert "not applicable" in report_html(report).lower()
+
+
+def test_shape_section_with_free_parameters_says_why():
+    from symdecomp.schemes.files import load_scheme
+
+    scheme = load_scheme(str(Path(__file__).resolve().parents[1] / "corpus" / "free-vertex.toml"))
+    (text,) = build_report(scheme, [5], sections=(shape_section,)).sections[0].blocks
+    with pytest.raises(sd.NotApplicableError) as exc:
+        sd.artifact_indicators(scheme, 5)
+    assert text.parts == ("Not applicable: ", str(exc.value)) and "free parameters alpha, beta" in str(exc.value)

@@ -40,9 +40,10 @@ def register(sub) -> None:
         "check",
         help="cross-check the closed-form spectrum against the full subdivision matrix",
         description="For each valence, compare the closed-form eigenvalues (Eq. 34 and Eq. 43) with the "
-        "spectrum of the full (2n+1)x(2n+1) matrix built from the rules. Numeric mode: mpmath.eig at "
-        "certified enclosures (--solver flint, the default: Arb) or mpmath.eig (--solver mpmath) at rising "
-        "precision, matched with multiplicities, agreement to --dps digits. Certified mode (--certify): an exact "
+        "spectrum of the full (2n+1)x(2n+1) matrix built from the rules. Numeric mode: the eigenvalues as "
+        "certified Arb enclosures (--solver flint, the default, with mpmath for a valence it leaves undecided) or "
+        "mpmath.eig (--solver mpmath) at rising precision, matched with multiplicities, agreement to --dps digits. "
+        "Certified mode (--certify): an exact "
         "proof per valence, by the structural route where it applies (the full matrix equals the bordered "
         "circulant-block matrix entry by entry, and the closed forms are its frequency factors: O(n)) or the dense "
         "route (chi_S = product of the closed-form factors, checked with FLINT at 2n+1 rational points); the output "

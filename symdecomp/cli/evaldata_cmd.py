@@ -51,15 +51,6 @@ def register(sub) -> None:
 
 
 def _refuse_ignored(args) -> None:
-    """An option the chosen format would ignore is refused, not dropped: --digits is JSON's, --jobs the binary file's."""
-    if args.format == "binary" and given(args, "digits"):
-        raise InvalidInputError("--digits applies to --format json only: the binary file holds float64 values, each "
-                                "correctly rounded")
-    if args.format == "json" and given(args, "jobs"):
-        raise InvalidInputError("--jobs applies to the binary format only: --format json computes the valences in one process")
-
-
-def _refuse_ignored(args) -> None:
     """An option the chosen format would ignore is refused, not dropped: --digits is JSON's; --jobs and
     --executor are the binary file's and JSON's at 17 digits (D > 17 digits are computed in one process)."""
     if args.format == "binary" and given(args, "digits"):
@@ -83,7 +74,6 @@ def run(args) -> int:
     from symdecomp.analysis.eigendata import check_eigendata_cost
     from symdecomp.output.evaldata import binary_chunks, decimal_valence, json_chunks, json_valence
 
-    _refuse_ignored(args)
     _refuse_ignored(args)
     ns = args.n
     if ns[0] != 3:

@@ -27,7 +27,7 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, Verbatim, claim
-from symdecomp.schemes.lattice import LATTICES
+from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -98,11 +98,9 @@ def check_regimes(scheme: Scheme, printed, valences: tuple[int, int] = VALENCES)
                        steps=steps, valences=(lo, hi))
 
 
-def _on(scheme: Scheme, triangles: bool) -> Scheme:
-    """``scheme`` if it lives on the wanted lattice, else that lattice's reference scheme (Catmull-Clark, Loop)."""
-    if (not scheme.lattice.face_neighbours) == triangles:
-        return scheme
-    return next(lat for lat in LATTICES.values() if (not lat.face_neighbours) == triangles).reference()
+def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
+    """``scheme`` if it lives on the ``wanted`` lattice, else that lattice's reference scheme (Catmull-Clark, Loop)."""
+    return scheme if scheme.lattice == wanted else wanted.reference()
 
 
 @claim(
@@ -115,7 +113,7 @@ def _on(scheme: Scheme, triangles: bool) -> Scheme:
     requires=(NO_FREE_PARAMETERS,),
 )
 def _catmull_clark(scheme: Scheme) -> CheckResult:
-    return check_regimes(_on(scheme, False), CATMULL_CLARK)
+    return check_regimes(_on(scheme, QUAD), CATMULL_CLARK)
 
 
 @claim(
@@ -129,7 +127,7 @@ def _catmull_clark(scheme: Scheme) -> CheckResult:
     requires=(NO_FREE_PARAMETERS,),
 )
 def _loop(scheme: Scheme) -> CheckResult:
-    return check_regimes(_on(scheme, True), LOOP)
+    return check_regimes(_on(scheme, TRIANGLE), LOOP)
 
 
 @claim(
@@ -140,7 +138,7 @@ def _loop(scheme: Scheme) -> CheckResult:
     r"eigenvalue equal to $\lambda_1^2$ at every valence (Loop 1987; Peters, Reif 2004).",
 )
 def _loop_weight(scheme: Scheme) -> CheckResult:
-    s = _on(scheme, True)
+    s = _on(scheme, TRIANGLE)
     M, E0 = one_ring_matrices(s)
     elliptic = sp.expand(E0.trace() - 1)  # E_0 is 2 x 2 with the eigenvalue 1: the other one is its trace minus 1
     lam1 = M[0, 0].subs(OMEGA, sp.exp(2 * sp.pi * sp.I / N))
@@ -190,7 +188,7 @@ def check_regular(scheme: Scheme, multiplicity: int) -> CheckResult:
 
 
 #: As printed: ``(first n, last n or None, the dominant part's frequency or None for neither)``, per lattice.
-DOMINANCE = {False: ((3, 4, None), (5, None, 2)), True: ((3, 3, None), (4, 5, 0), (6, 6, None), (7, None, 2))}
+DOMINANCE = {QUAD.name: ((3, 4, None), (5, None, 2)), TRIANGLE.name: ((3, 3, None), (4, 5, 0), (6, 6, None), (7, None, 2))}
 SHAPE_VALENCES = (3, 32)
 
 
@@ -228,10 +226,10 @@ def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_V
     requires=(NO_FREE_PARAMETERS,),
 )
 def _shape(scheme: Scheme) -> CheckResult:
-    quad = check_dominance(_on(scheme, False), DOMINANCE[False])
+    quad = check_dominance(_on(scheme, QUAD), DOMINANCE[QUAD.name])
     if quad.status is not Status.VERIFIED:
         return quad
-    tri = check_dominance(_on(scheme, True), DOMINANCE[True])
+    tri = check_dominance(_on(scheme, TRIANGLE), DOMINANCE[TRIANGLE.name])
     if tri.status is not Status.VERIFIED:
         return tri
     return CheckResult(Status.VERIFIED, Text(quad.evidence, "; and ", tri.evidence), steps=quad.steps + tri.steps,

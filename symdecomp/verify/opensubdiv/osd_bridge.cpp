@@ -368,3 +368,267 @@ int symdecomp_osd_limit_frames(int loop, int n_vertices, int n_faces, const int 
 }
 
 }  // extern "C"
+
+// ---------------------------------------------------------------------------------------------
+// Sharp features: boundary interpolation, creasing method, edge and vertex sharpness.
+//
+// `options` is {scheme (0 Catmull-Clark, 1 Loop), boundary (0 none, 1 edge-only, 2 edge-and-corner),
+// creasing (0 uniform, 1 Chaikin)}; `tags` holds the sharpness arrays of Far::TopologyDescriptor
+// (crease vertex pairs and weights, corner vertices and weights; sharpness >= 10 is infinite).
+
+#include <opensubdiv/far/patchMap.h>
+#include <opensubdiv/far/patchTableFactory.h>
+
+namespace {
+
+struct SharpTags {
+    int n_creases;
+    const int *crease_pairs;
+    const float *crease_weights;
+    int n_corners;
+    const int *corner_vertices;
+    const float *corner_weights;
+};
+
+// A value with up to kDim weights: the columns of a one-step matrix or of limit masks at once.
+const int kDim = 64;
+struct Vec {
+    double p[kDim];
+    void Clear(void * = nullptr) {
+        for (double &x : p) x = 0.0;
+    }
+    void AddWithWeight(Vec const &src, double w) {
+        for (int c = 0; c < kDim; ++c) p[c] += w * src.p[c];
+    }
+};
+
+// The topology descriptor and Sdc options of a tagged mesh, or nullptr (message in `error`).
+std::unique_ptr<Far::TopologyRefiner> make_sharp_refiner(const int *options, int per_face, int n_vertices, int n_faces,
+                                                         const int *face_vertices, SharpTags const &tags, char *error,
+                                                         int error_len) {
+    if (options[0] < 0 || options[0] > 1 || options[1] < 0 || options[1] > 2 || options[2] < 0 || options[2] > 1 ||
+        per_face != (options[0] == 1 ? 3 : 4)) {
+        set_error(error, error_len, "bad options");
+        return nullptr;
+    }
+    std::vector<int> verts_per_face(static_cast<size_t>(n_faces), per_face);
+    Far::TopologyDescriptor desc;
+    desc.numVertices = n_vertices;
+    desc.numFaces = n_faces;
+    desc.numVertsPerFace = verts_per_face.data();
+    desc.vertIndicesPerFace = face_vertices;
+    desc.numCreases = tags.n_creases;
+    desc.creaseVertexIndexPairs = tags.crease_pairs;
+    desc.creaseWeights = tags.crease_weights;
+    desc.numCorners = tags.n_corners;
+    desc.cornerVertexIndices = tags.corner_vertices;
+    desc.cornerWeights = tags.corner_weights;
+    Sdc::Options sdc;
+    const Sdc::Options::VtxBoundaryInterpolation boundary[] = {
+        Sdc::Options::VTX_BOUNDARY_NONE, Sdc::Options::VTX_BOUNDARY_EDGE_ONLY, Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER};
+    sdc.SetVtxBoundaryInterpolation(boundary[options[1]]);
+    sdc.SetCreasingMethod(options[2] ? Sdc::Options::CREASE_CHAIKIN : Sdc::Options::CREASE_UNIFORM);
+    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+    Sdc::SchemeType scheme = options[0] == 1 ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK;
+    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(scheme, sdc)));
+    if (!refiner || osd_failed) {
+        set_error(error, error_len, osd_failed ? last_osd_error : "OpenSubdiv rejected the mesh topology");
+        return nullptr;
+    }
+    return refiner;
+}
+
+// The ring (O, a_0..a_{n_a-1}, b_0..b_{n_f-1} on quads) of a centre followed from level 0 to `level`:
+// O -> its child vertex, a_i -> the child of edge (O, a_i), face j -> its child face at O's child.
+// Face j must be (O, a_j, b_j, a_{j+1}) (quads) or (O, a_j, a_{j+1}) (triangles), indices mod n_a.
+// Returns 0 and the ring's vertex indices at `level`, or an error code.
+int follow_ring(Far::TopologyRefiner const &refiner, int per_face, int center, int n_a, const int *ring_a, int n_f,
+                const int *ring_faces, int level, std::vector<int> &ring, char *error, int error_len) {
+    int o = center;
+    std::vector<int> a(ring_a, ring_a + n_a), faces(ring_faces, ring_faces + n_f);
+    for (int l = 0;; ++l) {
+        Far::TopologyLevel const &topo = refiner.GetLevel(l);
+        ring.assign(1, o);
+        ring.insert(ring.end(), a.begin(), a.end());
+        for (int j = 0; j < n_f; ++j) {
+            Far::ConstIndexArray fv = topo.GetFaceVertices(faces[j]);
+            int k = -1;
+            for (int m = 0; m < fv.size(); ++m) {
+                if (fv[m] == o) k = m;
+            }
+            if (fv.size() != per_face || k < 0 || fv[(k + 1) % per_face] != a[j] ||
+                fv[(k + per_face - 1) % per_face] != a[(j + 1) % n_a]) {
+                set_error(error, error_len, "a ring face is not (O, a_j, [b_j,] a_{j+1}) in order");
+                return 3;
+            }
+            if (per_face == 4) ring.push_back(fv[(k + 2) % 4]);
+        }
+        if (l == level) return 0;
+        int o_next = topo.GetVertexChildVertex(o);
+        Far::TopologyLevel const &child = refiner.GetLevel(l + 1);
+        for (int i = 0; i < n_a; ++i) {
+            Far::Index e = topo.FindEdge(o, a[i]);
+            if (e < 0) {
+                set_error(error, error_len, "a_i is not an edge neighbour of O");
+                return 4;
+            }
+            a[i] = topo.GetEdgeChildVertex(e);
+        }
+        for (int j = 0; j < n_f; ++j) {
+            Far::ConstIndexArray kids = topo.GetFaceChildFaces(faces[j]);
+            int found = -1;
+            for (int m = 0; m < kids.size(); ++m) {
+                if (face_has(child, kids[m], o_next)) found = kids[m];
+            }
+            if (found < 0) {
+                set_error(error, error_len, "no child face at the central vertex");
+                return 5;
+            }
+            faces[j] = found;
+        }
+        o = o_next;
+    }
+}
+
+// Unit vectors e_c at the ring's vertices of a level (r = ring size) and e_r at every other vertex.
+std::vector<Vec> unit_vectors(int n_level_vertices, std::vector<int> const &ring) {
+    std::vector<Vec> values(static_cast<size_t>(n_level_vertices));
+    const int r = static_cast<int>(ring.size());
+    for (Vec &v : values) {
+        v.Clear();
+        v.p[r] = 1.0;
+    }
+    for (int c = 0; c < r; ++c) {
+        values[ring[c]].p[r] = 0.0;
+        values[ring[c]].p[c] = 1.0;
+    }
+    return values;
+}
+
+}  // namespace
+
+extern "C" {
+
+// The one-step matrix of a vertex's ring at refinement level `level` of a tagged mesh, and the
+// limit masks (position, first and second derivative) of the vertex at that level.
+// The ring is (O, a_0..a_{n_a-1}, b_0..b_{n_f-1}) on quads, (O, a_0..a_{n_a-1}) on triangles (n_f
+// faces given all the same), r its size (r + 1 <= 64). matrix_out (r x (r + 1), row-major): row i
+// is ring point i at level + 1 as weights of the ring points at `level`, the last column the total
+// weight on every vertex outside the ring (zero when the ring is closed under refinement);
+// limit_out (3 x (r + 1)) the three limit masks in the same columns. Returns 0 on success.
+int symdecomp_osd_sharp_ring(const int *options, int per_face, int n_vertices, int n_faces, const int *face_vertices,
+                             int n_creases, const int *crease_pairs, const float *crease_weights, int n_corners,
+                             const int *corner_vertices, const float *corner_weights, int center, int n_a,
+                             const int *ring_a, int n_f, const int *ring_faces, int level, double *matrix_out,
+                             double *limit_out, char *error, int error_len) {
+    return guarded(error, error_len, [&]() -> int {
+        const int r = 1 + n_a + (per_face == 4 ? n_f : 0);
+        if (n_vertices <= 0 || n_faces <= 0 || n_a < 1 || n_f < 1 || level < 0 || r + 1 > kDim) {
+            set_error(error, error_len, "bad sizes");
+            return 1;
+        }
+        SharpTags tags{n_creases, crease_pairs, crease_weights, n_corners, corner_vertices, corner_weights};
+        std::unique_ptr<Far::TopologyRefiner> refiner =
+            make_sharp_refiner(options, per_face, n_vertices, n_faces, face_vertices, tags, error, error_len);
+        std::unique_ptr<Far::TopologyRefiner> limiter =
+            make_sharp_refiner(options, per_face, n_vertices, n_faces, face_vertices, tags, error, error_len);
+        if (!refiner || !limiter) return 2;
+        Far::TopologyRefiner::UniformOptions uniform(level + 1);
+        uniform.fullTopologyInLastLevel = true;
+        refiner->RefineUniform(uniform);
+        Far::TopologyRefiner::UniformOptions to_level(level);
+        to_level.fullTopologyInLastLevel = true;
+        limiter->RefineUniform(to_level);
+        std::vector<int> ring, next, ring_limit;
+        int code = follow_ring(*refiner, per_face, center, n_a, ring_a, n_f, ring_faces, level, ring, error, error_len);
+        if (!code) code = follow_ring(*refiner, per_face, center, n_a, ring_a, n_f, ring_faces, level + 1, next, error, error_len);
+        if (!code) code = follow_ring(*limiter, per_face, center, n_a, ring_a, n_f, ring_faces, level, ring_limit, error, error_len);
+        if (code) return code;
+
+        std::vector<Vec> src = unit_vectors(refiner->GetLevel(level).GetNumVertices(), ring);
+        std::vector<Vec> dst(static_cast<size_t>(refiner->GetLevel(level + 1).GetNumVertices()));
+        Vec *dst_start = dst.data();
+        Far::PrimvarRefinerReal<double>(*refiner).Interpolate(level + 1, src.data(), dst_start);
+        for (int i = 0; i < r; ++i) {
+            for (int c = 0; c <= r; ++c) matrix_out[i * (r + 1) + c] = dst[next[i]].p[c];
+        }
+
+        std::vector<Vec> at = unit_vectors(limiter->GetLevel(level).GetNumVertices(), ring_limit);
+        std::vector<Vec> pos(at.size()), du(at.size()), dv(at.size());
+        Vec *pos_dst = pos.data(), *du_dst = du.data(), *dv_dst = dv.data();
+        Far::PrimvarRefinerReal<double>(*limiter).Limit(at.data(), pos_dst, du_dst, dv_dst);
+        if (osd_error(error, error_len)) return 6;
+        const int o = ring_limit[0];
+        for (int c = 0; c <= r; ++c) {
+            limit_out[c] = pos[o].p[c];
+            limit_out[(r + 1) + c] = du[o].p[c];
+            limit_out[2 * (r + 1) + c] = dv[o].p[c];
+        }
+        return 0;
+    });
+}
+
+// Limit positions and first derivatives at n_points parameters (face, u, v) of a tagged mesh,
+// by OpenSubdiv's patch table (feature-adaptive refinement to `isolation`, infinitely sharp
+// patches, Gregory end caps, double precision) and its patch map. out: 9 doubles per point
+// (position, d/du, d/dv). Returns 0 on success, 8 when a parameter lies in no patch.
+int symdecomp_osd_sharp_patch_points(const int *options, int per_face, int n_vertices, int n_faces,
+                                     const int *face_vertices, const double *positions, int n_creases,
+                                     const int *crease_pairs, const float *crease_weights, int n_corners,
+                                     const int *corner_vertices, const float *corner_weights, int isolation,
+                                     int n_points, const int *point_faces, const double *uv, double *out,
+                                     char *error, int error_len) {
+    return guarded(error, error_len, [&]() -> int {
+        if (n_vertices <= 0 || n_faces <= 0 || n_points < 0 || isolation < 1 || isolation > 10) {
+            set_error(error, error_len, "bad sizes");
+            return 1;
+        }
+        SharpTags tags{n_creases, crease_pairs, crease_weights, n_corners, corner_vertices, corner_weights};
+        std::unique_ptr<Far::TopologyRefiner> refiner =
+            make_sharp_refiner(options, per_face, n_vertices, n_faces, face_vertices, tags, error, error_len);
+        if (!refiner) return 2;
+        Far::PatchTableFactory::Options patch_options(isolation);
+        patch_options.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+        patch_options.useInfSharpPatch = true;
+        patch_options.SetPatchPrecision<double>();
+        refiner->RefineAdaptive(patch_options.GetRefineAdaptiveOptions());
+        std::unique_ptr<Far::PatchTable> table(Far::PatchTableFactory::Create(*refiner, patch_options));
+        if (!table || osd_error(error, error_len)) return table ? 6 : 2;
+        const int refined = refiner->GetNumVerticesTotal();
+        std::vector<Point> points(static_cast<size_t>(refined + table->GetNumLocalPoints()));
+        for (int v = 0; v < n_vertices; ++v) {
+            for (int c = 0; c < 3; ++c) points[v].p[c] = positions[3 * v + c];
+        }
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        Point *src = points.data();
+        for (int level = 1; level <= refiner->GetMaxLevel(); ++level) {
+            Point *dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+            primvar.Interpolate(level, src, dst);
+            src = dst;
+        }
+        if (table->GetNumLocalPoints()) table->ComputeLocalPointValues(points.data(), points.data() + refined);
+        Far::PatchMap map(*table);
+        double w[20], wu[20], wv[20];
+        for (int q = 0; q < n_points; ++q) {
+            Far::PatchTable::PatchHandle const *handle = map.FindPatch(point_faces[q], uv[2 * q], uv[2 * q + 1]);
+            if (!handle) {
+                set_error(error, error_len, "a (face, u, v) parameter lies in no patch");
+                return 8;
+            }
+            table->EvaluateBasis(*handle, uv[2 * q], uv[2 * q + 1], w, wu, wv);
+            Far::ConstIndexArray cvs = table->GetPatchVertices(*handle);
+            double *o = out + 9 * q;
+            for (int c = 0; c < 9; ++c) o[c] = 0.0;
+            for (int m = 0; m < cvs.size(); ++m) {
+                for (int c = 0; c < 3; ++c) {
+                    o[c] += w[m] * points[cvs[m]].p[c];
+                    o[3 + c] += wu[m] * points[cvs[m]].p[c];
+                    o[6 + c] += wv[m] * points[cvs[m]].p[c];
+                }
+            }
+        }
+        return 0;
+    });
+}
+
+}  // extern "C"

@@ -65,7 +65,8 @@ nothing else.
                    ``ring_certify``, the O(n) route ``structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
-                   Loop side ``opensubdiv.loop``); certified C1 by Reif's test (``c1``,
+                   Loop side ``opensubdiv.loop``, boundaries, creases and corners
+                   ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
                    the patch evaluator (``patch_eval``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified

@@ -590,6 +590,7 @@ int symdecomp_osd_sharp_patch_points(const int *options, int per_face, int n_ver
         Far::PatchTableFactory::Options patch_options(isolation);
         patch_options.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
         patch_options.useInfSharpPatch = true;
+        patch_options.generateLegacySharpCornerPatches = false;
         patch_options.SetPatchPrecision<double>();
         refiner->RefineAdaptive(patch_options.GetRefineAdaptiveOptions());
         std::unique_ptr<Far::PatchTable> table(Far::PatchTableFactory::Create(*refiner, patch_options));
@@ -606,7 +607,14 @@ int symdecomp_osd_sharp_patch_points(const int *options, int per_face, int n_ver
             primvar.Interpolate(level, src, dst);
             src = dst;
         }
-        if (table->GetNumLocalPoints()) table->ComputeLocalPointValues(points.data(), points.data() + refined);
+        if (table->GetNumLocalPoints()) {  // the end caps' points, from the double-precision stencils
+            Far::StencilTableReal<double> const *local = table->GetLocalPointStencilTable<double>();
+            if (!local) {
+                set_error(error, error_len, "the patch table has no double-precision local point stencils");
+                return 6;
+            }
+            local->UpdateValues(points.data(), points.data() + refined);
+        }
         Far::PatchMap map(*table);
         double w[20], wu[20], wv[20];
         for (int q = 0; q < n_points; ++q) {

@@ -81,14 +81,14 @@ class OsdSharpRing:
 def osd_sharpness(value, what: str = "sharpness") -> float:
     """A sharpness as OpenSubdiv's float: ``math.inf`` -> 10; finite values in ``[0, 10)`` and exact in a float."""
     if isinstance(value, bool) or not isinstance(value, (int, float, Fraction)):
-        raise InvalidInputError(f"{what} must be a number or inf, got {value!r}")
+        raise InvalidInputError(f"{what}: the sharpness must be a number or inf, got {value!r}")
     if value == math.inf:
         return OSD_INFINITE
     if not value >= 0 or not value < OSD_INFINITE:
-        raise InvalidInputError(f"{what} must be in [0, 10) or inf (OpenSubdiv treats 10 and above as infinite), got {value}")
+        raise InvalidInputError(f"{what}: the sharpness must be in [0, 10) or inf (OpenSubdiv treats 10 and above as infinite), got {value}")
     single = float(np.float32(float(value)))
     if Fraction(single) != Fraction(value):
-        raise InvalidInputError(f"{what} {value} is not exact in OpenSubdiv's single-precision sharpness")
+        raise InvalidInputError(f"{what}: the sharpness {value} is not exact in OpenSubdiv's single-precision sharpness")
     return single
 
 
@@ -101,7 +101,7 @@ def _tags(creases, corners, n_vertices: int) -> list:
             raise InvalidInputError(f"creases: a key must be a pair of vertex indices below {n_vertices}, got {edge!r}")
         pairs += edge
         weights.append(osd_sharpness(s, f"creases[{edge}]"))
-    for v, s in corners.items():
+    for v in corners:
         if isinstance(v, bool) or not isinstance(v, int) or not 0 <= v < n_vertices:
             raise InvalidInputError(f"corners: a key must be a vertex index below {n_vertices}, got {v!r}")
     corner_weights = [osd_sharpness(s, f"corners[{v}]") for v, s in corners.items()]

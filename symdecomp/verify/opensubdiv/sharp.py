@@ -24,6 +24,7 @@ import ctypes
 import math
 from dataclasses import dataclass
 from fractions import Fraction
+from itertools import accumulate
 
 import numpy as np
 
@@ -31,7 +32,7 @@ from symdecomp.errors import BridgeUnavailableError, InternalError, InvalidInput
 from symdecomp.verify.opensubdiv import build as _build
 from symdecomp.verify.opensubdiv import load_bridge
 
-__all__ = ["OsdOptions", "OsdSharpRing", "fan_topology", "osd_sharp_ring", "osd_patch_limits"]
+__all__ = ["OsdFan", "OsdOptions", "OsdSharpRing", "fan_topology", "tagged_fan", "osd_sharp_ring", "osd_patch_limits"]
 
 _SCHEMES = {"catmull-clark": 0, "loop": 1}
 _BOUNDARIES = {"none": 0, "edge-only": 1, "edge-and-corner": 2}
@@ -216,8 +217,8 @@ def fan_topology(n_faces: int, *, closed: bool, quad: bool = True):
     ``closed``: the fan goes all round (an interior, dart or crease vertex, ``n_faces`` edge
     neighbours); otherwise it is open (a boundary or corner vertex, ``n_faces + 1`` edge neighbours).
     """
-    if isinstance(n_faces, bool) or not isinstance(n_faces, int) or n_faces < (3 if closed else 1):
-        raise InvalidInputError(f"n_faces must be an integer >= {3 if closed else 1}, got {n_faces!r}")
+    if isinstance(n_faces, bool) or not isinstance(n_faces, int) or n_faces < (2 if closed else 1):
+        raise InvalidInputError(f"n_faces must be an integer >= {2 if closed else 1}, got {n_faces!r}")
     n_a = n_faces if closed else n_faces + 1
     a = list(range(1, n_a + 1))
     faces = []
@@ -225,3 +226,48 @@ def fan_topology(n_faces: int, *, closed: bool, quad: bool = True):
         nxt = a[(j + 1) % n_a]
         faces.append((0, a[j], n_a + 1 + j, nxt) if quad else (0, a[j], nxt))
     return faces, 0, a, list(range(n_faces))
+
+
+@dataclass(frozen=True)
+class OsdFan:
+    """A fan of faces around vertex 0 with its tags, ready for :func:`osd_sharp_ring` and :func:`osd_patch_limits`.
+
+    Vertex ``i`` is point ``i`` of the ring order ``O, a_0.., b_0..`` (see :func:`fan_topology`).
+    """
+
+    faces: tuple
+    center: int
+    ring_a: tuple
+    ring_faces: tuple
+    creases: dict
+    corners: dict
+
+    def ring(self, options: OsdOptions, level: int = 0) -> OsdSharpRing:
+        """:func:`osd_sharp_ring` of the centre at ``level``."""
+        return osd_sharp_ring(self.faces, self.center, self.ring_a, self.ring_faces, options=options,
+                              creases=self.creases, corners=self.corners, level=level)
+
+    def limits(self, positions, queries, options: OsdOptions, isolation: int = 6):
+        """:func:`osd_patch_limits` of the fan with ``positions`` in ring order."""
+        return osd_patch_limits(self.faces, positions, queries, options=options, creases=self.creases,
+                                corners=self.corners, isolation=isolation)
+
+
+def tagged_fan(sectors, *, closed: bool, quad: bool = True, corner: bool = False, sharpness=math.inf) -> OsdFan:
+    """The fan of a vertex whose faces are split into ``sectors`` (faces per sector, rotational order) by sharp edges.
+
+    The sharp edges are ``(O, a_0)`` and the edge at every sector's end; on an open fan the first
+    and last are the boundary edges (sharp by boundary interpolation, not tagged), the others are
+    tagged with ``sharpness``. ``corner`` tags ``O`` as an infinitely sharp vertex.
+    """
+    sectors = tuple(sectors)
+    if not sectors or any(isinstance(k, bool) or not isinstance(k, int) or k < 1 for k in sectors):
+        raise InvalidInputError(f"sectors must be positive face counts, got {sectors!r}")
+    faces, center, a, ring_faces = fan_topology(sum(sectors), closed=closed, quad=quad)
+    ends = {0} | {total % len(a) for total in accumulate(sectors)}
+    if not closed:
+        ends -= {0, len(a) - 1}
+    creases = {(center, a[i]): sharpness for i in sorted(ends)}
+    for value in creases.values():
+        osd_sharpness(value)
+    return OsdFan(tuple(faces), center, tuple(a), tuple(ring_faces), creases, {center: math.inf} if corner else {})

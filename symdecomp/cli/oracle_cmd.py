@@ -1,9 +1,16 @@
-"""``symdecomp oracle --n 3:12 [--scheme loop]``: the toolkit's Catmull-Clark or Loop predictions checked against OpenSubdiv."""
+"""``symdecomp oracle --n 3:12 [--scheme loop]``: the toolkit's Catmull-Clark or Loop predictions checked against OpenSubdiv.
+
+``symdecomp oracle --kind boundary,corner,crease,dart --k 1:12 --sharpness 0,1/2,1,5/2,inf``: the same at
+boundary, corner, crease and dart vertices (:mod:`symdecomp.verify.oracle_sharp`).
+"""
 
 from __future__ import annotations
 
 import argparse
+import math
+import re
 import sys
+from fractions import Fraction
 
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, flag, integer, print_json, progress, valence_range
 from symdecomp.errors import InvalidInputError
@@ -29,10 +36,56 @@ def register(sub) -> None:
     p.add_argument("--levels", type=_levels, action=Once, default=20, metavar="K",
                    help=f"refinement levels run in OpenSubdiv (default 20; 2 <= K <= {LIMITS['levels'][0]})")
     p.add_argument("--seed", type=_seed, action=Once, default=0, help="seed of the random 1-rings (default 0; 0 <= seed < 2^32)")
+    p.add_argument("--kind", type=_kinds, action=Once, default=None, metavar="LIST",
+                   help="compare at sharp vertices instead: a comma list of boundary, corner, crease, dart (or all); "
+                        "every boundary interpolation and creasing method where they differ")
+    flag(p, "--boundary", help="short for --kind all")
+    p.add_argument("--k", type=_k_range, action=Once, default=list(range(1, 13)), metavar="A:B",
+                   help="with --kind: faces per sector, one or an inclusive range (default 1:12, at most 16)")
+    p.add_argument("--sharpness", type=_sharpness_list, action=Once, default=None, metavar="LIST",
+                   help="with --kind: crease and dart sharpness values, comma list of numbers (1/2, 2.5) and inf "
+                        "(default 0,1/2,1,5/2,inf; finite values below 10)")
     flag(p, "--json",
                    help='print [{"n", "levels", "seed", "agrees", "predictions": [{"name", "kind", "predicted", '
-                        '"observed", "disagreement", "rate", "observed_rate", "agrees"}]}]')
+                        '"observed", "disagreement", "rate", "observed_rate", "agrees"}]}]; with --kind '
+                        '[{"scheme", "kind", "k", "sharpness", "boundary", "creasing", "level", "agrees", '
+                        '"checks": [{"name", "disagreement", "comparable", "agrees", "note"}]}]')
     p.set_defaults(func=run)
+
+
+_KINDS = ("boundary", "corner", "crease", "dart")
+
+
+def _kinds(text: str) -> tuple[str, ...]:
+    names = [t.strip() for t in text.split(",")]
+    if names == ["all"]:
+        return _KINDS
+    bad = [n for n in names if n not in _KINDS]
+    if bad or not names:
+        raise argparse.ArgumentTypeError(f"--kind takes a comma list of {', '.join(_KINDS)} (or all), got {text!r}")
+    return tuple(dict.fromkeys(names))
+
+
+def _k_range(text: str) -> list[int]:
+    lo, sep, hi = text.partition(":")
+    a = integer(lo, "--k", minimum=1)
+    b = integer(hi, "--k", minimum=1) if sep else a
+    if b < a or b > 16:
+        raise argparse.ArgumentTypeError(f"--k must be K or A:B with 1 <= A <= B <= 16, got {text!r}")
+    return list(range(a, b + 1))
+
+
+def _sharpness_list(text: str) -> tuple:
+    values = []
+    for item in text.split(","):
+        item = item.strip()
+        if item == "inf":
+            values.append(math.inf)
+        elif re.fullmatch(r"\d{1,6}(\.\d{1,6})?(/[1-9]\d{0,5})?", item) and Fraction(item) < 10:
+            values.append(Fraction(item))
+        else:
+            raise argparse.ArgumentTypeError(f"--sharpness takes numbers in [0, 10) such as 1/2 or 2.5, and inf; got {item!r}")
+    return tuple(dict.fromkeys(values))
 
 
 def _levels(text: str) -> int:
@@ -70,12 +123,17 @@ def run(args) -> int:
     from symdecomp.errors import BridgeUnavailableError
     from symdecomp.verify.opensubdiv import load_bridge
 
+    kinds = _KINDS if args.boundary else args.kind
+    if kinds is None and args.sharpness is not None:
+        raise InvalidInputError("--sharpness: needs --kind or --boundary (it sets the sharpness of sharp vertices)")
     compare = _comparison(args.scheme)
     try:
         load_bridge()
     except BridgeUnavailableError as exc:
         print(f"symdecomp oracle: {exc}", file=sys.stderr)
         return 3
+    if kinds is not None:
+        return _run_sharp(args, kinds)
     results = [compare(n, args.levels, args.seed) for n in progress(args.n, len(args.n), "oracle")]
     if args.json:
         print_json([r.as_json() for r in results])
@@ -87,4 +145,28 @@ def run(args) -> int:
                 seen = "" if p.observed_rate is None else f" (seen {p.observed_rate:.4f})"
                 flag = "" if p.agrees else "  <-- disagrees"
                 print(f"  {p.name:<30} {p.kind:<5} {p.disagreement:9.2e}{rate}{seen}{flag}")
+    return 0 if all(r.agrees for r in results) else 1
+
+
+def _run_sharp(args, kinds) -> int:
+    from symdecomp.verify.oracle_sharp import SHARPNESS, compare_sharp_case, sharp_cases
+
+    try:
+        import symdecomp.schemes.sector  # noqa: F401  (the toolkit's side of the comparison)
+    except ModuleNotFoundError:
+        print("symdecomp oracle: --kind needs the sharp vertex model (symdecomp.schemes.sector), not in this build",
+              file=sys.stderr)
+        return 3
+
+    scheme = "catmull-clark" if args.scheme.lattice.face_neighbours else "loop"  # _comparison checked the rules
+    cases = sharp_cases(scheme, kinds, args.k, args.sharpness or SHARPNESS)
+    results = [r for case in progress(cases, len(cases), "oracle") for r in compare_sharp_case(case, seed=args.seed)]
+    if args.json:
+        print_json([r.as_json() for r in results])
+    else:
+        for r in results:
+            worst = max((c for c in r.checks if c.comparable), key=lambda c: c.disagreement)
+            bad = [c.name for c in r.checks if not c.agrees]
+            verdict = "agrees" if r.agrees else "DISAGREES: " + ", ".join(f"{c.name} {c.disagreement:.2e}" for c in r.checks if not c.agrees)
+            print(f"{r.case.label()} level {r.level}: {verdict if bad else f'{verdict} (largest {worst.name} {worst.disagreement:.1e})'}")
     return 0 if all(r.agrees for r in results) else 1

@@ -1,0 +1,288 @@
+"""OpenSubdiv against the toolkit at boundary, corner, crease and dart vertices (issue 20, item 6).
+
+For a :class:`SharpCase` (scheme, kind of vertex, ``k`` faces per sector, sharpness, boundary
+interpolation, creasing method) the toolkit's exact one-step matrix
+(:func:`symdecomp.schemes.sector.exact_sharp_matrix`) is compared at every refinement level until
+a semi-sharp crease has decayed with OpenSubdiv's (:func:`symdecomp.verify.opensubdiv.sharp.osd_sharp_ring`
+on the same tagged fan, doubles):
+
+* ``matrix``: the largest entry of ``|ours - OpenSubdiv|`` (ours exact, the difference taken exactly);
+* ``ring closed``: OpenSubdiv's new ring points have no weight outside the ring;
+* ``spectrum``: for every eigenvalue of either matrix, the smallest singular value of the other
+  matrix minus it (the distance to the nearest matrix with that eigenvalue: robust at Jordan blocks);
+* ``limit mask``: ours is exact -- the left eigenvector of eigenvalue 1 at the first level where the
+  vertex's rule no longer changes, pulled back through the exact matrices of the levels before;
+  OpenSubdiv's is ``PrimvarRefiner::Limit`` at the level;
+* ``tangent masks``: OpenSubdiv's two derivative masks must lie in the span of our left
+  eigenvectors of the largest eigenvalues below 1 (two of them, with their multiplicities);
+* ``limit point`` (level 0): OpenSubdiv's patch table at the vertex's corner ``(u, v) = (0, 0)`` of
+  every face, for a random fan, against our exact limit mask applied to it.
+
+Every measure is absolute on weights of size at most 1 (relative to 1); all must be at most
+:data:`TOLERANCE` (1e-12). While a semi-sharp crease has not decayed, OpenSubdiv's limit and tangent
+masks are those of the crease rule of that level (its ``Limit`` takes the level's rule), not the
+limit of the surface: those rows are reported with their numbers and marked not comparable, and
+the limit point (the patch table refines the crease away) is the check of the true limit there.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+import flint
+import numpy as np
+
+from symdecomp.errors import InvalidInputError
+from symdecomp.schemes.lattice import QUAD, TRIANGLE
+from symdecomp.schemes.loop import loop
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.verify.opensubdiv.sharp import OsdFan, OsdOptions, tagged_fan
+
+__all__ = ["KINDS", "SHARPNESS", "TOLERANCE", "SharpCase", "SharpCheck", "SharpResult", "sharp_cases", "compare_sharp_case"]
+
+#: The kinds of vertex: ``boundary`` (k faces), ``corner`` (k faces, O tagged), ``crease`` (k faces on each
+#: side of a crease through O), ``dart`` (k faces around O, a crease ending at O).
+KINDS = ("boundary", "corner", "crease", "dart")
+#: The sharpness values of issue 20 (for creases and darts; boundary edges are infinitely sharp).
+SHARPNESS = (Fraction(0), Fraction(1, 2), Fraction(1), Fraction(5, 2), math.inf)
+#: Largest disagreement accepted (weights are at most 1 in size: absolute = relative).
+TOLERANCE = 1e-12
+
+
+@dataclass(frozen=True)
+class SharpCase:
+    """One vertex and one set of OpenSubdiv options."""
+
+    scheme: str
+    kind: str
+    k: int
+    sharpness: object = math.inf
+    boundary: str = "edge-and-corner"
+    creasing: str = "uniform"
+
+    def __post_init__(self):
+        OsdOptions(self.scheme, self.boundary, self.creasing)  # checks the three names
+        if self.kind not in KINDS:
+            raise InvalidInputError(f"kind must be one of {', '.join(KINDS)}, got {self.kind!r}")
+        if isinstance(self.k, bool) or not isinstance(self.k, int) or not 1 <= self.k <= 16 or (self.kind == "dart" and self.k < 2):
+            raise InvalidInputError(f"k must be an integer from {2 if self.kind == 'dart' else 1} to 16, got {self.k!r}")
+
+    @property
+    def quad(self) -> bool:
+        return self.scheme == "catmull-clark"
+
+    def vertex(self):
+        """The toolkit's neighbourhood object (a :class:`~symdecomp.schemes.sector.SharpVertex`)."""
+        from symdecomp.schemes.sector import SharpVertex
+
+        lattice = QUAD if self.quad else TRIANGLE
+        if self.kind == "boundary":
+            return SharpVertex.boundary(self.k, lattice)
+        if self.kind == "corner":
+            return SharpVertex.corner(self.k, lattice)
+        if self.kind == "crease":
+            return SharpVertex.crease(self.k, self.k, lattice, self.sharpness)
+        return SharpVertex.dart(self.k, lattice, self.sharpness)
+
+    def fan(self) -> OsdFan:
+        """The same neighbourhood as an OpenSubdiv mesh with its tags."""
+        sectors = (self.k, self.k) if self.kind == "crease" else (self.k,)
+        return tagged_fan(sectors, closed=self.kind in ("crease", "dart"), quad=self.quad,
+                          corner=self.kind == "corner", sharpness=self.sharpness)
+
+    def levels(self) -> int:
+        """The last level compared: where a semi-sharp crease has decayed (0 for sharpness 0 or infinite)."""
+        s = self.sharpness
+        return 0 if s == math.inf or s == 0 else math.ceil(s)
+
+    def label(self) -> str:
+        s = "inf" if self.sharpness == math.inf else str(self.sharpness)
+        return f"{self.scheme} {self.kind} k={self.k} s={s} {self.boundary} {self.creasing}"
+
+
+def sharp_cases(scheme: str, kinds=KINDS, ks=range(1, 13), sharpness=SHARPNESS) -> list[SharpCase]:
+    """The cases of the sweep: boundaries and corners once (sharpness does not apply), with both boundary
+    interpolations where they differ (a boundary vertex of one face); creases and darts at every sharpness,
+    with both creasing methods where a semi-sharp crease decays."""
+    out = []
+    for kind in kinds:
+        for k in ks:
+            if kind in ("boundary", "corner"):
+                bounds = ("edge-only", "edge-and-corner") if kind == "boundary" and k == 1 else ("edge-and-corner",)
+                out += [SharpCase(scheme, kind, k, math.inf, b) for b in bounds]
+            elif kind == "crease" or k >= 2:
+                for s in sharpness:
+                    methods = ("uniform", "chaikin") if 0 < s < math.inf else ("uniform",)
+                    out += [SharpCase(scheme, kind, k, s, creasing=m) for m in methods]
+    return out
+
+
+@dataclass(frozen=True)
+class SharpCheck:
+    """One comparison: its name, the largest disagreement, whether it counts towards the verdict."""
+
+    name: str
+    disagreement: float
+    comparable: bool = True
+    note: str = ""
+
+    @property
+    def agrees(self) -> bool:
+        return not self.comparable or self.disagreement <= TOLERANCE
+
+
+@dataclass(frozen=True)
+class SharpResult:
+    """The checks of one case at one refinement level."""
+
+    case: SharpCase
+    level: int
+    checks: tuple
+
+    @property
+    def agrees(self) -> bool:
+        return all(c.agrees for c in self.checks)
+
+    def as_json(self) -> dict:
+        s = self.case.sharpness
+        return {"scheme": self.case.scheme, "kind": self.case.kind, "k": self.case.k,
+                "sharpness": "inf" if s == math.inf else str(s), "boundary": self.case.boundary,
+                "creasing": self.case.creasing, "level": self.level, "agrees": self.agrees,
+                "checks": [{"name": c.name, "disagreement": c.disagreement, "comparable": c.comparable,
+                            "agrees": c.agrees, "note": c.note} for c in self.checks]}
+
+
+def _ours(case: SharpCase, level: int) -> flint.fmpq_mat:
+    from symdecomp.schemes.sector import exact_sharp_matrix
+    from symdecomp.schemes.sharp import SharpOptions
+
+    scheme = catmull_clark() if case.quad else loop()
+    options = SharpOptions(case.boundary, case.creasing)
+    return exact_sharp_matrix(scheme, case.vertex(), level=level, options=options)
+
+
+def _floats(m: flint.fmpq_mat) -> np.ndarray:
+    return np.array([[float(Fraction(int(m[r, c].p), int(m[r, c].q))) for c in range(m.ncols())] for r in range(m.nrows())])
+
+
+def _exact_difference(m: flint.fmpq_mat, doubles: np.ndarray) -> float:
+    """``max |m - doubles|``, the difference of the exact value and the double taken exactly."""
+    worst = Fraction(0)
+    for r in range(m.nrows()):
+        for c in range(m.ncols()):
+            worst = max(worst, abs(Fraction(int(m[r, c].p), int(m[r, c].q)) - Fraction(float(doubles[r, c]))))
+    return float(worst)
+
+
+def _fixed_row(m: flint.fmpq_mat) -> list[Fraction] | None:
+    """The left eigenvector of eigenvalue 1 of ``m`` normalised to sum 1, exactly; None unless it is unique."""
+    n = m.nrows()
+    shifted = m.transpose() - flint.fmpq_mat(n, n, [1 if r == c else 0 for r in range(n) for c in range(n)])
+    reduced, rank = shifted.rref()
+    if rank != n - 1:
+        return None
+    pivots, row = [], 0
+    for c in range(n):
+        if row < rank and reduced[row, c] != 0:
+            pivots.append(c)
+            row += 1
+    free = next(c for c in range(n) if c not in pivots)
+    vector = [Fraction(0)] * n
+    vector[free] = Fraction(1)
+    for r, c in enumerate(pivots):
+        x = -reduced[r, free]
+        vector[c] = Fraction(int(x.p), int(x.q))
+    total = sum(vector)
+    return None if total == 0 else [x / total for x in vector]
+
+
+def _limit_masks(mats: list) -> list:
+    """Our exact limit mask of the vertex at every level: stationary at the last, pulled back before it."""
+    last = _fixed_row(mats[-1])
+    if last is None:
+        return [None] * len(mats)
+    masks = [last]
+    for m in reversed(mats[:-1]):
+        row = flint.fmpq_mat(1, len(masks[0]), [flint.fmpq(x.numerator, x.denominator) for x in masks[0]]) * m
+        masks.insert(0, [Fraction(int(row[0, c].p), int(row[0, c].q)) for c in range(row.ncols())])
+    return masks
+
+
+def _spectrum_distance(ours: np.ndarray, theirs: np.ndarray) -> float:
+    """For every eigenvalue of either matrix, the smallest singular value of the other minus it; the largest."""
+    eye = np.eye(len(ours))
+    worst = 0.0
+    for a, b in ((ours, theirs), (theirs, ours)):
+        for lam in np.linalg.eigvals(a):
+            worst = max(worst, float(np.linalg.svd(b - lam * eye, compute_uv=False)[-1]))
+    return worst
+
+
+def _subdominant_span(ours: np.ndarray) -> np.ndarray:
+    """Columns spanning our left eigenvectors of the largest eigenvalues below 1 (two, with multiplicities)."""
+    values, vectors = np.linalg.eig(ours.T)
+    order = np.argsort(-np.abs(values))
+    rest = [i for i in order if abs(values[i] - 1) > 1e-9]
+    chosen, count = [], 0
+    while rest and count < 2:
+        top = abs(values[rest[0]])
+        group = [i for i in rest if abs(abs(values[i]) - top) < 1e-9]
+        chosen += group
+        count += len(group)
+        rest = [i for i in rest if i not in group]
+    basis = vectors[:, chosen]
+    return np.hstack([basis.real, basis.imag])
+
+
+def _tangent_residual(span: np.ndarray, mask: np.ndarray) -> float:
+    """Relative distance of one of OpenSubdiv's derivative masks from ``span``."""
+    u, sv, _ = np.linalg.svd(span, full_matrices=False)
+    q = u[:, sv > 1e-9 * max(sv.max(initial=0.0), 1e-300)]
+    return float(np.linalg.norm(mask - q @ (q.T @ mask)) / np.linalg.norm(mask))
+
+
+def _level_checks(case: SharpCase, fan: OsdFan, level: int, ours: flint.fmpq_mat, mask) -> list:
+    osd = fan.ring(OsdOptions(case.scheme, case.boundary, case.creasing), level)
+    mine = _floats(ours)
+    decayed = level >= case.levels()
+    why = "" if decayed else "OpenSubdiv's Limit takes the crease rule of this level, not the decayed limit"
+    checks = [SharpCheck("matrix", _exact_difference(ours, osd.matrix)),
+              SharpCheck("ring closed", float(np.max(np.abs(osd.leak)))),
+              SharpCheck("spectrum", _spectrum_distance(mine, osd.matrix))]
+    if mask is None:
+        return checks + [SharpCheck("limit mask", math.inf, note="our eigenvalue 1 is not simple")]
+    checks.append(SharpCheck("limit mask", float(max(abs(Fraction(float(b)) - a) for a, b in zip(mask, osd.masks[0]))),
+                             decayed, why))
+    span, stationary = _subdominant_span(mine), decayed and case.levels() == level
+    note = "" if stationary else why or "our matrix of this level is not the stationary one"
+    checks.append(SharpCheck("tangents independent", 0.0 if np.linalg.matrix_rank(osd.masks[1:], tol=1e-9) == 2 else 1.0))
+    for name, mask in (("tangent 1", osd.masks[1]), ("tangent 2", osd.masks[2])):
+        checks.append(SharpCheck(name, _tangent_residual(span, mask), stationary, note))
+    return checks
+
+
+def _limit_point_check(case: SharpCase, fan: OsdFan, mask, seed: int) -> SharpCheck:
+    rng = np.random.default_rng(seed)
+    positions = rng.uniform(-1, 1, size=(len(mask), 3))
+    queries = [(j, 0.0, 0.0) for j in range(len(fan.faces))]
+    limits, _, _ = fan.limits(positions, queries, OsdOptions(case.scheme, case.boundary, case.creasing))
+    ours = np.array([sum(float(w) * positions[i, c] for i, w in enumerate(mask)) for c in range(3)])
+    return SharpCheck("limit point", float(np.max(np.abs(limits - ours))), note="patch table at (face, 0, 0)")
+
+
+def compare_sharp_case(case: SharpCase, *, seed: int = 0) -> list[SharpResult]:
+    """The checks of ``case`` at every level from 0 to :meth:`SharpCase.levels` (see the module docstring)."""
+    if not isinstance(case, SharpCase):
+        raise InvalidInputError(f"case must be a SharpCase, got {type(case).__name__}")
+    fan = case.fan()
+    mats = [_ours(case, level) for level in range(case.levels() + 1)]
+    masks = _limit_masks(mats)
+    results = []
+    for level, (ours, mask) in enumerate(zip(mats, masks)):
+        checks = _level_checks(case, fan, level, ours, mask)
+        if level == 0 and mask is not None:
+            checks.append(_limit_point_check(case, fan, mask, seed))
+        results.append(SharpResult(case, level, tuple(checks)))
+    return results

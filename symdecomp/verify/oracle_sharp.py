@@ -220,8 +220,9 @@ def _spectrum_distance(ours: np.ndarray, theirs: np.ndarray) -> float:
     return worst
 
 
-def _subdominant_span(ours: np.ndarray) -> np.ndarray:
-    """Columns spanning our left eigenvectors of the largest eigenvalues below 1 (two, with multiplicities)."""
+def _left_spans(ours: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Columns spanning our left eigenvectors (a) of the largest eigenvalues below 1 (two, with their
+    multiplicities: the surface's tangent plane) and (b) of eigenvalue 1/2 (a crease curve's tangent)."""
     values, vectors = np.linalg.eig(ours.T)
     order = np.argsort(-np.abs(values))
     rest = [i for i in order if abs(values[i] - 1) > 1e-9]
@@ -232,8 +233,8 @@ def _subdominant_span(ours: np.ndarray) -> np.ndarray:
         chosen += group
         count += len(group)
         rest = [i for i in rest if i not in group]
-    basis = vectors[:, chosen]
-    return np.hstack([basis.real, basis.imag])
+    half = [i for i in order if abs(values[i] - 0.5) < 1e-9]
+    return tuple(np.hstack([vectors[:, c].real, vectors[:, c].imag]) for c in (chosen, half))
 
 
 def _tangent_residual(span: np.ndarray, mask: np.ndarray) -> float:
@@ -255,11 +256,13 @@ def _level_checks(case: SharpCase, fan: OsdFan, level: int, ours: flint.fmpq_mat
         return checks + [SharpCheck("limit mask", math.inf, note="our eigenvalue 1 is not simple")]
     checks.append(SharpCheck("limit mask", float(max(abs(Fraction(float(b)) - a) for a, b in zip(mask, osd.masks[0]))),
                              decayed, why))
-    span, stationary = _subdominant_span(mine), decayed and case.levels() == level
+    (plane, half), stationary = _left_spans(mine), decayed and case.levels() == level
     note = "" if stationary else why or "our matrix of this level is not the stationary one"
     checks.append(SharpCheck("tangents independent", 0.0 if np.linalg.matrix_rank(osd.masks[1:], tol=1e-9) == 2 else 1.0))
-    for name, mask in (("tangent 1", osd.masks[1]), ("tangent 2", osd.masks[2])):
-        checks.append(SharpCheck(name, _tangent_residual(span, mask), stationary, note))
+    if case.kind != "dart" and (case.sharpness == math.inf or case.kind != "crease"):
+        checks.append(SharpCheck("curve tangent", _tangent_residual(half, osd.masks[1]), stationary, note))
+    for name, mask in (("surface tangent 1", osd.masks[1]), ("surface tangent 2", osd.masks[2])):
+        checks.append(SharpCheck(name, _tangent_residual(plane, mask), stationary, note))
     return checks
 
 

@@ -31,8 +31,9 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 
-import flint
+import mpmath
 import numpy as np
+import sympy as sp
 
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.lattice import QUAD, TRIANGLE
@@ -104,15 +105,15 @@ class SharpCase:
 
 def sharp_cases(scheme: str, kinds=KINDS, ks=range(1, 13), sharpness=SHARPNESS) -> list[SharpCase]:
     """The cases of the sweep: boundaries and corners once (sharpness does not apply), with both boundary
-    interpolations where they differ (a boundary vertex of one face); creases and darts at every sharpness,
-    with both creasing methods where a semi-sharp crease decays."""
+    interpolations where they differ (a boundary vertex of one face); creases and darts (at least three
+    faces around the vertex) at every sharpness, with both creasing methods where a semi-sharp crease decays."""
     out = []
     for kind in kinds:
         for k in ks:
             if kind in ("boundary", "corner"):
                 bounds = ("edge-only", "edge-and-corner") if kind == "boundary" and k == 1 else ("edge-and-corner",)
                 out += [SharpCase(scheme, kind, k, math.inf, b) for b in bounds]
-            elif kind == "crease" or k >= 2:
+            elif (2 * k if kind == "crease" else k) >= 3:  # a closed fan of at least 3 faces
                 for s in sharpness:
                     methods = ("uniform", "chaikin") if 0 < s < math.inf else ("uniform",)
                     out += [SharpCase(scheme, kind, k, s, creasing=m) for m in methods]
@@ -154,59 +155,60 @@ class SharpResult:
                             "agrees": c.agrees, "note": c.note} for c in self.checks]}
 
 
-def _ours(case: SharpCase, level: int) -> flint.fmpq_mat:
-    from symdecomp.schemes.sector import exact_sharp_matrix
+#: Digits of our exact matrices' values in the comparisons (the difference with a double is then exact to 1e-50).
+DIGITS = 50
+
+
+def _ours(case: SharpCase, level: int) -> mpmath.matrix:
+    """Our exact matrix of the level (rational, or algebraic for Loop), its entries to :data:`DIGITS` digits."""
+    from symdecomp.schemes.sector import sharp_subdivision_matrix
     from symdecomp.schemes.sharp import SharpOptions
 
     scheme = catmull_clark() if case.quad else loop()
-    options = SharpOptions(case.boundary, case.creasing)
-    return exact_sharp_matrix(scheme, case.vertex(), level=level, options=options)
+    exact = sharp_subdivision_matrix(scheme, case.vertex(), level=level, options=SharpOptions(case.boundary, case.creasing))
+    with mpmath.workdps(DIGITS):
+        return mpmath.matrix([[_mp(x) for x in exact.row(r)] for r in range(exact.rows)])
 
 
-def _floats(m: flint.fmpq_mat) -> np.ndarray:
-    return np.array([[float(Fraction(int(m[r, c].p), int(m[r, c].q))) for c in range(m.ncols())] for r in range(m.nrows())])
+def _mp(x: sp.Expr) -> mpmath.mpf:
+    """An exact value to the working precision (a rational exactly rounded, an algebraic number by sympy's evalf)."""
+    if x.is_Rational:
+        return mpmath.mpf(int(x.p)) / int(x.q)
+    return mpmath.mpf(str(sp.N(x, mpmath.mp.dps + 10)))
 
 
-def _exact_difference(m: flint.fmpq_mat, doubles: np.ndarray) -> float:
-    """``max |m - doubles|``, the difference of the exact value and the double taken exactly."""
-    worst = Fraction(0)
-    for r in range(m.nrows()):
-        for c in range(m.ncols()):
-            worst = max(worst, abs(Fraction(int(m[r, c].p), int(m[r, c].q)) - Fraction(float(doubles[r, c]))))
-    return float(worst)
+def _floats(m: mpmath.matrix) -> np.ndarray:
+    return np.array(m.tolist(), dtype=float)
 
 
-def _fixed_row(m: flint.fmpq_mat) -> list[Fraction] | None:
-    """The left eigenvector of eigenvalue 1 of ``m`` normalised to sum 1, exactly; None unless it is unique."""
-    n = m.nrows()
-    shifted = m.transpose() - flint.fmpq_mat(n, n, [1 if r == c else 0 for r in range(n) for c in range(n)])
-    reduced, rank = shifted.rref()
-    if rank != n - 1:
-        return None
-    pivots, row = [], 0
-    for c in range(n):
-        if row < rank and reduced[row, c] != 0:
-            pivots.append(c)
-            row += 1
-    free = next(c for c in range(n) if c not in pivots)
-    vector = [Fraction(0)] * n
-    vector[free] = Fraction(1)
-    for r, c in enumerate(pivots):
-        x = -reduced[r, free]
-        vector[c] = Fraction(int(x.p), int(x.q))
-    total = sum(vector)
-    return None if total == 0 else [x / total for x in vector]
+def _difference(m: mpmath.matrix, doubles: np.ndarray) -> float:
+    """``max |m - doubles|`` at :data:`DIGITS` digits (each double taken exactly)."""
+    with mpmath.workdps(DIGITS):
+        return float(max(abs(m[r, c] - mpmath.mpf(float(doubles[r, c]))) for r in range(m.rows) for c in range(m.cols)))
+
+
+def _fixed_row(m: mpmath.matrix) -> list | None:
+    """The left eigenvector of eigenvalue 1 of ``m`` with sum 1 (to :data:`DIGITS` digits); None unless unique."""
+    n = m.rows
+    with mpmath.workdps(DIGITS):
+        system = m.T - mpmath.eye(n)
+        system[n - 1, :] = mpmath.ones(1, n)  # the equations are dependent (rows of m sum to 1): one gives way to the sum
+        if abs(mpmath.det(system)) < mpmath.mpf(10) ** (-DIGITS // 2):
+            return None
+        row = mpmath.lu_solve(system, mpmath.matrix([0] * (n - 1) + [1]))
+        return [row[i] for i in range(n)]
 
 
 def _limit_masks(mats: list) -> list:
-    """Our exact limit mask of the vertex at every level: stationary at the last, pulled back before it."""
+    """Our limit mask of the vertex at every level: stationary at the last, pulled back through the levels before."""
     last = _fixed_row(mats[-1])
     if last is None:
         return [None] * len(mats)
     masks = [last]
-    for m in reversed(mats[:-1]):
-        row = flint.fmpq_mat(1, len(masks[0]), [flint.fmpq(x.numerator, x.denominator) for x in masks[0]]) * m
-        masks.insert(0, [Fraction(int(row[0, c].p), int(row[0, c].q)) for c in range(row.ncols())])
+    with mpmath.workdps(DIGITS):
+        for m in reversed(mats[:-1]):
+            row = mpmath.matrix([masks[0]]) * m
+            masks.insert(0, [row[0, c] for c in range(row.cols)])
     return masks
 
 
@@ -244,18 +246,17 @@ def _tangent_residual(span: np.ndarray, mask: np.ndarray) -> float:
     return float(np.linalg.norm(mask - q @ (q.T @ mask)) / np.linalg.norm(mask))
 
 
-def _level_checks(case: SharpCase, fan: OsdFan, level: int, ours: flint.fmpq_mat, mask) -> list:
+def _level_checks(case: SharpCase, fan: OsdFan, level: int, ours: mpmath.matrix, mask) -> list:
     osd = fan.ring(OsdOptions(case.scheme, case.boundary, case.creasing), level)
     mine = _floats(ours)
     decayed = level >= case.levels()
     why = "" if decayed else "OpenSubdiv's Limit takes the crease rule of this level, not the decayed limit"
-    checks = [SharpCheck("matrix", _exact_difference(ours, osd.matrix)),
+    checks = [SharpCheck("matrix", _difference(ours, osd.matrix)),
               SharpCheck("ring closed", float(np.max(np.abs(osd.leak)))),
               SharpCheck("spectrum", _spectrum_distance(mine, osd.matrix))]
     if mask is None:
         return checks + [SharpCheck("limit mask", math.inf, note="our eigenvalue 1 is not simple")]
-    checks.append(SharpCheck("limit mask", float(max(abs(Fraction(float(b)) - a) for a, b in zip(mask, osd.masks[0]))),
-                             decayed, why))
+    checks.append(SharpCheck("limit mask", _difference(mpmath.matrix([mask]), osd.masks[:1]), decayed, why))
     (plane, half), stationary = _left_spans(mine), decayed and case.levels() == level
     note = "" if stationary else why or "our matrix of this level is not the stationary one"
     checks.append(SharpCheck("tangents independent", 0.0 if np.linalg.matrix_rank(osd.masks[1:], tol=1e-9) == 2 else 1.0))

@@ -64,6 +64,7 @@ nothing else.
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
+                   boundary, crease and corner vertices' ``oracle_sharp``,
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,

@@ -131,8 +131,8 @@ def test_semi_sharp_blends_smooth_and_sharp_as_opensubdiv_does(scheme, lattice):
     ``s * sharp + (1 - s) * smooth``: OpenSubdiv's edge rule weighs the crease mask by s, and its vertex rule the
     parent (crease) mask by the mean sharpness of the edges that turn smooth (``ComputeFractionalWeightAtVertex``)."""
     for vertex in (SharpVertex.crease(2, 3, lattice), SharpVertex.dart(5, lattice), SharpVertex.crease(1, 3, lattice)):
-        def at(s, level=0):
-            v = SharpVertex(lattice, vertex.sectors, True, False, s)
+        def at(s, level=0, sectors=vertex.sectors):
+            v = SharpVertex(lattice, sectors, True, False, s)
             return sharp_subdivision_matrix(scheme, v, level=level)
 
         smooth, sharp = at(0), at(math.inf)

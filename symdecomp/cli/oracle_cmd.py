@@ -45,6 +45,8 @@ def register(sub) -> None:
     p.add_argument("--sharpness", type=_sharpness_list, action=Once, default=None, metavar="LIST",
                    help="with --kind: crease and dart sharpness values, comma list of numbers (1/2, 2.5) and inf "
                         "(default 0,1/2,1,5/2,inf; finite values below 10)")
+    p.add_argument("--creasing", choices=("uniform", "chaikin", "both"), action=Once, default="both",
+                   help="with --kind: OpenSubdiv's creasing method for semi-sharp creases (default both)")
     flag(p, "--json",
                    help='print [{"n", "levels", "seed", "agrees", "predictions": [{"name", "kind", "predicted", '
                         '"observed", "disagreement", "rate", "observed_rate", "agrees"}]}]; with --kind '
@@ -159,7 +161,8 @@ def _run_sharp(args, kinds) -> int:
         return 3
 
     scheme = "catmull-clark" if args.scheme.lattice.face_neighbours else "loop"  # _comparison checked the rules
-    cases = sharp_cases(scheme, kinds, args.k, args.sharpness or SHARPNESS)
+    cases = [c for c in sharp_cases(scheme, kinds, args.k, args.sharpness or SHARPNESS)
+             if args.creasing in ("both", c.creasing)]
     results = [r for case in progress(cases, len(cases), "oracle") for r in compare_sharp_case(case, seed=args.seed)]
     if args.json:
         print_json([r.as_json() for r in results])

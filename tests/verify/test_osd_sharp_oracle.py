@@ -42,7 +42,7 @@ def _sweep(scheme, ks, creasing=("uniform",)):
 
 @pytest.mark.parametrize("scheme", ["catmull-clark", "loop"])
 def test_matrices_spectra_limits_agree_with_opensubdiv(scheme):
-    for case, results in _sweep(scheme, (1, 2, 3, 5)):
+    for case, results in _sweep(scheme, (1, 2, 3)):
         if case.kind == "dart" and case.sharpness == math.inf:
             continue  # OpenSubdiv's limit at a dart: see the next test
         for check in _check(results, "limit mask") + _check(results, "limit point"):

@@ -13,8 +13,11 @@ on the same tagged fan, doubles):
 * ``limit mask``: ours is exact -- the left eigenvector of eigenvalue 1 at the first level where the
   vertex's rule no longer changes, pulled back through the exact matrices of the levels before;
   OpenSubdiv's is ``PrimvarRefiner::Limit`` at the level;
-* ``tangent masks``: OpenSubdiv's two derivative masks must lie in the span of our left
-  eigenvectors of the largest eigenvalues below 1 (two of them, with their multiplicities);
+* ``curve tangent``: OpenSubdiv's first derivative mask at a boundary, corner or crease vertex must
+  lie in the span of our left eigenvectors of eigenvalue 1/2 (the cubic B-spline crease curve);
+* ``surface tangent 1`` and ``2``: OpenSubdiv's two derivative masks must lie in the span of our left
+  eigenvectors of the largest eigenvalues below 1: two of them with their multiplicities (the tangent
+  plane), three at a crease (each side's plane, sharing the crease direction);
 * ``limit point`` (level 0): OpenSubdiv's patch table at the vertex's corner ``(u, v) = (0, 0)`` of
   every face, for a random fan, against our exact limit mask applied to it.
 
@@ -222,14 +225,15 @@ def _spectrum_distance(ours: np.ndarray, theirs: np.ndarray) -> float:
     return worst
 
 
-def _left_spans(ours: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Columns spanning our left eigenvectors (a) of the largest eigenvalues below 1 (two, with their
-    multiplicities: the surface's tangent plane) and (b) of eigenvalue 1/2 (a crease curve's tangent)."""
+def _left_spans(ours: np.ndarray, planes: int) -> tuple[np.ndarray, np.ndarray]:
+    """Columns spanning our left eigenvectors (a) of the largest eigenvalues below 1 (``planes + 1`` of them
+    with their multiplicities: the tangent plane of the surface, or of each side of a crease, which share
+    the crease's direction) and (b) of eigenvalue 1/2 (a crease curve's tangent)."""
     values, vectors = np.linalg.eig(ours.T)
     order = np.argsort(-np.abs(values))
     rest = [i for i in order if abs(values[i] - 1) > 1e-9]
     chosen, count = [], 0
-    while rest and count < 2:
+    while rest and count < planes + 1:
         top = abs(values[rest[0]])
         group = [i for i in rest if abs(abs(values[i]) - top) < 1e-9]
         chosen += group
@@ -257,7 +261,7 @@ def _level_checks(case: SharpCase, fan: OsdFan, level: int, ours: mpmath.matrix,
     if mask is None:
         return checks + [SharpCheck("limit mask", math.inf, note="our eigenvalue 1 is not simple")]
     checks.append(SharpCheck("limit mask", _difference(mpmath.matrix([mask]), osd.masks[:1]), decayed, why))
-    (plane, half), stationary = _left_spans(mine), decayed and case.levels() == level
+    (plane, half), stationary = _left_spans(mine, 2 if case.kind == "crease" else 1), decayed and case.levels() == level
     note = "" if stationary else why or "our matrix of this level is not the stationary one"
     checks.append(SharpCheck("tangents independent", 0.0 if np.linalg.matrix_rank(osd.masks[1:], tol=1e-9) == 2 else 1.0))
     if case.kind != "dart" and (case.sharpness == math.inf or case.kind != "crease"):

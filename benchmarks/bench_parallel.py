@@ -60,11 +60,14 @@ def _children(pid: int) -> list[int]:
 
 
 def _interrupt(jobs: int, nmax: int) -> float:
-    """Seconds from SIGTERM to exit code 130 and no child left, once the command has worked 4 s."""
+    """Seconds from SIGTERM to exit code 130 and no child left, once the command (its process and reaper) has worked 4 s."""
     with tempfile.TemporaryDirectory() as folder:
         proc = subprocess.Popen([sys.executable, "-m", "symdecomp", "evaldata", "--n", f"3:{nmax}", "--out", "cc.dat",
                                  "--jobs", str(jobs)], cwd=folder, env={**os.environ, "PYTHONPATH": ROOT},
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.monotonic() + 120  # a loaded machine starts Python slowly: a signal before the command is
+        while len(_children(proc.pid)) < 2 and proc.poll() is None and time.monotonic() < deadline:  # up is no test
+            time.sleep(0.1)
         time.sleep(4)
         children = _children(proc.pid)
         start = time.perf_counter()

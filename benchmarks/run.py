@@ -76,7 +76,11 @@ def main(argv=None) -> int:
     for name, module in _modules(args.only):
         if not args.json:
             print(f"== {name}", file=sys.stderr, flush=True)
-        rows.extend(_row(name, t) for t in module.targets(quick=args.quick))
+        try:
+            rows.extend(_row(name, t) for t in module.targets(quick=args.quick))
+        except (Exception, SystemExit) as exc:  # one failing benchmark is a row that says so, not the loss of the others
+            print(f"{name}: FAILED: {exc}", file=sys.stderr, flush=True)
+            rows.append({"bench": name, "target": f"{name}: FAILED: {exc}", "seconds": None, "ratio": None, "met": False})
     machine = {"cpus": os.cpu_count(), "load": [round(x, 2) for x in os.getloadavg()], "python": platform.python_version()}
     if args.json:
         print(json.dumps({"machine": machine, "rows": rows}, indent=1, default=str))

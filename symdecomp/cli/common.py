@@ -65,8 +65,8 @@ LIMITS = {
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
     "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),
-    "c1": (4096, "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 4096 takes about "
-           "0.15 s, the range 3:4096 about 5 minutes on one core"),
+    "c1": (10000, "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 10000 takes about "
+           "0.15 s, the range 3:10000 about 10 minutes of CPU (--executor dask spreads it over a cluster)"),
     "artifacts": (4096, "a valence costs time ~ N (the C1 test's spectrum plus one exact left eigenvector): N = 64 takes "
                   "about 0.05 s"),
     "c1 --depth": (MAX_DEPTH, "each level splits a piece in four: depth 12 is 16 million pieces"),

@@ -163,6 +163,34 @@ def test_evaldata_checks_its_output_before_computing(tmp_path, monkeypatch, caps
         f"symdecomp: error: --out {tmp_path}: is a directory; give a regular file, a character device or a FIFO"]
 
 
+#: Every option that names an output, pointed at a place not even root can write (a directory in /proc),
+#: with the step that would compute the output replaced by a failure: (argv, the function that does the work).
+UNWRITABLE = "/proc/symdecomp-unwritable"
+OUTPUTS = [
+    (["derive", "--out", UNWRITABLE], "symdecomp.cli.derive_cmd.write_derivations"),
+    (["evaldata", "--n", "3:128", "--out", UNWRITABLE + ".dat"], "symdecomp.cli.evaldata_cmd.rounded_eigendata"),
+    (["report", "loop", "--n", "3:6", "--out", UNWRITABLE + ".html"], "symdecomp.output.report.build_report"),
+    (["design", "--n", "5", "--normal", "0,0,1", "--out", UNWRITABLE + ".obj"], "symdecomp.analysis.design.design_ring"),
+    (["tune", "5", "--region", "--plot", UNWRITABLE + ".png"], "symdecomp.verify.tuning_c1.certified_tuning_region"),
+    (["inspect", str(Path(__file__).resolve().parents[2] / "notebooks" / "data" / "valences-3-5-6.obj"),
+      "--figures", UNWRITABLE], "symdecomp.analysis.inspection.inspect_mesh"),
+]
+
+
+@pytest.mark.parametrize("argv, work", OUTPUTS, ids=[argv[0] for argv, _ in OUTPUTS])
+def test_every_output_in_an_unwritable_place_is_refused_before_the_work(argv, work, monkeypatch, capsys):
+    """Issue 24: ``derive --out`` to a place that cannot be written computed for minutes first. Every output option
+    is checked before the work: /proc takes no new entry, for root either (a read-only directory would not stop root)."""
+    if not os.path.isdir("/proc/self"):
+        pytest.skip("needs Linux's /proc")
+    module, name = work.rsplit(".", 1)
+    monkeypatch.setattr(module + "." + name, lambda *a, **k: pytest.fail(f"{argv[0]}: the work started before the output was checked"))
+    assert main(argv) == 2
+    option = next(a for a in argv if a.startswith("--") and UNWRITABLE in argv[argv.index(a) + 1])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"symdecomp: error: {option} {UNWRITABLE}") and "not writable" in err[0], err
+
+
 def _full_disk(monkeypatch):
     def fsync(fd):
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))

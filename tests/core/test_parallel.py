@@ -279,7 +279,14 @@ def _killable_command(tmp_path):
     """``charpoly 300``: one FLINT call of many seconds, which no Python signal handler interrupts."""
     proc = subprocess.Popen([sys.executable, "-m", "symdecomp", "charpoly", "300"], stdout=subprocess.DEVNULL,
                             stderr=subprocess.PIPE, text=True, cwd=tmp_path, env={**os.environ, "PYTHONPATH": str(ROOT)})
-    time.sleep(4)  # inside the native characteristic polynomial now
+    deadline = time.monotonic() + 120  # a loaded machine starts Python slowly: wait for the command's process and its reaper
+    while len(_descendants(proc.pid)) < 2:
+        assert proc.poll() is None, proc.stderr.read()
+        if time.monotonic() > deadline:
+            proc.kill()
+            pytest.skip("the command did not start in time")
+        time.sleep(0.2)
+    time.sleep(3)  # inside the native characteristic polynomial now
     assert proc.poll() is None, proc.stderr.read()
     return proc, _descendants(proc.pid)
 

@@ -248,7 +248,7 @@ class _Layout:
         return 1 + self.a_count + m % self.faces
 
 
-def _layout(scheme: Scheme, vertex) -> _Layout:
+def vertex_layout(scheme: Scheme, vertex) -> _Layout:
     """A vertex with sharp edges (a :class:`~symdecomp.schemes.sector.SharpVertex`), or ``k``: a boundary sector of k faces."""
     quad = scheme.face_rule is not None
     if isinstance(vertex, int) or type(vertex).__name__ == "int64":
@@ -285,7 +285,7 @@ def sector_matrix(scheme, vertex, rules=None) -> sp.Matrix:
     over the sector's faces; a dart's ``O`` uses the smooth vertex rule at valence ``n``.
     """
     scheme = check_scheme(scheme)
-    lay = _layout(scheme, vertex)
+    lay = vertex_layout(scheme, vertex)
     edge, face = mirror_stencils(scheme)
     w = sharp_weights(scheme, rules)
     P = sp.zeros(lay.size, lay.size)
@@ -391,7 +391,7 @@ def sector_decomposition(scheme, vertex, rules=None) -> SectorDecomposition:
     ``M(pi j/k)``, ``j = 1..k-1``, and on quads the face block ``j = k``; at a dart the sine blocks at
     ``2 pi j/n`` and the symmetric (cosine) part. ``rules`` overrides the scheme's sharp rules.
     """
-    lay = _layout(scheme, vertex)
+    lay = vertex_layout(scheme, vertex)
     P = sector_matrix(scheme, vertex, rules)
     if len(lay.sharp) == 1:
         columns = _dart_symmetric(lay)

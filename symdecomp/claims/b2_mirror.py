@@ -63,8 +63,9 @@ def _sine(scheme: Scheme) -> CheckResult:
                        steps=steps)
 
 
-def check_crease(scheme: Scheme, printed=CREASE_EIGENVALUES) -> CheckResult:
-    """The crease block's eigenvalues (the same for every ``k``) against ``printed``."""
+def check_crease(scheme: Scheme, printed=None) -> CheckResult:
+    """The crease block's eigenvalues (the same for every ``k``) against ``printed`` (default :data:`CREASE_EIGENVALUES`)."""
+    printed = CREASE_EIGENVALUES if printed is None else printed
     Cb = crease_block(scheme)
     x = sp.Symbol("x")
     computed = sp.factor(Cb.charpoly(x).as_expr())

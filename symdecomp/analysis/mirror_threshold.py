@@ -22,7 +22,17 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.algebraic_sign import exact_sign
-from symdecomp.analysis.mirror import THETA, THETA_K, crease_block, sector_decomposition, sector_matrix, sine_block, vertex_layout, vertex_of
+from symdecomp.analysis.mirror import (
+    THETA,
+    THETA_K,
+    crease_block,
+    mirror_stencils,
+    sector_decomposition,
+    sector_matrix,
+    sine_block,
+    vertex_layout,
+    vertex_of,
+)
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import sharp_subdivision_matrix
@@ -109,6 +119,7 @@ def charpoly_check(scheme, vertex, rules=None, matrix=None) -> tuple[bool, flint
     """
     scheme = check_scheme(scheme)
     lay = vertex_layout(scheme, vertex)
+    mirror_stencils(scheme)  # the blocks need the mirror: refuse, naming the weight, before refining
     if matrix is None:  # the matrix by refinement of the tagged mesh, which knows nothing of the blocks
         P = sharp_subdivision_matrix(scheme, vertex_of(scheme, vertex)) if rules is None else sector_matrix(scheme, vertex, rules)
     else:

@@ -92,6 +92,18 @@ def _crease(scheme: Scheme) -> CheckResult:
     return check_crease(scheme)
 
 
+def _both_lattices(scheme: Scheme, check) -> CheckResult:
+    """A statement about Catmull-Clark and Loop: ``check`` on ``scheme``, then on the other lattice's reference scheme."""
+    other = (TRIANGLE if scheme.lattice == QUAD else QUAD).reference()
+    first = check(scheme)
+    if first.status is not Status.PROVED:
+        return first
+    second = check(other)
+    if second.status is not Status.PROVED:
+        return second
+    return CheckResult(Status.PROVED, Text(first.evidence, "; and ", second.evidence), steps=first.steps + second.steps)
+
+
 def _table(th) -> sp.Matrix:
     return sp.Matrix([[sp.Symbol("k"), sp.Symbol("relation")]] + [[k, sp.Symbol(r)] for k, r in sorted(th.table.items())])
 
@@ -124,7 +136,7 @@ def check_first_k(scheme: Scheme, printed=None, rules=None) -> CheckResult:
     requires=(NO_FREE_PARAMETERS,),
 )
 def _first_k(scheme: Scheme) -> CheckResult:
-    return check_first_k(scheme)
+    return _both_lattices(scheme, check_first_k)
 
 
 def check_blz(scheme: Scheme, printed=None) -> CheckResult:
@@ -155,7 +167,7 @@ def check_blz(scheme: Scheme, printed=None) -> CheckResult:
     requires=(NO_FREE_PARAMETERS,),
 )
 def _blz(scheme: Scheme) -> CheckResult:
-    return check_blz(scheme)
+    return _both_lattices(scheme, check_blz)
 
 
 def _as_expr(poly) -> sp.Expr:

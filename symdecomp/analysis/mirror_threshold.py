@@ -54,7 +54,7 @@ def boundary_eigenvalue(scheme, rules=None) -> sp.Expr:
 
 
 def _in_c(expr) -> sp.Expr:
-    out = sp.expand(sp.sympify(expr).subs({sp.cos(THETA / 2): _H, sp.cos(THETA): C}))
+    out = sp.expand(sp.sympify(expr, strict=True).subs({sp.cos(THETA / 2): _H, sp.cos(THETA): C}))
     out = sp.expand(out.subs(_H**2, (1 + C) / 2))
     if out.has(THETA) or out.has(THETA_K):
         raise NotApplicableError(f"a sine block entry {expr} is not a polynomial in cos(theta)")
@@ -124,7 +124,7 @@ def charpoly_check(scheme, vertex, rules=None, matrix=None) -> tuple[bool, flint
         P = sharp_subdivision_matrix(scheme, vertex_of(scheme, vertex)) if rules is None else sector_matrix(scheme, vertex, rules)
     else:
         P = matrix
-    if any(not sp.sympify(e).is_Rational for e in P):
+    if any(not sp.sympify(e, strict=True).is_Rational for e in P):
         raise NotApplicableError("the matrix has irrational entries: FLINT's rational characteristic polynomial does not apply")
     full = flint.fmpq_mat([[flint.fmpq(int(e.p), int(e.q)) for e in row] for row in P.tolist()]).charpoly()
     dart = len(lay.sharp) == 1

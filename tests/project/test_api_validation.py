@@ -196,6 +196,8 @@ SCHEMES = [
     (sd.limit_frame, dict(mesh=CUBE, vertex=0)),
     (sd.sharp_subdivision_matrix, dict(vertex=BOUNDARY)),
     (sd.exact_sharp_matrix, dict(vertex=BOUNDARY)),
+    (sd.sector_decomposition, dict(vertex=BOUNDARY)),
+    (sd.sector_spectrum, dict(vertex=3)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

@@ -28,7 +28,8 @@ The guarantees of the local pool:
 forked child, in a reaper's group, and the first process only waits for it. SIGTERM or Ctrl-C
 there asks the child to stop (SIGTERM: its cleanup runs, workers and temporary files); a child
 still inside a native computation after :data:`GRACE_SECONDS` is killed (SIGKILL), and if the
-first process is killed outright, its reaper kills the child.
+first process is killed outright, its reaper does the same: SIGTERM (the child removes its
+temporary files and stops its workers), then SIGKILL :data:`GRACE_SECONDS` later.
 """
 
 from __future__ import annotations
@@ -57,12 +58,33 @@ GRACE_SECONDS = 3.0
 #: Seconds between the reaper's looks at its parent.
 REAPER_POLL = 0.2
 
+#: The reaper: once its parent is gone it kills its group; with a grace period (argv[2] seconds) it first
+#: asks with SIGTERM, so that a command whose program was killed still removes its temporary files.
 _REAPER = (
     "import os, signal, sys, time\n"
     "signal.signal(signal.SIGINT, signal.SIG_IGN)\n"
-    "parent = int(sys.argv[1])\n"
+    "signal.signal(signal.SIGTERM, signal.SIG_IGN)\n"
+    "parent, grace = int(sys.argv[1]), float(sys.argv[2])\n"
     "while os.getppid() == parent:\n"
     f"    time.sleep({REAPER_POLL})\n"
+    "def others():\n"  # a live process of this group other than this one (Linux: /proc; elsewhere: assume so)
+    "    try:\n"
+    "        names = [e for e in os.listdir('/proc') if e.isdigit() and int(e) != os.getpid()]\n"
+    "    except OSError:\n"
+    "        return True\n"
+    "    for e in names:\n"
+    "        try:\n"
+    "            fields = open(f'/proc/{e}/stat').read().rsplit(')', 1)[1].split()\n"
+    "        except (OSError, IndexError):\n"
+    "            continue\n"
+    "        if fields[0] not in 'ZX' and int(fields[2]) == os.getpid():\n"
+    "            return True\n"
+    "    return False\n"
+    "if grace > 0:\n"
+    "    os.killpg(0, signal.SIGTERM)\n"
+    "    end = time.monotonic() + grace\n"
+    "    while time.monotonic() < end and others():\n"
+    "        time.sleep(0.05)\n"
     "os.killpg(0, signal.SIGKILL)\n"
 )
 
@@ -204,10 +226,12 @@ def _local_map(func, items, shared, workers, order):
         _JOBS.pop(token, None)
 
 
-def _start_reaper() -> subprocess.Popen:
+def _start_reaper(grace: float = 0.0) -> subprocess.Popen:
     """A reaper for this process: a fresh interpreter leading a new process group, which kills the
-    group once this process is gone (processes join it with ``os.setpgid(0, reaper.pid)``)."""
-    return subprocess.Popen([sys.executable, "-I", "-S", "-c", _REAPER, str(os.getpid())], process_group=0,
+    group once this process is gone (processes join it with ``os.setpgid(0, reaper.pid)``); with a
+    ``grace`` (seconds) it sends SIGTERM first and SIGKILL that much later."""
+    return subprocess.Popen([sys.executable, "-I", "-S", "-c", _REAPER, str(os.getpid()), repr(float(grace))],
+                            process_group=0,
                             stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
 
@@ -223,7 +247,7 @@ def run_killable(func: Callable[[], int]) -> int:
         return func()
     sys.stdout.flush()
     sys.stderr.flush()
-    reaper = _start_reaper()
+    reaper = _start_reaper(GRACE_SECONDS)
     pid = os.fork()
     if pid == 0:  # the child: run the command in the reaper's group, then leave without the parent's cleanup
         code = 1

@@ -314,11 +314,19 @@ def parameter_values(declared: Iterable[sp.Symbol], given: Mapping | None, *, ow
 
 
 def _memory_limit() -> int:
+    """Half the machine's memory, at most 16 GiB, and no more than this process may map (``ulimit -v``)."""
     try:
         physical = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
     except (ValueError, OSError, AttributeError):  # pragma: no cover - not POSIX
         physical = 8 << 30
-    return min(physical // 2, 16 << 30)
+    limit = min(physical // 2, 16 << 30)
+    try:
+        import resource
+
+        mapped = resource.getrlimit(resource.RLIMIT_AS)[0]
+    except (ImportError, OSError, ValueError):  # pragma: no cover - not POSIX
+        return limit
+    return limit if mapped == resource.RLIM_INFINITY else min(limit, mapped)
 
 
 def check_memory(estimate: int, what: str) -> None:

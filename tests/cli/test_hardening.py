@@ -125,6 +125,23 @@ def test_the_k_ring_characteristic_polynomial_checks_memory_too(monkeypatch):
         entries_characteristic_polynomial(entries, 40)
 
 
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS as Linux counts it")
+def test_evaldata_beyond_the_memory_limit_of_the_process_is_refused_before_it_starts(tmp_path):
+    """Issue 25, item 5: under ``ulimit -v`` evaldata's estimate took only the machine's memory, so a run that could
+    not fit started (3..400: 20 minutes) and ended out of memory; the limit of the process counts now."""
+    import resource
+
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (2 << 30, 2 << 30))
+
+    run = subprocess.run([sys.executable, "-m", "symdecomp", "evaldata", "--n", "3:400", "--out", "x.bin"],
+                         cwd=tmp_path, env={**os.environ, "PYTHONPATH": str(ROOT)}, preexec_fn=limit,
+                         capture_output=True, text=True, timeout=60)
+    assert run.returncode == 2 and run.stderr.count("\n") == 1, run.stderr
+    assert "would need about 3 GiB of memory, more than the limit of 2 GiB" in run.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_derive_replaces_its_files_as_a_whole(tmp_path):
     owned = re.compile(r"^(main|section-[0-9-]+)\.tex$")
     out = tmp_path / "out"

@@ -120,3 +120,24 @@ def test_missing_matplotlib_is_one_line_exit_3(capsys, tmp_path, monkeypatch):
     assert main(["report", "loop", "--n", "3", "--out", str(tmp_path / "r.html")]) == 3
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "symdecomp[report]" in err
+
+
+@pytest.mark.slow
+@needs_pdflatex
+def test_a_report_from_a_hostile_scheme_file_compiles_and_reads_no_file(tmp_path):
+    """Issue 25, item 1, for ``report``: a scheme file whose name inputs a file if TeX reads it as TeX; the
+    document compiles, shows the name literally, and pdflatex reads no file but its own (its -recorder list)."""
+    doc = tmp_path / "doc"
+    doc.mkdir()
+    (doc / "secret.tex").write_text("LEAKED SECRET\n")  # where pdflatex runs, so \input{secret} would find it
+    text = (CORPUS / "catmull-clark.toml").read_text()
+    path = tmp_path / "hostile.toml"
+    path.write_text(text.replace('name = "catmull-clark"', "name = 'c $\\input{secret}$ z # 50% ^_^ ~ & {}'"))
+    assert main(["report", str(path), "--n", "3:3", "--out", str(doc / "r.tex"), "--budget", "10"]) == 0
+    run = subprocess.run(["pdflatex", "-recorder", "-interaction=nonstopmode", "-halt-on-error", "r.tex"], cwd=doc,
+                         capture_output=True, text=True, timeout=300)
+    log = (doc / "r.log").read_text(errors="replace")
+    assert run.returncode == 0 and (doc / "r.pdf").stat().st_size > 0, log[-2000:]
+    read = (doc / "r.fls").read_text(errors="replace")
+    assert "secret" not in read and "LEAKED" not in log and "Undefined control sequence" not in log
+    assert "\\textbackslash{}input\\{" in (doc / "r.tex").read_text(encoding="utf-8")

@@ -275,6 +275,22 @@ def test_the_workers_of_a_killed_command_die_within_a_second_or_two(command, tmp
     assert _gone_within(processes, 3) == []
 
 
+@linux
+@needs_two_cpus
+def test_a_killed_program_leaves_no_temporary_file(tmp_path):
+    """SIGKILL of the program while evaldata streams its file: the reaper asks the command to stop (SIGTERM), so it
+    removes its temporary file and its workers; it used to kill it at once and leave the ``.cc.dat.*.tmp`` file."""
+    proc, processes = _start_with_pool(COMMANDS["evaldata"], tmp_path)
+    deadline = time.monotonic() + 60
+    while not [p for p in tmp_path.iterdir() if p.suffix == ".tmp"] and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert [p.suffix for p in tmp_path.iterdir()] == [".tmp"]  # the file is being written
+    proc.kill()
+    proc.wait()
+    assert _gone_within(processes, GRACE_SECONDS + 2) == []
+    assert list(tmp_path.iterdir()) == []
+
+
 def _killable_command(tmp_path):
     """``charpoly 300``: one FLINT call of many seconds, which no Python signal handler interrupts."""
     proc = subprocess.Popen([sys.executable, "-m", "symdecomp", "charpoly", "300"], stdout=subprocess.DEVNULL,
@@ -311,7 +327,8 @@ def test_killing_the_program_kills_the_command(tmp_path):
     proc, processes = _killable_command(tmp_path)
     proc.kill()
     proc.wait()
-    assert len(processes) == 2 and _gone_within(processes, 3) == []  # its reaper and the command's process
+    # its reaper and the command's process: asked with SIGTERM, killed GRACE_SECONDS later (inside FLINT)
+    assert len(processes) == 2 and _gone_within(processes, GRACE_SECONDS + 2) == []
 
 
 def test_run_killable_returns_the_exit_code_and_names_a_killing_signal(capsys):

@@ -149,6 +149,27 @@ def test_a_dask_scheduler_at_an_address_gives_the_local_results(dask_scheduler):
     assert [r["n"] for r in there] == [3, 4, 5, 6] and there == here
 
 
+
+def _charpoly_at(weights, n):
+    from symdecomp.schemes.full_matrix import characteristic_polynomial
+
+    alpha, beta = weights
+    return str(characteristic_polynomial(catmull_clark(alpha, beta), n))
+
+
+def test_a_grid_of_tuning_weights_on_a_dask_scheduler_gives_the_local_results(dask_scheduler):
+    """A sweep over vertex weights (alpha, beta), not valences, goes through the same map (issue 24, item 5)."""
+    from fractions import Fraction
+
+    n = 5
+    grid = [(Fraction(a, 100), Fraction(b, 100)) for a in (4, 5, 7) for b in (1, 2)] + [(Fraction(3, 2 * n * n), Fraction(1, 4 * n * n))]
+    here = list(ordered_map(_charpoly_at, grid, shared={"n": n}, jobs=2))
+    there = list(ordered_map(_charpoly_at, grid, shared={"n": n}, executor=parse_executor(f"dask={dask_scheduler}")))
+    assert there == here and len(set(here)) == len(grid)  # every weight pair gives its own polynomial
+    # the last pair is Catmull-Clark's own vertex rule at n = 5: its polynomial is the standard scheme's
+    assert here[-1] == _charpoly_at((None, None), n)
+
+
 @pytest.mark.slow
 def test_check_certify_on_a_dask_local_cluster_gives_the_local_rows():
     pytest.importorskip("distributed")

@@ -6,13 +6,21 @@ crease vertices (:mod:`symdecomp.verify.c1_sharp`), per number of faces ``k``, w
 
 from __future__ import annotations
 
+import argparse
 import sys
 from typing import TYPE_CHECKING, NamedTuple
 
-import argparse
-
 from symdecomp.cli.common import (
-    LIMITS, Once, add_pool_options, add_scheme_option, flag, given, integer, print_json, progress, valence_range,
+    LIMITS,
+    Once,
+    add_pool_options,
+    add_scheme_option,
+    flag,
+    given,
+    integer,
+    print_json,
+    progress,
+    valence_range,
 )
 from symdecomp.errors import InvalidInputError
 

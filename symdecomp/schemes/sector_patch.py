@@ -151,7 +151,7 @@ def check_spline_sharp_rules(rules, owner: str = "scheme") -> None:
     so a sector's regular patches are splines only for those; other crease rules have no known patch.
     """
     have = (rules.crease_centre, rules.crease_end, rules.crease_edge)
-    if tuple(sp.sympify(w) for w in have) != (sp.Rational(3, 4), sp.Rational(1, 8), sp.Rational(1, 2)):
+    if tuple(sp.sympify(w, strict=True) for w in have) != (sp.Rational(3, 4), sp.Rational(1, 8), sp.Rational(1, 2)):
         raise NotApplicableError(
             f"{owner}: the crease rules {tuple(str(w) for w in have)} (vertex centre, vertex end, edge) are not the cubic "
             "B-spline's (3/4, 1/8, 1/2), so the regular patches at the boundary are not splines with phantom points")

@@ -180,8 +180,8 @@ def box_nets(values) -> list:
     parameters (``bezier_indices(4)`` order), as :func:`characteristic_nets` gives them.
     """
     out = []
-    for values, (o, e1, e2) in zip(values, _TRIANGLE_MAPS):
-        control = [values[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])] for a, b in BOX_POINTS]
+    for triangle, (o, e1, e2) in zip(values, _TRIANGLE_MAPS):
+        control = [triangle[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])] for a, b in BOX_POINTS]
         net = []
         for terms in _box_terms():
             total = control[terms[0][0]] * terms[0][1]

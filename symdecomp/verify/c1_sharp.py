@@ -79,8 +79,7 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN, SUBPATCH_CORNERS, check_spline_sharp_rules, sector_net
 from symdecomp.validate import check_bits, check_depth, check_type
-from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net
-from symdecomp.verify.bezier import triangle_jacobian_net
+from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net, triangle_jacobian_net
 from symdecomp.verify.c1 import C1Result, box_nets, c1_test, place_text
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
@@ -179,7 +178,7 @@ def _spectral(sm) -> tuple[SpectralResult, list]:
     lam = [ball_text(e[0]) for e in rest[:3]]
     if not abs(third[0]) < abs(top[1][0]):
         exact = (third[1] is top[1][1] and third[2] == top[1][2] and third[0].overlaps(top[1][0])
-                 and all(sp.sympify(x).is_Rational for row in third[1].rows for x in row))
+                 and all(sp.sympify(x, strict=True).is_Rational for row in third[1].rows for x in row))
         why = ("exactly equal (a multiple root of the same exact block): lambda_2 is not strictly dominant, which Zorin's "
                "sufficient conditions need" if exact else "not separated in modulus at this precision")
         return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_2 = {lam[1]} and lambda_3 = {lam[2]} are {why}"), top

@@ -102,7 +102,7 @@ def ball_matrix(rows) -> flint.acb_mat:
 
     def ball(e):
         if e not in cache:
-            e2 = sp.sympify(e)
+            e2 = sp.sympify(e, strict=True)
             if e2.free_symbols:
                 raise InvalidSchemeError(f"the sector matrix has the symbolic entry {e2}; give the scheme's parameters values")
             cache[e] = compile_expression(e2, (), "arb")()
@@ -154,7 +154,7 @@ def _block_values(rows) -> list[flint.acb]:
     """The eigenvalues of an exact square block (with multiplicity): exact roots if rational, else Arb's clusters."""
     if not rows:
         return []
-    if all(sp.sympify(e).is_Rational for row in rows for e in row):
+    if all(sp.sympify(e, strict=True).is_Rational for row in rows for e in row):
         m = flint.fmpq_mat([[flint.fmpq(int(sp.Rational(e).p), int(sp.Rational(e).q)) for e in row] for row in rows])
         poly = m.charpoly()
         out = []

@@ -44,17 +44,10 @@ import sympy as sp
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.lattice import QUAD, Lattice, lattice
 
-__all__ = ["ORIGIN", "sector_point", "sector_net", "phantom_reproduction", "check_spline_sharp_rules", "SUBPATCH_CORNERS"]
+__all__ = ["ORIGIN", "sector_point", "sector_net", "phantom_reproduction", "check_spline_sharp_rules"]
 
 #: The label of the sharp vertex ``O`` itself.
 ORIGIN = (0, 0, 0)
-#: The level-1 pieces of one face of the sector's characteristic ring: lower corners of the three quads
-#: (:data:`~symdecomp.analysis.characteristic.SUBPATCH_FACES`) or the three triangles
-#: (:data:`~symdecomp.analysis.characteristic.TRIANGLES`), by lattice name.
-SUBPATCH_CORNERS = {
-    "quad": ((1, 0), (1, 1), (0, 1)),
-    "triangle": (((1, 0), (2, 0), (1, 1)), ((1, 0), (1, 1), (0, 1)), ((0, 1), (1, 1), (0, 2))),
-}
 
 
 def _quad_point(k: int, s: int, u: int, v: int):

@@ -72,12 +72,13 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.triangle_bezier import bezier_indices
+from symdecomp.analysis.characteristic import SUBPATCH_FACES, TRIANGLES, triangle_patch_points
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.box_spline import DEGREE
 from symdecomp.schemes.lattice import QUAD
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.schemes.sector_patch import ORIGIN, SUBPATCH_CORNERS, check_spline_sharp_rules, sector_net
+from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, sector_net
 from symdecomp.validate import check_bits, check_depth, check_type
 from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net, triangle_jacobian_net
 from symdecomp.verify.c1 import C1Result, box_nets, c1_test, place_text
@@ -236,19 +237,16 @@ def _chi(sm, picks):
 
 def _nets(sm, chi) -> list:
     """The Bezier nets (complex) of the ring's ``3 k`` sub-patches, face by face (quads ``4 x 4``; triangles, 15)."""
-    corners = SUBPATCH_CORNERS[sm.lattice.name]
     out = []
     for s in range(sm.k):
         if sm.lattice is QUAD:
-            for a, b in corners:
+            for a, b in SUBPATCH_FACES:
                 pts = [(a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
                 vals = sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__)
                 out.append(bspline_to_bezier([vals[4 * i: 4 * i + 4] for i in range(4)]))
         else:
-            from symdecomp.analysis.characteristic import triangle_patch_points
-
             values = []
-            for t in corners:
+            for t in TRIANGLES:
                 pts = triangle_patch_points(t)
                 values.append(dict(zip(pts, sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__))))
             out += box_nets(values)

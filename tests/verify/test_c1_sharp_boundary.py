@@ -12,6 +12,7 @@ import math
 import pytest
 import sympy as sp
 
+from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
@@ -19,7 +20,6 @@ from symdecomp.verify.c1_sharp import c1_sharp_test
 from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
-from .sharp_schemes import blz
 
 FAST = range(1, 9)
 SLOW = range(9, 17)
@@ -69,6 +69,11 @@ def test_standard_boundary_rules(scheme, k):
 @pytest.mark.parametrize("k", SLOW)
 def test_standard_boundary_rules_many_faces(scheme, k):
     _check_standard(scheme, k)
+
+
+def blz(lattice):
+    """The shipped scheme files with Biermann-Levin-Zorin's near-edge rule."""
+    return load_scheme("catmull-clark-blz" if lattice == "quad" else "loop-blz")
 
 
 def _check_blz(scheme, k):

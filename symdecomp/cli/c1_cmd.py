@@ -7,6 +7,7 @@ crease vertices (:mod:`symdecomp.verify.c1_sharp`), per number of faces ``k``, w
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -46,7 +47,12 @@ def register(sub) -> None:
         "Loop-type schemes, in Bernstein-Bezier form, all coefficients of one sign, "
         "in interval arithmetic with de Casteljau subdivision) and injectivity (winding number 1 of the "
         "ring's inner boundary). Prints 'C1 certified', 'not C1' with the failing condition, or "
-        "'undecided' with what would decide it. Exit status 1 unless every valence is certified C1.",
+        "'undecided' with what would decide it. Exit status 1 unless every valence is certified C1. "
+        "With --boundary or --corner (and --k A:B) or --crease K1,K2: Zorin's conditions at sharp vertices, per "
+        "sector between sharp edges: the sector's exact 2-ring matrix (the scheme's [sharp] rules; e.g. --scheme "
+        "catmull-clark-blz), the tangent of the boundary curve among the two subdominant eigenvectors, the sector's "
+        "characteristic map regular (phantom points at the sharp rays) and injective (the argument it sweeps between "
+        "the two rays, 0 to 2 pi in the Jacobian's orientation), and at a corner with --angle a convex or concave image.",
     )
     p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, metavar="A:B",
                    help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]}); or a sharp "
@@ -63,7 +69,7 @@ def register(sub) -> None:
     p.add_argument("--angle", type=_angle, action=Once, metavar="EXPR",
                    help="the corner's angle for --corner, e.g. pi/2 (convex) or 3*pi/2 (concave): Biermann-Levin-Zorin's "
                    "theta_k = angle/k in the rules, and the characteristic map must open convex or concave to match")
-    p.add_argument("--sharpness", type=_sharpness, action=Once, metavar="S",
+    p.add_argument("--sharpness", type=_sharpness, action=Once, metavar="S", default=math.inf,
                    help="sharpness of the crease for --crease (default inf; a finite S is semi-sharp)")
     p.add_argument("--depth", type=_depth, action=Once, default=6,
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "

@@ -89,8 +89,8 @@ from symdecomp.verify.result import C1Verdict
 __all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD"]
 
 #: The method, as reported with each verdict.
-SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots or "
-                "Arb clusters); tangent of the boundary curve among the subdominant eigenvectors; Jacobian of the sector's "
+SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
+                "certified roots of the characteristic polynomial factored in cos(theta_k)); tangent of the boundary curve among the subdominant eigenvectors; Jacobian of the sector's "
                 "spline ring with phantom points in Bernstein-Bezier form (Arb, de Casteljau); argument swept between the "
                 "two sharp rays")
 
@@ -337,7 +337,11 @@ def _injective(sm, vertex, sign, dirs, sweeps) -> tuple[C1Verdict, str, float | 
 
 def _sector_test(scheme, vertex, sector: int, max_depth: int) -> _Sector:
     sm = sector_matrices(scheme, vertex, sector)
-    spectral, picks = _spectral(sm)
+    try:
+        spectral, picks = _spectral(sm)
+    except ValueError as exc:  # Arb could not isolate a block's eigenvalues at this precision
+        spectral = SpectralResult(sm.k, C1Verdict.UNDECIDED, f"the spectrum is not certified at this precision ({exc})")
+        return _Sector(C1Verdict.UNDECIDED, spectral.reason, spectral)
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
     tangent = _tangent(sm, picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:  # decided by lambda_1, lambda_2 alone, even if lambda_2 ties lambda_3

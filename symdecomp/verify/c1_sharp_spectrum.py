@@ -12,9 +12,10 @@ entry). Then the matrix is the direct sum of its even and odd parts (vectors wit
 ``x[P p] = -x[p]``), and each part is block lower triangular: the new 1-ring reads only the old 1-ring
 (checked exactly), the outer points hold only the regular and crease rules. The spectrum is the union of
 the four blocks' spectra: rational blocks exactly (FLINT's characteristic polynomial and its certified
-complex roots with their exact multiplicities), blocks with irrational weights (BLZ's ``cos(theta_k)``) by
-Arb's certified eigenvalue clusters (``acb_mat.eig(multiple=True)``: a cluster of ``m`` equal balls holds
-``m`` eigenvalues). An eigenvalue simple in its part has one eigenvector there, which is computed
+complex roots with their exact multiplicities), blocks with weights in one ``cos(t)`` (BLZ's ``cos(theta_k)``)
+from their characteristic polynomial in ``x`` and ``c = cos(t)``, factored over the rationals (exact
+multiplicities, each factor's roots certified by Arb), other blocks by Arb's certified eigenvalue clusters
+(``acb_mat.eig(multiple=True)``: a cluster of ``m`` equal balls holds ``m`` eigenvalues). An eigenvalue simple in its part has one eigenvector there, which is computed
 rigorously (a null vector of the 1-ring block by a certified solve, lifted to the outer points), so two
 subdominant eigenvalues of *different* parts need not be separated from each other (equal or not, the
 eigenspace is spanned by the two vectors), only from the rest.
@@ -161,6 +162,42 @@ def _block_values(rows) -> list[flint.acb]:
         for factor, mult in poly.factor()[1]:
             out += [r for r, m2 in factor.complex_roots() for _ in range(m2 * mult)]
         return out
+    return _algebraic_values(rows)
+
+
+def _roots(poly: flint.acb_poly) -> list[flint.acb]:
+    """Arb's certified roots of a squarefree ball polynomial, at up to 8 times the working precision (``ValueError`` if not)."""
+    if poly.degree() < 1:
+        return []
+    for scale in (1, 2, 4, 8):
+        try:
+            return poly.roots(maxprec=scale * 4 * flint.ctx.prec)
+        except ValueError:
+            continue
+    raise ValueError(f"the roots of a degree-{poly.degree()} factor are not isolated")
+
+
+def _algebraic_values(rows) -> list[flint.acb]:
+    """Eigenvalues of a block whose weights are rational in one number ``cos(t)`` (BLZ's ``cos(theta_k)``), with multiplicity.
+
+    The characteristic polynomial is exact in ``x`` and a symbol ``c`` for that number, factored over the rationals;
+    each factor's roots are Arb's certified roots of its coefficients at ``c = cos(t)`` (a factor repeated ``m`` times
+    gives its roots ``m`` times). Other blocks (or a factor whose roots are not isolated): Arb's eigenvalue clusters.
+    """
+    entries = [sp.sympify(e, strict=True) for row in rows for e in row]
+    atoms = set().union(*(e.atoms(sp.cos, sp.sin) for e in entries))
+    x, c = sp.Symbol("x"), sp.Dummy("c")
+    if len(atoms) == 1:
+        (atom,) = atoms
+        M = sp.Matrix(rows).xreplace({atom: c})
+        if all(e.is_polynomial(c) for e in M):
+            value = compile_expression(atom, (), "arb")()
+            out = []
+            for factor, mult in sp.factor_list(M.charpoly(x).as_expr(), x, c)[1]:
+                coeffs = sp.Poly(factor, x).all_coeffs()[::-1]
+                poly = flint.acb_poly([compile_expression(a, (c,), "arb")(value) for a in coeffs])
+                out += [r for r in _roots(poly) for _ in range(mult)]
+            return out
     return list(ball_matrix(rows).eig(multiple=True))
 
 

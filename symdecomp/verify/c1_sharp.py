@@ -90,7 +90,8 @@ __all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
-                "certified roots of the characteristic polynomial factored in cos(theta_k)); tangent of the boundary curve among the subdominant eigenvectors; Jacobian of the sector's "
+                "certified roots of the characteristic polynomial factored in cos(theta_k)); tangent of the boundary curve "
+                "among the subdominant eigenvectors; Jacobian of the sector's "
                 "spline ring with phantom points in Bernstein-Bezier form (Arb, de Casteljau); argument swept between the "
                 "two sharp rays")
 

@@ -15,8 +15,8 @@ the four blocks' spectra: rational blocks exactly (FLINT's characteristic polyno
 complex roots with their exact multiplicities), blocks with weights in one ``cos(t)`` (BLZ's ``cos(theta_k)``)
 from their characteristic polynomial in ``x`` and ``c = cos(t)``, factored over the rationals (exact
 multiplicities, each factor's roots certified by Arb), other blocks by Arb's certified eigenvalue clusters
-(``acb_mat.eig(multiple=True)``: a cluster of ``m`` equal balls holds ``m`` eigenvalues). An eigenvalue simple in its part has one eigenvector there, which is computed
-rigorously (a null vector of the 1-ring block by a certified solve, lifted to the outer points), so two
+(``acb_mat.eig(multiple=True)``: a cluster of ``m`` equal balls holds ``m`` eigenvalues). An eigenvalue
+simple in its part has one eigenvector there, which is computed rigorously (a null vector of the 1-ring block by a certified solve, lifted to the outer points), so two
 subdominant eigenvalues of *different* parts need not be separated from each other (equal or not, the
 eigenspace is spanned by the two vectors), only from the rest.
 

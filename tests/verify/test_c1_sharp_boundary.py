@@ -20,7 +20,6 @@ from symdecomp.verify.c1_sharp import c1_sharp_test
 from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
-
 FAST = range(1, 9)
 SLOW = range(9, 17)
 

@@ -6,19 +6,19 @@ of an infinitely sharp crease) is cut out of the exact subdivision matrix of its
 :class:`SectorMatrices`: the rows and columns of the sector's own points, which must not read any point
 of another sector (exactly: the sharp rays decouple the sectors, else the test does not apply).
 
-**Mirror blocks.** The sector has no rotational symmetry, but when the rules are symmetric the mirror
-``(s, u, v) -> (k - 1 - s, v, u)`` (rays ``s -> k - s``) commutes with the matrix (checked exactly, entry by
-entry). Then the matrix is the direct sum of its even and odd parts (vectors with ``x[P p] = x[p]`` and
-``x[P p] = -x[p]``), and each part is block lower triangular: the new 1-ring reads only the old 1-ring
-(checked exactly), the outer points hold only the regular and crease rules. The spectrum is the union of
-the four blocks' spectra: rational blocks exactly (FLINT's characteristic polynomial and its certified
-complex roots with their exact multiplicities), blocks with weights in one ``cos(t)`` (BLZ's ``cos(theta_k)``)
-from their characteristic polynomial in ``x`` and ``c = cos(t)``, factored over the rationals (exact
-multiplicities, each factor's roots certified by Arb), other blocks by Arb's certified eigenvalue clusters
-(``acb_mat.eig(multiple=True)``: a cluster of ``m`` equal balls holds ``m`` eigenvalues). An eigenvalue
-simple in its part has one eigenvector there, which is computed rigorously (a null vector of the 1-ring block by a certified solve, lifted to the outer points), so two
-subdominant eigenvalues of *different* parts need not be separated from each other (equal or not, the
-eigenspace is spanned by the two vectors), only from the rest.
+**Mirror blocks.** The sector has no rotational symmetry, but when the rules are symmetric the mirror ``(s, u,
+v) -> (k - 1 - s, v, u)`` (rays ``s -> k - s``) commutes with the matrix (checked exactly, entry by entry).
+Then the matrix is the direct sum of its even and odd parts (vectors with ``x[P p] = x[p]`` and ``x[P p] =
+-x[p]``), and each part is block lower triangular: the new 1-ring reads only the old 1-ring (checked exactly),
+the outer points hold only the regular and crease rules. The spectrum is the union of the four blocks'
+spectra: rational blocks exactly (FLINT's characteristic polynomial and its certified complex roots with their
+exact multiplicities), blocks with weights in one ``cos(t)`` (BLZ's ``cos(theta_k)``) from their
+characteristic polynomial in ``x`` and ``c = cos(t)``, factored over the rationals (exact multiplicities, each
+factor's roots certified by Arb), other blocks by Arb's certified eigenvalue clusters
+(``acb_mat.eig(multiple=True)``: a cluster of ``m`` equal balls holds ``m`` eigenvalues). An eigenvalue simple
+in its part has one eigenvector there, which is computed rigorously (a null vector of the 1-ring block by a
+certified solve, lifted to the outer points), so two subdominant eigenvalues of *different* parts need not be
+separated from each other (equal or not, the eigenspace is spanned by the two vectors), only from the rest.
 
 **Real and simple.** An eigenvalue's ball that holds one eigenvalue (counted with multiplicity) and whose
 complex conjugate meets no other eigenvalue's ball is real: the conjugate of that eigenvalue is an

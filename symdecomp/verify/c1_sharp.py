@@ -219,7 +219,7 @@ def _chi(sm, picks):
     vecs = [_real_vector(sm, p) for p in picks]
     if any(v is None for v in vecs):
         return None, None
-    R = ball_matrix(sm.refine.tolist())
+    R = ball_matrix(sm.refine.tolist(), sm.weight)
     index = {lab: i for i, lab in enumerate(sm.labels)}
     fine = []
     for v in vecs:

@@ -37,8 +37,12 @@ from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
 from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 
-__all__ = ["SectorMatrices", "sector_matrices", "mirror_label", "Eigenpart", "sector_eigenvalues", "sector_eigenvector",
+__all__ = ["NEAR", "SectorMatrices", "sector_matrices", "mirror_label", "Eigenpart", "sector_eigenvalues", "sector_eigenvector",
            "ball_matrix"]
+
+
+#: The near-edge rule's weight on the edge's other end, as a symbol where its value is irrational.
+NEAR = sp.Symbol("w_near")
 
 
 @dataclass(frozen=True)
@@ -58,6 +62,8 @@ class SectorMatrices:
     refine: sp.ImmutableMatrix
     #: ``O`` is a corner (interpolated).
     corner: bool
+    #: The value of :data:`NEAR` in :attr:`matrix` and :attr:`refine` (``None``: they are exact numbers).
+    weight: sp.Expr | None = None
 
 
 def mirror_label(label: tuple, k: int) -> tuple:
@@ -68,10 +74,22 @@ def mirror_label(label: tuple, k: int) -> tuple:
     return (k - s, u, 0) if v == 0 else (k - 1 - s, v, u)
 
 
-def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatrices:
-    """The matrices of sector ``sector`` of ``vertex`` (see the module docstring)."""
-    k = vertex.sectors[sector]
-    start = sum(vertex.sectors[:sector])
+def _near_weight(scheme, vertex: SharpVertex, k: int):
+    """The near-edge rule's weight on the edge's other end in a sector of ``k`` faces, when it is irrational (else ``None``).
+
+    BLZ's ``theta_k = pi/k``, or ``angle/k`` at a corner given its angle (:mod:`symdecomp.schemes.sharp_refinement`).
+    """
+    rules = scheme.sharp
+    if rules.near_edge_centre is None:
+        return None
+    theta = (vertex.angle if vertex.angle is not None else sp.pi) / k
+    weight = rules.near_edge(theta, k)[1]
+    return None if weight.is_Rational else weight
+
+
+def _extract(scheme, vertex: SharpVertex, sector: int) -> tuple:
+    """``(refine, coarse labels, fine labels)`` of one sector, from the vertex's exact 3-ring matrix under ``scheme``."""
+    k, start = vertex.sectors[sector], sum(vertex.sectors[:sector])
     local = SharpVertex.boundary(k, vertex.lattice)
     full = sharp_subdivision_matrix(scheme, vertex, rings=3)
     index = {lab: i for i, lab in enumerate(vertex.ring_labels(3))}
@@ -83,30 +101,73 @@ def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatri
         s = s + start
         return index[(s % vertex.faces if vertex.closed else s, u, v)]
 
-    fine = local.ring_labels(3)
-    coarse = local.ring_labels(2)
+    fine, coarse = local.ring_labels(3), local.ring_labels(2)
     rows, cols = [glob(lab) for lab in fine], [glob(lab) for lab in coarse]
     inside = set(cols)
     for r, lab in zip(rows, fine):
-        outside = [c for c in range(full.cols) if c not in inside and full[r, c] != 0]
-        if outside:
+        if any(full[r, c] != 0 for c in range(full.cols) if c not in inside):
             raise NotApplicableError(
                 f"sector {sector} of the vertex is not separated from the rest: the new point {lab} reads points outside "
                 "the sector's 2-ring (the sector test needs infinitely sharp edges between the sectors)")
-    refine = full.extract(rows, cols)
-    return SectorMatrices(k, vertex.lattice, coarse, refine[: len(coarse), :], fine, refine, vertex.corner)
+    return full.extract(rows, cols), coarse, fine
 
 
-def ball_matrix(rows) -> flint.acb_mat:
-    """An exact sympy matrix (list of rows) as an Arb matrix at the working precision (each distinct entry compiled once)."""
+def _affine(e: sp.Expr, weight_terms: dict) -> sp.Expr | None:
+    """``p + q NEAR`` with rationals ``p, q`` if the number ``e`` is ``p + q w`` (``w`` given by its terms), else ``None``.
+
+    Exact: ``e`` and ``w`` expanded into rational multiples of the same irrational terms (sympy's canonical radicals or
+    cosines); ``q`` is the ratio of their coefficients, the same on every term.
+    """
+    terms = sp.expand(e).as_coefficients_dict()
+    p = terms.pop(sp.Integer(1), sp.Integer(0))
+    if not terms:
+        return p
+    if set(terms) != set(weight_terms) - {sp.Integer(1)}:
+        return None
+    ratios = {sp.Rational(terms[t]) / sp.Rational(weight_terms[t]) for t in terms}
+    if len(ratios) != 1:
+        return None
+    q = ratios.pop()
+    return p - q * weight_terms.get(sp.Integer(1), 0) + q * NEAR
+
+
+def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatrices:
+    """The matrices of sector ``sector`` of ``vertex`` (see the module docstring).
+
+    Where the sector's near-edge weight ``w`` is irrational (BLZ's ``3/8 - cos(pi/k)/4``) and every entry is
+    ``p + q w`` with rational ``p, q`` (the refinement is linear in the rules' weights, and the near-edge rule's two
+    weights have a rational sum), the matrices are given in the symbol :data:`NEAR`, with :attr:`SectorMatrices.weight`.
+    """
+    k = vertex.sectors[sector]
+    weight = _near_weight(scheme, vertex, k)
+    refine, coarse, fine = _extract(scheme, vertex, sector)
+    if weight is not None:
+        weight_terms = sp.expand(weight).as_coefficients_dict()
+        if all(v.is_Rational for v in weight_terms.values()):
+            affine = [[_affine(e, weight_terms) for e in row] for row in refine.tolist()]
+            if all(e is not None for row in affine for e in row):
+                refine = sp.ImmutableMatrix(affine)
+            else:
+                weight = None
+        else:  # pragma: no cover - a weight sympy does not expand into rational multiples of radicals
+            weight = None
+    return SectorMatrices(k, vertex.lattice, coarse, refine[: len(coarse), :], fine, refine, vertex.corner, weight)
+
+
+def ball_matrix(rows, weight=None) -> flint.acb_mat:
+    """An exact sympy matrix (list of rows) as an Arb matrix at the working precision (each distinct entry compiled once).
+
+    ``weight``: the value of :data:`NEAR` where the entries are affine in it (``None``: no symbol).
+    """
     cache: dict = {}
+    value = None if weight is None else compile_expression(weight, (), "arb")()
 
     def ball(e):
         if e not in cache:
             e2 = sp.sympify(e, strict=True)
-            if e2.free_symbols:
+            if e2.free_symbols - {NEAR} or (e2.has(NEAR) and value is None):
                 raise InvalidSchemeError(f"the sector matrix has the symbolic entry {e2}; give the scheme's parameters values")
-            cache[e] = compile_expression(e2, (), "arb")()
+            cache[e] = compile_expression(e2, (NEAR,), "arb")(value)
         return cache[e]
 
     return flint.acb_mat([[ball(e) for e in row] for row in rows])
@@ -151,54 +212,58 @@ def _parts(sm: SectorMatrices) -> list[Eigenpart]:
     return [p for p in out if p.basis]
 
 
-def _block_values(rows) -> list[flint.acb]:
-    """The eigenvalues of an exact square block (with multiplicity): exact roots if rational, else Arb's clusters."""
+def _block_values(rows, weight=None) -> list[flint.acb]:
+    """The eigenvalues of an exact square block, with multiplicity (see the module docstring)."""
     if not rows:
         return []
     if all(sp.sympify(e, strict=True).is_Rational for row in rows for e in row):
         m = flint.fmpq_mat([[flint.fmpq(int(sp.Rational(e).p), int(sp.Rational(e).q)) for e in row] for row in rows])
-        poly = m.charpoly()
         out = []
-        for factor, mult in poly.factor()[1]:
+        for factor, mult in m.charpoly().factor()[1]:
             out += [r for r, m2 in factor.complex_roots() for _ in range(m2 * mult)]
         return out
-    return _algebraic_values(rows)
+    if weight is not None and all(sp.sympify(e, strict=True).free_symbols <= {NEAR} for row in rows for e in row):
+        return _algebraic_values(rows, NEAR, weight)
+    entries = [sp.sympify(e, strict=True) for row in rows for e in row]
+    atoms = set().union(*(e.atoms(sp.cos, sp.sin) for e in entries))
+    if len(atoms) == 1:  # a user's weight in one cos(theta_k) that sympy left as it is
+        (atom,) = atoms
+        c = sp.Dummy("c")
+        M = sp.Matrix(rows).xreplace({atom: c})
+        if all(e.is_polynomial(c) for e in M):
+            return _algebraic_values(M.tolist(), c, atom)
+    return list(ball_matrix(rows).eig(multiple=True))
 
 
-def _roots(poly: flint.acb_poly) -> list[flint.acb]:
-    """Arb's certified roots of a squarefree ball polynomial, at up to 8 times the working precision (``ValueError`` if not)."""
+def _roots(poly: flint.acb_poly, bits: int) -> list[flint.acb]:
+    """Arb's certified roots of a squarefree ball polynomial, refined to about ``2^-bits`` (``ValueError`` if not isolated)."""
     if poly.degree() < 1:
         return []
     for scale in (1, 2, 4, 8):
         try:
-            return poly.roots(maxprec=scale * 4 * flint.ctx.prec)
+            return poly.roots(tol=flint.arb(2) ** -bits, maxprec=scale * 4 * flint.ctx.prec)
         except ValueError:
             continue
     raise ValueError(f"the roots of a degree-{poly.degree()} factor are not isolated")
 
 
-def _algebraic_values(rows) -> list[flint.acb]:
-    """Eigenvalues of a block whose weights are rational in one number ``cos(t)`` (BLZ's ``cos(theta_k)``), with multiplicity.
+def _algebraic_values(rows, symbol: sp.Symbol, value: sp.Expr) -> list[flint.acb]:
+    """Eigenvalues of a block polynomial in ``symbol``, at ``symbol = value``, with multiplicity.
 
-    The characteristic polynomial is exact in ``x`` and a symbol ``c`` for that number, factored over the rationals;
-    each factor's roots are Arb's certified roots of its coefficients at ``c = cos(t)`` (a factor repeated ``m`` times
-    gives its roots ``m`` times). Other blocks (or a factor whose roots are not isolated): Arb's eigenvalue clusters.
+    The characteristic polynomial is exact in ``x`` and ``symbol``, factored over the rationals; each factor's roots are
+    Arb's certified roots of its coefficients at ``value`` (a factor repeated ``m`` times gives its roots ``m`` times).
     """
-    entries = [sp.sympify(e, strict=True) for row in rows for e in row]
-    atoms = set().union(*(e.atoms(sp.cos, sp.sin) for e in entries))
-    x, c = sp.Symbol("x"), sp.Dummy("c")
-    if len(atoms) == 1:
-        (atom,) = atoms
-        M = sp.Matrix(rows).xreplace({atom: c})
-        if all(e.is_polynomial(c) for e in M):
-            value = compile_expression(atom, (), "arb")()
-            out = []
-            for factor, mult in sp.factor_list(M.charpoly(x).as_expr(), x, c)[1]:
-                coeffs = sp.Poly(factor, x).all_coeffs()[::-1]
-                poly = flint.acb_poly([compile_expression(a, (c,), "arb")(value) for a in coeffs])
-                out += [r for r in _roots(poly) for _ in range(mult)]
-            return out
-    return list(ball_matrix(rows).eig(multiple=True))
+    x = sp.Symbol("x")
+    out = []
+    factors = sp.factor_list(sp.Matrix(rows).charpoly(x).as_expr(), x, symbol)[1]
+    bits = flint.ctx.prec
+    with flint.ctx.workprec(4 * bits):  # the coefficients are polynomials in the value: cancellation
+        ball = compile_expression(value, (), "arb")()
+        for factor, mult in factors:
+            coeffs = sp.Poly(factor, x).all_coeffs()[::-1]
+            poly = flint.acb_poly([compile_expression(a, (symbol,), "arb")(ball) for a in coeffs])
+            out += [r for r in _roots(poly, bits) for _ in range(mult)]
+    return [+r for r in out]  # rounded to the working precision
 
 
 def sector_eigenvalues(sm: SectorMatrices) -> list[tuple[flint.acb, Eigenpart, bool]]:
@@ -208,8 +273,8 @@ def sector_eigenvalues(sm: SectorMatrices) -> list[tuple[flint.acb, Eigenpart, b
         m = part.inner or len(part.basis)
         top = [row[:m] for row in part.rows[:m]]
         rest = [row[m:] for row in part.rows[m:]]
-        out += [(x, part, True) for x in _block_values(top)]
-        out += [(x, part, False) for x in _block_values(rest)]
+        out += [(x, part, True) for x in _block_values(top, sm.weight)]
+        out += [(x, part, False) for x in _block_values(rest, sm.weight)]
     return out
 
 
@@ -240,7 +305,7 @@ def sector_eigenvector(sm: SectorMatrices, part: Eigenpart, value: flint.acb, in
     ``in_ring``: the eigenvalue is the 1-ring block's (the outer part is then solved from it); an eigenvalue
     of the outer block has an eigenvector that vanishes on the 1-ring.
     """
-    A = ball_matrix(part.rows)
+    A = ball_matrix(part.rows, sm.weight)
     size, m = len(part.basis), part.inner or len(part.basis)
     if in_ring:
         inner = flint.acb_mat([[A[r, c] - (value if r == c else 0) for c in range(m)] for r in range(m)])

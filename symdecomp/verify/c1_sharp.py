@@ -46,8 +46,8 @@ proper, and ``arg chi`` is bounded on ``K`` (``A`` keeps every quadrant), so ove
 half-planes ``F`` is a covering with a constant number of sheets which is 0 far away: nothing of ``K`` maps
 outside the strip between the lines. Over the open strip ``F`` is a covering of a simply connected set,
 crossing a line adds one sheet for the boundary points, so ``F`` is a homeomorphism of ``K`` onto the strip
-when ``sign(Delta) = s`` (near ray 0 the inside of ``K`` lies on the strip's side). Hence **``chi`` is
-injective iff ``0 < s Delta < 2 pi``**; ``s Delta < 0`` means the sector folds over its boundary (an inner
+when ``sign(Delta) = s`` (near ray 0 the inside of ``K`` lies on the strip's side). Hence ``chi`` is
+injective iff ``0 < s Delta < 2 pi``; ``s Delta < 0`` means the sector folds over its boundary (an inner
 point and a boundary point share an image) and ``s Delta > 2 pi`` means it overlaps itself: not injective.
 
 **Crease vertices** (infinitely sharp) are two sectors that do not read each other's points (checked

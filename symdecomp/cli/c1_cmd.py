@@ -76,7 +76,8 @@ def register(sub) -> None:
                    "in four, or a triangle twice by bisection)")
     flag(p, "--json",
                    help='print a list with one object per valence: {"n", "verdict" (c1/not-c1/undecided), "reason", '
-                   '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}')
+                   '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}; at sharp vertices also '
+                   '"vertex", "lambdas" (lambda_1, lambda_2) and "opening_over_pi"')
     add_scheme_option(p)
     add_pool_options(p)
     p.set_defaults(func=run)

@@ -33,7 +33,7 @@ theorems; condition 5 is BLZ's corner-type requirement as their examples state i
 tables could not be read, so the verdicts (docs, guide page on ``c1``) are compared with the abstracts'
 statements only: the standard rules fail at boundary vertices with many faces (here Catmull-Clark from
 ``k = 5``, Loop from ``k = 7``, with ``k = 4`` and ``k = 6`` undecided: ``lambda_2 = lambda_3 = 1/2`` exactly)
-and at concave corners; BLZ's near-edge rule certifies every boundary ``k`` tried (1 to 32), but alone (the
+and at concave corners; BLZ's near-edge rule certifies every boundary ``k`` tried (1 to 16 for both, 32 for Catmull-Clark), but alone (the
 part of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave
 corner C1.
 

@@ -36,7 +36,8 @@ nothing else.
                    boundaries, creases and corners and OpenSubdiv's sharpness arithmetic (``sharp``),
                    refinement of meshes with tagged sharp edges and vertices (``sharp_refinement``),
                    a boundary, crease, corner or dart vertex and its exact subdivision matrix
-                   (``sector``), schemes from TOML
+                   (``sector``), the regular patches next to a sharp ray with phantom points
+                   (``sector_patch``), schemes from TOML
                    files and by name (``files``), Loop's scheme (``loop``), Stam's patch
                    matrices, (2N+8)-point and Loop's (N+6)-point (``patch``), the regular Loop
                    patch (quartic box spline) in Bezier form (``box_spline``), a modeller's polygon
@@ -74,7 +75,9 @@ nothing else.
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,
-                   ``c1_spectrum``, Bernstein-Bezier nets ``bezier``); dyadic limit positions for
+                   ``c1_spectrum``, Bernstein-Bezier nets ``bezier``), at boundary, crease and
+                   corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
+                   by mirror blocks ``c1_sharp_spectrum``); dyadic limit positions for
                    the patch evaluator (``patch_eval``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and
@@ -174,6 +177,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.schemes.scheme": ("Scheme", "Stencil", "VertexRule", "catmull_clark", "subdivision_matrix"),
     "symdecomp.verify.artifacts": ("ArtifactIndicators", "artifact_indicators"),
     "symdecomp.verify.c1": ("C1Result", "c1_test"),
+    "symdecomp.verify.c1_sharp": ("SharpC1Result", "c1_sharp_test"),
     "symdecomp.verify.certify": ("Certificate", "certify"),
     "symdecomp.verify.numeric": ("NumericCheck", "numeric_check"),
     "symdecomp.verify.result": ("C1Verdict", "CrossCheckResult", "CrossCheckStatus"),

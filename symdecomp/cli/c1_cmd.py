@@ -1,11 +1,29 @@
-"""``symdecomp c1 --n 3:64``: Reif's sufficient test for C1 at an extraordinary vertex, certified, per valence."""
+"""``symdecomp c1 --n 3:64``: Reif's sufficient test for C1 at an extraordinary vertex, certified, per valence.
+
+``symdecomp c1 --boundary --k 1:16`` (``--corner``, ``--crease K1,K2``): Zorin's conditions at boundary, corner and
+crease vertices (:mod:`symdecomp.verify.c1_sharp`), per number of faces ``k``, with the scheme's ``[sharp]`` rules.
+"""
 
 from __future__ import annotations
 
+import argparse
+import math
 import sys
 from typing import TYPE_CHECKING, NamedTuple
 
-from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, integer, print_json, progress, valence_range
+from symdecomp.cli.common import (
+    LIMITS,
+    Once,
+    add_pool_options,
+    add_scheme_option,
+    flag,
+    given,
+    integer,
+    print_json,
+    progress,
+    valence_range,
+)
+from symdecomp.errors import InvalidInputError
 
 if TYPE_CHECKING:
     from symdecomp.schemes.scheme import Scheme
@@ -29,19 +47,84 @@ def register(sub) -> None:
         "Loop-type schemes, in Bernstein-Bezier form, all coefficients of one sign, "
         "in interval arithmetic with de Casteljau subdivision) and injectivity (winding number 1 of the "
         "ring's inner boundary). Prints 'C1 certified', 'not C1' with the failing condition, or "
-        "'undecided' with what would decide it. Exit status 1 unless every valence is certified C1.",
+        "'undecided' with what would decide it. Exit status 1 unless every valence is certified C1. "
+        "With --boundary or --corner (and --k A:B) or --crease K1,K2: Zorin's conditions at sharp vertices, per "
+        "sector between sharp edges: the sector's exact 2-ring matrix (the scheme's [sharp] rules; e.g. --scheme "
+        "catmull-clark-blz), the tangent of the boundary curve among the two subdominant eigenvectors, the sector's "
+        "characteristic map regular (phantom points at the sharp rays) and injective (the argument it sweeps between "
+        "the two rays, 0 to 2 pi in the Jacobian's orientation), and at a corner with --angle a convex or concave image.",
     )
-    p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, required=True, metavar="A:B",
-                   help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]})")
+    p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, metavar="A:B",
+                   help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]}); or a sharp "
+                   "vertex with --boundary, --corner or --crease")
+    flag(p, "--boundary", help="test boundary vertices with K faces (--k): the crease rules on the boundary, the scheme's "
+         "[sharp] rules (default: the cubic B-spline's 3/4, 1/8 and 1/2; a file may give Biermann-Levin-Zorin's near-edge "
+         "rule in theta_k = pi/k)")
+    flag(p, "--corner", help="test corner vertices (interpolated) with K faces (--k); --angle gives the corner's angle")
+    p.add_argument("--k", dest="faces", type=_faces, action=Once, metavar="A:B",
+                   help=f"faces of the boundary or corner sector: a range A:B or a single K (1 to {LIMITS['c1 --k'][0]})")
+    p.add_argument("--crease", type=_crease, action=Once, metavar="K1,K2",
+                   help="test a vertex on an infinitely sharp crease with K1 faces on one side and K2 on the other (both "
+                   "sides must pass); with --sharpness S a semi-sharp crease (the interior test at valence K1 + K2)")
+    p.add_argument("--angle", type=_angle, action=Once, metavar="EXPR",
+                   help="the corner's angle for --corner, e.g. pi/2 (convex) or 3*pi/2 (concave): Biermann-Levin-Zorin's "
+                   "theta_k = angle/k in the rules, and the characteristic map must open convex or concave to match")
+    p.add_argument("--sharpness", type=_sharpness, action=Once, metavar="S", default=math.inf,
+                   help="sharpness of the crease for --crease (default inf; a finite S is semi-sharp)")
     p.add_argument("--depth", type=_depth, action=Once, default=6,
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "
                    "in four, or a triangle twice by bisection)")
     flag(p, "--json",
                    help='print a list with one object per valence: {"n", "verdict" (c1/not-c1/undecided), "reason", '
-                   '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}')
+                   '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}; at sharp vertices also '
+                   '"vertex", "lambdas" (lambda_1, lambda_2) and "opening_over_pi"')
     add_scheme_option(p)
     add_pool_options(p)
     p.set_defaults(func=run)
+
+
+def _faces(text: str) -> list[int]:
+    """argparse type: ``K`` or ``A:B``, faces of a sector, ``1 <= A <= B <= LIMITS['c1 --k']``."""
+    parts = text.split(":")
+    if len(parts) > 2:
+        raise argparse.ArgumentTypeError(f"expected K or A:B, got {text[:40]!r}")
+    a, b = (integer(x, "--k", minimum=1, limit="c1 --k") for x in (parts[0], parts[-1]))
+    if b < a:
+        raise argparse.ArgumentTypeError(f"empty range {text!r}: {b} < {a}")
+    return list(range(a, b + 1))
+
+
+def _crease(text: str) -> tuple[int, int]:
+    """argparse type: ``K1,K2``, faces on the two sides of a crease."""
+    parts = text.split(",")
+    if len(parts) != 2:
+        raise argparse.ArgumentTypeError(f"expected K1,K2 (faces on each side), got {text[:40]!r}")
+    return tuple(integer(x.strip(), "--crease", minimum=1, limit="c1 --k") for x in parts)
+
+
+def _angle(text: str):
+    """argparse type: a corner angle in (0, 2 pi), an exact expression such as ``3*pi/2``."""
+    import sympy as sp
+
+    from symdecomp.expressions import exact_value
+
+    try:
+        value = exact_value(text, {"pi": sp.pi}, argument="--angle")
+    except Exception as exc:  # the package's one-line errors
+        raise argparse.ArgumentTypeError(str(exc)) from None
+    if not (value.is_positive and (value - 2 * sp.pi).is_negative):
+        raise argparse.ArgumentTypeError(f"expected an angle in (0, 2*pi) such as pi/2 or 3*pi/2, got {value}")
+    return value
+
+
+def _sharpness(text: str):
+    """argparse type: a sharpness ``>= 0`` or ``inf``."""
+    from symdecomp.schemes.sharp import check_sharpness
+
+    try:
+        return check_sharpness(text, "--sharpness")
+    except InvalidInputError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 class _Row(NamedTuple):
@@ -51,6 +134,8 @@ class _Row(NamedTuple):
     verdict: C1Verdict
     reason: str
     json: dict
+    #: The sharp vertex in words (``""`` for an interior vertex).
+    vertex: str = ""
 
 
 def _one(n: int, scheme: Scheme, max_depth: int) -> _Row:
@@ -60,9 +145,57 @@ def _one(n: int, scheme: Scheme, max_depth: int) -> _Row:
     return _Row(r.n, r.verdict, r.reason, r.as_json())
 
 
+def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
+    from symdecomp.schemes.sector import SharpVertex
+    from symdecomp.verify.c1_sharp import c1_sharp_test
+
+    kind, faces, angle, sharpness = item
+    lat = scheme.lattice
+    if kind == "crease":
+        vertex = SharpVertex.crease(faces[0], faces[1], lat, sharpness)
+    elif kind == "corner":
+        vertex = SharpVertex.corner(faces, lat, angle)
+    else:
+        vertex = SharpVertex.boundary(faces, lat)
+    r = c1_sharp_test(scheme, vertex, max_depth=max_depth)
+    return _Row(r.n, r.verdict, r.reason, r.as_json(), r.vertex)
+
+
+def _sharp_items(args) -> list[tuple] | None:
+    """What to test at sharp vertices (``None``: the interior test of --n), or a one-line error."""
+    kinds = [name for name in ("boundary", "corner", "crease") if given(args, name)]
+    if given(args, "valences") and kinds:
+        raise InvalidInputError(f"--n (interior vertices) and --{kinds[0]} cannot be used together: give one kind of vertex")
+    if len(kinds) > 1:
+        raise InvalidInputError(f"--{kinds[0]} and --{kinds[1]} cannot be used together: give one kind of vertex")
+    if not kinds:
+        for name in ("faces", "angle", "sharpness"):
+            if given(args, name):
+                raise InvalidInputError(f"--{'k' if name == 'faces' else name} needs --boundary, --corner or --crease")
+        if not given(args, "valences"):
+            raise InvalidInputError("give --n A:B (interior vertices), or --boundary/--corner with --k A:B, or --crease K1,K2")
+        return None
+    kind = kinds[0]
+    if given(args, "angle") and kind != "corner":
+        raise InvalidInputError("--angle is the angle of a corner: it needs --corner")
+    if given(args, "sharpness") and kind != "crease":
+        raise InvalidInputError("--sharpness is the sharpness of a crease: it needs --crease")
+    if kind == "crease":
+        if given(args, "faces"):
+            raise InvalidInputError("--k and --crease cannot be used together: --crease K1,K2 gives the faces")
+        return [("crease", args.crease, None, args.sharpness)]
+    if not given(args, "faces"):
+        raise InvalidInputError(f"--{kind} needs --k A:B, the faces of the sector")
+    return [(kind, k, args.angle, None) for k in args.faces]
+
+
 def run(args) -> int:
     from symdecomp.parallel import ordered_map
     from symdecomp.verify.result import C1Verdict
+
+    items = _sharp_items(args)
+    if items is not None:
+        return _run_sharp(args, items)
 
     label = {C1Verdict.C1: "C1 certified", C1Verdict.NOT_C1: "not C1", C1Verdict.UNDECIDED: "undecided"}
     valences = args.valences
@@ -76,4 +209,24 @@ def run(args) -> int:
         print(f"method: {args.scheme.lattice.c1_method}")
         for r in results:
             print(f"n = {r.n:>3}: {label[r.verdict]}: {r.reason}")
+    return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+
+
+def _run_sharp(args, items: list[tuple]) -> int:
+    from symdecomp.parallel import ordered_map
+    from symdecomp.verify.c1_sharp import SHARP_METHOD
+    from symdecomp.verify.result import C1Verdict
+
+    label = {C1Verdict.C1: "C1 certified", C1Verdict.NOT_C1: "not C1", C1Verdict.UNDECIDED: "undecided"}
+    rows = ordered_map(_sharp_one, items, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
+                       executor=args.executor, warm_up=True)
+    results = list(progress(rows, len(items), "c1", enabled=sys.stderr.isatty()))
+    if args.json:
+        print_json([r.json for r in results])
+    else:
+        print(f"{args.scheme.name}: Zorin's conditions at {items[0][0]} vertices")
+        print(f"method: {SHARP_METHOD}")
+        width = max(len(r.vertex) for r in results)
+        for r in results:
+            print(f"{r.vertex:<{width}}: {label[r.verdict]}: {r.reason}")
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1

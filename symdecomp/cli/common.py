@@ -69,6 +69,9 @@ LIMITS = {
            "0.15 s, the range 3:10000 about 10 minutes of CPU (--executor dask spreads it over a cluster)"),
     "artifacts": (4096, "a valence costs time ~ N (the C1 test's spectrum plus one exact left eigenvector): N = 64 takes "
                   "about 0.05 s"),
+    "c1 --k": (32, "the sector's dense exact matrices have about 12 K rows (the level-1 3-ring) and irrational weights "
+               "need an exact characteristic polynomial of a K x K block: K = 16 takes 10-20 s, K = 32 15 s with rational "
+               "weights and about 3.5 minutes with BLZ's (on a loaded machine)"),
     "c1 --depth": (MAX_DEPTH, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),

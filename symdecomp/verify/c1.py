@@ -90,7 +90,7 @@ from symdecomp.verify.bezier import (
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down, spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["C1Result", "c1_test", "characteristic_nets", "bezier_nets", "place_text", "METHOD", "method"]
+__all__ = ["C1Result", "c1_test", "characteristic_nets", "bezier_nets", "box_nets", "place_text", "METHOD", "method"]
 
 #: The method, as reported with each verdict (quad meshes; :func:`method` for any lattice).
 METHOD = QUAD.c1_method
@@ -169,16 +169,26 @@ def _box_terms() -> tuple[tuple[tuple[int, flint.fmpq], ...], ...]:
 
 def _triangle_nets(vec):
     """The degree-4 Bezier nets ``(x, y)`` of sector 0's three box-spline sub-patches (each in its own parameters)."""
+    return [([z.real for z in net], [z.imag for z in net]) for net in box_nets(subpatch_nets(vec))]
+
+
+def box_nets(values) -> list:
+    """The degree-4 Bezier nets (complex balls) of the three box-spline sub-patches :data:`TRIANGLES` of one face.
+
+    ``values``: for each of the three triangles, ``{lattice point: value}`` on its 12
+    :func:`~symdecomp.analysis.characteristic.triangle_patch_points`; each net is in its triangle's own
+    parameters (``bezier_indices(4)`` order), as :func:`characteristic_nets` gives them.
+    """
     out = []
-    for values, (o, e1, e2) in zip(subpatch_nets(vec), _TRIANGLE_MAPS):
-        control = [values[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])] for a, b in BOX_POINTS]
+    for triangle, (o, e1, e2) in zip(values, _TRIANGLE_MAPS):
+        control = [triangle[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])] for a, b in BOX_POINTS]
         net = []
         for terms in _box_terms():
             total = control[terms[0][0]] * terms[0][1]
             for i, w in terms[1:]:
                 total = total + control[i] * w
             net.append(total)
-        out.append(([z.real for z in net], [z.imag for z in net]))
+        out.append(net)
     return out
 
 

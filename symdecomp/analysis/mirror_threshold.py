@@ -1,0 +1,191 @@
+"""The sector's spectrum for every ``k``: the sine blocks as polynomials in ``c = cos(theta)``, exact characteristic
+polynomials by resultants, and where the first sine eigenvalue passes the boundary curve's (issue 20, item 2).
+
+A sine block's entries (:func:`symdecomp.analysis.mirror.sine_block`) are polynomials in ``c = cos(theta)`` on the
+diagonal and multiples of ``h = cos(theta/2)`` off it, so its trace and determinant are polynomials in ``c``
+(``h^2 = (1 + c)/2``). The frequencies of a sector of ``k`` faces are the roots ``cos(pi j/k)``, ``j = 1..k-1``, of the
+Chebyshev polynomial ``U_(k-1)``, so the product of the blocks' characteristic polynomials is the resultant
+``Res_c(U_(k-1)(c), det(x I - M(c)))`` up to a constant: an exact rational polynomial (:func:`sine_part`), compared
+with the assembled matrix's characteristic polynomial in FLINT (:func:`charpoly_check`).
+
+The boundary curve's eigenvalue is the crease block's on ``a_0 - a_k``: ``1 - crease_edge`` (1/2). Whether the first
+sine block's largest eigenvalue exceeds it at ``c_k = cos(pi/k)`` depends on the signs of ``g(c) = det(M - lambda I)``
+and ``t(c) = tr M - 2 lambda``; ``c_k`` increases with ``k``, so beyond the last real root of ``g t`` below 1 the answer
+is the same for every ``k`` (:func:`first_exceeding`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import flint
+import sympy as sp
+
+from symdecomp.algebra.algebraic_sign import exact_sign
+from symdecomp.analysis.mirror import THETA, THETA_K, crease_block, sector_decomposition, sector_matrix, sine_block, vertex_layout
+from symdecomp.errors import NotApplicableError
+from symdecomp.schemes.scheme import check_scheme
+
+__all__ = ["C", "X", "block_polynomials", "sine_part", "charpoly_check", "Threshold", "first_exceeding", "boundary_eigenvalue"]
+
+#: ``c = cos(theta)``, the variable of the sine blocks' polynomials.
+C = sp.Symbol("c", real=True)
+#: The variable of characteristic polynomials.
+X = sp.Symbol("x")
+_H = sp.Symbol("h", positive=True)
+
+
+def boundary_eigenvalue(scheme, rules=None) -> sp.Expr:
+    """The boundary curve's eigenvalue: the crease block's on ``O = 0, a_0 = 1, a_k = -1``, i.e. ``1 - crease_edge``."""
+    Cb = crease_block(check_scheme(scheme), 2, rules=rules)
+    v = sp.Matrix([0, 1, -1])
+    return sp.simplify((Cb * v)[1] / v[1])
+
+
+def _in_c(expr) -> sp.Expr:
+    out = sp.expand(sp.sympify(expr).subs({sp.cos(THETA / 2): _H, sp.cos(THETA): C}))
+    out = sp.expand(out.subs(_H**2, (1 + C) / 2))
+    if out.has(THETA) or out.has(THETA_K):
+        raise NotApplicableError(f"a sine block entry {expr} is not a polynomial in cos(theta)")
+    return out
+
+
+def block_polynomials(scheme, rules=None, *, first: bool = True) -> tuple[sp.Expr, sp.Expr]:
+    """``(trace, det)`` of ``M(theta)`` as polynomials in :data:`C` (the determinant is the entry on triangles).
+
+    ``first``: the sector angle ``theta_k`` of the sharp rules is ``theta`` (the block ``j = 1``); else the rules must
+    not depend on it.
+    """
+    M = sine_block(scheme, rules)
+    M = M.subs(THETA_K, THETA) if first else M
+    if M.shape == (1, 1):
+        return _in_c(M[0, 0]), _in_c(M[0, 0])
+    off = _in_c(M[0, 1] * M[1, 0])
+    return _in_c(M.trace()), sp.expand(_in_c(M[0, 0]) * _in_c(M[1, 1]) - off)
+
+
+def _charpoly_in_c(scheme, rules=None) -> sp.Poly:
+    tr, det = block_polynomials(scheme, rules, first=False)
+    quad = check_scheme(scheme).face_rule is not None
+    return sp.Poly(X**2 - tr * X + det if quad else X - tr, X, C)
+
+
+def _frequencies(k: int, dart: bool) -> sp.Poly:
+    """The polynomial in ``c`` whose roots are a sector's frequencies: ``cos(pi j/k)`` (``cos(2 pi j/k)`` at a dart)."""
+    U = sp.Poly(sp.chebyshevu(k - 1, C), C)
+    if dart:
+        U = sp.gcd(U, sp.Poly(sp.chebyshevt(k, C) - 1, C))
+        U = sp.Poly(sp.quo(U, sp.gcd(U, sp.Poly((C - 1) * (C + 1), C))), C)
+    return U.monic() if U.degree() > 0 else sp.Poly(1, C)
+
+
+def sine_part(scheme, k: int, rules=None, *, dart: bool = False) -> sp.Poly:
+    """The product of the characteristic polynomials of a sector's sine blocks (and its face mode), exactly in ``Q[x]``.
+
+    ``Res_c(F(c), det(x I - M(c)))`` with ``F`` monic with the frequencies as roots (:func:`_frequencies`), times
+    ``x - h_0`` for the face mode on quads.
+    """
+    scheme = check_scheme(scheme)
+    F = _frequencies(k, dart)
+    p = _charpoly_in_c(scheme, rules)
+    out = sp.Poly(sp.resultant(F.as_expr(), p.as_expr(), C), X) if F.degree() > 0 else sp.Poly(1, X)
+    out = out.monic() if out.degree() > 0 else sp.Poly(1, X)
+    if scheme.face_rule is not None and (not dart or k % 2 == 0):
+        out *= sp.Poly(X - scheme.face_rule.b[0][1] if scheme.face_rule.b else X, X)
+    return out
+
+
+def _flint_poly(poly: sp.Poly) -> flint.fmpq_poly:
+    return flint.fmpq_poly([flint.fmpq(int(sp.Rational(c).p), int(sp.Rational(c).q)) for c in reversed(poly.all_coeffs())])
+
+
+def charpoly_check(scheme, vertex, rules=None, matrix=None) -> tuple[bool, flint.fmpq_poly, flint.fmpq_poly]:
+    """Compare the characteristic polynomial of the 1-ring matrix (``matrix``, default the assembled one) with the
+    product of the blocks': the crease block's (or a dart's cosine part's) times :func:`sine_part` of each sector.
+
+    Exact, in FLINT rationals; returns ``(equal, of the matrix, of the blocks)``. Rational rules only.
+    """
+    scheme = check_scheme(scheme)
+    lay = vertex_layout(scheme, vertex)
+    P = sector_matrix(scheme, vertex, rules) if matrix is None else matrix
+    if any(not sp.sympify(e).is_Rational for e in P):
+        raise NotApplicableError("the matrix has irrational entries: FLINT's rational characteristic polynomial does not apply")
+    full = flint.fmpq_mat([[flint.fmpq(int(e.p), int(e.q)) for e in row] for row in P.tolist()]).charpoly()
+    dart = len(lay.sharp) == 1
+    if dart:
+        head = sp.Poly(sector_decomposition(scheme, vertex, rules).cosine.charpoly(X).as_expr(), X)
+    else:
+        idx = [0] + [lay.a(m) for m in lay.sharp]
+        head = sp.Poly(P.extract(idx, idx).charpoly(X).as_expr(), X)
+    blocks = _flint_poly(head)
+    for k in lay.sectors:
+        blocks *= _flint_poly(sine_part(scheme, k, rules, dart=dart))
+    return full == blocks, full, blocks
+
+
+@dataclass(frozen=True)
+class Threshold:
+    """Where the first sine eigenvalue passes the boundary curve's ``value``, for every ``k`` (:func:`first_exceeding`)."""
+
+    value: sp.Expr
+    #: ``g(c)`` and ``t(c)`` (see the module docstring).
+    g: sp.Expr
+    t: sp.Expr
+    #: ``{k: ">", "=", "<"}`` for ``k = 2..last``: the largest eigenvalue of ``M(pi/k)`` against ``value``.
+    table: dict
+    #: The relation for every ``k > last`` (one sign beyond the last root of ``g t`` below 1).
+    beyond: str
+    #: The first ``k`` from which the relation is ``>`` for every larger ``k`` (``None`` if never).
+    first: int | None
+    #: True when ``g`` is identically 0: ``value`` is an eigenvalue of ``M(pi/k)`` for every ``k``.
+    identically: bool
+
+
+def _relation(g_sign: int, t_sign: int, quad: bool) -> str:
+    if not quad:
+        return {1: ">", 0: "=", -1: "<"}[g_sign]
+    if g_sign < 0 or (t_sign > 0):
+        return ">"
+    return "=" if g_sign == 0 else "<"
+
+
+def _last_root(poly: sp.Expr) -> sp.Rational:
+    """A rational bound at or above every real root of ``poly`` below 1 (-1 if none)."""
+    p = sp.Poly(poly, C)
+    while p.degree() > 0 and p.eval(1) == 0:
+        p = sp.Poly(sp.quo(p, sp.Poly(C - 1, C)), C)
+    bounds = [sp.Rational(-1)]
+    for (lo, hi), _ in (p.intervals() if p.degree() > 0 else []):
+        while hi >= 1 > lo:
+            (lo, hi), = [iv for iv, _ in p.intervals(inf=lo, sup=hi, eps=(hi - lo) / 4)][:1]
+        if hi < 1:
+            bounds.append(sp.Rational(hi))
+    return max(bounds)
+
+
+def first_exceeding(scheme, rules=None) -> Threshold:
+    """Compare the largest eigenvalue of the first sine block ``M(pi/k)`` with the boundary curve's, for every ``k >= 2``."""
+    scheme = check_scheme(scheme)
+    quad = scheme.face_rule is not None
+    lam = boundary_eigenvalue(scheme, rules)
+    tr, det = block_polynomials(scheme, rules)
+    g = sp.expand(det - lam * tr + lam**2) if quad else sp.expand(tr - lam)
+    t = sp.expand(tr - 2 * lam)
+    if g == 0:
+        return Threshold(lam, g, t, {}, "=", None, True)
+    bound = _last_root(g * t if quad and t != 0 else g)
+    sample = (bound + 1) / 2
+    beyond = _relation(exact_sign(g.subs(C, sample)), exact_sign(t.subs(C, sample)), quad)
+    table, k = {}, 2
+    while True:
+        ck = sp.cos(sp.pi / k)
+        table[k] = _relation(exact_sign(g.subs(C, ck)), exact_sign(t.subs(C, ck)), quad)
+        if exact_sign(ck - bound) > 0:
+            break
+        k += 1
+    first = None
+    if beyond == ">":
+        first = k
+        while first - 1 in table and table[first - 1] == ">":
+            first -= 1
+    return Threshold(lam, g, t, table, beyond, first, False)

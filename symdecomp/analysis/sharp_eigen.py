@@ -5,7 +5,7 @@ neighbours on the sharp edges) read crease points only, and the rules of a secto
 that sector and the crease points only. So the one-step matrix ``S`` (in any order) is block
 lower-triangular with the *crease block* ``C`` and one block ``Y_s`` per sector on its diagonal, and
 ``chi_S = chi_C prod_s chi_{Y_s}``. Nothing here assumes it: the crease points are *found* as the
-smallest set of points that contains the vertex and the support of its own rows
+smallest set of points that contains the vertex and its sharp-edge neighbours and the support of its own rows
 (:func:`matrix_parts`), and the sectors as the connected pieces of the rest. A dart or a
 semi-sharp crease (the vertex reads its whole ring) has one part, the whole matrix.
 
@@ -19,9 +19,9 @@ hold cos(pi/k) gives algebraic entries: the caller says so).
 >>> S = flint.fmpq_mat([[flint.fmpq(3, 4), flint.fmpq(1, 8), flint.fmpq(1, 8), 0],
 ...                     [flint.fmpq(1, 2), flint.fmpq(1, 2), 0, 0], [flint.fmpq(1, 2), 0, flint.fmpq(1, 2), 0],
 ...                     [flint.fmpq(1, 4), flint.fmpq(1, 4), flint.fmpq(1, 4), flint.fmpq(1, 4)]])
->>> [p.indices for p in matrix_parts(S)]
+>>> [p.indices for p in matrix_parts(S, (0, 1, 2))]
 [(0, 1, 2), (3,)]
->>> [(str(e.exact), e.multiplicity, e.part) for e in part_eigenvalues(S, matrix_parts(S))]
+>>> [(str(e.exact), e.multiplicity, e.part) for e in part_eigenvalues(S, matrix_parts(S, (0, 1, 2)))]
 [('1', 1, 'crease'), ('1/2', 1, 'crease'), ('1/4', 1, 'crease'), ('1/4', 1, 'sector 1')]
 """
 
@@ -36,7 +36,7 @@ import sympy as sp
 from symdecomp.algebra.number_field import root_expression
 from symdecomp.errors import PrecisionError
 
-__all__ = ["MatrixPart", "SharpEigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus", "merge", "separated"]
+__all__ = ["crease_points", "MatrixPart", "SharpEigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus", "merge", "separated", "ball_at"]
 
 
 @dataclass(frozen=True)
@@ -69,7 +69,7 @@ class SharpEigenvalue:
     @property
     def key(self) -> tuple:
         """Equal keys, equal eigenvalues (and conversely): the factor's coefficients and the root's index."""
-        return (tuple(int(c.p) for c in self.factor.numer().coeffs()), self.index)
+        return (tuple(int(c) for c in self.factor.numer().coeffs()), self.index)
 
     @property
     def is_real(self) -> bool:
@@ -81,19 +81,25 @@ def submatrix(S: flint.fmpq_mat, indices: Sequence[int]) -> flint.fmpq_mat:
     return flint.fmpq_mat([[S[i, j] for j in indices] for i in indices])
 
 
+def crease_points(vertex) -> tuple[int, ...]:
+    """The rows of the vertex ``O`` and of its neighbours ``a_m`` on sharp edges in the 1-ring order ``O, a_0, ..``."""
+    return (0,) + tuple(1 + m for m in vertex.sharp_rays())
+
+
 def _support(S: flint.fmpq_mat, i: int) -> set[int]:
     return {j for j in range(S.ncols()) if S[i, j] != 0}
 
 
-def matrix_parts(S: flint.fmpq_mat, centre: int = 0) -> tuple[MatrixPart, ...]:
-    """The crease block (the closure of ``centre`` under row supports) and the sectors, or the whole matrix."""
+def matrix_parts(S: flint.fmpq_mat, seeds: Sequence[int] = (0,)) -> tuple[MatrixPart, ...]:
+    """The crease block (the closure of ``seeds``, the vertex and its sharp-edge neighbours, under row supports) and
+    the sectors, or the whole matrix when that closure is everything (a dart, a semi-sharp crease)."""
     m = S.nrows()
-    crease, todo = {centre}, [centre]
+    crease, todo = set(seeds), list(seeds)
     while todo:
         for j in _support(S, todo.pop()) - crease:
             crease.add(j)
             todo.append(j)
-    if len(crease) == m:
+    if len(crease) == m and crease != set(seeds):
         return (MatrixPart("whole", tuple(range(m))),)
     rest = set(range(m)) - crease
     parts = [MatrixPart("crease", tuple(sorted(crease)))]
@@ -175,8 +181,8 @@ def separated(a: SharpEigenvalue, b: SharpEigenvalue, *, max_prec: int = 4096) -
         return False
     prec = 256
     while True:
-        ra = _ball_at(a, prec)
-        rb = _ball_at(b, prec)
+        ra = ball_at(a, prec)
+        rb = ball_at(b, prec)
         if abs(ra) > abs(rb):
             return True
         if abs(ra) < abs(rb) or prec >= max_prec:
@@ -184,7 +190,8 @@ def separated(a: SharpEigenvalue, b: SharpEigenvalue, *, max_prec: int = 4096) -
         prec *= 2
 
 
-def _ball_at(v: SharpEigenvalue, prec: int):
+def ball_at(v: SharpEigenvalue, prec: int):
+    """The eigenvalue's ball at ``prec`` bits (its own ball when that is at least as precise)."""
     if prec <= 256:
         return v.ball
     balls = _balls(v.factor, prec)

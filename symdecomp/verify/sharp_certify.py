@@ -1,25 +1,25 @@
 """Certified check of a boundary, crease, corner or dart vertex: the mirror decomposition against the full matrix.
 
-The claim is that the blocks of the mirror decomposition (:func:`~symdecomp.analysis.mirror.sector_decomposition`:
-the crease block ``C``, or at a dart the symmetric part, and the sine blocks ``M(theta_j)`` of each sector)
-give the spectrum of the one-step matrix ``S`` of the vertex's 1-ring, with multiplicities. ``S`` is built by
-exact refinement of the tagged mesh (:func:`~symdecomp.schemes.sector.exact_sharp_matrix`), without the block
-structure. The claim is the identity
+The claim is that the blocks of the mirror decomposition (:mod:`symdecomp.analysis.mirror`: the crease block
+``C``, or at a dart the symmetric part, and the sine blocks ``M(theta_j)`` of each sector) give the spectrum of
+the one-step matrix ``S`` of the vertex's 1-ring, with multiplicities. ``S`` is built by exact refinement of the
+tagged mesh (:func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`), without the block structure. The
+claim is the identity
 
-    chi_S(lambda) = det(lambda I - C) prod_blocks det(lambda I - M(theta_j)),
+    chi_S(lambda) = det(lambda I - C) prod_sectors prod_j det(lambda I - M(theta_j)),
 
-proved as the interior's (:mod:`symdecomp.verify.certify`): ``chi_S`` exactly by FLINT; the right-hand side at a
-rational ``lambda_0`` exactly, each sine block's entries (cosines of rational multiples of ``pi``) in the
-cyclotomic field ``Q(zeta_N)`` (:mod:`symdecomp.algebra.cyclotomic`), the product over the blocks a rational
-number there. Both sides are monic of degree ``size`` (the blocks' sizes are checked to add up to it), so
-equality at ``size`` points ``lambda_0 = 0, 1, ...`` is equality of polynomials. No floating point is involved.
+proved exactly: the crease rows of ``S`` equal the decomposition's ``C`` entry by entry, and the two
+polynomials are equal in ``Q[lambda]``: ``chi_S`` by FLINT from ``S``, the product over a sector's blocks as a
+resultant with the Chebyshev polynomial whose roots are the frequencies ``cos(pi j/k)``
+(:func:`symdecomp.analysis.mirror_threshold.charpoly_check`, the one home of that product).
 
 The distinct eigenvalues and their multiplicities are then exact too: ``chi_S`` is factored over ``Q``, and the
 roots of distinct irreducible factors are distinct (each root of a factor with exponent ``e`` has multiplicity
 ``e``). The decimal values are certified Arb balls of those roots.
 
-Scope: rational rules (the standard ones and a scheme file's rational ``[sharp]`` weights). Rules whose weights
-hold ``cos(theta_k)`` (Biermann-Levin-Zorin's) give an irrational ``S``; the certificate says so.
+Scope: infinitely sharp edges (the decomposition's), rational rules (the standard ones and a scheme file's
+rational ``[sharp]`` weights). Rules whose weights hold ``cos(theta_k)`` (Biermann-Levin-Zorin's) give an
+irrational ``S``: :class:`~symdecomp.errors.NotApplicableError`, saying so.
 """
 
 from __future__ import annotations
@@ -30,10 +30,7 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
-from symdecomp.algebra.numbers import to_fmpq, to_fraction
 from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits
 from symdecomp.verify.certify import Certificate
@@ -67,54 +64,6 @@ class SharpCertificate(Certificate):
         return {"vertex": self.vertex, **super().details()}
 
 
-def _rational_matrix(M: sp.Matrix) -> flint.fmpq_mat:
-    return flint.fmpq_mat([[to_fmpq(x) for x in row] for row in M.tolist()])
-
-
-def _field_of(entries) -> CyclotomicField:
-    order = 1
-    for expr, at in entries:
-        for row in expr:
-            for x in row:
-                n = cyclotomic_value(x, at).field.N
-                order = order * n // math.gcd(order, n)
-    return CyclotomicField(order)
-
-
-def _sine_entries(scheme: Scheme, vertex, decomposition) -> list:
-    """Each sine or face block as ``(entries, values)``: the symbolic ``M(theta)`` of :func:`~symdecomp.analysis.mirror.sine_block`
-    with ``theta`` (and the sector angle ``theta_k``) to substitute, so that cosines stay cosines of rational multiples of pi."""
-    from symdecomp.analysis.mirror import THETA, THETA_K, sine_block
-
-    dart = decomposition.crease is None
-    M = sine_block(scheme, modified=not dart)
-    angle = vertex.angle if (vertex.corner and vertex.angle is not None) else sp.pi
-    out = []
-    for blk in decomposition.blocks:
-        if blk.kind == "face":
-            out.append(([[sp.sympify(blk.matrix[0, 0], strict=True)]], {}))
-            continue
-        k = vertex.sectors[blk.sector]
-        out.append(([[x for x in row] for row in M.tolist()], {THETA: blk.theta, THETA_K: angle / k}))
-    return out
-
-
-def _block_product(entries, field: CyclotomicField, lam: flint.fmpq):
-    """``prod det(lam I - M)`` over the blocks, in ``field``; a rational ``fmpq``, or ``None`` if it is not rational."""
-    acc = field(1)
-    for rows, at in entries:
-        M = [[cyclotomic_value(x, at, field=field) for x in row] for row in rows]
-        L = field(to_fraction(lam))
-        if len(M) == 1:
-            acc = acc * (L - M[0][0])
-        else:
-            acc = acc * ((L - M[0][0]) * (L - M[1][1]) - M[0][1] * M[1][0])
-    coeffs = acc.poly.coeffs()
-    if acc.poly.degree() > 0:
-        return None
-    return coeffs[0] if coeffs else flint.fmpq(0)
-
-
 def _distinct_values(chi: flint.fmpq_poly, digits: int) -> tuple[int, tuple[int, ...], tuple[str, ...]]:
     """``(distinct, multiplicities, texts)`` from the exact factorization of ``chi``, largest modulus first."""
     _, factors = chi.factor()
@@ -132,39 +81,34 @@ def certify_sharp(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCertifica
     ``vertex``: a :class:`~symdecomp.schemes.sector.SharpVertex` with infinitely sharp edges (the mirror
     decomposition's scope). Raises :class:`~symdecomp.errors.NotApplicableError` for irrational rules.
     """
-    from symdecomp.analysis.mirror import sector_decomposition
-    from symdecomp.schemes.sector import exact_sharp_matrix
+    from symdecomp.analysis.mirror import sector_decomposition, vertex_layout
+    from symdecomp.analysis.mirror_threshold import charpoly_check
+    from symdecomp.schemes.sector import sharp_subdivision_matrix
 
     scheme, digits = check_scheme(scheme), check_digits(digits)
-    S = exact_sharp_matrix(scheme, vertex)
-    size = S.nrows()
-    chi = S.charpoly()
+    S = sp.Matrix(sharp_subdivision_matrix(scheme, vertex))
     d = sector_decomposition(scheme, vertex)
-    head = d.crease if d.crease is not None else d.cosine
-    if any(not sp.sympify(x).is_Rational for x in head):
-        raise NotApplicableError(f"{describe_vertex(vertex)}: the crease block is not rational; the certificate needs rational rules")
-    chi_head = _rational_matrix(head).charpoly()
-    entries = _sine_entries(scheme, vertex, d)
-    field = _field_of(entries)
+    equal, chi, blocks = charpoly_check(scheme, vertex, matrix=S)
     distinct, multiplicities, texts = _distinct_values(chi, digits)
-    height = max(int(c.p).bit_length() for c in chi.coeffs())
     common = dict(n=vertex.sectors[0], scheme=scheme.name, distinct=distinct, multiplicities=multiplicities, values=texts,
-                  height_bits=height, route="mirror", vertex=describe_vertex(vertex))
-    count = head.shape[0] + sum(len(rows) for rows, _ in entries)
-    if count != size:
-        return SharpCertificate(status=CrossCheckStatus.DISAGREE, method="block sizes != matrix size", multiplicities_certified=False,
-                                message=f"{describe_vertex(vertex)}: refuted: the blocks have {count} eigenvalues, the matrix {size}",
-                                **common)
-    for x in range(size):
-        lam = flint.fmpq(x)
-        right = _block_product(entries, field, lam)
-        right = None if right is None else chi_head(lam) * right
-        if right != chi(lam):
-            got = "not rational" if right is None else str(right)
-            return SharpCertificate(status=CrossCheckStatus.DISAGREE, method="chi_S != product of the blocks' polynomials",
-                                    multiplicities_certified=False,
-                                    message=f"{describe_vertex(vertex)}: refuted: chi_S({x}) = {chi(lam)}, the blocks give {got} (exact)",
-                                    **common)
-    method = f"chi_S = det(l - {'C' if d.crease is not None else 'cosine part'}) prod det(l - M(theta_j)) at {size} points"
-    message = f"{describe_vertex(vertex)}: proved: {method}; {distinct} distinct eigenvalues, multiplicities exact (chi_S factored over Q)"
+                  height_bits=max(int(c.p).bit_length() for c in chi.coeffs()), route="mirror", vertex=describe_vertex(vertex))
+    name = describe_vertex(vertex)
+    if d.crease is not None:
+        lay = vertex_layout(scheme, vertex)
+        idx = [0] + [lay.a(m) for m in lay.sharp]
+        rows = S.extract(idx, idx)
+        if rows != d.crease:
+            return SharpCertificate(status=CrossCheckStatus.DISAGREE, method="crease rows of S != the crease block C",
+                                    multiplicities_certified=False, **common,
+                                    message=f"{name}: refuted: the refined matrix's crease rows are {rows.tolist()}, the "
+                                    f"decomposition's crease block is {d.crease.tolist()} (exact)")
+    if not equal:
+        return SharpCertificate(status=CrossCheckStatus.DISAGREE, method="chi_S != product of the blocks' polynomials",
+                                multiplicities_certified=False, **common,
+                                message=f"{name}: refuted: chi_S = {chi}, the blocks give {blocks} (exact)")
+    head = "C" if d.crease is not None else "the symmetric part"
+    method = f"crease rows = C; chi_S = det(l - {head}) prod_j det(l - M(theta_j)) in Q[l] (Chebyshev resultants)"
+    if d.crease is None:
+        method = f"chi_S = det(l - {head}) prod_j det(l - M(theta_j)) in Q[l] (Chebyshev resultants)"
+    message = f"{name}: proved: {method}; {distinct} distinct eigenvalues, multiplicities exact (chi_S factored over Q)"
     return SharpCertificate(status=CrossCheckStatus.AGREE, method=method, multiplicities_certified=True, message=message, **common)

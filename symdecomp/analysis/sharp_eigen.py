@@ -36,7 +36,8 @@ import sympy as sp
 from symdecomp.algebra.number_field import root_expression
 from symdecomp.errors import PrecisionError
 
-__all__ = ["crease_points", "MatrixPart", "SharpEigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus", "merge", "separated", "ball_at"]
+__all__ = ["crease_points", "MatrixPart", "SharpEigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus",
+           "merge", "separated", "ball_at"]
 
 
 @dataclass(frozen=True)

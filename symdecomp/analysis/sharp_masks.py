@@ -32,7 +32,7 @@ import sympy as sp
 
 from symdecomp.algebra.number_field import FieldElement, element_ball, left_eigenspace, to_sympy_vector
 from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.analysis.sharp_eigen import crease_points, SharpEigenvalue, ball_at, matrix_parts, merge, part_eigenvalues, separated, submatrix
+from symdecomp.analysis.sharp_eigen import SharpEigenvalue, ball_at, crease_points, matrix_parts, merge, part_eigenvalues, separated, submatrix
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 

@@ -22,7 +22,7 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.analysis.sharp_eigen import crease_points, SharpEigenvalue, matrix_parts, merge, part_eigenvalues
+from symdecomp.analysis.sharp_eigen import SharpEigenvalue, crease_points, matrix_parts, merge, part_eigenvalues
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits

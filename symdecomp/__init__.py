@@ -155,6 +155,8 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.mirror": ("SectorDecomposition", "SectorEigenvalue", "SineBlock", "sector_decomposition", "sector_spectrum"),
     "symdecomp.analysis.redesign": ("redesign_vertex",),
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
+    "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
+    "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "SharpSpectrumEntry", "sharp_spectrum"),
     "symdecomp.analysis.ring_blocks": ("RingBlocks", "ring_blocks"),
     "symdecomp.analysis.ring_masks": ("ring_masks",),
     "symdecomp.analysis.ring_spectrum": ("RingSpectrum", "ring_spectrum"),
@@ -183,6 +185,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.verify.result": ("C1Verdict", "CrossCheckResult", "CrossCheckStatus"),
     "symdecomp.verify.ring_certify": ("certify_ring",),
     "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
+    "symdecomp.verify.sharp_certify": ("SharpCertificate", "certify_sharp"),
     "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),
 }
 

@@ -301,8 +301,9 @@ def check_scheme_valences(args) -> None:
     if not isinstance(scheme, Scheme) or valences is None or sharp_given(args):
         return  # a sharp vertex's N is a face count: its matrix's rules are checked where it is built
     if isinstance(valences, int) and valences < 3:  # N admits face counts from 1 for sharp vertices
-        raise InvalidInputError(f"argument N: expected a valence: an integer >= 3, got {valences} (face counts 1 and 2 "
-                                "are for --boundary, --corner, --crease or --dart)")
+        bound = LIMITS.get(getattr(args, "command", ""), (None,))[0]
+        raise InvalidInputError(f"argument N: expected a valence: an integer >= 3{f' and <= {bound}' if bound else ''}, got "
+                                f"{valences} (face counts 1 and 2 are for --boundary, --corner, --crease or --dart)")
     for n in valences if isinstance(valences, list) else [valences]:
         scheme.fitting_valence(n, real=True)
 

@@ -98,8 +98,8 @@ def sharp_vertex(args, k: int):
         return SharpVertex.corner(k, lat)
     if named[0] == "--crease":
         return SharpVertex.crease(k, args.crease, lat, sharpness=args.sharpness)
-    if k < 2:
-        raise InvalidInputError(f"--dart: a dart has K >= 2 faces around it, got K = {k}")
+    if k < 3:
+        raise InvalidInputError(f"--dart: a dart is an interior vertex of valence K >= 3, got K = {k}")
     return SharpVertex.dart(k, lat, sharpness=args.sharpness)
 
 

@@ -101,7 +101,7 @@ def test_an_infinitely_sharp_crease_has_one_level(capsys):
     (["spectrum", "5", "--crease", "0"], "--crease"),
     (["spectrum", "5", "--boundary", "--rings", "2"], "--rings: not available"),
     (["spectrum", "5", "--boundary", "--exact"], "--exact: not available"),
-    (["spectrum", "1", "--dart"], "--dart: a dart has K >= 2 faces"),
+    (["spectrum", "2", "--dart"], "--dart: a dart is an interior vertex of valence K >= 3"),
     (["spectrum", "5", "--boundary", "--boundary"], "given more than once"),
 ])
 def test_bad_combinations_are_one_line_and_exit_2(capsys, argv, words):
@@ -111,7 +111,7 @@ def test_bad_combinations_are_one_line_and_exit_2(capsys, argv, words):
 
 
 def test_the_sharpness_is_exact(capsys):
-    out = _json(capsys, ["spectrum", "2", "--dart", "--sharpness", "1/2", "--json"])
+    out = _json(capsys, ["spectrum", "3", "--dart", "--sharpness", "1/2", "--json"])
     assert out["levels"][0]["sharpness"] == "1/2" and out["levels"][-1]["sharpness"] == "0"
-    assert main(["spectrum", "2", "--dart", "--sharpness", "0.5"]) == 2
+    assert main(["spectrum", "3", "--dart", "--sharpness", "0.5"]) == 2
     assert "give an exact rational" in capsys.readouterr().err

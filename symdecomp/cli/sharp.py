@@ -130,7 +130,7 @@ def _print_mask(mask, names, digits: int, blocks: dict) -> None:
     exact = mask.exact()
     print(f"{mask.name} (eigenvalue {_value(mask, digits)}, {blocks.get(mask.eigenvalue.key, mask.eigenvalue.part)}):")
     for i, (name, text) in enumerate(zip(names, mask.texts(digits))):
-        closed = "" if exact is None or len(str(exact[i])) > 60 or str(exact[i]) == text else f"  = {exact[i]}"
+        closed = "" if exact is None or exact[i].is_Integer or len(str(exact[i])) > 60 else f"  = {exact[i]}"
         print(f"  {name}: {text}{closed}")
 
 

@@ -92,8 +92,9 @@ def _run_sharp(args) -> int:
 
     if not args.certify:
         raise InvalidInputError("check --k: the check of boundary, crease, corner and dart vertices is certified: give --certify")
-    for option in ("--route", "--structural", "--solver", "--jobs", "--executor"):
-        refuse_together(args, "--k", option, f"{option} applies to interior valences (--n)")
+    for option in ("--route", "--structural", "--solver", "--jobs", "--executor", "--dps"):
+        if given(args, option.lstrip("-")):
+            raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
     refuse_sharp_options(args, "--rings")
     vertices = [sharp_vertex(args, k) for k in args.sectors]  # every bad combination refused before the work
     start, rows = time.perf_counter(), []

@@ -99,7 +99,8 @@ def _exact_text(v: SharpEigenvalue, candidates: list) -> str:
 
 
 def _names(scheme, vertex, values: list[SharpEigenvalue]) -> tuple[dict, dict] | None:
-    """``({key: [block names]}, {key: [closed forms]})`` from the mirror decomposition, or ``None`` where it does not apply."""
+    """``({key: [block names]}, {key: [closed forms]})`` from the mirror decomposition, or ``None`` where it does not apply
+    or where its eigenvalues, matched by value, do not have the matrix's multiplicities."""
     from symdecomp.analysis.mirror import sector_spectrum
 
     try:
@@ -108,13 +109,19 @@ def _names(scheme, vertex, values: list[SharpEigenvalue]) -> tuple[dict, dict] |
         return None
     names: dict = {v.key: [] for v in values}
     forms: dict = {v.key: [] for v in values}
+    counts: dict = {v.key: 0 for v in values}
     for e in spectrum:
         z = complex(sp.N(e.value, 40))
         best = min(values, key=lambda v: abs(complex(float(v.ball.real.mid()), float(v.ball.imag.mid())) - z))
+        if abs(complex(float(best.ball.real.mid()), float(best.ball.imag.mid())) - z) > 1e-12 * max(1.0, abs(z)):
+            return None  # a block eigenvalue that is no eigenvalue of the matrix
         name = _block_name(e, vertex)
         if name not in names[best.key]:
             names[best.key].append(name)
         forms[best.key].append(e.value)
+        counts[best.key] += 1
+    if any(counts[v.key] != v.multiplicity for v in values):
+        return None  # the blocks are not this matrix's spectrum (check --certify says where): no names from them
     return names, forms
 
 

@@ -51,7 +51,8 @@ def _run_sharp(args) -> int:
     for s in levels:
         distinct = len(s.entries)
         where = "" if len(levels) == 1 else f", level {s.level} (sharpness {s.sharpness})"
-        names = "blocks of the mirror decomposition" if s.decomposed else "parts of the matrix (no mirror decomposition)"
+        names = ("blocks of the mirror decomposition" if s.decomposed else "parts of the matrix (no mirror decomposition: "
+                 + ("semi-sharp edges)" if s.sharpness != float("inf") else "see check --k K --certify)"))
         print(f"{args.scheme.name}, {describe(vertex)}{where} ({vertex.lattice} mesh): {s.size} eigenvalues, {distinct} "
               f"distinct; {names}")
         width = max(len(e.text) for e in s.entries)

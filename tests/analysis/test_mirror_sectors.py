@@ -1,7 +1,5 @@
 """The mirror decomposition of boundary, crease, corner and dart vertices (analysis/mirror.py, mirror_threshold.py)."""
 
-from dataclasses import dataclass
-
 import flint
 import mpmath
 import pytest
@@ -23,19 +21,16 @@ from symdecomp.analysis.mirror import (
 )
 from symdecomp.analysis.mirror_threshold import C, boundary_eigenvalue, charpoly_check, first_exceeding
 from symdecomp.errors import InvalidTypeError, NotApplicableError
+from symdecomp.schemes.lattice import QUAD
 from symdecomp.schemes.scheme import Scheme, Stencil
+from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 
 CC, LOOP = catmull_clark(), loop()
 Q = sp.Rational
 
 
-@dataclass(frozen=True)
-class Vertex:
-    """The fields of a SharpVertex this module reads."""
-
-    sectors: tuple
-    closed: bool
-    corner: bool = False
+def Vertex(sectors, closed, corner=False, lattice=QUAD):
+    return SharpVertex(lattice, sectors, closed, corner)
 
 
 def blz(scheme):
@@ -92,10 +87,12 @@ def test_the_spectrum_of_a_boundary_vertex_by_block():
 @pytest.mark.parametrize("scheme", [CC, LOOP], ids=["cc", "loop"])
 def test_blocks_against_the_matrix_for_k_1_to_12(scheme):
     """The product of the blocks' characteristic polynomials (Chebyshev resultant) is the matrix's, exactly in FLINT."""
-    vertices = [k for k in range(1, 13)] + [Vertex((k,), False, True) for k in (1, 3, 7)] + [Vertex((k, 3), True) for k in (1, 2, 5)]
-    vertices += [Vertex((n,), True) for n in (3, 4, 5, 8)] if scheme is CC else []  # Loop's dart weight is irrational
+    L = scheme.lattice
+    vertices = [k for k in range(1, 13)] + [Vertex((k,), False, True, L) for k in (1, 3, 7)]
+    vertices += [Vertex((k, 3), True, False, L) for k in (1, 2, 5)]
+    vertices += [Vertex((n,), True, False, L) for n in (3, 4, 5, 8)] if scheme is CC else []  # Loop's dart weight: irrational
     for v in vertices:
-        equal, full, blocks = charpoly_check(scheme, v)
+        equal, full, blocks = charpoly_check(scheme, v)  # against the matrix by refinement of the tagged mesh
         assert equal, v
         assert full.degree() == sector_matrix(scheme, v).shape[0]
     # a matrix without the block structure is caught: O's rule moved 1/8 from O onto the interior point a_1
@@ -103,6 +100,15 @@ def test_blocks_against_the_matrix_for_k_1_to_12(scheme):
     P[0, 0] -= Q(1, 8)
     P[0, 2] += Q(1, 8)
     assert not charpoly_check(scheme, 4, matrix=P)[0]
+
+
+@pytest.mark.parametrize("scheme", [CC, LOOP], ids=["cc", "loop"])
+def test_the_assembled_matrix_is_the_refined_one(scheme):
+    """The stencils this module assembles are the rules of the whole mesh: equal to exact refinement, entry by entry."""
+    L = scheme.lattice
+    for k in range(1, 9):
+        for v in (SharpVertex.boundary(k, L), SharpVertex.corner(k, L), SharpVertex.crease(k, 3, L), SharpVertex.dart(k + 2, L)):
+            assert sector_matrix(scheme, v) == sharp_subdivision_matrix(scheme, v), v
 
 
 def test_dart_antisymmetric_part_is_the_sine_blocks_at_2_pi_j_over_n():
@@ -150,3 +156,5 @@ def test_refuses_rules_without_the_mirror_in_one_line():
         sector_spectrum(CC, "5")
     with pytest.raises(InvalidTypeError, match="rules"):
         sector_matrix(CC, 3, rules=object())
+    with pytest.raises(NotApplicableError, match="semi-sharp"):
+        sector_spectrum(CC, SharpVertex.crease(2, 3, QUAD, sharpness=1))

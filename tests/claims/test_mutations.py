@@ -404,9 +404,8 @@ NO_FILE_FLIP = {
                                   "the neighbours; files that are not are 'not applicable'",
     "Sector: crease block": "the crease block reads only the sharp rules, and scheme files do not give sharp rules (the "
                             "standard ones); only a change of the printed eigenvalues refutes it",
-    "Sector: the blocks are the spectrum": "the blocks are read from the same stencils as the assembled matrix, so the "
-                                           "characteristic polynomials agree for every mirror-symmetric file; others are "
-                                           "'not applicable'",
+    "Sector: the blocks are the spectrum": "a theorem (the sine identity) for every mirror-symmetric file, checked "
+                                           "against the matrix by refinement; files without the mirror are 'not applicable'",
     "1-ring suffices (after Eq. 51)": "the mesh files tried (bilinear, midpoint edges, Loop) keep the left eigenvectors of "
                                       "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable'",
 }

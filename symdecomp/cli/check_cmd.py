@@ -87,7 +87,7 @@ def register(sub) -> None:
 
 def _run_sharp(args) -> int:
     """``check --k A:B --boundary --certify`` (and --corner, --crease K2, --dart): one certified row per K."""
-    from symdecomp.cli.sharp import describe, refuse_sharp_options, sharp_vertex
+    from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
     from symdecomp.verify.sharp_certify import certify_sharp
 
     if not args.certify:
@@ -97,13 +97,17 @@ def _run_sharp(args) -> int:
             raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
     refuse_sharp_options(args, "--rings")
     vertices = [sharp_vertex(args, k) for k in args.sectors]  # every bad combination refused before the work
+    from symdecomp.schemes.sector import exact_sharp_matrix
+
+    for vertex in vertices:  # rules irrational at some K: refused before the header
+        exact_only(args, vertex, lambda: exact_sharp_matrix(args.scheme, vertex))  # noqa: B023 - called at once
     start, rows = time.perf_counter(), []
     if not args.json:
         print(f"{args.scheme.name}: mirror decomposition vs full matrix, certified (exact): chi_S of the refined 1-ring "
               "matrix = det(l - C) prod det(l - M(theta_j)) in Q[l]")
         print(f"{'K':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'vertex':<16} {'chi_S bits':>10}  certificate")
     for vertex in progress(vertices, len(vertices), "certify"):
-        r = certify_sharp(args.scheme, vertex)
+        r = exact_only(args, vertex, lambda: certify_sharp(args.scheme, vertex))  # noqa: B023 - called at once
         rows.append(r)
         if not args.json:
             line = (f"{r.n:>4}  {r.status.value:<9} {r.distinct:>8}  {'exact':<9} {r.vertex:<16} {r.height_bits:>10}  "

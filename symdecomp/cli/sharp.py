@@ -27,7 +27,7 @@ from symdecomp.cli.common import SHARP_OPTIONS, Once, flag, given, integer, posi
 from symdecomp.errors import InvalidInputError
 
 __all__ = ["add_sharp_options", "sharp_vertex", "faces_or_valence", "sector_range", "refuse_sharp_options", "describe",
-           "run_sharp_masks"]
+           "run_sharp_masks", "exact_only"]
 
 #: Most faces around a sharp vertex on the command line (the matrices are dense and exact).
 MAX_FACES = 64
@@ -150,7 +150,7 @@ def run_sharp_masks(args) -> int:
 
     refuse_sharp_options(args, "--rings")
     vertex = sharp_vertex(args, args.n)
-    masks = sharp_masks(args.scheme, vertex)
+    masks = exact_only(args, vertex, lambda: sharp_masks(args.scheme, vertex))
     blocks = _block_names(args.scheme, vertex)
     sub = f"{acb_text(masks.subdominant.ball, args.digits)} ({blocks.get(masks.subdominant.key, masks.subdominant.part)})"
     if args.json:
@@ -166,3 +166,17 @@ def run_sharp_masks(args) -> int:
         print(f"symdecomp masks: {describe(vertex)}: the tangent masks are not the tangent plane's ({masks.reason})",
               file=sys.stderr)
     return 0 if masks.tangent_plane else 1
+
+
+def exact_only(args, vertex, compute):
+    """``compute()``, with a scheme whose rules are irrational at this vertex refused in one line (the sharp routes
+    are exact over the rationals: Biermann-Levin-Zorin's ``cos(theta_k)`` weights are not, yet)."""
+    from symdecomp.errors import NotApplicableError
+
+    try:
+        return compute()
+    except NotApplicableError as exc:
+        why = str(exc).split("; use ")[0]
+        raise InvalidInputError(f"--scheme {args.scheme.name}, {describe(vertex)}: {why}; spectrum, masks and check of "
+                                "boundary, crease, corner and dart vertices work exactly over the rationals (rational "
+                                "[sharp] rules)") from None

@@ -39,11 +39,11 @@ def register(sub) -> None:
 
 def _run_sharp(args) -> int:
     from symdecomp.analysis.sharp_spectrum import sharp_levels
-    from symdecomp.cli.sharp import describe, refuse_sharp_options, sharp_vertex
+    from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
 
     refuse_sharp_options(args, "--rings", "--exact")
     vertex = sharp_vertex(args, args.n)
-    levels = sharp_levels(args.scheme, vertex, digits=args.digits)
+    levels = exact_only(args, vertex, lambda: sharp_levels(args.scheme, vertex, digits=args.digits))
     if args.json:
         print_json({"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
                     "levels": [s.as_json() for s in levels]})

@@ -18,9 +18,9 @@ def _rows(capsys, argv):
 
 
 @pytest.mark.parametrize("scheme", ["catmull-clark", "loop"])
-def test_boundary_vertices_k_2_to_16_are_proved(capsys, scheme):
-    code, out = _rows(capsys, ["check", "--k", "2:16", "--boundary", "--certify", "--scheme", scheme])
-    assert code == 0 and out["summary"]["ok"] and out["summary"]["agree"] == 15
+def test_boundary_vertices_k_1_to_16_are_proved(capsys, scheme):
+    code, out = _rows(capsys, ["check", "--k", "1:16", "--boundary", "--certify", "--scheme", scheme])
+    assert code == 0 and out["summary"]["ok"] and out["summary"]["agree"] == 16
     for row in out["rows"]:
         assert row["status"] == "agree" and row["route"] == "mirror" and row["multiplicities_certified"]
         vertex = (sd.SharpVertex.boundary(row["n"], sd.QUAD if scheme == "catmull-clark" else sd.TRIANGLE))

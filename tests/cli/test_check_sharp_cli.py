@@ -10,6 +10,7 @@ import sympy as sp
 import symdecomp as sd
 from symdecomp.analysis import mirror_threshold
 from symdecomp.cli import main
+from symdecomp.schemes.files import load_scheme
 
 
 def _rows(capsys, argv):
@@ -75,3 +76,20 @@ def test_check_bad_input(capsys, argv, words):
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert words in err and err.count("\n") == 1
+
+
+def test_a_users_rational_sharp_rules_from_a_file(capsys, tmp_path):
+    path = tmp_path / "soft-crease.toml"
+    path.write_text('name = "soft-crease"\n[edge]\nO = "3/8"\na = { "-1" = "1/16", "0" = "3/8", "1" = "1/16" }\n'
+                    'b = { "-1" = "1/16", "0" = "1/16" }\n[face]\nO = "1/4"\na = { "0" = "1/4", "1" = "1/4" }\n'
+                    'b = { "0" = "1/4" }\n[vertex]\na = "3/(2*n**2)"\nb = "1/(4*n**2)"\n'
+                    '[sharp]\ncrease_centre = "5/8"\ncrease_end = "3/16"\ncrease_edge = "1/2"\n')
+    code, out = _rows(capsys, ["check", "--k", "2:6", "--boundary", "--certify", "--scheme", str(path)])
+    assert code == 0 and out["summary"]["agree"] == 5
+    assert main(["spectrum", "3", "--boundary", "--scheme", str(path), "--json"]) == 0
+    crease = [e for e in json.loads(capsys.readouterr().out)["levels"][0]["eigenvalues"] if "crease" in e["blocks"]]
+    # the crease block [[c, e, e], [h, 1 - h, 0], [h, 0, 1 - h]] has the eigenvalues 1, 1 - h and, by its trace,
+    # c + 2 (1 - h) - 1 - (1 - h) = c - h: here 5/8 - 1/2
+    rules = load_scheme(str(path)).sharp
+    c, h = rules.crease_centre, rules.crease_edge
+    assert sorted(sp.Rational(e["exact"]) for e in crease) == sorted([sp.Integer(1), 1 - h, c - h])

@@ -60,7 +60,7 @@ class SharpSpectrum:
     """The spectrum of one sharp vertex at one refinement level."""
 
     scheme: str
-    #: The vertex, as :func:`~symdecomp.verify.sharp_certify.describe_vertex` would name it (set by the caller's layer).
+    #: The vertex (a :class:`~symdecomp.schemes.sector.SharpVertex`).
     vertex: object
     level: int
     #: The sharpness at this level (``math.inf``, a ``Fraction``).

@@ -152,14 +152,16 @@ def run_sharp_masks(args) -> int:
     vertex = sharp_vertex(args, args.n)
     masks = exact_only(args, vertex, lambda: sharp_masks(args.scheme, vertex))
     blocks = _block_names(args.scheme, vertex)
-    sub = f"{acb_text(masks.subdominant.ball, args.digits)} ({blocks.get(masks.subdominant.key, masks.subdominant.part)})"
+    value, where = acb_text(masks.subdominant.ball, args.digits), blocks.get(masks.subdominant.key, masks.subdominant.part)
     if args.json:
         print_json({"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
                     "position": masks.position.as_json(masks.names, args.digits),
                     "tangents": [t.as_json(masks.names, args.digits) for t in masks.tangents],
-                    "subdominant": sub, "tangent_plane": masks.tangent_plane, "reason": masks.reason})
+                    "subdominant": {"value": value, "blocks": where}, "tangent_plane": masks.tangent_plane,
+                    "reason": masks.reason})
     else:
-        print(f"{args.scheme.name}, {describe(vertex)} ({vertex.lattice} mesh): subdominant eigenvalue {sub}; {masks.reason}")
+        print(f"{args.scheme.name}, {describe(vertex)} ({vertex.lattice} mesh): subdominant eigenvalue {value} ({where}); "
+              f"{masks.reason}")
         for mask in (masks.position, *masks.tangents):
             _print_mask(mask, masks.names, args.digits, blocks)
     if not masks.tangent_plane:

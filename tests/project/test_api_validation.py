@@ -201,6 +201,8 @@ SCHEMES = [
     (sd.sharp_spectrum, dict(vertex=BOUNDARY)),
     (sd.sharp_masks, dict(vertex=BOUNDARY)),
     (sd.certify_sharp, dict(vertex=BOUNDARY)),
+    (sd.sector_decomposition, dict(vertex=BOUNDARY)),
+    (sd.sector_spectrum, dict(vertex=3)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

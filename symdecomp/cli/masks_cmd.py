@@ -47,7 +47,8 @@ def register(sub) -> None:
         "(or crease) curve's tangent (the crease block's eigenvalue 1/2: it vanishes off the crease points) and the "
         "surface's cross tangent (the largest eigenvalue of a sector's block, its sine block j = 1, plus the solve on the "
         "crease points), one per side of a crease; a corner's two boundary curves; a dart's two subdominant "
-        "eigenvectors. Exit status 1 when the tangents' eigenvalues are not certified the two subdominant ones.",
+        "eigenvectors; with --sharpness S, of the level-0 matrix. Exit status 1 when the tangents' eigenvalues are not "
+        "certified the two subdominant ones.",
     )
     p.add_argument("n", type=faces_or_valence("masks"), metavar="N",
                    help="the valence (an integer, 3 <= N <= 1000), or the faces K of a sharp vertex's sector")

@@ -23,7 +23,8 @@ nothing else.
                    polynomials over a triangle in Bezier form (``triangle_bezier``), products of
                    tensor and triangular Bernstein polynomials in Arb (``bernstein``), signs of
                    rational functions of n for every n (``valence_signs``), exact signs of real
-                   algebraic numbers (``algebraic_sign``)
+                   algebraic numbers (``algebraic_sign``),
+                   exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``)
 ``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,
                    triangle; regular valence, rings and labels, refinement, regular patch), a
                    scheme as data (edge, face, vertex rules on a lattice, for the whole mesh) and
@@ -66,7 +67,10 @@ nothing else.
                    limit properties (``design``), and the least change of a 1-ring for a normal or no
                    hyperbolic part (``redesign``); boundary, crease, corner and dart vertices
                    by the mirror symmetry of their sectors: crease block and sine blocks (``mirror``), the
-                   spectrum for every k and the comparison with the boundary curve (``mirror_threshold``)
+                   spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
+                   exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
+                   named by the mirror decomposition's blocks (``sharp_spectrum``), the limit and tangent
+                   masks (``sharp_masks``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -83,7 +87,8 @@ nothing else.
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and
                    the artifact indicators (``artifacts``); certified shape at the vertex: the sign
                    of the Gaussian curvature of a central surface (``curvature``), elliptic,
-                   hyperbolic or hybrid, and the shape chart (``shape``)
+                   hyperbolic or hybrid, and the shape chart (``shape``); the certificate of the mirror
+                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
@@ -110,7 +115,8 @@ nothing else.
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
                    ``evaldata_cmd``, ``inspect_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
-                   (``files``)
+                   (``files``), the options and output of boundary, crease, corner and dart vertices
+                   (``sharp``)
 ``__main__``       python -m symdecomp: the command line
 =================  ===========================================================================
 
@@ -154,6 +160,8 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.mirror": ("SectorDecomposition", "SectorEigenvalue", "SineBlock", "sector_decomposition", "sector_spectrum"),
     "symdecomp.analysis.redesign": ("redesign_vertex",),
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
+    "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
+    "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "SharpSpectrumEntry", "sharp_spectrum"),
     "symdecomp.analysis.ring_blocks": ("RingBlocks", "ring_blocks"),
     "symdecomp.analysis.ring_masks": ("ring_masks",),
     "symdecomp.analysis.ring_spectrum": ("RingSpectrum", "ring_spectrum"),
@@ -183,6 +191,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.verify.result": ("C1Verdict", "CrossCheckResult", "CrossCheckStatus"),
     "symdecomp.verify.ring_certify": ("certify_ring",),
     "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
+    "symdecomp.verify.sharp_certify": ("SharpCertificate", "certify_sharp"),
     "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),
 }
 

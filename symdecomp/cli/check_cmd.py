@@ -18,8 +18,10 @@ from symdecomp.cli.common import (
     print_json,
     progress,
     refuse_together,
+    sharp_given,
     valence_range,
 )
+from symdecomp.cli.sharp import add_sharp_options, sector_range
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import MAX_DOUBLE_DIGITS, check_memory
 
@@ -52,8 +54,9 @@ def register(sub) -> None:
         f"{MAX_DOUBLE_DIGITS}, default 10), certified mode by the same two routes. "
         "Exit status 1 if any valence disagrees or is left without a verdict.",
     )
-    p.add_argument("--n", dest="valences", type=valence_range("check --certify --route structural"), action=Once,
-                   required=True, metavar="A:B",
+    which = p.add_mutually_exclusive_group(required=True)
+    which.add_argument("--n", dest="valences", type=valence_range("check --certify --route structural"), action=Once,
+                   metavar="A:B",
                    help=f"valences to check: an inclusive range A:B or a single N (at most {LIMITS['check'][0]}; with "
                    f"--certify {LIMITS['check --certify --route structural'][0]} on the structural route, "
                    f"{LIMITS['check --certify'][0]} on the dense one)")
@@ -71,9 +74,58 @@ def register(sub) -> None:
     flag(p, "--structural", help="with --certify: the same as --route structural (kept for existing scripts)")
     add_pool_options(p)
     flag(p, "--json", help="print one JSON object: {rows: [...], summary: {...}}")
+    which.add_argument("--k", dest="sectors", type=sector_range, action=Once, metavar="A:B",
+                       help="with --certify and --boundary, --corner, --crease K2 or --dart: the faces K of the vertex's "
+                       "sector, K or an inclusive range A:B (1 <= K <= 64); each K is proved: the mirror decomposition's "
+                       "blocks against the 1-ring matrix built by exact refinement of the tagged mesh (chi_S = the "
+                       "product of the blocks' characteristic polynomials, exactly)")
     add_scheme_option(p)
     add_rings_option(p)
+    add_sharp_options(p, count="--k")
     p.set_defaults(func=run)
+
+
+def _run_sharp(args) -> int:
+    """``check --k A:B --boundary --certify`` (and --corner, --crease K2, --dart): one certified row per K."""
+    from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
+    from symdecomp.verify.sharp_certify import certify_sharp
+
+    if not args.certify:
+        raise InvalidInputError("check --k: the check of boundary, crease, corner and dart vertices is certified: give --certify")
+    for option in ("--route", "--structural", "--solver", "--jobs", "--executor", "--dps"):
+        if given(args, option.lstrip("-")):
+            raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
+    refuse_sharp_options(args, "--rings")
+    vertices = [sharp_vertex(args, k) for k in args.sectors]  # every bad combination refused before the work
+    from symdecomp.schemes.sector import exact_sharp_matrix
+
+    for vertex in vertices:  # rules irrational at some K: refused before the header
+        exact_only(args, vertex, lambda: exact_sharp_matrix(args.scheme, vertex))  # noqa: B023 - called at once
+    start, rows = time.perf_counter(), []
+    if not args.json:
+        print(f"{args.scheme.name}: mirror decomposition vs full matrix, certified (exact): chi_S of the refined 1-ring "
+              "matrix = det(l - C) prod det(l - M(theta_j)) in Q[l]")
+        print(f"{'K':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'vertex':<16} {'chi_S bits':>10}  certificate")
+    for vertex in progress(vertices, len(vertices), "certify"):
+        r = exact_only(args, vertex, lambda: certify_sharp(args.scheme, vertex))  # noqa: B023 - called at once
+        rows.append(r)
+        if not args.json:
+            line = (f"{r.n:>4}  {r.status.value:<9} {r.distinct:>8}  {'exact':<9} {r.vertex:<16} {r.height_bits:>10}  "
+                    f"{r.method}")
+            print(line if r.ok else f"{line}\n      {r.message}", flush=True)
+    elapsed = time.perf_counter() - start
+    failed = [r for r in rows if not r.ok]
+    counts = {st: sum(1 for r in rows if r.status.value == st) for st in ("agree", "disagree", "undecided")}
+    if args.json:
+        print_json({"scheme": args.scheme.name, "vertex": describe(vertices[0]).split()[0], "rows": [r.as_json() for r in rows],
+                    "summary": {"mode": "certified", "route": "mirror", "sectors": len(rows), **counts,
+                                "seconds": round(elapsed, 3), "ok": not failed}})
+    else:
+        tally = ", ".join(f"{v} {k}" for k, v in counts.items() if v)
+        print(f"{len(rows)} vertices: {tally} ({elapsed:.2f} s)")
+        for r in failed:
+            print(f"FAILED {r.message}")
+    return 1 if failed else 0
 
 
 def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):
@@ -165,6 +217,14 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
     from symdecomp.verify.result import CrossCheckStatus
 
+    if args.sectors is not None or sharp_given(args):
+        if args.sectors is None:
+            raise InvalidInputError("--n: valences of interior vertices; give the faces of a boundary, crease, corner or "
+                                    "dart vertex's sector with --k A:B")
+        if not sharp_given(args):
+            raise InvalidInputError("--k: the faces of a sharp vertex's sector: give --boundary, --corner, --crease K2 or "
+                                    "--dart (interior valences are --n A:B)")
+        return _run_sharp(args)
     rings = args.rings if general_path(args) else None
     args.route_note = ""
     if args.certify:

@@ -42,6 +42,8 @@ __all__ = [
     "check_scheme_valences",
     "refuse_non_quad",
     "given",
+    "sharp_given",
+    "SHARP_OPTIONS",
     "refuse_together",
     "progress",
     "print_json",
@@ -117,6 +119,15 @@ def flag(parser, *names, **kwargs):
 def given(args, dest: str) -> bool:
     """Whether the user gave the option stored in ``dest`` (as opposed to its default)."""
     return dest in getattr(args, "_given", set())
+
+
+#: The options that name a boundary, crease, corner or dart vertex (:mod:`symdecomp.cli.sharp`), by destination.
+SHARP_OPTIONS = {"boundary": "--boundary", "corner": "--corner", "crease": "--crease", "dart": "--dart"}
+
+
+def sharp_given(args) -> bool:
+    """Whether the command line names a boundary, crease, corner or dart vertex (then ``N`` is a face count)."""
+    return any(given(args, dest) for dest in SHARP_OPTIONS)
 
 
 def refuse_together(args, first: str, second: str, why: str) -> None:
@@ -287,8 +298,15 @@ def check_scheme_valences(args) -> None:
     """
     scheme = getattr(args, "scheme", None)
     valences = getattr(args, "valences", None) or getattr(args, "n", None)
-    if not isinstance(scheme, Scheme) or valences is None:
-        return
+    if given(args, "sharpness") and not (given(args, "crease") or given(args, "dart")):
+        raise InvalidInputError("--sharpness: the sharpness of a crease's edges; give it with --crease K2 or --dart (boundary "
+                                "edges are infinitely sharp)")
+    if not isinstance(scheme, Scheme) or valences is None or sharp_given(args):
+        return  # a sharp vertex's N is a face count: its matrix's rules are checked where it is built
+    if isinstance(valences, int) and valences < 3:  # N admits face counts from 1 for sharp vertices
+        bound = LIMITS.get(getattr(args, "command", ""), (None,))[0]
+        raise InvalidInputError(f"argument N: expected a valence: an integer >= 3{f' and <= {bound}' if bound else ''}, got "
+                                f"{valences} (face counts 1 and 2 are for --boundary, --corner, --crease or --dart)")
     for n in valences if isinstance(valences, list) else [valences]:
         scheme.fitting_valence(n, real=True)
 

@@ -21,7 +21,18 @@ from __future__ import annotations
 
 import sys
 
-from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, closed_form_obstacle, digits, flag, general_path, print_json, valence
+from symdecomp.cli.common import (
+    Once,
+    add_rings_option,
+    add_scheme_option,
+    closed_form_obstacle,
+    digits,
+    flag,
+    general_path,
+    print_json,
+    sharp_given,
+)
+from symdecomp.cli.sharp import add_sharp_options, faces_or_valence
 from symdecomp.errors import SymdecompError
 
 
@@ -31,14 +42,22 @@ def register(sub) -> None:
         help="limit-position and tangent masks of the central vertex at valence N",
         description="Left eigenvectors of the valence-N subdivision matrix for the eigenvalue 1 (limit position, "
         "weights summing to 1) and for the subdominant eigenvalue lambda_1 (two tangent masks: weight cos(2 pi i/N), "
-        "resp. sin(2 pi i/N), on a_i; b_i weights from the eigenvector equation; 0 on O).",
+        "resp. sin(2 pi i/N), on a_i; b_i weights from the eigenvector equation; 0 on O). With --boundary, --corner, "
+        "--crease K2 or --dart: exact left eigenvectors of the vertex's 1-ring matrix: the limit position, the boundary "
+        "(or crease) curve's tangent (the crease block's eigenvalue 1/2: it vanishes off the crease points) and the "
+        "surface's cross tangent (the largest eigenvalue of a sector's block, its sine block j = 1, plus the solve on the "
+        "crease points), one per side of a crease; a corner's two boundary curves; a dart's two subdominant "
+        "eigenvectors; with --sharpness S, of the level-0 matrix. Exit status 1 when the tangents' eigenvalues are not "
+        "certified the two subdominant ones.",
     )
-    p.add_argument("n", type=valence("masks"), metavar="N", help="the valence (an integer, 3 <= N <= 1000)")
+    p.add_argument("n", type=faces_or_valence("masks"), metavar="N",
+                   help="the valence (an integer, 3 <= N <= 1000), or the faces K of a sharp vertex's sector")
     p.add_argument("--digits", type=digits(), action=Once, default=20,
                    help="significant digits of the weights (default 20, at most 1000)")
     flag(p, "--json", help='print {"n", "position", "tangents", "subdominant"}')
     add_scheme_option(p)
     add_rings_option(p)
+    add_sharp_options(p)
     p.set_defaults(func=run)
 
 
@@ -97,6 +116,10 @@ def run(args) -> int:
     from symdecomp.analysis.masks import limit_masks, limit_masks_at
     from symdecomp.analysis.tangent import complex_at
 
+    if sharp_given(args):
+        from symdecomp.cli.sharp import run_sharp_masks
+
+        return run_sharp_masks(args)
     certified, why, one_simple = _subdominance(args)
     if not one_simple:
         print(f"symdecomp masks: at n = {args.n}, {args.scheme.name}: {why}; no limit position mask is defined, and no "

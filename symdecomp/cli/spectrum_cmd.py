@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, valence
+from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, sharp_given
+from symdecomp.cli.sharp import add_sharp_options, faces_or_valence
 from symdecomp.errors import InvalidInputError
 
 #: Above this valence the any-scheme route leaves out the exact expressions unless --exact is given.
@@ -18,16 +19,47 @@ def register(sub) -> None:
         "multiplicity and the n-gon frequencies k it comes from. For triangle schemes (loop, loop-warren) and "
         "--rings K > 1: the eigenvalues of the frequency matrices E_0 and E(omega_N^k) of the K-ring matrix, "
         "closed forms where their characteristic polynomials factor into degrees <= 2, certified Arb balls "
-        "otherwise, with exact values and Jordan block sizes where decidable.",
+        "otherwise, with exact values and Jordan block sizes where decidable. With --boundary, --corner, --crease K2 or "
+        "--dart: the exact eigenvalues of the vertex's 1-ring matrix (built by exact refinement of the tagged mesh), "
+        "each with the block of the mirror decomposition it comes from (the crease block; the sine block j of a "
+        "sector of K faces, theta = pi j/K; the last mode j = K), and with --sharpness S at each level whose "
+        "matrix differs until the sharpness has decayed.",
     )
-    p.add_argument("n", type=valence("spectrum"), metavar="N", help="the valence (an integer, 3 <= N <= 2000)")
+    p.add_argument("n", type=faces_or_valence("spectrum"), metavar="N",
+                   help="the valence (an integer, 3 <= N <= 2000), or the faces K of a sharp vertex's sector")
     p.add_argument("--digits", type=digits(), action=Once, default=20,
                    help="significant digits of the values (default 20, at most 1000)")
     flag(p, "--json", help='print {"n", "scheme", "eigenvalues": [{"value", "multiplicity", "frequencies"}]}')
     flag(p, "--exact", help=f"any-scheme route: print exact expressions also for N > {EXACT_UP_TO} (slower)")
     add_scheme_option(p)
     add_rings_option(p)
+    add_sharp_options(p)
     p.set_defaults(func=run)
+
+
+def _run_sharp(args) -> int:
+    from symdecomp.analysis.sharp_spectrum import sharp_levels
+    from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
+
+    refuse_sharp_options(args, "--rings", "--exact")
+    vertex = sharp_vertex(args, args.n)
+    levels = exact_only(args, vertex, lambda: sharp_levels(args.scheme, vertex, digits=args.digits))
+    if args.json:
+        print_json({"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
+                    "levels": [s.as_json() for s in levels]})
+        return 0
+    for s in levels:
+        distinct = len(s.entries)
+        where = "" if len(levels) == 1 else f", level {s.level} (sharpness {s.sharpness})"
+        names = ("blocks of the mirror decomposition" if s.decomposed else "parts of the matrix (no mirror decomposition: "
+                 + ("semi-sharp edges)" if s.sharpness != float("inf") else "see check --k K --certify)"))
+        print(f"{args.scheme.name}, {describe(vertex)}{where} ({vertex.lattice} mesh): {s.size} eigenvalues, {distinct} "
+              f"distinct; {names}")
+        width = max(len(e.text) for e in s.entries)
+        print(f"{'value':<{width}}  mult  block; exact")
+        for e in s.entries:
+            print(f"{e.text:<{width}}  {e.multiplicity:>4}  {', '.join(e.blocks)}; {e.exact}")
+    return 0
 
 
 def _run_general(args) -> int:
@@ -52,6 +84,8 @@ def _run_general(args) -> int:
 def run(args) -> int:
     from symdecomp.analysis.spectrum import closed_form_spectrum
 
+    if sharp_given(args):
+        return _run_sharp(args)
     if general_path(args):
         return _run_general(args)
     if args.exact:

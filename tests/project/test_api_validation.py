@@ -130,6 +130,8 @@ INTEGERS = [
     (sd.sharp_subdivision_matrix, "rings", dict(scheme=CC, vertex=BOUNDARY), 1, 1, True),
     (sd.sharp_subdivision_matrix, "level", dict(scheme=CC, vertex=SEMI), 1, 0, True),
     (sd.exact_sharp_matrix, "rings", dict(scheme=LOOP, vertex=sd.SharpVertex.boundary(3, sd.TRIANGLE)), 1, 1, True),
+    (sd.sharp_spectrum, "digits", dict(scheme=CC, vertex=BOUNDARY), 10, 1, True),
+    (sd.certify_sharp, "digits", dict(scheme=CC, vertex=BOUNDARY), 10, 1, True),
 ]
 
 #: ``(function, the other arguments)`` of the functions that take a scheme.
@@ -199,6 +201,9 @@ SCHEMES = [
     (sd.limit_frame, dict(mesh=CUBE, vertex=0)),
     (sd.sharp_subdivision_matrix, dict(vertex=BOUNDARY)),
     (sd.exact_sharp_matrix, dict(vertex=BOUNDARY)),
+    (sd.sharp_spectrum, dict(vertex=BOUNDARY)),
+    (sd.sharp_masks, dict(vertex=BOUNDARY)),
+    (sd.certify_sharp, dict(vertex=BOUNDARY)),
     (sd.sector_decomposition, dict(vertex=BOUNDARY)),
     (sd.sector_spectrum, dict(vertex=3)),
 ]

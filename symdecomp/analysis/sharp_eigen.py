@@ -1,0 +1,202 @@
+"""Exact eigenvalues of a sharp vertex's subdivision matrix, part by part: the crease block and each sector.
+
+At a boundary, crease or corner vertex the rules of the crease points (the vertex and its
+neighbours on the sharp edges) read crease points only, and the rules of a sector's points read
+that sector and the crease points only. So the one-step matrix ``S`` (in any order) is block
+lower-triangular with the *crease block* ``C`` and one block ``Y_s`` per sector on its diagonal, and
+``chi_S = chi_C prod_s chi_{Y_s}``. Nothing here assumes it: the crease points are *found* as the
+smallest set of points that contains the vertex and its sharp-edge neighbours and the support of its own rows
+(:func:`matrix_parts`), and the sectors as the connected pieces of the rest. A dart or a
+semi-sharp crease (the vertex reads its whole ring) has one part, the whole matrix.
+
+Each eigenvalue is a root of an irreducible rational factor of its part's characteristic
+polynomial (FLINT), kept exactly: the factor, the root's index in sympy's order, a closed form
+(degree <= 2) or a ``CRootOf``, and a certified Arb ball. Equal eigenvalues of two parts are the
+same root of the same factor, so equality is exact. Rational matrices only (a scheme whose rules
+hold cos(pi/k) gives algebraic entries: the caller says so).
+
+>>> import flint
+>>> S = flint.fmpq_mat([[flint.fmpq(3, 4), flint.fmpq(1, 8), flint.fmpq(1, 8), 0],
+...                     [flint.fmpq(1, 2), flint.fmpq(1, 2), 0, 0], [flint.fmpq(1, 2), 0, flint.fmpq(1, 2), 0],
+...                     [flint.fmpq(1, 4), flint.fmpq(1, 4), flint.fmpq(1, 4), flint.fmpq(1, 4)]])
+>>> [p.indices for p in matrix_parts(S, (0, 1, 2))]
+[(0, 1, 2), (3,)]
+>>> [(str(e.exact), e.multiplicity, e.part) for e in part_eigenvalues(S, matrix_parts(S, (0, 1, 2)))]
+[('1', 1, 'crease'), ('1/2', 1, 'crease'), ('1/4', 1, 'crease'), ('1/4', 1, 'sector 1')]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import flint
+import sympy as sp
+
+from symdecomp.algebra.number_field import root_expression
+from symdecomp.errors import PrecisionError
+
+__all__ = ["crease_points", "MatrixPart", "SharpEigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus",
+           "merge", "separated", "ball_at"]
+
+
+@dataclass(frozen=True)
+class MatrixPart:
+    """A diagonal block of the block-triangular one-step matrix."""
+
+    #: ``"crease"``, ``"sector 1"``, ``"sector 2"``, ... or ``"whole"`` (no block structure).
+    label: str
+    #: Its rows (= columns) in the matrix, ascending.
+    indices: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class SharpEigenvalue:
+    """One distinct eigenvalue of a part (or of the matrix, after :func:`merge`)."""
+
+    #: The monic irreducible rational factor it is a root of.
+    factor: flint.fmpq_poly
+    #: Its index among the roots of ``factor`` in sympy's order (real ascending, then complex).
+    index: int
+    #: The exact value (a closed form for degree <= 2, else a ``CRootOf``).
+    exact: sp.Expr
+    #: A certified ball around it (``flint.acb``).
+    ball: object
+    #: Its algebraic multiplicity in the part (or the matrix).
+    multiplicity: int
+    #: The part(s) it comes from, e.g. ``"crease"`` or ``"crease, sector 1"``.
+    part: str
+
+    @property
+    def key(self) -> tuple:
+        """Equal keys, equal eigenvalues (and conversely): the factor's coefficients and the root's index."""
+        return (tuple(int(c) for c in self.factor.numer().coeffs()), self.index)
+
+    @property
+    def is_real(self) -> bool:
+        return self.factor.degree() == 1 or bool(self.exact.is_real)
+
+
+def submatrix(S: flint.fmpq_mat, indices: Sequence[int]) -> flint.fmpq_mat:
+    """The principal submatrix of ``S`` on ``indices``."""
+    return flint.fmpq_mat([[S[i, j] for j in indices] for i in indices])
+
+
+def crease_points(vertex) -> tuple[int, ...]:
+    """The rows of the vertex ``O`` and of its neighbours ``a_m`` on sharp edges in the 1-ring order ``O, a_0, ..``."""
+    return (0,) + tuple(1 + m for m in vertex.sharp_rays())
+
+
+def _support(S: flint.fmpq_mat, i: int) -> set[int]:
+    return {j for j in range(S.ncols()) if S[i, j] != 0}
+
+
+def matrix_parts(S: flint.fmpq_mat, seeds: Sequence[int] = (0,)) -> tuple[MatrixPart, ...]:
+    """The crease block (the closure of ``seeds``, the vertex and its sharp-edge neighbours, under row supports) and
+    the sectors, or the whole matrix when that closure is everything (a dart, a semi-sharp crease)."""
+    m = S.nrows()
+    crease, todo = set(seeds), list(seeds)
+    while todo:
+        for j in _support(S, todo.pop()) - crease:
+            crease.add(j)
+            todo.append(j)
+    if len(crease) == m and crease != set(seeds):
+        return (MatrixPart("whole", tuple(range(m))),)
+    rest = set(range(m)) - crease
+    parts = [MatrixPart("crease", tuple(sorted(crease)))]
+    links = {i: (_support(S, i) & rest) for i in rest}
+    for i in rest:
+        for j in links[i]:
+            links[j].add(i)
+    seen: set[int] = set()
+    for start in sorted(rest):
+        if start in seen:
+            continue
+        piece, todo = {start}, [start]
+        while todo:
+            for j in links[todo.pop()] - piece:
+                piece.add(j)
+                todo.append(j)
+        seen |= piece
+        parts.append(MatrixPart(f"sector {len(parts)}", tuple(sorted(piece))))
+    return tuple(parts)
+
+
+def _balls(p: flint.fmpq_poly, prec: int) -> list:
+    with flint.ctx.workprec(prec):
+        return [r for r, _ in p.numer().complex_roots()]
+
+
+def _factor_roots(p: flint.fmpq_poly, prec: int) -> list[tuple[int, sp.Expr, object]]:
+    """``(index, exact, ball)`` for each root of the irreducible ``p``, the ball matched to the exact value."""
+    balls = _balls(p, prec)
+    out = []
+    for index in range(p.degree()):
+        exact = root_expression(p, index)
+        approx = complex(sp.N(exact, 30))
+        ball = min(balls, key=lambda b: abs(complex(float(b.real.mid()), float(b.imag.mid())) - approx))
+        out.append((index, exact, ball))
+    return out
+
+
+def part_eigenvalues(S: flint.fmpq_mat, parts: Sequence[MatrixPart], *, prec: int = 256) -> list[SharpEigenvalue]:
+    """Every distinct eigenvalue of each part, exactly, with its multiplicity in that part (parts in order)."""
+    out = []
+    for part in parts:
+        chi = submatrix(S, part.indices).charpoly()
+        _, factors = chi.factor()
+        items = []
+        for f, e in factors:
+            f = f / f.leading_coefficient()
+            for index, exact, ball in _factor_roots(f, prec):
+                items.append(SharpEigenvalue(f, index, exact, ball, e, part.label))
+        out += sorted(items, key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid())))
+    return out
+
+
+def merge(values: Sequence[SharpEigenvalue]) -> list[SharpEigenvalue]:
+    """The eigenvalues of several parts as those of their matrix: equal values joined, multiplicities added."""
+    joined: dict[tuple, SharpEigenvalue] = {}
+    for v in values:
+        old = joined.get(v.key)
+        if old is None:
+            joined[v.key] = v
+        else:
+            parts = old.part if v.part in old.part.split(", ") else f"{old.part}, {v.part}"
+            joined[v.key] = SharpEigenvalue(old.factor, old.index, old.exact, old.ball, old.multiplicity + v.multiplicity, parts)
+    return by_modulus(list(joined.values()))
+
+
+def by_modulus(values: Sequence[SharpEigenvalue]) -> list[SharpEigenvalue]:
+    """``values`` sorted by decreasing modulus (then real part), by their balls' midpoints.
+
+    The order is a presentation: where it matters (is this value strictly larger in modulus than
+    that one?) :func:`separated` certifies it.
+    """
+    return sorted(values, key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid()), v.key))
+
+
+def separated(a: SharpEigenvalue, b: SharpEigenvalue, *, max_prec: int = 4096) -> bool:
+    """Whether ``|a| > |b|`` is certified (Arb, raising the precision of the roots up to ``max_prec`` bits)."""
+    if a.key == b.key:
+        return False
+    prec = 256
+    while True:
+        ra = ball_at(a, prec)
+        rb = ball_at(b, prec)
+        if abs(ra) > abs(rb):
+            return True
+        if abs(ra) < abs(rb) or prec >= max_prec:
+            return False
+        prec *= 2
+
+
+def ball_at(v: SharpEigenvalue, prec: int):
+    """The eigenvalue's ball at ``prec`` bits (its own ball when that is at least as precise)."""
+    if prec <= 256:
+        return v.ball
+    balls = _balls(v.factor, prec)
+    for b in balls:
+        if b.overlaps(v.ball):
+            return b
+    raise PrecisionError(f"the root {v.exact} was not found again at {prec} bits")  # pragma: no cover - isolating balls

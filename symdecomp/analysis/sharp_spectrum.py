@@ -1,0 +1,162 @@
+"""The exact spectrum of a boundary, crease, corner or dart vertex, each eigenvalue with the block it comes from.
+
+The eigenvalues are those of the one-step matrix ``S`` of the vertex's 1-ring built by exact refinement
+(:func:`~symdecomp.schemes.sector.exact_sharp_matrix`), found part by part
+(:mod:`symdecomp.analysis.sharp_eigen`: the crease block and each sector), each a root of an irreducible
+rational factor, with its exact multiplicity. Each is then named by the block of the mirror decomposition
+(:func:`~symdecomp.analysis.mirror.sector_spectrum`) that has it: the crease block, the sine block ``j`` of a
+sector of ``k`` faces (``theta = pi j/k``), its last mode (``j = k`` on quads: ``b_i = (-1)^i``), or at a dart
+the symmetric (cosine) part. The names are matched by value (a block eigenvalue's 40-digit value to the
+nearest certified root); that the blocks *are* the spectrum, with multiplicities, is what
+``check --certify`` proves (:mod:`symdecomp.verify.sharp_certify`). Semi-sharp edges (finite sharpness) have
+no mirror decomposition: their eigenvalues are named by part only, at each refinement level whose matrix
+differs from the level before, until the sharpness has decayed to 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import flint
+import sympy as sp
+
+from symdecomp.analysis.ring_spectrum import acb_text
+from symdecomp.analysis.sharp_eigen import SharpEigenvalue, crease_points, matrix_parts, merge, part_eigenvalues
+from symdecomp.errors import NotApplicableError
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import check_digits
+
+__all__ = ["SharpSpectrumEntry", "SharpSpectrum", "sharp_spectrum", "sharp_levels", "MAX_EXACT_TEXT"]
+
+#: Longest closed form printed for a block's eigenvalue; longer ones are shown as the root of their factor.
+MAX_EXACT_TEXT = 90
+
+
+@dataclass(frozen=True)
+class SharpSpectrumEntry:
+    """One distinct eigenvalue."""
+
+    #: The exact eigenvalue (its factor and root, a certified ball).
+    eigenvalue: SharpEigenvalue
+    #: Decimal text.
+    text: str
+    #: The blocks of the mirror decomposition that have it (``"crease"``, ``"sine j=1 (theta = pi/5)"``, ...), or
+    #: the parts of the matrix (``"crease"``, ``"sector 1"``, ``"whole"``) when there is no decomposition.
+    blocks: tuple[str, ...]
+    #: An exact expression: a closed form, or ``"root of <irreducible polynomial>"``.
+    exact: str
+
+    @property
+    def multiplicity(self) -> int:
+        return self.eigenvalue.multiplicity
+
+    def as_json(self) -> dict:
+        return {"value": self.text, "multiplicity": self.multiplicity, "blocks": list(self.blocks), "exact": self.exact}
+
+
+@dataclass(frozen=True)
+class SharpSpectrum:
+    """The spectrum of one sharp vertex at one refinement level."""
+
+    scheme: str
+    #: The vertex (a :class:`~symdecomp.schemes.sector.SharpVertex`).
+    vertex: object
+    level: int
+    #: The sharpness at this level (``math.inf``, a ``Fraction``).
+    sharpness: object
+    size: int
+    #: Whether the names come from the mirror decomposition (else from the parts of the matrix).
+    decomposed: bool
+    entries: tuple[SharpSpectrumEntry, ...]
+
+    def as_json(self) -> dict:
+        s = self.sharpness
+        return {"level": self.level, "sharpness": "inf" if s == math.inf else str(s), "size": self.size,
+                "decomposed": self.decomposed, "eigenvalues": [e.as_json() for e in self.entries]}
+
+
+def _block_name(e, vertex) -> str:
+    if e.block in ("crease", "cosine"):
+        return "crease" if e.block == "crease" else "cosine (symmetric part)"
+    k = vertex.sectors[e.sector]
+    where = f", sector {e.sector + 1}" if len(vertex.sectors) > 1 else ""
+    if e.block == "face":
+        return f"last mode j={e.j} (b_i = (-1)^i){where}"
+    theta = sp.pi * e.j * (2 if vertex.closed and len(vertex.sectors) == 1 else 1) / k
+    return f"sine j={e.j} (theta = {sp.sstr(theta)}){where}"
+
+
+def _exact_text(v: SharpEigenvalue, candidates: list) -> str:
+    if v.factor.degree() <= 2:
+        return sp.sstr(v.exact)
+    short = [c for c in candidates if len(sp.sstr(c)) <= MAX_EXACT_TEXT and not c.has(sp.I)]
+    if short:
+        return sp.sstr(min(short, key=lambda c: len(sp.sstr(c))))
+    x = sp.Symbol("x")
+    poly = sp.Poly([sp.Rational(int(c.p), int(c.q)) for c in reversed(v.factor.coeffs())], x).as_expr()
+    return f"root {v.index} of {sp.sstr(poly)}"
+
+
+def _names(scheme, vertex, values: list[SharpEigenvalue]) -> tuple[dict, dict] | None:
+    """``({key: [block names]}, {key: [closed forms]})`` from the mirror decomposition, or ``None`` where it does not apply
+    or where its eigenvalues, matched by value, do not have the matrix's multiplicities."""
+    from symdecomp.analysis.mirror import sector_spectrum
+
+    try:
+        spectrum = sector_spectrum(scheme, vertex)
+    except NotApplicableError:
+        return None
+    names: dict = {v.key: [] for v in values}
+    forms: dict = {v.key: [] for v in values}
+    counts: dict = {v.key: 0 for v in values}
+    for e in spectrum:
+        z = complex(sp.N(e.value, 40))
+        best = min(values, key=lambda v: abs(complex(float(v.ball.real.mid()), float(v.ball.imag.mid())) - z))
+        if abs(complex(float(best.ball.real.mid()), float(best.ball.imag.mid())) - z) > 1e-12 * max(1.0, abs(z)):
+            return None  # a block eigenvalue that is no eigenvalue of the matrix
+        name = _block_name(e, vertex)
+        if name not in names[best.key]:
+            names[best.key].append(name)
+        forms[best.key].append(e.value)
+        counts[best.key] += 1
+    if any(counts[v.key] != v.multiplicity for v in values):
+        return None  # the blocks are not this matrix's spectrum (check --certify says where): no names from them
+    return names, forms
+
+
+def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20) -> SharpSpectrum:
+    """The exact spectrum of ``vertex`` at refinement ``level``, each eigenvalue named by its block (module docstring)."""
+    from symdecomp.schemes.sector import exact_sharp_matrix
+
+    scheme, digits = check_scheme(scheme), check_digits(digits)
+    S = exact_sharp_matrix(scheme, vertex, level=level)
+    here = vertex.at_level(level)
+    values = merge(part_eigenvalues(S, matrix_parts(S, crease_points(vertex)), prec=max(256, 4 * digits + 64)))
+    named = _names(scheme, here, values) if here.sharpness == math.inf else None
+    entries = []
+    with flint.ctx.workprec(4 * digits + 64):
+        for v in values:
+            blocks = tuple(named[0][v.key]) if named else tuple(v.part.split(", "))
+            text = acb_text(v.ball, digits)
+            entries.append(SharpSpectrumEntry(v, text, blocks, _exact_text(v, named[1][v.key] if named else [])))
+    return SharpSpectrum(scheme.name, vertex, level, here.sharpness, S.nrows(), named is not None, tuple(entries))
+
+
+def sharp_levels(scheme: Scheme, vertex, *, digits: int = 20) -> list[SharpSpectrum]:
+    """The spectra at level 0 and at each later level whose matrix differs from the one before, until the
+    sharpness has decayed to 0 (one spectrum for infinitely sharp edges)."""
+    from symdecomp.schemes.sector import MAX_LEVEL, exact_sharp_matrix
+
+    out = [sharp_spectrum(scheme, vertex, digits=digits)]
+    if vertex.sharpness == math.inf:
+        return out
+    previous = exact_sharp_matrix(scheme, vertex)
+    for level in range(1, MAX_LEVEL + 1):
+        S = exact_sharp_matrix(scheme, vertex, level=level)
+        if S != previous:
+            out.append(sharp_spectrum(scheme, vertex, level=level, digits=digits))
+            previous = S
+        if vertex.at_level(level).sharpness == 0:
+            break
+    return out

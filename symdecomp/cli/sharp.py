@@ -1,0 +1,184 @@
+"""Boundary, crease, corner and dart vertices on the command line: the options ``spectrum``, ``masks`` and ``check`` share.
+
+The vertex is named by one option (why these names: a user says "a boundary vertex with 5 faces", so
+``spectrum 5 --boundary``; ``--crease K2`` takes the second sector's faces because a crease vertex has two
+sectors and the positional argument is the first; ``--corner`` and ``--dart`` are the tags OpenSubdiv and
+modellers use):
+
+* ``--boundary``: a boundary vertex with ``K`` faces (an open fan, the standard crease rule at the vertex);
+* ``--corner``: the same fan with the vertex tagged as a corner (interpolated);
+* ``--crease K2``: an interior vertex on a crease, ``K`` faces on one side and ``K2`` on the other;
+* ``--dart``: an interior vertex of valence ``K`` where a crease ends (one sharp edge);
+* ``--sharpness S`` (with ``--crease`` or ``--dart``): the crease edges' sharpness, an exact rational ``>= 0``
+  or ``inf`` (the default); semi-sharp edges decay by 1 a level.
+
+``K`` is the sector's face count (``spectrum K``, ``masks K``; ``check --k A:B``), from 1 (a dart or a
+crease needs 2 faces around the vertex in all). The lattice is the scheme's: quads for Catmull-Clark and quad
+scheme files, triangles for Loop. The scheme's ``[sharp]`` rules (a scheme file's section) are used where it
+gives them, the standard ones otherwise.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+from symdecomp.cli.common import SHARP_OPTIONS, Once, flag, given, integer, positive_int, print_json
+from symdecomp.errors import InvalidInputError
+
+__all__ = ["add_sharp_options", "sharp_vertex", "faces_or_valence", "sector_range", "refuse_sharp_options", "describe",
+           "run_sharp_masks", "exact_only"]
+
+#: Most faces around a sharp vertex on the command line (the matrices are dense and exact).
+MAX_FACES = 64
+
+
+def _sharpness(text: str):
+    from symdecomp.schemes.sharp import check_sharpness
+
+    try:
+        return check_sharpness(text, "--sharpness")
+    except InvalidInputError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def add_sharp_options(parser, *, count: str = "N") -> None:
+    """The options of a boundary, crease, corner or dart vertex (module docstring); ``count``: the argument giving K."""
+    g = parser.add_argument_group("boundary, crease, corner and dart vertices",
+                                  f"with one of these, {count} is the faces K of the vertex's sector (1 <= K <= {MAX_FACES})")
+    flag(g, "--boundary", help="a boundary vertex with K faces")
+    flag(g, "--corner", help="a boundary vertex with K faces tagged as a corner (interpolated)")
+    g.add_argument("--crease", type=positive_int("--crease"), action=Once, metavar="K2",
+                   help="an interior vertex on a crease with K faces on one side and K2 on the other")
+    flag(g, "--dart", help="an interior vertex of valence K where a crease ends (one sharp edge)")
+    g.add_argument("--sharpness", type=_sharpness, action=Once, metavar="S", default=math.inf,
+                   help="with --crease or --dart: the crease's sharpness, an exact rational >= 0 or inf (default); semi-sharp "
+                   "edges decay by 1 a level, and the output shows every level whose matrix differs")
+
+
+def faces_or_valence(limit: str):
+    """argparse type of ``N``: an integer ``>= 1`` (a valence ``>= 3`` is checked when no sharp option is given)."""
+
+    def parse(text: str) -> int:
+        return integer(text, "N", minimum=1, limit=limit, noun="a valence (or with --boundary, ... a face count): an integer")
+
+    parse.__name__ = "valence"
+    return parse
+
+
+def sector_range(text: str) -> list[int]:
+    """argparse type of ``--k``: ``K`` or an inclusive range ``A:B`` of face counts, ``1 <= A <= B <= MAX_FACES``."""
+    if text.count(":") > 1:
+        raise argparse.ArgumentTypeError(f"expected K or A:B, got {text!r}")
+    parts = text.split(":")
+    lo, hi = (integer(p, "--k", minimum=1, noun="a face count: an integer") for p in (parts[0], parts[-1]))
+    if hi > MAX_FACES:
+        raise argparse.ArgumentTypeError(f"expected face counts <= {MAX_FACES}, got {hi} (the matrices are dense and exact)")
+    if hi < lo:
+        raise argparse.ArgumentTypeError(f"empty range {text!r}: {hi} < {lo}")
+    return list(range(lo, hi + 1))
+
+
+def sharp_vertex(args, k: int):
+    """The :class:`~symdecomp.schemes.sector.SharpVertex` the options name, with ``k`` faces; one line for a bad combination."""
+    from symdecomp.schemes.sector import SharpVertex
+
+    named = [option for dest, option in SHARP_OPTIONS.items() if given(args, dest)]
+    if len(named) > 1:
+        raise InvalidInputError(f"{named[0]} and {named[1]} cannot be used together: each names a different kind of vertex")
+    if given(args, "sharpness") and named[0] not in ("--crease", "--dart"):
+        raise InvalidInputError(f"--sharpness: {named[0]} edges are boundary edges, always infinitely sharp; give it with "
+                                "--crease or --dart")
+    if k > MAX_FACES or getattr(args, "crease", None) and k + args.crease > MAX_FACES:
+        raise InvalidInputError(f"the vertex has more than {MAX_FACES} faces (the matrices are dense and exact)")
+    lat = args.scheme.lattice
+    if named[0] == "--boundary":
+        return SharpVertex.boundary(k, lat)
+    if named[0] == "--corner":
+        return SharpVertex.corner(k, lat)
+    if named[0] == "--crease":
+        return SharpVertex.crease(k, args.crease, lat, sharpness=args.sharpness)
+    if k < 3:
+        raise InvalidInputError(f"--dart: a dart is an interior vertex of valence K >= 3, got K = {k}")
+    return SharpVertex.dart(k, lat, sharpness=args.sharpness)
+
+
+def refuse_sharp_options(args, *names: str) -> None:
+    """Refuse options of the interior route that a sharp vertex does not have (``--rings`` > 1, ``--exact``, ...)."""
+    for name in names:
+        dest = name.lstrip("-").replace("-", "_")
+        if given(args, dest) and (dest != "rings" or args.rings != 1):
+            raise InvalidInputError(f"{name}: not available for boundary, crease, corner and dart vertices (their 1-ring "
+                                    "matrix is analysed exactly)")
+
+
+def describe(vertex) -> str:
+    """The vertex's short name (:func:`symdecomp.verify.sharp_certify.describe_vertex`)."""
+    from symdecomp.verify.sharp_certify import describe_vertex
+
+    return describe_vertex(vertex)
+
+
+def _block_names(scheme, vertex) -> dict:
+    """``{eigenvalue key: "block, block"}`` from the spectrum's names (mirror blocks, or parts of the matrix)."""
+    from symdecomp.analysis.sharp_spectrum import sharp_spectrum
+
+    return {e.eigenvalue.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
+
+
+def _print_mask(mask, names, digits: int, blocks: dict) -> None:
+    exact = mask.exact()
+    print(f"{mask.name} (eigenvalue {_value(mask, digits)}, {blocks.get(mask.eigenvalue.key, mask.eigenvalue.part)}):")
+    for i, (name, text) in enumerate(zip(names, mask.texts(digits))):
+        closed = "" if exact is None or exact[i].is_Integer or len(str(exact[i])) > 60 else f"  = {exact[i]}"
+        print(f"  {name}: {text}{closed}")
+
+
+def _value(mask, digits: int) -> str:
+    from symdecomp.analysis.ring_spectrum import acb_text
+
+    return acb_text(mask.eigenvalue.ball, digits)
+
+
+def run_sharp_masks(args) -> int:
+    """``symdecomp masks K --boundary`` (and ``--corner``, ``--crease K2``, ``--dart``): print the masks, exit 1 when the
+    tangents are not the tangent plane's."""
+    import sys
+
+    from symdecomp.analysis.ring_spectrum import acb_text
+    from symdecomp.analysis.sharp_masks import sharp_masks
+
+    refuse_sharp_options(args, "--rings")
+    vertex = sharp_vertex(args, args.n)
+    masks = exact_only(args, vertex, lambda: sharp_masks(args.scheme, vertex))
+    blocks = _block_names(args.scheme, vertex)
+    value, where = acb_text(masks.subdominant.ball, args.digits), blocks.get(masks.subdominant.key, masks.subdominant.part)
+    if args.json:
+        print_json({"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
+                    "position": masks.position.as_json(masks.names, args.digits),
+                    "tangents": [t.as_json(masks.names, args.digits) for t in masks.tangents],
+                    "subdominant": {"value": value, "blocks": where}, "tangent_plane": masks.tangent_plane,
+                    "reason": masks.reason})
+    else:
+        print(f"{args.scheme.name}, {describe(vertex)} ({vertex.lattice} mesh): subdominant eigenvalue {value} ({where}); "
+              f"{masks.reason}")
+        for mask in (masks.position, *masks.tangents):
+            _print_mask(mask, masks.names, args.digits, blocks)
+    if not masks.tangent_plane:
+        print(f"symdecomp masks: {describe(vertex)}: the tangent masks are not the tangent plane's ({masks.reason})",
+              file=sys.stderr)
+    return 0 if masks.tangent_plane else 1
+
+
+def exact_only(args, vertex, compute):
+    """``compute()``, with a scheme whose rules are irrational at this vertex refused in one line (the sharp routes
+    are exact over the rationals: Biermann-Levin-Zorin's ``cos(theta_k)`` weights are not, yet)."""
+    from symdecomp.errors import NotApplicableError
+
+    try:
+        return compute()
+    except NotApplicableError as exc:
+        why = str(exc).split("; use ")[0]
+        raise InvalidInputError(f"--scheme {args.scheme.name}, {describe(vertex)}: {why}; spectrum, masks and check of "
+                                "boundary, crease, corner and dart vertices work exactly over the rationals (rational "
+                                "[sharp] rules)") from None

@@ -41,6 +41,7 @@ SECTORS = (1, 12)
 
 @claim(
     "Sector: sine decomposition",
+    parameter="k",
     section="B.2",
     title="The sine polylines split a sector's interior into $2 \\times 2$ blocks, for every $k$",
     statement=r"In a sector of $k$ faces between two sharp edges, with mirror-symmetric smooth stencils, the polylines "
@@ -82,6 +83,7 @@ def check_crease(scheme: Scheme, printed=None) -> CheckResult:
 
 @claim(
     "Sector: crease block",
+    parameter="k",
     section="B.2",
     title="The crease block has the boundary curve's eigenvalues $1, \\frac12, \\frac14$",
     statement=r"$O$ and its two sharp-edge neighbours move by the crease rules alone (a block $C$ of the matrix, for "
@@ -126,6 +128,7 @@ def check_first_k(scheme: Scheme, printed=None, rules=None) -> CheckResult:
 
 @claim(
     "Sector: standard rules' subdominant eigenvalue",
+    parameter="k",
     section="B.2",
     title="With the standard rules the first sine eigenvalue exceeds $\\frac12$ from $k = 3$ (Catmull-Clark), $k = 4$ (Loop)",
     statement=r"With the standard boundary rules the largest eigenvalue of $M(\pi/k)$ exceeds the boundary curve's "
@@ -158,6 +161,7 @@ def check_blz(scheme: Scheme, printed=None) -> CheckResult:
 
 @claim(
     "Sector: modified rules (BLZ 2000)",
+    parameter="k",
     section="B.2",
     title="Biermann-Levin-Zorin's modified edge rule puts the first sine eigenvalue at $\\frac12$ for every $k$",
     statement=r"With the modified rule for a smooth edge at a crease vertex (weight $\gamma$ on its far end, "
@@ -192,6 +196,7 @@ def check_against_matrix(scheme: Scheme, sectors: tuple[int, int] = SECTORS) -> 
 
 @claim(
     "Sector: the blocks are the spectrum",
+    parameter="k",
     section="B.2",
     title="The crease and sine blocks give the characteristic polynomial of the boundary 1-ring",
     statement=r"For a boundary vertex with $k = 1, \dots, 12$ faces the characteristic polynomial of the 1-ring matrix "
@@ -228,6 +233,7 @@ def check_tangent(scheme: Scheme, printed=None) -> CheckResult:
 
 @claim(
     "Sector: the boundary tangent's continuation",
+    parameter="k",
     section="B.2",
     title="The boundary tangent continues into the sector as a sine of frequency $\\pi/2$ (Catmull-Clark), $\\pi/3$ (Loop)",
     statement=r"The eigenvector of the crease block's $\frac12$ ($O = 0$, $a_0 = -a_k$) continues into a sector of $k$ "

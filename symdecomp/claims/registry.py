@@ -58,6 +58,7 @@ When a check does not apply to a scheme:
 
 from __future__ import annotations
 
+import dataclasses
 import enum
 import importlib
 import pkgutil
@@ -255,6 +256,9 @@ class CheckResult:
     #: For which valences the verdict is established (:class:`Scope`); computed from the status, the
     #: valences and the counterexample unless the check states it (a ``corrected`` check states its correction's).
     scope: Scope | None = None
+    #: What ``n`` in the scope and the valences stands for: ``"n"`` (the valence), or ``"k"`` for a claim about
+    #: the sectors of ``k`` faces at a sharp vertex (set from the :class:`Claim`'s ``parameter`` by :func:`check_claim`).
+    parameter: str = "n"
 
     def __post_init__(self):
         object.__setattr__(self, "scope", self._computed_scope())
@@ -266,6 +270,11 @@ class CheckResult:
             raise ValueError("a numeric claim needs the digits it was checked to")
         if self.status is Status.VERIFIED and self.valences is None:
             raise ValueError("a verified claim needs the range of valences it was checked for")
+
+    @property
+    def scope_text(self) -> str | None:
+        """The scope as printed: ``every n``, or ``every k`` for a claim about sectors of ``k`` faces."""
+        return None if self.scope is None else self.scope.value.replace(" n", " " + self.parameter)
 
     def _computed_scope(self) -> Scope | None:
         stated, status = self.scope, self.status
@@ -365,6 +374,8 @@ class Claim:
     order: int = 0
     #: What the check needs of the scheme, tested in order before it runs (:class:`Requirement`).
     requires: tuple[Requirement, ...] = ()
+    #: What the claim's scope ranges over: ``"n"`` (the valence) or ``"k"`` (the faces of a sector at a sharp vertex).
+    parameter: str = "n"
 
     def sort_key(self):
         """Paper order: by section (:func:`section_key`), then in the order the section's module registers its claims."""
@@ -389,13 +400,16 @@ def section_key(section: str) -> tuple:
 REGISTRY: dict[str, Claim] = {}
 
 
-def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = ()):
-    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``."""
+def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (),
+          parameter: str = "n"):
+    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``
+    (``parameter``: what its scope ranges over, ``"n"`` or ``"k"``)."""
 
     def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:
         if label in REGISTRY:
             raise ValueError(f"claim {label!r} is registered twice")
-        REGISTRY[label] = Claim(label, section, title, statement, check, order=len(REGISTRY), requires=tuple(requires))
+        REGISTRY[label] = Claim(label, section, title, statement, check, order=len(REGISTRY), requires=tuple(requires),
+                                parameter=parameter)
         return check
 
     return register
@@ -440,7 +454,9 @@ def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | Non
     if budget is not None and not (isinstance(budget, (int, float)) and not isinstance(budget, bool) and 0 < budget < 10**6):
         raise InvalidInputError(f"budget must be a number of seconds between 0 and 1e6, got {budget!r}")
     get_claim(label)
-    return _check_claim(label, catmull_clark() if scheme is None else check_scheme(scheme), budget)
+    result = _check_claim(label, catmull_clark() if scheme is None else check_scheme(scheme), budget)
+    parameter = get_claim(label).parameter
+    return result if result.parameter == parameter else dataclasses.replace(result, parameter=parameter)
 
 
 @cache

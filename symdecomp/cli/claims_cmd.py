@@ -16,7 +16,8 @@ def register(sub) -> None:
         "of evidence. Every claim is checked for the scheme given by --scheme (a name or a TOML file; default "
         "catmull-clark): the printed statement is one input, the scheme the other. Exit status 1 if any check "
         "failed to run (status 'error'); refuted or corrected claims are findings about the paper, not failures. "
-        "Each row also gives the scope of its verdict (every n, range of n, single case), and the last line counts "
+        "Each row also gives the scope of its verdict (every n, range of n, single case; every k, range of k for "
+        "the claims about sectors of k faces at sharp vertices), and the last line counts "
         "the verdicts established for every n (proved, or an erratum whose correction is proved for every n with an "
         "exact counterexample).",
     )
@@ -65,7 +66,7 @@ def run(args) -> int:
             "section": c.section,
             "title": c.title,
             "status": r.status.value,
-            "scope": r.scope.value if r.scope is not None else None,
+            "scope": r.scope_text,
             "scheme": args.scheme.name,
             "evidence": str(r.evidence),
         }

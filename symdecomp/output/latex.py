@@ -280,7 +280,8 @@ def _scope(result: CheckResult) -> str:
     if result.valences is not None:
         lo, hi = result.valences
         # verified: exact arithmetic or certified intervals (the evidence says which), per valence
-        return f" (for each $n = {lo}, \\dots, {hi}$)" if hi > lo else f" (for $n = {lo}$)"
+        p = result.parameter
+        return f" (for each ${p} = {lo}, \\dots, {hi}$)" if hi > lo else f" (for ${p} = {lo}$)"
     if result.digits is not None:
         return f" (to {result.digits} significant digits)"
     return ""

@@ -166,7 +166,7 @@ def claims_section(inp: ReportInput) -> Section:
     counts = {s: sum(r.status is s for r in results) for s in Status}
     tally = [part for s in Status if counts[s] for part in (f"{counts[s]} ", s, ", ")][:-1]
     summary = scope_summary(results)
-    rows = tuple((c.section, c.label, c.title, r.status, r.scope.value if r.scope is not None else "-")
+    rows = tuple((c.section, c.label, c.title, r.status, r.scope_text or "-")
                  for c, r in zip(claims, results))
     return Section("The paper's claims", (
         _para(f"{len(claims)} claims, each checked for this scheme within {inp.budget:g} s: ", *tally, "."),

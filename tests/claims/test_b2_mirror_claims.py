@@ -6,7 +6,7 @@ from symdecomp import catmull_clark, loop
 from symdecomp.analysis.mirror import THETA_K
 from symdecomp.claims import Scope, Status, all_claims, check_claim
 from symdecomp.claims import b2_mirror as b2
-from symdecomp.output.latex import SECTION_TITLES, section_file_name
+from symdecomp.output.latex import SECTION_TITLES, aslatex, section_file_name
 from symdecomp.schemes.files import scheme_from_text
 
 Q = sp.Rational
@@ -28,6 +28,10 @@ def test_the_statuses_and_scopes_for_both_lattices():
         assert [r.status for r in results] == [Status.PROVED] * 4 + [Status.VERIFIED, Status.PROVED], scheme.name
         assert [r.scope for r in results] == [Scope.EVERY_N] * 4 + [Scope.RANGE, Scope.EVERY_N]
         assert results[4].valences == b2.SECTORS
+        # the scope ranges over k, the sector's faces, and is printed so; the paper's claims stay in n
+        assert [r.scope_text for r in results] == ["every k"] * 4 + ["range of k", "every k"]
+        assert "for each $k = 1" in aslatex(results[4]) and "$n =" not in aslatex(results[4])
+    assert check_claim("Eq. 34", catmull_clark()).scope_text == "every n"
 
 
 def test_the_threshold_is_computed_so_a_wrong_printed_k_or_another_scheme_is_refuted():

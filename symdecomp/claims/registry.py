@@ -256,8 +256,7 @@ class CheckResult:
     #: For which valences the verdict is established (:class:`Scope`); computed from the status, the
     #: valences and the counterexample unless the check states it (a ``corrected`` check states its correction's).
     scope: Scope | None = None
-    #: What ``n`` in the scope and the valences stands for: ``"n"`` (the valence), or ``"k"`` for a claim about
-    #: the sectors of ``k`` faces at a sharp vertex (set from the :class:`Claim`'s ``parameter`` by :func:`check_claim`).
+    #: What the scope and the valences range over: ``"n"``, or ``"k"`` (faces of a sector); from :attr:`Claim.parameter`.
     parameter: str = "n"
 
     def __post_init__(self):
@@ -271,10 +270,8 @@ class CheckResult:
         if self.status is Status.VERIFIED and self.valences is None:
             raise ValueError("a verified claim needs the range of valences it was checked for")
 
-    @property
-    def scope_text(self) -> str | None:
-        """The scope as printed: ``every n``, or ``every k`` for a claim about sectors of ``k`` faces."""
-        return None if self.scope is None else self.scope.value.replace(" n", " " + self.parameter)
+    scope_text = property(lambda self: None if self.scope is None else self.scope.value.replace(" n", " " + self.parameter),
+                          doc="The scope as printed: ``every n``, or ``every k`` for a claim about sectors of ``k`` faces.")
 
     def _computed_scope(self) -> Scope | None:
         stated, status = self.scope, self.status
@@ -400,16 +397,13 @@ def section_key(section: str) -> tuple:
 REGISTRY: dict[str, Claim] = {}
 
 
-def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (),
-          parameter: str = "n"):
-    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``
-    (``parameter``: what its scope ranges over, ``"n"`` or ``"k"``)."""
+def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (), parameter: str = "n"):
+    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``."""
 
     def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:
         if label in REGISTRY:
             raise ValueError(f"claim {label!r} is registered twice")
-        REGISTRY[label] = Claim(label, section, title, statement, check, order=len(REGISTRY), requires=tuple(requires),
-                                parameter=parameter)
+        REGISTRY[label] = Claim(label, section, title, statement, check, len(REGISTRY), tuple(requires), parameter)
         return check
 
     return register
@@ -455,8 +449,7 @@ def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | Non
         raise InvalidInputError(f"budget must be a number of seconds between 0 and 1e6, got {budget!r}")
     get_claim(label)
     result = _check_claim(label, catmull_clark() if scheme is None else check_scheme(scheme), budget)
-    parameter = get_claim(label).parameter
-    return result if result.parameter == parameter else dataclasses.replace(result, parameter=parameter)
+    return dataclasses.replace(result, parameter=get_claim(label).parameter)
 
 
 @cache

@@ -32,7 +32,11 @@ nothing else.
                    rules as polynomials in the index shift (Eq. 17-23, ``shift_stencil``), local
                    quad and triangle meshes and ring meshes (``mesh``), whole meshes refined by
                    the rules (Section 3, ``refinement``), K-ring matrices by exact refinement
-                   (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), schemes from TOML
+                   (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), the rules at
+                   boundaries, creases and corners and OpenSubdiv's sharpness arithmetic (``sharp``),
+                   refinement of meshes with tagged sharp edges and vertices (``sharp_refinement``),
+                   a boundary, crease, corner or dart vertex and its exact subdivision matrix
+                   (``sector``), schemes from TOML
                    files and by name (``files``), Loop's scheme (``loop``), Stam's patch
                    matrices, (2N+8)-point and Loop's (N+6)-point (``patch``), the regular Loop
                    patch (quartic box spline) in Bezier form (``box_spline``), a modeller's polygon
@@ -162,6 +166,8 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.schemes.patch": ("patch_matrices",),
     "symdecomp.schemes.refinement": ("central_rings", "mesh_rules", "refine"),
     "symdecomp.schemes.rings": ("RingMatrix", "ring_subdivision_matrix"),
+    "symdecomp.schemes.sector": ("SharpVertex", "exact_sharp_matrix", "sharp_subdivision_matrix"),
+    "symdecomp.schemes.sharp": ("SharpOptions", "SharpRules", "standard_sharp_rules"),
     "symdecomp.schemes.scheme": ("Scheme", "Stencil", "VertexRule", "catmull_clark", "subdivision_matrix"),
     "symdecomp.verify.artifacts": ("ArtifactIndicators", "artifact_indicators"),
     "symdecomp.verify.c1": ("C1Result", "c1_test"),

@@ -192,7 +192,15 @@ def _check_exponent(exponent: sp.Expr, where: str, *, halves: bool) -> None:
 def _check_trig(argument: sp.Expr, where: str) -> None:
     """``cos``/``sin`` of ``pi`` times ``P(n)/(d n^k)``, ``k <= 1``, ``d <= MAX_PI_DENOMINATOR``: an algebraic
     number of a cyclotomic field at every valence. Anything else (``cos(1)``) is outside the fields the toolkit
-    computes in."""
+    computes in. A sharp rule's sector angle ``theta_k`` (:data:`symdecomp.symbols.theta_k`: ``pi/k`` or a corner
+    angle over ``k``) may stand for ``pi``: ``cos(2*theta_k)``."""
+    angle = next((s for s in argument.free_symbols if getattr(s, "name", "") == "theta_k"), None)
+    if angle is not None:
+        q = sp.cancel(argument / angle)
+        if not q.is_Rational or q.q > MAX_PI_DENOMINATOR:
+            raise InvalidExpressionError(f"{where}: cos/sin of {argument}: only rational multiples of theta_k such as "
+                                         "2*theta_k are exact (theta_k is the sector angle of a sharp rule)")
+        return
     r = argument / sp.pi
     symbols = r.free_symbols
     if (r.has(sp.pi) or r.atoms(sp.Function) or not all(getattr(s, "name", "") == "n" for s in symbols)

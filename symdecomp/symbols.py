@@ -6,7 +6,8 @@ import sympy as sp
 from sympy.printing.latex import greek_letters_set, translate
 
 __all__ = [
-    "n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "sin_jtheta", "cos_theta", "Parameter", "RESERVED_NAMES",
+    "n", "j", "omega", "alpha", "beta", "lam", "cos_jtheta", "sin_jtheta", "cos_theta", "theta_k", "sector_faces", "Parameter",
+    "RESERVED_NAMES",
 ]
 
 #: The valence of the central vertex O.
@@ -26,6 +27,11 @@ cos_jtheta = sp.Symbol("c", real=True)
 sin_jtheta = sp.Symbol("s", real=True)
 #: ``c = cos(theta) = cos(pi/n)``: ``cos_jtheta`` at frequency ``j = 1``, positive (``>= 1/2`` for ``n >= 3``).
 cos_theta = sp.Symbol("c", positive=True)
+#: The sector angle of a sharp feature's rules (Biermann-Levin-Zorin's ``theta_k``): ``pi/k`` in a crease or
+#: boundary sector of ``k`` faces, ``alpha/k`` in a corner sector of angle ``alpha``.
+theta_k = sp.Symbol("theta_k", positive=True)
+#: The number ``k`` of faces of a sector between two sharp edges.
+sector_faces = sp.Symbol("k", integer=True, positive=True)
 
 
 class Parameter(sp.Symbol):

@@ -36,6 +36,7 @@ import sympy as sp
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError
 from symdecomp.expressions import MAX_OFFSET, check_budget, exact_value
 from symdecomp.schemes.lattice import LATTICES, QUAD, Lattice, lattice
+from symdecomp.schemes.sharp import SHARP_SYMBOLS, SharpRules, standard_sharp_rules
 from symdecomp.symbols import Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -199,6 +200,8 @@ class Scheme:
     #: The lattice the scheme lives on: :data:`~symdecomp.schemes.lattice.QUAD` (the paper's shape)
     #: or :data:`~symdecomp.schemes.lattice.TRIANGLE` (e.g. Loop).
     lattice: Lattice = QUAD
+    #: The rules at boundaries, creases and corners (:mod:`symdecomp.schemes.sharp`); the standard ones by default.
+    sharp: SharpRules = field(default_factory=standard_sharp_rules)
 
     def __post_init__(self):
         _check_parts(self)
@@ -220,7 +223,8 @@ class Scheme:
             )
         _within_budget(self)
         _to_parameters(self)
-        free = {s for w in self.weights() for s in w.free_symbols} - {N}
+        self.sharp.check_edge_rule(self.edge_rule.center, f"scheme {self.name!r}")
+        free = {s for w in self.weights() + self.sharp.weights() for s in w.free_symbols} - {N, *SHARP_SYMBOLS.values()}
         declared = set(self.parameters)
         if free - declared:
             object.__setattr__(
@@ -286,6 +290,7 @@ class Scheme:
             VertexRule.from_weights(v.center.subs(subs), v.each_a.subs(subs), v.each_b.subs(subs)),
             tuple(p for p in self.parameters if p not in subs),
             self.lattice,
+            self.sharp.substitute(subs),
         )
 
 
@@ -297,6 +302,8 @@ def _check_parts(scheme: Scheme) -> None:
     if not isinstance(scheme.parameters, (tuple, list)) or not all(isinstance(p, sp.Symbol) for p in scheme.parameters):
         raise InvalidTypeError(f"scheme {scheme.name!r}: parameters must be a tuple of sympy symbols, got {scheme.parameters!r}")
     object.__setattr__(scheme, "parameters", tuple(scheme.parameters))
+    check_type(scheme.sharp, SharpRules, f"scheme {scheme.name!r}: sharp", hint="see symdecomp.schemes.sharp.SharpRules")
+
 
 
 def check_scheme(scheme, argument: str = "scheme") -> Scheme:
@@ -316,7 +323,7 @@ def _within_budget(scheme: Scheme) -> None:
                 f"closed forms are Laurent polynomials in omega of degree 2*offset, and every valence below the stencil's "
                 "width is refused)")
     try:
-        for w in scheme.weights():
+        for w in scheme.weights() + scheme.sharp.weights():
             check_budget(sp.sympify(w, strict=True), "weight")
     except InvalidExpressionError as exc:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: {exc}") from None
@@ -330,8 +337,8 @@ def _to_parameters(scheme: Scheme) -> None:
     assumptions it can no longer meet the toolkit's symbols. ``n`` stays the valence, and ``alpha``,
     ``beta`` stay the paper's vertex weights.
     """
-    own = {N, ALPHA, BETA}
-    stray = {s for w in (*scheme.weights(), *scheme.parameters) for s in w.free_symbols
+    own = {N, ALPHA, BETA, *SHARP_SYMBOLS.values()}
+    stray = {s for w in (*scheme.weights(), *scheme.sharp.weights(), *scheme.parameters) for s in w.free_symbols
              if s not in own and not isinstance(s, Parameter)}
     if not stray:
         return
@@ -352,6 +359,7 @@ def _to_parameters(scheme: Scheme) -> None:
     object.__setattr__(scheme, "vertex_rule", VertexRule(v.center.xreplace(move), v.each_a.xreplace(move),
                                                          v.each_b.xreplace(move)))
     object.__setattr__(scheme, "parameters", tuple(p.xreplace(move) for p in scheme.parameters))
+    object.__setattr__(scheme, "sharp", scheme.sharp.xreplace(move))
 
 
 def catmull_clark(alpha=None, beta=None) -> Scheme:

@@ -43,6 +43,7 @@ FREE = sd.catmull_clark(sd.symbols.alpha, sd.symbols.beta)
 NOT_INTEGERS = [5.0, Fraction(5), np.float64(5), True, "5", None]
 NOT_SCHEMES = [None, "catmull-clark", 5, {"edge": {}}]
 MESH = sd.ring_mesh(4, 2)
+BOUNDARY, SEMI = sd.SharpVertex.boundary(3, sd.QUAD), sd.SharpVertex.crease(2, 3, sd.QUAD, sharpness=Fraction(5, 2))
 CUBE = sd.PolygonMesh.from_arrays([(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)],
                                   [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)])
 
@@ -124,6 +125,9 @@ INTEGERS = [
     (bezier_indices, "degree", dict(), 4, 0, True),
     (window, "rings", dict(), 2, 1, True),
     (position_weights, "n", dict(scheme=CC), 5, 3, False),
+    (sd.sharp_subdivision_matrix, "rings", dict(scheme=CC, vertex=BOUNDARY), 1, 1, True),
+    (sd.sharp_subdivision_matrix, "level", dict(scheme=CC, vertex=SEMI), 1, 0, True),
+    (sd.exact_sharp_matrix, "rings", dict(scheme=LOOP, vertex=sd.SharpVertex.boundary(3, sd.TRIANGLE)), 1, 1, True),
 ]
 
 #: ``(function, the other arguments)`` of the functions that take a scheme.
@@ -190,6 +194,8 @@ SCHEMES = [
     (sd.design_ring, dict(n=5, normal=(0, 0, 1))),
     (sd.redesign_vertex, dict(mesh=CUBE, vertex=0, normal=(-1, -1, -1))),
     (sd.limit_frame, dict(mesh=CUBE, vertex=0)),
+    (sd.sharp_subdivision_matrix, dict(vertex=BOUNDARY)),
+    (sd.exact_sharp_matrix, dict(vertex=BOUNDARY)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

@@ -63,7 +63,9 @@ nothing else.
                    (``inspection``); second-order characteristic maps, the elliptic and hyperbolic
                    height fields on the ring (``second_order``); control nets designed for prescribed
                    limit properties (``design``), and the least change of a 1-ring for a normal or no
-                   hyperbolic part (``redesign``)
+                   hyperbolic part (``redesign``); boundary, crease, corner and dart vertices
+                   by the mirror symmetry of their sectors: crease block and sine blocks (``mirror``), the
+                   spectrum for every k and the comparison with the boundary curve (``mirror_threshold``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -82,7 +84,7 @@ nothing else.
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
                    ``s6_cb_matrices``, ``s6_cb_subdivision``, ``s6_closing``,
                    ``s6_full_spectrum``), the toolkit's own claims beyond the paper (curvature and
-                   shape, ``b1_curvature``) and their registry (``registry``); every claim is checked
+                   shape, ``b1_curvature``; boundary and crease vertices, ``b2_mirror``) and their registry (``registry``); every claim is checked
                    for a scheme, within a time budget, and no verdict rests on a free parameter or an
                    undefined value (``guards``); what several checks share: the requirements a claim declares
                    (``applicability``), computed evidence (``evidence``), the paper's notation
@@ -146,6 +148,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
     "symdecomp.analysis.inspection": ("MeshInspection", "VertexInspection", "inspect_mesh", "inspect_vertex"),
     "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at"),
+    "symdecomp.analysis.mirror": ("SectorDecomposition", "SectorEigenvalue", "SineBlock", "sector_decomposition", "sector_spectrum"),
     "symdecomp.analysis.redesign": ("redesign_vertex",),
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
     "symdecomp.analysis.ring_blocks": ("RingBlocks", "ring_blocks"),

@@ -32,8 +32,9 @@ comparison with the boundary curve's eigenvalue for every ``k`` is :mod:`symdeco
 
 from __future__ import annotations
 
-import copy
 import dataclasses
+import math
+import numbers
 from dataclasses import dataclass
 
 import sympy as sp
@@ -41,8 +42,10 @@ import sympy as sp
 from symdecomp import symbols
 from symdecomp.errors import InvalidSchemeError, InvalidTypeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, Stencil, check_scheme
+from symdecomp.schemes.sector import SharpVertex
+from symdecomp.schemes.sharp import SharpRules
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_int
+from symdecomp.validate import check_int, check_type
 
 __all__ = ["THETA", "THETA_K", "SineBlock", "SectorEigenvalue", "SectorDecomposition", "sharp_weights", "with_near_edge",
            "mirror_stencils", "sine_block", "sine_identity", "crease_block", "sector_matrix", "sector_decomposition",
@@ -51,47 +54,25 @@ __all__ = ["THETA", "THETA_K", "SineBlock", "SectorEigenvalue", "SectorDecomposi
 #: The frequency of a sine polyline: ``theta = pi j/k`` in a sector of ``k`` faces.
 THETA = sp.Symbol("theta", positive=True)
 #: The sector angle of the sharp rules (pi/k in a crease or boundary sector, alpha/k in a corner sector).
-THETA_K = getattr(symbols, "theta_k", sp.Symbol("theta_k", positive=True))
+THETA_K = symbols.theta_k
 _I = sp.Symbol("i", integer=True)
 _J = sp.Symbol("j", integer=True, positive=True)
 _K = sp.Symbol("k", integer=True, positive=True)
 
-#: The standard sharp weights (B-spline curve rules), read when the scheme carries no sharp rules of its own.
-_STANDARD = {"crease_centre": sp.Rational(3, 4), "crease_end": sp.Rational(1, 8), "crease_edge": sp.Rational(1, 2),
-             "near_edge_centre": None, "near_edge_end": None}
+_NAMES = ("crease_centre", "crease_end", "crease_edge", "near_edge_centre", "near_edge_end")
 
 
 def sharp_weights(scheme: Scheme, rules=None) -> dict:
-    """The sharp-rule weights this module reads, from ``rules`` or the scheme's own ``sharp`` rules.
-
-    The one place that reads :class:`~symdecomp.schemes.sharp.SharpRules` (its attribute names); a scheme
-    without sharp rules has the standard ones (3/4, 1/8 at a crease vertex, 1/2 on a crease edge).
-    """
-    source = rules if rules is not None else getattr(scheme, "sharp", None)
-    if source is None:
-        return dict(_STANDARD)
-    try:
-        out = {name: getattr(source, name) for name in _STANDARD}
-    except AttributeError as exc:
-        raise InvalidTypeError(f"rules: expected sharp rules (SharpRules), got {type(source).__name__}: {exc}") from None
-    return {k: (None if v is None else sp.sympify(v, strict=True)) for k, v in out.items()}
+    """The sharp-rule weights this module reads, from ``rules`` (a :class:`~symdecomp.schemes.sharp.SharpRules`) or
+    the scheme's own (``scheme.sharp``): the one place that reads them."""
+    source = scheme.sharp if rules is None else check_type(rules, SharpRules, "rules")
+    return {name: getattr(source, name) for name in _NAMES}
 
 
-def with_near_edge(scheme: Scheme, centre, end, rules=None):
-    """The scheme's sharp rules (or ``rules``) with the smooth edge rule at a sharp vertex replaced (BLZ's modification)."""
-    source = rules if rules is not None else getattr(scheme, "sharp", None)
-    if source is None or not dataclasses.is_dataclass(source):
-        out = copy.copy(source) if source is not None else _Weights(**_STANDARD)
-        out.near_edge_centre, out.near_edge_end = centre, end
-        return out
+def with_near_edge(scheme: Scheme, centre, end, rules=None) -> SharpRules:
+    """The scheme's sharp rules (or ``rules``) with BLZ's modified smooth edge rule at a sharp vertex."""
+    source = scheme.sharp if rules is None else check_type(rules, SharpRules, "rules")
     return dataclasses.replace(source, near_edge_centre=centre, near_edge_end=end)
-
-
-class _Weights:
-    """Sharp weights by attribute, for a scheme that has no sharp rules object (see :func:`sharp_weights`)."""
-
-    def __init__(self, **weights):
-        self.__dict__.update(weights)
 
 
 def _weights(stencil: Stencil, part: str) -> dict[int, sp.Expr]:
@@ -248,25 +229,28 @@ class _Layout:
         return 1 + self.a_count + m % self.faces
 
 
+def vertex_of(scheme: Scheme, vertex) -> SharpVertex:
+    """``vertex`` as a :class:`~symdecomp.schemes.sector.SharpVertex` (``k``: a boundary vertex with k faces)."""
+    if isinstance(vertex, SharpVertex):
+        return vertex
+    if isinstance(vertex, bool) or not isinstance(vertex, numbers.Integral):
+        raise InvalidTypeError(f"vertex: expected a SharpVertex or the faces k of a boundary sector, got {type(vertex).__name__}")
+    return SharpVertex.boundary(check_int(vertex, "vertex (the faces k of a boundary sector)", minimum=1), scheme.lattice)
+
+
 def vertex_layout(scheme: Scheme, vertex) -> _Layout:
-    """A vertex with sharp edges (a :class:`~symdecomp.schemes.sector.SharpVertex`), or ``k``: a boundary sector of k faces."""
-    quad = scheme.face_rule is not None
-    if isinstance(vertex, int) or type(vertex).__name__ == "int64":
-        k = check_int(vertex, "vertex (the faces k of a boundary sector)", minimum=1)
-        return _Layout((k,), False, False, quad, sp.pi)
-    try:
-        sectors, closed, corner = tuple(vertex.sectors), bool(vertex.closed), bool(vertex.corner)
-    except (AttributeError, TypeError):
-        raise InvalidTypeError(f"vertex: expected a SharpVertex or an integer k, got {type(vertex).__name__}") from None
-    if getattr(vertex, "lattice", scheme.lattice) != scheme.lattice:
+    """Where the points of ``vertex`` sit: a :class:`~symdecomp.schemes.sector.SharpVertex`, or ``k`` for
+    ``SharpVertex.boundary(k, scheme.lattice)``. A boundary vertex with one face is a corner (OpenSubdiv's default
+    boundary interpolation, edge and corner), as in :func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`."""
+    vertex = vertex_of(scheme, vertex)
+    if vertex.lattice != scheme.lattice:
         raise InvalidSchemeError(f"vertex: a {vertex.lattice.name} vertex, but scheme {scheme.name!r} lives on {scheme.lattice.name}")
-    if getattr(vertex, "sharpness", float("inf")) != float("inf"):
+    if vertex.sharpness != math.inf:
         raise NotApplicableError("vertex: semi-sharp edges (finite sharpness) have no mirror decomposition here; "
                                  "it reads infinitely sharp ones")
-    if not sectors or any(check_int(k, "vertex: sector size", minimum=1) < 1 for k in sectors):
-        raise InvalidTypeError("vertex: expected at least one sector")
-    angle = getattr(vertex, "angle", None)
-    return _Layout(sectors, closed, corner, quad, sp.pi if angle is None or not corner else sp.sympify(angle, strict=True))
+    corner = vertex.corner or (not vertex.closed and vertex.faces == 1)
+    angle = sp.pi if vertex.angle is None or not corner else vertex.angle
+    return _Layout(vertex.sectors, vertex.closed, corner, scheme.face_rule is not None, angle)
 
 
 def _add_interior(P: sp.Matrix, lay: _Layout, row: int, centre, stencil: dict, m: int) -> None:
@@ -291,7 +275,7 @@ def sector_matrix(scheme, vertex, rules=None) -> sp.Matrix:
     P = sp.zeros(lay.size, lay.size)
     sharp = lay.sharp
     if len(sharp) == 1:  # a dart: the smooth vertex rule
-        v, n = scheme.vertex_rule, lay.faces
+        v, n = scheme.vertex_rule, check_int(lay.faces, "faces around a dart", minimum=3)
         P[0, 0] = v.center.subs(N, n)
         for m in range(n):
             P[0, lay.a(m)] += v.each_a.subs(N, n)
@@ -306,7 +290,7 @@ def sector_matrix(scheme, vertex, rules=None) -> sp.Matrix:
         P[lay.a(m), 0], P[lay.a(m), lay.a(m)] = w["crease_edge"], 1 - w["crease_edge"]
     for p, k in zip(lay.starts, lay.sectors):
         e = _edge_weights(scheme, edge, rules, modified=len(sharp) > 1)
-        at = {THETA_K: lay.angle / k}
+        at = {THETA_K: lay.angle / k, symbols.sector_faces: k}
         for i in range(1, k):
             _add_interior(P, lay, lay.a(p + i), sp.sympify(e["O"]).subs(at),
                           {"a": {d: sp.sympify(x).subs(at) for d, x in e["a"].items()}, "b": e["b"]}, p + i)
@@ -361,7 +345,7 @@ def _sector_blocks(scheme: Scheme, lay: _Layout, rules, columns: list) -> list[S
         period, top = (2, (k - 1) // 2) if dart else (1, k - 1)
         for j in range(1, top + 1):
             theta = period * sp.pi * j / k
-            out.append(SineBlock(s, j, theta, M.subs({THETA: theta, THETA_K: lay.angle / k}).applyfunc(sp.simplify)))
+            out.append(SineBlock(s, j, theta, M.subs({THETA: theta, THETA_K: lay.angle / k, symbols.sector_faces: k}).applyfunc(sp.simplify)))
             a, b = _sine_column(lay, p, k, theta)
             columns.extend([a] if b is None else [a, b])
         if lay.quad and (not dart or k % 2 == 0):

@@ -22,9 +22,20 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.algebraic_sign import exact_sign
-from symdecomp.analysis.mirror import THETA, THETA_K, crease_block, sector_decomposition, sector_matrix, sine_block, vertex_layout
+from symdecomp.analysis.mirror import (
+    THETA,
+    THETA_K,
+    crease_block,
+    mirror_stencils,
+    sector_decomposition,
+    sector_matrix,
+    sine_block,
+    vertex_layout,
+    vertex_of,
+)
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
+from symdecomp.schemes.sector import sharp_subdivision_matrix
 
 __all__ = ["C", "X", "block_polynomials", "sine_part", "charpoly_check", "Threshold", "first_exceeding", "boundary_eigenvalue"]
 
@@ -100,14 +111,19 @@ def _flint_poly(poly: sp.Poly) -> flint.fmpq_poly:
 
 
 def charpoly_check(scheme, vertex, rules=None, matrix=None) -> tuple[bool, flint.fmpq_poly, flint.fmpq_poly]:
-    """Compare the characteristic polynomial of the 1-ring matrix (``matrix``, default the assembled one) with the
+    """Compare the characteristic polynomial of the 1-ring matrix (``matrix``; default: by exact refinement,
+    :func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`, or assembled from ``rules`` when given) with the
     product of the blocks': the crease block's (or a dart's cosine part's) times :func:`sine_part` of each sector.
 
     Exact, in FLINT rationals; returns ``(equal, of the matrix, of the blocks)``. Rational rules only.
     """
     scheme = check_scheme(scheme)
     lay = vertex_layout(scheme, vertex)
-    P = sector_matrix(scheme, vertex, rules) if matrix is None else matrix
+    mirror_stencils(scheme)  # the blocks need the mirror: refuse, naming the weight, before refining
+    if matrix is None:  # the matrix by refinement of the tagged mesh, which knows nothing of the blocks
+        P = sharp_subdivision_matrix(scheme, vertex_of(scheme, vertex)) if rules is None else sector_matrix(scheme, vertex, rules)
+    else:
+        P = matrix
     if any(not sp.sympify(e).is_Rational for e in P):
         raise NotApplicableError("the matrix has irrational entries: FLINT's rational characteristic polynomial does not apply")
     full = flint.fmpq_mat([[flint.fmpq(int(e.p), int(e.q)) for e in row] for row in P.tolist()]).charpoly()

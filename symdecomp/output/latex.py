@@ -44,6 +44,7 @@ SECTION_TITLES = {
     "5.3": "Hyperbolic properties",
     "6": "Exact calculation on CB-matrices",
     "B.1": "Beyond the paper: curvature and shape",
+    "B.2": "Beyond the paper: boundary and crease vertices",
 }
 
 PAPER = (

@@ -92,6 +92,12 @@ EXPECTED = {
     "Loop's vertex weight": P,  # the elliptic eigenvalue is lambda_1^2 identically in n
     "Curvature at the regular valence": V,  # mu = 1/4 = lambda_1^2 three times at n = 4
     "Shape: the valence decides": V,  # the hyperbolic part dominates from n = 5 (Catmull-Clark), 7 (Loop); n = 3..32
+    # beyond the paper: boundary and crease vertices (issue 20)
+    "Sector: sine decomposition": P,  # a trig identity in the index and theta: every k
+    "Sector: crease block": P,  # 1, 1/2, 1/4 for every k
+    "Sector: standard rules' subdominant eigenvalue": P,  # above 1/2 from k = 3 (Catmull-Clark), every k
+    "Sector: modified rules (BLZ 2000)": P,  # det(M(pi/k) - 1/2) = 0 identically in cos(pi/k)
+    "Sector: the blocks are the spectrum": V,  # FLINT charpolys, k = 1..12
 }
 
 

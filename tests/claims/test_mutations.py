@@ -23,6 +23,7 @@ import sympy as sp
 
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.curvature_regime import CurvatureRegime
+from symdecomp.analysis.mirror import THETA_K
 from symdecomp.claims import Status, all_claims, check_claim, get_claim
 from symdecomp.errors import InvalidSchemeError, NotAffineError
 from symdecomp.schemes.files import scheme_from_text, scheme_to_text
@@ -302,6 +303,18 @@ TABLE = [
     ("Curvature at the regular valence", printed("b1_curvature", "REGULAR_MULTIPLICITY", 2), R),
     ("Shape: the valence decides", "elliptic above hyperbolic at 5", R),
     ("Shape: the valence decides", printed("b1_curvature", "DOMINANCE", {"quad": ((3, None, None),), "triangle": ((3, None, None),)}), R),
+    # beyond the paper: boundary and crease vertices (issue 20)
+    ("Sector: sine decomposition", "asymmetric", NA),  # the edge rule's weights on a_(i+1), a_(i-1) differ: no mirror
+    ("Sector: sine decomposition", "loop file", P),
+    ("Sector: crease block", printed("b2_mirror", "CREASE_EIGENVALUES", (1, Q(1, 2), Q(1, 8))), R),
+    ("Sector: standard rules' subdominant eigenvalue", "midpoint edges", R),  # M(pi/k) has 1/2 for every k: never above
+    ("Sector: standard rules' subdominant eigenvalue", "loop file", P),  # from k = 4
+    ("Sector: standard rules' subdominant eigenvalue", printed("b2_mirror", "FIRST_K", {"quad": 4, "triangle": 4}), R),
+    ("Sector: modified rules (BLZ 2000)", "midpoint edges", R),  # the modified weights are Catmull-Clark's ends
+    ("Sector: modified rules (BLZ 2000)", "loop file", P),
+    ("Sector: modified rules (BLZ 2000)", printed("b2_mirror", "BLZ_RULE", {"quad": (Q(1, 4) + sp.cos(THETA_K) / 2,
+                                                                                   Q(1, 2) - sp.cos(THETA_K) / 2)}), R),
+    ("Sector: the blocks are the spectrum", "asymmetric", NA),
 ]
 
 def _status(label, change, monkeypatch):
@@ -387,6 +400,12 @@ NO_FILE_FLIP = {
                                   "weight makes the classification 'not applicable', and other files are not mesh rules",
     "Curvature at the regular valence": "at the regular valence a scheme the test applies to has the spline's rules "
                                         "(other regular rules make it 'not applicable'), so mu = lambda_1^2 three times",
+    "Sector: sine decomposition": "an identity for every stencil symmetric about its edge and face and reaching only "
+                                  "the neighbours; files that are not are 'not applicable'",
+    "Sector: crease block": "the crease block reads only the sharp rules, and scheme files do not give sharp rules (the "
+                            "standard ones); only a change of the printed eigenvalues refutes it",
+    "Sector: the blocks are the spectrum": "a theorem (the sine identity) for every mirror-symmetric file, checked "
+                                           "against the matrix by refinement; files without the mirror are 'not applicable'",
     "1-ring suffices (after Eq. 51)": "the mesh files tried (bilinear, midpoint edges, Loop) keep the left eigenvectors of "
                                       "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable'",
 }
@@ -404,6 +423,10 @@ PANEL_EXCEPTIONS = {
     # Reif's 2-ring matrix needs Catmull-Clark's or Loop's rules at the regular valence; these files have others
     ("Curvature at the regular valence", "bilinear file"): NA,
     ("Curvature at the regular valence", "asymmetric"): NA,
+    ("Sector: sine decomposition", "asymmetric"): NA,  # no mirror symmetry
+    ("Sector: sine decomposition", "frequency two"): NA,  # edge weights in n: a sector has no valence
+    ("Sector: the blocks are the spectrum", "asymmetric"): NA,
+    ("Sector: the blocks are the spectrum", "frequency two"): NA,
 }
 #: Rows of the panel whose status today is wrong (WRONG_TODAY): left out here, asserted there.
 PANEL_WRONG_TODAY = {("Eq. 51", "bilinear file"), ("Section 5.3: construction", "frequency two"),

@@ -76,3 +76,87 @@ def test_polylines_figure_has_a_panel_per_block_with_labels():
     for ax in shown:
         assert ax.get_title() and ax.get_xlabel() and ax.get_ylabel()
         assert any("lambda" in t.get_text() for t in ax.get_legend().get_texts())
+
+
+# ---------------------------------------------------------------- the characteristic map of a sector
+
+
+def _vertex():
+    from symdecomp.schemes.sector import SharpVertex
+
+    return SharpVertex
+
+
+def _ring_matrix(scheme, vertex, rings=3):
+    from symdecomp.schemes.sector import sharp_subdivision_matrix
+
+    return np.array(sharp_subdivision_matrix(scheme, vertex, rings=rings).evalf(30).tolist(), dtype=float)
+
+
+@pytest.mark.parametrize("name, k, angle", [("catmull-clark", 1, sp.pi / 2), ("catmull-clark", 3, 3 * sp.pi / 2),
+                                            ("loop", 2, sp.pi / 2), ("loop", 4, 4 * sp.pi / 3)])
+def test_the_map_is_an_eigenvector_pair_of_the_ring_matrix(name, k, angle):
+    scheme = SCHEMES[name]
+    vertex = _vertex().corner(k, scheme.lattice, angle)
+    m = boundary.sector_characteristic_map(scheme, vertex, levels=1)
+    S = _ring_matrix(scheme, vertex)
+    l1, l2 = m.eigenvalues
+    for part, lam in ((m.ring.real, l1), (m.ring.imag, l2)):
+        assert np.max(np.abs(S @ part - lam * part)) < 1e-10
+    assert l1 >= l2 and all(x <= l2 + 1e-9 for x in m.spectrum[2:])
+
+
+def test_the_regular_corner_maps_onto_a_quarter_plane_of_equal_squares():
+    """Catmull-Clark, one face at a corner: the bicubic spline of the regular grid; its map is linear."""
+    m = boundary.sector_characteristic_map(SCHEMES["catmull-clark"], _vertex().corner(1, sd.QUAD, sp.pi / 2), levels=3)
+    assert m.eigenvalues == pytest.approx((0.5, 0.5)) and m.folded == 0 and not m.defective
+    assert len(m.faces) == 4**3
+    assert np.allclose(np.abs(m.areas), np.abs(m.areas[0]))  # a linear map: every refined square has the same image
+    directions = {round(float(np.angle(e[np.argmax(np.abs(e))])), 9) for e in m.sharp_edges}
+    assert len(directions) == 2 and abs(abs(np.diff(sorted(directions))[0]) - np.pi / 2) < 1e-9
+
+
+def test_a_regular_boundary_maps_its_boundary_onto_one_line():
+    """Loop, three faces at a boundary: the regular boundary; the two boundary curves continue each other."""
+    m = boundary.sector_characteristic_map(SCHEMES["loop"], _vertex().boundary(3, sd.TRIANGLE), levels=2)
+    points = np.concatenate(m.sharp_edges)
+    assert np.max(np.abs(points.real)) < 1e-9  # the mirror axis is the x axis; the boundary is the y axis
+    assert m.folded == 0
+
+
+def test_corner_figure_titles_name_the_eigenvalues():
+    fig = boundary.corner_maps_figure([SCHEMES["catmull-clark"]], [(1, sp.pi / 2), (3, 3 * sp.pi / 2)], levels=1)
+    titles = [ax.get_title() for ax in fig.axes]
+    assert "0.5797" in titles[1] and "lambda_3 = lambda_2" in titles[1]
+    assert all(ax.get_xlabel() and ax.get_ylabel() for ax in fig.axes)
+
+
+# ---------------------------------------------------------------- the subdominant eigenvalues over k
+
+
+@pytest.mark.parametrize("name", SCHEMES)
+def test_subdominant_eigenvalues_are_those_of_the_refined_matrix(name):
+    scheme = SCHEMES[name]
+    for k in (2, 3, 5):
+        vertex = _vertex().boundary(k, scheme.lattice)
+        inner = vertex.one_ring_size()
+        ev = sorted(np.linalg.eigvals(_ring_matrix(scheme, vertex, rings=2)[:inner, :inner]).real, reverse=True)
+        assert boundary.subdominant_eigenvalues(scheme, vertex) == pytest.approx(tuple(ev[1:3]), abs=1e-9)
+
+
+@pytest.mark.parametrize("name", SCHEMES)
+def test_standard_boundary_rules_pass_the_curve_eigenvalue_where_the_closed_form_says(name):
+    from symdecomp.analysis.mirror_threshold import boundary_eigenvalue, first_exceeding
+
+    scheme = SCHEMES[name]
+    half = float(boundary_eigenvalue(scheme))
+    above = [k for k in range(1, 9) if boundary.subdominant_eigenvalues(scheme, _vertex().boundary(k, scheme.lattice))[0] > half + 1e-9]
+    assert above == list(range(first_exceeding(scheme).first, 9))
+
+
+def test_subdominant_figure_marks_the_boundary_curve():
+    fig = boundary.subdominant_figure([(SCHEMES["catmull-clark"], SCHEMES["catmull-clark"])], ks=range(1, 4))
+    assert len(fig.axes) == len(boundary.SECTOR_KINDS)
+    for ax in fig.axes:
+        assert any("boundary curve: 1/2" in t.get_text() for t in ax.get_legend().get_texts())
+        assert ax.get_title() and ax.get_xlabel() and ax.get_ylabel()

@@ -22,14 +22,17 @@ The numbers behind the figures come from the package; nothing is typed in:
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
-from symdecomp.analysis.mirror import sector_decomposition, sector_spectrum
+from symdecomp.analysis.mirror import sector_decomposition, sector_matrix, sector_spectrum
+from symdecomp.errors import NotApplicableError
 from symdecomp.output.plotting._mpl import label_axes, new_figure
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.validate import check_levels
 
 __all__ = ["SectorMode", "sector_modes", "sector_polylines_figure"]
 
@@ -175,4 +178,220 @@ def sector_polylines_figure(scheme: Scheme, k: int = 5):
     for ax in axes[len(groups):]:
         ax.set_axis_off()
     fig.suptitle(f"{scheme.name}: boundary sector of k = {k} faces, the eigenvectors of the 1-ring matrix by block")
+    return fig
+
+
+# --------------------------------------------------------------------------------------------
+# the characteristic map of a sector
+
+
+@dataclass(frozen=True)
+class SectorMap:
+    """A sector's characteristic map drawn by refinement (:func:`sector_characteristic_map`)."""
+
+    #: The two eigenvalues of the map's eigenvectors (``x`` and ``y``), as floats: ``lambda_1 >= lambda_2``.
+    eigenvalues: tuple[float, float]
+    #: The eigenvalues of the ``rings``-ring matrix below the dominant 1, largest first (floats, with multiplicity).
+    spectrum: tuple[float, ...]
+    #: The refined faces' images, each a closed polygon of complex points ``x + i y``.
+    faces: tuple[np.ndarray, ...]
+    #: Each face's signed area (positive: the orientation of the sector is kept).
+    areas: np.ndarray
+    #: The images of the sharp (boundary, crease) edges of the refined mesh, each a complex 2-array.
+    sharp_edges: tuple[np.ndarray, ...]
+    #: Whether ``lambda_1`` or ``lambda_2`` has a Jordan block (fewer eigenvectors than its multiplicity in the 1-ring).
+    defective: bool = False
+    #: The map's values ``x + i y`` on the ``rings``-ring (matrix order) before refinement.
+    ring: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0, dtype=complex))
+
+    @property
+    def folded(self) -> int:
+        """The number of faces whose image is reversed against the majority (0 for a map that keeps orientation)."""
+        signs = np.sign(self.areas[np.abs(self.areas) > 1e-14 * np.max(np.abs(self.areas))])
+        return int(min(np.sum(signs > 0), np.sum(signs < 0)))
+
+
+def _eigenspace(S: np.ndarray, lam: float, tol: float = 1e-8) -> np.ndarray:
+    """An orthonormal basis (columns) of the kernel of ``S - lam I``: singular values below ``tol``."""
+    _, sv, vt = np.linalg.svd(S - lam * np.eye(S.shape[0]))
+    return vt[sv < tol].T
+
+
+def _clusters(values: np.ndarray, tol: float = 1e-6) -> list[float]:
+    """The distinct values of ``values`` (sorted, largest first) to ``tol`` (a Jordan block splits at ``sqrt(eps)``)."""
+    out: list[float] = []
+    for v in sorted(values, reverse=True):
+        if not out or abs(out[-1] - v) > tol:
+            out.append(float(v))
+    return out
+
+
+def _extended(S: np.ndarray, inner: int, v: np.ndarray, lam: float) -> np.ndarray:
+    """An eigenvector ``v`` of the leading ``inner x inner`` block of the block lower-triangular ``S`` continued to all of
+    ``S``'s points: ``(S_outer - lam) x = -X v`` (least squares: the part along outer modes of ``lam`` is left 0)."""
+    X, outer = S[inner:, :inner], S[inner:, inner:] - lam * np.eye(S.shape[0] - inner)
+    return np.concatenate([v, np.linalg.lstsq(outer, -X @ v, rcond=None)[0]])
+
+
+def _map_vector(S: np.ndarray, vertex) -> tuple[np.ndarray, tuple[float, float], bool]:
+    """The characteristic map's complex values on the ring (see :func:`sector_characteristic_map`)."""
+    inner = vertex.one_ring_size()
+    S1 = S[:inner, :inner]
+    distinct = _clusters(np.linalg.eigvals(S1).real[np.abs(np.linalg.eigvals(S1).real - 1) > 1e-9])
+    k = sum(vertex.sectors)
+    angle = float(sp.N(sp.pi if vertex.angle is None else vertex.angle))
+    a = slice(1, vertex.edge_count() + 1)
+    target = np.exp(1j * angle * (np.arange(vertex.edge_count()) / k - 0.5))
+    first = _eigenspace(S1, distinct[0])
+    if first.shape[1] >= 2:
+        z = first @ np.linalg.lstsq(first[a].astype(complex), target, rcond=None)[0]
+        return _extended(S, inner, z, distinct[0]), (distinct[0], distinct[0]), _defective(S1, distinct[:1], first)
+    second = _eigenspace(S1, distinct[1])
+    x = _extended(S, inner, first @ np.linalg.lstsq(first[a], target.real, rcond=None)[0], distinct[0])
+    y = _extended(S, inner, second @ np.linalg.lstsq(second[a], target.imag, rcond=None)[0], distinct[1])
+    return x + 1j * y, (distinct[0], distinct[1]), _defective(S1, distinct[:2], first, second)
+
+
+def _defective(S1: np.ndarray, values: list[float], *spaces: np.ndarray) -> bool:
+    """Whether one of ``values`` has fewer eigenvectors (``spaces``) than its multiplicity among ``S1``'s eigenvalues."""
+    ev = np.linalg.eigvals(S1).real
+    return any(np.sum(np.abs(ev - v) < 1e-6) > E.shape[1] for v, E in zip(values, spaces))
+
+
+def _signed_area(z: np.ndarray) -> float:
+    return 0.5 * float(np.sum(z.real * np.roll(z.imag, -1) - np.roll(z.real, -1) * z.imag))
+
+
+def sector_characteristic_map(scheme: Scheme, vertex, *, rings: int = 3, levels: int = 3) -> SectorMap:
+    """The characteristic map of the sector of ``vertex`` (a SharpVertex), drawn as the image of its refined faces.
+
+    The matrix is the exact ``rings``-ring matrix (:func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`,
+    evaluated in floats); it is block lower-triangular with the 1-ring matrix first. ``lambda_1 >= lambda_2`` are the
+    two largest eigenvalues of the 1-ring matrix below the dominant 1. The map is ``x + i y`` with ``x`` an
+    eigenvector of ``lambda_1`` and ``y`` one of ``lambda_2`` on the 1-ring, continued to the outer rings by the
+    eigen-equation. Where an eigenvalue is multiple, the eigenvectors are the ones closest (least squares on the edge
+    neighbours ``a_0..a_m``) to the sector's regular fan ``a_i -> exp(i alpha (i/k - 1/2))`` of its angle ``alpha``
+    (the vertex's angle, ``pi`` if it has none; the mirror axis of the sector on the x axis); when ``lambda_1`` is
+    multiple both come from its eigenspace (a complex fit). ``SectorMap.spectrum`` is the whole ``rings``-ring
+    matrix's. These values on the tagged ``rings``-ring mesh are refined ``levels`` times with the scheme's rules
+    (:func:`~symdecomp.schemes.sharp_refinement.refine_tagged`); the refined faces of the sector's own ``k`` faces
+    (those within ``2**levels`` rings of ``O``) are the map's image. (A modified rule at a sharp vertex needs to know
+    whether each edge's ends are sharp, which a cut-out ring cannot tell at its rim: each level loses one more ring
+    there, hence 3 rings by default.)
+    """
+    from symdecomp.schemes.sector import sharp_subdivision_matrix
+    from symdecomp.schemes.sharp_refinement import refine_tagged
+
+    levels = check_levels(levels, "levels", maximum=6)
+    S = _floats(sharp_subdivision_matrix(scheme, vertex, rings=rings))
+    z, pair, defective = _map_vector(S, vertex)
+    ev = np.linalg.eigvals(S)
+    below = tuple(float(x) for x in np.sort(ev.real[np.abs(ev.imag) < 1e-9])[::-1] if abs(x - 1) > 1e-9)
+    tagged, ids = vertex.tagged_mesh(rings)
+    tagged = dataclasses.replace(tagged, mesh=tagged.mesh.with_values({i: (complex(w),) for i, w in enumerate(z)}))
+    centre = ids[(0, 0, 0)]
+    for _ in range(levels):
+        tagged, _, new_ids = refine_tagged(tagged, scheme)
+        centre = new_ids[("vertex", centre)]
+    mesh = tagged.mesh.neighbourhood(centre, 2**levels)  # the refined faces of the sector's own k faces
+    values = mesh.values
+    faces = tuple(np.array([values[v][0] for v in f], dtype=complex) for f in mesh.faces)
+    inside = {frozenset(e) for e in mesh._directed}
+    sharp = [e for e in tagged.boundary_edges() | {e for e, s in tagged.edge_sharpness.items() if s > 0} if e in inside]
+    edges = tuple(np.array([values[v][0] for v in sorted(e)], dtype=complex) for e in sharp)
+    return SectorMap(pair, below, faces, np.array([_signed_area(f) for f in faces]), edges, defective, z)
+
+
+def _map_title(scheme: Scheme, k: int, angle, m: SectorMap) -> str:
+    l1, l2 = m.eigenvalues
+    l3 = m.spectrum[2] if len(m.spectrum) > 2 else 0.0
+    third = "lambda_3 = lambda_2: no gap" if abs(l3 - l2) < 1e-6 else f"lambda_3 = {l3:.4f}"
+    notes = (f"; {m.folded} faces reversed" if m.folded else "") + ("; Jordan block" if m.defective else "")
+    return f"{scheme.name}, k = {k}, angle {sp.sstr(angle)}\nlambda = {l1:.4f}, {l2:.4f}, {third}{notes}"
+
+
+def corner_maps_figure(schemes, corners=((2, sp.pi / 2), (3, 3 * sp.pi / 2)), *, levels: int = 3):
+    """The characteristic maps of corners, one row per scheme, one column per corner ``(k faces, angle)``.
+
+    Each panel is :func:`sector_characteristic_map` of ``SharpVertex.corner(k, lattice, angle)``: the refined
+    faces' images (grey; filled red where a face's image is reversed), the sharp edges (the two boundary curves,
+    blue) and ``O``; the title gives the map's eigenvalues and the next one in the spectrum.
+    """
+    from symdecomp.schemes.sector import SharpVertex
+
+    schemes, corners = list(schemes), list(corners)
+    fig = new_figure(3.6 * len(corners), 3.5 * len(schemes))
+    axes = fig.subplots(len(schemes), len(corners), squeeze=False)
+    for row, scheme in zip(axes, schemes):
+        for ax, (k, angle) in zip(row, corners):
+            m = sector_characteristic_map(scheme, SharpVertex.corner(k, scheme.lattice, angle), levels=levels)
+            for z in m.faces:
+                closed = np.append(z, z[:1])
+                ax.plot(closed.real, closed.imag, color="0.55", lw=0.4)
+            reversed_sign = -1 if np.sum(m.areas > 0) >= np.sum(m.areas < 0) else 1
+            for z in (z for z, area in zip(m.faces, m.areas) if np.sign(area) == reversed_sign):
+                ax.fill(z.real, z.imag, color="C3", alpha=0.6)
+            for e in m.sharp_edges:
+                ax.plot(e.real, e.imag, color="C0", lw=1.8)
+            ax.plot([0], [0], "k+")
+            ax.set_aspect("equal")
+            ax.set_title(_map_title(scheme, k, angle, m), fontsize=8)
+            ax.set_xlabel("x (eigenvector of lambda_1)")
+            ax.set_ylabel("y (eigenvector of lambda_2)")
+    fig.suptitle("Characteristic maps of corners: the sector's faces refined, boundary curves in blue, reversed faces in red")
+    return fig
+
+
+# --------------------------------------------------------------------------------------------
+# where the standard rules fail: the subdominant eigenvalues over k
+
+
+def subdominant_eigenvalues(scheme: Scheme, vertex) -> tuple[float, float]:
+    """``(lambda_1, lambda_2)``: the two largest eigenvalues below the dominant 1 of the exact 1-ring matrix of ``vertex``
+    (a SharpVertex; :func:`~symdecomp.analysis.mirror.sector_matrix`, the 1-ring matrix assembled from the stencils,
+    equal to :func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`'s; evaluated in floats; with multiplicity)."""
+    ev = np.linalg.eigvals(_floats(sector_matrix(scheme, vertex)))
+    values = sorted((float(x.real) for x in ev), reverse=True)
+    if abs(values[0] - 1) > 1e-9:
+        raise NotApplicableError(f"scheme {scheme.name!r}: the sector's largest eigenvalue is {values[0]}, not 1")
+    return values[1], values[2]
+
+
+#: The sector kinds of :func:`subdominant_figure`: a title and the vertex of ``k`` faces on a lattice.
+SECTOR_KINDS = (
+    ("boundary", lambda k, lat: _vertex().boundary(k, lat)),
+    ("convex corner, angle pi/2", lambda k, lat: _vertex().corner(k, lat, sp.pi / 2)),
+    ("concave corner, angle 3pi/2", lambda k, lat: _vertex().corner(k, lat, 3 * sp.pi / 2)),
+)
+
+
+def _vertex():
+    from symdecomp.schemes.sector import SharpVertex
+
+    return SharpVertex
+
+
+def subdominant_figure(pairs, ks=range(1, 17)):
+    """Where the standard rules fail: ``lambda_1`` and ``lambda_2`` over the sector's faces ``k``, one row per
+    ``(standard, modified)`` pair of schemes, one column per kind of sector (:data:`SECTOR_KINDS`).
+
+    The standard rules' eigenvalues are solid, the modified ones dashed; the boundary curve's eigenvalue
+    (:func:`~symdecomp.analysis.mirror_threshold.boundary_eigenvalue`, 1/2) is the dotted line: a ``lambda_1`` above
+    it means the surface's tangent plane at the vertex is not spanned by the boundary curves' tangents.
+    """
+    from symdecomp.analysis.mirror_threshold import boundary_eigenvalue
+
+    pairs, ks = [tuple(p) for p in pairs], [int(k) for k in ks]
+    fig = new_figure(4.2 * len(SECTOR_KINDS), 3.2 * len(pairs))
+    axes = fig.subplots(len(pairs), len(SECTOR_KINDS), squeeze=False)
+    for row, schemes in zip(axes, pairs):
+        curve = float(sp.N(boundary_eigenvalue(schemes[0])))
+        for ax, (kind, make) in zip(row, SECTOR_KINDS):
+            for scheme, style in zip(schemes, ("-", "--")):
+                values = np.array([subdominant_eigenvalues(scheme, make(k, scheme.lattice)) for k in ks])
+                ax.plot(ks, values[:, 0], ls=style, marker="o", ms=3, color="C0", label=f"{scheme.name}: lambda_1")
+                ax.plot(ks, values[:, 1], ls=style, marker="s", ms=3, color="C1", label=f"{scheme.name}: lambda_2")
+            ax.axhline(curve, color="k", ls=":", lw=1, label=f"boundary curve: {sp.sstr(boundary_eigenvalue(schemes[0]))}")
+            label_axes(ax, "faces k of the sector", "eigenvalue", f"{schemes[0].lattice} lattice, {kind}", loc="lower right")
+    fig.suptitle("The subdominant eigenvalues against k: standard rules solid, modified rules dashed")
     return fig

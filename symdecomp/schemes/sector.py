@@ -89,8 +89,9 @@ class SharpVertex:
         sectors = tuple(_faces(k, "faces of a sector") for k in self.sectors)
         for name in ("closed", "corner"):
             check_type(getattr(self, name), bool, name)
-        if not sectors or sum(sectors) > MAX_SECTOR_FACES or (self.closed and sum(sectors) < 2):
-            raise InvalidInputError(f"sectors {sectors}: need 1 to {MAX_SECTOR_FACES} faces (2 or more around a closed fan)")
+        if not sectors or sum(sectors) > MAX_SECTOR_FACES or (self.closed and sum(sectors) < 3):
+            raise InvalidInputError(f"sectors {sectors}: need 1 to {MAX_SECTOR_FACES} faces (3 or more around a closed fan: "
+                                    "an interior vertex has valence 3 or more)")
         object.__setattr__(self, "sectors", sectors)
         object.__setattr__(self, "sharpness", check_sharpness(self.sharpness, "sharpness"))
         if self.angle is not None:

@@ -31,8 +31,10 @@ import sympy as sp
 from symdecomp.analysis.mirror import sector_decomposition, sector_matrix, sector_spectrum
 from symdecomp.errors import NotApplicableError
 from symdecomp.output.plotting._mpl import label_axes, new_figure
-from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import check_levels
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
+from symdecomp.schemes.sharp_refinement import refine_tagged
+from symdecomp.validate import cached, check_int, check_levels, check_type
 
 __all__ = ["SectorMode", "sector_modes", "sector_polylines_figure"]
 
@@ -80,7 +82,8 @@ def _normalised(v: np.ndarray) -> np.ndarray:
 
 def _continued(P: sp.Matrix, crease_rows: list[int], c: sp.Matrix, lam: sp.Expr) -> tuple[np.ndarray, bool]:
     """A crease eigenvector ``c`` (on ``crease_rows``) continued into the interior: ``(v, True)`` with ``S v = lambda v``,
-    or, when ``(T - lambda) x = -X c`` has no solution (decided exactly: ranks of the exact matrices), ``(v, False)``
+    or, when ``(T - lambda) x = -X c`` has no solution (decided exactly by ranks of the exact matrices where ``T - lambda``
+    is singular or nearly so in floats), ``(v, False)``
     with ``(S - lambda) v`` an eigenvector of the interior: a Jordan chain, no eigenvector continues ``c``."""
     inner = [r for r in range(P.rows) if r not in crease_rows]
     A = P.extract(inner, inner) - lam * sp.eye(len(inner))
@@ -89,15 +92,29 @@ def _continued(P: sp.Matrix, crease_rows: list[int], c: sp.Matrix, lam: sp.Expr)
     v[crease_rows] = _floats(c).ravel()
     if not inner:  # a triangle sector of one face: every point is on a sharp edge
         return v, True
-    if A.rank(simplify=True) == A.row_join(rhs).rank(simplify=True):
-        v[inner] = np.linalg.lstsq(_floats(A), _floats(rhs).ravel(), rcond=None)[0]
+    An = _floats(A)
+    # Far from singular in floats (smallest singular value 1e-6, rounding errors 1e-15): one solution. Else decide exactly.
+    if np.linalg.svd(An, compute_uv=False)[-1] > 1e-6 or A.rank(simplify=True) == A.row_join(rhs).rank(simplify=True):
+        v[inner] = np.linalg.lstsq(An, _floats(rhs).ravel(), rcond=None)[0]
         return v, True
-    u = np.linalg.svd(_floats(A))[2][-1]  # the interior eigenvector (A is singular: the system has no solution)
-    x = np.linalg.lstsq(np.column_stack([_floats(A), -u]), _floats(rhs).ravel(), rcond=None)[0]
+    u = np.linalg.svd(An)[2][-1]  # the interior eigenvector (A is singular: the system has no solution)
+    x = np.linalg.lstsq(np.column_stack([An, -u]), _floats(rhs).ravel(), rcond=None)[0]
     v[inner] = x[:-1]
     return v, False
 
 
+def _sector(vertex):
+    """A SharpVertex, or ``k`` (the faces of a boundary sector) as an ``int``."""
+    if isinstance(vertex, SharpVertex):
+        return vertex
+    return check_int(vertex, "vertex (a SharpVertex, or the faces k of a boundary sector)", minimum=1)
+
+
+def _sharp_vertex(vertex) -> SharpVertex:
+    return check_type(vertex, SharpVertex, "vertex", hint="SharpVertex.boundary(k, lattice), .corner(k, lattice, angle)")
+
+
+@cached(maxsize=16, scheme=check_scheme, vertex=_sector)
 def sector_modes(scheme: Scheme, vertex) -> tuple[SectorMode, ...]:
     """The eigenvectors of the 1-ring matrix of ``vertex`` (a SharpVertex, or ``k`` faces of a boundary sector), block by block.
 
@@ -154,6 +171,7 @@ def sector_polylines_figure(scheme: Scheme, k: int = 5):
     cosine-type polylines first (not 0 on the sharp edges), then the sine polylines of frequency ``j``
     (0 on both sharp edges and at ``O``).
     """
+    k = check_int(k, "k (the faces of the boundary sector)", minimum=1, maximum=64)
     modes = sector_modes(scheme, k)
     quad = scheme.face_rule is not None
     groups: dict = {}
@@ -279,9 +297,7 @@ def sector_characteristic_map(scheme: Scheme, vertex, *, rings: int = 3, levels:
     whether each edge's ends are sharp, which a cut-out ring cannot tell at its rim: each level loses one more ring
     there, hence 3 rings by default.)
     """
-    from symdecomp.schemes.sector import sharp_subdivision_matrix
-    from symdecomp.schemes.sharp_refinement import refine_tagged
-
+    scheme, vertex = check_scheme(scheme), _sharp_vertex(vertex)
     levels = check_levels(levels, "levels", maximum=6)
     S = _floats(sharp_subdivision_matrix(scheme, vertex, rings=rings))
     z, pair, defective = _map_vector(S, vertex)
@@ -317,9 +333,7 @@ def corner_maps_figure(schemes, corners=((2, sp.pi / 2), (3, 3 * sp.pi / 2)), *,
     faces' images (grey; filled red where a face's image is reversed), the sharp edges (the two boundary curves,
     blue) and ``O``; the title gives the map's eigenvalues and the next one in the spectrum.
     """
-    from symdecomp.schemes.sector import SharpVertex
-
-    schemes, corners = list(schemes), list(corners)
+    schemes, corners = [check_scheme(x) for x in schemes], list(corners)
     fig = new_figure(3.6 * len(corners), 3.5 * len(schemes))
     axes = fig.subplots(len(schemes), len(corners), squeeze=False)
     for row, scheme in zip(axes, schemes):
@@ -350,7 +364,7 @@ def subdominant_eigenvalues(scheme: Scheme, vertex) -> tuple[float, float]:
     """``(lambda_1, lambda_2)``: the two largest eigenvalues below the dominant 1 of the exact 1-ring matrix of ``vertex``
     (a SharpVertex; :func:`~symdecomp.analysis.mirror.sector_matrix`, the 1-ring matrix assembled from the stencils,
     equal to :func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`'s; evaluated in floats; with multiplicity)."""
-    ev = np.linalg.eigvals(_floats(sector_matrix(scheme, vertex)))
+    ev = np.linalg.eigvals(_floats(sector_matrix(check_scheme(scheme), _sharp_vertex(vertex))))
     values = sorted((float(x.real) for x in ev), reverse=True)
     if abs(values[0] - 1) > 1e-9:
         raise NotApplicableError(f"scheme {scheme.name!r}: the sector's largest eigenvalue is {values[0]}, not 1")
@@ -359,16 +373,10 @@ def subdominant_eigenvalues(scheme: Scheme, vertex) -> tuple[float, float]:
 
 #: The sector kinds of :func:`subdominant_figure`: a title and the vertex of ``k`` faces on a lattice.
 SECTOR_KINDS = (
-    ("boundary", lambda k, lat: _vertex().boundary(k, lat)),
-    ("convex corner, angle pi/2", lambda k, lat: _vertex().corner(k, lat, sp.pi / 2)),
-    ("concave corner, angle 3pi/2", lambda k, lat: _vertex().corner(k, lat, 3 * sp.pi / 2)),
+    ("boundary", lambda k, lat: SharpVertex.boundary(k, lat)),
+    ("convex corner, angle pi/2", lambda k, lat: SharpVertex.corner(k, lat, sp.pi / 2)),
+    ("concave corner, angle 3pi/2", lambda k, lat: SharpVertex.corner(k, lat, 3 * sp.pi / 2)),
 )
-
-
-def _vertex():
-    from symdecomp.schemes.sector import SharpVertex
-
-    return SharpVertex
 
 
 def subdominant_figure(pairs, ks=range(1, 17)):

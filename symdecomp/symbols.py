@@ -68,5 +68,6 @@ class Parameter(sp.Symbol):
 
 
 #: Names a user may not give a parameter: the toolkit's own symbols (which would print the same as
-#: the parameter in every derivation) and the functions and constants of the weight grammar.
-RESERVED_NAMES = ("n", "j", "c", "s", "omega", "lambda", "pi", "sqrt", "cos", "sin")
+#: the parameter in every derivation, or are the sector's face count ``k`` of the sharp rules) and the functions
+#: and constants of the weight grammar.
+RESERVED_NAMES = ("n", "j", "c", "s", "omega", "lambda", "pi", "sqrt", "cos", "sin", "k")

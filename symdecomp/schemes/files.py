@@ -39,7 +39,7 @@ Every weight is exact: an integer or a string read by
 (:data:`symdecomp.expressions.BUDGET`); nothing is evaluated. A parameter lives in its own namespace
 (a symbol of its own class, never equal to the toolkit's ``c = cos(j pi/n)`` or to any symbol of a
 derivation); the names the derivations print for their own symbols are reserved and refused in one
-line: ``n``, ``j``, ``c``, ``s``, ``omega``, ``lambda``, ``pi``, ``sqrt``, ``cos``, ``sin``. ``alpha``
+line: ``n``, ``j``, ``c``, ``s``, ``omega``, ``lambda``, ``pi``, ``sqrt``, ``cos``, ``sin``, ``k``. ``alpha``
 and ``beta`` are the paper's vertex weights (tuning reads them). Parameter names are letters and
 digits (a letter first, at most 16). ``name`` is one line of printable text (at most 100 characters), shown literally wherever it
 appears. Offsets are integers of magnitude at most :data:`~symdecomp.expressions.MAX_OFFSET`
@@ -66,6 +66,31 @@ the vertex rule is one weight ``beta`` on each neighbour (``O`` gets ``1 - n*bet
 field, never as floats (a weight outside cyclotomic fields, such as ``sqrt(2)``, is refused by the
 spectra with one line). A file equal to Loop gives Loop's results in every command.
 
+**Sharp features** (boundaries, creases, corners; :mod:`symdecomp.schemes.sharp`): an optional ``[sharp]``
+section gives the scheme's rules there; a key left out keeps the standard rule (OpenSubdiv's, the same for
+quads and triangles). ``crease_centre`` and ``crease_end`` are the crease and boundary vertex rule (weight on
+the vertex and on each of its two crease neighbours; ``3/4`` and ``1/8``, their sum ``crease_centre +
+2*crease_end`` must be 1), ``crease_edge`` the weight on each end of a crease or boundary edge (``1/2``);
+corners interpolate. ``near_edge_centre`` and ``near_edge_end``, given together, replace the smooth edge
+rule's weights on the two ends of a smooth edge at a crease, boundary or corner vertex (Biermann, Levin and
+Zorin's modified rule): the weight on the sharp vertex and on the other end, the other weights staying the
+smooth rule's, so the two must sum to twice the edge rule's ``O`` weight. These weights may use the sector
+angle ``theta_k`` (``pi/k`` in a crease or boundary sector of ``k`` faces, the corner angle over ``k`` at a
+corner; ``cos``/``sin`` of rational multiples of ``theta_k`` only), ``k`` and the declared parameters, with the
+same budget and checks as every other weight. Biermann, Levin and Zorin's rules ship as the files
+``catmull-clark-blz`` and ``loop-blz`` (:data:`SHIPPED_FILES`, loaded by name); Loop's::
+
+    name = "loop-blz"
+    mesh = "triangle"
+    [edge]
+    O = "3/8"
+    a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }
+    [vertex]
+    beta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"
+    [sharp]           # at a crease vertex v: (3/4 - gamma) v + gamma w + (1/8)(x + y), gamma = 1/2 - cos(theta_k)/4
+    near_edge_centre = "1/4 + cos(theta_k)/4"
+    near_edge_end = "1/2 - cos(theta_k)/4"
+
 A rule whose weights do not sum to 1, a float weight, an unknown name, a malformed offset, an
 unknown key, a ``[face]`` or a ``b`` weight in a triangle file, or a triangle ``[vertex]`` without
 ``beta`` is refused: every problem is reported as one :class:`~symdecomp.errors.InvalidSchemeError`
@@ -85,6 +110,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Mapping
+from importlib import resources
 
 import sympy as sp
 import tomllib
@@ -94,12 +120,13 @@ from symdecomp.expressions import parse_expression
 from symdecomp.schemes.lattice import LATTICES, QUAD
 from symdecomp.schemes.loop import loop, loop_warren
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
+from symdecomp.schemes.sharp import SHARP_SYMBOLS, SharpRules, standard_sharp_rules
 from symdecomp.symbols import RESERVED_NAMES, Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
 
-__all__ = ["SCHEMES", "load_scheme", "scheme_from_text", "scheme_to_text"]
+__all__ = ["SCHEMES", "SHIPPED_FILES", "load_scheme", "scheme_from_text", "scheme_to_text"]
 
 #: Schemes known by name (``--scheme NAME``).
 SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark, "loop": loop, "loop-warren": loop_warren}
@@ -107,7 +134,11 @@ SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark, "loo
 #: Mesh types a file may name (the lattices' names); ``"quad"`` is the default.
 MESHES = tuple(LATTICES)
 
-_TOP_KEYS = {"name", "mesh", "parameters", "edge", "face", "vertex"}
+#: Scheme files shipped with the package, loaded by name (``--scheme catmull-clark-blz``): BLZ's rules at sharp features.
+SHIPPED_FILES = {"catmull-clark-blz": "catmull-clark-blz.toml", "loop-blz": "loop-blz.toml"}
+
+_TOP_KEYS = {"name", "mesh", "parameters", "edge", "face", "vertex", "sharp"}
+_SHARP_KEYS = ("crease_centre", "crease_end", "crease_edge", "near_edge_centre", "near_edge_end")
 _RULE_KEYS = {"O", "a", "b"}
 _OFFSET = re.compile(r"^[+-]?[0-9]{1,4}$")
 _IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,15}$")
@@ -125,6 +156,9 @@ def load_scheme(name_or_path: str | os.PathLike) -> Scheme:
         raise InvalidTypeError(f"load_scheme takes a scheme name or a file path as text, got {text_name!r:.60}")
     if text_name in SCHEMES:
         return SCHEMES[text_name]()
+    if text_name in SHIPPED_FILES:
+        text = resources.files("symdecomp.schemes").joinpath(SHIPPED_FILES[text_name]).read_text(encoding="utf-8")
+        return scheme_from_text(text, source=SHIPPED_FILES[text_name], default_name=text_name)
     if not os.path.isfile(text_name):
         raise InvalidSchemeError(
             f"unknown scheme {text_name!r}: neither a known name ({', '.join(SCHEMES)}) nor a readable file"
@@ -181,8 +215,9 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
             rules[section] = _stencil(data[section], section, source, symbols, keys={"O", "a"} if triangle else _RULE_KEYS)
     edge, face, vertex = rules["edge"], rules.get("face"), rules["vertex"]
     declared = tuple(s for key, s in symbols.items() if key != "n")
+    sharp = _sharp(data.get("sharp", {}), source, symbols)
     try:
-        scheme = Scheme(name.strip(), edge, face, vertex, declared, mesh)
+        scheme = Scheme(name.strip(), edge, face, vertex, declared, mesh, sharp)
         scheme.check_values_at(mesh.regular_valence, real=True, note=" (the regular valence: every vertex away from O uses "
                                "the rules there)")
     except SymdecompError as exc:
@@ -225,6 +260,21 @@ def _weight(value, where: str, source: str, symbols: Mapping[str, sp.Symbol]) ->
     if expr.has(sp.I) or expr.is_real is False:
         raise InvalidSchemeError(f"{source}: {where}: {value!r} is not real")
     return expr
+
+
+def _sharp(table, source: str, symbols) -> SharpRules:
+    """The ``[sharp]`` section: the standard rules, with the weights it gives (``theta_k`` and ``k`` allowed)."""
+    if not isinstance(table, dict):
+        raise InvalidSchemeError(f"{source}: sharp must be a table [sharp]")
+    _check_keys(table, set(_SHARP_KEYS), "sharp", source)
+    names = {key: s for key, s in symbols.items() if key != "n"} | SHARP_SYMBOLS
+    standard = standard_sharp_rules()
+    weights = {key: _weight(table[key], f"[sharp] {key}", source, names) if key in table else getattr(standard, key)
+               for key in _SHARP_KEYS}
+    try:
+        return SharpRules(**weights)
+    except SymdecompError as exc:
+        raise InvalidSchemeError(f"{source}: [sharp]: {str(exc).removeprefix('sharp rules: ')}") from None
 
 
 def _offsets(value, where: str, source: str, symbols) -> dict[int, sp.Expr]:
@@ -320,8 +370,16 @@ def scheme_to_text(scheme: Scheme) -> str:
     if not scheme.lattice.face_neighbours:
         rule = scheme.edge_rule
         lines += ["[edge]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", "[vertex]", f'beta = "{_text(v.each_a)}"']
-        return "\n".join(lines) + "\n"
+        return "\n".join(lines + _sharp_lines(scheme)) + "\n"
     for section, rule in (("edge", scheme.edge_rule), ("face", scheme.face_rule)):
         lines += [f"[{section}]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", f"b = {offsets(rule.b)}"]
     lines += ["[vertex]", f'a = "{_text(v.each_a)}"', f'b = "{_text(v.each_b)}"']
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines + _sharp_lines(scheme)) + "\n"
+
+
+def _sharp_lines(scheme: Scheme) -> list[str]:
+    """The ``[sharp]`` section, when the rules are not the standard ones."""
+    if scheme.sharp == standard_sharp_rules():
+        return []
+    return ["[sharp]"] + [f'{key} = "{_text(getattr(scheme.sharp, key))}"' for key in _SHARP_KEYS
+                          if getattr(scheme.sharp, key) is not None]

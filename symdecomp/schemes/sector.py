@@ -42,14 +42,14 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_sympy
-from symdecomp.errors import InvalidInputError, InvalidMeshError, NotApplicableError
+from symdecomp.errors import InternalError, InvalidInputError, InvalidMeshError, NotApplicableError
 from symdecomp.expressions import exact_value
 from symdecomp.schemes.lattice import Lattice, lattice
-from symdecomp.schemes.rings import check_rings
+from symdecomp.schemes.rings import MAX_RINGS, check_rings
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sharp import SharpOptions, check_sharpness, decrement
 from symdecomp.schemes.sharp_refinement import TaggedMesh, sharp_stencils
-from symdecomp.validate import cached, check_levels, check_memory, check_type
+from symdecomp.validate import cached, check_int, check_levels, check_memory, check_type
 
 __all__ = ["SharpVertex", "sharp_subdivision_matrix", "exact_sharp_matrix", "MAX_SECTOR_FACES", "MAX_LEVEL"]
 
@@ -147,7 +147,9 @@ class SharpVertex:
 
     def ring_labels(self, rings: int = 1) -> tuple[tuple[int, int, int], ...]:
         """Labels ``(s, u, v)`` of the closed ``rings``-ring in matrix order (see the module docstring)."""
-        rings = check_rings(rings)
+        return self._labels(check_rings(rings))
+
+    def _labels(self, rings: int) -> tuple[tuple[int, int, int], ...]:
         f, quads = self.faces, self.lattice.face_neighbours
         out = [(0, 0, 0)] + [(i, 1, 0) for i in range(self.edge_count())] + ([(i, 1, 1) for i in range(f)] if quads else [])
         for r in range(2, rings + 1):
@@ -169,7 +171,7 @@ class SharpVertex:
 
     def tagged_mesh(self, rings: int = 1) -> tuple[TaggedMesh, dict]:
         """The tagged ``rings``-ring mesh around ``O`` (vertex ids in matrix order) and the ids of its labels."""
-        labels = self.ring_labels(rings)
+        labels = self._labels(check_int(rings, "rings", minimum=1, maximum=MAX_RINGS + 1))
         check_memory(len(labels) * 2048, f"the tagged {rings}-ring mesh of a vertex with {self.faces} faces")
         ids = {lab: i for i, lab in enumerate(labels)}
 
@@ -244,14 +246,17 @@ def _sparse_rows(scheme, vertex, rings, level, options) -> tuple[dict, ...]:
     if vertex.lattice is not scheme.lattice:
         raise InvalidMeshError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, the vertex on {vertex.lattice}")
     vertex = vertex.at_level(level)
-    tagged, ids = vertex.tagged_mesh(rings)
+    # one ring more than is read: whether a vertex of the K-ring is a sharp vertex (BLZ's rules ask) and its
+    # rule's inputs are decided by its whole fan, which the (K + 1)-ring mesh holds
+    tagged, ids = vertex.tagged_mesh(rings + 1)
     stencils = sharp_stencils(tagged, scheme, options)
     face_of = {frozenset(f): i for i, f in enumerate(tagged.mesh.faces)}
+    labels = vertex.ring_labels(rings)
     rows = []
-    for label in vertex.ring_labels(rings):
+    for label in labels:
         row = _refined_point(vertex, stencils, ids, face_of, label)
-        if any(c >= len(ids) for c in row):  # pragma: no cover - the K-ring depends on the K-ring only
-            raise InvalidMeshError(f"the refined point {label} depends on a point outside the {rings}-ring")
+        if any(c >= len(labels) for c in row):  # pragma: no cover - the K-ring depends on the K-ring only
+            raise InternalError(f"the refined point {label} depends on a point outside the {rings}-ring")
         rows.append(row)
     return tuple(rows)
 

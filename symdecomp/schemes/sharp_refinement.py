@@ -13,7 +13,7 @@ rule its own tags and valence give (the whole-mesh model):
 
 * face point (quads): the centroid, the scheme's face rule;
 * edge point: the scheme's smooth edge rule (or BLZ's near-edge rule, :class:`~symdecomp.schemes.sharp.SharpRules`,
-  when one end is a crease, boundary or corner vertex and the edge is smooth), the crease rule
+  when exactly one end is a crease, boundary or corner vertex and the edge is smooth), the crease rule
   ``crease_edge`` on each end when the edge's sharpness is at least 1 (Chaikin: when both child halves stay
   sharp), and for ``0 < s < 1`` the blend ``s * crease + (1 - s) * smooth`` (OpenSubdiv's
   ``ComputeEdgeVertexMask``);
@@ -268,7 +268,7 @@ def _near_edge(tagged: TaggedMesh, x: int, y: int, fans: dict, kinds: dict, rule
     sharp = [tagged.sharpness(x, a) for a in fan.edges]
     k = _sector(fan, sharp, fan.edges.index(y))
     theta = tagged.angles.get(x, sp.pi) / k
-    return tuple(_as_weight(sp.simplify(w)) for w in rules.sharp.near_edge(theta, k))
+    return tuple(_as_weight(w) for w in rules.sharp.near_edge(theta, k))
 
 
 def _smooth_edge(tagged: TaggedMesh, u: int, v: int, fans: dict, kinds: dict, rules: _Rules) -> dict | None:
@@ -280,9 +280,8 @@ def _smooth_edge(tagged: TaggedMesh, u: int, v: int, fans: dict, kinds: dict, ru
         if fans.get(u) is None or fans.get(v) is None:
             return None  # whether an end is a sharp vertex is decided outside the mesh
         at_u, at_v = _near_edge(tagged, u, v, fans, kinds, rules), _near_edge(tagged, v, u, fans, kinds, rules)
-        near = [w for w in (at_u, at_v and at_v[::-1]) if w]
-        if near:  # at two sharp ends, the mean of the two modified rules
-            out = {u: sum(w[0] for w in near) / len(near), v: sum(w[1] for w in near) / len(near)}
+        if (at_u is None) != (at_v is None):  # at two sharp ends the smooth rule stays (as implementations of BLZ do)
+            out = {u: at_u[0], v: at_u[1]} if at_u else {u: at_v[1], v: at_v[0]}
     for x in sides:
         _add(out, rules.edge_side, x)
     return out

@@ -323,7 +323,7 @@ def _map_title(scheme: Scheme, k: int, angle, m: SectorMap) -> str:
     l3 = m.spectrum[2] if len(m.spectrum) > 2 else 0.0
     third = "lambda_3 = lambda_2: no gap" if abs(l3 - l2) < 1e-6 else f"lambda_3 = {l3:.4f}"
     notes = (f"; {m.folded} faces reversed" if m.folded else "") + ("; Jordan block" if m.defective else "")
-    return f"{scheme.name}, k = {k}, angle {sp.sstr(angle)}\nlambda = {l1:.4f}, {l2:.4f}, {third}{notes}"
+    return f"{scheme.name}, k = {k}, angle {sp.sstr(angle)}\nlambda_1, lambda_2 = {l1:.4f}, {l2:.4f}\n{third}{notes}"
 
 
 def corner_maps_figure(schemes, corners=((2, sp.pi / 2), (3, 3 * sp.pi / 2)), *, levels: int = 3):
@@ -334,7 +334,7 @@ def corner_maps_figure(schemes, corners=((2, sp.pi / 2), (3, 3 * sp.pi / 2)), *,
     blue) and ``O``; the title gives the map's eigenvalues and the next one in the spectrum.
     """
     schemes, corners = [check_scheme(x) for x in schemes], list(corners)
-    fig = new_figure(3.6 * len(corners), 3.5 * len(schemes))
+    fig = new_figure(4.4 * len(corners), 3.9 * len(schemes))
     axes = fig.subplots(len(schemes), len(corners), squeeze=False)
     for row, scheme in zip(axes, schemes):
         for ax, (k, angle) in zip(row, corners):

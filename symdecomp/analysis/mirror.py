@@ -112,7 +112,7 @@ def mirror_stencils(scheme) -> tuple[dict, dict | None]:
     for rule in (edge, face):
         if rule is not None:
             weights = [rule["O"], *rule["a"].values(), *rule["b"].values()]
-            _require(not any(N in sp.sympify(w).free_symbols for w in weights), scheme,
+            _require(not any(N in sp.sympify(w, strict=True).free_symbols for w in weights), scheme,
                      "a smooth edge or face weight depends on the valence n, which a sector does not have")
     return edge, face
 
@@ -231,6 +231,7 @@ class _Layout:
 
 def vertex_of(scheme: Scheme, vertex) -> SharpVertex:
     """``vertex`` as a :class:`~symdecomp.schemes.sector.SharpVertex` (``k``: a boundary vertex with k faces)."""
+    scheme = check_scheme(scheme)
     if isinstance(vertex, SharpVertex):
         return vertex
     if isinstance(vertex, bool) or not isinstance(vertex, numbers.Integral):
@@ -242,6 +243,7 @@ def vertex_layout(scheme: Scheme, vertex) -> _Layout:
     """Where the points of ``vertex`` sit: a :class:`~symdecomp.schemes.sector.SharpVertex`, or ``k`` for
     ``SharpVertex.boundary(k, scheme.lattice)``. A boundary vertex with one face is a corner (OpenSubdiv's default
     boundary interpolation, edge and corner), as in :func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`."""
+    scheme = check_scheme(scheme)
     vertex = vertex_of(scheme, vertex)
     if vertex.lattice != scheme.lattice:
         raise InvalidSchemeError(f"vertex: a {vertex.lattice.name} vertex, but scheme {scheme.name!r} lives on {scheme.lattice.name}")
@@ -292,8 +294,8 @@ def sector_matrix(scheme, vertex, rules=None) -> sp.Matrix:
         e = _edge_weights(scheme, edge, rules, modified=len(sharp) > 1)
         at = {THETA_K: lay.angle / k, symbols.sector_faces: k}
         for i in range(1, k):
-            _add_interior(P, lay, lay.a(p + i), sp.sympify(e["O"]).subs(at),
-                          {"a": {d: sp.sympify(x).subs(at) for d, x in e["a"].items()}, "b": e["b"]}, p + i)
+            _add_interior(P, lay, lay.a(p + i), sp.sympify(e["O"], strict=True).subs(at),
+                          {"a": {d: sp.sympify(x, strict=True).subs(at) for d, x in e["a"].items()}, "b": e["b"]}, p + i)
         for i in range(k if lay.quad else 0):
             _add_interior(P, lay, lay.b(p + i), face["O"], face, p + i)
     return P

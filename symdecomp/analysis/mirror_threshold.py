@@ -37,7 +37,8 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import sharp_subdivision_matrix
 
-__all__ = ["C", "X", "block_polynomials", "sine_part", "charpoly_check", "Threshold", "first_exceeding", "boundary_eigenvalue"]
+__all__ = ["C", "X", "block_polynomials", "sine_part", "charpoly_check", "Threshold", "first_exceeding", "boundary_eigenvalue",
+           "crease_eigenvectors"]
 
 #: ``c = cos(theta)``, the variable of the sine blocks' polynomials.
 C = sp.Symbol("c", real=True)
@@ -54,7 +55,7 @@ def boundary_eigenvalue(scheme, rules=None) -> sp.Expr:
 
 
 def _in_c(expr) -> sp.Expr:
-    out = sp.expand(sp.sympify(expr).subs({sp.cos(THETA / 2): _H, sp.cos(THETA): C}))
+    out = sp.expand(sp.sympify(expr, strict=True).subs({sp.cos(THETA / 2): _H, sp.cos(THETA): C}))
     out = sp.expand(out.subs(_H**2, (1 + C) / 2))
     if out.has(THETA) or out.has(THETA_K):
         raise NotApplicableError(f"a sine block entry {expr} is not a polynomial in cos(theta)")
@@ -124,7 +125,7 @@ def charpoly_check(scheme, vertex, rules=None, matrix=None) -> tuple[bool, flint
         P = sharp_subdivision_matrix(scheme, vertex_of(scheme, vertex)) if rules is None else sector_matrix(scheme, vertex, rules)
     else:
         P = matrix
-    if any(not sp.sympify(e).is_Rational for e in P):
+    if any(not sp.sympify(e, strict=True).is_Rational for e in P):
         raise NotApplicableError("the matrix has irrational entries: FLINT's rational characteristic polynomial does not apply")
     full = flint.fmpq_mat([[flint.fmpq(int(e.p), int(e.q)) for e in row] for row in P.tolist()]).charpoly()
     dart = len(lay.sharp) == 1
@@ -205,3 +206,48 @@ def first_exceeding(scheme, rules=None) -> Threshold:
         while first - 1 in table and table[first - 1] == ">":
             first -= 1
     return Threshold(lam, g, t, table, beyond, first, False)
+
+
+def _mirror_permutation(lay) -> list[int]:
+    """The mirror ``a_i <-> a_(k-i)``, ``b_i <-> b_(k-1-i)`` of an open fan of one sector, as a permutation of the 1-ring."""
+    k = lay.faces
+    perm = [0] + [lay.a(k - i) for i in range(k + 1)]
+    return perm + ([lay.b(k - 1 - i) for i in range(k)] if lay.quad else [])
+
+
+def crease_eigenvectors(scheme, vertex, rules=None) -> tuple[tuple[sp.Expr, sp.Matrix | None, int | None], ...]:
+    """The eigenvectors of the crease block's eigenvalues, continued into the sector: ``(lambda, vector, parity)``.
+
+    For an eigenvector ``c`` of ``C`` the interior part solves ``(lambda - T) y = X c`` exactly; ``vector`` is ``None``
+    when ``lambda`` is also an eigenvalue of ``T`` (the continuation is not unique, or there is a Jordan block).
+    ``parity`` is ``+1`` (mirror symmetric: the cosine-type polylines), ``-1`` (antisymmetric) or ``None``, for a
+    boundary or corner vertex (one open sector); ``None`` elsewhere.
+    """
+    scheme = check_scheme(scheme)
+    lay = vertex_layout(scheme, vertex)
+    if len(lay.sharp) < 2:
+        raise NotApplicableError("vertex: a dart has no crease block; its symmetric part is sector_decomposition(...).cosine")
+    P = sector_matrix(scheme, vertex, rules)
+    head = [0] + [lay.a(m) for m in lay.sharp]
+    tail = [i for i in range(lay.size) if i not in head]
+    Cb, X_, T = P.extract(head, head), P.extract(tail, head), P.extract(tail, tail)
+    perm = _mirror_permutation(lay) if not lay.closed and len(lay.sectors) == 1 else None
+    out = []
+    for lam, _, vectors in Cb.eigenvects():
+        for c in vectors:
+            A = lam * sp.eye(len(tail)) - T
+            if A.det() == 0:
+                out.append((lam, None, None))
+                continue
+            y = A.LUsolve(X_ * c)
+            v = sp.zeros(lay.size, 1)
+            for r, i in enumerate(head):
+                v[i] = c[r]
+            for r, i in enumerate(tail):
+                v[i] = sp.simplify(y[r])
+            parity = None
+            if perm is not None:
+                mirrored = sp.Matrix([v[perm[i]] for i in range(lay.size)])
+                parity = 1 if mirrored == v else (-1 if mirrored == -v else None)
+            out.append((lam, v, parity))
+    return tuple(out)

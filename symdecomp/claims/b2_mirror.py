@@ -92,6 +92,18 @@ def _crease(scheme: Scheme) -> CheckResult:
     return check_crease(scheme)
 
 
+def _both_lattices(scheme: Scheme, check) -> CheckResult:
+    """A statement about Catmull-Clark and Loop: ``check`` on ``scheme``, then on the other lattice's reference scheme."""
+    other = (TRIANGLE if scheme.lattice == QUAD else QUAD).reference()
+    first = check(scheme)
+    if first.status is not Status.PROVED:
+        return first
+    second = check(other)
+    if second.status is not Status.PROVED:
+        return second
+    return CheckResult(Status.PROVED, Text(first.evidence, "; and ", second.evidence), steps=first.steps + second.steps)
+
+
 def _table(th) -> sp.Matrix:
     return sp.Matrix([[sp.Symbol("k"), sp.Symbol("relation")]] + [[k, sp.Symbol(r)] for k, r in sorted(th.table.items())])
 
@@ -124,7 +136,7 @@ def check_first_k(scheme: Scheme, printed=None, rules=None) -> CheckResult:
     requires=(NO_FREE_PARAMETERS,),
 )
 def _first_k(scheme: Scheme) -> CheckResult:
-    return check_first_k(scheme)
+    return _both_lattices(scheme, check_first_k)
 
 
 def check_blz(scheme: Scheme, printed=None) -> CheckResult:
@@ -155,7 +167,7 @@ def check_blz(scheme: Scheme, printed=None) -> CheckResult:
     requires=(NO_FREE_PARAMETERS,),
 )
 def _blz(scheme: Scheme) -> CheckResult:
-    return check_blz(scheme)
+    return _both_lattices(scheme, check_blz)
 
 
 def _as_expr(poly) -> sp.Expr:
@@ -190,3 +202,40 @@ def check_against_matrix(scheme: Scheme, sectors: tuple[int, int] = SECTORS) -> 
 )
 def _against_matrix(scheme: Scheme) -> CheckResult:
     return check_against_matrix(scheme)
+
+
+#: As printed: the frequency of the boundary tangent's continuation into the sector, per lattice.
+TANGENT_FREQUENCY = {QUAD.name: sp.pi / 2, TRIANGLE.name: sp.pi / 3}
+
+
+def check_tangent(scheme: Scheme, printed=None) -> CheckResult:
+    """The eigenvector of the boundary curve's eigenvalue continues as ``sin(phi (i - k/2))``: ``det(M(phi) - 1/2) = 0``."""
+    phi = TANGENT_FREQUENCY[scheme.lattice.name] if printed is None else printed
+    residual, _ = sine_identity(scheme)
+    th = first_exceeding(scheme)
+    at = sp.simplify(th.g.subs(C, sp.cos(phi)))
+    M = sine_block(scheme).subs(THETA, phi)
+    steps = (Step("$g(c) = \\det(M(\\phi) - \\frac12)$ (or $M(\\phi) - \\frac12$), $c = \\cos\\phi$", th.g),
+             Step("$g$ at the printed frequency", at), Step("$M(\\phi)$ there", M.applyfunc(sp.simplify)))
+    if at == 0 and all(r == 0 for r in residual):
+        return CheckResult(Status.PROVED, Text("for ", Verbatim(scheme.name), ": g(cos(phi)) = 0 at phi = ", phi, ", and the "
+                                               "sine identity holds at every phase, so a_i = sin(phi (i - k/2)) (with O = 0 and "
+                                               "the sharp-edge values it gives) is an eigenvector of ", th.value, " for every k "
+                                               "where sin(phi k/2) is not 0"), steps=steps)
+    what = Text("for ", Verbatim(scheme.name), ": g(cos(phi)) at phi = ", phi, " is ", at, ", not 0")
+    return CheckResult(Status.REFUTED, what, counterexample=what, steps=steps)
+
+
+@claim(
+    "Sector: the boundary tangent's continuation",
+    section="B.2",
+    title="The boundary tangent continues into the sector as a sine of frequency $\\pi/2$ (Catmull-Clark), $\\pi/3$ (Loop)",
+    statement=r"The eigenvector of the crease block's $\frac12$ ($O = 0$, $a_0 = -a_k$) continues into a sector of $k$ "
+    r"faces as the antisymmetric polyline $a_i = A \sin(\phi (i - \frac k2))$, $b_i = B \sin(\phi (i + \frac12 - "
+    r"\frac k2))$ with $\phi = \pi/2$ on Catmull-Clark surfaces and $\phi = \pi/3$ on Loop surfaces, for every $k$ with "
+    r"$\sin(\phi k/2) \ne 0$; where $\phi = \pi j/k$ (even $k$, resp. $k$ a multiple of 3) $\frac12$ is also a sine "
+    r"eigenvalue.",
+    requires=(NO_FREE_PARAMETERS,),
+)
+def _tangent(scheme: Scheme) -> CheckResult:
+    return _both_lattices(scheme, check_tangent)

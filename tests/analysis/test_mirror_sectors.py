@@ -19,7 +19,7 @@ from symdecomp.analysis.mirror import (
     sine_identity,
     with_near_edge,
 )
-from symdecomp.analysis.mirror_threshold import C, boundary_eigenvalue, charpoly_check, first_exceeding
+from symdecomp.analysis.mirror_threshold import C, boundary_eigenvalue, charpoly_check, crease_eigenvectors, first_exceeding
 from symdecomp.errors import InvalidTypeError, NotApplicableError
 from symdecomp.schemes.lattice import QUAD
 from symdecomp.schemes.scheme import Scheme, Stencil
@@ -158,3 +158,22 @@ def test_refuses_rules_without_the_mirror_in_one_line():
         sector_matrix(CC, 3, rules=object())
     with pytest.raises(NotApplicableError, match="semi-sharp"):
         sector_spectrum(CC, SharpVertex.crease(2, 3, QUAD, sharpness=1))
+
+
+@pytest.mark.parametrize("scheme, phi, resonant", [(CC, sp.pi / 2, (2, 4, 6)), (LOOP, sp.pi / 3, (3, 6))], ids=["cc", "loop"])
+def test_the_boundary_tangent_continues_as_a_shifted_sine(scheme, phi, resonant):
+    """The eigenvector of the crease block's 1/2 (on a_0 - a_k) continues into the sector as a_i ~ sin(phi (i - k/2)), phi the
+    root of det(M(phi) - 1/2) = 0 (Catmull-Clark: -cos(phi)/16, phi = pi/2; Loop: cos(phi)/4 - 1/8, phi = pi/3); where
+    phi = pi j/k, 1/2 is also a sine eigenvalue and the continuation is not unique."""
+    g = first_exceeding(scheme).g
+    assert g.subs(C, sp.cos(phi)) == 0
+    for k in range(2, 8):
+        (lam, v, parity), = [e for e in crease_eigenvectors(scheme, k) if e[0] == Q(1, 2)]
+        if k in resonant:
+            assert v is None
+            continue
+        assert parity == -1
+        a = [v[1 + i] for i in range(k + 1)]
+        shape = [sp.sin(phi * (2 * i - k) / 2) for i in range(k + 1)]
+        assert all(sp.simplify(a[i] * shape[0] - a[0] * shape[i]) == 0 for i in range(k + 1)), k
+        assert sp.simplify(sector_matrix(scheme, k) * v - v / 2) == sp.zeros(v.shape[0], 1)

@@ -98,6 +98,7 @@ EXPECTED = {
     "Sector: standard rules' subdominant eigenvalue": P,  # above 1/2 from k = 3 (Catmull-Clark), every k
     "Sector: modified rules (BLZ 2000)": P,  # det(M(pi/k) - 1/2) = 0 identically in cos(pi/k)
     "Sector: the blocks are the spectrum": V,  # FLINT charpolys, k = 1..12
+    "Sector: the boundary tangent's continuation": P,  # det(M(phi) - 1/2) = 0 at phi = pi/2 (CC), pi/3 (Loop)
 }
 
 

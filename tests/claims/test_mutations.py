@@ -315,6 +315,8 @@ TABLE = [
     ("Sector: modified rules (BLZ 2000)", printed("b2_mirror", "BLZ_RULE", {"quad": (Q(1, 4) + sp.cos(THETA_K) / 2,
                                                                                    Q(1, 2) - sp.cos(THETA_K) / 2)}), R),
     ("Sector: the blocks are the spectrum", "asymmetric", NA),
+    ("Sector: the boundary tangent's continuation", "moved", R),  # the edge weight on a_i moved: det(M(pi/2) - 1/2) = -1/256
+    ("Sector: the boundary tangent's continuation", printed("b2_mirror", "TANGENT_FREQUENCY", {"quad": sp.pi / 3}), R),
 ]
 
 def _status(label, change, monkeypatch):

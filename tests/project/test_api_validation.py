@@ -197,6 +197,8 @@ SCHEMES = [
     (sd.limit_frame, dict(mesh=CUBE, vertex=0)),
     (sd.sharp_subdivision_matrix, dict(vertex=BOUNDARY)),
     (sd.exact_sharp_matrix, dict(vertex=BOUNDARY)),
+    (sd.sector_decomposition, dict(vertex=BOUNDARY)),
+    (sd.sector_spectrum, dict(vertex=3)),
     (sector_modes, dict(vertex=BOUNDARY)),
 ]
 

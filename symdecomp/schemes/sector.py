@@ -100,6 +100,12 @@ class SharpVertex:
                 raise InvalidInputError(f"corner angle must be in (0, 2*pi), got {angle}")
             object.__setattr__(self, "angle", angle)
 
+    def __repr__(self) -> str:
+        extra = "".join(f", {name}={getattr(self, name)!r}" for name, default in (("corner", False), ("sharpness", math.inf),
+                                                                                   ("angle", None))
+                        if getattr(self, name) != default)
+        return f"SharpVertex({self.lattice.name!r}, {self.sectors}, closed={self.closed}{extra})"
+
     @classmethod
     def boundary(cls, k: int, lattice: Lattice | str) -> SharpVertex:
         """A boundary vertex with ``k`` faces."""

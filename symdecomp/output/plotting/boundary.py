@@ -8,8 +8,10 @@ The numbers behind the figures come from the package; nothing is typed in:
   polylines ``a_i = sin(j pi i/k)``, ``b_i = sin(j pi (i + 1/2)/k)``; a block's eigenvector ``(A, B)`` weights
   them) and :func:`~symdecomp.analysis.mirror.sector_spectrum` (the exact eigenvalues). The crease block's
   eigenvectors live on ``O`` and the sharp-edge points; each continues into the interior by solving
-  ``(T - lambda) x = -X c`` in the block lower-triangular matrix ``[[C, 0], [X, T]]``: these are the
-  cosine-type (mirror-symmetric or antisymmetric) polylines.
+  ``(T - lambda) x = -X c`` in the block lower-triangular matrix ``[[C, 0], [X, T]]``
+  (:func:`~symdecomp.analysis.mirror_threshold.crease_eigenvectors`): these are the cosine-type
+  (mirror-symmetric or antisymmetric) polylines. Where ``lambda`` is also an eigenvalue of ``T`` the matrix may
+  have a Jordan block instead, decided exactly; the figure then draws the chain's generalised eigenvector.
 * :func:`sector_characteristic_map`: the image of the sector's faces under two eigenvectors of its ``rings``-ring
   matrix (:func:`symdecomp.schemes.sector.sharp_subdivision_matrix`), refined ``levels`` times by the tagged
   refinement of the whole mesh (:func:`symdecomp.schemes.sharp_refinement.refine_tagged`).
@@ -29,6 +31,7 @@ import numpy as np
 import sympy as sp
 
 from symdecomp.analysis.mirror import sector_decomposition, sector_matrix, sector_spectrum
+from symdecomp.analysis.mirror_threshold import crease_eigenvectors
 from symdecomp.errors import NotApplicableError
 from symdecomp.output.plotting._mpl import label_axes, new_figure
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -80,27 +83,43 @@ def _normalised(v: np.ndarray) -> np.ndarray:
     return v * np.sign(first)
 
 
-def _continued(P: sp.Matrix, crease_rows: list[int], c: sp.Matrix, lam: sp.Expr) -> tuple[np.ndarray, bool]:
-    """A crease eigenvector ``c`` (on ``crease_rows``) continued into the interior: ``(v, True)`` with ``S v = lambda v``,
-    or, when ``(T - lambda) x = -X c`` has no solution (decided exactly by ranks of the exact matrices where ``T - lambda``
-    is singular or nearly so in floats), ``(v, False)``
-    with ``(S - lambda) v`` an eigenvector of the interior: a Jordan chain, no eigenvector continues ``c``."""
+def _singular_continuation(P: sp.Matrix, crease_rows: list[int], c: sp.Matrix, lam: sp.Expr) -> tuple[np.ndarray, bool]:
+    """A crease eigenvector ``c`` (on ``crease_rows``) continued into the interior where ``lambda`` is also an eigenvalue
+    of the interior part ``T`` (so :func:`~symdecomp.analysis.mirror_threshold.crease_eigenvectors` gives none):
+    ``(v, True)`` with ``S v = lambda v`` when ``(T - lambda) x = -X c`` has solutions (the least-squares one), else
+    ``(v, False)`` with ``(S - lambda) v`` an eigenvector of the interior: a Jordan chain, no eigenvector continues
+    ``c``. Which of the two is decided exactly, by the ranks of the exact matrices."""
     inner = [r for r in range(P.rows) if r not in crease_rows]
     A = P.extract(inner, inner) - lam * sp.eye(len(inner))
     rhs = -P.extract(inner, crease_rows) * c
     v = np.zeros(P.rows)
     v[crease_rows] = _floats(c).ravel()
-    if not inner:  # a triangle sector of one face: every point is on a sharp edge
-        return v, True
-    An = _floats(A)
-    # Far from singular in floats (smallest singular value 1e-6, rounding errors 1e-15): one solution. Else decide exactly.
-    if np.linalg.svd(An, compute_uv=False)[-1] > 1e-6 or A.rank(simplify=True) == A.row_join(rhs).rank(simplify=True):
-        v[inner] = np.linalg.lstsq(An, _floats(rhs).ravel(), rcond=None)[0]
+    An, b = _floats(A), _floats(rhs).ravel()
+    if A.rank(simplify=True) == A.row_join(rhs).rank(simplify=True):
+        v[inner] = np.linalg.lstsq(An, b, rcond=None)[0]
         return v, True
     u = np.linalg.svd(An)[2][-1]  # the interior eigenvector (A is singular: the system has no solution)
-    x = np.linalg.lstsq(np.column_stack([An, -u]), _floats(rhs).ravel(), rcond=None)[0]
-    v[inner] = x[:-1]
+    v[inner] = np.linalg.lstsq(np.column_stack([An, -u]), b, rcond=None)[0][:-1]
     return v, False
+
+
+def _crease_modes(scheme: Scheme, vertex, d) -> list[SectorMode]:
+    """The crease block's modes: :func:`~symdecomp.analysis.mirror_threshold.crease_eigenvectors` where the
+    continuation is unique, :func:`_singular_continuation` where it is not."""
+    Q = _floats(d.transform)
+    crease_rows = [int(np.flatnonzero(Q[:, c])[0]) for c in range(d.crease.shape[0])]
+    exact: dict = {}
+    for lam, vector, _ in crease_eigenvectors(scheme, vertex):
+        exact.setdefault(lam, []).append(vector)
+    modes = []
+    for lam, vectors in exact.items():
+        if all(v is not None for v in vectors):
+            modes += [SectorMode("crease", None, lam, _normalised(_floats(v).ravel())) for v in vectors]
+            continue
+        for c in (d.crease - lam * sp.eye(d.crease.rows)).nullspace(simplify=True):
+            v, proper = _singular_continuation(d.matrix, crease_rows, c, lam)
+            modes.append(SectorMode("crease", None, lam, _normalised(v), proper))
+    return modes
 
 
 def _sector(vertex):
@@ -126,13 +145,8 @@ def sector_modes(scheme: Scheme, vertex) -> tuple[SectorMode, ...]:
     d = sector_decomposition(scheme, vertex)
     spectrum = sector_spectrum(scheme, vertex)
     Q = _floats(d.transform)
-    crease_rows = [int(np.flatnonzero(Q[:, c])[0]) for c in range(0 if d.crease is None else d.crease.shape[0])]
-    modes = []
-    for value in dict.fromkeys(e.value for e in spectrum if e.block == "crease"):
-        for c in (d.crease - value * sp.eye(d.crease.rows)).nullspace(simplify=True):
-            v, proper = _continued(d.matrix, crease_rows, c, value)
-            modes.append(SectorMode("crease", None, value, _normalised(v), proper))
-    column = len(crease_rows)
+    modes = _crease_modes(scheme, vertex, d)
+    column = d.crease.shape[0]
     for blk in d.blocks:
         width = blk.matrix.shape[0]
         M = _floats(blk.matrix)

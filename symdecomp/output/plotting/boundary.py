@@ -17,6 +17,9 @@ The numbers behind the figures come from the package; nothing is typed in:
   refinement of the whole mesh (:func:`symdecomp.schemes.sharp_refinement.refine_tagged`).
 * :func:`subdominant_eigenvalues`: the two largest eigenvalues below the dominant 1 of the exact 1-ring matrix.
 
+The figures: :func:`sector_polylines_figure` (part 1 of notebook 10), :func:`corner_maps_figure` (part 2),
+:func:`subdominant_figure` (part 3).
+
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> [round(m.value_float, 6) for m in sector_modes(catmull_clark(), 2)[:3]]   # the crease block: the B-spline's 1, 1/2, 1/4
 [1.0, 0.5, 0.25]
@@ -39,7 +42,11 @@ from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 from symdecomp.schemes.sharp_refinement import refine_tagged
 from symdecomp.validate import cached, check_int, check_levels, check_type
 
-__all__ = ["SectorMode", "sector_modes", "sector_polylines_figure"]
+__all__ = [
+    "SectorMode", "sector_modes", "mode_residual", "sector_polylines_figure",
+    "SectorMap", "sector_characteristic_map", "corner_maps_figure",
+    "SECTOR_KINDS", "subdominant_eigenvalues", "subdominant_figure",
+]
 
 #: Digits of the numeric evaluation of exact entries (the figures need a few; the margin keeps cancellations away).
 _DIGITS = 30
@@ -112,7 +119,7 @@ def _crease_modes(scheme: Scheme, vertex, d) -> list[SectorMode]:
     for lam, vector, _ in crease_eigenvectors(scheme, vertex):
         exact.setdefault(lam, []).append(vector)
     modes = []
-    for lam, vectors in exact.items():
+    for lam, vectors in sorted(exact.items(), key=lambda item: -float(sp.N(item[0], _DIGITS))):
         if all(v is not None for v in vectors):
             modes += [SectorMode("crease", None, lam, _normalised(_floats(v).ravel())) for v in vectors]
             continue

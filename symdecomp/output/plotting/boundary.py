@@ -381,11 +381,12 @@ def corner_maps_figure(schemes, corners=((2, sp.pi / 2), (3, 3 * sp.pi / 2)), *,
 # where the standard rules fail: the subdominant eigenvalues over k
 
 
+@cached(maxsize=512, scheme=check_scheme, vertex=_sharp_vertex)
 def subdominant_eigenvalues(scheme: Scheme, vertex) -> tuple[float, float]:
     """``(lambda_1, lambda_2)``: the two largest eigenvalues below the dominant 1 of the exact 1-ring matrix of ``vertex``
     (a SharpVertex; :func:`~symdecomp.analysis.mirror.sector_matrix`, the 1-ring matrix assembled from the stencils,
     equal to :func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`'s; evaluated in floats; with multiplicity)."""
-    ev = np.linalg.eigvals(_floats(sector_matrix(check_scheme(scheme), _sharp_vertex(vertex))))
+    ev = np.linalg.eigvals(_floats(sector_matrix(scheme, vertex)))
     values = sorted((float(x.real) for x in ev), reverse=True)
     if abs(values[0] - 1) > 1e-9:
         raise NotApplicableError(f"scheme {scheme.name!r}: the sector's largest eigenvalue is {values[0]}, not 1")

@@ -104,7 +104,9 @@ nothing else.
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
                    vertices (``plotting.meshes``), Reif's test
-                   (``plotting.characteristic``), the tuning region (``plotting.tuning``),
+                   (``plotting.characteristic``), the tuning region (``plotting.tuning``), boundary, crease and
+                   corner vertices: the mirror decomposition's polylines, a sector's characteristic map, the
+                   subdominant eigenvalues over k (``plotting.boundary``),
                    Stam's evaluation (``plotting.evaldata``), the second-order height fields and the
                    shape chart (``plotting.shape``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about

@@ -33,6 +33,7 @@ from symdecomp.analysis.support_window import window
 from symdecomp.analysis.tuning import eigenvalue_quadratic, ratio_target
 from symdecomp.analysis.tuning_region import tuning_region
 from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError, InvalidTypeError, SymdecompError
+from symdecomp.output.plotting.boundary import sector_modes, subdominant_eigenvalues
 from symdecomp.schemes.box_spline import regular_limit_mask, regular_patch
 from symdecomp.verify.certify import symmetric_functions
 from symdecomp.verify.oracle import toolkit_predictions
@@ -206,6 +207,8 @@ SCHEMES = [
     (sd.certify_sharp, dict(vertex=BOUNDARY)),
     (sd.sector_decomposition, dict(vertex=BOUNDARY)),
     (sd.sector_spectrum, dict(vertex=3)),
+    (sector_modes, dict(vertex=BOUNDARY)),
+    (subdominant_eigenvalues, dict(vertex=BOUNDARY)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

@@ -9,6 +9,6 @@ says how to install it if it is missing.
 The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """
 
-from symdecomp.output.plotting import cbmatrix, characteristic, elliptic, meshes, polygons, tangent, tuning
+from symdecomp.output.plotting import boundary, cbmatrix, characteristic, elliptic, meshes, polygons, tangent, tuning
 
-__all__ = ["polygons", "tangent", "elliptic", "cbmatrix", "characteristic", "meshes", "tuning"]
+__all__ = ["polygons", "tangent", "elliptic", "cbmatrix", "characteristic", "meshes", "tuning", "boundary"]

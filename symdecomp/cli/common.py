@@ -298,7 +298,8 @@ def check_scheme_valences(args) -> None:
     """
     scheme = getattr(args, "scheme", None)
     valences = getattr(args, "valences", None) or getattr(args, "n", None)
-    if given(args, "sharpness") and not (given(args, "crease") or given(args, "dart")):
+    sharp_options = hasattr(args, "crease") or hasattr(args, "dart")  # oracle's --sharpness is a list of its own
+    if sharp_options and given(args, "sharpness") and not (given(args, "crease") or given(args, "dart")):
         raise InvalidInputError("--sharpness: the sharpness of a crease's edges; give it with --crease K2 or --dart (boundary "
                                 "edges are infinitely sharp)")
     if not isinstance(scheme, Scheme) or valences is None or sharp_given(args):

@@ -199,6 +199,7 @@ SCHEMES = [
     (sd.limit_frame, dict(mesh=CUBE, vertex=0)),
     (sd.sharp_subdivision_matrix, dict(vertex=BOUNDARY)),
     (sd.exact_sharp_matrix, dict(vertex=BOUNDARY)),
+    (sd.sharp_patch_data, dict(vertex=BOUNDARY)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

@@ -11,9 +11,10 @@ net when, for the 2-ring subdivision matrix of the sector (:mod:`.c1_sharp_spect
    its own eigenvector, and strictly larger in modulus than all others (at a boundary they may differ);
 2. *the tangent of the boundary curve lies in the tangent plane*: the boundary points form an invariant
    curve (the crease rules, a cubic B-spline: eigenvalues ``1, 1/2, 1/4, 1/8``) and its tangent eigenvalue
-   ``1/2`` is ``lambda_1`` or ``lambda_2``. An eigenvector whose eigenvalue is not an eigenvalue of the curve
-   block vanishes on the curve; if both subdominant ones do, the characteristic map sends the boundary to
-   ``O``: not C1 (Standard rules: this is how they fail at boundary vertices with many faces);
+   ``1/2`` is ``lambda_1`` or ``lambda_2`` (at a corner the two boundary curves have a tangent each, and both
+   must be). An eigenvector whose eigenvalue is not an eigenvalue of the curve block vanishes on the curve; if
+   the subdominant ones miss a tangent, the tangent plane cannot hold that boundary curve: not C1 (this is how
+   the standard rules fail at boundary vertices and corners with many faces);
 3. the characteristic map ``chi`` (the spline ring of the two eigenvectors over the sector's ``k`` faces,
    with the phantom points of :mod:`symdecomp.schemes.sector_patch` at the sharp rays) is regular: its
    Jacobian has one strict sign on the ring (Bernstein-Bezier coefficients in Arb, de Casteljau subdivision,
@@ -26,8 +27,15 @@ net when, for the 2-ring subdivision matrix of the sector (:mod:`.c1_sharp_spect
 *What was checked*: the titles, venues and abstracts of the three papers (Biermann-Grundel-Zorin: "general
 necessary and sufficient conditions for C1-continuity of subdivision schemes for surfaces with boundary");
 BLZ's abstract (the standard rules lack smoothness at extraordinary boundary vertices and fold near concave
-corners). The conditions above are written from Zorin's interior conditions and these statements, not
-copied from the papers' theorems; condition 5 is BLZ's corner-type requirement as their examples state it.
+corners; Zorin 2000 as in :mod:`.c1`; Biermann-Grundel-Zorin: Constr. Approx. 42, 1-29). The conditions
+above are written from Zorin's interior conditions and these statements, not copied from the papers'
+theorems; condition 5 is BLZ's corner-type requirement as their examples state it. The papers' valence
+tables could not be read, so the verdicts (docs, guide page on ``c1``) are compared with the abstracts'
+statements only: the standard rules fail at boundary vertices with many faces (here Catmull-Clark from
+``k = 5``, Loop from ``k = 7``, with ``k = 4`` and ``k = 6`` undecided: ``lambda_2 = lambda_3 = 1/2`` exactly)
+and at concave corners; BLZ's near-edge rule certifies every boundary ``k`` tried (1 to 16 for both, 32 for Catmull-Clark), but alone (the
+part of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave
+corner C1.
 
 **Injectivity of an open sector** (the argument used here, in place of the interior winding number).
 Let ``K`` be the closed sector minus ``O`` and ``R`` one ring of it (a topological disk bounded by the

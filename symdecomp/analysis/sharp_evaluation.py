@@ -18,7 +18,13 @@ control net is the closed 2-ring of the vertex (``K`` points in
   rules). Sub-patches and their point order are the interior patch's
   (:data:`~symdecomp.schemes.patch.SUBPATCH_CORNERS`, :data:`~symdecomp.schemes.patch.TRIANGLE_SUBPATCHES`);
 * ``limit``: the limit position mask, the exact left eigenvector of ``A`` for the eigenvalue 1
-  (required simple), normalised to sum 1.
+  (required simple), normalised to sum 1;
+* ``spectrum``: the exact eigenstructure of ``A``: its characteristic polynomial factored over Q, each
+  irreducible factor with its multiplicity and the number of independent eigenvectors per root (the
+  rank of ``q(A)``); ``A`` is diagonalisable exactly when the two agree for every factor
+  (:attr:`SharpPatchData.diagonalizable`). It is not: Catmull-Clark boundary ``k = 3..8`` (``1/4`` at odd
+  ``k``, ``1/2`` at ``k = 4, 8``), corners at even ``k`` (``1/2``), Loop boundary ``k = 6`` and corners
+  ``k = 3, 6`` (``1/2``) have Jordan blocks.
 
 The evaluation at ``(u, v) != (0, 0)`` in face ``s``: the level ``n`` and the sub-patch ``j`` with local
 ``(s', t')`` as in the interior (:meth:`~symdecomp.schemes.lattice.Lattice.locate`), then
@@ -77,6 +83,14 @@ class SharpPatchData:
     patches: tuple[tuple[tuple[dict, ...], ...], ...]
     #: The limit position mask (``K`` Fractions, summing to 1).
     limit: tuple[Fraction, ...]
+    #: ``(factor, multiplicity, eigenvectors)``: the characteristic polynomial's irreducible factors over Q
+    #: (integer coefficients, constant term first), their multiplicities and eigenvectors per root.
+    spectrum: tuple[tuple[tuple[int, ...], int, int], ...] = ()
+
+    @property
+    def diagonalizable(self) -> bool:
+        """Whether ``A`` has an eigenvector basis (every factor's eigenvectors equal its multiplicity)."""
+        return all(e == g for _, e, g in self.spectrum)
 
     @property
     def lattice(self) -> Lattice:
@@ -168,7 +182,34 @@ def sharp_patch_data(scheme: Scheme, vertex: SharpVertex) -> SharpPatchData:
                 sub.append({c: a for c, a in row.items() if a != 0})
             face.append(tuple(sub))
         patches.append(tuple(face))
-    return SharpPatchData(scheme.name, vertex, matrix, tuple(patches), limit_mask(matrix, size))
+    return SharpPatchData(scheme.name, vertex, matrix, tuple(patches), limit_mask(matrix, size), exact_spectrum(matrix, size))
+
+
+def exact_spectrum(rows, size: int) -> tuple[tuple[tuple[int, ...], int, int], ...]:
+    """The factored characteristic polynomial of the matrix with sparse ``rows``, with eigenvectors per root (exact).
+
+    A factor ``q`` of multiplicity ``e > 1`` has ``(size - rank q(A)) / deg q`` eigenvectors per root;
+    ``e = 1``: one. Factors sorted by degree, then coefficients (deterministic files).
+    """
+    a = flint.fmpq_mat(size, size)
+    for i, row in enumerate(rows):
+        for c, w in row.items():
+            a[i, c] = flint.fmpq(w.numerator, w.denominator)
+    _, factors = a.charpoly().factor()
+    out = []
+    for q, e in factors:
+        coeffs = tuple(int(c) for c in q.numer().coeffs())
+        if e == 1:
+            out.append((coeffs, 1, 1))
+            continue
+        value = flint.fmpq_mat(size, size)
+        for c in reversed(q.coeffs()):  # Horner: q(A)
+            value = value * a
+            for i in range(size):
+                value[i, i] += c
+        _, rank = value.rref()
+        out.append((coeffs, e, (size - rank) // q.degree()))
+    return tuple(sorted(out, key=lambda f: (len(f[0]), f[0], f[1])))
 
 
 def _basis(lat: Lattice, s, t, ds: int, dt: int) -> list:

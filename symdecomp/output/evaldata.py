@@ -32,13 +32,16 @@ files back.
 
 Boundary and corner patches (JSON only, every number an exact rational ``"p"`` or ``"p/q"``):
 ``{"format": "sharp-patches", "scheme", "lattice", "layout", "vertices": [{"kind", "k", "size",
-"labels", "matrix", "limit", "patches"}]}``, one vertex per line: ``kind`` ``"boundary"`` or
+"labels", "matrix", "limit", "patches", "spectrum", "diagonalizable"}]}``, one vertex per line: ``kind`` ``"boundary"`` or
 ``"corner"``, ``k`` the faces of the open fan, ``labels[size]`` the ``(s, u, v)`` labels of the
 closed 2-ring (the control points, in :meth:`~symdecomp.schemes.sector.SharpVertex.ring_labels`
 order), ``matrix[size]`` the sparse rows ``[[column, weight], ...]`` of the 2-ring's subdivision
 matrix ``A``, ``limit[size]`` the limit position mask, ``patches[s][j]`` (face ``s = 0..k-1``,
 sub-patch ``j = 0, 1, 2``) the sparse rows of the sub-patch's 16 (quads) or 12 (triangles) control
-points over the coarse 2-ring. The evaluation (powers of ``A``, not eigenvectors: ``A`` may be
+points over the coarse 2-ring, ``spectrum`` the characteristic polynomial of ``A`` factored over Q,
+``[{"factor", "multiplicity", "eigenvectors"}]`` (integer coefficients, constant term first; the
+eigenvectors per root), and ``diagonalizable`` whether every factor has as many eigenvectors as its
+multiplicity. The evaluation (powers of ``A``, not eigenvectors: ``A`` may be
 defective) is :mod:`symdecomp.analysis.sharp_evaluation`'s; the ``layout`` string says it in one
 line. :func:`sharp_json_chunks` writes, :func:`read_sharp_json` reads back.
 
@@ -273,6 +276,8 @@ def sharp_entry(data) -> dict:
         "labels": [list(lab) for lab in data.vertex.ring_labels(2)],
         "matrix": _sparse(data.matrix), "limit": [_text(x) for x in data.limit],
         "patches": [[_sparse(sub) for sub in face] for face in data.patches],
+        "spectrum": [{"factor": [str(c) for c in q], "multiplicity": e, "eigenvectors": g} for q, e, g in data.spectrum],
+        "diagonalizable": data.diagonalizable,
     }
 
 
@@ -289,6 +294,13 @@ def _fraction(text) -> Fraction:
     if not isinstance(text, str) or not _RATIONAL.fullmatch(text):
         raise ValueError(f"{str(text)[:40]!r} is not an exact rational p or p/q")
     return Fraction(text)
+
+
+def _integer(text) -> int:
+    x = _fraction(text)
+    if x.denominator != 1:
+        raise ValueError(f"{text!r} is not an integer")
+    return int(x)
 
 
 def _rows(rows, size: int) -> tuple[dict, ...]:
@@ -328,7 +340,12 @@ def read_sharp_json(path) -> dict:
             limit = tuple(_fraction(x) for x in v["limit"])
             if len(patches) != k or any(len(face) != 3 for face in patches) or len(limit) != size:
                 raise ValueError(f"{kind} k = {k}: need {k} faces of 3 sub-patches and {size} mask weights")
-            out[(kind, k)] = SharpPatchData(doc["scheme"], vertex, _rows(v["matrix"], size), patches, limit)
+            spectrum = tuple((tuple(_integer(c) for c in f["factor"]), int(f["multiplicity"]), int(f["eigenvectors"]))
+                             for f in v["spectrum"])
+            data = SharpPatchData(doc["scheme"], vertex, _rows(v["matrix"], size), patches, limit, spectrum)
+            if sum((len(q) - 1) * e for q, e, _ in spectrum) != size or data.diagonalizable is not v["diagonalizable"]:
+                raise ValueError(f"{kind} k = {k}: the spectrum's degrees or diagonalizable do not match")
+            out[(kind, k)] = data
     except (KeyError, TypeError, ValueError, SymdecompError) as exc:
         raise EvalDataFileError(f"{path}: malformed boundary/corner document ({exc})") from None
     return out

@@ -120,5 +120,5 @@ def dyadic_check(scheme: Scheme, vertex: SharpVertex, *, levels=(1, 2, 3), seed:
         got = evaluate(data, s, u, v, coarse)["point"]
         mismatches += got != want
         got_f = evaluate(data, s, float(u), float(v), coarse_f)["point"]
-        error = max(error, max(abs(a - float(b)) for a, b in zip(got_f, want)) / max(1.0, *(abs(float(b)) for b in want)))
+        error = max(error, float(max(abs(a - float(b)) for a, b in zip(got_f, want)) / max(1.0, *(abs(float(b)) for b in want))))
     return {"points": len(cases), "exact_mismatches": mismatches, "float_error": error}

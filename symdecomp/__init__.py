@@ -60,7 +60,8 @@ nothing else.
                    (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
                    vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
-                   ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``); the
+                   ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``), of the patches of a
+                   boundary or corner vertex (``sharp_evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); second-order characteristic maps, the elliptic and hyperbolic
                    height fields on the ring (``second_order``); control nets designed for prescribed
@@ -82,7 +83,7 @@ nothing else.
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
                    by mirror blocks ``c1_sharp_spectrum``); dyadic limit positions for
-                   the patch evaluator (``patch_eval``); the tuning region with Reif's
+                   the patch evaluator (``patch_eval``) and the boundary one (``sharp_patch_eval``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and
                    the artifact indicators (``artifacts``); certified shape at the vertex: the sign
@@ -155,6 +156,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.ellipses": ("ellipse_axes",),
     "symdecomp.analysis.elliptic": ("elliptic_defect_table", "nice_elliptic_conditions"),
     "symdecomp.analysis.evaluation": ("PatchEvaluator",),
+    "symdecomp.analysis.sharp_evaluation": ("SharpPatchData", "sharp_patch_data"),
     "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix"),
     "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
     "symdecomp.analysis.inspection": ("MeshInspection", "VertexInspection", "inspect_mesh", "inspect_vertex"),

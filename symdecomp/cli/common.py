@@ -79,6 +79,7 @@ LIMITS = {
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),
     "report": (MAX_REPORT_VALENCE, "a report's tables grow with every valence (2N + 1 eigenvalues and mask weights) and its "
                "eigen-polygon figure has N panels a row; 3:8 takes about half a minute"),
+    "evaldata --k": (64, "a sharp vertex has at most 64 faces; k = 64 writes about 10 MB of exact rationals"),
     "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 256 bits "
                  "(a run's memory is estimated and checked before it starts)"),
 }
@@ -166,6 +167,21 @@ def valence(limit: str):
         return integer(text, "N", minimum=3, limit=limit, noun="a valence: an integer")
 
     parse.__name__ = "valence"
+    return parse
+
+
+def face_range(option: str, limit: str):
+    """argparse type: ``K`` or an inclusive range ``A:B`` of a sector's faces, ``1 <= A <= B <= LIMITS[limit]``."""
+
+    def parse(text: str) -> list[int]:
+        parts = text.split(":")
+        if len(parts) > 2:
+            raise argparse.ArgumentTypeError(f"expected K or A:B, got {text[:40]!r}")
+        a, b = (integer(x, option, minimum=1, limit=limit) for x in (parts[0], parts[-1]))
+        if b < a:
+            raise argparse.ArgumentTypeError(f"empty range {text!r}: {b} < {a}")
+        return list(range(a, b + 1))
+
     return parse
 
 

@@ -12,13 +12,30 @@ Before any work the memory and time are estimated (:func:`~symdecomp.analysis.ei
 and a request beyond the memory limit is refused in one line naming the estimate.
 ``--json``: a summary for programs (``{"out", "format", "nmax", "bytes", "precision_bits",
 "jordan_valences", "estimate": {"megabytes", "seconds"}}``).
+
+``--boundary --k 1:8`` (or ``--corner``): the exact data of the patches next to a boundary (corner) vertex
+with K faces, K in the range, as JSON of exact rationals (format ``sharp-patches`` in
+:mod:`symdecomp.output.evaldata`; evaluation in :mod:`symdecomp.analysis.sharp_evaluation`). ``--json``:
+``{"out", "format", "scheme", "kind", "k", "bytes", "sizes"}``.
 """
 
 from __future__ import annotations
 
 import sys
 
-from symdecomp.cli.common import Once, add_pool_options, add_scheme_option, digits, flag, given, print_json, progress, valence_range
+from symdecomp.cli.common import (
+    LIMITS,
+    Once,
+    add_pool_options,
+    add_scheme_option,
+    digits,
+    face_range,
+    flag,
+    given,
+    print_json,
+    progress,
+    valence_range,
+)
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import EvalDataFileError, InvalidInputError
 from symdecomp.parallel import pool_size
@@ -33,14 +50,20 @@ def register(sub) -> None:
         description="Write the eigenvalues, inverse eigenvector matrix and sub-patch tables of the (2N+8)-point "
         "patch matrix for valences 3..N, each float64 the correctly rounded value of the exact number "
         "(certified Arb balls), in the layout of the published data file; or as JSON decimal strings. "
-        "With --scheme loop (JSON only): the same for Loop's (N+6)-point patch.",
+        "With --scheme loop (JSON only): the same for Loop's (N+6)-point patch. With --boundary or --corner and "
+        "--k A:B: the exact data (rationals) of the patches next to a boundary or corner vertex with K faces.",
     )
-    p.add_argument("--n", type=valence_range("evaldata"), action=Once, required=True, metavar="3:N",
-                   help="valences 3..N (the binary file starts at 3)")
+    p.add_argument("--n", type=valence_range("evaldata"), action=Once, metavar="3:N",
+                   help="valences 3..N (the binary file starts at 3); or a sharp vertex with --boundary or --corner")
+    flag(p, "--boundary", help="the patches of boundary vertices with K faces (--k): exact JSON, format sharp-patches")
+    flag(p, "--corner", help="the patches of corner vertices (interpolated) with K faces (--k): exact JSON")
+    p.add_argument("--k", dest="faces", type=face_range("--k", "evaldata --k"), action=Once, metavar="A:B",
+                   help=f"faces of the boundary or corner vertex: a range A:B or a single K (1 to {LIMITS['evaldata --k'][0]})")
     p.add_argument("--out", action=Once, required=True, metavar="FILE",
                    help="output file, checked before the work starts (a regular file is replaced atomically; a device or a "
                    "FIFO is written in place; a symbolic link is followed)")
-    p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary", help="binary (default) or json")
+    p.add_argument("--format", choices=("binary", "json"), action=Once, default="binary",
+                   help="binary (default) or json (--boundary and --corner: json only)")
     p.add_argument("--digits", type=digits(minimum=FLOAT_DIGITS), action=Once, default=FLOAT_DIGITS,
                    help="JSON numbers: 17 (default) = the correctly rounded float64, shortest text that reads back as it; "
                    "D > 17 = the exact value correctly rounded to D significant digits (slower, one process)")
@@ -70,10 +93,63 @@ def rounded_eigendata(*args, **kwargs):
     return rounded_eigendata(*args, **kwargs)
 
 
+def _sharp_kind(args) -> str | None:
+    """``"boundary"``, ``"corner"`` or ``None`` (interior valences, --n), or a one-line error for a bad mix."""
+    kinds = [name for name in ("boundary", "corner") if given(args, name)]
+    if len(kinds) > 1:
+        raise InvalidInputError("--boundary and --corner cannot be used together: give one kind of vertex")
+    if not kinds:
+        if given(args, "faces"):
+            raise InvalidInputError("--k needs --boundary or --corner")
+        if not given(args, "n"):
+            raise InvalidInputError("give --n 3:N (interior vertices), or --boundary/--corner with --k A:B")
+        return None
+    if given(args, "n"):
+        raise InvalidInputError(f"--n (interior vertices) and --{kinds[0]} cannot be used together: give one kind of vertex")
+    if not given(args, "faces"):
+        raise InvalidInputError(f"--{kinds[0]} needs --k A:B, the faces of the vertex")
+    for option in ("digits", "jobs", "executor"):
+        if given(args, option):
+            raise InvalidInputError(f"--{option} does not apply to --{kinds[0]}: its data are exact rationals, computed "
+                                    "in this process")
+    if args.format == "binary" and given(args, "format"):
+        raise EvalDataFileError(f"--format binary: the binary layout is Stam's interior file; --{kinds[0]} writes json")
+    return kinds[0]
+
+
+def _run_sharp(args, kind: str) -> int:
+    from symdecomp.analysis.sharp_evaluation import sharp_patch_data
+    from symdecomp.output.evaldata import SHARP_FORMAT, sharp_entry, sharp_json_chunks
+    from symdecomp.schemes.sector import SharpVertex
+
+    scheme, ks = args.scheme, args.faces
+    check_output_file(args.out)
+    show = sys.stderr.isatty() and not args.json
+    sizes = []
+
+    def entries():
+        for k in progress(ks, len(ks), "evaldata", enabled=show):
+            data = sharp_patch_data(scheme, getattr(SharpVertex, kind)(k, scheme.lattice))
+            sizes.append(data.size)
+            yield sharp_entry(data)
+
+    size = write_output_file(args.out, sharp_json_chunks(entries(), scheme.name, scheme.lattice.name))
+    if args.json:
+        print_json({"out": args.out, "format": SHARP_FORMAT, "scheme": scheme.name, "kind": kind, "k": ks, "bytes": size,
+                    "sizes": sizes})
+    else:
+        print(f"wrote {args.out}: {SHARP_FORMAT} ({scheme.name}), {kind} vertices with K = {ks[0]}..{ks[-1]} faces, "
+              f"{size} bytes (exact rationals; control points: the closed 2-ring, {sizes[0]}..{sizes[-1]} points)")
+    return 0
+
+
 def run(args) -> int:
     from symdecomp.analysis.eigendata import check_eigendata_cost
     from symdecomp.output.evaldata import binary_chunks, decimal_valence, json_chunks, json_valence
 
+    kind = _sharp_kind(args)
+    if kind is not None:
+        return _run_sharp(args, kind)
     _refuse_ignored(args)
     ns = args.n
     if ns[0] != 3:

@@ -30,6 +30,21 @@ not diagonalizable: Loop at ``N = 3``). Control points, sub-patches and the eval
 ``layout`` string says the same in one line. :func:`read_binary` and :func:`read_json` read the
 files back.
 
+Boundary and corner patches (JSON only, every number an exact rational ``"p"`` or ``"p/q"``):
+``{"format": "sharp-patches", "scheme", "lattice", "layout", "vertices": [{"kind", "k", "size",
+"labels", "matrix", "limit", "patches", "spectrum", "diagonalizable"}]}``, one vertex per line: ``kind`` ``"boundary"`` or
+``"corner"``, ``k`` the faces of the open fan, ``labels[size]`` the ``(s, u, v)`` labels of the
+closed 2-ring (the control points, in :meth:`~symdecomp.schemes.sector.SharpVertex.ring_labels`
+order), ``matrix[size]`` the sparse rows ``[[column, weight], ...]`` of the 2-ring's subdivision
+matrix ``A``, ``limit[size]`` the limit position mask, ``patches[s][j]`` (face ``s = 0..k-1``,
+sub-patch ``j = 0, 1, 2``) the sparse rows of the sub-patch's 16 (quads) or 12 (triangles) control
+points over the coarse 2-ring, ``spectrum`` the characteristic polynomial of ``A`` factored over Q,
+``[{"factor", "multiplicity", "eigenvectors"}]`` (integer coefficients, constant term first; the
+eigenvectors per root), and ``diagonalizable`` whether every factor has as many eigenvectors as its
+multiplicity. The evaluation (powers of ``A``, not eigenvectors: ``A`` may be
+defective) is :mod:`symdecomp.analysis.sharp_evaluation`'s; the ``layout`` string says it in one
+line. :func:`sharp_json_chunks` writes, :func:`read_sharp_json` reads back.
+
 The files are streamed valence by valence (:func:`binary_chunks`, :func:`json_chunks`: nothing
 holds the whole file) through :mod:`symdecomp.cli.files` (checked first, replaced atomically,
 devices and FIFOs written in place).
@@ -38,20 +53,22 @@ devices and FIFOs written in place).
 from __future__ import annotations
 
 import json
+import re
 import struct
 from collections.abc import Iterable, Iterator
+from fractions import Fraction
 
 import flint
 import numpy as np
 
 from symdecomp.algebra.rounding import round_ball_decimal
 from symdecomp.analysis.eigendata import ZERO_PREC, PatchEigenData, RoundedEigenData, patch_eigendata
-from symdecomp.errors import EvalDataFileError, PrecisionError
+from symdecomp.errors import EvalDataFileError, PrecisionError, SymdecompError
 from symdecomp.validate import FLOAT_DIGITS
 
 __all__ = [
     "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "read_binary", "json_chunks",
-    "json_valence", "decimal_valence", "read_json",
+    "json_valence", "decimal_valence", "read_json", "sharp_entry", "sharp_json_chunks", "read_sharp_json",
 ]
 
 
@@ -231,3 +248,104 @@ def read_json(path) -> dict[int, RoundedEigenData]:
     return out
 
 
+
+
+SHARP_FORMAT = "sharp-patches"
+#: The one-line layout note in a boundary/corner document.
+SHARP_LAYOUT = (
+    "control points C: the closed 2-ring in labels order (O, a_0..a_k, [b_0..b_{k-1}], then (s, u, v) ring 2); "
+    "face s has u along O->a_s, v along O->a_{s+1}; (u, v) != (0, 0): n = level, (x, y) = 2^n (u, v), sub-patch j "
+    "and local (s', t') as the interior patch; point = b(s', t') . patches[s][j] . A^(n-1) C with A = matrix "
+    "(b: bicubic B-spline l = a + 4 b, or the 12 box-spline functions); (0, 0): limit . C"
+)
+_RATIONAL = re.compile(r"-?[0-9]{1,4000}(/[0-9]{1,4000})?", re.ASCII)
+
+
+def _text(x) -> str:
+    return str(x)
+
+
+def _sparse(rows) -> list:
+    return [[[c, _text(w)] for c, w in sorted(row.items())] for row in rows]
+
+
+def sharp_entry(data) -> dict:
+    """One vertex of the boundary/corner document from :class:`~symdecomp.analysis.sharp_evaluation.SharpPatchData`."""
+    return {
+        "kind": data.kind, "k": data.faces, "size": data.size,
+        "labels": [list(lab) for lab in data.vertex.ring_labels(2)],
+        "matrix": _sparse(data.matrix), "limit": [_text(x) for x in data.limit],
+        "patches": [[_sparse(sub) for sub in face] for face in data.patches],
+        "spectrum": [{"factor": [str(c) for c in q], "multiplicity": e, "eigenvectors": g} for q, e, g in data.spectrum],
+        "diagonalizable": data.diagonalizable,
+    }
+
+
+def sharp_json_chunks(entries: Iterable[dict], scheme: str, lattice: str) -> Iterator[str]:
+    """The boundary/corner JSON document piece by piece, one vertex per line (:func:`sharp_entry` entries)."""
+    head = {"format": SHARP_FORMAT, "scheme": scheme, "lattice": lattice, "layout": SHARP_LAYOUT}
+    yield json.dumps(head)[:-1] + ', "vertices": [\n'
+    for i, entry in enumerate(entries):
+        yield ("" if i == 0 else ",\n") + json.dumps(entry, separators=(",", ":"))
+    yield "\n]}\n"
+
+
+def _fraction(text) -> Fraction:
+    if not isinstance(text, str) or not _RATIONAL.fullmatch(text):
+        raise ValueError(f"{str(text)[:40]!r} is not an exact rational p or p/q")
+    return Fraction(text)
+
+
+def _integer(text) -> int:
+    x = _fraction(text)
+    if x.denominator != 1:
+        raise ValueError(f"{text!r} is not an integer")
+    return int(x)
+
+
+def _rows(rows, size: int) -> tuple[dict, ...]:
+    out = []
+    for row in rows:
+        entry = {}
+        for c, w in row:
+            if isinstance(c, bool) or not isinstance(c, int) or not 0 <= c < size:
+                raise ValueError(f"column {str(c)[:20]} outside 0..{size - 1}")
+            entry[c] = _fraction(w)
+        out.append(entry)
+    return tuple(out)
+
+
+def read_sharp_json(path) -> dict:
+    """Read a boundary/corner document back: ``(kind, k)`` -> :class:`~symdecomp.analysis.sharp_evaluation.SharpPatchData`."""
+    from symdecomp.analysis.sharp_evaluation import SharpPatchData
+    from symdecomp.schemes.sector import SharpVertex
+
+    try:
+        with open(path, encoding="utf-8") as fh:
+            doc = json.load(fh)
+    except (OSError, ValueError) as exc:
+        raise EvalDataFileError(f"cannot read {path}: {exc}") from None
+    if not isinstance(doc, dict) or doc.get("format") != SHARP_FORMAT:
+        raise EvalDataFileError(f"{path}: not a boundary/corner eigen-data document (format {SHARP_FORMAT!r})")
+    out = {}
+    try:
+        for v in doc["vertices"]:
+            kind, k, size = v["kind"], int(v["k"]), int(v["size"])
+            if kind not in ("boundary", "corner"):
+                raise ValueError(f"kind {str(kind)[:20]!r}")
+            vertex = getattr(SharpVertex, kind)(k, doc["lattice"])
+            if [tuple(lab) for lab in v["labels"]] != list(vertex.ring_labels(2)) or len(v["matrix"]) != size:
+                raise ValueError(f"{kind} k = {k}: labels or matrix do not match the 2-ring")
+            patches = tuple(tuple(_rows(sub, size) for sub in face) for face in v["patches"])
+            limit = tuple(_fraction(x) for x in v["limit"])
+            if len(patches) != k or any(len(face) != 3 for face in patches) or len(limit) != size:
+                raise ValueError(f"{kind} k = {k}: need {k} faces of 3 sub-patches and {size} mask weights")
+            spectrum = tuple((tuple(_integer(c) for c in f["factor"]), int(f["multiplicity"]), int(f["eigenvectors"]))
+                             for f in v["spectrum"])
+            data = SharpPatchData(doc["scheme"], vertex, _rows(v["matrix"], size), patches, limit, spectrum)
+            if sum((len(q) - 1) * e for q, e, _ in spectrum) != size or data.diagonalizable is not v["diagonalizable"]:
+                raise ValueError(f"{kind} k = {k}: the spectrum's degrees or diagonalizable do not match")
+            out[(kind, k)] = data
+    except (KeyError, TypeError, ValueError, SymdecompError) as exc:
+        raise EvalDataFileError(f"{path}: malformed boundary/corner document ({exc})") from None
+    return out

@@ -209,6 +209,7 @@ SCHEMES = [
     (sd.sector_spectrum, dict(vertex=3)),
     (sector_modes, dict(vertex=BOUNDARY)),
     (subdominant_eigenvalues, dict(vertex=BOUNDARY)),
+    (sd.sharp_patch_data, dict(vertex=BOUNDARY)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

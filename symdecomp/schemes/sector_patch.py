@@ -44,7 +44,7 @@ import sympy as sp
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.lattice import QUAD, Lattice, lattice
 
-__all__ = ["ORIGIN", "sector_point", "sector_net", "phantom_reproduction", "check_spline_sharp_rules"]
+__all__ = ["ORIGIN", "sector_point", "sector_net", "phantom_reproduction", "check_spline_sharp_rules", "modified_edges"]
 
 #: The label of the sharp vertex ``O`` itself.
 ORIGIN = (0, 0, 0)
@@ -149,6 +149,26 @@ def check_spline_sharp_rules(rules, owner: str = "scheme") -> None:
             f"{owner}: the crease rules {tuple(str(w) for w in have)} (vertex centre, vertex end, edge) are not the cubic "
             "B-spline's (3/4, 1/8, 1/2), so the regular patches at the boundary are not splines with phantom points")
 
+
+
+def modified_edges(scheme, vertex, k: int) -> str | None:
+    """Why a sector's regular patches next to ``O`` are not splines of their control points, or ``None``.
+
+    A near-edge rule (Biermann-Levin-Zorin's) that differs from the smooth edge rule in a sector of ``k`` faces
+    makes every level's points next to ``O`` by other weights than the spline's, so a patch whose refinement reads
+    them (the ring of sub-patches at ``O``) is not the spline of its control points. At the regular boundary
+    (``theta = pi/2`` on quads) the rules agree and the patches are splines.
+    """
+    theta = (vertex.angle if vertex.angle is not None else sp.pi) / k
+    near = scheme.sharp.near_edge(theta, k)
+    if near is None or k < 2:  # one face: no smooth edge at O
+        return None
+    smooth = (scheme.edge_rule.center, dict(scheme.edge_rule.a).get(0, sp.Integer(0)))
+    if all(sp.simplify(a - b) == 0 for a, b in zip(near, smooth)):
+        return None
+    return (f"the near-edge rule ({near[0]}, {near[1]}) differs from the smooth edge rule ({smooth[0]}, {smooth[1]}) at "
+            f"k = {k}: it makes the points next to O at every level, so the ring's patches there are not splines of their "
+            "control points (a ring past the modified edges, from the 3-ring, would be; not implemented)")
 
 def _strip(lat: Lattice):
     """A strip of the lattice, ``|x| <= 4``, rows ``y = -1..3``, symbolic values at ``y >= 0`` and phantoms at ``y = -1``."""

@@ -33,9 +33,11 @@ theorems; condition 5 is BLZ's corner-type requirement as their examples state i
 tables could not be read, so the verdicts (docs, guide page on ``c1``) are compared with the abstracts'
 statements only: the standard rules fail at boundary vertices with many faces (here Catmull-Clark from
 ``k = 5``, Loop from ``k = 7``, with ``k = 4`` and ``k = 6`` undecided: ``lambda_2 = lambda_3 = 1/2`` exactly)
-and at concave corners; BLZ's near-edge rule certifies every boundary ``k`` tried (1 to 16 for both, 32 for Catmull-Clark), but alone (the
-part of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave
-corner C1.
+and at concave corners; with BLZ's near-edge rule the spectral conditions hold at every boundary ``k`` tried (1 to 16),
+but the characteristic map is certified only where that rule is the smooth one (``k = 1``, the regular boundary): elsewhere
+it makes the points next to ``O`` at every level, so the ring's patches there are not splines
+(:func:`~symdecomp.schemes.sector_patch.modified_edges`) and the verdict is ``undecided`` with that reason. Alone (the part
+of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave corner C1.
 
 **Injectivity of an open sector** (the argument used here, in place of the interior winding number).
 Let ``K`` be the closed sector minus ``O`` and ``R`` one ring of it (a topological disk bounded by the
@@ -86,7 +88,7 @@ from symdecomp.schemes.box_spline import DEGREE
 from symdecomp.schemes.lattice import QUAD
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, sector_net
+from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, modified_edges, sector_net
 from symdecomp.validate import check_bits, check_depth, check_type
 from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net, triangle_jacobian_net
 from symdecomp.verify.c1 import C1Result, box_nets, c1_test, place_text
@@ -359,6 +361,8 @@ def _sector_test(scheme, vertex, sector: int, max_depth: int) -> _Sector:
         return _Sector(spectral.status, spectral.reason, spectral, lambdas)
     if tangent:
         return _Sector(tangent[0], tangent[1], spectral, lambdas)
+    if (why := modified_edges(scheme, vertex, sm.k)) is not None:  # the spectral conditions hold; the map is not certified
+        return _Sector(C1Verdict.UNDECIDED, f"{spectral.reason}; the characteristic map is not certified: {why}", spectral, lambdas)
     chi, dirs = _chi(sm, picks)
     if chi is None:
         return _Sector(C1Verdict.UNDECIDED, "an eigenvector is not certified", spectral, lambdas)

@@ -17,11 +17,14 @@ def test_boundary_range_prints_one_line_per_k(capsys):
 
 
 def test_blz_scheme_file_json(capsys):
-    assert main(["c1", "--scheme", "loop-blz", "--boundary", "--k", "6:7", "--json"]) == 0
+    assert main(["c1", "--scheme", "loop-blz", "--boundary", "--k", "3:4", "--json"]) == 1
     data = json.loads(capsys.readouterr().out)
-    assert [d["vertex"] for d in data] == ["boundary k = 6", "boundary k = 7"]
-    assert all(d["verdict"] == "c1" and d["lambdas"] == pytest.approx([0.5, 0.5]) for d in data)
-    assert all(d["jacobian_lower_bound"] > 0 and d["opening_over_pi"] == pytest.approx(1.0) for d in data)
+    assert [d["vertex"] for d in data] == ["boundary k = 3", "boundary k = 4"]
+    assert all(d["lambdas"] == pytest.approx([0.5, 0.5]) for d in data)
+    # k = 3 is Loop's regular boundary, where BLZ's rule is Loop's: certified; at k = 4 the modified edges make the
+    # ring's patches other than splines, so the map is not certified (the spectral conditions are)
+    assert data[0]["verdict"] == "c1" and data[0]["jacobian_lower_bound"] > 0 and data[0]["opening_over_pi"] == pytest.approx(1.0)
+    assert data[1]["verdict"] == "undecided" and "not splines" in data[1]["reason"]
 
 
 def test_a_user_scheme_file_with_sharp_rules(tmp_path, capsys):
@@ -30,8 +33,9 @@ def test_a_user_scheme_file_with_sharp_rules(tmp_path, capsys):
     path.write_text('name = "mine"\nmesh = "triangle"\n[edge]\nO = "3/8"\na = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }\n'
                     '[vertex]\nbeta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"\n'
                     '[sharp]\nnear_edge_centre = "1/4 + cos(theta_k)/4"\nnear_edge_end = "1/2 - cos(theta_k)/4"\n')
-    assert main(["c1", "--scheme", str(path), "--boundary", "--k", "8"]) == 0
-    assert "boundary k = 8: C1 certified" in capsys.readouterr().out
+    assert main(["c1", "--scheme", str(path), "--boundary", "--k", "8"]) == 1
+    out = capsys.readouterr().out
+    assert "boundary k = 8: undecided: lambda_1 = 0.500000, lambda_2 = 0.500000" in out and "not splines" in out
 
 
 def test_crease_and_corner(capsys):

@@ -77,9 +77,13 @@ def blz(lattice):
 
 def _check_blz(scheme, k):
     r = c1_sharp_test(scheme, SharpVertex.boundary(k, scheme.lattice))
-    assert r.verdict is C1Verdict.C1, (k, r.reason)
     assert all(abs(x - 0.5) < 1e-12 for x in r.lambdas)  # BLZ: the sine mode at 1/2, with the curve's tangent
-    assert r.spectral.gap > 0 and r.jacobian_lower_bound > 0
+    assert r.spectral.gap > 0
+    regular = k == 1 or (k, scheme.lattice.name) in ((2, "quad"), (3, "triangle"))  # no smooth edge at O, or BLZ's = the smooth rule
+    if regular:
+        assert r.verdict is C1Verdict.C1 and r.jacobian_lower_bound > 0, (k, r.reason)
+    else:  # the spectral conditions hold, but the ring's patches next to the modified edges are not splines: no map certified
+        assert r.verdict is C1Verdict.UNDECIDED and "are not splines of their control points" in r.reason, (k, r.reason)
 
 
 @pytest.mark.parametrize("lattice", ["quad", "triangle"])

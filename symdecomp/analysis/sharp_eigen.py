@@ -88,7 +88,7 @@ def crease_points(vertex) -> tuple[int, ...]:
 
 
 def _support(S: flint.fmpq_mat, i: int) -> set[int]:
-    return {j for j in range(S.ncols()) if S[i, j] != 0}
+    return {j for j in range(S.ncols()) if S[i, j]}
 
 
 def matrix_parts(S: flint.fmpq_mat, seeds: Sequence[int] = (0,)) -> tuple[MatrixPart, ...]:

@@ -36,7 +36,8 @@ from symdecomp.algebra.number_field import FieldElement, element_ball
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.errors import NotApplicableError, PrecisionError
 
-__all__ = ["affine_in", "field_of", "FieldMatrix", "field_charpoly", "norm_charpoly", "field_roots", "rational_left_eigenspace"]
+__all__ = ["affine_in", "field_of", "FieldMatrix", "field_charpoly", "norm_charpoly", "field_roots", "rational_left_eigenspace",
+           "poly_mul", "specialize"]
 
 
 def affine_in(e, weight) -> tuple[sp.Rational, sp.Rational] | None:
@@ -284,3 +285,28 @@ def rational_left_eigenspace(M: FieldMatrix, value, order: Sequence[int]) -> lis
             v[pc] = _const(0, mod) - A[i][fc]
         basis.append(v)
     return basis
+
+
+def poly_mul(a: Sequence[FieldElement], b: Sequence[FieldElement]) -> list[FieldElement]:
+    """The product of two polynomials in ``K[x]`` (coefficient lists, constant term first)."""
+    if not a or not b:
+        return []
+    zero = FieldElement(flint.fmpq_poly([]), a[0].modulus)
+    out = [zero] * (len(a) + len(b) - 1)
+    for i, x in enumerate(a):
+        for j, y in enumerate(b):
+            out[i + j] = out[i + j] + x * y
+    return out
+
+
+def specialize(poly: sp.Poly, value: FieldElement) -> list[FieldElement]:
+    """A rational polynomial in ``(x, d)`` as a polynomial in ``K[x]`` at ``d = value`` (coefficients from ``x^0`` up)."""
+    x, d = poly.gens
+    mod = value.modulus
+    out = [FieldElement(flint.fmpq_poly([]), mod) for _ in range(poly.degree(x) + 1)]
+    for (i, j), c in poly.terms():
+        term = FieldElement(flint.fmpq_poly([to_fmpq(sp.Rational(c))]), mod)
+        for _ in range(j):
+            term = term * value
+        out[i] = out[i] + term
+    return out

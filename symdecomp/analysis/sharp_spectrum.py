@@ -148,7 +148,7 @@ def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20) 
 
 def field_name(S) -> str:
     """``"Q"`` for a rational matrix, else its entries' field, e.g. ``"Q(cos(pi/5))"`` (``"Q(w), w = ..."`` otherwise)."""
-    if isinstance(S, flint.fmpq_mat):
+    if isinstance(S, flint.fmpq_mat) or S.modulus.degree() == 1:
         return "Q"
     atoms = S.weight.atoms(sp.cos)
     if len(atoms) == 1:

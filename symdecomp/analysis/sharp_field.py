@@ -46,16 +46,17 @@ def sharp_matrix(scheme, vertex, *, level: int = 0):
     try:
         return exact_sharp_matrix(scheme, vertex, level=level)
     except NotApplicableError as refused:
-        weights = {w for w in (near_weight(scheme, vertex, k) for k in set(vertex.sectors)) if w is not None}
+        irrational = sorted(k for k in set(vertex.sectors) if near_weight(scheme, vertex, k) is not None)
+        weights = {near_weight(scheme, vertex, k) for k in irrational}
         if len(weights) != 1:
-            raise NotApplicableError(f"{refused}; its entries lie in a field of degree > 1 over Q(cos(pi/k)) for no "
-                                     "single k (sectors of different sizes): out of reach") from None
-        (weight,) = weights
+            fields = ", ".join(f"cos(pi/{k})" for k in irrational)
+            raise NotApplicableError(f"scheme {scheme.name!r}: the sharp matrix's entries lie in Q({fields}) (sectors of "
+                                     f"{' and '.join(map(str, irrational))} faces), beyond one field Q(cos(pi/k))") from None
         S = sharp_subdivision_matrix(scheme, vertex, level=level)
         try:
-            return FieldMatrix.from_sympy(S.tolist(), weight)
+            return FieldMatrix.from_sympy(S.tolist(), weights.pop())
         except NotApplicableError as exc:
-            raise NotApplicableError(f"{refused}; {exc}") from None
+            raise NotApplicableError(f"{str(refused).split('; use ')[0]}, and {exc}") from None
 
 
 def field_part_eigenvalues(M: FieldMatrix, parts, *, prec: int = 256) -> list[SharpEigenvalue]:

@@ -83,6 +83,10 @@ def _distinct_values(chi: flint.fmpq_poly, digits: int) -> tuple[int, tuple[int,
     return len(roots), tuple(e for _, e in roots), tuple(acb_text(r, digits) for r, _ in roots)
 
 
+def _is_dart(vertex) -> bool:
+    return vertex.closed and len(vertex.sectors) == 1
+
+
 def certify_sharp(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCertificate:
     """Prove (or refute, exactly) that the mirror decomposition's blocks are the spectrum of the vertex's matrix.
 
@@ -95,7 +99,7 @@ def certify_sharp(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCertifica
     from symdecomp.schemes.sector import sharp_subdivision_matrix
 
     scheme, digits = check_scheme(scheme), check_digits(digits)
-    reads_angle = scheme.sharp is not None and scheme.sharp.near_edge_centre is not None
+    reads_angle = scheme.sharp is not None and scheme.sharp.near_edge_centre is not None and not _is_dart(vertex)
     if reads_angle or not isinstance(sharp_matrix(scheme, vertex), flint.fmpq_mat):
         return certify_sharp_field(scheme, vertex, digits=digits)
     S = sp.Matrix(sharp_subdivision_matrix(scheme, vertex))

@@ -91,7 +91,7 @@ class FieldMatrix:
                     raise NotApplicableError(f"entry ({r}, {c}) = {e} is not p + q*({weight}) with rational p, q")
                 line.append(FieldElement(flint.fmpq_poly([to_fmpq(pq[0]), to_fmpq(pq[1])]) % modulus, modulus))
             out.append(tuple(line))
-        return cls(tuple(out), modulus, sp.sympify(weight))
+        return cls(tuple(out), modulus, sp.sympify(weight, strict=True))
 
     def nrows(self) -> int:
         return len(self.rows)

@@ -23,6 +23,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import sharp_subdivision_matrix
 
 CC, LOOP = load_scheme("catmull-clark-blz"), load_scheme("loop-blz")
+SLOW = pytest.mark.slow
 
 
 def _det(scheme, vertex) -> mpmath.mpf:
@@ -32,7 +33,7 @@ def _det(scheme, vertex) -> mpmath.mpf:
 
 
 @pytest.mark.parametrize("scheme", [CC, LOOP], ids=["cc", "loop"])
-@pytest.mark.parametrize("k", range(3, 9))
+@pytest.mark.parametrize("k", [3, 4, 5, 6, pytest.param(7, marks=SLOW), pytest.param(8, marks=SLOW)])
 def test_half_has_the_multiplicity_of_the_blocks_and_the_product_is_the_determinant(scheme, k):
     vertex = sd.SharpVertex.boundary(k, scheme.lattice)
     s = sharp_spectrum(scheme, vertex, digits=40)
@@ -78,7 +79,7 @@ def _residual(S: FieldMatrix, mask) -> list:
 
 
 @pytest.mark.parametrize("scheme", [CC, LOOP], ids=["cc", "loop"])
-@pytest.mark.parametrize("k", [4, 5, 7])
+@pytest.mark.parametrize("k", [4, 5, pytest.param(7, marks=SLOW)])
 def test_masks_are_exact_left_eigenvectors_over_the_field(scheme, k):
     vertex = sd.SharpVertex.boundary(k, scheme.lattice)
     S = sharp_matrix(scheme, vertex)

@@ -14,13 +14,15 @@ FieldElement` modulo the minimal polynomial of ``w``, and a matrix over ``K`` is
   ball keeps ``g_t`` away from 0; exactly ``deg g_t`` must remain, else the precision is raised);
 * left eigenvectors at a *rational* eigenvalue, over ``K`` (:func:`rational_left_eigenspace`).
 
->>> import flint, sympy as sp
->>> K = field_of(sp.sqrt(5))
->>> M = FieldMatrix.from_sympy([[0, 1], [1, 1]], sp.sqrt(5))        # rational, eigenvalues (1 +- sqrt 5)/2
+>>> import sympy as sp
+>>> w = sp.sqrt(5)
+>>> field_of(w)                                                 # K = Q(sqrt 5)
+x^2 + (-5)
+>>> M = FieldMatrix.from_sympy([[w, 1], [1, 0]], w)             # chi = x^2 - sqrt(5) x - 1, coefficients in w
 >>> [str(c) for c in field_charpoly(M)]
-['-1', '-1', '1']
->>> str(norm_charpoly(M).factor()[1][0][0])
-'x^2 + (-1)*x + (-1)'
+['(-1)', '(-1)*x', '1']
+>>> norm_charpoly(M)                                            # (x^2 - sqrt5 x - 1)(x^2 + sqrt5 x - 1)
+x^4 + (-7)*x^2 + 1
 """
 
 from __future__ import annotations

@@ -7,7 +7,12 @@ has vanishes off the crease points, and a left eigenvector ``(u, w)`` of an eige
 ``w Y_s = mu w`` (a sine polyline of the mirror decomposition) and ``u (mu I - C) = w X``: the 3 x 3 solve on the
 crease points. Every mask here is computed exactly as a left eigenvector of ``S`` (or of ``C``, or of the piece
 ``C + Y_s`` of one side of a crease, extended by zeros, which is a left eigenvector of ``S`` because no other
-row reads that piece's points) over ``Q(lambda)`` (:func:`~symdecomp.algebra.number_field.left_eigenspace`).
+row reads that piece's points) over ``Q(lambda)`` (:func:`~symdecomp.algebra.number_field.left_eigenspace`); for rules
+with ``cos(theta_k)`` weights (BLZ's) over ``Q(cos(pi/k))`` at a rational eigenvalue
+(:func:`~symdecomp.algebra.cos_field.rational_left_eigenspace`, :attr:`SharpMask.generator`); a mask at an irrational
+eigenvalue there would lie in ``Q(cos(pi/k), lambda)``, out of reach (:class:`~symdecomp.errors.NotApplicableError`).
+When the cross tangent shares the curve tangent's eigenvalue (BLZ's ``1/2``) their eigenspace is the tangent plane and
+the cross tangent is given as its member with equal weights on the two crease neighbours.
 
 * **position**: the eigenvalue 1 (it must be simple), weights summing to 1;
 * **boundary curve tangent**: the crease block's largest eigenvalue after 1 (``1 - crease_edge`` = 1/2 for the
@@ -234,7 +239,7 @@ def _creased(S, parts, values, names) -> tuple[list[SharpMask], list[str]]:
 def sharp_masks(scheme: Scheme, vertex, *, level: int = 0) -> SharpMasks:
     """The limit position and tangent masks of ``vertex`` (a :class:`~symdecomp.schemes.sector.SharpVertex`) at
     refinement ``level``, exact (module docstring). Raises :class:`~symdecomp.errors.NotApplicableError` when 1 is
-    not a simple eigenvalue or the rules are not rational."""
+    not a simple eigenvalue, or a mask is out of reach (module docstring)."""
     from symdecomp.analysis.sharp_field import sharp_values
 
     scheme = check_scheme(scheme)

@@ -1,7 +1,8 @@
 """The exact spectrum of a boundary, crease, corner or dart vertex, each eigenvalue with the block it comes from.
 
 The eigenvalues are those of the one-step matrix ``S`` of the vertex's 1-ring built by exact refinement
-(:func:`~symdecomp.schemes.sector.exact_sharp_matrix`), found part by part
+(:func:`~symdecomp.schemes.sector.exact_sharp_matrix`, or over ``Q(cos(pi/k))`` for rules with ``cos(theta_k)``
+weights: :mod:`symdecomp.analysis.sharp_field`, :attr:`SharpSpectrum.field`), found part by part
 (:mod:`symdecomp.analysis.sharp_eigen`: the crease block and each sector), each a root of an irreducible
 rational factor, with its exact multiplicity. Each is then named by the block of the mirror decomposition
 (:func:`~symdecomp.analysis.mirror.sector_spectrum`) that has it: the crease block, the sine block ``j`` of a

@@ -48,6 +48,8 @@ def sharp_matrix(scheme, vertex, *, level: int = 0):
     except NotApplicableError as refused:
         irrational = sorted(k for k in set(vertex.sectors) if near_weight(scheme, vertex, k) is not None)
         weights = {near_weight(scheme, vertex, k) for k in irrational}
+        if not weights:  # irrational for another reason (Loop's cos(2 pi/n) at a dart): out of this route's reach
+            raise
         if len(weights) != 1:
             fields = ", ".join(f"cos(pi/{k})" for k in irrational)
             raise NotApplicableError(f"scheme {scheme.name!r}: the sharp matrix's entries lie in Q({fields}) (sectors of "

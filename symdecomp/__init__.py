@@ -24,7 +24,8 @@ nothing else.
                    tensor and triangular Bernstein polynomials in Arb (``bernstein``), signs of
                    rational functions of n for every n (``valence_signs``), exact signs of real
                    algebraic numbers (``algebraic_sign``),
-                   exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``)
+                   exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``),
+                   exact linear algebra over one real field Q(cos(pi/k)) (``cos_field``)
 ``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,
                    triangle; regular valence, rings and labels, refinement, regular patch), a
                    scheme as data (edge, face, vertex rules on a lattice, for the whole mesh) and
@@ -71,7 +72,7 @@ nothing else.
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), the limit and tangent
-                   masks (``sharp_masks``)
+                   masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and

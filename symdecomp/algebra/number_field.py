@@ -32,7 +32,7 @@ from symdecomp.algebra.numbers import to_fmpq, to_sympy
 from symdecomp.algebra.small_eigen import nullspace
 from symdecomp.errors import InvalidInputError
 
-__all__ = ["FieldElement", "left_eigenspace", "to_sympy_vector", "root_expression", "element_ball"]
+__all__ = ["FieldElement", "left_eigenspace", "to_sympy_vector", "root_expression", "element_ball", "reduced_basis"]
 
 
 @dataclass(frozen=True)
@@ -91,7 +91,7 @@ def _companion_system(S: flint.fmpq_mat, p: flint.fmpq_poly) -> list[list]:
     return rows
 
 
-def _reduce(vectors: list[list[FieldElement]], order: Sequence[int]) -> list[list[FieldElement]]:
+def reduced_basis(vectors: list[list[FieldElement]], order: Sequence[int]) -> list[list[FieldElement]]:
     """A field basis of the span of ``vectors`` in reduced echelon form, pivots in ``order``."""
     basis: list[list[FieldElement]] = []
     pivots: list[int] = []
@@ -132,7 +132,7 @@ def left_eigenspace(S: flint.fmpq_mat, p: flint.fmpq_poly, order: Sequence[int] 
         raise InvalidInputError(f"left_eigenspace: order must be a permutation of 0..{m - 1}")
     solutions = nullspace([[x for x in row] for row in _companion_system(S, p)])
     vectors = [[FieldElement(flint.fmpq_poly([to_fmpq(v[i * d + t]) for t in range(d)]), p) for i in range(m)] for v in solutions]
-    return _reduce(vectors, order)
+    return reduced_basis(vectors, order)
 
 
 def _roots(p: flint.fmpq_poly) -> list:

@@ -37,7 +37,8 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import sharp_subdivision_matrix
 
-__all__ = ["C", "X", "block_polynomials", "sine_part", "charpoly_check", "Threshold", "first_exceeding", "boundary_eigenvalue",
+__all__ = ["C", "CK", "X", "block_polynomials", "sine_part", "sine_part_in_cos",
+           "charpoly_check", "Threshold", "first_exceeding", "boundary_eigenvalue",
            "crease_eigenvectors"]
 
 #: ``c = cos(theta)``, the variable of the sine blocks' polynomials.
@@ -104,6 +105,33 @@ def sine_part(scheme, k: int, rules=None, *, dart: bool = False) -> sp.Poly:
     out = out.monic() if out.degree() > 0 else sp.Poly(1, X)
     if scheme.face_rule is not None and (not dart or k % 2 == 0):
         out *= sp.Poly(X - scheme.face_rule.b[0][1] if scheme.face_rule.b else X, X)
+    return out
+
+
+#: ``cos(theta_k)`` in the sine blocks of rules that read the sector angle (BLZ's).
+CK = sp.Symbol("c_k", real=True)
+
+
+def sine_part_in_cos(scheme, k: int, rules=None, *, dart: bool = False) -> sp.Poly:
+    """:func:`sine_part` for rules whose weights hold ``cos(theta_k)``: exactly in ``Q[x, c_k]`` (:data:`CK`), the
+    product over the frequencies ``cos(pi j/k)`` taken as the resultant in ``c`` with ``theta_k`` left symbolic."""
+    from symdecomp import symbols
+
+    scheme = check_scheme(scheme)
+    M = sine_block(scheme, rules).subs({sp.cos(THETA_K): CK, symbols.sector_faces: k})
+    if M.has(THETA_K):
+        raise NotApplicableError("a sine block reads the sector angle other than through cos(theta_k)")
+    if M.shape == (1, 1):
+        p = sp.Poly(X - _in_c(M[0, 0]), X, C, CK)
+    else:
+        det = sp.expand(_in_c(M[0, 0]) * _in_c(M[1, 1]) - _in_c(M[0, 1] * M[1, 0]))
+        p = sp.Poly(X**2 - _in_c(M.trace()) * X + det, X, C, CK)
+    F = _frequencies(k, dart)
+    out = sp.Poly(sp.resultant(F.as_expr(), p.as_expr(), C), X, CK) if F.degree() > 0 else sp.Poly(1, X, CK)
+    lead = out.coeff_monomial(X ** out.degree(X)) if out.degree(X) > 0 else 1
+    out = sp.Poly(out.as_expr() / lead, X, CK)
+    if scheme.face_rule is not None and (not dart or k % 2 == 0):
+        out *= sp.Poly(X - scheme.face_rule.b[0][1] if scheme.face_rule.b else X, X, CK)
     return out
 
 

@@ -12,8 +12,9 @@ semi-sharp crease (the vertex reads its whole ring) has one part, the whole matr
 Each eigenvalue is a root of an irreducible rational factor of its part's characteristic
 polynomial (FLINT), kept exactly: the factor, the root's index in sympy's order, a closed form
 (degree <= 2) or a ``CRootOf``, and a certified Arb ball. Equal eigenvalues of two parts are the
-same root of the same factor, so equality is exact. Rational matrices only (a scheme whose rules
-hold cos(pi/k) gives algebraic entries: the caller says so).
+same root of the same factor, so equality is exact. Rational matrices here; rules whose weights
+hold cos(pi/k) give entries in Q(cos(pi/k)), whose eigenvalues :mod:`symdecomp.analysis.sharp_field`
+finds as the same objects (roots of irreducible rational factors of the norm of the characteristic polynomial).
 
 >>> import flint
 >>> S = flint.fmpq_mat([[flint.fmpq(3, 4), flint.fmpq(1, 8), flint.fmpq(1, 8), 0],
@@ -88,7 +89,7 @@ def crease_points(vertex) -> tuple[int, ...]:
 
 
 def _support(S: flint.fmpq_mat, i: int) -> set[int]:
-    return {j for j in range(S.ncols()) if S[i, j] != 0}
+    return {j for j in range(S.ncols()) if S[i, j]}
 
 
 def matrix_parts(S: flint.fmpq_mat, seeds: Sequence[int] = (0,)) -> tuple[MatrixPart, ...]:

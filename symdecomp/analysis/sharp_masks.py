@@ -7,7 +7,12 @@ has vanishes off the crease points, and a left eigenvector ``(u, w)`` of an eige
 ``w Y_s = mu w`` (a sine polyline of the mirror decomposition) and ``u (mu I - C) = w X``: the 3 x 3 solve on the
 crease points. Every mask here is computed exactly as a left eigenvector of ``S`` (or of ``C``, or of the piece
 ``C + Y_s`` of one side of a crease, extended by zeros, which is a left eigenvector of ``S`` because no other
-row reads that piece's points) over ``Q(lambda)`` (:func:`~symdecomp.algebra.number_field.left_eigenspace`).
+row reads that piece's points) over ``Q(lambda)`` (:func:`~symdecomp.algebra.number_field.left_eigenspace`); for rules
+with ``cos(theta_k)`` weights (BLZ's) over ``Q(cos(pi/k))`` at a rational eigenvalue
+(:func:`~symdecomp.algebra.cos_field.rational_left_eigenspace`, :attr:`SharpMask.generator`); a mask at an irrational
+eigenvalue there would lie in ``Q(cos(pi/k), lambda)``, out of reach (:class:`~symdecomp.errors.NotApplicableError`).
+When the cross tangent shares the curve tangent's eigenvalue (BLZ's ``1/2``) their eigenspace is the tangent plane and
+the cross tangent is given as its member with equal weights on the two crease neighbours.
 
 * **position**: the eigenvalue 1 (it must be simple), weights summing to 1;
 * **boundary curve tangent**: the crease block's largest eigenvalue after 1 (``1 - crease_edge`` = 1/2 for the
@@ -25,14 +30,17 @@ holds, and :attr:`SharpMasks.reason` why not.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import flint
 import sympy as sp
 
-from symdecomp.algebra.number_field import FieldElement, element_ball, left_eigenspace, to_sympy_vector
+from symdecomp.algebra.compile import compile_expression
+from symdecomp.algebra.cos_field import rational_left_eigenspace
+from symdecomp.algebra.number_field import FieldElement, element_ball, left_eigenspace, reduced_basis, to_sympy_vector
+from symdecomp.algebra.numbers import to_sympy
 from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.analysis.sharp_eigen import SharpEigenvalue, ball_at, crease_points, matrix_parts, merge, part_eigenvalues, separated, submatrix
+from symdecomp.analysis.sharp_eigen import SharpEigenvalue, ball_at, merge, separated, submatrix
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 
@@ -48,11 +56,17 @@ class SharpMask:
     #: ``"position"``, ``"boundary curve tangent"``, ``"cross tangent"``, ...
     name: str
     eigenvalue: SharpEigenvalue
-    #: One weight per 1-ring point (in the vertex order), each a polynomial in the eigenvalue.
+    #: One weight per 1-ring point (in the vertex order), each a polynomial in the eigenvalue, or, for rules with
+    #: ``cos(theta_k)`` weights (the eigenvalue rational), a polynomial in :attr:`generator`.
     weights: tuple[FieldElement, ...]
+    #: ``None``, or the generator ``w`` of the entries' field ``Q(w) = Q(cos(pi/k))`` the weights are polynomials in.
+    generator: sp.Expr | None = None
 
     def exact(self) -> list[sp.Expr] | None:
         """The weights as exact sympy numbers (closed forms), or ``None`` past degree 2 (see :attr:`weights`)."""
+        if self.generator is not None:
+            return [sp.radsimp(sp.expand(sum((to_sympy(c) * self.generator**t for t, c in enumerate(w.poly.coeffs())),
+                                             sp.Integer(0)))) for w in self.weights]
         if self.eigenvalue.factor.degree() > 2:
             return None
         return to_sympy_vector(self.weights, self.eigenvalue.factor, self.eigenvalue.index)
@@ -61,7 +75,10 @@ class SharpMask:
         """The weights as decimal text with ``digits`` significant digits (certified balls' midpoints)."""
         prec = 4 * digits + 64
         with flint.ctx.workprec(prec):
-            root = ball_at(self.eigenvalue, prec)
+            if self.generator is not None:
+                root = compile_expression(self.generator, (), "arb")()
+            else:
+                root = ball_at(self.eigenvalue, prec)
             return [acb_text(element_ball(w, root), digits) for w in self.weights]
 
     def as_json(self, names, digits: int) -> dict:
@@ -94,8 +111,15 @@ def _eigenvector(S: flint.fmpq_mat, rows: tuple[int, ...], value: SharpEigenvalu
     """Left eigenvectors of ``S[rows]`` at ``value`` extended by zeros to all of ``S``, pivots first in ``order_first``."""
     local = {r: i for i, r in enumerate(rows)}
     order = [local[r] for r in order_first if r in local] + [i for r, i in local.items() if r not in order_first]
-    space = left_eigenspace(submatrix(S, rows), value.factor, order)
-    zero = FieldElement(flint.fmpq_poly([]), value.factor)
+    if isinstance(S, flint.fmpq_mat):
+        space = left_eigenspace(submatrix(S, rows), value.factor, order)
+        zero = FieldElement(flint.fmpq_poly([]), value.factor)
+    else:
+        if value.factor.degree() != 1:
+            raise NotApplicableError(f"the eigenvalue {acb_text(value.ball, 8)} is irrational and the rules' weights lie in "
+                                     "Q(cos(pi/k)): its mask lies in Q(cos(pi/k), lambda), which is out of reach")
+        space = reduced_basis(rational_left_eigenspace(S.submatrix(rows), -value.factor[0], order), order)
+        zero = FieldElement(flint.fmpq_poly([]), S.modulus)
     out = []
     for v in space:
         full = [zero] * S.nrows()
@@ -128,8 +152,10 @@ def _position(S, values) -> SharpMask:
         raise NotApplicableError(f"1 is not a simple eigenvalue (multiplicity {values[0].multiplicity if values else 0}): "
                                  "no limit position mask is defined")
     (w,) = _eigenvector(S, tuple(range(S.nrows())), values[0], tuple(range(S.nrows())))
-    total = sum((x.poly for x in w), flint.fmpq_poly([]))
-    scale = FieldElement(flint.fmpq_poly([1 / total[0]]), _ONE)
+    total = w[0]
+    for x in w[1:]:
+        total = total + x
+    scale = total.inverse()
     return SharpMask("position", values[0], tuple(x * scale for x in w))
 
 
@@ -161,7 +187,19 @@ def _generic(S, values, names) -> tuple[list[SharpMask], list[str]]:
     return masks, [r for r in [_verdict(values, top, "the vertex")] if r]
 
 
-def _cross(S, crease, sector, values, c1, many: bool) -> tuple[SharpMask | None, str]:
+def _symmetric(vector: list, curve: list) -> list:
+    """``vector`` minus the multiple of the curve tangent ``curve`` that gives it equal weights on the curve tangent's two
+    points (its entries 1 and -1): when the cross tangent shares the curve tangent's eigenvalue (BLZ's 1/2) the
+    eigenspace holds both, and the cross tangent is the mirror-symmetric one of them."""
+    ends = [i for i, x in enumerate(curve) if x]
+    if len(ends) != 2:  # pragma: no cover - the curve tangent is 1 on one crease neighbour and -1 on the other
+        return vector
+    i, j = ends
+    t = (vector[i] - vector[j]) * (curve[i] - curve[j]).inverse()
+    return [v - t * u for v, u in zip(vector, curve)]
+
+
+def _cross(S, crease, sector, values, c1, many: bool, curve=None) -> tuple[SharpMask | None, str]:
     own = [v for v in values if v.part == sector.label]
     where = f"sector {sector.label.split()[-1]}" if many else "the sector"
     if not own:
@@ -172,6 +210,8 @@ def _cross(S, crease, sector, values, c1, many: bool) -> tuple[SharpMask | None,
     vector = next((v for v in vectors if any(v[i] for i in sector.indices)), None)
     if vector is None:  # pragma: no cover - needs a defective eigenvalue shared by C and Y_s
         return None, f"{where}: the eigenvalue {acb_text(mu.ball, 8)} has no eigenvector off the crease (defective)"
+    if mu.key == c1.key and curve is not None:
+        vector = _symmetric(vector, curve)
     name = "cross tangent" + (f", {sector.label}" if many else "")
     mask = SharpMask(name, mu, tuple(vector))
     piece = [v for v in values if v.part in ("crease", sector.label)]
@@ -190,7 +230,7 @@ def _creased(S, parts, values, names) -> tuple[list[SharpMask], list[str]]:
     curve = "crease curve tangent" if len(sectors) > 1 else "boundary curve tangent"
     masks, reasons = [SharpMask(curve, c1, tuple(vectors[0]))], []
     for sector in sectors:
-        mask, why = _cross(S, crease, sector, values, c1, len(sectors) > 1)
+        mask, why = _cross(S, crease, sector, values, c1, len(sectors) > 1, list(vectors[0]))
         masks += [mask] if mask is not None else []
         reasons += [why] if why else []
     return masks, reasons
@@ -199,14 +239,12 @@ def _creased(S, parts, values, names) -> tuple[list[SharpMask], list[str]]:
 def sharp_masks(scheme: Scheme, vertex, *, level: int = 0) -> SharpMasks:
     """The limit position and tangent masks of ``vertex`` (a :class:`~symdecomp.schemes.sector.SharpVertex`) at
     refinement ``level``, exact (module docstring). Raises :class:`~symdecomp.errors.NotApplicableError` when 1 is
-    not a simple eigenvalue or the rules are not rational."""
-    from symdecomp.schemes.sector import exact_sharp_matrix
+    not a simple eigenvalue, or a mask is out of reach (module docstring)."""
+    from symdecomp.analysis.sharp_field import sharp_values
 
     scheme = check_scheme(scheme)
-    S = exact_sharp_matrix(scheme, vertex, level=level)
+    S, parts, values = sharp_values(scheme, vertex, level=level)
     names = tuple(vertex.vertex_order())
-    parts = matrix_parts(S, crease_points(vertex))
-    values = part_eigenvalues(S, parts)
     position = _position(S, values)
     rest = _expanded([v for v in merge(values) if v.factor != _ONE])
     if not rest:
@@ -218,4 +256,11 @@ def sharp_masks(scheme: Scheme, vertex, *, level: int = 0) -> SharpMasks:
     else:
         reason = "the tangents' eigenvalues are the two subdominant ones" + (" on each side" if len(parts) > 2 else "") + \
             ", real, and strictly larger in modulus than every other eigenvalue but 1 (certified)"
+    shared = [t for t in tangents if t.name.startswith("cross") and t.eigenvalue.key == tangents[0].eigenvalue.key]
+    if shared and not reasons:
+        reason += (f"; the curve tangent and the cross tangent share the eigenvalue {acb_text(shared[0].eigenvalue.ball, 8)} "
+                   "(non-defective): its eigenspace is the tangent plane, and the cross tangent, defined up to adding "
+                   "the curve tangent, is given as the one with equal weights on the two crease neighbours")
+    if not isinstance(S, flint.fmpq_mat):
+        position, tangents = replace(position, generator=S.weight), [replace(m, generator=S.weight) for m in tangents]
     return SharpMasks(scheme.name, vertex, names, position, tuple(tangents), rest[0], not reasons, reason)

@@ -1,7 +1,8 @@
 """The exact spectrum of a boundary, crease, corner or dart vertex, each eigenvalue with the block it comes from.
 
 The eigenvalues are those of the one-step matrix ``S`` of the vertex's 1-ring built by exact refinement
-(:func:`~symdecomp.schemes.sector.exact_sharp_matrix`), found part by part
+(:func:`~symdecomp.schemes.sector.exact_sharp_matrix`, or over ``Q(cos(pi/k))`` for rules with ``cos(theta_k)``
+weights: :mod:`symdecomp.analysis.sharp_field`, :attr:`SharpSpectrum.field`), found part by part
 (:mod:`symdecomp.analysis.sharp_eigen`: the crease block and each sector), each a root of an irreducible
 rational factor, with its exact multiplicity. Each is then named by the block of the mirror decomposition
 (:func:`~symdecomp.analysis.mirror.sector_spectrum`) that has it: the crease block, the sine block ``j`` of a
@@ -22,7 +23,7 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.analysis.sharp_eigen import SharpEigenvalue, crease_points, matrix_parts, merge, part_eigenvalues
+from symdecomp.analysis.sharp_eigen import SharpEigenvalue, merge
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits
@@ -69,10 +70,12 @@ class SharpSpectrum:
     #: Whether the names come from the mirror decomposition (else from the parts of the matrix).
     decomposed: bool
     entries: tuple[SharpSpectrumEntry, ...]
+    #: The field of the matrix's entries: ``"Q"``, or ``"Q(cos(pi/k))"`` for rules with ``cos(theta_k)`` weights.
+    field: str = "Q"
 
     def as_json(self) -> dict:
         s = self.sharpness
-        return {"level": self.level, "sharpness": "inf" if s == math.inf else str(s), "size": self.size,
+        return {"level": self.level, "sharpness": "inf" if s == math.inf else str(s), "size": self.size, "field": self.field,
                 "decomposed": self.decomposed, "eigenvalues": [e.as_json() for e in self.entries]}
 
 
@@ -127,12 +130,12 @@ def _names(scheme, vertex, values: list[SharpEigenvalue]) -> tuple[dict, dict] |
 
 def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20) -> SharpSpectrum:
     """The exact spectrum of ``vertex`` at refinement ``level``, each eigenvalue named by its block (module docstring)."""
-    from symdecomp.schemes.sector import exact_sharp_matrix
+    from symdecomp.analysis.sharp_field import sharp_values
 
     scheme, digits = check_scheme(scheme), check_digits(digits)
-    S = exact_sharp_matrix(scheme, vertex, level=level)
+    S, _, values = sharp_values(scheme, vertex, level=level, prec=max(256, 4 * digits + 64))
+    values = merge(values)
     here = vertex.at_level(level)
-    values = merge(part_eigenvalues(S, matrix_parts(S, crease_points(vertex)), prec=max(256, 4 * digits + 64)))
     named = _names(scheme, here, values) if here.sharpness == math.inf else None
     entries = []
     with flint.ctx.workprec(4 * digits + 64):
@@ -140,20 +143,46 @@ def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20) 
             blocks = tuple(named[0][v.key]) if named else tuple(v.part.split(", "))
             text = acb_text(v.ball, digits)
             entries.append(SharpSpectrumEntry(v, text, blocks, _exact_text(v, named[1][v.key] if named else [])))
-    return SharpSpectrum(scheme.name, vertex, level, here.sharpness, S.nrows(), named is not None, tuple(entries))
+    return SharpSpectrum(scheme.name, vertex, level, here.sharpness, S.nrows(), named is not None, tuple(entries),
+                         field_name(S))
+
+
+def field_name(S) -> str:
+    """``"Q"`` for a rational matrix, else its entries' field, e.g. ``"Q(cos(pi/5))"`` (``"Q(w), w = ..."`` otherwise)."""
+    if isinstance(S, flint.fmpq_mat) or S.modulus.degree() == 1:
+        return "Q"
+    atoms = S.weight.atoms(sp.cos)
+    if len(atoms) == 1:
+        return f"Q({sp.sstr(atoms.pop())})"
+    k = _cos_index(S)
+    return f"Q(cos(pi/{k}))" if k else f"Q({sp.sstr(S.weight)})"
+
+
+def _cos_index(S) -> int | None:
+    """The ``k`` with ``Q(w) = Q(cos(pi/k))``: ``cos(pi/k)`` has ``w``'s degree and is a rational affine function of it."""
+    from symdecomp.algebra.cos_field import affine_in
+
+    d = S.modulus.degree()
+    for k in range(2, 4 * d + 8):
+        c = sp.cos(sp.pi / k)
+        pq = affine_in(c, S.weight)
+        if pq is not None and pq[1] != 0:
+            return k
+    return None
 
 
 def sharp_levels(scheme: Scheme, vertex, *, digits: int = 20) -> list[SharpSpectrum]:
     """The spectra at level 0 and at each later level whose matrix differs from the one before, until the
     sharpness has decayed to 0 (one spectrum for infinitely sharp edges)."""
-    from symdecomp.schemes.sector import MAX_LEVEL, exact_sharp_matrix
+    from symdecomp.analysis.sharp_field import sharp_matrix
+    from symdecomp.schemes.sector import MAX_LEVEL
 
     out = [sharp_spectrum(scheme, vertex, digits=digits)]
     if vertex.sharpness == math.inf:
         return out
-    previous = exact_sharp_matrix(scheme, vertex)
+    previous = sharp_matrix(scheme, vertex)
     for level in range(1, MAX_LEVEL + 1):
-        S = exact_sharp_matrix(scheme, vertex, level=level)
+        S = sharp_matrix(scheme, vertex, level=level)
         if S != previous:
             out.append(sharp_spectrum(scheme, vertex, level=level, digits=digits))
             previous = S

@@ -97,14 +97,14 @@ def _run_sharp(args) -> int:
             raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
     refuse_sharp_options(args, "--rings")
     vertices = [sharp_vertex(args, k) for k in args.sectors]  # every bad combination refused before the work
-    from symdecomp.schemes.sector import exact_sharp_matrix
+    from symdecomp.analysis.sharp_field import sharp_matrix
 
-    for vertex in vertices:  # rules irrational at some K: refused before the header
-        exact_only(args, vertex, lambda: exact_sharp_matrix(args.scheme, vertex))  # noqa: B023 - called at once
+    for vertex in vertices:  # rules out of reach at some K: refused before the header
+        exact_only(args, vertex, lambda: sharp_matrix(args.scheme, vertex))  # noqa: B023 - called at once
     start, rows = time.perf_counter(), []
     if not args.json:
         print(f"{args.scheme.name}: mirror decomposition vs full matrix, certified (exact): chi_S of the refined 1-ring "
-              "matrix = det(l - C) prod det(l - M(theta_j)) in Q[l]")
+              "matrix = det(l - C) prod det(l - M(theta_j)) in Q[l] (Q(cos(pi/K))[l] for cos(theta_k) weights)")
         print(f"{'K':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'vertex':<16} {'chi_S bits':>10}  certificate")
     for vertex in progress(vertices, len(vertices), "certify"):
         r = exact_only(args, vertex, lambda: certify_sharp(args.scheme, vertex))  # noqa: B023 - called at once

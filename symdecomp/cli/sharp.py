@@ -171,8 +171,8 @@ def run_sharp_masks(args) -> int:
 
 
 def exact_only(args, vertex, compute):
-    """``compute()``, with a scheme whose rules are irrational at this vertex refused in one line (the sharp routes
-    are exact over the rationals: Biermann-Levin-Zorin's ``cos(theta_k)`` weights are not, yet)."""
+    """``compute()``, with a vertex out of the sharp routes' reach refused in one line (they are exact over ``Q``, and
+    over one field ``Q(cos(pi/k))`` for Biermann-Levin-Zorin's ``cos(theta_k)`` weights: not over two such fields)."""
     from symdecomp.errors import NotApplicableError
 
     try:
@@ -180,5 +180,5 @@ def exact_only(args, vertex, compute):
     except NotApplicableError as exc:
         why = str(exc).split("; use ")[0]
         raise InvalidInputError(f"--scheme {args.scheme.name}, {describe(vertex)}: {why}; spectrum, masks and check of "
-                                "boundary, crease, corner and dart vertices work exactly over the rationals (rational "
-                                "[sharp] rules)") from None
+                                "boundary, crease, corner and dart vertices work exactly over Q, and over one field "
+                                "Q(cos(pi/k)) for rules with cos(theta_k) weights") from None

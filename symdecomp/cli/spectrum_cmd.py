@@ -55,6 +55,9 @@ def _run_sharp(args) -> int:
                  + ("semi-sharp edges)" if s.sharpness != float("inf") else "see check --k K --certify)"))
         print(f"{args.scheme.name}, {describe(vertex)}{where} ({vertex.lattice} mesh): {s.size} eigenvalues, {distinct} "
               f"distinct; {names}")
+        if s.field != "Q":
+            print(f"entries in {s.field}: eigenvalues and multiplicities exact (roots of irreducible rational factors of the "
+                  "norm of chi_S, matched to this embedding by Arb)")
         width = max(len(e.text) for e in s.entries)
         print(f"{'value':<{width}}  mult  block; exact")
         for e in s.entries:

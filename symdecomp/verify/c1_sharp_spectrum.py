@@ -33,6 +33,8 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
+from symdecomp.algebra.cos_field import affine_in
+from symdecomp.analysis.sharp_field import near_weight
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
 from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
@@ -74,19 +76,6 @@ def mirror_label(label: tuple, k: int) -> tuple:
     return (k - s, u, 0) if v == 0 else (k - 1 - s, v, u)
 
 
-def _near_weight(scheme, vertex: SharpVertex, k: int):
-    """The near-edge rule's weight on the edge's other end in a sector of ``k`` faces, when it is irrational (else ``None``).
-
-    BLZ's ``theta_k = pi/k``, or ``angle/k`` at a corner given its angle (:mod:`symdecomp.schemes.sharp_refinement`).
-    """
-    rules = scheme.sharp
-    if rules.near_edge_centre is None:
-        return None
-    theta = (vertex.angle if vertex.angle is not None else sp.pi) / k
-    weight = rules.near_edge(theta, k)[1]
-    return None if weight.is_Rational else weight
-
-
 def _extract(scheme, vertex: SharpVertex, sector: int) -> tuple:
     """``(refine, coarse labels, fine labels)`` of one sector, from the vertex's exact 3-ring matrix under ``scheme``."""
     k, start = vertex.sectors[sector], sum(vertex.sectors[:sector])
@@ -112,23 +101,10 @@ def _extract(scheme, vertex: SharpVertex, sector: int) -> tuple:
     return full.extract(rows, cols), coarse, fine
 
 
-def _affine(e: sp.Expr, weight_terms: dict) -> sp.Expr | None:
-    """``p + q NEAR`` with rationals ``p, q`` if the number ``e`` is ``p + q w`` (``w`` given by its terms), else ``None``.
-
-    Exact: ``e`` and ``w`` expanded into rational multiples of the same irrational terms (sympy's canonical radicals or
-    cosines); ``q`` is the ratio of their coefficients, the same on every term.
-    """
-    terms = sp.expand(e).as_coefficients_dict()
-    p = terms.pop(sp.Integer(1), sp.Integer(0))
-    if not terms:
-        return p
-    if set(terms) != set(weight_terms) - {sp.Integer(1)}:
-        return None
-    ratios = {sp.Rational(terms[t]) / sp.Rational(weight_terms[t]) for t in terms}
-    if len(ratios) != 1:
-        return None
-    q = ratios.pop()
-    return p - q * weight_terms.get(sp.Integer(1), 0) + q * NEAR
+def _affine(e: sp.Expr, weight: sp.Expr) -> sp.Expr | None:
+    """``p + q NEAR`` if the number ``e`` is ``p + q weight`` with rationals ``p, q`` (:func:`~symdecomp.algebra.cos_field.affine_in`)."""
+    pq = affine_in(e, weight)
+    return None if pq is None else pq[0] + pq[1] * NEAR
 
 
 def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatrices:
@@ -139,12 +115,11 @@ def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatri
     weights have a rational sum), the matrices are given in the symbol :data:`NEAR`, with :attr:`SectorMatrices.weight`.
     """
     k = vertex.sectors[sector]
-    weight = _near_weight(scheme, vertex, k)
+    weight = near_weight(scheme, vertex, k)
     refine, coarse, fine = _extract(scheme, vertex, sector)
     if weight is not None:
-        weight_terms = sp.expand(weight).as_coefficients_dict()
-        if all(v.is_Rational for v in weight_terms.values()):
-            affine = [[_affine(e, weight_terms) for e in row] for row in refine.tolist()]
+        if all(v.is_Rational for v in sp.expand(weight).as_coefficients_dict().values()):
+            affine = [[_affine(e, weight) for e in row] for row in refine.tolist()]
             if all(e is not None for row in affine for e in row):
                 refine = sp.ImmutableMatrix(affine)
             else:

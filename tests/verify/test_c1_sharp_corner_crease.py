@@ -34,7 +34,7 @@ def test_a_crease_fails_with_its_worse_side():
     assert r.verdict is C1Verdict.NOT_C1
     assert "side 2 (6 faces): the tangent of the boundary curve" in r.reason
     blz = c1_sharp_test(load_scheme("catmull-clark-blz"), SharpVertex.crease(3, 6, "quad"))
-    assert blz.verdict is C1Verdict.UNDECIDED and "not splines" in blz.reason  # spectral conditions hold on both sides
+    assert blz.verdict is C1Verdict.C1 and "past the modified edges" in blz.reason  # BLZ's rule makes both sides C1
 
 
 def test_a_semi_sharp_crease_is_the_interior_vertex():

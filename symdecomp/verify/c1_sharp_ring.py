@@ -1,0 +1,127 @@
+"""A ring of genuine spline patches for sectors with a modified near-edge rule (Biermann-Levin-Zorin's).
+
+With BLZ's rule for the smooth edges at ``O`` (:func:`~symdecomp.schemes.sector_patch.modified_edges`), every
+level's points next to ``O`` are made by other weights than the spline's, so the level-1 patches at ``O``
+(:mod:`.c1_sharp`'s ring, lattice distance ``1..2``) are not splines. A level-1 patch ``[a, a + 1] x [b, b + 1]``
+(quads, face chart of sector face ``s``) with ``max(a, b) >= 2`` is: its refinement reads only points at level-2
+distance ``>= 2 max(a, b) - 1 >= 3``, which the scheme makes by the regular rules (the tensor cubic B-spline's,
+with the phantom points of :mod:`symdecomp.schemes.sector_patch` across the sharp rays). That last statement is
+*checked exactly*: :func:`irregular_rows` compares every row of the exact refinement (level-0 2-ring to level-1
+3-ring) at level-1 distance ``>= 2`` with the regular rule through :func:`~symdecomp.schemes.sector_patch.sector_net`
+(the lattice is regular beyond, by translation). The ring used here is the twelve level-1 patches per face with
+``2 <= max(a, b) <= 4`` side, i.e. the level-0 annulus between distance 1 and 2: ``chi(x / 2) = A chi(x)`` maps it
+onto its inner neighbour, so its scaled copies cover the sector, and the injectivity argument of :mod:`.c1_sharp`
+holds with this ``R`` (inner arc at level-1 distance 2, outer at 4).
+
+The nets need level-1 values up to distance 5: up to 3 from the exact refinement of the eigenvectors, beyond by
+the regular rule from the level-0 3-ring, whose values are the level-1 ones divided by ``A`` (an eigenvector
+scales by its eigenvalue from one level to the next). Quads only (triangles: ``None``, the verdict stays undecided).
+
+>>> from symdecomp.schemes.lattice import QUAD
+>>> [(a, b) for a, b in ring_faces(QUAD)][:3]
+[(0, 2), (0, 3), (1, 2)]
+"""
+
+from __future__ import annotations
+
+import flint
+import sympy as sp
+
+from symdecomp.schemes.lattice import QUAD
+from symdecomp.schemes.sector_patch import ORIGIN, sector_net, sector_point
+from symdecomp.verify.bezier import bspline_to_bezier
+
+__all__ = ["ring_faces", "irregular_rows", "wide_nets", "wide_arcs"]
+
+
+def ring_faces(lat) -> tuple:
+    """The level-1 patches ``(a, b)`` (lower-left corner in a face's chart) of the wide ring, or ``()`` (no triangles yet)."""
+    if lat is not QUAD:
+        return ()
+    return tuple((a, b) for a in range(4) for b in range(4) if max(a, b) >= 2)
+
+
+def _weights(x: int) -> dict:
+    """The cubic B-spline's refinement weights of level-1 index ``x`` on the level-0 indices."""
+    i, odd = divmod(x, 2)
+    if odd:
+        return {i: sp.Rational(1, 2), i + 1: sp.Rational(1, 2)}
+    return {i - 1: sp.Rational(1, 8), i: sp.Rational(3, 4), i + 1: sp.Rational(1, 8)}
+
+
+def _chart(k: int, label) -> tuple:
+    """``(face, X, Y)``: a canonical label in the chart of one face."""
+    s, u, v = label
+    return (k - 1, 0, u) if s == k else (s, u, v)
+
+
+def _regular(k: int, label, value):
+    """The regular rule (tensor B-spline with phantoms) for the level-1 ``label`` from level-0 ``value``."""
+    s, X, Y = _chart(k, label)
+    total = None
+    for x, wx in _weights(X).items():
+        for y, wy in _weights(Y).items():
+            w = wx * wy
+            term = sector_net(QUAD, k, s, [(x, y)], value)[0] * flint.acb(flint.fmpq(int(w.p), int(w.q)))
+            total = term if total is None else total + term
+    return total
+
+
+def irregular_rows(sm, distance: int = 2) -> list:
+    """The level-1 labels at ``distance`` or more from ``O`` whose exact refinement row is not the regular rule (``[]``: all are).
+
+    At ``distance = 1`` BLZ's near-edge rule shows: its points ``(s, 1, 0)`` are listed.
+    """
+    if sm.lattice is not QUAD:
+        return ["(triangle lattice: not implemented)"]
+    cols = {lab: j for j, lab in enumerate(sm.labels)}
+    bad = []
+    for i, lab in enumerate(sm.fine_labels):
+        if lab == ORIGIN or max(lab[1], lab[2]) < distance:
+            continue
+        row = {}
+        for x, wx in _weights(_chart(sm.k, lab)[1]).items():
+            for y, wy in _weights(_chart(sm.k, lab)[2]).items():
+                for w, src in sector_point(QUAD, sm.k, _chart(sm.k, lab)[0], x, y):
+                    row[src] = row.get(src, 0) + w * wx * wy
+        want = [row.get(c, 0) for c in sm.labels]
+        if any(sp.expand(sm.refine[i, j] - want[j]) != 0 for j in range(len(want))) or set(row) - set(cols):
+            bad.append(lab)
+    return bad
+
+
+def wide_nets(sm, chi: dict, lambdas) -> list:
+    """The Bezier nets (complex balls) of the wide ring, face by face (``len(ring_faces)`` per face).
+
+    ``chi``: level-1 values on the 3-ring; ``lambdas = (lambda_1, lambda_2)`` (real balls).
+    """
+    l1, l2 = lambdas
+    coarse = {lab: type(z)(z.real / l1, z.imag / l2) for lab, z in chi.items()}
+    cache = dict(chi)
+
+    def value(label):
+        if label not in cache:
+            cache[label] = _regular(sm.k, label, coarse.__getitem__)
+        return cache[label]
+
+    out = []
+    for s in range(sm.k):
+        for a, b in ring_faces(sm.lattice):
+            pts = [(a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
+            vals = sector_net(sm.lattice, sm.k, s, pts, value)
+            out.append(bspline_to_bezier([vals[4 * i: 4 * i + 4] for i in range(4)]))
+    return out
+
+
+def wide_arcs(sm, nets) -> tuple[list, list]:
+    """``(inner, outer)``: the Bezier curves of the ring's arcs at level-1 distance 2 and 4, from ray 0 to ray ``k``."""
+    faces = ring_faces(sm.lattice)
+    per = len(faces)
+    inner, outer = [], []
+    for s in range(sm.k):
+        net = dict(zip(faces, nets[per * s: per * (s + 1)]))
+        inner += [[net[(2, b)][0][j] for j in range(4)] for b in (0, 1)]
+        inner += [[net[(a, 2)][i][0] for i in range(3, -1, -1)] for a in (1, 0)]
+        outer += [[net[(3, b)][3][j] for j in range(4)] for b in range(4)]
+        outer += [[net[(a, 3)][i][3] for i in range(3, -1, -1)] for a in range(3, -1, -1)]
+    return inner, outer

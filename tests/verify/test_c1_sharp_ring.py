@@ -4,6 +4,7 @@ import pytest
 import sympy as sp
 
 from symdecomp.schemes.files import load_scheme
+from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.verify.c1_sharp import c1_sharp_test
@@ -23,6 +24,8 @@ def test_blz_rows_are_regular_from_distance_two(k):
 def test_standard_rules_are_regular_from_distance_one():
     sm = sector_matrices(catmull_clark(), SharpVertex.boundary(4, "quad"))
     assert irregular_rows(sm, 1) == []
+    sm = sector_matrices(loop(), SharpVertex.boundary(5, "triangle"))
+    assert irregular_rows(sm, 1) == []
 
 
 def test_a_convex_corner_with_blz_is_certified_on_the_wide_ring():
@@ -31,7 +34,9 @@ def test_a_convex_corner_with_blz_is_certified_on_the_wide_ring():
     assert 0 < r.opening < 1  # convex, as the corner's angle pi/2 asks
 
 
-def test_triangles_keep_the_undecided_verdict():
-    r = c1_sharp_test(load_scheme("loop-blz"), SharpVertex.boundary(4, "triangle"))
-    assert r.verdict is C1Verdict.UNDECIDED and "not splines" in r.reason
-    assert ring_faces(sector_matrices(load_scheme("loop-blz"), SharpVertex.boundary(4, "triangle")).lattice) == ()
+@pytest.mark.parametrize("k", [2, 4, 6])
+def test_loop_blz_rows_are_regular_from_distance_two(k):
+    sm = sector_matrices(load_scheme("loop-blz"), SharpVertex.boundary(k, "triangle"))
+    assert irregular_rows(sm) == []  # Loop's regular rules (with the mirror phantoms), exactly
+    assert irregular_rows(sm, 1) == [(s, 1, 0) for s in range(1, k)]
+    assert len(ring_faces(sm.lattice)) == 12  # the annulus between distance 2 and 4: 16 / 2 - 4 / 2 unit squares, 2 triangles each

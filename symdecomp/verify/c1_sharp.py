@@ -33,10 +33,12 @@ theorems; condition 5 is BLZ's corner-type requirement as their examples state i
 tables could not be read, so the verdicts (docs, guide page on ``c1``) are compared with the abstracts'
 statements only: the standard rules fail at boundary vertices with many faces (here Catmull-Clark from
 ``k = 5``, Loop from ``k = 7``, with ``k = 4`` and ``k = 6`` undecided: ``lambda_2 = lambda_3 = 1/2`` exactly)
-and at concave corners; with BLZ's near-edge rule the spectral conditions hold at every boundary ``k`` tried (1 to 16),
-but the characteristic map is certified only where that rule is the smooth one (``k = 1``, the regular boundary): elsewhere
-it makes the points next to ``O`` at every level, so the ring's patches there are not splines
-(:func:`~symdecomp.schemes.sector_patch.modified_edges`) and the verdict is ``undecided`` with that reason. Alone (the part
+and at concave corners; with BLZ's near-edge rule the spectral conditions hold at every boundary ``k`` tried (1 to 16).
+Where that rule is not the smooth one it makes the points next to ``O`` at every level, so the ring's patches there are
+not splines (:func:`~symdecomp.schemes.sector_patch.modified_edges`); the map is then certified on the wider ring of
+:mod:`.c1_sharp_ring` (level-1 distance 2 to 4, genuine splines, checked exactly), and is C1 at every boundary ``k``
+tried and at convex corners. The argument below holds with that ring as ``R`` (inner arc at level-1 distance 2, outer
+at 4). Alone (the part
 of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave corner C1.
 
 **Injectivity of an open sector** (the argument used here, in place of the interior winding number).

@@ -15,14 +15,12 @@ holds with this ``R`` (inner arc at level-1 distance 2, outer at 4).
 
 The nets need level-1 values up to distance 5: up to 3 from the exact refinement of the eigenvectors, beyond by
 the regular rule from the level-0 3-ring, whose values are the level-1 ones divided by ``A`` (an eigenvector
-scales by its eigenvalue from one level to the next). Quads only (triangles: ``None``, the verdict stays undecided).
+scales by its eigenvalue from one level to the next). Triangles (Loop): the same with the level-1 triangles
+between distance 2 and 4 (``u + v``), box-spline patches of their 12-point nets, and Loop's regular rules.
 
->>> from symdecomp.algebra.triangle_bezier import bezier_indices
-from symdecomp.analysis.characteristic import triangle_patch_points
-from symdecomp.schemes.box_spline import DEGREE
-from symdecomp.schemes.lattice import QUAD
->>> [(a, b) for a, b in ring_faces(QUAD)][:3]
-[(0, 2), (0, 3), (1, 2)]
+>>> from symdecomp.schemes.lattice import QUAD, TRIANGLE
+>>> ring_faces(QUAD)[:3], len(ring_faces(QUAD)), len(ring_faces(TRIANGLE))   # 12 patches per face: the annulus
+(((0, 2), (0, 3), (1, 2)), 12, 12)
 """
 
 from __future__ import annotations
@@ -69,7 +67,7 @@ def _chart(k: int, label) -> tuple:
     return (k - 1, 0, u) if s == k else (s, u, v)
 
 
-_HALF, _EIGHTH = sp.Rational(1, 2), sp.Rational(1, 8)
+_EIGHTH = sp.Rational(1, 8)
 _OPPOSITE = {(1, 0): ((0, 1), (1, -1)), (0, 1): ((1, 0), (-1, 1)), (1, -1): ((1, 0), (0, -1))}
 
 

@@ -83,7 +83,8 @@ nothing else.
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
-                   by mirror blocks ``c1_sharp_spectrum``); dyadic limit positions for
+                   by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
+                   ``c1_sharp_ring``); dyadic limit positions for
                    the patch evaluator (``patch_eval``) and the boundary one (``sharp_patch_eval``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and

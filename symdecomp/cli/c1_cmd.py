@@ -51,7 +51,8 @@ def register(sub) -> None:
         "With --boundary or --corner (and --k A:B) or --crease K1,K2: Zorin's conditions at sharp vertices, per "
         "sector between sharp edges: the sector's exact 2-ring matrix (the scheme's [sharp] rules; e.g. --scheme "
         "catmull-clark-blz), the tangent of the boundary curve among the two subdominant eigenvectors, the sector's "
-        "characteristic map regular (phantom points at the sharp rays) and injective (the argument it sweeps between "
+        "characteristic map regular (phantom points at the sharp rays; with a modified near-edge rule such as BLZ's, on "
+        "the ring of spline patches past the modified edges) and injective (the argument it sweeps between "
         "the two rays, 0 to 2 pi in the Jacobian's orientation), and at a corner with --angle a convex or concave image.",
     )
     p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, metavar="A:B",

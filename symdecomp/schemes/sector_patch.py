@@ -168,7 +168,7 @@ def modified_edges(scheme, vertex, k: int) -> str | None:
         return None
     return (f"the near-edge rule ({near[0]}, {near[1]}) differs from the smooth edge rule ({smooth[0]}, {smooth[1]}) at "
             f"k = {k}: it makes the points next to O at every level, so the ring's patches there are not splines of their "
-            "control points (a ring past the modified edges, from the 3-ring, would be; not implemented)")
+            "control points (the ring past them, at level-1 distance 2 to 4, is used instead)")
 
 def _strip(lat: Lattice):
     """A strip of the lattice, ``|x| <= 4``, rows ``y = -1..3``, symbolic values at ``y >= 0`` and phantoms at ``y = -1``."""

@@ -172,15 +172,17 @@ def _triangle_nets(vec):
     return [([z.real for z in net], [z.imag for z in net]) for net in box_nets(subpatch_nets(vec))]
 
 
-def box_nets(values) -> list:
-    """The degree-4 Bezier nets (complex balls) of the three box-spline sub-patches :data:`TRIANGLES` of one face.
+def box_nets(values, triangles=TRIANGLES) -> list:
+    """The degree-4 Bezier nets (complex balls) of the box-spline sub-patches ``triangles`` (corners, counter-clockwise).
 
-    ``values``: for each of the three triangles, ``{lattice point: value}`` on its 12
+    ``values``: for each triangle (default :data:`TRIANGLES`, the three of one face), ``{lattice point: value}`` on its 12
     :func:`~symdecomp.analysis.characteristic.triangle_patch_points`; each net is in its triangle's own
     parameters (``bezier_indices(4)`` order), as :func:`characteristic_nets` gives them.
     """
     out = []
-    for triangle, (o, e1, e2) in zip(values, _TRIANGLE_MAPS):
+    maps = _TRIANGLE_MAPS if triangles == TRIANGLES else tuple(
+        (t[0], (t[1][0] - t[0][0], t[1][1] - t[0][1]), (t[2][0] - t[0][0], t[2][1] - t[0][1])) for t in triangles)
+    for triangle, (o, e1, e2) in zip(values, maps):
         control = [triangle[(o[0] + a * e1[0] + b * e2[0], o[1] + a * e1[1] + b * e2[1])] for a, b in BOX_POINTS]
         net = []
         for terms in _box_terms():

@@ -33,10 +33,12 @@ theorems; condition 5 is BLZ's corner-type requirement as their examples state i
 tables could not be read, so the verdicts (docs, guide page on ``c1``) are compared with the abstracts'
 statements only: the standard rules fail at boundary vertices with many faces (here Catmull-Clark from
 ``k = 5``, Loop from ``k = 7``, with ``k = 4`` and ``k = 6`` undecided: ``lambda_2 = lambda_3 = 1/2`` exactly)
-and at concave corners; with BLZ's near-edge rule the spectral conditions hold at every boundary ``k`` tried (1 to 16),
-but the characteristic map is certified only where that rule is the smooth one (``k = 1``, the regular boundary): elsewhere
-it makes the points next to ``O`` at every level, so the ring's patches there are not splines
-(:func:`~symdecomp.schemes.sector_patch.modified_edges`) and the verdict is ``undecided`` with that reason. Alone (the part
+and at concave corners; with BLZ's near-edge rule the spectral conditions hold at every boundary ``k`` tried (1 to 16).
+Where that rule is not the smooth one it makes the points next to ``O`` at every level, so the ring's patches there are
+not splines (:func:`~symdecomp.schemes.sector_patch.modified_edges`); the map is then certified on the wider ring of
+:mod:`.c1_sharp_ring` (level-1 distance 2 to 4, genuine splines, checked exactly), and is C1 at every boundary ``k``
+tried and at convex corners. The argument below holds with that ring as ``R`` (inner arc at level-1 distance 2, outer
+at 4). Alone (the part
 of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave corner C1.
 
 **Injectivity of an open sector** (the argument used here, in place of the interior winding number).
@@ -92,6 +94,7 @@ from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, mod
 from symdecomp.validate import check_bits, check_depth, check_type
 from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net, triangle_jacobian_net
 from symdecomp.verify.c1 import C1Result, box_nets, c1_test, place_text
+from symdecomp.verify.c1_sharp_ring import irregular_rows, ring_faces, wide_arcs, wide_nets
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.result import C1Verdict
@@ -240,7 +243,7 @@ def _chi(sm, picks):
     for r in (0, sm.k):
         d = flint.acb(vecs[0][index[(r, 1, 0)]], vecs[1][index[(r, 1, 0)]])
         dirs.append(d)
-        for j in (1, 2, 3):
+        for j in range(1, 6):  # to distance 5: the wide ring's nets (:mod:`.c1_sharp_ring`) read that far
             chi[(r, j, 0)] = d * j / 2
     chi[ORIGIN] = flint.acb(0)
     return chi, tuple(dirs)
@@ -272,10 +275,10 @@ def _sign(sm, nets, max_depth: int):
                                   DEGREE, 2 * max_depth)
 
 
-def _sweeps(sm, nets):
+def _sweeps(sm, nets, wide: bool = False):
     """``(Delta_in, Delta_out)``: the arguments swept by the images of the ring's inner and outer arcs (``None``: not decided)."""
-    inner, outer = [], []
-    for s in range(sm.k):
+    inner, outer = wide_arcs(sm, nets) if wide else ([], [])
+    for s in range(0 if wide else sm.k):
         p0, p1, p2 = nets[3 * s: 3 * s + 3]
         if sm.lattice is QUAD:
             inner += [[p0[0][j] for j in range(4)], [p2[i][0] for i in range(3, -1, -1)]]
@@ -361,25 +364,29 @@ def _sector_test(scheme, vertex, sector: int, max_depth: int) -> _Sector:
         return _Sector(spectral.status, spectral.reason, spectral, lambdas)
     if tangent:
         return _Sector(tangent[0], tangent[1], spectral, lambdas)
-    if (why := modified_edges(scheme, vertex, sm.k)) is not None:  # the spectral conditions hold; the map is not certified
+    wide = (why := modified_edges(scheme, vertex, sm.k)) is not None
+    if wide and irregular_rows(sm):  # the spectral conditions hold; no ring of spline patches is known
         return _Sector(C1Verdict.UNDECIDED, f"{spectral.reason}; the characteristic map is not certified: {why}", spectral, lambdas)
     chi, dirs = _chi(sm, picks)
     if chi is None:
         return _Sector(C1Verdict.UNDECIDED, "an eigenvector is not certified", spectral, lambdas)
     if any(d.contains(0) for d in dirs):
         return _Sector(C1Verdict.UNDECIDED, "a sharp ray's image is not shown to be non-degenerate", spectral, lambdas)
-    nets = _nets(sm, chi)
+    nets = wide_nets(sm, chi, tuple(p[0].real for p in picks)) if wide else _nets(sm, chi)
     cert = _sign(sm, nets, max_depth)
     if cert.status == "changes":
+        per = len(ring_faces(sm.lattice)) if wide else 3
         return _Sector(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, face "
-                       f"{cert.where[0] // 3}): it is not regular", spectral, lambdas, depth=cert.depth)
+                       f"{cert.where[0] // per}{', wide ring' if wide else ''}): it is not regular", spectral, lambdas,
+                       depth=cert.depth)
     if cert.status == "undecided":
         return _Sector(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}", spectral,
                        lambdas, depth=cert.depth)
     sign = 1 if cert.status == "positive" else -1
-    verdict, text, opening = _injective(sm, vertex, sign, dirs, _sweeps(sm, nets))
+    verdict, text, opening = _injective(sm, vertex, sign, dirs, _sweeps(sm, nets, wide))
     if verdict is C1Verdict.C1:
-        text = f"{spectral.reason}; the characteristic map is regular (|J| >= {round_down(cert.lower_bound)}) and {text}"
+        where = " on the ring past the modified edges (level-1 distance 2 to 4, genuine splines)" if wide else ""
+        text = f"{spectral.reason}; the characteristic map is regular{where} (|J| >= {round_down(cert.lower_bound)}) and {text}"
     return _Sector(verdict, text, spectral, lambdas, sign, cert.lower_bound, cert.depth, opening)
 
 

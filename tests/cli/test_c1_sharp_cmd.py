@@ -17,14 +17,20 @@ def test_boundary_range_prints_one_line_per_k(capsys):
 
 
 def test_blz_scheme_file_json(capsys):
-    assert main(["c1", "--scheme", "loop-blz", "--boundary", "--k", "3:4", "--json"]) == 1
+    assert main(["c1", "--scheme", "loop-blz", "--boundary", "--k", "3:4", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert [d["vertex"] for d in data] == ["boundary k = 3", "boundary k = 4"]
     assert all(d["lambdas"] == pytest.approx([0.5, 0.5]) for d in data)
-    # k = 3 is Loop's regular boundary, where BLZ's rule is Loop's: certified; at k = 4 the modified edges make the
-    # ring's patches other than splines, so the map is not certified (the spectral conditions are)
-    assert data[0]["verdict"] == "c1" and data[0]["jacobian_lower_bound"] > 0 and data[0]["opening_over_pi"] == pytest.approx(1.0)
-    assert data[1]["verdict"] == "undecided" and "not splines" in data[1]["reason"]
+    # k = 3 is Loop's regular boundary, where BLZ's rule is Loop's: certified on the usual ring; at k = 4 the modified
+    # edges make that ring's patches other than splines, so the map is certified on the ring past them
+    assert all(d["verdict"] == "c1" and d["jacobian_lower_bound"] > 0 and d["opening_over_pi"] == pytest.approx(1.0) for d in data)
+    assert "past the modified edges" in data[1]["reason"] and "past the modified edges" not in data[0]["reason"]
+
+
+def test_catmull_clark_blz_is_c1_at_every_boundary_k_tried(capsys):
+    assert main(["c1", "--scheme", "catmull-clark-blz", "--boundary", "--k", "3:5"]) == 0
+    rows = [line for line in capsys.readouterr().out.splitlines() if line.startswith("boundary k =")]
+    assert [r.split(": ")[1] for r in rows] == ["C1 certified"] * 3 and all("past the modified edges" in r for r in rows)
 
 
 def test_a_user_scheme_file_with_sharp_rules(tmp_path, capsys):
@@ -33,9 +39,9 @@ def test_a_user_scheme_file_with_sharp_rules(tmp_path, capsys):
     path.write_text('name = "mine"\nmesh = "triangle"\n[edge]\nO = "3/8"\na = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }\n'
                     '[vertex]\nbeta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"\n'
                     '[sharp]\nnear_edge_centre = "1/4 + cos(theta_k)/4"\nnear_edge_end = "1/2 - cos(theta_k)/4"\n')
-    assert main(["c1", "--scheme", str(path), "--boundary", "--k", "8"]) == 1
+    assert main(["c1", "--scheme", str(path), "--boundary", "--k", "8"]) == 0
     out = capsys.readouterr().out
-    assert "boundary k = 8: undecided: lambda_1 = 0.500000, lambda_2 = 0.500000" in out and "not splines" in out
+    assert "boundary k = 8: C1 certified: lambda_1 = 0.500000, lambda_2 = 0.500000" in out and "past the modified edges" in out
 
 
 def test_crease_and_corner(capsys):

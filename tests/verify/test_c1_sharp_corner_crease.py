@@ -34,7 +34,7 @@ def test_a_crease_fails_with_its_worse_side():
     assert r.verdict is C1Verdict.NOT_C1
     assert "side 2 (6 faces): the tangent of the boundary curve" in r.reason
     blz = c1_sharp_test(load_scheme("catmull-clark-blz"), SharpVertex.crease(3, 6, "quad"))
-    assert blz.verdict is C1Verdict.UNDECIDED and "not splines" in blz.reason  # spectral conditions hold on both sides
+    assert blz.verdict is C1Verdict.C1 and "past the modified edges" in blz.reason  # BLZ's rule makes both sides C1
 
 
 def test_a_semi_sharp_crease_is_the_interior_vertex():
@@ -61,14 +61,13 @@ def test_a_concave_corner_folds_with_the_standard_rules():
 
 
 @pytest.mark.parametrize("k", [1, 2, 3, 4])
-def test_blz_convex_corners_meet_the_spectral_conditions(k):
+def test_blz_convex_corners_are_c1(k):
     scheme = load_scheme("loop-blz")
     r = c1_sharp_test(scheme, SharpVertex.corner(k, "triangle", sp.pi / 2))
     assert all(abs(x - 0.5) < 1e-12 for x in r.lambdas)
-    if k == 1:  # no smooth edge at O: the patches are splines and the map is certified
-        assert r.verdict is C1Verdict.C1 and 0 < r.opening < 1  # a convex image
-    else:
-        assert r.verdict is C1Verdict.UNDECIDED and "are not splines of their control points" in r.reason
+    assert r.verdict is C1Verdict.C1 and 0 < r.opening < 1, r.reason  # a convex image
+    # no smooth edge at O for k = 1: the usual ring; else the ring past the modified edges, whose patches are splines
+    assert ("past the modified edges" in r.reason) is (k > 1)
 
 
 @pytest.mark.parametrize("k", [2, 3, 4])

@@ -1,0 +1,170 @@
+"""A ring of genuine spline patches for sectors with a modified near-edge rule (Biermann-Levin-Zorin's).
+
+With BLZ's rule for the smooth edges at ``O`` (:func:`~symdecomp.schemes.sector_patch.modified_edges`), every
+level's points next to ``O`` are made by other weights than the spline's, so the level-1 patches at ``O``
+(:mod:`.c1_sharp`'s ring, lattice distance ``1..2``) are not splines. A level-1 patch ``[a, a + 1] x [b, b + 1]``
+(quads, face chart of sector face ``s``) with ``max(a, b) >= 2`` is: its refinement reads only points at level-2
+distance ``>= 2 max(a, b) - 1 >= 3``, which the scheme makes by the regular rules (the tensor cubic B-spline's,
+with the phantom points of :mod:`symdecomp.schemes.sector_patch` across the sharp rays). That last statement is
+*checked exactly*: :func:`irregular_rows` compares every row of the exact refinement (level-0 2-ring to level-1
+3-ring) at level-1 distance ``>= 2`` with the regular rule through :func:`~symdecomp.schemes.sector_patch.sector_net`
+(the lattice is regular beyond, by translation). The ring used here is the twelve level-1 patches per face with
+``2 <= max(a, b) <= 4`` side, i.e. the level-0 annulus between distance 1 and 2: ``chi(x / 2) = A chi(x)`` maps it
+onto its inner neighbour, so its scaled copies cover the sector, and the injectivity argument of :mod:`.c1_sharp`
+holds with this ``R`` (inner arc at level-1 distance 2, outer at 4).
+
+The nets need level-1 values up to distance 5: up to 3 from the exact refinement of the eigenvectors, beyond by
+the regular rule from the level-0 3-ring, whose values are the level-1 ones divided by ``A`` (an eigenvector
+scales by its eigenvalue from one level to the next). Triangles (Loop): the same with the level-1 triangles
+between distance 2 and 4 (``u + v``), box-spline patches of their 12-point nets, and Loop's regular rules.
+
+>>> from symdecomp.schemes.lattice import QUAD, TRIANGLE
+>>> ring_faces(QUAD)[:3], len(ring_faces(QUAD)), len(ring_faces(TRIANGLE))   # 12 patches per face: the annulus
+(((0, 2), (0, 3), (1, 2)), 12, 12)
+"""
+
+from __future__ import annotations
+
+import flint
+import sympy as sp
+
+from symdecomp.algebra.triangle_bezier import bezier_indices
+from symdecomp.analysis.characteristic import triangle_patch_points
+from symdecomp.schemes.box_spline import DEGREE
+from symdecomp.schemes.lattice import QUAD
+from symdecomp.schemes.sector_patch import ORIGIN, sector_net, sector_point
+from symdecomp.verify.bezier import bspline_to_bezier
+from symdecomp.verify.c1 import box_nets
+
+__all__ = ["ring_faces", "irregular_rows", "wide_nets", "wide_arcs"]
+
+
+def ring_faces(lat) -> tuple:
+    """The level-1 patches of the wide ring in a face's chart: quads ``(a, b)`` (lower-left corner), triangles their corners."""
+    if lat is QUAD:
+        return tuple((a, b) for a in range(4) for b in range(4) if max(a, b) >= 2)
+    up = tuple(((u, d - u), (u + 1, d - u), (u, d - u + 1)) for d in (2, 3) for u in range(d + 1))
+    down = tuple(((u + 1, d - u), (u + 1, d - u + 1), (u, d - u + 1)) for d in (1, 2) for u in range(d + 1))
+    return up + down
+
+
+def _distance(lat, label) -> int:
+    s, u, v = label
+    return max(u, v) if lat is QUAD else u + v
+
+
+def _weights(x: int) -> dict:
+    """The cubic B-spline's refinement weights of level-1 index ``x`` on the level-0 indices."""
+    i, odd = divmod(x, 2)
+    if odd:
+        return {i: sp.Rational(1, 2), i + 1: sp.Rational(1, 2)}
+    return {i - 1: sp.Rational(1, 8), i: sp.Rational(3, 4), i + 1: sp.Rational(1, 8)}
+
+
+def _chart(k: int, label) -> tuple:
+    """``(face, X, Y)``: a canonical label in the chart of one face."""
+    s, u, v = label
+    return (k - 1, 0, u) if s == k else (s, u, v)
+
+
+_EIGHTH = sp.Rational(1, 8)
+_OPPOSITE = {(1, 0): ((0, 1), (1, -1)), (0, 1): ((1, 0), (-1, 1)), (1, -1): ((1, 0), (0, -1))}
+
+
+def _stencil(lat, X: int, Y: int) -> dict:
+    """``{level-0 chart point: weight}`` of the regular rule for the level-1 chart point ``(X, Y)``.
+
+    Quads: the tensor cubic B-spline's; triangles: Loop's regular rules (``5/8, 1/16 x 6``; ``3/8, 3/8, 1/8, 1/8``).
+    """
+    if lat is QUAD:
+        return {(x, y): wx * wy for x, wx in _weights(X).items() for y, wy in _weights(Y).items()}
+    if X % 2 == 0 and Y % 2 == 0:
+        p = (X // 2, Y // 2)
+        out = {(p[0] + a, p[1] + b): sp.Rational(1, 16) for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1), (1, -1), (-1, 1))}
+        return out | {p: sp.Rational(5, 8)}
+    d = (X % 2, Y % 2) if (X % 2, Y % 2) != (1, 1) else (1, -1)
+    p = ((X - d[0]) // 2, (Y - d[1]) // 2)
+    out = {p: 3 * _EIGHTH, (p[0] + d[0], p[1] + d[1]): 3 * _EIGHTH}
+    return out | {(p[0] + a, p[1] + b): _EIGHTH for a, b in _OPPOSITE[d]}
+
+
+def _regular(lat, k: int, label, value):
+    """The regular rule (with phantoms across the sharp rays) for the level-1 ``label`` from level-0 ``value``."""
+    s, X, Y = _chart(k, label)
+    total = None
+    for (x, y), w in _stencil(lat, X, Y).items():
+        term = sector_net(lat, k, s, [(x, y)], value)[0] * flint.acb(flint.fmpq(int(w.p), int(w.q)))
+        total = term if total is None else total + term
+    return total
+
+
+def irregular_rows(sm, distance: int = 2) -> list:
+    """The level-1 labels at ``distance`` or more from ``O`` whose exact refinement row is not the regular rule (``[]``: all are).
+
+    At ``distance = 1`` BLZ's near-edge rule shows: its points ``(s, 1, 0)`` are listed.
+    """
+    cols = {lab: j for j, lab in enumerate(sm.labels)}
+    bad = []
+    for i, lab in enumerate(sm.fine_labels):
+        if lab == ORIGIN or _distance(sm.lattice, lab) < distance:
+            continue
+        row: dict = {}
+        s, X, Y = _chart(sm.k, lab)
+        for (x, y), wxy in _stencil(sm.lattice, X, Y).items():
+            for w, src in sector_point(sm.lattice, sm.k, s, x, y):
+                row[src] = row.get(src, 0) + w * wxy
+        want = [row.get(c, 0) for c in sm.labels]
+        if any(sp.expand(sm.refine[i, j] - want[j]) != 0 for j in range(len(want))) or set(row) - set(cols):
+            bad.append(lab)
+    return bad
+
+
+def wide_nets(sm, chi: dict, lambdas) -> list:
+    """The Bezier nets (complex balls) of the wide ring, face by face (``len(ring_faces)`` per face).
+
+    ``chi``: level-1 values on the 3-ring; ``lambdas = (lambda_1, lambda_2)`` (real balls).
+    """
+    l1, l2 = lambdas
+    coarse = {lab: type(z)(z.real / l1, z.imag / l2) for lab, z in chi.items()}
+    cache = dict(chi)
+
+    def value(label):
+        if label not in cache:
+            cache[label] = _regular(sm.lattice, sm.k, label, coarse.__getitem__)
+        return cache[label]
+
+    out, faces = [], ring_faces(sm.lattice)
+    for s in range(sm.k):
+        if sm.lattice is not QUAD:
+            values = []
+            for t in faces:
+                pts = triangle_patch_points(t)
+                values.append(dict(zip(pts, sector_net(sm.lattice, sm.k, s, pts, value))))
+            out += box_nets(values, faces)
+            continue
+        for a, b in faces:
+            pts = [(a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
+            vals = sector_net(sm.lattice, sm.k, s, pts, value)
+            out.append(bspline_to_bezier([vals[4 * i: 4 * i + 4] for i in range(4)]))
+    return out
+
+
+def wide_arcs(sm, nets) -> tuple[list, list]:
+    """``(inner, outer)``: the Bezier curves of the ring's arcs at level-1 distance 2 and 4, from ray 0 to ray ``k``."""
+    faces = ring_faces(sm.lattice)
+    per = len(faces)
+    inner, outer = [], []
+    for s in range(sm.k):
+        net = dict(zip(faces, nets[per * s: per * (s + 1)]))
+        if sm.lattice is not QUAD:  # inner: the down triangles' edges corner 0 -> 2; outer: the up ones' corner 1 -> 2
+            pos = {i: n for n, i in enumerate(bezier_indices(DEGREE))}
+            inner += [[net[((u + 1, 1 - u), (u + 1, 2 - u), (u, 2 - u))][pos[(DEGREE - t, 0, t)]] for t in range(DEGREE + 1)]
+                      for u in (1, 0)]
+            outer += [[net[((u, 3 - u), (u + 1, 3 - u), (u, 4 - u))][pos[(0, DEGREE - t, t)]] for t in range(DEGREE + 1)]
+                      for u in (3, 2, 1, 0)]
+            continue
+        inner += [[net[(2, b)][0][j] for j in range(4)] for b in (0, 1)]
+        inner += [[net[(a, 2)][i][0] for i in range(3, -1, -1)] for a in (1, 0)]
+        outer += [[net[(3, b)][3][j] for j in range(4)] for b in range(4)]
+        outer += [[net[(a, 3)][i][3] for i in range(3, -1, -1)] for a in range(3, -1, -1)]
+    return inner, outer

@@ -23,6 +23,7 @@ from symdecomp.cli.common import (
     progress,
     valence_range,
 )
+from symdecomp.cli.sharp import sharpness
 from symdecomp.errors import InvalidInputError
 
 if TYPE_CHECKING:
@@ -30,6 +31,9 @@ if TYPE_CHECKING:
     from symdecomp.verify.result import C1Verdict
 
 __all__ = ["register", "run"]
+
+#: How a verdict is printed (by its value, so that the table needs no import of the verify layer).
+LABELS = {"c1": "C1 certified", "not-c1": "not C1", "undecided": "undecided"}
 
 
 def _depth(text: str) -> int:
@@ -70,7 +74,7 @@ def register(sub) -> None:
     p.add_argument("--angle", type=_angle, action=Once, metavar="EXPR",
                    help="the corner's angle for --corner, e.g. pi/2 (convex) or 3*pi/2 (concave): Biermann-Levin-Zorin's "
                    "theta_k = angle/k in the rules, and the characteristic map must open convex or concave to match")
-    p.add_argument("--sharpness", type=_sharpness, action=Once, metavar="S", default=math.inf,
+    p.add_argument("--sharpness", type=sharpness, action=Once, metavar="S", default=math.inf,
                    help="sharpness of the crease for --crease (default inf; a finite S is semi-sharp)")
     p.add_argument("--depth", type=_depth, action=Once, default=6,
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "
@@ -116,16 +120,6 @@ def _angle(text: str):
     if not (value.is_positive and (value - 2 * sp.pi).is_negative):
         raise argparse.ArgumentTypeError(f"expected an angle in (0, 2*pi) such as pi/2 or 3*pi/2, got {value}")
     return value
-
-
-def _sharpness(text: str):
-    """argparse type: a sharpness ``>= 0`` or ``inf``."""
-    from symdecomp.schemes.sharp import check_sharpness
-
-    try:
-        return check_sharpness(text, "--sharpness")
-    except InvalidInputError as exc:
-        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 class _Row(NamedTuple):
@@ -198,7 +192,6 @@ def run(args) -> int:
     if items is not None:
         return _run_sharp(args, items)
 
-    label = {C1Verdict.C1: "C1 certified", C1Verdict.NOT_C1: "not C1", C1Verdict.UNDECIDED: "undecided"}
     valences = args.valences
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
@@ -209,7 +202,7 @@ def run(args) -> int:
         print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
         print(f"method: {args.scheme.lattice.c1_method}")
         for r in results:
-            print(f"n = {r.n:>3}: {label[r.verdict]}: {r.reason}")
+            print(f"n = {r.n:>3}: {LABELS[r.verdict.value]}: {r.reason}")
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 
 
@@ -218,7 +211,6 @@ def _run_sharp(args, items: list[tuple]) -> int:
     from symdecomp.verify.c1_sharp import SHARP_METHOD
     from symdecomp.verify.result import C1Verdict
 
-    label = {C1Verdict.C1: "C1 certified", C1Verdict.NOT_C1: "not C1", C1Verdict.UNDECIDED: "undecided"}
     rows = ordered_map(_sharp_one, items, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
     results = list(progress(rows, len(items), "c1", enabled=sys.stderr.isatty()))
@@ -229,5 +221,5 @@ def _run_sharp(args, items: list[tuple]) -> int:
         print(f"method: {SHARP_METHOD}")
         width = max(len(r.vertex) for r in results)
         for r in results:
-            print(f"{r.vertex:<{width}}: {label[r.verdict]}: {r.reason}")
+            print(f"{r.vertex:<{width}}: {LABELS[r.verdict.value]}: {r.reason}")
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1

@@ -26,14 +26,15 @@ import math
 from symdecomp.cli.common import SHARP_OPTIONS, Once, flag, given, integer, positive_int, print_json
 from symdecomp.errors import InvalidInputError
 
-__all__ = ["add_sharp_options", "sharp_vertex", "faces_or_valence", "sector_range", "refuse_sharp_options", "describe",
+__all__ = ["sharpness", "add_sharp_options", "sharp_vertex", "faces_or_valence", "sector_range", "refuse_sharp_options", "describe",
            "run_sharp_masks", "exact_only"]
 
 #: Most faces around a sharp vertex on the command line (the matrices are dense and exact).
 MAX_FACES = 64
 
 
-def _sharpness(text: str):
+def sharpness(text: str):
+    """argparse type of ``--sharpness``: a sharpness ``>= 0`` (exact) or ``inf``."""
     from symdecomp.schemes.sharp import check_sharpness
 
     try:
@@ -51,7 +52,7 @@ def add_sharp_options(parser, *, count: str = "N") -> None:
     g.add_argument("--crease", type=positive_int("--crease"), action=Once, metavar="K2",
                    help="an interior vertex on a crease with K faces on one side and K2 on the other")
     flag(g, "--dart", help="an interior vertex of valence K where a crease ends (one sharp edge)")
-    g.add_argument("--sharpness", type=_sharpness, action=Once, metavar="S", default=math.inf,
+    g.add_argument("--sharpness", type=sharpness, action=Once, metavar="S", default=math.inf,
                    help="with --crease or --dart: the crease's sharpness, an exact rational >= 0 or inf (default); semi-sharp "
                    "edges decay by 1 a level, and the output shows every level whose matrix differs")
 

@@ -44,7 +44,8 @@ nothing else.
                    matrices, (2N+8)-point and Loop's (N+6)-point (``patch``), the regular Loop
                    patch (quartic box spline) in Bezier form (``box_spline``), a modeller's polygon
                    mesh validated with its 1-rings and extraordinary vertices (``meshfile``), read
-                   and written as OBJ, OFF and PLY (``meshformats``)
+                   and written as OBJ, OFF and PLY (``meshformats``), its sharpness tags and
+                   the elements left out of it (``mesh_tags``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
                    spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
@@ -183,6 +184,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.schemes.mesh": ("QuadMesh", "ring_mesh"),
     "symdecomp.schemes.meshfile": ("PolygonMesh", "scheme_for_mesh"),
     "symdecomp.schemes.meshformats": ("decode_mesh", "encode_mesh", "read_mesh"),
+    "symdecomp.schemes.mesh_tags": ("MeshDefects", "MeshTags"),
     "symdecomp.schemes.patch": ("patch_matrices",),
     "symdecomp.schemes.refinement": ("central_rings", "mesh_rules", "refine"),
     "symdecomp.schemes.rings": ("RingMatrix", "ring_subdivision_matrix"),

@@ -44,6 +44,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 from symdecomp.errors import InvalidMeshError
+from symdecomp.schemes.mesh_tags import MeshDefects, MeshTags
 from symdecomp.validate import check_memory
 
 __all__ = ["PolygonMesh", "exact_coordinate", "scheme_for_mesh"]
@@ -86,6 +87,10 @@ class PolygonMesh:
     faces: tuple[tuple[int, ...], ...]
     #: The name errors start with (a file name, or ``"mesh"``).
     name: str = "mesh"
+    #: OpenSubdiv's sharpness tags read with the mesh (creases, corners, holes, boundary interpolation); none by default.
+    tags: MeshTags = field(default_factory=MeshTags, compare=False)
+    #: The elements of the file left out of this mesh (non-manifold, degenerate, repeated, isolated), in the file's numbering.
+    defects: MeshDefects = field(default_factory=MeshDefects, compare=False)
     _topology: dict = field(default_factory=dict, repr=False, compare=False)
 
     @classmethod

@@ -12,7 +12,8 @@ nothing else.
 ``symbols``        the paper's symbols n, omega, alpha, beta, c = cos(j pi/n) and sin(j pi/n)
 ``expressions``    exact weights and expressions from user input, parsed and never evaluated
 ``validate``       one validation layer for every input from outside (valences, frequencies, ...)
-``parallel``       the one pool of worker processes (local, or a Dask cluster), valences in order
+``parallel/``      the one pool of worker processes (local, or a Dask cluster), valences in order; the Dask
+                   side: scheduler addresses checked, the peer asked first, every wait bounded (``cluster``)
 ``algebra/``       no scheme knowledge: circulants and the Fourier matrix and its rows (Section 2,
                    ``circulant``), CB-matrices (Section 6, ``cbmatrix``), cyclotomic fields
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast

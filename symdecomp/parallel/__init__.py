@@ -30,20 +30,21 @@ there asks the child to stop (SIGTERM: its cleanup runs, workers and temporary f
 still inside a native computation after :data:`GRACE_SECONDS` is killed (SIGKILL), and if the
 first process is killed outright, its reaper does the same: SIGTERM (the child removes its
 temporary files and stops its workers), then SIGKILL :data:`GRACE_SECONDS` later.
+
+The Dask side (addresses checked, the peer asked whether it is a Dask scheduler, a bound on every
+wait) is a module of its own; both are named in the module map of :mod:`symdecomp`.
 """
 
 from __future__ import annotations
 
 import itertools
 import os
-import re
 import signal
 import subprocess
 import sys
-import threading
 import time
 from collections.abc import Callable, Iterable, Iterator
-from contextlib import contextmanager, suppress
+from contextlib import suppress
 from dataclasses import dataclass
 
 from symdecomp.errors import InvalidInputError, InvalidTypeError
@@ -88,7 +89,6 @@ _REAPER = (
     "os.killpg(0, signal.SIGKILL)\n"
 )
 
-_ADDRESS = re.compile(r"(?:(?:tcp|tls)://)?(?:[A-Za-z0-9][A-Za-z0-9.-]*|\[[0-9A-Fa-f:.]+\]):([0-9]{1,5})", re.ASCII)
 _EXPECTED = "expected local, dask or dask=ADDRESS (a Dask scheduler such as tcp://127.0.0.1:8786)"
 
 
@@ -124,15 +124,15 @@ def parse_executor(spec: str | Executor = "local", option: str | None = "executo
         return LOCAL
     if kind != "dask" or (eq and not address):
         raise InvalidInputError(f"{prefix}{_EXPECTED}, got {shown!r}")
-    if eq:
-        match = _ADDRESS.fullmatch(address)
-        if match is None or not 0 < int(match.group(1)) < 65536:
-            raise InvalidInputError(f"{prefix}{shown!r}: the scheduler's address must be [tcp://|tls://]HOST:PORT")
     try:
         import distributed  # noqa: F401 - only asking whether it is installed
     except ImportError:
         raise InvalidInputError(f"{prefix}{shown!r} needs the optional packages dask and distributed: "
                                 "pip install 'symdecomp[dask]'") from None
+    if eq:
+        from symdecomp.parallel.cluster import parse_address
+
+        address = parse_address(address, prefix)
     return Executor("dask", address or None)
 
 
@@ -159,7 +159,9 @@ def ordered_map(func: Callable, items: Iterable, *, shared: dict | None = None, 
     order = sorted(range(len(items)), key=lambda i: -cost(items[i])) if cost else list(range(len(items)))
     workers = pool_size(jobs, len(items))
     if spec.kind == "dask":
-        yield from _dask_map(func, items, shared, spec, workers, order)
+        from symdecomp.parallel.cluster import dask_map
+
+        yield from dask_map(func, items, shared, spec, workers, order)
     elif workers > 1 and "fork" in _start_methods() and sys.executable:
         yield from _local_map(func, items, shared, workers, order)
     else:
@@ -303,97 +305,3 @@ def _kill_group(group: int) -> None:
         os.killpg(group, signal.SIGKILL)
     except (ProcessLookupError, PermissionError):
         pass
-
-
-_SILENT = 60  # above logging.CRITICAL (50): nothing passes
-
-
-def _dask_call(func, shared, item):
-    return func(item, **shared)
-
-
-def _dask_map(func, items, shared, spec, workers, order):
-    with _quiet_logs("distributed", "asyncio", "tornado"):  # a cluster closed early logs its lost tasks
-        yield from _dask_run(func, items, shared, spec, workers, order)
-
-
-@contextmanager
-def _quiet_logs(*names):
-    """Silence these loggers, CRITICAL included (a closing scheduler logs its lost comms as CRITICAL).
-
-    They are restored when the work ends normally; an interrupted run leaves them silent, since the
-    scheduler's threads may still log while the interpreter stops.
-    """
-    import logging
-
-    loggers = [logging.getLogger(name) for name in names]
-    levels = [logger.level for logger in loggers]
-    for logger in loggers:
-        logger.setLevel(_SILENT)
-    yield
-    for logger, level in zip(loggers, levels):
-        logger.setLevel(level)
-
-
-def _dask_run(func, items, shared, spec, workers, order):
-    opened = []  # the cluster and the client, closed in reverse order whatever happens
-    futures = []
-    try:
-        with _signals_held():
-            client = _dask_client(spec, workers, opened)
-        if not items:
-            return
-        [ref] = client.scatter([shared], broadcast=True, hash=False)
-        futures = [None] * len(items)
-        for i in order:
-            futures[i] = client.submit(_dask_call, func, ref, items[i], pure=False)
-        for future in futures:
-            yield future.result()
-    finally:
-        if opened and futures:
-            opened[-1].cancel([f for f in futures if f is not None])
-        for thing in reversed(opened):
-            thing.close()
-
-
-def _dask_client(spec: Executor, workers: int, opened: list):
-    """A connected ``distributed.Client`` (appended to ``opened``, after the ``LocalCluster`` started for it, if any)."""
-    from distributed import Client, LocalCluster
-
-    if spec.address is None:
-        # ":0": any free port for its HTTP server (8787, the default, may be another cluster's)
-        opened.append(LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0",
-                                   silence_logs=_SILENT))
-        opened.append(Client(opened[-1]))
-        return opened[-1]
-    try:
-        opened.append(Client(spec.address, timeout=10))
-    except (OSError, TimeoutError) as exc:
-        raise InvalidInputError(f"executor {spec}: cannot reach the scheduler ({' '.join(str(exc).split())})") from None
-    return opened[-1]
-
-
-@contextmanager
-def _signals_held():
-    """Hold SIGINT and SIGTERM while Dask starts its processes, then deliver them (so that what started is closed).
-
-    SIGINT is blocked: the processes spawned meanwhile inherit the mask, so a terminal's Ctrl-C
-    reaches only this process, which closes the cluster. SIGTERM is only noted (those processes
-    must stay stoppable by their nanny's SIGTERM) and sent again afterwards.
-    """
-    from multiprocessing import resource_tracker
-
-    resource_tracker.ensure_running()  # now: started later, from Dask's thread, it would unblock SIGINT there
-    held, swapped = [], threading.current_thread() is threading.main_thread()
-    if swapped:
-        previous = signal.signal(signal.SIGTERM, lambda signum, frame: held.append(signum))
-    mask = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT}) if hasattr(signal, "pthread_sigmask") else None
-    try:
-        yield
-    finally:
-        if swapped:
-            signal.signal(signal.SIGTERM, previous)
-        if mask is not None:
-            signal.pthread_sigmask(signal.SIG_SETMASK, mask)  # a Ctrl-C meanwhile is raised here
-        if held:
-            os.kill(os.getpid(), signal.SIGTERM)

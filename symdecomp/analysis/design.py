@@ -53,7 +53,6 @@ frequencies 1, 2, n-2, n-1 only.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -61,10 +60,10 @@ import mpmath
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.analysis.design_input import amount, dot, frame, vector
 from symdecomp.analysis.inspection import position_weights
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.errors import InvalidInputError, NotApplicableError
-from symdecomp.expressions import exact_value
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import omega as OMEGA
@@ -75,8 +74,6 @@ __all__ = ["LimitFrame", "RingDesign", "design_ring", "limit_frame", "ring_amoun
 MAX_VALENCE = 1000
 
 _DPS = 40
-#: A decimal number as text: read as the rational it spells (the mesh files' grammar).
-_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]{1,4})?")
 
 
 @dataclass(frozen=True)
@@ -119,55 +116,6 @@ class RingDesign:
     achieved: LimitFrame
     #: For a redesign: the Euclidean norm of the change of the 1-ring (0 for a new design).
     change: float = 0.0
-
-
-def _exact(x, argument: str) -> sp.Expr:
-    """A number from outside: a decimal text (``0.25``) as the rational it spells, else :func:`exact_value` (never evaluated)."""
-    if isinstance(x, str) and _DECIMAL.fullmatch(x.strip()):
-        return sp.Rational(Fraction(x.strip()))
-    return exact_value(x, argument=argument)
-
-
-def _vector(value, argument: str) -> tuple:
-    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 3:
-        raise InvalidInputError(f"{argument} must be 3 numbers (x, y, z), got {value!r:.60}")
-    out = tuple(_exact(x, argument) for x in value)
-    if not all(x.is_Rational for x in out):
-        raise InvalidInputError(f"{argument} must have rational coordinates, got {value!r:.60}")
-    return out
-
-
-def _cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def _dot(a, b):
-    return sum((x * y for x, y in zip(a, b)), sp.Integer(0))
-
-
-def frame(normal, tangent=None) -> tuple:
-    """``(u, v, N)``, exact: ``u`` the tangent projected off ``N`` (default: ``N`` crossed with its smallest axis), ``v = N x u``."""
-    N = _vector(normal, "normal")
-    if not any(N):
-        raise InvalidInputError("normal must not be the zero vector")
-    if tangent is None:
-        axis = min(range(3), key=lambda k: (abs(N[k]), k))
-        tangent = _cross(N, tuple(sp.Integer(int(k == axis)) for k in range(3)))
-    t = _vector(tangent, "tangent")
-    u = tuple(x - _dot(t, N) / _dot(N, N) * y for x, y in zip(t, N))
-    if not any(u):
-        raise InvalidInputError("tangent must not be parallel to the normal")
-    u, N = _primitive(u), _primitive(N)
-    return u, _primitive(_cross(N, u)), N
-
-
-def _primitive(w) -> tuple:
-    """The integer vector with coprime entries along ``w`` (same direction): coordinates ``p + x u + ...`` with
-    dyadic ``x`` then terminate whenever ``p`` does."""
-    scale = sp.ilcm(*[sp.Rational(x).q for x in w])
-    ints = [int(x * scale) for x in w]
-    g = math.gcd(*ints)
-    return tuple(sp.Integer(x // g) for x in ints)
 
 
 def _frequency_matrix(scheme: Scheme, n: int, j: int) -> mpmath.matrix:
@@ -354,16 +302,13 @@ def design_ring(scheme: Scheme, n: int, *, normal, position=(0, 0, 0), tangent=N
 
 def _design(scheme: Scheme, n: int, normal, position, tangent, amounts) -> RingDesign:
     u, v, N = frame(normal, tangent)
-    p = _vector(position, "position")
-    amounts = [_exact(x, name) for x, name in zip(amounts, ("elliptic", "hyperbolic", "angle"))]
-    for x, name in zip(amounts, ("elliptic", "hyperbolic", "angle")):
-        if not (x.is_real and x.is_finite):
-            raise InvalidInputError(f"{name} must be a real number, got {x}")
+    p = vector(position, "position")
+    amounts = [amount(x, name) for x, name in zip(amounts, ("elliptic", "hyperbolic", "angle"))]
     _, _, X1 = _dominant(_frequency_matrix(scheme, n, 1))
     X1 = [x / X1[0] for x in X1]
-    su, sv = (1 / mpmath.sqrt(mpmath.mpf(sp.N(_dot(w, w), _DPS))) for w in (u, v))
+    su, sv = (1 / mpmath.sqrt(mpmath.mpf(sp.N(dot(w, w), _DPS))) for w in (u, v))
     plane = _symmetric_plane(scheme, n, X1, su, sv)
-    scaled = [a / sp.sqrt(_dot(N, N)) for a in amounts[:2]] + [amounts[2]]  # heights along N/|N| -> multiples of N
+    scaled = [a / sp.sqrt(dot(N, N)) for a in amounts[:2]] + [amounts[2]]  # heights along N/|N| -> multiples of N
     h_O, h = _heights(scheme, n, *[sp.N(x, _DPS) for x in scaled])
     frac = [tuple(_fraction(x) for x in w) for w in (p, u, v, N)]
 
@@ -480,7 +425,7 @@ def limit_frame(scheme: Scheme, mesh: PolygonMesh, vertex: int, *, normal=None, 
             across_v = _class_sums(K, points, n, u)
             tangent_exact = all((p * a).real() == 0 for p, a in zip(phases, across_u)) and all(
                 (p * a).imag() == 0 for p, a in zip(phases, across_v))
-        unit = [float(x) / math.sqrt(float(_dot(N, N))) for x in N]
+        unit = [float(x) / math.sqrt(float(dot(N, N))) for x in N]
     else:
         unit = list(r.normal) if r.normal is not None else [0.0, 0.0, 1.0]
     amounts = _amounts(scheme, n, mesh.points[ring[0]], points, unit)

@@ -28,7 +28,8 @@ from fractions import Fraction
 
 import mpmath
 
-from symdecomp.analysis.design import _DPS, RingDesign, _classes, _dominant, _dot, _frequency_matrix, frame, limit_frame
+from symdecomp.analysis.design import _DPS, RingDesign, _classes, _dominant, _frequency_matrix, limit_frame
+from symdecomp.analysis.design_input import check_ring_scale, dot, frame
 from symdecomp.errors import InvalidInputError, InvalidMeshError, NotApplicableError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -60,11 +61,13 @@ def redesign_vertex(scheme: Scheme, mesh: PolygonMesh, vertex: int, *, normal=No
     scheme = check_scheme(scheme)
     if normal is None and not flatten_hyperbolic:
         raise InvalidInputError("redesign needs a normal or flatten_hyperbolic=True")
+    ring = mesh.one_ring(vertex, scheme.lattice)
+    check_ring_scale(mesh, (ring[0],) + tuple(x for part in ring[1:] for x in part), vertex)
     before = inspect_vertex(mesh, vertex, scheme)
     n, ring = before.valence, before.ring
     if normal is not None:
         N = frame(normal)[2]
-        unit = [float(x) / math.sqrt(float(_dot(N, N))) for x in N]
+        unit = [float(x) / math.sqrt(float(dot(N, N))) for x in N]
     elif before.normal is None:
         raise NotApplicableError(f"{mesh.name}: vertex {vertex} has no tangent plane (parallel tangents); give a normal")
     else:

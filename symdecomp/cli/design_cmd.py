@@ -129,7 +129,10 @@ def _print(data: dict) -> None:
 
     print(f"{data['scheme']}, valence {data['n']}: vertex {data['vertex']} -> {data['out']} ({data['format']})")
     print(f"limit position  {', '.join(data['position_exact'])}")
-    print(f"normal          {' '.join(f'{x + 0.0:.12g}' for x in data['normal'])}  {exact(data['normal_exact'], 'parallel to --normal')}")
+    if data["normal"] is None:  # the tangents are parallel: no tangent plane, nothing to call exact
+        print("normal          none (the tangents are parallel)")
+    else:
+        print(f"normal          {' '.join(f'{x + 0.0:.12g}' for x in data['normal'])}  {exact(data['normal_exact'], 'parallel to --normal')}")
     for k, t in enumerate(data["tangents"], 1):
         print(f"tangent t{k}      {' '.join(f'{x + 0.0:.12g}' for x in t)}" + (f"  {exact(data['tangent_exact'], 'along --tangent')}"
                                                                              if k == 1 else ""))

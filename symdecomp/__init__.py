@@ -68,8 +68,8 @@ nothing else.
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); second-order characteristic maps, the elliptic and hyperbolic
                    height fields on the ring (``second_order``); control nets designed for prescribed
-                   limit properties (``design``; its inputs checked against their bounds, ``design_input``), and the least change of a 1-ring for a normal or no
-                   hyperbolic part (``redesign``); boundary, crease, corner and dart vertices
+                   limit properties (``design``; its inputs checked against their bounds, ``design_input``),
+                   and the least change of a 1-ring for a normal or no hyperbolic part (``redesign``); boundary, crease, corner and dart vertices
                    by the mirror symmetry of their sectors: crease block and sine blocks (``mirror``), the
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum

@@ -39,6 +39,7 @@ import signal
 import sys
 
 from symdecomp.cli.common import LIMITS, Parser, check_scheme_valences
+from symdecomp.cli.files import release_held
 from symdecomp.errors import InternalError, OutputWriteError, ResourceLimitError, SymdecompError, UnavailableError
 
 __all__ = ["main", "entry", "build_parser", "EXIT_CODES"]
@@ -96,6 +97,28 @@ def _on_sigterm(signum, frame):
     raise Interrupted
 
 
+#: Seconds after which an interruption that a finalizer swallowed is raised again.
+REDELIVERY_SECONDS = 0.01
+
+
+def _redeliver(unraisable) -> None:
+    """``sys.unraisablehook`` while a command runs: an interruption raised inside a finalizer (a ``__del__``, a
+    weakref callback, a generator's close) cannot propagate: Python prints "Exception ignored ... Traceback" and the
+    command goes on until it is killed. Instead it is raised again, a moment later, from another thread
+    (``_thread.interrupt_main``: the main thread's handler, outside the finalizer by then). Other exceptions are
+    printed as before."""
+    if isinstance(unraisable.exc_value, (Interrupted, KeyboardInterrupt)):
+        import _thread
+        import threading
+
+        signum = signal.SIGTERM if isinstance(unraisable.exc_value, Interrupted) else signal.SIGINT
+        timer = threading.Timer(REDELIVERY_SECONDS, _thread.interrupt_main, (signum,))
+        timer.daemon = True
+        timer.start()
+        return
+    sys.__unraisablehook__(unraisable)
+
+
 def _silence_stdout() -> None:
     """Point stdout at /dev/null so that the interpreter's final flush cannot fail again."""
     try:
@@ -122,7 +145,8 @@ def main(argv=None) -> int:
             args = parser.parse_args(argv)
         except SystemExit as exc:  # --help, --version, or a usage error (already printed, one line)
             return exc.code if isinstance(exc.code, int) else 2
-        previous = _install(signal.SIGTERM, _on_sigterm)
+        previous, hook = _install(signal.SIGTERM, _on_sigterm), sys.unraisablehook
+        sys.unraisablehook = _redeliver
         try:
             check_scheme_valences(args)
             code = int(args.func(args) or 0)
@@ -130,6 +154,8 @@ def main(argv=None) -> int:
             return code
         finally:
             _install(signal.SIGTERM, previous)
+            sys.unraisablehook = hook
+            release_held()  # FIFOs checked and not written: their readers see the end
     except UnavailableError as exc:
         return _fail(exc, 3)
     except InternalError as exc:

@@ -12,6 +12,16 @@ is written through a temporary file in its directory and ``os.replace``, so that
 old file or the new one. A new file gets the permissions the umask gives; a replaced file keeps
 its mode. Other kinds of file (a block device, a socket) are refused.
 
+A FIFO is opened when it is checked, before the work, without blocking: if no reader has it open
+within :data:`FIFO_WAIT` seconds, that is bad input (start the reader first); otherwise the open end
+is held until the output is written into it (closing it would end the reader's input), so a command
+never computes and then blocks on a FIFO nobody reads. :func:`release_held` closes what a command
+checked and did not write (the command line calls it when a command ends).
+
+:func:`write_output_files` writes several files (a document and its figures) all or nothing: every
+regular file is written to a temporary file first, and only when all of them are complete are they
+renamed into place; a failure (a full disk) leaves every old file as it was and no new one.
+
 :func:`replace_owned_files` writes a whole set of files into a directory as one step: the new
 directory is assembled next to the old one (the new files, plus the files of the old directory
 that the command does not own) and then swapped in with one ``renameat2(RENAME_EXCHANGE)``
@@ -24,17 +34,26 @@ from __future__ import annotations
 
 import contextlib
 import ctypes
+import errno
 import os
 import re
 import shutil
 import stat
 import tempfile
+import time
 from collections.abc import Iterable
 from pathlib import Path
 
 from symdecomp.errors import InvalidInputError, OutputWriteError
 
-__all__ = ["check_output_directory", "check_output_file", "output_stream", "write_output_file", "replace_owned_files"]
+__all__ = ["check_output_directory", "check_output_file", "output_stream", "write_output_file", "write_output_files",
+           "replace_owned_files", "release_held", "FIFO_WAIT"]
+
+#: Seconds a FIFO given as an output may wait for its reader when it is checked.
+FIFO_WAIT = 2.0
+
+#: FIFOs opened when checked, by their resolved path: the write end, held until the output is written.
+_HELD: dict[str, int] = {}
 
 #: The kinds of existing file written in place (opened and streamed into, never replaced).
 _STREAMED = {stat.S_IFCHR: "a character device", stat.S_IFIFO: "a FIFO"}
@@ -87,12 +106,42 @@ def check_output_file(out, option: str = "--out") -> Path:
         if kind in _STREAMED:
             if not os.access(target, os.W_OK):
                 raise InvalidInputError(f"{option} {text}: {_STREAMED[kind]} that is not writable")
+            if kind == stat.S_IFIFO:
+                _hold_fifo(target, option, text)
             return Path(text)
         if kind != stat.S_IFREG:
             raise InvalidInputError(f"{option} {text}: is {_KINDS.get(kind, 'not a regular file')}; give a regular file, "
                                     "a character device or a FIFO")
     _probe(target.parent, option, text)
     return Path(text)
+
+
+def _hold_fifo(target: Path, option: str, text: str) -> None:
+    """Open the FIFO ``target`` for writing without blocking, waiting up to :data:`FIFO_WAIT` s for a reader; hold it."""
+    key = os.fspath(target)
+    if key in _HELD:
+        return
+    end = time.monotonic() + FIFO_WAIT
+    while True:
+        try:
+            fd = os.open(target, os.O_WRONLY | os.O_NONBLOCK)
+            break
+        except OSError as exc:
+            if exc.errno != errno.ENXIO:  # ENXIO: no reader yet
+                raise InvalidInputError(f"{option} {text}: {exc.strerror or exc}") from None
+        if time.monotonic() > end:
+            raise InvalidInputError(f"{option} {text}: a FIFO that no process reads (waited {FIFO_WAIT:g} s); "
+                                    "start its reader first")
+        time.sleep(0.02)
+    os.set_blocking(fd, True)  # the writes wait for the reader, as into any pipe
+    _HELD[key] = fd
+
+
+def release_held() -> None:
+    """Close the FIFOs checked and not written (their readers then see the end of their input)."""
+    while _HELD:
+        with contextlib.suppress(OSError):
+            os.close(_HELD.popitem()[1])
 
 
 def check_output_directory(out, option: str = "--out") -> Path:
@@ -119,7 +168,10 @@ def output_stream(out, option: str = "--out"):
     try:
         st = _stat(target, option, os.fspath(out))
         if st is not None and stat.S_IFMT(st.st_mode) in _STREAMED:
-            with os.fdopen(os.open(target, os.O_WRONLY), "wb") as fh:
+            if stat.S_ISFIFO(st.st_mode):
+                _hold_fifo(target, option, os.fspath(out))  # checked already: the end held then; else opened now
+            held = _HELD.pop(os.fspath(target), None)
+            with os.fdopen(held if held is not None else os.open(target, os.O_WRONLY), "wb") as fh:
                 yield fh
             return
         mode = stat.S_IMODE(st.st_mode) if st is not None else 0o666 & ~_umask()
@@ -150,6 +202,47 @@ def write_output_file(out, content: bytes | str | Iterable[bytes | str], option:
             raw = piece.encode("utf-8") if isinstance(piece, str) else piece
             fh.write(raw)
             written += len(raw)
+    return written
+
+
+def write_output_files(files: dict, option: str = "--out") -> int:
+    """Write ``files`` (output path -> ``bytes`` or ``str``) all or nothing (module docstring); return the bytes written.
+
+    Check every path first (:func:`check_output_file`). The regular files are staged as temporary files next
+    to their targets and renamed into place only when every one is complete; a FIFO or character device
+    among them is written last, in place. An ``OSError`` becomes :class:`~symdecomp.errors.OutputWriteError`,
+    with no new regular file left.
+    """
+    staged, streamed, written, failing = [], [], 0, None
+    try:
+        try:
+            for out, content in files.items():
+                failing = out
+                raw = content.encode("utf-8") if isinstance(content, str) else content
+                target = _target(_path_text(out, option, "file"))
+                st = _stat(target, option, os.fspath(out))
+                if st is not None and stat.S_IFMT(st.st_mode) in _STREAMED:
+                    streamed.append((out, raw))
+                    continue
+                fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
+                staged.append((tmp, target))
+                with os.fdopen(fd, "wb") as fh:
+                    fh.write(raw)
+                    fh.flush()
+                    os.fsync(fh.fileno())
+                os.chmod(tmp, stat.S_IMODE(st.st_mode) if st is not None else 0o666 & ~_umask())
+                written += len(raw)
+            while staged:
+                tmp, failing = staged[0]
+                os.replace(tmp, failing)
+                staged.pop(0)
+        finally:
+            for tmp, _ in staged:
+                _remove(tmp)
+    except OSError as exc:
+        raise OutputWriteError(f"{option} {os.fspath(failing)}: cannot write ({exc.strerror or exc})") from None
+    for out, raw in streamed:
+        written += write_output_file(out, raw, option)
     return written
 
 

@@ -18,7 +18,7 @@ import re
 from pathlib import Path
 
 from symdecomp.cli.common import LIMITS, Once, add_budget_option, progress, scheme_by_name, valence_range
-from symdecomp.cli.files import check_output_file, write_output_file
+from symdecomp.cli.files import check_output_file, write_output_file, write_output_files
 from symdecomp.errors import InvalidInputError, UnavailableError
 
 __all__ = ["register", "run", "FORMATS"]
@@ -34,12 +34,13 @@ def register(sub) -> None:
         description="Write one deterministic document about SCHEME at the valences --n A:B: the paper's claims checked "
         "for the scheme (quad schemes; as 'claims --scheme'), the spectrum with its closed forms ('spectrum'), the limit "
         "and tangent masks ('masks'), Reif's C1 test ('c1'), the curvature regime and artifact indicators with the "
-        "elliptic height field ('artifacts'; 'Not applicable' with the reason for schemes with free parameters or regular "
+        "elliptic height field ('artifacts'; 'Not applicable' with the reason for regular "
         "rules other than Catmull-Clark's and Loop's) and the figures of the characteristic map and of the eigen-polygons. "
         "The suffix of --out chooses the format: .pdf (needs pdflatex; exit status 3 without it), .html "
         "(one self-contained file: formulas as MathML, figures as inline SVG) or .tex (LaTeX source; figures written "
         "next to it as STEM-NAME.pdf). Running it twice writes the same bytes. Catmull-Clark at 3:8 takes about half a "
-        "minute, most of it the claims' checks.",
+        "minute, most of it the claims' checks. A scheme with free parameters is refused at once (a report needs their "
+        "values), and --out is checked first: a FIFO must have its reader running.",
     )
     p.add_argument("scheme", type=scheme_by_name, metavar="SCHEME",
                    help="a known scheme name (catmull-clark, loop, ...) or a TOML scheme file (format in the README)")
@@ -89,9 +90,9 @@ def run(args: argparse.Namespace) -> int:
         if fmt == ".pdf":
             write_output_file(out, compile_pdf(tex, figures))
         else:
-            for name, data in figures.items():
-                write_output_file(figure_paths[name], data)
-            write_output_file(out, _with_figure_names(tex, out, figures))
+            # the document and its figures all or nothing: a full disk leaves no new figure beside an old document
+            write_output_files({**{figure_paths[name]: data for name, data in figures.items()},
+                                out: _with_figure_names(tex, out, figures)})
     print(out)
     return 0
 

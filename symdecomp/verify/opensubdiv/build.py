@@ -4,10 +4,9 @@ Uses only the standard library, so CI can run it before the package is installed
 
     python symdecomp/verify/opensubdiv/build.py [--force]   # prints the path of the built library
 
-The library goes to :data:`BUILD_DIR` (:func:`build_dir`): ``$SYMDECOMP_BRIDGE_DIR`` if set;
-``_build/`` next to this file (ignored by git) in a source tree (a checkout, an editable install)
-whose folder is writable; otherwise, as in an installed package, the user's cache folder
-(``$XDG_CACHE_HOME`` or ``~/.cache``, then ``symdecomp/opensubdiv-bridge-<interface version>``).
+The library goes to :data:`BUILD_DIR` (:func:`build_dir`): ``$SYMDECOMP_BRIDGE_DIR`` if set; otherwise the
+user's cache folder (``$XDG_CACHE_HOME`` or ``~/.cache``, then ``symdecomp/opensubdiv-bridge-<interface version>``),
+for an installed package, an editable install and a checkout alike: a package never writes into its own folder.
 The folder is trusted only if it is a real folder (not a symbolic link) of this user that no one
 else may write to; a library there is loaded only with a stamp naming the interface version and
 the hashes of the source and of the library itself: one without a matching stamp (stale,
@@ -41,8 +40,6 @@ def build_dir() -> Path:
     chosen = os.environ.get(BUILD_DIR_VARIABLE)
     if chosen:
         return Path(chosen).absolute()
-    if (HERE.parents[2] / "pyproject.toml").is_file() and os.access(HERE, os.W_OK):
-        return HERE / "_build"
     cache = os.environ.get("XDG_CACHE_HOME", "")
     cache = Path(cache) if os.path.isabs(cache) else Path.home() / ".cache"  # a relative XDG path is ignored (the spec)
     return cache / "symdecomp" / f"opensubdiv-bridge-{BRIDGE_VERSION}"

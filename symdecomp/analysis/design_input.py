@@ -5,14 +5,14 @@ rational nets, but they measure what the net achieves (tangents, normal, amounts
 arithmetic, and the designed heights are rounded to doubles. So every input has a bound that keeps those numbers
 finite and meaningful:
 
-* a position coordinate, an elliptic or hyperbolic amount: at most :data:`MAX_MAGNITUDE` in magnitude (the tangents
-  are sums of coordinates, the normal a product of two tangents);
+* a position coordinate, an elliptic or hyperbolic amount: at most :data:`MAX_MAGNITUDE` in magnitude (the designed
+  1-ring is about 1 across; the tangents, sums of its coordinates in doubles, keep about 10 significant digits);
 * the hyperbolic angle: at most :data:`MAX_ANGLE` radians in magnitude (read as a double, whose spacing there is
   still far below a period);
 * a normal or tangent direction: the primitive integer vector along it (the net's frame) has entries of at most
   :data:`MAX_DIRECTION` (15 significant digits, what a double carries);
-* a mesh whose vertex is redesigned: the 1-ring's coordinates at most :data:`MAX_MAGNITUDE` in magnitude and the
-  ring at least ``1/MAX_MAGNITUDE`` across (smaller, the tangents' product underflows).
+* a mesh whose vertex is redesigned: the 1-ring's coordinates at most :data:`MAX_COORDINATE` in magnitude and the
+  ring at least ``1/MAX_COORDINATE`` across (beyond, the tangents' product overflows or underflows in doubles).
 
 Each refusal is :class:`~symdecomp.errors.InvalidInputError` naming the argument.
 
@@ -21,7 +21,7 @@ Each refusal is :class:`~symdecomp.errors.InvalidInputError` naming the argument
 >>> amount("1e308", "elliptic")
 Traceback (most recent call last):
 ...
-symdecomp.errors.InvalidInputError: elliptic must be at most 1e+12 in magnitude, got 1e308
+symdecomp.errors.InvalidInputError: elliptic must be at most 1e+06 in magnitude, got 1e308
 """
 
 from __future__ import annotations
@@ -35,10 +35,13 @@ import sympy as sp
 from symdecomp.errors import InvalidInputError
 from symdecomp.expressions import exact_value
 
-__all__ = ["MAX_MAGNITUDE", "MAX_ANGLE", "MAX_DIRECTION", "amount", "vector", "frame", "check_ring_scale"]
+__all__ = ["MAX_MAGNITUDE", "MAX_COORDINATE", "MAX_ANGLE", "MAX_DIRECTION", "amount", "vector", "frame", "check_ring_scale"]
 
-#: The largest magnitude of a position coordinate, an amount, and a coordinate of a redesigned 1-ring.
-MAX_MAGNITUDE = 10**12
+#: The largest magnitude of a position coordinate and of an elliptic or hyperbolic amount.
+MAX_MAGNITUDE = 10**6
+
+#: The largest magnitude of a coordinate of a redesigned 1-ring (and the reciprocal of its smallest extent).
+MAX_COORDINATE = 10**12
 
 #: The largest magnitude of the hyperbolic angle (radians).
 MAX_ANGLE = 10**6
@@ -124,13 +127,13 @@ def _primitive(w, argument: str) -> tuple:
 
 
 def check_ring_scale(mesh, ids, vertex: int) -> None:
-    """Refuse a 1-ring (``ids`` of ``mesh``'s points) whose coordinates exceed :data:`MAX_MAGNITUDE` or that is
-    smaller than ``1/MAX_MAGNITUDE`` across: its tangents and normal would overflow or underflow in doubles."""
+    """Refuse a 1-ring (``ids`` of ``mesh``'s points) whose coordinates exceed :data:`MAX_COORDINATE` or that is
+    smaller than ``1/MAX_COORDINATE`` across: its tangents and normal would overflow or underflow in doubles."""
     points = [mesh.points[i] for i in ids]
-    if any(abs(c) > MAX_MAGNITUDE for p in points for c in p):
+    if any(abs(c) > MAX_COORDINATE for p in points for c in p):
         raise InvalidInputError(f"{mesh.name}: vertex {vertex}: its 1-ring has coordinates beyond "
-                                f"{float(MAX_MAGNITUDE):g} in magnitude; scale the mesh down")
+                                f"{float(MAX_COORDINATE):g} in magnitude; scale the mesh down")
     centre = points[0]
-    if max(abs(c - o) for p in points for c, o in zip(p, centre)) * MAX_MAGNITUDE < 1:
+    if max(abs(c - o) for p in points for c, o in zip(p, centre)) * MAX_COORDINATE < 1:
         raise InvalidInputError(f"{mesh.name}: vertex {vertex}: its 1-ring is smaller than "
-                                f"{1 / MAX_MAGNITUDE:g} across; scale the mesh up")
+                                f"{1 / MAX_COORDINATE:g} across; scale the mesh up")

@@ -107,14 +107,14 @@ def _not_a_scheduler(label: str, what: str) -> InvalidInputError:
     return InvalidInputError(f"{label}: not a Dask scheduler ({what})")
 
 
-def _read(sock: socket.socket, size: int, deadline: float, label: str) -> bytes:
+def _read(sock: socket.socket, size: int, deadline: float, label: str, timeout: float) -> bytes:
     data = b""
     while len(data) < size:
         sock.settimeout(max(0.0, deadline - time.monotonic()) or 1e-3)
         try:
             chunk = sock.recv(size - len(data))
         except TimeoutError:
-            raise _not_a_scheduler(label, f"it accepted the connection and sent nothing more for {EXCHANGE_SECONDS:g} s") from None
+            raise _not_a_scheduler(label, f"it accepted the connection and sent nothing more for {timeout:g} s") from None
         except OSError as exc:
             raise _not_a_scheduler(label, f"the connection failed: {exc.strerror or exc}") from None
         if not chunk:
@@ -141,11 +141,11 @@ def probe_scheduler(address: str, label: str, timeout: float = EXCHANGE_SECONDS)
                 sock = _tls_context(label).wrap_socket(sock, server_hostname=host.strip("[]"))
             except OSError as exc:
                 raise InvalidInputError(f"{label}: the TLS handshake failed ({exc.strerror or exc})") from None
-        head = _read(sock, 8, deadline, label)
+        head = _read(sock, 8, deadline, label, timeout)
         (size,) = struct.unpack("Q", head)
         if not 16 <= size <= GREETING_LIMIT:
             raise _not_a_scheduler(label, f"it sent {head!r} where a scheduler announces its greeting's length")
-        body = _read(sock, size, deadline, label)
+        body = _read(sock, size, deadline, label, timeout)
     return _greeting(body, label)
 
 
@@ -246,7 +246,7 @@ def _dask_client(spec, workers: int, opened: list):
         opened.append(Client(opened[-1]))
         return opened[-1]
     label = f"executor {spec}"
-    probe_scheduler(spec.address, label)
+    probe_scheduler(spec.address, label, timeout=EXCHANGE_SECONDS)
     try:
         opened.append(Client(spec.address, timeout=EXCHANGE_SECONDS))
     except (OSError, TimeoutError) as exc:

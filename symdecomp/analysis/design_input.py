@@ -33,7 +33,7 @@ from fractions import Fraction
 import sympy as sp
 
 from symdecomp.errors import InvalidInputError
-from symdecomp.expressions import exact_value
+from symdecomp.expressions import MAX_DIGITS, exact_value
 
 __all__ = ["MAX_MAGNITUDE", "MAX_COORDINATE", "MAX_ANGLE", "MAX_DIRECTION", "amount", "vector", "frame", "check_ring_scale"]
 
@@ -56,6 +56,9 @@ _DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]{1,4})
 def _exact(x, argument: str) -> sp.Expr:
     """A number from outside: a decimal text (``0.25``) as the rational it spells, else :func:`exact_value` (never evaluated)."""
     if isinstance(x, str) and _DECIMAL.fullmatch(x.strip()):
+        digits = sum(c.isdigit() for c in x.strip().lower().partition("e")[0])
+        if digits > MAX_DIGITS:  # the expression budget's bound on a number, here too
+            raise InvalidInputError(f"{argument}: a number has at most {MAX_DIGITS} digits, got one of {digits}")
         return sp.Rational(Fraction(x.strip()))
     return exact_value(x, argument=argument)
 

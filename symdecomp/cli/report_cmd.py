@@ -67,9 +67,10 @@ def _figure_path(out: Path, name: str) -> Path:
 
 
 def run(args: argparse.Namespace) -> int:
-    from symdecomp.output.report import FIGURES, SECTIONS, build_report
+    from symdecomp.output.report import FIGURES, SECTIONS, build_report, check_values
 
     fmt = _format(args.out)
+    check_values(args.scheme, SECTIONS)  # free parameters: refused now, not after the claims' minutes
     out = check_output_file(args.out)
     _require_matplotlib()
     if fmt == ".pdf":

@@ -388,6 +388,19 @@ SECTIONS: tuple[Callable[[ReportInput], Section], ...] = (
 )
 
 
+#: The sections that need numbers for a scheme's free parameters (the others work with symbols or say why not).
+NEEDS_VALUES = {spectrum_section: "the spectrum", masks_section: "the limit masks"}
+
+
+def check_values(scheme: Scheme, sections=SECTIONS) -> None:
+    """Refuse a scheme with free parameters at once if one of ``sections`` needs their values (not after the claims'
+    minutes of work)."""
+    needing = [NEEDS_VALUES[s] for s in sections if s in NEEDS_VALUES]
+    if scheme.parameters and needing:
+        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; "
+                                 f"a report needs their values for {' and '.join(needing)}: write them into the scheme file")
+
+
 def check_valences(valences) -> tuple[int, ...]:
     """``valences`` as an ascending tuple of distinct valences ``3 <= n <= MAX_VALENCES``; else the package's error."""
     if isinstance(valences, (str, bytes)) or not hasattr(valences, "__iter__"):
@@ -404,9 +417,8 @@ def build_report(scheme: Scheme, valences, *, budget: float = DEFAULT_BUDGET, se
     """Compute every section of the report on ``scheme`` at ``valences`` (``budget``: seconds per claim's check)."""
     scheme = check_scheme(scheme)
     valences = check_valences(valences)
-    if scheme.parameters:  # refused now: the masks, the C1 test and the figures need numbers, after the claims' minutes
-        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; "
-                                 "a report needs their values (write them into the scheme file)")
+    if isinstance(sections, (tuple, list)):  # an iterator (a progress bar) is checked by its caller, before
+        check_values(scheme, sections)
     for n in valences:
         scheme.fitting_valence(n, real=True)
     inp = ReportInput(scheme, valences, budget)

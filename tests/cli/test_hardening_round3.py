@@ -156,12 +156,14 @@ def test_design_position_at_the_bound_keeps_its_exact_normal(tmp_path, capsys):
 
 
 def test_a_report_on_free_parameters_is_refused_before_any_section():
-    from symdecomp.output.report import build_report
+    from symdecomp.output.report import build_report, check_values, claims_section, scheme_section, shape_section, spectrum_section
     from symdecomp.schemes.files import load_scheme
 
     scheme = load_scheme(ROOT / "tests" / "corpus" / "free-vertex.toml")
-    with pytest.raises(InvalidSchemeError, match=r"free parameters \['alpha', 'beta'\]; a report needs their values"):
-        build_report(scheme, [3], sections=())  # no section at all: the old code found out only inside one
+    with pytest.raises(InvalidSchemeError, match=r"free parameters \['alpha', 'beta'\]; a report needs their values "
+                       r"for the spectrum: write them into the scheme file"):
+        build_report(scheme, [3], sections=(claims_section, spectrum_section))  # old: after the claims' minutes
+    assert check_values(scheme, (scheme_section, shape_section)) is None  # these say "not applicable" themselves
 
 
 def test_a_report_onto_a_fifo_without_a_reader_is_refused_before_the_work(tmp_path):

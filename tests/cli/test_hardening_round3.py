@@ -230,3 +230,14 @@ def test_the_bridge_is_built_in_a_user_cache_not_in_the_package(tmp_path, monkey
     assert build.build_dir() == tmp_path / "symdecomp" / f"opensubdiv-bridge-{build.BRIDGE_VERSION}"  # was HERE/_build
     monkeypatch.setenv(build.BUILD_DIR_VARIABLE, str(tmp_path / "elsewhere"))
     assert build.build_dir() == tmp_path / "elsewhere"
+
+
+def test_a_dask_scheduler_without_workers_is_one_line_not_a_hang(quick_exchanges, capsys):
+    """A scheduler that answers but has no worker would hold the submitted valences forever."""
+    import distributed
+
+    with distributed.LocalCluster(n_workers=0, processes=False, protocol="tcp", dashboard_address=":0") as cluster:
+        address = cluster.scheduler_address
+        assert main(["check", "--n", "5", "--executor", f"dask={address}"]) == 2
+    err = _one_line(capsys.readouterr().err)
+    assert err == f"symdecomp: error: executor dask={address}: the Dask scheduler has no workers (waited 1 s)\n"

@@ -1,4 +1,4 @@
-"""A mesh with a colour and a quality value per vertex, as PLY or OBJ that Blender and MeshLab open.
+"""A mesh written with double coordinates, with a colour and a quality value per vertex: PLY or OBJ for Blender and MeshLab.
 
 :func:`vertex_colors` turns per-vertex values into colours: a verdict or a regime (text) by a fixed table
 (green for ``c1`` and ``bounded``, red for ``not-c1`` and ``unbounded``, blue for ``zero``, amber for
@@ -51,25 +51,34 @@ def vertex_colors(values: np.ndarray) -> np.ndarray:
     return np.array([CATEGORY_COLORS.get(str(v), _GREY) for v in values], dtype=np.uint8).reshape(-1, 3)
 
 
-def colored_ply(points: np.ndarray, faces, colors: np.ndarray, quality: np.ndarray | None = None) -> bytes:
-    """Binary PLY: ``x y z`` doubles, ``red green blue`` uchar, ``quality`` float per vertex; faces as index lists."""
+def colored_ply(points: np.ndarray, faces, colors: np.ndarray | None = None, quality: np.ndarray | None = None) -> bytes:
+    """Binary PLY: ``x y z`` doubles, then (with ``colors``) ``red green blue`` uchar and ``quality`` float per vertex."""
     V = len(points)
-    quality = np.zeros(V) if quality is None else np.asarray(quality, dtype=np.float64)
-    header = ("ply\nformat binary_little_endian 1.0\ncomment symdecomp inspect: vertex colours and quality\n"
-              f"element vertex {V}\nproperty double x\nproperty double y\nproperty double z\n"
-              "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float quality\n"
+    colored = colors is not None
+    extra = "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty float quality\n" if colored else ""
+    header = ("ply\nformat binary_little_endian 1.0\ncomment written by symdecomp\n"
+              f"element vertex {V}\nproperty double x\nproperty double y\nproperty double z\n{extra}"
               f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n").encode("ascii")
-    vertex = np.zeros(V, dtype=[("p", "<f8", 3), ("c", "u1", 3), ("q", "<f4")])
-    vertex["p"], vertex["c"], vertex["q"] = points, colors, np.nan_to_num(quality, nan=0.0)
+    vertex = np.zeros(V, dtype=[("p", "<f8", 3), ("c", "u1", 3), ("q", "<f4")] if colored else [("p", "<f8", 3)])
+    vertex["p"] = points
+    if colored:
+        quality = np.zeros(V) if quality is None else np.asarray(quality, dtype=np.float64)
+        vertex["c"], vertex["q"] = colors, np.nan_to_num(quality, nan=0.0)
     body = [header, vertex.tobytes()]
     for f in faces:
         body.append(np.uint8(len(f)).tobytes() + np.asarray(f, dtype="<i4").tobytes())
     return b"".join(body)
 
 
-def colored_obj(points: np.ndarray, faces, colors: np.ndarray) -> str:
-    """OBJ with ``v x y z r g b`` (colours in ``[0, 1]``) and 1-based ``f`` lines."""
-    lines = [f"v {x!r} {y!r} {z!r} {r / 255:.6g} {g / 255:.6g} {b / 255:.6g}"
-             for (x, y, z), (r, g, b) in zip(np.asarray(points, dtype=np.float64).tolist(), np.asarray(colors).tolist())]
+def colored_obj(points: np.ndarray, faces, colors: np.ndarray | None = None, creases: dict | None = None) -> str:
+    """OBJ with ``v x y z`` (and ``r g b`` in ``[0, 1]`` with ``colors``), 1-based ``f`` lines, and OpenSubdiv's
+    ``t crease 2 1 u v s`` lines for ``creases`` (``(u, v)`` -> sharpness; infinite written as 10)."""
+    xyz = np.asarray(points, dtype=np.float64).tolist()
+    if colors is None:
+        lines = [f"v {x!r} {y!r} {z!r}" for x, y, z in xyz]
+    else:
+        lines = [f"v {x!r} {y!r} {z!r} {r / 255:.6g} {g / 255:.6g} {b / 255:.6g}"
+                 for (x, y, z), (r, g, b) in zip(xyz, np.asarray(colors).tolist())]
     lines += ["f " + " ".join(str(v + 1) for v in f) for f in faces]
+    lines += [f"t crease 2/1/0 {u} {v} {10.0 if s == float('inf') else float(s)!r}" for (u, v), s in (creases or {}).items()]
     return "\n".join(lines) + "\n"

@@ -41,7 +41,7 @@ from symdecomp.cli.files import check_output_directory, check_output_file
 from symdecomp.errors import InvalidInputError, InvalidMeshError
 from symdecomp.schemes.meshformats import FORMATS, read_mesh
 
-__all__ = ["register", "run", "COLOR_BY"]
+__all__ = ["register", "run", "prepare_mesh", "COLOR_BY"]
 
 #: What ``--color-by`` can colour by.
 COLOR_BY = ("verdict", "regime", "kind", "valence", "displacement")
@@ -94,13 +94,13 @@ def _first_defect(defects) -> str:
     return "none"
 
 
-def _prepare(args, mesh):
-    """The scheme and the mesh it analyses: a mixed mesh takes Catmull-Clark's first step exactly."""
+def prepare_mesh(scheme, mesh):
+    """The scheme (``None``: the mesh's) and the mesh it analyses: a mixed mesh takes Catmull-Clark's first step exactly;
+    also the new vertices that came from faces other than quads (``None`` when no step was taken)."""
     from symdecomp.schemes.lattice import QUAD
     from symdecomp.schemes.meshfile import scheme_for_mesh
     from symdecomp.schemes.scheme import catmull_clark
 
-    scheme = args.scheme
     if scheme is None:
         sizes = mesh.face_sizes()
         scheme = scheme_for_mesh(mesh) if len(sizes) == 1 and sizes[0] in (3, 4) else catmull_clark()
@@ -137,7 +137,7 @@ def run(args) -> int:
 
     _check_outputs(args)
     original = _read(args)
-    scheme, mesh, from_faces = _prepare(args, original)
+    scheme, mesh, from_faces = prepare_mesh(args.scheme, original)
     result = mesh_limits(mesh, scheme, exact=args.exact, progress=progress_lines)
     left_out = result.not_analysed()
     if args.strict and left_out:

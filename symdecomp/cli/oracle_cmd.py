@@ -46,7 +46,7 @@ def register(sub) -> None:
                    help="compare at sharp vertices instead: a comma list of boundary, corner, crease, dart (or all); "
                         "every boundary interpolation and creasing method where they differ")
     flag(p, "--boundary", help="short for --kind all")
-    p.add_argument("--mesh", action=Once, default=None, metavar="FILE",
+    p.add_argument("--mesh", dest="mesh_file", action=Once, default=None, metavar="FILE",
                    help="compare the limit positions and normals of every analysed vertex of this mesh file (OBJ with "
                    "OpenSubdiv's tags, OFF, PLY) with OpenSubdiv's limit masks, to 1e-12")
     p.add_argument("--k", type=_k_range, action=Once, default=list(range(1, 13)), metavar="A:B",
@@ -143,7 +143,7 @@ def run(args) -> int:
     except BridgeUnavailableError as exc:
         print(f"symdecomp oracle: {exc}", file=sys.stderr)
         return 3
-    if args.mesh is not None:
+    if args.mesh_file is not None:
         return _run_mesh(args)
     if kinds is not None:
         return _run_sharp(args, kinds)
@@ -169,7 +169,7 @@ def _run_mesh(args) -> int:
 
     if args.kind is not None or args.boundary:
         raise InvalidInputError("--mesh: not with --kind or --boundary (the mesh's own vertices are compared)")
-    original = read_mesh(args.mesh)
+    original = read_mesh(args.mesh_file)
     scheme, mesh, _ = prepare_mesh(args.scheme if given(args, "scheme") else None, original)
     r = compare_mesh(mesh, scheme)
     if args.json:

@@ -80,7 +80,10 @@ def _smooth(scheme: Scheme, kind: NeighbourhoodKind) -> KindMasks:
     scheme.fitting_valence(n)
     classes = position_weights(scheme, n)
     exact = (classes[0],) + tuple(w for w in classes[1:] for _ in range(n))
-    position = np.array([float(sp.N(w, 30)) for w in exact])
+    values = [complex(sp.N(w, 30)) for w in exact]
+    if any(v.imag or not np.isfinite(v.real) for v in values):
+        raise NotApplicableError(f"{scheme.name} at valence {n}: the position mask is not a real vector ({exact[0]}, ...)")
+    position = np.array([v.real for v in values])
     tangents = np.array(_tangent_weights(scheme, n))
     return KindMasks(kind, position, tangents, ("tangent 1", "tangent 2"), exact, None, "")
 

@@ -145,18 +145,18 @@ def run(args) -> int:
         raise InvalidMeshError(f"{mesh.name}: --strict: vertex {v} is not analysed: {why}")
     table = verdicts(scheme, result)
     status = 0 if not left_out and original.defects.is_empty() and all(row["tangent_plane"] is not False for row in table) else 1
+    write_pictures(args, mesh, result, table)
+    if not args.json:
+        print_report(original, mesh, result, table, from_faces)
     details = None
     if args.vertices or args.figures is not None:
         from symdecomp.cli.inspect_vertices import vertex_details
 
         details = vertex_details(args, mesh, scheme)
-    write_pictures(args, mesh, result, table)
     if args.json:
         data = json_report(original, mesh, result, table, from_faces, status, scheme.lattice)
         data.update(details or {})
         print_json(data)
-    else:
-        print_report(original, mesh, result, table, from_faces)
     for row in table:
         if row["tangent_plane"] is False:
             print(f"symdecomp inspect: {row['kind']}: the tangents are not certified the tangent plane's ({row['reason']})",

@@ -150,8 +150,8 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> tuple[Neig
     if not closed and faces == 1 and mesh.tags.interpolate_boundary == "edge-only":
         return "a boundary vertex of one face under edge-only interpolation (the sector model makes it a corner)"
     sharpness = next(iter(inner)) if inner else math.inf
-    if closed and not marks:
-        return "a corner tag on a vertex without sharp edges"
+    if closed and not marks:  # a corner tag alone: the vertex is interpolated, its edges stay smooth
+        return NeighbourhoodKind("corner", faces, (faces,), True, True, Fraction(0)), 0
     if closed:
         count = len(marks)
         sector = [((marks[(j + 1) % count] - marks[j]) % faces) or faces for j in range(count)]

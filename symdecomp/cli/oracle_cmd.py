@@ -180,7 +180,7 @@ def _run_mesh(args) -> int:
         print(f"  {'limit position':<16} {r.position_disagreement:9.2e}  (relative to the mesh's size; worst at vertex "
               f"{r.worst_position_vertex})")
         print(f"  {'unit normal':<16} {r.normal_disagreement:9.2e}  (worst at vertex {r.worst_normal_vertex}; "
-              f"{r.crease_normals_skipped} crease vertices have one normal per side, not compared)")
+              f"{r.normals_skipped} vertices not compared: a crease's two sides, or no certified tangent plane)")
         if r.darts:
             print(f"  {r.darts} dart vertices apart: OpenSubdiv's limit mask there is the smooth one, not the dart's "
                   f"eigenvector (they differ by {r.dart_position_disagreement:.2e})")

@@ -9,7 +9,8 @@ position and first derivatives ``d/du``, ``d/dv``; the normal is ``d/du x d/dv``
 :func:`compare_mesh` reports, over the analysed vertices, the largest distance between the limit positions
 (relative to the mesh's bounding-box diagonal, at least 1) and between the unit normals; they agree when both are
 at most ``tolerance`` (default ``1e-12``). At a crease the surface has one tangent plane per side: the normals are
-not compared there and the crease vertices are counted apart (:attr:`MeshOracleResult.crease_normals_skipped`).
+not compared there, nor where the toolkit's masks are not certified the tangent plane's (an interior corner); those
+vertices are counted apart (:attr:`MeshOracleResult.normals_skipped`).
 
 At a dart OpenSubdiv's limit mask is the smooth vertex's (``Sdc::Scheme::ComputeVertexLimitMask`` treats
 ``RULE_DART`` as ``RULE_SMOOTH``), not a left eigenvector of the dart's subdivision matrix, whose exact mask the
@@ -51,8 +52,9 @@ class MeshOracleResult:
     #: The vertex where each is largest (``None`` with nothing compared).
     worst_position_vertex: int | None
     worst_normal_vertex: int | None
-    #: Crease and interior corner vertices, whose normals are one side's (not compared).
-    crease_normals_skipped: int
+    #: Vertices whose normal is not compared: creases (one tangent plane per side) and vertices whose masks are not
+    #: certified the tangent plane's (an interior corner).
+    normals_skipped: int
     #: Dart vertices (compared apart: OpenSubdiv's limit mask there is the smooth one) and their largest disagreement.
     darts: int
     dart_position_disagreement: float
@@ -113,7 +115,8 @@ def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERA
     size = max(1.0, float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))))
     two_sided, dart = np.zeros(len(points), dtype=bool), np.zeros(len(points), dtype=bool)
     for kind in ours.kinds.kinds:
-        if kind.closed and kind.name != "smooth" and len(kind.sectors) >= 2:
+        masks = ours.masks[kind]
+        if (kind.closed and kind.name != "smooth" and len(kind.sectors) >= 2) or getattr(masks, "tangent_plane", None) is False:
             two_sided[ours.kinds.rings[kind][0]] = True
         if kind.name == "dart":
             dart[ours.kinds.rings[kind][0]] = True

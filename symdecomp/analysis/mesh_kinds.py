@@ -142,9 +142,7 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> tuple[Neig
         return f"a semi-sharp vertex tag ({vertex_sharpness}): the sector model tags corners infinitely sharp"
     corner = vertex_sharpness >= SHARPNESS_INFINITE
     if not marks and not corner:
-        if faces > MAX_SMOOTH_VALENCE:
-            return f"valence {faces} is more than {MAX_SMOOTH_VALENCE}"
-        return NeighbourhoodKind("smooth", faces, (faces,), True), 0
+        return _smooth(faces)
     if faces > MAX_SECTOR_FACES:
         return f"{faces} faces around a sharp vertex, more than {MAX_SECTOR_FACES}"
     if not closed and faces == 1 and mesh.tags.interpolate_boundary == "edge-only":
@@ -165,16 +163,29 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> tuple[Neig
                              mesh.tags.interpolate_boundary == "edge-and-corner"), sharpness), start
 
 
-def _ring(mesh: PolygonMesh, v: int, fan: list[int], closed: bool, quads: bool) -> list[int]:
+def _smooth(faces: int) -> tuple[NeighbourhoodKind, int] | str:
+    """An untagged interior vertex: smooth (the common case, decided without looking at sharpness)."""
+    if faces > MAX_SMOOTH_VALENCE:
+        return f"valence {faces} is more than {MAX_SMOOTH_VALENCE}"
+    return NeighbourhoodKind("smooth", faces, (faces,), True), 0
+
+
+def _opposite(mesh: PolygonMesh) -> dict:
+    """``(O, a) -> b`` for every quad ``(O, a, b, a')``: the face neighbour after each directed edge (one pass)."""
+    table = mesh._topology.get("opposite-corner")
+    if table is None:
+        table = {}
+        for f in mesh.faces:
+            table.update({(f[k], f[(k + 1) % 4]): f[(k + 2) % 4] for k in range(4)})
+        mesh._topology["opposite-corner"] = table
+    return table
+
+
+def _ring(v: int, fan: list[int], closed: bool, opposite: dict | None) -> list[int]:
     """``O, a_0.., b_0..`` with ``b_i`` the corner opposite ``O`` in the face ``(O, a_i, b_i, a_{i+1})``."""
-    if not quads:
+    if opposite is None:
         return [v] + fan
-    directed, faces = mesh._topology["directed"], mesh.faces
-    b = []
-    for a in fan[: len(fan) if closed else len(fan) - 1]:
-        f = faces[directed[(v, a)]]
-        b.append(f[(f.index(v) + 2) % 4])
-    return [v] + fan + b
+    return [v] + fan + [opposite[(v, a)] for a in (fan if closed else fan[:-1])]
 
 
 def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKinds:
@@ -183,8 +194,9 @@ def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKin
     ``progress(iterable, total)``, when given, wraps the loop over the vertices.
     """
     mesh.require_lattice(lattice)
-    quads = lattice.face_neighbours
+    opposite = _opposite(mesh) if lattice.face_neighbours else None
     holes = {x for f in mesh.tags.holes for x in mesh.faces[f]}
+    tagged = {v for e in mesh.tags.creases for v in e} | set(mesh.tags.corners)  # the rest of the interior is smooth
     gathered: dict[NeighbourhoodKind, tuple[list, list]] = {}
     not_analysed: dict[int, str] = {}
     vertices = range(len(mesh.points))
@@ -193,7 +205,7 @@ def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKin
             not_analysed[v] = "a corner of a face tagged as a hole"
             continue
         fan, closed = _fan(mesh, v)
-        kind = _kind(mesh, v, fan, closed)
+        kind = _kind(mesh, v, fan, closed) if v in tagged or not closed else _smooth(len(fan))
         if isinstance(kind, str):
             not_analysed[v] = kind
             continue
@@ -202,7 +214,7 @@ def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKin
             fan = fan[start:] + fan[:start]
         ids, rings = gathered.setdefault(kind, ([], []))
         ids.append(v)
-        rings.append(_ring(mesh, v, fan, closed, quads))
+        rings.append(_ring(v, fan, closed, opposite))
     rings = {k: (np.array(ids, dtype=np.int64), np.array(rs, dtype=np.int64)) for k, (ids, rs) in gathered.items()}
     kind_of = np.full(len(mesh.points), -1, dtype=np.int64)
     for i, k in enumerate(sorted(rings)):

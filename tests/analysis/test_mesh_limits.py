@@ -26,7 +26,7 @@ def idx(x, y):
     return y * (N + 1) + x
 
 
-def grid(tags=MeshTags(), seed=3, triangles=False) -> PolygonMesh:
+def grid(tags=None, seed=3, triangles=False) -> PolygonMesh:
     """An N x N grid of quads (or triangles) with random rational heights, a smooth interior and a boundary."""
     rng = random.Random(seed)
     points = [(x, y, Fraction(rng.randint(-8, 8), 8)) for y in range(N + 1) for x in range(N + 1)]
@@ -36,7 +36,7 @@ def grid(tags=MeshTags(), seed=3, triangles=False) -> PolygonMesh:
             a, b, c, d = idx(x, y), idx(x + 1, y), idx(x + 1, y + 1), idx(x, y + 1)
             faces += [(a, b, c), (a, c, d)] if triangles else [(a, b, c, d)]
     mesh = PolygonMesh.from_arrays(points, faces)
-    return PolygonMesh(mesh.points, mesh.faces, tags=tags)
+    return PolygonMesh(mesh.points, mesh.faces, tags=MeshTags() if tags is None else tags)
 
 
 CREASE = {(idx(0, 2), idx(1, 2)): Fraction(10), (idx(1, 2), idx(2, 2)): Fraction(10), (idx(2, 2), idx(3, 2)): Fraction(10)}

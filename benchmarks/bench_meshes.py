@@ -1,6 +1,6 @@
 """Time ``symdecomp inspect`` on large meshes beside the time to load the same file with numpy.
 
-Two meshes are generated here (nothing is downloaded), written as binary PLY with coordinates on a 1/1024 grid:
+Two meshes are generated here (nothing is downloaded), written as binary PLY with coordinates on a 2^-20 grid:
 
 * a bunny-sized triangle mesh: an icosahedron refined 6 times on the unit sphere (81,920 triangles) with random
   edge flips, so that about a fifth of its vertices get valence 5, 7 or more (a scan's mix of extraordinary
@@ -155,8 +155,8 @@ def _outward(points, faces):
 
 
 def write_ply(path: str, points, faces) -> None:
-    """Binary PLY with doubles on a 1/1024 grid (exact in a double; small denominators for the exact reader)."""
-    points = np.round(np.asarray(points) * 1024) / 1024
+    """Binary PLY with doubles on a 2^-20 grid (exact in a double; small denominators for the exact reader)."""
+    points = np.round(np.asarray(points) * 2**20) / 2**20
     k = len(faces[0])
     header = (f"ply\nformat binary_little_endian 1.0\nelement vertex {len(points)}\nproperty double x\nproperty double y\n"
               f"property double z\nelement face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")

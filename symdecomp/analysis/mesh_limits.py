@@ -3,8 +3,9 @@
 The masks of a vertex depend only on its neighbourhood kind (:mod:`symdecomp.analysis.mesh_kinds`), and a
 mesh of a million faces has a few dozen kinds. :func:`kind_masks` computes a kind's masks exactly, once:
 
-* ``smooth`` valence ``n``: the position mask solved exactly from the frequency-0 block
-  (:func:`~symdecomp.analysis.inspection.position_weights`) and the two tangent masks of frequency 1
+* ``smooth`` valence ``n``: the position mask, the exact left eigenvector of the frequency-0 block for 1 (as
+  :func:`~symdecomp.analysis.inspection.position_weights` solves it, evaluated to 30 digits; its closed form on
+  request, :func:`exact_position`) and the two tangent masks of frequency 1
   (:func:`~symdecomp.analysis.ring_masks.ring_masks`);
 * boundary, crease, corner and dart vertices: the left eigenvectors of the vertex's exact 1-ring matrix
   (:func:`~symdecomp.analysis.sharp_masks.sharp_masks`). At a semi-sharp vertex (sharpness ``s``, finite)
@@ -40,7 +41,7 @@ from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_memory
 
-__all__ = ["KindMasks", "MeshLimits", "kind_masks", "mesh_limits", "float_points", "exact_as_floats"]
+__all__ = ["KindMasks", "MeshLimits", "kind_masks", "mesh_limits", "float_points", "exact_as_floats", "exact_position"]
 
 
 @dataclass(frozen=True)
@@ -54,7 +55,8 @@ class KindMasks:
     tangents: np.ndarray
     #: Their names (``"tangent 1"``, ``"boundary curve tangent"``, ``"cross tangent, sector 1"``, ...).
     tangent_names: tuple[str, ...]
-    #: The position mask exactly (sympy numbers), or ``None`` where it is not a closed form here.
+    #: The position mask exactly (sympy numbers) for sharp kinds, ``None`` for smooth ones (:func:`exact_position`
+    #: brings it to closed form on request) and where it is not a closed form here.
     exact_position: tuple | None
     #: Whether the tangents' eigenvalues are certified the subdominant ones (``None``: the caller decides, smooth kinds).
     tangent_plane: bool | None
@@ -73,19 +75,49 @@ def float_points(mesh: PolygonMesh) -> np.ndarray:
     return np.array(mesh.points, dtype=np.float64).reshape(-1, 3)
 
 
+def _position_values(scheme: Scheme, n: int) -> list[complex]:
+    """The class weights of the position mask ``(w_O, w_a[, w_b])`` to 30 digits: the exact left eigenvector of the
+    frequency-0 block for 1 (as :func:`~symdecomp.analysis.inspection.position_weights` solves it), evaluated without
+    bringing it to a closed form first (sympy's simplification is what costs there)."""
+    from symdecomp.analysis.inspection import position_weights
+    from symdecomp.analysis.ring_blocks import ring_blocks
+
+    blocks = ring_blocks(scheme, 1)
+    E0 = sp.Matrix(blocks.frequency_zero_matrix(n)) - sp.eye(1 + len(blocks.classes))
+    K = E0.shape[0]
+    system = sp.Matrix([[E0[r, c] for r in range(1, K)] for c in range(1, K)])
+    if abs(complex(sp.N(system.det(), 30))) < 1e-20:  # singular or nearly: the exact route decides, and says why
+        return [complex(sp.N(w, 30)) for w in position_weights(scheme, n)]
+    y = [sp.Integer(1)] + list(system.LUsolve(sp.Matrix([-E0[0, c] for c in range(1, K)])))
+    values = [complex(sp.N(x, 30)) for x in y]
+    total = sum(values)
+    return [values[0] / total] + [x / (n * total) for x in values[1:]]
+
+
 def _smooth(scheme: Scheme, kind: NeighbourhoodKind) -> KindMasks:
-    from symdecomp.analysis.inspection import _tangent_weights, position_weights
+    from symdecomp.analysis.inspection import _tangent_weights
 
     n = kind.faces
     scheme.fitting_valence(n)
-    classes = position_weights(scheme, n)
-    exact = (classes[0],) + tuple(w for w in classes[1:] for _ in range(n))
-    values = [complex(sp.N(w, 30)) for w in exact]
-    if any(v.imag or not np.isfinite(v.real) for v in values):
-        raise NotApplicableError(f"{scheme.name} at valence {n}: the position mask is not a real vector ({exact[0]}, ...)")
+    classes = _position_values(scheme, n)
+    values = [classes[0]] + [w for w in classes[1:] for _ in range(n)]
+    if any(abs(v.imag) > 1e-25 or not np.isfinite(v.real) for v in values):
+        raise NotApplicableError(f"{scheme.name} at valence {n}: the position mask is not a real vector ({classes[0]}, ...)")
     position = np.array([v.real for v in values])
     tangents = np.array(_tangent_weights(scheme, n))
-    return KindMasks(kind, position, tangents, ("tangent 1", "tangent 2"), exact, None, "")
+    return KindMasks(kind, position, tangents, ("tangent 1", "tangent 2"), None, None, "")
+
+
+def exact_position(scheme: Scheme, masks: KindMasks) -> tuple | None:
+    """The position mask of ``masks``' kind exactly (sympy numbers, one per 1-ring point), or ``None`` where it is not
+    a closed form here (a semi-sharp kind; a sharp mask past degree 2)."""
+    from symdecomp.analysis.inspection import position_weights
+
+    if masks.exact_position is not None or masks.kind.name != "smooth":
+        return masks.exact_position
+    n = masks.kind.faces
+    classes = position_weights(scheme, n)
+    return (classes[0],) + tuple(w for w in classes[1:] for _ in range(n))
 
 
 def _floats(mask) -> np.ndarray:
@@ -218,8 +250,9 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
         ids, rings = kinds.rings[kind]
         edge_count = kind.faces + (0 if kind.closed else 1)
         limits[ids], normals[ids], tangents[ids] = _apply(points, rings, m, edge_count)
-        if exact and m.exact_position is not None:
-            exact_limits.update({int(v): _exact_limit(mesh, ring, m.exact_position) for v, ring in zip(ids, rings.tolist())})
+        weights = exact_position(scheme, m) if exact else None
+        if weights is not None:
+            exact_limits.update({int(v): _exact_limit(mesh, ring, weights) for v, ring in zip(ids, rings.tolist())})
     return MeshLimits(scheme.name, kinds, masks, limits, normals, tangents, dict(sorted(exact_limits.items())))
 
 

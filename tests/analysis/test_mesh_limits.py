@@ -10,7 +10,7 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.mesh_kinds import NeighbourhoodKind, classify_vertices
-from symdecomp.analysis.mesh_limits import exact_as_floats, kind_masks, mesh_limits
+from symdecomp.analysis.mesh_limits import exact_as_floats, exact_position, kind_masks, mesh_limits
 from symdecomp.analysis.sharp_masks import sharp_masks
 from symdecomp.schemes.lattice import QUAD
 from symdecomp.schemes.loop import loop
@@ -46,8 +46,9 @@ CREASE = {(idx(0, 2), idx(1, 2)): Fraction(10), (idx(1, 2), idx(2, 2)): Fraction
 def test_smooth_catmull_clark_masks_are_the_closed_forms(n):
     """The position mask of a smooth valence-n kind, exactly: n/(n+5) on O, 4/(n(n+5)) on a_i, 1/(n(n+5)) on b_i."""
     m = kind_masks(catmull_clark(), NeighbourhoodKind("smooth", n, (n,), True))
-    assert m.exact_position == (sp.Rational(n, n + 5),) + (sp.Rational(4, n * (n + 5)),) * n + (sp.Rational(1, n * (n + 5)),) * n
-    assert m.position == pytest.approx([float(x) for x in m.exact_position], abs=1e-16)
+    exact = exact_position(catmull_clark(), m)
+    assert exact == (sp.Rational(n, n + 5),) + (sp.Rational(4, n * (n + 5)),) * n + (sp.Rational(1, n * (n + 5)),) * n
+    assert m.position == pytest.approx([float(x) for x in exact], abs=1e-15)
     assert m.position.sum() == pytest.approx(1, abs=1e-15)
 
 
@@ -98,6 +99,13 @@ def test_the_numpy_application_is_the_exact_limit_to_1e_12(tags):
     exact = np.array([exact_as_floats(r.exact[v]) for v in range(36)])
     assert np.max(np.abs(exact - r.limits)) < 1e-12
     assert np.allclose(np.linalg.norm(r.normals, axis=1), 1)
+
+
+@pytest.mark.parametrize("n", [3, 5, 7, 9])
+def test_loop_s_position_mask_is_the_exact_one(n):
+    """Loop's smooth masks, evaluated without closed forms, equal the closed-form exact weights to 1e-15."""
+    m = kind_masks(loop(), NeighbourhoodKind("smooth", n, (n,), True))
+    assert m.position == pytest.approx(exact_as_floats(exact_position(loop(), m)), abs=1e-15)
 
 
 def test_loop_on_triangles_and_its_exact_limits():

@@ -184,6 +184,8 @@ class MeshLimits:
     tangents: np.ndarray
     #: Vertex -> exact limit position (sympy numbers), with ``exact=True`` only.
     exact: dict
+    #: Vertex -> why its float limit is missing although its kind has masks (coordinates too large for doubles).
+    numeric: dict
 
     def analysed(self) -> np.ndarray:
         """Boolean per vertex: whether it has a limit position."""
@@ -192,6 +194,7 @@ class MeshLimits:
     def not_analysed(self) -> dict[int, str]:
         """Vertex -> why it has no limit data (its kind, or its kind's masks)."""
         out = dict(self.kinds.not_analysed)
+        out.update(self.numeric)
         for kind, masks in self.masks.items():
             if isinstance(masks, str):
                 out.update({int(v): f"{kind}: {masks}" for v in self.kinds.rings[kind][0]})
@@ -242,7 +245,9 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
     V = len(points)
     check_memory(120 * V + 1, f"{mesh.name}: the limit data of {V} vertices")
     limits, normals, tangents = np.full((V, 3), np.nan), np.full((V, 3), np.nan), np.full((V, 2, 3), np.nan)
-    masks, exact_limits = {}, {}
+    masks, exact_limits, overflow = {}, {}, {}
+    largest = float(np.max(np.abs(points))) if V else 1.0
+    scale = largest if largest > 1e100 or 0 < largest < 1e-100 else 1.0  # keep the products in the double range
     for kind in wrap(kinds.kinds, len(kinds.kinds), "kinds"):
         try:
             masks[kind] = m = kind_masks(scheme, kind)
@@ -251,11 +256,16 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
             continue
         ids, rings = kinds.rings[kind]
         edge_count = kind.faces + (0 if kind.closed else 1)
-        limits[ids], normals[ids], tangents[ids] = _apply(points, rings, m, edge_count)
+        with np.errstate(all="ignore"):  # coordinates near the double range: scaled, and what overflows is named below
+            limit, normals[ids], tangent = _apply(points / scale, rings, m, edge_count)
+            limits[ids], tangents[ids] = limit * scale, tangent * scale
+        bad = ids[~np.isfinite(limits[ids]).all(axis=1)]
+        limits[bad], normals[bad], tangents[bad] = np.nan, np.nan, np.nan
+        overflow.update({int(v): "its 1-ring's coordinates overflow double precision in the masks" for v in bad})
         weights = exact_position(scheme, m) if exact else None
         if weights is not None:
             exact_limits.update({int(v): _exact_limit(mesh, ring, weights) for v, ring in zip(ids, rings.tolist())})
-    return MeshLimits(scheme.name, kinds, masks, limits, normals, tangents, dict(sorted(exact_limits.items())))
+    return MeshLimits(scheme.name, kinds, masks, limits, normals, tangents, dict(sorted(exact_limits.items())), overflow)
 
 
 def exact_as_floats(values) -> tuple[float, ...]:

@@ -126,3 +126,20 @@ def test_a_semi_sharp_crease_folds_its_levels_into_the_masks():
     assert not np.allclose(m.position, sharp.position)
     r = mesh_limits(grid(MeshTags(creases=crease)), catmull_clark())
     assert r.analysed().all() and math.isfinite(float(r.limits.sum()))
+
+
+def test_coordinates_near_the_double_range_give_finite_limits_and_no_warnings():
+    """Issue 35, item 17: a mesh near 1e308 printed nan tangents and numpy warnings. The masks are applied to the
+    points scaled into range: the limits are the exact ones (a cube's corner: its limit (1/2)(x, y, z) at scale), the
+    normals unit vectors, and nothing is warned."""
+    import warnings
+
+    big = Fraction(3, 2) * 10**308
+    cube = PolygonMesh.from_arrays([(x * big, y * big, z * big) for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)],
+                                   [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = mesh_limits(cube, catmull_clark(), exact=True)
+    assert r.not_analysed() == {} and np.isfinite(r.normals).all()
+    assert r.limits[0] == pytest.approx([float(x) for x in r.exact[0]], rel=1e-15)
+    assert r.normals[0] == pytest.approx(-np.ones(3) / math.sqrt(3), abs=1e-15)

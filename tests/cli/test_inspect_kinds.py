@@ -118,3 +118,22 @@ def test_a_fifo_as_out_is_written_not_replaced(tmp_path):
     assert main(["inspect", str(MODEL), "--out", str(fifo)]) == 0
     reader.join(10)
     assert got and got[0].startswith(b"v ") and fifo.is_fifo()
+
+
+def test_the_memory_estimate_comes_before_reading(tmp_path, capsys, monkeypatch):
+    """A mesh whose estimated memory is past the limit is refused before it is read, in one line; a FIFO given as
+    the mesh is never opened by the estimate (the reader is the one to refuse it)."""
+    import os
+
+    import symdecomp.cli.inspect_cmd as inspect_cmd
+    import symdecomp.validate as validate
+    from symdecomp.cli.inspect_outputs import MEMORY_PER_FILE_BYTE, memory_note
+
+    monkeypatch.setattr(validate, "MEMORY_LIMIT", 10 * MEMORY_PER_FILE_BYTE["text"])
+    monkeypatch.setattr(inspect_cmd, "read_mesh", lambda *a, **k: pytest.fail("read before the estimate"))
+    assert main(["inspect", str(MODEL)]) != 0
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "reading" in err and "valences-3-5-6.obj" in err and "memory" in err
+    fifo = tmp_path / "mesh.obj"
+    os.mkfifo(fifo)
+    assert memory_note(fifo) is None  # returns at once: a FIFO is not opened

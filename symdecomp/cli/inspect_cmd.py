@@ -152,7 +152,9 @@ def run(args) -> int:
     if args.vertices or args.figures is not None:
         from symdecomp.cli.inspect_vertices import vertex_details
 
-        details = vertex_details(args, mesh, scheme)
+        smooth = [int(v) for k in result.kinds.kinds if k.name == "smooth" and not k.is_regular(scheme.lattice)
+                  for v in result.kinds.rings[k][0]]
+        details = vertex_details(args, mesh, scheme, sorted(smooth))
     if args.json:
         data = json_report(original, mesh, result, table, from_faces, status, scheme.lattice)
         data.update(details or {})

@@ -1,7 +1,7 @@
 """``symdecomp inspect MESH --vertices``: one row per interior extraordinary vertex, its 1-ring decomposed.
 
 The detailed view of :mod:`symdecomp.cli.inspect_cmd` (which by default prints one row per neighbourhood kind):
-for each interior extraordinary vertex (:mod:`symdecomp.analysis.inspection`) the limit position (exact from the
+for each smooth interior extraordinary vertex (no sharp edge or tag at it) (:mod:`symdecomp.analysis.inspection`) the limit position (exact from the
 position mask; the row shows it to 6 digits), the unit normal from the tangent masks, the size of the
 tangent-plane part (n-gon frequency 1), the elliptic heights (frequency 0: the centroids of the ``a_i`` and
 ``b_i`` above the tangent plane through ``O``) and the hyperbolic part (frequency 2) with its share off the
@@ -137,11 +137,12 @@ def subdominance(scheme, valences) -> dict[int, tuple[bool, str]]:
     return out
 
 
-def vertex_details(args, mesh, scheme) -> dict | None:
-    """Print the per-vertex table (or return its JSON part) and write ``--figures``; the exact route, vertex by vertex."""
-    from symdecomp.analysis.inspection import inspect_mesh
+def vertex_details(args, mesh, scheme, vertices) -> dict | None:
+    """Print the per-vertex table of ``vertices`` (the smooth extraordinary ones; or return its JSON part) and write
+    ``--figures``; the exact route, vertex by vertex."""
+    from symdecomp.analysis.inspection import MeshInspection, inspect_vertex
 
-    result = inspect_mesh(mesh, scheme, progress=lambda xs, total: progress(xs, total, "vertices"))
+    result = MeshInspection(scheme.name, tuple(inspect_vertex(mesh, v, scheme) for v in progress(vertices, len(vertices), "vertices")), ())
     artifacts = _artifacts(result, scheme)
     if args.figures is not None:
         _figures(args, mesh, result)

@@ -39,7 +39,7 @@ from symdecomp.analysis.mesh_kinds import NeighbourhoodKind, VertexKinds, classi
 from symdecomp.errors import InvalidMeshError, NotApplicableError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import cached, check_memory
+from symdecomp.validate import cached, check_memory, check_type
 
 __all__ = ["KindMasks", "MeshLimits", "kind_masks", "mesh_limits", "float_points", "exact_as_floats", "exact_position"]
 
@@ -152,9 +152,7 @@ def _sharp(scheme: Scheme, kind: NeighbourhoodKind) -> KindMasks:
 
 
 def _check_kind(kind) -> NeighbourhoodKind:
-    if not isinstance(kind, NeighbourhoodKind):
-        raise InvalidMeshError(f"kind must be a NeighbourhoodKind, got {type(kind).__name__}")
-    return kind
+    return check_type(kind, NeighbourhoodKind, "kind", hint="a kind of symdecomp.analysis.mesh_kinds.classify_vertices")
 
 
 @cached(maxsize=512, scheme=check_scheme, kind=_check_kind)

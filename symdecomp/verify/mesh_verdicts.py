@@ -20,9 +20,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
-from symdecomp.errors import InvalidMeshError, NotApplicableError
+from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import cached
+from symdecomp.validate import cached, check_type
 
 __all__ = ["KindVerdict", "kind_verdict"]
 
@@ -42,9 +42,7 @@ class KindVerdict:
 
 
 def _check_kind(kind) -> NeighbourhoodKind:
-    if not isinstance(kind, NeighbourhoodKind):
-        raise InvalidMeshError(f"kind must be a NeighbourhoodKind, got {type(kind).__name__}")
-    return kind
+    return check_type(kind, NeighbourhoodKind, "kind", hint="a kind of symdecomp.analysis.mesh_kinds.classify_vertices")
 
 
 def _c1(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:

@@ -46,7 +46,9 @@ nothing else.
                    patch (quartic box spline) in Bezier form (``box_spline``), a modeller's polygon
                    mesh validated with its 1-rings and extraordinary vertices (``meshfile``), read
                    and written as OBJ, OFF and PLY (``meshformats``), its sharpness tags and
-                   the elements left out of it (``mesh_tags``)
+                   the elements left out of it (``mesh_tags``); one exact Catmull-Clark step on a mesh
+                   of any polygons (``polygon_step``), whole meshes refined exactly with their tags
+                   (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
                    spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
@@ -66,7 +68,9 @@ nothing else.
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``), of the patches of a
                    boundary or corner vertex (``sharp_evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
-                   (``inspection``); second-order characteristic maps, the elliptic and hyperbolic
+                   (``inspection``); every vertex of a mesh classified by its neighbourhood kind
+                   (``mesh_kinds``) and its limit position and normal from exact masks per kind applied
+                   with numpy (``mesh_limits``); second-order characteristic maps, the elliptic and hyperbolic
                    height fields on the ring (``second_order``); control nets designed for prescribed
                    limit properties (``design``; its inputs checked against their bounds, ``design_input``),
                    and the least change of a 1-ring for a normal or no hyperbolic part (``redesign``); boundary, crease, corner and dart vertices
@@ -93,7 +97,9 @@ nothing else.
                    the artifact indicators (``artifacts``); certified shape at the vertex: the sign
                    of the Gaussian curvature of a central surface (``curvature``), elliptic,
                    hyperbolic or hybrid, and the shape chart (``shape``); the certificate of the mirror
-                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``)
+                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``); a mesh's
+                   kinds' C1 verdicts and curvature regimes (``mesh_verdicts``) and its limits against
+                   OpenSubdiv's (``oracle_mesh``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
@@ -105,7 +111,8 @@ nothing else.
                    (``applicability``), computed evidence (``evidence``), the paper's notation
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
-                   ``texlayout``), the artifact table's columns (``artifact_table``), Stam's data file (``evaldata``), figures (``plotting``):
+                   ``texlayout``), the artifact table's columns (``artifact_table``), Stam's data file (``evaldata``), meshes
+                   with per-vertex colours as PLY and OBJ (``colored_mesh``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
                    vertices (``plotting.meshes``), Reif's test
@@ -120,7 +127,8 @@ nothing else.
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
-                   ``evaldata_cmd``, ``inspect_cmd``, ``design_cmd``, ``report_cmd``),
+                   ``evaldata_cmd``, ``inspect_cmd`` (its outputs ``inspect_outputs``, its per-vertex table
+                   ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
                    (``sharp``)

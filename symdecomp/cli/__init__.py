@@ -46,7 +46,7 @@ __all__ = ["main", "entry", "build_parser", "EXIT_CODES"]
 
 #: Subcommand modules of this package, in the order ``--help`` lists them.
 COMMANDS = ("claims_cmd", "derive_cmd", "spectrum_cmd", "charpoly_cmd", "oracle_cmd", "tune_cmd", "masks_cmd", "check_cmd", "c1_cmd",
-            "artifacts_cmd", "evaldata_cmd", "inspect_cmd", "design_cmd", "report_cmd")
+            "artifacts_cmd", "evaldata_cmd", "inspect_cmd", "refine_cmd", "design_cmd", "report_cmd")
 
 #: The exit codes of every command.
 EXIT_CODES = {

@@ -1,211 +1,172 @@
-"""``symdecomp inspect MESH``: the extraordinary vertices of a mesh file, their limit points and 1-ring components.
+"""``symdecomp inspect MESH``: every vertex of a mesh file classified, its limit point and normal, verdicts by kind.
 
-Reads an OBJ, OFF or PLY polygon mesh (:mod:`symdecomp.schemes.meshformats`; the extension names the
-format, or ``--format``), checks that the scheme can take it (one line naming the element otherwise:
-``model.obj: edge (3, 7) is shared by 3 faces [0, 2, 6] (non-manifold edge)``, exit status 2), and prints
-one row per interior extraordinary vertex (:mod:`symdecomp.analysis.inspection`): the limit position
-(exact from the position mask; the row shows it to 6 digits), the unit normal from the tangent masks,
-the size of the tangent-plane part (n-gon frequency 1), the elliptic heights (frequency 0: the centroids
-of the ``a_i`` and ``b_i`` above the tangent plane through ``O``) and the hyperbolic part (frequency 2)
-with its share off the tangent plane. Boundary vertices are counted and skipped.
+Reads an OBJ, OFF or PLY polygon mesh (:mod:`symdecomp.schemes.meshformats`; the extension names the format,
+or ``--format``; OpenSubdiv's ``t crease``/``t corner`` tags with it), classifies every vertex by its
+neighbourhood kind as OpenSubdiv tags it (:mod:`symdecomp.analysis.mesh_kinds`: smooth valence ``n``; boundary,
+crease, corner, dart with their sectors' face counts and sharpness), computes each kind's exact masks and
+verdicts once (:mod:`symdecomp.analysis.mesh_limits`; C1 and the curvature regime,
+:mod:`symdecomp.verify.mesh_verdicts`) and applies the masks to every vertex of the kind with numpy. It prints
+one row per kind: how many vertices, the C1 verdict, the curvature regime, whether the tangents span the
+tangent plane; then the vertices not analysed, with why.
 
-Exit status 1 (with a line on stderr) when at some valence of the mesh ``lambda_1`` is not certified to be the
-subdominant eigenvalue of the 1-ring (as ``symdecomp masks N`` decides): the normals there are not a tangent
-plane's. A scheme whose eigenvalue 1 is not simple at a valence of the mesh has no limit position there: exit 2.
+A mesh with faces other than the scheme's (a quad mesh with triangles, n-gons): for Catmull-Clark its first
+step is taken exactly (:mod:`symdecomp.schemes.polygon_step`) and the refined mesh is analysed; the report
+names the extraordinary points that came from faces (the centres of the n-gons).
 
-The scheme: ``--scheme`` (a name or a TOML file), else Catmull-Clark for a mesh of quads and Loop for a mesh
-of triangles; a mesh with other faces is refused with the reason (split it into quads first, e.g. with
-:meth:`~symdecomp.schemes.meshfile.PolygonMesh.split_into_quads`).
+Exit status: 0 when every vertex was analysed, 1 when something was left out (vertices not analysed,
+elements of the file left out of the mesh, or a valence where ``lambda_1`` is not certified subdominant),
+2 for a file that cannot be read or a mesh the scheme cannot take; ``--strict`` makes anything left out an
+error (exit 2, one line naming it).
 
-JSON (``--json``): ``{"mesh", "scheme", "vertices": V, "faces": F, "skipped_boundary": [...], "extraordinary":
-[{"vertex", "valence", "ring", "limit_exact": ["x", "y", "z"], "limit": [x, y, z], "normal", "tangents",
-"tangent_size", "tangent_off_plane", "elliptic_heights", "hyperbolic_size", "hyperbolic_off_plane",
-"rest_size", "components": [{"frequencies", "ngon_frequency", "radii", "size", "off_plane"}], "artifacts": {"regime",
-"cause", "shape", "density"} or null}], "subdominance": {"N": {"certified", "why"}}, "artifacts_not_applicable": {"N":
-reason}}``; numbers are doubles, ``limit_exact`` exact (sympy text).
+``--out FILE.ply|FILE.obj`` writes the (analysed) mesh with a colour per vertex by ``--color-by``: ``verdict``
+(C1: green c1, red not-c1, amber undecided, grey not analysed or n/a), ``regime`` (green bounded, blue zero, red
+unbounded), ``kind``, ``valence``, ``displacement`` (distance of the vertex from its limit point, scaled by the
+mesh's size; a ramp blue-white-red), and the value as PLY ``quality``. ``--plot FILE.png`` draws the mesh
+coloured the same way. ``--exact`` adds the exact limit positions (slow: vertex by vertex). ``--vertices``
+adds the detailed per-vertex table of the extraordinary vertices (:mod:`symdecomp.cli.inspect_vertices`).
 
-The artifact indicators of each vertex's valence (:func:`~symdecomp.verify.artifacts.artifact_indicators`, as
-``symdecomp artifacts --n N --scheme S`` prints them; computed once per valence, since they depend on the scheme
-and the valence only): the curvature regime at the vertex (bounded, zero: a flat spot, unbounded) and the
-frequency causing it, the certified shape class of the central surface for elliptic input, and the density
-(``lambda_1`` against the regular 1/2). Where they do not apply (free parameters, regular rules that are not
-Catmull-Clark's or Loop's) the columns say ``n/a`` and one line gives the reason.
-
-``--figures DIR`` writes ``vertex-<index>.png`` per extraordinary vertex (the 1-ring in the tangent plane
-with its tangent-plane and hyperbolic components, and the heights off the plane); the directory's other
-files stay, its earlier ``vertex-*.png`` are replaced, all in one step.
+JSON (``--json``): ``{"mesh", "scheme", "vertices", "faces", "refined_first": bool, "from_faces": {"new vertex":
+old face}, "kinds": [{"kind", "name", "faces", "sectors", "closed", "corner", "sharpness", "count", "c1",
+"c1_reason", "regime", "tangent_plane", "tangents", "levels"}], "not_analysed": {"vertex": reason},
+"defects": {...}, "extraordinary": [{"vertex", "kind", "limit", "normal"} (and "limit_exact")], "exit_status"}``.
 """
 
 from __future__ import annotations
 
-import re
+import inspect as _inspect
 import sys
 
 from symdecomp.cli.common import Once, flag, print_json, progress, scheme_by_name
-from symdecomp.cli.files import check_output_directory, replace_owned_files
-from symdecomp.cli.masks_cmd import lambda_1_subdominance
-from symdecomp.errors import NotApplicableError, UnavailableError
-from symdecomp.schemes.meshfile import scheme_for_mesh
+from symdecomp.cli.files import check_output_directory, check_output_file
+from symdecomp.errors import InvalidInputError, InvalidMeshError
 from symdecomp.schemes.meshformats import FORMATS, read_mesh
 
-__all__ = ["register", "run"]
+__all__ = ["register", "run", "prepare_mesh", "COLOR_BY"]
 
-_OWNED = re.compile(r"vertex-[0-9]+\.png\Z")
+#: What ``--color-by`` can colour by.
+COLOR_BY = ("verdict", "regime", "kind", "valence", "displacement")
 
 
 def register(sub) -> None:
     p = sub.add_parser(
         "inspect",
-        help="the extraordinary vertices of a mesh file (OBJ, OFF, PLY): limit points, normals, 1-ring components",
-        description="For every interior extraordinary vertex of the mesh: the limit position (exact position mask), "
-        "the limit normal and tangents (tangent masks), and the 1-ring decomposed into planar regular polygons "
-        "(Eq. 5, 6, 11): sizes of the tangent-plane (frequency 1), elliptic (frequency 0) and hyperbolic "
-        "(frequency 2) parts; and its valence's artifact indicators (as symdecomp artifacts computes them, once per "
-        "valence): the curvature regime at the vertex and its cause, the density and the shape class of the central "
-        "surface for elliptic input, or n/a with the reason once. A mesh the scheme cannot take (non-manifold edge or vertex, inconsistent "
-        "orientation, degenerate face, a face of the wrong kind) is refused in one line naming the element.",
+        help="every vertex of a mesh file (OBJ, OFF, PLY) classified: limit points, normals, C1 and curvature by kind",
+        description="Classify every vertex of the mesh by its neighbourhood kind (smooth valence n; boundary, crease, "
+        "corner, dart, as OpenSubdiv tags it), compute each kind's exact limit masks, C1 verdict and curvature regime "
+        "once, and apply the masks to all vertices of the kind. Prints one row per kind and the vertices not analysed "
+        "with why; exit status 0 when everything was analysed, 1 when something was left out, 2 for an unreadable file.",
     )
     p.add_argument("mesh", metavar="MESH", help="the mesh file: .obj, .off or .ply (faces counter-clockwise from outside)")
     p.add_argument("--scheme", type=scheme_by_name, action=Once, default=None, metavar="NAME|FILE",
-                   help="subdivision scheme: a known name or a TOML scheme file (default: catmull-clark for a quad mesh, "
-                   "loop for a triangle mesh)")
+                   help="subdivision scheme: a known name or a TOML scheme file (default: catmull-clark for quads or a "
+                   "mixed mesh, loop for a triangle mesh)")
     p.add_argument("--format", choices=FORMATS, action=Once, default=None, help="the file format, if not its extension")
+    p.add_argument("--out", action=Once, default=None, metavar="FILE",
+                   help="write the mesh with per-vertex colours (.ply: red green blue and quality; .obj: v x y z r g b)")
+    p.add_argument("--color-by", choices=COLOR_BY, action=Once, default="verdict", help="what --out and --plot colour by "
+                   "(default: verdict)")
+    p.add_argument("--plot", action=Once, default=None, metavar="FILE.png", help="draw the mesh coloured by --color-by")
     p.add_argument("--figures", action=Once, default=None, metavar="DIR",
                    help="write one figure per extraordinary vertex, DIR/vertex-<index>.png (needs matplotlib)")
-    flag(p, "--json", help='print {"mesh", "scheme", "skipped_boundary", "extraordinary": [one object per vertex]}')
+    flag(p, "--vertices", help="also print the detailed table of each interior extraordinary vertex (exact; small meshes)")
+    flag(p, "--exact", help="also compute every limit position exactly (vertex by vertex: slow)")
+    flag(p, "--strict", help="refuse (exit 2) instead of leaving a vertex or an element of the file out")
+    flag(p, "--json", help='print {"mesh", "scheme", "kinds", "not_analysed", "defects", "extraordinary", ...}')
     p.set_defaults(func=run)
 
 
-def _g(x) -> str:
-    return "-" if x is None else f"{x:.6g}"
+def _read(args):
+    """The mesh (lenient unless ``--strict`` where the reader offers it) and its scheme."""
+    from symdecomp.cli.inspect_outputs import memory_note
+
+    memory_note(args.mesh)
+    strict = {"strict": args.strict} if "strict" in _inspect.signature(read_mesh).parameters else {}
+    mesh = read_mesh(args.mesh, args.format, **strict)
+    if args.strict and not mesh.defects.is_empty():
+        raise InvalidMeshError(f"{mesh.name}: --strict: the file has elements a scheme cannot take: {_first_defect(mesh.defects)}")
+    return mesh
 
 
-def _triple(xs) -> str:
-    return "-" if xs is None else " ".join(f"{round(x, 6) + 0.0:>10.6f}" for x in xs)  # no "-0.000000"
+def _first_defect(defects) -> str:
+    for name, items in defects.as_dict().items():
+        if items:
+            return f"{name.replace('_', ' ')} {items[0]}"
+    return "none"
 
 
-def _json(mesh, result, artifacts: dict[int, dict | str]) -> dict:
-    def vertex(r) -> dict:
-        return {"vertex": r.vertex, "valence": r.valence, "ring": list(r.ring), "limit_exact": [str(x) for x in r.limit_exact],
-                "limit": list(r.limit), "normal": None if r.normal is None else list(r.normal), "tangents": [list(t) for t in r.tangents],
-                "tangent_size": r.tangent_size, "tangent_off_plane": r.tangent_off_plane, "elliptic_heights": list(r.elliptic_heights),
-                "hyperbolic_size": r.hyperbolic_size, "hyperbolic_off_plane": r.hyperbolic_off_plane, "rest_size": r.rest_size,
-                "components": [{"frequencies": list(c.frequencies), "ngon_frequency": c.ngon_frequency, "radii": list(c.radii),
-                                "size": c.size, "off_plane": c.off_plane} for c in r.components],
-                "artifacts": _indicators_of(artifacts, r.valence)}
+def prepare_mesh(scheme, mesh):
+    """The scheme (``None``: the mesh's) and the mesh it analyses: a mixed mesh takes Catmull-Clark's first step exactly;
+    also the new vertices that came from faces other than quads (``None`` when no step was taken)."""
+    from symdecomp.schemes.lattice import QUAD
+    from symdecomp.schemes.meshfile import scheme_for_mesh
+    from symdecomp.schemes.scheme import catmull_clark
 
-    return {"mesh": mesh.name, "scheme": result.scheme, "vertices": len(mesh.points), "faces": len(mesh.faces),
-            "skipped_boundary": list(result.skipped_boundary), "extraordinary": [vertex(r) for r in result.vertices],
-            "artifacts_not_applicable": {str(n): v for n, v in artifacts.items() if isinstance(v, str)}}
+    if scheme is None:
+        sizes = mesh.face_sizes()
+        scheme = scheme_for_mesh(mesh) if len(sizes) == 1 and sizes[0] in (3, 4) else catmull_clark()
+    if scheme.lattice is QUAD and mesh.face_sizes() != (4,):
+        if scheme.name != "catmull-clark":
+            mesh.require_lattice(scheme.lattice, scheme.name)
+        from symdecomp.schemes.polygon_step import catmull_clark_polygon_step
 
-
-def _artifact_cells(indicators: dict | None) -> str:
-    if indicators is None:
-        return f"{'n/a':<24}  {'n/a':<12}  n/a"
-    regime = indicators["regime"] + ("" if indicators["cause"] is None else f" ({indicators['cause']})")
-    return f"{regime:<24}  {indicators['density']:<12}  {indicators['shape']}"
-
-
-def _print_table(mesh, result, artifacts: dict[int, dict | str]) -> None:
-    print(f"{mesh.name}: {len(mesh.points)} vertices, {len(mesh.faces)} faces; scheme {result.scheme}; "
-          f"{len(result.vertices)} extraordinary vertices; {len(result.skipped_boundary)} boundary vertices skipped")
-    print(f"{'vertex':>6} {'n':>3}  {'limit position':^32}  {'normal':^32}  {'tangent':>9}  {'elliptic heights':^21}  "
-          f"{'hyperbolic (off plane)':>22}  {'curvature regime (cause)':<24}  {'density':<12}  shape")
-    for r in result.vertices:
-        heights = " ".join(f"{h:>10.3g}" for h in r.elliptic_heights)
-        hyper = "-" if r.hyperbolic_size is None else f"{_g(r.hyperbolic_size)} ({_g(r.hyperbolic_off_plane)})"
-        cells = _artifact_cells(_indicators_of(artifacts, r.valence))
-        print(f"{r.vertex:>6} {r.valence:>3}  {_triple(r.limit)}  {_triple(r.normal)}  {_g(r.tangent_size):>9}  {heights:<21}  "
-              f"{hyper:>22}  {cells}".rstrip())
-    for reason, valences in _not_applicable(artifacts).items():
-        print(f"artifact indicators n/a at valence {', '.join(map(str, valences))}: {reason}")
+        step = catmull_clark_polygon_step(mesh)
+        from_faces = {step.face_point[i]: i for i, f in enumerate(mesh.faces) if len(f) != 4}
+        return scheme, step.mesh, from_faces
+    mesh.require_lattice(scheme.lattice, scheme.name)
+    return scheme, mesh, None
 
 
-def _artifacts(result, scheme) -> dict[int, dict | str]:
-    """Per valence of an extraordinary vertex: its artifact indicators (regime, cause, shape, density), or why they do not apply."""
-    from symdecomp.verify.artifacts import artifact_indicators
+def _check_outputs(args) -> None:
+    if args.out is not None:
+        check_output_file(args.out, "--out")
+        if not str(args.out).lower().endswith((".ply", ".obj")):
+            raise InvalidInputError(f"--out {args.out}: give a .ply or .obj file name (the format follows the extension)")
+    if args.plot is not None:
+        check_output_file(args.plot, "--plot")
+    if args.figures is not None:
+        check_output_directory(args.figures, "--figures")
+    if args.figures is not None or args.plot is not None:
+        from symdecomp.cli.inspect_vertices import require_matplotlib
 
-    out: dict[int, dict | str] = {}
-    for n in sorted({r.valence for r in result.vertices}):
-        try:
-            a = artifact_indicators(scheme, n).as_json()
-        except NotApplicableError as exc:
-            out[n] = str(exc)
-            continue
-        out[n] = {"regime": a["curvature"]["regime"], "cause": a["curvature"]["cause"], "shape": a["shape"]["text"],
-                  "density": a["density"]}
-    return out
-
-
-def _indicators_of(artifacts: dict[int, dict | str], n: int) -> dict | None:
-    value = artifacts[n]
-    return value if isinstance(value, dict) else None
-
-
-def _not_applicable(artifacts: dict[int, dict | str]) -> dict[str, list[int]]:
-    """Each reason the indicators do not apply, once, with its valences."""
-    out: dict[str, list[int]] = {}
-    for n, value in artifacts.items():
-        if isinstance(value, str):
-            out.setdefault(value, []).append(n)
-    return out
-
-
-def _figures(args, mesh, result) -> None:
-    from symdecomp.output.plotting.meshes import png_bytes, vertex_figure
-
-    files = {}
-    for r in progress(result.vertices, len(result.vertices), "figures"):
-        files[f"vertex-{r.vertex}.png"] = png_bytes(vertex_figure(r, [[float(c) for c in mesh.points[v]] for v in r.ring]))
-    replace_owned_files(args.figures, files, _OWNED, "--figures")
-
-
-def _require_matplotlib() -> None:
-    """--figures needs matplotlib: say so before the work starts (exit 3), not after."""
-    from symdecomp.output.plotting._mpl import require_matplotlib
-
-    try:
         require_matplotlib()
-    except ImportError as exc:
-        raise UnavailableError(f"--figures: {exc}") from None
-
-
-def _subdominance(mesh, scheme) -> dict[int, tuple[bool, str]]:
-    """Per valence of an extraordinary vertex: whether ``lambda_1`` is certified subdominant (the normal is a tangent plane's)."""
-    out = {}
-    for n in sorted({mesh.valence(v) for v in mesh.extraordinary_vertices(scheme.lattice)}):
-        certified, why, one_simple = lambda_1_subdominance(scheme, n)
-        if not one_simple:
-            raise NotApplicableError(f"{mesh.name}: {scheme.name} at valence {n}: {why}; no limit position is defined there")
-        out[n] = (certified, why)
-    return out
 
 
 def run(args) -> int:
-    from symdecomp.analysis.inspection import inspect_mesh
+    from symdecomp.analysis.mesh_limits import mesh_limits
+    from symdecomp.cli.inspect_outputs import json_report, print_report, verdicts, write_pictures
 
-    if args.figures is not None:
-        check_output_directory(args.figures, "--figures")
-        _require_matplotlib()
-    mesh = read_mesh(args.mesh, args.format)
-    scheme = args.scheme if args.scheme is not None else scheme_for_mesh(mesh)
-    mesh.require_lattice(scheme.lattice, scheme.name)
-    subdominant = _subdominance(mesh, scheme)
-    result = inspect_mesh(mesh, scheme, progress=lambda xs, total: progress(xs, total, "inspect"))
-    artifacts = _artifacts(result, scheme)
-    if args.figures is not None:
-        _figures(args, mesh, result)
+    _check_outputs(args)
+    original = _read(args)
+    scheme, mesh, from_faces = prepare_mesh(args.scheme, original)
+    result = mesh_limits(mesh, scheme, exact=args.exact, progress=progress_lines)
+    left_out = result.not_analysed()
+    if args.strict and left_out:
+        v, why = next(iter(left_out.items()))
+        raise InvalidMeshError(f"{mesh.name}: --strict: vertex {v} is not analysed: {why}")
+    table = verdicts(scheme, result)
+    status = 0 if not left_out and original.defects.is_empty() and all(row["tangent_plane"] is not False for row in table) else 1
+    write_pictures(args, mesh, result, table)
+    if not args.json:
+        print_report(original, mesh, result, table, from_faces)
+    details = None
+    if args.vertices or args.figures is not None:
+        from symdecomp.cli.inspect_vertices import vertex_details
+
+        smooth = [int(v) for k in result.kinds.kinds if k.name == "smooth" and not k.is_regular(scheme.lattice)
+                  for v in result.kinds.rings[k][0]]
+        details = vertex_details(args, mesh, scheme, sorted(smooth))
     if args.json:
-        data = _json(mesh, result, artifacts)
-        data["subdominance"] = {str(n): {"certified": c, "why": why} for n, (c, why) in subdominant.items()}
+        data = json_report(original, mesh, result, table, from_faces, status, scheme.lattice)
+        data.update(details or {})
         print_json(data)
-    else:
-        _print_table(mesh, result, artifacts)
-    if result.skipped_boundary and not args.json:
-        print(f"note: boundary vertices are not analysed (boundary rules are a later issue): {len(result.skipped_boundary)} skipped",
-              file=sys.stderr)
-    for n, (certified, why) in subdominant.items():
-        if not certified:
-            print(f"symdecomp inspect: at valence {n} lambda_1 is not certified the subdominant eigenvalue ({why}); the normals "
-                  "there are the tangent masks' cross product, not a tangent plane's", file=sys.stderr)
-    return 0 if all(c for c, _ in subdominant.values()) else 1
+    for row in table:
+        if row["tangent_plane"] is False:
+            print(f"symdecomp inspect: {row['kind']}: the tangents are not certified the tangent plane's ({row['reason']})",
+                  file=sys.stderr)
+    return status
+
+
+def progress_lines(items, total: int, what: str):
+    """The one place this command reports progress (a bar on a terminal)."""
+    return progress(items, total, f"inspect: {what}")
+

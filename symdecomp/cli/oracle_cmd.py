@@ -2,6 +2,12 @@
 
 ``symdecomp oracle --kind boundary,corner,crease,dart --k 1:12 --sharpness 0,1/2,1,5/2,inf``: the same at
 boundary, corner, crease and dart vertices (:mod:`symdecomp.verify.oracle_sharp`).
+
+``symdecomp oracle --mesh FILE``: the limit position and normal of every analysed vertex of a mesh file (with its
+crease and corner tags), as ``symdecomp inspect`` computes them, against OpenSubdiv's limit masks, to 1e-12
+(:mod:`symdecomp.verify.oracle_mesh`; darts apart: OpenSubdiv gives them the smooth limit mask). The scheme is the
+mesh's (Catmull-Clark for quads and mixed meshes, after its first exact step; Loop for triangles) unless
+``--scheme`` names one.
 """
 
 from __future__ import annotations
@@ -40,6 +46,9 @@ def register(sub) -> None:
                    help="compare at sharp vertices instead: a comma list of boundary, corner, crease, dart (or all); "
                         "every boundary interpolation and creasing method where they differ")
     flag(p, "--boundary", help="short for --kind all")
+    p.add_argument("--mesh", dest="mesh_file", action=Once, default=None, metavar="FILE",
+                   help="compare the limit positions and normals of every analysed vertex of this mesh file (OBJ with "
+                   "OpenSubdiv's tags, OFF, PLY) with OpenSubdiv's limit masks, to 1e-12")
     p.add_argument("--k", type=_k_range, action=Once, default=list(range(1, 13)), metavar="A:B",
                    help="with --kind: faces per sector, one or an inclusive range (default 1:12, at most 16)")
     p.add_argument("--sharpness", type=_sharpness_list, action=Once, default=None, metavar="LIST",
@@ -134,6 +143,8 @@ def run(args) -> int:
     except BridgeUnavailableError as exc:
         print(f"symdecomp oracle: {exc}", file=sys.stderr)
         return 3
+    if args.mesh_file is not None:
+        return _run_mesh(args)
     if kinds is not None:
         return _run_sharp(args, kinds)
     results = [compare(n, args.levels, args.seed) for n in progress(args.n, len(args.n), "oracle")]
@@ -148,6 +159,32 @@ def run(args) -> int:
                 flag = "" if p.agrees else "  <-- disagrees"
                 print(f"  {p.name:<30} {p.kind:<5} {p.disagreement:9.2e}{rate}{seen}{flag}")
     return 0 if all(r.agrees for r in results) else 1
+
+
+def _run_mesh(args) -> int:
+    from symdecomp.cli.common import given
+    from symdecomp.cli.inspect_cmd import prepare_mesh
+    from symdecomp.schemes.meshformats import read_mesh
+    from symdecomp.verify.oracle_mesh import compare_mesh
+
+    if args.kind is not None or args.boundary:
+        raise InvalidInputError("--mesh: not with --kind or --boundary (the mesh's own vertices are compared)")
+    original = read_mesh(args.mesh_file)
+    scheme, mesh, _ = prepare_mesh(args.scheme if given(args, "scheme") else None, original)
+    r = compare_mesh(mesh, scheme)
+    if args.json:
+        print_json(r.as_json())
+    else:
+        print(f"{original.name}: {scheme.name}, {r.compared} vertices compared with OpenSubdiv's limit masks "
+              f"({r.levels} levels first): {'all agree' if r.agrees else 'DISAGREEMENT'} (tolerance {r.tolerance:.0e})")
+        print(f"  {'limit position':<16} {r.position_disagreement:9.2e}  (relative to the mesh's size; worst at vertex "
+              f"{r.worst_position_vertex})")
+        print(f"  {'unit normal':<16} {r.normal_disagreement:9.2e}  (worst at vertex {r.worst_normal_vertex}; "
+              f"{r.normals_skipped} vertices not compared: a crease's two sides, or no certified tangent plane)")
+        if r.darts:
+            print(f"  {r.darts} dart vertices apart: OpenSubdiv's limit mask there is the smooth one, not the dart's "
+                  f"eigenvector (they differ by {r.dart_position_disagreement:.2e})")
+    return 0 if r.agrees else 1
 
 
 def _run_sharp(args, kinds) -> int:

@@ -231,7 +231,7 @@ def test_a_truncated_bridge_is_rebuilt(private_bridge):
 def test_a_bridge_that_returns_nothing_is_reported_with_the_fix(private_bridge, monkeypatch, tmp_path, capsys):
     osd, osd_build = private_bridge
     stub = tmp_path / "stub.cpp"
-    stub.write_text('extern "C" { int symdecomp_osd_bridge_version() { return 1; }\n'
+    stub.write_text(f'extern "C" {{ int symdecomp_osd_bridge_version() {{ return {osd_build.BRIDGE_VERSION}; }}\n'
                     "int symdecomp_osd_refine_ring(int, int, const int*, const double*, int, int, const int*, const int*,"
                     " int, double*, double*, char*, int) { return 0; } }\n")
     library = tmp_path / "stub.so"

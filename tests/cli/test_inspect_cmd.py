@@ -1,4 +1,5 @@
-"""``symdecomp inspect MESH``: one row per extraordinary vertex; a malformed mesh is exit status 2 and one line naming the element."""
+"""``symdecomp inspect MESH``: a malformed mesh is exit status 2 and one line naming the element; ``--vertices``: one row
+per extraordinary vertex (the kinds' table, coloured outputs and exit codes: ``test_inspect_kinds.py``)."""
 
 import json
 import subprocess
@@ -54,8 +55,7 @@ MALFORMED = [
     ("bowtie.obj", obj([(0, 1, 2), (0, 3, 4)], "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\n"),
      "vertex 0 joins 2 separate fans of faces (non-manifold vertex)"),
     ("pillow.obj", obj([(0, 1, 2, 3), (0, 3, 4, 1)], SQUARE_V + "v 0.5 0.5 1\n"), "vertex 0 is interior with 2 faces"),
-    ("triangle.obj", obj(CUBE_F[:5] + [(1, 3, 7), (1, 7, 5)]), "face 0 is a quad and face 5 is a triangle, and no scheme takes it"),
-    ("pentagons.off", off([(0, 1, 2, 3, 4)], [(0, 0, 0), (2, 0, 0), (3, 2, 0), (1, 3, 0), (-1, 2, 0)]), "every face is a 5-gon"),
+    ("loop-on-mixed.obj", obj(CUBE_F[:5] + [(1, 3, 7), (1, 7, 5)]), "face 0 is a quad; loop takes triangle meshes only"),
     ("loop-on-quads.obj", obj(CUBE_F), "face 0 is a quad; loop takes triangle meshes only"),
     ("binary.obj", "v 0 0 0\n\udcff", "not a text file"),
 ]
@@ -86,11 +86,18 @@ def test_a_missing_file_and_a_bad_figures_directory_are_named(tmp_path, capsys):
     assert "--figures" in capsys.readouterr().err
 
 
+def vertex_rows(out: str) -> list[str]:
+    """The rows of the ``--vertices`` table (after its header line)."""
+    lines = out.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.split()[:2] == ["vertex", "n"])
+    return lines[start + 1 :]
+
+
 def test_one_row_per_extraordinary_vertex_of_the_model(capsys):
-    assert main(["inspect", str(MODEL)]) == 0
-    lines = capsys.readouterr().out.splitlines()
-    assert lines[0].startswith("valences-3-5-6.obj: 36 vertices, 34 faces; scheme catmull-clark; 13 extraordinary vertices")
-    rows = [line.split() for line in lines[2:]]
+    assert main(["inspect", str(MODEL), "--vertices"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("valences-3-5-6.obj: 36 vertices, 34 faces; scheme catmull-clark; 36 of 36 vertices analysed in 4 kinds")
+    rows = [line.split() for line in vertex_rows(out) if not line.startswith("artifact indicators")]
     assert sorted({int(r[1]) for r in rows}) == [3, 5, 6] and len(rows) == 13
     by_vertex = {int(r[0]): r for r in rows}
     # vertex 11 (valence 5): its limit position from the exact mask, (1/40, -3/200, 47/40)
@@ -98,22 +105,25 @@ def test_one_row_per_extraordinary_vertex_of_the_model(capsys):
 
 
 def test_json_has_the_exact_limits_and_the_components(capsys):
-    assert main(["inspect", str(MODEL), "--json"]) == 0
+    assert main(["inspect", str(MODEL), "--json", "--vertices"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["scheme"] == "catmull-clark" and data["skipped_boundary"] == []
-    six = next(v for v in data["extraordinary"] if v["valence"] == 6)
+    assert data["scheme"] == "catmull-clark" and data["not_analysed"] == {}
+    six = next(v for v in data["extraordinary_details"] if v["valence"] == 6)
     assert six["limit_exact"] == ["-12/275", "6/275", "-64/55"] and six["hyperbolic_size"] > 0
     # the 12-gon of a valence-6 1-ring: frequencies 0 and 6 alone, five coplanar pairs (Eq. 6)
     assert [c["frequencies"] for c in six["components"]] == [[0], [1, 11], [2, 10], [3, 9], [4, 8], [5, 7], [6]]
 
 
-def test_a_boundary_vertex_is_skipped_with_a_note(tmp_path, capsys):
+def test_boundary_vertices_are_analysed(tmp_path, capsys):
+    """Issue 31: the boundary is no longer skipped ("boundary rules are a later issue" is gone): the corners of a
+    2 x 2 grid are corner vertices of one face, the edge midpoints boundary vertices of two faces."""
     grid = "".join(f"v {x} {y} {(x * y) % 3}\n" for y in range(3) for x in range(3))
     (tmp_path / "grid.obj").write_text(obj([(0, 1, 4, 3), (1, 2, 5, 4), (3, 4, 7, 6), (4, 5, 8, 7)], grid))
     assert main(["inspect", str(tmp_path / "grid.obj")]) == 0
     out, err = capsys.readouterr()
-    assert "0 extraordinary vertices; 8 boundary vertices skipped" in out
-    assert err.strip() == "note: boundary vertices are not analysed (boundary rules are a later issue): 8 skipped"
+    assert "9 of 9 vertices analysed in 3 kinds" in out and err == ""
+    assert [line.split()[1:6] for line in out.splitlines()[2:]] == [
+        ["boundary", "k", "=", "1,", "corner"], ["boundary", "k", "=", "2", "4"], ["smooth", "n", "=", "4", "1"]]
 
 
 def fan(n: int) -> str:
@@ -154,12 +164,13 @@ def test_a_scheme_without_a_tangent_plane_or_a_limit_is_said_so(capsys):
     assert err.count("\n") == 1 and "double-one at valence 3: the eigenvalue 1 is not simple" in err
     # a subdominant eigenvalue at frequency 2 (valence 5): rows printed (artifact indicators n/a, the reason once), exit 1,
     # one line per valence on stderr
-    assert main(["inspect", str(MODEL), "--scheme", str(corpus / "negative-other-root.toml")]) == 1
+    assert main(["inspect", str(MODEL), "--scheme", str(corpus / "negative-other-root.toml"), "--vertices"]) == 1
     out, err = capsys.readouterr()
-    assert len(out.splitlines()) == 2 + 13 + 1 and out.splitlines()[-1].startswith("artifact indicators n/a at valence 3, 5, 6: ")
+    rows = vertex_rows(out)
+    assert len(rows) == 13 + 1 and rows[-1].startswith("artifact indicators n/a at valence 3, 5, 6: ")
     assert [line.split(" (")[0] for line in err.splitlines()] == [
-        "symdecomp inspect: at valence 5 lambda_1 is not certified the subdominant eigenvalue",
-        "symdecomp inspect: at valence 6 lambda_1 is not certified the subdominant eigenvalue"]
+        "symdecomp inspect: smooth n = 5: the tangents are not certified the tangent plane's",
+        "symdecomp inspect: smooth n = 6: the tangents are not certified the tangent plane's"]
 
 
 def test_a_triangle_mesh_in_ply_goes_to_loop(tmp_path, capsys):
@@ -173,8 +184,9 @@ def test_a_triangle_mesh_in_ply_goes_to_loop(tmp_path, capsys):
     (tmp_path / "octahedron.ply").write_bytes(encode_mesh(PolygonMesh.from_arrays(points, faces), "ply"))
     assert main(["inspect", str(tmp_path / "octahedron.ply"), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["scheme"] == "loop" and [v["valence"] for v in data["extraordinary"]] == [4] * 6
-    first = data["extraordinary"][0]
+    assert data["scheme"] == "loop" and [v["kind"] for v in data["extraordinary"]] == ["smooth n = 4"] * 6
+    assert main(["inspect", str(tmp_path / "octahedron.ply"), "--json", "--exact"]) == 0
+    first = json.loads(capsys.readouterr().out)["extraordinary"][0]
     assert first["limit_exact"] == ["24/55", "0", "0"]
     assert first["normal"] == pytest.approx([1, 0, 0], abs=1e-15)
 
@@ -188,19 +200,19 @@ def test_each_vertex_has_its_valences_artifact_indicators(capsys, monkeypatch):
     calls = []
     real = artifacts.artifact_indicators
     monkeypatch.setattr(artifacts, "artifact_indicators", lambda s, n: calls.append(n) or real(s, n))
-    assert main(["inspect", str(MODEL), "--json"]) == 0
+    assert main(["inspect", str(MODEL), "--json", "--vertices"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert sorted(calls) == [3, 5, 6] and data["artifacts_not_applicable"] == {}
-    for v in data["extraordinary"]:
+    assert {3, 5, 6} <= set(calls) <= {3, 4, 5, 6} and data["artifacts_not_applicable"] == {}
+    for v in data["extraordinary_details"]:
         expected = real(catmull_clark(), v["valence"])
         assert v["artifacts"] == {"regime": expected.curvature.regime.value, "cause": expected.curvature.as_json()["cause"],
                                   "shape": expected.shape_text, "density": expected.density_text}
         curvature = expected.curvature.as_json()
         mu, square = abs(float(curvature["mu"][0]["value"])), float(curvature["lambda1_squared"])
         assert v["artifacts"]["regime"] == ("zero" if mu < square else "unbounded")  # no regular valence 4 in the model
-    assert main(["inspect", str(MODEL)]) == 0
-    rows = {int(line.split()[0]): line for line in capsys.readouterr().out.splitlines()[2:]}
-    for v in data["extraordinary"]:
+    assert main(["inspect", str(MODEL), "--vertices"]) == 0
+    rows = {int(line.split()[0]): line for line in vertex_rows(capsys.readouterr().out)}
+    for v in data["extraordinary_details"]:
         a = v["artifacts"]
         assert rows[v["vertex"]].endswith(f"{a['regime']} ({a['cause']})".ljust(24) + f"  {a['density']:<12}  {a['shape']}")
 
@@ -214,11 +226,11 @@ def test_artifact_indicators_not_applicable_say_why_once(capsys):
     path = ROOT / "tests" / "corpus" / "moved.toml"
     with pytest.raises(NotApplicableError) as exc:
         artifact_indicators(load_scheme(str(path)), 3)
-    assert main(["inspect", str(MODEL), "--scheme", str(path), "--json"]) == 0
+    assert main(["inspect", str(MODEL), "--scheme", str(path), "--json", "--vertices"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert all(v["artifacts"] is None for v in data["extraordinary"])
+    assert all(v["artifacts"] is None for v in data["extraordinary_details"])
     assert data["artifacts_not_applicable"] == {"3": str(exc.value), "5": str(exc.value), "6": str(exc.value)}
-    assert main(["inspect", str(MODEL), "--scheme", str(path)]) == 0
-    lines = capsys.readouterr().out.splitlines()
-    assert len(lines) == 2 + 13 + 1 and all(line.endswith("n/a") for line in lines[2:-1])
+    assert main(["inspect", str(MODEL), "--scheme", str(path), "--vertices"]) == 0
+    lines = vertex_rows(capsys.readouterr().out)
+    assert len(lines) == 13 + 1 and all(line.endswith("n/a") for line in lines[:-1])
     assert lines[-1] == f"artifact indicators n/a at valence 3, 5, 6: {exc.value}"

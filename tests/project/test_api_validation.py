@@ -27,6 +27,8 @@ from symdecomp.analysis.elliptic import scale_ratio_squared
 from symdecomp.analysis.evolution import subdivision_matrix_numeric
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.analysis.inspection import position_weights
+from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
+from symdecomp.analysis.mesh_limits import kind_masks
 from symdecomp.analysis.ring_spectrum import frequency_factors
 from symdecomp.analysis.support import limit_mask
 from symdecomp.analysis.support_window import window
@@ -36,6 +38,7 @@ from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeE
 from symdecomp.output.plotting.boundary import sector_modes, subdominant_eigenvalues
 from symdecomp.schemes.box_spline import regular_limit_mask, regular_patch
 from symdecomp.verify.certify import symmetric_functions
+from symdecomp.verify.mesh_verdicts import kind_verdict
 from symdecomp.verify.oracle import toolkit_predictions
 from symdecomp.verify.tuning_c1 import certified_tuning_region
 
@@ -137,6 +140,8 @@ INTEGERS = [
 
 #: ``(function, the other arguments)`` of the functions that take a scheme.
 SCHEMES = [
+    (kind_masks, dict(kind=NeighbourhoodKind("smooth", 5, (5,), True))),
+    (kind_verdict, dict(kind=NeighbourhoodKind("smooth", 5, (5,), True))),
     (sd.subdivision_matrix, dict(n=5)),
     (sd.circulant_blocks, dict()),
     (sd.per_frequency_matrix, dict()),

@@ -8,6 +8,10 @@
 * the heights along the normal of the 1-ring's points, in polygon order (``a_0, b_0, a_1, ..`` on quads),
   with the elliptic (frequency 0: the planes of ``A^0`` and ``B^0``) and hyperbolic parts.
 
+:func:`colored_mesh_figure` draws a whole mesh with a colour per vertex (each face the mean of its corners'
+colours, at most :data:`MAX_DRAWN_FACES` faces: a larger mesh is drawn from an even sample of its faces), as
+``symdecomp inspect --plot`` colours it.
+
 :func:`png_bytes` renders a figure as PNG bytes without metadata that changes from run to run.
 """
 
@@ -20,7 +24,7 @@ import numpy as np
 from symdecomp.algebra.polygons import decompose
 from symdecomp.output.plotting._mpl import label_axes, new_figure
 
-__all__ = ["vertex_figure", "png_bytes"]
+__all__ = ["vertex_figure", "colored_mesh_figure", "png_bytes"]
 
 
 def _ring_polygon(points: np.ndarray, n: int) -> np.ndarray:
@@ -69,6 +73,34 @@ def vertex_figure(report, points):
         right.plot(index, hyper @ normal, "-", color="C3", label="hyperbolic (k = 2)")
     right.axhline(0, color="k", lw=0.5)
     label_axes(right, "point of the 1-ring polygon", "height along the normal", "off the tangent plane through O", loc="best")
+    return fig
+
+
+#: Most faces :func:`colored_mesh_figure` draws (an even sample of a larger mesh's faces).
+MAX_DRAWN_FACES = 20000
+
+
+def colored_mesh_figure(points, faces, colors, title: str):
+    """The mesh seen from a fixed direction, each face coloured by the mean of its vertices' ``colors`` (uint8 RGB)."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    points = np.asarray(points, dtype=float)
+    colors = np.asarray(colors, dtype=float) / 255
+    step = max(1, len(faces) // MAX_DRAWN_FACES)
+    chosen = faces[::step]
+    polygons = [points[list(f)] for f in chosen]
+    face_colors = [colors[list(f)].mean(axis=0) for f in chosen]
+    fig = new_figure(7, 6)
+    ax = fig.add_subplot(projection="3d")
+    ax.add_collection3d(Poly3DCollection(polygons, facecolors=face_colors, edgecolors=(0, 0, 0, 0.15), linewidths=0.2))
+    low, high = points.min(axis=0), points.max(axis=0)
+    centre, half = (low + high) / 2, float((high - low).max()) / 2 or 1.0
+    ax.set_xlim(centre[0] - half, centre[0] + half)
+    ax.set_ylim(centre[1] - half, centre[1] + half)
+    ax.set_zlim(centre[2] - half, centre[2] + half)
+    ax.set_box_aspect((1, 1, 1))
+    ax.set_axis_off()
+    ax.set_title(title + ("" if step == 1 else f" (every {step}th face drawn)"))
     return fig
 
 

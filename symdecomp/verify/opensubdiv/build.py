@@ -30,7 +30,7 @@ HERE = Path(__file__).resolve().parent
 SOURCE = HERE / "osd_bridge.cpp"
 HEADER = "opensubdiv/far/primvarRefiner.h"
 #: The version of the bridge's C interface this package expects (``symdecomp_osd_bridge_version()``).
-BRIDGE_VERSION = 1
+BRIDGE_VERSION = 2
 #: The environment variable that chooses the build folder.
 BUILD_DIR_VARIABLE = "SYMDECOMP_BRIDGE_DIR"
 

@@ -127,7 +127,7 @@ static int guarded(char *error, int error_len, Body body) {
 extern "C" {
 
 // Version of this bridge's C interface (bumped when the signature changes).
-int symdecomp_osd_bridge_version() { return 1; }
+int symdecomp_osd_bridge_version() { return 2; }
 
 // Refine the quad mesh `levels` times with OpenSubdiv's Catmull-Clark scheme and write, for
 // every level 0..levels, the points (O, a_0..a_{n-1}, b_0..b_{n-1}) of the 1-ring of `center`
@@ -633,6 +633,61 @@ int symdecomp_osd_sharp_patch_points(const int *options, int per_face, int n_ver
                     o[3 + c] += wu[m] * points[cvs[m]].p[c];
                     o[6 + c] += wv[m] * points[cvs[m]].p[c];
                 }
+            }
+        }
+        return 0;
+    });
+}
+
+}  // extern "C"
+
+// ---------------------------------------------------------------------------------------------
+// Limit frames of every base vertex of a whole tagged mesh (oracle --mesh): the mesh is refined
+// uniformly `levels` times (enough for every semi-sharp crease to have decayed), and the limit
+// position and first derivatives of each base vertex are OpenSubdiv's limit masks
+// (Far::PrimvarRefiner::Limit) at its descendant vertex on the last level, 3 doubles each.
+
+extern "C" {
+
+int symdecomp_osd_tagged_limit_frames(const int *options, int per_face, int n_vertices, int n_faces,
+                                      const int *face_vertices, const double *positions, int n_creases,
+                                      const int *crease_pairs, const float *crease_weights, int n_corners,
+                                      const int *corner_vertices, const float *corner_weights, int levels,
+                                      double *limits_out, double *du_out, double *dv_out, char *error, int error_len) {
+    return guarded(error, error_len, [&]() -> int {
+        if (n_vertices <= 0 || n_faces <= 0 || levels < 0 || levels > 10) {
+            set_error(error, error_len, "bad sizes");
+            return 1;
+        }
+        SharpTags tags{n_creases, crease_pairs, crease_weights, n_corners, corner_vertices, corner_weights};
+        std::unique_ptr<Far::TopologyRefiner> refiner =
+            make_sharp_refiner(options, per_face, n_vertices, n_faces, face_vertices, tags, error, error_len);
+        if (!refiner) return 2;
+        if (levels > 0) {
+            Far::TopologyRefiner::UniformOptions uniform(levels);
+            uniform.fullTopologyInLastLevel = true;
+            refiner->RefineUniform(uniform);
+        }
+        if (osd_error(error, error_len)) return 6;
+        std::vector<Point> buffer = base_points(*refiner, n_vertices, positions);
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        std::vector<Point *> start = interpolate(*refiner, primvar, buffer, levels);
+        const int last = refiner->GetLevel(levels).GetNumVertices();
+        std::vector<Point> limit(static_cast<size_t>(last)), du(limit.size()), dv(limit.size());
+        Point *limit_dst = limit.data(), *du_dst = du.data(), *dv_dst = dv.data();
+        primvar.Limit(start[levels], limit_dst, du_dst, dv_dst);
+        if (osd_error(error, error_len)) return 6;
+        for (int v = 0; v < n_vertices; ++v) {
+            int at = v;
+            for (int level = 0; level < levels; ++level) at = refiner->GetLevel(level).GetVertexChildVertex(at);
+            if (at < 0) {
+                set_error(error, error_len, "a base vertex has no descendant on the last level");
+                return 7;
+            }
+            for (int c = 0; c < 3; ++c) {
+                limits_out[3 * v + c] = limit[at].p[c];
+                du_out[3 * v + c] = du[at].p[c];
+                dv_out[3 * v + c] = dv[at].p[c];
             }
         }
         return 0;

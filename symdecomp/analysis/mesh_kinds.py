@@ -1,0 +1,222 @@
+"""Every vertex of a modeller's mesh classified by its neighbourhood kind, as OpenSubdiv tags it.
+
+A vertex's *kind* decides its limit masks: an interior vertex without sharp edges is ``smooth`` with its
+valence ``n``; a vertex on the boundary or on sharp edges is a
+:class:`~symdecomp.schemes.sector.SharpVertex`: its fan of faces (open on a boundary, closed inside) split
+by the sharp edges into sectors of ``k_1, k_2, ..`` faces, tagged as a corner or not, with the sharpness of
+its sharp edges that are not boundary edges. OpenSubdiv's rule (``Sdc::Crease``) counts the sharp edges at
+the vertex, boundary edges counted as infinitely sharp under ``edge-only`` and ``edge-and-corner``
+interpolation: none is smooth, one a dart, two a crease (a boundary vertex with no inner sharp edge is
+one), more or a sharp vertex a corner; under ``edge-and-corner`` a boundary vertex of one face is a corner.
+
+:func:`classify_vertices` returns one :class:`VertexKinds`: the distinct kinds, and per kind the vertices
+of that kind with their ordered 1-rings in the masks' order (``O, a_0.., b_0..``; ``a_0`` on the first sharp
+edge, faces ``(O, a_i, b_i, a_{i+1})`` counter-clockwise), gathered into one integer array per kind, so that a
+kind's masks apply to all its vertices with one matrix product. A vertex whose kind the toolkit cannot analyse
+(next to a hole, sharp edges of different sharpness, a semi-sharp vertex tag, too many faces, the boundary
+left out under ``none`` interpolation) is listed with the reason.
+
+>>> from symdecomp.schemes.meshfile import PolygonMesh
+>>> grid = PolygonMesh.from_arrays([(x, y, 0) for y in range(3) for x in range(3)],
+...     [(0, 1, 4, 3), (1, 2, 5, 4), (3, 4, 7, 6), (4, 5, 8, 7)])
+>>> from symdecomp.schemes.lattice import QUAD
+>>> kinds = classify_vertices(grid, QUAD)
+>>> sorted(str(k) for k in kinds.rings)
+['boundary k = 1, corner', 'boundary k = 2', 'smooth n = 4']
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+import numpy as np
+
+from symdecomp.schemes.meshfile import PolygonMesh
+from symdecomp.schemes.sector import MAX_SECTOR_FACES, SharpVertex
+from symdecomp.schemes.sharp import SHARPNESS_INFINITE
+
+__all__ = ["NeighbourhoodKind", "VertexKinds", "classify_vertices", "MAX_SMOOTH_VALENCE"]
+
+#: Most faces around a smooth interior vertex analysed (the exact masks are solved per valence).
+MAX_SMOOTH_VALENCE = 64
+
+
+@dataclass(frozen=True, order=True)
+class NeighbourhoodKind:
+    """One kind of vertex neighbourhood: ``smooth`` valence ``n``, or a sharp vertex (:attr:`sharp`)."""
+
+    #: ``"smooth"``, ``"boundary"``, ``"dart"``, ``"crease"`` or ``"corner"`` (OpenSubdiv's words; a sharp
+    #: interior vertex with three or more sharp edges is a ``"corner"``).
+    name: str
+    #: Faces around the vertex (its valence when interior).
+    faces: int
+    #: Faces of each sector between sharp edges (``(n,)`` when smooth).
+    sectors: tuple[int, ...]
+    #: Whether the fan of faces is closed (an interior vertex).
+    closed: bool
+    #: Tagged or made a corner (interpolated).
+    corner: bool = False
+    #: Sharpness of the inner sharp edges (``inf`` when infinitely sharp or none).
+    sharpness: float | Fraction = math.inf
+
+    def __str__(self) -> str:
+        if self.name == "smooth":
+            return f"smooth n = {self.faces}"
+        where = "boundary" if not self.closed else self.name
+        sectors = ",".join(map(str, self.sectors))
+        extra = (", corner" if self.corner and where != "corner" else "") + (
+            "" if math.isinf(self.sharpness) or (not self.closed and len(self.sectors) == 1) else f", sharpness {self.sharpness}")
+        return f"{where} k = {sectors}{extra}"
+
+    def sharp_vertex(self, lattice) -> SharpVertex:
+        """The :class:`~symdecomp.schemes.sector.SharpVertex` of this kind (not for ``smooth``)."""
+        return SharpVertex(lattice, self.sectors, self.closed, self.corner, self.sharpness)
+
+    def is_regular(self, lattice) -> bool:
+        """A regular vertex of the lattice: smooth at the regular valence (the analysis covers it too)."""
+        return self.name == "smooth" and self.faces == lattice.regular_valence
+
+
+@dataclass(frozen=True)
+class VertexKinds:
+    """The kinds of a mesh's vertices (see the module docstring)."""
+
+    #: Kind -> ``(vertices, rings)``: the vertex indices (int array) and their 1-rings (one row each, masks' order).
+    rings: dict
+    #: Vertex -> why its kind is not analysed.
+    not_analysed: dict
+    #: Per vertex, the index of its kind in :attr:`kinds` (-1: not analysed).
+    kind_of: np.ndarray
+
+    @property
+    def kinds(self) -> tuple[NeighbourhoodKind, ...]:
+        """The distinct kinds, sorted."""
+        return tuple(sorted(self.rings))
+
+
+def _fan(mesh: PolygonMesh, v: int) -> tuple[list[int], bool]:
+    """The edge neighbours of ``v`` counter-clockwise (``a_0`` first: where an open fan starts) and whether it closes."""
+    step = mesh._topology["next"][v]
+    boundary = v in mesh._topology["boundary"]
+    if boundary:
+        targets = set(step.values())
+        a = next(x for x in step if x not in targets)
+    else:
+        a = min(step)
+    out = [a]
+    while True:
+        a = step[a]
+        if a is None or a == out[0]:
+            return out, not boundary
+        out.append(a)
+
+
+def _edge_sharpness(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> list:
+    """Per edge ``(v, a_i)``: its sharpness, a boundary edge infinite (OpenSubdiv's boundary interpolation)."""
+    tags = mesh.tags
+    out = []
+    for i, a in enumerate(fan):
+        s = tags.sharpness_of_edge(v, a)
+        if not closed and i in (0, len(fan) - 1):
+            s = math.inf
+        elif s >= SHARPNESS_INFINITE:
+            s = math.inf
+        out.append(s)
+    return out
+
+
+def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> tuple[NeighbourhoodKind, int] | str:
+    """The kind of ``v`` and the rotation that puts ``a_0`` on its first sharp edge; or why it is not analysed."""
+    faces = len(fan) if closed else len(fan) - 1
+    sharp = _edge_sharpness(mesh, v, fan, closed)
+    marks = [i for i, s in enumerate(sharp) if s > 0]
+    inner = {s for i, s in enumerate(sharp) if s > 0 and (closed or 0 < i < len(fan) - 1)}
+    vertex_sharpness = mesh.tags.corners.get(v, Fraction(0))
+    if not closed and mesh.tags.interpolate_boundary == "none":
+        return "a boundary vertex under interpolateboundary none (its faces are left out of the limit surface)"
+    if len(inner) > 1:
+        return f"sharp edges of different sharpness ({', '.join(str(s) for s in sorted(inner))}) meet there"
+    if 0 < vertex_sharpness < SHARPNESS_INFINITE:
+        return f"a semi-sharp vertex tag ({vertex_sharpness}): the sector model tags corners infinitely sharp"
+    corner = vertex_sharpness >= SHARPNESS_INFINITE
+    if not marks and not corner:
+        return _smooth(faces)
+    if faces > MAX_SECTOR_FACES:
+        return f"{faces} faces around a sharp vertex, more than {MAX_SECTOR_FACES}"
+    if not closed and faces == 1 and mesh.tags.interpolate_boundary == "edge-only":
+        return "a boundary vertex of one face under edge-only interpolation (the sector model makes it a corner)"
+    sharpness = next(iter(inner)) if inner else math.inf
+    if closed and not marks:  # a corner tag alone: the vertex is interpolated, its edges stay smooth
+        return NeighbourhoodKind("corner", faces, (faces,), True, True, Fraction(0)), 0
+    if closed:
+        count = len(marks)
+        sector = [((marks[(j + 1) % count] - marks[j]) % faces) or faces for j in range(count)]
+        rotations = [(tuple(sector[(i + t) % count] for t in range(count)), marks[i]) for i in range(count)]
+        sectors, start = min(rotations)
+    else:
+        sectors, start = tuple(b - a for a, b in zip(marks, marks[1:])), 0
+    count = len(marks)
+    name = "corner" if corner or count > 2 else ("dart", "crease")[count - 1] if closed else "boundary"
+    return NeighbourhoodKind(name, faces, sectors, closed, corner or (not closed and faces == 1 and
+                             mesh.tags.interpolate_boundary == "edge-and-corner"), sharpness), start
+
+
+def _smooth(faces: int) -> tuple[NeighbourhoodKind, int] | str:
+    """An untagged interior vertex: smooth (the common case, decided without looking at sharpness)."""
+    if faces > MAX_SMOOTH_VALENCE:
+        return f"valence {faces} is more than {MAX_SMOOTH_VALENCE}"
+    return NeighbourhoodKind("smooth", faces, (faces,), True), 0
+
+
+def _opposite(mesh: PolygonMesh) -> dict:
+    """``(O, a) -> b`` for every quad ``(O, a, b, a')``: the face neighbour after each directed edge (one pass)."""
+    table = mesh._topology.get("opposite-corner")
+    if table is None:
+        table = {}
+        for f in mesh.faces:
+            table.update({(f[k], f[(k + 1) % 4]): f[(k + 2) % 4] for k in range(4)})
+        mesh._topology["opposite-corner"] = table
+    return table
+
+
+def _ring(v: int, fan: list[int], closed: bool, opposite: dict | None) -> list[int]:
+    """``O, a_0.., b_0..`` with ``b_i`` the corner opposite ``O`` in the face ``(O, a_i, b_i, a_{i+1})``."""
+    if opposite is None:
+        return [v] + fan
+    return [v] + fan + [opposite[(v, a)] for a in (fan if closed else fan[:-1])]
+
+
+def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKinds:
+    """Classify every vertex of ``mesh`` (every face of the lattice's kind) and gather the 1-rings per kind.
+
+    ``progress(iterable, total)``, when given, wraps the loop over the vertices.
+    """
+    mesh.require_lattice(lattice)
+    opposite = _opposite(mesh) if lattice.face_neighbours else None
+    holes = {x for f in mesh.tags.holes for x in mesh.faces[f]}
+    tagged = {v for e in mesh.tags.creases for v in e} | set(mesh.tags.corners)  # the rest of the interior is smooth
+    gathered: dict[NeighbourhoodKind, tuple[list, list]] = {}
+    not_analysed: dict[int, str] = {}
+    vertices = range(len(mesh.points))
+    for v in progress(vertices, len(vertices)) if progress is not None else vertices:
+        if v in holes:
+            not_analysed[v] = "a corner of a face tagged as a hole"
+            continue
+        fan, closed = _fan(mesh, v)
+        kind = _kind(mesh, v, fan, closed) if v in tagged or not closed else _smooth(len(fan))
+        if isinstance(kind, str):
+            not_analysed[v] = kind
+            continue
+        kind, start = kind
+        if closed and start:
+            fan = fan[start:] + fan[:start]
+        ids, rings = gathered.setdefault(kind, ([], []))
+        ids.append(v)
+        rings.append(_ring(v, fan, closed, opposite))
+    rings = {k: (np.array(ids, dtype=np.int64), np.array(rs, dtype=np.int64)) for k, (ids, rs) in gathered.items()}
+    kind_of = np.full(len(mesh.points), -1, dtype=np.int64)
+    for i, k in enumerate(sorted(rings)):
+        kind_of[rings[k][0]] = i
+    return VertexKinds(rings, not_analysed, kind_of)

@@ -1,0 +1,78 @@
+"""The verdicts of a mesh's neighbourhood kinds: C1 and the curvature regime, computed once per kind.
+
+For each :class:`~symdecomp.analysis.mesh_kinds.NeighbourhoodKind` of a mesh (a few dozen in a mesh of a
+million faces) :func:`kind_verdict` gives the certified C1 verdict (Reif's test at a smooth vertex of valence
+``n``, :func:`~symdecomp.verify.c1.c1_test`; Zorin's conditions per sector at a boundary, crease or corner
+vertex, :func:`~symdecomp.verify.c1_sharp.c1_sharp_test`) and, at smooth vertices, the curvature regime of
+the artifact indicators (:func:`~symdecomp.verify.artifacts.artifact_indicators`: bounded, zero, unbounded).
+Where a test does not apply (a dart has one sharp edge; a scheme with free parameters) the verdict is
+``n/a`` and the reason is kept.
+
+>>> from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> v = kind_verdict(catmull_clark(), NeighbourhoodKind("smooth", 3, (3,), True))
+>>> v.c1, v.regime
+('c1', 'zero')
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
+from symdecomp.errors import NotApplicableError
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import cached, check_type
+
+__all__ = ["KindVerdict", "kind_verdict"]
+
+
+@dataclass(frozen=True)
+class KindVerdict:
+    """The verdicts of one kind."""
+
+    #: ``"c1"``, ``"not-c1"``, ``"undecided"`` or ``"n/a"``.
+    c1: str
+    #: Why (the test's reason, or why it does not apply).
+    c1_reason: str
+    #: ``"bounded"``, ``"zero"``, ``"unbounded"`` (smooth kinds), or ``"n/a"``.
+    regime: str
+    #: Why the regime is ``n/a``, else ``""``.
+    regime_reason: str
+
+
+def _check_kind(kind) -> NeighbourhoodKind:
+    return check_type(kind, NeighbourhoodKind, "kind", hint="a kind of symdecomp.analysis.mesh_kinds.classify_vertices")
+
+
+def _c1(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
+    from symdecomp.verify.c1 import c1_test
+    from symdecomp.verify.c1_sharp import c1_sharp_test
+
+    try:
+        if kind.name == "smooth":
+            result = c1_test(scheme, kind.faces)
+        else:
+            result = c1_sharp_test(scheme, kind.sharp_vertex(scheme.lattice))
+    except NotApplicableError as exc:
+        return "n/a", str(exc)
+    return result.verdict.value, result.reason
+
+
+def _regime(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
+    from symdecomp.verify.artifacts import artifact_indicators
+
+    if kind.name != "smooth":
+        return "n/a", "the curvature regime is defined at smooth vertices"
+    try:
+        return artifact_indicators(scheme, kind.faces).curvature.regime.value, ""
+    except NotApplicableError as exc:
+        return "n/a", str(exc)
+
+
+@cached(maxsize=512, scheme=check_scheme, kind=_check_kind)
+def kind_verdict(scheme: Scheme, kind: NeighbourhoodKind) -> KindVerdict:
+    """The C1 verdict and curvature regime of ``kind`` under ``scheme`` (module docstring), once per kind."""
+    c1, why = _c1(scheme, kind)
+    regime, regime_why = _regime(scheme, kind)
+    return KindVerdict(c1, why, regime, regime_why)

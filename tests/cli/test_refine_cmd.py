@@ -1,0 +1,39 @@
+"""``symdecomp refine MESH --steps K --out OUT``: exact steps written whole, read back to the same doubles."""
+
+import json
+import math
+
+from symdecomp.cli import main
+from symdecomp.schemes.mesh_refine import refine_mesh
+from symdecomp.schemes.meshformats import read_mesh
+from symdecomp.schemes.scheme import catmull_clark
+from tests.cli.test_inspect_cmd import MODEL
+from tests.cli.test_inspect_kinds import read_ply
+
+
+def test_obj_out_reads_back_as_the_exact_points_rounded_once(tmp_path, capsys):
+    out = tmp_path / "r.obj"
+    assert main(["refine", str(MODEL), "--steps", "2", "--out", str(out), "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    exact = refine_mesh(read_mesh(MODEL), catmull_clark(), 2)
+    assert summary == {"mesh": "valences-3-5-6.obj", "scheme": "catmull-clark", "steps": 2, "vertices": len(exact.points),
+                       "faces": 16 * 34, "creases": 0, "out": str(out), "bytes": out.stat().st_size}
+    back = read_mesh(out)
+    assert [tuple(float(c) for c in p) for p in back.points] == [tuple(float(c) for c in p) for p in exact.points]
+    assert max(len(line) for line in out.read_text().splitlines()) < 80  # repr doubles, not 55-digit decimals
+
+
+def test_ply_out_and_the_refined_surface_has_the_same_limits(tmp_path):
+    out = tmp_path / "r.ply"
+    assert main(["refine", str(MODEL), "--out", str(out)]) == 0
+    vertex, faces = read_ply(out.read_bytes())
+    assert len(faces) == 4 * 34 and math.isfinite(float(vertex["p"].sum()))
+
+
+def test_bad_steps_and_out_are_one_line(tmp_path, capsys):
+    assert main(["refine", str(MODEL), "--steps", "9", "--out", str(tmp_path / "r.obj")]) == 2
+    assert "argument --steps: expected a number of steps <= 8, got 9" in capsys.readouterr().err
+    assert main(["refine", str(MODEL), "--out", str(tmp_path / "r.stl")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "give a .obj or .ply file name" in err
+    assert not (tmp_path / "r.stl").exists() and not (tmp_path / "r.obj").exists()

@@ -1,0 +1,60 @@
+"""``oracle --mesh``: every analysed vertex of whole tagged meshes against OpenSubdiv's limit masks, to 1e-12
+(skipped where OpenSubdiv is not installed)."""
+
+import json
+from fractions import Fraction
+
+import pytest
+
+from symdecomp.cli import main
+from symdecomp.schemes.loop import loop
+from symdecomp.schemes.mesh_tags import MeshTags
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.verify.opensubdiv import build as osd_build
+from tests.analysis.test_mesh_limits import CREASE, grid, idx
+
+if not osd_build.headers_present():
+    pytest.skip("OpenSubdiv headers (libosd-dev) or g++ not installed", allow_module_level=True)
+
+from symdecomp.verify.oracle_mesh import compare_mesh  # noqa: E402
+
+THROUGH = {(idx(x, 2), idx(x + 1, 2)): Fraction(10) for x in range(5)}  # a crease across the grid: no dart
+
+CASES = {
+    "smooth and boundary": MeshTags(),
+    "edge-only boundary": MeshTags(interpolate_boundary="edge-only"),
+    "infinite crease": MeshTags(creases=THROUGH),
+    "semi-sharp crease 2": MeshTags(creases={e: Fraction(2) for e in THROUGH}),
+    "semi-sharp crease 3/2": MeshTags(creases={e: Fraction(3, 2) for e in THROUGH}),
+    "corner tag": MeshTags(corners={idx(2, 2): Fraction(10)}),
+    "crease into a corner": MeshTags(creases=THROUGH, corners={idx(2, 2): Fraction(10)}),
+}
+
+
+@pytest.mark.parametrize("tags", CASES.values(), ids=CASES.keys())
+@pytest.mark.parametrize("triangles", [False, True], ids=["catmull-clark", "loop"])
+def test_every_analysed_vertex_agrees_with_opensubdiv(tags, triangles):
+    mesh = grid(tags, triangles=triangles)
+    r = compare_mesh(mesh, loop() if triangles else catmull_clark())
+    assert r.compared > 25 and r.darts == 0
+    assert r.position_disagreement <= 1e-12 and r.normal_disagreement <= 1e-12, r
+    assert r.agrees
+
+
+def test_a_dart_is_compared_apart_with_the_reason():
+    """OpenSubdiv gives a dart the smooth limit mask: it differs from the dart's eigenvector, so darts stay out of the
+    verdict (and are reported with their difference)."""
+    r = compare_mesh(grid(MeshTags(creases=CREASE)), catmull_clark())
+    assert r.darts == 1 and r.dart_position_disagreement > 1e-6 and r.agrees
+
+
+def test_the_command_line(tmp_path, capsys):
+    from symdecomp.schemes.meshformats import encode_mesh
+
+    path = tmp_path / "grid.obj"
+    path.write_bytes(encode_mesh(grid(), "obj"))
+    assert main(["oracle", "--mesh", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["agrees"] and data["compared"] == 36 and data["position_disagreement"] <= 1e-12
+    assert main(["oracle", "--mesh", str(path), "--kind", "dart"]) == 2
+    assert "--mesh: not with --kind" in capsys.readouterr().err

@@ -122,7 +122,8 @@ nothing else.
                    ``evaldata_cmd``, ``inspect_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
-                   (``sharp``)
+                   (``sharp``), the one shape of every command's JSON output and its JSON Schema
+                   (``json_envelope``), the one progress display of long commands (``progress``)
 ``__main__``       python -m symdecomp: the command line
 =================  ===========================================================================
 

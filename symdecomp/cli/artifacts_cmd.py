@@ -7,9 +7,8 @@ The table is a list of columns (:data:`symdecomp.output.artifact_table.COLUMNS`,
 
 from __future__ import annotations
 
-import sys
-
 from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, print_json, progress, valence_range
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.parallel import ordered_map
 from symdecomp.schemes.scheme import Scheme
 
@@ -43,11 +42,13 @@ def register(sub) -> None:
     )
     p.add_argument("--n", dest="valences", type=valence_range("artifacts"), action=Once, required=True, metavar="A:B",
                    help=f"valences: an inclusive range A:B or a single N (at most {LIMITS['artifacts'][0]})")
-    flag(p, "--json", help='print a list with one object per valence: {"n", "density", "negative_weights", '
+    flag(p, "--json", help='print the one JSON shape (docs: File formats, --json), one object per valence under "rows": '
+         '{"n", "density", "negative_weights", '
          '"ring_spacing_ratio", "sector_angle_ratio", "curvature": {"regime", "reason", "cause", "lambda1", '
          '"lambda1_squared", "mu": [{"value", "frequency", "multiplicity", "kind", "comparison", "exact"}], ...}}')
     add_scheme_option(p)
     add_pool_options(p)
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -62,9 +63,9 @@ def run(args) -> int:
 
     valences = args.valences
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme}, jobs=args.jobs, executor=args.executor, warm_up=True)
-    results = list(progress(rows, len(valences), "artifacts", enabled=sys.stderr.isatty()))
+    results = list(progress(rows, len(valences), "artifacts", enabled=not args.quiet))
     if args.json:
-        print_json(results)
+        print_json(args, results)
     else:
         print(f"{args.scheme.name}: curvature and artifacts at the extraordinary vertex, valences {valences[0]}..{valences[-1]}")
         print(table(results))

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import sys
 from typing import TYPE_CHECKING, NamedTuple
 
 from symdecomp.cli.common import (
@@ -23,6 +22,7 @@ from symdecomp.cli.common import (
     progress,
     valence_range,
 )
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.cli.sharp import sharpness
 from symdecomp.errors import InvalidInputError
 
@@ -80,11 +80,13 @@ def register(sub) -> None:
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "
                    "in four, or a triangle twice by bisection)")
     flag(p, "--json",
-                   help='print a list with one object per valence: {"n", "verdict" (c1/not-c1/undecided), "reason", '
+                   help='print the one JSON shape (docs: File formats, --json), one object per valence under "rows": '
+                   '{"n", "verdict" (c1/not-c1/undecided), "reason", '
                    '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}; at sharp vertices also '
                    '"vertex", "lambdas" (lambda_1, lambda_2) and "opening_over_pi"')
     add_scheme_option(p)
     add_pool_options(p)
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -195,9 +197,9 @@ def run(args) -> int:
     valences = args.valences
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
-    results = list(progress(rows, len(valences), "c1", enabled=sys.stderr.isatty()))
+    results = list(progress(rows, len(valences), "c1", enabled=not args.quiet))
     if args.json:
-        print_json([r.json for r in results])
+        print_json(args, [r.json for r in results])
     else:
         print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
         print(f"method: {args.scheme.lattice.c1_method}")
@@ -213,9 +215,9 @@ def _run_sharp(args, items: list[tuple]) -> int:
 
     rows = ordered_map(_sharp_one, items, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
-    results = list(progress(rows, len(items), "c1", enabled=sys.stderr.isatty()))
+    results = list(progress(rows, len(items), "c1", enabled=not args.quiet))
     if args.json:
-        print_json([r.json for r in results])
+        print_json(args, [r.json for r in results])
     else:
         print(f"{args.scheme.name}: Zorin's conditions at {items[0][0]} vertices")
         print(f"method: {SHARP_METHOD}")

@@ -21,6 +21,7 @@ from symdecomp.cli.common import (
     sharp_given,
     valence_range,
 )
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.cli.sharp import add_sharp_options, sector_range
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import MAX_DOUBLE_DIGITS, check_memory
@@ -82,6 +83,7 @@ def register(sub) -> None:
     add_scheme_option(p)
     add_rings_option(p)
     add_sharp_options(p, count="--k")
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -106,7 +108,7 @@ def _run_sharp(args) -> int:
         print(f"{args.scheme.name}: mirror decomposition vs full matrix, certified (exact): chi_S of the refined 1-ring "
               "matrix = det(l - C) prod det(l - M(theta_j)) in Q[l] (Q(cos(pi/K))[l] for cos(theta_k) weights)")
         print(f"{'K':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'vertex':<16} {'chi_S bits':>10}  certificate")
-    for vertex in progress(vertices, len(vertices), "certify"):
+    for vertex in progress(vertices, len(vertices), "certify", enabled=not args.quiet):
         r = exact_only(args, vertex, lambda: certify_sharp(args.scheme, vertex))  # noqa: B023 - called at once
         rows.append(r)
         if not args.json:
@@ -117,7 +119,7 @@ def _run_sharp(args) -> int:
     failed = [r for r in rows if not r.ok]
     counts = {st: sum(1 for r in rows if r.status.value == st) for st in ("agree", "disagree", "undecided")}
     if args.json:
-        print_json({"scheme": args.scheme.name, "vertex": describe(vertices[0]).split()[0], "rows": [r.as_json() for r in rows],
+        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertices[0]).split()[0], "rows": [r.as_json() for r in rows],
                     "summary": {"mode": "certified", "route": "mirror", "sectors": len(rows), **counts,
                                 "seconds": round(elapsed, 3), "ok": not failed}})
     else:
@@ -243,7 +245,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     if not args.json:
         _header(args, rings, solver)
     for r in check_valences(args.scheme, args.valences, certified=args.certify, dps=args.dps,
-                            closed_forms=closed_forms, jobs=args.jobs, show_progress=True, rings=rings,
+                            closed_forms=closed_forms, jobs=args.jobs, show_progress=not args.quiet, rings=rings,
                             method="structure" if args.route == "structural" else "charpoly", solver=solver,
                             executor=args.executor):
         rows.append(r)
@@ -264,7 +266,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         "ok": not failed,
     }
     if args.json:
-        print_json({"scheme": args.scheme.name, "rings": args.rings, "rows": [r.as_json() for r in rows], "summary": summary})
+        print_json(args, {"scheme": args.scheme.name, "rings": args.rings, "rows": [r.as_json() for r in rows], "summary": summary})
     else:
         tally = ", ".join(f"{v} {k}" for k, v in counts.items() if v)
         print(f"{len(rows)} valences: {tally} ({elapsed:.2f} s)")

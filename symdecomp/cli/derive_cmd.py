@@ -31,7 +31,7 @@ def register(sub) -> None:
     p.add_argument("--out", action=Once, default="derivations",
                    help="output directory (default: derivations/), checked before any claim is computed; written as a "
                    "whole, so an interrupted run leaves the old files or the new ones, never a mix")
-    flag(p, "--json", help="print a JSON list of the files written")
+    flag(p, "--json", help="print the one JSON shape (docs: File formats, --json) with the files written under \"files\"")
     p.add_argument(
         "--label",
         action="append",
@@ -84,7 +84,7 @@ def run(args) -> int:
     out = check_output_directory(args.out)  # before the claims are computed: a bad path is bad input, now
     written = write_derivations(out, show_progress=not args.no_progress and not args.json, scheme=args.scheme, budget=args.budget)
     if args.json:
-        print_json([str(p) for p in written])
+        print_json(args, {"files": [str(p) for p in written]})
     else:
         for path in written:
             print(path)

@@ -198,7 +198,7 @@ def run(args) -> int:
     if args.json:
         data = _json(mesh, result, artifacts)
         data["subdominance"] = {str(n): {"certified": c, "why": why} for n, (c, why) in subdominant.items()}
-        print_json(data)
+        print_json(args, data)
     else:
         _print_table(mesh, result, artifacts)
     if result.skipped_boundary and not args.json:

@@ -138,7 +138,7 @@ def run(args) -> int:
         return _run_sharp(args, kinds)
     results = [compare(n, args.levels, args.seed) for n in progress(args.n, len(args.n), "oracle")]
     if args.json:
-        print_json([r.as_json() for r in results])
+        print_json(args, [r.as_json() for r in results])
     else:
         for r in results:
             print(f"n = {r.n}  ({r.levels} levels, seed {r.seed}): {'all agree' if r.agrees else 'DISAGREEMENT'}")
@@ -165,7 +165,7 @@ def _run_sharp(args, kinds) -> int:
              if args.creasing in ("both", c.creasing)]
     results = [r for case in progress(cases, len(cases), "oracle") for r in compare_sharp_case(case, seed=args.seed)]
     if args.json:
-        print_json([r.as_json() for r in results])
+        print_json(args, [r.as_json() for r in results])
     else:
         for r in results:
             worst = max((c for c in r.checks if c.comparable), key=lambda c: c.disagreement)

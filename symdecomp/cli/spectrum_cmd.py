@@ -45,7 +45,7 @@ def _run_sharp(args) -> int:
     vertex = sharp_vertex(args, args.n)
     levels = exact_only(args, vertex, lambda: sharp_levels(args.scheme, vertex, digits=args.digits))
     if args.json:
-        print_json({"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
+        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
                     "levels": [s.as_json() for s in levels]})
         return 0
     for s in levels:
@@ -70,7 +70,7 @@ def _run_general(args) -> int:
 
     spectrum = ring_spectrum(args.scheme, args.n, args.rings, digits=args.digits, exact=args.exact or args.n <= EXACT_UP_TO)
     if args.json:
-        print_json(spectrum.as_json())
+        print_json(args, spectrum.as_json())
         return 0
     print(f"{spectrum.scheme} ({spectrum.mesh} mesh), valence n = {spectrum.n}, {spectrum.rings}-ring: "
           f"{spectrum.size} eigenvalues, {len(spectrum.eigenvalues)} distinct")
@@ -96,7 +96,7 @@ def run(args) -> int:
                                 f"{args.scheme.name} on the 1-ring is read from the closed forms, which it would ignore")
     spectrum = closed_form_spectrum(args.scheme, args.n, digits=args.digits)
     if args.json:
-        print_json(spectrum.as_json())
+        print_json(args, spectrum.as_json())
         return 0
     print(f"{spectrum.scheme}, valence n = {spectrum.n}: {2 * spectrum.n + 1} eigenvalues, {len(spectrum.eigenvalues)} distinct")
     width = max(len(e.text) for e in spectrum.eigenvalues)

@@ -112,7 +112,10 @@ nothing else.
                    corner vertices: the mirror decomposition's polylines, a sector's characteristic map, the
                    subdominant eigenvalues over k (``plotting.boundary``),
                    Stam's evaluation (``plotting.evaldata``), the second-order height fields and the
-                   shape chart (``plotting.shape``),
+                   shape chart (``plotting.shape``), the figures the commands draw with --plot: the characteristic
+                   map and its certified bounds (``plotting.c1_figures``), eigenvalues by frequency or block
+                   (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), the
+                   cross-check's agreement by valence (``plotting.check_chart``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
                    one scheme in one document (``report``: its sections; as LaTeX and PDF,
                    ``report_tex``; as one HTML file, ``report_html``)
@@ -123,7 +126,8 @@ nothing else.
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
                    (``sharp``), the one shape of every command's JSON output and its JSON Schema
-                   (``json_envelope``), the one progress display of long commands (``progress``)
+                   (``json_envelope``), the one progress display of long commands (``progress``), the
+                   option --plot FILE of the commands that draw (``plot_file``)
 ``__main__``       python -m symdecomp: the command line
 =================  ===========================================================================
 

@@ -8,6 +8,7 @@ The table is a list of columns (:data:`symdecomp.output.artifact_table.COLUMNS`,
 from __future__ import annotations
 
 from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, print_json, progress, valence_range
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.parallel import ordered_map
 from symdecomp.schemes.scheme import Scheme
@@ -49,6 +50,8 @@ def register(sub) -> None:
     add_scheme_option(p)
     add_pool_options(p)
     add_quiet_option(p)
+    add_plot_option(p, "the regime chart over n: lambda_1, lambda_1^2 and |mu|, and |mu| / lambda_1^2 against 1, coloured by "
+                    "the certified regime")
     p.set_defaults(func=run)
 
 
@@ -58,10 +61,17 @@ def _one(n: int, scheme: Scheme) -> dict:
     return artifact_indicators(scheme, n).as_json()
 
 
+def _figure(scheme: str, rows: list[dict]):
+    from symdecomp.output.plotting.regime_chart import regime_figure
+
+    return regime_figure(scheme, rows)
+
+
 def run(args) -> int:
     from symdecomp.output.artifact_table import table
 
     valences = args.valences
+    plot = check_plot(args)
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme}, jobs=args.jobs, executor=args.executor, warm_up=True)
     results = list(progress(rows, len(valences), "artifacts", enabled=not args.quiet))
     if args.json:
@@ -70,4 +80,5 @@ def run(args) -> int:
         print(f"{args.scheme.name}: curvature and artifacts at the extraordinary vertex, valences {valences[0]}..{valences[-1]}")
         print(table(results))
         print(_LEGEND)
+    write_plot(plot, lambda: _figure(args.scheme.name, results))
     return 1 if any(r["curvature"]["regime"] == "undecided" for r in results) else 0

@@ -21,6 +21,7 @@ from symdecomp.cli.common import (
     sharp_given,
     valence_range,
 )
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.cli.sharp import add_sharp_options, sector_range
 from symdecomp.errors import InvalidInputError
@@ -84,10 +85,12 @@ def register(sub) -> None:
     add_rings_option(p)
     add_sharp_options(p, count="--k")
     add_quiet_option(p)
+    add_plot_option(p, "the agreement by valence (by sector at a sharp vertex): the digits of agreement against --dps, or "
+                    "the distinct eigenvalues proved and the characteristic polynomial's size, coloured by status")
     p.set_defaults(func=run)
 
 
-def _run_sharp(args) -> int:
+def _run_sharp(args, plot) -> int:
     """``check --k A:B --boundary --certify`` (and --corner, --crease K2, --dart): one certified row per K."""
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
     from symdecomp.verify.sharp_certify import certify_sharp
@@ -127,7 +130,14 @@ def _run_sharp(args) -> int:
         print(f"{len(rows)} vertices: {tally} ({elapsed:.2f} s)")
         for r in failed:
             print(f"FAILED {r.message}")
+    write_plot(plot, lambda: _figure(args.scheme.name, rows))
     return 1 if failed else 0
+
+
+def _figure(scheme: str, rows: list):
+    from symdecomp.output.plotting.check_chart import check_figure
+
+    return check_figure(scheme, [r.as_json() for r in rows])
 
 
 def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):
@@ -219,6 +229,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
     from symdecomp.verify.result import CrossCheckStatus
 
+    plot = check_plot(args)
     if args.sectors is not None or sharp_given(args):
         if args.sectors is None:
             raise InvalidInputError("--n: valences of interior vertices; give the faces of a boundary, crease, corner or "
@@ -226,7 +237,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         if not sharp_given(args):
             raise InvalidInputError("--k: the faces of a sharp vertex's sector: give --boundary, --corner, --crease K2 or "
                                     "--dart (interior valences are --n A:B)")
-        return _run_sharp(args)
+        return _run_sharp(args, plot)
     rings = args.rings if general_path(args) else None
     args.route_note = ""
     if args.certify:
@@ -272,6 +283,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         print(f"{len(rows)} valences: {tally} ({elapsed:.2f} s)")
         for r in failed:
             print(f"FAILED {r.message}")
+    write_plot(plot, lambda: _figure(args.scheme.name, rows))
     return 1 if failed else 0
 
 

@@ -73,7 +73,8 @@ nothing else.
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), the limit and tangent
-                   masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``)
+                   masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
+                   shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -104,7 +105,8 @@ nothing else.
                    (``applicability``), computed evidence (``evidence``), the paper's notation
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
-                   ``texlayout``), the artifact table's columns (``artifact_table``), Stam's data file (``evaldata``), figures (``plotting``):
+                   ``texlayout``), results in a notebook: short HTML tables and LaTeX (``display``),
+                   the artifact table's columns (``artifact_table``), Stam's data file (``evaldata``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
                    vertices (``plotting.meshes``), Reif's test
@@ -182,7 +184,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),
     "symdecomp.claims": ("CheckResult", "Claim", "Status", "Step", "all_claims", "check_claim", "get_claim"),
-    "symdecomp.output.latex": ("aslatex",),
+    "symdecomp.output.display": ("aslatex", "ashtml", "notebook_latex"),
     "symdecomp.schemes.full_matrix": ("characteristic_polynomial", "exact_subdivision_matrix"),
     "symdecomp.schemes.lattice": ("QUAD", "TRIANGLE", "Lattice", "lattice"),
     "symdecomp.schemes.loop": ("loop", "loop_warren", "triangle_scheme"),

@@ -13,17 +13,21 @@ the time left, and a last line when it ends. :func:`add_quiet_option` gives a co
 
 from __future__ import annotations
 
+import re
 import sys
 import time
 from collections.abc import Callable, Iterable, Iterator
 from typing import TypeVar
 
-__all__ = ["PLAIN_INTERVAL", "add_quiet_option", "progress", "plain_line"]
+__all__ = ["PLAIN_INTERVAL", "PLAIN_LINE", "add_quiet_option", "progress", "plain_line"]
 
 T = TypeVar("T")
 
 #: Seconds between two plain progress lines when stderr is not a terminal.
 PLAIN_INTERVAL = 10.0
+
+#: What a plain progress line looks like (:func:`plain_line`): a program reading stderr can tell it from an error.
+PLAIN_LINE = re.compile(r"[^:\n]+: [0-9]+/[0-9]+ \([0-9]+ %\), [0-9.]+ \S+/s, [0-9:]+ elapsed(, about [0-9:]+ left)?")
 
 
 def add_quiet_option(parser) -> None:

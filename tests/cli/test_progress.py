@@ -8,7 +8,7 @@ import itertools
 import pytest
 
 from symdecomp.cli import main
-from symdecomp.cli.progress import PLAIN_INTERVAL, plain_line, progress
+from symdecomp.cli.progress import PLAIN_INTERVAL, PLAIN_LINE, plain_line, progress
 
 
 class _Terminal(io.StringIO):
@@ -40,6 +40,8 @@ def test_a_pipe_gets_a_plain_line_every_interval_and_a_last_one():
         "check: 9/10 (90 %), 0.25 it/s, 00:36 elapsed, about 00:04 left",
         "check: 10/10 (100 %), 0.23 it/s, 00:44 elapsed",
     ]
+    assert all(PLAIN_LINE.fullmatch(line) for line in stream.getvalue().splitlines())
+    assert not PLAIN_LINE.fullmatch("symdecomp: error: --n: expected a valence")
 
 
 def test_a_short_run_on_a_pipe_prints_nothing_and_disabled_prints_nothing():

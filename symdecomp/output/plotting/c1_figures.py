@@ -59,19 +59,26 @@ def _map_panel(ax, scheme: Scheme, row: dict, vertex) -> None:
     name = row.get("vertex") or f"n = {row['n']}"
     title = f"{name}: {row['verdict']}"
     ax.set_title(title, fontsize=9, color=VERDICT_COLOURS.get(row["verdict"], "k"))
-    if row.get("jacobian_lower_bound") is None and row.get("lambda") is None:
-        ax.text(0.5, 0.5, "no characteristic map:\n" + textwrap.fill(row["reason"][:160], 40), ha="center", va="center",
-                transform=ax.transAxes, fontsize=7)
-        ax.set_axis_off()
-        return
-    if vertex is None:
-        _ring_panel(ax, scheme, row)
+    # the spectral conditions held: an interior vertex's row names the subdominant frequency, a sharp one its lambda
+    if row.get("frequency" if vertex is None else "lambda") is None:
+        _note(ax, row["reason"])
         return
     try:
-        sector_map_panel(ax, sector_characteristic_map(scheme, vertex))
-    except SymdecompError as exc:
-        ax.text(0.5, 0.5, "map not drawn:\n" + textwrap.fill(str(exc)[:160], 40), ha="center", va="center", transform=ax.transAxes, fontsize=7)
-        ax.set_axis_off()
+        if vertex is None:
+            _ring_panel(ax, scheme, row)
+        else:
+            sector_map_panel(ax, sector_characteristic_map(scheme, vertex))
+    except SymdecompError as exc:  # the spectral conditions fail: there is no map to draw
+        ax.clear()
+        ax.set_title(title, fontsize=9, color=VERDICT_COLOURS.get(row["verdict"], "k"))
+        _note(ax, str(exc))
+
+
+def _note(ax, why: str) -> None:
+    """In place of a map: why there is none."""
+    ax.text(0.5, 0.5, "no characteristic map:\n" + textwrap.fill(why[:200], 40), ha="center", va="center",
+            transform=ax.transAxes, fontsize=7)
+    ax.set_axis_off()
 
 
 def _bounds_panel(ax, rows: list[dict], labels: list[str]) -> None:

@@ -67,6 +67,25 @@ def test_json_output_validates_against_the_schema(argv, tmp_path, capsys):
     assert data["inputs"].get("scheme") is None or isinstance(data["inputs"]["scheme"], str)
 
 
+def _row_enum(command: str, *path: str) -> set:
+    rule = next(r["then"] for r in json_schema()["allOf"] if r["if"]["properties"]["command"]["const"] == command)
+    node = rule["properties"]["rows"]["items"]
+    for key in path:
+        node = node["properties"][key]
+    return set(node["enum"])
+
+
+def test_the_schemas_verdicts_are_the_packages():
+    from symdecomp.analysis.curvature_regime import CurvatureRegime
+    from symdecomp.claims import Status
+    from symdecomp.verify.result import C1Verdict, CrossCheckStatus
+
+    assert _row_enum("claims", "status") == {s.value for s in Status}
+    assert _row_enum("c1", "verdict") == {v.value for v in C1Verdict}
+    assert _row_enum("check", "status") == {s.value for s in CrossCheckStatus}
+    assert _row_enum("artifacts", "curvature", "regime") == {r.value for r in CurvatureRegime}
+
+
 def test_the_schema_rejects_the_old_shapes():
     """A list at top level (the old c1 and claims) and rows without their keys do not validate."""
     schema = json_schema()
@@ -74,6 +93,8 @@ def test_the_schema_rejects_the_old_shapes():
         jsonschema.validate([{"n": 3, "verdict": "c1", "reason": ""}], schema)
     with pytest.raises(jsonschema.ValidationError):
         jsonschema.validate(envelope("c1", {}, [{"n": 3}]), schema)
+    with pytest.raises(jsonschema.ValidationError, match="'C1' is not one of"):
+        jsonschema.validate(envelope("c1", {}, [{"n": 3, "verdict": "C1", "reason": "r"}]), schema)
     jsonschema.validate(envelope("c1", {"valences": [3]}, [{"n": 3, "verdict": "c1", "reason": "r"}]), schema)
 
 

@@ -10,10 +10,19 @@ from __future__ import annotations
 
 from symdecomp.output.plotting._mpl import new_figure
 
-__all__ = ["REGIME_COLOURS", "regime_figure"]
+__all__ = ["REGIME_COLOURS", "modulus", "regime_figure"]
 
 #: The colour of each curvature regime (any other, e.g. not applicable: grey).
 REGIME_COLOURS = {"bounded": "C0", "zero": "C2", "unbounded": "C3", "undecided": "C1"}
+
+
+def modulus(text: str) -> float:
+    """The modulus of an eigenvalue as the artifact rows print it (``ball_text``: ``"0.34"``, ``"0.06 - 0.09i"``).
+
+    >>> modulus("0.3401073882"), modulus("0.3 - 0.4i"), modulus("-1.5e-2")
+    (0.3401073882, 0.5, 0.015)
+    """
+    return abs(complex(text.replace(" ", "").replace("i", "j")))
 
 
 def _values(row: dict) -> tuple[int, float, float, float] | None:
@@ -21,7 +30,7 @@ def _values(row: dict) -> tuple[int, float, float, float] | None:
     c = row["curvature"]
     if not c.get("mu") or c.get("lambda1") is None:
         return None
-    mu = max(abs(complex(m["value"].replace(" ", "").replace("i", "j"))) for m in c["mu"])
+    mu = max(modulus(m["value"]) for m in c["mu"])
     return row["n"], float(c["lambda1"]), float(c["lambda1_squared"]), mu
 
 

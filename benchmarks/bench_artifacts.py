@@ -42,7 +42,7 @@ def targets(quick: bool = False) -> list[dict]:
     out = []
     for name in SCHEMES:
         seconds, text = _command("artifacts", "--n", f"3:{last}", "--scheme", name, "--json", "--jobs", "2")
-        regimes = [row["curvature"]["regime"] for row in json.loads(text)]
+        regimes = [row["curvature"]["regime"] for row in json.loads(text)["rows"]]
         if len(regimes) != last - 2 or any(r not in ("bounded", "zero", "unbounded") for r in regimes):
             raise SystemExit(f"{name}: a valence has no certified regime: {regimes}")
         baseline, _ = _command("c1", "--n", f"3:{last}", "--scheme", name, "--json", "--jobs", "2")

@@ -78,7 +78,8 @@ nothing else.
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), the limit and tangent
-                   masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``)
+                   masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
+                   shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``), their results and
@@ -111,7 +112,8 @@ nothing else.
                    (``applicability``), computed evidence (``evidence``), the paper's notation
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
-                   ``texlayout``), the artifact table's columns (``artifact_table``), Stam's data file (``evaldata``), meshes
+                   ``texlayout``), results in a notebook: short HTML tables and LaTeX (``display``),
+                   the artifact table's columns (``artifact_table``), Stam's data file (``evaldata``), meshes
                    with per-vertex colours as PLY and OBJ (``colored_mesh``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
@@ -120,7 +122,10 @@ nothing else.
                    corner vertices: the mirror decomposition's polylines, a sector's characteristic map, the
                    subdominant eigenvalues over k (``plotting.boundary``),
                    Stam's evaluation (``plotting.evaldata``), the second-order height fields and the
-                   shape chart (``plotting.shape``),
+                   shape chart (``plotting.shape``), the figures the commands draw with --plot: the characteristic
+                   map and its certified bounds (``plotting.c1_figures``), eigenvalues by frequency or block
+                   (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), the
+                   cross-check's agreement by valence (``plotting.check_chart``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
                    one scheme in one document (``report``: its sections; as LaTeX and PDF,
                    ``report_tex``; as one HTML file, ``report_html``)
@@ -131,7 +136,9 @@ nothing else.
                    ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
-                   (``sharp``)
+                   (``sharp``), the one shape of every command's JSON output and its JSON Schema
+                   (``json_envelope``), the one progress display of long commands (``progress``), the
+                   option --plot FILE of the commands that draw (``plot_file``)
 ``__main__``       python -m symdecomp: the command line
 =================  ===========================================================================
 
@@ -186,7 +193,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),
     "symdecomp.claims": ("CheckResult", "Claim", "Status", "Step", "all_claims", "check_claim", "get_claim"),
-    "symdecomp.output.latex": ("aslatex",),
+    "symdecomp.output.display": ("aslatex", "ashtml", "notebook_latex"),
     "symdecomp.schemes.full_matrix": ("characteristic_polynomial", "exact_subdivision_matrix"),
     "symdecomp.schemes.lattice": ("QUAD", "TRIANGLE", "Lattice", "lattice"),
     "symdecomp.schemes.loop": ("loop", "loop_warren", "triangle_scheme"),

@@ -49,6 +49,7 @@ import numpy as np
 import sympy as sp
 
 from symdecomp.algebra.polygons import coplanar_pairs, decompose
+from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.errors import InternalError, InvalidMeshError, NotApplicableError
@@ -110,7 +111,7 @@ class VertexInspection:
 
 
 @dataclass(frozen=True)
-class MeshInspection:
+class MeshInspection(NotebookDisplay):
     """All extraordinary vertices of a mesh under one scheme."""
 
     #: The scheme's name.

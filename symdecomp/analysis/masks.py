@@ -33,6 +33,7 @@ import mpmath
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
+from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.elliptic import recursion_left_eigenvector, tangent_lambda
 from symdecomp.analysis.frequency import circulant_blocks, laurent_to_cos, per_frequency_matrix
 from symdecomp.analysis.hyperbolic import apply_rational_matrix
@@ -96,7 +97,7 @@ def limit_masks(scheme: Scheme) -> LimitMasks:
 
 
 @dataclass(frozen=True)
-class MasksAtValence:
+class MasksAtValence(NotebookDisplay):
     """The masks at one valence, exact (sympy), in the vertex order ``O, a_0.., b_0..``.
 
     The exact weights are built on first use (``4n`` exact trigonometric values: slow at large

@@ -24,6 +24,7 @@ import mpmath
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
+from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import UnsupportedExpressionError
@@ -52,7 +53,7 @@ class SpectrumEntry:
 
 
 @dataclass(frozen=True)
-class Spectrum:
+class Spectrum(NotebookDisplay):
     """The closed-form spectrum of a scheme's subdivision matrix at one valence."""
 
     #: The valence.

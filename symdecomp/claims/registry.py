@@ -70,14 +70,8 @@ from functools import cache
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
-from symdecomp.claims.guards import (
-    DEFAULT_BUDGET,
-    BudgetExceeded,
-    at_parameter_values,
-    time_budget,
-    unbound_parameters,
-    undefined_values,
-)
+from symdecomp.analysis.display import NotebookDisplay
+from symdecomp.claims.guards import DEFAULT_BUDGET, BudgetExceeded, at_parameter_values, time_budget, unbound_parameters, undefined_values
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
 from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
 
@@ -236,7 +230,7 @@ class Step:
 
 
 @dataclass(frozen=True)
-class CheckResult:
+class CheckResult(NotebookDisplay):
     """The outcome of checking one claim."""
 
     #: What was established.

@@ -7,9 +7,9 @@ The table is a list of columns (:data:`symdecomp.output.artifact_table.COLUMNS`,
 
 from __future__ import annotations
 
-import sys
-
 from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, print_json, progress, valence_range
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.parallel import ordered_map
 from symdecomp.schemes.scheme import Scheme
 
@@ -43,11 +43,15 @@ def register(sub) -> None:
     )
     p.add_argument("--n", dest="valences", type=valence_range("artifacts"), action=Once, required=True, metavar="A:B",
                    help=f"valences: an inclusive range A:B or a single N (at most {LIMITS['artifacts'][0]})")
-    flag(p, "--json", help='print a list with one object per valence: {"n", "density", "negative_weights", '
+    flag(p, "--json", help='print the one JSON shape (docs: File formats, --json), one object per valence under "rows": '
+         '{"n", "density", "negative_weights", '
          '"ring_spacing_ratio", "sector_angle_ratio", "curvature": {"regime", "reason", "cause", "lambda1", '
          '"lambda1_squared", "mu": [{"value", "frequency", "multiplicity", "kind", "comparison", "exact"}], ...}}')
     add_scheme_option(p)
     add_pool_options(p)
+    add_quiet_option(p)
+    add_plot_option(p, "the regime chart over n: lambda_1, lambda_1^2 and |mu|, and |mu| / lambda_1^2 against 1, coloured by "
+                    "the certified regime")
     p.set_defaults(func=run)
 
 
@@ -57,16 +61,24 @@ def _one(n: int, scheme: Scheme) -> dict:
     return artifact_indicators(scheme, n).as_json()
 
 
+def _figure(scheme: str, rows: list[dict]):
+    from symdecomp.output.plotting.regime_chart import regime_figure
+
+    return regime_figure(scheme, rows)
+
+
 def run(args) -> int:
     from symdecomp.output.artifact_table import table
 
     valences = args.valences
+    plot = check_plot(args)
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme}, jobs=args.jobs, executor=args.executor, warm_up=True)
-    results = list(progress(rows, len(valences), "artifacts", enabled=sys.stderr.isatty()))
+    results = list(progress(rows, len(valences), "artifacts", enabled=not args.quiet))
     if args.json:
-        print_json(results)
+        print_json(args, results)
     else:
         print(f"{args.scheme.name}: curvature and artifacts at the extraordinary vertex, valences {valences[0]}..{valences[-1]}")
         print(table(results))
         print(_LEGEND)
+    write_plot(plot, lambda: _figure(args.scheme.name, results))
     return 1 if any(r["curvature"]["regime"] == "undecided" for r in results) else 0

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import sys
 from typing import TYPE_CHECKING, NamedTuple
 
 from symdecomp.cli.common import (
@@ -23,6 +22,8 @@ from symdecomp.cli.common import (
     progress,
     valence_range,
 )
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.cli.sharp import sharpness
 from symdecomp.errors import InvalidInputError
 
@@ -80,11 +81,15 @@ def register(sub) -> None:
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "
                    "in four, or a triangle twice by bisection)")
     flag(p, "--json",
-                   help='print a list with one object per valence: {"n", "verdict" (c1/not-c1/undecided), "reason", '
+                   help='print the one JSON shape (docs: File formats, --json), one object per valence under "rows": '
+                   '{"n", "verdict" (c1/not-c1/undecided), "reason", '
                    '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}; at sharp vertices also '
                    '"vertex", "lambdas" (lambda_1, lambda_2) and "opening_over_pi"')
     add_scheme_option(p)
     add_pool_options(p)
+    add_quiet_option(p)
+    add_plot_option(p, "the characteristic map at the first, the last and a middle vertex, over the certified bounds of its "
+                    "Jacobian and of the spectral gap at every vertex, coloured by verdict")
     p.set_defaults(func=run)
 
 
@@ -140,19 +145,23 @@ def _one(n: int, scheme: Scheme, max_depth: int) -> _Row:
     return _Row(r.n, r.verdict, r.reason, r.as_json())
 
 
-def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
+def _vertex(item: tuple, scheme: Scheme):
+    """The :class:`~symdecomp.schemes.sector.SharpVertex` of one item of :func:`_sharp_items`."""
     from symdecomp.schemes.sector import SharpVertex
-    from symdecomp.verify.c1_sharp import c1_sharp_test
 
     kind, faces, angle, sharpness = item
     lat = scheme.lattice
     if kind == "crease":
-        vertex = SharpVertex.crease(faces[0], faces[1], lat, sharpness)
-    elif kind == "corner":
-        vertex = SharpVertex.corner(faces, lat, angle)
-    else:
-        vertex = SharpVertex.boundary(faces, lat)
-    r = c1_sharp_test(scheme, vertex, max_depth=max_depth)
+        return SharpVertex.crease(faces[0], faces[1], lat, sharpness)
+    if kind == "corner":
+        return SharpVertex.corner(faces, lat, angle)
+    return SharpVertex.boundary(faces, lat)
+
+
+def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
+    from symdecomp.verify.c1_sharp import c1_sharp_test
+
+    r = c1_sharp_test(scheme, _vertex(item, scheme), max_depth=max_depth)
     return _Row(r.n, r.verdict, r.reason, r.as_json(), r.vertex)
 
 
@@ -189,37 +198,46 @@ def run(args) -> int:
     from symdecomp.verify.result import C1Verdict
 
     items = _sharp_items(args)
+    plot = check_plot(args)
     if items is not None:
-        return _run_sharp(args, items)
+        return _run_sharp(args, items, plot)
 
     valences = args.valences
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
-    results = list(progress(rows, len(valences), "c1", enabled=sys.stderr.isatty()))
+    results = list(progress(rows, len(valences), "c1", enabled=not args.quiet))
     if args.json:
-        print_json([r.json for r in results])
+        print_json(args, [r.json for r in results])
     else:
         print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
         print(f"method: {args.scheme.lattice.c1_method}")
         for r in results:
             print(f"n = {r.n:>3}: {LABELS[r.verdict.value]}: {r.reason}")
+    write_plot(plot, lambda: _figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 
 
-def _run_sharp(args, items: list[tuple]) -> int:
+def _figure(scheme: Scheme, results: list[_Row], vertices: list | None = None):
+    from symdecomp.output.plotting.c1_figures import c1_figure
+
+    return c1_figure(scheme, [{**r.json, "vertex": r.vertex} for r in results], vertices)
+
+
+def _run_sharp(args, items: list[tuple], plot) -> int:
     from symdecomp.parallel import ordered_map
     from symdecomp.verify.c1_sharp import SHARP_METHOD
     from symdecomp.verify.result import C1Verdict
 
     rows = ordered_map(_sharp_one, items, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
-    results = list(progress(rows, len(items), "c1", enabled=sys.stderr.isatty()))
+    results = list(progress(rows, len(items), "c1", enabled=not args.quiet))
     if args.json:
-        print_json([r.json for r in results])
+        print_json(args, [r.json for r in results])
     else:
         print(f"{args.scheme.name}: Zorin's conditions at {items[0][0]} vertices")
         print(f"method: {SHARP_METHOD}")
         width = max(len(r.vertex) for r in results)
         for r in results:
             print(f"{r.vertex:<{width}}: {LABELS[r.verdict.value]}: {r.reason}")
+    write_plot(plot, lambda: _figure(args.scheme, results, [_vertex(item, args.scheme) for item in items]))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1

@@ -41,7 +41,7 @@ def _run_general(args, why: str = "") -> int:
         raise InvalidInputError("--free-weights applies to the Catmull-Clark 1-ring only (not to triangle schemes or --rings > 1)")
     data = ring_charpoly(args.scheme, args.n, args.rings)
     if args.json:
-        print_json(data)
+        print_json(args, data)
         return 0 if data["matches_matrix"] else 1
     print(f"{args.scheme.name}: det(x I - S), S the {args.rings}-ring matrix of size {data['size']}, x written as {LAM}")
     if why:
@@ -92,6 +92,7 @@ def run(args) -> int:
     coefficients, matches = _coefficients(scheme, args.n, args.free_weights)
     if args.json:
         print_json(
+            args,
             {
                 "n": args.n,
                 "scheme": scheme.name,

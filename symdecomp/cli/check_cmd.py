@@ -21,6 +21,8 @@ from symdecomp.cli.common import (
     sharp_given,
     valence_range,
 )
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.cli.sharp import add_sharp_options, sector_range
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import MAX_DOUBLE_DIGITS, check_memory
@@ -82,10 +84,13 @@ def register(sub) -> None:
     add_scheme_option(p)
     add_rings_option(p)
     add_sharp_options(p, count="--k")
+    add_quiet_option(p)
+    add_plot_option(p, "the agreement by valence (by sector at a sharp vertex): the digits of agreement against --dps, or "
+                    "the distinct eigenvalues proved and the characteristic polynomial's size, coloured by status")
     p.set_defaults(func=run)
 
 
-def _run_sharp(args) -> int:
+def _run_sharp(args, plot) -> int:
     """``check --k A:B --boundary --certify`` (and --corner, --crease K2, --dart): one certified row per K."""
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
     from symdecomp.verify.sharp_certify import certify_sharp
@@ -106,7 +111,7 @@ def _run_sharp(args) -> int:
         print(f"{args.scheme.name}: mirror decomposition vs full matrix, certified (exact): chi_S of the refined 1-ring "
               "matrix = det(l - C) prod det(l - M(theta_j)) in Q[l] (Q(cos(pi/K))[l] for cos(theta_k) weights)")
         print(f"{'K':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'vertex':<16} {'chi_S bits':>10}  certificate")
-    for vertex in progress(vertices, len(vertices), "certify"):
+    for vertex in progress(vertices, len(vertices), "certify", enabled=not args.quiet):
         r = exact_only(args, vertex, lambda: certify_sharp(args.scheme, vertex))  # noqa: B023 - called at once
         rows.append(r)
         if not args.json:
@@ -117,7 +122,7 @@ def _run_sharp(args) -> int:
     failed = [r for r in rows if not r.ok]
     counts = {st: sum(1 for r in rows if r.status.value == st) for st in ("agree", "disagree", "undecided")}
     if args.json:
-        print_json({"scheme": args.scheme.name, "vertex": describe(vertices[0]).split()[0], "rows": [r.as_json() for r in rows],
+        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertices[0]).split()[0], "rows": [r.as_json() for r in rows],
                     "summary": {"mode": "certified", "route": "mirror", "sectors": len(rows), **counts,
                                 "seconds": round(elapsed, 3), "ok": not failed}})
     else:
@@ -125,7 +130,14 @@ def _run_sharp(args) -> int:
         print(f"{len(rows)} vertices: {tally} ({elapsed:.2f} s)")
         for r in failed:
             print(f"FAILED {r.message}")
+    write_plot(plot, lambda: _figure(args.scheme.name, rows))
     return 1 if failed else 0
+
+
+def _figure(scheme: str, rows: list):
+    from symdecomp.output.plotting.check_chart import check_figure
+
+    return check_figure(scheme, [r.as_json() for r in rows])
 
 
 def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):
@@ -217,6 +229,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
     from symdecomp.verify.result import CrossCheckStatus
 
+    plot = check_plot(args)
     if args.sectors is not None or sharp_given(args):
         if args.sectors is None:
             raise InvalidInputError("--n: valences of interior vertices; give the faces of a boundary, crease, corner or "
@@ -224,7 +237,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         if not sharp_given(args):
             raise InvalidInputError("--k: the faces of a sharp vertex's sector: give --boundary, --corner, --crease K2 or "
                                     "--dart (interior valences are --n A:B)")
-        return _run_sharp(args)
+        return _run_sharp(args, plot)
     rings = args.rings if general_path(args) else None
     args.route_note = ""
     if args.certify:
@@ -243,7 +256,7 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     if not args.json:
         _header(args, rings, solver)
     for r in check_valences(args.scheme, args.valences, certified=args.certify, dps=args.dps,
-                            closed_forms=closed_forms, jobs=args.jobs, show_progress=True, rings=rings,
+                            closed_forms=closed_forms, jobs=args.jobs, show_progress=not args.quiet, rings=rings,
                             method="structure" if args.route == "structural" else "charpoly", solver=solver,
                             executor=args.executor):
         rows.append(r)
@@ -264,12 +277,13 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
         "ok": not failed,
     }
     if args.json:
-        print_json({"scheme": args.scheme.name, "rings": args.rings, "rows": [r.as_json() for r in rows], "summary": summary})
+        print_json(args, {"scheme": args.scheme.name, "rings": args.rings, "rows": [r.as_json() for r in rows], "summary": summary})
     else:
         tally = ", ".join(f"{v} {k}" for k, v in counts.items() if v)
         print(f"{len(rows)} valences: {tally} ({elapsed:.2f} s)")
         for r in failed:
             print(f"FAILED {r.message}")
+    write_plot(plot, lambda: _figure(args.scheme.name, rows))
     return 1 if failed else 0
 
 

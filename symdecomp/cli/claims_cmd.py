@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 
 from symdecomp.cli.common import Once, add_budget_option, add_scheme_option, flag, print_json, progress, refuse_non_quad
+from symdecomp.cli.progress import add_quiet_option
 
 
 def register(sub) -> None:
@@ -21,13 +22,15 @@ def register(sub) -> None:
         "the verdicts established for every n (proved, or an erratum whose correction is proved for every n with an "
         "exact counterexample).",
     )
-    flag(p, "--json", help="print a JSON list of {label, section, title, status, scope, evidence, ...}")
+    flag(p, "--json", help="print the one JSON shape (docs: File formats, --json) with one row per claim: {label, section, title, "
+         "status, scope, evidence, ...}")
     p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1), or of the toolkit's "
                    "own claims beyond the paper (B, B.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
     add_scheme_option(p)
     add_budget_option(p)
-    flag(p, "--no-progress", help="do not draw a progress bar on stderr")
+    flag(p, "--no-progress", help="do not draw a progress bar on stderr (the same as --quiet)")
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -58,7 +61,7 @@ def run(args) -> int:
             raise InvalidInputError(f"no claim labelled {', '.join(sorted(unknown))}")
         claims = [c for c in claims if c.label in wanted]
     rows, results = [], []
-    for c in progress(claims, len(claims), "checking claims", enabled=not args.no_progress and not args.json):
+    for c in progress(claims, len(claims), "checking claims", enabled=not (args.no_progress or args.quiet or args.json)):
         r = check_claim(c.label, args.scheme, budget=args.budget)
         results.append(r)
         row = {
@@ -76,7 +79,7 @@ def run(args) -> int:
                 row[key] = list(value) if isinstance(value, tuple) else value if isinstance(value, int) else str(value)
         rows.append(row)
     if args.json:
-        print_json(rows)
+        print_json(args, rows)
     else:
         wl = max((len(r["label"]) for r in rows), default=5)
         ws = max((len(r["status"]) for r in rows), default=9)

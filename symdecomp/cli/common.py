@@ -10,11 +10,11 @@ repeated option is an error, not "the last one wins". The checks call
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import re
-import sys
 
+from symdecomp.cli.json_envelope import print_json
+from symdecomp.cli.progress import progress
 from symdecomp.errors import InvalidInputError, SymdecompError
 from symdecomp.parallel import parse_executor
 from symdecomp.schemes.files import SCHEMES, load_scheme
@@ -326,34 +326,3 @@ def check_scheme_valences(args) -> None:
                                 f"{valences} (face counts 1 and 2 are for --boundary, --corner, --crease or --dart)")
     for n in valences if isinstance(valences, list) else [valences]:
         scheme.fitting_valence(n, real=True)
-
-
-def progress(iterable, total: int, label: str, *, enabled: bool = True):
-    """Yield from ``iterable``, drawing a progress bar on stderr only when stderr is a terminal.
-
-    The one progress helper of the command line: a log file or a pipe gets no carriage-return
-    updates at all.
-    """
-    stream = sys.stderr
-    show = enabled and total > 1 and _is_terminal(stream)
-    for done, item in enumerate(iterable, 1):
-        yield item
-        if show:
-            width = 30
-            filled = int(width * done / total)
-            stream.write(f"\r{label} [{'#' * filled}{'.' * (width - filled)}] {done}/{total}")
-            stream.flush()
-    if show:
-        stream.write("\n")
-
-
-def _is_terminal(stream) -> bool:
-    try:
-        return stream.isatty()
-    except (AttributeError, ValueError):
-        return False
-
-
-def print_json(obj) -> None:
-    json.dump(obj, sys.stdout, indent=2, sort_keys=False)
-    sys.stdout.write("\n")

@@ -8,6 +8,7 @@ from pathlib import Path
 
 from symdecomp.cli.common import Once, add_budget_option, add_scheme_option, flag, given, print_json, progress, refuse_non_quad
 from symdecomp.cli.files import check_output_directory, replace_owned_files
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import DEFAULT_BUDGET
 
@@ -31,7 +32,7 @@ def register(sub) -> None:
     p.add_argument("--out", action=Once, default="derivations",
                    help="output directory (default: derivations/), checked before any claim is computed; written as a "
                    "whole, so an interrupted run leaves the old files or the new ones, never a mix")
-    flag(p, "--json", help="print a JSON list of the files written")
+    flag(p, "--json", help="print the one JSON shape (docs: File formats, --json) with the files written under \"files\"")
     p.add_argument(
         "--label",
         action="append",
@@ -40,7 +41,8 @@ def register(sub) -> None:
     )
     add_scheme_option(p)
     add_budget_option(p)
-    flag(p, "--no-progress", help="do not draw a progress bar on stderr")
+    flag(p, "--no-progress", help="do not draw a progress bar on stderr (the same as --quiet)")
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -82,9 +84,9 @@ def run(args) -> int:
         print("\n".join(claim_latex(known[label], check_claim(label, args.scheme, budget=args.budget)) for label in args.label), end="")
         return 1 if any(check_claim(label, args.scheme, budget=args.budget).status is Status.ERROR for label in args.label) else 0
     out = check_output_directory(args.out)  # before the claims are computed: a bad path is bad input, now
-    written = write_derivations(out, show_progress=not args.no_progress and not args.json, scheme=args.scheme, budget=args.budget)
+    written = write_derivations(out, show_progress=not (args.no_progress or args.quiet or args.json), scheme=args.scheme, budget=args.budget)
     if args.json:
-        print_json([str(p) for p in written])
+        print_json(args, {"files": [str(p) for p in written]})
     else:
         for path in written:
             print(path)

@@ -164,5 +164,5 @@ def run(args) -> int:
         result = redesign_vertex(scheme, mesh, args.vertex, normal=args.normal, flatten_hyperbolic=bool(args.flatten_hyperbolic))
     write_output_file(out, encode_mesh(result.mesh, fmt))
     data = _report(result, out, fmt)
-    print_json(data) if args.json else _print(data)
+    print_json(args, data) if args.json else _print(data)
     return 0

@@ -135,7 +135,7 @@ def _run_sharp(args, kind: str) -> int:
 
     size = write_output_file(args.out, sharp_json_chunks(entries(), scheme.name, scheme.lattice.name))
     if args.json:
-        print_json({"out": args.out, "format": SHARP_FORMAT, "scheme": scheme.name, "kind": kind, "k": ks, "bytes": size,
+        print_json(args, {"out": args.out, "format": SHARP_FORMAT, "scheme": scheme.name, "kind": kind, "k": ks, "bytes": size,
                     "sizes": sizes})
     else:
         print(f"wrote {args.out}: {SHARP_FORMAT} ({scheme.name}), {kind} vertices with K = {ks[0]}..{ks[-1]} faces, "
@@ -184,7 +184,7 @@ def run(args) -> int:
     summary["jordan_valences"] = defective
     summary["estimate"] = {"megabytes": round(memory / 2**20), "seconds": round(seconds, 1)}
     if args.json:
-        print_json(summary)
+        print_json(args, summary)
     else:
         print(f"wrote {args.out}: {args.format}, valences 3..{ns[-1]}, {size} bytes (working precision up to {max(precs)} bits)")
         if defective:  # the matrix has no eigenvector basis there: the file carries its Jordan pairs

@@ -158,7 +158,7 @@ def run(args) -> int:
     if args.json:
         data = json_report(original, mesh, result, table, from_faces, status, scheme.lattice)
         data.update(details or {})
-        print_json(data)
+        print_json(args, data)
     for row in table:
         if row["tangent_plane"] is False:
             print(f"symdecomp inspect: {row['kind']}: the tangents are not certified the tangent plane's ({row['reason']})",

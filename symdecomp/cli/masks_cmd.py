@@ -101,7 +101,7 @@ def _run_general(args, certified: bool, why: str) -> int:
 
     data = ring_masks(args.scheme, args.n, args.rings, digits=args.digits)
     if args.json:
-        print_json({**data, "lambda_1_subdominant": certified, "subdominance": why})
+        print_json(args, {**data, "lambda_1_subdominant": certified, "subdominance": why})
         return _finish(args, data, certified, why)
     print(_header(args, data, certified, why))
     for title, mask in [("position", data["position"]), ("tangent 1", data["tangents"][0]), ("tangent 2", data["tangents"][1])]:
@@ -130,7 +130,7 @@ def run(args) -> int:
         return _run_general(args, certified, why)
     data = limit_masks_at(args.scheme, args.n).as_json(args.digits)
     if args.json:
-        print_json({**data, "lambda_1_subdominant": certified, "subdominance": why})
+        print_json(args, {**data, "lambda_1_subdominant": certified, "subdominance": why})
         return _finish(args, data, certified, why)
     closed = limit_masks(args.scheme)
     print(_header(args, data, certified, why))

@@ -149,7 +149,7 @@ def run(args) -> int:
         return _run_sharp(args, kinds)
     results = [compare(n, args.levels, args.seed) for n in progress(args.n, len(args.n), "oracle")]
     if args.json:
-        print_json([r.as_json() for r in results])
+        print_json(args, [r.as_json() for r in results])
     else:
         for r in results:
             print(f"n = {r.n}  ({r.levels} levels, seed {r.seed}): {'all agree' if r.agrees else 'DISAGREEMENT'}")
@@ -173,7 +173,7 @@ def _run_mesh(args) -> int:
     scheme, mesh, _ = prepare_mesh(args.scheme if given(args, "scheme") else None, original)
     r = compare_mesh(mesh, scheme)
     if args.json:
-        print_json(r.as_json())
+        print_json(args, r.as_json())
     else:
         print(f"{original.name}: {scheme.name}, {r.compared} vertices compared with OpenSubdiv's limit masks "
               f"({r.levels} levels first): {'all agree' if r.agrees else 'DISAGREEMENT'} (tolerance {r.tolerance:.0e})")
@@ -202,7 +202,7 @@ def _run_sharp(args, kinds) -> int:
              if args.creasing in ("both", c.creasing)]
     results = [r for case in progress(cases, len(cases), "oracle") for r in compare_sharp_case(case, seed=args.seed)]
     if args.json:
-        print_json([r.as_json() for r in results])
+        print_json(args, [r.as_json() for r in results])
     else:
         for r in results:
             worst = max((c for c in r.checks if c.comparable), key=lambda c: c.disagreement)

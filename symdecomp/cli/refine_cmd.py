@@ -74,7 +74,7 @@ def run(args) -> int:
     summary = {"mesh": mesh.name, "scheme": scheme.name, "steps": args.steps, "vertices": len(refined.points),
                "faces": len(refined.faces), "creases": len(refined.creases), "out": str(args.out), "bytes": written}
     if args.json:
-        print_json(summary)
+        print_json(args, summary)
     else:
         print(f"{mesh.name}: {args.steps} step(s) of {scheme.name}: {len(refined.points)} vertices, {len(refined.faces)} faces"
               f"{f', {len(refined.creases)} crease edges' if refined.creases else ''} -> {args.out} ({written} bytes)")

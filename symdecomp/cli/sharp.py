@@ -155,7 +155,7 @@ def run_sharp_masks(args) -> int:
     blocks = _block_names(args.scheme, vertex)
     value, where = acb_text(masks.subdominant.ball, args.digits), blocks.get(masks.subdominant.key, masks.subdominant.part)
     if args.json:
-        print_json({"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
+        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
                     "position": masks.position.as_json(masks.names, args.digits),
                     "tangents": [t.as_json(masks.names, args.digits) for t in masks.tangents],
                     "subdominant": {"value": value, "blocks": where}, "tangent_plane": masks.tangent_plane,

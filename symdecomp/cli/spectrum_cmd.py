@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, sharp_given
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.sharp import add_sharp_options, faces_or_valence
 from symdecomp.errors import InvalidInputError
 
@@ -34,18 +35,21 @@ def register(sub) -> None:
     add_scheme_option(p)
     add_rings_option(p)
     add_sharp_options(p)
+    add_plot_option(p, "the eigenvalues by the frequency k of the block M_k they come from (by block of the mirror "
+                    "decomposition at a sharp vertex), real ones by value, complex ones by modulus")
     p.set_defaults(func=run)
 
 
-def _run_sharp(args) -> int:
+def _run_sharp(args, plot) -> int:
     from symdecomp.analysis.sharp_spectrum import sharp_levels
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
 
     refuse_sharp_options(args, "--rings", "--exact")
     vertex = sharp_vertex(args, args.n)
     levels = exact_only(args, vertex, lambda: sharp_levels(args.scheme, vertex, digits=args.digits))
+    write_plot(plot, lambda: _figure(levels, describe(vertex)))
     if args.json:
-        print_json({"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
+        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
                     "levels": [s.as_json() for s in levels]})
         return 0
     for s in levels:
@@ -65,12 +69,19 @@ def _run_sharp(args) -> int:
     return 0
 
 
-def _run_general(args) -> int:
+def _figure(spectrum, vertex: str | None = None):
+    from symdecomp.output.plotting.spectrum_chart import sharp_spectrum_figure, spectrum_figure
+
+    return spectrum_figure(spectrum) if vertex is None else sharp_spectrum_figure(spectrum, vertex)
+
+
+def _run_general(args, plot) -> int:
     from symdecomp.analysis.ring_spectrum import ring_spectrum
 
     spectrum = ring_spectrum(args.scheme, args.n, args.rings, digits=args.digits, exact=args.exact or args.n <= EXACT_UP_TO)
+    write_plot(plot, lambda: _figure(spectrum))
     if args.json:
-        print_json(spectrum.as_json())
+        print_json(args, spectrum.as_json())
         return 0
     print(f"{spectrum.scheme} ({spectrum.mesh} mesh), valence n = {spectrum.n}, {spectrum.rings}-ring: "
           f"{spectrum.size} eigenvalues, {len(spectrum.eigenvalues)} distinct")
@@ -87,16 +98,18 @@ def _run_general(args) -> int:
 def run(args) -> int:
     from symdecomp.analysis.spectrum import closed_form_spectrum
 
+    plot = check_plot(args)
     if sharp_given(args):
-        return _run_sharp(args)
+        return _run_sharp(args, plot)
     if general_path(args):
-        return _run_general(args)
+        return _run_general(args, plot)
     if args.exact:
         raise InvalidInputError(f"--exact applies to the any-scheme route (a triangle scheme or --rings > 1); --scheme "
                                 f"{args.scheme.name} on the 1-ring is read from the closed forms, which it would ignore")
     spectrum = closed_form_spectrum(args.scheme, args.n, digits=args.digits)
+    write_plot(plot, lambda: _figure(spectrum))
     if args.json:
-        print_json(spectrum.as_json())
+        print_json(args, spectrum.as_json())
         return 0
     print(f"{spectrum.scheme}, valence n = {spectrum.n}: {2 * spectrum.n + 1} eigenvalues, {len(spectrum.eigenvalues)} distinct")
     width = max(len(e.text) for e in spectrum.eigenvalues)

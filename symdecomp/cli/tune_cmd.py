@@ -82,7 +82,7 @@ def run(args) -> int:
                 "eq44_ratio_of_mu": sp.sstr(cond.eq44_ratio_of_mu.subs(elliptic.MU, sp.Symbol("mu"))),
                 "scale_ratio_squared": sp.sstr(cond.scale_ratio_squared),
             }
-            print_json({"scheme": args.scheme.name, "closed_forms": closed, "rows": [r.as_json() for r in rows]})
+            print_json(args, {"scheme": args.scheme.name, "closed_forms": closed, "rows": [r.as_json() for r in rows]})
             return 0
         print(f"{args.scheme.name}: closed forms in n")
         print(f"  mu(n)            = {cond.subdominant}   (subdominant eigenvalue of Eq. 43)")
@@ -99,7 +99,7 @@ def run(args) -> int:
     result = tuning.tune(args.scheme, args.n)
     data = result.as_json(args.digits)
     if args.json:
-        print_json({"scheme": args.scheme.name, **data})
+        print_json(args, {"scheme": args.scheme.name, **data})
         return 0
     print(f"{args.scheme.name}, valence n = {args.n}")
     print(f"  lambda_1 = {data['lambda1']}, lambda_1^2 = {data['lambda1_squared']}, |B^1/A^1|^2 = {data['scale_ratio_squared']}")
@@ -156,7 +156,7 @@ def run_region(args) -> int:
 
         write_output_file(plot, figure_bytes(tuning_region_figure([region], {region.n: points}), fmt), "--plot")
     if args.json:
-        print_json(data)
+        print_json(args, data)
         return 0
     _print_region(data)
     return 0

@@ -47,6 +47,7 @@ import flint
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, to_acb
 from symdecomp.analysis.characteristic import frequency_block, frequency_eigenvector, ring_layout
+from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -59,7 +60,7 @@ __all__ = ["ArtifactIndicators", "artifact_indicators", "compare_exactly"]
 
 
 @dataclass(frozen=True)
-class ArtifactIndicators:
+class ArtifactIndicators(NotebookDisplay):
     """The artifact indicators at one valence (module docstring for each one's source)."""
 
     n: int

@@ -74,6 +74,7 @@ import flint
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.algebra.triangle_bezier import bezier_indices
 from symdecomp.analysis.characteristic import TRIANGLES, frequency_eigenvector, inner_boundary_nets, subpatch_nets
+from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS, DEGREE, regular_patch
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
@@ -102,7 +103,7 @@ def method(mesh: Lattice | str) -> str:
 
 
 @dataclass(frozen=True)
-class C1Result:
+class C1Result(NotebookDisplay):
     """Reif's test at one valence."""
 
     n: int

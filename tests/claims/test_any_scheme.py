@@ -20,7 +20,7 @@ def test_the_catmull_clark_file_gives_the_built_in_statuses(tmp_path, capsys):
     path = tmp_path / "cc.toml"
     path.write_text(CC_TOML)
     assert main(["claims", "--scheme", str(path), "--json", "--section", "5.1"]) == 0
-    rows = json.loads(capsys.readouterr().out)
+    rows = json.loads(capsys.readouterr().out)["rows"]
     assert {r["label"]: r["status"] for r in rows} == {k: v.value for k, v in EXPECTED.items() if k in {r["label"] for r in rows}}
     scheme = scheme_from_text(CC_TOML)
     assert {c.label: check_claim(c.label, scheme).status for c in all_claims()} == EXPECTED

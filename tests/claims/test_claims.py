@@ -52,7 +52,7 @@ def test_the_scope_summary_counts_errata_established_for_every_n():
 
 def test_claims_command_json(capsys):
     assert main(["claims", "--json", "--section", "5.1"]) == 0
-    rows = json.loads(capsys.readouterr().out)
+    rows = json.loads(capsys.readouterr().out)["rows"]
     by_label = {r["label"]: r for r in rows}
     section_51 = {"Eq. 25-30", "Eq. 31-32", "Eq. 33", "Eq. 34", "Eq. 35-37", "Eq. 38", "Proposition 5.1"}
     section_51 |= {"Remark 5.1", "Eq. 39", "Eq. 39 (n = 4)", "Eq. 39 (n → ∞)", "C1 (Reif's test)"}

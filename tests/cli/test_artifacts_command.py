@@ -19,7 +19,7 @@ def test_the_table_has_a_row_per_valence_with_the_regime(capsys):
 
 def test_json_for_loop(capsys):
     assert main(["artifacts", "--n", "5:7", "--scheme", "loop", "--json", "--jobs", "1"]) == 0
-    rows = json.loads(capsys.readouterr().out)
+    rows = json.loads(capsys.readouterr().out)["rows"]
     assert [r["curvature"]["regime"] for r in rows] == ["bounded", "bounded", "unbounded"]
     assert rows[0]["curvature"]["mu"][0]["exact"] is True and rows[1]["density"] == "regular"
     assert float(rows[2]["curvature"]["mu"][0]["value"]) > float(rows[2]["curvature"]["lambda1_squared"])

@@ -18,7 +18,7 @@ def test_boundary_range_prints_one_line_per_k(capsys):
 
 def test_blz_scheme_file_json(capsys):
     assert main(["c1", "--scheme", "loop-blz", "--boundary", "--k", "3:4", "--json"]) == 0
-    data = json.loads(capsys.readouterr().out)
+    data = json.loads(capsys.readouterr().out)["rows"]
     assert [d["vertex"] for d in data] == ["boundary k = 3", "boundary k = 4"]
     assert all(d["lambdas"] == pytest.approx([0.5, 0.5]) for d in data)
     # k = 3 is Loop's regular boundary, where BLZ's rule is Loop's: certified on the usual ring; at k = 4 the modified

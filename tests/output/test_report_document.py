@@ -91,7 +91,7 @@ def test_masks_are_masks_commands(scheme, capsys):
 def test_c1_table_is_c1_commands(scheme, capsys):
     report = build_report(scheme, [3, 4, 5], sections=(c1_section,))
     rows = _rows(report, "C1 at the extraordinary vertex")
-    theirs = _command_json(capsys, "c1", "--n", "3:5", "--scheme", scheme.name, "--json", "--jobs", "1")
+    theirs = _command_json(capsys, "c1", "--n", "3:5", "--scheme", scheme.name, "--json", "--jobs", "1")["rows"]
     assert [(r[0], r[1], str(r[4])) for r in rows] == [(str(t["n"]), t["verdict"], t["reason"]) for t in theirs]
     assert all(abs(float(r[2]) - t["lambda"]) < 1e-9 for r, t in zip(rows, theirs))
 
@@ -117,7 +117,7 @@ def test_shape_table_is_artifacts_commands(scheme, capsys):
     report = build_report(scheme, [3, 4, 5, 6], sections=(shape_section,))
     header = report.sections[0].blocks[1].header
     rows = [dict(zip(header, (str(c) for c in r))) for r in _rows(report, "Curvature and shape")]
-    theirs = _command_json(capsys, "artifacts", "--n", "3:6", "--scheme", scheme.name, "--json", "--jobs", "1")
+    theirs = _command_json(capsys, "artifacts", "--n", "3:6", "--scheme", scheme.name, "--json", "--jobs", "1")["rows"]
     assert [r["$n$"] for r in rows] == [str(t["n"]) for t in theirs]
     for mine, t in zip(rows, theirs):
         curvature = t["curvature"]

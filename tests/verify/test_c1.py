@@ -207,7 +207,7 @@ def test_scheme_whose_regular_rules_differ_is_refused_in_one_line():
 
 def test_command_line_json_and_exit_status(capsys):
     assert main(["c1", "--n", "3:5", "--json"]) == 0
-    rows = json.loads(capsys.readouterr().out)
+    rows = json.loads(capsys.readouterr().out)["rows"]
     assert [row["n"] for row in rows] == [3, 4, 5]
     for row in rows:
         assert row["verdict"] == "c1" and row["winding_number"] == 1 and row["gap"] > 0 and row["jacobian_lower_bound"] > 0

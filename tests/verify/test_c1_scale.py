@@ -154,7 +154,7 @@ def test_an_outer_eigenvalue_above_every_one_ring_eigenvalue_is_not_c1(monkeypat
 def test_the_command_line_takes_the_new_valence_bound(capsys):
     """Issue 24: a c1 sweep over n = 3..10,000 (on a Dask cluster when one machine is not enough) is accepted."""
     assert main(["c1", "--n", "10000", "--json"]) == 0
-    (row,) = json.loads(capsys.readouterr().out)
+    (row,) = json.loads(capsys.readouterr().out)["rows"]
     assert row["n"] == 10000 and row["verdict"] == "c1" and 0 < row["gap"] < 1e-6 and row["subdivision_depth"] == 0
     assert main(["c1", "--n", "10001"]) == 2
     err = capsys.readouterr().err.strip().splitlines()

@@ -92,7 +92,7 @@ def test_oracle_agrees_for_every_prediction(n):
 
 def test_oracle_command(capsys):
     assert main(["oracle", "--n", "4:5", "--levels", "6", "--json"]) == 0
-    out = json.loads(capsys.readouterr().out)
+    out = json.loads(capsys.readouterr().out)["rows"]
     assert [r["n"] for r in out] == [4, 5] and all(r["agrees"] for r in out)
     assert main(["oracle", "--n", "3", "--levels", "4"]) == 0
     text = capsys.readouterr().out

@@ -68,5 +68,5 @@ def test_oracle_command_for_loop(capsys):
     assert main(["oracle", "--scheme", "loop", "--n", "5:6", "--levels", "12", "--json"]) == 0
     import json
 
-    data = json.loads(capsys.readouterr().out)
+    data = json.loads(capsys.readouterr().out)["rows"]
     assert [r["n"] for r in data] == [5, 6] and all(r["agrees"] for r in data)

@@ -94,12 +94,12 @@ def test_opensubdiv_corner_tangents_follow_the_first_two_edges(scheme):
 
 def test_oracle_command_reports_agreement_and_disagreement(capsys):
     assert main(["oracle", "--kind", "boundary", "--k", "2", "--json"]) == 0
-    rows = json.loads(capsys.readouterr().out)
+    rows = json.loads(capsys.readouterr().out)["rows"]
     assert [r["kind"] for r in rows] == ["boundary"] and rows[0]["agrees"]
     assert all(c["disagreement"] <= TOLERANCE for c in rows[0]["checks"])
     assert main(["oracle", "--kind", "corner", "--k", "3"]) == 1
     assert "DISAGREES: surface tangent 2" in capsys.readouterr().out
     assert main(["oracle", "--kind", "crease", "--k", "2", "--sharpness", "5/2", "--scheme", "loop", "--creasing", "uniform",
                  "--json"]) == 0
-    rows = json.loads(capsys.readouterr().out)
+    rows = json.loads(capsys.readouterr().out)["rows"]
     assert {r["sharpness"] for r in rows} == {str(Fraction(5, 2))} and [r["level"] for r in rows][:4] == [0, 1, 2, 3]

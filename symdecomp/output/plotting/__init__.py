@@ -9,6 +9,20 @@ says how to install it if it is missing.
 The modules of this folder are listed, with the rest of the package, in the one module map: the docstring of :mod:`symdecomp`.
 """
 
-from symdecomp.output.plotting import boundary, cbmatrix, characteristic, elliptic, meshes, polygons, tangent, tuning
+from symdecomp.output.plotting import (
+    boundary,
+    c1_figures,
+    cbmatrix,
+    characteristic,
+    check_chart,
+    elliptic,
+    meshes,
+    polygons,
+    regime_chart,
+    spectrum_chart,
+    tangent,
+    tuning,
+)
 
-__all__ = ["polygons", "tangent", "elliptic", "cbmatrix", "characteristic", "meshes", "tuning", "boundary"]
+__all__ = ["polygons", "tangent", "elliptic", "cbmatrix", "characteristic", "meshes", "tuning", "boundary", "c1_figures",
+           "spectrum_chart", "regime_chart", "check_chart"]

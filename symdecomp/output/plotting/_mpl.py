@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import importlib
 
-__all__ = ["new_figure", "label_axes", "require_matplotlib", "figure_bytes"]
+__all__ = ["FORMATS", "new_figure", "label_axes", "require_matplotlib", "figure_bytes"]
 
 
 def require_matplotlib():
@@ -43,12 +43,16 @@ def label_axes(ax, xlabel: str, ylabel: str, title: str, **legend) -> None:
 _METADATA = {
     "pdf": {"Creator": "symdecomp", "Producer": "symdecomp", "CreationDate": None},
     "svg": {"Creator": "symdecomp", "Date": None},
+    "png": {"Software": "symdecomp"},
 }
 
+#: The formats :func:`figure_bytes` writes, by file extension.
+FORMATS = tuple(_METADATA)
 
-def figure_bytes(fig, fmt: str) -> bytes:
-    """``fig`` saved as ``fmt`` (``pdf`` or ``svg``) with the same bytes every time: no dates, fixed
-    metadata, SVG element ids from a fixed salt (matplotlib draws them from a random one), and the layout
+
+def figure_bytes(fig, fmt: str, *, dpi: int = 100) -> bytes:
+    """``fig`` saved as ``fmt`` (``pdf``, ``svg`` or ``png``, at ``dpi``) with the same bytes every time: no dates,
+    fixed metadata, SVG element ids from a fixed salt (matplotlib draws them from a random one), and the layout
     fixed at the first save (a constrained layout moves by rounding each time it runs)."""
     import io
 
@@ -59,5 +63,5 @@ def figure_bytes(fig, fmt: str) -> bytes:
         fig.draw_without_rendering()
         fig.set_layout_engine("none")
     with matplotlib.rc_context({"svg.hashsalt": "symdecomp", "svg.fonttype": "path", "pdf.compression": 6}):
-        fig.savefig(buffer, format=fmt, metadata=_METADATA[fmt])
+        fig.savefig(buffer, format=fmt, metadata=_METADATA[fmt], dpi=dpi)
     return buffer.getvalue()

@@ -44,7 +44,7 @@ from symdecomp.validate import cached, check_int, check_levels, check_type
 
 __all__ = [
     "SectorMode", "sector_modes", "mode_residual", "sector_polylines_figure",
-    "SectorMap", "sector_characteristic_map", "corner_maps_figure",
+    "SectorMap", "sector_characteristic_map", "sector_map_panel", "corner_maps_figure",
     "SECTOR_KINDS", "subdominant_eigenvalues", "subdominant_figure",
 ]
 
@@ -347,6 +347,23 @@ def _map_title(scheme: Scheme, k: int, angle, m: SectorMap) -> str:
     return f"{scheme.name}, k = {k}, angle {sp.sstr(angle)}\nlambda_1, lambda_2 = {l1:.4f}, {l2:.4f}\n{third}{notes}"
 
 
+def sector_map_panel(ax, m: SectorMap) -> None:
+    """Draw a :class:`SectorMap` on ``ax``: the refined faces' images (grey; filled red where a face's image is
+    reversed), the sharp edges (blue) and ``O``."""
+    for z in m.faces:
+        closed = np.append(z, z[:1])
+        ax.plot(closed.real, closed.imag, color="0.55", lw=0.4)
+    reversed_sign = -1 if np.sum(m.areas > 0) >= np.sum(m.areas < 0) else 1
+    for z in (z for z, area in zip(m.faces, m.areas) if np.sign(area) == reversed_sign):
+        ax.fill(z.real, z.imag, color="C3", alpha=0.6)
+    for e in m.sharp_edges:
+        ax.plot(e.real, e.imag, color="C0", lw=1.8)
+    ax.plot([0], [0], "k+")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (eigenvector of lambda_1)")
+    ax.set_ylabel("y (eigenvector of lambda_2)")
+
+
 def corner_maps_figure(schemes, corners=((2, sp.pi / 2), (3, 3 * sp.pi / 2)), *, levels: int = 3):
     """The characteristic maps of corners, one row per scheme, one column per corner ``(k faces, angle)``.
 
@@ -360,19 +377,8 @@ def corner_maps_figure(schemes, corners=((2, sp.pi / 2), (3, 3 * sp.pi / 2)), *,
     for row, scheme in zip(axes, schemes):
         for ax, (k, angle) in zip(row, corners):
             m = sector_characteristic_map(scheme, SharpVertex.corner(k, scheme.lattice, angle), levels=levels)
-            for z in m.faces:
-                closed = np.append(z, z[:1])
-                ax.plot(closed.real, closed.imag, color="0.55", lw=0.4)
-            reversed_sign = -1 if np.sum(m.areas > 0) >= np.sum(m.areas < 0) else 1
-            for z in (z for z, area in zip(m.faces, m.areas) if np.sign(area) == reversed_sign):
-                ax.fill(z.real, z.imag, color="C3", alpha=0.6)
-            for e in m.sharp_edges:
-                ax.plot(e.real, e.imag, color="C0", lw=1.8)
-            ax.plot([0], [0], "k+")
-            ax.set_aspect("equal")
+            sector_map_panel(ax, m)
             ax.set_title(_map_title(scheme, k, angle, m), fontsize=8)
-            ax.set_xlabel("x (eigenvector of lambda_1)")
-            ax.set_ylabel("y (eigenvector of lambda_2)")
     fig.suptitle("Characteristic maps of corners: the sector's faces refined, boundary curves in blue, reversed faces in red")
     return fig
 

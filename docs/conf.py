@@ -25,7 +25,7 @@ release = version = __version__
 extensions = [
     "myst_nb",
     "sphinx.ext.autodoc",
-    "sphinx.ext.mathjax",
+    "offline_math",  # MathJax from the site itself, not a CDN: the math reads offline (_ext/offline_math.py)
     "symdecomp_docs",
 ]
 exclude_patterns = ["_build", "_ext", "**.ipynb_checkpoints"]

@@ -84,6 +84,9 @@ LIMITS = {
                  "(a run's memory is estimated and checked before it starts)"),
 }
 
+#: Where a help text sends a reader for the scheme file format (one page of the docs, from the one docstring).
+SCHEME_FORMAT = "(the format: docs/formats/scheme-files.rst, the docs' page 'Scheme files'; the docstring of symdecomp.schemes.files)"
+
 _INTEGER = re.compile(r"[+-]?[0-9]{1,12}", re.ASCII)
 _DIGITS = re.compile(r"[+-]?[0-9]+", re.ASCII)
 
@@ -263,7 +266,7 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         default="catmull-clark",  # text: argparse builds the scheme (type) only when a command runs, not for --help
         metavar="NAME|FILE",
         help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
-        "(the format: docs, File formats; the docstring of symdecomp.schemes.files)",
+        f"{SCHEME_FORMAT}",
     )
 
 

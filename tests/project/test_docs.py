@@ -141,3 +141,14 @@ def test_the_site_builds_with_warnings_as_errors(tmp_path):
     assert 'id="command-check"' in commands and "usage: symdecomp check" in commands
     guide = (tmp_path / "html" / "guide" / "command-line.html").read_text()
     assert ".. list-table::" not in guide and guide.count("<table") >= 3, "the generated tables are tables on a Markdown page too"
+
+
+def test_the_help_texts_send_readers_to_pages_that_exist():
+    """A ``--help`` that names a documentation page names one that exists, and none sends to the README for a format."""
+    from symdecomp.cli import build_parser
+
+    helps = {name: " ".join(parser.format_help().split()) for name, parser in EXT.subcommands(build_parser()).items()}
+    pages = {name: re.findall(r"docs/[\w./-]+\.(?:rst|md)", text) for name, text in helps.items()}
+    assert "docs/formats/scheme-files.rst" in pages["report"] and "docs/formats/scheme-files.rst" in pages["spectrum"]
+    assert [(name, page) for name, found in pages.items() for page in found if not (ROOT / page).is_file()] == []
+    assert [name for name, text in helps.items() if "README" in text] == []

@@ -18,9 +18,9 @@ Two modes (the mathematics is :mod:`symdecomp.analysis.design`):
   hyperbolic heights; the whole mesh is written with the changed 1-ring.
 
 ``--out FILE`` (``.obj``, ``.off``, ``.ply``, or ``--format``) is checked before any work and written whole. By
-default each coordinate is written as the shortest decimal that reads back as the double nearest it (Python's
-``repr``; PLY stores the double), and the achieved values are measured again on the net as the file holds it, so
-the output describes the file (its normal is then parallel to ``--normal`` to double precision). With ``--exact``
+default each coordinate is rounded to the double nearest it and written as the shortest decimal that reads back as
+that double (Python's ``repr``; PLY stores the double), and the achieved values are those of the net of these
+doubles (measured again where the rounding changed a coordinate), so that the output describes the file. With ``--exact``
 the file holds the computed net exactly where its coordinates are terminating decimals (every coordinate is
 ``p + x u + y v + h N`` with doubles ``x, y, h`` and integer ``u, v, N``, so exact in OBJ and OFF when
 ``--position`` is decimal, written in full: a double is up to about 55 significant digits; PLY stores doubles, so
@@ -38,6 +38,7 @@ JSON (``--json``): ``{"scheme", "n", "vertex", "ring", "out", "format", "positio
 from __future__ import annotations
 
 import argparse
+from fractions import Fraction
 
 from symdecomp.cli.common import Once, flag, integer, print_json, scheme_by_name, valence
 from symdecomp.schemes.meshformats import FORMATS
@@ -141,26 +142,31 @@ def _decimal(x: float) -> str:
     return text[:-2] if text.endswith(".0") else text
 
 
-def _as_written(mesh, fmt: str):
-    """``mesh`` as its file holds it without ``--exact``: each coordinate the double nearest it (PLY), written as its
-    shortest decimal (OBJ, OFF: read back as the rational that decimal spells)."""
+def _rounded(mesh, coordinate):
+    """``mesh`` with every coordinate ``c`` replaced by ``coordinate(c)`` (``mesh`` itself when none changes)."""
     from dataclasses import replace
-    from fractions import Fraction
 
-    def written(c) -> Fraction:
-        return Fraction(float(c)) if fmt == "ply" else Fraction(repr(float(c)))
-
-    points = tuple(tuple(written(c) for c in p) for p in mesh.points)
+    points = tuple(tuple(coordinate(c) for c in p) for p in mesh.points)
     return mesh if points == mesh.points else replace(mesh, points=points, _topology={})
 
 
-def _measured_as_written(args, mode: str, scheme, result, fmt: str):
-    """``result`` with its net as written (:func:`_as_written`) and the achieved values measured again on it."""
+def _double(c) -> Fraction:
+    return Fraction(float(c))
+
+
+def _shortest(c) -> Fraction:
+    """The shortest decimal that reads back as the double nearest ``c`` (``repr``), as the rational it spells."""
+    return Fraction(repr(float(c)))
+
+
+def _on_doubles(args, mode: str, scheme, result):
+    """``result`` with its net rounded to doubles (what the file holds without ``--exact``) and the achieved values
+    measured again on that net where rounding changed it (a non-dyadic coordinate, as from ``--position 1/3``)."""
     from dataclasses import replace
 
     from symdecomp.analysis.design import frame, limit_frame
 
-    mesh = _as_written(result.mesh, fmt)
+    mesh = _rounded(result.mesh, _double)
     if mesh is result.mesh:
         return result
     if mode == "new":
@@ -208,9 +214,11 @@ def run(args) -> int:
         mesh = read_mesh(args.mesh_file)
         scheme = args.scheme if args.scheme is not None else scheme_for_mesh(mesh)
         result = redesign_vertex(scheme, mesh, args.vertex, normal=args.normal, flatten_hyperbolic=bool(args.flatten_hyperbolic))
+    written = result.mesh
     if not args.exact:
-        result = _measured_as_written(args, mode, scheme, result, fmt)
-    write_output_file(out, encode_mesh(result.mesh, fmt))
+        result = _on_doubles(args, mode, scheme, result)
+        written = _rounded(result.mesh, _shortest)  # the same doubles, in at most 17 significant digits
+    write_output_file(out, encode_mesh(written, fmt))
     data = _report(result, out, fmt)
     print_json(data) if args.json else _print(data, bool(args.exact))
     return 0

@@ -11,6 +11,7 @@ import sympy as sp
 from symdecomp.analysis.design import limit_frame
 from symdecomp.cli import main
 from symdecomp.schemes.loop import loop
+from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.meshformats import read_mesh
 from symdecomp.schemes.scheme import catmull_clark
 
@@ -114,15 +115,17 @@ def test_by_default_coordinates_are_written_as_the_shortest_decimal_of_their_dou
     coordinates = [c for line in coordinates for c in line.split()] if fmt == "off" else coordinates
     assert len(coordinates) == 3 * len(rounded.points)
     assert all(len(c.lstrip("-").replace(".", "").lstrip("0")) <= 17 for c in coordinates), coordinates  # a double's digits
-    again = limit_frame(catmull_clark(), rounded, 0, normal=(2, -1, 2))
+    doubles = PolygonMesh.from_arrays([[Fraction(float(c)) for c in p] for p in rounded.points], rounded.faces)
+    again = limit_frame(catmull_clark(), doubles, 0, normal=(2, -1, 2))  # the net of the doubles the file spells
     assert [str(x) for x in again.position] == data["position_exact"] and again.normal_exact is data["normal_exact"]
+    assert data["position_exact"][0] != "1/3" and abs(data["position"][0] - 1 / 3) < 1e-15  # 1/3 is no double
 
 
 def test_limit_positions_are_decimals_unless_exact_is_asked(tmp_path, capsys):
     argv = ["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--flatten-hyperbolic", "--out", str(tmp_path / "m.obj")]
     assert main(argv) == 0
-    assert "limit position  0.025, -0.015, 1.175\n" in capsys.readouterr().out
+    assert "limit position  0.025, -0.015000000000000001, 1.175\n" in capsys.readouterr().out  # the nearest doubles
     assert main([*argv, "--exact"]) == 0
     line = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("limit position"))
     position = [Fraction(x) for x in line.removeprefix("limit position  ").split(", ")]
-    assert all(abs(x - y) < 1e-15 for x, y in zip(position, (0.025, -0.015, 1.175))) and position[0] != Fraction(1, 40)
+    assert [float(x) for x in position] == [0.025, -0.015000000000000001, 1.175] and position[0] != Fraction(1, 40)

@@ -152,3 +152,16 @@ def test_the_help_texts_send_readers_to_pages_that_exist():
     assert "docs/formats/scheme-files.rst" in pages["report"] and "docs/formats/scheme-files.rst" in pages["spectrum"]
     assert [(name, page) for name, found in pages.items() for page in found if not (ROOT / page).is_file()] == []
     assert [name for name, text in helps.items() if "README" in text] == []
+
+
+def test_the_notebook_titles_are_numbered_as_their_files():
+    """The sidebar lists the notebooks by title: each is ``# N. ...`` with N the number its file name starts with."""
+    import json
+
+    titles = {}
+    for path in sorted((ROOT / "notebooks").glob("*.ipynb")):
+        cell = next(c for c in json.loads(path.read_text())["cells"] if c["cell_type"] == "markdown")
+        titles[path.name] = "".join(cell["source"]).splitlines()[0]
+    assert len(titles) >= 10
+    wrong = {name: title for name, title in titles.items() if not title.startswith(f"# {int(name.split('_', 1)[0])}. ")}
+    assert wrong == {}

@@ -97,7 +97,7 @@ def _map_modules():
     return EXT.map_modules(symdecomp.__doc__)
 
 
-def test_every_module_of_the_map_has_an_api_page_entry():
+def test_every_module_of_the_map_has_an_api_page_entry(tmp_path):
     import symdecomp
 
     rows = [head.rstrip("/") for head, _, _ in EXT.map_rows(symdecomp.__doc__)]
@@ -105,9 +105,51 @@ def test_every_module_of_the_map_has_an_api_page_entry():
     covered = re.findall(r"^\.\. symdecomp-api:: (\S+)$", pages, re.M)
     assert sorted(covered) == sorted(rows), "each row of the module map has its API page"
     generated = "".join(EXT.api_reference(row) for row in covered)
+    pages = {path.stem: path.read_text() for path in EXT.write_module_pages(tmp_path)}
     for module in _map_modules():
         name = f"symdecomp.{module}"
-        assert f".. automodule:: {name}\n" in generated or f".. py:module:: {name}\n" in generated, name
+        text = pages.get(name, generated)  # a folder's module has its own page; a top-level module is on its row's
+        assert f".. automodule:: {name}\n" in text or f".. py:module:: {name}\n" in text, name
+        assert name in pages or f"\n   modules/{name}\n" not in generated
+
+
+def test_the_api_pages_have_one_line_summaries():
+    """A folder's page is its package and a table of its modules (their docstrings' first sentences), one page per
+    module; a module's page opens with a table of its public names, each beside its docstring's first sentence."""
+    from symdecomp.analysis import spectrum
+
+    analysis = EXT.api_reference("analysis")
+    assert analysis.count(".. automodule::") == 1 and "   modules/symdecomp.analysis.spectrum\n" in analysis
+    assert f"   * - :py:mod:`symdecomp.analysis.spectrum`\n     - {EXT.summary(spectrum)}\n" in analysis
+    page = EXT.module_page("symdecomp.analysis.spectrum")
+    table = page.split(".. list-table::", 1)[1].split(".. automodule::", 1)[0]
+    names = re.findall(r"^   \* - :py:obj:`~symdecomp\.analysis\.spectrum\.(\w+)`$", table, re.M)
+    assert names and not [n for n in names if n.startswith("_")]
+    assert all(getattr(spectrum, n).__module__ == "symdecomp.analysis.spectrum" for n in names if callable(getattr(spectrum, n)))
+    for name in names:
+        assert f"`~symdecomp.analysis.spectrum.{name}`\n     - {EXT.summary(getattr(spectrum, name))}\n" in table
+    errors = EXT.api_reference("errors")
+    assert errors.index(".. list-table::") < errors.index(".. automodule:: symdecomp.errors")
+    assert "   * - :py:obj:`~symdecomp.errors.SymdecompError`\n" in errors
+
+
+def test_a_summary_is_the_first_sentence_unless_that_splits_markup():
+    def f():
+        """Eq. 34 in ``c = cos(j pi/n)``. More text.
+
+        Another paragraph."""
+
+    def g():
+        """The ratio ``a. b`` of ``x``, e.g. two. Next."""
+
+    def h():
+        """No sentence end (a ``literal``. inside
+        parentheses), two lines"""
+
+    assert EXT.summary(f) == "Eq. 34 in ``c = cos(j pi/n)``."
+    assert EXT.summary(g) == "The ratio ``a. b`` of ``x``, e.g. two."
+    assert EXT.summary(h) == "No sentence end (a ``literal``. inside parentheses), two lines"
+    assert EXT.summary(lambda: None) == ""
 
 
 def test_the_docs_read_every_module_of_the_map():

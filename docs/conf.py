@@ -27,8 +27,9 @@ extensions = [
     "sphinx.ext.autodoc",
     "offline_math",  # MathJax from the site itself, not a CDN: the math reads offline (_ext/offline_math.py)
     "symdecomp_docs",
+    "guide_figures",  # the guide pages' pictures, drawn by the commands during the build (_ext/guide_figures.py)
 ]
-exclude_patterns = ["_build", "_ext", "**.ipynb_checkpoints"]
+exclude_patterns = ["_build", "_ext", "_generated", "**.ipynb_checkpoints"]
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_heading_anchors = 3
 

@@ -207,3 +207,18 @@ def test_the_notebook_titles_are_numbered_as_their_files():
     assert len(titles) >= 10
     wrong = {name: title for name, title in titles.items() if not title.startswith(f"# {int(name.split('_', 1)[0])}. ")}
     assert wrong == {}
+
+
+def test_the_readme_says_what_each_optional_part_needs():
+    """The extras it names exist, and the Debian packages it names are those CI installs for the same part."""
+    import tomllib
+
+    extras = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]
+    named = re.findall(r'pip install "symdecomp\[(\w+)\]"', README)
+    assert {"report", "dask"} <= set(named) and set(named) <= set(extras)
+    steps = {path.name: path.read_text() for path in (ROOT / ".ci" / "steps").glob("*.sh")}
+    for package in ("libosd-dev", "libosdcpu3.5.0", "g++"):
+        assert package in README and package in steps["30-opensubdiv.sh"], package
+    for package in ("texlive-latex-base", "texlive-latex-recommended"):
+        assert package in README and package in steps["20-latex.sh"], package
+    assert "matplotlib" in README and any(d.startswith("matplotlib") for d in extras["report"])

@@ -166,8 +166,9 @@ def _on_doubles(args, mode: str, scheme, result):
 
     from symdecomp.analysis.design import frame, limit_frame
 
-    mesh = _rounded(result.mesh, _double)
-    if mesh is result.mesh:
+    net = result.mesh  # (a control net, not a mesh kind)
+    mesh = _rounded(net, _double)
+    if mesh is net:
         return result
     if mode == "new":
         u, _, N = frame(args.normal, args.tangent)  # the frame the design was built in

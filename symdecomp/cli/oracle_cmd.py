@@ -9,11 +9,10 @@ from __future__ import annotations
 import argparse
 import math
 import re
-import sys
 from fractions import Fraction
 
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, flag, integer, print_json, progress, valence_range
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import InvalidInputError, UnavailableError
 
 
 def register(sub) -> None:
@@ -150,10 +149,8 @@ def _run_sharp(args, kinds) -> int:
 
     try:
         import symdecomp.schemes.sector  # noqa: F401  (the toolkit's side of the comparison)
-    except ModuleNotFoundError:
-        print("symdecomp oracle: --kind needs the sharp vertex model (symdecomp.schemes.sector), not in this build",
-              file=sys.stderr)
-        return 3
+    except ModuleNotFoundError:  # main() prints the one error line and exits with 3
+        raise UnavailableError("--kind needs the sharp vertex model (symdecomp.schemes.sector), not in this build") from None
 
     scheme = "catmull-clark" if args.scheme.lattice.face_neighbours else "loop"  # _comparison checked the rules
     cases = [c for c in sharp_cases(scheme, kinds, args.k, args.sharpness or SHARPNESS)

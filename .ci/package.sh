@@ -23,6 +23,15 @@ python -m build --outdir "$work/dist" . >"$work/build.log" 2>&1 || { cat "$work/
 ls "$work/dist"
 echo "== twine check"
 python -m twine check --strict "$work/dist/"*
+echo "== the wheel holds the license and the PEP 561 marker"
+python - "$work/dist/"*.whl <<'EOF'
+import sys, zipfile
+names = zipfile.ZipFile(sys.argv[1]).namelist()
+wanted = ["symdecomp/py.typed", next((n for n in names if n.endswith(".dist-info/licenses/LICENSE")), "*.dist-info/licenses/LICENSE")]
+missing = [n for n in wanted if n not in names]
+assert not missing, f"missing from the wheel: {missing}"
+print("\n".join(wanted))
+EOF
 
 echo "== fresh virtual environment, the wheel installed from its file"
 python -m venv "$work/venv"

@@ -1,8 +1,10 @@
 """Sphinx configuration of the symdecomp documentation (``python -m sphinx -W -b html docs docs/_build/html``).
 
 The command reference, the API reference, the module map and the tables of limits and exit codes
-are generated from the code by ``_ext/symdecomp_docs.py``; the notebooks are executed during the
-build (see ``nb_execution_mode`` below).
+are generated from the code by ``_ext/symdecomp_docs.py``; the guide's pictures are drawn by the
+commands themselves (``_ext/guide_figures.py``); the math is typeset by a MathJax copied into the site,
+so it reads offline (``_ext/offline_math.py``); the notebooks are executed during the build (see
+``nb_execution_mode`` below).
 """
 
 import os
@@ -25,10 +27,11 @@ release = version = __version__
 extensions = [
     "myst_nb",
     "sphinx.ext.autodoc",
-    "sphinx.ext.mathjax",
+    "offline_math",  # MathJax from the site itself, not a CDN: the math reads offline (_ext/offline_math.py)
     "symdecomp_docs",
+    "guide_figures",  # the guide pages' pictures, drawn by the commands during the build (_ext/guide_figures.py)
 ]
-exclude_patterns = ["_build", "_ext", "**.ipynb_checkpoints"]
+exclude_patterns = ["_build", "_ext", "_generated", "**.ipynb_checkpoints"]
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_heading_anchors = 3
 

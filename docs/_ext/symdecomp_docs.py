@@ -7,8 +7,11 @@ without running Sphinx); a directive parses that text into the page:
   :func:`symdecomp.cli.build_parser` with its ``--help`` text (:func:`command_reference`);
 - ``symdecomp-module-map``: the one module map, the table in the docstring of :mod:`symdecomp`
   (:func:`map_rows`), each module linked to its API entry;
-- ``symdecomp-api ROW``: the API reference of one row of the map (a top-level module or a folder),
-  one ``automodule`` per module the map names (:func:`api_reference`);
+- ``symdecomp-api ROW``: the API reference of one row of the map (:func:`api_reference`): a top-level module
+  in full, a folder as its package's entry and a table of its modules (each with its docstring's first line)
+  linking to one page per module (:func:`module_page`, written into ``docs/api/modules/`` when the build
+  starts, generated and ignored by git), which opens with a table of the module's public names and the first
+  sentence of each one's docstring (:func:`summary`), then documents them;
 - ``symdecomp-public-api``: the names :mod:`symdecomp` re-exports, each linked to its home;
 - ``symdecomp-table NAME``: the tables kept in the code (exit codes, command-line limits, the
   expression budget).
@@ -21,6 +24,7 @@ from __future__ import annotations
 
 import contextlib
 import importlib
+import inspect
 import os
 import re
 import shutil
@@ -28,6 +32,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 NOTEBOOKS = ROOT / "notebooks"
+#: Where the one-page-per-module API pages are written, relative to the documentation's source folder.
+MODULE_PAGES = "api/modules"
 #: Width of the ``--help`` texts in the command reference (fixed, so that the pages do not depend on a terminal).
 HELP_COLUMNS = 100
 
@@ -83,20 +89,127 @@ def module_map() -> str:
     return "\n".join(out) + "\n"
 
 
-def api_reference(head: str) -> str:
-    """The API reference of the map's row ``head`` (``"errors"``, ``"algebra"``): one section per module."""
+def _row_modules(head: str) -> list[str]:
     rows = {name.rstrip("/"): modules for name, _, modules in map_rows(_package_doc())}
     if head not in rows:
         raise ValueError(f"{head!r} is not a row of the module map ({', '.join(rows)})")
-    out = []
-    for module in rows[head]:
-        name = f"symdecomp.{module}"
-        out += [f"``{name}``", "-" * (len(name) + 4), ""]
-        if module == "__main__":  # importing it runs the command line
-            out += [f".. py:module:: {name}", "", "``python -m symdecomp``: the command line, see :doc:`/commands`.", ""]
+    return rows[head]
+
+
+def public_names(name: str) -> list[str]:
+    """The public names module ``name`` defines, in the order of its source: the classes and functions defined
+    there, and the other names of its ``__all__`` that it defines (constants); not what it re-exports."""
+    module = importlib.import_module(name)
+    listed = set(getattr(module, "__all__", ()))
+    found = []
+    for attr, obj in vars(module).items():
+        if attr.startswith("_"):
+            continue
+        if inspect.isclass(obj) or inspect.isfunction(obj):
+            if getattr(obj, "__module__", None) == name:
+                found.append(attr)
+        elif attr in listed and not inspect.ismodule(obj):
+            found.append(attr)
+    return found
+
+
+def summary(obj) -> str:
+    """The one-line summary of ``obj``: the first sentence of its docstring's first paragraph, unless cutting there
+    would split inline markup (a literal, a role, emphasis, parentheses); then the whole paragraph."""
+    paragraph = " ".join((inspect.getdoc(obj) or "").split("\n\n", 1)[0].split())
+    for end in re.finditer(r"\.(?=\s|$)", paragraph):
+        head = paragraph[: end.end()]
+        if head.endswith(("e.g.", "i.e.", "Eq.", "Prop.", "Sec.", "Fig.", "cf.", "vs.")):
+            continue
+        literals, roles = head.count("``"), head.replace("``", "").count("`")
+        if literals % 2 == 0 and roles % 2 == 0 and head.count("**") % 2 == 0 and head.count("(") == head.count(")"):
+            return head
+    return paragraph
+
+
+class _DocComment:
+    """A module constant's ``#:`` comment, as the docstring :func:`summary` reads."""
+
+    def __init__(self, doc: str):
+        self.__doc__ = doc
+
+
+def _attribute_docs(module: str) -> dict[str, str]:
+    """The ``#:`` comments of ``module``'s names (what autodoc documents a constant with)."""
+    from sphinx.pycode import ModuleAnalyzer
+
+    docs = ModuleAnalyzer.for_module(module).find_attr_docs()
+    return {attr: "\n".join(lines) for (scope, attr), lines in docs.items() if scope == ""}
+
+
+def _summary(names: list[str], modules: bool = False) -> list[str]:
+    """A table of the dotted ``names`` (of modules, or of names in a module), each linked to its entry, beside the
+    first sentence of its docstring."""
+    rows = []
+    for name in names:
+        if modules:
+            obj, link = importlib.import_module(name), f":py:mod:`{name}`"
         else:
-            out += [f".. automodule:: {name}", "   :members:", ""]
+            module, _, attr = name.rpartition(".")
+            obj, link = getattr(importlib.import_module(module), attr), f":py:obj:`~{name}`"
+            if not (inspect.isclass(obj) or inspect.isroutine(obj)):  # data: its ``#:`` comment, not its type's docstring
+                obj = _DocComment(_attribute_docs(module).get(attr, ""))
+        text = summary(obj)
+        if text:  # autodoc leaves out what has no docstring: no row that links nowhere
+            rows += [f"   * - {link}", f"     - {text}"]
+    return [".. list-table::", "   :widths: 30 70", ""] + rows + [""] if rows else []
+
+
+def _automodule(name: str) -> list[str]:
+    if name.endswith(".__main__"):  # importing it runs the command line
+        return [f".. py:module:: {name}", "", "``python -m symdecomp``: the command line, see :doc:`/commands`.", ""]
+    return [f".. automodule:: {name}", "   :members:", ""]
+
+
+def _names_table(name: str) -> list[str]:
+    if name.endswith(".__main__"):
+        return []
+    table = _summary([f"{name}.{attr}" for attr in public_names(name)])
+    return [f".. currentmodule:: {name}", ""] + table if table else []  # the summaries' short references resolve there
+
+
+def api_reference(head: str) -> str:
+    """The API reference of the map's row ``head`` (``"errors"``, ``"analysis"``).
+
+    A top-level module: a table of its public names, then its entry. A folder: its package's entry and a table
+    of its modules, each linked to its own page (:func:`module_page`), so that no page holds a whole layer."""
+    modules = _row_modules(head)
+    package = f"symdecomp.{modules[0]}"
+    out = [f"``{package}``", "-" * (len(package) + 4), ""]
+    if len(modules) == 1:
+        return "\n".join(out + _names_table(package) + _automodule(package))
+    out += _automodule(package) + [".. rubric:: Modules", ""] + _summary([f"symdecomp.{m}" for m in modules[1:]], modules=True)
+    out += [".. toctree::", "   :hidden:", ""] + [f"   modules/symdecomp.{m}" for m in modules[1:]] + [""]
     return "\n".join(out)
+
+
+def module_page(name: str) -> str:
+    """The API page of module ``name`` (a module of a folder row): a table of its public names, then its entry."""
+    title = f"``{name}``"
+    return "\n".join([title, "=" * len(title), ""] + _names_table(name) + _automodule(name))
+
+
+def write_module_pages(srcdir: Path) -> list[Path]:
+    """Write :func:`module_page` of every module of the map's folders into ``srcdir/api/modules`` (a file only
+    when its text changed, so that a rebuild is quick; pages of modules no longer in the map are removed)."""
+    target = srcdir / MODULE_PAGES
+    target.mkdir(parents=True, exist_ok=True)
+    written = []
+    for _, _, modules in map_rows(_package_doc()):
+        for module in modules[1:]:
+            path = target / f"symdecomp.{module}.rst"
+            text = module_page(f"symdecomp.{module}") + "\n"
+            if not path.exists() or path.read_text(encoding="utf-8") != text:
+                path.write_text(text, encoding="utf-8")
+            written.append(path)
+    for stale in set(target.glob("*.rst")) - set(written):
+        stale.unlink()
+    return written
 
 
 def public_api() -> str:
@@ -231,4 +344,5 @@ def setup(app):
     directives.register_directive("symdecomp-public-api", directive(public_api))
     directives.register_directive("symdecomp-table", directive(lambda name: tables()[name], 1))
     app.connect("builder-inited", lambda app: copy_notebooks(Path(app.srcdir)))
+    app.connect("builder-inited", lambda app: write_module_pages(Path(app.srcdir)))
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -101,7 +101,7 @@ def circ_from_offsets(offsets: Mapping[int, object], n: int) -> sp.ImmutableMatr
     """The ``n x n`` circulant with ``c_{k mod n} = offsets[k]``; offsets must be distinct mod ``n``."""
     n = check_valence(n, minimum=1)
     c = [sp.Integer(0)] * n
-    seen = {}
+    seen: dict[int, int] = {}
     for k, w in _offsets(offsets).items():
         if k % n in seen:
             raise InvalidSchemeError(f"offsets {seen[k % n]} and {k} coincide mod n = {n}")

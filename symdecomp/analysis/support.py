@@ -157,7 +157,7 @@ class SupportClassification:
 
 def _n_of_face(mesh: QuadMesh, fi: int) -> set:
     """Vertices of the faces sharing a vertex with face ``fi``."""
-    out = set()
+    out: set[int] = set()
     for c in mesh.faces[fi]:
         for g in mesh.faces_of(c):
             out.update(mesh.faces[g])

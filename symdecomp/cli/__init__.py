@@ -38,7 +38,7 @@ import os
 import signal
 import sys
 
-from symdecomp.cli.common import LIMITS, Parser, check_scheme_valences
+from symdecomp.cli.common import LIMITS, Parser, check_scheme_valences, error_line
 from symdecomp.cli.files import release_held
 from symdecomp.errors import InternalError, OutputWriteError, ResourceLimitError, SymdecompError, UnavailableError
 
@@ -87,9 +87,9 @@ def build_parser() -> Parser:
     return parser
 
 
-def _fail(message: str, code: int) -> int:
-    message = " ".join(str(message).split())  # one line, whatever the exception carried
-    print(f"symdecomp: error: {message}", file=sys.stderr)
+def _fail(message: object, code: int) -> int:
+    """Print ``message`` as the one error line of every command (:func:`~symdecomp.cli.common.error_line`); return ``code``."""
+    print(error_line(message), file=sys.stderr)
     return code
 
 

@@ -84,15 +84,34 @@ LIMITS = {
                  "(a run's memory is estimated and checked before it starts)"),
 }
 
+#: Where a help text sends a reader for the scheme file format (one page of the docs, from the one docstring).
+SCHEME_FORMAT = "(the format: docs/formats/scheme-files.rst, the docs' page 'Scheme files'; the docstring of symdecomp.schemes.files)"
+
 _INTEGER = re.compile(r"[+-]?[0-9]{1,12}", re.ASCII)
 _DIGITS = re.compile(r"[+-]?[0-9]+", re.ASCII)
 
 
+#: How every error line of the command line starts, whichever command and whatever went wrong: a usage error
+#: found by the parser and an error raised while a command runs look alike (the parser's line names the
+#: command in its ``(see 'symdecomp CMD --help')``).
+ERROR_PREFIX = "symdecomp: error: "
+
+
+def error_line(message: object) -> str:
+    """The one line (no newline) that reports ``message`` as an error: :data:`ERROR_PREFIX`, then the message
+    with every run of whitespace (newlines too) made one space.
+
+    >>> error_line("--n 2:\\n  below the smallest valence 3")
+    'symdecomp: error: --n 2: below the smallest valence 3'
+    """
+    return ERROR_PREFIX + " ".join(str(message).split())
+
+
 class Parser(argparse.ArgumentParser):
-    """An argument parser whose errors are one line (``symdecomp CMD: error: ...``) and exit code 2."""
+    """An argument parser whose errors are one line (:func:`error_line`, naming the command's ``--help``) and exit code 2."""
 
     def error(self, message: str):  # noqa: D401 - argparse's hook
-        self.exit(2, f"{self.prog}: error: {message} (see '{self.prog} --help')\n")
+        self.exit(2, error_line(f"{message} (see '{self.prog} --help')") + "\n")
 
 
 class Once(argparse.Action):
@@ -247,7 +266,7 @@ def add_scheme_option(parser: argparse.ArgumentParser) -> None:
         default="catmull-clark",  # text: argparse builds the scheme (type) only when a command runs, not for --help
         metavar="NAME|FILE",
         help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
-        "(the format: docs, File formats; the docstring of symdecomp.schemes.files)",
+        f"{SCHEME_FORMAT}",
     )
 
 

@@ -11,18 +11,23 @@ Two modes (the mathematics is :mod:`symdecomp.analysis.design`):
 
       symdecomp design --n 5 --normal 0,0,1 --position 1,2,3 --elliptic 1/2 --out ring.obj
 
-  prints the achieved limit position (exact), normal, tangents and amounts, each saying whether it is exact.
+  prints the achieved limit position (as decimals; ``--exact``: exact rationals), normal, tangents and amounts,
+  each saying whether it is exact.
 * **a redesign** (``--mesh FILE --vertex I``): the smallest change of the vertex's 1-ring (least squares, along
   the normal) that makes the limit normal parallel to ``--normal`` and/or (``--flatten-hyperbolic``) removes the
   hyperbolic heights; the whole mesh is written with the changed 1-ring.
 
-``--out FILE`` (``.obj``, ``.off``, ``.ply``, or ``--format``) is checked before any work and written whole. The
-file holds the net exactly when its coordinates are terminating decimals: every coordinate is ``p + x u + y v +
-h N`` with doubles ``x, y, h`` and integer ``u, v, N``, so exact in OBJ and OFF when ``--position`` is decimal (PLY
-stores doubles: there the coordinates are rounded once more, and the exact checks hold to double precision). What is
-exact: the position (Catmull-Clark: always; Loop: at valences 3, 4, 6 or with no heights), the normal (without
-``--hyperbolic``, and with it at even valences), the tangent direction; the amounts are measured to double
-precision.
+``--out FILE`` (``.obj``, ``.off``, ``.ply``, or ``--format``) is checked before any work and written whole. By
+default each coordinate is rounded to the double nearest it and written as the shortest decimal that reads back as
+that double (Python's ``repr``; PLY stores the double), and the achieved values are those of the net of these
+doubles (measured again where the rounding changed a coordinate), so that the output describes the file. With ``--exact``
+the file holds the computed net exactly where its coordinates are terminating decimals (every coordinate is
+``p + x u + y v + h N`` with doubles ``x, y, h`` and integer ``u, v, N``, so exact in OBJ and OFF when
+``--position`` is decimal, written in full: a double is up to about 55 significant digits; PLY stores doubles, so
+there the exact checks hold to double precision), and the limit position is printed as exact rationals. What is
+exact on the exact net: the position (Catmull-Clark: always; Loop: at valences 3, 4, 6 or with no heights), the
+normal (without ``--hyperbolic``, and with it at even valences), the tangent direction; the amounts are measured to
+double precision.
 
 JSON (``--json``): ``{"scheme", "n", "vertex", "ring", "out", "format", "position_exact": ["x", "y", "z"],
 "position", "tangents", "normal", "normal_exact", "tangent_exact", "elliptic", "hyperbolic", "angle", "change"}``
@@ -33,6 +38,7 @@ JSON (``--json``): ``{"scheme", "n", "vertex", "ring", "out", "format", "positio
 from __future__ import annotations
 
 import argparse
+from fractions import Fraction
 
 from symdecomp.cli.common import Once, flag, integer, print_json, scheme_by_name, valence
 from symdecomp.schemes.meshformats import FORMATS
@@ -90,6 +96,9 @@ def register(sub) -> None:
     flag(p, "--flatten-hyperbolic", help="with --mesh: remove the hyperbolic heights of the vertex's 1-ring")
     p.add_argument("--out", action=Once, required=True, metavar="FILE", help="the mesh file to write (.obj, .off, .ply)")
     p.add_argument("--format", choices=FORMATS, action=Once, default=None, help="the output format, if not the extension")
+    flag(p, "--exact", help="print the limit position as exact rationals and write the net's coordinates exactly (terminating "
+         "decimals in full, up to ~55 digits), so that the file's limit is exactly the one computed; by default the position "
+         "is printed as decimals and each coordinate written as the shortest decimal that reads back as its double")
     flag(p, "--json", help="print the achieved values as JSON")
     p.set_defaults(func=run)
 
@@ -123,12 +132,59 @@ def _report(result, out, fmt) -> dict:
             "hyperbolic": a.hyperbolic, "angle": a.angle, "change": result.change}
 
 
-def _print(data: dict) -> None:
+def _decimal(x: float) -> str:
+    """``x`` as the shortest decimal that reads back as it (``repr``), an integral value without ``.0``.
+
+    >>> [_decimal(x) for x in (0.025, 144115188075855883 / 5764607523034234880, -3.0, -0.0, 1e-20)]
+    ['0.025', '0.025', '-3', '0', '1e-20']
+    """
+    text = repr(x + 0.0)
+    return text[:-2] if text.endswith(".0") else text
+
+
+def _rounded(mesh, coordinate):
+    """``mesh`` with every coordinate ``c`` replaced by ``coordinate(c)`` (``mesh`` itself when none changes)."""
+    from dataclasses import replace
+
+    points = tuple(tuple(coordinate(c) for c in p) for p in mesh.points)
+    return mesh if points == mesh.points else replace(mesh, points=points, _topology={})
+
+
+def _double(c) -> Fraction:
+    return Fraction(float(c))
+
+
+def _shortest(c) -> Fraction:
+    """The shortest decimal that reads back as the double nearest ``c`` (``repr``), as the rational it spells."""
+    return Fraction(repr(float(c)))
+
+
+def _on_doubles(args, mode: str, scheme, result):
+    """``result`` with its net rounded to doubles (what the file holds without ``--exact``) and the achieved values
+    measured again on that net where rounding changed it (a non-dyadic coordinate, as from ``--position 1/3``)."""
+    from dataclasses import replace
+
+    from symdecomp.analysis.design import frame, limit_frame
+
+    net = result.mesh  # (a control net, not a mesh kind)
+    mesh = _rounded(net, _double)
+    if mesh is net:
+        return result
+    if mode == "new":
+        u, _, N = frame(args.normal, args.tangent)  # the frame the design was built in
+        achieved = limit_frame(scheme, mesh, result.vertex, normal=N, tangent=u)
+    else:
+        achieved = limit_frame(scheme, mesh, result.vertex, normal=args.normal)
+    return replace(result, mesh=mesh, achieved=achieved)
+
+
+def _print(data: dict, exact_position: bool) -> None:
     def exact(flag_value, what):
         return {True: f"[exactly {what}]", False: "[to double precision]", None: ""}[flag_value]
 
     print(f"{data['scheme']}, valence {data['n']}: vertex {data['vertex']} -> {data['out']} ({data['format']})")
-    print(f"limit position  {', '.join(data['position_exact'])}")
+    position = data["position_exact"] if exact_position else [_decimal(x) for x in data["position"]]
+    print(f"limit position  {', '.join(position)}")
     if data["normal"] is None:  # the tangents are parallel: no tangent plane, nothing to call exact
         print("normal          none (the tangents are parallel)")
     else:
@@ -162,7 +218,11 @@ def run(args) -> int:
         mesh = read_mesh(args.mesh_file)
         scheme = args.scheme if args.scheme is not None else scheme_for_mesh(mesh)
         result = redesign_vertex(scheme, mesh, args.vertex, normal=args.normal, flatten_hyperbolic=bool(args.flatten_hyperbolic))
-    write_output_file(out, encode_mesh(result.mesh, fmt))
+    written = result.mesh
+    if not args.exact:
+        result = _on_doubles(args, mode, scheme, result)
+        written = _rounded(result.mesh, _shortest)  # the same doubles, in at most 17 significant digits
+    write_output_file(out, encode_mesh(written, fmt))
     data = _report(result, out, fmt)
-    print_json(args, data) if args.json else _print(data)
+    print_json(args, data) if args.json else _print(data, bool(args.exact))
     return 0

@@ -15,11 +15,10 @@ from __future__ import annotations
 import argparse
 import math
 import re
-import sys
 from fractions import Fraction
 
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, flag, integer, print_json, progress, valence_range
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import InvalidInputError, UnavailableError
 
 
 def register(sub) -> None:
@@ -131,18 +130,13 @@ def _comparison(scheme):
 
 
 def run(args) -> int:
-    from symdecomp.errors import BridgeUnavailableError
     from symdecomp.verify.opensubdiv import load_bridge
 
     kinds = _KINDS if args.boundary else args.kind
     if kinds is None and args.sharpness is not None:
         raise InvalidInputError("--sharpness: needs --kind or --boundary (it sets the sharpness of sharp vertices)")
     compare = _comparison(args.scheme)
-    try:
-        load_bridge()
-    except BridgeUnavailableError as exc:
-        print(f"symdecomp oracle: {exc}", file=sys.stderr)
-        return 3
+    load_bridge()  # BridgeUnavailableError: main() prints the one error line and exits with 3
     if args.mesh_file is not None:
         return _run_mesh(args)
     if kinds is not None:
@@ -192,10 +186,8 @@ def _run_sharp(args, kinds) -> int:
 
     try:
         import symdecomp.schemes.sector  # noqa: F401  (the toolkit's side of the comparison)
-    except ModuleNotFoundError:
-        print("symdecomp oracle: --kind needs the sharp vertex model (symdecomp.schemes.sector), not in this build",
-              file=sys.stderr)
-        return 3
+    except ModuleNotFoundError:  # main() prints the one error line and exits with 3
+        raise UnavailableError("--kind needs the sharp vertex model (symdecomp.schemes.sector), not in this build") from None
 
     scheme = "catmull-clark" if args.scheme.lattice.face_neighbours else "loop"  # _comparison checked the rules
     cases = [c for c in sharp_cases(scheme, kinds, args.k, args.sharpness or SHARPNESS)

@@ -17,7 +17,7 @@ import argparse
 import re
 from pathlib import Path
 
-from symdecomp.cli.common import LIMITS, Once, add_budget_option, progress, scheme_by_name, valence_range
+from symdecomp.cli.common import LIMITS, SCHEME_FORMAT, Once, add_budget_option, progress, scheme_by_name, valence_range
 from symdecomp.cli.files import check_output_file, write_output_file, write_output_files
 from symdecomp.errors import InvalidInputError, UnavailableError
 
@@ -43,7 +43,7 @@ def register(sub) -> None:
         "values), and --out is checked first: a FIFO must have its reader running.",
     )
     p.add_argument("scheme", type=scheme_by_name, metavar="SCHEME",
-                   help="a known scheme name (catmull-clark, loop, ...) or a TOML scheme file (format in the README)")
+                   help=f"a known scheme name (catmull-clark, loop, ...) or a TOML scheme file {SCHEME_FORMAT}")
     p.add_argument("--n", dest="valences", type=valence_range("report"), action=Once, required=True, metavar="A:B",
                    help=f"valences: an inclusive range A:B or a single N (at most {LIMITS['report'][0]})")
     p.add_argument("--out", action=Once, required=True, metavar="FILE",

@@ -23,6 +23,8 @@ from __future__ import annotations
 import functools
 import html
 import re
+from collections.abc import Sequence
+from typing import Any
 
 from symdecomp.analysis.inspection import MeshInspection
 from symdecomp.analysis.masks import MasksAtValence
@@ -66,7 +68,7 @@ def _mixed(text: str) -> str:
     return "".join(part if i % 2 else (_text(part) if part else "") for i, part in enumerate(parts))
 
 
-def _array(rows: list[tuple[str, ...]]) -> str:
+def _array(rows: Sequence[tuple[str, ...]]) -> str:
     """A LaTeX ``array`` of cells already in LaTeX, left aligned."""
     width = max(len(r) for r in rows)
     return "\\begin{array}{%s}\n" % ("l" * width) + " \\\\\n".join(" & ".join(r) for r in rows) + "\n\\end{array}"
@@ -106,7 +108,7 @@ def _(obj: Spectrum) -> str:
     return _array(rows)
 
 
-def _mask_rows(obj: MasksAtValence) -> list[tuple[str, object]]:
+def _mask_rows(obj: MasksAtValence) -> list[tuple[str, Any]]:
     """``lambda_1`` and the position mask's weight on ``O``, on each ``a_i`` and (quads) on each ``b_i``, exact."""
     w = obj.position
     rows = [("lambda_1", obj.subdominant), ("w_O", w[0]), ("w_a", w[1])]

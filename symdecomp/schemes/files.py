@@ -95,7 +95,7 @@ A rule whose weights do not sum to 1, a float weight, an unknown name, a malform
 unknown key, a ``[face]`` or a ``b`` weight in a triangle file, or a triangle ``[vertex]`` without
 ``beta`` is refused: every problem is reported as one :class:`~symdecomp.errors.InvalidSchemeError`
 (or :class:`~symdecomp.errors.NotAffineError`) naming the file and the key; on the command line it
-is one line and exit status 2 (``symdecomp claims: error: argument --scheme: my.toml: [face] O:
+is one line and exit status 2 (``symdecomp: error: argument --scheme: my.toml: [face] O:
 0.25 is a float; give an exact rational such as "3/8" (see 'symdecomp claims --help')``). In Python: ``load_scheme("my.toml")``, then e.g.
 ``symdecomp.check_claim("Remark 5.1", scheme)``. A float weight:
 

@@ -184,7 +184,7 @@ def _strip(lat: Lattice):
         return sym[(x - 1, 0)] + sym[(x, 0)] - sym[(x - 1, 1)]
 
     values = {i: (sym[p] if p[1] >= 0 else phantom(p[0]),) for p, i in ids.items()}
-    faces = []
+    faces: list[tuple[int, ...]] = []
     for (x, y), i in ids.items():
         if (x + 1, y + 1) not in ids:
             continue

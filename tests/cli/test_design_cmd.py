@@ -11,6 +11,7 @@ import sympy as sp
 from symdecomp.analysis.design import limit_frame
 from symdecomp.cli import main
 from symdecomp.schemes.loop import loop
+from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.meshformats import read_mesh
 from symdecomp.schemes.scheme import catmull_clark
 
@@ -23,7 +24,7 @@ MODEL = ROOT / "notebooks" / "data" / "valences-3-5-6.obj"
 def test_the_written_file_has_the_prescribed_exact_limit_normal(tmp_path, capsys, scheme, n, fmt):
     out = tmp_path / f"ring.{fmt}"
     assert main(["design", "--scheme", scheme, "--n", str(n), "--normal", "2,-1,2", "--position", "1/2,0.25,-3",
-                 "--elliptic", "1/5", "--out", str(out), "--json"]) == 0
+                 "--elliptic", "1/5", "--out", str(out), "--json", "--exact"]) == 0
     data = json.loads(capsys.readouterr().out)
     rational_masks = scheme == "catmull-clark" or n in (3, 6)  # Loop's position mask has cos(2 pi/n) elsewhere
     assert data["normal_exact"] is True and (data["position_exact"][1] == "1/4") is rational_masks
@@ -38,7 +39,7 @@ def test_the_written_file_has_the_prescribed_exact_limit_normal(tmp_path, capsys
 
 def test_the_table_names_what_is_exact(tmp_path, capsys):
     assert main(["design", "--n", "5", "--normal", "0,0,1", "--tangent", "1,0,0", "--hyperbolic", "1/4", "--angle", "pi/6",
-                 "--out", str(tmp_path / "r.obj")]) == 0
+                 "--out", str(tmp_path / "r.obj"), "--exact"]) == 0
     text = capsys.readouterr().out
     assert "limit position  0, 0, 0" in text and "[exactly along --tangent]" in text
     assert "hyperbolic      0.25 at angle 0.523598775598" in text
@@ -87,7 +88,44 @@ def test_bad_input_is_one_line_and_exit_2(tmp_path, capsys, argv, words):
 
 def test_the_file_is_the_net_exactly(tmp_path):
     out = tmp_path / "ring.obj"
-    assert main(["design", "--n", "6", "--normal", "1,1,0", "--position", "0.1,0.2,0.3", "--out", str(out)]) == 0
+    assert main(["design", "--n", "6", "--normal", "1,1,0", "--position", "0.1,0.2,0.3", "--out", str(out), "--exact"]) == 0
     mesh = read_mesh(out)
     assert "0.1" in out.read_text().split()[1:4] or mesh.points[0] != (Fraction(1, 10), Fraction(1, 5), Fraction(3, 10))
     assert limit_frame(catmull_clark(), mesh, 0).position == (sp.Rational(1, 10), sp.Rational(1, 5), sp.Rational(3, 10))
+
+
+def _coordinates(path):
+    return [c for line in path.read_text().splitlines() if line.startswith("v ") for c in line.split()[1:]]
+
+
+@pytest.mark.parametrize("fmt", ["obj", "off"])
+def test_by_default_coordinates_are_written_as_the_shortest_decimal_of_their_double(tmp_path, capsys, fmt):
+    """Not ~55 digits (issue 34): each coordinate reads back as the double of the exact net's coordinate, and the
+    values the command reports are measured on the net as the file holds it."""
+    short, full = tmp_path / f"short.{fmt}", tmp_path / f"full.{fmt}"
+    argv = ["design", "--n", "5", "--normal", "2,-1,2", "--position", "1/3,0.25,-3", "--elliptic", "1/5", "--json", "--out"]
+    assert main([*argv, str(short)]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert main([*argv, str(full), "--exact"]) == 0
+    capsys.readouterr()
+    exact, rounded = read_mesh(full), read_mesh(short)
+    assert [tuple(map(float, p)) for p in rounded.points] == [tuple(map(float, p)) for p in exact.points]
+    assert rounded.points != exact.points  # the exact net's doubles are dyadic rationals of up to ~55 digits
+    coordinates = _coordinates(short) if fmt == "obj" else short.read_text().splitlines()[2 : 2 + len(rounded.points)]
+    coordinates = [c for line in coordinates for c in line.split()] if fmt == "off" else coordinates
+    assert len(coordinates) == 3 * len(rounded.points)
+    assert all(len(c.lstrip("-").replace(".", "").lstrip("0")) <= 17 for c in coordinates), coordinates  # a double's digits
+    doubles = PolygonMesh.from_arrays([[Fraction(float(c)) for c in p] for p in rounded.points], rounded.faces)
+    again = limit_frame(catmull_clark(), doubles, 0, normal=(2, -1, 2))  # the net of the doubles the file spells
+    assert [str(x) for x in again.position] == data["position_exact"] and again.normal_exact is data["normal_exact"]
+    assert data["position_exact"][0] != "1/3" and abs(data["position"][0] - 1 / 3) < 1e-15  # 1/3 is no double
+
+
+def test_limit_positions_are_decimals_unless_exact_is_asked(tmp_path, capsys):
+    argv = ["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--flatten-hyperbolic", "--out", str(tmp_path / "m.obj")]
+    assert main(argv) == 0
+    assert "limit position  0.025, -0.015000000000000001, 1.175\n" in capsys.readouterr().out  # the nearest doubles
+    assert main([*argv, "--exact"]) == 0
+    line = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("limit position"))
+    position = [Fraction(x) for x in line.removeprefix("limit position  ").split(", ")]
+    assert [float(x) for x in position] == [0.025, -0.015000000000000001, 1.175] and position[0] != Fraction(1, 40)

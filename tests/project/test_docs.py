@@ -97,7 +97,7 @@ def _map_modules():
     return EXT.map_modules(symdecomp.__doc__)
 
 
-def test_every_module_of_the_map_has_an_api_page_entry():
+def test_every_module_of_the_map_has_an_api_page_entry(tmp_path):
     import symdecomp
 
     rows = [head.rstrip("/") for head, _, _ in EXT.map_rows(symdecomp.__doc__)]
@@ -105,9 +105,51 @@ def test_every_module_of_the_map_has_an_api_page_entry():
     covered = re.findall(r"^\.\. symdecomp-api:: (\S+)$", pages, re.M)
     assert sorted(covered) == sorted(rows), "each row of the module map has its API page"
     generated = "".join(EXT.api_reference(row) for row in covered)
+    pages = {path.stem: path.read_text() for path in EXT.write_module_pages(tmp_path)}
     for module in _map_modules():
         name = f"symdecomp.{module}"
-        assert f".. automodule:: {name}\n" in generated or f".. py:module:: {name}\n" in generated, name
+        text = pages.get(name, generated)  # a folder's module has its own page; a top-level module is on its row's
+        assert f".. automodule:: {name}\n" in text or f".. py:module:: {name}\n" in text, name
+        assert name in pages or f"\n   modules/{name}\n" not in generated
+
+
+def test_the_api_pages_have_one_line_summaries():
+    """A folder's page is its package and a table of its modules (their docstrings' first sentences), one page per
+    module; a module's page opens with a table of its public names, each beside its docstring's first sentence."""
+    from symdecomp.analysis import spectrum
+
+    analysis = EXT.api_reference("analysis")
+    assert analysis.count(".. automodule::") == 1 and "   modules/symdecomp.analysis.spectrum\n" in analysis
+    assert f"   * - :py:mod:`symdecomp.analysis.spectrum`\n     - {EXT.summary(spectrum)}\n" in analysis
+    page = EXT.module_page("symdecomp.analysis.spectrum")
+    table = page.split(".. list-table::", 1)[1].split(".. automodule::", 1)[0]
+    names = re.findall(r"^   \* - :py:obj:`~symdecomp\.analysis\.spectrum\.(\w+)`$", table, re.M)
+    assert names and not [n for n in names if n.startswith("_")]
+    assert all(getattr(spectrum, n).__module__ == "symdecomp.analysis.spectrum" for n in names if callable(getattr(spectrum, n)))
+    for name in names:
+        assert f"`~symdecomp.analysis.spectrum.{name}`\n     - {EXT.summary(getattr(spectrum, name))}\n" in table
+    errors = EXT.api_reference("errors")
+    assert errors.index(".. list-table::") < errors.index(".. automodule:: symdecomp.errors")
+    assert "   * - :py:obj:`~symdecomp.errors.SymdecompError`\n" in errors
+
+
+def test_a_summary_is_the_first_sentence_unless_that_splits_markup():
+    def f():
+        """Eq. 34 in ``c = cos(j pi/n)``. More text.
+
+        Another paragraph."""
+
+    def g():
+        """The ratio ``a. b`` of ``x``, e.g. two. Next."""
+
+    def h():
+        """No sentence end (a ``literal``. inside
+        parentheses), two lines"""
+
+    assert EXT.summary(f) == "Eq. 34 in ``c = cos(j pi/n)``."
+    assert EXT.summary(g) == "The ratio ``a. b`` of ``x``, e.g. two."
+    assert EXT.summary(h) == "No sentence end (a ``literal``. inside parentheses), two lines"
+    assert EXT.summary(lambda: None) == ""
 
 
 def test_the_docs_read_every_module_of_the_map():
@@ -141,3 +183,42 @@ def test_the_site_builds_with_warnings_as_errors(tmp_path):
     assert 'id="command-check"' in commands and "usage: symdecomp check" in commands
     guide = (tmp_path / "html" / "guide" / "command-line.html").read_text()
     assert ".. list-table::" not in guide and guide.count("<table") >= 3, "the generated tables are tables on a Markdown page too"
+
+
+def test_the_help_texts_send_readers_to_pages_that_exist():
+    """A ``--help`` that names a documentation page names one that exists, and none sends to the README for a format."""
+    from symdecomp.cli import build_parser
+
+    helps = {name: " ".join(parser.format_help().split()) for name, parser in EXT.subcommands(build_parser()).items()}
+    pages = {name: re.findall(r"docs/[\w./-]+\.(?:rst|md)", text) for name, text in helps.items()}
+    assert "docs/formats/scheme-files.rst" in pages["report"] and "docs/formats/scheme-files.rst" in pages["spectrum"]
+    assert [(name, page) for name, found in pages.items() for page in found if not (ROOT / page).is_file()] == []
+    assert [name for name, text in helps.items() if "README" in text] == []
+
+
+def test_the_notebook_titles_are_numbered_as_their_files():
+    """The sidebar lists the notebooks by title: each is ``# N. ...`` with N the number its file name starts with."""
+    import json
+
+    titles = {}
+    for path in sorted((ROOT / "notebooks").glob("*.ipynb")):
+        cell = next(c for c in json.loads(path.read_text())["cells"] if c["cell_type"] == "markdown")
+        titles[path.name] = "".join(cell["source"]).splitlines()[0]
+    assert len(titles) >= 10
+    wrong = {name: title for name, title in titles.items() if not title.startswith(f"# {int(name.split('_', 1)[0])}. ")}
+    assert wrong == {}
+
+
+def test_the_readme_says_what_each_optional_part_needs():
+    """The extras it names exist, and the Debian packages it names are those CI installs for the same part."""
+    import tomllib
+
+    extras = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]
+    named = re.findall(r'pip install "symdecomp\[(\w+)\]"', README)
+    assert {"report", "dask"} <= set(named) and set(named) <= set(extras)
+    steps = {path.name: path.read_text() for path in (ROOT / ".ci" / "steps").glob("*.sh")}
+    for package in ("libosd-dev", "libosdcpu3.5.0", "g++"):
+        assert package in README and package in steps["30-opensubdiv.sh"], package
+    for package in ("texlive-latex-base", "texlive-latex-recommended"):
+        assert package in README and package in steps["20-latex.sh"], package
+    assert "matplotlib" in README and any(d.startswith("matplotlib") for d in extras["report"])

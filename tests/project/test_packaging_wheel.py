@@ -53,6 +53,17 @@ def test_one_version_source():
     assert PYPROJECT["project"]["license"] == "MIT"  # an SPDX expression, not the deprecated table
 
 
+def test_the_license_is_the_one_pyproject_names():
+    """MIT, held by the symdecomp authors (as pyproject.toml's authors); no license classifier beside the expression."""
+    text = (ROOT / "LICENSE").read_text(encoding="utf-8")
+    assert text.startswith("MIT License\n\nCopyright (c) the symdecomp authors\n")
+    assert "THE SOFTWARE IS PROVIDED \"AS IS\", WITHOUT WARRANTY OF ANY KIND" in text
+    project = PYPROJECT["project"]
+    assert project["license-files"] == ["LICENSE"] and project["authors"] == [{"name": "the symdecomp authors"}]
+    assert not [c for c in project["classifiers"] if c.startswith("License ::")]  # PEP 639: the expression says it
+    assert (PACKAGE / "py.typed").is_file() and "py.typed" in PYPROJECT["tool"]["setuptools"]["package-data"]["symdecomp"]
+
+
 def test_the_version_the_program_prints(capsys):
     from symdecomp.cli import main
 
@@ -76,7 +87,7 @@ def test_every_data_file_is_declared():
 def _source_copy(target: Path) -> Path:
     """This tree's package, pyproject.toml and README, plus a compiled bridge and a test file that must stay out."""
     shutil.copytree(PACKAGE, target / "symdecomp", ignore=shutil.ignore_patterns(*LOCAL))
-    for name in ("pyproject.toml", "README.md", "MANIFEST.in"):
+    for name in ("pyproject.toml", "README.md", "MANIFEST.in", "LICENSE"):
         shutil.copy(ROOT / name, target / name)
     built = target / "symdecomp" / "verify" / "opensubdiv" / "_build"
     built.mkdir()
@@ -101,10 +112,13 @@ def test_the_wheel_and_the_sdist_hold_the_package_and_nothing_else(tmp_path):
     assert {n for n in names if not n.startswith(info)} == _modules() | _data_files()
     metadata = zipfile.ZipFile(wheel).read(info + "METADATA").decode()
     assert "License-Expression: MIT" in metadata and f"Version: {symdecomp.__version__}" in metadata
+    assert "License-File: LICENSE" in metadata and "Classifier: Typing :: Typed" in metadata
+    assert zipfile.ZipFile(wheel).read(info + "licenses/LICENSE") == (ROOT / "LICENSE").read_bytes()
+    assert "symdecomp/py.typed" in names  # PEP 561: users' type checkers read the annotations
     assert "symdecomp = symdecomp.cli:entry" in zipfile.ZipFile(wheel).read(info + "entry_points.txt").decode()
     with tarfile.open(sdist) as archive:
         members = {m.split("/", 1)[1] for m in archive.getnames() if "/" in m}
-    assert _modules() | _data_files() <= members
+    assert _modules() | _data_files() | {"LICENSE"} <= members
     assert not [m for m in members if "_build" in m or m.endswith((".so", ".stamp", ".pyc")) or m.startswith("tests/")]
     pytest.importorskip("twine", reason="needs the 'twine' package (pip install 'symdecomp[test]')")
     checked = subprocess.run([sys.executable, "-m", "twine", "check", "--strict", str(wheel), str(sdist)],

@@ -57,5 +57,5 @@ def test_the_error_example_is_what_the_command_line_prints(tmp_path, capsys):
     text = _examples()[0].replace('[face]            # new b_i (b_i lies between a_i and a_{i+1})\nO = "1/4"', "[face]\nO = 0.25")
     path.write_text(text)
     assert main(["claims", "--scheme", str(path)]) == 2
-    line = re.search(r"``(symdecomp claims: error: argument --scheme: my\.toml: .*?)``", " ".join(DOC.split())).group(1)
+    line = re.search(r"``(symdecomp: error: argument --scheme: my\.toml: .*?)``", " ".join(DOC.split())).group(1)
     assert capsys.readouterr().err.strip() == line.replace("my.toml", str(path))

@@ -11,6 +11,8 @@ ones by modulus (hollow markers). The numbers are the results the command prints
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from symdecomp.output.plotting._mpl import new_figure
 
 __all__ = ["as_complex", "spectrum_figure", "sharp_spectrum_figure"]
@@ -32,7 +34,7 @@ def as_complex(value) -> complex:
     return complex(value)
 
 
-def _scatter(ax, points: list[tuple[float, complex, int]]) -> None:
+def _scatter(ax, points: Sequence[tuple[float, complex, int]]) -> None:
     """Points ``(x, eigenvalue, multiplicity)``: filled by value if real, hollow by modulus if not; size by multiplicity."""
     real = [(x, z.real, m) for x, z, m in points if abs(z.imag) <= 1e-12 * max(1.0, abs(z))]
     other = [(x, abs(z), m) for x, z, m in points if abs(z.imag) > 1e-12 * max(1.0, abs(z))]

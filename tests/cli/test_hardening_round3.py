@@ -146,10 +146,11 @@ def test_design_mesh_near_the_largest_double_is_one_line(tmp_path, capsys):
 
 
 def test_design_position_at_the_bound_keeps_its_exact_normal(tmp_path, capsys):
-    """At the bound the net's limit is still measured: a normal parallel to --normal, not ``0 0 0``."""
+    """At the bound the net's limit is still measured: a normal parallel to --normal, not ``0 0 0`` (``--exact``: the
+    exact net, not its doubles)."""
     import json
 
-    assert main([*DESIGN, "--position", "1e6,0,-1e6", "--elliptic=-1e6", "--json", "--out", str(tmp_path / "net.obj")]) == 0
+    assert main([*DESIGN, "--position", "1e6,0,-1e6", "--elliptic=-1e6", "--exact", "--json", "--out", str(tmp_path / "net.obj")]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["position_exact"] == ["1000000", "0", "-1000000"] and data["normal_exact"] is True
     assert abs(data["normal"][2] - 1) < 1e-9 and abs(data["elliptic"] + 1e6) < 1e-3

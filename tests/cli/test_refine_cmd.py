@@ -3,6 +3,7 @@
 import json
 import math
 
+from symdecomp import __version__
 from symdecomp.cli import main
 from symdecomp.schemes.mesh_refine import refine_mesh
 from symdecomp.schemes.meshformats import read_mesh
@@ -15,6 +16,8 @@ def test_obj_out_reads_back_as_the_exact_points_rounded_once(tmp_path, capsys):
     out = tmp_path / "r.obj"
     assert main(["refine", str(MODEL), "--steps", "2", "--out", str(out), "--json"]) == 0
     summary = json.loads(capsys.readouterr().out)
+    assert (summary.pop("command"), summary.pop("version")) == ("refine", __version__)
+    assert summary.pop("inputs")["steps"] == 2
     exact = refine_mesh(read_mesh(MODEL), catmull_clark(), 2)
     assert summary == {"mesh": "valences-3-5-6.obj", "scheme": "catmull-clark", "steps": 2, "vertices": len(exact.points),
                        "faces": 16 * 34, "creases": 0, "out": str(out), "bytes": out.stat().st_size}

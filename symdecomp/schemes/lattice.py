@@ -207,6 +207,19 @@ class Lattice:
         raise LatticeFactMissing(self, "neighbour_offsets")
 
     @property
+    def phantom_stencil(self) -> tuple[tuple[int, tuple[int, int]], ...]:
+        """The phantom point ``(x, -1)`` beyond a sharp ray as ``((weight, (dx, y)), ...)`` on the real points ``(x + dx, y)``.
+
+        The combination that the regular rules reproduce on every level, so that the spline of the
+        extended net is the limit next to the ray (:mod:`symdecomp.schemes.sector_patch`).
+        """
+        raise LatticeFactMissing(self, "phantom_stencil")
+
+    def cell_faces(self, a: int, b: int, c: int, d: int) -> tuple[tuple[int, ...], ...]:
+        """The faces of the lattice cell with corners ``a, b, c, d`` counter-clockwise from ``(x, y)``."""
+        raise LatticeFactMissing(self, "cell_faces")
+
+    @property
     def regular_boundary_faces(self) -> int:
         """Faces at a regular boundary vertex (a half-plane): half the regular valence."""
         return self.regular_valence // 2
@@ -234,6 +247,7 @@ class QuadLattice(Lattice):
     face_sides = 4
     patch = BICUBIC
     paper_claims = True
+    phantom_stencil = ((2, (0, 0)), (-1, (0, 1)))
     neighbour_offsets = (((1, 0), (0, 1), (-1, 0), (0, -1)), ((1, 1), (-1, 1), (-1, -1), (1, -1)))
     #: The local mesh type of this lattice: ``mesh(faces, values)``.
     mesh = staticmethod(_mesh.QuadMesh)
@@ -253,6 +267,9 @@ class QuadLattice(Lattice):
         if u == 0:
             s, u, v = s + 1, v, 0
         return s, u, v
+
+    def cell_faces(self, a, b, c, d):
+        return ((a, b, c, d),)
 
     def _odd_point(self, step, old, u, v, face_of):  # both odd: the face point
         corners = frozenset(old((u + a) // 2, (v + b) // 2) for a in (-1, 1) for b in (-1, 1))
@@ -296,6 +313,7 @@ class TriangleLattice(Lattice):
     face_sides = 3
     patch = BOX_SPLINE
     paper_claims = False
+    phantom_stencil = ((1, (-1, 0)), (1, (0, 0)), (-1, (-1, 1)))
     neighbour_offsets = (((1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1)), ())
     mesh = staticmethod(_mesh.TriangleMesh)
     ring_labels = staticmethod(_mesh.triangle_ring_labels)
@@ -318,6 +336,9 @@ class TriangleLattice(Lattice):
         if u == 0:
             s, u, v = s + 1, v, 0
         return s, u, v
+
+    def cell_faces(self, a, b, c, d):  # split along the diagonal b-d
+        return ((a, b, d), (b, c, d))
 
     def _odd_point(self, step, old, u, v, face_of):  # both odd: the midpoint of the diagonal edge
         return step.edge_point[frozenset((old((u - 1) // 2, (v + 1) // 2), old((u + 1) // 2, (v - 1) // 2)))]

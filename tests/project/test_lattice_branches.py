@@ -22,8 +22,7 @@ LATTICE_FILES = ("schemes/lattice.py", "schemes/lattices/")
 
 #: Modules of ``schemes/`` (the layer the lattice belongs to) that still branch on it: the next step of issue 30
 #: turns their branches into facts and empties this list (a file that no longer branches must leave it).
-PENDING = ("schemes/files.py", "schemes/refinement.py", "schemes/scheme.py", "schemes/sector.py",
-           "schemes/sector_patch.py", "schemes/sharp_refinement.py")
+PENDING = ("schemes/files.py", "schemes/refinement.py", "schemes/scheme.py", "schemes/sector.py", "schemes/sharp_refinement.py")
 
 #: The forms of a branch on a lattice, by name.
 FORMS = {
@@ -147,6 +146,9 @@ def test_the_facts_that_replaced_branches():
     assert (QUAD.paper_claims, TRIANGLE.paper_claims) == (True, False)
     assert QUAD.one_ring_classes == (("a", (1, 0)), ("b", (1, 1))) and TRIANGLE.one_ring_classes == (("a", (1, 0)),)
     assert (QUAD.regular_boundary_faces, TRIANGLE.regular_boundary_faces) == (2, 3)
+    # a phantom point is an affine combination of real points; the cell's faces cover its four corners
+    assert all(sum(w for w, _ in lat.phantom_stencil) == 1 for lat in (QUAD, TRIANGLE))
+    assert QUAD.cell_faces(0, 1, 2, 3) == ((0, 1, 2, 3),) and TRIANGLE.cell_faces(0, 1, 2, 3) == ((0, 1, 3), (1, 2, 3))
     # the neighbours of a regular point are its 1-ring: as many edge neighbours as the regular valence
     for lat in (QUAD, TRIANGLE):
         edge, face = lat.neighbour_offsets

@@ -178,15 +178,6 @@ class Lattice:
             raise LatticeFactMissing(self, fact, f" (nothing for {kind} patches)")
         return table[kind]
 
-    def entry(self, table, fact: str):
-        """This lattice's entry in ``table``, data stated per lattice (a claim's printed values) and keyed by :attr:`name`.
-
-        ``fact`` names the entry; a lattice the table does not name raises :class:`~symdecomp.errors.LatticeFactMissing`.
-        """
-        if self.name not in table:
-            raise LatticeFactMissing(self, fact)
-        return table[self.name]
-
     def handled(self, fact: str, *kinds: str) -> str:
         """:attr:`patch`, which must be one of the ``kinds`` the caller's code for ``fact`` handles (else the fact is missing)."""
         return self.select({kind: kind for kind in kinds}, fact)

@@ -135,13 +135,6 @@ def test_a_table_without_the_lattice_s_patch_kind_names_the_fact():
         QUAD.handled("the nets", BOX_SPLINE)
 
 
-def test_data_stated_per_lattice_names_the_missing_entry():
-    printed = {"quad": 3, "triangle": 4}
-    assert (QUAD.entry(printed, "k"), TRIANGLE.entry(printed, "k")) == (3, 4)
-    with pytest.raises(LatticeFactMissing, match=r"^the triangle lattice has no 'the printed k'$"):
-        TRIANGLE.entry({"quad": 3}, "the printed k")
-
-
 def test_the_facts_that_replaced_branches():
     assert (QUAD.paper_claims, TRIANGLE.paper_claims) == (True, False)
     assert QUAD.one_ring_classes == (("a", (1, 0)), ("b", (1, 1))) and TRIANGLE.one_ring_classes == (("a", (1, 0)),)

@@ -303,7 +303,7 @@ TABLE = [
     ("Loop's vertex weight", "loop warren file", R),  # exact: 1/4 - 9/64 at n = 4
     ("Curvature at the regular valence", printed("b1_curvature", "REGULAR_MULTIPLICITY", 2), R),
     ("Shape: the valence decides", "elliptic above hyperbolic at 5", R),
-    ("Shape: the valence decides", printed("b1_curvature", "DOMINANCE", {"quad": ((3, None, None),), "triangle": ((3, None, None),)}), R),
+    ("Shape: the valence decides", printed("b1_curvature", "DOMINANCE", {BICUBIC: ((3, None, None),), BOX_SPLINE: ((3, None, None),)}), R),
     # beyond the paper: boundary and crease vertices (issue 20)
     ("Sector: sine decomposition", "asymmetric", NA),  # the edge rule's weights on a_(i+1), a_(i-1) differ: no mirror
     ("Sector: sine decomposition", "loop file", P),

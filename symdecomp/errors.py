@@ -125,9 +125,15 @@ class LatticeFactMissing(InvalidSchemeError):
     """
 
     def __init__(self, lattice, fact: str, why: str = ""):
-        super().__init__(f"the {getattr(lattice, 'name', lattice)} lattice has no {fact!r}{why}")
+        #: The lattice's name.
+        self.lattice = getattr(lattice, "name", lattice)
         #: The name of the fact asked for.
         self.fact = fact
+        self._why = why
+        super().__init__(f"the {self.lattice} lattice has no {fact!r}{why}")
+
+    def __reduce__(self):  # the arguments, not the message: the error crosses process pools intact
+        return type(self), (self.lattice, self.fact, self._why)
 
 
 class InvalidExpressionError(InvalidInputError):

@@ -118,6 +118,14 @@ def test_the_closed_forms_on_a_lattice_that_does_not_say_whether_the_paper_speak
         closed_form_obstacle(_on(_lacking("paper_claims")))
 
 
+def test_the_error_survives_a_process_pool():
+    import pickle
+
+    again = pickle.loads(pickle.dumps(LatticeFactMissing(TRIANGLE, "the rows", " (nothing for box-spline patches)")))
+    assert (str(again), again.fact, again.lattice) == (
+        "the triangle lattice has no 'the rows' (nothing for box-spline patches)", "the rows", "triangle")
+
+
 def test_the_base_lattice_states_no_patch_facts():
     bare = Lattice("bare", 5, False, "", "", "")
     for ask, fact in ((lambda: bare.ring_size(5, 2), "ring_size"), (lambda: bare.reference(), "reference"),

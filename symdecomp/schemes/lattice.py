@@ -9,6 +9,10 @@ by the scheme's rules, the regular patch (bicubic B-spline or quartic box spline
 patch matrices of Stam's evaluation, the reference scheme whose regular rules give that
 patch, and how the patch's parameter domain splits into the sub-patches of one refinement.
 A new neighbourhood (a boundary or crease, a dual lattice) is one new subclass.
+No module outside this file asks which lattice it has: a higher layer that keeps something per kind
+of regular patch (:data:`BICUBIC`, :data:`BOX_SPLINE`) reads it with :meth:`Lattice.select`, and a
+fact a lattice does not state raises :class:`~symdecomp.errors.LatticeFactMissing` naming the fact,
+never another lattice's answer.
 
 The name (``"quad"``, ``"triangle"``) is the external spelling, in scheme files, JSON and
 printed output; :func:`lattice` reads it.

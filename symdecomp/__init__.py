@@ -28,7 +28,8 @@ nothing else.
                    exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``),
                    exact linear algebra over one real field Q(cos(pi/k)) (``cos_field``)
 ``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,
-                   triangle; regular valence, rings and labels, refinement, regular patch), a
+                   triangle; regular valence, rings and labels, refinement, regular patch: every
+                   fact that depends on the kind of mesh, asked of the lattice, never compared), a
                    scheme as data (edge, face, vertex rules on a lattice, for the whole mesh) and
                    the one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the full
                    matrix in FLINT rationals and its characteristic polynomial (``full_matrix``),

@@ -12,6 +12,8 @@ a rule of a scheme) so that no user meets a traceback from deep inside sympy. Th
   does not meet the hypotheses of the question asked (a test for mirror-symmetric schemes, a
   scheme with free parameters where numbers are needed); a claim's check reports it as
   "not applicable";
+* :class:`LatticeFactMissing` (an :class:`InvalidSchemeError`): a lattice asked for a fact its
+  file does not state (the message names the lattice and the fact);
 * :class:`InvalidTypeError` (also a ``TypeError``): an input of the wrong kind altogether
   (a polygon that is a dict, a scheme that is not a :class:`~symdecomp.schemes.scheme.Scheme`);
 * :class:`ResourceLimitError` (a ``ValueError``): a request refused because its estimated
@@ -37,6 +39,7 @@ __all__ = [
     "NotAffineError",
     "InvalidSchemeError",
     "NotApplicableError",
+    "LatticeFactMissing",
     "InvalidExpressionError",
     "InvalidMeshError",
     "NotCirculantBlockError",
@@ -111,6 +114,26 @@ class InvalidSchemeError(InvalidInputError):
         super().__init__(message)
         #: The message as words and objects, or ``None``.
         self.parts = parts
+
+
+class LatticeFactMissing(InvalidSchemeError):
+    """A lattice was asked for a fact it does not have (its own file does not state it).
+
+    The message names the lattice and the fact (``the triangle lattice has no 'xyz'``): code outside
+    the lattice's file asks the lattice, and a lattice without the answer fails here instead of being
+    treated as another lattice.
+    """
+
+    def __init__(self, lattice, fact: str, why: str = ""):
+        #: The lattice's name.
+        self.lattice = getattr(lattice, "name", lattice)
+        #: The name of the fact asked for.
+        self.fact = fact
+        self._why = why
+        super().__init__(f"the {self.lattice} lattice has no {fact!r}{why}")
+
+    def __reduce__(self):  # the arguments, not the message: the error crosses process pools intact
+        return type(self), (self.lattice, self.fact, self._why)
 
 
 class InvalidExpressionError(InvalidInputError):

@@ -59,7 +59,7 @@ import sympy as sp
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
-from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, Lattice, lattice
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -241,6 +241,10 @@ def check_applicable(scheme: Scheme) -> None:
         raise NotApplicableError(reason)
 
 
+#: How the vertex rule's weights on each kind of 1-ring neighbour are named in the refusal.
+_WHO = {"a": "each neighbour", "b": "each face neighbour"}
+
+
 @lru_cache(maxsize=32)
 def _inapplicable(scheme: Scheme) -> str | None:
     """Why the C1 test does not apply to ``scheme`` (one line), or ``None``: :func:`check_applicable`'s reason."""
@@ -254,7 +258,8 @@ def _inapplicable(scheme: Scheme) -> str | None:
         return f"scheme {scheme.name!r}: the C1 test does not apply ({exc})"
     layout = ring_layout(lat)
     if ours[1:, :] != theirs[1:, :]:
-        rules, verb = ("edge and face rules", "are") if lat.face_neighbours else ("edge rule", "is")
+        kinds = ("edge", "face")[:len(lat.one_ring_classes)]
+        rules, verb = (" and ".join(kinds) + " rules", "are") if len(kinds) > 1 else (f"{kinds[0]} rule", "is")
         return (
             f"the C1 test does not apply to scheme {scheme.name!r}: its {rules} at valence {regular} {verb} not "
             f"{layout.reference}'s, so its regular patches are not {layout.spline}s (the only regular splines it knows)"
@@ -264,7 +269,7 @@ def _inapplicable(scheme: Scheme) -> str | None:
         standard = tuple(theirs[0, k] for k in (0, 1, 1 + regular) if k < theirs.cols)
         return (
             f"the C1 test does not apply to scheme {scheme.name!r}: its vertex rule at the regular valence {regular} has the "
-            f"weights {mine} (centre, each neighbour{', each face neighbour' if lat.face_neighbours else ''}), not "
+            f"weights {mine} ({', '.join(('centre', *(_WHO[name] for name, _ in lat.one_ring_classes)))}), not "
             f"{layout.reference}'s {standard}; every regular vertex of the mesh uses it, so its regular patches are not "
             f"{layout.spline}s (the only regular splines it knows)"
         )
@@ -427,15 +432,15 @@ def subpatch_nets(vec: FrequencyEigenvector) -> tuple:
     ``(a - 1 + i, b - 1 + k)``. Triangles: for each of :data:`TRIANGLES` the dict
     ``{lattice point: value}`` on its 12 :func:`triangle_patch_points`.
     """
-    return _SUBPATCH_NETS[vec.lattice](vec)
+    return vec.lattice.select(_SUBPATCH_NETS, "the characteristic ring's sub-patch nets")(vec)
 
 
 #: The characteristic ring's sub-patch nets on each lattice.
 _SUBPATCH_NETS = {
-    QUAD: lambda vec: tuple(
+    BICUBIC: lambda vec: tuple(
         [[_value(vec, a - 1 + i, b - 1 + k) for k in range(4)] for i in range(4)] for a, b in SUBPATCH_FACES
     ),
-    TRIANGLE: lambda vec: tuple({p: _value(vec, *p) for p in triangle_patch_points(t)} for t in TRIANGLES),
+    BOX_SPLINE: lambda vec: tuple({p: _value(vec, *p) for p in triangle_patch_points(t)} for t in TRIANGLES),
 }
 
 

@@ -172,7 +172,7 @@ def _av_row(v_row: list, values, jordan) -> list:
 
 def _ring_columns(p: PatchMatrices, prec: int) -> list:
     """The eigenvectors of the 1-ring block, frequency by frequency (:mod:`symdecomp.analysis.ring_eigendata`)."""
-    return RING_EIGEN[p.lattice].columns(p, trig_table(p.n), prec)
+    return p.lattice.select(RING_EIGEN, "ring eigen-data columns").columns(p, trig_table(p.n), prec)
 
 
 def _sparse_times(row: dict, rows: list, size: int) -> list:
@@ -213,7 +213,7 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
             verdict = col.exact_check(nu, g_rows[r]) if col.exact_check else None
             if verdict is None:
                 raise _NeedPrecision
-            if not verdict and RING_EIGEN[p.lattice].jordan:
+            if not verdict and p.lattice.select(RING_EIGEN, "ring eigen-data columns").jordan:
                 jordan.append((k0 + r, c, coeff[c]))
             elif not verdict:
                 raise NotDiagonalizableError(
@@ -293,7 +293,7 @@ def _replace_columns(p: PatchMatrices, data: PatchEigenData, bad_inverse, bad_ph
         return False
     new = {}
     with flint.ctx.workprec(ZERO_PREC):
-        ring, table, pieces = RING_EIGEN[p.lattice], LazyTable(p.n), _column_pieces(p)
+        ring, table, pieces = p.lattice.select(RING_EIGEN, "ring eigen-data columns"), LazyTable(p.n), _column_pieces(p)
         w = ring.weights(p)
         for i in rows:
             try:
@@ -383,14 +383,14 @@ def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: i
     recomputed at ``prec`` bits (:func:`_column_at`), and an entry is replaced only when its new
     ball lies inside ``(-2^-1075, 2^-1075)``; everything else is left to the caller. Quads only.
     """
-    if not RING_EIGEN[p.lattice].sharpen or data.jordan:
+    if not p.lattice.select(RING_EIGEN, "ring eigen-data columns").sharpen or data.jordan:
         return
     k0 = p.ring_size
     if not bad or any(i >= k0 or not data.phi[k][i, l].contains(0) for k, i, l in bad):
         return
     tiny = arb(2) ** -1075
     with flint.ctx.workprec(prec):
-        ring, table, pieces = RING_EIGEN[p.lattice], LazyTable(p.n), _column_pieces(p)
+        ring, table, pieces = p.lattice.select(RING_EIGEN, "ring eigen-data columns"), LazyTable(p.n), _column_pieces(p)
         w = ring.weights(p)
         for i in sorted({i for _, i, _ in bad}):
             try:

@@ -68,7 +68,7 @@ from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch
 from symdecomp.analysis.masks import INDEX, LAMBDA1, limit_masks
 from symdecomp.errors import EvaluationError, InvalidSchemeError
 from symdecomp.schemes.box_spline import DEGREE, regular_patch
-from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
@@ -344,12 +344,12 @@ def _triangle_masks(scheme: Scheme, n: int, values, inverse, phi, conv):
 
 
 _BASES = {
-    QUAD: _PatchBasis(
+    BICUBIC: _PatchBasis(
         lambda s, t, ds, dt: np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(s.size, 16),
         lambda s, t, ds, dt: np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel(),  # index a + 4 b
         lambda scheme, n, values, inverse, phi, conv: _masks(scheme, n, conv),
     ),
-    TRIANGLE: _PatchBasis(
+    BOX_SPLINE: _PatchBasis(
         lambda s, t, ds, dt: box_basis(s, t, ds, dt, float),
         lambda s, t, ds, dt: box_basis(np.array([s], dtype=object), np.array([t], dtype=object), ds, dt, mpmath.mpf)[0],
         _triangle_masks,
@@ -358,6 +358,4 @@ _BASES = {
 
 
 def _basis(lat: Lattice) -> _PatchBasis:
-    if lat not in _BASES:  # pragma: no cover - every lattice so far has its patch basis
-        raise InvalidSchemeError(f"the patch evaluator has no regular basis for {lat} meshes")
-    return _BASES[lat]
+    return lat.select(_BASES, "the patch evaluator's regular basis")

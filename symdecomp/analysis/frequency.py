@@ -27,6 +27,7 @@ import sympy as sp
 
 from symdecomp.algebra.circulant import mode_eigenvalue_derivation, root_of_unity
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
@@ -141,7 +142,7 @@ def one_ring_matrices(scheme: Scheme) -> tuple[sp.ImmutableMatrix, sp.ImmutableM
     >>> M, E0.shape
     (Matrix([[omega/8 + 3/8 + 1/(8*omega)]]), (2, 2))
     """
-    if scheme.lattice.face_neighbours:
+    if scheme.lattice.handled("1-ring frequency matrices", BICUBIC, BOX_SPLINE) == BICUBIC:
         return per_frequency_matrix(scheme), recursion_matrix(scheme)
     edge, v = scheme.edge_rule, scheme.vertex_rule
     M = sp.ImmutableMatrix([[sp.expand(sum((w * OMEGA**k for k, w in edge.a), sp.Integer(0)))]])

@@ -194,7 +194,7 @@ def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKin
     ``progress(iterable, total)``, when given, wraps the loop over the vertices.
     """
     mesh.require_lattice(lattice)
-    opposite = _opposite(mesh) if lattice.face_neighbours else None
+    opposite = _opposite(mesh) if "b" in dict(lattice.one_ring_classes) else None  # face neighbours b_i in the 1-ring
     holes = {x for f in mesh.tags.holes for x in mesh.faces[f]}
     tagged = {v for e in mesh.tags.creases for v in e} | set(mesh.tags.corners)  # the rest of the interior is smooth
     gathered: dict[NeighbourhoodKind, tuple[list, list]] = {}

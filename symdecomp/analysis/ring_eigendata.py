@@ -1,7 +1,7 @@
 """The eigenvectors of the patch matrix's 1-ring block, frequency by frequency (exact or Arb), on each lattice.
 
 :mod:`symdecomp.analysis.eigendata` assembles the patch's eigen-data from these columns; which
-columns, and what it may do with them, is declared per lattice in :data:`RING_EIGEN`.
+columns, and what it may do with them, is declared per kind of regular patch in :data:`RING_EIGEN`.
 
 **Quads** (Catmull-Clark). The 1-ring block ``S`` acts on ``(O, e_0, f_0, .., e_{N-1}, f_{N-1})``;
 in the real Fourier basis it splits into a 3 x 3 rational block (``j = 0``), real 2 x 2 blocks
@@ -39,7 +39,7 @@ from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.errors import NotDiagonalizableError
-from symdecomp.schemes.lattice import QUAD, TRIANGLE
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.patch import PatchMatrices
 
 __all__ = [
@@ -412,7 +412,7 @@ class RingEigen:
 
 
 RING_EIGEN = {
-    QUAD: RingEigen(lambda p, table, prec: quad_ring_columns(p, table), jordan=False, sharpen=True,
+    BICUBIC: RingEigen(lambda p, table, prec: quad_ring_columns(p, table), jordan=False, sharpen=True,
                     weights=circulant_weights, group=lambda p, w, table, i, prec: column_group(p, w, table, i)),
-    TRIANGLE: RingEigen(triangle_ring_columns, jordan=True, sharpen=False, weights=triangle_ring_weights, group=triangle_column_group),
+    BOX_SPLINE: RingEigen(triangle_ring_columns, jordan=True, sharpen=False, weights=triangle_ring_weights, group=triangle_column_group),
 }

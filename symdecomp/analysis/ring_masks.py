@@ -110,7 +110,6 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
             masks["tangents"][0]["classes"][key] = [text(flint.acb(z.real)) for z in rot]
             masks["tangents"][1]["classes"][key] = [text(flint.acb(-z.imag)) for z in rot]
         for mask in [masks["position"], *masks["tangents"]]:
-            mask["a"] = mask["classes"]["1,0"]
-            if scheme.lattice.face_neighbours:
-                mask["b"] = mask["classes"]["1,1"]
+            for name, (u, v) in scheme.lattice.one_ring_classes:
+                mask[name] = mask["classes"][f"{u},{v}"]
         return {"n": n, "scheme": scheme.name, "rings": rings, "subdominant": acb_text(lam1, digits), **masks}

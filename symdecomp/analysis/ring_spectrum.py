@@ -116,7 +116,7 @@ def frequency_factors(blocks: RingBlocks) -> FrequencyFactors:
     K = blocks.class_count
     E = blocks.frequency_matrix()
     other = _factors((LAM * sp.eye(K) - E).det(method="berkowitz"), (LAM, OMEGA))
-    affine = 1 - N * W_A - (N * W_B if blocks.lattice.face_neighbours else 0)  # the vertex rule sums to 1
+    affine = 1 - sum(N * {"a": W_A, "b": W_B}[name] for name, _ in blocks.lattice.one_ring_classes)  # the vertex rule sums to 1
     E0 = blocks.frequency_zero_matrix(symbolic_weights=True).xreplace({W_O: affine})
     zero = _factors((LAM * sp.eye(K + 1) - E0).det(method="berkowitz"), (LAM, N, W_A, W_B))
     return FrequencyFactors(zero, other)

@@ -59,7 +59,7 @@ from symdecomp.algebra.small_eigen import nullspace
 from symdecomp.algebra.triangle_bezier import bernstein
 from symdecomp.errors import EvaluationError, InternalError, InvalidInputError, NotApplicableError
 from symdecomp.schemes.box_spline import BOX_POINTS, DEGREE, regular_patch
-from symdecomp.schemes.lattice import QUAD, Lattice
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, Lattice
 from symdecomp.schemes.patch import SUBPATCH_CORNERS, TRIANGLE_SUBPATCHES
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import SharpVertex, exact_sharp_matrix
@@ -112,7 +112,7 @@ class SharpPatchData:
 
 def subpatch_points(lat: Lattice, j: int) -> tuple[tuple[int, int], ...]:
     """The refined lattice points ``(x, y)`` of the control points of sub-patch ``j`` (the interior patch's order)."""
-    if lat is QUAD:
+    if lat.handled("the sub-patches' control points", BICUBIC, BOX_SPLINE) == BICUBIC:
         cu, cv = SUBPATCH_CORNERS[j]
         return tuple((cu + a - 1, cv + b - 1) for b in range(4) for a in range(4))
     (cu, cv), sigma = TRIANGLE_SUBPATCHES[j]
@@ -162,7 +162,8 @@ def sharp_patch_data(scheme: Scheme, vertex: SharpVertex) -> SharpPatchData:
         # the modified rule acts on the edges at O on every level, inside the sub-patches' nets: no spline there
         raise NotApplicableError(f"scheme {scheme.name!r}: its modified rules for smooth edges at a sharp vertex make the "
                                  "patches next to the vertex non-splines; evaluation data need the standard edge rule")
-    if scheme.lattice is not QUAD and regular_patch(scheme).coefficients != regular_patch().coefficients:
+    box_spline = scheme.lattice.handled('the regular patch', BICUBIC, BOX_SPLINE) == BOX_SPLINE
+    if box_spline and regular_patch(scheme).coefficients != regular_patch().coefficients:
         raise NotApplicableError(f"scheme {scheme.name!r}: its regular patch is not Loop's box spline")
     labels2 = vertex.ring_labels(2)
     size = len(labels2)
@@ -214,7 +215,7 @@ def exact_spectrum(rows, size: int) -> tuple[tuple[tuple[int, ...], int, int], .
 
 def _basis(lat: Lattice, s, t, ds: int, dt: int) -> list:
     """The regular basis (or a derivative) at one local point, in the arithmetic of ``s`` and ``t``."""
-    if lat is QUAD:
+    if lat.handled('the regular basis', BICUBIC, BOX_SPLINE) == BICUBIC:
         from symdecomp.analysis.evaluation import bspline_basis
 
         bs, bt = bspline_basis(s, ds), bspline_basis(t, dt)

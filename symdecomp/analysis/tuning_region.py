@@ -63,6 +63,7 @@ from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regim
 from symdecomp.analysis.frequency import laurent_to_cos, one_ring_matrices
 from symdecomp.analysis.tuning import unit_quotient
 from symdecomp.errors import InvalidInputError, NotApplicableError
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import Scheme, VertexRule, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
@@ -459,7 +460,7 @@ def placed_points(scheme: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, ...]
     n = scheme.fitting_valence(check_valence(n), real=True)
     ref = scheme.lattice.reference()
     weights = []
-    if scheme.lattice.face_neighbours:
+    if scheme.lattice.handled("the published vertex weights", BICUBIC, BOX_SPLINE) == BICUBIC:
         weights.append(("Catmull-Clark", _vertex_weights(ref, n, {})))
         concrete = Scheme(scheme.name, scheme.edge_rule, scheme.face_rule, ref.vertex_rule, (), scheme.lattice)
         try:

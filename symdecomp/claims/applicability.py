@@ -29,7 +29,6 @@ from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text, Verbatim
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import cos_jtheta as C
@@ -116,8 +115,8 @@ def closed_form_obstacle(scheme: Scheme) -> str | None:
 
     They need a quad scheme with mirror-symmetric rules, so that ``M_j`` depends on ``c`` alone.
     """
-    if scheme.lattice != PAPER_LATTICE:
-        return f"they are derived for {PAPER_LATTICE} meshes, not {scheme.lattice} meshes"
+    if not scheme.lattice.paper_claims:
+        return f"they are derived for quad meshes, not {scheme.lattice} meshes"
     if MIRROR_SYMMETRIC.unmet(scheme) is not None:
         return "its rules are not mirror-symmetric (M_j depends on sin(j pi/n), not on c = cos(j pi/n) alone)"
     return None

@@ -27,7 +27,7 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, Verbatim, claim
-from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -100,7 +100,7 @@ def check_regimes(scheme: Scheme, printed, valences: tuple[int, int] = VALENCES)
 
 def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
     """``scheme`` if it lives on the ``wanted`` lattice, else that lattice's reference scheme (Catmull-Clark, Loop)."""
-    return scheme if scheme.lattice == wanted else wanted.reference()
+    return wanted.own_or_reference(scheme)
 
 
 @claim(
@@ -187,8 +187,8 @@ def check_regular(scheme: Scheme, multiplicity: int) -> CheckResult:
     return CheckResult(Status.REFUTED, what, counterexample=what, steps=steps)
 
 
-#: As printed: ``(first n, last n or None, the dominant part's frequency or None for neither)``, per lattice.
-DOMINANCE = {QUAD.name: ((3, 4, None), (5, None, 2)), TRIANGLE.name: ((3, 3, None), (4, 5, 0), (6, 6, None), (7, None, 2))}
+#: As printed: ``(first n, last n or None, the dominant part's frequency or None for neither)``, per kind of regular patch.
+DOMINANCE = {BICUBIC: ((3, 4, None), (5, None, 2)), BOX_SPLINE: ((3, 3, None), (4, 5, 0), (6, 6, None), (7, None, 2))}
 SHAPE_VALENCES = (3, 32)
 
 
@@ -226,10 +226,10 @@ def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_V
     requires=(NO_FREE_PARAMETERS,),
 )
 def _shape(scheme: Scheme) -> CheckResult:
-    quad = check_dominance(_on(scheme, QUAD), DOMINANCE[QUAD.name])
+    quad = check_dominance(_on(scheme, QUAD), QUAD.select(DOMINANCE, "the printed dominance"))
     if quad.status is not Status.VERIFIED:
         return quad
-    tri = check_dominance(_on(scheme, TRIANGLE), DOMINANCE[TRIANGLE.name])
+    tri = check_dominance(_on(scheme, TRIANGLE), TRIANGLE.select(DOMINANCE, "the printed dominance"))
     if tri.status is not Status.VERIFIED:
         return tri
     return CheckResult(Status.VERIFIED, Text(quad.evidence, "; and ", tri.evidence), steps=quad.steps + tri.steps,

@@ -24,17 +24,17 @@ from symdecomp.analysis.mirror import THETA, THETA_K, crease_block, sine_block, 
 from symdecomp.analysis.mirror_threshold import C, X, charpoly_check, first_exceeding
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, Verbatim, claim
-from symdecomp.schemes.lattice import QUAD, TRIANGLE
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import Scheme
 
 #: As printed: the crease block's eigenvalues (the cubic B-spline curve's 1, 1/2, 1/4).
 CREASE_EIGENVALUES = (sp.Integer(1), sp.Rational(1, 2), sp.Rational(1, 4))
-#: As printed: from which k the first sine eigenvalue exceeds the boundary curve's 1/2, per lattice.
-FIRST_K = {QUAD.name: 3, TRIANGLE.name: 4}
+#: As printed: from which k the first sine eigenvalue exceeds the boundary curve's 1/2, per kind of regular patch (the lattice's).
+FIRST_K = {BICUBIC: 3, BOX_SPLINE: 4}
 #: As printed (BLZ 2000, as quoted): the modified smooth edge rule at a crease vertex, ``(on the crease vertex, on the
-#: far end)`` in the sector angle ``theta_k``, per lattice.
-BLZ_RULE = {QUAD.name: (sp.Rational(3, 8) + sp.cos(THETA_K) / 4, sp.Rational(3, 8) - sp.cos(THETA_K) / 4),
-            TRIANGLE.name: (sp.Rational(1, 4) + sp.cos(THETA_K) / 4, sp.Rational(1, 2) - sp.cos(THETA_K) / 4)}
+#: far end)`` in the sector angle ``theta_k``, per kind of regular patch (the lattice's).
+BLZ_RULE = {BICUBIC: (sp.Rational(3, 8) + sp.cos(THETA_K) / 4, sp.Rational(3, 8) - sp.cos(THETA_K) / 4),
+            BOX_SPLINE: (sp.Rational(1, 4) + sp.cos(THETA_K) / 4, sp.Rational(1, 2) - sp.cos(THETA_K) / 4)}
 #: The sector sizes of the cross-check with the assembled matrix.
 SECTORS = (1, 12)
 
@@ -96,14 +96,13 @@ def _crease(scheme: Scheme) -> CheckResult:
 
 def _both_lattices(scheme: Scheme, check) -> CheckResult:
     """A statement about Catmull-Clark and Loop: ``check`` on ``scheme``, then on the other lattice's reference scheme."""
-    other = (TRIANGLE if scheme.lattice == QUAD else QUAD).reference()
-    first = check(scheme)
-    if first.status is not Status.PROVED:
-        return first
-    second = check(other)
-    if second.status is not Status.PROVED:
-        return second
-    return CheckResult(Status.PROVED, Text(first.evidence, "; and ", second.evidence), steps=first.steps + second.steps)
+    results = []
+    for subject in (scheme, *(x.reference() for x in scheme.lattice.others())):
+        results.append(check(subject))
+        if results[-1].status is not Status.PROVED:
+            return results[-1]
+    evidence = [part for r in results for part in ("; and ", r.evidence)][1:]
+    return CheckResult(Status.PROVED, Text(*evidence), steps=sum((r.steps for r in results), ()))
 
 
 def _table(th) -> sp.Matrix:
@@ -112,7 +111,7 @@ def _table(th) -> sp.Matrix:
 
 def check_first_k(scheme: Scheme, printed=None, rules=None) -> CheckResult:
     """From which ``k`` the first sine eigenvalue exceeds the boundary curve's, for every ``k``, against ``printed``."""
-    printed = FIRST_K[scheme.lattice.name] if printed is None else printed
+    printed = scheme.lattice.select(FIRST_K, "the printed first k") if printed is None else printed
     th = first_exceeding(scheme, rules)
     steps = (Step("$g(c) = \\det(M - \\lambda) $ (or $M - \\lambda$), $c = \\cos(\\pi/k)$", th.g),
              Step("$t(c) = \\mathrm{tr}\\,M - 2\\lambda$", th.t),
@@ -144,7 +143,7 @@ def _first_k(scheme: Scheme) -> CheckResult:
 
 def check_blz(scheme: Scheme, printed=None) -> CheckResult:
     """BLZ's modified rule (``printed``: ``(centre, end)`` in ``theta_k``) makes ``1/2`` an eigenvalue of ``M(pi/k)``."""
-    centre, end = BLZ_RULE[scheme.lattice.name] if printed is None else printed
+    centre, end = scheme.lattice.select(BLZ_RULE, "BLZ's printed rule") if printed is None else printed
     rules = with_near_edge(scheme, centre, end)
     th = first_exceeding(scheme, rules)
     M1 = sine_block(scheme, rules).subs(THETA_K, THETA)
@@ -209,13 +208,13 @@ def _against_matrix(scheme: Scheme) -> CheckResult:
     return check_against_matrix(scheme)
 
 
-#: As printed: the frequency of the boundary tangent's continuation into the sector, per lattice.
-TANGENT_FREQUENCY = {QUAD.name: sp.pi / 2, TRIANGLE.name: sp.pi / 3}
+#: As printed: the frequency of the boundary tangent's continuation into the sector, per kind of regular patch (the lattice's).
+TANGENT_FREQUENCY = {BICUBIC: sp.pi / 2, BOX_SPLINE: sp.pi / 3}
 
 
 def check_tangent(scheme: Scheme, printed=None) -> CheckResult:
     """The eigenvector of the boundary curve's eigenvalue continues as ``sin(phi (i - k/2))``: ``det(M(phi) - 1/2) = 0``."""
-    phi = TANGENT_FREQUENCY[scheme.lattice.name] if printed is None else printed
+    phi = scheme.lattice.select(TANGENT_FREQUENCY, "the printed tangent frequency") if printed is None else printed
     residual, _ = sine_identity(scheme)
     th = first_exceeding(scheme)
     at = sp.simplify(th.g.subs(C, sp.cos(phi)))

@@ -18,7 +18,6 @@ from symdecomp.cli.progress import progress
 from symdecomp.errors import InvalidInputError, SymdecompError
 from symdecomp.parallel import parse_executor
 from symdecomp.schemes.files import SCHEMES, load_scheme
-from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import DEFAULT_BUDGET, MAX_DEPTH, MAX_DIGITS, MAX_DPS, MAX_REPORT_VALENCE
@@ -311,14 +310,14 @@ def closed_form_obstacle(scheme: Scheme) -> str | None:
 
 def general_path(args) -> bool:
     """Whether a command takes the any-scheme route (triangle meshes or ``--rings`` > 1)."""
-    return args.scheme.lattice != PAPER_LATTICE or getattr(args, "rings", 1) != 1
+    return not args.scheme.lattice.paper_claims or getattr(args, "rings", 1) != 1
 
 
 def refuse_non_quad(scheme: Scheme, command: str) -> None:
     """One line for a command about the paper's claims given a scheme on triangle meshes."""
-    if scheme.lattice != PAPER_LATTICE:
+    if not scheme.lattice.paper_claims:
         raise InvalidInputError(
-            f"--scheme {scheme.name}: {command} works on the paper's claims, statements about {PAPER_LATTICE} meshes; "
+            f"--scheme {scheme.name}: {command} works on the paper's claims, statements about quad meshes; "
             f"a {scheme.lattice}-mesh "
             "scheme is analysed by spectrum, check, charpoly, masks, oracle, c1 and evaldata"
         )

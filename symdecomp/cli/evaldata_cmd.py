@@ -39,7 +39,6 @@ from symdecomp.cli.common import (
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import EvalDataFileError, InvalidInputError
 from symdecomp.parallel import pool_size
-from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.validate import FLOAT_DIGITS
 
 
@@ -154,7 +153,7 @@ def run(args) -> int:
     ns = args.n
     if ns[0] != 3:
         raise EvalDataFileError(f"--n {ns[0]}:{ns[-1]}: the file holds valences 3..N; give --n 3:{ns[-1]}")
-    if args.format == "binary" and args.scheme.lattice != PAPER_LATTICE:
+    if args.format == "binary" and not args.scheme.lattice.paper_claims:
         raise EvalDataFileError(f"--format binary: the binary layout is Stam's Catmull-Clark file; for --scheme {args.scheme.name} use --format json")
     digits = args.digits if args.format == "json" else FLOAT_DIGITS
     memory, seconds = check_eigendata_cost(args.scheme, ns[-1], pool_size(args.jobs, len(ns)) if digits == FLOAT_DIGITS else 1, digits)

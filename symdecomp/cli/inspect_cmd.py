@@ -97,14 +97,13 @@ def _first_defect(defects) -> str:
 def prepare_mesh(scheme, mesh):
     """The scheme (``None``: the mesh's) and the mesh it analyses: a mixed mesh takes Catmull-Clark's first step exactly;
     also the new vertices that came from faces other than quads (``None`` when no step was taken)."""
-    from symdecomp.schemes.lattice import QUAD
     from symdecomp.schemes.meshfile import scheme_for_mesh
     from symdecomp.schemes.scheme import catmull_clark
 
     if scheme is None:
         sizes = mesh.face_sizes()
         scheme = scheme_for_mesh(mesh) if len(sizes) == 1 and sizes[0] in (3, 4) else catmull_clark()
-    if scheme.lattice is QUAD and mesh.face_sizes() != (4,):
+    if mesh.face_sizes() != (scheme.lattice.face_sides,):  # Catmull-Clark takes any polygons by its first step
         if scheme.name != "catmull-clark":
             mesh.require_lattice(scheme.lattice, scheme.name)
         from symdecomp.schemes.polygon_step import catmull_clark_polygon_step

@@ -189,7 +189,7 @@ def _run_sharp(args, kinds) -> int:
     except ModuleNotFoundError:  # main() prints the one error line and exits with 3
         raise UnavailableError("--kind needs the sharp vertex model (symdecomp.schemes.sector), not in this build") from None
 
-    scheme = "catmull-clark" if args.scheme.lattice.face_neighbours else "loop"  # _comparison checked the rules
+    scheme = args.scheme.lattice.reference().name  # _comparison checked the rules
     cases = [c for c in sharp_cases(scheme, kinds, args.k, args.sharpness or SHARPNESS)
              if args.creasing in ("both", c.creasing)]
     results = [r for case in progress(cases, len(cases), "oracle") for r in compare_sharp_case(case, seed=args.seed)]

@@ -44,7 +44,6 @@ from symdecomp.claims.applicability import closed_form_obstacle
 from symdecomp.claims.guards import DEFAULT_BUDGET
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, NotApplicableError, SymdecompError
 from symdecomp.output.artifact_table import COLUMNS as ARTIFACT_COLUMNS
-from symdecomp.schemes.lattice import PAPER_LATTICE
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import MAX_REPORT_VALENCE as MAX_VALENCES
 from symdecomp.validate import check_valence
@@ -157,9 +156,9 @@ def scheme_section(inp: ReportInput) -> Section:
 
 def claims_section(inp: ReportInput) -> Section:
     """The claims of the paper checked for the scheme (``symdecomp claims --scheme``), one row each."""
-    if inp.scheme.lattice != PAPER_LATTICE:
+    if not inp.scheme.lattice.paper_claims:
         return Section("The paper's claims", (_para(
-            f"Not applicable: the paper's claims are statements about {PAPER_LATTICE} meshes, and this scheme works on "
+            f"Not applicable: the paper's claims are statements about quad meshes, and this scheme works on "
             f"{inp.scheme.lattice} meshes. Its spectrum, masks and C1 test follow."),))
     claims = sorted(all_claims(), key=lambda c: c.sort_key())
     results = [check_claim(c.label, inp.scheme, budget=inp.budget) for c in claims]
@@ -194,7 +193,7 @@ def spectrum_section(inp: ReportInput) -> Section:
     """The spectrum: closed forms where the paper's apply, and each valence's distinct eigenvalues (``spectrum N``)."""
     blocks = _closed_form_blocks(inp.scheme)
     rows = []
-    if inp.scheme.lattice == PAPER_LATTICE:
+    if inp.scheme.lattice.paper_claims:
         for n in inp.valences:
             for e in closed_form_spectrum(inp.scheme, n, digits=DIGITS).eigenvalues:
                 rows.append((str(n), e.text, str(e.multiplicity), ", ".join(map(str, e.frequencies))))

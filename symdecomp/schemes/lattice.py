@@ -9,6 +9,10 @@ by the scheme's rules, the regular patch (bicubic B-spline or quartic box spline
 patch matrices of Stam's evaluation, the reference scheme whose regular rules give that
 patch, and how the patch's parameter domain splits into the sub-patches of one refinement.
 A new neighbourhood (a boundary or crease, a dual lattice) is one new subclass.
+No module outside this file asks which lattice it has: a higher layer that keeps something per kind
+of regular patch (:data:`BICUBIC`, :data:`BOX_SPLINE`) reads it with :meth:`Lattice.select`, and a
+fact a lattice does not state raises :class:`~symdecomp.errors.LatticeFactMissing` naming the fact,
+never another lattice's answer.
 
 The name (``"quad"``, ``"triangle"``) is the external spelling, in scheme files, JSON and
 printed output; :func:`lattice` reads it.
@@ -26,11 +30,19 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.errors import InvalidSchemeError, LatticeFactMissing
 from symdecomp.schemes import mesh as _mesh
 from symdecomp.schemes import refinement as _refinement
 
-__all__ = ["Lattice", "QuadLattice", "TriangleLattice", "QUAD", "TRIANGLE", "LATTICES", "PAPER_LATTICE", "lattice"]
+__all__ = ["Lattice", "QuadLattice", "TriangleLattice", "QUAD", "TRIANGLE", "LATTICES", "PAPER_LATTICE", "BICUBIC", "BOX_SPLINE",
+           "lattice", "lattice_of",
+           "lattice_of_reference"]
+
+
+#: The regular patch of the quad lattice: the bicubic B-spline (a :attr:`Lattice.patch` kind).
+BICUBIC = "bicubic"
+#: The regular patch of the triangle lattice: the quartic box spline (a :attr:`Lattice.patch` kind).
+BOX_SPLINE = "box-spline"
 
 
 @dataclass(frozen=True)
@@ -68,15 +80,15 @@ class Lattice:
 
     def ring_of(self, u: int, v: int) -> int:
         """The ring (``0`` for ``O``) of the point ``(s, u, v)`` of a sector."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "ring_of")
 
     def ring_size(self, n: int, rings: int) -> int:
         """Points of the closed ``rings``-ring at valence ``n``, the centre included."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "ring_size")
 
     def ring_labels(self, n: int, rings: int) -> tuple[tuple[int, int, int], ...]:
         """Labels ``(s, u, v)`` of the closed ``rings``-ring, in matrix order (the centre first)."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "ring_labels")
 
     def one_ring_labels(self, n: int) -> tuple[tuple[int, int, int], ...]:
         """The ring labels of the 1-ring points in :meth:`vertex_order`: ``a_i = (i, 1, 0)``, ``b_i = (i, 1, 1)``."""
@@ -85,7 +97,7 @@ class Lattice:
 
     def canonical(self, s: int, u: int, v: int) -> tuple[int, int, int] | None:
         """The label ``(sector, u, v)`` with ``u >= 1`` of a lattice point near sector ``s`` (``None``: ``O``)."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "canonical")
 
     # -- meshes and one refinement --------------------------------------------------------------
 
@@ -94,19 +106,19 @@ class Lattice:
 
     def mesh(self, faces, values):
         """A local mesh of this lattice's kind (:class:`~symdecomp.schemes.mesh.QuadMesh`, ``TriangleMesh``)."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "mesh")
 
     def ring_mesh(self, n: int, rings: int, values=None):
         """The mesh of ``rings`` rings around a valence-``n`` vertex, every other vertex regular."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "ring_mesh")
 
     def mesh_rules(self, scheme):
         """The scheme's 1-ring rules read as rules of the whole mesh (or :class:`InvalidSchemeError`)."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "mesh_rules")
 
     def refine(self, mesh, rules, *, vertex_weights=None):
         """One exact refinement of ``mesh`` by ``rules``; ``vertex_weights(valence)`` overrides the vertex rule's weights."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "refine")
 
     def refined_point(self, step, old, u: int, v: int, face_of: dict) -> int:
         """The id in ``step`` (a refinement) of the new point at the fine lattice point ``(u, v)``.
@@ -122,21 +134,21 @@ class Lattice:
         return self._odd_point(step, old, u, v, face_of)
 
     def _odd_point(self, step, old, u: int, v: int, face_of: dict) -> int:
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "refined_point")
 
     # -- the regular patch -----------------------------------------------------------------------
 
     def reference(self):
         """The scheme whose rules at the regular valence give :attr:`spline` (Catmull-Clark, Loop)."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "reference")
 
     def patch_matrices(self, scheme, n: int):
         """Stam's patch matrices of ``scheme`` at valence ``n`` (:class:`~symdecomp.schemes.patch.PatchMatrices`)."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "patch_matrices")
 
     def level_measure(self, u, v, xp):
         """The size of ``(u, v)`` that one refinement halves: the patch at level ``k`` is where it is in ``(2^-k, 2^(1-k)]``."""
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "level_measure")
 
     def in_domain(self, u, v) -> bool:
         """Whether ``(u, v)`` (each in ``[0, 1]``) is in the patch's parameter domain."""
@@ -147,10 +159,73 @@ class Lattice:
 
         Scalars, or numpy arrays with ``xp=numpy``.
         """
-        raise NotImplementedError
+        raise LatticeFactMissing(self, "locate")
 
     #: Whether the tangent masks turn from ``a_0`` to ``a_1`` in the sense of ``(u, v)`` (the normal is their cross product).
     tangents_along_parameters: bool = True
+
+    # -- facts asked by the analysis, the checks and the commands ---------------------------------
+
+    @property
+    def patch(self) -> str:
+        """The kind of the regular patch (:data:`BICUBIC`, :data:`BOX_SPLINE`): the key of the tables kept per kind of patch."""
+        raise LatticeFactMissing(self, "patch")
+
+    def select(self, table, fact: str):
+        """This lattice's entry in ``table``, a higher layer's table keyed by :attr:`patch` kind; ``fact`` names the entry.
+
+        A lattice without a patch kind, or of a kind the table does not hold, raises
+        :class:`~symdecomp.errors.LatticeFactMissing` naming ``fact``: no other lattice's entry is taken.
+        """
+        kind = self.patch
+        if kind not in table:
+            raise LatticeFactMissing(self, fact, f" (nothing for {kind} patches)")
+        return table[kind]
+
+    def handled(self, fact: str, *kinds: str) -> str:
+        """:attr:`patch`, which must be one of the ``kinds`` the caller's code for ``fact`` handles (else the fact is missing)."""
+        return self.select({kind: kind for kind in kinds}, fact)
+
+    @property
+    def paper_claims(self) -> bool:
+        """Whether the paper's claims (statements about quad meshes) and Stam's data file speak of this lattice's meshes."""
+        raise LatticeFactMissing(self, "paper_claims")
+
+    @property
+    def one_ring_classes(self) -> tuple[tuple[str, tuple[int, int]], ...]:
+        """The kinds of 1-ring neighbours as ``(name, (u, v))``: ``a`` at ``(1, 0)`` and the face neighbours ``b`` at ``(1, 1)``, if any."""
+        return (("a", (1, 0)),) + ((("b", (1, 1)),) if self.face_neighbours else ())
+
+    @property
+    def neighbour_offsets(self) -> tuple[tuple[tuple[int, int], ...], tuple[tuple[int, int], ...]]:
+        """``(edge, face)``: the offsets ``(du, dv)`` of a regular point's 1-ring neighbours, counter-clockwise from ``(1, 0)``."""
+        raise LatticeFactMissing(self, "neighbour_offsets")
+
+    @property
+    def phantom_stencil(self) -> tuple[tuple[int, tuple[int, int]], ...]:
+        """The phantom point ``(x, -1)`` beyond a sharp ray as ``((weight, (dx, y)), ...)`` on the real points ``(x + dx, y)``.
+
+        The combination that the regular rules reproduce on every level, so that the spline of the
+        extended net is the limit next to the ray (:mod:`symdecomp.schemes.sector_patch`).
+        """
+        raise LatticeFactMissing(self, "phantom_stencil")
+
+    def cell_faces(self, a: int, b: int, c: int, d: int) -> tuple[tuple[int, ...], ...]:
+        """The faces of the lattice cell with corners ``a, b, c, d`` counter-clockwise from ``(x, y)``."""
+        raise LatticeFactMissing(self, "cell_faces")
+
+    @property
+    def regular_boundary_faces(self) -> int:
+        """Faces at a regular boundary vertex (a half-plane): half the regular valence."""
+        return self.regular_valence // 2
+
+    def own_or_reference(self, scheme):
+        """``scheme`` if it lives on this lattice, else this lattice's reference scheme (:meth:`reference`)."""
+        return scheme if scheme.lattice == self else self.reference()
+
+    def others(self) -> tuple[Lattice, ...]:
+        """The other lattices (of :data:`LATTICES`), in their order."""
+        return tuple(x for x in LATTICES.values() if x != self)
 
 
 @dataclass(frozen=True)
@@ -165,6 +240,10 @@ class QuadLattice(Lattice):
 
     #: Sides of every face of a mesh on this lattice.
     face_sides = 4
+    patch = BICUBIC
+    paper_claims = True
+    phantom_stencil = ((2, (0, 0)), (-1, (0, 1)))
+    neighbour_offsets = (((1, 0), (0, 1), (-1, 0), (0, -1)), ((1, 1), (-1, 1), (-1, -1), (1, -1)))
     #: The local mesh type of this lattice: ``mesh(faces, values)``.
     mesh = staticmethod(_mesh.QuadMesh)
     ring_labels = staticmethod(_mesh.ring_mesh_labels)
@@ -183,6 +262,9 @@ class QuadLattice(Lattice):
         if u == 0:
             s, u, v = s + 1, v, 0
         return s, u, v
+
+    def cell_faces(self, a, b, c, d):
+        return ((a, b, c, d),)
 
     def _odd_point(self, step, old, u, v, face_of):  # both odd: the face point
         corners = frozenset(old((u + a) // 2, (v + b) // 2) for a in (-1, 1) for b in (-1, 1))
@@ -224,6 +306,10 @@ class TriangleLattice(Lattice):
         return 1 + n * rings * (rings + 1) // 2
 
     face_sides = 3
+    patch = BOX_SPLINE
+    paper_claims = False
+    phantom_stencil = ((1, (-1, 0)), (1, (0, 0)), (-1, (-1, 1)))
+    neighbour_offsets = (((1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1)), ())
     mesh = staticmethod(_mesh.TriangleMesh)
     ring_labels = staticmethod(_mesh.triangle_ring_labels)
     ring_mesh = staticmethod(_mesh.triangle_ring_mesh)
@@ -245,6 +331,9 @@ class TriangleLattice(Lattice):
         if u == 0:
             s, u, v = s + 1, v, 0
         return s, u, v
+
+    def cell_faces(self, a, b, c, d):  # split along the diagonal b-d
+        return ((a, b, d), (b, c, d))
 
     def _odd_point(self, step, old, u, v, face_of):  # both odd: the midpoint of the diagonal edge
         return step.edge_point[frozenset((old((u - 1) // 2, (v + 1) // 2), old((u + 1) // 2, (v - 1) // 2)))]
@@ -307,3 +396,19 @@ def lattice(name: str | Lattice) -> Lattice:
     if not isinstance(name, str) or name not in LATTICES:
         raise InvalidSchemeError(f"mesh must be one of {tuple(LATTICES)}, got {name!r}")
     return LATTICES[name]
+
+
+def lattice_of(mesh) -> Lattice:
+    """The lattice whose local meshes (:meth:`Lattice.mesh`) ``mesh`` is one of; :class:`LatticeFactMissing` if none."""
+    found = [x for x in LATTICES.values() if isinstance(mesh, x.mesh)]
+    if not found:
+        raise LatticeFactMissing(type(mesh).__name__, "mesh", " (no lattice has meshes of this type)")
+    return found[0]
+
+
+def lattice_of_reference(name: str) -> Lattice:
+    """The lattice whose reference scheme (:meth:`Lattice.reference`) is called ``name``; :class:`LatticeFactMissing` if none."""
+    found = [x for x in LATTICES.values() if x.reference().name == name]
+    if not found:
+        raise LatticeFactMissing(repr(name), "lattice", " (no lattice has it as its reference scheme)")
+    return found[0]

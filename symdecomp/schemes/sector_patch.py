@@ -42,7 +42,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.errors import InvalidInputError, NotApplicableError
-from symdecomp.schemes.lattice import QUAD, Lattice, lattice
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, Lattice, lattice
 
 __all__ = ["ORIGIN", "sector_point", "sector_net", "phantom_reproduction", "check_spline_sharp_rules", "modified_edges"]
 
@@ -108,6 +108,10 @@ def _merge(terms) -> tuple:
     return tuple((w, lab) for lab, w in out.items() if w != 0)
 
 
+#: The points of a face of an open sector, phantoms included, for each kind of regular patch.
+_SECTOR_POINT = {BICUBIC: _quad_point, BOX_SPLINE: _triangle_point}
+
+
 def sector_point(mesh: Lattice | str, k: int, s: int, u: int, v: int) -> tuple:
     """The lattice point ``(u, v)`` of face ``s`` of an open sector of ``k`` faces: ``((weight, label), ...)``.
 
@@ -118,7 +122,7 @@ def sector_point(mesh: Lattice | str, k: int, s: int, u: int, v: int) -> tuple:
     lat = lattice(mesh)
     if not (isinstance(k, int) and k >= 1 and isinstance(s, int) and 0 <= s < k):
         raise InvalidInputError(f"sector point: need 0 <= s < k, got s = {s!r}, k = {k!r}")
-    point = _quad_point if lat is QUAD else _triangle_point
+    point = lat.select(_SECTOR_POINT, "sector points beyond a sharp ray")
     return _merge(point(k, s, u, v))
 
 
@@ -177,11 +181,9 @@ def _strip(lat: Lattice):
     sym = {(x, y): sp.Symbol(f"p_{x}_{y}".replace("-", "m")) for x in xs for y in ys if y >= 0}
 
     def phantom(x):
-        if lat is QUAD:
-            return 2 * sym[(x, 0)] - sym[(x, 1)]
-        if (x - 1, 0) not in sym:
+        if any((x + dx, y) not in sym for _, (dx, y) in lat.phantom_stencil):
             return sp.Symbol(f"q_{x}")  # outside the strip: an independent value, never read near the middle
-        return sym[(x - 1, 0)] + sym[(x, 0)] - sym[(x - 1, 1)]
+        return sum((w * sym[(x + dx, y)] for w, (dx, y) in lat.phantom_stencil), sp.Integer(0))
 
     values = {i: (sym[p] if p[1] >= 0 else phantom(p[0]),) for p, i in ids.items()}
     faces: list[tuple[int, ...]] = []
@@ -189,7 +191,7 @@ def _strip(lat: Lattice):
         if (x + 1, y + 1) not in ids:
             continue
         a, b, c, d = i, ids[(x + 1, y)], ids[(x + 1, y + 1)], ids[(x, y + 1)]
-        faces += [(a, b, c, d)] if lat is QUAD else [(a, b, d), (b, c, d)]
+        faces += lat.cell_faces(a, b, c, d)
     return lat.mesh(tuple(faces), values), ids, sym, phantom
 
 
@@ -220,10 +222,7 @@ def phantom_reproduction(mesh: Lattice | str, rules) -> dict[str, sp.Expr]:
         "vertex": sp.expand(new(0, 0) - rules.crease_centre * p(0, 0) - rules.crease_end * (p(-1, 0) + p(1, 0))),
         "edge": sp.expand(new(1, 0) - rules.crease_edge * (p(0, 0) + p(1, 0))),
     }
-    if lat is QUAD:
-        expected = [(x, 2 * new(x, 0) - new(x, 1)) for x in (-1, 0, 1, 2)]
-    else:
-        expected = [(x, new(x - 1, 0) + new(x, 0) - new(x - 1, 1)) for x in (-1, 0, 1, 2)]
+    expected = [(x, sum((w * new(x + dx, y) for w, (dx, y) in lat.phantom_stencil), sp.Integer(0))) for x in (-1, 0, 1, 2)]
     out["phantom"] = sum((sp.Abs(sp.expand(new(x, -1) - e)) for x, e in expected), sp.Integer(0))
     return out
 

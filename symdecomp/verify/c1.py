@@ -75,9 +75,8 @@ from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.algebra.triangle_bezier import bezier_indices
 from symdecomp.analysis.characteristic import TRIANGLES, frequency_eigenvector, inner_boundary_nets, subpatch_nets
 from symdecomp.analysis.display import NotebookDisplay
-from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import BOX_POINTS, DEGREE, regular_patch
-from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice, lattice
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, Lattice, lattice
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_bits, check_depth, check_valence
 from symdecomp.verify.bezier import (
@@ -244,9 +243,9 @@ class _Patches:
 
 
 _PATCHES = {
-    QUAD: _Patches(_quad_nets, lambda nets, depth: certify_sign([jacobian_net(x, y) for x, y in nets], depth), _quad_boundary_angle),
+    BICUBIC: _Patches(_quad_nets, lambda nets, depth: certify_sign([jacobian_net(x, y) for x, y in nets], depth), _quad_boundary_angle),
     # a bisection halves a piece, a tensor split quarters it: twice the depth
-    TRIANGLE: _Patches(
+    BOX_SPLINE: _Patches(
         _triangle_nets,
         lambda nets, depth: certify_sign_triangles([triangle_jacobian_net(x, y) for x, y in nets], DEGREE, 2 * depth),
         _triangle_boundary_angle,
@@ -255,9 +254,7 @@ _PATCHES = {
 
 
 def _patches(lat: Lattice) -> _Patches:
-    if lat not in _PATCHES:  # pragma: no cover - every lattice so far has its patches
-        raise InvalidSchemeError(f"the C1 test has no sub-patches for {lat} meshes")
-    return _PATCHES[lat]
+    return lat.select(_PATCHES, "the C1 test's sub-patches")
 
 
 def bezier_nets(vec) -> list:

@@ -87,7 +87,7 @@ from symdecomp.algebra.triangle_bezier import bezier_indices
 from symdecomp.analysis.characteristic import SUBPATCH_FACES, TRIANGLES, triangle_patch_points
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.box_spline import DEGREE
-from symdecomp.schemes.lattice import QUAD
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, modified_edges, sector_net
@@ -253,7 +253,7 @@ def _nets(sm, chi) -> list:
     """The Bezier nets (complex) of the ring's ``3 k`` sub-patches, face by face (quads ``4 x 4``; triangles, 15)."""
     out = []
     for s in range(sm.k):
-        if sm.lattice is QUAD:
+        if sm.lattice.handled("the sharp ring's nets", BICUBIC, BOX_SPLINE) == BICUBIC:
             for a, b in SUBPATCH_FACES:
                 pts = [(a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
                 vals = sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__)
@@ -268,7 +268,7 @@ def _nets(sm, chi) -> list:
 
 
 def _sign(sm, nets, max_depth: int):
-    if sm.lattice is QUAD:
+    if sm.lattice.handled("the sharp ring's Jacobian", BICUBIC, BOX_SPLINE) == BICUBIC:
         return certify_sign([jacobian_net([[z.real for z in row] for row in net], [[z.imag for z in row] for row in net])
                              for net in nets], max_depth)
     return certify_sign_triangles([triangle_jacobian_net([z.real for z in net], [z.imag for z in net]) for net in nets],
@@ -280,7 +280,7 @@ def _sweeps(sm, nets, wide: bool = False):
     inner, outer = wide_arcs(sm, nets) if wide else ([], [])
     for s in range(0 if wide else sm.k):
         p0, p1, p2 = nets[3 * s: 3 * s + 3]
-        if sm.lattice is QUAD:
+        if sm.lattice.handled("the sharp ring's arcs", BICUBIC, BOX_SPLINE) == BICUBIC:
             inner += [[p0[0][j] for j in range(4)], [p2[i][0] for i in range(3, -1, -1)]]
             outer += [[p0[3][j] for j in range(4)], [p1[3][j] for j in range(4)], [p1[i][3] for i in range(3, -1, -1)],
                       [p2[i][3] for i in range(3, -1, -1)]]

@@ -31,7 +31,7 @@ import sympy as sp
 from symdecomp.algebra.triangle_bezier import bezier_indices
 from symdecomp.analysis.characteristic import triangle_patch_points
 from symdecomp.schemes.box_spline import DEGREE
-from symdecomp.schemes.lattice import QUAD
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.sector_patch import ORIGIN, sector_net, sector_point
 from symdecomp.verify.bezier import bspline_to_bezier
 from symdecomp.verify.c1 import box_nets
@@ -41,7 +41,7 @@ __all__ = ["ring_faces", "irregular_rows", "wide_nets", "wide_arcs"]
 
 def ring_faces(lat) -> tuple:
     """The level-1 patches of the wide ring in a face's chart: quads ``(a, b)`` (lower-left corner), triangles their corners."""
-    if lat is QUAD:
+    if lat.handled("the wide ring's patches", BICUBIC, BOX_SPLINE) == BICUBIC:
         return tuple((a, b) for a in range(4) for b in range(4) if max(a, b) >= 2)
     up = tuple(((u, d - u), (u + 1, d - u), (u, d - u + 1)) for d in (2, 3) for u in range(d + 1))
     down = tuple(((u + 1, d - u), (u + 1, d - u + 1), (u, d - u + 1)) for d in (1, 2) for u in range(d + 1))
@@ -50,7 +50,7 @@ def ring_faces(lat) -> tuple:
 
 def _distance(lat, label) -> int:
     s, u, v = label
-    return max(u, v) if lat is QUAD else u + v
+    return lat.ring_of(u, v)
 
 
 def _weights(x: int) -> dict:
@@ -76,7 +76,7 @@ def _stencil(lat, X: int, Y: int) -> dict:
 
     Quads: the tensor cubic B-spline's; triangles: Loop's regular rules (``5/8, 1/16 x 6``; ``3/8, 3/8, 1/8, 1/8``).
     """
-    if lat is QUAD:
+    if lat.handled('the regular refinement stencil', BICUBIC, BOX_SPLINE) == BICUBIC:
         return {(x, y): wx * wy for x, wx in _weights(X).items() for y, wy in _weights(Y).items()}
     if X % 2 == 0 and Y % 2 == 0:
         p = (X // 2, Y // 2)
@@ -135,7 +135,7 @@ def wide_nets(sm, chi: dict, lambdas) -> list:
 
     out, faces = [], ring_faces(sm.lattice)
     for s in range(sm.k):
-        if sm.lattice is not QUAD:
+        if sm.lattice.handled("the wide ring's nets", BICUBIC, BOX_SPLINE) == BOX_SPLINE:
             values = []
             for t in faces:
                 pts = triangle_patch_points(t)
@@ -156,7 +156,8 @@ def wide_arcs(sm, nets) -> tuple[list, list]:
     inner, outer = [], []
     for s in range(sm.k):
         net = dict(zip(faces, nets[per * s: per * (s + 1)]))
-        if sm.lattice is not QUAD:  # inner: the down triangles' edges corner 0 -> 2; outer: the up ones' corner 1 -> 2
+        # triangles: inner, the down triangles' edges corner 0 -> 2; outer, the up ones' corner 1 -> 2
+        if sm.lattice.handled("the wide ring's arcs", BICUBIC, BOX_SPLINE) == BOX_SPLINE:
             pos = {i: n for n, i in enumerate(bezier_indices(DEGREE))}
             inner += [[net[((u + 1, 1 - u), (u + 1, 2 - u), (u, 2 - u))][pos[(DEGREE - t, 0, t)]] for t in range(DEGREE + 1)]
                       for u in (1, 0)]

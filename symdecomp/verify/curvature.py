@@ -31,9 +31,8 @@ import flint
 
 from symdecomp.algebra.bernstein import net_scale, net_sum, tensor_derivative, tensor_product, triangle_product
 from symdecomp.algebra.triangle_bezier import bezier_derivative
-from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.box_spline import DEGREE
-from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, Lattice
 from symdecomp.verify.bezier import SignCertificate, certify_sign, certify_sign_triangles
 
 __all__ = ["PatchAlgebra", "patch_algebra", "jacobian_nets", "second_forms", "curvature_gram", "combine", "certify_nets"]
@@ -63,12 +62,12 @@ def _tensor_lower(degree, direction):
 
 
 _ALGEBRAS = {
-    QUAD: PatchAlgebra(
+    BICUBIC: PatchAlgebra(
         (3, 3), tensor_derivative, _tensor_lower, tensor_product, lambda a, b: (a[0] + b[0], a[1] + b[1]),
         lambda nets, degree, depth: certify_sign(nets, depth),
     ),
     # a bisection halves a piece, a tensor split quarters it: twice the depth, as the C1 test does
-    TRIANGLE: PatchAlgebra(
+    BOX_SPLINE: PatchAlgebra(
         DEGREE, bezier_derivative, lambda degree, direction: degree - 1, triangle_product, lambda a, b: a + b,
         lambda nets, degree, depth: certify_sign_triangles(nets, degree, 2 * depth),
     ),
@@ -77,9 +76,7 @@ _ALGEBRAS = {
 
 def patch_algebra(lat: Lattice) -> PatchAlgebra:
     """The :class:`PatchAlgebra` of a lattice's ring patches."""
-    if lat not in _ALGEBRAS:  # pragma: no cover - every lattice so far has its patches
-        raise InvalidSchemeError(f"no Bernstein arithmetic for the ring patches of {lat} meshes")
-    return _ALGEBRAS[lat]
+    return lat.select(_ALGEBRAS, "Bernstein arithmetic for the ring patches")
 
 
 def _difference(alg: PatchAlgebra, a, b, c, d, da, db):

@@ -79,9 +79,10 @@ def _levels(mesh: PolygonMesh) -> int:
 
 def osd_mesh_frames(mesh: PolygonMesh, scheme: Scheme, levels: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """OpenSubdiv's limit positions and first derivatives of every vertex of ``mesh`` (tags included), ``(V, 3)`` each."""
+    from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
     from symdecomp.verify.opensubdiv.sharp import OsdOptions, _entry, _tags
 
-    options = OsdOptions("catmull-clark" if scheme.lattice.face_neighbours else "loop",
+    options = OsdOptions(scheme.lattice.select({BICUBIC: "catmull-clark", BOX_SPLINE: "loop"}, "OpenSubdiv's scheme"),
                          mesh.tags.interpolate_boundary)
     fn = _entry("symdecomp_osd_tagged_limit_frames")
     ip, dp, fp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_float)

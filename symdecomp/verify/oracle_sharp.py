@@ -39,7 +39,7 @@ import numpy as np
 import sympy as sp
 
 from symdecomp.errors import InvalidInputError
-from symdecomp.schemes.lattice import QUAD, TRIANGLE
+from symdecomp.schemes.lattice import lattice_of_reference
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.verify.opensubdiv.sharp import OsdFan, OsdOptions, tagged_fan
@@ -81,7 +81,7 @@ class SharpCase:
         """The toolkit's neighbourhood object (a :class:`~symdecomp.schemes.sector.SharpVertex`)."""
         from symdecomp.schemes.sector import SharpVertex
 
-        lattice = QUAD if self.quad else TRIANGLE
+        lattice = lattice_of_reference(self.scheme)
         if self.kind == "boundary":
             return SharpVertex.boundary(self.k, lattice)
         if self.kind == "corner":

@@ -16,7 +16,7 @@ import mpmath
 from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.algebra.numbers import to_fraction, to_mpf
 from symdecomp.analysis.masks import limit_masks_at
-from symdecomp.schemes.lattice import QUAD, TRIANGLE
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.mesh import QuadMesh, TriangleMesh, triangle_ring_labels, triangle_ring_mesh
 from symdecomp.schemes.patch import centre_weights, patch_mesh, position_mask, triangle_patch_rows
 from symdecomp.schemes.refinement import refine, refine_triangles, triangle_mesh_rules
@@ -117,7 +117,7 @@ def _refined_triangle_patch(scheme: Scheme, n: int, level: int, values):
 
 
 #: ``(mesh, control point ids, refined mesh, {lattice point: id})`` of the patch's ring mesh refined ``level`` times.
-_REFINED_PATCH = {QUAD: _refined_quad_patch, TRIANGLE: _refined_triangle_patch}
+_REFINED_PATCH = {BICUBIC: _refined_quad_patch, BOX_SPLINE: _refined_triangle_patch}
 
 
 def exact_to_mpf(x):
@@ -168,7 +168,7 @@ def opensubdiv_dyadic_errors(scheme: Scheme, n: int, level: int, evaluator, seed
 
     rnd = random.Random(seed)
     values = lambda s, u, v: tuple(Fraction(rnd.randint(-2**20, 2**20), 2**20) for _ in range(3))  # noqa: E731
-    mesh, columns, refined, ids = _REFINED_PATCH[scheme.lattice](scheme, n, level, values)
+    mesh, columns, refined, ids = scheme.lattice.select(_REFINED_PATCH, "the refined patch")(scheme, n, level, values)
     points, limits = osd_limit_points(mesh, level)
     keys = sorted(ids)
     with mpmath.workdps(30):

@@ -24,7 +24,7 @@ from fractions import Fraction
 from symdecomp.algebra.numbers import to_fraction
 from symdecomp.analysis.sharp_evaluation import evaluate, limit_mask, sharp_patch_data
 from symdecomp.errors import InvalidInputError
-from symdecomp.schemes.lattice import QUAD, Lattice
+from symdecomp.schemes.lattice import Lattice
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import SharpVertex, exact_sharp_matrix
 from symdecomp.schemes.sector_patch import sector_point
@@ -46,29 +46,23 @@ def _mask(scheme: Scheme, vertex: SharpVertex) -> tuple[Fraction, ...]:
 
 def _one_ring(lat: Lattice, p: int, q: int, where: str) -> list[tuple[int, int]]:
     """The 1-ring of ``(p, q)`` in SharpVertex order (``O``, edge neighbours, face neighbours) in face coordinates."""
-    if where == "ray0":
-        a = [(p + 1, 0), (p, 1), (p - 1, 0)] if lat is QUAD else [(p + 1, 0), (p, 1), (p - 1, 1), (p - 1, 0)]
-        b = [(p + 1, 1), (p - 1, 1)]
-    elif where == "rayk":
-        a = [(0, q + 1), (1, q), (0, q - 1)] if lat is QUAD else [(0, q + 1), (1, q), (1, q - 1), (0, q - 1)]
-        b = [(1, q + 1), (1, q - 1)]
-    elif lat is QUAD:
-        a = [(p + 1, q), (p, q + 1), (p - 1, q), (p, q - 1)]
-        b = [(p + 1, q + 1), (p - 1, q + 1), (p - 1, q - 1), (p + 1, q - 1)]
-    else:
-        a = [(p + 1, q), (p, q + 1), (p - 1, q + 1), (p - 1, q), (p, q - 1), (p + 1, q - 1)]
-    return [(p, q)] + a + (b if lat is QUAD else [])
+    out = [(p, q)]
+    for offsets in lat.neighbour_offsets:  # edge neighbours, then face neighbours, counter-clockwise from (1, 0)
+        if where != "inside":  # on ray 0 the half-plane v >= 0; on ray k its mirror u >= 0, clockwise from (0, 1)
+            offsets = [(du, dv) if where == "ray0" else (dv, du) for du, dv in offsets if dv >= 0]
+        out += [(p + du, q + dv) for du, dv in offsets]
+    return out
 
 
 def regular_limit(scheme: Scheme, vertex: SharpVertex, face: int, p: int, q: int, value) -> list:
     """The limit position at the regular lattice point ``(p, q) != (0, 0)`` of ``face``; ``value(label)`` of the net."""
     lat, k = vertex.lattice, vertex.faces
     if face == 0 and q == 0:
-        where, fan = "ray0", SharpVertex.boundary(2 if lat is QUAD else 3, lat)
+        where, fan = "ray0", SharpVertex.boundary(lat.regular_boundary_faces, lat)
     elif face == k - 1 and p == 0:
-        where, fan = "rayk", SharpVertex.boundary(2 if lat is QUAD else 3, lat)
+        where, fan = "rayk", SharpVertex.boundary(lat.regular_boundary_faces, lat)
     else:
-        where, fan = "inside", SharpVertex.dart(4 if lat is QUAD else 6, lat, sharpness=0)
+        where, fan = "inside", SharpVertex.dart(lat.regular_valence, lat, sharpness=0)
     mask = _mask(scheme, fan)
     total = None
     for w, (x, y) in zip(mask, _one_ring(lat, p, q, where)):

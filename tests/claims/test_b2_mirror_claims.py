@@ -8,6 +8,7 @@ from symdecomp.claims import Scope, Status, all_claims, check_claim
 from symdecomp.claims import b2_mirror as b2
 from symdecomp.output.latex import SECTION_TITLES, aslatex, section_file_name
 from symdecomp.schemes.files import scheme_from_text
+from symdecomp.schemes.lattice import BOX_SPLINE
 
 Q = sp.Rational
 LABELS = ["Sector: sine decomposition", "Sector: crease block", "Sector: standard rules' subdominant eigenvalue",
@@ -51,7 +52,7 @@ def test_the_modified_rule_is_proved_and_another_weight_refuted_with_the_number(
     r = b2.check_blz(cc, wrong)
     assert r.status is Status.REFUTED and "k = 2" in str(r.counterexample)
     assert "g = -1/32" in str(r.counterexample)  # det(M - 1/2) at c = cos(pi/2) = 0: (1/2 - 1/2)(-1/4) - (1/2)/16
-    loop_weights_on_quads = b2.BLZ_RULE["triangle"]  # Loop's gamma does not work for Catmull-Clark
+    loop_weights_on_quads = b2.BLZ_RULE[BOX_SPLINE]  # Loop's gamma does not work for Catmull-Clark
     assert b2.check_blz(cc, loop_weights_on_quads).status is Status.REFUTED
 
 

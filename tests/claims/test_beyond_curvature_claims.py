@@ -6,6 +6,7 @@ from symdecomp import catmull_clark, loop, loop_warren, symbols
 from symdecomp.claims import Scope, Status, all_claims, check_claim, section_key
 from symdecomp.claims import b1_curvature as b1
 from symdecomp.output.latex import section_file_name
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 
 LABELS = ["Curvature regime: Catmull-Clark", "Curvature regime: Loop", "Loop's vertex weight", "Curvature at the regular valence",
           "Shape: the valence decides"]
@@ -68,7 +69,7 @@ def test_the_shape_claim_flips_with_the_vertex_rule_and_with_the_statement():
     n, a, b = symbols.n, sp.Rational(3, 2) / symbols.n**2, sp.Rational(1, 4) / symbols.n**2
     # at n = 5 the weights 1/20, 1/100 (Catmull-Clark's at n = 4): the elliptic eigenvalue rises above the hyperbolic one
     lifted = catmull_clark(a + (sp.Rational(1, 20) - a.subs(n, 5)) * (n - 4), b + (sp.Rational(1, 100) - b.subs(n, 5)) * (n - 4))
-    r = b1.check_dominance(lifted, b1.DOMINANCE["quad"], (3, 6))
+    r = b1.check_dominance(lifted, b1.DOMINANCE[BICUBIC], (3, 6))
     assert r.status is Status.REFUTED and "n = 5" in str(r.counterexample) and "computed: the elliptic part" in str(r.counterexample)
-    assert b1.check_dominance(loop(), b1.DOMINANCE["quad"], (3, 8)).status is Status.REFUTED  # Loop's n = 5, 6 are not hyperbolic
-    assert b1.check_dominance(loop(), b1.DOMINANCE["triangle"], (3, 8)).status is Status.VERIFIED
+    assert b1.check_dominance(loop(), b1.DOMINANCE[BICUBIC], (3, 8)).status is Status.REFUTED  # Loop's n = 5, 6 are not hyperbolic
+    assert b1.check_dominance(loop(), b1.DOMINANCE[BOX_SPLINE], (3, 8)).status is Status.VERIFIED

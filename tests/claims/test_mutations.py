@@ -27,6 +27,7 @@ from symdecomp.analysis.mirror import THETA_K
 from symdecomp.claims import Status, all_claims, check_claim, get_claim
 from symdecomp.errors import InvalidSchemeError, NotAffineError
 from symdecomp.schemes.files import scheme_from_text, scheme_to_text
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import Scheme, Stencil, catmull_clark
 from symdecomp.symbols import alpha, beta, n
 from tests.claims.test_claim_statuses import EXPECTED
@@ -302,21 +303,21 @@ TABLE = [
     ("Loop's vertex weight", "loop warren file", R),  # exact: 1/4 - 9/64 at n = 4
     ("Curvature at the regular valence", printed("b1_curvature", "REGULAR_MULTIPLICITY", 2), R),
     ("Shape: the valence decides", "elliptic above hyperbolic at 5", R),
-    ("Shape: the valence decides", printed("b1_curvature", "DOMINANCE", {"quad": ((3, None, None),), "triangle": ((3, None, None),)}), R),
+    ("Shape: the valence decides", printed("b1_curvature", "DOMINANCE", {BICUBIC: ((3, None, None),), BOX_SPLINE: ((3, None, None),)}), R),
     # beyond the paper: boundary and crease vertices (issue 20)
     ("Sector: sine decomposition", "asymmetric", NA),  # the edge rule's weights on a_(i+1), a_(i-1) differ: no mirror
     ("Sector: sine decomposition", "loop file", P),
     ("Sector: crease block", printed("b2_mirror", "CREASE_EIGENVALUES", (1, Q(1, 2), Q(1, 8))), R),
     ("Sector: standard rules' subdominant eigenvalue", "midpoint edges", R),  # M(pi/k) has 1/2 for every k: never above
     ("Sector: standard rules' subdominant eigenvalue", "loop file", P),  # from k = 4
-    ("Sector: standard rules' subdominant eigenvalue", printed("b2_mirror", "FIRST_K", {"quad": 4, "triangle": 4}), R),
+    ("Sector: standard rules' subdominant eigenvalue", printed("b2_mirror", "FIRST_K", {BICUBIC: 4, BOX_SPLINE: 4}), R),
     ("Sector: modified rules (BLZ 2000)", "midpoint edges", R),  # the modified weights are Catmull-Clark's ends
     ("Sector: modified rules (BLZ 2000)", "loop file", P),
-    ("Sector: modified rules (BLZ 2000)", printed("b2_mirror", "BLZ_RULE", {"quad": (Q(1, 4) + sp.cos(THETA_K) / 2,
+    ("Sector: modified rules (BLZ 2000)", printed("b2_mirror", "BLZ_RULE", {BICUBIC: (Q(1, 4) + sp.cos(THETA_K) / 2,
                                                                                    Q(1, 2) - sp.cos(THETA_K) / 2)}), R),
     ("Sector: the blocks are the spectrum", "asymmetric", NA),
     ("Sector: the boundary tangent's continuation", "moved", R),  # the edge weight on a_i moved: det(M(pi/2) - 1/2) = -1/256
-    ("Sector: the boundary tangent's continuation", printed("b2_mirror", "TANGENT_FREQUENCY", {"quad": sp.pi / 3}), R),
+    ("Sector: the boundary tangent's continuation", printed("b2_mirror", "TANGENT_FREQUENCY", {BICUBIC: sp.pi / 3}), R),
 ]
 
 def _status(label, change, monkeypatch):

@@ -20,7 +20,7 @@ import numpy as np
 
 from symdecomp.algebra.triangle_bezier import bezier_value
 from symdecomp.output.plotting._mpl import new_figure
-from symdecomp.schemes.lattice import QUAD, TRIANGLE
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import check_valence
 from symdecomp.verify.c1 import c1_test, characteristic_nets
@@ -70,7 +70,7 @@ def ring_curves(scheme: Scheme, n: int, *, samples: int = 9) -> dict:
     rotation = np.exp(2j * np.pi * vec.j / n)
     t = np.linspace(0.0, 1.0, 4 * samples + 1)
     grid = np.linspace(0.0, 1.0, samples)
-    return _CURVES[scheme.lattice](nets, rotation, n, t, grid)
+    return scheme.lattice.select(_CURVES, "the characteristic map's curves")(nets, rotation, n, t, grid)
 
 
 def _quad_curves(nets, rotation: complex, n: int, t: np.ndarray, grid: np.ndarray) -> dict:
@@ -90,7 +90,7 @@ def _quad_curves(nets, rotation: complex, n: int, t: np.ndarray, grid: np.ndarra
 
 
 #: The ring's curves from the sub-patch nets of :func:`~symdecomp.verify.c1.characteristic_nets`, per lattice.
-_CURVES = {QUAD: _quad_curves, TRIANGLE: _triangle_curves}
+_CURVES = {BICUBIC: _quad_curves, BOX_SPLINE: _triangle_curves}
 
 
 def characteristic_map_figure(scheme: Scheme, valences=(3, 5, 16), *, samples: int = 7):

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from symdecomp.errors import BridgeUnavailableError, InternalError, InvalidInputError, SymdecompError
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, lattice_of
 from symdecomp.schemes.mesh import QuadMesh
 from symdecomp.verify.opensubdiv import build as _build
 
@@ -180,6 +181,10 @@ def _refine(lib, mesh: QuadMesh, center: int, levels: int, start: int | None) ->
     return OsdRings(out, limit)
 
 
+#: The bridge's limit-point program for each kind of regular patch (OpenSubdiv's Catmark and Loop schemes).
+_LIMIT_POINTS = {BICUBIC: "symdecomp_osd_limit_points", BOX_SPLINE: "symdecomp_osd_loop_limit_points"}
+
+
 def osd_limit_points(mesh, levels: int) -> tuple[np.ndarray, np.ndarray]:
     """``(points, limits)``: every vertex of ``mesh`` refined ``levels`` times in OpenSubdiv, and its limit position.
 
@@ -188,7 +193,7 @@ def osd_limit_points(mesh, levels: int) -> tuple[np.ndarray, np.ndarray]:
     in OpenSubdiv's vertex order of the last level (match the points to find a vertex).
     Boundary vertices use OpenSubdiv's edge-only boundary rules.
     """
-    name = "symdecomp_osd_limit_points" if isinstance(mesh, QuadMesh) else "symdecomp_osd_loop_limit_points"
+    name = lattice_of(mesh).select(_LIMIT_POINTS, "an OpenSubdiv limit-point program")
     lib = load_bridge()
     if isinstance(levels, bool) or not isinstance(levels, int) or levels < 0:
         raise InvalidInputError(f"levels must be a non-negative integer, got {levels!r}")

@@ -400,7 +400,7 @@ def lattice(name: str | Lattice) -> Lattice:
 
 def lattice_of(mesh) -> Lattice:
     """The lattice whose local meshes (:meth:`Lattice.mesh`) ``mesh`` is one of; :class:`LatticeFactMissing` if none."""
-    found = [x for x in LATTICES.values() if isinstance(mesh, x.mesh)]
+    found = [x for x in LATTICES.values() if isinstance(mesh, x.mesh)]  # type: ignore[arg-type]  # x.mesh is the mesh class
     if not found:
         raise LatticeFactMissing(type(mesh).__name__, "mesh", " (no lattice has meshes of this type)")
     return found[0]

@@ -49,7 +49,7 @@ def _one_ring(lat: Lattice, p: int, q: int, where: str) -> list[tuple[int, int]]
     out = [(p, q)]
     for offsets in lat.neighbour_offsets:  # edge neighbours, then face neighbours, counter-clockwise from (1, 0)
         if where != "inside":  # on ray 0 the half-plane v >= 0; on ray k its mirror u >= 0, clockwise from (0, 1)
-            offsets = [(du, dv) if where == "ray0" else (dv, du) for du, dv in offsets if dv >= 0]
+            offsets = tuple((du, dv) if where == "ray0" else (dv, du) for du, dv in offsets if dv >= 0)
         out += [(p + du, q + dv) for du, dv in offsets]
     return out
 

@@ -66,6 +66,8 @@ __all__ = [
     "FLOAT_DIGITS",
     "DEFAULT_BUDGET",
     "MAX_REPORT_VALENCE",
+    "API_LIMITS",
+    "check_limit",
 ]
 
 #: Most significant digits printed (a value is evaluated at a little more than this).
@@ -95,6 +97,32 @@ DEFAULT_BUDGET = 60.0
 #: The largest valence of a report (:mod:`symdecomp.output.report`, ``symdecomp report --n``): its tables grow
 #: with every valence (2n + 1 eigenvalues, masks of 2n + 1 weights) and the eigen-polygon figure has n panels a row.
 MAX_REPORT_VALENCE = 16
+
+#: Upper bounds of the API's entry points and why: ``name: (bound, reason)``. Each is enforced by its entry point
+#: (:func:`check_limit`), shared by the command that calls it, and listed with the command line's bounds in
+#: :data:`symdecomp.cli.common.LIMITS` (the one table the docs render).
+API_LIMITS = {
+    "artifact_indicators(n)": (4096, "a valence costs time ~ n (the C1 test's spectrum at n/2 + 1 frequencies plus one "
+                               "exact left eigenvector in Q(zeta_2n)): n = 1024 takes about 0.4 s, n = 4096 3 to 8 s"),
+    "second_order_eigenstructure(n)": (4096, "the 2-ring matrix's spectrum at n/2 + 1 frequencies, certified in Arb: "
+                                       "time ~ n, n = 4096 takes about 2 s"),
+    "jordan_block_size(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): exact ranks in Q(cos(2 pi/n)), whose degree "
+                             "grows like n"),
+    "jordan_vertex_weights(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): an exact solve in Q(cos(2 pi/n)), whose "
+                                 "degree grows like n"),
+}
+
+
+def check_limit(value, name: str, argument: str, *, minimum: int = 3, error: type = InvalidValenceError) -> int:
+    """``value`` as an ``int`` within ``minimum`` and the bound :data:`API_LIMITS` gives ``name`` (with its reason).
+
+    >>> check_limit(10**6, "artifact_indicators(n)", "valence n")
+    Traceback (most recent call last):
+    ...
+    symdecomp.errors.InvalidValenceError: valence n must be an integer with 3 <= n <= 4096, got 1000000 (a valence costs time ~ n (the C1 test's spectrum at n/2 + 1 frequencies plus one exact left eigenvector in Q(zeta_2n)): n = 1024 takes about 0.4 s, n = 4096 3 to 8 s)
+    """
+    bound, reason = API_LIMITS[name]
+    return check_int(value, argument, minimum=minimum, maximum=bound, error=error, reason=reason)
 
 
 def _kind(value) -> str:

@@ -218,7 +218,11 @@ def _parameters(scheme: Scheme) -> tuple[sp.Symbol, ...]:
 
 def _affine_check(expr: sp.Expr, params, scheme: Scheme) -> sp.Expr:
     expr = sp.expand(expr)
-    if not sp.Poly(expr, *params).total_degree() <= 1:
+    try:
+        degree = sp.Poly(expr, *params).total_degree()
+    except sp.PolynomialError:  # 1/alpha, alpha**(1/2): not a polynomial in the parameters at all
+        degree = None
+    if degree is None or degree > 1:
         raise NotApplicableError(f"scheme {scheme.name!r}: the vertex weights are not affine in {', '.join(map(str, params))} "
                                  f"(frequency 0 has {sp.sstr(expr)}); the region is computed for affine weights")
     return expr

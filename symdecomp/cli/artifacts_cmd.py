@@ -9,7 +9,18 @@ from __future__ import annotations
 
 import sys
 
-from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, print_json, progress, valence_range
+from symdecomp.cli.common import (
+    ARTIFACTS_COST,
+    LIMITS,
+    Once,
+    add_pool_options,
+    add_scheme_option,
+    estimate_seconds,
+    flag,
+    print_json,
+    progress,
+    valence_range,
+)
 from symdecomp.parallel import ordered_map
 from symdecomp.schemes.scheme import Scheme
 
@@ -61,6 +72,7 @@ def run(args) -> int:
     from symdecomp.output.artifact_table import table
 
     valences = args.valences
+    estimate_seconds(ARTIFACTS_COST * sum(valences), "artifacts --n A:B", f"--n {valences[0]}:{valences[-1]}")
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme}, jobs=args.jobs, executor=args.executor, warm_up=True)
     results = list(progress(rows, len(valences), "artifacts", enabled=sys.stderr.isatty()))
     if args.json:

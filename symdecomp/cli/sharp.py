@@ -26,7 +26,8 @@ import math
 from symdecomp.cli.common import SHARP_OPTIONS, Once, flag, given, integer, positive_int, print_json
 from symdecomp.errors import InvalidInputError
 
-__all__ = ["sharpness", "add_sharp_options", "check_sharp_options", "sharp_vertex", "check_rules_at", "faces_or_valence", "sector_range", "refuse_sharp_options", "describe",
+__all__ = ["sharpness", "add_sharp_options", "check_sharp_options", "sharp_vertex", "check_rules_at", "faces_or_valence",
+           "sector_range", "refuse_sharp_options", "describe",
            "run_sharp_masks", "exact_only"]
 
 #: Most faces around a sharp vertex on the command line (the matrices are dense and exact).

@@ -106,6 +106,9 @@ API_LIMITS = {
                                "exact left eigenvector in Q(zeta_2n)): n = 1024 takes about 0.4 s, n = 4096 3 to 8 s"),
     "second_order_eigenstructure(n)": (4096, "the 2-ring matrix's spectrum at n/2 + 1 frequencies, certified in Arb: "
                                        "time ~ n, n = 4096 takes about 2 s"),
+    "tune --region, interval_region, placed_points: phi(n)": (4, "the region's exact signs are decided in Q(cos(2 pi/n), lambda_1), of degree up to "
+                                 "2 phi(n) (Euler's phi): at phi(n) <= 4 (n = 3, 4, 5, 6, 8, 10, 12) a region takes 2 to 45 s, "
+                                 "at phi(7) = 6 two to over five minutes, and every step of phi doubles the degree"),
     "jordan_block_size(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): exact ranks in Q(cos(2 pi/n)), whose degree "
                              "grows like n"),
     "jordan_vertex_weights(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): an exact solve in Q(cos(2 pi/n)), whose "

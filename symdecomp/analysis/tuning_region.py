@@ -62,14 +62,27 @@ from symdecomp.analysis.characteristic import outer_charpoly
 from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regime
 from symdecomp.analysis.frequency import laurent_to_cos, one_ring_matrices
 from symdecomp.analysis.tuning import unit_quotient
-from symdecomp.errors import InvalidInputError, NotApplicableError
+from symdecomp.errors import InvalidInputError, InvalidValenceError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, VertexRule, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.validate import cached, check_type, check_valence
+from symdecomp.validate import API_LIMITS, cached, check_type, check_valence
 
-__all__ = ["Form", "TuningRegion", "tuning_region", "interval_region"]
+__all__ = ["Form", "TuningRegion", "tuning_region", "interval_region", "check_region_valence"]
+
+
+def check_region_valence(n) -> int:
+    """``n`` if the exact signs of its region are within reach (:data:`~symdecomp.validate.API_LIMITS`: Euler's ``phi(n)``,
+    the degree of ``Q(cos(2 pi/n))`` doubled, bounds their cost), refused before any work otherwise: the intervals
+    (:func:`interval_region`), the placed points (:func:`placed_points`) and ``tune --region`` check it first; the forms
+    themselves (:func:`tuning_region`) are cheap at every ``n``."""
+    n = check_valence(n)
+    bound, why = API_LIMITS["tune --region, interval_region, placed_points: phi(n)"]
+    if sp.totient(n) > bound:
+        raise InvalidValenceError(f"valence n = {n}: phi(n) = {sp.totient(n)} > {bound}, so the exact region is out of reach "
+                                  f"({why})")
+    return n
 
 
 @dataclass(frozen=True)
@@ -413,6 +426,7 @@ def interval_region(region: TuningRegion) -> list[Interval]:
     check_type(region, TuningRegion, "region", hint="tuning_region(scheme, n)")
     if len(region.parameters) != 1:
         raise NotApplicableError(f"the region of {region.scheme!r} has {len(region.parameters)} parameters; intervals need one")
+    check_region_valence(region.n)
     roots = _sorted_roots(region)
     pieces = []  # (regime, lo, hi): a point when lo is hi
     bounds = [None] + roots + [None]
@@ -460,7 +474,7 @@ def placed_points(scheme: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, ...]
     from symdecomp.schemes.loop import loop, loop_warren
 
     params = _parameters(check_scheme(scheme))
-    n = scheme.fitting_valence(check_valence(n), real=True)
+    n = scheme.fitting_valence(check_region_valence(n), real=True)
     ref = scheme.lattice.reference()
     weights = []
     if scheme.lattice.face_neighbours:

@@ -135,7 +135,7 @@ def _ball(e, digits: int) -> str:
 
 def run_region(args) -> int:
     """``tune N --region [--plot FILE]``: the region of free vertex weights at valence N (module docstring)."""
-    from symdecomp.analysis.tuning_region import interval_region, placed_points
+    from symdecomp.analysis.tuning_region import check_region_valence, interval_region, placed_points
     from symdecomp.verify.tuning_c1 import certified_tuning_region
 
     if not args.region:
@@ -148,6 +148,7 @@ def run_region(args) -> int:
         if fmt not in ("png", "pdf"):
             raise InvalidInputError(f"--plot {args.plot}: the file name must end in .png or .pdf")
         plot = check_output_file(args.plot, "--plot")
+    check_region_valence(args.n)  # refused before any work: the exact signs' cost grows with phi(N)
     region = certified_tuning_region(args.scheme, args.n)
     points = placed_points(args.scheme, args.n)
     data = _region_data(region, points, interval_region(region) if len(region.parameters) == 1 else None, args.digits)

@@ -23,15 +23,15 @@ from __future__ import annotations
 import argparse
 import math
 
-from symdecomp.cli.common import SHARP_OPTIONS, Once, flag, given, integer, positive_int, print_json
+from symdecomp.cli.common import LIMITS, SHARP_OPTIONS, Once, flag, given, integer, positive_int, print_json
 from symdecomp.errors import InvalidInputError
 
 __all__ = ["sharpness", "add_sharp_options", "check_sharp_options", "sharp_vertex", "check_rules_at", "faces_or_valence",
            "sector_range", "refuse_sharp_options", "describe",
            "run_sharp_masks", "exact_only"]
 
-#: Most faces around a sharp vertex on the command line (the matrices are dense and exact).
-MAX_FACES = 64
+#: Most faces around a sharp vertex on the command line (the matrices are dense and exact; a row of the limits table).
+MAX_FACES = LIMITS["--boundary, --corner, --crease, --dart: faces"][0]
 
 
 def sharpness(text: str):

@@ -161,7 +161,7 @@ _NAMES = ("crease_centre", "crease_end", "crease_edge", "near_edge_centre", "nea
 def _check_angle_use(weight, name: str) -> None:
     """``theta_k`` only as ``cos``/``sin`` of a rational multiple (their values at ``theta_k = pi/k`` are exact in
     ``Q(cos(pi/k))``); a bare ``theta_k``, or ``cos(sqrt(2)*theta_k)``, is not algebraic at the vertex."""
-    if weight is None or theta_k not in weight.free_symbols:
+    if weight is None or not (theta_k in weight.free_symbols or weight.has(sp.pi)):
         return
     for call in weight.atoms(sp.cos, sp.sin):
         ratio = sp.simplify(call.args[0] / theta_k)
@@ -170,6 +170,9 @@ def _check_angle_use(weight, name: str) -> None:
                                      "multiple of theta_k (such as cos(theta_k) or sin(2*theta_k)), so it is not exact at "
                                      "the vertex")
     rest = weight.xreplace({call: sp.Dummy() for call in weight.atoms(sp.cos, sp.sin)})
+    if rest.has(sp.pi):
+        raise InvalidSchemeError(f"sharp rules: {name} = {weight}: pi outside cos and sin is transcendental; the weights "
+                                 "must be exact algebraic numbers at the vertex (cos(pi/3), cos(theta_k))")
     if theta_k in rest.free_symbols:
         raise InvalidSchemeError(f"sharp rules: {name} = {weight}: theta_k outside cos and sin (theta_k = pi/k, so the "
                                  "weight would be transcendental); use cos(theta_k) or sin(theta_k)")

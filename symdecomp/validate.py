@@ -109,6 +109,13 @@ API_LIMITS = {
     "tune --region, interval_region, placed_points: phi(n)": (4, "the region's exact signs are decided in Q(cos(2 pi/n), lambda_1), of degree up to "
                                  "2 phi(n) (Euler's phi): at phi(n) <= 4 (n = 3, 4, 5, 6, 8, 10, 12) a region takes 2 to 45 s, "
                                  "at phi(7) = 6 two to over five minutes, and every step of phi doubles the degree"),
+    "c1_test(n)": (10000, "Reif's test costs time ~ n (n/2 + 1 frequency blocks, memory O(n)): n = 10000 takes about 4 s"),
+    "classify_shape(n)": (4096, "the central surface's Bezier nets at n/2 + 1 frequencies, certified: n = 4096 takes about 4 s"),
+    "closed_form_spectrum(n)": (2000, "one evaluation of the closed forms per frequency: n = 2000 takes about 2 s"),
+    "ring_spectrum(n)": (2000, "a K-ring's factored spectrum, one block per frequency: n = 2000 takes about 15 s"),
+    "ring_masks(n)": (1000, "2n + 1 weights a ring, each from a certified left eigenvector: n = 1000 takes about 3 s"),
+    "certify_ring(n)": (2000, "the K-ring certificate's factors, one per frequency, in Arb and exactly: n = 2000 takes "
+                        "about 10 s"),
     "jordan_block_size(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): exact ranks in Q(cos(2 pi/n)), whose degree "
                              "grows like n"),
     "jordan_vertex_weights(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): an exact solve in Q(cos(2 pi/n)), whose "

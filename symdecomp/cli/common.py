@@ -61,7 +61,7 @@ ARTIFACTS_COST, ARTIFACTS_SECONDS = 4e-4, 600
 LIMITS = {
     "digits": (MAX_DIGITS, "more digits than anyone reads; each one costs evaluation time"),
     "dps": (MAX_DPS, "an eigenvalue solve at this precision takes hours"),
-    "spectrum": (2000, "the time grows with N (one evaluation per frequency): N = 1000 takes about a second"),
+    "spectrum": (API_LIMITS["closed_form_spectrum(n)"][0], "the time grows with N (one evaluation per frequency): N = 1000 takes about a second"),
     "masks": (1000, "2N + 1 weights per mask, each a certified ball: N = 1000 takes about a second"),
     "charpoly": (300, "the exact characteristic polynomial of the (2N+1)x(2N+1) matrix grows like N^3"),
     "tune": (1000, "the exact solve grows with N: N = 300 takes about 10 s"),
@@ -75,7 +75,7 @@ LIMITS = {
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
     "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),
-    "c1": (10000, "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 10000 takes about "
+    "c1": (API_LIMITS["c1_test(n)"][0], "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 10000 takes about "
            "0.15 s, the range 3:10000 about 10 minutes of CPU (--executor dask spreads it over a cluster)"),
     "artifacts": API_LIMITS["artifact_indicators(n)"],
     "artifacts --n A:B": (ARTIFACTS_SECONDS, "estimated seconds of CPU for the range, from the cost of one valence (about "

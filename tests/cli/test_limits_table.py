@@ -9,7 +9,18 @@ import time
 
 import pytest
 
-from symdecomp import artifact_indicators, catmull_clark, jordan_block_size, second_order_eigenstructure
+from symdecomp import (
+    artifact_indicators,
+    c1_test,
+    catmull_clark,
+    certify_ring,
+    classify_shape,
+    closed_form_spectrum,
+    jordan_block_size,
+    ring_masks,
+    ring_spectrum,
+    second_order_eigenstructure,
+)
 from symdecomp.analysis.tuning_region import interval_region, placed_points, tuning_region
 from symdecomp.cli import main
 from symdecomp.cli.common import LIMITS
@@ -18,8 +29,8 @@ from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 
 
-def _over(key: str) -> str:
-    return str(LIMITS[key][0] + 1)
+def _over(key: str, kind=str):
+    return kind(LIMITS[key][0] + 1)
 
 
 #: A call one step past each bound: a command line (a list), or a function of the API.
@@ -53,6 +64,12 @@ CASES = {
     "artifact_indicators(n)": lambda: artifact_indicators(catmull_clark(), LIMITS["artifact_indicators(n)"][0] + 1),
     "second_order_eigenstructure(n)": lambda: second_order_eigenstructure(
         catmull_clark(), LIMITS["second_order_eigenstructure(n)"][0] + 1),
+    "c1_test(n)": lambda: c1_test(catmull_clark(), _over("c1_test(n)", int)),
+    "classify_shape(n)": lambda: classify_shape(catmull_clark(), _over("classify_shape(n)", int)),
+    "closed_form_spectrum(n)": lambda: closed_form_spectrum(catmull_clark(), _over("closed_form_spectrum(n)", int)),
+    "ring_spectrum(n)": lambda: ring_spectrum(catmull_clark(), _over("ring_spectrum(n)", int)),
+    "ring_masks(n)": lambda: ring_masks(catmull_clark(), _over("ring_masks(n)", int)),
+    "certify_ring(n)": lambda: certify_ring(catmull_clark(), _over("certify_ring(n)", int)),
     "jordan_block_size(n)": lambda: jordan_block_size(catmull_clark(), LIMITS["jordan_block_size(n)"][0] + 1, "1/4"),
     "jordan_vertex_weights(n)": lambda: __import__("symdecomp").jordan_vertex_weights(
         catmull_clark(ALPHA, BETA), LIMITS["jordan_vertex_weights(n)"][0] + 1, "1/4"),

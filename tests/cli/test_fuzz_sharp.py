@@ -150,3 +150,23 @@ def test_sharp_options_end_with_one_line_or_an_answer(argv, capsys):
 @given(argv=option_line(5))
 def test_sharp_options_wide(argv, capsys):
     run_bounded(argv, capsys, 120)
+
+
+@settings(max_examples=150, deadline=None, derandomize=True, suppress_health_check=list(HealthCheck))
+@given(near=weight, k=st.integers(1, 12))
+def test_sharp_rules_api_raise_only_the_package_errors(near, k):
+    """The API: rules built from any weight text are refused with the package's error or give exact finite weights at
+    every sector, never sympy's or FLINT's errors, never ``zoo`` or a free symbol."""
+    import sympy as sp
+
+    from symdecomp.errors import SymdecompError
+    from symdecomp.schemes.sharp import SharpRules
+
+    try:
+        rules = SharpRules("3/4", "1/8", "1/2", f"3/8 + ({near})", f"3/8 - ({near})")
+        values = rules.near_edge(sp.pi / k, k)
+    except SymdecompError:
+        return
+    for value in values:
+        assert value.is_finite is not False and not value.free_symbols, (near, k, value)
+        assert not value.has(sp.zoo, sp.nan), (near, k, value)

@@ -106,14 +106,12 @@ def check_sharp_options(args) -> None:
 
 
 def check_rules_at(scheme, vertex) -> None:
-    """Refuse, in one line naming the scheme, rules that cannot be evaluated at ``vertex``: free parameters (the sharp
-    routes are exact in numbers) or a ``[sharp]`` weight undefined at one of its sectors or at the regular boundary
-    next to it (:meth:`~symdecomp.schemes.sharp.SharpRules.check_at`)."""
+    """Refuse, in one line naming the scheme, ``[sharp]`` rules that cannot be evaluated at ``vertex``: a free parameter
+    in them (the sharp routes are exact in numbers; the smooth rules' parameters are refused where a matrix reads
+    them), or a weight undefined at one of its sectors or at the regular boundary next to it
+    (:meth:`~symdecomp.schemes.sharp.SharpRules.check_at`)."""
     from symdecomp.errors import SymdecompError
 
-    if scheme.parameters:
-        raise InvalidInputError(f"--scheme {scheme.name}: free parameters {', '.join(map(str, scheme.parameters))}: the "
-                                "matrices of boundary, crease, corner and dart vertices are exact in numbers; give values")
     regular = scheme.lattice.regular_valence // 2  # the faces of the regular boundary vertices next to the vertex
     try:
         scheme.sharp.check_at((*vertex.sectors, regular), vertex.angle)

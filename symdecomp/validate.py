@@ -116,6 +116,8 @@ API_LIMITS = {
     "ring_masks(n)": (1000, "2n + 1 weights a ring, each from a certified left eigenvector: n = 1000 takes about 3 s"),
     "certify_ring(n)": (2000, "the K-ring certificate's factors, one per frequency, in Arb and exactly: n = 2000 takes "
                         "about 10 s"),
+    "patch_matrices(n)": (1000, "Stam's (2n + 8)-point matrices from one exact refinement of a mesh around the vertex, "
+                          "dense in n: n = 1000 takes about 5 s and 200 MB"),
     "jordan_block_size(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): exact ranks in Q(cos(2 pi/n)), whose degree "
                              "grows like n"),
     "jordan_vertex_weights(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): an exact solve in Q(cos(2 pi/n)), whose "

@@ -17,6 +17,7 @@ from symdecomp import (
     classify_shape,
     closed_form_spectrum,
     jordan_block_size,
+    patch_matrices,
     ring_masks,
     ring_spectrum,
     second_order_eigenstructure,
@@ -70,6 +71,7 @@ CASES = {
     "ring_spectrum(n)": lambda: ring_spectrum(catmull_clark(), _over("ring_spectrum(n)", int)),
     "ring_masks(n)": lambda: ring_masks(catmull_clark(), _over("ring_masks(n)", int)),
     "certify_ring(n)": lambda: certify_ring(catmull_clark(), _over("certify_ring(n)", int)),
+    "patch_matrices(n)": lambda: patch_matrices(catmull_clark(), _over("patch_matrices(n)", int)),
     "jordan_block_size(n)": lambda: jordan_block_size(catmull_clark(), LIMITS["jordan_block_size(n)"][0] + 1, "1/4"),
     "jordan_vertex_weights(n)": lambda: __import__("symdecomp").jordan_vertex_weights(
         catmull_clark(ALPHA, BETA), LIMITS["jordan_vertex_weights(n)"][0] + 1, "1/4"),

@@ -50,7 +50,8 @@ def register(sub) -> None:
     flag(p, "--region", help="print the exact region of the scheme's free vertex weights (parameters in its file) at valence N "
          "by curvature regime: zero (|mu| < lambda_1^2, a flat spot), bounded (|mu| = lambda_1^2), unbounded (|mu| > lambda_1^2 "
          "or a Jordan block), not applicable (not C1), with "
-         "Catmull-Clark's, the paper's Section 5.2 and (triangles) Loop's and Warren's weights placed in it")
+         "Catmull-Clark's, the paper's Section 5.2 and (triangles) Loop's and Warren's weights placed in it; at the valences "
+         "whose exact signs are within reach, Euler's phi(N) <= 4: N = 3, 4, 5, 6, 8, 10, 12 (the limits table)")
     p.add_argument("--plot", action=Once, metavar="FILE.png|FILE.pdf",
                    help="with --region: draw the region in the parameter plane (or line) to this file, coloured by regime")
     flag(p, "--json", help="print JSON")

@@ -20,11 +20,20 @@ it; :mod:`symdecomp.output.plotting.tuning`).
 
 from __future__ import annotations
 
+import math
+
 import sympy as sp
 
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, closed_form_obstacle, digits, flag, print_json, progress, valence
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import InvalidInputError
+
+_PHI = LIMITS["tune --region, interval_region, placed_points: phi(n)"][0]
+
+
+def _region_valences() -> str:
+    """The valences ``tune N --region`` answers at (Euler's ``phi(N)`` within the bound), for the help."""
+    return ", ".join(str(m) for m in range(3, 64) if sum(math.gcd(i, m) == 1 for i in range(1, m + 1)) <= _PHI)
 
 
 def register(sub) -> None:
@@ -51,7 +60,7 @@ def register(sub) -> None:
          "by curvature regime: zero (|mu| < lambda_1^2, a flat spot), bounded (|mu| = lambda_1^2), unbounded (|mu| > lambda_1^2 "
          "or a Jordan block), not applicable (not C1), with "
          "Catmull-Clark's, the paper's Section 5.2 and (triangles) Loop's and Warren's weights placed in it; at the valences "
-         "whose exact signs are within reach, Euler's phi(N) <= 4: N = 3, 4, 5, 6, 8, 10, 12 (the limits table)")
+         f"whose exact signs are within reach, Euler's phi(N) <= {_PHI}: N = {_region_valences()} (the limits table)")
     p.add_argument("--plot", action=Once, metavar="FILE.png|FILE.pdf",
                    help="with --region: draw the region in the parameter plane (or line) to this file, coloured by regime")
     flag(p, "--json", help="print JSON")

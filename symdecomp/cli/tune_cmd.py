@@ -158,7 +158,8 @@ def run_region(args) -> int:
         if fmt not in ("png", "pdf"):
             raise InvalidInputError(f"--plot {args.plot}: the file name must end in .png or .pdf")
         plot = check_output_file(args.plot, "--plot")
-    check_region_valence(args.n)  # refused before any work: the exact signs' cost grows with phi(N)
+    if args.scheme.parameters:  # (without parameters the region refuses the scheme first, at once)
+        check_region_valence(args.n)  # refused before any work: the exact signs' cost grows with phi(N)
     region = certified_tuning_region(args.scheme, args.n)
     points = placed_points(args.scheme, args.n)
     data = _region_data(region, points, interval_region(region) if len(region.parameters) == 1 else None, args.digits)

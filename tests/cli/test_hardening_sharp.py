@@ -6,7 +6,11 @@ due instead: one line naming the input, exit status 2 (the package's error in th
 where they moved (``symdecomp.cli.sharp.check_sharp_options``).
 """
 
+import os
+import subprocess
+import sys
 import time
+from pathlib import Path
 
 import pytest
 import sympy as sp
@@ -24,6 +28,8 @@ from symdecomp.cli import main
 from symdecomp.errors import InvalidSchemeError, InvalidValenceError, NotApplicableError
 from symdecomp.schemes.files import load_scheme, scheme_from_text
 from symdecomp.schemes.sector import SharpVertex
+
+ROOT = Path(__file__).resolve().parents[2]
 
 #: Catmull-Clark's rules as a file; a ``[sharp]`` section or a vertex rule is added per case.
 CC_RULES = """name = "{name}"
@@ -187,3 +193,20 @@ def test_dart_memory_estimated_before_flint(monkeypatch, capsys):
     assert time.monotonic() - start < 10
     monkeypatch.setattr(symdecomp.validate, "MEMORY_LIMIT", 1 << 30)  # 40 faces: about 1.07 GiB; 36 faces 0.7 GiB
     assert main(["spectrum", "40", "--dart"]) == 2 and "1 GiB" in capsys.readouterr().err
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS as Linux counts it")
+@pytest.mark.parametrize("argv", [["masks", "64", "--dart"], ["check", "--certify", "--dart", "--k", "60:64"]])
+def test_dart_under_a_4_gib_cap_is_refused_not_aborted(argv, tmp_path):
+    """Item 7 as the issue ran it: under a 4 GB address-space cap, no SIGABRT after minutes, but one line and exit 2."""
+    import resource
+
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (4 << 30, 4 << 30))
+
+    start = time.monotonic()
+    run = subprocess.run([sys.executable, "-m", "symdecomp", *argv], cwd=tmp_path, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                         preexec_fn=limit, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 2, run.stderr[-500:]
+    assert run.stderr.count("\n") == 1 and "of memory, more than the limit of 4 GiB" in run.stderr, run.stderr
+    assert run.stdout == "" and time.monotonic() - start < 60

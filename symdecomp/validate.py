@@ -112,10 +112,11 @@ API_LIMITS = {
     "c1_test(n)": (10000, "Reif's test costs time ~ n (n/2 + 1 frequency blocks, memory O(n)): n = 10000 takes about 4 s"),
     "classify_shape(n)": (4096, "the central surface's Bezier nets at n/2 + 1 frequencies, certified: n = 4096 takes about 4 s"),
     "closed_form_spectrum(n)": (2000, "one evaluation of the closed forms per frequency: n = 2000 takes about 2 s"),
-    "ring_spectrum(n)": (2000, "a K-ring's factored spectrum, one block per frequency: n = 2000 takes about 15 s"),
+    "ring_spectrum(n)": (10000, "a K-ring's factored spectrum, one block per frequency, time ~ n (the structural certificate "
+                         "of check --certify reads it up to its bound): n = 2000 takes about 15 s with exact values"),
     "ring_masks(n)": (1000, "2n + 1 weights a ring, each from a certified left eigenvector: n = 1000 takes about 3 s"),
-    "certify_ring(n)": (2000, "the K-ring certificate's factors, one per frequency, in Arb and exactly: n = 2000 takes "
-                        "about 10 s"),
+    "certify_ring(n)": (10000, "the K-ring certificate, one factor per frequency (check --certify on the structural route "
+                        "goes this far): n = 2000 takes about 10 s"),
     "patch_matrices(n)": (1000, "Stam's (2n + 8)-point matrices from one exact refinement of a mesh around the vertex, "
                           "dense in n: n = 1000 takes about 5 s and 200 MB"),
     "jordan_block_size(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): exact ranks in Q(cos(2 pi/n)), whose degree "

@@ -66,6 +66,8 @@ __all__ = [
     "FLOAT_DIGITS",
     "DEFAULT_BUDGET",
     "MAX_REPORT_VALENCE",
+    "API_LIMITS",
+    "check_limit",
 ]
 
 #: Most significant digits printed (a value is evaluated at a little more than this).
@@ -95,6 +97,45 @@ DEFAULT_BUDGET = 60.0
 #: The largest valence of a report (:mod:`symdecomp.output.report`, ``symdecomp report --n``): its tables grow
 #: with every valence (2n + 1 eigenvalues, masks of 2n + 1 weights) and the eigen-polygon figure has n panels a row.
 MAX_REPORT_VALENCE = 16
+
+#: Upper bounds of the API's entry points and why: ``name: (bound, reason)``. Each is enforced by its entry point
+#: (:func:`check_limit`), shared by the command that calls it, and listed with the command line's bounds in
+#: :data:`symdecomp.cli.common.LIMITS` (the one table the docs render).
+API_LIMITS = {
+    "artifact_indicators(n)": (4096, "a valence costs time ~ n (the C1 test's spectrum at n/2 + 1 frequencies plus one "
+                               "exact left eigenvector in Q(zeta_2n)): n = 1024 takes about 0.4 s, n = 4096 3 to 8 s"),
+    "second_order_eigenstructure(n)": (4096, "the 2-ring matrix's spectrum at n/2 + 1 frequencies, certified in Arb: "
+                                       "time ~ n, n = 4096 takes about 2 s"),
+    "tune --region, interval_region, placed_points: phi(n)": (4, "the region's exact signs are decided in Q(cos(2 pi/n), lambda_1), of degree up to "
+                                 "2 phi(n) (Euler's phi): at phi(n) <= 4 (n = 3, 4, 5, 6, 8, 10, 12) a region takes 2 to 45 s, "
+                                 "at phi(7) = 6 two to over five minutes, and every step of phi doubles the degree"),
+    "c1_test(n)": (10000, "Reif's test costs time ~ n (n/2 + 1 frequency blocks, memory O(n)): n = 10000 takes about 4 s"),
+    "classify_shape(n)": (4096, "the central surface's Bezier nets at n/2 + 1 frequencies, certified: n = 4096 takes about 4 s"),
+    "closed_form_spectrum(n)": (2000, "one evaluation of the closed forms per frequency: n = 2000 takes about 2 s"),
+    "ring_spectrum(n)": (10000, "a K-ring's factored spectrum, one block per frequency, time ~ n (the structural certificate "
+                         "of check --certify reads it up to its bound): n = 2000 takes about 15 s with exact values"),
+    "ring_masks(n)": (1000, "2n + 1 weights a ring, each from a certified left eigenvector: n = 1000 takes about 3 s"),
+    "certify_ring(n)": (10000, "the K-ring certificate, one factor per frequency (check --certify on the structural route "
+                        "goes this far): n = 2000 takes about 10 s"),
+    "patch_matrices(n)": (1000, "Stam's (2n + 8)-point matrices from one exact refinement of a mesh around the vertex, "
+                          "dense in n: n = 1000 takes about 5 s and 200 MB"),
+    "jordan_block_size(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): exact ranks in Q(cos(2 pi/n)), whose degree "
+                             "grows like n"),
+    "jordan_vertex_weights(n)": (10000, "the Eq. 43 block holds cos(2 pi/n): an exact solve in Q(cos(2 pi/n)), whose "
+                                 "degree grows like n"),
+}
+
+
+def check_limit(value, name: str, argument: str, *, minimum: int = 3, error: type = InvalidValenceError) -> int:
+    """``value`` as an ``int`` within ``minimum`` and the bound :data:`API_LIMITS` gives ``name`` (with its reason).
+
+    >>> check_limit(10**6, "artifact_indicators(n)", "valence n")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    symdecomp.errors.InvalidValenceError: valence n must be an integer with 3 <= n <= 4096, got 1000000 (a valence costs ...)
+    """
+    bound, reason = API_LIMITS[name]
+    return check_int(value, argument, minimum=minimum, maximum=bound, error=error, reason=reason)
 
 
 def _kind(value) -> str:

@@ -26,9 +26,16 @@ from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.expressions import exact_value
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import lam as LAM
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_limit, check_valence
 
 __all__ = ["jordan_vertex_weights", "jordan_block_size"]
+
+
+def _check_quad(scheme: Scheme, function: str) -> None:
+    """Eq. 43 is the paper's 3 x 3 block of a quad scheme (``O``, ``a``, ``b``); a triangle scheme has no face points."""
+    if scheme.face_rule is None:
+        raise NotApplicableError(f"{function}: scheme {scheme.name!r} is a {scheme.lattice}-mesh scheme; the Eq. 43 "
+                                 "recursion matrix (O, a_i, b_i) is defined for quad schemes, whose rings have face points")
 
 
 def jordan_vertex_weights(scheme: Scheme, n: int, eigenvalue) -> dict:
@@ -37,8 +44,8 @@ def jordan_vertex_weights(scheme: Scheme, n: int, eigenvalue) -> dict:
     Raises :class:`~symdecomp.errors.InvalidSchemeError` if the scheme does not have exactly
     two free parameters or the linear system has no unique solution.
     """
-    check_scheme(scheme)
-    n = check_valence(n)
+    _check_quad(check_scheme(scheme), "jordan_vertex_weights")
+    n = check_limit(check_valence(n), "jordan_vertex_weights(n)", "valence n")
     mu = exact_value(eigenvalue, argument="eigenvalue")
     params = tuple(scheme.parameters)
     if len(params) != 2:
@@ -60,7 +67,8 @@ def jordan_block_size(scheme: Scheme, n: int, eigenvalue) -> int:
 
     ``0`` if it is not an eigenvalue.
     """
-    A = sp.Matrix(recursion_matrix(scheme, check_valence(n)))
+    _check_quad(check_scheme(scheme), "jordan_block_size")
+    A = sp.Matrix(recursion_matrix(scheme, check_limit(check_valence(n), "jordan_block_size(n)", "valence n")))
     mu = exact_value(eigenvalue, argument="eigenvalue")
     B = A - mu * sp.eye(3)
     ranks = [3] + [(B**k).rank() for k in range(1, 4)]

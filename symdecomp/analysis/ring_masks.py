@@ -33,7 +33,7 @@ from symdecomp.analysis.ring_spectrum import acb_text, ring_spectrum
 from symdecomp.errors import SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_digits
+from symdecomp.validate import check_digits, check_limit, check_valence
 
 __all__ = ["ring_masks"]
 
@@ -73,7 +73,7 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
     Each mask is ``{"O": w, "classes": {"u,v": [weight per sector]}}`` plus ``"a"`` (class ``(1, 0)``)
     and, on quads, ``"b"`` (class ``(1, 1)``), the 1-ring names.
     """
-    n = check_scheme(scheme).fitting_valence(n)
+    n = check_scheme(scheme).fitting_valence(check_limit(check_valence(n), "ring_masks(n)", "valence n"))
     digits = check_digits(digits)
     blocks = ring_blocks(scheme, rings)
     spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False, jordan=False)

@@ -37,7 +37,7 @@ from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import cached, check_digits, check_type
+from symdecomp.validate import cached, check_digits, check_limit, check_type, check_valence
 
 __all__ = ["Factor", "FrequencyFactors", "frequency_factors", "RingEigenvalue", "RingSpectrum", "ring_spectrum", "acb_text"]
 
@@ -270,7 +270,7 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
     ``exact``: attach exact closed forms to the values (costs a little sympy per value).
     ``jordan``: decide the Jordan structure of repeated values (exact ranks; ``None`` if not asked).
     """
-    n = check_scheme(scheme).fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
+    n = check_scheme(scheme).fitting_valence(check_limit(check_valence(n), "ring_spectrum(n)", "valence n"))
     digits = check_digits(digits)
     blocks = ring_blocks(scheme, rings)
     ff = frequency_factors(blocks)

@@ -33,7 +33,7 @@ from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.validate import cached, check_digits
+from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
 __all__ = ["SpectrumEntry", "Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
 
@@ -171,7 +171,7 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     ``1/4`` three times) are exact up to that rounding. ``parameters`` gives values for free
     parameters of the scheme (e.g. ``{alpha: ..., beta: ...}``).
     """
-    n = check_scheme(scheme).fitting_valence(n)  # the stencils fit, and every weight is defined and real at n
+    n = check_scheme(scheme).fitting_valence(check_limit(check_valence(n), "closed_form_spectrum(n)", "valence n"))
     digits = check_digits(digits)
     subs = parameter_values(scheme, parameters)
     work = digits + 30

@@ -62,15 +62,28 @@ from symdecomp.analysis.characteristic import outer_charpoly
 from symdecomp.analysis.curvature_regime import CurvatureRegime, curvature_regime
 from symdecomp.analysis.frequency import laurent_to_cos, one_ring_matrices
 from symdecomp.analysis.tuning import unit_quotient
-from symdecomp.errors import InvalidInputError, NotApplicableError
+from symdecomp.errors import InvalidInputError, InvalidValenceError, NotApplicableError
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import Scheme, VertexRule, check_scheme
 from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
-from symdecomp.validate import cached, check_type, check_valence
+from symdecomp.validate import API_LIMITS, cached, check_type, check_valence
 
-__all__ = ["Form", "TuningRegion", "tuning_region", "interval_region"]
+__all__ = ["Form", "TuningRegion", "tuning_region", "interval_region", "check_region_valence"]
+
+
+def check_region_valence(n) -> int:
+    """``n`` if the exact signs of its region are within reach (:data:`~symdecomp.validate.API_LIMITS`: Euler's ``phi(n)``,
+    the degree of ``Q(cos(2 pi/n))`` doubled, bounds their cost), refused before any work otherwise: the intervals
+    (:func:`interval_region`), the placed points (:func:`placed_points`) and ``tune --region`` check it first; the forms
+    themselves (:func:`tuning_region`) are cheap at every ``n``."""
+    n = check_valence(n)
+    bound, why = API_LIMITS["tune --region, interval_region, placed_points: phi(n)"]
+    if sp.totient(n) > bound:
+        raise InvalidValenceError(f"valence n = {n}: phi(n) = {sp.totient(n)} > {bound}, so the exact region is out of reach "
+                                  f"({why})")
+    return n
 
 
 @dataclass(frozen=True)
@@ -219,7 +232,11 @@ def _parameters(scheme: Scheme) -> tuple[sp.Symbol, ...]:
 
 def _affine_check(expr: sp.Expr, params, scheme: Scheme) -> sp.Expr:
     expr = sp.expand(expr)
-    if not sp.Poly(expr, *params).total_degree() <= 1:
+    try:
+        degree = sp.Poly(expr, *params).total_degree()
+    except sp.PolynomialError:  # 1/alpha, alpha**(1/2): not a polynomial in the parameters at all
+        degree = None
+    if degree is None or degree > 1:
         raise NotApplicableError(f"scheme {scheme.name!r}: the vertex weights are not affine in {', '.join(map(str, params))} "
                                  f"(frequency 0 has {sp.sstr(expr)}); the region is computed for affine weights")
     return expr
@@ -410,6 +427,7 @@ def interval_region(region: TuningRegion) -> list[Interval]:
     check_type(region, TuningRegion, "region", hint="tuning_region(scheme, n)")
     if len(region.parameters) != 1:
         raise NotApplicableError(f"the region of {region.scheme!r} has {len(region.parameters)} parameters; intervals need one")
+    check_region_valence(region.n)
     roots = _sorted_roots(region)
     pieces = []  # (regime, lo, hi): a point when lo is hi
     bounds = [None] + roots + [None]
@@ -457,7 +475,7 @@ def placed_points(scheme: Scheme, n: int) -> list[tuple[str, tuple[sp.Expr, ...]
     from symdecomp.schemes.loop import loop, loop_warren
 
     params = _parameters(check_scheme(scheme))
-    n = scheme.fitting_valence(check_valence(n), real=True)
+    n = scheme.fitting_valence(check_region_valence(n), real=True)
     ref = scheme.lattice.reference()
     weights = []
     if scheme.lattice.handled("the published vertex weights", BICUBIC, BOX_SPLINE) == BICUBIC:

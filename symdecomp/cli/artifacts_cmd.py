@@ -7,7 +7,18 @@ The table is a list of columns (:data:`symdecomp.output.artifact_table.COLUMNS`,
 
 from __future__ import annotations
 
-from symdecomp.cli.common import LIMITS, Once, add_pool_options, add_scheme_option, flag, print_json, progress, valence_range
+from symdecomp.cli.common import (
+    ARTIFACTS_COST,
+    LIMITS,
+    Once,
+    add_pool_options,
+    add_scheme_option,
+    estimate_seconds,
+    flag,
+    print_json,
+    progress,
+    valence_range,
+)
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.parallel import ordered_map
@@ -72,6 +83,7 @@ def run(args) -> int:
 
     valences = args.valences
     plot = check_plot(args)
+    estimate_seconds(ARTIFACTS_COST * sum(valences), "artifacts --n A:B", f"--n {valences[0]}:{valences[-1]}")
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme}, jobs=args.jobs, executor=args.executor, warm_up=True)
     results = list(progress(rows, len(valences), "artifacts", enabled=not args.quiet))
     if args.json:

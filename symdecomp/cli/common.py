@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
+import sys
 
 from symdecomp.cli.json_envelope import print_json
 from symdecomp.cli.progress import progress
@@ -20,7 +21,7 @@ from symdecomp.parallel import parse_executor
 from symdecomp.schemes.files import SCHEMES, load_scheme
 from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import DEFAULT_BUDGET, MAX_DEPTH, MAX_DIGITS, MAX_DPS, MAX_REPORT_VALENCE
+from symdecomp.validate import API_LIMITS, DEFAULT_BUDGET, MAX_DEPTH, MAX_DIGITS, MAX_DPS, MAX_REPORT_VALENCE
 
 __all__ = [
     "Parser",
@@ -46,13 +47,21 @@ __all__ = [
     "refuse_together",
     "progress",
     "print_json",
+    "estimate_seconds",
+    "ARTIFACTS_COST",
+    "ARTIFACTS_SECONDS",
 ]
 
-#: Upper bounds of the command line and why they are there: ``name: (bound, reason)``.
+#: ``artifacts --n A:B``: seconds of CPU one valence N costs, about ``ARTIFACTS_COST * N`` (measured, N = 64 to 4096),
+#: and the most a range may be estimated to cost.
+ARTIFACTS_COST, ARTIFACTS_SECONDS = 4e-4, 600
+
+#: Upper bounds of the command line and why they are there: ``name: (bound, reason)``. The API's bounds
+#: (:data:`symdecomp.validate.API_LIMITS`) close the table: the docs render it, and each bound is enforced where it is named.
 LIMITS = {
     "digits": (MAX_DIGITS, "more digits than anyone reads; each one costs evaluation time"),
     "dps": (MAX_DPS, "an eigenvalue solve at this precision takes hours"),
-    "spectrum": (2000, "the time grows with N (one evaluation per frequency): N = 1000 takes about a second"),
+    "spectrum": (API_LIMITS["closed_form_spectrum(n)"][0], "the time grows with N (one evaluation per frequency): N = 1000 takes about a second"),
     "masks": (1000, "2N + 1 weights per mask, each a certified ball: N = 1000 takes about a second"),
     "charpoly": (300, "the exact characteristic polynomial of the (2N+1)x(2N+1) matrix grows like N^3"),
     "tune": (1000, "the exact solve grows with N: N = 300 takes about 10 s"),
@@ -66,10 +75,12 @@ LIMITS = {
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
     "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),
-    "c1": (10000, "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 10000 takes about "
+    "c1": (API_LIMITS["c1_test(n)"][0], "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 10000 takes about "
            "0.15 s, the range 3:10000 about 10 minutes of CPU (--executor dask spreads it over a cluster)"),
-    "artifacts": (4096, "a valence costs time ~ N (the C1 test's spectrum plus one exact left eigenvector): N = 64 takes "
-                  "about 0.05 s"),
+    "artifacts": API_LIMITS["artifact_indicators(n)"],
+    "artifacts --n A:B": (ARTIFACTS_SECONDS, "estimated seconds of CPU for the range, from the cost of one valence (about "
+                          f"{ARTIFACTS_COST:.0e} N s, so 3:1000 is about 3 minutes and 3:1700 the most); a range beyond it is refused before it "
+                          "starts: split it, or run it on a cluster in parts"),
     "c1 --k": (32, "the sector's dense exact matrices have about 12 K rows (the level-1 3-ring) and irrational weights "
                "need an exact characteristic polynomial of a K x K block: K = 16 takes 10-20 s, K = 32 15 s with rational "
                "weights and about 3.5 minutes with BLZ's (on a loaded machine)"),
@@ -78,9 +89,12 @@ LIMITS = {
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),
     "report": (MAX_REPORT_VALENCE, "a report's tables grow with every valence (2N + 1 eigenvalues and mask weights) and its "
                "eigen-polygon figure has N panels a row; 3:8 takes about half a minute"),
+    "--boundary, --corner, --crease, --dart: faces": (64, "the faces K (K + K2 on a crease) around a boundary, crease, "
+                                                     "corner or dart vertex: its 1-ring matrices are dense and exact"),
     "evaldata --k": (64, "a sharp vertex has at most 64 faces; k = 64 writes about 10 MB of exact rationals"),
     "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 256 bits "
                  "(a run's memory is estimated and checked before it starts)"),
+    **API_LIMITS,
 }
 
 #: Where a help text sends a reader for the scheme file format (one page of the docs, from the one docstring).
@@ -330,12 +344,11 @@ def check_scheme_valences(args) -> None:
     the stencils must fit and every weight must be defined and real
     (:meth:`~symdecomp.schemes.scheme.Scheme.fitting_valence`); the error names the valence and the weight.
     """
+    from symdecomp.cli.sharp import check_sharp_options  # the sharp options' own checks (imported late: it imports this)
+
     scheme = getattr(args, "scheme", None)
     valences = getattr(args, "valences", None) or getattr(args, "n", None)
-    sharp_options = hasattr(args, "crease") or hasattr(args, "dart")  # oracle's --sharpness is a list of its own
-    if sharp_options and given(args, "sharpness") and not (given(args, "crease") or given(args, "dart")):
-        raise InvalidInputError("--sharpness: the sharpness of a crease's edges; give it with --crease K2 or --dart (boundary "
-                                "edges are infinitely sharp)")
+    check_sharp_options(args)
     if not isinstance(scheme, Scheme) or valences is None or sharp_given(args):
         return  # a sharp vertex's N is a face count: its matrix's rules are checked where it is built
     if isinstance(valences, int) and valences < 3:  # N admits face counts from 1 for sharp vertices
@@ -344,3 +357,19 @@ def check_scheme_valences(args) -> None:
                                 f"{valences} (face counts 1 and 2 are for --boundary, --corner, --crease or --dart)")
     for n in valences if isinstance(valences, list) else [valences]:
         scheme.fitting_valence(n, real=True)
+
+
+def estimate_seconds(seconds: float, limit: str, what: str, *, show: float = 10.0) -> None:
+    """Refuse work estimated to take more than ``LIMITS[limit]`` seconds of CPU, before it starts; say the estimate on
+    stderr when it is more than ``show`` seconds (long runs announce themselves)."""
+    bound, why = LIMITS[limit]
+    if seconds > bound:
+        raise InvalidInputError(f"{what}: estimated {_duration(seconds)} of CPU, more than the limit of {_duration(bound)} "
+                                f"({why})")
+    if seconds > show:
+        print(f"{what}: estimated {_duration(seconds)} of CPU", file=sys.stderr, flush=True)
+
+
+def _duration(seconds: float) -> str:
+    return f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.0f} minutes" if seconds < 7200 else \
+        f"{seconds / 3600:.0f} hours"

@@ -23,14 +23,22 @@ from __future__ import annotations
 import argparse
 import math
 
-from symdecomp.cli.common import SHARP_OPTIONS, Once, flag, given, integer, positive_int, print_json
+from symdecomp.cli.common import LIMITS, SHARP_OPTIONS, Once, flag, given, integer, positive_int, print_json
 from symdecomp.errors import InvalidInputError
+from symdecomp.validate import check_memory
 
-__all__ = ["sharpness", "add_sharp_options", "sharp_vertex", "faces_or_valence", "sector_range", "refuse_sharp_options", "describe",
+__all__ = ["sharpness", "add_sharp_options", "check_sharp_options", "sharp_vertex", "check_rules_at", "faces_or_valence",
+           "sector_range", "refuse_sharp_options", "describe",
            "run_sharp_masks", "exact_only"]
 
-#: Most faces around a sharp vertex on the command line (the matrices are dense and exact).
-MAX_FACES = 64
+#: Most faces around a sharp vertex on the command line (the matrices are dense and exact; a row of the limits table).
+MAX_FACES = LIMITS["--boundary, --corner, --crease, --dart: faces"][0]
+#: Bytes the exact analysis of a dart with 16 faces takes beyond start-up (measured: ``masks 16 --dart``; it grows like
+#: the faces to the 4th power, 24 faces about 140 MB, 32 about 450 MB, 64 past 3.8 GB): the memory estimate of
+#: :func:`sharp_vertex`, checked before FLINT allocates anything, since FLINT aborts the whole process when an
+#: allocation fails. A dart has no mirror symmetry, so its matrix is analysed whole; the other vertices' sectors split
+#: it into small blocks (32 faces in under 80 MB).
+BYTES_AT_16_FACES = 28 << 20
 
 
 def sharpness(text: str):
@@ -47,6 +55,7 @@ def add_sharp_options(parser, *, count: str = "N") -> None:
     """The options of a boundary, crease, corner or dart vertex (module docstring); ``count``: the argument giving K."""
     g = parser.add_argument_group("boundary, crease, corner and dart vertices",
                                   f"with one of these, {count} is the faces K of the vertex's sector (1 <= K <= {MAX_FACES})")
+    parser.set_defaults(_sharp_options=True)  # check_sharp_options: this command has the options below
     flag(g, "--boundary", help="a boundary vertex with K faces")
     flag(g, "--corner", help="a boundary vertex with K faces tagged as a corner (interpolated)")
     g.add_argument("--crease", type=positive_int("--crease"), action=Once, metavar="K2",
@@ -80,28 +89,59 @@ def sector_range(text: str) -> list[int]:
     return list(range(lo, hi + 1))
 
 
+def check_sharp_options(args) -> None:
+    """Refuse, before any work, a combination of the sharp options that names no vertex or two kinds of vertex.
+
+    Called for every command (:func:`symdecomp.cli.common.check_scheme_valences`); a command without the options
+    (``oracle``, whose ``--sharpness`` is a list of its own) is left alone.
+    """
+    if not getattr(args, "_sharp_options", False):
+        return
+    named = [option for dest, option in SHARP_OPTIONS.items() if given(args, dest)]
+    if given(args, "sharpness") and not set(named) & {"--crease", "--dart"}:
+        raise InvalidInputError("--sharpness: the sharpness of a crease's edges; give it with --crease K2 or --dart (boundary "
+                                "edges are infinitely sharp)")
+    if len(named) > 1:
+        raise InvalidInputError(f"{named[0]} and {named[1]} cannot be used together: each names a different kind of vertex")
+
+
+def check_rules_at(scheme, vertex) -> None:
+    """Refuse, in one line naming the scheme, ``[sharp]`` rules that cannot be evaluated at ``vertex``: a free parameter
+    in them (the sharp routes are exact in numbers; the smooth rules' parameters are refused where a matrix reads
+    them), or a weight undefined at one of its sectors or at the regular boundary next to it
+    (:meth:`~symdecomp.schemes.sharp.SharpRules.check_at`)."""
+    from symdecomp.errors import SymdecompError
+
+    regular = scheme.lattice.regular_valence // 2  # the faces of the regular boundary vertices next to the vertex
+    try:
+        scheme.sharp.check_at((*vertex.sectors, regular), vertex.angle)
+    except SymdecompError as exc:
+        raise InvalidInputError(f"--scheme {scheme.name}: {exc}") from None
+
+
 def sharp_vertex(args, k: int):
     """The :class:`~symdecomp.schemes.sector.SharpVertex` the options name, with ``k`` faces; one line for a bad combination."""
     from symdecomp.schemes.sector import SharpVertex
 
+    check_sharp_options(args)
     named = [option for dest, option in SHARP_OPTIONS.items() if given(args, dest)]
-    if len(named) > 1:
-        raise InvalidInputError(f"{named[0]} and {named[1]} cannot be used together: each names a different kind of vertex")
-    if given(args, "sharpness") and named[0] not in ("--crease", "--dart"):
-        raise InvalidInputError(f"--sharpness: {named[0]} edges are boundary edges, always infinitely sharp; give it with "
-                                "--crease or --dart")
     if k > MAX_FACES or getattr(args, "crease", None) and k + args.crease > MAX_FACES:
         raise InvalidInputError(f"the vertex has more than {MAX_FACES} faces (the matrices are dense and exact)")
     lat = args.scheme.lattice
     if named[0] == "--boundary":
-        return SharpVertex.boundary(k, lat)
-    if named[0] == "--corner":
-        return SharpVertex.corner(k, lat)
-    if named[0] == "--crease":
-        return SharpVertex.crease(k, args.crease, lat, sharpness=args.sharpness)
-    if k < 3:
+        vertex = SharpVertex.boundary(k, lat)
+    elif named[0] == "--corner":
+        vertex = SharpVertex.corner(k, lat)
+    elif named[0] == "--crease":
+        vertex = SharpVertex.crease(k, args.crease, lat, sharpness=args.sharpness)
+    elif k < 3:
         raise InvalidInputError(f"--dart: a dart is an interior vertex of valence K >= 3, got K = {k}")
-    return SharpVertex.dart(k, lat, sharpness=args.sharpness)
+    else:
+        vertex = SharpVertex.dart(k, lat, sharpness=args.sharpness)
+    check_rules_at(args.scheme, vertex)
+    if named[0] == "--dart":
+        check_memory(int(BYTES_AT_16_FACES * (vertex.faces / 16) ** 4), f"{describe(vertex)}: the exact analysis")
+    return vertex
 
 
 def refuse_sharp_options(args, *names: str) -> None:

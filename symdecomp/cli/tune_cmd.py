@@ -20,11 +20,20 @@ it; :mod:`symdecomp.output.plotting.tuning`).
 
 from __future__ import annotations
 
+import math
+
 import sympy as sp
 
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, closed_form_obstacle, digits, flag, print_json, progress, valence
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import InvalidInputError
+
+_PHI = LIMITS["tune --region, interval_region, placed_points: phi(n)"][0]
+
+
+def _region_valences() -> str:
+    """The valences ``tune N --region`` answers at (Euler's ``phi(N)`` within the bound), for the help."""
+    return ", ".join(str(m) for m in range(3, 64) if sum(math.gcd(i, m) == 1 for i in range(1, m + 1)) <= _PHI)
 
 
 def register(sub) -> None:
@@ -50,7 +59,8 @@ def register(sub) -> None:
     flag(p, "--region", help="print the exact region of the scheme's free vertex weights (parameters in its file) at valence N "
          "by curvature regime: zero (|mu| < lambda_1^2, a flat spot), bounded (|mu| = lambda_1^2), unbounded (|mu| > lambda_1^2 "
          "or a Jordan block), not applicable (not C1), with "
-         "Catmull-Clark's, the paper's Section 5.2 and (triangles) Loop's and Warren's weights placed in it")
+         "Catmull-Clark's, the paper's Section 5.2 and (triangles) Loop's and Warren's weights placed in it; at the valences "
+         f"whose exact signs are within reach, Euler's phi(N) <= {_PHI}: N = {_region_valences()} (the limits table)")
     p.add_argument("--plot", action=Once, metavar="FILE.png|FILE.pdf",
                    help="with --region: draw the region in the parameter plane (or line) to this file, coloured by regime")
     flag(p, "--json", help="print JSON")
@@ -135,7 +145,7 @@ def _ball(e, digits: int) -> str:
 
 def run_region(args) -> int:
     """``tune N --region [--plot FILE]``: the region of free vertex weights at valence N (module docstring)."""
-    from symdecomp.analysis.tuning_region import interval_region, placed_points
+    from symdecomp.analysis.tuning_region import check_region_valence, interval_region, placed_points
     from symdecomp.verify.tuning_c1 import certified_tuning_region
 
     if not args.region:
@@ -148,6 +158,8 @@ def run_region(args) -> int:
         if fmt not in ("png", "pdf"):
             raise InvalidInputError(f"--plot {args.plot}: the file name must end in .png or .pdf")
         plot = check_output_file(args.plot, "--plot")
+    if args.scheme.parameters:  # (without parameters the region refuses the scheme first, at once)
+        check_region_valence(args.n)  # refused before any work: the exact signs' cost grows with phi(N)
     region = certified_tuning_region(args.scheme, args.n)
     points = placed_points(args.scheme, args.n)
     data = _region_data(region, points, interval_region(region) if len(region.parameters) == 1 else None, args.digits)

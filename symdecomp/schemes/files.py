@@ -76,9 +76,11 @@ rule's weights on the two ends of a smooth edge at a crease, boundary or corner 
 Zorin's modified rule): the weight on the sharp vertex and on the other end, the other weights staying the
 smooth rule's, so the two must sum to twice the edge rule's ``O`` weight. These weights may use the sector
 angle ``theta_k`` (``pi/k`` in a crease or boundary sector of ``k`` faces, the corner angle over ``k`` at a
-corner; ``cos``/``sin`` of rational multiples of ``theta_k`` only), ``k`` and the declared parameters, with the
-same budget and checks as every other weight. Biermann, Levin and Zorin's rules ship as the files
-``catmull-clark-blz`` and ``loop-blz`` (:data:`SHIPPED_FILES`, loaded by name); Loop's::
+corner; ``cos``/``sin`` of rational multiples of ``theta_k`` only: a bare ``theta_k`` is refused when the file is
+read), ``k`` and the declared parameters, with the same budget and checks as every other weight. A weight undefined
+at a sector's ``k`` (``1/(k - 2)`` at the regular quad boundary, next to every boundary vertex) and free parameters
+are refused, in one line naming the weight, when a boundary, crease, corner or dart vertex is analysed.
+Biermann, Levin and Zorin's rules ship as the files ``catmull-clark-blz`` and ``loop-blz`` (:data:`SHIPPED_FILES`, loaded by name); Loop's::
 
     name = "loop-blz"
     mesh = "triangle"

@@ -67,7 +67,7 @@ from symdecomp.schemes.refinement import refinement_matrix
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
-from symdecomp.validate import cached, check_valence
+from symdecomp.validate import cached, check_limit, check_valence
 
 __all__ = [
     "OUTER_POINTS", "EXTRA_POINTS", "SUBPATCH_CORNERS", "PatchMatrices", "patch_matrices", "lattice_index", "patch_mesh",
@@ -187,7 +187,7 @@ def patch_mesh(n: int, values=None):
 def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     """The patch matrices of ``scheme`` at valence ``n`` from one exact refinement: ``2n + 8`` points
     on quad meshes (:func:`quad_patch_matrices`), ``n + 6`` on triangle meshes (:func:`triangle_patch_matrices`)."""
-    return scheme.lattice.patch_matrices(scheme, check_valence(n))
+    return scheme.lattice.patch_matrices(scheme, check_limit(check_valence(n), "patch_matrices(n)", "valence n"))
 
 
 def quad_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:

@@ -98,6 +98,8 @@ class SharpRules:
                 object.__setattr__(self, name, _weight(value, f"sharp rules: {name}"))
         if (self.near_edge_centre is None) != (self.near_edge_end is None):
             raise InvalidSchemeError("sharp rules: give near_edge_centre and near_edge_end together (or neither)")
+        for name in _NAMES:
+            _check_angle_use(getattr(self, name), name)
         for label, total in (("crease vertex rule: crease_centre + 2*crease_end", self.crease_centre + 2 * self.crease_end),
                              ("crease edge rule: 2*crease_edge", 2 * self.crease_edge)):
             if sp.simplify(total - 1) != 0:
@@ -121,7 +123,23 @@ class SharpRules:
         if self.near_edge_centre is None:
             return None
         values = {theta_k: theta, sector_faces: k}
-        return tuple(w.xreplace(values) for w in (self.near_edge_centre, self.near_edge_end))
+        out = tuple(w.xreplace(values) for w in (self.near_edge_centre, self.near_edge_end))
+        for name, weight, value in zip(_NAMES[3:], (self.near_edge_centre, self.near_edge_end), out):
+            _check_defined_at(name, weight, value, k)
+        return out
+
+    def check_at(self, sectors: Sequence[int], angle=None) -> None:
+        """Refuse rules that cannot be evaluated at a vertex whose sectors have ``sectors`` faces (``angle``: a corner's
+        angle, else ``pi``): a free parameter left in a weight, or a near-edge weight undefined at a sector's ``k``
+        (``1/(k - 2)`` at ``k = 2``). One :class:`~symdecomp.errors.InvalidSchemeError` naming the weight."""
+        for name in _NAMES:
+            weight = getattr(self, name)
+            free = sorted(str(s) for s in getattr(weight, "free_symbols", ()) if s not in (theta_k, sector_faces))
+            if free:
+                raise InvalidSchemeError(f"[sharp] {name} = {weight} has free parameters {', '.join(free)}: a boundary, "
+                                         "crease, corner or dart vertex needs their values (give them in the file)")
+        for k in sorted(set(sectors)):
+            self.near_edge((sp.pi if angle is None else angle) / k, k)
 
     def substitute(self, subs) -> SharpRules:
         """The rules with some parameters replaced (``subs``: symbol -> value)."""
@@ -135,6 +153,38 @@ class SharpRules:
                                                                    self.near_edge_end.xreplace(move))
         return SharpRules(self.crease_centre.xreplace(move), self.crease_end.xreplace(move),
                           self.crease_edge.xreplace(move), *near)
+
+
+_NAMES = ("crease_centre", "crease_end", "crease_edge", "near_edge_centre", "near_edge_end")
+
+
+def _check_angle_use(weight, name: str) -> None:
+    """``theta_k`` only as ``cos``/``sin`` of a rational multiple (their values at ``theta_k = pi/k`` are exact in
+    ``Q(cos(pi/k))``); a bare ``theta_k``, or ``cos(sqrt(2)*theta_k)``, is not algebraic at the vertex."""
+    if weight is None or not (theta_k in weight.free_symbols or weight.has(sp.pi)):
+        return
+    for call in weight.atoms(sp.cos, sp.sin):
+        ratio = sp.simplify(call.args[0] / theta_k)
+        if theta_k in call.args[0].free_symbols and not ratio.is_Rational:
+            raise InvalidSchemeError(f"sharp rules: {name} = {weight}: {call} is not the cosine or sine of a rational "
+                                     "multiple of theta_k (such as cos(theta_k) or sin(2*theta_k)), so it is not exact at "
+                                     "the vertex")
+    rest = weight.xreplace({call: sp.Dummy() for call in weight.atoms(sp.cos, sp.sin)})
+    if rest.has(sp.pi):
+        raise InvalidSchemeError(f"sharp rules: {name} = {weight}: pi outside cos and sin is transcendental; the weights "
+                                 "must be exact algebraic numbers at the vertex (cos(pi/3), cos(theta_k))")
+    if theta_k in rest.free_symbols:
+        raise InvalidSchemeError(f"sharp rules: {name} = {weight}: theta_k outside cos and sin (theta_k = pi/k, so the "
+                                 "weight would be transcendental); use cos(theta_k) or sin(theta_k)")
+
+
+def _check_defined_at(name: str, weight, value, k) -> None:
+    free = sorted(str(s) for s in value.free_symbols)
+    if free:
+        raise InvalidSchemeError(f"[sharp] {name} = {weight} has free parameters {', '.join(free)}: a boundary, crease, "
+                                 "corner or dart vertex needs their values")
+    if value.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or value.is_finite is False:
+        raise InvalidSchemeError(f"[sharp] {name} = {weight} is undefined at k = {k} (a sector of {k} faces)")
 
 
 def standard_sharp_rules() -> SharpRules:

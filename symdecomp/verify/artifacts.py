@@ -51,7 +51,7 @@ from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import cached, check_valence
+from symdecomp.validate import cached, check_limit, check_valence
 from symdecomp.verify.c1_spectrum import ball_text, exact_charpoly, exact_entry, other_frequency_eigenvalues, sibling_values
 from symdecomp.verify.second_order_spectrum import CurvatureResult, dominant_part, second_order_eigenstructure
 from symdecomp.verify.shape import classify_shape
@@ -216,6 +216,6 @@ def artifact_indicators(scheme: Scheme, n: int) -> ArtifactIndicators:
     >>> a.density_text, a.masks_text, a.curvature.regime.value
     ('dense', 'none', 'zero')
     """
-    n = check_scheme(scheme).fitting_valence(n)
+    n = check_scheme(scheme).fitting_valence(check_limit(check_valence(n), "artifact_indicators(n)", "valence n"))
     return _indicators(scheme, n)
 

@@ -78,7 +78,7 @@ from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.schemes.box_spline import BOX_POINTS, DEGREE, regular_patch
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, Lattice, lattice
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import check_bits, check_depth, check_valence
+from symdecomp.validate import check_bits, check_depth, check_limit, check_valence
 from symdecomp.verify.bezier import (
     bspline_to_bezier,
     certify_sign,
@@ -332,7 +332,7 @@ def c1_test(scheme: Scheme, n: int, *, max_depth: int = 6, prec: int = 64) -> C1
     balls, ``16..MAX_BITS`` (65536; :mod:`symdecomp.validate`).
     """
     check_scheme(scheme)
-    n = check_valence(n)
+    n = check_limit(check_valence(n), "c1_test(n)", "valence n")
     max_depth, prec = check_depth(max_depth), check_bits(prec)
     with flint.ctx.workprec(prec):
         result = _test(scheme, n, max_depth, prec)

@@ -54,7 +54,7 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_digits, check_valence
+from symdecomp.validate import check_digits, check_limit, check_valence
 from symdecomp.verify.certify import Certificate
 from symdecomp.verify.result import CrossCheckStatus
 
@@ -69,7 +69,7 @@ def certify_ring(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks |
     ``method``: ``"charpoly"`` (the identity above, dense FLINT characteristic polynomials) or
     ``"structure"`` (:func:`structural_certificate`: ``O(n)``, for large valences).
     """
-    n, digits = check_valence(n), check_digits(digits)
+    n, digits = check_limit(check_valence(n), "certify_ring(n)", "valence n"), check_digits(digits)
     if method not in ("charpoly", "structure"):
         raise InvalidInputError(f"method must be 'charpoly' or 'structure', got {method!r}")
     blocks = blocks or ring_blocks(scheme, rings)

@@ -42,7 +42,7 @@ from symdecomp.analysis.characteristic import check_applicable, outer_charpoly
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import cached, check_valence
+from symdecomp.validate import cached, check_limit, check_valence
 from symdecomp.verify.c1_spectrum import (
     ball_text,
     exact_charpoly,
@@ -283,7 +283,7 @@ def second_order_eigenstructure(scheme: Scheme, n: int) -> CurvatureResult:
     >>> r.regime.value, r.cause, r.mu[0].exact
     ('bounded', 'elliptic', True)
     """
-    n = check_scheme(scheme).fitting_valence(n)
+    n = check_scheme(scheme).fitting_valence(check_limit(check_valence(n), "second_order_eigenstructure(n)", "valence n"))
     check_applicable(scheme)
     for prec in PRECISIONS:
         result = _structure(scheme, n, prec)

@@ -83,7 +83,7 @@ from symdecomp.analysis.characteristic import check_applicable, frequency_blocks
 from symdecomp.analysis.second_order import height_eigenvector
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import check_bits, check_depth, check_rational, check_valence
+from symdecomp.validate import check_bits, check_depth, check_limit, check_rational, check_valence
 from symdecomp.verify.bezier import SignCertificate
 from symdecomp.verify.c1 import bezier_nets, characteristic_nets, place_text
 from symdecomp.verify.c1_spectrum import ball_text, frequency_zero_eigenvalues, quadratic_roots, real_at, spectral_conditions
@@ -401,7 +401,7 @@ def _classify(scheme: Scheme, n: int, a: Fraction, b: Fraction, t: Fraction, max
 
 def _arguments(scheme, n, elliptic, hyperbolic, angle, max_depth, prec):
     check_scheme(scheme)
-    n = check_valence(n)
+    n = check_limit(check_valence(n), "classify_shape(n)", "valence n")
     a, b, t = check_rational(elliptic, "elliptic"), check_rational(hyperbolic, "hyperbolic"), check_rational(angle, "angle")
     max_depth, prec = check_depth(max_depth), check_bits(prec)
     if a == 0 and b == 0:

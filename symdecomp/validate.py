@@ -66,6 +66,12 @@ __all__ = [
     "FLOAT_DIGITS",
     "DEFAULT_BUDGET",
     "MAX_REPORT_VALENCE",
+    "MAX_MESH_VALENCE",
+    "MAX_COORDINATE",
+    "MAX_NUMBER_CHARS",
+    "MAX_MESH_FILE_BYTES",
+    "check_mesh_valence",
+    "mesh_memory",
 ]
 
 #: Most significant digits printed (a value is evaluated at a little more than this).
@@ -95,6 +101,21 @@ DEFAULT_BUDGET = 60.0
 #: The largest valence of a report (:mod:`symdecomp.output.report`, ``symdecomp report --n``): its tables grow
 #: with every valence (2n + 1 eigenvalues, masks of 2n + 1 weights) and the eigen-polygon figure has n panels a row.
 MAX_REPORT_VALENCE = 16
+
+
+#: The largest valence of a mesh's vertex that is analysed (``inspect``, ``design --mesh``, the API's mesh analyses):
+#: the valence bound of ``design --n``; a fan of thousands of faces is read, and refused where it is analysed.
+MAX_MESH_VALENCE = 64
+#: The largest magnitude of a mesh coordinate (read from a file or given as an array): products and sums of a few
+#: coordinates stay far inside float64's range, so limit positions, normals and tangents are finite.
+MAX_COORDINATE = 1e12
+#: The most characters of one number in a mesh text file: the exact decimal of every double of magnitude at most
+#: :data:`MAX_COORDINATE` fits (a 5000-digit number does not).
+MAX_NUMBER_CHARS = 1100
+#: The largest mesh file read (bytes), from a path or standard input, whatever size the file system reports.
+MAX_MESH_FILE_BYTES = 512 * 2**20
+#: Measured peak memory of reading and checking a mesh: bytes per byte of the file and per corner of its faces.
+_MESH_BYTES_PER_FILE_BYTE, _MESH_BYTES_PER_CORNER = 8, 160
 
 
 def _kind(value) -> str:
@@ -337,6 +358,22 @@ def check_memory(estimate: int, what: str) -> None:
             f"{what} would need about {_human(estimate)} of memory, more than the limit of {_human(limit)}; "
             "choose a smaller valence"
         )
+
+
+def check_mesh_valence(n: int, vertex: int, name: str = "mesh") -> int:
+    """``n`` if the vertex's valence is at most :data:`MAX_MESH_VALENCE`; else one line naming the mesh and the vertex."""
+    from symdecomp.errors import InvalidMeshError
+
+    if n > MAX_MESH_VALENCE:
+        raise InvalidMeshError(f"{name}: vertex {vertex} has valence {n}; a mesh's vertices are analysed up to valence "
+                               f"{MAX_MESH_VALENCE}")
+    return n
+
+
+def mesh_memory(file_bytes: int = 0, corners: int = 0) -> int:
+    """The estimated peak memory (bytes) of reading and checking a mesh file of ``file_bytes`` bytes, or a mesh of
+    ``corners`` face corners in all, as measured (a 1M-face quad OBJ of 60 MB: about 700 MB)."""
+    return _MESH_BYTES_PER_FILE_BYTE * int(file_bytes) + _MESH_BYTES_PER_CORNER * int(corners)
 
 
 def _human(size: float) -> str:

@@ -57,7 +57,7 @@ from fractions import Fraction
 import numpy as np
 
 from symdecomp.errors import InvalidMeshError
-from symdecomp.schemes.mesh_tags import MeshDefects, MeshTags
+from symdecomp.schemes.mesh_tags import MeshTags
 from symdecomp.schemes.mesh_topology import check_faces
 from symdecomp.validate import MAX_COORDINATE, MAX_MESH_VALENCE, check_memory, check_mesh_valence, mesh_memory
 
@@ -84,8 +84,9 @@ def exact_coordinate(x, where: str) -> Fraction:
         value = Fraction(f)
     else:
         raise InvalidMeshError(f"{where}: coordinate {x!r:.40} is not a real number")
-    if abs(value) > MAX_COORDINATE:
-        raise InvalidMeshError(f"{where}: coordinate {float(value):.6g} is larger in magnitude than {MAX_COORDINATE:g} (the bound of a mesh coordinate)")
+    if abs(value) > 2 * MAX_COORDINATE or abs(float(value)) > MAX_COORDINATE:
+        raise InvalidMeshError(f"{where}: coordinate {str(x)[:30]} is larger in magnitude than {MAX_COORDINATE:g} (the bound of a mesh "
+                               "coordinate)")
     return value
 
 

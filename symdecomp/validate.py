@@ -114,8 +114,9 @@ MAX_COORDINATE = 1e12
 MAX_NUMBER_CHARS = 1100
 #: The largest mesh file read (bytes), from a path or standard input, whatever size the file system reports.
 MAX_MESH_FILE_BYTES = 512 * 2**20
-#: Measured peak memory of reading and checking a mesh: bytes per byte of the file and per corner of its faces.
-_MESH_BYTES_PER_FILE_BYTE, _MESH_BYTES_PER_CORNER = 8, 160
+#: Measured peak memory of reading and checking a mesh: bytes per byte of the file (a 1M-face quad OBJ of 69 MB:
+#: 750 MB in all), per corner of its faces and per vertex (1M quads from arrays: 510 MB).
+_MESH_BYTES_PER_FILE_BYTE, _MESH_BYTES_PER_CORNER, _MESH_BYTES_PER_VERTEX = 11, 110, 48
 
 
 def _kind(value) -> str:
@@ -370,10 +371,14 @@ def check_mesh_valence(n: int, vertex: int, name: str = "mesh") -> int:
     return n
 
 
-def mesh_memory(file_bytes: int = 0, corners: int = 0) -> int:
-    """The estimated peak memory (bytes) of reading and checking a mesh file of ``file_bytes`` bytes, or a mesh of
-    ``corners`` face corners in all, as measured (a 1M-face quad OBJ of 60 MB: about 700 MB)."""
-    return _MESH_BYTES_PER_FILE_BYTE * int(file_bytes) + _MESH_BYTES_PER_CORNER * int(corners)
+def mesh_memory(file_bytes: int = 0, corners: int = 0, vertices: int = 0) -> int:
+    """The estimated peak memory (bytes) of reading a mesh file of ``file_bytes`` bytes and of checking a mesh of
+    ``corners`` face corners in all and ``vertices`` vertices, as measured (``benchmarks/bench_meshread.py``).
+
+    >>> round(mesh_memory(file_bytes=69_000_000) / 2**20), round(mesh_memory(corners=4_000_000, vertices=1_000_000) / 2**20)
+    (724, 466)
+    """
+    return _MESH_BYTES_PER_FILE_BYTE * int(file_bytes) + _MESH_BYTES_PER_CORNER * int(corners) + _MESH_BYTES_PER_VERTEX * int(vertices)
 
 
 def _human(size: float) -> str:

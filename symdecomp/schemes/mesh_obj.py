@@ -114,14 +114,9 @@ def read_obj(data: bytes, name: str) -> ParsedMesh:
 
 
 def _fast(lines: list[bytes], name: str) -> ParsedMesh:
-    vlines, flines, others = [], [], []
-    for number_, line in enumerate(lines, 1):
-        if line[:2] == b"v ":
-            vlines.append(line)
-        elif line[:2] == b"f ":
-            flines.append(line)
-        else:
-            others.append((number_, line))
+    vlines = [line for line in lines if line[:2] == b"v "]
+    flines = [line for line in lines if line[:2] == b"f "]
+    others = [(k, line) for k, line in enumerate(lines, 1) if not line.startswith((b"v ", b"f "))] if len(vlines) + len(flines) < len(lines) else []
     tags = _TagReader(name)
     for number_, line in others:
         words = line.split(b"#", 1)[0].decode("utf-8", "replace").split()
@@ -134,33 +129,46 @@ def _fast(lines: list[bytes], name: str) -> ParsedMesh:
 
 
 def _fast_vertices(vlines: list[bytes]) -> np.ndarray:
-    rows = [line.split() for line in vlines]
-    if any(len(r) != 4 for r in rows):
+    """``v x y z`` lines as a ``(V, 3)`` array: every line exactly 4 tokens, the numbers of the grammar, in the bound."""
+    blob = b"\n".join(vlines)
+    tokens = blob.split()
+    count = len(vlines)
+    if len(tokens) != 4 * count or tokens[::4].count(b"v") != count or tokens.count(b"v") != count:
         raise _Irregular
-    flat = [x for r in rows for x in r[1:]]
-    if flat and (b"".join(flat).translate(None, _NUMBER_BYTES) or max(map(len, flat)) > MAX_NUMBER_CHARS):
-        raise _Irregular
-    try:
-        floats = np.array(flat, dtype=np.float64).reshape(-1, 3)
-    except ValueError:
-        raise _Irregular from None
+    if blob.translate(None, _NUMBER_BYTES + b"v \t\r\n\x0b\x0c") or (tokens and max(map(len, tokens)) > 40):
+        raise _Irregular  # long numbers (up to the bound) and other characters: the line-by-line reader decides
+    floats = np.empty((count, 3))
+    for k in range(3):
+        column = np.fromstring(b" ".join(tokens[k + 1::4]), dtype=np.float64, sep=" ")
+        if len(column) != count:
+            raise _Irregular
+        floats[:, k] = column
     if not (np.abs(floats) <= MAX_COORDINATE).all():
         raise _Irregular
     return floats
 
 
+_SPACE = np.zeros(256, dtype=bool)
+_SPACE[list(b" \t\r\n\x0b\x0c")] = True
+
+
 def _fast_faces(flines: list[bytes], count: int) -> tuple[np.ndarray, np.ndarray]:
-    rows = [line.split() for line in flines]
-    offsets = np.zeros(len(rows) + 1, dtype=np.int64)
-    np.cumsum([len(r) - 1 for r in rows], out=offsets[1:])
-    joined = b" ".join(x for r in rows for x in r[1:])
-    if b"/" in joined:
-        joined = re.sub(rb"/[^ ]*", b"", joined)
-    flat = joined.split()
-    if len(flat) != offsets[-1] or joined.translate(None, b"0123456789 ") or (flat and max(map(len, flat)) > 12):
+    """``f i j k ..`` lines (positive indices, ``i/t/n`` forms) as ``(offsets, corners)``."""
+    blob = b"\n".join(flines)
+    if blob.translate(None, b"0123456789/ \t\r\n\x0b\x0c") != b"f" * len(flines):
         raise _Irregular
-    corners = np.array(flat, dtype=np.int64) - 1
-    if len(corners) and (corners.min() < 0 or corners.max() >= count):
+    blob = blob.replace(b"f", b" ")
+    if b"/" in blob:
+        blob = re.sub(rb"/[0-9/]*", b"", blob)
+    raw = np.frombuffer(blob, dtype=np.uint8)
+    space = _SPACE[raw]
+    starts = ~space & np.concatenate(([True], space[:-1]))
+    line = np.searchsorted(np.flatnonzero(raw == 10), np.flatnonzero(starts))
+    sizes = np.bincount(line, minlength=len(flines))
+    offsets = np.zeros(len(flines) + 1, dtype=np.int64)
+    np.cumsum(sizes, out=offsets[1:])
+    corners = np.fromstring(blob, dtype=np.int64, sep=" ") - 1 if offsets[-1] else np.zeros(0, dtype=np.int64)
+    if len(corners) != offsets[-1] or (len(corners) and (corners.min() < 0 or corners.max() >= count)):
         raise _Irregular
     return offsets, corners
 

@@ -68,24 +68,40 @@ def _fail(name: str, message: str):
     raise InvalidMeshError(f"{name}: {message}")
 
 
-def _degenerate(points, offsets, corners, exact_point) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(small, repeated, flat)`` boolean per face: fewer than 3 corners, a repeated corner, zero area."""
-    count, sizes = len(offsets) - 1, np.diff(offsets)
-    face = face_ids(offsets)
-    small = sizes < 3
-    key = np.sort(face * np.int64(len(points)) + corners)
-    repeated = np.zeros(count, dtype=bool)
-    repeated[(key[1:][key[1:] == key[:-1]] // max(len(points), 1)).astype(np.int64)] = True
-    nxt, _ = next_corners(offsets)
-    p, q = points[corners], points[corners[nxt]]
-    cross = np.cross(p, q)
-    area = np.stack([np.bincount(face, weights=cross[:, c], minlength=count) for c in range(3)], axis=1)
-    scale = np.bincount(face, weights=np.abs(p).sum(axis=1) * np.abs(q).sum(axis=1), minlength=count)
-    undecided = ~(np.abs(area).max(axis=1, initial=0.0) > (sizes + 8) * _EPS * scale) & ~small & ~repeated
-    flat = np.zeros(count, dtype=bool)
-    for i in np.flatnonzero(undecided):
-        flat[i] = _exactly_flat([exact_point(int(v)) for v in corners[offsets[i]:offsets[i + 1]]])
-    return small, repeated, flat
+def _groups(offsets: np.ndarray, corners: np.ndarray, chunk: int = 1 << 18):
+    """``(k, ids, rows)`` for the faces of each size ``k``, in chunks: ``rows[i]`` is face ``ids[i]``'s corners."""
+    sizes = np.diff(offsets)
+    for k in np.unique(sizes).tolist():
+        every = np.flatnonzero(sizes == k)
+        for at in range(0, len(every), max(chunk // max(k, 1), 1)):
+            ids = every[at:at + max(chunk // max(k, 1), 1)]
+            yield k, ids, corners[offsets[ids][:, None] + np.arange(k)]
+
+
+def _degenerate(points, offsets, corners, exact_point) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``(small, repeated, flat, key)`` per face: fewer than 3 corners, a repeated corner, zero area, and a hash of
+    its sorted corners (equal for faces on the same corners)."""
+    count = len(offsets) - 1
+    small, repeated, flat = np.zeros(count, dtype=bool), np.zeros(count, dtype=bool), np.zeros(count, dtype=bool)
+    key = np.zeros(count, dtype=np.uint64)
+    for k, ids, rows in _groups(offsets, corners):
+        if k < 3:
+            small[ids] = True
+            continue
+        srt = np.sort(rows, axis=1)
+        repeated[ids] = (srt[:, 1:] == srt[:, :-1]).any(axis=1)
+        mix = np.uint64(k)
+        for i in range(k):
+            mix = (mix ^ srt[:, i].astype(np.uint64)) * np.uint64(0x100000001B3)
+        key[ids] = mix
+        p = points[rows]
+        q = np.roll(p, -1, axis=1)
+        area = np.cross(p, q).sum(axis=1)
+        scale = (np.abs(p).sum(axis=2) * np.abs(q).sum(axis=2)).sum(axis=1)
+        undecided = ~(np.abs(area).max(axis=1) > (k + 8) * _EPS * scale) & ~repeated[ids]
+        for i in ids[undecided].tolist():
+            flat[i] = _exactly_flat([exact_point(int(v)) for v in corners[offsets[i]:offsets[i + 1]]])
+    return small, repeated, flat, key
 
 
 def _exactly_flat(pts: list) -> bool:
@@ -98,15 +114,21 @@ def _exactly_flat(pts: list) -> bool:
     return not any(area)
 
 
-def _repeated_faces(offsets, corners, alive: np.ndarray) -> np.ndarray:
-    """Per face: whether it has the same corners as an earlier face among ``alive``."""
-    sizes = np.diff(offsets)
-    out = np.zeros(len(sizes), dtype=bool)
-    for k in np.unique(sizes[alive]):
-        ids = np.flatnonzero(alive & (sizes == k))
-        rows = np.sort(corners[offsets[ids][:, None] + np.arange(k)], axis=1)
-        _, first, inverse = np.unique(rows, axis=0, return_index=True, return_inverse=True)
-        out[ids] = first[inverse.reshape(-1)] != np.arange(len(ids))
+def _repeated_faces(offsets, corners, alive: np.ndarray, key: np.ndarray) -> np.ndarray:
+    """Per face: whether it has the same corners as an earlier face among ``alive`` (hash candidates, checked exactly)."""
+    out = np.zeros(len(offsets) - 1, dtype=bool)
+    ids = np.flatnonzero(alive)
+    order = ids[np.argsort(key[ids], kind="stable")]
+    skey = key[order]
+    same = np.flatnonzero(skey[1:] == skey[:-1])
+    candidates = np.unique(np.concatenate((order[same], order[same + 1])))
+    seen: dict = {}
+    for i in candidates.tolist():
+        corners_i = tuple(sorted(corners[offsets[i]:offsets[i + 1]].tolist()))
+        if corners_i in seen:
+            out[i] = True
+        else:
+            seen[corners_i] = i
     return out
 
 
@@ -200,8 +222,7 @@ def _fan_rule(count: int, offsets, corners, name: str, strict: bool) -> tuple[np
     """Rule 4 once: ``(dropped faces mask, non-manifold vertices, the topology it was found on)``."""
     topo = Topology(count, offsets, corners)
     label = topo.fans()
-    pairs = np.unique(np.stack([corners, label], axis=1), axis=0) if len(corners) else np.zeros((0, 2), dtype=np.int64)
-    per_vertex = np.bincount(pairs[:, 0], minlength=count)
+    per_vertex = np.bincount(corners[label == np.arange(len(label))], minlength=count)  # one root corner per fan
     bad = np.flatnonzero(per_vertex > 1)
     if strict and len(bad):
         _fail(name, f"vertex {bad[0]} joins {per_vertex[bad[0]]} separate fans of faces (non-manifold vertex)")
@@ -241,18 +262,18 @@ def check_faces(points: np.ndarray, offsets: np.ndarray, corners: np.ndarray, *,
     if len(offsets) < 2:
         _fail(name, "the mesh has no faces")
     exact_point = exact_point or (lambda v: tuple(Fraction(float(x)) for x in points[v]))
-    small, repeated, flat = _degenerate(points, offsets, corners, exact_point)
+    small, repeated, flat, key = _degenerate(points, offsets, corners, exact_point)
     alive = ~(small | repeated | flat)
     if strict:
         _strict_degenerate(name, offsets, corners, small, repeated, flat)
         isolated = np.flatnonzero(np.bincount(corners, minlength=count) == 0)
         if len(isolated):
             _fail(name, f"vertex {isolated[0]} is in no face (isolated vertex)")
-    twice = _repeated_faces(offsets, corners, alive)
+    twice = _repeated_faces(offsets, corners, alive, key)
     if strict and twice.any():
         i = int(np.flatnonzero(twice)[0])
         f = np.sort(corners[offsets[i]:offsets[i + 1]])
-        first = next(j for j in range(i) if np.array_equal(np.sort(corners[offsets[j]:offsets[j + 1]]), f))
+        first = next(int(j) for j in np.flatnonzero(key == key[i]) if np.array_equal(np.sort(corners[offsets[j]:offsets[j + 1]]), f))
         _fail(name, f"faces {first} and {i} have the same corners {f.tolist()} (duplicate face)")
     kept = np.flatnonzero(alive & ~twice)
     sub_offsets, sub_corners = _select(offsets, corners, kept)
@@ -272,5 +293,6 @@ def check_faces(points: np.ndarray, offsets: np.ndarray, corners: np.ndarray, *,
         non_manifold_edges=crowded, misoriented_edges=same, non_manifold_vertices=tuple(sorted(set(nonmanifold))),
         degenerate_faces=tuple(np.flatnonzero(~alive).tolist()), repeated_faces=tuple(np.flatnonzero(twice).tolist()),
         isolated_vertices=tuple(np.flatnonzero(~used).tolist()),
-        dropped_faces=tuple(np.setdiff1d(np.arange(len(offsets) - 1), kept).tolist()))
+        dropped_faces=tuple(np.flatnonzero(~np.isin(np.arange(len(offsets) - 1), kept, assume_unique=True)).tolist())
+        if len(kept) < len(offsets) - 1 else ())
     return kept, defects, topo

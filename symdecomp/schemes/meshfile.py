@@ -125,7 +125,7 @@ class PolygonMesh:
         return mesh
 
     def _build(self, floats, exact, offsets, corners, name, tags, strict) -> None:
-        check_memory(mesh_memory(corners=len(corners) + 3 * len(floats)), f"{name}: a mesh of {len(floats)} vertices and "
+        check_memory(mesh_memory(corners=len(corners), vertices=len(floats)), f"{name}: a mesh of {len(floats)} vertices and "
                      f"{len(offsets) - 1} faces")
         self.name, self._cache = name, {}
         self.points_array = np.ascontiguousarray(floats, dtype=np.float64)
@@ -321,7 +321,7 @@ def _points(points, name: str) -> tuple[np.ndarray, tuple | None]:
         return floats, None
     if isinstance(points, (str, bytes)) or not hasattr(points, "__len__"):
         raise InvalidMeshError(f"{name}: points must be a sequence of (x, y, z), got {type(points).__name__}")
-    check_memory(mesh_memory(corners=40 * len(points)), f"{name}: a mesh of {len(points)} vertices")
+    check_memory(mesh_memory(vertices=8 * len(points)), f"{name}: a mesh of {len(points)} vertices")
     exact = tuple(_point(p, i, name) for i, p in enumerate(points))
     floats = np.array([[float(c) for c in p] for p in exact], dtype=np.float64).reshape(-1, 3)
     return floats, exact

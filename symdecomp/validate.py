@@ -376,7 +376,7 @@ def mesh_memory(file_bytes: int = 0, corners: int = 0, vertices: int = 0) -> int
     ``corners`` face corners in all and ``vertices`` vertices, as measured (``benchmarks/bench_meshread.py``).
 
     >>> round(mesh_memory(file_bytes=69_000_000) / 2**20), round(mesh_memory(corners=4_000_000, vertices=1_000_000) / 2**20)
-    (724, 466)
+    (724, 465)
     """
     return _MESH_BYTES_PER_FILE_BYTE * int(file_bytes) + _MESH_BYTES_PER_CORNER * int(corners) + _MESH_BYTES_PER_VERTEX * int(vertices)
 

@@ -19,7 +19,7 @@ float is its exact value. Other elements and properties are skipped. Truncated d
 >>> read_ply(text.replace(b"face 1", b"face 300000000"), "t.ply")
 Traceback (most recent call last):
 ...
-symdecomp.errors.InvalidMeshError: t.ply: the header announces 300000000 'face' elements, more than the 28 bytes of data after it can hold
+symdecomp.errors.InvalidMeshError: t.ply: not a readable PLY file: the header announces 300000000 'face' elements, more than the 28 bytes of data after it can hold
 """
 
 from __future__ import annotations
@@ -79,7 +79,7 @@ def read_ply(data: bytes, name: str) -> ParsedMesh:
 def _header(data: bytes, name: str) -> tuple[str | None, list[_Element], int]:
     end = data.find(b"end_header", 0, _MAX_HEADER)
     if not data.startswith(b"ply") or end < 0:
-        raise InvalidMeshError(f"{name}: not a PLY file (it must start with 'ply' and have 'end_header' within {_MAX_HEADER} bytes)")
+        raise InvalidMeshError(f"{name}: not a readable PLY file (it must start with 'ply' and have 'end_header' within {_MAX_HEADER} bytes)")
     body = data.find(b"\n", end) + 1 or len(data)
     lines = data[:end].decode("ascii", "replace").splitlines()[1:]
     fmt, elements = "missing", []
@@ -113,8 +113,8 @@ def _check_counts(elements: list[_Element], size: int, fmt: str | None, name: st
         per = sum(2 for _ in e.properties) if fmt is None else sum(np.dtype(p.count or p.kind).itemsize for p in e.properties)
         need += e.count * max(per, 1 if fmt is None else 0)
         if need > size:
-            raise InvalidMeshError(f"{name}: the header announces {e.count} {e.name!r} elements, more than the {size} bytes of data "
-                                   "after it can hold")
+            raise InvalidMeshError(f"{name}: not a readable PLY file: the header announces {e.count} {e.name!r} elements, more than "
+                                   f"the {size} bytes of data after it can hold")
 
 
 def _vertex_arrays(columns: dict, element: _Element, name: str, exact=None):
@@ -148,7 +148,7 @@ class _Binary:
     def _take(self, dtype, count: int, what: str) -> np.ndarray:
         dtype = np.dtype(dtype)
         if self.pos + dtype.itemsize * count > len(self.data):
-            raise InvalidMeshError(f"{self.name}: the binary data ends inside the {what} (truncated file)")
+            raise InvalidMeshError(f"{self.name}: not a readable PLY file: the binary data ends inside the {what} (truncated file)")
         out = np.frombuffer(self.data, dtype=dtype, count=count, offset=self.pos)
         self.pos += dtype.itemsize * count
         return out
@@ -213,7 +213,7 @@ class _Ascii:
 
     def _take(self, count: int, what: str) -> list[bytes]:
         if self.pos + count > len(self.tokens):
-            raise InvalidMeshError(f"{self.name}: the data ends inside the {what} (truncated file)")
+            raise InvalidMeshError(f"{self.name}: not a readable PLY file: the data ends inside the {what} (truncated file)")
         out = self.tokens[self.pos:self.pos + count]
         self.pos += count
         return out

@@ -287,7 +287,7 @@ def check_faces(points: np.ndarray, offsets: np.ndarray, corners: np.ndarray, *,
         nonmanifold += bad
         kept = kept[~drop]
     if not len(kept):
-        _fail(name, "no face is left once the faces a scheme cannot take are left out")
+        _fail(name, f"no face can be kept ({_first_reason(points, offsets, corners, name, exact_point)})")
     used = np.bincount(sub_corners, minlength=count) > 0
     defects = MeshDefects(
         non_manifold_edges=crowded, misoriented_edges=same, non_manifold_vertices=tuple(sorted(set(nonmanifold))),
@@ -296,3 +296,12 @@ def check_faces(points: np.ndarray, offsets: np.ndarray, corners: np.ndarray, *,
         dropped_faces=tuple(np.flatnonzero(~np.isin(np.arange(len(offsets) - 1), kept, assume_unique=True)).tolist())
         if len(kept) < len(offsets) - 1 else ())
     return kept, defects, topo
+
+
+def _first_reason(points, offsets, corners, name: str, exact_point) -> str:
+    """Why the first face was left out: the strict check's line without the name."""
+    try:
+        check_faces(points, offsets, corners, name=name, strict=True, exact_point=exact_point)
+    except InvalidMeshError as exc:
+        return str(exc).removeprefix(f"{name}: ")
+    return "every face was left out"  # pragma: no cover - a strict check refuses what lenient drops

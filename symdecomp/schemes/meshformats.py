@@ -158,6 +158,11 @@ def decode_mesh(data: bytes, fmt: str, *, name: str = "mesh", strict: bool = Fal
     fmt = mesh_format(name, fmt)
     check_memory(mesh_memory(file_bytes=len(data)), f"{name}: reading a mesh file of {len(data)} bytes")
     data = bytes(data)
+    if fmt != "ply" and not data.isascii():
+        try:
+            data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise InvalidMeshError(f"{name}: not a text file (byte {exc.start} is not UTF-8)") from None
     parsed = read_ply(data, name) if fmt == "ply" else read_obj(data, name) if fmt == "obj" else _read_off(data, name)
     return PolygonMesh.from_parsed(parsed.floats, parsed.exact_point, parsed.offsets, parsed.corners, name=name, tags=parsed.tags,
                                    strict=strict)
@@ -179,8 +184,6 @@ def _read_off(data: bytes, name: str) -> ParsedMesh:
     if len(words) != 3 or not all(w.isdigit() and len(w) <= 12 for w in words):
         raise InvalidMeshError(f"{name}: after OFF the counts 'vertices faces edges' (three non-negative integers) are expected")
     nv, nf = int(words[0]), int(words[1])
-    if 6 * nv + 8 * nf > len(data):
-        raise InvalidMeshError(f"{name}: the header announces {nv} vertices and {nf} faces, more than the file's {len(data)} bytes can hold")
     points, sizes, corners = [], [], []
     for number_, words in lines:
         where = f"{name}: line {number_}"

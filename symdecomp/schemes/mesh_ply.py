@@ -16,10 +16,10 @@ float is its exact value. Other elements and properties are skipped. Truncated d
 >>> m = read_ply(text, "t.ply")
 >>> m.corners.tolist(), m.exact_point(2)
 ([0, 1, 2], (Fraction(0, 1), Fraction(1, 1), Fraction(1, 2)))
->>> read_ply(text.replace(b"face 1", b"face 300000000"), "t.ply")
+>>> read_ply(text.replace(b"face 1", b"face 300000000"), "t.ply")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-symdecomp.errors.InvalidMeshError: t.ply: not a readable PLY file: the header announces 300000000 'face' elements, more than the 28 bytes of data after it can hold
+symdecomp.errors.InvalidMeshError: t.ply: not a readable PLY file: the header announces 300000000 'face' elements, more ...
 """
 
 from __future__ import annotations

@@ -86,7 +86,8 @@ def exact_coordinate(x, where: str) -> Fraction:
         raise InvalidMeshError(f"{where}: coordinate {x!r:.40} is not a real number")
     if abs(value) > 2 * MAX_COORDINATE or abs(float(value)) > MAX_COORDINATE:
         digits = len(str(abs(value.numerator) // value.denominator)) if abs(value) < 10**1000 else None
-        shown = f"{float(value):g}" if digits is not None and digits <= 308 else f"of {digits or int(value.numerator.bit_length() * 0.30103) + 1} digits"
+        digits = digits or int(value.numerator.bit_length() * 0.30103) + 1
+        shown = f"{float(value):g}" if digits <= 308 else f"of {digits} digits"
         raise InvalidMeshError(f"{where}: coordinate {shown} is larger in magnitude than {MAX_COORDINATE:g} (the bound of a mesh "
                                "coordinate)")
     return value

@@ -237,7 +237,8 @@ TRIANGLE_ASCII = b"0 0 0\n1 0 0\n0 1 0\n"
 
 
 @pytest.mark.parametrize(("data", "words"), [
-    (ply_header("ascii", 3, 300_000_000) + TRIANGLE_ASCII + b"3 0 1 2\n", "announces 300000000 'face' elements, more than the 26 bytes"),
+    (ply_header("ascii", 3, 300_000_000) + TRIANGLE_ASCII + b"3 0 1 2\n",
+     "announces 300000000 'face' elements, more than the 26 bytes"),
     (ply_header("binary_little_endian", 10**9, 1), "announces 1000000000 'vertex' elements, more than the 0 bytes"),
     (ply_header("binary_little_endian", 3, 1) + struct.pack("<9d", 0, 0, 0, 1, 0, 0, 0, 1, 0) + b"\x03\x00\x00",
      "the binary data ends inside the face 0 (truncated file)"),
@@ -246,7 +247,7 @@ TRIANGLE_ASCII = b"0 0 0\n1 0 0\n0 1 0\n"
     (ply_header("ascii", 3, 1) + TRIANGLE_ASCII + b"3 0 nan 2\n", "face 0: vertex index 'nan' is not an integer"),
     (ply_header("ascii", 3, 1) + TRIANGLE_ASCII + b"3 0 inf 2\n", "face 0: vertex index 'inf' is not an integer"),
     (ply_header("ascii", 3, 1) + TRIANGLE_ASCII + b"3 0 -1 2\n", "face 0: vertex index -1 is out of range"),
-    (ply_header("ascii", 3, 1) + b"0 0 0\n1 0 0\n0 1e309 0\n3 0 1 2\n", "vertex 2: coordinates [0.0, inf, 0.0] are not finite numbers of magnitude at most 1e+12"),
+    (ply_header("ascii", 3, 1) + b"0 0 0\n1 0 0\n0 1e309 0\n3 0 1 2\n", "vertex 2: coordinates [0.0, inf, 0.0] are not finite numbers"),
     (ply_header("binary_little_endian", 3, 1) + struct.pack("<9d", 0, 0, 0, 1, 0, 0, 0, float("nan"), 0) + b"\x03" +
      struct.pack("<3i", 0, 1, 2), "vertex 2: coordinates [0.0, nan, 0.0] are not finite"),
 ])

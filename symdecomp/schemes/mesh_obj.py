@@ -32,6 +32,7 @@ most :data:`MAX_LINE_BYTES` bytes. Every refusal is one line naming the file and
 from __future__ import annotations
 
 import re
+import warnings
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -116,6 +117,8 @@ def read_obj(data: bytes, name: str) -> ParsedMesh:
 def _fast(lines: list[bytes], name: str) -> ParsedMesh:
     vlines = [line for line in lines if line[:2] == b"v "]
     flines = [line for line in lines if line[:2] == b"f "]
+    if not vlines:
+        raise _Irregular  # the line reader says what is missing
     others = [(k, line) for k, line in enumerate(lines, 1) if not line.startswith((b"v ", b"f "))] if len(vlines) + len(flines) < len(lines) else []
     tags = _TagReader(name)
     for number_, line in others:
@@ -139,13 +142,23 @@ def _fast_vertices(vlines: list[bytes]) -> np.ndarray:
         raise _Irregular  # long numbers (up to the bound) and other characters: the line-by-line reader decides
     floats = np.empty((count, 3))
     for k in range(3):
-        column = np.fromstring(b" ".join(tokens[k + 1::4]), dtype=np.float64, sep=" ")
+        column = _numbers(b" ".join(tokens[k + 1::4]), np.float64)
         if len(column) != count:
             raise _Irregular
         floats[:, k] = column
     if not (np.abs(floats) <= MAX_COORDINATE).all():
         raise _Irregular
     return floats
+
+
+def _numbers(text: bytes, dtype) -> np.ndarray:
+    """The numbers of a checked text, parsed in C; any token it cannot read sends the file to the line reader."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        try:
+            return np.fromstring(text, dtype=dtype, sep=" ")
+        except (ValueError, DeprecationWarning):
+            raise _Irregular from None
 
 
 _SPACE = np.zeros(256, dtype=bool)
@@ -167,7 +180,7 @@ def _fast_faces(flines: list[bytes], count: int) -> tuple[np.ndarray, np.ndarray
     sizes = np.bincount(line, minlength=len(flines))
     offsets = np.zeros(len(flines) + 1, dtype=np.int64)
     np.cumsum(sizes, out=offsets[1:])
-    corners = np.fromstring(blob, dtype=np.int64, sep=" ") - 1 if offsets[-1] else np.zeros(0, dtype=np.int64)
+    corners = _numbers(blob, np.int64) - 1 if offsets[-1] else np.zeros(0, dtype=np.int64)
     if len(corners) != offsets[-1] or (len(corners) and (corners.min() < 0 or corners.max() >= count)):
         raise _Irregular
     return offsets, corners

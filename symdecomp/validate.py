@@ -72,6 +72,7 @@ __all__ = [
     "MAX_MESH_FILE_BYTES",
     "check_mesh_valence",
     "mesh_memory",
+    "MESH_ADVICE",
 ]
 
 #: Most significant digits printed (a value is evaluated at a little more than this).
@@ -114,6 +115,8 @@ MAX_COORDINATE = 1e12
 MAX_NUMBER_CHARS = 1100
 #: The largest mesh file read (bytes), from a path or standard input, whatever size the file system reports.
 MAX_MESH_FILE_BYTES = 512 * 2**20
+#: What a refusal of a mesh for its memory advises.
+MESH_ADVICE = "split the mesh, or read a smaller one"
 #: Measured peak memory of reading and checking a mesh: bytes per byte of the file (a 1M-face quad OBJ of 69 MB:
 #: 750 MB in all), per corner of its faces and per vertex (1M quads from arrays: 510 MB).
 _MESH_BYTES_PER_FILE_BYTE, _MESH_BYTES_PER_CORNER, _MESH_BYTES_PER_VERTEX = 11, 110, 48
@@ -351,13 +354,12 @@ def _memory_limit() -> int:
     return limit if mapped == resource.RLIM_INFINITY else min(limit, mapped)
 
 
-def check_memory(estimate: int, what: str) -> None:
-    """Refuse a step whose estimated memory ``estimate`` (bytes) is beyond :func:`_memory_limit`."""
+def check_memory(estimate: int, what: str, advice: str = "choose a smaller valence") -> None:
+    """Refuse a step whose estimated memory ``estimate`` (bytes) is beyond :func:`_memory_limit`; ``advice`` ends the line."""
     limit = _memory_limit() if MEMORY_LIMIT is None else MEMORY_LIMIT
     if estimate > limit:
         raise ResourceLimitError(
-            f"{what} would need about {_human(estimate)} of memory, more than the limit of {_human(limit)}; "
-            "choose a smaller valence"
+            f"{what} would need about {_human(estimate)} of memory, more than the limit of {_human(limit)}; {advice}"
         )
 
 

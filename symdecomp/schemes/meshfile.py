@@ -59,7 +59,7 @@ import numpy as np
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_tags import MeshTags
 from symdecomp.schemes.mesh_topology import check_faces
-from symdecomp.validate import MAX_COORDINATE, MAX_MESH_VALENCE, check_memory, check_mesh_valence, mesh_memory
+from symdecomp.validate import MAX_COORDINATE, MAX_MESH_VALENCE, MESH_ADVICE, check_memory, check_mesh_valence, mesh_memory
 
 __all__ = ["PolygonMesh", "exact_coordinate", "scheme_for_mesh"]
 
@@ -129,7 +129,7 @@ class PolygonMesh:
 
     def _build(self, floats, exact, offsets, corners, name, tags, strict) -> None:
         check_memory(mesh_memory(corners=len(corners), vertices=len(floats)), f"{name}: a mesh of {len(floats)} vertices and "
-                     f"{len(offsets) - 1} faces")
+                     f"{len(offsets) - 1} faces", MESH_ADVICE)
         self.name, self._cache = name, {}
         self.points_array = np.ascontiguousarray(floats, dtype=np.float64)
         self.points_array.flags.writeable = False
@@ -324,7 +324,7 @@ def _points(points, name: str) -> tuple[np.ndarray, tuple | None]:
         return floats, None
     if isinstance(points, (str, bytes)) or not hasattr(points, "__len__"):
         raise InvalidMeshError(f"{name}: points must be a sequence of (x, y, z), got {type(points).__name__}")
-    check_memory(mesh_memory(vertices=8 * len(points)), f"{name}: a mesh of {len(points)} vertices")
+    check_memory(mesh_memory(vertices=8 * len(points)), f"{name}: a mesh of {len(points)} vertices", MESH_ADVICE)
     exact = tuple(_point(p, i, name) for i, p in enumerate(points))
     floats = np.array([[float(c) for c in p] for p in exact], dtype=np.float64).reshape(-1, 3)
     return floats, exact
@@ -347,7 +347,7 @@ def _faces(faces, count: int, name: str) -> tuple[np.ndarray, np.ndarray]:
     else:
         if isinstance(faces, (str, bytes)) or not hasattr(faces, "__len__"):
             raise InvalidMeshError(f"{name}: faces must be a sequence of index sequences, got {type(faces).__name__}")
-        check_memory(mesh_memory(corners=4 * len(faces)), f"{name}: a mesh of {len(faces)} faces")
+        check_memory(mesh_memory(corners=4 * len(faces)), f"{name}: a mesh of {len(faces)} faces", MESH_ADVICE)
         flat, sizes = [], []
         for i, f in enumerate(faces):
             if isinstance(f, (str, bytes)) or not hasattr(f, "__len__"):

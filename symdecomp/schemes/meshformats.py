@@ -74,7 +74,7 @@ from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_obj import ParsedMesh, _lines, index, number, read_obj
 from symdecomp.schemes.mesh_ply import read_ply
 from symdecomp.schemes.meshfile import PolygonMesh
-from symdecomp.validate import MAX_MESH_FILE_BYTES, MAX_NUMBER_CHARS, check_memory, mesh_memory
+from symdecomp.validate import MAX_MESH_FILE_BYTES, MAX_NUMBER_CHARS, MESH_ADVICE, check_memory, mesh_memory
 
 __all__ = ["FORMATS", "mesh_format", "read_mesh", "decode_mesh", "encode_mesh"]
 
@@ -125,7 +125,8 @@ def _read_regular(name: str) -> bytes:
         status = os.fstat(handle.fileno())
         if not stat.S_ISREG(status.st_mode):  # replaced between the two looks
             raise InvalidMeshError(f"{name}: not a regular file ({_kind(status.st_mode)})")
-        check_memory(mesh_memory(file_bytes=min(status.st_size, MAX_MESH_FILE_BYTES)), f"{name}: reading a mesh file of {status.st_size} bytes")
+        check_memory(mesh_memory(file_bytes=min(status.st_size, MAX_MESH_FILE_BYTES)), f"{name}: reading a mesh file of {status.st_size} "
+                     "bytes", MESH_ADVICE)
         return _capped(handle, name)
 
 
@@ -156,7 +157,7 @@ def decode_mesh(data: bytes, fmt: str, *, name: str = "mesh", strict: bool = Fal
     if len(data) > MAX_MESH_FILE_BYTES:
         raise InvalidMeshError(f"{name}: more than {MAX_MESH_FILE_BYTES} bytes, the limit of a mesh file")
     fmt = mesh_format(name, fmt)
-    check_memory(mesh_memory(file_bytes=len(data)), f"{name}: reading a mesh file of {len(data)} bytes")
+    check_memory(mesh_memory(file_bytes=len(data)), f"{name}: reading a mesh file of {len(data)} bytes", MESH_ADVICE)
     data = bytes(data)
     if fmt != "ply" and not data.isascii():
         try:

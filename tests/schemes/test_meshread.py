@@ -197,7 +197,8 @@ def test_the_memory_estimate_refuses_before_reading(tmp_path, monkeypatch):
     path = tmp_path / "big.obj"
     path.write_bytes(obj(CUBE_F))
     monkeypatch.setattr(validate, "MEMORY_LIMIT", validate.mesh_memory(file_bytes=100))
-    with pytest.raises(ResourceLimitError, match=r"big.obj: reading a mesh file of \d+ bytes would need about 2 KiB of memory"):
+    words = r"big.obj: reading a mesh file of \d+ bytes would need about 2 KiB of memory, more than the limit of 1 KiB; split the mesh"
+    with pytest.raises(ResourceLimitError, match=words):
         read_mesh(path)
 
 

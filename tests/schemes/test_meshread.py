@@ -324,3 +324,13 @@ def test_the_fast_reader_and_the_line_reader_agree():
     fast, slow = mesh_obj._fast(lines, "m"), mesh_obj._slow(lines, "m")
     assert np.array_equal(fast.floats, slow.floats) and np.array_equal(fast.corners, slow.corners)
     assert [fast.exact_point(i) for i in range(8)] == [slow.exact_point(i) for i in range(8)]
+
+
+def test_tags_follow_the_kept_faces_and_are_dropped_with_the_left_out_elements():
+    faces = [CUBE_F[0], CUBE_F[0]] + CUBE_F[1:] + [(1, 0, 8, 9)]  # face 1 repeats face 0; face 7 is a fin at edge (0, 1)
+    text = obj(faces, CUBE_V + "v 0 -1 0\nv 1 -1 0\n", "t hole 2/0/0 3 7\nt crease 4/1/0 8 9 0 2 3\nt corner 1/1/0 9 1\n")
+    mesh = decode_mesh(text, "obj")
+    assert mesh.face_index.tolist() == [0, 2, 3, 4, 5, 6] and mesh.tags.holes == frozenset({2})  # file face 3 is kept face 2
+    assert dict(mesh.tags.creases) == {(0, 2): 3} and dict(mesh.tags.corners) == {}
+    with pytest.raises(InvalidMeshError, match=r"^mesh: faces 0 and 1 have the same corners \[0, 1, 2, 3\] \(duplicate face\)$"):
+        decode_mesh(text, "obj", strict=True)

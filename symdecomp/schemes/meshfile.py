@@ -152,10 +152,10 @@ class PolygonMesh:
         return tuple(Fraction(float(x)) for x in self.points_array[v])
 
     @property
-    def points(self) -> tuple[tuple[Fraction, Fraction, Fraction], ...]:
-        """Every vertex's exact coordinates (built on first use: a million vertices take seconds)."""
+    def points(self) -> Sequence[tuple[Fraction, Fraction, Fraction]]:
+        """Every vertex's exact coordinates, ``points[i]`` as :meth:`exact_point` (a sequence that makes each on first use)."""
         if "points" not in self._cache:
-            self._cache["points"] = self._exact if isinstance(self._exact, tuple) else tuple(map(self.exact_point, range(len(self.points_array))))
+            self._cache["points"] = self._exact if isinstance(self._exact, tuple) else ExactPoints(self)
         return self._cache["points"]
 
     @property
@@ -309,6 +309,38 @@ class PolygonMesh:
         self.require_lattice(lattice)
         t = self._topo
         return tuple(np.flatnonzero((t.faces_at > 0) & ~t.boundary & (t.faces_at != lattice.regular_valence)).tolist())
+
+
+class ExactPoints(Sequence):
+    """A mesh's exact points as a read-only sequence: ``points[i]`` is made on first use and kept; equal to a tuple of
+    the same points."""
+
+    def __init__(self, mesh: PolygonMesh):
+        self._mesh = mesh
+        self._made: dict = {}
+
+    def __len__(self) -> int:
+        return len(self._mesh.points_array)
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return tuple(self[k] for k in range(*i.indices(len(self))))
+        if isinstance(i, numbers.Integral) and not isinstance(i, bool) and -len(self) <= i < len(self):
+            i = int(i) % len(self)
+            if i not in self._made:
+                self._made[i] = self._mesh.exact_point(i)
+            return self._made[i]
+        raise IndexError(f"{self._mesh.name}: vertex {i!r} is not an index 0..{len(self) - 1}")
+
+    def __eq__(self, other):
+        if not isinstance(other, Sequence) or isinstance(other, (str, bytes)):
+            return NotImplemented
+        return len(self) == len(other) and all(a == b for a, b in zip(self, other))
+
+    __hash__ = None
+
+    def __repr__(self):
+        return f"ExactPoints({self._mesh.name!r}: {len(self)} points)"
 
 
 def _points(points, name: str) -> tuple[np.ndarray, tuple | None]:

@@ -334,3 +334,13 @@ def test_tags_follow_the_kept_faces_and_are_dropped_with_the_left_out_elements()
     assert dict(mesh.tags.creases) == {(0, 2): 3} and dict(mesh.tags.corners) == {}
     with pytest.raises(InvalidMeshError, match=r"^mesh: faces 0 and 1 have the same corners \[0, 1, 2, 3\] \(duplicate face\)$"):
         decode_mesh(text, "obj", strict=True)
+
+
+def test_exact_points_are_made_one_by_one_and_equal_a_tuple():
+    mesh = decode_mesh(b"v 0.1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "obj")
+    points = mesh.points
+    assert len(points) == 3 and not points._made  # nothing made yet
+    assert points[-3] == (Fraction(1, 10), 0, 0) and list(points._made) == [0]
+    assert points == ((Fraction(1, 10), 0, 0), (1, 0, 0), (0, 1, 0)) == tuple(points) and points[1:] == ((1, 0, 0), (0, 1, 0))
+    with pytest.raises(IndexError, match="vertex 3 is not an index 0..2"):
+        points[3]

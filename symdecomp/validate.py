@@ -117,9 +117,9 @@ MAX_NUMBER_CHARS = 1100
 MAX_MESH_FILE_BYTES = 512 * 2**20
 #: What a refusal of a mesh for its memory advises.
 MESH_ADVICE = "split the mesh, or read a smaller one"
-#: Measured peak memory of reading and checking a mesh: bytes per byte of the file (a 1M-face quad OBJ of 69 MB:
-#: 750 MB in all), per corner of its faces and per vertex (1M quads from arrays: 510 MB).
-_MESH_BYTES_PER_FILE_BYTE, _MESH_BYTES_PER_CORNER, _MESH_BYTES_PER_VERTEX = 11, 110, 48
+#: Measured peak memory of reading and checking a mesh: bytes per byte of a text file (a 1M-face quad OBJ of 69 MB:
+#: 750 MB in all), and per corner, face and vertex of the mesh checked (1M quads: 510 MB; 1.56M triangles: 700 MB).
+_MESH_BYTES_PER_FILE_BYTE, _MESH_BYTES_PER_CORNER, _MESH_BYTES_PER_FACE, _MESH_BYTES_PER_VERTEX = 11, 44, 300, 48
 
 
 def _kind(value) -> str:
@@ -373,14 +373,16 @@ def check_mesh_valence(n: int, vertex: int, name: str = "mesh") -> int:
     return n
 
 
-def mesh_memory(file_bytes: int = 0, corners: int = 0, vertices: int = 0) -> int:
-    """The estimated peak memory (bytes) of reading a mesh file of ``file_bytes`` bytes and of checking a mesh of
-    ``corners`` face corners in all and ``vertices`` vertices, as measured (``benchmarks/bench_meshread.py``).
+def mesh_memory(file_bytes: int = 0, corners: int = 0, faces: int = 0, vertices: int = 0) -> int:
+    """The estimated peak memory (bytes) of reading a text mesh file of ``file_bytes`` bytes, plus that of checking a
+    mesh of ``corners`` face corners in all, ``faces`` faces and ``vertices`` vertices, as measured
+    (``benchmarks/bench_meshread.py``).
 
-    >>> round(mesh_memory(file_bytes=69_000_000) / 2**20), round(mesh_memory(corners=4_000_000, vertices=1_000_000) / 2**20)
-    (724, 465)
+    >>> round(mesh_memory(file_bytes=69_000_000) / 2**20), round(mesh_memory(corners=4 * 10**6, faces=10**6, vertices=10**6) / 2**20)
+    (724, 500)
     """
-    return _MESH_BYTES_PER_FILE_BYTE * int(file_bytes) + _MESH_BYTES_PER_CORNER * int(corners) + _MESH_BYTES_PER_VERTEX * int(vertices)
+    return (_MESH_BYTES_PER_FILE_BYTE * int(file_bytes) + _MESH_BYTES_PER_CORNER * int(corners) + _MESH_BYTES_PER_FACE * int(faces)
+            + _MESH_BYTES_PER_VERTEX * int(vertices))
 
 
 def _human(size: float) -> str:

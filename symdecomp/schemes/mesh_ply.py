@@ -31,7 +31,7 @@ import numpy as np
 
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_obj import ParsedMesh, index, number
-from symdecomp.validate import MAX_COORDINATE
+from symdecomp.validate import MAX_COORDINATE, MESH_ADVICE, check_memory, mesh_memory
 
 __all__ = ["read_ply"]
 
@@ -59,6 +59,9 @@ def read_ply(data: bytes, name: str) -> ParsedMesh:
     """Parse a PLY file's bytes (module docstring)."""
     fmt, elements, body = _header(data, name)
     _check_counts(elements, len(data) - body, fmt, name)
+    counts = {e.name: e.count for e in elements}
+    check_memory(len(data) + mesh_memory(corners=3 * counts.get("face", 0), faces=counts.get("face", 0), vertices=counts.get("vertex", 0)),
+                 f"{name}: a PLY mesh of {counts.get('vertex', 0)} vertices and {counts.get('face', 0)} faces", MESH_ADVICE)
     reader = _Ascii(data, body, name) if fmt is None else _Binary(data, body, fmt, name)
     found = {}
     for element in elements:

@@ -128,7 +128,7 @@ class PolygonMesh:
         return mesh
 
     def _build(self, floats, exact, offsets, corners, name, tags, strict) -> None:
-        check_memory(mesh_memory(corners=len(corners), vertices=len(floats)), f"{name}: a mesh of {len(floats)} vertices and "
+        check_memory(mesh_memory(corners=len(corners), faces=len(offsets) - 1, vertices=len(floats)), f"{name}: a mesh of {len(floats)} vertices and "
                      f"{len(offsets) - 1} faces", MESH_ADVICE)
         self.name, self._cache = name, {}
         self.points_array = np.ascontiguousarray(floats, dtype=np.float64)
@@ -379,7 +379,7 @@ def _faces(faces, count: int, name: str) -> tuple[np.ndarray, np.ndarray]:
     else:
         if isinstance(faces, (str, bytes)) or not hasattr(faces, "__len__"):
             raise InvalidMeshError(f"{name}: faces must be a sequence of index sequences, got {type(faces).__name__}")
-        check_memory(mesh_memory(corners=4 * len(faces)), f"{name}: a mesh of {len(faces)} faces", MESH_ADVICE)
+        check_memory(mesh_memory(corners=3 * len(faces), faces=len(faces)), f"{name}: a mesh of {len(faces)} faces", MESH_ADVICE)
         flat, sizes = [], []
         for i, f in enumerate(faces):
             if isinstance(f, (str, bytes)) or not hasattr(f, "__len__"):

@@ -126,7 +126,7 @@ def _read_regular(name: str) -> bytes:
         if not stat.S_ISREG(status.st_mode):  # replaced between the two looks
             raise InvalidMeshError(f"{name}: not a regular file ({_kind(status.st_mode)})")
         check_memory(mesh_memory(file_bytes=min(status.st_size, MAX_MESH_FILE_BYTES)), f"{name}: reading a mesh file of {status.st_size} "
-                     "bytes", MESH_ADVICE)
+                     "bytes", MESH_ADVICE)  # PLY: checked again from its header's counts
         return _capped(handle, name)
 
 
@@ -157,7 +157,8 @@ def decode_mesh(data: bytes, fmt: str, *, name: str = "mesh", strict: bool = Fal
     if len(data) > MAX_MESH_FILE_BYTES:
         raise InvalidMeshError(f"{name}: more than {MAX_MESH_FILE_BYTES} bytes, the limit of a mesh file")
     fmt = mesh_format(name, fmt)
-    check_memory(mesh_memory(file_bytes=len(data)), f"{name}: reading a mesh file of {len(data)} bytes", MESH_ADVICE)
+    if fmt != "ply":  # PLY: from its header's counts (mesh_ply)
+        check_memory(mesh_memory(file_bytes=len(data)), f"{name}: reading a mesh file of {len(data)} bytes", MESH_ADVICE)
     data = bytes(data)
     if fmt != "ply" and not data.isascii():
         try:

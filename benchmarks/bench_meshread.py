@@ -119,7 +119,8 @@ def targets(quick: bool = False) -> list[dict]:
                 "limit_seconds": None if quick else limit, "seconds": round(wall, 2), "cpu_seconds": round(cpu, 2),
                 "megabytes": round(mb, 1), "limit_megabytes": None if quick else limit_mb,
                 "estimated_megabytes": round(_estimate(path, name, faces) / 2**20, 1),
-                "baseline": "plyfile.PlyData.read of the same file (parsing only)" if name == "ply" else BASELINE, "baseline_seconds": round(base_wall, 2), "baseline_megabytes": round(base_mb, 1),
+                "baseline": "plyfile.PlyData.read of the same file (parsing only)" if name == "ply" else BASELINE,
+                "baseline_seconds": round(base_wall, 2), "baseline_megabytes": round(base_mb, 1),
             })
     return out
 

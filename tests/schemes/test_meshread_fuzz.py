@@ -54,9 +54,20 @@ def ply_text(draw) -> bytes:
     return (head + "\n".join(rows) + "\n").encode()
 
 
+def binary_ply(draw) -> bytes:
+    nv, nf = draw(st.sampled_from([0, 1, 3, 4, 2**31])), draw(st.sampled_from([0, 1, 2, 10**9]))
+    order = draw(st.sampled_from(["binary_little_endian", "binary_big_endian"]))
+    count, kind = draw(st.sampled_from(["uchar", "int", "float"])), draw(st.sampled_from(["int", "uint", "short", "double"]))
+    head = (f"ply\nformat {order} 1.0\nelement vertex {nv}\nproperty float x\nproperty float y\nproperty float z\n"
+            f"element face {nf}\nproperty list {count} {kind} vertex_indices\nend_header\n")
+    return head.encode() + draw(st.binary(max_size=120))
+
+
 @st.composite
 def mesh_texts(draw):
-    fmt = draw(st.sampled_from(["obj", "obj", "off", "ply"]))
+    fmt = draw(st.sampled_from(["obj", "obj", "off", "ply", "binary"]))
+    if fmt == "binary":
+        return "ply", binary_ply(draw)
     if fmt == "obj":
         return fmt, ("\n".join(draw(st.lists(OBJ_LINES, max_size=14))) + "\n").encode()
     return fmt, off_text(draw) if fmt == "off" else ply_text(draw)

@@ -64,6 +64,10 @@ class MeshTags:
             if getattr(self, option) not in known:
                 raise InvalidMeshError(f"{option} must be one of {', '.join(known)}, got {getattr(self, option)!r:.40}")
 
+    def __reduce__(self):  # the read-only mappings do not pickle; the tags travel to worker processes
+        return (MeshTags, (dict(self.creases), dict(self.corners), self.holes, self.interpolate_boundary, self.crease_method,
+                           self.triangle_subdivision))
+
     def sharpness_of_edge(self, u: int, v: int) -> Fraction:
         """The sharpness of edge ``{u, v}`` (0 when untagged)."""
         return self.creases.get((min(u, v), max(u, v)), Fraction(0))

@@ -344,3 +344,15 @@ def test_exact_points_are_made_one_by_one_and_equal_a_tuple():
     assert points == ((Fraction(1, 10), 0, 0), (1, 0, 0), (0, 1, 0)) == tuple(points) and points[1:] == ((1, 0, 0), (0, 1, 0))
     with pytest.raises(IndexError, match="vertex 3 is not an index 0..2"):
         points[3]
+
+
+@pytest.mark.parametrize("fmt", ["obj", "off", "ply"])
+def test_a_mesh_and_its_tags_travel_to_worker_processes(fmt):
+    import pickle
+
+    cube = decode_mesh(obj(CUBE_F, tail="t crease 2/1/0 0 1 2\n"), "obj")
+    mesh = decode_mesh(encode_mesh(cube, fmt), fmt)
+    back = pickle.loads(pickle.dumps(mesh))
+    assert back == mesh and back.one_ring(0, QUAD) == mesh.one_ring(0, QUAD)
+    tags = pickle.loads(pickle.dumps(cube.tags))
+    assert tags == cube.tags and tags.creases[(0, 1)] == 2

@@ -24,6 +24,7 @@ symdecomp.errors.InvalidMeshError: t.ply: not a readable PLY file: the header an
 
 from __future__ import annotations
 
+import struct
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -169,9 +170,37 @@ class _Binary:
             raise InvalidMeshError(f"{self.name}: the PLY vertex element has a list property; x, y, z must be scalars")
         if listed and len(e.properties) == 1 and e.count:
             uniform = self._uniform(e.properties[0], e.count)
-            if uniform is not None:
-                return uniform
+            return uniform if uniform is not None else self._scan(e.properties[0], e.count)
         return self._loop(e, listed)
+
+    def _scan(self, p: _Property, count: int):
+        """Faces of several sizes: the counts read in one pass, the indices gathered by numpy."""
+        csize, isize = np.dtype(p.count).itemsize, np.dtype(p.kind).itemsize
+        code = {"u1": "B", "i1": "b", "u2": "H", "i2": "h", "u4": "I", "i4": "i"}[p.count]
+        unpack, data, pos, end = struct.Struct(self.order + code).unpack_from, self.data, self.pos, len(self.data)
+        sizes = np.empty(count, dtype=np.int64)
+        for i in range(count):
+            if pos + csize > end:
+                break
+            k = data[pos] if code == "B" else unpack(data, pos)[0]
+            if k < 0:
+                raise InvalidMeshError(f"{self.name}: face {i}: the list {p.name!r} has {k} entries")
+            sizes[i] = k
+            pos += csize + k * isize
+            if pos > end:
+                break
+        else:
+            i = count
+        if i < count:
+            raise InvalidMeshError(f"{self.name}: not a readable PLY file: the binary data ends inside the face {i} (truncated file)")
+        offsets = np.zeros(count + 1, dtype=np.int64)
+        np.cumsum(sizes, out=offsets[1:])
+        first = self.pos + csize * np.arange(1, count + 1) + isize * offsets[:-1]  # each face's first index
+        at = np.repeat(first - isize * offsets[:-1], sizes) + isize * np.arange(int(offsets[-1]))
+        raw = np.frombuffer(data, dtype=np.uint8)
+        values = raw[at[:, None] + np.arange(isize)].copy().view(self.order + p.kind).reshape(-1)
+        self.pos = pos
+        return offsets, values.astype(np.int64)
 
     def _uniform(self, p: _Property, count: int):
         k = int(np.frombuffer(self.data, dtype=self.order + p.count, count=1, offset=self.pos)[0]) if self.pos < len(self.data) else -1

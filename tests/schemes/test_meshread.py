@@ -356,3 +356,14 @@ def test_a_mesh_and_its_tags_travel_to_worker_processes(fmt):
     assert back == mesh and back.one_ring(0, QUAD) == mesh.one_ring(0, QUAD)
     tags = pickle.loads(pickle.dumps(cube.tags))
     assert tags == cube.tags and tags.creases[(0, 1)] == 2
+
+
+def test_binary_ply_faces_of_several_sizes_and_every_truncation():
+    points = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (2, 0, 0.125), (2.5, 1, 0), (1.5, 2, 0), (-0.5, 2, -0.75), (-1 / 1024, 1.5, 0),
+              (1, 3, 1)]
+    mesh = PolygonMesh.from_arrays(points, [(0, 1, 2, 3), (1, 4, 5, 6, 2), (3, 2, 6, 9, 7, 8), (3, 8, 0)])
+    data = encode_mesh(mesh, "ply")
+    assert decode_mesh(data, "ply", strict=True).faces == mesh.faces
+    for cut in range(1, 120):  # the data cut anywhere: one line, never another exception
+        with pytest.raises(InvalidMeshError, match=r"^m.ply: not a readable PLY file: .*(truncated file|can hold)"):
+            decode_mesh(data[:-cut], "ply", name="m.ply")

@@ -367,3 +367,13 @@ def test_binary_ply_faces_of_several_sizes_and_every_truncation():
     for cut in range(1, 120):  # the data cut anywhere: one line, never another exception
         with pytest.raises(InvalidMeshError, match=r"^m.ply: not a readable PLY file: .*(truncated file|can hold)"):
             decode_mesh(data[:-cut], "ply", name="m.ply")
+
+
+def test_the_first_models_incidences_and_a_mesh_with_other_points():
+    grid = PolygonMesh.from_arrays([(x, y, 0) for y in range(3) for x in range(3)], [(0, 1, 4, 3), (1, 2, 5, 4), (3, 4, 7, 6), (4, 5, 8, 7)])
+    topology = grid._topology
+    assert topology["next"][4] == {1: 5, 3: 1, 5: 7, 7: 3} and topology["next"][0] == {1: 3, 3: None}  # face (v, a, .., next[a])
+    assert topology["boundary"] == frozenset({0, 1, 2, 3, 5, 6, 7, 8}) and topology["directed"][(4, 5)] == 3
+    assert topology.get("cache") is None
+    moved = grid.with_points([(x, y, x * y) for y in range(3) for x in range(3)])
+    assert moved.faces == grid.faces and moved.exact_point(8) == (2, 2, 4)

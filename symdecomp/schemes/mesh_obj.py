@@ -14,7 +14,8 @@ tags are 0-based, as OpenSubdiv reads them:
 * ``t crease 2k/1/0 u1 v1 .. uk vk s`` or ``2k/k/0 .. s1 .. sk``: edges ``{u, v}`` of the mesh with sharpness
   ``s >= 0`` (an exact rational; 10 or more is infinitely sharp);
 * ``t corner k/1/0 v1 .. vk s`` or ``k/k/0``: sharp vertices; ``t hole k/0/0 f1 .. fk``: faces that are holes;
-* ``t interpolateboundary 1/0/0 m``: ``m`` = 0, 1, 2 is none, edge-and-corner, edge-only (the default);
+* ``t interpolateboundary 1/0/0 m``: ``m`` = 0, 1, 2 is none, edge-and-corner, edge-only (without the tag:
+  edge-and-corner; OpenSubdiv's shape loader takes edge-only then, so write the tag to compare with it);
 * ``t creasemethod 0/0/1 normal|chaikin``, ``t smoothtriangles 0/0/1 catmark|smooth``;
 * ``t facevaryinginterpolateboundary``, ``t facevaryingpropagatecorners``: face-varying data only, ignored;
 * hierarchical edits (``t vertexedit``, ``t edgeedit``, ``t faceedit``) and any other tag: refused.

@@ -26,7 +26,8 @@ __all__ = ["BOUNDARY_INTERPOLATIONS", "CREASE_METHODS", "TRIANGLE_SUBDIVISIONS",
 
 #: OpenSubdiv's boundary interpolation options: the boundary is not interpolated, its edges are sharp, or its
 #: edges and its corners (vertices of one face) are sharp. OpenSubdiv's shape reader maps ``t interpolateboundary``
-#: 0, 1, 2 to none, edge-and-corner, edge-only (``regression/common/far_utils.h``), and takes edge-only without the tag.
+#: 0, 1, 2 to none, edge-and-corner, edge-only (``regression/common/far_utils.h``, RenderMan's convention); a mesh
+#: without the tag is edge-and-corner here (OpenSubdiv's shape loader would take edge-only: write the tag to match it).
 BOUNDARY_INTERPOLATIONS = ("none", "edge-only", "edge-and-corner")
 #: OpenSubdiv's creasing methods (``t creasemethod``): ``normal`` (uniform) or ``chaikin``.
 CREASE_METHODS = ("uniform", "chaikin")
@@ -48,8 +49,8 @@ class MeshTags:
     corners: Mapping[int, Fraction] = field(default_factory=dict)
     #: Faces tagged as holes (``t hole``), by face index.
     holes: frozenset[int] = frozenset()
-    #: How the boundary is treated, one of :data:`BOUNDARY_INTERPOLATIONS` (OpenSubdiv's default for its shapes: edge-only).
-    interpolate_boundary: str = "edge-only"
+    #: How the boundary is treated, one of :data:`BOUNDARY_INTERPOLATIONS` (edge-and-corner without a tag).
+    interpolate_boundary: str = "edge-and-corner"
     #: How semi-sharp creases of varying sharpness are refined, one of :data:`CREASE_METHODS`.
     crease_method: str = "uniform"
     #: The rule for a triangle's face point in a Catmull-Clark mesh, one of :data:`TRIANGLE_SUBDIVISIONS`.

@@ -49,8 +49,8 @@ def test_opensubdiv_tags_fill_the_mesh_tags_exactly():
     assert t.sharpness_of_edge(3, 1) == Fraction(5, 2) and t.sharpness_of_edge(0, 7) == 0
 
 
-def test_without_a_tag_the_boundary_is_edge_only_as_in_opensubdiv():
-    assert decode_mesh(obj(CUBE_F), "obj").tags.interpolate_boundary == "edge-only"
+def test_interpolateboundary_follows_renderman_and_opensubdiv_and_defaults_to_edge_and_corner():
+    assert decode_mesh(obj(CUBE_F), "obj").tags.interpolate_boundary == "edge-and-corner"
     modes = [decode_mesh(obj(CUBE_F, tail=f"t interpolateboundary 1/0/0 {m}\n"), "obj").tags.interpolate_boundary for m in (0, 1, 2)]
     assert modes == ["none", "edge-and-corner", "edge-only"]
 

@@ -27,6 +27,7 @@ import functools
 import inspect
 import numbers
 import os
+import sys
 from collections.abc import Callable, Iterable, Mapping
 from fractions import Fraction
 
@@ -68,6 +69,7 @@ __all__ = [
     "MAX_REPORT_VALENCE",
     "MAX_MESH_VALENCE",
     "MAX_COORDINATE",
+    "finite_double",
     "MAX_NUMBER_CHARS",
     "MAX_MESH_FILE_BYTES",
     "check_mesh_valence",
@@ -107,11 +109,11 @@ MAX_REPORT_VALENCE = 16
 #: The largest valence of a mesh's vertex that is analysed (``inspect``, ``design --mesh``, the API's mesh analyses):
 #: the valence bound of ``design --n``; a fan of thousands of faces is read, and refused where it is analysed.
 MAX_MESH_VALENCE = 64
-#: The largest magnitude of a mesh coordinate (read from a file or given as an array): products and sums of a few
-#: coordinates stay far inside float64's range, so limit positions, normals and tangents are finite.
-MAX_COORDINATE = 1e12
-#: The most characters of one number in a mesh text file: the exact decimal of every double of magnitude at most
-#: :data:`MAX_COORDINATE` fits (a 5000-digit number does not).
+#: The largest magnitude of a mesh coordinate (read from a file or given as an array): the largest finite double, so
+#: that every coordinate is a finite double (``1e309`` is refused; the analyses scale what would overflow).
+MAX_COORDINATE = sys.float_info.max
+#: The most characters of one number in a mesh text file: the exact decimal of every double fits (a 5000-digit
+#: number does not).
 MAX_NUMBER_CHARS = 1100
 #: The largest mesh file read (bytes), from a path or standard input, whatever size the file system reports.
 MAX_MESH_FILE_BYTES = 512 * 2**20
@@ -361,6 +363,16 @@ def check_memory(estimate: int, what: str, advice: str = "choose a smaller valen
         raise ResourceLimitError(
             f"{what} would need about {_human(estimate)} of memory, more than the limit of {_human(limit)}; {advice}"
         )
+
+
+def finite_double(value: Fraction) -> float | None:
+    """The double nearest to ``value`` (correctly rounded), or ``None`` when it is beyond the range of doubles."""
+    if abs(value.numerator).bit_length() - value.denominator.bit_length() > 1030:
+        return None
+    try:
+        return float(value)
+    except OverflowError:
+        return None
 
 
 def check_mesh_valence(n: int, vertex: int, name: str = "mesh") -> int:

@@ -22,7 +22,7 @@ tags are 0-based, as OpenSubdiv reads them:
 
 A number is a decimal ``[+-]digits[.digits][e[+-]digits]`` of at most
 :data:`~symdecomp.validate.MAX_NUMBER_CHARS` characters whose value has magnitude at most
-:data:`~symdecomp.validate.MAX_COORDINATE`; ``nan``, ``inf`` and hexadecimal are refused. A line is at
+:data:`~symdecomp.validate.MAX_COORDINATE` (its nearest double is finite); ``nan``, ``inf`` and hexadecimal are refused. A line is at
 most :data:`MAX_LINE_BYTES` bytes. Every refusal is one line naming the file and the line.
 
 >>> m = read_obj(b"v 0 0 0\\nv 1 0 0\\nv 1 1 0\\nv 0 1 0.1\\nf 1 2 3 4\\nt crease 2/1/0 0 1 2.5\\n", "sq.obj")
@@ -41,7 +41,7 @@ import numpy as np
 
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_tags import MeshTags
-from symdecomp.validate import MAX_COORDINATE, MAX_NUMBER_CHARS
+from symdecomp.validate import MAX_COORDINATE, MAX_NUMBER_CHARS, finite_double
 
 __all__ = ["IGNORED", "MAX_LINE_BYTES", "ParsedMesh", "number", "index", "read_obj"]
 
@@ -86,8 +86,9 @@ def number(token: str, where: str) -> Fraction:
     if not _NUMBER.fullmatch(token):
         raise InvalidMeshError(f"{where}: {token[:30]!r} is not a finite decimal number")
     value = Fraction(token)
-    if abs(value) > 2 * MAX_COORDINATE or abs(float(value)) > MAX_COORDINATE:
-        raise InvalidMeshError(f"{where}: {token[:30]} is larger in magnitude than {MAX_COORDINATE:g} (the bound of a mesh coordinate)")
+    if finite_double(value) is None:
+        raise InvalidMeshError(f"{where}: {token[:30]} is beyond the range of doubles (a mesh coordinate is at most {MAX_COORDINATE:.4g} "
+                               "in magnitude)")
     return value
 
 
@@ -147,7 +148,7 @@ def _fast_vertices(vlines: list[bytes]) -> np.ndarray:
         if len(column) != count:
             raise _Irregular
         floats[:, k] = column
-    if not (np.abs(floats) <= MAX_COORDINATE).all():
+    if not np.isfinite(floats).all():
         raise _Irregular
     return floats
 

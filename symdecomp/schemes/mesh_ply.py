@@ -126,7 +126,7 @@ def _vertex_arrays(columns: dict, element: _Element, name: str, exact=None):
     if missing:
         raise InvalidMeshError(f"{name}: the PLY vertex element has no property {missing[0]!r}")
     floats = np.stack([np.asarray(columns[c], dtype=np.float64) for c in "xyz"], axis=1).reshape(-1, 3)
-    bad = np.flatnonzero(~(np.abs(floats) <= MAX_COORDINATE).all(axis=1))
+    bad = np.flatnonzero(~np.isfinite(floats).all(axis=1))
     if len(bad):
         raise InvalidMeshError(f"{name}: vertex {bad[0]}: coordinates {floats[bad[0]].tolist()} are not finite numbers of magnitude at "
                                f"most {MAX_COORDINATE:g}")

@@ -96,9 +96,10 @@ def _degenerate(points, offsets, corners, exact_point) -> tuple[np.ndarray, np.n
         key[ids] = mix
         p = points[rows]
         q = np.roll(p, -1, axis=1)
-        area = np.cross(p, q).sum(axis=1)
-        scale = (np.abs(p).sum(axis=2) * np.abs(q).sum(axis=2)).sum(axis=1)
-        undecided = ~(np.abs(area).max(axis=1) > (k + 8) * _EPS * scale) & ~repeated[ids]
+        with np.errstate(over="ignore", invalid="ignore", under="ignore"):  # overflow (near 1e308) is undecided: exact
+            area = np.cross(p, q).sum(axis=1)
+            scale = (np.abs(p).sum(axis=2) * np.abs(q).sum(axis=2)).sum(axis=1)
+            undecided = (~(np.abs(area).max(axis=1) > (k + 8) * _EPS * scale) | ~np.isfinite(scale)) & ~repeated[ids]
         for i in ids[undecided].tolist():
             flat[i] = _exactly_flat([exact_point(int(v)) for v in corners[offsets[i]:offsets[i + 1]]])
     return small, repeated, flat, key

@@ -59,7 +59,7 @@ import numpy as np
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_tags import MeshTags
 from symdecomp.schemes.mesh_topology import check_faces
-from symdecomp.validate import MAX_COORDINATE, MAX_MESH_VALENCE, MESH_ADVICE, check_memory, check_mesh_valence, mesh_memory
+from symdecomp.validate import MAX_COORDINATE, MAX_MESH_VALENCE, MESH_ADVICE, check_memory, check_mesh_valence, finite_double, mesh_memory
 
 __all__ = ["PolygonMesh", "exact_coordinate", "scheme_for_mesh"]
 
@@ -84,12 +84,10 @@ def exact_coordinate(x, where: str) -> Fraction:
         value = Fraction(f)
     else:
         raise InvalidMeshError(f"{where}: coordinate {x!r:.40} is not a real number")
-    if abs(value) > 2 * MAX_COORDINATE or abs(float(value)) > MAX_COORDINATE:
-        digits = len(str(abs(value.numerator) // value.denominator)) if abs(value) < 10**1000 else None
-        digits = digits or int(value.numerator.bit_length() * 0.30103) + 1
-        shown = f"{float(value):g}" if digits <= 308 else f"of {digits} digits"
-        raise InvalidMeshError(f"{where}: coordinate {shown} is larger in magnitude than {MAX_COORDINATE:g} (the bound of a mesh "
-                               "coordinate)")
+    if finite_double(value) is None:
+        digits = math.floor(math.log10(abs(value.numerator)) - math.log10(value.denominator)) + 1
+        raise InvalidMeshError(f"{where}: coordinate of about {digits} digits is beyond the range of doubles (a mesh coordinate is at "
+                               f"most {MAX_COORDINATE:.4g} in magnitude)")
     return value
 
 
@@ -405,7 +403,7 @@ def _points(points, name: str) -> tuple[np.ndarray, tuple | None]:
     """``(floats, exact)``: the ``(V, 3)`` float64 array and the exact points (``None``: the floats are exact)."""
     if isinstance(points, np.ndarray) and points.dtype.kind in "iuf" and points.ndim == 2 and points.shape[1] == 3:
         floats = points.astype(np.float64)
-        bad = np.flatnonzero(~np.isfinite(floats).all(axis=1) | (np.abs(floats) > MAX_COORDINATE).any(axis=1))
+        bad = np.flatnonzero(~np.isfinite(floats).all(axis=1))
         if len(bad):
             for x in points[bad[0]].tolist():
                 exact_coordinate(x, f"{name}: vertex {bad[0]}")
@@ -416,7 +414,7 @@ def _points(points, name: str) -> tuple[np.ndarray, tuple | None]:
         raise InvalidMeshError(f"{name}: points must be a sequence of (x, y, z), got {type(points).__name__}")
     check_memory(mesh_memory(vertices=8 * len(points)), f"{name}: a mesh of {len(points)} vertices", MESH_ADVICE)
     exact = tuple(_point(p, i, name) for i, p in enumerate(points))
-    floats = np.array([[float(c) for c in p] for p in exact], dtype=np.float64).reshape(-1, 3)
+    floats = np.array([[finite_double(c) for c in p] for p in exact], dtype=np.float64).reshape(-1, 3)
     return floats, exact
 
 

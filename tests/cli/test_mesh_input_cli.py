@@ -19,7 +19,7 @@ BAD = [
     ("lying.ply", PLY.format(faces=300_000_000, kind="int", face="3 0 1 2"), "announces 300000000 'face' elements"),
     ("floatindex.ply", PLY.format(faces=1, kind="int", face="3 0 1.7 2"), "face 0: vertex index '1.7' is not an integer"),
     ("nanindex.ply", PLY.format(faces=1, kind="int", face="3 0 nan 2"), "face 0: vertex index 'nan' is not an integer"),
-    ("huge.obj", SQUARE + "v 1e309 0 0\nf 1 2 3\n", "line 5: 1e309 is larger in magnitude than 1e+12"),
+    ("huge.obj", SQUARE + "v 1e309 0 0\nf 1 2 3\n", "line 5: 1e309 is beyond the range of doubles"),
     ("digits.obj", SQUARE + "v " + "1" * 5000 + " 0 0\nf 1 2 3\n", "line 5: a number of 5000 characters"),
 ]
 

@@ -27,6 +27,7 @@ bound, and exactly (``fractions.Fraction``) only for the faces the bound cannot 
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from fractions import Fraction
 
 import numpy as np
@@ -34,7 +35,7 @@ import numpy as np
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_tags import MeshDefects
 
-__all__ = ["Topology", "check_faces", "face_ids", "next_corners"]
+__all__ = ["LegacyTopology", "Topology", "check_faces", "face_ids", "next_corners"]
 
 _EPS = float(np.finfo(float).eps)
 
@@ -306,3 +307,48 @@ def _first_reason(points, offsets, corners, name: str, exact_point) -> str:
     except InvalidMeshError as exc:
         return str(exc).removeprefix(f"{name}: ")
     return "every face was left out"  # pragma: no cover - a strict check refuses what lenient drops
+
+
+class LegacyTopology(dict):
+    """The incidences as the first mesh model had them (``"next"``, ``"boundary"``, ``"directed"``), each made on first
+    use (:attr:`~symdecomp.schemes.meshfile.PolygonMesh._topology`); other keys are a cache of the caller's."""
+
+    def __init__(self, topo: Topology):
+        super().__init__()
+        self._topo = topo
+
+    def __missing__(self, key):
+        t = self._topo
+        if key == "boundary":
+            value = frozenset(np.flatnonzero(t.boundary).tolist())
+        elif key == "next":
+            value = _NextMap(t)
+        elif key == "directed":
+            face = np.searchsorted(t.offsets, np.arange(len(t.corners)), side="right") - 1
+            value = dict(zip(zip(t.corners.tolist(), t.corners[t.next].tolist()), face.tolist()))
+        else:
+            raise KeyError(key)
+        self[key] = value
+        return value
+
+
+class _NextMap(Mapping):
+    """Vertex ``v`` -> ``{a: a'}``: the next edge neighbour counter-clockwise (face ``(v, a, .., a')``); on the boundary
+    the neighbour ending the fan maps to ``None``."""
+
+    def __init__(self, topo):
+        self._t = topo
+
+    def __len__(self) -> int:
+        return len(self._t.faces_at)
+
+    def __iter__(self):
+        return iter(range(len(self)))
+
+    def __getitem__(self, v: int) -> dict:
+        t = self._t
+        at = t.by_vertex[t.vertex_start[v]:t.vertex_start[v + 1]]
+        step = dict(zip(t.corners[t.next[at]].tolist(), t.corners[t.prev[at]].tolist()))
+        if t.boundary[v]:
+            step.update({b: None for b in set(step.values()) - set(step)})
+        return step

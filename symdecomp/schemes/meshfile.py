@@ -51,14 +51,14 @@ from __future__ import annotations
 
 import math
 import numbers
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from fractions import Fraction
 
 import numpy as np
 
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_tags import MeshTags
-from symdecomp.schemes.mesh_topology import check_faces
+from symdecomp.schemes.mesh_topology import LegacyTopology, check_faces
 from symdecomp.validate import MAX_COORDINATE, MAX_MESH_VALENCE, MESH_ADVICE, check_memory, check_mesh_valence, finite_double, mesh_memory
 
 __all__ = ["PolygonMesh", "exact_coordinate", "scheme_for_mesh"]
@@ -187,7 +187,7 @@ class PolygonMesh:
         """Dict-shaped incidences for callers written against the first mesh model (``"next"``: vertex -> ``{a: a'}``,
         ``"boundary"``: frozenset, ``"directed"``: ``(u, w)`` -> face), each made on first use; other keys are a cache."""
         if "legacy" not in self._cache:
-            self._cache["legacy"] = _Legacy(self)
+            self._cache["legacy"] = LegacyTopology(self._topo)
         return self._cache["legacy"]
 
     # -- topology ---------------------------------------------------------------------------------
@@ -321,50 +321,6 @@ class PolygonMesh:
         self.require_lattice(lattice)
         t = self._topo
         return tuple(np.flatnonzero((t.faces_at > 0) & ~t.boundary & (t.faces_at != lattice.regular_valence)).tolist())
-
-
-class _Legacy(dict):
-    """See :attr:`PolygonMesh._topology`."""
-
-    def __init__(self, mesh: PolygonMesh):
-        super().__init__()
-        self._mesh = mesh
-
-    def __missing__(self, key):
-        t = self._mesh._topo
-        if key == "boundary":
-            value = frozenset(np.flatnonzero(t.boundary).tolist())
-        elif key == "next":
-            value = _NextMap(t)
-        elif key == "directed":
-            face = np.searchsorted(t.offsets, np.arange(len(t.corners)), side="right") - 1
-            value = dict(zip(zip(t.corners.tolist(), t.corners[t.next].tolist()), face.tolist()))
-        else:
-            raise KeyError(key)
-        self[key] = value
-        return value
-
-
-class _NextMap(Mapping):
-    """Vertex ``v`` -> ``{a: a'}``: the next edge neighbour counter-clockwise (face ``(v, a, .., a')``); on the boundary
-    the neighbour ending the fan maps to ``None``."""
-
-    def __init__(self, topo):
-        self._t = topo
-
-    def __len__(self) -> int:
-        return len(self._t.faces_at)
-
-    def __iter__(self):
-        return iter(range(len(self)))
-
-    def __getitem__(self, v: int) -> dict:
-        t = self._t
-        at = t.by_vertex[t.vertex_start[v]:t.vertex_start[v + 1]]
-        step = dict(zip(t.corners[t.next[at]].tolist(), t.corners[t.prev[at]].tolist()))
-        if t.boundary[v]:
-            step.update({b: None for b in set(step.values()) - set(step)})
-        return step
 
 
 class ExactPoints(Sequence):

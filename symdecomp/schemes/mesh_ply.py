@@ -203,10 +203,13 @@ class _Binary:
         return offsets, values.astype(np.int64)
 
     def _uniform(self, p: _Property, count: int):
-        k = int(np.frombuffer(self.data, dtype=self.order + p.count, count=1, offset=self.pos)[0]) if self.pos < len(self.data) else -1
-        dtype = np.dtype([("n", self.order + p.count), ("v", self.order + p.kind, (max(k, 0),))])
-        if k < 0 or self.pos + dtype.itemsize * count > len(self.data):
+        csize, isize = np.dtype(p.count).itemsize, np.dtype(p.kind).itemsize
+        if self.pos + csize > len(self.data):
             return None
+        k = int(np.frombuffer(self.data, dtype=self.order + p.count, count=1, offset=self.pos)[0])
+        if k < 0 or self.pos + (csize + k * isize) * count > len(self.data):
+            return None  # the face by face scan names what is wrong
+        dtype = np.dtype([("n", self.order + p.count), ("v", self.order + p.kind, (k,))])
         block = np.frombuffer(self.data, dtype=dtype, count=count, offset=self.pos)
         if not (block["n"] == k).all():
             return None

@@ -388,3 +388,11 @@ def test_the_first_models_incidences_and_a_mesh_with_other_points():
     assert topology.get("cache") is None
     moved = grid.with_points([(x, y, x * y) for y in range(3) for x in range(3)])
     assert moved.faces == grid.faces and moved.exact_point(8) == (2, 2, 4)
+
+
+def test_a_binary_face_announcing_a_huge_list_is_one_line():
+    head = (b"ply\nformat binary_big_endian 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+            b"element face 1\nproperty list int int vertex_indices\nend_header\n")
+    for body in (b" \x00\x00\x00", b"\x00\x00", b"\x7f\xff\xff\xff" + b"\x00" * 8):  # found by the wide fuzz run
+        with pytest.raises(InvalidMeshError, match=r"^m.ply: not a readable PLY file: .*(truncated file|can hold)"):
+            decode_mesh(head + body, "ply", name="m.ply")

@@ -45,9 +45,11 @@ nothing else.
                    files and by name (``files``), Loop's scheme (``loop``), Stam's patch
                    matrices, (2N+8)-point and Loop's (N+6)-point (``patch``), the regular Loop
                    patch (quartic box spline) in Bezier form (``box_spline``), a modeller's polygon
-                   mesh validated with its 1-rings and extraordinary vertices (``meshfile``), read
-                   and written as OBJ, OFF and PLY (``meshformats``), its sharpness tags and
-                   the elements left out of it (``mesh_tags``); one exact Catmull-Clark step on a mesh
+                   mesh validated with its 1-rings and extraordinary vertices (``meshfile``), the
+                   checks of its faces in linear time, strict or lenient (``mesh_topology``), read
+                   and written as OBJ, OFF and PLY (``meshformats``; OBJ with OpenSubdiv's tags,
+                   ``mesh_obj``; PLY, ``mesh_ply``), its sharpness tags and the elements left out
+                   of it (``mesh_tags``); one exact Catmull-Clark step on a mesh
                    of any polygons (``polygon_step``), whole meshes refined exactly with their tags
                    (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),

@@ -27,6 +27,7 @@ import functools
 import inspect
 import numbers
 import os
+import sys
 from collections.abc import Callable, Iterable, Mapping
 from fractions import Fraction
 
@@ -68,6 +69,14 @@ __all__ = [
     "MAX_REPORT_VALENCE",
     "API_LIMITS",
     "check_limit",
+    "MAX_MESH_VALENCE",
+    "MAX_COORDINATE",
+    "finite_double",
+    "MAX_NUMBER_CHARS",
+    "MAX_MESH_FILE_BYTES",
+    "check_mesh_valence",
+    "mesh_memory",
+    "MESH_ADVICE",
 ]
 
 #: Most significant digits printed (a value is evaluated at a little more than this).
@@ -136,6 +145,24 @@ def check_limit(value, name: str, argument: str, *, minimum: int = 3, error: typ
     """
     bound, reason = API_LIMITS[name]
     return check_int(value, argument, minimum=minimum, maximum=bound, error=error, reason=reason)
+
+
+#: The largest valence of a mesh's vertex that is analysed (``inspect``, ``design --mesh``, the API's mesh analyses):
+#: the valence bound of ``design --n``; a fan of thousands of faces is read, and refused where it is analysed.
+MAX_MESH_VALENCE = 64
+#: The largest magnitude of a mesh coordinate (read from a file or given as an array): the largest finite double, so
+#: that every coordinate is a finite double (``1e309`` is refused; the analyses scale what would overflow).
+MAX_COORDINATE = sys.float_info.max
+#: The most characters of one number in a mesh text file: the exact decimal of every double fits (a 5000-digit
+#: number does not).
+MAX_NUMBER_CHARS = 1100
+#: The largest mesh file read (bytes), from a path or standard input, whatever size the file system reports.
+MAX_MESH_FILE_BYTES = 512 * 2**20
+#: What a refusal of a mesh for its memory advises.
+MESH_ADVICE = "split the mesh, or read a smaller one"
+#: Measured peak memory of reading and checking a mesh: bytes per byte of a text file (a 1M-face quad OBJ of 69 MB:
+#: 750 MB in all), and per corner, face and vertex of the mesh checked (1M quads: 510 MB; 1.56M triangles: 700 MB).
+_MESH_BYTES_PER_FILE_BYTE, _MESH_BYTES_PER_CORNER, _MESH_BYTES_PER_FACE, _MESH_BYTES_PER_VERTEX = 11, 44, 300, 48
 
 
 def _kind(value) -> str:
@@ -370,14 +397,45 @@ def _memory_limit() -> int:
     return limit if mapped == resource.RLIM_INFINITY else min(limit, mapped)
 
 
-def check_memory(estimate: int, what: str) -> None:
-    """Refuse a step whose estimated memory ``estimate`` (bytes) is beyond :func:`_memory_limit`."""
+def check_memory(estimate: int, what: str, advice: str = "choose a smaller valence") -> None:
+    """Refuse a step whose estimated memory ``estimate`` (bytes) is beyond :func:`_memory_limit`; ``advice`` ends the line."""
     limit = _memory_limit() if MEMORY_LIMIT is None else MEMORY_LIMIT
     if estimate > limit:
         raise ResourceLimitError(
-            f"{what} would need about {_human(estimate)} of memory, more than the limit of {_human(limit)}; "
-            "choose a smaller valence"
+            f"{what} would need about {_human(estimate)} of memory, more than the limit of {_human(limit)}; {advice}"
         )
+
+
+def finite_double(value: Fraction) -> float | None:
+    """The double nearest to ``value`` (correctly rounded), or ``None`` when it is beyond the range of doubles."""
+    if abs(value.numerator).bit_length() - value.denominator.bit_length() > 1030:
+        return None
+    try:
+        return float(value)
+    except OverflowError:
+        return None
+
+
+def check_mesh_valence(n: int, vertex: int, name: str = "mesh") -> int:
+    """``n`` if the vertex's valence is at most :data:`MAX_MESH_VALENCE`; else one line naming the mesh and the vertex."""
+    from symdecomp.errors import InvalidMeshError
+
+    if n > MAX_MESH_VALENCE:
+        raise InvalidMeshError(f"{name}: vertex {vertex} has valence {n}; a mesh's vertices are analysed up to valence "
+                               f"{MAX_MESH_VALENCE}")
+    return n
+
+
+def mesh_memory(file_bytes: int = 0, corners: int = 0, faces: int = 0, vertices: int = 0) -> int:
+    """The estimated peak memory (bytes) of reading a text mesh file of ``file_bytes`` bytes, plus that of checking a
+    mesh of ``corners`` face corners in all, ``faces`` faces and ``vertices`` vertices, as measured
+    (``benchmarks/bench_meshread.py``).
+
+    >>> round(mesh_memory(file_bytes=69_000_000) / 2**20), round(mesh_memory(corners=4 * 10**6, faces=10**6, vertices=10**6) / 2**20)
+    (724, 500)
+    """
+    return (_MESH_BYTES_PER_FILE_BYTE * int(file_bytes) + _MESH_BYTES_PER_CORNER * int(corners) + _MESH_BYTES_PER_FACE * int(faces)
+            + _MESH_BYTES_PER_VERTEX * int(vertices))
 
 
 def _human(size: float) -> str:

@@ -20,11 +20,19 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from types import MappingProxyType
 
-__all__ = ["BOUNDARY_INTERPOLATIONS", "MeshDefects", "MeshTags"]
+from symdecomp.errors import InvalidMeshError
 
-#: OpenSubdiv's boundary interpolation options (``t interpolateboundary`` 0, 1, 2): the boundary is
-#: not interpolated, its edges are sharp, or its edges and its corners (vertices of one face) are sharp.
+__all__ = ["BOUNDARY_INTERPOLATIONS", "CREASE_METHODS", "TRIANGLE_SUBDIVISIONS", "MeshDefects", "MeshTags"]
+
+#: OpenSubdiv's boundary interpolation options: the boundary is not interpolated, its edges are sharp, or its
+#: edges and its corners (vertices of one face) are sharp. OpenSubdiv's shape reader maps ``t interpolateboundary``
+#: 0, 1, 2 to none, edge-and-corner, edge-only (``regression/common/far_utils.h``, RenderMan's convention); a mesh
+#: without the tag is edge-and-corner here (OpenSubdiv's shape loader would take edge-only: write the tag to match it).
 BOUNDARY_INTERPOLATIONS = ("none", "edge-only", "edge-and-corner")
+#: OpenSubdiv's creasing methods (``t creasemethod``): ``normal`` (uniform) or ``chaikin``.
+CREASE_METHODS = ("uniform", "chaikin")
+#: OpenSubdiv's rules for triangles in a Catmull-Clark mesh (``t smoothtriangles``): ``catmark`` or ``smooth``.
+TRIANGLE_SUBDIVISIONS = ("catmark", "smooth")
 
 
 def _frozen(mapping: Mapping) -> Mapping:
@@ -41,15 +49,25 @@ class MeshTags:
     corners: Mapping[int, Fraction] = field(default_factory=dict)
     #: Faces tagged as holes (``t hole``), by face index.
     holes: frozenset[int] = frozenset()
-    #: How the boundary is treated, one of :data:`BOUNDARY_INTERPOLATIONS` (OpenSubdiv's default for its shapes: edge-and-corner).
+    #: How the boundary is treated, one of :data:`BOUNDARY_INTERPOLATIONS` (edge-and-corner without a tag).
     interpolate_boundary: str = "edge-and-corner"
+    #: How semi-sharp creases of varying sharpness are refined, one of :data:`CREASE_METHODS`.
+    crease_method: str = "uniform"
+    #: The rule for a triangle's face point in a Catmull-Clark mesh, one of :data:`TRIANGLE_SUBDIVISIONS`.
+    triangle_subdivision: str = "catmark"
 
     def __post_init__(self):
         object.__setattr__(self, "creases", _frozen(self.creases))
         object.__setattr__(self, "corners", _frozen(self.corners))
         object.__setattr__(self, "holes", frozenset(self.holes))
-        if self.interpolate_boundary not in BOUNDARY_INTERPOLATIONS:
-            raise ValueError(f"interpolate_boundary must be one of {', '.join(BOUNDARY_INTERPOLATIONS)}, got {self.interpolate_boundary!r}")
+        for option, known in (("interpolate_boundary", BOUNDARY_INTERPOLATIONS), ("crease_method", CREASE_METHODS),
+                              ("triangle_subdivision", TRIANGLE_SUBDIVISIONS)):
+            if getattr(self, option) not in known:
+                raise InvalidMeshError(f"{option} must be one of {', '.join(known)}, got {getattr(self, option)!r:.40}")
+
+    def __reduce__(self):  # the read-only mappings do not pickle; the tags travel to worker processes
+        return (MeshTags, (dict(self.creases), dict(self.corners), self.holes, self.interpolate_boundary, self.crease_method,
+                           self.triangle_subdivision))
 
     def sharpness_of_edge(self, u: int, v: int) -> Fraction:
         """The sharpness of edge ``{u, v}`` (0 when untagged)."""
@@ -66,24 +84,28 @@ class MeshDefects:
 
     #: Edges ``(u, v)``, ``u < v``, shared by three or more faces.
     non_manifold_edges: tuple[tuple[int, int], ...] = ()
+    #: Edges ``(u, v)``, ``u < v``, of two faces running along them the same way (inconsistent orientation).
+    misoriented_edges: tuple[tuple[int, int], ...] = ()
     #: Vertices where two or more separate fans of faces meet.
     non_manifold_vertices: tuple[int, ...] = ()
     #: Faces with fewer than 3 distinct corners, a repeated corner, or zero area.
     degenerate_faces: tuple[int, ...] = ()
     #: Faces on the same corners as an earlier face (the later ones are listed).
     repeated_faces: tuple[int, ...] = ()
-    #: Vertices in no face.
+    #: Vertices in no face of the file, or in none of the faces kept (they keep their index; they are not analysed).
     isolated_vertices: tuple[int, ...] = ()
-    #: Faces dropped to leave a manifold mesh (those on non-manifold edges and vertices, and the degenerate and repeated ones).
+    #: Every face dropped to leave a manifold mesh: the degenerate and repeated ones, and those that the rules of
+    #: :mod:`symdecomp.schemes.mesh_topology` drop at non-manifold and misoriented edges and non-manifold vertices.
     dropped_faces: tuple[int, ...] = ()
 
     def is_empty(self) -> bool:
         """Whether nothing was left out."""
-        return not any((self.non_manifold_edges, self.non_manifold_vertices, self.degenerate_faces, self.repeated_faces,
-                        self.isolated_vertices, self.dropped_faces))
+        return not any(getattr(self, name) for name in _DEFECTS)
 
     def as_dict(self) -> dict[str, list]:
         """The lists as JSON-ready lists (edges as pairs)."""
-        return {name: [list(x) if isinstance(x, tuple) else x for x in getattr(self, name)]
-                for name in ("non_manifold_edges", "non_manifold_vertices", "degenerate_faces", "repeated_faces",
-                             "isolated_vertices", "dropped_faces")}
+        return {name: [list(x) if isinstance(x, tuple) else x for x in getattr(self, name)] for name in _DEFECTS}
+
+
+_DEFECTS = ("non_manifold_edges", "misoriented_edges", "non_manifold_vertices", "degenerate_faces", "repeated_faces",
+            "isolated_vertices", "dropped_faces")

@@ -16,7 +16,8 @@ kind's masks apply to all its vertices with one matrix product. A vertex whose k
 (next to a hole, sharp edges of different sharpness, a semi-sharp vertex tag, too many faces, the boundary
 left out under ``none`` interpolation) is listed with the reason.
 
->>> from symdecomp.schemes.meshfile import PolygonMesh
+>>> from symdecomp.validate import MAX_MESH_VALENCE
+from symdecomp.schemes.meshfile import PolygonMesh
 >>> grid = PolygonMesh.from_arrays([(x, y, 0) for y in range(3) for x in range(3)],
 ...     [(0, 1, 4, 3), (1, 2, 5, 4), (3, 4, 7, 6), (4, 5, 8, 7)])
 >>> from symdecomp.schemes.lattice import QUAD
@@ -36,11 +37,12 @@ import numpy as np
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.sector import MAX_SECTOR_FACES, SharpVertex
 from symdecomp.schemes.sharp import SHARPNESS_INFINITE
+from symdecomp.validate import MAX_MESH_VALENCE
 
 __all__ = ["NeighbourhoodKind", "VertexKinds", "classify_vertices", "MAX_SMOOTH_VALENCE"]
 
 #: Most faces around a smooth interior vertex analysed (the exact masks are solved per valence).
-MAX_SMOOTH_VALENCE = 64
+MAX_SMOOTH_VALENCE = MAX_MESH_VALENCE  # the one bound of every command that reads meshes (validate)
 
 
 @dataclass(frozen=True, order=True)
@@ -167,6 +169,8 @@ def _smooth(faces: int) -> tuple[NeighbourhoodKind, int] | str:
     """An untagged interior vertex: smooth (the common case, decided without looking at sharpness)."""
     if faces > MAX_SMOOTH_VALENCE:
         return f"valence {faces} is more than {MAX_SMOOTH_VALENCE}"
+    if faces < 3:
+        return f"an interior vertex of valence {faces} (the analysis needs at least 3 faces around it)"
     return NeighbourhoodKind("smooth", faces, (faces,), True), 0
 
 
@@ -203,6 +207,9 @@ def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKin
     for v in progress(vertices, len(vertices)) if progress is not None else vertices:
         if v in holes:
             not_analysed[v] = "a corner of a face tagged as a hole"
+            continue
+        if not mesh._topology["next"][v]:  # lenient reading keeps the file's numbering: a vertex may be in no kept face
+            not_analysed[v] = "in no face of the mesh (isolated, or its faces were left out)"
             continue
         fan, closed = _fan(mesh, v)
         kind = _kind(mesh, v, fan, closed) if v in tagged or not closed else _smooth(len(fan))

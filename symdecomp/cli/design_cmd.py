@@ -144,10 +144,8 @@ def _decimal(x: float) -> str:
 
 def _rounded(mesh, coordinate):
     """``mesh`` with every coordinate ``c`` replaced by ``coordinate(c)`` (``mesh`` itself when none changes)."""
-    from dataclasses import replace
-
     points = tuple(tuple(coordinate(c) for c in p) for p in mesh.points)
-    return mesh if points == mesh.points else replace(mesh, points=points, _topology={})
+    return mesh if points == tuple(mesh.points) else mesh.with_points(points)
 
 
 def _double(c) -> Fraction:

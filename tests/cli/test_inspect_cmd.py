@@ -54,11 +54,15 @@ MALFORMED = [
     ("flipped.obj", obj(CUBE_F[:5] + [(1, 5, 7, 3)]), "faces 2 and 5 both run along edge 1 -> 5 (inconsistent orientation)"),
     ("bowtie.obj", obj([(0, 1, 2), (0, 3, 4)], "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\n"),
      "vertex 0 joins 2 separate fans of faces (non-manifold vertex)"),
-    ("pillow.obj", obj([(0, 1, 2, 3), (0, 3, 4, 1)], SQUARE_V + "v 0.5 0.5 1\n"), "vertex 0 is interior with 2 faces"),
+    ("pillow.obj", obj([(0, 1, 2, 3), (0, 3, 4, 1)], SQUARE_V + "v 0.5 0.5 1\n"), "vertex 0 is not analysed: an interior vertex of valence 2"),
     ("loop-on-mixed.obj", obj(CUBE_F[:5] + [(1, 3, 7), (1, 7, 5)]), "face 0 is a quad; loop takes triangle meshes only"),
     ("loop-on-quads.obj", obj(CUBE_F), "face 0 is a quad; loop takes triangle meshes only"),
     ("binary.obj", "v 0 0 0\n\udcff", "not a text file"),
 ]
+
+
+#: The elements that lenient reading leaves out and lists (exit 1); --strict refuses them in one line (exit 2).
+LEFT_OUT = {"isolated.obj", "duplicate.obj", "fin.obj", "flipped.obj", "bowtie.obj", "pillow.obj"}
 
 
 @pytest.mark.parametrize(("name", "content", "words"), MALFORMED, ids=[m[0] for m in MALFORMED])
@@ -66,6 +70,8 @@ def test_a_malformed_mesh_is_one_line_and_exit_2(tmp_path, capsys, name, content
     path = tmp_path / name
     path.write_bytes(content.encode("utf-8", "surrogateescape"))
     extra = ["--scheme", "loop"] if name.startswith("loop") else []
+    if name in LEFT_OUT:  # read leniently by default (the rest analysed, exit 1); --strict refuses them
+        extra.append("--strict")
     assert main(["inspect", str(path), *extra]) == 2
     out, err = capsys.readouterr()
     assert out == ""
@@ -152,7 +158,8 @@ def test_figures_are_written_once_per_vertex_and_deterministic(tmp_path, capsys)
 def test_a_user_sees_no_traceback(tmp_path):
     bad = tmp_path / "fin.obj"
     bad.write_text(obj(CUBE_F + [(1, 0, 8, 9)], CUBE_V + "v 0 -1 0\nv 1 -1 0\n"))
-    run = subprocess.run([sys.executable, "-m", "symdecomp", "inspect", str(bad)], capture_output=True, text=True, cwd=ROOT)
+    run = subprocess.run([sys.executable, "-m", "symdecomp", "inspect", str(bad), "--strict"], capture_output=True, text=True,
+                         cwd=ROOT)
     assert run.returncode == 2 and run.stdout == ""
     assert run.stderr == "symdecomp: error: fin.obj: edge (0, 1) is shared by 3 faces [0, 2, 6] (non-manifold edge)\n"
 
@@ -234,3 +241,15 @@ def test_artifact_indicators_not_applicable_say_why_once(capsys):
     lines = vertex_rows(capsys.readouterr().out)
     assert len(lines) == 13 + 1 and all(line.endswith("n/a") for line in lines[:-1])
     assert lines[-1] == f"artifact indicators n/a at valence 3, 5, 6: {exc.value}"
+
+
+@pytest.mark.parametrize("name", sorted(LEFT_OUT))
+def test_without_strict_the_rest_is_analysed_and_what_was_left_out_is_listed(tmp_path, name):
+    """Issue 31: a mesh with bad elements is analysed around them, the elements listed in --json, exit status 1."""
+    content = next(c for n, c, _ in MALFORMED if n == name)
+    path = tmp_path / name
+    path.write_text(content)
+    run = subprocess.run([sys.executable, "-m", "symdecomp", "inspect", str(path), "--json"], capture_output=True, text=True, cwd=ROOT)
+    assert run.returncode == 1, run.stderr
+    data = json.loads(run.stdout)
+    assert any(data["defects"].values()) or data["not_analysed"]

@@ -72,7 +72,8 @@ nothing else.
                    by the mirror symmetry of their sectors: crease block and sine blocks (``mirror``), the
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
-                   named by the mirror decomposition's blocks (``sharp_spectrum``), the limit and tangent
+                   named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
+                   (``sharp_structural``), the limit and tangent
                    masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,

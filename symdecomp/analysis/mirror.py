@@ -40,7 +40,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp import symbols
-from symdecomp.errors import InvalidSchemeError, InvalidTypeError, NotApplicableError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, Stencil, check_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sharp import SharpRules
@@ -270,8 +270,12 @@ def sector_matrix(scheme, vertex, rules=None) -> sp.Matrix:
     (BLZ's modified edge rule next to a sharp vertex where the rules give it), with ``theta_k`` the sector angle
     over the sector's faces; a dart's ``O`` uses the smooth vertex rule at valence ``n``.
     """
+    from symdecomp.schemes.sector import MAX_DENSE_FACES
+
     scheme = check_scheme(scheme)
     lay = vertex_layout(scheme, vertex)
+    if lay.faces > MAX_DENSE_FACES:
+        raise InvalidInputError(f"vertex: {lay.faces} faces; the assembled matrix is built for at most {MAX_DENSE_FACES} faces")
     edge, face = mirror_stencils(scheme)
     w = sharp_weights(scheme, rules)
     P = sp.zeros(lay.size, lay.size)

@@ -31,6 +31,8 @@ __all__ = ["sharpness", "add_sharp_options", "sharp_vertex", "faces_or_valence",
 
 #: Most faces around a sharp vertex on the command line (the matrices are dense and exact).
 MAX_FACES = 64
+#: Most faces where a command reads the vertex by the mirror decomposition's blocks (boundary, corner, crease).
+MAX_STRUCTURAL_FACES = 10_000
 
 
 def sharpness(text: str):
@@ -80,8 +82,12 @@ def sector_range(text: str) -> list[int]:
     return list(range(lo, hi + 1))
 
 
-def sharp_vertex(args, k: int):
-    """The :class:`~symdecomp.schemes.sector.SharpVertex` the options name, with ``k`` faces; one line for a bad combination."""
+def sharp_vertex(args, k: int, *, structural: bool = False):
+    """The :class:`~symdecomp.schemes.sector.SharpVertex` the options name, with ``k`` faces; one line for a bad combination.
+
+    ``structural``: the command reads boundary, corner and infinitely sharp crease vertices by the mirror decomposition's
+    blocks (O(k)), so they may have up to :data:`MAX_STRUCTURAL_FACES` faces; darts and semi-sharp creases stay dense.
+    """
     from symdecomp.schemes.sector import SharpVertex
 
     named = [option for dest, option in SHARP_OPTIONS.items() if given(args, dest)]
@@ -90,8 +96,11 @@ def sharp_vertex(args, k: int):
     if given(args, "sharpness") and named[0] not in ("--crease", "--dart"):
         raise InvalidInputError(f"--sharpness: {named[0]} edges are boundary edges, always infinitely sharp; give it with "
                                 "--crease or --dart")
-    if k > MAX_FACES or getattr(args, "crease", None) and k + args.crease > MAX_FACES:
-        raise InvalidInputError(f"the vertex has more than {MAX_FACES} faces (the matrices are dense and exact)")
+    wide = structural and named[0] != "--dart" and args.sharpness == math.inf
+    limit = MAX_STRUCTURAL_FACES if wide else MAX_FACES
+    if k > limit or getattr(args, "crease", None) and k + args.crease > limit:
+        raise InvalidInputError(f"the vertex has more than {limit} faces " + ("(the blocks are O(k))" if wide else
+                                "(the matrices are dense and exact)"))
     lat = args.scheme.lattice
     if named[0] == "--boundary":
         return SharpVertex.boundary(k, lat)

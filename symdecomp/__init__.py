@@ -101,7 +101,8 @@ nothing else.
                    ``s6_full_spectrum``), the toolkit's own claims beyond the paper (curvature and
                    shape, ``b1_curvature``; boundary and crease vertices, ``b2_mirror``) and their registry (``registry``); every claim is checked
                    for a scheme, within a time budget, and no verdict rests on a free parameter or an
-                   undefined value (``guards``); what several checks share: the requirements a claim declares
+                   undefined value (``guards``),
+                   many claims at once on the shared pool (``batch``); what several checks share: the requirements a claim declares
                    (``applicability``), computed evidence (``evidence``), the paper's notation
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,

@@ -15,7 +15,6 @@ True
 
 from __future__ import annotations
 
-
 import math
 from fractions import Fraction
 from functools import cache, lru_cache

@@ -93,7 +93,8 @@ nothing else.
                    the artifact indicators (``artifacts``); certified shape at the vertex: the sign
                    of the Gaussian curvature of a central surface (``curvature``), elliptic,
                    hyperbolic or hybrid, and the shape chart (``shape``); the certificate of the mirror
-                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``)
+                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``), its numeric check against
+                   the refined matrix (``sharp_numeric``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,

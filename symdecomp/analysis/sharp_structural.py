@@ -344,13 +344,17 @@ def _join(items: list[_Item], prec: int) -> list[BlockValue]:
             i = parent[i]
         return i
 
+    undecided = []
     for i, j in _overlapping(items, prec):
         equal = _decide(items[i], items[j])
-        if equal is None and not _separated(items[i], items[j], prec):
+        if equal is None:
+            undecided.append((i, j))
+        elif equal:
+            parent[root(i)] = root(j)
+    for i, j in undecided:  # after the exact decisions: equal through a third value (a rational), or told apart by Arb
+        if root(i) != root(j) and not _separated(items[i], items[j], prec):
             raise NotApplicableError(f"two eigenvalues ({items[i].exact}; {items[j].exact}) were neither decided equal "
                                      f"nor separated at {MAX_PREC} bits")
-        if equal:
-            parent[root(i)] = root(j)
     groups: dict = {}
     for i, it in enumerate(items):
         groups.setdefault(root(i), []).append(it)

@@ -115,3 +115,19 @@ def test_command_line_reads_a_thousand_faces():
     assert out.returncode == 0, out.stderr
     assert out.stdout.startswith("loop-blz, corner k=1000 (triangle mesh): 1002 eigenvalues")
     assert "from the blocks (O(k))" in out.stdout
+
+
+def test_unequal_sides_under_blz_reach_two_fields_and_agree_with_the_matrix():
+    """Crease 4+5 with BLZ's rules: entries in Q(cos(pi/4), cos(pi/5)), which the dense route refuses; 1/2 is an
+    eigenvalue of the crease block and of each side's first sine block (decided through the rational), and the
+    values agree with the refined matrix's eigenvalues (numeric check, nothing shared)."""
+    from symdecomp.verify.sharp_numeric import numeric_sharp
+
+    scheme = SCHEMES["cc-blz"]
+    vertex = sd.SharpVertex.crease(4, 5, scheme.lattice)
+    with pytest.raises(NotApplicableError, match="beyond one field"):
+        sharp_spectrum(scheme, vertex, route="dense")
+    s = sharp_spectrum(scheme, vertex)
+    assert s.field == "Q(cos(pi/4), cos(pi/5))" and s.route == "structural"
+    assert [e.multiplicity for e in s.entries if e.exact == "1/2"] == [3]
+    assert numeric_sharp(scheme, vertex, dps=40).ok

@@ -114,7 +114,7 @@ class _Field:
 
 def _poly_terms(expr: sp.Expr, k: int) -> tuple[tuple[int, int, Fraction], ...]:
     """``expr`` at ``k`` faces as ``(a, b, coefficient)`` terms of ``c^a c_k^b``, rational coefficients, or refused."""
-    expr = sp.sympify(expr).xreplace({symbols.sector_faces: sp.Integer(k)})
+    expr = sp.sympify(expr, strict=True).xreplace({symbols.sector_faces: sp.Integer(k)})
     try:
         poly = sp.Poly(sp.expand(expr), C, CK)
     except sp.PolynomialError:
@@ -273,7 +273,7 @@ def _fraction(q) -> Fraction:
 def _crease_items(scheme, lay, prec: int) -> list[_Item]:
     """The crease block's eigenvalues, exactly (FLINT), as items."""
     block = crease_block(scheme, len(lay.sharp), corner=lay.corner)
-    if not all(sp.sympify(e).is_Rational for e in block):
+    if not all(sp.sympify(e, strict=True).is_Rational for e in block):
         raise NotApplicableError(f"scheme {scheme.name!r}: the crease block {block.tolist()} is not rational")
     S = flint.fmpq_mat([[flint.fmpq(int(e.p), int(e.q)) for e in row] for row in block.tolist()])
     out = []
@@ -317,7 +317,7 @@ def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict)
             text = f"(t {'+' if sign > 0 else '-'} sqrt(t**2 - 4*d))/2 with t = {t_text}, d = {d_text}{c}"
             out.append(_Item(base + (sign,), 1, list(names), text, block=blk, sign=sign))
     if quad:
-        h0 = sp.sympify(mirror_stencils(scheme)[1]["b"].get(0, 0))
+        h0 = sp.sympify(mirror_stencils(scheme)[1]["b"].get(0, 0), strict=True)
         if not h0.is_Rational:
             raise NotApplicableError(f"scheme {scheme.name!r}: the face rule's own weight {h0} is not rational")
         out.append(_Item(("q", Fraction(int(h0.p), int(h0.q))), 1, [SectorEigenvalue(h0, "face", s, k)], sp.sstr(h0),

@@ -131,3 +131,13 @@ def test_unequal_sides_under_blz_reach_two_fields_and_agree_with_the_matrix():
     assert s.field == "Q(cos(pi/4), cos(pi/5))" and s.route == "structural"
     assert [e.multiplicity for e in s.entries if e.exact == "1/2"] == [3]
     assert numeric_sharp(scheme, vertex, dps=40).ok
+
+
+def test_block_names_print_theta_as_sympy_does():
+    from fractions import Fraction
+
+    import sympy as sp
+
+    from symdecomp.analysis.sharp_spectrum import pi_multiple
+
+    assert all(pi_multiple(Fraction(j, k)) == sp.sstr(sp.pi * j / k) for k in range(1, 40) for j in range(1, 2 * k + 1))

@@ -30,3 +30,16 @@ def test_one_job_is_check_claim_itself():
 def test_an_unknown_label_is_refused_before_any_work():
     with pytest.raises(InvalidInputError, match="no claim labelled 'Eq. 999'"):
         list(check_claims(["Eq. 34", "Eq. 999"], jobs=2))
+
+
+def test_the_command_prints_the_same_table_on_the_pool(capsys):
+    import json
+
+    from symdecomp.cli import main
+
+    tables = []
+    for jobs in ("1", "2"):
+        assert main(["claims", "--section", "5.3", "--json", "--jobs", jobs]) == 0
+        tables.append(json.loads(capsys.readouterr().out))
+    assert tables[0] == tables[1] and len(tables[0]) >= 2
+    assert all(" True" not in row.get("counterexample", "") for row in tables[1])

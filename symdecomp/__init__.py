@@ -80,7 +80,8 @@ nothing else.
                    by the mirror symmetry of their sectors: crease block and sine blocks (``mirror``), the
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
-                   named by the mirror decomposition's blocks (``sharp_spectrum``), the limit and tangent
+                   named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
+                   (``sharp_structural``), the limit and tangent
                    masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
@@ -101,7 +102,8 @@ nothing else.
                    the artifact indicators (``artifacts``); certified shape at the vertex: the sign
                    of the Gaussian curvature of a central surface (``curvature``), elliptic,
                    hyperbolic or hybrid, and the shape chart (``shape``); the certificate of the mirror
-                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``); a mesh's
+                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``), its numeric check against
+                   the refined matrix (``sharp_numeric``); a mesh's
                    kinds' C1 verdicts and curvature regimes (``mesh_verdicts``) and its limits against
                    OpenSubdiv's (``oracle_mesh``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
@@ -111,7 +113,8 @@ nothing else.
                    ``s6_full_spectrum``), the toolkit's own claims beyond the paper (curvature and
                    shape, ``b1_curvature``; boundary and crease vertices, ``b2_mirror``) and their registry (``registry``); every claim is checked
                    for a scheme, within a time budget, and no verdict rests on a free parameter or an
-                   undefined value (``guards``); what several checks share: the requirements a claim declares
+                   undefined value (``guards``),
+                   many claims at once on the shared pool (``batch``); what several checks share: the requirements a claim declares
                    (``applicability``), computed evidence (``evidence``), the paper's notation
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from functools import cache
+from functools import cache, lru_cache
 
 import flint
 import mpmath
@@ -163,13 +163,8 @@ class Cyclotomic:
     def to_sympy(self) -> sp.Expr:
         """As a sympy number: ``sum_k c_k (cos(2 pi k/N) + i sin(2 pi k/N))``, expanded."""
         N = self.field.N
-        total = sp.Integer(0)
-        for k, c in enumerate(self.poly.coeffs()):
-            if c != 0:
-                q = sp.Rational(int(c.p), int(c.q))
-                angle = 2 * sp.pi * sp.Rational(k, N)
-                total += q * (sp.cos(angle) + sp.I * sp.sin(angle))
-        return sp.expand(total)
+        terms = [sp.Rational(int(c.p), int(c.q)) * _root_of_unity(N, k) for k, c in enumerate(self.poly.coeffs()) if c != 0]
+        return sp.expand(sp.Add(*terms))
 
     def to_mpc(self):
         """As an mpmath number at the current working precision."""
@@ -182,6 +177,13 @@ class Cyclotomic:
 
     def __repr__(self):
         return f"Cyclotomic({self.poly}, N={self.field.N})"
+
+
+@lru_cache(maxsize=4096)
+def _root_of_unity(N: int, k: int) -> sp.Expr:
+    """``cos(2 pi k/N) + i sin(2 pi k/N)`` as sympy evaluates it, expanded (shared by every :meth:`Cyclotomic.to_sympy`)."""
+    angle = 2 * sp.pi * sp.Rational(k, N)
+    return sp.expand(sp.cos(angle) + sp.I * sp.sin(angle))
 
 
 def _trig_fraction(term: sp.Expr, values: dict) -> sp.Rational:

@@ -33,6 +33,7 @@ comparison with the boundary curve's eigenvalue for every ``k`` is :mod:`symdeco
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import numbers
 from dataclasses import dataclass
@@ -40,7 +41,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp import symbols
-from symdecomp.errors import InvalidSchemeError, InvalidTypeError, NotApplicableError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, Stencil, check_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sharp import SharpRules
@@ -143,6 +144,14 @@ def sine_block(scheme, rules=None, *, modified: bool = True) -> sp.Matrix:
 
 
 def sine_identity(scheme, rules=None, *, modified: bool = True) -> tuple[sp.Matrix, sp.Matrix]:
+    """The proof that the sine polylines are invariant for every ``k`` (:func:`_sine_identity`), once per scheme and rules."""
+    scheme = check_scheme(scheme)
+    rules = None if rules is None else check_type(rules, SharpRules, "rules")
+    return _sine_identity(scheme, rules, bool(modified))
+
+
+@functools.lru_cache(maxsize=64)
+def _sine_identity(scheme, rules, modified: bool) -> tuple[sp.ImmutableMatrix, sp.ImmutableMatrix]:
     """The proof that the sine polylines are invariant for every ``k``: ``(residual, boundary values)``.
 
     ``residual``: each interior stencil applied to ``a_m = A sin(theta m)``, ``b_m = B sin(theta (m + 1/2))``
@@ -166,8 +175,8 @@ def sine_identity(scheme, rules=None, *, modified: bool = True) -> tuple[sp.Matr
     if face is not None:
         new_b = sum((w * a(_I + d) for d, w in face["a"].items()), sp.Integer(0)) + face["b"].get(0, 0) * b(_I)
         rows.append(new_b - (M[1, 0] * A + M[1, 1] * B) * sp.sin(THETA * (_I + sp.Rational(1, 2))))
-    residual = sp.Matrix([sp.simplify(sp.expand(sp.expand_trig(r))) for r in rows])
-    boundary = sp.Matrix([sp.sin(THETA * 0), sp.sin(THETA * _K).subs(THETA, sp.pi * _J / _K)])
+    residual = sp.ImmutableMatrix([sp.simplify(sp.expand(sp.expand_trig(r))) for r in rows])
+    boundary = sp.ImmutableMatrix([sp.sin(THETA * 0), sp.sin(THETA * _K).subs(THETA, sp.pi * _J / _K)])
     return residual, boundary
 
 
@@ -270,8 +279,12 @@ def sector_matrix(scheme, vertex, rules=None) -> sp.Matrix:
     (BLZ's modified edge rule next to a sharp vertex where the rules give it), with ``theta_k`` the sector angle
     over the sector's faces; a dart's ``O`` uses the smooth vertex rule at valence ``n``.
     """
+    from symdecomp.schemes.sector import MAX_DENSE_FACES
+
     scheme = check_scheme(scheme)
     lay = vertex_layout(scheme, vertex)
+    if lay.faces > MAX_DENSE_FACES:
+        raise InvalidInputError(f"vertex: {lay.faces} faces; the assembled matrix is built for at most {MAX_DENSE_FACES} faces")
     edge, face = mirror_stencils(scheme)
     w = sharp_weights(scheme, rules)
     P = sp.zeros(lay.size, lay.size)

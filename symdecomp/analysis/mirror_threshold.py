@@ -37,7 +37,7 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import sharp_subdivision_matrix
 
-__all__ = ["C", "CK", "X", "block_polynomials", "sine_part", "sine_part_in_cos",
+__all__ = ["C", "CK", "X", "in_cos", "block_polynomials", "sine_part", "sine_part_in_cos",
            "charpoly_check", "Threshold", "first_exceeding", "boundary_eigenvalue",
            "crease_eigenvectors"]
 
@@ -55,7 +55,8 @@ def boundary_eigenvalue(scheme, rules=None) -> sp.Expr:
     return sp.simplify((Cb * v)[1] / v[1])
 
 
-def _in_c(expr) -> sp.Expr:
+def in_cos(expr) -> sp.Expr:
+    """``expr`` (in ``cos(theta)``, ``cos(theta/2)``) as a polynomial in :data:`C`, ``cos(theta/2)^2 = (1 + c)/2``."""
     out = sp.expand(sp.sympify(expr, strict=True).subs({sp.cos(THETA / 2): _H, sp.cos(THETA): C}))
     out = sp.expand(out.subs(_H**2, (1 + C) / 2))
     if out.has(THETA) or out.has(THETA_K):
@@ -72,9 +73,9 @@ def block_polynomials(scheme, rules=None, *, first: bool = True) -> tuple[sp.Exp
     M = sine_block(scheme, rules)
     M = M.subs(THETA_K, THETA) if first else M
     if M.shape == (1, 1):
-        return _in_c(M[0, 0]), _in_c(M[0, 0])
-    off = _in_c(M[0, 1] * M[1, 0])
-    return _in_c(M.trace()), sp.expand(_in_c(M[0, 0]) * _in_c(M[1, 1]) - off)
+        return in_cos(M[0, 0]), in_cos(M[0, 0])
+    off = in_cos(M[0, 1] * M[1, 0])
+    return in_cos(M.trace()), sp.expand(in_cos(M[0, 0]) * in_cos(M[1, 1]) - off)
 
 
 def _charpoly_in_c(scheme, rules=None) -> sp.Poly:
@@ -122,10 +123,10 @@ def sine_part_in_cos(scheme, k: int, rules=None, *, dart: bool = False) -> sp.Po
     if M.has(THETA_K):
         raise NotApplicableError("a sine block reads the sector angle other than through cos(theta_k)")
     if M.shape == (1, 1):
-        p = sp.Poly(X - _in_c(M[0, 0]), X, C, CK)
+        p = sp.Poly(X - in_cos(M[0, 0]), X, C, CK)
     else:
-        det = sp.expand(_in_c(M[0, 0]) * _in_c(M[1, 1]) - _in_c(M[0, 1] * M[1, 0]))
-        p = sp.Poly(X**2 - _in_c(M.trace()) * X + det, X, C, CK)
+        det = sp.expand(in_cos(M[0, 0]) * in_cos(M[1, 1]) - in_cos(M[0, 1] * M[1, 0]))
+        p = sp.Poly(X**2 - in_cos(M.trace()) * X + det, X, C, CK)
     F = _frequencies(k, dart)
     out = sp.Poly(sp.resultant(F.as_expr(), p.as_expr(), C), X, CK) if F.degree() > 0 else sp.Poly(1, X, CK)
     lead = out.coeff_monomial(X ** out.degree(X)) if out.degree(X) > 0 else 1

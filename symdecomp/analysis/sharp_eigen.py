@@ -134,10 +134,28 @@ def _factor_roots(p: flint.fmpq_poly, prec: int) -> list[tuple[int, sp.Expr, obj
     out = []
     for index in range(p.degree()):
         exact = root_expression(p, index)
-        approx = complex(sp.N(exact, 30))
-        ball = min(balls, key=lambda b: abs(complex(float(b.real.mid()), float(b.imag.mid())) - approx))
+        ball = _in_interval(exact, balls) if isinstance(exact, sp.CRootOf) else None
+        if ball is None:  # a closed form (degree <= 2), or sympy's interval meets several balls
+            approx = complex(sp.N(exact, 30))
+            ball = min(balls, key=lambda b: abs(complex(float(b.real.mid()), float(b.imag.mid())) - approx))
         out.append((index, exact, ball))
     return out
+
+
+def _in_interval(root: sp.CRootOf, balls: list):
+    """The one ball that meets sympy's isolating interval of ``root`` (which holds that root and no other), or ``None``.
+
+    The interval is what sympy already computed to number the roots; refining it to 30 digits, as evaluating the root
+    does, costs minutes at degree 30 or more (the roots of a dart's factors), matching by the interval does not.
+    """
+    iv = root._get_interval()
+    if isinstance(iv, sp.polys.rootisolation.RealInterval):
+        box = ((iv.a, iv.b), (0, 0))
+    else:
+        box = ((iv.ax, iv.bx), (iv.ay, iv.by))
+    (x0, x1), (y0, y1) = ((flint.arb(flint.fmpq(int(sp.Rational(v).p), int(sp.Rational(v).q))) for v in pair) for pair in box)
+    hits = [b for b in balls if not (b.real < x0 or b.real > x1 or b.imag < y0 or b.imag > y1)]
+    return hits[0] if len(hits) == 1 else None
 
 
 def part_eigenvalues(S: flint.fmpq_mat, parts: Sequence[MatrixPart], *, prec: int = 256) -> list[SharpEigenvalue]:

@@ -44,7 +44,7 @@ from symdecomp.analysis.sharp_eigen import SharpEigenvalue, ball_at, merge, sepa
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 
-__all__ = ["SharpMask", "SharpMasks", "sharp_masks"]
+__all__ = ["SharpMask", "SharpMasks", "sharp_masks", "MAX_MASK_SYSTEM"]
 
 _ONE = flint.fmpq_poly([-1, 1])
 
@@ -112,6 +112,7 @@ def _eigenvector(S: flint.fmpq_mat, rows: tuple[int, ...], value: SharpEigenvalu
     local = {r: i for i, r in enumerate(rows)}
     order = [local[r] for r in order_first if r in local] + [i for r, i in local.items() if r not in order_first]
     if isinstance(S, flint.fmpq_mat):
+        _check_system(len(rows), value)
         space = left_eigenspace(submatrix(S, rows), value.factor, order)
         zero = FieldElement(flint.fmpq_poly([]), value.factor)
     else:
@@ -127,6 +128,20 @@ def _eigenvector(S: flint.fmpq_mat, rows: tuple[int, ...], value: SharpEigenvalu
             full[r] = v[i]
         out.append(full)
     return out
+
+
+#: Largest rational system ``m d`` (``m`` points, the eigenvalue of degree ``d``) solved for an exact mask: its dense
+#: elimination grows as ``(m d)^3`` with growing rationals (``masks 64 --dart`` asked for one of about 8,000 unknowns and
+#: ended in an allocation failure after minutes); checked before any work.
+MAX_MASK_SYSTEM = 1200
+
+
+def _check_system(points: int, value: SharpEigenvalue) -> None:
+    size = points * value.factor.degree()
+    if size > MAX_MASK_SYSTEM:
+        raise NotApplicableError(f"the mask at the eigenvalue {acb_text(value.ball, 8)} (degree {value.factor.degree()} over Q) "
+                                 f"is the null space of a rational system of {points} x {value.factor.degree()} = {size} "
+                                 f"unknowns, more than the {MAX_MASK_SYSTEM} solved exactly here")
 
 
 def _expanded(values) -> list[SharpEigenvalue]:

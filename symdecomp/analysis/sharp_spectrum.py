@@ -18,17 +18,18 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from fractions import Fraction
 
 import flint
 import sympy as sp
 
 from symdecomp.analysis.ring_spectrum import acb_text
 from symdecomp.analysis.sharp_eigen import SharpEigenvalue, merge
-from symdecomp.errors import NotApplicableError
+from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits
 
-__all__ = ["SharpSpectrumEntry", "SharpSpectrum", "sharp_spectrum", "sharp_levels", "MAX_EXACT_TEXT"]
+__all__ = ["SharpSpectrumEntry", "SharpSpectrum", "sharp_spectrum", "sharp_levels", "MAX_EXACT_TEXT", "STRUCTURAL_FROM"]
 
 #: Longest closed form printed for a block's eigenvalue; longer ones are shown as the root of their factor.
 MAX_EXACT_TEXT = 90
@@ -38,7 +39,8 @@ MAX_EXACT_TEXT = 90
 class SharpSpectrumEntry:
     """One distinct eigenvalue."""
 
-    #: The exact eigenvalue (its factor and root, a certified ball).
+    #: The exact eigenvalue (its factor and root, a certified ball); on the structural route a
+    #: :class:`~symdecomp.analysis.sharp_structural.BlockValue` (an exact expression and a certified ball).
     eigenvalue: SharpEigenvalue
     #: Decimal text.
     text: str
@@ -72,11 +74,13 @@ class SharpSpectrum:
     entries: tuple[SharpSpectrumEntry, ...]
     #: The field of the matrix's entries: ``"Q"``, or ``"Q(cos(pi/k))"`` for rules with ``cos(theta_k)`` weights.
     field: str = "Q"
+    #: ``"dense"`` (the matrix's characteristic polynomial) or ``"structural"`` (the mirror decomposition's blocks).
+    route: str = "dense"
 
     def as_json(self) -> dict:
         s = self.sharpness
         return {"level": self.level, "sharpness": "inf" if s == math.inf else str(s), "size": self.size, "field": self.field,
-                "decomposed": self.decomposed, "eigenvalues": [e.as_json() for e in self.entries]}
+                "decomposed": self.decomposed, "route": self.route, "eigenvalues": [e.as_json() for e in self.entries]}
 
 
 def _block_name(e, vertex) -> str:
@@ -86,8 +90,14 @@ def _block_name(e, vertex) -> str:
     where = f", sector {e.sector + 1}" if len(vertex.sectors) > 1 else ""
     if e.block == "face":
         return f"last mode j={e.j} (b_i = (-1)^i){where}"
-    theta = sp.pi * e.j * (2 if vertex.closed and len(vertex.sectors) == 1 else 1) / k
-    return f"sine j={e.j} (theta = {sp.sstr(theta)}){where}"
+    return f"sine j={e.j} (theta = {pi_multiple(Fraction(e.j * (2 if vertex.closed and len(vertex.sectors) == 1 else 1), k))}){where}"
+
+
+def pi_multiple(q: Fraction) -> str:
+    """``q pi`` as sympy prints it (``pi/5``, ``2*pi/5``, ``pi``), without building the expression (20,000 names at a
+    vertex of 10,000 faces)."""
+    head = "pi" if q.numerator == 1 else f"{q.numerator}*pi"
+    return head if q.denominator == 1 else f"{head}/{q.denominator}"
 
 
 def _exact_text(v: SharpEigenvalue, candidates: list) -> str:
@@ -128,14 +138,32 @@ def _names(scheme, vertex, values: list[SharpEigenvalue]) -> tuple[dict, dict] |
     return names, forms
 
 
-def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20) -> SharpSpectrum:
-    """The exact spectrum of ``vertex`` at refinement ``level``, each eigenvalue named by its block (module docstring)."""
+#: From this many faces on, ``route="auto"`` takes the structural route (where it applies).
+STRUCTURAL_FROM = 9
+_ROUTES = ("auto", "dense", "structural")
+
+
+def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20, route: str = "auto") -> SharpSpectrum:
+    """The exact spectrum of ``vertex`` at refinement ``level``, each eigenvalue named by its block (module docstring).
+
+    ``route``: ``"dense"`` (the matrix built by refinement, its characteristic polynomial factored), ``"structural"``
+    (the mirror decomposition's blocks, O(k): :mod:`symdecomp.analysis.sharp_structural`; refused where it does not
+    apply), or ``"auto"``: structural from :data:`STRUCTURAL_FROM` faces on where it applies, else dense.
+    """
     from symdecomp.analysis.sharp_field import sharp_values
 
     scheme, digits = check_scheme(scheme), check_digits(digits)
+    if route not in _ROUTES:
+        raise InvalidInputError(f"route: expected one of {', '.join(_ROUTES)}, got {route!r:.40}")
+    here = vertex.at_level(level)
+    if route == "structural" or (route == "auto" and here.faces >= STRUCTURAL_FROM and here.sharpness == math.inf):
+        try:
+            return _structural_spectrum(scheme, vertex, level, digits)
+        except NotApplicableError:
+            if route == "structural":
+                raise
     S, _, values = sharp_values(scheme, vertex, level=level, prec=max(256, 4 * digits + 64))
     values = merge(values)
-    here = vertex.at_level(level)
     named = _names(scheme, here, values) if here.sharpness == math.inf else None
     entries = []
     with flint.ctx.workprec(4 * digits + 64):
@@ -145,6 +173,26 @@ def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20) 
             entries.append(SharpSpectrumEntry(v, text, blocks, _exact_text(v, named[1][v.key] if named else [])))
     return SharpSpectrum(scheme.name, vertex, level, here.sharpness, S.nrows(), named is not None, tuple(entries),
                          field_name(S))
+
+
+def _structural_spectrum(scheme: Scheme, vertex, level: int, digits: int) -> SharpSpectrum:
+    """:func:`sharp_spectrum` from the blocks of the mirror decomposition (no matrix of the vertex)."""
+    from symdecomp.analysis.sharp_field import near_weight
+    from symdecomp.analysis.sharp_structural import structural_values
+
+    here = vertex.at_level(level)
+    values, size = structural_values(scheme, here, prec=max(256, 4 * digits + 64))
+    entries = []
+    with flint.ctx.workprec(4 * digits + 64):
+        for v in values:
+            names: list[str] = []
+            for e in v.blocks:
+                if _block_name(e, here) not in names:
+                    names.append(_block_name(e, here))
+            entries.append(SharpSpectrumEntry(v, acb_text(v.ball, digits), tuple(names), v.exact))
+    irrational = sorted(k for k in set(here.sectors) if near_weight(scheme, here, k) is not None)
+    field = f"Q({', '.join(f'cos(pi/{k})' for k in irrational)})" if irrational else "Q"
+    return SharpSpectrum(scheme.name, vertex, level, here.sharpness, size, True, tuple(entries), field, "structural")
 
 
 def field_name(S) -> str:

@@ -77,10 +77,11 @@ def register(sub) -> None:
     add_pool_options(p)
     flag(p, "--json", help="print one JSON object: {rows: [...], summary: {...}}")
     which.add_argument("--k", dest="sectors", type=sector_range, action=Once, metavar="A:B",
-                       help="with --certify and --boundary, --corner, --crease K2 or --dart: the faces K of the vertex's "
-                       "sector, K or an inclusive range A:B (1 <= K <= 64); each K is proved: the mirror decomposition's "
-                       "blocks against the 1-ring matrix built by exact refinement of the tagged mesh (chi_S = the "
-                       "product of the blocks' characteristic polynomials, exactly)")
+                       help="with --boundary, --corner, --crease K2 or --dart: the faces K of the vertex's "
+                       "sector, K or an inclusive range A:B (1 <= K <= 64); with --certify each K is proved: the mirror "
+                       "decomposition's blocks against the 1-ring matrix built by exact refinement of the tagged mesh "
+                       "(chi_S = the product of the blocks' characteristic polynomials, exactly); without, numerically "
+                       "(not darts): the blocks' values against the matrix's eigenvalues to --dps/2 digits, on --jobs workers")
     add_scheme_option(p)
     add_rings_option(p)
     add_sharp_options(p, count="--k")
@@ -96,7 +97,7 @@ def _run_sharp(args, plot) -> int:
     from symdecomp.verify.sharp_certify import certify_sharp
 
     if not args.certify:
-        raise InvalidInputError("check --k: the check of boundary, crease, corner and dart vertices is certified: give --certify")
+        return _run_sharp_numeric(args)
     for option in ("--route", "--structural", "--solver", "--jobs", "--executor", "--dps"):
         if given(args, option.lstrip("-")):
             raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
@@ -138,6 +139,41 @@ def _figure(scheme: str, rows: list):
     from symdecomp.output.plotting.check_chart import check_figure
 
     return check_figure(scheme, [r.as_json() for r in rows])
+
+
+def _run_sharp_numeric(args) -> int:
+    """``check --k A:B --boundary`` (and --corner, --crease K2): the blocks against the refined matrix, numerically, on the pool."""
+    from symdecomp.analysis.sharp_structural import structural_values
+    from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
+    from symdecomp.parallel import ordered_map
+    from symdecomp.verify.sharp_numeric import numeric_row
+
+    for option in ("--route", "--structural", "--solver"):
+        if given(args, option.lstrip("-")):
+            raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
+    refuse_sharp_options(args, "--rings")
+    vertices = [sharp_vertex(args, k) for k in args.sectors]
+    exact_only(args, vertices[0], lambda: structural_values(args.scheme, vertices[0]))  # darts, semi-sharp: refused here
+    start, rows = time.perf_counter(), []
+    if not args.json:
+        print(f"{args.scheme.name}: mirror decomposition's blocks vs the refined 1-ring matrix, numeric (to {args.dps // 2} "
+              f"digits, eigenvalues at {args.dps}; --certify proves it)")
+        print(f"{'K':>4}  {'status':<13} {'size':>5} {'distinct':>8}  vertex")
+    results = ordered_map(numeric_row, vertices, shared={"scheme": args.scheme, "dps": args.dps}, jobs=args.jobs,
+                          executor=args.executor)
+    for r in progress(results, len(vertices), "check"):
+        rows.append(r)
+        if not args.json:
+            line = f"{r.k:>4}  {r.status.value:<13} {r.size:>5} {r.distinct:>8}  {r.vertex}"
+            print(line if r.ok else f"{line}\n      {r.message}", flush=True)
+    failed = [r for r in rows if not r.ok]
+    if args.json:
+        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertices[0]).split()[0], "rows": [r.as_json() for r in rows],
+                    "summary": {"mode": "numeric", "route": "mirror", "sectors": len(rows), "dps": args.dps,
+                                "seconds": round(time.perf_counter() - start, 3), "ok": not failed}})
+    else:
+        print(f"{len(rows)} vertices: {len(rows) - len(failed)} agree ({time.perf_counter() - start:.2f} s)")
+    return 1 if failed else 0
 
 
 def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):

@@ -4,7 +4,16 @@ from __future__ import annotations
 
 import argparse
 
-from symdecomp.cli.common import Once, add_budget_option, add_scheme_option, flag, print_json, progress, refuse_non_quad
+from symdecomp.cli.common import (
+    Once,
+    add_budget_option,
+    add_pool_options,
+    add_scheme_option,
+    flag,
+    print_json,
+    progress,
+    refuse_non_quad,
+)
 from symdecomp.cli.progress import add_quiet_option
 
 
@@ -29,6 +38,7 @@ def register(sub) -> None:
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
     add_scheme_option(p)
     add_budget_option(p)
+    add_pool_options(p)
     flag(p, "--no-progress", help="do not draw a progress bar on stderr (the same as --quiet)")
     add_quiet_option(p)
     p.set_defaults(func=run)
@@ -46,7 +56,8 @@ def section(text: str) -> str:
 
 
 def run(args) -> int:
-    from symdecomp.claims import Status, all_claims, check_claim, scope_summary
+    from symdecomp.claims import Status, all_claims, scope_summary
+    from symdecomp.claims.batch import check_claims
 
     refuse_non_quad(args.scheme, "claims")
     claims = all_claims()
@@ -61,8 +72,8 @@ def run(args) -> int:
             raise InvalidInputError(f"no claim labelled {', '.join(sorted(unknown))}")
         claims = [c for c in claims if c.label in wanted]
     rows, results = [], []
-    for c in progress(claims, len(claims), "checking claims", enabled=not (args.no_progress or args.quiet or args.json)):
-        r = check_claim(c.label, args.scheme, budget=args.budget)
+    checked = check_claims([c.label for c in claims], args.scheme, budget=args.budget, jobs=args.jobs, executor=args.executor)
+    for c, r in zip(claims, progress(checked, len(claims), "checking claims", enabled=not (args.no_progress or args.quiet or args.json))):
         results.append(r)
         row = {
             "label": c.label,

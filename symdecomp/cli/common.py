@@ -90,7 +90,10 @@ LIMITS = {
     "report": (MAX_REPORT_VALENCE, "a report's tables grow with every valence (2N + 1 eigenvalues and mask weights) and its "
                "eigen-polygon figure has N panels a row; 3:8 takes about half a minute"),
     "--boundary, --corner, --crease, --dart: faces": (64, "the faces K (K + K2 on a crease) around a boundary, crease, "
-                                                     "corner or dart vertex: its 1-ring matrices are dense and exact"),
+                                                     "corner or dart vertex where its 1-ring matrices are dense and exact (darts, "
+                                                     "semi-sharp creases, masks, certificates, C1)"),
+    "--boundary, --corner, --crease: faces by the blocks": (10_000, "the faces K (K + K2 on a crease) where spectrum and "
+                                                            "check read the vertex by the mirror decomposition's blocks, O(K)"),
     "evaldata --k": (64, "a sharp vertex has at most 64 faces; k = 64 writes about 10 MB of exact rationals"),
     "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 256 bits "
                  "(a run's memory is estimated and checked before it starts)"),

@@ -39,6 +39,8 @@ MAX_FACES = LIMITS["--boundary, --corner, --crease, --dart: faces"][0]
 #: allocation fails. A dart has no mirror symmetry, so its matrix is analysed whole; the other vertices' sectors split
 #: it into small blocks (32 faces in under 80 MB).
 BYTES_AT_16_FACES = 28 << 20
+#: Most faces where a command reads the vertex by the mirror decomposition's blocks (boundary, corner, crease).
+MAX_STRUCTURAL_FACES = LIMITS["--boundary, --corner, --crease: faces by the blocks"][0]
 
 
 def sharpness(text: str):
@@ -119,14 +121,21 @@ def check_rules_at(scheme, vertex) -> None:
         raise InvalidInputError(f"--scheme {scheme.name}: {exc}") from None
 
 
-def sharp_vertex(args, k: int):
-    """The :class:`~symdecomp.schemes.sector.SharpVertex` the options name, with ``k`` faces; one line for a bad combination."""
+def sharp_vertex(args, k: int, *, structural: bool = False):
+    """The :class:`~symdecomp.schemes.sector.SharpVertex` the options name, with ``k`` faces; one line for a bad combination.
+
+    ``structural``: the command reads boundary, corner and infinitely sharp crease vertices by the mirror decomposition's
+    blocks (O(k)), so they may have up to :data:`MAX_STRUCTURAL_FACES` faces; darts and semi-sharp creases stay dense.
+    """
     from symdecomp.schemes.sector import SharpVertex
 
     check_sharp_options(args)
     named = [option for dest, option in SHARP_OPTIONS.items() if given(args, dest)]
-    if k > MAX_FACES or getattr(args, "crease", None) and k + args.crease > MAX_FACES:
-        raise InvalidInputError(f"the vertex has more than {MAX_FACES} faces (the matrices are dense and exact)")
+    wide = structural and named[0] != "--dart" and args.sharpness == math.inf
+    limit = MAX_STRUCTURAL_FACES if wide else MAX_FACES
+    if k > limit or getattr(args, "crease", None) and k + args.crease > limit:
+        raise InvalidInputError(f"the vertex has more than {limit} faces " + ("(the blocks are O(k))" if wide else
+                                "(the matrices are dense and exact)"))
     lat = args.scheme.lattice
     if named[0] == "--boundary":
         vertex = SharpVertex.boundary(k, lat)

@@ -45,7 +45,7 @@ def _run_sharp(args, plot) -> int:
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
 
     refuse_sharp_options(args, "--rings", "--exact")
-    vertex = sharp_vertex(args, args.n)
+    vertex = sharp_vertex(args, args.n, structural=True)
     levels = exact_only(args, vertex, lambda: sharp_levels(args.scheme, vertex, digits=args.digits))
     write_plot(plot, lambda: _figure(levels, describe(vertex)))
     if args.json:
@@ -59,7 +59,10 @@ def _run_sharp(args, plot) -> int:
                  + ("semi-sharp edges)" if s.sharpness != float("inf") else "see check --k K --certify)"))
         print(f"{args.scheme.name}, {describe(vertex)}{where} ({vertex.lattice} mesh): {s.size} eigenvalues, {distinct} "
               f"distinct; {names}")
-        if s.field != "Q":
+        if s.route == "structural":
+            print(f"from the blocks (O(k)): each value a root of its block's polynomial over {s.field}, certified by Arb; "
+                  "multiplicities exact (equal blocks, and overlapping values decided in the field)")
+        elif s.field != "Q":
             print(f"entries in {s.field}: eigenvalues and multiplicities exact (roots of irreducible rational factors of the "
                   "norm of chi_S, matched to this embedding by Arb)")
         width = max(len(e.text) for e in s.entries)

@@ -51,10 +51,12 @@ from symdecomp.schemes.sharp import SharpOptions, check_sharpness, decrement
 from symdecomp.schemes.sharp_refinement import TaggedMesh, sharp_stencils
 from symdecomp.validate import cached, check_int, check_levels, check_memory, check_type
 
-__all__ = ["SharpVertex", "sharp_subdivision_matrix", "exact_sharp_matrix", "MAX_SECTOR_FACES", "MAX_LEVEL"]
+__all__ = ["SharpVertex", "sharp_subdivision_matrix", "exact_sharp_matrix", "MAX_SECTOR_FACES", "MAX_DENSE_FACES", "MAX_LEVEL"]
 
-#: Most faces around a sharp vertex (the matrices are dense sympy matrices).
-MAX_SECTOR_FACES = 64
+#: Most faces around a sharp vertex (the structural route, :mod:`symdecomp.analysis.sharp_structural`, is O(k)).
+MAX_SECTOR_FACES = 10_000
+#: Most faces around a vertex whose matrix is built here (dense, exact): checked before any work.
+MAX_DENSE_FACES = 64
 #: Highest refinement level of :func:`sharp_subdivision_matrix` (past 10 every finite sharpness is 0).
 MAX_LEVEL = 16
 
@@ -251,6 +253,9 @@ def _sparse_rows(scheme, vertex, rings, level, options) -> tuple[dict, ...]:
     level, options = _check_level(level), _check_options(options)
     if vertex.lattice is not scheme.lattice:
         raise InvalidMeshError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, the vertex on {vertex.lattice}")
+    if vertex.faces > MAX_DENSE_FACES:
+        raise InvalidInputError(f"vertex: {vertex.faces} faces; its exact matrix is built for at most {MAX_DENSE_FACES} faces "
+                                "(dense and exact)")
     vertex = vertex.at_level(level)
     # one ring more than is read: whether a vertex of the K-ring is a sharp vertex (BLZ's rules ask) and its
     # rule's inputs are decided by its whole fan, which the (K + 1)-ring mesh holds

@@ -59,9 +59,29 @@ def test_text_rows_look_like_the_interior_check(capsys):
     assert lines[2].split()[:2] == ["3", "agree"] and lines[-1].startswith("2 vertices: 2 agree")
 
 
+def test_numeric_mode_compares_the_blocks_with_the_matrix_on_the_pool(capsys):
+    assert main(["check", "--k", "1:6", "--corner", "--scheme", "loop-blz", "--jobs", "2", "--dps", "30", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["summary"]["mode"] == "numeric" and out["summary"]["ok"] and out["summary"]["sectors"] == 6
+    assert [r["k"] for r in out["rows"]] == [1, 2, 3, 4, 5, 6] and all(r["status"] == "agree" for r in out["rows"])
+    assert [r["size"] for r in out["rows"]] == [k + 2 for k in range(1, 7)]  # O, a_0..a_k on triangles
+
+
+def test_numeric_mode_finds_a_wrong_block(monkeypatch, capsys):
+    """The matrix is built without the blocks: spoil the blocks and the numeric check says where."""
+    from symdecomp.analysis import sharp_structural
+
+    real = sharp_structural._eval_arb
+    monkeypatch.setattr(sharp_structural, "_eval_arb", lambda terms, c, ck: real(terms, c, ck) * 1.001)
+    assert main(["check", "--k", "4", "--boundary", "--jobs", "1"]) == 1
+    out = capsys.readouterr().out
+    assert "disagree" in out and "is no block's value to 25 digits" in out
+
+
 @pytest.mark.parametrize("argv, words", [
     (["check"], "required"),
-    (["check", "--k", "3", "--boundary"], "give --certify"),
+    (["check", "--k", "3", "--dart"], "a dart's symmetric part is not a small block"),
+    (["check", "--k", "3", "--boundary", "--solver", "flint"], "--solver applies to interior valences"),
     (["check", "--k", "3", "--certify"], "give --boundary, --corner, --crease K2 or --dart"),
     (["check", "--n", "3", "--boundary", "--certify"], "--k A:B"),
     (["check", "--n", "3", "--k", "3"], "not allowed with argument"),

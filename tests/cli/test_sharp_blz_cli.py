@@ -41,6 +41,13 @@ def test_check_certifies_the_range(capsys):
 
 
 def test_two_fields_are_refused_in_one_line(capsys):
-    assert main(["spectrum", "5", "--crease", "4", "--scheme", "catmull-clark-blz"]) == 2
+    assert main(["masks", "5", "--crease", "4", "--scheme", "catmull-clark-blz"]) == 2
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and "Q(cos(pi/4), cos(pi/5))" in err and "Traceback" not in err
+
+
+def test_the_spectrum_of_two_fields_comes_from_the_blocks(capsys):
+    """The matrix's entries lie in two fields (out of the dense route's reach); the blocks each lie in one."""
+    assert main(["spectrum", "5", "--crease", "4", "--scheme", "catmull-clark-blz"]) == 0
+    out = capsys.readouterr().out
+    assert "from the blocks (O(k))" in out and "over Q(cos(pi/4), cos(pi/5))" in out

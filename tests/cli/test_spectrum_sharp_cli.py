@@ -91,7 +91,9 @@ def test_an_infinitely_sharp_crease_has_one_level(capsys):
 @pytest.mark.parametrize("argv, words", [
     (["spectrum", "2"], "argument N: expected a valence"),
     (["spectrum", "0", "--boundary"], "argument N"),
-    (["spectrum", "65", "--boundary"], "more than 64 faces"),
+    (["spectrum", "65", "--dart"], "more than 64 faces (the matrices are dense and exact)"),
+    (["spectrum", "10001", "--boundary"], "argument N"),
+    (["spectrum", "2000", "--crease", "9000"], "more than 10000 faces (the blocks are O(k))"),
     (["spectrum", "5", "--boundary", "--corner"], "--boundary and --corner cannot be used together"),
     (["spectrum", "5", "--sharpness", "2"], "--sharpness: the sharpness of a crease"),
     (["spectrum", "5", "--boundary", "--sharpness", "2"], "--sharpness: the sharpness of a crease"),

@@ -1,0 +1,79 @@
+"""Sharp vertices at the speed of interior ones, and ``claims`` in seconds (issue 33), each beside its baseline.
+
+Targets (issue 33): ``spectrum 1000 --boundary --scheme catmull-clark-blz`` within 5 s, the same for corners,
+creases and Loop's rules (the structural route: the mirror decomposition's blocks, O(k)); ``symdecomp claims``
+within 10 s on two cores (the claims on the shared pool). Every figure is the wall-clock time of the command in a
+fresh process (start-up included), so it depends on what else the machine runs: ``run.py`` prints the load.
+
+Baselines, measured in the same run: the dense route (the vertex's matrix built by refinement, its characteristic
+polynomial factored, over ``Q(cos(pi/k))`` for BLZ's rules) on a small vertex, ``k = 8`` (at ``k = 16`` it took
+211 s before this change); ``claims --jobs 1`` (one process, as before).
+
+    python benchmarks/bench_sharp.py            # every target
+    python benchmarks/bench_sharp.py --quick    # k = 200 and the dense route at k = 6
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import time
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+
+
+def _seconds(*argv: str) -> float:
+    """Wall-clock seconds of ``python -m symdecomp ...`` in a fresh process (its exit code must be 0)."""
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "symdecomp", *argv], cwd=ROOT, capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"{' '.join(argv)} failed: {done.stdout[-300:]} {done.stderr[-300:]}")
+    return time.perf_counter() - start
+
+
+def _dense_seconds(scheme: str, vertex: str, k: int) -> float:
+    """Seconds of the dense route (:func:`symdecomp.analysis.sharp_spectrum.sharp_spectrum`, ``route="dense"``) in a
+    fresh process: the command line takes the structural route from 9 faces on, so this is the dense route's figure."""
+    code = ("import symdecomp as sd; from symdecomp.schemes.files import load_scheme; "
+            "from symdecomp.analysis.sharp_spectrum import sharp_spectrum; "
+            f"s = load_scheme({scheme!r}); v = sd.SharpVertex.{vertex}({k}, s.lattice); "
+            "sharp_spectrum(s, v, route='dense')")
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-c", code], cwd=ROOT, check=True, capture_output=True)
+    return time.perf_counter() - start
+
+
+def targets(quick: bool = False) -> list[dict]:
+    """Issue 33's targets, each beside its baseline in this run (``quick``: k = 200, dense baseline at k = 6)."""
+    k, small = (200, 6) if quick else (1000, 8)
+    limit = None if quick else 5.0
+    rows = []
+    for scheme, vertex, option in (("catmull-clark-blz", "boundary", ["--boundary"]),
+                                   ("catmull-clark-blz", "corner", ["--corner"]),
+                                   ("catmull-clark-blz", "crease", ["--crease", str(k)]),
+                                   ("loop-blz", "boundary", ["--boundary"]),
+                                   ("catmull-clark", "crease", ["--crease", str(k)])):
+        dense_vertex = "boundary" if vertex == "crease" else vertex
+        rows.append({"target": f"spectrum {k} {' '.join(option)} --scheme {scheme}", "limit_seconds": limit,
+                     "seconds": _seconds("spectrum", str(k), *option, "--scheme", scheme),
+                     "baseline": f"dense route, {dense_vertex} k = {small}",
+                     "baseline_seconds": _dense_seconds(scheme, dense_vertex, small)})
+    rows.append({"target": "claims (shared pool, --jobs = CPUs)", "limit_seconds": None if quick else 10.0,
+                 "seconds": _seconds("claims", "--json"), "baseline": "claims --jobs 1",
+                 "baseline_seconds": _seconds("claims", "--json", "--jobs", "1")})
+    return rows
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--quick", action="store_true", help="k = 200 and the dense route at k = 6, for a smoke run")
+    args = parser.parse_args(argv)
+    for row in targets(args.quick):
+        print(row)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -48,7 +48,7 @@ def _residual(mask_json, n, value, dps=30):
 def test_cli_masks_json_satisfies_the_eigen_equations(n, capsys):
     assert main(["masks", str(n), "--json", "--digits", "30"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert list(data) == ["n", "position", "tangents", "subdominant", "lambda_1_subdominant", "subdominance"] and data["n"] == n
+    assert list(data)[3:] == ["n", "position", "tangents", "subdominant", "lambda_1_subdominant", "subdominance"] and data["n"] == n
     assert data["lambda_1_subdominant"] is True
     assert len(data["tangents"]) == 2
     for mask in [data["position"], *data["tangents"]]:

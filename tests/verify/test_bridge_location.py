@@ -1,6 +1,7 @@
 """Where the OpenSubdiv bridge is built, and that the folder is checked before a library in it is
-trusted: in a source tree next to its source; in an installed package (whose folder may not be
-writable) the user's cache folder; ``SYMDECOMP_BRIDGE_DIR`` over both."""
+trusted: the user's cache folder, for a source tree (an editable install) and an installed package
+alike, since a package never writes into its own folder (issue 35, item 20);
+``SYMDECOMP_BRIDGE_DIR`` over both."""
 
 from __future__ import annotations
 
@@ -27,9 +28,9 @@ def _installed(monkeypatch, tmp_path) -> Path:
     return here
 
 
-def test_in_a_source_tree_next_to_the_source(environment):
+def test_a_source_tree_builds_in_the_cache_folder_too(environment, tmp_path):
     assert (osd_build.HERE.parents[2] / "pyproject.toml").is_file()  # this checkout
-    assert osd_build.build_dir() == osd_build.HERE / "_build"
+    assert osd_build.build_dir() == tmp_path / "cache" / "symdecomp" / f"opensubdiv-bridge-{osd_build.BRIDGE_VERSION}"
 
 
 def test_an_installed_package_builds_in_the_cache_folder(environment, tmp_path):
@@ -42,7 +43,7 @@ def test_an_installed_package_builds_in_the_cache_folder(environment, tmp_path):
 def test_a_read_only_source_tree_builds_in_the_cache_folder(environment, tmp_path):
     here = _installed(environment, tmp_path)
     (here.parents[2] / "pyproject.toml").write_text("")
-    assert osd_build.build_dir() == here / "_build"
+    assert osd_build.build_dir().parent == tmp_path / "cache" / "symdecomp"
     if os.geteuid() == 0:
         environment.setattr(osd_build.os, "access", lambda path, mode: False)  # root may write anywhere: pretend not
     else:

@@ -111,11 +111,11 @@ from __future__ import annotations
 
 import os
 import re
+import tomllib
 from collections.abc import Callable, Mapping
 from importlib import resources
 
 import sympy as sp
-import tomllib
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError, SymdecompError
 from symdecomp.expressions import parse_expression

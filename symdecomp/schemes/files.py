@@ -119,7 +119,7 @@ from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, Invalid
 from symdecomp.expressions import parse_expression
 from symdecomp.schemes.lattice import LATTICES, QUAD
 from symdecomp.schemes.loop import loop, loop_warren
-from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
+from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, identically_zero
 from symdecomp.schemes.sharp import SHARP_SYMBOLS, SharpRules, standard_sharp_rules
 from symdecomp.symbols import RESERVED_NAMES, Parameter
 from symdecomp.symbols import alpha as ALPHA
@@ -304,8 +304,9 @@ def _stencil(table: dict, section: str, source: str, symbols, *, keys=_RULE_KEYS
     center = _weight(table.get("O", 0), f"[{section}] O", source, symbols)
     a = _offsets(table.get("a", {}), f"[{section}] a", source, symbols)
     b = _offsets(table.get("b", {}), f"[{section}] b", source, symbols)
-    total = sp.simplify(center + sum(a.values(), sp.Integer(0)) + sum(b.values(), sp.Integer(0)))
-    if sp.simplify(total - 1) != 0:
+    total = center + sum(a.values(), sp.Integer(0)) + sum(b.values(), sp.Integer(0))
+    if not identically_zero(total - 1):
+        total = sp.cancel(total)
         raise NotAffineError(f"{source}: [{section}] is not affine: O + sum of a + sum of b = {total}, not 1")
     return Stencil.from_weights(center, a, b, name=f"{section} rule")
 
@@ -323,7 +324,7 @@ def _triangle_vertex(table: dict, source: str, symbols) -> VertexRule:
     rule = VertexRule.affine(beta, 0)
     if "O" in table:
         center = _weight(table["O"], "[vertex] O", source, symbols)
-        if sp.simplify(center - rule.center) != 0:
+        if not identically_zero(center - rule.center):
             raise NotAffineError(f"{source}: [vertex] is not affine: O = {center}, but 1 - n*beta = {rule.center}")
     return rule
 
@@ -338,7 +339,7 @@ def _vertex(table: dict, source: str, symbols) -> VertexRule:
     rule = VertexRule.affine(a, b)
     if "O" in table:
         center = _weight(table["O"], "[vertex] O", source, symbols)
-        if sp.simplify(center - rule.center) != 0:
+        if not identically_zero(center - rule.center):
             raise NotAffineError(f"{source}: [vertex] is not affine: O = {center}, but 1 - n*a - n*b = {rule.center}")
     return rule
 

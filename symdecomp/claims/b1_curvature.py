@@ -26,7 +26,7 @@ from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, Verbatim, claim
+from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -202,8 +202,9 @@ def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_V
         if dominant != expected:
             name = {0: "the elliptic part", 2: "the hyperbolic part", None: "neither part"}
             what = Text(Verbatim(scheme.name), f", n = {n}: the statement says {name[expected]} dominates; computed: "
-                        f"{name[dominant]}")
-            return CheckResult(Status.REFUTED, what, counterexample=what)
+                        f"{name[dominant]} (certified, Arb balls)")
+            # one valence's certified comparison, as the C1 test's and the regimes' counterexamples: a single case
+            return CheckResult(Status.REFUTED, what, counterexample=what, scope=Scope.SINGLE_CASE)
     shapes = sp.Matrix([[sp.Integer(n), sp.Symbol(artifact_indicators(scheme, n).shape[0])] for n in range(max(lo, 4), 9)])
     return CheckResult(
         Status.VERIFIED,

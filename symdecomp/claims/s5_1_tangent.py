@@ -465,10 +465,10 @@ def _eq39_n4(scheme: Scheme) -> CheckResult:
     steps = (Step("$r$ at $n = 4$, $j = 1$:", value),)
     if not ok:
         return CheckResult(Status.REFUTED, evidence, counterexample=Text(eq(n, 4), ": ", eq(B(1) / A(1), value), " = ", number(value),
-                                                                          ", not ", 1 + sp.I), steps=steps)
-    # the statement is about n = 4 alone: the exact value there is its proof
-    return CheckResult(Status.PROVED, Text(evidence, "; the statement concerns ", eq(n, 4), " alone, so this exact computation at "
-                                           "its only valence is its proof"), steps=steps)
+                                                                          ", not ", 1 + sp.I), steps=steps, scope=Scope.SINGLE_CASE)
+    # the statement is about n = 4 alone: the exact value there settles it, and its scope is that one case
+    return CheckResult(Status.VERIFIED, Text(evidence, "; the statement concerns ", eq(n, 4), " alone, and this exact computation "
+                                             "at its only valence settles it"), steps=steps, valences=(4, 4))
 
 
 @claim(

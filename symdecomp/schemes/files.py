@@ -29,7 +29,10 @@ the scheme's regular rules are its rules at the regular valence, and every comma
 rules: the 1-ring commands at the extraordinary vertex, ``--rings 2/3``, ``evaldata`` and ``c1`` on
 the whole neighbourhood. A scheme tuned at extraordinary vertices only writes a vertex weight that
 is the standard one at the regular valence (e.g. ``a = "3/32 + (n - 4)*(...)"``); the rules must be
-defined there, and real (checked when the file is read). The C1 test knows the regular patches of
+defined there, and real (checked when the file is read). An edge rule may depend on ``n`` too: an edge
+at a vertex of valence ``n`` other than the regular one takes the rule read from that vertex at ``n`` (of
+two such ends, the one of larger valence), and an edge between regular vertices the rule at the regular
+valence, which must give the same point from either end; every command reads it so. The C1 test knows the regular patches of
 Catmull-Clark and Loop: it applies when all the rules at the regular valence, the vertex rule
 included, are theirs, and says why in one line otherwise.
 
@@ -116,10 +119,10 @@ import sympy as sp
 import tomllib
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError, SymdecompError
-from symdecomp.expressions import parse_expression
+from symdecomp.expressions import identically_zero, parse_expression
 from symdecomp.schemes.lattice import LATTICES, QUAD
 from symdecomp.schemes.loop import loop, loop_warren
-from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark, identically_zero
+from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
 from symdecomp.schemes.sharp import SHARP_SYMBOLS, SharpRules, standard_sharp_rules
 from symdecomp.symbols import RESERVED_NAMES, Parameter
 from symdecomp.symbols import alpha as ALPHA

@@ -74,6 +74,7 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import Cyclotomic
 from symdecomp.algebra.numbers import to_fraction
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.expressions import identically_zero
 from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, TriangleMesh
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_levels, check_memory
@@ -161,7 +162,7 @@ def mesh_rules(scheme: Scheme) -> MeshRules:
     >>> r.vertex_weights(3)
     (5/12, 1/6, 1/36)
     """
-    from symdecomp.schemes.scheme import check_scheme, identically_zero  # the scheme module imports this one (lattices)
+    from symdecomp.schemes.scheme import check_scheme  # the scheme module imports this one (lattices)
 
     check_scheme(scheme)
     face, edge = scheme.face_rule, scheme.edge_rule
@@ -225,7 +226,6 @@ def triangle_mesh_rules(scheme: Scheme) -> TriangleMeshRules:
     edge, or weighs the two ends (or the two opposite vertices) differently, so that the edge point would depend on
     which end is called ``O``. An edge rule in ``n`` is read at each edge's :func:`edge_valence`.
     """
-    from symdecomp.schemes.scheme import identically_zero  # the scheme module imports this one (lattices)
 
     if scheme.lattice.face_neighbours:
         raise InvalidSchemeError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, not triangle meshes (its 1-ring has face neighbours)")

@@ -34,7 +34,7 @@ import flint
 import sympy as sp
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError
-from symdecomp.expressions import MAX_OFFSET, check_budget, exact_value
+from symdecomp.expressions import MAX_OFFSET, check_budget, exact_value, identically_zero
 from symdecomp.schemes.lattice import LATTICES, QUAD, Lattice, lattice
 from symdecomp.schemes.sharp import SHARP_SYMBOLS, SharpRules, standard_sharp_rules
 from symdecomp.symbols import Parameter
@@ -49,7 +49,6 @@ __all__ = [
     "MESH_TYPES",
     "Scheme",
     "check_scheme",
-    "identically_zero",
     "catmull_clark",
     "subdivision_entries",
     "subdivision_matrix",
@@ -70,29 +69,6 @@ def _sympify_weight(value, where: str) -> sp.Expr:
         return exact_value(value, WEIGHT_SYMBOLS, argument=f"{where}: weight", other_symbols=True)
     except InvalidExpressionError as exc:
         raise InvalidSchemeError(str(exc)) from None
-
-
-def identically_zero(expr) -> bool:
-    """Whether an expression of weights vanishes identically in ``n`` and the parameters (the affinity checks).
-
-    Decided by polynomial arithmetic, never by an unbounded ``simplify``: the expression is brought over one
-    denominator and cancelled, with any cosine, sine or square root taken as one more indeterminate, so that a
-    weight that is a polynomial of degree 17 in ``n`` costs a few polynomial products. Zero there is zero for every
-    value. A rational function of ``n`` and the parameters that does not cancel to zero is not zero (cancellation over
-    Q is canonical); only a remainder holding cosines or square roots, which may still vanish by their relations
-    (``cos(2*pi/n) = 2*cos(pi/n)**2 - 1``), goes to sympy's ``simplify``, on an expression within the budget.
-
-    >>> identically_zero(3/(2*N**2) * (N - 3) * (N - 5) - (3*N**2 - 24*N + 45)/(2*N**2))
-    True
-    >>> identically_zero(N/(N + 1) - 1)
-    False
-    """
-    rest = sp.cancel(sp.together(sp.expand(sp.sympify(expr))))
-    if rest == 0:
-        return True
-    if all(atom.is_Rational for atom in rest.atoms(sp.Number)) and rest.is_rational_function(*rest.free_symbols):
-        return False
-    return sp.simplify(rest) == 0
 
 
 def _weights(mapping: Mapping[int, object], where: str) -> tuple[tuple[int, sp.Expr], ...]:
@@ -196,7 +172,11 @@ class Scheme:
     ``n = 4`` or ``n = 6``. So the regular rules of the scheme are its rules at the regular valence;
     a scheme tuned at extraordinary vertices only keeps the standard weights at the regular valence
     (for instance a vertex weight that is a function of ``n`` equal to the standard one at ``n = 4``).
-    The rules must be defined at the regular valence (checked here). 1-ring commands read the rules at
+    The rules must be defined at the regular valence (checked here). **An edge rule in n** is read from the
+    edge's extraordinary end ``O`` at its valence (of two, the larger valence), and at the regular valence
+    (where it must give one point from either end) between regular vertices: the ``n`` edges at ``O`` use it at
+    ``n``, as the 1-ring stencils say, every other edge the regular rule; every command reads it so
+    (:mod:`symdecomp.schemes.refinement`). 1-ring commands read the rules at
     ``O``; K-ring matrices, evaluation and the C1 test read all of them; the C1 test and the evaluation
     know the regular patches of Catmull-Clark and Loop only, so they apply when the rules at the regular
     valence are those (they say so in one line otherwise).

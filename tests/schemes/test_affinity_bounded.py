@@ -14,8 +14,9 @@ import pytest
 import sympy as sp
 
 from symdecomp.errors import NotAffineError
+from symdecomp.expressions import identically_zero
 from symdecomp.schemes.files import scheme_from_text
-from symdecomp.schemes.scheme import VertexRule, identically_zero, subdivision_matrix
+from symdecomp.schemes.scheme import VertexRule, subdivision_matrix
 from symdecomp.symbols import n
 
 NODES = [k for k in range(3, 21) if k != 7]

@@ -13,6 +13,7 @@ from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, NO_FREE_PARAMETERS, REAL_TANGENT_SPECTRUM
 from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
+from symdecomp.claims.per_valence import depends_on_valence, largest_at_frequency_one
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import cos_jtheta as COS
@@ -28,9 +29,11 @@ Sym = sp.Symbol
     title="Hyperbolic components have smaller eigenvalues",
     statement=r"The eigenvalues of $A^2, A^{2n-2}, B^2, B^{2n-2}$ are smaller than those related to tangent plane "
     r"continuity.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM),
+    requires=(MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM),
 )
 def _smaller(scheme: Scheme) -> CheckResult:
+    if depends_on_valence(scheme):  # n in M_j beside c: valence by valence, n substituted first
+        return largest_at_frequency_one(scheme, "M_2 (the hyperbolic components)", frequency_zero=False, only=2)
     ev = tangent_eigenvalues(scheme)
     t = sp.Symbol("t", positive=True)  # t = |c|
     slope = sp.factor(sp.diff(ev.dominant.subs(sp.Abs(COS), t).subs(COS**2, t**2), t))
@@ -149,7 +152,7 @@ def _frequency_closure(scheme: Scheme):
     title="A 1-ring with only hyperbolic components",
     statement=r"Place $O$ on the plane of $A^1, A^{2n-1}, B^1, B^{2n-1}$ (the elliptic component becomes zero) and add "
     r"a combination of $\vec{v_2}, \vec{v_{2n-2}}$ on a plane perpendicular to the 1-ring.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM, NO_FREE_PARAMETERS),
+    requires=(MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM, NO_FREE_PARAMETERS),  # an edge rule in n: each n substitutes it
 )
 def _construction(scheme: Scheme) -> CheckResult:
     cc = scheme

@@ -9,8 +9,8 @@ the check directly (the registry's cache holds the printed statement's results).
 The schemes are scheme files (FILES, or Python-built schemes that write and read back as files), except the
 complex and the non-affine ones, which the parser refuses. Every claim is either moved to another verdict by a
 file, or listed with the reason no file moves it: SCHEME_FREE (the check runs without a scheme) and NO_FILE_FLIP
-(each reason backed by the statuses of very different files). WRONG_TODAY holds the verdicts that are wrong
-today, asserted with the correct status as strict xfails. C1_TABLE flips Reif's test from c1 to not-c1 with files
+(each reason backed by the statuses of very different files). ONCE_WRONG holds the verdicts that were wrong
+(issue 32), asserted with their correct status. C1_TABLE flips Reif's test from c1 to not-c1 with files
 of the Catmull-Clark and Loop families.
 """
 
@@ -433,9 +433,9 @@ PANEL_EXCEPTIONS = {
     ("Sector: the blocks are the spectrum", "asymmetric"): NA,
     ("Sector: the blocks are the spectrum", "frequency two"): NA,
 }
-#: Rows of the panel whose status today is wrong (WRONG_TODAY): left out here, asserted there.
-PANEL_WRONG_TODAY = {("Eq. 51", "bilinear file"), ("Section 5.3: construction", "frequency two"),
-                     ("Tangent plane unaffected (after Eq. 51)", "frequency two")}
+#: Rows of the panel asserted in ONCE_WRONG (they were wrong verdicts).
+PANEL_ONCE_WRONG = {("Eq. 51", "bilinear file"), ("Section 5.3: construction", "frequency two"),
+                    ("Tangent plane unaffected (after Eq. 51)", "frequency two")}
 #: Further files for some claims.
 PANEL_MORE = {
     ("S' (after Eq. 51)", "free edge and face"): P,
@@ -483,7 +483,7 @@ def test_scheme_free_claims_have_one_status_for_very_different_files(label):
 
 def _panel_rows():
     rows = [(label, name, PANEL_EXCEPTIONS.get((label, name), EXPECTED[label])) for label in sorted(NO_FILE_FLIP)
-            for name in FILE_PANEL if (label, name) not in PANEL_WRONG_TODAY]
+            for name in FILE_PANEL if (label, name) not in PANEL_ONCE_WRONG]
     return rows + [(label, name, status) for (label, name), status in PANEL_MORE.items()]
 
 
@@ -502,41 +502,25 @@ def test_the_parser_refuses_what_would_flip_propositions_4_2_and_4_3():
 
 
 # ---------------------------------------------------------------------------------------------------------------
-# Wrong verdicts today: the test asserts the correct status (strict xfail: it fails loudly once fixed).
+# Verdicts that were wrong (issue 32), now asserted as they should be: each row was a strict xfail.
 
-WRONG_TODAY = [
-    ("Eq. 51", "bilinear file", P,
-     "status error ('a step of the closed form failed'): M(omega) is triangular, so c_+ = c_- = 0 and the check divides "
-     "by c_+; the closed form still holds (rho_+ = c_0, rho_- = 0: rho_+^n + rho_-^n = c_0^n = prod_k q(x, omega^k))"),
-    ("Proposition 5.1", "frequency two", R,
-     "status not applicable (the check reads M_j's eigenvalues as closed forms in c alone; it was an error before) for "
-     "an n-dependent edge rule; at n = 5 the "
-     "frequency 2 eigenvalue 0.713 exceeds frequency 1's, so the claim is false"),
-    ("Section 5.3: smaller eigenvalues", "frequency two", R,
-     "status not applicable (closed forms in c alone; it was an error, comparing a non-real number) for an "
-     "n-dependent edge rule; at n = 5 the frequency 2 "
-     "eigenvalue is the largest, so the hyperbolic components are not smaller"),
-    ("Section 5.3: construction", "frequency two", P,
-     "status not applicable (closed forms in c alone; it was an error before) for an n-dependent edge rule; the "
-     "construction only uses the "
-     "frequency decomposition, which holds for every file"),
-    ("Tangent plane unaffected (after Eq. 51)", "frequency two", C,
-     "status not applicable (closed forms in c alone; it was an error before) for an n-dependent edge rule; vertex "
-     "weight -1 still lifts "
-     "an E_0 eigenvalue above lambda_1"),
-    ("1-ring suffices (after Eq. 51)", "singular M", P,
-     "status verified, valences (3, 5), but the left eigenvector of lambda_1 was computed at n = 4 only (scope wider "
-     "than the evidence); the proof fails only because the 3-ring resultant vanishes identically: M(omega) is singular "
-     "for every omega, and the shared root is 0 (the 3-ring's new eigenvalue), never lambda_1; the 2-ring resultant "
-     "has no root on the unit circle, so the proof goes through for every n"),
+ONCE_WRONG = [
+    # M(omega) triangular: c_+ = c_- = 0, rho_+ = c_0, rho_- = 0, and the closed form still holds (it was 'error')
+    ("Eq. 51", "bilinear file", P),
+    # an edge rule in n: at n = 5 the frequency-2 eigenvalue 0.713 exceeds frequency 1's (it was 'not applicable')
+    ("Proposition 5.1", "frequency two", R),
+    ("Section 5.3: smaller eigenvalues", "frequency two", R),
+    # the construction uses only the frequency decomposition, which holds for every file
+    ("Section 5.3: construction", "frequency two", P),
+    # vertex weight -1 still lifts an E_0 eigenvalue above lambda_1
+    ("Tangent plane unaffected (after Eq. 51)", "frequency two", C),
+    # M(omega) singular for every omega: the root 0 shared with the 3-ring's outer block is never lambda_1
+    ("1-ring suffices (after Eq. 51)", "singular M", P),
 ]
 
 
-@pytest.mark.parametrize("label, name, status", [
-    pytest.param(label, name, status, marks=pytest.mark.xfail(strict=True, reason=reason), id=f"{label} / {name}")
-    for label, name, status, reason in WRONG_TODAY
-])
-def test_the_correct_status_of_a_wrong_verdict(label, name, status):
+@pytest.mark.parametrize("label, name, status", ONCE_WRONG, ids=[f"{r[0]} / {r[1]}" for r in ONCE_WRONG])
+def test_the_correct_status_of_a_once_wrong_verdict(label, name, status):
     assert check_claim(label, scheme(name)).status is status
 
 
@@ -584,7 +568,7 @@ def test_a_file_flips_the_c1_verdict(name, valence, frequency, value, words):
 
 
 def test_the_singular_scheme_is_what_its_wrong_verdict_says():
-    """The facts behind WRONG_TODAY's '1-ring suffices / singular M': det M(omega) vanishes identically, and the
+    """The facts behind ONCE_WRONG's '1-ring suffices / singular M': det M(omega) vanishes identically, and the
     2-ring's outer eigenvalues (roots of (8x - 1)(64x - 1)(128x^2 - 28x + 1)) are never a root of det(xI - M(omega_n))."""
     from symdecomp.analysis.frequency import one_ring_matrices
     from symdecomp.symbols import omega

@@ -32,14 +32,13 @@ Sym = sp.Symbol
     requires=(MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM),
 )
 def _smaller(scheme: Scheme) -> CheckResult:
-    if depends_on_valence(scheme):  # n in M_j beside c: valence by valence, n substituted first
+    if depends_on_valence(scheme):  # n in M_j beside c: valence by valence
         return largest_at_frequency_one(scheme, "M_2 (the hyperbolic components)", frequency_zero=False, only=2)
     ev = tangent_eigenvalues(scheme)
     t = sp.Symbol("t", positive=True)  # t = |c|
     slope = sp.factor(sp.diff(ev.dominant.subs(sp.Abs(COS), t).subs(COS**2, t**2), t))
     increasing = all(term.is_positive for term in sp.Add.make_args(sp.expand(slope))) or sp.simplify(slope).is_positive
-    lam1_3 = tangent_lambda(scheme, 1).subs(N, 3)
-    lam2_3 = hyperbolic_lambda(scheme).subs(N, 3)
+    lam1_3, lam2_3 = tangent_lambda(scheme, 1).subs(N, 3), hyperbolic_lambda(scheme).subs(N, 3)
     equal_at_3 = sp.simplify(lam1_3 - lam2_3) == 0
     # |cos(2 pi/n)| < cos(pi/n) for n >= 4: with c = cos(pi/n) in (1/2, 1), (2c+1)(c-1) < 0 and (2c-1)(c+1) > 0
     larger = [k for k in range(4, 41) if sp.N(hyperbolic_lambda(scheme).subs(N, k) - tangent_lambda(scheme, 1).subs(N, k), 30) >= 0]

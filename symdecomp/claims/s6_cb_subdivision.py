@@ -44,17 +44,23 @@ def _displayed_expression_agrees(free: Scheme, expression: sp.Expr, valences) ->
     title="Characteristic polynomial of S in closed form",
     statement=r"The eigenvalues of $S$ are the roots of $\det(S-xI)$.",
 )
+def _factored(cf, rho_p, rho_m) -> bool:
+    """``q = (rho_+ + c_+ w)(rho_- + c_+ w)/(c_+ w)``; for ``c_+ = 0`` (``M(omega)`` triangular) ``q = c_0 + c_-/w`` with
+    ``rho = c_0, 0``, whose product over the roots of unity is ``c_0^n - (-c_-)^n`` directly."""
+    c_minus, c_zero, c_plus = cf.laurent_coefficients
+    w = sp.Symbol("w")
+    q = cf.frequency_factor.subs(OMEGA, w)
+    if is_zero(c_plus):
+        return is_zero(rho_p * rho_m) and is_zero(rho_p + rho_m - c_zero) and is_zero(sp.expand(c_zero + c_minus / w - q))
+    return is_zero(sp.expand((rho_p + c_plus * w) * (rho_m + c_plus * w) / (c_plus * w)) - q)
+
+
 def _eq51(scheme: Scheme) -> CheckResult:
     free = with_free_vertex_rule(scheme)
     cf = closed_form_characteristic_polynomial(free)
     c_minus, c_zero, c_plus = cf.laurent_coefficients
     rho_p, rho_m = cf.rho
-    w = sp.Symbol("w")
-    if is_zero(c_plus):  # M(omega) triangular: q = c_0 + c_-/omega, prod_k (c_0 + c_- omega^-k) = c_0^n - (-c_-)^n directly
-        factor_ok = is_zero(rho_p * rho_m) and is_zero(rho_p + rho_m - c_zero) and is_zero(
-            sp.expand(c_zero + c_minus / w - cf.frequency_factor.subs(OMEGA, w)))
-    else:
-        factor_ok = is_zero(sp.expand((rho_p + c_plus * w) * (rho_m + c_plus * w) / (c_plus * w)) - cf.frequency_factor.subs(OMEGA, w))
+    factor_ok = _factored(cf, rho_p, rho_m)
     # prod_k c_+ w_k = c_+^n w^(n(n-1)/2), w = exp(2 pi i/n): the sign
     sign = sp.simplify(sp.exp(2 * sp.pi * sp.I / N * N * (N - 1) / 2))
     # with P = rho_+^n, Q = rho_-^n, A = (-c_+)^n, B = (-c_-)^n, and P Q = (c_+ c_-)^n = A B:

@@ -195,14 +195,8 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
     unit = lambda s, u, v: (SparseRow({_index(labels, n, s, u, v): Fraction(1)}),)  # noqa: E731
     mesh = lat.ring_mesh(n, rings, unit)
     rules = lat.mesh_rules(scheme)
-
-    def edge_weights_at(valence: int):
-        if symbolic_centre and valence == n:
-            used.update(zip(EDGE_WEIGHTS, rules.oriented))
-            return EDGE_WEIGHTS[:len(rules.oriented)]
-        return rules.edge_weights(valence)
-
-    step = lat.refine(mesh, rules, vertex_weights=weights_at, edge_weights=edge_weights_at if rules.depends_on_valence else None)
+    edges = _symbolic_edges(rules, n, used) if symbolic_centre and rules.depends_on_valence else None
+    step = lat.refine(mesh, rules, vertex_weights=weights_at, edge_weights=edges)
     face_of = {frozenset(f): fi for fi, f in enumerate(mesh.faces)}
     rows = []
     for s, u, v in labels:
@@ -212,6 +206,17 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
     weights = {s: w for s, w in used.items()
                if any(sp.sympify(x, strict=True).has(s) for row in (rows if s in EDGE_WEIGHTS else rows[:1]) for x in row.values())}
     return RingMatrix(scheme.name, lat, n, rings, labels, tuple(rows), weights)
+
+
+def _symbolic_edges(rules, n: int, used: dict):
+    """``valence -> edge weights``: :data:`EDGE_WEIGHTS` at the centre's valence ``n`` (recorded in ``used``), the rule's
+    numbers at every other valence."""
+    def at(valence: int):
+        if valence == n:
+            used.update(zip(EDGE_WEIGHTS, rules.oriented))
+            return EDGE_WEIGHTS[:len(rules.oriented)]
+        return rules.edge_weights(valence)
+    return at
 
 
 def _mesh_rules_error(scheme: Scheme) -> str | None:

@@ -83,7 +83,8 @@ nothing else.
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``; for every valence, its spectral conditions proved
-                   in n and the map per valence, ``c1_every_n``), at boundary, crease and
+                   in n and the map per valence, ``c1_every_n``; the curvature regime for every
+                   valence, ``regime_every_n``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
                    by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
                    ``c1_sharp_ring``); dyadic limit positions for

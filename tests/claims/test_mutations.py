@@ -301,7 +301,7 @@ TABLE = [
     ("Curvature regime: Catmull-Clark", printed("b1_curvature", "CATMULL_CLARK", ((3, 4, CurvatureRegime.BOUNDED, None),
                                                                               (5, None, CurvatureRegime.UNBOUNDED, None))), R),
     ("Curvature regime: Loop", "loop warren file", R),  # unbounded at n = 4 by the elliptic eigenvalue 1/4
-    ("Curvature regime: Loop", "loop file", V),
+    ("Curvature regime: Loop", "loop file", P),  # Loop as a file: the same proof for every n
     ("Loop's vertex weight", "loop warren file", R),  # exact: 1/4 - 9/64 at n = 4
     ("Curvature at the regular valence", printed("b1_curvature", "REGULAR_MULTIPLICITY", 2), R),
     ("Shape: the valence decides", "elliptic above hyperbolic at 5", R),

@@ -173,6 +173,8 @@ def complex_elliptic_pair(scheme: Scheme, lo: int, hi: int) -> tuple[int | None,
     chi = sp.Matrix(recursion_matrix(scheme, n)).charpoly(x).as_expr()
     quadratic = sp.quo(sp.Poly(sp.together(chi), x), sp.Poly(x - 1, x)).as_expr()
     disc = sp.cancel(sp.discriminant(quadratic, x))
+    if disc.free_symbols - {n}:  # free parameters: no sign at a valence (the remark's own check handles them)
+        return None, False
     try:
         if positive_from(disc, n, lo):
             return None, True

@@ -38,12 +38,6 @@ def _displayed_expression_agrees(free: Scheme, expression: sp.Expr, valences) ->
     return None
 
 
-@claim(
-    "Eq. 51",
-    section="6",
-    title="Characteristic polynomial of S in closed form",
-    statement=r"The eigenvalues of $S$ are the roots of $\det(S-xI)$.",
-)
 def _factored(cf, rho_p, rho_m) -> bool:
     """``q = (rho_+ + c_+ w)(rho_- + c_+ w)/(c_+ w)``; for ``c_+ = 0`` (``M(omega)`` triangular) ``q = c_0 + c_-/w`` with
     ``rho = c_0, 0``, whose product over the roots of unity is ``c_0^n - (-c_-)^n`` directly."""
@@ -55,6 +49,12 @@ def _factored(cf, rho_p, rho_m) -> bool:
     return is_zero(sp.expand((rho_p + c_plus * w) * (rho_m + c_plus * w) / (c_plus * w)) - q)
 
 
+@claim(
+    "Eq. 51",
+    section="6",
+    title="Characteristic polynomial of S in closed form",
+    statement=r"The eigenvalues of $S$ are the roots of $\det(S-xI)$.",
+)
 def _eq51(scheme: Scheme) -> CheckResult:
     free = with_free_vertex_rule(scheme)
     cf = closed_form_characteristic_polynomial(free)

@@ -449,7 +449,7 @@ def identically_zero(expr) -> bool:
     >>> identically_zero(n/(n + 1) - 1)
     False
     """
-    rest = sp.cancel(sp.together(sp.expand(sp.sympify(expr))))
+    rest = sp.cancel(sp.together(sp.expand(sp.sympify(expr, strict=True))))
     if rest == 0:
         return True
     if all(atom.is_Rational for atom in rest.atoms(sp.Number)) and rest.is_rational_function(*rest.free_symbols):

@@ -412,7 +412,8 @@ NO_FILE_FLIP = {
     "Sector: the blocks are the spectrum": "a theorem (the sine identity) for every mirror-symmetric file, checked "
                                            "against the matrix by refinement; files without the mirror are 'not applicable'",
     "1-ring suffices (after Eq. 51)": "the mesh files tried (bilinear, midpoint edges, Loop) keep the left eigenvectors of "
-                                      "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable'",
+                                      "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable', and an edge rule "
+                                      "in n only 'verified' at n = 4 (the proof for every n reads blocks free of n)",
 }
 
 #: Very different scheme files, and what each claim of NO_FILE_FLIP is for them (Catmull-Clark's status unless given).
@@ -422,7 +423,8 @@ PANEL_EXCEPTIONS = {
     ("Section 3: 9 and 25 points", "asymmetric"): NA,  # not mesh rules
     ("Section 3: 9 and 25 points", "frequency two"): NA,
     ("1-ring suffices (after Eq. 51)", "asymmetric"): NA,
-    ("1-ring suffices (after Eq. 51)", "frequency two"): NA,
+    # an edge rule in n, read at O's valence at the edges at O (the model, issue 32): the left eigenvectors at n = 4 only
+    ("1-ring suffices (after Eq. 51)", "frequency two"): V,
     ("Tangent plane unaffected (after Eq. 51)", "asymmetric"): NA,  # the closed forms need mirror symmetry
     ("Section 5.3: construction", "asymmetric"): NA,
     # Reif's 2-ring matrix needs Catmull-Clark's or Loop's rules at the regular valence; these files have others

@@ -105,3 +105,18 @@ def test_sharp_refinement_refuses_an_edge_rule_in_n():
 
     with pytest.raises(InvalidSchemeError, match="depends on the valence n"):
         _Rules(SYMMETRIC_IN_N, SharpOptions())
+
+
+def test_masks_of_a_lopsided_rule_in_n_are_left_eigenvectors_at_that_valence():
+    """A lopsided edge rule in n (weights 1/16 -+ (n - 4)/128 on a_(i-1), a_(i+1)): the masks are computed at n = 5
+    (it was 'cannot evaluate n'), and the position mask is the left eigenvector of 1 of the 1-ring matrix there."""
+    from symdecomp.analysis.ring_masks import ring_masks
+
+    s = scheme_from_text('name = "lopsided in n"\n[edge]\nO = "3/8"\na = { "-1" = "1/16 - (n - 4)/128", "0" = "3/8", '
+                         '"1" = "1/16 + (n - 4)/128" }\nb = { "-1" = "1/16", "0" = "1/16" }\n[face]\nO = "1/4"\n'
+                         'a = { "0" = "1/4", "1" = "1/4" }\nb = { "0" = "1/4" }\n[vertex]\na = "3/(2*n**2)"\nb = "1/(4*n**2)"\n')
+    masks = ring_masks(s, 5)
+    y = [float(masks["position"]["O"])] + [float(x) for x in masks["position"]["a"] + masks["position"]["b"]]
+    S = subdivision_matrix(s, 5)
+    assert max(abs(sum(y[r] * float(S[r, c]) for r in range(11)) - y[c]) for c in range(11)) < 1e-15
+    assert abs(sum(y) - 1) < 1e-15

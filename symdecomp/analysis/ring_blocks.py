@@ -75,7 +75,7 @@ class RingBlocks:
         C1 = self.frequency_matrix(1).subs(N, n)
         subs = {} if symbolic_weights else {s: w.subs(N, n) for s, w in self.weights}
         top = [self.centre.xreplace(subs)] + [n * w.xreplace(subs) for w in self.centre_row]
-        rows = [top] + [[self.centre_column[p]] + list(C1.row(p)) for p in range(self.class_count)]
+        rows = [top] + [[sp.sympify(self.centre_column[p], strict=True).subs(N, n)] + list(C1.row(p)) for p in range(self.class_count)]
         return sp.ImmutableMatrix(rows)
 
     def full_matrix(self, n: int, weights: dict | None = None) -> sp.ImmutableMatrix:

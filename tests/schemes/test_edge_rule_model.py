@@ -120,3 +120,14 @@ def test_masks_of_a_lopsided_rule_in_n_are_left_eigenvectors_at_that_valence():
     S = subdivision_matrix(s, 5)
     assert max(abs(sum(y[r] * float(S[r, c]) for r in range(11)) - y[c]) for c in range(11)) < 1e-15
     assert abs(sum(y) - 1) < 1e-15
+
+
+def test_the_ring_certificate_and_the_product_form_read_the_blocks_at_n():
+    """The structural certificate compares the refined matrix with the blocks at n (it said 'refuted', the block entry
+    n/64 + 5/16 against 25/64), and the product form equals chi_S at 31 points (it raised on n in E(omega))."""
+    from symdecomp.analysis.ring_charpoly import ring_charpoly
+    from symdecomp.verify.ring_certify import certify_ring
+
+    assert ring_charpoly(LOPSIDED_ENDS, 5, 2)["matches_matrix"] is True
+    certificate = certify_ring(LOPSIDED_ENDS, 5, 2)
+    assert certificate.status.value == "agree", certificate

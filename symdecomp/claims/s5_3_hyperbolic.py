@@ -273,12 +273,18 @@ def _basis(scheme: Scheme) -> CheckResult:
         )
     why = "the scheme has free parameters" if scheme.parameters else not_rational or "a resultant vanishes identically" if bad is None else (
         "the block form does not give the Eq. 43 matrix")
+    # the range's scope needs the elliptic component at each of its valences, not only at 3, 4, 5 (issue 32)
+    every = {n: comps.get(n) or elliptic_component(cc, n, (1, 0, 0)) for n in range(lo, hi + 1)}
+    if any(c is None or c == 0 for c in every.values()):
+        n0 = next(n for n, c in every.items() if c is None or c == 0)
+        return CheckResult(Status.UNDECIDED, Text("at ", eq(N, n0), " the input (1, 0, 0) of Eq. 43 has no single nonzero elliptic "
+                                                  "component"), steps=steps)
     return CheckResult(
         Status.VERIFIED,
         Text(
             "heights ", tup(1, 0, Sym("..."), 0), " stay constant on the a's and on the b's under the exact matrix (3 steps): "
             "no ", ne(j, 0), " component off the plane; the input ", tup(1, 0, 0), " of Eq. 43 has a nonzero elliptic "
-            "component (", N, " = 3, 4, 5: ", shown, "); not for every n: ", why,
+            "component at each n = ", lo, "..", hi, " (", N, " = 3, 4, 5: ", shown, "); not for every n: ", why,
         ),
         valences=(lo, hi),
         steps=steps,

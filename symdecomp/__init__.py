@@ -92,7 +92,9 @@ nothing else.
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,
-                   ``c1_spectrum``, Bernstein-Bezier nets ``bezier``), at boundary, crease and
+                   ``c1_spectrum``, Bernstein-Bezier nets ``bezier``; for every valence, its spectral conditions proved
+                   in n and the map per valence, ``c1_every_n``; the curvature regime for every
+                   valence, ``regime_every_n``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
                    by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
                    ``c1_sharp_ring``); dyadic limit positions for
@@ -115,7 +117,8 @@ nothing else.
                    for a scheme, within a time budget, and no verdict rests on a free parameter or an
                    undefined value (``guards``),
                    many claims at once on the shared pool (``batch``); what several checks share: the requirements a claim declares
-                   (``applicability``), computed evidence (``evidence``), the paper's notation
+                   (``applicability``), computed evidence (``evidence``), comparisons valence by valence for rules in n
+                   (``per_valence``), the paper's notation
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
                    ``texlayout``), results in a notebook: short HTML tables and LaTeX (``display``),

@@ -61,7 +61,7 @@ from symdecomp.errors import InvalidExpressionError
 
 __all__ = ["parse_expression", "exact_value", "check_budget", "BUDGET", "MAX_LENGTH", "MAX_NODES", "MAX_DEPTH",
            "MAX_DIGITS", "MAX_EXPONENT", "MAX_DEGREE", "MAX_BITS", "MAX_FUNCTION_DEPTH", "MAX_PI_DENOMINATOR",
-           "MAX_OFFSET"]
+           "MAX_OFFSET", "identically_zero"]
 
 # The expression budget: what one weight may cost, measured on its tree before sympy builds anything large.
 #: Longest text accepted.
@@ -431,3 +431,27 @@ def exact_value(value, symbols: Mapping[str, sp.Symbol] | None = None, *, argume
     if isinstance(value, numbers.Real):
         raise InvalidExpressionError(f"{argument} {value!r} is a float; give an exact rational such as '3/8'")
     raise InvalidExpressionError(f"{argument} {value!r} ({type(value).__name__}) is not a number")
+
+
+def identically_zero(expr) -> bool:
+    """Whether an expression of weights vanishes identically in ``n`` and the parameters (the affinity checks).
+
+    Decided by polynomial arithmetic, never by an unbounded ``simplify``: the expression is brought over one
+    denominator and cancelled, with any cosine, sine or square root taken as one more indeterminate, so that a
+    weight that is a polynomial of degree 17 in ``n`` costs a few polynomial products. Zero there is zero for every
+    value. A rational function of ``n`` and the parameters that does not cancel to zero is not zero (cancellation over
+    Q is canonical); only a remainder holding cosines or square roots, which may still vanish by their relations
+    (``cos(2*pi/n) = 2*cos(pi/n)**2 - 1``), goes to sympy's ``simplify``, on an expression within the budget.
+
+    >>> n = sp.Symbol("n")
+    >>> identically_zero(3/(2*n**2) * (n - 3) * (n - 5) - (3*n**2 - 24*n + 45)/(2*n**2))
+    True
+    >>> identically_zero(n/(n + 1) - 1)
+    False
+    """
+    rest = sp.cancel(sp.together(sp.expand(sp.sympify(expr, strict=True))))
+    if rest == 0:
+        return True
+    if all(atom.is_Rational for atom in rest.atoms(sp.Number)) and rest.is_rational_function(*rest.free_symbols):
+        return False
+    return sp.simplify(rest) == 0

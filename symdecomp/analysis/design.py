@@ -66,6 +66,7 @@ from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
 __all__ = ["LimitFrame", "RingDesign", "design_ring", "limit_frame", "ring_amounts", "frame"]
@@ -119,7 +120,7 @@ class RingDesign:
 
 
 def _frequency_matrix(scheme: Scheme, n: int, j: int) -> mpmath.matrix:
-    E = ring_blocks(scheme, 1).frequency_matrix()
+    E = ring_blocks(scheme, 1).frequency_matrix().subs(N, n)  # an edge rule in n: at this valence
     with mpmath.workdps(_DPS):
         w = mpmath.expjpi(mpmath.mpf(2 * j) / n)
         return mpmath.matrix([[_mp_eval(E[r, c], w) for c in range(E.shape[1])] for r in range(E.shape[0])])

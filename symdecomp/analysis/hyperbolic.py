@@ -185,7 +185,7 @@ def iterate_hyperbolic_ring(scheme: Scheme, n: int, steps: int = 4, *, digits: i
     y = [zero] + [sin(2 * (2 * i)) for i in range(n)] + [sin(2 * (2 * i + 1)) for i in range(n)]
     z = [zero] + [cos(4 * (2 * i)) for i in range(n)] + [cos(4 * (2 * i + 1)) for i in range(n)]
 
-    M = per_frequency_matrix(scheme)
+    M = per_frequency_matrix(scheme).subs(N, n)  # an edge rule in n: at this valence (a question at one valence)
     M1 = [[_laurent_in(K, M[r, c], 4) for c in range(2)] for r in range(2)]
     M2 = [[_laurent_in(K, M[r, c], 8) for c in range(2)] for r in range(2)]
     X1, Y1 = K(1), K.zeta(2)  # (1, omega_2n)
@@ -206,10 +206,16 @@ def iterate_hyperbolic_ring(scheme: Scheme, n: int, steps: int = 4, *, digits: i
             flat &= x[0] == 0 and y[0] == 0 and z[0] == 0
             flat &= sum(z[1 : n + 1], zero) == 0 and sum(z[n + 1 :], zero) == 0
             ratios.append(abs(X2.to_mpc()) / abs(X1.to_mpc()) ** 2)
-        lam1 = mpmath.mpf(sp.Float(sp.N(tangent_lambda(scheme, 1).subs(N, n), digits + 10), digits + 10)._mpf_)
-        lam2 = mpmath.mpf(sp.Float(sp.N(hyperbolic_lambda(scheme).subs(N, n), digits + 10), digits + 10)._mpf_)
+        lam1, lam2 = (_mp(e.subs(N, n), digits + 10) for e in (tangent_lambda(scheme, 1), hyperbolic_lambda(scheme)))
         factor = lam2 / lam1**2
+        factor = factor.real if factor.imag == 0 else factor  # complex where an edge rule in n makes M_1's roots complex
     return HyperbolicIteration(n, steps, bool(ok), bool(flat), tuple(ratios), factor)
+
+
+def _mp(expr, dps: int):
+    """A number as an mpmath value at ``dps`` digits (``mpc`` if it is not real)."""
+    re, im = sp.N(expr, dps).as_real_imag()
+    return mpmath.mpc(*(mpmath.mpf(sp.Float(x, dps)._mpf_) for x in (re, im)))
 
 
 def _laurent(expr) -> dict[int, sp.Expr]:

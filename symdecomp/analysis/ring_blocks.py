@@ -30,9 +30,9 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_sympy
-from symdecomp.errors import InvalidSchemeError, NotApplicableError, SymdecompError
+from symdecomp.errors import InvalidSchemeError, SymdecompError
 from symdecomp.schemes.lattice import Lattice
-from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, check_rings, ring_subdivision_matrix
+from symdecomp.schemes.rings import CENTRE_WEIGHTS, EDGE_WEIGHTS, RingMatrix, check_rings, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -72,10 +72,10 @@ class RingBlocks:
 
     def frequency_zero_matrix(self, n=N, *, symbolic_weights: bool = False) -> sp.ImmutableMatrix:
         """``E_0 = [[w_O, n w^T], [c, C(1)]]``; the centre weights as symbols or as the scheme's (in ``n``)."""
-        C1 = self.frequency_matrix(1)
+        C1 = self.frequency_matrix(1).subs(N, n)
         subs = {} if symbolic_weights else {s: w.subs(N, n) for s, w in self.weights}
         top = [self.centre.xreplace(subs)] + [n * w.xreplace(subs) for w in self.centre_row]
-        rows = [top] + [[self.centre_column[p]] + list(C1.row(p)) for p in range(self.class_count)]
+        rows = [top] + [[sp.sympify(self.centre_column[p], strict=True).subs(N, n)] + list(C1.row(p)) for p in range(self.class_count)]
         return sp.ImmutableMatrix(rows)
 
     def full_matrix(self, n: int, weights: dict | None = None) -> sp.ImmutableMatrix:
@@ -89,10 +89,10 @@ class RingBlocks:
                 M[0, 1 + q * n + s] = self.centre_row[q].xreplace(subs)
         for p in range(K):
             for s in range(n):
-                M[1 + p * n + s, 0] = self.centre_column[p]
+                M[1 + p * n + s, 0] = sp.sympify(self.centre_column[p], strict=True).subs(N, n)
                 for q in range(K):
                     for l, c in self.offsets[p][q]:
-                        M[1 + p * n + s, 1 + q * n + (s + l) % n] += c
+                        M[1 + p * n + s, 1 + q * n + (s + l) % n] += sp.sympify(c, strict=True).subs(N, n)
         return sp.ImmutableMatrix(M)
 
 
@@ -127,6 +127,10 @@ def read_blocks(S: RingMatrix, scheme: Scheme) -> RingBlocks:
             first = {_signed(c - 1 - q * n, n): x for c, x in rows[1 + p * n].items() if c and (c - 1) // n == q}
             block_row.append(tuple(sorted(first.items())))
         offsets.append(tuple(block_row))
+    edges = {s: sp.sympify(w, strict=True) for s, w in S.weights.items() if s in EDGE_WEIGHTS}
+    if edges:  # the edge rule at the centre's valence, as an expression in n (the model)
+        centre_column = tuple(sp.sympify(x, strict=True).xreplace(edges) for x in centre_column)
+        offsets = [tuple(tuple((l, sp.sympify(c, strict=True).xreplace(edges)) for l, c in block) for block in row) for row in offsets]
     v = scheme.vertex_rule
     weights = tuple(zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)))
     return RingBlocks(scheme.name, scheme.lattice, S.rings, classes, centre, centre_row, centre_column, tuple(offsets), weights)
@@ -136,18 +140,12 @@ def read_blocks(S: RingMatrix, scheme: Scheme) -> RingBlocks:
 def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
     """The block form of ``scheme``'s ``rings``-ring matrix, read at one valence and checked at two more.
 
-    Only the centre's vertex rule may depend on ``n`` (it enters through :data:`CENTRE_WEIGHTS`);
-    edge or face weights in ``n`` give blocks that change with the valence, which one reading
-    cannot capture, so such a scheme is refused in one line.
+    The centre's vertex rule enters through :data:`CENTRE_WEIGHTS`. An edge rule that depends on ``n`` is read, as
+    the model says (:class:`~symdecomp.schemes.scheme.Scheme`), at the centre's valence on the edges at the centre
+    and at the regular valence elsewhere: its weights at the centre are kept as
+    :data:`~symdecomp.schemes.rings.EDGE_WEIGHTS` while reading and then replaced by their expressions in ``n``, so
+    the blocks are expressions in ``omega`` and ``n`` (in ``omega`` alone when the rules do not depend on ``n``).
     """
-    weights = lambda rule: (rule.center, *(x for _, x in rule.a + rule.b))  # noqa: E731
-    dependent = [rule for rule in scheme.stencils() if any(sp.sympify(w, strict=True).has(N) for w in weights(rule))]
-    if dependent:
-        raise NotApplicableError(
-            f"scheme {scheme.name!r}: its {'edge' if dependent[0] is scheme.edge_rule else 'face'} rule depends on the valence n, "
-            "so its circulant blocks change with n; the any-scheme analysis (triangle meshes, --rings) needs rules other than "
-            "the centre's vertex rule to be independent of n"
-        )
     n0 = 4 * rings + 7
     if n0 == scheme.lattice.regular_valence:  # pragma: no cover - 4K + 7 is odd
         n0 += 1
@@ -156,11 +154,12 @@ def ring_blocks(scheme: Scheme, rings: int = 1) -> RingBlocks:
         S = ring_subdivision_matrix(scheme, n, rings, symbolic_centre=True)
         order = S.block_order()
         symbols = {s: s for s in CENTRE_WEIGHTS}
-        built = blocks.full_matrix(n, symbols)
+        built = blocks.full_matrix(n, symbols).subs(N, n)
+        edges = {s: sp.sympify(w, strict=True).subs(N, n) for s, w in S.weights.items() if s in EDGE_WEIGHTS}
         refined = sp.zeros(S.size, S.size)
         for r, row in enumerate(S.rows):
             for c, x in row.items():
-                refined[r, c] = to_sympy(x)
+                refined[r, c] = sp.sympify(to_sympy(x), strict=True).xreplace(edges).subs(N, n)
         if refined.extract(order, order) != built:
             raise InvalidSchemeError(
                 f"scheme {scheme.name!r}: the {rings}-ring matrix at n = {n} is not the banded block form read at n = {n0}"

@@ -49,10 +49,12 @@ def product_form(scheme: Scheme, rings: int = 1) -> tuple[list[str], list[str], 
 
 
 @lru_cache(maxsize=32)
-def _laurent_charpoly(blocks: RingBlocks) -> tuple[int, tuple[flint.fmpq_poly, ...]]:
-    """``(m, (Q_0, Q_1, ...))`` with ``omega^m det(lambda I - E(omega)) = sum_i lambda^i Q_i(omega)``."""
+def _laurent_charpoly(blocks: RingBlocks, n: int | None = None) -> tuple[int, tuple[flint.fmpq_poly, ...]]:
+    """``(m, (Q_0, Q_1, ...))`` with ``omega^m det(lambda I - E(omega)) = sum_i lambda^i Q_i(omega)``; ``n``: the valence,
+    for blocks that depend on it (an edge rule in ``n``), else ``None``."""
     K = blocks.class_count
-    det = sp.expand((LAM * sp.eye(K) - blocks.frequency_matrix()).det(method="berkowitz"))
+    E = blocks.frequency_matrix() if n is None else blocks.frequency_matrix().subs(N, n)
+    det = sp.expand((LAM * sp.eye(K) - E).det(method="berkowitz"))
     terms = sp.Poly(sp.expand(det * OMEGA ** (4 * K * 8)), LAM, OMEGA).terms()
     low = min(b for (_, b), _ in terms)
     m = 4 * K * 8 - low
@@ -68,7 +70,7 @@ def frequency_product_values(blocks: RingBlocks, n: int, weights: dict, points) 
 
     ``weights``: rational values for every symbol of :data:`CENTRE_WEIGHTS`.
     """
-    m, Q = _laurent_charpoly(blocks)
+    m, Q = _laurent_charpoly(blocks, n if blocks.frequency_matrix().has(N) else None)
     E0 = blocks.frequency_zero_matrix(n, symbolic_weights=True).xreplace(weights)
     f0 = sp.Poly((LAM * sp.eye(E0.shape[0]) - E0).det(method="berkowitz"), LAM)
     zero = flint.fmpq_poly([to_fmpq(c) for c in reversed(f0.all_coeffs())])

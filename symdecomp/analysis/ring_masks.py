@@ -32,6 +32,7 @@ from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.analysis.ring_spectrum import acb_text, ring_spectrum
 from symdecomp.errors import SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_digits, check_limit, check_valence
 
@@ -86,7 +87,7 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
         A0 = _acb_matrix(E0, (), ()) - one
         y0 = _left_null_vector(A0, fixed_first=0)
         w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
-        E1 = _acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,))
+        E1 = _acb_matrix(blocks.frequency_matrix().subs(N, n), (OMEGA,), (w,))  # an edge rule in n: at this valence
         K = blocks.class_count
         eye = flint.acb_mat([[flint.acb(int(r == c)) for c in range(K)] for r in range(K)])
         A1 = E1 - lam1 * eye

@@ -278,12 +278,12 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
     prec = max(128, 4 * digits + 64)
     with flint.ctx.workprec(prec):
         zero = _Roots(ff.zero, (N, W_A, W_B))
-        other = _Roots(ff.other, (OMEGA, COSK))
+        other = _Roots(ff.other, (OMEGA, COSK, N))  # N: an edge rule in n is read at the centre's valence (the model)
         wa, wb = (to_acb(field_w[s], prec) for s in (W_A, W_B))
         items = [(b, 0, i, j) for b, i, j in zero.at((flint.acb(n), wa, wb))]
         for k in range(1, n):
             w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
-            items += [(b, k, i, j) for b, i, j in other.at((w, w.real))]
+            items += [(b, k, i, j) for b, i, j in other.at((w, w.real, flint.acb(n)))]
         groups = _clusters(items)
         groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
         entries = []

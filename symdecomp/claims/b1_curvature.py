@@ -26,7 +26,7 @@ from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, Verbatim, claim
+from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -90,12 +90,30 @@ def check_regimes(scheme: Scheme, printed, valences: tuple[int, int] = VALENCES)
                                steps=(Step("The regimes up to the counterexample", sp.Matrix([_HEADER] + rows + [_row(r)])),))
         if n <= 10:
             rows.append(_row(r))
+    proof = _unbounded_for_every_n(scheme, printed, hi)
     steps = (Step(f"$\\lambda_1$, $\\lambda_1^2$, $|\\mu|$ and the frequency of $\\mu$ for $n = {lo}, \\dots, {min(hi, 10)}$ "
                   "(to 6 digits; the comparisons are certified, and exact where $|\\mu| = \\lambda_1^2$)",
                   sp.Matrix([_HEADER] + rows)),)
-    return CheckResult(Status.VERIFIED, Text("the certified regime agrees with the statement for ", Verbatim(scheme.name),
-                                             f" at every n = {lo}..{hi} (Arb balls; ties exact in Q(exp(2 pi i/2n)))"),
-                       steps=steps, valences=(lo, hi))
+    agrees = Text("the certified regime agrees with the statement for ", Verbatim(scheme.name),
+                  f" at every n = {lo}..{hi} (Arb balls; ties exact in Q(exp(2 pi i/2n)))")
+    if proof is not None and proof[1]:  # the regime and its cause for every larger n: the statement is proved
+        return CheckResult(Status.PROVED, Text(agrees, "; for every n beyond: ", *(Verbatim(p.text) + "; " for p in proof[0])),
+                           steps=steps)
+    tail = Text("; ", Verbatim(proof[0][0].text), " (the cause beyond ", hi, " is not shown)") if proof else Text("")
+    return CheckResult(Status.VERIFIED, Text(agrees, tail), steps=steps, valences=(lo, hi))
+
+
+def _unbounded_for_every_n(scheme: Scheme, printed, hi: int):
+    """``(steps, complete)``: the statement's last row, unbounded from some n on, proved for every n from a valence of the
+    certified range (:mod:`symdecomp.verify.regime_every_n`), and whether its cause (the hyperbolic part) is proved too."""
+    from symdecomp.verify.regime_every_n import hyperbolic_cause_from, unbounded_from
+
+    first, last, regime, kind = printed[-1]
+    if last is not None or regime is not U or first > hi or unbounded_from(scheme, first) is None:
+        return None
+    step = unbounded_from(scheme, first)
+    cause = hyperbolic_cause_from(scheme, first) if kind == "hyperbolic" else None
+    return ((step,) + ((cause,) if cause else ()), kind is None or cause is not None)
 
 
 def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
@@ -202,8 +220,9 @@ def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_V
         if dominant != expected:
             name = {0: "the elliptic part", 2: "the hyperbolic part", None: "neither part"}
             what = Text(Verbatim(scheme.name), f", n = {n}: the statement says {name[expected]} dominates; computed: "
-                        f"{name[dominant]}")
-            return CheckResult(Status.REFUTED, what, counterexample=what)
+                        f"{name[dominant]} (certified, Arb balls)")
+            # one valence's certified comparison, as the C1 test's and the regimes' counterexamples: a single case
+            return CheckResult(Status.REFUTED, what, counterexample=what, scope=Scope.SINGLE_CASE)
     shapes = sp.Matrix([[sp.Integer(n), sp.Symbol(artifact_indicators(scheme, n).shape[0])] for n in range(max(lo, 4), 9)])
     return CheckResult(
         Status.VERIFIED,

@@ -14,7 +14,8 @@ from symdecomp.symbols import cos_jtheta as COS
 from symdecomp.symbols import n, omega
 from symdecomp.symbols import sin_jtheta as SIN
 
-__all__ = ["at_valence", "number", "representative", "start_points", "dominant_vs_frequency_zero", "filtering_evidence"]
+__all__ = ["at_valence", "number", "representative", "start_points", "dominant_vs_frequency_zero", "filtering_evidence",
+           "complex_elliptic_pair"]
 
 C = COS
 
@@ -154,3 +155,35 @@ def frequency_zero_refutation(ev, block, upto: int, steps):
         counterexample=Text(eq(n, upto), ": ", eq(lambda_1, lam1), ", the Eq. 43 eigenvalues other than 1 are ", sp.Matrix(mus).T),
         steps=steps,
     )
+
+
+def complex_elliptic_pair(scheme: Scheme, lo: int, hi: int) -> tuple[int | None, bool]:
+    """The first valence ``n >= lo`` where the Eq. 43 eigenvalues besides 1 are not two distinct reals (a complex pair
+    or a double root: no real elliptic eigenvalue of its own), and whether the search covered every ``n >= lo``.
+
+    Their quadratic's discriminant is a function of ``n``: when it is rational in ``n``, its sign is decided for every
+    ``n >= lo`` (:func:`~symdecomp.algebra.valence_signs.positive_from`, Sturm sequences) and only the valences below its
+    last real root are tried; otherwise the valences ``lo..hi`` are tried one by one (exact signs)."""
+    from symdecomp.algebra.algebraic_sign import exact_sign
+    from symdecomp.algebra.valence_signs import positive_from
+    from symdecomp.analysis.frequency import recursion_matrix
+    from symdecomp.errors import InvalidInputError
+
+    x = sp.Symbol("x")
+    chi = sp.Matrix(recursion_matrix(scheme, n)).charpoly(x).as_expr()
+    quadratic = sp.quo(sp.Poly(sp.together(chi), x), sp.Poly(x - 1, x)).as_expr()
+    disc = sp.cancel(sp.discriminant(quadratic, x))
+    if disc.free_symbols - {n}:  # free parameters: no sign at a valence (the remark's own check handles them)
+        return None, False
+    try:
+        if positive_from(disc, n, lo):
+            return None, True
+        numerator = sp.Poly(sp.numer(sp.together(disc)), n)
+        roots = [r for r in numerator.real_roots() if r >= lo]
+        last, every = (int(sp.ceiling(max(roots))) + 1 if roots else lo), True
+    except InvalidInputError:  # cos(2 pi/n) in a weight: not rational in n
+        last, every = hi, False
+    for k in range(lo, max(lo, last) + 1):
+        if exact_sign(disc.subs(n, k)) <= 0:
+            return k, every
+    return None, every

@@ -41,7 +41,7 @@ from symdecomp.analysis.support_window import (
 from symdecomp.claims.applicability import WHOLE_MESH
 from symdecomp.claims.notation import eq, gt
 from symdecomp.claims.notation import n as N
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
+from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim
 from symdecomp.schemes.mesh import cube_mesh, ring_mesh, ring_mesh_labels
 from symdecomp.schemes.refinement import mesh_rules, point_stencils, refine
 from symdecomp.schemes.scheme import Scheme
@@ -214,15 +214,17 @@ def _regular_counts(scheme: Scheme) -> CheckResult:
             f"{inside} inside and {inside + boundary} inside or on the boundary",
             steps=steps,
             counterexample=f"regular Catmull-Clark: {inside} vertices inside, {boundary} on the boundary",
+            scope=Scope.SINGLE_CASE,  # the statement is about the regular vertex alone
         )
     return CheckResult(
-        Status.PROVED,
-        "the statement concerns one case, the regular vertex (n = 4), and the exact computation there is its proof: "
+        Status.VERIFIED,
+        "the statement concerns one case, the regular vertex (n = 4), and the exact computation there settles it: "
         "9 vertices inside the support of P (P and its 8 neighbours), 16 on its boundary, 25 in all (the rules' "
         "hypotheses checked at valence 4, the sector tests stable over 2 levels of exact refinement); that the 9 "
         "determine the derivatives is the claim 'Section 3: boundary influence'; '25 are needed to prove continuity' "
         "is the paper's reading of the count, not checked",
         steps=steps,
+        valences=(4, 4),
     )
 
 

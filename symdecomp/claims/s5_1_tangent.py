@@ -23,6 +23,7 @@ from symdecomp.claims.evidence import (
 )
 from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1, le, ne, omega_2n, omega_n, tup
 from symdecomp.claims.notation import M as Mk
+from symdecomp.claims.per_valence import depends_on_valence, largest_at_frequency_one
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, Verbatim, claim, is_zero
 from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
 from symdecomp.schemes.scheme import Scheme
@@ -293,9 +294,11 @@ def _eq38(scheme: Scheme) -> CheckResult:
     section="5.1",
     title="$A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues",
     statement="The regular convex components $A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY),
+    requires=(MIRROR_SYMMETRIC,),
 )
 def _prop51(scheme: Scheme) -> CheckResult:
+    if depends_on_valence(scheme):  # n in M_j beside c: valence by valence, n substituted first
+        return largest_at_frequency_one(scheme, "M_j (j = 2..n-2) and the Eq. 43 block besides 1", frequency_zero=True)
     ev = tangent_eigenvalues(scheme)
     cp = sp.Symbol("c", positive=True)
     dominant = ev.dominant.subs(C, cp)
@@ -465,10 +468,10 @@ def _eq39_n4(scheme: Scheme) -> CheckResult:
     steps = (Step("$r$ at $n = 4$, $j = 1$:", value),)
     if not ok:
         return CheckResult(Status.REFUTED, evidence, counterexample=Text(eq(n, 4), ": ", eq(B(1) / A(1), value), " = ", number(value),
-                                                                          ", not ", 1 + sp.I), steps=steps)
-    # the statement is about n = 4 alone: the exact value there is its proof
-    return CheckResult(Status.PROVED, Text(evidence, "; the statement concerns ", eq(n, 4), " alone, so this exact computation at "
-                                           "its only valence is its proof"), steps=steps)
+                                                                          ", not ", 1 + sp.I), steps=steps, scope=Scope.SINGLE_CASE)
+    # the statement is about n = 4 alone: the exact value there settles it, and its scope is that one case
+    return CheckResult(Status.VERIFIED, Text(evidence, "; the statement concerns ", eq(n, 4), " alone, and this exact computation "
+                                             "at its only valence settles it"), steps=steps, valences=(4, 4))
 
 
 @claim(

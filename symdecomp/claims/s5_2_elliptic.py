@@ -22,6 +22,7 @@ from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC
+from symdecomp.claims.evidence import complex_elliptic_pair
 from symdecomp.claims.notation import A, B, M, eq, j, lambda_1, listed, ne, omega_2n, tup
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import alpha as ALPHA
@@ -339,18 +340,20 @@ def _eq45(scheme: Scheme) -> CheckResult:
             Text("for this scheme at n = 4 ", ", ".join(w[0] for w in wrong), " differ from the printed values"),
             counterexample=Text("n = 4: ", name, " is ", derived, ", printed ", shown),
             steps=steps,
+            scope=Scope.SINGLE_CASE,  # the statement is about n = 4 alone
         )
     both = sp.simplify(lam1**2 - eigs[1]) == 0
-    # the statement is about n = 4 alone: the exact computation there is its proof
+    # the statement is about n = 4 alone: the exact computation there settles it, and its scope is that one case
     return CheckResult(
-        Status.PROVED,
+        Status.VERIFIED,
         Text("derived matrix equals the printed one; eigenvalues ", listed(eigs), "; eigenvector ", tup(*u),
              " proportional to ", tup(-2, 1, 4), "; ratio ", eq(ratio, abs(B(1) / A(1)) ** 2), " = ", scale_sq,
              " (scale ratio ", sp.sqrt(scale_sq), "); ",
              Text(eq(eigs[1], lambda_1**2), ": both conditions hold at ", eq(N, 4)) if both else Text(ne(eigs[1], lambda_1**2)),
              "; every value is exact and the statement concerns ", eq(N, 4), " alone, so this computation at its only valence "
-             "is its proof"),
+             "settles it"),
         steps=steps,
+        valences=(4, 4),
     )
 
 
@@ -367,6 +370,11 @@ def _remark52(scheme: Scheme) -> CheckResult:
     l = recursion_left_eigenvector(free, MU)
     dot111 = sp.factor(sum(l))
     lo = max(3, scheme.minimum_valence())
+    pair, _ = complex_elliptic_pair(scheme, lo, 64)
+    if pair is not None:  # the remark's elliptic component is the one on a real eigenvector of its own
+        return CheckResult(Status.UNDECIDED, Text("at ", eq(N, pair), " the eigenvalues of the Eq. 43 matrix besides 1 are a complex "
+                                                  "pair or a double root: there is no real elliptic eigenvalue, so the remark's "
+                                                  "elliptic component is not defined there"))
     valences = range(lo, 9)
     inputs = ((1, 1, 1), (0, 1, 1), (0, 1, -1))
     comps = {x: {n: elliptic_component(scheme, n, x) for n in valences} for x in inputs}

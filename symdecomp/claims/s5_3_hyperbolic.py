@@ -13,6 +13,7 @@ from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, NO_FREE_PARAMETERS, REAL_TANGENT_SPECTRUM
 from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
+from symdecomp.claims.per_valence import depends_on_valence, largest_at_frequency_one
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import cos_jtheta as COS
@@ -28,15 +29,16 @@ Sym = sp.Symbol
     title="Hyperbolic components have smaller eigenvalues",
     statement=r"The eigenvalues of $A^2, A^{2n-2}, B^2, B^{2n-2}$ are smaller than those related to tangent plane "
     r"continuity.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM),
+    requires=(MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM),
 )
 def _smaller(scheme: Scheme) -> CheckResult:
+    if depends_on_valence(scheme):  # n in M_j beside c: valence by valence
+        return largest_at_frequency_one(scheme, "M_2 (the hyperbolic components)", frequency_zero=False, only=2)
     ev = tangent_eigenvalues(scheme)
     t = sp.Symbol("t", positive=True)  # t = |c|
     slope = sp.factor(sp.diff(ev.dominant.subs(sp.Abs(COS), t).subs(COS**2, t**2), t))
     increasing = all(term.is_positive for term in sp.Add.make_args(sp.expand(slope))) or sp.simplify(slope).is_positive
-    lam1_3 = tangent_lambda(scheme, 1).subs(N, 3)
-    lam2_3 = hyperbolic_lambda(scheme).subs(N, 3)
+    lam1_3, lam2_3 = tangent_lambda(scheme, 1).subs(N, 3), hyperbolic_lambda(scheme).subs(N, 3)
     equal_at_3 = sp.simplify(lam1_3 - lam2_3) == 0
     # |cos(2 pi/n)| < cos(pi/n) for n >= 4: with c = cos(pi/n) in (1/2, 1), (2c+1)(c-1) < 0 and (2c-1)(c+1) > 0
     larger = [k for k in range(4, 41) if sp.N(hyperbolic_lambda(scheme).subs(N, k) - tangent_lambda(scheme, 1).subs(N, k), 30) >= 0]
@@ -149,7 +151,7 @@ def _frequency_closure(scheme: Scheme):
     title="A 1-ring with only hyperbolic components",
     statement=r"Place $O$ on the plane of $A^1, A^{2n-1}, B^1, B^{2n-1}$ (the elliptic component becomes zero) and add "
     r"a combination of $\vec{v_2}, \vec{v_{2n-2}}$ on a plane perpendicular to the 1-ring.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM, NO_FREE_PARAMETERS),
+    requires=(MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM, NO_FREE_PARAMETERS),  # an edge rule in n: each n substitutes it
 )
 def _construction(scheme: Scheme) -> CheckResult:
     cc = scheme
@@ -271,12 +273,18 @@ def _basis(scheme: Scheme) -> CheckResult:
         )
     why = "the scheme has free parameters" if scheme.parameters else not_rational or "a resultant vanishes identically" if bad is None else (
         "the block form does not give the Eq. 43 matrix")
+    # the range's scope needs the elliptic component at each of its valences, not only at 3, 4, 5 (issue 32)
+    every = {n: comps.get(n) or elliptic_component(cc, n, (1, 0, 0)) for n in range(lo, hi + 1)}
+    if any(c is None or c == 0 for c in every.values()):
+        n0 = next(n for n, c in every.items() if c is None or c == 0)
+        return CheckResult(Status.UNDECIDED, Text("at ", eq(N, n0), " the input (1, 0, 0) of Eq. 43 has no single nonzero elliptic "
+                                                  "component"), steps=steps)
     return CheckResult(
         Status.VERIFIED,
         Text(
             "heights ", tup(1, 0, Sym("..."), 0), " stay constant on the a's and on the b's under the exact matrix (3 steps): "
             "no ", ne(j, 0), " component off the plane; the input ", tup(1, 0, 0), " of Eq. 43 has a nonzero elliptic "
-            "component (", N, " = 3, 4, 5: ", shown, "); not for every n: ", why,
+            "component at each n = ", lo, "..", hi, " (", N, " = 3, 4, 5: ", shown, "); not for every n: ", why,
         ),
         valences=(lo, hi),
         steps=steps,

@@ -10,7 +10,7 @@ from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, v
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.tuning import with_free_vertex_rule
-from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC
+from symdecomp.claims.applicability import MIRROR_SYMMETRIC
 from symdecomp.claims.notation import eq, j, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s6_cb_matrices import _det, _nc
@@ -38,6 +38,17 @@ def _displayed_expression_agrees(free: Scheme, expression: sp.Expr, valences) ->
     return None
 
 
+def _factored(cf, rho_p, rho_m) -> bool:
+    """``q = (rho_+ + c_+ w)(rho_- + c_+ w)/(c_+ w)``; for ``c_+ = 0`` (``M(omega)`` triangular) ``q = c_0 + c_-/w`` with
+    ``rho = c_0, 0``, whose product over the roots of unity is ``c_0^n - (-c_-)^n`` directly."""
+    c_minus, c_zero, c_plus = cf.laurent_coefficients
+    w = sp.Symbol("w")
+    q = cf.frequency_factor.subs(OMEGA, w)
+    if is_zero(c_plus):
+        return is_zero(rho_p * rho_m) and is_zero(rho_p + rho_m - c_zero) and is_zero(sp.expand(c_zero + c_minus / w - q))
+    return is_zero(sp.expand((rho_p + c_plus * w) * (rho_m + c_plus * w) / (c_plus * w)) - q)
+
+
 @claim(
     "Eq. 51",
     section="6",
@@ -49,8 +60,7 @@ def _eq51(scheme: Scheme) -> CheckResult:
     cf = closed_form_characteristic_polynomial(free)
     c_minus, c_zero, c_plus = cf.laurent_coefficients
     rho_p, rho_m = cf.rho
-    w = sp.Symbol("w")
-    factor_ok = is_zero(sp.expand((rho_p + c_plus * w) * (rho_m + c_plus * w) / (c_plus * w)) - cf.frequency_factor.subs(OMEGA, w))
+    factor_ok = _factored(cf, rho_p, rho_m)
     # prod_k c_+ w_k = c_+^n w^(n(n-1)/2), w = exp(2 pi i/n): the sign
     sign = sp.simplify(sp.exp(2 * sp.pi * sp.I / N * N * (N - 1) / 2))
     # with P = rho_+^n, Q = rho_-^n, A = (-c_+)^n, B = (-c_-)^n, and P Q = (c_+ c_-)^n = A B:
@@ -213,7 +223,7 @@ def _certainly_above(value: sp.Expr, bound: sp.Expr) -> bool:
     section="6",
     title="Tuning does not interfere with tangent-plane properties",
     statement=r"Hence $\alpha,\beta$ affect only elliptic properties of Catmull-Clark without interfering with tangent plane or hyperbolic properties.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY,),
+    requires=(MIRROR_SYMMETRIC,),  # an edge rule in n: lambda_1 is taken at each valence tried
 )
 def _no_interference(scheme: Scheme) -> CheckResult:
     # the two weight-dependent eigenvalues are those of E_0; look for vertex weights that lift one above lambda_1
@@ -221,7 +231,7 @@ def _no_interference(scheme: Scheme) -> CheckResult:
     lam1_expr = tangent_eigenvalues(scheme).dominant
     found = None
     for valence in (3, 4, 5):
-        lam1 = lam1_expr.subs(COS, sp.cos(sp.pi / valence))
+        lam1 = lam1_expr.subs({COS: sp.cos(sp.pi / valence), N: valence})
         for weights in ((0, 0), (-1, 0), (0, -1)):
             E0 = cf.zero_frequency_matrix.subs({ALPHA: weights[0], BETA: weights[1], N: valence})
             moved = [e for e in sp.Matrix(E0).eigenvals() if _certainly_above(e, lam1)]

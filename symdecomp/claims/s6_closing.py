@@ -104,7 +104,7 @@ def _rational_valences(scheme: Scheme, count: int) -> list[int]:
 
 def _lambda1_at(scheme: Scheme, valence: int):
     """``lambda_1`` at a valence: the exact root of the frequency-1 polynomial of largest modulus."""
-    condition = sp.expand(_subdominant_condition(scheme).subs(OMEGA, sp.exp(2 * sp.pi * sp.I / valence)))
+    condition = sp.expand(_subdominant_condition(scheme).subs({OMEGA: sp.exp(2 * sp.pi * sp.I / valence), N: valence}))
     roots = [sp.radsimp(sp.simplify(sp.expand_complex(r))) for r in sp.roots(sp.Poly(condition, X))]
     return max(roots, key=lambda r: abs(complex(sp.N(r, 30))))
 
@@ -124,8 +124,15 @@ def _outer_block_proof(scheme: Scheme, rings: int, inner_rings: int) -> tuple[bo
     constant = not p_outer.has(OMEGA)
     # lambda_1(n) is a root of condition(x, omega_n): it is an eigenvalue of the outer block only where the
     # resultant vanishes at a root of unity of order n >= 3
-    resultant = sp.resultant(sp.numer(sp.together(p_outer)), sp.numer(sp.together(condition)), X) if constant else None
-    orders = root_of_unity_orders(sp.expand(resultant).subs(OMEGA, ZETA)) if constant else None
+    outer_poly, frequency_one = sp.numer(sp.together(p_outer)), sp.numer(sp.together(condition))
+    shared = sp.gcd(outer_poly, frequency_one) if constant else sp.Integer(1)
+    if shared.has(X) and not shared.has(OMEGA) and sp.Poly(shared, X).monoms() == [(sp.Poly(shared, X).degree(),)]:
+        # a root 0 shared for every omega (M(omega) singular): lambda_1, the root of largest modulus, is not it when the
+        # frequency-1 polynomial keeps a nonzero root; the resultant then compares the other roots
+        frequency_one = sp.cancel(frequency_one / shared)
+    resultant = sp.resultant(outer_poly, frequency_one, X) if constant and frequency_one.has(X) else None
+    # an edge rule in n puts n into the resultant: the roots of unity alone no longer decide it (the range decides)
+    orders = root_of_unity_orders(sp.expand(resultant).subs(OMEGA, ZETA)) if resultant is not None and not resultant.has(N) else None
     # at a valence where the resultant vanishes, another root of the frequency-1 polynomial may be the outer
     # eigenvalue: look at lambda_1 itself there, exactly
     exceptions = [m for m in orders or () if m >= 3]
@@ -174,8 +181,9 @@ def _sufficient(scheme: Scheme) -> CheckResult:
             Text("the left eigenvectors of 1 (", N, " in ", sp.FiniteSet(*small), ") and of ", lambda_1, " (", eq(N, valence),
                  ") of the 2- and 3-ring matrices vanish outside the ", inner_rings, "-ring (exact); the proof for every ",
                  N, " does not go through for this scheme (block form not triangular, or the outer spectrum depends on the "
-                 "frequency or meets 1 or ", lambda_1, ")"),
-            valences=(small[0], small[-1]),
+                 "frequency or meets 1 or ", lambda_1, ", or the rules depend on ", N, "); the scope is the valence where both "
+                 "left eigenvectors were computed"),
+            valences=(valence, valence),
             steps=tuple(steps),
         )
     return CheckResult(

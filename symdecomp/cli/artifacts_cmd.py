@@ -3,6 +3,8 @@
 The table is a list of columns (:data:`symdecomp.output.artifact_table.COLUMNS`, shared with the report's section
 "Curvature and shape"), each a header and a function of one valence's JSON object
 (:meth:`~symdecomp.verify.artifacts.ArtifactIndicators.as_json`): a new indicator is one more entry.
+
+``symdecomp artifacts --every-n``: the curvature regime of every valence (:mod:`symdecomp.verify.regime_every_n`).
 """
 
 from __future__ import annotations
@@ -52,8 +54,12 @@ def register(sub) -> None:
         "regime is undecided.",
         epilog=_LEGEND,
     )
-    p.add_argument("--n", dest="valences", type=valence_range("artifacts"), action=Once, required=True, metavar="A:B",
-                   help=f"valences: an inclusive range A:B or a single N (at most {LIMITS['artifacts'][0]})")
+    p.add_argument("--n", dest="valences", type=valence_range("artifacts"), action=Once, metavar="A:B",
+                   help=f"valences: an inclusive range A:B or a single N (at most {LIMITS['artifacts'][0]}); or --every-n")
+    flag(p, "--every-n", dest="every_n",
+         help="the curvature regime of every valence: certified at n = 3, 4, ... until the unbounded regime is proved for "
+         "every larger n (lambda_2 > lambda_1^2 in s = cos(2 pi/n): Sturm sequences on triangles, Arb balls covering "
+         "[s_0, 1] on quads); --json: the steps")
     flag(p, "--json", help='print the one JSON shape (docs: File formats, --json), one object per valence under "rows": '
          '{"n", "density", "negative_weights", '
          '"ring_spacing_ratio", "sector_angle_ratio", "curvature": {"regime", "reason", "cause", "lambda1", '
@@ -79,8 +85,15 @@ def _figure(scheme: str, rows: list[dict]):
 
 
 def run(args) -> int:
+    from symdecomp.errors import InvalidInputError
     from symdecomp.output.artifact_table import table
 
+    if args.every_n and args.valences is not None:
+        raise InvalidInputError("--every-n and --n cannot be used together: --every-n covers every valence")
+    if args.every_n:
+        return _run_every_n(args)
+    if args.valences is None:
+        raise InvalidInputError("give --n A:B (the valences) or --every-n")
     valences = args.valences
     plot = check_plot(args)
     estimate_seconds(ARTIFACTS_COST * sum(valences), "artifacts --n A:B", f"--n {valences[0]}:{valences[-1]}")
@@ -94,3 +107,18 @@ def run(args) -> int:
         print(_LEGEND)
     write_plot(plot, lambda: _figure(args.scheme.name, results))
     return 1 if any(r["curvature"]["regime"] == "undecided" for r in results) else 0
+
+
+def _run_every_n(args) -> int:
+    from symdecomp.verify.regime_every_n import regime_every_n
+
+    result = regime_every_n(args.scheme)
+    if args.json:
+        print_json(args, {**result.as_json(), "rows": []})  # a proof for every valence: its steps, no rows of valences
+    else:
+        print(f"{args.scheme.name}: the curvature regime at the extraordinary vertex, every valence")
+        for step in result.steps:
+            first, last = step.valences
+            where = f"n >= {first}" if last is None else f"n = {first}..{last}"
+            print(f"  [{step.status}] {where}: {step.text}")
+    return 0 if result.first_proved is not None else 1

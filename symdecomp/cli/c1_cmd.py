@@ -1,5 +1,8 @@
 """``symdecomp c1 --n 3:64``: Reif's sufficient test for C1 at an extraordinary vertex, certified, per valence.
 
+``symdecomp c1 --every-n`` (or an open range ``--n 3:``): C1 for every valence as far as it is shown
+(:mod:`symdecomp.verify.c1_every_n`): the spectral conditions proved for every n, Reif's test at n = 3..64.
+
 ``symdecomp c1 --boundary --k 1:16`` (``--corner``, ``--crease K1,K2``): Zorin's conditions at boundary, corner and
 crease vertices (:mod:`symdecomp.verify.c1_sharp`), per number of faces ``k``, with the scheme's ``[sharp]`` rules.
 """
@@ -33,6 +36,9 @@ if TYPE_CHECKING:
 
 __all__ = ["register", "run"]
 
+#: The valences Reif's test certifies one by one under --every-n (the characteristic map's part beyond them is open).
+EVERY_N_CERTIFIED = 64
+
 #: How a verdict is printed (by its value, so that the table needs no import of the verify layer).
 LABELS = {"c1": "C1 certified", "not-c1": "not C1", "undecided": "undecided"}
 
@@ -60,9 +66,13 @@ def register(sub) -> None:
         "the ring of spline patches past the modified edges) and injective (the argument it sweeps between "
         "the two rays, 0 to 2 pi in the Jacobian's orientation), and at a corner with --angle a convex or concave image.",
     )
-    p.add_argument("--n", dest="valences", type=valence_range("c1"), action=Once, metavar="A:B",
-                   help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]}); or a sharp "
-                   "vertex with --boundary, --corner or --crease")
+    p.add_argument("--n", dest="valences", type=_valences, action=_ValencesOnce, metavar="A:B",
+                   help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]}); an open "
+                   "range A: is --every-n; or a sharp vertex with --boundary, --corner or --crease")
+    flag(p, "--every-n", dest="every_n",
+         help="C1 for every valence: the spectral conditions as statements in t = cos(2 pi j/n) decided for every n "
+         f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}; says "
+         "which part is proved, verified or open, and the first valence where C1 fails (--json: the steps)")
     flag(p, "--boundary", help="test boundary vertices with K faces (--k): the crease rules on the boundary, the scheme's "
          "[sharp] rules (default: the cubic B-spline's 3/4, 1/8 and 1/2; a file may give Biermann-Levin-Zorin's near-edge "
          "rule in theta_k = pi/k)")
@@ -91,6 +101,25 @@ def register(sub) -> None:
     add_plot_option(p, "the characteristic map at the first, the last and a middle vertex, over the certified bounds of its "
                     "Jacobian and of the spectral gap at every vertex, coloured by verdict")
     p.set_defaults(func=run)
+
+
+class _ValencesOnce(Once):
+    """--n, given once; the open range ``3:`` is stored as --every-n (no list of valences)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        super().__call__(parser, namespace, None if values == "every" else values, option_string)
+        if values == "every":
+            namespace.open_range = True
+
+
+def _valences(text: str):
+    """argparse type: :func:`valence_range`, or an open range ``A:`` (every valence from ``A``: --every-n)."""
+    if text.endswith(":") and text.count(":") == 1:
+        first = valence_range("c1")(text[:-1])[0]
+        if first != 3:
+            raise argparse.ArgumentTypeError(f"an open range starts at 3 (every valence), got {text!r}")
+        return "every"
+    return valence_range("c1")(text)
 
 
 def _faces(text: str) -> list[int]:
@@ -168,6 +197,9 @@ def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
 def _sharp_items(args) -> list[tuple] | None:
     """What to test at sharp vertices (``None``: the interior test of --n), or a one-line error."""
     kinds = [name for name in ("boundary", "corner", "crease") if given(args, name)]
+    if given(args, "every_n") and (kinds or given(args, "valences")):
+        other = "--n" if given(args, "valences") else f"--{kinds[0]}"
+        raise InvalidInputError(f"--every-n and {other} cannot be used together: --every-n tests every interior valence")
     if given(args, "valences") and kinds:
         raise InvalidInputError(f"--n (interior vertices) and --{kinds[0]} cannot be used together: give one kind of vertex")
     if len(kinds) > 1:
@@ -176,8 +208,8 @@ def _sharp_items(args) -> list[tuple] | None:
         for name in ("faces", "angle", "sharpness"):
             if given(args, name):
                 raise InvalidInputError(f"--{'k' if name == 'faces' else name} needs --boundary, --corner or --crease")
-        if not given(args, "valences"):
-            raise InvalidInputError("give --n A:B (interior vertices), or --boundary/--corner with --k A:B, or --crease K1,K2")
+        if not given(args, "valences") and not given(args, "every_n"):
+            raise InvalidInputError("give --n A:B (interior vertices) or --every-n, or --boundary/--corner with --k A:B, or --crease K1,K2")
         return None
     kind = kinds[0]
     if given(args, "angle") and kind != "corner":
@@ -201,6 +233,8 @@ def run(args) -> int:
     plot = check_plot(args)
     if items is not None:
         return _run_sharp(args, items, plot)
+    if getattr(args, "every_n", False) or getattr(args, "open_range", False):
+        return _run_every_n(args)
 
     valences = args.valences
     rows = ordered_map(_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
@@ -241,3 +275,25 @@ def _run_sharp(args, items: list[tuple], plot) -> int:
             print(f"{r.vertex:<{width}}: {LABELS[r.verdict.value]}: {r.reason}")
     write_plot(plot, lambda: _figure(args.scheme, results, [_vertex(item, args.scheme) for item in items]))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+
+
+def _run_every_n(args) -> int:
+    from symdecomp.parallel import ordered_map
+    from symdecomp.verify.c1_every_n import c1_every_n
+
+    scheme = args.scheme
+    valences = list(range(max(3, scheme.minimum_valence()), EVERY_N_CERTIFIED + 1))
+    rows = ordered_map(_one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,
+                       executor=args.executor, warm_up=True)
+    by_n = {r.n: r for r in progress(rows, len(valences), "c1", enabled=not args.quiet)}
+    result = c1_every_n(scheme, EVERY_N_CERTIFIED, certify=lambda k: by_n[k] if k in by_n else _one(k, scheme, args.depth))
+    if args.json:
+        print_json(args, {**result.as_json(), "rows": [by_n[k].json for k in sorted(by_n) if k <= result.certified[1] + 1]})
+    else:
+        print(f"{scheme.name}: C1 for every valence")
+        for step in result.steps:
+            first, last = step.valences
+            where = f"n >= {first}" if last is None else f"n = {first}..{last}" if last > first else f"n = {first}"
+            print(f"  [{step.status}] {where}: {step.text}")
+        print(f"{result.status}: {result.summary}")
+    return 0 if result.status in ("proved", "verified") else 1

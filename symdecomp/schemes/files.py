@@ -29,7 +29,10 @@ the scheme's regular rules are its rules at the regular valence, and every comma
 rules: the 1-ring commands at the extraordinary vertex, ``--rings 2/3``, ``evaldata`` and ``c1`` on
 the whole neighbourhood. A scheme tuned at extraordinary vertices only writes a vertex weight that
 is the standard one at the regular valence (e.g. ``a = "3/32 + (n - 4)*(...)"``); the rules must be
-defined there, and real (checked when the file is read). The C1 test knows the regular patches of
+defined there, and real (checked when the file is read). An edge rule may depend on ``n`` too: an edge
+at a vertex of valence ``n`` other than the regular one takes the rule read from that vertex at ``n`` (of
+two such ends, the one of larger valence), and an edge between regular vertices the rule at the regular
+valence, which must give the same point from either end; every command reads it so. The C1 test knows the regular patches of
 Catmull-Clark and Loop: it applies when all the rules at the regular valence, the vertex rule
 included, are theirs, and says why in one line otherwise.
 
@@ -118,7 +121,7 @@ from importlib import resources
 import sympy as sp
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError, SymdecompError
-from symdecomp.expressions import parse_expression
+from symdecomp.expressions import identically_zero, parse_expression
 from symdecomp.schemes.lattice import LATTICES, QUAD
 from symdecomp.schemes.loop import loop, loop_warren
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
@@ -306,8 +309,9 @@ def _stencil(table: dict, section: str, source: str, symbols, *, keys=_RULE_KEYS
     center = _weight(table.get("O", 0), f"[{section}] O", source, symbols)
     a = _offsets(table.get("a", {}), f"[{section}] a", source, symbols)
     b = _offsets(table.get("b", {}), f"[{section}] b", source, symbols)
-    total = sp.simplify(center + sum(a.values(), sp.Integer(0)) + sum(b.values(), sp.Integer(0)))
-    if sp.simplify(total - 1) != 0:
+    total = center + sum(a.values(), sp.Integer(0)) + sum(b.values(), sp.Integer(0))
+    if not identically_zero(total - 1):
+        total = sp.cancel(total)
         raise NotAffineError(f"{source}: [{section}] is not affine: O + sum of a + sum of b = {total}, not 1")
     return Stencil.from_weights(center, a, b, name=f"{section} rule")
 
@@ -325,7 +329,7 @@ def _triangle_vertex(table: dict, source: str, symbols) -> VertexRule:
     rule = VertexRule.affine(beta, 0)
     if "O" in table:
         center = _weight(table["O"], "[vertex] O", source, symbols)
-        if sp.simplify(center - rule.center) != 0:
+        if not identically_zero(center - rule.center):
             raise NotAffineError(f"{source}: [vertex] is not affine: O = {center}, but 1 - n*beta = {rule.center}")
     return rule
 
@@ -340,7 +344,7 @@ def _vertex(table: dict, source: str, symbols) -> VertexRule:
     rule = VertexRule.affine(a, b)
     if "O" in table:
         center = _weight(table["O"], "[vertex] O", source, symbols)
-        if sp.simplify(center - rule.center) != 0:
+        if not identically_zero(center - rule.center):
             raise NotAffineError(f"{source}: [vertex] is not affine: O = {center}, but 1 - n*a - n*b = {rule.center}")
     return rule
 

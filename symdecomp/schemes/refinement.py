@@ -17,6 +17,14 @@ module derives those mesh rules from the scheme (:func:`mesh_rules`) and refuses
   at ``n = m`` (so tuned weights ``alpha(n), beta(n)`` apply at every vertex with its own
   valence). For standard Catmull-Clark this is ``(Q + 2R + (m - 3)S)/m``.
 
+**Edge rules that depend on n** (the model, :class:`~symdecomp.schemes.scheme.Scheme`): an edge's point is
+made by the edge rule read at the valence of its extraordinary end (the end whose valence is not the regular
+one; the larger valence if both are extraordinary), and at the regular valence when both ends are regular
+(:func:`edge_valence`). So in the neighbourhood of one extraordinary vertex of valence ``n`` the ``n`` edges
+at the centre use the rule at ``n`` (the 1-ring stencils say so) and every other edge the regular rule; a
+vertex on the mesh's border (its valence unknown) counts as regular. The face rule of a rule of the mesh is
+the centroid (``1/4`` on each corner, forced), so it never depends on ``n``.
+
 A mesh may have a boundary. Refinement only computes points whose rules see all their
 inputs (interior vertices, edges with two faces, all faces) and keeps the new faces whose four
 corners were computed, so everything in the refined mesh is exact: it is what refining an
@@ -66,6 +74,7 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import Cyclotomic
 from symdecomp.algebra.numbers import to_fraction
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.expressions import identically_zero
 from symdecomp.schemes.mesh import InvalidMeshError, QuadMesh, TriangleMesh
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_levels, check_memory
@@ -74,7 +83,7 @@ if TYPE_CHECKING:  # the lattice objects (imported by the scheme) call this modu
     from symdecomp.schemes.scheme import Scheme
 
 __all__ = [
-    "MeshRules", "Refinement", "mesh_rules", "refine", "point_stencils", "refinement_matrix", "central_rings",
+    "MeshRules", "Refinement", "mesh_rules", "edge_centre", "refine", "point_stencils", "refinement_matrix", "central_rings",
     "TriangleMeshRules", "TriangleRefinement", "triangle_mesh_rules", "refine_triangles",
 ]
 
@@ -110,12 +119,33 @@ class MeshRules:
     edge_end: sp.Expr
     #: Weight of each of the other four corners of the two faces of the edge in its edge point.
     edge_side: sp.Expr
+    #: The edge rule read from its end ``O`` (expressions in ``n``): the weight on ``O``, on the other end, on each of
+    #: the two side corners next to ``O`` (``a_{i-1}``, ``a_{i+1}``) and on each next to the other end (``b_{i-1}``, ``b_i``).
+    #: The four agree with ``edge_end, edge_end, edge_side, edge_side`` at the regular valence (a rule of the mesh there).
+    oriented: tuple[sp.Expr, ...] = ()
 
     def vertex_weights(self, valence: int) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
         """``(center, each edge neighbour, each face neighbour)`` of the vertex point at this valence."""
         v = self.scheme.vertex_rule
         values = (w.subs(N, valence) for w in (v.center, v.each_a, v.each_b))
         return tuple(x if x.is_Rational else sp.simplify(x) for x in values)
+
+    def edge_weights(self, valence: int) -> tuple[sp.Expr, ...]:
+        """:attr:`oriented` at this valence: the edge rule of an edge whose end ``O`` has this valence (the model)."""
+        return tuple(sp.sympify(w, strict=True).subs(N, valence) for w in self.oriented)
+
+    @property
+    def depends_on_valence(self) -> bool:
+        """Whether the edge rule's weights depend on ``n`` (then each edge reads them at its end ``O``'s valence)."""
+        return any(sp.sympify(w, strict=True).has(N) for w in self.oriented)
+
+
+def edge_centre(valence_u: int, valence_v: int, regular: int) -> int:
+    """Which end of an edge is its ``O`` (``0``: the first, ``1``: the second) under the model (module docstring): the
+    extraordinary end, the one of larger valence if both are; ``0`` if both are regular (the rule is symmetric there)."""
+    if valence_u == valence_v or valence_v == regular:
+        return 0
+    return 1 if valence_u == regular or valence_v > valence_u else 0
 
 
 def mesh_rules(scheme: Scheme) -> MeshRules:
@@ -136,18 +166,11 @@ def mesh_rules(scheme: Scheme) -> MeshRules:
 
     check_scheme(scheme)
     face, edge = scheme.face_rule, scheme.edge_rule
-    for label, rule in (("face rule", face), ("edge rule", edge)):
-        weights = [rule.center] + [w for _, w in rule.a + rule.b]
-        if any(sp.sympify(w, strict=True).has(N) for w in weights):
-            raise InvalidSchemeError(
-                f"scheme {scheme.name!r}: its {label} depends on the valence n, so it is not a rule of the mesh "
-                "(an edge or face is in the 1-rings of vertices of different valences)"
-            )
     fa, fb = dict(face.a), dict(face.b)
     if set(fa) - {0, 1} or set(fb) - {0}:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the face rule reaches beyond the face (O, a_i, b_i, a_{{i+1}})")
     corners = [face.center, fa.get(0, 0), fb.get(0, 0), fa.get(1, 0)]
-    if any(sp.simplify(c - corners[0]) != 0 for c in corners[1:]):
+    if any(not identically_zero(c - corners[0]) for c in corners[1:]):
         raise InvalidSchemeError(
             f"scheme {scheme.name!r}: face rule weights {corners} on (O, a_i, b_i, a_{{i+1}}) differ, so the face "
             "point would depend on which corner is the centre; it is not a rule of the mesh"
@@ -157,19 +180,22 @@ def mesh_rules(scheme: Scheme) -> MeshRules:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the edge rule reaches beyond the two faces of the edge (O, a_i)")
     z = sp.Integer(0)
     # Seen from a_i (as the centre of its own 1-ring) the roles swap: O <-> a_i,
-    # a_{i+1} <-> b_i, a_{i-1} <-> b_{i-1}; the point is the same only if these weights agree.
+    # a_{i+1} <-> b_i, a_{i-1} <-> b_{i-1}; the point is the same only if these weights agree. The model asks it of the
+    # rule at the regular valence (edges between regular vertices); an edge at an extraordinary vertex reads it from there.
+    regular = {N: scheme.lattice.regular_valence}
     pairs = [(edge.center, ea.get(0, z)), (ea.get(-1, z), eb.get(0, z)), (ea.get(1, z), eb.get(-1, z))]
-    if any(sp.simplify(p - q) != 0 for p, q in pairs):
+    if any(not identically_zero((p - q).subs(regular)) for p, q in pairs):
         raise InvalidSchemeError(
             f"scheme {scheme.name!r}: the edge rule gives a different point when computed from the 1-ring of "
             "the other end of the edge; it is not a rule of the mesh"
         )
-    if sp.simplify(ea.get(-1, z) - ea.get(1, z)) != 0:
+    if not identically_zero(ea.get(-1, z) - ea.get(1, z)) or not identically_zero(eb.get(-1, z) - eb.get(0, z)):
         raise InvalidSchemeError(
             f"scheme {scheme.name!r}: the edge rule is not mirror symmetric (a_{{i-1}} and a_{{i+1}} weigh differently)"
         )
-    # With the mirror symmetry the four side corners (a_{i-1}, b_{i-1}, b_i, a_{i+1}) weigh the same.
-    return MeshRules(scheme, sp.sympify(face.center, strict=True), sp.sympify(edge.center, strict=True), sp.sympify(ea.get(1, z), strict=True))
+    # With the mirror symmetry the four side corners (a_{i-1}, b_{i-1}, b_i, a_{i+1}) weigh the same at the regular valence.
+    oriented = tuple(sp.sympify(w, strict=True) for w in (edge.center, ea.get(0, z), ea.get(1, z), eb.get(0, z)))
+    return MeshRules(scheme, sp.sympify(face.center, strict=True), *oriented[::2], oriented)
 
 
 @dataclass(frozen=True)
@@ -181,36 +207,40 @@ class TriangleMeshRules:
     edge_end: sp.Expr
     #: Weight of each of the two vertices opposite the edge.
     edge_side: sp.Expr
+    #: The edge rule read from its end ``O`` (expressions in ``n``): on ``O``, on the other end, on each opposite vertex.
+    oriented: tuple[sp.Expr, ...] = ()
 
     def vertex_weights(self, valence: int) -> tuple[sp.Expr, sp.Expr]:
         """``(center, each neighbour)`` of the vertex point at this valence (exact sympy values)."""
         v = self.scheme.vertex_rule
         return tuple(w.subs(N, valence) for w in (v.center, v.each_a))
 
+    edge_weights = MeshRules.edge_weights
+    depends_on_valence = MeshRules.depends_on_valence
+
 
 def triangle_mesh_rules(scheme: Scheme) -> TriangleMeshRules:
     """Read a triangle scheme's 1-ring rules as edge/vertex point rules of a whole mesh.
 
-    Raises :class:`~symdecomp.errors.InvalidSchemeError` when the edge rule depends on ``n``,
-    reaches beyond the two triangles of its edge, or weighs the two ends (or the two opposite
-    vertices) differently, so that the edge point would depend on which end is called ``O``.
+    Raises :class:`~symdecomp.errors.InvalidSchemeError` when the edge rule reaches beyond the two triangles of its
+    edge, or weighs the two ends (or the two opposite vertices) differently, so that the edge point would depend on
+    which end is called ``O``. An edge rule in ``n`` is read at each edge's :func:`edge_valence`.
     """
+
     if scheme.lattice.face_neighbours:
         raise InvalidSchemeError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, not triangle meshes (its 1-ring has face neighbours)")
     edge = scheme.edge_rule
     ea = dict(edge.a)
-    weights = [edge.center, *ea.values()]
-    if any(sp.sympify(w, strict=True).has(N) for w in weights):
-        raise InvalidSchemeError(f"scheme {scheme.name!r}: its edge rule depends on the valence n, so it is not a rule of the mesh")
     if set(ea) - {-1, 0, 1}:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the edge rule reaches beyond the two triangles of the edge (O, a_i)")
     z = sp.Integer(0)
-    if sp.simplify(edge.center - ea.get(0, z)) != 0 or sp.simplify(ea.get(-1, z) - ea.get(1, z)) != 0:
+    if not identically_zero((edge.center - ea.get(0, z)).subs(N, 6)) or not identically_zero(ea.get(-1, z) - ea.get(1, z)):
         raise InvalidSchemeError(
             f"scheme {scheme.name!r}: the edge rule weighs the two ends (or the two opposite vertices) differently, "
             "so it is not a rule of the mesh"
         )
-    return TriangleMeshRules(scheme, sp.sympify(edge.center, strict=True), sp.sympify(ea.get(1, z), strict=True))
+    oriented = tuple(sp.sympify(w, strict=True) for w in (edge.center, ea.get(0, z), ea.get(1, z)))
+    return TriangleMeshRules(scheme, oriented[0], oriented[2], oriented)
 
 
 # --------------------------------------------------------------------------------------------
@@ -238,11 +268,14 @@ def _combine(terms: Iterable[tuple[object, tuple]]) -> tuple:
     return tuple(sum((w * val[k] for w, val in terms[1:]), terms[0][0] * terms[0][1][k]) for k in range(len(terms[0][1])))
 
 
-def point_stencils(mesh: QuadMesh, rules: MeshRules, vertex_weights: Callable | None = None) -> tuple[dict, dict, dict]:
+def point_stencils(mesh: QuadMesh, rules: MeshRules, vertex_weights: Callable | None = None,
+                   edge_weights: Callable | None = None) -> tuple[dict, dict, dict]:
     """``(face, edge, vertex)`` stencils ``{key: ((weight, old vertex id), ...)}`` of the refined points
     (keys: face index, ``frozenset({u, v})`` of an edge with two faces, interior vertex id);
-    ``vertex_weights(valence)`` overrides the rules' vertex weights (the ring matrices' symbolic centre)."""
-    fc, ee, es = (_as_weight(w) for w in (rules.face_corner, rules.edge_end, rules.edge_side))
+    ``vertex_weights(valence)`` and ``edge_weights(valence)`` override the rules' vertex and edge weights (the ring
+    matrices' symbolic centre)."""
+    fc = _as_weight(rules.face_corner)
+    edge_at = _edge_weights_at(mesh, rules, edge_weights, 4)
     face = {fi: tuple((fc, x) for x in f) for fi, f in enumerate(mesh.faces)}
     edge = {}
     for (u, v), left in mesh._directed.items():
@@ -253,8 +286,10 @@ def point_stencils(mesh: QuadMesh, rules: MeshRules, vertex_weights: Callable | 
         fl, fr = mesh.faces[left], mesh.faces[right]
         kl, kr = fl.index(u), fr.index(v)
         # left face (u, v, x, y), right face (v, u, p, q): the ends and the four side corners.
-        sides = (fl[(kl + 2) % 4], fl[(kl + 3) % 4], fr[(kr + 2) % 4], fr[(kr + 3) % 4])
-        edge[key] = ((ee, u), (ee, v)) + tuple((es, x) for x in sides)
+        # x, q next to v and y, p next to u: left face (u, v, x, y), right face (v, u, p, q)
+        wu, wv, su, sv = edge_at(u, v)
+        near_v, near_u = (fl[(kl + 2) % 4], fr[(kr + 3) % 4]), (fl[(kl + 3) % 4], fr[(kr + 2) % 4])
+        edge[key] = ((wu, u), (wv, v)) + tuple((sv, x) for x in near_v) + tuple((su, x) for x in near_u)
     vertex, cache = {}, {}
     for v in (v for v in mesh.vertices() if mesh.is_interior(v)):
         _, a, b = mesh.one_ring(v)
@@ -263,6 +298,38 @@ def point_stencils(mesh: QuadMesh, rules: MeshRules, vertex_weights: Callable | 
         wc, wa, wb = cache[len(a)]
         vertex[v] = ((wc, v),) + tuple((wa, x) for x in a) + tuple((wb, x) for x in b)
     return face, edge, vertex
+
+
+def _edge_weights_at(mesh, rules, override: Callable | None, regular: int) -> Callable:
+    """``(u, v) -> (on u, on v, each side next to u, each side next to v)`` (triangles: ``(on u, on v, each side)``):
+    the edge rule read from the edge's end ``O`` at its valence (:func:`edge_centre`), one reading per valence."""
+    cache: dict[int, tuple] = {}
+
+    def at(valence: int) -> tuple:
+        if valence not in cache:
+            cache[valence] = tuple(_as_weight(w) for w in (override or rules.edge_weights)(valence))
+        return cache[valence]
+
+    if override is None and not rules.depends_on_valence:
+        fixed = at(regular)
+        return lambda u, v: fixed
+    valence: dict[int, int] = {}
+
+    def of(x: int) -> int:
+        if x not in valence:
+            valence[x] = len(mesh.one_ring(x)[1]) if mesh.is_interior(x) else regular
+        return valence[x]
+
+    def oriented(u: int, v: int) -> tuple:
+        mu, mv = of(u), of(v)
+        w = at(mu)
+        if mu == mv != regular and (w[0] != w[1] or w[2] != w[-1]):
+            raise InvalidSchemeError(f"scheme {rules.scheme.name!r}: an edge joins two vertices of valence {mu}, and the "
+                                     f"edge rule at n = {mu} weighs its two ends differently: the model reads it from neither")
+        w = at(mv if edge_centre(mu, mv, regular) else mu)
+        return w if not edge_centre(mu, mv, regular) else (w[1], w[0], *w[2:][::-1])
+
+    return oriented
 
 
 def refinement_matrix(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules, columns: Sequence[int], rows: Sequence) -> list[dict]:
@@ -302,14 +369,15 @@ def _child_faces(mesh: QuadMesh, vertex_point: dict, edge_point: dict, face_poin
     return new_faces
 
 
-def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules, *, vertex_weights: Callable | None = None) -> Refinement:
+def refine(mesh: QuadMesh, scheme_or_rules: Scheme | MeshRules, *, vertex_weights: Callable | None = None,
+           edge_weights: Callable | None = None) -> Refinement:
     """One exact refinement step of ``mesh`` by the scheme's mesh rules (:func:`mesh_rules`).
 
     Points whose rule needs something outside the mesh (boundary vertices and edges) are not
     computed, and new faces with such a corner are dropped. ``vertex_weights``: :func:`point_stencils`.
     """
     rules = scheme_or_rules if isinstance(scheme_or_rules, MeshRules) else mesh_rules(scheme_or_rules)
-    face, edge, vertex = point_stencils(mesh, rules, vertex_weights)
+    face, edge, vertex = point_stencils(mesh, rules, vertex_weights, edge_weights)
     vals = mesh.values
     new_values: dict[int, tuple] = {}
     counter = iter(range(10**12))
@@ -371,7 +439,8 @@ class TriangleRefinement:
     edge_point: Mapping[frozenset, int]
 
 
-def refine_triangles(mesh: TriangleMesh, scheme_or_rules, *, vertex_weights: Callable | None = None) -> TriangleRefinement:
+def refine_triangles(mesh: TriangleMesh, scheme_or_rules, *, vertex_weights: Callable | None = None,
+                     edge_weights: Callable | None = None) -> TriangleRefinement:
     """One exact refinement step of ``mesh`` by the scheme's mesh rules (1-to-4 split).
 
     ``vertex_weights(valence)`` overrides the rules' vertex weights (``(center, each
@@ -379,7 +448,7 @@ def refine_triangles(mesh: TriangleMesh, scheme_or_rules, *, vertex_weights: Cal
     """
     rules = scheme_or_rules if isinstance(scheme_or_rules, TriangleMeshRules) else triangle_mesh_rules(scheme_or_rules)
     weights_at = vertex_weights or rules.vertex_weights
-    ee, es = _as_weight(rules.edge_end), _as_weight(rules.edge_side)
+    edge_at = _edge_weights_at(mesh, rules, edge_weights, 6)
     vals = mesh.values
     new_values: dict[int, tuple] = {}
     edge_point, vertex_point = {}, {}
@@ -391,7 +460,8 @@ def refine_triangles(mesh: TriangleMesh, scheme_or_rules, *, vertex_weights: Cal
         x = next(c for c in mesh.faces[left] if c not in key)
         y = next(c for c in mesh.faces[right] if c not in key)
         edge_point[key] = len(new_values)
-        new_values[len(new_values)] = _combine([(ee, vals[u]), (ee, vals[v]), (es, vals[x]), (es, vals[y])])
+        wu, wv, es = edge_at(u, v)
+        new_values[len(new_values)] = _combine([(wu, vals[u]), (wv, vals[v]), (es, vals[x]), (es, vals[y])])
     cache: dict[int, tuple] = {}
     for v in mesh.vertices():
         if not mesh.is_interior(v):

@@ -40,12 +40,16 @@ from symdecomp.schemes.scheme import Scheme, check_scheme, subdivision_entries
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
 
-__all__ = ["CENTRE_WEIGHTS", "MAX_RINGS", "SparseRow", "RingMatrix", "check_rings", "ring_subdivision_matrix"]
+__all__ = ["CENTRE_WEIGHTS", "EDGE_WEIGHTS", "MAX_RINGS", "SparseRow", "RingMatrix", "check_rings", "ring_subdivision_matrix"]
 
 #: The deepest neighbourhood supported.
 MAX_RINGS = 3
 #: Symbols for the centre's vertex-rule weights ``(on O, each edge neighbour, each face neighbour)``.
 CENTRE_WEIGHTS = (sp.Symbol("w_O"), sp.Symbol("w_a"), sp.Symbol("w_b"))
+#: Symbols for the edge rule's weights at the centre's valence (:attr:`~symdecomp.schemes.refinement.MeshRules.oriented`:
+#: on O, on a_i, on each side corner next to O, next to a_i; triangles: the first three), kept symbolic with
+#: the centre's when the edge rule depends on ``n`` (the edges at the centre read it at ``n``; the model).
+EDGE_WEIGHTS = (sp.Symbol("e_O"), sp.Symbol("e_a"), sp.Symbol("e_near"), sp.Symbol("e_far"))
 
 
 class SparseRow:
@@ -185,20 +189,34 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
                 "(its 1-ring, --rings 1, is analysed from the stencils)"
             )
         row0 = weights_at(n)
-        rows = _stencil_rows(scheme, n, labels, row0)
+        rows = _stencil_rows(scheme, n, labels, row0, symbolic=symbolic_centre)
         weights = {s: w for s, w in used.items() if any(sp.sympify(x, strict=True).has(s) for x in rows[0].values())}
         return RingMatrix(scheme.name, lat, n, rings, labels, tuple(rows), weights)
     unit = lambda s, u, v: (SparseRow({_index(labels, n, s, u, v): Fraction(1)}),)  # noqa: E731
     mesh = lat.ring_mesh(n, rings, unit)
-    step = lat.refine(mesh, lat.mesh_rules(scheme), vertex_weights=weights_at)
+    rules = lat.mesh_rules(scheme)
+    edges = _symbolic_edges(rules, n, used) if symbolic_centre and rules.depends_on_valence else None
+    step = lat.refine(mesh, rules, vertex_weights=weights_at, edge_weights=edges)
     face_of = {frozenset(f): fi for fi, f in enumerate(mesh.faces)}
     rows = []
     for s, u, v in labels:
         point = _new_point(step, lat, labels, n, s, u, v, face_of)
         row = step.mesh.values[point][0].entries
         rows.append({c: x for c, x in sorted(row.items()) if x != 0})
-    weights = {s: w for s, w in used.items() if any(sp.sympify(x, strict=True).has(s) for x in rows[0].values())}
+    weights = {s: w for s, w in used.items()
+               if any(sp.sympify(x, strict=True).has(s) for row in (rows if s in EDGE_WEIGHTS else rows[:1]) for x in row.values())}
     return RingMatrix(scheme.name, lat, n, rings, labels, tuple(rows), weights)
+
+
+def _symbolic_edges(rules, n: int, used: dict):
+    """``valence -> edge weights``: :data:`EDGE_WEIGHTS` at the centre's valence ``n`` (recorded in ``used``), the rule's
+    numbers at every other valence."""
+    def at(valence: int):
+        if valence == n:
+            used.update(zip(EDGE_WEIGHTS, rules.oriented))
+            return EDGE_WEIGHTS[:len(rules.oriented)]
+        return rules.edge_weights(valence)
+    return at
 
 
 def _mesh_rules_error(scheme: Scheme) -> str | None:
@@ -210,18 +228,23 @@ def _mesh_rules_error(scheme: Scheme) -> str | None:
     return None
 
 
-def _stencil_rows(scheme: Scheme, n: int, labels, centre_weights) -> list[dict]:
+def _stencil_rows(scheme: Scheme, n: int, labels, centre_weights, *, symbolic: bool = False) -> list[dict]:
     """The 1-ring matrix assembled from the stencils (for rules that are not rules of a mesh).
 
     Row 0 takes ``centre_weights`` (``(w_O, w_a[, w_b])``: symbols or exact values); the other
-    rows must be rational at this valence.
+    rows must be rational at this valence, or (``symbolic``, to read the blocks for every ``n``) are kept as the
+    stencils' expressions in ``n``.
     """
     index = {lab: i for i, lab in enumerate(labels)}
     # 1-ring order (O, a_0..a_{n-1}, b_0..b_{n-1}) -> label index
     where = [index[lab] for lab in scheme.lattice.one_ring_labels(n)]
     rows: list[dict] = [dict() for _ in labels]
-    for (r, c), x in subdivision_entries(scheme, n, lambda w: sp.sympify(w, strict=True).subs(N, n)).items():
+    at = (lambda w: sp.sympify(w, strict=True)) if symbolic else (lambda w: sp.sympify(w, strict=True).subs(N, n))
+    for (r, c), x in subdivision_entries(scheme, n, at).items():
         if r == 0:
+            continue
+        if symbolic and x.has(N):
+            rows[where[r]][where[c]] = x
             continue
         if not x.is_Rational:
             raise InvalidSchemeError(f"scheme {scheme.name!r}: a weight of its edge or face rule at n = {n} is not rational ({x})")

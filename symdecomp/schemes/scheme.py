@@ -34,7 +34,7 @@ import flint
 import sympy as sp
 
 from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError
-from symdecomp.expressions import MAX_OFFSET, check_budget, exact_value
+from symdecomp.expressions import MAX_OFFSET, check_budget, exact_value, identically_zero
 from symdecomp.schemes.lattice import LATTICES, QUAD, Lattice, lattice
 from symdecomp.schemes.sharp import SHARP_SYMBOLS, SharpRules, standard_sharp_rules
 from symdecomp.symbols import Parameter
@@ -104,10 +104,9 @@ class Stencil:
     def from_weights(cls, center, a: Mapping[int, object], b: Mapping[int, object], *, name: str = "rule") -> Stencil:
         """Build a stencil and check that it is affine."""
         stencil = cls(_sympify_weight(center, f"{name}: center"), _weights(a, f"{name}: a"), _weights(b, f"{name}: b"))
-        total = sp.simplify(stencil.weight_sum() - 1)
-        if total != 0:
+        if not identically_zero(stencil.weight_sum() - 1):
             raise NotAffineError(
-                f"{name} is not affine: its weights sum to {sp.simplify(stencil.weight_sum())}, not 1"
+                f"{name} is not affine: its weights sum to {sp.cancel(stencil.weight_sum())}, not 1"
             )
         return stencil
 
@@ -141,10 +140,9 @@ class VertexRule:
             _sympify_weight(each_a, f"{name}: each_a"),
             _sympify_weight(each_b, f"{name}: each_b"),
         )
-        total = sp.simplify(rule.weight_sum() - 1)
-        if total != 0:
+        if not identically_zero(rule.weight_sum() - 1):
             raise NotAffineError(
-                f"{name} is not affine: center + n*each_a + n*each_b = {sp.simplify(rule.weight_sum())}, not 1"
+                f"{name} is not affine: center + n*each_a + n*each_b = {sp.cancel(rule.weight_sum())}, not 1"
             )
         return rule
 
@@ -174,7 +172,11 @@ class Scheme:
     ``n = 4`` or ``n = 6``. So the regular rules of the scheme are its rules at the regular valence;
     a scheme tuned at extraordinary vertices only keeps the standard weights at the regular valence
     (for instance a vertex weight that is a function of ``n`` equal to the standard one at ``n = 4``).
-    The rules must be defined at the regular valence (checked here). 1-ring commands read the rules at
+    The rules must be defined at the regular valence (checked here). **An edge rule in n** is read from the
+    edge's extraordinary end ``O`` at its valence (of two, the larger valence), and at the regular valence
+    (where it must give one point from either end) between regular vertices: the ``n`` edges at ``O`` use it at
+    ``n``, as the 1-ring stencils say, every other edge the regular rule; every command reads it so
+    (:mod:`symdecomp.schemes.refinement`). 1-ring commands read the rules at
     ``O``; K-ring matrices, evaluation and the C1 test read all of them; the C1 test and the evaluation
     know the regular patches of Catmull-Clark and Loop only, so they apply when the rules at the regular
     valence are those (they say so in one line otherwise).

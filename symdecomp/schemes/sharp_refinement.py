@@ -43,7 +43,7 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidMeshError
+from symdecomp.errors import InvalidMeshError, InvalidSchemeError
 from symdecomp.schemes.mesh import QuadMesh, TriangleMesh
 from symdecomp.schemes.refinement import _as_weight
 from symdecomp.schemes.sharp import (
@@ -194,6 +194,9 @@ class _Rules:
             from symdecomp.schemes.refinement import triangle_mesh_rules
 
             self.mesh_rules = triangle_mesh_rules(scheme)
+        if self.mesh_rules.depends_on_valence:  # a sharp vertex's sectors have no valence to read the rule at
+            raise InvalidSchemeError(f"scheme {scheme.name!r}: its edge rule depends on the valence n, and a mesh with "
+                                     "sharp features reads it at no valence; give an edge rule without n")
         self.edge_end = _as_weight(self.mesh_rules.edge_end)
         self.edge_side = _as_weight(self.mesh_rules.edge_side)
         self.crease = tuple(_as_weight(w) for w in (self.sharp.crease_centre, self.sharp.crease_end, self.sharp.crease_edge))

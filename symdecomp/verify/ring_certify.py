@@ -295,6 +295,7 @@ def _exact(x, fixed: dict):
 def _expected_row(blocks: RingBlocks, n: int, K: int, i: int, fixed: dict, cache: dict) -> dict:
     """Row ``i`` (block order) of the bordered CB-matrix: ``{column: entry}``, centre weights as given."""
     if "centre" not in cache:
+        fixed = {**fixed, N: sp.Integer(n)}  # an edge rule in n: the blocks at this valence
         cache["centre"] = _exact(blocks.centre, fixed)
         cache["row"] = [_exact(w, fixed) for w in blocks.centre_row]
         cache["column"] = [_exact(c, fixed) for c in blocks.centre_column]

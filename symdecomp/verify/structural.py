@@ -75,9 +75,11 @@ def structural_obstacle(scheme: Scheme) -> str | None:
     if scheme.parameters:
         return f"the scheme has free parameters ({', '.join(map(str, scheme.parameters))})"
     try:
-        ring_blocks(scheme, 1)
+        blocks = ring_blocks(scheme, 1)
     except SymdecompError as exc:
         return str(exc)
+    if blocks.frequency_matrix().has(N):  # the model reads an edge rule in n at the centre's valence
+        return "the edge rule depends on the valence n, so its circulant blocks change with n (the certificate reads them once)"
     return None
 
 

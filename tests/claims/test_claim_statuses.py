@@ -24,7 +24,7 @@ EXPECTED = {
     "Proposition 2.1": P,
     # Section 3
     "Section 3: symmetry": P,  # window of sectors: every n
-    "Section 3: 9 and 25 points": P,  # exact at n = 4, the only case
+    "Section 3: 9 and 25 points": V,  # exact at n = 4, the only case (scope: single case)
     "Section 3: boundary influence": P,  # window of sectors: every n
     "Section 3: Catmull-Clark support": P,  # window of sectors: every n
     # Section 4
@@ -49,7 +49,7 @@ EXPECTED = {
     "Proposition 5.1": P,  # certified n = 3..1000, exact tail bound from n = 4
     "Remark 5.1": R,  # j = n +- 1 shrink at the tangent-plane rate
     "Eq. 39": C,  # B^j = r A^j, not A^j = r B^j
-    "Eq. 39 (n = 4)": P,  # a statement about n = 4 alone, exact there
+    "Eq. 39 (n = 4)": V,  # a statement about n = 4 alone, exact there (scope: single case)
     "Eq. 39 (n → ∞)": P,
     "C1 (Reif's test)": V,
     # Section 5.2
@@ -59,7 +59,7 @@ EXPECTED = {
     "Eq. 42": P,
     "Eq. 43": C,  # alpha, beta are per-neighbour weights
     "Eq. 44": P,
-    "Eq. 45": P,  # a statement about n = 4 alone, exact there
+    "Eq. 45": V,  # a statement about n = 4 alone, exact there (scope: single case)
     "Remark 5.2": C,  # the component j = n feeds (0, 1, -1)
     "Section 5.2: Catmull-Clark example": P,
     # Section 5.3
@@ -87,8 +87,8 @@ EXPECTED = {
     "Larger neighbourhoods (after Eq. 51)": C,  # the 2-ring adds 1/8, 1/16, 1/32, 1/64, not null columns
     "Spectrum (Eq. 34, Eq. 43)": P,  # block factorization for symbolic n (certified n = 3..48 too)
     # beyond the paper: curvature and shape (issue 21)
-    "Curvature regime: Catmull-Clark": V,  # n = 3..64: flat at 3, bounded at 4, unbounded (hyperbolic) from 5
-    "Curvature regime: Loop": V,  # n = 3..64: unbounded at 3 (outer 1/8), bounded 4..6, unbounded (hyperbolic) from 7
+    "Curvature regime: Catmull-Clark": V,  # n = 3..64; unbounded for every n >= 5 proved, its hyperbolic cause only to 64
+    "Curvature regime: Loop": P,  # n = 3..64 certified; unbounded (hyperbolic) for every n >= 7 proved (issue 32)
     "Loop's vertex weight": P,  # the elliptic eigenvalue is lambda_1^2 identically in n
     "Curvature at the regular valence": V,  # mu = 1/4 = lambda_1^2 three times at n = 4
     "Shape: the valence decides": V,  # the hyperbolic part dominates from n = 5 (Catmull-Clark), 7 (Loop); n = 3..32

@@ -9,8 +9,8 @@ the check directly (the registry's cache holds the printed statement's results).
 The schemes are scheme files (FILES, or Python-built schemes that write and read back as files), except the
 complex and the non-affine ones, which the parser refuses. Every claim is either moved to another verdict by a
 file, or listed with the reason no file moves it: SCHEME_FREE (the check runs without a scheme) and NO_FILE_FLIP
-(each reason backed by the statuses of very different files). WRONG_TODAY holds the verdicts that are wrong
-today, asserted with the correct status as strict xfails. C1_TABLE flips Reif's test from c1 to not-c1 with files
+(each reason backed by the statuses of very different files). ONCE_WRONG holds the verdicts that were wrong
+(issue 32), asserted with their correct status. C1_TABLE flips Reif's test from c1 to not-c1 with files
 of the Catmull-Clark and Loop families.
 """
 
@@ -92,6 +92,8 @@ FILES = {
     "loop beta zero at EV": loop_file("loop beta zero at EV", beta="(n - 5)/16"),
     "loop opposite at EV": loop_file("loop opposite at EV", beta="(1 + cos(2*pi/n)/4)/n - (n - 5)/8"),
     "loop beta zero": loop_file("loop beta zero", beta="0"),
+    # vertex weights -1/n, 1/n: the Eq. 43 eigenvalues besides 1 are 3/8 +- i sqrt(3)/8 at every n (no real elliptic one)
+    "complex elliptic": quad_file("complex elliptic", vertex='[vertex]\na = "-1/n"\nb = "1/n"\n'),
     # Warren's vertex weights 3/16 at n = 3, 3/(8n) at n = 4, 5, 6 (Loop's 1/16 at 6): the elliptic eigenvalue 1/4 exceeds
     # lambda_1^2 at n = 4, 5
     "loop warren file": loop_file("loop warren file", beta="3/(8*n) + (4 - n)*(5 - n)*(6 - n)/96"),
@@ -184,7 +186,7 @@ TABLE = [
     # ... a mesh scheme keeps the proofs for every n; one whose limit mask turns negative past n = 5000 keeps only the range
     ("Section 3: symmetry", "tuned", P),
     ("Section 3: symmetry", "late crossing", V),
-    ("Section 3: 9 and 25 points", "tuned", P),
+    ("Section 3: 9 and 25 points", "tuned", V),  # a statement about n = 4 alone: verified, single case
     ("Section 3: boundary influence", "tuned", P),
     ("Section 3: boundary influence", "late crossing", V),
     ("Section 3: Catmull-Clark support", "tuned", P),
@@ -230,7 +232,7 @@ TABLE = [
     ("Eq. 39", "moved", R),
     ("Eq. 39", printed("s5_1_tangent", "PRINTED_RATIO", (CJ / 4 * sp.sqrt(1 + CJ**2 / 4) + CJ**2 / 8) / ((1 + OMEGA) / 4)), P),
     ("Eq. 39 (n = 4)", "moved", R),
-    ("Eq. 39 (n = 4)", "tuned", P),
+    ("Eq. 39 (n = 4)", "tuned", V),
     ("Eq. 39 (n → ∞)", "moved", R),
     ("C1 (Reif's test)", "O fixed at EV", R),
     ("C1 (Reif's test)", "O fixed", NA),  # its vertex rule at 4 is every regular vertex's: the patches are not bicubic
@@ -247,6 +249,7 @@ TABLE = [
     ("Eq. 44", "moved", P),
     ("Eq. 45", "moved", R),
     ("Remark 5.2", "moved", P),
+    ("Remark 5.2", "complex elliptic", U),  # the Eq. 43 eigenvalues besides 1: a complex pair at every n
     ("Section 5.2: Catmull-Clark example", "moved", R),
     ("Section 5.2: Catmull-Clark example", "asymmetric", NA),
     # Section 5.3
@@ -299,7 +302,7 @@ TABLE = [
     ("Curvature regime: Catmull-Clark", printed("b1_curvature", "CATMULL_CLARK", ((3, 4, CurvatureRegime.BOUNDED, None),
                                                                               (5, None, CurvatureRegime.UNBOUNDED, None))), R),
     ("Curvature regime: Loop", "loop warren file", R),  # unbounded at n = 4 by the elliptic eigenvalue 1/4
-    ("Curvature regime: Loop", "loop file", V),
+    ("Curvature regime: Loop", "loop file", P),  # Loop as a file: the same proof for every n
     ("Loop's vertex weight", "loop warren file", R),  # exact: 1/4 - 9/64 at n = 4
     ("Curvature at the regular valence", printed("b1_curvature", "REGULAR_MULTIPLICITY", 2), R),
     ("Shape: the valence decides", "elliptic above hyperbolic at 5", R),
@@ -410,7 +413,8 @@ NO_FILE_FLIP = {
     "Sector: the blocks are the spectrum": "a theorem (the sine identity) for every mirror-symmetric file, checked "
                                            "against the matrix by refinement; files without the mirror are 'not applicable'",
     "1-ring suffices (after Eq. 51)": "the mesh files tried (bilinear, midpoint edges, Loop) keep the left eigenvectors of "
-                                      "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable'",
+                                      "1 and lambda_1 on the 1-ring; non-mesh files are 'not applicable', and an edge rule "
+                                      "in n only 'verified' at n = 4 (the proof for every n reads blocks free of n)",
 }
 
 #: Very different scheme files, and what each claim of NO_FILE_FLIP is for them (Catmull-Clark's status unless given).
@@ -420,7 +424,8 @@ PANEL_EXCEPTIONS = {
     ("Section 3: 9 and 25 points", "asymmetric"): NA,  # not mesh rules
     ("Section 3: 9 and 25 points", "frequency two"): NA,
     ("1-ring suffices (after Eq. 51)", "asymmetric"): NA,
-    ("1-ring suffices (after Eq. 51)", "frequency two"): NA,
+    # an edge rule in n, read at O's valence at the edges at O (the model, issue 32): the left eigenvectors at n = 4 only
+    ("1-ring suffices (after Eq. 51)", "frequency two"): V,
     ("Tangent plane unaffected (after Eq. 51)", "asymmetric"): NA,  # the closed forms need mirror symmetry
     ("Section 5.3: construction", "asymmetric"): NA,
     # Reif's 2-ring matrix needs Catmull-Clark's or Loop's rules at the regular valence; these files have others
@@ -431,15 +436,15 @@ PANEL_EXCEPTIONS = {
     ("Sector: the blocks are the spectrum", "asymmetric"): NA,
     ("Sector: the blocks are the spectrum", "frequency two"): NA,
 }
-#: Rows of the panel whose status today is wrong (WRONG_TODAY): left out here, asserted there.
-PANEL_WRONG_TODAY = {("Eq. 51", "bilinear file"), ("Section 5.3: construction", "frequency two"),
-                     ("Tangent plane unaffected (after Eq. 51)", "frequency two")}
+#: Rows of the panel asserted in ONCE_WRONG (they were wrong verdicts).
+PANEL_ONCE_WRONG = {("Eq. 51", "bilinear file"), ("Section 5.3: construction", "frequency two"),
+                    ("Tangent plane unaffected (after Eq. 51)", "frequency two")}
 #: Further files for some claims.
 PANEL_MORE = {
     ("S' (after Eq. 51)", "free edge and face"): P,
-    ("Section 3: 9 and 25 points", "midpoint edges"): P,
-    ("Section 3: 9 and 25 points", "tuned"): P,
-    ("Section 3: 9 and 25 points", "singular M"): P,
+    ("Section 3: 9 and 25 points", "midpoint edges"): V,
+    ("Section 3: 9 and 25 points", "tuned"): V,
+    ("Section 3: 9 and 25 points", "singular M"): V,
     ("1-ring suffices (after Eq. 51)", "midpoint edges"): P,
     ("Tuning weights (after Eq. 51)", "loop file"): NA,
     ("Tuning and multiplicities (after Eq. 51)", "loop file"): NA,
@@ -481,7 +486,7 @@ def test_scheme_free_claims_have_one_status_for_very_different_files(label):
 
 def _panel_rows():
     rows = [(label, name, PANEL_EXCEPTIONS.get((label, name), EXPECTED[label])) for label in sorted(NO_FILE_FLIP)
-            for name in FILE_PANEL if (label, name) not in PANEL_WRONG_TODAY]
+            for name in FILE_PANEL if (label, name) not in PANEL_ONCE_WRONG]
     return rows + [(label, name, status) for (label, name), status in PANEL_MORE.items()]
 
 
@@ -500,41 +505,25 @@ def test_the_parser_refuses_what_would_flip_propositions_4_2_and_4_3():
 
 
 # ---------------------------------------------------------------------------------------------------------------
-# Wrong verdicts today: the test asserts the correct status (strict xfail: it fails loudly once fixed).
+# Verdicts that were wrong (issue 32), now asserted as they should be: each row was a strict xfail.
 
-WRONG_TODAY = [
-    ("Eq. 51", "bilinear file", P,
-     "status error ('a step of the closed form failed'): M(omega) is triangular, so c_+ = c_- = 0 and the check divides "
-     "by c_+; the closed form still holds (rho_+ = c_0, rho_- = 0: rho_+^n + rho_-^n = c_0^n = prod_k q(x, omega^k))"),
-    ("Proposition 5.1", "frequency two", R,
-     "status not applicable (the check reads M_j's eigenvalues as closed forms in c alone; it was an error before) for "
-     "an n-dependent edge rule; at n = 5 the "
-     "frequency 2 eigenvalue 0.713 exceeds frequency 1's, so the claim is false"),
-    ("Section 5.3: smaller eigenvalues", "frequency two", R,
-     "status not applicable (closed forms in c alone; it was an error, comparing a non-real number) for an "
-     "n-dependent edge rule; at n = 5 the frequency 2 "
-     "eigenvalue is the largest, so the hyperbolic components are not smaller"),
-    ("Section 5.3: construction", "frequency two", P,
-     "status not applicable (closed forms in c alone; it was an error before) for an n-dependent edge rule; the "
-     "construction only uses the "
-     "frequency decomposition, which holds for every file"),
-    ("Tangent plane unaffected (after Eq. 51)", "frequency two", C,
-     "status not applicable (closed forms in c alone; it was an error before) for an n-dependent edge rule; vertex "
-     "weight -1 still lifts "
-     "an E_0 eigenvalue above lambda_1"),
-    ("1-ring suffices (after Eq. 51)", "singular M", P,
-     "status verified, valences (3, 5), but the left eigenvector of lambda_1 was computed at n = 4 only (scope wider "
-     "than the evidence); the proof fails only because the 3-ring resultant vanishes identically: M(omega) is singular "
-     "for every omega, and the shared root is 0 (the 3-ring's new eigenvalue), never lambda_1; the 2-ring resultant "
-     "has no root on the unit circle, so the proof goes through for every n"),
+ONCE_WRONG = [
+    # M(omega) triangular: c_+ = c_- = 0, rho_+ = c_0, rho_- = 0, and the closed form still holds (it was 'error')
+    ("Eq. 51", "bilinear file", P),
+    # an edge rule in n: at n = 5 the frequency-2 eigenvalue 0.713 exceeds frequency 1's (it was 'not applicable')
+    ("Proposition 5.1", "frequency two", R),
+    ("Section 5.3: smaller eigenvalues", "frequency two", R),
+    # the construction uses only the frequency decomposition, which holds for every file
+    ("Section 5.3: construction", "frequency two", P),
+    # vertex weight -1 still lifts an E_0 eigenvalue above lambda_1
+    ("Tangent plane unaffected (after Eq. 51)", "frequency two", C),
+    # M(omega) singular for every omega: the root 0 shared with the 3-ring's outer block is never lambda_1
+    ("1-ring suffices (after Eq. 51)", "singular M", P),
 ]
 
 
-@pytest.mark.parametrize("label, name, status", [
-    pytest.param(label, name, status, marks=pytest.mark.xfail(strict=True, reason=reason), id=f"{label} / {name}")
-    for label, name, status, reason in WRONG_TODAY
-])
-def test_the_correct_status_of_a_wrong_verdict(label, name, status):
+@pytest.mark.parametrize("label, name, status", ONCE_WRONG, ids=[f"{r[0]} / {r[1]}" for r in ONCE_WRONG])
+def test_the_correct_status_of_a_once_wrong_verdict(label, name, status):
     assert check_claim(label, scheme(name)).status is status
 
 
@@ -582,7 +571,7 @@ def test_a_file_flips_the_c1_verdict(name, valence, frequency, value, words):
 
 
 def test_the_singular_scheme_is_what_its_wrong_verdict_says():
-    """The facts behind WRONG_TODAY's '1-ring suffices / singular M': det M(omega) vanishes identically, and the
+    """The facts behind ONCE_WRONG's '1-ring suffices / singular M': det M(omega) vanishes identically, and the
     2-ring's outer eigenvalues (roots of (8x - 1)(64x - 1)(128x^2 - 28x + 1)) are never a root of det(xI - M(omega_n))."""
     from symdecomp.analysis.frequency import one_ring_matrices
     from symdecomp.symbols import omega

@@ -13,7 +13,6 @@ from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.cli import main
-from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.loop import loop, loop_beta, loop_warren, triangle_scheme
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
@@ -48,12 +47,11 @@ def test_loop_and_warren_weights():
     assert loop_warren().vertex_rule.each_a.subs(N, 3) == sp.Rational(3, 16)
     assert loop_warren().vertex_rule.each_a.subs(N, 10) == sp.Rational(3, 80)
     depends_on_n = triangle_scheme("bad", sp.Rational(1, 8), edge_end=sp.Rational(3, 8) + 1 / N, edge_side=sp.Rational(1, 8) - 1 / N)
-    # its 1-ring matrix is assembled from the stencils; the 2-ring needs rules of the mesh, the block form rules free of n
+    # the model: the edges at the centre read the rule at its valence, the others at 6 (issue 32; it was refused)
     assert ring_subdivision_matrix(depends_on_n, 5, 1).exact_matrix() == subdivision_matrix(depends_on_n, 5)
-    with pytest.raises(InvalidSchemeError, match="depends on the valence"):
-        ring_subdivision_matrix(depends_on_n, 5, 2)
-    with pytest.raises(InvalidSchemeError, match="depends on the valence n, so its circulant blocks change with n"):
-        ring_blocks(depends_on_n, 1)
+    two = ring_subdivision_matrix(depends_on_n, 5, 2).exact_matrix()
+    assert two[:6, :6] == subdivision_matrix(depends_on_n, 5)
+    assert ring_blocks(depends_on_n, 1).frequency_matrix().has(N)
     lopsided = triangle_scheme("lopsided", sp.Rational(1, 8), edge_end=sp.Rational(1, 2), edge_side=0)
     assert ring_subdivision_matrix(lopsided, 5, 2).size == 16
 

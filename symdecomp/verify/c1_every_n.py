@@ -1,0 +1,250 @@
+"""C1 at an extraordinary vertex for every valence: the spectral conditions proved in n, the map per valence.
+
+Reif's sufficient test (:mod:`symdecomp.verify.c1`) has two parts. Its spectral conditions are statements about the
+per-frequency matrices ``M(omega)`` of the 1-ring, the frequency-0 block ``E_0`` and the outer ring's blocks (the
+regular rules), and they are decided here for every ``n >= 3`` at once, exactly:
+
+* with ``t = cos(2 pi j/n)`` the trace and determinant of ``M`` are polynomials in ``t`` (mirror-symmetric rules), and
+  ``lambda_1`` is the dominant eigenvalue at ``t_1 = cos(2 pi/n)``, which runs through ``[-1/2, 1)``;
+* S1, S2: the eigenvalues of ``M`` are real and distinct, the other root smaller in modulus, on ``[-1, 1]``
+  (discriminant and trace positive: Sturm sequences, :func:`~symdecomp.algebra.valence_signs.sign_on_interval`);
+* S3: the dominant eigenvalue increases with ``t`` on ``[-1, 1]`` (its derivative ``(tr' + disc'/(2 sqrt(disc)))/2``:
+  ``tr' > 0`` and ``disc' >= 0``, or ``4 disc tr'^2 - disc'^2 > 0``), so at every other frequency ``j`` (``t_j < t_1``)
+  the spectral radius is smaller than ``lambda_1``: ``lambda_1`` is a double eigenvalue (``j = 1, n - 1``) and
+  strictly larger than the rest of the tangent spectrum;
+* S4: ``lambda_1 < 1`` and ``lambda_1`` above the outer ring's eigenvalues (constants of the regular rules), as signs of
+  polynomials in ``t`` on ``[-1/2, 1]``;
+* S5: the eigenvalues of ``E_0`` besides 1 below ``lambda_1``: the exact tail bound of Proposition 5.1
+  (:func:`~symdecomp.analysis.dominance.tail_bound`, beyond its ``N0``) on quads; on triangles, the elliptic eigenvalue
+  equal to ``lambda_1^2`` identically (Loop's weight), which is below ``lambda_1 < 1``.
+
+The other part, that the characteristic map is regular and injective, is decided per valence: Reif's test at each
+``n = 3..last`` (certified, :func:`~symdecomp.verify.c1.c1_test`). No bound on the characteristic map's control net
+that holds uniformly for large ``n`` is derived here (its convergence as ``n`` grows is not made quantitative), so
+beyond ``last`` that part is open: the result is ``verified`` for ``3..last`` with the spectral conditions proved for
+every ``n``, never ``proved`` for every ``n``. A valence where the test fails refutes C1 with that concrete ``n``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import sympy as sp
+
+from symdecomp.algebra.valence_signs import sign_on_interval
+from symdecomp.analysis.characteristic import outer_charpoly
+from symdecomp.analysis.frequency import one_ring_matrices
+from symdecomp.errors import InvalidInputError, NotApplicableError
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
+
+__all__ = ["EveryNStep", "EveryNResult", "spectral_every_n", "c1_every_n"]
+
+T = sp.Symbol("t", real=True)  # cos(2 pi j/n)
+HALF = sp.Rational(-1, 2)  # t_1 = cos(2 pi/n) at n = 3
+
+
+@dataclass(frozen=True)
+class EveryNStep:
+    """One step of the argument."""
+
+    #: What the step shows, in words (formulas as sympy's ``str``).
+    text: str
+    #: ``proved`` (for every n it covers), ``verified`` (each valence of a range), ``open`` or ``failed``.
+    status: str
+    #: The valences it covers: ``(first, None)`` for every ``n >= first``, ``(first, last)`` for a range.
+    valences: tuple[int, int | None]
+
+    def as_json(self) -> dict:
+        return {"text": self.text, "status": self.status, "valences": list(self.valences)}
+
+
+@dataclass(frozen=True)
+class EveryNResult:
+    """C1 for every valence: what is proved, verified, open, or the first valence where it fails."""
+
+    scheme: str
+    #: ``proved`` (every n), ``verified`` (3..last, spectral conditions for every n), ``refuted`` or ``undecided``.
+    status: str
+    #: One line: the conclusion.
+    summary: str
+    steps: tuple[EveryNStep, ...]
+    #: The valences Reif's test certified one by one.
+    certified: tuple[int, int]
+    #: The first valence where C1 fails (a concrete counterexample), or ``None``.
+    failure: int | None = None
+
+    def as_json(self) -> dict:
+        return {"scheme": self.scheme, "status": self.status, "summary": self.summary, "certified": list(self.certified),
+                "failure": self.failure, "steps": [s.as_json() for s in self.steps]}
+
+
+def _in_t(expr) -> sp.Expr:
+    """A Laurent polynomial in ``omega``, symmetric under ``omega -> 1/omega``, as a polynomial in ``t = cos(angle)``."""
+    expr = sp.expand(sp.sympify(expr, strict=True))
+    terms: dict[int, sp.Expr] = {}
+    for term in sp.Add.make_args(expr):
+        coeff, power = term.as_coeff_exponent(OMEGA)
+        if coeff.has(OMEGA) or not power.is_Integer:
+            raise NotApplicableError(f"{expr} is not a Laurent polynomial in omega")
+        terms[int(power)] = terms.get(int(power), 0) + coeff
+    if any(sp.expand(terms.get(-k, 0) - c) != 0 for k, c in terms.items()):
+        raise NotApplicableError("the rules are not mirror symmetric: M(omega) is not a function of cos(2 pi j/n)")
+    return sp.expand(terms.get(0, 0) + sum(2 * c * sp.chebyshevt(k, T) for k, c in terms.items() if k > 0))
+
+
+def _positive(expr, lo, hi) -> bool:
+    try:
+        return bool(sign_on_interval(sp.expand(expr), T, lo, hi))  # None (not a polynomial in t): not shown
+    except InvalidInputError:
+        return False
+
+
+def _tangent_steps(M: sp.Matrix, radius: sp.Expr) -> list[EveryNStep]:
+    """S1-S4 for a 1 x 1 or 2 x 2 ``M(t)``."""
+    if M.rows == 1:
+        lam = _in_t(M[0, 0])
+        checks = [
+            (f"the eigenvalue of M at t = cos(2 pi j/n) is {lam}, increasing in t (slope {sp.diff(lam, T)}) and positive on "
+             "[-1, 1]: lambda_1 (t = cos(2 pi/n)) is double (j = 1, n - 1) and larger than every other frequency's",
+             _positive(sp.diff(lam, T), -1, 1) and _positive(lam, -1, 1)),
+            (f"lambda_1 < 1 and lambda_1 > {radius} (the outer ring's eigenvalues): {1 - lam} > 0 and {lam - radius} > 0 "
+             "on [-1/2, 1]", _positive(1 - lam, HALF, 1) and _positive(lam - radius, HALF, 1)),
+        ]
+    else:
+        tr, det = _in_t(M.trace()), _in_t(M.det())
+        disc = sp.expand(tr**2 - 4 * det)
+        d_tr, d_disc = sp.diff(tr, T), sp.diff(disc, T)
+        increasing = _positive(d_tr, -1, 1) and (bool(sign_on_interval(d_disc, T, -1, 1, strict=False))
+                                                 or _positive(4 * disc * d_tr**2 - d_disc**2, -1, 1))
+        p = lambda x: sp.expand(x**2 - tr * x + det)  # noqa: E731 - det(xI - M(t))
+        checks = [
+            (f"tr M(t) = {tr} is positive on [-1, 1] and its discriminant {sp.factor(disc)} on (-1, 1] (0 at t = -1 at most: "
+             "the frequency n/2): real eigenvalues, distinct at every frequency but n/2, the other one smaller in modulus",
+             bool(sign_on_interval(disc, T, -1, 1, strict=False)) and _positive(disc, sp.Rational(-1, 2), 1)
+             and _positive(tr, -1, 1)),
+            ("the dominant eigenvalue (tr + sqrt(disc))/2 increases with t on [-1, 1] (tr' > 0, and disc' >= 0 or "
+             "4 disc tr'^2 > disc'^2): lambda_1 (t = cos(2 pi/n)) is double (j = 1, n - 1) and larger than every other "
+             "frequency's", increasing),
+            (f"lambda_1 < 1 (det(I - M) = {p(1)} > 0 and tr < 2) and lambda_1 > {radius}, the outer ring's largest eigenvalue "
+             f"(tr/2 > {radius}, or det({radius} I - M) < 0), on [-1/2, 1]",
+             _positive(p(1), HALF, 1) and _positive(2 - tr, HALF, 1)
+             and (_positive(tr - 2 * radius, HALF, 1) or _positive(-p(radius), HALF, 1))),
+        ]
+    return [EveryNStep(text, "proved" if ok else "failed", (3, None)) for text, ok in checks]
+
+
+def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNStep:
+    """S5: the eigenvalues of ``E_0`` besides 1 below ``lambda_1`` for every ``n`` (from where it is shown)."""
+    if M.rows == 1:
+        lam1 = M[0, 0].subs(OMEGA, sp.exp(2 * sp.pi * sp.I / N))
+        other = sp.expand(E0.trace() - 1)  # E_0 is 2 x 2 with the eigenvalue 1
+        defect = sp.simplify(sp.expand((other - lam1**2).rewrite(sp.cos)))
+        if defect == 0:
+            return EveryNStep("the eigenvalue of E_0 besides 1 equals lambda_1^2 for every n (the vertex weight), and "
+                              "0 < lambda_1 < 1: it is below lambda_1", "proved", (3, None))
+        return EveryNStep(f"the eigenvalue of E_0 besides 1 is not lambda_1^2 (difference {defect}); no argument for every n",
+                          "open", (3, None))
+    from symdecomp.analysis.dominance import tail_bound
+
+    tail = tail_bound(scheme)
+    if tail is None:
+        return EveryNStep("no exact tail bound for the eigenvalues of E_0 besides 1 (Proposition 5.1's argument does not "
+                          "apply)", "open", (3, None))
+    return EveryNStep(f"for n >= {tail.start} the eigenvalues of E_0 besides 1 are below lambda_1: cos(pi/n) >= 1 - 5/n^2 "
+                      f"and the signs of {len(tail.facts)} rational functions of n (Proposition 5.1's tail bound)",
+                      "proved", (tail.start, None))
+
+
+def spectral_every_n(scheme: Scheme) -> tuple[EveryNStep, ...]:
+    """The spectral conditions of Reif's test as statements for every ``n`` (module docstring)."""
+    check_scheme(scheme)
+    if scheme.parameters:
+        raise NotApplicableError(f"scheme {scheme.name!r} has free parameters; give them values first")
+    M, E0 = one_ring_matrices(scheme)
+    if M.has(N):
+        raise NotApplicableError(f"scheme {scheme.name!r}: its edge rule depends on n, so M is not a function of cos(2 pi j/n) "
+                                 "alone; the valences are tested one by one")
+    coeffs = outer_charpoly(scheme.lattice)
+    x = sp.Symbol("x")
+    radius = max((abs(r) for r in sp.Poly(list(coeffs), x).all_roots()), key=lambda r: float(r)) if coeffs else sp.Integer(0)
+    return tuple(_tangent_steps(sp.Matrix(M), radius)) + (_frequency_zero_step(scheme, sp.Matrix(M), sp.Matrix(E0)),)
+
+
+def _fails_from(scheme: Scheme, first: int, certify) -> EveryNStep | None:
+    """C1 fails at every ``n >= first`` (``first`` a certified failure), or ``None`` where that is not shown.
+
+    ``lambda_1(n)`` stays below its limit ``L`` (it increases with ``t = cos(2 pi/n) < 1``, step S3); a rational
+    ``L' > L`` and the frequency-0 quadratic ``q`` (the Eq. 43 block besides 1, rational in ``n``) with ``q(L') < 0`` or
+    ``q(-L') < 0`` for every ``n >= N'`` give an eigenvalue of modulus above ``L' > lambda_1(n)`` there (Sturm
+    sequences); the valences ``first..N' - 1`` are certified failures one by one."""
+    from symdecomp.algebra.algebraic_sign import rational_between
+    from symdecomp.algebra.valence_signs import positive_from
+
+    M, E0 = (sp.Matrix(m) for m in one_ring_matrices(scheme))
+    x = sp.Symbol("x")
+    if M.has(N):  # an edge rule in n: lambda_1 has no limit of this form
+        return None
+    try:
+        tr, det = _in_t(M.trace()).subs(T, 1), _in_t(M.det()).subs(T, 1)
+        limit = max(sp.Poly(x**2 - tr * x + det if M.rows == 2 else x - tr, x).all_roots(), key=lambda r: float(r))
+        q, rest = sp.div(sp.Poly(E0.charpoly(x).as_expr(), x), sp.Poly(x - 1, x))
+        bound = rational_between(limit, limit + sp.Rational(1, 10**4))
+    except (NotApplicableError, sp.PolynomialError, ArithmeticError, NotImplementedError):
+        return None
+    if not rest.is_zero or q.as_expr().free_symbols - {x, N}:
+        return None
+    for sign in (1, -1):
+        value = sp.cancel(-q.as_expr().subs(x, sign * bound))  # positive: q(sign L') < 0
+        numerator, denominator = (sp.Poly(e, N) for e in sp.fraction(value))
+        roots = [r for poly in (numerator, denominator) if poly.degree() > 0 for r in poly.real_roots()]
+        start = max(first, int(sp.ceiling(max(roots, default=first))) + 1)
+        if start > first + 10**4 or not positive_from(value, N, start):
+            continue
+        if all(certify(k).verdict == "not-c1" for k in range(first, start)):
+            return EveryNStep(f"C1 fails at every n >= {first}: certified at n = {first}..{start - 1}, and for n >= {start} "
+                              f"q({sign * bound}) < 0 (q = det(x I - E_0)/(x - 1), a rational function of n: Sturm sequences), "
+                              f"so E_0 has an eigenvalue beyond {sign * bound}, larger in modulus than lambda_1(n) < "
+                              f"lim lambda_1 = {limit}", "proved", (first, None))
+    return None
+
+
+def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None] | None = None, certify=None) -> EveryNResult:
+    """C1 for every valence as far as it is shown (module docstring): the spectral conditions for every ``n``, Reif's
+    test at ``n = 3..last`` (``certify(n)``: a :class:`~symdecomp.verify.c1.C1Result`; by default :func:`c1_test`)."""
+    from symdecomp.verify.c1 import c1_test
+
+    certify = certify or (lambda k: c1_test(scheme, k))
+    lo = max(3, scheme.minimum_valence())
+    try:
+        spectral = spectral_every_n(scheme)
+    except NotApplicableError as exc:
+        spectral = (EveryNStep(str(exc), "open", (lo, None)),)
+    for k in range(lo, last + 1):
+        r = certify(k)
+        if progress:
+            progress(k)
+        if r.verdict != "c1":
+            step = EveryNStep(f"n = {k}: {r.reason}", "failed" if r.verdict == "not-c1" else "open", (k, k))
+            if r.verdict != "not-c1":
+                return EveryNResult(scheme.name, "undecided", f"Reif's test is undecided at n = {k}", spectral + (step,),
+                                    (lo, k - 1))
+            tail = _fails_from(scheme, k, certify)
+            summary = (f"C1 holds exactly for n = {lo}..{k - 1} (certified) and fails for every n >= {k}: the exact threshold"
+                       if tail is not None and k > lo else f"C1 fails at n = {k}: {r.reason}")
+            return EveryNResult(scheme.name, "refuted", summary, spectral + (step,) + ((tail,) if tail else ()), (lo, k - 1), k)
+    tail = max((s.valences[0] for s in spectral if s.status == "proved"), default=lo)
+    spectral_ok = all(s.status == "proved" for s in spectral) and tail <= last + 1
+    steps = spectral + (
+        EveryNStep(f"Reif's test at each n = {lo}..{last}: the spectral conditions and a regular, injective characteristic "
+                   "map, certified (Arb balls; exact at frequency 0)", "verified", (lo, last)),
+        EveryNStep(f"n > {last}: regularity and injectivity of the characteristic map are open: no bound on its control net "
+                   "that holds for every large n is derived (its convergence as n grows is not made quantitative)",
+                   "open", (last + 1, None)),
+    )
+    what = ("the spectral conditions hold for every n >= 3 (proved); " if spectral_ok else
+            "the spectral conditions are not proved for every n; ")
+    return EveryNResult(scheme.name, "verified", f"C1 certified for n = {lo}..{last}; {what}the characteristic map is open "
+                        f"beyond n = {last}", steps, (lo, last))

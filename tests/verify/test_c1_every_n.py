@@ -1,0 +1,85 @@
+"""C1 for every valence (issue 32): what is proved in n, what is certified per valence, what is open, and thresholds."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from symdecomp.cli import main
+from symdecomp.schemes.files import load_scheme, scheme_from_text
+from symdecomp.schemes.loop import loop
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.verify.c1_every_n import T, _in_t, c1_every_n, spectral_every_n
+
+CORPUS = Path(__file__).parents[1] / "corpus"
+
+
+def test_the_frequency_blocks_in_t():
+    """Catmull-Clark's M(omega) has trace 5/8 + t/8 and discriminant (t + 1)(t + 9)/64 in t = cos(2 pi j/n)."""
+    from symdecomp.analysis.frequency import one_ring_matrices
+
+    M = sp.Matrix(one_ring_matrices(catmull_clark())[0])
+    tr, det = _in_t(M.trace()), _in_t(M.det())
+    assert sp.expand(tr - (sp.Rational(5, 8) + T / 8)) == 0
+    assert sp.factor(tr**2 - 4 * det) == (T + 1) * (T + 9) / 64
+    # at n = 4 (t = 0) the eigenvalues are 1/2 and 1/8: Catmull-Clark's lambda_1 = 1/2
+    assert sp.Poly(sp.Symbol("x") ** 2 - tr.subs(T, 0) * sp.Symbol("x") + det.subs(T, 0)).all_roots() == [sp.Rational(1, 8), sp.Rational(1, 2)]
+
+
+@pytest.mark.parametrize("scheme", [catmull_clark(), loop()], ids=["catmull-clark", "loop"])
+def test_the_spectral_conditions_are_proved_for_every_n(scheme):
+    steps = spectral_every_n(scheme)
+    assert all(s.status == "proved" for s in steps), [s.text for s in steps if s.status != "proved"]
+    assert max(s.valences[0] for s in steps) <= 4 and all(s.valences[1] is None for s in steps)
+
+
+@pytest.mark.parametrize("scheme", [catmull_clark(), loop()], ids=["catmull-clark", "loop"])
+def test_every_n_is_verified_not_proved(scheme):
+    r = c1_every_n(scheme, 12)
+    assert r.status == "verified" and r.certified == (3, 12) and r.failure is None
+    assert [s.status for s in r.steps][-2:] == ["verified", "open"]
+    assert r.steps[-1].valences == (13, None) and "open" in r.summary
+
+
+def test_a_spectral_condition_that_fails_is_not_called_proved():
+    """Vertex weights 1/100, 1/100 at every n, except the regular ones at 4 (the whole-mesh model): the E_0 eigenvalues
+    cross lambda_1, Proposition 5.1's tail bound does not hold, and C1 fails at a concrete valence."""
+    s = catmull_clark(sp.Rational(3, 32) + (sp.Symbol("n") - 4) ** 2 / 100, sp.Rational(1, 64))
+    r = c1_every_n(s, 12)
+    assert r.status == "refuted" and r.failure is not None and r.failure <= 12
+
+
+def test_a_late_crossing_file_gets_its_exact_threshold():
+    """tests/corpus/tuned-at-ev.toml: vertex weights 3/32 + (n - 4)/200, 1/64 - (n - 4)/400 (Catmull-Clark's at 4). C1 is
+    certified at n = 3..9; at n = 10 an eigenvalue of E_0 (-0.6382) exceeds lambda_1 (0.6263), and from n = 12 on
+    q(-L') < 0 with L' > lim lambda_1 = (3 + sqrt(5))/8: C1 fails for every n >= 10."""
+    r = c1_every_n(load_scheme(str(CORPUS / "tuned-at-ev.toml")), 64)
+    assert r.status == "refuted" and r.failure == 10 and r.certified == (3, 9)
+    assert "exact threshold" in r.summary and r.steps[-1].status == "proved" and r.steps[-1].valences == (10, None)
+    assert "sqrt(5)/8 + 3/8" in r.steps[-1].text
+
+
+def test_a_failure_at_one_valence_is_a_concrete_refutation():
+    """Edge weights (2n - 5)/8, (9 - 2n)/16 (Catmull-Clark's at 4): at n = 5 the frequency 2 dominates."""
+    text = ('name = "frequency two"\n[edge]\nO = "(2*n - 5)/8"\na = { "-1" = "(9 - 2*n)/16", "0" = "(2*n - 5)/8", '
+            '"1" = "(9 - 2*n)/16" }\nb = { "-1" = "(9 - 2*n)/16", "0" = "(9 - 2*n)/16" }\n[face]\nO = "1/4"\n'
+            'a = { "0" = "1/4", "1" = "1/4" }\nb = { "0" = "1/4" }\n[vertex]\na = "3/(2*n**2)"\nb = "1/(4*n**2)"\n')
+    r = c1_every_n(scheme_from_text(text), 12)
+    assert r.status == "refuted" and r.failure == 5 and r.steps[0].status == "open"  # M depends on n: no argument in t
+
+
+def test_the_command(capsys):
+    assert main(["c1", "--every-n", "--scheme", "loop", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["status"] == "verified" and data["certified"] == [3, 64]
+    assert [s["status"] for s in data["steps"]] == ["proved", "proved", "proved", "verified", "open"]
+    assert main(["c1", "--n", "3:"]) == 0
+    out = capsys.readouterr().out
+    assert out.splitlines()[0] == "catmull-clark: C1 for every valence" and out.splitlines()[-1].startswith("verified: ")
+    assert main(["c1", "--n", "5:"]) == 2
+    assert "an open range starts at 3" in capsys.readouterr().err
+    assert main(["c1", "--every-n", "--n", "5"]) == 2
+    assert "--every-n and --n cannot be used together" in capsys.readouterr().err

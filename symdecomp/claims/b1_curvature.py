@@ -20,6 +20,8 @@ different statement changes the status.
 
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
 from symdecomp.analysis.curvature_regime import CurvatureRegime
@@ -97,10 +99,17 @@ def check_regimes(scheme: Scheme, printed, valences: tuple[int, int] = VALENCES)
     agrees = Text("the certified regime agrees with the statement for ", Verbatim(scheme.name),
                   f" at every n = {lo}..{hi} (Arb balls; ties exact in Q(exp(2 pi i/2n)))")
     if proof is not None and proof[1]:  # the regime and its cause for every larger n: the statement is proved
-        return CheckResult(Status.PROVED, Text(agrees, "; for every n beyond: ", *(Verbatim(p.text) + "; " for p in proof[0])),
-                           steps=steps)
-    tail = Text("; ", Verbatim(proof[0][0].text), " (the cause beyond ", hi, " is not shown)") if proof else Text("")
+        return CheckResult(Status.PROVED, Text(agrees, "; for every n beyond: ", *(_typeset(p) + "; " for p in proof[0]),
+                                               "(the proofs' steps: symdecomp artifacts --every-n)"), steps=steps)
+    tail = Text("; ", _typeset(proof[0][0]), " (the cause beyond ", hi, " is not shown)") if proof else Text("")
     return CheckResult(Status.VERIFIED, Text(agrees, tail), steps=steps, valences=(lo, hi))
+
+
+def _typeset(step) -> Text:
+    """A proof step's statement (its text up to the first colon) with ``lambda_1`` and ``lambda_1^2`` as formulas."""
+    head = step.text.split(": ", 1)[0]
+    return Text(*({"lambda_1^2": lambda_1**2, "lambda_1": lambda_1}.get(part, part) for part in re.split(r"(lambda_1\^2|lambda_1)", head)
+                  if part))
 
 
 def _unbounded_for_every_n(scheme: Scheme, printed, hi: int):

@@ -70,6 +70,7 @@ __all__ = [
     "API_LIMITS",
     "check_limit",
     "MAX_MESH_VALENCE",
+    "MESH_FORMATS",
     "MAX_COORDINATE",
     "finite_double",
     "MAX_NUMBER_CHARS",
@@ -149,6 +150,9 @@ def check_limit(value, name: str, argument: str, *, minimum: int = 3, error: typ
 
 #: The largest valence of a mesh's vertex that is analysed (``inspect``, ``design --mesh``, the API's mesh analyses):
 #: the valence bound of ``design --n``; a fan of thousands of faces is read, and refused where it is analysed.
+#: The mesh file formats read and written (by extension): :mod:`symdecomp.schemes.meshformats`; named here so that
+#: the command line can offer them without importing the readers.
+MESH_FORMATS = ("obj", "off", "ply")
 MAX_MESH_VALENCE = 64
 #: The largest magnitude of a mesh coordinate (read from a file or given as an array): the largest finite double, so
 #: that every coordinate is a finite double (``1e309`` is refused; the analyses scale what would overflow).

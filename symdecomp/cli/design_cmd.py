@@ -41,7 +41,7 @@ import argparse
 from fractions import Fraction
 
 from symdecomp.cli.common import Once, flag, integer, print_json, scheme_by_name, valence
-from symdecomp.schemes.meshformats import FORMATS
+from symdecomp.validate import MESH_FORMATS as FORMATS
 
 __all__ = ["register", "run"]
 

@@ -33,13 +33,12 @@ old face}, "kinds": [{"kind", "name", "faces", "sectors", "closed", "corner", "s
 
 from __future__ import annotations
 
-import inspect as _inspect
 import sys
 
 from symdecomp.cli.common import Once, flag, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_directory, check_output_file
 from symdecomp.errors import InvalidInputError, InvalidMeshError
-from symdecomp.schemes.meshformats import FORMATS, read_mesh
+from symdecomp.validate import MESH_FORMATS as FORMATS
 
 __all__ = ["register", "run", "prepare_mesh", "COLOR_BY"]
 
@@ -76,12 +75,12 @@ def register(sub) -> None:
 
 
 def _read(args):
-    """The mesh (lenient unless ``--strict`` where the reader offers it) and its scheme."""
+    """The mesh, read leniently unless ``--strict``."""
     from symdecomp.cli.inspect_outputs import memory_note
+    from symdecomp.schemes.meshformats import read_mesh
 
     memory_note(args.mesh)
-    strict = {"strict": args.strict} if "strict" in _inspect.signature(read_mesh).parameters else {}
-    mesh = read_mesh(args.mesh, args.format, **strict)
+    mesh = read_mesh(args.mesh, args.format, strict=args.strict)
     if args.strict and not mesh.defects.is_empty():
         raise InvalidMeshError(f"{mesh.name}: --strict: the file has elements a scheme cannot take: {_first_defect(mesh.defects)}")
     return mesh

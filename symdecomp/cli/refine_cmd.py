@@ -18,7 +18,7 @@ import argparse
 from symdecomp.cli.common import Once, flag, integer, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import InvalidInputError
-from symdecomp.schemes.meshformats import FORMATS, read_mesh
+from symdecomp.validate import MESH_FORMATS as FORMATS
 
 __all__ = ["register", "run"]
 
@@ -59,6 +59,8 @@ def run(args) -> int:
     check_output_file(args.out, "--out")
     if not str(args.out).lower().endswith((".obj", ".ply")):
         raise InvalidInputError(f"--out {args.out}: give a .obj or .ply file name (the format follows the extension)")
+    from symdecomp.schemes.meshformats import read_mesh
+
     mesh = read_mesh(args.mesh, args.format)
     scheme = args.scheme
     if scheme is None:

@@ -74,12 +74,12 @@ from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_obj import ParsedMesh, _lines, index, number, read_obj
 from symdecomp.schemes.mesh_ply import read_ply
 from symdecomp.schemes.meshfile import PolygonMesh
-from symdecomp.validate import MAX_MESH_FILE_BYTES, MAX_NUMBER_CHARS, MESH_ADVICE, check_memory, mesh_memory
+from symdecomp.validate import MAX_MESH_FILE_BYTES, MAX_NUMBER_CHARS, MESH_ADVICE, MESH_FORMATS, check_memory, mesh_memory
 
 __all__ = ["FORMATS", "mesh_format", "read_mesh", "decode_mesh", "encode_mesh"]
 
 #: The file formats, by extension (lower case, without the dot).
-FORMATS = ("obj", "off", "ply")
+FORMATS = MESH_FORMATS
 #: Largest mesh file read (bytes); the same as :data:`~symdecomp.validate.MAX_MESH_FILE_BYTES`.
 MAX_FILE_BYTES = MAX_MESH_FILE_BYTES
 

@@ -157,6 +157,12 @@ INPUT_LIMITS = {
         "analyses scale what would overflow"),
     "mesh: characters of one number": (1100, "the exact decimal of every double fits; a 5000-digit number does not"),
     "mesh: bytes of a file": (512 * 2**20, "from a path or standard input, whatever size the file system reports"),
+    "mesh, OBJ: bytes of a line": (8 * 2**20, "a face of a million corners fits; a file of one endless line does not"),
+    "mesh, PLY: bytes of the header": (2**20, "'end_header' is looked for this far; a header is a few hundred bytes"),
+    "refine --steps (refine_mesh)": (8, "each step multiplies the faces by 4 (8 steps: 65536 faces for one)"),
+    "scheme file: bytes": (100_000, "a scheme file is a few lines of TOML"),
+    "design_ring(n)": (1000, "40-digit eigenvectors per frequency and exact checks in Q(zeta_4n); design --n stops at 64"),
+    "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "design --position, --elliptic, --hyperbolic: magnitude": (10**6, "the designed ring's exact coordinates stay "
         "small enough to print and write as doubles"),
     "design --angle: magnitude (radians)": (10**6, "read as a double, whose spacing there is still far below a degree"),

@@ -77,7 +77,6 @@ LIMITS = {
                                            "and ring squared); N = 1000 takes about a second on the 1-ring"),
     "design": (64, "exact checks in Q(zeta_4N) and 40-digit eigenvectors per frequency: N = 64 takes seconds"),
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
-    "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),
     "c1": (API_LIMITS["c1_test(n)"][0], "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 10000 takes about "
            "0.15 s, the range 3:10000 about 10 minutes of CPU (--executor dask spreads it over a cluster)"),

@@ -150,6 +150,8 @@ CASES.update({
     "--executor dask=ADDRESS: bytes of the greeting": lambda: _peer(struct.pack("Q", _over("--executor dask=ADDRESS: "
                                                                                            "bytes of the greeting", int))),
     "masks --boundary, ... (sharp_masks): unknowns of a mask's system": ["masks", "40", "--dart"],  # 81 x 16 = 1296
+    "refine --steps (refine_mesh)": ["refine", "m.obj", "--steps", _over("refine --steps (refine_mesh)"), "--out", "o.obj"],
+    "design_ring(n)": lambda: __import__("symdecomp").design_ring(catmull_clark(), _over("design_ring(n)", int), normal=(0, 0, 1)),
 })
 
 #: Cases that need files: a function of a fresh directory, giving the command line.
@@ -166,6 +168,11 @@ FILE_CASES = {
     "mesh: magnitude of a coordinate": lambda d: ["inspect", _write(d / "m.obj", SQUARE + "v 1.8e308 0 0\nf 1 2 3 4\n")],
     "mesh: characters of one number": lambda d: ["inspect", _write(d / "m.obj", SQUARE + "v 0." + "1" * (
         LIMITS["mesh: characters of one number"][0] - 1) + " 0 0\nf 1 2 3 4\n")],
+    "mesh, OBJ: bytes of a line": lambda d: [
+        "refine", "--out", str(d / "o.obj"), _write(d / "m.obj", SQUARE + "#" * _over("mesh, OBJ: bytes of a line", int) + "\nf 1 2 3 4\n")],
+    "mesh, PLY: bytes of the header": lambda d: ["inspect", _write(d / "m.ply", "ply\nformat ascii 1.0\ncomment " + "x" * LIMITS[
+        "mesh, PLY: bytes of the header"][0] + "\nend_header\n")],
+    "scheme file: bytes": lambda d: ["spectrum", "5", "--scheme", _write(d / "big.toml", "#" * _over("scheme file: bytes", int))],
     "mesh: bytes of a file": lambda d: ["inspect", _sparse(d / "m.obj", LIMITS["mesh: bytes of a file"][0] + 1)],
     "design --mesh: magnitude of a ring's coordinates (and 1/extent)": lambda d: [
         "design", "--mesh", _write(d / "big.obj", SCALED_CUBE), "--vertex", "0", "--normal", "0,0,1", "--out", str(d / "o.obj")],

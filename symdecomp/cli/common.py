@@ -23,7 +23,16 @@ from symdecomp.parallel.cluster import EXCHANGE_SECONDS, GREETING_LIMIT
 from symdecomp.schemes.files import SCHEMES, load_scheme
 from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import API_LIMITS, DEFAULT_BUDGET, INPUT_LIMITS, MAX_DEPTH, MAX_DIGITS, MAX_DPS, MAX_REPORT_VALENCE
+from symdecomp.validate import (
+    API_LIMITS,
+    DEFAULT_BUDGET,
+    INPUT_LIMITS,
+    MAX_DEPTH,
+    MAX_DIGITS,
+    MAX_DOUBLE_DIGITS,
+    MAX_DPS,
+    MAX_REPORT_VALENCE,
+)
 
 __all__ = [
     "Parser",
@@ -65,6 +74,8 @@ ARTIFACTS_COST, ARTIFACTS_SECONDS = 4e-4, 600
 LIMITS = {
     "digits": (MAX_DIGITS, "more digits than anyone reads; each one costs evaluation time"),
     "dps": (MAX_DPS, "an eigenvalue solve at this precision takes hours"),
+    "check --dps (triangle schemes, --rings > 1)": (MAX_DOUBLE_DIGITS, "the numeric check of the K-ring frequency "
+                                                    "matrices runs in double precision; --certify proves them"),
     "spectrum": (API_LIMITS["closed_form_spectrum(n)"][0], "the time grows with N (one evaluation per frequency): N = 1000 takes about a second"),
     "masks": (1000, "2N + 1 weights per mask, each a certified ball: N = 1000 takes about a second"),
     "charpoly": (300, "the exact characteristic polynomial of the (2N+1)x(2N+1) matrix grows like N^3"),

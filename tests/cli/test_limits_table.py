@@ -77,6 +77,8 @@ def _bipyramid(directory, n: int) -> str:
 CASES = {
     "digits": ["spectrum", "5", "--digits", _over("digits")],
     "dps": ["check", "--n", "5", "--dps", _over("dps")],
+    "check --dps (triangle schemes, --rings > 1)": ["check", "--n", "5", "--scheme", "loop", "--dps",
+                                                    _over("check --dps (triangle schemes, --rings > 1)")],
     "spectrum": ["spectrum", _over("spectrum")],
     "masks": ["masks", _over("masks")],
     "charpoly": ["charpoly", _over("charpoly")],

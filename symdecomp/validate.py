@@ -68,6 +68,7 @@ __all__ = [
     "DEFAULT_BUDGET",
     "MAX_REPORT_VALENCE",
     "API_LIMITS",
+    "INPUT_LIMITS",
     "check_limit",
     "MAX_MESH_VALENCE",
     "MESH_FORMATS",
@@ -148,20 +149,43 @@ def check_limit(value, name: str, argument: str, *, minimum: int = 3, error: typ
     return check_int(value, argument, minimum=minimum, maximum=bound, error=error, reason=reason)
 
 
-#: The largest valence of a mesh's vertex that is analysed (``inspect``, ``design --mesh``, the API's mesh analyses):
-#: the valence bound of ``design --n``; a fan of thousands of faces is read, and refused where it is analysed.
 #: The mesh file formats read and written (by extension): :mod:`symdecomp.schemes.meshformats`; named here so that
 #: the command line can offer them without importing the readers.
 MESH_FORMATS = ("obj", "off", "ply")
-MAX_MESH_VALENCE = 64
-#: The largest magnitude of a mesh coordinate (read from a file or given as an array): the largest finite double, so
-#: that every coordinate is a finite double (``1e309`` is refused; the analyses scale what would overflow).
-MAX_COORDINATE = sys.float_info.max
-#: The most characters of one number in a mesh text file: the exact decimal of every double fits (a 5000-digit
-#: number does not).
-MAX_NUMBER_CHARS = 1100
-#: The largest mesh file read (bytes), from a path or standard input, whatever size the file system reports.
-MAX_MESH_FILE_BYTES = 512 * 2**20
+#: The bounds of inputs that are no single entry point's ``n``, kept here so that the modules that enforce them read
+#: them from one table (listed with the others in :data:`symdecomp.cli.common.LIMITS`): ``name: (bound, reason)``.
+INPUT_LIMITS = {
+    "mesh (inspect, design --mesh, refine, API): valence of an analysed vertex": (64, "the valence bound of design --n; "
+        "a fan of thousands of faces is read, and refused where it is analysed"),
+    "mesh: magnitude of a coordinate": (sys.float_info.max, "every coordinate is a finite double (1e309 is refused); the "
+        "analyses scale what would overflow"),
+    "mesh: characters of one number": (1100, "the exact decimal of every double fits; a 5000-digit number does not"),
+    "mesh: bytes of a file": (512 * 2**20, "from a path or standard input, whatever size the file system reports"),
+    "mesh, OBJ: bytes of a line": (8 * 2**20, "a face of a million corners fits; a file of one endless line does not"),
+    "mesh, PLY: bytes of the header": (2**20, "'end_header' is looked for this far; a header is a few hundred bytes"),
+    "refine --steps (refine_mesh)": (8, "each step multiplies the faces by 4 (8 steps: 65536 faces for one)"),
+    "scheme file: bytes": (100_000, "a scheme file is a few lines of TOML"),
+    "design_ring(n)": (1000, "40-digit eigenvectors per frequency and exact checks in Q(zeta_4n); design --n stops at 64"),
+    "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
+    "design --position, --elliptic, --hyperbolic: magnitude": (10**6, "the designed ring's exact coordinates stay "
+        "small enough to print and write as doubles"),
+    "design --angle: magnitude (radians)": (10**6, "read as a double, whose spacing there is still far below a degree"),
+    "design --normal, --tangent: integer entries of the direction": (10**15, "15 significant digits, what a double carries"),
+    "design --mesh: magnitude of a ring's coordinates (and 1/extent)": (10**12, "beyond, the tangents' product "
+        "overflows or underflows in doubles"),
+    "--boundary, --corner, --crease, --dart: faces": (64, "the faces K (K + K2 on a crease) around a boundary, crease, "
+        "corner or dart vertex where its 1-ring matrices are dense and exact (darts, semi-sharp creases, masks, "
+        "certificates, C1)"),
+    "--boundary, --corner, --crease: faces by the blocks": (10_000, "the faces K (K + K2 on a crease) where spectrum "
+        "and check read the vertex by the mirror decomposition's blocks, O(K)"),
+    "masks --boundary, ... (sharp_masks): unknowns of a mask's system": (1200, "an exact mask is the null space of a "
+        "rational system of m points x the eigenvalue's degree unknowns, eliminated densely in time ~ (m d)^3 with "
+        "growing rationals (masks 64 --dart asked for about 8000 and ended in an allocation failure)"),
+}
+MAX_MESH_VALENCE = INPUT_LIMITS["mesh (inspect, design --mesh, refine, API): valence of an analysed vertex"][0]
+MAX_COORDINATE = INPUT_LIMITS["mesh: magnitude of a coordinate"][0]
+MAX_NUMBER_CHARS = INPUT_LIMITS["mesh: characters of one number"][0]
+MAX_MESH_FILE_BYTES = INPUT_LIMITS["mesh: bytes of a file"][0]
 #: What a refusal of a mesh for its memory advises.
 MESH_ADVICE = "split the mesh, or read a smaller one"
 #: Measured peak memory of reading and checking a mesh: bytes per byte of a text file (a 1M-face quad OBJ of 69 MB:

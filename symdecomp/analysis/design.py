@@ -68,11 +68,12 @@ from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import INPUT_LIMITS
 
 __all__ = ["LimitFrame", "RingDesign", "design_ring", "limit_frame", "ring_amounts", "frame"]
 
 #: The largest valence designed (40-digit eigenvectors per frequency and exact sums in Q(zeta_4n) per class).
-MAX_VALENCE = 1000
+MAX_VALENCE = INPUT_LIMITS["design_ring(n)"][0]
 
 _DPS = 40
 

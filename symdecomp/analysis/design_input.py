@@ -34,20 +34,21 @@ import sympy as sp
 
 from symdecomp.errors import InvalidInputError
 from symdecomp.expressions import MAX_DIGITS, exact_value
+from symdecomp.validate import INPUT_LIMITS
 
 __all__ = ["MAX_MAGNITUDE", "MAX_COORDINATE", "MAX_ANGLE", "MAX_DIRECTION", "amount", "vector", "frame", "check_ring_scale"]
 
-#: The largest magnitude of a position coordinate and of an elliptic or hyperbolic amount.
-MAX_MAGNITUDE = 10**6
+#: The largest magnitude of a position coordinate and of an elliptic or hyperbolic amount (the limits table).
+MAX_MAGNITUDE = INPUT_LIMITS["design --position, --elliptic, --hyperbolic: magnitude"][0]
 
 #: The largest magnitude of a coordinate of a redesigned 1-ring (and the reciprocal of its smallest extent).
-MAX_COORDINATE = 10**12
+MAX_COORDINATE = INPUT_LIMITS["design --mesh: magnitude of a ring's coordinates (and 1/extent)"][0]
 
 #: The largest magnitude of the hyperbolic angle (radians).
-MAX_ANGLE = 10**6
+MAX_ANGLE = INPUT_LIMITS["design --angle: magnitude (radians)"][0]
 
 #: The largest entry of the primitive integer vector along a normal or tangent.
-MAX_DIRECTION = 10**15
+MAX_DIRECTION = INPUT_LIMITS["design --normal, --tangent: integer entries of the direction"][0]
 
 #: A decimal number as text: read as the rational it spells (the mesh files' grammar).
 _DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]{1,4})?")

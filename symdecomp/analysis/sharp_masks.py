@@ -43,6 +43,7 @@ from symdecomp.analysis.ring_spectrum import acb_text
 from symdecomp.analysis.sharp_eigen import SharpEigenvalue, ball_at, merge, separated, submatrix
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import INPUT_LIMITS
 
 __all__ = ["SharpMask", "SharpMasks", "sharp_masks", "MAX_MASK_SYSTEM"]
 
@@ -132,8 +133,8 @@ def _eigenvector(S: flint.fmpq_mat, rows: tuple[int, ...], value: SharpEigenvalu
 
 #: Largest rational system ``m d`` (``m`` points, the eigenvalue of degree ``d``) solved for an exact mask: its dense
 #: elimination grows as ``(m d)^3`` with growing rationals (``masks 64 --dart`` asked for one of about 8,000 unknowns and
-#: ended in an allocation failure after minutes); checked before any work.
-MAX_MASK_SYSTEM = 1200
+#: ended in an allocation failure after minutes); checked before any work. A row of the limits table.
+MAX_MASK_SYSTEM = INPUT_LIMITS["masks --boundary, ... (sharp_masks): unknowns of a mask's system"][0]
 
 
 def _check_system(points: int, value: SharpEigenvalue) -> None:

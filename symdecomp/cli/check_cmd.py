@@ -39,6 +39,12 @@ ROUTES = ("structural", "charpoly")
 SOLVERS = ("flint", "mpmath")
 
 
+#: ``check``'s help of ``--sharpness``: the mirror decomposition, which both modes check against, needs infinitely sharp edges.
+SHARPNESS_HELP = ("with --crease or --dart: inf only (the default), in both modes: check compares the refined matrix with "
+                  "the mirror decomposition, which a semi-sharp crease does not have; a finite S is refused before any "
+                  "output (spectrum K --crease K2 --sharpness S and masks read semi-sharp vertices level by level)")
+
+
 def register(sub) -> None:
     p = sub.add_parser(
         "check",
@@ -84,7 +90,7 @@ def register(sub) -> None:
                        "(not darts): the blocks' values against the matrix's eigenvalues to --dps/2 digits, on --jobs workers")
     add_scheme_option(p)
     add_rings_option(p)
-    add_sharp_options(p, count="--k")
+    add_sharp_options(p, count="--k", sharpness_help=SHARPNESS_HELP)
     add_quiet_option(p)
     add_plot_option(p, "the agreement by valence (by sector at a sharp vertex): the digits of agreement against --dps, or "
                     "the distinct eigenvalues proved and the characteristic polynomial's size, coloured by status")
@@ -96,6 +102,7 @@ def _run_sharp(args, plot) -> int:
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
     from symdecomp.verify.sharp_certify import certify_sharp
 
+    refuse_semi_sharp(args)
     if not args.certify:
         return _run_sharp_numeric(args)
     for option in ("--route", "--structural", "--solver", "--jobs", "--executor", "--dps"):
@@ -135,6 +142,22 @@ def _run_sharp(args, plot) -> int:
     return 1 if failed else 0
 
 
+def refuse_semi_sharp(args) -> None:
+    """Refuse a finite ``--sharpness`` at once, before the header: both modes check the mirror decomposition, which a
+    semi-sharp vertex does not have (its matrix changes level by level; ``spectrum`` shows the levels)."""
+    import math
+
+    from symdecomp.cli.sharp import check_sharp_options
+
+    check_sharp_options(args)  # --sharpness without --crease or --dart: that line first
+    if args.sharpness != math.inf:
+        kind = "--dart" if args.dart else "--crease"
+        mode = "--certify" if args.certify else "numeric mode"
+        raise InvalidInputError(f"--sharpness {args.sharpness} with check {kind} ({mode}): check reads infinitely sharp edges "
+                                "only (the mirror decomposition it checks against needs them); spectrum and masks read a "
+                                "semi-sharp vertex level by level")
+
+
 def _figure(scheme: str, rows: list):
     from symdecomp.output.plotting.check_chart import check_figure
 
@@ -161,7 +184,7 @@ def _run_sharp_numeric(args) -> int:
         print(f"{'K':>4}  {'status':<13} {'size':>5} {'distinct':>8}  vertex")
     results = ordered_map(numeric_row, vertices, shared={"scheme": args.scheme, "dps": args.dps}, jobs=args.jobs,
                           executor=args.executor)
-    for r in progress(results, len(vertices), "check"):
+    for r in progress(results, len(vertices), "check", enabled=not args.quiet):
         rows.append(r)
         if not args.json:
             line = f"{r.k:>4}  {r.status.value:<13} {r.size:>5} {r.distinct:>8}  {r.vertex}"

@@ -14,14 +14,25 @@ import os
 import re
 import sys
 
+from symdecomp.cli.files import FIFO_WAIT
 from symdecomp.cli.json_envelope import print_json
 from symdecomp.cli.progress import progress
 from symdecomp.errors import InvalidInputError, SymdecompError
 from symdecomp.parallel import parse_executor
+from symdecomp.parallel.cluster import EXCHANGE_SECONDS, GREETING_LIMIT
 from symdecomp.schemes.files import SCHEMES, load_scheme
 from symdecomp.schemes.rings import MAX_RINGS
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.validate import API_LIMITS, DEFAULT_BUDGET, MAX_DEPTH, MAX_DIGITS, MAX_DPS, MAX_REPORT_VALENCE
+from symdecomp.validate import (
+    API_LIMITS,
+    DEFAULT_BUDGET,
+    INPUT_LIMITS,
+    MAX_DEPTH,
+    MAX_DIGITS,
+    MAX_DOUBLE_DIGITS,
+    MAX_DPS,
+    MAX_REPORT_VALENCE,
+)
 
 __all__ = [
     "Parser",
@@ -57,10 +68,14 @@ __all__ = [
 ARTIFACTS_COST, ARTIFACTS_SECONDS = 4e-4, 600
 
 #: Upper bounds of the command line and why they are there: ``name: (bound, reason)``. The API's bounds
-#: (:data:`symdecomp.validate.API_LIMITS`) close the table: the docs render it, and each bound is enforced where it is named.
+#: (:data:`symdecomp.validate.API_LIMITS`) and the inputs' (mesh files, design amounts, sharp vertices:
+#: :data:`symdecomp.validate.INPUT_LIMITS`, read by the modules that enforce them) close the table: the docs render
+#: it, and each bound is enforced where it is named (``tests/cli/test_limits_table.py`` goes one step past each).
 LIMITS = {
     "digits": (MAX_DIGITS, "more digits than anyone reads; each one costs evaluation time"),
     "dps": (MAX_DPS, "an eigenvalue solve at this precision takes hours"),
+    "check --dps (triangle schemes, --rings > 1)": (MAX_DOUBLE_DIGITS, "the numeric check of the K-ring frequency "
+                                                    "matrices runs in double precision; --certify proves them"),
     "spectrum": (API_LIMITS["closed_form_spectrum(n)"][0], "the time grows with N (one evaluation per frequency): N = 1000 takes about a second"),
     "masks": (1000, "2N + 1 weights per mask, each a certified ball: N = 1000 takes about a second"),
     "charpoly": (300, "the exact characteristic polynomial of the (2N+1)x(2N+1) matrix grows like N^3"),
@@ -73,7 +88,6 @@ LIMITS = {
                                            "and ring squared); N = 1000 takes about a second on the 1-ring"),
     "design": (64, "exact checks in Q(zeta_4N) and 40-digit eigenvectors per frequency: N = 64 takes seconds"),
     "oracle": (64, "OpenSubdiv refines the whole 1-ring mesh; the comparison is in double precision"),
-    "levels": (40, "double precision: after about 40 levels the ring is below rounding for every valence"),
     "jobs": (256, "more worker processes than this only cost memory"),
     "c1": (API_LIMITS["c1_test(n)"][0], "a valence costs time ~ N (N/2 + 1 frequency blocks of size 2 or 1, memory O(N)): N = 10000 takes about "
            "0.15 s, the range 3:10000 about 10 minutes of CPU (--executor dask spreads it over a cluster)"),
@@ -89,15 +103,17 @@ LIMITS = {
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),
     "report": (MAX_REPORT_VALENCE, "a report's tables grow with every valence (2N + 1 eigenvalues and mask weights) and its "
                "eigen-polygon figure has N panels a row; 3:8 takes about half a minute"),
-    "--boundary, --corner, --crease, --dart: faces": (64, "the faces K (K + K2 on a crease) around a boundary, crease, "
-                                                     "corner or dart vertex where its 1-ring matrices are dense and exact (darts, "
-                                                     "semi-sharp creases, masks, certificates, C1)"),
-    "--boundary, --corner, --crease: faces by the blocks": (10_000, "the faces K (K + K2 on a crease) where spectrum and "
-                                                            "check read the vertex by the mirror decomposition's blocks, O(K)"),
     "evaldata --k": (64, "a sharp vertex has at most 64 faces; k = 64 writes about 10 MB of exact rationals"),
     "evaldata": (1000, "the file grows like N^3 (N = 128: 32 MB) and each valence costs ~N^2 Arb operations at 256 bits "
                  "(a run's memory is estimated and checked before it starts)"),
+    "--executor dask=ADDRESS: seconds of each exchange": (EXCHANGE_SECONDS, "to connect, to greet, to find a worker, "
+                                                          "between signs of life: a peer that stays silent is not waited for"),
+    "--executor dask=ADDRESS: bytes of the greeting": (GREETING_LIMIT, "a scheduler's greeting takes about 60 bytes; a "
+                                                       "larger length read from a peer is no Dask scheduler's"),
+    "--out FIFO: seconds to wait for its reader": (FIFO_WAIT, "an output FIFO is opened when it is checked, before the "
+                                                   "work: without a reader by then, the run would block after it"),
     **API_LIMITS,
+    **INPUT_LIMITS,
 }
 
 #: Where a help text sends a reader for the scheme file format (one page of the docs, from the one docstring).

@@ -21,8 +21,6 @@ with K faces, K in the range, as JSON of exact rationals (format ``sharp-patches
 
 from __future__ import annotations
 
-import sys
-
 from symdecomp.cli.common import (
     LIMITS,
     Once,
@@ -37,6 +35,7 @@ from symdecomp.cli.common import (
     valence_range,
 )
 from symdecomp.cli.files import check_output_file, write_output_file
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import EvalDataFileError, InvalidInputError
 from symdecomp.parallel import pool_size
 from symdecomp.validate import FLOAT_DIGITS
@@ -69,6 +68,7 @@ def register(sub) -> None:
     add_pool_options(p, default_jobs=2)  # the binary file and JSON at 17 digits; JSON at D > 17 digits runs in this process
     flag(p, "--json", help="print a JSON summary")
     add_scheme_option(p)
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -123,7 +123,7 @@ def _run_sharp(args, kind: str) -> int:
 
     scheme, ks = args.scheme, args.faces
     check_output_file(args.out)
-    show = sys.stderr.isatty() and not args.json
+    show = not args.quiet
     sizes = []
 
     def entries():
@@ -158,7 +158,7 @@ def run(args) -> int:
     digits = args.digits if args.format == "json" else FLOAT_DIGITS
     memory, seconds = check_eigendata_cost(args.scheme, ns[-1], pool_size(args.jobs, len(ns)) if digits == FLOAT_DIGITS else 1, digits)
     check_output_file(args.out)
-    show = sys.stderr.isatty() and not args.json
+    show = not args.quiet
     precs, defective = [], []
 
     def rounded():  # the valences as they come, in order; nothing holds the whole file

@@ -37,6 +37,7 @@ import sys
 
 from symdecomp.cli.common import Once, flag, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_directory, check_output_file
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError, InvalidMeshError
 from symdecomp.validate import MESH_FORMATS as FORMATS
 
@@ -71,6 +72,7 @@ def register(sub) -> None:
     flag(p, "--exact", help="also compute every limit position exactly (vertex by vertex: slow)")
     flag(p, "--strict", help="refuse (exit 2) instead of leaving a vertex or an element of the file out")
     flag(p, "--json", help='print {"mesh", "scheme", "kinds", "not_analysed", "defects", "extraordinary", ...}')
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -136,7 +138,7 @@ def run(args) -> int:
     _check_outputs(args)
     original = _read(args)
     scheme, mesh, from_faces = prepare_mesh(args.scheme, original)
-    result = mesh_limits(mesh, scheme, exact=args.exact, progress=progress_lines)
+    result = mesh_limits(mesh, scheme, exact=args.exact, progress=None if args.quiet else progress_lines)
     left_out = result.not_analysed()
     if args.strict and left_out:
         v, why = next(iter(left_out.items()))
@@ -165,6 +167,7 @@ def run(args) -> int:
 
 
 def progress_lines(items, total: int, what: str):
-    """The one place this command reports progress (a bar on a terminal)."""
-    return progress(items, total, f"inspect: {what}")
+    """The one place this command reports progress (a bar on a terminal; plain lines otherwise,
+    :data:`symdecomp.cli.progress.PLAIN_LINE`: the label holds no colon, so a program tells them from an error)."""
+    return progress(items, total, f"inspect {what}")
 

@@ -16,7 +16,7 @@ import sys
 import numpy as np
 
 from symdecomp.cli.files import write_output_file
-from symdecomp.validate import check_memory
+from symdecomp.validate import MAX_MESH_FILE_BYTES, MESH_ADVICE, check_memory
 
 __all__ = ["memory_note", "verdicts", "json_report", "print_report", "write_pictures", "color_values"]
 
@@ -36,8 +36,10 @@ def memory_note(path) -> None:
             binary = b"binary" in fh.read(256)
     except (OSError, TypeError, ValueError):
         return  # the reader names the problem
+    if size > MAX_MESH_FILE_BYTES:
+        return  # the reader refuses it by the file bound, which is what the file is past
     estimate = MEMORY_PER_FILE_BYTE["binary" if binary else "text"] * size
-    check_memory(estimate, f"reading {path} ({size / 2**20:.1f} MiB)")
+    check_memory(estimate, f"reading {path} ({size / 2**20:.1f} MiB)", MESH_ADVICE)
     if size > 8 * 2**20:
         print(f"symdecomp inspect: reading {path} ({size / 2**20:.0f} MiB): about {estimate / 2**30:.1f} GiB of memory",
               file=sys.stderr)

@@ -111,7 +111,7 @@ def _figures(args, mesh, result) -> None:
     from symdecomp.output.plotting.meshes import png_bytes, vertex_figure
 
     files = {}
-    for r in progress(result.vertices, len(result.vertices), "figures"):
+    for r in progress(result.vertices, len(result.vertices), "figures", enabled=not args.quiet):
         files[f"vertex-{r.vertex}.png"] = png_bytes(vertex_figure(r, [[float(c) for c in mesh.points[v]] for v in r.ring]))
     replace_owned_files(args.figures, files, _OWNED, "--figures")
 
@@ -142,7 +142,8 @@ def vertex_details(args, mesh, scheme, vertices) -> dict | None:
     ``--figures``; the exact route, vertex by vertex."""
     from symdecomp.analysis.inspection import MeshInspection, inspect_vertex
 
-    result = MeshInspection(scheme.name, tuple(inspect_vertex(mesh, v, scheme) for v in progress(vertices, len(vertices), "vertices")), ())
+    shown = progress(vertices, len(vertices), "vertices", enabled=not args.quiet)
+    result = MeshInspection(scheme.name, tuple(inspect_vertex(mesh, v, scheme) for v in shown), ())
     artifacts = _artifacts(result, scheme)
     if args.figures is not None:
         _figures(args, mesh, result)

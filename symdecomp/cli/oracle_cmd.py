@@ -18,6 +18,7 @@ import re
 from fractions import Fraction
 
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, flag, integer, print_json, progress, valence_range
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError, UnavailableError
 
 
@@ -60,6 +61,7 @@ def register(sub) -> None:
                         '"observed", "disagreement", "rate", "observed_rate", "agrees"}]}]; with --kind '
                         '[{"scheme", "kind", "k", "sharpness", "boundary", "creasing", "level", "agrees", '
                         '"checks": [{"name", "disagreement", "comparable", "agrees", "note"}]}]')
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -141,7 +143,7 @@ def run(args) -> int:
         return _run_mesh(args)
     if kinds is not None:
         return _run_sharp(args, kinds)
-    results = [compare(n, args.levels, args.seed) for n in progress(args.n, len(args.n), "oracle")]
+    results = [compare(n, args.levels, args.seed) for n in progress(args.n, len(args.n), "oracle", enabled=not args.quiet)]
     if args.json:
         print_json(args, [r.as_json() for r in results])
     else:
@@ -192,7 +194,7 @@ def _run_sharp(args, kinds) -> int:
     scheme = args.scheme.lattice.reference().name  # _comparison checked the rules
     cases = [c for c in sharp_cases(scheme, kinds, args.k, args.sharpness or SHARPNESS)
              if args.creasing in ("both", c.creasing)]
-    results = [r for case in progress(cases, len(cases), "oracle") for r in compare_sharp_case(case, seed=args.seed)]
+    results = [r for case in progress(cases, len(cases), "oracle", enabled=not args.quiet) for r in compare_sharp_case(case, seed=args.seed)]
     if args.json:
         print_json(args, [r.as_json() for r in results])
     else:

@@ -17,6 +17,7 @@ import argparse
 
 from symdecomp.cli.common import Once, flag, integer, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_file, write_output_file
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import MESH_FORMATS as FORMATS
 
@@ -47,6 +48,7 @@ def register(sub) -> None:
     p.add_argument("--format", choices=FORMATS, action=Once, default=None, help="the input format, if not its extension")
     p.add_argument("--out", action=Once, required=True, metavar="FILE", help="the refined mesh: .obj or .ply")
     flag(p, "--json", help='print {"mesh", "scheme", "steps", "vertices", "faces", "creases", "out", "bytes"}')
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -66,7 +68,7 @@ def run(args) -> int:
     if scheme is None:
         sizes = mesh.face_sizes()
         scheme = scheme_for_mesh(mesh) if len(sizes) == 1 and sizes[0] in (3, 4) else catmull_clark()
-    refined = refine_mesh(mesh, scheme, args.steps, progress=lambda xs, total: progress(xs, total, "refine"))
+    refined = refine_mesh(mesh, scheme, args.steps, progress=lambda xs, total: progress(xs, total, "refine", enabled=not args.quiet))
     points = [[float(c) for c in p] for p in refined.points]
     if str(args.out).lower().endswith(".obj"):
         content = colored_obj(points, refined.faces, creases=refined.creases)

@@ -19,6 +19,7 @@ from pathlib import Path
 
 from symdecomp.cli.common import LIMITS, SCHEME_FORMAT, Once, add_budget_option, progress, scheme_by_name, valence_range
 from symdecomp.cli.files import check_output_file, write_output_file, write_output_files
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError, UnavailableError
 
 __all__ = ["register", "run", "FORMATS"]
@@ -50,6 +51,7 @@ def register(sub) -> None:
                    help="the document to write: FILE.pdf, FILE.html or FILE.tex; checked before any work starts and "
                    "written whole (an interrupted run leaves the old file)")
     add_budget_option(p)
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -78,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
 
         require_pdflatex()  # before the work: a missing pdflatex is known now, not after a minute
     figure_paths = {name + ".pdf": check_output_file(_figure_path(out, name)) for name in FIGURES} if fmt == ".tex" else {}
-    sections = progress(SECTIONS, len(SECTIONS), "report")
+    sections = progress(SECTIONS, len(SECTIONS), "report", enabled=not args.quiet)
     report = build_report(args.scheme, args.valences, budget=args.budget, sections=sections)
     if fmt == ".html":
         from symdecomp.output.report_html import report_html

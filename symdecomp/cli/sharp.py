@@ -53,8 +53,9 @@ def sharpness(text: str):
         raise argparse.ArgumentTypeError(str(exc)) from None
 
 
-def add_sharp_options(parser, *, count: str = "N") -> None:
-    """The options of a boundary, crease, corner or dart vertex (module docstring); ``count``: the argument giving K."""
+def add_sharp_options(parser, *, count: str = "N", sharpness_help: str | None = None) -> None:
+    """The options of a boundary, crease, corner or dart vertex (module docstring); ``count``: the argument giving K;
+    ``sharpness_help``: the command's own help of ``--sharpness`` (where it reads only some sharpnesses)."""
     g = parser.add_argument_group("boundary, crease, corner and dart vertices",
                                   f"with one of these, {count} is the faces K of the vertex's sector (1 <= K <= {MAX_FACES})")
     parser.set_defaults(_sharp_options=True)  # check_sharp_options: this command has the options below
@@ -64,8 +65,8 @@ def add_sharp_options(parser, *, count: str = "N") -> None:
                    help="an interior vertex on a crease with K faces on one side and K2 on the other")
     flag(g, "--dart", help="an interior vertex of valence K where a crease ends (one sharp edge)")
     g.add_argument("--sharpness", type=sharpness, action=Once, metavar="S", default=math.inf,
-                   help="with --crease or --dart: the crease's sharpness, an exact rational >= 0 or inf (default); semi-sharp "
-                   "edges decay by 1 a level, and the output shows every level whose matrix differs")
+                   help=sharpness_help or "with --crease or --dart: the crease's sharpness, an exact rational >= 0 or inf "
+                   "(default); semi-sharp edges decay by 1 a level, and the output shows every level whose matrix differs")
 
 
 def faces_or_valence(limit: str):

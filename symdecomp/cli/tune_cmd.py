@@ -26,6 +26,7 @@ import sympy as sp
 
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, closed_form_obstacle, digits, flag, print_json, progress, valence
 from symdecomp.cli.files import check_output_file, write_output_file
+from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError
 
 _PHI = LIMITS["tune --region, interval_region, placed_points: phi(n)"][0]
@@ -65,6 +66,7 @@ def register(sub) -> None:
                    help="with --region: draw the region in the parameter plane (or line) to this file, coloured by regime")
     flag(p, "--json", help="print JSON")
     add_scheme_option(p)
+    add_quiet_option(p)
     p.set_defaults(func=run)
 
 
@@ -82,7 +84,7 @@ def run(args) -> int:
     if args.table:
         valences = list(range(3, args.n + 1))
         rows = []
-        for n in progress(valences, len(valences), "defects", enabled=not args.json):
+        for n in progress(valences, len(valences), "defects", enabled=not args.quiet):
             rows.extend(elliptic.elliptic_defect_table(args.scheme, [n], digits=args.digits))
         cond = elliptic.nice_elliptic_conditions(args.scheme)
         if args.json:

@@ -130,6 +130,7 @@ from symdecomp.symbols import RESERVED_NAMES, Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
+from symdecomp.validate import INPUT_LIMITS
 
 __all__ = ["SCHEMES", "SHIPPED_FILES", "load_scheme", "scheme_from_text", "scheme_to_text"]
 
@@ -148,7 +149,7 @@ _RULE_KEYS = {"O", "a", "b"}
 _OFFSET = re.compile(r"^[+-]?[0-9]{1,4}$")
 _IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,15}$")
 _KNOWN_SYMBOLS = {"alpha": ALPHA, "beta": BETA}
-MAX_FILE_BYTES = 100_000
+MAX_FILE_BYTES = INPUT_LIMITS["scheme file: bytes"][0]
 
 
 def load_scheme(name_or_path: str | os.PathLike) -> Scheme:

@@ -41,7 +41,7 @@ import numpy as np
 
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_tags import MeshTags
-from symdecomp.validate import MAX_COORDINATE, MAX_NUMBER_CHARS, finite_double
+from symdecomp.validate import INPUT_LIMITS, MAX_COORDINATE, MAX_NUMBER_CHARS, finite_double
 
 __all__ = ["IGNORED", "MAX_LINE_BYTES", "ParsedMesh", "number", "index", "read_obj"]
 
@@ -49,7 +49,7 @@ __all__ = ["IGNORED", "MAX_LINE_BYTES", "ParsedMesh", "number", "index", "read_o
 IGNORED = frozenset({"vt", "vn", "vp", "g", "o", "s", "usemtl", "mtllib", "l", "p", "mg", "lod", "bevel", "c_interp", "d_interp",
                      "shadow_obj", "trace_obj", "maplib", "usemap"})
 #: The longest line of a mesh text file (bytes): a face of about a million corners.
-MAX_LINE_BYTES = 8 * 2**20
+MAX_LINE_BYTES = INPUT_LIMITS["mesh, OBJ: bytes of a line"][0]
 
 _NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
 _INDEX = re.compile(r"[+-]?[0-9]{1,12}", re.ASCII)

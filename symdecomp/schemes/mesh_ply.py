@@ -32,14 +32,14 @@ import numpy as np
 
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_obj import ParsedMesh, index, number
-from symdecomp.validate import MAX_COORDINATE, MESH_ADVICE, check_memory, mesh_memory
+from symdecomp.validate import INPUT_LIMITS, MAX_COORDINATE, MESH_ADVICE, check_memory, mesh_memory
 
 __all__ = ["read_ply"]
 
 _TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2", "ushort": "u2", "uint16": "u2",
           "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4", "float": "f4", "float32": "f4", "double": "f8", "float64": "f8"}
 _FORMATS = {"ascii": None, "binary_little_endian": "<", "binary_big_endian": ">"}
-_MAX_HEADER = 2**20
+_MAX_HEADER = INPUT_LIMITS["mesh, PLY: bytes of the header"][0]
 
 
 @dataclass

@@ -23,12 +23,12 @@ from fractions import Fraction
 from symdecomp.errors import InvalidInputError, InvalidMeshError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import check_int, check_memory
+from symdecomp.validate import INPUT_LIMITS, check_int, check_memory
 
 __all__ = ["RefinedMesh", "refine_mesh", "MAX_STEPS"]
 
 #: Most steps :func:`refine_mesh` takes (each multiplies the faces by 4).
-MAX_STEPS = 8
+MAX_STEPS = INPUT_LIMITS["refine --steps (refine_mesh)"][0]
 
 
 @dataclass(frozen=True)

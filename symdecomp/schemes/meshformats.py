@@ -125,6 +125,8 @@ def _read_regular(name: str) -> bytes:
         status = os.fstat(handle.fileno())
         if not stat.S_ISREG(status.st_mode):  # replaced between the two looks
             raise InvalidMeshError(f"{name}: not a regular file ({_kind(status.st_mode)})")
+        if status.st_size > MAX_MESH_FILE_BYTES:  # the file bound first: it, not the memory, is what the file is past
+            raise InvalidMeshError(f"{name}: more than {MAX_MESH_FILE_BYTES} bytes, the limit of a mesh file")
         check_memory(mesh_memory(file_bytes=min(status.st_size, MAX_MESH_FILE_BYTES)), f"{name}: reading a mesh file of {status.st_size} "
                      "bytes", MESH_ADVICE)  # PLY: checked again from its header's counts
         return _capped(handle, name)

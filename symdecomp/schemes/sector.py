@@ -49,14 +49,14 @@ from symdecomp.schemes.rings import MAX_RINGS, check_rings
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sharp import SharpOptions, check_sharpness, decrement
 from symdecomp.schemes.sharp_refinement import TaggedMesh, sharp_stencils
-from symdecomp.validate import cached, check_int, check_levels, check_memory, check_type
+from symdecomp.validate import INPUT_LIMITS, cached, check_int, check_levels, check_memory, check_type
 
 __all__ = ["SharpVertex", "sharp_subdivision_matrix", "exact_sharp_matrix", "MAX_SECTOR_FACES", "MAX_DENSE_FACES", "MAX_LEVEL"]
 
 #: Most faces around a sharp vertex (the structural route, :mod:`symdecomp.analysis.sharp_structural`, is O(k)).
-MAX_SECTOR_FACES = 10_000
+MAX_SECTOR_FACES = INPUT_LIMITS["--boundary, --corner, --crease: faces by the blocks"][0]
 #: Most faces around a vertex whose matrix is built here (dense, exact): checked before any work.
-MAX_DENSE_FACES = 64
+MAX_DENSE_FACES = INPUT_LIMITS["--boundary, --corner, --crease, --dart: faces"][0]
 #: Highest refinement level of :func:`sharp_subdivision_matrix` (past 10 every finite sharpness is 0).
 MAX_LEVEL = 16
 

@@ -55,7 +55,7 @@ from symdecomp.errors import InternalError
 from symdecomp.schemes.mesh import QuadMesh, ring_mesh
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
-from symdecomp.validate import cached, check_int, check_levels, check_valence
+from symdecomp.validate import INPUT_LIMITS, cached, check_int, check_levels, check_valence
 
 __all__ = [
     "Prediction",
@@ -283,7 +283,7 @@ def _rate_from(errors: list[float], floor: float) -> float | None:
 
 
 #: Most refinement levels compared (double precision: beyond this the ring is below rounding).
-MAX_LEVELS = 40
+MAX_LEVELS = INPUT_LIMITS["levels"][0]
 
 
 def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceComparison:

@@ -30,6 +30,7 @@ import os
 import sys
 from collections.abc import Callable, Iterable, Mapping
 from fractions import Fraction
+from typing import Any
 
 import sympy as sp
 
@@ -154,7 +155,7 @@ def check_limit(value, name: str, argument: str, *, minimum: int = 3, error: typ
 MESH_FORMATS = ("obj", "off", "ply")
 #: The bounds of inputs that are no single entry point's ``n``, kept here so that the modules that enforce them read
 #: them from one table (listed with the others in :data:`symdecomp.cli.common.LIMITS`): ``name: (bound, reason)``.
-INPUT_LIMITS = {
+INPUT_LIMITS: dict[str, tuple[Any, str]] = {  # bounds are ints, except the largest double
     "mesh (inspect, design --mesh, refine, API): valence of an analysed vertex": (64, "the valence bound of design --n; "
         "a fan of thousands of faces is read, and refused where it is analysed"),
     "mesh: magnitude of a coordinate": (sys.float_info.max, "every coordinate is a finite double (1e309 is refused); the "

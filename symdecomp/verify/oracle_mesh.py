@@ -16,6 +16,10 @@ At a dart OpenSubdiv's limit mask is the smooth vertex's (``Sdc::Scheme::Compute
 ``RULE_DART`` as ``RULE_SMOOTH``), not a left eigenvector of the dart's subdivision matrix, whose exact mask the
 toolkit applies: the two differ by design, so dart vertices are compared apart
 (:attr:`MeshOracleResult.dart_position_disagreement`), outside the verdict.
+
+OpenSubdiv holds a sharpness in single precision: reading ``t crease 2/1/0 3 5 0.1`` it refines with the float
+nearest ``1/10``. Both sides are then given that float, exactly (:func:`single_precision_tags`; the toolkit's
+masks are exact in it), and the tags so rounded are counted (:attr:`MeshOracleResult.rounded_tags`).
 """
 
 from __future__ import annotations
@@ -31,7 +35,7 @@ from symdecomp.errors import InternalError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 
-__all__ = ["MeshOracleResult", "compare_mesh", "osd_mesh_frames", "TOLERANCE"]
+__all__ = ["MeshOracleResult", "compare_mesh", "osd_mesh_frames", "single_precision_tags", "TOLERANCE"]
 
 #: The default agreement: positions relative to the mesh's size, normals as unit vectors.
 TOLERANCE = 1e-12
@@ -61,6 +65,8 @@ class MeshOracleResult:
     #: OpenSubdiv's refinement levels before the limit.
     levels: int
     tolerance: float
+    #: Sharpness tags not exact in OpenSubdiv's single precision, given to both sides rounded to it.
+    rounded_tags: int = 0
 
     @property
     def agrees(self) -> bool:
@@ -70,6 +76,28 @@ class MeshOracleResult:
         out = {name: getattr(self, name) for name in self.__dataclass_fields__}
         out["agrees"] = self.agrees
         return out
+
+
+def single_precision_tags(mesh: PolygonMesh) -> tuple[PolygonMesh, int]:
+    """``mesh`` with each finite sharpness replaced by the single-precision float OpenSubdiv stores for it (exactly,
+    as a ``Fraction``), and how many tags changed; ``mesh`` itself when none does."""
+    from fractions import Fraction
+
+    from symdecomp.schemes.mesh_tags import MeshTags
+
+    def single(s):
+        return s if s >= 10 else Fraction(float(np.float32(float(s))))
+
+    tags = mesh.tags
+    creases = {e: single(s) for e, s in tags.creases.items()}
+    corners = {v: single(s) for v, s in tags.corners.items()}
+    changed = sum(creases[e] != s for e, s in tags.creases.items()) + sum(corners[v] != s for v, s in tags.corners.items())
+    if not changed:
+        return mesh, 0
+    rounded = MeshTags(creases, corners, tags.holes, tags.interpolate_boundary, tags.crease_method, tags.triangle_subdivision)
+    out = PolygonMesh(mesh.points, mesh.faces, mesh.name, tags=rounded)
+    out.defects, out.face_index = mesh.defects, mesh.face_index
+    return out, changed
 
 
 def _levels(mesh: PolygonMesh) -> int:
@@ -108,6 +136,7 @@ def osd_mesh_frames(mesh: PolygonMesh, scheme: Scheme, levels: int) -> tuple[np.
 def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERANCE) -> MeshOracleResult:
     """Compare every analysed vertex's limit position and normal with OpenSubdiv's (module docstring)."""
     scheme = check_scheme(scheme)
+    mesh, rounded = single_precision_tags(mesh)
     ours = mesh_limits(mesh, scheme)
     levels = _levels(mesh)
     limits, du, dv = osd_mesh_frames(mesh, scheme, levels)
@@ -136,4 +165,4 @@ def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERA
 
     (p, pv), (nrm, nv) = worst(position, analysed), worst(normal, one_sided)
     return MeshOracleResult(mesh.name, scheme.name, len(analysed), p, nrm, pv, nv, int(two_sided[analysed].sum()),
-                            len(darts), float(dart_position.max()) if len(darts) else 0.0, levels, float(tolerance))
+                            len(darts), float(dart_position.max()) if len(darts) else 0.0, levels, float(tolerance), rounded)

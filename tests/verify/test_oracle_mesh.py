@@ -58,3 +58,18 @@ def test_the_command_line(tmp_path, capsys):
     assert data["agrees"] and data["compared"] == 36 and data["position_disagreement"] <= 1e-12
     assert main(["oracle", "--mesh", str(path), "--kind", "dart"]) == 2
     assert "--mesh: not with --kind" in capsys.readouterr().err
+
+
+def test_a_sharpness_not_exact_in_single_precision_is_given_to_both_sides_as_opensubdiv_s_float():
+    """OpenSubdiv stores t crease ... 0.1 as the float nearest 1/10: both sides get that float (they agree), and the
+    count says so; OpenSubdiv's float is exactly what the toolkit analysed."""
+    from symdecomp.verify.oracle_mesh import single_precision_tags
+
+    tags = MeshTags(creases={e: Fraction(1, 10) for e in THROUGH}, corners={idx(1, 1): Fraction(7, 10)})
+    rounded, count = single_precision_tags(grid(tags))
+    assert count == len(THROUGH) + 1
+    assert set(rounded.tags.creases.values()) == {Fraction(13421773, 134217728)}
+    r = compare_mesh(grid(tags), catmull_clark())
+    assert r.rounded_tags == count and r.agrees, r
+    exact = MeshTags(creases={e: Fraction(1, 2) for e in THROUGH})
+    assert single_precision_tags(grid(exact))[1] == 0

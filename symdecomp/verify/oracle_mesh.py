@@ -17,6 +17,12 @@ At a dart OpenSubdiv's limit mask is the smooth vertex's (``Sdc::Scheme::Compute
 toolkit applies: the two differ by design, so dart vertices are compared apart
 (:attr:`MeshOracleResult.dart_position_disagreement`), outside the verdict.
 
+At a boundary vertex of ``k >= 3`` faces OpenSubdiv's cross-boundary tangent is Biermann et al.'s
+(``Sdc::Scheme<SCHEME_CATMARK>::assignCreaseLimitTangentMasks``, "the irregular case"): the tangent of their
+modified boundary rules (``theta = pi/k``), not of the surface OpenSubdiv refines with the plain crease rule. The
+positions there agree, the normals differ by design: they are compared apart
+(:attr:`MeshOracleResult.biermann_normal_disagreement`), outside the verdict.
+
 OpenSubdiv holds a sharpness in single precision: reading ``t crease 2/1/0 3 5 0.1`` it refines with the float
 nearest ``1/10``. Both sides are then given that float, exactly (:func:`single_precision_tags`; the toolkit's
 masks are exact in it), and the tags so rounded are counted (:attr:`MeshOracleResult.rounded_tags`).
@@ -67,6 +73,10 @@ class MeshOracleResult:
     tolerance: float
     #: Sharpness tags not exact in OpenSubdiv's single precision, given to both sides rounded to it.
     rounded_tags: int = 0
+    #: Boundary vertices of three or more faces (OpenSubdiv's normal is Biermann et al.'s) and their largest normal
+    #: disagreement, outside the verdict.
+    biermann: int = 0
+    biermann_normal_disagreement: float = 0.0
 
     @property
     def agrees(self) -> bool:
@@ -143,26 +153,33 @@ def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERA
     analysed = np.flatnonzero(ours.analysed())
     points = float_points(mesh)
     size = max(1.0, float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))))
-    two_sided, dart = np.zeros(len(points), dtype=bool), np.zeros(len(points), dtype=bool)
+    two_sided, dart, biermann = (np.zeros(len(points), dtype=bool) for _ in range(3))
     for kind in ours.kinds.kinds:
-        masks = ours.masks[kind]
+        masks, where = ours.masks[kind], ours.kinds.rings[kind][0]
         if (kind.closed and kind.name != "smooth" and len(kind.sectors) >= 2) or getattr(masks, "tangent_plane", None) is False:
-            two_sided[ours.kinds.rings[kind][0]] = True
+            two_sided[where] = True
+        elif not kind.closed and len(kind.sectors) == 1 and kind.sectors[0] >= 3 and scheme.name == "catmull-clark":
+            biermann[where] = True
         if kind.name == "dart":
-            dart[ours.kinds.rings[kind][0]] = True
+            dart[where] = True
     darts, analysed = analysed[dart[analysed]], analysed[~dart[analysed]]
     dart_position = np.linalg.norm(ours.limits[darts] - limits[darts], axis=1) / size
     cross = np.cross(du, dv)
     with np.errstate(invalid="ignore", divide="ignore"):
         theirs = cross / np.linalg.norm(cross, axis=1)[:, None]
     position = np.linalg.norm(ours.limits[analysed] - limits[analysed], axis=1) / size
-    one_sided = analysed[~two_sided[analysed]]
-    normal = np.linalg.norm(ours.normals[one_sided] - theirs[one_sided], axis=1)
-    normal = np.where(np.isnan(normal), np.inf, normal)
+    def normals(ids):
+        out = np.linalg.norm(ours.normals[ids] - theirs[ids], axis=1)
+        return np.where(np.isnan(out), np.inf, out)
+
+    apart = analysed[biermann[analysed] & ~two_sided[analysed]]
+    one_sided = analysed[~two_sided[analysed] & ~biermann[analysed]]
+    normal = normals(one_sided)
 
     def worst(values, ids):
         return (float(values.max()), int(ids[int(values.argmax())])) if len(values) else (0.0, None)
 
     (p, pv), (nrm, nv) = worst(position, analysed), worst(normal, one_sided)
     return MeshOracleResult(mesh.name, scheme.name, len(analysed), p, nrm, pv, nv, int(two_sided[analysed].sum()),
-                            len(darts), float(dart_position.max()) if len(darts) else 0.0, levels, float(tolerance), rounded)
+                            len(darts), float(dart_position.max()) if len(darts) else 0.0, levels, float(tolerance), rounded,
+                            len(apart), float(normals(apart).max()) if len(apart) else 0.0)

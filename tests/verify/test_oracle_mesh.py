@@ -73,3 +73,22 @@ def test_a_sharpness_not_exact_in_single_precision_is_given_to_both_sides_as_ope
     assert r.rounded_tags == count and r.agrees, r
     exact = MeshTags(creases={e: Fraction(1, 2) for e in THROUGH})
     assert single_precision_tags(grid(exact))[1] == 0
+
+
+GREGORY = """v 1 1 0\nv 1 0 0\nv 1 -1 0\nv 0 1 0\nv 0 0 1.5\nv 0 -1 0\nv -1 2 0\nv -1 1 0\nv -1 0 1.5\nv -1 -1 0
+v -2 2 0\nv -2 1 0\nv -2 0 0\nv -2 -1 0\nvt 0 0\nvn 0 0 1\ns off
+f 2/1/1 1/1/1 4/1/1 5/1/1\nf 3/1/1 2/1/1 5/1/1 6/1/1\nf 5/1/1 4/1/1 8/1/1 9/1/1\nf 6/1/1 5/1/1 9/1/1 10/1/1
+f 8/1/1 7/1/1 11/1/1 12/1/1\nf 9/1/1 8/1/1 12/1/1 13/1/1\nf 10/1/1 9/1/1 13/1/1 14/1/1
+t crease 2/1/0 4 8 0.900000
+"""
+
+
+def test_a_boundary_vertex_of_three_faces_has_its_normal_compared_apart(tmp_path, capsys):
+    """OpenSubdiv's gregory_test3 (its syntax: vt, vn, s, t crease with a float sharpness): vertex 7, on the boundary
+    with three faces, gets OpenSubdiv's Biermann cross tangent, not its surface's: compared apart, the rest agrees."""
+    path = tmp_path / "gregory.obj"
+    path.write_text(GREGORY)
+    assert main(["oracle", "--mesh", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["agrees"] and data["biermann"] == 1 and data["biermann_normal_disagreement"] > 1e-3
+    assert data["rounded_tags"] == 1 and data["darts"] == 2 and data["compared"] == 12

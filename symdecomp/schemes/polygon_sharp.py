@@ -182,4 +182,4 @@ def tagged_polygon_step(mesh: PolygonMesh):
             before, after = frozenset((f[k - 1], f[k])), frozenset((f[k], f[(k + 1) % len(f)]))
             quads.append((f[k], edge_point[after], face_point[i], edge_point[before]))
     tags = _child_tags(mesh, topo, edge_point, vertex_point, holes)
-    return PolygonStep(PolygonMesh(tuple(points), tuple(quads), mesh.name, tags=tags), vertex_point, face_point, edge_point)
+    return PolygonStep(PolygonMesh(tuple(points), tuple(quads), mesh.name, tags=tags, strict=False), vertex_point, face_point, edge_point)

@@ -54,6 +54,8 @@ def _mean(points) -> tuple:
 
 def _vertex(mesh: PolygonMesh, v: int, face_pts: list, faces_at: dict, nbrs: dict, boundary: set) -> tuple:
     p = mesh.points[v]
+    if v not in nbrs:  # in no face (an isolated vertex left out of the analysis): it stays
+        return p
     if v in boundary:
         ends = [w for w in nbrs[v] if frozenset((v, w)) in boundary_edges(mesh)]
         if len(faces_at[v]) == 1:
@@ -114,5 +116,5 @@ def catmull_clark_polygon_step(mesh: PolygonMesh) -> PolygonStep:
         for k in range(c):
             before, after = frozenset((f[k - 1], f[k])), frozenset((f[k], f[(k + 1) % c]))
             quads.append((f[k], edge_point[after], face_point[i], edge_point[before]))
-    refined = PolygonMesh(tuple(points), tuple(quads), mesh.name)
+    refined = PolygonMesh(tuple(points), tuple(quads), mesh.name, strict=False)  # isolated vertices stay
     return PolygonStep(refined, vertex_point, face_point, edge_point)

@@ -91,3 +91,27 @@ def test_refine_mesh_keeps_the_creases_decayed():
     one, two = refine_mesh(mesh, catmull_clark(), 1), refine_mesh(mesh, catmull_clark(), 2)
     assert sorted(one.creases.values()) == [1, 1] and two.creases == {}
     assert len(two.faces) == 16 * len(mesh.faces)
+
+
+def test_an_isolated_vertex_left_out_stays_where_it_is():
+    """A vertex in no face (lenient reading) does not stop the first step (it raised KeyError): it stays, unanalysed."""
+    points = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (1, 3, 0), (9, 9, 9)]
+    mesh = PolygonMesh.from_arrays(points, [(0, 1, 2, 3), (3, 2, 4)], strict=False)
+    assert mesh.defects.isolated_vertices == (5,)
+    step = catmull_clark_polygon_step(mesh)
+    assert step.mesh.points[5] == (9, 9, 9) and len(step.mesh.faces) == 7
+
+
+def test_a_valence_2_vertex_on_a_crease_is_left_out_with_the_reason():
+    """OpenSubdiv's val2_interior: a cube with a vertex in the middle of an edge (two pentagons), the edge's halves
+    infinitely sharp: after the first step the vertex has two faces and two sharp edges; it is not analysed, in one
+    line (the sector model refused it: exit 2), and everything else is."""
+    from symdecomp.analysis.mesh_limits import mesh_limits
+
+    points = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2), (1, 0, 0)]
+    faces = [(0, 3, 2, 1, 8), (4, 5, 6, 7), (0, 8, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+    tags = MeshTags(creases={(0, 8): Fraction(10), (1, 8): Fraction(10)})
+    step = catmull_clark_polygon_step(PolygonMesh.from_arrays(points, faces, tags=tags))
+    assert step.mesh.valence(8) == 2
+    left_out = mesh_limits(step.mesh, catmull_clark()).not_analysed()
+    assert list(left_out) == [8] and "valence 2 with sharp edges" in left_out[8]

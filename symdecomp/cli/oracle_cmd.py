@@ -176,7 +176,7 @@ def _run_mesh(args) -> int:
         print(f"  {'unit normal':<16} {r.normal_disagreement:9.2e}  (worst at vertex {r.worst_normal_vertex}; "
               f"{r.normals_skipped} vertices not compared: a crease's two sides, or no certified tangent plane)")
         if r.biermann:
-            print(f"  {r.biermann} boundary vertices of 3 or more faces: normals apart, OpenSubdiv's cross tangent there is "
+            print(f"  {r.biermann} boundary vertices of more faces than a regular one: normals apart, OpenSubdiv's cross tangent there is "
                   f"Biermann et al.'s, not its surface's (they differ by {r.biermann_normal_disagreement:.2e})")
         if r.rounded_tags:
             print(f"  {r.rounded_tags} sharpness tags not exact in single precision: both sides given OpenSubdiv's float")

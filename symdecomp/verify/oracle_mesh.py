@@ -17,9 +17,10 @@ At a dart OpenSubdiv's limit mask is the smooth vertex's (``Sdc::Scheme::Compute
 toolkit applies: the two differ by design, so dart vertices are compared apart
 (:attr:`MeshOracleResult.dart_position_disagreement`), outside the verdict.
 
-At a boundary vertex of ``k >= 3`` faces OpenSubdiv's cross-boundary tangent is Biermann et al.'s
-(``Sdc::Scheme<SCHEME_CATMARK>::assignCreaseLimitTangentMasks``, "the irregular case"): the tangent of their
-modified boundary rules (``theta = pi/k``), not of the surface OpenSubdiv refines with the plain crease rule. The
+At a boundary vertex of more faces than a regular one (``k >= 3`` for Catmull-Clark, ``k >= 4`` for Loop; a
+semi-sharp crease into it decays first) OpenSubdiv's cross-boundary tangent is Biermann et al.'s
+(``Sdc::Scheme<...>::assignCreaseLimitTangentMasks``, "the irregular case"): the tangent of their modified
+boundary rules (``theta = pi/k``), not of the surface OpenSubdiv refines with the plain crease rule. The
 positions there agree, the normals differ by design: they are compared apart
 (:attr:`MeshOracleResult.biermann_normal_disagreement`), outside the verdict.
 
@@ -73,7 +74,7 @@ class MeshOracleResult:
     tolerance: float
     #: Sharpness tags not exact in OpenSubdiv's single precision, given to both sides rounded to it.
     rounded_tags: int = 0
-    #: Boundary vertices of three or more faces (OpenSubdiv's normal is Biermann et al.'s) and their largest normal
+    #: Boundary vertices of more faces than a regular one (OpenSubdiv's normal is Biermann et al.'s) and their largest normal
     #: disagreement, outside the verdict.
     biermann: int = 0
     biermann_normal_disagreement: float = 0.0
@@ -153,12 +154,13 @@ def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERA
     analysed = np.flatnonzero(ours.analysed())
     points = float_points(mesh)
     size = max(1.0, float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))))
+    regular = 2 if scheme.lattice.face_sides == 4 else 3  # faces at a regular boundary vertex
     two_sided, dart, biermann = (np.zeros(len(points), dtype=bool) for _ in range(3))
     for kind in ours.kinds.kinds:
         masks, where = ours.masks[kind], ours.kinds.rings[kind][0]
         if (kind.closed and kind.name != "smooth" and len(kind.sectors) >= 2) or getattr(masks, "tangent_plane", None) is False:
             two_sided[where] = True
-        elif not kind.closed and len(kind.sectors) == 1 and kind.sectors[0] >= 3 and scheme.name == "catmull-clark":
+        elif not kind.closed and (len(kind.sectors) == 1 or kind.sharpness < 10) and sum(kind.sectors) > regular:
             biermann[where] = True
         if kind.name == "dart":
             dart[where] = True

@@ -92,3 +92,25 @@ def test_a_boundary_vertex_of_three_faces_has_its_normal_compared_apart(tmp_path
     data = json.loads(capsys.readouterr().out)
     assert data["agrees"] and data["biermann"] == 1 and data["biermann_normal_disagreement"] > 1e-3
     assert data["rounded_tags"] == 1 and data["darts"] == 2 and data["compared"] == 12
+
+
+def test_a_control_net_folded_over_keeps_the_surface_s_normal(tmp_path, capsys):
+    """OpenSubdiv's val2_foldover, one piece: a flat pentagon with a quad and a triangle folded behind it. The vertex
+    area of one ring points against the faces' turn; the normal (one sign per kind) still agrees with OpenSubdiv's
+    (it was turned over: 2.0 apart)."""
+    path = tmp_path / "fold.obj"
+    path.write_text("v 0.8 0 0.6\nv 1.2 0 0.6\nv 1.4 0 1.0\nv 1.0 0 1.4\nv 0.6 0 1.0\nf 1 2 3 4 5\nf 4 3 2 1\nf 4 1 5\n")
+    assert main(["oracle", "--mesh", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["agrees"] and data["compared"] == 11 and data["normal_disagreement"] <= 1e-12
+
+
+def test_a_loop_boundary_vertex_of_four_faces_has_its_normal_compared_apart():
+    """Loop's regular boundary vertex has 3 faces; at 4 OpenSubdiv's cross tangent is the general formula's."""
+    from symdecomp.schemes.meshfile import PolygonMesh
+
+    points = [(0, 0, 0), (2, 0, Fraction(1, 2)), (2, 2, 1), (0, 2, 0), (-2, 2, Fraction(-3, 10)), (-3, 0, Fraction(7, 10)),
+              (1, 4, 0), (-1, 4, 1)]
+    faces = [(0, 1, 2), (0, 2, 3), (0, 3, 4), (0, 4, 5), (3, 2, 6), (3, 7, 4), (3, 6, 7)]
+    r = compare_mesh(PolygonMesh.from_arrays(points, faces), loop())
+    assert r.biermann == 1 and r.biermann_normal_disagreement > 1e-3 and r.agrees, r

@@ -2,6 +2,7 @@
 (skipped where OpenSubdiv is not installed)."""
 
 import json
+import math
 from fractions import Fraction
 
 import pytest
@@ -114,3 +115,23 @@ def test_a_loop_boundary_vertex_of_four_faces_has_its_normal_compared_apart():
     faces = [(0, 1, 2), (0, 2, 3), (0, 3, 4), (0, 4, 5), (3, 2, 6), (3, 7, 4), (3, 6, 7)]
     r = compare_mesh(PolygonMesh.from_arrays(points, faces), loop())
     assert r.biermann == 1 and r.biermann_normal_disagreement > 1e-3 and r.agrees, r
+
+
+def test_smooth_and_infinitely_sharp_kinds_are_taken_at_level_0_semi_sharp_ones_after_the_decay():
+    """OpenSubdiv's rounding grows with levels (the car shape: 1.9e-11 in a smooth normal after 6 levels): only the
+    kinds with a semi-sharp feature are taken after ceil(s) levels; every vertex still agrees."""
+    import numpy as np
+
+    from symdecomp.analysis.mesh_limits import mesh_limits
+    from symdecomp.verify.oracle_mesh import _frames, osd_mesh_frames
+
+    mesh = grid(MeshTags(creases={e: Fraction(6) for e in THROUGH}))
+    ours = mesh_limits(mesh, catmull_clark())
+    frames, base, late = _frames(mesh, catmull_clark(), ours, 6), osd_mesh_frames(mesh, catmull_clark(), 0), \
+        osd_mesh_frames(mesh, catmull_clark(), 6)
+    for kind in ours.kinds.kinds:
+        where = ours.kinds.rings[kind][0]
+        expected = base if kind.name == "smooth" or kind.sharpness == math.inf else late
+        assert all(np.array_equal(f[where], e[where]) for f, e in zip(frames, expected)), kind
+    assert any(k.name == "crease" and k.sharpness == 6 for k in ours.kinds.kinds)
+    assert compare_mesh(mesh, catmull_clark()).agrees

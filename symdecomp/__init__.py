@@ -50,8 +50,8 @@ nothing else.
                    and written as OBJ, OFF and PLY (``meshformats``; OBJ with OpenSubdiv's tags,
                    ``mesh_obj``; PLY, ``mesh_ply``), its sharpness tags and the elements left out
                    of it (``mesh_tags``); one exact Catmull-Clark step on a mesh
-                   of any polygons (``polygon_step``), whole meshes refined exactly with their tags
-                   (``mesh_refine``)
+                   of any polygons (``polygon_step``; with OpenSubdiv's tags, ``polygon_sharp``),
+                   whole meshes refined exactly with their tags (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
                    spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),

@@ -145,6 +145,8 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> tuple[Neig
     corner = vertex_sharpness >= SHARPNESS_INFINITE
     if not marks and not corner:
         return _smooth(faces)
+    if closed and faces < 3:
+        return f"an interior vertex of valence {faces} with sharp edges or a corner tag (the sector model takes 3 or more faces)"
     if faces > MAX_SECTOR_FACES:
         return f"{faces} faces around a sharp vertex, more than {MAX_SECTOR_FACES}"
     if not closed and faces == 1 and mesh.tags.interpolate_boundary == "edge-only":

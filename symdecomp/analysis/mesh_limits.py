@@ -16,7 +16,8 @@ then converts them to float64 once. :func:`mesh_limits` gathers each kind's 1-ri
 applies its masks with one matrix product: no per-vertex symbolic work. The unit normal is
 ``t_1 x t_2 / |t_1 x t_2|`` of the first two tangent masks (at a crease: the curve tangent and the first
 sector's cross tangent, so the normal of that side), turned to the side the faces are counter-clockwise
-from. With ``exact=True`` the limit positions are also computed exactly, vertex by vertex (slow; on request).
+from (one sign per kind, by the total of its rings' vector areas: a control net folded over at a vertex does not
+turn its normal). With ``exact=True`` the limit positions are also computed exactly, vertex by vertex (slow; on request).
 
 >>> from symdecomp.schemes.meshfile import PolygonMesh
 >>> from symdecomp.schemes.scheme import catmull_clark
@@ -213,8 +214,9 @@ def _apply(points: np.ndarray, rings: np.ndarray, masks: KindMasks, edge_count: 
     tangents = np.einsum("tk,mkc->mtc", masks.tangents[:2], ring_points)
     cross = np.cross(tangents[:, 0], tangents[:, 1])
     norm = np.linalg.norm(cross, axis=1)
-    side = np.sign(np.einsum("mc,mc->m", cross, _orientation(points, rings, edge_count, masks.kind.closed)))
-    side[side == 0] = 1
+    # t_1 x t_2 turns the same way against the faces at every vertex of a kind (a linear map of the ring), so one sign
+    # serves the kind: the vector areas' total decides it (one vertex's control net folded over cannot flip its normal)
+    side = np.sign(np.einsum("mc,mc->", cross, _orientation(points, rings, edge_count, masks.kind.closed))) or 1.0
     with np.errstate(invalid="ignore", divide="ignore"):
         normal = cross * (side / np.where(norm > 0, norm, np.nan))[:, None]
     return limit, normal, tangents

@@ -177,6 +177,11 @@ def _run_mesh(args) -> int:
               f"{r.worst_position_vertex})")
         print(f"  {'unit normal':<16} {r.normal_disagreement:9.2e}  (worst at vertex {r.worst_normal_vertex}; "
               f"{r.normals_skipped} vertices not compared: a crease's two sides, or no certified tangent plane)")
+        if r.biermann:
+            print(f"  {r.biermann} boundary vertices of more faces than a regular one: normals apart, OpenSubdiv's cross tangent there is "
+                  f"Biermann et al.'s, not its surface's (they differ by {r.biermann_normal_disagreement:.2e})")
+        if r.rounded_tags:
+            print(f"  {r.rounded_tags} sharpness tags not exact in single precision: both sides given OpenSubdiv's float")
         if r.darts:
             print(f"  {r.darts} dart vertices apart: OpenSubdiv's limit mask there is the smooth one, not the dart's "
                   f"eigenvector (they differ by {r.dart_position_disagreement:.2e})")

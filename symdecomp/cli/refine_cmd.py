@@ -14,6 +14,7 @@ triangles. ``--json`` prints ``{"mesh", "scheme", "steps", "vertices", "faces", 
 from __future__ import annotations
 
 import argparse
+import sys
 
 from symdecomp.cli.common import Once, flag, integer, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_file, write_output_file
@@ -52,6 +53,17 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+def _obj_tags(refined, tags) -> str:
+    """OpenSubdiv's ``t corner`` lines of the corners still sharp and ``t interpolateboundary`` when not the default."""
+    def value(s):
+        return 10.0 if s == float("inf") else float(s)
+
+    lines = [f"t corner 1/1/0 {v} {value(s)!r}" for v, s in refined.corners.items()]
+    if tags.interpolate_boundary != "edge-and-corner":
+        lines.append(f"t interpolateboundary 1/0/0 {('none', 'edge-and-corner', 'edge-only').index(tags.interpolate_boundary)}")
+    return "".join(line + "\n" for line in lines)
+
+
 def run(args) -> int:
     from symdecomp.output.colored_mesh import colored_obj, colored_ply
     from symdecomp.schemes.mesh_refine import refine_mesh
@@ -71,9 +83,13 @@ def run(args) -> int:
     refined = refine_mesh(mesh, scheme, args.steps, progress=lambda xs, total: progress(xs, total, "refine", enabled=not args.quiet))
     points = [[float(c) for c in p] for p in refined.points]
     if str(args.out).lower().endswith(".obj"):
-        content = colored_obj(points, refined.faces, creases=refined.creases)
+        content = colored_obj(points, refined.faces, creases=refined.creases) + _obj_tags(refined, mesh.tags)
     else:
         content = colored_ply(points, refined.faces)
+        if refined.creases or refined.corners or mesh.tags.interpolate_boundary != "edge-and-corner":
+            print(f"symdecomp refine: {args.out}: PLY holds no sharpness tags: the {len(refined.creases)} crease edges, "
+                  f"{len(refined.corners)} corners and the boundary interpolation ({mesh.tags.interpolate_boundary}) "
+                  "are not in it (write .obj to keep them)", file=sys.stderr)
     written = write_output_file(args.out, content, "--out")
     summary = {"mesh": mesh.name, "scheme": scheme.name, "steps": args.steps, "vertices": len(refined.points),
                "faces": len(refined.faces), "creases": len(refined.creases), "out": str(args.out), "bytes": written}

@@ -8,6 +8,11 @@ midpoints); OpenSubdiv's boundary rules under ``edge-and-corner`` interpolation:
 midpoint, a boundary vertex ``(u + 6 v + w)/8`` with its two boundary neighbours, a boundary vertex of one face
 stays (a corner). The topology is :meth:`~symdecomp.schemes.meshfile.PolygonMesh.split_into_quads`'s.
 
+With OpenSubdiv's tags (uniform creasing, ``catmark`` triangles) the step takes OpenSubdiv's sharp rules
+(:mod:`symdecomp.schemes.polygon_sharp`): a crease edge's point is the midpoint (blended with the smooth one below
+sharpness 1), a vertex's rule is its kind's (smooth, dart, crease, corner) blended with the next level's, and the
+refined mesh carries the decayed tags (each half of a crease ``s - 1``, a corner ``s - 1``, a hole's quads holes).
+
 The result records which new vertex came from which old vertex, edge or face: the centre of an ``n``-gon
 (``n != 4``) is an extraordinary vertex of valence ``n`` that came from a face.
 
@@ -49,6 +54,8 @@ def _mean(points) -> tuple:
 
 def _vertex(mesh: PolygonMesh, v: int, face_pts: list, faces_at: dict, nbrs: dict, boundary: set) -> tuple:
     p = mesh.points[v]
+    if v not in nbrs:  # in no face (an isolated vertex left out of the analysis): it stays
+        return p
     if v in boundary:
         ends = [w for w in nbrs[v] if frozenset((v, w)) in boundary_edges(mesh)]
         if len(faces_at[v]) == 1:
@@ -76,8 +83,9 @@ def catmull_clark_polygon_step(mesh: PolygonMesh) -> PolygonStep:
     if not isinstance(mesh, PolygonMesh):
         raise InvalidMeshError(f"mesh must be a PolygonMesh, got {type(mesh).__name__}")
     if not mesh.tags.is_empty() or mesh.tags.interpolate_boundary != "edge-and-corner":
-        raise InvalidMeshError(f"{mesh.name}: a mesh with faces other than quads and sharpness tags or another boundary "
-                               "interpolation: its first step with sharp rules is not implemented here")
+        from symdecomp.schemes.polygon_sharp import tagged_polygon_step
+
+        return tagged_polygon_step(mesh)
     faces = mesh.faces
     face_pts = [_mean(mesh.points[v] for v in f) for f in faces]
     faces_at: dict[int, list[int]] = {}
@@ -108,5 +116,5 @@ def catmull_clark_polygon_step(mesh: PolygonMesh) -> PolygonStep:
         for k in range(c):
             before, after = frozenset((f[k - 1], f[k])), frozenset((f[k], f[(k + 1) % c]))
             quads.append((f[k], edge_point[after], face_point[i], edge_point[before]))
-    refined = PolygonMesh(tuple(points), tuple(quads), mesh.name)
+    refined = PolygonMesh(tuple(points), tuple(quads), mesh.name, strict=False)  # isolated vertices stay
     return PolygonStep(refined, vertex_point, face_point, edge_point)

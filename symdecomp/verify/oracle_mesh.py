@@ -16,6 +16,17 @@ At a dart OpenSubdiv's limit mask is the smooth vertex's (``Sdc::Scheme::Compute
 ``RULE_DART`` as ``RULE_SMOOTH``), not a left eigenvector of the dart's subdivision matrix, whose exact mask the
 toolkit applies: the two differ by design, so dart vertices are compared apart
 (:attr:`MeshOracleResult.dart_position_disagreement`), outside the verdict.
+
+At a boundary vertex of more faces than a regular one (``k >= 3`` for Catmull-Clark, ``k >= 4`` for Loop; a
+semi-sharp crease into it decays first) OpenSubdiv's cross-boundary tangent is Biermann et al.'s
+(``Sdc::Scheme<...>::assignCreaseLimitTangentMasks``, "the irregular case"): the tangent of their modified
+boundary rules (``theta = pi/k``), not of the surface OpenSubdiv refines with the plain crease rule. The
+positions there agree, the normals differ by design: they are compared apart
+(:attr:`MeshOracleResult.biermann_normal_disagreement`), outside the verdict.
+
+OpenSubdiv holds a sharpness in single precision: reading ``t crease 2/1/0 3 5 0.1`` it refines with the float
+nearest ``1/10``. Both sides are then given that float, exactly (:func:`single_precision_tags`; the toolkit's
+masks are exact in it), and the tags so rounded are counted (:attr:`MeshOracleResult.rounded_tags`).
 """
 
 from __future__ import annotations
@@ -31,7 +42,7 @@ from symdecomp.errors import InternalError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 
-__all__ = ["MeshOracleResult", "compare_mesh", "osd_mesh_frames", "TOLERANCE"]
+__all__ = ["MeshOracleResult", "compare_mesh", "osd_mesh_frames", "single_precision_tags", "TOLERANCE"]
 
 #: The default agreement: positions relative to the mesh's size, normals as unit vectors.
 TOLERANCE = 1e-12
@@ -61,6 +72,12 @@ class MeshOracleResult:
     #: OpenSubdiv's refinement levels before the limit.
     levels: int
     tolerance: float
+    #: Sharpness tags not exact in OpenSubdiv's single precision, given to both sides rounded to it.
+    rounded_tags: int = 0
+    #: Boundary vertices of more faces than a regular one (OpenSubdiv's normal is Biermann et al.'s) and their largest normal
+    #: disagreement, outside the verdict.
+    biermann: int = 0
+    biermann_normal_disagreement: float = 0.0
 
     @property
     def agrees(self) -> bool:
@@ -70,6 +87,28 @@ class MeshOracleResult:
         out = {name: getattr(self, name) for name in self.__dataclass_fields__}
         out["agrees"] = self.agrees
         return out
+
+
+def single_precision_tags(mesh: PolygonMesh) -> tuple[PolygonMesh, int]:
+    """``mesh`` with each finite sharpness replaced by the single-precision float OpenSubdiv stores for it (exactly,
+    as a ``Fraction``), and how many tags changed; ``mesh`` itself when none does."""
+    from fractions import Fraction
+
+    from symdecomp.schemes.mesh_tags import MeshTags
+
+    def single(s):
+        return s if s >= 10 else Fraction(float(np.float32(float(s))))
+
+    tags = mesh.tags
+    creases = {e: single(s) for e, s in tags.creases.items()}
+    corners = {v: single(s) for v, s in tags.corners.items()}
+    changed = sum(creases[e] != s for e, s in tags.creases.items()) + sum(corners[v] != s for v, s in tags.corners.items())
+    if not changed:
+        return mesh, 0
+    rounded = MeshTags(creases, corners, tags.holes, tags.interpolate_boundary, tags.crease_method, tags.triangle_subdivision)
+    out = PolygonMesh(mesh.points, mesh.faces, mesh.name, tags=rounded)
+    out.defects, out.face_index = mesh.defects, mesh.face_index
+    return out, changed
 
 
 def _levels(mesh: PolygonMesh) -> int:
@@ -105,35 +144,60 @@ def osd_mesh_frames(mesh: PolygonMesh, scheme: Scheme, levels: int) -> tuple[np.
     return limits, du, dv
 
 
+def _frames(mesh: PolygonMesh, scheme: Scheme, ours, levels: int) -> tuple:
+    """OpenSubdiv's frames after ``levels`` levels at the kinds with a semi-sharp feature (it must decay first), at level
+    0 elsewhere: a smooth or infinitely sharp neighbourhood refines by the same rules at every level, and OpenSubdiv's
+    own rounding grows with the levels (``1e-11`` in the normals after 6)."""
+    frames = osd_mesh_frames(mesh, scheme, levels)
+    if levels == 0:
+        return frames
+    base = osd_mesh_frames(mesh, scheme, 0)
+    for kind in ours.kinds.kinds:
+        if kind.name == "smooth" or kind.sharpness == math.inf:
+            where = ours.kinds.rings[kind][0]
+            for frame, level0 in zip(frames, base):
+                frame[where] = level0[where]
+    return frames
+
+
 def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERANCE) -> MeshOracleResult:
     """Compare every analysed vertex's limit position and normal with OpenSubdiv's (module docstring)."""
     scheme = check_scheme(scheme)
+    mesh, rounded = single_precision_tags(mesh)
     ours = mesh_limits(mesh, scheme)
     levels = _levels(mesh)
-    limits, du, dv = osd_mesh_frames(mesh, scheme, levels)
+    limits, du, dv = _frames(mesh, scheme, ours, levels)
     analysed = np.flatnonzero(ours.analysed())
     points = float_points(mesh)
     size = max(1.0, float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))))
-    two_sided, dart = np.zeros(len(points), dtype=bool), np.zeros(len(points), dtype=bool)
+    regular = 2 if scheme.lattice.face_sides == 4 else 3  # faces at a regular boundary vertex
+    two_sided, dart, biermann = (np.zeros(len(points), dtype=bool) for _ in range(3))
     for kind in ours.kinds.kinds:
-        masks = ours.masks[kind]
+        masks, where = ours.masks[kind], ours.kinds.rings[kind][0]
         if (kind.closed and kind.name != "smooth" and len(kind.sectors) >= 2) or getattr(masks, "tangent_plane", None) is False:
-            two_sided[ours.kinds.rings[kind][0]] = True
+            two_sided[where] = True
+        elif not kind.closed and (len(kind.sectors) == 1 or kind.sharpness < 10) and sum(kind.sectors) > regular:
+            biermann[where] = True
         if kind.name == "dart":
-            dart[ours.kinds.rings[kind][0]] = True
+            dart[where] = True
     darts, analysed = analysed[dart[analysed]], analysed[~dart[analysed]]
     dart_position = np.linalg.norm(ours.limits[darts] - limits[darts], axis=1) / size
     cross = np.cross(du, dv)
     with np.errstate(invalid="ignore", divide="ignore"):
         theirs = cross / np.linalg.norm(cross, axis=1)[:, None]
     position = np.linalg.norm(ours.limits[analysed] - limits[analysed], axis=1) / size
-    one_sided = analysed[~two_sided[analysed]]
-    normal = np.linalg.norm(ours.normals[one_sided] - theirs[one_sided], axis=1)
-    normal = np.where(np.isnan(normal), np.inf, normal)
+    def normals(ids):
+        out = np.linalg.norm(ours.normals[ids] - theirs[ids], axis=1)
+        return np.where(np.isnan(out), np.inf, out)
+
+    apart = analysed[biermann[analysed] & ~two_sided[analysed]]
+    one_sided = analysed[~two_sided[analysed] & ~biermann[analysed]]
+    normal = normals(one_sided)
 
     def worst(values, ids):
         return (float(values.max()), int(ids[int(values.argmax())])) if len(values) else (0.0, None)
 
     (p, pv), (nrm, nv) = worst(position, analysed), worst(normal, one_sided)
     return MeshOracleResult(mesh.name, scheme.name, len(analysed), p, nrm, pv, nv, int(two_sided[analysed].sum()),
-                            len(darts), float(dart_position.max()) if len(darts) else 0.0, levels, float(tolerance))
+                            len(darts), float(dart_position.max()) if len(darts) else 0.0, levels, float(tolerance), rounded,
+                            len(apart), float(normals(apart).max()) if len(apart) else 0.0)

@@ -40,3 +40,30 @@ def test_bad_steps_and_out_are_one_line(tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "give a .obj or .ply file name" in err
     assert not (tmp_path / "r.stl").exists() and not (tmp_path / "r.obj").exists()
+
+
+CORNERED = """v 0 0 0\nv 2 0 0\nv 4 0 0\nv 0 2 0\nv 2 2 1\nv 4 2 0\nv 1 4 0\nv 3 4 0\nv 2 5 1
+f 1 2 5 4\nf 2 3 6 5\nf 4 5 7\nf 5 6 8 9 7
+t crease 2/1/0 3 4 3.5
+t corner 1/1/0 4 2.5
+t interpolateboundary 1/0/0 2
+"""
+
+
+def test_a_tagged_mixed_mesh_keeps_its_corners_and_boundary_rule_in_obj_and_says_what_ply_loses(tmp_path, capsys):
+    """Refined once (Catmull-Clark's first step with OpenSubdiv's rules), the corner tag 5/2 is 3/2 and edge-only
+    interpolation stays (both were dropped from the OBJ, changing the surface); a PLY says in one line what it lacks."""
+    src = tmp_path / "cornered.obj"
+    src.write_text(CORNERED)
+    out = tmp_path / "r.obj"
+    assert main(["refine", str(src), "--steps", "1", "--out", str(out)]) == 0
+    back = read_mesh(out)
+    exact = refine_mesh(read_mesh(src), catmull_clark(), 1)
+    assert dict(back.tags.corners) == {4: 1.5} == exact.corners and back.tags.interpolate_boundary == "edge-only"
+    assert sorted(back.tags.creases.values()) == [2.5, 2.5]
+    assert main(["inspect", str(out), "--json"]) in (0, 1)
+    capsys.readouterr()
+    assert main(["refine", str(src), "--steps", "1", "--out", str(tmp_path / "r.ply")]) == 0
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"symdecomp refine: {tmp_path / 'r.ply'}: PLY holds no sharpness tags: the 2 crease edges, 1 corners "
+                   "and the boundary interpolation (edge-only) are not in it (write .obj to keep them)"]

@@ -174,7 +174,8 @@ def tagged_polygon_step(mesh: PolygonMesh):
     for edge in topo.edge_faces:
         edge_point[edge] = len(points)
         points.append(_edge(mesh, edge, topo, face_pts))
-    quads, holes = [], []
+    quads: list[tuple[int, int, int, int]] = []
+    holes: list[int] = []
     for i, f in enumerate(mesh.faces):
         for k in range(len(f)):
             if i in mesh.tags.holes:

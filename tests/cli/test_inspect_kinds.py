@@ -10,6 +10,7 @@ import pytest
 
 from symdecomp.cli import main
 from symdecomp.output.colored_mesh import CATEGORY_COLORS
+from symdecomp.schemes import meshformats
 from symdecomp.schemes.mesh_tags import MeshTags
 from symdecomp.schemes.meshformats import encode_mesh
 from tests.analysis.test_mesh_limits import grid, idx
@@ -64,10 +65,9 @@ def test_colour_by_regime_in_obj_and_displacement_as_quality(tmp_path):
 def test_something_left_out_is_exit_1_and_strict_refuses_it(tmp_path, capsys, monkeypatch):
     """Two creases of different sharpness meet at vertex 14: it is not analysed (exit 1, the reason named), and
     ``--strict`` refuses in one line (exit 2). The tagged mesh is handed to the command as the reader would."""
-    import symdecomp.cli.inspect_cmd as inspect_cmd
 
     tags = MeshTags(creases={(idx(1, 2), idx(2, 2)): Fraction(1), (idx(2, 2), idx(3, 2)): Fraction(2)})
-    monkeypatch.setattr(inspect_cmd, "read_mesh", lambda *args, **kwargs: grid(tags))
+    monkeypatch.setattr(meshformats, "read_mesh", lambda *args, **kwargs: grid(tags))
     (tmp_path / "tagged.obj").write_text("")
     assert main(["inspect", str(tmp_path / "tagged.obj")]) == 1
     assert "not analysed: 1 vertices (14): sharp edges of different sharpness (1, 2) meet there" in capsys.readouterr().out
@@ -125,12 +125,11 @@ def test_the_memory_estimate_comes_before_reading(tmp_path, capsys, monkeypatch)
     the mesh is never opened by the estimate (the reader is the one to refuse it)."""
     import os
 
-    import symdecomp.cli.inspect_cmd as inspect_cmd
     import symdecomp.validate as validate
     from symdecomp.cli.inspect_outputs import MEMORY_PER_FILE_BYTE, memory_note
 
     monkeypatch.setattr(validate, "MEMORY_LIMIT", 10 * MEMORY_PER_FILE_BYTE["text"])
-    monkeypatch.setattr(inspect_cmd, "read_mesh", lambda *a, **k: pytest.fail("read before the estimate"))
+    monkeypatch.setattr(meshformats, "read_mesh", lambda *a, **k: pytest.fail("read before the estimate"))
     assert main(["inspect", str(MODEL)]) != 0
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "reading" in err and "valences-3-5-6.obj" in err and "memory" in err

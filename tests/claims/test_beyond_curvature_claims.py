@@ -28,7 +28,7 @@ def test_the_statuses_for_catmull_clark():
     assert [r.status for r in results] == [Status.VERIFIED, Status.PROVED, Status.PROVED, Status.VERIFIED, Status.VERIFIED]
     assert [r.scope for r in results] == [Scope.RANGE, Scope.EVERY_N, Scope.EVERY_N, Scope.SINGLE_CASE, Scope.RANGE]
     assert results[0].valences == b1.VALENCES
-    assert "for every n >= 5 the hyperbolic eigenvalue exceeds lambda_1^2" in str(results[0].evidence)
+    assert "for every n >= 5 the hyperbolic eigenvalue exceeds lambda_1**2" in str(results[0].evidence)
 
 
 def _off_regular(alpha3, beta3):

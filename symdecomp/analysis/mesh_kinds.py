@@ -16,8 +16,7 @@ kind's masks apply to all its vertices with one matrix product. A vertex whose k
 (next to a hole, sharp edges of different sharpness, a semi-sharp vertex tag, too many faces, the boundary
 left out under ``none`` interpolation) is listed with the reason.
 
->>> from symdecomp.validate import MAX_MESH_VALENCE
-from symdecomp.schemes.meshfile import PolygonMesh
+>>> from symdecomp.schemes.meshfile import PolygonMesh
 >>> grid = PolygonMesh.from_arrays([(x, y, 0) for y in range(3) for x in range(3)],
 ...     [(0, 1, 4, 3), (1, 2, 5, 4), (3, 4, 7, 6), (4, 5, 8, 7)])
 >>> from symdecomp.schemes.lattice import QUAD

@@ -113,6 +113,6 @@ def c1_figure(scheme: Scheme, rows: list[dict], vertices: list | None = None):
     labels = [r.get("vertex") or str(r["n"]) for r in rows]
     _bounds_panel(fig.add_subplot(grid[1, :]), rows, labels)
     what = "Reif's test" if vertices is None else "Zorin's conditions"
-    fig.suptitle(f"{scheme.name}: {what}; the characteristic map (inner ring boundary blue, sector boundaries or sharp "
-                 "edges), and its certified bounds", fontsize=10)
+    fig.suptitle(f"{scheme.name}: {what}; the characteristic map (inner ring boundary blue,\nsector boundaries or sharp "
+                 "edges), and its certified bounds", fontsize=10)  # two lines: one runs past a one-map figure
     return fig

@@ -181,9 +181,15 @@ def _exact_limit(mesh: PolygonMesh, ring: tuple, weights: tuple) -> tuple:
 
     groups = [(ring[0],)] + [tuple(part) for part in ring[1:]]
     sums = [[sum((mesh.points[v][c] for v in group), Fraction(0)) for c in range(3)] for group in groups]
+    return exact_combination(weights, [[rational(x) for x in s] for s in sums])
+
+
+def exact_combination(weights, points) -> tuple:
+    """``sum_k w_k p_k`` coordinate by coordinate, exactly: rational points, weights exact numbers (a rational sum is
+    returned as it is, an algebraic one with its denominators made rational by ``radsimp``)."""
     limit = []
     for c in range(3):
-        total = sum((w * rational(s[c]) for w, s in zip(weights, sums)), sp.Integer(0))
+        total = sum((w * p[c] for w, p in zip(weights, points) if w != 0), sp.Integer(0))
         limit.append(total if total.is_Rational else sp.radsimp(total))
     return tuple(limit)
 

@@ -223,12 +223,9 @@ def _apply(points: np.ndarray, rings: np.ndarray, masks: KindMasks, edge_count: 
 
 
 def _exact_limit(mesh: PolygonMesh, ring, weights) -> tuple:
-    out = []
-    for c in range(3):
-        total = sum((w * sp.Rational(mesh.points[v][c].numerator, mesh.points[v][c].denominator)
-                     for w, v in zip(weights, ring) if w != 0), sp.Integer(0))
-        out.append(total if total.is_Rational else sp.radsimp(total))
-    return tuple(out)
+    from symdecomp.analysis.inspection import exact_combination
+
+    return exact_combination(weights, [[sp.Rational(x.numerator, x.denominator) for x in mesh.points[v]] for v in ring])
 
 
 def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progress=None) -> MeshLimits:

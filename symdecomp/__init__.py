@@ -33,7 +33,8 @@ nothing else.
                    scheme as data (edge, face, vertex rules on a lattice, for the whole mesh) and
                    the one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the full
                    matrix in FLINT rationals and its characteristic polynomial (``full_matrix``),
-                   rules as polynomials in the index shift (Eq. 17-23, ``shift_stencil``), local
+                   rules as polynomials in the index shift (Eq. 17-23, ``shift_stencil``), a scheme of the zoo as
+                   stencils of any support on halfedge walks (``stencils``), local
                    quad and triangle meshes and ring meshes (``mesh``), whole meshes refined by
                    the rules (Section 3, ``refinement``), K-ring matrices by exact refinement
                    (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), the rules at

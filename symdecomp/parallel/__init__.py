@@ -214,7 +214,7 @@ def _local_map(func, items, shared, workers, order):
             for i in order:  # the workers fork at the first submit, with _JOBS[token] in place
                 futures[i] = pool.submit(_call, token, items[i])
             for future in futures:
-                yield future.result()
+                yield _result(future, pool)
         except BrokenProcessPool:
             raise ChildProcessError("a worker process died (killed by the system: out of memory?); "
                                     "try a smaller --jobs or range") from None
@@ -226,6 +226,27 @@ def _local_map(func, items, shared, workers, order):
         _kill_group(reaper.pid)
         reaper.wait()
         _JOBS.pop(token, None)
+
+
+#: Seconds between looks at the workers while a result is awaited.
+WORKER_POLL = 0.5
+
+
+def _result(future, pool):
+    """The future's result; a worker that has died is noticed here too, not only by the pool's own thread.
+
+    The pool's management thread marks the pool broken when a worker dies; looking at the workers' exit codes
+    while waiting makes that certain (a death it misses would otherwise leave this process waiting forever).
+    """
+    from concurrent.futures.process import BrokenProcessPool
+
+    while True:
+        try:
+            return future.result(timeout=WORKER_POLL)
+        except TimeoutError:
+            workers = list((getattr(pool, "_processes", None) or {}).values())
+            if any(p.exitcode not in (None, 0) for p in workers):
+                raise BrokenProcessPool("a worker process died") from None
 
 
 def _start_reaper(grace: float = 0.0) -> subprocess.Popen:

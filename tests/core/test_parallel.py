@@ -64,11 +64,31 @@ def test_results_come_in_order_from_no_more_processes_than_the_pool():
 
 
 @needs_two_cpus
+@pytest.mark.timeout(120)
 def test_a_worker_error_is_raised_here_and_a_dead_worker_is_one_clear_error():
     with pytest.raises(InvalidValenceError, match="valence 4: refused in the worker"):
         list(ordered_map(_refuse, [4, 5], jobs=2))
     with pytest.raises(ChildProcessError, match="a worker process died"):
         list(ordered_map(_die, [4, 5], jobs=2))
+
+
+@pytest.mark.timeout(60)
+def test_a_dead_worker_is_noticed_from_its_exit_code_while_a_result_is_awaited():
+    """A death the pool's own thread does not report (the run hung once in a fresh clone) still ends the wait."""
+    from concurrent.futures import Future
+    from concurrent.futures.process import BrokenProcessPool
+    from types import SimpleNamespace
+
+    from symdecomp import parallel
+
+    never = Future()  # its result never comes
+    alive = SimpleNamespace(_processes={1: SimpleNamespace(exitcode=None)})
+    dead = SimpleNamespace(_processes={1: SimpleNamespace(exitcode=None), 2: SimpleNamespace(exitcode=3)})
+    with pytest.raises(BrokenProcessPool):
+        parallel._result(never, dead)
+    done = Future()
+    done.set_result(7)
+    assert parallel._result(done, alive) == 7
 
 
 @needs_two_cpus

@@ -38,7 +38,7 @@ def register(sub) -> None:
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
     add_scheme_option(p)
     add_budget_option(p)
-    add_pool_options(p)
+    add_pool_options(p, items="claims")
     flag(p, "--no-progress", help="do not draw a progress bar on stderr (the same as --quiet)")
     add_quiet_option(p)
     p.set_defaults(func=run)

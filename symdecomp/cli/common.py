@@ -321,12 +321,13 @@ def _executor(text: str):
         raise argparse.ArgumentTypeError(str(exc)) from None
 
 
-def add_pool_options(parser: argparse.ArgumentParser, *, default_jobs: int | None = None) -> None:
-    """``--jobs N`` and ``--executor local|dask|dask=ADDRESS``: where the valences are computed (:mod:`symdecomp.parallel`)."""
+def add_pool_options(parser: argparse.ArgumentParser, *, default_jobs: int | None = None, items: str = "valences") -> None:
+    """``--jobs N`` and ``--executor local|dask|dask=ADDRESS``: where the ``items`` (valences, claims) are computed
+    (:mod:`symdecomp.parallel`)."""
     jobs = default_jobs or os.cpu_count() or 1
     parser.add_argument("--jobs", type=positive_int("--jobs", "jobs"), action=Once, default=jobs,
                         help=f"worker processes at most (default {'the number of CPUs' if default_jobs is None else jobs}; "
-                        "the local pool and a Dask LocalCluster never have more than the valences or the CPUs)")
+                        f"the local pool and a Dask LocalCluster never have more than the {items} or the CPUs)")
     parser.add_argument("--executor", type=_executor, action=Once, default=parse_executor("local"),
                         metavar="local|dask|dask=ADDRESS",
                         help="local: a pool of forked processes (default); dask: a Dask LocalCluster of --jobs workers "

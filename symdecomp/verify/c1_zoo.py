@@ -38,7 +38,7 @@ from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["DUAL_METHOD", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
+__all__ = ["DUAL_METHOD", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights", "corner_weights",
            "spline_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
@@ -122,7 +122,12 @@ def regular_corner_weights(scheme: StencilScheme) -> tuple[sp.Expr, ...] | str:
     :attr:`~symdecomp.schemes.lattice.Lattice.regular_valence`).
     """
     lat = lattice(scheme.lattice)
-    sides, valence = lat.face_sides, lat.regular_valence
+    return corner_weights(scheme, lat.face_sides, lat.regular_valence)
+
+
+def corner_weights(scheme: StencilScheme, sides: int, valence: int) -> tuple[sp.Expr, ...] | str:
+    """The corner rule in a face of ``sides`` corners whose vertices have ``valence``: the weight on the corner ``k`` steps
+    on (counter-clockwise) from the new point's own corner, ``k = 0..sides-1``; or why it is not a rule inside the face."""
     try:
         rules = scheme.rules_of("corner")
     except InvalidSchemeError as exc:
@@ -137,7 +142,7 @@ def regular_corner_weights(scheme: StencilScheme) -> tuple[sp.Expr, ...] | str:
             return "its corner rule reaches outside the face (a walk across an edge, a ring or new points)"
         for j in range(sides if term.over == "face" else 1):
             weights[(j + offset) % sides] += term.weight.subs({M: sides, N: valence, J: j})
-    return tuple(sp.simplify(w) for w in weights)
+    return tuple(weights)
 
 
 def spline_route(scheme: StencilScheme) -> str | None:

@@ -8,15 +8,18 @@ of the regular lattice, scaled by 2), so that the labelled mesh is mapped to its
 The matrix is built with Arb balls (Doo-Sabin's ``cos(2 pi k/n)`` weights), independently of the zoo's engine.
 """
 
+import functools
+
 import flint
 import pytest
 import sympy as sp
 
+from symdecomp.algebra.compile import compile_expression
 from symdecomp.errors import InvalidMeshError, UnavailableError
 from symdecomp.schemes.stencils import J, KindRules, M, Rule, StencilScheme, Term
 from symdecomp.verify.c1_dual import DualNeighbourhood, biquadratic_to_bicubic, certify_ring, ring_patches
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, float_down
-from symdecomp.verify.c1_zoo import ZooNeighbourhood, c1_dual_test, c1_zoo, regular_corner_weights, spline_route
+from symdecomp.verify.c1_zoo import ZooNeighbourhood, c1_dual_test, c1_zoo, corner_weights, regular_corner_weights, spline_route
 from symdecomp.verify.result import C1Verdict
 
 CLASSES = [(a, b) for a in range(3) for b in range(3)]
@@ -45,9 +48,17 @@ def cos2pi(k, n):
     return flint.arb.cos_pi_fmpq(flint.fmpq(2 * k, n))
 
 
-def doo_sabin_weights(m):
-    """Doo and Sabin's corner weights of an m-gon: ``alpha_k`` on the corner ``k`` steps on."""
-    return [(flint.arb(1) / 4 if k == 0 else flint.arb(0)) + (3 + 2 * cos2pi(k, m)) / (4 * m) for k in range(m)]
+def doo_sabin_scheme(name="doo-sabin", corner=None, **kw) -> StencilScheme:
+    """Doo and Sabin's rule: the corner ``j`` steps on in an m-gon has ``delta_j0 / 4 + (3 + 2 cos(2 pi j/m))/(4 m)``."""
+    corner = sp.KroneckerDelta(J, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * J / M)) / (4 * M) if corner is None else corner
+    fields = dict(lattice="quad", topology="dual", kinds=(KindRules("corner", (Rule((Term(corner, over="face"),)),)),))
+    return StencilScheme(name, **{**fields, **kw})
+
+
+@functools.cache
+def weights_of(scheme, m):
+    """The scheme's corner weights in an m-gon (vertices of valence 4), as Arb enclosures of the exact values."""
+    return tuple(compile_expression(w, (), "arb")() for w in corner_weights(scheme, m, 4))
 
 
 def weights_with_eigenvalues(n, mu):
@@ -55,9 +66,8 @@ def weights_with_eigenvalues(n, mu):
     return [sum((mu(j) * cos2pi(j * k, n) for j in range(n)), flint.arb(0)) / n for k in range(n)]
 
 
-def doo_sabin_matrix(n, centre):
-    """``{new point: {old point: weight}}``: one step, Doo-Sabin's quad weights, ``centre`` on the centre n-gon."""
-    quad = doo_sabin_weights(4)
+def doo_sabin_matrix(n, centre, quad):
+    """``{new point: {old point: weight}}``: one step, ``quad`` the weights in a quad, ``centre`` in the centre n-gon."""
     S = {}
     for s in range(n):
         for A, B in CLASSES:
@@ -114,21 +124,16 @@ def eigenvector(B, lam):
     return [flint.acb(1)] + [x[i, 0] for i in range(k - 1)]
 
 
-def neighbourhood(n, centre=None) -> ZooNeighbourhood:
+def neighbourhood(n, centre=None, scheme=None) -> ZooNeighbourhood:
     """The zoo engine's answer, computed here: mesh, characteristic map (real and imaginary parts), spectral conditions."""
-    centre = doo_sabin_weights(n) if centre is None else centre
-    S = doo_sabin_matrix(n, centre)
+    scheme = doo_sabin_scheme() if scheme is None else scheme
+    centre = weights_of(scheme, n) if centre is None else centre
+    S = doo_sabin_matrix(n, centre, weights_of(scheme, 4))
     spectral = spectral_result(n, spectrum(n, centre, S))
     j = spectral.subdominant.frequency
     v = eigenvector(frequency_block(n, S, j), spectral.subdominant.value)
     points = {(s, *c): flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() * v[i] for s in range(n) for i, c in enumerate(CLASSES)}
     return ZooNeighbourhood(local_mesh(n), points, spectral)
-
-
-def doo_sabin_scheme(name="doo-sabin", corner=None, **kw) -> StencilScheme:
-    corner = sp.KroneckerDelta(J, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * J / M)) / (4 * M) if corner is None else corner
-    fields = dict(lattice="quad", topology="dual", kinds=(KindRules("corner", (Rule((Term(corner, over="face"),)),)),))
-    return StencilScheme(name, **{**fields, **kw})
 
 
 @pytest.mark.parametrize("n", range(3, 17))
@@ -255,3 +260,25 @@ def test_c1_zoo_runs_the_dual_route_on_the_engines_neighbourhood():
     assert r.verdict is C1Verdict.C1 and r.as_json()["winding_number"] == 1
     with pytest.raises(UnavailableError, match=r"^c1 for 'doo-sabin' needs the zoo engine's neighbourhood at valence 5"):
         c1_zoo(doo_sabin_scheme(), 5)
+
+
+#: A user's variant: Doo-Sabin's weights plus ``(m - 4)(delta_j0 - 1/m)/(8 m)``, which is 0 in a quad (the regular part
+#: stays the biquadratic B-spline) and moves every eigenvalue of the centre m-gon at frequencies ``1..m-1`` by ``(m - 4)/(8 m)``.
+VARIANT = doo_sabin_scheme("variant", corner=sp.KroneckerDelta(J, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * J / M)) / (4 * M)
+                           + (M - 4) * (sp.KroneckerDelta(J, 0) - 1 / M) / (8 * M))
+
+
+@pytest.mark.parametrize("n", [3, 5, 8, 12])
+def test_a_variant_with_the_same_regular_part_is_tested_the_same_way(n):
+    assert spline_route(VARIANT) is None
+    r = c1_dual_test(neighbourhood(n, scheme=VARIANT), scheme="variant", n=n)
+    assert r.verdict is C1Verdict.C1, r.reason
+    assert r.spectral.subdominant.value.contains(flint.fmpq(1, 2) + flint.fmpq(n - 4, 8 * n))
+
+
+def test_the_map_depends_on_the_centre_only_through_its_frequency_one_eigenvalue():
+    # Doo-Sabin's 1/2 at frequency 1 with 0 (not 1/4) at the others: the same characteristic map, point for point
+    a = neighbourhood(6).points
+    b = neighbourhood(6, weights_with_eigenvalues(6, lambda j: flint.arb(1) if j == 0 else flint.arb(1) / 2 if j in (1, 5)
+                                                  else flint.arb(0))).points
+    assert all(a[v].overlaps(b[v]) and (a[v] - b[v]).abs_upper() < 1e-12 for v in a)

@@ -45,7 +45,7 @@ from typing import Any
 import flint
 
 from symdecomp.algebra.numbers import to_arb
-from symdecomp.errors import InvalidMeshError
+from symdecomp.errors import InvalidInputError, InvalidMeshError
 from symdecomp.verify.bezier import certify_sign, curve_angle, jacobian_net
 
 __all__ = ["DualNeighbourhood", "RingPatch", "RingCertificate", "vertex_grid", "ring_patches", "biquadratic_to_bicubic",
@@ -169,7 +169,10 @@ def _ball(value: Any, vertex: Any) -> flint.acb:
     except (TypeError, ValueError):
         raise InvalidMeshError(f"points: the control point of vertex {vertex!r:.20} must be a complex ball or a pair (x, y), "
                                f"got {value!r:.40}") from None
-    return flint.acb(to_arb(x), to_arb(y))
+    try:
+        return flint.acb(to_arb(x), to_arb(y))
+    except InvalidInputError as exc:
+        raise InvalidMeshError(f"points: the control point of vertex {vertex!r:.20}: {exc}") from None
 
 
 #: The control points along each side of a bicubic net, traversed with the outside (the hole) on the left.

@@ -223,6 +223,8 @@ def test_bad_meshes_and_points_get_one_line_naming_the_problem():
         certify_ring(nb.mesh, points)
     with pytest.raises(InvalidMeshError, match=r"^points: the control point of vertex \(0, 0, 0\) must be a complex ball"):
         certify_ring(nb.mesh, {**nb.points, (0, 0, 0): 1.5})
+    with pytest.raises(InvalidMeshError, match=r"^points: the control point of vertex \(0, 1, 1\): expected an exact rational number, got 0.5"):
+        certify_ring(nb.mesh, {**nb.points, (0, 1, 1): (0.5, 1)})  # floats are refused, not rounded into a ball
 
 
 def test_exact_control_points_are_accepted():

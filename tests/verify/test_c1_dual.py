@@ -136,8 +136,8 @@ def neighbourhood(n, centre=None, scheme=None) -> ZooNeighbourhood:
     return ZooNeighbourhood(local_mesh(n), points, spectral)
 
 
-@pytest.mark.parametrize("n", range(3, 17))
-def test_doo_sabin_is_c1_at_every_valence_3_to_16(n):
+@pytest.mark.parametrize("n", [*range(3, 17), 32, 64])
+def test_doo_sabin_is_c1_at_every_valence_3_to_16_and_at_32_and_64(n):
     r = c1_dual_test(neighbourhood(n), scheme="doo-sabin", n=n)
     assert r.verdict is C1Verdict.C1, r.reason
     assert r.spectral.subdominant.value.contains(flint.fmpq(1, 2)) and r.frequency == 1

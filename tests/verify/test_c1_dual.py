@@ -239,6 +239,7 @@ def test_exact_control_points_are_accepted():
             points[(s, a, b)] = (c * x - d * y, d * x + c * y)
     ring = certify_ring(local_mesh(4), points)
     assert (ring.status, ring.jacobian_sign, ring.winding_number) == ("regular", 1, 1)
+    assert 1 - 1e-12 < ring.jacobian_lower_bound <= 1  # the patches are unit squares of the plane: J = 1
 
 
 def test_the_route_is_read_from_the_scheme_model():

@@ -134,7 +134,7 @@ def corner_weights(scheme: StencilScheme, sides: int, valence: int) -> tuple[sp.
         return str(exc)
     rule = next((r for r in rules.rules if r.applies(valence, valence, regular=valence)), None)
     if rule is None:
-        return "no corner rule applies in a regular face"
+        return f"no corner rule applies where the vertices have valence {valence}"
     weights = [sp.Integer(0)] * sides
     for term in rule.terms:
         offset = _corner_offset(term.walk)

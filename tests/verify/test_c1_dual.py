@@ -252,6 +252,9 @@ def test_the_route_is_read_from_the_scheme_model():
     midpoint = doo_sabin_scheme("equal-weights", corner=1 / M)
     assert spline_route(midpoint).startswith("its regular corner weights (1/4, 1/4, 1/4, 1/4) are not the biquadratic B-spline's "
                                              "(9/16, 3/16, 1/16, 3/16)")
+    edges = StencilScheme("edge-points", "quad", "dual", (KindRules("edge", (Rule((Term(sp.Rational(1, 2)), Term(sp.Rational(1, 2), ("next",)))),)),))
+    assert spline_route(edges).startswith("its regular rule cannot be read as a corner rule (scheme 'edge-points' has no [corner] "
+                                          "rules (it has edge))")
     triangles = doo_sabin_scheme("dual-triangles", lattice="triangle")
     assert spline_route(triangles).startswith("its regular corner weights (2/3, 1/6, 1/6) are not the biquadratic B-spline's")
     r = c1_zoo(butterfly, 5)

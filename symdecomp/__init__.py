@@ -98,7 +98,9 @@ nothing else.
                    valence, ``regime_every_n``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
                    by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
-                   ``c1_sharp_ring``); dyadic limit positions for
+                   ``c1_sharp_ring``); for the zoo's schemes, Reif's test on a dual neighbourhood whose regular
+                   part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
+                   undecided with the reason (``c1_zoo``); dyadic limit positions for
                    the patch evaluator (``patch_eval``) and the boundary one (``sharp_patch_eval``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and

@@ -64,7 +64,10 @@ def register(sub) -> None:
         "catmull-clark-blz), the tangent of the boundary curve among the two subdominant eigenvectors, the sector's "
         "characteristic map regular (phantom points at the sharp rays; with a modified near-edge rule such as BLZ's, on "
         "the ring of spline patches past the modified edges) and injective (the argument it sweeps between "
-        "the two rays, 0 to 2 pi in the Jacobian's orientation), and at a corner with --angle a convex or concave image.",
+        "the two rays, 0 to 2 pi in the Jacobian's orientation), and at a corner with --angle a convex or concave image. "
+        "For a scheme of the zoo (stencils): where its model's regular part is the biquadratic B-spline (a dual quad scheme "
+        "such as Doo-Sabin), the same test on the ring of biquadratic patches around the centre n-gon; otherwise "
+        "'undecided' with the reason (no spline patch).",
     )
     p.add_argument("--n", dest="valences", type=_valences, action=_ValencesOnce, metavar="A:B",
                    help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]}); an open "
@@ -174,6 +177,37 @@ def _one(n: int, scheme: Scheme, max_depth: int) -> _Row:
     return _Row(r.n, r.verdict, r.reason, r.as_json())
 
 
+def _zoo_one(n: int, scheme, max_depth: int) -> _Row:
+    from symdecomp.verify.c1_zoo import c1_zoo
+
+    r = c1_zoo(scheme, n, max_depth=max_depth)
+    return _Row(r.n, r.verdict, r.reason, r.as_json())
+
+
+def _run_zoo(args, plot) -> int:
+    """A scheme of the zoo (stencils): :func:`~symdecomp.verify.c1_zoo.c1_zoo` per valence (the route its model allows)."""
+    from symdecomp.parallel import ordered_map
+    from symdecomp.verify.result import C1Verdict
+
+    if plot is not None:
+        raise InvalidInputError(f"--plot: the figure of Reif's test is not drawn for {args.scheme.name!r} (a scheme of the zoo) yet")
+    if getattr(args, "every_n", False) or getattr(args, "open_range", False):
+        raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} (a scheme "
+                                "of the zoo); give --n A:B")
+    valences = args.valences
+    rows = ordered_map(_zoo_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
+                       executor=args.executor, warm_up=True)
+    results = list(progress(rows, len(valences), "c1", enabled=not args.quiet))
+    if args.json:
+        print_json(args, [r.json for r in results])
+    else:
+        print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
+        print(f"method: {results[0].json['method']}")
+        for r in results:
+            print(f"n = {r.n:>3}: {LABELS[r.verdict.value]}: {r.reason}")
+    return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+
+
 def _vertex(item: tuple, scheme: Scheme):
     """The :class:`~symdecomp.schemes.sector.SharpVertex` of one item of :func:`_sharp_items`."""
     from symdecomp.schemes.sector import SharpVertex
@@ -227,10 +261,15 @@ def _sharp_items(args) -> list[tuple] | None:
 
 def run(args) -> int:
     from symdecomp.parallel import ordered_map
+    from symdecomp.schemes.stencils import StencilScheme
     from symdecomp.verify.result import C1Verdict
 
     items = _sharp_items(args)
     plot = check_plot(args)
+    if isinstance(args.scheme, StencilScheme):
+        if items is not None:
+            raise InvalidInputError(f"--{items[0][0]}: sharp vertices are not tested for {args.scheme.name!r} (a scheme of the zoo)")
+        return _run_zoo(args, plot)
     if items is not None:
         return _run_sharp(args, items, plot)
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):

@@ -1,0 +1,219 @@
+"""C1 for a scheme of the zoo: Reif's test where the regular part is a spline patch this package evaluates, else ``undecided``.
+
+The route is decided by the scheme's model (:class:`~symdecomp.schemes.stencils.StencilScheme`), never by its name:
+
+* an interpolatory scheme (``interpolatory = true``: the modified butterfly, Kobbelt's quad scheme) has no spline
+  regular part, so Reif's test has no patch to evaluate; a test that needs none (Zorin 2000, *A method for analysis
+  of C1-continuity of subdivision surfaces*, SIAM J. Numer. Anal. 37(5): bounds on the characteristic map's control
+  net and its differences under refinement) is not implemented: ``undecided``, saying so;
+* a scheme whose steps are not the dual quad step (primal steps are :mod:`symdecomp.verify.c1`'s, on the scheme's
+  edge/face/vertex form; sqrt(3)'s rotating steps have no spline patch here): ``undecided``, naming the topology;
+* a dual scheme whose rule in a regular face (the corner rule in a face of the lattice's size, at its regular
+  valence) is the biquadratic B-spline's: each corner point is the tensor product of Chaikin's weights ``(3/4, 1/4)`` (the quadratic
+  B-spline's mask ``(1, 3, 3, 1)/4``), so the regular part is the biquadratic B-spline and
+  :func:`c1_dual_test` (:mod:`symdecomp.verify.c1_dual`) applies. Another regular rule (Midedge's, whose regular
+  part is not a tensor-product spline) is ``undecided`` with the weights it has.
+
+:func:`c1_dual_test` takes what the zoo's engine computes at valence ``n`` (:class:`ZooNeighbourhood`: the explicit
+local mesh with orbit labels, the characteristic map's control points from the subdominant eigenvectors, and the
+certified spectral conditions) and gives the verdict the way :func:`symdecomp.verify.c1.c1_test` does.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, replace
+from math import comb
+from typing import Any
+
+import flint
+import sympy as sp
+
+from symdecomp.analysis.display import NotebookDisplay
+from symdecomp.errors import InvalidSchemeError, UnavailableError
+from symdecomp.schemes.lattice import lattice
+from symdecomp.schemes.stencils import J, M, N, StencilScheme
+from symdecomp.validate import check_bits, check_depth
+from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify_ring
+from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, round_down
+from symdecomp.verify.result import C1Verdict
+
+__all__ = ["DUAL_METHOD", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights", "corner_weights",
+           "spline_route", "c1_dual_test", "c1_zoo"]
+
+#: The method, as reported with each verdict of the dual route.
+DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-spline patches (the vertices one face from "
+               "the centre n-gon): Jacobian in Bernstein-Bezier form (raised to bicubic), one strict sign in interval "
+               "arithmetic with de Casteljau subdivision; injective by winding number 1 of the ring's inner boundary")
+
+@dataclass(frozen=True)
+class ZooNeighbourhood:
+    """What the zoo's engine hands to the C1 test at one valence."""
+
+    #: The explicit local mesh around the centre element, with orbit labels.
+    mesh: DualNeighbourhood
+    #: ``vertex -> (x, y)`` (or a complex ball): the characteristic map's control points.
+    points: Mapping[Any, Any]
+    #: Reif's spectral conditions, certified (the subdominant eigenvalue and its frequency).
+    spectral: SpectralResult
+
+
+@dataclass(frozen=True)
+class ZooC1Result(NotebookDisplay):
+    """The C1 verdict for a zoo scheme at one valence (the fields of :class:`~symdecomp.verify.c1.C1Result`'s JSON)."""
+
+    n: int
+    scheme: str
+    verdict: C1Verdict
+    reason: str
+    #: ``None`` when the test did not run (no spline patch).
+    spectral: SpectralResult | None = None
+    frequency: int | None = None
+    jacobian_sign: int | None = None
+    jacobian_lower_bound: float | None = None
+    subdivision_depth: int | None = None
+    max_depth: int = 6
+    winding_number: int | None = None
+    precision: int = 64
+    method: str = DUAL_METHOD
+
+    def as_json(self) -> dict[str, Any]:
+        lam = None if self.spectral is None else self.spectral.subdominant
+        return {
+            "n": self.n,
+            "scheme": self.scheme,
+            "verdict": self.verdict,
+            "reason": self.reason,
+            "lambda": None if lam is None else float(lam.value.real.mid()),
+            "frequency": self.frequency,
+            "gap": None if self.spectral is None else self.spectral.gap,
+            "jacobian_sign": self.jacobian_sign,
+            "jacobian_lower_bound": self.jacobian_lower_bound,
+            "subdivision_depth": self.subdivision_depth,
+            "max_depth": self.max_depth,
+            "winding_number": self.winding_number,
+            "precision_bits": self.precision,
+            "method": self.method,
+        }
+
+
+def biquadratic_corner_weights() -> tuple[sp.Rational, ...]:
+    """The biquadratic B-spline's corner rule in a quad: weights on corners ``0..3`` (counter-clockwise from the corner).
+
+    Chaikin's weights ``(3/4, 1/4)`` are the two phases of the quadratic B-spline's mask ``C(3, k)/4``; the corner
+    point takes ``3/4`` of its own corner in each direction: ``c(a) c(b)`` for ``a``, ``b`` steps along the two edges.
+    """
+    chaikin = (sp.Rational(comb(3, 1), 4), sp.Rational(comb(3, 0), 4))
+    steps = ((0, 0), (1, 0), (1, 1), (0, 1))  # corner k of the quad: its steps along the anchor's edge and the other
+    return tuple(chaikin[a] * chaikin[b] for a, b in steps)
+
+
+def _corner_offset(walk: tuple[str, ...]) -> int | None:
+    """The corner a walk inside the face reaches (``next`` +1, ``prev`` -1), or ``None`` if it leaves the face."""
+    if any(move == "twin" for move in walk):
+        return None
+    return sum(1 if move == "next" else -1 for move in walk)
+
+
+def regular_corner_weights(scheme: StencilScheme) -> tuple[sp.Expr, ...] | str:
+    """The scheme's corner rule in a regular face of its lattice (weights on the corners), or why it cannot be read as one.
+
+    The regular face and valence are the lattice's (:attr:`~symdecomp.schemes.lattice.Lattice.face_sides`,
+    :attr:`~symdecomp.schemes.lattice.Lattice.regular_valence`).
+    """
+    lat = lattice(scheme.lattice)
+    return corner_weights(scheme, lat.face_sides, lat.regular_valence)
+
+
+def corner_weights(scheme: StencilScheme, sides: int, valence: int) -> tuple[sp.Expr, ...] | str:
+    """The corner rule in a face of ``sides`` corners whose vertices have ``valence``: the weight on the corner ``k`` steps
+    on (counter-clockwise) from the new point's own corner, ``k = 0..sides-1``; or why it is not a rule inside the face."""
+    try:
+        rules = scheme.rules_of("corner")
+    except InvalidSchemeError as exc:
+        return str(exc)
+    rule = next((r for r in rules.rules if r.applies(valence, valence, regular=valence)), None)
+    if rule is None:
+        return f"no corner rule applies where the vertices have valence {valence}"
+    weights = [sp.Integer(0)] * sides
+    for term in rule.terms:
+        offset = _corner_offset(term.walk)
+        if term.source != "old" or term.over == "ring" or offset is None:
+            return "its corner rule reaches outside the face (a walk across an edge, a ring or new points)"
+        for j in range(sides if term.over == "face" else 1):
+            weights[(j + offset) % sides] += term.weight.subs({M: sides, N: valence, J: j})
+    return tuple(weights)
+
+
+def spline_route(scheme: StencilScheme) -> str | None:
+    """``None`` when the scheme's regular part is the biquadratic B-spline (the dual route applies), else the reason."""
+    tail = "Zorin 2000's test, which needs no spline patch, is not implemented"
+    if scheme.interpolatory:
+        return f"the scheme is interpolatory, so its regular part is no spline and Reif's test has no patch; {tail}"
+    if scheme.topology != "dual":
+        return (f"its steps are {scheme.topology} on the {scheme.lattice} lattice: the spline patch of the dual quad route "
+                f"does not apply (primal schemes: the edge/face/vertex form's c1); {tail}")
+    weights = regular_corner_weights(scheme)
+    if isinstance(weights, str):
+        return f"its regular rule cannot be read as a corner rule ({weights}); {tail}"
+    target = biquadratic_corner_weights()
+    if len(weights) != len(target) or any(sp.simplify(w - t) != 0 for w, t in zip(weights, target)):
+        return (f"its regular corner weights ({', '.join(map(str, weights))}) are not the biquadratic B-spline's "
+                f"({', '.join(map(str, target))}): no spline patch is evaluated for it; {tail}")
+    return None
+
+
+def _verdict(ring: RingCertificate, lam: Eigen, gap: float | None) -> tuple[C1Verdict, str]:
+    """The verdict from the certified ring once the spectral conditions hold (as :func:`symdecomp.verify.c1.c1_test`)."""
+    if ring.status == "changes":
+        return C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({ring.where}): it is not regular"
+    if ring.status == "undecided":
+        return C1Verdict.UNDECIDED, (f"the Jacobian's sign is not certified at subdivision depth {ring.depth} "
+                                     "(a deeper subdivision or more precision would decide)")
+    if ring.winding_number is None:
+        return C1Verdict.UNDECIDED, "the winding number of the inner boundary is not certified"
+    text, j = ball_text(lam.value), lam.frequency
+    if ring.winding_number == ring.jacobian_sign:
+        gap_text = "" if gap is None else f", gap >= {round_down(gap)}"
+        bound = "" if ring.jacobian_lower_bound is None else f" (|J| >= {round_down(ring.jacobian_lower_bound)})"
+        return C1Verdict.C1, f"lambda = {text} (frequency {j}{gap_text}); the characteristic map is regular{bound} and winds once: injective"
+    if abs(ring.winding_number) > 1:
+        return C1Verdict.NOT_C1, (f"the characteristic map (lambda = {text} at frequency {j}) is regular but winds "
+                                  f"{ring.winding_number} times around the origin: it is not injective")
+    return C1Verdict.UNDECIDED, f"winding number {ring.winding_number} does not match the Jacobian's sign {ring.jacobian_sign}"
+
+
+def c1_dual_test(neighbourhood: ZooNeighbourhood, *, scheme: str, n: int, max_depth: int = 6,
+                 prec: int = 64) -> ZooC1Result:
+    """Reif's test on a dual quad neighbourhood whose regular part is the biquadratic B-spline (module docstring)."""
+    max_depth, prec = check_depth(max_depth), check_bits(prec)
+    spectral, lam = neighbourhood.spectral, neighbourhood.spectral.subdominant
+    result = ZooC1Result(n=n, scheme=scheme, verdict=spectral.status, reason=spectral.reason, spectral=spectral,
+                         max_depth=max_depth, precision=prec)
+    if spectral.status is not C1Verdict.C1:
+        return result
+    if lam is None:
+        return replace(result, verdict=C1Verdict.UNDECIDED, reason="the spectral conditions name no subdominant eigenvalue")
+    with flint.ctx.workprec(prec):
+        ring = certify_ring(neighbourhood.mesh, neighbourhood.points, max_depth=max_depth)
+    verdict, reason = _verdict(ring, lam, spectral.gap)
+    return replace(result, verdict=verdict, reason=reason, frequency=lam.frequency, jacobian_sign=ring.jacobian_sign,
+                   jacobian_lower_bound=ring.jacobian_lower_bound, subdivision_depth=ring.depth,
+                   winding_number=ring.winding_number)
+
+
+def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilScheme, int], ZooNeighbourhood] | None = None,
+           max_depth: int = 6, prec: int = 64) -> ZooC1Result:
+    """C1 at valence ``n`` for a zoo scheme: the dual route (:func:`c1_dual_test`) or ``undecided`` with the reason.
+
+    ``neighbourhood(scheme, n)``: the zoo engine's local mesh, characteristic map and spectral conditions; without it
+    a scheme the dual route applies to cannot be tested (:class:`~symdecomp.errors.UnavailableError`).
+    """
+    reason = spline_route(scheme)
+    if reason is not None:
+        return ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason=reason, max_depth=max_depth,
+                           precision=prec)
+    if neighbourhood is None:
+        raise UnavailableError(f"c1 for {scheme.name!r} needs the zoo engine's neighbourhood at valence {n}, which is not "
+                               "available in this installation")
+    return c1_dual_test(neighbourhood(scheme, n), scheme=scheme.name, n=n, max_depth=max_depth, prec=prec)

@@ -1,0 +1,52 @@
+"""``symdecomp c1`` on a scheme of the zoo: the route its model allows, with --json, and one-line refusals."""
+
+import json
+
+import pytest
+import sympy as sp
+
+from symdecomp.cli import common, main
+from symdecomp.schemes.stencils import J, KindRules, M, Rule, StencilScheme, Term
+
+
+def _corner_scheme(name, **kw):
+    corner = sp.KroneckerDelta(J, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * J / M)) / (4 * M)
+    fields = dict(lattice="quad", topology="dual", kinds=(KindRules("corner", (Rule((Term(corner, over="face"),)),)),))
+    return StencilScheme(name, **{**fields, **kw})
+
+
+ZOO = {"interp": _corner_scheme("interp", lattice="triangle", topology="primal", interpolatory=True), "ds": _corner_scheme("ds")}
+
+
+@pytest.fixture
+def zoo(monkeypatch):
+    """``--scheme interp`` and ``--scheme ds`` name the two stencil schemes above (the zoo's files are not read here)."""
+    known = common.scheme_by_name
+    monkeypatch.setattr(common, "scheme_by_name", lambda text: ZOO[text] if text in ZOO else known(text))
+
+
+def test_no_spline_patch_is_undecided_with_the_reason(zoo, capsys):
+    assert main(["c1", "--scheme", "interp", "--n", "3:4", "--json"]) == 1
+    rows = json.loads(capsys.readouterr().out)["rows"]
+    assert [(r["n"], r["verdict"]) for r in rows] == [(3, "undecided"), (4, "undecided")]
+    assert rows[0]["reason"].startswith("the scheme is interpolatory, so its regular part is no spline and Reif's test has no patch")
+    assert main(["c1", "--scheme", "interp", "--n", "5"]) == 1
+    out = capsys.readouterr().out.splitlines()
+    assert out[0] == "interp: Reif's test, valences 5..5" and out[2].startswith("n =   5: undecided: the scheme is interpolatory")
+
+
+def test_refusals_are_one_line(zoo, capsys):
+    for argv, text in (
+        (["--n", "5", "--plot", "c1.png"], "--plot: the figure of Reif's test is not drawn for 'interp' (a scheme of the zoo) yet"),
+        (["--every-n"], "--every-n: the spectral conditions for every n are not derived for 'interp'"),
+        (["--boundary", "--k", "2"], "--boundary: sharp vertices are not tested for 'interp' (a scheme of the zoo)"),
+    ):
+        assert main(["c1", "--scheme", "interp", *argv]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and text in err[0]
+
+
+def test_the_dual_route_needs_the_engine(zoo, capsys):
+    code = main(["c1", "--scheme", "ds", "--n", "5"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 3 and len(err) == 1 and "c1 for 'ds' needs the zoo engine's neighbourhood at valence 5" in err[0]

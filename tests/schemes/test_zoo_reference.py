@@ -146,3 +146,51 @@ def test_the_engine_agrees_with_the_reference():
         for n in VALENCES.get(name, range(3, 9)):
             ours = np.array(engine.subdivision_matrix(scheme, n).tolist(), dtype=float)
             assert np.allclose(sorted(np.abs(ref.spectrum(ours))), sorted(np.abs(ref.spectrum(matrix(n)))), atol=TOLERANCE)
+
+
+@pytest.mark.parametrize(("name", "n"), [("catmull-clark", 3), ("catmull-clark", 4), ("catmull-clark", 5), ("catmull-clark", 7),
+                                         ("loop", 3), ("loop", 5), ("loop", 6), ("loop", 8)])
+def test_today_s_schemes_as_stencils_give_today_s_one_ring_matrix(name, n):
+    from symdecomp import subdivision_matrix
+    from symdecomp.schemes.files import load_scheme
+    from symdecomp.schemes.stencil_convert import as_stencils
+
+    scheme = load_scheme(name)
+    stencils = as_stencils(scheme)
+    quad = stencils.lattice == "quad"
+    regular = 4 if quad else 6
+    mesh = ref.Mesh(ref.quad_disk(n, 3) if quad else ref.triangle_disk(n, 3))
+    points = ref._unit(mesh.vertices)
+    ring = [(s, 1, 0) for s in range(n)]
+    labels = [ref.CENTRE, *ring, *([(s, 1, 1) for s in range(n)] if quad else [])]
+    (vertex,) = stencils.rules_of("vertex").rules
+    rows = [_apply(mesh, vertex, (ref.CENTRE, ring[0]), points, regular)]
+    rows += [_edge_point(mesh, stencils.rules_of("edge"), (ref.CENTRE, p), points, regular) for p in ring]
+    if quad:  # the face point of the face between a_s and a_(s+1), anchored at its halfedge leaving the centre
+        face = stencils.rules_of("face")
+        rows += [_apply(mesh, next(r for r in face.rules if r.applies(n, regular, regular=regular)), (ref.CENTRE, p), points, regular)
+                 for p in ring]
+    keep = [mesh.vertices.index(v) for v in labels]
+    ours = np.array(rows)[:, keep]
+    today = np.array(subdivision_matrix(scheme, n).evalf(30).tolist(), dtype=float)
+    assert np.allclose(sorted(np.linalg.eigvals(ours), key=abs), sorted(np.linalg.eigvals(today), key=abs), atol=1e-9)
+    assert np.allclose(ours.sum(axis=1), 1)
+
+
+def test_the_guide_s_sixth_family_loads_and_has_the_eigenvalues_the_guide_derives():
+    import re
+    from pathlib import Path
+
+    from symdecomp.schemes.stencil_files import stencil_scheme_from_text
+
+    guide = (Path(__file__).resolve().parents[2] / "docs" / "guide" / "adding-a-scheme.md").read_text(encoding="utf-8")
+    text = "\n".join(re.findall(r"```toml\n(.*?)```", guide, re.S))
+    scheme = stencil_scheme_from_text(text)
+    (term,) = scheme.rules_of("corner").rules[0].terms
+    for n in range(3, 9):
+        weights = [float(term.weight.subs({M: n, J: j})) for j in range(n)]
+        matrix, labels = ref.dual_matrix(n, lambda m, n=n: [float(term.weight.subs({M: m, J: j})) for j in range(m)])
+        ngon = [i for i, (_, a, b) in enumerate(labels) if a == b == 0]
+        values = sorted(np.linalg.eigvals(matrix[np.ix_(ngon, ngon)]).real, reverse=True)
+        assert np.allclose(values, [1, 0.75, 0.75] + [0.5] * (n - 3), atol=1e-12)
+        assert abs(sum(weights) - 1) < 1e-12

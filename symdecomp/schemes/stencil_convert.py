@@ -46,9 +46,9 @@ def ring_walk(k: int) -> tuple[str, ...]:
 
 
 def _stencil_terms(rule: Stencil) -> tuple[Term, ...]:
-    terms = [Term(sp.sympify(rule.center))]
-    terms += [Term(sp.sympify(w), ring_walk(k) + ("next",)) for k, w in rule.a]
-    terms += [Term(sp.sympify(w), ring_walk(k) + ("next", "next")) for k, w in rule.b]
+    terms = [Term(sp.sympify(rule.center, strict=True))]
+    terms += [Term(sp.sympify(w, strict=True), ring_walk(k) + ("next",)) for k, w in rule.a]
+    terms += [Term(sp.sympify(w, strict=True), ring_walk(k) + ("next", "next")) for k, w in rule.b]
     return tuple(t for t in terms if t.weight != 0)
 
 
@@ -57,8 +57,8 @@ def _by_valence(kind: str, terms: tuple[Term, ...]) -> KindRules:
 
 
 def _vertex_terms(rule: VertexRule) -> tuple[Term, ...]:
-    terms = (Term(sp.sympify(rule.center)), Term(sp.sympify(rule.each_a), ("next",), over="ring"),
-             Term(sp.sympify(rule.each_b), ("next", "next"), over="ring"))
+    terms = (Term(sp.sympify(rule.center, strict=True)), Term(sp.sympify(rule.each_a, strict=True), ("next",), over="ring"),
+             Term(sp.sympify(rule.each_b, strict=True), ("next", "next"), over="ring"))
     return tuple(t for t in terms if t.weight != 0)
 
 

@@ -34,7 +34,10 @@ nothing else.
                    the one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the full
                    matrix in FLINT rationals and its characteristic polynomial (``full_matrix``),
                    rules as polynomials in the index shift (Eq. 17-23, ``shift_stencil``), a scheme of the zoo as
-                   stencils of any support on halfedge walks (``stencils``), local
+                   stencils of any support on halfedge walks (``stencils``), the zoo's scheme files and the
+                   families shipped as TOML files in its folder zoo (``stencil_files``), each rule's weights summing to 1
+                   (``stencil_affinity``), today's schemes as stencils (``stencil_convert``), what the
+                   literature says of each family, sources, eigenvalues, smoothness (``zoo_literature``), local
                    quad and triangle meshes and ring meshes (``mesh``), whole meshes refined by
                    the rules (Section 3, ``refinement``), K-ring matrices by exact refinement
                    (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), the rules at

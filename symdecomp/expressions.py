@@ -14,7 +14,11 @@ The grammar:
   ``pi``;
 * the functions ``sqrt``, ``cos`` and ``sin``; ``cos`` and ``sin`` of rational multiples of ``pi``
   only (``cos(2*pi/n)``): those are exact algebraic numbers in cyclotomic fields, the fields the
-  toolkit computes in; ``cos(1)`` is refused.
+  toolkit computes in; ``cos(1)`` is refused. When the caller gives the names ``m`` (a face's size)
+  and ``j`` (an index, as the zoo's stencil files do: :mod:`symdecomp.schemes.stencil_files`), the
+  multiple may be ``P(n, m, j)/(d n)`` or ``P(n, m, j)/(d m)`` (``cos(2*pi*j/m)``);
+* ``KroneckerDelta(a, b)`` (1 if ``a = b``, else 0) of two integer polynomials in the names, only when
+  the caller asks for it (``kronecker=True``: the stencil files' ``KroneckerDelta(j, 0)``).
 
 Decimal numbers (``0.375``, ``1e-3``) are refused: a float is not an exact weight.
 
@@ -103,6 +107,8 @@ BUDGET = {
 }
 
 _FUNCTIONS = {"sqrt": sp.sqrt, "cos": sp.cos, "sin": sp.sin}
+#: The names that may stand in a cos/sin argument over pi (the valence, a face's size, an index of a family).
+_TRIG_NAMES = ("n", "m", "j")
 _CONSTANTS = {"pi": sp.pi}
 _BINARY = {
     ast.Add: lambda a, b: a + b,
@@ -203,16 +209,17 @@ def _check_trig(argument: sp.Expr, where: str) -> None:
         return
     r = argument / sp.pi
     symbols = r.free_symbols
-    if (r.has(sp.pi) or r.atoms(sp.Function) or not all(getattr(s, "name", "") == "n" for s in symbols)
+    if (r.has(sp.pi) or r.atoms(sp.Function) or not all(getattr(s, "name", "") in _TRIG_NAMES for s in symbols)
             or not r.is_rational_function(*symbols)):
         raise InvalidExpressionError(
             f"{where}: cos/sin of {argument}: only rational multiples of pi such as 2*pi/n are exact in the number "
             "fields the toolkit computes in (cyclotomic fields)")
     _, den = sp.fraction(sp.cancel(sp.together(r)))
     poly = sp.Poly(den, *symbols) if symbols else None
-    if poly is not None and (len(poly.terms()) != 1 or poly.total_degree() > 1):
+    if poly is not None and (len(poly.terms()) != 1 or poly.total_degree() > 1 or any(getattr(s, "name", "") == "j"
+                                                                                      for s in den.free_symbols)):
         raise InvalidExpressionError(f"{where}: cos/sin of {argument}: the argument over pi must have a denominator d or "
-                                     "d*n (a larger field at every valence otherwise)")
+                                     "d*n (or d*m, m a face's size; a larger field at every valence otherwise)")
     if abs(poly.LC() if poly is not None else den) > MAX_PI_DENOMINATOR:
         raise InvalidExpressionError(
             f"{where}: cos/sin of {argument}: the denominator over pi is above {MAX_PI_DENOMINATOR} "
@@ -223,12 +230,14 @@ def _describe(text: str) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | None = None, *, argument: str = "expression") -> sp.Expr:
+def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | None = None, *, argument: str = "expression",
+                     kronecker: bool = False) -> sp.Expr:
     """Parse ``text`` into an exact sympy expression in the given ``symbols``.
 
     ``symbols`` maps the names the text may use to the sympy symbols they stand for (a user's
     ``n`` becomes the package's valence symbol this way, never a free parameter of the same
     name). ``argument`` names the input in error messages (``"[edge] a.-1"``, ``"--alpha"``).
+    ``kronecker`` allows ``KroneckerDelta(a, b)`` of integer polynomials in the names.
     Raises :class:`~symdecomp.errors.InvalidExpressionError` for anything outside the grammar
     in the module docstring or the budget, for a division by zero, and for a value that is not finite.
     """
@@ -247,6 +256,8 @@ def parse_expression(text: str, symbols: Mapping[str, sp.Symbol] | None = None, 
         raise InvalidExpressionError(f"{where}: not an arithmetic expression") from None
     names = dict(_CONSTANTS)
     names.update(symbols or {})
+    if kronecker:
+        names[_KRONECKER_ALLOWED] = sp.KroneckerDelta
     try:
         value, _ = _build(tree.body, names, where, 0, text.strip())
     except ZeroDivisionError:
@@ -283,7 +294,7 @@ def _build(node: ast.AST, names: Mapping[str, sp.Expr], where: str, depth: int, 
         return _literal(node, where, source)
     if isinstance(node, ast.Name):
         if node.id not in names:
-            known = ", ".join(sorted(names)) or "none"
+            known = ", ".join(sorted(k for k in names if k.isidentifier())) or "none"
             raise InvalidExpressionError(f"{where}: unknown name {node.id!r} (known: {known})")
         value = names[node.id]
         return value, _leaf(degree=int(node.id == "n"), bits=2 if value is sp.pi else VALENCE_BITS)
@@ -302,6 +313,8 @@ def _build(node: ast.AST, names: Mapping[str, sp.Expr], where: str, depth: int, 
         if base == 0 and exponent < 0:
             raise ZeroDivisionError
         return base**exponent, cost
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == _KRONECKER and _KRONECKER_ALLOWED in names:
+        return _kronecker(node, names, where, deeper, source)
     if isinstance(node, ast.Call):
         if not isinstance(node.func, ast.Name) or node.func.id not in _FUNCTIONS:
             raise InvalidExpressionError(f"{where}: calls only {', '.join(_FUNCTIONS)}")
@@ -315,8 +328,28 @@ def _build(node: ast.AST, names: Mapping[str, sp.Expr], where: str, depth: int, 
             _check_trig(argument, where)
         return _FUNCTIONS[node.func.id](argument), cost
     raise InvalidExpressionError(
-        f"{where}: only numbers, + - * / **, parentheses, {', '.join(sorted(names))} and {', '.join(_FUNCTIONS)} are allowed"
+        f"{where}: only numbers, + - * / **, parentheses, {', '.join(sorted(k for k in names if k.isidentifier()))} and "
+        f"{', '.join(_FUNCTIONS)} are allowed"
     )
+
+
+_KRONECKER = "KroneckerDelta"
+#: The key that allows it in a parse's names (not an identifier: no name in the text can reach it).
+_KRONECKER_ALLOWED = "KroneckerDelta()"
+
+
+def _kronecker(node: ast.Call, names, where: str, depth: int, source: str) -> tuple[sp.Expr, _Cost]:
+    """``KroneckerDelta(a, b)`` of two integer polynomials in the names (``j`` and ``0``, ``j`` and ``m - 1``)."""
+    if node.keywords or len(node.args) != 2:
+        raise InvalidExpressionError(f"{where}: KroneckerDelta takes two arguments")
+    parts = [_build(a, names, where, depth, source) for a in node.args]
+    for value, _ in parts:
+        symbols = sorted(value.free_symbols, key=str)
+        if value.has(sp.pi) or not value.is_polynomial(*symbols) or not all(
+                c.is_Integer for c in (sp.Poly(value, *symbols).coeffs() if symbols else [value])):
+            raise InvalidExpressionError(f"{where}: KroneckerDelta takes integer polynomials in the names, got {value}")
+    cost = _checked(_Cost(1 + sum(c.nodes for _, c in parts), 0, 0, 1, 0, max(c.functions for _, c in parts)), where)
+    return sp.KroneckerDelta(parts[0][0], parts[1][0]), cost
 
 
 def _chain(node: ast.BinOp, names, where: str, depth: int, source: str) -> tuple[sp.Expr, _Cost]:

@@ -285,9 +285,13 @@ def add_budget_option(parser: argparse.ArgumentParser) -> None:
 def scheme_by_name(name: str) -> Scheme:
     """argparse type: a scheme by name (``SCHEMES``) or a TOML scheme file; a bad file is one line naming the key."""
     try:
-        return load_scheme(name)
+        scheme = load_scheme(name)
     except SymdecompError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
+    if not isinstance(scheme, Scheme):  # a zoo scheme (StencilScheme): one line until the zoo's engine answers here
+        raise argparse.ArgumentTypeError(f"{name}: a scheme of the zoo ({scheme.topology} topology, {scheme.lattice} lattice), "
+                                         "which this command does not analyse yet")
+    return scheme
 
 
 def add_scheme_option(parser: argparse.ArgumentParser) -> None:

@@ -126,6 +126,7 @@ from symdecomp.schemes.lattice import LATTICES, QUAD
 from symdecomp.schemes.loop import loop, loop_warren
 from symdecomp.schemes.scheme import Scheme, Stencil, VertexRule, catmull_clark
 from symdecomp.schemes.sharp import SHARP_SYMBOLS, SharpRules, standard_sharp_rules
+from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import RESERVED_NAMES, Parameter
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
@@ -152,8 +153,14 @@ _KNOWN_SYMBOLS = {"alpha": ALPHA, "beta": BETA}
 MAX_FILE_BYTES = INPUT_LIMITS["scheme file: bytes"][0]
 
 
-def load_scheme(name_or_path: str | os.PathLike) -> Scheme:
-    """A scheme by name (``"catmull-clark"``) or from a TOML file (see the module docstring)."""
+def load_scheme(name_or_path: str | os.PathLike) -> Scheme | StencilScheme:
+    """A scheme by name (``"catmull-clark"``) or from a TOML file (see the module docstring).
+
+    The zoo's families by name (``"doo-sabin"``) and files with a ``topology`` key are read as
+    :class:`~symdecomp.schemes.stencils.StencilScheme` (:mod:`symdecomp.schemes.stencil_files`).
+    """
+    from symdecomp.schemes import stencil_files  # the zoo's format (it reads parameter names with this module)
+
     if not isinstance(name_or_path, (str, os.PathLike)):
         raise InvalidTypeError(f"load_scheme takes a scheme name or a file path, got {name_or_path!r:.60} "
                                f"({type(name_or_path).__name__})")
@@ -162,12 +169,14 @@ def load_scheme(name_or_path: str | os.PathLike) -> Scheme:
         raise InvalidTypeError(f"load_scheme takes a scheme name or a file path as text, got {text_name!r:.60}")
     if text_name in SCHEMES:
         return SCHEMES[text_name]()
+    if text_name in stencil_files.ZOO_FILES:
+        return stencil_files.load_zoo(text_name)
     if text_name in SHIPPED_FILES:
         text = resources.files("symdecomp.schemes").joinpath(SHIPPED_FILES[text_name]).read_text(encoding="utf-8")
         return scheme_from_text(text, source=SHIPPED_FILES[text_name], default_name=text_name)
     if not os.path.isfile(text_name):
         raise InvalidSchemeError(
-            f"unknown scheme {text_name!r}: neither a known name ({', '.join(SCHEMES)}) nor a readable file"
+            f"unknown scheme {text_name!r}: neither a known name ({', '.join([*SCHEMES, *stencil_files.ZOO_FILES])}) nor a readable file"
         )
     try:
         with open(text_name, "rb") as handle:
@@ -181,6 +190,8 @@ def load_scheme(name_or_path: str | os.PathLike) -> Scheme:
     except UnicodeDecodeError:
         raise InvalidSchemeError(f"{text_name}: not UTF-8 text") from None
     default_name = os.path.splitext(os.path.basename(text_name))[0]
+    if stencil_files.is_stencil_text(text):
+        return stencil_files.stencil_scheme_from_text(text, source=text_name, default_name=default_name)
     return scheme_from_text(text, source=text_name, default_name=default_name)
 
 

@@ -76,9 +76,10 @@ def test_every_data_file_is_declared():
     declared = PYPROJECT["tool"]["setuptools"]["package-data"]
     undeclared = []
     for path in sorted(_data_files()):
-        folder, name = path.rsplit("/", 1)
-        patterns = declared.get(folder.replace("/", "."), [])
-        if not any(fnmatch.fnmatch(name, pattern) for pattern in patterns):
+        parts = path.split("/")  # a package's pattern may name a data folder inside it ("zoo/*.toml")
+        candidates = [(".".join(parts[:i]), "/".join(parts[i:])) for i in range(len(parts) - 1, 0, -1)]
+        if not any(fnmatch.fnmatch(rel, pattern) and pattern.count("/") == rel.count("/")
+                   for package, rel in candidates for pattern in declared.get(package, [])):
             undeclared.append(path)
     assert undeclared == []
     assert {"symdecomp/output/preamble.tex", "symdecomp/output/json_schema.json", "symdecomp/verify/opensubdiv/osd_bridge.cpp"} <= _data_files()

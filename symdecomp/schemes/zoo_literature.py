@@ -1,0 +1,96 @@
+"""What the literature says about the zoo's families: sources, eigenvalues and smoothness, for the tests to reproduce.
+
+Each family of :data:`symdecomp.schemes.stencil_files.ZOO_FILES` has one :class:`FamilyFacts`: the publication its
+weights come from, what was read to check them (the source itself is not always at hand: then the secondary text
+that restates it is named), the leading eigenvalues of its subdivision matrix at an extraordinary element as exact
+expressions in the valence ``n`` (the subdominant one, its multiplicity, and a bound on the rest), and the
+smoothness the literature states. Where the eigenvalues are not quoted from a text but follow from the weights by
+the discrete Fourier transform (the rules are circulant around the element), :attr:`FamilyFacts.derived` says so
+and the docstring of the field gives the derivation; the tests compare all of them with matrices refined
+independently on explicit meshes (``tests/schemes/zoo_reference.py``).
+
+>>> facts = FAMILIES["doo-sabin"]
+>>> facts.subdominant.subs(N, 7), facts.multiplicity
+(1/2, 2)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from symdecomp.schemes.stencils import N
+
+__all__ = ["FamilyFacts", "FAMILIES"]
+
+
+@dataclass(frozen=True)
+class FamilyFacts:
+    """The literature's facts on one family of the zoo."""
+
+    #: The family's name (a key of :data:`~symdecomp.schemes.stencil_files.ZOO_FILES`).
+    name: str
+    #: Where the weights come from (author, year, title), as the shipped file's ``source`` says.
+    source: str
+    #: What was read to check the weights and the statements below.
+    read: str
+    #: The subdominant eigenvalue of the analysed step(s) at an element of valence (or size) ``n``, in ``n``.
+    subdominant: sp.Expr
+    #: Its multiplicity (2: the frequencies 1 and n - 1).
+    multiplicity: int
+    #: Every other eigenvalue but 1 is at most this in modulus (in ``n``).
+    rest_at_most: sp.Expr
+    #: The valences at which these hold (3 and up unless said).
+    valences: str
+    #: Smoothness at the extraordinary element, as the literature states it (with the source).
+    smoothness: str
+    #: Whether the eigenvalues are derived here from the weights (the derivation in one line) rather than quoted.
+    derived: str = ""
+
+
+_SQRT3_LAMBDA = (2 + 2 * sp.cos(2 * sp.pi / N)) / 9
+#: sqrt(3)'s eigenvalue at frequency 2 (at n = 3 frequency 2 is frequency -1, the subdominant one: not the rest).
+_SQRT3_SECOND = sp.Piecewise((0, sp.Eq(N, 3)), ((2 + 2 * sp.cos(4 * sp.pi / N)) / 9, True))
+
+FAMILIES: dict[str, FamilyFacts] = {f.name: f for f in (
+    FamilyFacts(
+        "doo-sabin", "D. Doo and M. Sabin, 1978, Behaviour of recursive division surfaces near extraordinary points",
+        "I. Guskov, 2002, Eigenanalysis for Doo-Sabin subdivision (EECS 598 notes): the weights alpha_0 = 1/4 + 5/(4N), "
+        "alpha_k = (3 + 2 cos(2 pi k/N))/(4N) and the circulant one-ring matrix S_lk = alpha_(k-l) diagonalized by the "
+        "discrete Fourier transform",
+        sp.Rational(1, 2), 2, sp.Rational(1, 4), "3 and up (n-gons)",
+        "C1 at the centre of an extraordinary face (the issue cites Peters and Reif 1998; not read here)",
+        "the Fourier transform of the weights: 1 at frequency 0, 1/4 + 1/4 = 1/2 at frequencies 1 and n - 1, 1/4 at the "
+        "others; the regular quads around the n-gon add eigenvalues of at most 1/4"),
+    FamilyFacts(
+        "midedge", "J. Peters and U. Reif, 1997, The simplest subdivision scheme for smoothing polyhedra",
+        "the paper's abstract: a step connects every edge midpoint to its four neighbouring edge midpoints; the surface "
+        "is C1 with a piecewise quadratic parametrization except at isolated points; the paper analyses and improves "
+        "the construction (the improved weights are not shipped)",
+        (1 + sp.cos(2 * sp.pi / N)) / 2, 2, sp.Max(sp.Rational(1, 4), (1 + sp.cos(4 * sp.pi / N)) / 2),
+        "4 and up (at 3 the subdominant 1/4 is not simple: the "
+        "n-gon's own 1/4 meets the regular part's)",
+        "C1 (Peters and Reif 1997, abstract), for the improved construction",
+        "two mid-edge steps put 1/2 on a corner and 1/4 on its two neighbours: the Fourier transform gives "
+        "1/2 + cos(2 pi k/n)/2 at frequency k; the regular part adds eigenvalues of at most 1/4"),
+    FamilyFacts(
+        "sqrt3", "L. Kobbelt, 2000, sqrt(3)-subdivision (SIGGRAPH 2000)",
+        "the paper's abstract (C2 away from extraordinary points, C1 there) and its rules as restated with the paper's "
+        "equation numbers by implementations: centroids (1/3 each), S(p) = (1 - alpha_n) p + alpha_n/n sum p_i with "
+        "alpha_n = (4 - 2 cos(2 pi/n))/9 (Eq. 6)",
+        _SQRT3_LAMBDA, 2, sp.Max(_SQRT3_LAMBDA**2, _SQRT3_SECOND), "3 and up, over two steps, on the 1-ring",
+        "C1 at extraordinary points (Kobbelt 2000, abstract)",
+        "over two steps the ring's frequency k block is (1 + omega^k)(1 + omega^-k)/9 = (2 + 2 cos(2 pi k/n))/9; "
+        "frequency 0 gives 1 and (2/3 - alpha_n)^2, the square of the subdominant: the choice of alpha_n"),
+    FamilyFacts(
+        "modified-butterfly",
+        "D. Zorin, P. Schroeder and W. Sweldens, 1996, Interpolating subdivision for meshes with arbitrary topology (SIGGRAPH 96)",
+        "the weights as an implementation's documentation restates the paper (SubVis, sd_modbutterfly.h): valence 3: "
+        "5/12, -1/12, -1/12; valence 4: 3/8, 0, -1/8, 0; valence 5 and up: (1/4 + cos(2 pi j/K) + cos(4 pi j/K)/2)/K; "
+        "3/4 on the extraordinary vertex; two extraordinary ends averaged",
+        sp.Rational(1, 2), 2, sp.Rational(1, 4), "3 and up",
+        "C1 at every valence (the issue cites Zorin 2000's interval-arithmetic proof; not read here)",
+        "the Fourier transform of s_j: 1/4 at frequency 0, 1/2 at frequencies 1 and n - 1, 1/4 at 2 and n - 2, 0 at "
+        "the others, at n = 3, 4 and 5 and up alike; the 2-ring's outer points add at most 1/4"),
+)}

@@ -54,7 +54,8 @@ nothing else.
                    of any polygons (``polygon_step``; with OpenSubdiv's tags, ``polygon_sharp``),
                    whole meshes refined exactly with their tags (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
-                   spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
+                   spectra (Eq. 34, ``spectrum``, ``closed_forms``; a distinct eigenvalue with its multiplicity, the
+                   one type of every spectrum, ``eigenvalue``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
                    ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning (``tuning``; the
@@ -182,6 +183,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.defective": ("jordan_block_size", "jordan_vertex_weights"),
     "symdecomp.analysis.design": ("LimitFrame", "RingDesign", "design_ring", "limit_frame"),
     "symdecomp.analysis.eigendata": ("certified_eigendata",),
+    "symdecomp.analysis.eigenvalue": ("ClosedFormLabel", "Eigenvalue"),
     "symdecomp.analysis.ellipses": ("ellipse_axes",),
     "symdecomp.analysis.elliptic": ("elliptic_defect_table", "nice_elliptic_conditions"),
     "symdecomp.analysis.evaluation": ("PatchEvaluator",),

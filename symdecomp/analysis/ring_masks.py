@@ -79,7 +79,7 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
     blocks = ring_blocks(scheme, rings)
     spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False, jordan=False)
     first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
-    lam1 = max(first, key=lambda e: float(e.ball.abs_upper())).ball
+    lam1 = max(first, key=lambda e: float(e.value.abs_upper())).value
     prec = max(128, 4 * digits + 64)
     with flint.ctx.workprec(prec):
         E0 = sp.Matrix(blocks.frequency_zero_matrix(n))

@@ -19,7 +19,8 @@ nothing else.
                    (``cyclotomic``), polygon decompositions (Eq. 5-6, ``polygons``), fast
                    exact/interval evaluation of expressions (``compile``), the conversions
                    between sympy, Fraction, FLINT and Arb numbers (``numbers``), small exact
-                   eigen-decompositions (``small_eigen``), correct rounding of balls (``rounding``),
+                   eigen-decompositions (``small_eigen``), the certified null vector of a ball matrix
+                   (``null_vector``), correct rounding of balls (``rounding``),
                    clusters of enclosures that may overlap (``clusters``),
                    polynomials over a triangle in Bezier form (``triangle_bezier``), products of
                    tensor and triangular Bernstein polynomials in Arb (``bernstein``), signs of
@@ -31,7 +32,8 @@ nothing else.
                    triangle; regular valence, rings and labels, refinement, regular patch: every
                    fact that depends on the kind of mesh, asked of the lattice, never compared), a
                    scheme as data (edge, face, vertex rules on a lattice, for the whole mesh) and
-                   the one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the full
+                   the one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the checks a scheme passes
+                   once, when built (``scheme_checks``), the full
                    matrix in FLINT rationals and its characteristic polynomial (``full_matrix``),
                    rules as polynomials in the index shift (Eq. 17-23, ``shift_stencil``), a scheme of the zoo as
                    stencils of any support on halfedge walks (``stencils``), the zoo's scheme files and the
@@ -57,7 +59,8 @@ nothing else.
                    of any polygons (``polygon_step``; with OpenSubdiv's tags, ``polygon_sharp``),
                    whole meshes refined exactly with their tags (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
-                   spectra (Eq. 34, ``spectrum``, ``closed_forms``), the tangent plane (Section
+                   spectra (Eq. 34, ``spectrum``, ``closed_forms``; a distinct eigenvalue with its multiplicity, the
+                   one type of every spectrum, ``eigenvalue``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
                    ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning (``tuning``; the
@@ -187,6 +190,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.defective": ("jordan_block_size", "jordan_vertex_weights"),
     "symdecomp.analysis.design": ("LimitFrame", "RingDesign", "design_ring", "limit_frame"),
     "symdecomp.analysis.eigendata": ("certified_eigendata",),
+    "symdecomp.analysis.eigenvalue": ("ClosedFormLabel", "Eigenvalue"),
     "symdecomp.analysis.ellipses": ("ellipse_axes",),
     "symdecomp.analysis.elliptic": ("elliptic_defect_table", "nice_elliptic_conditions"),
     "symdecomp.analysis.evaluation": ("PatchEvaluator",),

@@ -27,6 +27,7 @@ import mpmath
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
+from symdecomp.analysis.eigenvalue import ClosedFormLabel
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -34,17 +35,7 @@ from symdecomp.symbols import cos_jtheta, sin_jtheta
 from symdecomp.symbols import n as N
 from symdecomp.validate import cached, check_valence
 
-__all__ = ["ClosedForms", "ClosedFormLabel", "derived_closed_forms"]
-
-
-@dataclass(frozen=True)
-class ClosedFormLabel:
-    """Where one closed-form eigenvalue comes from."""
-
-    #: The n-gon frequency ``k`` (``0`` is the block of Eq. 43).
-    frequency: int
-    #: Which closed form: ``"Eq. 43 root i"``, ``"Eq. 34 dominant"`` or ``"Eq. 34 subdominant"``.
-    label: str
+__all__ = ["ClosedForms", "derived_closed_forms"]
 
 
 @dataclass(frozen=True)

@@ -22,12 +22,11 @@ at the value's Arb ball, and checked: the residual ``|y (E - lambda I)|`` must b
 
 from __future__ import annotations
 
-import itertools
-
 import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
+from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.analysis.ring_spectrum import acb_text, ring_spectrum
 from symdecomp.errors import SymdecompError
@@ -37,30 +36,6 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_digits, check_limit, check_valence
 
 __all__ = ["ring_masks"]
-
-
-def _left_null_vector(A, fixed_first: int | None = None):
-    """A nonzero ``y`` with ``y A = 0`` for a (numerically) singular acb matrix ``A``, or ``None``."""
-    K = A.nrows()
-    if K == 1:
-        return [flint.acb(1)]
-    At = A.transpose()
-    cols = [fixed_first] + [j for j in range(K) if j != fixed_first] if fixed_first is not None else range(K)
-    for j, i in itertools.product(cols, range(K)):
-        rows = [r for r in range(K) if r != i]
-        others = [c for c in range(K) if c != j]
-        M = flint.acb_mat([[At[r, c] for c in others] for r in rows])
-        rhs = flint.acb_mat([[-At[r, j]] for r in rows])
-        try:
-            x = M.solve(rhs)
-        except ZeroDivisionError:
-            continue
-        y = [flint.acb(0)] * K
-        y[j] = flint.acb(1)
-        for t, c in enumerate(others):
-            y[c] = x[t, 0]
-        return y
-    return None
 
 
 def _acb_matrix(M: sp.Matrix, variables, values):
@@ -79,19 +54,19 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
     blocks = ring_blocks(scheme, rings)
     spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False, jordan=False)
     first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
-    lam1 = max(first, key=lambda e: float(e.ball.abs_upper())).ball
+    lam1 = max(first, key=lambda e: float(e.value.abs_upper())).value
     prec = max(128, 4 * digits + 64)
     with flint.ctx.workprec(prec):
         E0 = sp.Matrix(blocks.frequency_zero_matrix(n))
         one = flint.acb_mat([[flint.acb(int(r == c)) for c in range(E0.shape[0])] for r in range(E0.shape[0])])
         A0 = _acb_matrix(E0, (), ()) - one
-        y0 = _left_null_vector(A0, fixed_first=0)
+        y0 = null_vector(A0.transpose(), first=0)  # a left null vector
         w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
         E1 = _acb_matrix(blocks.frequency_matrix().subs(N, n), (OMEGA,), (w,))  # an edge rule in n: at this valence
         K = blocks.class_count
         eye = flint.acb_mat([[flint.acb(int(r == c)) for c in range(K)] for r in range(K)])
         A1 = E1 - lam1 * eye
-        y1 = _left_null_vector(A1, fixed_first=blocks.classes.index((1, 0)))
+        y1 = null_vector(A1.transpose(), first=blocks.classes.index((1, 0)))
         if y0 is None or y1 is None:
             raise SymdecompError(f"n = {n}: no left eigenvector found for the masks (eigenvalue not simple?)")
         for y, A in ((y0, A0), (y1, A1)):

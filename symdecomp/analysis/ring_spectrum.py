@@ -30,6 +30,7 @@ import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value, matrix_rank, to_acb
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS
@@ -39,7 +40,7 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached, check_digits, check_limit, check_type, check_valence
 
-__all__ = ["Factor", "FrequencyFactors", "frequency_factors", "RingEigenvalue", "RingSpectrum", "ring_spectrum", "acb_text"]
+__all__ = ["Factor", "FrequencyFactors", "frequency_factors", "RingSpectrum", "ring_spectrum", "acb_text"]
 
 W_O, W_A, W_B = CENTRE_WEIGHTS
 #: ``cos(2 pi k/n)``: the variable of the closed forms of frequency ``k`` when they are real.
@@ -123,39 +124,6 @@ def frequency_factors(blocks: RingBlocks) -> FrequencyFactors:
 
 
 @dataclass(frozen=True)
-class RingEigenvalue:
-    """One distinct eigenvalue of the ``K``-ring matrix at a valence."""
-
-    #: A certified ball containing it (``flint.acb``).
-    ball: object
-    #: Decimal text.
-    text: str
-    multiplicity: int
-    #: The n-gon frequencies ``k`` it comes from.
-    frequencies: tuple[int, ...]
-    #: An exact expression (closed-form roots), or ``None`` for a root of a factor of degree > 2.
-    exact: sp.Expr | None
-    #: The factor (a polynomial in ``lambda``) it is a root of, at its first frequency.
-    factor: sp.Expr
-    #: Sizes of its Jordan blocks when known (all 1: not defective), else ``None``.
-    jordan: tuple[int, ...] | None
-    #: The roots in its cluster, ``(frequency k, factor index, root index)``, one per unit of
-    #: multiplicity (the factor's exponent repeats a root); for certificates of multiplicities.
-    members: tuple[tuple[int, int, int], ...] = ()
-    #: A ball holding every root of its cluster (``ball`` holds the first), or ``None``.
-    hull: object = None
-
-    def as_json(self) -> dict:
-        return {
-            "value": self.text,
-            "multiplicity": self.multiplicity,
-            "frequencies": list(self.frequencies),
-            "exact": None if self.exact is None else str(self.exact),
-            "jordan_blocks": None if self.jordan is None else list(self.jordan),
-        }
-
-
-@dataclass(frozen=True)
 class RingSpectrum:
     scheme: str
     mesh: str
@@ -163,7 +131,7 @@ class RingSpectrum:
     rings: int
     size: int
     digits: int
-    eigenvalues: tuple[RingEigenvalue, ...]
+    eigenvalues: tuple[Eigenvalue, ...]
 
     def as_json(self) -> dict:
         return {
@@ -173,7 +141,7 @@ class RingSpectrum:
             "rings": self.rings,
             "size": self.size,
             "digits": self.digits,
-            "eigenvalues": [e.as_json() for e in self.eigenvalues],
+            "eigenvalues": [e.as_json(exact=True) for e in self.eigenvalues],
         }
 
 
@@ -295,8 +263,8 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
             if exact and f.roots is not None:
                 value = _exact_root(f.roots[j], k, n, exact_w)
             entries.append(
-                RingEigenvalue(
-                    ball=b,
+                Eigenvalue(
+                    value=b,
                     text=acb_text(b, digits),
                     multiplicity=len(g),
                     frequencies=tuple(sorted({items[x][1] for x in g})),

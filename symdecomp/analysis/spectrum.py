@@ -25,6 +25,7 @@ import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.display import NotebookDisplay
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import UnsupportedExpressionError
@@ -35,21 +36,7 @@ from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
-__all__ = ["SpectrumEntry", "Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
-
-
-@dataclass(frozen=True)
-class SpectrumEntry:
-    """One distinct eigenvalue of the subdivision matrix."""
-
-    #: The value, at the working precision of the computation (mpmath ``mpf`` or ``mpc``).
-    value: object
-    #: The value as a decimal string with the requested number of significant digits.
-    text: str
-    #: Algebraic multiplicity (how many closed-form eigenvalues coincide with it).
-    multiplicity: int
-    #: The n-gon frequencies ``k`` whose block contributes it (``0`` is the block of Eq. 43).
-    frequencies: tuple[int, ...]
+__all__ = ["Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value"]
 
 
 @dataclass(frozen=True)
@@ -65,7 +52,7 @@ class Spectrum(NotebookDisplay):
     #: Values were grouped as equal when they agreed to this many digits (computed at more).
     grouping_digits: int
     #: Distinct eigenvalues, in decreasing order of modulus (then real part).
-    eigenvalues: tuple[SpectrumEntry, ...]
+    eigenvalues: tuple[Eigenvalue, ...]
 
     def as_json(self) -> dict:
         return {
@@ -73,10 +60,7 @@ class Spectrum(NotebookDisplay):
             "scheme": self.scheme,
             "digits": self.digits,
             "grouping_digits": self.grouping_digits,
-            "eigenvalues": [
-                {"value": e.text, "multiplicity": e.multiplicity, "frequencies": list(e.frequencies)}
-                for e in self.eigenvalues
-            ],
+            "eigenvalues": [e.as_json() for e in self.eigenvalues],
         }
 
 
@@ -191,7 +175,7 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
             else:
                 groups.append([(value, k)])
         entries = tuple(
-            SpectrumEntry(
+            Eigenvalue(
                 value=g[0][0],
                 text=format_value(g[0][0], digits),
                 multiplicity=len(g),

@@ -140,6 +140,8 @@ SCHEMES: dict[str, Callable[[], Scheme]] = {"catmull-clark": catmull_clark, "loo
 
 #: Mesh types a file may name (the lattices' names); ``"quad"`` is the default.
 MESHES = tuple(LATTICES)
+#: The mesh of a file that names none (and that a written file leaves out).
+DEFAULT_MESH = QUAD.name
 
 #: Scheme files shipped with the package, loaded by name (``--scheme catmull-clark-blz``): BLZ's rules at sharp features.
 SHIPPED_FILES = {"catmull-clark-blz": "catmull-clark-blz.toml", "loop-blz": "loop-blz.toml"}
@@ -212,24 +214,25 @@ def scheme_from_text(text: str, *, source: str = "<scheme>", default_name: str =
     if not isinstance(name, str) or not name.strip() or len(name) > 100 or not name.isprintable():
         raise InvalidSchemeError(f"{source}: name must be a non-empty string of at most 100 printable characters (no line "
                                  "breaks or control characters)")
-    mesh = data.get("mesh", QUAD.name)
+    mesh = data.get("mesh", DEFAULT_MESH)
     if not isinstance(mesh, str) or mesh not in LATTICES:
         raise InvalidSchemeError(f"{source}: mesh {mesh!r} is not supported (known: {', '.join(MESHES)})")
     mesh = LATTICES[mesh]
     symbols = _parameters(data.get("parameters", []), source)
-    triangle = not mesh.face_neighbours
-    if triangle and "face" in data:
+    sections = mesh.stencil_sections + ("vertex",)
+    kinds = {name for name, _ in mesh.one_ring_classes}  # the 1-ring's neighbours: a_i, and b_i with face neighbours
+    if "face" in data and "face" not in sections:
         raise InvalidSchemeError(f"{source}: [face]: a {mesh} mesh has no face rule (its 1-ring has no face neighbours b_i)")
     rules = {}
-    for section in ("edge", "vertex") if triangle else ("edge", "face", "vertex"):
+    for section in sections:
         if section not in data:
             raise InvalidSchemeError(f"{source}: missing section [{section}]")
         if not isinstance(data[section], dict):
             raise InvalidSchemeError(f"{source}: {section} must be a table [{section}]")
         if section == "vertex":
-            rules[section] = (_triangle_vertex if triangle else _vertex)(data[section], source, symbols)
+            rules[section] = (_vertex if "b" in kinds else _triangle_vertex)(data[section], source, symbols)
         else:
-            rules[section] = _stencil(data[section], section, source, symbols, keys={"O", "a"} if triangle else _RULE_KEYS)
+            rules[section] = _stencil(data[section], section, source, symbols, keys={"O", *kinds})
     edge, face, vertex = rules["edge"], rules.get("face"), rules["vertex"]
     declared = tuple(s for key, s in symbols.items() if key != "n")
     sharp = _sharp(data.get("sharp", {}), source, symbols)
@@ -381,11 +384,11 @@ def scheme_to_text(scheme: Scheme) -> str:
     if piecewise is not None:  # e.g. Warren's beta (3/16 at n = 3): the file grammar has no cases
         raise InvalidSchemeError(f"scheme {scheme.name!r}: the weight {piecewise} is defined by cases, which a scheme file cannot write")
     lines = [f'name = "{scheme.name}"']
-    if scheme.lattice != QUAD:  # the default is not written
+    if scheme.lattice.name != DEFAULT_MESH:  # the default is not written
         lines.append(f'mesh = "{scheme.lattice.name}"')
     if scheme.parameters:
         lines.append("parameters = [" + ", ".join(f'"{p}"' for p in scheme.parameters) + "]")
-    if not scheme.lattice.face_neighbours:
+    if "face" not in scheme.lattice.stencil_sections:
         rule = scheme.edge_rule
         lines += ["[edge]", f'O = "{_text(rule.center)}"', f"a = {offsets(rule.a)}", "[vertex]", f'beta = "{_text(v.each_a)}"']
         return "\n".join(lines + _sharp_lines(scheme)) + "\n"

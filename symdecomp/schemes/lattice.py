@@ -197,6 +197,15 @@ class Lattice:
         return (("a", (1, 0)),) + ((("b", (1, 1)),) if self.face_neighbours else ())
 
     @property
+    def stencil_sections(self) -> tuple[str, ...]:
+        """The 1-ring stencils of a scheme on this lattice, named as in scheme files: ``edge``, and ``face`` with face neighbours."""
+        return ("edge", "face") if self.face_neighbours else ("edge",)
+
+    def sector_ring(self, r: int) -> tuple[tuple[int, int], ...]:
+        """The points ``(u, v)`` of ring ``r`` in one sector of a fan (its first ray's point, not the next ray's), in matrix order."""
+        raise LatticeFactMissing(self, "sector_ring")
+
+    @property
     def neighbour_offsets(self) -> tuple[tuple[tuple[int, int], ...], tuple[tuple[int, int], ...]]:
         """``(edge, face)``: the offsets ``(du, dv)`` of a regular point's 1-ring neighbours, counter-clockwise from ``(1, 0)``."""
         raise LatticeFactMissing(self, "neighbour_offsets")
@@ -237,6 +246,9 @@ class QuadLattice(Lattice):
 
     def ring_size(self, n, rings):
         return 1 + n * rings * (rings + 1)
+
+    def sector_ring(self, r):
+        return tuple((u, v) for u in range(1, r + 1) for v in range(r + 1) if max(u, v) == r)
 
     #: Sides of every face of a mesh on this lattice.
     face_sides = 4
@@ -304,6 +316,9 @@ class TriangleLattice(Lattice):
 
     def ring_size(self, n, rings):
         return 1 + n * rings * (rings + 1) // 2
+
+    def sector_ring(self, r):
+        return tuple((r - v, v) for v in range(r))
 
     face_sides = 3
     patch = BOX_SPLINE

@@ -19,6 +19,8 @@ unevaluated; :mod:`symdecomp.algebra.cyclotomic` computes with it exactly).
 
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from symdecomp.schemes.lattice import TRIANGLE
@@ -54,7 +56,12 @@ def triangle_scheme(name: str, beta, *, edge_end=None, edge_side=None) -> Scheme
 
 
 def loop() -> Scheme:
-    """Loop's scheme with Loop's original vertex weight."""
+    """Loop's scheme with Loop's original vertex weight (built and validated once: a scheme is immutable)."""
+    return _loop()
+
+
+@functools.lru_cache(maxsize=1)
+def _loop() -> Scheme:
     return triangle_scheme("loop", loop_beta())
 
 

@@ -227,7 +227,7 @@ def triangle_mesh_rules(scheme: Scheme) -> TriangleMeshRules:
     which end is called ``O``. An edge rule in ``n`` is read at each edge's :func:`edge_valence`.
     """
 
-    if scheme.lattice.face_neighbours:
+    if "face" in scheme.lattice.stencil_sections:
         raise InvalidSchemeError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, not triangle meshes (its 1-ring has face neighbours)")
     edge = scheme.edge_rule
     ea = dict(edge.a)

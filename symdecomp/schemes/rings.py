@@ -26,6 +26,7 @@ regular), and :meth:`RingMatrix.weight_values` gives their exact values.
 
 from __future__ import annotations
 
+import functools
 import numbers
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -181,7 +182,7 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
         return exact[:count]
 
     labels = lat.ring_labels(n, rings)
-    mesh_rules_error = _mesh_rules_error(scheme)
+    rules, mesh_rules_error = _whole_mesh_rules(scheme)
     if mesh_rules_error is not None:
         if rings > 1:
             raise InvalidSchemeError(
@@ -194,7 +195,6 @@ def ring_subdivision_matrix(scheme: Scheme, n: int, rings: int = 1, *, symbolic_
         return RingMatrix(scheme.name, lat, n, rings, labels, tuple(rows), weights)
     unit = lambda s, u, v: (SparseRow({_index(labels, n, s, u, v): Fraction(1)}),)  # noqa: E731
     mesh = lat.ring_mesh(n, rings, unit)
-    rules = lat.mesh_rules(scheme)
     edges = _symbolic_edges(rules, n, used) if symbolic_centre and rules.depends_on_valence else None
     step = lat.refine(mesh, rules, vertex_weights=weights_at, edge_weights=edges)
     face_of = {frozenset(f): fi for fi, f in enumerate(mesh.faces)}
@@ -219,13 +219,17 @@ def _symbolic_edges(rules, n: int, used: dict):
     return at
 
 
-def _mesh_rules_error(scheme: Scheme) -> str | None:
-    """Why the scheme's 1-ring stencils are not rules of the whole mesh (``None`` when they are)."""
+@functools.lru_cache(maxsize=64)
+def _whole_mesh_rules(scheme: Scheme) -> tuple[object, str | None]:
+    """``(rules, None)``: the scheme's 1-ring stencils read as rules of the whole mesh, or ``(None, why not)``.
+
+    Read once per scheme: the reading checks identities of the weights (sympy), and every ring matrix of a
+    scheme, at every valence and depth, needs the same answer.
+    """
     try:
-        scheme.lattice.mesh_rules(scheme)
+        return scheme.lattice.mesh_rules(scheme), None
     except InvalidSchemeError as exc:
-        return str(exc)
-    return None
+        return None, str(exc)
 
 
 def _stencil_rows(scheme: Scheme, n: int, labels, centre_weights, *, symbolic: bool = False) -> list[dict]:

@@ -24,7 +24,6 @@ Matrix([[9/16, 3/32, 3/32, 3/32, 3/32, 1/64, 1/64, 1/64, 1/64]])
 from __future__ import annotations
 
 import numbers
-import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -33,11 +32,11 @@ from typing import Any
 import flint
 import sympy as sp
 
-from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, InvalidTypeError, NotAffineError
-from symdecomp.expressions import MAX_OFFSET, check_budget, exact_value, identically_zero
+from symdecomp.errors import InvalidExpressionError, InvalidSchemeError, NotAffineError
+from symdecomp.expressions import exact_value, identically_zero
 from symdecomp.schemes.lattice import LATTICES, QUAD, Lattice, lattice
-from symdecomp.schemes.sharp import SHARP_SYMBOLS, SharpRules, standard_sharp_rules
-from symdecomp.symbols import Parameter
+from symdecomp.schemes.scheme_checks import validate_scheme
+from symdecomp.schemes.sharp import SharpRules, standard_sharp_rules
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA
 from symdecomp.symbols import n as N
@@ -206,36 +205,8 @@ class Scheme:
     sharp: SharpRules = field(default_factory=standard_sharp_rules)
 
     def __post_init__(self):
-        _check_parts(self)
-        if not self.name.strip() or not self.name.isprintable():  # a str: _check_parts
-            # a name is shown in terminals and typeset in documents: one line of text, no control characters
-            raise InvalidSchemeError(f"scheme name must be a non-empty line of printable text, got {self.name!r}")
-        try:
-            object.__setattr__(self, "lattice", lattice(self.lattice))
-        except InvalidSchemeError as exc:
-            raise InvalidSchemeError(f"scheme {self.name!r}: {exc}") from None
-        faces = self.lattice.face_neighbours
-        if (self.face_rule is not None) != faces:
-            raise InvalidSchemeError(
-                f"scheme {self.name!r}: a {self.lattice} scheme " + ("needs a face rule" if faces else "has no face rule")
-            )
-        if not faces and (self.edge_rule.b or self.vertex_rule.each_b != 0):
-            raise InvalidSchemeError(
-                f"scheme {self.name!r}: a {self.lattice} 1-ring has no face neighbours b_i; give no b weights"
-            )
-        _within_budget(self)
-        _to_parameters(self)
-        self.sharp.check_edge_rule(self.edge_rule.center, f"scheme {self.name!r}")
-        free = {s for w in self.weights() + self.sharp.weights() for s in w.free_symbols} - {N, *SHARP_SYMBOLS.values()}
-        declared = set(self.parameters)
-        if free - declared:
-            object.__setattr__(
-                self, "parameters", tuple(self.parameters) + tuple(sorted(free - declared, key=str))
-            )
-        offsets = tuple(k for rule in self.stencils() for k in rule.offsets()) + (0,)
-        object.__setattr__(self, "_span", max(offsets) - min(offsets))
-        # the whole-mesh model: every vertex of the regular valence uses these rules there, so they must be defined there
-        _check_defined(self, self.lattice.regular_valence, " (the regular valence: every vertex away from O uses the rules there)")
+        # the door: every Scheme passes it once, when built, and the code that takes a Scheme trusts it
+        validate_scheme(self)
 
     @property
     def mesh(self) -> str:
@@ -296,72 +267,10 @@ class Scheme:
         )
 
 
-def _check_parts(scheme: Scheme) -> None:
-    """Refuse parts of the wrong kind (a dict for a rule, a number for the name) with :class:`InvalidTypeError`."""
-    check_type(scheme.name, str, "scheme name")
-    for part, kind in (("edge_rule", Stencil), ("face_rule", (Stencil, type(None))), ("vertex_rule", VertexRule)):
-        check_type(getattr(scheme, part), kind, f"scheme {scheme.name!r}: {part}", hint="see Stencil.from_weights, VertexRule.affine")
-    if not isinstance(scheme.parameters, (tuple, list)) or not all(isinstance(p, sp.Symbol) for p in scheme.parameters):
-        raise InvalidTypeError(f"scheme {scheme.name!r}: parameters must be a tuple of sympy symbols, got {scheme.parameters!r}")
-    object.__setattr__(scheme, "parameters", tuple(scheme.parameters))
-    check_type(scheme.sharp, SharpRules, f"scheme {scheme.name!r}: sharp", hint="see symdecomp.schemes.sharp.SharpRules")
-
-
-
 def check_scheme(scheme, argument: str = "scheme") -> Scheme:
     """``scheme`` if it is a :class:`Scheme`, else :class:`~symdecomp.errors.InvalidTypeError` (the check of every
     public function that takes a scheme, run before any cache)."""
     return check_type(scheme, Scheme, argument, hint="catmull_clark(), loop(), load_scheme(NAME_OR_FILE)")
-
-
-def _within_budget(scheme: Scheme) -> None:
-    """Refuse a scheme whose weights or offsets are beyond the expression budget (:data:`symdecomp.expressions.BUDGET`),
-    before anything is computed with them: the API's door, for rules built without :meth:`Stencil.from_weights`."""
-    for label, rule in zip(("edge rule", "face rule"), scheme.stencils()):
-        wide = [k for k in rule.offsets() if abs(k) > MAX_OFFSET]
-        if wide:
-            raise InvalidSchemeError(
-                f"scheme {scheme.name!r}: {label}: offset {wide[0]} is beyond the budget's {MAX_OFFSET} in magnitude (the "
-                f"closed forms are Laurent polynomials in omega of degree 2*offset, and every valence below the stencil's "
-                "width is refused)")
-    try:
-        for w in scheme.weights() + scheme.sharp.weights():
-            check_budget(sp.sympify(w, strict=True), "weight")
-    except InvalidExpressionError as exc:
-        raise InvalidSchemeError(f"scheme {scheme.name!r}: {exc}") from None
-
-
-def _to_parameters(scheme: Scheme) -> None:
-    """Move every user symbol of ``scheme`` into the users' namespace (:class:`~symdecomp.symbols.Parameter`).
-
-    A weight given to the API may hold any sympy symbol, e.g. ``Symbol("c", real=True)``, which is the
-    toolkit's ``c = cos(j pi/n)`` by sympy's equality; replaced by a parameter of the same name and
-    assumptions it can no longer meet the toolkit's symbols. ``n`` stays the valence, and ``alpha``,
-    ``beta`` stay the paper's vertex weights.
-    """
-    own = {N, ALPHA, BETA, *SHARP_SYMBOLS.values()}
-    stray = {s for w in (*scheme.weights(), *scheme.sharp.weights(), *scheme.parameters) for s in w.free_symbols
-             if s not in own and not isinstance(s, Parameter)}
-    if not stray:
-        return
-    for s in sorted(stray, key=str):  # printed by sympy in every derivation: a name, never markup
-        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", s.name):
-            raise InvalidSchemeError(f"scheme {scheme.name!r}: the parameter name {s.name!r} is not an identifier (letters, "
-                                     "digits and _, starting with a letter)")
-    move = {s: Parameter(s.name, **s.assumptions0) for s in stray}
-
-    def stencil(rule: Stencil) -> Stencil:
-        return Stencil(rule.center.xreplace(move), tuple((k, w.xreplace(move)) for k, w in rule.a),
-                       tuple((k, w.xreplace(move)) for k, w in rule.b))
-
-    v = scheme.vertex_rule
-    object.__setattr__(scheme, "edge_rule", stencil(scheme.edge_rule))
-    if scheme.face_rule is not None:
-        object.__setattr__(scheme, "face_rule", stencil(scheme.face_rule))
-    object.__setattr__(scheme, "vertex_rule", VertexRule(v.center.xreplace(move), v.each_a.xreplace(move),
-                                                         v.each_b.xreplace(move)))
-    object.__setattr__(scheme, "parameters", tuple(p.xreplace(move) for p in scheme.parameters))
-    object.__setattr__(scheme, "sharp", scheme.sharp.xreplace(move))
 
 
 def catmull_clark(alpha=None, beta=None) -> Scheme:
@@ -376,6 +285,18 @@ def catmull_clark(alpha=None, beta=None) -> Scheme:
     >>> catmull_clark(alpha, beta).vertex_rule.center
     -alpha*n - beta*n + 1
     """
+    if alpha is None and beta is None:
+        return _standard_catmull_clark()
+    return _catmull_clark(alpha, beta)
+
+
+@lru_cache(maxsize=1)
+def _standard_catmull_clark() -> Scheme:
+    """The standard Catmull-Clark, built (and validated) once: the lattice's reference, the command line's name."""
+    return _catmull_clark(None, None)
+
+
+def _catmull_clark(alpha, beta) -> Scheme:
     standard = alpha is None and beta is None
     if alpha is None:
         alpha = sp.Rational(3, 2) / N**2

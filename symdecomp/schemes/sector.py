@@ -37,6 +37,7 @@ import math
 import numbers
 from dataclasses import dataclass
 from itertools import accumulate
+from types import SimpleNamespace
 
 import flint
 import sympy as sp
@@ -139,12 +140,15 @@ class SharpVertex:
 
     def one_ring_size(self) -> int:
         """Points of the 1-ring: ``O``, the edge neighbours and (quads) the face neighbours."""
-        return 1 + self.edge_count() + (self.faces if self.lattice.face_neighbours else 0)
+        return 1 + sum(count for _, _, count in self._one_ring_classes())
 
     def vertex_order(self) -> tuple[str, ...]:
         """Names of the 1-ring points in matrix order: ``O, a_0..a_m, b_0..b_{f-1}``."""
-        b = tuple(f"b_{i}" for i in range(self.faces)) if self.lattice.face_neighbours else ()
-        return ("O",) + tuple(f"a_{i}" for i in range(self.edge_count())) + b
+        return ("O",) + tuple(f"{name}_{i}" for name, _, count in self._one_ring_classes() for i in range(count))
+
+    def _one_ring_classes(self) -> tuple[tuple[str, tuple[int, int], int], ...]:
+        """The lattice's kinds of 1-ring neighbours as ``(name, (u, v), count)``: one ``a_i`` per edge, the others per face."""
+        return tuple((name, uv, self.edge_count() if uv == (1, 0) else self.faces) for name, uv in self.lattice.one_ring_classes)
 
     def at_level(self, level: int) -> SharpVertex:
         """The same vertex ``level`` refinements later: a semi-sharp sharpness decreased by ``level``."""
@@ -158,14 +162,12 @@ class SharpVertex:
         return self._labels(check_rings(rings))
 
     def _labels(self, rings: int) -> tuple[tuple[int, int, int], ...]:
-        f, quads = self.faces, self.lattice.face_neighbours
-        out = [(0, 0, 0)] + [(i, 1, 0) for i in range(self.edge_count())] + ([(i, 1, 1) for i in range(f)] if quads else [])
+        f = self.faces
+        out = [(0, 0, 0)] + [(i, u, v) for _, (u, v), count in self._one_ring_classes() for i in range(count)]
         for r in range(2, rings + 1):
+            ring = self.lattice.sector_ring(r)
             for s in range(f):
-                if quads:
-                    out += [(s, u, v) for u in range(1, r + 1) for v in range(r + 1) if max(u, v) == r]
-                else:
-                    out += [(s, r - v, v) for v in range(r)]
+                out += [(s, u, v) for u, v in ring]
             out += [] if self.closed else [(f, r, 0)]
         return tuple(out)
 
@@ -186,16 +188,13 @@ class SharpVertex:
         def vid(s, u, v):
             return ids[self._canonical(s, u, v)]
 
+        lat = self.lattice
         faces = []
         for s in range(self.faces):
             for u in range(rings):
-                for v in range(rings if self.lattice.face_neighbours else rings - u):
-                    if self.lattice.face_neighbours:
-                        faces.append((vid(s, u, v), vid(s, u + 1, v), vid(s, u + 1, v + 1), vid(s, u, v + 1)))
-                        continue
-                    faces.append((vid(s, u, v), vid(s, u + 1, v), vid(s, u, v + 1)))
-                    if u + v <= rings - 2:
-                        faces.append((vid(s, u + 1, v), vid(s, u + 1, v + 1), vid(s, u, v + 1)))
+                for v in range(rings):  # the lattice's faces of the cell at (u, v) that lie within the rings
+                    cell = lat.cell_faces((u, v), (u + 1, v), (u + 1, v + 1), (u, v + 1))
+                    faces += [tuple(vid(s, *p) for p in face) for face in cell if all(lat.ring_of(*p) <= rings for p in face)]
         mesh = self.lattice.mesh(tuple(faces), {i: (0,) for i in range(len(labels))})
         rays = {r: [frozenset((vid(r, u, 0), vid(r, u + 1, 0))) for u in range(rings)] for r in self.sharp_rays()}
         boundary = {e for r in rays for e in rays[r] if not self.closed and r in (0, self.faces)}
@@ -226,14 +225,9 @@ def _refined_point(vertex: SharpVertex, stencils, ids: dict, face_of: dict, labe
     def old(a, b):
         return ids[vertex._canonical(s, a, b)]
 
-    if u % 2 == 0 and v % 2 == 0:
-        return stencils.vertex[old(u // 2, v // 2)]
-    if vertex.lattice.face_neighbours and u % 2 and v % 2:
-        return stencils.face[face_of[frozenset(old((u + a) // 2, (v + b) // 2) for a in (-1, 1) for b in (-1, 1))]]
-    if u % 2 and v % 2:  # triangles: the midpoint of the diagonal edge
-        return stencils.edge[frozenset((old((u + 1) // 2, (v - 1) // 2), old((u - 1) // 2, (v + 1) // 2)))]
-    du, dv = u % 2, v % 2
-    return stencils.edge[frozenset((old((u - du) // 2, (v - dv) // 2), old((u + du) // 2, (v + dv) // 2)))]
+    # the lattice names the new point (a vertex, edge or face point) at the fine lattice point (u, v)
+    step = SimpleNamespace(vertex_point=stencils.vertex, edge_point=stencils.edge, face_point=stencils.face)
+    return vertex.lattice.refined_point(step, old, u, v, face_of)
 
 
 def _check_vertex(vertex) -> SharpVertex:

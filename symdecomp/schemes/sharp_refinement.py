@@ -43,7 +43,8 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from symdecomp.errors import InvalidMeshError, InvalidSchemeError
+from symdecomp.errors import InvalidMeshError, InvalidSchemeError, LatticeFactMissing
+from symdecomp.schemes.lattice import lattice_of
 from symdecomp.schemes.mesh import QuadMesh, TriangleMesh
 from symdecomp.schemes.refinement import _as_weight
 from symdecomp.schemes.sharp import (
@@ -78,8 +79,10 @@ class TaggedMesh:
     angles: Mapping[int, object] = field(default_factory=dict)
 
     def __post_init__(self):
-        if not isinstance(self.mesh, (QuadMesh, TriangleMesh)):
-            raise InvalidMeshError(f"a tagged mesh needs a QuadMesh or TriangleMesh, got {type(self.mesh).__name__}")
+        try:
+            lattice_of(self.mesh)  # a local mesh of some lattice's kind
+        except LatticeFactMissing:
+            raise InvalidMeshError(f"a tagged mesh needs a QuadMesh or TriangleMesh, got {type(self.mesh).__name__}") from None
         edges = {frozenset(e) for e in self.mesh._directed}
         sharp = {}
         for e, s in dict(self.edge_sharpness).items():
@@ -189,11 +192,7 @@ class _Rules:
 
     def __init__(self, scheme, options: SharpOptions):
         self.scheme, self.options, self.sharp = scheme, options, scheme.sharp
-        self.mesh_rules = scheme.lattice.mesh_rules(scheme) if scheme.lattice.face_neighbours else None
-        if self.mesh_rules is None:
-            from symdecomp.schemes.refinement import triangle_mesh_rules
-
-            self.mesh_rules = triangle_mesh_rules(scheme)
+        self.mesh_rules = scheme.lattice.mesh_rules(scheme)
         if self.mesh_rules.depends_on_valence:  # a sharp vertex's sectors have no valence to read the rule at
             raise InvalidSchemeError(f"scheme {scheme.name!r}: its edge rule depends on the valence n, and a mesh with "
                                      "sharp features reads it at no valence; give an edge rule without n")
@@ -339,7 +338,7 @@ def sharp_stencils(tagged: TaggedMesh, scheme, options: SharpOptions | None = No
             if stencil is not None:
                 edge[key] = stencil
     face = {}
-    if scheme.lattice.face_neighbours:
+    if "face" in scheme.lattice.stencil_sections:
         corner = _as_weight(rules.mesh_rules.face_corner)
         face = {fi: {x: corner for x in f} for fi, f in enumerate(mesh.faces)}
     return PointStencils(MappingProxyType(face), MappingProxyType(edge), MappingProxyType(vertex),

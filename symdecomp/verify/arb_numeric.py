@@ -28,7 +28,7 @@ why the certificate is the Gershgorin step above.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> r = arb_numeric_check(catmull_clark(), 4, dps=20)
->>> r.status.value, r.solver, [m.multiplicity for m in r.matches]
+>>> r.status.value, r.solver, [m.eigenvalue.multiplicity for m in r.matches]
 ('agree', 'flint', [1, 2, 3, 2, 1])
 """
 
@@ -41,12 +41,13 @@ import mpmath
 
 from symdecomp.algebra.clusters import overlap_groups
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import MAX_DPS, check_memory, check_precision, check_valence
-from symdecomp.verify.numeric import EigenvalueMatch, NumericCheck, _next_precision
+from symdecomp.verify.numeric import EigenvalueMatch, NumericCheck, _frequencies, _next_precision
 from symdecomp.verify.result import CrossCheckStatus
 
 __all__ = ["gershgorin_clusters", "arb_numeric_check"]
@@ -167,16 +168,20 @@ def arb_numeric_check(scheme: Scheme, n: int, *, dps: int = 50, parameters: Mapp
     return _result(scheme, n, dps, precisions, status, message, found or [], balls, labels)
 
 
+def _eigenvalue(ball, dps: int, labels: tuple) -> Eigenvalue:
+    """The closed-form eigenvalue in ``ball``, with the closed forms whose enclosures lie in its cluster."""
+    return Eigenvalue(_mp(ball, dps + 10), _text(ball, dps), len(labels), frequencies=_frequencies(labels), labels=labels)
+
+
 def _result(scheme, n, dps, precisions, status, message, found, balls, labels) -> NumericCheck:
     with mpmath.workdps(dps + 10):
         matches = tuple(
-            EigenvalueMatch(value=_mp(balls[inside[0]], dps + 10), text=_text(balls[inside[0]], dps), multiplicity=len(inside),
-                            labels=tuple(labels[i] for i in inside), matched=m,
+            EigenvalueMatch(_eigenvalue(balls[inside[0]], dps, tuple(labels[i] for i in inside)), matched=m,
                             deviation=mpmath.mpf(deviation.mid().str(5, radius=False)),
                             spread=mpmath.mpf(deviation.mid().str(5, radius=False)))
             for inside, m, deviation in found
         )
-        matches = tuple(sorted(matches, key=lambda m: (-abs(m.value), -mpmath.re(m.value), -mpmath.im(m.value))))
+        matches = tuple(sorted(matches, key=lambda m: (-abs(m.eigenvalue.value), -mpmath.re(m.eigenvalue.value), -mpmath.im(m.eigenvalue.value))))
         worst = max((m.deviation for m in matches), default=mpmath.inf)
     if status is None:
         status = CrossCheckStatus.UNDECIDED
@@ -184,7 +189,7 @@ def _result(scheme, n, dps, precisions, status, message, found, balls, labels) -
                    f"{precisions[-1]} digits of working precision (a defective eigenvalue never separates: --solver mpmath "
                    "matches it by its mean); no verdict")
     elif status is CrossCheckStatus.AGREE:
-        message = (f"n = {n}: {sum(m.multiplicity for m in matches)} eigenvalues ({len(matches)} distinct) agree to {dps} "
+        message = (f"n = {n}: {sum(m.eigenvalue.multiplicity for m in matches)} eigenvalues ({len(matches)} distinct) agree to {dps} "
                    f"digits, certified (Arb enclosures); largest deviation below {mpmath.nstr(worst, 3)}")
     return NumericCheck(n=n, scheme=scheme.name, dps=dps, precisions=tuple(precisions), status=status, max_deviation=worst,
                         max_spread=max((m.spread for m in matches), default=mpmath.inf), matches=matches, message=message,

@@ -34,6 +34,7 @@ import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cos_field import affine_in
+from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.sharp_field import near_weight
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
@@ -253,27 +254,6 @@ def sector_eigenvalues(sm: SectorMatrices) -> list[tuple[flint.acb, Eigenpart, b
     return out
 
 
-def _null_vector(A: flint.acb_mat) -> list | None:
-    """A null vector of the ball matrix ``A`` (rank ``m - 1`` at the true value): coordinate ``j`` set to 1, the others solved."""
-    m = A.nrows()
-    if m == 1:
-        return [flint.acb(1)]
-    for j in range(m):
-        keep = [i for i in range(m) if i != j]
-        sub = flint.acb_mat([[A[r, c] for c in keep] for r in keep])
-        rhs = flint.acb_mat([[-A[r, j]] for r in keep])
-        try:
-            x = sub.solve(rhs)
-        except ZeroDivisionError:
-            continue
-        vec = [flint.acb(0)] * m
-        vec[j] = flint.acb(1)
-        for t, i in enumerate(keep):
-            vec[i] = x[t, 0]
-        return vec
-    return None
-
-
 def sector_eigenvector(sm: SectorMatrices, part: Eigenpart, value: flint.acb, in_ring: bool) -> list | None:
     """The eigenvector (2-ring, matrix order) of a simple eigenvalue ``value`` of ``part`` (``None`` if not certified).
 
@@ -284,7 +264,7 @@ def sector_eigenvector(sm: SectorMatrices, part: Eigenpart, value: flint.acb, in
     size, m = len(part.basis), part.inner or len(part.basis)
     if in_ring:
         inner = flint.acb_mat([[A[r, c] - (value if r == c else 0) for c in range(m)] for r in range(m)])
-        head = _null_vector(inner)
+        head = null_vector(inner)
         if head is None:
             return None
         if size > m:
@@ -297,7 +277,7 @@ def sector_eigenvector(sm: SectorMatrices, part: Eigenpart, value: flint.acb, in
             head += [tail[i, 0] for i in range(size - m)]
     else:
         outer = flint.acb_mat([[A[r, c] - (value if r == c else 0) for c in range(m, size)] for r in range(m, size)])
-        tail = _null_vector(outer)
+        tail = null_vector(outer)
         if tail is None:
             return None
         head = [flint.acb(0)] * m + tail

@@ -55,7 +55,8 @@ import sympy as sp
 from symdecomp.algebra.clusters import overlap_groups
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
+from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.eigenvalue import ClosedFormLabel
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values

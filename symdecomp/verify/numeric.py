@@ -19,7 +19,7 @@ more than the requested ``dps`` digits. They are matched with the closed-form ei
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> r = numeric_check(catmull_clark(), 4, dps=20)
->>> r.status.value, [(m.text, m.multiplicity) for m in r.matches][:3]
+>>> r.status.value, [(m.eigenvalue.text, m.eigenvalue.multiplicity) for m in r.matches][:3]
 ('agree', [('1.0', 1), ('0.5', 2), ('0.25', 3)])
 """
 
@@ -31,7 +31,8 @@ from typing import ClassVar
 
 import mpmath
 
-from symdecomp.analysis.closed_forms import ClosedFormLabel, ClosedForms, derived_closed_forms
+from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.spectrum import format_value
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
@@ -44,27 +45,16 @@ __all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eige
 
 @dataclass(frozen=True)
 class EigenvalueMatch:
-    """One distinct closed-form eigenvalue and the numeric eigenvalues matched with it."""
+    """One distinct closed-form eigenvalue and the numeric eigenvalues of the full matrix matched with it."""
 
-    #: The closed-form value (mpmath number at the working precision).
-    value: object
-    #: The value as a decimal string (``dps`` significant digits).
-    text: str
-    #: How many closed-form eigenvalues have this value.
-    multiplicity: int
-    #: Where they come from (frequency ``k`` and which closed form).
-    labels: tuple[ClosedFormLabel, ...]
+    #: The closed-form eigenvalue (value at the working precision, text to ``dps`` digits, multiplicity, closed forms).
+    eigenvalue: Eigenvalue
     #: How many eigenvalues of the full matrix were nearest to it.
     matched: int
     #: ``|mean of the matched eigenvalues - value|`` (distance to the nearest eigenvalue if none matched).
     deviation: object
     #: ``max |matched eigenvalue - value|``: about ``eps^(1/m)`` for an ``m x m`` Jordan block.
     spread: object
-
-    def describe(self) -> str:
-        ks = sorted({lab.frequency for lab in self.labels})
-        kinds = sorted({lab.label for lab in self.labels})
-        return f"{self.text} ({'; '.join(kinds)}; k = {', '.join(map(str, ks))}; multiplicity {self.multiplicity})"
 
 
 @dataclass(frozen=True)
@@ -129,6 +119,11 @@ def full_matrix_eigenvalues(scheme: Scheme, n: int, dps: int, parameters: Mappin
         return [+v for v in values]
 
 
+def _frequencies(labels) -> tuple[int, ...]:
+    """The n-gon frequencies of closed-form labels, ascending and distinct."""
+    return tuple(sorted({lab.frequency for lab in labels}))
+
+
 def group_values(values, labels, tol) -> list[tuple[object, list]]:
     """Group equal closed-form values (within ``tol``): ``[(value, [labels])]``, largest first."""
     order = sorted(range(len(values)), key=lambda i: (-abs(values[i]), -mpmath.re(values[i]), -mpmath.im(values[i])))
@@ -160,10 +155,7 @@ def _match(groups, eigs, dps):
             spread = deviation
         matches.append(
             EigenvalueMatch(
-                value=value,
-                text=format_value(value, dps),
-                multiplicity=len(labels),
-                labels=tuple(labels),
+                Eigenvalue(value, format_value(value, dps), len(labels), frequencies=_frequencies(labels), labels=tuple(labels)),
                 matched=len(got),
                 deviation=deviation,
                 spread=spread,
@@ -264,7 +256,7 @@ def _not_converged(scheme, n, dps, precisions, matches, max_dps, reference) -> N
         deviation, spread = worst.deviation, max(m.spread for m in matches)
         message = (
             f"n = {n}: the numeric spectrum did not converge to {dps} digits by {precisions[-1] if precisions else dps} "
-            f"digits of working precision (worst eigenvalue {worst.describe()}); no verdict"
+            f"digits of working precision (worst eigenvalue {worst.eigenvalue.describe()}); no verdict"
         )
     return NumericCheck(
         n=n,
@@ -296,27 +288,27 @@ def _same(previous, means, dps) -> bool:
 
 def _verdict(scheme, n, dps, precisions, matches) -> NumericCheck:
     tol = mpmath.mpf(10) ** (-dps)
-    bad_count = [m for m in matches if m.matched != m.multiplicity]
-    bad_value = [m for m in matches if m.matched and m.deviation > tol * max(1, abs(m.value))]
+    bad_count = [m for m in matches if m.matched != m.eigenvalue.multiplicity]
+    bad_value = [m for m in matches if m.matched and m.deviation > tol * max(1, abs(m.eigenvalue.value))]
     max_dev = max(m.deviation for m in matches)
     max_spread = max(m.spread for m in matches)
     if bad_count:
         m = bad_count[0]
         message = (
-            f"n = {n}: closed-form eigenvalue {m.describe()} has {m.matched} eigenvalue(s) of the full matrix nearest "
-            f"to it, not {m.multiplicity} (nearest at distance {mpmath.nstr(m.deviation, 3)})"
+            f"n = {n}: closed-form eigenvalue {m.eigenvalue.describe()} has {m.matched} eigenvalue(s) of the full matrix nearest "
+            f"to it, not {m.eigenvalue.multiplicity} (nearest at distance {mpmath.nstr(m.deviation, 3)})"
         )
         status = CrossCheckStatus.DISAGREE
     elif bad_value:
         m = max(bad_value, key=lambda m: m.deviation)
         message = (
-            f"n = {n}: closed-form eigenvalue {m.describe()} differs from the full matrix's eigenvalue(s) by "
+            f"n = {n}: closed-form eigenvalue {m.eigenvalue.describe()} differs from the full matrix's eigenvalue(s) by "
             f"{mpmath.nstr(m.deviation, 3)} (tolerance 1e-{dps})"
         )
         status = CrossCheckStatus.DISAGREE
     else:
         message = (
-            f"n = {n}: {sum(m.multiplicity for m in matches)} eigenvalues ({len(matches)} distinct) agree to {dps} digits; "
+            f"n = {n}: {sum(m.eigenvalue.multiplicity for m in matches)} eigenvalues ({len(matches)} distinct) agree to {dps} digits; "
             f"largest deviation {mpmath.nstr(max_dev, 3)}"
         )
         status = CrossCheckStatus.AGREE

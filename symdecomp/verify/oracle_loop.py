@@ -94,7 +94,7 @@ def _frequency_values(spectrum, n: int) -> dict[int, list[complex]]:
     """The distinct eigenvalues of each frequency ``j`` (1 left out at ``j = 0``), largest first."""
     out: dict[int, list[complex]] = {j: [] for j in range(n // 2 + 1)}
     for e in spectrum.eigenvalues:
-        value = complex(float(e.ball.real.mid()), float(e.ball.imag.mid()))
+        value = complex(float(e.value.real.mid()), float(e.value.imag.mid()))
         for j in e.frequencies:
             if j in out and not (j == 0 and abs(value - 1) < 1e-12):
                 out[j].append(value)
@@ -118,7 +118,7 @@ def compare_loop_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> Val
     rows = [_exact("one-step matrix", float(np.max(np.abs(osd - S))))]
 
     spectrum = ring_spectrum(scheme, n, 1, digits=20, exact=False, jordan=False)
-    ours = sorted((complex(float(e.ball.real.mid()), float(e.ball.imag.mid())) for e in spectrum.eigenvalues
+    ours = sorted((complex(float(e.value.real.mid()), float(e.value.imag.mid())) for e in spectrum.eigenvalues
                    for _ in range(e.multiplicity)), key=lambda z: (z.real, z.imag))
     theirs = sorted(np.linalg.eigvals(osd), key=lambda z: (z.real, z.imag))
     rows.append(_exact("spectrum", max(abs(a - b) for a, b in zip(ours, theirs)) if len(ours) == len(theirs) else math.inf))

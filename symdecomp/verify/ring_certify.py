@@ -210,7 +210,7 @@ def cluster_multiplicities(scheme: Scheme, blocks: RingBlocks, spectrum) -> str 
     entries = spectrum.eigenvalues
     if any(not e.members for e in entries):
         return "the spectrum does not list its clusters' roots"
-    if not _disjoint([e.ball for e in entries]):
+    if not _disjoint([e.value for e in entries]):
         return "two clusters of Arb balls overlap"
     ff = frequency_factors(blocks)
     field = None

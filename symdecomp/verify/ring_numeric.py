@@ -9,16 +9,18 @@ Double precision limits the agreement to about 12 digits; ``--certify`` proves i
 
 >>> from symdecomp.schemes.loop import loop
 >>> r = ring_numeric_check(loop(), 7, 2, digits=10)
->>> r.status.value, [m.multiplicity for m in r.matches]
+>>> r.status.value, [m.eigenvalue.multiplicity for m in r.matches]
 ('agree', [1, 2, 2, 1, 2, 7, 7])
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import mpmath
 import numpy as np
 
-from symdecomp.analysis.closed_forms import ClosedFormLabel
+from symdecomp.analysis.eigenvalue import ClosedFormLabel
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
@@ -50,18 +52,18 @@ def ring_numeric_check(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 
     tol = 10.0 ** (-digits)
     matches, failures = [], []
     for e in sorted(spectrum.eigenvalues, key=lambda e: -e.multiplicity):
-        value = complex(float(e.ball.real.mid()), float(e.ball.imag.mid()))
+        value = complex(float(e.value.real.mid()), float(e.value.imag.mid()))
         numeric.sort(key=lambda z: abs(z - value))
         mine, numeric = numeric[: e.multiplicity], numeric[e.multiplicity :]
         mean = sum(mine) / len(mine) if mine else complex("nan")
         deviation = abs(mean - value)
         spread = max((abs(z - value) for z in mine), default=float("nan"))
         labels = tuple(ClosedFormLabel(k, "frequency factor") for k in e.frequencies)
-        matches.append(EigenvalueMatch(value, e.text, e.multiplicity, labels, len(mine), mpmath.mpf(deviation), mpmath.mpf(spread)))
+        matches.append(EigenvalueMatch(replace(e, value=value, labels=labels), len(mine), mpmath.mpf(deviation), mpmath.mpf(spread)))
         if not deviation <= tol * max(1.0, abs(value)):
             failures.append(f"{e.text} (k = {', '.join(map(str, e.frequencies))}; multiplicity {e.multiplicity}): "
                             f"the full matrix's eigenvalues average {mean:.12g}, off by {deviation:.3g}")
-    matches.sort(key=lambda m: -abs(m.value))
+    matches.sort(key=lambda m: -abs(m.eigenvalue.value))
     status = CrossCheckStatus.DISAGREE if failures else CrossCheckStatus.AGREE
     message = f"n = {n}: " + ("; ".join(failures) if failures else f"all {len(matches)} distinct values agree to {digits} digits (double precision)")
     return NumericCheck(

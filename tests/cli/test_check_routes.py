@@ -166,7 +166,8 @@ def test_flint_and_mpmath_numeric_routes_agree(scheme):
         assert (a.solver, b.solver) == ("flint", "mpmath")
         assert len(a.matches) == len(b.matches)
         for m in a.matches:  # the same values (to 30 digits) with the same multiplicities
-            assert any(abs(m.value - o.value) < 1e-28 and m.multiplicity == o.multiplicity for o in b.matches), m.text
+            x = m.eigenvalue
+            assert any(abs(x.value - o.eigenvalue.value) < 1e-28 and x.multiplicity == o.eigenvalue.multiplicity for o in b.matches), x.text
     cf = derived_closed_forms(scheme)
     for kind in KINDS:
         wrong = _wrong(cf, kind)

@@ -66,13 +66,13 @@ def test_ring_blocks_spectrum_and_reifs_test_agree(n):
     spectrum = ring_spectrum(SYMMETRIC_IN_N, n, 2)
     r = c1_test(SYMMETRIC_IN_N, n)
     top = r.spectral.subdominant.value
-    second = [e for e in spectrum.eigenvalues if not (e.ball - 1).contains(0)][0]
-    assert (second.ball - top).contains(0), (second.text, top)  # the same subdominant eigenvalue
+    second = [e for e in spectrum.eigenvalues if not (e.value - 1).contains(0)][0]
+    assert (second.value - top).contains(0), (second.text, top)  # the same subdominant eigenvalue
     # and both equal an eigenvalue of the exact 2-ring matrix (numerically, 30 digits)
     S = ring_subdivision_matrix(SYMMETRIC_IN_N, n, 2).exact_matrix()
     with mpmath.workdps(40):
         eigs, _ = mpmath.eig(mpmath.matrix([[mpmath.mpf(x.p) / x.q for x in S.row(r)] for r in range(S.rows)]))
-        assert min(abs(complex(e) - complex(second.ball.mid())) for e in eigs) < 1e-12
+        assert min(abs(complex(e) - complex(second.value.mid())) for e in eigs) < 1e-12
 
 
 def test_masks_and_one_ring_suffices_read_the_file():

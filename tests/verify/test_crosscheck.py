@@ -19,7 +19,7 @@ FREE = catmull_clark(alpha, beta)
 
 
 def _group(result, text):
-    return next(m for m in result.matches if m.text == text)
+    return next(m for m in result.matches if m.eigenvalue.text == text)
 
 
 @pytest.mark.parametrize("n", [3, 5, 7])
@@ -35,8 +35,8 @@ def test_repeated_quarter_at_n4_is_matched_three_times():
     r = numeric_check(CC, 4, dps=30)
     assert r.ok
     quarter = _group(r, "0.25")
-    assert quarter.multiplicity == 3 and quarter.matched == 3
-    assert sorted({lab.frequency for lab in quarter.labels}) == [0, 2]
+    assert quarter.eigenvalue.multiplicity == 3 and quarter.matched == 3
+    assert sorted({lab.frequency for lab in quarter.eigenvalue.labels}) == [0, 2]
 
 
 def test_frequency_n_over_2_at_n6():
@@ -44,8 +44,8 @@ def test_frequency_n_over_2_at_n6():
     r = numeric_check(CC, 6, dps=30)
     assert r.ok
     quarter = _group(r, "0.25")
-    assert quarter.multiplicity == 2 and quarter.matched == 2
-    assert {(lab.frequency, lab.label) for lab in quarter.labels} == {(3, "Eq. 34 dominant"), (3, "Eq. 34 subdominant")}
+    assert quarter.eigenvalue.multiplicity == 2 and quarter.matched == 2
+    assert {(lab.frequency, lab.label) for lab in quarter.eigenvalue.labels} == {(3, "Eq. 34 dominant"), (3, "Eq. 34 subdominant")}
 
 
 def test_defective_eigenvalue_splits_by_sqrt_eps_and_is_matched_by_its_mean():
@@ -54,7 +54,7 @@ def test_defective_eigenvalue_splits_by_sqrt_eps_and_is_matched_by_its_mean():
     r = numeric_check(FREE, n, parameters=weights, dps=30)
     assert r.status is CrossCheckStatus.AGREE, r.message
     m = _group(r, "0.375")
-    assert m.multiplicity == 2 and m.matched == 2
+    assert m.eigenvalue.multiplicity == 2 and m.matched == 2
     work = r.precisions[-1]
     # the two computed eigenvalues sit about sqrt(10^-work) from 3/8; their mean is far closer
     assert mpmath.mpf(10) ** (-(work / 2) - 4) < m.spread < mpmath.mpf(10) ** (-(work / 2) + 4)
@@ -140,7 +140,7 @@ def test_complex_frequency_zero_eigenvalues():
     weights = {alpha: sp.Rational(-1, 5), beta: sp.Rational(1, 3)}
     r = numeric_check(FREE, 5, parameters=weights, dps=30)
     assert r.ok, r.message
-    complex_matches = [m for m in r.matches if mpmath.im(m.value) != 0]
+    complex_matches = [m for m in r.matches if mpmath.im(m.eigenvalue.value) != 0]
     assert len(complex_matches) == 2
     with mpmath.workdps(60):
-        assert abs(complex_matches[0].value - mpmath.conj(complex_matches[1].value)) < mpmath.mpf(10) ** -30
+        assert abs(complex_matches[0].eigenvalue.value - mpmath.conj(complex_matches[1].eigenvalue.value)) < mpmath.mpf(10) ** -30

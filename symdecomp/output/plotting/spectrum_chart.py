@@ -52,7 +52,7 @@ def _scatter(ax, points: Sequence[tuple[float, complex, int]]) -> None:
 def spectrum_figure(spectrum):
     """The eigenvalues of ``spectrum`` (a ``Spectrum`` or a ``RingSpectrum``) over the frequencies ``k = 0..n-1``."""
     entries = spectrum.eigenvalues
-    points = [(k, as_complex(e.value if hasattr(e, "value") else e.ball), e.multiplicity)
+    points = [(k, as_complex(e.value), e.multiplicity)
               for e in entries for k in e.frequencies]
     fig = new_figure(7.5, 4.5)
     ax = fig.subplots()

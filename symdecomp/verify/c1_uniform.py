@@ -156,8 +156,11 @@ _BOUNDARIES = {BICUBIC: _quad_boundary, BOX_SPLINE: _triangle_boundary}
 def uniform_map(scheme: Scheme, first: int) -> UniformMapResult:
     """Regularity and injectivity of the characteristic map for every ``n >= first`` (module docstring); ``open`` with
     the first part that is not shown."""
+    from symdecomp.analysis.characteristic import check_applicable
+
     low = t_lower_bound(first)
     try:
+        check_applicable(scheme)
         nets = uniform_nets(scheme)
     except NotApplicableError as exc:
         return UniformMapResult("open", first, low, (str(exc),), 0)

@@ -78,6 +78,9 @@ class EveryNResult:
     certified: tuple[int, int]
     #: The first valence where C1 fails (a concrete counterexample), or ``None``.
     failure: int | None = None
+    #: The characteristic map for every ``n`` from some valence on (:class:`~symdecomp.verify.c1_uniform.UniformMapResult`),
+    #: or ``None`` where it was not tried (a failure, or the spectral conditions not proved).
+    uniform: object = None
 
     def as_json(self) -> dict:
         return {"scheme": self.scheme, "status": self.status, "summary": self.summary, "certified": list(self.certified),
@@ -249,7 +252,7 @@ def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None
         steps += tuple(EveryNStep(fact, "proved", (uniform.first, None)) for fact in uniform.facts)
         return EveryNResult(scheme.name, "proved", f"C1 for every n >= {lo}: the spectral conditions proved for every n, the "
                             f"characteristic map regular and injective for every n >= {uniform.first} (exact signs in "
-                            f"t = cos(2 pi/n)), Reif's test certified at n = {lo}..{last}", steps, (lo, last))
+                            f"t = cos(2 pi/n)), Reif's test certified at n = {lo}..{last}", steps, (lo, last), uniform=uniform)
     why = ("no bound on its control net that holds for every large n is derived" if uniform is None else
            f"{uniform.facts[-1]} (the nets' exact signs in t = cos(2 pi/n) for n >= {last + 1})")
     steps += (EveryNStep(f"n > {last}: regularity and injectivity of the characteristic map are open: {why}", "open",
@@ -257,7 +260,7 @@ def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None
     what = ("the spectral conditions hold for every n >= 3 (proved); " if spectral_ok else
             "the spectral conditions are not proved for every n; ")
     return EveryNResult(scheme.name, "verified", f"C1 certified for n = {lo}..{last}; {what}the characteristic map is open "
-                        f"beyond n = {last}", steps, (lo, last))
+                        f"beyond n = {last}", steps, (lo, last), uniform=uniform)
 
 
 def _uniform_map(scheme: Scheme, lo: int, last: int):

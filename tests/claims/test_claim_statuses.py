@@ -51,7 +51,7 @@ EXPECTED = {
     "Eq. 39": C,  # B^j = r A^j, not A^j = r B^j
     "Eq. 39 (n = 4)": V,  # a statement about n = 4 alone, exact there (scope: single case)
     "Eq. 39 (n → ∞)": P,
-    "C1 (Reif's test)": V,
+    "C1 (Reif's test)": P,  # the characteristic map for every n by exact signs in cos(2 pi/n) (c1_uniform)
     # Section 5.2
     "Eq. 40": P,
     "Eq. 41": P,

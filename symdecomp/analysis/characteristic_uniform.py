@@ -168,7 +168,7 @@ def _quadratic(M) -> tuple[PolyElement, sp.Expr, sp.Expr]:
 
 
 def _to_sympy(p: PolyElement) -> sp.Expr:
-    return sp.sympify(p.as_expr()).subs(sp.Symbol("t"), sp.Symbol("t", real=True))
+    return p.as_expr().subs(sp.Symbol("t"), sp.Symbol("t", real=True))
 
 
 def uniform_nets(scheme: Scheme) -> UniformNets:

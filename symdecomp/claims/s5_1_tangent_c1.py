@@ -65,7 +65,7 @@ def _every_n(scheme: Scheme, results: dict, who: str) -> Step | None:
 
     lo, hi = min(results), max(results)
     r = c1_every_n(scheme, hi, certify=lambda k: results[k] if k in results else c1_test(scheme, k))
-    if r.status != "proved":
+    if r.status != "proved" or r.uniform is None:
         return None
     u, nets = r.uniform, uniform_nets(scheme)
     symbols = {sp.Symbol("L"): lambda_1, sp.Symbol("t"): sp.Symbol("t")}

@@ -42,6 +42,7 @@ from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.verify.c1_uniform import UniformMapResult
 
 __all__ = ["EveryNStep", "EveryNResult", "spectral_every_n", "c1_every_n"]
 
@@ -80,7 +81,7 @@ class EveryNResult:
     failure: int | None = None
     #: The characteristic map for every ``n`` from some valence on (:class:`~symdecomp.verify.c1_uniform.UniformMapResult`),
     #: or ``None`` where it was not tried (a failure, or the spectral conditions not proved).
-    uniform: object = None
+    uniform: UniformMapResult | None = None
 
     def as_json(self) -> dict:
         return {"scheme": self.scheme, "status": self.status, "summary": self.summary, "certified": list(self.certified),

@@ -28,7 +28,7 @@ def test_loop_is_bounded_at_4_to_6_and_unbounded_for_every_n_from_7():
     s = sp.Symbol("s")
     assert sp.factor(7 * s**2 / 16 - 3 * s / 16 - sp.Rational(1, 64)) == (2 * s - 1) * (14 * s + 1) / 64
     assert "7*s**2/16 - 3*s/16 - 1/64" in r.steps[1].text
-    assert hyperbolic_cause_from(loop(), 7) is not None and hyperbolic_cause_from(catmull_clark(), 5) is None
+    assert hyperbolic_cause_from(loop(), 7) is not None and hyperbolic_cause_from(catmull_clark(), 4) is None
 
 
 def test_the_interval_proof_can_fail():

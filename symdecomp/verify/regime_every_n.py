@@ -157,7 +157,8 @@ def regime_every_n(scheme: Scheme, last: int = 16) -> RegimeEveryN:
         if regime is CurvatureRegime.UNBOUNDED and k > lo and (step := unbounded_from(scheme, k)) is not None:
             certified = EveryNStep(f"the regime at each n = {lo}..{k - 1}, certified (Arb balls; ties exact): "
                                    + ", ".join(f"{m}: {r}" for m, r in rows), "verified", (lo, k - 1))
-            return RegimeEveryN(scheme.name, tuple(rows), k, (certified, step))
+            cause = hyperbolic_cause_from(scheme, k)  # which part makes it unbounded, where that is shown for every n
+            return RegimeEveryN(scheme.name, tuple(rows), k, (certified, step) + ((cause,) if cause else ()))
         rows.append((k, regime.value))
     certified = EveryNStep(f"the regime at each n = {lo}..{last}, certified: " + ", ".join(f"{m}: {r}" for m, r in rows),
                            "verified", (lo, last))

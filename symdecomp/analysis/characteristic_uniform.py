@@ -31,8 +31,9 @@ from functools import lru_cache
 import sympy as sp
 from sympy.polys.rings import PolyElement, ring
 
-from symdecomp.analysis.characteristic import ring_layout
+from symdecomp.analysis.characteristic import SUBPATCH_FACES, TRIANGLES, ring_layout, triangle_patch_points
 from symdecomp.errors import NotApplicableError
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 
@@ -231,21 +232,12 @@ def _nets(scheme: Scheme, values: dict, quadratic) -> tuple:
 
 
 def _quad_layout(value):
-    from symdecomp.analysis.characteristic import SUBPATCH_FACES
-
     return tuple([[value(a - 1 + i, b - 1 + k) for k in range(4)] for i in range(4)] for a, b in SUBPATCH_FACES)
 
 
 def _triangle_layout(value):
-    from symdecomp.analysis.characteristic import TRIANGLES, triangle_patch_points
-
     return tuple({p: value(*p) for p in triangle_patch_points(t)} for t in TRIANGLES)
 
 
-def _layouts():
-    from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
-
-    return {BICUBIC: _quad_layout, BOX_SPLINE: _triangle_layout}
-
-
-_LAYOUTS = _layouts()
+#: How the nets are laid out on each kind of regular patch (as :func:`~symdecomp.analysis.characteristic.subpatch_nets`).
+_LAYOUTS = {BICUBIC: _quad_layout, BOX_SPLINE: _triangle_layout}

@@ -69,8 +69,9 @@ nothing else.
                    blocks (``defective``), supports (Section 3, ``support``; for every n from one
                    window of sectors, ``support_window``), rings iterated step by step
                    (``evolution``), the 2-ring matrix by frequency and the characteristic map's
-                   nets (``characteristic``), where a 1-ring component starts on one eigenvector
-                   of M_j (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
+                   nets (``characteristic``; exact in t = cos(2 pi/n) for every n,
+                   ``characteristic_uniform``), where a 1-ring component starts on one eigenvector of M_j
+                   (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
                    (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
                    vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
@@ -100,8 +101,9 @@ nothing else.
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``; for every valence, its spectral conditions proved
-                   in n and the map per valence, ``c1_every_n``; the curvature regime for every
-                   valence, ``regime_every_n``), at boundary, crease and
+                   in n and the map per valence, ``c1_every_n``; the characteristic map for every n >= N0 by exact signs in
+                   t = cos(2 pi/n), ``c1_uniform``; the curvature regime for every
+                   valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
                    by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
                    ``c1_sharp_ring``); for the zoo's schemes, Reif's test on a dual neighbourhood whose regular

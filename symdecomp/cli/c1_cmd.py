@@ -1,7 +1,8 @@
 """``symdecomp c1 --n 3:64``: Reif's sufficient test for C1 at an extraordinary vertex, certified, per valence.
 
 ``symdecomp c1 --every-n`` (or an open range ``--n 3:``): C1 for every valence as far as it is shown
-(:mod:`symdecomp.verify.c1_every_n`): the spectral conditions proved for every n, Reif's test at n = 3..64.
+(:mod:`symdecomp.verify.c1_every_n`): the spectral conditions proved for every n, Reif's test at n = 3..64, and the
+characteristic map proved regular and injective for every n by exact signs in cos(2 pi/n) where that closes.
 
 ``symdecomp c1 --boundary --k 1:16`` (``--corner``, ``--crease K1,K2``): Zorin's conditions at boundary, corner and
 crease vertices (:mod:`symdecomp.verify.c1_sharp`), per number of faces ``k``, with the scheme's ``[sharp]`` rules.
@@ -36,7 +37,8 @@ if TYPE_CHECKING:
 
 __all__ = ["register", "run"]
 
-#: The valences Reif's test certifies one by one under --every-n (the characteristic map's part beyond them is open).
+#: The valences Reif's test certifies one by one under --every-n (beyond them the characteristic map is proved in
+#: cos(2 pi/n) where the exact signs close, else open).
 EVERY_N_CERTIFIED = 64
 
 #: How a verdict is printed (by its value, so that the table needs no import of the verify layer).
@@ -74,7 +76,8 @@ def register(sub) -> None:
                    "range A: is --every-n; or a sharp vertex with --boundary, --corner or --crease")
     flag(p, "--every-n", dest="every_n",
          help="C1 for every valence: the spectral conditions as statements in t = cos(2 pi j/n) decided for every n "
-         f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}; says "
+         f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}, the "
+         "characteristic map regular and injective for every n by exact signs of its nets in cos(2 pi/n); says "
          "which part is proved, verified or open, and the first valence where C1 fails (--json: the steps)")
     flag(p, "--boundary", help="test boundary vertices with K faces (--k): the crease rules on the boundary, the scheme's "
          "[sharp] rules (default: the cubic B-spline's 3/4, 1/8 and 1/2; a file may give Biermann-Levin-Zorin's near-edge "

@@ -18,11 +18,14 @@ regular rules), and they are decided here for every ``n >= 3`` at once, exactly:
   (:func:`~symdecomp.analysis.dominance.tail_bound`, beyond its ``N0``) on quads; on triangles, the elliptic eigenvalue
   equal to ``lambda_1^2`` identically (Loop's weight), which is below ``lambda_1 < 1``.
 
-The other part, that the characteristic map is regular and injective, is decided per valence: Reif's test at each
-``n = 3..last`` (certified, :func:`~symdecomp.verify.c1.c1_test`). No bound on the characteristic map's control net
-that holds uniformly for large ``n`` is derived here (its convergence as ``n`` grows is not made quantitative), so
-beyond ``last`` that part is open: the result is ``verified`` for ``3..last`` with the spectral conditions proved for
-every ``n``, never ``proved`` for every ``n``. A valence where the test fails refutes C1 with that concrete ``n``.
+The other part, that the characteristic map is regular and injective, is certified per valence by Reif's test at each
+``n = 3..last`` (:func:`~symdecomp.verify.c1.c1_test`), and proved for every ``n >= N0`` at once where the exact
+argument closes (:func:`~symdecomp.verify.c1_uniform.uniform_map`: the map's control nets as polynomials in
+``t = cos(2 pi/n)`` and ``lambda_1``, stretched by ``1/sin(2 pi/n)`` so that they converge as ``n`` grows, their
+Jacobian's Bezier coefficients and the inner boundary's wedge decided by Sturm sequences on ``[cos(2 pi/N0), 1]``).
+With ``N0 <= last + 1`` and the spectral conditions proved the result is ``proved`` for every ``n``; otherwise it is
+``verified`` for ``3..last`` and the map is open beyond (the step says which sign was not shown). A valence where the
+test fails refutes C1 with that concrete ``n``.
 """
 
 from __future__ import annotations
@@ -39,6 +42,7 @@ from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.verify.c1_uniform import UniformMapResult
 
 __all__ = ["EveryNStep", "EveryNResult", "spectral_every_n", "c1_every_n"]
 
@@ -75,6 +79,9 @@ class EveryNResult:
     certified: tuple[int, int]
     #: The first valence where C1 fails (a concrete counterexample), or ``None``.
     failure: int | None = None
+    #: The characteristic map for every ``n`` from some valence on (:class:`~symdecomp.verify.c1_uniform.UniformMapResult`),
+    #: or ``None`` where it was not tried (a failure, or the spectral conditions not proved).
+    uniform: UniformMapResult | None = None
 
     def as_json(self) -> dict:
         return {"scheme": self.scheme, "status": self.status, "summary": self.summary, "certified": list(self.certified),
@@ -237,14 +244,34 @@ def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None
             return EveryNResult(scheme.name, "refuted", summary, spectral + (step,) + ((tail,) if tail else ()), (lo, k - 1), k)
     tail = max((s.valences[0] for s in spectral if s.status == "proved"), default=lo)
     spectral_ok = all(s.status == "proved" for s in spectral) and tail <= last + 1
+    uniform = _uniform_map(scheme, lo, last) if spectral_ok else None
     steps = spectral + (
         EveryNStep(f"Reif's test at each n = {lo}..{last}: the spectral conditions and a regular, injective characteristic "
                    "map, certified (Arb balls; exact at frequency 0)", "verified", (lo, last)),
-        EveryNStep(f"n > {last}: regularity and injectivity of the characteristic map are open: no bound on its control net "
-                   "that holds for every large n is derived (its convergence as n grows is not made quantitative)",
-                   "open", (last + 1, None)),
     )
+    if uniform is not None and uniform.status == "proved":
+        steps += tuple(EveryNStep(fact, "proved", (uniform.first, None)) for fact in uniform.facts)
+        return EveryNResult(scheme.name, "proved", f"C1 for every n >= {lo}: the spectral conditions proved for every n, the "
+                            f"characteristic map regular and injective for every n >= {uniform.first} (exact signs in "
+                            f"t = cos(2 pi/n)), Reif's test certified at n = {lo}..{last}", steps, (lo, last), uniform=uniform)
+    why = ("no bound on its control net that holds for every large n is derived" if uniform is None else
+           f"{uniform.facts[-1]} (the nets' exact signs in t = cos(2 pi/n) for n >= {last + 1})")
+    steps += (EveryNStep(f"n > {last}: regularity and injectivity of the characteristic map are open: {why}", "open",
+                         (last + 1, None)),)
     what = ("the spectral conditions hold for every n >= 3 (proved); " if spectral_ok else
             "the spectral conditions are not proved for every n; ")
     return EveryNResult(scheme.name, "verified", f"C1 certified for n = {lo}..{last}; {what}the characteristic map is open "
-                        f"beyond n = {last}", steps, (lo, last))
+                        f"beyond n = {last}", steps, (lo, last), uniform=uniform)
+
+
+def _uniform_map(scheme: Scheme, lo: int, last: int):
+    """The characteristic map for every ``n >= first`` (:func:`~symdecomp.verify.c1_uniform.uniform_map`), from the
+    smallest ``first`` of a few tried that closes the argument; the last one tried (``last + 1``) when none does."""
+    from symdecomp.verify.c1_uniform import uniform_map
+
+    result = None
+    for first in sorted({f for f in (lo, 4, 6, 8, 16, 32, last + 1) if lo <= f <= last + 1}):
+        result = uniform_map(scheme, first)
+        if result.status == "proved":
+            return result
+    return result

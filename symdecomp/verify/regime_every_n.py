@@ -13,8 +13,8 @@ polynomial and Sturm sequences decide it exactly; on quads (``rho = (tr + sqrt(d
 (``n = oo`` included) is covered by Arb balls, bisected until each ball's enclosure of ``f`` is positive: a proof over
 the continuum, not a sample. ``s_0`` is a rational below ``cos(2 pi/N)``; the valences below ``N`` keep their
 certified per-valence regimes (:func:`~symdecomp.verify.second_order_spectrum.second_order_eigenstructure`). This
-proves the regime, not which part causes it (at ``n = oo`` the elliptic and hyperbolic eigenvalues of Catmull-Clark
-meet, so their order is left to the per-valence tables).
+proves the regime; which part causes it is :func:`hyperbolic_cause_from` (on quads, where Catmull-Clark's elliptic and
+hyperbolic eigenvalues meet at ``n = oo``, by a bound in ``n``: :mod:`symdecomp.verify.regime_cause`).
 """
 
 from __future__ import annotations
@@ -115,15 +115,22 @@ def unbounded_from(scheme: Scheme, first: int) -> EveryNStep | None:
 
 
 def hyperbolic_cause_from(scheme: Scheme, first: int) -> EveryNStep | None:
-    """On triangles (``M`` is ``1 x 1``): for every ``n >= first`` the largest eigenvalue after 1 and ``lambda_1`` is the
-    hyperbolic one (frequencies 2, n - 2), or ``None`` where not shown. ``lambda(t)`` increases with ``t`` (the other
+    """For every ``n >= first`` the largest eigenvalue after 1 and ``lambda_1`` is the hyperbolic one (frequencies 2,
+    n - 2), or ``None`` where not shown. On quads: :func:`~symdecomp.verify.regime_cause.hyperbolic_cause_on_quads`. On
+    triangles (``M`` is ``1 x 1``): ``lambda(t)`` increases with ``t`` (the other
     frequencies are below frequency 2), ``lambda_2`` exceeds the outer ring's eigenvalues on ``[s_0, 1]``, and the
     frequency-0 eigenvalue besides 1 is ``lambda_1^2`` identically (below ``lambda_2`` by :func:`unbounded_from`)."""
     from symdecomp.analysis.characteristic import outer_charpoly
     from symdecomp.verify.c1_every_n import spectral_every_n
 
     M = sp.Matrix(one_ring_matrices(scheme)[0])
-    if M.rows != 1 or M.has(N) or unbounded_from(scheme, first) is None:
+    if M.has(N) or unbounded_from(scheme, first) is None:
+        return None
+    if M.rows == 2:  # rho has a square root: the frequency-0 roots against a bound in n (symdecomp.verify.regime_cause)
+        from symdecomp.verify.regime_cause import hyperbolic_cause_on_quads
+
+        return hyperbolic_cause_on_quads(scheme, first)
+    if M.rows != 1:
         return None
     if not all(step.status == "proved" for step in spectral_every_n(scheme)):
         return None
@@ -150,7 +157,8 @@ def regime_every_n(scheme: Scheme, last: int = 16) -> RegimeEveryN:
         if regime is CurvatureRegime.UNBOUNDED and k > lo and (step := unbounded_from(scheme, k)) is not None:
             certified = EveryNStep(f"the regime at each n = {lo}..{k - 1}, certified (Arb balls; ties exact): "
                                    + ", ".join(f"{m}: {r}" for m, r in rows), "verified", (lo, k - 1))
-            return RegimeEveryN(scheme.name, tuple(rows), k, (certified, step))
+            cause = hyperbolic_cause_from(scheme, k)  # which part makes it unbounded, where that is shown for every n
+            return RegimeEveryN(scheme.name, tuple(rows), k, (certified, step) + ((cause,) if cause else ()))
         rows.append((k, regime.value))
     certified = EveryNStep(f"the regime at each n = {lo}..{last}, certified: " + ", ".join(f"{m}: {r}" for m, r in rows),
                            "verified", (lo, last))

@@ -51,7 +51,7 @@ EXPECTED = {
     "Eq. 39": C,  # B^j = r A^j, not A^j = r B^j
     "Eq. 39 (n = 4)": V,  # a statement about n = 4 alone, exact there (scope: single case)
     "Eq. 39 (n → ∞)": P,
-    "C1 (Reif's test)": V,
+    "C1 (Reif's test)": P,  # the characteristic map for every n by exact signs in cos(2 pi/n) (c1_uniform)
     # Section 5.2
     "Eq. 40": P,
     "Eq. 41": P,
@@ -87,7 +87,7 @@ EXPECTED = {
     "Larger neighbourhoods (after Eq. 51)": C,  # the 2-ring adds 1/8, 1/16, 1/32, 1/64, not null columns
     "Spectrum (Eq. 34, Eq. 43)": P,  # block factorization for symbolic n (certified n = 3..48 too)
     # beyond the paper: curvature and shape (issue 21)
-    "Curvature regime: Catmull-Clark": V,  # n = 3..64; unbounded for every n >= 5 proved, its hyperbolic cause only to 64
+    "Curvature regime: Catmull-Clark": P,  # n = 3..64 certified; unbounded for every n >= 5 and its hyperbolic cause proved (issue 32)
     "Curvature regime: Loop": P,  # n = 3..64 certified; unbounded (hyperbolic) for every n >= 7 proved (issue 32)
     "Loop's vertex weight": P,  # the elliptic eigenvalue is lambda_1^2 identically in n
     "Curvature at the regular valence": V,  # mu = 1/4 = lambda_1^2 three times at n = 4

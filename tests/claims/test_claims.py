@@ -61,7 +61,7 @@ def test_claims_command_json(capsys):
     assert by_label["Proposition 5.1"]["status"] == "proved"  # certified range plus the exact tail bound
     for r in rows:
         assert {"label", "status", "scope", "evidence"} <= set(r)
-    assert by_label["Eq. 39 (n = 4)"]["scope"] == "single case" and by_label["C1 (Reif's test)"]["scope"] == "range of n"
+    assert by_label["Eq. 39 (n = 4)"]["scope"] == "single case" and by_label["C1 (Reif's test)"]["scope"] == "every n"
 
 
 def test_claims_command_unknown_label(capsys):

@@ -37,11 +37,23 @@ def test_the_spectral_conditions_are_proved_for_every_n(scheme):
 
 
 @pytest.mark.parametrize("scheme", [catmull_clark(), loop()], ids=["catmull-clark", "loop"])
-def test_every_n_is_verified_not_proved(scheme):
+def test_every_n_is_proved(scheme):
+    """The spectral conditions in t, Reif's test at 3..12, and the characteristic map for every n >= 3 by exact signs."""
     r = c1_every_n(scheme, 12)
-    assert r.status == "verified" and r.certified == (3, 12) and r.failure is None
-    assert [s.status for s in r.steps][-2:] == ["verified", "open"]
-    assert r.steps[-1].valences == (13, None) and "open" in r.summary
+    assert r.status == "proved" and r.certified == (3, 12) and r.failure is None
+    assert [s.status for s in r.steps][-4:] == ["verified", "proved", "proved", "proved"]
+    assert all(s.valences == (3, None) for s in r.steps[-3:]) and r.summary.startswith("C1 for every n >= 3")
+
+
+def test_without_the_uniform_map_the_map_stays_open(monkeypatch):
+    """When the exact signs do not close (here: refused), C1 is verified for 3..last and the map is open beyond."""
+    from symdecomp.verify import c1_uniform
+
+    monkeypatch.setattr(c1_uniform, "uniform_nets", lambda scheme: (_ for _ in ()).throw(
+        c1_uniform.NotApplicableError("refused for the test")))
+    r = c1_every_n(catmull_clark(), 12)
+    assert r.status == "verified" and [s.status for s in r.steps][-2:] == ["verified", "open"]
+    assert r.steps[-1].valences == (13, None) and "refused for the test" in r.steps[-1].text
 
 
 def test_a_spectral_condition_that_fails_is_not_called_proved():
@@ -74,11 +86,11 @@ def test_a_failure_at_one_valence_is_a_concrete_refutation():
 def test_the_command(capsys):
     assert main(["c1", "--every-n", "--scheme", "loop", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["status"] == "verified" and data["certified"] == [3, 64]
-    assert [s["status"] for s in data["steps"]] == ["proved", "proved", "proved", "verified", "open"]
+    assert data["status"] == "proved" and data["certified"] == [3, 64]
+    assert [s["status"] for s in data["steps"]] == ["proved", "proved", "proved", "verified", "proved", "proved", "proved"]
     assert main(["c1", "--n", "3:"]) == 0
     out = capsys.readouterr().out
-    assert out.splitlines()[0] == "catmull-clark: C1 for every valence" and out.splitlines()[-1].startswith("verified: ")
+    assert out.splitlines()[0] == "catmull-clark: C1 for every valence" and out.splitlines()[-1].startswith("proved: C1 for every n >= 3")
     assert main(["c1", "--n", "5:"]) == 2
     assert "an open range starts at 3" in capsys.readouterr().err
     assert main(["c1", "--every-n", "--n", "5"]) == 2

@@ -17,7 +17,8 @@ from symdecomp.verify.regime_every_n import _positive_on, hyperbolic_cause_from,
 def test_catmull_clark_is_unbounded_for_every_n_from_5():
     r = regime_every_n(catmull_clark())
     assert r.per_valence == ((3, "zero"), (4, "bounded")) and r.first_proved == 5
-    assert [s.status for s in r.steps] == ["verified", "proved"] and r.steps[1].valences == (5, None)
+    assert [s.status for s in r.steps] == ["verified", "proved", "proved"] and r.steps[1].valences == (5, None)
+    assert r.steps[2].valences == (5, None) and "the largest after 1 and lambda_1" in r.steps[2].text  # the cause
     assert unbounded_from(catmull_clark(), 4) is None  # n = 4 is bounded: lambda_2 = lambda_1^2 = 1/4 there
 
 
@@ -28,7 +29,7 @@ def test_loop_is_bounded_at_4_to_6_and_unbounded_for_every_n_from_7():
     s = sp.Symbol("s")
     assert sp.factor(7 * s**2 / 16 - 3 * s / 16 - sp.Rational(1, 64)) == (2 * s - 1) * (14 * s + 1) / 64
     assert "7*s**2/16 - 3*s/16 - 1/64" in r.steps[1].text
-    assert hyperbolic_cause_from(loop(), 7) is not None and hyperbolic_cause_from(catmull_clark(), 5) is None
+    assert hyperbolic_cause_from(loop(), 7) is not None and hyperbolic_cause_from(catmull_clark(), 4) is None
 
 
 def test_the_interval_proof_can_fail():
@@ -42,7 +43,8 @@ def test_the_interval_proof_can_fail():
 def test_the_command(capsys):
     assert main(["artifacts", "--every-n", "--scheme", "loop", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["unbounded_from"] == 7 and [s["status"] for s in data["steps"]] == ["verified", "proved"]
+    assert data["unbounded_from"] == 7 and [s["status"] for s in data["steps"]] == ["verified", "proved", "proved"]
+    assert "the hyperbolic eigenvalue is the largest" in data["steps"][2]["text"]  # the cause, for every n >= 7
     assert main(["artifacts", "--every-n"]) == 0
     assert "[proved] n >= 5:" in capsys.readouterr().out
     assert main(["artifacts"]) == 2

@@ -36,6 +36,7 @@ caller; :func:`certified_eigendata` raises it until every entry rounds correctly
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -175,7 +176,8 @@ def _ring_columns(p: PatchMatrices, prec: int) -> list:
     return p.lattice.select(RING_EIGEN, "ring eigen-data columns").columns(p, trig_table(p.n), prec)
 
 
-def _sparse_times(row: dict, rows: list, size: int) -> list:
+def _sparse_times(row: dict, rows: Sequence | Mapping, size: int) -> list:
+    """``sum_c row[c] rows[c]``: a sparse row times the rows it names (a list of rows, or only those in a dict)."""
     out = [arb(0)] * size
     for c, x in row.items():
         w = to_arb(x)
@@ -477,8 +479,9 @@ def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int =
 
 
 def _rounded_one(n: int, scheme: Scheme) -> tuple[int, RoundedEigenData]:
-    data, rounded = certified_eigendata(scheme, n)
-    return data.prec, rounded
+    from symdecomp.analysis.eigendata_direct import rounded_valence  # it builds on this module
+
+    return rounded_valence(scheme, n)
 
 
 def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local"):

@@ -23,11 +23,15 @@ True
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import flint
+import numpy as np
 
 from symdecomp.algebra.numbers import to_arb
+from symdecomp.algebra.rounding import round_ball, round_products, split_balls
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.analysis.eigendata import (
     RoundedEigenData,
@@ -50,25 +54,33 @@ arb = flint.arb
 
 
 class _Cells:
-    """A table of balls addressed ``[i, j]``, row by row: what the rounding and sharpening steps read and write."""
+    """A table of balls addressed ``[i, j]``, row by row: what the rounding and sharpening steps read and write.
+    A row given as None is made by ``fill(i)`` when first read."""
 
-    __slots__ = ("rows",)
+    __slots__ = ("rows", "fill")
 
-    def __init__(self, rows: list[list[flint.arb]]):
-        self.rows = rows
+    def __init__(self, rows: list[list[flint.arb] | None], fill: Callable[[int], list[flint.arb]] | None = None):
+        self.rows, self.fill = rows, fill
+
+    def row(self, i: int) -> list[flint.arb]:
+        row = self.rows[i]
+        if row is None:
+            assert self.fill is not None
+            row = self.rows[i] = self.fill(i)
+        return row
 
     def __getitem__(self, ij: tuple[int, int]) -> flint.arb:
-        return self.rows[ij[0]][ij[1]]
+        return self.row(ij[0])[ij[1]]
 
     def __setitem__(self, ij: tuple[int, int], x: flint.arb) -> None:
-        self.rows[ij[0]][ij[1]] = x
+        self.row(ij[0])[ij[1]] = x
 
     def ncols(self) -> int:
-        return len(self.rows[0])
+        return len(self.row(0))
 
     def entries(self) -> list[flint.arb]:
         """The balls row by row (``arb_mat.entries``' order)."""
-        return [x for row in self.rows for x in row]
+        return [x for i in range(len(self.rows)) for x in self.row(i)]
 
 
 class _Unused:
@@ -104,8 +116,9 @@ def _read_rows(p: PatchMatrices, g_rows: list[dict[int, object]]) -> set[int]:
     return rows
 
 
-def _direct(p: PatchMatrices, prec: int) -> _DirectData:
-    """The balls of ``values``, ``V^-1`` and the sub-patch tables at ``prec`` bits (inside its ``workprec``)."""
+def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None]]:
+    """The balls of ``values``, ``V^-1`` (its 1-ring rows made only where read) and the sub-patch tables at
+    ``prec`` bits (inside its ``workprec``), and ``V^-1`` rounded (:func:`_round_ring_rows`, then the lower block)."""
     from symdecomp.analysis.eigendata import _g_rows
 
     k0, size = p.ring_size, p.size
@@ -113,7 +126,7 @@ def _direct(p: PatchMatrices, prec: int) -> _DirectData:
     cols = _ring_columns(p, prec)
     nus, wmat, winv = _regular_part(p)
     read = _read_rows(p, _g_rows(p, winv))
-    v0 = {i: [col.right[i] for col in cols] for i in read if i < k0}
+    v0 = {i: [col.right_at(i) for col in cols] for i in read if i < k0}
     dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0)
     lower = (-(flint.arb_mat(dmat) * flint.arb_mat([col.left for col in cols]))).tolist()
     v1 = (flint.arb_mat(wmat) * flint.arb_mat(dmat)).tolist()
@@ -126,8 +139,74 @@ def _direct(p: PatchMatrices, prec: int) -> _DirectData:
     for sub in p.subpatches:
         table = [_av_row(vrows[idx], values, jordan) if idx < size else beyond[idx] for idx in sub]
         phi.append(_Cells([list(row) for row in zip(*table)]))
-    inverse = _Cells([col.left + zeros for col in cols] + [lower[i] + wia[i] for i in range(r)])
-    return _DirectData(p.n, prec, values, inverse, tuple(phi), tuple(jordan), _Unused())
+    lower_rows: list[list[flint.arb] | None] = [lower[i] + wia[i] for i in range(r)]
+    ring_rows: list[list[flint.arb] | None] = [None] * k0
+    inverse = _Cells(ring_rows + lower_rows, lambda i: cols[i].left + zeros)
+    rounded = _round_ring_rows(cols, size) + [round_ball(x) for row in lower_rows if row is not None for x in row]
+    bad = [(i, j) for i in range(k0, size) for j in range(k0) if rounded[i * size + j] is None]
+    for (i, j), x in _lower_at_zero_prec(p, bad).items():
+        inverse[i, j], rounded[i * size + j] = x, round_ball(x)
+    return _DirectData(p.n, prec, values, inverse, tuple(phi), tuple(jordan), _Unused()), rounded
+
+
+def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dict[tuple[int, int], flint.arb]:
+    """The listed entries of ``V^-1``'s lower block from the frequency columns at
+    :data:`~symdecomp.analysis.eigendata.ZERO_PREC` bits (empty where that precision does not separate the
+    eigenvalues or ``A`` has Jordan pairs).
+
+    Row ``r`` of the block is ``-sum_c (g_r . u_c)/(lam_c - nu_r) l_c``, the resolvent of ``S`` at ``nu_r``
+    applied to ``-g_r`` (``g = W^-1 S11``): it does not depend on how the eigenvectors are scaled, so the
+    columns at the higher precision give the same exact entries. Zeros of the symmetries round (to 0.0)
+    only at over 1075 bits; this costs ``O(N)`` balls for the columns and ``O(N)`` per entry, where the
+    exact solve of :func:`~symdecomp.analysis.eigendata._sharpen_lower_block` is ``O(N^3)``.
+    """
+    from symdecomp.analysis.eigendata import ZERO_PREC, _g_rows
+
+    if not entries:
+        return {}
+    k0 = p.ring_size
+    with flint.ctx.workprec(ZERO_PREC):
+        try:
+            cols = _ring_columns(p, ZERO_PREC)
+            nus, _, winv = _regular_part(p)
+            v0 = {c: [col.right_at(c) for col in cols] for g in _g_rows(p, winv) for c in g}
+            dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0)
+        except _NeedPrecision:
+            return {}
+        if jordan:
+            return {}
+        return {(i, j): -sum((d * col.left_at(j) for d, col in zip(dmat[i - k0], cols)), arb(0)) for i, j in entries}
+
+
+def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
+    """The 1-ring rows of ``V^-1`` rounded, row-major (``size`` per row, None where an entry does not round).
+
+    Rows kept as :class:`~symdecomp.analysis.ring_eigendata.PatternForm` s (a scalar times a cosine of the
+    trig table) are rounded all at once from their factors (:func:`~symdecomp.algebra.rounding.round_products`),
+    the table split once; what that does not certify, and the other rows, are rounded ball by ball."""
+    k0 = len(cols)
+    out = np.zeros((k0, size))
+    formed = [i for i, col in enumerate(cols) if col.left_form is not None]
+    tables = {id(cols[i].left_form.table) for i in formed}
+    if len(tables) > 1 or any(not isinstance(cols[i].left_form.table, list) for i in formed):
+        formed = []  # factors from several tables, or a lazy one: ball by ball
+    certified = np.ones((k0, size), dtype=bool)
+    if formed:
+        forms = [cols[i].left_form for i in formed]
+        c = np.concatenate([split_balls(forms[0].table), np.zeros((3, 1))], axis=1)  # index -1: the exact 0
+        width = max(len(f.scalars) for f in forms)
+        s = np.zeros((3, len(forms), width))
+        for q, f in enumerate(forms):
+            s[:, q, : len(f.scalars)] = split_balls(f.scalars)
+        coef, index = np.stack([f.coef for f in forms]), np.stack([f.index for f in forms])
+        vals, ok = round_products(s[:, np.arange(len(forms))[:, None], coef], c[:, index])
+        out[formed, :k0], certified[formed, :k0] = vals, ok
+    flat: list[float | None] = [*out.ravel().tolist()]
+    for i in set(range(k0)) - set(formed):
+        flat[i * size: i * size + k0] = [round_ball(x) for x in cols[i].left]
+    for i, j in zip(*np.nonzero(~certified)):
+        flat[i * size + j] = round_ball(cols[i].left_form.at(j))
+    return flat
 
 
 def rounded_valence(scheme: Scheme, n: int, prec: int = 256) -> tuple[int, RoundedEigenData]:
@@ -143,8 +222,8 @@ def rounded_valence(scheme: Scheme, n: int, prec: int = 256) -> tuple[int, Round
     p = patch_matrices(scheme, n)
     try:
         with flint.ctx.workprec(prec):
-            data = _direct(p, prec)
-        rounded = _round_all(data, p)  # type: ignore[arg-type]  # the same fields, duck-typed
+            data, inverse = _direct(p, prec)
+        rounded = _round_all(data, p, inverse)  # type: ignore[arg-type]  # the same fields, duck-typed
     except (_NeedPrecision, PrecisionError):
         rounded = None
     if rounded is not None:

@@ -152,30 +152,41 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
 def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dict[tuple[int, int], flint.arb]:
     """The listed entries of ``V^-1``'s lower block from the frequency columns at
     :data:`~symdecomp.analysis.eigendata.ZERO_PREC` bits (empty where that precision does not separate the
-    eigenvalues or ``A`` has Jordan pairs).
+    eigenvalues, or where ``lam_c = nu_r`` with a Jordan pair: the whole valence's path handles those).
 
     Row ``r`` of the block is ``-sum_c (g_r . u_c)/(lam_c - nu_r) l_c``, the resolvent of ``S`` at ``nu_r``
     applied to ``-g_r`` (``g = W^-1 S11``): it does not depend on how the eigenvectors are scaled, so the
     columns at the higher precision give the same exact entries. Zeros of the symmetries round (to 0.0)
-    only at over 1075 bits; this costs ``O(N)`` balls for the columns and ``O(N)`` per entry, where the
-    exact solve of :func:`~symdecomp.analysis.eigendata._sharpen_lower_block` is ``O(N^3)``.
+    only at over 1075 bits; this costs ``O(N)`` balls for the columns and for each row, ``O(N)`` per entry,
+    where the exact solve of :func:`~symdecomp.analysis.eigendata._sharpen_lower_block` is ``O(N^3)``.
     """
     from symdecomp.analysis.eigendata import ZERO_PREC, _g_rows
 
     if not entries:
         return {}
-    k0 = p.ring_size
+    k0, out = p.ring_size, {}
     with flint.ctx.workprec(ZERO_PREC):
         try:
             cols = _ring_columns(p, ZERO_PREC)
-            nus, _, winv = _regular_part(p)
-            v0 = {c: [col.right_at(c) for col in cols] for g in _g_rows(p, winv) for c in g}
-            dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0)
         except _NeedPrecision:
             return {}
-        if jordan:
-            return {}
-        return {(i, j): -sum((d * col.left_at(j) for d, col in zip(dmat[i - k0], cols)), arb(0)) for i, j in entries}
+        nus, _, winv = _regular_part(p)
+        g_rows = _g_rows(p, winv)
+        for r in sorted({i - k0 for i, _ in entries}):
+            g, nu = [(c, to_arb(x)) for c, x in g_rows[r].items()], to_arb(nus[r])
+            d = []
+            for col in cols:
+                gap = col.value - nu
+                if not gap.contains(0):
+                    d.append(sum((x * col.right_at(c) for c, x in g), arb(0)) / gap)
+                elif col.exact_check is not None and col.exact_check(nus[r], g_rows[r]):
+                    d.append(arb(0))  # lam_c = nu_r exactly, and u_c adds nothing to row r
+                else:
+                    return {}
+            for i, j in entries:
+                if i == k0 + r:
+                    out[(i, j)] = -sum((dc * col.left_at(j) for dc, col in zip(d, cols)), arb(0))
+    return out
 
 
 def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:

@@ -6,11 +6,13 @@ and then rounds them. The data file needs less: the 1-ring rows of ``V^-1`` are 
 eigenvectors of the frequency columns as they come; the lower block is one product of the
 regular block's rows with them; and the sub-patch tables read ``V`` on the few rows the
 sub-patches and the refined points beyond them use, so ``V`` is never built whole.
-:func:`rounded_valence` rounds those balls, sharpens the entries that do not round with the same
-steps as :func:`~symdecomp.analysis.eigendata.certified_eigendata` (the lower block exactly,
-sub-patch zeros proved at 1200 bits, eigenvectors solved again at 1200 bits, each for its own row
-only), and falls back to ``certified_eigendata`` (the whole valence at rising precision) only when
-an entry still does not round. A correctly rounded float64 is unique, so either way the file's
+:func:`rounded_valence` rounds those: the 1-ring rows of ``V^-1`` all at once from their factors
+(:func:`_round_ring_rows`), the rest ball by ball. Entries that do not round are sharpened alone: the
+lower block's from the columns at 1200 bits (:func:`_lower_at_zero_prec`), the tables' and the
+1-ring rows' with :func:`~symdecomp.analysis.eigendata.certified_eigendata`'s steps (sub-patch
+zeros proved at 1200 bits, eigenvectors solved again at 1200 bits, each for its own row); only
+when an entry still does not round is the whole valence taken from ``certified_eigendata`` at
+rising precision. A correctly rounded float64 is unique, so either way the file's
 bytes are the same.
 
 >>> from symdecomp.schemes.scheme import catmull_clark

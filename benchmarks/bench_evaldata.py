@@ -56,12 +56,17 @@ LAUNCHER = (
 )
 
 
-def _run_child(argv: list[str]) -> tuple[float, float, float, str]:
+#: The baseline is one process: numpy's linear algebra on one thread, so that a loaded machine's
+#: other jobs do not make its threads wait for each other (and the comparison is per core).
+ONE_THREAD = {name: "1" for name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")}
+
+
+def _run_child(argv: list[str], extra_env: dict | None = None) -> tuple[float, float, float, str]:
     """``(wall seconds, CPU seconds, peak MB, stdout)`` of ``python argv`` (with the processes it waited for:
     the worker processes), started by :data:`LAUNCHER`; peak MB is the largest single process."""
     import json
 
-    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""), **(extra_env or {}))
     out = subprocess.run([sys.executable, "-c", LAUNCHER, sys.executable, *argv], cwd=ROOT, env=env, capture_output=True, text=True)
     code, wall, cpu, mb, stdout, stderr = json.loads(out.stdout)
     if code:
@@ -139,7 +144,7 @@ def targets(quick: bool = False) -> list[dict]:
         for name, fmt, file in CASES:
             path = os.path.join(folder, file)
             wall, cpu, mb, _ = _run_child(["-m", "symdecomp", "evaldata", "--scheme", name, "--n", f"3:{nmax}", "--format", fmt, "--out", path])
-            base_wall, _, base_mb, printed = _run_child([os.path.abspath(__file__), "--numpy-child", name, str(nmax)])
+            base_wall, _, base_mb, printed = _run_child([os.path.abspath(__file__), "--numpy-child", name, str(nmax)], ONE_THREAD)
             err_file, err_numpy = _accuracy(name, path, sample)
             base_seconds = float(printed.split()[-1])
             out.append({
@@ -149,7 +154,7 @@ def targets(quick: bool = False) -> list[dict]:
                 "cpu_seconds": round(cpu, 2),
                 "megabytes": round(mb, 1),
                 "limit_megabytes": LIMIT_MEGABYTES,
-                "baseline": "numpy float64 eig, inv and sub-patch tables (matrices given), one process",
+                "baseline": "numpy float64 eig, inv and sub-patch tables (matrices given), one process, one thread",
                 "baseline_seconds": round(base_seconds, 2),
                 "baseline_child_seconds": round(base_wall, 2),
                 "baseline_megabytes": round(base_mb, 1),

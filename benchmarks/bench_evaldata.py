@@ -16,8 +16,9 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
     sample of valences (the defective Loop N = 3, where ``eig`` has no eigenvector basis, is left
     out of the baseline's figure).
 
-Targets (issue 24): N = 3..128 for each scheme within 15 s and 300 MB, still certified. Run
-from the repository root::
+Targets (issue 33): N = 3..128 for each scheme within 3 times the baseline's seconds (b), measured in
+the same run, and within 300 MB, still certified (issue 24's were 15 s and 300 MB). The file's own
+construction of the exact patch matrices is part of (a) and not of (b). Run from the repository root::
 
     python benchmarks/bench_evaldata.py           # N = 3..128
     python benchmarks/bench_evaldata.py --quick   # N = 3..24
@@ -38,7 +39,7 @@ sys.path.insert(0, ROOT)
 
 import numpy as np  # noqa: E402
 
-LIMIT_SECONDS, LIMIT_MEGABYTES = 15.0, 300.0
+LIMIT_FACTOR, LIMIT_MEGABYTES = 3.0, 300.0
 CASES = (("catmull-clark", "binary", "cc.dat"), ("loop", "json", "loop.json"))
 
 
@@ -55,12 +56,17 @@ LAUNCHER = (
 )
 
 
-def _run_child(argv: list[str]) -> tuple[float, float, float, str]:
+#: The baseline is one process: numpy's linear algebra on one thread, so that a loaded machine's
+#: other jobs do not make its threads wait for each other (and the comparison is per core).
+ONE_THREAD = {name: "1" for name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")}
+
+
+def _run_child(argv: list[str], extra_env: dict | None = None) -> tuple[float, float, float, str]:
     """``(wall seconds, CPU seconds, peak MB, stdout)`` of ``python argv`` (with the processes it waited for:
     the worker processes), started by :data:`LAUNCHER`; peak MB is the largest single process."""
     import json
 
-    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""), **(extra_env or {}))
     out = subprocess.run([sys.executable, "-c", LAUNCHER, sys.executable, *argv], cwd=ROOT, env=env, capture_output=True, text=True)
     code, wall, cpu, mb, stdout, stderr = json.loads(out.stdout)
     if code:
@@ -138,17 +144,18 @@ def targets(quick: bool = False) -> list[dict]:
         for name, fmt, file in CASES:
             path = os.path.join(folder, file)
             wall, cpu, mb, _ = _run_child(["-m", "symdecomp", "evaldata", "--scheme", name, "--n", f"3:{nmax}", "--format", fmt, "--out", path])
-            base_wall, _, base_mb, printed = _run_child([os.path.abspath(__file__), "--numpy-child", name, str(nmax)])
+            base_wall, _, base_mb, printed = _run_child([os.path.abspath(__file__), "--numpy-child", name, str(nmax)], ONE_THREAD)
             err_file, err_numpy = _accuracy(name, path, sample)
+            base_seconds = float(printed.split()[-1])
             out.append({
                 "target": f"evaldata --scheme {name} --n 3:{nmax} --format {fmt} (certified, 2 processes)",
-                "limit_seconds": LIMIT_SECONDS if nmax == 128 else None,
+                "limit_seconds": LIMIT_FACTOR * base_seconds if nmax == 128 else None,
                 "seconds": round(wall, 2),
                 "cpu_seconds": round(cpu, 2),
                 "megabytes": round(mb, 1),
-                "limit_megabytes": LIMIT_MEGABYTES if nmax == 128 else None,
-                "baseline": "numpy float64 eig, inv and sub-patch tables (matrices given), one process",
-                "baseline_seconds": round(float(printed.split()[-1]), 2),
+                "limit_megabytes": LIMIT_MEGABYTES,
+                "baseline": "numpy float64 eig, inv and sub-patch tables (matrices given), one process, one thread",
+                "baseline_seconds": round(base_seconds, 2),
                 "baseline_child_seconds": round(base_wall, 2),
                 "baseline_megabytes": round(base_mb, 1),
                 "error_points": err_file,
@@ -172,9 +179,11 @@ def main() -> int:
               f"{t['file_bytes']} bytes; error on evaluated points {t['error_points']:.1e}")
         print(f"  baseline ({t['baseline']}): {t['baseline_seconds']:.2f} s ({t['baseline_child_seconds']:.1f} s for the child), "
               f"{t['baseline_megabytes']:.0f} MB; error on evaluated points {t['baseline_error_points']:.1e}")
-        if t["limit_seconds"] is not None:
-            met = t["seconds"] <= t["limit_seconds"] and t["megabytes"] <= t["limit_megabytes"]
-            print(f"  target <= {t['limit_seconds']:.0f} s and <= {t['limit_megabytes']:.0f} MB: {'met' if met else 'NOT met'}")
+        ratio, limit = t["seconds"] / max(t["baseline_seconds"], 1e-9), LIMIT_FACTOR * t["baseline_seconds"]
+        met = t["seconds"] <= limit and t["megabytes"] <= LIMIT_MEGABYTES
+        verdict = ("met" if met else "NOT met") if t["limit_seconds"] is not None else "indicative only (--quick)"
+        print(f"  certified {t['seconds']:.1f} s beside numpy {t['baseline_seconds']:.2f} s: {ratio:.1f} times; target <= "
+              f"{LIMIT_FACTOR:.0f} times ({limit:.1f} s) and <= {LIMIT_MEGABYTES:.0f} MB ({t['megabytes']:.0f} MB): {verdict}")
     return 0
 
 

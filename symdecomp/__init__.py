@@ -76,7 +76,8 @@ nothing else.
                    (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
                    vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
-                   ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``), of the patches of a
+                   ``ring_eigendata``; the file's valences rounded straight from those columns,
+                   ``eigendata_direct``) and exact evaluation on either lattice (``evaluation``), of the patches of a
                    boundary or corner vertex (``sharp_evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); every vertex of a mesh classified by its neighbourhood kind

@@ -11,8 +11,9 @@ from __future__ import annotations
 import math
 
 import flint
+import numpy as np
 
-__all__ = ["round_ball", "round_ball_decimal", "TINY_EXPONENT"]
+__all__ = ["round_ball", "round_ball_decimal", "split_balls", "round_products", "TINY_EXPONENT"]
 
 arb = flint.arb
 _TINY = None  # 2^-1075 as an Arb number, made on first use
@@ -98,3 +99,64 @@ def _scaled_round(x: arb, k: int) -> int | None:
     if not below.is_exact() or (y - below).contains(0):  # straddles a cell boundary, or might sit on it
         return None
     return int(below.unique_fmpz())
+
+
+def split_balls(balls) -> np.ndarray:
+    """``(3, M)`` float64: ``hi``, ``lo`` and ``err`` of each ball, every point of which is within ``err`` of ``hi + lo``.
+
+    ``hi`` is the midpoint's nearest float64, ``lo`` the remainder's; ``err`` bounds the rest and
+    the radius (an Arb upper bound, widened by ``2^-50`` for its own conversion).
+    """
+    out = np.empty((3, len(balls)))
+    for q, x in enumerate(balls):
+        hi = float(x)
+        rest = x - hi
+        lo = float(rest)
+        out[0, q], out[1, q], out[2, q] = hi, lo, float(abs(rest - lo).upper())
+    out[2] *= 1 + 2.0**-50
+    return out
+
+
+_SPLIT = 134217729.0  # 2^27 + 1: Dekker's splitter for float64
+
+
+def _two_product(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(p, e)`` with ``p + e = a b`` exactly (Dekker; no overflow or underflow for the magnitudes checked by the caller)."""
+    p = a * b
+    t = _SPLIT * a
+    ah = t - (t - a)
+    al = a - ah
+    t = _SPLIT * b
+    bh = t - (t - b)
+    bl = b - bh
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def round_products(s: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(values, certified)``: the float64 nearest to ``s_q c_q`` for split balls ``s``, ``c`` (:func:`split_balls`'
+    rows, gathered to one shape each), and where that nearest float64 is proved.
+
+    The product of ``hi + lo`` pairs is formed in double-double (error-free ``hi hi``, the cross terms
+    rounded) with a bound on everything left out, rounding errors included; the candidate is the sum
+    rounded once, and it is the correctly rounded value where the exact remainder plus the bound is
+    below half the gap to either neighbour. An exact 0 factor gives +0.0. Entries not certified
+    (products near a rounding boundary, or outside ``[2^-900, 2^900]``) are for :func:`round_ball`.
+    """
+    s_hi, s_lo, s_err = s
+    c_hi, c_lo, c_err = c
+    with np.errstate(over="ignore", invalid="ignore"):
+        p, e = _two_product(s_hi, c_hi)
+        t1, t2 = s_hi * c_lo, s_lo * c_hi
+        t = t1 + t2
+        q = e + t
+        y = p + q
+        bb = y - p
+        r = (p - (y - bb)) + (q - bb)  # p + q = y + r exactly
+        bound = (abs(s_hi) * c_err + abs(c_hi) * s_err + abs(s_lo * c_lo) + abs(s_lo) * c_err + abs(c_lo) * s_err
+                 + s_err * c_err + (abs(t1) + abs(t2) + abs(t) + abs(q)) * 2.0**-52)
+        ay = abs(y)
+        gap = np.minimum(np.nextafter(ay, np.inf) - ay, ay - np.nextafter(ay, 0.0)) / 2
+        certified = ((abs(r) + bound) * (1 + 2.0**-40) < gap) & (ay > 2.0**-900) & (ay < 2.0**900)
+        certified &= (abs(s_hi) < 2.0**500) & (abs(c_hi) < 2.0**500)
+    zero = ((c_hi == 0) & (c_lo == 0) & (c_err == 0)) | ((s_hi == 0) & (s_lo == 0) & (s_err == 0))
+    return np.where(zero, 0.0, y), certified | zero

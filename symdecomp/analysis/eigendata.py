@@ -36,6 +36,7 @@ caller; :func:`certified_eigendata` raises it until every entry rounds correctly
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -99,18 +100,19 @@ _REGULAR: dict = {}
 
 
 def _regular_part(p: PatchMatrices):
-    """:func:`_regular_part_of` ``p``, remembered for the last patch (three steps ask for it)."""
-    key = (p.lattice, p.n, id(p))
-    if key not in _REGULAR or _REGULAR[key][0] is not p:
-        _REGULAR.clear()
-        _REGULAR[key] = (p, _regular_part_of(p))
-    return _REGULAR[key][1]
-
-
-def _regular_part_of(p: PatchMatrices):
-    """Exact eigenvalues ``nu``, eigenvectors ``W`` and ``W^-1`` of the regular block ``S12`` (7 x 7 quads, 5 x 5 triangles)."""
+    """:func:`_regular_part_of` ``p``'s regular block, remembered by its entries (the same 7 x 7 or 5 x 5 for every N)."""
     k0, r = p.ring_size, p.size - p.ring_size
-    s12 = [[p.sparse[k0 + i].get(k0 + j, Fraction(0)) for j in range(r)] for i in range(r)]
+    key = tuple(tuple(p.sparse[k0 + i].get(k0 + j, Fraction(0)) for j in range(r)) for i in range(r))
+    if key not in _REGULAR:
+        if len(_REGULAR) > 8:
+            _REGULAR.clear()
+        _REGULAR[key] = _regular_part_of([list(row) for row in key])
+    return _REGULAR[key]
+
+
+def _regular_part_of(s12: list[list]):
+    """Exact eigenvalues ``nu``, eigenvectors ``W`` and ``W^-1`` of the regular block ``S12`` (7 x 7 quads, 5 x 5 triangles)."""
+    r = len(s12)
     nus, columns = [], []
     for lam, right, _ in _rational_eigen(s12):
         if not isinstance(lam, Fraction):
@@ -175,7 +177,8 @@ def _ring_columns(p: PatchMatrices, prec: int) -> list:
     return p.lattice.select(RING_EIGEN, "ring eigen-data columns").columns(p, trig_table(p.n), prec)
 
 
-def _sparse_times(row: dict, rows: list, size: int) -> list:
+def _sparse_times(row: dict, rows: Sequence | Mapping, size: int) -> list:
+    """``sum_c row[c] rows[c]``: a sparse row times the rows it names (a list of rows, or only those in a dict)."""
     out = [arb(0)] * size
     for c, x in row.items():
         w = to_arb(x)
@@ -230,13 +233,14 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
 
 
 
-def _round_all(data: PatchEigenData, p: PatchMatrices | None = None) -> RoundedEigenData | None:
+def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: list | None = None) -> RoundedEigenData | None:
     """Every entry correctly rounded, or None. With ``p``, entries that do not round are first
     sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`, then
-    :func:`_replace_columns`) and rounded again; ``data`` then holds the sharper balls."""
+    :func:`_replace_columns`) and rounded again; ``data`` then holds the sharper balls. ``inverse``:
+    ``V^-1`` already rounded (row by row, None where it did not round), else rounded here."""
     size, width = data.size, data.phi[0].ncols()
     values = [round_ball(v) for v in data.values]
-    inverse = [round_ball(x) for x in data.inverse.entries()]
+    inverse = [round_ball(x) for x in data.inverse.entries()] if inverse is None else inverse
     phi = [round_ball(x) for t in data.phi for x in t.entries()]
     jordan = tuple((i, c, round_ball(g)) for i, c, g in data.jordan)
     if None in values or any(g is None for _, _, g in jordan):
@@ -477,8 +481,9 @@ def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int =
 
 
 def _rounded_one(n: int, scheme: Scheme) -> tuple[int, RoundedEigenData]:
-    data, rounded = certified_eigendata(scheme, n)
-    return data.prec, rounded
+    from symdecomp.analysis.eigendata_direct import rounded_valence  # it builds on this module
+
+    return rounded_valence(scheme, n)
 
 
 def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local"):

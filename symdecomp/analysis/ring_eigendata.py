@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 import flint
+import numpy as np
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, to_acb
 from symdecomp.algebra.numbers import to_arb, to_fmpq
@@ -43,7 +44,7 @@ from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.patch import PatchMatrices
 
 __all__ = [
-    "RingEigen", "RING_EIGEN", "quad_ring_columns", "triangle_ring_columns", "triangle_ring_weights",
+    "RingEigen", "RING_EIGEN", "PatternForm", "quad_ring_columns", "triangle_ring_columns", "triangle_ring_weights",
     "column_group", "triangle_column_group", "LazyTable", "trig_table", "circulant_weights",
 ]
 
@@ -127,14 +128,82 @@ def _choose(a: list, b: list) -> tuple[int, list]:
     return pick, v
 
 
-class _Column:
-    """One eigenvector of ``S``: value, its entries in ``V0``, its row of ``V0^-1``, exact data."""
+class PatternForm:
+    """A Fourier pattern kept as its factors: entry ``p`` is ``scalars[coef[p]] * table[index[p]]``
+    (``index[p] = -1``: an exact 0), the products formed only where they are read.
 
-    __slots__ = ("value", "right", "left", "exact_value", "exact_check")
+    The data file rounds a whole row from the factors
+    (:func:`symdecomp.algebra.rounding.round_products`) instead of forming ``K`` products in Arb.
+    """
+
+    __slots__ = ("scalars", "coef", "index", "table", "_lists")
+
+    def __init__(self, scalars: tuple, coef: np.ndarray, index: np.ndarray, table):
+        self.scalars, self.coef, self.index, self.table, self._lists = scalars, coef, index, table, None
+
+    def _pairs(self) -> tuple[list, list]:
+        if self._lists is None:
+            self._lists = (self.coef.tolist(), self.index.tolist())
+        return self._lists
+
+    def at(self, p: int):
+        coef, index = self._pairs()
+        return arb(0) if index[p] < 0 else self.scalars[coef[p]] * self.table[index[p]]
+
+    def entries(self) -> list:
+        scalars, table = self.scalars, self.table
+        return [arb(0) if i < 0 else scalars[c] * table[i] for c, i in zip(*self._pairs())]
+
+
+_PATTERN_INDEX: dict = {}
+
+
+def _pattern_index(n: int, j: int, shift: int) -> tuple[np.ndarray, np.ndarray]:
+    """``(coef, index)`` of the pattern of frequency ``j`` on ``(O, e_0, f_0, ...)``, remembered for the last valence."""
+    if (n, j, shift) not in _PATTERN_INDEX:
+        if any(key[0] != n for key in _PATTERN_INDEX):
+            _PATTERN_INDEX.clear()
+        k = np.arange(n)
+        index, coef = np.full(2 * n + 1, -1), np.zeros(2 * n + 1, dtype=np.int64)
+        index[1::2] = (4 * j * k + shift) % (4 * n)
+        index[2::2] = (2 * j * (2 * k + 1) + shift) % (4 * n)
+        coef[2::2] = 1
+        _PATTERN_INDEX[(n, j, shift)] = coef, index
+    return _PATTERN_INDEX[(n, j, shift)]
+
+
+class _Column:
+    """One eigenvector of ``S``: value, its entries in ``V0`` (``right``), its row of ``V0^-1`` (``left``), exact data.
+
+    ``right`` and ``left`` are lists of balls, or :class:`PatternForm` s (then ``right_form`` and
+    ``left_form``), made into lists when first read whole; :meth:`right_at` and :meth:`left_at` read one entry."""
+
+    __slots__ = ("value", "_right", "_left", "right_form", "left_form", "exact_value", "exact_check")
 
     def __init__(self, value, right, left, exact_value=None, exact_check=None):
-        self.value, self.right, self.left = value, right, left
-        self.exact_value, self.exact_check = exact_value, exact_check
+        self.value, self.exact_value, self.exact_check = value, exact_value, exact_check
+        self.right_form = right if isinstance(right, PatternForm) else None
+        self.left_form = left if isinstance(left, PatternForm) else None
+        self._right = None if self.right_form else right
+        self._left = None if self.left_form else left
+
+    @property
+    def right(self) -> list:
+        if self._right is None:
+            self._right = self.right_form.entries()
+        return self._right
+
+    @property
+    def left(self) -> list:
+        if self._left is None:
+            self._left = self.left_form.entries()
+        return self._left
+
+    def right_at(self, i: int):
+        return self._right[i] if self._right is not None else self.right_form.at(i)
+
+    def left_at(self, i: int):
+        return self._left[i] if self._left is not None else self.left_form.at(i)
 
 
 class LazyTable:
@@ -154,14 +223,10 @@ def trig_table(n: int) -> list:
     return [_trig_pi(m, 2 * n, "cos") for m in range(4 * n)]
 
 
-def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> list:
+def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> PatternForm:
     """``[0, ce T(2jk), cf T(j(2k+1)), ...]``: a Fourier pattern on ``(O, e_0, f_0, ...)``."""
-    shift = 0 if fn == "cos" else -n
-    out = [arb(0)]
-    for k in range(n):
-        out.append(ce * table[(4 * j * k + shift) % (4 * n)])
-        out.append(cf * table[(2 * j * (2 * k + 1) + shift) % (4 * n)])
-    return out
+    coef, index = _pattern_index(n, j, 0 if fn == "cos" else -n)
+    return PatternForm((ce, cf), coef, index, table)
 
 
 def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
@@ -374,9 +439,10 @@ def _triangle_frequency(w: dict, n: int, j: int, table) -> list[_Column]:
     lam = sum((to_arb(x) * table[(4 * j * k) % (4 * n)] for k, x in w["ee"].items()), arb(0))
     check = _frequency_check(w, n, j)
     cols = []
+    coef, one, two_n = np.zeros(n + 1, dtype=np.int64), arb(1), arb(2) / n
     for shift in (0, -n):  # cos, then sin (= cos shifted by a quarter turn)
-        pattern = [table[(4 * j * k + shift) % (4 * n)] for k in range(n)]
-        cols.append(_Column(lam, [arb(0)] + pattern, [arb(0)] + [x * 2 / n for x in pattern], None, check))
+        index = np.concatenate([[-1], (4 * j * np.arange(n) + shift) % (4 * n)])
+        cols.append(_Column(lam, PatternForm((one,), coef, index, table), PatternForm((two_n,), coef, index, table), None, check))
     return cols
 
 

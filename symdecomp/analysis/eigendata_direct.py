@@ -1,0 +1,245 @@
+"""One valence of the eigen-data file rounded straight from the frequency columns, without the ``K x K`` ball matrices.
+
+:func:`~symdecomp.analysis.eigendata.certified_eigendata` builds ``V``, ``V^-1`` and the
+sub-patch tables as Arb matrices (the API's :class:`~symdecomp.analysis.eigendata.PatchEigenData`)
+and then rounds them. The data file needs less: the 1-ring rows of ``V^-1`` are the left
+eigenvectors of the frequency columns as they come; the lower block is one product of the
+regular block's rows with them; and the sub-patch tables read ``V`` on the few rows the
+sub-patches and the refined points beyond them use, so ``V`` is never built whole.
+:func:`rounded_valence` rounds those: the 1-ring rows of ``V^-1`` all at once from their factors
+(:func:`_round_ring_rows`), the rest ball by ball. Entries that do not round are sharpened alone: the
+lower block's from the columns at 1200 bits (:func:`_lower_at_zero_prec`), the tables' and the
+1-ring rows' with :func:`~symdecomp.analysis.eigendata.certified_eigendata`'s steps (sub-patch
+zeros proved at 1200 bits, eigenvectors solved again at 1200 bits, each for its own row); only
+when an entry still does not round is the whole valence taken from ``certified_eigendata`` at
+rising precision. A correctly rounded float64 is unique, so either way the file's
+bytes are the same.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> from symdecomp.analysis.eigendata import certified_eigendata
+>>> prec, rounded = rounded_valence(catmull_clark(), 5)
+>>> whole = certified_eigendata(catmull_clark(), 5)[1]
+>>> all((a.view("u8") == b.view("u8")).all() for a, b in zip((rounded.inverse, rounded.phi), (whole.inverse, whole.phi)))
+True
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import flint
+import numpy as np
+
+from symdecomp.algebra.numbers import to_arb
+from symdecomp.algebra.rounding import round_ball, round_products, split_balls
+from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
+from symdecomp.analysis.eigendata import (
+    RoundedEigenData,
+    _av_row,
+    _outer_coefficients,
+    _regular_part,
+    _ring_columns,
+    _round_all,
+    _sparse_times,
+    certified_eigendata,
+)
+from symdecomp.errors import PrecisionError
+from symdecomp.schemes.patch import PatchMatrices, patch_matrices
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import check_bits, check_valence
+
+__all__ = ["rounded_valence"]
+
+arb = flint.arb
+
+
+class _Cells:
+    """A table of balls addressed ``[i, j]``, row by row: what the rounding and sharpening steps read and write.
+    A row given as None is made by ``fill(i)`` when first read."""
+
+    __slots__ = ("rows", "fill")
+
+    def __init__(self, rows: list[list[flint.arb] | None], fill: Callable[[int], list[flint.arb]] | None = None):
+        self.rows, self.fill = rows, fill
+
+    def row(self, i: int) -> list[flint.arb]:
+        row = self.rows[i]
+        if row is None:
+            assert self.fill is not None
+            row = self.rows[i] = self.fill(i)
+        return row
+
+    def __getitem__(self, ij: tuple[int, int]) -> flint.arb:
+        return self.row(ij[0])[ij[1]]
+
+    def __setitem__(self, ij: tuple[int, int], x: flint.arb) -> None:
+        self.row(ij[0])[ij[1]] = x
+
+    def ncols(self) -> int:
+        return len(self.row(0))
+
+    def entries(self) -> list[flint.arb]:
+        """The balls row by row (``arb_mat.entries``' order)."""
+        return [x for i in range(len(self.rows)) for x in self.row(i)]
+
+
+class _Unused:
+    """``V``: not part of the file; a replaced eigenvector's new column is dropped."""
+
+    def __setitem__(self, ij: tuple[int, int], x: flint.arb) -> None:
+        pass
+
+
+@dataclass(frozen=True)
+class _DirectData:
+    """The balls the file needs, laid out as :class:`~symdecomp.analysis.eigendata.PatchEigenData`'s."""
+
+    n: int
+    prec: int
+    values: tuple[flint.arb, ...]
+    inverse: _Cells
+    phi: tuple[_Cells, ...]  # three, K x P
+    jordan: tuple[tuple[int, int, flint.arb], ...]
+    vectors: _Unused
+
+    @property
+    def size(self) -> int:
+        return len(self.values)
+
+
+def _read_rows(p: PatchMatrices, g_rows: list[dict[int, object]]) -> set[int]:
+    """The rows of ``V`` that the coefficients ``D`` (through ``W^-1 S11``) and the sub-patch tables read."""
+    rows = {c for g in g_rows for c in g}
+    for sub in p.subpatches:
+        for idx in sub:
+            rows.update([idx] if idx < p.size else p.sparse[idx])
+    return rows
+
+
+def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None]]:
+    """The balls of ``values``, ``V^-1`` (its 1-ring rows made only where read) and the sub-patch tables at
+    ``prec`` bits (inside its ``workprec``), and ``V^-1`` rounded (:func:`_round_ring_rows`, then the lower block)."""
+    from symdecomp.analysis.eigendata import _g_rows
+
+    k0, size = p.ring_size, p.size
+    r = size - k0
+    cols = _ring_columns(p, prec)
+    nus, wmat, winv = _regular_part(p)
+    read = _read_rows(p, _g_rows(p, winv))
+    v0 = {i: [col.right_at(i) for col in cols] for i in read if i < k0}
+    dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0)
+    lower = (-(flint.arb_mat(dmat) * flint.arb_mat([col.left for col in cols]))).tolist()
+    v1 = (flint.arb_mat(wmat) * flint.arb_mat(dmat)).tolist()
+    wa, wia = flint.arb_mat(wmat).tolist(), flint.arb_mat(winv).tolist()
+    zeros = [arb(0)] * r
+    vrows = {i: v0[i] + zeros if i < k0 else v1[i - k0] + wa[i - k0] for i in read if i < size}
+    values = tuple(col.value for col in cols) + tuple(to_arb(nu) for nu in nus)
+    beyond = {idx: _sparse_times(p.sparse[idx], vrows, size) for sub in p.subpatches for idx in sub if idx >= size}
+    phi = []
+    for sub in p.subpatches:
+        table = [_av_row(vrows[idx], values, jordan) if idx < size else beyond[idx] for idx in sub]
+        phi.append(_Cells([list(row) for row in zip(*table)]))
+    lower_rows: list[list[flint.arb] | None] = [lower[i] + wia[i] for i in range(r)]
+    ring_rows: list[list[flint.arb] | None] = [None] * k0
+    inverse = _Cells(ring_rows + lower_rows, lambda i: cols[i].left + zeros)
+    rounded = _round_ring_rows(cols, size) + [round_ball(x) for row in lower_rows if row is not None for x in row]
+    bad = [(i, j) for i in range(k0, size) for j in range(k0) if rounded[i * size + j] is None]
+    for (i, j), x in _lower_at_zero_prec(p, bad).items():
+        inverse[i, j], rounded[i * size + j] = x, round_ball(x)
+    return _DirectData(p.n, prec, values, inverse, tuple(phi), tuple(jordan), _Unused()), rounded
+
+
+def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dict[tuple[int, int], flint.arb]:
+    """The listed entries of ``V^-1``'s lower block from the frequency columns at
+    :data:`~symdecomp.analysis.eigendata.ZERO_PREC` bits (empty where that precision does not separate the
+    eigenvalues, or where ``lam_c = nu_r`` with a Jordan pair: the whole valence's path handles those).
+
+    Row ``r`` of the block is ``-sum_c (g_r . u_c)/(lam_c - nu_r) l_c``, the resolvent of ``S`` at ``nu_r``
+    applied to ``-g_r`` (``g = W^-1 S11``): it does not depend on how the eigenvectors are scaled, so the
+    columns at the higher precision give the same exact entries. Zeros of the symmetries round (to 0.0)
+    only at over 1075 bits; this costs ``O(N)`` balls for the columns and for each row, ``O(N)`` per entry,
+    where the exact solve of :func:`~symdecomp.analysis.eigendata._sharpen_lower_block` is ``O(N^3)``.
+    """
+    from symdecomp.analysis.eigendata import ZERO_PREC, _g_rows
+
+    if not entries:
+        return {}
+    k0, out = p.ring_size, {}
+    with flint.ctx.workprec(ZERO_PREC):
+        try:
+            cols = _ring_columns(p, ZERO_PREC)
+        except _NeedPrecision:
+            return {}
+        nus, _, winv = _regular_part(p)
+        g_rows = _g_rows(p, winv)
+        for r in sorted({i - k0 for i, _ in entries}):
+            g, nu = [(c, to_arb(x)) for c, x in g_rows[r].items()], to_arb(nus[r])
+            d = []
+            for col in cols:
+                gap = col.value - nu
+                if not gap.contains(0):
+                    d.append(sum((x * col.right_at(c) for c, x in g), arb(0)) / gap)
+                elif col.exact_check is not None and col.exact_check(nus[r], g_rows[r]):
+                    d.append(arb(0))  # lam_c = nu_r exactly, and u_c adds nothing to row r
+                else:
+                    return {}
+            for i, j in entries:
+                if i == k0 + r:
+                    out[(i, j)] = -sum((dc * col.left_at(j) for dc, col in zip(d, cols)), arb(0))
+    return out
+
+
+def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
+    """The 1-ring rows of ``V^-1`` rounded, row-major (``size`` per row, None where an entry does not round).
+
+    Rows kept as :class:`~symdecomp.analysis.ring_eigendata.PatternForm` s (a scalar times a cosine of the
+    trig table) are rounded all at once from their factors (:func:`~symdecomp.algebra.rounding.round_products`),
+    the table split once; what that does not certify, and the other rows, are rounded ball by ball."""
+    k0 = len(cols)
+    out = np.zeros((k0, size))
+    formed = [i for i, col in enumerate(cols) if col.left_form is not None]
+    tables = {id(cols[i].left_form.table) for i in formed}
+    if len(tables) > 1 or any(not isinstance(cols[i].left_form.table, list) for i in formed):
+        formed = []  # factors from several tables, or a lazy one: ball by ball
+    certified = np.ones((k0, size), dtype=bool)
+    if formed:
+        forms = [cols[i].left_form for i in formed]
+        c = np.concatenate([split_balls(forms[0].table), np.zeros((3, 1))], axis=1)  # index -1: the exact 0
+        width = max(len(f.scalars) for f in forms)
+        s = np.zeros((3, len(forms), width))
+        for q, f in enumerate(forms):
+            s[:, q, : len(f.scalars)] = split_balls(f.scalars)
+        coef, index = np.stack([f.coef for f in forms]), np.stack([f.index for f in forms])
+        vals, ok = round_products(s[:, np.arange(len(forms))[:, None], coef], c[:, index])
+        out[formed, :k0], certified[formed, :k0] = vals, ok
+    flat: list[float | None] = [*out.ravel().tolist()]
+    for i in set(range(k0)) - set(formed):
+        flat[i * size: i * size + k0] = [round_ball(x) for x in cols[i].left]
+    for i, j in zip(*np.nonzero(~certified)):
+        flat[i * size + j] = round_ball(cols[i].left_form.at(j))
+    return flat
+
+
+def rounded_valence(scheme: Scheme, n: int, prec: int = 256) -> tuple[int, RoundedEigenData]:
+    """``(precision, RoundedEigenData)``: valence ``n`` of the data file, every float64 correctly rounded.
+
+    From the frequency columns at ``prec`` bits (:func:`_direct`), with the entries that do not
+    round sharpened row by row; if any entry still does not round, the whole valence comes from
+    :func:`~symdecomp.analysis.eigendata.certified_eigendata` at rising precision. Raises
+    :class:`~symdecomp.errors.NotDiagonalizableError` as ``certified_eigendata`` does.
+    """
+    check_scheme(scheme)
+    n, prec = check_valence(n), check_bits(prec)
+    p = patch_matrices(scheme, n)
+    try:
+        with flint.ctx.workprec(prec):
+            data, inverse = _direct(p, prec)
+        rounded = _round_all(data, p, inverse)  # type: ignore[arg-type]  # the same fields, duck-typed
+    except (_NeedPrecision, PrecisionError):
+        rounded = None
+    if rounded is not None:
+        return prec, rounded
+    whole, rounded = certified_eigendata(scheme, n, prec)
+    return whole.prec, rounded

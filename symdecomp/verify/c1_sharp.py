@@ -119,11 +119,13 @@ class SharpC1Result(C1Result):
     lambdas: tuple | None = None
     #: The argument ``Delta / pi`` swept by the sector's image (its opening), when certified.
     opening: float | None = None
+    #: How the verdict was reached (:data:`SHARP_METHOD`, or the blocks route's, :mod:`.c1_sharp_blocks`).
+    method: str = SHARP_METHOD
 
     def as_json(self) -> dict:
         out = super().as_json()
         out.update(vertex=self.vertex, lambdas=None if self.lambdas is None else list(self.lambdas), opening_over_pi=self.opening,
-                   method=SHARP_METHOD)
+                   method=self.method)
         return out
 
 

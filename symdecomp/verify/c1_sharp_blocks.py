@@ -184,7 +184,8 @@ def _blocks_result(scheme, vertex: SharpVertex, found: list[_Finding], max_depth
     if verdict is not C1Verdict.NOT_C1:
         reason += f" (the dense test reads sectors of at most {MAP_FACES} faces)"
     return SharpC1Result(n=vertex.faces, scheme=scheme.name, verdict=verdict, reason=reason, spectral=key.spectral,
-                         max_depth=max_depth, lattice=vertex.lattice, vertex=_describe(vertex), lambdas=key.lambdas)
+                         max_depth=max_depth, lattice=vertex.lattice, vertex=_describe(vertex), lambdas=key.lambdas,
+                         method=BLOCKS_METHOD)
 
 
 def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES) -> SharpC1Result:
@@ -193,6 +194,8 @@ def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_face
     scheme, max_depth = check_scheme(scheme), check_depth(max_depth)
     sharp_sectors = not vertex.closed or (math.isinf(vertex.sharpness) and len(vertex.sectors) == 2)
     if not sharp_sectors or vertex.angle is not None or vertex.lattice is not scheme.lattice:
+        if vertex.angle is not None and max(vertex.sectors) > map_faces:
+            raise NotApplicableError(f"a corner given an angle is tested on its dense matrices, at most {map_faces} faces")
         return c1_sharp_test(scheme, vertex, max_depth=max_depth)
     try:
         with flint.ctx.workprec(64):

@@ -89,9 +89,14 @@ class _Field:
     """``K = Q(cos(pi/k))``: elements are rational polynomials in ``x = cos(pi/k)`` modulo its minimal polynomial."""
 
     def __init__(self, k: int):
-        p = flint.fmpz_poly.cos_minpoly(2 * k)  # of 2 cos(2 pi/(2k))
+        self.k = k
+
+    @functools.cached_property
+    def modulus(self) -> flint.fmpq_poly:
+        """The minimal polynomial of ``cos(pi/k)`` (computed when an element is first needed: most blocks need none)."""
+        p = flint.fmpz_poly.cos_minpoly(2 * self.k)  # of 2 cos(2 pi/(2k))
         q = flint.fmpq_poly([c * 2**i for i, c in enumerate(p.coeffs())])
-        self.k, self.modulus = k, q / q[q.degree()]
+        return q / q[q.degree()]
 
     def element(self, poly: flint.fmpq_poly) -> FieldElement:
         return FieldElement(poly % self.modulus, self.modulus)
@@ -112,15 +117,30 @@ class _Field:
             return acc
 
 
-def _poly_terms(expr: sp.Expr, k: int) -> tuple[tuple[int, int, Fraction], ...]:
-    """``expr`` at ``k`` faces as ``(a, b, coefficient)`` terms of ``c^a c_k^b``, rational coefficients, or refused."""
-    expr = sp.sympify(expr, strict=True).xreplace({symbols.sector_faces: sp.Integer(k)})
+@functools.lru_cache(maxsize=64)
+def _symbolic_terms(expr: sp.Expr) -> tuple[tuple[int, int, sp.Expr], ...] | None:
+    """``expr`` as ``(a, b, coefficient)`` terms of ``c^a c_k^b``, coefficients possibly in ``k`` (``None``: not a polynomial)."""
     try:
         poly = sp.Poly(sp.expand(expr), C, CK)
     except sp.PolynomialError:
-        raise NotApplicableError(f"a sine block's trace or determinant {expr} is not a polynomial in cos(theta), cos(theta_k)") from None
+        return None
+    return tuple((a, b, coeff) for (a, b), coeff in poly.terms())
+
+
+def _poly_terms(expr: sp.Expr, k: int) -> tuple[tuple[int, int, Fraction], ...]:
+    """``expr`` at ``k`` faces as ``(a, b, coefficient)`` terms of ``c^a c_k^b``, rational coefficients, or refused.
+
+    The polynomial is read once per expression (sympy), its coefficients evaluated at each ``k``."""
+    expr = sp.sympify(expr, strict=True)
+    terms = _symbolic_terms(expr)
+    if terms is None:
+        raise NotApplicableError(f"a sine block's trace or determinant {expr.xreplace({symbols.sector_faces: sp.Integer(k)})} "
+                                 "is not a polynomial in cos(theta), cos(theta_k)")
     out = []
-    for (a, b), coeff in poly.terms():
+    for a, b, coeff in terms:
+        coeff = sp.expand(coeff.xreplace({symbols.sector_faces: sp.Integer(k)})) if coeff.free_symbols else coeff
+        if coeff == 0:
+            continue
         if not coeff.is_Rational:
             raise NotApplicableError(f"a sine block's coefficient {coeff} is not rational")
         out.append((a, b, Fraction(int(coeff.p), int(coeff.q))))

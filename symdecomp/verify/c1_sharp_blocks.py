@@ -45,7 +45,7 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.validate import check_depth
-from symdecomp.verify.c1_sharp import SharpC1Result, _describe, _tangent, c1_sharp_test
+from symdecomp.verify.c1_sharp import SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, tangent_condition
 from symdecomp.verify.c1_sharp_spectrum import sector_matrices
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.result import C1Verdict
@@ -68,12 +68,12 @@ class _Window:
 
     #: The outer block's largest absolute row sum (exact), an upper bound of its eigenvalues' moduli.
     outer: Fraction
-    #: The sector matrices at ``1..WINDOW`` faces (the last one's boundary curve block is that of every larger ``k``).
-    matrices: tuple
+    #: ``(roots, problem)`` of the boundary curve block at ``1..WINDOW`` faces (the last is every larger ``k``'s).
+    curves: tuple
 
-    def curve(self, k: int):
-        """Sector matrices whose boundary curve block is the one of a sector of ``k`` faces."""
-        return self.matrices[min(k, WINDOW) - 1]
+    def curve(self, k: int) -> tuple:
+        """The boundary curve's eigenvalues (or why they are not read) in a sector of ``k`` faces."""
+        return self.curves[min(k, WINDOW) - 1]
 
 
 def _outer_norm(sm) -> Fraction:
@@ -98,7 +98,7 @@ def _window(scheme, lattice, corner: bool) -> _Window:
     norms = [_outer_norm(sm) for sm in matrices]
     if norms[-1] != norms[-2]:
         raise NotApplicableError(f"the outer block's row sums differ at {WINDOW} and {WINDOW + 1} faces ({norms[-2]}, {norms[-1]})")
-    return _Window(max(norms), tuple(matrices[:WINDOW]))
+    return _Window(max(norms), tuple(_curve_eigenvalues(sm) for sm in matrices[:WINDOW]))
 
 
 @dataclass(frozen=True)
@@ -162,7 +162,7 @@ def _sector(scheme, k: int, corner: bool) -> _Finding:
     lead = leading_values(scheme, SharpVertex.corner(k, lattice) if corner else SharpVertex.boundary(k, lattice))
     spectral, picks = _spectral(k, lead, window.outer)
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
-    tangent = _tangent(window.curve(k), picks) if picks else None
+    tangent = tangent_condition(*window.curve(k), picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:
         return _Finding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:

@@ -1,12 +1,13 @@
 """Checking many claims at once on the toolkit's one pool of worker processes (:mod:`symdecomp.parallel`).
 
-The claims are independent checks of one scheme, so they are handed to the workers one by one (the costliest
-first, by the time each took in the last run of this process's kind: :data:`COST_HINTS`), except the claims that
-share a costly computation (:data:`GROUPS`), which go to one worker together; the results come back in the
-claims' order (each checked under its own time budget in its worker, whose main thread holds the budget's timer). A result computed in a worker travels as its words: its evidence, counterexample and correction
-rendered to text there (sympy would evaluate an unevaluated ``Eq`` or ``>=`` again when it is unpickled, turning the
-words into ``True``), its status and scope as computed, and without its derivation steps
-(:func:`~symdecomp.claims.registry.check_claim` gives those, and ``derive`` prints them).
+The claims are independent checks of one scheme, so they are handed to the workers one by one (the costliest first,
+by the time each took in the last run of this process's kind: :data:`COST_HINTS`), except the claims that share a
+costly computation (:data:`GROUPS`), which go to one worker together; the results come back in the claims' order
+(each checked under its own time budget in its worker, whose main thread holds the budget's timer). A result
+computed in a worker travels as its words: its evidence, counterexample and correction rendered to text there
+(sympy would evaluate an unevaluated ``Eq`` or ``>=`` again when it is unpickled, turning the words into ``True``),
+its status and scope as computed, and without its derivation steps (:func:`~symdecomp.claims.registry.check_claim`
+gives those, and ``derive`` prints them).
 """
 
 from __future__ import annotations

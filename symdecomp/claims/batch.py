@@ -20,12 +20,14 @@ from symdecomp.claims.registry import CheckResult, Text, check_claim, get_claim
 
 __all__ = ["check_claims", "COST_HINTS", "GROUPS", "work_items"]
 
-#: Claims that take a second or more of one core on Catmull-Clark (measured), handed out first so that no
-#: worker is left with a long check at the end; the others count as cheap.
+#: Seconds of one core the costliest claims take on Catmull-Clark (measured in one process on a loaded machine and
+#: scaled to an idle one: what counts is their order), handed out first so that no worker is left with a long check
+#: at the end; the others count as cheap (0.1).
 COST_HINTS = {
-    "Section 5.2: Catmull-Clark example": 1.8, "Remark 6.1": 1.6, "Eq. 51": 1.4,
-    "Tuning and multiplicities (after Eq. 51)": 1.2, "C1 (Reif's test)": 1.1, "Eq. 41": 1.0, "Eq. 1": 0.8,
-    "Remark 5.2": 0.8, "Shape: the valence decides": 0.5, "Eq. 50": 0.5, "Section 3: Catmull-Clark support": 0.5,
+    "Eq. 51": 1.3, "C1 (Reif's test)": 1.0, "Eq. 1": 0.8, "Remark 5.2": 0.7, "Curvature regime: Loop": 0.7, "Eq. 41": 0.6,
+    "Eq. 50": 0.5, "Section 3: Catmull-Clark support": 0.5, "Eq. 47": 0.5, "Eq. 46": 0.4, "Spectrum (Eq. 34, Eq. 43)": 0.4,
+    "Curvature regime: Catmull-Clark": 0.4, "Eq. 5": 0.4, "Sector: sine decomposition": 0.4, "Shape: the valence decides": 0.3,
+    "Remark 6.1": 0.3, "Section 5.2: Catmull-Clark example": 0.3, "Eq. 10-11": 0.3, "Proposition 6.2": 0.3, "Eq. 48": 0.3,
 }
 
 

@@ -219,16 +219,24 @@ def _sharp_items(args) -> list[tuple] | None:
     if kind == "crease":
         if given(args, "faces"):
             raise InvalidInputError("--k and --crease cannot be used together: --crease K1,K2 gives the faces")
+        _refuse_dense_past_map_faces(args, max(args.crease))
         return [("crease", args.crease, None, args.sharpness)]
     if not given(args, "faces"):
         raise InvalidInputError(f"--{kind} needs --k A:B, the faces of the sector")
-    if given(args, "angle"):
-        from symdecomp.verify.c1_sharp_blocks import MAP_FACES
-
-        if max(args.faces) > MAP_FACES:
-            raise InvalidInputError(f"--k: a corner given an --angle is tested on its dense matrices, faces <= {MAP_FACES} "
-                                    f"(got {max(args.faces)})")
+    _refuse_dense_past_map_faces(args, max(args.faces))
     return [(kind, k, args.angle, None) for k in args.faces]
+
+
+def _refuse_dense_past_map_faces(args, faces: int) -> None:
+    """What only the dense matrices give (a corner's --angle, the map --plot draws) is refused past their faces."""
+    from symdecomp.verify.c1_sharp_blocks import MAP_FACES
+
+    if faces <= MAP_FACES:
+        return
+    if given(args, "angle"):
+        raise InvalidInputError(f"--k: a corner given an --angle is tested on its dense matrices, faces <= {MAP_FACES} (got {faces})")
+    if given(args, "plot"):
+        raise InvalidInputError(f"--plot: the characteristic map is drawn from the dense matrices, faces <= {MAP_FACES} (got {faces})")
 
 
 def run(args) -> int:

@@ -55,7 +55,8 @@ def work_items(labels: list[str]) -> list[tuple[str, ...]]:
     [('Eq. 34',), ('Curvature regime: Loop', "C1 (Reif's test)"), ('Eq. 1',)]
     """
     group_of = {label: group for group in GROUPS for label in group}
-    items, placed = [], set()
+    items: list[tuple[str, ...]] = []
+    placed: set[str] = set()
     for label in labels:
         if label in placed:
             continue

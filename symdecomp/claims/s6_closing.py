@@ -328,7 +328,7 @@ def _multiplicities_at(S: sp.Matrix, mu: sp.Expr) -> tuple[int, int]:
     characteristic polynomial divided by ``x - mu`` while it divides, the rank of ``S - mu I``), else by sympy."""
     import flint
 
-    if not (sp.sympify(mu).is_Rational and all(e.is_Rational for e in S)):
+    if not (sp.sympify(mu, strict=True).is_Rational and all(e.is_Rational for e in S)):
         algebraic = sp.roots(sp.Poly(sp.expand((X * sp.eye(S.rows) - S).det()), X)).get(mu, 0)
         return algebraic, S.rows - (S - mu * sp.eye(S.rows)).rank(simplify=True)
     F = flint.fmpq_mat([[to_fmpq(e) for e in row] for row in S.tolist()])

@@ -18,9 +18,12 @@ from the blocks of the mirror decomposition, O(log k) per sector (:mod:`symdecom
 So ``lambda_1, lambda_2`` are the two largest of the 1-ring's leading values once both bounds are below
 ``|lambda_2|``; then the spectral and tangent conditions are decided as in :mod:`.c1_sharp` (the same reasons). What
 the blocks decide alone is a failure: a sector whose subdominant eigenvectors miss the tangent of a boundary curve,
-at any ``k``. Everything else (conditions 3-5 need the characteristic map, whose control net this route does not
-build; a multiple subdominant eigenvalue, which the dense route splits by the mirror's even and odd parts) goes to the
-dense test up to :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason.
+at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
+mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
+mirror's direct sum (checked exactly on the crease block). Everything else (conditions 3-5 need the characteristic
+map, whose control net this route does not build; other multiple subdominant eigenvalues) goes to the dense test up
+to :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
+rules: the spectral and tangent conditions hold).
 Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
@@ -40,6 +43,7 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
+from symdecomp.analysis.mirror import crease_block
 from symdecomp.analysis.sharp_leading import leading_values
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
@@ -122,7 +126,22 @@ def _is_real(value, values) -> bool:
     return value.ball.imag.contains(0) and not any(w is not value and w.ball.overlaps(conj) for w in values)
 
 
-def _spectral(k: int, lead, outer: Fraction) -> tuple[SpectralResult, list]:
+def _in_two_parts(crease: sp.Matrix, value) -> bool:
+    """Whether a double eigenvalue is one of the crease block's, on its mirror-odd vector, and one of a sine block ``j`` odd,
+    whose mode is mirror-even (``sin(j pi (k - s)/k) = sin(j pi s/k)``): then it has an eigenvector in each part of the
+    mirror's direct sum (as the dense test requires: each simple in its part), and no Jordan block joins them."""
+    names = sorted(value.blocks, key=lambda name: name.block)
+    if value.multiplicity != 2 or [n.block for n in names] != ["crease", "sine"] or names[1].j % 2 == 0:
+        return False
+    if value.key[0] != "q":
+        return False
+    q = sp.Rational(value.key[1].numerator, value.key[1].denominator)
+    odd = sp.Matrix([0, 1, -1])  # O and its two sharp neighbours: the mirror exchanges the neighbours
+    shifted = crease - q * sp.eye(3)
+    return shifted * odd == sp.zeros(3, 1) and shifted.rank() == 2
+
+
+def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[SpectralResult, list]:
     """Condition 1 from the leading values: ``(result, picks)`` with ``picks`` the two subdominant values (balls)."""
     values = list(lead.values)
     unit = [v for v in values if v.ball.overlaps(flint.acb(1))]
@@ -143,7 +162,7 @@ def _spectral(k: int, lead, outer: Fraction) -> tuple[SpectralResult, list]:
     if len(rest) > 2 and not abs(rest[2].ball) < second:
         return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_2 = {lam[1]} and lambda_3 = {ball_text(rest[2].ball)} are "
                               "equal (decided exactly by the blocks) or not separated"), picks
-    if top[0] is top[1]:
+    if top[0] is top[1] and not _in_two_parts(crease, top[0]):
         return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_1 = lambda_2 = {lam[0]} (a double eigenvalue of the blocks: "
                               "its eigenvectors are the dense route's, by the mirror's parts)"), picks
     for v in top:
@@ -160,7 +179,7 @@ def _sector(scheme, k: int, corner: bool) -> _Finding:
     lattice = scheme.lattice
     window = _window(scheme, lattice, corner)
     lead = leading_values(scheme, SharpVertex.corner(k, lattice) if corner else SharpVertex.boundary(k, lattice))
-    spectral, picks = _spectral(k, lead, window.outer)
+    spectral, picks = _spectral(k, lead, window.outer, crease_block(scheme, 2, corner=corner))
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
     tangent = tangent_condition(*window.curve(k), picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:

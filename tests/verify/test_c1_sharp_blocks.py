@@ -78,11 +78,24 @@ def test_standard_rules_fail_at_many_faces_with_the_dominant_sine_block(name, ki
     assert r.lambdas == pytest.approx(lam, abs=1e-12)
 
 
-def test_past_map_faces_a_sector_the_blocks_pass_is_undecided():
-    scheme = load_scheme("catmull-clark-blz")
-    r = c1_sharp_blocks(scheme, sd.SharpVertex.crease(100, 40, "quad"))
+@pytest.mark.parametrize("name", ["cc-blz", "loop-blz"])
+def test_past_map_faces_a_sector_the_blocks_pass_is_undecided(name):
+    # BLZ's double 1/2: the crease block's mirror-odd tangent and the mirror-even sine block j = 1, one in each part
+    scheme = SCHEMES[name]()
+    r = c1_sharp_blocks(scheme, sd.SharpVertex.crease(100, 40, scheme.lattice))
     assert r.verdict is C1Verdict.UNDECIDED and r.lambdas == pytest.approx([0.5, 0.5])
-    assert "lambda_1 = lambda_2 = 0.5" in r.reason and f"at most {MAP_FACES} faces" in r.reason
+    assert r.spectral.status is C1Verdict.C1 and r.spectral.gap > 0
+    assert "the spectral and tangent conditions hold (blocks)" in r.reason and f"at most {MAP_FACES} faces" in r.reason
+
+
+@pytest.mark.parametrize("name", ["cc-blz", "loop-blz"])
+def test_the_blocks_spectral_verdict_at_blz_boundaries_is_the_dense_one(name):
+    scheme = SCHEMES[name]()
+    for k in range(2, 9):
+        vertex = sd.SharpVertex.boundary(k, scheme.lattice)
+        blocks, dense = c1_sharp_blocks(scheme, vertex, map_faces=0), c1_sharp_test(scheme, vertex)
+        assert blocks.spectral.status is dense.spectral.status is C1Verdict.C1
+        assert blocks.lambdas == pytest.approx(dense.lambdas, abs=1e-12)
 
 
 def test_a_corner_given_an_angle_is_refused_past_map_faces():

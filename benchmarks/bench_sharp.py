@@ -1,13 +1,16 @@
-"""Sharp vertices at the speed of interior ones, and ``claims`` in seconds (issue 33), each beside its baseline.
+"""Sharp vertices at the speed of interior ones (issue 33), each figure beside its baseline.
 
 Targets (issue 33): ``spectrum 1000 --boundary --scheme catmull-clark-blz`` within 5 s, the same for corners,
-creases and Loop's rules (the structural route: the mirror decomposition's blocks, O(k)); ``symdecomp claims``
-within 10 s on two cores (the claims on the shared pool). Every figure is the wall-clock time of the command in a
-fresh process (start-up included), so it depends on what else the machine runs: ``run.py`` prints the load.
+creases and Loop's rules (the structural route: the mirror decomposition's blocks, O(k)); ``c1 --boundary --k
+1:1000`` within 60 s, the same for corners and Loop (the spectral and tangent conditions from the blocks, O(log k)
+per k; sectors of at most 32 faces the blocks do not fail get the dense test, which is what BLZ's rules cost: their
+rows start at 33 faces). Every figure is the wall-clock time of the command in a fresh process (start-up included), so it depends on what else the
+machine runs: ``run.py`` prints the load. ``claims`` has its own file (``bench_claims.py``).
 
 Baselines, measured in the same run: the dense route (the vertex's matrix built by refinement, its characteristic
 polynomial factored, over ``Q(cos(pi/k))`` for BLZ's rules) on a small vertex, ``k = 8`` (at ``k = 16`` it took
-211 s before this change); ``claims --jobs 1`` (one process, as before).
+211 s before this change); for ``c1``, the dense test alone (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`, the
+only route before this change) at ``k = 1..8``.
 
     python benchmarks/bench_sharp.py            # every target
     python benchmarks/bench_sharp.py --quick    # k = 200 and the dense route at k = 6
@@ -24,11 +27,11 @@ import time
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 
-def _seconds(*argv: str) -> float:
-    """Wall-clock seconds of ``python -m symdecomp ...`` in a fresh process (its exit code must be 0)."""
+def _seconds(*argv: str, codes: tuple[int, ...] = (0,)) -> float:
+    """Wall-clock seconds of ``python -m symdecomp ...`` in a fresh process (its exit code must be one of ``codes``)."""
     start = time.perf_counter()
     done = subprocess.run([sys.executable, "-m", "symdecomp", *argv], cwd=ROOT, capture_output=True, text=True)
-    if done.returncode != 0:
+    if done.returncode not in codes:
         raise RuntimeError(f"{' '.join(argv)} failed: {done.stdout[-300:]} {done.stderr[-300:]}")
     return time.perf_counter() - start
 
@@ -60,9 +63,32 @@ def targets(quick: bool = False) -> list[dict]:
                      "seconds": _seconds("spectrum", str(k), *option, "--scheme", scheme),
                      "baseline": f"dense route, {dense_vertex} k = {small}",
                      "baseline_seconds": _dense_seconds(scheme, dense_vertex, small)})
-    rows.append({"target": "claims (shared pool, --jobs = CPUs)", "limit_seconds": None if quick else 10.0,
-                 "seconds": _seconds("claims", "--json"), "baseline": "claims --jobs 1",
-                 "baseline_seconds": _seconds("claims", "--json", "--jobs", "1")})
+    return rows + c1_targets(quick)
+
+
+def _dense_c1_seconds(scheme: str, vertex: str, faces: range) -> float:
+    """Seconds of the dense test alone at each ``k`` of ``faces`` in a fresh process (the route before the blocks)."""
+    code = ("import symdecomp as sd; from symdecomp.schemes.files import load_scheme; "
+            "from symdecomp.verify.c1_sharp import c1_sharp_test; "
+            f"s = load_scheme({scheme!r}); "
+            f"[c1_sharp_test(s, sd.SharpVertex.{vertex}(k, s.lattice)) for k in range({faces.start}, {faces.stop})]")
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-c", code], cwd=ROOT, check=True, capture_output=True)
+    return time.perf_counter() - start
+
+
+def c1_targets(quick: bool = False) -> list[dict]:
+    """``c1 --k 1:K`` at boundary and corner vertices (``K = 1000``; ``quick``: 100), beside the dense test at k = 1..8."""
+    top, limit, small = (100, None, range(1, 7)) if quick else (1000, 60.0, range(1, 9))
+    rows = []
+    for scheme, vertex, first in (("catmull-clark", "boundary", 1), ("catmull-clark", "corner", 1), ("loop", "boundary", 1),
+                                  ("loop", "corner", 1), ("catmull-clark-blz", "boundary", 33), ("loop-blz", "boundary", 33)):
+        # BLZ's sectors up to 32 faces get the dense test (its characteristic map), minutes at 32 faces: left out here
+        rows.append({"target": f"c1 --{vertex} --k {first}:{top} --scheme {scheme}", "limit_seconds": limit,
+                     "seconds": _seconds("c1", f"--{vertex}", "--k", f"{first}:{top}", "--scheme", scheme, "--quiet",
+                                         codes=(0, 1)),
+                     "baseline": f"dense test, {vertex} k = {small.start}..{small.stop - 1}",
+                     "baseline_seconds": _dense_c1_seconds(scheme, vertex, small)})
     return rows
 
 

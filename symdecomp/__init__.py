@@ -90,7 +90,7 @@ nothing else.
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
-                   (``sharp_structural``), the limit and tangent
+                   (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
                    masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
@@ -107,7 +107,8 @@ nothing else.
                    valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
                    by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
-                   ``c1_sharp_ring``); for the zoo's schemes, Reif's test on a dual neighbourhood whose regular
+                   ``c1_sharp_ring``; with many faces, the spectral conditions from the blocks, ``c1_sharp_blocks``); for
+                   the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``); dyadic limit positions for
                    the patch evaluator (``patch_eval``) and the boundary one (``sharp_patch_eval``); the tuning region with Reif's

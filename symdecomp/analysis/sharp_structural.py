@@ -41,7 +41,7 @@ from symdecomp.analysis.sharp_eigen import MatrixPart, ball_at, part_eigenvalues
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 
-__all__ = ["BlockValue", "structural_values", "MAX_PREC"]
+__all__ = ["BlockValue", "structural_values", "layout", "block_values", "MAX_PREC"]
 
 #: Most bits Arb is given to separate two values that are not decided equal exactly.
 MAX_PREC = 4096
@@ -89,9 +89,14 @@ class _Field:
     """``K = Q(cos(pi/k))``: elements are rational polynomials in ``x = cos(pi/k)`` modulo its minimal polynomial."""
 
     def __init__(self, k: int):
-        p = flint.fmpz_poly.cos_minpoly(2 * k)  # of 2 cos(2 pi/(2k))
+        self.k = k
+
+    @functools.cached_property
+    def modulus(self) -> flint.fmpq_poly:
+        """The minimal polynomial of ``cos(pi/k)`` (computed when an element is first needed: most blocks need none)."""
+        p = flint.fmpz_poly.cos_minpoly(2 * self.k)  # of 2 cos(2 pi/(2k))
         q = flint.fmpq_poly([c * 2**i for i, c in enumerate(p.coeffs())])
-        self.k, self.modulus = k, q / q[q.degree()]
+        return q / q[q.degree()]
 
     def element(self, poly: flint.fmpq_poly) -> FieldElement:
         return FieldElement(poly % self.modulus, self.modulus)
@@ -112,15 +117,30 @@ class _Field:
             return acc
 
 
-def _poly_terms(expr: sp.Expr, k: int) -> tuple[tuple[int, int, Fraction], ...]:
-    """``expr`` at ``k`` faces as ``(a, b, coefficient)`` terms of ``c^a c_k^b``, rational coefficients, or refused."""
-    expr = sp.sympify(expr, strict=True).xreplace({symbols.sector_faces: sp.Integer(k)})
+@functools.lru_cache(maxsize=64)
+def _symbolic_terms(expr: sp.Expr) -> tuple[tuple[int, int, sp.Expr], ...] | None:
+    """``expr`` as ``(a, b, coefficient)`` terms of ``c^a c_k^b``, coefficients possibly in ``k`` (``None``: not a polynomial)."""
     try:
         poly = sp.Poly(sp.expand(expr), C, CK)
     except sp.PolynomialError:
-        raise NotApplicableError(f"a sine block's trace or determinant {expr} is not a polynomial in cos(theta), cos(theta_k)") from None
+        return None
+    return tuple((a, b, coeff) for (a, b), coeff in poly.terms())
+
+
+def _poly_terms(expr: sp.Expr, k: int) -> tuple[tuple[int, int, Fraction], ...]:
+    """``expr`` at ``k`` faces as ``(a, b, coefficient)`` terms of ``c^a c_k^b``, rational coefficients, or refused.
+
+    The polynomial is read once per expression (sympy), its coefficients evaluated at each ``k``."""
+    expr = sp.sympify(expr, strict=True)
+    terms = _symbolic_terms(expr)
+    if terms is None:
+        raise NotApplicableError(f"a sine block's trace or determinant {expr.xreplace({symbols.sector_faces: sp.Integer(k)})} "
+                                 "is not a polynomial in cos(theta), cos(theta_k)")
     out = []
-    for (a, b), coeff in poly.terms():
+    for a, b, coeff in terms:
+        coeff = sp.expand(coeff.xreplace({symbols.sector_faces: sp.Integer(k)})) if coeff.free_symbols else coeff
+        if coeff == 0:
+            continue
         if not coeff.is_Rational:
             raise NotApplicableError(f"a sine block's coefficient {coeff} is not rational")
         out.append((a, b, Fraction(int(coeff.p), int(coeff.q))))
@@ -289,8 +309,9 @@ def _theta_text(j: int, k: int) -> str:
     return f"cos({'' if q.numerator == 1 else f'{q.numerator}*'}pi/{q.denominator})" if q.denominator > 1 else f"cos({q.numerator}*pi)"
 
 
-def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict) -> list[_Item]:
-    """The sine blocks ``j = 1..k-1`` of sector ``s`` (``k`` faces) and, on quads, its last mode, as items."""
+def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict, js: range | None = None) -> list[_Item]:
+    """The sine blocks ``j`` in ``js`` (default ``1..k-1``) of sector ``s`` (``k`` faces) and, on quads, its last mode,
+    as items."""
     tr, det, quad = polys
     at = {symbols.sector_faces: sp.Integer(k)}
     terms = (_poly_terms(tr, k), _poly_terms(det, k))
@@ -299,7 +320,7 @@ def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict)
     where = (f", c_k = cos(pi/{k})" if any(b for part in terms for _, b, _ in part) else "")
     t_text, d_text = sp.sstr(tr.xreplace(at)), sp.sstr(det.xreplace(at))
     out = []
-    for j in range(1, k):
+    for j in range(1, k) if js is None else js:
         blk, names = _Block(k, j, terms, quad, field), [SectorEigenvalue(None, "sine", s, j)]
         base, c = ("sine", Fraction(j, k), k if uses_k else None), f", c = {_theta_text(j, k)}{where}"
         if not quad:
@@ -373,18 +394,31 @@ def structural_values(scheme, vertex, *, prec: int = 256) -> tuple[list[BlockVal
     corners given an angle, rules without a mirror decomposition, values it cannot tell apart.
     """
     scheme = check_scheme(scheme)
+    lay = layout(scheme, vertex)
+    values = block_values(scheme, lay, prec)
+    if sum(v.multiplicity for v in values) != lay.size:  # pragma: no cover - the blocks' sizes add up by construction
+        raise NotApplicableError(f"the blocks hold {sum(v.multiplicity for v in values)} eigenvalues, the matrix {lay.size}")
+    return values, lay.size
+
+
+def layout(scheme, vertex):
+    """The vertex's layout (:func:`~symdecomp.analysis.mirror.vertex_layout`), or refused where this route does not reach."""
     lay = vertex_layout(scheme, vertex)
     if len(lay.sharp) == 1:
         raise NotApplicableError("a dart's symmetric part is not a small block; the structural route reads boundary, "
                                  "crease and corner vertices")
     if getattr(vertex, "angle", None) is not None:
         raise NotApplicableError("a corner given an angle: the structural route reads theta_k = pi/k")
+    return lay
+
+
+def block_values(scheme, lay, prec: int, head: int | None = None) -> list[BlockValue]:
+    """The distinct eigenvalues of the crease block, the last modes and the sine blocks ``j <= head`` (default: every
+    ``j``) of a :func:`layout`, joined exactly, largest modulus first."""
     polys = _checked_polynomials(scheme)
     items, fields = _crease_items(scheme, lay, prec), {}
     for s, k in enumerate(lay.sectors):
-        items += _sector_items(scheme, s, k, polys, prec, fields)
+        items += _sector_items(scheme, s, k, polys, prec, fields, None if head is None else range(1, min(k, head + 1)))
     values = _join(items, prec)
-    if sum(v.multiplicity for v in values) != lay.size:  # pragma: no cover - the blocks' sizes add up by construction
-        raise NotApplicableError(f"the blocks hold {sum(v.multiplicity for v in values)} eigenvalues, the matrix {lay.size}")
     values.sort(key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid())))
-    return values, lay.size
+    return values

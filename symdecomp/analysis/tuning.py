@@ -25,7 +25,7 @@ Hence:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, cached_property
 
 import mpmath
 import sympy as sp
@@ -145,14 +145,21 @@ def ratio_target(scheme: Scheme) -> sp.Expr:
 class JointObstruction:
     """Why both conditions cannot be met by the vertex rule, except at finitely many valences."""
 
-    #: ``ratio(lambda_1^2) - |B^1/A^1|^2`` in ``n``: vertex-rule free; both conditions need it zero.
-    defect: sp.Expr
+    #: ``ratio(lambda_1^2) - |B^1/A^1|^2`` in ``n`` as derived (see :attr:`defect`).
+    derived_defect: sp.Expr
     #: A polynomial in ``c = cos(pi/n)`` vanishing wherever the defect does (a resultant).
     polynomial: sp.Expr
     #: Its real roots ``c`` in ``[1/2, 1)`` (``cos(pi/n)`` for ``n >= 3``), as exact algebraic numbers.
     roots: tuple[sp.Expr, ...]
     #: The valences at which the defect vanishes exactly (both conditions are achievable).
     valences: tuple[int, ...]
+
+    @cached_property
+    def defect(self) -> sp.Expr:
+        """``ratio(lambda_1^2) - |B^1/A^1|^2`` in ``n``, simplified: vertex-rule free; both conditions need it zero.
+
+        Simplified when first read (sympy's ``simplify`` takes about a second; the claims read only the valences)."""
+        return sp.simplify(self.derived_defect)
 
 
 @cached(scheme=check_scheme)
@@ -178,7 +185,7 @@ def joint_obstruction(scheme: Scheme) -> JointObstruction:
     cond = nice_elliptic_conditions(scheme)
     defect = cond.eq44_ratio_of_mu.subs(MU, cond.lambda1**2) - cond.scale_ratio_squared
     roots, valences = valences_at_roots(polynomial, c, lambda k: sp.simplify(defect.subs(N, k)) == 0)
-    return JointObstruction(sp.simplify(defect), polynomial, roots, valences)
+    return JointObstruction(defect, polynomial, roots, valences)
 
 
 @dataclass(frozen=True)

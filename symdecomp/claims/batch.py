@@ -1,12 +1,13 @@
 """Checking many claims at once on the toolkit's one pool of worker processes (:mod:`symdecomp.parallel`).
 
-The claims are independent checks of one scheme, so they are handed to the workers one by one (the costliest
-first, by the time each took in the last run of this process's kind: :data:`COST_HINTS`), and the results come
-back in the claims' order (each checked under its own time budget in its worker, whose main thread holds the
-budget's timer). A result computed in a worker travels as its words: its evidence, counterexample and correction
-rendered to text there (sympy would evaluate an unevaluated ``Eq`` or ``>=`` again when it is unpickled, turning the
-words into ``True``), its status and scope as computed, and without its derivation steps
-(:func:`~symdecomp.claims.registry.check_claim` gives those, and ``derive`` prints them).
+The claims are independent checks of one scheme, so they are handed to the workers one by one (the costliest first,
+by the time each took in the last run of this process's kind: :data:`COST_HINTS`), except the claims that share a
+costly computation (:data:`GROUPS`), which go to one worker together; the results come back in the claims' order
+(each checked under its own time budget in its worker, whose main thread holds the budget's timer). A result
+computed in a worker travels as its words: its evidence, counterexample and correction rendered to text there
+(sympy would evaluate an unevaluated ``Eq`` or ``>=`` again when it is unpickled, turning the words into ``True``),
+its status and scope as computed, and without its derivation steps (:func:`~symdecomp.claims.registry.check_claim`
+gives those, and ``derive`` prints them).
 """
 
 from __future__ import annotations
@@ -17,19 +18,52 @@ from collections.abc import Iterable, Iterator
 from symdecomp.claims.guards import DEFAULT_BUDGET
 from symdecomp.claims.registry import CheckResult, Text, check_claim, get_claim
 
-__all__ = ["check_claims", "COST_HINTS"]
+__all__ = ["check_claims", "COST_HINTS", "GROUPS", "work_items"]
 
-#: Claims that take a second or more of one core on Catmull-Clark (measured), handed out first so that no
-#: worker is left with a long check at the end; the others count as cheap.
+#: Seconds of one core the costliest claims take on Catmull-Clark (measured in one process on a loaded machine and
+#: scaled to an idle one: what counts is their order), handed out first so that no worker is left with a long check
+#: at the end; the others count as cheap (0.1).
 COST_HINTS = {
-    "Section 5.2: Catmull-Clark example": 1.8, "Remark 6.1": 1.6, "Eq. 51": 1.4,
-    "Tuning and multiplicities (after Eq. 51)": 1.2, "C1 (Reif's test)": 1.1, "Eq. 41": 1.0, "Eq. 1": 0.8,
-    "Remark 5.2": 0.8, "Shape: the valence decides": 0.5, "Eq. 50": 0.5, "Section 3: Catmull-Clark support": 0.5,
+    "Eq. 51": 1.3, "C1 (Reif's test)": 1.0, "Eq. 1": 0.8, "Remark 5.2": 0.7, "Curvature regime: Loop": 0.7, "Eq. 41": 0.6,
+    "Eq. 50": 0.5, "Section 3: Catmull-Clark support": 0.5, "Eq. 47": 0.5, "Eq. 46": 0.4, "Spectrum (Eq. 34, Eq. 43)": 0.4,
+    "Curvature regime: Catmull-Clark": 0.4, "Eq. 5": 0.4, "Sector: sine decomposition": 0.4, "Shape: the valence decides": 0.3,
+    "Remark 6.1": 0.3, "Section 5.2: Catmull-Clark example": 0.3, "Eq. 10-11": 0.3, "Proposition 6.2": 0.3, "Eq. 48": 0.3,
 }
 
 
-def _check(label: str, *, scheme, budget) -> CheckResult:
-    return _as_words(check_claim(label, scheme, budget=budget))
+#: Claims that share costly cached computations (measured: the characteristic map's ring layout at Catmull-Clark's and
+#: Loop's valences and the Loop patch's box-spline terms, about 2.5 s of one core; the K-ring blocks, about 1 s; the sine
+#: identity of the mirror blocks, about 1 s): each group is checked by one worker, one claim after the other, so that
+#: each computation is made once instead of once per worker that meets it.
+GROUPS = (
+    ("C1 (Reif's test)", "Curvature regime: Catmull-Clark", "Curvature regime: Loop", "Shape: the valence decides",
+     "Curvature at the regular valence"),
+    ("1-ring suffices (after Eq. 51)", "Larger neighbourhoods (after Eq. 51)"),
+    ("Sector: sine decomposition", "Sector: the boundary tangent's continuation"),
+)
+
+
+def _check(labels: tuple[str, ...], *, scheme, budget) -> list[CheckResult]:
+    return [_as_words(check_claim(label, scheme, budget=budget)) for label in labels]
+
+
+def work_items(labels: list[str]) -> list[tuple[str, ...]]:
+    """``labels`` as the pool's items: the claims of a group of :data:`GROUPS` together (at the first one's place),
+    every other claim alone.
+
+    >>> work_items(["Eq. 34", "Curvature regime: Loop", "Eq. 1", "C1 (Reif's test)"])
+    [('Eq. 34',), ('Curvature regime: Loop', "C1 (Reif's test)"), ('Eq. 1',)]
+    """
+    group_of = {label: group for group in GROUPS for label in group}
+    items: list[tuple[str, ...]] = []
+    placed: set[str] = set()
+    for label in labels:
+        if label in placed:
+            continue
+        together = tuple(x for x in labels if x in group_of[label]) if label in group_of else (label,)
+        items.append(together)
+        placed.update(together)
+    return items
 
 
 def _as_words(result: CheckResult) -> CheckResult:
@@ -54,5 +88,12 @@ def check_claims(labels: Iterable[str], scheme=None, *, budget: float | None = D
     if jobs == 1:
         yield from (check_claim(label, scheme, budget=budget) for label in labels)
         return
-    yield from ordered_map(_check, labels, shared={"scheme": scheme, "budget": budget}, jobs=jobs, executor=executor,
-                           cost=lambda label: COST_HINTS.get(label, 0.1))
+    items = work_items(labels)
+    done: dict[str, CheckResult] = {}
+    position = 0
+    for item, results in zip(items, ordered_map(_check, items, shared={"scheme": scheme, "budget": budget}, jobs=jobs,
+                                                executor=executor, cost=lambda item: sum(COST_HINTS.get(x, 0.1) for x in item))):
+        done.update(zip(item, results))
+        while position < len(labels) and labels[position] in done:  # in the claims' order, as soon as each is known
+            yield done.pop(labels[position])
+            position += 1

@@ -61,3 +61,19 @@ def _blockwise_product_residues(K: int) -> list:
     residues = [sp.simplify(product.blocks[p, 0] - sum((coefficients[q] * blocks[p][q] * v for q in range(K)), sp.ZeroMatrix(M_SYM, 1)))
                 for p in range(K)]
     return [sp.Integer(0) if isinstance(r, sp.ZeroMatrix) else r for r in residues]
+
+
+def invertible(M: sp.Matrix) -> bool:
+    """Whether a square matrix of closed forms is invertible: its determinant's Arb enclosure excludes 0 (a proof), else
+    sympy's exact rank decides (the closed forms hold radicals over Q(i): an exact rank with simplification takes seconds)."""
+    import flint
+
+    from symdecomp.algebra.compile import UnsupportedExpressionError, compile_expression
+
+    try:
+        with flint.ctx.workprec(128):
+            if not flint.acb_mat([[compile_expression(e, (), "arb")() for e in row] for row in M.tolist()]).det().contains(0):
+                return True
+    except UnsupportedExpressionError:
+        pass
+    return M.rank(simplify=True) == M.rows

@@ -323,6 +323,23 @@ def _defective_example(scheme: Scheme, valence: int):
     return None
 
 
+def _multiplicities_at(S: sp.Matrix, mu: sp.Expr) -> tuple[int, int]:
+    """The algebraic and geometric multiplicities of ``mu`` in ``S``: in FLINT's rationals where both are rational (the
+    characteristic polynomial divided by ``x - mu`` while it divides, the rank of ``S - mu I``), else by sympy."""
+    import flint
+
+    if not (sp.sympify(mu, strict=True).is_Rational and all(e.is_Rational for e in S)):
+        algebraic = sp.roots(sp.Poly(sp.expand((X * sp.eye(S.rows) - S).det()), X)).get(mu, 0)
+        return algebraic, S.rows - (S - mu * sp.eye(S.rows)).rank(simplify=True)
+    F = flint.fmpq_mat([[to_fmpq(e) for e in row] for row in S.tolist()])
+    m, linear, algebraic = to_fmpq(mu), flint.fmpq_poly([-to_fmpq(mu), 1]), 0
+    poly = F.charpoly()
+    while poly.degree() > 0 and poly(m) == 0:
+        poly, algebraic = poly // linear, algebraic + 1
+    return algebraic, S.rows - (F - m * flint.fmpq_mat(S.rows, S.rows, [1 if i == j else 0 for i in range(S.rows)
+                                                                          for j in range(S.rows)])).rank()
+
+
 @claim(
     "Tuning and multiplicities (after Eq. 51)",
     section="6",
@@ -353,8 +370,7 @@ def _multiplicities(scheme: Scheme) -> CheckResult:
     shown = Text()
     if example is not None:
         weights, mu, Sm = example
-        algebraic = sp.roots(sp.Poly(sp.expand((X * sp.eye(Sm.rows) - Sm).det()), X)).get(mu, 0)
-        geometric = Sm.rows - (Sm - mu * sp.eye(Sm.rows)).rank(simplify=True)
+        algebraic, geometric = _multiplicities_at(Sm, mu)
         if geometric < algebraic:
             steps.append(Step(f"$S$ at $n = {valence}$ and these weights: not diagonalizable", Sm))
             shown = Text("; at ", eq(N, valence), ", ", listed(eq(k, v) for k, v in sorted(weights.items(), key=str)), " the weights make ",

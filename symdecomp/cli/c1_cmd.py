@@ -225,9 +225,9 @@ def _vertex(item: tuple, scheme: Scheme):
 
 
 def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
-    from symdecomp.verify.c1_sharp import c1_sharp_test
+    from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
 
-    r = c1_sharp_test(scheme, _vertex(item, scheme), max_depth=max_depth)
+    r = c1_sharp_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
     return _Row(r.n, r.verdict, r.reason, r.as_json(), r.vertex)
 
 
@@ -256,10 +256,24 @@ def _sharp_items(args) -> list[tuple] | None:
     if kind == "crease":
         if given(args, "faces"):
             raise InvalidInputError("--k and --crease cannot be used together: --crease K1,K2 gives the faces")
+        _refuse_dense_past_map_faces(args, max(args.crease))
         return [("crease", args.crease, None, args.sharpness)]
     if not given(args, "faces"):
         raise InvalidInputError(f"--{kind} needs --k A:B, the faces of the sector")
+    _refuse_dense_past_map_faces(args, max(args.faces))
     return [(kind, k, args.angle, None) for k in args.faces]
+
+
+def _refuse_dense_past_map_faces(args, faces: int) -> None:
+    """What only the dense matrices give (a corner's --angle, the map --plot draws) is refused past their faces."""
+    from symdecomp.verify.c1_sharp_blocks import MAP_FACES
+
+    if faces <= MAP_FACES:
+        return
+    if given(args, "angle"):
+        raise InvalidInputError(f"--k: a corner given an --angle is tested on its dense matrices, faces <= {MAP_FACES} (got {faces})")
+    if given(args, "plot"):
+        raise InvalidInputError(f"--plot: the characteristic map is drawn from the dense matrices, faces <= {MAP_FACES} (got {faces})")
 
 
 def run(args) -> int:
@@ -301,7 +315,6 @@ def _figure(scheme: Scheme, results: list[_Row], vertices: list | None = None):
 
 def _run_sharp(args, items: list[tuple], plot) -> int:
     from symdecomp.parallel import ordered_map
-    from symdecomp.verify.c1_sharp import SHARP_METHOD
     from symdecomp.verify.result import C1Verdict
 
     rows = ordered_map(_sharp_one, items, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
@@ -311,7 +324,8 @@ def _run_sharp(args, items: list[tuple], plot) -> int:
         print_json(args, [r.json for r in results])
     else:
         print(f"{args.scheme.name}: Zorin's conditions at {items[0][0]} vertices")
-        print(f"method: {SHARP_METHOD}")
+        for method in dict.fromkeys(r.json["method"] for r in results):
+            print(f"method: {method}")
         width = max(len(r.vertex) for r in results)
         for r in results:
             print(f"{r.vertex:<{width}}: {LABELS[r.verdict.value]}: {r.reason}")

@@ -99,7 +99,7 @@ from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, 
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD"]
+__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -119,11 +119,13 @@ class SharpC1Result(C1Result):
     lambdas: tuple | None = None
     #: The argument ``Delta / pi`` swept by the sector's image (its opening), when certified.
     opening: float | None = None
+    #: How the verdict was reached (:data:`SHARP_METHOD`, or the blocks route's, :mod:`.c1_sharp_blocks`).
+    method: str = SHARP_METHOD
 
     def as_json(self) -> dict:
         out = super().as_json()
         out.update(vertex=self.vertex, lambdas=None if self.lambdas is None else list(self.lambdas), opening_over_pi=self.opening,
-                   method=SHARP_METHOD)
+                   method=self.method)
         return out
 
 
@@ -301,7 +303,11 @@ def _tangent(sm, picks) -> tuple[C1Verdict, str] | None:
     ``1/2`` is an eigenvalue of the curve block once per boundary curve (one at a boundary or crease, two at a
     corner); an eigenvalue certainly not in the curve block has an eigenvector that vanishes on the boundary.
     """
-    roots, problem = _curve_eigenvalues(sm)
+    return tangent_condition(*_curve_eigenvalues(sm), picks)
+
+
+def tangent_condition(roots, problem: str | None, picks) -> tuple[C1Verdict, str] | None:
+    """:func:`_tangent` from the boundary curve's eigenvalues ``roots`` (or the ``problem`` why they are not read)."""
     if problem:
         raise NotApplicableError(f"the sector test does not apply: {problem}")
     half = sp.Rational(1, 2)

@@ -61,7 +61,10 @@ def test_crease_and_corner(capsys):
     (["c1", "--crease", "2"], "expected K1,K2"),
     (["c1", "--corner", "--k", "2", "--angle", "7"], "expected an angle in (0, 2*pi)"),
     (["c1", "--corner", "--k", "0"], "expected an integer >= 1"),
-    (["c1", "--boundary", "--k", "33"], "<= 32"),
+    (["c1", "--boundary", "--k", "10001"], "<= 10000"),
+    (["c1", "--corner", "--k", "33", "--angle", "pi/2"], "--k: a corner given an --angle is tested on its dense matrices, faces <= 32"),
+    (["c1", "--boundary", "--k", "30:40", "--plot", "map.png"], "--plot: the characteristic map is drawn from the dense matrices, faces <= 32"),
+    (["c1", "--crease", "3,100", "--plot", "map.png"], "--plot: the characteristic map is drawn from the dense matrices, faces <= 32"),
     (["c1"], "give --n A:B"),
 ])
 def test_bad_sharp_invocations_are_one_line_and_exit_2(argv, words, capsys):

@@ -1,0 +1,228 @@
+"""Zorin's conditions at boundary, crease and corner vertices with many faces: the spectrum from the sector's blocks.
+
+The dense test (:mod:`.c1_sharp`) builds the sector's exact 2-ring matrix, whose size grows like ``k`` and whose
+exact spectrum costs far more; it is capped (:data:`MAP_FACES`). Here conditions 1 and 2 of :mod:`.c1_sharp` are read
+from the blocks of the mirror decomposition, O(log k) per sector (:mod:`symdecomp.analysis.sharp_leading`):
+
+* **the 1-ring**: the sector's 2-ring matrix is block lower triangular, the new 1-ring reading only the old one, and
+  the 1-ring block is the one-step matrix of a boundary (or corner) vertex with the sector's ``k`` faces, whose
+  leading eigenvalues and a bound of the others come from its blocks;
+* **the outer block** (the 2-ring's points past the 1-ring) holds only the regular and crease rules, so each of its
+  rows is one of the rows at ``WINDOW`` faces (a row reads its point's neighbours; from ``WINDOW`` faces on, every
+  kind of neighbourhood, next to a ray or between the rays, is there). Its spectral radius is at most its largest
+  absolute row sum, computed exactly on the dense matrices at ``1..WINDOW + 1`` faces (the same at ``WINDOW`` and
+  ``WINDOW + 1``, as the argument says), and the largest of them bounds every ``k``;
+* **the boundary curve** (its eigenvalues, for condition 2) is read by crease rules only, which do not depend on
+  ``k`` (:func:`~symdecomp.analysis.mirror.crease_block` has no ``k``): it is taken from the window's matrix.
+
+So ``lambda_1, lambda_2`` are the two largest of the 1-ring's leading values once both bounds are below
+``|lambda_2|``; then the spectral and tangent conditions are decided as in :mod:`.c1_sharp` (the same reasons). What
+the blocks decide alone is a failure: a sector whose subdominant eigenvectors miss the tangent of a boundary curve,
+at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
+mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
+mirror's direct sum (checked exactly on the crease block). Everything else (conditions 3-5 need the characteristic
+map, whose control net this route does not build; other multiple subdominant eigenvalues) goes to the dense test up
+to :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
+rules: the spectral and tangent conditions hold).
+Darts, corners given an angle and semi-sharp creases are the dense test's alone.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> from symdecomp.schemes.sector import SharpVertex
+>>> r = c1_sharp_blocks(catmull_clark(), SharpVertex.boundary(1000, "quad"))
+>>> str(r.verdict), r.lambdas[0] > 0.65
+('not-c1', True)
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+import flint
+import sympy as sp
+
+from symdecomp.analysis.mirror import crease_block
+from symdecomp.analysis.sharp_leading import leading_values
+from symdecomp.errors import NotApplicableError
+from symdecomp.schemes.scheme import check_scheme
+from symdecomp.schemes.sector import SharpVertex
+from symdecomp.validate import check_depth
+from symdecomp.verify.c1_sharp import SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, tangent_condition
+from symdecomp.verify.c1_sharp_spectrum import sector_matrices
+from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
+from symdecomp.verify.result import C1Verdict
+
+__all__ = ["c1_sharp_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD"]
+
+#: Most faces of a sector for which the dense test (:mod:`.c1_sharp`) is run where the blocks do not decide.
+MAP_FACES = 32
+#: Faces of the windows on which the outer block's rows and the boundary curve are read.
+WINDOW = 4
+#: The method, as reported with each verdict the blocks decide.
+BLOCKS_METHOD = ("Zorin's conditions 1-2 from the sector's blocks: exact crease block and sine blocks j <= 3, a certified bound "
+                 "of the other sine blocks and of the 2-ring's outer block; tangent of the boundary curve among the "
+                 "subdominant eigenvalues")
+
+
+@dataclass(frozen=True)
+class _Window:
+    """What the route reads once per scheme and kind of sector: the outer block's bound and a matrix with the curve."""
+
+    #: The outer block's largest absolute row sum (exact), an upper bound of its eigenvalues' moduli.
+    outer: Fraction
+    #: ``(roots, problem)`` of the boundary curve block at ``1..WINDOW`` faces (the last is every larger ``k``'s).
+    curves: tuple
+
+    def curve(self, k: int) -> tuple:
+        """The boundary curve's eigenvalues (or why they are not read) in a sector of ``k`` faces."""
+        return self.curves[min(k, WINDOW) - 1]
+
+
+def _outer_norm(sm) -> Fraction:
+    """The outer block's largest absolute row sum, after checking the new 1-ring reads only the old one (exactly)."""
+    S = sm.matrix
+    ring1 = {i for i, lab in enumerate(sm.labels) if sm.lattice.ring_of(lab[1], lab[2]) <= 1}
+    outer = [i for i in range(S.rows) if i not in ring1]
+    if any(S[i, j] != 0 for i in ring1 for j in outer):
+        raise NotApplicableError("the sector's new 1-ring reads its outer points: the blocks route does not apply")
+    entries = [[S[i, j] for j in outer] for i in outer]
+    if not all(sp.sympify(e, strict=True).is_Rational for row in entries for e in row):
+        raise NotApplicableError("the sector's outer rules are not rational: the blocks route does not apply")
+    return max(sum((abs(Fraction(int(e.p), int(e.q))) for e in row), Fraction(0)) for row in entries)
+
+
+@functools.lru_cache(maxsize=16)
+def _window(scheme, lattice, corner: bool) -> _Window:
+    def sector(k: int):
+        return sector_matrices(scheme, SharpVertex.corner(k, lattice) if corner else SharpVertex.boundary(k, lattice))
+
+    matrices = [sector(k) for k in range(1, WINDOW + 2)]
+    norms = [_outer_norm(sm) for sm in matrices]
+    if norms[-1] != norms[-2]:
+        raise NotApplicableError(f"the outer block's row sums differ at {WINDOW} and {WINDOW + 1} faces ({norms[-2]}, {norms[-1]})")
+    return _Window(max(norms), tuple(_curve_eigenvalues(sm) for sm in matrices[:WINDOW]))
+
+
+@dataclass(frozen=True)
+class _Finding:
+    """What the blocks found in one sector: a verdict (final when ``NOT_C1``), its reason and the spectral result."""
+
+    verdict: C1Verdict
+    reason: str
+    spectral: SpectralResult
+    lambdas: tuple | None = None
+
+
+def _undecided(k: int, reason: str) -> _Finding:
+    return _Finding(C1Verdict.UNDECIDED, reason, SpectralResult(k, C1Verdict.UNDECIDED, reason))
+
+
+def _is_real(value, values) -> bool:
+    """A simple value of a real block whose conjugate ball meets no other value of the head is real (its conjugate,
+    an eigenvalue of the same block, is in the head)."""
+    conj = value.ball.conjugate()
+    return value.ball.imag.contains(0) and not any(w is not value and w.ball.overlaps(conj) for w in values)
+
+
+def _in_two_parts(crease: sp.Matrix, value) -> bool:
+    """Whether a double eigenvalue is one of the crease block's, on its mirror-odd vector, and one of a sine block ``j`` odd,
+    whose mode is mirror-even (``sin(j pi (k - s)/k) = sin(j pi s/k)``): then it has an eigenvector in each part of the
+    mirror's direct sum (as the dense test requires: each simple in its part), and no Jordan block joins them."""
+    names = sorted(value.blocks, key=lambda name: name.block)
+    if value.multiplicity != 2 or [n.block for n in names] != ["crease", "sine"] or names[1].j % 2 == 0:
+        return False
+    if value.key[0] != "q":
+        return False
+    q = sp.Rational(value.key[1].numerator, value.key[1].denominator)
+    odd = sp.Matrix([0, 1, -1])  # O and its two sharp neighbours: the mirror exchanges the neighbours
+    shifted = crease - q * sp.eye(3)
+    return shifted * odd == sp.zeros(3, 1) and shifted.rank() == 2
+
+
+def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[SpectralResult, list]:
+    """Condition 1 from the leading values: ``(result, picks)`` with ``picks`` the two subdominant values (balls)."""
+    values = list(lead.values)
+    unit = [v for v in values if v.ball.overlaps(flint.acb(1))]
+    if len(unit) != 1 or unit[0].multiplicity != 1:
+        return SpectralResult(k, C1Verdict.UNDECIDED, "1 is not shown to be a simple eigenvalue", one_simple=False), []
+    rest = [v for v in values if v is not unit[0] for _ in range(v.multiplicity)]
+    if len(rest) < 2:
+        return SpectralResult(k, C1Verdict.UNDECIDED, "fewer than two eigenvalues after 1 in the blocks read"), []
+    bounds = [flint.arb(outer.numerator) / outer.denominator] + ([lead.tail] if lead.tail is not None else [])
+    second = abs(rest[1].ball)
+    if not all(b < second for b in bounds):
+        return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_2 = {ball_text(rest[1].ball)} is not shown larger than the "
+                              "bound of the other blocks"), []
+    top, picks = rest[:2], [(v.ball, None, None) for v in rest[:2]]
+    lam = [ball_text(v.ball) for v in top]
+    uppers = [b.upper() for b in bounds] + ([abs(rest[2].ball).upper()] if len(rest) > 2 else [])
+    third = functools.reduce(lambda a, b: a if a > b else b, uppers)
+    if len(rest) > 2 and not abs(rest[2].ball) < second:
+        return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_2 = {lam[1]} and lambda_3 = {ball_text(rest[2].ball)} are "
+                              "equal (decided exactly by the blocks) or not separated"), picks
+    if top[0] is top[1] and not _in_two_parts(crease, top[0]):
+        return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_1 = lambda_2 = {lam[0]} (a double eigenvalue of the blocks: "
+                              "its eigenvectors are the dense route's, by the mirror's parts)"), picks
+    for v in top:
+        if not _is_real(v, values) or not v.ball.real > 0:
+            return SpectralResult(k, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {ball_text(v.ball)} is not shown real "
+                                  "and positive"), picks
+    gap = float_down(second.lower() - third)
+    return SpectralResult(k, C1Verdict.C1, f"lambda_1 = {lam[0]}, lambda_2 = {lam[1]}, real, gap >= {round_down(gap)}",
+                          Eigen(top[0].ball, 0, 1), gap, float(third)), picks
+
+
+def _sector(scheme, k: int, corner: bool) -> _Finding:
+    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring)."""
+    lattice = scheme.lattice
+    window = _window(scheme, lattice, corner)
+    lead = leading_values(scheme, SharpVertex.corner(k, lattice) if corner else SharpVertex.boundary(k, lattice))
+    spectral, picks = _spectral(k, lead, window.outer, crease_block(scheme, 2, corner=corner))
+    lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
+    tangent = tangent_condition(*window.curve(k), picks) if picks else None
+    if tangent and tangent[0] is C1Verdict.NOT_C1:
+        return _Finding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
+    if spectral.status is not C1Verdict.C1:
+        return _Finding(spectral.status, spectral.reason, spectral, lambdas)
+    if tangent:
+        return _Finding(tangent[0], tangent[1], spectral, lambdas)
+    return _Finding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
+                    "characteristic map is not built by the blocks route", spectral, lambdas)
+
+
+def _blocks_result(scheme, vertex: SharpVertex, found: list[_Finding], max_depth: int) -> SharpC1Result:
+    order = (C1Verdict.NOT_C1, C1Verdict.UNDECIDED, C1Verdict.C1)
+    verdict = min((f.verdict for f in found), key=order.index)
+    key = next(f for f in found if f.verdict is verdict)
+    if len(found) == 1:
+        reason = key.reason
+    else:
+        reason = "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
+    if verdict is not C1Verdict.NOT_C1:
+        reason += f" (the dense test reads sectors of at most {MAP_FACES} faces)"
+    return SharpC1Result(n=vertex.faces, scheme=scheme.name, verdict=verdict, reason=reason, spectral=key.spectral,
+                         max_depth=max_depth, lattice=vertex.lattice, vertex=_describe(vertex), lambdas=key.lambdas,
+                         method=BLOCKS_METHOD)
+
+
+def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES) -> SharpC1Result:
+    """Zorin's test at a boundary, crease or corner vertex: the blocks first, the dense test where they do not decide and
+    every sector has at most ``map_faces`` faces (module docstring)."""
+    scheme, max_depth = check_scheme(scheme), check_depth(max_depth)
+    sharp_sectors = not vertex.closed or (math.isinf(vertex.sharpness) and len(vertex.sectors) == 2)
+    if not sharp_sectors or vertex.angle is not None or vertex.lattice is not scheme.lattice:
+        if vertex.angle is not None and max(vertex.sectors) > map_faces:
+            raise NotApplicableError(f"a corner given an angle is tested on its dense matrices, at most {map_faces} faces")
+        return c1_sharp_test(scheme, vertex, max_depth=max_depth)
+    try:
+        with flint.ctx.workprec(64):
+            found = [_sector(scheme, k, vertex.corner) for k in vertex.sectors]
+    except NotApplicableError as exc:
+        if max(vertex.sectors) <= map_faces:
+            return c1_sharp_test(scheme, vertex, max_depth=max_depth)
+        found = [_undecided(k, f"the blocks route does not apply ({exc})") for k in vertex.sectors]
+    if any(f.verdict is C1Verdict.NOT_C1 for f in found) or max(vertex.sectors) > map_faces:
+        return _blocks_result(scheme, vertex, found, max_depth)
+    return c1_sharp_test(scheme, vertex, max_depth=max_depth)

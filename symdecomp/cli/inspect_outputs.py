@@ -72,21 +72,27 @@ def verdicts(scheme, result) -> list[dict]:
     return rows
 
 
-def _number(x: float):
-    return None if not math.isfinite(x) else float(x)
+def _numbers(rows: np.ndarray) -> list[list]:
+    """Rows of floats as lists, a value that is not finite as ``None``."""
+    out = rows.tolist()
+    for i, j in zip(*np.nonzero(~np.isfinite(rows))):
+        out[i][j] = None
+    return out
 
 
 def json_report(original, mesh, result, table: list[dict], from_faces, status: int, lattice) -> dict:
     kinds = result.kinds
     extraordinary = []
-    regular = {i for i, k in enumerate(kinds.kinds) if k.is_regular(lattice)}
-    for v in np.flatnonzero((kinds.kind_of >= 0) & ~np.isin(kinds.kind_of, list(regular))).tolist():
-        item = {"vertex": v, "kind": table[kinds.kind_of[v]]["kind"], "limit": [_number(x) for x in result.limits[v]],
-                "normal": [_number(x) for x in result.normals[v]]}
+    regular = [i for i, k in enumerate(kinds.kinds) if k.is_regular(lattice)]
+    ids = np.flatnonzero((kinds.kind_of >= 0) & ~np.isin(kinds.kind_of, regular))
+    names = [row["kind"] for row in table]
+    limits, normals = _numbers(result.limits[ids]), _numbers(result.normals[ids])
+    for v, k, limit, normal in zip(ids.tolist(), kinds.kind_of[ids].tolist(), limits, normals):
+        item = {"vertex": v, "kind": names[k], "limit": limit, "normal": normal}
         if v in result.exact:
             item["limit_exact"] = [str(x) for x in result.exact[v]]
         extraordinary.append(item)
-    return {"mesh": original.name, "scheme": result.scheme, "vertices": len(mesh.points), "faces": len(mesh.faces),
+    return {"mesh": original.name, "scheme": result.scheme, "vertices": len(mesh.points), "faces": mesh.face_count,
             "refined_first": from_faces is not None,
             "from_faces": {str(v): f for v, f in (from_faces or {}).items()},
             "kinds": table, "not_analysed": {str(v): why for v, why in result.not_analysed().items()},
@@ -95,10 +101,10 @@ def json_report(original, mesh, result, table: list[dict], from_faces, status: i
 
 def print_report(original, mesh, result, table: list[dict], from_faces) -> None:
     analysed = int(result.analysed().sum())
-    print(f"{original.name}: {len(original.points)} vertices, {len(original.faces)} faces; scheme {result.scheme}; "
+    print(f"{original.name}: {len(original.points)} vertices, {original.face_count} faces; scheme {result.scheme}; "
           f"{analysed} of {len(mesh.points)} vertices analysed in {len(table)} kinds")
     if from_faces is not None:
-        print(f"faces other than quads: Catmull-Clark's first step taken exactly ({len(mesh.faces)} quads); "
+        print(f"faces other than quads: Catmull-Clark's first step taken exactly ({mesh.face_count} quads); "
               f"{len(from_faces)} extraordinary points came from faces: "
               + ", ".join(f"vertex {v} (face {f}, {len(original.faces[f])} sides)" for v, f in list(from_faces.items())[:8])
               + (" ..." if len(from_faces) > 8 else ""))

@@ -164,6 +164,11 @@ class PolygonMesh:
             self._cache["faces"] = tuple(tuple(flat[a:b]) for a, b in zip(off, off[1:]))
         return self._cache["faces"]
 
+    @property
+    def face_count(self) -> int:
+        """How many faces were kept (``len(faces)`` without building the tuples)."""
+        return len(self._topo.offsets) - 1
+
     def __eq__(self, other):
         if not isinstance(other, PolygonMesh):
             return NotImplemented

@@ -20,9 +20,12 @@ from symdecomp.validate import MAX_MESH_FILE_BYTES, MESH_ADVICE, check_memory
 
 __all__ = ["memory_note", "verdicts", "json_report", "print_report", "write_pictures", "color_values"]
 
-#: Bytes of memory per byte of a mesh file, read and analysed (exact coordinates, the topology, the 1-rings): measured
-#: about 53 for a text OBJ and 82-115 for a binary PLY of 5,000 to 25,000 faces; the estimate takes the larger, per format.
-MEMORY_PER_FILE_BYTE = {"text": 60, "binary": 120}
+#: Bytes of memory per byte of a mesh file, read and analysed (float coordinates, the topology, the 1-rings per kind),
+#: on top of :data:`MEMORY_BASE`: measured 12.4 for a one-million-quad OBJ (66 MiB, 819 MB at its peak) and 18 for the
+#: same mesh as a binary PLY (39 MiB, 710 MB); the estimate takes about a third more.
+MEMORY_PER_FILE_BYTE = {"text": 16, "binary": 24}
+#: What the command holds whatever the mesh (the interpreter, sympy, numpy, the kinds' exact work): about 130 MB.
+MEMORY_BASE = 160 * 2**20
 
 
 def memory_note(path) -> None:
@@ -38,7 +41,7 @@ def memory_note(path) -> None:
         return  # the reader names the problem
     if size > MAX_MESH_FILE_BYTES:
         return  # the reader refuses it by the file bound, which is what the file is past
-    estimate = MEMORY_PER_FILE_BYTE["binary" if binary else "text"] * size
+    estimate = MEMORY_BASE + MEMORY_PER_FILE_BYTE["binary" if binary else "text"] * size
     check_memory(estimate, f"reading {path} ({size / 2**20:.1f} MiB)", MESH_ADVICE)
     if size > 8 * 2**20:
         print(f"symdecomp inspect: reading {path} ({size / 2**20:.0f} MiB): about {estimate / 2**30:.1f} GiB of memory",

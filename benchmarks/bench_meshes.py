@@ -1,6 +1,6 @@
 """Time ``symdecomp inspect`` on large meshes beside the time trimesh takes to load the same file.
 
-The meshes are generated here (nothing is downloaded), written as binary PLY with coordinates on a 2^-20 grid:
+The meshes are generated here (nothing is downloaded), with coordinates on a 2^-20 grid:
 
 * a stand-in for the repaired Stanford bunny: a triangulated 251 x 203 torus (101,906 triangles, 50,953 vertices;
   the repaired bunny has 101,754) with 7 % of its edges flipped at random, so that about half of its vertices
@@ -8,15 +8,16 @@ The meshes are generated here (nothing is downloaded), written as binary PLY wit
 * a stand-in for the bunny as scanned: the same torus with five holes cut into it and three faces added on edges
   that two faces already share (the scan's defect: edges of three faces). ``inspect`` must analyse the rest, list
   the three edges as non-manifold and exit 1; the same target;
-* a one-million-face quad mesh: a cube's faces each split into 409 x 409 quads, projected on the sphere
-  (1,003,686 quads, eight valence-3 vertices), Catmull-Clark: target 60 s and 2 GB.
+* a one-million-face quad mesh: OpenSubdiv's car shape (``catmark_car``, in the tests' shapes) split five times
+  (1,612,800 quads, 10,048 crease edges of sharpness 1: the topology and tags of five Catmull-Clark steps), as an OBJ
+  with its ``t crease`` lines, Catmull-Clark: target 60 s and 2 GB.
 
 Each run is a child process (``symdecomp inspect MESH --json``), timed wall-clock with its peak resident memory;
-the baseline is ``trimesh.load`` of the same PLY in a child of its own (or, without trimesh, numpy reading the PLY's
-vertex and face blocks; the row says which). Run from the repository root:
+the baseline is ``trimesh.load`` of the same file in a child of its own (the row says so where trimesh is not
+installed). The two bunny stand-ins are binary PLY files, the car an OBJ. Run from the repository root:
 
     python benchmarks/bench_meshes.py            # the three meshes (minutes on 2 cores)
-    python benchmarks/bench_meshes.py --quick    # a 40 x 30 torus and 24,576 quads
+    python benchmarks/bench_meshes.py --quick    # a 40 x 30 torus and the car split twice (25,200 quads)
 """
 
 from __future__ import annotations
@@ -54,21 +55,6 @@ import sys, trimesh
 mesh = trimesh.load(sys.argv[1])
 assert len(mesh.faces) >= int(sys.argv[2])
 """
-
-#: The baseline: read the binary PLY's header, then its vertex and face blocks with numpy.
-NUMPY_LOAD = r"""
-import sys, numpy as np
-data = open(sys.argv[1], "rb").read()
-head, body = data.split(b"end_header\n", 1)
-lines = head.decode().splitlines()
-V = int(next(l for l in lines if l.startswith("element vertex")).split()[-1])
-F = int(next(l for l in lines if l.startswith("element face")).split()[-1])
-points = np.frombuffer(body, dtype="<f8", count=3 * V).reshape(V, 3)
-k = body[24 * V]
-faces = np.frombuffer(body[24 * V:], dtype=np.dtype([("k", "u1"), ("v", "<i4", k)]), count=F)["v"]
-assert faces.shape == (F, k) and np.isfinite(points).all()
-"""
-
 
 def torus(m: int, n: int, flips: float, holes: int = 0, fins: int = 0, seed: int = 0):
     """A triangulated ``m x n`` torus grid, ``holes`` holes cut into it, a fraction ``flips`` of its edges flipped and
@@ -140,25 +126,42 @@ def _flip(points, faces, fraction: float, seed: int):
     return points, faces
 
 
-def quad_sphere(m: int):
-    """A cube's faces each split into ``m x m`` quads, projected on the unit sphere (shared edges welded)."""
-    grids, quads = [], []
-    i, j = np.meshgrid(np.arange(m + 1), np.arange(m + 1), indexing="ij")
-    for axis in range(3):
-        for sign in (-1, 1):
-            u, v = [a for a in range(3) if a != axis]
-            p = np.zeros((m + 1, m + 1, 3), dtype=np.int64)
-            p[..., axis], p[..., u], p[..., v] = sign * m, 2 * i - m, 2 * j - m
-            at = sum(len(g) for g in grids) + i * (m + 1) + j
-            grids.append(p.reshape(-1, 3))
-            quads.append(np.stack([at[:-1, :-1], at[1:, :-1], at[1:, 1:], at[:-1, 1:]], -1).reshape(-1, 4))
-    keys, weld = np.unique(np.concatenate(grids), axis=0, return_inverse=True)  # one vertex per lattice point
-    faces = weld.ravel()[np.concatenate(quads)]
-    p = keys[faces].astype(float)
-    turn = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p.mean(axis=1)) < 0
-    faces[turn] = faces[turn][:, ::-1]  # counter-clockwise seen from outside
-    points = keys.astype(float)
-    return points / np.linalg.norm(points, axis=1)[:, None], faces
+CAR = os.path.join(ROOT, "tests", "verify", "opensubdiv_shapes", "catmark_car.obj")
+
+
+def car(steps: int):
+    """OpenSubdiv's car shape (1,575 quads, 314 crease edges of sharpness 6) split ``steps`` times: every quad into
+    four at its edge midpoints and centroid (the topology of as many Catmull-Clark steps, positions bilinear), each
+    crease edge into two of sharpness one less (its decay). ``(points, quads, {edge: sharpness})``."""
+    sys.path.insert(0, ROOT)
+    from symdecomp.schemes.meshformats import read_mesh
+
+    mesh = read_mesh(CAR)
+    points, quads = mesh.points_array, np.array(mesh.faces, dtype=np.int64)
+    creases = {e: float(s) for e, s in mesh.tags.creases.items()}
+    for _ in range(steps):
+        V, F = len(points), len(quads)
+        ends = np.stack([quads, np.roll(quads, -1, axis=1)], -1).reshape(-1, 2)  # edge k of a face: corner k to k + 1
+        lo, hi = ends.min(axis=1), ends.max(axis=1)
+        keys, edge = np.unique(lo * V + hi, return_inverse=True)
+        edge = edge.reshape(F, 4) + V
+        centre = V + len(keys) + np.arange(F)
+        a, b = keys // V, keys % V
+        points = np.concatenate([points, (points[a] + points[b]) / 2, points[quads].mean(axis=1)])
+        before = np.roll(edge, 1, axis=1)  # the edge from corner k - 1 to corner k
+        quads = np.stack([quads, edge, np.repeat(centre[:, None], 4, axis=1), before], -1).reshape(-1, 4)
+        middle = dict(zip(keys.tolist(), range(V, V + len(keys))))
+        creases = {tuple(sorted((x, middle[u * V + v]))): s - 1 for (u, v), s in creases.items() for x in (u, v)}
+    return points, quads, creases
+
+
+def write_obj(path: str, points, faces, creases) -> None:
+    """OBJ with OpenSubdiv's ``t crease`` lines; coordinates on a 2^-20 grid as in :func:`write_ply`."""
+    points = np.round(np.asarray(points) * 2**20) / 2**20
+    with open(path, "w") as fh:
+        fh.write("".join(f"v {x!r} {y!r} {z!r}\n" for x, y, z in points.tolist()))
+        fh.write("".join("f " + " ".join(str(i + 1) for i in f) + "\n" for f in np.asarray(faces).tolist()))
+        fh.write("".join(f"t crease 2/1/0 {u} {v} {s}\n" for (u, v), s in creases.items()))
 
 
 def write_ply(path: str, points, faces) -> None:
@@ -183,12 +186,12 @@ def _child(argv: list[str], output: str = os.devnull) -> tuple[float, float, str
     return wall, mb, last
 
 
-def _baseline(path: str, faces: int) -> tuple[str, float, float]:
+def _baseline(path: str, faces: int) -> tuple[str, float | None, float | None]:
     try:
         import trimesh  # noqa: F401  (only whether it is there: it is loaded in the child)
     except ImportError:
-        return ("numpy reading the PLY's blocks (trimesh is not installed)",) + _child(["-c", NUMPY_LOAD, path])[:2]
-    return ("trimesh.load of the same PLY",) + _child(["-c", TRIMESH_LOAD, path, str(faces // 2)])[:2]
+        return "trimesh's load (not installed here: pip install trimesh)", None, None
+    return ("trimesh.load of the same file",) + _child(["-c", TRIMESH_LOAD, path, str(faces)])[:2]
 
 
 def _scan_check(report: dict, fins: list) -> str:
@@ -204,26 +207,39 @@ def _scan_check(report: dict, fins: list) -> str:
 def targets(quick: bool = False) -> list[dict]:
     """The meshes of the module docstring (smaller with ``quick``, without targets)."""
     size = (40, 30) if quick else (251, 203)
-    cases = [("repaired-bunny stand-in, triangles (Loop)", lambda: torus(*size, 0.07), BUNNY_TARGET),
-             ("scanned-bunny stand-in, 5 holes and 3 edges of 3 faces (Loop)", lambda: torus(*size, 0.07, 5, 3), BUNNY_TARGET),
-             ("quad mesh (Catmull-Clark)", lambda: quad_sphere(64 if quick else 409) + ([],), MILLION_TARGET)]
+
+    def scan(holes, fins):
+        def write(path):
+            points, faces, edges = torus(*size, 0.07, holes, fins)
+            write_ply(path + ".ply", points, faces)
+            return path + ".ply", len(faces), edges
+        return write
+
+    def quads(path):
+        points, faces, creases = car(2 if quick else 5)
+        write_obj(path + ".obj", points, faces, creases)
+        return path + ".obj", len(faces), []
+
+    cases = [("repaired-bunny stand-in, triangles (Loop)", scan(0, 0), BUNNY_TARGET),
+             ("scanned-bunny stand-in, 5 holes and 3 edges of 3 faces (Loop)", scan(5, 3), BUNNY_TARGET),
+             ("the car shape split into quads, with its creases (Catmull-Clark)", quads, MILLION_TARGET)]
     out = []
     with tempfile.TemporaryDirectory() as folder:
-        for name, make, (seconds, megabytes) in cases:
-            points, faces, fins = make()
-            path, report = os.path.join(folder, "mesh.ply"), os.path.join(folder, "report.json")
-            write_ply(path, points, faces)
+        for k, (name, write, (seconds, megabytes)) in enumerate(cases):
+            path, faces, fins = write(os.path.join(folder, f"mesh{k}"))
+            report = os.path.join(folder, "report.json")
             wall, mb, _ = _child(["-m", "symdecomp", "inspect", path, "--json"], report)
             with open(report) as fh:
                 data = json.load(fh)
             note = _scan_check(data, fins) if fins else f"exit {data['exit_status']}"
-            baseline, base_wall, base_mb = _baseline(path, len(faces))
-            out.append({"target": f"inspect: {name}, {len(faces)} faces, {len(data['extraordinary'])} extraordinary "
-                                  f"vertices ({note})",
+            baseline, base_wall, base_mb = _baseline(path, faces)
+            out.append({"target": f"inspect: {name}, {faces} faces, {len(data['extraordinary'])} extraordinary vertices "
+                                  f"({note})",
                         "limit_seconds": None if quick else seconds,
                         "seconds": round(wall, 2), "megabytes": round(mb, 1), "limit_megabytes": None if quick else megabytes,
-                        "baseline": baseline, "baseline_seconds": round(base_wall, 2),
-                        "baseline_megabytes": round(base_mb, 1), "file_bytes": os.path.getsize(path)})
+                        "baseline": baseline, "baseline_seconds": base_wall and round(base_wall, 2),
+                        "baseline_megabytes": base_mb and round(base_mb, 1), "file_bytes": os.path.getsize(path)})
+            os.remove(path)
     return out
 
 

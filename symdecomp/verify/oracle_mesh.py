@@ -170,7 +170,12 @@ def _star_frames(mesh: PolygonMesh, scheme: Scheme, vertices, levels: int) -> tu
     per_batch = max(1, REFINED_FACES // (4**levels))
     done = 0
     while done < len(vertices):
-        piece_points, piece_faces, creases, corners, where, count = [], [], {}, {}, [], 0
+        piece_points: list = []
+        piece_faces: list = []
+        creases: dict = {}
+        corners: dict = {}
+        where: list[int] = []
+        count = 0
         for v in vertices[done:]:
             if count and count + len(at[v]) > per_batch:
                 break

@@ -191,14 +191,14 @@ class Topology:
         self.offsets, self.corners = offsets, corners
         self.next, self.prev = next_corners(offsets)
         u, w = corners, corners[self.next]
-        key = u * np.int64(count) + w
-        order = np.argsort(key)
-        skey = key[order]
-        want = w * np.int64(count) + u
-        at = np.minimum(np.searchsorted(skey, want), max(len(skey) - 1, 0))
-        found = skey[at] == want if len(skey) else np.zeros(0, dtype=bool)
+        # the two corners of an edge are neighbours once sorted by the undirected edge (one sort; a search of each
+        # reversed edge among the sorted directed ones cost four times as much on a million faces)
+        order = np.argsort(np.minimum(u, w) * np.int64(count) + np.maximum(u, w), kind="stable")
+        first, second = order[:-1], order[1:]
+        pair = (u[first] == w[second]) & (w[first] == u[second])
         #: The corner starting the opposite directed edge of each corner's edge (-1 on the boundary).
-        self.opposite = np.where(found, order[at] if len(order) else at, -1)
+        self.opposite = np.full(len(corners), -1, dtype=np.int64)
+        self.opposite[first[pair]], self.opposite[second[pair]] = second[pair], first[pair]
         before = self.opposite[self.prev]
         self.succ = np.where(before >= 0, before, np.arange(len(corners)))
         self.faces_at = np.bincount(corners, minlength=count)

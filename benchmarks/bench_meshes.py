@@ -1,19 +1,23 @@
-"""Time ``symdecomp inspect`` on large meshes beside the time to load the same file with numpy.
+"""Time ``symdecomp inspect`` on large meshes beside the time trimesh takes to load the same file.
 
-Two meshes are generated here (nothing is downloaded), written as binary PLY with coordinates on a 2^-20 grid:
+The meshes are generated here (nothing is downloaded), with coordinates on a 2^-20 grid:
 
-* a bunny-sized triangle mesh: an icosahedron refined 6 times on the unit sphere (81,920 triangles) with random
-  edge flips, so that about a fifth of its vertices get valence 5, 7 or more (a scan's mix of extraordinary
-  vertices), Loop's scheme: target 10 s and 1 GB;
-* a one-million-face quad mesh: a cube's faces each split into 409 x 409 quads, projected on the sphere
-  (1,003,086 quads, eight valence-3 vertices), Catmull-Clark: target 60 s and 2 GB.
+* a stand-in for the repaired Stanford bunny: a triangulated 251 x 203 torus (101,906 triangles, 50,953 vertices;
+  the repaired bunny has 101,754) with 7 % of its edges flipped at random, so that about half of its vertices
+  (25,700; the bunny about 25,000) get valence 4, 5, 7 or more, Loop's scheme: target 10 s and 1 GB;
+* a stand-in for the bunny as scanned: the same torus with five holes cut into it and three faces added on edges
+  that two faces already share (the scan's defect: edges of three faces). ``inspect`` must analyse the rest, list
+  the three edges as non-manifold and exit 1; the same target;
+* a one-million-face quad mesh: OpenSubdiv's car shape (``catmark_car``, in the tests' shapes) split five times
+  (1,612,800 quads, 10,048 crease edges of sharpness 1: the topology and tags of five Catmull-Clark steps), as an OBJ
+  with its ``t crease`` lines, Catmull-Clark: target 60 s and 2 GB.
 
-Each run is a child process (``symdecomp inspect MESH --json``, its output discarded), timed wall-clock with its
-peak resident memory; the baseline is ``numpy.fromfile`` of the same PLY's vertex and face blocks in a child of its
-own. Run from the repository root:
+Each run is a child process (``symdecomp inspect MESH --json``), timed wall-clock with its peak resident memory;
+the baseline is ``trimesh.load`` of the same file in a child of its own (the row says so where trimesh is not
+installed). The two bunny stand-ins are binary PLY files, the car an OBJ. Run from the repository root:
 
-    python benchmarks/bench_meshes.py            # both meshes (minutes on 2 cores)
-    python benchmarks/bench_meshes.py --quick    # 5,120 triangles and 24,576 quads
+    python benchmarks/bench_meshes.py            # the three meshes (minutes on 2 cores)
+    python benchmarks/bench_meshes.py --quick    # a 40 x 30 torus and the car split twice (25,200 quads)
 """
 
 from __future__ import annotations
@@ -33,54 +37,61 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 #: The issue's targets: (seconds, megabytes).
 BUNNY_TARGET, MILLION_TARGET = (10.0, 1024.0), (60.0, 2048.0)
 
-#: Runs ``python ARGV`` and prints [exit code, wall seconds, peak MB of the child, its stderr's last line].
+#: Runs ``python ARGV`` with stdout to the file ``argv[1]`` and prints [exit code, wall seconds, peak MB of the child,
+#: its stderr's last line].
 LAUNCHER = r"""
 import json, resource, subprocess, sys, time
 start = time.perf_counter()
-run = subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+with open(sys.argv[1], "wb") as out:
+    run = subprocess.run(sys.argv[2:], stdout=out, stderr=subprocess.PIPE, text=True)
 wall = time.perf_counter() - start
 mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
 print(json.dumps([run.returncode, wall, mb, (run.stderr.strip().splitlines() or [""])[-1]]))
 """
 
-#: The baseline: read the binary PLY's header, then its vertex and face blocks with numpy.
-NUMPY_LOAD = r"""
-import sys, numpy as np
-data = open(sys.argv[1], "rb").read()
-head, body = data.split(b"end_header\n", 1)
-lines = head.decode().splitlines()
-V = int(next(l for l in lines if l.startswith("element vertex")).split()[-1])
-F = int(next(l for l in lines if l.startswith("element face")).split()[-1])
-points = np.frombuffer(body, dtype="<f8", count=3 * V).reshape(V, 3)
-k = body[24 * V]
-faces = np.frombuffer(body[24 * V:], dtype=np.dtype([("k", "u1"), ("v", "<i4", k)]), count=F)["v"]
-assert faces.shape == (F, k) and np.isfinite(points).all()
+#: The baseline: trimesh's load of the same file (its own reader, vertices merged, as a user of trimesh gets it).
+TRIMESH_LOAD = r"""
+import sys, trimesh
+mesh = trimesh.load(sys.argv[1])
+assert len(mesh.faces) >= int(sys.argv[2])
 """
 
+def torus(m: int, n: int, flips: float, holes: int = 0, fins: int = 0, seed: int = 0):
+    """A triangulated ``m x n`` torus grid, ``holes`` holes cut into it, a fraction ``flips`` of its edges flipped and
+    ``fins`` triangles added on edges that two faces already share: ``(points, faces, fin edges)``.
 
-def icosphere(levels: int, flips: float, seed: int = 0):
-    """Points and triangles of a refined icosahedron on the unit sphere, with a fraction ``flips`` of edges flipped."""
-    t = (1 + 5**0.5) / 2
-    points = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
-              (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
-    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2), (10, 7, 6),
-             (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10),
-             (8, 6, 7), (9, 8, 1)]
-    points = [np.array(p, dtype=float) / np.linalg.norm(p) for p in points]
-    for _ in range(levels):
-        middle, new = {}, []
-        for a, b, c in faces:
-            m = []
-            for u, v in ((a, b), (b, c), (c, a)):
-                key = (min(u, v), max(u, v))
-                if key not in middle:
-                    middle[key] = len(points)
-                    mid = points[u] + points[v]
-                    points.append(mid / np.linalg.norm(mid))
-                m.append(middle[key])
-            new += [(a, m[0], m[2]), (m[0], b, m[1]), (m[2], m[1], c), (m[0], m[1], m[2])]
-        faces = new
-    return _flip(np.array(points), faces, flips, seed)
+    A hole is the faces at a 4 x 4 block of grid vertices (cut before the flips, so its rim is one loop); a fin is a
+    third face on an interior edge (the scanner's defect: an edge of three faces), listed last as a reader meets it.
+    """
+    u, v = np.meshgrid(2 * np.pi * np.arange(m) / m, 2 * np.pi * np.arange(n) / n, indexing="ij")
+    points = np.stack([(1 + 0.4 * np.cos(v)) * np.cos(u), (1 + 0.4 * np.cos(v)) * np.sin(u), 0.4 * np.sin(v)], -1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(m), np.arange(n), indexing="ij")
+    a, b, c, d = i * n + j, (i + 1) % m * n + j, (i + 1) % m * n + (j + 1) % n, i * n + (j + 1) % n
+    tris = np.concatenate([np.stack([a, b, c], -1).reshape(-1, 3), np.stack([a, c, d], -1).reshape(-1, 3)])
+    p = points[tris]
+    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    angle = np.arctan2(p[:, :, 1].mean(1), p[:, :, 0].mean(1))
+    outward = p.mean(1) - np.stack([np.cos(angle), np.sin(angle), 0 * angle], -1)  # from the core circle
+    turn = np.einsum("ij,ij->i", normal, outward) < 0
+    tris[turn] = tris[turn][:, ::-1]  # counter-clockwise seen from outside
+    cut = np.zeros(m * n, dtype=bool)
+    for k in range(holes):
+        x, y = (k + 1) * m // (holes + 1), (3 * k + 1) * n // (3 * holes + 1)
+        cut[((x + np.arange(4)[:, None]) % m * n + (y + np.arange(4)) % n).ravel()] = True
+    tris = tris[~cut[tris].any(axis=1)]
+    used, tris = np.unique(tris, return_inverse=True)  # the vertices of a hole go with it (a scan has none there)
+    points, faces = _flip(points[used], [tuple(t) for t in tris.reshape(-1, 3).tolist()], flips, seed)
+    shared = _interior_edges(faces)
+    rng = random.Random(seed + 1)
+    edges = sorted(rng.sample(shared, fins))
+    extra = [(x, y, (x + len(points) // 2) % len(points)) for x, y in edges]  # a third face on (x, y), its apex far away
+    return points, faces + extra, [tuple(sorted(e)) for e in edges]
+
+
+def _interior_edges(faces) -> list[tuple[int, int]]:
+    """The directed edges ``(x, y)`` of the faces whose reverse ``(y, x)`` is an edge too (two faces share them)."""
+    directed = {(f[k], f[(k + 1) % 3]) for f in faces for k in range(3)}
+    return sorted(e for e in directed if e[::-1] in directed and e[0] < e[1])
 
 
 def _flip(points, faces, fraction: float, seed: int):
@@ -115,43 +126,42 @@ def _flip(points, faces, fraction: float, seed: int):
     return points, faces
 
 
-def quad_sphere(m: int):
-    """A cube's faces each split into ``m x m`` quads, projected on the unit sphere (shared edges welded)."""
-    index, points, faces = {}, [], []
-
-    def vertex(p):
-        key = tuple(int(c) for c in p)
-        if key not in index:
-            index[key] = len(points)
-            points.append(p)
-        return index[key]
-
-    for axis in range(3):
-        for sign in (-1, 1):
-            u, v = [a for a in range(3) if a != axis]
-            grid = np.empty((m + 1, m + 1), dtype=np.int64)
-            for i in range(m + 1):
-                for j in range(m + 1):
-                    p = np.zeros(3)
-                    p[axis], p[u], p[v] = sign * m, 2 * i - m, 2 * j - m
-                    grid[i, j] = vertex(p)
-            for i in range(m):
-                for j in range(m):
-                    q = (grid[i, j], grid[i + 1, j], grid[i + 1, j + 1], grid[i, j + 1])
-                    faces.append(q if sign > 0 else q[::-1])
-    pts = np.array(points, dtype=float)
-    return pts / np.linalg.norm(pts, axis=1)[:, None], _outward(pts, faces)
+CAR = os.path.join(ROOT, "tests", "verify", "opensubdiv_shapes", "catmark_car.obj")
 
 
-def _outward(points, faces):
-    """Each quad turned counter-clockwise seen from outside (its normal along its centre)."""
-    out = []
-    for f in faces:
-        p = points[list(f)]
-        if np.dot(np.cross(p[1] - p[0], p[2] - p[0]), p.mean(axis=0)) < 0:
-            f = f[::-1]
-        out.append(tuple(int(x) for x in f))
-    return out
+def car(steps: int):
+    """OpenSubdiv's car shape (1,575 quads, 314 crease edges of sharpness 6) split ``steps`` times: every quad into
+    four at its edge midpoints and centroid (the topology of as many Catmull-Clark steps, positions bilinear), each
+    crease edge into two of sharpness one less (its decay). ``(points, quads, {edge: sharpness})``."""
+    sys.path.insert(0, ROOT)
+    from symdecomp.schemes.meshformats import read_mesh
+
+    mesh = read_mesh(CAR)
+    points, quads = mesh.points_array, np.array(mesh.faces, dtype=np.int64)
+    creases = {e: float(s) for e, s in mesh.tags.creases.items()}
+    for _ in range(steps):
+        V, F = len(points), len(quads)
+        ends = np.stack([quads, np.roll(quads, -1, axis=1)], -1).reshape(-1, 2)  # edge k of a face: corner k to k + 1
+        lo, hi = ends.min(axis=1), ends.max(axis=1)
+        keys, edge = np.unique(lo * V + hi, return_inverse=True)
+        edge = edge.reshape(F, 4) + V
+        centre = V + len(keys) + np.arange(F)
+        a, b = keys // V, keys % V
+        points = np.concatenate([points, (points[a] + points[b]) / 2, points[quads].mean(axis=1)])
+        before = np.roll(edge, 1, axis=1)  # the edge from corner k - 1 to corner k
+        quads = np.stack([quads, edge, np.repeat(centre[:, None], 4, axis=1), before], -1).reshape(-1, 4)
+        middle = dict(zip(keys.tolist(), range(V, V + len(keys))))
+        creases = {tuple(sorted((x, middle[u * V + v]))): s - 1 for (u, v), s in creases.items() for x in (u, v)}
+    return points, quads, creases
+
+
+def write_obj(path: str, points, faces, creases) -> None:
+    """OBJ with OpenSubdiv's ``t crease`` lines; coordinates on a 2^-20 grid as in :func:`write_ply`."""
+    points = np.round(np.asarray(points) * 2**20) / 2**20
+    with open(path, "w") as fh:
+        fh.write("".join(f"v {x!r} {y!r} {z!r}\n" for x, y, z in points.tolist()))
+        fh.write("".join("f " + " ".join(str(i + 1) for i in f) + "\n" for f in np.asarray(faces).tolist()))
+        fh.write("".join(f"t crease 2/1/0 {u} {v} {s}\n" for (u, v), s in creases.items()))
 
 
 def write_ply(path: str, points, faces) -> None:
@@ -166,31 +176,70 @@ def write_ply(path: str, points, faces) -> None:
         fh.write(header.encode("ascii") + points.astype("<f8").tobytes() + block.tobytes())
 
 
-def _child(argv: list[str]) -> tuple[float, float, str]:
+def _child(argv: list[str], output: str = os.devnull) -> tuple[float, float, str]:
     env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    out = subprocess.run([sys.executable, "-c", LAUNCHER, sys.executable, *argv], cwd=ROOT, env=env, capture_output=True, text=True)
+    out = subprocess.run([sys.executable, "-c", LAUNCHER, output, sys.executable, *argv], cwd=ROOT, env=env,
+                         capture_output=True, text=True)
     code, wall, mb, last = json.loads(out.stdout)
     if code not in (0, 1):
         raise RuntimeError(f"{' '.join(argv)} failed ({code}): {last}")
     return wall, mb, last
 
 
+def _baseline(path: str, faces: int) -> tuple[str, float | None, float | None]:
+    try:
+        import trimesh  # noqa: F401  (only whether it is there: it is loaded in the child)
+    except ImportError:
+        return "trimesh's load (not installed here: pip install trimesh)", None, None
+    return ("trimesh.load of the same file",) + _child(["-c", TRIMESH_LOAD, path, str(faces)])[:2]
+
+
+def _scan_check(report: dict, fins: list) -> str:
+    """The scan stand-in's check: exit 1, the fins' edges listed as non-manifold, every vertex in a face analysed."""
+    defects = report["defects"]
+    listed = sorted(tuple(e) for e in defects["non_manifold_edges"])
+    if report["exit_status"] != 1 or listed != fins or report["not_analysed"]:
+        raise RuntimeError(f"the scan stand-in: exit {report['exit_status']}, non-manifold edges {listed} (added {fins}), "
+                           f"{len(report['not_analysed'])} vertices not analysed")
+    return f"exit 1, non-manifold edges {listed}, {len(defects['dropped_faces'])} faces left out"
+
+
 def targets(quick: bool = False) -> list[dict]:
-    """The two meshes of the module docstring (smaller with ``quick``, without targets)."""
-    cases = [("bunny-sized triangles (Loop)", lambda: icosphere(4 if quick else 6, 0.1), BUNNY_TARGET),
-             ("quad mesh (Catmull-Clark)", lambda: quad_sphere(64 if quick else 409), MILLION_TARGET)]
+    """The meshes of the module docstring (smaller with ``quick``, without targets)."""
+    size = (40, 30) if quick else (251, 203)
+
+    def scan(holes, fins):
+        def write(path):
+            points, faces, edges = torus(*size, 0.07, holes, fins)
+            write_ply(path + ".ply", points, faces)
+            return path + ".ply", len(faces), edges
+        return write
+
+    def quads(path):
+        points, faces, creases = car(2 if quick else 5)
+        write_obj(path + ".obj", points, faces, creases)
+        return path + ".obj", len(faces), []
+
+    cases = [("repaired-bunny stand-in, triangles (Loop)", scan(0, 0), BUNNY_TARGET),
+             ("scanned-bunny stand-in, 5 holes and 3 edges of 3 faces (Loop)", scan(5, 3), BUNNY_TARGET),
+             ("the car shape split into quads, with its creases (Catmull-Clark)", quads, MILLION_TARGET)]
     out = []
     with tempfile.TemporaryDirectory() as folder:
-        for name, make, (seconds, megabytes) in cases:
-            points, faces = make()
-            path = os.path.join(folder, "mesh.ply")
-            write_ply(path, points, faces)
-            wall, mb, _ = _child(["-m", "symdecomp", "inspect", path, "--json"])
-            base_wall, base_mb, _ = _child(["-c", NUMPY_LOAD, path])
-            out.append({"target": f"inspect: {name}, {len(faces)} faces", "limit_seconds": None if quick else seconds,
+        for k, (name, write, (seconds, megabytes)) in enumerate(cases):
+            path, faces, fins = write(os.path.join(folder, f"mesh{k}"))
+            report = os.path.join(folder, "report.json")
+            wall, mb, _ = _child(["-m", "symdecomp", "inspect", path, "--json"], report)
+            with open(report) as fh:
+                data = json.load(fh)
+            note = _scan_check(data, fins) if fins else f"exit {data['exit_status']}"
+            baseline, base_wall, base_mb = _baseline(path, faces)
+            out.append({"target": f"inspect: {name}, {faces} faces, {len(data['extraordinary'])} extraordinary vertices "
+                                  f"({note})",
+                        "limit_seconds": None if quick else seconds,
                         "seconds": round(wall, 2), "megabytes": round(mb, 1), "limit_megabytes": None if quick else megabytes,
-                        "baseline": "numpy load of the same PLY", "baseline_seconds": round(base_wall, 2),
-                        "baseline_megabytes": round(base_mb, 1), "file_bytes": os.path.getsize(path)})
+                        "baseline": baseline, "baseline_seconds": base_wall and round(base_wall, 2),
+                        "baseline_megabytes": base_mb and round(base_mb, 1), "file_bytes": os.path.getsize(path)})
+            os.remove(path)
     return out
 
 

@@ -56,6 +56,9 @@ FIGURES = (
     Figure("inspect-vertex", ("inspect", "notebooks/data/valences-3-5-6.obj", "--figures", "{dir}"), pick="vertex-11.png",
            caption="symdecomp inspect notebooks/data/valences-3-5-6.obj --figures DIR: vertex 11 (valence 5), its 1-ring, "
            "limit point, normal and tangents"),
+    Figure("real-mesh", ("inspect", "notebooks/data/catmark_pawn.obj", "--color-by", "kind", "--plot", "{out}"),
+           caption="symdecomp inspect notebooks/data/catmark_pawn.obj --color-by kind --plot FILE: OpenSubdiv's pawn, "
+           "each vertex coloured by its kind of neighbourhood"),
     Figure("tune-region", ("tune", "5", "--region", "--scheme", "tests/corpus/free-vertex.toml", "--plot", "{out}"),
            caption="symdecomp tune 5 --region --scheme tests/corpus/free-vertex.toml --plot FILE: the vertex weights by "
            "curvature regime, the published weights placed in it"),

@@ -100,7 +100,7 @@ class VertexKinds:
 def _fan(mesh: PolygonMesh, v: int) -> tuple[list[int], bool]:
     """The edge neighbours of ``v`` counter-clockwise (``a_0`` first: where an open fan starts) and whether it closes."""
     step = mesh._topology["next"][v]
-    boundary = v in mesh._topology["boundary"]
+    boundary = bool(mesh._topo.boundary[v])
     if boundary:
         targets = set(step.values())
         a = next(x for x in step if x not in targets)
@@ -175,41 +175,62 @@ def _smooth(faces: int) -> tuple[NeighbourhoodKind, int] | str:
     return NeighbourhoodKind("smooth", faces, (faces,), True), 0
 
 
-def _opposite(mesh: PolygonMesh) -> dict:
-    """``(O, a) -> b`` for every quad ``(O, a, b, a')``: the face neighbour after each directed edge (one pass)."""
-    table = mesh._topology.get("opposite-corner")
-    if table is None:
-        table = {}
-        for f in mesh.faces:
-            table.update({(f[k], f[(k + 1) % 4]): f[(k + 2) % 4] for k in range(4)})
-        mesh._topology["opposite-corner"] = table
-    return table
+def _opposite_at(mesh: PolygonMesh, v: int) -> dict:
+    """``a -> b`` for every quad ``(v, a, b, a')`` at ``v``: the face neighbour after each edge neighbour."""
+    t = mesh._topo
+    at = t.by_vertex[t.vertex_start[v]:t.vertex_start[v + 1]]
+    return dict(zip(t.corners[t.next[at]].tolist(), t.corners[t.next[t.next[at]]].tolist()))
 
 
 def _ring(v: int, fan: list[int], closed: bool, opposite: dict | None) -> list[int]:
     """``O, a_0.., b_0..`` with ``b_i`` the corner opposite ``O`` in the face ``(O, a_i, b_i, a_{i+1})``."""
     if opposite is None:
         return [v] + fan
-    return [v] + fan + [opposite[(v, a)] for a in (fan if closed else fan[:-1])]
+    return [v] + fan + [opposite[a] for a in (fan if closed else fan[:-1])]
+
+
+def _smooth_at_once(mesh: PolygonMesh, candidates: np.ndarray, quads: bool) -> tuple[dict, np.ndarray]:
+    """The untagged interior vertices (``candidates``) of 3 to :data:`MAX_SMOOTH_VALENCE` faces, valence by valence
+    with numpy (:func:`~symdecomp.schemes.mesh_topology.closed_fans`): ``({kind: (ids, rings)}, the rest)``, the
+    rest (not one closed fan) for the vertex-by-vertex route."""
+    from symdecomp.schemes.mesh_topology import closed_fans
+
+    t = mesh._topo
+    gathered, rest = {}, []
+    valence = t.faces_at[candidates]
+    for n in np.unique(valence[(valence >= 3) & (valence <= MAX_SMOOTH_VALENCE)]).tolist():
+        ids = candidates[valence == n]
+        fans, closes = closed_fans(t, ids, n)
+        rest.append(ids[~closes])
+        ids, fans = ids[closes], fans[closes]
+        columns = [ids[:, None], t.corners[t.next[fans]]] + ([t.corners[t.next[t.next[fans]]]] if quads else [])
+        gathered[_smooth(n)[0]] = (ids, np.hstack(columns))
+    rest.append(candidates[(valence < 3) | (valence > MAX_SMOOTH_VALENCE)])
+    return gathered, np.sort(np.concatenate(rest))
 
 
 def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKinds:
     """Classify every vertex of ``mesh`` (every face of the lattice's kind) and gather the 1-rings per kind.
 
-    ``progress(iterable, total)``, when given, wraps the loop over the vertices.
+    The untagged interior vertices (most of a mesh) are classified and gathered with numpy, valence by valence; the
+    others (boundary, tagged, next to a hole) one by one; ``progress(iterable, total)``, when given, wraps that loop.
     """
     mesh.require_lattice(lattice)
-    opposite = _opposite(mesh) if "b" in dict(lattice.one_ring_classes) else None  # face neighbours b_i in the 1-ring
-    holes = {x for f in mesh.tags.holes for x in mesh.faces[f]}
+    quads = "b" in dict(lattice.one_ring_classes)  # face neighbours b_i in the 1-ring
+    t = mesh._topo
+    holes = {x for f in mesh.tags.holes for x in t.corners[t.offsets[f]:t.offsets[f + 1]].tolist()}
     tagged = {v for e in mesh.tags.creases for v in e} | set(mesh.tags.corners)  # the rest of the interior is smooth
+    simple = (t.faces_at > 0) & ~t.boundary
+    simple[np.fromiter(holes | tagged, dtype=np.int64)] = False
+    fast, rest = _smooth_at_once(mesh, np.flatnonzero(simple), quads)
     gathered: dict[NeighbourhoodKind, tuple[list, list]] = {}
     not_analysed: dict[int, str] = {}
-    vertices = range(len(mesh.points))
+    vertices = np.sort(np.concatenate([np.flatnonzero(~simple), rest])).tolist()
     for v in progress(vertices, len(vertices)) if progress is not None else vertices:
         if v in holes:
             not_analysed[v] = "a corner of a face tagged as a hole"
             continue
-        if not mesh._topology["next"][v]:  # lenient reading keeps the file's numbering: a vertex may be in no kept face
+        if not t.faces_at[v]:  # lenient reading keeps the file's numbering: a vertex may be in no kept face
             not_analysed[v] = "in no face of the mesh (isolated, or its faces were left out)"
             continue
         fan, closed = _fan(mesh, v)
@@ -222,9 +243,22 @@ def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKin
             fan = fan[start:] + fan[:start]
         ids, rings = gathered.setdefault(kind, ([], []))
         ids.append(v)
-        rings.append(_ring(v, fan, closed, opposite))
-    rings = {k: (np.array(ids, dtype=np.int64), np.array(rs, dtype=np.int64)) for k, (ids, rs) in gathered.items()}
-    kind_of = np.full(len(mesh.points), -1, dtype=np.int64)
+        rings.append(_ring(v, fan, closed, _opposite_at(mesh, v) if quads else None))
+    return _gather(len(mesh.points), fast, gathered, dict(sorted(not_analysed.items())))
+
+
+def _gather(count: int, fast: dict, gathered: dict, not_analysed: dict) -> VertexKinds:
+    """One ``(ids, rings)`` per kind from both routes, in vertex order, and each vertex's kind index."""
+    rings = {}
+    for kind in set(fast) | set(gathered):
+        parts = [fast[kind]] if kind in fast else []
+        if kind in gathered:
+            ids, rs = gathered[kind]
+            parts.append((np.array(ids, dtype=np.int64), np.array(rs, dtype=np.int64)))
+        ids = np.concatenate([p[0] for p in parts])
+        order = np.argsort(ids, kind="stable")
+        rings[kind] = (ids[order], np.concatenate([p[1] for p in parts])[order])
+    kind_of = np.full(count, -1, dtype=np.int64)
     for i, k in enumerate(sorted(rings)):
         kind_of[rings[k][0]] = i
     return VertexKinds(rings, not_analysed, kind_of)

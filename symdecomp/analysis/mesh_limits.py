@@ -200,26 +200,42 @@ class MeshLimits:
         return dict(sorted(out.items()))
 
 
+#: Vertices per block when a kind's masks are applied: bounds the temporary ``(block, ring, 3)`` arrays.
+BLOCK_VERTICES = 1 << 16
+
+
+def _cross(u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """``u x v`` over the last axis (``numpy.cross`` copies both operands first)."""
+    return np.stack([u[..., 1] * v[..., 2] - u[..., 2] * v[..., 1], u[..., 2] * v[..., 0] - u[..., 0] * v[..., 2],
+                     u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]], axis=-1)
+
+
 def _orientation(points: np.ndarray, rings: np.ndarray, edge_count: int, closed: bool) -> np.ndarray:
     """Per vertex: the 1-ring's vector area ``sum (a_i - O) x (a_{i+1} - O)`` (counter-clockwise faces: outward)."""
     centre = points[rings[:, 0]][:, None, :]
     a = points[rings[:, 1 : 1 + edge_count]] - centre
     nxt = np.roll(a, -1, axis=1) if closed else a[:, 1:]
-    return np.cross(a[:, : nxt.shape[1]], nxt).sum(axis=1)
+    return _cross(a[:, : nxt.shape[1]], nxt).sum(axis=1)
 
 
 def _apply(points: np.ndarray, rings: np.ndarray, masks: KindMasks, edge_count: int) -> tuple:
-    ring_points = points[rings]  # (m, ring, 3)
-    limit = np.einsum("k,mkc->mc", masks.position, ring_points)
-    tangents = np.einsum("tk,mkc->mtc", masks.tangents[:2], ring_points)
-    cross = np.cross(tangents[:, 0], tangents[:, 1])
+    m = len(rings)
+    limit, cross, tangents = np.empty((m, 3)), np.empty((m, 3)), np.empty((m, 2, 3))
+    turn = 0.0
+    for lo in range(0, m, BLOCK_VERTICES):
+        block = slice(lo, lo + BLOCK_VERTICES)
+        ring_points = points[rings[block]]  # (block, ring, 3)
+        limit[block] = np.einsum("k,mkc->mc", masks.position, ring_points)
+        tangents[block] = np.einsum("tk,mkc->mtc", masks.tangents[:2], ring_points)
+        cross[block] = _cross(tangents[block, 0], tangents[block, 1])
+        # t_1 x t_2 turns the same way against the faces at every vertex of a kind (a linear map of the ring), so one
+        # sign serves the kind: the vector areas' total decides it (one control net folded over cannot flip its normal)
+        turn += float(np.einsum("mc,mc->", cross[block], _orientation(points, rings[block], edge_count, masks.kind.closed)))
+    side = np.sign(turn) or 1.0
     norm = np.linalg.norm(cross, axis=1)
-    # t_1 x t_2 turns the same way against the faces at every vertex of a kind (a linear map of the ring), so one sign
-    # serves the kind: the vector areas' total decides it (one vertex's control net folded over cannot flip its normal)
-    side = np.sign(np.einsum("mc,mc->", cross, _orientation(points, rings, edge_count, masks.kind.closed))) or 1.0
     with np.errstate(invalid="ignore", divide="ignore"):
-        normal = cross * (side / np.where(norm > 0, norm, np.nan))[:, None]
-    return limit, normal, tangents
+        cross *= (side / np.where(norm > 0, norm, np.nan))[:, None]
+    return limit, cross, tangents
 
 
 def _exact_limit(mesh: PolygonMesh, ring, weights) -> tuple:
@@ -245,6 +261,7 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
     masks, exact_limits, overflow = {}, {}, {}
     largest = float(np.max(np.abs(points))) if V else 1.0
     scale = largest if largest > 1e100 or 0 < largest < 1e-100 else 1.0  # keep the products in the double range
+    scaled = points / scale if scale != 1.0 else points
     for kind in wrap(kinds.kinds, len(kinds.kinds), "kinds"):
         try:
             masks[kind] = m = kind_masks(scheme, kind)
@@ -254,7 +271,7 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
         ids, rings = kinds.rings[kind]
         edge_count = kind.faces + (0 if kind.closed else 1)
         with np.errstate(all="ignore"):  # coordinates near the double range: scaled, and what overflows is named below
-            limit, normals[ids], tangent = _apply(points / scale, rings, m, edge_count)
+            limit, normals[ids], tangent = _apply(scaled, rings, m, edge_count)
             limits[ids], tangents[ids] = limit * scale, tangent * scale
         bad = ids[~np.isfinite(limits[ids]).all(axis=1)]
         limits[bad], normals[bad], tangents[bad] = np.nan, np.nan, np.nan

@@ -20,9 +20,12 @@ from symdecomp.validate import MAX_MESH_FILE_BYTES, MESH_ADVICE, check_memory
 
 __all__ = ["memory_note", "verdicts", "json_report", "print_report", "write_pictures", "color_values"]
 
-#: Bytes of memory per byte of a mesh file, read and analysed (exact coordinates, the topology, the 1-rings): measured
-#: about 53 for a text OBJ and 82-115 for a binary PLY of 5,000 to 25,000 faces; the estimate takes the larger, per format.
-MEMORY_PER_FILE_BYTE = {"text": 60, "binary": 120}
+#: Bytes of memory per byte of a mesh file, read and analysed (float coordinates, the topology, the 1-rings per kind),
+#: on top of :data:`MEMORY_BASE`: measured 12.4 for a one-million-quad OBJ (66 MiB, 819 MB at its peak) and 18 for the
+#: same mesh as a binary PLY (39 MiB, 710 MB); the estimate takes about a third more.
+MEMORY_PER_FILE_BYTE = {"text": 16, "binary": 24}
+#: What the command holds whatever the mesh (the interpreter, sympy, numpy, the kinds' exact work): about 130 MB.
+MEMORY_BASE = 160 * 2**20
 
 
 def memory_note(path) -> None:
@@ -38,7 +41,7 @@ def memory_note(path) -> None:
         return  # the reader names the problem
     if size > MAX_MESH_FILE_BYTES:
         return  # the reader refuses it by the file bound, which is what the file is past
-    estimate = MEMORY_PER_FILE_BYTE["binary" if binary else "text"] * size
+    estimate = MEMORY_BASE + MEMORY_PER_FILE_BYTE["binary" if binary else "text"] * size
     check_memory(estimate, f"reading {path} ({size / 2**20:.1f} MiB)", MESH_ADVICE)
     if size > 8 * 2**20:
         print(f"symdecomp inspect: reading {path} ({size / 2**20:.0f} MiB): about {estimate / 2**30:.1f} GiB of memory",
@@ -72,21 +75,27 @@ def verdicts(scheme, result) -> list[dict]:
     return rows
 
 
-def _number(x: float):
-    return None if not math.isfinite(x) else float(x)
+def _numbers(rows: np.ndarray) -> list[list]:
+    """Rows of floats as lists, a value that is not finite as ``None``."""
+    out = rows.tolist()
+    for i, j in zip(*np.nonzero(~np.isfinite(rows))):
+        out[i][j] = None
+    return out
 
 
 def json_report(original, mesh, result, table: list[dict], from_faces, status: int, lattice) -> dict:
     kinds = result.kinds
     extraordinary = []
-    regular = {i for i, k in enumerate(kinds.kinds) if k.is_regular(lattice)}
-    for v in np.flatnonzero((kinds.kind_of >= 0) & ~np.isin(kinds.kind_of, list(regular))).tolist():
-        item = {"vertex": v, "kind": table[kinds.kind_of[v]]["kind"], "limit": [_number(x) for x in result.limits[v]],
-                "normal": [_number(x) for x in result.normals[v]]}
+    regular = [i for i, k in enumerate(kinds.kinds) if k.is_regular(lattice)]
+    ids = np.flatnonzero((kinds.kind_of >= 0) & ~np.isin(kinds.kind_of, regular))
+    names = [row["kind"] for row in table]
+    limits, normals = _numbers(result.limits[ids]), _numbers(result.normals[ids])
+    for v, k, limit, normal in zip(ids.tolist(), kinds.kind_of[ids].tolist(), limits, normals):
+        item = {"vertex": v, "kind": names[k], "limit": limit, "normal": normal}
         if v in result.exact:
             item["limit_exact"] = [str(x) for x in result.exact[v]]
         extraordinary.append(item)
-    return {"mesh": original.name, "scheme": result.scheme, "vertices": len(mesh.points), "faces": len(mesh.faces),
+    return {"mesh": original.name, "scheme": result.scheme, "vertices": len(mesh.points), "faces": mesh.face_count,
             "refined_first": from_faces is not None,
             "from_faces": {str(v): f for v, f in (from_faces or {}).items()},
             "kinds": table, "not_analysed": {str(v): why for v, why in result.not_analysed().items()},
@@ -95,10 +104,10 @@ def json_report(original, mesh, result, table: list[dict], from_faces, status: i
 
 def print_report(original, mesh, result, table: list[dict], from_faces) -> None:
     analysed = int(result.analysed().sum())
-    print(f"{original.name}: {len(original.points)} vertices, {len(original.faces)} faces; scheme {result.scheme}; "
+    print(f"{original.name}: {len(original.points)} vertices, {original.face_count} faces; scheme {result.scheme}; "
           f"{analysed} of {len(mesh.points)} vertices analysed in {len(table)} kinds")
     if from_faces is not None:
-        print(f"faces other than quads: Catmull-Clark's first step taken exactly ({len(mesh.faces)} quads); "
+        print(f"faces other than quads: Catmull-Clark's first step taken exactly ({mesh.face_count} quads); "
               f"{len(from_faces)} extraordinary points came from faces: "
               + ", ".join(f"vertex {v} (face {f}, {len(original.faces[f])} sides)" for v, f in list(from_faces.items())[:8])
               + (" ..." if len(from_faces) > 8 else ""))

@@ -164,6 +164,11 @@ class PolygonMesh:
             self._cache["faces"] = tuple(tuple(flat[a:b]) for a, b in zip(off, off[1:]))
         return self._cache["faces"]
 
+    @property
+    def face_count(self) -> int:
+        """How many faces were kept (``len(faces)`` without building the tuples)."""
+        return len(self._topo.offsets) - 1
+
     def __eq__(self, other):
         if not isinstance(other, PolygonMesh):
             return NotImplemented
@@ -231,7 +236,8 @@ class PolygonMesh:
             i = int(wrong[0])
             raise InvalidMeshError(
                 f"{self.name}: face {i} is {_sides(len(self.faces[i]))}; {scheme_name} takes {lattice.name} meshes only (every "
-                f"face {_sides(lattice.face_sides)}); refine the mesh first or choose another --scheme"
+                f"face {_sides(lattice.face_sides)}); choose --scheme catmull-clark, which takes any polygons (symdecomp "
+                f"refine writes its first step, every face a quad)"
             )
 
     def local_mesh(self, lattice):

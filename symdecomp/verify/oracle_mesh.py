@@ -118,23 +118,28 @@ def _levels(mesh: PolygonMesh) -> int:
 
 def osd_mesh_frames(mesh: PolygonMesh, scheme: Scheme, levels: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """OpenSubdiv's limit positions and first derivatives of every vertex of ``mesh`` (tags included), ``(V, 3)`` each."""
+    return _osd_frames(float_points(mesh), mesh.faces, mesh.tags.creases, mesh.tags.corners, mesh.tags.interpolate_boundary,
+                       scheme, levels)
+
+
+def _osd_frames(points, faces, creases, corners, interpolate_boundary: str, scheme: Scheme, levels: int) -> tuple:
     from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
     from symdecomp.verify.opensubdiv.sharp import OsdOptions, _entry, _tags
 
     options = OsdOptions(scheme.lattice.select({BICUBIC: "catmull-clark", BOX_SPLINE: "loop"}, "OpenSubdiv's scheme"),
-                         mesh.tags.interpolate_boundary)
+                         interpolate_boundary)
     fn = _entry("symdecomp_osd_tagged_limit_frames")
     ip, dp, fp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_float)
     fn.argtypes = [ip, ctypes.c_int, ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ip, fp, ctypes.c_int, ip, fp,
                    ctypes.c_int, dp, dp, dp, ctypes.c_char_p, ctypes.c_int]
     fn.restype = ctypes.c_int
-    points = np.ascontiguousarray(float_points(mesh))
-    faces = np.ascontiguousarray(mesh.faces, dtype=np.intc)
+    points = np.ascontiguousarray(points, dtype=np.float64)
+    faces = np.ascontiguousarray(faces, dtype=np.intc)
     def osd(s):  # OpenSubdiv's infinitely sharp is 10 and above
         return math.inf if s >= 10 else s
 
-    tags = _tags({tuple(e): osd(s) for e, s in mesh.tags.creases.items() if s > 0},
-                 {v: osd(s) for v, s in mesh.tags.corners.items() if s > 0}, len(points))
+    tags = _tags({tuple(e): osd(s) for e, s in creases.items() if s > 0}, {v: osd(s) for v, s in corners.items() if s > 0},
+                 len(points))
     limits, du, dv = (np.zeros_like(points) for _ in range(3))
     err = ctypes.create_string_buffer(512)
     rc = fn(options.codes(), options.sides, len(points), len(faces), faces.ctypes.data_as(ip), points.ctypes.data_as(dp),
@@ -144,19 +149,64 @@ def osd_mesh_frames(mesh: PolygonMesh, scheme: Scheme, levels: int) -> tuple[np.
     return limits, du, dv
 
 
+#: Faces OpenSubdiv holds at most after the levels of one call (about 400 bytes each): the stars are taken in batches.
+REFINED_FACES = 1 << 20
+
+
+def _star_frames(mesh: PolygonMesh, scheme: Scheme, vertices, levels: int) -> tuple:
+    """OpenSubdiv's frames at ``vertices`` after ``levels`` levels, each from its star alone (the faces at it, their tags).
+
+    A vertex's 1-ring one level down is made from its faces only (its vertex point from its 1-ring, the points of its
+    edges from the two faces at each, the face points from its faces), so the limit of its descendant depends on its
+    star alone; the stars go to OpenSubdiv as disjoint pieces of one mesh, a batch at a time, instead of the whole
+    mesh refined ``levels`` times (OpenSubdiv's rook, 3,000 quads at 7 levels, took 19 GB).
+    """
+    points, faces, tags = float_points(mesh), mesh.faces, mesh.tags
+    at: dict[int, list[int]] = {}
+    for i, f in enumerate(faces):
+        for x in f:
+            at.setdefault(x, []).append(i)
+    out = tuple(np.zeros((len(vertices), 3)) for _ in range(3))
+    per_batch = max(1, REFINED_FACES // (4**levels))
+    done = 0
+    while done < len(vertices):
+        piece_points: list = []
+        piece_faces: list = []
+        creases: dict = {}
+        corners: dict = {}
+        where: list[int] = []
+        count = 0
+        for v in vertices[done:]:
+            if count and count + len(at[v]) > per_batch:
+                break
+            star = sorted({x for i in at[v] for x in faces[i]})
+            local = {x: len(piece_points) + k for k, x in enumerate(star)}
+            piece_points += [points[x] for x in star]
+            piece_faces += [[local[x] for x in faces[i]] for i in at[v]]
+            creases.update({(min(local[a], local[b]), max(local[a], local[b])): tags.sharpness_of_edge(a, b)
+                            for i in at[v] for a, b in zip(faces[i], faces[i][1:] + faces[i][:1])})
+            corners.update({local[x]: tags.corners[x] for x in star if x in tags.corners})
+            where.append(local[v])
+            count += len(at[v])
+        got = _osd_frames(np.array(piece_points), piece_faces, creases, corners, tags.interpolate_boundary, scheme, levels)
+        for frame, values in zip(out, got):
+            frame[done:done + len(where)] = values[where]
+        done += len(where)
+    return out
+
+
 def _frames(mesh: PolygonMesh, scheme: Scheme, ours, levels: int) -> tuple:
     """OpenSubdiv's frames after ``levels`` levels at the kinds with a semi-sharp feature (it must decay first), at level
     0 elsewhere: a smooth or infinitely sharp neighbourhood refines by the same rules at every level, and OpenSubdiv's
     own rounding grows with the levels (``1e-11`` in the normals after 6)."""
-    frames = osd_mesh_frames(mesh, scheme, levels)
+    frames = osd_mesh_frames(mesh, scheme, 0)
     if levels == 0:
         return frames
-    base = osd_mesh_frames(mesh, scheme, 0)
-    for kind in ours.kinds.kinds:
-        if kind.name == "smooth" or kind.sharpness == math.inf:
-            where = ours.kinds.rings[kind][0]
-            for frame, level0 in zip(frames, base):
-                frame[where] = level0[where]
+    late = [int(v) for kind in ours.kinds.kinds if not (kind.name == "smooth" or kind.sharpness == math.inf)
+            for v in ours.kinds.rings[kind][0]]
+    if late:
+        for frame, values in zip(frames, _star_frames(mesh, scheme, late, levels)):
+            frame[late] = values
     return frames
 
 

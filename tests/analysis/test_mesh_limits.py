@@ -143,3 +143,30 @@ def test_coordinates_near_the_double_range_give_finite_limits_and_no_warnings():
     assert r.not_analysed() == {} and np.isfinite(r.normals).all()
     assert r.limits[0] == pytest.approx([float(x) for x in r.exact[0]], rel=1e-15)
     assert r.normals[0] == pytest.approx(-np.ones(3) / math.sqrt(3), abs=1e-15)
+
+
+@pytest.mark.parametrize("shape", ["catmark_car", "catmark_pawn", "loop_icos_semisharp", "catmark_bishop"])
+def test_the_numpy_route_gathers_the_same_rings_as_the_vertex_by_vertex_walk(shape, monkeypatch):
+    """The untagged interior vertices are classified valence by valence with numpy; forced through the walk that takes
+    the other vertices, every kind gets the same vertices and the same ordered 1-rings (OpenSubdiv's shapes: valences
+    3 to 12, creases, darts, boundaries)."""
+    from pathlib import Path
+
+    from symdecomp.analysis import mesh_kinds
+    from symdecomp.schemes.lattice import TRIANGLE
+    from symdecomp.schemes.meshformats import read_mesh
+
+    mesh = read_mesh(Path(__file__).resolve().parents[1] / "verify" / "opensubdiv_shapes" / f"{shape}.obj")
+    if mesh.face_sizes() != (3,) and mesh.face_sizes() != (4,):
+        from symdecomp.schemes.polygon_step import catmull_clark_polygon_step
+
+        mesh = catmull_clark_polygon_step(mesh).mesh
+    lattice = TRIANGLE if mesh.face_sizes() == (3,) else QUAD
+    fast = classify_vertices(mesh, lattice)
+    monkeypatch.setattr(mesh_kinds, "_smooth_at_once", lambda mesh, candidates, quads: ({}, candidates))
+    walked = classify_vertices(mesh, lattice)
+    assert sorted(fast.rings) == sorted(walked.rings) and fast.not_analysed == walked.not_analysed
+    for kind, (ids, rings) in walked.rings.items():
+        assert np.array_equal(fast.rings[kind][0], ids) and np.array_equal(fast.rings[kind][1], rings), kind
+    assert np.array_equal(fast.kind_of, walked.kind_of)
+    assert sum(len(ids) for k, (ids, _) in fast.rings.items() if k.name == "smooth") > len(mesh.points) // 3

@@ -112,3 +112,19 @@ def test_inputs_are_json_a_scheme_by_name_and_inf_as_text(capsys):
     inputs = json.loads(capsys.readouterr().out)["inputs"]
     assert inputs["scheme"] == "catmull-clark" and inputs["sharpness"] == "inf" and inputs["crease"] == [2, 2]
     assert inputs["depth"] == 0 and inputs["valences"] is None
+
+
+def test_a_long_list_is_printed_one_row_per_line_and_reads_back_the_same(capsys):
+    """A top-level list past ROWS_PER_LINE (25,000 vertices of a scan) is printed one compact row per line: the
+    indenting encoder is pure Python; the object read back is the one given."""
+    import argparse
+
+    from symdecomp.cli.json_envelope import ROWS_PER_LINE, print_json
+
+    rows = [{"vertex": i, "limit": [i / 3, float("nan") if i == 7 else -i, 0.0], "kind": "smooth n = 5"}
+            for i in range(ROWS_PER_LINE + 1)]
+    print_json(argparse.Namespace(command="inspect", quiet=True), {"extraordinary": rows, "short": [1, 2]})
+    out = capsys.readouterr().out
+    data = json.loads(out)
+    assert json.dumps(data["extraordinary"]) == json.dumps(rows) and data["short"] == [1, 2]
+    assert sum(line.startswith('    {"vertex": ') and line.endswith(("},", "}")) for line in out.splitlines()) == len(rows)

@@ -1,0 +1,115 @@
+"""The spectrum of a StencilScheme at valence ``n``, frequency by frequency, as a :class:`RingSpectrum`.
+
+The blocks (:mod:`symdecomp.analysis.zoo_blocks`) are factored as
+:mod:`symdecomp.analysis.ring_spectrum` factors a 1-ring scheme's: ``det(lambda I - B(omega))``
+once, symbolically in ``omega``, and ``det(lambda I - B_0)``. The entries are exact numbers at
+the valence (rationals, or cosines of rational multiples of ``pi`` and the radicals sympy writes
+them with); each irrational atom is a symbol while factoring, so a factor is an identity for its
+exact value too. A factor of degree ``<= 2`` gives closed-form roots (exact); the roots of a higher
+one are isolated by certified Arb balls (``acb_poly.roots``). Values are grouped by overlapping
+balls, and the result is the one eigenvalue type of spectra, :class:`RingEigenvalue` in a
+:class:`RingSpectrum` (``rings`` is the neighbourhood's depth), so ``spectrum --json`` keeps its shape.
+The Jordan structure is not decided here (``jordan`` is ``None``).
+
+>>> import sympy as sp
+>>> from symdecomp.schemes.stencils import Term, Rule, KindRules, StencilScheme, J, M
+>>> corner = Term(sp.KroneckerDelta(J, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * J / M)) / (4 * M), over="face")
+>>> ds = StencilScheme("doo-sabin", "quad", "dual", (KindRules("corner", (Rule((corner,)),)),))
+>>> [(e.exact, e.multiplicity) for e in zoo_spectrum(ds, 5, digits=10).eigenvalues][:3]
+[(1, 1), (1/2, 2), (1/4, 7)]
+"""
+
+from __future__ import annotations
+
+import flint
+import sympy as sp
+
+from symdecomp.analysis.ring_spectrum import COSK, RingEigenvalue, RingSpectrum, _clusters, _exact_root, _factors, _hull, _Roots, acb_text
+from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
+from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.schemes.stencils import StencilScheme
+from symdecomp.symbols import lam as LAM
+from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_digits
+
+__all__ = ["zoo_spectrum", "spectrum_of_blocks", "irrational_atoms"]
+
+
+def irrational_atoms(exprs) -> dict:
+    """``{symbol: exact value}`` for the cosines, sines and radicals in ``exprs`` (each a fresh symbol)."""
+    atoms: set = set()
+    for e in exprs:
+        e = sp.sympify(e)
+        atoms |= e.atoms(sp.cos, sp.sin)
+        atoms |= {p for p in e.atoms(sp.Pow) if not p.exp.is_Integer and not p.free_symbols}
+    ordered = sorted(atoms, key=sp.default_sort_key)
+    return {sp.Dummy(f"g{i}"): a for i, a in enumerate(ordered)}
+
+
+def _generic(M: sp.Matrix, atoms: dict) -> sp.Matrix:
+    back = {a: g for g, a in atoms.items()}
+    return M.applyfunc(lambda e: sp.expand(sp.sympify(e).xreplace(back)))
+
+
+def spectrum_of_blocks(blocks: ZooBlocks, *, digits: int = 20, exact: bool = True, depth: int = 1, mesh: str = "") -> RingSpectrum:
+    """The eigenvalues of the matrix whose blocks are ``blocks`` (see the module docstring)."""
+    digits = check_digits(digits)
+    n, K = blocks.n, blocks.class_count
+    B, B0 = blocks.frequency_matrix(), blocks.frequency_zero_matrix()
+    atoms = irrational_atoms(list(B) + list(B0))
+    gens = tuple(atoms)
+    Bg, B0g = _generic(sp.Matrix(B), atoms), _generic(sp.Matrix(B0), atoms)
+    other = _factors((LAM * sp.eye(K) - Bg).det(method="berkowitz"), (LAM, OMEGA)) if n > 1 else ()
+    zero = _factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM,))
+    prec = max(128, 4 * digits + 64)
+    with flint.ctx.workprec(prec):
+        g_balls = [flint.acb(_arb_value(a)) for a in atoms.values()]
+        items = [(b, 0, i, j) for b, i, j in _Roots(zero, gens).at(tuple(g_balls))]
+        roots = _Roots(other, (OMEGA, COSK, *gens))
+        for k in range(1, n):
+            w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
+            items += [(b, k, i, j) for b, i, j in roots.at((w, w.real, *g_balls))]
+        groups = _clusters(items)
+        groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
+        entries = [_entry(items, g, zero, other, n, atoms, digits, exact) for g in groups]
+    size = B0.shape[0] + K * (n - 1)
+    return RingSpectrum(blocks.scheme, mesh, n, depth, size, digits, tuple(entries))
+
+
+def _arb_value(value: sp.Expr):
+    from symdecomp.algebra.compile import compile_expression
+
+    return compile_expression(value, (), "arb")()
+
+
+_X = sp.Dummy("x")
+
+
+def _reduced(value: sp.Expr, ball) -> sp.Expr:
+    """``value`` as a rational or a quadratic surd when its minimal polynomial has degree 1 or 2 (the root in ``ball``)."""
+    if value.is_Rational or sp.count_ops(value) > 400:
+        return value
+    p = sp.Poly(sp.minimal_polynomial(value, _X), _X)
+    if p.degree() > 2:
+        return value
+    mid = complex(float(ball.real.mid()), float(ball.imag.mid()))
+    return sp.radsimp(min(sp.roots(p, _X), key=lambda r: abs(complex(r.evalf(30)) - mid)))
+
+
+def _entry(items, group, zero, other, n, atoms, digits, exact) -> RingEigenvalue:
+    b, k, i, j = items[group[0]]
+    f = (zero if k == 0 else other)[i]
+    value = None
+    if exact and f.roots is not None:
+        value = _reduced(sp.expand(_exact_root(f.roots[j], k, n, atoms)), b)
+    return RingEigenvalue(
+        ball=b, text=acb_text(b, digits), multiplicity=len(group), frequencies=tuple(sorted({items[x][1] for x in group})),
+        exact=value, factor=f.poly.xreplace(atoms), jordan=None, members=tuple(sorted(items[x][1:] for x in group)),
+        hull=_hull([items[x][0] for x in group]),
+    )
+
+
+def zoo_spectrum(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20, exact: bool = True) -> RingSpectrum:
+    """The eigenvalues of ``scheme``'s subdivision matrix at valence ``n`` (over its steps), by frequency."""
+    zm = zoo_matrix(scheme, n, depth)
+    return spectrum_of_blocks(zoo_blocks(zm), digits=digits, exact=exact, depth=zm.depth, mesh=scheme.lattice)

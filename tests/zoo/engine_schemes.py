@@ -1,0 +1,45 @@
+"""Schemes written as StencilSchemes for the engine's tests (the shipped families are files; these are built in Python).
+
+Catmull-Clark and Loop are today's ``catmull_clark()`` and ``loop()`` written as stencils, so that the
+engine's spectrum can be compared with ``ring_spectrum``'s; Doo-Sabin is Doo and Sabin's corner rule.
+"""
+
+import sympy as sp
+
+from symdecomp.schemes.stencils import J, M, N, KindRules, Rule, StencilScheme, Term
+
+R = sp.Rational
+
+
+def catmull_clark_stencils() -> StencilScheme:
+    """Catmull-Clark: face points the corners' average, edge points from the ends and the two new face points."""
+    face = KindRules("face", (Rule((Term(1 / M, over="face"),)),))
+    edge = KindRules("edge", (Rule((Term(R(1, 4)), Term(R(1, 4), ("next",)), Term(R(1, 4), source="face"),
+                                    Term(R(1, 4), ("twin",), source="face"))),))
+    vertex = KindRules("vertex", (Rule((Term(1 - R(7, 4) / N), Term(R(3, 2) / N**2, ("next",), over="ring"),
+                                        Term(R(1, 4) / N**2, ("next", "next"), over="ring"))),))
+    return StencilScheme("catmull-clark", "quad", "primal", (face, edge, vertex))
+
+
+def loop_beta(n):
+    """Loop's vertex weight ``beta(n) = (5/8 - (3/8 + cos(2 pi/n)/4)^2)/n``."""
+    return (R(5, 8) - (R(3, 8) + sp.cos(2 * sp.pi / n) / 4) ** 2) / n
+
+
+def loop_stencils() -> StencilScheme:
+    """Loop: edge points 3/8 at the ends and 1/8 at the opposite corners, vertex points ``(1 - n beta) v + beta sum a_j``."""
+    edge = KindRules("edge", (Rule((Term(R(3, 8)), Term(R(3, 8), ("next",)), Term(R(1, 8), ("prev",)),
+                                    Term(R(1, 8), ("twin", "prev")))),))
+    vertex = KindRules("vertex", (Rule((Term(1 - N * loop_beta(N)), Term(loop_beta(N), ("next",), over="ring"))),))
+    return StencilScheme("loop", "triangle", "primal", (edge, vertex))
+
+
+def doo_sabin_weight(j, m):
+    """Doo and Sabin's weight of corner ``j`` of an ``m``-gon in the new point of corner 0."""
+    return sp.KroneckerDelta(j, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * j / m)) / (4 * m)
+
+
+def doo_sabin_stencils() -> StencilScheme:
+    """Doo-Sabin: one new point per face corner, weights over the face's corners."""
+    corner = KindRules("corner", (Rule((Term(doo_sabin_weight(J, M), over="face"),)),))
+    return StencilScheme("doo-sabin", "quad", "dual", (corner,))

@@ -89,7 +89,7 @@ def zoo_blocks(zm: ZooMatrix) -> ZooBlocks:
     index = nb.index()
     K = len(nb.classes)
     at = {nb.labels[v]: index[v] for v in nb.order if v != nb.centre}
-    offsets = {signed_offset(d, n): sp.Matrix(K, K, lambda c, e: S[at[(0, c)], at[(d, e)]]) for d in range(n)}
+    offsets = {signed_offset(d, n): sp.Matrix(K, K, [S[at[(0, c)], at[(d, e)]] for c in range(K) for e in range(K)]) for d in range(n)}
     offsets = {d: A for d, A in offsets.items() if any(x != 0 for x in A)}
     for s in range(1, n):
         for (t, c), i in at.items():

@@ -27,7 +27,7 @@ import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.halfedge import HalfedgeMesh
-from symdecomp.schemes.stencils import J, M, N, KindRules, Rule, Term
+from symdecomp.schemes.stencils import J, KindRules, M, N, Rule, Term
 
 __all__ = ["Row", "is_zero", "same_row", "kind_row", "point_key"]
 

@@ -148,7 +148,7 @@ def refine_step(scheme: StencilScheme, mesh: HalfedgeMesh, *, regular: int) -> R
                 made[key] = row
     kinds = topology.point_kinds(scheme)
     ids: dict = {}
-    for key, row in made.items():
+    for key in made:
         if key[0] in kinds:
             ids[key] = len(ids)
     faces = [tuple(ids[k] for k in f) for f in topology.new_faces(mesh, scheme) if all(k in ids for k in f)]

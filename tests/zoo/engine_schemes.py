@@ -6,7 +6,7 @@ engine's spectrum can be compared with ``ring_spectrum``'s; Doo-Sabin is Doo and
 
 import sympy as sp
 
-from symdecomp.schemes.stencils import J, M, N, KindRules, Rule, StencilScheme, Term
+from symdecomp.schemes.stencils import J, KindRules, M, N, Rule, StencilScheme, Term
 
 R = sp.Rational
 

@@ -1,0 +1,188 @@
+"""The zoo's engine: one engine for every scheme written as stencils.
+
+Catmull-Clark and Loop as StencilSchemes give through the engine the eigenvalues of today's route
+(``ring_spectrum``); Doo-Sabin's are compared with a matrix the test builds itself by applying the
+corner rule to an explicit primal ring mesh, face by face.
+"""
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.zoo_blocks import zoo_blocks
+from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.analysis.zoo_spectrum import zoo_spectrum
+from symdecomp.errors import InvalidSchemeError, LatticeFactMissing
+from symdecomp.schemes.lattice import QUAD, Lattice
+from symdecomp.schemes.loop import loop
+from symdecomp.schemes.mesh import ring_mesh
+from symdecomp.schemes.neighbourhood import neighbourhood
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.schemes.stencil_rows import is_zero
+from symdecomp.schemes.stencils import KindRules, N, Rule, StencilScheme, Term
+from tests.zoo.engine_schemes import catmull_clark_stencils, doo_sabin_stencils, doo_sabin_weight, loop_stencils
+
+VALENCES = range(3, 9)
+
+
+def _same_spectrum(engine, reference):
+    assert [e.multiplicity for e in engine.eigenvalues] == [e.multiplicity for e in reference.eigenvalues]
+    assert [e.frequencies for e in engine.eigenvalues] == [e.frequencies for e in reference.eigenvalues]
+    for a, b in zip(engine.eigenvalues, reference.eigenvalues):
+        assert a.ball.overlaps(b.ball)
+        if a.exact is not None and b.exact is not None:
+            assert is_zero(a.exact - b.exact), (a.exact, b.exact)
+
+
+@pytest.mark.parametrize("n", VALENCES)
+def test_catmull_clark_as_stencils_is_ring_spectrum(n):
+    engine = zoo_spectrum(catmull_clark_stencils(), n, digits=20)
+    assert engine.size == 2 * n + 1 and engine.rings == 1
+    _same_spectrum(engine, ring_spectrum(catmull_clark(), n, digits=20))
+
+
+@pytest.mark.parametrize("n", VALENCES)
+def test_loop_as_stencils_is_ring_spectrum(n):
+    engine = zoo_spectrum(loop_stencils(), n, digits=20)
+    assert engine.size == n + 1
+    _same_spectrum(engine, ring_spectrum(loop(), n, digits=20))
+
+
+def _doo_sabin_by_hand(n: int) -> np.ndarray:
+    """Doo-Sabin's matrix on the faces around the centre face, built from an explicit primal ring mesh.
+
+    The dual neighbourhood's points are the primal faces ``(s, u, v)``, ``u, v`` in ``{0, 1}``; after a
+    step, the point at the fine face ``(s, U, V)`` is the corner point of the coarse face ``(s, 0, 0)`` at
+    its corner ``(U, V)``: the corner rule over the faces around that primal vertex, counter-clockwise
+    from ``(s, 0, 0)``, each face taken by its dual point. No halfedges, no labels, no blocks.
+    """
+    mesh = ring_mesh(n, 2)
+    faces = mesh.faces
+    label = {}
+    for s in range(n):  # ring_mesh's faces run sector by sector, u then v
+        for u in range(2):
+            for v in range(2):
+                label[faces[4 * s + 2 * u + v]] = (s, u, v)
+    points = [(s, u, v) for s in range(n) for u in range(2) for v in range(2)]
+    index = {p: i for i, p in enumerate(points)}
+    S = np.zeros((4 * n, 4 * n))
+    for s in range(n):
+        home = faces[4 * s]
+        for U in range(2):
+            for V in range(2):
+                corner = home[{(0, 0): 0, (1, 0): 1, (1, 1): 2, (0, 1): 3}[(U, V)]]
+                around = _faces_around(faces, corner, home)
+                m = len(around)
+                for j, f in enumerate(around):
+                    S[index[(s, U, V)], index[label[f]]] += float(doo_sabin_weight(sp.Integer(j), sp.Integer(m)))
+    return S
+
+
+def _faces_around(faces, vertex, first):
+    """The faces at ``vertex``, counter-clockwise from ``first`` (the next face shares the edge before ``vertex``)."""
+    out = [first]
+    while True:
+        f = out[-1]
+        before = f[(f.index(vertex) - 1) % len(f)]
+        nxt = next(g for g in faces if vertex in g and g[(g.index(vertex) + 1) % len(g)] == before)
+        if nxt == first:
+            return out
+        out.append(nxt)
+
+
+@pytest.mark.parametrize("n", VALENCES)
+def test_doo_sabin_spectrum_is_the_refined_meshs(n):
+    engine = zoo_spectrum(doo_sabin_stencils(), n, digits=20)
+    values = np.linalg.eigvals(_doo_sabin_by_hand(n))
+    assert engine.size == len(values) == 4 * n
+    left = list(values)
+    for e in engine.eigenvalues:  # each value of the engine's, as often as its multiplicity, among the matrix's
+        z = complex(float(e.ball.real.mid()), float(e.ball.imag.mid()))
+        for _ in range(e.multiplicity):
+            nearest = min(range(len(left)), key=lambda i: abs(left[i] - z))
+            assert abs(left[nearest] - z) < 1e-6, (z, left[nearest])
+            left.pop(nearest)
+    assert not left
+
+
+@pytest.mark.parametrize("n", VALENCES)
+def test_doo_sabin_leading_eigenvalues_are_the_centre_faces_symbols(n):
+    """The centre face's corners map among themselves: its eigenvalues are ``sum_j w_j zeta^(jk)`` (k = 0, 1, n-1)."""
+    j = sp.Symbol("j")
+    symbol = [sp.Add(*[doo_sabin_weight(sp.Integer(i), n) * sp.exp(2 * sp.pi * sp.I * i * k / n) for i in range(n)]) for k in range(n)]
+    spectrum = zoo_spectrum(doo_sabin_stencils(), n, digits=20).eigenvalues
+    assert spectrum[0].multiplicity == 1 and is_zero(spectrum[0].exact - symbol[0])
+    assert spectrum[1].multiplicity == 2 and spectrum[1].frequencies == (1, n - 1)
+    assert is_zero(spectrum[1].exact - symbol[1]) and is_zero(spectrum[1].exact - symbol[n - 1])
+    assert spectrum[1].exact.is_Rational  # Q(cos 2 pi/n) collapses: the symbol is rational
+    assert j not in spectrum[1].exact.free_symbols
+
+
+def test_doo_sabin_matrix_rows_are_corner_rules():
+    """Each row of the engine's matrix sums to 1 (affine invariance), exactly, and the centre face's rows are the rule."""
+    zm = zoo_matrix(doo_sabin_stencils(), 5)
+    for i in range(zm.matrix.shape[0]):
+        assert is_zero(sum(zm.matrix.row(i)) - 1)
+    nb = zm.neighbourhood
+    centre = [nb.index()[v] for v in nb.order if nb.labels[v][1] == 0]
+    for i in centre:
+        row = [zm.matrix[i, c] for c in centre]
+        s = nb.labels[nb.order[i]][0]
+        for c in centre:
+            t = nb.labels[nb.order[c]][0]
+            assert is_zero(row[centre.index(c)] - doo_sabin_weight(sp.Integer((t - s) % 5), sp.Integer(5)))
+
+
+def test_blocks_rebuild_the_matrix():
+    """``B(1)`` and ``B_0``'s border say what the matrix says: the spectrum's blocks are the matrix's."""
+    zm = zoo_matrix(catmull_clark_stencils(), 5)
+    b = zoo_blocks(zm)
+    assert b.has_centre and b.class_count == 2
+    full = sp.Matrix(zm.matrix)
+    assert all(is_zero(x) for x in (full.charpoly().as_expr() - _block_charpoly(b, 5).as_expr()).as_poly(sp.Symbol("lambda")).all_coeffs())
+
+
+def _block_charpoly(b, n):
+    lam = sp.Symbol("lambda")
+    total = b.frequency_zero_matrix().charpoly(lam).as_expr()
+    for k in range(1, n):
+        total *= b.frequency_matrix(sp.exp(2 * sp.pi * sp.I * k / n)).charpoly(lam).as_expr()
+    return sp.Poly(sp.expand(total), lam)
+
+
+def test_a_rule_that_is_not_rotation_invariant_is_refused():
+    lopsided = KindRules("vertex", (Rule((Term(sp.Rational(1, 2)), Term(sp.Rational(1, 2), ("next",)))),))
+    edge = KindRules("edge", (Rule((Term(sp.Rational(1, 2)), Term(sp.Rational(1, 2), ("next",)))),))
+    scheme = StencilScheme("lopsided", "triangle", "primal", (edge, lopsided))
+    with pytest.raises(InvalidSchemeError, match=r"the \[vertex\] rule is not rotation-invariant"):
+        zoo_matrix(scheme, 5)
+
+
+def test_a_weight_in_n_is_read_at_the_anchor():
+    """Loop's vertex rule uses ``n``: at the centre it is the centre's valence, elsewhere the regular 6."""
+    zm = zoo_matrix(loop_stencils(), 5)
+    beta = (sp.Rational(5, 8) - (sp.Rational(3, 8) + sp.cos(2 * sp.pi / N) / 4) ** 2) / N
+    assert is_zero(zm.matrix[0, 0] - (1 - 5 * beta.subs(N, 5)))
+
+
+class _StubLattice(Lattice):
+    """A lattice that states no meshes and no faces."""
+
+
+STUB = _StubLattice("stub", 4, True, "none", "none", "none")
+
+
+def test_a_stub_lattice_without_ring_meshes_fails_naming_the_fact():
+    with pytest.raises(LatticeFactMissing, match="ring_mesh"):
+        neighbourhood(STUB, 5, 1)
+    scheme = StencilScheme("stub-doo-sabin", STUB, "dual", doo_sabin_stencils().kinds)  # type: ignore[arg-type]
+    with pytest.raises(LatticeFactMissing, match="ring_mesh"):
+        zoo_matrix(scheme, 5)
+
+
+def test_a_lattice_without_a_face_size_fails_naming_it():
+    nb = neighbourhood(QUAD, 4, 1, centred="face")
+    stub = nb.__class__(STUB, *[getattr(nb, f) for f in ("n", "depth", "centred", "mesh", "start", "centre", "classes", "labels", "order")])
+    with pytest.raises(LatticeFactMissing, match="regular_face_size"):
+        assert stub.regular_valence is None

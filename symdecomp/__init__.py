@@ -34,7 +34,10 @@ nothing else.
                    the one assembly of its subdivision matrix (Eq. 13-16, ``scheme``), the full
                    matrix in FLINT rationals and its characteristic polynomial (``full_matrix``),
                    rules as polynomials in the index shift (Eq. 17-23, ``shift_stencil``), a scheme of the zoo as
-                   stencils of any support on halfedge walks (``stencils``), local
+                   stencils of any support on halfedge walks (``stencils``), the zoo's engine: halfedge local
+                   meshes (``halfedge``), the neighbourhood of an extraordinary vertex or face with the orbit
+                   labelling of its points (``neighbourhood``), a stencil rule read as an exact row on a mesh
+                   (``stencil_rows``), one step per topology, primal, dual and sqrt(3) (``topology``), local
                    quad and triangle meshes and ring meshes (``mesh``), whole meshes refined by
                    the rules (Section 3, ``refinement``), K-ring matrices by exact refinement
                    (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), the rules at
@@ -66,7 +69,9 @@ nothing else.
                    nets (``characteristic``), where a 1-ring component starts on one eigenvector
                    of M_j (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
-                   (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
+                   (``ring_charpoly``), masks (``ring_masks``); any StencilScheme of the zoo: its matrix on its
+                   neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
+                   labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``); what the curvature regimes at the
                    vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``), of the patches of a

@@ -49,19 +49,19 @@ class ZooBlocks:
     #: Whether there is a fixed centre point (vertex-centred).
     has_centre: bool
     #: ``{d: A_d}``: the class-by-class blocks by sector offset ``d`` (signed).
-    offsets: dict
+    offsets: dict[int, sp.Matrix]
     #: ``w_O``: the centre's weight in the new centre (0 without a centre).
     centre: sp.Expr
     #: ``w_c'`` summed over the sectors: the weight of class ``c'`` in the new centre.
-    centre_row: tuple
+    centre_row: tuple[sp.Expr, ...]
     #: ``c_c``: the centre's weight in each new point of class ``c``.
-    centre_column: tuple
+    centre_column: tuple[sp.Expr, ...]
 
     @property
     def class_count(self) -> int:
         return len(self.centre_column)
 
-    def frequency_matrix(self, omega=OMEGA) -> sp.ImmutableMatrix:
+    def frequency_matrix(self, omega: sp.Expr = OMEGA) -> sp.ImmutableMatrix:
         """``B(omega) = sum_d A_d omega^d`` (``omega = zeta^k`` gives the block of frequency ``k``)."""
         K = self.class_count
         total = sp.zeros(K, K)
@@ -79,7 +79,7 @@ class ZooBlocks:
         return sp.ImmutableMatrix(sp.Matrix.vstack(top, bottom))
 
 
-def _same(a, b) -> bool:
+def _same(a: sp.Expr, b: sp.Expr) -> bool:
     return a == b or is_zero(a - b)
 
 

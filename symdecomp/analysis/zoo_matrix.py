@@ -26,9 +26,10 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.halfedge import halfedge_mesh
+from symdecomp.schemes.halfedge import HalfedgeMesh, halfedge_mesh
 from symdecomp.schemes.lattice import lattice as lattice_named
 from symdecomp.schemes.neighbourhood import Neighbourhood, label_points, local_faces, neighbourhood
+from symdecomp.schemes.stencil_rows import Row
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.schemes.topology import refine_step, topology_of
 from symdecomp.validate import check_int, check_type, check_valence
@@ -60,12 +61,12 @@ class ZooMatrix:
         return self.neighbourhood.depth
 
 
-def _compose(rows: dict, previous: dict | None) -> dict:
+def _compose(rows: dict[int, Row], previous: dict[int, Row] | None) -> dict[int, Row]:
     if previous is None:
         return rows
     out = {}
     for i, row in rows.items():
-        acc: dict = {}
+        acc: Row = {}
         for v, w in row.items():
             for u, x in previous[v].items():
                 acc[u] = acc.get(u, 0) + w * x
@@ -73,10 +74,11 @@ def _compose(rows: dict, previous: dict | None) -> dict:
     return out
 
 
-def _refined(scheme: StencilScheme, nb: Neighbourhood):
+def _refined(scheme: StencilScheme, nb: Neighbourhood) -> tuple[HalfedgeMesh, int, dict[int, Row]] | None:
     """``(mesh, start, rows)`` after the scheme's steps, or ``None`` when the centre is lost at this depth."""
     topology = topology_of(scheme)
-    mesh, start, rows = nb.mesh, nb.start, None
+    mesh, start = nb.mesh, nb.start
+    rows: dict[int, Row] | None = None
     for step in range(scheme.steps):
         st = refine_step(scheme, mesh, regular=nb.regular_valence)
         origin, tip = topology.track(mesh, start, step)
@@ -84,6 +86,7 @@ def _refined(scheme: StencilScheme, nb: Neighbourhood):
             return None
         rows = _compose(st.rows, rows)
         mesh, start = st.mesh, st.mesh.by_edge[(st.ids[origin], st.ids[tip])]
+    assert rows is not None  # a scheme has at least one step
     return mesh, start, rows
 
 

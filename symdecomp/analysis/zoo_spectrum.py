@@ -21,10 +21,12 @@ The Jordan structure is not decided here (``jordan`` is ``None``).
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import flint
 import sympy as sp
 
-from symdecomp.analysis.ring_spectrum import COSK, RingEigenvalue, RingSpectrum, _clusters, _exact_root, _factors, _hull, _Roots, acb_text
+from symdecomp.analysis.ring_spectrum import COSK, Factor, RingEigenvalue, RingSpectrum, _clusters, _exact_root, _factors, _hull, _Roots, acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.schemes.stencils import StencilScheme
@@ -35,9 +37,9 @@ from symdecomp.validate import check_digits
 __all__ = ["zoo_spectrum", "spectrum_of_blocks", "irrational_atoms"]
 
 
-def irrational_atoms(exprs) -> dict:
+def irrational_atoms(exprs: Iterable[sp.Expr]) -> dict[sp.Dummy, sp.Expr]:
     """``{symbol: exact value}`` for the cosines, sines and radicals in ``exprs`` (each a fresh symbol)."""
-    atoms: set = set()
+    atoms: set[sp.Expr] = set()
     for e in exprs:
         e = sp.sympify(e)
         atoms |= e.atoms(sp.cos, sp.sin)
@@ -46,7 +48,7 @@ def irrational_atoms(exprs) -> dict:
     return {sp.Dummy(f"g{i}"): a for i, a in enumerate(ordered)}
 
 
-def _generic(M: sp.Matrix, atoms: dict) -> sp.Matrix:
+def _generic(M: sp.Matrix, atoms: dict[sp.Dummy, sp.Expr]) -> sp.Matrix:
     back = {a: g for g, a in atoms.items()}
     return M.applyfunc(lambda e: sp.expand(sp.sympify(e).xreplace(back)))
 
@@ -63,29 +65,29 @@ def spectrum_of_blocks(blocks: ZooBlocks, *, digits: int = 20, exact: bool = Tru
     zero = _factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM,))
     prec = max(128, 4 * digits + 64)
     with flint.ctx.workprec(prec):
-        g_balls = [flint.acb(_arb_value(a)) for a in atoms.values()]
+        g_balls = [_arb_value(a) for a in atoms.values()]
         items = [(b, 0, i, j) for b, i, j in _Roots(zero, gens).at(tuple(g_balls))]
         roots = _Roots(other, (OMEGA, COSK, *gens))
         for k in range(1, n):
             w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
             items += [(b, k, i, j) for b, i, j in roots.at((w, w.real, *g_balls))]
-        groups = _clusters(items)
+        groups = _clusters(items)  # type: ignore[no-untyped-call]
         groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
         entries = [_entry(items, g, zero, other, n, atoms, digits, exact) for g in groups]
     size = B0.shape[0] + K * (n - 1)
     return RingSpectrum(blocks.scheme, mesh, n, depth, size, digits, tuple(entries))
 
 
-def _arb_value(value: sp.Expr):
+def _arb_value(value: sp.Expr) -> flint.acb:
     from symdecomp.algebra.compile import compile_expression
 
-    return compile_expression(value, (), "arb")()
+    return flint.acb(compile_expression(value, (), "arb")())
 
 
 _X = sp.Dummy("x")
 
 
-def _reduced(value: sp.Expr, ball) -> sp.Expr:
+def _reduced(value: sp.Expr, ball: flint.acb) -> sp.Expr:
     """``value`` as a rational or a quadratic surd when its minimal polynomial has degree 1 or 2 (the root in ``ball``)."""
     if value.is_Rational or sp.count_ops(value) > 400:
         return value
@@ -96,8 +98,10 @@ def _reduced(value: sp.Expr, ball) -> sp.Expr:
     return sp.radsimp(min(sp.roots(p, _X), key=lambda r: abs(complex(r.evalf(30)) - mid)))
 
 
-def _entry(items, group, zero, other, n, atoms, digits, exact) -> RingEigenvalue:
+def _entry(items: list[tuple[object, int, int, int]], group: list[int], zero: tuple[Factor, ...], other: tuple[Factor, ...],
+           n: int, atoms: dict[sp.Dummy, sp.Expr], digits: int, exact: bool) -> RingEigenvalue:
     b, k, i, j = items[group[0]]
+    assert isinstance(b, flint.acb)
     f = (zero if k == 0 else other)[i]
     value = None
     if exact and f.roots is not None:
@@ -105,7 +109,7 @@ def _entry(items, group, zero, other, n, atoms, digits, exact) -> RingEigenvalue
     return RingEigenvalue(
         ball=b, text=acb_text(b, digits), multiplicity=len(group), frequencies=tuple(sorted({items[x][1] for x in group})),
         exact=value, factor=f.poly.xreplace(atoms), jordan=None, members=tuple(sorted(items[x][1:] for x in group)),
-        hull=_hull([items[x][0] for x in group]),
+        hull=_hull([items[x][0] for x in group]),  # type: ignore[no-untyped-call]
     )
 
 

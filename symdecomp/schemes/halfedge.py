@@ -16,6 +16,7 @@ other direction, which has no face (``face`` is ``None``, ``next``/``prev`` are 
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from symdecomp.errors import InvalidMeshError
@@ -40,16 +41,16 @@ class HalfedgeMesh:
     #: The opposite halfedge.
     twin: tuple[int, ...]
     #: The halfedge of each directed edge ``(origin, tip)``.
-    by_edge: dict
+    by_edge: dict[tuple[int, int], int]
     #: The halfedges of each face, from its first corner.
     face_halfedges: tuple[tuple[int, ...], ...]
     #: The smallest outgoing halfedge of each vertex.
-    first_out: dict
+    first_out: dict[int, int]
 
     def halfedge(self, a: int, b: int) -> int:
         """The halfedge from ``a`` to ``b``."""
         try:
-            return self.by_edge[(a, b)]
+            return int(self.by_edge[(a, b)])
         except KeyError:
             raise InvalidMeshError(f"the mesh has no edge from {a} to {b}") from None
 
@@ -67,7 +68,7 @@ class HalfedgeMesh:
             return None
         return self.next[h] if move == "next" else self.prev[h]
 
-    def walk(self, h: int | None, moves) -> int | None:
+    def walk(self, h: int | None, moves: Iterable[str]) -> int | None:
         """The halfedge a walk from ``h`` ends on (``None`` if it leaves the mesh)."""
         for m in moves:
             h = self.move(h, m)
@@ -118,16 +119,16 @@ class HalfedgeMesh:
         return hs[i:] + hs[:i]
 
 
-def halfedge_mesh(faces) -> HalfedgeMesh:
+def halfedge_mesh(faces: Iterable[Iterable[int]]) -> HalfedgeMesh:
     """The halfedges of ``faces`` (vertex-id tuples, counter-clockwise, consistently oriented)."""
-    faces = tuple(tuple(int(v) for v in f) for f in faces)
+    polygons: tuple[tuple[int, ...], ...] = tuple(tuple(int(v) for v in f) for f in faces)
     origin: list[int] = []
     face: list[int | None] = []
     nxt: list[int] = []
     prv: list[int] = []
     by_edge: dict[tuple[int, int], int] = {}
     per_face = []
-    for fi, f in enumerate(faces):
+    for fi, f in enumerate(polygons):
         if len(f) < 3 or len(set(f)) != len(f):
             raise InvalidMeshError(f"face {f} needs at least three distinct vertices")
         base = len(origin)
@@ -155,4 +156,4 @@ def halfedge_mesh(faces) -> HalfedgeMesh:
     first: dict[int, int] = {}
     for h, v in enumerate(origin):
         first.setdefault(v, h)
-    return HalfedgeMesh(faces, tuple(origin), tuple(face), tuple(nxt), tuple(prv), tuple(twin), by_edge, tuple(per_face), first)
+    return HalfedgeMesh(polygons, tuple(origin), tuple(face), tuple(nxt), tuple(prv), tuple(twin), by_edge, tuple(per_face), first)

@@ -29,10 +29,12 @@ the same function labels a refined mesh from the tracked start halfedge
 from __future__ import annotations
 
 from collections import deque
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.halfedge import HalfedgeMesh, halfedge_mesh
+from symdecomp.schemes.lattice import Lattice
 from symdecomp.validate import check_int, check_valence
 
 __all__ = ["CENTRES", "Neighbourhood", "neighbourhood", "label_points", "local_faces", "dual_faces"]
@@ -46,7 +48,7 @@ class Neighbourhood:
     """The local mesh around an extraordinary element, with the orbit labelling of its points."""
 
     #: The lattice (:class:`~symdecomp.schemes.lattice.Lattice`) of the scheme.
-    lattice: object
+    lattice: Lattice
     #: The valence of the centre vertex, or the number of sides of the centre face.
     n: int
     #: The ring depth.
@@ -62,16 +64,16 @@ class Neighbourhood:
     #: Each class's representative as the walk (moves) from the start halfedge that reaches it first.
     classes: tuple[tuple[str, ...], ...]
     #: Vertex id -> ``(s, c)``: rotation ``s`` of class ``c``'s representative.
-    labels: dict
+    labels: dict[int, tuple[int, int]]
     #: The vertex ids in matrix order: the centre (if any), then class by class, ``s = 0..n-1``.
     order: tuple[int, ...]
 
     @property
     def regular_valence(self) -> int:
         """The valence of a regular vertex of this mesh (of the lattice; its dual's: the lattice's face size)."""
-        return self.lattice.regular_valence if self.centred == "vertex" else self.lattice.regular_face_size
+        return int(self.lattice.regular_valence if self.centred == "vertex" else self.lattice.regular_face_size)
 
-    def index(self) -> dict:
+    def index(self) -> dict[int, int]:
         """Vertex id -> row of the subdivision matrix."""
         return {v: i for i, v in enumerate(self.order)}
 
@@ -80,17 +82,17 @@ class Neighbourhood:
         return _rotation(self.mesh, self.centred)(h)
 
 
-def _rotation(mesh: HalfedgeMesh, centred: str):
+def _rotation(mesh: HalfedgeMesh, centred: str) -> Callable[[int], int]:
     if centred == "vertex":
         return lambda h: mesh.twin[mesh.prev[h]]
     return lambda h: mesh.next[h]
 
 
-def _first_words(mesh: HalfedgeMesh, start: int) -> dict:
+def _first_words(mesh: HalfedgeMesh, start: int) -> dict[int, tuple[str, ...]]:
     """Vertex -> the first walk from ``start`` (breadth first, moves ``next`` before ``twin``) that reaches it."""
-    words = {mesh.origin[start]: ()}
+    words: dict[int, tuple[str, ...]] = {mesh.origin[start]: ()}
     seen = {start}
-    queue = deque([(start, ())])
+    queue: deque[tuple[int, tuple[str, ...]]] = deque([(start, ())])
     while queue:
         h, word = queue.popleft()
         for move in ("next", "twin"):
@@ -104,7 +106,8 @@ def _first_words(mesh: HalfedgeMesh, start: int) -> dict:
     return words
 
 
-def label_points(mesh: HalfedgeMesh, start: int, n: int, centred: str):
+def label_points(mesh: HalfedgeMesh, start: int, n: int, centred: str) -> tuple[
+        int | None, tuple[tuple[str, ...], ...], dict[int, tuple[int, int]], tuple[int, ...]]:
     """``(centre, classes, labels, order)``: the orbit labelling of ``mesh`` from ``start`` under the rotation by one sector.
 
     :class:`InvalidMeshError` if the mesh does not have that symmetry.
@@ -141,12 +144,12 @@ def local_faces(mesh: HalfedgeMesh, start: int, depth: int, centred: str) -> tup
         ring = mesh.ring(start)
         if ring is None:
             raise InvalidMeshError("the centre vertex is on the boundary of the mesh")
-        chosen = {mesh.face[h] for h in ring}
+        chosen = {_face(mesh, h) for h in ring}
         expansions = depth - 1
     else:
-        chosen = {mesh.face[start]}
+        chosen = {_face(mesh, start)}
         expansions = depth
-    incident: dict[int, set] = {}
+    incident: dict[int, set[int]] = {}
     for fi, f in enumerate(mesh.faces):
         for v in f:
             incident.setdefault(v, set()).add(fi)
@@ -155,28 +158,37 @@ def local_faces(mesh: HalfedgeMesh, start: int, depth: int, centred: str) -> tup
     return tuple(sorted(chosen))
 
 
+def _face(mesh: HalfedgeMesh, h: int) -> int:
+    """The face of a halfedge that has one."""
+    f = mesh.face[h]
+    if f is None:
+        raise InvalidMeshError("a boundary halfedge has no face")
+    return f
+
+
 def dual_faces(mesh: HalfedgeMesh) -> tuple[tuple[int, ...], ...]:
     """The faces of the dual mesh (one per interior vertex, its faces counter-clockwise); vertex ids are face indices."""
     out = []
     for v in mesh.vertices():
         ring = mesh.outgoing(v)
         if ring is not None:
-            out.append(tuple(mesh.face[h] for h in ring))
+            out.append(tuple(_face(mesh, h) for h in ring))
     return tuple(out)
 
 
-def _centre_mesh(lattice, n: int, depth: int, centred: str) -> tuple[HalfedgeMesh, int]:
+def _centre_mesh(lattice: Lattice, n: int, depth: int, centred: str) -> tuple[HalfedgeMesh, int]:
     """The local mesh and the start halfedge (at the centre vertex 0 of the lattice's ring mesh, or its dual face)."""
     if centred == "vertex":
         primal = halfedge_mesh(lattice.ring_mesh(n, depth).faces)
         return primal, primal.first_out[0]
     primal = halfedge_mesh(lattice.ring_mesh(n, depth + 1).faces)
-    ring = primal.outgoing(0)
+    ring = primal.ring(primal.first_out[0])
+    assert ring is not None  # the centre of a ring mesh is interior
     dual = halfedge_mesh(dual_faces(primal))
-    return dual, dual.halfedge(primal.face[ring[0]], primal.face[ring[1]])
+    return dual, dual.halfedge(_face(primal, ring[0]), _face(primal, ring[1]))
 
 
-def neighbourhood(lattice, n: int, depth: int, *, centred: str = "vertex") -> Neighbourhood:
+def neighbourhood(lattice: Lattice, n: int, depth: int, *, centred: str = "vertex") -> Neighbourhood:
     """The neighbourhood of depth ``depth`` of a valence-``n`` vertex (or, ``centred="face"``, an ``n``-sided face) on ``lattice``."""
     n = check_valence(n)
     depth = check_int(depth, "depth", minimum=1, error=InvalidMeshError)

@@ -29,10 +29,12 @@ from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.halfedge import HalfedgeMesh
 from symdecomp.schemes.stencils import J, KindRules, M, N, Rule, Term
 
-__all__ = ["Row", "is_zero", "same_row", "kind_row", "point_key"]
+__all__ = ["Row", "PointKey", "is_zero", "same_row", "kind_row", "point_key"]
 
 #: A new point as weights on old vertex ids.
-Row = dict
+Row = dict[int, sp.Expr]
+#: A new point's key: its kind and the vertex, edge (smaller halfedge), face or corner (halfedge) it belongs to.
+PointKey = tuple[str, int]
 
 _X = sp.Dummy("x")
 
@@ -41,14 +43,15 @@ class _Unknown(Exception):
     """The stencil needs what the local mesh does not show (a point beyond it, the valence of a boundary vertex)."""
 
 
-def is_zero(e) -> bool:
+def is_zero(e: sp.Expr | int) -> bool:
     """Whether an exact algebraic number is zero (its minimal polynomial is ``x``; a clear nonzero value is decided numerically first)."""
     e = sp.sympify(e)
+    assert isinstance(e, sp.Expr)
     if e.is_Rational:
-        return e == 0
+        return bool(e == 0)
     if abs(complex(e.evalf(30))) > 1e-20:
         return False
-    return sp.minimal_polynomial(e, _X) == _X
+    return bool(sp.minimal_polynomial(e, _X) == _X)
 
 
 def same_row(a: Row, b: Row) -> bool:
@@ -56,16 +59,17 @@ def same_row(a: Row, b: Row) -> bool:
     return all(is_zero(a.get(v, 0) - b.get(v, 0)) for v in set(a) | set(b))
 
 
-def point_key(mesh: HalfedgeMesh, kind: str, h: int):
+def point_key(mesh: HalfedgeMesh, kind: str, h: int) -> PointKey:
     """The key of the new point of ``kind`` at halfedge ``h``: its origin, its edge, its face or its corner."""
     if kind == "vertex":
         return ("vertex", mesh.origin[h])
     if kind == "edge":
         return ("edge", min(h, mesh.twin[h]))
     if kind == "face":
-        if mesh.face[h] is None:
+        f = mesh.face[h]
+        if f is None:
             raise _Unknown
-        return ("face", mesh.face[h])
+        return ("face", f)
     return ("corner", h)
 
 
@@ -78,9 +82,10 @@ def _weight(term: Term, mesh: HalfedgeMesh, h: int, j: int) -> sp.Expr:
             raise _Unknown
         at[N] = sp.Integer(n)
     if M in symbols:
-        if mesh.face[h] is None:
+        f = mesh.face[h]
+        if f is None:
             raise _Unknown
-        at[M] = sp.Integer(mesh.face_size(mesh.face[h]))
+        at[M] = sp.Integer(mesh.face_size(f))
     w = sp.sympify(term.weight.xreplace(at).doit())
     if w.free_symbols:
         raise InvalidSchemeError(f"a weight uses parameter {sorted(map(str, w.free_symbols))[0]!r}, which has no value")
@@ -96,7 +101,7 @@ def _family(mesh: HalfedgeMesh, h: int, over: str) -> tuple[int, ...]:
     return family
 
 
-def _rule_row(mesh: HalfedgeMesh, h: int, rule: Rule, made: dict) -> Row:
+def _rule_row(mesh: HalfedgeMesh, h: int, rule: Rule, made: dict[PointKey, Row]) -> Row:
     row: Row = {}
     for term in rule.terms:
         for j, hj in enumerate(_family(mesh, h, term.over)):
@@ -122,13 +127,13 @@ def _select(rules: KindRules, mesh: HalfedgeMesh, h: int, regular: int) -> Rule 
         conditions = (rule.origin, rule.tip)
         if any(c != "any" and v is None for c, v in zip(conditions, valences)):
             raise _Unknown
-        known = tuple(v if c != "any" else regular for c, v in zip(conditions, valences))
+        known = [v if c != "any" and v is not None else regular for c, v in zip(conditions, valences)]
         if rule.applies(known[0], known[1], regular=regular):
             return rule
     return None
 
 
-def _anchors(mesh: HalfedgeMesh, key) -> tuple[int, ...]:
+def _anchors(mesh: HalfedgeMesh, key: PointKey) -> tuple[int, ...]:
     kind, x = key
     if kind == "vertex":
         ring = mesh.outgoing(x)
@@ -151,7 +156,7 @@ def _clean(row: Row) -> Row:
     return out
 
 
-def kind_row(mesh: HalfedgeMesh, rules: KindRules, key, made: dict, *, regular: int) -> Row | None:
+def kind_row(mesh: HalfedgeMesh, rules: KindRules, key: PointKey, made: dict[PointKey, Row], *, regular: int) -> Row | None:
     """The row of the new point ``key`` (``(kind, vertex | halfedge | face)``) by ``rules``; ``None`` if not computable.
 
     ``made`` holds the rows of the new points made earlier in the step (by key); ``regular`` is the

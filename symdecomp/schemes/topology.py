@@ -19,11 +19,12 @@ mesh that continues a halfedge at the centre, so that the new mesh is labelled f
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.halfedge import HalfedgeMesh, halfedge_mesh
-from symdecomp.schemes.stencil_rows import Row, kind_row, point_key
+from symdecomp.schemes.stencil_rows import PointKey, Row, kind_row, point_key
 from symdecomp.schemes.stencils import StencilScheme
 
 __all__ = ["Topology", "TOPOLOGIES", "topology_of", "RefinedStep", "refine_step"]
@@ -36,12 +37,12 @@ class RefinedStep:
     #: The new mesh (vertex ids ``0..``).
     mesh: HalfedgeMesh
     #: New vertex id -> row on the old vertex ids.
-    rows: dict
+    rows: dict[int, Row]
     #: Point key (``(kind, x)``) -> new vertex id.
-    ids: dict
+    ids: dict[PointKey, int]
 
 
-def _new_faces_primal(mesh: HalfedgeMesh, with_face_points: bool):
+def _new_faces_primal(mesh: HalfedgeMesh, with_face_points: bool) -> Iterator[tuple[PointKey, ...]]:
     for f, hs in enumerate(mesh.face_halfedges):
         if with_face_points:
             for h in hs:
@@ -54,7 +55,7 @@ def _new_faces_primal(mesh: HalfedgeMesh, with_face_points: bool):
         yield tuple(point_key(mesh, "edge", h) for h in hs)
 
 
-def _new_faces_dual(mesh: HalfedgeMesh):
+def _new_faces_dual(mesh: HalfedgeMesh) -> Iterator[tuple[PointKey, ...]]:
     for hs in mesh.face_halfedges:
         yield tuple(("corner", h) for h in hs)
     for h, t in enumerate(mesh.twin):
@@ -66,7 +67,7 @@ def _new_faces_dual(mesh: HalfedgeMesh):
             yield tuple(("corner", h) for h in ring)
 
 
-def _new_faces_sqrt3(mesh: HalfedgeMesh):
+def _new_faces_sqrt3(mesh: HalfedgeMesh) -> Iterator[tuple[PointKey, ...]]:
     for h, t in enumerate(mesh.twin):
         f, g = mesh.face[h], mesh.face[t]
         if h < t and f is not None and g is not None:
@@ -96,13 +97,13 @@ class Topology:
                 raise InvalidSchemeError(f"a primal scheme needs [{k}] rules")
         return tuple(k for k in wanted if k in kinds)
 
-    def new_faces(self, mesh: HalfedgeMesh, scheme: StencilScheme):
+    def new_faces(self, mesh: HalfedgeMesh, scheme: StencilScheme) -> Iterator[tuple[PointKey, ...]]:
         """The new faces as tuples of point keys, counter-clockwise."""
         if self.name == "primal":
             return _new_faces_primal(mesh, "face" in self.point_kinds(scheme))
         return _new_faces_dual(mesh) if self.name == "dual" else _new_faces_sqrt3(mesh)
 
-    def track(self, mesh: HalfedgeMesh, h: int, parity: int):
+    def track(self, mesh: HalfedgeMesh, h: int, parity: int) -> tuple[PointKey, PointKey]:
         """``(origin key, tip key)`` of the new halfedge that continues ``h`` (a halfedge at the centre) after a step.
 
         The sqrt(3) step turns by half a sector; its track alternates sides so that two steps
@@ -112,8 +113,7 @@ class Topology:
             return ("vertex", mesh.origin[h]), point_key(mesh, "edge", h)
         if self.name == "dual":
             return ("corner", h), ("corner", mesh.next[h])
-        face = mesh.face[h] if parity == 0 else mesh.face[mesh.twin[h]]
-        return ("vertex", mesh.origin[h]), ("face", face)
+        return ("vertex", mesh.origin[h]), point_key(mesh, "face", h if parity == 0 else mesh.twin[h])
 
 
 #: The topologies, by name.
@@ -127,7 +127,7 @@ def topology_of(scheme: StencilScheme) -> Topology:
     return TOPOLOGIES[scheme.topology]
 
 
-def _keys_of(mesh: HalfedgeMesh, kind: str):
+def _keys_of(mesh: HalfedgeMesh, kind: str) -> list[PointKey]:
     if kind == "vertex":
         return [("vertex", v) for v in mesh.vertices()]
     if kind == "face":
@@ -140,14 +140,14 @@ def _keys_of(mesh: HalfedgeMesh, kind: str):
 def refine_step(scheme: StencilScheme, mesh: HalfedgeMesh, *, regular: int) -> RefinedStep:
     """One step of ``scheme`` on ``mesh``: every computable new point's exact row, and the new faces among them."""
     topology = topology_of(scheme)
-    made: dict = {}
+    made: dict[PointKey, Row] = {}
     for rules in scheme.kinds:
         for key in _keys_of(mesh, rules.kind):
             row = kind_row(mesh, rules, key, made, regular=regular)
             if row is not None:
                 made[key] = row
     kinds = topology.point_kinds(scheme)
-    ids: dict = {}
+    ids: dict[PointKey, int] = {}
     for key in made:
         if key[0] in kinds:
             ids[key] = len(ids)

@@ -43,3 +43,15 @@ def doo_sabin_stencils() -> StencilScheme:
     """Doo-Sabin: one new point per face corner, weights over the face's corners."""
     corner = KindRules("corner", (Rule((Term(doo_sabin_weight(J, M), over="face"),)),))
     return StencilScheme("doo-sabin", "quad", "dual", (corner,))
+
+
+def sqrt3_alpha(n):
+    """Kobbelt's vertex weight ``alpha_n = (4 - 2 cos(2 pi/n))/9``."""
+    return (4 - 2 * sp.cos(2 * sp.pi / n)) / 9
+
+
+def sqrt3_stencils() -> StencilScheme:
+    """Kobbelt's sqrt(3): face points the centroid, vertex points ``(1 - alpha_n) v + alpha_n/n sum a_j``; two steps."""
+    face = KindRules("face", (Rule((Term(1 / M, over="face"),)),))
+    vertex = KindRules("vertex", (Rule((Term(1 - sqrt3_alpha(N)), Term(sqrt3_alpha(N) / N, ("next",), over="ring"))),))
+    return StencilScheme("sqrt3", "triangle", "sqrt3", (face, vertex), steps=2)

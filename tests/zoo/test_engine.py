@@ -20,8 +20,15 @@ from symdecomp.schemes.mesh import ring_mesh
 from symdecomp.schemes.neighbourhood import neighbourhood
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.stencil_rows import is_zero
-from symdecomp.schemes.stencils import KindRules, N, Rule, StencilScheme, Term
-from tests.zoo.engine_schemes import catmull_clark_stencils, doo_sabin_stencils, doo_sabin_weight, loop_stencils
+from symdecomp.schemes.stencils import KindRules, M, N, Rule, StencilScheme, Term
+from tests.zoo.engine_schemes import (
+    catmull_clark_stencils,
+    doo_sabin_stencils,
+    doo_sabin_weight,
+    loop_stencils,
+    sqrt3_alpha,
+    sqrt3_stencils,
+)
 
 VALENCES = range(3, 9)
 
@@ -134,21 +141,58 @@ def test_doo_sabin_matrix_rows_are_corner_rules():
             assert is_zero(row[centre.index(c)] - doo_sabin_weight(sp.Integer((t - s) % 5), sp.Integer(5)))
 
 
-def test_blocks_rebuild_the_matrix():
-    """``B(1)`` and ``B_0``'s border say what the matrix says: the spectrum's blocks are the matrix's."""
-    zm = zoo_matrix(catmull_clark_stencils(), 5)
-    b = zoo_blocks(zm)
-    assert b.has_centre and b.class_count == 2
-    full = sp.Matrix(zm.matrix)
-    assert all(is_zero(x) for x in (full.charpoly().as_expr() - _block_charpoly(b, 5).as_expr()).as_poly(sp.Symbol("lambda")).all_coeffs())
+def _sqrt3_two_steps_by_hand(n: int) -> np.ndarray:
+    """sqrt(3) twice on the 1-ring ``(v, a_0..a_(n-1))``, written out: ``f_j = (v + a_j + a_(j+1))/3`` and the vertex
+    rule, then ``g_j = (v' + f_(j-1) + f_j)/3`` (the triangle over ray ``j``: the lattice is back) and the vertex rule."""
+    alpha = float(sqrt3_alpha(sp.Integer(n)))
+    step1 = np.zeros((n + 1, n + 1))  # rows: v', f_0..f_(n-1)
+    step1[0, 0], step1[0, 1:] = 1 - alpha, alpha / n
+    for j in range(n):
+        step1[1 + j, [0, 1 + j, 1 + (j + 1) % n]] += 1 / 3
+    step2 = np.zeros((n + 1, n + 1))  # rows: v'', g_0..g_(n-1) on (v', f_0..)
+    step2[0, 0], step2[0, 1:] = 1 - alpha, alpha / n
+    for j in range(n):
+        step2[1 + j, [0, 1 + (j - 1) % n, 1 + j]] += 1 / 3
+    return step2 @ step1
 
 
-def _block_charpoly(b, n):
-    lam = sp.Symbol("lambda")
-    total = b.frequency_zero_matrix().charpoly(lam).as_expr()
-    for k in range(1, n):
-        total *= b.frequency_matrix(sp.exp(2 * sp.pi * sp.I * k / n)).charpoly(lam).as_expr()
-    return sp.Poly(sp.expand(total), lam)
+@pytest.mark.parametrize("n", VALENCES)
+def test_sqrt3_is_analysed_over_two_steps(n):
+    engine = zoo_spectrum(sqrt3_stencils(), n, digits=20)
+    assert sqrt3_stencils().steps == 2 and engine.size == n + 1
+    left = list(np.linalg.eigvals(_sqrt3_two_steps_by_hand(n)))
+    for e in engine.eigenvalues:
+        z = complex(float(e.ball.real.mid()), float(e.ball.imag.mid()))
+        for _ in range(e.multiplicity):
+            nearest = min(range(len(left)), key=lambda i: abs(left[i] - z))
+            assert abs(left[nearest] - z) < 1e-9
+            left.pop(nearest)
+    # the subdominant value, from the face rule's weight (1/3 per corner): |(1 + zeta)/3|^2, exactly
+    w = sqrt3_stencils().rules_of("face").rules[0].terms[0].weight.subs(M, 3)
+    zeta = sp.exp(2 * sp.pi * sp.I / n)
+    assert engine.eigenvalues[1].frequencies == (1, n - 1)
+    assert is_zero(engine.eigenvalues[1].exact - sp.expand(w**2 * (1 + zeta) * (1 + 1 / zeta)))
+
+
+@pytest.mark.parametrize("make", [catmull_clark_stencils, doo_sabin_stencils])
+def test_fourier_vectors_are_mapped_by_the_blocks(make):
+    """``S x = zeta^(sk) B_k y`` for ``x_(s, c) = zeta^(sk) y_c`` (exact, ``n = 4``: ``zeta = i``): the blocks are the matrix's."""
+    n = 4
+    zm = zoo_matrix(make(), n)
+    b, nb = zoo_blocks(zm), zm.neighbourhood
+    index = nb.index()
+    for k in range(n):
+        B = b.frequency_matrix(sp.I**k)
+        for c in range(b.class_count):
+            x = sp.zeros(len(nb.order), 1)
+            for v, (s, e) in nb.labels.items():
+                x[index[v]] = sp.I ** (s * k) if e == c else 0
+            y = zm.matrix * x
+            for v, (s, e) in nb.labels.items():
+                expected = sp.I ** (s * k) * B[e, c]
+                assert sp.expand(y[index[v]] - expected) == 0
+            if k == 0 and nb.centre is not None:
+                assert sp.expand(y[index[nb.centre]] - b.frequency_zero_matrix()[0, 1 + c]) == 0
 
 
 def test_a_rule_that_is_not_rotation_invariant_is_refused():

@@ -71,8 +71,8 @@ nothing else.
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
                    (``ring_charpoly``), masks (``ring_masks``); any StencilScheme of the zoo: its matrix on its
                    neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
-                   labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``); what the curvature regimes at the
-                   vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
+                   labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``), limit and tangent masks
+                   (``zoo_masks``); what the curvature regimes at the vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``), of the patches of a
                    boundary or corner vertex (``sharp_evaluation``); the
@@ -92,7 +92,8 @@ nothing else.
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
-                   ``ring_certify``, the O(n) route ``structural``), their results and
+                   ``ring_certify``, the O(n) route ``structural``; of a StencilScheme of the zoo,
+                   ``zoo_certify``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
                    boundary, crease and corner vertices' ``oracle_sharp``,
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and

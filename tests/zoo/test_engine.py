@@ -230,3 +230,63 @@ def test_a_lattice_without_a_face_size_fails_naming_it():
     stub = nb.__class__(STUB, *[getattr(nb, f) for f in ("n", "depth", "centred", "mesh", "start", "centre", "classes", "labels", "order")])
     with pytest.raises(LatticeFactMissing, match="regular_face_size"):
         assert stub.regular_valence is None
+
+
+@pytest.mark.parametrize("make", [catmull_clark_stencils, loop_stencils, doo_sabin_stencils, sqrt3_stencils])
+@pytest.mark.parametrize("n", [4, 5])
+def test_certificates_agree(make, n):
+    from symdecomp.verify.result import CrossCheckStatus
+    from symdecomp.verify.zoo_certify import certify_zoo
+
+    c = certify_zoo(make(), n)
+    assert c.status == CrossCheckStatus.AGREE and c.multiplicities_certified
+    rational = all(x.is_Rational for x in zoo_matrix(make(), n).matrix)
+    assert c.route == ("charpoly" if rational else "structural")
+
+
+def test_the_charpoly_route_refutes_a_matrix_that_is_not_the_blocks():
+    """One weight moved (the row still sums to 1): chi_S's roots leave the blocks' balls."""
+    from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
+    from symdecomp.verify.result import CrossCheckStatus
+    from symdecomp.verify.zoo_certify import _charpoly_verdict
+
+    zm = zoo_matrix(catmull_clark_stencils(), 4)
+    spectrum = spectrum_of_blocks(zoo_blocks(zm), digits=20, exact=False)
+    S = sp.Matrix(zm.matrix)
+    S[0, 0] -= sp.Rational(1, 8)
+    S[0, 1] += sp.Rational(1, 8)
+    status, message, _, _ = _charpoly_verdict(S, spectrum, 192)
+    assert status == CrossCheckStatus.DISAGREE and "no block gives" in message
+
+
+@pytest.mark.parametrize("make", [catmull_clark_stencils, loop_stencils, doo_sabin_stencils, sqrt3_stencils])
+def test_masks_are_left_eigenvectors_of_the_full_matrix(make):
+    """``l S = l`` for the position mask (weights summing to 1) and ``t S = lambda_1 t`` for both tangent masks."""
+    from symdecomp.analysis.zoo_masks import zoo_masks
+
+    n = 5
+    zm = zoo_matrix(make(), n)
+    masks = zoo_masks(make(), n, digits=25)
+    nb = zm.neighbourhood
+    S = np.array([[float(x) for x in zm.matrix.row(i)] for i in range(zm.matrix.shape[0])])
+
+    def vector(mask):
+        return np.array([float(mask["O"]) if v == nb.centre else float(mask["classes"][str(nb.labels[v][1])][nb.labels[v][0]])
+                         for v in nb.order])
+
+    position = vector(masks["position"])
+    assert abs(position.sum() - 1) < 1e-12 and np.abs(position @ S - position).max() < 1e-12
+    lam1 = float(masks["subdominant"])
+    for t in masks["tangents"]:
+        tangent = vector(t)
+        assert np.abs(tangent).max() > 0.5 and np.abs(tangent @ S - lam1 * tangent).max() < 1e-12
+
+
+def test_masks_of_catmull_clark_as_stencils_are_ring_masks():
+    from symdecomp.analysis.ring_masks import ring_masks
+    from symdecomp.analysis.zoo_masks import zoo_masks
+
+    ours, theirs = zoo_masks(catmull_clark_stencils(), 7, digits=15), ring_masks(catmull_clark(), 7, digits=15)
+    assert ours["subdominant"] == theirs["subdominant"]
+    for a, b in zip([ours["position"], *ours["tangents"]], [theirs["position"], *theirs["tangents"]]):
+        assert a["O"] == b["O"] and a["classes"]["0"] == b["a"] and a["classes"]["1"] == b["b"]

@@ -153,7 +153,8 @@ nothing else.
                    ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
-                   (``sharp``), the one shape of every command's JSON output and its JSON Schema
+                   (``sharp``), the commands spectrum, masks and check for a scheme of the zoo (``zoo``),
+                   the one shape of every command's JSON output and its JSON Schema
                    (``json_envelope``), the one progress display of long commands (``progress``), the
                    option --plot FILE of the commands that draw (``plot_file``)
 ``__main__``       python -m symdecomp: the command line

@@ -15,6 +15,7 @@ from symdecomp.cli.common import (
     flag,
     general_path,
     given,
+    is_stencil_scheme,
     print_json,
     progress,
     refuse_together,
@@ -289,6 +290,10 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
     from symdecomp.verify.result import CrossCheckStatus
 
     plot = check_plot(args)
+    if is_stencil_scheme(args.scheme):
+        from symdecomp.cli.zoo import run_zoo_check
+
+        return run_zoo_check(args)
     if args.sectors is not None or sharp_given(args):
         if args.sectors is None:
             raise InvalidInputError("--n: valences of interior vertices; give the faces of a boundary, crease, corner or "

@@ -89,7 +89,7 @@ _X = sp.Dummy("x")
 
 def _reduced(value: sp.Expr, ball: flint.acb) -> sp.Expr:
     """``value`` as a rational or a quadratic surd when its minimal polynomial has degree 1 or 2 (the root in ``ball``)."""
-    if value.is_Rational or sp.count_ops(value) > 400:
+    if value.is_Rational or sp.count_ops(value) > 80:
         return value
     p = sp.Poly(sp.minimal_polynomial(value, _X), _X)
     if p.degree() > 2:

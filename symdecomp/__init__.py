@@ -210,6 +210,9 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),
+    "symdecomp.analysis.zoo_masks": ("zoo_masks",),
+    "symdecomp.analysis.zoo_matrix": ("ZooMatrix", "zoo_matrix"),
+    "symdecomp.analysis.zoo_spectrum": ("zoo_spectrum",),
     "symdecomp.claims": ("CheckResult", "Claim", "Status", "Step", "all_claims", "check_claim", "get_claim"),
     "symdecomp.output.display": ("aslatex", "ashtml", "notebook_latex"),
     "symdecomp.schemes.full_matrix": ("characteristic_polynomial", "exact_subdivision_matrix"),
@@ -219,6 +222,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.schemes.meshfile": ("PolygonMesh", "scheme_for_mesh"),
     "symdecomp.schemes.meshformats": ("decode_mesh", "encode_mesh", "read_mesh"),
     "symdecomp.schemes.mesh_tags": ("MeshDefects", "MeshTags"),
+    "symdecomp.schemes.neighbourhood": ("Neighbourhood", "neighbourhood"),
     "symdecomp.schemes.patch": ("patch_matrices",),
     "symdecomp.schemes.refinement": ("central_rings", "mesh_rules", "refine"),
     "symdecomp.schemes.rings": ("RingMatrix", "ring_subdivision_matrix"),
@@ -234,6 +238,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.verify.ring_certify": ("certify_ring",),
     "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
     "symdecomp.verify.sharp_certify": ("SharpCertificate", "certify_sharp"),
+    "symdecomp.verify.zoo_certify": ("certify_zoo",),
     "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),
 }
 

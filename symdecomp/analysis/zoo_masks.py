@@ -64,6 +64,7 @@ def zoo_masks(scheme: StencilScheme, n: int, depth: int | None = None, *, digits
     """
     digits = check_digits(digits)
     zm = zoo_matrix(scheme, n, depth)
+    n = zm.n  # checked: an int
     blocks = zoo_blocks(zm)
     spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=zm.depth, mesh=scheme.lattice)
     first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]

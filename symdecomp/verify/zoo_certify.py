@@ -84,6 +84,7 @@ def certify_zoo(scheme: StencilScheme, n: int, depth: int | None = None, *, digi
     """Prove (or refute) that the frequency blocks give the spectrum of ``scheme``'s full matrix at valence ``n``."""
     digits = check_digits(digits)
     zm = zoo_matrix(scheme, n, depth)
+    n = zm.n  # checked: an int
     blocks = zoo_blocks(zm)  # raises if the matrix is not block circulant (exact, entry by entry)
     spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=zm.depth, mesh=scheme.lattice)
     multiplicities = tuple(e.multiplicity for e in spectrum.eigenvalues)

@@ -88,9 +88,10 @@ _X = sp.Dummy("x")
 
 
 def _reduced(value: sp.Expr, ball: flint.acb) -> sp.Expr:
-    """``value`` as a rational or a quadratic surd when its minimal polynomial has degree 1 or 2 (the root in ``ball``)."""
-    if value.is_Rational or sp.count_ops(value) > 80:
-        return value
+    """A complex form of a real value (``exp(i ...)`` terms) as a rational or a quadratic surd when its minimal polynomial
+    has degree 1 or 2 (the root nearest ``ball``: the two roots of a quadratic are apart)."""
+    if value.is_Rational or not value.has(sp.I) or sp.count_ops(value) > 80:
+        return value  # real forms (cosines, radicals) are kept as they are; minimal polynomials of large ones cost minutes
     p = sp.Poly(sp.minimal_polynomial(value, _X), _X)
     if p.degree() > 2:
         return value

@@ -26,6 +26,7 @@ from collections.abc import Iterable
 import flint
 import sympy as sp
 
+from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.ring_spectrum import COSK, Factor, RingEigenvalue, RingSpectrum, _clusters, _exact_root, _factors, _hull, _Roots, acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
@@ -88,9 +89,17 @@ _X = sp.Dummy("x")
 
 
 def _reduced(value: sp.Expr, ball: flint.acb) -> sp.Expr:
-    """A complex form of a real value (``exp(i ...)`` terms) as a rational or a quadratic surd when its minimal polynomial
-    has degree 1 or 2 (the root nearest ``ball``: the two roots of a quadratic are apart)."""
-    if value.is_Rational or not value.has(sp.I) or sp.count_ops(value) > 80:
+    """``value`` as a rational when it is one (exactly, in a cyclotomic field); a complex form of a real value (``exp(i
+    ...)`` terms) as a quadratic surd when its minimal polynomial has degree 2 (the root nearest ``ball``: they are apart)."""
+    if value.is_Rational:
+        return value
+    try:
+        x = cyclotomic_value(value)  # exact in Q(zeta_N) (no radicals): rational when its reduced polynomial is constant
+    except ValueError:
+        x = None
+    if x is not None and x.poly.degree() <= 0:
+        return sp.Rational(int(x.poly[0].p), int(x.poly[0].q))
+    if not value.has(sp.I) or sp.count_ops(value) > 80:
         return value  # real forms (cosines, radicals) are kept as they are; minimal polynomials of large ones cost minutes
     p = sp.Poly(sp.minimal_polynomial(value, _X), _X)
     if p.degree() > 2:

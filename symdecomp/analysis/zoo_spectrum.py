@@ -30,6 +30,7 @@ from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.ring_spectrum import COSK, Factor, RingEigenvalue, RingSpectrum, _clusters, _exact_root, _factors, _hull, _Roots, acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.analysis.zoo_roots import squarefree_roots
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
@@ -67,16 +68,40 @@ def spectrum_of_blocks(blocks: ZooBlocks, *, digits: int = 20, exact: bool = Tru
     prec = max(128, 4 * digits + 64)
     with flint.ctx.workprec(prec):
         g_balls = [_arb_value(a) for a in atoms.values()]
-        items = [(b, 0, i, j) for b, i, j in _Roots(zero, gens).at(tuple(g_balls))]
+        items = [(b, 0, i, j) for b, i, j in _roots_at(_Roots(zero, gens), tuple(g_balls), {}, atoms, n, prec)]
         roots = _Roots(other, (OMEGA, COSK, *gens))
         for k in range(1, n):
             w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
-            items += [(b, k, i, j) for b, i, j in roots.at((w, w.real, *g_balls))]
+            at = {OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n))}
+            items += [(b, k, i, j) for b, i, j in _roots_at(roots, (w, w.real, *g_balls), at, atoms, n, prec)]
         groups = _clusters(items)  # type: ignore[no-untyped-call]
         groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
         entries = [_entry(items, g, zero, other, n, atoms, digits, exact) for g in groups]
     size = B0.shape[0] + K * (n - 1)
     return RingSpectrum(blocks.scheme, mesh, n, depth, size, digits, tuple(entries))
+
+
+def _roots_at(roots: _Roots, args: tuple[object, ...], at: dict[sp.Symbol, sp.Expr], atoms: dict[sp.Dummy, sp.Expr], n: int,
+              prec: int) -> list[tuple[object, int, int]]:
+    """``[(ball, factor index, root index)]`` at one frequency (``args`` its Arb values, ``at`` its exact ones), each
+    root repeated by the factor's exponent: closed forms evaluated, other roots isolated by Arb to ``2^(-prec/2)``, and a
+    factor with a repeated root there split exactly (:func:`squarefree_roots`; root index ``-1``)."""
+    tol = flint.arb(2) ** (-(prec // 2))
+    out: list[tuple[object, int, int]] = []
+    for i, f in enumerate(roots.factors):
+        closed, coeffs = roots.closed[i], roots.coeffs[i]
+        if closed is not None:
+            balls = [(flint.acb(g(*args)), j) for j, g in enumerate(closed)]
+        else:
+            assert coeffs is not None  # a factor without closed forms has compiled coefficients
+            poly = flint.acb_poly([flint.acb(c(*args)) for c in coeffs])
+            try:
+                balls = [(flint.acb(b), j) for j, b in enumerate(poly.roots(tol=tol))]
+            except ValueError:  # a repeated root at this frequency: Arb's root finder does not converge
+                coefficients = [sp.sympify(c).xreplace({**at, **atoms}) for c in sp.Poly(f.poly, LAM).all_coeffs()]
+                balls = [(b, -1) for b, m in squarefree_roots(coefficients, 12 * n, prec=prec) for _ in range(m)]
+        out += [(b, i, j) for b, j in balls for _ in range(f.exponent)]
+    return out
 
 
 def _arb_value(value: sp.Expr) -> flint.acb:
@@ -114,7 +139,7 @@ def _entry(items: list[tuple[object, int, int, int]], group: list[int], zero: tu
     assert isinstance(b, flint.acb)
     f = (zero if k == 0 else other)[i]
     value = None
-    if exact and f.roots is not None:
+    if exact and f.roots is not None and j >= 0:
         value = _reduced(sp.expand(_exact_root(f.roots[j], k, n, atoms)), b)
     return RingEigenvalue(
         ball=b, text=acb_text(b, digits), multiplicity=len(group), frequencies=tuple(sorted({items[x][1] for x in group})),

@@ -55,3 +55,23 @@ def sqrt3_stencils() -> StencilScheme:
     face = KindRules("face", (Rule((Term(1 / M, over="face"),)),))
     vertex = KindRules("vertex", (Rule((Term(1 - sqrt3_alpha(N)), Term(sqrt3_alpha(N) / N, ("next",), over="ring"))),))
     return StencilScheme("sqrt3", "triangle", "sqrt3", (face, vertex), steps=2)
+
+
+def butterfly_weight(j, k):
+    """Zorin, Schroeder and Sweldens' weight of ring vertex ``j`` at an extraordinary end of valence ``k >= 5``."""
+    return (R(1, 4) + sp.cos(2 * sp.pi * j / k) + sp.cos(4 * sp.pi * j / k) / 2) / k
+
+
+def butterfly_stencils() -> StencilScheme:
+    """The modified butterfly: the ten-point rule between regular ends, ``3/4`` and ring weights from an extraordinary end
+    (valences 3 and 4 with their own weights); old vertices kept. Edge rules reach two rings."""
+    d = sp.KroneckerDelta
+    wings = [("prev", "twin", "prev"), ("next", "twin", "prev"), ("twin", "next", "twin", "prev"), ("twin", "prev", "twin", "prev")]
+    regular = Rule((Term(R(1, 2)), Term(R(1, 2), ("next",)), Term(R(1, 8), ("prev",)), Term(R(1, 8), ("twin", "prev")),
+                    *[Term(R(-1, 16), w) for w in wings]), origin="regular", tip="regular")
+    three = Rule((Term(R(3, 4)), Term(R(5, 12) * d(J, 0) - R(1, 12) * (1 - d(J, 0)), ("next",), over="ring")), origin=3)
+    four = Rule((Term(R(3, 4)), Term(R(3, 8) * d(J, 0) - R(1, 8) * d(J, 2), ("next",), over="ring")), origin=4)
+    other = Rule((Term(R(3, 4)), Term(butterfly_weight(J, N), ("next",), over="ring")), origin="irregular")
+    edge = KindRules("edge", (three, four, other, regular))
+    vertex = KindRules("vertex", (Rule((Term(sp.Integer(1)),)),))
+    return StencilScheme("modified-butterfly", "triangle", "primal", (edge, vertex), interpolatory=True)

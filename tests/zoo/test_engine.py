@@ -22,6 +22,7 @@ from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.stencil_rows import is_zero
 from symdecomp.schemes.stencils import KindRules, M, N, Rule, StencilScheme, Term
 from tests.zoo.engine_schemes import (
+    butterfly_stencils,
     catmull_clark_stencils,
     doo_sabin_stencils,
     doo_sabin_weight,
@@ -290,3 +291,19 @@ def test_masks_of_catmull_clark_as_stencils_are_ring_masks():
     assert ours["subdominant"] == theirs["subdominant"]
     for a, b in zip([ours["position"], *ours["tangents"]], [theirs["position"], *theirs["tangents"]]):
         assert a["O"] == b["O"] and a["classes"]["0"] == b["a"] and a["classes"]["1"] == b["b"]
+
+
+@pytest.mark.parametrize("n", VALENCES)
+def test_modified_butterfly_reaches_two_rings_and_is_certified(n):
+    """The butterfly's edge rule reaches two rings: the closure finds depth 2; its spectrum is certified at every n, at
+    the regular valence through a factor with a repeated root (split exactly); old vertices are kept."""
+    from symdecomp.verify.result import CrossCheckStatus
+    from symdecomp.verify.zoo_certify import certify_zoo
+
+    zm = zoo_matrix(butterfly_stencils(), n)
+    assert zm.depth == 2
+    centre = zm.neighbourhood.index()[zm.neighbourhood.centre]
+    assert [zm.matrix[centre, c] for c in range(zm.matrix.shape[1])] == [int(c == centre) for c in range(zm.matrix.shape[1])]
+    c = certify_zoo(butterfly_stencils(), n)
+    assert c.status == CrossCheckStatus.AGREE and c.multiplicities_certified
+    assert sum(c.multiplicities) == zm.matrix.shape[0]

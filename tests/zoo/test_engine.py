@@ -307,3 +307,27 @@ def test_modified_butterfly_reaches_two_rings_and_is_certified(n):
     c = certify_zoo(butterfly_stencils(), n)
     assert c.status == CrossCheckStatus.AGREE and c.multiplicities_certified
     assert sum(c.multiplicities) == zm.matrix.shape[0]
+
+
+def test_doo_sabin_symbol_in_m_is_the_engines_centre_face_at_every_n():
+    """The corner rule's symbol, summed for every face size m, is an eigenvalue of the engine's block at each k."""
+    from symdecomp.analysis.zoo_symbols import family_symbol
+
+    weight = doo_sabin_stencils().rules_of("corner").rules[0].terms[0].weight
+    symbol = family_symbol(weight, M)
+    for n in (3, 5, 8):
+        spectrum = zoo_spectrum(doo_sabin_stencils(), n, digits=20)
+        for k in range(n):
+            signed = k if k <= n // 2 else k - n
+            value = symbol.value(signed)
+            assert value.is_Rational
+            assert any(k in e.frequencies and e.ball.contains(float(value)) or (e.exact is not None and k in e.frequencies
+                       and is_zero(e.exact - value)) for e in spectrum.eigenvalues)
+
+
+def test_a_symbol_that_is_not_a_trigonometric_polynomial_is_refused():
+    from symdecomp.analysis.zoo_symbols import family_symbol
+    from symdecomp.errors import NotApplicableError
+
+    with pytest.raises(NotApplicableError, match="not c"):
+        family_symbol(sp.Symbol("j", nonnegative=True, integer=True) ** 2 / M, M)

@@ -31,6 +31,7 @@ from symdecomp.analysis.ring_spectrum import COSK, Factor, RingEigenvalue, RingS
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_roots import squarefree_roots
+from symdecomp.errors import PrecisionError
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
@@ -50,6 +51,22 @@ def irrational_atoms(exprs: Iterable[sp.Expr]) -> dict[sp.Dummy, sp.Expr]:
     return {sp.Dummy(f"g{i}"): a for i, a in enumerate(ordered)}
 
 
+def _cosine_generator(atoms: dict[sp.Dummy, sp.Expr]) -> tuple[dict[sp.Dummy, sp.Expr], dict[sp.Dummy, sp.Expr]] | None:
+    """``({g: T_m(c)}, {c: cos(2 pi/L)})`` when every atom is ``cos(r pi)`` with a rational ``r`` (``cos(2 pi m/L) =
+    T_m(cos(2 pi/L))``, Chebyshev); ``None`` otherwise."""
+    if len(atoms) < 2:
+        return None
+    ratios = []
+    for a in atoms.values():
+        r = a.args[0] / sp.pi if isinstance(a, sp.cos) else None
+        if r is None or not r.is_Rational:
+            return None
+        ratios.append(r / 2)
+    L = int(sp.ilcm(*[r.q for r in ratios]))
+    c = sp.Dummy("c")
+    return {g: sp.chebyshevt(int(r * L), c) for g, r in zip(atoms, ratios)}, {c: sp.cos(2 * sp.pi / L)}
+
+
 def _generic(M: sp.Matrix, atoms: dict[sp.Dummy, sp.Expr]) -> sp.Matrix:
     back = {a: g for g, a in atoms.items()}
     return M.applyfunc(lambda e: sp.expand(sp.sympify(e).xreplace(back)))
@@ -61,8 +78,12 @@ def spectrum_of_blocks(blocks: ZooBlocks, *, digits: int = 20, exact: bool = Tru
     n, K = blocks.n, blocks.class_count
     B, B0 = blocks.frequency_matrix(), blocks.frequency_zero_matrix()
     atoms = irrational_atoms(list(B) + list(B0))
-    gens = tuple(atoms)
     Bg, B0g = _generic(sp.Matrix(B), atoms), _generic(sp.Matrix(B0), atoms)
+    one = _cosine_generator(atoms)
+    if one is not None:  # every atom a cosine: one generator c = cos(2 pi/L), far fewer variables to factor over
+        chebyshev, atoms = one
+        Bg, B0g = (X.applyfunc(lambda e: sp.expand(e.xreplace(chebyshev))) for X in (Bg, B0g))
+    gens = tuple(atoms)
     other = _factors((LAM * sp.eye(K) - Bg).det(method="berkowitz"), (LAM, OMEGA)) if n > 1 else ()
     zero = _factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM,))
     prec = max(128, 4 * digits + 64)
@@ -99,7 +120,12 @@ def _roots_at(roots: _Roots, args: tuple[object, ...], at: dict[sp.Symbol, sp.Ex
                 balls = [(flint.acb(b), j) for j, b in enumerate(poly.roots(tol=tol))]
             except ValueError:  # a repeated root at this frequency: Arb's root finder does not converge
                 coefficients = [sp.sympify(c).xreplace({**at, **atoms}) for c in sp.Poly(f.poly, LAM).all_coeffs()]
-                balls = [(b, -1) for b, m in squarefree_roots(coefficients, 12 * n, prec=prec) for _ in range(m)]
+                try:
+                    split = squarefree_roots(coefficients, 12 * n, prec=prec)
+                except ValueError as exc:
+                    raise PrecisionError(f"n = {n}: a factor of a frequency block has a repeated root, and its coefficients are "
+                                         f"not numbers of Q(zeta_{12 * n}) to split it exactly ({exc})") from None
+                balls = [(b, -1) for b, m in split for _ in range(m)]
         out += [(b, i, j) for b, j in balls for _ in range(f.exponent)]
     return out
 

@@ -66,7 +66,7 @@ class ZooBlocks:
         K = self.class_count
         total = sp.zeros(K, K)
         for d, A in self.offsets.items():
-            total += A * sp.sympify(omega) ** d
+            total += A * sp.sympify(omega, strict=True) ** d
         return sp.ImmutableMatrix(total.applyfunc(sp.expand))
 
     def frequency_zero_matrix(self) -> sp.ImmutableMatrix:

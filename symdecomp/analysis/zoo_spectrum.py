@@ -44,7 +44,7 @@ def irrational_atoms(exprs: Iterable[sp.Expr]) -> dict[sp.Dummy, sp.Expr]:
     """``{symbol: exact value}`` for the cosines, sines and radicals in ``exprs`` (each a fresh symbol)."""
     atoms: set[sp.Expr] = set()
     for e in exprs:
-        e = sp.sympify(e)
+        e = sp.sympify(e, strict=True)
         atoms |= e.atoms(sp.cos, sp.sin)
         atoms |= {p for p in e.atoms(sp.Pow) if not p.exp.is_Integer and not p.free_symbols}
     ordered = sorted(atoms, key=sp.default_sort_key)
@@ -69,7 +69,7 @@ def _cosine_generator(atoms: dict[sp.Dummy, sp.Expr]) -> tuple[dict[sp.Dummy, sp
 
 def _generic(M: sp.Matrix, atoms: dict[sp.Dummy, sp.Expr]) -> sp.Matrix:
     back = {a: g for g, a in atoms.items()}
-    return M.applyfunc(lambda e: sp.expand(sp.sympify(e).xreplace(back)))
+    return M.applyfunc(lambda e: sp.expand(sp.sympify(e, strict=True).xreplace(back)))
 
 
 def spectrum_of_blocks(blocks: ZooBlocks, *, digits: int = 20, exact: bool = True, depth: int = 1, mesh: str = "") -> RingSpectrum:
@@ -119,7 +119,7 @@ def _roots_at(roots: _Roots, args: tuple[object, ...], at: dict[sp.Symbol, sp.Ex
             try:
                 balls = [(flint.acb(b), j) for j, b in enumerate(poly.roots(tol=tol))]
             except ValueError:  # a repeated root at this frequency: Arb's root finder does not converge
-                coefficients = [sp.sympify(c).xreplace({**at, **atoms}) for c in sp.Poly(f.poly, LAM).all_coeffs()]
+                coefficients = [sp.sympify(c, strict=True).xreplace({**at, **atoms}) for c in sp.Poly(f.poly, LAM).all_coeffs()]
                 try:
                     split = squarefree_roots(coefficients, 12 * n, prec=prec)
                 except ValueError as exc:

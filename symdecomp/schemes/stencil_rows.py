@@ -45,7 +45,7 @@ class _Unknown(Exception):
 
 def is_zero(e: sp.Expr | int) -> bool:
     """Whether an exact algebraic number is zero (its minimal polynomial is ``x``; a clear nonzero value is decided numerically first)."""
-    e = sp.sympify(e)
+    e = sp.sympify(e, strict=True)
     assert isinstance(e, sp.Expr)
     if e.is_Rational:
         return bool(e == 0)
@@ -86,7 +86,7 @@ def _weight(term: Term, mesh: HalfedgeMesh, h: int, j: int) -> sp.Expr:
         if f is None:
             raise _Unknown
         at[M] = sp.Integer(mesh.face_size(f))
-    w = sp.sympify(term.weight.xreplace(at).doit())
+    w = sp.sympify(term.weight.xreplace(at).doit(), strict=True)
     if w.free_symbols:
         raise InvalidSchemeError(f"a weight uses parameter {sorted(map(str, w.free_symbols))[0]!r}, which has no value")
     return w

@@ -82,7 +82,10 @@ def zoo_masks(scheme: StencilScheme, n: int, depth: int | None = None, *, digits
         total = sum(y0, flint.acb(0))
         position = [y / total for y in y0]
         tangent = [y / y1[0] for y in y1]
-        text = lambda z: acb_text(z, digits)  # noqa: E731
+
+        def text(z: flint.acb) -> str:
+            return acb_text(z, digits)
+
         masks: dict[str, Any] = {"position": {"classes": {}}, "tangents": [{"classes": {}}, {"classes": {}}]}
         if centre:
             masks["position"]["O"] = text(position[0])

@@ -71,8 +71,9 @@ nothing else.
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
                    (``ring_charpoly``), masks (``ring_masks``); any StencilScheme of the zoo: its matrix on its
                    neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
-                   labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly, ``zoo_roots``), limit and tangent
-                   masks (``zoo_masks``), a face or ring family's symbol for every size (``zoo_symbols``);
+                   labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
+                   ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face
+                   or ring family's symbol for every size (``zoo_symbols``);
                    what the curvature regimes at the vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``) and exact evaluation on either lattice (``evaluation``), of the patches of a

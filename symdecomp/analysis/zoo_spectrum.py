@@ -9,7 +9,7 @@ exact value too. A factor of degree ``<= 2`` gives closed-form roots (exact); th
 one are isolated by certified Arb balls (``acb_poly.roots``). Values are grouped by overlapping
 balls, and the result is the one eigenvalue type of spectra, :class:`RingEigenvalue` in a
 :class:`RingSpectrum` (``rings`` is the neighbourhood's depth), so ``spectrum --json`` keeps its shape.
-The Jordan structure is not decided here (``jordan`` is ``None``).
+The Jordan structure is decided by :mod:`symdecomp.analysis.zoo_jordan` (:func:`zoo_spectrum`'s ``jordan``).
 
 >>> import sympy as sp
 >>> from symdecomp.schemes.stencils import Term, Rule, KindRules, StencilScheme, J, M
@@ -174,7 +174,15 @@ def _entry(items: list[tuple[object, int, int, int]], group: list[int], zero: tu
     )
 
 
-def zoo_spectrum(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20, exact: bool = True) -> RingSpectrum:
-    """The eigenvalues of ``scheme``'s subdivision matrix at valence ``n`` (over its steps), by frequency."""
+def zoo_spectrum(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20, exact: bool = True,
+                 jordan: bool = True) -> RingSpectrum:
+    """The eigenvalues of ``scheme``'s subdivision matrix at valence ``n`` (over its steps), by frequency.
+
+    ``jordan``: decide the Jordan block sizes where they can be decided exactly (:mod:`symdecomp.analysis.zoo_jordan`).
+    """
+    from symdecomp.analysis.zoo_jordan import with_jordan
+
     zm = zoo_matrix(scheme, n, depth)
-    return spectrum_of_blocks(zoo_blocks(zm), digits=digits, exact=exact, depth=zm.depth, mesh=scheme.lattice)
+    blocks = zoo_blocks(zm)
+    spectrum = spectrum_of_blocks(blocks, digits=digits, exact=exact or jordan, depth=zm.depth, mesh=scheme.lattice)
+    return with_jordan(blocks, spectrum) if jordan else spectrum

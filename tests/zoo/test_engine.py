@@ -331,3 +331,23 @@ def test_a_symbol_that_is_not_a_trigonometric_polynomial_is_refused():
 
     with pytest.raises(NotApplicableError, match="not c"):
         family_symbol(sp.Symbol("j", nonnegative=True, integer=True) ** 2 / M, M)
+
+
+@pytest.mark.parametrize("n", VALENCES)
+def test_jordan_blocks_are_ring_spectrums(n):
+    """Catmull-Clark and Loop as stencils: the Jordan block sizes the engine decides are today's route's."""
+    for ours, theirs in ((catmull_clark_stencils(), catmull_clark()), (loop_stencils(), loop())):
+        a, b = zoo_spectrum(ours, n, digits=20), ring_spectrum(theirs, n, digits=20)
+        assert [x.jordan for x in a.eigenvalues] == [y.jordan for y in b.eigenvalues]
+
+
+def test_a_jordan_block_is_a_nilpotent_part_of_the_full_matrix():
+    """Where the engine reports a block of size 2 (Doo-Sabin's 1/4 at n = 6), (S - 1/4)^2 has a smaller kernel than the
+    multiplicity would give with no Jordan block: rank(S - 1/4) > size - multiplicity, exactly."""
+    zm = zoo_matrix(doo_sabin_stencils(), 6)
+    quarter = next(e for e in zoo_spectrum(doo_sabin_stencils(), 6).eigenvalues if e.exact == sp.Rational(1, 4))
+    assert quarter.jordan is not None and max(quarter.jordan) == 2
+    A = sp.Matrix(zm.matrix) - sp.eye(zm.matrix.shape[0]) / 4
+    blocks = len(quarter.jordan)
+    assert A.rank() == zm.matrix.shape[0] - blocks
+    assert (A**2).rank() == zm.matrix.shape[0] - blocks - sum(1 for s in quarter.jordan if s >= 2)

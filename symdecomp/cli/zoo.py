@@ -44,10 +44,11 @@ def run_zoo_spectrum(args: argparse.Namespace, plot: object = None) -> int:
     print(f"{spectrum.scheme} ({args.scheme.topology}, {spectrum.mesh} mesh), n = {spectrum.n}, neighbourhood of depth "
           f"{spectrum.rings}{_steps(args.scheme)}: {spectrum.size} eigenvalues, {len(spectrum.eigenvalues)} distinct")
     width = max(len(e.text) for e in spectrum.eigenvalues)
-    print(f"{'value':<{width}}  mult  frequencies k; exact")
+    print(f"{'value':<{width}}  mult  jordan  frequencies k; exact")
     for e in spectrum.eigenvalues:
+        jordan = "?" if e.jordan is None else ("-" if max(e.jordan) == 1 else "+".join(map(str, e.jordan)))
         ks = ", ".join(map(str, e.frequencies)) if len(e.frequencies) <= 8 else f"{len(e.frequencies)} frequencies"
-        print(f"{e.text:<{width}}  {e.multiplicity:>4}  {ks}{'' if e.exact is None else f'; {e.exact}'}")
+        print(f"{e.text:<{width}}  {e.multiplicity:>4}  {jordan:>6}  {ks}{'' if e.exact is None else f'; {e.exact}'}")
     return 0
 
 

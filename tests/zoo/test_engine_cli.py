@@ -58,3 +58,9 @@ def test_sharp_options_are_refused_in_one_line(capsys):
     assert main(["spectrum", "3", "--scheme", "doo-sabin", "--boundary"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "boundary" in err[0]
+
+
+def test_spectrum_text_shows_jordan_blocks(capsys):
+    assert main(["spectrum", "6", "--scheme", "doo-sabin"]) == 0
+    line = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("0.25 "))
+    assert "2+2+1+1+1+1+1" in line and line.rstrip().endswith("1/4")

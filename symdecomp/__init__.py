@@ -39,7 +39,10 @@ nothing else.
                    stencils of any support on halfedge walks (``stencils``), the zoo's scheme files and the
                    families shipped as TOML files in its folder zoo (``stencil_files``), each rule's weights summing to 1
                    (``stencil_affinity``), today's schemes as stencils (``stencil_convert``), what the
-                   literature says of each family, sources, eigenvalues, smoothness (``zoo_literature``), local
+                   literature says of each family, sources, eigenvalues, smoothness (``zoo_literature``), the zoo's
+                   engine: halfedge local meshes (``halfedge``), the neighbourhood of an extraordinary vertex or face
+                   with the orbit labelling of its points (``neighbourhood``), a stencil rule read as an exact row on a
+                   mesh (``stencil_rows``), one step per topology, primal, dual and sqrt(3) (``topology``), local
                    quad and triangle meshes and ring meshes (``mesh``), whole meshes refined by
                    the rules (Section 3, ``refinement``), K-ring matrices by exact refinement
                    (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), the rules at
@@ -73,8 +76,12 @@ nothing else.
                    ``characteristic_uniform``), where a 1-ring component starts on one eigenvector of M_j
                    (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
                    (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
-                   (``ring_charpoly``), masks (``ring_masks``); what the curvature regimes at the
-                   vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
+                   (``ring_charpoly``), masks (``ring_masks``); any StencilScheme of the zoo: its matrix on its
+                   neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
+                   labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
+                   ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face
+                   or ring family's symbol for every size (``zoo_symbols``);
+                   what the curvature regimes at the vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``; the file's valences rounded straight from those columns,
                    ``eigendata_direct``) and exact evaluation on either lattice (``evaluation``), of the patches of a
@@ -95,7 +102,8 @@ nothing else.
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
-                   ``ring_certify``, the O(n) route ``structural``), their results and
+                   ``ring_certify``, the O(n) route ``structural``; of a StencilScheme of the zoo,
+                   ``zoo_certify``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
                    boundary, crease and corner vertices' ``oracle_sharp``,
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
@@ -158,7 +166,8 @@ nothing else.
                    ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
-                   (``sharp``), the one shape of every command's JSON output and its JSON Schema
+                   (``sharp``), the commands spectrum, masks and check for a scheme of the zoo (``zoo``),
+                   the one shape of every command's JSON output and its JSON Schema
                    (``json_envelope``), the one progress display of long commands (``progress``), the
                    option --plot FILE of the commands that draw (``plot_file``)
 ``__main__``       python -m symdecomp: the command line
@@ -215,6 +224,9 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),
+    "symdecomp.analysis.zoo_masks": ("zoo_masks",),
+    "symdecomp.analysis.zoo_matrix": ("ZooMatrix", "zoo_matrix"),
+    "symdecomp.analysis.zoo_spectrum": ("zoo_spectrum",),
     "symdecomp.claims": ("CheckResult", "Claim", "Status", "Step", "all_claims", "check_claim", "get_claim"),
     "symdecomp.output.display": ("aslatex", "ashtml", "notebook_latex"),
     "symdecomp.schemes.full_matrix": ("characteristic_polynomial", "exact_subdivision_matrix"),
@@ -224,6 +236,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.schemes.meshfile": ("PolygonMesh", "scheme_for_mesh"),
     "symdecomp.schemes.meshformats": ("decode_mesh", "encode_mesh", "read_mesh"),
     "symdecomp.schemes.mesh_tags": ("MeshDefects", "MeshTags"),
+    "symdecomp.schemes.neighbourhood": ("Neighbourhood", "neighbourhood"),
     "symdecomp.schemes.patch": ("patch_matrices",),
     "symdecomp.schemes.refinement": ("central_rings", "mesh_rules", "refine"),
     "symdecomp.schemes.rings": ("RingMatrix", "ring_subdivision_matrix"),
@@ -239,6 +252,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.verify.ring_certify": ("certify_ring",),
     "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
     "symdecomp.verify.sharp_certify": ("SharpCertificate", "certify_sharp"),
+    "symdecomp.verify.zoo_certify": ("certify_zoo",),
     "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),
 }
 

@@ -15,6 +15,7 @@ from symdecomp.cli.common import (
     flag,
     general_path,
     given,
+    is_stencil_scheme,
     print_json,
     progress,
     refuse_together,
@@ -284,11 +285,12 @@ def _check_options(args, rings) -> None:
         check_memory(STRUCTURAL_BYTES_PER_VALENCE * (rings or 1) ** 2 * top, f"the structural certificate at n = {top}")
 
 
-def run(args, *, closed_forms: ClosedForms | None = None) -> int:
-    """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
-    from symdecomp.verify.result import CrossCheckStatus
+def _other_route(args, plot) -> int | None:
+    """The exit code of the zoo's engine (a StencilScheme) or of the sharp route (a sector's faces); ``None`` otherwise."""
+    if is_stencil_scheme(args.scheme):
+        from symdecomp.cli.zoo import run_zoo_check
 
-    plot = check_plot(args)
+        return run_zoo_check(args)
     if args.sectors is not None or sharp_given(args):
         if args.sectors is None:
             raise InvalidInputError("--n: valences of interior vertices; give the faces of a boundary, crease, corner or "
@@ -297,6 +299,17 @@ def run(args, *, closed_forms: ClosedForms | None = None) -> int:
             raise InvalidInputError("--k: the faces of a sharp vertex's sector: give --boundary, --corner, --crease K2 or "
                                     "--dart (interior valences are --n A:B)")
         return _run_sharp(args, plot)
+    return None
+
+
+def run(args, *, closed_forms: ClosedForms | None = None) -> int:
+    """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
+    from symdecomp.verify.result import CrossCheckStatus
+
+    plot = check_plot(args)
+    routed = _other_route(args, plot)
+    if routed is not None:
+        return routed
     rings = args.rings if general_path(args) else None
     args.route_note = ""
     if args.certify:

@@ -348,6 +348,13 @@ def closed_form_obstacle(scheme: Scheme) -> str | None:
     return closed_form_obstacle(scheme)
 
 
+def is_stencil_scheme(scheme) -> bool:
+    """Whether ``scheme`` is a scheme of the zoo (a StencilScheme): the commands hand it to the zoo's engine (``symdecomp.cli.zoo``)."""
+    from symdecomp.schemes.stencils import StencilScheme
+
+    return isinstance(scheme, StencilScheme)
+
+
 def general_path(args) -> bool:
     """Whether a command takes the any-scheme route (triangle meshes or ``--rings`` > 1)."""
     return not args.scheme.lattice.paper_claims or getattr(args, "rings", 1) != 1

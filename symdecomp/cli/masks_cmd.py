@@ -29,6 +29,7 @@ from symdecomp.cli.common import (
     digits,
     flag,
     general_path,
+    is_stencil_scheme,
     print_json,
     sharp_given,
 )
@@ -116,6 +117,10 @@ def run(args) -> int:
     from symdecomp.analysis.masks import limit_masks, limit_masks_at
     from symdecomp.analysis.tangent import complex_at
 
+    if is_stencil_scheme(args.scheme):
+        from symdecomp.cli.zoo import run_zoo_masks
+
+        return run_zoo_masks(args)
     if sharp_given(args):
         from symdecomp.cli.sharp import run_sharp_masks
 

@@ -2,7 +2,17 @@
 
 from __future__ import annotations
 
-from symdecomp.cli.common import Once, add_rings_option, add_scheme_option, digits, flag, general_path, print_json, sharp_given
+from symdecomp.cli.common import (
+    Once,
+    add_rings_option,
+    add_scheme_option,
+    digits,
+    flag,
+    general_path,
+    is_stencil_scheme,
+    print_json,
+    sharp_given,
+)
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.sharp import add_sharp_options, faces_or_valence
 from symdecomp.errors import InvalidInputError
@@ -102,6 +112,10 @@ def run(args) -> int:
     from symdecomp.analysis.spectrum import closed_form_spectrum
 
     plot = check_plot(args)
+    if is_stencil_scheme(args.scheme):
+        from symdecomp.cli.zoo import run_zoo_spectrum
+
+        return run_zoo_spectrum(args, plot)
     if sharp_given(args):
         return _run_sharp(args, plot)
     if general_path(args):

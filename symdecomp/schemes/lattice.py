@@ -104,6 +104,13 @@ class Lattice:
     #: Sides of every face of a mesh on this lattice (4 on quads, 3 on triangles).
     face_sides = 0  # set by each subclass (a class attribute: not a dataclass field)
 
+    @property
+    def regular_face_size(self) -> int:
+        """Sides of a regular face (4 on quads, 3 on triangles): the regular valence of the dual mesh."""
+        if not self.face_sides:
+            raise LatticeFactMissing(self, "regular_face_size")
+        return self.face_sides
+
     def mesh(self, faces, values):
         """A local mesh of this lattice's kind (:class:`~symdecomp.schemes.mesh.QuadMesh`, ``TriangleMesh``)."""
         raise LatticeFactMissing(self, "mesh")

@@ -41,8 +41,10 @@ from symdecomp.verify.certify import symmetric_functions
 from symdecomp.verify.mesh_verdicts import kind_verdict
 from symdecomp.verify.oracle import toolkit_predictions
 from symdecomp.verify.tuning_c1 import certified_tuning_region
+from tests.analysis.zoo_engine_schemes import doo_sabin_stencils
 
 CC, LOOP = sd.catmull_clark(), sd.loop()
+DOO_SABIN = doo_sabin_stencils()
 FREE = sd.catmull_clark(sd.symbols.alpha, sd.symbols.beta)
 NOT_INTEGERS = [5.0, Fraction(5), np.float64(5), True, "5", None]
 NOT_SCHEMES = [None, "catmull-clark", 5, {"edge": {}}]
@@ -63,6 +65,14 @@ INTEGERS = [
     (sd.invariant_ratio_limit, "j", dict(scheme=CC), 1, 1, False),
     (sd.closed_form_spectrum, "n", dict(scheme=CC), 5, 3, False),
     (sd.closed_form_spectrum, "digits", dict(scheme=CC, n=5), 10, 1, True),
+    (sd.zoo_matrix, "n", dict(scheme=DOO_SABIN), 5, 3, False),
+    (sd.zoo_spectrum, "n", dict(scheme=DOO_SABIN), 5, 3, False),
+    (sd.zoo_spectrum, "digits", dict(scheme=DOO_SABIN, n=5), 10, 1, True),
+    (sd.zoo_masks, "n", dict(scheme=DOO_SABIN), 5, 3, False),
+    (sd.zoo_masks, "digits", dict(scheme=DOO_SABIN, n=5), 10, 1, True),
+    (sd.certify_zoo, "n", dict(scheme=DOO_SABIN), 5, 3, False),
+    (sd.certify_zoo, "digits", dict(scheme=DOO_SABIN, n=5), 10, 1, True),
+    (sd.neighbourhood, "n", dict(lattice=sd.QUAD, depth=1), 5, 3, False),
     (sd.elliptic_defect_table, "digits", dict(scheme=CC, valences=[5]), 10, 1, True),
     (sd.tune, "n", dict(scheme=CC), 5, 3, False),
     (sd.design_ring, "n", dict(scheme=CC, normal=(0, 0, 1)), 5, 3, True),
@@ -140,6 +150,10 @@ INTEGERS = [
 
 #: ``(function, the other arguments)`` of the functions that take a scheme.
 SCHEMES = [
+    (sd.zoo_matrix, dict(n=5)),
+    (sd.zoo_spectrum, dict(n=5)),
+    (sd.zoo_masks, dict(n=5)),
+    (sd.certify_zoo, dict(n=5)),
     (kind_masks, dict(kind=NeighbourhoodKind("smooth", 5, (5,), True))),
     (kind_verdict, dict(kind=NeighbourhoodKind("smooth", 5, (5,), True))),
     (sd.subdivision_matrix, dict(n=5)),

@@ -1,0 +1,68 @@
+"""Jordan block sizes of a StencilScheme's eigenvalues, exactly, from the frequency blocks.
+
+Frequencies are independent (different Fourier subspaces), so the Jordan blocks of a value are those
+of each frequency block ``B_k`` at the value. Where the value is exact and it and the block's entries
+are numbers of a cyclotomic field ``Q(zeta_12n)`` (rationals, cosines of rational multiples of ``pi``),
+the sizes follow from exact ranks of the powers of ``B_k - lambda I``
+(:func:`~symdecomp.analysis.ring_spectrum._partition`, over
+:class:`~symdecomp.algebra.cyclotomic.CyclotomicField`); the ranks also prove that the value has the
+multiplicity the balls gave it at that frequency. Otherwise (a radical, a root of a factor of degree > 2
+repeated at one frequency) the structure is left unknown (``None``).
+
+>>> import sympy as sp
+>>> from symdecomp.analysis.zoo_blocks import zoo_blocks
+>>> from symdecomp.analysis.zoo_matrix import zoo_matrix
+>>> from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
+>>> from symdecomp.schemes.stencils import Term, Rule, KindRules, StencilScheme, J, M
+>>> corner = Term(sp.KroneckerDelta(J, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * J / M)) / (4 * M), over="face")
+>>> ds = StencilScheme("doo-sabin", "quad", "dual", (KindRules("corner", (Rule((corner,)),)),))
+>>> b = zoo_blocks(zoo_matrix(ds, 4))
+>>> [(e.exact, e.jordan) for e in with_jordan(b, spectrum_of_blocks(b)).eigenvalues][:3]
+[(1, (1,)), (1/2, (1, 1)), (1/4, (1, 1, 1, 1, 1))]
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import sympy as sp
+
+from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
+from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.ring_spectrum import RingSpectrum, _partition
+from symdecomp.analysis.zoo_blocks import ZooBlocks
+
+__all__ = ["with_jordan"]
+
+
+def _sizes(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField) -> tuple[int, ...] | None:
+    by_k: dict[int, int] = {}
+    for k, _, _ in e.members:
+        by_k[k] = by_k.get(k, 0) + 1
+    sizes: list[int] = []
+    n = blocks.n
+    for k, m in sorted(by_k.items()):
+        if m == 1:  # a simple root at its frequency: one block of size 1
+            sizes.append(1)
+            continue
+        if e.exact is None:
+            return None
+        B = blocks.frequency_zero_matrix() if k == 0 else blocks.frequency_matrix(sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)))
+        try:
+            value = cyclotomic_value(e.exact, field=field)
+            A = [[cyclotomic_value(B[r, c], field=field) - (value if r == c else 0) for c in range(B.shape[1])]
+                 for r in range(B.shape[0])]
+        except ValueError:
+            return None
+        found = _partition(A, m)
+        if sum(found) != m:
+            return None  # the value's multiplicity at k is not what the balls said: leave it undecided
+        sizes += found
+    return tuple(sorted(sizes, reverse=True))
+
+
+def with_jordan(blocks: ZooBlocks, spectrum: RingSpectrum) -> RingSpectrum:
+    """``spectrum`` with each value's Jordan block sizes, where they are decided exactly (module docstring)."""
+    field = CyclotomicField(12 * blocks.n)
+    entries = tuple(dataclasses.replace(e, jordan=_sizes(blocks, e, field)) for e in spectrum.eigenvalues)
+    return dataclasses.replace(spectrum, eigenvalues=entries)

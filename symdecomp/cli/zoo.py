@@ -1,0 +1,97 @@
+"""The commands ``spectrum``, ``masks`` and ``check`` for a scheme of the zoo (a StencilScheme): the zoo's engine.
+
+Each command hands a StencilScheme here (:func:`symdecomp.cli.common.is_stencil_scheme`); the output has the
+shape of the command's any-scheme route (``spectrum --json``: the eigenvalues; ``masks``: position and
+tangent masks by orbit class; ``check``: one certificate per valence). ``--rings K`` is the neighbourhood's
+ring depth (default: the smallest invariant one). Options about sharp vertices do not apply.
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+from symdecomp.cli.common import print_json, sharp_given
+from symdecomp.cli.progress import progress
+from symdecomp.errors import InvalidInputError
+from symdecomp.schemes.stencils import StencilScheme
+
+__all__ = ["run_zoo_spectrum", "run_zoo_masks", "run_zoo_check"]
+
+
+def _depth(args: argparse.Namespace) -> int | None:
+    if sharp_given(args):
+        raise InvalidInputError(f"--scheme {args.scheme.name}: boundary, crease, corner and dart vertices are not analysed "
+                                "for schemes of the zoo (interior vertices and faces only)")
+    rings = int(getattr(args, "rings", 1))
+    return None if rings == 1 else rings
+
+
+def _steps(scheme: StencilScheme) -> str:
+    return f", over {scheme.steps} steps (the lattice returns after {scheme.steps})" if scheme.steps > 1 else ""
+
+
+def run_zoo_spectrum(args: argparse.Namespace, plot: object = None) -> int:
+    """``spectrum N --scheme <zoo scheme>``."""
+    from symdecomp.analysis.zoo_spectrum import zoo_spectrum
+
+    if plot is not None:
+        raise InvalidInputError(f"--plot: not drawn for schemes of the zoo yet (--scheme {args.scheme.name})")
+    spectrum = zoo_spectrum(args.scheme, args.n, _depth(args), digits=args.digits)
+    if args.json:
+        print_json(args, spectrum.as_json())
+        return 0
+    print(f"{spectrum.scheme} ({args.scheme.topology}, {spectrum.mesh} mesh), n = {spectrum.n}, neighbourhood of depth "
+          f"{spectrum.rings}{_steps(args.scheme)}: {spectrum.size} eigenvalues, {len(spectrum.eigenvalues)} distinct")
+    width = max(len(e.text) for e in spectrum.eigenvalues)
+    print(f"{'value':<{width}}  mult  jordan  frequencies k; exact")
+    for e in spectrum.eigenvalues:
+        jordan = "?" if e.jordan is None else ("-" if max(e.jordan) == 1 else "+".join(map(str, e.jordan)))
+        ks = ", ".join(map(str, e.frequencies)) if len(e.frequencies) <= 8 else f"{len(e.frequencies)} frequencies"
+        print(f"{e.text:<{width}}  {e.multiplicity:>4}  {jordan:>6}  {ks}{'' if e.exact is None else f'; {e.exact}'}")
+    return 0
+
+
+def run_zoo_masks(args: argparse.Namespace) -> int:
+    """``masks N --scheme <zoo scheme>``."""
+    from symdecomp.analysis.zoo_masks import zoo_masks
+
+    data = zoo_masks(args.scheme, args.n, _depth(args), digits=args.digits)
+    if args.json:
+        print_json(args, data)
+        return 0
+    print(f"{data['scheme']}, n = {data['n']}, neighbourhood of depth {data['rings']}{_steps(args.scheme)}: "
+          f"subdominant eigenvalue {data['subdominant']}")
+    for title, mask in [("position", data["position"]), ("tangent 1", data["tangents"][0]), ("tangent 2", data["tangents"][1])]:
+        print(f"{title}:")
+        if "O" in mask:
+            print(f"  centre: {mask['O']}")
+        for key, weights in mask["classes"].items():
+            print(f"  class {key}, sectors 0..{args.n - 1}: {', '.join(weights)}")
+    return 0
+
+
+def run_zoo_check(args: argparse.Namespace) -> int:
+    """``check --n A:B --certify --scheme <zoo scheme>``: one certificate per valence."""
+    from symdecomp.verify.zoo_certify import certify_zoo
+
+    if not args.certify:
+        raise InvalidInputError(f"--scheme {args.scheme.name}: a scheme of the zoo is checked with --certify (the blocks "
+                                "against the full matrix, exactly)")
+    depth = _depth(args)
+    start = time.perf_counter()
+    rows = []
+    for n in progress(args.valences, len(args.valences), "certify", enabled=not args.quiet):
+        rows.append(certify_zoo(args.scheme, n, depth, digits=20))
+        if not args.json:
+            print(rows[-1].message)
+    failed = [r for r in rows if not r.ok]
+    summary = {"mode": "certified", "route": "zoo", "valences": len(rows), "ok": not failed,
+               "seconds": round(time.perf_counter() - start, 3)}
+    if args.json:
+        print_json(args, {"scheme": args.scheme.name, "rings": args.rings, "rows": [r.as_json() for r in rows], "summary": summary})
+    else:
+        print(f"{len(rows)} valences: {len(rows) - len(failed)} agree{_steps(args.scheme)}")
+        for r in failed:
+            print(f"FAILED {r.message}")
+    return 1 if failed else 0

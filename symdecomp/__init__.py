@@ -118,7 +118,8 @@ nothing else.
                    ``c1_sharp_ring``; with many faces, the spectral conditions from the blocks, ``c1_sharp_blocks``); for
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
-                   undecided with the reason (``c1_zoo``); dyadic limit positions for
+                   undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
+                   map at one valence, ``zoo_characteristic``); dyadic limit positions for
                    the patch evaluator (``patch_eval``) and the boundary one (``sharp_patch_eval``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and

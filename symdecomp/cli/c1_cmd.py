@@ -101,7 +101,7 @@ def register(sub) -> None:
                    '{"n", "verdict" (c1/not-c1/undecided), "reason", '
                    '"lambda", "gap", "jacobian_lower_bound", "winding_number", "method", ...}; at sharp vertices also '
                    '"vertex", "lambdas" (lambda_1, lambda_2) and "opening_over_pi"')
-    add_scheme_option(p)
+    add_scheme_option(p, zoo=True)
     add_pool_options(p)
     add_quiet_option(p)
     add_plot_option(p, "the characteristic map at the first, the last and a middle vertex, over the certified bounds of its "
@@ -182,8 +182,9 @@ def _one(n: int, scheme: Scheme, max_depth: int) -> _Row:
 
 def _zoo_one(n: int, scheme, max_depth: int) -> _Row:
     from symdecomp.verify.c1_zoo import c1_zoo
+    from symdecomp.verify.zoo_characteristic import engine_neighbourhood
 
-    r = c1_zoo(scheme, n, max_depth=max_depth)
+    r = c1_zoo(scheme, n, neighbourhood=engine_neighbourhood, max_depth=max_depth)
     return _Row(r.n, r.verdict, r.reason, r.as_json())
 
 

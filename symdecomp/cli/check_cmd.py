@@ -89,7 +89,7 @@ def register(sub) -> None:
                        "decomposition's blocks against the 1-ring matrix built by exact refinement of the tagged mesh "
                        "(chi_S = the product of the blocks' characteristic polynomials, exactly); without, numerically "
                        "(not darts): the blocks' values against the matrix's eigenvalues to --dps/2 digits, on --jobs workers")
-    add_scheme_option(p)
+    add_scheme_option(p, zoo=True)
     add_rings_option(p)
     add_sharp_options(p, count="--k", sharpness_help=SHARPNESS_HELP)
     add_quiet_option(p)

@@ -284,28 +284,49 @@ def add_budget_option(parser: argparse.ArgumentParser) -> None:
                         f"undecided, saying so (default {int(DEFAULT_BUDGET)})")
 
 
-def scheme_by_name(name: str) -> Scheme:
-    """argparse type: a scheme by name (``SCHEMES``) or a TOML scheme file; a bad file is one line naming the key."""
+#: The commands that analyse a scheme of the zoo (a StencilScheme), through its engine.
+ZOO_COMMANDS = ("spectrum", "masks", "check --certify", "c1")
+
+
+def any_scheme_by_name(name: str):
+    """argparse type: a scheme by name (today's ``SCHEMES`` or the zoo's families) or a TOML scheme file of either
+    format; a bad file is one line naming the key."""
     try:
-        scheme = load_scheme(name)
+        return load_scheme(name)
     except SymdecompError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
-    if not isinstance(scheme, Scheme):  # a zoo scheme (StencilScheme): one line until the zoo's engine answers here
-        raise argparse.ArgumentTypeError(f"{name}: a scheme of the zoo ({scheme.topology} topology, {scheme.lattice} lattice), "
-                                         "which this command does not analyse yet")
+
+
+def scheme_by_name(name: str) -> Scheme:
+    """argparse type of the commands that take only 1-ring primal schemes: a zoo scheme is refused in one line."""
+    scheme = any_scheme_by_name(name)
+    if not isinstance(scheme, Scheme):  # a zoo scheme (StencilScheme)
+        raise argparse.ArgumentTypeError(f"{name}: a scheme of the zoo ({scheme.topology} topology, {scheme.lattice} lattice); "
+                                         f"this command takes 1-ring primal schemes; the zoo's are analysed by "
+                                         f"{', '.join(ZOO_COMMANDS)}")
     return scheme
 
 
-def add_scheme_option(parser: argparse.ArgumentParser) -> None:
+def add_scheme_option(parser: argparse.ArgumentParser, *, zoo: bool = False) -> None:
+    """``--scheme NAME|FILE``; with ``zoo``, the command also takes the zoo's schemes (its engine answers)."""
+    names = ", ".join(SCHEMES) + (", " + ", ".join(_zoo_names()) if zoo else "")
     parser.add_argument(
         "--scheme",
-        type=scheme_by_name,
+        type=any_scheme_by_name if zoo else scheme_by_name,
         action=Once,
         default="catmull-clark",  # text: argparse builds the scheme (type) only when a command runs, not for --help
         metavar="NAME|FILE",
-        help=f"subdivision scheme: a known name ({', '.join(SCHEMES)}; default catmull-clark) or a TOML scheme file "
+        help=f"subdivision scheme: a known name ({names}; default catmull-clark) or a TOML scheme file "
         f"{SCHEME_FORMAT}",
     )
+
+
+def _zoo_names() -> tuple[str, ...]:
+    """The zoo's shipped families, read from the package's folder of them (``--help`` imports no sympy)."""
+    from importlib import resources
+
+    folder = resources.files("symdecomp.schemes").joinpath("zoo")
+    return tuple(sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml")))
 
 
 def _rings(text: str) -> int:

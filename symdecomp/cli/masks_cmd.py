@@ -56,7 +56,7 @@ def register(sub) -> None:
     p.add_argument("--digits", type=digits(), action=Once, default=20,
                    help="significant digits of the weights (default 20, at most 1000)")
     flag(p, "--json", help='print {"n", "position", "tangents", "subdominant"}')
-    add_scheme_option(p)
+    add_scheme_option(p, zoo=True)
     add_rings_option(p)
     add_sharp_options(p)
     p.set_defaults(func=run)

@@ -42,7 +42,7 @@ def register(sub) -> None:
                    help="significant digits of the values (default 20, at most 1000)")
     flag(p, "--json", help='print {"n", "scheme", "eigenvalues": [{"value", "multiplicity", "frequencies"}]}')
     flag(p, "--exact", help=f"any-scheme route: print exact expressions also for N > {EXACT_UP_TO} (slower)")
-    add_scheme_option(p)
+    add_scheme_option(p, zoo=True)
     add_rings_option(p)
     add_sharp_options(p)
     add_plot_option(p, "the eigenvalues by the frequency k of the block M_k they come from (by block of the mirror "

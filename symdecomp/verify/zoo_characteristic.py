@@ -23,6 +23,7 @@ import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.null_vector import null_vector
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.ring_masks import _acb_matrix
 from symdecomp.analysis.ring_spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
@@ -44,6 +45,12 @@ C1_DEPTH = 2
 EIGENVECTOR_BITS = 128
 
 
+def _ball(e: Eigenvalue) -> flint.acb:
+    """The eigenvalue's certified ball (a spectrum by frequency holds ``flint.acb`` values)."""
+    assert isinstance(e.value, flint.acb)
+    return e.value
+
+
 def spectral_conditions(spectrum: RingSpectrum, n: int) -> SpectralResult:
     """Reif's spectral conditions from a certified spectrum by frequency (one eigenvalue type: ``Eigenvalue``).
 
@@ -56,10 +63,10 @@ def spectral_conditions(spectrum: RingSpectrum, n: int) -> SpectralResult:
         verdict = C1Verdict.NOT_C1 if len(ones) == 1 else C1Verdict.UNDECIDED
         return SpectralResult(n, verdict, "1 is not a simple eigenvalue of the frequency-0 block", one_simple=False)
     rest = [e for e in values if e is not ones[0]]
-    lam = max(rest, key=lambda e: float(abs(e.value).mid()))
+    lam = max(rest, key=lambda e: float(abs(_ball(e)).mid()))
     others = [e for e in rest if e is not lam]
-    bound = max((abs(e.value).upper() for e in others), default=flint.arb(0))
-    gap, pair = abs(lam.value).lower() - bound, sorted(lam.frequencies)
+    bound = max((abs(_ball(e)).upper() for e in others), default=flint.arb(0))
+    gap, pair = abs(_ball(lam)).lower() - bound, sorted(lam.frequencies)
     if not gap > 0:
         return SpectralResult(n, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {lam.text} is not shown strictly dominant "
                               "(its modulus and the next one's overlap)", second=float(bound))

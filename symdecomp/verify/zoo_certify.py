@@ -31,7 +31,8 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.ring_spectrum import RingEigenvalue, RingSpectrum
+from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.ring_spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
@@ -43,7 +44,7 @@ from symdecomp.verify.result import CrossCheckStatus
 __all__ = ["certify_zoo"]
 
 
-def _hull(e: RingEigenvalue) -> flint.acb:
+def _hull(e: Eigenvalue) -> flint.acb:
     """The ball holding every root of the value's cluster."""
     assert isinstance(e.hull, flint.acb)
     return e.hull

@@ -15,7 +15,7 @@ from symdecomp.validate import DEFAULT_BUDGET
 __all__ = ["register", "run", "write_derivations"]
 
 #: Files this command owns in the output directory (stale ones are removed on regeneration).
-OWNED = re.compile(r"^(main|section-[0-9-]+|beyond-[0-9-]+)\.tex$")
+OWNED = re.compile(r"^(main|section-[0-9-]+|beyond-[0-9-]+|zoo)\.tex$")
 
 
 def register(sub) -> None:
@@ -54,13 +54,15 @@ def all_claims():
 
 
 def write_derivations(out: Path, *, show_progress: bool = False, scheme=None, budget=DEFAULT_BUDGET) -> list[Path]:
-    """Check every claim (for ``scheme``, default Catmull-Clark; ``budget`` seconds each) and write the derivation files to ``out``."""
+    """Check every claim (for ``scheme``, default Catmull-Clark; ``budget`` seconds each) and write the derivation files to ``out``,
+    with the zoo's families in ``zoo.tex`` (:mod:`symdecomp.output.zoo_derivations`)."""
     from symdecomp.claims import check_claim
     from symdecomp.output.latex import derivation_files
+    from symdecomp.output.zoo_derivations import zoo_derivation_files
 
     claims = all_claims()
     pairs = [(c, check_claim(c.label, scheme, budget=budget)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
-    return _write(out, derivation_files(pairs))
+    return _write(out, {**derivation_files(pairs), **zoo_derivation_files()})
 
 
 def _write(out: Path, files: dict[str, str]) -> list[Path]:

@@ -13,7 +13,7 @@ files, so ``symdecomp derive`` writes the same bytes each time. The document sta
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 
 import sympy as sp
 
@@ -172,7 +172,7 @@ def family_latex(scheme: StencilScheme, *, n: int = BLOCK_VALENCE, valences: Seq
     return out
 
 
-def zoo_derivation_files(names: Sequence[str] = tuple(ZOO_FILES)) -> dict[str, str]:
+def zoo_derivation_files(names: Iterable[str] = tuple(ZOO_FILES)) -> dict[str, str]:
     """``{"zoo.tex": document}``: the decomposition written up once, then one section per family in ``names``."""
     body = _DECOMPOSITION + "\n" + wrap_source("\n".join(family_latex(load_zoo(name)) for name in names))
     document = (

@@ -15,7 +15,7 @@ from collections.abc import Callable, Iterable
 
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum
 from symdecomp.claims import Verbatim
-from symdecomp.errors import InvalidTypeError
+from symdecomp.errors import InvalidSchemeError, InvalidTypeError
 from symdecomp.output.report import DIGITS, Paragraph, Report, Section, Table, check_valences
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.verify.c1_zoo import c1_zoo
@@ -93,5 +93,8 @@ def build_zoo_report(scheme: StencilScheme, valences: Iterable[int], *,
     """The report of the zoo scheme ``scheme`` at ``valences`` (``sections``: :data:`ZOO_SECTIONS`, or a progress bar over them)."""
     if not isinstance(scheme, StencilScheme):
         raise InvalidTypeError(f"build_zoo_report takes a scheme of the zoo (a StencilScheme), got {type(scheme).__name__}")
+    if scheme.parameters:
+        raise InvalidSchemeError(f"scheme {scheme.name!r} has free parameters {[str(p) for p in scheme.parameters]}; a report "
+                                 "needs their values for the spectrum: write them into the scheme file")
     shown = check_valences(valences)
     return Report(Verbatim(scheme.name), shown, tuple(build(scheme, shown) for build in sections), CONTENTS)

@@ -73,3 +73,17 @@ def test_report_tex_of_a_zoo_scheme_has_no_figures(tmp_path):
     assert "\\section{C1 at the extraordinary element}" in tex and "\\includegraphics" not in tex
     assert sorted(p.name for p in tmp_path.iterdir()) == ["ds.tex"]
     assert "Scheme doo-sabin, a dual scheme on the quad lattice" in tex
+
+
+def test_a_zoo_file_with_a_free_parameter_is_refused_in_one_line(tmp_path, capsys):
+    text = stencil_scheme_to_text(load_zoo("doo-sabin")).replace('name = "doo-sabin"', 'name = "ds-a"\nparameters = ["a"]')
+    text = text.replace("KroneckerDelta(0, j)/4", "a*KroneckerDelta(0, j)/4")
+    assert "a*KroneckerDelta" in text
+    path = tmp_path / "ds-a.toml"
+    path.write_text(text)
+    out = tmp_path / "r.html"
+    assert main(["report", str(path), "--n", "3", "--out", str(out), "--quiet"]) == 2
+    assert capsys.readouterr().err.strip().splitlines() == [
+        "symdecomp: error: scheme 'ds-a' has free parameters ['a']; a report needs their values for the spectrum: write "
+        "them into the scheme file"]
+    assert not out.exists()

@@ -77,7 +77,7 @@ def test_report_tex_of_a_zoo_scheme_has_no_figures(tmp_path):
 
 def test_a_zoo_file_with_a_free_parameter_is_refused_in_one_line(tmp_path, capsys):
     text = stencil_scheme_to_text(load_zoo("doo-sabin")).replace('name = "doo-sabin"', 'name = "ds-a"\nparameters = ["a"]')
-    text = text.replace("KroneckerDelta(0, j)/4", "a*KroneckerDelta(0, j)/4")
+    text = text.replace("KroneckerDelta(0, j)/4", "a*KroneckerDelta(0, j)/4 + (1 - a)/(4*m)")
     assert "a*KroneckerDelta" in text
     path = tmp_path / "ds-a.toml"
     path.write_text(text)

@@ -124,7 +124,7 @@ def factored_charpoly(block: sp.MatrixBase) -> sp.Expr:
     return sp.factor(sp.together(sp.expand(p)), LAM).xreplace(atoms)
 
 
-def _blocks_latex(scheme: StencilScheme, blocks: ZooBlocks) -> str:
+def _blocks_latex(blocks: ZooBlocks) -> str:
     n = blocks.n
     centre = ("the centre and " if blocks.has_centre else "")
     classes = f"{blocks.class_count} orbit class{'es' if blocks.class_count > 1 else ''}"
@@ -165,7 +165,7 @@ def family_latex(scheme: StencilScheme, *, n: int = BLOCK_VALENCE, valences: Seq
     symbols = rule_symbols(scheme)
     if symbols:
         out += "\\subsection*{The rules' symbols}\n" + "\n".join(_symbol_latex(*s) for s in symbols) + "\n"
-    out += "\\subsection*{The frequency blocks}\n" + _blocks_latex(scheme, zoo_blocks(zoo_matrix(scheme, n)))
+    out += "\\subsection*{The frequency blocks}\n" + _blocks_latex(zoo_blocks(zoo_matrix(scheme, n)))
     out += "\n\\subsection*{The spectrum}\n" + text_latex(
         "The eigenvalues at each valence with their multiplicities and the frequencies whose blocks hold them "
         "(exact where a factor has degree at most 2, otherwise the certified ball's midpoint):") + "\n" + _spectrum_table(scheme, valences)

@@ -28,8 +28,8 @@ def test_doo_sabins_spectrum_rows_are_the_whole_matrixs_eigenvalues():
     assert rows == sp.roots(sp.Poly((lam * sp.eye(S.rows) - S).det(method="berkowitz"), lam))
 
 
-def test_doo_sabin_is_c1_at_each_valence_as_peters_and_reif_show():
-    """Peters and Reif 1998: Doo-Sabin is C1 at every valence; the report's rows say c1 with winding number 1."""
+def test_doo_sabin_is_c1_at_the_valences_of_the_report():
+    """The report's C1 rows are the dual route's verdicts: c1, subdominant 1/2, winding number 1."""
     rows = _table(build_zoo_report(load_zoo("doo-sabin"), [3, 5]), "C1 at the extraordinary element").rows
     assert [(r[0], r[1], r[2], r[3]) for r in rows] == [("3", "c1", "0.5", "1"), ("5", "c1", "0.5", "1")]
 

@@ -144,7 +144,9 @@ nothing else.
                    (``notation``), example CB-matrices (``cb_examples``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
                    ``texlayout``), results in a notebook: short HTML tables and LaTeX (``display``),
-                   the artifact table's columns (``artifact_table``), Stam's data file (``evaldata``), meshes
+                   the artifact table's columns (``artifact_table``), the zoo's families derived
+                   by the engine, the file zoo.tex (``zoo_derivations``), the report of a zoo scheme
+                   (``report_zoo``), Stam's data file (``evaldata``), meshes
                    with per-vertex colours as PLY and OBJ (``colored_mesh``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary

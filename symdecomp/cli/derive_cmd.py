@@ -15,7 +15,7 @@ from symdecomp.validate import DEFAULT_BUDGET
 __all__ = ["register", "run", "write_derivations"]
 
 #: Files this command owns in the output directory (stale ones are removed on regeneration).
-OWNED = re.compile(r"^(main|section-[0-9-]+|beyond-[0-9-]+)\.tex$")
+OWNED = re.compile(r"^(main|section-[0-9-]+|beyond-[0-9-]+|zoo)\.tex$")
 
 
 def register(sub) -> None:
@@ -27,7 +27,9 @@ def register(sub) -> None:
         "paper and a main.tex that inputs them after a summary table. The output is deterministic; "
         "compile it with `latexmk -pdf main.tex` (or pdflatex, twice). Files of earlier runs that no "
         "longer correspond to a section are removed; other files in the directory are left alone. "
-        "Exit status 1 if a check failed to run (status 'error'; the files are written all the same).",
+        "Exit status 1 if a check failed to run (status 'error'; the files are written all the same). It also writes "
+        "zoo.tex, a document of its own: the paper's decomposition applied to each shipped family of the zoo (the rules' "
+        "symbols, the frequency blocks and their factored characteristic polynomials, the spectrum at a few valences).",
     )
     p.add_argument("--out", action=Once, default="derivations",
                    help="output directory (default: derivations/), checked before any claim is computed; written as a "
@@ -53,14 +55,23 @@ def all_claims():
     return all_claims()
 
 
+def zoo_files(show_progress: bool = False) -> dict[str, str]:
+    """``zoo.tex``: the zoo's families derived by the engine (:func:`symdecomp.output.zoo_derivations.zoo_derivation_files`)."""
+    from symdecomp.output.zoo_derivations import zoo_derivation_files
+    from symdecomp.schemes.stencil_files import ZOO_FILES
+
+    return zoo_derivation_files(progress(list(ZOO_FILES), len(ZOO_FILES), "deriving the zoo", enabled=show_progress))
+
+
 def write_derivations(out: Path, *, show_progress: bool = False, scheme=None, budget=DEFAULT_BUDGET) -> list[Path]:
-    """Check every claim (for ``scheme``, default Catmull-Clark; ``budget`` seconds each) and write the derivation files to ``out``."""
+    """Check every claim (for ``scheme``, default Catmull-Clark; ``budget`` seconds each) and write the derivation files to ``out``,
+    with the zoo's families in ``zoo.tex`` (:mod:`symdecomp.output.zoo_derivations`)."""
     from symdecomp.claims import check_claim
     from symdecomp.output.latex import derivation_files
 
     claims = all_claims()
     pairs = [(c, check_claim(c.label, scheme, budget=budget)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
-    return _write(out, derivation_files(pairs))
+    return _write(out, {**derivation_files(pairs), **zoo_files(show_progress)})
 
 
 def _write(out: Path, files: dict[str, str]) -> list[Path]:

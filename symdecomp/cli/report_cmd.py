@@ -17,7 +17,7 @@ import argparse
 import re
 from pathlib import Path
 
-from symdecomp.cli.common import LIMITS, SCHEME_FORMAT, Once, add_budget_option, progress, scheme_by_name, valence_range
+from symdecomp.cli.common import LIMITS, SCHEME_FORMAT, Once, add_budget_option, any_scheme_by_name, is_stencil_scheme, progress, valence_range
 from symdecomp.cli.files import check_output_file, write_output_file, write_output_files
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError, UnavailableError
@@ -41,10 +41,13 @@ def register(sub) -> None:
         "(one self-contained file: formulas as MathML, figures as inline SVG) or .tex (LaTeX source; figures written "
         "next to it as STEM-NAME.pdf). Running it twice writes the same bytes. Catmull-Clark at 3:8 takes about half a "
         "minute, most of it the claims' checks. A scheme with free parameters is refused at once (a report needs their "
-        "values), and --out is checked first: a FIFO must have its reader running.",
+        "values), and --out is checked first: a FIFO must have its reader running. A scheme of the zoo (doo-sabin, midedge, "
+        "sqrt3, modified-butterfly, or a file in their format) gets its spectrum at each valence and its C1 verdicts, through "
+        "the zoo's engine (no claims, masks, artifacts or figures: see 'masks', 'check --certify' and 'derive').",
     )
-    p.add_argument("scheme", type=scheme_by_name, metavar="SCHEME",
-                   help=f"a known scheme name (catmull-clark, loop, ...) or a TOML scheme file {SCHEME_FORMAT}")
+    p.add_argument("scheme", type=any_scheme_by_name, metavar="SCHEME",
+                   help=f"a known scheme name (catmull-clark, loop, ..., or a family of the zoo: doo-sabin, ...) or a TOML "
+                   f"scheme file {SCHEME_FORMAT}")
     p.add_argument("--n", dest="valences", type=valence_range("report"), action=Once, required=True, metavar="A:B",
                    help=f"valences: an inclusive range A:B or a single N (at most {LIMITS['report'][0]})")
     p.add_argument("--out", action=Once, required=True, metavar="FILE",
@@ -72,6 +75,8 @@ def run(args: argparse.Namespace) -> int:
     from symdecomp.output.report import FIGURES, SECTIONS, build_report, check_values
 
     fmt = _format(args.out)
+    if is_stencil_scheme(args.scheme):
+        return _run_zoo(args, fmt)
     check_values(args.scheme, SECTIONS)  # free parameters: refused now, not after the claims' minutes
     out = check_output_file(args.out)
     _require_matplotlib()
@@ -96,6 +101,30 @@ def run(args: argparse.Namespace) -> int:
             # the document and its figures all or nothing: a full disk leaves no new figure beside an old document
             write_output_files({**{figure_paths[name]: data for name, data in figures.items()},
                                 out: _with_figure_names(tex, out, figures)})
+    print(out)
+    return 0
+
+
+def _run_zoo(args: argparse.Namespace, fmt: str) -> int:
+    """``report`` for a scheme of the zoo: its spectrum and C1 sections (:mod:`symdecomp.output.report_zoo`), no figures."""
+    from symdecomp.output.report_zoo import ZOO_SECTIONS, build_zoo_report
+
+    out = check_output_file(args.out)
+    if fmt == ".pdf":
+        from symdecomp.output.report_tex import require_pdflatex
+
+        require_pdflatex()
+    sections = progress(ZOO_SECTIONS, len(ZOO_SECTIONS), "report", enabled=not args.quiet)
+    report = build_zoo_report(args.scheme, args.valences, sections=sections)
+    if fmt == ".html":
+        from symdecomp.output.report_html import report_html
+
+        write_output_file(out, report_html(report))
+    else:
+        from symdecomp.output.report_tex import compile_pdf, report_latex
+
+        tex, figures = report_latex(report)
+        write_output_file(out, compile_pdf(tex, figures) if fmt == ".pdf" else tex)
     print(out)
     return 0
 

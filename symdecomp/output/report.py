@@ -123,6 +123,9 @@ class Report:
     scheme: Verbatim
     valences: tuple[int, ...]
     sections: tuple[Section, ...]
+    #: What the report holds, as package prose (``$...$`` math) after "Everything symdecomp computes ... by the analysis
+    #: of <the paper>:"; ``None``: the claims, spectrum, masks, C1 and figures of a 1-ring primal scheme's report.
+    contents: str | None = None
 
 
 def _para(*parts) -> Paragraph:

@@ -163,7 +163,8 @@ def report_html(report: Report) -> str:
         f"<h1>Report on the subdivision scheme {name}</h1>\n"
         f"<p>Everything symdecomp computes about the scheme {name} at the valences n = {valences[0]}, …, {valences[-1]}, "
         "by the analysis of I. P. Ivrissimtzis, R. Zayer, H.-P. Seidel, <em>Polygonal decompositions of quadrilateral "
-        "subdivision meshes</em>: the paper's claims checked for the scheme, its spectrum, its limit and tangent masks, "
-        "Reif's test for C<sup>1</sup> and figures. Every formula is printed by sympy from the computed objects.</p>\n"
+        "subdivision meshes</em>: " + (_part(report.contents) if report.contents is not None else "the paper's claims checked "
+        "for the scheme, its spectrum, its limit and tangent masks, Reif's test for C<sup>1</sup> and figures")
+        + ". Every formula is printed by sympy from the computed objects.</p>\n"
         + body + "</body>\n</html>\n"
     )

@@ -32,8 +32,9 @@ def umask_022():
 
 @pytest.fixture
 def no_claims(monkeypatch):
-    """derive without computing: the document of no claims (the writing is what these tests are about)."""
+    """derive without computing: the document of no claims and no zoo (the writing is what these tests are about)."""
     monkeypatch.setattr(derive_cmd, "all_claims", lambda: [])
+    monkeypatch.setattr(derive_cmd, "zoo_files", lambda show_progress=False: {})
 
 
 def _device_copy(path: Path, device: str) -> None:

@@ -21,8 +21,8 @@ ZOO = {"interp": _corner_scheme("interp", lattice="triangle", topology="primal",
 @pytest.fixture
 def zoo(monkeypatch):
     """``--scheme interp`` and ``--scheme ds`` name the two stencil schemes above (the zoo's files are not read here)."""
-    known = common.scheme_by_name
-    monkeypatch.setattr(common, "scheme_by_name", lambda text: ZOO[text] if text in ZOO else known(text))
+    known = common.any_scheme_by_name
+    monkeypatch.setattr(common, "any_scheme_by_name", lambda text: ZOO[text] if text in ZOO else known(text))
 
 
 def test_no_spline_patch_is_undecided_with_the_reason(zoo, capsys):
@@ -46,7 +46,9 @@ def test_refusals_are_one_line(zoo, capsys):
         assert len(err) == 1 and text in err[0]
 
 
-def test_the_dual_route_needs_the_engine(zoo, capsys):
-    code = main(["c1", "--scheme", "ds", "--n", "5"])
-    err = capsys.readouterr().err.strip().splitlines()
-    assert code == 3 and len(err) == 1 and "c1 for 'ds' needs the zoo engine's neighbourhood at valence 5" in err[0]
+def test_the_dual_route_runs_on_the_engines_neighbourhood(zoo, capsys):
+    assert main(["c1", "--scheme", "ds", "--n", "5", "--json"]) == 0
+    (row,) = json.loads(capsys.readouterr().out)["rows"]
+    assert row["verdict"] == "c1" and row["frequency"] == 1 and row["winding_number"] == 1
+
+

@@ -175,15 +175,17 @@ def _lambda1(n: int, values: tuple[Eigenvalue, ...]) -> tuple[Eigenvalue | None,
     return lam, ""
 
 
-def _defective(blocks: ZooBlocks, e: Eigenvalue) -> bool | None:
-    """Whether ``e`` has a Jordan block: at each frequency where it is a multiple root, its null vectors (an exact rank
-    over ``Q(zeta_4n)``) against its multiplicity there; ``None`` when ``e`` or an entry is not a number of that field."""
-    if e.jordan is not None:
-        return max(e.jordan) > 1
+def _defective(blocks: ZooBlocks, e: Eigenvalue) -> tuple[int, ...] | None:
+    """The frequencies at which ``e`` has a Jordan block (empty: none): at each frequency where it is a multiple root, its
+    null vectors (an exact rank over ``Q(zeta_4n)``) against its multiplicity there; ``None`` when that is not decided (``e``
+    or an entry is not a number of that field), unless the engine's Jordan structure says there is no block."""
+    if e.jordan is not None and max(e.jordan) == 1:
+        return ()
     n, by_k = blocks.n, Counter(k for k, _, _ in e.members)
     if e.exact is None or not by_k:
         return None
     field = QQ.algebraic_field(sp.exp(2 * sp.pi * sp.I / (4 * n)))
+    found: list[int] = []
     for k, m in sorted(by_k.items()):
         if m == 1:
             continue  # a simple root at its frequency: no Jordan block there
@@ -194,8 +196,10 @@ def _defective(blocks: ZooBlocks, e: Eigenvalue) -> bool | None:
         except (sp.polys.polyerrors.CoercionFailed, NotImplementedError, ValueError):
             return None
         if B.shape[0] - D.rank() < m:
-            return True
-    return False
+            found.append(k)
+    if e.jordan is not None and not found:  # pragma: no cover - the engine's ranks and these agree
+        return None
+    return tuple(found)
 
 
 def _decide(n: int, lam: Eigenvalue, others: tuple[Eigenvalue, ...], blocks: ZooBlocks) -> tuple[CurvatureRegime, str, tuple[ZooMu, ...]]:
@@ -212,8 +216,11 @@ def _decide(n: int, lam: Eigenvalue, others: tuple[Eigenvalue, ...], blocks: Zoo
     if 0 not in signs:
         return curvature_regime(-1), f"|mu| = {top.eigenvalue.text} < lambda_1^2", mu
     defective = [_defective(blocks, r.eigenvalue) for r in rows if r.comparison == 0]
-    if True in defective:
-        return curvature_regime(0, defective=True), "|mu| = lambda_1^2 exactly, with a Jordan block", mu
+    at = sorted({k for d in defective if d for k in d})
+    if at:
+        kinds = ", ".join(dict.fromkeys(frequency_kind(k, n) for k in at))
+        where = f"k = {', '.join(map(str, at))} ({kinds})"
+        return curvature_regime(0, defective=True), f"|mu| = lambda_1^2 exactly, with a Jordan block at frequencies {where}", mu
     if None not in defective:
         return curvature_regime(0), "|mu| = lambda_1^2 exactly, no Jordan block", mu
     return CurvatureRegime.UNDECIDED, "|mu| = lambda_1^2 exactly; its Jordan structure is not decided", mu

@@ -27,8 +27,8 @@ TIE = 1e-4
 
 
 def _matrix(name: str, n: int) -> np.ndarray:
-    if name == "doo-sabin":
-        return ref.dual_matrix(n, ref.doo_sabin_weights)[0]
+    if name in ("doo-sabin", "midedge"):
+        return ref.dual_matrix(n, ref.doo_sabin_weights if name == "doo-sabin" else ref.midedge_weights)[0]
     return {"sqrt3": ref.sqrt3_matrix, "modified-butterfly": ref.butterfly_matrix}[name](n)
 
 
@@ -85,6 +85,12 @@ def test_doo_sabin_regime(n):
 def test_modified_butterfly_regime(n):
     a = _agrees("modified-butterfly", n)
     assert a.density == 0 and a.mu[0].comparison == 0
+
+
+@pytest.mark.parametrize("n", range(4, 9))
+def test_midedge_regime(n):
+    a = _agrees("midedge", n)
+    assert a.mu[0].comparison == (0 if n == 4 else -1)  # the regular face size ties; a flat spot elsewhere
 
 
 def test_not_applicable_names_the_condition():

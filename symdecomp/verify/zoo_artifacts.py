@@ -24,7 +24,7 @@ the central surface) needs their patch and masks: :data:`NOT_COMPUTED` says so i
 >>> from symdecomp.schemes.stencil_files import load_zoo
 >>> a = zoo_artifacts(load_zoo("modified-butterfly"), 3)
 >>> a.regime.value, str(a.lambda1.exact), str(a.lambda1_squared), [str(m.eigenvalue.exact) for m in a.mu]
-('zero', '1/2', '1/4', ['1/4'])
+('bounded', '1/2', '1/4', ['1/4'])
 """
 
 from __future__ import annotations

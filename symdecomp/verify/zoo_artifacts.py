@@ -77,10 +77,11 @@ def _is_root(e: Eigenvalue, c: sp.Expr, n: int) -> bool:
     return bool(ks)
 
 
-def exact_sign(a: Eigenvalue | None, b: Eigenvalue | None, n: int, *, square: bool = False) -> int | None:
+def exact_sign(a: Eigenvalue | None, b: Eigenvalue | None, n: int, *, square: bool = False, n_b: int | None = None) -> int | None:
     """The sign of ``|a| - |b|`` (``|b|^2`` with ``square``) from the certified balls; a tie shown exactly where both
     values are exact and real (the difference's minimal polynomial is ``x``), or where one is exact and the value it
-    asks of the other is a root of the other's factor in its ball (:func:`_is_root`); ``None``: not decided."""
+    asks of the other is a root of the other's factor in its ball (:func:`_is_root`); ``None``: not decided.
+    ``n``: ``a``'s valence, and ``b``'s unless ``n_b`` is given."""
     if a is None or b is None:
         return None
     with flint.ctx.workprec(256):
@@ -101,7 +102,7 @@ def exact_sign(a: Eigenvalue | None, b: Eigenvalue | None, n: int, *, square: bo
         return 0 if sp.Poly(sp.minimal_polynomial(d, _X), _X) == sp.Poly(_X, _X) else None
     if p is not None and real[0] and (v.real > 0 or v.real < 0):  # |b| (or |b|^2) = |a|: b is sqrt(|a|) (or |a|), b's sign
         target = sp.sqrt(sp.Abs(p)) if square else sp.Abs(p)
-        return 0 if _is_root(b, target if v.real > 0 else -target, n) else None
+        return 0 if _is_root(b, target if v.real > 0 else -target, n if n_b is None else n_b) else None
     if q is not None and real[1] and (u.real > 0 or u.real < 0):  # |a| = |b|^2 (or |b|): a is that, with a's sign
         target = q ** 2 if square else sp.Abs(q)
         return 0 if _is_root(a, target if u.real > 0 else -target, n) else None
@@ -240,14 +241,13 @@ def zoo_artifacts(scheme: StencilScheme, n: int, depth: int | None = None) -> Zo
                             f"{REGIME_TEXT[CurvatureRegime.NOT_APPLICABLE]}: {why}")
     regime, reason, mu = _decide(n, lam, values[2:], blocks)
     square = None if lam.exact is None else sp.expand(lam.exact ** 2)
-    regular, density = _density(scheme, n, lam, spectrum.rings)
+    regular, density = _density(scheme, zm.neighbourhood.regular_valence, lam, n, spectrum.rings)
     return ZooArtifacts(n, scheme.name, scheme.steps, spectrum.rings, regime, reason, lam, square, mu, regular, density)
 
 
-def _density(scheme: StencilScheme, n: int, lam: Eigenvalue, depth: int) -> tuple[Eigenvalue | None, int | None]:
-    """The regular valence's ``lambda_1`` (the same engine at the neighbourhood's regular valence) and the sign against it."""
-    regular_n = zoo_matrix(scheme, 3, depth).neighbourhood.regular_valence
-    if lam.frequencies and n == regular_n:
+def _density(scheme: StencilScheme, regular_n: int, lam: Eigenvalue, n: int, depth: int) -> tuple[Eigenvalue | None, int | None]:
+    """The ``lambda_1`` of the same engine at the neighbourhood's regular valence, and the sign of ``lambda_1 -`` it."""
+    if n == regular_n:
         return lam, 0  # the regular valence: the same eigenvalue
     reg, _ = _lambda1(regular_n, zoo_spectrum(scheme, regular_n, depth, jordan=False).eigenvalues)
-    return reg, exact_sign(lam, reg, regular_n)
+    return reg, exact_sign(lam, reg, n, n_b=regular_n)

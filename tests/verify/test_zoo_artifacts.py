@@ -103,3 +103,12 @@ def test_not_applicable_names_the_condition():
 def test_a_scheme_that_is_not_a_stencil_scheme_is_refused():
     with pytest.raises(InvalidTypeError, match="scheme"):
         zoo_artifacts("sqrt3", 3)
+
+
+@pytest.mark.parametrize("name", ["doo-sabin", "sqrt3", "modified-butterfly"])
+def test_a_larger_neighbourhood_adds_nothing_above_mu(name):
+    """One ring more only adds eigenvalues of smaller modulus: the regime and mu are those of the smallest neighbourhood."""
+    small = zoo_artifacts(load_zoo(name), 5)
+    large = zoo_artifacts(load_zoo(name), 5, small.depth + 1)
+    assert large.depth == small.depth + 1 and (large.regime, large.reason) == (small.regime, small.reason)
+    assert [m.eigenvalue.exact for m in large.mu] == [m.eigenvalue.exact for m in small.mu]

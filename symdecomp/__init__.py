@@ -123,7 +123,8 @@ nothing else.
                    the patch evaluator (``patch_eval``) and the boundary one (``sharp_patch_eval``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and
-                   the artifact indicators (``artifacts``); certified shape at the vertex: the sign
+                   the artifact indicators (``artifacts``; a StencilScheme of the zoo's density and curvature regime from its
+                   engine's spectrum, ``zoo_artifacts``); certified shape at the vertex: the sign
                    of the Gaussian curvature of a central surface (``curvature``), elliptic,
                    hyperbolic or hybrid, and the shape chart (``shape``); the certificate of the mirror
                    decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``), its numeric check against
@@ -169,7 +170,8 @@ nothing else.
                    ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
-                   (``sharp``), the commands spectrum, masks and check for a scheme of the zoo (``zoo``),
+                   (``sharp``), the commands spectrum, masks and check for a scheme of the zoo (``zoo``), and artifacts
+                   (``artifacts_zoo``),
                    the one shape of every command's JSON output and its JSON Schema
                    (``json_envelope``), the one progress display of long commands (``progress``), the
                    option --plot FILE of the commands that draw (``plot_file``)
@@ -256,6 +258,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
     "symdecomp.verify.sharp_certify": ("SharpCertificate", "certify_sharp"),
     "symdecomp.verify.zoo_certify": ("certify_zoo",),
+    "symdecomp.verify.zoo_artifacts": ("ZooArtifacts", "zoo_artifacts"),
     "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),
 }
 

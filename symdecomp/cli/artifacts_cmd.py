@@ -17,6 +17,7 @@ from symdecomp.cli.common import (
     add_scheme_option,
     estimate_seconds,
     flag,
+    is_stencil_scheme,
     print_json,
     progress,
     valence_range,
@@ -50,8 +51,9 @@ def register(sub) -> None:
         "interval arithmetic. Then the artifact indicators: density (lambda_1 against the regular 1/2), negative "
         "weights in the limit and tangent masks, the characteristic map's ring spacing, and the shape class of the "
         "central surface (elliptic, hyperbolic, hybrid). Needs Reif's spectral "
-        "conditions (else 'not applicable') and Catmull-Clark or Loop regular rules. Exit status 1 if a valence's "
-        "regime is undecided.",
+        "conditions (else 'not applicable') and Catmull-Clark or Loop regular rules. A scheme of the zoo (doo-sabin, "
+        "sqrt3, ...) gets density and the curvature regime from its engine's certified spectrum by frequency (over the "
+        "steps that return its lattice). Exit status 1 if a valence's regime is undecided.",
         epilog=_LEGEND,
     )
     p.add_argument("--n", dest="valences", type=valence_range("artifacts"), action=Once, metavar="A:B",
@@ -64,7 +66,7 @@ def register(sub) -> None:
          '{"n", "density", "negative_weights", '
          '"ring_spacing_ratio", "sector_angle_ratio", "curvature": {"regime", "reason", "cause", "lambda1", '
          '"lambda1_squared", "mu": [{"value", "frequency", "multiplicity", "kind", "comparison", "exact"}], ...}}')
-    add_scheme_option(p)
+    add_scheme_option(p, zoo=True)
     add_pool_options(p)
     add_quiet_option(p)
     add_plot_option(p, "the regime chart over n: lambda_1, lambda_1^2 and |mu|, and |mu| / lambda_1^2 against 1, coloured by "
@@ -88,6 +90,10 @@ def run(args) -> int:
     from symdecomp.errors import InvalidInputError
     from symdecomp.output.artifact_table import table
 
+    if is_stencil_scheme(args.scheme):  # a scheme of the zoo: its engine (symdecomp.cli.artifacts_zoo)
+        from symdecomp.cli.artifacts_zoo import run_zoo_artifacts
+
+        return run_zoo_artifacts(args, check_plot(args))
     if args.every_n and args.valences is not None:
         raise InvalidInputError("--every-n and --n cannot be used together: --every-n covers every valence")
     if args.every_n:

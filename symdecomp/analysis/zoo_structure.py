@@ -38,7 +38,7 @@ from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_symbols import FamilySymbol, family_symbol
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.stencil_rows import is_zero
-from symdecomp.schemes.stencils import J, M, N, KindRules, Rule, StencilScheme, Term
+from symdecomp.schemes.stencils import J, KindRules, M, N, Rule, StencilScheme, Term
 from symdecomp.symbols import omega as OMEGA
 
 __all__ = ["ZooStructure", "zoo_structure", "READ_AT"]

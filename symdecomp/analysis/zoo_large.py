@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass
+from typing import Any
 
 import flint
 import sympy as sp
@@ -50,7 +51,7 @@ class StructuralFactors:
     other: tuple[Factor, ...]
 
     @functools.cached_property
-    def _evaluators(self) -> tuple[_Roots, _Roots, list]:
+    def _evaluators(self) -> tuple[_Roots, _Roots, list[Any]]:
         variables = (N, *self.structure.sigma, *self.atoms)
         atoms = [compile_expression(e, (N,), "arb") for e in self.atoms.values()]
         return _Roots(self.zero, variables), _Roots(self.other, (OMEGA, COSK, *variables)), atoms
@@ -99,6 +100,6 @@ def frequency_balls(factors: StructuralFactors, n: int, k: int) -> list[tuple[fl
         w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
         roots, args = other, (w, w.real, *values)
     try:
-        return roots.at(args)
+        return [(b, i, j) for b, i, j in roots.at(args) if isinstance(b, flint.acb)]  # Arb balls, each of them
     except ValueError:
         raise PrecisionError(f"n = {n}, frequency {k}: a factor has a repeated root there (Arb cannot isolate it)") from None

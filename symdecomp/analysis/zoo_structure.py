@@ -43,6 +43,11 @@ from symdecomp.symbols import omega as OMEGA
 
 __all__ = ["ZooStructure", "zoo_structure", "READ_AT"]
 
+#: ``{(c, c', d): entry}``: the band part of the blocks by classes and sector offset.
+Band = dict[tuple[int, int, int], sp.Expr]
+#: ``{(c, c', t, e): {j: coef}}``: family ``t`` at shift ``e``, its coefficient at each ``j``.
+Groups = dict[tuple[int, int, int, int], dict[int, sp.Expr]]
+
 #: The valence the blocks are read at (checked at the next two): above every valence a rule names (3..6 in the
 #: shipped files) and wide enough that a band of a few sectors is told apart from a family around the centre.
 READ_AT = 16
@@ -217,13 +222,13 @@ def _scalars(expr: sp.Expr, families: tuple[_Family, ...], n: sp.Expr, n0: int) 
 
 
 
-def _groups(offsets: dict[int, sp.Matrix], n0: int, families: tuple[_Family, ...]) -> tuple[dict, dict]:
+def _groups(offsets: dict[int, sp.Matrix], n0: int, families: tuple[_Family, ...]) -> tuple[Band, Groups]:
     """``({(c, c', d): band}, {(c, c', t, e): {j: coef}})`` from the blocks read with markers.
 
     A family with one weight for every ``j`` (marked ``j = -1``) enters every offset: its coefficient far from
     the centre's sector is its group's (shift 0), the differences near it are band entries."""
-    band: dict[tuple[int, int, int], sp.Expr] = {}
-    groups: dict[tuple[int, int, int, int], dict[int, sp.Expr]] = {}
+    band: Band = {}
+    groups: Groups = {}
     uniform: dict[tuple[int, int, int], dict[int, sp.Expr]] = {}
     for d, A in offsets.items():
         for c in range(A.rows):
@@ -262,7 +267,7 @@ def _reach(n0: int, *offsets: int) -> None:
         raise NotApplicableError(f"the stencils reach {max(map(abs, offsets))} sectors, too far to read at n = {n0}")
 
 
-def _form(scheme: StencilScheme, n0: int) -> tuple[ZooStructure, dict, dict, tuple[_Family, ...]]:
+def _form(scheme: StencilScheme, n0: int) -> tuple[ZooStructure, Band, Groups, tuple[_Family, ...]]:
     """The structure read at ``n0``, with its band and groups (for the checks)."""
     blocks, centre_row, families = _read(scheme, n0)
     K = blocks.class_count
@@ -331,7 +336,7 @@ def _affine(at_n0: sp.Expr, at_n1: sp.Expr, families: tuple[_Family, ...], n0: i
     return sp.expand(total.xreplace(weights))
 
 
-def _predicted(band: dict, groups: dict, families: tuple[_Family, ...], n0: int, n: int, key: tuple[int, int, int]) -> sp.Expr:
+def _predicted(band: Band, groups: Groups, families: tuple[_Family, ...], n0: int, n: int, key: tuple[int, int, int]) -> sp.Expr:
     """The entry ``A_d[c, c']`` at valence ``n`` that the form read at ``n0`` predicts."""
     c, e, d = key
     total = _scalars(band.get((c, e, d), 0), families, sp.Integer(n), n0) if (c, e, d) in band else sp.Integer(0)
@@ -342,7 +347,7 @@ def _predicted(band: dict, groups: dict, families: tuple[_Family, ...], n0: int,
     return sp.expand(total)
 
 
-def _check(scheme: StencilScheme, st: ZooStructure, band: dict, groups: dict, families: tuple[_Family, ...], n: int) -> None:
+def _check(scheme: StencilScheme, st: ZooStructure, band: Band, groups: Groups, families: tuple[_Family, ...], n: int) -> None:
     """The explicit matrix at ``n`` is, entry by entry and exactly, the form read at :attr:`ZooStructure.read_at`."""
     explicit = zoo_blocks(zoo_matrix(scheme, n))
     K, n0 = st.class_count, st.read_at

@@ -84,7 +84,7 @@ def _apart(items: list[tuple[flint.acb, object]], groups: list[list[int]]) -> bo
     return True
 
 
-def _key(factors: StructuralFactors, n: int, k: int, i: int, j: int, cache: dict) -> object:
+def _key(factors: StructuralFactors, n: int, k: int, i: int, j: int, cache: dict[object, object]) -> object:
     """What makes two roots equal by an exact argument (module docstring); equal keys, equal values."""
     st = factors.structure
     ks = signed_offset(k, n)
@@ -104,7 +104,7 @@ def _key(factors: StructuralFactors, n: int, k: int, i: int, j: int, cache: dict
     return ("value", cache[key])
 
 
-def _symmetric(root: sp.Expr, key: tuple, cache: dict) -> bool:
+def _symmetric(root: sp.Expr, key: tuple[bool, int, int], cache: dict[object, object]) -> bool:
     if ("symmetric", key) not in cache:
         cache[("symmetric", key)] = sp.simplify(root - root.xreplace({OMEGA: 1 / OMEGA})) == 0
     return bool(cache[("symmetric", key)])
@@ -117,7 +117,7 @@ def structural_zoo_certificate(scheme: StencilScheme, n: int, *, digits: int = 2
     st = factors.structure
     prec = max(128, 4 * digits + 64)
     items: list[tuple[flint.acb, object]] = []
-    cache: dict = {}
+    cache: dict[object, object] = {}
     try:
         with flint.ctx.workprec(prec):
             for k in range(n):
@@ -130,7 +130,8 @@ def structural_zoo_certificate(scheme: StencilScheme, n: int, *, digits: int = 2
     groups = proved_distinct_groups(items)
     groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
     apart = _apart(items, groups)
-    equal = all(len({_key(factors, n, *items[x][1], cache) for x in g}) == 1 for g in groups)  # type: ignore[misc]
+    members: list[tuple[int, int, int]] = [m for _, m in items]  # type: ignore[misc]  # (k, factor, root) of each ball
+    equal = all(len({_key(factors, n, *members[x], cache) for x in g}) == 1 for g in groups)
     certified = apart and equal
     note = "multiplicities certified" if certified else "multiplicities not certified (a group of balls holds roots not proved equal)"
     method = (f"S = the bordered block-circulant matrix of the structural blocks (read at n = {st.read_at}, checked exactly at "

@@ -81,7 +81,8 @@ nothing else.
                    labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
                    ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face
                    or ring family's symbol for every size (``zoo_symbols``), the blocks for every valence read
-                   once (``zoo_structure``) and their spectra at large n (``zoo_large``);
+                   once (``zoo_structure``), their factors for every n (``zoo_large``) and spectra at large n
+                   (``zoo_large_spectrum``);
                    what the curvature regimes at the vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``; the file's valences rounded straight from those columns,

@@ -159,6 +159,8 @@ class ZooStructure:
     sigma: tuple[sp.Symbol, ...]
     #: The smallest valence the form holds at (every family's symbol valid, the band apart).
     valid_from: int
+    #: The ring depth of the neighbourhood the matrix is on.
+    depth: int = 1
 
     @functools.cached_property
     def _compiled(self) -> tuple[Any, ...]:
@@ -192,8 +194,8 @@ class ZooStructure:
         return flint.acb_mat(rows)
 
 
-def _read(scheme: StencilScheme, n0: int) -> tuple[Any, dict[int, sp.Matrix], tuple[_Family, ...]]:
-    """The blocks read with markers, the centre's row by sector offset (``1 x K``), the marked terms."""
+def _read(scheme: StencilScheme, n0: int) -> tuple[Any, dict[int, sp.Matrix], tuple[_Family, ...], int]:
+    """The blocks read with markers, the centre's row by sector offset (``1 x K``), the marked terms, the depth."""
     marked, families = _marked(scheme, n0)
     zm = zoo_matrix(marked, n0)
     blocks, nb = zoo_blocks(zm), zm.neighbourhood
@@ -204,7 +206,7 @@ def _read(scheme: StencilScheme, n0: int) -> tuple[Any, dict[int, sp.Matrix], tu
         o = index[nb.centre]
         row = {signed_offset(d, n0): sp.Matrix(1, blocks.class_count, [zm.matrix[o, at[(d, c)]] for c in range(blocks.class_count)])
                for d in range(n0)}
-    return blocks, row, families
+    return blocks, row, families, zm.depth
 
 
 def _weight_at(family: _Family, n: int | sp.Expr, j: int | sp.Expr) -> sp.Expr:
@@ -269,7 +271,7 @@ def _reach(n0: int, *offsets: int) -> None:
 
 def _form(scheme: StencilScheme, n0: int) -> tuple[ZooStructure, Band, Groups, tuple[_Family, ...]]:
     """The structure read at ``n0``, with its band and groups (for the checks)."""
-    blocks, centre_row, families = _read(scheme, n0)
+    blocks, centre_row, families, depth = _read(scheme, n0)
     K = blocks.class_count
     band, groups = _groups(blocks.offsets, n0, families)
     _reach(n0, *(d for _, _, d in band), *(e for *_, e in groups))
@@ -286,7 +288,7 @@ def _form(scheme: StencilScheme, n0: int) -> tuple[ZooStructure, Band, Groups, t
     symbols = tuple(family_symbol(families[t].weight, families[t].size) for t in fams)
     valid = max([n0] + [s.valid_from for s in symbols])
     st = ZooStructure(scheme.name, n0, blocks.has_centre, K, sp.ImmutableMatrix(B), border, symbols,
-                      tuple(sigma[t] for t in fams), valid)
+                      tuple(sigma[t] for t in fams), valid, depth)
     return st, band, groups, families
 
 

@@ -38,14 +38,13 @@ from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.ring_spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
-from symdecomp.errors import NotApplicableError
+from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks, structural_applies
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.validate import check_digits, check_valence
 from symdecomp.verify.certify import Certificate
 from symdecomp.verify.result import CrossCheckStatus
 
-__all__ = ["certify_zoo", "structural_route"]
+__all__ = ["certify_zoo"]
 
 
 def _hull(e: Eigenvalue) -> flint.acb:
@@ -85,24 +84,10 @@ def _charpoly_verdict(S: sp.Matrix, spectrum: RingSpectrum, prec: int) -> tuple[
     return CrossCheckStatus.AGREE, "chi_S's roots (exact multiplicities) are the blocks' values", True, height
 
 
-def structural_route(scheme: StencilScheme, n: int) -> bool:
-    """Whether valence ``n`` is certified from the structural form (beyond the valences it is read and checked at, and
-    the scheme's centre rules have the form); the explicit matrices below, and for a scheme whose rules do not."""
-    from symdecomp.analysis.zoo_structure import READ_AT, zoo_structure
-
-    if check_valence(n) <= READ_AT + 3:
-        return False
-    try:
-        zoo_structure(scheme)
-    except NotApplicableError:
-        return False
-    return True
-
-
 def certify_zoo(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20) -> Certificate:
     """Prove (or refute) that the frequency blocks give the spectrum of ``scheme``'s full matrix at valence ``n``."""
     digits = check_digits(digits)
-    if depth is None and structural_route(scheme, n):
+    if depth is None and structural_applies(scheme, check_valence(n)):
         from symdecomp.verify.zoo_structural import structural_zoo_certificate
 
         return structural_zoo_certificate(scheme, n, digits=digits)

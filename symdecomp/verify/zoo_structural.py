@@ -23,7 +23,7 @@ import sympy as sp
 
 from symdecomp.analysis.ring_spectrum import COSK, acb_text
 from symdecomp.analysis.zoo_blocks import signed_offset
-from symdecomp.analysis.zoo_large import StructuralFactors, frequency_balls, structural_factors
+from symdecomp.analysis.zoo_large import StructuralFactors, frequency_balls, proved_distinct_groups, structural_factors
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.stencils import N, StencilScheme
 from symdecomp.symbols import omega as OMEGA
@@ -31,38 +31,7 @@ from symdecomp.validate import check_digits, check_valence
 from symdecomp.verify.certify import Certificate
 from symdecomp.verify.result import CrossCheckStatus
 
-__all__ = ["structural_zoo_certificate", "proved_distinct_groups"]
-
-
-def _sweep(items: list[tuple[flint.acb, object]], part: str) -> list[list[int]]:
-    """Indices grouped where the ``part`` (``"real"``/``"imag"``) intervals overlap, transitively (a sweep)."""
-    def interval(i: int) -> tuple[float, float]:
-        x = getattr(items[i][0], part)
-        return float(x.lower()), float(x.upper())
-    order = sorted(range(len(items)), key=interval)
-    groups: list[list[int]] = []
-    reach = float("-inf")
-    for i in order:
-        lo, hi = interval(i)
-        if not groups or lo > reach:
-            groups.append([i])
-            reach = hi
-        else:
-            groups[-1].append(i)
-            reach = max(reach, hi)
-    return groups
-
-
-def proved_distinct_groups(items: list[tuple[flint.acb, object]]) -> list[list[int]]:
-    """Groups of balls such that any two balls of different groups are disjoint (real, then imaginary projections).
-
-    The float bounds are outward-safe only up to rounding, so groups are split only where the gap is visible in
-    floating point and the exact Arb intervals are checked apart (:func:`_apart`)."""
-    out: list[list[int]] = []
-    for g in _sweep(items, "real"):
-        sub = [items[i] for i in g]
-        out += [[g[j] for j in h] for h in _sweep(sub, "imag")]
-    return out
+__all__ = ["structural_zoo_certificate"]
 
 
 def _apart(items: list[tuple[flint.acb, object]], groups: list[list[int]]) -> bool:
@@ -131,7 +100,6 @@ def structural_zoo_certificate(scheme: StencilScheme, n: int, *, digits: int = 2
     if len(items) != size:
         return _undecided(scheme, n, f"the blocks give {len(items)} eigenvalues for a matrix of size {size}")
     groups = proved_distinct_groups(items)
-    groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
     apart = _apart(items, groups)
     members: list[tuple[int, int, int]] = [m for _, m in items]  # type: ignore[misc]  # (k, factor, root) of each ball
     equal = all(len({_key(factors, n, *members[x], cache) for x in g}) == 1 for g in groups)

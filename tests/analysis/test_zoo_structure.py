@@ -18,6 +18,7 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.stencil_convert import as_stencils
 from symdecomp.schemes.stencil_files import load_zoo
+from symdecomp.schemes.stencil_rows import is_zero
 from symdecomp.schemes.stencils import J, M
 from symdecomp.symbols import omega as OMEGA
 from tests.analysis.zoo_engine_schemes import catmull_clark_stencils
@@ -79,3 +80,22 @@ def test_the_block_has_no_dense_offsets():
         shifted = [sp.Poly(sp.expand(e * OMEGA**8), OMEGA) for e in st.block if e != 0]
         offsets = {m[0] - 8 for p in shifted for m in p.monoms()}
         assert offsets and max(map(abs, offsets)) <= 2, offsets
+
+
+@pytest.mark.parametrize("name", ["doo-sabin", "midedge", "sqrt3", "modified-butterfly"])
+def test_the_structural_spectrum_is_the_explicit_one(name):
+    """Exact values, multiplicities and Jordan blocks from the structural form equal those of the explicit matrix's
+    blocks (a depth given: the explicit route) beyond the reading."""
+    from symdecomp.analysis.zoo_large_spectrum import structural_spectrum
+    from symdecomp.analysis.zoo_spectrum import zoo_spectrum
+
+    scheme, n = SCHEMES[name](), READ_AT + 5
+    explicit = zoo_spectrum(scheme, n, zoo_matrix(scheme, n).depth, digits=15)
+    structural = structural_spectrum(scheme, n, digits=15)
+    assert structural.size == explicit.size and structural.rings == explicit.rings
+    assert len(structural.eigenvalues) == len(explicit.eigenvalues)
+    for a, b in zip(structural.eigenvalues, explicit.eigenvalues):
+        assert (a.multiplicity, a.jordan, a.frequencies) == (b.multiplicity, b.jordan, b.frequencies)
+        assert a.value.overlaps(b.value)
+        if a.exact is not None and b.exact is not None:
+            assert is_zero(a.exact - b.exact)  # exact: its minimal polynomial is x

@@ -5,10 +5,11 @@ import time
 import pytest
 
 from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.analysis.zoo_spectrum import structural_applies
 from symdecomp.analysis.zoo_structure import READ_AT
 from symdecomp.schemes.stencil_files import load_zoo
 from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.verify.zoo_certify import certify_zoo, structural_route
+from symdecomp.verify.zoo_certify import certify_zoo
 from symdecomp.verify.zoo_structural import structural_zoo_certificate
 
 FAMILIES = ("doo-sabin", "midedge", "sqrt3", "modified-butterfly")
@@ -32,7 +33,7 @@ def test_the_structural_certificate_is_the_explicit_one(name):
 
 def test_check_certify_takes_the_structural_route_beyond_the_checks():
     scheme = load_zoo("doo-sabin")
-    assert not structural_route(scheme, READ_AT + 3) and structural_route(scheme, READ_AT + 4)
+    assert not structural_applies(scheme, READ_AT + 3) and structural_applies(scheme, READ_AT + 4)
     assert certify_zoo(scheme, READ_AT + 4).route == "structural-form"
 
 

@@ -74,10 +74,13 @@ def _bordered(st: ZooStructure) -> sp.Matrix:
     return sp.Matrix.vstack(top, sp.Matrix.hstack(sp.Matrix(list(st.border[K + 1:])), B1))
 
 
-@functools.lru_cache(maxsize=16)
 def structural_factors(scheme: StencilScheme) -> StructuralFactors:
     """Factor ``det(lambda I - B)`` of the structural blocks once (module docstring)."""
-    st = zoo_structure(scheme)
+    return _structural_factors(zoo_structure(scheme))
+
+
+@functools.lru_cache(maxsize=16)
+def _structural_factors(st: ZooStructure) -> StructuralFactors:
     B, B0 = sp.Matrix(st.block), _bordered(st)
     atoms = _atoms(list(B) + list(B0))
     back = {a: g for g, a in atoms.items()}

@@ -36,7 +36,7 @@ from symdecomp.errors import NotApplicableError, PrecisionError
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_digits
+from symdecomp.validate import check_digits, check_type, check_valence
 
 __all__ = ["zoo_spectrum", "spectrum_of_blocks", "irrational_atoms", "structural_applies"]
 
@@ -179,7 +179,8 @@ def structural_applies(scheme: StencilScheme, n: int) -> bool:
     """Whether valence ``n`` is past the structural form's reading and checks, and the scheme's centre rules have it."""
     from symdecomp.analysis.zoo_structure import READ_AT, zoo_structure
 
-    if n <= READ_AT + 3:
+    check_type(scheme, StencilScheme, "scheme", hint="a StencilScheme")
+    if check_valence(n) <= READ_AT + 3:
         return False
     try:
         zoo_structure(scheme)

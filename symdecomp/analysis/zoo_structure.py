@@ -40,6 +40,7 @@ from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.stencil_rows import is_zero
 from symdecomp.schemes.stencils import J, KindRules, M, N, Rule, StencilScheme, Term
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_int, check_type
 
 __all__ = ["ZooStructure", "zoo_structure", "READ_AT"]
 
@@ -137,7 +138,7 @@ def _split(entry: sp.Expr, families: tuple[_Family, ...]) -> tuple[sp.Expr, list
     return band, [(t, j, sp.expand(coef)) for (t, j), coef in parts.items()]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # one object per scheme (cached): compared and hashed by identity
 class ZooStructure:
     """The blocks of a StencilScheme's matrix for every valence ``n >=`` :attr:`valid_from` (module docstring)."""
 
@@ -373,7 +374,6 @@ def _check(scheme: StencilScheme, st: ZooStructure, band: Band, groups: Groups, 
                                      f"read at n = {n0} (border entry {i}: {a} against {b})")
 
 
-@functools.lru_cache(maxsize=16)
 def zoo_structure(scheme: StencilScheme, n0: int = READ_AT) -> ZooStructure:
     """The blocks of ``scheme`` for every valence from :attr:`ZooStructure.valid_from`, read at ``n0`` (the centre's entries
     at ``n0 + 1`` too) and checked exactly at ``n0 + 2`` and ``n0 + 3`` against the explicit matrices.
@@ -381,6 +381,12 @@ def zoo_structure(scheme: StencilScheme, n0: int = READ_AT) -> ZooStructure:
     :class:`~symdecomp.errors.NotApplicableError` when the scheme's centre rules do not have the form (module
     docstring); :class:`~symdecomp.errors.InvalidSchemeError` when a check fails.
     """
+    check_type(scheme, StencilScheme, "scheme", hint="a StencilScheme")
+    return _zoo_structure(scheme, check_int(n0, "n0", minimum=READ_AT))
+
+
+@functools.lru_cache(maxsize=16)
+def _zoo_structure(scheme: StencilScheme, n0: int) -> ZooStructure:
     st, band, groups, families = _form(scheme, n0)
     for n in (n0 + 2, n0 + 3):
         _check(scheme, st, band, groups, families, n)

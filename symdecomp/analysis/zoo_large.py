@@ -81,7 +81,9 @@ def structural_factors(scheme: StencilScheme) -> StructuralFactors:
 
 @functools.lru_cache(maxsize=16)
 def _structural_factors(st: ZooStructure) -> StructuralFactors:
-    B, B0 = sp.Matrix(st.block), _bordered(st)
+    at_zero = {sig: sp.sympify(s.value(0), strict=True).xreplace({s.size: N}) for sig, s in zip(st.sigma, st.symbols)}
+    # at k = 0 the symbols are their values there (in n): the factoring sees, e.g., the root 1 of an affine scheme
+    B, B0 = sp.Matrix(st.block), _bordered(st).xreplace(at_zero)
     atoms = _atoms(list(B) + list(B0))
     back = {a: g for g, a in atoms.items()}
     Bg, B0g = (X.applyfunc(lambda e: sp.expand(sp.sympify(e, strict=True).xreplace(back))) for X in (B, B0))

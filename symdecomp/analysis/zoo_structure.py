@@ -162,6 +162,8 @@ class ZooStructure:
     valid_from: int
     #: The ring depth of the neighbourhood the matrix is on.
     depth: int = 1
+    #: Which of the scheme's marked terms each ``sigma_t`` sums (in the order of :attr:`sigma`).
+    terms: tuple[int, ...] = ()
 
     @functools.cached_property
     def _compiled(self) -> tuple[Any, ...]:
@@ -289,7 +291,7 @@ def _form(scheme: StencilScheme, n0: int) -> tuple[ZooStructure, Band, Groups, t
     symbols = tuple(family_symbol(families[t].weight, families[t].size) for t in fams)
     valid = max([n0] + [s.valid_from for s in symbols])
     st = ZooStructure(scheme.name, n0, blocks.has_centre, K, sp.ImmutableMatrix(B), border, symbols,
-                      tuple(sigma[t] for t in fams), valid, depth)
+                      tuple(sigma[t] for t in fams), valid, depth, tuple(fams))
     return st, band, groups, families
 
 
@@ -365,7 +367,7 @@ def _check(scheme: StencilScheme, st: ZooStructure, band: Band, groups: Groups, 
                                              f"at n = {n0} (block ({c}, {e}), offset {d}: {A[c, e]} against {want})")
     if not st.has_centre:
         return
-    sums = {s: sp.Add(*[_weight_at(families[int(str(s)[5:])], n, j) for j in range(n)]) for s in st.sigma}
+    sums = {s: sp.Add(*[_weight_at(families[t], n, j) for j in range(n)]) for s, t in zip(st.sigma, st.terms)}
     want_border = [sp.sympify(x, strict=True).xreplace({N: n, **sums}) for x in st.border]
     got = [explicit.centre, *explicit.centre_row, *explicit.centre_column]
     for i, (a, b) in enumerate(zip(got, want_border)):

@@ -80,7 +80,9 @@ nothing else.
                    neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
                    labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
                    ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face
-                   or ring family's symbol for every size (``zoo_symbols``);
+                   or ring family's symbol for every size (``zoo_symbols``), the blocks for every valence read
+                   once (``zoo_structure``), their factors for every n (``zoo_large``) and spectra at large n
+                   (``zoo_large_spectrum``);
                    what the curvature regimes at the vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``; the file's valences rounded straight from those columns,
@@ -103,7 +105,7 @@ nothing else.
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``; of a StencilScheme of the zoo,
-                   ``zoo_certify``), their results and
+                   ``zoo_certify``; beyond n = 19 from the structural blocks, ``zoo_structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
                    boundary, crease and corner vertices' ``oracle_sharp``,
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and

@@ -32,13 +32,13 @@ from symdecomp.analysis.ring_spectrum import COSK, Factor, RingSpectrum, _cluste
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_roots import squarefree_roots
-from symdecomp.errors import PrecisionError
+from symdecomp.errors import NotApplicableError, PrecisionError
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_digits
+from symdecomp.validate import check_digits, check_type, check_valence
 
-__all__ = ["zoo_spectrum", "spectrum_of_blocks", "irrational_atoms"]
+__all__ = ["zoo_spectrum", "spectrum_of_blocks", "irrational_atoms", "structural_applies"]
 
 
 def irrational_atoms(exprs: Iterable[sp.Expr]) -> dict[sp.Dummy, sp.Expr]:
@@ -175,14 +175,35 @@ def _entry(items: list[tuple[object, int, int, int]], group: list[int], zero: tu
     )
 
 
+def structural_applies(scheme: StencilScheme, n: int) -> bool:
+    """Whether valence ``n`` is past the structural form's reading and checks, and the scheme's centre rules have it."""
+    from symdecomp.analysis.zoo_structure import READ_AT, zoo_structure
+
+    check_type(scheme, StencilScheme, "scheme", hint="a StencilScheme")
+    if check_valence(n) <= READ_AT + 3:
+        return False
+    try:
+        zoo_structure(scheme)
+    except NotApplicableError:
+        return False
+    return True
+
+
 def zoo_spectrum(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20, exact: bool = True,
                  jordan: bool = True) -> RingSpectrum:
     """The eigenvalues of ``scheme``'s subdivision matrix at valence ``n`` (over its steps), by frequency.
 
     ``jordan``: decide the Jordan block sizes where they can be decided exactly (:mod:`symdecomp.analysis.zoo_jordan`).
+    Beyond the valences the structural form is read and checked at, from that form
+    (:mod:`symdecomp.analysis.zoo_large_spectrum`: ``O(n)``, no factoring at the valence); a given ``depth`` takes the
+    explicit matrix.
     """
     from symdecomp.analysis.zoo_jordan import with_jordan
 
+    if depth is None and structural_applies(scheme, n):
+        from symdecomp.analysis.zoo_large_spectrum import structural_spectrum
+
+        return structural_spectrum(scheme, n, digits=digits, exact=exact, jordan=jordan)
     zm = zoo_matrix(scheme, n, depth)
     blocks = zoo_blocks(zm)
     spectrum = spectrum_of_blocks(blocks, digits=digits, exact=exact or jordan, depth=zm.depth, mesh=scheme.lattice)

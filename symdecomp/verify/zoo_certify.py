@@ -7,6 +7,9 @@ Two routes, as :mod:`symdecomp.verify.ring_certify` has for 1-ring schemes:
   squarefree factorisation, certified balls); each root must lie in exactly one of the engine's eigenvalue
   balls, and the multiplicities must add up. A root outside every ball refutes the blocks; a root in two
   balls leaves the certificate undecided.
+* ``structural-form`` (valences beyond :data:`~symdecomp.analysis.zoo_structure.READ_AT` + 3): the blocks read once
+  (:mod:`symdecomp.analysis.zoo_structure`) in Arb, ``O(n)`` per valence, without the explicit matrix
+  (:mod:`symdecomp.verify.zoo_structural`).
 * ``structural`` (entries in ``Q(cos 2 pi/N)``): the full matrix is, entry by entry and exactly, the
   block-circulant matrix of its blocks (:func:`~symdecomp.analysis.zoo_blocks.zoo_blocks` checks every entry
   by exact zero tests), so its spectrum is that of ``B_0`` and ``B(zeta^k)`` (the Fourier transform
@@ -35,9 +38,9 @@ from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.ring_spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
+from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks, structural_applies
 from symdecomp.schemes.stencils import StencilScheme
-from symdecomp.validate import check_digits
+from symdecomp.validate import check_digits, check_valence
 from symdecomp.verify.certify import Certificate
 from symdecomp.verify.result import CrossCheckStatus
 
@@ -84,6 +87,10 @@ def _charpoly_verdict(S: sp.Matrix, spectrum: RingSpectrum, prec: int) -> tuple[
 def certify_zoo(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20) -> Certificate:
     """Prove (or refute) that the frequency blocks give the spectrum of ``scheme``'s full matrix at valence ``n``."""
     digits = check_digits(digits)
+    if depth is None and structural_applies(scheme, check_valence(n)):
+        from symdecomp.verify.zoo_structural import structural_zoo_certificate
+
+        return structural_zoo_certificate(scheme, n, digits=digits)
     zm = zoo_matrix(scheme, n, depth)
     n = zm.n  # checked: an int
     blocks = zoo_blocks(zm)  # raises if the matrix is not block circulant (exact, entry by entry)

@@ -1,0 +1,81 @@
+"""Time the zoo at large n: ``spectrum 64`` and ``check --certify`` at n = 10,000, beside the explicit route.
+
+The targets (issue 30): ``spectrum 64 --scheme S`` in a few seconds for each family of the zoo, and
+``check --n 10000 --certify`` per scheme. Measured: the whole command as a user runs it (start-up included),
+wall-clock, which takes the structural route (the blocks read once, ``analysis/zoo_structure``). Beside it, the
+baseline measured in the same run: the explicit route (the matrix built by refinement at that valence, its blocks
+read and factored there), forced by giving the neighbourhood's depth. The explicit route cannot reach n = 10,000
+(``O(n^2)`` entries), so the certificate's baseline is the explicit certificate at n = 64.
+
+    python benchmarks/bench_zoo.py            # n = 64 (the explicit baseline takes minutes for Doo-Sabin)
+    python benchmarks/bench_zoo.py --quick    # n = 32, and the certificate at n = 1000
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import time
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+
+#: The issue's targets, seconds per scheme.
+SPECTRUM_SECONDS = 10.0
+CERTIFY_SECONDS = 10.0
+SCHEMES = ("doo-sabin", "midedge", "sqrt3", "modified-butterfly")
+
+_EXPLICIT = """
+import sys
+from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.schemes.stencil_files import load_zoo
+scheme, n, what = load_zoo(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+depth = zoo_matrix(scheme, n).depth
+if what == "spectrum":
+    from symdecomp.analysis.zoo_spectrum import zoo_spectrum
+    zoo_spectrum(scheme, n, depth)
+else:
+    from symdecomp.verify.zoo_certify import certify_zoo
+    assert certify_zoo(scheme, n, depth).status.value == "agree"
+"""
+
+
+def _timed(*args: str) -> float:
+    t0 = time.perf_counter()
+    done = subprocess.run([sys.executable, *args], cwd=ROOT, capture_output=True, text=True, check=False)
+    seconds = time.perf_counter() - t0
+    if done.returncode != 0:
+        raise SystemExit(f"{' '.join(args[:4])} failed ({done.returncode}): {done.stderr.strip()[-300:]}")
+    return seconds
+
+
+def targets(quick: bool = False) -> list[dict]:
+    """``spectrum N`` and ``check --n M --certify`` per scheme, beside the explicit route."""
+    n, big = (32, 1000) if quick else (64, 10_000)
+    out = []
+    for name in SCHEMES:
+        seconds = _timed("-m", "symdecomp", "spectrum", str(n), "--scheme", name, "--json")
+        baseline = _timed("-c", _EXPLICIT, name, str(n), "spectrum")
+        out.append({"target": f"spectrum {n} --scheme {name}", "limit_seconds": SPECTRUM_SECONDS if not quick else None,
+                    "seconds": seconds, "baseline": f"the explicit route at n = {n}", "baseline_seconds": baseline})
+        seconds = _timed("-m", "symdecomp", "check", "--n", str(big), "--certify", "--scheme", name, "--json")
+        baseline = _timed("-c", _EXPLICIT, name, str(n), "certify")
+        out.append({"target": f"check --n {big} --certify --scheme {name}", "limit_seconds": CERTIFY_SECONDS if not quick else None,
+                    "seconds": seconds, "baseline": f"the explicit certificate at n = {n}", "baseline_seconds": baseline})
+    return out
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="n = 32 and the certificate at n = 1000")
+    args = parser.parse_args()
+    for row in targets(args.quick):
+        limit = row["limit_seconds"]
+        verdict = "" if limit is None else ("  (target met)" if row["seconds"] <= limit else "  (TARGET MISSED)")
+        print(f"{row['target']}: {row['seconds']:.1f} s, limit {limit or '-'} s{verdict}; "
+              f"{row['baseline']}: {row['baseline_seconds']:.1f} s")
+
+
+if __name__ == "__main__":
+    main()

@@ -166,14 +166,13 @@ def kind_row(mesh: HalfedgeMesh, rules: KindRules, key: PointKey, made: dict[Poi
         rows = []
         for h in _anchors(mesh, key):
             rule = _select(rules, mesh, h, regular)
-            if rule is not None:
+            if rule is not None:  # an anchor where no rule applies is skipped, as an edge's other end is
                 rows.append(_clean(_rule_row(mesh, h, rule, made)))
-            elif key[0] != "edge":
-                raise InvalidSchemeError(f"no [{rules.kind}] rule applies at a {key[0]} (valence {mesh.valence(mesh.origin[h])})")
     except _Unknown:
         return None
     if not rows:
-        raise InvalidSchemeError(f"no [{rules.kind}] rule applies at either end of an edge")
+        where = "either end of an edge" if key[0] == "edge" else f"any anchor of a {key[0]}"
+        raise InvalidSchemeError(f"no [{rules.kind}] rule applies at {where}")
     if key[0] == "edge":
         scale = sp.Integer(1) if rules.ends == "sum" else sp.Rational(1, len(rows))
         if rules.ends == "sum" and len(rows) != 2:

@@ -26,6 +26,7 @@ from symdecomp.analysis.ring_spectrum import RingSpectrum, _exact_root, _hull, a
 from symdecomp.analysis.zoo_blocks import signed_offset
 from symdecomp.analysis.zoo_large import StructuralFactors, frequency_balls, proved_distinct_groups, structural_factors
 from symdecomp.analysis.zoo_structure import ZooStructure
+from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.stencils import N, StencilScheme
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_digits, check_valence
@@ -48,7 +49,10 @@ class ExactBlocks:
 
     def frequency_matrix(self, omega: sp.Expr) -> sp.ImmutableMatrix:
         """The block at ``omega = zeta^k`` (``k`` from ``omega``'s argument)."""
-        k = int(sp.nsimplify(sp.arg(omega) / (2 * sp.pi) * self.n)) % self.n  # omega is exp(2 pi i k/n), given exactly
+        q = sp.simplify(sp.arg(omega) / (2 * sp.pi) * self.n)  # omega is exp(2 pi i k/n), given exactly: q is k exactly
+        if not q.is_Integer:
+            raise InvalidInputError(f"omega must be exp(2 pi i k/{self.n}) for an integer k, got {omega}")
+        k = int(q) % self.n
         at = {OMEGA: omega, N: self.n, **_symbols_at(self.structure, self.n, k)}
         return sp.ImmutableMatrix(self.structure.block.xreplace(at))
 

@@ -61,7 +61,6 @@ from __future__ import annotations
 import dataclasses
 import enum
 import importlib
-import pkgutil
 import traceback
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -72,6 +71,7 @@ from sympy.printing.str import StrPrinter
 
 from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.claims.guards import DEFAULT_BUDGET, BudgetExceeded, at_parameter_values, time_budget, unbound_parameters, undefined_values
+from symdecomp.claims.order import BEYOND, module_ranks, section_key, section_modules
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
 from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
 
@@ -361,31 +361,21 @@ class Claim:
     statement: str
     #: Returns the :class:`CheckResult` for a scheme; pure, may be slow (results are cached per scheme).
     check: Callable[[Scheme], CheckResult] = field(repr=False, compare=False)
-    #: Registration order, to list claims in the paper's order within a section.
+    #: Registration order within its module, to list claims in the paper's order within a section.
     order: int = 0
     #: What the check needs of the scheme, tested in order before it runs (:class:`Requirement`).
     requires: tuple[Requirement, ...] = ()
     #: What the claim's scope ranges over: ``"n"`` (the valence) or ``"k"`` (the faces of a sector at a sharp vertex).
     parameter: str = "n"
+    #: The module that registers it (a section's claims may come from several; see :meth:`sort_key`).
+    module: str = ""
 
     def sort_key(self):
-        """Paper order: by section (:func:`section_key`), then in the order the section's module registers its claims."""
-        return (section_key(self.section), self.order)
-
-
-#: The prefix of the sections of the toolkit's own claims (modules ``b<digit>_*.py``), after the paper's: ``"B.1"``.
-BEYOND = "B"
-
-
-def section_key(section: str) -> tuple:
-    """Where a section sorts: the paper's numerically, then the toolkit's own (``"B.1"``, ``"B.2"``).
-
-    >>> sorted(["B.1", "6", "5.10", "5.2"], key=section_key)
-    ['5.2', '5.10', '6', 'B.1']
-    """
-    head, _, rest = section.partition(".")
-    own = head == BEYOND
-    return (int(own), *(int(p) for p in (rest if own else section).split(".")))
+        """Paper order: by section (:func:`section_key`), then by the module's place in the canonical load order
+        (:func:`module_ranks`), then in the order the module registers its claims; independent of which module
+        some caller happened to import first."""
+        ranks = module_ranks()
+        return (section_key(self.section), ranks.get(self.module, len(ranks)), self.order)
 
 
 REGISTRY: dict[str, Claim] = {}
@@ -397,7 +387,9 @@ def claim(label: str, *, section: str, title: str, statement: str, requires: tup
     def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:
         if label in REGISTRY:
             raise ValueError(f"claim {label!r} is registered twice")
-        REGISTRY[label] = Claim(label, section, title, statement, check, len(REGISTRY), tuple(requires), parameter)
+        module = check.__module__
+        order = sum(1 for c in REGISTRY.values() if c.module == module)
+        REGISTRY[label] = Claim(label, section, title, statement, check, order, tuple(requires), parameter, module)
         return check
 
     return register
@@ -406,9 +398,8 @@ def claim(label: str, *, section: str, title: str, statement: str, requires: tup
 def _load_sections() -> None:
     from symdecomp import claims as package
 
-    for info in sorted(pkgutil.iter_modules(package.__path__), key=lambda m: m.name):
-        if info.name[:1] in ("s", BEYOND.lower()) and info.name[1:2].isdigit():  # the paper's sections, then the toolkit's
-            importlib.import_module(f"{package.__name__}.{info.name}")
+    for name in section_modules():  # the paper's sections, then the toolkit's
+        importlib.import_module(f"{package.__name__}.{name}")
 
 
 def all_claims() -> list[Claim]:

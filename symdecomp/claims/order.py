@@ -42,8 +42,13 @@ def section_modules() -> list[str]:
             if info.name[:1] in ("s", BEYOND.lower()) and info.name[1:2].isdigit()]
 
 
-@cache
 def module_ranks() -> dict[str, int]:
+    """Claim module -> its place in the canonical load order (see :func:`_ranks`); a copy the caller may keep."""
+    return dict(_ranks())
+
+
+@cache
+def _ranks() -> dict[str, int]:
     """Where each claim module registers in a fresh interpreter that imports them in name order: each after the claim
     modules it imports (read from its source, never executed), so the order does not depend on what was imported first."""
     from symdecomp import claims as package

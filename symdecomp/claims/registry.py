@@ -372,7 +372,7 @@ class Claim:
 
     def sort_key(self):
         """Paper order: by section (:func:`section_key`), then by the module's place in the canonical load order
-        (:func:`module_ranks`), then in the order the module registers its claims; independent of which module
+        (:func:`~symdecomp.claims.order.module_ranks`), then in the order the module registers its claims; independent of which module
         some caller happened to import first."""
         ranks = module_ranks()
         return (section_key(self.section), ranks.get(self.module, len(ranks)), self.order)

@@ -157,7 +157,7 @@ def _reduced(value: sp.Expr, ball: flint.acb) -> sp.Expr:
     if p.degree() > 2:
         return value
     mid = complex(float(ball.real.mid()), float(ball.imag.mid()))
-    return sp.radsimp(min(sp.roots(p, _X), key=lambda r: abs(complex(r.evalf(30)) - mid)))
+    return min(sp.roots(p, _X), key=lambda r: abs(complex(r.evalf(30)) - mid))  # a rational quadratic's root: (a + sqrt(d))/b
 
 
 def _entry(items: list[tuple[object, int, int, int]], group: list[int], zero: tuple[Factor, ...], other: tuple[Factor, ...],

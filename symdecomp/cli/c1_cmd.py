@@ -190,7 +190,6 @@ def _zoo_one(n: int, scheme, max_depth: int) -> _Row:
 
 def _run_zoo(args, plot) -> int:
     """A scheme of the zoo (stencils): :func:`~symdecomp.verify.c1_zoo.c1_zoo` per valence (the route its model allows)."""
-    from symdecomp.parallel import ordered_map
     from symdecomp.verify.result import C1Verdict
 
     if plot is not None:
@@ -198,18 +197,26 @@ def _run_zoo(args, plot) -> int:
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
         raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} (a scheme "
                                 "of the zoo); give --n A:B")
+    results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"])
+    return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+
+
+def _run_valences(args, one, method) -> list:
+    """``one(n, scheme, max_depth)`` for each valence on the pool, printed (or ``--json``); ``method(results)`` its line."""
+    from symdecomp.parallel import ordered_map
+
     valences = args.valences
-    rows = ordered_map(_zoo_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
+    rows = ordered_map(one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
     results = list(progress(rows, len(valences), "c1", enabled=not args.quiet))
     if args.json:
         print_json(args, [r.json for r in results])
     else:
         print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
-        print(f"method: {results[0].json['method']}")
+        print(f"method: {method(results)}")
         for r in results:
             print(f"n = {r.n:>3}: {LABELS[r.verdict.value]}: {r.reason}")
-    return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+    return results
 
 
 def _vertex(item: tuple, scheme: Scheme):
@@ -278,7 +285,6 @@ def _refuse_dense_past_map_faces(args, faces: int) -> None:
 
 
 def run(args) -> int:
-    from symdecomp.parallel import ordered_map
     from symdecomp.schemes.stencils import StencilScheme
     from symdecomp.verify.result import C1Verdict
 
@@ -293,17 +299,7 @@ def run(args) -> int:
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
         return _run_every_n(args)
 
-    valences = args.valences
-    rows = ordered_map(_one, valences, shared={"scheme": args.scheme, "max_depth": args.depth}, jobs=args.jobs,
-                       executor=args.executor, warm_up=True)
-    results = list(progress(rows, len(valences), "c1", enabled=not args.quiet))
-    if args.json:
-        print_json(args, [r.json for r in results])
-    else:
-        print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
-        print(f"method: {args.scheme.lattice.c1_method}")
-        for r in results:
-            print(f"n = {r.n:>3}: {LABELS[r.verdict.value]}: {r.reason}")
+    results = _run_valences(args, _one, lambda results: args.scheme.lattice.c1_method)
     write_plot(plot, lambda: _figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 

@@ -8,20 +8,17 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.characteristic_uniform import reduce_element, uniform_nets
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
-from symdecomp.verify.bezier import bspline_to_bezier, jacobian_net, triangle_jacobian_net
+from symdecomp.verify.bezier import bspline_to_bezier
 from symdecomp.verify.c1 import box_nets, characteristic_nets
+from symdecomp.verify.c1_uniform import _jacobian_coefficients
 
 
 def _jacobians(scheme):
     nets = uniform_nets(scheme)
-    if scheme.lattice.name == "quad":
-        pairs = [(bspline_to_bezier([[v.x for v in row] for row in net]), bspline_to_bezier([[v.y for v in row] for row in net]))
-                 for net in nets.nets]
-        return nets, [reduce_element(c, nets.quadratic) for x, y in pairs for row in jacobian_net(x, y) for c in row]
-    pairs = [([v.x for v in net], [v.y for v in net]) for net in box_nets(nets.nets)]
-    return nets, [reduce_element(c, nets.quadratic) for x, y in pairs for c in triangle_jacobian_net(x, y)]
+    return nets, [reduce_element(c, nets.quadratic) for c in _jacobian_coefficients(nets, scheme.lattice)]
 
 
 @pytest.mark.parametrize(("scheme", "n", "t"), [(catmull_clark(), 4, sp.Integer(0)), (loop(), 6, sp.Rational(1, 2))], ids=["cc", "loop"])
@@ -51,16 +48,17 @@ def test_the_nets_are_the_per_valence_nets_up_to_a_positive_factor(scheme, n):
 
 
 def _values(scheme, nets):
-    if scheme.lattice.name == "quad":
-        x = [bspline_to_bezier([[v for v in row] for row in net]) for net in nets]
-        return [v for net in x for row in net for v in row]
-    return [v for net in box_nets(nets) for v in net]
+    return scheme.lattice.select({
+        BICUBIC: lambda: [v for net in nets for row in bspline_to_bezier([list(row) for row in net]) for v in row],
+        BOX_SPLINE: lambda: [v for net in box_nets(nets) for v in net],
+    }, "the nets' control points")()
 
 
 def _flat_arb(scheme, nets):
-    if scheme.lattice.name == "quad":
-        return [(x[i][k], y[i][k]) for x, y in nets for i in range(4) for k in range(4)]
-    return [(a, b) for x, y in nets for a, b in zip(x, y)]
+    return scheme.lattice.select({
+        BICUBIC: lambda: [(x[i][k], y[i][k]) for x, y in nets for i in range(4) for k in range(4)],
+        BOX_SPLINE: lambda: [(a, b) for x, y in nets for a, b in zip(x, y)],
+    }, "the certified nets' control points")()
 
 
 def test_rules_that_depend_on_n_are_refused_in_one_line():

@@ -72,10 +72,10 @@ def _open(first: int, why: str) -> EveryNStep:
 def _beyond(expr: sp.Expr, first: int) -> sp.Expr | None:
     """``expr`` for ``n >= first``: the pieces of a vertex rule given at single small valences (``Eq(n, k)``, ``k <
     first``) dropped; ``None`` when a piece's condition is anything else."""
-    def piece(*args):
+    def piece(*args: sp.Basic) -> sp.Expr:
         for value, condition in args:
             if condition is sp.true:
-                return value
+                return sp.sympify(value)
             if not (isinstance(condition, sp.Eq) and set(condition.args) - {N} and condition.has(N)
                     and all(a == N or (a.is_Integer and a < first) for a in condition.args)):
                 raise NotApplicableError(f"the vertex rule's piece for {condition} is not one small valence")
@@ -92,8 +92,10 @@ def _on_triangles(scheme: Scheme, first: int, M: sp.Matrix, E0: sp.Matrix) -> Ev
     tangent = spectral_every_n(scheme)[:-1]  # S1-S4; S5 (E_0 below lambda_1) follows from e_0 < lambda_2 < lambda_1
     if not all(step.status == "proved" for step in tangent):
         return _open(first, "the tangent steps (lambda(t) increasing, lambda_1 below 1 and above the outer ring) are not proved")
-    lam, x = _in_t(M[0, 0]), sp.Symbol("x")
-    radius = max((abs(r) for r in sp.Poly(list(outer_charpoly(scheme.lattice)), x).all_roots()), key=float)
+    lam, x, outer = _in_t(M[0, 0]), sp.Symbol("x"), outer_charpoly(scheme.lattice)
+    if outer is None:
+        return _open(first, "the outer ring's eigenvalues are not known for this lattice")
+    radius = max((abs(r) for r in sp.Poly(list(outer), x).all_roots()), key=float)
     e0 = _beyond(sp.expand(E0.trace() - 1), first)  # E_0 is 2 x 2 with the eigenvalue 1
     if e0 is None:
         return _open(first, "the vertex rule is piecewise in n beyond single small valences")

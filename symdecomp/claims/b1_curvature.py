@@ -258,18 +258,24 @@ def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_V
                                                Verbatim(scheme.name), f" {below}", _typeset(proof),
                                                " (decided exactly for every such n, any valences before the exact signs "
                                                "start certified one by one: the last step)"),
-                           steps=steps + (Step(Verbatim(proof.text)),))
+                           steps=steps + _argument(first, proof.text))
     refuted = _disagreement(scheme, printed, max(lo, first), hi) or _disagreement(scheme, printed, hi + 1, LATE_VALENCES)
     if refuted is not None:
         return refuted
     why = "; not proved for every n (why: the last step)" if proof is not None else ""
-    steps += (Step(Verbatim(proof.text)),) if proof is not None else ()
+    steps += _argument(first, proof.text) if proof is not None else ()
     return CheckResult(
         Status.VERIFIED,
         Text("the part that dominates on fine rings agrees with the statement for ", Verbatim(scheme.name),
              f" at every n = {lo}..{hi} (the largest frequency-0 and frequency-2 eigenvalues after ", lambda_1,
              f", certified; and to n = {LATE_VALENCES})", why),
         steps=steps, valences=(lo, hi))
+
+
+def _argument(first: int, text: str) -> tuple[Step, ...]:
+    """The argument for every ``n >= first`` as computed (:mod:`symdecomp.verify.dominance_every_n`), in its own words."""
+    return (Step(f"For every $n \\ge {first}$, the argument as computed by symdecomp.verify.dominance_every_n "
+                 "(formulas in sympy's notation):"), Step(Verbatim(text)))
 
 
 @claim(

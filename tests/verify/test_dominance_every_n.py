@@ -61,5 +61,5 @@ def test_a_vertex_weight_whose_dominance_changes_late_gets_the_first_valence_whe
     r = b1.check_dominance(s, b1.DOMINANCE[BICUBIC])
     assert r.status is Status.REFUTED and r.scope is Scope.SINGLE_CASE
     k = int(str(r.counterexample).split("n = ")[1].split(":")[0])
-    assert 32 < k <= b1.LATE_VALENCES and "computed: the elliptic part" in str(r.counterexample)
+    assert 32 < k <= b1.SHAPE_VALENCES[1] and "computed: the elliptic part" in str(r.counterexample)
     assert all(dominant_part(second_order_eigenstructure(s, m)) == 2 for m in (5, k - 1))  # the first valence it changes

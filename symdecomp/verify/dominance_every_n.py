@@ -75,7 +75,7 @@ def _beyond(expr: sp.Expr, first: int) -> sp.Expr | None:
     def piece(*args: sp.Basic) -> sp.Expr:
         for value, condition in args:
             if condition is sp.true:
-                return sp.sympify(value)
+                return sp.sympify(value, strict=True)
             if not (isinstance(condition, sp.Eq) and set(condition.args) - {N} and condition.has(N)
                     and all(a == N or (a.is_Integer and a < first) for a in condition.args)):
                 raise NotApplicableError(f"the vertex rule's piece for {condition} is not one small valence")

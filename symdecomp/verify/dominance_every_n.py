@@ -53,6 +53,8 @@ def hyperbolic_dominates_from(scheme: Scheme, first: int) -> EveryNStep:
         return _open(first, "the 1-ring's rules other than the vertex rule depend on n, or the scheme has free parameters")
     try:
         if M.rows == 2:
+            if not all(_rational(e) for e in E0):
+                return _open(first, "E_0 is not a rational function of n (the bound in n needs one)")
             step = hyperbolic_cause_on_quads(scheme, first)
             return step if step is not None else _open(first, (
                 "the frequency-0 roots are not shown below rho(1 - 8 (22/7)^2/n^2) for every n from a start at most "
@@ -62,6 +64,11 @@ def hyperbolic_dominates_from(scheme: Scheme, first: int) -> EveryNStep:
     except NotApplicableError as error:
         return _open(first, str(error))
     return _open(first, f"a {M.rows} x {M.rows} block M with a {E0.rows} x {E0.rows} block E_0 has no argument for every n")
+
+
+def _rational(expr: sp.Expr) -> bool:
+    """Whether ``expr`` is a rational function of ``n`` alone (no cosine of ``n``, no other symbol)."""
+    return bool(sp.sympify(expr, strict=True).free_symbols <= {N} and sp.cancel(expr).is_rational_function(N))
 
 
 def _open(first: int, why: str) -> EveryNStep:
@@ -112,8 +119,8 @@ def _on_triangles(scheme: Scheme, first: int, M: sp.Matrix, E0: sp.Matrix) -> Ev
         return EveryNStep(head + f"lambda_2 = {lam2} exceeds the outer ring's {radius} and |e_0|, e_0 = {e0} the "
                           f"frequency-0 eigenvalue besides 1, for s = cos(2 pi/n) in [{s0}, 1] (Sturm sequences)",
                           "proved", (first, None))
-    if e0.has(S):
-        return _open(first, f"the frequency-0 eigenvalue {e0} mixes n and s = cos(2 pi/n)")
+    if e0.has(S) or not _rational(e0):
+        return _open(first, f"the frequency-0 eigenvalue {e0} is neither a polynomial in s = cos(2 pi/n) nor rational in n")
     return _rational_in_n(scheme, first, lam, e0, head)
 
 

@@ -63,3 +63,9 @@ def test_a_vertex_weight_whose_dominance_changes_late_gets_the_first_valence_whe
     k = int(str(r.counterexample).split("n = ")[1].split(":")[0])
     assert 32 < k <= b1.SHAPE_VALENCES[1] and "computed: the elliptic part" in str(r.counterexample)
     assert all(dominant_part(second_order_eigenstructure(s, m)) == 2 for m in (5, k - 1))  # the first valence it changes
+
+
+def test_a_vertex_weight_with_a_cosine_on_quads_is_open_with_the_reason():
+    s = catmull_clark(sp.Rational(3, 2) / n**2 + sp.cos(2 * sp.pi / n) ** 2 / (100 * n**2), sp.Rational(1, 4) / n**2)
+    step = hyperbolic_dominates_from(s, 5)
+    assert step.status == "open" and "E_0 is not a rational function of n" in step.text

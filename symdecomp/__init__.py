@@ -114,7 +114,8 @@ nothing else.
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``; for every valence, its spectral conditions proved
                    in n and the map per valence, ``c1_every_n``; the characteristic map for every n >= N0 by exact signs in
                    t = cos(2 pi/n), ``c1_uniform``; the curvature regime for every
-                   valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``), at boundary, crease and
+                   valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``; the part that dominates on fine
+                   rings for every valence, ``dominance_every_n``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
                    by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
                    ``c1_sharp_ring``; with many faces, the spectral conditions from the blocks, ``c1_sharp_blocks``); for

@@ -216,30 +216,65 @@ def check_regular(scheme: Scheme, multiplicity: int) -> CheckResult:
 
 #: As printed: ``(first n, last n or None, the dominant part's frequency or None for neither)``, per kind of regular patch.
 DOMINANCE = {BICUBIC: ((3, 4, None), (5, None, 2)), BOX_SPLINE: ((3, 3, None), (4, 5, 0), (6, 6, None), (7, None, 2))}
-SHAPE_VALENCES = (3, 32)
+#: Valences compared one by one where the last row is not proved for every n (far enough to meet a late change).
+SHAPE_VALENCES = (3, 128)
+_PART = {0: "the elliptic part", 2: "the hyperbolic part", None: "neither part"}
 
 
-def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_VALENCES) -> CheckResult:
-    """Compare which second-order part dominates on fine rings (frequency 0 or 2, or neither) with ``printed``."""
-    lo, hi = max(valences[0], scheme.minimum_valence()), valences[1]
+def _disagreement(scheme: Scheme, printed, lo: int, hi: int) -> CheckResult | None:
+    """The first valence of ``lo..hi`` whose certified dominant part is not the printed one, as a refutation."""
     for n in range(lo, hi + 1):
         a = artifact_indicators(scheme, n) if n <= 8 else None
         dominant = a.shape[2] if a else dominant_part(second_order_eigenstructure(scheme, n))
         expected = next(d for first, last, d in printed if first <= n and (last is None or n <= last))
         if dominant != expected:
-            name = {0: "the elliptic part", 2: "the hyperbolic part", None: "neither part"}
-            what = Text(Verbatim(scheme.name), f", n = {n}: the statement says {name[expected]} dominates; computed: "
-                        f"{name[dominant]} (certified, Arb balls)")
+            what = Text(Verbatim(scheme.name), f", n = {n}: the statement says {_PART[expected]} dominates; computed: "
+                        f"{_PART[dominant]} (certified, Arb balls)")
             # one valence's certified comparison, as the C1 test's and the regimes' counterexamples: a single case
             return CheckResult(Status.REFUTED, what, counterexample=what, scope=Scope.SINGLE_CASE)
+    return None
+
+
+def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_VALENCES) -> CheckResult:
+    """Compare which second-order part dominates on fine rings (frequency 0 or 2, or neither) with ``printed``: one
+    valence at a time before the last row's first n, and the last row (the hyperbolic part from ``first`` on) for every
+    n (:func:`~symdecomp.verify.dominance_every_n.hyperbolic_dominates_from`); where that is open, valence by valence to
+    ``valences[1]``, so that a dominance that changes late is refuted at the first valence where it changes."""
+    from symdecomp.verify.dominance_every_n import hyperbolic_dominates_from
+
+    lo, hi = max(valences[0], scheme.minimum_valence()), valences[1]
+    first, last, part = printed[-1]
+    refuted = _disagreement(scheme, printed, lo, min(first - 1, hi))
+    if refuted is not None:
+        return refuted
+    proof = hyperbolic_dominates_from(scheme, max(first, lo)) if last is None and part == 2 else None
     shapes = sp.Matrix([[sp.Integer(n), sp.Symbol(artifact_indicators(scheme, n).shape[0])] for n in range(max(lo, 4), 9)])
+    steps = (Step("The certified shape of the central surface for elliptic input (the frequency-0 height), n = 4..8: where "
+                  "the hyperbolic part dominates, this is not the shape the rings tend to", shapes),)
+    if proof is not None and proof.status == "proved":
+        below = f"at each n = {lo}..{first - 1} (certified, Arb balls) and " if first > lo else ""
+        return CheckResult(Status.PROVED, Text("the part that dominates on fine rings agrees with the statement for ",
+                                               Verbatim(scheme.name), f" {below}", _typeset(proof),
+                                               " (decided exactly for every such n, any valences before the exact signs "
+                                               "start certified one by one: the last step)"),
+                           steps=steps + _argument(first, proof.text))
+    refuted = _disagreement(scheme, printed, max(lo, first), hi)
+    if refuted is not None:
+        return refuted
+    why = "; not proved for every n (why: the last step)" if proof is not None else ""
+    steps += _argument(first, proof.text) if proof is not None else ()
     return CheckResult(
         Status.VERIFIED,
         Text("the part that dominates on fine rings agrees with the statement for ", Verbatim(scheme.name),
-             f" at every n = {lo}..{hi} (the largest frequency-0 and frequency-2 eigenvalues after ", lambda_1, ", certified)"),
-        steps=(Step("The certified shape of the central surface for elliptic input (the frequency-0 height), n = 4..8: where "
-                    "the hyperbolic part dominates, this is not the shape the rings tend to", shapes),),
-        valences=(lo, hi))
+             f" at every n = {lo}..{hi} (the largest frequency-0 and frequency-2 eigenvalues after ", lambda_1,
+             ", certified)", why),
+        steps=steps, valences=(lo, hi))
+
+
+def _argument(first: int, text: str) -> tuple[Step, ...]:
+    """The argument for every ``n >= first`` as computed (:mod:`symdecomp.verify.dominance_every_n`), in its own words."""
+    return (Step(f"For every $n \\ge {first}$, the argument as computed by symdecomp.verify.dominance_every_n "
+                 "(formulas in sympy's notation):"), Step(Verbatim(text)))
 
 
 @claim(
@@ -255,10 +290,13 @@ def check_dominance(scheme: Scheme, printed, valences: tuple[int, int] = SHAPE_V
 )
 def _shape(scheme: Scheme) -> CheckResult:
     quad = check_dominance(_on(scheme, QUAD), QUAD.select(DOMINANCE, "the printed dominance"))
-    if quad.status is not Status.VERIFIED:
+    if quad.status not in (Status.VERIFIED, Status.PROVED):
         return quad
     tri = check_dominance(_on(scheme, TRIANGLE), TRIANGLE.select(DOMINANCE, "the printed dominance"))
-    if tri.status is not Status.VERIFIED:
+    if tri.status not in (Status.VERIFIED, Status.PROVED):
         return tri
+    if quad.status is tri.status is Status.PROVED:
+        return CheckResult(Status.PROVED, Text(quad.evidence, "; and ", tri.evidence), steps=quad.steps + tri.steps)
+    ranges = [r.valences for r in (quad, tri) if r.valences is not None]
     return CheckResult(Status.VERIFIED, Text(quad.evidence, "; and ", tri.evidence), steps=quad.steps + tri.steps,
-                       valences=quad.valences)
+                       valences=(min(lo for lo, _ in ranges), max(hi for _, hi in ranges)))

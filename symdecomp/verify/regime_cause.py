@@ -22,13 +22,16 @@ The valences between the regime's first unbounded one and ``start`` are certifie
 
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from symdecomp.algebra.valence_signs import positive_from
 from symdecomp.analysis.characteristic import outer_charpoly
 from symdecomp.analysis.frequency import one_ring_matrices
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
+from symdecomp.validate import check_valence
 from symdecomp.verify.c1_every_n import EveryNStep, T, _in_t
 
 __all__ = ["frequency_zero_below_hyperbolic", "hyperbolic_cause_on_quads"]
@@ -87,7 +90,14 @@ def frequency_zero_below_hyperbolic(scheme: Scheme) -> tuple[int, str] | None:
 
 def hyperbolic_cause_on_quads(scheme: Scheme, first: int) -> EveryNStep | None:
     """For every ``n >= first`` the largest eigenvalue after 1 and ``lambda_1`` is the hyperbolic one (quads): exact from
-    :func:`frequency_zero_below_hyperbolic`'s start, certified per valence before it; ``None`` where not shown."""
+    :func:`frequency_zero_below_hyperbolic`'s start, certified per valence before it; ``None`` where not shown. Computed
+    once per ``(scheme, first)``: the curvature regime's claim and the shape's
+    (:mod:`symdecomp.verify.dominance_every_n`) ask the same in one worker."""
+    return _cause_on_quads(check_scheme(scheme), check_valence(first, argument="first"))
+
+
+@functools.lru_cache(maxsize=16)  # private: the public function checks the arguments before the lookup
+def _cause_on_quads(scheme: Scheme, first: int) -> EveryNStep | None:
     from symdecomp.verify.c1_every_n import spectral_every_n
     from symdecomp.verify.second_order_spectrum import second_order_eigenstructure
 

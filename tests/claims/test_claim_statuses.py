@@ -91,7 +91,7 @@ EXPECTED = {
     "Curvature regime: Loop": P,  # n = 3..64 certified; unbounded (hyperbolic) for every n >= 7 proved (issue 32)
     "Loop's vertex weight": P,  # the elliptic eigenvalue is lambda_1^2 identically in n
     "Curvature at the regular valence": V,  # mu = 1/4 = lambda_1^2 three times at n = 4
-    "Shape: the valence decides": V,  # the hyperbolic part dominates from n = 5 (Catmull-Clark), 7 (Loop); n = 3..32
+    "Shape: the valence decides": P,  # the hyperbolic part dominates for every n >= 5 (Catmull-Clark), >= 7 (Loop)
     # beyond the paper: boundary and crease vertices (issue 20)
     "Sector: sine decomposition": P,  # a trig identity in the index and theta: every k
     "Sector: crease block": P,  # 1, 1/2, 1/4 for every k

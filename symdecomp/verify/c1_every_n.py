@@ -143,7 +143,7 @@ def _tangent_steps(M: sp.Matrix, radius: sp.Expr) -> list[EveryNStep]:
             ("monotone", "the dominant eigenvalue (tr + sqrt(disc))/2 increases with t on [-1, 1] (tr' > 0, and disc' >= 0 or "
              "4 disc tr'^2 > disc'^2): lambda_1 (t = cos(2 pi/n)) is double (j = 1, n - 1) and larger than every other "
              "frequency's", increasing, ((r"\operatorname{tr}' M(t)", d_tr), (r"\Delta'(t)", sp.factor(d_disc)),
-                                         (r"4 \Delta \operatorname{tr}'^2 - \Delta'^2", sp.factor(4 * disc * d_tr**2 - d_disc**2)))),
+                                         (r"4 \Delta (\operatorname{tr}')^2 - (\Delta')^2", sp.factor(4 * disc * d_tr**2 - d_disc**2)))),
             ("bounds", f"lambda_1 < 1 (det(I - M) = {p(1)} > 0 and tr < 2) and lambda_1 > {radius}, the outer ring's largest "
              f"eigenvalue (tr/2 > {radius}, or det({radius} I - M) < 0), on [-1/2, 1]",
              _positive(p(1), HALF, 1) and _positive(2 - tr, HALF, 1)

@@ -165,7 +165,8 @@ nothing else.
                    (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), the
                    cross-check's agreement by valence (``plotting.check_chart``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
-                   one scheme in one document (``report``: its sections; as LaTeX and PDF,
+                   one scheme in one document (``report``: its sections; C1 and the regime for every valence,
+                   ``report_every_n``; as LaTeX and PDF,
                    ``report_tex``; as one HTML file, ``report_html``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,

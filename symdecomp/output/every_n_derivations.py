@@ -34,7 +34,8 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, c1_every_n
 from symdecomp.verify.regime_every_n import RegimeEveryN, regime_every_n
 
-__all__ = ["EVERY_N_FILE", "CERTIFIED", "EXAMPLES", "every_n_proofs", "every_n_latex", "every_n_files"]
+__all__ = ["EVERY_N_FILE", "CERTIFIED", "EXAMPLES", "every_n_proofs", "c1_statement", "regime_statement", "step_where",
+           "every_n_latex", "every_n_files"]
 
 #: The file the section is written to, next to ``main.tex`` (which inputs it).
 EVERY_N_FILE = "c1-every-n.tex"
@@ -64,7 +65,8 @@ def every_n_proofs(scheme: Scheme) -> tuple[EveryNResult, RegimeEveryN | str]:
     return c1_every_n(scheme, CERTIFIED), regime
 
 
-def _where(step: EveryNStep) -> str:
+def step_where(step: EveryNStep) -> str:
+    """The valences a step covers, as inline math (``$n \\ge 5$``, ``$n = 3, \\dots, 64$``)."""
     first, last = step.valences
     return f"$n \\ge {first}$" if last is None else f"$n = {first}, \\dots, {last}$" if last > first else f"$n = {first}$"
 
@@ -78,8 +80,8 @@ def _formulas(step: EveryNStep) -> str:
     return display_math(shown) if shown else ""
 
 
-def _c1_statement(result: EveryNResult) -> str:
-    """The proposition as the proof's outcome allows it."""
+def c1_statement(result: EveryNResult) -> str:
+    """The proposition C1 for every n as the proof's outcome allows it (package prose, ``$...$`` math)."""
     lo, hi = result.certified
     if result.status == "proved":
         return f"The surface is $C^1$ at an extraordinary vertex of every valence $n \\ge {lo}$."
@@ -133,7 +135,7 @@ _PROSE = {
 
 
 def _step_latex(step: EveryNStep, scheme: Scheme) -> str:
-    head = "\\item[%s] %s, %s. " % (step.name or "step", step.status, _where(step))
+    head = "\\item[%s] %s, %s. " % (step.name or "step", step.status, step_where(step))
     identity = step.name == "frequency-zero" and any(lhs.startswith(r"\mu_0") for lhs, _ in step.formulas)
     prose = _PROSE.get(step.name + "-identity" if identity else step.name)
     if step.status in ("proved", "verified") and prose:
@@ -189,7 +191,8 @@ _MAP_DETAILS = {"map-scale": _scale_details, "map-regular": _regular_details}
 _REGIMES = {"zero": "zero (a flat spot)", "bounded": "bounded", "unbounded": "unbounded"}
 
 
-def _regime_statement(regime: RegimeEveryN) -> str:
+def regime_statement(regime: RegimeEveryN) -> str:
+    """The proposition on the curvature regime for every n as the proof's outcome allows it."""
     per = ", ".join(f"{_REGIMES.get(r, r)} at $n = {n}$" for n, r in regime.per_valence)
     if regime.first_proved is None:
         return f"The curvature at an extraordinary vertex is {per}; no regime is proved for every larger $n$."
@@ -211,7 +214,7 @@ def _hyperbolic_gap(result: EveryNResult) -> tuple[sp.Expr, str] | None:
 
 
 def _regime_step(step: EveryNStep, k: int, regime: RegimeEveryN, result: EveryNResult) -> str:
-    head = "\\item[%s] %s, %s. " % ("per valence" if step.status == "verified" else "every n", step.status, _where(step))
+    head = "\\item[%s] %s, %s. " % ("per valence" if step.status == "verified" else "every n", step.status, step_where(step))
     gap = _hyperbolic_gap(result)
     if step.status == "verified":
         return head + text_latex("Certified one by one (Arb balls; ties exact): " + ", ".join(
@@ -232,7 +235,7 @@ def _regime_latex(regime: RegimeEveryN | str, result: EveryNResult, number: int)
     out = f"\\paragraph{{Proposition {number}}} (the curvature regime for every $n$). "
     if isinstance(regime, str):
         return out + text_latex("Not applicable: ") + text_latex(Verbatim(regime)) + "\n"
-    out += "\\emph{" + text_latex(_regime_statement(regime), displays=False) + "}\n\n\\textit{Proof.}\n"
+    out += "\\emph{" + text_latex(regime_statement(regime), displays=False) + "}\n\n\\textit{Proof.}\n"
     steps = "".join(_regime_step(step, k, regime, result) for k, step in enumerate(regime.steps))
     return out + "\\begin{description}\n" + steps + "\\end{description}\n\\hfill$\\square$\n"
 
@@ -241,7 +244,7 @@ def every_n_latex(scheme: Scheme, number: int = 1) -> str:
     """The subsection of one scheme: its two propositions (numbered from ``number``) and their proofs."""
     result, regime = every_n_proofs(scheme)
     out = "\\subsection*{%s}\n" % text_latex(Verbatim(scheme.name))
-    out += f"\\paragraph{{Proposition {number}}} ($C^1$ for every $n \\ge 3$). \\emph{{{_c1_statement(result)}}}\n\n"
+    out += f"\\paragraph{{Proposition {number}}} ($C^1$ for every $n \\ge 3$). \\emph{{{c1_statement(result)}}}\n\n"
     out += "\\textit{Proof.}\n\\begin{description}\n" + "\n".join(_step_latex(s, scheme) for s in result.steps)
     out += "\\end{description}\n\\hfill$\\square$\n\n"
     return out + _regime_latex(regime, result, number + 1)

@@ -53,8 +53,8 @@ _DELTA = sp.Function("Delta")(_T)
 
 
 @lru_cache(maxsize=8)
-def every_n_proofs(scheme: Scheme) -> tuple[EveryNResult, RegimeEveryN | str]:
-    """C1 for every valence (Reif's test at ``3..CERTIFIED``) and the regime for every valence, or why the regime does not
+def every_n_proofs(scheme: Scheme, certified: int = CERTIFIED) -> tuple[EveryNResult, RegimeEveryN | str]:
+    """C1 for every valence (Reif's test at ``3..certified``) and the regime for every valence, or why the regime does not
     apply (the text of its :class:`~symdecomp.errors.NotApplicableError`)."""
     from symdecomp.errors import NotApplicableError
 
@@ -62,7 +62,7 @@ def every_n_proofs(scheme: Scheme) -> tuple[EveryNResult, RegimeEveryN | str]:
         regime: RegimeEveryN | str = regime_every_n(scheme)
     except NotApplicableError as exc:
         regime = str(exc)
-    return c1_every_n(scheme, CERTIFIED), regime
+    return c1_every_n(scheme, certified), regime
 
 
 def step_where(step: EveryNStep) -> str:

@@ -21,6 +21,7 @@ from symdecomp.cli.json_envelope import json_schema
 from symdecomp.output.every_n_derivations import EVERY_N_FILE, every_n_files, every_n_latex, every_n_proofs
 from symdecomp.output.latex import derivation_files
 from symdecomp.output.report import build_report, every_n_section
+from symdecomp.output.report_every_n import CERTIFIED as REPORT_CERTIFIED
 from symdecomp.output.report_tex import report_latex
 from symdecomp.output.texlayout import latex
 from symdecomp.schemes.files import load_scheme
@@ -131,7 +132,8 @@ def test_the_report_has_the_section():
     report = build_report(loop(), [5], sections=(every_n_section,))
     (section,) = report.sections
     tex = _flat(report_latex(report)[0])
-    result, regime = every_n_proofs(loop())
+    result, regime = every_n_proofs(loop(), REPORT_CERTIFIED)
+    assert ("reif-per-valence", f"$n = 3, \\dots, {REPORT_CERTIFIED}$") in [(str(r[0]), r[2]) for r in section.blocks[1].rows]
     assert section.title == "Every valence: C1 and the curvature regime"
     assert "every valence $n \\ge 3$" in tex and f"unbounded for every $n \\ge {regime.first_proved}$" in tex
     assert [str(row[0]) for row in section.blocks[1].rows] == [s.name for s in result.steps]

@@ -184,7 +184,20 @@ def _regular_details(scheme: Scheme) -> str:
                        f"{tally}. The first {min(EXAMPLES, len(forms))}, factored:") + "\n" + display_math(shown))
 
 
-_MAP_DETAILS = {"map-scale": _scale_details, "map-regular": _regular_details}
+def _wedge_details(scheme: Scheme) -> str:
+    """How many boundary control points the wedge argument decided (the map's decided signs less the Jacobian's)."""
+    from symdecomp.analysis.characteristic_uniform import uniform_nets
+    from symdecomp.verify.c1_uniform import _jacobian_coefficients
+
+    result, _ = every_n_proofs(scheme)
+    if result.uniform is None:
+        return ""
+    points = result.uniform.coefficients - len(_jacobian_coefficients(uniform_nets(scheme), scheme.lattice))
+    return text_latex(f"The boundary has {points} control points, each with the three signs decided on "
+                      f"$[{sp.latex(result.uniform.t_low)}, 1]$.") + "\n"
+
+
+_MAP_DETAILS = {"map-scale": _scale_details, "map-regular": _regular_details, "map-injective": _wedge_details}
 
 
 #: A regime in words (:class:`~symdecomp.analysis.curvature_regime.CurvatureRegime`'s values).

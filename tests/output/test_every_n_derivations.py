@@ -85,6 +85,8 @@ def test_the_formulas_are_sympys_printing_of_the_computed_objects(document, name
     count = len(_jacobian_coefficients(nets, scheme.lattice))
     assert f"There are {count} coefficients; the Sturm counts of $(U, V)$" in section
     assert f"{count} with 0 and 0 real roots" in section  # no sign change: each coefficient keeps its sign
+    uniform = every_n_proofs(scheme)[0].uniform
+    assert f"The boundary has {uniform.coefficients - count} control points" in section  # the wedge's points
     # the eigenvalue's quadratic (Loop: linear) as the map's nets use it
     assert _flat("0 = " + latex(nets.quadratic.as_expr())) in section
     assert not re.search(r"(?<![\\\w])lambda_1|sqrt\(|\*\*", section)  # no ASCII math in the typeset proof

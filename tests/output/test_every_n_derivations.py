@@ -147,6 +147,11 @@ def test_c1_every_n_json_validates_and_names_each_step(capsys):
     jsonschema.validate(data, json_schema())
     assert [s["name"] for s in data["steps"]] == ["monotone", "bounds", "frequency-zero", "reif-per-valence", "map-scale",
                                                   "map-regular", "map-injective"]
+    # a refutation from n = 10 on names its steps too: the failure at 10 and the proof for every larger n
+    assert main(["c1", "--every-n", "--scheme", str(CORPUS / "tuned-at-ev.toml"), "--json", "--quiet"]) == 1
+    refuted = json.loads(capsys.readouterr().out)
+    jsonschema.validate(refuted, json_schema())
+    assert refuted["status"] == "refuted" and [s["name"] for s in refuted["steps"]][-2:] == ["reif-at-n", "fails-from"]
     unnamed = {**data, "steps": [{k: v for k, v in data["steps"][0].items() if k != "name"}]}
     with pytest.raises(jsonschema.ValidationError, match="'name' is a required property"):
         jsonschema.validate(unnamed, json_schema())

@@ -72,12 +72,8 @@ def step_where(step: EveryNStep) -> str:
 
 
 def _formulas(step: EveryNStep) -> str:
-    """The step's computed objects, displayed; a repeated fact (the same rational function twice) once."""
-    shown: dict[str, object] = {}
-    for lhs, value in step.formulas:
-        if value not in shown.values():
-            shown[lhs] = value
-    return display_math(shown) if shown else ""
+    """The step's computed objects, displayed."""
+    return display_math(dict(step.formulas)) if step.formulas else ""
 
 
 def c1_statement(result: EveryNResult) -> str:
@@ -167,8 +163,8 @@ def _scale_details(scheme: Scheme) -> str:
 
 
 def _interval(scheme: Scheme):
-    result, _ = every_n_proofs(scheme)
-    return result.uniform.t_low if result.uniform is not None else sp.Rational(-1, 2)
+    """``t_0``: the map's signs are proved for ``t`` in ``[t_0, 1]`` (asked only of a proved map step)."""
+    return every_n_proofs(scheme)[0].uniform.t_low
 
 
 def _regular_details(scheme: Scheme) -> str:

@@ -174,7 +174,7 @@ def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNS
     return EveryNStep(f"for n >= {tail.start} the eigenvalues of E_0 besides 1 are below lambda_1: cos(pi/n) >= 1 - 5/n^2 "
                       f"and the signs of {len(tail.facts)} rational functions of n (Proposition 5.1's tail bound)",
                       "proved", (tail.start, None), "frequency-zero",
-                      tuple((f"f_{{{k}}}(n)", fact) for k, fact in enumerate(tail.facts, 1)))
+                      tuple((f"f_{{{k}}}(n)", fact) for k, fact in enumerate(dict.fromkeys(tail.facts), 1)))
 
 
 def spectral_every_n(scheme: Scheme) -> tuple[EveryNStep, ...]:

@@ -150,7 +150,8 @@ nothing else.
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
                    ``texlayout``), results in a notebook: short HTML tables and LaTeX (``display``),
                    the artifact table's columns (``artifact_table``), the zoo's families derived
-                   by the engine, the file zoo.tex (``zoo_derivations``), the report of a zoo scheme
+                   by the engine, the file zoo.tex (``zoo_derivations``), C1 and the curvature regime
+                   for every valence as propositions, the file c1-every-n.tex (``every_n_derivations``), the report of a zoo scheme
                    (``report_zoo``), Stam's data file (``evaldata``), meshes
                    with per-vertex colours as PLY and OBJ (``colored_mesh``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
@@ -165,7 +166,8 @@ nothing else.
                    (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), the
                    cross-check's agreement by valence (``plotting.check_chart``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
-                   one scheme in one document (``report``: its sections; as LaTeX and PDF,
+                   one scheme in one document (``report``: its sections; C1 and the regime for every valence,
+                   ``report_every_n``; as LaTeX and PDF,
                    ``report_tex``; as one HTML file, ``report_html``)
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,

@@ -15,7 +15,7 @@ from symdecomp.validate import DEFAULT_BUDGET
 __all__ = ["register", "run", "write_derivations"]
 
 #: Files this command owns in the output directory (stale ones are removed on regeneration).
-OWNED = re.compile(r"^(main|section-[0-9-]+|beyond-[0-9-]+|zoo)\.tex$")
+OWNED = re.compile(r"^(main|section-[0-9-]+|beyond-[0-9-]+|zoo|c1-every-n)\.tex$")
 
 
 def register(sub) -> None:
@@ -27,7 +27,9 @@ def register(sub) -> None:
         "paper and a main.tex that inputs them after a summary table. The output is deterministic; "
         "compile it with `latexmk -pdf main.tex` (or pdflatex, twice). Files of earlier runs that no "
         "longer correspond to a section are removed; other files in the directory are left alone. "
-        "Exit status 1 if a check failed to run (status 'error'; the files are written all the same). It also writes "
+        "Exit status 1 if a check failed to run (status 'error'; the files are written all the same). main.tex also inputs "
+        "c1-every-n.tex: for Catmull-Clark and Loop, C1 and the curvature regime for every valence as propositions, proved "
+        "with the steps of `symdecomp c1 --every-n` and `symdecomp artifacts --every-n`. It also writes "
         "zoo.tex, a document of its own: the paper's decomposition applied to each shipped family of the zoo (the rules' "
         "symbols, the frequency blocks and their factored characteristic polynomials, the spectrum at a few valences).",
     )
@@ -65,13 +67,16 @@ def zoo_files(show_progress: bool = False) -> dict[str, str]:
 
 def write_derivations(out: Path, *, show_progress: bool = False, scheme=None, budget=DEFAULT_BUDGET) -> list[Path]:
     """Check every claim (for ``scheme``, default Catmull-Clark; ``budget`` seconds each) and write the derivation files to ``out``,
-    with the zoo's families in ``zoo.tex`` (:mod:`symdecomp.output.zoo_derivations`)."""
+    with C1 and the curvature regime for every valence of the built-in schemes in ``c1-every-n.tex``
+    (:mod:`symdecomp.output.every_n_derivations`) and the zoo's families in ``zoo.tex`` (:mod:`symdecomp.output.zoo_derivations`)."""
     from symdecomp.claims import check_claim
+    from symdecomp.output.every_n_derivations import every_n_files
     from symdecomp.output.latex import derivation_files
 
     claims = all_claims()
     pairs = [(c, check_claim(c.label, scheme, budget=budget)) for c in progress(claims, len(claims), "checking claims", enabled=show_progress)]
-    return _write(out, {**derivation_files(pairs), **zoo_files(show_progress)})
+    every_n = every_n_files()  # the built-in schemes' proofs for every valence, input by main.tex after the claims
+    return _write(out, {**derivation_files(pairs, tuple(every_n)), **every_n, **zoo_files(show_progress)})
 
 
 def _write(out: Path, files: dict[str, str]) -> list[Path]:

@@ -53,7 +53,7 @@ from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["MAX_VALENCES", "FIGURES", "DIGITS", "Paragraph", "Formula", "Table", "Figure", "Section", "Report", "ReportInput",
-           "SECTIONS", "build_report", "shape_section"]
+           "SECTIONS", "build_report", "shape_section", "every_n_section"]
 
 
 #: The names of the figures a report may hold (a ``.tex`` report writes them next to itself).
@@ -384,9 +384,17 @@ def figures_section(inp: ReportInput) -> Section:
     return Section("Figures", tuple(blocks))
 
 
+def every_n_section(inp: ReportInput) -> Section:
+    """C1 and the curvature regime for every valence (:mod:`symdecomp.output.report_every_n`)."""
+    from symdecomp.output.report_every_n import every_n_section as build
+
+    return build(inp)
+
+
 #: The sections of a report, in order: each takes a :class:`ReportInput` and returns a :class:`Section`.
 SECTIONS: tuple[Callable[[ReportInput], Section], ...] = (
-    scheme_section, claims_section, spectrum_section, masks_section, c1_section, shape_section, figures_section,
+    scheme_section, claims_section, spectrum_section, masks_section, c1_section, every_n_section, shape_section,
+    figures_section,
 )
 
 

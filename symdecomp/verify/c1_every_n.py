@@ -48,6 +48,8 @@ __all__ = ["EveryNStep", "EveryNResult", "spectral_every_n", "c1_every_n"]
 
 T = sp.Symbol("t", real=True)  # cos(2 pi j/n)
 HALF = sp.Rational(-1, 2)  # t_1 = cos(2 pi/n) at n = 3
+#: The names of the characteristic map's steps, in the order of :attr:`UniformMapResult.facts` when it is proved.
+MAP_STEPS = ("map-scale", "map-regular", "map-injective")
 
 
 @dataclass(frozen=True)
@@ -60,9 +62,14 @@ class EveryNStep:
     status: str
     #: The valences it covers: ``(first, None)`` for every ``n >= first``, ``(first, last)`` for a range.
     valences: tuple[int, int | None]
+    #: What the step is, a stable key a program reads (``real-distinct``, ``monotone``, ``map-regular``, ...).
+    name: str = ""
+    #: The computed objects the step rests on, ``(symbol in LaTeX, value)``, in the order the derivations print them.
+    formulas: tuple[tuple[str, object], ...] = ()
 
     def as_json(self) -> dict:
-        return {"text": self.text, "status": self.status, "valences": list(self.valences)}
+        return {**({"name": self.name} if self.name else {}), "text": self.text, "status": self.status,
+                "valences": list(self.valences)}
 
 
 @dataclass(frozen=True)
@@ -110,15 +117,16 @@ def _positive(expr, lo, hi) -> bool:
 
 
 def _tangent_steps(M: sp.Matrix, radius: sp.Expr) -> list[EveryNStep]:
-    """S1-S4 for a 1 x 1 or 2 x 2 ``M(t)``."""
+    """S1-S4 for a 1 x 1 or 2 x 2 ``M(t)``: ``(name, text, shown, formulas)`` per step (formulas: what the derivations print)."""
     if M.rows == 1:
         lam = _in_t(M[0, 0])
         checks = [
-            (f"the eigenvalue of M at t = cos(2 pi j/n) is {lam}, increasing in t (slope {sp.diff(lam, T)}) and positive on "
-             "[-1, 1]: lambda_1 (t = cos(2 pi/n)) is double (j = 1, n - 1) and larger than every other frequency's",
-             _positive(sp.diff(lam, T), -1, 1) and _positive(lam, -1, 1)),
-            (f"lambda_1 < 1 and lambda_1 > {radius} (the outer ring's eigenvalues): {1 - lam} > 0 and {lam - radius} > 0 "
-             "on [-1/2, 1]", _positive(1 - lam, HALF, 1) and _positive(lam - radius, HALF, 1)),
+            ("monotone", f"the eigenvalue of M at t = cos(2 pi j/n) is {lam}, increasing in t (slope {sp.diff(lam, T)}) and "
+             "positive on [-1, 1]: lambda_1 (t = cos(2 pi/n)) is double (j = 1, n - 1) and larger than every other frequency's",
+             _positive(sp.diff(lam, T), -1, 1) and _positive(lam, -1, 1), ((r"\lambda(t)", lam), (r"\lambda'(t)", sp.diff(lam, T)))),
+            ("bounds", f"lambda_1 < 1 and lambda_1 > {radius} (the outer ring's eigenvalues): {1 - lam} > 0 and {lam - radius} > 0 "
+             "on [-1/2, 1]", _positive(1 - lam, HALF, 1) and _positive(lam - radius, HALF, 1),
+             ((r"1 - \lambda(t)", 1 - lam), (r"\lambda(t) - \rho_S", lam - radius), (r"\rho_S", radius))),
         ]
     else:
         tr, det = _in_t(M.trace()), _in_t(M.det())
@@ -128,19 +136,21 @@ def _tangent_steps(M: sp.Matrix, radius: sp.Expr) -> list[EveryNStep]:
                                                  or _positive(4 * disc * d_tr**2 - d_disc**2, -1, 1))
         p = lambda x: sp.expand(x**2 - tr * x + det)  # noqa: E731 - det(xI - M(t))
         checks = [
-            (f"tr M(t) = {tr} is positive on [-1, 1] and its discriminant {sp.factor(disc)} on (-1, 1] (0 at t = -1 at most: "
-             "the frequency n/2): real eigenvalues, distinct at every frequency but n/2, the other one smaller in modulus",
-             bool(sign_on_interval(disc, T, -1, 1, strict=False)) and _positive(disc, sp.Rational(-1, 2), 1)
-             and _positive(tr, -1, 1)),
-            ("the dominant eigenvalue (tr + sqrt(disc))/2 increases with t on [-1, 1] (tr' > 0, and disc' >= 0 or "
+            ("real-distinct", f"tr M(t) = {tr} is positive on [-1, 1] and its discriminant {sp.factor(disc)} on (-1, 1] (0 at "
+             "t = -1 at most: the frequency n/2): real eigenvalues, distinct at every frequency but n/2, the other one smaller "
+             "in modulus", bool(sign_on_interval(disc, T, -1, 1, strict=False)) and _positive(disc, sp.Rational(-1, 2), 1)
+             and _positive(tr, -1, 1), ((r"\operatorname{tr} M(t)", tr), (r"\det M(t)", det), (r"\Delta(t)", sp.factor(disc)))),
+            ("monotone", "the dominant eigenvalue (tr + sqrt(disc))/2 increases with t on [-1, 1] (tr' > 0, and disc' >= 0 or "
              "4 disc tr'^2 > disc'^2): lambda_1 (t = cos(2 pi/n)) is double (j = 1, n - 1) and larger than every other "
-             "frequency's", increasing),
-            (f"lambda_1 < 1 (det(I - M) = {p(1)} > 0 and tr < 2) and lambda_1 > {radius}, the outer ring's largest eigenvalue "
-             f"(tr/2 > {radius}, or det({radius} I - M) < 0), on [-1/2, 1]",
+             "frequency's", increasing, ((r"\operatorname{tr}' M(t)", d_tr), (r"\Delta'(t)", sp.factor(d_disc)),
+                                         (r"4 \Delta (\operatorname{tr}')^2 - (\Delta')^2", sp.factor(4 * disc * d_tr**2 - d_disc**2)))),
+            ("bounds", f"lambda_1 < 1 (det(I - M) = {p(1)} > 0 and tr < 2) and lambda_1 > {radius}, the outer ring's largest "
+             f"eigenvalue (tr/2 > {radius}, or det({radius} I - M) < 0), on [-1/2, 1]",
              _positive(p(1), HALF, 1) and _positive(2 - tr, HALF, 1)
-             and (_positive(tr - 2 * radius, HALF, 1) or _positive(-p(radius), HALF, 1))),
+             and (_positive(tr - 2 * radius, HALF, 1) or _positive(-p(radius), HALF, 1)),
+             ((r"\det(I - M(t))", p(1)), (r"\rho_S", radius), (r"\det(\rho_S I - M(t))", p(radius)))),
         ]
-    return [EveryNStep(text, "proved" if ok else "failed", (3, None)) for text, ok in checks]
+    return [EveryNStep(text, "proved" if ok else "failed", (3, None), name, formulas) for name, text, ok, formulas in checks]
 
 
 def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNStep:
@@ -151,18 +161,20 @@ def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNS
         defect = sp.simplify(sp.expand((other - lam1**2).rewrite(sp.cos)))
         if defect == 0:
             return EveryNStep("the eigenvalue of E_0 besides 1 equals lambda_1^2 for every n (the vertex weight), and "
-                              "0 < lambda_1 < 1: it is below lambda_1", "proved", (3, None))
+                              "0 < lambda_1 < 1: it is below lambda_1", "proved", (3, None), "frequency-zero",
+                              ((r"\mu_0(n)", other), (r"\mu_0(n) - \lambda_1^2", defect)))
         return EveryNStep(f"the eigenvalue of E_0 besides 1 is not lambda_1^2 (difference {defect}); no argument for every n",
-                          "open", (3, None))
+                          "open", (3, None), "frequency-zero", ((r"\mu_0(n)", other), (r"\mu_0(n) - \lambda_1^2", defect)))
     from symdecomp.analysis.dominance import tail_bound
 
     tail = tail_bound(scheme)
     if tail is None:
         return EveryNStep("no exact tail bound for the eigenvalues of E_0 besides 1 (Proposition 5.1's argument does not "
-                          "apply)", "open", (3, None))
+                          "apply)", "open", (3, None), "frequency-zero")
     return EveryNStep(f"for n >= {tail.start} the eigenvalues of E_0 besides 1 are below lambda_1: cos(pi/n) >= 1 - 5/n^2 "
                       f"and the signs of {len(tail.facts)} rational functions of n (Proposition 5.1's tail bound)",
-                      "proved", (tail.start, None))
+                      "proved", (tail.start, None), "frequency-zero",
+                      tuple((f"f_{{{k}}}(n)", fact) for k, fact in enumerate(dict.fromkeys(tail.facts), 1)))
 
 
 def spectral_every_n(scheme: Scheme) -> tuple[EveryNStep, ...]:
@@ -214,7 +226,9 @@ def _fails_from(scheme: Scheme, first: int, certify) -> EveryNStep | None:
             return EveryNStep(f"C1 fails at every n >= {first}: certified at n = {first}..{start - 1}, and for n >= {start} "
                               f"q({sign * bound}) < 0 (q = det(x I - E_0)/(x - 1), a rational function of n: Sturm sequences), "
                               f"so E_0 has an eigenvalue beyond {sign * bound}, larger in modulus than lambda_1(n) < "
-                              f"lim lambda_1 = {limit}", "proved", (first, None))
+                              f"lim lambda_1 = {limit}", "proved", (first, None), "fails-from",
+                              ((r"q(x)", q.as_expr()), (r"\lim_{n \to \infty} \lambda_1", limit), ("L'", sign * bound),
+                               (r"-q(L')", value), ("N'", sp.Integer(start))))
     return None
 
 
@@ -228,13 +242,13 @@ def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None
     try:
         spectral = spectral_every_n(scheme)
     except NotApplicableError as exc:
-        spectral = (EveryNStep(str(exc), "open", (lo, None)),)
+        spectral = (EveryNStep(str(exc), "open", (lo, None), "spectral"),)
     for k in range(lo, last + 1):
         r = certify(k)
         if progress:
             progress(k)
         if r.verdict != "c1":
-            step = EveryNStep(f"n = {k}: {r.reason}", "failed" if r.verdict == "not-c1" else "open", (k, k))
+            step = EveryNStep(f"n = {k}: {r.reason}", "failed" if r.verdict == "not-c1" else "open", (k, k), "reif-at-n")
             if r.verdict != "not-c1":
                 return EveryNResult(scheme.name, "undecided", f"Reif's test is undecided at n = {k}", spectral + (step,),
                                     (lo, k - 1))
@@ -247,17 +261,17 @@ def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None
     uniform = _uniform_map(scheme, lo, last) if spectral_ok else None
     steps = spectral + (
         EveryNStep(f"Reif's test at each n = {lo}..{last}: the spectral conditions and a regular, injective characteristic "
-                   "map, certified (Arb balls; exact at frequency 0)", "verified", (lo, last)),
+                   "map, certified (Arb balls; exact at frequency 0)", "verified", (lo, last), "reif-per-valence"),
     )
     if uniform is not None and uniform.status == "proved":
-        steps += tuple(EveryNStep(fact, "proved", (uniform.first, None)) for fact in uniform.facts)
+        steps += tuple(EveryNStep(fact, "proved", (uniform.first, None), name) for name, fact in zip(MAP_STEPS, uniform.facts))
         return EveryNResult(scheme.name, "proved", f"C1 for every n >= {lo}: the spectral conditions proved for every n, the "
                             f"characteristic map regular and injective for every n >= {uniform.first} (exact signs in "
                             f"t = cos(2 pi/n)), Reif's test certified at n = {lo}..{last}", steps, (lo, last), uniform=uniform)
     why = ("no bound on its control net that holds for every large n is derived" if uniform is None else
            f"{uniform.facts[-1]} (the nets' exact signs in t = cos(2 pi/n) for n >= {last + 1})")
     steps += (EveryNStep(f"n > {last}: regularity and injectivity of the characteristic map are open: {why}", "open",
-                         (last + 1, None)),)
+                         (last + 1, None), "map-open"),)
     what = ("the spectral conditions hold for every n >= 3 (proved); " if spectral_ok else
             "the spectral conditions are not proved for every n; ")
     return EveryNResult(scheme.name, "verified", f"C1 certified for n = {lo}..{last}; {what}the characteristic map is open "

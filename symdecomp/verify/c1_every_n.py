@@ -42,6 +42,7 @@ from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import cached
 from symdecomp.verify.c1_uniform import UniformMapResult
 
 __all__ = ["EveryNStep", "EveryNResult", "spectral_every_n", "c1_every_n"]
@@ -167,7 +168,11 @@ def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNS
 
 def spectral_every_n(scheme: Scheme) -> tuple[EveryNStep, ...]:
     """The spectral conditions of Reif's test as statements for every ``n`` (module docstring)."""
-    check_scheme(scheme)
+    return _spectral_every_n(scheme)
+
+
+@cached(8, scheme=check_scheme)  # asked by the C1 claim, c1 --every-n and the curvature regime's cause, of one scheme
+def _spectral_every_n(scheme: Scheme) -> tuple[EveryNStep, ...]:
     if scheme.parameters:
         raise NotApplicableError(f"scheme {scheme.name!r} has free parameters; give them values first")
     M, E0 = one_ring_matrices(scheme)

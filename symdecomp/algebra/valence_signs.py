@@ -24,7 +24,7 @@ from __future__ import annotations
 import flint
 import sympy as sp
 
-from symdecomp.algebra.interval_signs import positive_on
+from symdecomp.algebra.interval_signs import count_roots, positive_on
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.errors import InvalidInputError
 
@@ -65,7 +65,7 @@ def positive_from(expr, variable: sp.Symbol, start: int) -> bool:
     if numerator.is_zero:
         return False
     for poly in (numerator, denominator):
-        if poly.degree() > 0 and poly.count_roots(start, None) > 0:
+        if poly.degree() > 0 and _roots_from(poly, start) > 0:
             return False
     return bool(numerator.eval(start) / denominator.eval(start) > 0)
 
@@ -99,3 +99,13 @@ def sign_on_interval(expr, variable: sp.Symbol, low, high, *, strict: bool = Tru
 def _flint_sign(poly: sp.Poly, low, high, strict: bool) -> bool:
     """:func:`sign_on_interval` for rational coefficients and ends, in FLINT (the same decision, much faster)."""
     return positive_on(flint.fmpq_poly([to_fmpq(c) for c in reversed(poly.all_coeffs())]), low, high, strict=strict)
+
+
+def _roots_from(poly: sp.Poly, start) -> int:
+    """The distinct real roots of ``poly`` in ``[start, oo)``; in FLINT up to Cauchy's bound ``1 + max |a_k/a_d|`` (beyond
+    which there is no root) where the coefficients and ``start`` are rational."""
+    if poly.domain not in (sp.ZZ, sp.QQ) or not isinstance(start, (int, sp.Rational)):
+        return poly.count_roots(start, None)
+    p = flint.fmpq_poly([to_fmpq(c) for c in reversed(poly.all_coeffs())])
+    bound = 1 + max(abs(c / p.leading_coefficient()) for c in p.coeffs()[:-1])
+    return count_roots(p, start, max(to_fmpq(start), bound))

@@ -63,3 +63,19 @@ def test_the_same_decisions_as_sympys_sturm_sequences():
         if inside:
             assert positive_on(_fmpq_poly(expr), low, high, strict=False) is False
         assert sign_on_interval(expr, t, low, high, strict=False) is positive_on(_fmpq_poly(expr), low, high, strict=False)
+
+
+def test_roots_from_a_valence_on_as_sympy_counts_them():
+    """The real roots in [start, oo) (positive_from's question), counted in FLINT up to Cauchy's bound, as sympy counts
+    them; the roots 9/2 and 40 of (2n - 9)(n - 40)(n^2 + 1) lie beyond 3, 9/2 and 40, not beyond 41."""
+    from symdecomp.algebra.valence_signs import _roots_from
+
+    n = sp.Symbol("n")
+    poly = sp.Poly((2 * n - 9) * (n - 40) * (n**2 + 1), n)
+    assert [_roots_from(poly, s) for s in (3, sp.Rational(9, 2), 40, 41)] == [2, 2, 1, 0]
+    rng = random.Random(34)
+    for _ in range(200):
+        expr = sp.expand(sp.Mul(*[n - sp.Rational(rng.randint(-50, 50), rng.randint(1, 3)) for _ in range(rng.randint(1, 4))])
+                         * rng.choice([1, n**2 + rng.randint(1, 5), n**2 - rng.randint(1, 30)]))
+        start = rng.randint(-5, 20)
+        assert _roots_from(sp.Poly(expr, n), start) == sp.Poly(expr, n).count_roots(start, None)

@@ -24,7 +24,8 @@ nothing else.
                    clusters of enclosures that may overlap (``clusters``),
                    polynomials over a triangle in Bezier form (``triangle_bezier``), products of
                    tensor and triangular Bernstein polynomials in Arb (``bernstein``), signs of
-                   rational functions of n for every n (``valence_signs``), exact signs of real
+                   rational functions of n for every n (``valence_signs``), of a rational polynomial on an
+                   interval by Sturm sequences in FLINT (``interval_signs``), exact signs of real
                    algebraic numbers (``algebraic_sign``),
                    exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``),
                    exact linear algebra over one real field Q(cos(pi/k)) (``cos_field``)

@@ -20,14 +20,16 @@ from symdecomp.claims.registry import CheckResult, Text, check_claim, get_claim
 
 __all__ = ["check_claims", "COST_HINTS", "GROUPS", "work_items"]
 
-#: Seconds of one core the costliest claims take on Catmull-Clark (measured in one process on a loaded machine and
-#: scaled to an idle one: what counts is their order), handed out first so that no worker is left with a long check
-#: at the end; the others count as cheap (0.1).
+#: Seconds of one core the costliest claims take on Catmull-Clark (measured one after the other in one process, as
+#: ``claims --jobs 1`` runs them, on a loaded two-core machine: what counts is their order), handed out first so that no
+#: worker is left with a long check at the end; the others count as cheap (0.1). A group of :data:`GROUPS` costs the sum.
 COST_HINTS = {
-    "Eq. 51": 1.3, "C1 (Reif's test)": 1.0, "Eq. 1": 0.8, "Remark 5.2": 0.7, "Curvature regime: Loop": 0.7, "Eq. 41": 0.6,
-    "Eq. 50": 0.5, "Section 3: Catmull-Clark support": 0.5, "Eq. 47": 0.5, "Eq. 46": 0.4, "Spectrum (Eq. 34, Eq. 43)": 0.4,
-    "Curvature regime: Catmull-Clark": 0.4, "Eq. 5": 0.4, "Sector: sine decomposition": 0.4, "Shape: the valence decides": 0.3,
-    "Remark 6.1": 0.3, "Section 5.2: Catmull-Clark example": 0.3, "Eq. 10-11": 0.3, "Proposition 6.2": 0.3, "Eq. 48": 0.3,
+    "C1 (Reif's test)": 1.9, "Eq. 51": 1.0, "Curvature regime: Catmull-Clark": 0.85, "Remark 5.2": 0.8, "Eq. 1": 0.8,
+    "Eq. 47": 0.65, "Section 3: Catmull-Clark support": 0.6, "Shape: the valence decides": 0.5,
+    "1-ring suffices (after Eq. 51)": 0.5, "Loop's vertex weight": 0.5, "Eq. 50": 0.5, "Eq. 5": 0.4,
+    "S' (after Eq. 51)": 0.4, "Section 5.2: Catmull-Clark example": 0.4, "Eq. 48": 0.4, "Spectrum (Eq. 34, Eq. 43)": 0.4,
+    "Curvature regime: Loop": 0.35, "Sector: sine decomposition": 0.3, "Eq. 10-11": 0.3, "Remark 6.1": 0.3,
+    "Section 3: symmetry": 0.3, "Eq. 46": 0.3, "Proposition 6.2": 0.3,
 }
 
 

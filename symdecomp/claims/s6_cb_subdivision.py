@@ -5,6 +5,7 @@ Split from :mod:`symdecomp.claims.s6_cb_matrices` (the CB-matrix algebra), which
 from __future__ import annotations
 
 import sympy as sp
+from sympy.polys.polyerrors import BasePolynomialError
 
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, verify_closed_form
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
@@ -32,10 +33,32 @@ def _displayed_expression_agrees(free: Scheme, expression: sp.Expr, valences) ->
     for k in valences:
         for values in ({ALPHA: 0, BETA: 0}, {ALPHA: 1, BETA: 0}, {ALPHA: 0, BETA: 1}):
             subs = {N: k, **{p: v for p, v in values.items() if p in free.parameters}}
-            poly = sp.Poly(sp.cancel(sp.expand(expression.subs(subs))), lam)
+            value = expression.subs(subs)
+            poly = _one_root_polynomial(value, lam) or sp.Poly(sp.cancel(sp.expand(value)), lam)
             if to_fmpq_poly(poly.as_expr(), lam) != matrix_characteristic_polynomial(free, k, values):
                 return f"n = {k}, alpha = {values[ALPHA]}, beta = {values[BETA]}"
     return None
+
+
+def _one_root_polynomial(value: sp.Expr, lam: sp.Symbol) -> sp.Poly | None:
+    """``value``, a rational expression in ``lam`` and one square root ``sqrt(D(lam))``, as the polynomial in ``lam`` it
+    equals, exactly: the root as a symbol ``r``, numerator and denominator reduced by ``r^2 = D`` over ``Q`` and divided;
+    ``None`` where it is not of that form (or ``r`` remains), left to sympy's ``cancel``."""
+    roots = {p for p in value.atoms(sp.Pow) if p.exp == sp.S.Half}
+    if len(roots) != 1:
+        return None
+    (root,) = roots
+    r = sp.Dummy("r")
+    try:
+        parts = [sp.Poly(part, r, lam, domain=sp.QQ) for part in sp.fraction(sp.together(value.xreplace({root: r})))]
+        square = sp.Poly(r**2 - root.base, r, lam, domain=sp.QQ)
+    except BasePolynomialError:  # another symbol, or a coefficient that is not rational
+        return None
+    numerator, denominator = (part.rem(square) for part in parts)
+    if numerator.degree(r) > 0 or denominator.degree(r) > 0 or denominator.is_zero:
+        return None
+    quotient, rest = sp.div(sp.Poly(numerator.as_expr(), lam, domain=sp.QQ), sp.Poly(denominator.as_expr(), lam, domain=sp.QQ))
+    return quotient if rest.is_zero else None
 
 
 def _factored(cf, rho_p, rho_m) -> bool:

@@ -14,8 +14,8 @@ collapsing to a ray; the stretch has a positive determinant and keeps the wedge 
   steps S1-S3 of :mod:`symdecomp.verify.c1_every_n`). A reduced coefficient ``F0(t) + F1(t) L`` is ``U + V r`` with
   ``U = F0 + F1 tr/2``, ``V = F1/2``; it is positive on the interval when ``U > 0`` and ``V >= 0``, or ``U >= 0`` and
   ``V > 0``, or ``U > 0 >= V`` and ``U^2 - V^2 disc > 0``, or ``V > 0 >= U`` and ``V^2 disc - U^2 > 0``: each a sign of
-  a polynomial in ``t`` on ``[t_0, 1]``, decided by Sturm sequences
-  (:func:`~symdecomp.algebra.valence_signs.sign_on_interval`). Nonnegative likewise with weak inequalities.
+  a polynomial in ``t`` on ``[t_0, 1]``, decided by Sturm sequences in FLINT
+  (:func:`~symdecomp.algebra.interval_signs.positive_on`). Nonnegative likewise with weak inequalities.
 * **Regularity.** The eigenvector's scale ``|m_01|^2 det(L I - S)`` is positive, and every Bezier coefficient of the
   stretched map's Jacobian on the three sub-patches is positive on ``[t_0, 1]`` (no subdivision).
 * **Injectivity.** The control points of sector 0's inner boundary curve (stretched coordinates ``(x, y)``) lie in the
@@ -29,10 +29,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import flint
 import sympy as sp
 
+from symdecomp.algebra.interval_signs import positive_on
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.algebra.triangle_bezier import bezier_indices
-from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.characteristic_uniform import RING, UniformNets, reduce_element, uniform_nets
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.box_spline import DEGREE
@@ -74,34 +76,84 @@ class UniformMapResult:
     coefficients: int
 
 
-def _poly(p) -> sp.Poly:
-    """An element of :data:`RING` free of ``L`` and ``s`` as a polynomial in ``t``."""
-    return sp.Poly.from_dict({(m[2],): c for m, c in p.terms()} or {(0,): 0}, T, domain=sp.QQ)
+def _t_poly(p) -> flint.fmpq_poly:
+    """A polynomial in ``t`` (a sympy ``Poly`` or expression, or an ``fmpq_poly``) as an ``fmpq_poly``."""
+    if isinstance(p, flint.fmpq_poly):
+        return p
+    poly = p if isinstance(p, sp.Poly) else sp.Poly(sp.sympify(p, strict=True), T, domain=sp.QQ)
+    return flint.fmpq_poly([to_fmpq(c) for c in reversed(poly.all_coeffs())])
 
 
-def _split(p, nets: UniformNets) -> tuple[sp.Poly, sp.Poly]:
-    """``p = F0 + F1 L`` (reduced) as ``(U, V)`` with ``p = U + V sqrt(disc)``."""
-    p = reduce_element(p, nets.quadratic)
-    if any(m[1] for m in p.monoms()):
-        raise NotApplicableError("a Jacobian coefficient still depends on sin(2 pi/n)")
-    f0 = RING({m: c for m, c in p.terms() if m[0] == 0}) if p else RING(0)
-    f1 = RING({(0, m[1], m[2]): c for m, c in p.terms() if m[0] == 1}) if p else RING(0)
-    trace = sp.Poly(nets.trace, T, domain=sp.QQ)
-    return _poly(f0) + _poly(f1) * trace / 2, _poly(f1) / 2
+def _coefficient(c) -> flint.fmpq:
+    """A coefficient of :data:`RING` (sympy's ``QQ``, whatever its ground type) as an ``fmpq``."""
+    return c if isinstance(c, flint.fmpq) else flint.fmpq(int(c.numerator), int(c.denominator))
 
 
-def sign_with_root(U: sp.Poly, V: sp.Poly, disc: sp.Expr, low, high, *, strict: bool = True) -> bool:
+def _powers_of_L(p) -> dict[int, flint.fmpq_poly] | None:
+    """An element of :data:`RING` free of ``s`` as ``{k: coefficient of L^k}``, polynomials in ``t``; ``None`` if it has
+    ``s``."""
+    coeffs: dict[int, list] = {}
+    for (k, j, i), c in p.terms():
+        if j:
+            return None
+        row = coeffs.setdefault(k, [])
+        row.extend([0] * (i + 1 - len(row)))
+        row[i] = _coefficient(c)
+    return {k: flint.fmpq_poly(row) for k, row in coeffs.items()}
+
+
+@dataclass(frozen=True)
+class _Field:
+    """The quadratic (or linear) relation of ``L`` over ``Q[t]`` and ``tr``, ``disc`` as ``fmpq_poly``."""
+
+    relation: dict
+    trace: flint.fmpq_poly
+    discriminant: flint.fmpq_poly
+
+    @classmethod
+    def of(cls, nets: UniformNets) -> _Field:
+        return cls(_powers_of_L(nets.quadratic), _t_poly(nets.trace), _t_poly(nets.discriminant))
+
+
+def _split(p, nets: UniformNets, field: _Field | None = None) -> tuple[flint.fmpq_poly, flint.fmpq_poly]:
+    """``p = F0 + F1 L`` (reduced) as ``(U, V)`` with ``p = U + V sqrt(disc)``.
+
+    Free of ``s``, ``p`` is reduced by the monic relation of ``L`` alone (``L^d = -sum q_k L^k``, highest powers
+    first), in FLINT: the same normal form as :func:`~symdecomp.analysis.characteristic_uniform.reduce_element`."""
+    field = field or _Field.of(nets)
+    powers = _powers_of_L(p)
+    if powers is None:
+        powers = _powers_of_L(reduce_element(p, nets.quadratic))
+        if powers is None:
+            raise NotApplicableError("a Jacobian coefficient still depends on sin(2 pi/n)")
+    degree = max(field.relation)
+    for k in range(max(powers, default=0), degree - 1, -1):
+        if k not in powers:
+            continue
+        c = powers.pop(k)
+        for i, q in field.relation.items():
+            if i < degree:
+                powers[k - degree + i] = powers.get(k - degree + i, flint.fmpq_poly([])) - c * q
+    zero = flint.fmpq_poly([])
+    f0, f1 = powers.get(0, zero), powers.get(1, zero)
+    return f0 + f1 * field.trace / 2, f1 / 2
+
+
+def sign_with_root(U, V, disc, low, high, *, strict: bool = True) -> bool:
     """Whether ``U + V sqrt(disc)`` is positive (``strict``) or nonnegative on ``[low, high]`` (module docstring), exactly;
-    ``False`` where none of the sufficient sign patterns is shown."""
-    def sign(p, s=True):
-        return bool(sign_on_interval(p.as_expr() if isinstance(p, sp.Poly) else p, T, low, high, strict=s))
+    ``False`` where none of the sufficient sign patterns is shown. ``U``, ``V``, ``disc``: polynomials in ``t`` (sympy
+    ``Poly`` or expression, or FLINT ``fmpq_poly``), decided in FLINT."""
+    U, V, disc = _t_poly(U), _t_poly(V), _t_poly(disc)
 
-    if V.is_zero:
+    def sign(p, s=True):
+        return positive_on(p, low, high, strict=s)
+
+    if V.is_zero():
         return sign(U, strict)
     u_weak, v_weak = sign(U, False), sign(V, False)
     if u_weak and v_weak:
         return not strict or sign(U) or sign(V)
-    square = sp.expand(U.as_expr() ** 2 - V.as_expr() ** 2 * disc)
+    square = U * U - V * V * disc
     if u_weak and sign(-V, False):
         return sign(square, strict) and (not strict or sign(U))
     if v_weak and sign(-U, False):
@@ -164,8 +216,8 @@ def uniform_map(scheme: Scheme, first: int) -> UniformMapResult:
         nets = uniform_nets(scheme)
     except NotApplicableError as exc:
         return UniformMapResult("open", first, low, (str(exc),), 0)
-    disc = nets.discriminant
-    check = lambda p, strict=True: sign_with_root(*_split(p, nets), disc, low, 1, strict=strict)  # noqa: E731
+    field = _Field.of(nets)
+    check = lambda p, strict=True: sign_with_root(*_split(p, nets, field), field.discriminant, low, 1, strict=strict)  # noqa: E731
     interval = f"t = cos(2 pi/n) in [{low}, 1] (every n >= {first}, and the limit n -> oo at t = 1)"
     if not check(nets.scale):
         return UniformMapResult("open", first, low, (f"det(L I - S) is not shown positive for {interval}",), 0)

@@ -25,6 +25,7 @@ from __future__ import annotations
 import functools
 
 import sympy as sp
+from sympy.polys.polyerrors import BasePolynomialError
 
 from symdecomp.algebra.valence_signs import positive_from
 from symdecomp.analysis.characteristic import outer_charpoly
@@ -47,9 +48,19 @@ def _start(exprs) -> int:
     return max(3, int(sp.floor(max(roots, default=0))) + 1)
 
 
+def _nonzero(e) -> bool:
+    """Whether ``e`` is not zero: a rational function of ``n`` over ``Q`` is zero when ``cancel`` makes it so; any other
+    expression is left to ``simplify``."""
+    numerator, _ = sp.fraction(sp.cancel(e))
+    try:
+        return not sp.Poly(numerator, N, domain=sp.QQ).is_zero
+    except BasePolynomialError:
+        return sp.simplify(e) != 0
+
+
 def _root_sign(U, V, D, start: int) -> bool:
     """``U + V sqrt(D) > 0`` for every ``n >= start`` (module docstring)."""
-    pos = lambda e: sp.simplify(e) != 0 and positive_from(sp.cancel(e), N, start)  # noqa: E731
+    pos = lambda e: _nonzero(e) and positive_from(sp.cancel(e), N, start)  # noqa: E731
     if sp.cancel(V) == 0:
         return pos(U)
     square = sp.cancel(U**2 - V**2 * D)

@@ -130,7 +130,9 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     read = _read_rows(p, _g_rows(p, winv))
     v0 = {i: [col.right_at(i) for col in cols] for i in read if i < k0}
     dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0)
-    lower = (-(flint.arb_mat(dmat) * flint.arb_mat([col.left for col in cols]))).tolist()
+    lower = _lower_by_waves(cols, dmat)
+    if lower is None:
+        lower = (-(flint.arb_mat(dmat) * flint.arb_mat([col.left for col in cols]))).tolist()
     v1 = (flint.arb_mat(wmat) * flint.arb_mat(dmat)).tolist()
     wa, wia = flint.arb_mat(wmat).tolist(), flint.arb_mat(winv).tolist()
     zeros = [arb(0)] * r
@@ -149,6 +151,74 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     for (i, j), x in _lower_at_zero_prec(p, bad).items():
         inverse[i, j], rounded[i * size + j] = x, round_ball(x)
     return _DirectData(p.n, prec, values, inverse, tuple(phi), tuple(jordan), _Unused()), rounded
+
+
+def _wave_layout(cols: list[Any]) -> tuple[list[int], list[int], list[tuple[int, int, np.ndarray]]] | None:
+    """``(waves, others, groups)``: the columns whose left rows are waves of one shared table and one layout
+    (:attr:`~symdecomp.analysis.ring_eigendata.PatternForm.wave`, each checked against its ``index``), the other
+    columns, and the entries of a row by ``(coefficient, half step)``: ``(e, eps, points)`` with ``points[k]``
+    the entry at ``steps = 2k + eps``, ``k = 0..n-1``. None when the rows are not of that form."""
+    waves = [c for c, col in enumerate(cols) if col.left_form is not None and col.left_form.wave is not None]
+    if not waves:
+        return None
+    first = cols[waves[0]].left_form
+    table, coef, steps = first.table, first.coef, first.wave[2]
+    if not isinstance(table, list) or len(table) % 4:
+        return None
+    period = len(table)
+    for c in waves:
+        form = cols[c].left_form
+        j, shift, st = form.wave
+        expected = np.where(st < 0, -1, (2 * j * st + shift) % period)
+        if (form.table is not table or st is not steps and not np.array_equal(st, steps) or not np.array_equal(form.coef, coef)
+                or not np.array_equal(form.index, expected) or shift % period not in (0, period - period // 4)):
+            return None
+    n, groups = period // 4, []
+    for e in sorted(set(coef[steps >= 0].tolist())):
+        for eps in (0, 1):
+            points = np.nonzero((steps >= 0) & (coef == e) & (steps % 2 == eps))[0]
+            if len(points):
+                if not np.array_equal(np.sort(steps[points]), 2 * np.arange(n) + eps):
+                    return None
+                groups.append((e, eps, points[np.argsort(steps[points])]))
+    return waves, [c for c in range(len(cols)) if c not in set(waves)], groups
+
+
+def _lower_by_waves(cols: list[Any], dmat: list[list[flint.arb]]) -> list[list[flint.arb]] | None:
+    """``V^-1``'s lower-left block ``-D V0^-1`` with the wave rows of ``V0^-1`` summed by discrete Fourier
+    transforms (Arb's certified DFT, ``O(N log N)`` per row instead of ``O(N^2)``); None when the
+    columns are not waves (:func:`_wave_layout`).
+
+    A wave of frequency ``j`` at half step ``2k + eps`` is ``cos(2 pi j (k + eps/2)/n)`` (or the sine), so
+    ``sum_j A_j cos + B_j sin`` over the columns is the real part of ``sum_j (A_j + i B_j) e^(-i pi j eps/n)
+    e^(-2 pi i j k/n)``: entry ``k`` of the DFT of those coefficients. The other columns (the rational
+    frequencies) are one small matrix product.
+    """
+    layout = _wave_layout(cols)
+    if layout is None:
+        return None
+    waves, others, groups = layout
+    table = cols[waves[0]].left_form.table
+    period, k0 = len(table), len(cols)
+    n, acb, i_unit = period // 4, flint.acb, flint.acb(0, 1)
+    out = []
+    for drow in dmat:
+        row = [arb(0)] * k0
+        for e, eps, points in groups:
+            coeffs = [acb(0)] * n
+            for c in waves:
+                j, shift, _ = cols[c].left_form.wave
+                a = -drow[c] * cols[c].left_form.scalars[e]
+                coeffs[j] += a if shift % period == 0 else a * i_unit
+            if eps:  # the half step: e^(-i pi j/n) = cos(pi j/n) - i sin(pi j/n), read in the table
+                coeffs = [x * acb(table[(2 * j) % period], -table[(2 * j - n) % period]) for j, x in enumerate(coeffs)]
+            for p, value in zip(points.tolist(), acb.dft(coeffs)):
+                row[p] = value.real
+        out.append(row)
+    if others:
+        rest = (-(flint.arb_mat([[drow[c] for c in others] for drow in dmat]) * flint.arb_mat([cols[c].left for c in others]))).tolist()
+        out = [[x + y for x, y in zip(row, extra)] for row, extra in zip(out, rest)]
+    return out
 
 
 def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dict[tuple[int, int], flint.arb]:

@@ -134,12 +134,18 @@ class PatternForm:
 
     The data file rounds a whole row from the factors
     (:func:`symdecomp.algebra.rounding.round_products`) instead of forming ``K`` products in Arb.
+
+    ``wave``: ``(j, shift, steps)`` when the pattern is a wave of frequency ``j``: ``index[p] = (2 j steps[p] +
+    shift) mod 4n`` where ``steps[p] >= 0`` (the point's position around ``O`` in half steps), so entry ``p``
+    is ``scalars[coef[p]] cos(pi j steps[p]/n + pi shift/(2n))`` (``shift = 0``: cosine, ``-n``: sine); sums of
+    waves over the columns are then discrete Fourier transforms.
     """
 
-    __slots__ = ("scalars", "coef", "index", "table", "_lists")
+    __slots__ = ("scalars", "coef", "index", "table", "wave", "_lists")
 
-    def __init__(self, scalars: tuple, coef: np.ndarray, index: np.ndarray, table):
+    def __init__(self, scalars: tuple, coef: np.ndarray, index: np.ndarray, table, wave: tuple | None = None):
         self.scalars, self.coef, self.index, self.table, self._lists = scalars, coef, index, table, None
+        self.wave = wave
 
     def _pairs(self) -> tuple[list, list]:
         if self._lists is None:
@@ -225,8 +231,22 @@ def trig_table(n: int) -> list:
 
 def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> PatternForm:
     """``[0, ce T(2jk), cf T(j(2k+1)), ...]``: a Fourier pattern on ``(O, e_0, f_0, ...)``."""
-    coef, index = _pattern_index(n, j, 0 if fn == "cos" else -n)
-    return PatternForm((ce, cf), coef, index, table)
+    shift = 0 if fn == "cos" else -n
+    coef, index = _pattern_index(n, j, shift)
+    return PatternForm((ce, cf), coef, index, table, (j, shift, _steps(2 * n + 1, 1)))
+
+
+_STEPS: dict = {}
+
+
+def _steps(size: int, stride: int) -> np.ndarray:
+    """Positions in half steps around ``O`` of the points ``1..size-1`` (-1 at ``O``): ``stride`` 1 for
+    ``(e_0, f_0, e_1, ...)``, 2 for ``(a_0, a_1, ...)``; one array per layout, shared."""
+    if (size, stride) not in _STEPS:
+        if len(_STEPS) > 8:
+            _STEPS.clear()
+        _STEPS[(size, stride)] = np.concatenate([[-1], stride * np.arange(size - 1)])
+    return _STEPS[(size, stride)]
 
 
 def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
@@ -442,7 +462,9 @@ def _triangle_frequency(w: dict, n: int, j: int, table) -> list[_Column]:
     coef, one, two_n = np.zeros(n + 1, dtype=np.int64), arb(1), arb(2) / n
     for shift in (0, -n):  # cos, then sin (= cos shifted by a quarter turn)
         index = np.concatenate([[-1], (4 * j * np.arange(n) + shift) % (4 * n)])
-        cols.append(_Column(lam, PatternForm((one,), coef, index, table), PatternForm((two_n,), coef, index, table), None, check))
+        wave = (j, shift, _steps(n + 1, 2))
+        cols.append(_Column(lam, PatternForm((one,), coef, index, table, wave), PatternForm((two_n,), coef, index, table, wave),
+                            None, check))
     return cols
 
 

@@ -309,17 +309,18 @@ def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
     for lam, right, left in _rational_eigen(block):
         left = _biorthogonal(right, left, 1 if j == 0 else n)
         for z, y in zip(right, left):
-            if j == 0:
-                full_r = [z[0]] + [z[1], z[2]] * n
-                full_l = [y[0]] + [y[1] / n, y[2] / n] * n
-            else:
-                full_r = [0] + [(-1) ** k * v for k in range(n) for v in (z[0], z[1])]
-                full_l = [0] + [(-1) ** k * v for k in range(n) for v in (y[0], y[1])]
+            if j == 0:  # (O; e_k, f_k) = (z0; z1, z2) for every k
+                head_r, period_r, head_l, period_l, reps = z[0], [z[1], z[2]], y[0], [y[1] / n, y[2] / n], n
+            else:  # (-1)^k (z0, z1) on (e_k, f_k): a period of two steps (n is even)
+                head_r, period_r, head_l, period_l, reps = 0, [z[0], z[1], -z[0], -z[1]], 0, [y[0], y[1], -y[0], -y[1]], n // 2
+            full_r = [head_r] + period_r * reps
             exact = lam if isinstance(lam, Fraction) else None
             check = None
             if exact is not None:
                 check = lambda nu, g, lam=lam, r=full_r: None if nu != lam else sum(x * r[c] for c, x in g.items() if c < len(r)) == 0  # noqa: E731
-            cols.append(_Column(to_arb(lam), [to_arb(x) for x in full_r], [to_arb(x) for x in full_l], exact, check))
+            right_balls = [to_arb(head_r)] + [to_arb(x) for x in period_r] * reps  # the period's balls, shared
+            left_balls = [to_arb(head_l)] + [to_arb(x) for x in period_l] * reps
+            cols.append(_Column(to_arb(lam), right_balls, left_balls, exact, check))
     return cols
 
 

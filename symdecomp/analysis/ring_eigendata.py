@@ -76,8 +76,20 @@ def _trig_pi(m: int, den: int, fn: str) -> arb:
 # the 1-ring matrix as circulant blocks
 
 
+_LAST_WEIGHTS: dict = {}
+
+
 def circulant_weights(p: PatchMatrices) -> dict:
-    """Circulant weights of the 1-ring block ``S``, checked exactly (circulant, mirror symmetric)."""
+    """Circulant weights of the 1-ring block ``S``, checked exactly (circulant, mirror symmetric); the last
+    patch's are kept (a valence reads them at two precisions). The dict is shared: read it, never change it."""
+    if _LAST_WEIGHTS.get("patch") is not p:
+        _LAST_WEIGHTS.clear()
+        _LAST_WEIGHTS["weights"] = _circulant_weights(p)
+        _LAST_WEIGHTS["patch"] = p
+    return _LAST_WEIGHTS["weights"]
+
+
+def _circulant_weights(p: PatchMatrices) -> dict:
     n = p.n
 
     def split(row, i):

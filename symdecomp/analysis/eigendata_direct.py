@@ -45,6 +45,7 @@ from symdecomp.analysis.eigendata import (
     _sparse_times,
     certified_eigendata,
 )
+from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -239,7 +240,8 @@ def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dic
     k0, out = p.ring_size, {}
     with flint.ctx.workprec(ZERO_PREC):
         try:
-            cols = _ring_columns(p, ZERO_PREC)
+            # the few trig values the read entries need, not the whole table at 1200 bits
+            cols = p.lattice.select(RING_EIGEN, "ring eigen-data columns").columns(p, LazyTable(p.n), ZERO_PREC)
         except _NeedPrecision:
             return {}
         nus, _, winv = _regular_part(p)

@@ -309,6 +309,23 @@ def _exact_frequency_check(w: dict, n: int, j: int, pick: int):
     return check
 
 
+_EXACT_PAIRS: dict = {}
+
+
+def _exact_pairs(block: list[list], scale) -> list[tuple]:
+    """``(lam, z, y)``: the exact eigenvalues of a rational block with right and biorthogonal left eigenvectors,
+    kept for the last few blocks (a valence reads its columns at two precisions)."""
+    key = (tuple(map(tuple, block)), scale)
+    if key not in _EXACT_PAIRS:
+        if len(_EXACT_PAIRS) > 8:
+            _EXACT_PAIRS.clear()
+        pairs = []
+        for lam, right, left in _rational_eigen(block):
+            pairs += [(lam, z, y) for z, y in zip(right, _biorthogonal(right, left, scale))]
+        _EXACT_PAIRS[key] = pairs
+    return _EXACT_PAIRS[key]
+
+
 def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
     """Eigenvectors of ``S`` at frequency 0 (3 x 3 block) or ``n/2`` (2 x 2 block in the (-1)^k basis)."""
     if j == 0:
@@ -318,21 +335,19 @@ def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
         alt = lambda d: sum((x * (-1) ** k for k, x in d.items()), Fraction(0))  # noqa: E731
         block = [[alt(w["ee"]), alt(w["ef"])], [alt(w["fe"]), alt(w["ff"])]]
     cols = []
-    for lam, right, left in _rational_eigen(block):
-        left = _biorthogonal(right, left, 1 if j == 0 else n)
-        for z, y in zip(right, left):
-            if j == 0:  # (O; e_k, f_k) = (z0; z1, z2) for every k
-                head_r, period_r, head_l, period_l, reps = z[0], [z[1], z[2]], y[0], [y[1] / n, y[2] / n], n
-            else:  # (-1)^k (z0, z1) on (e_k, f_k): a period of two steps (n is even)
-                head_r, period_r, head_l, period_l, reps = 0, [z[0], z[1], -z[0], -z[1]], 0, [y[0], y[1], -y[0], -y[1]], n // 2
-            full_r = [head_r] + period_r * reps
-            exact = lam if isinstance(lam, Fraction) else None
-            check = None
-            if exact is not None:
-                check = lambda nu, g, lam=lam, r=full_r: None if nu != lam else sum(x * r[c] for c, x in g.items() if c < len(r)) == 0  # noqa: E731
-            right_balls = [to_arb(head_r)] + [to_arb(x) for x in period_r] * reps  # the period's balls, shared
-            left_balls = [to_arb(head_l)] + [to_arb(x) for x in period_l] * reps
-            cols.append(_Column(to_arb(lam), right_balls, left_balls, exact, check))
+    for lam, z, y in _exact_pairs(block, 1 if j == 0 else n):
+        if j == 0:  # (O; e_k, f_k) = (z0; z1, z2) for every k
+            head_r, period_r, head_l, period_l, reps = z[0], [z[1], z[2]], y[0], [y[1] / n, y[2] / n], n
+        else:  # (-1)^k (z0, z1) on (e_k, f_k): a period of two steps (n is even)
+            head_r, period_r, head_l, period_l, reps = 0, [z[0], z[1], -z[0], -z[1]], 0, [y[0], y[1], -y[0], -y[1]], n // 2
+        full_r = [head_r] + period_r * reps
+        exact = lam if isinstance(lam, Fraction) else None
+        check = None
+        if exact is not None:
+            check = lambda nu, g, lam=lam, r=full_r: None if nu != lam else sum(x * r[c] for c, x in g.items() if c < len(r)) == 0  # noqa: E731
+        right_balls = [to_arb(head_r)] + [to_arb(x) for x in period_r] * reps  # the period's balls, shared
+        left_balls = [to_arb(head_l)] + [to_arb(x) for x in period_l] * reps
+        cols.append(_Column(to_arb(lam), right_balls, left_balls, exact, check))
     return cols
 
 

@@ -201,18 +201,21 @@ def _lower_by_waves(cols: list[Any], dmat: list[list[flint.arb]]) -> list[list[f
     waves, others, groups = layout
     table = cols[waves[0]].left_form.table
     period, k0 = len(table), len(cols)
-    n, acb, i_unit = period // 4, flint.acb, flint.acb(0, 1)
+    n, acb = period // 4, flint.acb
+    # per wave column: (frequency, 0 for the cosine's real part or 1 for the sine's imaginary part, its scalars)
+    terms = [(cols[c].left_form.wave[0], int(cols[c].left_form.wave[1] % period != 0), cols[c].left_form.scalars) for c in waves]
+    half_step = [acb(table[(2 * j) % period], -table[(2 * j - n) % period]) for j in range(n)]  # e^(-i pi j/n)
     out = []
     for drow in dmat:
         row = [arb(0)] * k0
+        dw = [-drow[c] for c in waves]
         for e, eps, points in groups:
-            coeffs = [acb(0)] * n
-            for c in waves:
-                j, shift, _ = cols[c].left_form.wave
-                a = -drow[c] * cols[c].left_form.scalars[e]
-                coeffs[j] += a if shift % period == 0 else a * i_unit
-            if eps:  # the half step: e^(-i pi j/n) = cos(pi j/n) - i sin(pi j/n), read in the table
-                coeffs = [x * acb(table[(2 * j) % period], -table[(2 * j - n) % period]) for j, x in enumerate(coeffs)]
+            parts = [[arb(0)] * n, [arb(0)] * n]  # the real parts A_j and the imaginary parts B_j
+            for d, (j, part, scalars) in zip(dw, terms):
+                parts[part][j] += d * scalars[e]
+            coeffs = [acb(a, b) for a, b in zip(*parts)]
+            if eps:  # the half step
+                coeffs = [x * h for x, h in zip(coeffs, half_step)]
             for p, value in zip(points.tolist(), acb.dft(coeffs)):
                 row[p] = value.real
         out.append(row)

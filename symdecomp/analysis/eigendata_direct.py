@@ -45,7 +45,8 @@ from symdecomp.analysis.eigendata import (
     _sparse_times,
     certified_eigendata,
 )
-from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable
+from symdecomp.analysis.fourier_patterns import LazyTable
+from symdecomp.analysis.ring_eigendata import RING_EIGEN
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -156,7 +157,7 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
 
 def _wave_layout(cols: list[Any]) -> tuple[list[int], list[int], list[tuple[int, int, np.ndarray]]] | None:
     """``(waves, others, groups)``: the columns whose left rows are waves of one shared table and one layout
-    (:attr:`~symdecomp.analysis.ring_eigendata.PatternForm.wave`, each checked against its ``index``), the other
+    (:attr:`~symdecomp.analysis.fourier_patterns.PatternForm.wave`, each checked against its ``index``), the other
     columns, and the entries of a row by ``(coefficient, half step)``: ``(e, eps, points)`` with ``points[k]``
     the entry at ``steps = 2k + eps``, ``k = 0..n-1``. None when the rows are not of that form."""
     waves = [c for c, col in enumerate(cols) if col.left_form is not None and col.left_form.wave is not None]
@@ -269,7 +270,7 @@ def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dic
 def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
     """The 1-ring rows of ``V^-1`` rounded, row-major (``size`` per row, None where an entry does not round).
 
-    Rows kept as :class:`~symdecomp.analysis.ring_eigendata.PatternForm` s (a scalar times a cosine of the
+    Rows kept as :class:`~symdecomp.analysis.fourier_patterns.PatternForm` s (a scalar times a cosine of the
     trig table) are rounded all at once from their factors (:func:`~symdecomp.algebra.rounding.round_products`),
     the table split once; what that does not certify, and the other rows, are rounded ball by ball."""
     k0 = len(cols)

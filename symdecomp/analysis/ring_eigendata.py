@@ -39,14 +39,14 @@ from symdecomp.algebra.numbers import to_arb
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
-from symdecomp.analysis.fourier_patterns import LazyTable, PatternForm, _pattern, _steps, trig_table
+from symdecomp.analysis.fourier_patterns import PatternForm, _pattern, _steps
 from symdecomp.errors import NotDiagonalizableError
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.patch import PatchMatrices
 
 __all__ = [
-    "RingEigen", "RING_EIGEN", "PatternForm", "quad_ring_columns", "triangle_ring_columns", "triangle_ring_weights",
-    "column_group", "triangle_column_group", "LazyTable", "trig_table", "circulant_weights",
+    "RingEigen", "RING_EIGEN", "quad_ring_columns", "triangle_ring_columns", "triangle_ring_weights",
+    "column_group", "triangle_column_group", "circulant_weights",
 ]
 
 arb = flint.arb
@@ -129,7 +129,7 @@ def _choose(a: list, b: list) -> tuple[int, list]:
 class _Column:
     """One eigenvector of ``S``: value, its entries in ``V0`` (``right``), its row of ``V0^-1`` (``left``), exact data.
 
-    ``right`` and ``left`` are lists of balls, or :class:`PatternForm` s (then ``right_form`` and
+    ``right`` and ``left`` are lists of balls, or :class:`~symdecomp.analysis.fourier_patterns.PatternForm` s (then ``right_form`` and
     ``left_form``), made into lists when first read whole; :meth:`right_at` and :meth:`left_at` read one entry."""
 
     __slots__ = ("value", "_right", "_left", "right_form", "left_form", "exact_value", "exact_check")
@@ -265,7 +265,8 @@ def quad_ring_columns(p: PatchMatrices, table) -> list:
 def column_group(p: PatchMatrices, w: dict, table: list, i: int):
     """``(columns, offset)``: the frequency group of 1-ring column ``i``, recomputed at the current precision.
 
-    ``w``: :func:`circulant_weights`; ``table``: :func:`trig_table` or a :class:`LazyTable`."""
+    ``w``: :func:`circulant_weights`; ``table``: :func:`~symdecomp.analysis.fourier_patterns.trig_table` or a
+    :class:`~symdecomp.analysis.fourier_patterns.LazyTable`."""
     n, J = p.n, (p.n + 1) // 2 - 1
     if i < 3:
         return _rational_columns(w, n, 0), i
@@ -359,7 +360,7 @@ def _frequency_check(w: dict, n: int, j: int):
 def triangle_ring_columns(p, table: list, prec: int) -> list:
     """The ``n + 1`` eigenvectors of the 1-ring block: frequency 0, then ``(cos, sin)`` for ``j = 1..``, then ``n/2``.
 
-    ``table[m] = cos(pi m/(2n))`` (:func:`trig_table`).
+    ``table[m] = cos(pi m/(2n))`` (:func:`~symdecomp.analysis.fourier_patterns.trig_table`).
     """
     n = p.n
     w = triangle_ring_weights(p)
@@ -373,7 +374,8 @@ def triangle_ring_columns(p, table: list, prec: int) -> list:
 
 def triangle_column_group(p, w: dict, table, i: int, prec: int):
     """``(columns, offset)``: the frequency group of 1-ring column ``i`` on triangles, at the current precision
-    (``w``: :func:`triangle_ring_weights`; ``table``: :func:`trig_table` or a :class:`LazyTable`)."""
+    (``w``: :func:`triangle_ring_weights`; ``table``: :func:`~symdecomp.analysis.fourier_patterns.trig_table` or a
+    :class:`~symdecomp.analysis.fourier_patterns.LazyTable`)."""
     n = p.n
     if i < 2:
         return _frequency_zero(w, n, prec), i

@@ -86,7 +86,8 @@ nothing else.
                    (``zoo_large_spectrum``);
                    what the curvature regimes at the vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
-                   ``ring_eigendata``; the file's valences rounded straight from those columns,
+                   ``ring_eigendata``; the trig table and the Fourier patterns they are made of, ``fourier_patterns``;
+                   the file's valences rounded straight from those columns,
                    ``eigendata_direct``) and exact evaluation on either lattice (``evaluation``), of the patches of a
                    boundary or corner vertex (``sharp_evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components

@@ -47,7 +47,8 @@ from symdecomp.algebra.numbers import to_arb, to_fmpq, to_fraction
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
-from symdecomp.analysis.ring_eigendata import RING_EIGEN, LazyTable, trig_table
+from symdecomp.analysis.fourier_patterns import LazyTable, trig_table
+from symdecomp.analysis.ring_eigendata import RING_EIGEN
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.parallel import ordered_map, pool_size
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices

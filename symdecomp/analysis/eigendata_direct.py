@@ -45,6 +45,8 @@ from symdecomp.analysis.eigendata import (
     _sparse_times,
     certified_eigendata,
 )
+from symdecomp.analysis.fourier_patterns import LazyTable
+from symdecomp.analysis.ring_eigendata import RING_EIGEN
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -130,7 +132,9 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     read = _read_rows(p, _g_rows(p, winv))
     v0 = {i: [col.right_at(i) for col in cols] for i in read if i < k0}
     dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0)
-    lower = (-(flint.arb_mat(dmat) * flint.arb_mat([col.left for col in cols]))).tolist()
+    lower = _lower_by_waves(cols, dmat)
+    if lower is None:
+        lower = (-(flint.arb_mat(dmat) * flint.arb_mat([col.left for col in cols]))).tolist()
     v1 = (flint.arb_mat(wmat) * flint.arb_mat(dmat)).tolist()
     wa, wia = flint.arb_mat(wmat).tolist(), flint.arb_mat(winv).tolist()
     zeros = [arb(0)] * r
@@ -151,6 +155,77 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     return _DirectData(p.n, prec, values, inverse, tuple(phi), tuple(jordan), _Unused()), rounded
 
 
+def _wave_layout(cols: list[Any]) -> tuple[list[int], list[int], list[tuple[int, int, np.ndarray]]] | None:
+    """``(waves, others, groups)``: the columns whose left rows are waves of one shared table and one layout
+    (:attr:`~symdecomp.analysis.fourier_patterns.PatternForm.wave`, each checked against its ``index``), the other
+    columns, and the entries of a row by ``(coefficient, half step)``: ``(e, eps, points)`` with ``points[k]``
+    the entry at ``steps = 2k + eps``, ``k = 0..n-1``. None when the rows are not of that form."""
+    waves = [c for c, col in enumerate(cols) if col.left_form is not None and col.left_form.wave is not None]
+    if not waves:
+        return None
+    first = cols[waves[0]].left_form
+    table, coef, steps = first.table, first.coef, first.wave[2]
+    if not isinstance(table, list) or len(table) % 4:
+        return None
+    period = len(table)
+    for c in waves:
+        form = cols[c].left_form
+        j, shift, st = form.wave
+        expected = np.where(st < 0, -1, (2 * j * st + shift) % period)
+        if (form.table is not table or st is not steps and not np.array_equal(st, steps) or not np.array_equal(form.coef, coef)
+                or not np.array_equal(form.index, expected) or shift % period not in (0, period - period // 4)):
+            return None
+    n, groups = period // 4, []
+    for e in sorted(set(coef[steps >= 0].tolist())):
+        for eps in (0, 1):
+            points = np.nonzero((steps >= 0) & (coef == e) & (steps % 2 == eps))[0]
+            if len(points):
+                if not np.array_equal(np.sort(steps[points]), 2 * np.arange(n) + eps):
+                    return None
+                groups.append((e, eps, points[np.argsort(steps[points])]))
+    return waves, [c for c in range(len(cols)) if c not in set(waves)], groups
+
+
+def _lower_by_waves(cols: list[Any], dmat: list[list[flint.arb]]) -> list[list[flint.arb]] | None:
+    """``V^-1``'s lower-left block ``-D V0^-1`` with the wave rows of ``V0^-1`` summed by discrete Fourier
+    transforms (Arb's certified DFT, ``O(N log N)`` per row instead of ``O(N^2)``); None when the
+    columns are not waves (:func:`_wave_layout`).
+
+    A wave of frequency ``j`` at half step ``2k + eps`` is ``cos(2 pi j (k + eps/2)/n)`` (or the sine), so
+    ``sum_j A_j cos + B_j sin`` over the columns is the real part of ``sum_j (A_j + i B_j) e^(-i pi j eps/n)
+    e^(-2 pi i j k/n)``: entry ``k`` of the DFT of those coefficients. The other columns (the rational
+    frequencies) are one small matrix product.
+    """
+    layout = _wave_layout(cols)
+    if layout is None:
+        return None
+    waves, others, groups = layout
+    table = cols[waves[0]].left_form.table
+    period, k0 = len(table), len(cols)
+    n, acb = period // 4, flint.acb
+    # per wave column: (frequency, 0 for the cosine's real part or 1 for the sine's imaginary part, its scalars)
+    terms = [(cols[c].left_form.wave[0], int(cols[c].left_form.wave[1] % period != 0), cols[c].left_form.scalars) for c in waves]
+    half_step = [acb(table[(2 * j) % period], -table[(2 * j - n) % period]) for j in range(n)]  # e^(-i pi j/n)
+    out = []
+    for drow in dmat:
+        row = [arb(0)] * k0
+        dw = [-drow[c] for c in waves]
+        for e, eps, points in groups:
+            parts = [[arb(0)] * n, [arb(0)] * n]  # the real parts A_j and the imaginary parts B_j
+            for d, (j, part, scalars) in zip(dw, terms):
+                parts[part][j] += d * scalars[e]
+            coeffs = [acb(a, b) for a, b in zip(*parts)]
+            if eps:  # the half step
+                coeffs = [x * h for x, h in zip(coeffs, half_step)]
+            for p, value in zip(points.tolist(), acb.dft(coeffs)):
+                row[p] = value.real
+        out.append(row)
+    if others:
+        rest = (-(flint.arb_mat([[drow[c] for c in others] for drow in dmat]) * flint.arb_mat([cols[c].left for c in others]))).tolist()
+        out = [[x + y for x, y in zip(row, extra)] for row, extra in zip(out, rest)]
+    return out
+
+
 def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dict[tuple[int, int], flint.arb]:
     """The listed entries of ``V^-1``'s lower block from the frequency columns at
     :data:`~symdecomp.analysis.eigendata.ZERO_PREC` bits (empty where that precision does not separate the
@@ -169,7 +244,8 @@ def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dic
     k0, out = p.ring_size, {}
     with flint.ctx.workprec(ZERO_PREC):
         try:
-            cols = _ring_columns(p, ZERO_PREC)
+            # the few trig values the read entries need, not the whole table at 1200 bits
+            cols = p.lattice.select(RING_EIGEN, "ring eigen-data columns").columns(p, LazyTable(p.n), ZERO_PREC)
         except _NeedPrecision:
             return {}
         nus, _, winv = _regular_part(p)
@@ -194,7 +270,7 @@ def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dic
 def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
     """The 1-ring rows of ``V^-1`` rounded, row-major (``size`` per row, None where an entry does not round).
 
-    Rows kept as :class:`~symdecomp.analysis.ring_eigendata.PatternForm` s (a scalar times a cosine of the
+    Rows kept as :class:`~symdecomp.analysis.fourier_patterns.PatternForm` s (a scalar times a cosine of the
     trig table) are rounded all at once from their factors (:func:`~symdecomp.algebra.rounding.round_products`),
     the table split once; what that does not certify, and the other rows, are rounded ball by ball."""
     k0 = len(cols)

@@ -35,17 +35,18 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, to_acb
-from symdecomp.algebra.numbers import to_arb, to_fmpq
+from symdecomp.algebra.numbers import to_arb
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import biorthogonal as _biorthogonal
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
+from symdecomp.analysis.fourier_patterns import PatternForm, _pattern, _steps
 from symdecomp.errors import NotDiagonalizableError
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.patch import PatchMatrices
 
 __all__ = [
-    "RingEigen", "RING_EIGEN", "PatternForm", "quad_ring_columns", "triangle_ring_columns", "triangle_ring_weights",
-    "column_group", "triangle_column_group", "LazyTable", "trig_table", "circulant_weights",
+    "RingEigen", "RING_EIGEN", "quad_ring_columns", "triangle_ring_columns", "triangle_ring_weights",
+    "column_group", "triangle_column_group", "circulant_weights",
 ]
 
 arb = flint.arb
@@ -55,29 +56,25 @@ arb = flint.arb
 # exact helpers
 
 
-#: ``q`` (in units of pi, mod 2) -> the exact value of ``cos(pi q)`` where it is rational.
-_EXACT_COS = {
-    Fraction(0): 1, Fraction(1): -1, Fraction(1, 2): 0, Fraction(3, 2): 0,
-    Fraction(1, 3): Fraction(1, 2), Fraction(5, 3): Fraction(1, 2), Fraction(2, 3): Fraction(-1, 2), Fraction(4, 3): Fraction(-1, 2),
-}  # fmt: skip
-
-
-def _trig_pi(m: int, den: int, fn: str) -> arb:
-    """``cos`` or ``sin`` of ``pi m/den``, exact when the value is rational."""
-    if fn == "sin":
-        m, den = 2 * m - den, 2 * den  # sin(pi m/den) = cos(pi (m/den - 1/2))
-    q = Fraction(m % (2 * den), den)
-    if q in _EXACT_COS:
-        return to_arb(_EXACT_COS[q])
-    return arb.cos_pi_fmpq(to_fmpq(q))
-
 
 # ---------------------------------------------------------------------------------------------
 # the 1-ring matrix as circulant blocks
 
 
+_LAST_WEIGHTS: dict = {}
+
+
 def circulant_weights(p: PatchMatrices) -> dict:
-    """Circulant weights of the 1-ring block ``S``, checked exactly (circulant, mirror symmetric)."""
+    """Circulant weights of the 1-ring block ``S``, checked exactly (circulant, mirror symmetric); the last
+    patch's are kept (a valence reads them at two precisions). The dict is shared: read it, never change it."""
+    if _LAST_WEIGHTS.get("patch") is not p:
+        _LAST_WEIGHTS.clear()
+        _LAST_WEIGHTS["weights"] = _circulant_weights(p)
+        _LAST_WEIGHTS["patch"] = p
+    return _LAST_WEIGHTS["weights"]
+
+
+def _circulant_weights(p: PatchMatrices) -> dict:
     n = p.n
 
     def split(row, i):
@@ -128,54 +125,11 @@ def _choose(a: list, b: list) -> tuple[int, list]:
     return pick, v
 
 
-class PatternForm:
-    """A Fourier pattern kept as its factors: entry ``p`` is ``scalars[coef[p]] * table[index[p]]``
-    (``index[p] = -1``: an exact 0), the products formed only where they are read.
-
-    The data file rounds a whole row from the factors
-    (:func:`symdecomp.algebra.rounding.round_products`) instead of forming ``K`` products in Arb.
-    """
-
-    __slots__ = ("scalars", "coef", "index", "table", "_lists")
-
-    def __init__(self, scalars: tuple, coef: np.ndarray, index: np.ndarray, table):
-        self.scalars, self.coef, self.index, self.table, self._lists = scalars, coef, index, table, None
-
-    def _pairs(self) -> tuple[list, list]:
-        if self._lists is None:
-            self._lists = (self.coef.tolist(), self.index.tolist())
-        return self._lists
-
-    def at(self, p: int):
-        coef, index = self._pairs()
-        return arb(0) if index[p] < 0 else self.scalars[coef[p]] * self.table[index[p]]
-
-    def entries(self) -> list:
-        scalars, table = self.scalars, self.table
-        return [arb(0) if i < 0 else scalars[c] * table[i] for c, i in zip(*self._pairs())]
-
-
-_PATTERN_INDEX: dict = {}
-
-
-def _pattern_index(n: int, j: int, shift: int) -> tuple[np.ndarray, np.ndarray]:
-    """``(coef, index)`` of the pattern of frequency ``j`` on ``(O, e_0, f_0, ...)``, remembered for the last valence."""
-    if (n, j, shift) not in _PATTERN_INDEX:
-        if any(key[0] != n for key in _PATTERN_INDEX):
-            _PATTERN_INDEX.clear()
-        k = np.arange(n)
-        index, coef = np.full(2 * n + 1, -1), np.zeros(2 * n + 1, dtype=np.int64)
-        index[1::2] = (4 * j * k + shift) % (4 * n)
-        index[2::2] = (2 * j * (2 * k + 1) + shift) % (4 * n)
-        coef[2::2] = 1
-        _PATTERN_INDEX[(n, j, shift)] = coef, index
-    return _PATTERN_INDEX[(n, j, shift)]
-
 
 class _Column:
     """One eigenvector of ``S``: value, its entries in ``V0`` (``right``), its row of ``V0^-1`` (``left``), exact data.
 
-    ``right`` and ``left`` are lists of balls, or :class:`PatternForm` s (then ``right_form`` and
+    ``right`` and ``left`` are lists of balls, or :class:`~symdecomp.analysis.fourier_patterns.PatternForm` s (then ``right_form`` and
     ``left_form``), made into lists when first read whole; :meth:`right_at` and :meth:`left_at` read one entry."""
 
     __slots__ = ("value", "_right", "_left", "right_form", "left_form", "exact_value", "exact_check")
@@ -205,28 +159,6 @@ class _Column:
     def left_at(self, i: int):
         return self._left[i] if self._left is not None else self.left_form.at(i)
 
-
-class LazyTable:
-    """``_trig_table(n)`` computed entry by entry on first use (a few columns need few entries)."""
-
-    def __init__(self, n: int):
-        self.n, self.cache = n, {}
-
-    def __getitem__(self, m: int):
-        if m not in self.cache:
-            self.cache[m] = _trig_pi(m, 2 * self.n, "cos")
-        return self.cache[m]
-
-
-def trig_table(n: int) -> list:
-    """``cos(pi m/(2n))`` for ``m = 0..4n-1``: cos(pi m/n) is entry ``2m``, sin(pi m/n) entry ``2m - n``."""
-    return [_trig_pi(m, 2 * n, "cos") for m in range(4 * n)]
-
-
-def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> PatternForm:
-    """``[0, ce T(2jk), cf T(j(2k+1)), ...]``: a Fourier pattern on ``(O, e_0, f_0, ...)``."""
-    coef, index = _pattern_index(n, j, 0 if fn == "cos" else -n)
-    return PatternForm((ce, cf), coef, index, table)
 
 
 def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
@@ -277,6 +209,23 @@ def _exact_frequency_check(w: dict, n: int, j: int, pick: int):
     return check
 
 
+_EXACT_PAIRS: dict = {}
+
+
+def _exact_pairs(block: list[list], scale) -> list[tuple]:
+    """``(lam, z, y)``: the exact eigenvalues of a rational block with right and biorthogonal left eigenvectors,
+    kept for the last few blocks (a valence reads its columns at two precisions)."""
+    key = (tuple(map(tuple, block)), scale)
+    if key not in _EXACT_PAIRS:
+        if len(_EXACT_PAIRS) > 8:
+            _EXACT_PAIRS.clear()
+        pairs = []
+        for lam, right, left in _rational_eigen(block):
+            pairs += [(lam, z, y) for z, y in zip(right, _biorthogonal(right, left, scale))]
+        _EXACT_PAIRS[key] = pairs
+    return _EXACT_PAIRS[key]
+
+
 def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
     """Eigenvectors of ``S`` at frequency 0 (3 x 3 block) or ``n/2`` (2 x 2 block in the (-1)^k basis)."""
     if j == 0:
@@ -286,20 +235,19 @@ def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
         alt = lambda d: sum((x * (-1) ** k for k, x in d.items()), Fraction(0))  # noqa: E731
         block = [[alt(w["ee"]), alt(w["ef"])], [alt(w["fe"]), alt(w["ff"])]]
     cols = []
-    for lam, right, left in _rational_eigen(block):
-        left = _biorthogonal(right, left, 1 if j == 0 else n)
-        for z, y in zip(right, left):
-            if j == 0:
-                full_r = [z[0]] + [z[1], z[2]] * n
-                full_l = [y[0]] + [y[1] / n, y[2] / n] * n
-            else:
-                full_r = [0] + [(-1) ** k * v for k in range(n) for v in (z[0], z[1])]
-                full_l = [0] + [(-1) ** k * v for k in range(n) for v in (y[0], y[1])]
-            exact = lam if isinstance(lam, Fraction) else None
-            check = None
-            if exact is not None:
-                check = lambda nu, g, lam=lam, r=full_r: None if nu != lam else sum(x * r[c] for c, x in g.items() if c < len(r)) == 0  # noqa: E731
-            cols.append(_Column(to_arb(lam), [to_arb(x) for x in full_r], [to_arb(x) for x in full_l], exact, check))
+    for lam, z, y in _exact_pairs(block, 1 if j == 0 else n):
+        if j == 0:  # (O; e_k, f_k) = (z0; z1, z2) for every k
+            head_r, period_r, head_l, period_l, reps = z[0], [z[1], z[2]], y[0], [y[1] / n, y[2] / n], n
+        else:  # (-1)^k (z0, z1) on (e_k, f_k): a period of two steps (n is even)
+            head_r, period_r, head_l, period_l, reps = 0, [z[0], z[1], -z[0], -z[1]], 0, [y[0], y[1], -y[0], -y[1]], n // 2
+        full_r = [head_r] + period_r * reps
+        exact = lam if isinstance(lam, Fraction) else None
+        check = None
+        if exact is not None:
+            check = lambda nu, g, lam=lam, r=full_r: None if nu != lam else sum(x * r[c] for c, x in g.items() if c < len(r)) == 0  # noqa: E731
+        right_balls = [to_arb(head_r)] + [to_arb(x) for x in period_r] * reps  # the period's balls, shared
+        left_balls = [to_arb(head_l)] + [to_arb(x) for x in period_l] * reps
+        cols.append(_Column(to_arb(lam), right_balls, left_balls, exact, check))
     return cols
 
 
@@ -317,7 +265,8 @@ def quad_ring_columns(p: PatchMatrices, table) -> list:
 def column_group(p: PatchMatrices, w: dict, table: list, i: int):
     """``(columns, offset)``: the frequency group of 1-ring column ``i``, recomputed at the current precision.
 
-    ``w``: :func:`circulant_weights`; ``table``: :func:`trig_table` or a :class:`LazyTable`."""
+    ``w``: :func:`circulant_weights`; ``table``: :func:`~symdecomp.analysis.fourier_patterns.trig_table` or a
+    :class:`~symdecomp.analysis.fourier_patterns.LazyTable`."""
     n, J = p.n, (p.n + 1) // 2 - 1
     if i < 3:
         return _rational_columns(w, n, 0), i
@@ -411,7 +360,7 @@ def _frequency_check(w: dict, n: int, j: int):
 def triangle_ring_columns(p, table: list, prec: int) -> list:
     """The ``n + 1`` eigenvectors of the 1-ring block: frequency 0, then ``(cos, sin)`` for ``j = 1..``, then ``n/2``.
 
-    ``table[m] = cos(pi m/(2n))`` (:func:`trig_table`).
+    ``table[m] = cos(pi m/(2n))`` (:func:`~symdecomp.analysis.fourier_patterns.trig_table`).
     """
     n = p.n
     w = triangle_ring_weights(p)
@@ -425,7 +374,8 @@ def triangle_ring_columns(p, table: list, prec: int) -> list:
 
 def triangle_column_group(p, w: dict, table, i: int, prec: int):
     """``(columns, offset)``: the frequency group of 1-ring column ``i`` on triangles, at the current precision
-    (``w``: :func:`triangle_ring_weights`; ``table``: :func:`trig_table` or a :class:`LazyTable`)."""
+    (``w``: :func:`triangle_ring_weights`; ``table``: :func:`~symdecomp.analysis.fourier_patterns.trig_table` or a
+    :class:`~symdecomp.analysis.fourier_patterns.LazyTable`)."""
     n = p.n
     if i < 2:
         return _frequency_zero(w, n, prec), i
@@ -442,7 +392,9 @@ def _triangle_frequency(w: dict, n: int, j: int, table) -> list[_Column]:
     coef, one, two_n = np.zeros(n + 1, dtype=np.int64), arb(1), arb(2) / n
     for shift in (0, -n):  # cos, then sin (= cos shifted by a quarter turn)
         index = np.concatenate([[-1], (4 * j * np.arange(n) + shift) % (4 * n)])
-        cols.append(_Column(lam, PatternForm((one,), coef, index, table), PatternForm((two_n,), coef, index, table), None, check))
+        wave = (j, shift, _steps(n + 1, 2))
+        cols.append(_Column(lam, PatternForm((one,), coef, index, table, wave), PatternForm((two_n,), coef, index, table, wave),
+                            None, check))
     return cols
 
 

@@ -61,3 +61,64 @@ def test_the_command_writes_the_whole_valences_bytes(tmp_path):
     assert main(["evaldata", "--scheme", "loop", "--format", "json", "--n", "3:7", "--out", str(out), "--quiet", "--jobs", "1"]) == 0
     entries = (json_valence(certified_eigendata(SCHEMES["loop"], n)[1]) for n in range(3, 8))
     assert out.read_text() == "".join(json_chunks(entries, 7, 17, "loop"))
+
+
+def _lower_block_pieces(scheme, n: int):
+    """The patch, its 1-ring columns and ``D`` at 256 bits, as :func:`rounded_valence` computes them."""
+    import flint
+
+    from symdecomp.analysis.eigendata import _outer_coefficients, _regular_part, _ring_columns
+    from symdecomp.schemes.patch import patch_matrices
+
+    p = patch_matrices(scheme, n)
+    with flint.ctx.workprec(256):
+        cols = _ring_columns(p, 256)
+        nus, _, winv = _regular_part(p)
+        right = {i: [col.right_at(i) for col in cols] for i in range(p.ring_size)}
+        dmat, _ = _outer_coefficients(p, cols, nus, winv, right)
+    return p, cols, dmat, nus, winv
+
+
+@pytest.mark.parametrize("n", [3, 5, 8, 13])
+def test_lower_block_by_waves_holds_the_exact_rational_entries(n):
+    """Catmull-Clark: row r of V^-1's lower-left block is -g_r (S - nu_r)^-1 (g = W^-1 S11), an exact rational
+    row (one exact solve, where nu_r is not an eigenvalue of S); every ball of the block summed by DFTs contains it
+    and is narrow."""
+    import flint
+
+    from symdecomp.analysis.eigendata_direct import _lower_by_waves, _wave_layout
+
+    p, cols, dmat, nus, winv = _lower_block_pieces(SCHEMES["catmull-clark"], n)
+    assert _wave_layout(cols) is not None  # the DFT route is the one taken
+    with flint.ctx.workprec(256):
+        lower = _lower_by_waves(cols, dmat)
+    k0, size = p.ring_size, p.size
+    s = flint.fmpq_mat([[p.matrix[i, c] for c in range(k0)] for i in range(k0)])
+    s11 = flint.fmpq_mat([[p.matrix[i, c] for c in range(k0)] for i in range(k0, size)])
+    g, checked = winv * s11, 0
+    for r, nu in enumerate(nus):
+        m = s.transpose() - flint.fmpq(nu.numerator, nu.denominator) * flint.fmpq_mat(k0, k0, [int(i == j) for i in range(k0) for j in range(k0)])
+        try:
+            exact = m.solve(flint.fmpq_mat([[-g[r, c]] for c in range(k0)]))
+        except ZeroDivisionError:  # nu_r is an eigenvalue of S: no resolvent to compare with (N = 8: nu = 1/8)
+            continue
+        checked += 1
+        with flint.ctx.workprec(1024):  # the rational as a ball far narrower than the 256-bit ones
+            assert all(lower[r][j].contains(flint.arb(exact[j, 0])) and lower[r][j].rad() < flint.arb(2) ** -200 for j in range(k0))
+    assert checked >= 5
+
+
+@pytest.mark.parametrize("n", [4, 7, 12])
+def test_lower_block_by_waves_agrees_with_the_matrix_product_for_loop(n):
+    """Loop (1-ring weights in Q(zeta_2N)): the DFT sums overlap the K x K ball product -D V0^-1 and are as narrow."""
+    import flint
+
+    from symdecomp.analysis.eigendata_direct import _lower_by_waves
+
+    _, cols, dmat, _, _ = _lower_block_pieces(SCHEMES["loop"], n)
+    with flint.ctx.workprec(256):
+        waves = _lower_by_waves(cols, dmat)
+        product = (-(flint.arb_mat(dmat) * flint.arb_mat([col.left for col in cols]))).tolist()
+    assert waves is not None
+    for row_w, row_p in zip(waves, product):
+        assert all(a.overlaps(b) and a.rad() < flint.arb(2) ** -200 for a, b in zip(row_w, row_p))

@@ -1,0 +1,126 @@
+"""The trig table of a valence and the Fourier patterns of the 1-ring's eigenvectors, kept as their factors.
+
+A pattern of frequency ``j`` on the 1-ring is a scalar times ``cos(pi m/(2n))`` for an index ``m`` per
+point (:class:`PatternForm`); the table holds those cosines once per valence (:func:`trig_table`, or
+:class:`LazyTable` where a few entries are read). :mod:`symdecomp.analysis.ring_eigendata` builds the
+eigenvectors from them, and the data file rounds them from their factors or sums them as waves.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import flint
+import numpy as np
+
+from symdecomp.algebra.numbers import to_arb, to_fmpq
+
+__all__ = ["PatternForm", "LazyTable", "trig_table"]
+
+arb = flint.arb
+
+
+#: ``q`` (in units of pi, mod 2) -> the exact value of ``cos(pi q)`` where it is rational.
+_EXACT_COS = {
+    Fraction(0): 1, Fraction(1): -1, Fraction(1, 2): 0, Fraction(3, 2): 0,
+    Fraction(1, 3): Fraction(1, 2), Fraction(5, 3): Fraction(1, 2), Fraction(2, 3): Fraction(-1, 2), Fraction(4, 3): Fraction(-1, 2),
+}  # fmt: skip
+
+
+def _trig_pi(m: int, den: int, fn: str) -> arb:
+    """``cos`` or ``sin`` of ``pi m/den``, exact when the value is rational."""
+    if fn == "sin":
+        m, den = 2 * m - den, 2 * den  # sin(pi m/den) = cos(pi (m/den - 1/2))
+    q = Fraction(m % (2 * den), den)
+    if q in _EXACT_COS:
+        return to_arb(_EXACT_COS[q])
+    return arb.cos_pi_fmpq(to_fmpq(q))
+
+
+
+class PatternForm:
+    """A Fourier pattern kept as its factors: entry ``p`` is ``scalars[coef[p]] * table[index[p]]``
+    (``index[p] = -1``: an exact 0), the products formed only where they are read.
+
+    The data file rounds a whole row from the factors
+    (:func:`symdecomp.algebra.rounding.round_products`) instead of forming ``K`` products in Arb.
+
+    ``wave``: ``(j, shift, steps)`` when the pattern is a wave of frequency ``j``: ``index[p] = (2 j steps[p] +
+    shift) mod 4n`` where ``steps[p] >= 0`` (the point's position around ``O`` in half steps), so entry ``p``
+    is ``scalars[coef[p]] cos(pi j steps[p]/n + pi shift/(2n))`` (``shift = 0``: cosine, ``-n``: sine); sums of
+    waves over the columns are then discrete Fourier transforms.
+    """
+
+    __slots__ = ("scalars", "coef", "index", "table", "wave", "_lists")
+
+    def __init__(self, scalars: tuple, coef: np.ndarray, index: np.ndarray, table, wave: tuple | None = None):
+        self.scalars, self.coef, self.index, self.table, self._lists = scalars, coef, index, table, None
+        self.wave = wave
+
+    def _pairs(self) -> tuple[list, list]:
+        if self._lists is None:
+            self._lists = (self.coef.tolist(), self.index.tolist())
+        return self._lists
+
+    def at(self, p: int):
+        coef, index = self._pairs()
+        return arb(0) if index[p] < 0 else self.scalars[coef[p]] * self.table[index[p]]
+
+    def entries(self) -> list:
+        scalars, table = self.scalars, self.table
+        return [arb(0) if i < 0 else scalars[c] * table[i] for c, i in zip(*self._pairs())]
+
+
+_PATTERN_INDEX: dict = {}
+
+
+def _pattern_index(n: int, j: int, shift: int) -> tuple[np.ndarray, np.ndarray]:
+    """``(coef, index)`` of the pattern of frequency ``j`` on ``(O, e_0, f_0, ...)``, remembered for the last valence."""
+    if (n, j, shift) not in _PATTERN_INDEX:
+        if any(key[0] != n for key in _PATTERN_INDEX):
+            _PATTERN_INDEX.clear()
+        k = np.arange(n)
+        index, coef = np.full(2 * n + 1, -1), np.zeros(2 * n + 1, dtype=np.int64)
+        index[1::2] = (4 * j * k + shift) % (4 * n)
+        index[2::2] = (2 * j * (2 * k + 1) + shift) % (4 * n)
+        coef[2::2] = 1
+        _PATTERN_INDEX[(n, j, shift)] = coef, index
+    return _PATTERN_INDEX[(n, j, shift)]
+
+
+
+class LazyTable:
+    """``_trig_table(n)`` computed entry by entry on first use (a few columns need few entries)."""
+
+    def __init__(self, n: int):
+        self.n, self.cache = n, {}
+
+    def __getitem__(self, m: int):
+        if m not in self.cache:
+            self.cache[m] = _trig_pi(m, 2 * self.n, "cos")
+        return self.cache[m]
+
+
+def trig_table(n: int) -> list:
+    """``cos(pi m/(2n))`` for ``m = 0..4n-1``: cos(pi m/n) is entry ``2m``, sin(pi m/n) entry ``2m - n``."""
+    return [_trig_pi(m, 2 * n, "cos") for m in range(4 * n)]
+
+
+def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> PatternForm:
+    """``[0, ce T(2jk), cf T(j(2k+1)), ...]``: a Fourier pattern on ``(O, e_0, f_0, ...)``."""
+    shift = 0 if fn == "cos" else -n
+    coef, index = _pattern_index(n, j, shift)
+    return PatternForm((ce, cf), coef, index, table, (j, shift, _steps(2 * n + 1, 1)))
+
+
+_STEPS: dict = {}
+
+
+def _steps(size: int, stride: int) -> np.ndarray:
+    """Positions in half steps around ``O`` of the points ``1..size-1`` (-1 at ``O``): ``stride`` 1 for
+    ``(e_0, f_0, e_1, ...)``, 2 for ``(a_0, a_1, ...)``; one array per layout, shared."""
+    if (size, stride) not in _STEPS:
+        if len(_STEPS) > 8:
+            _STEPS.clear()
+        _STEPS[(size, stride)] = np.concatenate([[-1], stride * np.arange(size - 1)])
+    return _STEPS[(size, stride)]

@@ -61,7 +61,7 @@ from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, sector_point
 from symdecomp.validate import cached, check_type
 
-__all__ = ["CELLS", "PREC", "SectorEvalData", "PrimaryBlock", "sector_evaldata", "evaluate", "global_point", "regular_row"]
+__all__ = ["CELLS", "PREC", "SectorEvalData", "PrimaryBlock", "sector_evaldata", "evaluate", "global_point", "regular_row", "real_ball"]
 
 #: The cells ``(a, b)`` (lower-left corners, level-``n`` lattice) of a face's wide ring: ``2 <= max(a, b) <= 3``.
 CELLS = tuple((a, b) for b in range(4) for a in range(4) if max(a, b) >= 2)
@@ -218,6 +218,16 @@ def _spline_check(vertex: SharpVertex, rows: list[dict], labels: tuple) -> tuple
     return tuple(modified)
 
 
+def real_ball(w: sp.Expr) -> flint.arb:
+    """The real weight ``w`` (an exact expression such as ``3/8 - cos(pi/5)/4``) as an Arb ball containing it."""
+    z = compile_expression(w, (), "arb")()
+    if isinstance(z, flint.acb):
+        if not z.imag.contains(0):
+            raise InternalError(f"the weight {w} is not real")
+        z = z.real
+    return z
+
+
 def _numbers(rows: list[dict], ncols: int, exact: bool):
     """The sparse sympy ``rows`` as an ``fmpq_mat`` (exact) or an ``arb_mat`` (at the precision in force)."""
     out = (flint.fmpq_mat if exact else flint.arb_mat)(len(rows), ncols)
@@ -225,7 +235,7 @@ def _numbers(rows: list[dict], ncols: int, exact: bool):
         for j, w in row.items():
             if j >= ncols:
                 raise InternalError(f"refined point {i} depends on a point outside the 2-ring")
-            out[i, j] = to_fmpq(w) if exact else compile_expression(w, (), "arb")()
+            out[i, j] = to_fmpq(w) if exact else real_ball(w)
     return out
 
 

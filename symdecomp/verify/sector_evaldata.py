@@ -24,9 +24,8 @@ from fractions import Fraction
 
 import flint
 
-from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.sector_evaldata import PREC, SectorEvalData, evaluate, sector_evaldata
+from symdecomp.analysis.sector_evaldata import PREC, real_ball, SectorEvalData, evaluate, sector_evaldata
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 from symdecomp.validate import check_int, check_type
@@ -42,7 +41,7 @@ def _reference_matrix(scheme: Scheme, vertex: SharpVertex, exact: bool):
     m = sharp_subdivision_matrix(scheme, vertex, rings=3)
     out = (flint.fmpq_mat if exact else flint.arb_mat)(m.rows, m.cols)
     for (i, j), w in m.todok().items():
-        out[i, j] = to_fmpq(w) if exact else compile_expression(w, (), "arb")()
+        out[i, j] = to_fmpq(w) if exact else real_ball(w)
     return out
 
 

@@ -381,8 +381,14 @@ def _bspline(t, derivative: int) -> list:
     return [-((one - t) ** 2) / 2, (9 * t**2 - 12 * t) / 6, (-9 * t**2 + 6 * t + 3 * one) / 6, t**2 / 2]
 
 
-def _level(u, v) -> int:
-    n, m = 2, max(u, v)
+def _level(u, v, level) -> int:
+    """The level ``n >= 2`` with ``2 < 2^n max(u, v) <= 4``; or the given one, where ``2 <= 2^n max(u, v) <= 4``."""
+    m = max(u, v)
+    if level is not None:
+        if isinstance(level, bool) or not isinstance(level, int) or level < 2 or not 2 <= 2**level * m <= 4:
+            raise EvaluationError(f"level must be an integer n >= 2 with 2 <= 2^n max(u, v) <= 4, got {level!r:.40}")
+        return level
+    n = 2
     while 2**n * m <= 2:
         n += 1
     return n
@@ -440,12 +446,13 @@ def _net(data: SectorEvalData, face: int, c: int, steps: int, control, ball: boo
     return net
 
 
-def evaluate(data: SectorEvalData, face: int, u, v, points, *, route: str = "eigen") -> dict:
+def evaluate(data: SectorEvalData, face: int, u, v, points, *, route: str = "eigen", level: int | None = None) -> dict:
     """``{"point", "du", "dv", "level"}`` of patch ``face`` at ``(u, v)`` from the ``K`` control ``points``.
 
     ``u, v``: exact rationals; ``points``: rationals (exact results with exact data) or Arb balls. ``route``:
     ``"eigen"`` (the decomposition, when the data have one) or ``"powers"`` (``A^(n-2)``). At ``(0, 0)`` the point is
-    the limit position and the derivatives are ``None``.
+    the limit position and the derivatives are ``None``. ``level``: another level ``n`` whose wide ring holds
+    ``(u, v)`` (``2^n max(u, v) = 2``: the inner edge of the ring), instead of the one chosen.
     """
     check_type(data, SectorEvalData, "data")
     if route not in ("eigen", "powers"):
@@ -457,7 +464,7 @@ def evaluate(data: SectorEvalData, face: int, u, v, points, *, route: str = "eig
             limit = flint.fmpq_mat(1, data.size, list(data.limit)) if data.exact else flint.arb_mat(1, data.size, list(data.limit))
             row = _times(limit, control, ball)
             return {"point": [row[0, j] for j in range(row.ncols())], "du": None, "dv": None, "level": None}
-        n = _level(u, v)
+        n = _level(u, v, level)
         x, y = 2**n * u, 2**n * v
         a, b = min(math.floor(x), 3), min(math.floor(y), 3)
         net = _net(data, face, CELLS.index((a, b)), n - 2, control, ball, route)

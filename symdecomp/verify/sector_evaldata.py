@@ -95,9 +95,19 @@ def _agree(got, want, exact: bool) -> bool:
     return all(a.overlaps(b) and a.rad() < TOLERANCE and b.rad() < TOLERANCE for a, b in zip(got, want))
 
 
+def _levels(u, v) -> tuple:
+    """Both levels whose wide ring holds ``(u, v)``: its outer edge (``2^n max = 4``) and its inner one (``= 2``)."""
+    m = max(u, v)
+    n = next(n for n in range(2, 64) if 2**n * m > 2)
+    return (n, n - 1) if 2**n * m == 4 and n > 2 else (n,)
+
+
 def dyadic_check(scheme: Scheme, vertex: SharpVertex, *, levels=(1, 2, 3), seed: int = 0,
                  data: SectorEvalData | None = None) -> dict:
     """Evaluate every face at ``(p / 2^m, q / 2^m)``, ``max(p, q) = 2``, ``m`` in ``levels``, against the reference.
+
+    Each point is evaluated at both levels whose wide ring holds it (on its outer and on its inner edge), so that
+    every cell of the ring is read.
 
     ``data``: the data to check (default: :func:`~symdecomp.analysis.sector_evaldata.sector_evaldata`'s; a test
     passes altered data to see the check fail). Returns ``{"points", "mismatches", "routes"}``: the parameters
@@ -125,8 +135,8 @@ def dyadic_check(scheme: Scheme, vertex: SharpVertex, *, levels=(1, 2, 3), seed:
                 for p, q in ((p, q) for p in range(3) for q in range(3) if max(p, q) == 2 and max(p, q) <= 2**m):
                     want = _reference(scheme, vertex, s, p, q, lambda lab, v=values: [_value(v[index[lab], c], data.exact) for c in range(3)])
                     u, v = Fraction(p, 2**m), Fraction(q, 2**m)
-                    for route in routes:
-                        got = evaluate(data, s, u, v, net[:data.size], route=route)["point"]
+                    for route, level in ((r, n) for r in routes for n in _levels(u, v)):
+                        got = evaluate(data, s, u, v, net[:data.size], route=route, level=level)["point"]
                         mismatches += not _agree(got, want, data.exact)
                     points += 1
     return {"points": points, "mismatches": mismatches, "routes": routes}

@@ -53,7 +53,7 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
-from symdecomp.algebra.numbers import to_fmpq, to_fraction
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.errors import EvaluationError, InternalError, InvalidInputError, NotApplicableError
 from symdecomp.schemes.lattice import BICUBIC
 from symdecomp.schemes.scheme import Scheme, check_scheme

@@ -9,13 +9,16 @@ and replaced atomically (:mod:`symdecomp.cli.files`). ``--json``: ``{"out", "for
 
 from __future__ import annotations
 
+import argparse
+from collections.abc import Iterator
+
 from symdecomp.cli.common import print_json, progress
 from symdecomp.cli.files import check_output_file, write_output_file
 
 __all__ = ["run_sector"]
 
 
-def run_sector(args, kind: str) -> int:
+def run_sector(args: argparse.Namespace, kind: str) -> int:
     """Write the sector evaluation data of the vertices ``kind`` with ``args.faces`` faces (module docstring)."""
     from symdecomp.analysis.sector_evaldata import sector_evaldata
     from symdecomp.output.sector_evaldata import SECTOR_FORMAT, sector_entry, sector_json_chunks
@@ -29,9 +32,10 @@ def run_sector(args, kind: str) -> int:
                                 "around an interior vertex)")
     vertices = [SharpVertex.crease(k, k, lat) if kind == "crease" else getattr(SharpVertex, kind)(k, lat) for k in ks]
     check_output_file(args.out)
-    sizes, exact = [], []
+    sizes: list[int] = []
+    exact: list[bool] = []
 
-    def entries():
+    def entries() -> Iterator[dict[str, object]]:
         for vertex in progress(vertices, len(vertices), "evaldata", enabled=not args.quiet):
             data = sector_evaldata(scheme, vertex)
             sizes.append(data.size)

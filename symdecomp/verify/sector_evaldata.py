@@ -25,7 +25,7 @@ from fractions import Fraction
 import flint
 
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.sector_evaldata import PREC, real_ball, SectorEvalData, evaluate, sector_evaldata
+from symdecomp.analysis.sector_evaldata import PREC, SectorEvalData, evaluate, real_ball, sector_evaldata
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 from symdecomp.validate import check_int, check_type

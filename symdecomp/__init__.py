@@ -172,8 +172,8 @@ nothing else.
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
-                   ``evaldata_cmd`` (creases and BLZ's rules, ``evaldata_sector``), ``inspect_cmd`` (its outputs ``inspect_outputs``, its per-vertex table
-                   ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
+                   ``evaldata_cmd`` (creases and BLZ's rules, ``evaldata_sector``), ``inspect_cmd`` (its outputs
+                   ``inspect_outputs``, its per-vertex table ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
                    (``sharp``), the commands spectrum, masks and check for a scheme of the zoo (``zoo``), and artifacts

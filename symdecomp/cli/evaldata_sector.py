@@ -14,8 +14,13 @@ from collections.abc import Iterator
 
 from symdecomp.cli.common import print_json, progress
 from symdecomp.cli.files import check_output_file, write_output_file
+from symdecomp.errors import InvalidInputError
 
-__all__ = ["run_sector"]
+__all__ = ["run_sector", "MAX_CREASE_FACES"]
+
+#: Most faces on each side of a crease: its 2-ring has 12K + 1 points and the exact decomposition grows like their
+#: cube (K = 12: 7 s, K = 32: minutes).
+MAX_CREASE_FACES = 32
 
 
 def run_sector(args: argparse.Namespace, kind: str) -> int:
@@ -26,10 +31,11 @@ def run_sector(args: argparse.Namespace, kind: str) -> int:
 
     scheme, ks, lat = args.scheme, args.faces, args.scheme.lattice
     if kind == "crease" and ks[0] < 2:
-        from symdecomp.errors import InvalidInputError
-
         raise InvalidInputError(f"--k {ks[0]}: a crease vertex with K faces on each side needs K >= 2 (3 or more faces "
                                 "around an interior vertex)")
+    if kind == "crease" and ks[-1] > MAX_CREASE_FACES:
+        raise InvalidInputError(f"--k {ks[-1]}: --crease takes at most {MAX_CREASE_FACES} faces on each side (the exact "
+                                "eigen-decomposition of its 2-ring of 12K + 1 points grows like the cube of K)")
     vertices = [SharpVertex.crease(k, k, lat) if kind == "crease" else getattr(SharpVertex, kind)(k, lat) for k in ks]
     check_output_file(args.out)
     sizes: list[int] = []

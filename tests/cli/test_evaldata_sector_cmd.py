@@ -53,6 +53,7 @@ def test_blz_boundary_balls_contain_the_api_values(tmp_path, capsys):
     (["--crease", "--k", "1:3"], "--k 1: a crease vertex with K faces on each side needs K >= 2"),
     (["--crease", "--k", "2", "--scheme", "loop"], "the triangle lattice has no \"sector evaluation data"),
     (["--crease", "--k", "2", "--digits", "30"], "--digits does not apply to --crease"),
+    (["--crease", "--k", "30:33"], "--k 33: --crease takes at most 32 faces on each side"),
 ])
 def test_bad_input_one_line_exit_2(tmp_path, capsys, argv, message):
     out = tmp_path / "x.json"

@@ -101,7 +101,7 @@ class SectorEvalData:
     exact: bool
     #: ``A``, ``K x K``.
     matrix: object
-    #: The level-1 3-ring from the level-0 2-ring (its first ``K`` rows are ``A``).
+    #: The level-1 3-ring from the level-0 2-ring (its first ``K`` rows are ``A``); ``None`` when read from a file.
     refine3: object
     #: ``cells[s][c]``: the ``16 x K`` picking matrix of cell :data:`CELLS` ``[c]`` of face ``s``.
     cells: tuple

@@ -53,7 +53,8 @@ def register(sub) -> None:
         "patch matrix for valences 3..N, each float64 the correctly rounded value of the exact number "
         "(certified Arb balls), in the layout of the published data file; or as JSON decimal strings. "
         "With --scheme loop (JSON only): the same for Loop's (N+6)-point patch. With --boundary or --corner and "
-        "--k A:B: the exact data (rationals) of the patches next to a boundary or corner vertex with K faces.",
+        "--k A:B: the exact data (rationals) of the patches next to a boundary or corner vertex with K faces; with --crease "
+        "(or BLZ's rules): the sector data, an eigen-decomposition and the spline cells, exact or in Arb balls.",
     )
     p.add_argument("--n", type=valence_range("evaldata"), action=Once, metavar="3:N",
                    help="valences 3..N (the binary file starts at 3); or a sharp vertex with --boundary or --corner")

@@ -54,3 +54,13 @@ def test_another_weight_fails_the_check(scheme, vertex, mutate):
     assert dyadic_check(scheme, vertex, levels=(1, 2), data=data)["mismatches"] == 0
     r = dyadic_check(scheme, vertex, levels=(1, 2, 3), data=mutate(data))
     assert r["mismatches"] > 0
+
+
+def test_unequal_irrational_sides_and_a_corner_angle():
+    """BLZ's weights in two fields (cos(pi/4), cos(pi/5)) at one crease, and theta_k = (pi/2)/k at a corner."""
+    import sympy as sp
+
+    for vertex in (SharpVertex.crease(4, 5, "quad"), SharpVertex.corner(3, "quad", angle=sp.pi / 2)):
+        data = sector_evaldata(BLZ, vertex)
+        assert not data.exact and data.modified
+        assert dyadic_check(BLZ, vertex, levels=(1, 2))["mismatches"] == 0

@@ -300,7 +300,7 @@ def _poly_at(q, a: flint.fmpq_mat) -> flint.fmpq_mat:
 
 
 def _roots(q) -> tuple:
-    roots = flint.fmpz_poly([int(c) for c in q.coeffs()]).complex_roots()
+    roots = q.numer().complex_roots()
     return tuple(sorted((z for z, _ in roots), key=lambda z: -abs(z).mid()))
 
 
@@ -326,8 +326,8 @@ def decomposition(a: flint.fmpq_mat) -> tuple[PrimaryBlock, ...]:
             for j in range(basis.ncols()):
                 w[i, col + j] = basis[i, j]
         col += basis.ncols()
-    b_all = w.inv() * a * w
     winv = w.inv()
+    b_all = winv * a * w  # block diagonal: each generalized eigenspace is invariant (checked below)
     out, col = [], 0
     for q, e, g, basis in parts:
         d = basis.ncols()

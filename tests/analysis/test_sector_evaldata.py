@@ -44,6 +44,7 @@ def test_decomposition_is_exact(vertex):
         q = flint.fmpq_poly(list(b.factor))
         charpoly *= (q / q.coeffs()[-1]) ** b.multiplicity
         assert len(b.values) == len(b.factor) - 1
+        assert all(flint.acb_poly(list(q.coeffs()))(z).contains(0) for z in b.values)   # balls holding the roots of q
     assert charpoly == a.charpoly()                                 # the blocks account for the whole spectrum
     assert sum(b.block.nrows() for b in d.decomposition) == d.size
 

@@ -99,6 +99,8 @@ nothing else.
                    and the least change of a 1-ring for a normal or no hyperbolic part (``redesign``); boundary, crease, corner and dart vertices
                    by the mirror symmetry of their sectors: crease block and sine blocks (``mirror``), the
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
+                   evaluation data at crease, boundary and corner vertices, standard and BLZ rules: the eigen-decomposition over Q and
+                   the picking matrices of the spline cells past the modified points (``sector_evaldata``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
                    (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
@@ -125,7 +127,8 @@ nothing else.
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
                    map at one valence, ``zoo_characteristic``); dyadic limit positions for
-                   the patch evaluator (``patch_eval``) and the boundary one (``sharp_patch_eval``); the tuning region with Reif's
+                   the patch evaluator (``patch_eval``), the boundary one (``sharp_patch_eval``) and the crease, boundary and
+                   corner data (``sector_evaldata``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and
                    the artifact indicators (``artifacts``; a StencilScheme of the zoo's density and curvature regime from its
@@ -153,8 +156,9 @@ nothing else.
                    ``texlayout``), results in a notebook: short HTML tables and LaTeX (``display``),
                    the artifact table's columns (``artifact_table``), the zoo's families derived
                    by the engine, the file zoo.tex (``zoo_derivations``), C1 and the curvature regime
-                   for every valence as propositions, the file c1-every-n.tex (``every_n_derivations``), the report of a zoo scheme
-                   (``report_zoo``), Stam's data file (``evaldata``), meshes
+                   for every valence as propositions, the file c1-every-n.tex (``every_n_derivations``),
+                   the report of a zoo scheme (``report_zoo``), Stam's data file (``evaldata``), the
+                   crease, boundary and corner data file (``sector_evaldata``), meshes
                    with per-vertex colours as PLY and OBJ (``colored_mesh``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
@@ -174,8 +178,8 @@ nothing else.
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
-                   ``evaldata_cmd``, ``inspect_cmd`` (its outputs ``inspect_outputs``, its per-vertex table
-                   ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
+                   ``evaldata_cmd`` (creases and BLZ's rules, ``evaldata_sector``), ``inspect_cmd`` (its outputs
+                   ``inspect_outputs``, its per-vertex table ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
                    (``sharp``), the commands spectrum, masks and check for a scheme of the zoo (``zoo``), and artifacts

@@ -17,6 +17,10 @@ and a request beyond the memory limit is refused in one line naming the estimate
 with K faces, K in the range, as JSON of exact rationals (format ``sharp-patches`` in
 :mod:`symdecomp.output.evaldata`; evaluation in :mod:`symdecomp.analysis.sharp_evaluation`). ``--json``:
 ``{"out", "format", "scheme", "kind", "k", "bytes", "sizes"}``.
+
+``--crease --k A:B`` (crease vertices with K faces on each side), and ``--boundary``/``--corner`` under BLZ's rules:
+the sector evaluation data (format ``sector-evaldata``, :mod:`symdecomp.output.sector_evaldata`), written by
+:mod:`symdecomp.cli.evaldata_sector`.
 """
 
 from __future__ import annotations
@@ -49,12 +53,14 @@ def register(sub) -> None:
         "patch matrix for valences 3..N, each float64 the correctly rounded value of the exact number "
         "(certified Arb balls), in the layout of the published data file; or as JSON decimal strings. "
         "With --scheme loop (JSON only): the same for Loop's (N+6)-point patch. With --boundary or --corner and "
-        "--k A:B: the exact data (rationals) of the patches next to a boundary or corner vertex with K faces.",
+        "--k A:B: the exact data (rationals) of the patches next to a boundary or corner vertex with K faces; with --crease "
+        "(or BLZ's rules): the sector data, an eigen-decomposition and the spline cells, exact or in Arb balls.",
     )
     p.add_argument("--n", type=valence_range("evaldata"), action=Once, metavar="3:N",
                    help="valences 3..N (the binary file starts at 3); or a sharp vertex with --boundary or --corner")
     flag(p, "--boundary", help="the patches of boundary vertices with K faces (--k): exact JSON, format sharp-patches")
     flag(p, "--corner", help="the patches of corner vertices (interpolated) with K faces (--k): exact JSON")
+    flag(p, "--crease", help="crease vertices with K faces on each side (--k): JSON, format sector-evaldata")
     p.add_argument("--k", dest="faces", type=face_range("--k", "evaldata --k"), action=Once, metavar="A:B",
                    help=f"faces of the boundary or corner vertex: a range A:B or a single K (1 to {LIMITS['evaldata --k'][0]})")
     p.add_argument("--out", action=Once, required=True, metavar="FILE",
@@ -94,12 +100,12 @@ def rounded_eigendata(*args, **kwargs):
 
 def _sharp_kind(args) -> str | None:
     """``"boundary"``, ``"corner"`` or ``None`` (interior valences, --n), or a one-line error for a bad mix."""
-    kinds = [name for name in ("boundary", "corner") if given(args, name)]
+    kinds = [name for name in ("boundary", "corner", "crease") if given(args, name)]
     if len(kinds) > 1:
-        raise InvalidInputError("--boundary and --corner cannot be used together: give one kind of vertex")
+        raise InvalidInputError(f"{' and '.join('--' + k for k in kinds)} cannot be used together: give one kind of vertex")
     if not kinds:
         if given(args, "faces"):
-            raise InvalidInputError("--k needs --boundary or --corner")
+            raise InvalidInputError("--k needs --boundary, --corner or --crease")
         if not given(args, "n"):
             raise InvalidInputError("give --n 3:N (interior vertices), or --boundary/--corner with --k A:B")
         return None
@@ -121,6 +127,10 @@ def _run_sharp(args, kind: str) -> int:
     from symdecomp.output.evaldata import SHARP_FORMAT, sharp_entry, sharp_json_chunks
     from symdecomp.schemes.sector import SharpVertex
 
+    if kind == "crease" or getattr(args.scheme.sharp, "near_edge_centre", None) is not None:  # creases, BLZ's rules
+        from symdecomp.cli.evaldata_sector import run_sector
+
+        return run_sector(args, kind)
     scheme, ks = args.scheme, args.faces
     check_output_file(args.out)
     show = not args.quiet

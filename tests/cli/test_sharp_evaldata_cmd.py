@@ -38,13 +38,12 @@ def test_loop_corner_json_summary_matches_the_api(tmp_path, capsys):
 @pytest.mark.parametrize("argv, message", [
     (["--boundary", "--corner", "--k", "2"], "cannot be used together"),
     (["--boundary"], "--boundary needs --k"),
-    (["--k", "2"], "--k needs --boundary or --corner"),
+    (["--k", "2"], "--k needs --boundary, --corner or --crease"),
     (["--n", "3:4", "--boundary", "--k", "2"], "--n (interior vertices) and --boundary"),
     (["--corner", "--k", "2", "--digits", "30"], "--digits does not apply"),
     (["--corner", "--k", "2", "--format", "binary"], "--corner writes json"),
     (["--boundary", "--k", "0:2"], "expected an integer >= 1"),
     (["--boundary", "--k", "65"], "<= 64"),
-    (["--boundary", "--k", "3", "--scheme", "catmull-clark-blz"], "modified rules"),
     ([], "give --n 3:N"),
 ])
 def test_bad_input_one_line_exit_2(tmp_path, capsys, argv, message):

@@ -30,6 +30,7 @@ from symdecomp.analysis.inspection import position_weights
 from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
 from symdecomp.analysis.mesh_limits import kind_masks
 from symdecomp.analysis.ring_spectrum import frequency_factors
+from symdecomp.analysis.sector_evaldata import sector_evaldata
 from symdecomp.analysis.support import limit_mask
 from symdecomp.analysis.support_window import window
 from symdecomp.analysis.tuning import eigenvalue_quadratic, ratio_target
@@ -231,6 +232,7 @@ SCHEMES = [
     (sector_modes, dict(vertex=BOUNDARY)),
     (subdominant_eigenvalues, dict(vertex=BOUNDARY)),
     (sd.sharp_patch_data, dict(vertex=BOUNDARY)),
+    (sector_evaldata, dict(vertex=BOUNDARY)),
 ]
 
 #: ``(function, argument, a good value)`` of the cached functions that take a computed object.

@@ -35,10 +35,11 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cos_field import affine_in
 from symdecomp.algebra.null_vector import null_vector
+from symdecomp.algebra.numbers import to_sympy
 from symdecomp.analysis.sharp_field import near_weight
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
-from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
+from symdecomp.schemes.sector import SharpVertex, sharp_matrix_rows
 
 __all__ = ["NEAR", "SectorMatrices", "sector_matrices", "mirror_label", "Eigenpart", "sector_eigenvalues", "sector_eigenvector",
            "ball_matrix"]
@@ -57,12 +58,12 @@ class SectorMatrices:
     lattice: Lattice
     #: Labels ``(s, u, v)`` of the 2-ring (faces ``0..k-1``, last ray ``(k, u, 0)``), in matrix order.
     labels: tuple
-    #: The exact 2-ring matrix (sympy).
-    matrix: sp.ImmutableMatrix
+    #: The exact 2-ring matrix (sympy, sparse).
+    matrix: sp.ImmutableSparseMatrix
     #: Labels of the level-1 3-ring, in row order of :attr:`refine` (the 2-ring first).
     fine_labels: tuple
     #: The exact map from the level-0 2-ring to the level-1 3-ring (rows of the 3-ring matrix).
-    refine: sp.ImmutableMatrix
+    refine: sp.ImmutableSparseMatrix
     #: ``O`` is a corner (interpolated).
     corner: bool
     #: The value of :data:`NEAR` in :attr:`matrix` and :attr:`refine` (``None``: they are exact numbers).
@@ -78,10 +79,14 @@ def mirror_label(label: tuple, k: int) -> tuple:
 
 
 def _extract(scheme, vertex: SharpVertex, sector: int) -> tuple:
-    """``(refine, coarse labels, fine labels)`` of one sector, from the vertex's exact 3-ring matrix under ``scheme``."""
+    """``(refine, coarse labels, fine labels)`` of one sector, from the vertex's exact 3-ring rows under ``scheme``.
+
+    ``refine`` is sparse (``{(row, column): exact weight}``): the rows are read as the refinement gives them, so the work
+    is the number of entries read, not the square of the ring's size.
+    """
     k, start = vertex.sectors[sector], sum(vertex.sectors[:sector])
     local = SharpVertex.boundary(k, vertex.lattice)
-    full = sharp_subdivision_matrix(scheme, vertex, rings=3)
+    full = sharp_matrix_rows(scheme, vertex, rings=3)
     index = {lab: i for i, lab in enumerate(vertex.ring_labels(3))}
 
     def glob(label):
@@ -92,14 +97,19 @@ def _extract(scheme, vertex: SharpVertex, sector: int) -> tuple:
         return index[(s % vertex.faces if vertex.closed else s, u, v)]
 
     fine, coarse = local.ring_labels(3), local.ring_labels(2)
-    rows, cols = [glob(lab) for lab in fine], [glob(lab) for lab in coarse]
-    inside = set(cols)
-    for r, lab in zip(rows, fine):
-        if any(full[r, c] != 0 for c in range(full.cols) if c not in inside):
-            raise NotApplicableError(
-                f"sector {sector} of the vertex is not separated from the rest: the new point {lab} reads points outside "
-                "the sector's 2-ring (the sector test needs infinitely sharp edges between the sectors)")
-    return full.extract(rows, cols), coarse, fine
+    column = {glob(lab): c for c, lab in enumerate(coarse)}
+    entries = {}
+    for r, lab in enumerate(fine):
+        for c, w in full[glob(lab)].items():
+            w = to_sympy(w)
+            if w == 0:
+                continue
+            if c not in column:
+                raise NotApplicableError(
+                    f"sector {sector} of the vertex is not separated from the rest: the new point {lab} reads points outside "
+                    "the sector's 2-ring (the sector test needs infinitely sharp edges between the sectors)")
+            entries[(r, column[c])] = w
+    return entries, coarse, fine
 
 
 def _affine(e: sp.Expr, weight: sp.Expr) -> sp.Expr | None:
@@ -108,8 +118,19 @@ def _affine(e: sp.Expr, weight: sp.Expr) -> sp.Expr | None:
     return None if pq is None else pq[0] + pq[1] * NEAR
 
 
+def _in_near(entries: dict, weight: sp.Expr) -> dict | None:
+    """The entries with ``weight`` written as :data:`NEAR` (each distinct value converted once), or ``None`` if one is not
+    affine in it."""
+    if not all(v.is_Rational for v in sp.expand(weight).as_coefficients_dict().values()):
+        return None  # pragma: no cover - a weight sympy does not expand into rational multiples of radicals
+    converted = {e: _affine(e, weight) for e in set(entries.values())}
+    if any(e is None for e in converted.values()):
+        return None
+    return {rc: converted[e] for rc, e in entries.items()}
+
+
 def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatrices:
-    """The matrices of sector ``sector`` of ``vertex`` (see the module docstring).
+    """The matrices of sector ``sector`` of ``vertex`` (see the module docstring), as sparse sympy matrices.
 
     Where the sector's near-edge weight ``w`` is irrational (BLZ's ``3/8 - cos(pi/k)/4``) and every entry is
     ``p + q w`` with rational ``p, q`` (the refinement is linear in the rules' weights, and the near-edge rule's two
@@ -117,16 +138,14 @@ def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatri
     """
     k = vertex.sectors[sector]
     weight = near_weight(scheme, vertex, k)
-    refine, coarse, fine = _extract(scheme, vertex, sector)
+    entries, coarse, fine = _extract(scheme, vertex, sector)
     if weight is not None:
-        if all(v.is_Rational for v in sp.expand(weight).as_coefficients_dict().values()):
-            affine = [[_affine(e, weight) for e in row] for row in refine.tolist()]
-            if all(e is not None for row in affine for e in row):
-                refine = sp.ImmutableMatrix(affine)
-            else:
-                weight = None
-        else:  # pragma: no cover - a weight sympy does not expand into rational multiples of radicals
+        affine = _in_near(entries, weight)
+        if affine is None:
             weight = None
+        else:
+            entries = affine
+    refine = sp.ImmutableSparseMatrix(len(fine), len(coarse), entries)
     return SectorMatrices(k, vertex.lattice, coarse, refine[: len(coarse), :], fine, refine, vertex.corner, weight)
 
 

@@ -41,7 +41,7 @@ from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
 from symdecomp.schemes.sector import SharpVertex, sharp_matrix_rows
 
-__all__ = ["NEAR", "SectorMatrices", "sector_matrices", "mirror_label", "Eigenpart", "sector_eigenvalues", "sector_eigenvector",
+__all__ = ["NEAR", "SectorMatrices", "sector_matrices", "mirror_label", "Eigenpart", "sector_eigenvalues", "sector_eigenvector", "sector_parts",
            "ball_matrix"]
 
 
@@ -182,12 +182,23 @@ class Eigenpart:
     inner: int
 
 
+def sector_parts(sm: SectorMatrices) -> list[Eigenpart]:
+    """The sector matrix's invariant parts: even and odd under the mirror when it commutes with the matrix (exactly), else
+    one part ``"all"``; each split into its 1-ring block and the rest where the new 1-ring reads only the old one."""
+    return _parts(sm)
+
+
 def _parts(sm: SectorMatrices) -> list[Eigenpart]:
-    S, labels, k = sm.matrix, sm.labels, sm.k
+    labels, k = sm.labels, sm.k
+    entries = {ij: e for ij, e in sm.matrix.todok().items() if e != 0}
+    row_of: dict = {}
+    for (i, j), e in entries.items():
+        row_of.setdefault(i, {})[j] = e
     index = {lab: i for i, lab in enumerate(labels)}
     mirror = [index[mirror_label(lab, k)] for lab in labels]
-    symmetric = all(S[mirror[i], mirror[j]] == S[i, j] or sp.simplify(S[mirror[i], mirror[j]] - S[i, j]) == 0
-                    for i in range(S.rows) for j in range(S.cols) if S[i, j] != 0 or S[mirror[i], mirror[j]] != 0)
+    zero = sp.Integer(0)
+    symmetric = all(entries.get((mirror[i], mirror[j]), zero) == e or sp.simplify(entries.get((mirror[i], mirror[j]), zero) - e) == 0
+                    for (i, j), e in entries.items())
     ring1 = [i for i, lab in enumerate(labels) if sm.lattice.ring_of(lab[1], lab[2]) <= 1]
     if not symmetric:
         bases = {"all": [((i, 1),) for i in range(len(labels))]}
@@ -199,7 +210,7 @@ def _parts(sm: SectorMatrices) -> list[Eigenpart]:
     for name, basis in bases.items():
         basis.sort(key=lambda b: (b[0][0] not in ring1, b[0][0]))
         inner = sum(1 for b in basis if b[0][0] in ring1)
-        rows = tuple(tuple(sp.expand(sum((S[bi[0][0], j] * sgn for j, sgn in bj), sp.Integer(0))) for bj in basis)
+        rows = tuple(tuple(sp.expand(sum((row_of.get(bi[0][0], {}).get(j, zero) * sgn for j, sgn in bj), zero)) for bj in basis)
                      for bi in basis)
         if any(rows[r][c] != 0 for r in range(inner) for c in range(inner, len(basis))):
             inner = 0  # pragma: no cover - the new 1-ring reads only the old one for every rule set

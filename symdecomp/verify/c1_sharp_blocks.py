@@ -20,10 +20,12 @@ So ``lambda_1, lambda_2`` are the two largest of the 1-ring's leading values onc
 the blocks decide alone is a failure: a sector whose subdominant eigenvectors miss the tangent of a boundary curve,
 at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
 mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
-mirror's direct sum (checked exactly on the crease block). Everything else (conditions 3-5 need the characteristic
-map, whose control net this route does not build; other multiple subdominant eigenvalues) goes to the dense test up
-to :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
-rules: the spectral and tangent conditions hold).
+mirror's direct sum (checked exactly on the crease block). Where conditions 1 and 2 hold, conditions 3-5 are
+decided on the characteristic map of the eigenvectors in the mirror parts the blocks name (:mod:`.c1_sharp_map`: no
+characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces).
+Everything else (other multiple subdominant eigenvalues, a map not certified) goes to the dense test up to
+:data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
+rules past the map's faces: the spectral and tangent conditions hold).
 Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
@@ -165,8 +167,9 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
                           Eigen(top[0].ball, 0, 1), gap, float(third)), picks
 
 
-def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int) -> SectorFinding:
-    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :mod:`.c1_sharp_map`."""
+def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:
+    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :mod:`.c1_sharp_map` (``max_depth``:
+    its deepest subdivision; ``None``: the blocks alone)."""
     lattice, k, corner = scheme.lattice, vertex.sectors[sector], vertex.corner
     window = _window(scheme, lattice, corner)
     lead = leading_values(scheme, SharpVertex.corner(k, lattice) if corner else SharpVertex.boundary(k, lattice))
@@ -180,6 +183,9 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int) -> SectorF
         return SectorFinding(spectral.status, spectral.reason, spectral, lambdas)
     if tangent:
         return SectorFinding(tangent[0], tangent[1], spectral, lambdas)
+    if max_depth is None:
+        return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
+                             "characteristic map is not built (the blocks alone)", spectral, lambdas)
     found = map_from_blocks(scheme, vertex, sector, spectral, picks, crease, max_depth)
     if found.verdict is C1Verdict.UNDECIDED and vertex.faces <= MAX_DENSE_FACES:
         with flint.ctx.workprec(2 * flint.ctx.prec):  # the balls of the eigenvectors' solves, as the dense test retries
@@ -205,9 +211,11 @@ def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_
                          method=MAP_METHOD if mapped else BLOCKS_METHOD)
 
 
-def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES) -> SharpC1Result:
-    """Zorin's test at a boundary, crease or corner vertex: the blocks first, the dense test where they do not decide and
-    every sector has at most ``map_faces`` faces (module docstring)."""
+def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,
+                    certify_map: bool = True) -> SharpC1Result:
+    """Zorin's test at a boundary, crease or corner vertex: the blocks first, then the characteristic map from the
+    eigenvectors they name (:mod:`.c1_sharp_map`; not with ``certify_map=False``), the dense test where these do not
+    decide and every sector has at most ``map_faces`` faces (module docstring)."""
     scheme, max_depth = check_scheme(scheme), check_depth(max_depth)
     sharp_sectors = not vertex.closed or (math.isinf(vertex.sharpness) and len(vertex.sectors) == 2)
     if not sharp_sectors or vertex.angle is not None or vertex.lattice is not scheme.lattice:
@@ -216,7 +224,7 @@ def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_face
         return c1_sharp_test(scheme, vertex, max_depth=max_depth)
     try:
         with flint.ctx.workprec(64):
-            found = [_sector(scheme, vertex, i, max_depth) for i in range(len(vertex.sectors))]
+            found = [_sector(scheme, vertex, i, max_depth if certify_map else None) for i in range(len(vertex.sectors))]
     except NotApplicableError as exc:
         if max(vertex.sectors) <= map_faces:
             return c1_sharp_test(scheme, vertex, max_depth=max_depth)

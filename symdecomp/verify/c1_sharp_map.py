@@ -80,13 +80,14 @@ def block_parts(crease: sp.Matrix, picks: list) -> list[str] | None:
 def map_from_blocks(scheme, vertex: SharpVertex, sector: int, spectral: SpectralResult, picks: list, crease: sp.Matrix,
                     max_depth: int) -> SectorFinding:
     """Conditions 3-5 in sector ``sector`` of ``vertex``, the spectral conditions holding by the blocks (module docstring)."""
+    lambdas = tuple(float(p[0].real.mid()) for p in picks)
     if vertex.faces > MAX_DENSE_FACES:
         return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
-                             f"characteristic map is built for at most {MAX_DENSE_FACES} faces", spectral)
+                             f"characteristic map is built for at most {MAX_DENSE_FACES} faces", spectral, lambdas)
     names = block_parts(crease, picks)
     sm = sector_matrices(scheme, vertex, sector)
     parts = {p.name: p for p in sector_parts(sm)}
     if names is None or not all(name in parts for name in names):
         return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the blocks do not name the mirror part of each "
-                             "subdominant eigenvector", spectral)
+                             "subdominant eigenvector", spectral, lambdas)
     return sector_map(scheme, vertex, sm, spectral, [(p[0], parts[name], True) for p, name in zip(picks, names)], max_depth)

@@ -210,12 +210,26 @@ def _parts(sm: SectorMatrices) -> list[Eigenpart]:
     for name, basis in bases.items():
         basis.sort(key=lambda b: (b[0][0] not in ring1, b[0][0]))
         inner = sum(1 for b in basis if b[0][0] in ring1)
-        rows = tuple(tuple(sp.expand(sum((row_of.get(bi[0][0], {}).get(j, zero) * sgn for j, sgn in bj), zero)) for bj in basis)
-                     for bi in basis)
+        rows = _part_rows(row_of, basis)
         if any(rows[r][c] != 0 for r in range(inner) for c in range(inner, len(basis))):
             inner = 0  # pragma: no cover - the new 1-ring reads only the old one for every rule set
         out.append(Eigenpart(name, tuple(tuple(b) for b in basis), rows, inner))
     return [p for p in out if p.basis]
+
+
+def _part_rows(row_of: dict, basis: list) -> tuple:
+    """The part's matrix: row ``bi`` reads ``sum(S[bi_0, j] sign_j)`` over each coordinate ``bj``'s indices ``j`` (only the
+    matrix's non-zero entries are visited; an index outside the basis is one the part's vectors vanish on)."""
+    coord = {j: (c, sgn) for c, bj in enumerate(basis) for j, sgn in bj}
+    out = []
+    for bi in basis:
+        acc: dict = {}
+        for j, e in row_of.get(bi[0][0], {}).items():
+            if j in coord:
+                c, sgn = coord[j]
+                acc[c] = acc.get(c, 0) + e * sgn
+        out.append(tuple(sp.expand(acc[c]) if c in acc else sp.Integer(0) for c in range(len(basis))))
+    return tuple(out)
 
 
 def _block_values(rows, weight=None) -> list[flint.acb]:

@@ -20,7 +20,7 @@ from symdecomp.schemes.sector import MAX_DENSE_FACES
 from symdecomp.verify.c1_sharp import c1_sharp_test
 from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
 from symdecomp.verify.c1_sharp_map import MAP_METHOD, block_parts
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, mirror_label, sector_eigenvector, sector_matrices, sector_parts
+from symdecomp.verify.c1_sharp_spectrum import NEAR, ball_matrix, mirror_label, sector_eigenvector, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
 
 SCHEMES = {"cc": sd.catmull_clark, "loop": sd.loop, "cc-blz": lambda: load_scheme("catmull-clark-blz"),
@@ -90,3 +90,16 @@ def test_blz_is_certified_past_the_dense_tests_faces():
     assert r.opening == pytest.approx(1.0, abs=1e-9) and r.jacobian_lower_bound > 0
     past = c1_sharp_blocks(scheme, sd.SharpVertex.boundary(MAX_DENSE_FACES + 1, "quad"))
     assert past.verdict is C1Verdict.UNDECIDED and f"built for at most {MAX_DENSE_FACES} faces" in past.reason
+
+
+@pytest.mark.parametrize("name, k", [("cc-blz", 7), ("loop-blz", 6), ("cc", 5)])
+def test_the_sector_matrix_from_sparse_rows_is_the_vertex_matrix(name, k):
+    # a boundary vertex is its own sector: the 2-ring rows of the sparse 3-ring refinement are the dense 2-ring matrix
+    scheme = SCHEMES[name]()
+    vertex = sd.SharpVertex.boundary(k, scheme.lattice)
+    sm = sector_matrices(scheme, vertex)
+    dense = sd.sharp_subdivision_matrix(scheme, vertex, rings=2)
+    value = sm.matrix if sm.weight is None else sm.matrix.subs(NEAR, sm.weight)
+    assert sm.labels == vertex.ring_labels(2)
+    assert (sp.Matrix(value) - sp.Matrix(dense)).applyfunc(sp.simplify) == sp.zeros(*dense.shape)
+    assert (sm.weight is not None) == name.endswith("blz")

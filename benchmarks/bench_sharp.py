@@ -5,9 +5,10 @@ creases and Loop's rules (the structural route: the mirror decomposition's block
 1:1000`` within 60 s, the same for corners and Loop (the spectral and tangent conditions from the blocks, O(log k)
 per k; where they hold, the characteristic map from the eigenvectors in the mirror parts the blocks name, cubic in k
 in Arb, up to 64 faces; past that BLZ's sectors are undecided, so BLZ's rows are the whole range 1:K and miss the
-target: about 3.5 minutes of wall clock for 1:1000 on a loaded 2-core machine, nearly all of it in 33..64, against
-about 78 s per k at k = 30..40 before). Every figure is the wall-clock time of the command in a fresh process
-(start-up included), so it depends on what else the machine runs: ``run.py`` prints the load. ``claims`` has its own file (``bench_claims.py``).
+target: 4 min 9 s of wall clock for ``--boundary --k 1:1000 --scheme catmull-clark-blz`` on a loaded 2-core machine,
+1..64 certified C1 and 65..1000 undecided, against about 78 s per k at k = 30..40 and 1..32 only certified before).
+Every figure is the wall-clock time of the command in a fresh process (start-up included), so it depends on what else
+the machine runs: ``run.py`` prints the load. ``claims`` has its own file (``bench_claims.py``).
 
 Baselines, measured in the same run: the dense route (the vertex's matrix built by refinement, its characteristic
 polynomial factored, over ``Q(cos(pi/k))`` for BLZ's rules) on a small vertex, ``k = 8`` (at ``k = 16`` it took

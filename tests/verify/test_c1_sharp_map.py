@@ -8,6 +8,8 @@ same eigenvalues and the same certified opening of the sector's image.
 
 from __future__ import annotations
 
+import json
+
 import flint
 import pytest
 import sympy as sp
@@ -15,6 +17,7 @@ import sympy as sp
 import symdecomp as sd
 from symdecomp.analysis.mirror import crease_block
 from symdecomp.analysis.sharp_leading import leading_values
+from symdecomp.cli import main
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES
 from symdecomp.verify.c1_sharp import c1_sharp_test
@@ -103,3 +106,10 @@ def test_the_sector_matrix_from_sparse_rows_is_the_vertex_matrix(name, k):
     assert sm.labels == vertex.ring_labels(2)
     assert (sp.Matrix(value) - sp.Matrix(dense)).applyfunc(sp.simplify) == sp.zeros(*dense.shape)
     assert (sm.weight is not None) == name.endswith("blz")
+
+
+def test_the_command_line_reports_the_maps_route(capsys):
+    assert main(["c1", "--boundary", "--k", "33", "--scheme", "catmull-clark-blz", "--json"]) == 0
+    (row,) = json.loads(capsys.readouterr().out)["rows"]
+    assert row["verdict"] == "c1" and row["method"] == MAP_METHOD and row["vertex"] == "boundary k = 33"
+    assert row["lambdas"] == pytest.approx([0.5, 0.5]) and row["opening_over_pi"] == pytest.approx(1.0, abs=1e-9)

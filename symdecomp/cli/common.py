@@ -96,10 +96,10 @@ LIMITS = {
                           f"{ARTIFACTS_COST:.0e} N s, so 3:1000 is about 3 minutes and 3:1700 the most); a range beyond it is refused before it "
                           "starts: split it, or run it on a cluster in parts"),
     "c1 --k": (10000, "the spectral and tangent conditions are read from the sector's blocks (O(log K) per sector: "
-               "K = 10000 in under a second); the characteristic map is built on the sector's dense exact matrices "
-               "(about 12 K rows, an exact characteristic polynomial of a K x K block with BLZ's irrational weights: "
-               "K = 16 takes 10-20 s, K = 32 about 3.5 minutes) for sectors of at most 32 faces only, so a sector with more "
-               "faces that the blocks do not show to fail is undecided"),
+               "K = 10000 in under a second); the characteristic map is certified on the eigenvectors the blocks name, "
+               "in Arb from the sector's exact sparse matrix (cubic in K: K = 32 takes about 3 s, K = 64 about 15 s), for "
+               "vertices of at most 64 faces only, so a sector with more faces that the blocks do not show to fail is "
+               "undecided"),
     "c1 --depth": (MAX_DEPTH, "each level splits a piece in four: depth 12 is 16 million pieces"),
     "rings": (MAX_RINGS, "deeper neighbourhoods are not derived (their matrices grow like K^2 n)"),
     "budget": (86400, "seconds for one claim's check: a day is more than any check needs"),

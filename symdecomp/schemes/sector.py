@@ -52,7 +52,7 @@ from symdecomp.schemes.sharp import SharpOptions, check_sharpness, decrement
 from symdecomp.schemes.sharp_refinement import TaggedMesh, sharp_stencils
 from symdecomp.validate import INPUT_LIMITS, cached, check_int, check_levels, check_memory, check_type
 
-__all__ = ["SharpVertex", "sharp_subdivision_matrix", "exact_sharp_matrix", "MAX_SECTOR_FACES", "MAX_DENSE_FACES", "MAX_LEVEL"]
+__all__ = ["SharpVertex", "sharp_subdivision_matrix", "sharp_matrix_rows", "exact_sharp_matrix", "MAX_SECTOR_FACES", "MAX_DENSE_FACES", "MAX_LEVEL"]
 
 #: Most faces around a sharp vertex (the structural route, :mod:`symdecomp.analysis.sharp_structural`, is O(k)).
 MAX_SECTOR_FACES = INPUT_LIMITS["--boundary, --corner, --crease: faces by the blocks"][0]
@@ -281,6 +281,12 @@ def sharp_subdivision_matrix(scheme, vertex: SharpVertex, *, rings: int = 1, lev
     rows = _sparse_rows(scheme, vertex, rings, level, options)
     size = len(rows)
     return sp.ImmutableMatrix(size, size, lambda r, c: to_sympy(rows[r].get(c, 0)))
+
+
+def sharp_matrix_rows(scheme, vertex: SharpVertex, *, rings: int = 1, level: int = 0,
+                      options: SharpOptions | None = None) -> tuple[dict, ...]:
+    """:func:`sharp_subdivision_matrix`'s rows, sparse: ``{column: exact weight}`` per row (only the entries that are read)."""
+    return _sparse_rows(scheme, vertex, rings, level, options)
 
 
 def exact_sharp_matrix(scheme, vertex: SharpVertex, *, rings: int = 1, level: int = 0,

@@ -99,7 +99,7 @@ from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, 
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition"]
+__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "SectorFinding"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -140,7 +140,7 @@ def _describe(vertex: SharpVertex) -> str:
 
 
 @dataclass(frozen=True)
-class _Sector:
+class SectorFinding:
     """What the test found in one sector (before it becomes a result)."""
 
     verdict: C1Verdict
@@ -355,45 +355,52 @@ def _injective(sm, vertex, sign, dirs, sweeps) -> tuple[C1Verdict, str, float | 
     return C1Verdict.C1, f"{text} and winds once between the sharp rays: injective", opening
 
 
-def _sector_test(scheme, vertex, sector: int, max_depth: int) -> _Sector:
+def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
     sm = sector_matrices(scheme, vertex, sector)
     try:
         spectral, picks = _spectral(sm)
     except ValueError as exc:  # Arb could not isolate a block's eigenvalues at this precision
         spectral = SpectralResult(sm.k, C1Verdict.UNDECIDED, f"the spectrum is not certified at this precision ({exc})")
-        return _Sector(C1Verdict.UNDECIDED, spectral.reason, spectral)
+        return SectorFinding(C1Verdict.UNDECIDED, spectral.reason, spectral)
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
     tangent = _tangent(sm, picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:  # decided by lambda_1, lambda_2 alone, even if lambda_2 ties lambda_3
-        return _Sector(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
+        return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:
-        return _Sector(spectral.status, spectral.reason, spectral, lambdas)
+        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas)
     if tangent:
-        return _Sector(tangent[0], tangent[1], spectral, lambdas)
+        return SectorFinding(tangent[0], tangent[1], spectral, lambdas)
+    return sector_map(scheme, vertex, sm, spectral, picks, max_depth)
+
+
+def sector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, picks: list, max_depth: int) -> SectorFinding:
+    """Conditions 3-5 on the sector ``sm`` of ``vertex``, once conditions 1 and 2 hold: the characteristic map of the two
+    subdominant eigenvectors (``picks``: ``(value, part, in_ring)``, :func:`~.c1_sharp_spectrum.sector_eigenvector`)."""
+    lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
     wide = (why := modified_edges(scheme, vertex, sm.k)) is not None
     if wide and irregular_rows(sm):  # the spectral conditions hold; no ring of spline patches is known
-        return _Sector(C1Verdict.UNDECIDED, f"{spectral.reason}; the characteristic map is not certified: {why}", spectral, lambdas)
+        return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the characteristic map is not certified: {why}", spectral, lambdas)
     chi, dirs = _chi(sm, picks)
     if chi is None:
-        return _Sector(C1Verdict.UNDECIDED, "an eigenvector is not certified", spectral, lambdas)
+        return SectorFinding(C1Verdict.UNDECIDED, "an eigenvector is not certified", spectral, lambdas)
     if any(d.contains(0) for d in dirs):
-        return _Sector(C1Verdict.UNDECIDED, "a sharp ray's image is not shown to be non-degenerate", spectral, lambdas)
+        return SectorFinding(C1Verdict.UNDECIDED, "a sharp ray's image is not shown to be non-degenerate", spectral, lambdas)
     nets = wide_nets(sm, chi, tuple(p[0].real for p in picks)) if wide else _nets(sm, chi)
     cert = _sign(sm, nets, max_depth)
     if cert.status == "changes":
         per = len(ring_faces(sm.lattice)) if wide else 3
-        return _Sector(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, face "
+        return SectorFinding(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, face "
                        f"{cert.where[0] // per}{', wide ring' if wide else ''}): it is not regular", spectral, lambdas,
                        depth=cert.depth)
     if cert.status == "undecided":
-        return _Sector(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}", spectral,
+        return SectorFinding(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}", spectral,
                        lambdas, depth=cert.depth)
     sign = 1 if cert.status == "positive" else -1
     verdict, text, opening = _injective(sm, vertex, sign, dirs, _sweeps(sm, nets, wide))
     if verdict is C1Verdict.C1:
         where = " on the ring past the modified edges (level-1 distance 2 to 4, genuine splines)" if wide else ""
         text = f"{spectral.reason}; the characteristic map is regular{where} (|J| >= {round_down(cert.lower_bound)}) and {text}"
-    return _Sector(verdict, text, spectral, lambdas, sign, cert.lower_bound, cert.depth, opening)
+    return SectorFinding(verdict, text, spectral, lambdas, sign, cert.lower_bound, cert.depth, opening)
 
 
 def _check_vertex(vertex) -> SharpVertex:

@@ -20,10 +20,12 @@ So ``lambda_1, lambda_2`` are the two largest of the 1-ring's leading values onc
 the blocks decide alone is a failure: a sector whose subdominant eigenvectors miss the tangent of a boundary curve,
 at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
 mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
-mirror's direct sum (checked exactly on the crease block). Everything else (conditions 3-5 need the characteristic
-map, whose control net this route does not build; other multiple subdominant eigenvalues) goes to the dense test up
-to :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
-rules: the spectral and tangent conditions hold).
+mirror's direct sum (checked exactly on the crease block). Where conditions 1 and 2 hold, conditions 3-5 are
+decided on the characteristic map of the eigenvectors in the mirror parts the blocks name (:mod:`.c1_sharp_map`: no
+characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces).
+Everything else (other multiple subdominant eigenvalues, a map not certified) goes to the dense test up to
+:data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
+rules past the map's faces: the spectral and tangent conditions hold).
 Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
@@ -47,9 +49,10 @@ from symdecomp.analysis.mirror import crease_block
 from symdecomp.analysis.sharp_leading import leading_values
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
-from symdecomp.schemes.sector import SharpVertex
+from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
-from symdecomp.verify.c1_sharp import SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, tangent_condition
+from symdecomp.verify.c1_sharp import SectorFinding, SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, tangent_condition
+from symdecomp.verify.c1_sharp_map import MAP_METHOD, map_from_blocks
 from symdecomp.verify.c1_sharp_spectrum import sector_matrices
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.result import C1Verdict
@@ -105,18 +108,8 @@ def _window(scheme, lattice, corner: bool) -> _Window:
     return _Window(max(norms), tuple(_curve_eigenvalues(sm) for sm in matrices[:WINDOW]))
 
 
-@dataclass(frozen=True)
-class _Finding:
-    """What the blocks found in one sector: a verdict (final when ``NOT_C1``), its reason and the spectral result."""
-
-    verdict: C1Verdict
-    reason: str
-    spectral: SpectralResult
-    lambdas: tuple | None = None
-
-
-def _undecided(k: int, reason: str) -> _Finding:
-    return _Finding(C1Verdict.UNDECIDED, reason, SpectralResult(k, C1Verdict.UNDECIDED, reason))
+def _undecided(k: int, reason: str) -> SectorFinding:
+    return SectorFinding(C1Verdict.UNDECIDED, reason, SpectralResult(k, C1Verdict.UNDECIDED, reason))
 
 
 def _is_real(value, values) -> bool:
@@ -155,7 +148,7 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
     if not all(b < second for b in bounds):
         return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_2 = {ball_text(rest[1].ball)} is not shown larger than the "
                               "bound of the other blocks"), []
-    top, picks = rest[:2], [(v.ball, None, None) for v in rest[:2]]
+    top, picks = rest[:2], [(v.ball, v, None) for v in rest[:2]]
     lam = [ball_text(v.ball) for v in top]
     uppers = [b.upper() for b in bounds] + ([abs(rest[2].ball).upper()] if len(rest) > 2 else [])
     third = functools.reduce(lambda a, b: a if a > b else b, uppers)
@@ -174,25 +167,33 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
                           Eigen(top[0].ball, 0, 1), gap, float(third)), picks
 
 
-def _sector(scheme, k: int, corner: bool) -> _Finding:
-    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring)."""
-    lattice = scheme.lattice
+def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:
+    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :mod:`.c1_sharp_map` (``max_depth``:
+    its deepest subdivision; ``None``: the blocks alone)."""
+    lattice, k, corner = scheme.lattice, vertex.sectors[sector], vertex.corner
     window = _window(scheme, lattice, corner)
     lead = leading_values(scheme, SharpVertex.corner(k, lattice) if corner else SharpVertex.boundary(k, lattice))
-    spectral, picks = _spectral(k, lead, window.outer, crease_block(scheme, 2, corner=corner))
+    crease = crease_block(scheme, 2, corner=corner)
+    spectral, picks = _spectral(k, lead, window.outer, crease)
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
     tangent = tangent_condition(*window.curve(k), picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:
-        return _Finding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
+        return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:
-        return _Finding(spectral.status, spectral.reason, spectral, lambdas)
+        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas)
     if tangent:
-        return _Finding(tangent[0], tangent[1], spectral, lambdas)
-    return _Finding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
-                    "characteristic map is not built by the blocks route", spectral, lambdas)
+        return SectorFinding(tangent[0], tangent[1], spectral, lambdas)
+    if max_depth is None:
+        return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
+                             "characteristic map is not built (the blocks alone)", spectral, lambdas)
+    found = map_from_blocks(scheme, vertex, sector, spectral, picks, crease, max_depth)
+    if found.verdict is C1Verdict.UNDECIDED and vertex.faces <= MAX_DENSE_FACES:
+        with flint.ctx.workprec(2 * flint.ctx.prec):  # the balls of the eigenvectors' solves, as the dense test retries
+            found = map_from_blocks(scheme, vertex, sector, spectral, picks, crease, max_depth)
+    return found
 
 
-def _blocks_result(scheme, vertex: SharpVertex, found: list[_Finding], max_depth: int) -> SharpC1Result:
+def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_depth: int) -> SharpC1Result:
     order = (C1Verdict.NOT_C1, C1Verdict.UNDECIDED, C1Verdict.C1)
     verdict = min((f.verdict for f in found), key=order.index)
     key = next(f for f in found if f.verdict is verdict)
@@ -200,16 +201,21 @@ def _blocks_result(scheme, vertex: SharpVertex, found: list[_Finding], max_depth
         reason = key.reason
     else:
         reason = "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
-    if verdict is not C1Verdict.NOT_C1:
+    if verdict is C1Verdict.UNDECIDED:
         reason += f" (the dense test reads sectors of at most {MAP_FACES} faces)"
+    mapped = key.sign is not None or key.depth is not None
     return SharpC1Result(n=vertex.faces, scheme=scheme.name, verdict=verdict, reason=reason, spectral=key.spectral,
+                         jacobian_sign=key.sign, jacobian_lower_bound=key.bound, subdivision_depth=key.depth,
                          max_depth=max_depth, lattice=vertex.lattice, vertex=_describe(vertex), lambdas=key.lambdas,
-                         method=BLOCKS_METHOD)
+                         opening=key.opening, winding_number=1 if verdict is C1Verdict.C1 else None,
+                         method=MAP_METHOD if mapped else BLOCKS_METHOD)
 
 
-def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES) -> SharpC1Result:
-    """Zorin's test at a boundary, crease or corner vertex: the blocks first, the dense test where they do not decide and
-    every sector has at most ``map_faces`` faces (module docstring)."""
+def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,
+                    certify_map: bool = True) -> SharpC1Result:
+    """Zorin's test at a boundary, crease or corner vertex: the blocks first, then the characteristic map from the
+    eigenvectors they name (:mod:`.c1_sharp_map`; not with ``certify_map=False``), the dense test where these do not
+    decide and every sector has at most ``map_faces`` faces (module docstring)."""
     scheme, max_depth = check_scheme(scheme), check_depth(max_depth)
     sharp_sectors = not vertex.closed or (math.isinf(vertex.sharpness) and len(vertex.sectors) == 2)
     if not sharp_sectors or vertex.angle is not None or vertex.lattice is not scheme.lattice:
@@ -218,11 +224,12 @@ def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_face
         return c1_sharp_test(scheme, vertex, max_depth=max_depth)
     try:
         with flint.ctx.workprec(64):
-            found = [_sector(scheme, k, vertex.corner) for k in vertex.sectors]
+            found = [_sector(scheme, vertex, i, max_depth if certify_map else None) for i in range(len(vertex.sectors))]
     except NotApplicableError as exc:
         if max(vertex.sectors) <= map_faces:
             return c1_sharp_test(scheme, vertex, max_depth=max_depth)
         found = [_undecided(k, f"the blocks route does not apply ({exc})") for k in vertex.sectors]
-    if any(f.verdict is C1Verdict.NOT_C1 for f in found) or max(vertex.sectors) > map_faces:
+    decided = any(f.verdict is C1Verdict.NOT_C1 for f in found) or all(f.verdict is C1Verdict.C1 for f in found)
+    if decided or max(vertex.sectors) > map_faces:
         return _blocks_result(scheme, vertex, found, max_depth)
     return c1_sharp_test(scheme, vertex, max_depth=max_depth)

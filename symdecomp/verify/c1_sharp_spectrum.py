@@ -35,12 +35,13 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cos_field import affine_in
 from symdecomp.algebra.null_vector import null_vector
+from symdecomp.algebra.numbers import to_sympy
 from symdecomp.analysis.sharp_field import near_weight
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
-from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
+from symdecomp.schemes.sector import SharpVertex, sharp_matrix_rows
 
-__all__ = ["NEAR", "SectorMatrices", "sector_matrices", "mirror_label", "Eigenpart", "sector_eigenvalues", "sector_eigenvector",
+__all__ = ["NEAR", "SectorMatrices", "sector_matrices", "mirror_label", "Eigenpart", "sector_eigenvalues", "sector_eigenvector", "sector_parts",
            "ball_matrix"]
 
 
@@ -57,12 +58,12 @@ class SectorMatrices:
     lattice: Lattice
     #: Labels ``(s, u, v)`` of the 2-ring (faces ``0..k-1``, last ray ``(k, u, 0)``), in matrix order.
     labels: tuple
-    #: The exact 2-ring matrix (sympy).
-    matrix: sp.ImmutableMatrix
+    #: The exact 2-ring matrix (sympy, sparse).
+    matrix: sp.ImmutableSparseMatrix
     #: Labels of the level-1 3-ring, in row order of :attr:`refine` (the 2-ring first).
     fine_labels: tuple
     #: The exact map from the level-0 2-ring to the level-1 3-ring (rows of the 3-ring matrix).
-    refine: sp.ImmutableMatrix
+    refine: sp.ImmutableSparseMatrix
     #: ``O`` is a corner (interpolated).
     corner: bool
     #: The value of :data:`NEAR` in :attr:`matrix` and :attr:`refine` (``None``: they are exact numbers).
@@ -78,10 +79,14 @@ def mirror_label(label: tuple, k: int) -> tuple:
 
 
 def _extract(scheme, vertex: SharpVertex, sector: int) -> tuple:
-    """``(refine, coarse labels, fine labels)`` of one sector, from the vertex's exact 3-ring matrix under ``scheme``."""
+    """``(refine, coarse labels, fine labels)`` of one sector, from the vertex's exact 3-ring rows under ``scheme``.
+
+    ``refine`` is sparse (``{(row, column): exact weight}``): the rows are read as the refinement gives them, so the work
+    is the number of entries read, not the square of the ring's size.
+    """
     k, start = vertex.sectors[sector], sum(vertex.sectors[:sector])
     local = SharpVertex.boundary(k, vertex.lattice)
-    full = sharp_subdivision_matrix(scheme, vertex, rings=3)
+    full = sharp_matrix_rows(scheme, vertex, rings=3)
     index = {lab: i for i, lab in enumerate(vertex.ring_labels(3))}
 
     def glob(label):
@@ -92,14 +97,19 @@ def _extract(scheme, vertex: SharpVertex, sector: int) -> tuple:
         return index[(s % vertex.faces if vertex.closed else s, u, v)]
 
     fine, coarse = local.ring_labels(3), local.ring_labels(2)
-    rows, cols = [glob(lab) for lab in fine], [glob(lab) for lab in coarse]
-    inside = set(cols)
-    for r, lab in zip(rows, fine):
-        if any(full[r, c] != 0 for c in range(full.cols) if c not in inside):
-            raise NotApplicableError(
-                f"sector {sector} of the vertex is not separated from the rest: the new point {lab} reads points outside "
-                "the sector's 2-ring (the sector test needs infinitely sharp edges between the sectors)")
-    return full.extract(rows, cols), coarse, fine
+    column = {glob(lab): c for c, lab in enumerate(coarse)}
+    entries = {}
+    for r, lab in enumerate(fine):
+        for c, w in full[glob(lab)].items():
+            w = to_sympy(w)
+            if w == 0:
+                continue
+            if c not in column:
+                raise NotApplicableError(
+                    f"sector {sector} of the vertex is not separated from the rest: the new point {lab} reads points outside "
+                    "the sector's 2-ring (the sector test needs infinitely sharp edges between the sectors)")
+            entries[(r, column[c])] = w
+    return entries, coarse, fine
 
 
 def _affine(e: sp.Expr, weight: sp.Expr) -> sp.Expr | None:
@@ -108,8 +118,19 @@ def _affine(e: sp.Expr, weight: sp.Expr) -> sp.Expr | None:
     return None if pq is None else pq[0] + pq[1] * NEAR
 
 
+def _in_near(entries: dict, weight: sp.Expr) -> dict | None:
+    """The entries with ``weight`` written as :data:`NEAR` (each distinct value converted once), or ``None`` if one is not
+    affine in it."""
+    if not all(v.is_Rational for v in sp.expand(weight).as_coefficients_dict().values()):
+        return None  # pragma: no cover - a weight sympy does not expand into rational multiples of radicals
+    converted = {e: _affine(e, weight) for e in set(entries.values())}
+    if any(e is None for e in converted.values()):
+        return None
+    return {rc: converted[e] for rc, e in entries.items()}
+
+
 def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatrices:
-    """The matrices of sector ``sector`` of ``vertex`` (see the module docstring).
+    """The matrices of sector ``sector`` of ``vertex`` (see the module docstring), as sparse sympy matrices.
 
     Where the sector's near-edge weight ``w`` is irrational (BLZ's ``3/8 - cos(pi/k)/4``) and every entry is
     ``p + q w`` with rational ``p, q`` (the refinement is linear in the rules' weights, and the near-edge rule's two
@@ -117,16 +138,14 @@ def sector_matrices(scheme, vertex: SharpVertex, sector: int = 0) -> SectorMatri
     """
     k = vertex.sectors[sector]
     weight = near_weight(scheme, vertex, k)
-    refine, coarse, fine = _extract(scheme, vertex, sector)
+    entries, coarse, fine = _extract(scheme, vertex, sector)
     if weight is not None:
-        if all(v.is_Rational for v in sp.expand(weight).as_coefficients_dict().values()):
-            affine = [[_affine(e, weight) for e in row] for row in refine.tolist()]
-            if all(e is not None for row in affine for e in row):
-                refine = sp.ImmutableMatrix(affine)
-            else:
-                weight = None
-        else:  # pragma: no cover - a weight sympy does not expand into rational multiples of radicals
+        affine = _in_near(entries, weight)
+        if affine is None:
             weight = None
+        else:
+            entries = affine
+    refine = sp.ImmutableSparseMatrix(len(fine), len(coarse), entries)
     return SectorMatrices(k, vertex.lattice, coarse, refine[: len(coarse), :], fine, refine, vertex.corner, weight)
 
 
@@ -163,12 +182,23 @@ class Eigenpart:
     inner: int
 
 
+def sector_parts(sm: SectorMatrices) -> list[Eigenpart]:
+    """The sector matrix's invariant parts: even and odd under the mirror when it commutes with the matrix (exactly), else
+    one part ``"all"``; each split into its 1-ring block and the rest where the new 1-ring reads only the old one."""
+    return _parts(sm)
+
+
 def _parts(sm: SectorMatrices) -> list[Eigenpart]:
-    S, labels, k = sm.matrix, sm.labels, sm.k
+    labels, k = sm.labels, sm.k
+    entries = {ij: e for ij, e in sm.matrix.todok().items() if e != 0}
+    row_of: dict = {}
+    for (i, j), e in entries.items():
+        row_of.setdefault(i, {})[j] = e
     index = {lab: i for i, lab in enumerate(labels)}
     mirror = [index[mirror_label(lab, k)] for lab in labels]
-    symmetric = all(S[mirror[i], mirror[j]] == S[i, j] or sp.simplify(S[mirror[i], mirror[j]] - S[i, j]) == 0
-                    for i in range(S.rows) for j in range(S.cols) if S[i, j] != 0 or S[mirror[i], mirror[j]] != 0)
+    zero = sp.Integer(0)
+    symmetric = all(entries.get((mirror[i], mirror[j]), zero) == e or sp.simplify(entries.get((mirror[i], mirror[j]), zero) - e) == 0
+                    for (i, j), e in entries.items())
     ring1 = [i for i, lab in enumerate(labels) if sm.lattice.ring_of(lab[1], lab[2]) <= 1]
     if not symmetric:
         bases = {"all": [((i, 1),) for i in range(len(labels))]}
@@ -180,12 +210,26 @@ def _parts(sm: SectorMatrices) -> list[Eigenpart]:
     for name, basis in bases.items():
         basis.sort(key=lambda b: (b[0][0] not in ring1, b[0][0]))
         inner = sum(1 for b in basis if b[0][0] in ring1)
-        rows = tuple(tuple(sp.expand(sum((S[bi[0][0], j] * sgn for j, sgn in bj), sp.Integer(0))) for bj in basis)
-                     for bi in basis)
+        rows = _part_rows(row_of, basis)
         if any(rows[r][c] != 0 for r in range(inner) for c in range(inner, len(basis))):
             inner = 0  # pragma: no cover - the new 1-ring reads only the old one for every rule set
         out.append(Eigenpart(name, tuple(tuple(b) for b in basis), rows, inner))
     return [p for p in out if p.basis]
+
+
+def _part_rows(row_of: dict, basis: list) -> tuple:
+    """The part's matrix: row ``bi`` reads ``sum(S[bi_0, j] sign_j)`` over each coordinate ``bj``'s indices ``j`` (only the
+    matrix's non-zero entries are visited; an index outside the basis is one the part's vectors vanish on)."""
+    coord = {j: (c, sgn) for c, bj in enumerate(basis) for j, sgn in bj}
+    out = []
+    for bi in basis:
+        acc: dict = {}
+        for j, e in row_of.get(bi[0][0], {}).items():
+            if j in coord:
+                c, sgn = coord[j]
+                acc[c] = acc.get(c, 0) + e * sgn
+        out.append(tuple(sp.expand(acc[c]) if c in acc else sp.Integer(0) for c in range(len(basis))))
+    return tuple(out)
 
 
 def _block_values(rows, weight=None) -> list[flint.acb]:

@@ -43,7 +43,7 @@ from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.mesh_tags import MeshTags
 from symdecomp.validate import INPUT_LIMITS, MAX_COORDINATE, MAX_NUMBER_CHARS, finite_double
 
-__all__ = ["IGNORED", "MAX_LINE_BYTES", "ParsedMesh", "number", "index", "read_obj"]
+__all__ = ["IGNORED", "MAX_LINE_BYTES", "ParsedMesh", "number", "index", "read_obj", "reading_progress"]
 
 #: Keywords of OBJ lines that do not change the surface (texture, normals, groups, materials, display).
 IGNORED = frozenset({"vt", "vn", "vp", "g", "o", "s", "usemtl", "mtllib", "l", "p", "mg", "lod", "bevel", "c_interp", "d_interp",
@@ -107,13 +107,22 @@ def _lines(data: bytes, name: str) -> list[bytes]:
     return lines
 
 
-def read_obj(data: bytes, name: str) -> ParsedMesh:
-    """Parse an OBJ file's bytes (module docstring): fast on plain ``v`` and ``f`` lines, line by line otherwise."""
+def reading_progress(progress=None):
+    """``wrap(iterable, total, what)`` for the line-by-line loops of the readers: ``progress`` with ``what`` as
+    ``"reading lines"`` (``"reading faces"``), or the iterable itself when ``progress`` is None."""
+    if progress is None:
+        return lambda items, total, what: items
+    return lambda items, total, what: progress(items, total, f"reading {what}")
+
+
+def read_obj(data: bytes, name: str, wrap=None) -> ParsedMesh:
+    """Parse an OBJ file's bytes (module docstring): fast on plain ``v`` and ``f`` lines, line by line otherwise
+    (``wrap``: :func:`reading_progress`, around that loop)."""
     lines = _lines(data, name)
     try:
         return _fast(lines, name)
     except _Irregular:
-        return _slow(lines, name)
+        return _slow(lines, name, wrap)
 
 
 def _fast(lines: list[bytes], name: str) -> ParsedMesh:
@@ -198,9 +207,9 @@ class _TextPoints:
         return tuple(Fraction(t.decode("ascii")) for t in self.vlines[i].split(b"#", 1)[0].split()[1:4])
 
 
-def _slow(lines: list[bytes], name: str) -> ParsedMesh:
+def _slow(lines: list[bytes], name: str, wrap=None) -> ParsedMesh:
     exact, faces, tags = [], [], _TagReader(name)
-    for number_, raw in enumerate(lines, 1):
+    for number_, raw in (wrap or reading_progress())(enumerate(lines, 1), len(lines), "lines"):
         line = raw.decode("utf-8", "replace")
         words = line.split("#", 1)[0].split()
         where = f"{name}: line {number_}"

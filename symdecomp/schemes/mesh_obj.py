@@ -18,7 +18,10 @@ tags are 0-based, as OpenSubdiv reads them:
   edge-and-corner; OpenSubdiv's shape loader takes edge-only then, so write the tag to compare with it);
 * ``t creasemethod 0/0/1 normal|chaikin``, ``t smoothtriangles 0/0/1 catmark|smooth``;
 * ``t facevaryinginterpolateboundary``, ``t facevaryingpropagatecorners``: face-varying data only, ignored;
-* hierarchical edits (``t vertexedit``, ``t edgeedit``, ``t faceedit``) and any other tag: refused.
+* hierarchical edits (``t vertexedit``, ``t edgeedit``, ``t faceedit``): refused by design, with a line that says so.
+  They override points at refined levels, so the surface is no longer the subdivision surface of the control mesh,
+  which is what every verdict is about; OpenSubdiv's 3.0 release removed them too ("support for hierarchical features
+  has been removed from the 3.0 release", its page *Hierarchical Edits*). Any other tag: refused.
 
 A number is a decimal ``[+-]digits[.digits][e[+-]digits]`` of at most
 :data:`~symdecomp.validate.MAX_NUMBER_CHARS` characters whose value has magnitude at most
@@ -292,7 +295,9 @@ class _TagReader:
         elif tag in ("facevaryinginterpolateboundary", "facevaryingpropagatecorners") and len(ints) == 1 and not numbers:
             pass  # face-varying data (texture coordinates) only: the surface is the same
         elif tag in ("vertexedit", "edgeedit", "faceedit"):
-            raise InvalidMeshError(f"{where}: tag {tag!r}: hierarchical edits (changes at refined levels) are not supported")
+            raise InvalidMeshError(f"{where}: tag {tag!r}: hierarchical edits are refused by design: they change points at "
+                                   "refined levels, so the surface is not the subdivision surface of the mesh that the analysis "
+                                   f"is about (OpenSubdiv 3 dropped them too); remove the 't {tag}' lines to analyse the unedited surface")
         elif tag in ("crease", "corner", "hole", "interpolateboundary", "creasemethod", "smoothtriangles",
                      "facevaryinginterpolateboundary", "facevaryingpropagatecorners"):
             raise InvalidMeshError(f"{where}: tag {tag!r} with arguments {counts} {' '.join(args)[:60]!r} is malformed "

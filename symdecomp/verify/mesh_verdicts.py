@@ -10,7 +10,7 @@ Where a test does not apply (a scheme with free parameters) the verdict is ``n/a
 **Darts** (one sharp edge ends at an interior vertex; OpenSubdiv keeps the smooth vertex rule there) get a verdict of
 their own (:func:`dart_verdict`). A semi-sharp dart is smooth from level ``ceil(s)`` on, so Reif's test at its valence
 decides, as for a semi-sharp crease (and so does the curvature regime at that valence). An infinitely sharp dart is
-judged by the exact spectrum of its 1-ring matrix (:func:`~symdecomp.analysis.sharp_spectrum.sharp_spectrum`, ``check
+judged by the exact spectrum of its 1-ring matrix (:func:`~symdecomp.analysis.sharp_field.sharp_values`, as in ``check
 --dart --certify`` proves it): ``not-c1`` when the eigenvalue 1 is not simple and strictly dominant (the rings do not
 shrink to one point); otherwise ``undecided`` with the spectral facts (the subdominant pair and the certified gap to
 the next modulus), because the sector test (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`) needs sharp rays on both
@@ -84,15 +84,16 @@ def dart_verdict(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
 
 def _dart_spectral(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
     """An infinitely sharp dart: its exact 1-ring spectrum, ordered by certified modulus."""
-    from symdecomp.analysis.sharp_eigen import by_modulus, separated
-    from symdecomp.analysis.sharp_spectrum import sharp_spectrum
+    from symdecomp.analysis.ring_spectrum import acb_text
+    from symdecomp.analysis.sharp_eigen import by_modulus, merge, separated
+    from symdecomp.analysis.sharp_field import sharp_values
 
     try:
-        spectrum = sharp_spectrum(scheme, kind.sharp_vertex(scheme.lattice))
+        _, _, found = sharp_values(scheme, kind.sharp_vertex(scheme.lattice))
     except NotApplicableError as exc:
         return "undecided", f"the dart's exact spectrum is out of reach: {exc}"
-    text = {e.eigenvalue.key: e.text for e in spectrum.entries}
-    values = by_modulus([e.eigenvalue for e in spectrum.entries])
+    values = by_modulus(merge(found))
+    text = {v.key: acb_text(v.ball, 20) for v in values}
     top = values[0]
     if not (top.exact == 1 and top.multiplicity == 1 and separated(top, values[1])):
         return "not-c1", (f"the eigenvalue 1 is not simple and strictly dominant (largest modulus: {text[top.key]} of "

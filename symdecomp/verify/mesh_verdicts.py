@@ -10,11 +10,12 @@ Where a test does not apply (a scheme with free parameters) the verdict is ``n/a
 **Darts** (one sharp edge ends at an interior vertex; OpenSubdiv keeps the smooth vertex rule there) get a verdict of
 their own (:func:`dart_verdict`). A semi-sharp dart is smooth from level ``ceil(s)`` on, so Reif's test at its valence
 decides, as for a semi-sharp crease (and so does the curvature regime at that valence). An infinitely sharp dart is
-judged by the exact spectrum of its 1-ring matrix (:func:`~symdecomp.analysis.sharp_field.sharp_values`, as in ``check
---dart --certify`` proves it): ``not-c1`` when the eigenvalue 1 is not simple and strictly dominant (the rings do not
-shrink to one point); otherwise ``undecided`` with the spectral facts (the subdominant pair and the certified gap to
-the next modulus), because the sector test (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`) needs sharp rays on both
-sides of a sector and no test of a dart's characteristic map (a closed fan cut by one sharp ray) exists here yet.
+judged by the exact spectrum of its 1-ring matrix (:func:`~symdecomp.analysis.sharp_field.sharp_values`; ``check --k N
+--dart --certify`` proves that spectrum): ``not-c1`` when the eigenvalue 1 is not simple and strictly dominant (the
+rings do not shrink to one point); otherwise ``undecided`` with the spectral facts (the subdominant pair and the next
+eigenvalue, certified smaller in modulus), because the sector test (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`)
+needs sharp rays on both sides of a sector and no test of a dart's characteristic map (a closed fan cut by one sharp
+ray) exists here yet.
 
 >>> from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
 >>> from symdecomp.schemes.scheme import catmull_clark

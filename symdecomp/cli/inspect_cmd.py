@@ -82,7 +82,7 @@ def _read(args):
     from symdecomp.schemes.meshformats import read_mesh
 
     memory_note(args.mesh)
-    mesh = read_mesh(args.mesh, args.format, strict=args.strict)
+    mesh = read_mesh(args.mesh, args.format, strict=args.strict, progress=None if args.quiet else progress_lines)
     if args.strict and not mesh.defects.is_empty():
         raise InvalidMeshError(f"{mesh.name}: --strict: the file has elements a scheme cannot take: {_first_defect(mesh.defects)}")
     return mesh

@@ -75,7 +75,7 @@ def run(args) -> int:
         raise InvalidInputError(f"--out {args.out}: give a .obj or .ply file name (the format follows the extension)")
     from symdecomp.schemes.meshformats import read_mesh
 
-    mesh = read_mesh(args.mesh, args.format)
+    mesh = read_mesh(args.mesh, args.format, progress=None if args.quiet else lambda xs, total, what: progress(xs, total, f"refine {what}"))
     scheme = args.scheme
     if scheme is None:
         sizes = mesh.face_sizes()

@@ -31,7 +31,7 @@ from fractions import Fraction
 import numpy as np
 
 from symdecomp.errors import InvalidMeshError
-from symdecomp.schemes.mesh_obj import ParsedMesh, index, number
+from symdecomp.schemes.mesh_obj import ParsedMesh, index, number, reading_progress
 from symdecomp.validate import INPUT_LIMITS, MAX_COORDINATE, MESH_ADVICE, check_memory, mesh_memory
 
 __all__ = ["read_ply"]
@@ -56,14 +56,15 @@ class _Element:
     properties: list
 
 
-def read_ply(data: bytes, name: str) -> ParsedMesh:
-    """Parse a PLY file's bytes (module docstring)."""
+def read_ply(data: bytes, name: str, wrap=None) -> ParsedMesh:
+    """Parse a PLY file's bytes (module docstring); ``wrap`` (:func:`~symdecomp.schemes.mesh_obj.reading_progress`)
+    goes around the loop over an ASCII file's list elements (its faces), the one loop element by element."""
     fmt, elements, body = _header(data, name)
     _check_counts(elements, len(data) - body, fmt, name)
     counts = {e.name: e.count for e in elements}
     check_memory(len(data) + mesh_memory(corners=3 * counts.get("face", 0), faces=counts.get("face", 0), vertices=counts.get("vertex", 0)),
                  f"{name}: a PLY mesh of {counts.get('vertex', 0)} vertices and {counts.get('face', 0)} faces", MESH_ADVICE)
-    reader = _Ascii(data, body, name) if fmt is None else _Binary(data, body, fmt, name)
+    reader = _Ascii(data, body, name, wrap or reading_progress()) if fmt is None else _Binary(data, body, fmt, name)
     found = {}
     for element in elements:
         found[element.name] = reader.element(element, keep=element.name in ("vertex", "face") and element.name not in found)
@@ -243,8 +244,8 @@ class _Binary:
 class _Ascii:
     """Elements of an ASCII PLY body, token by token (numbers checked as in OBJ, indices integers only)."""
 
-    def __init__(self, data: bytes, pos: int, name: str):
-        self.tokens, self.pos, self.name = data[pos:].split(), 0, name
+    def __init__(self, data: bytes, pos: int, name: str, wrap):
+        self.tokens, self.pos, self.name, self.wrap = data[pos:].split(), 0, name, wrap
 
     def _take(self, count: int, what: str) -> list[bytes]:
         if self.pos + count > len(self.tokens):
@@ -267,7 +268,7 @@ class _Ascii:
         if keep and e.name == "vertex":
             raise InvalidMeshError(f"{self.name}: the PLY vertex element has a list property; x, y, z must be scalars")
         sizes, values = [], []
-        for i in range(e.count):
+        for i in self.wrap(range(e.count), e.count, f"{e.name}s"):
             where = f"{self.name}: {e.name} {i}"
             for p in e.properties:
                 k = 1 if p.count is None else index(self._take(1, f"{e.name} {i}")[0].decode("ascii", "replace"), where, "list length")

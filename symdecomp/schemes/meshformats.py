@@ -10,6 +10,9 @@ and checked again), or ``-`` for standard input (give ``fmt``). At most
 :data:`~symdecomp.validate.MAX_MESH_FILE_BYTES` bytes are read, whatever size the file system reports
 (a device reports 0), and the memory that reading will take is estimated from the size
 (:func:`~symdecomp.validate.mesh_memory`) and refused before it is allocated when it does not fit.
+``progress(iterable, total, what)``, when given, wraps the loops that read a text file element by element or line
+by line (an ASCII PLY's faces, an OFF file, an OBJ that its fast path does not take: negative indices, vertex
+weights; the command line's progress display); the rest (binary PLY, the OBJ fast path) is read with numpy in one pass.
 
 **Lenient by default.** ``read_mesh(path, strict=False)`` and ``decode_mesh(..., strict=False)`` keep
 the valid rest of a mesh with non-manifold edges or vertices, degenerate or repeated faces and
@@ -71,7 +74,7 @@ from pathlib import Path
 import numpy as np
 
 from symdecomp.errors import InvalidMeshError
-from symdecomp.schemes.mesh_obj import ParsedMesh, _lines, index, number, read_obj
+from symdecomp.schemes.mesh_obj import ParsedMesh, _lines, index, number, read_obj, reading_progress
 from symdecomp.schemes.mesh_ply import read_ply
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.validate import MAX_MESH_FILE_BYTES, MAX_NUMBER_CHARS, MESH_ADVICE, MESH_FORMATS, check_memory, mesh_memory
@@ -95,7 +98,7 @@ def mesh_format(path, fmt: str | None = None) -> str:
     return fmt
 
 
-def read_mesh(path, fmt: str | None = None, *, strict: bool = False) -> PolygonMesh:
+def read_mesh(path, fmt: str | None = None, *, strict: bool = False, progress=None) -> PolygonMesh:
     """Read and check a mesh file (a regular file, or ``-`` for standard input with ``fmt``); errors name the file
     (its name as given) and the element. ``strict=False`` keeps the valid rest (module docstring)."""
     if not isinstance(path, (str, os.PathLike)):
@@ -107,9 +110,9 @@ def read_mesh(path, fmt: str | None = None, *, strict: bool = False) -> PolygonM
         if fmt is None:
             raise InvalidMeshError("-: give the format (obj, off or ply) to read a mesh from standard input")
         data = _capped(sys.stdin.buffer, "-")
-        return decode_mesh(data, mesh_format(name, fmt), name="<stdin>", strict=strict)
+        return decode_mesh(data, mesh_format(name, fmt), name="<stdin>", strict=strict, progress=progress)
     fmt = mesh_format(path, fmt)
-    return decode_mesh(_read_regular(name), fmt, name=Path(name).name, strict=strict)
+    return decode_mesh(_read_regular(name), fmt, name=Path(name).name, strict=strict, progress=progress)
 
 
 def _read_regular(name: str) -> bytes:
@@ -150,8 +153,8 @@ def _capped(handle, name: str) -> bytes:
     return data
 
 
-def decode_mesh(data: bytes, fmt: str, *, name: str = "mesh", strict: bool = False) -> PolygonMesh:
-    """Parse the bytes of a mesh file of format ``fmt`` and check the mesh (``strict``: module docstring)."""
+def decode_mesh(data: bytes, fmt: str, *, name: str = "mesh", strict: bool = False, progress=None) -> PolygonMesh:
+    """Parse the bytes of a mesh file of format ``fmt`` and check the mesh (``strict``, ``progress``: module docstring)."""
     if not isinstance(data, (bytes, bytearray)):
         raise InvalidMeshError(f"{name}: the data must be bytes, got {type(data).__name__}")
     if not isinstance(name, str):
@@ -167,7 +170,8 @@ def decode_mesh(data: bytes, fmt: str, *, name: str = "mesh", strict: bool = Fal
             data.decode("utf-8")
         except UnicodeDecodeError as exc:
             raise InvalidMeshError(f"{name}: not a text file (byte {exc.start} is not UTF-8)") from None
-    parsed = read_ply(data, name) if fmt == "ply" else read_obj(data, name) if fmt == "obj" else _read_off(data, name)
+    wrap = reading_progress(progress)
+    parsed = read_ply(data, name, wrap) if fmt == "ply" else read_obj(data, name, wrap) if fmt == "obj" else _read_off(data, name, wrap)
     return PolygonMesh.from_parsed(parsed.floats, parsed.exact_point, parsed.offsets, parsed.corners, name=name, tags=parsed.tags,
                                    strict=strict)
 
@@ -179,8 +183,9 @@ def _off_lines(lines: list[bytes]):
             yield number_, words
 
 
-def _read_off(data: bytes, name: str) -> ParsedMesh:
-    lines = _off_lines(_lines(data, name))
+def _read_off(data: bytes, name: str, wrap) -> ParsedMesh:
+    raw = _lines(data, name)
+    lines = _off_lines(wrap(raw, len(raw), "lines"))
     number_, words = next(lines, (0, []))
     if not words or words[0] != "OFF":
         raise InvalidMeshError(f"{name}: line {number_ or 1}: the file must start with the keyword OFF")

@@ -73,4 +73,5 @@ def test_hierarchical_edits_are_refused_with_their_line(path, capsys):
     tag = lines[first - 1].split()[1]
     assert main(["inspect", str(path), "--quiet"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f"line {first}: tag '{tag}': hierarchical edits" in err
+    assert err.count("\n") == 1 and f"line {first}: tag '{tag}': hierarchical edits are refused by design: " in err
+    assert f"remove the 't {tag}' lines to analyse the unedited surface" in err

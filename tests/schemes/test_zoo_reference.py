@@ -166,20 +166,38 @@ def test_today_s_schemes_as_stencils_give_today_s_one_ring_matrix(name, n):
     assert np.allclose(ours.sum(axis=1), 1)
 
 
-def test_the_guide_s_sixth_family_loads_and_has_the_eigenvalues_the_guide_derives():
+def _guide_family():
     import re
     from pathlib import Path
 
     from symdecomp.schemes.stencil_files import stencil_scheme_from_text
 
     guide = (Path(__file__).resolve().parents[2] / "docs" / "guide" / "adding-a-scheme.md").read_text(encoding="utf-8")
-    text = "\n".join(re.findall(r"```toml\n(.*?)```", guide, re.S))
-    scheme = stencil_scheme_from_text(text)
-    (term,) = scheme.rules_of("corner").rules[0].terms
-    for n in range(3, 9):
-        weights = [float(term.weight.subs({M: n, J: j})) for j in range(n)]
-        matrix, labels = ref.dual_matrix(n, lambda m, n=n: [float(term.weight.subs({M: m, J: j})) for j in range(m)])
-        ngon = [i for i, (_, a, b) in enumerate(labels) if a == b == 0]
-        values = sorted(np.linalg.eigvals(matrix[np.ix_(ngon, ngon)]).real, reverse=True)
-        assert np.allclose(values, [1, 0.75, 0.75] + [0.5] * (n - 3), atol=1e-12)
-        assert abs(sum(weights) - 1) < 1e-12
+    return stencil_scheme_from_text("\n".join(re.findall(r"```toml\n(.*?)```", guide, re.S)))
+
+
+def test_the_guide_s_sixth_family_walks_to_the_weights_of_its_description():
+    # the file's terms, walked on an m-gon, give the mean of the corner, its two edge midpoints and the centroid
+    (rule,) = _guide_family().rules_of("corner").rules
+    for m in (3, 4, 5, 8):
+        mesh = ref.Mesh([tuple(range(m)), *[(i, (i - 1) % m, m + i) for i in range(m)]])
+        points = ref._unit(mesh.vertices)
+        for corner in range(m):
+            got = _apply(mesh, rule, (corner, (corner + 1) % m), points, 4)
+            expected = sum(w * points[(corner + j) % m] for j, w in enumerate(ref.corner_mean_weights(m)))
+            assert np.allclose(got, expected, atol=1e-12), (m, corner)
+
+
+@pytest.mark.parametrize("n", range(3, 9))
+def test_the_guide_s_ngon_eigenvalues_are_the_fourier_transform_it_derives(n):
+    # the n-gon's block is the circulant of the weights: its eigenvalues are their discrete Fourier transform,
+    # which the guide writes as 1/2 + cos(2 pi k/n)/4 at k = 1..n-1 (1 at k = 0)
+    matrix, labels = ref.dual_matrix(n, ref.corner_mean_weights)
+    ngon = [i for i, (_, a, b) in enumerate(labels) if a == b == 0]
+    block = sorted(np.linalg.eigvals(matrix[np.ix_(ngon, ngon)]).real, reverse=True)
+    transform = sorted(np.fft.fft(ref.corner_mean_weights(n)).real, reverse=True)
+    k = sp.Symbol("k")
+    guide = sp.Piecewise((1, sp.Eq(k, 0)), (sp.Rational(1, 2) + sp.cos(2 * sp.pi * k / n) / 4, True))
+    derived = sorted((float(guide.subs(k, i)) for i in range(n)), reverse=True)
+    assert np.allclose(block, transform, atol=1e-12)
+    assert np.allclose(transform, derived, atol=1e-12)

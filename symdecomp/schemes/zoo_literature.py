@@ -127,11 +127,14 @@ NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
         "of valence n the point missing behind it on the edge towards its neighbour q_i is a virtual point, "
         "(4/n) sum_j q_j - (q_(i-1) + q_i + q_(i+1)) + w/(4 + w) (r_(i-2) + r_(i-1) + r_i + r_(i+1)) "
         "- 4 w/((4 + w) n) sum_j r_j, with q the neighbours and r the faces' opposite corners (at n = 4 it is "
-        "the opposite neighbour)",
+        "the opposite neighbour); a second implementation (a Blender add-on, Interpolating Subdivision for Quads, "
+        "which cites nothing either) has no virtual point, takes any neighbour off the edge's faces at an "
+        "extraordinary end, and averages a face point over its two pairs of opposite edge points",
         "Kobbelt's own statement of the rule at an extraordinary vertex: the paper's text was not at hand, and the "
-        "only text read that gives the virtual point cites nothing; the implementation takes a face point next to "
-        "an extraordinary vertex along the first pair of opposite new edge points in the face's storage order and "
-        "does not say whether the other pair gives the same point, which the paper would settle. Nothing is "
+        "only text read that gives the virtual point cites nothing; it takes a face point next to an extraordinary "
+        "vertex along the first pair of opposite new edge points in the face's storage order and does not say "
+        "whether the other pair gives the same point, and the two implementations disagree on both rules, which "
+        "the paper would settle. Nothing is "
         "shipped under the name: writing the weights from that text would attribute to the paper what was not read "
         "in it"),
 )}

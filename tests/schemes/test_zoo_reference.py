@@ -201,3 +201,14 @@ def test_the_guide_s_ngon_eigenvalues_are_the_fourier_transform_it_derives(n):
     derived = sorted((float(guide.subs(k, i)) for i in range(n)), reverse=True)
     assert np.allclose(block, transform, atol=1e-12)
     assert np.allclose(transform, derived, atol=1e-12)
+
+
+def test_a_family_whose_rules_were_not_read_is_not_shipped():
+    from symdecomp.errors import InvalidSchemeError
+    from symdecomp.schemes.stencil_files import ZOO_FILES
+    from symdecomp.schemes.zoo_literature import NOT_SHIPPED
+
+    assert set(FAMILIES) == set(ZOO_FILES) and not set(NOT_SHIPPED) & set(ZOO_FILES)
+    for name in NOT_SHIPPED:
+        with pytest.raises(InvalidSchemeError, match=f"unknown family of the zoo '{name}'"):
+            load_zoo(name)

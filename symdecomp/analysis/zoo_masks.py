@@ -33,7 +33,7 @@ import sympy as sp
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.ring_masks import _acb_matrix
 from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.analysis.zoo_blocks import zoo_blocks
+from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
 from symdecomp.analysis.zoo_structure import READ_AT
@@ -74,10 +74,19 @@ def _isolated_largest(B1: flint.acb_mat) -> flint.acb | None:
         values = sorted(B1.eig(multiple=True), key=lambda z: -float(z.abs_upper()))
     except ValueError:
         return None
-    top = values[0]
+    top = flint.acb(values[0])
     if all(z.abs_upper() < top.abs_lower() for z in values[1:]):
         return top
     return None
+
+
+def _largest_of_spectrum(blocks: ZooBlocks, digits: int, depth: int, mesh: str) -> flint.acb:
+    """The largest eigenvalue in modulus at frequency 1, read from the whole spectrum (every block factored)."""
+    spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=depth, mesh=mesh)
+    first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
+    value = max(first, key=lambda e: float(e.value.abs_upper())).value  # type: ignore[attr-defined]  # balls are flint.acb
+    assert isinstance(value, flint.acb)
+    return value
 
 
 def zoo_masks(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20) -> dict[str, Any]:
@@ -95,12 +104,8 @@ def zoo_masks(scheme: StencilScheme, n: int, depth: int | None = None, *, digits
     with flint.ctx.workprec(prec):
         w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
         B1 = _acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,))
-        lam1 = _isolated_largest(B1) if n > READ_AT + 3 else None  # where zoo_spectrum leaves the explicit route too
-    if lam1 is None:
-        spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=zm.depth, mesh=scheme.lattice)
-        first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
-        lam1 = max(first, key=lambda e: float(e.value.abs_upper())).value  # type: ignore[attr-defined]  # balls are flint.acb
-    assert isinstance(lam1, flint.acb)
+        found = _isolated_largest(B1) if n > READ_AT + 3 else None  # where zoo_spectrum leaves the explicit route too
+    lam1 = found if found is not None else _largest_of_spectrum(blocks, digits, zm.depth, scheme.lattice)
     with flint.ctx.workprec(prec):
         B0 = sp.Matrix(blocks.frequency_zero_matrix())
         A0 = _acb_matrix(B0, (), ()) - _identity(B0.shape[0])

@@ -212,3 +212,46 @@ def test_a_family_whose_rules_were_not_read_is_not_shipped():
     for name in NOT_SHIPPED:
         with pytest.raises(InvalidSchemeError, match=f"unknown family of the zoo '{name}'"):
             load_zoo(name)
+
+
+def _implementation_face_points(n: int, w: float = 1.0):
+    """The rules ``NOT_SHIPPED["kobbelt-quad"]`` read in an implementation, on a quad disk around a vertex of valence
+    ``n``: each face at the centre's point along its one pair of opposite new edge points, and along the other."""
+    mesh = ref.Mesh(ref.quad_disk(n, 4))
+    points = ref._unit(mesh.vertices)
+    after = {(f[i], f[(i + 1) % 4]): f[(i + 2) % 4] for f in mesh.faces for i in range(4)}  # a halfedge's next tip
+
+    def ring(v):  # the neighbours q_i counter-clockwise and r_i, the corner across the face (v, q_i, r_i, q_(i+1))
+        qs, rs = [next(b for a, b in after if a == v)], []
+        while True:
+            rs.append(after[(v, qs[-1])])
+            if (q := after[(qs[-1], rs[-1])]) == qs[0]:
+                return qs, rs
+            qs.append(q)
+
+    def virtual(p, q):  # the point behind p on the line from q
+        qs, rs = ring(p)
+        k, i = len(qs), qs.index(q)
+        return (4 / k * sum(points[x] for x in qs) - sum(points[qs[(i + d) % k]] for d in (-1, 0, 1))
+                + w / (4 + w) * sum(points[rs[(i + d) % k]] for d in (-2, -1, 0, 1)) - 4 * w / ((4 + w) * k) * sum(points[x] for x in rs))
+
+    def four_point(a, b, c, d):
+        return (8 + w) / 16 * (b + c) - w / 16 * (a + d)
+
+    def edge(a, b):
+        return four_point(virtual(a, b), points[a], points[b], virtual(b, a))
+
+    def along(a, b):  # the face left of (a, b) is (a, b, c, d): its point along the edges (a, b) and (c, d)
+        c = after[(a, b)]
+        d = after[(b, c)]
+        beyond_ab, beyond_cd = (after[(b, a)], after[(a, after[(b, a)])]), (after[(d, c)], after[(c, after[(d, c)])])
+        return four_point(edge(*beyond_ab), edge(a, b), edge(c, d), edge(*beyond_cd))
+
+    return [(along(ref.CENTRE, q), along(q, after[(ref.CENTRE, q)])) for q in ring(ref.CENTRE)[0]]
+
+
+@pytest.mark.parametrize("n", [3, 4, 5, 6, 7])
+def test_the_implementation_read_for_kobbelt_s_quad_scheme_has_a_face_point_per_direction(n):
+    # what NOT_SHIPPED says: the two pairs of opposite edge points give one face point on the regular lattice only
+    gap = max(np.abs(one - other).max() for one, other in _implementation_face_points(n))
+    assert (gap < 1e-12) if n == 4 else (gap > 1e-4), gap

@@ -133,7 +133,7 @@ NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
         "Kobbelt's own statement of the rule at an extraordinary vertex: the paper's text was not at hand, and the "
         "only text read that gives the virtual point cites nothing; it takes a face point next to an extraordinary "
         "vertex along the first pair of opposite new edge points in the face's storage order, and the other pair "
-        "gives another point there (by 1/320 of a weight at valences 3, 5, 6 and 7, none at 4: "
+        "gives another point there (at valences 3, 5, 6 and 7; the same at 4: "
         "tests/schemes/test_zoo_reference.py), so its rules make no matrix that commutes with the rotation; the "
         "two implementations disagree on both rules, which the paper would settle. Nothing is "
         "shipped under the name: writing the weights from that text would attribute to the paper what was not read "

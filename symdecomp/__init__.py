@@ -38,7 +38,8 @@ nothing else.
                    matrix in FLINT rationals and its characteristic polynomial (``full_matrix``),
                    rules as polynomials in the index shift (Eq. 17-23, ``shift_stencil``), a scheme of the zoo as
                    stencils of any support on halfedge walks (``stencils``), the zoo's scheme files and the
-                   families shipped as TOML files in its folder zoo (``stencil_files``), each rule's weights summing to 1
+                   families shipped as TOML files in its folder zoo, a new family one more file there
+                   (``stencil_files``), each rule's weights summing to 1
                    (``stencil_affinity``), today's schemes as stencils (``stencil_convert``), what the
                    literature says of each family, sources, eigenvalues, smoothness (``zoo_literature``), the zoo's
                    engine: halfedge local meshes (``halfedge``), the neighbourhood of an extraordinary vertex or face

@@ -33,9 +33,10 @@ import sympy as sp
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.ring_masks import _acb_matrix
 from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.analysis.zoo_blocks import zoo_blocks
+from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
+from symdecomp.analysis.zoo_structure import READ_AT
 from symdecomp.errors import SymdecompError
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import omega as OMEGA
@@ -57,6 +58,37 @@ def _checked(y: list[flint.acb] | None, A: flint.acb_mat, n: int) -> list[flint.
     return y
 
 
+def _isolated_largest(B1: flint.acb_mat) -> flint.acb | None:
+    """The frequency-1 block's eigenvalue of largest modulus, certified, when it is strictly apart in modulus from the
+    block's other eigenvalues; else ``None``.
+
+    Only this one eigenvalue is needed: the whole spectrum (every frequency's block factored symbolically) is the
+    cost of ``masks`` at large n (most of a minute at n = 64), and the largest at frequency 1 is what it is read for.
+    Arb's enclosures of the K x K block's eigenvalues (multiple ones allowed) decide it; when they cannot (no
+    convergence, or another eigenvalue's modulus as large), the caller takes the whole spectrum, which orders equal
+    moduli as it always has. Up to the valences where the spectrum itself stays explicit (n <= 19), the caller takes
+    the whole spectrum anyway: it is cheap there, and a mask entry whose ball contains 0 prints its midpoint, which
+    depends on the eigenvalue's ball, so the printed masks stay those of ``spectrum`` and ``ring_masks`` digit for digit.
+    """
+    try:
+        values = sorted(B1.eig(multiple=True), key=lambda z: -float(z.abs_upper()))
+    except ValueError:
+        return None
+    top = flint.acb(values[0])
+    if all(z.abs_upper() < top.abs_lower() for z in values[1:]):
+        return top
+    return None
+
+
+def _largest_of_spectrum(blocks: ZooBlocks, digits: int, depth: int, mesh: str) -> flint.acb:
+    """The largest eigenvalue in modulus at frequency 1, read from the whole spectrum (every block factored)."""
+    spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=depth, mesh=mesh)
+    first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
+    value = max(first, key=lambda e: float(e.value.abs_upper())).value  # type: ignore[attr-defined]  # balls are flint.acb
+    assert isinstance(value, flint.acb)
+    return value
+
+
 def zoo_masks(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20) -> dict[str, Any]:
     """The masks as JSON-ready decimal strings: ``{"n", "scheme", "rings", "steps", "subdominant", "position", "tangents"}``.
 
@@ -67,18 +99,18 @@ def zoo_masks(scheme: StencilScheme, n: int, depth: int | None = None, *, digits
     zm = zoo_matrix(scheme, n, depth)
     n = zm.n  # checked: an int
     blocks = zoo_blocks(zm)
-    spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=zm.depth, mesh=scheme.lattice)
-    first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
-    lam1 = max(first, key=lambda e: float(e.value.abs_upper())).value  # type: ignore[attr-defined]  # balls are flint.acb
-    assert isinstance(lam1, flint.acb)
     K, centre = blocks.class_count, int(blocks.has_centre)
     prec = max(128, 4 * digits + 64)
+    with flint.ctx.workprec(prec):
+        w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
+        B1 = _acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,))
+        found = _isolated_largest(B1) if n > READ_AT + 3 else None  # where zoo_spectrum leaves the explicit route too
+    lam1 = found if found is not None else _largest_of_spectrum(blocks, digits, zm.depth, scheme.lattice)
     with flint.ctx.workprec(prec):
         B0 = sp.Matrix(blocks.frequency_zero_matrix())
         A0 = _acb_matrix(B0, (), ()) - _identity(B0.shape[0])
         y0 = _checked(null_vector(A0.transpose(), first=0), A0, n)
-        w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
-        A1 = _acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,)) - lam1 * _identity(K)
+        A1 = B1 - lam1 * _identity(K)
         y1 = _checked(null_vector(A1.transpose(), first=0), A1, n)
         total = sum(y0, flint.acb(0))
         position = [y / total for y in y0]

@@ -3,9 +3,10 @@
 This docstring is the one description of the format of the zoo's scheme files (the documentation's page
 on it is this text; ``tests/schemes/test_stencil_files.py`` reads its example with the parser). A file
 with a ``topology`` key is such a file (:func:`symdecomp.schemes.files.load_scheme` reads it; without the
-key, a file is of today's format, :mod:`symdecomp.schemes.files`). The five families ship as files
-(:data:`ZOO_FILES`: ``doo-sabin``, ``midedge``, ``sqrt3``, ``modified-butterfly``; loaded by name), and a
-sixth family is one more such file (``docs/guide/adding-a-scheme.md``). Doo and Sabin's scheme::
+key, a file is of today's format, :mod:`symdecomp.schemes.files`). The four families ship as files
+(:data:`ZOO_FILES`: ``doo-sabin``, ``midedge``, ``sqrt3``, ``modified-butterfly``; loaded by name), and
+another family is one more such file, its name at the end of :data:`ZOO_FILES` (the guide page
+``docs/guide/adding-a-scheme.md``). Doo and Sabin's scheme::
 
     name = "doo-sabin"
     mesh = "quad"            # the lattice of the regular part

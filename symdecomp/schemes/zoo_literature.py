@@ -9,9 +9,14 @@ the discrete Fourier transform (the rules are circulant around the element), :at
 and the docstring of the field gives the derivation; the tests compare all of them with matrices refined
 independently on explicit meshes (``tests/schemes/zoo_reference.py``).
 
+A family the issue names whose rules could not be read in full is not shipped: :data:`NOT_SHIPPED` says what was
+read, what is missing, and why nothing is written under its name (no weight is written that was not read).
+
 >>> facts = FAMILIES["doo-sabin"]
 >>> facts.subdominant.subs(N, 7), facts.multiplicity
 (1/2, 2)
+>>> sorted(NOT_SHIPPED)
+['kobbelt-quad']
 """
 
 from __future__ import annotations
@@ -22,7 +27,7 @@ import sympy as sp
 
 from symdecomp.schemes.stencils import N
 
-__all__ = ["FamilyFacts", "FAMILIES"]
+__all__ = ["FamilyFacts", "FAMILIES", "NOT_SHIPPED", "UnshippedFamily"]
 
 
 @dataclass(frozen=True)
@@ -93,4 +98,44 @@ FAMILIES: dict[str, FamilyFacts] = {f.name: f for f in (
         "C1 at every valence (the issue cites Zorin 2000's interval-arithmetic proof; not read here)",
         "the Fourier transform of s_j: 1/4 at frequency 0, 1/2 at frequencies 1 and n - 1, 1/4 at 2 and n - 2, 0 at "
         "the others, at n = 3, 4 and 5 and up alike; the 2-ring's outer points add at most 1/4"),
+)}
+
+
+@dataclass(frozen=True)
+class UnshippedFamily:
+    """A family that is not shipped because its rules could not be read in full, and what was read."""
+
+    #: The name it would have (not a key of :data:`~symdecomp.schemes.stencil_files.ZOO_FILES`).
+    name: str
+    #: The publication its rules are in (author, year, title).
+    source: str
+    #: What was read, and what it says.
+    read: str
+    #: What could not be read, so that the family is not shipped.
+    missing: str
+
+
+NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
+    UnshippedFamily(
+        "kobbelt-quad",
+        "L. Kobbelt, 1996, Interpolatory subdivision on open quadrilateral nets with arbitrary topology "
+        "(Computer Graphics Forum 15, Eurographics 96, 409-420)",
+        "the paper's abstract (its publisher's page): an interpolatory scheme for quadrilateral nets of arbitrary "
+        "topology, C1 in the limit, with boundary curves on open nets; and one public implementation (the repository "
+        "Instyx/kobbelt_subdivision, which cites no source): edge points by the four-point rule, (8 + w)/16 on the "
+        "edge's ends and -w/16 on the next points out, face points by the same rule on the new edge points; at an end "
+        "of valence n the point missing behind it on the edge towards its neighbour q_i is a virtual point, "
+        "(4/n) sum_j q_j - (q_(i-1) + q_i + q_(i+1)) + w/(4 + w) (r_(i-2) + r_(i-1) + r_i + r_(i+1)) "
+        "- 4 w/((4 + w) n) sum_j r_j, with q the neighbours and r the faces' opposite corners (at n = 4 it is "
+        "the opposite neighbour); a second implementation (a Blender add-on, Interpolating Subdivision for Quads, "
+        "which cites nothing either) has no virtual point, takes any neighbour off the edge's faces at an "
+        "extraordinary end, and averages a face point over its two pairs of opposite edge points",
+        "Kobbelt's own statement of the rule at an extraordinary vertex: the paper's text was not at hand, and the "
+        "only text read that gives the virtual point cites nothing; it takes a face point next to an extraordinary "
+        "vertex along the first pair of opposite new edge points in the face's storage order, and the other pair "
+        "gives another point there (at valences 3, 5, 6 and 7; the same at 4: "
+        "tests/schemes/test_zoo_reference.py), so its rules make no matrix that commutes with the rotation; the "
+        "two implementations disagree on both rules, which the paper would settle. Nothing is "
+        "shipped under the name: writing the weights from that text would attribute to the paper what was not read "
+        "in it"),
 )}

@@ -166,20 +166,92 @@ def test_today_s_schemes_as_stencils_give_today_s_one_ring_matrix(name, n):
     assert np.allclose(ours.sum(axis=1), 1)
 
 
-def test_the_guide_s_sixth_family_loads_and_has_the_eigenvalues_the_guide_derives():
+def _guide_family():
     import re
     from pathlib import Path
 
     from symdecomp.schemes.stencil_files import stencil_scheme_from_text
 
     guide = (Path(__file__).resolve().parents[2] / "docs" / "guide" / "adding-a-scheme.md").read_text(encoding="utf-8")
-    text = "\n".join(re.findall(r"```toml\n(.*?)```", guide, re.S))
-    scheme = stencil_scheme_from_text(text)
-    (term,) = scheme.rules_of("corner").rules[0].terms
-    for n in range(3, 9):
-        weights = [float(term.weight.subs({M: n, J: j})) for j in range(n)]
-        matrix, labels = ref.dual_matrix(n, lambda m, n=n: [float(term.weight.subs({M: m, J: j})) for j in range(m)])
-        ngon = [i for i, (_, a, b) in enumerate(labels) if a == b == 0]
-        values = sorted(np.linalg.eigvals(matrix[np.ix_(ngon, ngon)]).real, reverse=True)
-        assert np.allclose(values, [1, 0.75, 0.75] + [0.5] * (n - 3), atol=1e-12)
-        assert abs(sum(weights) - 1) < 1e-12
+    return stencil_scheme_from_text("\n".join(re.findall(r"```toml\n(.*?)```", guide, re.S)))
+
+
+def test_the_guide_s_sixth_family_walks_to_the_weights_of_its_description():
+    # the file's terms, walked on an m-gon, give the mean of the corner, its two edge midpoints and the centroid
+    (rule,) = _guide_family().rules_of("corner").rules
+    for m in (3, 4, 5, 8):
+        mesh = ref.Mesh([tuple(range(m)), *[(i, (i - 1) % m, m + i) for i in range(m)]])
+        points = ref._unit(mesh.vertices)
+        for corner in range(m):
+            got = _apply(mesh, rule, (corner, (corner + 1) % m), points, 4)
+            expected = sum(w * points[(corner + j) % m] for j, w in enumerate(ref.corner_mean_weights(m)))
+            assert np.allclose(got, expected, atol=1e-12), (m, corner)
+
+
+@pytest.mark.parametrize("n", range(3, 9))
+def test_the_guide_s_ngon_eigenvalues_are_the_fourier_transform_it_derives(n):
+    # the n-gon's block is the circulant of the weights: its eigenvalues are their discrete Fourier transform,
+    # which the guide writes as 1/2 + cos(2 pi k/n)/4 at k = 1..n-1 (1 at k = 0)
+    matrix, labels = ref.dual_matrix(n, ref.corner_mean_weights)
+    ngon = [i for i, (_, a, b) in enumerate(labels) if a == b == 0]
+    block = sorted(np.linalg.eigvals(matrix[np.ix_(ngon, ngon)]).real, reverse=True)
+    transform = sorted(np.fft.fft(ref.corner_mean_weights(n)).real, reverse=True)
+    k = sp.Symbol("k")
+    guide = sp.Piecewise((1, sp.Eq(k, 0)), (sp.Rational(1, 2) + sp.cos(2 * sp.pi * k / n) / 4, True))
+    derived = sorted((float(guide.subs(k, i)) for i in range(n)), reverse=True)
+    assert np.allclose(block, transform, atol=1e-12)
+    assert np.allclose(transform, derived, atol=1e-12)
+
+
+def test_a_family_whose_rules_were_not_read_is_not_shipped():
+    from symdecomp.errors import InvalidSchemeError
+    from symdecomp.schemes.stencil_files import ZOO_FILES
+    from symdecomp.schemes.zoo_literature import NOT_SHIPPED
+
+    assert set(FAMILIES) == set(ZOO_FILES) and not set(NOT_SHIPPED) & set(ZOO_FILES)
+    for name in NOT_SHIPPED:
+        with pytest.raises(InvalidSchemeError, match=f"unknown family of the zoo '{name}'"):
+            load_zoo(name)
+
+
+def _implementation_face_points(n: int, w: float = 1.0):
+    """The rules ``NOT_SHIPPED["kobbelt-quad"]`` read in an implementation, on a quad disk around a vertex of valence
+    ``n``: each face at the centre's point along its one pair of opposite new edge points, and along the other."""
+    mesh = ref.Mesh(ref.quad_disk(n, 4))
+    points = ref._unit(mesh.vertices)
+    after = {(f[i], f[(i + 1) % 4]): f[(i + 2) % 4] for f in mesh.faces for i in range(4)}  # a halfedge's next tip
+
+    def ring(v):  # the neighbours q_i counter-clockwise and r_i, the corner across the face (v, q_i, r_i, q_(i+1))
+        qs, rs = [next(b for a, b in after if a == v)], []
+        while True:
+            rs.append(after[(v, qs[-1])])
+            if (q := after[(qs[-1], rs[-1])]) == qs[0]:
+                return qs, rs
+            qs.append(q)
+
+    def virtual(p, q):  # the point behind p on the line from q
+        qs, rs = ring(p)
+        k, i = len(qs), qs.index(q)
+        return (4 / k * sum(points[x] for x in qs) - sum(points[qs[(i + d) % k]] for d in (-1, 0, 1))
+                + w / (4 + w) * sum(points[rs[(i + d) % k]] for d in (-2, -1, 0, 1)) - 4 * w / ((4 + w) * k) * sum(points[x] for x in rs))
+
+    def four_point(a, b, c, d):
+        return (8 + w) / 16 * (b + c) - w / 16 * (a + d)
+
+    def edge(a, b):
+        return four_point(virtual(a, b), points[a], points[b], virtual(b, a))
+
+    def along(a, b):  # the face left of (a, b) is (a, b, c, d): its point along the edges (a, b) and (c, d)
+        c = after[(a, b)]
+        d = after[(b, c)]
+        beyond_ab, beyond_cd = (after[(b, a)], after[(a, after[(b, a)])]), (after[(d, c)], after[(c, after[(d, c)])])
+        return four_point(edge(*beyond_ab), edge(a, b), edge(c, d), edge(*beyond_cd))
+
+    return [(along(ref.CENTRE, q), along(q, after[(ref.CENTRE, q)])) for q in ring(ref.CENTRE)[0]]
+
+
+@pytest.mark.parametrize("n", [3, 4, 5, 6, 7])
+def test_the_implementation_read_for_kobbelt_s_quad_scheme_has_a_face_point_per_direction(n):
+    # what NOT_SHIPPED says: the two pairs of opposite edge points give one face point on the regular lattice only
+    gap = max(np.abs(one - other).max() for one, other in _implementation_face_points(n))
+    assert (gap < 1e-12) if n == 4 else (gap > 1e-4), gap

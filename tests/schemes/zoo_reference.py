@@ -109,6 +109,15 @@ def midedge_weights(m: int) -> list[float]:
     return [0.5 if j == 0 else 0.25 if j in (1, m - 1) else 0.0 for j in range(m)]
 
 
+def corner_mean_weights(m: int) -> list[float]:
+    """The guide's sixth family (``docs/guide/adding-a-scheme.md``): the new point at corner 0 is the mean of four
+    points, the corner, the midpoints of its two edges and the face's centroid."""
+    centroid = [1 / m] * m
+    corner = [1.0 if j == 0 else 0.0 for j in range(m)]
+    midpoints = [(j == 0) + 0.5 * (j in (1, m - 1)) for j in range(m)]  # (p_0 + p_1)/2 + (p_0 + p_(m-1))/2
+    return [(corner[j] + midpoints[j] + centroid[j]) / 4 for j in range(m)]
+
+
 def dual_matrix(n: int, weights) -> tuple[np.ndarray, list]:
     """The subdivision matrix of a dual scheme at an n-gon: old and new points are the cells ``(s, a, b)``,
     ``a, b`` in 0..1 (4n points), of the quad disk whose dual mesh the scheme refines.

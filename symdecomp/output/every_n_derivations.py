@@ -145,11 +145,17 @@ def _step_latex(step: EveryNStep, scheme: Scheme) -> str:
 
 def _root_form(p, nets, low) -> tuple[sp.Expr, int, int]:
     """A reduced element as ``U + V Delta(t)^(1/2)`` factored, with the Sturm counts of ``U`` and ``V`` on ``[low, 1]``."""
-    from symdecomp.verify.c1_uniform import _split
+    from symdecomp.algebra.interval_signs import count_roots
+    from symdecomp.verify.c1_uniform import root_parts
 
-    U, V = _split(p, nets)
-    count = lambda q: 0 if q.is_zero else sp.Poly(q.as_expr(), _T).count_roots(low, 1)  # noqa: E731
-    return sp.factor(U.as_expr()) + sp.factor(V.as_expr()) * sp.sqrt(_DELTA), count(U), count(V)
+    U, V = root_parts(p, nets)
+    count = lambda q: 0 if q.is_zero() else count_roots(q, low, 1)  # noqa: E731
+    return sp.factor(_expr(U)) + sp.factor(_expr(V)) * sp.sqrt(_DELTA), count(U), count(V)
+
+
+def _expr(q) -> sp.Expr:
+    """A FLINT polynomial in ``t`` as a sympy expression (exact rational coefficients)."""
+    return sp.Add(*(sp.Rational(int(c.p), int(c.q)) * _T**k for k, c in enumerate(q.coeffs())))
 
 
 def _scale_details(scheme: Scheme) -> str:
@@ -169,10 +175,10 @@ def _interval(scheme: Scheme):
 
 def _regular_details(scheme: Scheme) -> str:
     from symdecomp.analysis.characteristic_uniform import uniform_nets
-    from symdecomp.verify.c1_uniform import _jacobian_coefficients
+    from symdecomp.verify.c1_uniform import jacobian_coefficients
 
     nets, low = uniform_nets(scheme), _interval(scheme)
-    forms = [_root_form(c, nets, low) for c in _jacobian_coefficients(nets, scheme.lattice)]
+    forms = [_root_form(c, nets, low) for c in jacobian_coefficients(nets, scheme.lattice)]
     counts = Counter((u, v) for _, u, v in forms)
     tally = "; ".join(f"{k} with {u} and {v} real roots" for (u, v), k in sorted(counts.items()))
     shown = {f"J_{{{k}}}": form for k, (form, _, _) in enumerate(forms[:EXAMPLES])}
@@ -183,12 +189,12 @@ def _regular_details(scheme: Scheme) -> str:
 def _wedge_details(scheme: Scheme) -> str:
     """How many boundary control points the wedge argument decided (the map's decided signs less the Jacobian's)."""
     from symdecomp.analysis.characteristic_uniform import uniform_nets
-    from symdecomp.verify.c1_uniform import _jacobian_coefficients
+    from symdecomp.verify.c1_uniform import jacobian_coefficients
 
     result, _ = every_n_proofs(scheme)
     if result.uniform is None:
         return ""
-    points = result.uniform.coefficients - len(_jacobian_coefficients(uniform_nets(scheme), scheme.lattice))
+    points = result.uniform.coefficients - len(jacobian_coefficients(uniform_nets(scheme), scheme.lattice))
     return text_latex(f"The boundary has {points} control points, each with the three signs decided on "
                       f"$[{sp.latex(result.uniform.t_low)}, 1]$.") + "\n"
 

@@ -42,7 +42,7 @@ from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.verify.bezier import bspline_to_bezier, jacobian_net, triangle_jacobian_net
 
-__all__ = ["UniformMapResult", "t_lower_bound", "sign_with_root", "uniform_map"]
+__all__ = ["UniformMapResult", "t_lower_bound", "sign_with_root", "uniform_map", "root_parts", "jacobian_coefficients"]
 
 T = sp.Symbol("t", real=True)
 _PI_ABOVE = sp.Rational(22, 7)
@@ -115,7 +115,7 @@ class _Field:
         return cls(_powers_of_L(nets.quadratic), _t_poly(nets.trace), _t_poly(nets.discriminant))
 
 
-def _split(p, nets: UniformNets, field: _Field | None = None) -> tuple[flint.fmpq_poly, flint.fmpq_poly]:
+def root_parts(p, nets: UniformNets, field: _Field | None = None) -> tuple[flint.fmpq_poly, flint.fmpq_poly]:
     """``p = F0 + F1 L`` (reduced) as ``(U, V)`` with ``p = U + V sqrt(disc)``.
 
     Free of ``s``, ``p`` is reduced by the monic relation of ``L`` alone (``L^d = -sum q_k L^k``, highest powers
@@ -161,7 +161,8 @@ def sign_with_root(U, V, disc, low, high, *, strict: bool = True) -> bool:
     return False
 
 
-def _jacobian_coefficients(nets: UniformNets, lat) -> list:
+def jacobian_coefficients(nets: UniformNets, lat) -> list:
+    """The Bezier coefficients of the Jacobian of sector 0's sub-patches (stretched by ``1/s``), exact in ``L`` and ``t``."""
     return lat.select(_JACOBIANS, "the characteristic ring's Jacobian nets")(nets.nets)
 
 
@@ -217,11 +218,11 @@ def uniform_map(scheme: Scheme, first: int) -> UniformMapResult:
     except NotApplicableError as exc:
         return UniformMapResult("open", first, low, (str(exc),), 0)
     field = _Field.of(nets)
-    check = lambda p, strict=True: sign_with_root(*_split(p, nets, field), field.discriminant, low, 1, strict=strict)  # noqa: E731
+    check = lambda p, strict=True: sign_with_root(*root_parts(p, nets, field), field.discriminant, low, 1, strict=strict)  # noqa: E731
     interval = f"t = cos(2 pi/n) in [{low}, 1] (every n >= {first}, and the limit n -> oo at t = 1)"
     if not check(nets.scale):
         return UniformMapResult("open", first, low, (f"det(L I - S) is not shown positive for {interval}",), 0)
-    coeffs = _jacobian_coefficients(nets, scheme.lattice)
+    coeffs = jacobian_coefficients(nets, scheme.lattice)
     bad = next((k for k, c in enumerate(coeffs) if not check(c)), None)
     if bad is not None:
         return UniformMapResult("open", first, low, (f"Bezier coefficient {bad} of the Jacobian is not shown positive for "

@@ -2,7 +2,7 @@
 
 The route is decided by the scheme's model (:class:`~symdecomp.schemes.stencils.StencilScheme`), never by its name:
 
-* an interpolatory scheme (``interpolatory = true``: the modified butterfly, Kobbelt's quad scheme) has no spline
+* an interpolatory scheme (``interpolatory = true``: the modified butterfly) has no spline
   regular part, so Reif's test has no patch to evaluate; a test that needs none (Zorin 2000, *A method for analysis
   of C1-continuity of subdivision surfaces*, SIAM J. Numer. Anal. 37(5): bounds on the characteristic map's control
   net and its differences under refinement) is not implemented: ``undecided``, saying so;

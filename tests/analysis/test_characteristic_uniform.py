@@ -13,12 +13,12 @@ from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.verify.bezier import bspline_to_bezier
 from symdecomp.verify.c1 import box_nets, characteristic_nets
-from symdecomp.verify.c1_uniform import _jacobian_coefficients
+from symdecomp.verify.c1_uniform import jacobian_coefficients
 
 
 def _jacobians(scheme):
     nets = uniform_nets(scheme)
-    return nets, [reduce_element(c, nets.quadratic) for c in _jacobian_coefficients(nets, scheme.lattice)]
+    return nets, [reduce_element(c, nets.quadratic) for c in jacobian_coefficients(nets, scheme.lattice)]
 
 
 @pytest.mark.parametrize(("scheme", "n", "t"), [(catmull_clark(), 4, sp.Integer(0)), (loop(), 6, sp.Rational(1, 2))], ids=["cc", "loop"])

@@ -28,7 +28,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.verify.c1_every_n import _in_t
-from symdecomp.verify.c1_uniform import _jacobian_coefficients
+from symdecomp.verify.c1_uniform import jacobian_coefficients
 
 ROOT = Path(__file__).resolve().parents[2]
 CORPUS = ROOT / "tests" / "corpus"
@@ -82,7 +82,7 @@ def test_the_formulas_are_sympys_printing_of_the_computed_objects(document, name
     else:
         assert _flat("\\lambda(t) = " + latex(_in_t(M[0, 0]))) in section
     nets = uniform_nets(scheme)
-    count = len(_jacobian_coefficients(nets, scheme.lattice))
+    count = len(jacobian_coefficients(nets, scheme.lattice))
     assert f"There are {count} coefficients; the Sturm counts of $(U, V)$" in section
     assert f"{count} with 0 and 0 real roots" in section  # no sign change: each coefficient keeps its sign
     uniform = every_n_proofs(scheme)[0].uniform

@@ -24,13 +24,13 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterable, Mapping
-from functools import lru_cache
 
 import sympy as sp
 
 from symdecomp.claims import Verbatim
 from symdecomp.output.latex import display_math, text_latex, wrap_source
-from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.validate import cached, check_valence
 from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, c1_every_n
 from symdecomp.verify.regime_every_n import RegimeEveryN, regime_every_n
 
@@ -52,10 +52,14 @@ _T = sp.Symbol("t", real=True)
 _DELTA = sp.Function("Delta")(_T)
 
 
-@lru_cache(maxsize=8)
 def every_n_proofs(scheme: Scheme, certified: int = CERTIFIED) -> tuple[EveryNResult, RegimeEveryN | str]:
     """C1 for every valence (Reif's test at ``3..certified``) and the regime for every valence, or why the regime does not
     apply (the text of its :class:`~symdecomp.errors.NotApplicableError`)."""
+    return _every_n_proofs(scheme, certified)
+
+
+@cached(8, scheme=check_scheme, certified=lambda value: check_valence(value, argument="certified"))
+def _every_n_proofs(scheme: Scheme, certified: int) -> tuple[EveryNResult, RegimeEveryN | str]:
     from symdecomp.errors import NotApplicableError
 
     try:

@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 import symdecomp.cli.derive_cmd as derive_cmd
+import symdecomp.output.every_n_derivations as every_n_derivations
 from symdecomp.cli import main
 from symdecomp.cli.files import check_output_file, output_stream, write_output_file
 from symdecomp.errors import InvalidInputError, OutputWriteError
@@ -32,9 +33,10 @@ def umask_022():
 
 @pytest.fixture
 def no_claims(monkeypatch):
-    """derive without computing: the document of no claims and no zoo (the writing is what these tests are about)."""
+    """derive without computing: the document of no claims, no zoo and no proofs for every valence (the writing is what these tests are about)."""
     monkeypatch.setattr(derive_cmd, "all_claims", lambda: [])
     monkeypatch.setattr(derive_cmd, "zoo_files", lambda show_progress=False: {})
+    monkeypatch.setattr(every_n_derivations, "every_n_files", lambda: {})
 
 
 def _device_copy(path: Path, device: str) -> None:

@@ -4,7 +4,7 @@ A dart is an interior vertex ``O`` of valence ``n`` where one infinitely sharp e
 vertex rule at ``O`` and applies the crease rules on the sharp edge. The test works on the dart's 2-ring subdivision
 matrix (the one sector of :func:`~symdecomp.verify.c1_sharp_spectrum.sector_matrices` for
 ``SharpVertex.dart(n, lattice)``, the matrix ``check --dart`` certifies), in which the points of ray ``0`` are copies of
-those of ray ``n`` (checked exactly: their columns are zero and their rows are ray ``n``'s rows). Reif's conditions
+those of ray ``n`` (checked exactly: their columns are zero, their rows and their refinement rows are ray ``n``'s). Reif's conditions
 (U. Reif, *A unified approach to subdivision algorithms near extraordinary vertices*, CAGD 12, 1995):
 
 1. *spectral*: 1 is a simple eigenvalue, the next two ``lambda_1 >= lambda_2`` are real, positive, with two
@@ -220,6 +220,10 @@ def _check_aliases(sm) -> None:
             j = index[(sm.k, u, 0)]
             if any(S[r, i] != 0 for r in range(S.rows)) or S.row(i) != S.row(j):
                 raise NotApplicableError(f"the dart's matrix does not identify ray 0 with ray {sm.k} at distance {u}")
+    fine = {lab: i for i, lab in enumerate(sm.fine_labels)}
+    for (s, u, v), i in fine.items():
+        if s == 0 and v == 0 and u > 0 and sm.refine.row(i) != sm.refine.row(fine[(sm.k, u, 0)]):
+            raise NotApplicableError(f"the dart's refinement does not identify ray 0 with ray {sm.k} at distance {u}")
 
 
 def _result(scheme, n: int, spectrum: DartSpectrum, found: DartMap | None, max_depth: int, prec: int) -> SharpC1Result:

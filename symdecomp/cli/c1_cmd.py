@@ -83,6 +83,8 @@ def register(sub) -> None:
          "[sharp] rules (default: the cubic B-spline's 3/4, 1/8 and 1/2; a file may give Biermann-Levin-Zorin's near-edge "
          "rule in theta_k = pi/k)")
     flag(p, "--corner", help="test corner vertices (interpolated) with K faces (--k); --angle gives the corner's angle")
+    flag(p, "--dart", help="test infinitely sharp darts of valence K (--k, K >= 3; one sharp edge ends at a smooth vertex): "
+         "Reif's test on the closed fan, the faces next to the sharp edge with phantom points")
     p.add_argument("--k", dest="faces", type=_faces, action=Once, metavar="A:B",
                    help=f"faces of the boundary or corner sector: a range A:B or a single K (1 to {LIMITS['c1 --k'][0]})")
     p.add_argument("--crease", type=_crease, action=Once, metavar="K1,K2",
@@ -229,19 +231,25 @@ def _vertex(item: tuple, scheme: Scheme):
         return SharpVertex.crease(faces[0], faces[1], lat, sharpness)
     if kind == "corner":
         return SharpVertex.corner(faces, lat, angle)
+    if kind == "dart":
+        return SharpVertex.dart(faces, lat)
     return SharpVertex.boundary(faces, lat)
 
 
 def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
+    from symdecomp.verify.c1_dart import c1_dart_test
     from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
 
-    r = c1_sharp_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
+    if item[0] == "dart":
+        r = c1_dart_test(scheme, item[1], max_depth=max_depth)
+    else:
+        r = c1_sharp_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
     return _Row(r.n, r.verdict, r.reason, r.as_json(), r.vertex)
 
 
 def _sharp_items(args) -> list[tuple] | None:
     """What to test at sharp vertices (``None``: the interior test of --n), or a one-line error."""
-    kinds = [name for name in ("boundary", "corner", "crease") if given(args, name)]
+    kinds = [name for name in ("boundary", "corner", "crease", "dart") if given(args, name)]
     if given(args, "every_n") and (kinds or given(args, "valences")):
         other = "--n" if given(args, "valences") else f"--{kinds[0]}"
         raise InvalidInputError(f"--every-n and {other} cannot be used together: --every-n tests every interior valence")
@@ -269,7 +277,19 @@ def _sharp_items(args) -> list[tuple] | None:
     if not given(args, "faces"):
         raise InvalidInputError(f"--{kind} needs --k A:B, the faces of the sector")
     _refuse_dense_past_map_faces(args, max(args.faces))
+    if kind == "dart":
+        _check_dart_faces(args)
     return [(kind, k, args.angle, None) for k in args.faces]
+
+
+def _check_dart_faces(args) -> None:
+    """A dart's matrix is dense (no mirror blocks): valences 3 to :data:`MAP_FACES`; its map is not drawn."""
+    from symdecomp.verify.c1_sharp_blocks import MAP_FACES
+
+    if min(args.faces) < 3 or max(args.faces) > MAP_FACES:
+        raise InvalidInputError(f"--k: a dart's valence is 3 to {MAP_FACES}, got {args.faces[0]}:{args.faces[-1]}")
+    if given(args, "plot"):
+        raise InvalidInputError("--plot: a dart's characteristic map is not drawn")
 
 
 def _refuse_dense_past_map_faces(args, faces: int) -> None:
@@ -320,7 +340,8 @@ def _run_sharp(args, items: list[tuple], plot) -> int:
     if args.json:
         print_json(args, [r.json for r in results])
     else:
-        print(f"{args.scheme.name}: Zorin's conditions at {items[0][0]} vertices")
+        test = "Reif's test" if items[0][0] == "dart" else "Zorin's conditions"
+        print(f"{args.scheme.name}: {test} at {items[0][0]} vertices")
         for method in dict.fromkeys(r.json["method"] for r in results):
             print(f"method: {method}")
         width = max(len(r.vertex) for r in results)

@@ -10,12 +10,9 @@ Where a test does not apply (a scheme with free parameters) the verdict is ``n/a
 **Darts** (one sharp edge ends at an interior vertex; OpenSubdiv keeps the smooth vertex rule there) get a verdict of
 their own (:func:`dart_verdict`). A semi-sharp dart is smooth from level ``ceil(s)`` on, so Reif's test at its valence
 decides, as for a semi-sharp crease (and so does the curvature regime at that valence). An infinitely sharp dart is
-judged by the exact spectrum of its 1-ring matrix (:func:`~symdecomp.analysis.sharp_field.sharp_values`; ``check --k N
---dart --certify`` proves that spectrum): ``not-c1`` when the eigenvalue 1 is not simple and strictly dominant (the
-rings do not shrink to one point); otherwise ``undecided`` with the spectral facts (the subdominant pair and the next
-eigenvalue, certified smaller in modulus), because the sector test (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`)
-needs sharp rays on both sides of a sector and no test of a dart's characteristic map (a closed fan cut by one sharp
-ray) exists here yet.
+judged by Reif's test on its closed fan cut by one sharp ray (:func:`~symdecomp.verify.c1_dart.c1_dart_test`): the
+exact spectrum of its 1-ring matrix (``check --k N --dart --certify`` proves that spectrum; ``not-c1`` when the
+eigenvalue 1 is not simple and strictly dominant), then the characteristic map's regularity and winding number.
 
 >>> from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
 >>> from symdecomp.schemes.scheme import catmull_clark
@@ -84,34 +81,14 @@ def dart_verdict(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
 
 
 def _dart_spectral(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
-    """An infinitely sharp dart: its exact 1-ring spectrum, ordered by certified modulus."""
-    from symdecomp.analysis.ring_spectrum import acb_text
-    from symdecomp.analysis.sharp_eigen import by_modulus, merge, separated
-    from symdecomp.analysis.sharp_field import sharp_values
+    """An infinitely sharp dart: Reif's test on its closed fan (:func:`~symdecomp.verify.c1_dart.c1_dart_test`)."""
+    from symdecomp.verify.c1_dart import c1_dart_test
 
     try:
-        _, _, found = sharp_values(scheme, kind.sharp_vertex(scheme.lattice))
+        r = c1_dart_test(scheme, kind.faces)
     except NotApplicableError as exc:
-        return "undecided", f"the dart's exact spectrum is out of reach: {exc}"
-    values = by_modulus(merge(found))
-    text = {v.key: acb_text(v.ball, 20) for v in values}
-    top = values[0]
-    if not (top.exact == 1 and top.multiplicity == 1 and separated(top, values[1])):
-        return "not-c1", (f"the eigenvalue 1 is not simple and strictly dominant (largest modulus: {text[top.key]} of "
-                          f"multiplicity {top.multiplicity}, next {text[values[1].key]}): the rings do not shrink to a point")
-    first = values[1]
-    pair = [first, first] if first.multiplicity >= 2 else values[1:3]
-    rest = [v for v in values[1:] if v.key not in {p.key for p in pair}]
-    if first.multiplicity > 2 or len(pair) < 2 or not all(p.is_real and p.exact > 0 for p in pair):
-        return "undecided", (f"the subdominant eigenvalues are not a real positive pair ({text[first.key]} of multiplicity "
-                             f"{first.multiplicity}{'' if first.multiplicity > 1 else ', then ' + text[pair[-1].key]})")
-    if rest and not separated(pair[1], rest[0]):
-        return "undecided", (f"the second eigenvalue {text[pair[1].key]} is not certified larger in modulus than the next, "
-                             f"{text[rest[0].key]}")
-    following = f" (the next eigenvalue: {text[rest[0].key]})" if rest else ""
-    return "undecided", (f"spectral conditions of the 1-ring matrix hold: 1 simple, lambda_1 = {text[pair[0].key]}, "
-                         f"lambda_2 = {text[pair[1].key]} real, positive, strictly dominant{following}; the characteristic "
-                         f"map of a dart (a closed fan cut by one sharp ray) is not certified here, so C1 is not decided")
+        return "undecided", f"Reif's test at a dart does not apply: {exc}"
+    return r.verdict.value, r.reason
 
 
 def _regime(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:

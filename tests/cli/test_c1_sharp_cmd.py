@@ -75,3 +75,26 @@ def test_bad_sharp_invocations_are_one_line_and_exit_2(argv, words, capsys):
     assert code == 2
     err = capsys.readouterr().err
     assert words in err and err.count("\n") == 1
+
+
+def test_darts(capsys):
+    """``c1 --dart --k A:B``: Reif's test on the dart's closed fan, the verdict of :func:`c1_dart_test`; bad valences and
+    --plot are one-line errors (exit 2)."""
+    from symdecomp.schemes.scheme import catmull_clark
+    from symdecomp.verify.c1_dart import c1_dart_test
+
+    assert main(["c1", "--dart", "--k", "3:4", "--json", "--quiet"]) == 0
+    rows = json.loads(capsys.readouterr().out)["rows"]
+    assert [(r["n"], r["verdict"], r["reason"]) for r in rows] == [
+        (n, "c1", c1_dart_test(catmull_clark(), n).reason) for n in (3, 4)]
+    assert main(["c1", "--dart", "--k", "5"]) == 0
+    assert "dart n = 5: C1 certified" in capsys.readouterr().out
+    for argv, line in ((["c1", "--dart", "--k", "2:4"], "--k: a dart's valence is 3 to 32, got 2:4"),
+                       (["c1", "--dart", "--k", "3", "--plot", "x.png"], "--plot: a dart's characteristic map is not drawn"),
+                       (["c1", "--dart", "--boundary", "--k", "3"], "--boundary and --dart cannot be used together: give one kind of vertex")):
+        try:
+            code = main(argv)
+        except SystemExit as exc:  # argparse's own errors
+            code = exc.code
+        err = capsys.readouterr().err.strip()
+        assert code == 2 and err.count("\n") == 0 and err.endswith(line)

@@ -1,8 +1,8 @@
 """verify/mesh_verdicts.py at darts: a tagged mesh's dart vertices get a computed C1 verdict (``inspect --json``).
 
 A semi-sharp dart is smooth once its sharpness has decayed, so its verdict is Reif's test at its valence; an infinitely
-sharp dart's verdict comes from the exact spectrum of its 1-ring matrix, checked here against sympy's own eigenvectors
-of the matrix built by exact refinement."""
+sharp dart's verdict comes from Reif's test on its closed fan (``verify/c1_dart.py``): the exact spectrum of its 1-ring
+matrix, checked here against sympy's own eigenvectors of the matrix built by exact refinement, then the map."""
 
 import json
 from fractions import Fraction
@@ -16,6 +16,7 @@ from symdecomp.schemes.meshformats import encode_mesh
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex, exact_sharp_matrix
 from symdecomp.verify.c1 import c1_test
+from symdecomp.verify.c1_dart import c1_dart_test
 from symdecomp.verify.mesh_verdicts import kind_verdict
 from tests.analysis.test_mesh_limits import grid, idx
 
@@ -46,12 +47,14 @@ def test_a_semi_sharp_dart_gets_reif_s_verdict_at_its_valence(tmp_path, capsys):
 
 def test_an_infinitely_sharp_dart_s_spectral_facts_are_the_matrix_s(tmp_path, capsys):
     """Catmull-Clark's dart of valence 4: 1 simple, then 1/2 twice with two eigenvectors (non-defective), every other
-    eigenvalue of modulus below 1/2 (sympy on the exact matrix); the characteristic map is not certified: undecided."""
+    eigenvalue of modulus below 1/2 (sympy on the exact matrix); the characteristic map is regular and winds once: c1."""
     data = inspect_json(tagged_obj(tmp_path, "10"), capsys)
     (dart,) = [k for k in data["kinds"] if k["kind"].startswith("dart")]
-    assert (dart["count"], dart["c1"]) == (2, "undecided")
+    direct = c1_dart_test(catmull_clark(), 4)
+    assert (dart["count"], dart["c1"]) == (2, direct.verdict.value) and direct.verdict.value == "c1"
     reason = kind_verdict(catmull_clark(), NeighbourhoodKind("dart", 4, (4,), True)).c1_reason
-    assert "lambda_1 = 0.5, lambda_2 = 0.5 real, positive, strictly dominant" in reason
+    assert "lambda_1 = 0.5, lambda_2 = 0.5 real, positive, strictly dominant" in reason and reason == direct.reason
+    assert reason.endswith("its ring winds once around O: injective")
     S = sp.Matrix(exact_sharp_matrix(catmull_clark(), SharpVertex.dart(4, QUAD)).tolist())
     half = sp.Rational(1, 2)
     assert len((S - half * sp.eye(S.rows)).nullspace()) == 2 and len((S - sp.eye(S.rows)).nullspace()) == 1

@@ -28,7 +28,9 @@ nothing else.
                    interval by Sturm sequences in FLINT (``interval_signs``), exact signs of real
                    algebraic numbers (``algebraic_sign``),
                    exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``),
-                   exact linear algebra over one real field Q(cos(pi/k)) (``cos_field``)
+                   exact linear algebra over one real field Q(cos(pi/k)) (``cos_field``), the
+                   eigen-decomposition of a rational matrix by the irreducible factors of its
+                   characteristic polynomial (``primary_decomposition``)
 ``schemes/``       the lattice a scheme lives on, one object per kind of mesh (``lattice``: quad,
                    triangle; regular valence, rings and labels, refinement, regular patch: every
                    fact that depends on the kind of mesh, asked of the lattice, never compared), a
@@ -101,7 +103,8 @@ nothing else.
                    by the mirror symmetry of their sectors: crease block and sine blocks (``mirror``), the
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    evaluation data at crease, boundary and corner vertices, standard and BLZ rules: the eigen-decomposition over Q and
-                   the picking matrices of the spline cells past the modified points (``sector_evaldata``);
+                   the picking matrices of the spline cells past the modified points (``sector_evaldata``),
+                   the patches evaluated from them (``sector_evaluation``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
                    (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent

@@ -27,19 +27,14 @@ Arb balls that contain the exact values (BLZ's ``cos(pi/k)`` weights, ``k >= 4``
   block is a Jordan block or a real block of conjugate roots when ``A`` is not diagonalizable over ``Q``). With
   balls there is no decomposition (``None``): the powers of ``A`` are taken.
 
-Evaluation at ``(u, v) != (0, 0)`` (:func:`evaluate`): the level ``n >= 2`` with ``2 < 2^n max(u, v) <= 4``,
-``(x, y) = 2^n (u, v)``, the cell ``(a, b) = (min(floor x, 3), min(floor y, 3))`` and local ``(x - a, y - b)``,
-then ``point = b(x - a, y - b) . cells[s][c] . A^(n-2) C`` with the bicubic B-spline basis ``b``. At ``(0, 0)``:
-``limit . C``. Triangles (Loop's box spline) are not handled here (the lattice's fact is missing).
+Evaluation from the data: :mod:`symdecomp.analysis.sector_evaluation`; the eigen-decomposition over ``Q``:
+:mod:`symdecomp.algebra.primary_decomposition`.
 
->>> from fractions import Fraction
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> from symdecomp.schemes.sector import SharpVertex
 >>> d = sector_evaldata(catmull_clark(), SharpVertex.crease(2, 3, "quad"))
 >>> d.size, d.exact, d.modified, len(d.cells), len(d.cells[0])
 (31, True, (), 5, 12)
->>> evaluate(d, 4, Fraction(1, 3), Fraction(1, 5), [[Fraction(1)]] * d.size)["point"]
-[1]
 """
 
 from __future__ import annotations
@@ -54,39 +49,20 @@ import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.errors import EvaluationError, InternalError, InvalidInputError, NotApplicableError
+from symdecomp.algebra.primary_decomposition import PrimaryBlock, decomposition
+from symdecomp.errors import InternalError, InvalidInputError, NotApplicableError
 from symdecomp.schemes.lattice import BICUBIC
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, sector_point
 from symdecomp.validate import cached, check_type
 
-__all__ = ["CELLS", "PREC", "SectorEvalData", "PrimaryBlock", "sector_evaldata", "evaluate", "global_point", "regular_row", "real_ball"]
+__all__ = ["CELLS", "PREC", "SectorEvalData", "sector_evaldata", "global_point", "regular_row", "real_ball"]
 
 #: The cells ``(a, b)`` (lower-left corners, level-``n`` lattice) of a face's wide ring: ``2 <= max(a, b) <= 3``.
 CELLS = tuple((a, b) for b in range(4) for a in range(4) if max(a, b) >= 2)
 #: Bits of the Arb balls when the rules' weights are irrational.
 PREC = 256
-
-
-@dataclass(frozen=True)
-class PrimaryBlock:
-    """One block of the eigen-decomposition over ``Q``: the generalized eigenspace of a factor ``q^e``."""
-
-    #: ``q``: integer coefficients, constant term first (irreducible over ``Q``).
-    factor: tuple[int, ...]
-    #: ``e``: its multiplicity in the characteristic polynomial.
-    multiplicity: int
-    #: Independent eigenvectors per root (``e`` when the block is diagonalizable).
-    eigenvectors: int
-    #: ``W_i``: ``K x (deg q * e)``, a basis of ``ker q(A)^e`` (columns).
-    basis: flint.fmpq_mat
-    #: ``B_i``: ``A`` on that basis, ``A W_i = W_i B_i``.
-    block: flint.fmpq_mat
-    #: The rows of ``W^-1`` that give this block's coordinates of ``C``.
-    left: flint.fmpq_mat
-    #: The roots of ``q`` as complex Arb balls (sorted by modulus, largest first).
-    values: tuple
 
 
 @dataclass(frozen=True)
@@ -275,75 +251,6 @@ def _limit(matrix, exact: bool) -> tuple:
     return tuple(solution[i, 0] for i in range(size))
 
 
-def _nullspace(m: flint.fmpq_mat) -> flint.fmpq_mat:
-    """A basis of ``ker m`` (columns), from the reduced row echelon form."""
-    r, rank = m.rref()
-    cols = m.ncols()
-    pivots = [next(j for j in range(cols) if r[i, j] != 0) for i in range(rank)]
-    free = [j for j in range(cols) if j not in pivots]
-    out = flint.fmpq_mat(cols, len(free))
-    for c, j in enumerate(free):
-        out[j, c] = 1
-        for i, p in enumerate(pivots):
-            out[p, c] = -r[i, j]
-    return out
-
-
-def _poly_at(q, a: flint.fmpq_mat) -> flint.fmpq_mat:
-    size = a.nrows()
-    value = flint.fmpq_mat(size, size)
-    for c in reversed(q.coeffs()):  # Horner
-        value = value * a
-        for i in range(size):
-            value[i, i] += c
-    return value
-
-
-def _roots(q) -> tuple:
-    roots = q.numer().complex_roots()
-    return tuple(sorted((z for z, _ in roots), key=lambda z: -abs(z).mid()))
-
-
-def decomposition(a: flint.fmpq_mat) -> tuple[PrimaryBlock, ...]:
-    """The eigen-decomposition of ``A`` over ``Q`` (module docstring), blocks sorted by factor; exact."""
-    size = a.nrows()
-    _, factors = a.charpoly().factor()
-    parts = []
-    for q, e in sorted(factors, key=lambda f: (f[0].degree(), [int(c) for c in f[0].numer().coeffs()])):
-        qa = _poly_at(q, a)
-        power = qa
-        for _ in range(e - 1):
-            power = power * qa
-        basis = _nullspace(power)
-        if basis.ncols() != q.degree() * e:
-            raise InternalError(f"the generalized eigenspace of {q} has dimension {basis.ncols()}, not {q.degree() * e}")
-        eigenvectors = 1 if e == 1 else (size - qa.rref()[1]) // q.degree()
-        parts.append((q, e, eigenvectors, basis))
-    w = flint.fmpq_mat(size, size)
-    col = 0
-    for *_, basis in parts:
-        for i in range(size):
-            for j in range(basis.ncols()):
-                w[i, col + j] = basis[i, j]
-        col += basis.ncols()
-    winv = w.inv()
-    b_all = winv * a * w  # block diagonal: each generalized eigenspace is invariant (checked below)
-    out, col = [], 0
-    for q, e, g, basis in parts:
-        d = basis.ncols()
-        left = flint.fmpq_mat(d, size, [winv[col + i, j] for i in range(d) for j in range(size)])
-        block = _columns(b_all, col, d)
-        if basis * block != a * basis:
-            raise InternalError(f"the generalized eigenspace of {q} is not invariant")
-        out.append(PrimaryBlock(tuple(int(c) for c in q.numer().coeffs()), e, g, basis, block, left, _roots(q)))
-        col += d
-    return tuple(out)
-
-
-def _columns(m: flint.fmpq_mat, col: int, d: int) -> flint.fmpq_mat:
-    return flint.fmpq_mat(d, d, [m[col + i, col + j] for i in range(d) for j in range(d)])
-
-
 def _check_scheme_rules(scheme: Scheme, vertex: SharpVertex) -> None:
     if vertex.lattice is not scheme.lattice:
         raise InvalidInputError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, the vertex on {vertex.lattice}")
@@ -373,110 +280,3 @@ def sector_evaldata(scheme: Scheme, vertex: SharpVertex) -> SectorEvalData:
     return SectorEvalData(scheme.name, vertex, exact, matrix, refine3, cells, limit, modified, blocks, phi)
 
 
-def _bspline(t, derivative: int) -> list:
-    """The uniform cubic B-spline basis ``N_0..N_3`` (or a derivative) at ``t``, in the arithmetic of ``t``."""
-    one = t * 0 + 1
-    if derivative == 0:
-        return [(one - t) ** 3 / 6, (3 * t**3 - 6 * t**2 + 4 * one) / 6, (-3 * t**3 + 3 * t**2 + 3 * t + one) / 6, t**3 / 6]
-    return [-((one - t) ** 2) / 2, (9 * t**2 - 12 * t) / 6, (-9 * t**2 + 6 * t + 3 * one) / 6, t**2 / 2]
-
-
-def _level(u, v, level) -> int:
-    """The level ``n >= 2`` with ``2 < 2^n max(u, v) <= 4``; or the given one, where ``2 <= 2^n max(u, v) <= 4``."""
-    m = max(u, v)
-    if level is not None:
-        if isinstance(level, bool) or not isinstance(level, int) or level < 2 or not 2 <= 2**level * m <= 4:
-            raise EvaluationError(f"level must be an integer n >= 2 with 2 <= 2^n max(u, v) <= 4, got {level!r:.40}")
-        return level
-    n = 2
-    while 2**n * m <= 2:
-        n += 1
-    return n
-
-
-def _control_points(data: SectorEvalData, points):
-    rows = [list(p) for p in points] if hasattr(points, "__iter__") else None
-    if not rows or len(rows) != data.size or len({len(p) for p in rows}) != 1 or not rows[0]:
-        raise InvalidInputError(f"control points: need {data.size} points of one dimension d >= 1 (the closed 2-ring)")
-    for p in rows:
-        for x in p:
-            if isinstance(x, bool) or not isinstance(x, (int, Fraction, flint.fmpq, flint.arb)):
-                raise InvalidInputError(f"control points: coordinates must be exact rationals or Arb balls, got {x!r:.40}")
-    ball = not data.exact or any(isinstance(x, flint.arb) for p in rows for x in p)
-    kind = flint.arb_mat if ball else flint.fmpq_mat
-    out = kind(len(rows), len(rows[0]))
-    for i, p in enumerate(rows):
-        for j, x in enumerate(p):
-            out[i, j] = x if isinstance(x, flint.arb) else to_fmpq(x)
-    return out, ball
-
-
-def _check_parameters(data: SectorEvalData, face, u, v) -> tuple:
-    if isinstance(face, bool) or not isinstance(face, int) or not 0 <= face < data.faces:
-        raise InvalidInputError(f"face must be an integer from 0 to {data.faces - 1}, got {face!r:.40}")
-    out = []
-    for name, x in (("u", u), ("v", v)):
-        if isinstance(x, bool) or not isinstance(x, (int, Fraction)) or not 0 <= x <= 1:
-            raise EvaluationError(f"{name} must be an exact rational in [0, 1] (int or Fraction), got {x!r:.40}")
-        out.append(Fraction(x))
-    return tuple(out)
-
-
-def _times(a, b, ball: bool):
-    if ball:
-        a = a if isinstance(a, flint.arb_mat) else flint.arb_mat(a)
-        b = b if isinstance(b, flint.arb_mat) else flint.arb_mat(b)
-    return a * b
-
-
-def _net(data: SectorEvalData, face: int, c: int, steps: int, control, ball: bool, route: str):
-    """The level-``n`` B-spline net of cell ``c`` of ``face``: powers of ``A``, or the eigen-expansion."""
-    if route == "powers" or data.decomposition is None:
-        coarse = control
-        for _ in range(steps):
-            coarse = _times(data.matrix, coarse, ball)
-        return _times(data.cells[face][c], coarse, ball)
-    net = None
-    for block, phi in zip(data.decomposition, data.phi[face][c]):
-        coords = _times(block.left, control, ball)
-        for _ in range(steps):  # B_i^m on this block's coordinates only
-            coords = _times(block.block, coords, ball)
-        term = _times(phi, coords, ball)
-        net = term if net is None else net + term
-    return net
-
-
-def evaluate(data: SectorEvalData, face: int, u, v, points, *, route: str = "eigen", level: int | None = None) -> dict:
-    """``{"point", "du", "dv", "level"}`` of patch ``face`` at ``(u, v)`` from the ``K`` control ``points``.
-
-    ``u, v``: exact rationals; ``points``: rationals (exact results with exact data) or Arb balls. ``route``:
-    ``"eigen"`` (the decomposition, when the data have one) or ``"powers"`` (``A^(n-2)``). At ``(0, 0)`` the point is
-    the limit position and the derivatives are ``None``. ``level``: another level ``n`` whose wide ring holds
-    ``(u, v)`` (``2^n max(u, v) = 2``: the inner edge of the ring), instead of the one chosen.
-    """
-    check_type(data, SectorEvalData, "data")
-    if route not in ("eigen", "powers"):
-        raise InvalidInputError(f"route must be 'eigen' or 'powers', got {route!r:.40}")
-    u, v = _check_parameters(data, face, u, v)
-    with flint.ctx.workprec(PREC):
-        control, ball = _control_points(data, points)
-        if u == 0 and v == 0:
-            limit = flint.fmpq_mat(1, data.size, list(data.limit)) if data.exact else flint.arb_mat(1, data.size, list(data.limit))
-            row = _times(limit, control, ball)
-            return {"point": [row[0, j] for j in range(row.ncols())], "du": None, "dv": None, "level": None}
-        n = _level(u, v, level)
-        x, y = 2**n * u, 2**n * v
-        a, b = min(math.floor(x), 3), min(math.floor(y), 3)
-        net = _net(data, face, CELLS.index((a, b)), n - 2, control, ball, route)
-        s, t = x - a, y - b
-        if ball:
-            s, t = flint.arb(s.numerator) / s.denominator, flint.arb(t.numerator) / t.denominator
-        else:
-            s, t = flint.fmpq(s.numerator, s.denominator), flint.fmpq(t.numerator, t.denominator)
-        out: dict = {"level": n}
-        for key, (ds, dt) in (("point", (0, 0)), ("du", (1, 0)), ("dv", (0, 1))):
-            bs, bt = _bspline(s, ds), _bspline(t, dt)
-            scale = 2 ** (n * (ds + dt))
-            out[key] = [sum((bs[i] * bt[j] * net[i + 4 * j, k] for j in range(4) for i in range(4)), 0 * s) * scale
-                        for k in range(net.ncols())]
-        return out

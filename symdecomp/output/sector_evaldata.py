@@ -39,7 +39,8 @@ from collections.abc import Iterable, Iterator
 
 import flint
 
-from symdecomp.analysis.sector_evaldata import CELLS, PREC, PrimaryBlock, SectorEvalData
+from symdecomp.algebra.primary_decomposition import PrimaryBlock
+from symdecomp.analysis.sector_evaldata import CELLS, PREC, SectorEvalData
 from symdecomp.errors import EvalDataFileError, SymdecompError
 
 __all__ = ["SECTOR_FORMAT", "SECTOR_LAYOUT", "sector_entry", "sector_json_chunks", "read_sector_json"]

@@ -25,7 +25,8 @@ from fractions import Fraction
 import flint
 
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.sector_evaldata import PREC, SectorEvalData, evaluate, real_ball, sector_evaldata
+from symdecomp.analysis.sector_evaldata import PREC, SectorEvalData, real_ball, sector_evaldata
+from symdecomp.analysis.sector_evaluation import evaluate
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 from symdecomp.validate import check_int, check_type

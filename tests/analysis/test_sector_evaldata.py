@@ -6,7 +6,8 @@ import flint
 import pytest
 
 from symdecomp.analysis import sharp_evaluation
-from symdecomp.analysis.sector_evaldata import CELLS, evaluate, sector_evaldata
+from symdecomp.analysis.sector_evaldata import CELLS, sector_evaldata
+from symdecomp.analysis.sector_evaluation import evaluate
 from symdecomp.errors import EvaluationError, InvalidInputError, InvalidTypeError, LatticeFactMissing, NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.loop import loop

@@ -5,7 +5,8 @@ from fractions import Fraction
 
 import pytest
 
-from symdecomp.analysis.sector_evaldata import evaluate, sector_evaldata
+from symdecomp.analysis.sector_evaldata import sector_evaldata
+from symdecomp.analysis.sector_evaluation import evaluate
 from symdecomp.cli import main
 from symdecomp.output.sector_evaldata import read_sector_json
 from symdecomp.schemes.files import load_scheme

@@ -5,7 +5,8 @@ from fractions import Fraction
 
 import pytest
 
-from symdecomp.analysis.sector_evaldata import evaluate, sector_evaldata
+from symdecomp.analysis.sector_evaldata import sector_evaldata
+from symdecomp.analysis.sector_evaluation import evaluate
 from symdecomp.errors import EvalDataFileError
 from symdecomp.output.sector_evaldata import SECTOR_FORMAT, read_sector_json, sector_entry, sector_json_chunks
 from symdecomp.schemes.scheme import catmull_clark

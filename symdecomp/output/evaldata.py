@@ -68,7 +68,7 @@ from symdecomp.validate import FLOAT_DIGITS
 
 __all__ = [
     "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "read_binary", "json_chunks",
-    "json_valence", "decimal_valence", "read_json", "sharp_entry", "sharp_json_chunks", "read_sharp_json",
+    "json_valence", "decimal_valence", "read_json", "sharp_entry", "sharp_json_chunks", "read_sharp_json", "load_document",
 ]
 
 
@@ -224,15 +224,21 @@ def json_chunks(entries: Iterable[dict], nmax: int, digits: int, scheme: str | N
     yield "\n]}\n"
 
 
-def read_json(path) -> dict[int, RoundedEigenData]:
-    """Read a JSON eigen-data document (either format) back as float64 arrays: valence -> arrays."""
+def load_document(path, formats: tuple[str, ...], what: str) -> dict:
+    """The JSON object in ``path`` whose ``format`` is one of ``formats``; else one line naming the file (``what``: the kind)."""
     try:
         with open(path, encoding="utf-8") as fh:
             doc = json.load(fh)
     except (OSError, ValueError) as exc:
         raise EvalDataFileError(f"cannot read {path}: {exc}") from None
-    if not isinstance(doc, dict) or doc.get("format") not in (FORMAT, LOOP_FORMAT):
-        raise EvalDataFileError(f"{path}: not an eigen-data document (format {FORMAT!r} or {LOOP_FORMAT!r})")
+    if not isinstance(doc, dict) or doc.get("format") not in formats:
+        raise EvalDataFileError(f"{path}: not {what} (format {' or '.join(map(repr, formats))})")
+    return doc
+
+
+def read_json(path) -> dict[int, RoundedEigenData]:
+    """Read a JSON eigen-data document (either format) back as float64 arrays: valence -> arrays."""
+    doc = load_document(path, (FORMAT, LOOP_FORMAT), "an eigen-data document")
     width = 12 if doc["format"] == LOOP_FORMAT else 16
     out = {}
     try:
@@ -320,13 +326,7 @@ def read_sharp_json(path) -> dict:
     from symdecomp.analysis.sharp_evaluation import SharpPatchData
     from symdecomp.schemes.sector import SharpVertex
 
-    try:
-        with open(path, encoding="utf-8") as fh:
-            doc = json.load(fh)
-    except (OSError, ValueError) as exc:
-        raise EvalDataFileError(f"cannot read {path}: {exc}") from None
-    if not isinstance(doc, dict) or doc.get("format") != SHARP_FORMAT:
-        raise EvalDataFileError(f"{path}: not a boundary/corner eigen-data document (format {SHARP_FORMAT!r})")
+    doc = load_document(path, (SHARP_FORMAT,), "a boundary/corner eigen-data document")
     out = {}
     try:
         for v in doc["vertices"]:

@@ -42,6 +42,7 @@ import flint
 from symdecomp.algebra.primary_decomposition import PrimaryBlock
 from symdecomp.analysis.sector_evaldata import CELLS, PREC, SectorEvalData
 from symdecomp.errors import EvalDataFileError, SymdecompError
+from symdecomp.output.evaldata import load_document
 
 __all__ = ["SECTOR_FORMAT", "SECTOR_LAYOUT", "sector_entry", "sector_json_chunks", "read_sector_json"]
 
@@ -154,13 +155,7 @@ def _data(entry, scheme: str, lattice: str) -> SectorEvalData:
 
 def read_sector_json(path) -> dict:
     """Read a document back: ``(kind, sectors)`` -> :class:`~symdecomp.analysis.sector_evaldata.SectorEvalData`."""
-    try:
-        with open(path, encoding="utf-8") as fh:
-            doc = json.load(fh)
-    except (OSError, ValueError) as exc:
-        raise EvalDataFileError(f"cannot read {path}: {exc}") from None
-    if not isinstance(doc, dict) or doc.get("format") != SECTOR_FORMAT:
-        raise EvalDataFileError(f"{path}: not a sector evaluation data document (format {SECTOR_FORMAT!r})")
+    doc = load_document(path, (SECTOR_FORMAT,), "a sector evaluation data document")
     out = {}
     try:
         if doc["cells"] != [list(c) for c in CELLS]:

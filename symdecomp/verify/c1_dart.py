@@ -47,7 +47,7 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import check_spline_sharp_rules
 from symdecomp.validate import check_bits, check_depth, check_valence
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp import SharpC1Result, _nets, _sign, _sweeps
+from symdecomp.verify.c1_sharp import SharpC1Result, arc_sweeps, jacobian_sign, ring_nets
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
 from symdecomp.verify.result import C1Verdict
@@ -189,8 +189,8 @@ def _winding(total) -> int | None:
 
 def dart_map(sm, vectors, *, max_depth: int = 6) -> DartMap:
     """Conditions 2 and 3 (module docstring) for the dart sector ``sm`` and two real eigenvectors (``vectors``)."""
-    nets = _nets(sm, _chi(sm, vectors))
-    cert = _sign(sm, nets, max_depth)
+    nets = ring_nets(sm, _chi(sm, vectors))
+    cert = jacobian_sign(sm, nets, max_depth)
     if cert.status == "changes":
         return DartMap(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, face "
                        f"{cert.where[0] // (len(nets) // sm.k)}): it is not regular", depth=cert.depth)
@@ -198,7 +198,7 @@ def dart_map(sm, vectors, *, max_depth: int = 6) -> DartMap:
         return DartMap(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}",
                        depth=cert.depth)
     sign = 1 if cert.status == "positive" else -1
-    inner, outer = (_winding(t) for t in _sweeps(sm, nets))
+    inner, outer = (_winding(t) for t in arc_sweeps(sm, nets))
     found = dict(sign=sign, bound=cert.lower_bound, depth=cert.depth)
     if inner is None or outer is None or inner != outer:
         return DartMap(C1Verdict.UNDECIDED, "the winding numbers of the ring's boundary curves are not certified equal", **found)

@@ -99,7 +99,8 @@ from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, 
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "SectorFinding"]
+__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "SectorFinding", "ring_nets",
+           "jacobian_sign", "arc_sweeps"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -251,7 +252,7 @@ def _chi(sm, picks):
     return chi, tuple(dirs)
 
 
-def _nets(sm, chi) -> list:
+def ring_nets(sm, chi) -> list:
     """The Bezier nets (complex) of the ring's ``3 k`` sub-patches, face by face (quads ``4 x 4``; triangles, 15)."""
     out = []
     for s in range(sm.k):
@@ -269,7 +270,8 @@ def _nets(sm, chi) -> list:
     return out
 
 
-def _sign(sm, nets, max_depth: int):
+def jacobian_sign(sm, nets, max_depth: int):
+    """The Jacobian's sign on the ring's nets, certified by de Casteljau subdivision to ``max_depth`` (or where it fails)."""
     if sm.lattice.handled("the sharp ring's Jacobian", BICUBIC, BOX_SPLINE) == BICUBIC:
         return certify_sign([jacobian_net([[z.real for z in row] for row in net], [[z.imag for z in row] for row in net])
                              for net in nets], max_depth)
@@ -277,7 +279,7 @@ def _sign(sm, nets, max_depth: int):
                                   DEGREE, 2 * max_depth)
 
 
-def _sweeps(sm, nets, wide: bool = False):
+def arc_sweeps(sm, nets, wide: bool = False):
     """``(Delta_in, Delta_out)``: the arguments swept by the images of the ring's inner and outer arcs (``None``: not decided)."""
     inner, outer = wide_arcs(sm, nets) if wide else ([], [])
     for s in range(0 if wide else sm.k):
@@ -385,8 +387,8 @@ def sector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, picks:
         return SectorFinding(C1Verdict.UNDECIDED, "an eigenvector is not certified", spectral, lambdas)
     if any(d.contains(0) for d in dirs):
         return SectorFinding(C1Verdict.UNDECIDED, "a sharp ray's image is not shown to be non-degenerate", spectral, lambdas)
-    nets = wide_nets(sm, chi, tuple(p[0].real for p in picks)) if wide else _nets(sm, chi)
-    cert = _sign(sm, nets, max_depth)
+    nets = wide_nets(sm, chi, tuple(p[0].real for p in picks)) if wide else ring_nets(sm, chi)
+    cert = jacobian_sign(sm, nets, max_depth)
     if cert.status == "changes":
         per = len(ring_faces(sm.lattice)) if wide else 3
         return SectorFinding(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, face "
@@ -396,7 +398,7 @@ def sector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, picks:
         return SectorFinding(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}", spectral,
                        lambdas, depth=cert.depth)
     sign = 1 if cert.status == "positive" else -1
-    verdict, text, opening = _injective(sm, vertex, sign, dirs, _sweeps(sm, nets, wide))
+    verdict, text, opening = _injective(sm, vertex, sign, dirs, arc_sweeps(sm, nets, wide))
     if verdict is C1Verdict.C1:
         where = " on the ring past the modified edges (level-1 distance 2 to 4, genuine splines)" if wide else ""
         text = f"{spectral.reason}; the characteristic map is regular{where} (|J| >= {round_down(cert.lower_bound)}) and {text}"

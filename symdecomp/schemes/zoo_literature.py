@@ -10,7 +10,8 @@ and the docstring of the field gives the derivation; the tests compare all of th
 independently on explicit meshes (``tests/schemes/zoo_reference.py``).
 
 A family the issue names whose rules could not be read in full is not shipped: :data:`NOT_SHIPPED` says what was
-read, what is missing, and why nothing is written under its name (no weight is written that was not read).
+read, what is missing, why nothing is written under its name (no weight is written that was not read), and which
+texts would settle it (looked for, not at hand).
 
 >>> facts = FAMILIES["doo-sabin"]
 >>> facts.subdominant.subs(N, 7), facts.multiplicity
@@ -113,6 +114,8 @@ class UnshippedFamily:
     read: str
     #: What could not be read, so that the family is not shipped.
     missing: str
+    #: The texts that would state the missing rule, looked for and not at hand (named for the next reader, not cited).
+    looked_for: tuple[str, ...] = ()
 
 
 NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
@@ -120,8 +123,16 @@ NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
         "kobbelt-quad",
         "L. Kobbelt, 1996, Interpolatory subdivision on open quadrilateral nets with arbitrary topology "
         "(Computer Graphics Forum 15, Eurographics 96, 409-420)",
-        "the paper's abstract (its publisher's page): an interpolatory scheme for quadrilateral nets of arbitrary "
-        "topology, C1 in the limit, with boundary curves on open nets; and one public implementation (the repository "
+        "the paper's abstract (its publisher's page, and the publication page of Kobbelt's group at RWTH Aachen): an "
+        "interpolatory scheme for quadrilateral nets of arbitrary topology, C1 in the limit, with boundary curves on "
+        "open nets; the opening of Kobbelt's own text under the title A subdivision scheme for smooth interpolation "
+        "of quad-mesh data (University of Erlangen; its abstract is the paper's, word for word), up to the first "
+        "paragraph of its introduction only: a net N = (V, F) of data points and faces is mapped to a refined net "
+        "close to a smooth surface, and the rules come after what was at hand; G. Li, W. Ma and H. Bao, 2005, A new "
+        "interpolatory subdivision for quadrilateral meshes (Computer Graphics Forum 24, 3-16), its abstract: its "
+        "surfaces coincide with Kobbelt's on regular meshes and it designs a new group of rules for the points "
+        "inserted around extraordinary vertices, so its rules there are its own, not Kobbelt's; "
+        "and one public implementation (the repository "
         "Instyx/kobbelt_subdivision, which cites no source): edge points by the four-point rule, (8 + w)/16 on the "
         "edge's ends and -w/16 on the next points out, face points by the same rule on the new edge points; at an end "
         "of valence n the point missing behind it on the edge towards its neighbour q_i is a virtual point, "
@@ -129,13 +140,23 @@ NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
         "- 4 w/((4 + w) n) sum_j r_j, with q the neighbours and r the faces' opposite corners (at n = 4 it is "
         "the opposite neighbour); a second implementation (a Blender add-on, Interpolating Subdivision for Quads, "
         "which cites nothing either) has no virtual point, takes any neighbour off the edge's faces at an "
-        "extraordinary end, and averages a face point over its two pairs of opposite edge points",
-        "Kobbelt's own statement of the rule at an extraordinary vertex: the paper's text was not at hand, and the "
-        "only text read that gives the virtual point cites nothing; it takes a face point next to an extraordinary "
-        "vertex along the first pair of opposite new edge points in the face's storage order, and the other pair "
+        "extraordinary end, and averages a face point over its two pairs of opposite edge points; the other public "
+        "code under Kobbelt's name read is his sqrt(3) scheme or Li, Ma and Bao's",
+        "Kobbelt's own statement of the rule at an extraordinary vertex: his text was at hand only to its "
+        "introduction's first paragraph, the one later paper read (Li, Ma and Bao, its abstract) keeps his surfaces "
+        "on regular meshes and designs new rules around extraordinary vertices, and the only text read that "
+        "gives the virtual point cites nothing; it takes a face point next to an extraordinary vertex along the "
+        "first pair of opposite new edge points in the face's storage order, and the other pair "
         "gives another point there (at valences 3, 5, 6 and 7; the same at 4: "
         "tests/schemes/test_zoo_reference.py), so its rules make no matrix that commutes with the rotation; the "
         "two implementations disagree on both rules, which the paper would settle. Nothing is "
         "shipped under the name: writing the weights from that text would attribute to the paper what was not read "
-        "in it"),
+        "in it",
+        (
+            "the paper's full text, past its introduction's first paragraph",
+            "D. Zorin and P. Schroeder, 2000, Subdivision for modeling and animation (SIGGRAPH 2000 course notes), "
+            "the chapter on interpolatory schemes",
+            "Kobbelt's dissertation and habilitation",
+            "Li, Ma and Bao 2005 past its abstract",
+        )),
 )}

@@ -50,11 +50,12 @@ from symdecomp.algebra.primary_decomposition import PrimaryBlock, decomposition
 from symdecomp.analysis.sector_evaldata import PREC, limit_mask, matrix_numbers
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.errors import InternalError, NotApplicableError
+from symdecomp.schemes.halfedge import HalfedgeMesh
 from symdecomp.schemes.neighbourhood import Neighbourhood
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.validate import cached, check_type, check_valence
 
-__all__ = ["CELLS", "DEPTH", "DualEvalData", "dual_evaldata", "sector_chart", "chart_index", "spline_reason"]
+__all__ = ["CELLS", "DEPTH", "DualEvalData", "dual_evaldata", "sector_chart", "mesh_chart", "chart_index", "spline_reason"]
 
 #: The cells ``(a, b)`` (lower-left corners, level-``m`` units) of a sector's ring: ``max(a, b) = 1``.
 CELLS = ((1, 0), (1, 1), (0, 1))
@@ -96,13 +97,17 @@ def _in_window(x: int, y: int, reach: int) -> bool:
 
 
 def sector_chart(nb: Neighbourhood) -> dict[tuple[int, int], int]:
-    """``(2x, 2y) -> vertex id`` of sector 0's chart of a face-centred quad neighbourhood (module docstring).
+    """``(2x, 2y) -> vertex id`` of sector 0's chart of a face-centred quad neighbourhood (module docstring)."""
+    return mesh_chart(nb.mesh, nb.start, 2 * nb.depth + 1)
 
-    Walks the quads only (``next`` turns left by a right angle, ``twin`` reverses), from the centre face's start
-    halfedge ``P_0 -> P_1``; the window (``x, y >= -1/2``, not both negative) holds no second copy of a point.
+
+def mesh_chart(mesh: HalfedgeMesh, start: int, reach: int) -> dict[tuple[int, int], int]:
+    """``(2x, 2y) -> vertex id`` of the chart of the sector whose corner is ``start``'s origin, up to ``max(2x, 2y) <= reach``.
+
+    ``start`` is a halfedge ``P_s -> P_(s+1)`` of the centre face. Walks the quads only (``next`` turns left by a
+    right angle, ``twin`` reverses); the window (``x, y >= -1/2``, not both negative) holds no second copy of a point.
     """
-    mesh, start = nb.mesh, nb.start
-    centre_face, reach = mesh.face[start], 2 * nb.depth + 1
+    centre_face, n = mesh.face[start], len(mesh.around_face(start))
     at: dict[tuple[int, int], int] = {}
     where: dict[int, tuple[int, int]] = {}
     seen: set[int] = set()
@@ -114,7 +119,7 @@ def sector_chart(nb: Neighbourhood) -> dict[tuple[int, int], int]:
         seen.add(h)
         v = mesh.origin[h]
         if at.setdefault(p, v) != v or where.setdefault(v, p) != p:
-            raise InternalError(f"the chart of the {nb.n}-gon's sector is not a quad lattice at {p}")
+            raise InternalError(f"the chart of the {n}-gon's sector is not a quad lattice at {p}")
         q = (p[0] + 2 * d[0], p[1] + 2 * d[1])
         queue.append((mesh.twin[h], q, (-d[0], -d[1])))
         if mesh.face[h] is not None and mesh.face[h] != centre_face:
@@ -122,7 +127,7 @@ def sector_chart(nb: Neighbourhood) -> dict[tuple[int, int], int]:
     missing = [(x, y) for x in range(-1, reach + 1, 2) for y in range(-1, reach + 1, 2)
                if _in_window(x, y, reach) and (x, y) not in at]
     if missing:
-        raise InternalError(f"the chart of the {nb.n}-gon's sector misses the point {missing[0]}")
+        raise InternalError(f"the chart of the {n}-gon's sector misses the point {missing[0]}")
     return at
 
 

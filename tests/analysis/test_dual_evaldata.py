@@ -2,6 +2,7 @@
 blocks where the ranks say so, the limit point is the face's centroid (derived from the rules), and at n = 4 the
 patches are the biquadratic B-spline of the regular grid."""
 
+import math
 from fractions import Fraction
 from pathlib import Path
 
@@ -102,8 +103,7 @@ def test_at_n_4_the_patches_are_the_biquadratic_b_spline_of_the_regular_grid():
             x, y = u, v
             for _ in range(s):
                 x, y = -y, x
-            cx, cy = Fraction(int(x // 1) if x < 1 else 0), Fraction(int(y // 1) if y < 1 else 0)
-            cx, cy = min(cx, 0) if x < 0 else cx, min(cy, 0) if y < 0 else cy
+            cx, cy = min(math.floor(x), 0), min(math.floor(y), 0)  # the level-0 cell of (x, y) in [-1, 1]^2
             want = [sum(_quadratic(x - cx)[i] * _quadratic(y - cy)[j] * net[at[(cx - Fraction(1, 2) + i, cy - Fraction(1, 2) + j)]][k]
                         for i in range(3) for j in range(3)) for k in range(2)]
             got = evaluate(d, s, u, v, net)

@@ -102,6 +102,8 @@ def read_dual_json(path) -> dict[int, DualEvalData]:
             for entry in doc["faces"]:
                 data = _data(entry, doc["scheme"])
                 out[data.n] = data
-    except (KeyError, TypeError, ValueError, AttributeError, SymdecompError) as exc:
+    except KeyError as exc:
+        raise EvalDataFileError(f"{path}: malformed dual evaluation data document (no key {exc})") from None
+    except (TypeError, ValueError, AttributeError, SymdecompError) as exc:
         raise EvalDataFileError(f"{path}: malformed dual evaluation data document ({exc})") from None
     return out

@@ -13,7 +13,7 @@ containing the exact values: they agree when the balls overlap and are narrower 
 >>> from symdecomp.schemes.stencil_files import load_zoo
 >>> r = dyadic_check(load_zoo("doo-sabin"), 3, levels=(1,))
 >>> r["points"], r["mismatches"], r["routes"]
-(18, 0, ('eigen', 'powers'))
+(24, 0, ('eigen', 'powers'))
 """
 
 from __future__ import annotations

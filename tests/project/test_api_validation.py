@@ -30,6 +30,7 @@ from symdecomp.analysis.inspection import position_weights
 from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
 from symdecomp.analysis.mesh_limits import kind_masks
 from symdecomp.analysis.ring_spectrum import frequency_factors
+from symdecomp.analysis.dual_evaldata import dual_evaldata
 from symdecomp.analysis.sector_evaldata import sector_evaldata
 from symdecomp.analysis.support import limit_mask
 from symdecomp.analysis.support_window import window
@@ -69,6 +70,7 @@ INTEGERS = [
     (sd.zoo_matrix, "n", dict(scheme=DOO_SABIN), 5, 3, False),
     (sd.zoo_spectrum, "n", dict(scheme=DOO_SABIN), 5, 3, False),
     (sd.zoo_spectrum, "digits", dict(scheme=DOO_SABIN, n=5), 10, 1, True),
+    (dual_evaldata, "n", dict(scheme=DOO_SABIN), 5, 3, False),
     (sd.zoo_masks, "n", dict(scheme=DOO_SABIN), 5, 3, False),
     (sd.zoo_masks, "digits", dict(scheme=DOO_SABIN, n=5), 10, 1, True),
     (sd.certify_zoo, "n", dict(scheme=DOO_SABIN), 5, 3, False),
@@ -154,6 +156,7 @@ INTEGERS = [
 SCHEMES = [
     (sd.zoo_matrix, dict(n=5)),
     (sd.zoo_spectrum, dict(n=5)),
+    (dual_evaldata, dict(n=5)),
     (sd.zoo_masks, dict(n=5)),
     (sd.certify_zoo, dict(n=5)),
     (sd.zoo_artifacts, dict(n=5)),

@@ -49,8 +49,9 @@ import sympy as sp
 from symdecomp.algebra.primary_decomposition import PrimaryBlock, decomposition
 from symdecomp.analysis.sector_evaldata import PREC, limit_mask, matrix_numbers
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.errors import InternalError, NotApplicableError
+from symdecomp.errors import InternalError, InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.halfedge import HalfedgeMesh
+from symdecomp.schemes.lattice import BICUBIC, lattice
 from symdecomp.schemes.neighbourhood import Neighbourhood
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.validate import cached, check_type, check_valence
@@ -181,7 +182,7 @@ def spline_reason(scheme: StencilScheme) -> str | None:
                 "the zoo are for dual quad schemes whose regular part is the biquadratic B-spline (Doo-Sabin's)")
     try:
         dual_evaldata(scheme, 4)
-    except NotApplicableError as exc:
+    except InvalidSchemeError as exc:  # not the biquadratic rule, a lattice without that fact, no invariant neighbourhood
         return str(exc)
     return None
 
@@ -192,6 +193,8 @@ def dual_evaldata(scheme: StencilScheme, n: int) -> DualEvalData:
     if scheme.interpolatory or scheme.topology != "dual" or scheme.steps != 1:
         raise NotApplicableError(f"scheme {scheme.name!r}: evaluation data of the zoo are for dual quad schemes (one "
                                  f"step), not {scheme.topology} steps")
+    lattice(scheme.lattice).handled("evaluation data of a dual scheme (the lattice's dual a quad lattice: biquadratic cells)",
+                                    BICUBIC)
     zm = zoo_matrix(scheme, n, DEPTH)
     nb, a = zm.neighbourhood, zm.matrix
     chart = sector_chart(nb)

@@ -26,7 +26,9 @@ The control points ``C`` are the zoo engine's neighbourhood of depth 2 (:func:`~
 * ``decomposition`` (exact data): the eigen-decomposition of ``A`` over ``Q``
   (:func:`~symdecomp.algebra.primary_decomposition.decomposition`: one block per irreducible factor ``q^e`` of the
   characteristic polynomial, so Jordan blocks are handled: Doo-Sabin's ``A`` is not diagonalizable at ``n = 6``,
-  its eigenvalue ``1/4`` of the ``n``-gon meets the regular part's); with balls, ``None`` and the powers of ``A``.
+  where its ``n``-gon's eigenvalue ``1/4`` meets the regular part's; the engine's exact ranks by frequency,
+  :mod:`symdecomp.analysis.zoo_jordan`, find Jordan blocks of ``1/4`` at ``n = 6, 7`` and none at ``n = 5``); with
+  balls, ``None`` and the powers of ``A``, which need no eigenvector basis.
 
 Evaluation: :mod:`symdecomp.analysis.dual_evaluation`; the certificate against exact refinement:
 :mod:`symdecomp.verify.dual_evaldata`. Which families apply: :func:`spline_reason`.

@@ -12,6 +12,10 @@ import sympy as sp
 
 from symdecomp.analysis.dual_evaldata import CELLS, dual_evaldata, mesh_chart, spline_reason
 from symdecomp.analysis.dual_evaluation import evaluate
+from symdecomp.analysis.zoo_blocks import zoo_blocks
+from symdecomp.analysis.zoo_jordan import with_jordan
+from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
 from symdecomp.errors import EvaluationError, InvalidInputError, NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.lattice import QUAD
@@ -153,3 +157,28 @@ def test_bad_input_is_one_line():
         evaluate(d, 0, Fraction(1, 2), 0, net, level=3)
     with pytest.raises(InvalidInputError, match="valence"):
         dual_evaldata(DOO_SABIN, 2)
+
+
+def test_the_jordan_blocks_are_the_frequency_blocks_ones():
+    """Another route: the engine's frequency blocks over the cyclotomic field (zoo_jordan) give 1/4 at n = 6 the
+    Jordan partition (2, 2, 1, 1, 1, 1, 1): as many eigenvectors as parts, the multiplicity their sum."""
+    blocks = zoo_blocks(zoo_matrix(DOO_SABIN, 6, 2))
+    (quarter_sizes,) = [e.jordan for e in with_jordan(blocks, spectrum_of_blocks(blocks)).eigenvalues if e.exact == sp.Rational(1, 4)]
+    quarter = next(b for b in dual_evaldata(DOO_SABIN, 6).decomposition if b.factor == (-1, 4))
+    assert (quarter.eigenvectors, quarter.multiplicity) == (len(quarter_sizes), sum(quarter_sizes)) == (7, 9)
+
+
+@pytest.mark.parametrize("n", [3, 5, 6])
+def test_the_derivatives_are_the_central_differences(n):
+    """In one cell the patch is quadratic in u for fixed v: the central difference is its exact derivative."""
+    d = dual_evaldata(DOO_SABIN, n)
+    net = [[Fraction(i % 5 - 2, 1 + i % 3), Fraction(i * i % 13)] for i in range(d.size)]
+    h = Fraction(1, 512)
+    for u, v in ((Fraction(3, 8), Fraction(5, 16)), (Fraction(11, 16), Fraction(13, 16)), (Fraction(3, 64), Fraction(5, 128))):
+        got = evaluate(d, 1, u, v, net)
+        for key, (du, dv) in (("du", (h, 0)), ("dv", (0, h))):
+            ahead, back = evaluate(d, 1, u + du, v + dv, net), evaluate(d, 1, u - du, v - dv, net)
+            assert ahead["level"] == back["level"] == got["level"]
+            for g, a, b in zip(got[key], ahead["point"], back["point"]):
+                diff = (a - b) * 256  # / (2 h)
+                assert (g == diff) if d.exact else (g.overlaps(diff) and g.rad() < 2.0**-150)

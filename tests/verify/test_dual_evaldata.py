@@ -56,3 +56,10 @@ def test_a_moved_weight_fails(n):
     bad = replace(data, patches=tuple(map(tuple, patches)), decomposition=None, phi=None)
     assert dyadic_check(DOO_SABIN, n, levels=(1, 2), data=bad)["mismatches"] > 0
     assert dyadic_check(DOO_SABIN, n, levels=(1, 2), data=replace(data, decomposition=None, phi=None))["mismatches"] == 0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("n", [7, 8, 12])
+def test_larger_faces_equal_exact_refinement(n):
+    result = dyadic_check(DOO_SABIN, n, levels=(1, 2))
+    assert result["points"] == n * 32 and result["mismatches"] == 0

@@ -28,7 +28,7 @@ from symdecomp.analysis.dual_evaldata import DEPTH, DualEvalData, dual_evaldata,
 from symdecomp.analysis.dual_evaluation import evaluate
 from symdecomp.analysis.sector_evaldata import PREC, limit_mask, matrix_numbers, real_ball
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.errors import InternalError
+from symdecomp.errors import InternalError, NotApplicableError
 from symdecomp.schemes.halfedge import halfedge_mesh
 from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.neighbourhood import local_faces, neighbourhood
@@ -54,7 +54,8 @@ def regular_face_mask(scheme: StencilScheme) -> dict[tuple[int, int], Fraction]:
     nb, a = zm.neighbourhood, zm.matrix
     rows = [{c: a[r, c] for c in range(a.cols) if a[r, c] != 0} for r in range(a.rows)]
     if not all(w.is_Rational for row in rows for w in row.values()):
-        raise ValueError(f"scheme {scheme.name!r}: the regular face's rules are not rational")
+        raise NotApplicableError(f"scheme {scheme.name!r}: the regular face's rules are not rational (a biquadratic "
+                                 "B-spline's are)")
     mask = limit_mask(matrix_numbers(rows, a.cols, True), True)
     index, out = nb.index(), {}
     for s in range(4):

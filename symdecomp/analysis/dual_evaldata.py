@@ -14,7 +14,7 @@ The control points ``C`` are the zoo engine's neighbourhood of depth 2 (:func:`~
   scheme's rules), exact rationals (FLINT ``fmpq``) when the rules are rational at ``n`` (Doo-Sabin: ``n = 3, 4, 6``),
   else Arb balls containing the exact values (``cos(2 pi j/n)``);
 * **which patches are splines**: every row of ``A`` of a new point in a quad face (every face but ``F``) of the
-  chart of sector 0 must be the biquadratic B-spline's corner rule (``3/4, 1/4`` in each direction: the tensor
+  chart of every sector must be the biquadratic B-spline's corner rule (``3/4, 1/4`` in each direction: the tensor
   product of Chaikin's weights), else the data are refused; then at level ``m >= 1`` the vertex at
   ``(a + 1/2, b + 1/2)`` (level-``m`` units) with ``max(a, b) = 1`` has four quads and its patch, over the cell
   ``[a, a + 1] x [b, b + 1]``, is the biquadratic B-spline of its ``3 x 3`` points (their refinement never reads
@@ -159,15 +159,19 @@ def _expected_row(index0: dict, x: int, y: int) -> dict[int, Fraction] | None:
     return row
 
 
-def _spline_check(name: str, matrix: sp.ImmutableMatrix, index0: dict) -> None:
-    """Every new point of a quad face in the chart takes the biquadratic rule; else :class:`NotApplicableError`."""
-    for (x, y), r in sorted(index0.items()):
-        want = _expected_row(index0, x, y)
+def _is_zero(x: sp.Expr) -> bool:
+    return bool(x == 0) if x.is_Number else sp.simplify(x) == 0
+
+
+def _spline_check(name: str, matrix: sp.ImmutableMatrix, index: dict) -> None:
+    """Every new point of a quad face in a sector's chart (``index``) takes the biquadratic rule; else refused."""
+    for (x, y), r in sorted(index.items()):
+        want = _expected_row(index, x, y)
         if want is None:
             continue
         got = {c: matrix[r, c] for c in range(matrix.cols) if matrix[r, c] != 0}
-        if any(sp.simplify(got.get(c, 0) - sp.Rational(w.numerator, w.denominator)) != 0 for c, w in want.items()) \
-                or set(got) - set(want):
+        if set(got) - set(want) or not all(_is_zero(got.get(c, 0) - sp.Rational(w.numerator, w.denominator))
+                                           for c, w in want.items()):
             raise NotApplicableError(f"scheme {name!r}: the new point at ({x}/4, {y}/4) of a quad face is not the biquadratic "
                                      "B-spline's corner rule (3/4, 1/4 in each direction): its regular part is not that "
                                      "spline, so there are no evaluation data")
@@ -200,13 +204,14 @@ def dual_evaldata(scheme: StencilScheme, n: int) -> DualEvalData:
     zm = zoo_matrix(scheme, n, DEPTH)
     nb, a = zm.neighbourhood, zm.matrix
     chart = sector_chart(nb)
-    index0 = chart_index(nb, chart, 0)
-    _spline_check(scheme.name, a, index0)
+    indices = [chart_index(nb, chart, s) for s in range(n)]
+    for index in indices:  # every sector: the rules are read at each point, not assumed to turn with the mesh
+        _spline_check(scheme.name, a, index)
     rows = [{c: a[r, c] for c in range(a.cols) if a[r, c] != 0} for r in range(a.rows)]
     exact = all(w.is_Rational for row in rows for w in row.values())
     with flint.ctx.workprec(PREC):
         matrix = matrix_numbers(rows, a.cols, exact)
-        patches = tuple(tuple(_picking(chart_index(nb, chart, s), cell, a.cols, exact) for cell in CELLS) for s in range(n))
+        patches = tuple(tuple(_picking(index, cell, a.cols, exact) for cell in CELLS) for index in indices)
         limit = limit_mask(matrix, exact)
     blocks = decomposition(matrix) if exact else None
     phi = None if blocks is None else tuple(tuple(tuple(p * b.basis for b in blocks) for p in face) for face in patches)

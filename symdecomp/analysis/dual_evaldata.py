@@ -145,17 +145,24 @@ def chart_index(nb: Neighbourhood, chart: dict, sector: int) -> dict[tuple[int, 
     return out
 
 
-def _expected_row(index0: dict, x: int, y: int) -> dict[int, Fraction] | None:
+def _two_scale(x: int) -> tuple[tuple[int, Fraction], tuple[int, Fraction]]:
+    """The level-1 point at ``x / 2`` (level-1 units) in one direction: its face's nearer and farther coarse points
+    (doubled level-0 coordinates) with Chaikin's weights; the face is the level-0 cell around ``round(x / 4)``."""
+    face = round(x / 4)
+    side = 1 if 4 * face < x else -1
+    return (2 * face + side, _CHAIKIN[0]), (2 * face - side, _CHAIKIN[1])
+
+
+def _expected_row(index: dict, x: int, y: int) -> dict[int, Fraction] | None:
     """The biquadratic corner rule of the level-1 point ``(x, y)`` (doubled level-1 units), or ``None`` in ``F``."""
-    fx, fy = round(x / 4), round(y / 4)
-    if (fx, fy) == (0, 0):
+    if (round(x / 4), round(y / 4)) == (0, 0):
         return None
     row: dict[int, Fraction] = {}
-    for cx, wx in ((2 * fx + (1 if 4 * fx < x else -1), _CHAIKIN[0]), (2 * fx - (1 if 4 * fx < x else -1), _CHAIKIN[1])):
-        for cy, wy in ((2 * fy + (1 if 4 * fy < y else -1), _CHAIKIN[0]), (2 * fy - (1 if 4 * fy < y else -1), _CHAIKIN[1])):
-            if (cx, cy) not in index0:
+    for cx, wx in _two_scale(x):
+        for cy, wy in _two_scale(y):
+            if (cx, cy) not in index:
                 return None
-            row[index0[(cx, cy)]] = wx * wy
+            row[index[(cx, cy)]] = wx * wy
     return row
 
 

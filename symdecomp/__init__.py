@@ -104,7 +104,10 @@ nothing else.
                    spectrum for every k and the comparison with the boundary curve (``mirror_threshold``);
                    evaluation data at crease, boundary and corner vertices, standard and BLZ rules: the eigen-decomposition over Q and
                    the picking matrices of the spline cells past the modified points (``sector_evaldata``),
-                   the patches evaluated from them (``sector_evaluation``);
+                   the patches evaluated from them (``sector_evaluation``); at an extraordinary face of a dual quad
+                   scheme whose regular part is the biquadratic B-spline (Doo-Sabin): the matrix, the ring cells' picking
+                   matrices and the decomposition over Q (``dual_evaldata``), the sectors evaluated from them
+                   (``dual_evaluation``);
                    exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
                    (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
@@ -134,7 +137,7 @@ nothing else.
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
                    map at one valence, ``zoo_characteristic``); dyadic limit positions for
                    the patch evaluator (``patch_eval``), the boundary one (``sharp_patch_eval``) and the crease, boundary and
-                   corner data (``sector_evaldata``); the tuning region with Reif's
+                   corner data (``sector_evaldata``), a dual scheme's face data (``dual_evaldata``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and
                    the artifact indicators (``artifacts``; a StencilScheme of the zoo's density and curvature regime from its
@@ -164,7 +167,8 @@ nothing else.
                    by the engine, the file zoo.tex (``zoo_derivations``), C1 and the curvature regime
                    for every valence as propositions, the file c1-every-n.tex (``every_n_derivations``),
                    the report of a zoo scheme (``report_zoo``), Stam's data file (``evaldata``), the
-                   crease, boundary and corner data file (``sector_evaldata``), meshes
+                   crease, boundary and corner data file (``sector_evaldata``), the data file of a dual scheme's faces
+                   (``dual_evaldata``), meshes
                    with per-vertex colours as PLY and OBJ (``colored_mesh``), figures (``plotting``):
                    Sections 2 and 4 (``plotting.polygons``), 5.1 (``plotting.tangent``), 5.2-5.3
                    (``plotting.elliptic``), 6 (``plotting.cbmatrix``), a mesh's extraordinary
@@ -184,7 +188,7 @@ nothing else.
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
-                   ``evaldata_cmd`` (creases and BLZ's rules, ``evaldata_sector``), ``inspect_cmd`` (its outputs
+                   ``evaldata_cmd`` (creases and BLZ's rules, ``evaldata_sector``; the zoo's faces, ``evaldata_dual``), ``inspect_cmd`` (its outputs
                    ``inspect_outputs``, its per-vertex table ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices

@@ -57,7 +57,8 @@ from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, sector_point
 from symdecomp.validate import cached, check_type
 
-__all__ = ["CELLS", "PREC", "SectorEvalData", "sector_evaldata", "global_point", "regular_row", "real_ball"]
+__all__ = ["CELLS", "PREC", "SectorEvalData", "sector_evaldata", "global_point", "regular_row", "real_ball", "matrix_numbers",
+           "limit_mask"]
 
 #: The cells ``(a, b)`` (lower-left corners, level-``n`` lattice) of a face's wide ring: ``2 <= max(a, b) <= 3``.
 CELLS = tuple((a, b) for b in range(4) for a in range(4) if max(a, b) >= 2)
@@ -204,7 +205,7 @@ def real_ball(w: sp.Expr) -> flint.arb:
     return z
 
 
-def _numbers(rows: list[dict], ncols: int, exact: bool):
+def matrix_numbers(rows: list[dict], ncols: int, exact: bool):
     """The sparse sympy ``rows`` as an ``fmpq_mat`` (exact) or an ``arb_mat`` (at the precision in force)."""
     out = (flint.fmpq_mat if exact else flint.arb_mat)(len(rows), ncols)
     for i, row in enumerate(rows):
@@ -233,7 +234,7 @@ def _picking(vertex: SharpVertex, refine3, near, index3: dict, face: int, cell: 
     return first * near + second * refine3
 
 
-def _limit(matrix, exact: bool) -> tuple:
+def limit_mask(matrix, exact: bool) -> tuple:
     """The left eigenvector of ``A`` for 1 summing to 1: the bordered system ``[[A^T - I, 1], [1^T, 0]]`` solved."""
     size = matrix.nrows()
     kind = flint.fmpq_mat if exact else flint.arb_mat
@@ -269,12 +270,12 @@ def sector_evaldata(scheme: Scheme, vertex: SharpVertex) -> SectorEvalData:
     exact = all(w.is_Rational for row in rows for w in row.values())
     index3 = {lab: i for i, lab in enumerate(labels3)}
     with flint.ctx.workprec(PREC):
-        refine3 = _numbers(rows, size, exact)
-        matrix = _numbers(rows[:size], size, exact)
+        refine3 = matrix_numbers(rows, size, exact)
+        matrix = matrix_numbers(rows[:size], size, exact)
         near = refine3 * matrix
         cells = tuple(tuple(_picking(vertex, refine3, near, index3, s, cell, exact) for cell in CELLS)
                       for s in range(vertex.faces))
-        limit = _limit(matrix, exact)
+        limit = limit_mask(matrix, exact)
     blocks = decomposition(matrix) if exact else None
     phi = None if blocks is None else tuple(tuple(tuple(p * b.basis for b in blocks) for p in face) for face in cells)
     return SectorEvalData(scheme.name, vertex, exact, matrix, refine3, cells, limit, modified, blocks, phi)

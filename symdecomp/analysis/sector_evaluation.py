@@ -27,7 +27,7 @@ from symdecomp.analysis.sector_evaldata import CELLS, PREC, SectorEvalData
 from symdecomp.errors import EvaluationError, InvalidInputError
 from symdecomp.validate import check_type
 
-__all__ = ["evaluate"]
+__all__ = ["evaluate", "control_points_matrix", "matrix_times"]
 
 
 def _level(u, v, level) -> int:
@@ -43,7 +43,7 @@ def _level(u, v, level) -> int:
     return n
 
 
-def _control_points(data: SectorEvalData, points):
+def control_points_matrix(data: SectorEvalData, points):
     rows = [list(p) for p in points] if hasattr(points, "__iter__") else None
     if not rows or len(rows) != data.size or len({len(p) for p in rows}) != 1 or not rows[0]:
         raise InvalidInputError(f"control points: need {data.size} points of one dimension d >= 1 (the closed 2-ring)")
@@ -71,7 +71,7 @@ def _check_parameters(data: SectorEvalData, face, u, v) -> tuple:
     return tuple(out)
 
 
-def _times(a, b, ball: bool):
+def matrix_times(a, b, ball: bool):
     if ball:
         a = a if isinstance(a, flint.arb_mat) else flint.arb_mat(a)
         b = b if isinstance(b, flint.arb_mat) else flint.arb_mat(b)
@@ -83,14 +83,14 @@ def _net(data: SectorEvalData, face: int, c: int, steps: int, control, ball: boo
     if route == "powers" or data.decomposition is None:
         coarse = control
         for _ in range(steps):
-            coarse = _times(data.matrix, coarse, ball)
-        return _times(data.cells[face][c], coarse, ball)
+            coarse = matrix_times(data.matrix, coarse, ball)
+        return matrix_times(data.cells[face][c], coarse, ball)
     net = None
     for block, phi in zip(data.decomposition, data.phi[face][c]):
-        coords = _times(block.left, control, ball)
+        coords = matrix_times(block.left, control, ball)
         for _ in range(steps):  # B_i^m on this block's coordinates only
-            coords = _times(block.block, coords, ball)
-        term = _times(phi, coords, ball)
+            coords = matrix_times(block.block, coords, ball)
+        term = matrix_times(phi, coords, ball)
         net = term if net is None else net + term
     return net
 
@@ -108,10 +108,10 @@ def evaluate(data: SectorEvalData, face: int, u, v, points, *, route: str = "eig
         raise InvalidInputError(f"route must be 'eigen' or 'powers', got {route!r:.40}")
     u, v = _check_parameters(data, face, u, v)
     with flint.ctx.workprec(PREC):
-        control, ball = _control_points(data, points)
+        control, ball = control_points_matrix(data, points)
         if u == 0 and v == 0:
             limit = flint.fmpq_mat(1, data.size, list(data.limit)) if data.exact else flint.arb_mat(1, data.size, list(data.limit))
-            row = _times(limit, control, ball)
+            row = matrix_times(limit, control, ball)
             return {"point": [row[0, j] for j in range(row.ncols())], "du": None, "dv": None, "level": None}
         n = _level(u, v, level)
         x, y = 2**n * u, 2**n * v

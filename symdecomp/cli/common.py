@@ -285,7 +285,7 @@ def add_budget_option(parser: argparse.ArgumentParser) -> None:
 
 
 #: The commands that analyse a scheme of the zoo (a StencilScheme), through its engine.
-ZOO_COMMANDS = ("spectrum", "masks", "check --certify", "c1", "artifacts", "report")
+ZOO_COMMANDS = ("spectrum", "masks", "check --certify", "c1", "artifacts", "report", "evaldata")
 
 
 def any_scheme_by_name(name: str):

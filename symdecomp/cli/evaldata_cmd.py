@@ -18,6 +18,9 @@ with K faces, K in the range, as JSON of exact rationals (format ``sharp-patches
 :mod:`symdecomp.output.evaldata`; evaluation in :mod:`symdecomp.analysis.sharp_evaluation`). ``--json``:
 ``{"out", "format", "scheme", "kind", "k", "bytes", "sizes"}``.
 
+``--scheme doo-sabin --n A:B`` (a scheme of the zoo): the data of its extraordinary faces, or one line saying why
+there are none (:mod:`symdecomp.cli.evaldata_dual`).
+
 ``--crease --k A:B`` (crease vertices with K faces on each side), and ``--boundary``/``--corner`` under BLZ's rules:
 the sector evaluation data (format ``sector-evaldata``, :mod:`symdecomp.output.sector_evaldata`), written by
 :mod:`symdecomp.cli.evaldata_sector`.
@@ -34,6 +37,7 @@ from symdecomp.cli.common import (
     face_range,
     flag,
     given,
+    is_stencil_scheme,
     print_json,
     progress,
     valence_range,
@@ -54,7 +58,8 @@ def register(sub) -> None:
         "(certified Arb balls), in the layout of the published data file; or as JSON decimal strings. "
         "With --scheme loop (JSON only): the same for Loop's (N+6)-point patch. With --boundary or --corner and "
         "--k A:B: the exact data (rationals) of the patches next to a boundary or corner vertex with K faces; with --crease "
-        "(or BLZ's rules): the sector data, an eigen-decomposition and the spline cells, exact or in Arb balls.",
+        "(or BLZ's rules): the sector data, an eigen-decomposition and the spline cells, exact or in Arb balls. With a scheme of the zoo whose "
+        "regular part is the biquadratic B-spline (--scheme doo-sabin) and --n A:B: the data of its n-sided faces (JSON).",
     )
     p.add_argument("--n", type=valence_range("evaldata"), action=Once, metavar="3:N",
                    help="valences 3..N (the binary file starts at 3); or a sharp vertex with --boundary or --corner")
@@ -73,7 +78,7 @@ def register(sub) -> None:
                    "D > 17 = the exact value correctly rounded to D significant digits (slower, one process)")
     add_pool_options(p, default_jobs=2)  # the binary file and JSON at 17 digits; JSON at D > 17 digits runs in this process
     flag(p, "--json", help="print a JSON summary")
-    add_scheme_option(p)
+    add_scheme_option(p, zoo=True)  # a scheme of the zoo: its faces' data (symdecomp.cli.evaldata_dual)
     add_quiet_option(p)
     p.set_defaults(func=run)
 
@@ -156,6 +161,10 @@ def run(args) -> int:
     from symdecomp.analysis.eigendata import check_eigendata_cost
     from symdecomp.output.evaldata import binary_chunks, decimal_valence, json_chunks, json_valence
 
+    if is_stencil_scheme(args.scheme):  # a scheme of the zoo: the data of its extraordinary faces, or why there are none
+        from symdecomp.cli.evaldata_dual import run_dual
+
+        return run_dual(args)
     kind = _sharp_kind(args)
     if kind is not None:
         return _run_sharp(args, kind)

@@ -44,7 +44,8 @@ from symdecomp.analysis.sector_evaldata import CELLS, PREC, SectorEvalData
 from symdecomp.errors import EvalDataFileError, SymdecompError
 from symdecomp.output.evaldata import load_document
 
-__all__ = ["SECTOR_FORMAT", "SECTOR_LAYOUT", "sector_entry", "sector_json_chunks", "read_sector_json"]
+__all__ = ["SECTOR_FORMAT", "SECTOR_LAYOUT", "sector_entry", "sector_json_chunks", "read_sector_json", "blocks_entry",
+           "sparse_rows", "number_text", "read_number", "read_matrix", "read_blocks"]
 
 SECTOR_FORMAT = "sector-evaldata"
 #: The one-line layout note of a document.
@@ -58,33 +59,38 @@ _RATIONAL = re.compile(r"-?[0-9]{1,4000}(/[0-9]{1,4000})?", re.ASCII)
 _BALL = re.compile(r"\[[-+0-9.e]{1,200} \+/- [0-9.e+-]{1,40}\]|[-+0-9.e]{1,200}", re.ASCII)
 
 
-def _text(x) -> str:
+def number_text(x) -> str:
     if isinstance(x, flint.arb):
         return x.str(80, radius=True, more=True)
     return str(x)
 
 
-def _sparse(m) -> list:
-    return [[[c, _text(m[i, c])] for c in range(m.ncols()) if m[i, c] != 0] for i in range(m.nrows())]
+def sparse_rows(m) -> list:
+    return [[[c, number_text(m[i, c])] for c in range(m.ncols()) if m[i, c] != 0] for i in range(m.nrows())]
 
 
-def _complex(z) -> str:
-    return f"{_text(z.real)} + {_text(z.imag)}j"
+def complex_text(z) -> str:
+    return f"{number_text(z.real)} + {number_text(z.imag)}j"
+
+
+def blocks_entry(decomposition) -> list | None:
+    """The eigen-decomposition over ``Q`` as the document's list of blocks (``None`` stays ``None``)."""
+    return None if decomposition is None else [
+        {"factor": [str(c) for c in b.factor], "multiplicity": b.multiplicity, "eigenvectors": b.eigenvectors,
+         "values": [complex_text(z) for z in b.values], "basis": sparse_rows(b.basis), "block": sparse_rows(b.block),
+         "left": sparse_rows(b.left)} for b in decomposition]
 
 
 def sector_entry(data: SectorEvalData) -> dict:
     """One vertex of the document from :class:`~symdecomp.analysis.sector_evaldata.SectorEvalData`."""
     with flint.ctx.workprec(PREC):
-        blocks = None if data.decomposition is None else [
-            {"factor": [str(c) for c in b.factor], "multiplicity": b.multiplicity, "eigenvectors": b.eigenvectors,
-             "values": [_complex(z) for z in b.values], "basis": _sparse(b.basis), "block": _sparse(b.block),
-             "left": _sparse(b.left)} for b in data.decomposition]
+        blocks = blocks_entry(data.decomposition)
         return {
             "kind": data.kind, "sectors": list(data.vertex.sectors), "size": data.size,
             "labels": [list(lab) for lab in data.vertex.ring_labels(2)], "exact": data.exact,
-            "matrix": _sparse(data.matrix), "limit": [_text(x) for x in data.limit],
+            "matrix": sparse_rows(data.matrix), "limit": [number_text(x) for x in data.limit],
             "modified": [list(lab) for lab in data.modified],
-            "cells": [[_sparse(p) for p in face] for face in data.cells], "decomposition": blocks,
+            "cells": [[sparse_rows(p) for p in face] for face in data.cells], "decomposition": blocks,
         }
 
 
@@ -98,30 +104,30 @@ def sector_json_chunks(entries: Iterable[dict], scheme: str, lattice: str) -> It
     yield "\n]}\n"
 
 
-def _number(text, exact: bool):
+def read_number(text, exact: bool):
     if not isinstance(text, str) or not (_RATIONAL if exact else _BALL).fullmatch(text):
         raise ValueError(f"{str(text)[:40]!r} is not an {'exact rational p or p/q' if exact else 'Arb ball [m +/- r]'}")
     return flint.fmpq(*map(int, text.split("/"))) if exact else flint.arb(text)
 
 
-def _matrix(rows, ncols: int, exact: bool):
+def read_matrix(rows, ncols: int, exact: bool):
     out = (flint.fmpq_mat if exact else flint.arb_mat)(len(rows), ncols)
     for i, row in enumerate(rows):
         for c, w in row:
             if isinstance(c, bool) or not isinstance(c, int) or not 0 <= c < ncols:
                 raise ValueError(f"column {str(c)[:20]} outside 0..{ncols - 1}")
-            out[i, c] = _number(w, exact)
+            out[i, c] = read_number(w, exact)
     return out
 
 
-def _blocks(entry, size: int) -> tuple[PrimaryBlock, ...]:
+def read_blocks(entry, size: int) -> tuple[PrimaryBlock, ...]:
     out = []
     for b in entry:
         factor = tuple(int(c) for c in b["factor"])
         d = (len(factor) - 1) * int(b["multiplicity"])
         values = tuple(flint.acb(*(flint.arb(t.strip()) for t in z[:-1].split(" + ", 1))) for z in b["values"])
-        out.append(PrimaryBlock(factor, int(b["multiplicity"]), int(b["eigenvectors"]), _matrix(b["basis"], d, True),
-                                _matrix(b["block"], d, True), _matrix(b["left"], size, True), values))
+        out.append(PrimaryBlock(factor, int(b["multiplicity"]), int(b["eigenvectors"]), read_matrix(b["basis"], d, True),
+                                read_matrix(b["block"], d, True), read_matrix(b["left"], size, True), values))
     if sum(b.block.nrows() for b in out) != size:
         raise ValueError("the decomposition's blocks do not add up to the 2-ring")
     return tuple(out)
@@ -142,14 +148,14 @@ def _data(entry, scheme: str, lattice: str) -> SectorEvalData:
     vertex, size, exact = _vertex(entry, lattice), int(entry["size"]), entry["exact"]
     if [tuple(lab) for lab in entry["labels"]] != list(vertex.ring_labels(2)) or not isinstance(exact, bool):
         raise ValueError(f"{vertex!r}: the labels do not match the 2-ring")
-    cells = tuple(tuple(_matrix(p, size, exact) for p in face) for face in entry["cells"])
+    cells = tuple(tuple(read_matrix(p, size, exact) for p in face) for face in entry["cells"])
     if len(cells) != vertex.faces or any(len(face) != len(CELLS) for face in cells):
         raise ValueError(f"{vertex!r}: need {vertex.faces} faces of {len(CELLS)} cells")
-    limit = tuple(_number(x, exact) for x in entry["limit"])
-    blocks = None if entry["decomposition"] is None else _blocks(entry["decomposition"], size)
+    limit = tuple(read_number(x, exact) for x in entry["limit"])
+    blocks = None if entry["decomposition"] is None else read_blocks(entry["decomposition"], size)
     phi = None if blocks is None else tuple(tuple(tuple(p * b.basis for b in blocks) for p in face) for face in cells)
     modified = tuple(tuple(int(x) for x in lab) for lab in entry["modified"])
-    return SectorEvalData(scheme, vertex, exact, _matrix(entry["matrix"], size, exact), None, cells, limit, modified,
+    return SectorEvalData(scheme, vertex, exact, read_matrix(entry["matrix"], size, exact), None, cells, limit, modified,
                           blocks, phi)
 
 

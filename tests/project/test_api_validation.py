@@ -23,6 +23,7 @@ import pytest
 import symdecomp as sd
 from symdecomp.algebra.triangle_bezier import bezier_indices
 from symdecomp.analysis.components import initial_vector_condition
+from symdecomp.analysis.dual_evaldata import dual_evaldata
 from symdecomp.analysis.elliptic import scale_ratio_squared
 from symdecomp.analysis.evolution import subdivision_matrix_numeric
 from symdecomp.analysis.frequency import one_ring_matrices
@@ -69,6 +70,7 @@ INTEGERS = [
     (sd.zoo_matrix, "n", dict(scheme=DOO_SABIN), 5, 3, False),
     (sd.zoo_spectrum, "n", dict(scheme=DOO_SABIN), 5, 3, False),
     (sd.zoo_spectrum, "digits", dict(scheme=DOO_SABIN, n=5), 10, 1, True),
+    (dual_evaldata, "n", dict(scheme=DOO_SABIN), 5, 3, False),
     (sd.zoo_masks, "n", dict(scheme=DOO_SABIN), 5, 3, False),
     (sd.zoo_masks, "digits", dict(scheme=DOO_SABIN, n=5), 10, 1, True),
     (sd.certify_zoo, "n", dict(scheme=DOO_SABIN), 5, 3, False),
@@ -154,6 +156,7 @@ INTEGERS = [
 SCHEMES = [
     (sd.zoo_matrix, dict(n=5)),
     (sd.zoo_spectrum, dict(n=5)),
+    (dual_evaldata, dict(n=5)),
     (sd.zoo_masks, dict(n=5)),
     (sd.certify_zoo, dict(n=5)),
     (sd.zoo_artifacts, dict(n=5)),

@@ -25,7 +25,7 @@ import flint
 
 from symdecomp.analysis.dual_evaldata import CELLS, DualEvalData
 from symdecomp.analysis.sector_evaldata import PREC
-from symdecomp.analysis.sector_evaluation import control_points_matrix, matrix_times
+from symdecomp.analysis.sector_evaluation import cell_net, control_points_matrix, limit_values, tensor_values
 from symdecomp.errors import EvaluationError, InvalidInputError
 from symdecomp.validate import check_type
 
@@ -64,24 +64,6 @@ def _check_parameters(data: DualEvalData, sector, u, v) -> tuple:
     return tuple(out)
 
 
-def _net(data: DualEvalData, sector: int, c: int, steps: int, control, ball: bool, route: str):
-    """The level-``m`` grid of cell ``c`` of ``sector``: powers of ``A``, or the eigen-expansion."""
-    if route == "powers" or data.decomposition is None:
-        fine = control
-        for _ in range(steps):
-            fine = matrix_times(data.matrix, fine, ball)
-        return matrix_times(data.patches[sector][c], fine, ball)
-    assert data.phi is not None  # exact data carry their eigenbasis functions' grids
-    net = None
-    for block, phi in zip(data.decomposition, data.phi[sector][c]):
-        coords = matrix_times(block.left, control, ball)
-        for _ in range(steps):  # B_i^m on this block's coordinates only
-            coords = matrix_times(block.block, coords, ball)
-        term = matrix_times(phi, coords, ball)
-        net = term if net is None else net + term
-    return net
-
-
 def evaluate(data: DualEvalData, sector: int, u, v, points, *, route: str = "eigen", level: int | None = None) -> dict:
     """``{"point", "du", "dv", "level"}`` of sector ``sector`` at ``(u, v)`` from the ``K`` control ``points``.
 
@@ -97,20 +79,10 @@ def evaluate(data: DualEvalData, sector: int, u, v, points, *, route: str = "eig
     with flint.ctx.workprec(PREC):
         control, ball = control_points_matrix(data, points)
         if u == 0 and v == 0:
-            kind = flint.fmpq_mat if data.exact else flint.arb_mat
-            row = matrix_times(kind(1, data.size, list(data.limit)), control, ball)
-            return {"point": [row[0, j] for j in range(row.ncols())], "du": None, "dv": None, "level": None}
+            return limit_values(data, control, ball)
         m = _level(u, v, level)
         x, y = 2**m * u, 2**m * v
         a, b = min(math.floor(x), 1), min(math.floor(y), 1)
-        net = _net(data, sector, CELLS.index((a, b)), m, control, ball, route)
-        s, t = x - a, y - b
-        number = (lambda q: flint.arb(q.numerator) / q.denominator) if ball else (lambda q: flint.fmpq(q.numerator, q.denominator))
-        s, t = number(s), number(t)
-        out: dict = {"level": m}
-        for key, (ds, dt) in (("point", (0, 0)), ("du", (1, 0)), ("dv", (0, 1))):
-            bs, bt = quadratic_bspline_basis(s, ds), quadratic_bspline_basis(t, dt)
-            scale = 2 ** (m * (ds + dt))
-            out[key] = [sum((bs[i] * bt[j] * net[i + 3 * j, k] for j in range(3) for i in range(3)), 0 * s) * scale
-                        for k in range(net.ncols())]
-        return out
+        c = CELLS.index((a, b))
+        net = cell_net(data, data.patches[sector][c], data.phi[sector][c] if data.phi else None, m, control, ball, route)
+        return tensor_values(net, x - a, y - b, quadratic_bspline_basis, m, ball)

@@ -27,7 +27,7 @@ from symdecomp.analysis.sector_evaldata import CELLS, PREC, SectorEvalData
 from symdecomp.errors import EvaluationError, InvalidInputError
 from symdecomp.validate import check_type
 
-__all__ = ["evaluate", "control_points_matrix", "matrix_times"]
+__all__ = ["evaluate", "cell_net", "control_points_matrix", "limit_values", "matrix_times", "tensor_values"]
 
 
 def _level(u, v, level) -> int:
@@ -78,21 +78,48 @@ def matrix_times(a, b, ball: bool):
     return a * b
 
 
-def _net(data: SectorEvalData, face: int, c: int, steps: int, control, ball: bool, route: str):
-    """The level-``n`` B-spline net of cell ``c`` of ``face``: powers of ``A``, or the eigen-expansion."""
+def cell_net(data, picking, phi_cell, steps: int, control, ball: bool, route: str):
+    """One cell's B-spline net after ``steps`` steps: ``picking . A^steps . C`` by powers of ``data.matrix``, or Stam's
+    eigen-expansion ``sum_i phi_i B_i^steps (W^-1 C)_i`` over ``data.decomposition`` (``phi_cell``: the cell's
+    ``picking W_i``). ``data``: any evaluation data with ``matrix`` and ``decomposition`` (sectors, dual faces)."""
     if route == "powers" or data.decomposition is None:
         coarse = control
         for _ in range(steps):
             coarse = matrix_times(data.matrix, coarse, ball)
-        return matrix_times(data.cells[face][c], coarse, ball)
+        return matrix_times(picking, coarse, ball)
     net = None
-    for block, phi in zip(data.decomposition, data.phi[face][c]):
+    for block, phi in zip(data.decomposition, phi_cell):
         coords = matrix_times(block.left, control, ball)
         for _ in range(steps):  # B_i^m on this block's coordinates only
             coords = matrix_times(block.block, coords, ball)
         term = matrix_times(phi, coords, ball)
         net = term if net is None else net + term
     return net
+
+
+def limit_values(data, control, ball: bool) -> dict:
+    """``{"point", "du", "dv", "level"}`` at the extraordinary point: the limit mask ``data.limit`` applied to the
+    control points, no derivatives."""
+    kind = flint.fmpq_mat if data.exact else flint.arb_mat
+    row = matrix_times(kind(1, data.size, list(data.limit)), control, ball)
+    return {"point": [row[0, j] for j in range(row.ncols())], "du": None, "dv": None, "level": None}
+
+
+def tensor_values(net, s: Fraction, t: Fraction, basis, level: int, ball: bool) -> dict:
+    """``{"point", "du", "dv", "level"}`` of the tensor-product B-spline ``net`` (rows ``i + d j``, ``d`` the basis's
+    length) at local ``(s, t)`` of a cell at ``level`` (derivatives scaled by ``2^level`` to the patch's parameters);
+    ``basis(t, derivative)``: the uniform B-spline basis of the degree."""
+    if ball:
+        s, t = flint.arb(s.numerator) / s.denominator, flint.arb(t.numerator) / t.denominator
+    else:
+        s, t = flint.fmpq(s.numerator, s.denominator), flint.fmpq(t.numerator, t.denominator)
+    out: dict = {"level": level}
+    for key, (ds, dt) in (("point", (0, 0)), ("du", (1, 0)), ("dv", (0, 1))):
+        bs, bt = basis(s, ds), basis(t, dt)  # exact numbers or balls
+        d, scale = len(bs), 2 ** (level * (ds + dt))
+        out[key] = [sum((bs[i] * bt[j] * net[i + d * j, k] for j in range(d) for i in range(d)), 0 * s) * scale
+                    for k in range(net.ncols())]
+    return out
 
 
 def evaluate(data: SectorEvalData, face: int, u, v, points, *, route: str = "eigen", level: int | None = None) -> dict:
@@ -110,22 +137,10 @@ def evaluate(data: SectorEvalData, face: int, u, v, points, *, route: str = "eig
     with flint.ctx.workprec(PREC):
         control, ball = control_points_matrix(data, points)
         if u == 0 and v == 0:
-            limit = flint.fmpq_mat(1, data.size, list(data.limit)) if data.exact else flint.arb_mat(1, data.size, list(data.limit))
-            row = matrix_times(limit, control, ball)
-            return {"point": [row[0, j] for j in range(row.ncols())], "du": None, "dv": None, "level": None}
+            return limit_values(data, control, ball)
         n = _level(u, v, level)
         x, y = 2**n * u, 2**n * v
         a, b = min(math.floor(x), 3), min(math.floor(y), 3)
-        net = _net(data, face, CELLS.index((a, b)), n - 2, control, ball, route)
-        s, t = x - a, y - b
-        if ball:
-            s, t = flint.arb(s.numerator) / s.denominator, flint.arb(t.numerator) / t.denominator
-        else:
-            s, t = flint.fmpq(s.numerator, s.denominator), flint.fmpq(t.numerator, t.denominator)
-        out: dict = {"level": n}
-        for key, (ds, dt) in (("point", (0, 0)), ("du", (1, 0)), ("dv", (0, 1))):
-            bs, bt = bspline_basis(s, ds), bspline_basis(t, dt)  # object arrays of exact numbers or balls
-            scale = 2 ** (n * (ds + dt))
-            out[key] = [sum((bs[i] * bt[j] * net[i + 4 * j, k] for j in range(4) for i in range(4)), 0 * s) * scale
-                        for k in range(net.ncols())]
-        return out
+        c = CELLS.index((a, b))
+        net = cell_net(data, data.cells[face][c], data.phi[face][c] if data.phi else None, n - 2, control, ball, route)
+        return tensor_values(net, x - a, y - b, bspline_basis, n, ball)

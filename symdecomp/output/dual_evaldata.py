@@ -29,7 +29,6 @@ basis; ``A^m C = sum_i W_i B_i^m left_i C``); at ``(0, 0)``: ``limit . C``. :fun
 
 from __future__ import annotations
 
-import json
 from collections.abc import Iterable, Iterator
 
 import flint
@@ -37,7 +36,7 @@ import flint
 from symdecomp.analysis.dual_evaldata import CELLS, DualEvalData
 from symdecomp.analysis.sector_evaldata import PREC
 from symdecomp.errors import EvalDataFileError, SymdecompError
-from symdecomp.output.evaldata import load_document
+from symdecomp.output.evaldata import document_chunks, load_document
 from symdecomp.output.sector_evaldata import blocks_entry, number_text, read_blocks, read_matrix, read_number, sparse_rows
 
 __all__ = ["DUAL_FORMAT", "DUAL_LAYOUT", "dual_entry", "dual_json_chunks", "read_dual_json"]
@@ -67,10 +66,7 @@ def dual_json_chunks(entries: Iterable[dict], scheme: str, lattice: str) -> Iter
     """The document piece by piece, one face per line (:func:`dual_entry` entries)."""
     head = {"format": DUAL_FORMAT, "scheme": scheme, "lattice": lattice, "layout": DUAL_LAYOUT,
             "cells": [list(c) for c in CELLS]}
-    yield json.dumps(head)[:-1] + ', "faces": [\n'
-    for i, entry in enumerate(entries):
-        yield ("" if i == 0 else ",\n") + json.dumps(entry, separators=(",", ":"))
-    yield "\n]}\n"
+    return document_chunks(head, "faces", entries)
 
 
 def _data(entry, scheme: str) -> DualEvalData:

@@ -69,6 +69,7 @@ from symdecomp.validate import FLOAT_DIGITS
 __all__ = [
     "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "read_binary", "json_chunks",
     "json_valence", "decimal_valence", "read_json", "sharp_entry", "sharp_json_chunks", "read_sharp_json", "load_document",
+    "document_chunks",
 ]
 
 
@@ -290,7 +291,13 @@ def sharp_entry(data) -> dict:
 def sharp_json_chunks(entries: Iterable[dict], scheme: str, lattice: str) -> Iterator[str]:
     """The boundary/corner JSON document piece by piece, one vertex per line (:func:`sharp_entry` entries)."""
     head = {"format": SHARP_FORMAT, "scheme": scheme, "lattice": lattice, "layout": SHARP_LAYOUT}
-    yield json.dumps(head)[:-1] + ', "vertices": [\n'
+    return document_chunks(head, "vertices", entries)
+
+
+def document_chunks(head: dict, key: str, entries: Iterable[dict]) -> Iterator[str]:
+    """A JSON document ``head`` plus the list ``key`` of ``entries``, streamed piece by piece, one entry per line (the
+    sharp, sector and dual evaluation data files: nothing holds the whole document)."""
+    yield json.dumps(head)[:-1] + f', "{key}": [\n'
     for i, entry in enumerate(entries):
         yield ("" if i == 0 else ",\n") + json.dumps(entry, separators=(",", ":"))
     yield "\n]}\n"

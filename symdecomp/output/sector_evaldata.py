@@ -33,7 +33,6 @@ Evaluation (:mod:`symdecomp.analysis.sector_evaldata`; the ``layout`` string say
 
 from __future__ import annotations
 
-import json
 import re
 from collections.abc import Iterable, Iterator
 
@@ -42,7 +41,7 @@ import flint
 from symdecomp.algebra.primary_decomposition import PrimaryBlock
 from symdecomp.analysis.sector_evaldata import CELLS, PREC, SectorEvalData
 from symdecomp.errors import EvalDataFileError, SymdecompError
-from symdecomp.output.evaldata import load_document
+from symdecomp.output.evaldata import document_chunks, load_document
 
 __all__ = ["SECTOR_FORMAT", "SECTOR_LAYOUT", "sector_entry", "sector_json_chunks", "read_sector_json", "blocks_entry",
            "sparse_rows", "number_text", "read_number", "read_matrix", "read_blocks"]
@@ -98,10 +97,7 @@ def sector_json_chunks(entries: Iterable[dict], scheme: str, lattice: str) -> It
     """The document piece by piece, one vertex per line (:func:`sector_entry` entries)."""
     head = {"format": SECTOR_FORMAT, "scheme": scheme, "lattice": lattice, "layout": SECTOR_LAYOUT,
             "cells": [list(c) for c in CELLS]}
-    yield json.dumps(head)[:-1] + ', "vertices": [\n'
-    for i, entry in enumerate(entries):
-        yield ("" if i == 0 else ",\n") + json.dumps(entry, separators=(",", ":"))
-    yield "\n]}\n"
+    return document_chunks(head, "vertices", entries)
 
 
 def read_number(text, exact: bool):

@@ -15,6 +15,7 @@ from symdecomp.errors import EvalDataFileError
 from symdecomp.output import dual_evaldata as dual_file
 from symdecomp.output.dual_evaldata import read_dual_json
 from symdecomp.schemes.stencil_files import load_zoo
+from tests.cli.evaldata_refusals import assert_refused
 
 PARAMS = [(Fraction(3, 8), Fraction(5, 16)), (Fraction(0), Fraction(0)), (Fraction(1, 64), Fraction(1, 80)), (Fraction(1), Fraction(1, 2))]
 VARIANT = Path(__file__).parents[1] / "corpus" / "doo-sabin-rational-gon.toml"
@@ -75,11 +76,7 @@ def test_the_layout_is_the_format_docstring_s():
     (["--scheme", "doo-sabin", "--n", "3", "--jobs", "2"], "--jobs does not apply to --scheme doo-sabin"),
 ])
 def test_bad_input_one_line_exit_2(tmp_path, capsys, argv, message):
-    out = tmp_path / "x.json"
-    assert main(["evaldata", *argv, "--out", str(out)]) == 2
-    err = capsys.readouterr().err.strip()
-    assert message in err and "\n" not in err and "Traceback" not in err
-    assert not out.exists()
+    assert_refused(argv, message, tmp_path, capsys)
 
 
 def test_a_malformed_file_is_one_line(tmp_path):

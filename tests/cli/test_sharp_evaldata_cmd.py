@@ -10,6 +10,7 @@ from symdecomp.cli import main
 from symdecomp.output.evaldata import read_sharp_json
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.sector import SharpVertex
+from tests.cli.evaldata_refusals import assert_refused
 
 
 def test_boundary_file_and_summary(tmp_path, capsys):
@@ -47,8 +48,4 @@ def test_loop_corner_json_summary_matches_the_api(tmp_path, capsys):
     ([], "give --n 3:N"),
 ])
 def test_bad_input_one_line_exit_2(tmp_path, capsys, argv, message):
-    out = tmp_path / "x.json"
-    assert main(["evaldata", *argv, "--out", str(out)]) == 2
-    err = capsys.readouterr().err.strip()
-    assert message in err and "\n" not in err and "Traceback" not in err
-    assert not out.exists()
+    assert_refused(argv, message, tmp_path, capsys)

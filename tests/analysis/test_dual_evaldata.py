@@ -25,7 +25,7 @@ from symdecomp.schemes.stencils import J, M
 
 DOO_SABIN = load_zoo("doo-sabin")
 X = sp.Symbol("x")
-VARIANT = Path(__file__).parents[1] / "corpus" / "doo-sabin-rational-gon.toml"
+VARIANT = Path(__file__).parents[1] / "corpus" / "zoo" / "doo-sabin-rational-gon.toml"
 PARAMS = [(Fraction(1, 3), Fraction(1, 5)), (Fraction(7, 8), Fraction(1, 16)), (Fraction(1), Fraction(1)),
           (Fraction(3, 64), Fraction(5, 128)), (Fraction(0), Fraction(2, 3))]
 

@@ -18,7 +18,7 @@ from symdecomp.schemes.stencil_files import load_zoo
 from tests.cli.evaldata_refusals import assert_refused
 
 PARAMS = [(Fraction(3, 8), Fraction(5, 16)), (Fraction(0), Fraction(0)), (Fraction(1, 64), Fraction(1, 80)), (Fraction(1), Fraction(1, 2))]
-VARIANT = Path(__file__).parents[1] / "corpus" / "doo-sabin-rational-gon.toml"
+VARIANT = Path(__file__).parents[1] / "corpus" / "zoo" / "doo-sabin-rational-gon.toml"
 
 
 def test_the_file_evaluates_like_the_api_and_is_deterministic(tmp_path, capsys):

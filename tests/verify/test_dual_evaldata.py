@@ -13,7 +13,7 @@ from symdecomp.schemes.stencil_files import load_zoo
 from symdecomp.verify.dual_evaldata import dyadic_check, regular_face_mask
 
 DOO_SABIN = load_zoo("doo-sabin")
-VARIANT = Path(__file__).parents[1] / "corpus" / "doo-sabin-rational-gon.toml"
+VARIANT = Path(__file__).parents[1] / "corpus" / "zoo" / "doo-sabin-rational-gon.toml"
 
 
 def test_the_regular_face_mask_is_derived_and_is_the_centroid():

@@ -125,6 +125,10 @@ def print_report(original, mesh, result, table: list[dict], from_faces) -> None:
     if not original.defects.is_empty():
         parts = [f"{len(v)} {k.replace('_', ' ')}" for k, v in original.defects.as_dict().items() if v]
         print(f"left out of the file: {', '.join(parts)}")
+    edits = original.defects.hierarchical_edits
+    if edits:
+        print(f"hierarchical edits left out (lines {', '.join(str(line) for line, _ in edits)}; acting from level "
+              f"{min(level for _, level in edits)} on): the analysis is of the unedited surface of the control mesh")
 
 
 def color_values(result, table: list[dict], what: str, points: np.ndarray) -> np.ndarray:

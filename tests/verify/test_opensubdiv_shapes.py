@@ -15,8 +15,8 @@ from symdecomp.verify.opensubdiv import build as osd_build
 
 SHAPES = Path(__file__).resolve().parent / "opensubdiv_shapes"
 ALL = sorted(SHAPES.glob("*.obj"))
-#: Hierarchical edits change the surface at refined levels; OpenSubdiv 3 dropped them (its compatibility notes), and
-#: the reader refuses them with the line.
+#: Hierarchical edits change the surface at refined levels; OpenSubdiv 3 dropped them (its compatibility notes): the
+#: reader leaves them out and lists them with their line and level, and the unedited surface is analysed.
 EDITS = [p for p in ALL if re.search(r"^t (vertex|edge|face)edit ", p.read_text(), re.M)]
 TAGGED = [p for p in ALL if p not in EDITS]
 QUICK = {"catmark_cube_creases1", "loop_cube_creases0"}
@@ -66,12 +66,28 @@ def test_oracle_mesh_agrees_with_opensubdiv(path, capsys):
     assert data["position_disagreement"] <= 1e-12 and data["normal_disagreement"] <= 1e-12, data
 
 
+def _edit_levels(line: str) -> int:
+    """The first level an edit line acts at, from its paths as the shape's text spells them (``length, face, ..``)."""
+    words = line.split()
+    kind, ints = words[1], [int(w) for w in words[3:3 + int(words[2].split("/")[0])]]
+    levels, k = [], 0
+    while k < len(ints):
+        levels.append(ints[k] - (1 if kind == "faceedit" else 2))
+        k += 1 + ints[k]
+    return min(levels)
+
+
 @pytest.mark.parametrize("path", EDITS, ids=[p.stem for p in EDITS])
-def test_hierarchical_edits_are_refused_with_their_line(path, capsys):
+def test_hierarchical_edits_are_read_left_out_and_listed_with_their_line_and_level(path, capsys):
     lines = path.read_text().splitlines()
-    first = next(i for i, line in enumerate(lines, 1) if re.match(r"t (vertex|edge|face)edit ", line))
-    tag = lines[first - 1].split()[1]
-    assert main(["inspect", str(path), "--quiet"]) == 2
+    edits = [[i, _edit_levels(line)] for i, line in enumerate(lines, 1) if re.match(r"t (vertex|edge|face)edit ", line)]
+    assert edits and all(level >= 1 for _, level in edits)  # every edit of these shapes acts at a refined level
+    code, data = _json(capsys, ["inspect", str(path)])
+    assert code == data["exit_status"] == 1 and data["defects"]["hierarchical_edits"] == edits
+    assert sum(row["count"] for row in data["kinds"]) > 0
+    assert main(["inspect", str(path), "--quiet"]) == 1
+    out = capsys.readouterr().out
+    assert f"hierarchical edits left out (lines {', '.join(str(e[0]) for e in edits)}; acting from level " in out
+    assert main(["inspect", str(path), "--strict", "--quiet"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and f"line {first}: tag '{tag}': hierarchical edits are refused by design: " in err
-    assert f"remove the 't {tag}' lines to analyse the unedited surface" in err
+    assert err.count("\n") == 1 and f"line {edits[0][0]}: a hierarchical edit (acting at level {edits[0][1]}) is left out" in err

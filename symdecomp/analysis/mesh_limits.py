@@ -199,6 +199,11 @@ class MeshLimits:
                 out.update({int(v): f"{kind}: {masks}" for v in self.kinds.rings[kind][0]})
         return dict(sorted(out.items()))
 
+    def no_limit(self) -> dict[int, str]:
+        """Vertex -> why it has a computed outcome (:attr:`VertexKinds.outcomes`) but no limit point: off the
+        surface, or not computed for such a vertex."""
+        return {v: o.no_limit for v, o in self.kinds.outcomes.items()}
+
 
 #: Vertices per block when a kind's masks are applied: bounds the temporary ``(block, ring, 3)`` arrays.
 BLOCK_VERTICES = 1 << 16

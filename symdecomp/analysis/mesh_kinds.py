@@ -141,17 +141,18 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool):
     """The kind of ``v`` and the rotation that puts ``a_0`` on its first sharp edge; or why it is not analysed (a
     string); or its computed :class:`~symdecomp.analysis.mesh_outcomes.Outcome` (transient tags, a fan judged by its
     spectrum)."""
-    from symdecomp.analysis.mesh_outcomes import decay, fan_outcome, transient
+    from symdecomp.analysis.mesh_outcomes import decay, fan_outcome, transient, transition_weights
 
     faces = len(fan) if closed else len(fan) - 1
     sharp = _edge_sharpness(mesh, v, fan, closed)
     vertex_sharpness = mesh.tags.corners.get(v, Fraction(0))
     kind = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
     if kind == _TRANSIENT:
+        weights = transition_weights(sharp, vertex_sharpness, mesh.tags.crease_method)
         levels, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
         eventual = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
         if isinstance(eventual, tuple):
-            return transient(eventual[0], levels, _cause(mesh, v, fan, closed))
+            return transient(eventual[0], levels, _cause(mesh, v, fan, closed), weights)
         kind = eventual
     if kind == _SPECTRUM:
         return fan_outcome(faces, closed, sharp, vertex_sharpness, mesh.tags.interpolate_boundary)

@@ -31,7 +31,7 @@ turn its normal). With ``exact=True`` the limit positions are also computed exac
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import sympy as sp
@@ -42,7 +42,7 @@ from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_memory, check_type
 
-__all__ = ["KindMasks", "MeshLimits", "kind_masks", "mesh_limits", "float_points", "exact_as_floats", "exact_position"]
+__all__ = ["KindMasks", "MeshLimits", "kind_masks", "mesh_limits", "float_points", "exact_as_floats", "exact_position", "apply_masks"]
 
 
 @dataclass(frozen=True)
@@ -185,6 +185,8 @@ class MeshLimits:
     exact: dict
     #: Vertex -> why its float limit is missing although its kind has masks (coordinates too large for doubles).
     numeric: dict
+    #: Transient vertex -> why its limit frame was not computed (:mod:`symdecomp.analysis.mesh_transient`).
+    unresolved: dict = field(default_factory=dict)
 
     def analysed(self) -> np.ndarray:
         """Boolean per vertex: whether it has a limit position."""
@@ -202,7 +204,7 @@ class MeshLimits:
     def no_limit(self) -> dict[int, str]:
         """Vertex -> why it has a computed outcome (:attr:`VertexKinds.outcomes`) but no limit point: off the
         surface, or not computed for such a vertex."""
-        return {v: o.no_limit for v, o in self.kinds.outcomes.items()}
+        return {v: self.unresolved.get(v, o.no_limit) for v, o in self.kinds.outcomes.items() if np.isnan(self.limits[v, 0])}
 
 
 #: Vertices per block when a kind's masks are applied: bounds the temporary ``(block, ring, 3)`` arrays.
@@ -223,7 +225,9 @@ def _orientation(points: np.ndarray, rings: np.ndarray, edge_count: int, closed:
     return _cross(a[:, : nxt.shape[1]], nxt).sum(axis=1)
 
 
-def _apply(points: np.ndarray, rings: np.ndarray, masks: KindMasks, edge_count: int) -> tuple:
+def apply_masks(points: np.ndarray, rings: np.ndarray, masks: KindMasks, edge_count: int) -> tuple:
+    """``(limits, unit normals, tangents)`` of the vertices whose 1-rings (rows of indices into ``points``, the masks'
+    order) are ``rings``; ``edge_count``: the edge neighbours ``a_i`` in a ring."""
     m = len(rings)
     limit, cross, tangents = np.empty((m, 3)), np.empty((m, 3)), np.empty((m, 2, 3))
     turn = 0.0
@@ -276,7 +280,7 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
         ids, rings = kinds.rings[kind]
         edge_count = kind.faces + (0 if kind.closed else 1)
         with np.errstate(all="ignore"):  # coordinates near the double range: scaled, and what overflows is named below
-            limit, normals[ids], tangent = _apply(scaled, rings, m, edge_count)
+            limit, normals[ids], tangent = apply_masks(scaled, rings, m, edge_count)
             limits[ids], tangents[ids] = limit * scale, tangent * scale
         bad = ids[~np.isfinite(limits[ids]).all(axis=1)]
         limits[bad], normals[bad], tangents[bad] = np.nan, np.nan, np.nan
@@ -284,7 +288,26 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
         weights = exact_position(scheme, m) if exact else None
         if weights is not None:
             exact_limits.update({int(v): _exact_limit(mesh, ring, weights) for v, ring in zip(ids, rings.tolist())})
-    return MeshLimits(scheme.name, kinds, masks, limits, normals, tangents, dict(sorted(exact_limits.items())), overflow)
+    unresolved = _transient(mesh, scheme, kinds, (limits, normals, tangents), wrap)
+    return MeshLimits(scheme.name, kinds, masks, limits, normals, tangents, dict(sorted(exact_limits.items())), overflow,
+                      unresolved)
+
+
+def _transient(mesh: PolygonMesh, scheme: Scheme, kinds: VertexKinds, frames: tuple, wrap) -> dict[int, str]:
+    """The limit frames of the transient vertices (:mod:`symdecomp.analysis.mesh_transient`), vertex by vertex, into
+    ``frames``; returns why, where one is not computed."""
+    from symdecomp.analysis.mesh_transient import transient_frame
+
+    todo = [v for v, o in kinds.outcomes.items() if o.eventual is not None]
+    unresolved = {}
+    for v in wrap(todo, len(todo), "transient vertices"):
+        frame = transient_frame(mesh, scheme, v, kinds.outcomes[v])
+        if isinstance(frame, str):
+            unresolved[v] = frame
+            continue
+        for array, value in zip(frames, frame):
+            array[v] = value
+    return unresolved
 
 
 def exact_as_floats(values) -> tuple[float, ...]:

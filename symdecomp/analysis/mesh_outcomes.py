@@ -31,9 +31,9 @@ subject:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
-__all__ = ["Outcome", "decay", "off_surface", "transient", "fan_outcome", "spectrum_verdict"]
+__all__ = ["Outcome", "decay", "off_surface", "transient", "transition_weights", "fan_outcome", "spectrum_verdict"]
 
 
 @dataclass(frozen=True)
@@ -54,6 +54,8 @@ class Outcome:
     on_surface: bool = True
     #: A fan judged by its spectrum: ``(faces, closed, edge sharpness, vertex sharpness, boundary interpolation)``.
     fan: tuple | None = None
+    #: Transient: the fractional weights where its rule changes (:func:`transition_weights`; not part of the row).
+    weights: tuple = field(default=(), compare=False)
 
     @property
     def no_limit(self) -> str:
@@ -89,12 +91,28 @@ def decay(edges: list, vertex, method: str) -> tuple[int, list, object]:
     return levels, [s if s == math.inf else 0 for s in edges], vertex if vertex == math.inf else 0
 
 
-def transient(eventual, levels: int, cause: str) -> Outcome:
-    """A vertex that is of kind ``eventual`` after ``levels`` steps (module docstring); ``cause``: its level-0 tags."""
+def transition_weights(edges: list, vertex, method: str) -> tuple:
+    """The fractional weights of the levels where the vertex's rule changes on the way of :func:`decay` (OpenSubdiv's
+    ``ComputeFractionalWeightAtVertex``, :func:`~symdecomp.schemes.sharp.fractional_weight`), exactly."""
+    from symdecomp.schemes.sharp import SharpOptions, child_edge_sharpnesses, decrement, fractional_weight, vertex_rule_kind
+
+    options = SharpOptions(crease_method=method)
+    out = []
+    while any(0 < s < math.inf for s in list(edges) + [vertex]):
+        child, child_vertex = child_edge_sharpnesses(edges, options), decrement(vertex)
+        if vertex_rule_kind(vertex, edges) is not vertex_rule_kind(child_vertex, child):
+            out.append(fractional_weight(vertex, child_vertex, edges, child, options))
+        edges, vertex = child, child_vertex
+    return tuple(out)
+
+
+def transient(eventual, levels: int, cause: str, weights: tuple = ()) -> Outcome:
+    """A vertex that is of kind ``eventual`` after ``levels`` steps (module docstring); ``cause``: its level-0 tags;
+    ``weights``: :func:`transition_weights`."""
     after = f"after {levels} level{'s' * (levels != 1)}"
     return Outcome(f"{eventual} {after}", eventual, levels,
                    reason=f"{cause}: {after} (OpenSubdiv's sharpness decay) the vertex is a {eventual} and stays so; the "
-                   "verdicts are that kind's")
+                   "verdicts are that kind's", weights=weights)
 
 
 def _fan_mesh(lattice, faces: int, closed: bool):

@@ -38,7 +38,7 @@ from symdecomp.schemes.sector import MAX_SECTOR_FACES, SharpVertex
 from symdecomp.schemes.sharp import SHARPNESS_INFINITE
 from symdecomp.validate import MAX_MESH_VALENCE
 
-__all__ = ["NeighbourhoodKind", "VertexKinds", "classify_vertices", "MAX_SMOOTH_VALENCE"]
+__all__ = ["NeighbourhoodKind", "VertexKinds", "classify_vertices", "decayed_outcome", "MAX_SMOOTH_VALENCE"]
 
 #: Most faces around a smooth interior vertex analysed (the exact masks are solved per valence).
 MAX_SMOOTH_VALENCE = MAX_MESH_VALENCE  # the one bound of every command that reads meshes (validate)
@@ -141,22 +141,38 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool):
     """The kind of ``v`` and the rotation that puts ``a_0`` on its first sharp edge; or why it is not analysed (a
     string); or its computed :class:`~symdecomp.analysis.mesh_outcomes.Outcome` (transient tags, a fan judged by its
     spectrum)."""
-    from symdecomp.analysis.mesh_outcomes import decay, fan_outcome, transient, transition_weights
+    from symdecomp.analysis.mesh_outcomes import decay, fan_outcome
 
     faces = len(fan) if closed else len(fan) - 1
     sharp = _edge_sharpness(mesh, v, fan, closed)
     vertex_sharpness = mesh.tags.corners.get(v, Fraction(0))
     kind = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
     if kind == _TRANSIENT:
-        weights = transition_weights(sharp, vertex_sharpness, mesh.tags.crease_method)
+        outcome = decayed_outcome(mesh, v)
+        if not isinstance(outcome, str):
+            return outcome
         levels, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
-        eventual = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
-        if isinstance(eventual, tuple):
-            return transient(eventual[0], levels, _cause(mesh, v, fan, closed), weights)
-        kind = eventual
+        kind = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
     if kind == _SPECTRUM:
         return fan_outcome(faces, closed, sharp, vertex_sharpness, mesh.tags.interpolate_boundary)
     return kind
+
+
+def decayed_outcome(mesh: PolygonMesh, v: int):
+    """``v`` as a transient vertex (:func:`~symdecomp.analysis.mesh_outcomes.transient`) whatever its tags: the kind it
+    is once its semi-sharp tags have decayed, and after how many levels; or why there is none."""
+    from symdecomp.analysis.mesh_outcomes import decay, transient, transition_weights
+
+    fan, closed = _fan(mesh, v)
+    faces = len(fan) if closed else len(fan) - 1
+    sharp = _edge_sharpness(mesh, v, fan, closed)
+    vertex_sharpness = mesh.tags.corners.get(v, Fraction(0))
+    weights = transition_weights(sharp, vertex_sharpness, mesh.tags.crease_method)
+    levels, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
+    eventual = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
+    if not isinstance(eventual, tuple):
+        return f"once its tags have decayed: {eventual}"
+    return transient(eventual[0], levels, _cause(mesh, v, fan, closed), weights)
 
 
 def _cause(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> str:

@@ -193,18 +193,20 @@ class MeshLimits:
         return ~np.isnan(self.limits[:, 0])
 
     def not_analysed(self) -> dict[int, str]:
-        """Vertex -> why it has no limit data (its kind, or its kind's masks)."""
+        """Vertex -> why it has no verdict (no kind, no outcome) or its float limit overflowed."""
         out = dict(self.kinds.not_analysed)
         out.update(self.numeric)
-        for kind, masks in self.masks.items():
-            if isinstance(masks, str):
-                out.update({int(v): f"{kind}: {masks}" for v in self.kinds.rings[kind][0]})
         return dict(sorted(out.items()))
 
     def no_limit(self) -> dict[int, str]:
-        """Vertex -> why it has a computed outcome (:attr:`VertexKinds.outcomes`) but no limit point: off the
-        surface, or not computed for such a vertex."""
-        return {v: self.unresolved.get(v, o.no_limit) for v, o in self.kinds.outcomes.items() if np.isnan(self.limits[v, 0])}
+        """Vertex -> why it has a verdict but no limit point: off the surface, not computed for a computed outcome
+        (:attr:`VertexKinds.outcomes`), or its kind has no limit masks here."""
+        out = {v: self.unresolved.get(v, o.no_limit) for v, o in self.kinds.outcomes.items()}
+        for kind, masks in self.masks.items():
+            if isinstance(masks, str):
+                out.update({int(v): self.unresolved.get(int(v), f"{kind}: no limit masks: {masks}")
+                            for v in self.kinds.rings[kind][0]})
+        return {v: why for v, why in sorted(out.items()) if np.isnan(self.limits[v, 0])}
 
 
 #: Vertices per block when a kind's masks are applied: bounds the temporary ``(block, ring, 3)`` arrays.
@@ -288,20 +290,24 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
         weights = exact_position(scheme, m) if exact else None
         if weights is not None:
             exact_limits.update({int(v): _exact_limit(mesh, ring, weights) for v, ring in zip(ids, rings.tolist())})
-    unresolved = _transient(mesh, scheme, kinds, (limits, normals, tangents), wrap)
+    unresolved = _transient(mesh, scheme, kinds, masks, (limits, normals, tangents), wrap)
     return MeshLimits(scheme.name, kinds, masks, limits, normals, tangents, dict(sorted(exact_limits.items())), overflow,
                       unresolved)
 
 
-def _transient(mesh: PolygonMesh, scheme: Scheme, kinds: VertexKinds, frames: tuple, wrap) -> dict[int, str]:
-    """The limit frames of the transient vertices (:mod:`symdecomp.analysis.mesh_transient`), vertex by vertex, into
-    ``frames``; returns why, where one is not computed."""
+def _transient(mesh: PolygonMesh, scheme: Scheme, kinds: VertexKinds, masks: dict, frames: tuple, wrap) -> dict[int, str]:
+    """The limit frames of the transient vertices (:mod:`symdecomp.analysis.mesh_transient`), and of the semi-sharp
+    vertices whose kind has no masks here, vertex by vertex, into ``frames``; returns why, where one is not computed."""
+    from symdecomp.analysis.mesh_kinds import decayed_outcome
     from symdecomp.analysis.mesh_transient import transient_frame
 
-    todo = [v for v, o in kinds.outcomes.items() if o.eventual is not None]
+    todo = {v: o for v, o in kinds.outcomes.items() if o.eventual is not None}
+    for kind in kinds.kinds:  # semi-sharp kinds whose one-step matrices are not rational (Loop's): the same route
+        if not math.isinf(kind.sharpness) and kind.name != "smooth" and isinstance(masks.get(kind), str):
+            todo.update({int(v): decayed_outcome(mesh, int(v)) for v in kinds.rings[kind][0]})
     unresolved = {}
-    for v in wrap(todo, len(todo), "transient vertices"):
-        frame = transient_frame(mesh, scheme, v, kinds.outcomes[v])
+    for v in wrap(list(todo), len(todo), "transient vertices"):
+        frame = transient_frame(mesh, scheme, v, todo[v]) if not isinstance(todo[v], str) else todo[v]
         if isinstance(frame, str):
             unresolved[v] = frame
             continue

@@ -149,10 +149,10 @@ def print_report(original, mesh, result, table: list[dict], from_faces) -> None:
         print(f"{row['index']:>3}  {row['kind']:<34} {row['count']:>9}  {row['c1']:<10} {row['regime']:<10} {plane}")
     no_limit = result.no_limit()
     if no_limit:
-        reasons = {}
+        lacking: dict[str, list[int]] = {}
         for v, why in no_limit.items():
-            reasons.setdefault(why, []).append(v)
-        for why, vs in reasons.items():
+            lacking.setdefault(why, []).append(v)
+        for why, vs in lacking.items():
             print(f"no limit point: {len(vs)} vertices ({', '.join(map(str, vs[:10]))}{' ...' if len(vs) > 10 else ''}): {why}")
     left = result.not_analysed()
     if left:

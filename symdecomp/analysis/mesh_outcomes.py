@@ -92,15 +92,25 @@ def decay(edges: list, vertex, method: str) -> tuple[int, list, object]:
 
 
 def transition_weights(edges: list, vertex, method: str) -> tuple:
-    """The fractional weights of the levels where the vertex's rule changes on the way of :func:`decay` (OpenSubdiv's
-    ``ComputeFractionalWeightAtVertex``, :func:`~symdecomp.schemes.sharp.fractional_weight`), exactly."""
-    from symdecomp.schemes.sharp import SharpOptions, child_edge_sharpnesses, decrement, fractional_weight, vertex_rule_kind
+    """The fractional weights of the levels where the vertex's rule changes on the way of :func:`decay` and the two
+    rules are blended (OpenSubdiv's ``ComputeVertexVertexMask`` with ``ComputeFractionalWeightAtVertex``,
+    :func:`~symdecomp.schemes.sharp.fractional_weight`), exactly."""
+    from symdecomp.schemes.sharp import (
+        SharpOptions,
+        VertexRuleKind,
+        child_edge_sharpnesses,
+        decrement,
+        fractional_weight,
+        vertex_rule_kind,
+    )
 
     options = SharpOptions(crease_method=method)
+    smooth = (VertexRuleKind.SMOOTH, VertexRuleKind.DART)  # a smooth or dart parent takes the smooth mask, unblended
     out = []
     while any(0 < s < math.inf for s in list(edges) + [vertex]):
         child, child_vertex = child_edge_sharpnesses(edges, options), decrement(vertex)
-        if vertex_rule_kind(vertex, edges) is not vertex_rule_kind(child_vertex, child):
+        parent = vertex_rule_kind(vertex, edges)
+        if parent not in smooth and parent is not vertex_rule_kind(child_vertex, child):
             out.append(fractional_weight(vertex, child_vertex, edges, child, options))
         edges, vertex = child, child_vertex
     return tuple(out)

@@ -6,7 +6,6 @@ import math
 from fractions import Fraction
 
 import numpy as np
-import pytest
 import sympy as sp
 
 from symdecomp.analysis.mesh_kinds import NeighbourhoodKind, classify_vertices

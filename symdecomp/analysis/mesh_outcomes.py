@@ -141,7 +141,8 @@ def fan_outcome(faces: int, closed: bool, edge_sharpness: list, vertex_sharpness
     """A fan the sector model does not take (module docstring), judged per scheme by :func:`spectrum_verdict`.
     ``edge_sharpness``: per edge ``(O, a_i)``; ``boundary``: the boundary interpolation."""
     where = f"{'interior vertex of valence' if closed else 'boundary vertex of'} {faces}{'' if closed else ' face' + 's' * (faces > 1)}"
-    tags = [str(s) for s in edge_sharpness if 0 < s < math.inf] + ([f"vertex {vertex_sharpness}"] if vertex_sharpness else [])
+    inner = edge_sharpness if closed else edge_sharpness[1:-1]  # a boundary fan's end edges are sharp anyway
+    tags = [str(s) for s in inner if s > 0] + ([f"vertex {vertex_sharpness}"] if vertex_sharpness else [])
     label = f"{where}{', sharpness ' + ', '.join(tags) if tags else ''} (spectrum)"
     return Outcome(label, fan=(faces, closed, tuple(edge_sharpness), vertex_sharpness, boundary))
 
@@ -152,6 +153,7 @@ def spectrum_verdict(scheme, outcome: Outcome) -> tuple[str, str]:
     import sympy as sp
 
     from symdecomp.algebra.numbers import to_sympy
+    from symdecomp.errors import InvalidSchemeError, InvalidValenceError
     from symdecomp.schemes.sharp import SharpOptions
     from symdecomp.schemes.sharp_refinement import TaggedMesh, sharp_stencils
 
@@ -160,7 +162,10 @@ def spectrum_verdict(scheme, outcome: Outcome) -> tuple[str, str]:
     sharp = {frozenset((0, 1 + i)): s for i, s in enumerate(edge_sharpness) if s > 0 and (closed or 0 < i < edges - 1)}
     tagged = TaggedMesh(mesh, sharp, {0: vertex_sharpness} if vertex_sharpness else {}, outer)
     options = SharpOptions("edge-and-corner" if boundary == "edge-and-corner" else "edge-only")
-    st = sharp_stencils(tagged, scheme, options)
+    try:
+        st = sharp_stencils(tagged, scheme, options)
+    except (InvalidValenceError, InvalidSchemeError) as exc:  # a rule read at a valence the scheme does not define
+        return "undecided", f"the 1-ring matrix of {outcome.label[:-len(' (spectrum)')]} is not built here: {exc}"
     stencils = [st.vertex[0]] + [st.edge[frozenset((0, 1 + i))] for i in range(edges)] + [st.face[i] for i in range(len(st.face))]
     size = len(stencils)
     matrix = sp.Matrix(size, size, lambda r, c: to_sympy(stencils[r].get(int(c), 0)))

@@ -116,10 +116,11 @@ def json_report(original, mesh, result, table: list[dict], from_faces, status: i
     kinds = result.kinds
     extraordinary = []
     regular = [i for i, k in enumerate(kinds.kinds) if k.is_regular(lattice)]
-    ids = np.flatnonzero((kinds.kind_of >= 0) & ~np.isin(kinds.kind_of, regular))
+    rows = row_of_vertex(result, table)
+    ids = np.flatnonzero((rows < len(table)) & ~np.isin(rows, regular))
     names = [row["kind"] for row in table]
     limits, normals = _numbers(result.limits[ids]), _numbers(result.normals[ids])
-    for v, k, limit, normal in zip(ids.tolist(), kinds.kind_of[ids].tolist(), limits, normals):
+    for v, k, limit, normal in zip(ids.tolist(), rows[ids].tolist(), limits, normals):
         item = {"vertex": v, "kind": names[k], "limit": limit, "normal": normal}
         if v in result.exact:
             item["limit_exact"] = [str(x) for x in result.exact[v]]

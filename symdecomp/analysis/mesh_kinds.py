@@ -153,7 +153,8 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool):
             return outcome
         levels, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
         kind = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
-    if kind == _SPECTRUM:
+    if kind == _SPECTRUM:  # the fan it keeps once its semi-sharp tags have decayed (the asymptotic one)
+        _, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
         return fan_outcome(faces, closed, sharp, vertex_sharpness, mesh.tags.interpolate_boundary)
     return kind
 

@@ -12,9 +12,12 @@ one), more or a sharp vertex a corner; under ``edge-and-corner`` a boundary vert
 :func:`classify_vertices` returns one :class:`VertexKinds`: the distinct kinds, and per kind the vertices
 of that kind with their ordered 1-rings in the masks' order (``O, a_0.., b_0..``; ``a_0`` on the first sharp
 edge, faces ``(O, a_i, b_i, a_{i+1})`` counter-clockwise), gathered into one integer array per kind, so that a
-kind's masks apply to all its vertices with one matrix product. A vertex whose kind the toolkit cannot analyse
-(next to a hole, sharp edges of different sharpness, a semi-sharp vertex tag, too many faces, the boundary
-left out under ``none`` interpolation) is listed with the reason.
+kind's masks apply to all its vertices with one matrix product. A vertex of no kind gets its computed
+:class:`~symdecomp.analysis.mesh_outcomes.Outcome` (:attr:`VertexKinds.outcomes`): off the limit surface (every face
+of it a hole, tagged or under ``none`` interpolation; in no face), transient (a semi-sharp vertex tag, sharp edges of
+different sharpness: the kind it becomes once they have decayed), or a fan judged by its spectrum (valence 2; one face
+under ``edge-only``). A corner of a hole keeps its kind (holes change no rule). What is left (more faces around a
+vertex than the bounds) is listed with the reason.
 
 >>> from symdecomp.schemes.meshfile import PolygonMesh
 >>> grid = PolygonMesh.from_arrays([(x, y, 0) for y in range(3) for x in range(3)],

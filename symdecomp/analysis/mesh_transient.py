@@ -19,7 +19,7 @@ The kind found at the last level is checked to be the eventual kind the decay pr
 ('smooth n = 3', 2)
 >>> frame = transient_frame(cube, catmull_clark(), 0, outcome)
 >>> [round(float(x), 12) for x in frame[0]]
-[0.460185185185, 0.460185185185, 0.460185185185]
+[0.276041666667, 0.276041666667, 0.276041666667]
 """
 
 from __future__ import annotations

@@ -116,5 +116,5 @@ def test_a_valence_2_vertex_on_a_crease_is_judged_by_its_spectrum_and_has_no_lim
     result = mesh_limits(step.mesh, catmull_clark())
     assert not result.not_analysed() and list(result.no_limit()) == [8]
     outcome = result.kinds.outcomes[8]
-    assert outcome.label == "interior vertex of valence 2 (spectrum)" and outcome.fan[:2] == (2, True)
+    assert outcome.label == "interior vertex of valence 2, sharpness inf, inf (spectrum)" and outcome.fan[:2] == (2, True)
     assert outcome.fan[2] == (math.inf, math.inf)

@@ -19,7 +19,9 @@ ALL = sorted(SHAPES.glob("*.obj"))
 #: reader leaves them out and lists them with their line and level, and the unedited surface is analysed.
 EDITS = [p for p in ALL if re.search(r"^t (vertex|edge|face)edit ", p.read_text(), re.M)]
 TAGGED = [p for p in ALL if p not in EDITS]
-QUICK = {"catmark_cube_creases1", "loop_cube_creases0"}
+#: Run by default: small ones, among them a Chaikin shape with transient vertices (compared under Chaikin's creasing),
+#: one whose weights OpenSubdiv rounds to single precision, and a semi-sharp corner tag.
+QUICK = {"catmark_cube_creases1", "loop_cube_creases0", "catmark_chaikin2", "catmark_chaikin1", "catmark_cube_corner0"}
 VERDICTS = {"c1", "not-c1", "undecided", "n/a"}
 
 

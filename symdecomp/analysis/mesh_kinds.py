@@ -159,7 +159,24 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool):
     if kind == _SPECTRUM:  # the fan it keeps once its semi-sharp tags have decayed (the asymptotic one)
         _, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
         return fan_outcome(faces, closed, sharp, vertex_sharpness, mesh.tags.interpolate_boundary)
+    if isinstance(kind, tuple) and _chaikin_far_ends(mesh, fan, sharp):
+        outcome = decayed_outcome(mesh, v)
+        return outcome if not isinstance(outcome, str) else kind
     return kind
+
+
+def _chaikin_far_ends(mesh: PolygonMesh, fan: list[int], sharp: list) -> bool:
+    """Under Chaikin's creasing, whether a semi-sharp edge at the vertex has semi-sharp edges of another sharpness at its
+    far end: its far half then decays otherwise than the kind's one-step matrices assume (they decay both halves alike),
+    so the vertex takes the transient route (its 2-ring refined exactly)."""
+    if mesh.tags.crease_method != "chaikin":
+        return False
+    for a, s in zip(fan, sharp):
+        if 0 < s < SHARPNESS_INFINITE:
+            far, _ = _fan(mesh, a)
+            if {t for b in far if 0 < (t := mesh.tags.sharpness_of_edge(a, b)) < SHARPNESS_INFINITE} != {s}:
+                return True
+    return False
 
 
 def decayed_outcome(mesh: PolygonMesh, v: int):

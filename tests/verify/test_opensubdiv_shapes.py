@@ -60,7 +60,9 @@ def test_every_vertex_gets_a_verdict_and_is_accounted_for(path, capsys):
     assert all(data["no_limit"].values())  # each with its reason
     assert sum(row["count"] for row in data["kinds"]) == data["vertices"]
     if re.search(r"^t crease \S+ \S+ [1-9]", path.read_text(), re.M):
-        assert {row["name"] for row in data["kinds"]} & {"crease", "corner", "dart", "boundary"}
+        # the tags were read: a sharp kind, or a transient vertex (the kind it becomes once its tags have decayed)
+        assert {row["name"] for row in data["kinds"]} & {"crease", "corner", "dart", "boundary"} or any(
+            row["eventual"] for row in data["kinds"])
 
 
 @pytest.mark.skipif(not osd_build.headers_present(), reason="OpenSubdiv headers (libosd-dev) or g++ not installed")

@@ -223,15 +223,17 @@ def cache_folder() -> str:
 
 
 def _bunny_check(report: dict) -> str:
-    """The shipped bunny's check: its header's counts, exit 1, only the vertices in no triangle left out, and why."""
+    """The shipped bunny's check: its header's counts, exit 1, every vertex with a verdict, and only the vertices in no
+    triangle without a limit point (off the surface), and why."""
     name, vertices, faces = SHIPPED_BUNNY
     isolated = report["defects"]["isolated_vertices"]
     if (report["vertices"], report["faces"]) != (vertices, faces):
         raise RuntimeError(f"{name} in the cache has {report['vertices']} vertices and {report['faces']} faces, not the "
                            f"shipped scan's {vertices} and {faces}")
-    if report["exit_status"] != 1 or sorted(map(int, report["not_analysed"])) != sorted(isolated):
+    off = sorted(int(v) for v, why in report["no_limit"].items() if why.startswith("no point on the limit surface: in no face"))
+    if report["exit_status"] != 1 or report["not_analysed"] or off != sorted(isolated) or len(report["no_limit"]) != len(off):
         raise RuntimeError(f"{name}: exit {report['exit_status']}, {len(report['not_analysed'])} vertices not analysed, "
-                           f"{len(isolated)} isolated")
+                           f"{len(report['no_limit'])} without a limit point, {len(isolated)} isolated")
     defects = {k: len(v) for k, v in report["defects"].items() if v}
     return "exit 1, " + ", ".join(f"{k.replace('_', ' ')} {v}" for k, v in sorted(defects.items()))
 

@@ -95,8 +95,10 @@ nothing else.
                    boundary or corner vertex (``sharp_evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); every vertex of a mesh classified by its neighbourhood kind
-                   (``mesh_kinds``) and its limit position and normal from exact masks per kind applied
-                   with numpy (``mesh_limits``); second-order characteristic maps, the elliptic and hyperbolic
+                   (``mesh_kinds``; a vertex of no kind, its computed outcome: off the surface, the kind it becomes
+                   once its semi-sharp tags have decayed, or its fan's spectrum, ``mesh_outcomes``) and its limit
+                   position and normal from exact masks per kind applied with numpy (``mesh_limits``; a transient
+                   vertex's by exact refinement of its 2-ring, ``mesh_transient``); second-order characteristic maps, the elliptic and hyperbolic
                    height fields on the ring (``second_order``); control nets designed for prescribed
                    limit properties (``design``; its inputs checked against their bounds, ``design_input``),
                    and the least change of a 1-ring for a normal or no hyperbolic part (``redesign``); boundary, crease, corner and dart vertices

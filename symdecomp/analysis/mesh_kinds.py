@@ -12,9 +12,12 @@ one), more or a sharp vertex a corner; under ``edge-and-corner`` a boundary vert
 :func:`classify_vertices` returns one :class:`VertexKinds`: the distinct kinds, and per kind the vertices
 of that kind with their ordered 1-rings in the masks' order (``O, a_0.., b_0..``; ``a_0`` on the first sharp
 edge, faces ``(O, a_i, b_i, a_{i+1})`` counter-clockwise), gathered into one integer array per kind, so that a
-kind's masks apply to all its vertices with one matrix product. A vertex whose kind the toolkit cannot analyse
-(next to a hole, sharp edges of different sharpness, a semi-sharp vertex tag, too many faces, the boundary
-left out under ``none`` interpolation) is listed with the reason.
+kind's masks apply to all its vertices with one matrix product. A vertex of no kind gets its computed
+:class:`~symdecomp.analysis.mesh_outcomes.Outcome` (:attr:`VertexKinds.outcomes`): off the limit surface (every face
+of it a hole, tagged or under ``none`` interpolation; in no face), transient (a semi-sharp vertex tag, sharp edges of
+different sharpness: the kind it becomes once they have decayed), or a fan judged by its spectrum (valence 2; one face
+under ``edge-only``). A corner of a hole keeps its kind (holes change no rule). What is left (more faces around a
+vertex than the bounds) is listed with the reason.
 
 >>> from symdecomp.schemes.meshfile import PolygonMesh
 >>> grid = PolygonMesh.from_arrays([(x, y, 0) for y in range(3) for x in range(3)],
@@ -28,7 +31,7 @@ left out under ``none`` interpolation) is listed with the reason.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 
 import numpy as np
@@ -38,7 +41,7 @@ from symdecomp.schemes.sector import MAX_SECTOR_FACES, SharpVertex
 from symdecomp.schemes.sharp import SHARPNESS_INFINITE
 from symdecomp.validate import MAX_MESH_VALENCE
 
-__all__ = ["NeighbourhoodKind", "VertexKinds", "classify_vertices", "MAX_SMOOTH_VALENCE"]
+__all__ = ["NeighbourhoodKind", "VertexKinds", "classify_vertices", "decayed_outcome", "MAX_SMOOTH_VALENCE"]
 
 #: Most faces around a smooth interior vertex analysed (the exact masks are solved per valence).
 MAX_SMOOTH_VALENCE = MAX_MESH_VALENCE  # the one bound of every command that reads meshes (validate)
@@ -88,8 +91,11 @@ class VertexKinds:
     rings: dict
     #: Vertex -> why its kind is not analysed.
     not_analysed: dict
-    #: Per vertex, the index of its kind in :attr:`kinds` (-1: not analysed).
+    #: Per vertex, the index of its kind in :attr:`kinds` (-1: not of a kind).
     kind_of: np.ndarray
+    #: Vertex -> its computed :class:`~symdecomp.analysis.mesh_outcomes.Outcome` where it is of no kind here (off the
+    #: surface; transient tags: the kind it becomes; a fan judged by its spectrum).
+    outcomes: dict = field(default_factory=dict)
 
     @property
     def kinds(self) -> tuple[NeighbourhoodKind, ...]:
@@ -128,28 +134,93 @@ def _edge_sharpness(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> 
     return out
 
 
-def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> tuple[NeighbourhoodKind, int] | str:
-    """The kind of ``v`` and the rotation that puts ``a_0`` on its first sharp edge; or why it is not analysed."""
+#: ``_kind_of``'s answer for a vertex whose tags decay (a semi-sharp vertex tag, sharp edges of different sharpness).
+_TRANSIENT = "transient"
+#: ``_kind_of``'s answer for a fan the sector model does not take (judged by its spectrum).
+_SPECTRUM = "spectrum"
+
+
+def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool):
+    """The kind of ``v`` and the rotation that puts ``a_0`` on its first sharp edge; or why it is not analysed (a
+    string); or its computed :class:`~symdecomp.analysis.mesh_outcomes.Outcome` (transient tags, a fan judged by its
+    spectrum)."""
+    from symdecomp.analysis.mesh_outcomes import decay, fan_outcome
+
     faces = len(fan) if closed else len(fan) - 1
     sharp = _edge_sharpness(mesh, v, fan, closed)
-    marks = [i for i, s in enumerate(sharp) if s > 0]
-    inner = {s for i, s in enumerate(sharp) if s > 0 and (closed or 0 < i < len(fan) - 1)}
     vertex_sharpness = mesh.tags.corners.get(v, Fraction(0))
-    if not closed and mesh.tags.interpolate_boundary == "none":
-        return "a boundary vertex under interpolateboundary none (its faces are left out of the limit surface)"
-    if len(inner) > 1:
-        return f"sharp edges of different sharpness ({', '.join(str(s) for s in sorted(inner))}) meet there"
-    if 0 < vertex_sharpness < SHARPNESS_INFINITE:
-        return f"a semi-sharp vertex tag ({vertex_sharpness}): the sector model tags corners infinitely sharp"
+    kind = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
+    if kind == _TRANSIENT:
+        outcome = decayed_outcome(mesh, v)
+        if not isinstance(outcome, str):
+            return outcome
+        levels, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
+        kind = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
+    if kind == _SPECTRUM:  # the fan it keeps once its semi-sharp tags have decayed (the asymptotic one)
+        _, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
+        return fan_outcome(faces, closed, sharp, vertex_sharpness, mesh.tags.interpolate_boundary)
+    if isinstance(kind, tuple) and _chaikin_far_ends(mesh, fan, sharp):
+        outcome = decayed_outcome(mesh, v)
+        return outcome if not isinstance(outcome, str) else kind
+    return kind
+
+
+def _chaikin_far_ends(mesh: PolygonMesh, fan: list[int], sharp: list) -> bool:
+    """Under Chaikin's creasing, whether a semi-sharp edge at the vertex has semi-sharp edges of another sharpness at its
+    far end: its far half then decays otherwise than the kind's one-step matrices assume (they decay both halves alike),
+    so the vertex takes the transient route (its 2-ring refined exactly)."""
+    if mesh.tags.crease_method != "chaikin":
+        return False
+    for a, s in zip(fan, sharp):
+        if 0 < s < SHARPNESS_INFINITE:
+            far, _ = _fan(mesh, a)
+            if {t for b in far if 0 < (t := mesh.tags.sharpness_of_edge(a, b)) < SHARPNESS_INFINITE} != {s}:
+                return True
+    return False
+
+
+def decayed_outcome(mesh: PolygonMesh, v: int):
+    """``v`` as a transient vertex (:func:`~symdecomp.analysis.mesh_outcomes.transient`) whatever its tags: the kind it
+    is once its semi-sharp tags have decayed, and after how many levels; or why there is none."""
+    from symdecomp.analysis.mesh_outcomes import decay, transient, transition_weights
+
+    fan, closed = _fan(mesh, v)
+    faces = len(fan) if closed else len(fan) - 1
+    sharp = _edge_sharpness(mesh, v, fan, closed)
+    vertex_sharpness = mesh.tags.corners.get(v, Fraction(0))
+    weights = transition_weights(sharp, vertex_sharpness, mesh.tags.crease_method)
+    levels, sharp, vertex_sharpness = decay(sharp, vertex_sharpness, mesh.tags.crease_method)
+    eventual = _kind_of(mesh.tags.interpolate_boundary, faces, sharp, vertex_sharpness, closed)
+    if not isinstance(eventual, tuple):
+        return f"once its tags have decayed: {eventual}"
+    return transient(eventual[0], levels, _cause(mesh, v, fan, closed), weights)
+
+
+def _cause(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> str:
+    """What makes ``v`` transient, in words."""
+    sharp = _edge_sharpness(mesh, v, fan, closed)
+    inner = sorted({s for i, s in enumerate(sharp) if s > 0 and (closed or 0 < i < len(fan) - 1)})
+    vertex = mesh.tags.corners.get(v, Fraction(0))
+    parts = ([f"a semi-sharp vertex tag ({vertex})"] if 0 < vertex < SHARPNESS_INFINITE else []) + (
+        [f"sharp edges of different sharpness ({', '.join(str(s) for s in inner)}) meet there"] if len(inner) > 1 else [])
+    return " and ".join(parts) or f"semi-sharp tags ({', '.join(str(s) for s in inner)})"
+
+
+def _kind_of(boundary: str, faces: int, sharp: list, vertex_sharpness, closed: bool):
+    """The kind from the sharpness of the fan's edges (boundary edges infinite) and of the vertex (:func:`_kind`)."""
+    marks = [i for i, s in enumerate(sharp) if s > 0]
+    inner = {s for i, s in enumerate(sharp) if s > 0 and (closed or 0 < i < len(sharp) - 1)}
+    if len(inner) > 1 or 0 < vertex_sharpness < SHARPNESS_INFINITE:
+        return _TRANSIENT
     corner = vertex_sharpness >= SHARPNESS_INFINITE
     if not marks and not corner:
         return _smooth(faces)
     if closed and faces < 3:
-        return f"an interior vertex of valence {faces} with sharp edges or a corner tag (the sector model takes 3 or more faces)"
+        return _SPECTRUM
     if faces > MAX_SECTOR_FACES:
         return f"{faces} faces around a sharp vertex, more than {MAX_SECTOR_FACES}"
-    if not closed and faces == 1 and mesh.tags.interpolate_boundary == "edge-only":
-        return "a boundary vertex of one face under edge-only interpolation (the sector model makes it a corner)"
+    if not closed and faces == 1 and boundary != "edge-and-corner" and not corner:
+        return _SPECTRUM  # OpenSubdiv's crease rule on one face (the sector model makes a one-face sector a corner)
     sharpness = next(iter(inner)) if inner else math.inf
     if closed and not marks:  # a corner tag alone: the vertex is interpolated, its edges stay smooth
         return NeighbourhoodKind("corner", faces, (faces,), True, True, Fraction(0)), 0
@@ -163,15 +234,15 @@ def _kind(mesh: PolygonMesh, v: int, fan: list[int], closed: bool) -> tuple[Neig
     count = len(marks)
     name = "corner" if corner or count > 2 else ("dart", "crease")[count - 1] if closed else "boundary"
     return NeighbourhoodKind(name, faces, sectors, closed, corner or (not closed and faces == 1 and
-                             mesh.tags.interpolate_boundary == "edge-and-corner"), sharpness), start
+                             boundary == "edge-and-corner"), sharpness), start
 
 
-def _smooth(faces: int) -> tuple[NeighbourhoodKind, int] | str:
+def _smooth(faces: int):
     """An untagged interior vertex: smooth (the common case, decided without looking at sharpness)."""
     if faces > MAX_SMOOTH_VALENCE:
         return f"valence {faces} is more than {MAX_SMOOTH_VALENCE}"
     if faces < 3:
-        return f"an interior vertex of valence {faces} (the analysis needs at least 3 faces around it)"
+        return _SPECTRUM
     return NeighbourhoodKind("smooth", faces, (faces,), True), 0
 
 
@@ -215,28 +286,30 @@ def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKin
     The untagged interior vertices (most of a mesh) are classified and gathered with numpy, valence by valence; the
     others (boundary, tagged, next to a hole) one by one; ``progress(iterable, total)``, when given, wraps that loop.
     """
+    from symdecomp.analysis.mesh_outcomes import Outcome, off_surface
+
     mesh.require_lattice(lattice)
     quads = "b" in dict(lattice.one_ring_classes)  # face neighbours b_i in the 1-ring
     t = mesh._topo
-    holes = {x for f in mesh.tags.holes for x in t.corners[t.offsets[f]:t.offsets[f + 1]].tolist()}
+    off = _off_surface(mesh)
     tagged = {v for e in mesh.tags.creases for v in e} | set(mesh.tags.corners)  # the rest of the interior is smooth
     simple = (t.faces_at > 0) & ~t.boundary
-    simple[np.fromiter(holes | tagged, dtype=np.int64)] = False
+    simple[np.fromiter(set(off) | tagged, dtype=np.int64)] = False
     fast, rest = _smooth_at_once(mesh, np.flatnonzero(simple), quads)
     gathered: dict[NeighbourhoodKind, tuple[list, list]] = {}
     not_analysed: dict[int, str] = {}
+    outcomes: dict[int, Outcome] = {}
     vertices = np.sort(np.concatenate([np.flatnonzero(~simple), rest])).tolist()
     for v in progress(vertices, len(vertices)) if progress is not None else vertices:
-        if v in holes:
-            not_analysed[v] = "a corner of a face tagged as a hole"
-            continue
-        if not t.faces_at[v]:  # lenient reading keeps the file's numbering: a vertex may be in no kept face
-            not_analysed[v] = "in no face of the mesh (isolated, or its faces were left out)"
+        if v in off:
+            outcomes[v] = off_surface(off[v])
             continue
         fan, closed = _fan(mesh, v)
         kind = _kind(mesh, v, fan, closed) if v in tagged or not closed else _smooth(len(fan))
-        if isinstance(kind, str):
-            not_analysed[v] = kind
+        if kind == _SPECTRUM:  # an untagged interior vertex of valence 2
+            kind = _kind(mesh, v, fan, closed)
+        if isinstance(kind, (str, Outcome)):
+            (not_analysed if isinstance(kind, str) else outcomes)[v] = kind
             continue
         kind, start = kind
         if closed and start:
@@ -244,10 +317,37 @@ def classify_vertices(mesh: PolygonMesh, lattice, *, progress=None) -> VertexKin
         ids, rings = gathered.setdefault(kind, ([], []))
         ids.append(v)
         rings.append(_ring(v, fan, closed, _opposite_at(mesh, v) if quads else None))
-    return _gather(len(mesh.points), fast, gathered, dict(sorted(not_analysed.items())))
+    return _gather(len(mesh.points), fast, gathered, dict(sorted(not_analysed.items())), dict(sorted(outcomes.items())))
 
 
-def _gather(count: int, fast: dict, gathered: dict, not_analysed: dict) -> VertexKinds:
+def _off_surface(mesh: PolygonMesh) -> dict[int, str]:
+    """The vertices with no point on the limit surface, with why: in no face, or every face of theirs a hole (tagged, or
+    under ``interpolateboundary none`` a face at a boundary vertex with a boundary edge not infinitely sharp, which
+    OpenSubdiv's ``TopologyRefinerFactory`` makes a hole: :mod:`~symdecomp.analysis.mesh_outcomes`)."""
+    t = mesh._topo
+    faces, count = len(t.offsets) - 1, len(mesh.points)
+    face_of = np.repeat(np.arange(faces), np.diff(t.offsets))
+    tagged = np.zeros(faces, dtype=bool)
+    tagged[np.fromiter(mesh.tags.holes, dtype=np.int64)] = True
+    excluded = tagged.copy()
+    if mesh.tags.interpolate_boundary == "none":
+        rim = np.flatnonzero(t.opposite < 0)  # corners starting a boundary edge
+        u, w = t.corners[rim], t.corners[t.next[rim]]
+        soft = np.array([mesh.tags.sharpness_of_edge(a, b) < SHARPNESS_INFINITE for a, b in zip(u.tolist(), w.tolist())], dtype=bool)
+        bad = np.zeros(count, dtype=bool)
+        bad[u[soft]], bad[w[soft]] = True, True
+        excluded |= np.bincount(face_of, weights=bad[t.corners], minlength=faces) > 0
+    holes_at = np.bincount(t.corners, weights=excluded[face_of], minlength=count)
+    tagged_at = np.bincount(t.corners, weights=tagged[face_of], minlength=count)
+    out = {int(v): "in no face of the mesh (isolated, or its faces were left out)" for v in np.flatnonzero(t.faces_at == 0)}
+    for v in np.flatnonzero((t.faces_at > 0) & (holes_at == t.faces_at)).tolist():
+        out[v] = ("every face of it is tagged as a hole" if tagged_at[v] == t.faces_at[v] else "under interpolateboundary "
+                  "none its faces are holes (OpenSubdiv makes every face at a boundary vertex whose boundary edges are not "
+                  "tagged infinitely sharp a hole)")
+    return out
+
+
+def _gather(count: int, fast: dict, gathered: dict, not_analysed: dict, outcomes: dict) -> VertexKinds:
     """One ``(ids, rings)`` per kind from both routes, in vertex order, and each vertex's kind index."""
     rings = {}
     for kind in set(fast) | set(gathered):
@@ -261,4 +361,4 @@ def _gather(count: int, fast: dict, gathered: dict, not_analysed: dict) -> Verte
     kind_of = np.full(count, -1, dtype=np.int64)
     for i, k in enumerate(sorted(rings)):
         kind_of[rings[k][0]] = i
-    return VertexKinds(rings, not_analysed, kind_of)
+    return VertexKinds(rings, not_analysed, kind_of, outcomes)

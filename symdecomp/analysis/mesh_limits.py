@@ -31,7 +31,7 @@ turn its normal). With ``exact=True`` the limit positions are also computed exac
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import sympy as sp
@@ -42,7 +42,7 @@ from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_memory, check_type
 
-__all__ = ["KindMasks", "MeshLimits", "kind_masks", "mesh_limits", "float_points", "exact_as_floats", "exact_position"]
+__all__ = ["KindMasks", "MeshLimits", "kind_masks", "mesh_limits", "float_points", "exact_as_floats", "exact_position", "apply_masks"]
 
 
 @dataclass(frozen=True)
@@ -185,19 +185,28 @@ class MeshLimits:
     exact: dict
     #: Vertex -> why its float limit is missing although its kind has masks (coordinates too large for doubles).
     numeric: dict
+    #: Transient vertex -> why its limit frame was not computed (:mod:`symdecomp.analysis.mesh_transient`).
+    unresolved: dict = field(default_factory=dict)
 
     def analysed(self) -> np.ndarray:
         """Boolean per vertex: whether it has a limit position."""
         return ~np.isnan(self.limits[:, 0])
 
     def not_analysed(self) -> dict[int, str]:
-        """Vertex -> why it has no limit data (its kind, or its kind's masks)."""
+        """Vertex -> why it has no verdict (no kind, no outcome) or its float limit overflowed."""
         out = dict(self.kinds.not_analysed)
         out.update(self.numeric)
+        return dict(sorted(out.items()))
+
+    def no_limit(self) -> dict[int, str]:
+        """Vertex -> why it has a verdict but no limit point: off the surface, not computed for a computed outcome
+        (:attr:`VertexKinds.outcomes`), or its kind has no limit masks here."""
+        out = {v: self.unresolved.get(v, o.no_limit) for v, o in self.kinds.outcomes.items()}
         for kind, masks in self.masks.items():
             if isinstance(masks, str):
-                out.update({int(v): f"{kind}: {masks}" for v in self.kinds.rings[kind][0]})
-        return dict(sorted(out.items()))
+                out.update({int(v): self.unresolved.get(int(v), f"{kind}: no limit masks: {masks}")
+                            for v in self.kinds.rings[kind][0]})
+        return {v: why for v, why in sorted(out.items()) if np.isnan(self.limits[v, 0])}
 
 
 #: Vertices per block when a kind's masks are applied: bounds the temporary ``(block, ring, 3)`` arrays.
@@ -218,7 +227,9 @@ def _orientation(points: np.ndarray, rings: np.ndarray, edge_count: int, closed:
     return _cross(a[:, : nxt.shape[1]], nxt).sum(axis=1)
 
 
-def _apply(points: np.ndarray, rings: np.ndarray, masks: KindMasks, edge_count: int) -> tuple:
+def apply_masks(points: np.ndarray, rings: np.ndarray, masks: KindMasks, edge_count: int) -> tuple:
+    """``(limits, unit normals, tangents)`` of the vertices whose 1-rings (rows of indices into ``points``, the masks'
+    order) are ``rings``; ``edge_count``: the edge neighbours ``a_i`` in a ring."""
     m = len(rings)
     limit, cross, tangents = np.empty((m, 3)), np.empty((m, 3)), np.empty((m, 2, 3))
     turn = 0.0
@@ -271,7 +282,7 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
         ids, rings = kinds.rings[kind]
         edge_count = kind.faces + (0 if kind.closed else 1)
         with np.errstate(all="ignore"):  # coordinates near the double range: scaled, and what overflows is named below
-            limit, normals[ids], tangent = _apply(scaled, rings, m, edge_count)
+            limit, normals[ids], tangent = apply_masks(scaled, rings, m, edge_count)
             limits[ids], tangents[ids] = limit * scale, tangent * scale
         bad = ids[~np.isfinite(limits[ids]).all(axis=1)]
         limits[bad], normals[bad], tangents[bad] = np.nan, np.nan, np.nan
@@ -279,7 +290,30 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
         weights = exact_position(scheme, m) if exact else None
         if weights is not None:
             exact_limits.update({int(v): _exact_limit(mesh, ring, weights) for v, ring in zip(ids, rings.tolist())})
-    return MeshLimits(scheme.name, kinds, masks, limits, normals, tangents, dict(sorted(exact_limits.items())), overflow)
+    unresolved = _transient(mesh, scheme, kinds, masks, (limits, normals, tangents), wrap)
+    return MeshLimits(scheme.name, kinds, masks, limits, normals, tangents, dict(sorted(exact_limits.items())), overflow,
+                      unresolved)
+
+
+def _transient(mesh: PolygonMesh, scheme: Scheme, kinds: VertexKinds, masks: dict, frames: tuple, wrap) -> dict[int, str]:
+    """The limit frames of the transient vertices (:mod:`symdecomp.analysis.mesh_transient`), and of the semi-sharp
+    vertices whose kind has no masks here, vertex by vertex, into ``frames``; returns why, where one is not computed."""
+    from symdecomp.analysis.mesh_kinds import decayed_outcome
+    from symdecomp.analysis.mesh_transient import transient_frame
+
+    todo = {v: o for v, o in kinds.outcomes.items() if o.eventual is not None}
+    for kind in kinds.kinds:  # semi-sharp kinds whose one-step matrices are not rational (Loop's): the same route
+        if not math.isinf(kind.sharpness) and kind.name != "smooth" and isinstance(masks.get(kind), str):
+            todo.update({int(v): decayed_outcome(mesh, int(v)) for v in kinds.rings[kind][0]})
+    unresolved = {}
+    for v in wrap(list(todo), len(todo), "transient vertices"):
+        frame = transient_frame(mesh, scheme, v, todo[v]) if not isinstance(todo[v], str) else todo[v]
+        if isinstance(frame, str):
+            unresolved[v] = frame
+            continue
+        for array, value in zip(frames, frame):
+            array[v] = value
+    return unresolved
 
 
 def exact_as_floats(values) -> tuple[float, ...]:

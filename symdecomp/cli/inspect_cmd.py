@@ -13,8 +13,13 @@ A mesh with faces other than the scheme's (a quad mesh with triangles, n-gons): 
 step is taken exactly (:mod:`symdecomp.schemes.polygon_step`) and the refined mesh is analysed; the report
 names the extraordinary points that came from faces (the centres of the n-gons).
 
-Exit status: 0 when every vertex was analysed, 1 when something was left out (vertices not analysed,
-elements of the file left out of the mesh, or a valence where ``lambda_1`` is not certified subdominant),
+A vertex of no kind gets its computed outcome (:mod:`symdecomp.analysis.mesh_outcomes`), one row per distinct
+outcome: off the limit surface (every face of it a hole, or under ``interpolateboundary none``), transient (semi-sharp
+vertex tags, sharp edges of different sharpness: the verdicts of the kind it becomes once its tags have decayed, and
+after how many levels), or a fan judged by its exact spectrum (valence 2; one face under ``edge-only``).
+
+Exit status: 0 when every vertex was analysed, 1 when something was left out (vertices not analysed, a limit point not
+computed, elements of the file left out of the mesh, or a valence where ``lambda_1`` is not certified subdominant),
 2 for a file that cannot be read or a mesh the scheme cannot take; ``--strict`` makes anything left out an
 error (exit 2, one line naming it).
 
@@ -27,7 +32,8 @@ adds the detailed per-vertex table of the extraordinary vertices (:mod:`symdecom
 
 JSON (``--json``): ``{"mesh", "scheme", "vertices", "faces", "refined_first": bool, "from_faces": {"new vertex":
 old face}, "kinds": [{"kind", "name", "faces", "sectors", "closed", "corner", "sharpness", "count", "c1",
-"c1_reason", "regime", "tangent_plane", "tangents", "levels"}], "not_analysed": {"vertex": reason},
+"c1_reason", "regime", "tangent_plane", "tangents", "levels", "eventual", "on_surface"}], "not_analysed": {"vertex":
+reason}, "no_limit": {"vertex": reason},
 "defects": {...}, "extraordinary": [{"vertex", "kind", "limit", "normal"} (and "limit_exact")], "exit_status"}``.
 """
 
@@ -140,11 +146,14 @@ def run(args) -> int:
     scheme, mesh, from_faces = prepare_mesh(args.scheme, original)
     result = mesh_limits(mesh, scheme, exact=args.exact, progress=None if args.quiet else progress_lines)
     left_out = result.not_analysed()
+    off = {v for v, o in result.kinds.outcomes.items() if not o.on_surface}  # no limit point is their computed outcome
+    left_out.update({v: f"no limit point: {why}" for v, why in result.no_limit().items() if v not in off})
     if args.strict and left_out:
-        v, why = next(iter(left_out.items()))
+        v, why = next(iter(sorted(left_out.items())))
         raise InvalidMeshError(f"{mesh.name}: --strict: vertex {v} is not analysed: {why}")
     table = verdicts(scheme, result)
-    status = 0 if not left_out and original.defects.is_empty() and all(row["tangent_plane"] is not False for row in table) else 1
+    status = 0 if not left_out and original.defects.is_empty() and all(
+        row["tangent_plane"] is not False for row in table) else 1
     write_pictures(args, mesh, result, table)
     if not args.json:
         print_report(original, mesh, result, table, from_faces)

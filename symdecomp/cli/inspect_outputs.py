@@ -18,7 +18,7 @@ import numpy as np
 from symdecomp.cli.files import write_output_file
 from symdecomp.validate import MAX_MESH_FILE_BYTES, MESH_ADVICE, check_memory
 
-__all__ = ["memory_note", "verdicts", "json_report", "print_report", "write_pictures", "color_values"]
+__all__ = ["memory_note", "verdicts", "json_report", "print_report", "write_pictures", "color_values", "row_of_vertex"]
 
 #: Bytes of memory per byte of a mesh file, read and analysed (float coordinates, the topology, the 1-rings per kind),
 #: on top of :data:`MEMORY_BASE`: measured 12.4 for a one-million-quad OBJ (66 MiB, 819 MB at its peak) and 18 for the
@@ -71,8 +71,37 @@ def verdicts(scheme, result) -> list[dict]:
                      "count": int(len(result.kinds.rings[kind][0])), "c1": verdict.c1, "c1_reason": verdict.c1_reason,
                      "regime": verdict.regime, "tangent_plane": plane, "reason": reason,
                      "tangents": None if isinstance(masks, str) else list(masks.tangent_names),
-                     "levels": None if isinstance(masks, str) else masks.levels})
+                     "levels": None if isinstance(masks, str) else masks.levels, "eventual": None, "on_surface": True})
+    return rows + _outcome_rows(scheme, result, len(rows))
+
+
+def _outcome_rows(scheme, result, start: int) -> list[dict]:
+    """One row per distinct computed outcome of the vertices of no kind (:mod:`symdecomp.analysis.mesh_outcomes`)."""
+    from symdecomp.verify.mesh_verdicts import outcome_verdict
+
+    counts: dict = {}
+    for outcome in result.kinds.outcomes.values():
+        counts[outcome] = counts.get(outcome, 0) + 1
+    rows = []
+    for index, (outcome, count) in enumerate(sorted(counts.items(), key=lambda oc: oc[0].label), start):
+        verdict, kind = outcome_verdict(scheme, outcome), outcome.eventual
+        fan = outcome.fan or (None, None)
+        rows.append({"index": index, "kind": outcome.label, "name": kind.name if kind else "spectrum" if outcome.fan else
+                     "off-surface", "faces": kind.faces if kind else fan[0], "sectors": list(kind.sectors) if kind else None,
+                     "closed": kind.closed if kind else fan[1], "corner": kind.corner if kind else None, "sharpness": None,
+                     "count": count, "c1": verdict.c1, "c1_reason": verdict.c1_reason, "regime": verdict.regime,
+                     "tangent_plane": None, "reason": outcome.no_limit, "tangents": None, "levels": outcome.levels,
+                     "eventual": None if kind is None else str(kind), "on_surface": outcome.on_surface, "outcome": outcome})
     return rows
+
+
+def row_of_vertex(result, table: list[dict]) -> np.ndarray:
+    """Per vertex, its row in ``table`` (``len(table)``: none, not analysed)."""
+    row = np.where(result.kinds.kind_of >= 0, result.kinds.kind_of, len(table))
+    index = {r["outcome"]: r["index"] for r in table if "outcome" in r}
+    for v, outcome in result.kinds.outcomes.items():
+        row[v] = index[outcome]
+    return row
 
 
 def _numbers(rows: np.ndarray) -> list[list]:
@@ -87,10 +116,11 @@ def json_report(original, mesh, result, table: list[dict], from_faces, status: i
     kinds = result.kinds
     extraordinary = []
     regular = [i for i, k in enumerate(kinds.kinds) if k.is_regular(lattice)]
-    ids = np.flatnonzero((kinds.kind_of >= 0) & ~np.isin(kinds.kind_of, regular))
+    rows = row_of_vertex(result, table)
+    ids = np.flatnonzero((rows < len(table)) & ~np.isin(rows, regular))
     names = [row["kind"] for row in table]
     limits, normals = _numbers(result.limits[ids]), _numbers(result.normals[ids])
-    for v, k, limit, normal in zip(ids.tolist(), kinds.kind_of[ids].tolist(), limits, normals):
+    for v, k, limit, normal in zip(ids.tolist(), rows[ids].tolist(), limits, normals):
         item = {"vertex": v, "kind": names[k], "limit": limit, "normal": normal}
         if v in result.exact:
             item["limit_exact"] = [str(x) for x in result.exact[v]]
@@ -98,14 +128,17 @@ def json_report(original, mesh, result, table: list[dict], from_faces, status: i
     return {"mesh": original.name, "scheme": result.scheme, "vertices": len(mesh.points), "faces": mesh.face_count,
             "refined_first": from_faces is not None,
             "from_faces": {str(v): f for v, f in (from_faces or {}).items()},
-            "kinds": table, "not_analysed": {str(v): why for v, why in result.not_analysed().items()},
+            "kinds": [{k: x for k, x in row.items() if k != "outcome"} for row in table],
+            "not_analysed": {str(v): why for v, why in result.not_analysed().items()},
+            "no_limit": {str(v): why for v, why in result.no_limit().items()},
             "defects": original.defects.as_dict(), "extraordinary": extraordinary, "exit_status": status}
 
 
 def print_report(original, mesh, result, table: list[dict], from_faces) -> None:
     analysed = int(result.analysed().sum())
     print(f"{original.name}: {len(original.points)} vertices, {original.face_count} faces; scheme {result.scheme}; "
-          f"{analysed} of {len(mesh.points)} vertices analysed in {len(table)} kinds")
+          f"{analysed} of {len(mesh.points)} vertices analysed in {len(result.kinds.kinds)} kinds"
+          + (f", {len(result.kinds.outcomes)} with computed outcomes" if result.kinds.outcomes else ""))
     if from_faces is not None:
         print(f"faces other than quads: Catmull-Clark's first step taken exactly ({mesh.face_count} quads); "
               f"{len(from_faces)} extraordinary points came from faces: "
@@ -115,6 +148,13 @@ def print_report(original, mesh, result, table: list[dict], from_faces) -> None:
     for row in table:
         plane = {True: "yes", False: "not certified", None: "-"}[row["tangent_plane"]]
         print(f"{row['index']:>3}  {row['kind']:<34} {row['count']:>9}  {row['c1']:<10} {row['regime']:<10} {plane}")
+    no_limit = result.no_limit()
+    if no_limit:
+        lacking: dict[str, list[int]] = {}
+        for v, why in no_limit.items():
+            lacking.setdefault(why, []).append(v)
+        for why, vs in lacking.items():
+            print(f"no limit point: {len(vs)} vertices ({', '.join(map(str, vs[:10]))}{' ...' if len(vs) > 10 else ''}): {why}")
     left = result.not_analysed()
     if left:
         reasons: dict[str, list[int]] = {}
@@ -125,20 +165,24 @@ def print_report(original, mesh, result, table: list[dict], from_faces) -> None:
     if not original.defects.is_empty():
         parts = [f"{len(v)} {k.replace('_', ' ')}" for k, v in original.defects.as_dict().items() if v]
         print(f"left out of the file: {', '.join(parts)}")
+    edits = original.defects.hierarchical_edits
+    if edits:
+        print(f"hierarchical edits left out (lines {', '.join(str(line) for line, _ in edits)}; acting from level "
+              f"{min(level for _, level in edits)} on): the analysis is of the unedited surface of the control mesh")
 
 
 def color_values(result, table: list[dict], what: str, points: np.ndarray) -> np.ndarray:
     """Per vertex, the value ``--color-by what`` colours by (words or numbers; see the module docstring)."""
-    kind_of = result.kinds.kind_of
+    row = row_of_vertex(result, table)
     if what in ("verdict", "regime"):
         key = "c1" if what == "verdict" else "regime"
-        words = np.array([row[key] for row in table] + ["not analysed"], dtype=object)
-        return words[np.where(kind_of >= 0, kind_of, len(table))]
+        words = np.array([r[key] for r in table] + ["not analysed"], dtype=object)
+        return words[row]
     if what == "kind":
-        return np.where(kind_of >= 0, kind_of, np.nan).astype(np.float64)
+        return np.where(row < len(table), row, np.nan).astype(np.float64)
     if what == "valence":
-        faces = np.array([row["faces"] for row in table] + [np.nan], dtype=np.float64)
-        return faces[np.where(kind_of >= 0, kind_of, len(table))]
+        faces = np.array([np.nan if r["faces"] is None else r["faces"] for r in table] + [np.nan], dtype=np.float64)
+        return faces[row]
     size = float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))) or 1.0
     return np.linalg.norm(result.limits - points, axis=1) / size
 

@@ -182,6 +182,9 @@ def _run_mesh(args) -> int:
                   f"Biermann et al.'s, not its surface's (they differ by {r.biermann_normal_disagreement:.2e})")
         if r.rounded_tags:
             print(f"  {r.rounded_tags} sharpness tags not exact in single precision: both sides given OpenSubdiv's float")
+        if r.single_precision:
+            print(f"  {r.single_precision} vertices whose rule changes with a weight not exact in single precision: positions "
+                  f"apart, to 1e-6 (they differ by {r.single_precision_disagreement:.2e})")
         if r.darts:
             print(f"  {r.darts} dart vertices apart: OpenSubdiv's limit mask there is the smooth one, not the dart's "
                   f"eigenvector (they differ by {r.dart_position_disagreement:.2e})")

@@ -18,10 +18,13 @@ tags are 0-based, as OpenSubdiv reads them:
   edge-and-corner; OpenSubdiv's shape loader takes edge-only then, so write the tag to compare with it);
 * ``t creasemethod 0/0/1 normal|chaikin``, ``t smoothtriangles 0/0/1 catmark|smooth``;
 * ``t facevaryinginterpolateboundary``, ``t facevaryingpropagatecorners``: face-varying data only, ignored;
-* hierarchical edits (``t vertexedit``, ``t edgeedit``, ``t faceedit``): refused by design, with a line that says so.
-  They override points at refined levels, so the surface is no longer the subdivision surface of the control mesh,
-  which is what every verdict is about; OpenSubdiv's 3.0 release removed them too ("support for hierarchical features
-  has been removed from the 3.0 release", its page *Hierarchical Edits*). Any other tag: refused.
+* hierarchical edits (``t vertexedit``, ``t edgeedit``, ``t faceedit``): read (their paths checked: ``length, face,
+  subface.., [vertex or edge]``) and left out of the mesh, listed with their line and the first level they act at
+  (:attr:`ParsedMesh.edits`, then the mesh's defects). They override points, sharpness or holes at refined levels, so
+  the edited surface is not the subdivision surface of the control mesh, which is what every verdict is about: the
+  analysis is of the unedited surface, and says what it left out. OpenSubdiv's 3.0 release removed them too ("support
+  for hierarchical features has been removed from the 3.0 release", its page *Hierarchical Edits*). Any other tag:
+  refused.
 
 A number is a decimal ``[+-]digits[.digits][e[+-]digits]`` of at most
 :data:`~symdecomp.validate.MAX_NUMBER_CHARS` characters whose value has magnitude at most
@@ -76,6 +79,8 @@ class ParsedMesh:
     corners: np.ndarray
     #: The tags read (OBJ only).
     tags: MeshTags | None = None
+    #: ``(line, level)`` of each hierarchical edit read (OBJ only): left out of the mesh.
+    edits: tuple[tuple[int, int], ...] = ()
 
 
 class _Irregular(Exception):
@@ -142,7 +147,8 @@ def _fast(lines: list[bytes], name: str) -> ParsedMesh:
         _other(words, f"{name}: line {number_}", tags)
     floats = _fast_vertices(vlines)
     offsets, corners = _fast_faces(flines, len(floats))
-    return ParsedMesh(floats, _TextPoints(vlines), offsets, corners, tags.finish(len(floats), offsets, corners))
+    return ParsedMesh(floats, _TextPoints(vlines), offsets, corners, tags.finish(len(floats), offsets, corners),
+                      tuple(tags.edits))
 
 
 def _fast_vertices(vlines: list[bytes]) -> np.ndarray:
@@ -236,7 +242,8 @@ def _slow(lines: list[bytes], name: str, wrap=None) -> ParsedMesh:
     offsets = np.zeros(len(faces) + 1, dtype=np.int64)
     np.cumsum([len(f) for _, f in faces], out=offsets[1:])
     corners = np.array([i for _, f in faces for i in f], dtype=np.int64)
-    return ParsedMesh(floats, exact.__getitem__, offsets, corners, tags.finish(len(exact), offsets, corners))
+    return ParsedMesh(floats, exact.__getitem__, offsets, corners, tags.finish(len(exact), offsets, corners),
+                      tuple(tags.edits))
 
 
 def _face(tokens: list[str], count: int, where: str) -> tuple[str, tuple[int, ...]]:
@@ -261,6 +268,21 @@ def _other(words: list[str], where: str, tags: _TagReader) -> None:
                            f"the ignored {', '.join(sorted(IGNORED))})")
 
 
+def _edit_level(tag: str, ints: list[int], where: str) -> int:
+    """The first refined level a hierarchical edit acts at: its paths are ``length, face, subface.., [vertex or edge]``
+    (OpenSubdiv 2's ``shape_utils``), a face edit's path ending at a face, a vertex or edge edit's one element further."""
+    levels, k = [], 0
+    while k < len(ints):
+        length = ints[k]
+        if length < 1 + (tag != "faceedit") or k + 1 + length > len(ints):
+            raise InvalidMeshError(f"{where}: tag {tag!r}: the path at integer {k + 1} does not fit its length {length}")
+        levels.append(length - 1 - (tag != "faceedit"))
+        k += 1 + length
+    if not levels:
+        raise InvalidMeshError(f"{where}: tag {tag!r} names no path")
+    return min(levels)
+
+
 class _TagReader:
     """OpenSubdiv's ``t`` lines, checked as read and, for the elements they name, once the faces are known."""
 
@@ -270,6 +292,8 @@ class _TagReader:
         self.corners: dict = {}
         self.holes: dict = {}
         self.options: dict = {}
+        #: ``(line, level)`` of each hierarchical edit: left out of the mesh (module docstring).
+        self.edits: list[tuple[int, int]] = []
 
     def read(self, words: list[str], where: str) -> None:
         if len(words) < 2:
@@ -295,9 +319,7 @@ class _TagReader:
         elif tag in ("facevaryinginterpolateboundary", "facevaryingpropagatecorners") and len(ints) == 1 and not numbers:
             pass  # face-varying data (texture coordinates) only: the surface is the same
         elif tag in ("vertexedit", "edgeedit", "faceedit"):
-            raise InvalidMeshError(f"{where}: tag {tag!r}: hierarchical edits are refused by design: they change points at "
-                                   "refined levels, so the surface is not the subdivision surface of the mesh that the analysis "
-                                   f"is about (OpenSubdiv 3 dropped them too); remove the 't {tag}' lines to analyse the unedited surface")
+            self.edits.append((int(where.rsplit(" ", 1)[1]), _edit_level(tag, ints, where)))
         elif tag in ("crease", "corner", "hole", "interpolateboundary", "creasemethod", "smoothtriangles",
                      "facevaryinginterpolateboundary", "facevaryingpropagatecorners"):
             raise InvalidMeshError(f"{where}: tag {tag!r} with arguments {counts} {' '.join(args)[:60]!r} is malformed "

@@ -97,6 +97,9 @@ class MeshDefects:
     #: Every face dropped to leave a manifold mesh: the degenerate and repeated ones, and those that the rules of
     #: :mod:`symdecomp.schemes.mesh_topology` drop at non-manifold and misoriented edges and non-manifold vertices.
     dropped_faces: tuple[int, ...] = ()
+    #: OpenSubdiv's hierarchical edits (``t vertexedit``, ``edgeedit``, ``faceedit``) as ``(line, level)``: the file's
+    #: line and the first refined level the edit acts at; the analysis is of the unedited surface.
+    hierarchical_edits: tuple[tuple[int, int], ...] = ()
 
     def is_empty(self) -> bool:
         """Whether nothing was left out."""
@@ -108,4 +111,4 @@ class MeshDefects:
 
 
 _DEFECTS = ("non_manifold_edges", "misoriented_edges", "non_manifold_vertices", "degenerate_faces", "repeated_faces",
-            "isolated_vertices", "dropped_faces")
+            "isolated_vertices", "dropped_faces", "hierarchical_edits")

@@ -52,6 +52,7 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Sequence
+from dataclasses import replace
 from fractions import Fraction
 
 import numpy as np
@@ -118,11 +119,19 @@ class PolygonMesh:
 
     @classmethod
     def from_parsed(cls, floats: np.ndarray, exact_point, offsets: np.ndarray, corners: np.ndarray, *, name: str,
-                    tags: MeshTags | None = None, strict: bool = False) -> PolygonMesh:
+                    tags: MeshTags | None = None, strict: bool = False, edits: tuple = ()) -> PolygonMesh:
         """A mesh from a reader's checked arrays: ``floats`` ``(V, 3)`` finite float64 within the bound, ``exact_point(i)``
-        the exact coordinates of vertex ``i``, ``offsets``/``corners`` integer indices in range (not checked again)."""
+        the exact coordinates of vertex ``i``, ``offsets``/``corners`` integer indices in range (not checked again);
+        ``edits``, the ``(line, level)`` of the file's hierarchical edits, are left out and listed in the defects
+        (``strict``: refused)."""
+        if edits and strict:
+            line, level = edits[0]
+            raise InvalidMeshError(f"{name}: line {line}: a hierarchical edit (acting at level {level}) is left out of the mesh, "
+                                   "and strict reading refuses to leave anything out")
         mesh = cls.__new__(cls)
         mesh._build(floats, exact_point, offsets, corners, name, tags, strict)
+        if edits:
+            mesh.defects = replace(mesh.defects, hierarchical_edits=tuple(edits))
         return mesh
 
     def _build(self, floats, exact, offsets, corners, name, tags, strict) -> None:

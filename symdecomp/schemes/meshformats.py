@@ -173,7 +173,7 @@ def decode_mesh(data: bytes, fmt: str, *, name: str = "mesh", strict: bool = Fal
     wrap = reading_progress(progress)
     parsed = read_ply(data, name, wrap) if fmt == "ply" else read_obj(data, name, wrap) if fmt == "obj" else _read_off(data, name, wrap)
     return PolygonMesh.from_parsed(parsed.floats, parsed.exact_point, parsed.offsets, parsed.corners, name=name, tags=parsed.tags,
-                                   strict=strict)
+                                   strict=strict, edits=parsed.edits)
 
 
 def _off_lines(lines: list[bytes]):

@@ -14,6 +14,10 @@ judged by Reif's test on its closed fan cut by one sharp ray (:func:`~symdecomp.
 exact spectrum of its 1-ring matrix (``check --k N --dart --certify`` proves that spectrum; ``not-c1`` when the
 eigenvalue 1 is not simple and strictly dominant), then the characteristic map's regularity and winding number.
 
+A vertex of no kind has a computed :class:`~symdecomp.analysis.mesh_outcomes.Outcome` (:func:`outcome_verdict`): a
+transient vertex has its eventual kind's verdicts, the reason saying after how many levels; a vertex off the limit
+surface has none (``n/a``, with why); a fan the sector model does not take is judged by its exact spectrum.
+
 >>> from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> v = kind_verdict(catmull_clark(), NeighbourhoodKind("smooth", 3, (3,), True))
@@ -31,7 +35,7 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_type
 
-__all__ = ["KindVerdict", "kind_verdict", "dart_verdict"]
+__all__ = ["KindVerdict", "kind_verdict", "dart_verdict", "outcome_verdict"]
 
 
 @dataclass(frozen=True)
@@ -109,3 +113,18 @@ def kind_verdict(scheme: Scheme, kind: NeighbourhoodKind) -> KindVerdict:
     c1, why = _c1(scheme, kind)
     regime, regime_why = _regime(scheme, kind)
     return KindVerdict(c1, why, regime, regime_why)
+
+
+def outcome_verdict(scheme: Scheme, outcome) -> KindVerdict:
+    """The verdicts of a vertex's computed :class:`~symdecomp.analysis.mesh_outcomes.Outcome` (module docstring)."""
+    from symdecomp.analysis.mesh_outcomes import Outcome, spectrum_verdict
+
+    outcome = check_type(outcome, Outcome, "outcome", hint="an outcome of symdecomp.analysis.mesh_kinds.classify_vertices")
+    check_scheme(scheme)
+    if outcome.eventual is not None:
+        eventual = kind_verdict(scheme, outcome.eventual)
+        return KindVerdict(eventual.c1, f"{outcome.reason}: {eventual.c1_reason}", eventual.regime, eventual.regime_reason)
+    if outcome.fan is not None:
+        c1, why = spectrum_verdict(scheme, outcome)
+        return KindVerdict(c1, why, "n/a", "the curvature regime is defined at smooth vertices")
+    return KindVerdict(outcome.c1, outcome.reason, "n/a", outcome.reason)

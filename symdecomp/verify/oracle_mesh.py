@@ -34,6 +34,7 @@ from __future__ import annotations
 import ctypes
 import math
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 
@@ -46,6 +47,20 @@ __all__ = ["MeshOracleResult", "compare_mesh", "osd_mesh_frames", "single_precis
 
 #: The default agreement: positions relative to the mesh's size, normals as unit vectors.
 TOLERANCE = 1e-12
+
+
+#: The tolerance at vertices blended with a weight OpenSubdiv rounds to single precision (relative error ``2**-24``,
+#: times the difference of the two rules' points, a fraction of the mesh's size).
+SINGLE_PRECISION_TOLERANCE = 1e-6
+
+
+def _single_precision(ours) -> np.ndarray:
+    """The transient vertices whose fractional weights are not exact in single precision."""
+    def exact(w) -> bool:
+        return Fraction(float(np.float32(float(w)))) == w
+
+    return np.array([v for v, o in ours.kinds.outcomes.items() if o.eventual is not None and not all(map(exact, o.weights))],
+                    dtype=np.int64)
 
 
 @dataclass(frozen=True)
@@ -78,10 +93,15 @@ class MeshOracleResult:
     #: disagreement, outside the verdict.
     biermann: int = 0
     biermann_normal_disagreement: float = 0.0
+    #: Transient vertices whose rule changes with a fractional weight not exact in single precision (OpenSubdiv blends
+    #: with the float nearest it): compared apart, to :data:`SINGLE_PRECISION_TOLERANCE`, and their largest disagreement.
+    single_precision: int = 0
+    single_precision_disagreement: float = 0.0
 
     @property
     def agrees(self) -> bool:
-        return self.position_disagreement <= self.tolerance and self.normal_disagreement <= self.tolerance
+        return (self.position_disagreement <= self.tolerance and self.normal_disagreement <= self.tolerance
+                and self.single_precision_disagreement <= SINGLE_PRECISION_TOLERANCE)
 
     def as_json(self) -> dict:
         out = {name: getattr(self, name) for name in self.__dataclass_fields__}
@@ -119,15 +139,16 @@ def _levels(mesh: PolygonMesh) -> int:
 def osd_mesh_frames(mesh: PolygonMesh, scheme: Scheme, levels: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """OpenSubdiv's limit positions and first derivatives of every vertex of ``mesh`` (tags included), ``(V, 3)`` each."""
     return _osd_frames(float_points(mesh), mesh.faces, mesh.tags.creases, mesh.tags.corners, mesh.tags.interpolate_boundary,
-                       scheme, levels)
+                       scheme, levels, mesh.tags.crease_method)
 
 
-def _osd_frames(points, faces, creases, corners, interpolate_boundary: str, scheme: Scheme, levels: int) -> tuple:
+def _osd_frames(points, faces, creases, corners, interpolate_boundary: str, scheme: Scheme, levels: int,
+                creasing: str = "uniform") -> tuple:
     from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
     from symdecomp.verify.opensubdiv.sharp import OsdOptions, _entry, _tags
 
     options = OsdOptions(scheme.lattice.select({BICUBIC: "catmull-clark", BOX_SPLINE: "loop"}, "OpenSubdiv's scheme"),
-                         interpolate_boundary)
+                         interpolate_boundary, creasing)
     fn = _entry("symdecomp_osd_tagged_limit_frames")
     ip, dp, fp = ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_float)
     fn.argtypes = [ip, ctypes.c_int, ctypes.c_int, ctypes.c_int, ip, dp, ctypes.c_int, ip, fp, ctypes.c_int, ip, fp,
@@ -159,13 +180,19 @@ def _star_frames(mesh: PolygonMesh, scheme: Scheme, vertices, levels: int) -> tu
     A vertex's 1-ring one level down is made from its faces only (its vertex point from its 1-ring, the points of its
     edges from the two faces at each, the face points from its faces), so the limit of its descendant depends on its
     star alone; the stars go to OpenSubdiv as disjoint pieces of one mesh, a batch at a time, instead of the whole
-    mesh refined ``levels`` times (OpenSubdiv's rook, 3,000 quads at 7 levels, took 19 GB).
+    mesh refined ``levels`` times (OpenSubdiv's rook, 3,000 quads at 7 levels, took 19 GB). Under Chaikin's rule a half
+    edge's sharpness at its far end depends on the other edges there, so a vertex's piece is its 2-ring (the faces at
+    its 1-ring's vertices): one level down, the child's 2-ring is made from the children of the 1-ring's faces, whose
+    every rule sees complete fans in the 2-ring (:mod:`symdecomp.analysis.mesh_transient` refines the same pieces).
     """
     points, faces, tags = float_points(mesh), mesh.faces, mesh.tags
     at: dict[int, list[int]] = {}
     for i, f in enumerate(faces):
         for x in f:
             at.setdefault(x, []).append(i)
+    if tags.crease_method == "chaikin":
+        at = {v: sorted({i for x in {x for j in at[v] for x in faces[j]} for i in at[x]}) for v in vertices} | {
+            x: fs for x, fs in at.items() if x not in vertices}
     out = tuple(np.zeros((len(vertices), 3)) for _ in range(3))
     per_batch = max(1, REFINED_FACES // (4**levels))
     done = 0
@@ -188,7 +215,8 @@ def _star_frames(mesh: PolygonMesh, scheme: Scheme, vertices, levels: int) -> tu
             corners.update({local[x]: tags.corners[x] for x in star if x in tags.corners})
             where.append(local[v])
             count += len(at[v])
-        got = _osd_frames(np.array(piece_points), piece_faces, creases, corners, tags.interpolate_boundary, scheme, levels)
+        got = _osd_frames(np.array(piece_points), piece_faces, creases, corners, tags.interpolate_boundary, scheme, levels,
+                          tags.crease_method)
         for frame, values in zip(out, got):
             frame[done:done + len(where)] = values[where]
         done += len(where)
@@ -204,10 +232,27 @@ def _frames(mesh: PolygonMesh, scheme: Scheme, ours, levels: int) -> tuple:
         return frames
     late = [int(v) for kind in ours.kinds.kinds if not (kind.name == "smooth" or kind.sharpness == math.inf)
             for v in ours.kinds.rings[kind][0]]
+    late += [v for v, outcome in ours.kinds.outcomes.items() if outcome.eventual is not None]  # transient tags
     if late:
         for frame, values in zip(frames, _star_frames(mesh, scheme, late, levels)):
             frame[late] = values
     return frames
+
+
+def _groups(ours, scheme: Scheme):
+    """``(kind, masks, vertices)`` per kind, and per transient vertex its eventual kind (whose rules act at its limit)."""
+    from symdecomp.analysis.mesh_limits import kind_masks
+    from symdecomp.errors import NotApplicableError
+
+    for kind in ours.kinds.kinds:
+        yield kind, ours.masks[kind], ours.kinds.rings[kind][0]
+    for v, outcome in ours.kinds.outcomes.items():
+        if outcome.eventual is not None:
+            try:
+                masks = kind_masks(scheme, outcome.eventual)
+            except NotApplicableError as exc:
+                masks = str(exc)
+            yield outcome.eventual, masks, np.array([v], dtype=np.int64)
 
 
 def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERANCE) -> MeshOracleResult:
@@ -222,14 +267,16 @@ def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERA
     size = max(1.0, float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))))
     regular = 2 if scheme.lattice.face_sides == 4 else 3  # faces at a regular boundary vertex
     two_sided, dart, biermann = (np.zeros(len(points), dtype=bool) for _ in range(3))
-    for kind in ours.kinds.kinds:
-        masks, where = ours.masks[kind], ours.kinds.rings[kind][0]
+    for kind, masks, where in _groups(ours, scheme):
         if (kind.closed and kind.name != "smooth" and len(kind.sectors) >= 2) or getattr(masks, "tangent_plane", None) is False:
             two_sided[where] = True
         elif not kind.closed and (len(kind.sectors) == 1 or kind.sharpness < 10) and sum(kind.sectors) > regular:
             biermann[where] = True
         if kind.name == "dart":
             dart[where] = True
+    rounded_weights = np.intersect1d(_single_precision(ours), analysed)
+    analysed = np.setdiff1d(analysed, rounded_weights)
+    single = (np.linalg.norm(ours.limits[rounded_weights] - limits[rounded_weights], axis=1) / size).max(initial=0.0)
     darts, analysed = analysed[dart[analysed]], analysed[~dart[analysed]]
     dart_position = np.linalg.norm(ours.limits[darts] - limits[darts], axis=1) / size
     cross = np.cross(du, dv)
@@ -250,4 +297,4 @@ def compare_mesh(mesh: PolygonMesh, scheme: Scheme, *, tolerance: float = TOLERA
     (p, pv), (nrm, nv) = worst(position, analysed), worst(normal, one_sided)
     return MeshOracleResult(mesh.name, scheme.name, len(analysed), p, nrm, pv, nv, int(two_sided[analysed].sum()),
                             len(darts), float(dart_position.max()) if len(darts) else 0.0, levels, float(tolerance), rounded,
-                            len(apart), float(normals(apart).max()) if len(apart) else 0.0)
+                            len(apart), float(normals(apart).max()) if len(apart) else 0.0, len(rounded_weights), float(single))

@@ -77,16 +77,20 @@ def test_every_vertex_is_classified_as_opensubdiv_tags_it():
     assert kinds.not_analysed == {}
 
 
-def test_vertices_the_sector_model_cannot_take_are_named():
+def test_vertices_the_sector_model_cannot_take_get_computed_outcomes():
     tags = MeshTags(creases={(idx(1, 2), idx(2, 2)): Fraction(1), (idx(2, 2), idx(3, 2)): Fraction(2)},
                     corners={idx(4, 4): Fraction(1, 2)}, holes=frozenset({0}))
     kinds = classify_vertices(grid(tags), QUAD)
-    assert kinds.not_analysed[idx(2, 2)] == "sharp edges of different sharpness (1, 2) meet there"
-    assert kinds.not_analysed[idx(4, 4)].startswith("a semi-sharp vertex tag (1/2)")
-    assert kinds.not_analysed[idx(1, 1)] == "a corner of a face tagged as a hole"
-    assert kinds.kind_of[idx(2, 2)] == -1
+    assert not kinds.not_analysed and kinds.kind_of[idx(2, 2)] == -1
+    mixed, semi = kinds.outcomes[idx(2, 2)], kinds.outcomes[idx(4, 4)]
+    assert mixed.reason.startswith("sharp edges of different sharpness (1, 2) meet there: after 2 levels")
+    assert mixed.eventual == NeighbourhoodKind("smooth", 4, (4,), True) and semi.levels == 1
+    assert semi.reason.startswith("a semi-sharp vertex tag (1/2): after 1 level ")
+    assert kinds.kind_of[idx(1, 1)] >= 0  # a corner of a hole keeps its kind: holes change no rule
+    assert kinds.outcomes[idx(0, 0)].reason == "no point on the limit surface: every face of it is tagged as a hole"
     none = classify_vertices(grid(MeshTags(interpolate_boundary="none")), QUAD)
-    assert sorted(none.not_analysed) == sorted(v for v in range(36) if v % 6 in (0, 5) or v // 6 in (0, 5))
+    assert sorted(none.outcomes) == sorted(v for v in range(36) if v % 6 in (0, 5) or v // 6 in (0, 5))
+    assert not any(o.on_surface for o in none.outcomes.values())
 
 
 @pytest.mark.parametrize("tags", [MeshTags(), MeshTags(creases=CREASE), MeshTags(corners={idx(2, 2): Fraction(10)})],

@@ -13,7 +13,7 @@ from symdecomp.output.colored_mesh import CATEGORY_COLORS
 from symdecomp.schemes import meshformats
 from symdecomp.schemes.mesh_tags import MeshTags
 from symdecomp.schemes.meshformats import encode_mesh
-from tests.analysis.test_mesh_limits import grid, idx
+from tests.analysis.test_mesh_limits import N, grid, idx
 from tests.cli.test_inspect_cmd import MODEL
 
 
@@ -62,20 +62,41 @@ def test_colour_by_regime_in_obj_and_displacement_as_quality(tmp_path):
     assert vertex["q"].min() >= 0 and vertex["q"].max() > 0
 
 
-def test_something_left_out_is_exit_1_and_strict_refuses_it(tmp_path, capsys, monkeypatch):
-    """Two creases of different sharpness meet at vertex 14: it is not analysed (exit 1, the reason named), and
-    ``--strict`` refuses in one line (exit 2). The tagged mesh is handed to the command as the reader would."""
-
+def test_a_transient_vertex_gets_its_eventual_kind_s_row_and_its_limit_point(tmp_path, capsys, monkeypatch):
+    """Two creases of different sharpness meet at vertex 14: its row is the kind it becomes once they have decayed, with
+    that kind's verdicts and the levels; its limit point is computed, so nothing is left out (exit 0). The tagged mesh is
+    handed to the command as the reader would."""
     tags = MeshTags(creases={(idx(1, 2), idx(2, 2)): Fraction(1), (idx(2, 2), idx(3, 2)): Fraction(2)})
     monkeypatch.setattr(meshformats, "read_mesh", lambda *args, **kwargs: grid(tags))
     (tmp_path / "tagged.obj").write_text("")
-    assert main(["inspect", str(tmp_path / "tagged.obj")]) == 1
-    assert "not analysed: 1 vertices (14): sharp edges of different sharpness (1, 2) meet there" in capsys.readouterr().out
-    assert main(["inspect", str(tmp_path / "tagged.obj"), "--json"]) == 1
-    assert json.loads(capsys.readouterr().out)["not_analysed"] == {"14": "sharp edges of different sharpness (1, 2) meet there"}
-    assert main(["inspect", str(tmp_path / "tagged.obj"), "--strict"]) == 2
+    assert main(["inspect", str(tmp_path / "tagged.obj"), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["not_analysed"] == {} and data["no_limit"] == {}
+    row = next(r for r in data["kinds"] if r["eventual"] is not None)
+    smooth = next(r for r in data["kinds"] if r["kind"] == "smooth n = 4")
+    assert (row["kind"], row["eventual"], row["levels"], row["count"]) == ("smooth n = 4 after 2 levels", "smooth n = 4", 2, 1)
+    assert (row["c1"], row["regime"], row["on_surface"]) == (smooth["c1"], smooth["regime"], True)
+    assert row["c1_reason"].startswith("sharp edges of different sharpness (1, 2) meet there: after 2 levels")
+    entry = next(e for e in data["extraordinary"] if e["vertex"] == idx(2, 2))
+    assert entry["kind"] == row["kind"] and None not in entry["limit"] and None not in entry["normal"]
+
+
+def test_a_vertex_without_a_limit_point_is_exit_1_and_strict_refuses_it(tmp_path, capsys, monkeypatch):
+    """Under edge-only a boundary vertex of one face (OpenSubdiv's crease rule) is judged by its spectrum: a verdict, no
+    limit point here (exit 1, listed with why); ``--strict`` refuses it in one line (exit 2)."""
+    monkeypatch.setattr(meshformats, "read_mesh", lambda *args, **kwargs: grid(MeshTags(interpolate_boundary="edge-only")))
+    (tmp_path / "edge-only.obj").write_text("")
+    assert main(["inspect", str(tmp_path / "edge-only.obj"), "--json"]) == 1
+    data = json.loads(capsys.readouterr().out)
+    corners = [idx(0, 0), idx(N, 0), idx(0, N), idx(N, N)]
+    assert sorted(map(int, data["no_limit"])) == corners and data["not_analysed"] == {}
+    row = next(r for r in data["kinds"] if r["name"] == "spectrum")
+    assert (row["count"], row["c1"], row["faces"], row["closed"]) == (4, "undecided", 1, False)
+    assert main(["inspect", str(tmp_path / "edge-only.obj")]) == 1
+    assert f"no limit point: 4 vertices ({', '.join(map(str, corners))}): a fan judged by its spectrum" in capsys.readouterr().out
+    assert main(["inspect", str(tmp_path / "edge-only.obj"), "--strict"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "--strict: vertex 14 is not analysed" in err
+    assert err.count("\n") == 1 and f"--strict: vertex {corners[0]} is not analysed: no limit point: " in err
 
 
 def test_a_mixed_mesh_takes_catmull_clark_s_first_step(tmp_path, capsys):

@@ -56,7 +56,8 @@ def test_interpolateboundary_follows_renderman_and_opensubdiv_and_defaults_to_ed
 
 
 @pytest.mark.parametrize(("tail", "words"), [
-    ("t vertexedit 4/4/3 3 4 1 0 0 0 1 0 add P value\n", "line 16: tag 'vertexedit': hierarchical edits"),
+    ("t vertexedit 4/1/3 5 4 1 0 1 add P value\n", "line 16: tag 'vertexedit': the path at integer 1 does not fit its length 5"),
+    ("t faceedit 1/0/1 0 hole\n", "line 16: tag 'faceedit': the path at integer 1 does not fit its length 0"),
     ("t bogus 0/0/0\n", "line 16: unknown tag 'bogus'"),
     ("t crease 2/1/0 0 7 1\n", "line 16: tag 'crease': (0, 7) is not an edge of a face of the file"),
     ("t crease 3/1/0 0 1 2 1\n", "line 16: tag 'crease' takes pairs of vertices"),
@@ -73,6 +74,17 @@ def test_a_tag_or_keyword_that_would_change_the_surface_is_refused_with_its_line
     with pytest.raises(InvalidMeshError) as exc:
         decode_mesh(obj(CUBE_F, tail=tail), "obj", name="cube.obj")
     assert one_line(exc).startswith("cube.obj: ") and words in str(exc.value)
+
+
+def test_hierarchical_edits_are_left_out_with_their_line_and_level_and_refused_when_strict():
+    tail = "t vertexedit 4/4/3 3 4 1 0 0 0 1 0 add P value\nt faceedit 8/0/1 2 4 1 4 3 0 2 2 hole\n"
+    mesh = decode_mesh(obj(CUBE_F, tail=tail), "obj", name="cube.obj")
+    assert mesh.defects.hierarchical_edits == ((16, 1), (17, 1)) and mesh.faces == tuple(CUBE_F)
+    assert mesh.defects.as_dict()["hierarchical_edits"] == [[16, 1], [17, 1]] and not mesh.defects.is_empty()
+    with pytest.raises(InvalidMeshError) as exc:
+        decode_mesh(obj(CUBE_F, tail=tail), "obj", name="cube.obj", strict=True)
+    assert one_line(exc) == ("cube.obj: line 16: a hierarchical edit (acting at level 1) is left out of the mesh, and strict "
+                             "reading refuses to leave anything out")
 
 
 def test_lines_that_do_not_change_the_surface_are_ignored():

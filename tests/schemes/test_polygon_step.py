@@ -102,10 +102,10 @@ def test_an_isolated_vertex_left_out_stays_where_it_is():
     assert step.mesh.points[5] == (9, 9, 9) and len(step.mesh.faces) == 7
 
 
-def test_a_valence_2_vertex_on_a_crease_is_left_out_with_the_reason():
+def test_a_valence_2_vertex_on_a_crease_is_judged_by_its_spectrum_and_has_no_limit_masks():
     """OpenSubdiv's val2_interior: a cube with a vertex in the middle of an edge (two pentagons), the edge's halves
-    infinitely sharp: after the first step the vertex has two faces and two sharp edges; it is not analysed, in one
-    line (the sector model refused it: exit 2), and everything else is."""
+    infinitely sharp: after the first step the vertex has two faces and two sharp edges, a fan the sector model does
+    not take: its outcome is its exact 1-ring spectrum's verdict, it has no limit point here, and every other vertex does."""
     from symdecomp.analysis.mesh_limits import mesh_limits
 
     points = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2), (1, 0, 0)]
@@ -113,5 +113,8 @@ def test_a_valence_2_vertex_on_a_crease_is_left_out_with_the_reason():
     tags = MeshTags(creases={(0, 8): Fraction(10), (1, 8): Fraction(10)})
     step = catmull_clark_polygon_step(PolygonMesh.from_arrays(points, faces, tags=tags))
     assert step.mesh.valence(8) == 2
-    left_out = mesh_limits(step.mesh, catmull_clark()).not_analysed()
-    assert list(left_out) == [8] and "valence 2 with sharp edges" in left_out[8]
+    result = mesh_limits(step.mesh, catmull_clark())
+    assert not result.not_analysed() and list(result.no_limit()) == [8]
+    outcome = result.kinds.outcomes[8]
+    assert outcome.label == "interior vertex of valence 2, sharpness inf, inf (spectrum)" and outcome.fan[:2] == (2, True)
+    assert outcome.fan[2] == (math.inf, math.inf)

@@ -100,7 +100,7 @@ from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "SectorFinding", "ring_nets",
-           "jacobian_sign", "arc_sweeps"]
+           "jacobian_sign", "arc_sweeps", "injective_condition"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -152,6 +152,8 @@ class SectorFinding:
     bound: float | None = None
     depth: int | None = None
     opening: float | None = None
+    #: How the map was certified, where a route other than the dense test's did it (``None``: the caller's method).
+    method: str | None = None
 
 
 def _curve_eigenvalues(sm):
@@ -329,8 +331,8 @@ def tangent_condition(roots, problem: str | None, picks) -> tuple[C1Verdict, str
                               + (" and the characteristic map collapses the sharp rays to O" if maybe == 0 else ""))
 
 
-def _injective(sm, vertex, sign, dirs, sweeps) -> tuple[C1Verdict, str, float | None]:
-    """Conditions 4 and 5 from the certified sweeps (module docstring)."""
+def injective_condition(sm, vertex, sign, dirs, sweeps) -> tuple[C1Verdict, str, float | None]:
+    """Conditions 4 and 5 from the certified sweeps ``(Delta_in, Delta_out)`` and the Jacobian's ``sign`` (module docstring)."""
     din, dout = sweeps
     if din is None or dout is None:
         return C1Verdict.UNDECIDED, "the argument swept by the ring's arcs is not certified (a curve may pass near 0)", None
@@ -398,7 +400,7 @@ def sector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, picks:
         return SectorFinding(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}", spectral,
                        lambdas, depth=cert.depth)
     sign = 1 if cert.status == "positive" else -1
-    verdict, text, opening = _injective(sm, vertex, sign, dirs, arc_sweeps(sm, nets, wide))
+    verdict, text, opening = injective_condition(sm, vertex, sign, dirs, arc_sweeps(sm, nets, wide))
     if verdict is C1Verdict.C1:
         where = " on the ring past the modified edges (level-1 distance 2 to 4, genuine splines)" if wide else ""
         text = f"{spectral.reason}; the characteristic map is regular{where} (|J| >= {round_down(cert.lower_bound)}) and {text}"

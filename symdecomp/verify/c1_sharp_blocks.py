@@ -52,6 +52,7 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
 from symdecomp.verify.c1_sharp import SectorFinding, SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, tangent_condition
+from symdecomp.verify.c1_sharp_fourier import applies, fourier_map
 from symdecomp.verify.c1_sharp_map import MAP_METHOD, map_from_blocks
 from symdecomp.verify.c1_sharp_spectrum import sector_matrices
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
@@ -186,6 +187,13 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
     if max_depth is None:
         return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
                              "characteristic map is not built (the blocks alone)", spectral, lambdas)
+    if applies(vertex, k, picks, crease):
+        try:
+            found = fourier_map(scheme, vertex, k, spectral, picks, max_depth)
+        except NotApplicableError as exc:
+            found = SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; no closed-form modes: {exc}", spectral, lambdas)
+        if found.verdict is not C1Verdict.UNDECIDED or k > MAX_DENSE_FACES:
+            return found
     found = map_from_blocks(scheme, vertex, sector, spectral, picks, crease, max_depth)
     if found.verdict is C1Verdict.UNDECIDED and vertex.faces <= MAX_DENSE_FACES:
         with flint.ctx.workprec(2 * flint.ctx.prec):  # the balls of the eigenvectors' solves, as the dense test retries
@@ -208,7 +216,7 @@ def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_
                          jacobian_sign=key.sign, jacobian_lower_bound=key.bound, subdivision_depth=key.depth,
                          max_depth=max_depth, lattice=vertex.lattice, vertex=_describe(vertex), lambdas=key.lambdas,
                          opening=key.opening, winding_number=1 if verdict is C1Verdict.C1 else None,
-                         method=MAP_METHOD if mapped else BLOCKS_METHOD)
+                         method=key.method or (MAP_METHOD if mapped else BLOCKS_METHOD))
 
 
 def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,

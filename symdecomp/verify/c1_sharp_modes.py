@@ -229,6 +229,9 @@ def sector_modes(scheme) -> SectorModes:
         return sum((entry(e) * coarse(c) for c, e in fine_rows.get(label, {}).items()), FIELD.zero)
 
     near = {lab: fine(lab) for lab in small.fine_labels if _face(lab) <= depth + 1}
+    ray = [lab for lab in near if lab != ORIGIN and lab[0] == 0 and lab[2] == 0]
+    if any(near[lab] != lab[1] * near[(0, 1, 0)] for lab in ray):  # the map's phantoms read the rays to distance 5
+        raise NotApplicableError("the modes are not linear along the sharp ray: it is not the crease curve's tangent")
     last = depth + 2
     generic = {lab[1:]: fine(lab) / OMEGA ** last for lab in small.fine_labels if _face(lab) == last}
     if not _mirror_consistent(generic):

@@ -51,7 +51,11 @@ from symdecomp.verify.c1_sharp_spectrum import mirror_label
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["fourier_map", "FOURIER_METHOD", "applies"]
+__all__ = ["fourier_map", "FOURIER_METHOD", "applies", "REACH"]
+
+#: How many faces to each side a face's wide-ring nets read (the ring's level-1 values and the level-0 3-ring behind the
+#: regular rule): the first face between is the one ``REACH`` faces past the values of their own.
+REACH = 1
 
 #: The method, as reported with each verdict whose map this route certified.
 FOURIER_METHOD = ("Zorin's conditions 1-2 from the sector's blocks (certified leading values, exact multiplicities); the "
@@ -191,7 +195,7 @@ def fourier_map(scheme, vertex: SharpVertex, k: int, spectral: SpectralResult, p
     dirs = (chi.direction, -chi.direction.conjugate())
     if chi.direction.contains(0):
         return SectorFinding(C1Verdict.UNDECIDED, "a sharp ray's image is not shown to be non-degenerate", spectral, lambdas)
-    g = chi.last + 3  # face g reads faces g - 2 .. g + 2: Fourier values only (checked below)
+    g = chi.last + REACH + 1  # face g reads faces g - REACH .. g + REACH: Fourier values only (checked below)
     explicit = k <= 2 * g + 1
     faces = list(range(k)) if explicit else list(range(g))
     half = (flint.arb(1) / 2, flint.arb(1) / 2)

@@ -81,10 +81,14 @@ def test_standard_rules_fail_at_many_faces_with_the_dominant_sine_block(name, ki
 
 
 @pytest.mark.parametrize("name", ["cc-blz", "loop-blz"])
-def test_past_map_faces_a_sector_the_blocks_pass_is_undecided(name):
-    # BLZ's double 1/2: the crease block's mirror-odd tangent and the mirror-even sine block j = 1, one in each part
+def test_past_map_faces_a_sector_the_blocks_pass_is_undecided_without_the_modes(name, monkeypatch):
+    # BLZ's double 1/2: the crease block's mirror-odd tangent and the mirror-even sine block j = 1, one in each part;
+    # the closed-form modes certify the map (:mod:`symdecomp.verify.c1_sharp_fourier`), without them it is undecided
     scheme = SCHEMES[name]()
-    r = c1_sharp_blocks(scheme, sd.SharpVertex.crease(100, 40, scheme.lattice))
+    vertex = sd.SharpVertex.crease(100, 40, scheme.lattice)
+    assert c1_sharp_blocks(scheme, vertex).verdict is C1Verdict.C1
+    monkeypatch.setattr("symdecomp.verify.c1_sharp_blocks.applies", lambda *args: False)
+    r = c1_sharp_blocks(scheme, vertex)
     assert r.verdict is C1Verdict.UNDECIDED and r.lambdas == pytest.approx([0.5, 0.5])
     assert r.spectral.status is C1Verdict.C1 and r.spectral.gap > 0
     assert "the spectral and tangent conditions hold (blocks)" in r.reason and f"at most {MAP_FACES} faces" in r.reason

@@ -154,6 +154,8 @@ class SectorFinding:
     opening: float | None = None
     #: How the map was certified, where a route other than the dense test's did it (``None``: the caller's method).
     method: str | None = None
+    #: The blocks' verdict is final (an exact multiple subdominant eigenvalue): the dense test would find the same.
+    final: bool = False
 
 
 def _curve_eigenvalues(sm):

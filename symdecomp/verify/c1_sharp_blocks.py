@@ -135,6 +135,16 @@ def _in_two_parts(crease: sp.Matrix, value) -> bool:
     return shifted * odd == sp.zeros(3, 1) and shifted.rank() == 2
 
 
+def _exact_tie(lead) -> bool:
+    """Whether ``lambda_2 = lambda_3`` exactly: one value of the blocks holds both (its multiplicity is exact)."""
+    values = list(lead.values)
+    unit = [v for v in values if v.ball.overlaps(flint.acb(1))]
+    if len(unit) != 1:
+        return False
+    rest = [v for v in values if v is not unit[0] for _ in range(v.multiplicity)]
+    return len(rest) > 2 and rest[2] is rest[1]
+
+
 def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[SpectralResult, list]:
     """Condition 1 from the leading values: ``(result, picks)`` with ``picks`` the two subdominant values (balls)."""
     values = list(lead.values)
@@ -154,8 +164,10 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
     uppers = [b.upper() for b in bounds] + ([abs(rest[2].ball).upper()] if len(rest) > 2 else [])
     third = functools.reduce(lambda a, b: a if a > b else b, uppers)
     if len(rest) > 2 and not abs(rest[2].ball) < second:
+        how = ("equal (one exact value of the blocks, counted with its multiplicity): lambda_2 is not strictly dominant, "
+               "which Zorin's sufficient conditions need" if rest[2] is rest[1] else "not separated")
         return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_2 = {lam[1]} and lambda_3 = {ball_text(rest[2].ball)} are "
-                              "equal (decided exactly by the blocks) or not separated"), picks
+                              f"{how}"), picks
     if top[0] is top[1] and not _in_two_parts(crease, top[0]):
         return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_1 = lambda_2 = {lam[0]} (a double eigenvalue of the blocks: "
                               "its eigenvectors are the dense route's, by the mirror's parts)"), picks
@@ -180,8 +192,8 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
     tangent = tangent_condition(*window.curve(k), picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:
         return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
-    if spectral.status is not C1Verdict.C1:
-        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas)
+    if spectral.status is not C1Verdict.C1:  # an exact tie is final: the dense test finds the same multiple eigenvalue
+        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas, final=_exact_tie(lead))
     if tangent:
         return SectorFinding(tangent[0], tangent[1], spectral, lambdas)
     if max_depth is None:
@@ -209,7 +221,7 @@ def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_
         reason = key.reason
     else:
         reason = "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
-    if verdict is C1Verdict.UNDECIDED:
+    if verdict is C1Verdict.UNDECIDED and not all(f.final or f.verdict is C1Verdict.C1 for f in found):
         reason += f" (the dense test reads sectors of at most {MAP_FACES} faces)"
     mapped = key.sign is not None or key.depth is not None
     return SharpC1Result(n=vertex.faces, scheme=scheme.name, verdict=verdict, reason=reason, spectral=key.spectral,
@@ -237,7 +249,7 @@ def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_face
         if max(vertex.sectors) <= map_faces:
             return c1_sharp_test(scheme, vertex, max_depth=max_depth)
         found = [_undecided(k, f"the blocks route does not apply ({exc})") for k in vertex.sectors]
-    decided = any(f.verdict is C1Verdict.NOT_C1 for f in found) or all(f.verdict is C1Verdict.C1 for f in found)
+    decided = any(f.verdict is C1Verdict.NOT_C1 for f in found) or all(f.verdict is C1Verdict.C1 or f.final for f in found)
     if decided or max(vertex.sectors) > map_faces:
         return _blocks_result(scheme, vertex, found, max_depth)
     return c1_sharp_test(scheme, vertex, max_depth=max_depth)

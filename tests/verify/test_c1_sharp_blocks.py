@@ -54,12 +54,15 @@ def test_the_blocks_fail_a_sector_exactly_where_the_dense_test_does_by_the_tange
     assert decided == by_tangent and (decided > 0) == (name in ("cc", "loop"))
 
 
-def test_where_the_blocks_do_not_decide_the_route_is_the_dense_test():
-    # Catmull-Clark at a boundary of 4 faces: lambda_2 = lambda_3 = 1/2 exactly, the blocks leave it undecided
+def test_an_exact_tie_of_the_blocks_is_the_dense_tests_verdict_without_it():
+    # Catmull-Clark at a boundary of 4 faces: lambda_2 = lambda_3 = 1/2 exactly (one value of the blocks, multiplicity
+    # counted exactly); the dense test finds the same double root, so its minutes are not spent (BLZ's corners: 1/2 thrice)
     scheme = sd.catmull_clark()
     vertex = sd.SharpVertex.boundary(4, "quad")
-    assert c1_sharp_blocks(scheme, vertex) == c1_sharp_test(scheme, vertex)
-    assert c1_sharp_test(scheme, vertex).method == SHARP_METHOD
+    blocks, dense = c1_sharp_blocks(scheme, vertex), c1_sharp_test(scheme, vertex)
+    assert blocks.verdict is dense.verdict is C1Verdict.UNDECIDED and dense.method == SHARP_METHOD
+    assert blocks.method == BLOCKS_METHOD and "one exact value of the blocks" in blocks.reason
+    assert "exactly equal" in dense.reason and blocks.lambdas == pytest.approx(dense.lambdas, abs=1e-12)
 
 
 @pytest.mark.parametrize("name, kind, k", [("cc", "boundary", 1000), ("cc", "corner", 777), ("loop", "boundary", 2000),

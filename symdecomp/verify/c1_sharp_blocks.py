@@ -21,11 +21,15 @@ the blocks decide alone is a failure: a sector whose subdominant eigenvectors mi
 at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
 mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
 mirror's direct sum (checked exactly on the crease block). Where conditions 1 and 2 hold, conditions 3-5 are
-decided on the characteristic map of the eigenvectors in the mirror parts the blocks name (:mod:`.c1_sharp_map`: no
-characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces).
+decided on the characteristic map: for that double ``1/2`` from :data:`~.c1_sharp_modes.WINDOW` faces on, from the
+eigenvectors in closed form on a few faces per sector (:mod:`.c1_sharp_fourier`, any ``k``); otherwise (or where that
+route does not decide) from the eigenvectors in the mirror parts the blocks name (:mod:`.c1_sharp_map`: no
+characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces). An exact
+tie ``lambda_2 = lambda_3`` (one value of the blocks, its multiplicity exact; BLZ's corners) is final: the dense test
+finds the same multiple root, and is not run.
 Everything else (other multiple subdominant eigenvalues, a map not certified) goes to the dense test up to
 :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
-rules past the map's faces: the spectral and tangent conditions hold).
+rules where no closed form is found past the map's faces: the spectral and tangent conditions hold).
 Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 >>> from symdecomp.schemes.scheme import catmull_clark

@@ -29,8 +29,8 @@ prove) *the* subdominant eigenvectors.
 
 >>> from symdecomp.schemes.files import load_scheme
 >>> modes = sector_modes(load_scheme("catmull-clark-blz"))
->>> modes.depth, FIELD.to_sympy(modes.fourier[(1, 1)])   # b_s = (1 + omega) omega^s: BLZ's (A, B) = (1, 2 cos(pi/2k))
-(0, (-2*I)/(tau + I))
+>>> modes.depth, FIELD.to_sympy(modes.coarse[(1, 1)])   # b_s = (1 + omega) omega^s = 2/(1 - i tau) omega^s
+(0, 2*I/(tau + I))
 """
 
 from __future__ import annotations
@@ -42,6 +42,7 @@ import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
 from symdecomp.errors import NotApplicableError
+from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.symbols import sector_faces, theta_k
@@ -193,10 +194,14 @@ def _mirror_consistent(amplitudes: dict) -> bool:
     return True
 
 
-@functools.lru_cache(maxsize=8)
 def sector_modes(scheme) -> SectorModes:
     """The closed form of the subdominant eigenvectors of a boundary or crease sector (module docstring); refused
     (:class:`~symdecomp.errors.NotApplicableError`, one line) where no such form is found."""
+    return _sector_modes(check_scheme(scheme))
+
+
+@functools.lru_cache(maxsize=8)
+def _sector_modes(scheme) -> SectorModes:
     lattice, weight = scheme.lattice, _near_weight(scheme)
     small, large = (sector_matrices(scheme, SharpVertex.boundary(k, lattice)) for k in (WINDOW, WINDOW + 1))
     if {p.name for p in sector_parts(small)} != {"even", "odd"}:

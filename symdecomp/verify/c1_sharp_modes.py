@@ -21,7 +21,8 @@ follow from the refinement rows the same way.
 **Why it holds for every k >= WINDOW.** A row reads its point's neighbours only, so the rows of faces
 ``0..depth + 2`` are the same at every ``k >= WINDOW`` (checked: identical at ``WINDOW`` and ``WINDOW + 1`` faces,
 entry by entry), and a row of a face away from both rays is the row one face over, shifted (checked at the window).
-The mirror commutes with the matrix (checked exactly by :func:`~symdecomp.verify.c1_sharp_spectrum.sector_parts`), and
+The mirror commutes with the matrix (checked exactly by :func:`~symdecomp.verify.c1_sharp_spectrum.sector_parts`) and
+with the refinement to the 3-ring (checked entry by entry), and
 the Fourier amplitudes satisfy the mirror's relation ``F(w, u) = omega conj(F(u, w))`` (``F(u, 0)`` real; checked
 exactly), so the vector defined by the three pieces satisfies every row of the ``k``-sector: ``x = Re v`` and
 ``y = Im v`` are eigenvectors for ``1/2``, odd and even, hence (each ``1/2`` simple in its mirror part, which the blocks
@@ -127,6 +128,13 @@ def _check_window(small: dict, large: dict, depth: int, what: str) -> None:
             raise NotApplicableError(f"the {what} rows of faces {last} and {last + 1} are not translates of each other")
 
 
+def _check_mirror(rows: dict, k: int) -> None:
+    """The refinement commutes with the mirror, entry by entry (the values next to ray ``k`` are the mirror images)."""
+    for lab, row in rows.items():
+        if rows.get(mirror_label(lab, k)) != {mirror_label(c, k): e for c, e in row.items()}:
+            raise NotApplicableError(f"the refinement row of {lab} is not the mirror image of its partner's")
+
+
 def _convert(weight):
     def entry(e):
         e = sp.sympify(e, strict=True)
@@ -208,6 +216,7 @@ def _sector_modes(scheme) -> SectorModes:
         raise NotApplicableError("the sector's rules are not mirror symmetric: no Fourier modes")
     coarse_rows = _rows(small.matrix, (small.labels, small.labels))
     fine_rows = _rows(small.refine, (small.fine_labels, small.labels))
+    _check_mirror(fine_rows, WINDOW)
     entry = _convert(weight)
     for depth in range(MAX_DEPTH + 1):
         _check_window(coarse_rows, _rows(large.matrix, (large.labels, large.labels)), depth, "2-ring")

@@ -72,7 +72,7 @@ class _Sector:
     lattice: Lattice
 
 
-def _to_acb(z) -> tuple:
+def _gaussian(z) -> tuple:
     """A Gaussian rational of sympy's ``QQ_I`` as ``(real, imaginary)`` fmpq."""
     return flint.fmpq(int(z.x.numerator), int(z.x.denominator)), flint.fmpq(int(z.y.numerator), int(z.y.denominator))
 
@@ -81,7 +81,7 @@ def _poly(p) -> list:
     degree = max((m[0] for m in p.monoms()), default=0)
     coeffs = [(flint.fmpq(0), flint.fmpq(0))] * (degree + 1)
     for (e,), c in p.terms():
-        coeffs[e] = _to_acb(c)
+        coeffs[e] = _gaussian(c)
     return coeffs
 
 

@@ -77,10 +77,6 @@ class SectorModes:
     #: The coarse amplitudes ``F(u, w)`` (level 0, 2-ring), for the record.
     coarse: dict
 
-    def first_generic(self) -> int:
-        """The first face whose fine values are Fourier values."""
-        return self.depth + 2
-
 
 def _face(label) -> int:
     return -1 if label == ORIGIN else label[0]

@@ -132,7 +132,9 @@ nothing else.
                    corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
                    by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
                    ``c1_sharp_ring``; with many faces, the spectral conditions from the blocks, ``c1_sharp_blocks``, and the
-                   characteristic map from the eigenvectors in the parts the blocks name, ``c1_sharp_map``), at
+                   characteristic map from the eigenvectors in the parts the blocks name, ``c1_sharp_map``; BLZ's
+                   subdominant eigenvectors in closed form for every k, ``c1_sharp_modes``, and the map from them on a
+                   few faces per k, ``c1_sharp_fourier``), at
                    infinitely sharp darts by Reif's test on the closed fan cut by one sharp ray (``c1_dart``); for
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or

@@ -37,7 +37,8 @@ and at concave corners; with BLZ's near-edge rule the spectral conditions hold a
 Where that rule is not the smooth one it makes the points next to ``O`` at every level, so the ring's patches there are
 not splines (:func:`~symdecomp.schemes.sector_patch.modified_edges`); the map is then certified on the wider ring of
 :mod:`.c1_sharp_ring` (level-1 distance 2 to 4, genuine splines, checked exactly), and is C1 at every boundary ``k``
-tried and at convex corners. The argument below holds with that ring as ``R`` (inner arc at level-1 distance 2, outer
+tried and at convex corners (past 8 faces from BLZ's subdominant eigenvectors in closed form, :mod:`.c1_sharp_fourier`,
+at every boundary to 10,000 faces tried). The argument below holds with that ring as ``R`` (inner arc at level-1 distance 2, outer
 at 4). Alone (the part
 of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave corner C1.
 
@@ -100,7 +101,7 @@ from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "SectorFinding", "ring_nets",
-           "jacobian_sign", "arc_sweeps"]
+           "jacobian_sign", "arc_sweeps", "injective_condition"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -152,6 +153,10 @@ class SectorFinding:
     bound: float | None = None
     depth: int | None = None
     opening: float | None = None
+    #: How the map was certified, where a route other than the dense test's did it (``None``: the caller's method).
+    method: str | None = None
+    #: The blocks' verdict is final (an exact multiple subdominant eigenvalue): the dense test would find the same.
+    final: bool = False
 
 
 def _curve_eigenvalues(sm):
@@ -329,8 +334,8 @@ def tangent_condition(roots, problem: str | None, picks) -> tuple[C1Verdict, str
                               + (" and the characteristic map collapses the sharp rays to O" if maybe == 0 else ""))
 
 
-def _injective(sm, vertex, sign, dirs, sweeps) -> tuple[C1Verdict, str, float | None]:
-    """Conditions 4 and 5 from the certified sweeps (module docstring)."""
+def injective_condition(sm, vertex, sign, dirs, sweeps) -> tuple[C1Verdict, str, float | None]:
+    """Conditions 4 and 5 from the certified sweeps ``(Delta_in, Delta_out)`` and the Jacobian's ``sign`` (module docstring)."""
     din, dout = sweeps
     if din is None or dout is None:
         return C1Verdict.UNDECIDED, "the argument swept by the ring's arcs is not certified (a curve may pass near 0)", None
@@ -398,7 +403,7 @@ def sector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, picks:
         return SectorFinding(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}", spectral,
                        lambdas, depth=cert.depth)
     sign = 1 if cert.status == "positive" else -1
-    verdict, text, opening = _injective(sm, vertex, sign, dirs, arc_sweeps(sm, nets, wide))
+    verdict, text, opening = injective_condition(sm, vertex, sign, dirs, arc_sweeps(sm, nets, wide))
     if verdict is C1Verdict.C1:
         where = " on the ring past the modified edges (level-1 distance 2 to 4, genuine splines)" if wide else ""
         text = f"{spectral.reason}; the characteristic map is regular{where} (|J| >= {round_down(cert.lower_bound)}) and {text}"

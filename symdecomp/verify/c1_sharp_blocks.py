@@ -21,11 +21,15 @@ the blocks decide alone is a failure: a sector whose subdominant eigenvectors mi
 at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
 mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
 mirror's direct sum (checked exactly on the crease block). Where conditions 1 and 2 hold, conditions 3-5 are
-decided on the characteristic map of the eigenvectors in the mirror parts the blocks name (:mod:`.c1_sharp_map`: no
-characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces).
+decided on the characteristic map: for that double ``1/2`` from :data:`~.c1_sharp_modes.WINDOW` faces on, from the
+eigenvectors in closed form on a few faces per sector (:mod:`.c1_sharp_fourier`, any ``k``); otherwise (or where that
+route does not decide) from the eigenvectors in the mirror parts the blocks name (:mod:`.c1_sharp_map`: no
+characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces). An exact
+tie ``lambda_2 = lambda_3`` (one value of the blocks, its multiplicity exact; BLZ's corners) is final: the dense test
+finds the same multiple root, and is not run.
 Everything else (other multiple subdominant eigenvalues, a map not certified) goes to the dense test up to
 :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
-rules past the map's faces: the spectral and tangent conditions hold).
+rules where no closed form is found past the map's faces: the spectral and tangent conditions hold).
 Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
@@ -52,6 +56,7 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
 from symdecomp.verify.c1_sharp import SectorFinding, SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, tangent_condition
+from symdecomp.verify.c1_sharp_fourier import applies, fourier_map
 from symdecomp.verify.c1_sharp_map import MAP_METHOD, map_from_blocks
 from symdecomp.verify.c1_sharp_spectrum import sector_matrices
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
@@ -134,6 +139,16 @@ def _in_two_parts(crease: sp.Matrix, value) -> bool:
     return shifted * odd == sp.zeros(3, 1) and shifted.rank() == 2
 
 
+def _exact_tie(lead) -> bool:
+    """Whether ``lambda_2 = lambda_3`` exactly: one value of the blocks holds both (its multiplicity is exact)."""
+    values = list(lead.values)
+    unit = [v for v in values if v.ball.overlaps(flint.acb(1))]
+    if len(unit) != 1:
+        return False
+    rest = [v for v in values if v is not unit[0] for _ in range(v.multiplicity)]
+    return len(rest) > 2 and rest[2] is rest[1]
+
+
 def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[SpectralResult, list]:
     """Condition 1 from the leading values: ``(result, picks)`` with ``picks`` the two subdominant values (balls)."""
     values = list(lead.values)
@@ -153,8 +168,10 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
     uppers = [b.upper() for b in bounds] + ([abs(rest[2].ball).upper()] if len(rest) > 2 else [])
     third = functools.reduce(lambda a, b: a if a > b else b, uppers)
     if len(rest) > 2 and not abs(rest[2].ball) < second:
+        how = ("equal (one exact value of the blocks, counted with its multiplicity): lambda_2 is not strictly dominant, "
+               "which Zorin's sufficient conditions need" if rest[2] is rest[1] else "not separated")
         return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_2 = {lam[1]} and lambda_3 = {ball_text(rest[2].ball)} are "
-                              "equal (decided exactly by the blocks) or not separated"), picks
+                              f"{how}"), picks
     if top[0] is top[1] and not _in_two_parts(crease, top[0]):
         return SpectralResult(k, C1Verdict.UNDECIDED, f"lambda_1 = lambda_2 = {lam[0]} (a double eigenvalue of the blocks: "
                               "its eigenvectors are the dense route's, by the mirror's parts)"), picks
@@ -179,13 +196,20 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
     tangent = tangent_condition(*window.curve(k), picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:
         return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
-    if spectral.status is not C1Verdict.C1:
-        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas)
+    if spectral.status is not C1Verdict.C1:  # an exact tie is final: the dense test finds the same multiple eigenvalue
+        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas, final=_exact_tie(lead))
     if tangent:
         return SectorFinding(tangent[0], tangent[1], spectral, lambdas)
     if max_depth is None:
         return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
                              "characteristic map is not built (the blocks alone)", spectral, lambdas)
+    if applies(vertex, k, picks, crease):
+        try:
+            found = fourier_map(scheme, vertex, k, spectral, picks, max_depth)
+        except NotApplicableError as exc:
+            found = SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; no closed-form modes: {exc}", spectral, lambdas)
+        if found.verdict is not C1Verdict.UNDECIDED or k > MAX_DENSE_FACES:
+            return found
     found = map_from_blocks(scheme, vertex, sector, spectral, picks, crease, max_depth)
     if found.verdict is C1Verdict.UNDECIDED and vertex.faces <= MAX_DENSE_FACES:
         with flint.ctx.workprec(2 * flint.ctx.prec):  # the balls of the eigenvectors' solves, as the dense test retries
@@ -201,14 +225,14 @@ def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_
         reason = key.reason
     else:
         reason = "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
-    if verdict is C1Verdict.UNDECIDED:
+    if verdict is C1Verdict.UNDECIDED and not all(f.final or f.verdict is C1Verdict.C1 for f in found):
         reason += f" (the dense test reads sectors of at most {MAP_FACES} faces)"
     mapped = key.sign is not None or key.depth is not None
     return SharpC1Result(n=vertex.faces, scheme=scheme.name, verdict=verdict, reason=reason, spectral=key.spectral,
                          jacobian_sign=key.sign, jacobian_lower_bound=key.bound, subdivision_depth=key.depth,
                          max_depth=max_depth, lattice=vertex.lattice, vertex=_describe(vertex), lambdas=key.lambdas,
                          opening=key.opening, winding_number=1 if verdict is C1Verdict.C1 else None,
-                         method=MAP_METHOD if mapped else BLOCKS_METHOD)
+                         method=key.method or (MAP_METHOD if mapped else BLOCKS_METHOD))
 
 
 def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,
@@ -229,7 +253,7 @@ def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_face
         if max(vertex.sectors) <= map_faces:
             return c1_sharp_test(scheme, vertex, max_depth=max_depth)
         found = [_undecided(k, f"the blocks route does not apply ({exc})") for k in vertex.sectors]
-    decided = any(f.verdict is C1Verdict.NOT_C1 for f in found) or all(f.verdict is C1Verdict.C1 for f in found)
+    decided = any(f.verdict is C1Verdict.NOT_C1 for f in found) or all(f.verdict is C1Verdict.C1 or f.final for f in found)
     if decided or max(vertex.sectors) > map_faces:
         return _blocks_result(scheme, vertex, found, max_depth)
     return c1_sharp_test(scheme, vertex, max_depth=max_depth)

@@ -122,22 +122,26 @@ def irregular_rows(sm, distance: int = 2) -> list:
     return bad
 
 
-def wide_nets(sm, chi: dict, lambdas) -> list:
+def wide_nets(sm, chi, lambdas, sectors=None) -> list:
     """The Bezier nets (complex balls) of the wide ring, face by face (``len(ring_faces)`` per face).
 
-    ``chi``: level-1 values on the 3-ring; ``lambdas = (lambda_1, lambda_2)`` (real balls).
+    ``chi``: level-1 values on the 3-ring (a mapping: ``label in chi``, ``chi[label]``); ``lambdas = (lambda_1,
+    lambda_2)`` (real balls); ``sectors``: the faces whose nets are built (default: all ``k``), in that order.
     """
     l1, l2 = lambdas
-    coarse = {lab: type(z)(z.real / l1, z.imag / l2) for lab, z in chi.items()}
-    cache = dict(chi)
+    cache: dict = {}
+
+    def coarse(label):
+        z = chi[label]
+        return type(z)(z.real / l1, z.imag / l2)
 
     def value(label):
         if label not in cache:
-            cache[label] = _regular(sm.lattice, sm.k, label, coarse.__getitem__)
+            cache[label] = chi[label] if label in chi else _regular(sm.lattice, sm.k, label, coarse)
         return cache[label]
 
     out, faces = [], ring_faces(sm.lattice)
-    for s in range(sm.k):
+    for s in range(sm.k) if sectors is None else sectors:
         if sm.lattice.handled("the wide ring's nets", BICUBIC, BOX_SPLINE) == BOX_SPLINE:
             values = []
             for t in faces:

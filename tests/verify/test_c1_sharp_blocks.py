@@ -54,12 +54,15 @@ def test_the_blocks_fail_a_sector_exactly_where_the_dense_test_does_by_the_tange
     assert decided == by_tangent and (decided > 0) == (name in ("cc", "loop"))
 
 
-def test_where_the_blocks_do_not_decide_the_route_is_the_dense_test():
-    # Catmull-Clark at a boundary of 4 faces: lambda_2 = lambda_3 = 1/2 exactly, the blocks leave it undecided
+def test_an_exact_tie_of_the_blocks_is_the_dense_tests_verdict_without_it():
+    # Catmull-Clark at a boundary of 4 faces: lambda_2 = lambda_3 = 1/2 exactly (one value of the blocks, multiplicity
+    # counted exactly); the dense test finds the same double root, so its minutes are not spent (BLZ's corners: 1/2 thrice)
     scheme = sd.catmull_clark()
     vertex = sd.SharpVertex.boundary(4, "quad")
-    assert c1_sharp_blocks(scheme, vertex) == c1_sharp_test(scheme, vertex)
-    assert c1_sharp_test(scheme, vertex).method == SHARP_METHOD
+    blocks, dense = c1_sharp_blocks(scheme, vertex), c1_sharp_test(scheme, vertex)
+    assert blocks.verdict is dense.verdict is C1Verdict.UNDECIDED and dense.method == SHARP_METHOD
+    assert blocks.method == BLOCKS_METHOD and "one exact value of the blocks" in blocks.reason
+    assert "exactly equal" in dense.reason and blocks.lambdas == pytest.approx(dense.lambdas, abs=1e-12)
 
 
 @pytest.mark.parametrize("name, kind, k", [("cc", "boundary", 1000), ("cc", "corner", 777), ("loop", "boundary", 2000),
@@ -81,10 +84,14 @@ def test_standard_rules_fail_at_many_faces_with_the_dominant_sine_block(name, ki
 
 
 @pytest.mark.parametrize("name", ["cc-blz", "loop-blz"])
-def test_past_map_faces_a_sector_the_blocks_pass_is_undecided(name):
-    # BLZ's double 1/2: the crease block's mirror-odd tangent and the mirror-even sine block j = 1, one in each part
+def test_past_map_faces_a_sector_the_blocks_pass_is_undecided_without_the_modes(name, monkeypatch):
+    # BLZ's double 1/2: the crease block's mirror-odd tangent and the mirror-even sine block j = 1, one in each part;
+    # the closed-form modes certify the map (:mod:`symdecomp.verify.c1_sharp_fourier`), without them it is undecided
     scheme = SCHEMES[name]()
-    r = c1_sharp_blocks(scheme, sd.SharpVertex.crease(100, 40, scheme.lattice))
+    vertex = sd.SharpVertex.crease(100, 40, scheme.lattice)
+    assert c1_sharp_blocks(scheme, vertex).verdict is C1Verdict.C1
+    monkeypatch.setattr("symdecomp.verify.c1_sharp_blocks.applies", lambda *args: False)
+    r = c1_sharp_blocks(scheme, vertex)
     assert r.verdict is C1Verdict.UNDECIDED and r.lambdas == pytest.approx([0.5, 0.5])
     assert r.spectral.status is C1Verdict.C1 and r.spectral.gap > 0
     assert "the spectral and tangent conditions hold (blocks)" in r.reason and f"at most {MAP_FACES} faces" in r.reason

@@ -13,7 +13,7 @@ from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sharp import SharpRules
 from symdecomp.verify.c1 import c1_test
-from symdecomp.verify.c1_sharp import _injective, c1_sharp_test
+from symdecomp.verify.c1_sharp import c1_sharp_test, injective_condition
 from symdecomp.verify.c1_sharp_spectrum import mirror_label, sector_eigenvalues, sector_matrices
 from symdecomp.verify.result import C1Verdict
 
@@ -93,13 +93,13 @@ def test_the_sector_spectrum_is_split_by_the_mirror():
 def test_the_injectivity_criterion_from_the_sweeps():
     pi = flint.arb.pi()
     vertex = SharpVertex.boundary(3, "quad")
-    assert _injective(None, vertex, 1, None, (pi, pi))[0] is C1Verdict.C1
-    assert _injective(None, vertex, -1, None, (-pi, -pi))[0] is C1Verdict.C1
-    fold = _injective(None, vertex, 1, None, (-pi / 2, -pi / 2))
+    assert injective_condition(None, vertex, 1, None, (pi, pi))[0] is C1Verdict.C1
+    assert injective_condition(None, vertex, -1, None, (-pi, -pi))[0] is C1Verdict.C1
+    fold = injective_condition(None, vertex, 1, None, (-pi / 2, -pi / 2))
     assert fold[0] is C1Verdict.NOT_C1 and "folds" in fold[1]
-    over = _injective(None, vertex, 1, None, (5 * pi / 2, 5 * pi / 2))
+    over = injective_condition(None, vertex, 1, None, (5 * pi / 2, 5 * pi / 2))
     assert over[0] is C1Verdict.NOT_C1 and "overlaps" in over[1]
-    assert _injective(None, vertex, 1, None, (pi, 3 * pi))[0] is C1Verdict.UNDECIDED  # a zero of chi inside the ring
+    assert injective_condition(None, vertex, 1, None, (pi, 3 * pi))[0] is C1Verdict.UNDECIDED  # a zero of chi inside the ring
 
 
 def test_what_the_sector_test_refuses():

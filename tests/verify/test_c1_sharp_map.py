@@ -22,6 +22,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES
 from symdecomp.verify.c1_sharp import c1_sharp_test
 from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
+from symdecomp.verify.c1_sharp_fourier import FOURIER_METHOD
 from symdecomp.verify.c1_sharp_map import MAP_METHOD, block_parts
 from symdecomp.verify.c1_sharp_spectrum import NEAR, ball_matrix, mirror_label, sector_eigenvector, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
@@ -58,7 +59,7 @@ def test_the_blocks_map_reaches_the_dense_verdict(name, kind, least):
         vertex = _vertex(kind, k, scheme.lattice)
         blocks, dense = c1_sharp_blocks(scheme, vertex), c1_sharp_test(scheme, vertex)
         _same(blocks, dense)
-        mapped += blocks.method == MAP_METHOD
+        mapped += blocks.method in (MAP_METHOD, FOURIER_METHOD)  # from 8 faces on, the closed-form modes' map
     assert mapped >= least
 
 
@@ -85,14 +86,19 @@ def test_the_parts_the_blocks_name_hold_eigenvectors_of_the_sector(name):
             assert all((vec[index[mirror_label(lab, k)]] - sign * vec[i]).contains(0) for i, lab in enumerate(sm.labels))
 
 
-def test_blz_is_certified_past_the_dense_tests_faces():
-    # the dense test reads at most 32 faces; the map from the blocks' eigenvectors reaches the sector matrix's limit
+def test_blz_is_certified_past_the_dense_tests_faces(monkeypatch):
+    # the dense test reads at most 32 faces; the map from the blocks' eigenvectors reaches the sector matrix's limit (the
+    # closed-form modes' route, taken from 8 faces on, switched off here), and the modes' map goes past it
     scheme = SCHEMES["cc-blz"]()
+    monkeypatch.setattr("symdecomp.verify.c1_sharp_blocks.applies", lambda *args: False)
     r = c1_sharp_blocks(scheme, sd.SharpVertex.boundary(40, "quad"))
     assert r.verdict is C1Verdict.C1 and r.method == MAP_METHOD and r.lambdas == pytest.approx([0.5, 0.5])
     assert r.opening == pytest.approx(1.0, abs=1e-9) and r.jacobian_lower_bound > 0
     past = c1_sharp_blocks(scheme, sd.SharpVertex.boundary(MAX_DENSE_FACES + 1, "quad"))
     assert past.verdict is C1Verdict.UNDECIDED and f"built for at most {MAX_DENSE_FACES} faces" in past.reason
+    monkeypatch.undo()
+    modes = c1_sharp_blocks(scheme, sd.SharpVertex.boundary(MAX_DENSE_FACES + 1, "quad"))
+    assert modes.verdict is C1Verdict.C1 and modes.method == FOURIER_METHOD
 
 
 @pytest.mark.parametrize("name, k", [("cc-blz", 7), ("loop-blz", 6), ("cc", 5)])
@@ -109,7 +115,11 @@ def test_the_sector_matrix_from_sparse_rows_is_the_vertex_matrix(name, k):
 
 
 def test_the_command_line_reports_the_maps_route(capsys):
-    assert main(["c1", "--boundary", "--k", "33", "--scheme", "catmull-clark-blz", "--json"]) == 0
+    assert main(["c1", "--boundary", "--k", "7", "--scheme", "catmull-clark-blz", "--json"]) == 0
     (row,) = json.loads(capsys.readouterr().out)["rows"]
-    assert row["verdict"] == "c1" and row["method"] == MAP_METHOD and row["vertex"] == "boundary k = 33"
+    assert row["verdict"] == "c1" and row["method"] == MAP_METHOD and row["vertex"] == "boundary k = 7"
+    assert row["lambdas"] == pytest.approx([0.5, 0.5]) and row["opening_over_pi"] == pytest.approx(1.0, abs=1e-9)
+    assert main(["c1", "--boundary", "--k", "1000", "--scheme", "catmull-clark-blz", "--json"]) == 0
+    (row,) = json.loads(capsys.readouterr().out)["rows"]
+    assert row["verdict"] == "c1" and row["method"] == FOURIER_METHOD and row["vertex"] == "boundary k = 1000"
     assert row["lambdas"] == pytest.approx([0.5, 0.5]) and row["opening_over_pi"] == pytest.approx(1.0, abs=1e-9)

@@ -42,8 +42,9 @@ import flint
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import StencilScheme
-from symdecomp.validate import check_bits
+from symdecomp.validate import check_bits, check_int
 from symdecomp.verify.c1_spectrum import ball_text, float_down, round_down
 from symdecomp.verify.c1_zoo import ZooC1Result
 from symdecomp.verify.result import C1Verdict
@@ -51,7 +52,7 @@ from symdecomp.verify.zoo_characteristic import spectral_conditions, subdominant
 from symdecomp.verify.zorin_bounds import EDGES, RHOMBI, TRIANGLES, DifferenceBounds, difference_bounds, hex_norm
 from symdecomp.verify.zorin_net import WedgeNet, grow, refine, wedge_points
 
-__all__ = ["ZORIN_METHOD", "NET_DEPTH", "c1_zorin_test"]
+__all__ = ["ZORIN_METHOD", "NET_DEPTH", "MAX_REFINEMENT", "c1_zorin_test"]
 
 #: The method, as reported with each verdict of this route.
 ZORIN_METHOD = ("Zorin's test: the characteristic map's control net refined m times by the regular rules; the limit's "
@@ -60,6 +61,8 @@ ZORIN_METHOD = ("Zorin's test: the characteristic map's control net refined m ti
                 "arithmetic; injective by the winding number of the ring's inner boundary; per valence")
 #: The depth of the engine's neighbourhood the eigenvector is solved on.
 NET_DEPTH = 4
+#: The deepest refinement tried (each level has four times the points of the one before).
+MAX_REFINEMENT = 7
 
 
 def _q(x) -> flint.arb:
@@ -165,10 +168,12 @@ def _winding(net: WedgeNet, d: int, n: int, m: int, error: flint.arb, node_error
     return lo if lo == hi else None
 
 
-def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int = 4, max_depth: int = 5,
+def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int = 4, max_depth: int = 6,
                   prec: int = 128) -> ZooC1Result:
     """Zorin's test at valence ``n`` (module docstring), refining ``m = min_depth..max_depth`` times until it decides."""
     prec = check_bits(prec)
+    max_depth = check_int(max_depth, "max_depth", minimum=1, maximum=MAX_REFINEMENT)
+    min_depth = check_int(min_depth, "min_depth", minimum=1, maximum=max_depth)
     result = ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason="", max_depth=max_depth,
                          precision=prec, method=ZORIN_METHOD)
     try:
@@ -179,6 +184,10 @@ def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int = 4, max_dept
         return replace(result, reason=(f"the regular rules' difference scheme does not contract within {bounds.steps} steps "
                                        f"(2^L nu_L = {float(2 ** bounds.steps * bounds.contraction[-1]):.4g} >= 1): "
                                        "no bound of the derivatives"))
+    if n == lattice(scheme.lattice).regular_valence:  # the vertex is regular: the regular rules' C1 is the verdict
+        return replace(result, verdict=C1Verdict.C1, reason=(
+            f"the vertex is regular and the regular rules' derivative scheme converges: 2^L nu_L = "
+            f"{2 ** bounds.steps * bounds.contraction[-1]} < 1 at L = {bounds.steps}"))
     with flint.ctx.workprec(prec):
         start = _characteristic(scheme, n)
         if isinstance(start, str):

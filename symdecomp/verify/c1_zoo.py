@@ -39,8 +39,8 @@ from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["DUAL_METHOD", "ZORIN_TOPOLOGY", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights", "corner_weights",
-           "spline_route", "c1_dual_test", "c1_zoo"]
+__all__ = ["DUAL_METHOD", "ZORIN_TOPOLOGY", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
+           "corner_weights", "spline_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
 DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-spline patches (the vertices one face from "

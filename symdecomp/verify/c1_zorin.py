@@ -35,7 +35,9 @@ here (Zorin's paper argues large valences separately).
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import replace
+from fractions import Fraction
 
 import flint
 
@@ -45,11 +47,11 @@ from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.validate import check_bits, check_int
-from symdecomp.verify.c1_spectrum import ball_text, float_down, round_down
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.c1_zoo import ZooC1Result
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.zoo_characteristic import spectral_conditions, subdominant_points
-from symdecomp.verify.zorin_bounds import EDGES, RHOMBI, TRIANGLES, DifferenceBounds, difference_bounds, hex_norm
+from symdecomp.verify.zorin_bounds import EDGES, RHOMBI, TRIANGLES, DifferenceBounds, Point, difference_bounds, hex_norm
 from symdecomp.verify.zorin_net import WedgeNet, grow, refine, wedge_points
 
 __all__ = ["ZORIN_METHOD", "NET_DEPTH", "MAX_REFINEMENT", "c1_zorin_test"]
@@ -65,7 +67,7 @@ NET_DEPTH = 4
 MAX_REFINEMENT = 7
 
 
-def _q(x) -> flint.arb:
+def _q(x: Fraction) -> flint.arb:
     return flint.arb(flint.fmpq(x.numerator, x.denominator))
 
 
@@ -75,7 +77,7 @@ def _widen(z: flint.acb, e: flint.arb) -> flint.acb:
     return flint.acb(z.real + r, z.imag + r)
 
 
-def _characteristic(scheme: StencilScheme, n: int):
+def _characteristic(scheme: StencilScheme, n: int) -> SpectralResult | str | tuple[SpectralResult, WedgeNet]:
     """``(spectral, level-0 net of radius NET_DEPTH)``, or the spectral result / a reason string when there is no map."""
     zm = zoo_matrix(scheme, n, NET_DEPTH)
     spectral = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n)  # the smallest invariant depth
@@ -119,7 +121,7 @@ def _rhombus_bound(net: WedgeNet, inner: int, outer: int) -> flint.arb:
     return top
 
 
-def _triangles(d: int):
+def _triangles(d: int) -> Iterator[list[Point]]:
     """Sector 0's level-``m`` triangles of the ring ``d <= |x| <= 2d``: their corners."""
     for x in range(0, 2 * d + 1):
         for y in range(0, 2 * d + 1 - x):
@@ -129,7 +131,7 @@ def _triangles(d: int):
                     yield pts
 
 
-def _edge_difference(net: WedgeNet, pts, e, scale: int) -> flint.acb:
+def _edge_difference(net: WedgeNet, pts: list[Point], e: Point, scale: int) -> flint.acb:
     for a in pts:
         b = (a[0] + e[0], a[1] + e[1])
         if b in pts:
@@ -137,9 +139,11 @@ def _edge_difference(net: WedgeNet, pts, e, scale: int) -> flint.acb:
     raise AssertionError("a lattice triangle has an edge in each direction")  # pragma: no cover
 
 
-def _jacobian(net: WedgeNet, d: int, m: int, error: flint.arb):
+def _jacobian(net: WedgeNet, d: int, m: int, error: flint.arb) -> tuple[set[int], flint.arb | None, Point | None]:
     """``(signs seen, lower bound of |J|, a triangle where the sign is open)`` over sector 0's ring."""
-    signs, low, open_at = set(), None, None
+    signs: set[int] = set()
+    low: flint.arb | None = None
+    open_at: Point | None = None
     for pts in _triangles(d):
         d1 = _widen(_edge_difference(net, pts, EDGES[0], 2 ** m), error)
         dw = _widen(_edge_difference(net, pts, EDGES[1], 2 ** m), error)
@@ -203,10 +207,12 @@ def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int = 4, max_dept
     return replace(result, reason=reason)
 
 
-def _at_depth(start, n: int, bounds: DifferenceBounds, m: int, result: ZooC1Result) -> ZooC1Result | str:
+def _at_depth(start: tuple[SpectralResult, WedgeNet], n: int, bounds: DifferenceBounds, m: int,
+              result: ZooC1Result) -> ZooC1Result | str:
     """The verdict at refinement depth ``m``, or why the bound did not close there."""
     spectral, net0 = start
     lam = spectral.subdominant
+    assert lam is not None  # the spectral conditions hold: _characteristic returned a net
     net, d = _level_net(net0, lam.value, bounds, m)
     M = _rhombus_bound(net, d - bounds.margin, 2 * d + bounds.margin)
     error = _q(bounds.derivative) * 2 ** m * M * _q(bounds.derivative_factor())
@@ -216,7 +222,7 @@ def _at_depth(start, n: int, bounds: DifferenceBounds, m: int, result: ZooC1Resu
     if len(signs) > 1:
         return replace(base, verdict=C1Verdict.NOT_C1, reason=(f"the Jacobian of the characteristic map has both signs on "
                                                                f"the ring at depth {m}: it is not regular"))
-    if open_at is not None or not signs:
+    if open_at is not None or not signs or low_j is None:
         return (f"the bound did not close at m = {m}: the Jacobian's sign is open on the triangle at {open_at} "
                 f"(derivative error <= {float(error.upper()):.3g})")
     sign = signs.pop()

@@ -92,7 +92,7 @@ def _centre_face(nb: Neighbourhood) -> tuple[int, ...]:
     raise AssertionError("a face-centred neighbourhood has its centre face")  # pragma: no cover - built that way
 
 
-def subdominant_points(zm: ZooMatrix, spectral: SpectralResult) -> dict | None:
+def subdominant_points(zm: ZooMatrix, spectral: SpectralResult) -> dict[int, flint.acb] | None:
     """``vertex -> X(vertex)`` (complex balls) for every labelled point of ``zm``'s neighbourhood, or ``None`` when the
     subdominant eigenvector cannot be solved in its frequency block at this precision (module docstring)."""
     assert spectral.subdominant is not None

@@ -75,9 +75,15 @@ TRIANGLES: dict[str, tuple[Point, Point, Point]] = {"up": ((0, 0), (1, 0), (0, 1
 _DENOMINATOR = 1 << 20
 
 
-def hex_norm(p: tuple) -> object:
+def hex_norm(p: Point) -> int:
     """The lattice's graph distance from the origin: ``max(|x|, |y|, |x + y|)``."""
     return max(abs(p[0]), abs(p[1]), abs(p[0] + p[1]))
+
+
+def _distance(p: Point, centre: tuple[Fraction, Fraction]) -> Fraction:
+    """:func:`hex_norm` of ``p - centre`` for a centre between lattice points."""
+    x, y = p[0] - centre[0], p[1] - centre[1]
+    return max(abs(x), abs(y), abs(x + y))
 
 
 def turn(p: Point) -> Point:
@@ -107,7 +113,7 @@ def unfold(mesh: HalfedgeMesh, start: int) -> dict[int, Point]:
     return pos
 
 
-def _weight(w) -> Fraction:
+def _weight(w: object) -> Fraction:
     value = sp.sympify(w)
     if not value.is_Rational:
         raise InvalidSchemeError(f"a regular weight is not rational ({w}): the difference bounds are exact rational")
@@ -194,7 +200,7 @@ def _linear_program(c: Functional) -> list[Functional] | None:
     """A combination of small l1 norm by SciPy's linear program (rounded to rationals), or ``None`` without SciPy."""
     try:
         import numpy as np
-        from scipy.optimize import linprog
+        from scipy.optimize import linprog  # type: ignore[import-untyped]  # SciPy ships no annotations
     except ImportError:  # pragma: no cover - the exact division alone is still a bound
         return None
     xs, ys = [k[0] for k in c], [k[1] for k in c]
@@ -205,9 +211,9 @@ def _linear_program(c: Functional) -> list[Functional] | None:
     a_eq, b_eq = np.zeros((len(keys), 2 * m)), np.zeros(len(keys))
     for j, (t, r) in enumerate(cand):
         for k, v in RHOMBI[r].items():
-            a_eq[row[_add(k, t)], j], a_eq[row[_add(k, t)], m + j] = v, -v
-    for k, v in c.items():
-        b_eq[row[k]] = float(v)
+            a_eq[row[_add(k, t)], j], a_eq[row[_add(k, t)], m + j] = float(v), float(-v)
+    for key, value in c.items():
+        b_eq[row[key]] = float(value)
     res = linprog(np.ones(2 * m), A_eq=a_eq, b_eq=b_eq, bounds=(0, None), method="highs")
     if res.status != 0:  # pragma: no cover - the division's combination is feasible, so the program is
         return None
@@ -242,7 +248,7 @@ def _norm(g: list[Functional]) -> Fraction:
 def _reach(g: list[Functional], centre: tuple[Fraction, Fraction]) -> Fraction:
     """The farthest rhombus corner from ``centre`` (graph distance)."""
     pts = [_add(k, t) for r, gr in enumerate(g) for t in gr for k in RHOMBI[r]]
-    return max((hex_norm((p[0] - centre[0], p[1] - centre[1])) for p in pts), default=Fraction(0))  # type: ignore[type-var]
+    return max((_distance(p, centre) for p in pts), default=Fraction(0))
 
 
 @dataclass(frozen=True)
@@ -267,12 +273,12 @@ class DifferenceBounds:
     @property
     def closes(self) -> bool:
         """``2^L nu_L < 1``: the derivatives converge (C1 on the regular lattice)."""
-        return 2 ** self.steps * self.contraction[-1] < 1
+        return bool(2 ** self.steps * self.contraction[-1] < 1)
 
     def derivative_factor(self) -> Fraction:
         """``sum_(r < L) 2^r nu_r / (1 - 2^L nu_L)``: ``sum_(k >= m) 2^k M_k <= 2^m M_m`` times this."""
-        top = 2 ** self.steps * self.contraction[-1]
-        return sum((2 ** r * self.contraction[r] for r in range(self.steps)), Fraction(0)) / (1 - top)
+        top = Fraction(2 ** self.steps) * self.contraction[-1]
+        return sum((Fraction(2 ** r) * self.contraction[r] for r in range(self.steps)), Fraction(0)) / (1 - top)
 
     def position_factor(self) -> Fraction:
         """``sum_(r < L) nu_r / (1 - nu_L)``: ``sum_(k >= m) M_k <= M_m`` times this."""
@@ -302,7 +308,8 @@ def _refined(power: Mapping[Point, Fraction], size: int, terms: Mapping[Point, F
 def _contraction(power: Mapping[Point, Fraction], size: int) -> tuple[Fraction, Fraction]:
     """``(nu_r, reach)`` over the ``size^2`` positions and three types of a fine rhombus."""
     worst, reach = Fraction(0), Fraction(0)
-    for y in product(range(size), repeat=2):
+    for y0, y1 in product(range(size), repeat=2):
+        y = (y0, y1)
         for rh in RHOMBI:
             g = decompose(_refined(power, size, {_add(y, k): Fraction(v) for k, v in rh.items()}))
             worst = max(worst, _norm(g))
@@ -314,8 +321,8 @@ def _derivative_bound(mask: Mapping[Point, Fraction]) -> tuple[Fraction, Fractio
     """``(K_1, reach)``: the worst ``2 D_e p^(k+1)(T') - D_e p^k(T)`` over triangles, children and directions."""
     worst, reach = Fraction(0), Fraction(0)
     for corners in TRIANGLES.values():
-        children = [tuple(_add(corners[i], corners[k]) for k in range(3)) for i in range(3)]  # the corner children
-        children.append(tuple(_add(corners[k], corners[(k + 1) % 3]) for k in range(3)))  # the middle one
+        children: list[tuple[Point, ...]] = [tuple(_add(corners[i], corners[k]) for k in range(3)) for i in range(3)]
+        children.append(tuple(_add(corners[k], corners[(k + 1) % 3]) for k in range(3)))  # and the middle one
         for e in EDGES:
             parent = _edge(corners, e)
             for child in children:
@@ -327,7 +334,7 @@ def _derivative_bound(mask: Mapping[Point, Fraction]) -> tuple[Fraction, Fractio
     return worst, reach
 
 
-def _edge(corners, e: Point) -> tuple[Point, Point]:
+def _edge(corners: tuple[Point, ...], e: Point) -> tuple[Point, Point]:
     """The edge of a triangle in the direction ``e``, as ``(tail, head)`` with ``head - tail`` a positive multiple of ``e``."""
     for a in corners:
         for b in corners:
@@ -344,7 +351,7 @@ def _bounds(key: str, scheme: StencilScheme, max_steps: int) -> DifferenceBounds
     contraction, margin = [Fraction(1)], Fraction(0)
     k1, k1_reach = _derivative_bound(mask)
     k0 = _norm(decompose(_combine(_refined(mask, 2, {(0, 0): Fraction(1)}), {(0, 0): Fraction(-1)})))
-    reach = max(int(hex_norm(u)) for u in mask)  # type: ignore[call-overload]
+    reach = max(hex_norm(u) for u in mask)
     best = None
     for r in range(1, max_steps + 1):
         power = _power(mask, power)

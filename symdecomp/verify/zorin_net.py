@@ -18,12 +18,13 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from fractions import Fraction
 
 import flint
 
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.halfedge import HalfedgeMesh
-from symdecomp.verify.zorin_bounds import Point, hex_norm, turn
+from symdecomp.verify.zorin_bounds import Point, turn
 
 __all__ = ["WedgeNet", "wedge_points", "grow", "refine"]
 
@@ -96,11 +97,12 @@ def _step(net: WedgeNet, mask: Mapping[Point, flint.fmpq], low: int, high: int) 
     return out
 
 
-def _fmpq_mask(mask) -> dict[Point, flint.fmpq]:
+def _fmpq_mask(mask: Mapping[Point, Fraction]) -> dict[Point, flint.fmpq]:
     return {u: flint.fmpq(a.numerator, a.denominator) for u, a in mask.items()}
 
 
-def grow(net: WedgeNet, radius: int, lam: flint.acb, mask, reach: int, target: int) -> tuple[WedgeNet, int]:
+def grow(net: WedgeNet, radius: int, lam: flint.acb, mask: Mapping[Point, Fraction], reach: int,
+         target: int) -> tuple[WedgeNet, int]:
     """Extend a level-0 net known up to ``radius`` to at least ``target``: ``X = (S X) / lambda`` outside."""
     fm = _fmpq_mask(mask)
     while radius < target:
@@ -113,13 +115,9 @@ def grow(net: WedgeNet, radius: int, lam: flint.acb, mask, reach: int, target: i
     return net, radius
 
 
-def refine(net: WedgeNet, low: int, high: int, mask, reach: int) -> tuple[WedgeNet, int, int]:
+def refine(net: WedgeNet, low: int, high: int, mask: Mapping[Point, Fraction], reach: int) -> tuple[WedgeNet, int, int]:
     """One level finer on the annulus the old one ``[low, high]`` determines, away from the centre's stencils."""
     new_low = max(2 * low + reach, reach + 2)
     new_high = 2 * high - reach
     return WedgeNet(_step(net, _fmpq_mask(mask), new_low, new_high), net.rho), new_low, new_high
 
-
-def ring_radius(point: Point) -> int:
-    """The graph distance of a wedge point from the centre."""
-    return int(hex_norm(point))  # type: ignore[call-overload]

@@ -112,8 +112,8 @@ def _level_net(net: WedgeNet, lam: flint.acb, bounds: DifferenceBounds, m: int) 
 def _rhombus_bound(net: WedgeNet, inner: int, outer: int) -> flint.arb:
     """``M``: the largest rhombus difference with every corner at graph distance in ``[inner, outer]``."""
     top = flint.arb(0)
-    for x in range(1, outer + 1):
-        for y in range(0, outer + 1 - x):
+    for x in range(-2, outer + 1):  # every rhombus, turned to the sector of one of its corners, has its base here
+        for y in range(-2, outer + 1):
             for rh in RHOMBI:
                 corners = [((x + k[0], y + k[1]), s) for k, s in rh.items()]
                 if all(inner <= hex_norm(c) <= outer for c, _ in corners):

@@ -10,7 +10,7 @@ bounds below are computed from ``A``, never typed in.
 two tips minus the sum at the shared edge's ends (three types by direction, :data:`RHOMBI`). They vanish exactly on
 linear functions, and every finitely supported functional that vanishes on linear functions is a combination of them
 (:func:`decompose`: exact division by ``(1 - z_1)^2``, ``(1 - z_1)(1 - z_2)``, ``(1 - z_2)^2``, then
-``(1 - z_1)^2 = R_1 + z_1 R_2``; a linear program, when SciPy is present, finds a combination of smaller l1 norm,
+``(1 - z_1)^2 = R_1 + z_1 R_2``; SciPy's linear program finds a combination of smaller l1 norm,
 rounded to rationals, its exact residual decomposed again). The l1 norm of any such combination bounds the functional
 by the largest rhombus difference ``M`` in its support.
 
@@ -197,12 +197,9 @@ def _expand(g: list[Functional]) -> Functional:
 
 
 def _linear_program(c: Functional) -> list[Functional] | None:
-    """A combination of small l1 norm by SciPy's linear program (rounded to rationals), or ``None`` without SciPy."""
-    try:
-        import numpy as np
-        from scipy.optimize import linprog  # type: ignore[import-untyped]  # SciPy ships no annotations
-    except ImportError:  # pragma: no cover - the exact division alone is still a bound
-        return None
+    """A combination of small l1 norm by SciPy's linear program (rounded to rationals; ``None`` if it finds none)."""
+    import numpy as np
+    from scipy.optimize import linprog  # type: ignore[import-untyped]  # SciPy ships no annotations; loaded when used
     xs, ys = [k[0] for k in c], [k[1] for k in c]
     cand = [(t, r) for t in product(range(min(xs) - 2, max(xs) + 2), range(min(ys) - 2, max(ys) + 2)) for r in range(3)]
     keys = sorted({_add(k, t) for t, r in cand for k in RHOMBI[r]} | set(c))

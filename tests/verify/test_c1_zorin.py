@@ -34,6 +34,15 @@ def _linear_interpolation() -> StencilScheme:
     return stencil_scheme_from_text("\n".join(lines).replace('name = "modified-butterfly"', 'name = "w0"'), source="w0.toml")
 
 
+def _twisted() -> StencilScheme:
+    """The modified butterfly with its rule at valences >= 5 moved from frequency 1 to frequency 2: on the centre's
+    neighbours ``(1/4 + cos(2 pi j/K)/2 + 6 cos(4 pi j/K)/5)/K``, so frequency 1 gives ``1/4`` and frequency 2 ``3/5``."""
+    text = stencil_scheme_to_text(BUTTERFLY).replace("(cos(2*pi*j/n) + cos(4*pi*j/n)/2 + 1/4)/n",
+                                                     "(cos(2*pi*j/n)/2 + 6*cos(4*pi*j/n)/5 + 1/4)/n")
+    assert "6*cos(4*pi*j/n)/5" in text
+    return stencil_scheme_from_text(text.replace('name = "modified-butterfly"', 'name = "twisted"'), source="twisted.toml")
+
+
 def _cosets(mask):
     """Per new point kind (``y mod 2``): the weights' sum and first moments, ``sum A[y - 2x] x`` at ``y`` in ``{0, 1}^2``."""
     out = {}
@@ -140,3 +149,16 @@ def test_c1_command_json(capsys):
     assert main(["c1", "--scheme", "modified-butterfly", "--n", "5", "--json", "--quiet"]) == 0
     row = json.loads(capsys.readouterr().out)["rows"][0]
     assert row["verdict"] == "c1" and row["method"] == ZORIN_METHOD and row["subdivision_depth"] == 4
+
+
+def test_a_butterfly_twisted_to_frequency_two_is_not_certified_at_a_shallow_depth():
+    r = c1_zorin_test(_twisted(), 7, min_depth=4, max_depth=4)
+    assert r.verdict is C1Verdict.UNDECIDED and r.reason.startswith("the bound did not close at m = 4")
+
+
+@pytest.mark.slow
+def test_a_butterfly_twisted_to_frequency_two_winds_twice_so_it_is_not_c1():
+    r = c1_zorin_test(_twisted(), 7)
+    assert r.verdict is C1Verdict.NOT_C1 and r.frequency == 2 and r.winding_number == 2
+    assert abs(r.spectral.subdominant.value - flint.fmpq(3, 5)).upper() < 1e-15
+    assert r.reason == "the characteristic map (lambda = 0.600000) is regular but winds 2 times around the origin: not injective"

@@ -114,7 +114,7 @@ def unfold(mesh: HalfedgeMesh, start: int) -> dict[int, Point]:
 
 
 def _weight(w: object) -> Fraction:
-    value = sp.sympify(w)
+    value = sp.sympify(w, strict=True)
     if not value.is_Rational:
         raise InvalidSchemeError(f"a regular weight is not rational ({w}): the difference bounds are exact rational")
     return Fraction(int(value.p), int(value.q))

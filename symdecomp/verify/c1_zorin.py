@@ -6,8 +6,9 @@ meshes*, Constr. Approx. 16 (2000)) to a regular and injective characteristic ma
 abstract's words, that "regularity can be inferred from the properties of a sufficiently close linear approximation,
 and injectivity can be verified by computing the index of a curve", by interval arithmetic, for schemes whose
 regular part is no spline (the butterfly and the modified butterfly of Zorin, Schroeder, Sweldens, *Interpolating
-subdivision for meshes with arbitrary topology*, SIGGRAPH 1996). What was read: the abstracts of both papers and
-the project page of the group; the test below is written from that statement, with bounds derived here
+subdivision for meshes with arbitrary topology*, SIGGRAPH 1996). What was read: the SIAM paper's abstract, the
+butterfly paper's project page (its introduction) and the group's page that lists the Constr. Approx. paper (title and
+venue only); the test below is written from that statement, with bounds derived here
 (:mod:`symdecomp.verify.zorin_bounds`), not the paper's constants.
 
 **What is checked**, at one valence ``n``:

@@ -139,7 +139,9 @@ nothing else.
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
-                   map at one valence, ``zoo_characteristic``); dyadic limit positions for
+                   map at one valence, ``zoo_characteristic``), Zorin's test where no spline patch exists (primal
+                   triangle schemes, the modified butterfly: ``c1_zorin``; the regular rules' difference bounds,
+                   ``zorin_bounds``; the characteristic net grown and refined by them, ``zorin_net``); dyadic limit positions for
                    the patch evaluator (``patch_eval``), the boundary one (``sharp_patch_eval``) and the crease, boundary and
                    corner data (``sector_evaldata``), a dual scheme's face data (``dual_evaldata``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified

@@ -199,11 +199,11 @@ def _run_zoo(args, plot) -> int:
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
         raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} (a scheme "
                                 "of the zoo); give --n A:B")
-    results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"])
+    results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 
 
-def _run_valences(args, one, method) -> list:
+def _run_valences(args, one, method, title: str = "Reif's test") -> list:
     """``one(n, scheme, max_depth)`` for each valence on the pool, printed (or ``--json``); ``method(results)`` its line."""
     from symdecomp.parallel import ordered_map
 
@@ -214,7 +214,7 @@ def _run_valences(args, one, method) -> list:
     if args.json:
         print_json(args, [r.json for r in results])
     else:
-        print(f"{args.scheme.name}: Reif's test, valences {valences[0]}..{valences[-1]}")
+        print(f"{args.scheme.name}: {title}, valences {valences[0]}..{valences[-1]}")
         print(f"method: {method(results)}")
         for r in results:
             print(f"n = {r.n:>3}: {LABELS[r.verdict.value]}: {r.reason}")

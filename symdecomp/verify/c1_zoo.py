@@ -1,18 +1,19 @@
-"""C1 for a scheme of the zoo: Reif's test where the regular part is a spline patch this package evaluates, else ``undecided``.
+"""C1 for a scheme of the zoo: Reif's test where the regular part is a spline patch this package evaluates, Zorin's test
+where it is not (primal schemes on triangles), else ``undecided`` with the reason.
 
 The route is decided by the scheme's model (:class:`~symdecomp.schemes.stencils.StencilScheme`), never by its name:
 
-* an interpolatory scheme (``interpolatory = true``: the modified butterfly) has no spline
-  regular part, so Reif's test has no patch to evaluate; a test that needs none (Zorin 2000, *A method for analysis
-  of C1-continuity of subdivision surfaces*, SIAM J. Numer. Anal. 37(5): bounds on the characteristic map's control
-  net and its differences under refinement) is not implemented: ``undecided``, saying so;
-* a scheme whose steps are not the dual quad step (primal steps are :mod:`symdecomp.verify.c1`'s, on the scheme's
-  edge/face/vertex form; sqrt(3)'s rotating steps have no spline patch here): ``undecided``, naming the topology;
 * a dual scheme whose rule in a regular face (the corner rule in a face of the lattice's size, at its regular
   valence) is the biquadratic B-spline's: each corner point is the tensor product of Chaikin's weights ``(3/4, 1/4)`` (the quadratic
   B-spline's mask ``(1, 3, 3, 1)/4``), so the regular part is the biquadratic B-spline and
-  :func:`c1_dual_test` (:mod:`symdecomp.verify.c1_dual`) applies. Another regular rule (Midedge's, whose regular
-  part is not a tensor-product spline) is ``undecided`` with the weights it has.
+  :func:`c1_dual_test` (:mod:`symdecomp.verify.c1_dual`) applies;
+* a primal scheme (one step; the modified butterfly, which is interpolatory, so its regular part is no spline): Zorin's
+  test, which needs no spline patch (D. Zorin, *A method for analysis of C1-continuity of subdivision surfaces*, SIAM
+  J. Numer. Anal. 37(5), 2000: bounds on the characteristic map's control net and its differences under refinement;
+  :mod:`symdecomp.verify.c1_zorin`), per valence; its bounds are written for triangles, and a scheme on another
+  lattice is ``undecided`` with the fact that stopped it;
+* any other scheme (sqrt(3)'s rotating steps; Midedge, dual but not the biquadratic B-spline's regular rule):
+  ``undecided``, naming what has no test here.
 
 :func:`c1_dual_test` takes what the zoo's engine computes at valence ``n`` (:class:`ZooNeighbourhood`: the explicit
 local mesh with orbit labels, the characteristic map's control points from the subdominant eigenvectors, and the
@@ -38,13 +39,17 @@ from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify
 from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["DUAL_METHOD", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights", "corner_weights",
-           "spline_route", "c1_dual_test", "c1_zoo"]
+__all__ = ["DUAL_METHOD", "ZORIN_TOPOLOGY", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
+           "corner_weights", "spline_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
 DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-spline patches (the vertices one face from "
                "the centre n-gon): Jacobian in Bernstein-Bezier form (raised to bicubic), one strict sign in interval "
                "arithmetic with de Casteljau subdivision; injective by winding number 1 of the ring's inner boundary")
+
+#: The topology Zorin's test (:mod:`symdecomp.verify.c1_zorin`) is written for: one primal step.
+ZORIN_TOPOLOGY = "primal"
+
 
 @dataclass(frozen=True)
 class ZooNeighbourhood:
@@ -147,7 +152,7 @@ def corner_weights(scheme: StencilScheme, sides: int, valence: int) -> tuple[sp.
 
 def spline_route(scheme: StencilScheme) -> str | None:
     """``None`` when the scheme's regular part is the biquadratic B-spline (the dual route applies), else the reason."""
-    tail = "Zorin 2000's test, which needs no spline patch, is not implemented"
+    tail = f"Zorin's test, which needs no spline patch, is written here for schemes of one {ZORIN_TOPOLOGY} step on triangles"
     if scheme.interpolatory:
         return f"the scheme is interpolatory, so its regular part is no spline and Reif's test has no patch; {tail}"
     if scheme.topology != "dual":
@@ -204,12 +209,18 @@ def c1_dual_test(neighbourhood: ZooNeighbourhood, *, scheme: str, n: int, max_de
 
 def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilScheme, int], ZooNeighbourhood] | None = None,
            max_depth: int = 6, prec: int = 64) -> ZooC1Result:
-    """C1 at valence ``n`` for a zoo scheme: the dual route (:func:`c1_dual_test`) or ``undecided`` with the reason.
+    """C1 at valence ``n`` for a zoo scheme: the dual route (:func:`c1_dual_test`), Zorin's test for a primal scheme
+    (:func:`~symdecomp.verify.c1_zorin.c1_zorin_test`, refining up to ``max_depth`` times), or ``undecided`` with the reason.
 
     ``neighbourhood(scheme, n)``: the zoo engine's local mesh, characteristic map and spectral conditions; without it
     a scheme the dual route applies to cannot be tested (:class:`~symdecomp.errors.UnavailableError`).
     """
     reason = spline_route(scheme)
+    if reason is not None and scheme.topology == ZORIN_TOPOLOGY and scheme.steps == 1:
+        from symdecomp.verify.c1_zorin import MAX_REFINEMENT, c1_zorin_test  # imported when this route runs
+
+        deepest = min(max(max_depth, 1), MAX_REFINEMENT)
+        return c1_zorin_test(scheme, n, min_depth=min(4, deepest), max_depth=deepest)
     if reason is not None:
         return ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason=reason, max_depth=max_depth,
                            precision=prec)

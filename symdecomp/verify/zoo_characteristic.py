@@ -27,7 +27,7 @@ from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.ring_masks import _acb_matrix
 from symdecomp.analysis.ring_spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
-from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.analysis.zoo_matrix import ZooMatrix, zoo_matrix
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum
 from symdecomp.schemes.neighbourhood import Neighbourhood
 from symdecomp.schemes.stencils import StencilScheme
@@ -37,7 +37,7 @@ from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, float_down
 from symdecomp.verify.c1_zoo import ZooNeighbourhood
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["C1_DEPTH", "engine_neighbourhood", "spectral_conditions"]
+__all__ = ["C1_DEPTH", "engine_neighbourhood", "spectral_conditions", "subdominant_points"]
 
 #: The ring depth of the neighbourhood the C1 test reads (the patches one face from the centre and their control points).
 C1_DEPTH = 2
@@ -70,6 +70,9 @@ def spectral_conditions(spectrum: RingSpectrum, n: int) -> SpectralResult:
     if not gap > 0:
         return SpectralResult(n, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {lam.text} is not shown strictly dominant "
                               "(its modulus and the next one's overlap)", second=float(bound))
+    if lam.exact is None and lam.multiplicity == 2 and len(pair) == 2 and pair[0] + pair[1] == n:
+        return SpectralResult(n, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {lam.text} has no exact form here, so it "
+                              "is not shown real (nor is the eigenvector solved with it)", second=float(bound))
     real = lam.exact is not None and sp.im(lam.exact) == 0
     if lam.multiplicity != 2 or len(pair) != 2 or pair[0] + pair[1] != n or not real:
         return SpectralResult(n, C1Verdict.NOT_C1, f"the subdominant eigenvalue {lam.text} is not a real double eigenvalue "
@@ -89,6 +92,21 @@ def _centre_face(nb: Neighbourhood) -> tuple[int, ...]:
     raise AssertionError("a face-centred neighbourhood has its centre face")  # pragma: no cover - built that way
 
 
+def subdominant_points(zm: ZooMatrix, spectral: SpectralResult) -> dict[int, flint.acb] | None:
+    """``vertex -> X(vertex)`` (complex balls) for every labelled point of ``zm``'s neighbourhood, or ``None`` when the
+    subdominant eigenvector cannot be solved in its frequency block at this precision (module docstring)."""
+    assert spectral.subdominant is not None
+    nb = zm.neighbourhood
+    j, n, lam = spectral.subdominant.frequency, nb.n, spectral.subdominant.value
+    with flint.ctx.workprec(EIGENVECTOR_BITS):  # the control points as narrow balls (the Jacobian's signs are decided on them)
+        zeta = [flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() for s in range(n)]
+        block = zoo_blocks(zm).frequency_matrix()
+        K = block.shape[0]
+        A = _acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
+        x = null_vector(A)
+        return None if x is None else {v: zeta[s % n] * x[c] for v, (s, c) in nb.labels.items()}
+
+
 def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     """The local mesh with its orbit labels, the spectral conditions and the characteristic map at valence ``n``."""
     zm = zoo_matrix(scheme, n, C1_DEPTH)
@@ -99,15 +117,8 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     mesh = DualNeighbourhood(faces, _centre_face(nb), dict(nb.labels))
     if spectral.status is not C1Verdict.C1 or spectral.subdominant is None:
         return ZooNeighbourhood(mesh, {}, spectral)
-    j, lam = spectral.subdominant.frequency, spectral.subdominant.value
-    with flint.ctx.workprec(EIGENVECTOR_BITS):  # the control points as narrow balls (the Jacobian's signs are decided on them)
-        zeta = [flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() for s in range(n)]
-        block = zoo_blocks(zm).frequency_matrix()
-        K = block.shape[0]
-        A = _acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
-        x = null_vector(A)
-        points = {} if x is None else {v: zeta[s % n] * x[c] for v, (s, c) in nb.labels.items()}
-    if x is None:
+    points = subdominant_points(zm, spectral)
+    if points is None:
         return ZooNeighbourhood(mesh, {}, SpectralResult(n, C1Verdict.UNDECIDED, "the subdominant eigenvector could not be "
                                                          "solved in the frequency block at this precision"))
     return ZooNeighbourhood(mesh, points, spectral)

@@ -25,14 +25,16 @@ def zoo(monkeypatch):
     monkeypatch.setattr(common, "any_scheme_by_name", lambda text: ZOO[text] if text in ZOO else known(text))
 
 
-def test_no_spline_patch_is_undecided_with_the_reason(zoo, capsys):
+def test_a_primal_scheme_goes_to_zorins_test_which_names_what_stops_it(zoo, capsys):
     assert main(["c1", "--scheme", "interp", "--n", "3:4", "--json"]) == 1
     rows = json.loads(capsys.readouterr().out)["rows"]
     assert [(r["n"], r["verdict"]) for r in rows] == [(3, "undecided"), (4, "undecided")]
-    assert rows[0]["reason"].startswith("the scheme is interpolatory, so its regular part is no spline and Reif's test has no patch")
+    assert rows[0]["reason"] == "the regular rules give no difference bound: a primal scheme needs [vertex] rules"
+    assert rows[0]["method"].startswith("Zorin's test")
     assert main(["c1", "--scheme", "interp", "--n", "5"]) == 1
     out = capsys.readouterr().out.splitlines()
-    assert out[0] == "interp: Reif's test, valences 5..5" and out[2].startswith("n =   5: undecided: the scheme is interpolatory")
+    assert out[0] == "interp: C1 by the test its model allows, valences 5..5" and out[1].startswith("method: Zorin's test")
+    assert out[2] == "n =   5: undecided: the regular rules give no difference bound: a primal scheme needs [vertex] rules"
 
 
 def test_refusals_are_one_line(zoo, capsys):

@@ -72,15 +72,15 @@ nothing else.
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
                    ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning (``tuning``; the
                    regions of free vertex weights by curvature regime, ``tuning_region``),
-                   the characteristic polynomial (Section 6, ``charpoly``, ``reduction``), Jordan
+                   the characteristic polynomial (Section 6, and its factors and product form for any K-ring, ``charpoly``;
+                   ``reduction``), Jordan
                    blocks (``defective``), supports (Section 3, ``support``; for every n from one
                    window of sectors, ``support_window``), rings iterated step by step
                    (``evolution``), the 2-ring matrix by frequency and the characteristic map's
                    nets (``characteristic``; exact in t = cos(2 pi/n) for every n,
                    ``characteristic_uniform``), where a 1-ring component starts on one eigenvector of M_j
                    (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
-                   (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
-                   (``ring_charpoly``), masks (``ring_masks``); any StencilScheme of the zoo: its matrix on its
+                   (``ring_blocks``), factored spectra (``ring_spectrum``), masks (``ring_masks``); any StencilScheme of the zoo: its matrix on its
                    neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
                    labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
                    ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face

@@ -2,7 +2,7 @@
 
 The spectrum of the ``K``-ring matrix is that of ``E_0`` and of ``E(omega_n^k)``,
 ``k = 1..n-1`` (:mod:`symdecomp.analysis.ring_blocks`). Their characteristic polynomials are
-factored once, symbolically: ``det(lambda I - E(omega))`` over ``Q(omega)``, and
+factored once, symbolically (:func:`~symdecomp.analysis.charpoly.frequency_factors`): ``det(lambda I - E(omega))`` over ``Q(omega)``, and
 ``det(lambda I - E_0)`` over ``Q(n, w_a, w_b)`` with the centre weights as symbols (and
 ``w_O = 1 - n w_a - n w_b``, the vertex rule being affine). A factor of degree ``<= 2`` in
 ``lambda`` has closed-form roots; a higher one has roots that are exact algebraic numbers
@@ -23,106 +23,26 @@ and the value are rational there, otherwise the Jordan structure is reported unk
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import partial
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value, matrix_rank, to_acb
+from symdecomp.analysis.charpoly import COSK, Factor, frequency_factors
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import cached, check_digits, check_limit, check_type, check_valence
+from symdecomp.validate import check_digits, check_limit, check_valence
 
-__all__ = ["Factor", "FrequencyFactors", "frequency_factors", "RingSpectrum", "ring_spectrum", "acb_text"]
+__all__ = ["RingSpectrum", "ring_spectrum", "acb_text"]
 
 W_O, W_A, W_B = CENTRE_WEIGHTS
-#: ``cos(2 pi k/n)``: the variable of the closed forms of frequency ``k`` when they are real.
-COSK = sp.Symbol("c_k", real=True)
-
-
-def _cosine_form(expr: sp.Expr) -> sp.Expr | None:
-    """A Laurent polynomial in ``omega`` with ``p(omega) = p(1/omega)`` as a polynomial in ``c_k``; else ``None``."""
-    numer, denom = sp.fraction(sp.together(sp.expand(expr)))
-    if not denom.free_symbols <= {OMEGA} or numer.free_symbols - {OMEGA}:
-        return None
-    dp, np_ = sp.Poly(denom, OMEGA), sp.Poly(numer, OMEGA)
-    if not dp.is_monomial:
-        return None
-    terms = {m[0] - dp.degree(): c / dp.LC() for m, c in np_.terms()}
-    if any(terms.get(-p, 0) != c for p, c in terms.items()):
-        return None
-    return sp.expand(sp.Add(*[c * (2 * sp.chebyshevt_poly(p, COSK) if p else 1) for p, c in terms.items() if p >= 0]))
-
-
-@dataclass(frozen=True)
-class Factor:
-    """An irreducible factor of a frequency's characteristic polynomial, with its exponent."""
-
-    #: The factor as a polynomial in ``lambda`` (coefficients in ``omega`` or in ``n, w_a, w_b``).
-    poly: sp.Expr
-    #: Its exponent in the characteristic polynomial.
-    exponent: int
-    #: Closed-form roots (degree <= 2), else ``None``. Frequencies ``k != 0``: in ``c_k =
-    #: cos(2 pi k/n)`` when the coefficients are symmetric in ``omega``, else in ``omega``.
-    roots: tuple[sp.Expr, ...] | None
-
-    @property
-    def degree(self) -> int:
-        return sp.degree(self.poly, LAM)
-
-
-@dataclass(frozen=True)
-class FrequencyFactors:
-    """The factored characteristic polynomials: ``E_0`` and ``E(omega)``."""
-
-    zero: tuple[Factor, ...]
-    other: tuple[Factor, ...]
-
-
-def _factors(charpoly: sp.Expr, gens) -> tuple[Factor, ...]:
-    numer, _ = sp.fraction(sp.together(sp.expand(charpoly)))
-    _, items = sp.factor_list(sp.expand(numer), *gens)
-    out = []
-    for f, e in items:
-        if not f.has(LAM):
-            continue  # a constant or a power of omega (the Laurent denominator)
-        p = sp.Poly(f, LAM)
-        lead = p.LC()
-        c = [sp.cancel(x / lead) for x in p.all_coeffs()]
-        if OMEGA in gens:
-            cos_c = [_cosine_form(x) for x in c]
-            if None not in cos_c:
-                c = cos_c
-        monic = sp.Add(*[x * LAM ** (p.degree() - i) for i, x in enumerate(c)])
-        roots = None
-        if p.degree() == 1:
-            roots = (sp.cancel(-c[1]),)
-        elif p.degree() == 2:
-            disc = sp.factor(sp.cancel(c[1] ** 2 - 4 * c[2]))
-            roots = tuple(sp.cancel(-c[1] / 2) + s * sp.sqrt(disc) / 2 for s in (1, -1))
-        out.append(Factor(monic, int(e), roots))
-    return tuple(out)
-
-
-@cached(32, blocks=partial(check_type, kind=RingBlocks, argument="blocks", hint="ring_blocks(scheme, rings)"))
-def frequency_factors(blocks: RingBlocks) -> FrequencyFactors:
-    """Factor ``det(lambda I - E_0)`` and ``det(lambda I - E(omega))`` once, symbolically (exact)."""
-    K = blocks.class_count
-    E = blocks.frequency_matrix()
-    other = _factors((LAM * sp.eye(K) - E).det(method="berkowitz"), (LAM, OMEGA))
-    affine = 1 - sum(N * {"a": W_A, "b": W_B}[name] for name, _ in blocks.lattice.one_ring_classes)  # the vertex rule sums to 1
-    E0 = blocks.frequency_zero_matrix(symbolic_weights=True).xreplace({W_O: affine})
-    zero = _factors((LAM * sp.eye(K + 1) - E0).det(method="berkowitz"), (LAM, N, W_A, W_B))
-    return FrequencyFactors(zero, other)
-
-
 @dataclass(frozen=True)
 class RingSpectrum:
     scheme: str

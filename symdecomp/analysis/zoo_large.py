@@ -28,7 +28,8 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
-from symdecomp.analysis.ring_spectrum import COSK, Factor, _factors, _Roots
+from symdecomp.analysis.charpoly import COSK, Factor, _factors
+from symdecomp.analysis.ring_spectrum import _Roots
 from symdecomp.analysis.zoo_structure import ZooStructure, zoo_structure
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.stencils import N, StencilScheme

@@ -27,8 +27,9 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import cyclotomic_value
+from symdecomp.analysis.charpoly import COSK, Factor, _factors
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import COSK, Factor, RingSpectrum, _clusters, _exact_root, _factors, _hull, _Roots, acb_text
+from symdecomp.analysis.ring_spectrum import RingSpectrum, _clusters, _exact_root, _hull, _Roots, acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_roots import squarefree_roots

@@ -28,7 +28,7 @@ in ``Q(zeta_2n)`` is tested exactly for being a root of ``R`` (or of another roo
 The ``O(n)`` structural certificate (:func:`structural_certificate`) has no ``chi_S``; it
 certifies multiplicities from the frequency factors instead (:func:`cluster_multiplicities`).
 The product identity itself is computed in one place,
-:func:`~symdecomp.analysis.ring_charpoly.product_identity` (also behind ``charpoly``).
+:func:`~symdecomp.analysis.charpoly.product_identity` (also behind ``charpoly``).
 
 >>> from symdecomp.schemes.loop import loop
 >>> c = certify_ring(loop(), 7, 1)
@@ -45,9 +45,9 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_sympy
+from symdecomp.analysis.charpoly import frequency_factors, product_identity
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_charpoly import product_identity
-from symdecomp.analysis.ring_spectrum import frequency_factors, ring_spectrum
+from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme

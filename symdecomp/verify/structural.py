@@ -19,7 +19,7 @@ eigenvalues (:mod:`symdecomp.analysis.closed_forms`) are the spectrum of the ful
    rational coefficients at ``n``. Then both sides are the same product of factors.
 3. *Otherwise* the multisets are compared exactly: the closed forms' characteristic polynomial
    (resultants, :func:`~symdecomp.verify.certify.closed_form_characteristic_value`) against the
-   product of the frequency factors (:func:`~symdecomp.analysis.ring_charpoly.frequency_product_values`)
+   product of the frequency factors (:func:`~symdecomp.analysis.charpoly.frequency_product_values`)
    at ``2n+1`` rational points. Equal: proved (the closed forms pair up across frequencies);
    different: refuted, exactly.
 
@@ -47,9 +47,9 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.analysis.charpoly import frequency_product_values
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_charpoly import frequency_product_values
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS

@@ -354,7 +354,7 @@ def _laurent_charpoly(blocks: RingBlocks, n: int | None = None) -> tuple[int, tu
     low = min(b for (_, b), _ in terms)
     m = 4 * K * 8 - low
     degree = max(a for (a, _), _ in terms)
-    polys = [dict() for _ in range(degree + 1)]
+    polys: list[dict[int, flint.fmpq]] = [dict() for _ in range(degree + 1)]
     for (a, b), c in terms:
         polys[a][b - low] = to_fmpq(c)
     return m, tuple(flint.fmpq_poly([p.get(j, 0) for j in range(max(p, default=0) + 1)]) for p in polys)

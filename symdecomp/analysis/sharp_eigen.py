@@ -29,15 +29,16 @@ finds as the same objects (roots of irreducible rational factors of the norm of 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.number_field import root_expression
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.errors import PrecisionError
 
-__all__ = ["crease_points", "MatrixPart", "SharpEigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus",
+__all__ = ["crease_points", "MatrixPart", "root_eigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus",
            "merge", "separated", "ball_at"]
 
 
@@ -51,31 +52,13 @@ class MatrixPart:
     indices: tuple[int, ...]
 
 
-@dataclass(frozen=True)
-class SharpEigenvalue:
-    """One distinct eigenvalue of a part (or of the matrix, after :func:`merge`)."""
-
-    #: The monic irreducible rational factor it is a root of.
-    factor: flint.fmpq_poly
-    #: Its index among the roots of ``factor`` in sympy's order (real ascending, then complex).
-    index: int
-    #: The exact value (a closed form for degree <= 2, else a ``CRootOf``).
-    exact: sp.Expr
-    #: A certified ball around it (``flint.acb``).
-    ball: object
-    #: Its algebraic multiplicity in the part (or the matrix).
-    multiplicity: int
-    #: The part(s) it comes from, e.g. ``"crease"`` or ``"crease, sector 1"``.
-    part: str
-
-    @property
-    def key(self) -> tuple:
-        """Equal keys, equal eigenvalues (and conversely): the factor's coefficients and the root's index."""
-        return (tuple(int(c) for c in self.factor.numer().coeffs()), self.index)
-
-    @property
-    def is_real(self) -> bool:
-        return self.factor.degree() == 1 or bool(self.exact.is_real)
+def root_eigenvalue(factor: flint.fmpq_poly, index: int, exact: sp.Expr, ball, multiplicity: int, part: str) -> Eigenvalue:
+    """One distinct eigenvalue of a part (or of the matrix, after :func:`merge`): the root ``index`` (sympy's order:
+    real ascending, then complex) of the monic irreducible rational ``factor``, exactly (a closed form for degree <= 2,
+    else a ``CRootOf``) and as a certified ball, with its multiplicity and the part(s) it comes from. Its key (equal
+    keys, equal eigenvalues, and conversely) is the factor's coefficients and the root's index."""
+    key = (tuple(int(c) for c in factor.numer().coeffs()), index)
+    return Eigenvalue(ball, "", multiplicity, exact=exact, factor=factor, index=index, part=part, key=key)
 
 
 def submatrix(S: flint.fmpq_mat, indices: Sequence[int]) -> flint.fmpq_mat:
@@ -158,7 +141,7 @@ def _in_interval(root: sp.CRootOf, balls: list):
     return hits[0] if len(hits) == 1 else None
 
 
-def part_eigenvalues(S: flint.fmpq_mat, parts: Sequence[MatrixPart], *, prec: int = 256) -> list[SharpEigenvalue]:
+def part_eigenvalues(S: flint.fmpq_mat, parts: Sequence[MatrixPart], *, prec: int = 256) -> list[Eigenvalue]:
     """Every distinct eigenvalue of each part, exactly, with its multiplicity in that part (parts in order)."""
     out = []
     for part in parts:
@@ -168,25 +151,25 @@ def part_eigenvalues(S: flint.fmpq_mat, parts: Sequence[MatrixPart], *, prec: in
         for f, e in factors:
             f = f / f.leading_coefficient()
             for index, exact, ball in _factor_roots(f, prec):
-                items.append(SharpEigenvalue(f, index, exact, ball, e, part.label))
+                items.append(root_eigenvalue(f, index, exact, ball, e, part.label))
         out += sorted(items, key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid())))
     return out
 
 
-def merge(values: Sequence[SharpEigenvalue]) -> list[SharpEigenvalue]:
+def merge(values: Sequence[Eigenvalue]) -> list[Eigenvalue]:
     """The eigenvalues of several parts as those of their matrix: equal values joined, multiplicities added."""
-    joined: dict[tuple, SharpEigenvalue] = {}
+    joined: dict[tuple, Eigenvalue] = {}
     for v in values:
         old = joined.get(v.key)
         if old is None:
             joined[v.key] = v
         else:
             parts = old.part if v.part in old.part.split(", ") else f"{old.part}, {v.part}"
-            joined[v.key] = SharpEigenvalue(old.factor, old.index, old.exact, old.ball, old.multiplicity + v.multiplicity, parts)
+            joined[v.key] = replace(old, multiplicity=old.multiplicity + v.multiplicity, part=parts)
     return by_modulus(list(joined.values()))
 
 
-def by_modulus(values: Sequence[SharpEigenvalue]) -> list[SharpEigenvalue]:
+def by_modulus(values: Sequence[Eigenvalue]) -> list[Eigenvalue]:
     """``values`` sorted by decreasing modulus (then real part), by their balls' midpoints.
 
     The order is a presentation: where it matters (is this value strictly larger in modulus than
@@ -195,7 +178,7 @@ def by_modulus(values: Sequence[SharpEigenvalue]) -> list[SharpEigenvalue]:
     return sorted(values, key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid()), v.key))
 
 
-def separated(a: SharpEigenvalue, b: SharpEigenvalue, *, max_prec: int = 4096) -> bool:
+def separated(a: Eigenvalue, b: Eigenvalue, *, max_prec: int = 4096) -> bool:
     """Whether ``|a| > |b|`` is certified (Arb, raising the precision of the roots up to ``max_prec`` bits)."""
     if a.key == b.key:
         return False
@@ -210,7 +193,7 @@ def separated(a: SharpEigenvalue, b: SharpEigenvalue, *, max_prec: int = 4096) -
         prec *= 2
 
 
-def ball_at(v: SharpEigenvalue, prec: int):
+def ball_at(v: Eigenvalue, prec: int):
     """The eigenvalue's ball at ``prec`` bits (its own ball when that is at least as precise)."""
     if prec <= 256:
         return v.ball

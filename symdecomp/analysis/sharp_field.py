@@ -5,7 +5,8 @@ one-step matrix of a boundary or corner vertex with ``k`` faces (or a crease wit
 entries ``p + q w`` in the real cyclotomic field ``K = Q(cos(pi/k))``. :func:`sharp_matrix` returns the rational
 matrix when it is rational (``k <= 3``), else the :class:`~symdecomp.algebra.cos_field.FieldMatrix` over ``K``;
 :func:`sharp_values` its eigenvalues part by part (:mod:`symdecomp.analysis.sharp_eigen`), the same
-:class:`~symdecomp.analysis.sharp_eigen.SharpEigenvalue` objects as for rational rules: each is a root of an
+:class:`~symdecomp.analysis.eigenvalue.Eigenvalue` objects as for rational rules
+(:func:`~symdecomp.analysis.sharp_eigen.root_eigenvalue`): each is a root of an
 irreducible rational factor of the norm of the part's characteristic polynomial (its minimal polynomial over
 ``Q``), picked out and counted exactly (:func:`~symdecomp.algebra.cos_field.field_roots`).
 
@@ -20,7 +21,8 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cos_field import FieldMatrix, field_charpoly, field_roots, norm_charpoly
-from symdecomp.analysis.sharp_eigen import SharpEigenvalue, _factor_roots, crease_points, matrix_parts, part_eigenvalues
+from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.sharp_eigen import _factor_roots, crease_points, matrix_parts, part_eigenvalues, root_eigenvalue
 from symdecomp.errors import NotApplicableError
 
 __all__ = ["near_weight", "sharp_matrix", "sharp_values", "field_part_eigenvalues"]
@@ -61,7 +63,7 @@ def sharp_matrix(scheme, vertex, *, level: int = 0):
             raise NotApplicableError(f"{str(refused).split('; use ')[0]}, and {exc}") from None
 
 
-def field_part_eigenvalues(M: FieldMatrix, parts, *, prec: int = 256) -> list[SharpEigenvalue]:
+def field_part_eigenvalues(M: FieldMatrix, parts, *, prec: int = 256) -> list[Eigenvalue]:
     """:func:`~symdecomp.analysis.sharp_eigen.part_eigenvalues` for a matrix over ``Q(w)``: each eigenvalue a root of
     an irreducible rational factor of the norm, with its exact multiplicity in the part at ``w``'s real value."""
     out = []
@@ -77,7 +79,7 @@ def field_part_eigenvalues(M: FieldMatrix, parts, *, prec: int = 256) -> list[Sh
             named = _factor_roots(f, prec)
             for _, ball, mult in found:
                 index, exact, own = next(t for t in named if t[2].overlaps(ball))
-                items.append(SharpEigenvalue(f, index, exact, own, mult, part.label))
+                items.append(root_eigenvalue(f, index, exact, own, mult, part.label))
         out += sorted(items, key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid())))
     return out
 

@@ -174,7 +174,7 @@ def _block_names(scheme, vertex) -> dict:
     """``{eigenvalue key: "block, block"}`` from the spectrum's names (mirror blocks, or parts of the matrix)."""
     from symdecomp.analysis.sharp_spectrum import sharp_spectrum
 
-    return {e.eigenvalue.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
+    return {e.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
 
 
 def _print_mask(mask, names, digits: int, blocks: dict) -> None:

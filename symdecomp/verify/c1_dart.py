@@ -86,7 +86,7 @@ class DartSpectrum:
     verdict: C1Verdict
     #: The facts, in words.
     reason: str
-    #: ``lambda_1, lambda_2`` (:class:`~symdecomp.analysis.sharp_eigen.SharpEigenvalue`; one value twice when double).
+    #: ``lambda_1, lambda_2`` (:class:`~symdecomp.analysis.eigenvalue.Eigenvalue`; one value twice when double).
     pair: tuple = ()
 
 

@@ -73,7 +73,7 @@ def sharp_spectrum_figure(levels, vertex: str):
     fig = new_figure(7.5, 3.6 * len(levels) + 0.6)
     for ax, s in zip(fig.subplots(len(levels), 1, squeeze=False)[:, 0], levels):
         blocks = list(dict.fromkeys(b for e in s.entries for b in e.blocks))
-        points = [(blocks.index(b), as_complex(e.eigenvalue.ball), e.multiplicity) for e in s.entries for b in e.blocks]
+        points = [(blocks.index(b), as_complex(e.ball), e.multiplicity) for e in s.entries for b in e.blocks]
         _scatter(ax, points)
         ax.set_xticks(range(len(blocks)), blocks, fontsize=7, rotation=30, ha="right")
         ax.set_ylabel("eigenvalue")

@@ -70,7 +70,7 @@ nothing else.
                    one type of every spectrum, ``eigenvalue``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
-                   ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning (``tuning``; the
+                   ``ellipses``, ``hyperbolic``), limit masks (``masks``, of any scheme and K-ring too), tuning (``tuning``; the
                    regions of free vertex weights by curvature regime, ``tuning_region``),
                    the characteristic polynomial (Section 6, and its factors and product form for any K-ring, ``charpoly``;
                    ``reduction``), Jordan
@@ -80,7 +80,7 @@ nothing else.
                    nets (``characteristic``; exact in t = cos(2 pi/n) for every n,
                    ``characteristic_uniform``), where a 1-ring component starts on one eigenvector of M_j
                    (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
-                   (``ring_blocks``), factored spectra (``ring_spectrum``), masks (``ring_masks``); any StencilScheme of the zoo: its matrix on its
+                   (``ring_blocks``), factored spectra (``ring_spectrum``); any StencilScheme of the zoo: its matrix on its
                    neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
                    labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
                    ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face
@@ -234,15 +234,14 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix"),
     "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
     "symdecomp.analysis.inspection": ("MeshInspection", "VertexInspection", "inspect_mesh", "inspect_vertex"),
-    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at"),
+    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at", "ring_masks"),
     "symdecomp.analysis.mirror": ("SectorDecomposition", "SineBlock", "sector_decomposition", "sector_spectrum"),
     "symdecomp.analysis.redesign": ("redesign_vertex",),
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
     "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
     "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "sharp_spectrum"),
     "symdecomp.analysis.ring_blocks": ("RingBlocks", "ring_blocks"),
-    "symdecomp.analysis.ring_masks": ("ring_masks",),
-    "symdecomp.analysis.ring_spectrum": ("RingSpectrum", "ring_spectrum"),
+        "symdecomp.analysis.ring_spectrum": ("RingSpectrum", "ring_spectrum"),
     "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues"),
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),

@@ -1,7 +1,7 @@
 """Limit-position and tangent masks of a StencilScheme at valence ``n``, from its frequency blocks.
 
 The left eigenvectors of the full matrix come from those of the blocks (:mod:`symdecomp.analysis.zoo_blocks`),
-as :mod:`symdecomp.analysis.ring_masks` reads them for 1-ring schemes:
+as :func:`symdecomp.analysis.masks.ring_masks` reads them for 1-ring schemes:
 
 * position (eigenvalue 1, frequency 0): if ``z B_0 = z``, the centre gets ``z_O`` and every point of class
   ``c`` gets ``z_c / n``; scaled so that the weights sum to 1;
@@ -31,7 +31,7 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.null_vector import null_vector
-from symdecomp.analysis.ring_masks import _acb_matrix
+from symdecomp.analysis.masks import _acb_matrix
 from symdecomp.analysis.ring_spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix

@@ -34,8 +34,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.masks import limit_masks, limit_masks_at, ring_masks
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.analysis.spectrum import closed_form_spectrum, recursion_eigenvalues
 from symdecomp.analysis.tangent import complex_at, tangent_eigenvalues

@@ -36,7 +36,7 @@ import random
 
 import numpy as np
 
-from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.masks import ring_masks
 from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.mesh import triangle_ring_mesh

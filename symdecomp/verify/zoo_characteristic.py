@@ -24,7 +24,7 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_masks import _acb_matrix
+from symdecomp.analysis.masks import _acb_matrix
 from symdecomp.analysis.ring_spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix

@@ -110,7 +110,7 @@ def test_sharp_refinement_refuses_an_edge_rule_in_n():
 def test_masks_of_a_lopsided_rule_in_n_are_left_eigenvectors_at_that_valence():
     """A lopsided edge rule in n (weights 1/16 -+ (n - 4)/128 on a_(i-1), a_(i+1)): the masks are computed at n = 5
     (it was 'cannot evaluate n'), and the position mask is the left eigenvector of 1 of the 1-ring matrix there."""
-    from symdecomp.analysis.ring_masks import ring_masks
+    from symdecomp.analysis.masks import ring_masks
 
     s = scheme_from_text('name = "lopsided in n"\n[edge]\nO = "3/8"\na = { "-1" = "1/16 - (n - 4)/128", "0" = "3/8", '
                          '"1" = "1/16 + (n - 4)/128" }\nb = { "-1" = "1/16", "0" = "1/16" }\n[face]\nO = "1/4"\n'

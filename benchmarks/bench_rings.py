@@ -26,8 +26,10 @@ from symdecomp.analysis.masks import (
     limit_masks_at,  # noqa: E402
     ring_masks,  # noqa: E402
 )
-from symdecomp.analysis.ring_spectrum import ring_spectrum  # noqa: E402
-from symdecomp.analysis.spectrum import closed_form_spectrum  # noqa: E402
+from symdecomp.analysis.spectrum import (
+    closed_form_spectrum,  # noqa: E402
+    ring_spectrum,  # noqa: E402
+)
 from symdecomp.schemes.full_matrix import entries_characteristic_polynomial  # noqa: E402
 from symdecomp.schemes.loop import loop  # noqa: E402
 from symdecomp.schemes.rings import ring_subdivision_matrix  # noqa: E402

@@ -66,7 +66,8 @@ nothing else.
                    of any polygons (``polygon_step``; with OpenSubdiv's tags, ``polygon_sharp``),
                    whole meshes refined exactly with their tags (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
-                   spectra (Eq. 34, ``spectrum``, ``closed_forms``; a distinct eigenvalue with its multiplicity, the
+                   spectra (Eq. 34, and of any scheme and K-ring from its factored blocks, ``spectrum``,
+                   ``closed_forms``; a distinct eigenvalue with its multiplicity, the
                    one type of every spectrum, ``eigenvalue``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
@@ -80,7 +81,7 @@ nothing else.
                    nets (``characteristic``; exact in t = cos(2 pi/n) for every n,
                    ``characteristic_uniform``), where a 1-ring component starts on one eigenvector of M_j
                    (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
-                   (``ring_blocks``), factored spectra (``ring_spectrum``); any StencilScheme of the zoo: its matrix on its
+                   (``ring_blocks``); any StencilScheme of the zoo: its matrix on its
                    neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
                    labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
                    ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face
@@ -241,8 +242,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
     "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "sharp_spectrum"),
     "symdecomp.analysis.ring_blocks": ("RingBlocks", "ring_blocks"),
-        "symdecomp.analysis.ring_spectrum": ("RingSpectrum", "ring_spectrum"),
-    "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues"),
+        "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum"),
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),

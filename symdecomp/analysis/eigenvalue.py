@@ -1,7 +1,7 @@
 """A distinct eigenvalue with its multiplicity: the one type of every spectrum of the toolkit.
 
 The closed-form spectrum (:mod:`symdecomp.analysis.spectrum`), the ``K``-ring's factored spectrum
-(:mod:`symdecomp.analysis.ring_spectrum`), the exact eigenvalues of a boundary, crease, corner or dart
+(:func:`symdecomp.analysis.spectrum.ring_spectrum`), the exact eigenvalues of a boundary, crease, corner or dart
 vertex (part by part, :mod:`symdecomp.analysis.sharp_eigen`; by the mirror decomposition's blocks,
 :mod:`symdecomp.analysis.sharp_structural` and :func:`~symdecomp.analysis.mirror.sector_spectrum`; named
 by block, :mod:`symdecomp.analysis.sharp_spectrum`) and the numeric cross-checks

@@ -60,8 +60,7 @@ from symdecomp.analysis.elliptic import recursion_left_eigenvector, tangent_lamb
 from symdecomp.analysis.frequency import circulant_blocks, laurent_to_cos, per_frequency_matrix
 from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.analysis.ring_blocks import ring_blocks
-from symdecomp.analysis.ring_spectrum import acb_text, ring_spectrum
-from symdecomp.analysis.spectrum import format_value
+from symdecomp.analysis.spectrum import acb_text, format_value, ring_spectrum
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import InvalidSchemeError, SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -179,7 +178,7 @@ class MasksAtValence(NotebookDisplay):
         """The tangent masks as text, from Arb balls of the closed forms; an entry whose ball
         contains 0 is printed from its exact value (it may be exactly 0)."""
         from symdecomp.algebra.compile import compile_expression
-        from symdecomp.analysis.ring_spectrum import acb_text
+        from symdecomp.analysis.spectrum import acb_text
         from symdecomp.errors import UnsupportedExpressionError
 
         n, cf = self.n, self.closed_forms

@@ -40,8 +40,8 @@ from symdecomp.algebra.cos_field import rational_left_eigenspace
 from symdecomp.algebra.number_field import FieldElement, element_ball, left_eigenspace, reduced_basis, to_sympy_vector
 from symdecomp.algebra.numbers import to_sympy
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import acb_text
 from symdecomp.analysis.sharp_eigen import ball_at, merge, separated, submatrix
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import INPUT_LIMITS

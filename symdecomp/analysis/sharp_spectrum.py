@@ -24,8 +24,8 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
-from symdecomp.analysis.ring_spectrum import acb_text
 from symdecomp.analysis.sharp_eigen import merge
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits

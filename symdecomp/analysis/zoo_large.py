@@ -3,7 +3,7 @@
 The structural form (:mod:`symdecomp.analysis.zoo_structure`) gives the block of frequency ``k`` as a
 matrix in ``omega``, ``n`` and the families' symbols ``sigma_t``. Its characteristic polynomial is factored
 *once*, over those quantities as independent variables (the cosines and radicals of ``n`` in the centre's
-weights each a variable too), as :mod:`symdecomp.analysis.ring_spectrum` factors a 1-ring scheme's in
+weights each a variable too), as :func:`symdecomp.analysis.spectrum.ring_spectrum` factors a 1-ring scheme's in
 ``omega``: an identity in the variables holds at every value of them. At a valence ``n`` and a frequency
 ``k`` each factor's roots are then closed forms (degree ``<= 2``) evaluated in Arb, or isolated by Arb
 (``acb_poly.roots``); a factor with a repeated root at one frequency cannot be isolated there, and the
@@ -29,7 +29,7 @@ import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.charpoly import COSK, Factor, _factors
-from symdecomp.analysis.ring_spectrum import _Roots
+from symdecomp.analysis.spectrum import _Roots
 from symdecomp.analysis.zoo_structure import ZooStructure, zoo_structure
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.stencils import N, StencilScheme

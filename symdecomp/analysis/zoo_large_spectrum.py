@@ -22,7 +22,7 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import RingSpectrum, _exact_root, _hull, acb_text
+from symdecomp.analysis.spectrum import RingSpectrum, _exact_root, _hull, acb_text
 from symdecomp.analysis.zoo_blocks import signed_offset
 from symdecomp.analysis.zoo_large import StructuralFactors, frequency_balls, proved_distinct_groups, structural_factors
 from symdecomp.analysis.zoo_structure import ZooStructure

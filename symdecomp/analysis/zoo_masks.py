@@ -32,7 +32,7 @@ import sympy as sp
 
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.masks import _acb_matrix
-from symdecomp.analysis.ring_spectrum import acb_text
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks

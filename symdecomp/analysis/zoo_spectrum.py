@@ -1,7 +1,7 @@
 """The spectrum of a StencilScheme at valence ``n``, frequency by frequency, as a :class:`RingSpectrum`.
 
 The blocks (:mod:`symdecomp.analysis.zoo_blocks`) are factored as
-:mod:`symdecomp.analysis.ring_spectrum` factors a 1-ring scheme's: ``det(lambda I - B(omega))``
+:func:`symdecomp.analysis.spectrum.ring_spectrum` factors a 1-ring scheme's: ``det(lambda I - B(omega))``
 once, symbolically in ``omega``, and ``det(lambda I - B_0)``. The entries are exact numbers at
 the valence (rationals, or cosines of rational multiples of ``pi`` and the radicals sympy writes
 them with); each irrational atom is a symbol while factoring, so a factor is an identity for its
@@ -29,7 +29,7 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.charpoly import COSK, Factor, _factors
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import RingSpectrum, _clusters, _exact_root, _hull, _Roots, acb_text
+from symdecomp.analysis.spectrum import RingSpectrum, _clusters, _exact_root, _hull, _Roots, acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_roots import squarefree_roots

@@ -92,9 +92,9 @@ class DartSpectrum:
 
 def _exact_conditions(scheme, n: int) -> DartSpectrum:
     """Condition 1 on the exact 1-ring spectrum."""
-    from symdecomp.analysis.ring_spectrum import acb_text
     from symdecomp.analysis.sharp_eigen import by_modulus, merge, separated
     from symdecomp.analysis.sharp_field import sharp_values
+    from symdecomp.analysis.spectrum import acb_text
 
     try:
         _, _, found = sharp_values(scheme, SharpVertex.dart(n, scheme.lattice))

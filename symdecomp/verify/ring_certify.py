@@ -4,7 +4,7 @@ The claim is that the spectrum of the full ``K``-ring matrix ``S`` (built by exa
 :func:`~symdecomp.schemes.rings.ring_subdivision_matrix`, no block structure) is, with
 multiplicities, the union of the spectra of ``E_0`` and of ``E(omega_n^k)``, ``k = 1..n-1``
 (:mod:`symdecomp.analysis.ring_blocks`), whose factored characteristic polynomials give the
-closed forms and isolated roots of :mod:`symdecomp.analysis.ring_spectrum`. It is the identity
+closed forms and isolated roots of :func:`symdecomp.analysis.spectrum.ring_spectrum`. It is the identity
 
     chi_S(lambda) = det(lambda I - E_0) prod_{k=1}^{n-1} det(lambda I - E(omega^k)),
 
@@ -47,7 +47,7 @@ from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_sympy
 from symdecomp.analysis.charpoly import frequency_factors, product_identity
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
@@ -241,7 +241,7 @@ def _same_root_by_symmetry(roots, ff, n: int) -> bool:
 
 def _root_value(scheme: Scheme, ff, n: int, member, field):
     """The exact value of root ``j`` of factor ``i`` at frequency ``k`` in ``Q(zeta_2n)``, or ``None``."""
-    from symdecomp.analysis.ring_spectrum import _centre_values, _exact_root
+    from symdecomp.analysis.spectrum import _centre_values, _exact_root
 
     k, i, j = member
     f = (ff.zero if k == 0 else ff.other)[i]

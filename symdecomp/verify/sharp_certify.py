@@ -37,7 +37,7 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.ring_spectrum import acb_text
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits

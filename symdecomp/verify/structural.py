@@ -50,7 +50,7 @@ from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.charpoly import frequency_product_values
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS
 from symdecomp.schemes.scheme import Scheme
@@ -221,7 +221,7 @@ def _refute_by_balls(scheme: Scheme, cf: ClosedForms, n: int, digits: int, max_d
     """A rigorous reason why the closed forms are not the spectrum, from the frequency factors' certified roots.
 
     The full matrix's spectrum is the frequency factors' (step 1), enclosed in the balls of
-    :func:`~symdecomp.analysis.ring_spectrum.ring_spectrum`: (a) a closed-form value outside
+    :func:`~symdecomp.analysis.spectrum.ring_spectrum`: (a) a closed-form value outside
     cluster's ball is no eigenvalue; (b) a cluster's ball apart from the others holds exactly as
     many eigenvalues as the cluster's multiplicity: holding more closed-form values than that, or
     overlapping fewer, refutes them. The precision doubles up to ``max_digits``.

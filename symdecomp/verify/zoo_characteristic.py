@@ -25,7 +25,7 @@ from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.masks import _acb_matrix
-from symdecomp.analysis.ring_spectrum import RingSpectrum
+from symdecomp.analysis.spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum

@@ -11,7 +11,7 @@ import flint
 import numpy as np
 import pytest
 
-from symdecomp.analysis.ring_spectrum import acb_text
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_masks import _acb_matrix, _isolated_largest, zoo_masks
 from symdecomp.analysis.zoo_matrix import zoo_matrix

@@ -14,7 +14,7 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.ring_blocks import ring_blocks
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.files import load_scheme, scheme_from_text
 from symdecomp.schemes.refinement import edge_centre, mesh_rules

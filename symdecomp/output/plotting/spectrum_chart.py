@@ -5,7 +5,7 @@ of Eq. 34, the 3x3 matrix of Eq. 43 for ``k = 0``; ``E(omega^k)`` of a K-ring ma
 as in the paper's figures of the eigenvalues of ``M_j``; at a boundary, crease, corner or dart vertex
 at every block of the mirror decomposition it comes from. Real eigenvalues are drawn by value, complex
 ones by modulus (hollow markers). The numbers are the results the command prints
-(:class:`~symdecomp.analysis.spectrum.Spectrum`, :class:`~symdecomp.analysis.ring_spectrum.RingSpectrum`,
+(:class:`~symdecomp.analysis.spectrum.Spectrum`, :class:`~symdecomp.analysis.spectrum.RingSpectrum`,
 :class:`~symdecomp.analysis.sharp_spectrum.SharpSpectrum`).
 """
 

@@ -65,7 +65,8 @@ nothing else.
                    of it (``mesh_tags``); one exact Catmull-Clark step on a mesh
                    of any polygons (``polygon_step``; with OpenSubdiv's tags, ``polygon_sharp``),
                    whole meshes refined exactly with their tags (``mesh_refine``)
-``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
+``analysis/``      per-frequency matrices M_j, the recursion matrix of Eq. 43 and, for any scheme and K-ring,
+                   the block form and E_k (``frequency``),
                    spectra (Eq. 34, and of any scheme and K-ring from its factored blocks, ``spectrum``,
                    ``closed_forms``; a distinct eigenvalue with its multiplicity, the
                    one type of every spectrum, ``eigenvalue``), the tangent plane (Section
@@ -80,8 +81,7 @@ nothing else.
                    (``evolution``), the 2-ring matrix by frequency and the characteristic map's
                    nets (``characteristic``; exact in t = cos(2 pi/n) for every n,
                    ``characteristic_uniform``), where a 1-ring component starts on one eigenvector of M_j
-                   (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
-                   (``ring_blocks``); any StencilScheme of the zoo: its matrix on its
+                   (Eq. 35-38, ``components``); any StencilScheme of the zoo: its matrix on its
                    neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
                    labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
                    ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face
@@ -232,7 +232,8 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.elliptic": ("elliptic_defect_table", "nice_elliptic_conditions"),
     "symdecomp.analysis.evaluation": ("PatchEvaluator",),
     "symdecomp.analysis.sharp_evaluation": ("SharpPatchData", "sharp_patch_data"),
-    "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix"),
+    "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix",
+        "RingBlocks", "ring_blocks"),
     "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
     "symdecomp.analysis.inspection": ("MeshInspection", "VertexInspection", "inspect_mesh", "inspect_vertex"),
     "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at", "ring_masks"),
@@ -241,7 +242,6 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
     "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
     "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "sharp_spectrum"),
-    "symdecomp.analysis.ring_blocks": ("RingBlocks", "ring_blocks"),
         "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum"),
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),

@@ -54,9 +54,8 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.frequency import per_frequency_matrix
+from symdecomp.analysis.frequency import RingBlocks, per_frequency_matrix, ring_blocks
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.errors import InternalError, InvalidInputError, NotApplicableError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, entries_characteristic_polynomial
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, RingMatrix, ring_subdivision_matrix

@@ -50,8 +50,8 @@ import sympy as sp
 
 from symdecomp.algebra.polygons import coplanar_pairs, decompose
 from symdecomp.analysis.display import NotebookDisplay
+from symdecomp.analysis.frequency import ring_blocks
 from symdecomp.analysis.masks import ring_masks
-from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.errors import InternalError, InvalidMeshError, NotApplicableError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme

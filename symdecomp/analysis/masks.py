@@ -57,9 +57,8 @@ from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.elliptic import recursion_left_eigenvector, tangent_lambda
-from symdecomp.analysis.frequency import circulant_blocks, laurent_to_cos, per_frequency_matrix
+from symdecomp.analysis.frequency import circulant_blocks, laurent_to_cos, per_frequency_matrix, ring_blocks
 from symdecomp.analysis.hyperbolic import apply_rational_matrix
-from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.analysis.spectrum import acb_text, format_value, ring_spectrum
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import InvalidSchemeError, SymdecompError

@@ -80,8 +80,8 @@ def _position_values(scheme: Scheme, n: int) -> list[complex]:
     """The class weights of the position mask ``(w_O, w_a[, w_b])`` to 30 digits: the exact left eigenvector of the
     frequency-0 block for 1 (as :func:`~symdecomp.analysis.inspection.position_weights` solves it), evaluated without
     bringing it to a closed form first (sympy's simplification is what costs there)."""
+    from symdecomp.analysis.frequency import ring_blocks
     from symdecomp.analysis.inspection import position_weights
-    from symdecomp.analysis.ring_blocks import ring_blocks
 
     blocks = ring_blocks(scheme, 1)
     E0 = sp.Matrix(blocks.frequency_zero_matrix(n)) - sp.eye(1 + len(blocks.classes))

@@ -18,7 +18,7 @@ values with multiplicities. Frequencies are n-gon frequencies ``k`` (the 2n-gon 
 
 **Any rotationally symmetric scheme and** ``K``**-ring** (:func:`ring_spectrum`, certified, frequency by frequency).
 The spectrum of the ``K``-ring matrix is that of ``E_0`` and of ``E(omega_n^k)``,
-``k = 1..n-1`` (:mod:`symdecomp.analysis.ring_blocks`). Their characteristic polynomials are
+``k = 1..n-1`` (:func:`symdecomp.analysis.frequency.ring_blocks`). Their characteristic polynomials are
 factored once, symbolically (:func:`~symdecomp.analysis.charpoly.frequency_factors`): ``det(lambda I - E(omega))`` over ``Q(omega)``, and
 ``det(lambda I - E_0)`` over ``Q(n, w_a, w_b)`` with the centre weights as symbols (and
 ``w_O = 1 - n w_a - n w_b``, the vertex rule being affine). A factor of degree ``<= 2`` in
@@ -50,8 +50,7 @@ from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value, matr
 from symdecomp.analysis.charpoly import COSK, Factor, frequency_factors
 from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.frequency import recursion_matrix
-from symdecomp.analysis.ring_blocks import ring_blocks
+from symdecomp.analysis.frequency import recursion_matrix, ring_blocks
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.errors import InvalidSchemeError, UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import parameter_values

@@ -3,7 +3,7 @@
 The claim is that the spectrum of the full ``K``-ring matrix ``S`` (built by exact refinement,
 :func:`~symdecomp.schemes.rings.ring_subdivision_matrix`, no block structure) is, with
 multiplicities, the union of the spectra of ``E_0`` and of ``E(omega_n^k)``, ``k = 1..n-1``
-(:mod:`symdecomp.analysis.ring_blocks`), whose factored characteristic polynomials give the
+(:func:`symdecomp.analysis.frequency.ring_blocks`), whose factored characteristic polynomials give the
 closed forms and isolated roots of :func:`symdecomp.analysis.spectrum.ring_spectrum`. It is the identity
 
     chi_S(lambda) = det(lambda I - E_0) prod_{k=1}^{n-1} det(lambda I - E(omega^k)),
@@ -46,7 +46,7 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_sympy
 from symdecomp.analysis.charpoly import frequency_factors, product_identity
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.analysis.frequency import RingBlocks, ring_blocks
 from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix

@@ -49,7 +49,7 @@ from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.charpoly import frequency_product_values
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
+from symdecomp.analysis.frequency import RingBlocks, ring_blocks
 from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS

@@ -13,7 +13,7 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.ring_blocks import ring_blocks
+from symdecomp.analysis.frequency import ring_blocks
 from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.files import load_scheme, scheme_from_text

@@ -8,8 +8,8 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.defective import jordan_vertex_weights
+from symdecomp.analysis.frequency import RingBlocks, ring_blocks
 from symdecomp.analysis.masks import limit_masks_at, ring_masks
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.cli import main
 from symdecomp.schemes.loop import loop, loop_beta, loop_warren, triangle_scheme

@@ -106,10 +106,11 @@ nothing else.
                    evaluation data at crease, boundary and corner vertices, standard and BLZ rules: the eigen-decomposition over Q and
                    the picking matrices of the spline cells past the modified points (``sector_evaldata``),
                    the patches evaluated from them (``sector_evaluation``);
-                   exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
+                   exact eigenvalues of a block-triangular matrix by its parts, the crease block and the sectors, over Q
+                   or, for rules with cos(theta_k) weights, Q(cos(pi/k)) (``triangular_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
                    (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
-                   masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
+                   masks (``sharp_masks``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,

@@ -2,7 +2,7 @@
 
 The closed-form spectrum (:mod:`symdecomp.analysis.spectrum`), the ``K``-ring's factored spectrum
 (:func:`symdecomp.analysis.spectrum.ring_spectrum`), the exact eigenvalues of a boundary, crease, corner or dart
-vertex (part by part, :mod:`symdecomp.analysis.sharp_eigen`; by the mirror decomposition's blocks,
+vertex (part by part, :mod:`symdecomp.analysis.triangular_eigen`; by the mirror decomposition's blocks,
 :mod:`symdecomp.analysis.sharp_structural` and :func:`~symdecomp.analysis.mirror.sector_spectrum`; named
 by block, :mod:`symdecomp.analysis.sharp_spectrum`) and the numeric cross-checks
 (:mod:`symdecomp.verify.numeric`) all speak of the same thing: a value of the subdivision matrix's

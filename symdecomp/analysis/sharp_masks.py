@@ -2,7 +2,7 @@
 
 The one-step matrix ``S`` of the vertex's 1-ring (:func:`~symdecomp.schemes.sector.exact_sharp_matrix`) is block
 lower-triangular: the crease block ``C`` (the vertex and its neighbours on sharp edges), then one block ``Y_s`` per
-sector (:mod:`symdecomp.analysis.sharp_eigen`). So a left eigenvector of an eigenvalue of ``C`` that no ``Y_s``
+sector (:mod:`symdecomp.analysis.triangular_eigen`). So a left eigenvector of an eigenvalue of ``C`` that no ``Y_s``
 has vanishes off the crease points, and a left eigenvector ``(u, w)`` of an eigenvalue ``mu`` of ``Y_s`` has
 ``w Y_s = mu w`` (a sine polyline of the mirror decomposition) and ``u (mu I - C) = w X``: the 3 x 3 solve on the
 crease points. Every mask here is computed exactly as a left eigenvector of ``S`` (or of ``C``, or of the piece
@@ -40,8 +40,8 @@ from symdecomp.algebra.cos_field import rational_left_eigenspace
 from symdecomp.algebra.number_field import FieldElement, element_ball, left_eigenspace, reduced_basis, to_sympy_vector
 from symdecomp.algebra.numbers import to_sympy
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.sharp_eigen import ball_at, merge, separated, submatrix
 from symdecomp.analysis.spectrum import acb_text
+from symdecomp.analysis.triangular_eigen import ball_at, merge, separated, submatrix
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import INPUT_LIMITS
@@ -257,7 +257,7 @@ def sharp_masks(scheme: Scheme, vertex, *, level: int = 0) -> SharpMasks:
     """The limit position and tangent masks of ``vertex`` (a :class:`~symdecomp.schemes.sector.SharpVertex`) at
     refinement ``level``, exact (module docstring). Raises :class:`~symdecomp.errors.NotApplicableError` when 1 is
     not a simple eigenvalue, or a mask is out of reach (module docstring)."""
-    from symdecomp.analysis.sharp_field import sharp_values
+    from symdecomp.analysis.triangular_eigen import sharp_values
 
     scheme = check_scheme(scheme)
     S, parts, values = sharp_values(scheme, vertex, level=level)

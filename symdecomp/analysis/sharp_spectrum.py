@@ -2,8 +2,8 @@
 
 The eigenvalues are those of the one-step matrix ``S`` of the vertex's 1-ring built by exact refinement
 (:func:`~symdecomp.schemes.sector.exact_sharp_matrix`, or over ``Q(cos(pi/k))`` for rules with ``cos(theta_k)``
-weights: :mod:`symdecomp.analysis.sharp_field`, :attr:`SharpSpectrum.field`), found part by part
-(:mod:`symdecomp.analysis.sharp_eigen`: the crease block and each sector), each a root of an irreducible
+weights: :mod:`symdecomp.analysis.triangular_eigen`, :attr:`SharpSpectrum.field`), found part by part
+(:mod:`symdecomp.analysis.triangular_eigen`: the crease block and each sector), each a root of an irreducible
 rational factor, with its exact multiplicity. Each is then named by the block of the mirror decomposition
 (:func:`~symdecomp.analysis.mirror.sector_spectrum`) that has it: the crease block, the sine block ``j`` of a
 sector of ``k`` faces (``theta = pi j/k``), its last mode (``j = k`` on quads: ``b_i = (-1)^i``), or at a dart
@@ -24,8 +24,8 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
-from symdecomp.analysis.sharp_eigen import merge
 from symdecomp.analysis.spectrum import acb_text
+from symdecomp.analysis.triangular_eigen import merge
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits
@@ -136,7 +136,7 @@ def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20, 
     (the mirror decomposition's blocks, O(k): :mod:`symdecomp.analysis.sharp_structural`; refused where it does not
     apply), or ``"auto"``: structural from :data:`STRUCTURAL_FROM` faces on where it applies, else dense.
     """
-    from symdecomp.analysis.sharp_field import sharp_values
+    from symdecomp.analysis.triangular_eigen import sharp_values
 
     scheme, digits = check_scheme(scheme), check_digits(digits)
     if route not in _ROUTES:
@@ -163,8 +163,8 @@ def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20, 
 
 def _structural_spectrum(scheme: Scheme, vertex, level: int, digits: int) -> SharpSpectrum:
     """:func:`sharp_spectrum` from the blocks of the mirror decomposition (no matrix of the vertex)."""
-    from symdecomp.analysis.sharp_field import near_weight
     from symdecomp.analysis.sharp_structural import structural_values
+    from symdecomp.analysis.triangular_eigen import near_weight
 
     here = vertex.at_level(level)
     values, size = structural_values(scheme, here, prec=max(256, 4 * digits + 64))
@@ -208,7 +208,7 @@ def _cos_index(S) -> int | None:
 def sharp_levels(scheme: Scheme, vertex, *, digits: int = 20) -> list[SharpSpectrum]:
     """The spectra at level 0 and at each later level whose matrix differs from the one before, until the
     sharpness has decayed to 0 (one spectrum for infinitely sharp edges)."""
-    from symdecomp.analysis.sharp_field import sharp_matrix
+    from symdecomp.analysis.triangular_eigen import sharp_matrix
     from symdecomp.schemes.sector import MAX_LEVEL
 
     out = [sharp_spectrum(scheme, vertex, digits=digits)]

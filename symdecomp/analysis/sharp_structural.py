@@ -38,7 +38,7 @@ from symdecomp.algebra.number_field import FieldElement
 from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
 from symdecomp.analysis.mirror import THETA_K, crease_block, mirror_stencils, sine_block, sine_identity, vertex_layout
 from symdecomp.analysis.mirror_threshold import CK, C, in_cos
-from symdecomp.analysis.sharp_eigen import MatrixPart, ball_at, part_eigenvalues
+from symdecomp.analysis.triangular_eigen import MatrixPart, ball_at, part_eigenvalues
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 

@@ -1,4 +1,4 @@
-"""The block-triangular parts of a sharp vertex's matrix, found from the matrix (symdecomp.analysis.sharp_eigen)."""
+"""The block-triangular parts of a sharp vertex's matrix, found from the matrix (symdecomp.analysis.triangular_eigen)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import flint
 import pytest
 
 import symdecomp as sd
-from symdecomp.analysis.sharp_eigen import crease_points, matrix_parts, merge, part_eigenvalues, submatrix
+from symdecomp.analysis.triangular_eigen import crease_points, matrix_parts, merge, part_eigenvalues, submatrix
 
 CC, LOOP = sd.catmull_clark(), sd.loop()
 

@@ -84,7 +84,6 @@ __all__ = [
 W_O, W_A, W_B = CENTRE_WEIGHTS
 
 
-
 @dataclass(frozen=True)
 class ClosedFormCharpoly:
     """``det(x I - S)`` for symbolic ``n`` and weights, in the variable :data:`symdecomp.symbols.lam`."""

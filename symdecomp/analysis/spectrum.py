@@ -64,6 +64,8 @@ from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
 __all__ = ["Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value", "RingSpectrum", "ring_spectrum", "acb_text"]
 
+W_O, W_A, W_B = CENTRE_WEIGHTS
+
 
 @dataclass(frozen=True)
 class Spectrum(NotebookDisplay):
@@ -212,17 +214,23 @@ def closed_form_spectrum(scheme: Scheme, n: int, *, digits: int = 30, parameters
     return Spectrum(n=n, scheme=scheme.name, digits=digits, grouping_digits=digits + 15, eigenvalues=entries)
 
 
-W_O, W_A, W_B = CENTRE_WEIGHTS
-
-
 @dataclass(frozen=True)
 class RingSpectrum:
+    """The factored spectrum of a scheme's ``K``-ring matrix at one valence (:func:`ring_spectrum`)."""
+
+    #: The scheme's name.
     scheme: str
+    #: The scheme's mesh (``"quad"``, ``"triangle"``).
     mesh: str
+    #: The valence.
     n: int
+    #: The ring depth ``K``.
     rings: int
+    #: The matrix's size (``1 + K' n``, ``K'`` vertex classes per sector).
     size: int
+    #: Significant digits of the printed values.
     digits: int
+    #: Distinct eigenvalues (certified balls), in decreasing order of modulus (then real part).
     eigenvalues: tuple[Eigenvalue, ...]
 
     def as_json(self) -> dict:

@@ -22,6 +22,7 @@ others keep their defaults ("not known here").
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import sympy as sp
 
@@ -71,11 +72,11 @@ class Eigenvalue:
     labels: tuple[ClosedFormLabel, ...] = ()
     #: An exact expression (closed-form roots; a ``CRootOf`` for a root of a rational factor of degree > 2), or its
     #: text where it is built as text (the structural route of a sharp vertex, a spectrum's printed form), or ``None``
-    #: when not computed.
-    exact: sp.Expr | str | None = None
+    #: when not computed (typed ``Any``: sympy has no type information, and the readers know which route they read).
+    exact: Any = None
     #: The factor it is a root of: a polynomial in ``lambda`` (at its first frequency), or the monic irreducible
     #: rational factor (``flint.fmpq_poly``) of an exact route; ``None`` if not known.
-    factor: object = None
+    factor: Any = None
     #: Sizes of its Jordan blocks when known (all 1: not defective), else ``None``.
     jordan: tuple[int, ...] | None = None
     #: The roots in its cluster, ``(frequency k, factor index, root index)``, one per unit of multiplicity

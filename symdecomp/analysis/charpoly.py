@@ -74,6 +74,7 @@ __all__ = [
     "Factor",
     "FrequencyFactors",
     "frequency_factors",
+    "irreducible_factors",
     "ring_charpoly",
     "product_form",
     "frequency_product_values",
@@ -291,7 +292,9 @@ class FrequencyFactors:
     other: tuple[Factor, ...]
 
 
-def _factors(charpoly: sp.Expr, gens) -> tuple[Factor, ...]:
+def irreducible_factors(charpoly: sp.Expr, gens) -> tuple[Factor, ...]:
+    """The factors of ``charpoly`` (a polynomial in ``lambda`` over ``gens``) that hold ``lambda``, each monic, with its
+    exponent and closed-form roots up to degree 2 (in ``c_k`` where the coefficients are symmetric in ``omega``)."""
     numer, _ = sp.fraction(sp.together(sp.expand(charpoly)))
     _, items = sp.factor_list(sp.expand(numer), *gens)
     out = []
@@ -321,10 +324,10 @@ def frequency_factors(blocks: RingBlocks) -> FrequencyFactors:
     """Factor ``det(lambda I - E_0)`` and ``det(lambda I - E(omega))`` once, symbolically (exact)."""
     K = blocks.class_count
     E = blocks.frequency_matrix()
-    other = _factors((LAM * sp.eye(K) - E).det(method="berkowitz"), (LAM, OMEGA))
+    other = irreducible_factors((LAM * sp.eye(K) - E).det(method="berkowitz"), (LAM, OMEGA))
     affine = 1 - sum(N * {"a": W_A, "b": W_B}[name] for name, _ in blocks.lattice.one_ring_classes)  # the vertex rule sums to 1
     E0 = blocks.frequency_zero_matrix(symbolic_weights=True).xreplace({W_O: affine})
-    zero = _factors((LAM * sp.eye(K + 1) - E0).det(method="berkowitz"), (LAM, N, W_A, W_B))
+    zero = irreducible_factors((LAM * sp.eye(K + 1) - E0).det(method="berkowitz"), (LAM, N, W_A, W_B))
     return FrequencyFactors(zero, other)
 
 

@@ -68,7 +68,8 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
-__all__ = ["INDEX", "LAMBDA1", "LimitMasks", "limit_masks", "MasksAtValence", "limit_masks_at", "check_masks_exactly", "ring_masks"]
+__all__ = ["INDEX", "LAMBDA1", "LimitMasks", "limit_masks", "MasksAtValence", "limit_masks_at", "check_masks_exactly", "ring_masks",
+           "acb_matrix"]
 
 #: The index ``i`` of ``a_i``, ``b_i`` in the closed forms.
 INDEX = sp.Symbol("i", integer=True, nonnegative=True)
@@ -262,7 +263,8 @@ def check_masks_exactly(scheme: Scheme, n: int) -> tuple[bool, bool, bool]:
     return position_ok, results[0], results[1]
 
 
-def _acb_matrix(M: sp.Matrix, variables, values):
+def acb_matrix(M: sp.Matrix, variables, values):
+    """The sympy matrix ``M`` as an Arb matrix, its entries compiled in ``variables`` and evaluated at ``values``."""
     return flint.acb_mat([[compile_expression(sp.sympify(M[r, c], strict=True), variables, "arb")(*values) for c in range(M.shape[1])]
                           for r in range(M.shape[0])])
 
@@ -283,10 +285,10 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
     with flint.ctx.workprec(prec):
         E0 = sp.Matrix(blocks.frequency_zero_matrix(n))
         one = flint.acb_mat([[flint.acb(int(r == c)) for c in range(E0.shape[0])] for r in range(E0.shape[0])])
-        A0 = _acb_matrix(E0, (), ()) - one
+        A0 = acb_matrix(E0, (), ()) - one
         y0 = null_vector(A0.transpose(), first=0)  # a left null vector
         w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
-        E1 = _acb_matrix(blocks.frequency_matrix().subs(N, n), (OMEGA,), (w,))  # an edge rule in n: at this valence
+        E1 = acb_matrix(blocks.frequency_matrix().subs(N, n), (OMEGA,), (w,))  # an edge rule in n: at this valence
         K = blocks.class_count
         eye = flint.acb_mat([[flint.acb(int(r == c)) for c in range(K)] for r in range(K)])
         A1 = E1 - lam1 * eye

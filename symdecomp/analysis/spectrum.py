@@ -62,7 +62,8 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
-__all__ = ["Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value", "RingSpectrum", "ring_spectrum", "acb_text"]
+__all__ = ["Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value", "RingSpectrum", "ring_spectrum", "acb_text",
+           "FactorRoots", "overlap_clusters", "ball_hull", "exact_root", "centre_values"]
 
 W_O, W_A, W_B = CENTRE_WEIGHTS
 
@@ -254,7 +255,7 @@ def acb_text(z, digits: int) -> str:
         return format_value(mpmath.mpc(re, mpmath.mpf(z.imag.mid().str(digits + 10, radius=False))), digits)
 
 
-def _centre_values(scheme: Scheme, n: int) -> tuple[dict, dict]:
+def centre_values(scheme: Scheme, n: int) -> tuple[dict, dict]:
     """The centre weights at ``n``: exact sympy values and Cyclotomic values, by symbol."""
     v = scheme.vertex_rule
     exact, field = {}, {}
@@ -271,7 +272,7 @@ def _evaluator(expr: sp.Expr, variables):
     return compile_expression(sp.sympify(expr, strict=True), variables, "arb")
 
 
-class _Roots:
+class FactorRoots:
     """Roots of the factors at a frequency as Arb balls (closed forms compiled once)."""
 
     def __init__(self, factors: tuple[Factor, ...], variables):
@@ -297,7 +298,7 @@ class _Roots:
         return out
 
 
-def _clusters(items):
+def overlap_clusters(items):
     """Group balls that overlap (transitively); items are ``(ball, ...)`` tuples."""
     order = sorted(range(len(items)), key=lambda i: (float(items[i][0].real.mid()), float(items[i][0].imag.mid())))
     groups: list[list[int]] = []
@@ -312,7 +313,7 @@ def _clusters(items):
     return groups
 
 
-def _exact_root(root: sp.Expr, k: int, n: int, weights: dict) -> sp.Expr:
+def exact_root(root: sp.Expr, k: int, n: int, weights: dict) -> sp.Expr:
     """A closed-form root at frequency ``k``: ``omega -> exp(2 pi i k/n)`` written with cosines."""
     expr = sp.sympify(root, strict=True).xreplace({N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), **weights})
     if not expr.has(OMEGA):
@@ -338,17 +339,17 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
     digits = check_digits(digits)
     blocks = ring_blocks(scheme, rings)
     ff = frequency_factors(blocks)
-    exact_w, field_w = _centre_values(scheme, n)
+    exact_w, field_w = centre_values(scheme, n)
     prec = max(128, 4 * digits + 64)
     with flint.ctx.workprec(prec):
-        zero = _Roots(ff.zero, (N, W_A, W_B))
-        other = _Roots(ff.other, (OMEGA, COSK, N))  # N: an edge rule in n is read at the centre's valence (the model)
+        zero = FactorRoots(ff.zero, (N, W_A, W_B))
+        other = FactorRoots(ff.other, (OMEGA, COSK, N))  # N: an edge rule in n is read at the centre's valence (the model)
         wa, wb = (to_acb(field_w[s], prec) for s in (W_A, W_B))
         items = [(b, 0, i, j) for b, i, j in zero.at((flint.acb(n), wa, wb))]
         for k in range(1, n):
             w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
             items += [(b, k, i, j) for b, i, j in other.at((w, w.real, flint.acb(n)))]
-        groups = _clusters(items)
+        groups = overlap_clusters(items)
         groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
         entries = []
         for g in groups:
@@ -357,7 +358,7 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
             f = factors[i]
             value = None
             if exact and f.roots is not None:
-                value = _exact_root(f.roots[j], k, n, exact_w)
+                value = exact_root(f.roots[j], k, n, exact_w)
             entries.append(
                 Eigenvalue(
                     value=b,
@@ -368,14 +369,14 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
                     factor=f.poly.xreplace({N: n}) if k == 0 else f.poly,
                     jordan=_jordan(blocks, ff, items, g, n, exact_w) if jordan else None,
                     members=tuple(sorted(items[x][1:] for x in g)),
-                    hull=_hull([items[x][0] for x in g]),
+                    hull=ball_hull([items[x][0] for x in g]),
                 )
             )
     size = 1 + blocks.class_count * n
     return RingSpectrum(scheme.name, scheme.mesh, n, rings, size, digits, tuple(entries))
 
 
-def _hull(balls):
+def ball_hull(balls):
     """A ball (a square around the first midpoint) holding every ball of ``balls``."""
     centre = balls[0].mid()
     radius = max(((abs(b.mid() - centre) + b.rad()).upper() for b in balls), key=float)

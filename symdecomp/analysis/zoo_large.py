@@ -28,8 +28,8 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
-from symdecomp.analysis.charpoly import COSK, Factor, _factors
-from symdecomp.analysis.spectrum import _Roots
+from symdecomp.analysis.charpoly import COSK, Factor, irreducible_factors
+from symdecomp.analysis.spectrum import FactorRoots
 from symdecomp.analysis.zoo_structure import ZooStructure, zoo_structure
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.stencils import N, StencilScheme
@@ -52,10 +52,10 @@ class StructuralFactors:
     other: tuple[Factor, ...]
 
     @functools.cached_property
-    def _evaluators(self) -> tuple[_Roots, _Roots, list[Any]]:
+    def _evaluators(self) -> tuple[FactorRoots, FactorRoots, list[Any]]:
         variables = (N, *self.structure.sigma, *self.atoms)
         atoms = [compile_expression(e, (N,), "arb") for e in self.atoms.values()]
-        return _Roots(self.zero, variables), _Roots(self.other, (OMEGA, COSK, *variables)), atoms
+        return FactorRoots(self.zero, variables), FactorRoots(self.other, (OMEGA, COSK, *variables)), atoms
 
 
 def _atoms(exprs: list[sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
@@ -89,8 +89,8 @@ def _structural_factors(st: ZooStructure) -> StructuralFactors:
     back = {a: g for g, a in atoms.items()}
     Bg, B0g = (X.applyfunc(lambda e: sp.expand(sp.sympify(e, strict=True).xreplace(back))) for X in (B, B0))
     variables = (N, *st.sigma, *atoms)
-    other = _factors((LAM * sp.eye(Bg.shape[0]) - Bg).det(method="berkowitz"), (LAM, OMEGA, *variables))
-    zero = _factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM, *variables))
+    other = irreducible_factors((LAM * sp.eye(Bg.shape[0]) - Bg).det(method="berkowitz"), (LAM, OMEGA, *variables))
+    zero = irreducible_factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM, *variables))
     return StructuralFactors(st, atoms, zero, other)
 
 

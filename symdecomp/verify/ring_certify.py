@@ -241,15 +241,15 @@ def _same_root_by_symmetry(roots, ff, n: int) -> bool:
 
 def _root_value(scheme: Scheme, ff, n: int, member, field):
     """The exact value of root ``j`` of factor ``i`` at frequency ``k`` in ``Q(zeta_2n)``, or ``None``."""
-    from symdecomp.analysis.spectrum import _centre_values, _exact_root
+    from symdecomp.analysis.spectrum import centre_values, exact_root
 
     k, i, j = member
     f = (ff.zero if k == 0 else ff.other)[i]
     if f.roots is None:
         return None
-    exact_w, _ = _centre_values(scheme, n)
+    exact_w, _ = centre_values(scheme, n)
     try:
-        return cyclotomic_value(_exact_root(f.roots[j], k, n, exact_w), field=field)
+        return cyclotomic_value(exact_root(f.roots[j], k, n, exact_w), field=field)
     except ValueError:
         return None
 

@@ -24,7 +24,7 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.masks import _acb_matrix
+from symdecomp.analysis.masks import acb_matrix
 from symdecomp.analysis.spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
@@ -104,7 +104,7 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
         zeta = [flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() for s in range(n)]
         block = zoo_blocks(zm).frequency_matrix()
         K = block.shape[0]
-        A = _acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
+        A = acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
         x = null_vector(A)
         points = {} if x is None else {v: zeta[s % n] * x[c] for v, (s, c) in nb.labels.items()}
     if x is None:

@@ -55,7 +55,7 @@ from symdecomp.algebra.number_field import root_expression
 from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.errors import NotApplicableError, PrecisionError
 
-__all__ = ["crease_points", "MatrixPart", "root_eigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus",
+__all__ = ["MatrixPart", "root_eigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus",
            "merge", "separated", "ball_at",
            "near_weight", "sharp_matrix", "sharp_values", "field_part_eigenvalues"]
 
@@ -82,11 +82,6 @@ def root_eigenvalue(factor: flint.fmpq_poly, index: int, exact: sp.Expr, ball, m
 def submatrix(S: flint.fmpq_mat, indices: Sequence[int]) -> flint.fmpq_mat:
     """The principal submatrix of ``S`` on ``indices``."""
     return flint.fmpq_mat([[S[i, j] for j in indices] for i in indices])
-
-
-def crease_points(vertex) -> tuple[int, ...]:
-    """The rows of the vertex ``O`` and of its neighbours ``a_m`` on sharp edges in the 1-ring order ``O, a_0, ..``."""
-    return (0,) + tuple(1 + m for m in vertex.sharp_rays())
 
 
 def _support(S: flint.fmpq_mat, i: int) -> set[int]:
@@ -281,7 +276,7 @@ def field_part_eigenvalues(M: FieldMatrix, parts, *, prec: int = 256) -> list[Ei
 def sharp_values(scheme, vertex, *, level: int = 0, prec: int = 256):
     """``(S, parts, eigenvalues by part)`` of the vertex at ``level``, over ``Q`` or ``Q(cos(pi/k))``."""
     S = sharp_matrix(scheme, vertex, level=level)
-    parts = matrix_parts(S, crease_points(vertex))
+    parts = matrix_parts(S, vertex.crease_points())
     if isinstance(S, flint.fmpq_mat):
         return S, parts, part_eigenvalues(S, parts, prec=prec)
     return S, parts, field_part_eigenvalues(S, parts, prec=prec)

@@ -22,10 +22,14 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
-from symdecomp.analysis.masks import limit_masks_at  # noqa: E402
-from symdecomp.analysis.ring_masks import ring_masks  # noqa: E402
-from symdecomp.analysis.ring_spectrum import ring_spectrum  # noqa: E402
-from symdecomp.analysis.spectrum import closed_form_spectrum  # noqa: E402
+from symdecomp.analysis.masks import (
+    limit_masks_at,  # noqa: E402
+    ring_masks,  # noqa: E402
+)
+from symdecomp.analysis.spectrum import (
+    closed_form_spectrum,  # noqa: E402
+    ring_spectrum,  # noqa: E402
+)
 from symdecomp.schemes.full_matrix import entries_characteristic_polynomial  # noqa: E402
 from symdecomp.schemes.loop import loop  # noqa: E402
 from symdecomp.schemes.rings import ring_subdivision_matrix  # noqa: E402

@@ -65,22 +65,23 @@ nothing else.
                    of it (``mesh_tags``); one exact Catmull-Clark step on a mesh
                    of any polygons (``polygon_step``; with OpenSubdiv's tags, ``polygon_sharp``),
                    whole meshes refined exactly with their tags (``mesh_refine``)
-``analysis/``      per-frequency matrices M_j and the recursion matrix of Eq. 43 (``frequency``),
-                   spectra (Eq. 34, ``spectrum``, ``closed_forms``; a distinct eigenvalue with its multiplicity, the
+``analysis/``      per-frequency matrices M_j, the recursion matrix of Eq. 43 and, for any scheme and K-ring,
+                   the block form and E_k (``frequency``),
+                   spectra (Eq. 34, and of any scheme and K-ring from its factored blocks, ``spectrum``,
+                   ``closed_forms``; a distinct eigenvalue with its multiplicity, the
                    one type of every spectrum, ``eigenvalue``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
-                   ``ellipses``, ``hyperbolic``), limit masks (``masks``), tuning (``tuning``; the
+                   ``ellipses``, ``hyperbolic``), limit masks (``masks``, of any scheme and K-ring too), tuning (``tuning``; the
                    regions of free vertex weights by curvature regime, ``tuning_region``),
-                   the characteristic polynomial (Section 6, ``charpoly``, ``reduction``), Jordan
+                   the characteristic polynomial (Section 6, and its factors and product form for any K-ring, ``charpoly``;
+                   ``reduction``), Jordan
                    blocks (``defective``), supports (Section 3, ``support``; for every n from one
                    window of sectors, ``support_window``), rings iterated step by step
                    (``evolution``), the 2-ring matrix by frequency and the characteristic map's
                    nets (``characteristic``; exact in t = cos(2 pi/n) for every n,
                    ``characteristic_uniform``), where a 1-ring component starts on one eigenvector of M_j
-                   (Eq. 35-38, ``components``); any scheme and K-ring: block form and E_k
-                   (``ring_blocks``), factored spectra (``ring_spectrum``), product-form charpoly
-                   (``ring_charpoly``), masks (``ring_masks``); any StencilScheme of the zoo: its matrix on its
+                   (Eq. 35-38, ``components``); any StencilScheme of the zoo: its matrix on its
                    neighbourhood by refinement and closure (``zoo_matrix``), frequency blocks from the orbit
                    labelling (``zoo_blocks``), factored spectra (``zoo_spectrum``; repeated roots split exactly,
                    ``zoo_roots``; Jordan blocks, ``zoo_jordan``), limit and tangent masks (``zoo_masks``), a face
@@ -110,10 +111,11 @@ nothing else.
                    scheme whose regular part is the biquadratic B-spline (Doo-Sabin): the matrix, the ring cells' picking
                    matrices and the decomposition over Q (``dual_evaldata``), the sectors evaluated from them
                    (``dual_evaluation``);
-                   exact eigenvalues by the crease block and the sectors (``sharp_eigen``), the spectrum
+                   exact eigenvalues of a block-triangular matrix by its parts, the crease block and the sectors, over Q
+                   or, for rules with cos(theta_k) weights, Q(cos(pi/k)) (``triangular_eigen``), the spectrum
                    named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
                    (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
-                   masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
+                   masks (``sharp_masks``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
                    enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
@@ -236,24 +238,22 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.defective": ("jordan_block_size", "jordan_vertex_weights"),
     "symdecomp.analysis.design": ("LimitFrame", "RingDesign", "design_ring", "limit_frame"),
     "symdecomp.analysis.eigendata": ("certified_eigendata",),
-    "symdecomp.analysis.eigenvalue": ("ClosedFormLabel", "Eigenvalue"),
+    "symdecomp.analysis.eigenvalue": ("ClosedFormLabel", "Eigenvalue", "MirrorBlock"),
     "symdecomp.analysis.ellipses": ("ellipse_axes",),
     "symdecomp.analysis.elliptic": ("elliptic_defect_table", "nice_elliptic_conditions"),
     "symdecomp.analysis.evaluation": ("PatchEvaluator",),
     "symdecomp.analysis.sharp_evaluation": ("SharpPatchData", "sharp_patch_data"),
-    "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix"),
+    "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix",
+        "RingBlocks", "ring_blocks"),
     "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
     "symdecomp.analysis.inspection": ("MeshInspection", "VertexInspection", "inspect_mesh", "inspect_vertex"),
-    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at"),
-    "symdecomp.analysis.mirror": ("SectorDecomposition", "SectorEigenvalue", "SineBlock", "sector_decomposition", "sector_spectrum"),
+    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at", "ring_masks"),
+    "symdecomp.analysis.mirror": ("SectorDecomposition", "SineBlock", "sector_decomposition", "sector_spectrum"),
     "symdecomp.analysis.redesign": ("redesign_vertex",),
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
     "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
-    "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "SharpSpectrumEntry", "sharp_spectrum"),
-    "symdecomp.analysis.ring_blocks": ("RingBlocks", "ring_blocks"),
-    "symdecomp.analysis.ring_masks": ("ring_masks",),
-    "symdecomp.analysis.ring_spectrum": ("RingSpectrum", "ring_spectrum"),
-    "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues"),
+    "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "sharp_spectrum"),
+        "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum"),
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),

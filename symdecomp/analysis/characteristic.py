@@ -40,7 +40,7 @@ sector 0 on the 2-ring classes) maps to one with sector values ``omega^s B_j c``
 block lower triangular: its upper left block is the 1-ring matrix ``M_j`` (``2 x 2`` on
 quads, ``1 x 1`` on triangles: the new 1-ring depends only on the old one), the lower right
 block ``S_j`` belongs to the outer points, which the regular rules move. The regular rows are
-the scheme-independent block form of :func:`~symdecomp.analysis.ring_blocks.ring_blocks` (the
+the scheme-independent block form of :func:`~symdecomp.analysis.frequency.ring_blocks` (the
 3-ring matrix of the reference scheme, whose level-1 ring-3 rows read only the level-0
 2-ring); the 1-ring rows are the scheme's own rules at valence ``n``.
 
@@ -57,7 +57,7 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.ring_blocks import ring_blocks
+from symdecomp.analysis.frequency import ring_blocks
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, Lattice, lattice
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix

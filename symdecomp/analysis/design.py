@@ -61,8 +61,8 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.design_input import amount, dot, frame, vector
+from symdecomp.analysis.frequency import ring_blocks
 from symdecomp.analysis.inspection import position_weights
-from symdecomp.analysis.ring_blocks import ring_blocks
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme

@@ -1,11 +1,15 @@
 """A distinct eigenvalue with its multiplicity: the one type of every spectrum of the toolkit.
 
 The closed-form spectrum (:mod:`symdecomp.analysis.spectrum`), the ``K``-ring's factored spectrum
-(:mod:`symdecomp.analysis.ring_spectrum`) and the numeric cross-checks (:mod:`symdecomp.verify.numeric`)
-all speak of the same thing: a value of the subdivision matrix's spectrum, how many times it occurs,
-and where it comes from (the n-gon frequencies whose blocks give it, the closed forms, the factor of
-the characteristic polynomial, its Jordan blocks). Each fills the fields it knows; the others keep
-their defaults ("not known here").
+(:func:`symdecomp.analysis.spectrum.ring_spectrum`), the exact eigenvalues of a boundary, crease, corner or dart
+vertex (part by part, :mod:`symdecomp.analysis.triangular_eigen`; by the mirror decomposition's blocks,
+:mod:`symdecomp.analysis.sharp_structural` and :func:`~symdecomp.analysis.mirror.sector_spectrum`; named
+by block, :mod:`symdecomp.analysis.sharp_spectrum`) and the numeric cross-checks
+(:mod:`symdecomp.verify.numeric`) all speak of the same thing: a value of the subdivision matrix's
+spectrum, how many times it occurs, and where it comes from (the n-gon frequencies or the mirror
+blocks that give it, the closed forms, the factor of the characteristic polynomial and which of its
+roots, the part of a block-triangular matrix, its Jordan blocks). Each fills the fields it knows; the
+others keep their defaults ("not known here").
 
 >>> import mpmath
 >>> e = Eigenvalue(mpmath.mpf(1) / 2, "0.5", 2, frequencies=(1, 3))
@@ -18,10 +22,13 @@ their defaults ("not known here").
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import sympy as sp
 
-__all__ = ["Eigenvalue", "ClosedFormLabel"]
+from symdecomp.errors import NotApplicableError
+
+__all__ = ["Eigenvalue", "ClosedFormLabel", "MirrorBlock"]
 
 
 @dataclass(frozen=True)
@@ -35,12 +42,27 @@ class ClosedFormLabel:
 
 
 @dataclass(frozen=True)
+class MirrorBlock:
+    """Where an eigenvalue of a boundary, crease, corner or dart vertex comes from in its mirror decomposition
+    (:func:`~symdecomp.analysis.mirror.sector_decomposition`)."""
+
+    #: ``"crease"``, ``"cosine"`` (a dart's symmetric part), ``"sine"`` or ``"face"`` (a sector's last mode).
+    block: str
+    #: The sector (``0``, ``1``, ...) of a sine or face block, else ``None``.
+    sector: int | None = None
+    #: The sine block's ``j`` (``theta = pi j/k``), or ``k`` for the last mode, else ``None``.
+    j: int | None = None
+
+
+@dataclass(frozen=True)
 class Eigenvalue:
     """One distinct eigenvalue of a subdivision matrix at a valence, with its multiplicity."""
 
-    #: The value: an mpmath number at the working precision, or a certified ball (``flint.acb``).
+    #: The value: an mpmath number at the working precision, a certified ball (``flint.acb``), or an exact
+    #: sympy number (the mirror blocks' closed forms, :func:`~symdecomp.analysis.mirror.sector_spectrum`).
     value: object
-    #: The value as decimal text with the requested number of significant digits.
+    #: The value as decimal text with the requested number of significant digits; empty where none was asked
+    #: for (an exact route's values before a spectrum prints them).
     text: str
     #: Algebraic multiplicity (how many eigenvalues, counted with repetition, coincide with it).
     multiplicity: int
@@ -48,10 +70,13 @@ class Eigenvalue:
     frequencies: tuple[int, ...] = ()
     #: The closed forms it comes from, one per unit of multiplicity; empty if not known.
     labels: tuple[ClosedFormLabel, ...] = ()
-    #: An exact expression (closed-form roots), or ``None`` when not computed (or a root of a factor of degree > 2).
-    exact: sp.Expr | None = None
-    #: The factor (a polynomial in ``lambda``) it is a root of, at its first frequency, or ``None``.
-    factor: sp.Expr | None = None
+    #: An exact expression (closed-form roots; a ``CRootOf`` for a root of a rational factor of degree > 2), or its
+    #: text where it is built as text (the structural route of a sharp vertex, a spectrum's printed form), or ``None``
+    #: when not computed (typed ``Any``: sympy has no type information, and the readers know which route they read).
+    exact: Any = None
+    #: The factor it is a root of: a polynomial in ``lambda`` (at its first frequency), or the monic irreducible
+    #: rational factor (``flint.fmpq_poly``) of an exact route; ``None`` if not known.
+    factor: Any = None
     #: Sizes of its Jordan blocks when known (all 1: not defective), else ``None``.
     jordan: tuple[int, ...] | None = None
     #: The roots in its cluster, ``(frequency k, factor index, root index)``, one per unit of multiplicity
@@ -59,6 +84,27 @@ class Eigenvalue:
     members: tuple[tuple[int, int, int], ...] = ()
     #: A ball holding every root of its cluster (``value`` holds the first), or ``None``.
     hull: object = None
+    #: Its index among the roots of ``factor`` in sympy's order (real ascending, then complex), or ``None``.
+    index: int | None = None
+    #: The part(s) of a block-triangular matrix it comes from (``"crease"``, ``"crease, sector 1"``, ``"whole"``), or ``""``.
+    part: str = ""
+    #: The blocks of a mirror decomposition that have it: :class:`MirrorBlock` items, or their names as text in a
+    #: printed spectrum (:class:`~symdecomp.analysis.sharp_spectrum.SharpSpectrum`); empty if not known.
+    blocks: tuple[object, ...] = ()
+    #: Equal keys, equal values (and conversely) among the values of one exact computation, or ``None``.
+    key: tuple[object, ...] | None = None
+
+    @property
+    def ball(self) -> object:
+        """The value, where it is a certified ball (the exact routes' values are)."""
+        return self.value
+
+    @property
+    def is_real(self) -> bool:
+        """Whether the value is real, decided on its exact form (a closed form or a ``CRootOf``)."""
+        if not isinstance(self.exact, sp.Expr):
+            raise NotApplicableError(f"eigenvalue {self.text or self.exact}: no exact form to decide whether it is real")
+        return bool(self.exact.is_real)
 
     def as_json(self, *, exact: bool = False) -> dict[str, object]:
         """Value, multiplicity and frequencies; with ``exact``, the exact form and the Jordan blocks too."""

@@ -7,7 +7,7 @@ scheme (:func:`inspect_mesh`, :func:`inspect_vertex`):
   solved exactly; the paper's Eq. 43 matrix on quads) applied to the exact coordinates of the file. For
   Catmull-Clark it is rational, ``(n O + 4 sum a_i + sum b_i)/(n (n + 5))``-style; for Loop it has the
   square roots of ``cos(2 pi/n)``. Also as doubles.
-* **tangents and normal**: the two tangent masks (:func:`~symdecomp.analysis.ring_masks.ring_masks`,
+* **tangents and normal**: the two tangent masks (:func:`~symdecomp.analysis.masks.ring_masks`,
   certified balls printed to 20 digits, then doubles; scaling as there: weight ``cos(2 pi i/n)``,
   ``sin(2 pi i/n)`` on ``a_i``) applied to the 1-ring, and the unit normal ``t_1 x t_2/|t_1 x t_2|``,
   which points to the side the faces are counter-clockwise from.
@@ -50,8 +50,8 @@ import sympy as sp
 
 from symdecomp.algebra.polygons import coplanar_pairs, decompose
 from symdecomp.analysis.display import NotebookDisplay
-from symdecomp.analysis.ring_blocks import ring_blocks
-from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.frequency import ring_blocks
+from symdecomp.analysis.masks import ring_masks
 from symdecomp.errors import InternalError, InvalidMeshError, NotApplicableError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme

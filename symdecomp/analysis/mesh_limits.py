@@ -6,7 +6,7 @@ mesh of a million faces has a few dozen kinds. :func:`kind_masks` computes a kin
 * ``smooth`` valence ``n``: the position mask, the exact left eigenvector of the frequency-0 block for 1 (as
   :func:`~symdecomp.analysis.inspection.position_weights` solves it, evaluated to 30 digits; its closed form on
   request, :func:`exact_position`) and the two tangent masks of frequency 1
-  (:func:`~symdecomp.analysis.ring_masks.ring_masks`);
+  (:func:`~symdecomp.analysis.masks.ring_masks`);
 * boundary, crease, corner and dart vertices: the left eigenvectors of the vertex's exact 1-ring matrix
   (:func:`~symdecomp.analysis.sharp_masks.sharp_masks`). At a semi-sharp vertex (sharpness ``s``, finite)
   the rules change for ``L = ceil(s)`` levels before they settle, so the limit masks are the settled masks at
@@ -80,8 +80,8 @@ def _position_values(scheme: Scheme, n: int) -> list[complex]:
     """The class weights of the position mask ``(w_O, w_a[, w_b])`` to 30 digits: the exact left eigenvector of the
     frequency-0 block for 1 (as :func:`~symdecomp.analysis.inspection.position_weights` solves it), evaluated without
     bringing it to a closed form first (sympy's simplification is what costs there)."""
+    from symdecomp.analysis.frequency import ring_blocks
     from symdecomp.analysis.inspection import position_weights
-    from symdecomp.analysis.ring_blocks import ring_blocks
 
     blocks = ring_blocks(scheme, 1)
     E0 = sp.Matrix(blocks.frequency_zero_matrix(n)) - sp.eye(1 + len(blocks.classes))

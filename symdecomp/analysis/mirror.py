@@ -41,6 +41,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp import symbols
+from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, Stencil, check_scheme
 from symdecomp.schemes.sector import SharpVertex
@@ -48,7 +49,7 @@ from symdecomp.schemes.sharp import SharpRules
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_int, check_type
 
-__all__ = ["THETA", "THETA_K", "SineBlock", "SectorEigenvalue", "SectorDecomposition", "sharp_weights", "with_near_edge",
+__all__ = ["THETA", "THETA_K", "SineBlock", "SectorDecomposition", "sharp_weights", "with_near_edge",
            "mirror_stencils", "sine_block", "sine_identity", "crease_block", "sector_matrix", "sector_decomposition",
            "sector_spectrum"]
 
@@ -404,15 +405,9 @@ def sector_decomposition(scheme, vertex, rules=None) -> SectorDecomposition:
     return SectorDecomposition(P, crease, tuple(blocks), sp.Matrix.hstack(*columns), cosine)
 
 
-@dataclass(frozen=True)
-class SectorEigenvalue:
-    """One exact eigenvalue of a vertex with sharp edges and the block it comes from."""
-
-    value: sp.Expr
-    #: ``"crease"``, ``"cosine"`` (a dart's symmetric part), ``"sine"`` or ``"face"``.
-    block: str
-    sector: int | None = None
-    j: int | None = None
+def _block_eigenvalue(value: sp.Expr, block: str, sector: int | None = None, j: int | None = None) -> Eigenvalue:
+    """One exact eigenvalue of a block (counted once: a repeated one is listed again) and the block it comes from."""
+    return Eigenvalue(value, "", 1, exact=value, blocks=(MirrorBlock(block, sector, j),))
 
 
 def _matrix_eigenvalues(M: sp.Matrix) -> list[sp.Expr]:
@@ -434,11 +429,12 @@ def block_eigenvalues(M: sp.Matrix) -> tuple[sp.Expr, ...]:
     return tuple(sp.simplify((tr + sign * root) / 2) for sign in (1, -1))
 
 
-def sector_spectrum(scheme, vertex, rules=None) -> tuple[SectorEigenvalue, ...]:
-    """The exact eigenvalues of the 1-ring matrix of ``vertex``, each with its block (crease, cosine, sine j, face)."""
+def sector_spectrum(scheme, vertex, rules=None) -> tuple[Eigenvalue, ...]:
+    """The exact eigenvalues of the 1-ring matrix of ``vertex``, one item per unit of multiplicity, each with its block
+    (crease, cosine, sine j, face) as its one :class:`~symdecomp.analysis.eigenvalue.MirrorBlock`."""
     d = sector_decomposition(scheme, vertex, rules)
-    out = [SectorEigenvalue(v, "crease") for v in _matrix_eigenvalues(d.crease)] if d.crease is not None else []
-    out += [SectorEigenvalue(v, "cosine") for v in _matrix_eigenvalues(d.cosine)] if d.cosine is not None else []
+    out = [_block_eigenvalue(v, "crease") for v in _matrix_eigenvalues(d.crease)] if d.crease is not None else []
+    out += [_block_eigenvalue(v, "cosine") for v in _matrix_eigenvalues(d.cosine)] if d.cosine is not None else []
     for blk in d.blocks:
-        out += [SectorEigenvalue(v, blk.kind, blk.sector, blk.j) for v in block_eigenvalues(blk.matrix)]
+        out += [_block_eigenvalue(v, blk.kind, blk.sector, blk.j) for v in block_eigenvalues(blk.matrix)]
     return tuple(out)

@@ -25,7 +25,8 @@ from dataclasses import dataclass
 
 import flint
 
-from symdecomp.analysis.sharp_structural import BlockValue, _checked_polynomials, _eval_arb, _poly_terms, block_values, layout
+from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.sharp_structural import _checked_polynomials, _eval_arb, _poly_terms, block_values, layout
 from symdecomp.schemes.scheme import check_scheme
 
 __all__ = ["LeadingValues", "leading_values", "HEAD", "MAX_PIECES"]
@@ -41,14 +42,14 @@ class LeadingValues:
     """The largest eigenvalues of a sharp vertex's one-step matrix and a bound of the others."""
 
     #: The distinct eigenvalues of the crease block, the last modes and the sine blocks ``j <= head``, largest first.
-    values: tuple[BlockValue, ...]
+    values: tuple[Eigenvalue, ...]
     #: An upper bound (``flint.arb``, exact) of the modulus of every other eigenvalue; ``None`` when there is none.
     tail: object
     #: The sine blocks read exactly are ``j = 1..head``.
     head: int
 
 
-def _target(values: list[BlockValue]):
+def _target(values: list[Eigenvalue]):
     """The lower bound of ``|lambda_2|``: the third modulus counted with multiplicity (after ``1``), else 0."""
     moduli = [abs(v.ball).lower() for v in values for _ in range(v.multiplicity)]
     return flint.arb(moduli[2]) if len(moduli) > 2 else flint.arb(0)

@@ -2,7 +2,7 @@
 
 The one-step matrix ``S`` of the vertex's 1-ring (:func:`~symdecomp.schemes.sector.exact_sharp_matrix`) is block
 lower-triangular: the crease block ``C`` (the vertex and its neighbours on sharp edges), then one block ``Y_s`` per
-sector (:mod:`symdecomp.analysis.sharp_eigen`). So a left eigenvector of an eigenvalue of ``C`` that no ``Y_s``
+sector (:mod:`symdecomp.analysis.triangular_eigen`). So a left eigenvector of an eigenvalue of ``C`` that no ``Y_s``
 has vanishes off the crease points, and a left eigenvector ``(u, w)`` of an eigenvalue ``mu`` of ``Y_s`` has
 ``w Y_s = mu w`` (a sine polyline of the mirror decomposition) and ``u (mu I - C) = w X``: the 3 x 3 solve on the
 crease points. Every mask here is computed exactly as a left eigenvector of ``S`` (or of ``C``, or of the piece
@@ -39,8 +39,9 @@ from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cos_field import rational_left_eigenspace
 from symdecomp.algebra.number_field import FieldElement, element_ball, left_eigenspace, reduced_basis, to_sympy_vector
 from symdecomp.algebra.numbers import to_sympy
-from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.analysis.sharp_eigen import SharpEigenvalue, ball_at, merge, separated, submatrix
+from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.spectrum import acb_text
+from symdecomp.analysis.triangular_eigen import ball_at, merge, separated, submatrix
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import INPUT_LIMITS
@@ -56,7 +57,7 @@ class SharpMask:
 
     #: ``"position"``, ``"boundary curve tangent"``, ``"cross tangent"``, ...
     name: str
-    eigenvalue: SharpEigenvalue
+    eigenvalue: Eigenvalue
     #: One weight per 1-ring point (in the vertex order), each a polynomial in the eigenvalue, or, for rules with
     #: ``cos(theta_k)`` weights (the eigenvalue rational), a polynomial in :attr:`generator`.
     weights: tuple[FieldElement, ...]
@@ -101,14 +102,14 @@ class SharpMasks:
     position: SharpMask
     tangents: tuple[SharpMask, ...]
     #: The eigenvalue of largest modulus after 1 over the whole vertex (the subdominant one).
-    subdominant: SharpEigenvalue
+    subdominant: Eigenvalue
     #: Whether the tangents' eigenvalues are the two subdominant ones of each piece (certified).
     tangent_plane: bool
     #: Why they are, or are not.
     reason: str
 
 
-def _eigenvector(S: flint.fmpq_mat, rows: tuple[int, ...], value: SharpEigenvalue, order_first: tuple[int, ...]) -> list:
+def _eigenvector(S: flint.fmpq_mat, rows: tuple[int, ...], value: Eigenvalue, order_first: tuple[int, ...]) -> list:
     """Left eigenvectors of ``S[rows]`` at ``value`` extended by zeros to all of ``S``, pivots first in ``order_first``."""
     local = {r: i for i, r in enumerate(rows)}
     order = [local[r] for r in order_first if r in local] + [i for r, i in local.items() if r not in order_first]
@@ -137,7 +138,7 @@ def _eigenvector(S: flint.fmpq_mat, rows: tuple[int, ...], value: SharpEigenvalu
 MAX_MASK_SYSTEM = INPUT_LIMITS["masks --boundary, ... (sharp_masks): unknowns of a mask's system"][0]
 
 
-def _check_system(points: int, value: SharpEigenvalue) -> None:
+def _check_system(points: int, value: Eigenvalue) -> None:
     size = points * value.factor.degree()
     if size > MAX_MASK_SYSTEM:
         raise NotApplicableError(f"the mask at the eigenvalue {acb_text(value.ball, 8)} (degree {value.factor.degree()} over Q) "
@@ -145,11 +146,11 @@ def _check_system(points: int, value: SharpEigenvalue) -> None:
                                  f"unknowns, more than the {MAX_MASK_SYSTEM} solved exactly here")
 
 
-def _expanded(values) -> list[SharpEigenvalue]:
+def _expanded(values) -> list[Eigenvalue]:
     return [v for v in values for _ in range(v.multiplicity)]
 
 
-def _top_two(values: list[SharpEigenvalue]) -> tuple[list[SharpEigenvalue], str]:
+def _top_two(values: list[Eigenvalue]) -> tuple[list[Eigenvalue], str]:
     """The two eigenvalues of largest modulus after a simple 1, and why they are (not) certified the two largest."""
     rest = _expanded([v for v in merge(values) if v.factor != _ONE])
     if len(rest) < 2:
@@ -175,11 +176,11 @@ def _position(S, values) -> SharpMask:
     return SharpMask("position", values[0], tuple(x * scale for x in w))
 
 
-def _same(top: list[SharpEigenvalue], wanted: list[SharpEigenvalue]) -> bool:
+def _same(top: list[Eigenvalue], wanted: list[Eigenvalue]) -> bool:
     return sorted(v.key for v in top) == sorted(v.key for v in wanted)
 
 
-def _verdict(values, wanted: list[SharpEigenvalue], where: str) -> str:
+def _verdict(values, wanted: list[Eigenvalue], where: str) -> str:
     """``""`` when ``wanted`` are certified the two subdominant eigenvalues among ``values``, else why not."""
     top, why = _top_two(values)
     if not _same(top, wanted):
@@ -256,7 +257,7 @@ def sharp_masks(scheme: Scheme, vertex, *, level: int = 0) -> SharpMasks:
     """The limit position and tangent masks of ``vertex`` (a :class:`~symdecomp.schemes.sector.SharpVertex`) at
     refinement ``level``, exact (module docstring). Raises :class:`~symdecomp.errors.NotApplicableError` when 1 is
     not a simple eigenvalue, or a mask is out of reach (module docstring)."""
-    from symdecomp.analysis.sharp_field import sharp_values
+    from symdecomp.analysis.triangular_eigen import sharp_values
 
     scheme = check_scheme(scheme)
     S, parts, values = sharp_values(scheme, vertex, level=level)

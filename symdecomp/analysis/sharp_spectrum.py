@@ -2,8 +2,8 @@
 
 The eigenvalues are those of the one-step matrix ``S`` of the vertex's 1-ring built by exact refinement
 (:func:`~symdecomp.schemes.sector.exact_sharp_matrix`, or over ``Q(cos(pi/k))`` for rules with ``cos(theta_k)``
-weights: :mod:`symdecomp.analysis.sharp_field`, :attr:`SharpSpectrum.field`), found part by part
-(:mod:`symdecomp.analysis.sharp_eigen`: the crease block and each sector), each a root of an irreducible
+weights: :mod:`symdecomp.analysis.triangular_eigen`, :attr:`SharpSpectrum.field`), found part by part
+(:mod:`symdecomp.analysis.triangular_eigen`: the crease block and each sector), each a root of an irreducible
 rational factor, with its exact multiplicity. Each is then named by the block of the mirror decomposition
 (:func:`~symdecomp.analysis.mirror.sector_spectrum`) that has it: the crease block, the sine block ``j`` of a
 sector of ``k`` faces (``theta = pi j/k``), its last mode (``j = k`` on quads: ``b_i = (-1)^i``), or at a dart
@@ -17,45 +17,23 @@ differs from the level before, until the sharpness has decayed to 0.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 import flint
 import sympy as sp
 
-from symdecomp.analysis.ring_spectrum import acb_text
-from symdecomp.analysis.sharp_eigen import SharpEigenvalue, merge
+from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
+from symdecomp.analysis.spectrum import acb_text
+from symdecomp.analysis.triangular_eigen import merge
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits
 
-__all__ = ["SharpSpectrumEntry", "SharpSpectrum", "sharp_spectrum", "sharp_levels", "MAX_EXACT_TEXT", "STRUCTURAL_FROM"]
+__all__ = ["SharpSpectrum", "sharp_spectrum", "sharp_levels", "MAX_EXACT_TEXT", "STRUCTURAL_FROM"]
 
 #: Longest closed form printed for a block's eigenvalue; longer ones are shown as the root of their factor.
 MAX_EXACT_TEXT = 90
-
-
-@dataclass(frozen=True)
-class SharpSpectrumEntry:
-    """One distinct eigenvalue."""
-
-    #: The exact eigenvalue (its factor and root, a certified ball); on the structural route a
-    #: :class:`~symdecomp.analysis.sharp_structural.BlockValue` (an exact expression and a certified ball).
-    eigenvalue: SharpEigenvalue
-    #: Decimal text.
-    text: str
-    #: The blocks of the mirror decomposition that have it (``"crease"``, ``"sine j=1 (theta = pi/5)"``, ...), or
-    #: the parts of the matrix (``"crease"``, ``"sector 1"``, ``"whole"``) when there is no decomposition.
-    blocks: tuple[str, ...]
-    #: An exact expression: a closed form, or ``"root of <irreducible polynomial>"``.
-    exact: str
-
-    @property
-    def multiplicity(self) -> int:
-        return self.eigenvalue.multiplicity
-
-    def as_json(self) -> dict:
-        return {"value": self.text, "multiplicity": self.multiplicity, "blocks": list(self.blocks), "exact": self.exact}
 
 
 @dataclass(frozen=True)
@@ -71,7 +49,11 @@ class SharpSpectrum:
     size: int
     #: Whether the names come from the mirror decomposition (else from the parts of the matrix).
     decomposed: bool
-    entries: tuple[SharpSpectrumEntry, ...]
+    #: The distinct eigenvalues (a certified ball each, its decimal text, its multiplicity), each with its ``blocks`` as
+    #: text: the blocks of the mirror decomposition that have it (``"crease"``, ``"sine j=1 (theta = pi/5)"``, ...), or
+    #: the parts of the matrix (``"crease"``, ``"sector 1"``, ``"whole"``) when there is no decomposition; and its
+    #: ``exact`` form as text: a closed form, or ``"root i of <irreducible polynomial>"``.
+    entries: tuple[Eigenvalue, ...]
     #: The field of the matrix's entries: ``"Q"``, or ``"Q(cos(pi/k))"`` for rules with ``cos(theta_k)`` weights.
     field: str = "Q"
     #: ``"dense"`` (the matrix's characteristic polynomial) or ``"structural"`` (the mirror decomposition's blocks).
@@ -80,10 +62,14 @@ class SharpSpectrum:
     def as_json(self) -> dict:
         s = self.sharpness
         return {"level": self.level, "sharpness": "inf" if s == math.inf else str(s), "size": self.size, "field": self.field,
-                "decomposed": self.decomposed, "route": self.route, "eigenvalues": [e.as_json() for e in self.entries]}
+                "decomposed": self.decomposed, "route": self.route, "eigenvalues": [_entry_json(e) for e in self.entries]}
 
 
-def _block_name(e, vertex) -> str:
+def _entry_json(e: Eigenvalue) -> dict:
+    return {"value": e.text, "multiplicity": e.multiplicity, "blocks": list(e.blocks), "exact": e.exact}
+
+
+def _block_name(e: MirrorBlock, vertex) -> str:
     if e.block in ("crease", "cosine"):
         return "crease" if e.block == "crease" else "cosine (symmetric part)"
     k = vertex.sectors[e.sector]
@@ -100,7 +86,7 @@ def pi_multiple(q: Fraction) -> str:
     return head if q.denominator == 1 else f"{head}/{q.denominator}"
 
 
-def _exact_text(v: SharpEigenvalue, candidates: list) -> str:
+def _exact_text(v: Eigenvalue, candidates: list) -> str:
     if v.factor.degree() <= 2:
         return sp.sstr(v.exact)
     short = [c for c in candidates if len(sp.sstr(c)) <= MAX_EXACT_TEXT and not c.has(sp.I)]
@@ -111,7 +97,7 @@ def _exact_text(v: SharpEigenvalue, candidates: list) -> str:
     return f"root {v.index} of {sp.sstr(poly)}"
 
 
-def _names(scheme, vertex, values: list[SharpEigenvalue]) -> tuple[dict, dict] | None:
+def _names(scheme, vertex, values: list[Eigenvalue]) -> tuple[dict, dict] | None:
     """``({key: [block names]}, {key: [closed forms]})`` from the mirror decomposition, or ``None`` where it does not apply
     or where its eigenvalues, matched by value, do not have the matrix's multiplicities."""
     from symdecomp.analysis.mirror import sector_spectrum
@@ -128,7 +114,7 @@ def _names(scheme, vertex, values: list[SharpEigenvalue]) -> tuple[dict, dict] |
         best = min(values, key=lambda v: abs(complex(float(v.ball.real.mid()), float(v.ball.imag.mid())) - z))
         if abs(complex(float(best.ball.real.mid()), float(best.ball.imag.mid())) - z) > 1e-12 * max(1.0, abs(z)):
             return None  # a block eigenvalue that is no eigenvalue of the matrix
-        name = _block_name(e, vertex)
+        name = _block_name(e.blocks[0], vertex)
         if name not in names[best.key]:
             names[best.key].append(name)
         forms[best.key].append(e.value)
@@ -150,7 +136,7 @@ def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20, 
     (the mirror decomposition's blocks, O(k): :mod:`symdecomp.analysis.sharp_structural`; refused where it does not
     apply), or ``"auto"``: structural from :data:`STRUCTURAL_FROM` faces on where it applies, else dense.
     """
-    from symdecomp.analysis.sharp_field import sharp_values
+    from symdecomp.analysis.triangular_eigen import sharp_values
 
     scheme, digits = check_scheme(scheme), check_digits(digits)
     if route not in _ROUTES:
@@ -170,15 +156,15 @@ def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20, 
         for v in values:
             blocks = tuple(named[0][v.key]) if named else tuple(v.part.split(", "))
             text = acb_text(v.ball, digits)
-            entries.append(SharpSpectrumEntry(v, text, blocks, _exact_text(v, named[1][v.key] if named else [])))
+            entries.append(replace(v, text=text, blocks=blocks, exact=_exact_text(v, named[1][v.key] if named else [])))
     return SharpSpectrum(scheme.name, vertex, level, here.sharpness, S.nrows(), named is not None, tuple(entries),
                          field_name(S))
 
 
 def _structural_spectrum(scheme: Scheme, vertex, level: int, digits: int) -> SharpSpectrum:
     """:func:`sharp_spectrum` from the blocks of the mirror decomposition (no matrix of the vertex)."""
-    from symdecomp.analysis.sharp_field import near_weight
     from symdecomp.analysis.sharp_structural import structural_values
+    from symdecomp.analysis.triangular_eigen import near_weight
 
     here = vertex.at_level(level)
     values, size = structural_values(scheme, here, prec=max(256, 4 * digits + 64))
@@ -189,7 +175,7 @@ def _structural_spectrum(scheme: Scheme, vertex, level: int, digits: int) -> Sha
             for e in v.blocks:
                 if _block_name(e, here) not in names:
                     names.append(_block_name(e, here))
-            entries.append(SharpSpectrumEntry(v, acb_text(v.ball, digits), tuple(names), v.exact))
+            entries.append(replace(v, text=acb_text(v.ball, digits), blocks=tuple(names)))
     irrational = sorted(k for k in set(here.sectors) if near_weight(scheme, here, k) is not None)
     field = f"Q({', '.join(f'cos(pi/{k})' for k in irrational)})" if irrational else "Q"
     return SharpSpectrum(scheme.name, vertex, level, here.sharpness, size, True, tuple(entries), field, "structural")
@@ -222,7 +208,7 @@ def _cos_index(S) -> int | None:
 def sharp_levels(scheme: Scheme, vertex, *, digits: int = 20) -> list[SharpSpectrum]:
     """The spectra at level 0 and at each later level whose matrix differs from the one before, until the
     sharpness has decayed to 0 (one spectrum for infinitely sharp edges)."""
-    from symdecomp.analysis.sharp_field import sharp_matrix
+    from symdecomp.analysis.triangular_eigen import sharp_matrix
     from symdecomp.schemes.sector import MAX_LEVEL
 
     out = [sharp_spectrum(scheme, vertex, digits=digits)]

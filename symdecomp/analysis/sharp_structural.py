@@ -27,7 +27,7 @@ edges, corners given an angle, and rules that read ``theta_k`` other than throug
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 import flint
@@ -35,34 +35,18 @@ import sympy as sp
 
 from symdecomp import symbols
 from symdecomp.algebra.number_field import FieldElement
-from symdecomp.analysis.mirror import THETA_K, SectorEigenvalue, crease_block, mirror_stencils, sine_block, sine_identity, vertex_layout
+from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
+from symdecomp.analysis.mirror import THETA_K, crease_block, mirror_stencils, sine_block, sine_identity, vertex_layout
 from symdecomp.analysis.mirror_threshold import CK, C, in_cos
-from symdecomp.analysis.sharp_eigen import MatrixPart, ball_at, part_eigenvalues
+from symdecomp.analysis.triangular_eigen import MatrixPart, ball_at, part_eigenvalues
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 
-__all__ = ["BlockValue", "structural_values", "layout", "block_values", "MAX_PREC"]
+__all__ = ["structural_values", "layout", "block_values", "MAX_PREC"]
 
 #: Most bits Arb is given to separate two values that are not decided equal exactly.
 MAX_PREC = 4096
 _X = sp.Symbol("x")
-
-
-@dataclass(frozen=True)
-class BlockValue:
-    """One distinct eigenvalue of the structural route: the counterpart of
-    :class:`~symdecomp.analysis.sharp_eigen.SharpEigenvalue` without its minimal polynomial."""
-
-    #: An exact expression (text): a rational, a closed form, or a root of a block's quadratic with ``c`` named.
-    exact: str
-    #: A certified ball around it (``flint.acb``).
-    ball: object
-    #: Its algebraic multiplicity in the vertex's matrix.
-    multiplicity: int
-    #: Equal keys, equal values (one per distinct value).
-    key: tuple
-    #: The blocks that have it (:class:`~symdecomp.analysis.mirror.SectorEigenvalue` items, for names).
-    blocks: tuple
 
 
 @functools.lru_cache(maxsize=32)
@@ -221,16 +205,14 @@ def _sign(field: _Field, e: FieldElement) -> int:
 
 @dataclass
 class _Item:
-    """One eigenvalue of one block (before equal values are joined)."""
+    """One eigenvalue of one block while equal values are joined: the value (its key, multiplicity, exact text and
+    blocks, no ball yet) and what decides equality exactly."""
 
-    key: tuple
-    multiplicity: int
-    names: list
-    exact: str
+    value: Eigenvalue
     rational: Fraction | None = None
     block: _Block | None = None
     sign: int = 0
-    crease: object = None  # a SharpEigenvalue of the crease block
+    crease: Eigenvalue | None = None  # an eigenvalue of the crease block
 
     def ball(self, prec: int):
         if self.rational is not None:
@@ -239,6 +221,10 @@ class _Item:
         if self.crease is not None:
             return ball_at(self.crease, prec)
         return self.block.root(self.sign, prec)
+
+
+def _item(key: tuple, multiplicity: int, names: list, exact: str, rational: Fraction | None = None, **work) -> _Item:
+    return _Item(Eigenvalue(None, "", multiplicity, exact=exact, blocks=tuple(names), key=key), rational, **work)
 
 
 def _decide(a: _Item, b: _Item) -> bool | None:
@@ -300,7 +286,7 @@ def _crease_items(scheme, lay, prec: int) -> list[_Item]:
     for v in part_eigenvalues(S, [MatrixPart("crease", tuple(range(S.nrows())))], prec=prec):
         rational = -_fraction(v.factor[0]) if v.factor.degree() == 1 else None
         key = ("q", rational) if rational is not None else ("crease", v.key)
-        out.append(_Item(key, v.multiplicity, [SectorEigenvalue(v.exact, "crease")], sp.sstr(v.exact), rational, crease=v))
+        out.append(_item(key, v.multiplicity, [MirrorBlock("crease")], sp.sstr(v.exact), rational, crease=v))
     return out
 
 
@@ -321,10 +307,10 @@ def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict,
     t_text, d_text = sp.sstr(tr.xreplace(at)), sp.sstr(det.xreplace(at))
     out = []
     for j in range(1, k) if js is None else js:
-        blk, names = _Block(k, j, terms, quad, field), [SectorEigenvalue(None, "sine", s, j)]
+        blk, names = _Block(k, j, terms, quad, field), [MirrorBlock("sine", s, j)]
         base, c = ("sine", Fraction(j, k), k if uses_k else None), f", c = {_theta_text(j, k)}{where}"
         if not quad:
-            out.append(_Item(base + (0,), 1, names, f"{t_text}{c}", block=blk))
+            out.append(_item(base + (0,), 1, names, f"{t_text}{c}", block=blk))
             continue
         t, d = blk.arb(prec)
         with flint.ctx.workprec(prec):
@@ -332,30 +318,30 @@ def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict,
         if disc.contains(0):
             te, de = blk.exact
             if not (te * te - de * field.rational(Fraction(4))):
-                out.append(_Item(base + (0,), 2, names * 2, f"t/2 with t = {t_text}{c}", block=blk))
+                out.append(_item(base + (0,), 2, names * 2, f"t/2 with t = {t_text}{c}", block=blk))
                 continue
         for sign in (1, -1):
             text = f"(t {'+' if sign > 0 else '-'} sqrt(t**2 - 4*d))/2 with t = {t_text}, d = {d_text}{c}"
-            out.append(_Item(base + (sign,), 1, list(names), text, block=blk, sign=sign))
+            out.append(_item(base + (sign,), 1, list(names), text, block=blk, sign=sign))
     if quad:
         h0 = sp.sympify(mirror_stencils(scheme)[1]["b"].get(0, 0), strict=True)
         if not h0.is_Rational:
             raise NotApplicableError(f"scheme {scheme.name!r}: the face rule's own weight {h0} is not rational")
-        out.append(_Item(("q", Fraction(int(h0.p), int(h0.q))), 1, [SectorEigenvalue(h0, "face", s, k)], sp.sstr(h0),
+        out.append(_item(("q", Fraction(int(h0.p), int(h0.q))), 1, [MirrorBlock("face", s, k)], sp.sstr(h0),
                          Fraction(int(h0.p), int(h0.q))))
     return out
 
 
-def _join(items: list[_Item], prec: int) -> list[BlockValue]:
+def _join(items: list[_Item], prec: int) -> list[Eigenvalue]:
     """Equal values joined (equal keys, then overlapping balls decided exactly or separated by Arb)."""
     merged: dict = {}
     for it in items:
-        old = merged.get(it.key)
+        old = merged.get(it.value.key)
         if old is None:
-            merged[it.key] = it
+            merged[it.value.key] = it
         else:
-            old.multiplicity += it.multiplicity
-            old.names.extend(it.names)
+            old.value = replace(old.value, multiplicity=old.value.multiplicity + it.value.multiplicity,
+                                blocks=old.value.blocks + it.value.blocks)
     items = list(merged.values())
     parent = list(range(len(items)))
 
@@ -374,7 +360,7 @@ def _join(items: list[_Item], prec: int) -> list[BlockValue]:
             parent[root(i)] = root(j)
     for i, j in undecided:  # after the exact decisions: equal through a third value (a rational), or told apart by Arb
         if root(i) != root(j) and not _separated(items[i], items[j], prec):
-            raise NotApplicableError(f"two eigenvalues ({items[i].exact}; {items[j].exact}) were neither decided equal "
+            raise NotApplicableError(f"two eigenvalues ({items[i].value.exact}; {items[j].value.exact}) were neither decided equal "
                                      f"nor separated at {MAX_PREC} bits")
     groups: dict = {}
     for i, it in enumerate(items):
@@ -382,12 +368,12 @@ def _join(items: list[_Item], prec: int) -> list[BlockValue]:
     out = []
     for group in groups.values():
         rep = min(group, key=lambda it: (it.rational is None, it.crease is None))
-        names = tuple(n for it in group for n in it.names)
-        out.append(BlockValue(rep.exact, rep.ball(prec), sum(it.multiplicity for it in group), rep.key, names))
+        names = tuple(n for it in group for n in it.value.blocks)
+        out.append(replace(rep.value, value=rep.ball(prec), multiplicity=sum(it.value.multiplicity for it in group), blocks=names))
     return out
 
 
-def structural_values(scheme, vertex, *, prec: int = 256) -> tuple[list[BlockValue], int]:
+def structural_values(scheme, vertex, *, prec: int = 256) -> tuple[list[Eigenvalue], int]:
     """``(distinct eigenvalues, matrix size)`` of a boundary, crease or corner vertex from its blocks (module docstring).
 
     Refuses (:class:`~symdecomp.errors.NotApplicableError`) what this route does not reach: darts, semi-sharp edges,
@@ -412,7 +398,7 @@ def layout(scheme, vertex):
     return lay
 
 
-def block_values(scheme, lay, prec: int, head: int | None = None) -> list[BlockValue]:
+def block_values(scheme, lay, prec: int, head: int | None = None) -> list[Eigenvalue]:
     """The distinct eigenvalues of the crease block, the last modes and the sine blocks ``j <= head`` (default: every
     ``j``) of a :func:`layout`, joined exactly, largest modulus first."""
     polys = _checked_polynomials(scheme)

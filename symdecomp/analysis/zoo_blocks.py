@@ -7,7 +7,7 @@ centre, and the scheme commutes with it, so the matrix is block circulant around
 (``zeta = e^(2 pi i/n)``), and the centre enters only at ``k = 0``:
 ``B_0 = [[w_O, sum_s w_(s, c')], [c_c, B(1)]]``. The spectrum of the matrix is that of ``B_0``
 and of ``B_k``, ``k = 1..n-1``. :meth:`ZooBlocks.frequency_matrix` gives ``B(omega)`` with ``omega``
-a symbol, the offsets ``d`` taken in ``(-n/2, n/2]``, as :mod:`symdecomp.analysis.ring_blocks` does.
+a symbol, the offsets ``d`` taken in ``(-n/2, n/2]``, as :func:`symdecomp.analysis.frequency.ring_blocks` does.
 
 >>> import sympy as sp
 >>> from symdecomp.analysis.zoo_matrix import zoo_matrix

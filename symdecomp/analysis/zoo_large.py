@@ -3,7 +3,7 @@
 The structural form (:mod:`symdecomp.analysis.zoo_structure`) gives the block of frequency ``k`` as a
 matrix in ``omega``, ``n`` and the families' symbols ``sigma_t``. Its characteristic polynomial is factored
 *once*, over those quantities as independent variables (the cosines and radicals of ``n`` in the centre's
-weights each a variable too), as :mod:`symdecomp.analysis.ring_spectrum` factors a 1-ring scheme's in
+weights each a variable too), as :func:`symdecomp.analysis.spectrum.ring_spectrum` factors a 1-ring scheme's in
 ``omega``: an identity in the variables holds at every value of them. At a valence ``n`` and a frequency
 ``k`` each factor's roots are then closed forms (degree ``<= 2``) evaluated in Arb, or isolated by Arb
 (``acb_poly.roots``); a factor with a repeated root at one frequency cannot be isolated there, and the
@@ -28,7 +28,8 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
-from symdecomp.analysis.ring_spectrum import COSK, Factor, _factors, _Roots
+from symdecomp.analysis.charpoly import COSK, Factor, irreducible_factors
+from symdecomp.analysis.spectrum import FactorRoots
 from symdecomp.analysis.zoo_structure import ZooStructure, zoo_structure
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.stencils import N, StencilScheme
@@ -51,10 +52,10 @@ class StructuralFactors:
     other: tuple[Factor, ...]
 
     @functools.cached_property
-    def _evaluators(self) -> tuple[_Roots, _Roots, list[Any]]:
+    def _evaluators(self) -> tuple[FactorRoots, FactorRoots, list[Any]]:
         variables = (N, *self.structure.sigma, *self.atoms)
         atoms = [compile_expression(e, (N,), "arb") for e in self.atoms.values()]
-        return _Roots(self.zero, variables), _Roots(self.other, (OMEGA, COSK, *variables)), atoms
+        return FactorRoots(self.zero, variables), FactorRoots(self.other, (OMEGA, COSK, *variables)), atoms
 
 
 def _atoms(exprs: list[sp.Expr]) -> dict[sp.Symbol, sp.Expr]:
@@ -88,8 +89,8 @@ def _structural_factors(st: ZooStructure) -> StructuralFactors:
     back = {a: g for g, a in atoms.items()}
     Bg, B0g = (X.applyfunc(lambda e: sp.expand(sp.sympify(e, strict=True).xreplace(back))) for X in (B, B0))
     variables = (N, *st.sigma, *atoms)
-    other = _factors((LAM * sp.eye(Bg.shape[0]) - Bg).det(method="berkowitz"), (LAM, OMEGA, *variables))
-    zero = _factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM, *variables))
+    other = irreducible_factors((LAM * sp.eye(Bg.shape[0]) - Bg).det(method="berkowitz"), (LAM, OMEGA, *variables))
+    zero = irreducible_factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM, *variables))
     return StructuralFactors(st, atoms, zero, other)
 
 

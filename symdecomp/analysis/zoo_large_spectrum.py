@@ -22,7 +22,7 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import RingSpectrum, _exact_root, _hull, acb_text
+from symdecomp.analysis.spectrum import RingSpectrum, acb_text, ball_hull, exact_root
 from symdecomp.analysis.zoo_blocks import signed_offset
 from symdecomp.analysis.zoo_large import StructuralFactors, frequency_balls, proved_distinct_groups, structural_factors
 from symdecomp.analysis.zoo_structure import ZooStructure
@@ -71,7 +71,7 @@ def _exact(factors: StructuralFactors, n: int, k: int, i: int, j: int, ball: fli
     if f.roots is None:
         return None
     root = f.roots[j].xreplace(factors.atoms).xreplace(_symbols_at(factors.structure, n, k))
-    return _reduced(sp.expand(_exact_root(root, k, n, {})), ball)
+    return _reduced(sp.expand(exact_root(root, k, n, {})), ball)
 
 
 def structural_spectrum(scheme: StencilScheme, n: int, *, digits: int = 20, exact: bool = True, jordan: bool = True) -> RingSpectrum:
@@ -90,7 +90,7 @@ def structural_spectrum(scheme: StencilScheme, n: int, *, digits: int = 20, exac
             entries.append(Eigenvalue(
                 value=ball, text=acb_text(ball, digits), multiplicity=len(g), frequencies=tuple(sorted({m[0] for m in members})),
                 exact=_exact(factors, n, k, i, j, ball) if exact or jordan else None, factor=f.poly.xreplace(factors.atoms),
-                members=members, hull=_hull([items[x][0] for x in g])))  # type: ignore[no-untyped-call]
+                members=members, hull=ball_hull([items[x][0] for x in g])))  # type: ignore[no-untyped-call]
     size = st.class_count * n + st.has_centre
     spectrum = RingSpectrum(scheme.name, scheme.lattice, n, st.depth, size, digits, tuple(entries))
     if not jordan:

@@ -1,7 +1,7 @@
 """Limit-position and tangent masks of a StencilScheme at valence ``n``, from its frequency blocks.
 
 The left eigenvectors of the full matrix come from those of the blocks (:mod:`symdecomp.analysis.zoo_blocks`),
-as :mod:`symdecomp.analysis.ring_masks` reads them for 1-ring schemes:
+as :func:`symdecomp.analysis.masks.ring_masks` reads them for 1-ring schemes:
 
 * position (eigenvalue 1, frequency 0): if ``z B_0 = z``, the centre gets ``z_O`` and every point of class
   ``c`` gets ``z_c / n``; scaled so that the weights sum to 1;
@@ -31,8 +31,8 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.null_vector import null_vector
-from symdecomp.analysis.ring_masks import _acb_matrix
-from symdecomp.analysis.ring_spectrum import acb_text
+from symdecomp.analysis.masks import acb_matrix
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
@@ -103,12 +103,12 @@ def zoo_masks(scheme: StencilScheme, n: int, depth: int | None = None, *, digits
     prec = max(128, 4 * digits + 64)
     with flint.ctx.workprec(prec):
         w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
-        B1 = _acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,))
+        B1 = acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,))
         found = _isolated_largest(B1) if n > READ_AT + 3 else None  # where zoo_spectrum leaves the explicit route too
     lam1 = found if found is not None else _largest_of_spectrum(blocks, digits, zm.depth, scheme.lattice)
     with flint.ctx.workprec(prec):
         B0 = sp.Matrix(blocks.frequency_zero_matrix())
-        A0 = _acb_matrix(B0, (), ()) - _identity(B0.shape[0])
+        A0 = acb_matrix(B0, (), ()) - _identity(B0.shape[0])
         y0 = _checked(null_vector(A0.transpose(), first=0), A0, n)
         A1 = B1 - lam1 * _identity(K)
         y1 = _checked(null_vector(A1.transpose(), first=0), A1, n)

@@ -1,7 +1,7 @@
 """The spectrum of a StencilScheme at valence ``n``, frequency by frequency, as a :class:`RingSpectrum`.
 
 The blocks (:mod:`symdecomp.analysis.zoo_blocks`) are factored as
-:mod:`symdecomp.analysis.ring_spectrum` factors a 1-ring scheme's: ``det(lambda I - B(omega))``
+:func:`symdecomp.analysis.spectrum.ring_spectrum` factors a 1-ring scheme's: ``det(lambda I - B(omega))``
 once, symbolically in ``omega``, and ``det(lambda I - B_0)``. The entries are exact numbers at
 the valence (rationals, or cosines of rational multiples of ``pi`` and the radicals sympy writes
 them with); each irrational atom is a symbol while factoring, so a factor is an identity for its
@@ -27,8 +27,9 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import cyclotomic_value
+from symdecomp.analysis.charpoly import COSK, Factor, irreducible_factors
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import COSK, Factor, RingSpectrum, _clusters, _exact_root, _factors, _hull, _Roots, acb_text
+from symdecomp.analysis.spectrum import FactorRoots, RingSpectrum, acb_text, ball_hull, exact_root, overlap_clusters
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_roots import squarefree_roots
@@ -85,25 +86,25 @@ def spectrum_of_blocks(blocks: ZooBlocks, *, digits: int = 20, exact: bool = Tru
         chebyshev, atoms = one
         Bg, B0g = (X.applyfunc(lambda e: sp.expand(e.xreplace(chebyshev))) for X in (Bg, B0g))
     gens = tuple(atoms)
-    other = _factors((LAM * sp.eye(K) - Bg).det(method="berkowitz"), (LAM, OMEGA)) if n > 1 else ()
-    zero = _factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM,))
+    other = irreducible_factors((LAM * sp.eye(K) - Bg).det(method="berkowitz"), (LAM, OMEGA)) if n > 1 else ()
+    zero = irreducible_factors((LAM * sp.eye(B0g.shape[0]) - B0g).det(method="berkowitz"), (LAM,))
     prec = max(128, 4 * digits + 64)
     with flint.ctx.workprec(prec):
         g_balls = [_arb_value(a) for a in atoms.values()]
-        items = [(b, 0, i, j) for b, i, j in _roots_at(_Roots(zero, gens), tuple(g_balls), {}, atoms, n, prec)]
-        roots = _Roots(other, (OMEGA, COSK, *gens))
+        items = [(b, 0, i, j) for b, i, j in _roots_at(FactorRoots(zero, gens), tuple(g_balls), {}, atoms, n, prec)]
+        roots = FactorRoots(other, (OMEGA, COSK, *gens))
         for k in range(1, n):
             w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
             at = {OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n))}
             items += [(b, k, i, j) for b, i, j in _roots_at(roots, (w, w.real, *g_balls), at, atoms, n, prec)]
-        groups = _clusters(items)  # type: ignore[no-untyped-call]
+        groups = overlap_clusters(items)  # type: ignore[no-untyped-call]
         groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
         entries = [_entry(items, g, zero, other, n, atoms, digits, exact) for g in groups]
     size = B0.shape[0] + K * (n - 1)
     return RingSpectrum(blocks.scheme, mesh, n, depth, size, digits, tuple(entries))
 
 
-def _roots_at(roots: _Roots, args: tuple[object, ...], at: dict[sp.Symbol, sp.Expr], atoms: dict[sp.Dummy, sp.Expr], n: int,
+def _roots_at(roots: FactorRoots, args: tuple[object, ...], at: dict[sp.Symbol, sp.Expr], atoms: dict[sp.Dummy, sp.Expr], n: int,
               prec: int) -> list[tuple[object, int, int]]:
     """``[(ball, factor index, root index)]`` at one frequency (``args`` its Arb values, ``at`` its exact ones), each
     root repeated by the factor's exponent: closed forms evaluated, other roots isolated by Arb to ``2^(-prec/2)``, and a
@@ -167,11 +168,11 @@ def _entry(items: list[tuple[object, int, int, int]], group: list[int], zero: tu
     f = (zero if k == 0 else other)[i]
     value = None
     if exact and f.roots is not None and j >= 0:
-        value = _reduced(sp.expand(_exact_root(f.roots[j], k, n, atoms)), b)
+        value = _reduced(sp.expand(exact_root(f.roots[j], k, n, atoms)), b)
     return Eigenvalue(
         value=b, text=acb_text(b, digits), multiplicity=len(group), frequencies=tuple(sorted({items[x][1] for x in group})),
         exact=value, factor=f.poly.xreplace(atoms), jordan=None, members=tuple(sorted(items[x][1:] for x in group)),
-        hull=_hull([items[x][0] for x in group]),  # type: ignore[no-untyped-call]
+        hull=ball_hull([items[x][0] for x in group]),  # type: ignore[no-untyped-call]
     )
 
 

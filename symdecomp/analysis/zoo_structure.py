@@ -14,7 +14,7 @@ row of class ``c`` at sector offset ``d`` is
   ``sigma_t`` the family's symbol, summed in closed form for every ``n`` (:mod:`symdecomp.analysis.zoo_symbols`).
 
 The form read at ``n0`` is checked, entry by entry and exactly, against the explicit matrices at ``n0 + 1``
-and ``n0 + 2`` (as :mod:`symdecomp.analysis.ring_blocks` checks the primal 1-ring schemes); the block of
+and ``n0 + 2`` (as :func:`symdecomp.analysis.frequency.ring_blocks` checks the primal 1-ring schemes); the block of
 frequency ``k`` at any ``n`` then costs ``O(1)`` (:meth:`ZooStructure.frequency_block`).
 
 >>> from symdecomp.schemes.stencil_files import load_zoo

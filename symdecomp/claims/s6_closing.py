@@ -9,7 +9,7 @@ The paragraph after the tuning discussion makes three statements, registered sep
   introducing null columns".
 
 The last two are checked on the K-ring matrices built by exact refinement of a mesh
-(:mod:`symdecomp.schemes.rings`, block form :mod:`symdecomp.analysis.ring_blocks`), for every
+(:mod:`symdecomp.schemes.rings`, block form :func:`symdecomp.analysis.frequency.ring_blocks`), for every
 valence through the banded circulant-block form: with the rings ordered from the centre out, the
 matrix is block lower-triangular (the rows of the inner rings do not read the outer ones), so its
 characteristic polynomial is that of the inner part times that of the outer block, and a left
@@ -22,7 +22,7 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.components import ZETA, root_of_unity_orders
-from symdecomp.analysis.ring_blocks import ring_blocks
+from symdecomp.analysis.frequency import ring_blocks
 from symdecomp.claims.applicability import NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim

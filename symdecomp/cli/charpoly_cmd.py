@@ -35,7 +35,7 @@ def register(sub) -> None:
 
 
 def _run_general(args, why: str = "") -> int:
-    from symdecomp.analysis.ring_charpoly import ring_charpoly
+    from symdecomp.analysis.charpoly import ring_charpoly
 
     if args.free_weights:
         raise InvalidInputError("--free-weights applies to the Catmull-Clark 1-ring only (not to triangle schemes or --rings > 1)")

@@ -111,7 +111,7 @@ def _run_sharp(args, plot) -> int:
             raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
     refuse_sharp_options(args, "--rings")
     vertices = [sharp_vertex(args, k) for k in args.sectors]  # every bad combination refused before the work
-    from symdecomp.analysis.sharp_field import sharp_matrix
+    from symdecomp.analysis.triangular_eigen import sharp_matrix
 
     for vertex in vertices:  # rules out of reach at some K: refused before the header
         exact_only(args, vertex, lambda: sharp_matrix(args.scheme, vertex))  # noqa: B023 - called at once

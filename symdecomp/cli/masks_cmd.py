@@ -98,7 +98,7 @@ def _finish(args, data, certified: bool, why: str) -> int:
 
 
 def _run_general(args, certified: bool, why: str) -> int:
-    from symdecomp.analysis.ring_masks import ring_masks
+    from symdecomp.analysis.masks import ring_masks
 
     data = ring_masks(args.scheme, args.n, args.rings, digits=args.digits)
     if args.json:

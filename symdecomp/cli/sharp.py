@@ -174,7 +174,7 @@ def _block_names(scheme, vertex) -> dict:
     """``{eigenvalue key: "block, block"}`` from the spectrum's names (mirror blocks, or parts of the matrix)."""
     from symdecomp.analysis.sharp_spectrum import sharp_spectrum
 
-    return {e.eigenvalue.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
+    return {e.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
 
 
 def _print_mask(mask, names, digits: int, blocks: dict) -> None:
@@ -186,7 +186,7 @@ def _print_mask(mask, names, digits: int, blocks: dict) -> None:
 
 
 def _value(mask, digits: int) -> str:
-    from symdecomp.analysis.ring_spectrum import acb_text
+    from symdecomp.analysis.spectrum import acb_text
 
     return acb_text(mask.eigenvalue.ball, digits)
 
@@ -196,8 +196,8 @@ def run_sharp_masks(args) -> int:
     tangents are not the tangent plane's."""
     import sys
 
-    from symdecomp.analysis.ring_spectrum import acb_text
     from symdecomp.analysis.sharp_masks import sharp_masks
+    from symdecomp.analysis.spectrum import acb_text
 
     refuse_sharp_options(args, "--rings")
     vertex = sharp_vertex(args, args.n)

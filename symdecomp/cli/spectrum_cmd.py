@@ -89,7 +89,7 @@ def _figure(spectrum, vertex: str | None = None):
 
 
 def _run_general(args, plot) -> int:
-    from symdecomp.analysis.ring_spectrum import ring_spectrum
+    from symdecomp.analysis.spectrum import ring_spectrum
 
     spectrum = ring_spectrum(args.scheme, args.n, args.rings, digits=args.digits, exact=args.exact or args.n <= EXACT_UP_TO)
     write_plot(plot, lambda: _figure(spectrum))

@@ -4,7 +4,7 @@ A report is an ordered list of sections (:data:`SECTIONS`), each built by one fu
 same library calls as the commands that print the same things: the claims (``claims --scheme``,
 :func:`~symdecomp.claims.check_claim`), the spectrum (``spectrum``:
 :func:`~symdecomp.analysis.spectrum.closed_form_spectrum` on the paper's quad 1-ring,
-:func:`~symdecomp.analysis.ring_spectrum.ring_spectrum` otherwise), the limit and tangent masks
+:func:`~symdecomp.analysis.spectrum.ring_spectrum` otherwise), the limit and tangent masks
 (``masks``), the C1 table (``c1``, :func:`~symdecomp.verify.c1.c1_test`) and the figures of
 :mod:`symdecomp.output.plotting` (the characteristic map; the eigen-polygons: the rows of the
 Fourier matrix, into which every ring decomposes, and, where the paper's closed forms apply, the
@@ -34,10 +34,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from symdecomp.analysis.masks import limit_masks, limit_masks_at
-from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.analysis.ring_spectrum import ring_spectrum
-from symdecomp.analysis.spectrum import closed_form_spectrum, recursion_eigenvalues
+from symdecomp.analysis.masks import limit_masks, limit_masks_at, ring_masks
+from symdecomp.analysis.spectrum import closed_form_spectrum, recursion_eigenvalues, ring_spectrum
 from symdecomp.analysis.tangent import complex_at, tangent_eigenvalues
 from symdecomp.claims import Status, Verbatim, all_claims, check_claim, scope_summary
 from symdecomp.claims.applicability import closed_form_obstacle

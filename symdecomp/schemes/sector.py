@@ -138,6 +138,11 @@ class SharpVertex:
         ends = (0, *accumulate(self.sectors))
         return tuple(sorted({e % self.faces for e in ends} if self.closed else set(ends)))
 
+    def crease_points(self) -> tuple[int, ...]:
+        """The rows of ``O`` and of its neighbours ``a_m`` on sharp edges in the 1-ring order ``O, a_0, ..``: the seeds of
+        the crease block (:func:`~symdecomp.analysis.triangular_eigen.matrix_parts`)."""
+        return (0,) + tuple(1 + m for m in self.sharp_rays())
+
     def one_ring_size(self) -> int:
         """Points of the 1-ring: ``O``, the edge neighbours and (quads) the face neighbours."""
         return 1 + sum(count for _, _, count in self._one_ring_classes())

@@ -13,7 +13,7 @@ its source:
   point or the tangent move against the control point, ripples in the surface): the limit-position
   mask is the left eigenvector of the frequency-0 block for eigenvalue 1, solved exactly in the
   cyclotomic field (:mod:`symdecomp.algebra.cyclotomic`); its sign is that of each class
-  (``O``, then the 1-ring classes). The tangent masks (:mod:`symdecomp.analysis.ring_masks`) weigh the
+  (``O``, then the 1-ring classes). The tangent masks (:func:`symdecomp.analysis.masks.ring_masks`) weigh the
   1-ring by ``cos`` of the direction of each point, so their sign changes by design; a weight *against*
   the direction of its point is the artifact: on quads the face points ``b_s`` (at angle
   ``(2s + 1) pi / n``) get ``Re(y_b omega^-s)`` with ``y`` the left eigenvector of ``M_1`` for

@@ -9,7 +9,7 @@ those of ray ``n`` (checked exactly: their columns are zero, their rows and thei
 
 1. *spectral*: 1 is a simple eigenvalue, the next two ``lambda_1 >= lambda_2`` are real, positive, with two
    eigenvectors, and strictly larger in modulus than every other eigenvalue. The exact 1-ring spectrum decides
-   (:func:`~symdecomp.analysis.sharp_field.sharp_values`: rational factors, exact multiplicities, Arb balls), and the
+   (:func:`~symdecomp.analysis.triangular_eigen.sharp_values`: rational factors, exact multiplicities, Arb balls), and the
    2-ring's other eigenvalues (:func:`~symdecomp.verify.c1_sharp_spectrum.sector_eigenvalues`) are certified below
    ``|lambda_2|``;
 2. *regular*: the characteristic map ``chi`` of the two subdominant eigenvectors (exact rational null space when the
@@ -86,15 +86,14 @@ class DartSpectrum:
     verdict: C1Verdict
     #: The facts, in words.
     reason: str
-    #: ``lambda_1, lambda_2`` (:class:`~symdecomp.analysis.sharp_eigen.SharpEigenvalue`; one value twice when double).
+    #: ``lambda_1, lambda_2`` (:class:`~symdecomp.analysis.eigenvalue.Eigenvalue`; one value twice when double).
     pair: tuple = ()
 
 
 def _exact_conditions(scheme, n: int) -> DartSpectrum:
     """Condition 1 on the exact 1-ring spectrum."""
-    from symdecomp.analysis.ring_spectrum import acb_text
-    from symdecomp.analysis.sharp_eigen import by_modulus, merge, separated
-    from symdecomp.analysis.sharp_field import sharp_values
+    from symdecomp.analysis.spectrum import acb_text
+    from symdecomp.analysis.triangular_eigen import by_modulus, merge, separated, sharp_values
 
     try:
         _, _, found = sharp_values(scheme, SharpVertex.dart(n, scheme.lattice))

@@ -61,7 +61,7 @@ def _parity(crease: sp.Matrix, value, block) -> str | None:
 
 
 def block_parts(crease: sp.Matrix, picks: list) -> list[str] | None:
-    """The mirror part of each subdominant eigenvector (module docstring), ``picks`` holding ``(ball, BlockValue, _)``.
+    """The mirror part of each subdominant eigenvector (module docstring), ``picks`` holding ``(ball, Eigenvalue, _)``.
 
     ``None`` where the blocks do not name one part per eigenvector (a value of several blocks of one part, a face mode).
     """

@@ -36,7 +36,7 @@ from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cos_field import affine_in
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.algebra.numbers import to_sympy
-from symdecomp.analysis.sharp_field import near_weight
+from symdecomp.analysis.triangular_eigen import near_weight
 from symdecomp.errors import InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.lattice import Lattice
 from symdecomp.schemes.sector import SharpVertex, sharp_matrix_rows

@@ -36,8 +36,8 @@ import random
 
 import numpy as np
 
-from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.masks import ring_masks
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.mesh import triangle_ring_mesh
 from symdecomp.schemes.rings import ring_subdivision_matrix

@@ -3,8 +3,8 @@
 The claim is that the spectrum of the full ``K``-ring matrix ``S`` (built by exact refinement,
 :func:`~symdecomp.schemes.rings.ring_subdivision_matrix`, no block structure) is, with
 multiplicities, the union of the spectra of ``E_0`` and of ``E(omega_n^k)``, ``k = 1..n-1``
-(:mod:`symdecomp.analysis.ring_blocks`), whose factored characteristic polynomials give the
-closed forms and isolated roots of :mod:`symdecomp.analysis.ring_spectrum`. It is the identity
+(:func:`symdecomp.analysis.frequency.ring_blocks`), whose factored characteristic polynomials give the
+closed forms and isolated roots of :func:`symdecomp.analysis.spectrum.ring_spectrum`. It is the identity
 
     chi_S(lambda) = det(lambda I - E_0) prod_{k=1}^{n-1} det(lambda I - E(omega^k)),
 
@@ -28,7 +28,7 @@ in ``Q(zeta_2n)`` is tested exactly for being a root of ``R`` (or of another roo
 The ``O(n)`` structural certificate (:func:`structural_certificate`) has no ``chi_S``; it
 certifies multiplicities from the frequency factors instead (:func:`cluster_multiplicities`).
 The product identity itself is computed in one place,
-:func:`~symdecomp.analysis.ring_charpoly.product_identity` (also behind ``charpoly``).
+:func:`~symdecomp.analysis.charpoly.product_identity` (also behind ``charpoly``).
 
 >>> from symdecomp.schemes.loop import loop
 >>> c = certify_ring(loop(), 7, 1)
@@ -45,9 +45,9 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_sympy
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_charpoly import product_identity
-from symdecomp.analysis.ring_spectrum import frequency_factors, ring_spectrum
+from symdecomp.analysis.charpoly import frequency_factors, product_identity
+from symdecomp.analysis.frequency import RingBlocks, ring_blocks
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
@@ -241,15 +241,15 @@ def _same_root_by_symmetry(roots, ff, n: int) -> bool:
 
 def _root_value(scheme: Scheme, ff, n: int, member, field):
     """The exact value of root ``j`` of factor ``i`` at frequency ``k`` in ``Q(zeta_2n)``, or ``None``."""
-    from symdecomp.analysis.ring_spectrum import _centre_values, _exact_root
+    from symdecomp.analysis.spectrum import centre_values, exact_root
 
     k, i, j = member
     f = (ff.zero if k == 0 else ff.other)[i]
     if f.roots is None:
         return None
-    exact_w, _ = _centre_values(scheme, n)
+    exact_w, _ = centre_values(scheme, n)
     try:
-        return cyclotomic_value(_exact_root(f.roots[j], k, n, exact_w), field=field)
+        return cyclotomic_value(exact_root(f.roots[j], k, n, exact_w), field=field)
     except ValueError:
         return None
 

@@ -2,7 +2,7 @@
 
 The full ``K``-ring matrix (built by exact refinement, no block structure) is rounded to
 doubles and its eigenvalues computed by LAPACK (``numpy.linalg.eigvals``); they are matched,
-with multiplicities, to the distinct values of :func:`~symdecomp.analysis.ring_spectrum.ring_spectrum`
+with multiplicities, to the distinct values of :func:`~symdecomp.analysis.spectrum.ring_spectrum`
 (each value takes its ``m`` nearest unused eigenvalues) and compared through their mean (a
 Jordan block splits into a cluster of radius about ``eps^(1/m)``, but its mean is accurate).
 Double precision limits the agreement to about 12 digits; ``--certify`` proves it exactly.
@@ -21,7 +21,7 @@ import mpmath
 import numpy as np
 
 from symdecomp.analysis.eigenvalue import ClosedFormLabel
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.validate import MAX_DOUBLE_DIGITS, check_int, check_valence

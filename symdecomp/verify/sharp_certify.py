@@ -18,7 +18,7 @@ roots of distinct irreducible factors are distinct (each root of a factor with e
 ``e``). The decimal values are certified Arb balls of those roots.
 
 Rules whose weights hold ``cos(theta_k)`` (Biermann-Levin-Zorin's) give ``S`` with entries in the real
-cyclotomic field ``K = Q(cos(pi/k))`` (:mod:`symdecomp.analysis.sharp_field`); the same identity is then proved in
+cyclotomic field ``K = Q(cos(pi/k))`` (:mod:`symdecomp.analysis.triangular_eigen`); the same identity is then proved in
 ``K[lambda]`` (:func:`certify_sharp_field`): ``chi_S`` by Hessenberg reduction over ``K``, the sectors' products
 as resultants in ``Q[lambda, cos(theta_k)]`` (:func:`~symdecomp.analysis.mirror_threshold.sine_part_in_cos`) at
 ``cos(theta_k) = cos(pi/k)`` in ``K``. The distinct eigenvalues and multiplicities are exact there too: roots of
@@ -37,7 +37,7 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.ring_spectrum import acb_text
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import check_digits
@@ -95,7 +95,7 @@ def certify_sharp(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCertifica
     """
     from symdecomp.analysis.mirror import sector_decomposition, vertex_layout
     from symdecomp.analysis.mirror_threshold import charpoly_check
-    from symdecomp.analysis.sharp_field import sharp_matrix
+    from symdecomp.analysis.triangular_eigen import sharp_matrix
     from symdecomp.schemes.sector import sharp_subdivision_matrix
 
     scheme, digits = check_scheme(scheme), check_digits(digits)
@@ -152,9 +152,8 @@ def certify_sharp_field(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCer
     """:func:`certify_sharp` for rules with ``cos(theta_k)`` weights: the identity proved in ``Q(cos(pi/k))[lambda]``."""
     from symdecomp.algebra.cos_field import FieldMatrix, field_charpoly, norm_charpoly
     from symdecomp.analysis.mirror import sector_decomposition, vertex_layout
-    from symdecomp.analysis.sharp_eigen import merge
-    from symdecomp.analysis.sharp_field import sharp_values
     from symdecomp.analysis.sharp_spectrum import field_name
+    from symdecomp.analysis.triangular_eigen import merge, sharp_values
 
     scheme, digits = check_scheme(scheme), check_digits(digits)
     S, _, values = sharp_values(scheme, vertex, prec=max(256, 4 * digits + 64))

@@ -19,7 +19,7 @@ eigenvalues (:mod:`symdecomp.analysis.closed_forms`) are the spectrum of the ful
    rational coefficients at ``n``. Then both sides are the same product of factors.
 3. *Otherwise* the multisets are compared exactly: the closed forms' characteristic polynomial
    (resultants, :func:`~symdecomp.verify.certify.closed_form_characteristic_value`) against the
-   product of the frequency factors (:func:`~symdecomp.analysis.ring_charpoly.frequency_product_values`)
+   product of the frequency factors (:func:`~symdecomp.analysis.charpoly.frequency_product_values`)
    at ``2n+1`` rational points. Equal: proved (the closed forms pair up across frequencies);
    different: refuted, exactly.
 
@@ -47,10 +47,10 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.analysis.charpoly import frequency_product_values
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_charpoly import frequency_product_values
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.frequency import RingBlocks, ring_blocks
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import NotApplicableError, SymdecompError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS
 from symdecomp.schemes.scheme import Scheme
@@ -221,7 +221,7 @@ def _refute_by_balls(scheme: Scheme, cf: ClosedForms, n: int, digits: int, max_d
     """A rigorous reason why the closed forms are not the spectrum, from the frequency factors' certified roots.
 
     The full matrix's spectrum is the frequency factors' (step 1), enclosed in the balls of
-    :func:`~symdecomp.analysis.ring_spectrum.ring_spectrum`: (a) a closed-form value outside
+    :func:`~symdecomp.analysis.spectrum.ring_spectrum`: (a) a closed-form value outside
     cluster's ball is no eigenvalue; (b) a cluster's ball apart from the others holds exactly as
     many eigenvalues as the cluster's multiplicity: holding more closed-form values than that, or
     overlapping fewer, refutes them. The precision doubles up to ``max_digits``.

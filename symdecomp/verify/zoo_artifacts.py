@@ -38,9 +38,9 @@ from sympy import QQ
 from sympy.polys.matrices import DomainMatrix
 
 from symdecomp.algebra.compile import compile_expression
+from symdecomp.analysis.charpoly import COSK
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import COSK
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_jordan import with_jordan
 from symdecomp.analysis.zoo_matrix import zoo_matrix

@@ -35,7 +35,7 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import RingSpectrum
+from symdecomp.analysis.spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks, structural_applies

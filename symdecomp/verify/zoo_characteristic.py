@@ -24,8 +24,8 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_masks import _acb_matrix
-from symdecomp.analysis.ring_spectrum import RingSpectrum
+from symdecomp.analysis.masks import acb_matrix
+from symdecomp.analysis.spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import ZooMatrix, zoo_matrix
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum
@@ -102,7 +102,7 @@ def subdominant_points(zm: ZooMatrix, spectral: SpectralResult) -> dict[int, fli
         zeta = [flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() for s in range(n)]
         block = zoo_blocks(zm).frequency_matrix()
         K = block.shape[0]
-        A = _acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
+        A = acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
         x = null_vector(A)
         return None if x is None else {v: zeta[s % n] * x[c] for v, (s, c) in nb.labels.items()}
 

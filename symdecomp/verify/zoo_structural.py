@@ -21,7 +21,8 @@ from __future__ import annotations
 import flint
 import sympy as sp
 
-from symdecomp.analysis.ring_spectrum import COSK, acb_text
+from symdecomp.analysis.charpoly import COSK
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import signed_offset
 from symdecomp.analysis.zoo_large import StructuralFactors, frequency_balls, proved_distinct_groups, structural_factors
 from symdecomp.errors import PrecisionError

@@ -12,10 +12,10 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.design import design_ring, limit_frame, ring_amounts
+from symdecomp.analysis.frequency import ring_blocks
 from symdecomp.analysis.inspection import inspect_vertex, position_weights
+from symdecomp.analysis.masks import ring_masks
 from symdecomp.analysis.redesign import redesign_vertex
-from symdecomp.analysis.ring_blocks import ring_blocks
-from symdecomp.analysis.ring_masks import ring_masks
 from symdecomp.errors import InvalidInputError, InvalidMeshError, NotApplicableError
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.meshformats import decode_mesh, encode_mesh, read_mesh

@@ -3,8 +3,7 @@
 import pytest
 
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.ring_spectrum import ring_spectrum
-from symdecomp.analysis.spectrum import closed_form_spectrum
+from symdecomp.analysis.spectrum import closed_form_spectrum, ring_spectrum
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.verify.numeric import numeric_check
 

@@ -75,11 +75,11 @@ def test_the_crease_block_and_the_boundary_eigenvalue(scheme):
 def test_the_spectrum_of_a_boundary_vertex_by_block():
     spec = sector_spectrum(CC, 2)  # the regular boundary: the bicubic spline's 1/2 twice, 1/4, 1/8
     assert sorted((e.value for e in spec), key=float) == [Q(1, 8), Q(1, 4), Q(1, 4), Q(1, 2), Q(1, 2), 1]
-    assert {(e.block, e.j) for e in spec} == {("crease", None), ("sine", 1), ("face", 2)}
+    assert {(e.blocks[0].block, e.blocks[0].j) for e in spec} == {("crease", None), ("sine", 1), ("face", 2)}
     loop3 = sector_spectrum(LOOP, 3)  # Loop's regular boundary: 1/2 from the crease block and from j = 1
-    assert [e.value for e in loop3 if e.block == "sine"] == [Q(1, 2), Q(1, 4)]
+    assert [e.value for e in loop3 if e.blocks[0].block == "sine"] == [Q(1, 2), Q(1, 4)]
     # k = 3 on quads: the closed form (tr +- sqrt(tr^2 - 4 det))/2 of M(pi/3)
-    top = max((e for e in sector_spectrum(CC, 3) if e.j == 1), key=lambda e: float(e.value))
+    top = max((e for e in sector_spectrum(CC, 3) if e.blocks[0].j == 1), key=lambda e: float(e.value))
     assert sp.simplify(top.value - (Q(11, 32) + sp.sqrt(57) / 32)) == 0
     assert block_eigenvalues(sp.Matrix([[Q(1, 2)]])) == (Q(1, 2),)
 

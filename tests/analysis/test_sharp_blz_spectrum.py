@@ -16,9 +16,9 @@ import symdecomp as sd
 from symdecomp.algebra.cos_field import FieldMatrix, field_charpoly, norm_charpoly
 from symdecomp.algebra.number_field import FieldElement
 from symdecomp.analysis.mirror import sector_spectrum
-from symdecomp.analysis.sharp_field import sharp_matrix
 from symdecomp.analysis.sharp_masks import sharp_masks
 from symdecomp.analysis.sharp_spectrum import sharp_spectrum
+from symdecomp.analysis.triangular_eigen import sharp_matrix
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import sharp_subdivision_matrix
 
@@ -40,13 +40,13 @@ def test_half_has_the_multiplicity_of_the_blocks_and_the_product_is_the_determin
     assert s.decomposed and s.field == ("Q" if k == 3 else f"Q(cos(pi/{k}))")
     halves = sum(1 for e in sector_spectrum(scheme, vertex) if sp.simplify(e.value - sp.Rational(1, 2)) == 0)
     assert halves == 2  # the boundary curve's 1/2 and BLZ's first sine eigenvalue
-    (half,) = [e for e in s.entries if e.eigenvalue.factor == flint.fmpq_poly([-1, 2]) / 2]
+    (half,) = [e for e in s.entries if e.factor == flint.fmpq_poly([-1, 2]) / 2]
     assert half.multiplicity == halves and "crease" in half.blocks and any("sine j=1" in b for b in half.blocks)
     assert sum(e.multiplicity for e in s.entries) == s.size
     with flint.ctx.workprec(256):
         product = flint.acb(1)
         for e in s.entries:
-            product *= e.eigenvalue.ball ** e.multiplicity
+            product *= e.ball ** e.multiplicity
     det = _det(scheme, vertex)
     assert abs(complex(product.real.mid(), product.imag.mid()) - complex(det)) < 1e-30 * max(1, abs(det))
     assert abs(float(product.imag.mid())) < 1e-30

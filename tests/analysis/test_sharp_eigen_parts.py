@@ -1,4 +1,4 @@
-"""The block-triangular parts of a sharp vertex's matrix, found from the matrix (symdecomp.analysis.sharp_eigen)."""
+"""The block-triangular parts of a sharp vertex's matrix, found from the matrix (symdecomp.analysis.triangular_eigen)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import flint
 import pytest
 
 import symdecomp as sd
-from symdecomp.analysis.sharp_eigen import crease_points, matrix_parts, merge, part_eigenvalues, submatrix
+from symdecomp.analysis.triangular_eigen import matrix_parts, merge, part_eigenvalues, submatrix
 
 CC, LOOP = sd.catmull_clark(), sd.loop()
 
@@ -22,7 +22,7 @@ CC, LOOP = sd.catmull_clark(), sd.loop()
 ])
 def test_the_parts_multiply_to_the_characteristic_polynomial(scheme, vertex, labels):
     S = sd.exact_sharp_matrix(scheme, vertex)
-    parts = matrix_parts(S, crease_points(vertex))
+    parts = matrix_parts(S, vertex.crease_points())
     assert [p.label for p in parts] == labels
     assert sorted(i for p in parts for i in p.indices) == list(range(S.nrows()))
     product = flint.fmpq_poly([1])
@@ -43,5 +43,5 @@ def test_a_semi_sharp_crease_below_sharpness_1_has_no_block_structure():
 
     vertex = sd.SharpVertex.crease(3, 3, sd.QUAD, sharpness=Fraction(1, 2))
     S = sd.exact_sharp_matrix(CC, vertex)
-    assert [p.label for p in matrix_parts(S, crease_points(vertex))] == ["whole"]
+    assert [p.label for p in matrix_parts(S, vertex.crease_points())] == ["whole"]
     assert vertex.sharpness != math.inf

@@ -7,7 +7,7 @@ import sympy as sp
 
 import symdecomp as sd
 from symdecomp.analysis import sharp_masks as masks_module
-from symdecomp.analysis.sharp_eigen import _factor_roots
+from symdecomp.analysis.triangular_eigen import _factor_roots
 from symdecomp.cli import main
 from symdecomp.errors import NotApplicableError
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from symdecomp import catmull_clark
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.stencil_convert import as_stencils

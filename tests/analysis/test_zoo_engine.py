@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum
@@ -284,7 +284,7 @@ def test_masks_are_left_eigenvectors_of_the_full_matrix(make):
 
 
 def test_masks_of_catmull_clark_as_stencils_are_ring_masks():
-    from symdecomp.analysis.ring_masks import ring_masks
+    from symdecomp.analysis.masks import ring_masks
     from symdecomp.analysis.zoo_masks import zoo_masks
 
     ours, theirs = zoo_masks(catmull_clark_stencils(), 7, digits=15), ring_masks(catmull_clark(), 7, digits=15)

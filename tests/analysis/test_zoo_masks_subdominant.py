@@ -11,9 +11,10 @@ import flint
 import numpy as np
 import pytest
 
-from symdecomp.analysis.ring_spectrum import acb_text
+from symdecomp.analysis.masks import acb_matrix
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import zoo_blocks
-from symdecomp.analysis.zoo_masks import _acb_matrix, _isolated_largest, zoo_masks
+from symdecomp.analysis.zoo_masks import _isolated_largest, zoo_masks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
 from symdecomp.schemes.stencil_files import load_zoo
@@ -32,7 +33,7 @@ def test_the_frequency_1_block_s_largest_is_the_whole_spectrum_s(name):
     whole = max((e for e in spectrum.eigenvalues if 1 in e.frequencies), key=lambda e: float(e.value.abs_upper())).value
     with flint.ctx.workprec(144):
         w = flint.acb(flint.arb(flint.fmpq(2, n))).exp_pi_i()
-        ours = _isolated_largest(_acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,)))
+        ours = _isolated_largest(acb_matrix(blocks.frequency_matrix(), (OMEGA,), (w,)))
     assert ours is not None and ours.overlaps(whole)
     assert acb_text(ours, 20) == acb_text(whole, 20)
 

@@ -22,6 +22,7 @@ import pytest
 
 import symdecomp as sd
 from symdecomp.algebra.triangle_bezier import bezier_indices
+from symdecomp.analysis.charpoly import frequency_factors
 from symdecomp.analysis.components import initial_vector_condition
 from symdecomp.analysis.dual_evaldata import dual_evaldata
 from symdecomp.analysis.elliptic import scale_ratio_squared
@@ -30,7 +31,6 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.analysis.inspection import position_weights
 from symdecomp.analysis.mesh_kinds import NeighbourhoodKind
 from symdecomp.analysis.mesh_limits import kind_masks
-from symdecomp.analysis.ring_spectrum import frequency_factors
 from symdecomp.analysis.sector_evaldata import sector_evaldata
 from symdecomp.analysis.support import limit_mask
 from symdecomp.analysis.support_window import window

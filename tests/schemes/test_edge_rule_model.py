@@ -13,8 +13,8 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.ring_blocks import ring_blocks
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.frequency import ring_blocks
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.files import load_scheme, scheme_from_text
 from symdecomp.schemes.refinement import edge_centre, mesh_rules
@@ -110,7 +110,7 @@ def test_sharp_refinement_refuses_an_edge_rule_in_n():
 def test_masks_of_a_lopsided_rule_in_n_are_left_eigenvectors_at_that_valence():
     """A lopsided edge rule in n (weights 1/16 -+ (n - 4)/128 on a_(i-1), a_(i+1)): the masks are computed at n = 5
     (it was 'cannot evaluate n'), and the position mask is the left eigenvector of 1 of the 1-ring matrix there."""
-    from symdecomp.analysis.ring_masks import ring_masks
+    from symdecomp.analysis.masks import ring_masks
 
     s = scheme_from_text('name = "lopsided in n"\n[edge]\nO = "3/8"\na = { "-1" = "1/16 - (n - 4)/128", "0" = "3/8", '
                          '"1" = "1/16 + (n - 4)/128" }\nb = { "-1" = "1/16", "0" = "1/16" }\n[face]\nO = "1/4"\n'
@@ -125,7 +125,7 @@ def test_masks_of_a_lopsided_rule_in_n_are_left_eigenvectors_at_that_valence():
 def test_the_ring_certificate_and_the_product_form_read_the_blocks_at_n():
     """The structural certificate compares the refined matrix with the blocks at n (it said 'refuted', the block entry
     n/64 + 5/16 against 25/64), and the product form equals chi_S at 31 points (it raised on n in E(omega))."""
-    from symdecomp.analysis.ring_charpoly import ring_charpoly
+    from symdecomp.analysis.charpoly import ring_charpoly
     from symdecomp.verify.ring_certify import certify_ring
 
     assert ring_charpoly(LOPSIDED_ENDS, 5, 2)["matches_matrix"] is True

@@ -47,7 +47,7 @@ def counts(monkeypatch):
 
 def test_one_c1_run_validates_no_scheme_and_reads_the_rules_once(counts):
     from symdecomp.analysis import characteristic
-    from symdecomp.analysis.ring_blocks import ring_blocks
+    from symdecomp.analysis.frequency import ring_blocks
     from symdecomp.schemes import rings
     from symdecomp.verify.c1 import c1_test
 

@@ -11,7 +11,7 @@ import sympy as sp
 from symdecomp import catmull_clark, loop, loop_warren, symbols
 from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
-from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.masks import ring_masks
 from symdecomp.errors import NotApplicableError
 from symdecomp.verify.artifacts import artifact_indicators
 from symdecomp.verify.second_order_spectrum import second_order_eigenstructure
@@ -95,7 +95,7 @@ def test_density_is_lambda_1_against_one_half_exact_at_the_regular_valence():
 
 
 def _negative_classes_by_ring_masks(scheme, n):
-    """The limit mask's negative classes from the certified numeric route of analysis/ring_masks.py."""
+    """The limit mask's negative classes from the certified numeric route of analysis/masks.py (ring_masks)."""
     m = ring_masks(scheme, n, 1, digits=12)["position"]
     out = ["O"] if m["O"].startswith("-") else []
     return tuple(out + [k for k, v in m["classes"].items() if v[0].startswith("-")])

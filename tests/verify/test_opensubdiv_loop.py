@@ -12,7 +12,7 @@ if not osd_build.headers_present():
 
 import numpy as np  # noqa: E402
 
-from symdecomp.analysis.ring_masks import ring_masks  # noqa: E402
+from symdecomp.analysis.masks import ring_masks  # noqa: E402
 from symdecomp.schemes.loop import loop  # noqa: E402
 from symdecomp.schemes.rings import ring_subdivision_matrix  # noqa: E402
 from symdecomp.verify.opensubdiv.loop import osd_loop_one_ring_matrix, osd_loop_position_mask, osd_loop_tangent_masks  # noqa: E402

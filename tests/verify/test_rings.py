@@ -8,10 +8,9 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.defective import jordan_vertex_weights
-from symdecomp.analysis.masks import limit_masks_at
-from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
-from symdecomp.analysis.ring_masks import ring_masks
-from symdecomp.analysis.ring_spectrum import ring_spectrum
+from symdecomp.analysis.frequency import RingBlocks, ring_blocks
+from symdecomp.analysis.masks import limit_masks_at, ring_masks
+from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.cli import main
 from symdecomp.schemes.loop import loop, loop_beta, loop_warren, triangle_scheme
 from symdecomp.schemes.rings import ring_subdivision_matrix

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from symdecomp.analysis.charpoly import COSK
 from symdecomp.analysis.curvature_regime import CurvatureRegime
-from symdecomp.analysis.ring_spectrum import COSK
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.errors import InvalidTypeError
 from symdecomp.schemes.stencil_files import load_zoo

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from symdecomp.analysis.eigenvalue import MirrorBlock
 from symdecomp.analysis.mirror import sector_decomposition, sector_matrix, sector_spectrum
 from symdecomp.analysis.mirror_threshold import crease_eigenvectors
 from symdecomp.errors import NotApplicableError
@@ -157,7 +158,7 @@ def sector_modes(scheme: Scheme, vertex) -> tuple[SectorMode, ...]:
     for blk in d.blocks:
         width = blk.matrix.shape[0]
         M = _floats(blk.matrix)
-        for ev in (e for e in spectrum if e.block == blk.kind and e.sector == blk.sector and e.j == blk.j):
+        for ev in (e for e in spectrum if e.blocks[0] == MirrorBlock(blk.kind, blk.sector, blk.j)):
             w = _null_vector(M - float(sp.N(ev.value, _DIGITS)) * np.eye(width))
             modes.append(SectorMode(blk.kind, blk.j, ev.value, _normalised(Q[:, column:column + width] @ w)))
         column += width

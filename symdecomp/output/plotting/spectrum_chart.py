@@ -5,7 +5,7 @@ of Eq. 34, the 3x3 matrix of Eq. 43 for ``k = 0``; ``E(omega^k)`` of a K-ring ma
 as in the paper's figures of the eigenvalues of ``M_j``; at a boundary, crease, corner or dart vertex
 at every block of the mirror decomposition it comes from. Real eigenvalues are drawn by value, complex
 ones by modulus (hollow markers). The numbers are the results the command prints
-(:class:`~symdecomp.analysis.spectrum.Spectrum`, :class:`~symdecomp.analysis.ring_spectrum.RingSpectrum`,
+(:class:`~symdecomp.analysis.spectrum.Spectrum`, :class:`~symdecomp.analysis.spectrum.RingSpectrum`,
 :class:`~symdecomp.analysis.sharp_spectrum.SharpSpectrum`).
 """
 
@@ -73,7 +73,7 @@ def sharp_spectrum_figure(levels, vertex: str):
     fig = new_figure(7.5, 3.6 * len(levels) + 0.6)
     for ax, s in zip(fig.subplots(len(levels), 1, squeeze=False)[:, 0], levels):
         blocks = list(dict.fromkeys(b for e in s.entries for b in e.blocks))
-        points = [(blocks.index(b), as_complex(e.eigenvalue.ball), e.multiplicity) for e in s.entries for b in e.blocks]
+        points = [(blocks.index(b), as_complex(e.ball), e.multiplicity) for e in s.entries for b in e.blocks]
         _scatter(ax, points)
         ax.set_xticks(range(len(blocks)), blocks, fontsize=7, rotation=30, ha="right")
         ax.set_ylabel("eigenvalue")

@@ -5,7 +5,7 @@
 :func:`osd_loop_position_mask` read OpenSubdiv's one-step matrix of the 1-ring and its limit
 position mask column by column (unit vectors as positions, three columns per call), to be
 compared with :func:`~symdecomp.schemes.rings.ring_subdivision_matrix` and
-:func:`~symdecomp.analysis.ring_masks.ring_masks`.
+:func:`~symdecomp.analysis.masks.ring_masks`.
 """
 
 from __future__ import annotations

@@ -1,4 +1,5 @@
-"""Exact eigenvalues of a sharp vertex's subdivision matrix, part by part: the crease block and each sector.
+"""Exact eigenvalues of a block-triangular one-step matrix, part by part (over ``Q`` or ``Q(cos(pi/k))``): the
+crease block and each sector of a boundary, crease, corner or dart vertex.
 
 At a boundary, crease or corner vertex the rules of the crease points (the vertex and its
 neighbours on the sharp edges) read crease points only, and the rules of a sector's points read
@@ -13,8 +14,8 @@ Each eigenvalue is a root of an irreducible rational factor of its part's charac
 polynomial (FLINT), kept exactly: the factor, the root's index in sympy's order, a closed form
 (degree <= 2) or a ``CRootOf``, and a certified Arb ball. Equal eigenvalues of two parts are the
 same root of the same factor, so equality is exact. Rational matrices here; rules whose weights
-hold cos(pi/k) give entries in Q(cos(pi/k)), whose eigenvalues :mod:`symdecomp.analysis.sharp_field`
-finds as the same objects (roots of irreducible rational factors of the norm of the characteristic polynomial).
+hold cos(pi/k) give entries in Q(cos(pi/k)), whose eigenvalues are found as the same objects (roots of
+irreducible rational factors of the norm of the characteristic polynomial, below).
 
 >>> import flint
 >>> S = flint.fmpq_mat([[flint.fmpq(3, 4), flint.fmpq(1, 8), flint.fmpq(1, 8), 0],
@@ -24,21 +25,39 @@ finds as the same objects (roots of irreducible rational factors of the norm of 
 [(0, 1, 2), (3,)]
 >>> [(str(e.exact), e.multiplicity, e.part) for e in part_eigenvalues(S, matrix_parts(S, (0, 1, 2)))]
 [('1', 1, 'crease'), ('1/2', 1, 'crease'), ('1/4', 1, 'crease'), ('1/4', 1, 'sector 1')]
+
+**Rules with** ``cos(theta_k)`` **weights** (Biermann-Levin-Zorin's), exactly over ``Q(cos(pi/k))``.
+BLZ's near-edge rule has the weight ``w = 3/8 - cos(theta_k)/4`` (Catmull-Clark) on the edge's other end, so the
+one-step matrix of a boundary or corner vertex with ``k`` faces (or a crease with ``k`` faces on both sides) has
+entries ``p + q w`` in the real cyclotomic field ``K = Q(cos(pi/k))``. :func:`sharp_matrix` returns the rational
+matrix when it is rational (``k <= 3``), else the :class:`~symdecomp.algebra.cos_field.FieldMatrix` over ``K``;
+:func:`sharp_values` its eigenvalues part by part, the same
+:class:`~symdecomp.analysis.eigenvalue.Eigenvalue` objects as for rational rules
+(:func:`root_eigenvalue`): each is a root of an
+irreducible rational factor of the norm of the part's characteristic polynomial (its minimal polynomial over
+``Q``), picked out and counted exactly (:func:`~symdecomp.algebra.cos_field.field_roots`).
+
+Out of reach (:class:`~symdecomp.errors.NotApplicableError`): a crease whose two sides have different face counts
+``k1 != k2`` with both ``cos(pi/k_i)`` irrational (entries in ``Q(cos(pi/k1), cos(pi/k2))``), and corners given an
+angle.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import flint
 import sympy as sp
 
+from symdecomp.algebra.cos_field import FieldMatrix, field_charpoly, field_roots, norm_charpoly
 from symdecomp.algebra.number_field import root_expression
-from symdecomp.errors import PrecisionError
+from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.errors import NotApplicableError, PrecisionError
 
-__all__ = ["crease_points", "MatrixPart", "SharpEigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus",
-           "merge", "separated", "ball_at"]
+__all__ = ["MatrixPart", "root_eigenvalue", "matrix_parts", "part_eigenvalues", "submatrix", "by_modulus",
+           "merge", "separated", "ball_at",
+           "near_weight", "sharp_matrix", "sharp_values", "field_part_eigenvalues"]
 
 
 @dataclass(frozen=True)
@@ -51,41 +70,18 @@ class MatrixPart:
     indices: tuple[int, ...]
 
 
-@dataclass(frozen=True)
-class SharpEigenvalue:
-    """One distinct eigenvalue of a part (or of the matrix, after :func:`merge`)."""
-
-    #: The monic irreducible rational factor it is a root of.
-    factor: flint.fmpq_poly
-    #: Its index among the roots of ``factor`` in sympy's order (real ascending, then complex).
-    index: int
-    #: The exact value (a closed form for degree <= 2, else a ``CRootOf``).
-    exact: sp.Expr
-    #: A certified ball around it (``flint.acb``).
-    ball: object
-    #: Its algebraic multiplicity in the part (or the matrix).
-    multiplicity: int
-    #: The part(s) it comes from, e.g. ``"crease"`` or ``"crease, sector 1"``.
-    part: str
-
-    @property
-    def key(self) -> tuple:
-        """Equal keys, equal eigenvalues (and conversely): the factor's coefficients and the root's index."""
-        return (tuple(int(c) for c in self.factor.numer().coeffs()), self.index)
-
-    @property
-    def is_real(self) -> bool:
-        return self.factor.degree() == 1 or bool(self.exact.is_real)
+def root_eigenvalue(factor: flint.fmpq_poly, index: int, exact: sp.Expr, ball, multiplicity: int, part: str) -> Eigenvalue:
+    """One distinct eigenvalue of a part (or of the matrix, after :func:`merge`): the root ``index`` (sympy's order:
+    real ascending, then complex) of the monic irreducible rational ``factor``, exactly (a closed form for degree <= 2,
+    else a ``CRootOf``) and as a certified ball, with its multiplicity and the part(s) it comes from. Its key (equal
+    keys, equal eigenvalues, and conversely) is the factor's coefficients and the root's index."""
+    key = (tuple(int(c) for c in factor.numer().coeffs()), index)
+    return Eigenvalue(ball, "", multiplicity, exact=exact, factor=factor, index=index, part=part, key=key)
 
 
 def submatrix(S: flint.fmpq_mat, indices: Sequence[int]) -> flint.fmpq_mat:
     """The principal submatrix of ``S`` on ``indices``."""
     return flint.fmpq_mat([[S[i, j] for j in indices] for i in indices])
-
-
-def crease_points(vertex) -> tuple[int, ...]:
-    """The rows of the vertex ``O`` and of its neighbours ``a_m`` on sharp edges in the 1-ring order ``O, a_0, ..``."""
-    return (0,) + tuple(1 + m for m in vertex.sharp_rays())
 
 
 def _support(S: flint.fmpq_mat, i: int) -> set[int]:
@@ -158,7 +154,7 @@ def _in_interval(root: sp.CRootOf, balls: list):
     return hits[0] if len(hits) == 1 else None
 
 
-def part_eigenvalues(S: flint.fmpq_mat, parts: Sequence[MatrixPart], *, prec: int = 256) -> list[SharpEigenvalue]:
+def part_eigenvalues(S: flint.fmpq_mat, parts: Sequence[MatrixPart], *, prec: int = 256) -> list[Eigenvalue]:
     """Every distinct eigenvalue of each part, exactly, with its multiplicity in that part (parts in order)."""
     out = []
     for part in parts:
@@ -168,25 +164,25 @@ def part_eigenvalues(S: flint.fmpq_mat, parts: Sequence[MatrixPart], *, prec: in
         for f, e in factors:
             f = f / f.leading_coefficient()
             for index, exact, ball in _factor_roots(f, prec):
-                items.append(SharpEigenvalue(f, index, exact, ball, e, part.label))
+                items.append(root_eigenvalue(f, index, exact, ball, e, part.label))
         out += sorted(items, key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid())))
     return out
 
 
-def merge(values: Sequence[SharpEigenvalue]) -> list[SharpEigenvalue]:
+def merge(values: Sequence[Eigenvalue]) -> list[Eigenvalue]:
     """The eigenvalues of several parts as those of their matrix: equal values joined, multiplicities added."""
-    joined: dict[tuple, SharpEigenvalue] = {}
+    joined: dict[tuple, Eigenvalue] = {}
     for v in values:
         old = joined.get(v.key)
         if old is None:
             joined[v.key] = v
         else:
             parts = old.part if v.part in old.part.split(", ") else f"{old.part}, {v.part}"
-            joined[v.key] = SharpEigenvalue(old.factor, old.index, old.exact, old.ball, old.multiplicity + v.multiplicity, parts)
+            joined[v.key] = replace(old, multiplicity=old.multiplicity + v.multiplicity, part=parts)
     return by_modulus(list(joined.values()))
 
 
-def by_modulus(values: Sequence[SharpEigenvalue]) -> list[SharpEigenvalue]:
+def by_modulus(values: Sequence[Eigenvalue]) -> list[Eigenvalue]:
     """``values`` sorted by decreasing modulus (then real part), by their balls' midpoints.
 
     The order is a presentation: where it matters (is this value strictly larger in modulus than
@@ -195,7 +191,7 @@ def by_modulus(values: Sequence[SharpEigenvalue]) -> list[SharpEigenvalue]:
     return sorted(values, key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid()), v.key))
 
 
-def separated(a: SharpEigenvalue, b: SharpEigenvalue, *, max_prec: int = 4096) -> bool:
+def separated(a: Eigenvalue, b: Eigenvalue, *, max_prec: int = 4096) -> bool:
     """Whether ``|a| > |b|`` is certified (Arb, raising the precision of the roots up to ``max_prec`` bits)."""
     if a.key == b.key:
         return False
@@ -210,7 +206,7 @@ def separated(a: SharpEigenvalue, b: SharpEigenvalue, *, max_prec: int = 4096) -
         prec *= 2
 
 
-def ball_at(v: SharpEigenvalue, prec: int):
+def ball_at(v: Eigenvalue, prec: int):
     """The eigenvalue's ball at ``prec`` bits (its own ball when that is at least as precise)."""
     if prec <= 256:
         return v.ball
@@ -219,3 +215,68 @@ def ball_at(v: SharpEigenvalue, prec: int):
         if b.overlaps(v.ball):
             return b
     raise PrecisionError(f"the root {v.exact} was not found again at {prec} bits")  # pragma: no cover - isolating balls
+
+
+def near_weight(scheme, vertex, k: int):
+    """The near-edge rule's weight on the edge's other end in a sector of ``k`` faces, when it is irrational (else ``None``).
+
+    BLZ's ``theta_k = pi/k``, or ``angle/k`` at a corner given its angle (:mod:`symdecomp.schemes.sharp_refinement`).
+    """
+    rules = scheme.sharp
+    if rules is None or rules.near_edge_centre is None:
+        return None
+    theta = (vertex.angle if getattr(vertex, "angle", None) is not None else sp.pi) / k
+    weight = rules.near_edge(theta, k)[1]
+    return None if weight.is_Rational else weight
+
+
+def sharp_matrix(scheme, vertex, *, level: int = 0):
+    """The vertex's 1-ring matrix: a FLINT rational matrix, or a :class:`FieldMatrix` over ``Q(cos(pi/k))``."""
+    from symdecomp.schemes.sector import exact_sharp_matrix, sharp_subdivision_matrix
+
+    try:
+        return exact_sharp_matrix(scheme, vertex, level=level)
+    except NotApplicableError as refused:
+        irrational = sorted(k for k in set(vertex.sectors) if near_weight(scheme, vertex, k) is not None)
+        weights = {near_weight(scheme, vertex, k) for k in irrational}
+        if not weights:  # irrational for another reason (Loop's cos(2 pi/n) at a dart): out of this route's reach
+            raise
+        if len(weights) != 1:
+            fields = ", ".join(f"cos(pi/{k})" for k in irrational)
+            raise NotApplicableError(f"scheme {scheme.name!r}: the sharp matrix's entries lie in Q({fields}) (sectors of "
+                                     f"{' and '.join(map(str, irrational))} faces), beyond one field Q(cos(pi/k))") from None
+        S = sharp_subdivision_matrix(scheme, vertex, level=level)
+        try:
+            return FieldMatrix.from_sympy(S.tolist(), weights.pop())
+        except NotApplicableError as exc:
+            raise NotApplicableError(f"{str(refused).split('; use ')[0]}, and {exc}") from None
+
+
+def field_part_eigenvalues(M: FieldMatrix, parts, *, prec: int = 256) -> list[Eigenvalue]:
+    """:func:`~symdecomp.analysis.triangular_eigen.part_eigenvalues` for a matrix over ``Q(w)``: each eigenvalue a root of
+    an irreducible rational factor of the norm, with its exact multiplicity in the part at ``w``'s real value."""
+    out = []
+    for part in parts:
+        P = M.submatrix(part.indices)
+        chi = field_charpoly(P)
+        items = []
+        for f, _ in norm_charpoly(P).factor()[1]:
+            f = f / f.leading_coefficient()
+            found = field_roots(chi, f, P, prec=prec)
+            if not found:
+                continue
+            named = _factor_roots(f, prec)
+            for _, ball, mult in found:
+                index, exact, own = next(t for t in named if t[2].overlaps(ball))
+                items.append(root_eigenvalue(f, index, exact, own, mult, part.label))
+        out += sorted(items, key=lambda v: (-float(abs(v.ball).mid()), -float(v.ball.real.mid())))
+    return out
+
+
+def sharp_values(scheme, vertex, *, level: int = 0, prec: int = 256):
+    """``(S, parts, eigenvalues by part)`` of the vertex at ``level``, over ``Q`` or ``Q(cos(pi/k))``."""
+    S = sharp_matrix(scheme, vertex, level=level)
+    parts = matrix_parts(S, vertex.crease_points())
+    if isinstance(S, flint.fmpq_mat):
+        return S, parts, part_eigenvalues(S, parts, prec=prec)
+    return S, parts, field_part_eigenvalues(S, parts, prec=prec)

@@ -133,7 +133,7 @@ nothing else.
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
                    map at one valence, ``zoo_characteristic``); dyadic limit positions for
-                   the patch evaluator (``patch_eval``), the boundary one (``sharp_patch_eval``) and the crease, boundary and
+                   the patch evaluator at an interior vertex or a boundary or corner sector (``patch_eval``) and the crease, boundary and
                    corner data (``sector_evaldata``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and

@@ -5,7 +5,7 @@ random exact control net on the 3-ring of the vertex is refined ``m`` times by t
 mesh (:func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`, the scheme's rules for the whole mesh), and at
 the lattice point ``(p, q)`` of face ``s`` with ``max(p, q) = 2`` (a regular point whose neighbourhood is
 refined by the regular rules from level ``m`` on, BLZ's included) the limit position is the regular limit mask
-on its 1-ring (:func:`~symdecomp.verify.sharp_patch_eval.regular_limit`: the smooth valence-4 vertex's, or the
+on its 1-ring (:func:`~symdecomp.verify.patch_eval.regular_limit`: the smooth valence-4 vertex's, or the
 crease vertex's on a sharp ray, each the exact left eigenvector of its 1-ring matrix). That is the patch's point
 at ``(u, v) = (p / 2^m, q / 2^m)``. With irrational rules (BLZ, ``k >= 4``) the reference and the data are Arb
 balls containing the exact values: they agree when the balls overlap and are narrower than ``2^-100``.
@@ -30,7 +30,7 @@ from symdecomp.analysis.sector_evaluation import evaluate
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
 from symdecomp.validate import check_int, check_type
-from symdecomp.verify.sharp_patch_eval import regular_limit
+from symdecomp.verify.patch_eval import regular_limit
 
 __all__ = ["dyadic_check", "TOLERANCE"]
 

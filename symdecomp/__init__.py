@@ -110,8 +110,8 @@ nothing else.
                    (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
                    masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
-``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
-                   enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
+``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a
+                   boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified (``certify``,
                    ``ring_certify``, the O(n) route ``structural``; of a StencilScheme of the zoo,
                    ``zoo_certify``; beyond n = 19 from the structural blocks, ``zoo_structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
@@ -141,8 +141,7 @@ nothing else.
                    engine's spectrum, ``zoo_artifacts``); certified shape at the vertex: the sign
                    of the Gaussian curvature of a central surface (``curvature``), elliptic,
                    hyperbolic or hybrid, and the shape chart (``shape``); the certificate of the mirror
-                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``), its numeric check against
-                   the refined matrix (``sharp_numeric``); a mesh's
+                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``); a mesh's
                    kinds' C1 verdicts and curvature regimes (``mesh_verdicts``) and its limits against
                    OpenSubdiv's (``oracle_mesh``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,

@@ -170,7 +170,7 @@ def _run_sharp_numeric(args) -> int:
     from symdecomp.analysis.sharp_structural import structural_values
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
     from symdecomp.parallel import ordered_map
-    from symdecomp.verify.sharp_numeric import numeric_row
+    from symdecomp.verify.numeric import numeric_row
 
     for option in ("--route", "--structural", "--solver"):
         if given(args, option.lstrip("-")):
@@ -202,9 +202,8 @@ def _run_sharp_numeric(args) -> int:
 
 def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):
     from symdecomp.verify.certify import certify
-    from symdecomp.verify.numeric import numeric_check
+    from symdecomp.verify.numeric import numeric_check, ring_numeric_check
     from symdecomp.verify.ring_certify import certify_ring
-    from symdecomp.verify.ring_numeric import ring_numeric_check
     from symdecomp.verify.structural import certify_structural
 
     if rings is not None:  # the any-scheme route: K-ring frequency matrices

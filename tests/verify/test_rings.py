@@ -19,9 +19,9 @@ from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta
 from symdecomp.symbols import n as N
 from symdecomp.verify.certify import certify
+from symdecomp.verify.numeric import ring_numeric_check
 from symdecomp.verify.result import CrossCheckStatus
 from symdecomp.verify.ring_certify import certify_ring
-from symdecomp.verify.ring_numeric import ring_numeric_check
 
 SCHEMES = {"loop": loop(), "loop-warren": loop_warren(), "catmull-clark": catmull_clark()}
 

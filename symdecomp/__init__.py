@@ -111,8 +111,10 @@ nothing else.
                    masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a
-                   boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified (``certify``,
-                   ``ring_certify``, the O(n) route ``structural``; of a StencilScheme of the zoo,
+                   boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified at an interior vertex
+                   (1-ring closed forms or K-ring frequency factors) or a boundary, crease, corner or dart
+                   vertex (mirror blocks) (``certify``; the closed forms' symmetric functions, ``symmetric_functions``;
+                   the distinct values and multiplicities proved, ``multiplicities``; the O(n) route ``structural``; of a StencilScheme of the zoo,
                    ``zoo_certify``; beyond n = 19 from the structural blocks, ``zoo_structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
                    boundary, crease and corner vertices' ``oracle_sharp``,
@@ -140,8 +142,7 @@ nothing else.
                    the artifact indicators (``artifacts``; a StencilScheme of the zoo's density and curvature regime from its
                    engine's spectrum, ``zoo_artifacts``); certified shape at the vertex: the sign
                    of the Gaussian curvature of a central surface (``curvature``), elliptic,
-                   hyperbolic or hybrid, and the shape chart (``shape``); the certificate of the mirror
-                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``); a mesh's
+                   hyperbolic or hybrid, and the shape chart (``shape``); a mesh's
                    kinds' C1 verdicts and curvature regimes (``mesh_verdicts``) and its limits against
                    OpenSubdiv's (``oracle_mesh``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
@@ -268,12 +269,10 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.verify.artifacts": ("ArtifactIndicators", "artifact_indicators"),
     "symdecomp.verify.c1": ("C1Result", "c1_test"),
     "symdecomp.verify.c1_sharp": ("SharpC1Result", "c1_sharp_test"),
-    "symdecomp.verify.certify": ("Certificate", "certify"),
+    "symdecomp.verify.certify": ("Certificate", "certify", "certify_ring", "SharpCertificate", "certify_sharp"),
     "symdecomp.verify.numeric": ("NumericCheck", "numeric_check"),
     "symdecomp.verify.result": ("C1Verdict", "CrossCheckResult", "CrossCheckStatus"),
-    "symdecomp.verify.ring_certify": ("certify_ring",),
     "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
-    "symdecomp.verify.sharp_certify": ("SharpCertificate", "certify_sharp"),
     "symdecomp.verify.zoo_certify": ("certify_zoo",),
     "symdecomp.verify.zoo_artifacts": ("ZooArtifacts", "zoo_artifacts"),
     "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),

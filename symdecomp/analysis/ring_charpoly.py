@@ -5,7 +5,7 @@ written as products of the irreducible factors of :func:`~symdecomp.analysis.rin
 At a valence the polynomial is the full matrix's (FLINT), written through the centre weights
 (it is affine in them: only row 0 holds them), and compared with the product exactly, at
 ``size`` rational points for each corner of the centre weights: the identity behind
-:func:`~symdecomp.verify.ring_certify.certify_ring`.
+:func:`~symdecomp.verify.certify.certify_ring`.
 
 >>> from symdecomp.schemes.loop import loop_warren
 >>> d = ring_charpoly(loop_warren(), 3)

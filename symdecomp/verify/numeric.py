@@ -433,7 +433,7 @@ def _matrix_values(scheme, vertex, prec: int) -> list:
 def numeric_sharp(scheme, vertex, *, dps: int = 50) -> SharpNumericRow:
     """Compare the blocks' spectrum of ``vertex`` with its refined matrix's eigenvalues at ``dps`` digits (module docstring)."""
     from symdecomp.analysis.sharp_structural import structural_values
-    from symdecomp.verify.sharp_certify import describe_vertex
+    from symdecomp.verify.certify import describe_vertex
 
     scheme, dps = check_scheme(scheme), check_precision(dps)
     prec = math.ceil(dps * 3.33) + 32

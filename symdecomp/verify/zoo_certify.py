@@ -1,6 +1,6 @@
 """The certificate of a StencilScheme's spectrum at valence ``n``: the blocks' eigenvalues against the full matrix's.
 
-Two routes, as :mod:`symdecomp.verify.ring_certify` has for 1-ring schemes:
+Two routes, as :func:`symdecomp.verify.certify.certify_ring` has for 1-ring schemes:
 
 * ``charpoly`` (every entry of the matrix rational): the characteristic polynomial ``chi_S`` of the full
   matrix in FLINT rationals, its roots isolated with their exact multiplicities (``fmpz_poly.complex_roots``:

@@ -18,10 +18,9 @@ from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta
 from symdecomp.symbols import n as N
-from symdecomp.verify.certify import certify
+from symdecomp.verify.certify import certify, certify_ring
 from symdecomp.verify.numeric import ring_numeric_check
 from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.verify.ring_certify import certify_ring
 
 SCHEMES = {"loop": loop(), "loop-warren": loop_warren(), "catmull-clark": catmull_clark()}
 
@@ -240,7 +239,7 @@ def test_cluster_multiplicities_refuse_what_they_cannot_prove():
     """Merging two clusters, or listing one twice, is caught (exactly: unequal roots; in Arb: overlap)."""
     import dataclasses
 
-    from symdecomp.verify.ring_certify import cluster_multiplicities
+    from symdecomp.verify.multiplicities import cluster_multiplicities
 
     def merge_two(spectrum):
         a, b, *rest = spectrum.eigenvalues[1:]

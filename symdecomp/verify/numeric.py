@@ -74,7 +74,13 @@ __all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eige
 
 @dataclass(frozen=True)
 class EigenvalueMatch:
-    """One distinct closed-form eigenvalue and the numeric eigenvalues of the full matrix matched with it."""
+    """One distinct closed-form eigenvalue and the numeric eigenvalues of the full matrix matched with it.
+
+    A match between two spectra, not an eigenvalue: the eigenvalue is :attr:`eigenvalue` (the one type,
+    :class:`~symdecomp.analysis.eigenvalue.Eigenvalue`); the other fields say how the full matrix's
+    eigenvalues fell around it (how many, their mean's deviation, their spread), facts of the comparison
+    that a spectrum does not have.
+    """
 
     #: The closed-form eigenvalue (value at the working precision, text to ``dps`` digits, multiplicity, closed forms).
     eigenvalue: Eigenvalue

@@ -116,7 +116,8 @@ nothing else.
                    vertex (mirror blocks) (``certify``; the closed forms' symmetric functions, ``symmetric_functions``;
                    the distinct values and multiplicities proved, ``multiplicities``; the O(n) route ``structural``; of a StencilScheme of the zoo,
                    ``zoo_certify``; beyond n = 19 from the structural blocks, ``zoo_structural``), their results and
-                   the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
+                   the C1 verdicts (``result``); OpenSubdiv at an interior vertex, Catmull-Clark or Loop by the lattice (``oracle``; single steps
+                   chained and split by frequency, ``step_chains``),
                    boundary, crease and corner vertices' ``oracle_sharp``,
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners

@@ -119,14 +119,10 @@ def _comparison(scheme):
     def rules(s):
         return (s.lattice, s.edge_rule, s.face_rule, s.vertex_rule)
 
-    if rules(scheme) == rules(catmull_clark()):
-        from symdecomp.verify.oracle import compare_with_opensubdiv
+    if rules(scheme) in (rules(catmull_clark()), rules(loop())):
+        from symdecomp.verify.oracle import comparison
 
-        return compare_with_opensubdiv
-    if rules(scheme) == rules(loop()):
-        from symdecomp.verify.oracle_loop import compare_loop_with_opensubdiv
-
-        return compare_loop_with_opensubdiv
+        return comparison(scheme.lattice)
     raise InvalidInputError(f"--scheme {scheme.name}: OpenSubdiv implements Catmull-Clark and Loop with their standard "
                             "weights only; this scheme's rules are neither")
 

@@ -1,8 +1,14 @@
-"""The toolkit's predictions for Catmull-Clark checked against OpenSubdiv (an outside oracle).
+"""The toolkit's predictions at an interior vertex checked against OpenSubdiv (an outside oracle).
 
-For a valence ``n`` a random 1-ring in ``R^3`` (seeded) is pushed through OpenSubdiv's
-uniform Catmull-Clark refinement (:mod:`symdecomp.verify.opensubdiv`), and what OpenSubdiv computes
-is compared with what the toolkit predicts from the scheme's rules:
+OpenSubdiv implements Catmull-Clark and Loop with their standard weights; which comparison runs is the
+lattice's (:func:`comparison`, read with :meth:`~symdecomp.schemes.lattice.Lattice.select` by the regular
+patch). The measurements (single OpenSubdiv steps chained, renormalised, split by frequency) are
+:mod:`symdecomp.verify.step_chains`; boundary, crease, corner and dart vertices are compared by
+:mod:`symdecomp.verify.oracle_sharp`.
+
+*Catmull-Clark* (:func:`compare_with_opensubdiv`). For a valence ``n`` a random 1-ring in ``R^3`` (seeded) is
+pushed through OpenSubdiv's uniform Catmull-Clark refinement (:mod:`symdecomp.verify.opensubdiv`), and what
+OpenSubdiv computes is compared with what the toolkit predicts from the scheme's rules:
 
 ======================  =============================================  ============================
 prediction              toolkit side                                   expected agreement
@@ -33,6 +39,34 @@ The Fourier components follow :func:`symdecomp.analysis.tangent.invariant_ratio`
 A^j omega^{ij}``, i.e. ``A^j = (1/n) sum_i a_i omega^{-ij}``, ``omega = exp(2 pi i/n)``.
 OpenSubdiv implements the standard vertex rule, so everything is compared with
 ``catmull_clark()`` (standard weights).
+
+*Loop* (:func:`compare_loop_with_opensubdiv`). OpenSubdiv's Loop refinement
+(:mod:`symdecomp.verify.opensubdiv.loop`) is compared with what the toolkit derives from the rules of
+:func:`~symdecomp.schemes.loop.loop`:
+
+======================  ===========================================  ======================
+prediction              toolkit side                                 expected agreement
+======================  ===========================================  ======================
+one-step matrix         ``ring_subdivision_matrix`` (exact), read    double precision
+                        column by column from OpenSubdiv
+spectrum                ``ring_spectrum`` (with multiplicities) vs   double precision
+                        the eigenvalues of OpenSubdiv's matrix
+limit mask              ``ring_masks`` position mask vs              double precision
+                        OpenSubdiv's ``Limit``
+tangent plane           ``ring_masks`` tangent masks span            double precision
+                        OpenSubdiv's two limit tangents
+limit position          ``O_k -> l . ring_0``                        error ~ mu^k, mu the
+                                                                     value after 1 at j = 0
+shrink rate, freq. j    the dominant eigenvalue of frequency ``j``   exact when frequency
+                        (``j = 0``: the one after 1)                 ``j`` has one value
+======================  ===========================================  ======================
+
+The shrink rates are measured as for Catmull-Clark: a random 1-ring ``(O, a_0..a_{n-1})`` is
+pushed through single OpenSubdiv steps, each fed the 1-ring the previous one returned
+(renormalised by a translation and a power of two), and the part in frequencies ``j`` and
+``n - j`` is followed alone (projected back after every step). Loop's 1-ring has one value
+per frequency ``j != 0`` (``3/8 + cos(2 pi j/n)/4``) and one after 1 at ``j = 0``
+(``5/8 - n beta(n)``), so each rate is the ratio of one step exactly, to rounding.
 """
 
 from __future__ import annotations
@@ -49,13 +83,26 @@ import sympy as sp
 from symdecomp.algebra.numbers import to_fraction
 from symdecomp.analysis.elliptic import recursion_eigenvector
 from symdecomp.analysis.masks import limit_masks_at
+from symdecomp.analysis.ring_masks import ring_masks
+from symdecomp.analysis.ring_spectrum import ring_spectrum
 from symdecomp.analysis.spectrum import recursion_eigenvalues
 from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
 from symdecomp.errors import InternalError
-from symdecomp.schemes.mesh import QuadMesh, ring_mesh
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, Lattice
+from symdecomp.schemes.loop import loop
+from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import n as N
 from symdecomp.validate import INPUT_LIMITS, cached, check_int, check_levels, check_valence
+from symdecomp.verify.step_chains import (
+    loop_chain,
+    lsq_ratio,
+    quad_chain,
+    random_ring,
+    ring_as_mesh,
+    ring_frequency_part,
+    triangle_frequency_part,
+)
 
 __all__ = [
     "Prediction",
@@ -63,10 +110,11 @@ __all__ = [
     "ToolkitPredictions",
     "toolkit_predictions",
     "elliptic_eigenvector",
-    "random_ring",
-    "fourier_components",
     "compare_with_opensubdiv",
+    "compare_loop_with_opensubdiv",
+    "comparison",
 ]
+
 
 #: Agreement required of the quantities that are exact in exact arithmetic (data of size ~1).
 EXACT_TOLERANCE = 1e-13
@@ -139,10 +187,6 @@ class ValenceComparison:
             "agrees": self.agrees,
             "predictions": [p.as_json() for p in self.predictions],
         }
-
-
-# --------------------------------------------------------------------------------------------
-# the toolkit's side
 
 
 def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Expr, sp.Expr]]:
@@ -219,60 +263,6 @@ def toolkit_predictions(n: int) -> ToolkitPredictions:
     )
 
 
-# --------------------------------------------------------------------------------------------
-# data and measurements
-
-
-def random_ring(n: int, seed: int) -> tuple[tuple[float, float, float], ...]:
-    """A random 1-ring ``(O, a_0.., b_0..)`` in ``[-1, 1]^3`` (floats, reproducible from ``seed``)."""
-    n = check_valence(n)
-    rng = random.Random(f"symdecomp-oracle:{seed}:{n}")
-    return tuple(tuple(rng.uniform(-1.0, 1.0) for _ in range(3)) for _ in range(2 * n + 1))
-
-
-def _ring_as_mesh(ring, n: int, rings: int = 1, seed: int = 0) -> QuadMesh:
-    """A ``rings``-ring mesh whose 1-ring is ``ring`` (outer rings random)."""
-    rng = random.Random(f"symdecomp-oracle-outer:{seed}:{n}")
-
-    def value(s, u, v):
-        if (u, v) == (0, 0):
-            return ring[0]
-        if (u, v) == (1, 0):
-            return ring[1 + s]
-        if (u, v) == (0, 1):  # pragma: no cover - ring_mesh labels these as (s+1, 1, 0)
-            return ring[1 + (s + 1) % n]
-        if (u, v) == (1, 1):
-            return ring[1 + n + s]
-        return tuple(rng.uniform(-1.0, 1.0) for _ in range(3))
-
-    return ring_mesh(n, rings, value)
-
-
-def fourier_components(ring: np.ndarray, n: int):
-    """``(O, A, B)``: the centre and the ``n x 3`` complex arrays ``A[j] = (1/n) sum_i a_i omega^{-ij}``."""
-    ring = np.asarray(ring, dtype=np.float64)
-    a, b = ring[1 : 1 + n], ring[1 + n :]
-    return ring[0], np.fft.fft(a, axis=0) / n, np.fft.fft(b, axis=0) / n
-
-
-def _matvec(matrix, ring) -> np.ndarray:
-    x = [[Fraction(float(c)) for c in p] for p in ring]
-    out = []
-    for row in matrix:
-        acc = [Fraction(0)] * 3
-        for w, p in zip(row, x):
-            if w:
-                for c in range(3):
-                    acc[c] += w * p[c]
-        out.append([float(c) for c in acc])
-    return np.array(out)
-
-
-def _lsq_ratio(num: np.ndarray, den: np.ndarray):
-    """The scalar ``r`` minimising ``|num - r den|`` (complex inner product)."""
-    return complex(np.vdot(den, num) / np.vdot(den, den))
-
-
 def _rate_from(errors: list[float], floor: float) -> float | None:
     """Shrink factor of a disagreement sequence over its last two levels above ``floor``."""
     usable = [k for k in range(1, len(errors)) if errors[k] > floor and errors[k - 1] > floor]
@@ -303,8 +293,8 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
     rows: list[Prediction] = []
 
     # 1-ring locality, inside OpenSubdiv: the 1-ring alone vs a 3-ring mesh containing it.
-    alone = osd_central_rings(_ring_as_mesh(ring0, n, 1, seed), 0, 3)
-    larger = osd_central_rings(_ring_as_mesh(ring0, n, 3, seed), 0, 3)
+    alone = osd_central_rings(ring_as_mesh(ring0, n, 1, seed), 0, 3)
+    larger = osd_central_rings(ring_as_mesh(ring0, n, 3, seed), 0, 3)
     rows.append(_exact("1-ring locality", float(np.max(np.abs(alone.rings - larger.rings)))))
 
     # limit mask vs OpenSubdiv's limit positions
@@ -312,7 +302,7 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
     rows.append(_exact("limit mask", float(max(np.max(np.abs(alone.limit - limit)), np.max(np.abs(larger.limit - limit))))))
 
     # The whole random ring, chained: the one-step matrix and the limit position.
-    chain = _chain(ring0, n, levels, pred.matrix, limit=limit)
+    chain = quad_chain(ring0, n, levels, pred.matrix, limit=limit)
     rows.insert(0, _exact("one-step matrix", chain.one_step))
     mu2, mu3 = pred.mu
     floor = 1e-13
@@ -324,8 +314,8 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
     leak = 0.0
     chains = {}
     for j in range(0, n // 2 + 1):
-        part = _frequency_part(np.array(ring0), n, j)
-        chains[j] = _chain(part, n, levels, pred.matrix, frequency=j)
+        part = ring_frequency_part(np.array(ring0), n, j)
+        chains[j] = quad_chain(part, n, levels, pred.matrix, frequency=j)
         leak = max(leak, chains[j].leak)
     rows.append(_exact("frequencies decouple", leak))
 
@@ -333,11 +323,11 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
 
     # Eq. 39: B^1/A^1 on the frequency-1 chain
     q1 = abs(pred.tangent[1][1] / pred.tangent[1][0])
-    ratios = [_lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
+    ratios = [lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
     rows.append(_limit("Eq. 39 ratio B1/A1", pred.eq39_ratio, ratios[-1], [abs(r - pred.eq39_ratio) for r in ratios], q1, floor, levels))
 
     # Eq. 44: (bbar - O)/(abar - O) on the frequency-0 chain
-    ell = [_lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
+    ell = [lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
     q0 = abs(mu3 / mu2)
     rows.append(_limit("Eq. 44 elliptic ratio", pred.elliptic_ratio, ell[-1], [abs(r - pred.elliptic_ratio) for r in ell], q0, floor, levels))
     return ValenceComparison(n, levels, seed, tuple(rows))
@@ -378,65 +368,6 @@ def _shrink_rates(n: int, chains: dict, pred, floor: float, levels: int) -> list
     return rows
 
 
-def _frequency_part(ring: np.ndarray, n: int, j: int) -> np.ndarray:
-    """The part of a real ring in the frequencies ``j`` and ``n - j`` (``j = 0``: ``O`` and the centroids)."""
-    o, A, B = fourier_components(ring, n)
-    keep = np.zeros(n, dtype=bool)
-    keep[j % n] = keep[(n - j) % n] = True
-    A = np.where(keep[:, None], A, 0)
-    B = np.where(keep[:, None], B, 0)
-    a = np.fft.ifft(A * n, axis=0).real
-    b = np.fft.ifft(B * n, axis=0).real
-    centre = o if j == 0 else np.zeros(3)
-    return np.vstack([centre[None, :], a, b])
-
-
-@dataclass(frozen=True)
-class _Chain:
-    steps: list
-    one_step: float
-    centre_errors: list
-    leak: float
-
-
-def _chain(ring, n, levels, matrix, *, limit=None, frequency=None) -> _Chain:
-    """Single OpenSubdiv steps, each fed the ring the previous one returned (renormalised)."""
-    from symdecomp.verify.opensubdiv import osd_central_rings
-
-    one_step, leak = 0.0, 0.0
-    offset, scale = np.zeros(3), 1.0  # real coordinates = offset + scale * stored
-    current = np.array(ring, dtype=np.float64)
-    centre_errors = [] if limit is None else [float(np.max(np.abs(current[0] - limit)))]
-    steps = []
-    for _ in range(levels):
-        out = osd_central_rings(_ring_as_mesh(tuple(map(tuple, current)), n, 1), 0, 1).rings[1]
-        predicted = _matvec(matrix, current)
-        one_step = max(one_step, float(np.max(np.abs(predicted - out)) / max(1.0, np.max(np.abs(current)))))
-        if frequency is not None:
-            kept = _frequency_part(out, n, frequency)
-            base = out[0] if frequency != 0 else np.zeros(3)
-            # what OpenSubdiv put into other frequencies, relative to what it kept
-            leak = max(leak, float(np.max(np.abs(out - kept - _centre_only(base, n))) / np.max(np.abs(kept - _centre_only(kept[0], n)))))
-            out = kept if frequency == 0 else kept + _centre_only(base, n)
-        steps.append((fourier_components(current, n), fourier_components(out, n)))
-        if limit is not None:
-            centre_errors.append(float(np.max(np.abs(offset + scale * out[0] - limit))))
-        # renormalise: O to the origin and magnitude about 1 (power-of-two scaling is exact)
-        shift = out[0].copy()
-        moved = out - shift
-        size = float(np.max(np.abs(moved)))
-        power = 2.0 ** (-math.floor(math.log2(size))) if size > 0 else 1.0
-        offset = offset + scale * shift
-        scale = scale / power
-        current = moved * power
-    return _Chain(steps, one_step, centre_errors, leak)
-
-
-def _centre_only(o: np.ndarray, n: int) -> np.ndarray:
-    """The ring with every point at ``o`` (a translation)."""
-    return np.tile(o, (2 * n + 1, 1))
-
-
 def _exact(name, disagreement, predicted=None, observed=None) -> Prediction:
     return Prediction(name, "exact", predicted, observed, disagreement, None, None, disagreement <= EXACT_TOLERANCE)
 
@@ -445,3 +376,91 @@ def _limit(name, predicted, observed, errors, rate, floor, levels) -> Prediction
     last = errors[-1]
     bound = 100.0 * rate**levels + 1e-12
     return Prediction(name, "limit", predicted, observed, last, rate, _rate_from(errors, floor), last <= bound)
+
+
+def _frequency_values(spectrum, n: int) -> dict[int, list[complex]]:
+    """The distinct eigenvalues of each frequency ``j`` (1 left out at ``j = 0``), largest first."""
+    out: dict[int, list[complex]] = {j: [] for j in range(n // 2 + 1)}
+    for e in spectrum.eigenvalues:
+        value = complex(float(e.value.real.mid()), float(e.value.imag.mid()))
+        for j in e.frequencies:
+            if j in out and not (j == 0 and abs(value - 1) < 1e-12):
+                out[j].append(value)
+    return {j: sorted(v, key=abs, reverse=True) for j, v in out.items()}
+
+
+def compare_loop_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceComparison:
+    """Run the comparisons of this module at valence ``n`` (needs the OpenSubdiv bridge).
+
+    Tolerances as in :func:`~symdecomp.verify.oracle.compare_with_opensubdiv`.
+    """
+    from symdecomp.verify.opensubdiv.loop import osd_loop_one_ring_matrix, osd_loop_position_mask, osd_loop_tangent_masks
+
+    n = check_valence(n)
+    levels = check_levels(levels, minimum=2, maximum=MAX_LEVELS, reason="double precision: beyond this the ring is below rounding")
+    seed = check_int(seed, "seed", minimum=0, maximum=2**32 - 1)
+    scheme = loop()
+    exact = ring_subdivision_matrix(scheme, n, 1).exact_matrix()
+    S = np.array([[float(exact[r, c]) for c in range(n + 1)] for r in range(n + 1)])
+    osd = np.array(osd_loop_one_ring_matrix(n))
+    rows = [_exact("one-step matrix", float(np.max(np.abs(osd - S))))]
+
+    spectrum = ring_spectrum(scheme, n, 1, digits=20, exact=False, jordan=False)
+    ours = sorted((complex(float(e.value.real.mid()), float(e.value.imag.mid())) for e in spectrum.eigenvalues
+                   for _ in range(e.multiplicity)), key=lambda z: (z.real, z.imag))
+    theirs = sorted(np.linalg.eigvals(osd), key=lambda z: (z.real, z.imag))
+    rows.append(_exact("spectrum", max(abs(a - b) for a, b in zip(ours, theirs)) if len(ours) == len(theirs) else math.inf))
+
+    masks = ring_masks(scheme, n, 1, digits=20)
+    position = np.array([float(masks["position"]["O"])] + [float(x) for x in masks["position"]["a"]])
+    rows.append(_exact("limit mask", float(np.max(np.abs(np.array(osd_loop_position_mask(n)) - position)))))
+    tangents = np.array([[float(m["O"])] + [float(x) for x in m["a"]] for m in masks["tangents"]])
+    osd_tangents = np.array(osd_loop_tangent_masks(n))
+    C, *_ = np.linalg.lstsq(tangents.T, osd_tangents.T, rcond=None)
+    spans = abs(np.linalg.det(C)) > 1e-8
+    residual = float(np.abs(tangents.T @ C - osd_tangents.T).max() / max(1.0, np.abs(osd_tangents).max()))
+    rows.append(_exact("tangent plane", residual if spans else math.inf))
+
+    rng = random.Random(f"symdecomp-oracle-loop:{seed}:{n}")
+    ring0 = np.array([[rng.uniform(-1.0, 1.0) for _ in range(3)] for _ in range(n + 1)])
+    values = _frequency_values(spectrum, n)
+    floor = 1e-13
+    _, centres = loop_chain(ring0, n, levels, None)
+    limit = position @ ring0
+    # the centre sees frequency 0 only (the vertex rule weighs all a_i alike): it converges with its value after 1
+    rate = abs(values[0][0])
+    rows.append(_limit("limit position", None, None, [float(np.max(np.abs(c - limit))) for c in centres], rate, floor, levels))
+    rows.extend(_loop_shrink_rates(ring0, n, levels, values, floor))
+    return ValenceComparison(n, levels, seed, tuple(rows))
+
+
+def _loop_shrink_rates(ring0: np.ndarray, n: int, levels: int, values: dict, floor: float) -> list[Prediction]:
+    """``shrink rate j=..``: a generic linear functional of frequency ``j``'s part, step over step."""
+    ell = np.array([complex(*x) for x in np.random.default_rng(12345).uniform(-1, 1, (3, 2))])
+    rows = []
+    for j in range(n // 2 + 1):
+        steps, _ = loop_chain(triangle_frequency_part(ring0, n, j), n, levels, j)
+        seq = []
+        for before, after in steps:
+            if j == 0:
+                z0, z1 = before[1:].mean(axis=0) - before[0], after[1:].mean(axis=0) - after[0]
+            else:
+                z0, z1 = np.fft.fft(before[1:], axis=0)[j], np.fft.fft(after[1:], axis=0)[j]
+            seq.append(complex(np.dot(ell, z1) / np.dot(ell, z0)))
+        dom = values[j][0]
+        errors = [abs(x - dom) for x in seq]
+        name = f"shrink rate j={j}"
+        if len(values[j]) == 1:  # one value in this frequency: every step shrinks by it exactly
+            rows.append(_exact(name, max(errors), predicted=abs(dom), observed=abs(seq[-1])))
+        else:
+            rows.append(_limit(name, abs(dom), abs(seq[-1]), errors, abs(values[j][1] / dom), floor, levels))
+    return rows
+
+
+#: The comparison at an interior vertex, by the lattice's regular patch: OpenSubdiv's Catmull-Clark or Loop.
+_COMPARISONS = {BICUBIC: compare_with_opensubdiv, BOX_SPLINE: compare_loop_with_opensubdiv}
+
+
+def comparison(lattice: Lattice):
+    """The comparison with OpenSubdiv at an interior vertex of ``lattice``: a function of ``(n, levels, seed)``."""
+    return lattice.select(_COMPARISONS, "the comparison with OpenSubdiv")

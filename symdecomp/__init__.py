@@ -116,9 +116,10 @@ nothing else.
                    vertex (mirror blocks) (``certify``; the closed forms' symmetric functions, ``symmetric_functions``;
                    the distinct values and multiplicities proved, ``multiplicities``; the O(n) route ``structural``; of a StencilScheme of the zoo,
                    ``zoo_certify``; beyond n = 19 from the structural blocks, ``zoo_structural``), their results and
-                   the C1 verdicts (``result``); OpenSubdiv at an interior vertex, Catmull-Clark or Loop by the lattice (``oracle``; single steps
-                   chained and split by frequency, ``step_chains``),
-                   boundary, crease and corner vertices' ``oracle_sharp``,
+                   the C1 verdicts (``result``); OpenSubdiv at an interior vertex (Catmull-Clark or Loop by the lattice) or
+                   a boundary, crease, corner or dart vertex (``oracle``; what it reports, ``comparisons``; the
+                   toolkit's Catmull-Clark numbers, ``predictions``; single steps chained and split by frequency,
+                   ``step_chains``; a level's matrices measured against each other, ``matrix_measures``),
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,

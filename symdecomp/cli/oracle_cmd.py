@@ -1,7 +1,7 @@
 """``symdecomp oracle --n 3:12 [--scheme loop]``: the toolkit's Catmull-Clark or Loop predictions checked against OpenSubdiv.
 
 ``symdecomp oracle --kind boundary,corner,crease,dart --k 1:12 --sharpness 0,1/2,1,5/2,inf``: the same at
-boundary, corner, crease and dart vertices (:mod:`symdecomp.verify.oracle_sharp`).
+boundary, corner, crease and dart vertices (:mod:`symdecomp.verify.oracle`).
 
 ``symdecomp oracle --mesh FILE``: the limit position and normal of every analysed vertex of a mesh file (with its
 crease and corner tags), as ``symdecomp inspect`` computes them, against OpenSubdiv's limit masks, to 1e-12
@@ -185,7 +185,7 @@ def _run_mesh(args) -> int:
 
 
 def _run_sharp(args, kinds) -> int:
-    from symdecomp.verify.oracle_sharp import SHARPNESS, compare_sharp_case, sharp_cases
+    from symdecomp.verify.oracle import SHARPNESS, compare_sharp_case, sharp_cases
 
     try:
         import symdecomp.schemes.sector  # noqa: F401  (the toolkit's side of the comparison)

@@ -111,11 +111,12 @@ nothing else.
                    masks (``sharp_masks``); rules with cos(theta_k) weights over Q(cos(pi/k)) (``sharp_field``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a
-                   boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified at an interior vertex
-                   (1-ring closed forms or K-ring frequency factors) or a boundary, crease, corner or dart
-                   vertex (mirror blocks) (``certify``; the closed forms' symmetric functions, ``symmetric_functions``;
-                   the distinct values and multiplicities proved, ``multiplicities``; the O(n) route ``structural``; of a StencilScheme of the zoo,
-                   ``zoo_certify``; beyond n = 19 from the structural blocks, ``zoo_structural``), their results and
+                   boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified
+                   at an interior vertex (1-ring closed forms or K-ring frequency factors), a boundary, crease, corner
+                   or dart vertex (mirror blocks) or the neighbourhood of a StencilScheme of the zoo (``certify``; the
+                   closed forms' symmetric functions, ``symmetric_functions``; the distinct values and multiplicities
+                   proved, ``multiplicities``; the O(n) route ``structural``; beyond n = 19 for the zoo from the
+                   structural blocks, ``zoo_structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv at an interior vertex (Catmull-Clark or Loop by the lattice) or
                    a boundary, crease, corner or dart vertex (``oracle``; what it reports, ``comparisons``; the
                    toolkit's Catmull-Clark numbers, ``predictions``; single steps chained and split by frequency,
@@ -271,11 +272,10 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.verify.artifacts": ("ArtifactIndicators", "artifact_indicators"),
     "symdecomp.verify.c1": ("C1Result", "c1_test"),
     "symdecomp.verify.c1_sharp": ("SharpC1Result", "c1_sharp_test"),
-    "symdecomp.verify.certify": ("Certificate", "certify", "certify_ring", "SharpCertificate", "certify_sharp"),
+    "symdecomp.verify.certify": ("Certificate", "certify", "certify_ring", "SharpCertificate", "certify_sharp", "certify_zoo"),
     "symdecomp.verify.numeric": ("NumericCheck", "numeric_check"),
     "symdecomp.verify.result": ("C1Verdict", "CrossCheckResult", "CrossCheckStatus"),
     "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
-    "symdecomp.verify.zoo_certify": ("certify_zoo",),
     "symdecomp.verify.zoo_artifacts": ("ZooArtifacts", "zoo_artifacts"),
     "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),
 }

@@ -1,6 +1,6 @@
 """Certified cross-check: a proof, at one neighbourhood, that a spectrum is the full matrix's.
 
-One question, asked of three neighbourhoods: an interior vertex of valence ``n`` with its 1-ring
+One question, asked of every neighbourhood: an interior vertex of valence ``n`` with its 1-ring
 (the closed forms, :func:`certify`), an interior vertex with its ``K``-ring under any scheme (the
 frequency factors, :func:`certify_ring`), a boundary, crease, corner or dart vertex (the mirror
 decomposition's blocks, :func:`certify_sharp`). Each proof is an exact polynomial identity
@@ -56,6 +56,16 @@ polynomial whose roots are the frequencies ``cos(pi j/k)``
 (:class:`~symdecomp.errors.NotApplicableError`, saying so): darts under such rules and creases whose
 two sides lie in different fields ``Q(cos(pi/k_i))``.
 
+*A StencilScheme of the zoo* (:func:`certify_zoo`; any neighbourhood the engine builds, a vertex or a dual face),
+the blocks' eigenvalues (:func:`~symdecomp.analysis.zoo_blocks.zoo_blocks`, orbit labelling) against the full matrix's.
+With every entry rational, ``chi_S`` in FLINT rationals has its roots isolated with their exact multiplicities
+(``fmpz_poly.complex_roots``); each must lie in exactly one of the blocks' balls and the multiplicities must add up
+(a root outside every ball refutes the blocks, a root in two leaves the certificate undecided). With entries in
+``Q(cos 2 pi/N)``: the full matrix is, entry by entry and exactly, the block-circulant matrix of its blocks, so its
+spectrum is theirs (factored exactly, roots in certified Arb balls; multiplicities certified when the balls of
+distinct values are disjoint). Beyond :data:`~symdecomp.analysis.zoo_structure.READ_AT` + 3 the blocks are read once
+in Arb, ``O(n)`` per valence (:mod:`symdecomp.verify.zoo_structural`).
+
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> r = certify(catmull_clark(), 4)
 >>> r.status.value, r.distinct, r.multiplicities
@@ -64,6 +74,14 @@ two sides lie in different fields ``Q(cos(pi/k_i))``.
 >>> c = certify_ring(loop(), 7, 1)
 >>> c.status.value, c.distinct, c.multiplicities, c.multiplicities_certified
 ('agree', 5, (1, 2, 2, 1, 2), True)
+>>> from symdecomp.schemes.stencils import Term, Rule, KindRules, StencilScheme, J, M
+>>> corner = Term(sp.KroneckerDelta(J, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * J / M)) / (4 * M), over="face")
+>>> ds = StencilScheme("doo-sabin", "quad", "dual", (KindRules("corner", (Rule((corner,)),)),))
+>>> c = certify_zoo(ds, 4)
+>>> c.status.value, c.route, c.multiplicities_certified
+('agree', 'charpoly', True)
+>>> certify_zoo(ds, 5).route
+'structural'
 """
 
 from __future__ import annotations
@@ -78,19 +96,31 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.ring_blocks import RingBlocks, ring_blocks
 from symdecomp.analysis.ring_charpoly import product_identity
-from symdecomp.analysis.ring_spectrum import acb_text, ring_spectrum
+from symdecomp.analysis.ring_spectrum import RingSpectrum, acb_text, ring_spectrum
+from symdecomp.analysis.zoo_blocks import zoo_blocks
+from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks, structural_applies
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
 from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.validate import check_bits, check_digits, check_limit, check_valence
-from symdecomp.verify.multiplicities import distinct_count, factored_values, largest_first, separate_or_refute, value_text
+from symdecomp.verify.multiplicities import (
+    disjoint,
+    distinct_count,
+    factored_values,
+    largest_first,
+    separate_or_refute,
+    value_text,
+)
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 from symdecomp.verify.symmetric_functions import closed_form_identity, symmetric_functions
 
 __all__ = ["Certificate", "certify", "certify_ring", "SharpCertificate", "certify_sharp", "certify_sharp_field",
-           "describe_vertex"]
+           "describe_vertex", "certify_zoo"]
 
 
 @dataclass(frozen=True)
@@ -356,3 +386,65 @@ def certify_sharp_field(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCer
     message = (f"{name}: proved: {method}; {len(values)} distinct eigenvalues, multiplicities exact (the norm of chi_S "
                "factored over Q, roots picked by gcds in the field)")
     return SharpCertificate(status=CrossCheckStatus.AGREE, method=method, multiplicities_certified=True, message=message, **common)
+
+
+def _hull(e: Eigenvalue) -> flint.acb:
+    """The ball holding every root of the value's cluster."""
+    assert isinstance(e.hull, flint.acb)
+    return e.hull
+
+
+def _charpoly_verdict(S: sp.Matrix, spectrum: RingSpectrum, prec: int) -> tuple[CrossCheckStatus, str, bool, int]:
+    """``(status, message, multiplicities certified, height bits)`` by the roots of the exact ``chi_S``."""
+    size = S.shape[0]
+    F = flint.fmpq_mat(size, size, [to_fmpq(x) for x in S])
+    chi = F.charpoly()
+    denominator = flint.fmpz(1)
+    for c in chi.coeffs():
+        denominator = denominator * c.q // denominator.gcd(c.q)
+    integral = flint.fmpz_poly([int(c * denominator) for c in chi.coeffs()])
+    height = max(int(c).bit_length() for c in integral.coeffs())
+    with flint.ctx.workprec(prec):
+        roots: list[tuple[flint.acb, int]] = integral.complex_roots()  # (ball, multiplicity) pairs
+        counts = [0] * len(spectrum.eigenvalues)
+        for ball, multiplicity in roots:
+            hits = [i for i, e in enumerate(spectrum.eigenvalues) if _hull(e).overlaps(ball)]
+            if not hits:
+                return CrossCheckStatus.DISAGREE, f"the full matrix has the eigenvalue {ball.mid().str(10)} that no block gives", False, height
+            if len(hits) > 1:
+                return CrossCheckStatus.UNDECIDED, "an eigenvalue of the full matrix lies in two of the blocks' balls", False, height
+            counts[hits[0]] += multiplicity
+    expected = [e.multiplicity for e in spectrum.eigenvalues]
+    if counts != expected:
+        return CrossCheckStatus.DISAGREE, f"multiplicities {counts} of the full matrix against {expected} from the blocks", False, height
+    return CrossCheckStatus.AGREE, "chi_S's roots (exact multiplicities) are the blocks' values", True, height
+
+
+def certify_zoo(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20) -> Certificate:
+    """Prove (or refute) that the frequency blocks give the spectrum of ``scheme``'s full matrix at valence ``n``."""
+    digits = check_digits(digits)
+    if depth is None and structural_applies(scheme, check_valence(n)):
+        from symdecomp.verify.zoo_structural import structural_zoo_certificate
+
+        return structural_zoo_certificate(scheme, n, digits=digits)
+    zm = zoo_matrix(scheme, n, depth)
+    n = zm.n  # checked: an int
+    blocks = zoo_blocks(zm)  # raises if the matrix is not block circulant (exact, entry by entry)
+    spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=zm.depth, mesh=scheme.lattice)
+    multiplicities = tuple(e.multiplicity for e in spectrum.eigenvalues)
+    values = tuple(e.text for e in spectrum.eigenvalues)
+    S = sp.Matrix(zm.matrix)
+    steps = f" over {scheme.steps} steps" if scheme.steps > 1 else ""
+    if all(x.is_Rational for x in S):
+        status, note, certified, height = _charpoly_verdict(S, spectrum, max(128, 4 * digits + 64))
+        message = f"n = {n}{steps}: {'proved' if status == CrossCheckStatus.AGREE else status.value}: {note}"
+        return Certificate(n=n, scheme=scheme.name, status=status, message=message, method="roots of chi_S in FLINT rationals",
+                           distinct=len(values), multiplicities=multiplicities, values=values, multiplicities_certified=certified,
+                           height_bits=height, route="charpoly")
+    certified = disjoint([_hull(e) for e in spectrum.eigenvalues])
+    note = "multiplicities certified" if certified else "multiplicities not certified (balls of distinct values overlap)"
+    method = "S is block circulant (exact, entry by entry); blocks factored exactly, roots in Arb"
+    message = f"n = {n}{steps}: proved: {method}; {len(values)} distinct eigenvalues, {note}"
+    return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.AGREE, message=message, method=method,
+                       distinct=len(values), multiplicities=multiplicities, values=values, multiplicities_certified=certified,
+                       height_bits=0, route="structural")

@@ -36,7 +36,8 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
 __all__ = ["separate_or_refute", "refute", "value_text", "describe_labels", "factored_values", "distinct_count",
-           "cluster_multiplicities", "squarefree_degree", "largest_first"]
+           "cluster_multiplicities", "squarefree_degree", "largest_first",
+           "disjoint"]
 
 def separate_or_refute(cf, n, subs, chi, squarefree, identity, digits, max_prec):
     """``(balls, clusters, prec, refutation)``: the closed forms as Arb balls, doubling the precision.
@@ -222,7 +223,7 @@ def cluster_multiplicities(scheme: Scheme, blocks: RingBlocks, spectrum) -> str 
     entries = spectrum.eigenvalues
     if any(not e.members for e in entries):
         return "the spectrum does not list its clusters' roots"
-    if not _disjoint([e.value for e in entries]):
+    if not disjoint([e.value for e in entries]):
         return "two clusters of Arb balls overlap"
     ff = frequency_factors(blocks)
     field = None
@@ -266,7 +267,7 @@ def _root_value(scheme: Scheme, ff, n: int, member, field):
         return None
 
 
-def _disjoint(balls) -> bool:
+def disjoint(balls) -> bool:
     """Whether the (complex) balls are pairwise disjoint; candidates by a sweep on the real parts, decided in Arb."""
     spans = sorted(((float(b.real.mid()) - float(b.real.rad()), float(b.real.mid()) + float(b.real.rad()), b) for b in balls),
                    key=lambda t: t[0])

@@ -387,7 +387,7 @@ def ring_numeric_check(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 
         deviation = abs(mean - value)
         spread = max((abs(z - value) for z in mine), default=float("nan"))
         labels = tuple(ClosedFormLabel(k, "frequency factor") for k in e.frequencies)
-        matches.append(EigenvalueMatch(replace(e, value=value, labels=labels), len(mine), mpmath.mpf(deviation), mpmath.mpf(spread)))
+        matches.append(EigenvalueMatch(replace(e, value=value, labels=labels, hull=None), len(mine), mpmath.mpf(deviation), mpmath.mpf(spread)))
         if not deviation <= tol * max(1.0, abs(value)):
             failures.append(f"{e.text} (k = {', '.join(map(str, e.frequencies))}; multiplicity {e.multiplicity}): "
                             f"the full matrix's eigenvalues average {mean:.12g}, off by {deviation:.3g}")

@@ -170,6 +170,16 @@ def test_numeric_ring_check():
             assert r.ok, r.message
 
 
+def test_numeric_ring_check_crosses_the_pool(capsys):
+    """A K-ring check travels from a worker: its matches hold no Arb ball (the factored spectrum's hull does not pickle)."""
+    import pickle
+
+    r = ring_numeric_check(loop(), 4, 2, digits=10)
+    assert pickle.loads(pickle.dumps(r)).matches == r.matches
+    assert main(["check", "--scheme", "loop", "--n", "3:5", "--rings", "2", "--quiet"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].startswith("3 valences: 3 agree")
+
+
 def test_masks_match_the_one_ring_masks_and_loop_limit_formula():
     for n in (3, 5, 8):
         a = ring_masks(catmull_clark(), n, 1, digits=15)

@@ -76,7 +76,7 @@ __all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eige
 class EigenvalueMatch:
     """One distinct closed-form eigenvalue and the numeric eigenvalues of the full matrix matched with it.
 
-    A match between two spectra, not an eigenvalue: the eigenvalue is :attr:`eigenvalue` (the one type,
+    A match between two spectra, not an eigenvalue: the eigenvalue is :attr:`EigenvalueMatch.eigenvalue` (the one type,
     :class:`~symdecomp.analysis.eigenvalue.Eigenvalue`); the other fields say how the full matrix's
     eigenvalues fell around it (how many, their mean's deviation, their spread), facts of the comparison
     that a spectrum does not have.

@@ -89,7 +89,7 @@ on the same tagged fan, doubles; the measures are :mod:`symdecomp.verify.matrix_
   every face, for a random fan, against our exact limit mask applied to it.
 
 Every measure is absolute on weights of size at most 1 (relative to 1); all must be at most
-:data:`TOLERANCE` (1e-12). While a semi-sharp crease has not decayed, OpenSubdiv's limit and tangent
+:data:`~symdecomp.verify.comparisons.TOLERANCE` (1e-12). While a semi-sharp crease has not decayed, OpenSubdiv's limit and tangent
 masks are those of the crease rule of that level (its ``Limit`` takes the level's rule), not the
 limit of the surface: those rows are reported with their numbers and marked not comparable, and
 the limit point (the patch table refines the crease away) is the check of the true limit there.
@@ -402,7 +402,7 @@ def sharp_cases(scheme: str, kinds=KINDS, ks=range(1, 13), sharpness=SHARPNESS) 
 
 
 def _ours(case: SharpCase, level: int) -> mpmath.matrix:
-    """Our exact matrix of the level (rational, or algebraic for Loop), its entries to :data:`DIGITS` digits."""
+    """Our exact matrix of the level (rational, or algebraic for Loop), its entries to :data:`~symdecomp.verify.matrix_measures.DIGITS` digits."""
     from symdecomp.schemes.sector import sharp_subdivision_matrix
     from symdecomp.schemes.sharp import SharpOptions
 

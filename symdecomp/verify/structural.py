@@ -286,7 +286,7 @@ def structural_certificate(scheme: Scheme, n: int, rings: int = 1, *, blocks: Ri
     (Prop. 6.2 and Remark 6.1, proved for every ``n`` in ``symdecomp claims --section 6``: the
     vectors ``e_0``, ``e_p (x) v_k`` form a basis in which the matrix is block diagonal). So the
     frequency factors are the spectrum. Multiplicities are those of the Arb clusters, certified
-    by :func:`cluster_multiplicities` where its exact arguments apply (else the certificate says
+    by :func:`~symdecomp.verify.multiplicities.cluster_multiplicities` where its exact arguments apply (else the certificate says
     why not).
     """
     n, digits = check_valence(n), check_digits(digits)

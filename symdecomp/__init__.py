@@ -138,8 +138,8 @@ nothing else.
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
                    map at one valence, ``zoo_characteristic``); dyadic limit positions for
-                   the patch evaluator at an interior vertex or a boundary or corner sector (``patch_eval``) and the crease, boundary and
-                   corner data (``sector_evaldata``); the tuning region with Reif's
+                   the patch evaluator at an interior vertex or a boundary or corner sector and for the crease,
+                   boundary and corner data (``patch_eval``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and
                    the artifact indicators (``artifacts``; a StencilScheme of the zoo's density and curvature regime from its

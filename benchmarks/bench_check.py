@@ -37,8 +37,9 @@ import mpmath  # noqa: E402
 from symdecomp.analysis.closed_forms import derived_closed_forms  # noqa: E402
 from symdecomp.cli.check_cmd import check_valences  # noqa: E402
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix  # noqa: E402
-from symdecomp.verify.certify import certify, symmetric_functions  # noqa: E402
+from symdecomp.verify.certify import certify  # noqa: E402
 from symdecomp.verify.numeric import numeric_check  # noqa: E402
+from symdecomp.verify.symmetric_functions import symmetric_functions  # noqa: E402
 
 
 def baseline(scheme, n: int, dps: int) -> tuple[float, int]:

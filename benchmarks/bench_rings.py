@@ -34,7 +34,7 @@ from symdecomp.schemes.full_matrix import entries_characteristic_polynomial  # n
 from symdecomp.schemes.loop import loop  # noqa: E402
 from symdecomp.schemes.rings import ring_subdivision_matrix  # noqa: E402
 from symdecomp.schemes.scheme import catmull_clark  # noqa: E402
-from symdecomp.verify.ring_certify import certify_ring  # noqa: E402
+from symdecomp.verify.certify import certify_ring  # noqa: E402
 
 #: The issue's targets (seconds, megabytes).
 TARGETS = {"certify 3..256": 60.0, "certify n=1000": 60.0, "memory n=1000 (MB)": 2048.0, "spectrum n=1000": 2.0, "masks n=1000": 2.0,

@@ -36,7 +36,7 @@ if what == "spectrum":
     from symdecomp.analysis.zoo_spectrum import zoo_spectrum
     zoo_spectrum(scheme, n, depth)
 else:
-    from symdecomp.verify.zoo_certify import certify_zoo
+    from symdecomp.verify.certify import certify_zoo
     assert certify_zoo(scheme, n, depth).status.value == "agree"
 """
 

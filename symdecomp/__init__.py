@@ -117,12 +117,17 @@ nothing else.
                    (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
                    masks (``sharp_masks``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
-``verify/``        cross-checks against the full matrices: numeric (``numeric``, certified Arb
-                   enclosures ``arb_numeric``, ``ring_numeric``), certified (``certify``,
-                   ``ring_certify``, the O(n) route ``structural``; of a StencilScheme of the zoo,
-                   ``zoo_certify``; beyond n = 19 from the structural blocks, ``zoo_structural``), their results and
-                   the C1 verdicts (``result``); OpenSubdiv (``oracle``, Loop's ``oracle_loop``,
-                   boundary, crease and corner vertices' ``oracle_sharp``,
+``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a
+                   boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified
+                   at an interior vertex (1-ring closed forms or K-ring frequency factors), a boundary, crease, corner
+                   or dart vertex (mirror blocks) or the neighbourhood of a StencilScheme of the zoo (``certify``; the
+                   closed forms' symmetric functions, ``symmetric_functions``; the distinct values and multiplicities
+                   proved, ``multiplicities``; the O(n) route ``structural``; beyond n = 19 for the zoo from the
+                   structural blocks, ``zoo_structural``), their results and
+                   the C1 verdicts (``result``); OpenSubdiv at an interior vertex (Catmull-Clark or Loop by the lattice) or
+                   a boundary, crease, corner or dart vertex (``oracle``; what it reports, ``comparisons``; the
+                   toolkit's Catmull-Clark numbers, ``predictions``; single steps chained and split by frequency,
+                   ``step_chains``; a level's matrices measured against each other, ``matrix_measures``),
                    through the bridge ``opensubdiv``, its build script ``opensubdiv.build`` and
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,
@@ -144,16 +149,14 @@ nothing else.
                    map at one valence, ``zoo_characteristic``), Zorin's test where no spline patch exists (primal
                    triangle schemes, the modified butterfly: ``c1_zorin``; the regular rules' difference bounds,
                    ``zorin_bounds``; the characteristic net grown and refined by them, ``zorin_net``); dyadic limit positions for
-                   the patch evaluator (``patch_eval``), the boundary one (``sharp_patch_eval``) and the crease, boundary and
-                   corner data (``sector_evaldata``), a dual scheme's face data (``dual_evaldata``); the tuning region with Reif's
+                   the patch evaluator at an interior vertex or a boundary or corner sector and for the crease,
+                   boundary and corner data (``patch_eval``), a dual scheme's face data (``dual_evaldata``); the tuning region with Reif's
                    weight-independent conditions certified (``tuning_c1``); the certified
                    second-order eigenstructure and curvature regime (``second_order_spectrum``) and
                    the artifact indicators (``artifacts``; a StencilScheme of the zoo's density and curvature regime from its
                    engine's spectrum, ``zoo_artifacts``); certified shape at the vertex: the sign
                    of the Gaussian curvature of a central surface (``curvature``), elliptic,
-                   hyperbolic or hybrid, and the shape chart (``shape``); the certificate of the mirror
-                   decomposition of a boundary, crease, corner or dart vertex (``sharp_certify``), its numeric check against
-                   the refined matrix (``sharp_numeric``); a mesh's
+                   hyperbolic or hybrid, and the shape chart (``shape``); a mesh's
                    kinds' C1 verdicts and curvature regimes (``mesh_verdicts``) and its limits against
                    OpenSubdiv's (``oracle_mesh``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
@@ -279,13 +282,10 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.verify.artifacts": ("ArtifactIndicators", "artifact_indicators"),
     "symdecomp.verify.c1": ("C1Result", "c1_test"),
     "symdecomp.verify.c1_sharp": ("SharpC1Result", "c1_sharp_test"),
-    "symdecomp.verify.certify": ("Certificate", "certify"),
+    "symdecomp.verify.certify": ("Certificate", "certify", "certify_ring", "SharpCertificate", "certify_sharp", "certify_zoo"),
     "symdecomp.verify.numeric": ("NumericCheck", "numeric_check"),
     "symdecomp.verify.result": ("C1Verdict", "CrossCheckResult", "CrossCheckStatus"),
-    "symdecomp.verify.ring_certify": ("certify_ring",),
     "symdecomp.verify.second_order_spectrum": ("CurvatureResult", "second_order_eigenstructure"),
-    "symdecomp.verify.sharp_certify": ("SharpCertificate", "certify_sharp"),
-    "symdecomp.verify.zoo_certify": ("certify_zoo",),
     "symdecomp.verify.zoo_artifacts": ("ZooArtifacts", "zoo_artifacts"),
     "symdecomp.verify.shape": ("ShapeChart", "ShapeResult", "classify_shape", "shape_chart"),
 }

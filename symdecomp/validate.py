@@ -97,7 +97,7 @@ MAX_BITS = 1 << 16
 #: 12 is 16 million pieces.
 MAX_DEPTH = 12
 #: The most digits of agreement asked of a double-precision check
-#: (:func:`~symdecomp.verify.ring_numeric.ring_numeric_check`, ``symdecomp check --digits``).
+#: (:func:`~symdecomp.verify.numeric.ring_numeric_check`, ``symdecomp check --digits``).
 MAX_DOUBLE_DIGITS = 12
 #: ``digits`` of a JSON document whose numbers are the correctly rounded float64 values (shortest form)
 #: (:mod:`symdecomp.output.evaldata`, the least ``symdecomp evaldata --digits``).

@@ -36,7 +36,7 @@ symbolically (:func:`frequency_factors`), and the product form
 is the full matrix's (FLINT), written through the centre weights (it is affine in them: only row 0
 holds them), and compared with the product exactly, at ``size`` rational points for each corner of
 the centre weights (:func:`product_identity`, the identity behind
-:func:`~symdecomp.verify.ring_certify.certify_ring`).
+:func:`~symdecomp.verify.certify.certify_ring`).
 
 >>> from symdecomp.schemes.loop import loop_warren
 >>> d = ring_charpoly(loop_warren(), 3)

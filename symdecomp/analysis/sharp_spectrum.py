@@ -9,7 +9,7 @@ rational factor, with its exact multiplicity. Each is then named by the block of
 sector of ``k`` faces (``theta = pi j/k``), its last mode (``j = k`` on quads: ``b_i = (-1)^i``), or at a dart
 the symmetric (cosine) part. The names are matched by value (a block eigenvalue's 40-digit value to the
 nearest certified root); that the blocks *are* the spectrum, with multiplicities, is what
-``check --certify`` proves (:mod:`symdecomp.verify.sharp_certify`). Semi-sharp edges (finite sharpness) have
+``check --certify`` proves (:mod:`symdecomp.verify.certify`). Semi-sharp edges (finite sharpness) have
 no mirror decomposition: their eigenvalues are named by part only, at each refinement level whose matrix
 differs from the level before, until the sharpness has decayed to 0.
 """

@@ -29,7 +29,8 @@ from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.verify.certify import certify, symmetric_functions
+from symdecomp.verify.certify import certify
+from symdecomp.verify.symmetric_functions import symmetric_functions
 
 #: The closed forms the statement names, Eq. 34 and Eq. 43, as derived for the scheme (a function of the scheme).
 CLOSED_FORMS = derived_closed_forms

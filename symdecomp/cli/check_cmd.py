@@ -101,7 +101,7 @@ def register(sub) -> None:
 def _run_sharp(args, plot) -> int:
     """``check --k A:B --boundary --certify`` (and --corner, --crease K2, --dart): one certified row per K."""
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
-    from symdecomp.verify.sharp_certify import certify_sharp
+    from symdecomp.verify.certify import certify_sharp
 
     refuse_semi_sharp(args)
     if not args.certify:
@@ -170,7 +170,7 @@ def _run_sharp_numeric(args) -> int:
     from symdecomp.analysis.sharp_structural import structural_values
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
     from symdecomp.parallel import ordered_map
-    from symdecomp.verify.sharp_numeric import numeric_row
+    from symdecomp.verify.numeric import numeric_row
 
     for option in ("--route", "--structural", "--solver"):
         if given(args, option.lstrip("-")):
@@ -201,10 +201,8 @@ def _run_sharp_numeric(args) -> int:
 
 
 def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):
-    from symdecomp.verify.certify import certify
-    from symdecomp.verify.numeric import numeric_check
-    from symdecomp.verify.ring_certify import certify_ring
-    from symdecomp.verify.ring_numeric import ring_numeric_check
+    from symdecomp.verify.certify import certify, certify_ring
+    from symdecomp.verify.numeric import numeric_check, ring_numeric_check
     from symdecomp.verify.structural import certify_structural
 
     if rings is not None:  # the any-scheme route: K-ring frequency matrices
@@ -226,7 +224,7 @@ def check_valences(scheme: Scheme, valences, *, certified: bool, dps: int = 50, 
     ``"dask=ADDRESS"``); the first valence is checked here first, so that the symbolic step is
     done once, before the workers fork. ``rings``: check the ``rings``-ring frequency matrices
     (any scheme) instead of the 1-ring closed forms; ``method``: the certificate (``"charpoly"``
-    or ``"structure"``, see :func:`~symdecomp.verify.ring_certify.certify_ring` and
+    or ``"structure"``, see :func:`~symdecomp.verify.certify.certify_ring` and
     :mod:`~symdecomp.verify.structural`); ``solver``: numeric mode's eigen-solver (``"mpmath"`` or ``"flint"``).
     """
     from symdecomp.analysis.closed_forms import derived_closed_forms

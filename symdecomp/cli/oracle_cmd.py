@@ -1,7 +1,7 @@
 """``symdecomp oracle --n 3:12 [--scheme loop]``: the toolkit's Catmull-Clark or Loop predictions checked against OpenSubdiv.
 
 ``symdecomp oracle --kind boundary,corner,crease,dart --k 1:12 --sharpness 0,1/2,1,5/2,inf``: the same at
-boundary, corner, crease and dart vertices (:mod:`symdecomp.verify.oracle_sharp`).
+boundary, corner, crease and dart vertices (:mod:`symdecomp.verify.oracle`).
 
 ``symdecomp oracle --mesh FILE``: the limit position and normal of every analysed vertex of a mesh file (with its
 crease and corner tags), as ``symdecomp inspect`` computes them, against OpenSubdiv's limit masks, to 1e-12
@@ -119,14 +119,10 @@ def _comparison(scheme):
     def rules(s):
         return (s.lattice, s.edge_rule, s.face_rule, s.vertex_rule)
 
-    if rules(scheme) == rules(catmull_clark()):
-        from symdecomp.verify.oracle import compare_with_opensubdiv
+    if rules(scheme) in (rules(catmull_clark()), rules(loop())):
+        from symdecomp.verify.oracle import comparison
 
-        return compare_with_opensubdiv
-    if rules(scheme) == rules(loop()):
-        from symdecomp.verify.oracle_loop import compare_loop_with_opensubdiv
-
-        return compare_loop_with_opensubdiv
+        return comparison(scheme.lattice)
     raise InvalidInputError(f"--scheme {scheme.name}: OpenSubdiv implements Catmull-Clark and Loop with their standard "
                             "weights only; this scheme's rules are neither")
 
@@ -192,7 +188,7 @@ def _run_mesh(args) -> int:
 
 
 def _run_sharp(args, kinds) -> int:
-    from symdecomp.verify.oracle_sharp import SHARPNESS, compare_sharp_case, sharp_cases
+    from symdecomp.verify.oracle import SHARPNESS, compare_sharp_case, sharp_cases
 
     try:
         import symdecomp.schemes.sector  # noqa: F401  (the toolkit's side of the comparison)

@@ -164,8 +164,8 @@ def refuse_sharp_options(args, *names: str) -> None:
 
 
 def describe(vertex) -> str:
-    """The vertex's short name (:func:`symdecomp.verify.sharp_certify.describe_vertex`)."""
-    from symdecomp.verify.sharp_certify import describe_vertex
+    """The vertex's short name (:func:`symdecomp.verify.certify.describe_vertex`)."""
+    from symdecomp.verify.certify import describe_vertex
 
     return describe_vertex(vertex)
 

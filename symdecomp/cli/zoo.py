@@ -73,7 +73,7 @@ def run_zoo_masks(args: argparse.Namespace) -> int:
 
 def run_zoo_check(args: argparse.Namespace) -> int:
     """``check --n A:B --certify --scheme <zoo scheme>``: one certificate per valence."""
-    from symdecomp.verify.zoo_certify import certify_zoo
+    from symdecomp.verify.certify import certify_zoo
 
     if not args.certify:
         raise InvalidInputError(f"--scheme {args.scheme.name}: a scheme of the zoo is checked with --certify (the blocks "

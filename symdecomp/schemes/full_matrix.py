@@ -262,7 +262,7 @@ def entries_characteristic_polynomial(entries: dict, size: int) -> flint.fmpq_po
 
     Row and column 0 are balanced as in :func:`characteristic_polynomial` (the centre carries the
     ``1/n`` denominators); FLINT's ``fmpz_mat.charpoly`` does the rest. Used by the K-ring
-    certificates (:mod:`symdecomp.verify.ring_certify`).
+    certificates (:mod:`symdecomp.verify.certify`).
     """
     entries = {k: to_fmpq(v) for k, v in entries.items()}
     return _rational_charpoly(entries, size, f"of a {size} x {size} matrix")

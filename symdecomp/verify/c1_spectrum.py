@@ -106,7 +106,10 @@ def round_down(x: float, digits: int = 4) -> float:
 
 @dataclass(frozen=True)
 class Eigen:
-    """An eigenvalue (ball) of the 2-ring matrix with the frequency it comes from."""
+    """An eigenvalue (ball) of the 2-ring matrix with the frequency it comes from: a root of one frequency block.
+
+    Not :class:`~symdecomp.analysis.eigenvalue.Eigenvalue` (a distinct eigenvalue of the matrix, its multiplicity
+    algebraic): the test reasons block by block, and roots of different blocks that tie are what it must examine."""
 
     value: flint.acb
     frequency: int

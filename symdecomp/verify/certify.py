@@ -1,164 +1,126 @@
-"""Certified cross-check: a proof, for one valence ``n``, that the closed forms are the spectrum.
+"""Certified cross-check: a proof, at one neighbourhood, that a spectrum is the full matrix's.
 
-The certificate is an exact polynomial identity. Let ``chi_S`` be the characteristic
-polynomial of the full ``(2n+1) x (2n+1)`` subdivision matrix, computed exactly over ``Q``
-by FLINT from the matrix built out of the rules (:mod:`symdecomp.schemes.full_matrix`; no block
-structure). Let ``v_1..v_{2n+1}`` be the closed-form eigenvalues (:mod:`symdecomp.analysis.closed_forms`)
-and ``C(lambda) = prod_i (lambda - v_i)`` their characteristic polynomial. The claim
-"the closed forms are the eigenvalues, with multiplicities" is exactly ``chi_S = C``. It is
-proved as follows.
+One question, asked of every neighbourhood: an interior vertex of valence ``n`` with its 1-ring
+(the closed forms, :func:`certify`), an interior vertex with its ``K``-ring under any scheme (the
+frequency factors, :func:`certify_ring`), a boundary, crease, corner or dart vertex (the mirror
+decomposition's blocks, :func:`certify_sharp`). Each proof is an exact polynomial identity
+``chi_S = (the spectrum's characteristic polynomial)``, ``chi_S`` the characteristic polynomial of
+the neighbourhood's matrix built without the block structure (by the rules, or by exact refinement)
+and computed by FLINT; the distinct values and their multiplicities are certified on top
+(:mod:`symdecomp.verify.multiplicities`). The ``O(n)`` route that compares the matrix with the block
+matrix entry by entry instead is :mod:`symdecomp.verify.structural`.
 
-1. *Symbolically, once per scheme.* For the two closed forms ``v_+(c, s), v_-(c, s)`` of
-   ``M_k`` the elementary symmetric functions ``e_1 = v_+ + v_-`` and ``e_2 = v_+ v_-`` are
-   expanded; the square roots and absolute values must cancel, leaving polynomials in
-   ``c = cos(k pi/n)``, ``s = sin(k pi/n)``. These are rewritten, exactly, as Laurent
-   polynomials in ``omega = exp(2 pi i k/n) = (c + i s)^2`` with rational coefficients (they
-   must be even in ``(c, s)``). Likewise the three closed forms of Eq. 43 give the cubic
-   ``F_0`` whose coefficients must simplify to rational functions of ``n``.
-2. *Exactly, for each n.* ``C = F_0 * prod_{k=1}^{n-1} (lambda^2 - e_1(omega^k) lambda + e_2(omega^k))``.
-   For a rational ``lambda_0`` the product over the ``n-1`` roots of unity ``omega != 1`` is a
-   resultant, ``prod_k G(omega^k) = Res(1 + omega + ... + omega^{n-1}, G)`` for
-   ``G(omega) = omega^m (lambda_0^2 - e_1 lambda_0 + e_2)``, up to the sign ``(-1)^{(n-1)m}``:
-   an exact rational computed by FLINT. ``chi_S(lambda_0) = C(lambda_0)`` is checked at the
-   ``2n+1`` points ``lambda_0 = 0, 1, ..., 2n``. Both sides are monic of degree ``2n+1``, so
-   their difference has degree at most ``2n`` and ``2n+1`` roots: it is zero. QED.
+*The 1-ring closed forms.* Let ``v_1..v_{2n+1}`` be the closed-form eigenvalues
+(:mod:`symdecomp.analysis.closed_forms`) and ``C(lambda) = prod_i (lambda - v_i)``; the claim "the
+closed forms are the eigenvalues, with multiplicities" is exactly ``chi_S = C``. Step 1, once per
+scheme: the closed forms' symmetric functions as exact Laurent polynomials in ``omega``
+(:mod:`symdecomp.verify.symmetric_functions`). Step 2, for each n:
+``C = F_0 * prod_{k=1}^{n-1} (lambda^2 - e_1(omega^k) lambda + e_2(omega^k))``; for a rational
+``lambda_0`` the product over the ``n-1`` roots of unity ``omega != 1`` is a resultant,
+``prod_k G(omega^k) = Res(1 + omega + ... + omega^{n-1}, G)`` for
+``G(omega) = omega^m (lambda_0^2 - e_1 lambda_0 + e_2)``, up to the sign ``(-1)^{(n-1)m}``: an exact
+rational computed by FLINT. ``chi_S(lambda_0) = C(lambda_0)`` is checked at the ``2n+1`` points
+``lambda_0 = 0, 1, ..., 2n``. Both sides are monic of degree ``2n+1``, so their difference has degree
+at most ``2n`` and ``2n+1`` roots: it is zero. QED. Repeated eigenvalues (``n = 4``: ``1/4`` three
+times), defective ones (a Jordan block of the Eq. 43 matrix) and ``k = n/2`` need no special care:
+the identity is between polynomials, multiplicities included. When it fails (or the symmetric
+functions do not reduce, so that it cannot be formed), the offending eigenvalue is named with a
+rigorous reason; if none can be shown the result is ``undecided``, which is a failure.
 
-Repeated eigenvalues (``n = 4``: ``1/4`` three times), defective ones (a Jordan block of the
-Eq. 43 matrix) and ``k = n/2`` need no special care: the identity is between polynomials,
-multiplicities included. The distinct values and their multiplicities are certified on top:
-the squarefree part of ``chi_S`` (exact) gives the number of distinct eigenvalues; the closed
-forms evaluated as Arb balls (rigorous enclosures) fall into as many disjoint clusters, so the
-clusters are exactly the distinct eigenvalues and their sizes the multiplicities.
+*The K-ring, any scheme.* The spectrum of the full ``K``-ring matrix ``S``
+(:func:`~symdecomp.schemes.rings.ring_subdivision_matrix`) is, with multiplicities, the union of the
+spectra of ``E_0`` and of ``E(omega_n^k)``, ``k = 1..n-1`` (:func:`symdecomp.analysis.frequency.ring_blocks`),
+whose factored characteristic polynomials give :func:`symdecomp.analysis.spectrum.ring_spectrum`:
+``chi_S(lambda) = det(lambda I - E_0) prod_{k=1}^{n-1} det(lambda I - E(omega^k))``, both sides at
+``size`` rational points, the product over the roots of unity a resultant as above
+(:func:`~symdecomp.analysis.charpoly.product_identity`, the one home of that product, also
+behind ``charpoly``). *Algebraic centre weights* (Loop's ``cos(2 pi/n)``): only row 0 holds them,
+and both sides are affine in them, so the identity is proved for the weights as free symbols, at
+``1 + (number of weights)`` affinely independent rational points: it then holds for the actual
+weights. No floating point is involved.
 
-When the identity fails (or the symmetric functions do not reduce, so that it cannot be
-formed), the offending eigenvalue is named with a rigorous reason: its Arb enclosure ``v``
-makes ``chi_S(v)`` a ball that excludes 0 (``v`` is not an eigenvalue), or the closed forms put
-more values into an isolating ball of a root of ``chi_S`` than that root's multiplicity. If
-neither can be shown the result is ``undecided``, which is a failure.
+*A boundary, crease, corner or dart vertex.* The blocks of the mirror decomposition
+(:mod:`symdecomp.analysis.mirror`: the crease block ``C``, or at a dart the symmetric part, and the
+sine blocks ``M(theta_j)`` of each sector) against the one-step matrix ``S`` of the vertex's 1-ring
+by exact refinement of the tagged mesh (:func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`):
+
+    chi_S(lambda) = det(lambda I - C) prod_sectors prod_j det(lambda I - M(theta_j)),
+
+proved exactly: the crease rows of ``S`` equal ``C`` entry by entry, and the two polynomials are
+equal in ``Q[lambda]``, the product over a sector's blocks as a resultant with the Chebyshev
+polynomial whose roots are the frequencies ``cos(pi j/k)``
+(:func:`symdecomp.analysis.mirror_threshold.charpoly_check`). Rules whose weights hold
+``cos(theta_k)`` (Biermann-Levin-Zorin's) give ``S`` over ``K = Q(cos(pi/k))``
+(:mod:`symdecomp.analysis.triangular_eigen`); the same identity is then proved in ``K[lambda]``
+(:func:`certify_sharp_field`). Scope: infinitely sharp edges (the decomposition's); out of reach
+(:class:`~symdecomp.errors.NotApplicableError`, saying so): darts under such rules and creases whose
+two sides lie in different fields ``Q(cos(pi/k_i))``.
+
+*A StencilScheme of the zoo* (:func:`certify_zoo`; any neighbourhood the engine builds, a vertex or a dual face),
+the blocks' eigenvalues (:func:`~symdecomp.analysis.zoo_blocks.zoo_blocks`, orbit labelling) against the full matrix's.
+With every entry rational, ``chi_S`` in FLINT rationals has its roots isolated with their exact multiplicities
+(``fmpz_poly.complex_roots``); each must lie in exactly one of the blocks' balls and the multiplicities must add up
+(a root outside every ball refutes the blocks, a root in two leaves the certificate undecided). With entries in
+``Q(cos 2 pi/N)``: the full matrix is, entry by entry and exactly, the block-circulant matrix of its blocks, so its
+spectrum is theirs (factored exactly, roots in certified Arb balls; multiplicities certified when the balls of
+distinct values are disjoint). Beyond :data:`~symdecomp.analysis.zoo_structure.READ_AT` + 3 the blocks are read once
+in Arb, ``O(n)`` per valence (:mod:`symdecomp.verify.zoo_structural`).
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> r = certify(catmull_clark(), 4)
 >>> r.status.value, r.distinct, r.multiplicities
 ('agree', 5, (1, 2, 3, 2, 1))
+>>> from symdecomp.schemes.loop import loop
+>>> c = certify_ring(loop(), 7, 1)
+>>> c.status.value, c.distinct, c.multiplicities, c.multiplicities_certified
+('agree', 5, (1, 2, 2, 1, 2), True)
+>>> from symdecomp.schemes.stencils import Term, Rule, KindRules, StencilScheme, J, M
+>>> corner = Term(sp.KroneckerDelta(J, 0) / 4 + (3 + 2 * sp.cos(2 * sp.pi * J / M)) / (4 * M), over="face")
+>>> ds = StencilScheme("doo-sabin", "quad", "dual", (KindRules("corner", (Rule((corner,)),)),))
+>>> c = certify_zoo(ds, 4)
+>>> c.status.value, c.route, c.multiplicities_certified
+('agree', 'charpoly', True)
+>>> certify_zoo(ds, 5).route
+'structural'
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
-from functools import partial
+from dataclasses import dataclass
 from typing import ClassVar
 
 import flint
 import sympy as sp
 
-from symdecomp.algebra.clusters import overlap_groups
-from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.analysis.charpoly import product_identity
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.analysis.eigenvalue import ClosedFormLabel
-from symdecomp.analysis.spectrum import format_value
-from symdecomp.errors import UnsupportedExpressionError
+from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.frequency import RingBlocks, ring_blocks
+from symdecomp.analysis.spectrum import RingSpectrum, acb_text, ring_spectrum
+from symdecomp.analysis.zoo_blocks import zoo_blocks
+from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks, structural_applies
+from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, parameter_values
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.symbols import cos_jtheta, sin_jtheta
-from symdecomp.symbols import n as N
-from symdecomp.validate import cached, check_bits, check_digits, check_type, check_valence
+from symdecomp.schemes.stencils import StencilScheme
+from symdecomp.validate import check_bits, check_digits, check_limit, check_valence
+from symdecomp.verify.multiplicities import (
+    disjoint,
+    distinct_count,
+    factored_values,
+    largest_first,
+    separate_or_refute,
+    value_text,
+)
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
+from symdecomp.verify.symmetric_functions import closed_form_identity, symmetric_functions
 
-__all__ = ["SymmetricFunctions", "symmetric_functions", "Certificate", "certify", "closed_form_characteristic_value"]
-
-_ETA = sp.Symbol("eta")
-
-
-@dataclass(frozen=True)
-class SymmetricFunctions:
-    """Step 1 of the proof: the closed forms' symmetric functions, as exact polynomials."""
-
-    #: Coefficients ``(e_1, e_2, e_3)`` of ``F_0 = lambda^3 - e_1 lambda^2 + e_2 lambda - e_3`` in ``n``.
-    frequency_zero: tuple[sp.Expr, ...] | None
-    #: ``e_1 = v_+ + v_-`` as ``{power of omega: coefficient in n}``.
-    trace: dict | None
-    #: ``e_2 = v_+ v_-`` as ``{power of omega: coefficient in n}``.
-    determinant: dict | None
-    #: Why the identity cannot be formed, when one of the above is ``None``.
-    reason: str = ""
-    #: Exact evaluators of the coefficients, by expression; not part of the value.
-    _compiled: dict = field(default_factory=dict, init=False, repr=False, compare=False, hash=False)
-
-    def rational_at(self, expr: sp.Expr, at: dict):
-        """``expr`` at ``{n: .., parameter: ..}`` as an ``fmpq``, or ``None`` if it is not rational there."""
-        variables = tuple(sorted(at, key=str))
-        key = (expr, variables)
-        if key not in self._compiled:
-            try:
-                self._compiled[key] = compile_expression(expr, variables, "fmpq")
-            except UnsupportedExpressionError:
-                self._compiled[key] = None
-        f = self._compiled[key]
-        values = [sp.sympify(at[v], strict=True) for v in variables]
-        if f is not None and all(v.is_Rational for v in values):
-            try:
-                return f(*(to_fmpq(v) for v in values))
-            except (UnsupportedExpressionError, ZeroDivisionError):
-                pass
-        return _rational(expr, at)
-
-
-def _to_laurent(expr: sp.Expr):
-    """Rewrite a polynomial in ``c, s`` as a Laurent polynomial in ``omega``; ``None`` if impossible."""
-    expr = sp.expand(expr)
-    if expr.has(sp.Abs) or any(
-        isinstance(p, sp.Pow) and not p.exp.is_Integer and p.base.has(cos_jtheta, sin_jtheta) for p in expr.atoms(sp.Pow)
-    ):
-        return None
-    z = sp.expand(expr.subs({cos_jtheta: (_ETA + 1 / _ETA) / 2, sin_jtheta: (_ETA - 1 / _ETA) / (2 * sp.I)}))
-    terms: dict = {}
-    for term in sp.Add.make_args(z):
-        coeff, power = term.as_coeff_exponent(_ETA)
-        if coeff.has(_ETA) or not power.is_Integer:
-            return None
-        terms[int(power)] = terms.get(int(power), sp.Integer(0)) + coeff
-    out = {}
-    for power, coeff in terms.items():
-        coeff = sp.cancel(coeff)
-        if coeff == 0:
-            continue
-        if power % 2 or coeff.has(sp.I) or coeff.has(cos_jtheta, sin_jtheta):
-            return None
-        out[power // 2] = coeff
-    return out
-
-
-def _has_radical(expr: sp.Expr) -> bool:
-    return any(not p.exp.is_Integer for p in expr.atoms(sp.Pow))
-
-
-def _rational_function(expr: sp.Expr) -> sp.Expr:
-    """A symmetric function of radicals reduced to a rational function (``simplify`` if need be)."""
-    fast = sp.factor(sp.cancel(sp.expand(sp.radsimp(sp.expand(expr)))))
-    return fast if not _has_radical(fast) else sp.factor(sp.simplify(sp.radsimp(sp.expand(expr))))
-
-
-@cached(32, cf=partial(check_type, kind=ClosedForms, argument="closed forms", hint="derived_closed_forms(scheme)"))
-def symmetric_functions(cf: ClosedForms) -> SymmetricFunctions:
-    """Step 1 of the proof (see the module docstring), cached per set of closed forms."""
-    reasons = []
-    v_plus, v_minus = cf.frequency_k
-    trace = _to_laurent(sp.expand(v_plus + v_minus))
-    det = _to_laurent(sp.expand(v_plus * v_minus))
-    if trace is None:
-        reasons.append(f"{cf.names[0]} + {cf.names[1]} = {sp.simplify(v_plus + v_minus)} is not a polynomial in cos, sin")
-    if det is None:
-        reasons.append(f"{cf.names[0]} * {cf.names[1]} does not reduce to a polynomial in cos, sin")
-    zero = None
-    if len(cf.frequency_zero) == 3:
-        r = cf.frequency_zero
-        e = (r[0] + r[1] + r[2], r[0] * r[1] + r[0] * r[2] + r[1] * r[2], r[0] * r[1] * r[2])
-        zero = tuple(_rational_function(x) for x in e)
-    else:
-        reasons.append(f"Eq. 43 has 3 eigenvalues, the closed forms give {len(cf.frequency_zero)}")
-    return SymmetricFunctions(zero, trace, det, "; ".join(reasons))
+__all__ = ["Certificate", "certify", "certify_ring", "SharpCertificate", "certify_sharp", "certify_sharp_field",
+           "describe_vertex", "certify_zoo"]
 
 
 @dataclass(frozen=True)
@@ -197,48 +159,6 @@ class Certificate(CrossCheckResult):
         }
 
 
-def _rational(expr: sp.Expr, subs: dict):
-    value = expr.subs(subs) if expr.free_symbols else expr
-    if not value.is_Rational:
-        value = sp.radsimp(sp.simplify(value))
-    if not value.is_Rational:
-        return None
-    return to_fmpq(value)
-
-
-def closed_form_characteristic_value(sym: SymmetricFunctions, n: int, subs: dict, points) -> list | None:
-    """``C(lambda_0)`` exactly for each rational ``lambda_0`` in ``points`` (step 2), or ``None``.
-
-    ``None`` when the symmetric functions are not rational at this ``n``.
-    """
-    at = {N: n, **subs}
-    zero = [sym.rational_at(e, at) for e in sym.frequency_zero]
-    trace = {p: sym.rational_at(c, at) for p, c in sym.trace.items()}
-    det = {p: sym.rational_at(c, at) for p, c in sym.determinant.items()}
-    if None in zero or None in trace.values() or None in det.values():
-        return None
-    low = min([0, *trace, *det])
-    high = max([0, *trace, *det])
-    shift = -low  # G(omega) = omega^shift * (lambda^2 - e_1 lambda + e_2)
-    cyclotomic = flint.fmpq_poly([1] * n)  # 1 + omega + ... + omega^(n-1): the roots omega^k, k = 1..n-1
-    sign = -1 if ((n - 1) * shift) % 2 else 1
-    e1, e2, e3 = zero
-    out = []
-    for lam in points:
-        lam = flint.fmpq(lam)
-        coeffs = [flint.fmpq(0)] * (high - low + 1)
-        coeffs[shift] += lam * lam
-        for p, c in trace.items():
-            coeffs[p + shift] -= c * lam
-        for p, c in det.items():
-            coeffs[p + shift] += c
-        G = flint.fmpq_poly(coeffs)
-        rest = cyclotomic.resultant(G) * sign
-        f0 = ((lam - e1) * lam + e2) * lam - e3
-        out.append(f0 * rest)
-    return out
-
-
 def certify(
     scheme: Scheme,
     n: int,
@@ -264,9 +184,9 @@ def certify(
     height = max(int(c.p).bit_length() for c in chi.coeffs())
     squarefree = chi.numer().factor_squarefree()[1]  # [(f, e)]: chi ~ prod f^e, f squarefree, coprime
     distinct = sum(f.degree() for f, _ in squarefree)
-    identity, method = _polynomial_identity(chi, symmetric_functions(cf), n, subs)
-    balls, clusters, prec, refutation = _separate_or_refute(cf, n, subs, chi, squarefree, identity, digits, max_prec)
-    order = sorted(clusters, key=lambda cl: (-_mid_abs(balls[cl[0]]), -_mid_re(balls[cl[0]])))
+    identity, method = closed_form_identity(chi, symmetric_functions(cf), n, subs)
+    balls, clusters, prec, refutation = separate_or_refute(cf, n, subs, chi, squarefree, identity, digits, max_prec)
+    order = largest_first(clusters, balls)
     # the printed values: a square root of a vanishing discriminant (a defective eigenvalue)
     # is only known to half the working precision, so they are recomputed with room to spare
     accurate = flint.arb(10) ** (-(digits + 5))
@@ -288,130 +208,242 @@ def certify(
         method=method,
         distinct=distinct,
         multiplicities=tuple(len(cl) for cl in order),
-        values=tuple(_text(balls[cl[0]], digits) for cl in order),
+        values=tuple(value_text(balls[cl[0]], digits) for cl in order),
         multiplicities_certified=certified,
         height_bits=height,
         message=message,
     )
 
 
-def _polynomial_identity(chi, sym: SymmetricFunctions, n: int, subs: dict) -> tuple[bool, str]:
-    """Step 2 of the proof: whether ``chi_S = C`` (at ``2n+1`` points), and how that was decided."""
-    if sym.frequency_zero is None or sym.trace is None or sym.determinant is None:
-        return False, f"identity not formed: {sym.reason}"
-    points = range(2 * n + 1)
-    values = closed_form_characteristic_value(sym, n, subs, points)
-    if values is None:
-        return False, "symmetric functions not rational at this n"
-    identity = all(chi(flint.fmpq(x)) == v for x, v in zip(points, values))
-    return identity, f"chi_S = prod(closed-form factors) at {2 * n + 1} points" if identity else "chi_S != closed-form char. poly"
+def certify_ring(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks | None = None, digits: int = 20,
+                 method: str = "charpoly") -> Certificate:
+    """Prove (or refute, exactly) that the frequency factors give the spectrum of the full ``rings``-ring matrix.
 
-
-def _separate_or_refute(cf, n, subs, chi, squarefree, identity, digits, max_prec):
-    """``(balls, clusters, prec, refutation)``: the closed forms as Arb balls, doubling the precision.
-
-    When the identity holds, until the balls fall into as many clusters as ``chi_S`` has
-    distinct roots; otherwise until one closed form is rigorously refuted. Either way at most
-    up to ``max_prec`` bits.
+    ``blocks``: the block form under test (default: the derived one; tests pass a wrong one).
+    ``method``: ``"charpoly"`` (the identity above, dense FLINT characteristic polynomials) or
+    ``"structure"`` (:func:`~symdecomp.verify.structural.structural_certificate`: ``O(n)``, for large valences).
     """
-    labels = cf.eigenvalue_labels(n)
-    prec, refutation = 128, None
-    while True:
-        balls = cf.values(n, subs, engine="arb", prec=prec)
-        clusters = _clusters(balls)
-        if identity:
-            done = len(clusters) == sum(f.degree() for f, _ in squarefree)
-        else:
-            with flint.ctx.workprec(prec):
-                refutation = _refute(chi, squarefree, balls, labels, n, digits)
-            done = refutation is not None
-        if done or prec >= max_prec:
-            return balls, clusters, prec, refutation
-        prec *= 2
+    n, digits = check_limit(check_valence(n), "certify_ring(n)", "valence n"), check_digits(digits)
+    if method not in ("charpoly", "structure"):
+        raise InvalidInputError(f"method must be 'charpoly' or 'structure', got {method!r}")
+    blocks = blocks or ring_blocks(scheme, rings)
+    if method == "structure":
+        from symdecomp.verify.structural import structural_certificate  # the O(n) route builds on this module's type
+
+        return structural_certificate(scheme, n, rings, blocks=blocks, digits=digits)
+    identity = product_identity(scheme, n, rings, blocks=blocks)
+    S, free, fixed, chis, failure = identity.matrix, list(identity.free), identity.fixed, identity.chis, identity.failure
+    size = S.size
+    spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False, jordan=False)
+    multiplicities = tuple(e.multiplicity for e in spectrum.eigenvalues)
+    texts = tuple(e.text for e in spectrum.eigenvalues)
+    height = max(int(c.p).bit_length() for c in chis[0].coeffs())
+    if failure is not None:
+        point, bad, left, right = failure
+        where = f" with centre weights {point}" if free else ""
+        message = (f"n = {n}: refuted: chi_S({bad}) = {left} but the frequency factors give {right}{where} "
+                   "(exact): the frequency matrices are not the spectrum of the full matrix")
+        return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.DISAGREE, message=message,
+                           method="chi_S != product of frequency factors", distinct=0, multiplicities=multiplicities,
+                           values=texts, multiplicities_certified=False, height_bits=height)
+    count = 1 + len(free)
+    method = f"chi_S = prod(frequency factors) at {size} points"
+    if free:
+        method += f", for {count} values of the centre weights {', '.join(map(str, free))} (affine in them)"
+    distinct = distinct_count(scheme, blocks, n, chis, free, fixed)
+    certified = distinct is not None and distinct == len(spectrum.eigenvalues)
+    note = "multiplicities certified" if certified else "multiplicities not certified (distinct values not separated or not decidable)"
+    message = f"n = {n}: proved: {method}; {len(spectrum.eigenvalues)} distinct eigenvalues, {note}"
+    return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.AGREE, message=message, method=method,
+                       distinct=distinct if distinct is not None else len(spectrum.eigenvalues), multiplicities=multiplicities,
+                       values=texts, multiplicities_certified=certified, height_bits=height)
 
 
-def _mid_abs(z):
-    return float(abs(z.mid()).mid())
+def describe_vertex(vertex) -> str:
+    """A short name of a sharp vertex: ``boundary k=5``, ``corner k=2``, ``crease 3+4``, ``dart n=5``; semi-sharp with ``s=``."""
+    sectors = tuple(vertex.sectors)
+    if not vertex.closed:
+        kind = f"{'corner' if vertex.corner else 'boundary'} k={sectors[0]}" if len(sectors) == 1 else f"boundary {'+'.join(map(str, sectors))}"
+    elif len(sectors) == 1:
+        kind = f"dart n={sectors[0]}"
+    else:
+        kind = f"crease {'+'.join(map(str, sectors))}"
+    if vertex.sharpness != math.inf and vertex.closed:
+        kind += f", sharpness {vertex.sharpness}"
+    return kind
 
 
-def _mid_re(z):
-    return float(z.real.mid())
+@dataclass(frozen=True)
+class SharpCertificate(Certificate):
+    """The certified check of one sharp vertex; ``n`` is the sector's face count ``k`` (a dart's valence)."""
+
+    #: The vertex, as :func:`describe_vertex` names it.
+    vertex: str = ""
+
+    def details(self) -> dict:
+        return {"vertex": self.vertex, **super().details()}
 
 
-def _text(ball, digits):
-    import mpmath
-
-    with mpmath.workdps(digits + 5):
-        re = mpmath.mpf(ball.real.mid().str(digits + 5, radius=False))
-        im = mpmath.mpf(0) if ball.imag.contains(0) else mpmath.mpf(ball.imag.mid().str(digits + 5, radius=False))
-        value = re if im == 0 else mpmath.mpc(re, im)
-        return format_value(value, digits)
+def _is_dart(vertex) -> bool:
+    return vertex.closed and len(vertex.sectors) == 1
 
 
-def _clusters(balls) -> list[list[int]]:
-    """Connected components of the overlap graph of the balls (equal values always overlap)."""
-    return overlap_groups(balls, lambda a, b: a.overlaps(b), key=lambda b: float(b.real.lower()),
-                          beyond=lambda a, b: b.real.lower() > a.real.upper())
+def certify_sharp(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCertificate:
+    """Prove (or refute, exactly) that the mirror decomposition's blocks are the spectrum of the vertex's matrix.
+
+    ``vertex``: a :class:`~symdecomp.schemes.sector.SharpVertex` with infinitely sharp edges (the mirror
+    decomposition's scope). Raises :class:`~symdecomp.errors.NotApplicableError` for irrational rules.
+    """
+    from symdecomp.analysis.mirror import sector_decomposition, vertex_layout
+    from symdecomp.analysis.mirror_threshold import charpoly_check
+    from symdecomp.analysis.triangular_eigen import sharp_matrix
+    from symdecomp.schemes.sector import sharp_subdivision_matrix
+
+    scheme, digits = check_scheme(scheme), check_digits(digits)
+    reads_angle = scheme.sharp is not None and scheme.sharp.near_edge_centre is not None and not _is_dart(vertex)
+    if reads_angle or not isinstance(sharp_matrix(scheme, vertex), flint.fmpq_mat):
+        return certify_sharp_field(scheme, vertex, digits=digits)
+    S = sp.Matrix(sharp_subdivision_matrix(scheme, vertex))
+    d = sector_decomposition(scheme, vertex)
+    equal, chi, blocks = charpoly_check(scheme, vertex, matrix=S)
+    distinct, multiplicities, texts = factored_values(chi, digits)
+    common = dict(n=vertex.sectors[0], scheme=scheme.name, distinct=distinct, multiplicities=multiplicities, values=texts,
+                  height_bits=max(int(c.p).bit_length() for c in chi.coeffs()), route="mirror", vertex=describe_vertex(vertex))
+    name = describe_vertex(vertex)
+    if d.crease is not None:
+        lay = vertex_layout(scheme, vertex)
+        idx = [0] + [lay.a(m) for m in lay.sharp]
+        rows = S.extract(idx, idx)
+        if rows != d.crease:
+            return SharpCertificate(status=CrossCheckStatus.DISAGREE, method="crease rows of S != the crease block C",
+                                    multiplicities_certified=False, **common,
+                                    message=f"{name}: refuted: the refined matrix's crease rows are {rows.tolist()}, the "
+                                    f"decomposition's crease block is {d.crease.tolist()} (exact)")
+    if not equal:
+        return SharpCertificate(status=CrossCheckStatus.DISAGREE, method="chi_S != product of the blocks' polynomials",
+                                multiplicities_certified=False, **common,
+                                message=f"{name}: refuted: chi_S = {chi}, the blocks give {blocks} (exact)")
+    head = "C" if d.crease is not None else "the symmetric part"
+    method = f"crease rows = C; chi_S = det(l - {head}) prod_j det(l - M(theta_j)) in Q[l] (Chebyshev resultants)"
+    if d.crease is None:
+        method = f"chi_S = det(l - {head}) prod_j det(l - M(theta_j)) in Q[l] (Chebyshev resultants)"
+    message = f"{name}: proved: {method}; {distinct} distinct eigenvalues, multiplicities exact (chi_S factored over Q)"
+    return SharpCertificate(status=CrossCheckStatus.AGREE, method=method, multiplicities_certified=True, message=message, **common)
 
 
-def _describe(labels: list[ClosedFormLabel]) -> str:
-    kinds = sorted({lab.label for lab in labels})
-    ks = sorted({lab.frequency for lab in labels})
-    return f"{'; '.join(kinds)}; k = {', '.join(map(str, ks))}"
+def _blocks_in_field(scheme, vertex, S, lay, dart: bool) -> list:
+    """``det(l - C) prod_sectors prod_j det(l - M(theta_j))`` in ``K[l]``, ``K`` the field of ``S``'s entries."""
+    from symdecomp.algebra.cos_field import affine_in, field_charpoly, poly_mul, specialize
+    from symdecomp.algebra.number_field import FieldElement
+    from symdecomp.analysis.mirror_threshold import sine_part_in_cos
+
+    idx = [0] + [lay.a(m) for m in lay.sharp]
+    blocks = field_charpoly(S.submatrix(idx))
+    for k in lay.sectors:
+        pq = affine_in(sp.cos(lay.angle / k), S.weight)
+        if pq is None:
+            raise NotApplicableError(f"cos({sp.sstr(lay.angle / k)}) is not in the field of the matrix's entries, "
+                                     f"Q({sp.sstr(S.weight)}): sectors of different sizes are out of reach")
+        ck = FieldElement(flint.fmpq_poly([to_fmpq(pq[0]), to_fmpq(pq[1])]) % S.modulus, S.modulus)
+        blocks = poly_mul(blocks, specialize(sine_part_in_cos(scheme, k, dart=dart), ck))
+    return blocks
 
 
-def _nearest(squarefree, v) -> str:
-    """``"; the nearest eigenvalue is ... at distance ..."``, from a rigorous root isolation."""
-    product = flint.fmpz_poly(1)
-    for f, _ in squarefree:
-        product *= f
-    roots = [r for r, _ in product.complex_roots()]
-    if not roots:
-        return ""
-    best = min(roots, key=lambda r: float(abs(r - v).mid()))
-    distance = abs(best - v)
-    return f"; the nearest eigenvalue is {_text(best, 25)}, at distance {distance.mid().str(3, radius=False)}"
+def certify_sharp_field(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCertificate:
+    """:func:`certify_sharp` for rules with ``cos(theta_k)`` weights: the identity proved in ``Q(cos(pi/k))[lambda]``."""
+    from symdecomp.algebra.cos_field import FieldMatrix, field_charpoly, norm_charpoly
+    from symdecomp.analysis.mirror import sector_decomposition, vertex_layout
+    from symdecomp.analysis.sharp_spectrum import field_name
+    from symdecomp.analysis.triangular_eigen import merge, sharp_values
+
+    scheme, digits = check_scheme(scheme), check_digits(digits)
+    S, _, values = sharp_values(scheme, vertex, prec=max(256, 4 * digits + 64))
+    if isinstance(S, flint.fmpq_mat):  # cos(theta_k) rational at this k: the field is Q
+        S = FieldMatrix.from_sympy([[S[i, j] for j in range(S.ncols())] for i in range(S.nrows())], sp.Integer(0))
+    lay, name = vertex_layout(scheme, vertex), describe_vertex(vertex)
+    if len(lay.sharp) == 1:
+        raise NotApplicableError(f"{name}: a dart under rules with cos(theta_k) weights is out of reach of the certificate")
+    field = field_name(S)
+    values = merge(values)
+    with flint.ctx.workprec(4 * digits + 64):
+        texts = tuple(acb_text(v.ball, digits) for v in values)
+    norm = norm_charpoly(S)
+    common = dict(n=vertex.sectors[0], scheme=scheme.name, distinct=len(values), multiplicities=tuple(v.multiplicity for v in values),
+                  values=texts, height_bits=max(int(c).bit_length() for c in norm.numer().coeffs()), route="mirror", vertex=name)
+    idx = [0] + [lay.a(m) for m in lay.sharp]
+    crease = FieldMatrix.from_sympy(sector_decomposition(scheme, vertex).crease.tolist(), S.weight)
+    if S.submatrix(idx).rows != crease.rows:
+        return SharpCertificate(status=CrossCheckStatus.DISAGREE, method=f"crease rows of S != the crease block C (in {field})",
+                                multiplicities_certified=False, **common,
+                                message=f"{name}: refuted: the refined matrix's crease rows differ from the crease block (exact)")
+    chi, blocks = field_charpoly(S), _blocks_in_field(scheme, vertex, S, lay, False)
+    method = f"crease rows = C; chi_S = det(l - C) prod_j det(l - M(theta_j)) in {field}[l] (Chebyshev resultants)"
+    if chi != blocks:
+        return SharpCertificate(status=CrossCheckStatus.DISAGREE, method=f"chi_S != product of the blocks' polynomials in {field}[l]",
+                                multiplicities_certified=False, **common,
+                                message=f"{name}: refuted: chi_S differs from the blocks' product in {field}[l] (exact)")
+    message = (f"{name}: proved: {method}; {len(values)} distinct eigenvalues, multiplicities exact (the norm of chi_S "
+               "factored over Q, roots picked by gcds in the field)")
+    return SharpCertificate(status=CrossCheckStatus.AGREE, method=method, multiplicities_certified=True, message=message, **common)
 
 
-def _refute(chi, squarefree, balls, labels, n, digits) -> str | None:
-    """A rigorous reason why the closed forms are not the spectrum, or ``None`` (at ``flint.ctx.prec``)."""
-    polys = [flint.acb_poly([flint.acb(c) for c in f.coeffs()]) for f, _ in squarefree]
-    # (a) a closed-form value at which every squarefree factor of chi_S is certainly nonzero
-    # is not an eigenvalue
-    for i, v in enumerate(balls):
-        if all(not p(v).contains(0) for p in polys):
-            return (
-                f"n = {n}: closed-form eigenvalue {_text(v, digits)} ({_describe([labels[i]])}) is not an eigenvalue of "
-                f"the full matrix: chi_S(v) != 0 (certified){_nearest(squarefree, v)}"
-            )
-    # (b) more closed-form values in an isolating ball of a root than its multiplicity. The
-    # roots of the squarefree part are isolated together, so each ball holds exactly one
-    # eigenvalue; a closed-form value inside it is that eigenvalue or no eigenvalue at all.
-    product = flint.fmpz_poly(1)
-    for f, _ in squarefree:
-        product *= f
-    if product.degree() < 1:
-        return None
-    roots = [ball for ball, _ in product.complex_roots()]
-    mids = [flint.acb(r.mid()) for r in roots]
-    radii = [r.rad() for r in roots]
-    for i, ball in enumerate(roots):
-        owners = [e for (f, e), p in zip(squarefree, polys) if p(ball).contains(0)]
-        if len(owners) != 1:
-            continue
-        # a square around the root that meets no other isolating ball holds no other eigenvalue
-        separation = min(
-            ((abs(mids[i] - mids[j]) - 2 * radii[j]).lower() for j in range(len(roots)) if j != i),
-            default=flint.arb(1),
-        )
-        half_side = flint.arb(separation.mid() / 2)
-        if not half_side > 2 * radii[i]:
-            continue
-        square = flint.acb(flint.arb(ball.real.mid(), half_side), flint.arb(ball.imag.mid(), half_side))
-        inside = [k for k, v in enumerate(balls) if square.contains(v)]
-        if len(inside) > owners[0]:
-            return (
-                f"n = {n}: {len(inside)} closed-form eigenvalues lie at the eigenvalue {_text(ball, digits)} "
-                f"({_describe([labels[k] for k in inside])}), whose multiplicity in the full matrix is {owners[0]} (certified)"
-            )
-    return None
+def _hull(e: Eigenvalue) -> flint.acb:
+    """The ball holding every root of the value's cluster."""
+    assert isinstance(e.hull, flint.acb)
+    return e.hull
+
+
+def _charpoly_verdict(S: sp.Matrix, spectrum: RingSpectrum, prec: int) -> tuple[CrossCheckStatus, str, bool, int]:
+    """``(status, message, multiplicities certified, height bits)`` by the roots of the exact ``chi_S``."""
+    size = S.shape[0]
+    F = flint.fmpq_mat(size, size, [to_fmpq(x) for x in S])
+    chi = F.charpoly()
+    denominator = flint.fmpz(1)
+    for c in chi.coeffs():
+        denominator = denominator * c.q // denominator.gcd(c.q)
+    integral = flint.fmpz_poly([int(c * denominator) for c in chi.coeffs()])
+    height = max(int(c).bit_length() for c in integral.coeffs())
+    with flint.ctx.workprec(prec):
+        roots: list[tuple[flint.acb, int]] = integral.complex_roots()  # (ball, multiplicity) pairs
+        counts = [0] * len(spectrum.eigenvalues)
+        for ball, multiplicity in roots:
+            hits = [i for i, e in enumerate(spectrum.eigenvalues) if _hull(e).overlaps(ball)]
+            if not hits:
+                return CrossCheckStatus.DISAGREE, f"the full matrix has the eigenvalue {ball.mid().str(10)} that no block gives", False, height
+            if len(hits) > 1:
+                return CrossCheckStatus.UNDECIDED, "an eigenvalue of the full matrix lies in two of the blocks' balls", False, height
+            counts[hits[0]] += multiplicity
+    expected = [e.multiplicity for e in spectrum.eigenvalues]
+    if counts != expected:
+        return CrossCheckStatus.DISAGREE, f"multiplicities {counts} of the full matrix against {expected} from the blocks", False, height
+    return CrossCheckStatus.AGREE, "chi_S's roots (exact multiplicities) are the blocks' values", True, height
+
+
+def certify_zoo(scheme: StencilScheme, n: int, depth: int | None = None, *, digits: int = 20) -> Certificate:
+    """Prove (or refute) that the frequency blocks give the spectrum of ``scheme``'s full matrix at valence ``n``."""
+    digits = check_digits(digits)
+    if depth is None and structural_applies(scheme, check_valence(n)):
+        from symdecomp.verify.zoo_structural import structural_zoo_certificate
+
+        return structural_zoo_certificate(scheme, n, digits=digits)
+    zm = zoo_matrix(scheme, n, depth)
+    n = zm.n  # checked: an int
+    blocks = zoo_blocks(zm)  # raises if the matrix is not block circulant (exact, entry by entry)
+    spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=zm.depth, mesh=scheme.lattice)
+    multiplicities = tuple(e.multiplicity for e in spectrum.eigenvalues)
+    values = tuple(e.text for e in spectrum.eigenvalues)
+    S = sp.Matrix(zm.matrix)
+    steps = f" over {scheme.steps} steps" if scheme.steps > 1 else ""
+    if all(x.is_Rational for x in S):
+        status, note, certified, height = _charpoly_verdict(S, spectrum, max(128, 4 * digits + 64))
+        message = f"n = {n}{steps}: {'proved' if status == CrossCheckStatus.AGREE else status.value}: {note}"
+        return Certificate(n=n, scheme=scheme.name, status=status, message=message, method="roots of chi_S in FLINT rationals",
+                           distinct=len(values), multiplicities=multiplicities, values=values, multiplicities_certified=certified,
+                           height_bits=height, route="charpoly")
+    certified = disjoint([_hull(e) for e in spectrum.eigenvalues])
+    note = "multiplicities certified" if certified else "multiplicities not certified (balls of distinct values overlap)"
+    method = "S is block circulant (exact, entry by entry); blocks factored exactly, roots in Arb"
+    message = f"n = {n}{steps}: proved: {method}; {len(values)} distinct eigenvalues, {note}"
+    return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.AGREE, message=message, method=method,
+                       distinct=len(values), multiplicities=multiplicities, values=values, multiplicities_certified=certified,
+                       height_bits=0, route="structural")

@@ -21,31 +21,65 @@ more than the requested ``dps`` digits. They are matched with the closed-form ei
 >>> r = numeric_check(catmull_clark(), 4, dps=20)
 >>> r.status.value, [(m.eigenvalue.text, m.eigenvalue.multiplicity) for m in r.matches][:3]
 ('agree', [('1.0', 1), ('0.5', 2), ('0.25', 3)])
+
+The same question at the other neighbourhoods, each against its own matrix built without block structure:
+
+* an interior vertex with its ``K``-ring, any scheme (:func:`ring_numeric_check`): the full ``K``-ring matrix
+  (exact refinement) rounded to doubles, its eigenvalues by LAPACK (``numpy.linalg.eigvals``), matched with
+  multiplicities to the distinct values of :func:`~symdecomp.analysis.spectrum.ring_spectrum` (each value
+  takes its ``m`` nearest unused eigenvalues) and compared through their mean; double precision limits the
+  agreement to about 12 digits (``--certify`` proves it exactly);
+* a boundary, crease or corner vertex (a sector, :func:`numeric_sharp`; ``check --k A:B --boundary`` without
+  ``--certify``): the eigenvalues from the mirror decomposition's blocks
+  (:mod:`symdecomp.analysis.sharp_structural`, each with its exact multiplicity and a certified ball) against the
+  eigenvalues of the vertex's matrix by exact refinement
+  (:func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`, its entries at ``dps`` digits, its eigenvalues by
+  Arb's approximate QR iteration, ``acb_mat.eig(algorithm="approx")``). Each of the matrix's eigenvalues is
+  assigned to the nearest block value; they ``agree`` when every distance is below ``10^-(dps/2)`` (a multiple
+  eigenvalue is only that accurate in floating point) and each block value gets exactly its multiplicity, else
+  ``disagree``, naming the value.
+
+>>> from symdecomp.schemes.loop import loop
+>>> r = ring_numeric_check(loop(), 7, 2, digits=10)
+>>> r.status.value, [m.eigenvalue.multiplicity for m in r.matches]
+('agree', [1, 2, 2, 1, 2, 7, 7])
 """
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from typing import ClassVar
 
+import flint
 import mpmath
+import numpy as np
 
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
-from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.spectrum import format_value
+from symdecomp.analysis.eigenvalue import ClosedFormLabel, Eigenvalue
+from symdecomp.analysis.spectrum import format_value, ring_spectrum
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.full_matrix import parameter_values, sparse_subdivision_matrix
+from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme, check_scheme
-from symdecomp.validate import MAX_DPS, check_memory, check_precision, check_valence
+from symdecomp.validate import MAX_DOUBLE_DIGITS, MAX_DPS, check_int, check_memory, check_precision, check_valence
 from symdecomp.verify.result import CrossCheckResult, CrossCheckStatus
 
-__all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values"]
+__all__ = ["EigenvalueMatch", "NumericCheck", "numeric_check", "full_matrix_eigenvalues", "group_values",
+           "ring_numeric_check", "SharpNumericRow", "numeric_sharp", "numeric_row"]
 
 
 @dataclass(frozen=True)
 class EigenvalueMatch:
-    """One distinct closed-form eigenvalue and the numeric eigenvalues of the full matrix matched with it."""
+    """One distinct closed-form eigenvalue and the numeric eigenvalues of the full matrix matched with it.
+
+    A match between two spectra, not an eigenvalue: the eigenvalue is :attr:`EigenvalueMatch.eigenvalue` (the one type,
+    :class:`~symdecomp.analysis.eigenvalue.Eigenvalue`); the other fields say how the full matrix's
+    eigenvalues fell around it (how many, their mean's deviation, their spread), facts of the comparison
+    that a spectrum does not have.
+    """
 
     #: The closed-form eigenvalue (value at the working precision, text to ``dps`` digits, multiplicity, closed forms).
     eigenvalue: Eigenvalue
@@ -323,3 +357,112 @@ def _verdict(scheme, n, dps, precisions, matches) -> NumericCheck:
         matches=tuple(matches),
         message=message,
     )
+
+
+def _ring_matrix_doubles(scheme: Scheme, n: int, rings: int) -> np.ndarray:
+    S = ring_subdivision_matrix(scheme, n, rings)
+    exact = S.exact_matrix() if S.weights else None
+    A = np.zeros((S.size, S.size))
+    for r, row in enumerate(S.rows):
+        for c, x in row.items():
+            A[r, c] = float(exact[r, c]) if exact is not None and r == 0 else x.numerator / x.denominator
+    return A
+
+
+def ring_numeric_check(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 10) -> NumericCheck:
+    """Compare the frequency-factor spectrum with the full matrix's eigenvalues to ``digits`` digits."""
+    n = check_valence(n)
+    digits = check_int(digits, "digits", minimum=1, maximum=MAX_DOUBLE_DIGITS,
+                       reason="the K-ring numeric check runs in double precision (or certify)")
+    spectrum = ring_spectrum(scheme, n, rings, digits=digits + 5, exact=False, jordan=False)
+    numeric = list(np.linalg.eigvals(_ring_matrix_doubles(scheme, n, rings)))
+    tol = 10.0 ** (-digits)
+    matches, failures = [], []
+    for e in sorted(spectrum.eigenvalues, key=lambda e: -e.multiplicity):
+        value = complex(float(e.value.real.mid()), float(e.value.imag.mid()))
+        numeric.sort(key=lambda z: abs(z - value))
+        mine, numeric = numeric[: e.multiplicity], numeric[e.multiplicity :]
+        mean = sum(mine) / len(mine) if mine else complex("nan")
+        deviation = abs(mean - value)
+        spread = max((abs(z - value) for z in mine), default=float("nan"))
+        labels = tuple(ClosedFormLabel(k, "frequency factor") for k in e.frequencies)
+        matches.append(EigenvalueMatch(replace(e, value=value, labels=labels, hull=None), len(mine), mpmath.mpf(deviation), mpmath.mpf(spread)))
+        if not deviation <= tol * max(1.0, abs(value)):
+            failures.append(f"{e.text} (k = {', '.join(map(str, e.frequencies))}; multiplicity {e.multiplicity}): "
+                            f"the full matrix's eigenvalues average {mean:.12g}, off by {deviation:.3g}")
+    matches.sort(key=lambda m: -abs(m.eigenvalue.value))
+    status = CrossCheckStatus.DISAGREE if failures else CrossCheckStatus.AGREE
+    message = f"n = {n}: " + ("; ".join(failures) if failures else f"all {len(matches)} distinct values agree to {digits} digits (double precision)")
+    return NumericCheck(
+        n=n, scheme=scheme.name, dps=digits, precisions=(15,), status=status,
+        max_deviation=max(m.deviation for m in matches), max_spread=max(m.spread for m in matches),
+        matches=tuple(matches), message=message, solver="numpy",
+    )
+
+
+@dataclass(frozen=True)
+class SharpNumericRow:
+    """One vertex's numeric check."""
+
+    #: Faces of the vertex's first sector (``K``).
+    k: int
+    #: The vertex, as printed (``boundary k=5``, ...).
+    vertex: str
+    status: CrossCheckStatus
+    #: Eigenvalues (with multiplicity) and distinct values of the blocks.
+    size: int
+    distinct: int
+    #: Digits the comparison was made at.
+    dps: int
+    #: What disagreed or could not be told apart (empty when they agree).
+    message: str = ""
+
+    @property
+    def ok(self) -> bool:
+        return self.status is CrossCheckStatus.AGREE
+
+    def as_json(self) -> dict:
+        return {"k": self.k, "vertex": self.vertex, "status": self.status.value, "size": self.size,
+                "distinct": self.distinct, "dps": self.dps, "message": self.message}
+
+
+def _matrix_values(scheme, vertex, prec: int) -> list:
+    from symdecomp.schemes.sector import sharp_subdivision_matrix
+    from symdecomp.verify.c1_sharp_spectrum import ball_matrix
+
+    S = sharp_subdivision_matrix(scheme, vertex)
+    with flint.ctx.workprec(prec):
+        return list(ball_matrix(S.tolist()).eig(algorithm="approx"))
+
+
+def numeric_sharp(scheme, vertex, *, dps: int = 50) -> SharpNumericRow:
+    """Compare the blocks' spectrum of ``vertex`` with its refined matrix's eigenvalues at ``dps`` digits (module docstring)."""
+    from symdecomp.analysis.sharp_structural import structural_values
+    from symdecomp.verify.certify import describe_vertex
+
+    scheme, dps = check_scheme(scheme), check_precision(dps)
+    prec = math.ceil(dps * 3.33) + 32
+    values, size = structural_values(scheme, vertex, prec=prec)
+    name = describe_vertex(vertex)
+    common = dict(k=vertex.sectors[0], vertex=name, size=size, distinct=len(values), dps=dps)
+    with flint.ctx.workprec(prec):
+        mids = [flint.acb(v.ball.real.mid(), v.ball.imag.mid()) for v in values]
+        counts = [0] * len(values)
+        tol = flint.arb(10) ** (-(dps // 2))
+        for z in _matrix_values(scheme, vertex, prec):
+            i = min(range(len(values)), key=lambda t: float(abs(z - mids[t]).mid()))
+            if not abs(z - mids[i]) < tol:
+                return SharpNumericRow(status=CrossCheckStatus.DISAGREE, message=f"{name}: the matrix's eigenvalue "
+                                       f"{z.mid().str(12, radius=False)} is no block's value to {dps // 2} digits", **common)
+            counts[i] += 1
+    for v, count in zip(values, counts):
+        if count != v.multiplicity:
+            return SharpNumericRow(status=CrossCheckStatus.DISAGREE, message=f"{name}: the blocks' value {v.ball.mid().str(12, radius=False)} "
+                                   f"has multiplicity {v.multiplicity}, the matrix {count} eigenvalues there", **common)
+    return SharpNumericRow(status=CrossCheckStatus.AGREE, **common)
+
+
+def numeric_row(vertex, *, scheme, dps: int) -> SharpNumericRow:
+    """:func:`numeric_sharp` with the vertex first, for the shared pool (one vertex per item; a vertex that travelled to a
+    worker is given the scheme's own lattice object again, which the matrix's assembly compares by identity)."""
+    return numeric_sharp(scheme, dataclasses.replace(vertex, lattice=scheme.lattice.name), dps=dps)

@@ -1,8 +1,13 @@
-"""The toolkit's predictions for Catmull-Clark checked against OpenSubdiv (an outside oracle).
+"""The toolkit checked against OpenSubdiv (an outside oracle), at an interior vertex and at a sector.
 
-For a valence ``n`` a random 1-ring in ``R^3`` (seeded) is pushed through OpenSubdiv's
-uniform Catmull-Clark refinement (:mod:`symdecomp.verify.opensubdiv`), and what OpenSubdiv computes
-is compared with what the toolkit predicts from the scheme's rules:
+OpenSubdiv implements Catmull-Clark and Loop with their standard weights; which comparison runs is the
+lattice's (:func:`comparison`, read with :meth:`~symdecomp.schemes.lattice.Lattice.select` by the regular
+patch). The measurements (single OpenSubdiv steps chained, renormalised, split by frequency) are
+:mod:`symdecomp.verify.step_chains`; what a comparison reports, :mod:`symdecomp.verify.comparisons`.
+
+*Catmull-Clark* (:func:`compare_with_opensubdiv`). For a valence ``n`` a random 1-ring in ``R^3`` (seeded) is
+pushed through OpenSubdiv's uniform Catmull-Clark refinement (:mod:`symdecomp.verify.opensubdiv`), and what
+OpenSubdiv computes is compared with what the toolkit predicts from the scheme's rules:
 
 ======================  =============================================  ============================
 prediction              toolkit side                                   expected agreement
@@ -33,6 +38,61 @@ The Fourier components follow :func:`symdecomp.analysis.tangent.invariant_ratio`
 A^j omega^{ij}``, i.e. ``A^j = (1/n) sum_i a_i omega^{-ij}``, ``omega = exp(2 pi i/n)``.
 OpenSubdiv implements the standard vertex rule, so everything is compared with
 ``catmull_clark()`` (standard weights).
+
+*Loop* (:func:`compare_loop_with_opensubdiv`). OpenSubdiv's Loop refinement
+(:mod:`symdecomp.verify.opensubdiv.loop`) is compared with what the toolkit derives from the rules of
+:func:`~symdecomp.schemes.loop.loop`:
+
+======================  ===========================================  ======================
+prediction              toolkit side                                 expected agreement
+======================  ===========================================  ======================
+one-step matrix         ``ring_subdivision_matrix`` (exact), read    double precision
+                        column by column from OpenSubdiv
+spectrum                ``ring_spectrum`` (with multiplicities) vs   double precision
+                        the eigenvalues of OpenSubdiv's matrix
+limit mask              ``ring_masks`` position mask vs              double precision
+                        OpenSubdiv's ``Limit``
+tangent plane           ``ring_masks`` tangent masks span            double precision
+                        OpenSubdiv's two limit tangents
+limit position          ``O_k -> l . ring_0``                        error ~ mu^k, mu the
+                                                                     value after 1 at j = 0
+shrink rate, freq. j    the dominant eigenvalue of frequency ``j``   exact when frequency
+                        (``j = 0``: the one after 1)                 ``j`` has one value
+======================  ===========================================  ======================
+
+The shrink rates are measured as for Catmull-Clark: a random 1-ring ``(O, a_0..a_{n-1})`` is
+pushed through single OpenSubdiv steps, each fed the 1-ring the previous one returned
+(renormalised by a translation and a power of two), and the part in frequencies ``j`` and
+``n - j`` is followed alone (projected back after every step). Loop's 1-ring has one value
+per frequency ``j != 0`` (``3/8 + cos(2 pi j/n)/4``) and one after 1 at ``j = 0``
+(``5/8 - n beta(n)``), so each rate is the ratio of one step exactly, to rounding.
+
+*Boundary, corner, crease and dart vertices* (:func:`compare_sharp_case`). For a :class:`SharpCase` (scheme,
+kind of vertex, ``k`` faces per sector, sharpness, boundary interpolation, creasing method) the toolkit's exact
+one-step matrix (:func:`symdecomp.schemes.sector.exact_sharp_matrix`) is compared at every refinement level until
+a semi-sharp crease has decayed with OpenSubdiv's (:func:`symdecomp.verify.opensubdiv.sharp.osd_sharp_ring`
+on the same tagged fan, doubles; the measures are :mod:`symdecomp.verify.matrix_measures`):
+
+* ``matrix``: the largest entry of ``|ours - OpenSubdiv|`` (ours exact, the difference taken exactly);
+* ``ring closed``: OpenSubdiv's new ring points have no weight outside the ring;
+* ``spectrum``: for every eigenvalue of either matrix, the smallest singular value of the other
+  matrix minus it (the distance to the nearest matrix with that eigenvalue: robust at Jordan blocks);
+* ``limit mask``: ours is exact -- the left eigenvector of eigenvalue 1 at the first level where the
+  vertex's rule no longer changes, pulled back through the exact matrices of the levels before;
+  OpenSubdiv's is ``PrimvarRefiner::Limit`` at the level;
+* ``curve tangent``: OpenSubdiv's first derivative mask at a boundary, corner or crease vertex must
+  lie in the span of our left eigenvectors of eigenvalue 1/2 (the cubic B-spline crease curve);
+* ``surface tangent 1`` and ``2``: OpenSubdiv's two derivative masks must lie in the span of our left
+  eigenvectors of the largest eigenvalues below 1: two of them with their multiplicities (the tangent
+  plane), three at a crease (each side's plane, sharing the crease direction);
+* ``limit point`` (level 0): OpenSubdiv's patch table at the vertex's corner ``(u, v) = (0, 0)`` of
+  every face, for a random fan, against our exact limit mask applied to it.
+
+Every measure is absolute on weights of size at most 1 (relative to 1); all must be at most
+:data:`~symdecomp.verify.comparisons.TOLERANCE` (1e-12). While a semi-sharp crease has not decayed, OpenSubdiv's limit and tangent
+masks are those of the crease rule of that level (its ``Limit`` takes the level's rule), not the
+limit of the surface: those rows are reported with their numbers and marked not comparable, and
+the limit point (the patch table refines the crease away) is the check of the true limit there.
 """
 
 from __future__ import annotations
@@ -46,240 +106,38 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.algebra.numbers import to_fraction
-from symdecomp.analysis.elliptic import recursion_eigenvector
-from symdecomp.analysis.masks import limit_masks_at
-from symdecomp.analysis.spectrum import recursion_eigenvalues
-from symdecomp.analysis.tangent import invariant_ratio_at, tangent_eigenvalues
-from symdecomp.errors import InternalError
-from symdecomp.schemes.mesh import QuadMesh, ring_mesh
-from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
-from symdecomp.symbols import n as N
-from symdecomp.validate import INPUT_LIMITS, cached, check_int, check_levels, check_valence
+from symdecomp.analysis.masks import ring_masks
+from symdecomp.analysis.spectrum import ring_spectrum
+from symdecomp.errors import InvalidInputError
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, Lattice, lattice_of_reference
+from symdecomp.schemes.loop import loop
+from symdecomp.schemes.rings import ring_subdivision_matrix
+from symdecomp.schemes.scheme import catmull_clark
+from symdecomp.validate import INPUT_LIMITS, check_int, check_levels, check_valence
+from symdecomp.verify.comparisons import Prediction, SharpCheck, SharpResult, ValenceComparison, exact_row, limit_row
+from symdecomp.verify.matrix_measures import (
+    DIGITS,
+    difference,
+    floats,
+    left_spans,
+    limit_masks,
+    spectrum_distance,
+    tangent_residual,
+)
+from symdecomp.verify.opensubdiv.sharp import OsdFan, OsdOptions, tagged_fan
+from symdecomp.verify.predictions import toolkit_predictions
+from symdecomp.verify.step_chains import (
+    loop_chain,
+    lsq_ratio,
+    quad_chain,
+    random_ring,
+    ring_as_mesh,
+    ring_frequency_part,
+    triangle_frequency_part,
+)
 
-__all__ = [
-    "Prediction",
-    "ValenceComparison",
-    "ToolkitPredictions",
-    "toolkit_predictions",
-    "elliptic_eigenvector",
-    "random_ring",
-    "fourier_components",
-    "compare_with_opensubdiv",
-]
-
-#: Agreement required of the quantities that are exact in exact arithmetic (data of size ~1).
-EXACT_TOLERANCE = 1e-13
-
-
-@dataclass(frozen=True)
-class Prediction:
-    """One predicted quantity compared with OpenSubdiv at one valence."""
-
-    #: Short name, e.g. ``"one-step matrix"`` or ``"shrink rate j=1"``.
-    name: str
-    #: ``"exact"`` (agrees to double precision) or ``"limit"`` (converges with the levels).
-    kind: str
-    #: The toolkit's value (a float, or a complex for the Eq. 39 ratio; None for matrix checks).
-    predicted: complex | float | None
-    #: OpenSubdiv's value at the last level (same type as ``predicted``).
-    observed: complex | float | None
-    #: The largest disagreement (absolute).
-    disagreement: float
-    #: For ``"limit"`` rows: the factor by which the disagreement should shrink per level.
-    rate: float | None
-    #: For ``"limit"`` rows: the disagreement's observed shrink factor over the last levels
-    #: still above rounding (None if it could not be measured).
-    observed_rate: float | None
-    #: Whether the disagreement is within what the kind allows (see :func:`compare_with_opensubdiv`).
-    agrees: bool
-
-    def as_json(self) -> dict:
-        def enc(x):
-            if x is None:
-                return None
-            if isinstance(x, complex):
-                return [x.real, x.imag]
-            return float(x)
-
-        return {
-            "name": self.name,
-            "kind": self.kind,
-            "predicted": enc(self.predicted),
-            "observed": enc(self.observed),
-            "disagreement": self.disagreement,
-            "rate": self.rate,
-            "observed_rate": self.observed_rate,
-            "agrees": self.agrees,
-        }
-
-
-@dataclass(frozen=True)
-class ValenceComparison:
-    """All predictions at one valence."""
-
-    #: The valence.
-    n: int
-    #: Number of refinement levels run in OpenSubdiv.
-    levels: int
-    #: Seed of the random 1-ring.
-    seed: int
-    #: The compared predictions.
-    predictions: tuple[Prediction, ...]
-
-    @property
-    def agrees(self) -> bool:
-        return all(p.agrees for p in self.predictions)
-
-    def as_json(self) -> dict:
-        return {
-            "n": self.n,
-            "levels": self.levels,
-            "seed": self.seed,
-            "agrees": self.agrees,
-            "predictions": [p.as_json() for p in self.predictions],
-        }
-
-
-# --------------------------------------------------------------------------------------------
-# the toolkit's side
-
-
-def elliptic_eigenvector(scheme, n: int) -> tuple[sp.Expr, tuple[sp.Expr, sp.Expr, sp.Expr]]:
-    """``(mu_2, (u_O, u_a, u_b))``: the subdominant eigenvalue of the Eq. 43 matrix at ``n`` and its eigenvector.
-
-    ``mu_2`` is the larger of the two eigenvalues other than 1 (closed form from
-    :func:`symdecomp.analysis.spectrum.recursion_eigenvalues`); the eigenvector is
-    :func:`symdecomp.analysis.elliptic.recursion_eigenvector`, scaled so that ``u_a - u_O = 1``.
-
-    >>> mu, (uo, ua, ub) = elliptic_eigenvector(catmull_clark(), 4)
-    >>> mu, (ub - uo) / (ua - uo)
-    (1/4, 2)
-    """
-    n = check_valence(n)
-    _, m2, m3 = (sp.radsimp(sp.simplify(e.subs(N, n))) for e in recursion_eigenvalues(scheme))
-    mu = m2 if sp.N(abs(m2)) >= sp.N(abs(m3)) else m3
-    u = recursion_eigenvector(scheme, mu, n)
-    scale = sp.simplify(u[1] - u[0])
-    if scale == 0:
-        raise InternalError(f"the Eq. 43 eigenvector for {mu} at n = {n} has u_a = u_O; Eq. 44's ratio is undefined")
-    return mu, tuple(sp.radsimp(sp.simplify(x / scale)) for x in u)
-
-
-@dataclass(frozen=True)
-class ToolkitPredictions:
-    """The toolkit's numbers for Catmull-Clark at one valence (derived, then evaluated)."""
-
-    #: The valence.
-    n: int
-    #: The exact subdivision matrix with Fraction entries (rows ``O, a_0.., b_0..``).
-    matrix: tuple[tuple[Fraction, ...], ...]
-    #: The limit mask: left eigenvector of eigenvalue 1, weights summing to 1 (Fractions).
-    limit_mask: tuple[Fraction, ...]
-    #: ``j -> (lambda_dom, lambda_sub)`` of ``M_j`` for ``j = 1..n-1`` (floats, by magnitude).
-    tangent: dict
-    #: Eigenvalues of the Eq. 43 matrix other than 1, larger first.
-    mu: tuple[float, float]
-    #: ``(u_b - u_O)/(u_a - u_O)`` on the ``mu_2`` eigenvector (Eq. 44).
-    elliptic_ratio: float
-    #: ``B^1/A^1`` on the dominant eigenvector of ``M_1`` (Eq. 39).
-    eq39_ratio: complex
-
-
-def _f(expr, dps=30) -> float:
-    with mpmath.workdps(dps):
-        return float(sp.N(expr, dps))
-
-
-@cached(n=check_valence)
-def toolkit_predictions(n: int) -> ToolkitPredictions:
-    """Derive the predictions for standard Catmull-Clark at valence ``n``."""
-    n = check_valence(n)
-    cc = catmull_clark()
-    S = subdivision_matrix(cc, n)
-    size = 2 * n + 1
-    mask = limit_masks_at(cc, n).position
-    ev = tangent_eigenvalues(cc)
-    tangent = {}
-    for j in range(1, n):
-        d, s = ev.at(n, j)
-        d, s = _f(d), _f(s)
-        tangent[j] = (d, s) if abs(d) >= abs(s) else (s, d)
-    mu, (uo, ua, ub) = elliptic_eigenvector(cc, n)
-    others = sorted((_f(e.subs(N, n)) for e in recursion_eigenvalues(cc)[1:]), key=abs, reverse=True)
-    r39 = complex(sp.N(invariant_ratio_at(cc, n, 1), 30))
-    return ToolkitPredictions(
-        n,
-        tuple(tuple(to_fraction(S[i, k]) for k in range(size)) for i in range(size)),
-        tuple(to_fraction(x) for x in mask),
-        tangent,
-        (others[0], others[1]),
-        _f((ub - uo) / (ua - uo)),
-        r39,
-    )
-
-
-# --------------------------------------------------------------------------------------------
-# data and measurements
-
-
-def random_ring(n: int, seed: int) -> tuple[tuple[float, float, float], ...]:
-    """A random 1-ring ``(O, a_0.., b_0..)`` in ``[-1, 1]^3`` (floats, reproducible from ``seed``)."""
-    n = check_valence(n)
-    rng = random.Random(f"symdecomp-oracle:{seed}:{n}")
-    return tuple(tuple(rng.uniform(-1.0, 1.0) for _ in range(3)) for _ in range(2 * n + 1))
-
-
-def _ring_as_mesh(ring, n: int, rings: int = 1, seed: int = 0) -> QuadMesh:
-    """A ``rings``-ring mesh whose 1-ring is ``ring`` (outer rings random)."""
-    rng = random.Random(f"symdecomp-oracle-outer:{seed}:{n}")
-
-    def value(s, u, v):
-        if (u, v) == (0, 0):
-            return ring[0]
-        if (u, v) == (1, 0):
-            return ring[1 + s]
-        if (u, v) == (0, 1):  # pragma: no cover - ring_mesh labels these as (s+1, 1, 0)
-            return ring[1 + (s + 1) % n]
-        if (u, v) == (1, 1):
-            return ring[1 + n + s]
-        return tuple(rng.uniform(-1.0, 1.0) for _ in range(3))
-
-    return ring_mesh(n, rings, value)
-
-
-def fourier_components(ring: np.ndarray, n: int):
-    """``(O, A, B)``: the centre and the ``n x 3`` complex arrays ``A[j] = (1/n) sum_i a_i omega^{-ij}``."""
-    ring = np.asarray(ring, dtype=np.float64)
-    a, b = ring[1 : 1 + n], ring[1 + n :]
-    return ring[0], np.fft.fft(a, axis=0) / n, np.fft.fft(b, axis=0) / n
-
-
-def _matvec(matrix, ring) -> np.ndarray:
-    x = [[Fraction(float(c)) for c in p] for p in ring]
-    out = []
-    for row in matrix:
-        acc = [Fraction(0)] * 3
-        for w, p in zip(row, x):
-            if w:
-                for c in range(3):
-                    acc[c] += w * p[c]
-        out.append([float(c) for c in acc])
-    return np.array(out)
-
-
-def _lsq_ratio(num: np.ndarray, den: np.ndarray):
-    """The scalar ``r`` minimising ``|num - r den|`` (complex inner product)."""
-    return complex(np.vdot(den, num) / np.vdot(den, den))
-
-
-def _rate_from(errors: list[float], floor: float) -> float | None:
-    """Shrink factor of a disagreement sequence over its last two levels above ``floor``."""
-    usable = [k for k in range(1, len(errors)) if errors[k] > floor and errors[k - 1] > floor]
-    if not usable:
-        return None
-    k = usable[-1]
-    return errors[k] / errors[k - 1]
+__all__ = ["compare_with_opensubdiv", "compare_loop_with_opensubdiv", "comparison", "KINDS", "SHARPNESS", "SharpCase",
+           "sharp_cases", "compare_sharp_case"]
 
 
 #: Most refinement levels compared (double precision: beyond this the ring is below rounding).
@@ -303,20 +161,20 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
     rows: list[Prediction] = []
 
     # 1-ring locality, inside OpenSubdiv: the 1-ring alone vs a 3-ring mesh containing it.
-    alone = osd_central_rings(_ring_as_mesh(ring0, n, 1, seed), 0, 3)
-    larger = osd_central_rings(_ring_as_mesh(ring0, n, 3, seed), 0, 3)
-    rows.append(_exact("1-ring locality", float(np.max(np.abs(alone.rings - larger.rings)))))
+    alone = osd_central_rings(ring_as_mesh(ring0, n, 1, seed), 0, 3)
+    larger = osd_central_rings(ring_as_mesh(ring0, n, 3, seed), 0, 3)
+    rows.append(exact_row("1-ring locality", float(np.max(np.abs(alone.rings - larger.rings)))))
 
     # limit mask vs OpenSubdiv's limit positions
     limit = np.array([float(sum(w * Fraction(p[c]) for w, p in zip(pred.limit_mask, ring0))) for c in range(3)])
-    rows.append(_exact("limit mask", float(max(np.max(np.abs(alone.limit - limit)), np.max(np.abs(larger.limit - limit))))))
+    rows.append(exact_row("limit mask", float(max(np.max(np.abs(alone.limit - limit)), np.max(np.abs(larger.limit - limit))))))
 
     # The whole random ring, chained: the one-step matrix and the limit position.
-    chain = _chain(ring0, n, levels, pred.matrix, limit=limit)
-    rows.insert(0, _exact("one-step matrix", chain.one_step))
+    chain = quad_chain(ring0, n, levels, pred.matrix, limit=limit)
+    rows.insert(0, exact_row("one-step matrix", chain.one_step))
     mu2, mu3 = pred.mu
     floor = 1e-13
-    rows.append(_limit("limit position", None, None, chain.centre_errors, abs(mu2), floor, levels))
+    rows.append(limit_row("limit position", None, None, chain.centre_errors, abs(mu2), floor, levels))
 
     # Per frequency: the ring's frequency-j part alone (j and n - j together, so it stays real),
     # projected back onto frequency j after every OpenSubdiv step so that rounding noise in the
@@ -324,22 +182,22 @@ def compare_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceC
     leak = 0.0
     chains = {}
     for j in range(0, n // 2 + 1):
-        part = _frequency_part(np.array(ring0), n, j)
-        chains[j] = _chain(part, n, levels, pred.matrix, frequency=j)
+        part = ring_frequency_part(np.array(ring0), n, j)
+        chains[j] = quad_chain(part, n, levels, pred.matrix, frequency=j)
         leak = max(leak, chains[j].leak)
-    rows.append(_exact("frequencies decouple", leak))
+    rows.append(exact_row("frequencies decouple", leak))
 
     rows.extend(_shrink_rates(n, chains, pred, floor, levels))
 
     # Eq. 39: B^1/A^1 on the frequency-1 chain
     q1 = abs(pred.tangent[1][1] / pred.tangent[1][0])
-    ratios = [_lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
-    rows.append(_limit("Eq. 39 ratio B1/A1", pred.eq39_ratio, ratios[-1], [abs(r - pred.eq39_ratio) for r in ratios], q1, floor, levels))
+    ratios = [lsq_ratio(b[1], a[1]) for _, (o, a, b) in chains[1].steps]
+    rows.append(limit_row("Eq. 39 ratio B1/A1", pred.eq39_ratio, ratios[-1], [abs(r - pred.eq39_ratio) for r in ratios], q1, floor, levels))
 
     # Eq. 44: (bbar - O)/(abar - O) on the frequency-0 chain
-    ell = [_lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
+    ell = [lsq_ratio(b[0].real - o, a[0].real - o).real for _, (o, a, b) in chains[0].steps]
     q0 = abs(mu3 / mu2)
-    rows.append(_limit("Eq. 44 elliptic ratio", pred.elliptic_ratio, ell[-1], [abs(r - pred.elliptic_ratio) for r in ell], q0, floor, levels))
+    rows.append(limit_row("Eq. 44 elliptic ratio", pred.elliptic_ratio, ell[-1], [abs(r - pred.elliptic_ratio) for r in ell], q0, floor, levels))
     return ValenceComparison(n, levels, seed, tuple(rows))
 
 
@@ -372,76 +230,236 @@ def _shrink_rates(n: int, chains: dict, pred, floor: float, levels: int) -> list
         errs = [abs(x - dom) for x in seq]
         seen = abs(seq[-1])
         if q >= 1 - 1e-12:  # a double eigenvalue (M_j = I/4 at j = n/2): the rate is exact
-            rows.append(_exact(name, max(errs), predicted=dom, observed=seen))
+            rows.append(exact_row(name, max(errs), predicted=dom, observed=seen))
         else:
-            rows.append(_limit(name, dom, seen, errs, q, floor, levels))
+            rows.append(limit_row(name, dom, seen, errs, q, floor, levels))
     return rows
 
 
-def _frequency_part(ring: np.ndarray, n: int, j: int) -> np.ndarray:
-    """The part of a real ring in the frequencies ``j`` and ``n - j`` (``j = 0``: ``O`` and the centroids)."""
-    o, A, B = fourier_components(ring, n)
-    keep = np.zeros(n, dtype=bool)
-    keep[j % n] = keep[(n - j) % n] = True
-    A = np.where(keep[:, None], A, 0)
-    B = np.where(keep[:, None], B, 0)
-    a = np.fft.ifft(A * n, axis=0).real
-    b = np.fft.ifft(B * n, axis=0).real
-    centre = o if j == 0 else np.zeros(3)
-    return np.vstack([centre[None, :], a, b])
+def _frequency_values(spectrum, n: int) -> dict[int, list[complex]]:
+    """The distinct eigenvalues of each frequency ``j`` (1 left out at ``j = 0``), largest first."""
+    out: dict[int, list[complex]] = {j: [] for j in range(n // 2 + 1)}
+    for e in spectrum.eigenvalues:
+        value = complex(float(e.value.real.mid()), float(e.value.imag.mid()))
+        for j in e.frequencies:
+            if j in out and not (j == 0 and abs(value - 1) < 1e-12):
+                out[j].append(value)
+    return {j: sorted(v, key=abs, reverse=True) for j, v in out.items()}
+
+
+def compare_loop_with_opensubdiv(n: int, levels: int = 20, seed: int = 0) -> ValenceComparison:
+    """Run the comparisons of this module at valence ``n`` (needs the OpenSubdiv bridge).
+
+    Tolerances as in :func:`~symdecomp.verify.oracle.compare_with_opensubdiv`.
+    """
+    from symdecomp.verify.opensubdiv.loop import osd_loop_one_ring_matrix, osd_loop_position_mask, osd_loop_tangent_masks
+
+    n = check_valence(n)
+    levels = check_levels(levels, minimum=2, maximum=MAX_LEVELS, reason="double precision: beyond this the ring is below rounding")
+    seed = check_int(seed, "seed", minimum=0, maximum=2**32 - 1)
+    scheme = loop()
+    exact = ring_subdivision_matrix(scheme, n, 1).exact_matrix()
+    S = np.array([[float(exact[r, c]) for c in range(n + 1)] for r in range(n + 1)])
+    osd = np.array(osd_loop_one_ring_matrix(n))
+    rows = [exact_row("one-step matrix", float(np.max(np.abs(osd - S))))]
+
+    spectrum = ring_spectrum(scheme, n, 1, digits=20, exact=False, jordan=False)
+    ours = sorted((complex(float(e.value.real.mid()), float(e.value.imag.mid())) for e in spectrum.eigenvalues
+                   for _ in range(e.multiplicity)), key=lambda z: (z.real, z.imag))
+    theirs = sorted(np.linalg.eigvals(osd), key=lambda z: (z.real, z.imag))
+    rows.append(exact_row("spectrum", max(abs(a - b) for a, b in zip(ours, theirs)) if len(ours) == len(theirs) else math.inf))
+
+    masks = ring_masks(scheme, n, 1, digits=20)
+    position = np.array([float(masks["position"]["O"])] + [float(x) for x in masks["position"]["a"]])
+    rows.append(exact_row("limit mask", float(np.max(np.abs(np.array(osd_loop_position_mask(n)) - position)))))
+    tangents = np.array([[float(m["O"])] + [float(x) for x in m["a"]] for m in masks["tangents"]])
+    osd_tangents = np.array(osd_loop_tangent_masks(n))
+    C, *_ = np.linalg.lstsq(tangents.T, osd_tangents.T, rcond=None)
+    spans = abs(np.linalg.det(C)) > 1e-8
+    residual = float(np.abs(tangents.T @ C - osd_tangents.T).max() / max(1.0, np.abs(osd_tangents).max()))
+    rows.append(exact_row("tangent plane", residual if spans else math.inf))
+
+    rng = random.Random(f"symdecomp-oracle-loop:{seed}:{n}")
+    ring0 = np.array([[rng.uniform(-1.0, 1.0) for _ in range(3)] for _ in range(n + 1)])
+    values = _frequency_values(spectrum, n)
+    floor = 1e-13
+    _, centres = loop_chain(ring0, n, levels, None)
+    limit = position @ ring0
+    # the centre sees frequency 0 only (the vertex rule weighs all a_i alike): it converges with its value after 1
+    rate = abs(values[0][0])
+    rows.append(limit_row("limit position", None, None, [float(np.max(np.abs(c - limit))) for c in centres], rate, floor, levels))
+    rows.extend(_loop_shrink_rates(ring0, n, levels, values, floor))
+    return ValenceComparison(n, levels, seed, tuple(rows))
+
+
+def _loop_shrink_rates(ring0: np.ndarray, n: int, levels: int, values: dict, floor: float) -> list[Prediction]:
+    """``shrink rate j=..``: a generic linear functional of frequency ``j``'s part, step over step."""
+    ell = np.array([complex(*x) for x in np.random.default_rng(12345).uniform(-1, 1, (3, 2))])
+    rows = []
+    for j in range(n // 2 + 1):
+        steps, _ = loop_chain(triangle_frequency_part(ring0, n, j), n, levels, j)
+        seq = []
+        for before, after in steps:
+            if j == 0:
+                z0, z1 = before[1:].mean(axis=0) - before[0], after[1:].mean(axis=0) - after[0]
+            else:
+                z0, z1 = np.fft.fft(before[1:], axis=0)[j], np.fft.fft(after[1:], axis=0)[j]
+            seq.append(complex(np.dot(ell, z1) / np.dot(ell, z0)))
+        dom = values[j][0]
+        errors = [abs(x - dom) for x in seq]
+        name = f"shrink rate j={j}"
+        if len(values[j]) == 1:  # one value in this frequency: every step shrinks by it exactly
+            rows.append(exact_row(name, max(errors), predicted=abs(dom), observed=abs(seq[-1])))
+        else:
+            rows.append(limit_row(name, abs(dom), abs(seq[-1]), errors, abs(values[j][1] / dom), floor, levels))
+    return rows
+
+
+#: The comparison at an interior vertex, by the lattice's regular patch: OpenSubdiv's Catmull-Clark or Loop.
+_COMPARISONS = {BICUBIC: compare_with_opensubdiv, BOX_SPLINE: compare_loop_with_opensubdiv}
+
+
+def comparison(lattice: Lattice):
+    """The comparison with OpenSubdiv at an interior vertex of ``lattice``: a function of ``(n, levels, seed)``."""
+    return lattice.select(_COMPARISONS, "the comparison with OpenSubdiv")
+
+
+#: The kinds of vertex: ``boundary`` (k faces), ``corner`` (k faces, O tagged), ``crease`` (k faces on each
+#: side of a crease through O), ``dart`` (k faces around O, a crease ending at O).
+KINDS = ("boundary", "corner", "crease", "dart")
+
+
+#: The sharpness values of issue 20 (for creases and darts; boundary edges are infinitely sharp).
+SHARPNESS = (Fraction(0), Fraction(1, 2), Fraction(1), Fraction(5, 2), math.inf)
 
 
 @dataclass(frozen=True)
-class _Chain:
-    steps: list
-    one_step: float
-    centre_errors: list
-    leak: float
+class SharpCase:
+    """One vertex and one set of OpenSubdiv options."""
+
+    scheme: str
+    kind: str
+    k: int
+    sharpness: object = math.inf
+    boundary: str = "edge-and-corner"
+    creasing: str = "uniform"
+
+    def __post_init__(self):
+        OsdOptions(self.scheme, self.boundary, self.creasing)  # checks the three names
+        if self.kind not in KINDS:
+            raise InvalidInputError(f"kind must be one of {', '.join(KINDS)}, got {self.kind!r}")
+        if isinstance(self.k, bool) or not isinstance(self.k, int) or not 1 <= self.k <= 16 or (self.kind == "dart" and self.k < 2):
+            raise InvalidInputError(f"k must be an integer from {2 if self.kind == 'dart' else 1} to 16, got {self.k!r}")
+
+    @property
+    def quad(self) -> bool:
+        return self.scheme == "catmull-clark"
+
+    def vertex(self):
+        """The toolkit's neighbourhood object (a :class:`~symdecomp.schemes.sector.SharpVertex`)."""
+        from symdecomp.schemes.sector import SharpVertex
+
+        lattice = lattice_of_reference(self.scheme)
+        if self.kind == "boundary":
+            return SharpVertex.boundary(self.k, lattice)
+        if self.kind == "corner":
+            return SharpVertex.corner(self.k, lattice)
+        if self.kind == "crease":
+            return SharpVertex.crease(self.k, self.k, lattice, self.sharpness)
+        return SharpVertex.dart(self.k, lattice, self.sharpness)
+
+    def fan(self) -> OsdFan:
+        """The same neighbourhood as an OpenSubdiv mesh with its tags."""
+        sectors = (self.k, self.k) if self.kind == "crease" else (self.k,)
+        return tagged_fan(sectors, closed=self.kind in ("crease", "dart"), quad=self.quad,
+                          corner=self.kind == "corner", sharpness=self.sharpness)
+
+    def levels(self) -> int:
+        """The last level compared: where a semi-sharp crease has decayed (0 for sharpness 0 or infinite)."""
+        s = self.sharpness
+        return 0 if s == math.inf or s == 0 else math.ceil(s)
+
+    def label(self) -> str:
+        s = "inf" if self.sharpness == math.inf else str(self.sharpness)
+        return f"{self.scheme} {self.kind} k={self.k} s={s} {self.boundary} {self.creasing}"
 
 
-def _chain(ring, n, levels, matrix, *, limit=None, frequency=None) -> _Chain:
-    """Single OpenSubdiv steps, each fed the ring the previous one returned (renormalised)."""
-    from symdecomp.verify.opensubdiv import osd_central_rings
-
-    one_step, leak = 0.0, 0.0
-    offset, scale = np.zeros(3), 1.0  # real coordinates = offset + scale * stored
-    current = np.array(ring, dtype=np.float64)
-    centre_errors = [] if limit is None else [float(np.max(np.abs(current[0] - limit)))]
-    steps = []
-    for _ in range(levels):
-        out = osd_central_rings(_ring_as_mesh(tuple(map(tuple, current)), n, 1), 0, 1).rings[1]
-        predicted = _matvec(matrix, current)
-        one_step = max(one_step, float(np.max(np.abs(predicted - out)) / max(1.0, np.max(np.abs(current)))))
-        if frequency is not None:
-            kept = _frequency_part(out, n, frequency)
-            base = out[0] if frequency != 0 else np.zeros(3)
-            # what OpenSubdiv put into other frequencies, relative to what it kept
-            leak = max(leak, float(np.max(np.abs(out - kept - _centre_only(base, n))) / np.max(np.abs(kept - _centre_only(kept[0], n)))))
-            out = kept if frequency == 0 else kept + _centre_only(base, n)
-        steps.append((fourier_components(current, n), fourier_components(out, n)))
-        if limit is not None:
-            centre_errors.append(float(np.max(np.abs(offset + scale * out[0] - limit))))
-        # renormalise: O to the origin and magnitude about 1 (power-of-two scaling is exact)
-        shift = out[0].copy()
-        moved = out - shift
-        size = float(np.max(np.abs(moved)))
-        power = 2.0 ** (-math.floor(math.log2(size))) if size > 0 else 1.0
-        offset = offset + scale * shift
-        scale = scale / power
-        current = moved * power
-    return _Chain(steps, one_step, centre_errors, leak)
+def sharp_cases(scheme: str, kinds=KINDS, ks=range(1, 13), sharpness=SHARPNESS) -> list[SharpCase]:
+    """The cases of the sweep: boundaries and corners once (sharpness does not apply), with both boundary
+    interpolations where they differ (a boundary vertex of one face); creases and darts (at least three
+    faces around the vertex) at every sharpness, with both creasing methods where a semi-sharp crease decays."""
+    out = []
+    for kind in kinds:
+        for k in ks:
+            if kind in ("boundary", "corner"):
+                bounds = ("edge-only", "edge-and-corner") if kind == "boundary" and k == 1 else ("edge-and-corner",)
+                out += [SharpCase(scheme, kind, k, math.inf, b) for b in bounds]
+            elif (2 * k if kind == "crease" else k) >= 3:  # a closed fan of at least 3 faces
+                for s in sharpness:
+                    methods = ("uniform", "chaikin") if 0 < s < math.inf else ("uniform",)
+                    out += [SharpCase(scheme, kind, k, s, creasing=m) for m in methods]
+    return out
 
 
-def _centre_only(o: np.ndarray, n: int) -> np.ndarray:
-    """The ring with every point at ``o`` (a translation)."""
-    return np.tile(o, (2 * n + 1, 1))
+def _ours(case: SharpCase, level: int) -> mpmath.matrix:
+    """Our exact matrix of the level (rational, or algebraic for Loop), its entries to :data:`~symdecomp.verify.matrix_measures.DIGITS` digits."""
+    from symdecomp.schemes.sector import sharp_subdivision_matrix
+    from symdecomp.schemes.sharp import SharpOptions
+
+    scheme = catmull_clark() if case.quad else loop()
+    exact = sharp_subdivision_matrix(scheme, case.vertex(), level=level, options=SharpOptions(case.boundary, case.creasing))
+    with mpmath.workdps(DIGITS):
+        return mpmath.matrix([[_mp(x) for x in exact.row(r)] for r in range(exact.rows)])
 
 
-def _exact(name, disagreement, predicted=None, observed=None) -> Prediction:
-    return Prediction(name, "exact", predicted, observed, disagreement, None, None, disagreement <= EXACT_TOLERANCE)
+def _mp(x: sp.Expr) -> mpmath.mpf:
+    """An exact value to the working precision (a rational exactly rounded, an algebraic number by sympy's evalf)."""
+    if x.is_Rational:
+        return mpmath.mpf(int(x.p)) / int(x.q)
+    return mpmath.mpf(str(sp.N(x, mpmath.mp.dps + 10)))
 
 
-def _limit(name, predicted, observed, errors, rate, floor, levels) -> Prediction:
-    last = errors[-1]
-    bound = 100.0 * rate**levels + 1e-12
-    return Prediction(name, "limit", predicted, observed, last, rate, _rate_from(errors, floor), last <= bound)
+def _level_checks(case: SharpCase, fan: OsdFan, level: int, ours: mpmath.matrix, mask) -> list:
+    osd = fan.ring(OsdOptions(case.scheme, case.boundary, case.creasing), level)
+    mine = floats(ours)
+    decayed = level >= case.levels()
+    why = "" if decayed else "OpenSubdiv's Limit takes the crease rule of this level, not the decayed limit"
+    checks = [SharpCheck("matrix", difference(ours, osd.matrix)),
+              SharpCheck("ring closed", float(np.max(np.abs(osd.leak)))),
+              SharpCheck("spectrum", spectrum_distance(mine, osd.matrix))]
+    if mask is None:
+        return checks + [SharpCheck("limit mask", math.inf, note="our eigenvalue 1 is not simple")]
+    checks.append(SharpCheck("limit mask", difference(mpmath.matrix([mask]), osd.masks[:1]), decayed, why))
+    (plane, half), stationary = left_spans(mine, 2 if case.kind == "crease" else 1), decayed and case.levels() == level
+    note = "" if stationary else why or "our matrix of this level is not the stationary one"
+    checks.append(SharpCheck("tangents independent", 0.0 if np.linalg.matrix_rank(osd.masks[1:], tol=1e-9) == 2 else 1.0))
+    if case.kind != "dart" and (case.sharpness == math.inf or case.kind != "crease"):
+        checks.append(SharpCheck("curve tangent", tangent_residual(half, osd.masks[1]), stationary, note))
+    for name, mask in (("surface tangent 1", osd.masks[1]), ("surface tangent 2", osd.masks[2])):
+        checks.append(SharpCheck(name, tangent_residual(plane, mask), stationary, note))
+    return checks
+
+
+def _limit_point_check(case: SharpCase, fan: OsdFan, mask, seed: int) -> SharpCheck:
+    rng = np.random.default_rng(seed)
+    positions = rng.uniform(-1, 1, size=(len(mask), 3))
+    queries = [(j, 0.0, 0.0) for j in range(len(fan.faces))]
+    limits, _, _ = fan.limits(positions, queries, OsdOptions(case.scheme, case.boundary, case.creasing))
+    ours = np.array([sum(float(w) * positions[i, c] for i, w in enumerate(mask)) for c in range(3)])
+    return SharpCheck("limit point", float(np.max(np.abs(limits - ours))), note="patch table at (face, 0, 0)")
+
+
+def compare_sharp_case(case: SharpCase, *, seed: int = 0) -> list[SharpResult]:
+    """The checks of ``case`` at every level from 0 to :meth:`SharpCase.levels` (see the module docstring)."""
+    if not isinstance(case, SharpCase):
+        raise InvalidInputError(f"case must be a SharpCase, got {type(case).__name__}")
+    fan = case.fan()
+    mats = [_ours(case, level) for level in range(case.levels() + 1)]
+    masks = limit_masks(mats)
+    results = []
+    for level, (ours, mask) in enumerate(zip(mats, masks)):
+        checks = _level_checks(case, fan, level, ours, mask)
+        if level == 0 and mask is not None:
+            checks.append(_limit_point_check(case, fan, mask, seed))
+        results.append(SharpResult(case, level, tuple(checks)))
+    return results

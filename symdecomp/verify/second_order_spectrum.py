@@ -63,7 +63,12 @@ PRECISIONS = (128, 512)
 
 @dataclass(frozen=True)
 class SecondOrderEigenvalue:
-    """An eigenvalue of the 2-ring matrix after ``1`` and ``lambda_1``, compared with ``lambda_1^2``."""
+    """An eigenvalue of the 2-ring matrix after ``1`` and ``lambda_1``, compared with ``lambda_1^2``.
+
+    A root of one frequency block (as :class:`~symdecomp.verify.c1_spectrum.Eigen`) with the outcome of a comparison,
+    not a distinct eigenvalue of the matrix (:class:`~symdecomp.analysis.eigenvalue.Eigenvalue`): roots of several
+    frequencies with equal moduli are kept apart, since which frequencies give ``mu`` is the regime's cause.
+    """
 
     #: An Arb ball around it.
     value: flint.acb

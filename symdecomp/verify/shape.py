@@ -80,6 +80,7 @@ from fractions import Fraction
 import flint
 
 from symdecomp.analysis.characteristic import check_applicable, frequency_blocks, outer_radius, ring_layout
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.second_order import height_eigenvector
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -91,7 +92,7 @@ from symdecomp.verify.curvature import certify_nets, combine, curvature_gram, ja
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.second_order_spectrum import dominant_frequency
 
-__all__ = ["KINDS", "SecondOrderEigen", "HeightFields", "height_fields", "ShapeResult", "classify_shape", "ShapeChart", "shape_chart"]
+__all__ = ["KINDS", "HeightFields", "height_fields", "ShapeResult", "classify_shape", "ShapeChart", "shape_chart"]
 
 #: The possible verdicts of :func:`classify_shape`.
 KINDS = ("elliptic", "hyperbolic", "hybrid", "undecided")
@@ -102,23 +103,6 @@ class _Undecided(Exception):
 
 
 @dataclass(frozen=True)
-class SecondOrderEigen:
-    """A second-order eigenvalue of the 2-ring matrix and what is known of it."""
-
-    #: 0 (elliptic) or 2 (hyperbolic; at ``n = 3`` frequency 2 is frequency -1).
-    frequency: int
-    #: The eigenvalue, a real Arb ball.
-    value: flint.arb
-    #: Whether it exceeds the regular part's outer eigenvalues (``True``/``False``; ``None``: not separated), i.e. whether it
-    #: is the largest eigenvalue of its frequency after ``lambda``.
-    above_outer: bool | None
-
-    def text(self) -> str:
-        below = " (below the regular part's outer eigenvalues)" if self.above_outer is False else ""
-        return f"mu_{self.frequency} = {ball_text(self.value)}{below}"
-
-
-@dataclass(frozen=True)
 class HeightFields:
     """The characteristic map and the second-order height fields of one valence, as Bezier nets of sector 0's sub-patches."""
 
@@ -126,9 +110,10 @@ class HeightFields:
     n: int
     #: The subdominant eigenvalue ``lambda`` (a real ball).
     subdominant: flint.arb
-    #: The elliptic eigenvalue (frequency 0) and the hyperbolic one (frequency 2), when asked for.
-    elliptic: SecondOrderEigen | None
-    hyperbolic: SecondOrderEigen | None
+    #: The elliptic eigenvalue (frequency 0) and the hyperbolic one (frequencies 2 and ``n - 2``; at ``n = 3`` frequency 2
+    #: is frequency -1), when asked for: real Arb balls, the block read first in ``frequencies`` (:func:`_second_order`).
+    elliptic: Eigenvalue | None
+    hyperbolic: Eigenvalue | None
     #: ``[(X, Y), ...]``: the characteristic map's nets per sub-patch.
     chi: tuple
     #: Per sub-patch the height nets in order: ``h_0`` (if elliptic), then ``h_2c``, ``h_2s`` (if hyperbolic).
@@ -136,6 +121,8 @@ class HeightFields:
     #: The certified sign of the characteristic map's Jacobian (regularity).
     jacobian: SignCertificate
     lattice: object = None
+    #: The frequencies (0, 2) whose eigenvalue is certified below the regular part's outer ones (not its frequency's largest).
+    below_outer: tuple[int, ...] = ()
 
 
 def _above_outer(scheme: Scheme, value: flint.arb) -> bool | None:
@@ -145,7 +132,24 @@ def _above_outer(scheme: Scheme, value: flint.arb) -> bool | None:
     return True if abs(value) > radius else False if abs(value) < radius else None
 
 
-def _elliptic_eigenvalue(scheme: Scheme, n: int) -> SecondOrderEigen:
+def _second_order(n: int, frequency: int, value: flint.arb) -> Eigenvalue:
+    """A second-order eigenvalue, the one type: its block's copies (frequency 0 once, 2 with ``n - 2``), that block first."""
+    frequencies = (0,) if frequency == 0 else (2, n - 2)
+    return Eigenvalue(value, ball_text(value), len(frequencies), frequencies=frequencies)
+
+
+def _ball(e: Eigenvalue) -> flint.arb:
+    """The real Arb ball of a second-order eigenvalue (:func:`_second_order` makes them)."""
+    assert isinstance(e.value, flint.arb)
+    return e.value
+
+
+def _mu_text(e: Eigenvalue, below_outer: tuple[int, ...]) -> str:
+    below = " (below the regular part's outer eigenvalues)" if e.frequencies[0] in below_outer else ""
+    return f"mu_{e.frequencies[0]} = {e.text}{below}"
+
+
+def _elliptic_eigenvalue(scheme: Scheme, n: int) -> Eigenvalue:
     """The largest non-unit eigenvalue of the frequency-0 1-ring block (Eq. 43 on quads), certified real and simple."""
     eigen, failure = frequency_zero_eigenvalues(scheme, n)
     if failure:
@@ -158,10 +162,10 @@ def _elliptic_eigenvalue(scheme: Scheme, n: int) -> SecondOrderEigen:
         raise _Undecided(f"the largest frequency-0 eigenvalue after 1, {ball_text(top.value)}, is a double root: its eigenfunction is not one")
     if len(eigen) > 1 and not abs(eigen[1].value) < abs(top.value):
         raise _Undecided(f"the frequency-0 eigenvalues {ball_text(top.value)} and {ball_text(eigen[1].value)} are not separated at this precision")
-    return SecondOrderEigen(0, top.value.real, _above_outer(scheme, top.value.real))
+    return _second_order(n, 0, top.value.real)
 
 
-def _hyperbolic_eigenvalue(scheme: Scheme, n: int, lam: flint.acb) -> SecondOrderEigen:
+def _hyperbolic_eigenvalue(scheme: Scheme, n: int, lam: flint.acb) -> Eigenvalue:
     """The largest eigenvalue of the frequency-2 1-ring block other than ``lambda``, certified real and simple."""
     if n == 4:
         raise NotApplicableError("at n = 4 frequency 2 is n/2: its eigenvectors are real (sector values (-1)^s), so there is no "
@@ -184,7 +188,7 @@ def _hyperbolic_eigenvalue(scheme: Scheme, n: int, lam: flint.acb) -> SecondOrde
         real = bool((t * t - 4 * d).real > 0)
     if not real:
         raise _Undecided(f"the frequency-2 eigenvalue {ball_text(top)} is not shown to be real: no real hyperbolic pair")
-    return SecondOrderEigen(2, top.real, _above_outer(scheme, top.real))
+    return _second_order(n, 2, top.real)
 
 
 def _height_fields(scheme: Scheme, n: int, elliptic: bool, hyperbolic: bool, max_depth: int) -> HeightFields:
@@ -208,13 +212,14 @@ def _height_fields(scheme: Scheme, n: int, elliptic: bool, hyperbolic: bool, max
             continue
         mu = eigen[kind] = pick()
         try:
-            vec = height_eigenvector(scheme, n, mu.frequency % n, flint.acb(mu.value))
+            vec = height_eigenvector(scheme, n, mu.frequencies[0] % n, flint.acb(_ball(mu)))
         except InvalidSchemeError as exc:
             raise _Undecided(str(exc)) from exc
         for patch, (re, im) in zip(heights, bezier_nets(vec)):
-            patch += [re] if mu.frequency == 0 else [re, im]
+            patch += [re] if mu.frequencies[0] == 0 else [re, im]
+    below = tuple(e.frequencies[0] for e in eigen.values() if _above_outer(scheme, e.value) is False)
     return HeightFields(scheme.name, n, lam.real, eigen.get("elliptic"), eigen.get("hyperbolic"), tuple(chi),
-                        tuple(tuple(h) for h in heights), jac, scheme.lattice)
+                        tuple(tuple(h) for h in heights), jac, scheme.lattice, below)
 
 
 def height_fields(scheme: Scheme, n: int, *, elliptic: bool = True, hyperbolic: bool = True, prec: int = 64) -> HeightFields:
@@ -365,9 +370,9 @@ def _verdict(fields: HeightFields, gram: list, degree, a, b, t, max_depth: int, 
     out = _classify_cases(fields, gram, degree, a, b, t, max_depth)
     found, undecided, certs = out["found"], out["undecided"], out["certs"]
     eigen = [e for e in (fields.elliptic, fields.hyperbolic) if e is not None]
-    mus = "; ".join(e.text() for e in eigen) + f", lambda = {ball_text(fields.subdominant)}"
-    base = dict(scheme=fields.scheme, n=fields.n, elliptic=a, hyperbolic=b, angle=t, frequencies=tuple(e.frequency for e in eigen),
-                mu=tuple(float(e.value.mid()) for e in eigen), subdominant=float(fields.subdominant.mid()), dominant=_dominant(fields),
+    mus = "; ".join(_mu_text(e, fields.below_outer) for e in eigen) + f", lambda = {ball_text(fields.subdominant)}"
+    base = dict(scheme=fields.scheme, n=fields.n, elliptic=a, hyperbolic=b, angle=t, frequencies=tuple(e.frequencies[0] for e in eigen),
+                mu=tuple(float(_ball(e).mid()) for e in eigen), subdominant=float(fields.subdominant.mid()), dominant=_dominant(fields),
                 depth=max(c.depth for c in certs), max_depth=max_depth, precision=prec, cases=len(certs))
     if 1 in found and -1 in found:
         return ShapeResult(kind="hybrid", reason=f"{mus}: the Gaussian curvature of the central surface changes sign, positive in "

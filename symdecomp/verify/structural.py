@@ -4,27 +4,27 @@ For one valence ``n`` the claim is the one of :mod:`symdecomp.verify.certify`: t
 eigenvalues (:mod:`symdecomp.analysis.closed_forms`) are the spectrum of the full
 ``(2n+1) x (2n+1)`` matrix, with multiplicities. The proof:
 
-1. *The matrix is the block matrix* (:func:`~symdecomp.verify.ring_certify.structural_certificate`):
+1. *The matrix is the block matrix* (:func:`structural_certificate`):
    the full 1-ring matrix, built from the rules without the block structure, equals entry by
    entry the bordered circulant-block matrix of ``E_0`` and ``E(omega)``. Its spectrum is then
    that of ``E_0`` and of ``E(omega^k)``, ``k = 1..n-1``, with multiplicities (Prop. 6.2 and
    Remark 6.1, proved for every ``n``).
 2. *The closed forms are the frequency factors.* With ``e_1 = v_+ + v_-`` and ``e_2 = v_+ v_-``
    as Laurent polynomials in ``omega`` (step 1 of :mod:`~symdecomp.verify.certify`,
-   :func:`~symdecomp.verify.certify.symmetric_functions`), ``e_1 - tr E(omega)`` and
+   :func:`~symdecomp.verify.symmetric_functions.symmetric_functions`), ``e_1 - tr E(omega)`` and
    ``e_2 - det E(omega)`` vanish at every ``omega^k``, ``k = 1..n-1``: exactly when, folded
    modulo ``omega^n - 1``, their ``n`` coefficients are all equal (a multiple of
    ``1 + omega + ... + omega^{n-1}``). Either orientation, ``omega`` or ``1/omega``, will do: the
    set of the ``omega^k`` is closed under inversion. And ``F_0 = det(lambda I - E_0)``: three
    rational coefficients at ``n``. Then both sides are the same product of factors.
 3. *Otherwise* the multisets are compared exactly: the closed forms' characteristic polynomial
-   (resultants, :func:`~symdecomp.verify.certify.closed_form_characteristic_value`) against the
+   (resultants, :func:`~symdecomp.verify.symmetric_functions.closed_form_characteristic_value`) against the
    product of the frequency factors (:func:`~symdecomp.analysis.charpoly.frequency_product_values`)
    at ``2n+1`` rational points. Equal: proved (the closed forms pair up across frequencies);
    different: refuted, exactly.
 
 Distinct values and multiplicities come from the frequency factors
-(:func:`~symdecomp.verify.ring_certify.cluster_multiplicities`). The route applies where the block
+(:func:`~symdecomp.verify.multiplicities.cluster_multiplicities`). The route applies where the block
 form is read for every ``n`` and the closed forms' symmetric functions reduce:
 :func:`structural_obstacle` says why not otherwise (edge or face rules in ``n``, free parameters,
 the block form not banded), and ``check --certify`` then takes the dense route and says so. Closed
@@ -40,29 +40,31 @@ left undecided (a failure), as on the dense route.
 
 from __future__ import annotations
 
+from fractions import Fraction
 from functools import lru_cache
 
 import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
-from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_sympy
 from symdecomp.analysis.charpoly import frequency_product_values
 from symdecomp.analysis.closed_forms import ClosedForms, derived_closed_forms
 from symdecomp.analysis.frequency import RingBlocks, ring_blocks
 from symdecomp.analysis.spectrum import ring_spectrum
 from symdecomp.errors import NotApplicableError, SymdecompError
-from symdecomp.schemes.rings import CENTRE_WEIGHTS
+from symdecomp.schemes.rings import CENTRE_WEIGHTS, ring_subdivision_matrix
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
-from symdecomp.validate import check_valence
-from symdecomp.verify.certify import Certificate, SymmetricFunctions, closed_form_characteristic_value, symmetric_functions
+from symdecomp.validate import check_digits, check_valence
+from symdecomp.verify.certify import Certificate
+from symdecomp.verify.multiplicities import cluster_multiplicities, describe_labels, value_text
 from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.verify.ring_certify import structural_certificate
+from symdecomp.verify.symmetric_functions import SymmetricFunctions, closed_form_characteristic_value, symmetric_functions
 
-__all__ = ["structural_obstacle", "certify_structural", "STRUCTURAL_BYTES_PER_VALENCE"]
+__all__ = ["structural_obstacle", "certify_structural", "structural_certificate", "STRUCTURAL_BYTES_PER_VALENCE"]
 
 #: Memory of the structural route per valence and per ring squared (measured: 6 kB on the 1-ring, 84 kB on
 #: the 3-ring at n = 2000; the refined matrix's sparse rows
@@ -226,8 +228,6 @@ def _refute_by_balls(scheme: Scheme, cf: ClosedForms, n: int, digits: int, max_d
     many eigenvalues as the cluster's multiplicity: holding more closed-form values than that, or
     overlapping fewer, refutes them. The precision doubles up to ``max_digits``.
     """
-    from symdecomp.verify.certify import _describe, _text
-
     labels = cf.eigenvalue_labels(n)
     d = digits
     while True:
@@ -235,7 +235,7 @@ def _refute_by_balls(scheme: Scheme, cf: ClosedForms, n: int, digits: int, max_d
         balls = cf.values(n, {}, engine="arb", prec=max(256, 8 * d + 64))
         for label, v in zip(labels, balls):
             if not any(h.overlaps(v) for _, h in hulls):
-                return (f"n = {n}: closed-form eigenvalue {_text(v, digits)} ({_describe([label])}) is not an eigenvalue of "
+                return (f"n = {n}: closed-form eigenvalue {value_text(v, digits)} ({describe_labels([label])}) is not an eigenvalue of "
                         "the full matrix: it lies outside the certified balls of the frequency factors' roots")
         for e, h in hulls:  # a hull apart from the others holds exactly e.multiplicity eigenvalues
             if any(h.overlaps(other) for f, other in hulls if f is not e):
@@ -245,7 +245,7 @@ def _refute_by_balls(scheme: Scheme, cf: ClosedForms, n: int, digits: int, max_d
             if len(inside) > e.multiplicity or len(near) < e.multiplicity:
                 which = inside if len(inside) > e.multiplicity else near
                 return (f"n = {n}: {len(which)} closed-form eigenvalues lie at the eigenvalue {e.text}"
-                        f"{' (' + _describe([labels[i] for i in which]) + ')' if which else ''}, whose multiplicity in the "
+                        f"{' (' + describe_labels([labels[i] for i in which]) + ')' if which else ''}, whose multiplicity in the "
                         f"full matrix is {e.multiplicity} (certified)")
         if d >= max_digits:
             return None
@@ -254,8 +254,6 @@ def _refute_by_balls(scheme: Scheme, cf: ClosedForms, n: int, digits: int, max_d
 
 def _first_wrong(cf: ClosedForms, blocks: RingBlocks, n: int, prec: int = 256) -> str:
     """Name a closed-form eigenvalue that is a root of neither orientation of its frequency's factor (Arb)."""
-    from symdecomp.verify.certify import _describe, _text
-
     labels = cf.eigenvalue_labels(n)
     balls = cf.values(n, {}, engine="arb", prec=prec)
     K = blocks.class_count
@@ -274,5 +272,105 @@ def _first_wrong(cf: ClosedForms, blocks: RingBlocks, n: int, prec: int = 256) -
                                                 for q in range(K)] for p in range(K)]))
             if all(not (M - v * flint.acb_mat(M.nrows(), M.ncols(), [int(i == j) for i in range(M.nrows()) for j in range(M.ncols())]))
                    .det().contains(0) for M in mats):
-                return f"closed-form eigenvalue {_text(v, 20)} ({_describe([label])}) is not a root of its frequency's factor; "
+                return f"closed-form eigenvalue {value_text(v, 20)} ({describe_labels([label])}) is not a root of its frequency's factor; "
     return ""
+
+
+def structural_certificate(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBlocks | None = None, digits: int = 20) -> Certificate:
+    """An ``O(n)`` proof: the full refined matrix *is* the bordered circulant-block matrix of ``blocks``.
+
+    Every entry of the matrix built by refinement (no block structure) is compared exactly
+    with the entry the block form predicts (in block order; the centre weights as exact values
+    or, when algebraic, as the same symbols). Equal matrices have equal spectra, and the
+    spectrum of a bordered CB-matrix is that of ``E_0`` and of ``E(omega^k)`` with multiplicities
+    (Prop. 6.2 and Remark 6.1, proved for every ``n`` in ``symdecomp claims --section 6``: the
+    vectors ``e_0``, ``e_p (x) v_k`` form a basis in which the matrix is block diagonal). So the
+    frequency factors are the spectrum. Multiplicities are those of the Arb clusters, certified
+    by :func:`~symdecomp.verify.multiplicities.cluster_multiplicities` where its exact arguments apply (else the certificate says
+    why not).
+    """
+    n, digits = check_valence(n), check_digits(digits)
+    blocks = blocks or ring_blocks(scheme, rings)
+    S = ring_subdivision_matrix(scheme, n, rings)
+    v = scheme.vertex_rule
+    rule = dict(zip(CENTRE_WEIGHTS, (v.center, v.each_a, v.each_b)))
+    fixed = {s: sp.sympify(w, strict=True).subs(N, n) for s, w in rule.items() if s not in S.weights}
+    order = S.block_order()
+    K = blocks.class_count
+    mismatch, cache = None, {}
+    for i, r in enumerate(order):
+        expected = _expected_row(blocks, n, K, i, fixed, cache)
+        got = {_POS(order, c): x for c, x in S.rows[r].items()}
+        keys = set(expected) | set(got)
+        bad = [c for c in keys if not _same(got.get(c, 0), expected.get(c, 0))]
+        if bad:
+            mismatch = (i, bad[0], got.get(bad[0], 0), expected.get(bad[0], 0))
+            break
+    spectrum = ring_spectrum(scheme, n, rings, digits=digits, exact=False, jordan=False)
+    multiplicities = tuple(e.multiplicity for e in spectrum.eigenvalues)
+    texts = tuple(e.text for e in spectrum.eigenvalues)
+    if mismatch is not None:
+        i, c, got, want = mismatch
+        message = (f"n = {n}: refuted: entry ({i}, {c}) of the refined matrix (block order) is {got}, the block form "
+                   f"gives {want} (exact)")
+        return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.DISAGREE, message=message,
+                           method="refined matrix != block form", distinct=0, multiplicities=multiplicities, values=texts,
+                           multiplicities_certified=False, height_bits=0, route="structural")
+    method = f"refined matrix = bordered CB-matrix of E_0, E(omega), entry by entry ({sum(len(r) for r in S.rows)} entries); Remark 6.1"
+    why_not = cluster_multiplicities(scheme, blocks, spectrum)
+    note = "multiplicities certified" if why_not is None else f"multiplicities not certified ({why_not})"
+    message = f"n = {n}: proved: {method}; {len(spectrum.eigenvalues)} distinct values, {note}"
+    return Certificate(n=n, scheme=scheme.name, status=CrossCheckStatus.AGREE, message=message, method=method,
+                       distinct=len(spectrum.eigenvalues), multiplicities=multiplicities, values=texts,
+                       multiplicities_certified=why_not is None, height_bits=0, route="structural")
+
+
+_POS_CACHE: dict = {}
+
+
+def _POS(order, c):
+    key = id(order)
+    if key not in _POS_CACHE or _POS_CACHE[key][0] is not order:
+        _POS_CACHE.clear()
+        _POS_CACHE[key] = (order, {r: i for i, r in enumerate(order)})
+    return _POS_CACHE[key][1][c]
+
+
+def _same(a, b) -> bool:
+    """Exact equality of two entries (``Fraction`` or sympy, linear in the centre-weight symbols)."""
+    if isinstance(a, (int, Fraction)) and isinstance(b, (int, Fraction)):
+        return a == b
+    return sp.expand(to_sympy(a) - to_sympy(b)) == 0
+
+
+def _exact(x, fixed: dict):
+    """A block entry with the fixed centre weights substituted: ``Fraction`` when rational, else sympy."""
+    x = sp.expand(sp.sympify(x, strict=True).xreplace(fixed))
+    return to_fraction(x) if x.is_Rational else x
+
+
+def _expected_row(blocks: RingBlocks, n: int, K: int, i: int, fixed: dict, cache: dict) -> dict:
+    """Row ``i`` (block order) of the bordered CB-matrix: ``{column: entry}``, centre weights as given."""
+    if "centre" not in cache:
+        fixed = {**fixed, N: sp.Integer(n)}  # an edge rule in n: the blocks at this valence
+        cache["centre"] = _exact(blocks.centre, fixed)
+        cache["row"] = [_exact(w, fixed) for w in blocks.centre_row]
+        cache["column"] = [_exact(c, fixed) for c in blocks.centre_column]
+        cache["offsets"] = [[[(l, _exact(c, fixed)) for l, c in blocks.offsets[p][q]] for q in range(K)] for p in range(K)]
+    out: dict = {}
+
+    def add(c, x):
+        out[c] = out[c] + x if c in out else x
+
+    if i == 0:
+        add(0, cache["centre"])
+        for q in range(K):
+            for s in range(n):
+                add(1 + q * n + s, cache["row"][q])
+    else:
+        p, s = divmod(i - 1, n)
+        add(0, cache["column"][p])
+        for q in range(K):
+            for l, c in cache["offsets"][p][q]:
+                add(1 + q * n + (s + l) % n, c)
+    return {c: x for c, x in out.items() if x != 0}

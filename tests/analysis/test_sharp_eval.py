@@ -15,7 +15,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex, exact_sharp_matrix
-from symdecomp.verify.sharp_patch_eval import dyadic_check
+from symdecomp.verify.patch_eval import dyadic_check
 
 SCHEMES = {"catmull-clark": catmull_clark, "loop": loop}
 

@@ -121,7 +121,7 @@ def test_unequal_sides_under_blz_reach_two_fields_and_agree_with_the_matrix():
     """Crease 4+5 with BLZ's rules: entries in Q(cos(pi/4), cos(pi/5)), which the dense route refuses; 1/2 is an
     eigenvalue of the crease block and of each side's first sine block (decided through the rational), and the
     values agree with the refined matrix's eigenvalues (numeric check, nothing shared)."""
-    from symdecomp.verify.sharp_numeric import numeric_sharp
+    from symdecomp.verify.numeric import numeric_sharp
 
     scheme = SCHEMES["cc-blz"]
     vertex = sd.SharpVertex.crease(4, 5, scheme.lattice)

@@ -236,8 +236,8 @@ def test_a_lattice_without_a_face_size_fails_naming_it():
 @pytest.mark.parametrize("make", [catmull_clark_stencils, loop_stencils, doo_sabin_stencils, sqrt3_stencils])
 @pytest.mark.parametrize("n", [4, 5])
 def test_certificates_agree(make, n):
+    from symdecomp.verify.certify import certify_zoo
     from symdecomp.verify.result import CrossCheckStatus
-    from symdecomp.verify.zoo_certify import certify_zoo
 
     c = certify_zoo(make(), n)
     assert c.status == CrossCheckStatus.AGREE and c.multiplicities_certified
@@ -248,8 +248,8 @@ def test_certificates_agree(make, n):
 def test_the_charpoly_route_refutes_a_matrix_that_is_not_the_blocks():
     """One weight moved (the row still sums to 1): chi_S's roots leave the blocks' balls."""
     from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks
+    from symdecomp.verify.certify import _charpoly_verdict
     from symdecomp.verify.result import CrossCheckStatus
-    from symdecomp.verify.zoo_certify import _charpoly_verdict
 
     zm = zoo_matrix(catmull_clark_stencils(), 4)
     spectrum = spectrum_of_blocks(zoo_blocks(zm), digits=20, exact=False)
@@ -297,8 +297,8 @@ def test_masks_of_catmull_clark_as_stencils_are_ring_masks():
 def test_modified_butterfly_reaches_two_rings_and_is_certified(n):
     """The butterfly's edge rule reaches two rings: the closure finds depth 2; its spectrum is certified at every n, at
     the regular valence through a factor with a repeated root (split exactly); old vertices are kept."""
+    from symdecomp.verify.certify import certify_zoo
     from symdecomp.verify.result import CrossCheckStatus
-    from symdecomp.verify.zoo_certify import certify_zoo
 
     zm = zoo_matrix(butterfly_stencils(), n)
     assert zm.depth == 2

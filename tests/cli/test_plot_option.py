@@ -62,7 +62,7 @@ def _refuse(monkeypatch, where: str) -> None:
     (["spectrum", "2", "--boundary"], "symdecomp.analysis.sharp_spectrum.sharp_levels"),
     (["artifacts", "--n", "3"], "symdecomp.cli.artifacts_cmd.ordered_map"),
     (["check", "--n", "3"], "symdecomp.cli.check_cmd.check_valences"),
-    (["check", "--boundary", "--k", "2", "--certify"], "symdecomp.verify.sharp_certify.certify_sharp"),
+    (["check", "--boundary", "--k", "2", "--certify"], "symdecomp.verify.certify.certify_sharp"),
 ])
 def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypatch, capsys):
     _refuse(monkeypatch, work)

@@ -25,8 +25,8 @@ def every_item_a_line(monkeypatch):
 @pytest.fixture
 def no_opensubdiv(monkeypatch):
     monkeypatch.setattr("symdecomp.verify.opensubdiv.load_bridge", lambda *a, **k: None)
-    monkeypatch.setattr("symdecomp.verify.oracle.compare_with_opensubdiv",
-                        lambda n, levels, seed: types.SimpleNamespace(as_json=lambda: {"n": n}, agrees=True))
+    monkeypatch.setattr("symdecomp.verify.oracle.comparison", lambda lattice: (
+        lambda n, levels, seed: types.SimpleNamespace(as_json=lambda: {"n": n}, agrees=True)))
 
 
 @pytest.fixture

@@ -39,9 +39,9 @@ from symdecomp.analysis.tuning_region import tuning_region
 from symdecomp.errors import InvalidInputError, InvalidMeshError, InvalidSchemeError, InvalidTypeError, SymdecompError
 from symdecomp.output.plotting.boundary import sector_modes, subdominant_eigenvalues
 from symdecomp.schemes.box_spline import regular_limit_mask, regular_patch
-from symdecomp.verify.certify import symmetric_functions
 from symdecomp.verify.mesh_verdicts import kind_verdict
-from symdecomp.verify.oracle import toolkit_predictions
+from symdecomp.verify.predictions import toolkit_predictions
+from symdecomp.verify.symmetric_functions import symmetric_functions
 from symdecomp.verify.tuning_c1 import certified_tuning_region
 from tests.analysis.zoo_engine_schemes import doo_sabin_stencils
 

@@ -126,7 +126,7 @@ def test_the_ring_certificate_and_the_product_form_read_the_blocks_at_n():
     """The structural certificate compares the refined matrix with the blocks at n (it said 'refuted', the block entry
     n/64 + 5/16 against 25/64), and the product form equals chi_S at 31 points (it raised on n in E(omega))."""
     from symdecomp.analysis.charpoly import ring_charpoly
-    from symdecomp.verify.ring_certify import certify_ring
+    from symdecomp.verify.certify import certify_ring
 
     assert ring_charpoly(LOPSIDED_ENDS, 5, 2)["matches_matrix"] is True
     certificate = certify_ring(LOPSIDED_ENDS, 5, 2)

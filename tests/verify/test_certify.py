@@ -13,8 +13,9 @@ from symdecomp.errors import InvalidSchemeError, InvalidValenceError
 from symdecomp.schemes.full_matrix import characteristic_polynomial, exact_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta, lam
-from symdecomp.verify.certify import certify, closed_form_characteristic_value, symmetric_functions
+from symdecomp.verify.certify import certify
 from symdecomp.verify.result import CrossCheckStatus
+from symdecomp.verify.symmetric_functions import closed_form_characteristic_value, symmetric_functions
 
 CC = catmull_clark()
 FREE = catmull_clark(alpha, beta)

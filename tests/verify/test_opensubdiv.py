@@ -24,7 +24,9 @@ if not osd_build.headers_present():
     pytest.skip("OpenSubdiv headers (libosd-dev) or g++ not installed", allow_module_level=True)
 
 from symdecomp.verify.opensubdiv import load_bridge, osd_central_rings  # noqa: E402
-from symdecomp.verify.oracle import compare_with_opensubdiv, elliptic_eigenvector, fourier_components  # noqa: E402
+from symdecomp.verify.oracle import compare_with_opensubdiv  # noqa: E402
+from symdecomp.verify.predictions import elliptic_eigenvector  # noqa: E402
+from symdecomp.verify.step_chains import fourier_components  # noqa: E402
 
 load_bridge()  # builds it if needed; raises (an error, not a skip) if the build fails
 

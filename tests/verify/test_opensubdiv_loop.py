@@ -41,7 +41,7 @@ def test_loop_tangent_masks_span_opensubdiv_tangents(n):
 
 @pytest.mark.parametrize("n", range(3, 13))
 def test_the_loop_oracle_agrees_row_by_row(n):
-    from symdecomp.verify.oracle_loop import compare_loop_with_opensubdiv
+    from symdecomp.verify.oracle import compare_loop_with_opensubdiv
 
     result = compare_loop_with_opensubdiv(n, levels=16)
     names = [p.name for p in result.predictions]
@@ -52,14 +52,14 @@ def test_the_loop_oracle_agrees_row_by_row(n):
 
 def test_the_loop_oracle_catches_a_wrong_vertex_weight(monkeypatch):
     """Predicting with Warren's weight (equal to Loop's only at n = 3 and 6) flips the rows it enters."""
-    import symdecomp.verify.oracle_loop as oracle_loop
+    import symdecomp.verify.oracle as oracle
     from symdecomp.schemes.loop import loop_warren
 
-    monkeypatch.setattr(oracle_loop, "loop", loop_warren)
-    wrong = {p.name: p.agrees for p in oracle_loop.compare_loop_with_opensubdiv(5, levels=16).predictions}
+    monkeypatch.setattr(oracle, "loop", loop_warren)
+    wrong = {p.name: p.agrees for p in oracle.compare_loop_with_opensubdiv(5, levels=16).predictions}
     assert not wrong["one-step matrix"] and not wrong["spectrum"] and not wrong["limit mask"] and not wrong["shrink rate j=0"]
     assert wrong["shrink rate j=1"] and wrong["shrink rate j=2"]  # the edge rule is Loop's: other frequencies agree
-    assert oracle_loop.compare_loop_with_opensubdiv(6, levels=16).agrees  # Warren's weight is Loop's at n = 6
+    assert oracle.compare_loop_with_opensubdiv(6, levels=16).agrees  # Warren's weight is Loop's at n = 6
 
 
 def test_oracle_command_for_loop(capsys):

@@ -19,8 +19,9 @@ import numpy as np  # noqa: E402
 from symdecomp.analysis.support import limit_mask  # noqa: E402
 from symdecomp.cli import main  # noqa: E402
 from symdecomp.schemes.scheme import catmull_clark  # noqa: E402
+from symdecomp.verify.comparisons import TOLERANCE  # noqa: E402
 from symdecomp.verify.opensubdiv.sharp import OsdOptions  # noqa: E402
-from symdecomp.verify.oracle_sharp import TOLERANCE, SharpCase, compare_sharp_case, sharp_cases  # noqa: E402
+from symdecomp.verify.oracle import SharpCase, compare_sharp_case, sharp_cases  # noqa: E402
 
 #: What must agree in every case: our exact matrices, their spectra, the ring's closure, the crease curve's tangent.
 ALWAYS = {"matrix", "ring closed", "spectrum", "tangents independent", "curve tangent"}

@@ -17,10 +17,9 @@ from symdecomp.schemes.rings import ring_subdivision_matrix
 from symdecomp.schemes.scheme import catmull_clark, subdivision_matrix
 from symdecomp.symbols import alpha, beta
 from symdecomp.symbols import n as N
-from symdecomp.verify.certify import certify
+from symdecomp.verify.certify import certify, certify_ring
+from symdecomp.verify.numeric import ring_numeric_check
 from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.verify.ring_certify import certify_ring
-from symdecomp.verify.ring_numeric import ring_numeric_check
 
 SCHEMES = {"loop": loop(), "loop-warren": loop_warren(), "catmull-clark": catmull_clark()}
 
@@ -170,6 +169,16 @@ def test_numeric_ring_check():
             assert r.ok, r.message
 
 
+def test_numeric_ring_check_crosses_the_pool(capsys):
+    """A K-ring check travels from a worker: its matches hold no Arb ball (the factored spectrum's hull does not pickle)."""
+    import pickle
+
+    r = ring_numeric_check(loop(), 4, 2, digits=10)
+    assert pickle.loads(pickle.dumps(r)).matches == r.matches
+    assert main(["check", "--scheme", "loop", "--n", "3:5", "--rings", "2", "--quiet"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].startswith("3 valences: 3 agree")
+
+
 def test_masks_match_the_one_ring_masks_and_loop_limit_formula():
     for n in (3, 5, 8):
         a = ring_masks(catmull_clark(), n, 1, digits=15)
@@ -239,7 +248,7 @@ def test_cluster_multiplicities_refuse_what_they_cannot_prove():
     """Merging two clusters, or listing one twice, is caught (exactly: unequal roots; in Arb: overlap)."""
     import dataclasses
 
-    from symdecomp.verify.ring_certify import cluster_multiplicities
+    from symdecomp.verify.multiplicities import cluster_multiplicities
 
     def merge_two(spectrum):
         a, b, *rest = spectrum.eigenvalues[1:]

@@ -9,7 +9,7 @@ from symdecomp.analysis.sector_evaldata import sector_evaldata
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.verify.sector_evaldata import dyadic_check
+from symdecomp.verify.patch_eval import evaldata_dyadic_check
 
 CC = catmull_clark()
 BLZ = load_scheme("catmull-clark-blz")
@@ -24,7 +24,7 @@ def _vertices(k):
 @pytest.mark.parametrize("k", [1, 2, 3, 4, pytest.param(5, marks=pytest.mark.slow), pytest.param(6, marks=pytest.mark.slow)])
 def test_data_equal_exact_refinement(scheme, k):
     for vertex in _vertices(k):
-        r = dyadic_check(scheme, vertex, levels=(1, 2))
+        r = evaldata_dyadic_check(scheme, vertex, levels=(1, 2))
         assert r["points"] > 0 and r["mismatches"] == 0, (vertex, r)
         assert r["routes"] == (("eigen", "powers") if sector_evaldata(scheme, vertex).exact else ("powers",))
 
@@ -51,8 +51,8 @@ def _mutated_cell(data):
 @pytest.mark.parametrize("mutate", [_mutated_matrix, _mutated_cell])
 def test_another_weight_fails_the_check(scheme, vertex, mutate):
     data = sector_evaldata(scheme, vertex)
-    assert dyadic_check(scheme, vertex, levels=(1, 2), data=data)["mismatches"] == 0
-    r = dyadic_check(scheme, vertex, levels=(1, 2, 3), data=mutate(data))
+    assert evaldata_dyadic_check(scheme, vertex, levels=(1, 2), data=data)["mismatches"] == 0
+    r = evaldata_dyadic_check(scheme, vertex, levels=(1, 2, 3), data=mutate(data))
     assert r["mismatches"] > 0
 
 
@@ -63,4 +63,4 @@ def test_unequal_irrational_sides_and_a_corner_angle():
     for vertex in (SharpVertex.crease(4, 5, "quad"), SharpVertex.corner(3, "quad", angle=sp.pi / 2)):
         data = sector_evaldata(BLZ, vertex)
         assert not data.exact and data.modified
-        assert dyadic_check(BLZ, vertex, levels=(1, 2))["mismatches"] == 0
+        assert evaldata_dyadic_check(BLZ, vertex, levels=(1, 2))["mismatches"] == 0

@@ -9,8 +9,8 @@ import symdecomp as sd
 import symdecomp.analysis.mirror_threshold as mt
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
+from symdecomp.verify.certify import certify_sharp
 from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.verify.sharp_certify import certify_sharp
 
 CC, LOOP = load_scheme("catmull-clark-blz"), load_scheme("loop-blz")
 

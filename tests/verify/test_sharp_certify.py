@@ -1,4 +1,4 @@
-"""The certificate of the mirror decomposition against the refined matrix (symdecomp.verify.sharp_certify)."""
+"""The certificate of the mirror decomposition against the refined matrix (symdecomp.verify.certify)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import sympy as sp
 import symdecomp as sd
 from symdecomp.analysis import mirror
 from symdecomp.errors import NotApplicableError
-from symdecomp.verify.sharp_certify import describe_vertex
+from symdecomp.verify.certify import describe_vertex
 
 CC, LOOP = sd.catmull_clark(), sd.loop()
 

@@ -8,8 +8,8 @@ from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import structural_applies
 from symdecomp.analysis.zoo_structure import READ_AT
 from symdecomp.schemes.stencil_files import load_zoo
+from symdecomp.verify.certify import certify_zoo
 from symdecomp.verify.result import CrossCheckStatus
-from symdecomp.verify.zoo_certify import certify_zoo
 from symdecomp.verify.zoo_structural import structural_zoo_certificate
 
 FAMILIES = ("doo-sabin", "midedge", "sqrt3", "modified-butterfly")

@@ -1,0 +1,96 @@
+"""The zeros of the eigen-data's sub-patch tables that a mirror symmetry makes exact, proved in rationals.
+
+An entry ``(k, i, l)`` of a sub-patch table is the linear functional ``r`` of sub-patch ``k``'s point ``l``
+(its row of the extended patch matrix; ``lam e_idx`` for a control point) applied to the eigenvector
+``v_i = [u; W D]`` that extends the 1-ring eigenvector ``u`` (``D_r = (g_r . u)/(lam - nu_r)``,
+``g = W^-1 S11``; :mod:`symdecomp.analysis.eigendata`). Grouping the regular block's eigenvalues,
+
+    ``r . v_i = (r_ring + sum_nu h_nu/(lam - nu)) . u``,  ``h_nu = sum_{r: nu_r = nu} (r_outer W)_r g_r``,
+
+a rational vector on the 1-ring for each distinct ``nu`` (the sum over an eigenspace does not depend on its
+basis). If ``r_ring`` and every ``h_nu`` are symmetric under the mirror of the 1-ring about an axis (``s ->
+2a - s`` in half steps around ``O``), and ``u`` is antisymmetric about it, the entry is exactly 0 for every
+``lam``: no 1200-bit ball is needed to show that it rounds to 0.0 (a ball around 0 does so only inside
+``(-2^-1075, 2^-1075)``). ``u`` is a wave of frequency ``j`` (:class:`~symdecomp.analysis.fourier_patterns.PatternForm`),
+``cos(pi (2 j s + shift)/(2n))`` times a scalar per kind of point, antisymmetric about ``a`` exactly when
+``2 j a + shift - n`` is a multiple of ``2n`` (integers: decided exactly). Loop's sine columns vanish so on
+the points of the patch's edge ``O a_0``.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+
+from symdecomp.algebra.numbers import to_fraction
+from symdecomp.schemes.patch import PatchMatrices
+
+__all__ = ["mirror_zeros"]
+
+
+def _functional(p: PatchMatrices, idx: int) -> tuple[dict, dict]:
+    """``(r_ring, r_outer)``: the row of point ``idx`` of the extended matrix split at the 1-ring (a control point's
+    own unit row: its table entry is ``lam`` times the eigenvector's entry)."""
+    k0, size = p.ring_size, p.size
+    row = {idx: Fraction(1)} if idx < size else p.sparse[idx]
+    return {c: x for c, x in row.items() if c < k0}, {c - k0: x for c, x in row.items() if c >= k0}
+
+
+def _vectors(p: PatchMatrices, idx: int, nus, wmat, g_rows) -> list[dict]:
+    """``[r_ring, h_nu, ...]``: the rational vectors on the 1-ring that must all be symmetric (zeros left out)."""
+    ring, outer = _functional(p, idx)
+    h: dict = {}
+    for r, nu in enumerate(nus):
+        c = sum((x * to_fraction(wmat[q, r]) for q, x in outer.items()), Fraction(0))
+        if c:
+            acc = h.setdefault(nu, {})
+            for col, x in g_rows[r].items():
+                acc[col] = acc.get(col, 0) + c * x
+    return [ring] + [{c: x for c, x in v.items() if x} for v in h.values()]
+
+
+def _symmetric_axes(vectors: list[dict], steps: list[int], period: int) -> set[int]:
+    """The axes ``a`` (half steps, ``0..period - 1``) about which every vector is symmetric (``O`` is on every axis)."""
+    at = {s: c for c, s in enumerate(steps) if s >= 0}
+    support = sorted({c for v in vectors for c in v if c != 0})
+    if not support:  # the entry reads the eigenvector at O only, where a wave is 0: any axis will do
+        return {0}
+    s0 = steps[support[0]]
+    candidates = {((s0 + steps[c]) // 2 + half) % period for c in support if (s0 + steps[c]) % 2 == 0 for half in (0, period // 2)}
+    axes = set()
+    for a in sorted(candidates):
+        mirror = {c: at.get((2 * a - steps[c]) % period) for c in support}
+        if all(m is not None and v.get(m, 0) == x for v in vectors for c, x in v.items() if c != 0 for m in [mirror[c]]):
+            axes.add(a)
+    return axes
+
+
+def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[int, int, int]]:
+    """The entries ``(k, i, l)`` of the sub-patch tables that are exactly 0 by a mirror symmetry (module docstring).
+
+    ``cols``: the 1-ring eigenvectors (their right patterns' waves are read); ``nus``, ``wmat``: the regular
+    block's eigenvalues and eigenvectors; ``g_rows``: ``W^-1 S11``, exact. Columns that are not waves are left out.
+    """
+    waves = [(i, col.right_form.wave) for i, col in enumerate(cols) if col.right_form is not None and col.right_form.wave is not None]
+    if not waves:
+        return []
+    first = cols[waves[0][0]].right_form
+    if any(not np.array_equal(cols[i].right_form.coef, first.coef) or not np.array_equal(w[2], first.wave[2]) for i, w in waves):
+        return []  # one layout of points for every wave, else nothing is claimed
+    steps, coef = first.wave[2].tolist(), first.coef.tolist()
+    period = 2 * p.n  # half steps around O
+    kinds_kept: dict[int, bool] = {}
+    out = []
+    for k, sub in enumerate(p.subpatches):
+        for l, idx in enumerate(sub):
+            axes = _symmetric_axes(_vectors(p, idx, nus, wmat, g_rows), steps, period)
+            axes = [a for a in axes if kinds_kept.setdefault(a, _same_kinds(coef, steps, a, period))]
+            out += [(k, i, l) for i, (j, shift, _) in waves if any((2 * j * a + shift - p.n) % period == 0 for a in axes)]
+    return out
+
+
+def _same_kinds(coef: list, steps: list, a: int, period: int) -> bool:
+    """Whether the mirror about ``a`` maps every point of the 1-ring to one with the same scalar (the same kind)."""
+    at = {s: c for c, s in enumerate(steps) if s >= 0}
+    return all((2 * a - s) % period in at and coef[at[(2 * a - s) % period]] == coef[c] for c, s in enumerate(steps) if s >= 0)

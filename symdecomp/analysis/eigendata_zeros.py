@@ -37,12 +37,13 @@ def _functional(p: PatchMatrices, idx: int) -> tuple[dict, dict]:
     return {c: x for c, x in row.items() if c < k0}, {c - k0: x for c, x in row.items() if c >= k0}
 
 
-def _vectors(p: PatchMatrices, idx: int, nus, wmat, g_rows) -> list[dict]:
-    """``[r_ring, h_nu, ...]``: the rational vectors on the 1-ring that must all be symmetric (zeros left out)."""
+def _vectors(p: PatchMatrices, idx: int, nus, w: list[list[Fraction]], g_rows) -> list[dict]:
+    """``[r_ring, h_nu, ...]``: the rational vectors on the 1-ring that must all be symmetric (zeros left out);
+    ``w``: the regular block's eigenvectors ``W``, rows of Fractions."""
     ring, outer = _functional(p, idx)
     h: dict = {}
     for r, nu in enumerate(nus):
-        c = sum((x * to_fraction(wmat[q, r]) for q, x in outer.items()), Fraction(0))
+        c = sum((x * w[q][r] for q, x in outer.items()), Fraction(0))
         if c:
             acc = h.setdefault(nu, {})
             for col, x in g_rows[r].items():
@@ -80,13 +81,17 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
         return []  # one layout of points for every wave, else nothing is claimed
     steps, coef = first.wave[2].tolist(), first.coef.tolist()
     period = 2 * p.n  # half steps around O
+    w = [[to_fraction(wmat[q, r]) for r in range(wmat.ncols())] for q in range(wmat.nrows())]
     kinds_kept: dict[int, bool] = {}
+    vanishing: dict[int, list[int]] = {}  # point -> the wave columns that vanish on it (points shared by sub-patches)
     out = []
     for k, sub in enumerate(p.subpatches):
         for l, idx in enumerate(sub):
-            axes = _symmetric_axes(_vectors(p, idx, nus, wmat, g_rows), steps, period)
-            axes = [a for a in axes if kinds_kept.setdefault(a, _same_kinds(coef, steps, a, period))]
-            out += [(k, i, l) for i, (j, shift, _) in waves if any((2 * j * a + shift - p.n) % period == 0 for a in axes)]
+            if idx not in vanishing:
+                axes = _symmetric_axes(_vectors(p, idx, nus, w, g_rows), steps, period)
+                axes = {a for a in axes if kinds_kept.setdefault(a, _same_kinds(coef, steps, a, period))}
+                vanishing[idx] = [i for i, (j, shift, _) in waves if any((2 * j * a + shift - p.n) % period == 0 for a in axes)]
+            out += [(k, i, l) for i in vanishing[idx]]
     return out
 
 

@@ -36,8 +36,12 @@ down (``c = (1, 1)``, ``sigma = -1``), ``k = 2`` next to ``a_1`` (``c = (0, 1)``
 The matrices are read off the exact 3-ring matrix of the scheme
 (:func:`~symdecomp.schemes.rings.ring_subdivision_matrix`, one refinement of a valence-``N``
 ring mesh by the mesh rules), which also checks that the new points depend on the ``K`` old
-ones only. The centre's weights stay exact: Fractions, or elements of ``Q(zeta_2N)``
-(:class:`~symdecomp.algebra.cyclotomic.Cyclotomic`) when irrational (Loop's ``cos(2 pi/N)``).
+ones only.
+
+On either lattice, past :data:`REFERENCE_VALENCE` only the 1-ring's rows are refined at ``N``; the
+rows of the points beyond it are the reference valence's, moved on the lattice (:func:`_transplanted`:
+those points see only regular vertices, the same neighbourhood at every valence). The centre's weights stay exact:
+Fractions, or elements of ``Q(zeta_2N)`` (:class:`~symdecomp.algebra.cyclotomic.Cyclotomic`) when irrational (Loop's ``cos(2 pi/N)``).
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> p = patch_matrices(catmull_clark(), 3)

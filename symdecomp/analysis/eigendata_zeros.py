@@ -26,7 +26,7 @@ import numpy as np
 from symdecomp.algebra.numbers import to_fraction
 from symdecomp.schemes.patch import PatchMatrices
 
-__all__ = ["mirror_zeros"]
+__all__ = ["mirror_zeros", "lower_mirror_zeros"]
 
 
 def _functional(p: PatchMatrices, idx: int) -> tuple[dict, dict]:
@@ -99,3 +99,33 @@ def _same_kinds(coef: list, steps: list, a: int, period: int) -> bool:
     """Whether the mirror about ``a`` maps every point of the 1-ring to one with the same scalar (the same kind)."""
     at = {s: c for c, s in enumerate(steps) if s >= 0}
     return all((2 * a - s) % period in at and coef[at[(2 * a - s) % period]] == coef[c] for c, s in enumerate(steps) if s >= 0)
+
+
+def lower_mirror_zeros(p: PatchMatrices, cols: list, g_rows) -> list[tuple[int, int]]:
+    """The entries ``(i, j)`` of ``V^-1``'s lower-left block that are exactly 0 by a mirror symmetry.
+
+    Row ``r`` of the block is ``-g_r`` times the resolvent ``(S - nu_r)^-1`` on the eigenspaces of ``S`` whose
+    eigenvalue is not ``nu_r`` (``g = W^-1 S11``). ``S`` commutes with every mirror of the 1-ring (its rules are
+    rotation invariant and mirror symmetric, checked when its columns are made), and so do those spectral
+    projections; if ``g_r`` is antisymmetric about an axis, so is the row, and its entries on the axis (``O``
+    and the points the axis passes through) are 0. The axes are read off the waves' layout as in :func:`mirror_zeros`.
+    """
+    waves = [col.right_form for col in cols if col.right_form is not None and col.right_form.wave is not None]
+    if not waves:
+        return []
+    steps = waves[0].wave[2].tolist()
+    period, k0 = 2 * p.n, p.ring_size
+    at: dict[int, int] = {s: c for c, s in enumerate(steps) if s >= 0}
+    out = []
+    for r, g in enumerate(g_rows):
+        if g.get(0, 0) or not g:
+            continue
+        support = sorted(g)
+        s0 = steps[support[0]]
+        candidates = {((s0 + steps[c]) // 2 + half) % period for c in support if (s0 + steps[c]) % 2 == 0 for half in (0, period // 2)}
+        on_axes: set[int] = set()
+        for a in candidates:
+            if all(at.get((2 * a - steps[c]) % period) is not None and g.get(at[(2 * a - steps[c]) % period], 0) == -x for c, x in g.items()):
+                on_axes.update([0] + [at[s] for s in (a % period, (a + p.n) % period) if s in at])  # O is on every axis
+        out += [(k0 + r, j) for j in sorted(on_axes)]
+    return out

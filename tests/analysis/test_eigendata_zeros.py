@@ -7,13 +7,15 @@ not exactly 0, so no entry of its tables needs a 1200-bit eigenvector any more.
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import flint
 import pytest
 
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.analysis import eigendata_direct
 from symdecomp.analysis.eigendata import _g_rows, _regular_part, _ring_columns
-from symdecomp.analysis.eigendata_zeros import mirror_zeros
+from symdecomp.analysis.eigendata_zeros import lower_mirror_zeros, mirror_zeros
 from symdecomp.analysis.ring_eigendata import _rational_columns, circulant_weights
 from symdecomp.schemes.loop import loop, loop_warren
 from symdecomp.schemes.patch import patch_matrices
@@ -69,3 +71,40 @@ def test_frequency_zero_columns_are_balls_at_the_current_precision():
         high = [col.value for col in _rational_columns(circulant_weights(p), 5, 0)]
     assert any(x.rad() > 0 for x in low)  # an irrational eigenvalue: a ball, not an exact number
     assert all(x.rad() < flint.arb(2) ** -1100 for x in high)
+
+
+@pytest.mark.parametrize("name", sorted(SCHEMES))
+@pytest.mark.parametrize("n", [4, 5, 6, 9, 16])
+def test_lower_block_zeros_are_zeros_of_the_exact_block(name, n):
+    """Each entry of ``V^-1``'s lower-left block claimed 0 by a mirror is 0 in the exact block ``-g_r (S - nu_r)^-1``
+    (one exact rational solve, where ``nu_r`` is not an eigenvalue of ``S``); Catmull-Clark's six are all found."""
+    scheme = SCHEMES[name]
+    p = patch_matrices(scheme, n)
+    with flint.ctx.workprec(256):
+        cols = _ring_columns(p, 256)
+        nus, _, winv = _regular_part(p)
+        g_rows = _g_rows(p, winv)
+        claims = lower_mirror_zeros(p, cols, g_rows)
+    if not claims:  # Loop's lower block has no zero of a mirror (its g rows are not antisymmetric)
+        assert name != "catmull-clark"
+        return
+    k0 = p.ring_size
+    s = flint.fmpq_mat(k0, k0)
+    for i in range(k0):
+        for c, x in p.sparse[i].items():
+            s[i, c] = flint.fmpq(x.numerator, x.denominator)
+    checked = 0
+    for i, j in claims:
+        r = i - k0
+        m = s.transpose()
+        for q in range(k0):
+            m[q, q] -= flint.fmpq(nus[r].numerator, nus[r].denominator)
+        if m.det() == 0:
+            continue  # nu_r is an eigenvalue of S: the resolvent is the complement's, left to the balls
+        g = flint.fmpq_mat(k0, 1, [flint.fmpq(g_rows[r].get(c, Fraction(0)).numerator, g_rows[r].get(c, Fraction(0)).denominator)
+                                   for c in range(k0)])
+        assert m.solve(g)[j, 0] == 0
+        checked += 1
+    if name == "catmull-clark":
+        assert len(claims) == 6
+        assert checked == (0 if n == 4 else 6)  # at N = 4 the rows' 1/16 is an eigenvalue of S as well

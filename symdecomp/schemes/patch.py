@@ -55,6 +55,7 @@ Fractions, or elements of ``Q(zeta_2N)`` (:class:`~symdecomp.algebra.cyclotomic.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -388,14 +389,51 @@ def _transplanted(scheme: Scheme, n: int, lat: Lattice, subpatches, rational: bo
     beyond = ref.sparse[k0_ref:]
     if any(c not in moved or not isinstance(w, Fraction) for row in beyond for c, w in row.items()):
         return None
-    ring = ring_subdivision_matrix(scheme, n, 1)
-    if len(ring.rows) != k0:
-        return None
-    ring_rows = _exact_rows(ring, ring.rows, {c: c for c in range(k0)}, n)
+    ring_rows = _moved_ring_rows(scheme, ref, n, per) if _ring_rules_fixed(scheme) else None
+    if ring_rows is None:
+        ring = ring_subdivision_matrix(scheme, n, 1)
+        if len(ring.rows) != k0:
+            return None
+        ring_rows = _exact_rows(ring, ring.rows, {c: c for c in range(k0)}, n)
     if rational and any(not isinstance(w, Fraction) for row in ring_rows for w in row.values()):
         return None
     sparse = ring_rows + [{moved[c]: w for c, w in row.items()} for row in beyond]
     return _assemble(n, sparse, subpatches(n), ref.size - k0_ref + k0, lat)
+
+
+@functools.lru_cache(maxsize=64)
+def _ring_rules_fixed(scheme: Scheme) -> bool:
+    """Whether the scheme's rules of the whole mesh read no valence on the 1-ring's edges (then only the centre's
+    vertex rule depends on ``n``); False where its stencils are not rules of a mesh."""
+    try:
+        return not scheme.lattice.mesh_rules(scheme).depends_on_valence
+    except InvalidSchemeError:
+        return False
+
+
+def _moved_ring_rows(scheme: Scheme, ref: PatchMatrices, n: int, per: int) -> list[dict] | None:
+    """The 1-ring's rows at valence ``n`` when only the centre's vertex rule depends on ``n``: row 0 from the vertex
+    rule at ``n`` (exact), the others the reference's sector-0 rows turned to each sector (their points are refined
+    by rules that read no valence, from the centre and the sectors next to their own). None where a reference row
+    reads a sector further away."""
+    v = scheme.vertex_rule
+    weights = [_exact_weight(sp.sympify(w, strict=True), n) for w in (v.center, v.each_a, v.each_b)[: 1 + per]]
+    rows = [{0: weights[0]} | {1 + per * i + q: weights[1 + q] for i in range(n) for q in range(per)}]
+    half = REFERENCE_VALENCE // 2
+    offsets = []  # per kind of point: [(sector offset d, place, weight)], the centre as d = None
+    for q in range(per):
+        entries = []
+        for c, w in ref.sparse[1 + q].items():
+            sector, place = divmod(c - 1, per) if c else (0, 0)
+            d = sector if sector <= half else sector - REFERENCE_VALENCE
+            if c and abs(d) >= half:
+                return None
+            entries.append((None if c == 0 else d, place, w))
+        offsets.append(entries)
+    for t in range(n):
+        for entries in offsets:
+            rows.append({0 if d is None else 1 + per * ((d + t) % n) + place: w for d, place, w in entries})
+    return rows
 
 
 def _quad_subpatch_rows(n: int) -> tuple[tuple[int, ...], ...]:

@@ -82,6 +82,8 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
     steps, coef = first.wave[2].tolist(), first.coef.tolist()
     period = 2 * p.n  # half steps around O
     w = [[to_fraction(wmat[q, r]) for r in range(wmat.ncols())] for q in range(wmat.nrows())]
+    columns = np.array([i for i, _ in waves], dtype=np.int64)
+    js, shifts = (np.array([wave[m] for _, wave in waves], dtype=np.int64) for m in (0, 1))
     kinds_kept: dict[int, bool] = {}
     vanishing: dict[int, list[int]] = {}  # point -> the wave columns that vanish on it (points shared by sub-patches)
     out = []
@@ -90,7 +92,10 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
             if idx not in vanishing:
                 axes = _symmetric_axes(_vectors(p, idx, nus, w, g_rows), steps, period)
                 axes = {a for a in axes if kinds_kept.setdefault(a, _same_kinds(coef, steps, a, period))}
-                vanishing[idx] = [i for i, (j, shift, _) in waves if any((2 * j * a + shift - p.n) % period == 0 for a in axes)]
+                odd = np.zeros(len(waves), dtype=bool)  # the waves antisymmetric about one of the axes
+                for a in axes:
+                    odd |= (2 * js * a + shifts - p.n) % period == 0
+                vanishing[idx] = columns[odd].tolist()
             out += [(k, i, l) for i in vanishing[idx]]
     return out
 

@@ -58,3 +58,10 @@ def test_a_bad_scheme_is_named_at_its_own_valence():
     scheme = load_scheme(CORPUS / "free-vertex.toml")
     with pytest.raises(InvalidSchemeError, match=r"-20\*alpha - 20\*beta \+ 1 at valence 20"):
         patch.quad_patch_matrices(scheme, 20)
+
+
+def test_both_ways_to_the_one_ring_rows_are_compared():
+    """The schemes above take the 1-ring's rows both ways: turned from the reference (rules that read no valence on
+    the 1-ring's edges) and refined at n (an edge rule in n)."""
+    fixed = {name: patch._ring_rules_fixed(make()) for name, make in SCHEMES.items()}
+    assert fixed["catmull-clark"] and fixed["loop"] and not fixed["n-dependent-edge"]

@@ -92,7 +92,8 @@ nothing else.
                    (``eigendata``; its 1-ring columns by frequency on every lattice,
                    ``ring_eigendata``; the trig table and the Fourier patterns they are made of, ``fourier_patterns``;
                    the file's valences rounded straight from those columns,
-                   ``eigendata_direct``) and exact evaluation on either lattice (``evaluation``), of the patches of a
+                   ``eigendata_direct``; the tables' zeros a mirror symmetry makes exact,
+                   ``eigendata_zeros``) and exact evaluation on either lattice (``evaluation``), of the patches of a
                    boundary or corner vertex (``sharp_evaluation``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); every vertex of a mesh classified by its neighbourhood kind

@@ -8,7 +8,9 @@ regular block's rows with them; and the sub-patch tables read ``V`` on the few r
 sub-patches and the refined points beyond them use, so ``V`` is never built whole.
 :func:`rounded_valence` rounds those: the 1-ring rows of ``V^-1`` all at once from their factors
 (:func:`_round_ring_rows`), the rest ball by ball. Entries that do not round are sharpened alone: the
-lower block's from the columns at 1200 bits (:func:`_lower_at_zero_prec`), the tables' and the
+sub-patch tables' zeros of a mirror symmetry are exact (:mod:`symdecomp.analysis.eigendata_zeros`), the
+lower block's likewise where a mirror makes them, else from the columns at 1200 bits
+(:func:`_lower_at_zero_prec`), the tables' and the
 1-ring rows' with :func:`~symdecomp.analysis.eigendata.certified_eigendata`'s steps (sub-patch
 zeros proved at 1200 bits, eigenvectors solved again at 1200 bits, each for its own row); only
 when an entry still does not round is the whole valence taken from ``certified_eigendata`` at
@@ -45,6 +47,7 @@ from symdecomp.analysis.eigendata import (
     _sparse_times,
     certified_eigendata,
 )
+from symdecomp.analysis.eigendata_zeros import lower_mirror_zeros, mirror_zeros
 from symdecomp.analysis.fourier_patterns import LazyTable
 from symdecomp.analysis.ring_eigendata import RING_EIGEN
 from symdecomp.errors import PrecisionError
@@ -129,7 +132,8 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     r = size - k0
     cols = _ring_columns(p, prec)
     nus, wmat, winv = _regular_part(p)
-    read = _read_rows(p, _g_rows(p, winv))
+    g_rows = _g_rows(p, winv)
+    read = _read_rows(p, g_rows)
     v0 = {i: [col.right_at(i) for col in cols] for i in read if i < k0}
     dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0)
     lower = _lower_by_waves(cols, dmat)
@@ -145,10 +149,16 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     for sub in p.subpatches:
         table = [_av_row(vrows[idx], values, jordan) if idx < size else beyond[idx] for idx in sub]
         phi.append(_Cells([list(row) for row in zip(*table)]))
+    for k, i, l in mirror_zeros(p, cols, nus, wmat, g_rows) if not jordan else ():
+        if phi[k][i, l].contains(0):  # exact by the symmetry: the ball needs no 1200 bits to round to 0.0
+            phi[k][i, l] = arb(0)
     lower_rows: list[list[flint.arb] | None] = [lower[i] + wia[i] for i in range(r)]
     ring_rows: list[list[flint.arb] | None] = [None] * k0
     inverse = _Cells(ring_rows + lower_rows, lambda i: cols[i].left + zeros)
     rounded = _round_ring_rows(cols, size) + [round_ball(x) for row in lower_rows if row is not None for x in row]
+    for i, j in lower_mirror_zeros(p, cols, g_rows) if not jordan else ():
+        if rounded[i * size + j] is None and inverse[i, j].contains(0):  # exact by the symmetry
+            inverse[i, j], rounded[i * size + j] = arb(0), 0.0
     bad = [(i, j) for i in range(k0, size) for j in range(k0) if rounded[i * size + j] is None]
     for (i, j), x in _lower_at_zero_prec(p, bad).items():
         inverse[i, j], rounded[i * size + j] = x, round_ball(x)

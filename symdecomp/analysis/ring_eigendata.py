@@ -214,8 +214,10 @@ _EXACT_PAIRS: dict = {}
 
 def _exact_pairs(block: list[list], scale) -> list[tuple]:
     """``(lam, z, y)``: the exact eigenvalues of a rational block with right and biorthogonal left eigenvectors,
-    kept for the last few blocks (a valence reads its columns at two precisions)."""
-    key = (tuple(map(tuple, block)), scale)
+    kept for the last few blocks (a valence reads its columns at two precisions). An irrational eigenvalue comes
+    as a ball at the current precision, so the precision is part of the key: a ball kept from 256 bits made
+    the 1200-bit columns 256-bit ones, and every zero they were to prove fell to an ``O(N^3)`` exact solve."""
+    key = (tuple(map(tuple, block)), scale, flint.ctx.prec)
     if key not in _EXACT_PAIRS:
         if len(_EXACT_PAIRS) > 8:
             _EXACT_PAIRS.clear()

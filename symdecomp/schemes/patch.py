@@ -36,8 +36,12 @@ down (``c = (1, 1)``, ``sigma = -1``), ``k = 2`` next to ``a_1`` (``c = (0, 1)``
 The matrices are read off the exact 3-ring matrix of the scheme
 (:func:`~symdecomp.schemes.rings.ring_subdivision_matrix`, one refinement of a valence-``N``
 ring mesh by the mesh rules), which also checks that the new points depend on the ``K`` old
-ones only. The centre's weights stay exact: Fractions, or elements of ``Q(zeta_2N)``
-(:class:`~symdecomp.algebra.cyclotomic.Cyclotomic`) when irrational (Loop's ``cos(2 pi/N)``).
+ones only.
+
+On either lattice, past :data:`REFERENCE_VALENCE` only the 1-ring's rows are refined at ``N``; the
+rows of the points beyond it are the reference valence's, moved on the lattice (:func:`_transplanted`:
+those points see only regular vertices, the same neighbourhood at every valence). The centre's weights stay exact:
+Fractions, or elements of ``Q(zeta_2N)`` (:class:`~symdecomp.algebra.cyclotomic.Cyclotomic`) when irrational (Loop's ``cos(2 pi/N)``).
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> p = patch_matrices(catmull_clark(), 3)
@@ -51,6 +55,7 @@ ones only. The centre's weights stay exact: Fractions, or elements of ``Q(zeta_2
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -59,7 +64,7 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
 from symdecomp.algebra.numbers import to_fmpq, to_fraction
-from symdecomp.errors import InvalidInputError, InvalidSchemeError
+from symdecomp.errors import InvalidInputError, InvalidSchemeError, SymdecompError
 from symdecomp.schemes.box_spline import BOX_POINTS
 from symdecomp.schemes.lattice import QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.mesh import ring_mesh, ring_mesh_labels
@@ -191,8 +196,14 @@ def patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
 
 
 def quad_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
-    """Stam's ``(2n + 8)``-point patch matrices of a quad scheme at valence ``n`` (exact)."""
+    """Stam's ``(2n + 8)``-point patch matrices of a quad scheme at valence ``n`` (exact): from
+    :data:`REFERENCE_VALENCE` on, its rows beyond the 1-ring are the reference valence's (:func:`_transplanted`)."""
     n = check_valence(n)
+    return _transplanted(scheme, n, QUAD, _quad_subpatch_rows, rational=True) or _quad_by_refinement(scheme, n)
+
+
+def _quad_by_refinement(scheme: Scheme, n: int) -> PatchMatrices:
+    """:func:`quad_patch_matrices` read off one exact refinement of the 2-ring mesh at valence ``n``."""
     mesh, vid, columns = patch_mesh(n)
     o, a, b = mesh.one_ring(0, start=columns[1])
     rows = [o]
@@ -203,10 +214,7 @@ def quad_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
     irrational = next((w for row in entries for w in row.values() if not isinstance(w, Fraction)), None)
     if irrational is not None:
         raise InvalidSchemeError(f"scheme {scheme.name!r}: weight {irrational} at valence {n} is not rational")
-    subpatches = tuple(
-        tuple(lattice_index(n, (cu + a_ - 1, cv + b_ - 1)) for b_ in range(4) for a_ in range(4)) for cu, cv in SUBPATCH_CORNERS
-    )
-    return _assemble(n, entries, subpatches, 2 * n + 8, QUAD)
+    return _assemble(n, entries, _quad_subpatch_rows(n), 2 * n + 8, QUAD)
 
 
 def _assemble(n: int, sparse: list[dict], subpatches, size: int, lat: Lattice) -> PatchMatrices:
@@ -302,25 +310,134 @@ def position_mask(scheme: Scheme, n: int) -> tuple:
 
 
 def triangle_patch_matrices(scheme: Scheme, n: int) -> PatchMatrices:
-    """The ``(n + 6)``-point patch matrices of a triangle scheme at valence ``n`` (exact)."""
+    """The ``(n + 6)``-point patch matrices of a triangle scheme at valence ``n`` (exact): from
+    :data:`REFERENCE_VALENCE` on, its rows beyond the 1-ring are the reference valence's (:func:`_transplanted`)."""
     n = check_valence(n)
+    subpatches = lambda m: _triangle_subpatch_rows(m, triangle_patch_rows(m))  # noqa: E731
+    return _transplanted(scheme, n, TRIANGLE, subpatches, rational=False) or _triangle_by_refinement(scheme, n)
+
+
+def _triangle_by_refinement(scheme: Scheme, n: int) -> PatchMatrices:
+    """:func:`triangle_patch_matrices` read off the exact 3-ring matrix at valence ``n``."""
     ring = ring_subdivision_matrix(scheme, n, 3)
-    index = {lab: i for i, lab in enumerate(ring.labels)}
     labels = triangle_patch_rows(n)
     size = n + 6
+    index = {lab: i for i, lab in enumerate(ring.labels)}
     column = {index[lab]: c for c, lab in enumerate(labels[:size])}
+    rows = [ring.rows[index[lab]] for lab in labels]
+    for lab, row in zip(labels, rows):
+        if any(c not in column for c in row):
+            raise InvalidSchemeError(f"scheme {scheme.name!r}: the refined patch point {lab} depends on a point beyond the {size} control points")
+    sparse = _exact_rows(ring, rows, column, n)
+    return _assemble(n, sparse, _triangle_subpatch_rows(n, labels), size, TRIANGLE)
+
+
+def _exact_rows(ring, rows, column: dict, n: int) -> list[dict]:
+    """``rows`` of the ring matrix ``ring`` on the patch's columns (``column``: ring index -> patch index), the
+    centre's symbolic weights made exact at valence ``n`` (each distinct expression once, not once per row)."""
     exprs = {sym: sp.sympify(w, strict=True) for sym, w in ring.weights.items()}
-    exact: dict = {}  # the few distinct centre expressions, each made exact once (not once per row)
-    sparse = []
-    for lab in labels:
+    exact: dict = {}
+    out = []
+    for ring_row in rows:
         row = {}
-        for c, w in ring.rows[index[lab]].items():
-            if c not in column:
-                raise InvalidSchemeError(f"scheme {scheme.name!r}: the refined patch point {lab} depends on a point beyond the {size} control points")
+        for c, w in ring_row.items():
             if not isinstance(w, Fraction):
                 if w not in exact:
                     exact[w] = _exact_weight(sp.sympify(w, strict=True).xreplace(exprs), n)
                 w = exact[w]
             row[column[c]] = w
-        sparse.append(row)
-    return _assemble(n, sparse, _triangle_subpatch_rows(n, labels), size, TRIANGLE)
+        out.append(row)
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# every valence from the reference valence's rows
+
+
+#: From this valence on, the patch's rows beyond the 1-ring are taken from this valence's refinement.
+#: Those points are refined by the regular rules from points of the sectors ``n - 3 .. 3`` around the
+#: patch (every vertex but ``O`` is regular), a neighbourhood of the lattice that is the same at every valence
+#: where those sectors are distinct (``n >= 8``); only the 1-ring's rows read the centre's valence (its vertex rule, and an
+#: edge rule that depends on it), and they are refined at ``n`` itself (:func:`_transplanted`).
+REFERENCE_VALENCE = 8
+
+
+def _transplanted(scheme: Scheme, n: int, lat: Lattice, subpatches, rational: bool) -> PatchMatrices | None:
+    """The patch matrices at valence ``n > REFERENCE_VALENCE`` without refining the whole neighbourhood at ``n``.
+
+    The 1-ring's rows come from the 1-ring matrix at ``n`` (:func:`~symdecomp.schemes.rings.ring_subdivision_matrix`,
+    ``O(n)``); the rows beyond it are the reference valence's, each column moved to the same place on the
+    lattice: the centre stays, a 1-ring point keeps its sector's offset ``d`` from sector 0 (``|d| <= 3``)
+    and its place in the sector, a point beyond the 1-ring keeps its place in the list. None (refine at ``n``)
+    below the reference valence, or where the reference's rows read more of the 1-ring or hold a weight that
+    is not a rational (one that would depend on the centre). ``subpatches(n)``: the sub-patches' rows;
+    ``rational``: whether the 1-ring's weights must be rational (else None, and the refinement says which is not).
+    """
+    if n <= REFERENCE_VALENCE:
+        return None
+    try:
+        ref = patch_matrices(scheme, REFERENCE_VALENCE)
+    except SymdecompError:  # the refinement at n says what is wrong, at n
+        return None
+    k0_ref, k0, per = ref.ring_size, lat.one_ring_size(n), (ref.ring_size - 1) // REFERENCE_VALENCE
+    moved = {0: 0} | {c: c - k0_ref + k0 for c in range(k0_ref, ref.size)}
+    for c in range(1, k0_ref):
+        sector, place = divmod(c - 1, per)
+        d = sector if sector <= REFERENCE_VALENCE // 2 else sector - REFERENCE_VALENCE
+        if abs(d) < REFERENCE_VALENCE // 2:  # sectors on either side of the patch, told apart at every n >= 8
+            moved[c] = 1 + per * (d % n) + place
+    beyond = ref.sparse[k0_ref:]
+    if any(c not in moved or not isinstance(w, Fraction) for row in beyond for c, w in row.items()):
+        return None
+    ring_rows = _moved_ring_rows(scheme, ref, n, per) if _ring_rules_fixed(scheme) else None
+    if ring_rows is None:
+        ring = ring_subdivision_matrix(scheme, n, 1)
+        if len(ring.rows) != k0:
+            return None
+        ring_rows = _exact_rows(ring, ring.rows, {c: c for c in range(k0)}, n)
+    if rational and any(not isinstance(w, Fraction) for row in ring_rows for w in row.values()):
+        return None
+    sparse = ring_rows + [{moved[c]: w for c, w in row.items()} for row in beyond]
+    return _assemble(n, sparse, subpatches(n), ref.size - k0_ref + k0, lat)
+
+
+@functools.lru_cache(maxsize=64)
+def _ring_rules_fixed(scheme: Scheme) -> bool:
+    """Whether the scheme's rules of the whole mesh read no valence on the 1-ring's edges (then only the centre's
+    vertex rule depends on ``n``); False where its stencils are not rules of a mesh."""
+    try:
+        return not scheme.lattice.mesh_rules(scheme).depends_on_valence
+    except InvalidSchemeError:
+        return False
+
+
+def _moved_ring_rows(scheme: Scheme, ref: PatchMatrices, n: int, per: int) -> list[dict] | None:
+    """The 1-ring's rows at valence ``n`` when only the centre's vertex rule depends on ``n``: row 0 from the vertex
+    rule at ``n`` (exact), the others the reference's sector-0 rows turned to each sector (their points are refined
+    by rules that read no valence, from the centre and the sectors next to their own). None where a reference row
+    reads a sector further away."""
+    v = scheme.vertex_rule
+    weights = [_exact_weight(sp.sympify(w, strict=True), n) for w in (v.center, v.each_a, v.each_b)[: 1 + per]]
+    rows = [{0: weights[0]} | {1 + per * i + q: weights[1 + q] for i in range(n) for q in range(per)}]
+    half = REFERENCE_VALENCE // 2
+    offsets = []  # per kind of point: [(sector offset d, place, weight)], the centre as d = None
+    for q in range(per):
+        entries = []
+        for c, w in ref.sparse[1 + q].items():
+            sector, place = divmod(c - 1, per) if c else (0, 0)
+            d = sector if sector <= half else sector - REFERENCE_VALENCE
+            if c and abs(d) >= half:
+                return None
+            entries.append((None if c == 0 else d, place, w))
+        offsets.append(entries)
+    for t in range(n):
+        for entries in offsets:
+            rows.append({0 if d is None else 1 + per * ((d + t) % n) + place: w for d, place, w in entries})
+    return rows
+
+
+def _quad_subpatch_rows(n: int) -> tuple[tuple[int, ...], ...]:
+    """The rows of the three quad sub-patches' 16 control points at valence ``n`` (:data:`SUBPATCH_CORNERS`)."""
+    return tuple(
+        tuple(lattice_index(n, (cu + a_ - 1, cv + b_ - 1)) for b_ in range(4) for a_ in range(4)) for cu, cv in SUBPATCH_CORNERS
+    )

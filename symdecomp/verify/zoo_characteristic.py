@@ -27,7 +27,7 @@ from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.ring_masks import _acb_matrix
 from symdecomp.analysis.ring_spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import zoo_blocks
-from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.analysis.zoo_matrix import ZooMatrix, zoo_matrix
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum
 from symdecomp.schemes.neighbourhood import Neighbourhood
 from symdecomp.schemes.stencils import StencilScheme
@@ -37,7 +37,7 @@ from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, float_down
 from symdecomp.verify.c1_zoo import ZooNeighbourhood
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["C1_DEPTH", "engine_neighbourhood", "spectral_conditions"]
+__all__ = ["C1_DEPTH", "engine_neighbourhood", "spectral_conditions", "characteristic_points"]
 
 #: The ring depth of the neighbourhood the C1 test reads (the patches one face from the centre and their control points).
 C1_DEPTH = 2
@@ -99,15 +99,22 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     mesh = DualNeighbourhood(faces, _centre_face(nb), dict(nb.labels))
     if spectral.status is not C1Verdict.C1 or spectral.subdominant is None:
         return ZooNeighbourhood(mesh, {}, spectral)
-    j, lam = spectral.subdominant.frequency, spectral.subdominant.value
+    points = characteristic_points(zm, spectral.subdominant)
+    if points is None:
+        return ZooNeighbourhood(mesh, {}, SpectralResult(n, C1Verdict.UNDECIDED, "the subdominant eigenvector could not be "
+                                                         "solved in the frequency block at this precision"))
+    return ZooNeighbourhood(mesh, points, spectral)
+
+
+def characteristic_points(zm: ZooMatrix, subdominant: Eigen) -> dict | None:
+    """The characteristic map's control points on ``zm``'s neighbourhood, ``vertex -> complex ball`` (``X(s, c) =
+    zeta^(j s) x_c``, module docstring), or ``None`` if the eigenvector is not solved at this precision."""
+    n, labels = zm.n, zm.neighbourhood.labels
+    j, lam = subdominant.frequency, subdominant.value
     with flint.ctx.workprec(EIGENVECTOR_BITS):  # the control points as narrow balls (the Jacobian's signs are decided on them)
         zeta = [flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() for s in range(n)]
         block = zoo_blocks(zm).frequency_matrix()
         K = block.shape[0]
         A = _acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
         x = null_vector(A)
-        points = {} if x is None else {v: zeta[s % n] * x[c] for v, (s, c) in nb.labels.items()}
-    if x is None:
-        return ZooNeighbourhood(mesh, {}, SpectralResult(n, C1Verdict.UNDECIDED, "the subdominant eigenvector could not be "
-                                                         "solved in the frequency block at this precision"))
-    return ZooNeighbourhood(mesh, points, spectral)
+        return None if x is None else {v: zeta[s % n] * x[c] for v, (s, c) in labels.items()}

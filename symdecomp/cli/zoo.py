@@ -9,12 +9,18 @@ ring depth (default: the smallest invariant one). Options about sharp vertices d
 from __future__ import annotations
 
 import argparse
+import textwrap
 import time
+from typing import TYPE_CHECKING, Any
 
 from symdecomp.cli.common import print_json, sharp_given
+from symdecomp.cli.plot_file import PlotTarget, write_plot
 from symdecomp.cli.progress import progress
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.stencils import StencilScheme
+
+if TYPE_CHECKING:
+    from symdecomp.analysis.ring_spectrum import RingSpectrum
 
 __all__ = ["run_zoo_spectrum", "run_zoo_masks", "run_zoo_check"]
 
@@ -31,13 +37,12 @@ def _steps(scheme: StencilScheme) -> str:
     return f", over {scheme.steps} steps (the lattice returns after {scheme.steps})" if scheme.steps > 1 else ""
 
 
-def run_zoo_spectrum(args: argparse.Namespace, plot: object = None) -> int:
+def run_zoo_spectrum(args: argparse.Namespace, plot: PlotTarget | None = None) -> int:
     """``spectrum N --scheme <zoo scheme>``."""
     from symdecomp.analysis.zoo_spectrum import zoo_spectrum
 
-    if plot is not None:
-        raise InvalidInputError(f"--plot: not drawn for schemes of the zoo yet (--scheme {args.scheme.name})")
     spectrum = zoo_spectrum(args.scheme, args.n, _depth(args), digits=args.digits)
+    write_plot(plot, lambda: _spectrum_figure(args.scheme, spectrum))
     if args.json:
         print_json(args, spectrum.as_json())
         return 0
@@ -50,6 +55,15 @@ def run_zoo_spectrum(args: argparse.Namespace, plot: object = None) -> int:
         ks = ", ".join(map(str, e.frequencies)) if len(e.frequencies) <= 8 else f"{len(e.frequencies)} frequencies"
         print(f"{e.text:<{width}}  {e.multiplicity:>4}  {jordan:>6}  {ks}{'' if e.exact is None else f'; {e.exact}'}")
     return 0
+
+
+def _spectrum_figure(scheme: StencilScheme, spectrum: RingSpectrum) -> Any:
+    """``spectrum --plot``: the eigenvalues by the frequency block they come from, titled as the text's first line."""
+    from symdecomp.output.plotting.spectrum_chart import spectrum_figure
+
+    title = textwrap.fill(f"{spectrum.scheme} ({scheme.topology}, {spectrum.mesh} mesh), n = {spectrum.n}, neighbourhood of depth "
+                          f"{spectrum.rings}{_steps(scheme)}: {len(spectrum.eigenvalues)} distinct eigenvalues by frequency", 90)
+    return spectrum_figure(spectrum, title=title, xlabel="frequency k (the block B(omega^k) of the neighbourhood's orbit labelling)")
 
 
 def run_zoo_masks(args: argparse.Namespace) -> int:

@@ -106,9 +106,10 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     return ZooNeighbourhood(mesh, points, spectral)
 
 
-def characteristic_points(zm: ZooMatrix, subdominant: Eigen) -> dict | None:
+def characteristic_points(zm: ZooMatrix, subdominant: Eigen) -> dict[int, flint.acb] | None:
     """The characteristic map's control points on ``zm``'s neighbourhood, ``vertex -> complex ball`` (``X(s, c) =
-    zeta^(j s) x_c``, module docstring), or ``None`` if the eigenvector is not solved at this precision."""
+    zeta^(j s) x_c``, module docstring; ``0`` at a centre vertex), or ``None`` if the eigenvector is not solved at this
+    precision."""
     n, labels = zm.n, zm.neighbourhood.labels
     j, lam = subdominant.frequency, subdominant.value
     with flint.ctx.workprec(EIGENVECTOR_BITS):  # the control points as narrow balls (the Jacobian's signs are decided on them)
@@ -117,4 +118,9 @@ def characteristic_points(zm: ZooMatrix, subdominant: Eigen) -> dict | None:
         K = block.shape[0]
         A = _acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
         x = null_vector(A)
-        return None if x is None else {v: zeta[s % n] * x[c] for v, (s, c) in labels.items()}
+        if x is None:
+            return None
+        points = {v: zeta[s % n] * x[c] for v, (s, c) in labels.items()}
+    if zm.neighbourhood.centre is not None:  # the rotation fixes the centre vertex: X = zeta^j X there, so X = 0
+        points[zm.neighbourhood.centre] = flint.acb(0)
+    return points

@@ -37,7 +37,6 @@ def test_no_spline_patch_is_undecided_with_the_reason(zoo, capsys):
 
 def test_refusals_are_one_line(zoo, capsys):
     for argv, text in (
-        (["--n", "5", "--plot", "c1.png"], "--plot: the figure of Reif's test is not drawn for 'interp' (a scheme of the zoo) yet"),
         (["--every-n"], "--every-n: the spectral conditions for every n are not derived for 'interp'"),
         (["--boundary", "--k", "2"], "--boundary: sharp vertices are not tested for 'interp' (a scheme of the zoo)"),
     ):

@@ -48,7 +48,7 @@ from symdecomp.verify.c1_zoo import spline_route
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.zoo_characteristic import characteristic_points, engine_neighbourhood, spectral_conditions
 
-__all__ = ["REFINEMENTS", "zoo_map_curves", "refined_net"]
+__all__ = ["REFINEMENTS", "zoo_map_curves", "refined_net", "hole_boundary"]
 
 #: How many times the control net is refined (rounded up to a multiple of the scheme's steps).
 REFINEMENTS = 3
@@ -104,7 +104,7 @@ def _net_curves(scheme: StencilScheme, n: int, refinements: int) -> Curves:
     steps = -(-refinements // scheme.steps) * scheme.steps
     mesh, start, position = refined_net(scheme, zm, {v: as_complex(z) for v, z in points.items()}, steps)
     lines = [_closed([position[v] for v in mesh.faces[f]]) for f in _connected(mesh, start)]
-    return {"lines": [np.concatenate(lines)] if lines else [], "inner": [_closed(_hole(mesh, start, zm, position))],
+    return {"lines": [np.concatenate(lines)] if lines else [], "inner": [_closed(hole_boundary(mesh, start, zm.neighbourhood.centred, position))],
             "rays": [], "drawn": f"the control net refined {steps} times by the scheme's rules"}
 
 
@@ -141,9 +141,10 @@ def _connected(mesh: HalfedgeMesh, start: int) -> list[int]:
     return sorted(seen)
 
 
-def _hole(mesh: HalfedgeMesh, start: int, zm: ZooMatrix, position: dict[int, complex]) -> list[complex]:
-    """The boundary of the centre face, or of the faces around the centre vertex, counter-clockwise."""
-    if zm.neighbourhood.centred == "face":
+def hole_boundary(mesh: HalfedgeMesh, start: int, centred: str, position: dict[int, complex]) -> list[complex]:
+    """The boundary of the centre face (``centred == "face"``), or of the faces around the centre vertex, counter-clockwise
+    from the halfedge ``start`` at the centre."""
+    if centred == "face":
         return [position[mesh.origin[h]] for h in mesh.around_face(start)]
     ring = mesh.ring(start)
     assert ring is not None  # the centre of a refined neighbourhood is interior (zoo_matrix's closure)

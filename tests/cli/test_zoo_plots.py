@@ -100,3 +100,30 @@ def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypat
     assert main([*argv, "--plot", str(tmp_path / "figure.jpg")]) == 2
     assert capsys.readouterr().err == (f"symdecomp: error: --plot {tmp_path / 'figure.jpg'}: the file name must end in .png, "
                                        ".svg or .pdf (the format of the figure)\n")
+
+
+def test_check_and_artifacts_plot_for_the_zoo(tmp_path, capsys):
+    """``check --certify --plot`` (the certified chart: distinct eigenvalues proved per valence) and ``artifacts --plot``
+    (the regime chart; the zoo's rows give lambda_1^2 exact) draw as for catmull-clark, the same bytes twice."""
+    data = _twice(["check", "--n", "4:5", "--certify", "--scheme", "midedge", "--quiet", "--jobs", "1"], tmp_path / "c.png", capsys)
+    assert _png_size(data) == (750, 450)
+    data = _twice(["artifacts", "--n", "4:5", "--scheme", "midedge", "--quiet", "--jobs", "1"], tmp_path / "a.png", capsys)
+    assert _png_size(data) == (750, 600)
+
+
+def test_check_of_the_zoo_runs_on_the_pool_and_refuses_what_it_would_ignore(capsys):
+    """--jobs and --executor choose the pool as for catmull-clark (the same rows with 1 worker and 2); the options of the
+    other mode and of the 1-ring's routes were accepted and ignored: now one line each, exit code 2."""
+    outs = []
+    for jobs in ("1", "2"):
+        assert main(["check", "--n", "4:5", "--certify", "--scheme", "doo-sabin", "--quiet", "--json", "--jobs", jobs]) == 0
+        outs.append(json.loads(capsys.readouterr().out)["rows"])
+    assert outs[0] == outs[1] and [r["status"] for r in outs[0]] == ["agree", "agree"]
+    for option, text in ((["--dps", "30"], "--dps: not used for --scheme doo-sabin (a scheme of the zoo): the certified check is exact"),
+                         (["--route", "charpoly"], "--route: not used for --scheme doo-sabin (a scheme of the zoo): the zoo's "
+                          "certificate chooses its route itself"),
+                         (["--structural"], "--structural: not used for --scheme doo-sabin"),
+                         (["--solver", "mpmath"], "--solver: not used for --scheme doo-sabin")):
+        assert main(["check", "--n", "4", "--certify", "--scheme", "doo-sabin", *option]) == 2
+        err = capsys.readouterr().err.splitlines()
+        assert len(err) == 1 and err[0].startswith(f"symdecomp: error: {text}")

@@ -107,7 +107,8 @@ def register(sub) -> None:
     add_pool_options(p)
     add_quiet_option(p)
     add_plot_option(p, "the characteristic map at the first, the last and a middle vertex, over the certified bounds of its "
-                    "Jacobian and of the spectral gap at every vertex, coloured by verdict")
+                    "Jacobian and of the spectral gap at every vertex, coloured by verdict (a scheme of the zoo: its spline "
+                    "patches, or its control net refined by its own rules, the panel saying which)")
     p.set_defaults(func=run)
 
 

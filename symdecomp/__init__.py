@@ -190,7 +190,8 @@ nothing else.
                    subdominant eigenvalues over k (``plotting.boundary``),
                    Stam's evaluation (``plotting.evaldata``), the second-order height fields and the
                    shape chart (``plotting.shape``), the figures the commands draw with --plot: the characteristic
-                   map and its certified bounds (``plotting.c1_figures``), eigenvalues by frequency or block
+                   map and its certified bounds (``plotting.c1_figures``; a zoo scheme's map, its spline patches or
+                   its control net refined by its rules, ``plotting.zoo_maps``), eigenvalues by frequency or block
                    (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), the
                    cross-check's agreement by valence (``plotting.check_chart``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about

@@ -1,7 +1,7 @@
 """``symdecomp artifacts --n A:B --scheme <zoo scheme>``: density and the curvature regime from the zoo's engine.
 
 :func:`symdecomp.verify.zoo_artifacts.zoo_artifacts` per valence; the options about what a zoo scheme does not have
-(``--every-n``'s proof in ``n``, the chart) are refused in one line, and what is not computed is said in one line.
+(``--every-n``'s proof in ``n``) are refused in one line, and what is not computed is said in one line.
 """
 
 from __future__ import annotations
@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 
 from symdecomp.cli.common import print_json
+from symdecomp.cli.plot_file import PlotTarget, write_plot
 from symdecomp.cli.progress import progress
 from symdecomp.errors import InvalidInputError
 from symdecomp.parallel import ordered_map
@@ -49,19 +50,24 @@ def _print(name: str, steps: int, rows: list[dict[str, object]]) -> None:
     print(str(rows[0]["not_computed"]))
 
 
-def run_zoo_artifacts(args: argparse.Namespace, plot: object) -> int:
+def _figure(name: str, rows: list[dict[str, object]]) -> object:
+    from symdecomp.output.plotting.regime_chart import regime_figure
+
+    return regime_figure(name, rows)
+
+
+def run_zoo_artifacts(args: argparse.Namespace, plot: PlotTarget | None) -> int:
     """``artifacts --n A:B --scheme <zoo scheme>`` on the smallest invariant neighbourhood. Exit 1 if a regime is undecided."""
     name = args.scheme.name
     if args.every_n:
         raise InvalidInputError(f"--every-n: the curvature regime for every n is not derived for {name!r} (a scheme of the zoo); "
                                 "give --n A:B")
-    if plot is not None:
-        raise InvalidInputError(f"--plot: the regime chart is not drawn for {name!r} (a scheme of the zoo) yet")
     if args.valences is None:
         raise InvalidInputError("give --n A:B (the valences)")
     rows = ordered_map(_one, args.valences, shared={"scheme": args.scheme}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
     results: list[dict[str, object]] = list(progress(rows, len(args.valences), "artifacts", enabled=not args.quiet))
+    write_plot(plot, lambda: _figure(name, results))
     if args.json:
         print_json(args, results)
     else:

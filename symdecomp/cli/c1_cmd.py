@@ -107,7 +107,8 @@ def register(sub) -> None:
     add_pool_options(p)
     add_quiet_option(p)
     add_plot_option(p, "the characteristic map at the first, the last and a middle vertex, over the certified bounds of its "
-                    "Jacobian and of the spectral gap at every vertex, coloured by verdict")
+                    "Jacobian and of the spectral gap at every vertex, coloured by verdict (a scheme of the zoo: its spline "
+                    "patches, or its control net refined by its own rules, the panel saying which)")
     p.set_defaults(func=run)
 
 
@@ -194,13 +195,20 @@ def _run_zoo(args, plot) -> int:
     """A scheme of the zoo (stencils): :func:`~symdecomp.verify.c1_zoo.c1_zoo` per valence (the route its model allows)."""
     from symdecomp.verify.result import C1Verdict
 
-    if plot is not None:
-        raise InvalidInputError(f"--plot: the figure of Reif's test is not drawn for {args.scheme.name!r} (a scheme of the zoo) yet")
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
         raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} (a scheme "
                                 "of the zoo); give --n A:B")
     results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
+    write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+
+
+def _zoo_figure(scheme, results: list[_Row]):
+    """``c1 --plot`` for a scheme of the zoo: its patches or its refined control net (:mod:`symdecomp.output.plotting.zoo_maps`)."""
+    from symdecomp.output.plotting.c1_figures import c1_figure
+    from symdecomp.output.plotting.zoo_maps import zoo_map_curves
+
+    return c1_figure(scheme, [r.json for r in results], maps=lambda n: zoo_map_curves(scheme, n))
 
 
 def _run_valences(args, one, method, title: str = "Reif's test") -> list:

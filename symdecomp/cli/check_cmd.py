@@ -288,7 +288,7 @@ def _other_route(args, plot) -> int | None:
     if is_stencil_scheme(args.scheme):
         from symdecomp.cli.zoo import run_zoo_check
 
-        return run_zoo_check(args)
+        return run_zoo_check(args, plot)
     if args.sectors is not None or sharp_given(args):
         if args.sectors is None:
             raise InvalidInputError("--n: valences of interior vertices; give the faces of a boundary, crease, corner or "

@@ -51,7 +51,7 @@ from symdecomp.validate import check_bits, check_int
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.c1_zoo import ZooC1Result
 from symdecomp.verify.result import C1Verdict
-from symdecomp.verify.zoo_characteristic import spectral_conditions, subdominant_points
+from symdecomp.verify.zoo_characteristic import characteristic_points, spectral_conditions
 from symdecomp.verify.zorin_bounds import EDGES, RHOMBI, TRIANGLES, DifferenceBounds, Point, difference_bounds, hex_norm
 from symdecomp.verify.zorin_net import WedgeNet, grow, refine, wedge_points
 
@@ -84,7 +84,7 @@ def _characteristic(scheme: StencilScheme, n: int) -> SpectralResult | str | tup
     spectral = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n)  # the smallest invariant depth
     if spectral.status is not C1Verdict.C1 or spectral.subdominant is None:
         return spectral
-    points = subdominant_points(zm, spectral)
+    points = characteristic_points(zm, spectral.subdominant)
     if points is None:
         return "the subdominant eigenvector could not be solved in its frequency block at this precision"
     nb = zm.neighbourhood

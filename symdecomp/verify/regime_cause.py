@@ -69,7 +69,8 @@ def _root_sign(U, V, D, start: int) -> bool:
 
 def frequency_zero_below_hyperbolic(scheme: Scheme) -> tuple[int, str] | None:
     """``(start, how)``: for every ``n >= start`` the frequency-0 eigenvalues besides 1, and the outer ring's, are smaller
-    in modulus than ``lambda_2``; ``None`` where not shown (not quads, rules in ``n`` beyond the vertex rule)."""
+    in modulus than ``lambda_2``; ``None`` where not shown (not quads, rules in ``n`` beyond the vertex rule, a vertex rule
+    that is not rational in ``n``, such as one with ``cos(2 pi/n)``)."""
     M, E0 = (sp.Matrix(m) for m in one_ring_matrices(scheme))
     x = sp.Symbol("x")
     if M.rows != 2 or M.has(N) or scheme.parameters:
@@ -78,6 +79,8 @@ def frequency_zero_below_hyperbolic(scheme: Scheme) -> tuple[int, str] | None:
     if not rest.is_zero or q.degree() != 2 or q.as_expr().free_symbols - {x, N}:
         return None
     _, b, c = (sp.cancel(k / q.LC()) for k in q.all_coeffs())
+    if not all(e.is_rational_function(N) for e in (b, c)):  # e.g. cos(2 pi/n) in the vertex rule: no signs in n here
+        return None
     t_n = 1 - 8 * sp.Rational(22, 7) ** 2 / N**2
     tr, det = (_in_t(f).subs(T, t_n) for f in (M.trace(), M.det()))
     D = sp.cancel(tr**2 - 4 * det)

@@ -37,7 +37,7 @@ from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, float_down
 from symdecomp.verify.c1_zoo import ZooNeighbourhood
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["C1_DEPTH", "engine_neighbourhood", "spectral_conditions", "subdominant_points"]
+__all__ = ["C1_DEPTH", "engine_neighbourhood", "spectral_conditions", "characteristic_points"]
 
 #: The ring depth of the neighbourhood the C1 test reads (the patches one face from the centre and their control points).
 C1_DEPTH = 2
@@ -92,21 +92,6 @@ def _centre_face(nb: Neighbourhood) -> tuple[int, ...]:
     raise AssertionError("a face-centred neighbourhood has its centre face")  # pragma: no cover - built that way
 
 
-def subdominant_points(zm: ZooMatrix, spectral: SpectralResult) -> dict[int, flint.acb] | None:
-    """``vertex -> X(vertex)`` (complex balls) for every labelled point of ``zm``'s neighbourhood, or ``None`` when the
-    subdominant eigenvector cannot be solved in its frequency block at this precision (module docstring)."""
-    assert spectral.subdominant is not None
-    nb = zm.neighbourhood
-    j, n, lam = spectral.subdominant.frequency, nb.n, spectral.subdominant.value
-    with flint.ctx.workprec(EIGENVECTOR_BITS):  # the control points as narrow balls (the Jacobian's signs are decided on them)
-        zeta = [flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() for s in range(n)]
-        block = zoo_blocks(zm).frequency_matrix()
-        K = block.shape[0]
-        A = acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
-        x = null_vector(A)
-        return None if x is None else {v: zeta[s % n] * x[c] for v, (s, c) in nb.labels.items()}
-
-
 def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     """The local mesh with its orbit labels, the spectral conditions and the characteristic map at valence ``n``."""
     zm = zoo_matrix(scheme, n, C1_DEPTH)
@@ -117,8 +102,28 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     mesh = DualNeighbourhood(faces, _centre_face(nb), dict(nb.labels))
     if spectral.status is not C1Verdict.C1 or spectral.subdominant is None:
         return ZooNeighbourhood(mesh, {}, spectral)
-    points = subdominant_points(zm, spectral)
+    points = characteristic_points(zm, spectral.subdominant)
     if points is None:
         return ZooNeighbourhood(mesh, {}, SpectralResult(n, C1Verdict.UNDECIDED, "the subdominant eigenvector could not be "
                                                          "solved in the frequency block at this precision"))
     return ZooNeighbourhood(mesh, points, spectral)
+
+
+def characteristic_points(zm: ZooMatrix, subdominant: Eigen) -> dict[int, flint.acb] | None:
+    """The characteristic map's control points on ``zm``'s neighbourhood, ``vertex -> complex ball`` (``X(s, c) =
+    zeta^(j s) x_c``, module docstring; ``0`` at a centre vertex), or ``None`` if the eigenvector is not solved at this
+    precision."""
+    n, labels = zm.n, zm.neighbourhood.labels
+    j, lam = subdominant.frequency, subdominant.value
+    with flint.ctx.workprec(EIGENVECTOR_BITS):  # the control points as narrow balls (the Jacobian's signs are decided on them)
+        zeta = [flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() for s in range(n)]
+        block = zoo_blocks(zm).frequency_matrix()
+        K = block.shape[0]
+        A = acb_matrix(block, (OMEGA,), (zeta[1],)) - flint.acb_mat([[lam if r == c else 0 for c in range(K)] for r in range(K)])
+        x = null_vector(A)
+        if x is None:
+            return None
+        points = {v: zeta[s % n] * x[c] for v, (s, c) in labels.items()}
+    if zm.neighbourhood.centre is not None:  # the rotation fixes the centre vertex: X = zeta^j X there, so X = 0
+        points[zm.neighbourhood.centre] = flint.acb(0)
+    return points

@@ -1,6 +1,6 @@
 """The characteristic map's control net on a triangle neighbourhood, grown and refined by the scheme's regular rules.
 
-The engine's eigenvector (:func:`~symdecomp.verify.zoo_characteristic.subdominant_points`) gives ``X`` on the
+The engine's eigenvector (:func:`~symdecomp.verify.zoo_characteristic.characteristic_points`) gives ``X`` on the
 neighbourhood of depth ``K`` around the centre vertex. Sector 0 is the wedge ``x e_1 + y w`` with ``x >= 1, y >= 0``
 (``e_1`` the start halfedge's direction, ``w`` the next spoke counter-clockwise); a point ``(x, y)`` is reached by
 ``x`` straight steps along the spoke and ``y`` after a turn of one sixth (:func:`wedge_points`; a straight step at a

@@ -35,7 +35,6 @@ def test_a_midedge_triangle_is_not_applicable_and_exits_0(capsys):
 
 @pytest.mark.parametrize("argv, text", [
     (["--every-n"], "--every-n: the curvature regime for every n is not derived for 'doo-sabin' (a scheme of the zoo); give --n A:B"),
-    (["--n", "3", "--plot", "regime.png"], "--plot: the regime chart is not drawn for 'doo-sabin' (a scheme of the zoo) yet"),
     ([], "give --n A:B (the valences)"),
 ])
 def test_refusals_are_one_line(capsys, argv, text, tmp_path, monkeypatch):

@@ -39,7 +39,6 @@ def test_a_primal_scheme_goes_to_zorins_test_which_names_what_stops_it(zoo, caps
 
 def test_refusals_are_one_line(zoo, capsys):
     for argv, text in (
-        (["--n", "5", "--plot", "c1.png"], "--plot: the figure of Reif's test is not drawn for 'interp' (a scheme of the zoo) yet"),
         (["--every-n"], "--every-n: the spectral conditions for every n are not derived for 'interp'"),
         (["--boundary", "--k", "2"], "--boundary: sharp vertices are not tested for 'interp' (a scheme of the zoo)"),
     ):

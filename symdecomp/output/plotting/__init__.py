@@ -22,7 +22,8 @@ from symdecomp.output.plotting import (
     spectrum_chart,
     tangent,
     tuning,
+    zoo_maps,
 )
 
 __all__ = ["polygons", "tangent", "elliptic", "cbmatrix", "characteristic", "meshes", "tuning", "boundary", "c1_figures",
-           "spectrum_chart", "regime_chart", "check_chart"]
+           "spectrum_chart", "regime_chart", "check_chart", "zoo_maps"]

@@ -11,6 +11,7 @@ boundary, corner, crease or dart vertex.
 from __future__ import annotations
 
 import textwrap
+from collections.abc import Callable
 
 import numpy as np
 
@@ -19,6 +20,7 @@ from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.output.plotting.boundary import sector_characteristic_map, sector_map_panel
 from symdecomp.output.plotting.characteristic import ring_curves
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.stencils import StencilScheme
 
 __all__ = ["MAX_MAPS", "VERDICT_COLOURS", "shown", "c1_figure"]
 
@@ -41,7 +43,11 @@ def shown(count: int, limit: int = MAX_MAPS) -> list[int]:
 
 
 def _ring_panel(ax, scheme: Scheme, row: dict) -> None:
-    curves = ring_curves(scheme, row["n"], samples=5)
+    _curves_panel(ax, ring_curves(scheme, row["n"], samples=5))
+
+
+def _curves_panel(ax, curves: dict) -> None:
+    """A ring's curves (:func:`~symdecomp.output.plotting.characteristic.ring_curves`' keys): lines, inner boundary, rays."""
     for z in curves["lines"]:
         ax.plot(z.real, z.imag, color="0.6", lw=0.5)
     for z in curves["inner"]:
@@ -54,20 +60,24 @@ def _ring_panel(ax, scheme: Scheme, row: dict) -> None:
     ax.set_ylabel("y (Im)")
 
 
-def _map_panel(ax, scheme: Scheme, row: dict, vertex) -> None:
+def _map_panel(ax, scheme: Scheme | StencilScheme, row: dict, vertex, maps: Callable[[int], dict] | None = None) -> None:
     """The characteristic map of one tested vertex, titled with its verdict; a line saying why where there is none."""
     name = row.get("vertex") or f"n = {row['n']}"
     title = f"{name}: {row['verdict']}"
     ax.set_title(title, fontsize=9, color=VERDICT_COLOURS.get(row["verdict"], "k"))
     # the spectral conditions held: an interior vertex's row names the subdominant frequency, a sharp one its lambda
-    if row.get("frequency" if vertex is None else "lambda") is None:
+    if maps is None and row.get("frequency" if vertex is None else "lambda") is None:
         _note(ax, row["reason"])
         return
     try:
-        if vertex is None:
-            _ring_panel(ax, scheme, row)
+        if maps is not None:  # the map's own curves (a scheme of the zoo): what they are goes under the panel
+            curves = maps(row["n"])
+            _curves_panel(ax, curves)
+            ax.set_xlabel(f"x (Re of the eigenvector)\n{textwrap.fill(curves['drawn'], 40)}", fontsize=8)
+        elif vertex is None:
+            _ring_panel(ax, scheme, row)  # type: ignore[arg-type]  # maps is given for a scheme of the zoo
         else:
-            sector_map_panel(ax, sector_characteristic_map(scheme, vertex))
+            sector_map_panel(ax, sector_characteristic_map(scheme, vertex))  # type: ignore[arg-type]  # as above
     except SymdecompError as exc:  # the spectral conditions fail: there is no map to draw
         ax.clear()
         ax.set_title(title, fontsize=9, color=VERDICT_COLOURS.get(row["verdict"], "k"))
@@ -93,25 +103,36 @@ def _bounds_panel(ax, rows: list[dict], labels: list[str]) -> None:
     if ax.has_data():
         ax.set_yscale("log")
         ax.legend(fontsize=8)
+    else:  # e.g. a scheme of the zoo whose test has no route: say so rather than leave an empty frame
+        ax.text(0.5, 0.5, "no certified bounds: the test gave none (see each valence's reason)", ha="center", va="center",
+                transform=ax.transAxes, fontsize=8)
     step = max(1, len(rows) // 16)
     ax.set_xticks(x[::step], [labels[i] for i in x[::step]], fontsize=8, rotation=30 if len(labels[0]) > 4 else 0)
     ax.set_ylabel("certified lower bound")
     ax.grid(alpha=0.3)
 
 
-def c1_figure(scheme: Scheme, rows: list[dict], vertices: list | None = None):
+def c1_figure(scheme: Scheme | StencilScheme, rows: list[dict], vertices: list | None = None, *,
+              maps: Callable[[int], dict] | None = None):
     """The figure of ``c1 --plot``: at most :data:`MAX_MAPS` characteristic maps over the bounds at every vertex.
 
     ``rows``: each tested vertex's ``as_json()``, in order; ``vertices``: the boundary, corner, crease or dart
     vertices (:class:`~symdecomp.schemes.sector.SharpVertex`) the rows are about, or ``None`` for interior valences.
+    ``maps(n)``: the curves of the map at ``n`` with the key ``"drawn"`` saying what they are, for a scheme of the
+    zoo (:func:`~symdecomp.output.plotting.zoo_maps.zoo_map_curves`), drawn whatever the verdict's route; a
+    :class:`~symdecomp.errors.SymdecompError` it raises is the line in place of the map.
     """
     picked = shown(len(rows))
     fig = new_figure(3.7 * max(len(picked), 2), 7.2)
     grid = fig.add_gridspec(2, len(picked), height_ratios=(3, 2))
     for column, i in enumerate(picked):
-        _map_panel(fig.add_subplot(grid[0, column]), scheme, rows[i], None if vertices is None else vertices[i])
+        _map_panel(fig.add_subplot(grid[0, column]), scheme, rows[i], None if vertices is None else vertices[i], maps)
     labels = [r.get("vertex") or str(r["n"]) for r in rows]
     _bounds_panel(fig.add_subplot(grid[1, :]), rows, labels)
+    if maps is not None:
+        fig.suptitle(f"{scheme.name}: C1 of a scheme of the zoo; the characteristic map (the hole's boundary blue),\nand "
+                     "the certified bounds where its test gives them", fontsize=10)
+        return fig
     what = "Reif's test" if vertices is None else "Zorin's conditions"
     fig.suptitle(f"{scheme.name}: {what}; the characteristic map (inner ring boundary blue,\nsector boundaries or sharp "
                  "edges), and its certified bounds", fontsize=10)  # two lines: one runs past a one-map figure

@@ -26,7 +26,7 @@ from symdecomp.validate import check_valence
 from symdecomp.verify.c1 import c1_test, characteristic_nets
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["ring_curves", "characteristic_map_figure"]
+__all__ = ["ring_curves", "bicubic_points", "characteristic_map_figure"]
 
 
 def _bernstein(degree: int, t: np.ndarray) -> np.ndarray:
@@ -35,10 +35,15 @@ def _bernstein(degree: int, t: np.ndarray) -> np.ndarray:
     return np.array([comb(degree, i) * t**i * (1 - t) ** (degree - i) for i in range(degree + 1)])
 
 
-def _patch(net_x, net_y, s: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Complex points of a bicubic Bezier patch on the grid ``s x t`` (rows: s)."""
-    z = np.array([[complex(float(x.mid()), float(y.mid())) for x, y in zip(rx, ry)] for rx, ry in zip(net_x, net_y)])
+def bicubic_points(z: np.ndarray, s: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Complex points of the bicubic Bezier patch with the 4 x 4 complex control points ``z`` on the grid ``s x t`` (rows: s)."""
     return _bernstein(3, s).T @ z @ _bernstein(3, t)
+
+
+def _patch(net_x, net_y, s: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Complex points of a bicubic Bezier patch (nets of Arb balls) on the grid ``s x t`` (rows: s)."""
+    z = np.array([[complex(float(x.mid()), float(y.mid())) for x, y in zip(rx, ry)] for rx, ry in zip(net_x, net_y)])
+    return bicubic_points(z, s, t)
 
 
 def _triangle(net_x, net_y, u: np.ndarray, v: np.ndarray) -> np.ndarray:

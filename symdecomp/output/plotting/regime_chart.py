@@ -31,7 +31,16 @@ def _values(row: dict) -> tuple[int, float, float, float] | None:
     if not c.get("mu") or c.get("lambda1") is None:
         return None
     mu = max(modulus(m["value"]) for m in c["mu"])
-    return row["n"], float(c["lambda1"]), float(c["lambda1_squared"]), mu
+    return row["n"], float(c["lambda1"]), _square(c), mu
+
+
+def _square(c: dict) -> float:
+    """``lambda_1^2`` as a float: the row's decimal, or the square of ``lambda_1`` where the row prints it exact (a scheme
+    of the zoo: ``3*sqrt(5)/32 + 7/32``)."""
+    try:
+        return float(c["lambda1_squared"])
+    except ValueError:
+        return float(c["lambda1"]) ** 2
 
 
 def regime_figure(scheme: str, rows: list[dict]):

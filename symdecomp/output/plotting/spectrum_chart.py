@@ -12,13 +12,14 @@ ones by modulus (hollow markers). The numbers are the results the command prints
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 from symdecomp.output.plotting._mpl import new_figure
 
 __all__ = ["as_complex", "spectrum_figure", "sharp_spectrum_figure"]
 
 
-def as_complex(value) -> complex:
+def as_complex(value: Any) -> complex:
     """An eigenvalue as a Python complex: an Arb ball by its midpoint, an mpmath or sympy number as it is.
 
     >>> import flint
@@ -49,8 +50,10 @@ def _scatter(ax, points: Sequence[tuple[float, complex, int]]) -> None:
     ax.grid(alpha=0.3)
 
 
-def spectrum_figure(spectrum):
-    """The eigenvalues of ``spectrum`` (a ``Spectrum`` or a ``RingSpectrum``) over the frequencies ``k = 0..n-1``."""
+def spectrum_figure(spectrum, *, title: str | None = None, xlabel: str | None = None):
+    """The eigenvalues of ``spectrum`` (a ``Spectrum`` or a ``RingSpectrum``) over the frequencies ``k = 0..n-1``.
+
+    ``title`` and ``xlabel`` replace the ones of a vertex's 1-ring or K-ring (a scheme of the zoo says its own)."""
     entries = spectrum.eigenvalues
     points = [(k, as_complex(e.value), e.multiplicity)
               for e in entries for k in e.frequencies]
@@ -60,11 +63,11 @@ def spectrum_figure(spectrum):
     n = spectrum.n
     step = max(1, n // 16)
     ax.set_xticks(range(0, n, step))
-    ax.set_xlabel("frequency k (the block M_k; k = 0: Eq. 43)")
+    ax.set_xlabel(xlabel or "frequency k (the block M_k; k = 0: Eq. 43)")
     ax.set_ylabel("eigenvalue (marker size: multiplicity)")
     rings = getattr(spectrum, "rings", 1)
     where = f", {rings}-ring" if rings != 1 else ""
-    ax.set_title(f"{spectrum.scheme}, valence n = {n}{where}: {len(entries)} distinct eigenvalues by frequency", fontsize=10)
+    ax.set_title(title or f"{spectrum.scheme}, valence n = {n}{where}: {len(entries)} distinct eigenvalues by frequency", fontsize=10)
     return fig
 
 

@@ -20,7 +20,7 @@ from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.stencils import StencilScheme
 
 if TYPE_CHECKING:
-    from symdecomp.analysis.ring_spectrum import RingSpectrum
+    from symdecomp.analysis.spectrum import RingSpectrum
 
 __all__ = ["run_zoo_spectrum", "run_zoo_masks", "run_zoo_check"]
 

@@ -96,7 +96,10 @@ FAMILIES: dict[str, FamilyFacts] = {f.name: f for f in (
         "5/12, -1/12, -1/12; valence 4: 3/8, 0, -1/8, 0; valence 5 and up: (1/4 + cos(2 pi j/K) + cos(4 pi j/K)/2)/K; "
         "3/4 on the extraordinary vertex; two extraordinary ends averaged",
         sp.Rational(1, 2), 2, sp.Rational(1, 4), "3 and up",
-        "C1 at every valence (the issue cites Zorin 2000's interval-arithmetic proof; not read here)",
+        "C1 at every valence: D. Zorin, 2000, A method for analysis of C1-continuity of subdivision surfaces (SIAM J. "
+        "Numer. Anal. 37(5)); what was read is its abstract, which says the method proves C1 for all valences and is "
+        "applied to the butterfly and modified butterfly schemes (the per-scheme verdicts are in the paper's body, not "
+        "read here); the toolkit's certificate by that method is per valence (c1 --scheme modified-butterfly)",
         "the Fourier transform of s_j: 1/4 at frequency 0, 1/2 at frequencies 1 and n - 1, 1/4 at 2 and n - 2, 0 at "
         "the others, at n = 3, 4 and 5 and up alike; the 2-ring's outer points add at most 1/4"),
 )}

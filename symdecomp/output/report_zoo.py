@@ -4,7 +4,9 @@ The sections are data (:mod:`symdecomp.output.report`'s :class:`~symdecomp.outpu
 same :mod:`symdecomp.output.report_tex` and :mod:`symdecomp.output.report_html` as any report: the scheme (its
 lattice, topology, steps and source), its spectrum at each valence through the zoo's engine
 (:func:`symdecomp.analysis.zoo_spectrum.zoo_spectrum`, as ``spectrum N --scheme``), and its C1 verdicts
-(:func:`symdecomp.verify.c1_zoo.c1_zoo` with the engine's neighbourhood, as ``c1 --scheme``). The paper's claims,
+(:func:`symdecomp.verify.c1_zoo.c1_zoo` with the engine's neighbourhood, as ``c1 --scheme``: Reif's test on the
+biquadratic patches of a dual scheme, Zorin's test on the characteristic net of a primal triangle scheme without a spline
+patch, about a minute per valence for the modified butterfly, or undecided with the reason). The paper's claims,
 the masks' closed forms, the artifact indicators and the figures are about 1-ring primal schemes and are not part
 of it; the document says where the rest is (``masks``, ``check --certify``, the derivations' ``zoo.tex``).
 """

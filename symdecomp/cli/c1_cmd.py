@@ -96,10 +96,8 @@ def register(sub) -> None:
     p.add_argument("--sharpness", type=sharpness, action=Once, metavar="S", default=math.inf,
                    help="sharpness of the crease for --crease (default inf; a finite S is semi-sharp)")
     p.add_argument("--depth", type=_depth, action=Once, default=6,
-                   help="largest de Casteljau subdivision depth, 0 to 12 (default 6; each level splits a quad piece "
-                   "in four, or a triangle twice by bisection); for a primal triangle scheme of the zoo without a spline "
-                   "patch (the modified butterfly), the largest number of refinements of the characteristic net in "
-                   "Zorin's test, capped at 7")
+                   help="largest de Casteljau subdivision depth, 0 to 12 (default 6; a level splits a quad piece in "
+                   "four, a triangle twice); for the modified butterfly, refinements of the net in Zorin's test, capped at 7")
     flag(p, "--json",
                    help='print the one JSON shape (docs: File formats, --json), one object per valence under "rows": '
                    '{"n", "verdict" (c1/not-c1/undecided), "reason", '

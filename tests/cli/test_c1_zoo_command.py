@@ -59,7 +59,6 @@ def test_the_depth_help_names_zorins_refinement_cap(capsys):
     """``c1 --help`` states the cap Zorin's test puts on ``--depth`` as the test defines it (MAX_REFINEMENT)."""
     from symdecomp.verify.c1_zorin import MAX_REFINEMENT
 
-    with pytest.raises(SystemExit):
-        main(["c1", "--help"])
+    assert main(["c1", "--help"]) == 0
     text = " ".join(capsys.readouterr().out.split())
     assert f"in Zorin's test, capped at {MAX_REFINEMENT}" in text

@@ -67,7 +67,8 @@ nothing else.
                    whole meshes refined exactly with their tags (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j, the recursion matrix of Eq. 43 and, for any scheme and K-ring,
                    the block form and E_k (``frequency``),
-                   spectra (Eq. 34, and of any scheme and K-ring from its factored blocks, ``spectrum``,
+                   spectra (Eq. 34, and of any scheme and K-ring from its factored blocks, ``spectrum``, the roots of the
+                   blocks' factors, their clusters and Jordan blocks, ``factor_roots``;
                    ``closed_forms``; a distinct eigenvalue with its multiplicity, the
                    one type of every spectrum, ``eigenvalue``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),

@@ -67,7 +67,8 @@ nothing else.
                    whole meshes refined exactly with their tags (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j, the recursion matrix of Eq. 43 and, for any scheme and K-ring,
                    the block form and E_k (``frequency``),
-                   spectra (Eq. 34, and of any scheme and K-ring from its factored blocks, ``spectrum``, the roots of the
+                   spectra (Eq. 34, of any scheme and K-ring from its factored blocks, and of boundary, crease, corner and dart
+                   vertices named by their mirror's blocks, ``spectrum``; the roots of the
                    blocks' factors, their clusters and Jordan blocks, ``factor_roots``;
                    ``closed_forms``; a distinct eigenvalue with its multiplicity, the
                    one type of every spectrum, ``eigenvalue``), the tangent plane (Section
@@ -114,10 +115,10 @@ nothing else.
                    matrices and the decomposition over Q (``dual_evaldata``), the sectors evaluated from them
                    (``dual_evaluation``);
                    exact eigenvalues of a block-triangular matrix by its parts, the crease block and the sectors, over Q
-                   or, for rules with cos(theta_k) weights, Q(cos(pi/k)) (``triangular_eigen``), the spectrum
-                   named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
-                   (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
-                   masks (``sharp_masks``); how Jupyter
+                   or, for rules with cos(theta_k) weights, Q(cos(pi/k)) (``triangular_eigen``); the mirror blocks'
+                   eigenvalues joined exactly, O(k), the spectrum's structural route at boundary, crease and corner vertices
+                   (``block_values``), the leading ones and a bound of the rest in O(log k) (``leading_values``); the limit and tangent
+                   masks of boundary, crease, corner and dart vertices (``sharp_masks``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a
                    boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified
@@ -258,8 +259,8 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.redesign": ("redesign_vertex",),
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
     "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
-    "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "sharp_spectrum"),
-        "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum"),
+    "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum",
+        "SharpSpectrum", "sharp_spectrum"),
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),

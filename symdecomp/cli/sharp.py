@@ -172,7 +172,7 @@ def describe(vertex) -> str:
 
 def _block_names(scheme, vertex) -> dict:
     """``{eigenvalue key: "block, block"}`` from the spectrum's names (mirror blocks, or parts of the matrix)."""
-    from symdecomp.analysis.sharp_spectrum import sharp_spectrum
+    from symdecomp.analysis.spectrum import sharp_spectrum
 
     return {e.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
 

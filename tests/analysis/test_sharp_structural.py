@@ -15,8 +15,8 @@ import flint
 import pytest
 
 import symdecomp as sd
-from symdecomp.analysis.sharp_spectrum import sharp_spectrum
-from symdecomp.analysis.sharp_structural import _Field, structural_values
+from symdecomp.analysis.block_values import _Field, structural_values
+from symdecomp.analysis.spectrum import sharp_spectrum
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.files import load_scheme
 
@@ -138,6 +138,6 @@ def test_block_names_print_theta_as_sympy_does():
 
     import sympy as sp
 
-    from symdecomp.analysis.sharp_spectrum import pi_multiple
+    from symdecomp.analysis.eigenvalue import pi_multiple
 
     assert all(pi_multiple(Fraction(j, k)) == sp.sstr(sp.pi * j / k) for k in range(1, 40) for j in range(1, 2 * k + 1))

@@ -74,7 +74,7 @@ nothing else.
                    one type of every spectrum, ``eigenvalue``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
-                   ``ellipses``, ``hyperbolic``), limit masks (``masks``, of any scheme and K-ring too), tuning (``tuning``; the
+                   ``ellipses``, ``hyperbolic``), limit masks (``masks``, of any scheme and K-ring, and at sharp vertices), tuning (``tuning``; the
                    regions of free vertex weights by curvature regime, ``tuning_region``),
                    the characteristic polynomial (Section 6, and its factors and product form for any K-ring, ``charpoly``;
                    ``reduction``), Jordan
@@ -118,7 +118,7 @@ nothing else.
                    or, for rules with cos(theta_k) weights, Q(cos(pi/k)) (``triangular_eigen``); the mirror blocks'
                    eigenvalues joined exactly, O(k), the spectrum's structural route at boundary, crease and corner vertices
                    (``block_values``), the leading ones and a bound of the rest in O(log k) (``leading_values``); the limit and tangent
-                   masks of boundary, crease, corner and dart vertices (``sharp_masks``); how Jupyter
+                   masks of a block-triangular matrix part by part, exact left eigenvectors (``triangular_masks``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a
                    boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified
@@ -254,11 +254,11 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
         "RingBlocks", "ring_blocks"),
     "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
     "symdecomp.analysis.inspection": ("MeshInspection", "VertexInspection", "inspect_mesh", "inspect_vertex"),
-    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at", "ring_masks"),
+    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at", "ring_masks", "SharpMasks", "sharp_masks"),
     "symdecomp.analysis.mirror": ("SectorDecomposition", "SineBlock", "sector_decomposition", "sector_spectrum"),
     "symdecomp.analysis.redesign": ("redesign_vertex",),
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
-    "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
+    "symdecomp.analysis.triangular_masks": ("SharpMask",),
     "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum",
         "SharpSpectrum", "sharp_spectrum"),
     "symdecomp.analysis.support": ("Region", "classify_support"),

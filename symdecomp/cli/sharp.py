@@ -196,7 +196,7 @@ def run_sharp_masks(args) -> int:
     tangents are not the tangent plane's."""
     import sys
 
-    from symdecomp.analysis.sharp_masks import sharp_masks
+    from symdecomp.analysis.masks import sharp_masks
     from symdecomp.analysis.spectrum import acb_text
 
     refuse_sharp_options(args, "--rings")

@@ -95,8 +95,8 @@ nothing else.
                    ``ring_eigendata``; the trig table and the Fourier patterns they are made of, ``fourier_patterns``;
                    the file's valences rounded straight from those columns,
                    ``eigendata_direct``; the tables' zeros a mirror symmetry makes exact,
-                   ``eigendata_zeros``) and exact evaluation on either lattice (``evaluation``), of the patches of a
-                   boundary or corner vertex (``sharp_evaluation``); the
+                   ``eigendata_zeros``) and exact evaluation on either lattice (``evaluation``), at an interior and at a
+                   boundary or corner vertex (the latter's sub-patch data by exact refinement, ``subpatch_data``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); every vertex of a mesh classified by its neighbourhood kind
                    (``mesh_kinds``; a vertex of no kind, its computed outcome: off the surface, the kind it becomes
@@ -249,7 +249,6 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.ellipses": ("ellipse_axes",),
     "symdecomp.analysis.elliptic": ("elliptic_defect_table", "nice_elliptic_conditions"),
     "symdecomp.analysis.evaluation": ("PatchEvaluator",),
-    "symdecomp.analysis.sharp_evaluation": ("SharpPatchData", "sharp_patch_data"),
     "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix",
         "RingBlocks", "ring_blocks"),
     "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
@@ -261,6 +260,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.triangular_masks": ("SharpMask",),
     "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum",
         "SharpSpectrum", "sharp_spectrum"),
+    "symdecomp.analysis.subpatch_data": ("SharpPatchData", "sharp_patch_data"),
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),

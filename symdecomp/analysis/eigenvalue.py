@@ -23,11 +23,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
 from symdecomp.errors import NotApplicableError
+
+if TYPE_CHECKING:
+    from symdecomp.schemes.sector import SharpVertex
 
 __all__ = ["Eigenvalue", "ClosedFormLabel", "MirrorBlock", "pi_multiple"]
 
@@ -54,7 +57,7 @@ class MirrorBlock:
     #: The sine block's ``j`` (``theta = pi j/k``), or ``k`` for the last mode, else ``None``.
     j: int | None = None
 
-    def name(self, vertex) -> str:
+    def name(self, vertex: SharpVertex) -> str:
         """The block as a spectrum prints it at ``vertex`` (a :class:`~symdecomp.schemes.sector.SharpVertex`):
         ``"crease"``, ``"cosine (symmetric part)"``, ``"sine j=1 (theta = pi/5), sector 2"``, ``"last mode j=5 ..."``.
 

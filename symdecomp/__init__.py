@@ -117,7 +117,8 @@ nothing else.
                    exact eigenvalues of a block-triangular matrix by its parts, the crease block and the sectors, over Q
                    or, for rules with cos(theta_k) weights, Q(cos(pi/k)) (``triangular_eigen``); the mirror blocks'
                    eigenvalues joined exactly, O(k), the spectrum's structural route at boundary, crease and corner vertices
-                   (``block_values``), the leading ones and a bound of the rest in O(log k) (``leading_values``); the limit and tangent
+                   (``block_values``), the leading ones and a bound of the rest in O(log k) (``leading_values``), the blocks that
+                   have each exact eigenvalue of the matrix, matched by value (``block_names``); the limit and tangent
                    masks of a block-triangular matrix part by part, exact left eigenvectors (``triangular_masks``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a

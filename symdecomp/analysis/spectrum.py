@@ -44,7 +44,7 @@ block and each sector), each a root of an irreducible rational factor, with its 
 by the block of the mirror decomposition (:func:`~symdecomp.analysis.mirror.sector_spectrum`) that has it: the crease
 block, the sine block ``j`` of a sector of ``k`` faces (``theta = pi j/k``), its last mode (``j = k`` on quads:
 ``b_i = (-1)^i``), or at a dart the symmetric (cosine) part. The names are matched by value (a block eigenvalue's
-40-digit value to the nearest certified root); that the blocks *are* the spectrum, with multiplicities, is what
+40-digit value to the nearest certified root, :mod:`symdecomp.analysis.block_names`); that the blocks *are* the spectrum, with multiplicities, is what
 ``check --certify`` proves (:mod:`symdecomp.verify.certify`). From :data:`STRUCTURAL_FROM` faces on, the values come
 from the blocks alone, O(k), without the matrix (:mod:`symdecomp.analysis.block_values`). Semi-sharp edges (finite
 sharpness) have no mirror decomposition: their eigenvalues are named by part only, at each refinement level whose
@@ -63,6 +63,7 @@ import sympy as sp
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cos_field import field_name
 from symdecomp.algebra.cyclotomic import to_acb
+from symdecomp.analysis.block_names import block_names, exact_text
 from symdecomp.analysis.charpoly import COSK, frequency_factors
 from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.eigenvalue import Eigenvalue
@@ -81,7 +82,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
 __all__ = ["Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value", "RingSpectrum", "ring_spectrum", "acb_text",
-           "SharpSpectrum", "sharp_spectrum", "sharp_levels", "MAX_EXACT_TEXT", "STRUCTURAL_FROM"]
+           "SharpSpectrum", "sharp_spectrum", "sharp_levels", "STRUCTURAL_FROM"]
 
 W_O, W_A, W_B = CENTRE_WEIGHTS
 
@@ -320,10 +321,6 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
     return RingSpectrum(scheme.name, scheme.mesh, n, rings, size, digits, tuple(entries))
 
 
-#: Longest closed form printed for a block's eigenvalue; longer ones are shown as the root of their factor.
-MAX_EXACT_TEXT = 90
-
-
 @dataclass(frozen=True)
 class SharpSpectrum:
     """The spectrum of one sharp vertex at one refinement level."""
@@ -357,44 +354,6 @@ def _entry_json(e: Eigenvalue) -> dict:
     return {"value": e.text, "multiplicity": e.multiplicity, "blocks": list(e.blocks), "exact": e.exact}
 
 
-def _exact_text(v: Eigenvalue, candidates: list) -> str:
-    if v.factor.degree() <= 2:
-        return sp.sstr(v.exact)
-    short = [c for c in candidates if len(sp.sstr(c)) <= MAX_EXACT_TEXT and not c.has(sp.I)]
-    if short:
-        return sp.sstr(min(short, key=lambda c: len(sp.sstr(c))))
-    x = sp.Symbol("x")
-    poly = sp.Poly([sp.Rational(int(c.p), int(c.q)) for c in reversed(v.factor.coeffs())], x).as_expr()
-    return f"root {v.index} of {sp.sstr(poly)}"
-
-
-def _names(scheme, vertex, values: list[Eigenvalue]) -> tuple[dict, dict] | None:
-    """``({key: [block names]}, {key: [closed forms]})`` from the mirror decomposition, or ``None`` where it does not apply
-    or where its eigenvalues, matched by value, do not have the matrix's multiplicities."""
-    from symdecomp.analysis.mirror import sector_spectrum
-
-    try:
-        spectrum = sector_spectrum(scheme, vertex)
-    except NotApplicableError:
-        return None
-    names: dict = {v.key: [] for v in values}
-    forms: dict = {v.key: [] for v in values}
-    counts: dict = {v.key: 0 for v in values}
-    for e in spectrum:
-        z = complex(sp.N(e.value, 40))
-        best = min(values, key=lambda v: abs(complex(float(v.ball.real.mid()), float(v.ball.imag.mid())) - z))
-        if abs(complex(float(best.ball.real.mid()), float(best.ball.imag.mid())) - z) > 1e-12 * max(1.0, abs(z)):
-            return None  # a block eigenvalue that is no eigenvalue of the matrix
-        name = e.blocks[0].name(vertex)
-        if name not in names[best.key]:
-            names[best.key].append(name)
-        forms[best.key].append(e.value)
-        counts[best.key] += 1
-    if any(counts[v.key] != v.multiplicity for v in values):
-        return None  # the blocks are not this matrix's spectrum (check --certify says where): no names from them
-    return names, forms
-
-
 #: From this many faces on, ``route="auto"`` takes the structural route (where it applies).
 STRUCTURAL_FROM = 9
 _ROUTES = ("auto", "dense", "structural")
@@ -421,13 +380,13 @@ def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20, 
                 raise
     S, _, values = sharp_values(scheme, vertex, level=level, prec=max(256, 4 * digits + 64))
     values = merge(values)
-    named = _names(scheme, here, values) if here.sharpness == math.inf else None
+    named = block_names(scheme, here, values) if here.sharpness == math.inf else None
     entries = []
     with flint.ctx.workprec(4 * digits + 64):
         for v in values:
             blocks = tuple(named[0][v.key]) if named else tuple(v.part.split(", "))
             text = acb_text(v.ball, digits)
-            entries.append(replace(v, text=text, blocks=blocks, exact=_exact_text(v, named[1][v.key] if named else [])))
+            entries.append(replace(v, text=text, blocks=blocks, exact=exact_text(v, named[1][v.key] if named else [])))
     return SharpSpectrum(scheme.name, vertex, level, here.sharpness, S.nrows(), named is not None, tuple(entries),
                          field_name(S))
 

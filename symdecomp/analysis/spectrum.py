@@ -82,7 +82,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
 __all__ = ["Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value", "RingSpectrum", "ring_spectrum", "acb_text",
-           "SharpSpectrum", "sharp_spectrum", "sharp_levels", "STRUCTURAL_FROM"]
+           "SharpSpectrum", "sharp_spectrum", "sharp_levels"]
 
 W_O, W_A, W_B = CENTRE_WEIGHTS
 

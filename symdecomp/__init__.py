@@ -96,7 +96,8 @@ nothing else.
                    the file's valences rounded straight from those columns,
                    ``eigendata_direct``; the tables' zeros a mirror symmetry makes exact,
                    ``eigendata_zeros``) and exact evaluation on either lattice (``evaluation``), at an interior and at a
-                   boundary or corner vertex (the latter's sub-patch data by exact refinement, ``subpatch_data``); the
+                   boundary or corner vertex (the latter's sub-patch data by exact refinement, ``subpatch_data``; the regular
+                   patch's basis on each lattice, ``regular_basis``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); every vertex of a mesh classified by its neighbourhood kind
                    (``mesh_kinds``; a vertex of no kind, its computed outcome: off the surface, the kind it becomes

@@ -30,7 +30,7 @@ than ``(0, 0)``:
   change sign once per order (``sigma = -1``);
 * the same sum with the 12 quartic box-spline basis functions ``b_l``
   (:func:`~symdecomp.schemes.box_spline.regular_patch`, evaluated in Bernstein-Bezier form;
-  derivatives from the derivative nets, :func:`box_basis`).
+  derivatives from the derivative nets, :func:`~symdecomp.analysis.regular_basis.box_basis`).
 
 At ``(0, 0)`` the limit point and the tangent plane come from the eigen-data itself
 (:func:`eigen_masks`): the eigenvalue-1 eigenvector is constant (``Phi_0[0, l]``), so the limit
@@ -74,25 +74,24 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
 
 import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.algebra.triangle_bezier import bernstein, bezier_derivative
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch_eigendata
 from symdecomp.analysis.masks import INDEX, LAMBDA1, limit_masks
+from symdecomp.analysis.regular_basis import bicubic_exact, box_basis, box_exact, bspline_basis
 from symdecomp.analysis.subpatch_data import SharpPatchData
 from symdecomp.errors import EvaluationError, InvalidInputError, InvalidSchemeError
-from symdecomp.schemes.box_spline import DEGREE, regular_patch
+from symdecomp.schemes.box_spline import regular_patch
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_type, check_valence
 
 __all__ = [
-    "EvaluationError", "PatchEvaluator", "bspline_basis", "box_basis", "patch_order", "patch_masks", "curvatures",
+    "EvaluationError", "PatchEvaluator", "patch_order", "patch_masks", "curvatures",
     "eigen_masks", "check_regular_patch", "evaluate",
 ]
 
@@ -104,16 +103,6 @@ _DERIVATIVES = {"point": (0, 0), "du": (1, 0), "dv": (0, 1), "duu": (2, 0), "duv
 def patch_order(n: int) -> np.ndarray:
     """Index permutation from the masks' order ``(O, a_0.., b_0..)`` to the patch's ``(O, e_0, f_0, ..)``."""
     return np.array([0] + [x for i in range(n) for x in (1 + i, 1 + n + i)])
-
-
-def bspline_basis(t, derivative: int = 0):
-    """The uniform cubic B-spline basis ``N_0..N_3`` (or a derivative) at ``t``: shape ``(4,) + t.shape``."""
-    one = t * 0 + 1
-    if derivative == 0:
-        return np.array([(one - t) ** 3 / 6, (3 * t**3 - 6 * t**2 + 4 * one) / 6, (-3 * t**3 + 3 * t**2 + 3 * t + one) / 6, t**3 / 6])
-    if derivative == 1:
-        return np.array([-((one - t) ** 2) / 2, (9 * t**2 - 12 * t) / 6, (-9 * t**2 + 6 * t + 3 * one) / 6, t**2 / 2])
-    return np.array([one - t, 3 * t - 2 * one, -3 * t + one, t])
 
 
 @dataclass(frozen=True)
@@ -304,40 +293,6 @@ def _masks(scheme: Scheme, n: int, conv):
     return pos, tan
 
 
-@lru_cache(maxsize=16)
-def _derivative_nets(ds: int, dt: int) -> tuple[tuple, ...]:
-    """The exact Bezier nets of ``d^ds/ds d^dt/dt b_i`` (degree ``4 - ds - dt``), one per box-spline basis function."""
-    rows = []
-    for net in regular_patch().coefficients:
-        net, degree = list(net), DEGREE
-        for direction, times in (("u", ds), ("v", dt)):
-            for _ in range(times):
-                net, degree = bezier_derivative(net, degree, direction), degree - 1
-        rows.append(tuple(net))
-    return tuple(rows)
-
-
-@lru_cache(maxsize=64)
-def _derivative_matrix(ds: int, dt: int, kind: str, prec: int):
-    """12 x (Bezier count) matrix: row ``i`` is the net of ``d^ds/ds d^dt/dt b_i`` (degree ``4 - ds - dt``)."""
-    rows = _derivative_nets(ds, dt)
-    if kind == "float":
-        return np.array([[x.numerator / x.denominator for x in row] for row in rows])
-    with mpmath.workprec(prec):
-        return np.array([[mpmath.mpf(x.numerator) / x.denominator for x in row] for row in rows], dtype=object)
-
-
-def box_basis(s, t, ds: int, dt: int, conv) -> np.ndarray:
-    """``(P, 12)``: the derivative ``(ds, dt)`` of the 12 box-spline basis functions at the points ``(s, t)``.
-
-    ``conv`` is ``float`` (numpy float64 arrays) or ``mpmath.mpf`` (object arrays at the current precision).
-    """
-    kind = "float" if conv is float else "mpf"
-    D = _derivative_matrix(ds, dt, kind, mpmath.mp.prec if kind == "mpf" else 0)
-    B = np.array(bernstein(DEGREE - ds - dt, s, t), dtype=object if kind == "mpf" else float)
-    return (D @ B.reshape(D.shape[1], -1)).T
-
-
 def eigen_masks(values, inverse, phi) -> tuple[np.ndarray, np.ndarray]:
     """``(position mask, (cos, sin) tangent masks)`` of the centre from Loop eigen-data (any number type)."""
     if not (abs(values[0] - 1) < 1e-9 and abs(values[2] - values[3]) < 1e-9 * (1 + abs(values[2]))):
@@ -365,16 +320,6 @@ class _PatchBasis:
     exact: Callable
 
 
-def _bicubic_exact(s, t, ds: int, dt: int) -> list:
-    bs, bt = bspline_basis(s, ds), bspline_basis(t, dt)
-    return [bs[a] * bt[b] for b in range(4) for a in range(4)]
-
-
-def _box_exact(s, t, ds: int, dt: int) -> list:
-    b = bernstein(DEGREE - ds - dt, s, t)
-    return [sum((c * x for c, x in zip(net, b)), 0 * s) for net in _derivative_nets(ds, dt)]
-
-
 def _triangle_masks(scheme: Scheme, n: int, values, inverse, phi, conv):
     check_regular_patch(scheme)
     return eigen_masks(values, inverse, phi)
@@ -385,13 +330,13 @@ _BASES = {
         lambda s, t, ds, dt: np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(s.size, 16),
         lambda s, t, ds, dt: np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel(),  # index a + 4 b
         lambda scheme, n, values, inverse, phi, conv: _masks(scheme, n, conv),
-        _bicubic_exact,
+        bicubic_exact,
     ),
     BOX_SPLINE: _PatchBasis(
         lambda s, t, ds, dt: box_basis(s, t, ds, dt, float),
         lambda s, t, ds, dt: box_basis(np.array([s], dtype=object), np.array([t], dtype=object), ds, dt, mpmath.mpf)[0],
         _triangle_masks,
-        _box_exact,
+        box_exact,
     ),
 }
 

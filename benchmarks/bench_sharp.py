@@ -40,10 +40,10 @@ def _seconds(*argv: str, codes: tuple[int, ...] = (0,)) -> float:
 
 
 def _dense_seconds(scheme: str, vertex: str, k: int) -> float:
-    """Seconds of the dense route (:func:`symdecomp.analysis.sharp_spectrum.sharp_spectrum`, ``route="dense"``) in a
+    """Seconds of the dense route (:func:`symdecomp.analysis.spectrum.sharp_spectrum`, ``route="dense"``) in a
     fresh process: the command line takes the structural route from 9 faces on, so this is the dense route's figure."""
     code = ("import symdecomp as sd; from symdecomp.schemes.files import load_scheme; "
-            "from symdecomp.analysis.sharp_spectrum import sharp_spectrum; "
+            "from symdecomp.analysis.spectrum import sharp_spectrum; "
             f"s = load_scheme({scheme!r}); v = sd.SharpVertex.{vertex}({k}, s.lattice); "
             "sharp_spectrum(s, v, route='dense')")
     start = time.perf_counter()

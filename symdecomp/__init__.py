@@ -67,12 +67,14 @@ nothing else.
                    whole meshes refined exactly with their tags (``mesh_refine``)
 ``analysis/``      per-frequency matrices M_j, the recursion matrix of Eq. 43 and, for any scheme and K-ring,
                    the block form and E_k (``frequency``),
-                   spectra (Eq. 34, and of any scheme and K-ring from its factored blocks, ``spectrum``,
+                   spectra (Eq. 34, of any scheme and K-ring from its factored blocks, and of boundary, crease, corner and dart
+                   vertices named by their mirror's blocks, ``spectrum``; the roots of the
+                   blocks' factors, their clusters and Jordan blocks, ``factor_roots``;
                    ``closed_forms``; a distinct eigenvalue with its multiplicity, the
                    one type of every spectrum, ``eigenvalue``), the tangent plane (Section
                    5.1, ``tangent``) and the tail bound of Proposition 5.1 (``dominance``),
                    elliptic and hyperbolic properties (Sections 5.2-5.3, ``elliptic``,
-                   ``ellipses``, ``hyperbolic``), limit masks (``masks``, of any scheme and K-ring too), tuning (``tuning``; the
+                   ``ellipses``, ``hyperbolic``), limit masks (``masks``, of any scheme and K-ring, and at sharp vertices), tuning (``tuning``; the
                    regions of free vertex weights by curvature regime, ``tuning_region``),
                    the characteristic polynomial (Section 6, and its factors and product form for any K-ring, ``charpoly``;
                    ``reduction``), Jordan
@@ -93,8 +95,9 @@ nothing else.
                    ``ring_eigendata``; the trig table and the Fourier patterns they are made of, ``fourier_patterns``;
                    the file's valences rounded straight from those columns,
                    ``eigendata_direct``; the tables' zeros a mirror symmetry makes exact,
-                   ``eigendata_zeros``) and exact evaluation on either lattice (``evaluation``), of the patches of a
-                   boundary or corner vertex (``sharp_evaluation``); the
+                   ``eigendata_zeros``) and exact evaluation on either lattice (``evaluation``), at an interior and at a
+                   boundary or corner vertex (the latter's sub-patch data by exact refinement, ``subpatch_data``; the regular
+                   patch's basis on each lattice, ``regular_basis``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components
                    (``inspection``); every vertex of a mesh classified by its neighbourhood kind
                    (``mesh_kinds``; a vertex of no kind, its computed outcome: off the surface, the kind it becomes
@@ -113,10 +116,11 @@ nothing else.
                    matrices and the decomposition over Q (``dual_evaldata``), the sectors evaluated from them
                    (``dual_evaluation``);
                    exact eigenvalues of a block-triangular matrix by its parts, the crease block and the sectors, over Q
-                   or, for rules with cos(theta_k) weights, Q(cos(pi/k)) (``triangular_eigen``), the spectrum
-                   named by the mirror decomposition's blocks (``sharp_spectrum``), from the blocks alone in O(k)
-                   (``sharp_structural``), the leading ones and a bound of the rest in O(log k) (``sharp_leading``), the limit and tangent
-                   masks (``sharp_masks``); how Jupyter
+                   or, for rules with cos(theta_k) weights, Q(cos(pi/k)) (``triangular_eigen``); the mirror blocks'
+                   eigenvalues joined exactly, O(k), the spectrum's structural route at boundary, crease and corner vertices
+                   (``block_values``), the leading ones and a bound of the rest in O(log k) (``leading_values``), the blocks that
+                   have each exact eigenvalue of the matrix, matched by value (``block_names``); the limit and tangent
+                   masks of a block-triangular matrix part by part, exact left eigenvectors (``triangular_masks``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a
                    boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified
@@ -247,18 +251,18 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.analysis.ellipses": ("ellipse_axes",),
     "symdecomp.analysis.elliptic": ("elliptic_defect_table", "nice_elliptic_conditions"),
     "symdecomp.analysis.evaluation": ("PatchEvaluator",),
-    "symdecomp.analysis.sharp_evaluation": ("SharpPatchData", "sharp_patch_data"),
     "symdecomp.analysis.frequency": ("circulant_blocks", "per_frequency_matrix", "per_frequency_matrix_at", "recursion_matrix",
         "RingBlocks", "ring_blocks"),
     "symdecomp.analysis.hyperbolic": ("hyperbolic_equality", "hyperbolic_ring", "iterate_hyperbolic_ring"),
     "symdecomp.analysis.inspection": ("MeshInspection", "VertexInspection", "inspect_mesh", "inspect_vertex"),
-    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at", "ring_masks"),
+    "symdecomp.analysis.masks": ("limit_masks", "limit_masks_at", "ring_masks", "SharpMasks", "sharp_masks"),
     "symdecomp.analysis.mirror": ("SectorDecomposition", "SineBlock", "sector_decomposition", "sector_spectrum"),
     "symdecomp.analysis.redesign": ("redesign_vertex",),
     "symdecomp.analysis.reduction": ("reduce_first_column", "subdivision_block_form"),
-    "symdecomp.analysis.sharp_masks": ("SharpMask", "SharpMasks", "sharp_masks"),
-    "symdecomp.analysis.sharp_spectrum": ("SharpSpectrum", "sharp_spectrum"),
-        "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum"),
+    "symdecomp.analysis.triangular_masks": ("SharpMask",),
+    "symdecomp.analysis.spectrum": ("Spectrum", "closed_form_spectrum", "recursion_eigenvalues", "RingSpectrum", "ring_spectrum",
+        "SharpSpectrum", "sharp_spectrum"),
+    "symdecomp.analysis.subpatch_data": ("SharpPatchData", "sharp_patch_data"),
     "symdecomp.analysis.support": ("Region", "classify_support"),
     "symdecomp.analysis.tangent": ("invariant_ratio", "invariant_ratio_at", "invariant_ratio_limit", "tangent_eigenvalues"),
     "symdecomp.analysis.tuning": ("joint_obstruction", "tune"),

@@ -39,7 +39,7 @@ from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.errors import NotApplicableError, PrecisionError
 
 __all__ = ["affine_in", "field_of", "FieldMatrix", "field_charpoly", "norm_charpoly", "field_roots", "rational_left_eigenspace",
-           "poly_mul", "specialize"]
+           "poly_mul", "specialize", "field_name"]
 
 
 def affine_in(e, weight) -> tuple[sp.Rational, sp.Rational] | None:
@@ -312,3 +312,25 @@ def specialize(poly: sp.Poly, value: FieldElement) -> list[FieldElement]:
             term = term * value
         out[i] = out[i] + term
     return out
+
+
+def field_name(S) -> str:
+    """``"Q"`` for a rational matrix, else its entries' field, e.g. ``"Q(cos(pi/5))"`` (``"Q(w), w = ..."`` otherwise)."""
+    if isinstance(S, flint.fmpq_mat) or S.modulus.degree() == 1:
+        return "Q"
+    atoms = S.weight.atoms(sp.cos)
+    if len(atoms) == 1:
+        return f"Q({sp.sstr(atoms.pop())})"
+    k = _cos_index(S)
+    return f"Q(cos(pi/{k}))" if k else f"Q({sp.sstr(S.weight)})"
+
+
+def _cos_index(S) -> int | None:
+    """The ``k`` with ``Q(w) = Q(cos(pi/k))``: ``cos(pi/k)`` has ``w``'s degree and is a rational affine function of it."""
+    d = S.modulus.degree()
+    for k in range(2, 4 * d + 8):
+        c = sp.cos(sp.pi / k)
+        pq = affine_in(c, S.weight)
+        if pq is not None and pq[1] != 0:
+            return k
+    return None

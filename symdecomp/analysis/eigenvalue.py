@@ -3,8 +3,8 @@
 The closed-form spectrum (:mod:`symdecomp.analysis.spectrum`), the ``K``-ring's factored spectrum
 (:func:`symdecomp.analysis.spectrum.ring_spectrum`), the exact eigenvalues of a boundary, crease, corner or dart
 vertex (part by part, :mod:`symdecomp.analysis.triangular_eigen`; by the mirror decomposition's blocks,
-:mod:`symdecomp.analysis.sharp_structural` and :func:`~symdecomp.analysis.mirror.sector_spectrum`; named
-by block, :mod:`symdecomp.analysis.sharp_spectrum`) and the numeric cross-checks
+:mod:`symdecomp.analysis.block_values` and :func:`~symdecomp.analysis.mirror.sector_spectrum`; named
+by block, :func:`symdecomp.analysis.spectrum.sharp_spectrum`) and the numeric cross-checks
 (:mod:`symdecomp.verify.numeric`) all speak of the same thing: a value of the subdivision matrix's
 spectrum, how many times it occurs, and where it comes from (the n-gon frequencies or the mirror
 blocks that give it, the closed forms, the factor of the characteristic polynomial and which of its
@@ -21,14 +21,18 @@ others keep their defaults ("not known here").
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
 from symdecomp.errors import NotApplicableError
 
-__all__ = ["Eigenvalue", "ClosedFormLabel", "MirrorBlock"]
+if TYPE_CHECKING:
+    from symdecomp.schemes.sector import SharpVertex
+
+__all__ = ["Eigenvalue", "ClosedFormLabel", "MirrorBlock", "pi_multiple"]
 
 
 @dataclass(frozen=True)
@@ -52,6 +56,31 @@ class MirrorBlock:
     sector: int | None = None
     #: The sine block's ``j`` (``theta = pi j/k``), or ``k`` for the last mode, else ``None``.
     j: int | None = None
+
+    def name(self, vertex: SharpVertex) -> str:
+        """The block as a spectrum prints it at ``vertex`` (a :class:`~symdecomp.schemes.sector.SharpVertex`):
+        ``"crease"``, ``"cosine (symmetric part)"``, ``"sine j=1 (theta = pi/5), sector 2"``, ``"last mode j=5 ..."``.
+
+        >>> from symdecomp.schemes.sector import SharpVertex
+        >>> MirrorBlock("sine", 0, 2).name(SharpVertex.boundary(5, "quad"))
+        'sine j=2 (theta = 2*pi/5)'
+        """
+        if self.block in ("crease", "cosine"):
+            return "crease" if self.block == "crease" else "cosine (symmetric part)"
+        assert self.sector is not None and self.j is not None  # a sine or face block names both
+        k = vertex.sectors[self.sector]
+        where = f", sector {self.sector + 1}" if len(vertex.sectors) > 1 else ""
+        if self.block == "face":
+            return f"last mode j={self.j} (b_i = (-1)^i){where}"
+        theta = pi_multiple(Fraction(self.j * (2 if vertex.closed and len(vertex.sectors) == 1 else 1), k))
+        return f"sine j={self.j} (theta = {theta}){where}"
+
+
+def pi_multiple(q: Fraction) -> str:
+    """``q pi`` as sympy prints it (``pi/5``, ``2*pi/5``, ``pi``), without building the expression (20,000 names at a
+    vertex of 10,000 faces)."""
+    head = "pi" if q.numerator == 1 else f"{q.numerator}*pi"
+    return head if q.denominator == 1 else f"{head}/{q.denominator}"
 
 
 @dataclass(frozen=True)
@@ -89,10 +118,13 @@ class Eigenvalue:
     #: The part(s) of a block-triangular matrix it comes from (``"crease"``, ``"crease, sector 1"``, ``"whole"``), or ``""``.
     part: str = ""
     #: The blocks of a mirror decomposition that have it: :class:`MirrorBlock` items, or their names as text in a
-    #: printed spectrum (:class:`~symdecomp.analysis.sharp_spectrum.SharpSpectrum`); empty if not known.
+    #: printed spectrum (:class:`~symdecomp.analysis.spectrum.SharpSpectrum`); empty if not known.
     blocks: tuple[object, ...] = ()
     #: Equal keys, equal values (and conversely) among the values of one exact computation, or ``None``.
     key: tuple[object, ...] | None = None
+    #: While an exact route joins equal values, what decides equality exactly and gives the value's ball (the route's own
+    #: object: :mod:`symdecomp.analysis.block_values`); ``None`` in every result.
+    witness: Any = field(default=None, compare=False, repr=False)
 
     @property
     def ball(self) -> object:

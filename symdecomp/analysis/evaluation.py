@@ -1,4 +1,5 @@
-"""Exact evaluation of the patch next to an extraordinary vertex (Stam's method): Catmull-Clark and Loop.
+"""Exact evaluation of the patches next to an extraordinary vertex (Stam's method): Catmull-Clark and Loop, at an
+interior vertex and at a boundary or corner vertex.
 
 One evaluator for every lattice (:mod:`symdecomp.schemes.lattice`): the lattice gives the
 parameter domain, the level of a parameter and the sub-patch it falls in
@@ -29,7 +30,7 @@ than ``(0, 0)``:
   change sign once per order (``sigma = -1``);
 * the same sum with the 12 quartic box-spline basis functions ``b_l``
   (:func:`~symdecomp.schemes.box_spline.regular_patch`, evaluated in Bernstein-Bezier form;
-  derivatives from the derivative nets, :func:`box_basis`).
+  derivatives from the derivative nets, :func:`~symdecomp.analysis.regular_basis.box_basis`).
 
 At ``(0, 0)`` the limit point and the tangent plane come from the eigen-data itself
 (:func:`eigen_masks`): the eigenvalue-1 eigenvector is constant (``Phi_0[0, l]``), so the limit
@@ -41,6 +42,15 @@ Two arithmetics, one formula: :class:`PatchEvaluator` holds numpy float64 arrays
 file, vectorized over many parameters) or numpy object arrays of mpmath numbers at any
 precision (from the Arb balls, :meth:`PatchEvaluator.exact`).
 
+**A boundary or corner vertex** (:func:`evaluate`, exact with Fractions): patch ``s`` of its open fan, from the
+closed 2-ring's ``K`` control points ``C`` and the exact data of :mod:`symdecomp.analysis.subpatch_data`. At
+``(u, v) != (0, 0)``: the level ``n`` and the sub-patch ``j`` with local ``(s', t')`` as above, then
+``point = b(s', t') . patches[s][j] . A^(n-1) C`` with the same regular basis ``b``. *Matrix powers, not
+eigenvectors*: ``A`` need not be diagonalisable (it has Jordan blocks at some ``k``), and ``A^(n-1) C`` by ``n - 1``
+exact products is exact for every ``A``; in float64 it costs ``n - 1`` products of a ``K x K`` matrix (``n = 60`` at
+``u = 2^-60``). At ``(0, 0)`` the point is ``limit . C``. With :class:`~fractions.Fraction` control points and
+parameters the result is exact; with floats it is float64 arithmetic on the rounded data.
+
 Affine invariance as a check: equal control points give that point everywhere.
 
 >>> import numpy as np
@@ -51,31 +61,38 @@ Affine invariance as a check: equal control points give that point everywhere.
 >>> out = ev.evaluate(np.ones((22, 1)), [0.3, 0.01], [0.7, 0.02])
 >>> np.allclose(out["point"], 1), np.allclose(out["du"], 0)
 (True, True)
+>>> from fractions import Fraction
+>>> from symdecomp.analysis.subpatch_data import sharp_patch_data
+>>> from symdecomp.schemes.sector import SharpVertex
+>>> d = sharp_patch_data(cc, SharpVertex.boundary(3, "quad"))
+>>> evaluate(d, 1, Fraction(1, 2), Fraction(1, 4), [[1]] * d.size)["point"]
+[Fraction(1, 1)]
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from functools import lru_cache
+from fractions import Fraction
 
 import mpmath
 import numpy as np
 import sympy as sp
 
-from symdecomp.algebra.triangle_bezier import bernstein, bezier_derivative
 from symdecomp.analysis.eigendata import PatchEigenData, RoundedEigenData, patch_eigendata
 from symdecomp.analysis.masks import INDEX, LAMBDA1, limit_masks
-from symdecomp.errors import EvaluationError, InvalidSchemeError
-from symdecomp.schemes.box_spline import DEGREE, regular_patch
+from symdecomp.analysis.regular_basis import bicubic_exact, box_basis, box_exact, bspline_basis
+from symdecomp.analysis.subpatch_data import SharpPatchData
+from symdecomp.errors import EvaluationError, InvalidInputError, InvalidSchemeError
+from symdecomp.schemes.box_spline import regular_patch
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
-from symdecomp.validate import check_valence
+from symdecomp.validate import check_type, check_valence
 
 __all__ = [
-    "EvaluationError", "PatchEvaluator", "bspline_basis", "box_basis", "patch_order", "patch_masks", "curvatures",
-    "eigen_masks", "check_regular_patch",
+    "EvaluationError", "PatchEvaluator", "patch_order", "patch_masks", "curvatures",
+    "eigen_masks", "check_regular_patch", "evaluate",
 ]
 
 
@@ -86,16 +103,6 @@ _DERIVATIVES = {"point": (0, 0), "du": (1, 0), "dv": (0, 1), "duu": (2, 0), "duv
 def patch_order(n: int) -> np.ndarray:
     """Index permutation from the masks' order ``(O, a_0.., b_0..)`` to the patch's ``(O, e_0, f_0, ..)``."""
     return np.array([0] + [x for i in range(n) for x in (1 + i, 1 + n + i)])
-
-
-def bspline_basis(t, derivative: int = 0):
-    """The uniform cubic B-spline basis ``N_0..N_3`` (or a derivative) at ``t``: shape ``(4,) + t.shape``."""
-    one = t * 0 + 1
-    if derivative == 0:
-        return np.array([(one - t) ** 3 / 6, (3 * t**3 - 6 * t**2 + 4 * one) / 6, (-3 * t**3 + 3 * t**2 + 3 * t + one) / 6, t**3 / 6])
-    if derivative == 1:
-        return np.array([-((one - t) ** 2) / 2, (9 * t**2 - 12 * t) / 6, (-9 * t**2 + 6 * t + 3 * one) / 6, t**2 / 2])
-    return np.array([one - t, 3 * t - 2 * one, -3 * t + one, t])
 
 
 @dataclass(frozen=True)
@@ -286,33 +293,6 @@ def _masks(scheme: Scheme, n: int, conv):
     return pos, tan
 
 
-@lru_cache(maxsize=64)
-def _derivative_matrix(ds: int, dt: int, kind: str, prec: int):
-    """12 x (Bezier count) matrix: row ``i`` is the net of ``d^ds/ds d^dt/dt b_i`` (degree ``4 - ds - dt``)."""
-    rows = []
-    for net in regular_patch().coefficients:
-        net, degree = list(net), DEGREE
-        for direction, times in (("u", ds), ("v", dt)):
-            for _ in range(times):
-                net, degree = bezier_derivative(net, degree, direction), degree - 1
-        rows.append(net)
-    if kind == "float":
-        return np.array([[x.numerator / x.denominator for x in row] for row in rows])
-    with mpmath.workprec(prec):
-        return np.array([[mpmath.mpf(x.numerator) / x.denominator for x in row] for row in rows], dtype=object)
-
-
-def box_basis(s, t, ds: int, dt: int, conv) -> np.ndarray:
-    """``(P, 12)``: the derivative ``(ds, dt)`` of the 12 box-spline basis functions at the points ``(s, t)``.
-
-    ``conv`` is ``float`` (numpy float64 arrays) or ``mpmath.mpf`` (object arrays at the current precision).
-    """
-    kind = "float" if conv is float else "mpf"
-    D = _derivative_matrix(ds, dt, kind, mpmath.mp.prec if kind == "mpf" else 0)
-    B = np.array(bernstein(DEGREE - ds - dt, s, t), dtype=object if kind == "mpf" else float)
-    return (D @ B.reshape(D.shape[1], -1)).T
-
-
 def eigen_masks(values, inverse, phi) -> tuple[np.ndarray, np.ndarray]:
     """``(position mask, (cos, sin) tangent masks)`` of the centre from Loop eigen-data (any number type)."""
     if not (abs(values[0] - 1) < 1e-9 and abs(values[2] - values[3]) < 1e-9 * (1 + abs(values[2]))):
@@ -336,6 +316,8 @@ class _PatchBasis:
     scalar: Callable
     #: ``(scheme, n, values, inverse, phi, conv) -> (position mask, tangent masks)`` in the patch's order.
     masks: Callable
+    #: ``(s, t, ds, dt) -> [m values]``: the same at one point in the arithmetic of ``s`` and ``t`` (exact with Fractions).
+    exact: Callable
 
 
 def _triangle_masks(scheme: Scheme, n: int, values, inverse, phi, conv):
@@ -348,14 +330,61 @@ _BASES = {
         lambda s, t, ds, dt: np.einsum("bp,ap->pba", bspline_basis(t, dt), bspline_basis(s, ds)).reshape(s.size, 16),
         lambda s, t, ds, dt: np.outer(bspline_basis(t, dt), bspline_basis(s, ds)).ravel(),  # index a + 4 b
         lambda scheme, n, values, inverse, phi, conv: _masks(scheme, n, conv),
+        bicubic_exact,
     ),
     BOX_SPLINE: _PatchBasis(
         lambda s, t, ds, dt: box_basis(s, t, ds, dt, float),
         lambda s, t, ds, dt: box_basis(np.array([s], dtype=object), np.array([t], dtype=object), ds, dt, mpmath.mpf)[0],
         _triangle_masks,
+        box_exact,
     ),
 }
 
 
 def _basis(lat: Lattice) -> _PatchBasis:
     return lat.select(_BASES, "the patch evaluator's regular basis")
+
+
+def _apply(rows, points: list) -> list:
+    d = len(points[0])
+    return [[sum((w * points[c][i] for c, w in row.items()), 0 * points[0][i]) for i in range(d)] for row in rows]
+
+
+def _check_parameters(data: SharpPatchData, face, u, v, points) -> list:
+    if isinstance(face, bool) or not isinstance(face, int) or not 0 <= face < data.faces:
+        raise InvalidInputError(f"face must be an integer from 0 to {data.faces - 1}, got {face!r:.40}")
+    for name, x in (("u", u), ("v", v)):
+        if isinstance(x, bool) or not isinstance(x, (int, float, Fraction)) or not 0 <= x <= 1:
+            raise EvaluationError(f"{name} must be a number in [0, 1], got {x!r:.40}")
+    if not data.lattice.in_domain(u, v):
+        raise EvaluationError(f"parameters of a {data.lattice} patch must satisfy u + v <= 1, got ({u}, {v})")
+    points = [list(p) for p in points] if hasattr(points, "__iter__") else None
+    if not points or len(points) != data.size or len({len(p) for p in points}) != 1 or not points[0]:
+        raise InvalidInputError(f"control points: need {data.size} points of one dimension d >= 1 (the closed 2-ring)")
+    return points
+
+
+def evaluate(data: SharpPatchData, face: int, u, v, points) -> dict:
+    """``{"point", "du", "dv"}`` of patch ``face`` of a boundary or corner vertex at ``(u, v)`` from the ``K`` control
+    ``points`` (each a sequence) and the vertex's :class:`~symdecomp.analysis.subpatch_data.SharpPatchData`.
+
+    Exact with Fractions (data, points and parameters), float64 with floats. At ``(0, 0)`` the point is the
+    limit position and the derivatives are ``None`` (the parametrization does not define them there).
+    """
+    check_type(data, SharpPatchData, "data")
+    points = _check_parameters(data, face, u, v, points)
+    if u == 0 and v == 0:
+        return {"point": _apply([dict(enumerate(data.limit))], points)[0], "du": None, "dv": None}
+    lat, level = data.lattice, 1
+    while lat.level_measure(u, v, None) * 2 <= 1:
+        u, v, level = u * 2, v * 2, level + 1
+    for _ in range(level - 1):
+        points = _apply(data.matrix, points)
+    j, s, t, sign = lat.locate(2 * u, 2 * v)
+    net = _apply(data.patches[face][j], points)
+    out = {}
+    for key, (ds, dt) in (("point", (0, 0)), ("du", (1, 0)), ("dv", (0, 1))):
+        b = _basis(lat).exact(s, t, ds, dt)
+        scale = (2**level * sign) ** (ds + dt)
+        out[key] = [sum((bl * p[i] for bl, p in zip(b, net)), 0 * net[0][i]) * scale for i in range(len(net[0]))]
+    return out

@@ -1,4 +1,4 @@
-"""Limit masks of the central vertex: left eigenvectors of the subdivision matrix.
+"""Limit masks of an extraordinary vertex: left eigenvectors of the subdivision matrix (interior, boundary, crease, corner, dart).
 
 * The **position mask** is the left eigenvector for the eigenvalue 1, scaled so that its
   weights sum to 1: the limit position of ``O`` is ``w_O O + sum_i w_a a_i + sum_i w_b b_i``.
@@ -40,11 +40,23 @@ at the value's Arb ball, and checked: the residual ``|y (E - lambda I)|`` must b
 >>> m = ring_masks(loop(), 6, 1, digits=6)
 >>> m["position"]["O"], m["position"]["a"][:2], m["subdominant"]
 ('0.5', ['0.0833333', '0.0833333'], '0.5')
+
+**A boundary, crease, corner or dart vertex** (:func:`sharp_masks`, exact): the vertex's matrix is block
+lower-triangular, the crease block then one block per sector, and its masks are exact left eigenvectors found part by
+part (:mod:`symdecomp.analysis.triangular_masks`): the position, the boundary (or crease) curve's tangent from the
+crease block, one cross tangent per sector, or the two largest eigenvalues after 1 where there is no block structure;
+:attr:`SharpMasks.tangent_plane` says whether their eigenvalues are certified the two subdominant ones.
+
+>>> from symdecomp.schemes.scheme import catmull_clark
+>>> from symdecomp.schemes.sector import SharpVertex
+>>> sm = sharp_masks(catmull_clark(), SharpVertex.boundary(2, "quad"))
+>>> [m.name for m in sm.tangents], sm.tangent_plane
+(['boundary curve tangent', 'cross tangent'], True)
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Any, cast
 
@@ -56,12 +68,15 @@ from symdecomp.algebra.compile import compile_expression
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.algebra.null_vector import null_vector
 from symdecomp.analysis.display import NotebookDisplay
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.elliptic import recursion_left_eigenvector, tangent_lambda
 from symdecomp.analysis.frequency import circulant_blocks, laurent_to_cos, per_frequency_matrix, ring_blocks
 from symdecomp.analysis.hyperbolic import apply_rational_matrix
 from symdecomp.analysis.spectrum import acb_text, format_value, ring_spectrum
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import InvalidSchemeError, SymdecompError
+from symdecomp.analysis.triangular_eigen import merge
+from symdecomp.analysis.triangular_masks import ONE, SharpMask, creased_masks, expanded, generic_masks, position_mask
+from symdecomp.errors import InvalidSchemeError, NotApplicableError, SymdecompError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import cos_jtheta
 from symdecomp.symbols import n as N
@@ -69,7 +84,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
 __all__ = ["INDEX", "LAMBDA1", "LimitMasks", "limit_masks", "MasksAtValence", "limit_masks_at", "check_masks_exactly", "ring_masks",
-           "acb_matrix"]
+           "acb_matrix", "SharpMasks", "sharp_masks"]
 
 #: The index ``i`` of ``a_i``, ``b_i`` in the closed forms.
 INDEX = sp.Symbol("i", integer=True, nonnegative=True)
@@ -316,3 +331,53 @@ def ring_masks(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20) -> d
             for name, (u, v) in scheme.lattice.one_ring_classes:
                 mask[name] = mask["classes"][f"{u},{v}"]
         return {"n": n, "scheme": scheme.name, "rings": rings, "subdominant": acb_text(lam1, digits), **masks}
+
+
+@dataclass(frozen=True)
+class SharpMasks:
+    """The limit position and tangent masks of one sharp vertex."""
+
+    scheme: str
+    vertex: object
+    #: The 1-ring points in matrix order (``O, a_0.., b_0..``).
+    names: tuple[str, ...]
+    position: SharpMask
+    tangents: tuple[SharpMask, ...]
+    #: The eigenvalue of largest modulus after 1 over the whole vertex (the subdominant one).
+    subdominant: Eigenvalue
+    #: Whether the tangents' eigenvalues are the two subdominant ones of each piece (certified).
+    tangent_plane: bool
+    #: Why they are, or are not.
+    reason: str
+
+
+def sharp_masks(scheme: Scheme, vertex, *, level: int = 0) -> SharpMasks:
+    """The limit position and tangent masks of ``vertex`` (a :class:`~symdecomp.schemes.sector.SharpVertex`) at
+    refinement ``level``, exact (:mod:`symdecomp.analysis.triangular_masks`). Raises :class:`~symdecomp.errors.NotApplicableError` when 1 is
+    not a simple eigenvalue, or a mask is out of reach (there)."""
+    from symdecomp.analysis.triangular_eigen import sharp_values
+
+    scheme = check_scheme(scheme)
+    S, parts, values = sharp_values(scheme, vertex, level=level)
+    names = tuple(vertex.vertex_order())
+    position = position_mask(S, values)
+    rest = expanded([v for v in merge(values) if v.factor != ONE])
+    if not rest:
+        raise NotApplicableError("the matrix has no eigenvalue besides 1: no tangent masks")
+    if parts[0].label == "whole":  # no block structure (a dart, a semi-sharp crease)
+        tangents, reasons = generic_masks(S, values, names)
+    else:
+        tangents, reasons = creased_masks(S, parts, values, names)
+    if reasons:
+        reason = "; ".join(reasons)
+    else:
+        reason = "the tangents' eigenvalues are the two subdominant ones" + (" on each side" if len(parts) > 2 else "") + \
+            ", real, and strictly larger in modulus than every other eigenvalue but 1 (certified)"
+    shared = [t for t in tangents if t.name.startswith("cross") and t.eigenvalue.key == tangents[0].eigenvalue.key]
+    if shared and not reasons:
+        reason += (f"; the curve tangent and the cross tangent share the eigenvalue {acb_text(shared[0].eigenvalue.ball, 8)} "
+                   "(non-defective): its eigenspace is the tangent plane, and the cross tangent, defined up to adding "
+                   "the curve tangent, is given as the one with equal weights on the two crease neighbours")
+    if not isinstance(S, flint.fmpq_mat):
+        position, tangents = replace(position, generator=S.weight), [replace(m, generator=S.weight) for m in tangents]
+    return SharpMasks(scheme.name, vertex, names, position, tuple(tangents), rest[0], not reasons, reason)

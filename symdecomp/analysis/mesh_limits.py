@@ -8,7 +8,7 @@ mesh of a million faces has a few dozen kinds. :func:`kind_masks` computes a kin
   request, :func:`exact_position`) and the two tangent masks of frequency 1
   (:func:`~symdecomp.analysis.masks.ring_masks`);
 * boundary, crease, corner and dart vertices: the left eigenvectors of the vertex's exact 1-ring matrix
-  (:func:`~symdecomp.analysis.sharp_masks.sharp_masks`). At a semi-sharp vertex (sharpness ``s``, finite)
+  (:func:`~symdecomp.analysis.masks.sharp_masks`). At a semi-sharp vertex (sharpness ``s``, finite)
   the rules change for ``L = ceil(s)`` levels before they settle, so the limit masks are the settled masks at
   level ``L`` times the exact one-step matrices ``S_{L-1} .. S_0`` (:func:`~symdecomp.schemes.sector.exact_sharp_matrix`).
 
@@ -133,7 +133,7 @@ def _settle_levels(sharpness) -> int:
 
 
 def _sharp(scheme: Scheme, kind: NeighbourhoodKind) -> KindMasks:
-    from symdecomp.analysis.sharp_masks import sharp_masks
+    from symdecomp.analysis.masks import sharp_masks
     from symdecomp.schemes.sector import exact_sharp_matrix
 
     vertex = kind.sharp_vertex(scheme.lattice)

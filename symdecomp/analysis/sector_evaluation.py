@@ -22,7 +22,7 @@ from fractions import Fraction
 import flint
 
 from symdecomp.algebra.numbers import to_fmpq
-from symdecomp.analysis.evaluation import bspline_basis
+from symdecomp.analysis.regular_basis import bspline_basis
 from symdecomp.analysis.sector_evaldata import CELLS, PREC, SectorEvalData
 from symdecomp.errors import EvaluationError, InvalidInputError
 from symdecomp.validate import check_type

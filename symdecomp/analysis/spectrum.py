@@ -1,5 +1,5 @@
-"""The spectrum of the subdivision matrix at an interior vertex, per frequency: from the closed forms, and of any scheme's
-K-ring from its factored frequency blocks.
+"""The spectrum of the subdivision matrix: at an interior vertex per frequency, from the closed forms and of any scheme's
+K-ring from its factored frequency blocks; at a boundary, crease, corner or dart vertex by the blocks of its mirror.
 
 The ``2n+1`` eigenvalues of the valence-``n`` subdivision matrix are
 
@@ -35,24 +35,43 @@ and the value are rational there, otherwise the Jordan structure is reported unk
 >>> sp7 = ring_spectrum(loop(), 7, digits=8)
 >>> [(e.text, e.multiplicity) for e in sp7.eigenvalues][:3]
 [('1.0', 1), ('0.53087245', 2), ('0.31936977', 2)]
+
+**A boundary, crease, corner or dart vertex** (:func:`sharp_spectrum`, exact, each eigenvalue named by its block).
+The eigenvalues are those of the one-step matrix ``S`` of the vertex's 1-ring built by exact refinement
+(:func:`~symdecomp.schemes.sector.exact_sharp_matrix`, or over ``Q(cos(pi/k))`` for rules with ``cos(theta_k)``
+weights: :attr:`SharpSpectrum.field`), found part by part (:mod:`symdecomp.analysis.triangular_eigen`: the crease
+block and each sector), each a root of an irreducible rational factor, with its exact multiplicity. Each is then named
+by the block of the mirror decomposition (:func:`~symdecomp.analysis.mirror.sector_spectrum`) that has it: the crease
+block, the sine block ``j`` of a sector of ``k`` faces (``theta = pi j/k``), its last mode (``j = k`` on quads:
+``b_i = (-1)^i``), or at a dart the symmetric (cosine) part. The names are matched by value (a block eigenvalue's
+40-digit value to the nearest certified root, :mod:`symdecomp.analysis.block_names`); that the blocks *are* the spectrum, with multiplicities, is what
+``check --certify`` proves (:mod:`symdecomp.verify.certify`). From :data:`STRUCTURAL_FROM` faces on, the values come
+from the blocks alone, O(k), without the matrix (:mod:`symdecomp.analysis.block_values`). Semi-sharp edges (finite
+sharpness) have no mirror decomposition: their eigenvalues are named by part only, at each refinement level whose
+matrix differs from the level before, until the sharpness has decayed to 0 (:func:`sharp_levels`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, replace
 
 import flint
 import mpmath
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
-from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value, matrix_rank, to_acb
-from symdecomp.analysis.charpoly import COSK, Factor, frequency_factors
+from symdecomp.algebra.cos_field import field_name
+from symdecomp.algebra.cyclotomic import to_acb
+from symdecomp.analysis.block_names import block_names, exact_text
+from symdecomp.analysis.charpoly import COSK, frequency_factors
 from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.factor_roots import FactorRoots, ball_hull, centre_values, exact_root, jordan_sizes, overlap_clusters
 from symdecomp.analysis.frequency import recursion_matrix, ring_blocks
 from symdecomp.analysis.tangent import tangent_eigenvalues
-from symdecomp.errors import InvalidSchemeError, UnsupportedExpressionError
+from symdecomp.analysis.triangular_eigen import merge
+from symdecomp.errors import InvalidInputError, NotApplicableError, UnsupportedExpressionError
 from symdecomp.schemes.full_matrix import parameter_values
 from symdecomp.schemes.rings import CENTRE_WEIGHTS
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -63,7 +82,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached, check_digits, check_limit, check_valence
 
 __all__ = ["Spectrum", "recursion_eigenvalues", "closed_form_spectrum", "format_value", "RingSpectrum", "ring_spectrum", "acb_text",
-           "FactorRoots", "overlap_clusters", "ball_hull", "exact_root", "centre_values"]
+           "SharpSpectrum", "sharp_spectrum", "sharp_levels"]
 
 W_O, W_A, W_B = CENTRE_WEIGHTS
 
@@ -255,80 +274,6 @@ def acb_text(z, digits: int) -> str:
         return format_value(mpmath.mpc(re, mpmath.mpf(z.imag.mid().str(digits + 10, radius=False))), digits)
 
 
-def centre_values(scheme: Scheme, n: int) -> tuple[dict, dict]:
-    """The centre weights at ``n``: exact sympy values and Cyclotomic values, by symbol."""
-    v = scheme.vertex_rule
-    exact, field = {}, {}
-    for s, w in ((W_A, v.each_a), (W_B, v.each_b)):
-        exact[s] = sp.sympify(w, strict=True).subs(N, n)
-        try:
-            field[s] = cyclotomic_value(w, {N: n})
-        except ValueError as exc:
-            raise InvalidSchemeError(f"scheme {scheme.name!r}: vertex weight {w} at n = {n} is not exact in a cyclotomic field ({exc})") from None
-    return exact, field
-
-
-def _evaluator(expr: sp.Expr, variables):
-    return compile_expression(sp.sympify(expr, strict=True), variables, "arb")
-
-
-class FactorRoots:
-    """Roots of the factors at a frequency as Arb balls (closed forms compiled once)."""
-
-    def __init__(self, factors: tuple[Factor, ...], variables):
-        self.factors = factors
-        self.variables = variables
-        self.closed = [[_evaluator(r, variables) for r in f.roots] if f.roots is not None else None for f in factors]
-        self.coeffs = [
-            None if f.roots is not None else [_evaluator(c, variables) for c in reversed(sp.Poly(f.poly, LAM).all_coeffs())]
-            for f in factors
-        ]
-
-    def at(self, args) -> list[tuple[object, int, int]]:
-        """``[(ball, factor index, root index)]`` with each root repeated by the factor's exponent."""
-        out = []
-        for i, f in enumerate(self.factors):
-            if self.closed[i] is not None:
-                balls = [g(*args) for g in self.closed[i]]
-            else:
-                poly = flint.acb_poly([flint.acb(c(*args)) for c in self.coeffs[i]])
-                balls = list(poly.roots())
-            for j, b in enumerate(balls):
-                out += [(flint.acb(b), i, j)] * f.exponent
-        return out
-
-
-def overlap_clusters(items):
-    """Group balls that overlap (transitively); items are ``(ball, ...)`` tuples."""
-    order = sorted(range(len(items)), key=lambda i: (float(items[i][0].real.mid()), float(items[i][0].imag.mid())))
-    groups: list[list[int]] = []
-    for i in order:
-        ball = items[i][0]
-        for g in groups[-4:]:  # sorted by midpoint: overlapping balls are neighbours
-            if any(items[j][0].overlaps(ball) for j in g):
-                g.append(i)
-                break
-        else:
-            groups.append([i])
-    return groups
-
-
-def exact_root(root: sp.Expr, k: int, n: int, weights: dict) -> sp.Expr:
-    """A closed-form root at frequency ``k``: ``omega -> exp(2 pi i k/n)`` written with cosines."""
-    expr = sp.sympify(root, strict=True).xreplace({N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), **weights})
-    if not expr.has(OMEGA):
-        return sp.sympify(expr, strict=True)
-    numer, denom = sp.fraction(sp.together(expr))
-    radical = any(not p.exp.is_Integer for p in numer.atoms(sp.Pow))
-    if denom.free_symbols <= {OMEGA} and sp.Poly(denom, OMEGA).is_monomial and not radical:
-        poly = sp.Poly(sp.expand(numer), OMEGA)
-        shift = sp.Poly(denom, OMEGA).degree()
-        terms = {m[0] - shift: c / sp.Poly(denom, OMEGA).LC() for m, c in poly.terms()}
-        if all(terms.get(-p, 0) == c for p, c in terms.items()):  # symmetric: a cosine polynomial
-            return sp.Add(*[c * (sp.cos(2 * sp.pi * p * k / n) if p else 1) for p, c in terms.items()])
-    return expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * k / n)})
-
-
 def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, exact: bool = True, jordan: bool = True) -> RingSpectrum:
     """The eigenvalues of the ``rings``-ring matrix at valence ``n``, from the frequency factors.
 
@@ -367,7 +312,7 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
                     frequencies=tuple(sorted({items[x][1] for x in g})),
                     exact=value,
                     factor=f.poly.xreplace({N: n}) if k == 0 else f.poly,
-                    jordan=_jordan(blocks, ff, items, g, n, exact_w) if jordan else None,
+                    jordan=jordan_sizes(blocks, ff, items, g, n, exact_w) if jordan else None,
                     members=tuple(sorted(items[x][1:] for x in g)),
                     hull=ball_hull([items[x][0] for x in g]),
                 )
@@ -376,55 +321,111 @@ def ring_spectrum(scheme: Scheme, n: int, rings: int = 1, *, digits: int = 20, e
     return RingSpectrum(scheme.name, scheme.mesh, n, rings, size, digits, tuple(entries))
 
 
-def ball_hull(balls):
-    """A ball (a square around the first midpoint) holding every ball of ``balls``."""
-    centre = balls[0].mid()
-    radius = max(((abs(b.mid() - centre) + b.rad()).upper() for b in balls), key=float)
-    return flint.acb(flint.arb(centre.real, radius), flint.arb(centre.imag, radius))
+@dataclass(frozen=True)
+class SharpSpectrum:
+    """The spectrum of one sharp vertex at one refinement level."""
+
+    scheme: str
+    #: The vertex (a :class:`~symdecomp.schemes.sector.SharpVertex`).
+    vertex: object
+    level: int
+    #: The sharpness at this level (``math.inf``, a ``Fraction``).
+    sharpness: object
+    size: int
+    #: Whether the names come from the mirror decomposition (else from the parts of the matrix).
+    decomposed: bool
+    #: The distinct eigenvalues (a certified ball each, its decimal text, its multiplicity), each with its ``blocks`` as
+    #: text: the blocks of the mirror decomposition that have it (``"crease"``, ``"sine j=1 (theta = pi/5)"``, ...), or
+    #: the parts of the matrix (``"crease"``, ``"sector 1"``, ``"whole"``) when there is no decomposition; and its
+    #: ``exact`` form as text: a closed form, or ``"root i of <irreducible polynomial>"``.
+    entries: tuple[Eigenvalue, ...]
+    #: The field of the matrix's entries: ``"Q"``, or ``"Q(cos(pi/k))"`` for rules with ``cos(theta_k)`` weights.
+    field: str = "Q"
+    #: ``"dense"`` (the matrix's characteristic polynomial) or ``"structural"`` (the mirror decomposition's blocks).
+    route: str = "dense"
+
+    def as_json(self) -> dict:
+        s = self.sharpness
+        return {"level": self.level, "sharpness": "inf" if s == math.inf else str(s), "size": self.size, "field": self.field,
+                "decomposed": self.decomposed, "route": self.route, "eigenvalues": [_entry_json(e) for e in self.entries]}
 
 
-def _jordan(blocks, ff, items, group, n, weights) -> tuple[int, ...] | None:
-    """Jordan block sizes of a cluster, exactly (ranks over ``Q(zeta_2n)``); ``None`` if not decidable.
+def _entry_json(e: Eigenvalue) -> dict:
+    return {"value": e.text, "multiplicity": e.multiplicity, "blocks": list(e.blocks), "exact": e.exact}
 
-    Frequencies are independent (different Fourier subspaces), so the blocks are those of each
-    frequency matrix at the value. A value is handled when its closed form lies in ``Q(zeta_2n)``
-    there; otherwise (a radical, a root of a factor of degree > 2) a value repeated at one
-    frequency is left undecided (``None``).
+
+#: From this many faces on, ``route="auto"`` takes the structural route (where it applies).
+STRUCTURAL_FROM = 9
+_ROUTES = ("auto", "dense", "structural")
+
+
+def sharp_spectrum(scheme: Scheme, vertex, *, level: int = 0, digits: int = 20, route: str = "auto") -> SharpSpectrum:
+    """The exact spectrum of ``vertex`` at refinement ``level``, each eigenvalue named by its block (module docstring).
+
+    ``route``: ``"dense"`` (the matrix built by refinement, its characteristic polynomial factored), ``"structural"``
+    (the mirror decomposition's blocks, O(k): :mod:`symdecomp.analysis.block_values`; refused where it does not
+    apply), or ``"auto"``: structural from :data:`STRUCTURAL_FROM` faces on where it applies, else dense.
     """
-    by_k: dict[int, list[int]] = {}
-    for x in group:
-        by_k.setdefault(items[x][1], []).append(x)
-    sizes: list[int] = []
-    field = CyclotomicField(2 * n)
-    for k, members in sorted(by_k.items()):
-        if len(members) == 1:
-            sizes.append(1)
-            continue
-        _, _, i, j = items[members[0]]
-        f = (ff.zero if k == 0 else ff.other)[i]
-        if f.roots is None:
-            return None
-        at = {N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), **weights}
-        E = blocks.frequency_zero_matrix(n) if k == 0 else blocks.frequency_matrix()
+    from symdecomp.analysis.triangular_eigen import sharp_values
+
+    scheme, digits = check_scheme(scheme), check_digits(digits)
+    if route not in _ROUTES:
+        raise InvalidInputError(f"route: expected one of {', '.join(_ROUTES)}, got {route!r:.40}")
+    here = vertex.at_level(level)
+    if route == "structural" or (route == "auto" and here.faces >= STRUCTURAL_FROM and here.sharpness == math.inf):
         try:
-            value = cyclotomic_value(sp.sympify(f.roots[j], strict=True).xreplace(at), field=field)
-            A = [[cyclotomic_value(sp.sympify(E[r, c], strict=True).xreplace(at), field=field) - (value if r == c else 0) for c in range(E.shape[1])]
-                 for r in range(E.shape[0])]
-        except ValueError:
-            return None
-        sizes += _partition(A, len(members))
-    return tuple(sorted(sizes, reverse=True))
+            return _structural_spectrum(scheme, vertex, level, digits)
+        except NotApplicableError:
+            if route == "structural":
+                raise
+    S, _, values = sharp_values(scheme, vertex, level=level, prec=max(256, 4 * digits + 64))
+    values = merge(values)
+    named = block_names(scheme, here, values) if here.sharpness == math.inf else None
+    entries = []
+    with flint.ctx.workprec(4 * digits + 64):
+        for v in values:
+            blocks = tuple(named[0][v.key]) if named else tuple(v.part.split(", "))
+            text = acb_text(v.ball, digits)
+            entries.append(replace(v, text=text, blocks=blocks, exact=exact_text(v, named[1][v.key] if named else [])))
+    return SharpSpectrum(scheme.name, vertex, level, here.sharpness, S.nrows(), named is not None, tuple(entries),
+                         field_name(S))
 
 
-def _partition(A, m: int) -> list[int]:
-    """Jordan block sizes of the eigenvalue 0 of ``A`` (algebraic multiplicity ``m``) from exact ranks."""
-    size = len(A)
-    ranks, P = [size], [row[:] for row in A]
-    for _ in range(m):
-        ranks.append(matrix_rank(P))
-        if ranks[-1] == ranks[-2] or size - ranks[-1] >= m:
-            break  # the ranks are stable from here on
-        P = [[sum((P[r][t] * A[t][c] for t in range(size)), A[0][0] * 0) for c in range(size)] for r in range(size)]
-    ranks += [ranks[-1]] * (m + 1 - len(ranks))
-    more = [ranks[i] - ranks[i + 1] for i in range(m)]  # number of blocks of size > i
-    return [i + 1 for i in range(m) for _ in range(more[i] - (more[i + 1] if i + 1 < m else 0))]
+def _structural_spectrum(scheme: Scheme, vertex, level: int, digits: int) -> SharpSpectrum:
+    """:func:`sharp_spectrum` from the blocks of the mirror decomposition (no matrix of the vertex)."""
+    from symdecomp.analysis.block_values import structural_values
+    from symdecomp.analysis.triangular_eigen import near_weight
+
+    here = vertex.at_level(level)
+    values, size = structural_values(scheme, here, prec=max(256, 4 * digits + 64))
+    entries = []
+    with flint.ctx.workprec(4 * digits + 64):
+        for v in values:
+            names: list[str] = []
+            for e in v.blocks:
+                if e.name(here) not in names:
+                    names.append(e.name(here))
+            entries.append(replace(v, text=acb_text(v.ball, digits), blocks=tuple(names)))
+    irrational = sorted(k for k in set(here.sectors) if near_weight(scheme, here, k) is not None)
+    field = f"Q({', '.join(f'cos(pi/{k})' for k in irrational)})" if irrational else "Q"
+    return SharpSpectrum(scheme.name, vertex, level, here.sharpness, size, True, tuple(entries), field, "structural")
+
+
+def sharp_levels(scheme: Scheme, vertex, *, digits: int = 20) -> list[SharpSpectrum]:
+    """The spectra at level 0 and at each later level whose matrix differs from the one before, until the
+    sharpness has decayed to 0 (one spectrum for infinitely sharp edges)."""
+    from symdecomp.analysis.triangular_eigen import sharp_matrix
+    from symdecomp.schemes.sector import MAX_LEVEL
+
+    out = [sharp_spectrum(scheme, vertex, digits=digits)]
+    if vertex.sharpness == math.inf:
+        return out
+    previous = sharp_matrix(scheme, vertex)
+    for level in range(1, MAX_LEVEL + 1):
+        S = sharp_matrix(scheme, vertex, level=level)
+        if S != previous:
+            out.append(sharp_spectrum(scheme, vertex, level=level, digits=digits))
+            previous = S
+        if vertex.at_level(level).sharpness == 0:
+            break
+    return out

@@ -4,7 +4,7 @@ Frequencies are independent (different Fourier subspaces), so the Jordan blocks 
 of each frequency block ``B_k`` at the value. Where the value is exact and it and the block's entries
 are numbers of a cyclotomic field ``Q(zeta_12n)`` (rationals, cosines of rational multiples of ``pi``),
 the sizes follow from exact ranks of the powers of ``B_k - lambda I``
-(:func:`~symdecomp.analysis.spectrum._partition`, over
+(:func:`~symdecomp.analysis.factor_roots.jordan_partition`, over
 :class:`~symdecomp.algebra.cyclotomic.CyclotomicField`); the ranks also prove that the value has the
 multiplicity the balls gave it at that frequency. Otherwise (a radical, a root of a factor of degree > 2
 repeated at one frequency) the structure is left unknown (``None``).
@@ -29,7 +29,8 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.spectrum import RingSpectrum, _partition
+from symdecomp.analysis.factor_roots import jordan_partition
+from symdecomp.analysis.spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import ZooBlocks
 
 __all__ = ["with_jordan"]
@@ -54,7 +55,7 @@ def _sizes(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField) -> tuple[in
                  for r in range(B.shape[0])]
         except ValueError:
             return None
-        found = _partition(A, m)
+        found = jordan_partition(A, m)
         if sum(found) != m:
             return None  # the value's multiplicity at k is not what the balls said: leave it undecided
         sizes += found

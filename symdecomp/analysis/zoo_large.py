@@ -29,7 +29,7 @@ import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
 from symdecomp.analysis.charpoly import COSK, Factor, irreducible_factors
-from symdecomp.analysis.spectrum import FactorRoots
+from symdecomp.analysis.factor_roots import FactorRoots
 from symdecomp.analysis.zoo_structure import ZooStructure, zoo_structure
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.stencils import N, StencilScheme

@@ -22,7 +22,8 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.spectrum import RingSpectrum, acb_text, ball_hull, exact_root
+from symdecomp.analysis.factor_roots import ball_hull, exact_root
+from symdecomp.analysis.spectrum import RingSpectrum, acb_text
 from symdecomp.analysis.zoo_blocks import signed_offset
 from symdecomp.analysis.zoo_large import StructuralFactors, frequency_balls, proved_distinct_groups, structural_factors
 from symdecomp.analysis.zoo_structure import ZooStructure

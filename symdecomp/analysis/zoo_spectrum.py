@@ -29,7 +29,8 @@ import sympy as sp
 from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.charpoly import COSK, Factor, irreducible_factors
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.spectrum import FactorRoots, RingSpectrum, acb_text, ball_hull, exact_root, overlap_clusters
+from symdecomp.analysis.factor_roots import FactorRoots, ball_hull, exact_root, overlap_clusters
+from symdecomp.analysis.spectrum import RingSpectrum, acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_roots import squarefree_roots

@@ -167,7 +167,7 @@ def _figure(scheme: str, rows: list):
 
 def _run_sharp_numeric(args) -> int:
     """``check --k A:B --boundary`` (and --corner, --crease K2): the blocks against the refined matrix, numerically, on the pool."""
-    from symdecomp.analysis.sharp_structural import structural_values
+    from symdecomp.analysis.block_values import structural_values
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
     from symdecomp.parallel import ordered_map
     from symdecomp.verify.numeric import numeric_row

@@ -15,7 +15,7 @@ and a request beyond the memory limit is refused in one line naming the estimate
 
 ``--boundary --k 1:8`` (or ``--corner``): the exact data of the patches next to a boundary (corner) vertex
 with K faces, K in the range, as JSON of exact rationals (format ``sharp-patches`` in
-:mod:`symdecomp.output.evaldata`; evaluation in :mod:`symdecomp.analysis.sharp_evaluation`). ``--json``:
+:mod:`symdecomp.output.evaldata`; evaluation in :func:`symdecomp.analysis.evaluation.evaluate`). ``--json``:
 ``{"out", "format", "scheme", "kind", "k", "bytes", "sizes"}``.
 
 ``--scheme doo-sabin --n A:B`` (a scheme of the zoo): the data of its extraordinary faces, or one line saying why
@@ -128,7 +128,7 @@ def _sharp_kind(args) -> str | None:
 
 
 def _run_sharp(args, kind: str) -> int:
-    from symdecomp.analysis.sharp_evaluation import sharp_patch_data
+    from symdecomp.analysis.subpatch_data import sharp_patch_data
     from symdecomp.output.evaldata import SHARP_FORMAT, sharp_entry, sharp_json_chunks
     from symdecomp.schemes.sector import SharpVertex
 

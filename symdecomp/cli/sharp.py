@@ -172,7 +172,7 @@ def describe(vertex) -> str:
 
 def _block_names(scheme, vertex) -> dict:
     """``{eigenvalue key: "block, block"}`` from the spectrum's names (mirror blocks, or parts of the matrix)."""
-    from symdecomp.analysis.sharp_spectrum import sharp_spectrum
+    from symdecomp.analysis.spectrum import sharp_spectrum
 
     return {e.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
 
@@ -196,7 +196,7 @@ def run_sharp_masks(args) -> int:
     tangents are not the tangent plane's."""
     import sys
 
-    from symdecomp.analysis.sharp_masks import sharp_masks
+    from symdecomp.analysis.masks import sharp_masks
     from symdecomp.analysis.spectrum import acb_text
 
     refuse_sharp_options(args, "--rings")

@@ -51,7 +51,7 @@ def register(sub) -> None:
 
 
 def _run_sharp(args, plot) -> int:
-    from symdecomp.analysis.sharp_spectrum import sharp_levels
+    from symdecomp.analysis.spectrum import sharp_levels
     from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
 
     refuse_sharp_options(args, "--rings", "--exact")

@@ -42,7 +42,7 @@ points over the coarse 2-ring, ``spectrum`` the characteristic polynomial of ``A
 ``[{"factor", "multiplicity", "eigenvectors"}]`` (integer coefficients, constant term first; the
 eigenvectors per root), and ``diagonalizable`` whether every factor has as many eigenvectors as its
 multiplicity. The evaluation (powers of ``A``, not eigenvectors: ``A`` may be
-defective) is :mod:`symdecomp.analysis.sharp_evaluation`'s; the ``layout`` string says it in one
+defective) is :mod:`symdecomp.analysis.subpatch_data`'s; the ``layout`` string says it in one
 line. :func:`sharp_json_chunks` writes, :func:`read_sharp_json` reads back.
 
 The files are streamed valence by valence (:func:`binary_chunks`, :func:`json_chunks`: nothing
@@ -277,7 +277,7 @@ def _sparse(rows) -> list:
 
 
 def sharp_entry(data) -> dict:
-    """One vertex of the boundary/corner document from :class:`~symdecomp.analysis.sharp_evaluation.SharpPatchData`."""
+    """One vertex of the boundary/corner document from :class:`~symdecomp.analysis.subpatch_data.SharpPatchData`."""
     return {
         "kind": data.kind, "k": data.faces, "size": data.size,
         "labels": [list(lab) for lab in data.vertex.ring_labels(2)],
@@ -329,8 +329,8 @@ def _rows(rows, size: int) -> tuple[dict, ...]:
 
 
 def read_sharp_json(path) -> dict:
-    """Read a boundary/corner document back: ``(kind, k)`` -> :class:`~symdecomp.analysis.sharp_evaluation.SharpPatchData`."""
-    from symdecomp.analysis.sharp_evaluation import SharpPatchData
+    """Read a boundary/corner document back: ``(kind, k)`` -> :class:`~symdecomp.analysis.subpatch_data.SharpPatchData`."""
+    from symdecomp.analysis.subpatch_data import SharpPatchData
     from symdecomp.schemes.sector import SharpVertex
 
     doc = load_document(path, (SHARP_FORMAT,), "a boundary/corner eigen-data document")

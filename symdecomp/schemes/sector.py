@@ -54,7 +54,7 @@ from symdecomp.validate import INPUT_LIMITS, cached, check_int, check_levels, ch
 
 __all__ = ["SharpVertex", "sharp_subdivision_matrix", "sharp_matrix_rows", "exact_sharp_matrix", "MAX_SECTOR_FACES", "MAX_DENSE_FACES", "MAX_LEVEL"]
 
-#: Most faces around a sharp vertex (the structural route, :mod:`symdecomp.analysis.sharp_structural`, is O(k)).
+#: Most faces around a sharp vertex (the structural route, :mod:`symdecomp.analysis.block_values`, is O(k)).
 MAX_SECTOR_FACES = INPUT_LIMITS["--boundary, --corner, --crease: faces by the blocks"][0]
 #: Most faces around a vertex whose matrix is built here (dense, exact): checked before any work.
 MAX_DENSE_FACES = INPUT_LIMITS["--boundary, --corner, --crease, --dart: faces"][0]

@@ -2,7 +2,7 @@
 
 The dense test (:mod:`.c1_sharp`) builds the sector's exact 2-ring matrix, whose size grows like ``k`` and whose
 exact spectrum costs far more; it is capped (:data:`MAP_FACES`). Here conditions 1 and 2 of :mod:`.c1_sharp` are read
-from the blocks of the mirror decomposition, O(log k) per sector (:mod:`symdecomp.analysis.sharp_leading`):
+from the blocks of the mirror decomposition, O(log k) per sector (:mod:`symdecomp.analysis.leading_values`):
 
 * **the 1-ring**: the sector's 2-ring matrix is block lower triangular, the new 1-ring reading only the old one, and
   the 1-ring block is the one-step matrix of a boundary (or corner) vertex with the sector's ``k`` faces, whose
@@ -49,8 +49,8 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
+from symdecomp.analysis.leading_values import leading_values
 from symdecomp.analysis.mirror import crease_block
-from symdecomp.analysis.sharp_leading import leading_values
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex

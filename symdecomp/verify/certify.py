@@ -351,9 +351,8 @@ def _blocks_in_field(scheme, vertex, S, lay, dart: bool) -> list:
 
 def certify_sharp_field(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCertificate:
     """:func:`certify_sharp` for rules with ``cos(theta_k)`` weights: the identity proved in ``Q(cos(pi/k))[lambda]``."""
-    from symdecomp.algebra.cos_field import FieldMatrix, field_charpoly, norm_charpoly
+    from symdecomp.algebra.cos_field import FieldMatrix, field_charpoly, field_name, norm_charpoly
     from symdecomp.analysis.mirror import sector_decomposition, vertex_layout
-    from symdecomp.analysis.sharp_spectrum import field_name
     from symdecomp.analysis.triangular_eigen import merge, sharp_values
 
     scheme, digits = check_scheme(scheme), check_digits(digits)

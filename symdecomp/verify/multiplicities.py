@@ -254,7 +254,7 @@ def _same_root_by_symmetry(roots, ff, n: int) -> bool:
 
 def _root_value(scheme: Scheme, ff, n: int, member, field):
     """The exact value of root ``j`` of factor ``i`` at frequency ``k`` in ``Q(zeta_2n)``, or ``None``."""
-    from symdecomp.analysis.spectrum import centre_values, exact_root
+    from symdecomp.analysis.factor_roots import centre_values, exact_root
 
     k, i, j = member
     f = (ff.zero if k == 0 else ff.other)[i]

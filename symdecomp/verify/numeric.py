@@ -31,7 +31,7 @@ The same question at the other neighbourhoods, each against its own matrix built
   agreement to about 12 digits (``--certify`` proves it exactly);
 * a boundary, crease or corner vertex (a sector, :func:`numeric_sharp`; ``check --k A:B --boundary`` without
   ``--certify``): the eigenvalues from the mirror decomposition's blocks
-  (:mod:`symdecomp.analysis.sharp_structural`, each with its exact multiplicity and a certified ball) against the
+  (:mod:`symdecomp.analysis.block_values`, each with its exact multiplicity and a certified ball) against the
   eigenvalues of the vertex's matrix by exact refinement
   (:func:`~symdecomp.schemes.sector.sharp_subdivision_matrix`, its entries at ``dps`` digits, its eigenvalues by
   Arb's approximate QR iteration, ``acb_mat.eig(algorithm="approx")``). Each of the matrix's eigenvalues is
@@ -437,7 +437,7 @@ def _matrix_values(scheme, vertex, prec: int) -> list:
 
 def numeric_sharp(scheme, vertex, *, dps: int = 50) -> SharpNumericRow:
     """Compare the blocks' spectrum of ``vertex`` with its refined matrix's eigenvalues at ``dps`` digits (module docstring)."""
-    from symdecomp.analysis.sharp_structural import structural_values
+    from symdecomp.analysis.block_values import structural_values
     from symdecomp.verify.certify import describe_vertex
 
     scheme, dps = check_scheme(scheme), check_precision(dps)

@@ -49,10 +49,11 @@ import mpmath
 
 from symdecomp.algebra.cyclotomic import to_acb
 from symdecomp.algebra.numbers import to_fmpq, to_fraction, to_mpf
+from symdecomp.analysis.evaluation import evaluate
 from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.analysis.sector_evaldata import PREC, SectorEvalData, real_ball, sector_evaldata
 from symdecomp.analysis.sector_evaluation import evaluate as evaluate_data
-from symdecomp.analysis.sharp_evaluation import evaluate, limit_mask, sharp_patch_data
+from symdecomp.analysis.subpatch_data import limit_mask, sharp_patch_data
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, Lattice
 from symdecomp.schemes.mesh import QuadMesh, TriangleMesh, triangle_ring_labels, triangle_ring_mesh

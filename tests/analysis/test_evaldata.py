@@ -16,7 +16,8 @@ from symdecomp.analysis.eigendata import (
     patch_eigendata,
     round_ball,
 )
-from symdecomp.analysis.evaluation import EvaluationError, PatchEvaluator, bspline_basis
+from symdecomp.analysis.evaluation import EvaluationError, PatchEvaluator
+from symdecomp.analysis.regular_basis import bspline_basis
 from symdecomp.cli import main
 from symdecomp.cli.files import write_output_file
 from symdecomp.output.evaldata import binary_bytes, read_binary

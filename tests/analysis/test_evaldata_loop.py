@@ -14,7 +14,8 @@ import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic, to_acb
 from symdecomp.analysis.eigendata import certified_eigendata, patch_eigendata
-from symdecomp.analysis.evaluation import EvaluationError, PatchEvaluator, box_basis
+from symdecomp.analysis.evaluation import EvaluationError, PatchEvaluator
+from symdecomp.analysis.regular_basis import box_basis
 from symdecomp.cli import main
 from symdecomp.output.evaldata import read_json
 from symdecomp.schemes.box_spline import BOX_POINTS, LATTICE_RAYS, regular_patch

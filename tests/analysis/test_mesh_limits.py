@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from symdecomp.analysis.masks import sharp_masks
 from symdecomp.analysis.mesh_kinds import NeighbourhoodKind, classify_vertices
 from symdecomp.analysis.mesh_limits import exact_as_floats, exact_position, kind_masks, mesh_limits
-from symdecomp.analysis.sharp_masks import sharp_masks
 from symdecomp.schemes.lattice import QUAD
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.mesh_tags import MeshTags

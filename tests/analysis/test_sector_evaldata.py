@@ -5,7 +5,7 @@ from fractions import Fraction
 import flint
 import pytest
 
-from symdecomp.analysis import sharp_evaluation
+from symdecomp.analysis import evaluation, subpatch_data
 from symdecomp.analysis.sector_evaldata import CELLS, sector_evaldata
 from symdecomp.analysis.sector_evaluation import evaluate
 from symdecomp.errors import EvaluationError, InvalidInputError, InvalidTypeError, LatticeFactMissing, NotApplicableError
@@ -69,11 +69,11 @@ def test_eigen_expansion_equals_powers(vertex):
 def test_agrees_with_the_boundary_evaluator(kind, k):
     """Stam's sub-patches at distance 1..2 with matrix powers (another route) give the same exact points."""
     vertex = getattr(SharpVertex, kind)(k, "quad")
-    d, other = sector_evaldata(CC, vertex), sharp_evaluation.sharp_patch_data(CC, vertex)
+    d, other = sector_evaldata(CC, vertex), subpatch_data.sharp_patch_data(CC, vertex)
     net = _net(d.size)
     for s in range(k):
         for u, v in PARAMS:
-            got, want = evaluate(d, s, u, v, net), sharp_evaluation.evaluate(other, s, u, v, net)
+            got, want = evaluate(d, s, u, v, net), evaluation.evaluate(other, s, u, v, net)
             assert [_fraction(x) for x in got["point"]] == want["point"]
             if (u, v) != (0, 0):
                 assert [_fraction(x) for x in got["du"]] == want["du"]
@@ -84,7 +84,7 @@ def test_crease_sector_is_a_boundary_fan(k1, k2):
     """With standard rules the crease's second sector is evaluated as a boundary vertex with k2 faces."""
     crease = SharpVertex.crease(k1, k2, "quad")
     fan = SharpVertex.boundary(k2, "quad")
-    d, other = sector_evaldata(CC, crease), sharp_evaluation.sharp_patch_data(CC, fan)
+    d, other = sector_evaldata(CC, crease), subpatch_data.sharp_patch_data(CC, fan)
     net = _net(d.size)
     index = {lab: i for i, lab in enumerate(crease.ring_labels(2))}
 
@@ -96,7 +96,7 @@ def test_crease_sector_is_a_boundary_fan(k1, k2):
     for s in range(k2):
         for u, v in PARAMS:
             got = evaluate(d, k1 + s, u, v, net)["point"]
-            assert [_fraction(x) for x in got] == sharp_evaluation.evaluate(other, s, u, v, fan_net)["point"]
+            assert [_fraction(x) for x in got] == evaluation.evaluate(other, s, u, v, fan_net)["point"]
 
 
 @pytest.mark.parametrize("k", range(1, 7))

@@ -15,9 +15,9 @@ import sympy as sp
 import symdecomp as sd
 from symdecomp.algebra.cos_field import FieldMatrix, field_charpoly, norm_charpoly
 from symdecomp.algebra.number_field import FieldElement
+from symdecomp.analysis.masks import sharp_masks
 from symdecomp.analysis.mirror import sector_spectrum
-from symdecomp.analysis.sharp_masks import sharp_masks
-from symdecomp.analysis.sharp_spectrum import sharp_spectrum
+from symdecomp.analysis.spectrum import sharp_spectrum
 from symdecomp.analysis.triangular_eigen import sharp_matrix
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import sharp_subdivision_matrix

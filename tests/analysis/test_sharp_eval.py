@@ -9,7 +9,8 @@ import flint
 import pytest
 import sympy as sp
 
-from symdecomp.analysis.sharp_evaluation import evaluate, sharp_patch_data
+from symdecomp.analysis.evaluation import evaluate
+from symdecomp.analysis.subpatch_data import sharp_patch_data
 from symdecomp.errors import EvaluationError, InvalidInputError, NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.loop import loop

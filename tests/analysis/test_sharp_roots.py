@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 
 import symdecomp as sd
-from symdecomp.analysis import sharp_masks as masks_module
+from symdecomp.analysis import triangular_masks as masks_module
 from symdecomp.analysis.triangular_eigen import _factor_roots
 from symdecomp.cli import main
 from symdecomp.errors import NotApplicableError

@@ -69,10 +69,10 @@ def test_numeric_mode_compares_the_blocks_with_the_matrix_on_the_pool(capsys):
 
 def test_numeric_mode_finds_a_wrong_block(monkeypatch, capsys):
     """The matrix is built without the blocks: spoil the blocks and the numeric check says where."""
-    from symdecomp.analysis import sharp_structural
+    from symdecomp.analysis import block_values
 
-    real = sharp_structural._eval_arb
-    monkeypatch.setattr(sharp_structural, "_eval_arb", lambda terms, c, ck: real(terms, c, ck) * 1.001)
+    real = block_values.eval_arb
+    monkeypatch.setattr(block_values, "eval_arb", lambda terms, c, ck: real(terms, c, ck) * 1.001)
     assert main(["check", "--k", "4", "--boundary", "--jobs", "1"]) == 1
     out = capsys.readouterr().out
     assert "disagree" in out and "is no block's value to 25 digits" in out

@@ -140,7 +140,7 @@ def test_near_edge_weights_checked_at_each_sector():
 
 def test_api_sharp_spectrum_refuses_free_parameters():
     """The API's sharp routes read the near-edge weights through the same check (was ``TypeError: invalid input``)."""
-    from symdecomp.analysis.sharp_spectrum import sharp_spectrum
+    from symdecomp.analysis.spectrum import sharp_spectrum
 
     scheme = scheme_from_text(FILES["free-sharp"], source="x.toml")
     with pytest.raises(InvalidSchemeError, match="free parameters gamma"):

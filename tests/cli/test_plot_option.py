@@ -59,7 +59,7 @@ def _refuse(monkeypatch, where: str) -> None:
     (["c1", "--n", "3:4"], "symdecomp.parallel.ordered_map"),
     (["c1", "--boundary", "--k", "2"], "symdecomp.parallel.ordered_map"),
     (["spectrum", "5"], "symdecomp.analysis.spectrum.closed_form_spectrum"),
-    (["spectrum", "2", "--boundary"], "symdecomp.analysis.sharp_spectrum.sharp_levels"),
+    (["spectrum", "2", "--boundary"], "symdecomp.analysis.spectrum.sharp_levels"),
     (["artifacts", "--n", "3"], "symdecomp.cli.artifacts_cmd.ordered_map"),
     (["check", "--n", "3"], "symdecomp.cli.check_cmd.check_valences"),
     (["check", "--boundary", "--k", "2", "--certify"], "symdecomp.verify.certify.certify_sharp"),

@@ -5,7 +5,8 @@ from fractions import Fraction
 
 import pytest
 
-from symdecomp.analysis.sharp_evaluation import evaluate, sharp_patch_data
+from symdecomp.analysis.evaluation import evaluate
+from symdecomp.analysis.subpatch_data import sharp_patch_data
 from symdecomp.cli import main
 from symdecomp.output.evaldata import read_sharp_json
 from symdecomp.schemes.loop import loop

@@ -6,7 +6,8 @@ from fractions import Fraction
 
 import pytest
 
-from symdecomp.analysis.sharp_evaluation import evaluate, sharp_patch_data
+from symdecomp.analysis.evaluation import evaluate
+from symdecomp.analysis.subpatch_data import sharp_patch_data
 from symdecomp.errors import EvalDataFileError
 from symdecomp.output import evaldata
 from symdecomp.schemes.loop import loop

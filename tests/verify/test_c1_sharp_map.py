@@ -15,8 +15,8 @@ import pytest
 import sympy as sp
 
 import symdecomp as sd
+from symdecomp.analysis.leading_values import leading_values
 from symdecomp.analysis.mirror import crease_block
-from symdecomp.analysis.sharp_leading import leading_values
 from symdecomp.cli import main
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES

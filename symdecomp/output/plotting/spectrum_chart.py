@@ -6,7 +6,7 @@ as in the paper's figures of the eigenvalues of ``M_j``; at a boundary, crease, 
 at every block of the mirror decomposition it comes from. Real eigenvalues are drawn by value, complex
 ones by modulus (hollow markers). The numbers are the results the command prints
 (:class:`~symdecomp.analysis.spectrum.Spectrum`, :class:`~symdecomp.analysis.spectrum.RingSpectrum`,
-:class:`~symdecomp.analysis.sharp_spectrum.SharpSpectrum`).
+:class:`~symdecomp.analysis.spectrum.SharpSpectrum`).
 """
 
 from __future__ import annotations

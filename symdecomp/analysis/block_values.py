@@ -17,7 +17,7 @@ Multiplicities are exact: blocks with the same ``theta`` and rules are the same 
 are decided equal or not exactly in ``K = Q(cos(pi/k))`` (a rational or a root of one block is a root of another's
 quadratic, with the right sign of the square root), and values not decided so are separated by raising Arb's
 precision, else refused (:class:`~symdecomp.errors.NotApplicableError`, the dense route then decides). Work: O(k)
-block evaluations, no matrix of the vertex. The dense route (:func:`~symdecomp.analysis.sharp_spectrum.sharp_spectrum`
+block evaluations, no matrix of the vertex. The dense route (:func:`~symdecomp.analysis.spectrum.sharp_spectrum`
 with ``route="dense"``) is the independent cross-check.
 
 Out of reach here (refused, so the dense route is used): darts (their symmetric part is not a small block), semi-sharp
@@ -50,7 +50,7 @@ _X = sp.Symbol("x")
 
 
 @functools.lru_cache(maxsize=32)
-def _checked_polynomials(scheme) -> tuple[sp.Expr, sp.Expr, bool]:
+def checked_polynomials(scheme) -> tuple[sp.Expr, sp.Expr, bool]:
     """``(trace, det, quad)`` of the sine block in ``C`` and ``CK``, after checking the sine identity for every ``k``."""
     residual, _ = sine_identity(scheme)
     if any(sp.simplify(r) != 0 for r in residual):
@@ -111,7 +111,7 @@ def _symbolic_terms(expr: sp.Expr) -> tuple[tuple[int, int, sp.Expr], ...] | Non
     return tuple((a, b, coeff) for (a, b), coeff in poly.terms())
 
 
-def _poly_terms(expr: sp.Expr, k: int) -> tuple[tuple[int, int, Fraction], ...]:
+def poly_terms(expr: sp.Expr, k: int) -> tuple[tuple[int, int, Fraction], ...]:
     """``expr`` at ``k`` faces as ``(a, b, coefficient)`` terms of ``c^a c_k^b``, rational coefficients, or refused.
 
     The polynomial is read once per expression (sympy), its coefficients evaluated at each ``k``."""
@@ -131,7 +131,7 @@ def _poly_terms(expr: sp.Expr, k: int) -> tuple[tuple[int, int, Fraction], ...]:
     return tuple(out)
 
 
-def _eval_arb(terms, c, ck):
+def eval_arb(terms, c, ck):
     acc = flint.arb(0)
     for a, b, q in terms:
         acc += flint.arb(flint.fmpq(q.numerator, q.denominator)) * c**a * ck**b
@@ -163,7 +163,7 @@ class _Block:
     def arb(self, prec: int) -> tuple:
         with flint.ctx.workprec(prec):
             c, ck = flint.arb.cos_pi_fmpq(flint.fmpq(self.j, self.k)), flint.arb.cos_pi_fmpq(flint.fmpq(1, self.k))
-            return _eval_arb(self.terms[0], c, ck), _eval_arb(self.terms[1], c, ck)
+            return eval_arb(self.terms[0], c, ck), eval_arb(self.terms[1], c, ck)
 
     @functools.cached_property
     def exact(self) -> tuple[FieldElement, FieldElement]:
@@ -203,12 +203,12 @@ def _sign(field: _Field, e: FieldElement) -> int:
     raise NotApplicableError(f"the sign of an element of Q(cos(pi/{field.k})) was not decided at {MAX_PREC} bits")
 
 
-@dataclass
-class _Item:
-    """One eigenvalue of one block while equal values are joined: the value (its key, multiplicity, exact text and
-    blocks, no ball yet) and what decides equality exactly."""
+@dataclass(frozen=True)
+class _Witness:
+    """What decides exactly whether an eigenvalue of one block equals another's, and gives its ball at any precision:
+    a rational value, a sine block's root of that sign, or an eigenvalue of the crease block (kept as the
+    :attr:`~symdecomp.analysis.eigenvalue.Eigenvalue.witness` of its value while equal values are joined)."""
 
-    value: Eigenvalue
     rational: Fraction | None = None
     block: _Block | None = None
     sign: int = 0
@@ -220,15 +220,18 @@ class _Item:
                 return flint.acb(flint.fmpq(self.rational.numerator, self.rational.denominator))
         if self.crease is not None:
             return ball_at(self.crease, prec)
+        assert self.block is not None  # one of the three is set
         return self.block.root(self.sign, prec)
 
 
-def _item(key: tuple, multiplicity: int, names: list, exact: str, rational: Fraction | None = None, **work) -> _Item:
-    return _Item(Eigenvalue(None, "", multiplicity, exact=exact, blocks=tuple(names), key=key), rational, **work)
+def _item(key: tuple, multiplicity: int, names: list, exact: str, rational: Fraction | None = None, **work) -> Eigenvalue:
+    """One eigenvalue of one block (no ball yet), with its witness."""
+    return Eigenvalue(None, "", multiplicity, exact=exact, blocks=tuple(names), key=key, witness=_Witness(rational, **work))
 
 
-def _decide(a: _Item, b: _Item) -> bool | None:
+def _decide(x: Eigenvalue, y: Eigenvalue) -> bool | None:
     """Whether two values are equal, exactly; ``None`` where this route cannot tell (then Arb separates them)."""
+    a, b = x.witness, y.witness
     if a.rational is not None and b.rational is not None:
         return a.rational == b.rational
     if a.block is None:
@@ -250,8 +253,8 @@ def _decide(a: _Item, b: _Item) -> bool | None:
     return a.block.is_root(a.sign, x0) and b.block.is_root(b.sign, x0)
 
 
-def _overlapping(items: list[_Item], prec: int) -> list[tuple[int, int]]:
-    balls = [it.ball(prec) for it in items]
+def _overlapping(items: list[Eigenvalue], prec: int) -> list[tuple[int, int]]:
+    balls = [it.witness.ball(prec) for it in items]
     order = sorted(range(len(items)), key=lambda i: float(balls[i].real.lower()))
     pairs = []
     for pos, i in enumerate(order):
@@ -264,10 +267,10 @@ def _overlapping(items: list[_Item], prec: int) -> list[tuple[int, int]]:
     return pairs
 
 
-def _separated(a: _Item, b: _Item, prec: int) -> bool:
+def _separated(a: Eigenvalue, b: Eigenvalue, prec: int) -> bool:
     while prec < MAX_PREC:
         prec *= 2
-        if not a.ball(prec).overlaps(b.ball(prec)):
+        if not a.witness.ball(prec).overlaps(b.witness.ball(prec)):
             return True
     return False
 
@@ -276,7 +279,7 @@ def _fraction(q) -> Fraction:
     return Fraction(int(q.p), int(q.q))
 
 
-def _crease_items(scheme, lay, prec: int) -> list[_Item]:
+def _crease_items(scheme, lay, prec: int) -> list[Eigenvalue]:
     """The crease block's eigenvalues, exactly (FLINT), as items."""
     block = crease_block(scheme, len(lay.sharp), corner=lay.corner)
     if not all(sp.sympify(e, strict=True).is_Rational for e in block):
@@ -295,12 +298,12 @@ def _theta_text(j: int, k: int) -> str:
     return f"cos({'' if q.numerator == 1 else f'{q.numerator}*'}pi/{q.denominator})" if q.denominator > 1 else f"cos({q.numerator}*pi)"
 
 
-def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict, js: range | None = None) -> list[_Item]:
+def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict, js: range | None = None) -> list[Eigenvalue]:
     """The sine blocks ``j`` in ``js`` (default ``1..k-1``) of sector ``s`` (``k`` faces) and, on quads, its last mode,
     as items."""
     tr, det, quad = polys
     at = {symbols.sector_faces: sp.Integer(k)}
-    terms = (_poly_terms(tr, k), _poly_terms(det, k))
+    terms = (poly_terms(tr, k), poly_terms(det, k))
     uses_k = any(b for part in terms for _, b, _ in part) or tr.has(symbols.sector_faces) or det.has(symbols.sector_faces)
     field = fields.setdefault(k, _Field(k))
     where = (f", c_k = cos(pi/{k})" if any(b for part in terms for _, b, _ in part) else "")
@@ -332,16 +335,13 @@ def _sector_items(scheme, s: int, k: int, polys: tuple, prec: int, fields: dict,
     return out
 
 
-def _join(items: list[_Item], prec: int) -> list[Eigenvalue]:
+def _join(items: list[Eigenvalue], prec: int) -> list[Eigenvalue]:
     """Equal values joined (equal keys, then overlapping balls decided exactly or separated by Arb)."""
     merged: dict = {}
     for it in items:
-        old = merged.get(it.value.key)
-        if old is None:
-            merged[it.value.key] = it
-        else:
-            old.value = replace(old.value, multiplicity=old.value.multiplicity + it.value.multiplicity,
-                                blocks=old.value.blocks + it.value.blocks)
+        old = merged.get(it.key)
+        merged[it.key] = it if old is None else replace(old, multiplicity=old.multiplicity + it.multiplicity,
+                                                        blocks=old.blocks + it.blocks)
     items = list(merged.values())
     parent = list(range(len(items)))
 
@@ -360,16 +360,17 @@ def _join(items: list[_Item], prec: int) -> list[Eigenvalue]:
             parent[root(i)] = root(j)
     for i, j in undecided:  # after the exact decisions: equal through a third value (a rational), or told apart by Arb
         if root(i) != root(j) and not _separated(items[i], items[j], prec):
-            raise NotApplicableError(f"two eigenvalues ({items[i].value.exact}; {items[j].value.exact}) were neither decided equal "
+            raise NotApplicableError(f"two eigenvalues ({items[i].exact}; {items[j].exact}) were neither decided equal "
                                      f"nor separated at {MAX_PREC} bits")
     groups: dict = {}
     for i, it in enumerate(items):
         groups.setdefault(root(i), []).append(it)
     out = []
     for group in groups.values():
-        rep = min(group, key=lambda it: (it.rational is None, it.crease is None))
-        names = tuple(n for it in group for n in it.value.blocks)
-        out.append(replace(rep.value, value=rep.ball(prec), multiplicity=sum(it.value.multiplicity for it in group), blocks=names))
+        rep = min(group, key=lambda it: (it.witness.rational is None, it.witness.crease is None))
+        names = tuple(n for it in group for n in it.blocks)
+        out.append(replace(rep, value=rep.witness.ball(prec), multiplicity=sum(it.multiplicity for it in group), blocks=names,
+                           witness=None))
     return out
 
 
@@ -401,7 +402,7 @@ def layout(scheme, vertex):
 def block_values(scheme, lay, prec: int, head: int | None = None) -> list[Eigenvalue]:
     """The distinct eigenvalues of the crease block, the last modes and the sine blocks ``j <= head`` (default: every
     ``j``) of a :func:`layout`, joined exactly, largest modulus first."""
-    polys = _checked_polynomials(scheme)
+    polys = checked_polynomials(scheme)
     items, fields = _crease_items(scheme, lay, prec), {}
     for s, k in enumerate(lay.sectors):
         items += _sector_items(scheme, s, k, polys, prec, fields, None if head is None else range(1, min(k, head + 1)))

@@ -15,8 +15,8 @@ import flint
 import pytest
 
 import symdecomp as sd
-from symdecomp.analysis.sharp_spectrum import sharp_spectrum
-from symdecomp.analysis.sharp_structural import _Field, structural_values
+from symdecomp.analysis.block_values import _Field, structural_values
+from symdecomp.analysis.spectrum import sharp_spectrum
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.files import load_scheme
 
@@ -138,6 +138,28 @@ def test_block_names_print_theta_as_sympy_does():
 
     import sympy as sp
 
-    from symdecomp.analysis.sharp_spectrum import pi_multiple
+    from symdecomp.analysis.eigenvalue import pi_multiple
 
     assert all(pi_multiple(Fraction(j, k)) == sp.sstr(sp.pi * j / k) for k in range(1, 40) for j in range(1, 2 * k + 1))
+
+
+def test_the_joined_values_are_plain_eigenvalues():
+    """While equal values are joined each carries the witness that decides equality exactly; no result keeps it, and a
+    witness never makes two equal values unequal."""
+    from symdecomp.analysis.eigenvalue import Eigenvalue
+
+    values, size = structural_values(sd.catmull_clark(), sd.SharpVertex.crease(3, 4, sd.QUAD))
+    assert all(v.witness is None for v in values) and sum(v.multiplicity for v in values) == size
+    assert Eigenvalue(1, "1", 1, witness=object()) == Eigenvalue(1, "1", 1)
+
+
+def test_each_block_names_itself_at_its_vertex():
+    """The names the structural route prints are the blocks' own (MirrorBlock.name): at a crease of 3 and 4 faces the
+    sine blocks of both sectors, sector by sector, and the last modes with b_i = (-1)^i."""
+    s = sharp_spectrum(sd.catmull_clark(), sd.SharpVertex.crease(3, 4, sd.QUAD), route="structural")
+    names = {n for e in s.entries for n in e.blocks}
+    import sympy as sp
+
+    sines = {f"sine j={j} (theta = {sp.sstr(sp.pi * j / k)}), sector {s_ + 1}" for s_, k in enumerate((3, 4)) for j in range(1, k)}
+    assert sines <= names and "crease" in names
+    assert {"last mode j=3 (b_i = (-1)^i), sector 1", "last mode j=4 (b_i = (-1)^i), sector 2"} <= names

@@ -1,36 +1,37 @@
-"""Limit position and tangent masks at a boundary, crease, corner or dart vertex, as exact left eigenvectors.
+"""Limit position and tangent masks of a block lower-triangular matrix part by part, as exact left eigenvectors.
 
-The one-step matrix ``S`` of the vertex's 1-ring (:func:`~symdecomp.schemes.sector.exact_sharp_matrix`) is block
-lower-triangular: the crease block ``C`` (the vertex and its neighbours on sharp edges), then one block ``Y_s`` per
-sector (:mod:`symdecomp.analysis.triangular_eigen`). So a left eigenvector of an eigenvalue of ``C`` that no ``Y_s``
-has vanishes off the crease points, and a left eigenvector ``(u, w)`` of an eigenvalue ``mu`` of ``Y_s`` has
-``w Y_s = mu w`` (a sine polyline of the mirror decomposition) and ``u (mu I - C) = w X``: the 3 x 3 solve on the
-crease points. Every mask here is computed exactly as a left eigenvector of ``S`` (or of ``C``, or of the piece
-``C + Y_s`` of one side of a crease, extended by zeros, which is a left eigenvector of ``S`` because no other
-row reads that piece's points) over ``Q(lambda)`` (:func:`~symdecomp.algebra.number_field.left_eigenspace`); for rules
-with ``cos(theta_k)`` weights (BLZ's) over ``Q(cos(pi/k))`` at a rational eigenvalue
-(:func:`~symdecomp.algebra.cos_field.rational_left_eigenspace`, :attr:`SharpMask.generator`); a mask at an irrational
-eigenvalue there would lie in ``Q(cos(pi/k), lambda)``, out of reach (:class:`~symdecomp.errors.NotApplicableError`).
-When the cross tangent shares the curve tangent's eigenvalue (BLZ's ``1/2``) their eigenspace is the tangent plane and
-the cross tangent is given as its member with equal weights on the two crease neighbours.
+The one-step matrix ``S`` of a boundary, crease, corner or dart vertex's 1-ring
+(:func:`~symdecomp.schemes.sector.exact_sharp_matrix`) is block lower-triangular: the crease block ``C`` (the vertex
+and its neighbours on sharp edges), then one block ``Y_s`` per sector (:mod:`symdecomp.analysis.triangular_eigen`).
+So a left eigenvector of an eigenvalue of ``C`` that no ``Y_s`` has vanishes off the crease points, and a left
+eigenvector ``(u, w)`` of an eigenvalue ``mu`` of ``Y_s`` has ``w Y_s = mu w`` (a sine polyline of the mirror
+decomposition) and ``u (mu I - C) = w X``: the 3 x 3 solve on the crease points. Every mask here is computed exactly
+as a left eigenvector of ``S`` (or of ``C``, or of the piece ``C + Y_s`` of one side of a crease, extended by zeros,
+which is a left eigenvector of ``S`` because no other row reads that piece's points) over ``Q(lambda)``
+(:func:`~symdecomp.algebra.number_field.left_eigenspace`); for rules with ``cos(theta_k)`` weights (BLZ's) over
+``Q(cos(pi/k))`` at a rational eigenvalue (:func:`~symdecomp.algebra.cos_field.rational_left_eigenspace`,
+:attr:`SharpMask.generator`); a mask at an irrational eigenvalue there would lie in ``Q(cos(pi/k), lambda)``, out of
+reach (:class:`~symdecomp.errors.NotApplicableError`). When the cross tangent shares the curve tangent's eigenvalue
+(BLZ's ``1/2``) their eigenspace is the tangent plane and the cross tangent is given as its member with equal weights
+on the two crease neighbours.
 
-* **position**: the eigenvalue 1 (it must be simple), weights summing to 1;
-* **boundary curve tangent**: the crease block's largest eigenvalue after 1 (``1 - crease_edge`` = 1/2 for the
-  standard rules), weight 1 on ``a_0`` and -1 on the crease's other neighbour; at a **corner** it is double, and
-  the two masks are the two boundary curves' tangents (weight 1 on ``a_0``, resp. on ``a_k``);
+* **position** (:func:`position_mask`): the eigenvalue 1 (it must be simple), weights summing to 1;
+* **boundary curve tangent** (:func:`creased_masks`): the crease block's largest eigenvalue after 1
+  (``1 - crease_edge`` = 1/2 for the standard rules), weight 1 on ``a_0`` and -1 on the crease's other neighbour; at a
+  **corner** it is double, and the two masks are the two boundary curves' tangents (weight 1 on ``a_0``, resp. ``a_k``);
 * **cross tangent** (one per sector at a crease): the largest eigenvalue of the sector's block, the surface's
   tangent across the boundary curve, weight 1 on the first point of the sector where it is not zero;
-* at a **dart** or a semi-sharp crease (no block structure): the two largest eigenvalues after 1.
+* with no block structure (a dart, a semi-sharp crease: :func:`generic_masks`): the two largest eigenvalues after 1.
 
 The masks are the tangent plane's only if their eigenvalues are *the two subdominant ones*: of every eigenvalue
 of the piece (the whole vertex; one side of a crease: ``C`` and ``Y_s``) except 1, the two of largest modulus, real,
-strictly larger in modulus than the rest (certified in Arb). :attr:`SharpMasks.tangent_plane` says whether that
-holds, and :attr:`SharpMasks.reason` why not.
+strictly larger in modulus than the rest (certified in Arb); each builder returns why not, if not. The question's
+answer for a vertex is :func:`~symdecomp.analysis.masks.sharp_masks`.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import flint
 import sympy as sp
@@ -43,12 +44,12 @@ from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.triangular_eigen import ball_at, merge, separated, submatrix
 from symdecomp.errors import NotApplicableError
-from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import INPUT_LIMITS
 
-__all__ = ["SharpMask", "SharpMasks", "sharp_masks", "MAX_MASK_SYSTEM"]
+__all__ = ["SharpMask", "MAX_MASK_SYSTEM", "ONE", "expanded", "position_mask", "generic_masks", "creased_masks"]
 
-_ONE = flint.fmpq_poly([-1, 1])
+#: The factor ``lambda - 1`` of the eigenvalue 1.
+ONE = flint.fmpq_poly([-1, 1])
 
 
 @dataclass(frozen=True)
@@ -91,24 +92,6 @@ class SharpMask:
                 "in_lambda": None if exact is not None else dict(zip(names, map(str, self.weights)))}
 
 
-@dataclass(frozen=True)
-class SharpMasks:
-    """The limit position and tangent masks of one sharp vertex."""
-
-    scheme: str
-    vertex: object
-    #: The 1-ring points in matrix order (``O, a_0.., b_0..``).
-    names: tuple[str, ...]
-    position: SharpMask
-    tangents: tuple[SharpMask, ...]
-    #: The eigenvalue of largest modulus after 1 over the whole vertex (the subdominant one).
-    subdominant: Eigenvalue
-    #: Whether the tangents' eigenvalues are the two subdominant ones of each piece (certified).
-    tangent_plane: bool
-    #: Why they are, or are not.
-    reason: str
-
-
 def _eigenvector(S: flint.fmpq_mat, rows: tuple[int, ...], value: Eigenvalue, order_first: tuple[int, ...]) -> list:
     """Left eigenvectors of ``S[rows]`` at ``value`` extended by zeros to all of ``S``, pivots first in ``order_first``."""
     local = {r: i for i, r in enumerate(rows)}
@@ -146,13 +129,14 @@ def _check_system(points: int, value: Eigenvalue) -> None:
                                  f"unknowns, more than the {MAX_MASK_SYSTEM} solved exactly here")
 
 
-def _expanded(values) -> list[Eigenvalue]:
+def expanded(values) -> list[Eigenvalue]:
+    """Each value repeated by its multiplicity."""
     return [v for v in values for _ in range(v.multiplicity)]
 
 
 def _top_two(values: list[Eigenvalue]) -> tuple[list[Eigenvalue], str]:
     """The two eigenvalues of largest modulus after a simple 1, and why they are (not) certified the two largest."""
-    rest = _expanded([v for v in merge(values) if v.factor != _ONE])
+    rest = expanded([v for v in merge(values) if v.factor != ONE])
     if len(rest) < 2:
         return rest, f"only {len(rest)} eigenvalue(s) besides 1"
     top = rest[:2]
@@ -163,8 +147,8 @@ def _top_two(values: list[Eigenvalue]) -> tuple[list[Eigenvalue], str]:
     return top, ""
 
 
-def _position(S, values) -> SharpMask:
-    values = [v for v in merge(values) if v.factor == _ONE]
+def position_mask(S, values) -> SharpMask:
+    values = [v for v in merge(values) if v.factor == ONE]
     if not values or values[0].multiplicity != 1:
         raise NotApplicableError(f"1 is not a simple eigenvalue (multiplicity {values[0].multiplicity if values else 0}): "
                                  "no limit position mask is defined")
@@ -189,7 +173,7 @@ def _verdict(values, wanted: list[Eigenvalue], where: str) -> str:
     return f"{where}: {why}" if why else ""
 
 
-def _generic(S, values, names) -> tuple[list[SharpMask], list[str]]:
+def generic_masks(S, values, names) -> tuple[list[SharpMask], list[str]]:
     top, _ = _top_two(values)
     everything = tuple(range(S.nrows()))
     order = everything[1:] + (0,)
@@ -235,9 +219,9 @@ def _cross(S, crease, sector, values, c1, many: bool, curve=None) -> tuple[Sharp
     return mask, _verdict(piece, [c1, mu], f"the surface on {where}" if many else "the vertex")
 
 
-def _creased(S, parts, values, names) -> tuple[list[SharpMask], list[str]]:
+def creased_masks(S, parts, values, names) -> tuple[list[SharpMask], list[str]]:
     crease, sectors = parts[0], parts[1:]
-    own = [v for v in values if v.part == "crease" and v.factor != _ONE]
+    own = [v for v in values if v.part == "crease" and v.factor != ONE]
     order = tuple(i for i in crease.indices if i != 0) + (0,)
     c1 = own[0]
     vectors = _eigenvector(S, crease.indices, c1, order)
@@ -251,33 +235,3 @@ def _creased(S, parts, values, names) -> tuple[list[SharpMask], list[str]]:
         masks += [mask] if mask is not None else []
         reasons += [why] if why else []
     return masks, reasons
-
-
-def sharp_masks(scheme: Scheme, vertex, *, level: int = 0) -> SharpMasks:
-    """The limit position and tangent masks of ``vertex`` (a :class:`~symdecomp.schemes.sector.SharpVertex`) at
-    refinement ``level``, exact (module docstring). Raises :class:`~symdecomp.errors.NotApplicableError` when 1 is
-    not a simple eigenvalue, or a mask is out of reach (module docstring)."""
-    from symdecomp.analysis.triangular_eigen import sharp_values
-
-    scheme = check_scheme(scheme)
-    S, parts, values = sharp_values(scheme, vertex, level=level)
-    names = tuple(vertex.vertex_order())
-    position = _position(S, values)
-    rest = _expanded([v for v in merge(values) if v.factor != _ONE])
-    if not rest:
-        raise NotApplicableError("the matrix has no eigenvalue besides 1: no tangent masks")
-    build = _generic if parts[0].label == "whole" else _creased
-    tangents, reasons = build(S, values, names) if build is _generic else build(S, parts, values, names)
-    if reasons:
-        reason = "; ".join(reasons)
-    else:
-        reason = "the tangents' eigenvalues are the two subdominant ones" + (" on each side" if len(parts) > 2 else "") + \
-            ", real, and strictly larger in modulus than every other eigenvalue but 1 (certified)"
-    shared = [t for t in tangents if t.name.startswith("cross") and t.eigenvalue.key == tangents[0].eigenvalue.key]
-    if shared and not reasons:
-        reason += (f"; the curve tangent and the cross tangent share the eigenvalue {acb_text(shared[0].eigenvalue.ball, 8)} "
-                   "(non-defective): its eigenspace is the tangent plane, and the cross tangent, defined up to adding "
-                   "the curve tangent, is given as the one with equal weights on the two crease neighbours")
-    if not isinstance(S, flint.fmpq_mat):
-        position, tangents = replace(position, generator=S.weight), [replace(m, generator=S.weight) for m in tangents]
-    return SharpMasks(scheme.name, vertex, names, position, tuple(tangents), rest[0], not reasons, reason)

@@ -1,4 +1,4 @@
-"""Exact evaluation of the patches next to a boundary or corner vertex (Stam's method on an open fan).
+"""Stam's sub-patch data of a boundary or corner vertex, exact: the 2-ring's matrix, the sub-patches' rows, the limit.
 
 A boundary vertex ``O`` with ``k`` faces (:meth:`~symdecomp.schemes.sector.SharpVertex.boundary`, or
 tagged as a corner, :meth:`~symdecomp.schemes.sector.SharpVertex.corner`) has ``k`` patches, one per
@@ -26,25 +26,14 @@ control net is the closed 2-ring of the vertex (``K`` points in
   ``k``, ``1/2`` at ``k = 4, 8``), corners at even ``k`` (``1/2``), Loop boundary ``k = 6`` and corners
   ``k = 3, 6`` (``1/2``) have Jordan blocks.
 
-The evaluation at ``(u, v) != (0, 0)`` in face ``s``: the level ``n`` and the sub-patch ``j`` with local
-``(s', t')`` as in the interior (:meth:`~symdecomp.schemes.lattice.Lattice.locate`), then
-``point = b(s', t') . patches[s][j] . A^(n-1) C`` with the regular basis ``b`` (bicubic B-spline, quartic
-box spline). *Matrix powers, not eigenvectors*: ``A`` need not be diagonalisable (it has Jordan blocks
-at some ``k``), and ``A^(n-1) C`` by ``n - 1`` exact products is exact for every ``A``; in float64 it costs
-``n - 1`` products of a ``K x K`` matrix (``n = 60`` at ``u = 2^-60``). At ``(0, 0)`` the point is
-``limit . C``.
+The patches are evaluated from these data by matrix powers, not eigenvectors (``A`` need not be diagonalisable):
+:func:`symdecomp.analysis.evaluation.evaluate`.
 
-With :class:`~fractions.Fraction` control points and parameters the result is exact; with floats it
-is float64 arithmetic on the rounded data.
-
->>> from fractions import Fraction
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> from symdecomp.schemes.sector import SharpVertex
 >>> d = sharp_patch_data(catmull_clark(), SharpVertex.boundary(3, "quad"))
 >>> d.size, len(d.patches), d.limit[0]
 (21, 3, Fraction(2, 3))
->>> evaluate(d, 1, Fraction(1, 2), Fraction(1, 4), [[1]] * d.size)["point"]
-[Fraction(1, 1)]
 """
 
 from __future__ import annotations
@@ -56,9 +45,8 @@ import flint
 
 from symdecomp.algebra.numbers import to_fraction
 from symdecomp.algebra.small_eigen import nullspace
-from symdecomp.algebra.triangle_bezier import bernstein
-from symdecomp.errors import EvaluationError, InternalError, InvalidInputError, NotApplicableError
-from symdecomp.schemes.box_spline import BOX_POINTS, DEGREE, regular_patch
+from symdecomp.errors import InternalError, NotApplicableError
+from symdecomp.schemes.box_spline import BOX_POINTS, regular_patch
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, Lattice
 from symdecomp.schemes.patch import SUBPATCH_CORNERS, TRIANGLE_SUBPATCHES
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -66,12 +54,13 @@ from symdecomp.schemes.sector import SharpVertex, exact_sharp_matrix
 from symdecomp.schemes.sector_patch import check_spline_sharp_rules, sector_point
 from symdecomp.validate import cached, check_type
 
-__all__ = ["SharpPatchData", "sharp_patch_data", "evaluate", "subpatch_points", "limit_mask"]
+__all__ = ["SharpPatchData", "sharp_patch_data", "subpatch_points", "limit_mask", "exact_spectrum"]
 
 
 @dataclass(frozen=True)
 class SharpPatchData:
-    """The exact data that evaluate the ``k`` patches of a boundary or corner vertex (module docstring)."""
+    """The exact data that evaluate the ``k`` patches of a boundary or corner vertex (module docstring;
+    :func:`symdecomp.analysis.evaluation.evaluate` evaluates them)."""
 
     #: The scheme's name (files and reports).
     scheme: str
@@ -211,67 +200,3 @@ def exact_spectrum(rows, size: int) -> tuple[tuple[tuple[int, ...], int, int], .
         _, rank = value.rref()
         out.append((coeffs, e, (size - rank) // q.degree()))
     return tuple(sorted(out, key=lambda f: (len(f[0]), f[0], f[1])))
-
-
-def _basis(lat: Lattice, s, t, ds: int, dt: int) -> list:
-    """The regular basis (or a derivative) at one local point, in the arithmetic of ``s`` and ``t``."""
-    if lat.handled('the regular basis', BICUBIC, BOX_SPLINE) == BICUBIC:
-        from symdecomp.analysis.evaluation import bspline_basis
-
-        bs, bt = bspline_basis(s, ds), bspline_basis(t, dt)
-        return [bs[a] * bt[b] for b in range(4) for a in range(4)]
-    from symdecomp.algebra.triangle_bezier import bezier_derivative
-
-    out = []
-    for net in regular_patch().coefficients:
-        net, degree = list(net), DEGREE
-        for direction, times in (("u", ds), ("v", dt)):
-            for _ in range(times):
-                net, degree = bezier_derivative(net, degree, direction), degree - 1
-        b = bernstein(degree, s, t)
-        out.append(sum((c * x for c, x in zip(net, b)), 0 * s))
-    return out
-
-
-def _apply(rows, points: list) -> list:
-    d = len(points[0])
-    return [[sum((w * points[c][i] for c, w in row.items()), 0 * points[0][i]) for i in range(d)] for row in rows]
-
-
-def _check_parameters(data: SharpPatchData, face, u, v, points) -> list:
-    if isinstance(face, bool) or not isinstance(face, int) or not 0 <= face < data.faces:
-        raise InvalidInputError(f"face must be an integer from 0 to {data.faces - 1}, got {face!r:.40}")
-    for name, x in (("u", u), ("v", v)):
-        if isinstance(x, bool) or not isinstance(x, (int, float, Fraction)) or not 0 <= x <= 1:
-            raise EvaluationError(f"{name} must be a number in [0, 1], got {x!r:.40}")
-    if not data.lattice.in_domain(u, v):
-        raise EvaluationError(f"parameters of a {data.lattice} patch must satisfy u + v <= 1, got ({u}, {v})")
-    points = [list(p) for p in points] if hasattr(points, "__iter__") else None
-    if not points or len(points) != data.size or len({len(p) for p in points}) != 1 or not points[0]:
-        raise InvalidInputError(f"control points: need {data.size} points of one dimension d >= 1 (the closed 2-ring)")
-    return points
-
-
-def evaluate(data: SharpPatchData, face: int, u, v, points) -> dict:
-    """``{"point", "du", "dv"}`` of patch ``face`` at ``(u, v)`` from the ``K`` control ``points`` (each a sequence).
-
-    Exact with Fractions (data, points and parameters), float64 with floats. At ``(0, 0)`` the point is the
-    limit position and the derivatives are ``None`` (the parametrization does not define them there).
-    """
-    check_type(data, SharpPatchData, "data")
-    points = _check_parameters(data, face, u, v, points)
-    if u == 0 and v == 0:
-        return {"point": _apply([dict(enumerate(data.limit))], points)[0], "du": None, "dv": None}
-    lat, level = data.lattice, 1
-    while lat.level_measure(u, v, None) * 2 <= 1:
-        u, v, level = u * 2, v * 2, level + 1
-    for _ in range(level - 1):
-        points = _apply(data.matrix, points)
-    j, s, t, sign = lat.locate(2 * u, 2 * v)
-    net = _apply(data.patches[face][j], points)
-    out = {}
-    for key, (ds, dt) in (("point", (0, 0)), ("du", (1, 0)), ("dv", (0, 1))):
-        b = _basis(lat, s, t, ds, dt)
-        scale = (2**level * sign) ** (ds + dt)
-        out[key] = [sum((bl * p[i] for bl, p in zip(b, net)), 0 * net[0][i]) * scale for i in range(len(net[0]))]
-    return out

@@ -1,7 +1,7 @@
 """The leading eigenvalues of a boundary, crease or corner vertex from its blocks, in O(log k) per vertex.
 
 Zorin's test at a sharp vertex (:mod:`symdecomp.verify.c1_sharp_blocks`) reads only the largest eigenvalues: ``1``,
-``lambda_1``, ``lambda_2`` and a bound of all the others. :func:`~symdecomp.analysis.sharp_structural.structural_values`
+``lambda_1``, ``lambda_2`` and a bound of all the others. :func:`~symdecomp.analysis.block_values.structural_values`
 gives every value (O(k) blocks); here the crease block, the last modes and the sine blocks ``j <= head`` are read
 exactly as there (equal values joined exactly), and the sine blocks ``j > head`` are bounded together. Their eigenvalues
 are the roots of ``x^2 - t(c) x + d(c)`` (the block's trace and determinant, polynomials in ``c = cos(pi j/k)`` and
@@ -25,8 +25,8 @@ from dataclasses import dataclass
 
 import flint
 
+from symdecomp.analysis.block_values import block_values, checked_polynomials, eval_arb, layout, poly_terms
 from symdecomp.analysis.eigenvalue import Eigenvalue
-from symdecomp.analysis.sharp_structural import _checked_polynomials, _eval_arb, _poly_terms, block_values, layout
 from symdecomp.schemes.scheme import check_scheme
 
 __all__ = ["LeadingValues", "leading_values", "HEAD", "MAX_PIECES"]
@@ -56,8 +56,8 @@ def _target(values: list[Eigenvalue]):
 
 
 def _piece_bound(terms: tuple, quad: bool, c, ck):
-    t = _eval_arb(terms[0], c, ck)
-    bound = abs(t) if not quad else abs(t) / 2 + abs(t * t / 4 - _eval_arb(terms[1], c, ck)).sqrt()
+    t = eval_arb(terms[0], c, ck)
+    bound = abs(t) if not quad else abs(t) / 2 + abs(t * t / 4 - eval_arb(terms[1], c, ck)).sqrt()
     return flint.arb(bound.upper())
 
 
@@ -65,7 +65,7 @@ def tail_bound(polys: tuple, k: int, head: int, target, prec: int = 128):
     """An upper bound of ``|x|`` over the eigenvalues of the sine blocks ``j = head+1..k-1`` of a sector of ``k`` faces
     (module docstring), refined until it is below ``target`` or :data:`MAX_PIECES` pieces are spent."""
     tr, det, quad = polys
-    terms = (_poly_terms(tr, k), _poly_terms(det, k))
+    terms = (poly_terms(tr, k), poly_terms(det, k))
     with flint.ctx.workprec(prec):
         ck = flint.arb.cos_pi_fmpq(flint.fmpq(1, k))
         top = flint.arb(flint.arb.cos_pi_fmpq(flint.fmpq(head + 1, k)).upper())
@@ -84,13 +84,13 @@ def tail_bound(polys: tuple, k: int, head: int, target, prec: int = 128):
 
 def leading_values(scheme, vertex, *, head: int = HEAD, prec: int = 256) -> LeadingValues:
     """The leading eigenvalues of a boundary, crease or corner vertex (module docstring); refused
-    (:class:`~symdecomp.errors.NotApplicableError`) where :func:`~symdecomp.analysis.sharp_structural.structural_values` is."""
+    (:class:`~symdecomp.errors.NotApplicableError`) where :func:`~symdecomp.analysis.block_values.structural_values` is."""
     scheme = check_scheme(scheme)
     lay = layout(scheme, vertex)
     values = block_values(scheme, lay, prec, head)
     target, tail = _target(values), None
     for k in lay.sectors:
         if k - 1 > head:
-            bound = tail_bound(_checked_polynomials(scheme), k, head, target)
+            bound = tail_bound(checked_polynomials(scheme), k, head, target)
             tail = bound if tail is None or bound > tail else tail
     return LeadingValues(tuple(values), tail, head)

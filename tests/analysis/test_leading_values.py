@@ -11,8 +11,8 @@ import flint
 import pytest
 
 import symdecomp as sd
-from symdecomp.analysis.sharp_leading import HEAD, leading_values, tail_bound
-from symdecomp.analysis.sharp_structural import _checked_polynomials, structural_values
+from symdecomp.analysis.block_values import checked_polynomials, structural_values
+from symdecomp.analysis.leading_values import HEAD, leading_values, tail_bound
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
 
@@ -58,7 +58,7 @@ def test_the_tail_is_below_lambda_2_at_many_faces(name):
 
 def test_the_tail_bound_is_refined_only_as_far_as_needed():
     # a target above every value: one piece suffices; the bound is then the interval's, above the true maximum
-    polys = _checked_polynomials(SCHEMES["cc"])
+    polys = checked_polynomials(SCHEMES["cc"])
     coarse = tail_bound(polys, 50, HEAD, flint.arb(2))
     fine = tail_bound(polys, 50, HEAD, flint.arb("0.6"))
     truth = max((abs(v.ball) for v in structural_values(SCHEMES["cc"], sd.SharpVertex.boundary(50, "quad"))[0]

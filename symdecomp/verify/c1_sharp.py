@@ -97,7 +97,7 @@ from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sig
 from symdecomp.verify.c1 import C1Result, box_nets, c1_test, place_text
 from symdecomp.verify.c1_sharp_ring import irregular_rows, ring_faces, wide_arcs, wide_nets
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
-from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "SectorFinding", "ring_nets",
@@ -219,7 +219,7 @@ def _spectral(sm) -> tuple[SpectralResult, list]:
             return SpectralResult(k, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {ball_text(e[0])} is not shown positive: "
                                   "the test covers positive lambda_1, lambda_2 only"), top
     gap = float_down(abs(top[1][0]).lower() - abs(third[0]).upper())
-    sub = Eigen(top[0][0], 0, 1)
+    sub = block_root(top[0][0], 0, 1)
     return SpectralResult(k, C1Verdict.C1, f"lambda_1 = {lam[0]}, lambda_2 = {lam[1]}, real, gap >= {round_down(gap)}",
                           sub, gap, float(abs(third[0]).upper())), top
 

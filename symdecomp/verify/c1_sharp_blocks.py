@@ -59,7 +59,7 @@ from symdecomp.verify.c1_sharp import SectorFinding, SharpC1Result, _curve_eigen
 from symdecomp.verify.c1_sharp_fourier import applies, fourier_map
 from symdecomp.verify.c1_sharp_map import MAP_METHOD, map_from_blocks
 from symdecomp.verify.c1_sharp_spectrum import sector_matrices
-from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["c1_sharp_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD"]
@@ -181,7 +181,7 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
                                   "and positive"), picks
     gap = float_down(second.lower() - third)
     return SpectralResult(k, C1Verdict.C1, f"lambda_1 = {lam[0]}, lambda_2 = {lam[1]}, real, gap >= {round_down(gap)}",
-                          Eigen(top[0].ball, 0, 1), gap, float(third)), picks
+                          block_root(top[0].ball, 0, 1), gap, float(third)), picks
 
 
 def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:

@@ -51,31 +51,14 @@ from symdecomp.verify.c1_sharp import SharpC1Result, arc_sweeps, jacobian_sign, 
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding, closed_fan_condition
 
-__all__ = ["DART_METHOD", "DartSpectrum", "DartMap", "c1_dart_test", "dart_spectrum", "dart_vectors", "dart_map"]
+__all__ = ["DART_METHOD", "DartSpectrum", "c1_dart_test", "dart_spectrum", "dart_vectors", "dart_map"]
 
 #: The method, as reported with each verdict.
 DART_METHOD = ("Reif's test on the dart's closed fan: exact spectrum of the 1-ring matrix and certified 2-ring remainder; "
                "Jacobian of the ring's bicubic sub-patches (phantom points at the sharp edge) in Bernstein-Bezier form "
                "(Arb, de Casteljau); winding number of the ring's boundary")
-
-
-@dataclass(frozen=True)
-class DartMap:
-    """What the characteristic map's part of the test found."""
-
-    #: ``c1``, ``not-c1`` or ``undecided``.
-    verdict: C1Verdict
-    #: Why, in words.
-    reason: str
-    #: The Jacobian's certified sign (``None``: not certified).
-    sign: int | None = None
-    #: A lower bound of ``|J|`` on the ring, when certified.
-    bound: float | None = None
-    #: The subdivision depth the sign needed.
-    depth: int | None = None
-    #: The winding number of the ring's inner boundary around the origin, when certified.
-    winding: int | None = None
 
 
 @dataclass(frozen=True)
@@ -177,37 +160,20 @@ def _chi(sm, vectors) -> dict:
     return {lab: flint.acb(fine[0][i], fine[1][i]) for i, lab in enumerate(sm.fine_labels)}
 
 
-def _winding(total) -> int | None:
-    """The integer ``w`` with ``total = 2 pi w`` (a closed curve's swept argument), or ``None`` if not isolated."""
-    if total is None:
-        return None
-    ratio = total / (2 * flint.arb.pi())
-    w = round(float(ratio.mid()))
-    return w if abs(ratio - w) < 0.5 else None
-
-
-def dart_map(sm, vectors, *, max_depth: int = 6) -> DartMap:
+def dart_map(sm, vectors, *, max_depth: int = 6) -> SectorFinding:
     """Conditions 2 and 3 (module docstring) for the dart sector ``sm`` and two real eigenvectors (``vectors``)."""
     nets = ring_nets(sm, _chi(sm, vectors))
     cert = jacobian_sign(sm, nets, max_depth)
     if cert.status == "changes":
-        return DartMap(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, face "
-                       f"{cert.where[0] // (len(nets) // sm.k)}): it is not regular", depth=cert.depth)
+        return SectorFinding(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, "
+                             f"face {cert.where[0] // (len(nets) // sm.k)}): it is not regular", depth=cert.depth)
     if cert.status == "undecided":
-        return DartMap(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}",
-                       depth=cert.depth)
+        return SectorFinding(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}",
+                             depth=cert.depth)
     sign = 1 if cert.status == "positive" else -1
-    inner, outer = (_winding(t) for t in arc_sweeps(sm, nets))
-    found = dict(sign=sign, bound=cert.lower_bound, depth=cert.depth)
-    if inner is None or outer is None or inner != outer:
-        return DartMap(C1Verdict.UNDECIDED, "the winding numbers of the ring's boundary curves are not certified equal", **found)
-    regular = f"the characteristic map is regular (|J| >= {round_down(cert.lower_bound)})"
-    if abs(inner) != 1:
-        return DartMap(C1Verdict.NOT_C1, f"{regular} but its ring winds {abs(inner)} times around O: not injective",
-                       winding=inner, **found)
-    if inner != sign:  # a regular map keeps the orientation: its boundary winds with the Jacobian's sign
-        return DartMap(C1Verdict.UNDECIDED, f"{regular} but its ring winds against the Jacobian's sign", winding=inner, **found)
-    return DartMap(C1Verdict.C1, f"{regular} and its ring winds once around O: injective", winding=inner, **found)
+    verdict, why, winding = closed_fan_condition(sign, arc_sweeps(sm, nets))
+    reason = why if winding is None else f"the characteristic map is regular (|J| >= {round_down(cert.lower_bound)}) {why}"
+    return SectorFinding(verdict, reason, sign=sign, bound=cert.lower_bound, depth=cert.depth, winding=winding)
 
 
 def _check_aliases(sm) -> None:
@@ -225,7 +191,7 @@ def _check_aliases(sm) -> None:
             raise NotApplicableError(f"the dart's refinement does not identify ray 0 with ray {sm.k} at distance {u}")
 
 
-def _result(scheme, n: int, spectrum: DartSpectrum, found: DartMap | None, max_depth: int, prec: int) -> SharpC1Result:
+def _result(scheme, n: int, spectrum: DartSpectrum, found: SectorFinding | None, max_depth: int, prec: int) -> SharpC1Result:
     verdict = spectrum.verdict if found is None else found.verdict
     reason = spectrum.reason if found is None else f"{spectrum.reason}; {found.reason}"
     lambdas = tuple(float(v.ball.real.mid()) for v in spectrum.pair) or None
@@ -252,7 +218,7 @@ def c1_dart_test(scheme, n: int, *, max_depth: int = 6, prec: int = 64) -> Sharp
     for bits in (prec, 2 * prec):
         with flint.ctx.workprec(bits):
             vectors = dart_vectors(sm, spectrum)
-            found = (DartMap(C1Verdict.UNDECIDED, "an eigenvector is not certified") if vectors is None
+            found = (SectorFinding(C1Verdict.UNDECIDED, "an eigenvector is not certified") if vectors is None
                      else dart_map(sm, vectors, max_depth=max_depth))
         if found.verdict is not C1Verdict.UNDECIDED:
             return _result(scheme, n, spectrum, found, max_depth, bits)

@@ -42,26 +42,9 @@ at every boundary to 10,000 faces tried). The argument below holds with that rin
 at 4). Alone (the part
 of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave corner C1.
 
-**Injectivity of an open sector** (the argument used here, in place of the interior winding number).
-Let ``K`` be the closed sector minus ``O`` and ``R`` one ring of it (a topological disk bounded by the
-inner arc ``g_in`` from ray 0 to ray ``k``, the outer arc ``g_out``, and the two ray segments).
-``chi(x / 2) = A chi(x)`` with ``A = diag(lambda_1, lambda_2)``. On each sharp ray the boundary values of an
-eigenvector are exactly linear along the ray and 0 at ``O`` (they lie in the kernel of ``C - 1/2`` for the
-curve block ``C``, or vanish; checked exactly), so ``chi`` maps each ray onto a segment of a ray from the
-origin, in a direction ``d_0`` or ``d_k`` (certified non-zero). Suppose ``chi`` is regular on ``R`` with
-Jacobian sign ``s``, and let ``Delta`` be the argument swept by ``chi(g_in)`` (rigorous: Bezier pieces in
-half-planes, :func:`~symdecomp.verify.bezier.curve_angle`). The closed curve ``chi(dR)`` sweeps
-``Delta_out - Delta_in`` (the ray segments sweep nothing); when that is certified ``0``, ``chi`` has no zero
-in ``R`` (each zero of a regular map counts ``s``). Then ``F = log chi`` has a continuous branch on ``K``
-(simply connected), a local homeomorphism mapping ray 0 onto the line ``arg = a_0`` and ray ``k`` onto
-``arg = a_0 + Delta`` (``|chi|`` runs from 0 to infinity along each ray, monotone by regularity). ``F`` is
-proper, and ``arg chi`` is bounded on ``K`` (``A`` keeps every quadrant), so over each of the two outer
-half-planes ``F`` is a covering with a constant number of sheets which is 0 far away: nothing of ``K`` maps
-outside the strip between the lines. Over the open strip ``F`` is a covering of a simply connected set,
-crossing a line adds one sheet for the boundary points, so ``F`` is a homeomorphism of ``K`` onto the strip
-when ``sign(Delta) = s`` (near ray 0 the inside of ``K`` lies on the strip's side). Hence ``chi`` is
-injective iff ``0 < s Delta < 2 pi``; ``s Delta < 0`` means the sector folds over its boundary (an inner
-point and a boundary point share an image) and ``s Delta > 2 pi`` means it overlaps itself: not injective.
+**Injectivity of an open sector**: ``chi`` is injective iff ``0 < s Delta < 2 pi``, ``s`` the Jacobian's sign and
+``Delta`` the argument swept by the image of the ring's inner arc, once the ring's boundary is certified to wind 0 times
+around the origin (the argument: :mod:`.sector_injectivity`).
 
 **Crease vertices** (infinitely sharp) are two sectors that do not read each other's points (checked
 exactly on the matrix): each is tested as above and both must pass. A semi-sharp crease is smooth from
@@ -99,9 +82,10 @@ from symdecomp.verify.c1_sharp_ring import irregular_rows, ring_faces, wide_arcs
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
 
-__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "SectorFinding", "ring_nets",
-           "jacobian_sign", "arc_sweeps", "injective_condition"]
+__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "ring_nets", "jacobian_sign",
+           "arc_sweeps", "deciding_sector"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -139,24 +123,6 @@ def _describe(vertex: SharpVertex) -> str:
     if len(vertex.sectors) == 2:
         return f"crease {vertex.sectors[0]},{vertex.sectors[1]}"
     return "sharp vertex, sectors " + ",".join(map(str, vertex.sectors))
-
-
-@dataclass(frozen=True)
-class SectorFinding:
-    """What the test found in one sector (before it becomes a result)."""
-
-    verdict: C1Verdict
-    reason: str
-    spectral: SpectralResult
-    lambdas: tuple | None = None
-    sign: int | None = None
-    bound: float | None = None
-    depth: int | None = None
-    opening: float | None = None
-    #: How the map was certified, where a route other than the dense test's did it (``None``: the caller's method).
-    method: str | None = None
-    #: The blocks' verdict is final (an exact multiple subdominant eigenvalue): the dense test would find the same.
-    final: bool = False
 
 
 def _curve_eigenvalues(sm):
@@ -334,34 +300,6 @@ def tangent_condition(roots, problem: str | None, picks) -> tuple[C1Verdict, str
                               + (" and the characteristic map collapses the sharp rays to O" if maybe == 0 else ""))
 
 
-def injective_condition(sm, vertex, sign, dirs, sweeps) -> tuple[C1Verdict, str, float | None]:
-    """Conditions 4 and 5 from the certified sweeps ``(Delta_in, Delta_out)`` and the Jacobian's ``sign`` (module docstring)."""
-    din, dout = sweeps
-    if din is None or dout is None:
-        return C1Verdict.UNDECIDED, "the argument swept by the ring's arcs is not certified (a curve may pass near 0)", None
-    two_pi = 2 * flint.arb.pi()
-    if not abs(dout - din) < two_pi:
-        return C1Verdict.UNDECIDED, "the ring's boundary is not shown to wind 0 times around O (a zero of chi in the ring?)", None
-    turn = din * sign
-    opening = float((turn / flint.arb.pi()).mid())
-    text = f"the sector's image opens by {ball_text(turn / flint.arb.pi(), 5)} pi (in the Jacobian's orientation)"
-    if turn < 0:
-        return C1Verdict.NOT_C1, f"{text} against the Jacobian's sign {sign}: the sector folds over its boundary", opening
-    if turn > two_pi:
-        return C1Verdict.NOT_C1, f"{text}, more than a full turn: the characteristic map overlaps itself", opening
-    if not (turn > 0 and turn < two_pi):
-        return C1Verdict.UNDECIDED, f"{text}: not separated from 0 or 2 pi", opening
-    if vertex.corner and vertex.angle is not None and vertex.angle != sp.pi:
-        concave = bool(vertex.angle > sp.pi)
-        if turn.contains(flint.arb.pi()):
-            return C1Verdict.UNDECIDED, f"{text}: convex or concave not decided", opening
-        if concave != bool(turn > flint.arb.pi()):
-            want, got = ("concave", "convex") if concave else ("convex", "concave")
-            return C1Verdict.NOT_C1, (f"{text}: a {got} sector, but the corner is {want} (angle {vertex.angle}); the surface "
-                                      "folds there (Biermann-Levin-Zorin's corner types)"), opening
-    return C1Verdict.C1, f"{text} and winds once between the sharp rays: injective", opening
-
-
 def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
     sm = sector_matrices(scheme, vertex, sector)
     try:
@@ -434,16 +372,21 @@ def c1_sharp_test(scheme, vertex: SharpVertex, *, max_depth: int = 6, prec: int 
     return result
 
 
+def deciding_sector(vertex: SharpVertex, found: list[SectorFinding]) -> tuple[SectorFinding, str]:
+    """The finding that decides a vertex (the first of the worst verdict: not C1, undecided, C1) and the vertex's reason
+    (each side's, at a crease)."""
+    order = (C1Verdict.NOT_C1, C1Verdict.UNDECIDED, C1Verdict.C1)
+    key = min(found, key=lambda f: order.index(f.verdict))
+    if len(found) == 1:
+        return key, key.reason
+    return key, "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
+
+
 def _run(scheme, vertex: SharpVertex, max_depth: int, prec: int) -> SharpC1Result:
     with flint.ctx.workprec(prec):
         found = [_sector_test(scheme, vertex, i, max_depth) for i in range(len(vertex.sectors))]
-    order = (C1Verdict.NOT_C1, C1Verdict.UNDECIDED, C1Verdict.C1)
-    verdict = min((f.verdict for f in found), key=order.index)
-    key = next(f for f in found if f.verdict is verdict)
-    if len(found) == 1:
-        reason = key.reason
-    else:
-        reason = "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
+    key, reason = deciding_sector(vertex, found)
+    verdict = key.verdict
     return SharpC1Result(
         n=vertex.faces, scheme=scheme.name, verdict=verdict, reason=reason, spectral=key.spectral, jacobian_sign=key.sign,
         jacobian_lower_bound=key.bound, subdivision_depth=key.depth, max_depth=max_depth, precision=prec,

@@ -55,12 +55,13 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
-from symdecomp.verify.c1_sharp import SectorFinding, SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, tangent_condition
+from symdecomp.verify.c1_sharp import SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, deciding_sector, tangent_condition
 from symdecomp.verify.c1_sharp_fourier import applies, fourier_map
 from symdecomp.verify.c1_sharp_map import MAP_METHOD, map_from_blocks
 from symdecomp.verify.c1_sharp_spectrum import sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding
 
 __all__ = ["c1_sharp_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD"]
 
@@ -218,13 +219,8 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
 
 
 def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_depth: int) -> SharpC1Result:
-    order = (C1Verdict.NOT_C1, C1Verdict.UNDECIDED, C1Verdict.C1)
-    verdict = min((f.verdict for f in found), key=order.index)
-    key = next(f for f in found if f.verdict is verdict)
-    if len(found) == 1:
-        reason = key.reason
-    else:
-        reason = "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
+    key, reason = deciding_sector(vertex, found)
+    verdict = key.verdict
     if verdict is C1Verdict.UNDECIDED and not all(f.final or f.verdict is C1Verdict.C1 for f in found):
         reason += f" (the dense test reads sectors of at most {MAP_FACES} faces)"
     mapped = key.sign is not None or key.depth is not None

@@ -15,7 +15,7 @@ decided on ``g + 1`` faces only (``g`` next to ray 0 and one face ``g`` between)
   while they are built (each value read is recorded), not assumed;
 * **the sweeps**: the argument swept by a curve does not change under a rotation, and a mirrored curve run backwards
   sweeps the same angle, so ``Delta = 2 sum_(s < g) Delta_s + (k - 2 g) Delta_g`` for the inner and the outer arc;
-  then injectivity and the corner type as in :func:`~symdecomp.verify.c1_sharp.injective_condition`.
+  then injectivity and the corner type as in :func:`~symdecomp.verify.sector_injectivity.injective_condition`.
 
 With ``k <= 2 g + 1`` every face is checked one by one (the same nets, no symmetry used). The values come from the
 closed forms evaluated at ``tau = tan(pi/(2 k))`` in Arb: O(1) work per ``k``, where the dense route's eigenvectors
@@ -43,13 +43,14 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.bezier import curve_angle
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp import SectorFinding, injective_condition, jacobian_sign
+from symdecomp.verify.c1_sharp import jacobian_sign
 from symdecomp.verify.c1_sharp_map import block_parts
 from symdecomp.verify.c1_sharp_modes import WINDOW, SectorModes, sector_modes
 from symdecomp.verify.c1_sharp_ring import ring_faces, wide_arcs, wide_nets
 from symdecomp.verify.c1_sharp_spectrum import mirror_label
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
 
 __all__ = ["fourier_map", "FOURIER_METHOD", "applies", "REACH"]
 

@@ -27,10 +27,11 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
-from symdecomp.verify.c1_sharp import SectorFinding, sector_map
+from symdecomp.verify.c1_sharp import sector_map
 from symdecomp.verify.c1_sharp_spectrum import sector_matrices, sector_parts
 from symdecomp.verify.c1_spectrum import SpectralResult
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding
 
 __all__ = ["block_parts", "map_from_blocks", "MAP_METHOD"]
 

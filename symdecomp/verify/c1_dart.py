@@ -47,11 +47,12 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import check_spline_sharp_rules
 from symdecomp.validate import check_bits, check_depth, check_valence
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp import SharpC1Result, arc_sweeps, jacobian_sign, ring_nets
+from symdecomp.verify.c1_sharp import SharpC1Result
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, closed_fan_condition
+from symdecomp.verify.sector_ring import arc_sweeps, jacobian_sign, ring_nets
 
 __all__ = ["DART_METHOD", "DartSpectrum", "c1_dart_test", "dart_spectrum", "dart_vectors", "dart_map"]
 

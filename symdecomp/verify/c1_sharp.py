@@ -36,7 +36,7 @@ statements only: the standard rules fail at boundary vertices with many faces (h
 and at concave corners; with BLZ's near-edge rule the spectral conditions hold at every boundary ``k`` tried (1 to 16).
 Where that rule is not the smooth one it makes the points next to ``O`` at every level, so the ring's patches there are
 not splines (:func:`~symdecomp.schemes.sector_patch.modified_edges`); the map is then certified on the wider ring of
-:mod:`.c1_sharp_ring` (level-1 distance 2 to 4, genuine splines, checked exactly), and is C1 at every boundary ``k``
+:mod:`.sector_ring` (level-1 distance 2 to 4, genuine splines, checked exactly), and is C1 at every boundary ``k``
 tried and at convex corners (past 8 faces from BLZ's subdominant eigenvectors in closed form, :mod:`.c1_sharp_fourier`,
 at every boundary to 10,000 faces tried). The argument below holds with that ring as ``R`` (inner arc at level-1 distance 2, outer
 at 4). Alone (the part
@@ -67,25 +67,19 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from symdecomp.algebra.triangle_bezier import bezier_indices
-from symdecomp.analysis.characteristic import SUBPATCH_FACES, TRIANGLES, triangle_patch_points
 from symdecomp.errors import NotApplicableError
-from symdecomp.schemes.box_spline import DEGREE
-from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, modified_edges, sector_net
+from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, modified_edges
 from symdecomp.validate import check_bits, check_depth, check_type
-from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net, triangle_jacobian_net
-from symdecomp.verify.c1 import C1Result, box_nets, c1_test, place_text
-from symdecomp.verify.c1_sharp_ring import irregular_rows, ring_faces, wide_arcs, wide_nets
+from symdecomp.verify.c1 import C1Result, c1_test, place_text
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
+from symdecomp.verify.sector_ring import arc_sweeps, irregular_rows, jacobian_sign, ring_faces, ring_nets, wide_nets
 
-__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "ring_nets", "jacobian_sign",
-           "arc_sweeps", "deciding_sector"]
+__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "deciding_sector"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -217,57 +211,10 @@ def _chi(sm, picks):
     for r in (0, sm.k):
         d = flint.acb(vecs[0][index[(r, 1, 0)]], vecs[1][index[(r, 1, 0)]])
         dirs.append(d)
-        for j in range(1, 6):  # to distance 5: the wide ring's nets (:mod:`.c1_sharp_ring`) read that far
+        for j in range(1, 6):  # to distance 5: the wide ring's nets (:mod:`.sector_ring`) read that far
             chi[(r, j, 0)] = d * j / 2
     chi[ORIGIN] = flint.acb(0)
     return chi, tuple(dirs)
-
-
-def ring_nets(sm, chi) -> list:
-    """The Bezier nets (complex) of the ring's ``3 k`` sub-patches, face by face (quads ``4 x 4``; triangles, 15)."""
-    out = []
-    for s in range(sm.k):
-        if sm.lattice.handled("the sharp ring's nets", BICUBIC, BOX_SPLINE) == BICUBIC:
-            for a, b in SUBPATCH_FACES:
-                pts = [(a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
-                vals = sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__)
-                out.append(bspline_to_bezier([vals[4 * i: 4 * i + 4] for i in range(4)]))
-        else:
-            values = []
-            for t in TRIANGLES:
-                pts = triangle_patch_points(t)
-                values.append(dict(zip(pts, sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__))))
-            out += box_nets(values)
-    return out
-
-
-def jacobian_sign(sm, nets, max_depth: int):
-    """The Jacobian's sign on the ring's nets, certified by de Casteljau subdivision to ``max_depth`` (or where it fails)."""
-    if sm.lattice.handled("the sharp ring's Jacobian", BICUBIC, BOX_SPLINE) == BICUBIC:
-        return certify_sign([jacobian_net([[z.real for z in row] for row in net], [[z.imag for z in row] for row in net])
-                             for net in nets], max_depth)
-    return certify_sign_triangles([triangle_jacobian_net([z.real for z in net], [z.imag for z in net]) for net in nets],
-                                  DEGREE, 2 * max_depth)
-
-
-def arc_sweeps(sm, nets, wide: bool = False):
-    """``(Delta_in, Delta_out)``: the arguments swept by the images of the ring's inner and outer arcs (``None``: not decided)."""
-    inner, outer = wide_arcs(sm, nets) if wide else ([], [])
-    for s in range(0 if wide else sm.k):
-        p0, p1, p2 = nets[3 * s: 3 * s + 3]
-        if sm.lattice.handled("the sharp ring's arcs", BICUBIC, BOX_SPLINE) == BICUBIC:
-            inner += [[p0[0][j] for j in range(4)], [p2[i][0] for i in range(3, -1, -1)]]
-            outer += [[p0[3][j] for j in range(4)], [p1[3][j] for j in range(4)], [p1[i][3] for i in range(3, -1, -1)],
-                      [p2[i][3] for i in range(3, -1, -1)]]
-        else:
-            pos = {i: n for n, i in enumerate(bezier_indices(DEGREE))}
-            inner.append([p1[pos[(DEGREE - t, 0, t)]] for t in range(DEGREE + 1)])
-            outer += [[p[pos[(0, DEGREE - t, t)]] for t in range(DEGREE + 1)] for p in (p0, p2)]
-    totals = []
-    for curves in (inner, outer):
-        angles = [curve_angle(c) for c in curves]
-        totals.append(None if any(a is None for a in angles) else sum(angles, flint.arb(0)))
-    return tuple(totals)
 
 
 def _tangent(sm, picks) -> tuple[C1Verdict, str] | None:

@@ -7,11 +7,11 @@ Where the blocks (:mod:`.c1_sharp_blocks`) prove ``lambda_1 = lambda_2 = 1/2``, 
 ``chi = Re v + i Im v = v`` is, on the faces between, the map of one face turned by ``omega^s``, and next to ray ``k``
 the mirror image ``chi(P p) = -conj(chi(p))`` of the map next to ray 0. Conditions 3-5 of :mod:`.c1_sharp` are then
 decided on ``g + 1`` faces only (``g`` next to ray 0 and one face ``g`` between), in Arb, with the wide ring of
-:mod:`.c1_sharp_ring` (BLZ's modified edges make the level-1 patches at ``O`` non-splines):
+:mod:`.sector_ring` (BLZ's modified edges make the level-1 patches at ``O`` non-splines):
 
 * **regular**: a rotation keeps the Jacobian; the mirror reverses the domain's and the image's orientation, so it keeps
   the Jacobian's sign and modulus. The Jacobian's Bezier coefficients of the ``g + 1`` faces' nets decide every face
-  (:func:`~symdecomp.verify.c1_sharp.jacobian_sign`). That face ``g``'s nets read Fourier values only is *checked*
+  (:func:`~symdecomp.verify.sector_ring.jacobian_sign`). That face ``g``'s nets read Fourier values only is *checked*
   while they are built (each value read is recorded), not assumed;
 * **the sweeps**: the argument swept by a curve does not change under a rotation, and a mirrored curve run backwards
   sweeps the same angle, so ``Delta = 2 sum_(s < g) Delta_s + (k - 2 g) Delta_g`` for the inner and the outer arc;
@@ -43,14 +43,13 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.bezier import curve_angle
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp import jacobian_sign
 from symdecomp.verify.c1_sharp_map import block_parts
 from symdecomp.verify.c1_sharp_modes import WINDOW, SectorModes, sector_modes
-from symdecomp.verify.c1_sharp_ring import ring_faces, wide_arcs, wide_nets
 from symdecomp.verify.c1_sharp_spectrum import mirror_label
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
+from symdecomp.verify.sector_ring import jacobian_sign, ring_faces, wide_arcs, wide_nets
 
 __all__ = ["fourier_map", "FOURIER_METHOD", "applies", "REACH"]
 

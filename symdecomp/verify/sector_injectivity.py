@@ -26,7 +26,7 @@ crossing a line adds one sheet for the boundary points, so ``F`` is a homeomorph
 when ``sign(Delta) = s`` (near ray 0 the inside of ``K`` lies on the strip's side). Hence ``chi`` is
 injective iff ``0 < s Delta < 2 pi``; ``s Delta < 0`` means the sector folds over its boundary (an inner
 point and a boundary point share an image) and ``s Delta > 2 pi`` means it overlaps itself: not injective.
-With a ring past modified edges (:mod:`.c1_sharp_ring`) the argument holds with that ring as ``R``.
+With a ring past modified edges (:mod:`.sector_ring`) the argument holds with that ring as ``R``.
 
 **A closed fan** (U. Reif, *A unified approach to subdivision algorithms near extraordinary vertices*, CAGD 12, 1995,
 as at an interior vertex): a regular ``chi`` is injective iff the image of the ring's inner boundary winds once around

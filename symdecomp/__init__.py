@@ -138,7 +138,8 @@ nothing else.
                    valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``; the part that dominates on fine
                    rings for every valence, ``dominance_every_n``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``; injectivity of a sector's map, open
-                   or a closed fan, and what a sector test found, ``sector_injectivity``; its spectrum
+                   or a closed fan, and what a sector test found, ``sector_injectivity``; the boundary curves'
+                   tangents in the tangent plane, ``boundary_tangent``; its spectrum
                    by mirror blocks ``c1_sharp_spectrum``, the ring of its characteristic map (its nets, at O or past BLZ's modified edges,
                    its Jacobian and arcs) ``sector_ring``; with many faces, the spectral conditions from the blocks, ``c1_sharp_blocks``, and the
                    characteristic map from the eigenvectors in the parts the blocks name, ``c1_sharp_map``; BLZ's

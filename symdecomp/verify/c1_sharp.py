@@ -72,6 +72,7 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, modified_edges
 from symdecomp.validate import check_bits, check_depth, check_type
+from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
 from symdecomp.verify.c1 import C1Result, c1_test, place_text
 from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
@@ -79,7 +80,7 @@ from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
 from symdecomp.verify.sector_ring import arc_sweeps, irregular_rows, jacobian_sign, ring_faces, ring_nets, wide_nets
 
-__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "deciding_sector"]
+__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "sector_map", "deciding_sector"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -117,33 +118,6 @@ def _describe(vertex: SharpVertex) -> str:
     if len(vertex.sectors) == 2:
         return f"crease {vertex.sectors[0]},{vertex.sectors[1]}"
     return "sharp vertex, sectors " + ",".join(map(str, vertex.sectors))
-
-
-def _curve_eigenvalues(sm):
-    """The exact eigenvalues of the boundary curve block, or a reason why its structure is not the one the test uses."""
-    labels = [lab for lab in sm.labels if lab == ORIGIN or (lab[2] == 0 and lab[0] in (0, sm.k))]
-    index = {lab: i for i, lab in enumerate(sm.labels)}
-    ids = [index[lab] for lab in labels]
-    S = sm.matrix
-    if any(S[i, j] != 0 for i in ids for j in range(S.cols) if j not in ids):
-        return None, "the boundary points do not form an invariant curve (their new points read inside points)"
-    C = sp.Matrix([[S[i, j] for j in ids] for i in ids])
-    if not all(e.is_Rational for e in C):
-        return None, "the boundary curve's rules are not rational"
-    kernel = (C - sp.eye(len(ids)) / 2).nullspace()
-    pos = {lab: t for t, lab in enumerate(labels)}
-    for vec in kernel:
-        if vec[pos[ORIGIN]] != 0 or any(vec[pos[(r, 2, 0)]] != 2 * vec[pos[(r, 1, 0)]] for r in (0, sm.k)):
-            return None, "an eigenvector of the boundary curve for 1/2 is not linear along the sharp rays"
-    roots = [sp.Rational(r) for r in sp.roots(C.charpoly().as_expr(), multiple=True) if r.is_Rational]
-    if len(roots) != len(ids):
-        return None, "the boundary curve's eigenvalues are not rational"
-    return sorted(roots, reverse=True), None
-
-
-def _contains(ball: flint.acb, q: sp.Rational) -> bool:
-    """Whether ``q`` may be the eigenvalue in ``ball`` (if not, it certainly is not)."""
-    return ball.contains(flint.acb(flint.fmpq(int(q.p), int(q.q))))
 
 
 def _spectral(sm) -> tuple[SpectralResult, list]:
@@ -217,36 +191,6 @@ def _chi(sm, picks):
     return chi, tuple(dirs)
 
 
-def _tangent(sm, picks) -> tuple[C1Verdict, str] | None:
-    """Condition 2: ``None`` if the boundary curves' tangents may be among the subdominant eigenvectors, else why not.
-
-    ``1/2`` is an eigenvalue of the curve block once per boundary curve (one at a boundary or crease, two at a
-    corner); an eigenvalue certainly not in the curve block has an eigenvector that vanishes on the boundary.
-    """
-    return tangent_condition(*_curve_eigenvalues(sm), picks)
-
-
-def tangent_condition(roots, problem: str | None, picks) -> tuple[C1Verdict, str] | None:
-    """:func:`_tangent` from the boundary curve's eigenvalues ``roots`` (or the ``problem`` why they are not read)."""
-    if problem:
-        raise NotApplicableError(f"the sector test does not apply: {problem}")
-    half = sp.Rational(1, 2)
-    curves = roots.count(half)
-    for value, _, _ in picks:
-        others = [q for q in set(roots) if q != half and _contains(value, q)]
-        if others:
-            return C1Verdict.UNDECIDED, f"lambda = {ball_text(value)} may be the boundary curve's eigenvalue {others[0]}"
-    maybe = sum(1 for value, _, _ in picks if _contains(value, half))
-    if maybe >= curves:
-        return None
-    lam = ", ".join(ball_text(v) for v, _, _ in picks)
-    what = ("the tangent of the boundary curve (eigenvalue 1/2 of the crease rules) is" if curves == 1 else
-            f"the tangents of the {curves} boundary curves (eigenvalue 1/2 of the crease rules, {curves} times) are")
-    return C1Verdict.NOT_C1, (f"{what} not in the tangent plane: of the subdominant eigenvalues {lam}, {maybe} may be 1/2, "
-                              "the others are not eigenvalues of the boundary curves, so their eigenvectors vanish there"
-                              + (" and the characteristic map collapses the sharp rays to O" if maybe == 0 else ""))
-
-
 def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
     sm = sector_matrices(scheme, vertex, sector)
     try:
@@ -255,7 +199,7 @@ def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
         spectral = SpectralResult(sm.k, C1Verdict.UNDECIDED, f"the spectrum is not certified at this precision ({exc})")
         return SectorFinding(C1Verdict.UNDECIDED, spectral.reason, spectral)
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
-    tangent = _tangent(sm, picks) if picks else None
+    tangent = tangent_condition(*curve_eigenvalues(sm), picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:  # decided by lambda_1, lambda_2 alone, even if lambda_2 ties lambda_3
         return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:

@@ -55,7 +55,8 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
-from symdecomp.verify.c1_sharp import SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, deciding_sector, tangent_condition
+from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
+from symdecomp.verify.c1_sharp import SharpC1Result, _describe, c1_sharp_test, deciding_sector
 from symdecomp.verify.c1_sharp_fourier import applies, fourier_map
 from symdecomp.verify.c1_sharp_map import MAP_METHOD, map_from_blocks
 from symdecomp.verify.c1_sharp_spectrum import sector_matrices
@@ -111,7 +112,7 @@ def _window(scheme, lattice, corner: bool) -> _Window:
     norms = [_outer_norm(sm) for sm in matrices]
     if norms[-1] != norms[-2]:
         raise NotApplicableError(f"the outer block's row sums differ at {WINDOW} and {WINDOW + 1} faces ({norms[-2]}, {norms[-1]})")
-    return _Window(max(norms), tuple(_curve_eigenvalues(sm) for sm in matrices[:WINDOW]))
+    return _Window(max(norms), tuple(curve_eigenvalues(sm) for sm in matrices[:WINDOW]))
 
 
 def _undecided(k: int, reason: str) -> SectorFinding:

@@ -139,10 +139,11 @@ nothing else.
                    rings for every valence, ``dominance_every_n``), at boundary, crease and
                    corner vertices by Zorin's conditions per sector (``c1_sharp``; injectivity of a sector's map, open
                    or a closed fan, and what a sector test found, ``sector_injectivity``; the boundary curves'
-                   tangents in the tangent plane, ``boundary_tangent``; its spectrum
-                   by mirror blocks ``c1_sharp_spectrum``, the ring of its characteristic map (its nets, at O or past BLZ's modified edges,
-                   its Jacobian and arcs) ``sector_ring``; with many faces, the spectral conditions from the blocks, ``c1_sharp_blocks``, and the
-                   characteristic map from the eigenvectors in the parts the blocks name, ``c1_sharp_map``; BLZ's
+                   tangents in the tangent plane, ``boundary_tangent``; the sector matrix's certified spectrum and
+                   eigenvectors by its mirror's parts, and the part of each eigenvector the blocks name, ``mirror_parts``;
+                   the ring of its characteristic map (its nets, at O or past BLZ's modified edges, its Jacobian and
+                   arcs), ``sector_ring``; with many faces, the spectral conditions from the blocks and the map from the
+                   eigenvectors in the parts they name, ``c1_sharp_blocks``; BLZ's
                    subdominant eigenvectors in closed form for every k, ``c1_sharp_modes``, and the map from them on a
                    few faces per k, ``c1_sharp_fourier``), at
                    infinitely sharp darts by Reif's test on the closed fan cut by one sharp ray (``c1_dart``); for

@@ -2,7 +2,7 @@
 
 A dart is an interior vertex ``O`` of valence ``n`` where one infinitely sharp edge ends; OpenSubdiv keeps the smooth
 vertex rule at ``O`` and applies the crease rules on the sharp edge. The test works on the dart's 2-ring subdivision
-matrix (the one sector of :func:`~symdecomp.verify.c1_sharp_spectrum.sector_matrices` for
+matrix (the one sector of :func:`~symdecomp.verify.mirror_parts.sector_matrices` for
 ``SharpVertex.dart(n, lattice)``, the matrix ``check --dart`` certifies), in which the points of ray ``0`` are copies of
 those of ray ``n`` (checked exactly: their columns are zero, their rows and their refinement rows are ray ``n``'s). Reif's conditions
 (U. Reif, *A unified approach to subdivision algorithms near extraordinary vertices*, CAGD 12, 1995):
@@ -10,7 +10,7 @@ those of ray ``n`` (checked exactly: their columns are zero, their rows and thei
 1. *spectral*: 1 is a simple eigenvalue, the next two ``lambda_1 >= lambda_2`` are real, positive, with two
    eigenvectors, and strictly larger in modulus than every other eigenvalue. The exact 1-ring spectrum decides
    (:func:`~symdecomp.analysis.triangular_eigen.sharp_values`: rational factors, exact multiplicities, Arb balls), and the
-   2-ring's other eigenvalues (:func:`~symdecomp.verify.c1_sharp_spectrum.sector_eigenvalues`) are certified below
+   2-ring's other eigenvalues (:func:`~symdecomp.verify.mirror_parts.sector_eigenvalues`) are certified below
    ``|lambda_2|``;
 2. *regular*: the characteristic map ``chi`` of the two subdominant eigenvectors (exact rational null space when the
    pair is one rational eigenvalue twice, else a certified null vector of the ball matrix) on the ring of ``3 n``
@@ -48,8 +48,8 @@ from symdecomp.schemes.sector_patch import check_spline_sharp_rules
 from symdecomp.validate import check_bits, check_depth, check_valence
 from symdecomp.verify.c1 import place_text
 from symdecomp.verify.c1_sharp import SharpC1Result
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
+from symdecomp.verify.mirror_parts import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, closed_fan_condition
 from symdecomp.verify.sector_ring import arc_sweeps, jacobian_sign, ring_nets

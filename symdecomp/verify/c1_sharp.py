@@ -5,7 +5,7 @@ Numer. Anal. 37(5), 2000, and for piecewise smooth surfaces H. Biermann, A. Levi
 *Piecewise smooth subdivision surfaces with normal control*, SIGGRAPH 2000, and H. Biermann, S. Grundel,
 D. Zorin, *Smoothness of subdivision surfaces with boundary*, Constr. Approx. 42, 2015). A surface with
 boundary (or each side of an infinitely sharp crease, or a corner) is C1 at ``O`` for almost every control
-net when, for the 2-ring subdivision matrix of the sector (:mod:`.c1_sharp_spectrum`):
+net when, for the 2-ring subdivision matrix of the sector (:mod:`.mirror_parts`):
 
 1. 1 is a simple eigenvalue, and the next two, ``lambda_1 >= lambda_2``, are real, positive, each with
    its own eigenvector, and strictly larger in modulus than all others (at a boundary they may differ);
@@ -74,8 +74,8 @@ from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, mod
 from symdecomp.validate import check_bits, check_depth, check_type
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
 from symdecomp.verify.c1 import C1Result, c1_test, place_text
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
+from symdecomp.verify.mirror_parts import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
 from symdecomp.verify.sector_ring import arc_sweeps, irregular_rows, jacobian_sign, ring_faces, ring_nets, wide_nets
@@ -211,7 +211,7 @@ def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
 
 def sector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, picks: list, max_depth: int) -> SectorFinding:
     """Conditions 3-5 on the sector ``sm`` of ``vertex``, once conditions 1 and 2 hold: the characteristic map of the two
-    subdominant eigenvectors (``picks``: ``(value, part, in_ring)``, :func:`~.c1_sharp_spectrum.sector_eigenvector`)."""
+    subdominant eigenvectors (``picks``: ``(value, part, in_ring)``, :func:`~.mirror_parts.sector_eigenvector`)."""
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
     wide = (why := modified_edges(scheme, vertex, sm.k)) is not None
     if wide and irregular_rows(sm):  # the spectral conditions hold; no ring of spline patches is known

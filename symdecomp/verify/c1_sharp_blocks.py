@@ -23,7 +23,7 @@ mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, 
 mirror's direct sum (checked exactly on the crease block). Where conditions 1 and 2 hold, conditions 3-5 are
 decided on the characteristic map: for that double ``1/2`` from :data:`~.c1_sharp_modes.WINDOW` faces on, from the
 eigenvectors in closed form on a few faces per sector (:mod:`.c1_sharp_fourier`, any ``k``); otherwise (or where that
-route does not decide) from the eigenvectors in the mirror parts the blocks name (:mod:`.c1_sharp_map`: no
+route does not decide) from the eigenvectors in the mirror parts the blocks name (:func:`map_from_blocks`: no
 characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces). An exact
 tie ``lambda_2 = lambda_3`` (one value of the blocks, its multiplicity exact; BLZ's corners) is final: the dense test
 finds the same multiple root, and is not run.
@@ -56,15 +56,14 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
-from symdecomp.verify.c1_sharp import SharpC1Result, _describe, c1_sharp_test, deciding_sector
+from symdecomp.verify.c1_sharp import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
 from symdecomp.verify.c1_sharp_fourier import applies, fourier_map
-from symdecomp.verify.c1_sharp_map import MAP_METHOD, map_from_blocks
-from symdecomp.verify.c1_sharp_spectrum import sector_matrices
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
+from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding
 
-__all__ = ["c1_sharp_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD"]
+__all__ = ["c1_sharp_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD", "MAP_METHOD", "map_from_blocks"]
 
 #: Most faces of a sector for which the dense test (:mod:`.c1_sharp`) is run where the blocks do not decide.
 MAP_FACES = 32
@@ -74,6 +73,10 @@ WINDOW = 4
 BLOCKS_METHOD = ("Zorin's conditions 1-2 from the sector's blocks: exact crease block and sine blocks j <= 3, a certified bound "
                  "of the other sine blocks and of the 2-ring's outer block; tangent of the boundary curve among the "
                  "subdominant eigenvalues")
+#: The method, as reported with each verdict whose map this route certified (:func:`map_from_blocks`).
+MAP_METHOD = ("Zorin's conditions 1-2 from the sector's blocks (certified leading values, exact multiplicities); the "
+              "subdominant eigenvectors as certified null vectors in the mirror parts the blocks name; Jacobian of the "
+              "sector's spline ring in Bernstein-Bezier form (Arb, de Casteljau); argument swept between the two sharp rays")
 
 
 @dataclass(frozen=True)
@@ -187,7 +190,7 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
 
 
 def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:
-    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :mod:`.c1_sharp_map` (``max_depth``:
+    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :func:`map_from_blocks` (``max_depth``:
     its deepest subdivision; ``None``: the blocks alone)."""
     lattice, k, corner = scheme.lattice, vertex.sectors[sector], vertex.corner
     window = _window(scheme, lattice, corner)
@@ -232,10 +235,32 @@ def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_
                          method=key.method or (MAP_METHOD if mapped else BLOCKS_METHOD))
 
 
+def map_from_blocks(scheme, vertex: SharpVertex, sector: int, spectral: SpectralResult, picks: list, crease: sp.Matrix,
+                    max_depth: int) -> SectorFinding:
+    """Conditions 3-5 in sector ``sector`` of ``vertex``, the spectral conditions holding by the blocks: each subdominant
+    eigenvector is the certified null vector of its mirror part's 1-ring block at the blocks' ball (the part the blocks
+    name, :func:`~.mirror_parts.block_parts`; the square solve proves the kernel has dimension at most 1), lifted to the
+    outer points by a certified solve (:func:`~.mirror_parts.sector_eigenvector`); then the dense test's own routine
+    (:func:`~.c1_sharp.sector_map`). No characteristic polynomial (with BLZ's weights in ``cos(pi/k)`` the dense test's
+    costs minutes from about 30 faces on), but the sector's exact matrix: at most
+    :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces, the linear algebra in Arb cubic in ``k``."""
+    lambdas = tuple(float(p[0].real.mid()) for p in picks)
+    if vertex.faces > MAX_DENSE_FACES:
+        return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
+                             f"characteristic map is built for at most {MAX_DENSE_FACES} faces", spectral, lambdas)
+    names = block_parts(crease, picks)
+    sm = sector_matrices(scheme, vertex, sector)
+    parts = {p.name: p for p in sector_parts(sm)}
+    if names is None or not all(name in parts for name in names):
+        return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the blocks do not name the mirror part of each "
+                             "subdominant eigenvector", spectral, lambdas)
+    return sector_map(scheme, vertex, sm, spectral, [(p[0], parts[name], True) for p, name in zip(picks, names)], max_depth)
+
+
 def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,
                     certify_map: bool = True) -> SharpC1Result:
     """Zorin's test at a boundary, crease or corner vertex: the blocks first, then the characteristic map from the
-    eigenvectors they name (:mod:`.c1_sharp_map`; not with ``certify_map=False``), the dense test where these do not
+    eigenvectors they name (:func:`map_from_blocks`; not with ``certify_map=False``), the dense test where these do not
     decide and every sector has at most ``map_faces`` faces (module docstring)."""
     scheme, max_depth = check_scheme(scheme), check_depth(max_depth)
     sharp_sectors = not vertex.closed or (math.isinf(vertex.sharpness) and len(vertex.sectors) == 2)

@@ -43,10 +43,9 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.bezier import curve_angle
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp_map import block_parts
 from symdecomp.verify.c1_sharp_modes import WINDOW, SectorModes, sector_modes
-from symdecomp.verify.c1_sharp_spectrum import mirror_label
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
+from symdecomp.verify.mirror_parts import block_parts, mirror_label
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
 from symdecomp.verify.sector_ring import jacobian_sign, ring_faces, wide_arcs, wide_nets

@@ -13,7 +13,7 @@ from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.verify.c1_dart import _shift, c1_dart_test, dart_map, dart_spectrum, dart_vectors
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_matrices
+from symdecomp.verify.mirror_parts import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.result import C1Verdict
 
 

@@ -14,11 +14,10 @@ from symdecomp.analysis.mirror import with_near_edge
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.symbols import theta_k
-from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
+from symdecomp.verify.c1_sharp_blocks import MAP_METHOD, c1_sharp_blocks
 from symdecomp.verify.c1_sharp_fourier import FOURIER_METHOD, _ModeValues
-from symdecomp.verify.c1_sharp_map import MAP_METHOD
 from symdecomp.verify.c1_sharp_modes import FIELD, WINDOW, sector_modes
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, mirror_label, sector_matrices
+from symdecomp.verify.mirror_parts import ball_matrix, mirror_label, sector_matrices
 from symdecomp.verify.result import C1Verdict
 
 BLZ = ("catmull-clark-blz", "loop-blz")

@@ -1,7 +1,7 @@
 """The characteristic map of a sharp sector from the eigenvectors the blocks name, against the dense test (k = 1..12).
 
 The dense test (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`) finds the subdominant eigenvalues from the mirror
-parts' exact characteristic polynomials; the blocks route (:mod:`symdecomp.verify.c1_sharp_map`) takes them from the
+parts' exact characteristic polynomials; the blocks route (:func:`symdecomp.verify.c1_sharp_blocks.map_from_blocks`) takes them from the
 blocks and names the part of each eigenvector by its block's mirror parity. Both must reach the same verdict with the
 same eigenvalues and the same certified opening of the sector's image.
 """
@@ -21,10 +21,9 @@ from symdecomp.cli import main
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES
 from symdecomp.verify.c1_sharp import c1_sharp_test
-from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
+from symdecomp.verify.c1_sharp_blocks import MAP_METHOD, c1_sharp_blocks
 from symdecomp.verify.c1_sharp_fourier import FOURIER_METHOD
-from symdecomp.verify.c1_sharp_map import MAP_METHOD, block_parts
-from symdecomp.verify.c1_sharp_spectrum import NEAR, ball_matrix, mirror_label, sector_eigenvector, sector_matrices, sector_parts
+from symdecomp.verify.mirror_parts import NEAR, ball_matrix, block_parts, mirror_label, sector_eigenvector, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
 
 SCHEMES = {"cc": sd.catmull_clark, "loop": sd.loop, "cc-blz": lambda: load_scheme("catmull-clark-blz"),

@@ -144,8 +144,8 @@ nothing else.
                    the ring of its characteristic map (its nets, at O or past BLZ's modified edges, its Jacobian and
                    arcs), ``sector_ring``; with many faces, the spectral conditions from the blocks and the map from the
                    eigenvectors in the parts they name, ``c1_sharp_blocks``; BLZ's
-                   subdominant eigenvectors in closed form for every k, ``c1_sharp_modes``, and the map from them on a
-                   few faces per k, ``c1_sharp_fourier``), at
+                   subdominant eigenvectors in closed form for every k, ``fourier_modes``, and the map from them on a
+                   few faces per k, ``fourier_map``), at
                    infinitely sharp darts by Reif's test on the closed fan cut by one sharp ray (``c1_dart``); for
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or

@@ -37,7 +37,7 @@ and at concave corners; with BLZ's near-edge rule the spectral conditions hold a
 Where that rule is not the smooth one it makes the points next to ``O`` at every level, so the ring's patches there are
 not splines (:func:`~symdecomp.schemes.sector_patch.modified_edges`); the map is then certified on the wider ring of
 :mod:`.sector_ring` (level-1 distance 2 to 4, genuine splines, checked exactly), and is C1 at every boundary ``k``
-tried and at convex corners (past 8 faces from BLZ's subdominant eigenvectors in closed form, :mod:`.c1_sharp_fourier`,
+tried and at convex corners (past 8 faces from BLZ's subdominant eigenvectors in closed form, :mod:`.fourier_map`,
 at every boundary to 10,000 faces tried). The argument below holds with that ring as ``R`` (inner arc at level-1 distance 2, outer
 at 4). Alone (the part
 of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave corner C1.

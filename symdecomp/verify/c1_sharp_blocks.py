@@ -21,8 +21,8 @@ the blocks decide alone is a failure: a sector whose subdominant eigenvectors mi
 at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
 mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
 mirror's direct sum (checked exactly on the crease block). Where conditions 1 and 2 hold, conditions 3-5 are
-decided on the characteristic map: for that double ``1/2`` from :data:`~.c1_sharp_modes.WINDOW` faces on, from the
-eigenvectors in closed form on a few faces per sector (:mod:`.c1_sharp_fourier`, any ``k``); otherwise (or where that
+decided on the characteristic map: for that double ``1/2`` from :data:`~.fourier_modes.WINDOW` faces on, from the
+eigenvectors in closed form on a few faces per sector (:mod:`.fourier_map`, any ``k``); otherwise (or where that
 route does not decide) from the eigenvectors in the mirror parts the blocks name (:func:`map_from_blocks`: no
 characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces). An exact
 tie ``lambda_2 = lambda_3`` (one value of the blocks, its multiplicity exact; BLZ's corners) is final: the dense test
@@ -57,8 +57,8 @@ from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
 from symdecomp.verify.c1_sharp import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
-from symdecomp.verify.c1_sharp_fourier import applies, fourier_map
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
+from symdecomp.verify.fourier_map import applies, fourier_map
 from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding

@@ -86,7 +86,7 @@ def test_standard_rules_fail_at_many_faces_with_the_dominant_sine_block(name, ki
 @pytest.mark.parametrize("name", ["cc-blz", "loop-blz"])
 def test_past_map_faces_a_sector_the_blocks_pass_is_undecided_without_the_modes(name, monkeypatch):
     # BLZ's double 1/2: the crease block's mirror-odd tangent and the mirror-even sine block j = 1, one in each part;
-    # the closed-form modes certify the map (:mod:`symdecomp.verify.c1_sharp_fourier`), without them it is undecided
+    # the closed-form modes certify the map (:mod:`symdecomp.verify.fourier_map`), without them it is undecided
     scheme = SCHEMES[name]()
     vertex = sd.SharpVertex.crease(100, 40, scheme.lattice)
     assert c1_sharp_blocks(scheme, vertex).verdict is C1Verdict.C1

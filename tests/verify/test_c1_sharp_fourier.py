@@ -1,5 +1,5 @@
-"""BLZ's subdominant eigenvectors in closed form (:mod:`symdecomp.verify.c1_sharp_modes`) and the map from them on a few
-faces per k (:mod:`symdecomp.verify.c1_sharp_fourier`), against the sector's exact matrix and the null-vector route."""
+"""BLZ's subdominant eigenvectors in closed form (:mod:`symdecomp.verify.fourier_modes`) and the map from them on a few
+faces per k (:mod:`symdecomp.verify.fourier_map`), against the sector's exact matrix and the null-vector route."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.symbols import theta_k
 from symdecomp.verify.c1_sharp_blocks import MAP_METHOD, c1_sharp_blocks
-from symdecomp.verify.c1_sharp_fourier import FOURIER_METHOD, _ModeValues
-from symdecomp.verify.c1_sharp_modes import FIELD, WINDOW, sector_modes
+from symdecomp.verify.fourier_map import FOURIER_METHOD, _ModeValues
+from symdecomp.verify.fourier_modes import FIELD, WINDOW, sector_modes
 from symdecomp.verify.mirror_parts import ball_matrix, mirror_label, sector_matrices
 from symdecomp.verify.result import C1Verdict
 
@@ -100,6 +100,6 @@ def test_a_mutated_near_edge_weight_is_neither_a_closed_form_nor_c1():
 def test_a_face_that_reads_the_rays_is_not_taken_for_a_rotation(monkeypatch):
     # the rotation argument needs face g's nets to read Fourier values only: told that the nets read no face to either
     # side, the route takes a face next to the values of their own for g, the check sees it and the route refuses
-    monkeypatch.setattr("symdecomp.verify.c1_sharp_fourier.REACH", 0)
+    monkeypatch.setattr("symdecomp.verify.fourier_map.REACH", 0)
     r = c1_sharp_blocks(load_scheme("catmull-clark-blz"), sd.SharpVertex.boundary(100, "quad"))
     assert r.verdict is C1Verdict.UNDECIDED and "reads values next to a sharp ray" in r.reason

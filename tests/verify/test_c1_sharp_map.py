@@ -22,7 +22,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES
 from symdecomp.verify.c1_sharp import c1_sharp_test
 from symdecomp.verify.c1_sharp_blocks import MAP_METHOD, c1_sharp_blocks
-from symdecomp.verify.c1_sharp_fourier import FOURIER_METHOD
+from symdecomp.verify.fourier_map import FOURIER_METHOD
 from symdecomp.verify.mirror_parts import NEAR, ball_matrix, block_parts, mirror_label, sector_eigenvector, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
 

@@ -2,7 +2,7 @@
 
 Where the blocks (:mod:`.c1_sharp_blocks`) prove ``lambda_1 = lambda_2 = 1/2``, one eigenvector in each mirror part
 (Biermann-Levin-Zorin's rules), the two eigenvectors are ``Re v`` and ``Im v`` of the closed form of
-:mod:`.c1_sharp_modes`: level-1 values of their own in the faces next to ray 0, mirror images ``-conj`` next to ray
+:mod:`.fourier_modes`: level-1 values of their own in the faces next to ray 0, mirror images ``-conj`` next to ray
 ``k``, and ``G(u, w) omega^s`` (``omega = e^(i pi/k)``) in every face between. So the characteristic map
 ``chi = Re v + i Im v = v`` is, on the faces between, the map of one face turned by ``omega^s``, and next to ray ``k``
 the mirror image ``chi(P p) = -conj(chi(p))`` of the map next to ray 0. Conditions 3-5 of :mod:`.c1_sharp` are then
@@ -43,8 +43,8 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.bezier import curve_angle
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp_modes import WINDOW, SectorModes, sector_modes
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
+from symdecomp.verify.fourier_modes import WINDOW, SectorModes, sector_modes
 from symdecomp.verify.mirror_parts import block_parts, mirror_label
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
@@ -131,7 +131,7 @@ class _ModeValues:
         if label == ORIGIN:
             return flint.acb(0)
         s, u, w = label
-        if w == 0 and s in (0, self.k):  # the sharp rays: exactly linear (:mod:`.c1_sharp_modes` checks it)
+        if w == 0 and s in (0, self.k):  # the sharp rays: exactly linear (:mod:`.fourier_modes` checks it)
             self.special = True
             d = self.direction if s == 0 else -self.direction.conjugate()
             return d * u / 2
@@ -187,7 +187,7 @@ def _sweeps(angles: list, k: int, explicit: bool):
 
 def fourier_map(scheme, vertex: SharpVertex, k: int, spectral: SpectralResult, picks: list, max_depth: int) -> SectorFinding:
     """Conditions 3-5 in a sector of ``k`` faces from the closed-form modes (module docstring); ``NotApplicableError``
-    where :func:`~.c1_sharp_modes.sector_modes` finds no closed form."""
+    where :func:`~.fourier_modes.sector_modes` finds no closed form."""
     lambdas = tuple(float(p[0].real.mid()) for p in picks)
     chi = _ModeValues(scheme, k)
     sector = _Sector(k, scheme.lattice)

@@ -143,7 +143,7 @@ nothing else.
                    eigenvectors by its mirror's parts, and the part of each eigenvector the blocks name, ``mirror_parts``;
                    the ring of its characteristic map (its nets, at O or past BLZ's modified edges, its Jacobian and
                    arcs), ``sector_ring``; with many faces, the spectral conditions from the blocks and the map from the
-                   eigenvectors in the parts they name, ``c1_sharp_blocks``; BLZ's
+                   eigenvectors in the parts they name, ``c1_mirror_blocks``; BLZ's
                    subdominant eigenvectors in closed form for every k, ``fourier_modes``, and the map from them on a
                    few faces per k, ``fourier_map``), at
                    infinitely sharp darts by Reif's test on the closed fan cut by one sharp ray (``c1_dart``); for

@@ -100,7 +100,7 @@ class SharpC1Result(C1Result):
     lambdas: tuple | None = None
     #: The argument ``Delta / pi`` swept by the sector's image (its opening), when certified.
     opening: float | None = None
-    #: How the verdict was reached (:data:`SHARP_METHOD`, or the blocks route's, :mod:`.c1_sharp_blocks`).
+    #: How the verdict was reached (:data:`SHARP_METHOD`, or the blocks route's, :mod:`.c1_mirror_blocks`).
     method: str = SHARP_METHOD
 
     def as_json(self) -> dict:

@@ -1,6 +1,6 @@
 """The characteristic map of a sharp sector with many faces from the closed-form modes: a few faces per ``k``, not ``k``.
 
-Where the blocks (:mod:`.c1_sharp_blocks`) prove ``lambda_1 = lambda_2 = 1/2``, one eigenvector in each mirror part
+Where the blocks (:mod:`.c1_mirror_blocks`) prove ``lambda_1 = lambda_2 = 1/2``, one eigenvector in each mirror part
 (Biermann-Levin-Zorin's rules), the two eigenvectors are ``Re v`` and ``Im v`` of the closed form of
 :mod:`.fourier_modes`: level-1 values of their own in the faces next to ray 0, mirror images ``-conj`` next to ray
 ``k``, and ``G(u, w) omega^s`` (``omega = e^(i pi/k)``) in every face between. So the characteristic map
@@ -23,8 +23,8 @@ cost a solve cubic in ``k``.
 
 >>> from symdecomp.schemes.files import load_scheme
 >>> from symdecomp.schemes.sector import SharpVertex
->>> from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
->>> r = c1_sharp_blocks(load_scheme("catmull-clark-blz"), SharpVertex.boundary(1000, "quad"))
+>>> from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
+>>> r = c1_mirror_blocks(load_scheme("catmull-clark-blz"), SharpVertex.boundary(1000, "quad"))
 >>> str(r.verdict), round(r.opening, 6)   # the half-disk's opening: pi
 ('c1', 1.0)
 """

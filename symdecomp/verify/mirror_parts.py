@@ -25,7 +25,7 @@ complex conjugate meets no other eigenvalue's ball is real: the conjugate of tha
 eigenvalue of the real matrix in the conjugate ball, hence the same one.
 
 **Which part holds an eigenvector, from the blocks alone** (:func:`block_parts`, for the blocks' route that has no
-characteristic polynomial, :mod:`.c1_sharp_blocks`): a sine block ``j`` has the mode ``sin(pi j s/k)`` on the rays ``s``,
+characteristic polynomial, :mod:`.c1_mirror_blocks`): a sine block ``j`` has the mode ``sin(pi j s/k)`` on the rays ``s``,
 and the mirror ``s -> k - s`` multiplies it by ``(-1)^(j + 1)``: even for ``j`` odd, odd for ``j`` even; an eigenvalue
 ``q`` (rational) of the crease block has an odd eigenvector when ``(C - q) (0, 1, -1) = 0`` exactly and ``C - q`` has
 rank 2, an even one when ``C - q`` has rank 2 and the odd vector is not in its kernel. An eigenvalue the blocks count once

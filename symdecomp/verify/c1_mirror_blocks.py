@@ -34,7 +34,7 @@ Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> from symdecomp.schemes.sector import SharpVertex
->>> r = c1_sharp_blocks(catmull_clark(), SharpVertex.boundary(1000, "quad"))
+>>> r = c1_mirror_blocks(catmull_clark(), SharpVertex.boundary(1000, "quad"))
 >>> str(r.verdict), r.lambdas[0] > 0.65
 ('not-c1', True)
 """
@@ -63,7 +63,7 @@ from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_p
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding
 
-__all__ = ["c1_sharp_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD", "MAP_METHOD", "map_from_blocks"]
+__all__ = ["c1_mirror_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD", "MAP_METHOD", "map_from_blocks"]
 
 #: Most faces of a sector for which the dense test (:mod:`.c1_sharp`) is run where the blocks do not decide.
 MAP_FACES = 32
@@ -257,7 +257,7 @@ def map_from_blocks(scheme, vertex: SharpVertex, sector: int, spectral: Spectral
     return sector_map(scheme, vertex, sm, spectral, [(p[0], parts[name], True) for p, name in zip(picks, names)], max_depth)
 
 
-def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,
+def c1_mirror_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,
                     certify_map: bool = True) -> SharpC1Result:
     """Zorin's test at a boundary, crease or corner vertex: the blocks first, then the characteristic map from the
     eigenvectors they name (:func:`map_from_blocks`; not with ``certify_map=False``), the dense test where these do not

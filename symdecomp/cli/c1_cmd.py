@@ -5,7 +5,7 @@
 characteristic map proved regular and injective for every n by exact signs in cos(2 pi/n) where that closes.
 
 ``symdecomp c1 --boundary --k 1:16`` (``--corner``, ``--crease K1,K2``): Zorin's conditions at boundary, corner and
-crease vertices (:mod:`symdecomp.verify.c1_sharp`), per number of faces ``k``, with the scheme's ``[sharp]`` rules.
+crease vertices (:mod:`symdecomp.verify.c1_sector_matrix`), per number of faces ``k``, with the scheme's ``[sharp]`` rules.
 """
 
 from __future__ import annotations
@@ -245,7 +245,7 @@ def _vertex(item: tuple, scheme: Scheme):
 
 
 def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
-    from symdecomp.verify.c1_dart import c1_dart_test
+    from symdecomp.verify.c1_closed_fan import c1_dart_test
     from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
 
     if item[0] == "dart":

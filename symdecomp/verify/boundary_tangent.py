@@ -5,7 +5,7 @@ The points on a sector's sharp rays form an invariant curve (the crease rules, a
 occurs once per boundary curve (one at a boundary or crease, two at a corner). An eigenvector whose eigenvalue is not an
 eigenvalue of the curve block vanishes on the curve; so if the subdominant eigenvalues miss a tangent, the tangent plane
 cannot hold that boundary curve: not C1 (:func:`tangent_condition`; how the standard rules fail at boundary vertices and
-corners with many faces, :mod:`.c1_sharp`). The dense test and the blocks' route (:mod:`.c1_mirror_blocks`) decide it
+corners with many faces, :mod:`.c1_sector_matrix`). The dense test and the blocks' route (:mod:`.c1_mirror_blocks`) decide it
 alike, from the same eigenvalues.
 """
 

@@ -1,7 +1,7 @@
 """Zorin's conditions at boundary, crease and corner vertices with many faces: the spectrum from the sector's blocks.
 
-The dense test (:mod:`.c1_sharp`) builds the sector's exact 2-ring matrix, whose size grows like ``k`` and whose
-exact spectrum costs far more; it is capped (:data:`MAP_FACES`). Here conditions 1 and 2 of :mod:`.c1_sharp` are read
+The dense test (:mod:`.c1_sector_matrix`) builds the sector's exact 2-ring matrix, whose size grows like ``k`` and whose
+exact spectrum costs far more; it is capped (:data:`MAP_FACES`). Here conditions 1 and 2 of :mod:`.c1_sector_matrix` are read
 from the blocks of the mirror decomposition, O(log k) per sector (:mod:`symdecomp.analysis.sharp_leading`):
 
 * **the 1-ring**: the sector's 2-ring matrix is block lower triangular, the new 1-ring reading only the old one, and
@@ -16,7 +16,7 @@ from the blocks of the mirror decomposition, O(log k) per sector (:mod:`symdecom
   ``k`` (:func:`~symdecomp.analysis.mirror.crease_block` has no ``k``): it is taken from the window's matrix.
 
 So ``lambda_1, lambda_2`` are the two largest of the 1-ring's leading values once both bounds are below
-``|lambda_2|``; then the spectral and tangent conditions are decided as in :mod:`.c1_sharp` (the same reasons). What
+``|lambda_2|``; then the spectral and tangent conditions are decided as in :mod:`.c1_sector_matrix` (the same reasons). What
 the blocks decide alone is a failure: a sector whose subdominant eigenvectors miss the tangent of a boundary curve,
 at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
 mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
@@ -56,7 +56,7 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
-from symdecomp.verify.c1_sharp import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
+from symdecomp.verify.c1_sector_matrix import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
 from symdecomp.verify.fourier_map import applies, fourier_map
 from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
@@ -65,7 +65,7 @@ from symdecomp.verify.sector_injectivity import SectorFinding
 
 __all__ = ["c1_mirror_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD", "MAP_METHOD", "map_from_blocks"]
 
-#: Most faces of a sector for which the dense test (:mod:`.c1_sharp`) is run where the blocks do not decide.
+#: Most faces of a sector for which the dense test (:mod:`.c1_sector_matrix`) is run where the blocks do not decide.
 MAP_FACES = 32
 #: Faces of the windows on which the outer block's rows and the boundary curve are read.
 WINDOW = 4
@@ -241,7 +241,7 @@ def map_from_blocks(scheme, vertex: SharpVertex, sector: int, spectral: Spectral
     eigenvector is the certified null vector of its mirror part's 1-ring block at the blocks' ball (the part the blocks
     name, :func:`~.mirror_parts.block_parts`; the square solve proves the kernel has dimension at most 1), lifted to the
     outer points by a certified solve (:func:`~.mirror_parts.sector_eigenvector`); then the dense test's own routine
-    (:func:`~.c1_sharp.sector_map`). No characteristic polynomial (with BLZ's weights in ``cos(pi/k)`` the dense test's
+    (:func:`~.c1_sector_matrix.sector_map`). No characteristic polynomial (with BLZ's weights in ``cos(pi/k)`` the dense test's
     costs minutes from about 30 faces on), but the sector's exact matrix: at most
     :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces, the linear algebra in Arb cubic in ``k``."""
     lambdas = tuple(float(p[0].real.mid()) for p in picks)

@@ -5,7 +5,7 @@ Where the blocks (:mod:`.c1_mirror_blocks`) prove ``lambda_1 = lambda_2 = 1/2``,
 :mod:`.fourier_modes`: level-1 values of their own in the faces next to ray 0, mirror images ``-conj`` next to ray
 ``k``, and ``G(u, w) omega^s`` (``omega = e^(i pi/k)``) in every face between. So the characteristic map
 ``chi = Re v + i Im v = v`` is, on the faces between, the map of one face turned by ``omega^s``, and next to ray ``k``
-the mirror image ``chi(P p) = -conj(chi(p))`` of the map next to ray 0. Conditions 3-5 of :mod:`.c1_sharp` are then
+the mirror image ``chi(P p) = -conj(chi(p))`` of the map next to ray 0. Conditions 3-5 of :mod:`.c1_sector_matrix` are then
 decided on ``g + 1`` faces only (``g`` next to ray 0 and one face ``g`` between), in Arb, with the wide ring of
 :mod:`.sector_ring` (BLZ's modified edges make the level-1 patches at ``O`` non-splines):
 

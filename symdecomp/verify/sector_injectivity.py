@@ -84,7 +84,7 @@ class SectorFinding:
 
 
 def injective_condition(sm: object, vertex: SharpVertex, sign: int, dirs: object, sweeps: Sweeps) -> tuple[C1Verdict, str, float | None]:
-    """Conditions 4 and 5 of the sector test (:mod:`.c1_sharp`) at an open sector, from the certified sweeps
+    """Conditions 4 and 5 of the sector test (:mod:`.c1_sector_matrix`) at an open sector, from the certified sweeps
     ``(Delta_in, Delta_out)`` and the Jacobian's ``sign`` (module docstring)."""
     din, dout = sweeps
     if din is None or dout is None:

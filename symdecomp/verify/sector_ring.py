@@ -1,6 +1,6 @@
 """The ring of a sector's characteristic map: its Bezier nets, the Jacobian's sign on them, the sweeps of its arcs.
 
-The sector tests (:mod:`.c1_sharp`, :mod:`.c1_dart`, the closed-form modes' :mod:`.fourier_map`) certify the map on one
+The sector tests (:mod:`.c1_sector_matrix`, :mod:`.c1_closed_fan`, the closed-form modes' :mod:`.fourier_map`) certify the map on one
 ring of patches around ``O``, face by face: the spline ring of ``3 k`` sub-patches at ``O`` (:func:`ring_nets`, the phantom
 points of :mod:`symdecomp.schemes.sector_patch` at the sharp rays), or, where a modified near-edge rule makes the patches
 at ``O`` non-splines, the wide ring below (:func:`wide_nets`); the Jacobian's sign by de Casteljau subdivision of its

@@ -21,7 +21,7 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES
 from symdecomp.verify.c1_mirror_blocks import BLOCKS_METHOD, MAP_FACES, c1_mirror_blocks
-from symdecomp.verify.c1_sharp import SHARP_METHOD, c1_sharp_test
+from symdecomp.verify.c1_sector_matrix import SHARP_METHOD, c1_sharp_test
 from symdecomp.verify.result import C1Verdict
 
 SCHEMES = {"cc": sd.catmull_clark, "loop": sd.loop, "cc-blz": lambda: load_scheme("catmull-clark-blz"),

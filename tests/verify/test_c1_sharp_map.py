@@ -1,6 +1,6 @@
 """The characteristic map of a sharp sector from the eigenvectors the blocks name, against the dense test (k = 1..12).
 
-The dense test (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`) finds the subdominant eigenvalues from the mirror
+The dense test (:func:`~symdecomp.verify.c1_sector_matrix.c1_sharp_test`) finds the subdominant eigenvalues from the mirror
 parts' exact characteristic polynomials; the blocks route (:func:`symdecomp.verify.c1_mirror_blocks.map_from_blocks`) takes them from the
 blocks and names the part of each eigenvector by its block's mirror parity. Both must reach the same verdict with the
 same eigenvalues and the same certified opening of the sector's image.
@@ -21,7 +21,7 @@ from symdecomp.cli import main
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES
 from symdecomp.verify.c1_mirror_blocks import MAP_METHOD, c1_mirror_blocks
-from symdecomp.verify.c1_sharp import c1_sharp_test
+from symdecomp.verify.c1_sector_matrix import c1_sharp_test
 from symdecomp.verify.fourier_map import FOURIER_METHOD
 from symdecomp.verify.mirror_parts import NEAR, ball_matrix, block_parts, mirror_label, sector_eigenvector, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict

@@ -1,4 +1,4 @@
-"""Certified C1 at boundary, crease and corner vertices: Zorin's conditions on each sector's characteristic map.
+"""Certified C1 at boundary, crease and corner vertices from each sector's exact matrix: Zorin's conditions on its characteristic map.
 
 **The conditions** (D. Zorin, *A method for analysis of C1-continuity of subdivision surfaces*, SIAM J.
 Numer. Anal. 37(5), 2000, and for piecewise smooth surfaces H. Biermann, A. Levin, D. Zorin,

@@ -23,7 +23,7 @@ those of ray ``n`` (checked exactly: their columns are zero, their rows and thei
    ring's inner boundary winds once around the origin (and the outer one as often: no zero in the ring), the
    arguments swept certified by :func:`~symdecomp.verify.bezier.curve_angle`.
 
-Catmull-Clark's darts of valence 3 to 8 are C1 (``tests/verify/test_c1_dart.py``); at valence 4 the pair is
+Catmull-Clark's darts of valence 3 to 8 are C1 (``tests/verify/test_c1_closed_fan.py``); at valence 4 the pair is
 ``1/2`` twice (the regular vertex's), elsewhere ``lambda_1`` is the smooth vertex's subdominant eigenvalue and
 ``lambda_2`` a new one below it. Loop's darts are tested where the dart's weights are rational (valences 3, 4, 6:
 C1); at other valences the exact spectrum is out of reach and the verdict is ``undecided`` with that reason.
@@ -47,7 +47,7 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import check_spline_sharp_rules
 from symdecomp.validate import check_bits, check_depth, check_valence
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp import SharpC1Result
+from symdecomp.verify.c1_sector_matrix import SharpC1Result
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
 from symdecomp.verify.mirror_parts import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.result import C1Verdict

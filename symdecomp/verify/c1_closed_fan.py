@@ -52,7 +52,7 @@ from symdecomp.verify.c1_spectrum import SpectralResult, round_down
 from symdecomp.verify.mirror_parts import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, closed_fan_condition
-from symdecomp.verify.sector_ring import arc_sweeps, jacobian_sign, ring_nets
+from symdecomp.verify.sector_ring import arc_sweeps, jacobian_sign, level_one_map, ring_nets
 
 __all__ = ["DART_METHOD", "DartSpectrum", "c1_dart_test", "dart_spectrum", "dart_vectors", "dart_map"]
 
@@ -151,19 +151,9 @@ def _shift(A, value) -> flint.acb_mat:
     return flint.acb_mat([[A[r, c] - (value if r == c else 0) for c in range(A.ncols())] for r in range(A.nrows())])
 
 
-def _chi(sm, vectors) -> dict:
-    """``{level-1 label: chi}`` (complex balls) from the two real eigenvectors (2-ring, matrix order)."""
-    R = ball_matrix(sm.refine.tolist(), sm.weight)
-    fine = []
-    for v in vectors:
-        col = R * flint.acb_mat([[flint.acb(x)] for x in v])
-        fine.append([col[i, 0].real for i in range(len(sm.fine_labels))])
-    return {lab: flint.acb(fine[0][i], fine[1][i]) for i, lab in enumerate(sm.fine_labels)}
-
-
 def dart_map(sm, vectors, *, max_depth: int = 6) -> SectorFinding:
     """Conditions 2 and 3 (module docstring) for the dart sector ``sm`` and two real eigenvectors (``vectors``)."""
-    nets = ring_nets(sm, _chi(sm, vectors))
+    nets = ring_nets(sm, level_one_map(sm, vectors))
     cert = jacobian_sign(sm, nets, max_depth)
     if cert.status == "changes":
         return SectorFinding(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, "

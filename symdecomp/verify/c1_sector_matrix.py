@@ -75,10 +75,10 @@ from symdecomp.validate import check_bits, check_depth, check_type
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
 from symdecomp.verify.c1 import C1Result, c1_test, place_text
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
-from symdecomp.verify.mirror_parts import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
+from symdecomp.verify.mirror_parts import sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
-from symdecomp.verify.sector_ring import arc_sweeps, irregular_rows, jacobian_sign, ring_faces, ring_nets, wide_nets
+from symdecomp.verify.sector_ring import arc_sweeps, irregular_rows, jacobian_sign, level_one_map, ring_faces, ring_nets, wide_nets
 
 __all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "sector_map", "deciding_sector"]
 
@@ -174,13 +174,8 @@ def _chi(sm, picks):
     vecs = [_real_vector(sm, p) for p in picks]
     if any(v is None for v in vecs):
         return None, None
-    R = ball_matrix(sm.refine.tolist(), sm.weight)
     index = {lab: i for i, lab in enumerate(sm.labels)}
-    fine = []
-    for v in vecs:
-        col = R * flint.acb_mat([[x] for x in v])
-        fine.append([col[i, 0].real for i in range(len(sm.fine_labels))])
-    chi = {lab: flint.acb(fine[0][i], fine[1][i]) for i, lab in enumerate(sm.fine_labels)}
+    chi = level_one_map(sm, vecs)
     dirs = []
     for r in (0, sm.k):
         d = flint.acb(vecs[0][index[(r, 1, 0)]], vecs[1][index[(r, 1, 0)]])

@@ -42,8 +42,9 @@ from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.sector_patch import ORIGIN, sector_net, sector_point
 from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net, triangle_jacobian_net
 from symdecomp.verify.c1 import box_nets
+from symdecomp.verify.mirror_parts import ball_matrix
 
-__all__ = ["ring_faces", "irregular_rows", "wide_nets", "wide_arcs", "ring_nets", "jacobian_sign", "arc_sweeps"]
+__all__ = ["ring_faces", "irregular_rows", "wide_nets", "wide_arcs", "level_one_map", "ring_nets", "jacobian_sign", "arc_sweeps"]
 
 
 def ring_faces(lat) -> tuple:
@@ -183,6 +184,17 @@ def wide_arcs(sm, nets) -> tuple[list, list]:
         outer += [[net[(3, b)][3][j] for j in range(4)] for b in range(4)]
         outer += [[net[(a, 3)][i][3] for i in range(3, -1, -1)] for a in range(3, -1, -1)]
     return inner, outer
+
+
+def level_one_map(sm, vectors) -> dict:
+    """``{level-1 label: chi}`` (complex balls ``x + i y``) from the two real eigenvectors ``vectors`` (2-ring, matrix order,
+    real balls) refined once by the sector's exact refinement rows: the values the ring's nets read."""
+    R = ball_matrix(sm.refine.tolist(), sm.weight)
+    fine = []
+    for v in vectors:
+        col = R * flint.acb_mat([[flint.acb(x)] for x in v])
+        fine.append([col[i, 0].real for i in range(len(sm.fine_labels))])
+    return {lab: flint.acb(fine[0][i], fine[1][i]) for i, lab in enumerate(sm.fine_labels)}
 
 
 def ring_nets(sm, chi) -> list:

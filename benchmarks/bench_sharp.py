@@ -12,7 +12,7 @@ the machine runs: ``run.py`` prints the load. ``claims`` has its own file (``ben
 
 Baselines, measured in the same run: the dense route (the vertex's matrix built by refinement, its characteristic
 polynomial factored, over ``Q(cos(pi/k))`` for BLZ's rules) on a small vertex, ``k = 8`` (at ``k = 16`` it took
-211 s before this change); for ``c1``, the dense test alone (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`, the
+211 s before this change); for ``c1``, the dense test alone (:func:`~symdecomp.verify.c1_sector_matrix.c1_sharp_test`, the
 only route before this change, now reading the sector's sparse rows, which made it faster too) at ``k = 1..8``.
 
     python benchmarks/bench_sharp.py            # every target
@@ -72,7 +72,7 @@ def targets(quick: bool = False) -> list[dict]:
 def _dense_c1_seconds(scheme: str, vertex: str, faces: range) -> float:
     """Seconds of the dense test alone at each ``k`` of ``faces`` in a fresh process (the route before the blocks)."""
     code = ("import symdecomp as sd; from symdecomp.schemes.files import load_scheme; "
-            "from symdecomp.verify.c1_sharp import c1_sharp_test; "
+            "from symdecomp.verify.c1_sector_matrix import c1_sharp_test; "
             f"s = load_scheme({scheme!r}); "
             f"[c1_sharp_test(s, sd.SharpVertex.{vertex}(k, s.lattice)) for k in range({faces.start}, {faces.stop})]")
     start = time.perf_counter()

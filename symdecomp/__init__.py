@@ -140,14 +140,17 @@ nothing else.
                    in n and the map per valence, ``c1_every_n``; the characteristic map for every n >= N0 by exact signs in
                    t = cos(2 pi/n), ``c1_uniform``; the curvature regime for every
                    valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``; the part that dominates on fine
-                   rings for every valence, ``dominance_every_n``), at boundary, crease and
-                   corner vertices by Zorin's conditions per sector (``c1_sharp``, its spectrum
-                   by mirror blocks ``c1_sharp_spectrum``, the ring past BLZ's modified edges
-                   ``c1_sharp_ring``; with many faces, the spectral conditions from the blocks, ``c1_sharp_blocks``, and the
-                   characteristic map from the eigenvectors in the parts the blocks name, ``c1_sharp_map``; BLZ's
-                   subdominant eigenvectors in closed form for every k, ``c1_sharp_modes``, and the map from them on a
-                   few faces per k, ``c1_sharp_fourier``), at
-                   infinitely sharp darts by Reif's test on the closed fan cut by one sharp ray (``c1_dart``); for
+                   rings for every valence, ``dominance_every_n``); at a sector between sharp rays (boundary, crease
+                   and corner vertices) by Zorin's conditions, at a dart's closed fan cut by one sharp ray by Reif's,
+                   each route named by the symmetry it reads: the sector's exact matrix, its mirror's parts read
+                   through characteristic polynomials (``c1_sector_matrix``), the mirror blocks with many faces
+                   (``c1_mirror_blocks``), the closed fan (``c1_closed_fan``); what they share: the sector matrix's
+                   certified spectrum and eigenvectors by the mirror's parts and the part of each eigenvector the
+                   blocks name (``mirror_parts``), the boundary curves' tangents in the tangent plane
+                   (``boundary_tangent``), the ring of the characteristic map (its nets, at O or past BLZ's modified
+                   edges, its Jacobian and arcs, ``sector_ring``), its injectivity, open or closed, and what a sector
+                   test found (``sector_injectivity``); BLZ's subdominant eigenvectors as Fourier modes for every k
+                   (``fourier_modes``) and the map from them on a few faces per k (``fourier_map``); for
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
@@ -287,7 +290,7 @@ _EXPORTS: dict[str, tuple[str, ...]] = {
     "symdecomp.schemes.scheme": ("Scheme", "Stencil", "VertexRule", "catmull_clark", "subdivision_matrix"),
     "symdecomp.verify.artifacts": ("ArtifactIndicators", "artifact_indicators"),
     "symdecomp.verify.c1": ("C1Result", "c1_test"),
-    "symdecomp.verify.c1_sharp": ("SharpC1Result", "c1_sharp_test"),
+    "symdecomp.verify.c1_sector_matrix": ("SharpC1Result", "c1_sharp_test"),
     "symdecomp.verify.certify": ("Certificate", "certify", "certify_ring", "SharpCertificate", "certify_sharp", "certify_zoo"),
     "symdecomp.verify.numeric": ("NumericCheck", "numeric_check"),
     "symdecomp.verify.result": ("C1Verdict", "CrossCheckResult", "CrossCheckStatus"),

@@ -88,8 +88,9 @@ class Eigenvalue:
     """One distinct eigenvalue of a subdivision matrix at a valence, with its multiplicity."""
 
     #: The value: an mpmath number at the working precision, a certified ball (``flint.acb``), or an exact
-    #: sympy number (the mirror blocks' closed forms, :func:`~symdecomp.analysis.mirror.sector_spectrum`).
-    value: object
+    #: sympy number (the mirror blocks' closed forms, :func:`~symdecomp.analysis.mirror.sector_spectrum`); typed ``Any``, as
+    #: ``exact`` below: the readers know which route they read (the C1 test's block roots are ``flint.acb`` balls).
+    value: Any
     #: The value as decimal text with the requested number of significant digits; empty where none was asked
     #: for (an exact route's values before a spectrum prints them).
     text: str
@@ -113,7 +114,8 @@ class Eigenvalue:
     members: tuple[tuple[int, int, int], ...] = ()
     #: A ball holding every root of its cluster (``value`` holds the first), or ``None``.
     hull: object = None
-    #: Its index among the roots of ``factor`` in sympy's order (real ascending, then complex), or ``None``.
+    #: Its index among the roots of ``factor`` in sympy's order (real ascending, then complex), or among the two roots of
+    #: its frequency block (``0``: the larger in modulus; the C1 test's blocks, :mod:`symdecomp.verify.c1_spectrum`), or ``None``.
     index: int | None = None
     #: The part(s) of a block-triangular matrix it comes from (``"crease"``, ``"crease, sector 1"``, ``"whole"``), or ``""``.
     part: str = ""
@@ -125,6 +127,21 @@ class Eigenvalue:
     #: While an exact route joins equal values, what decides equality exactly and gives the value's ball (the route's own
     #: object: :mod:`symdecomp.analysis.block_values`); ``None`` in every result.
     witness: Any = field(default=None, compare=False, repr=False)
+    #: One of two complex conjugate roots of the same real block (real trace and determinant), so of equal moduli.
+    conjugate: bool = False
+    #: A double root of its frequency block, shown exactly (discriminant 0 in the cyclotomic field); ``multiplicity``
+    #: counts both roots.
+    double: bool = False
+
+    @property
+    def frequency(self) -> int | None:
+        """The frequency of the block it is a root of (the first of ``frequencies``), or ``None`` if not known."""
+        return self.frequencies[0] if self.frequencies else None
+
+    @property
+    def defective(self) -> bool:
+        """Whether a Jordan block of size above 1 is known (``jordan``)."""
+        return self.jordan is not None and max(self.jordan) > 1
 
     @property
     def ball(self) -> object:

@@ -1,6 +1,6 @@
 """The leading eigenvalues of a boundary, crease or corner vertex from its blocks, in O(log k) per vertex.
 
-Zorin's test at a sharp vertex (:mod:`symdecomp.verify.c1_sharp_blocks`) reads only the largest eigenvalues: ``1``,
+Zorin's test at a sharp vertex (:mod:`symdecomp.verify.c1_mirror_blocks`) reads only the largest eigenvalues: ``1``,
 ``lambda_1``, ``lambda_2`` and a bound of all the others. :func:`~symdecomp.analysis.block_values.structural_values`
 gives every value (O(k) blocks); here the crease block, the last modes and the sine blocks ``j <= head`` are read
 exactly as there (equal values joined exactly), and the sine blocks ``j > head`` are bounded together. Their eigenvalues

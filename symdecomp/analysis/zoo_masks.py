@@ -84,7 +84,7 @@ def _largest_of_spectrum(blocks: ZooBlocks, digits: int, depth: int, mesh: str) 
     """The largest eigenvalue in modulus at frequency 1, read from the whole spectrum (every block factored)."""
     spectrum = spectrum_of_blocks(blocks, digits=digits, exact=False, depth=depth, mesh=mesh)
     first = [e for e in spectrum.eigenvalues if 1 in e.frequencies]
-    value = max(first, key=lambda e: float(e.value.abs_upper())).value  # type: ignore[attr-defined]  # balls are flint.acb
+    value = max(first, key=lambda e: float(e.value.abs_upper())).value  # balls are flint.acb
     assert isinstance(value, flint.acb)
     return value
 

@@ -203,7 +203,7 @@ def check_regular(scheme: Scheme, multiplicity: int) -> CheckResult:
     r = second_order_eigenstructure(scheme, n)
     frequencies = sp.FiniteSet(*(e.frequency for e in r.mu))
     steps = (Step(f"The eigenvalues of largest modulus after 1 and $\\lambda_1$ at $n = {n}$, their frequencies", frequencies),)
-    if r.regime is CurvatureRegime.BOUNDED and r.mu_multiplicity == multiplicity and all(e.exact for e in r.mu):
+    if r.regime is CurvatureRegime.BOUNDED and r.mu_multiplicity == multiplicity and all(r.compared(e).exact for e in r.mu):
         return CheckResult(Status.VERIFIED, Text(f"at n = {n}: ", eq(sp.Abs(MU), lambda_1**2), " exactly (",
                                                  eq(lambda_1**2, _number(abs(r.lambda1) ** 2)), "), at the frequencies ", frequencies,
                                                  f" with multiplicity {r.mu_multiplicity}: the curvature is bounded"),

@@ -5,7 +5,7 @@
 characteristic map proved regular and injective for every n by exact signs in cos(2 pi/n) where that closes.
 
 ``symdecomp c1 --boundary --k 1:16`` (``--corner``, ``--crease K1,K2``): Zorin's conditions at boundary, corner and
-crease vertices (:mod:`symdecomp.verify.c1_sharp`), per number of faces ``k``, with the scheme's ``[sharp]`` rules.
+crease vertices (:mod:`symdecomp.verify.c1_sector_matrix`), per number of faces ``k``, with the scheme's ``[sharp]`` rules.
 """
 
 from __future__ import annotations
@@ -245,13 +245,13 @@ def _vertex(item: tuple, scheme: Scheme):
 
 
 def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
-    from symdecomp.verify.c1_dart import c1_dart_test
-    from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
+    from symdecomp.verify.c1_closed_fan import c1_dart_test
+    from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
 
     if item[0] == "dart":
         r = c1_dart_test(scheme, item[1], max_depth=max_depth)
     else:
-        r = c1_sharp_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
+        r = c1_mirror_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
     return _Row(r.n, r.verdict, r.reason, r.as_json(), r.vertex)
 
 
@@ -292,7 +292,7 @@ def _sharp_items(args) -> list[tuple] | None:
 
 def _check_dart_faces(args) -> None:
     """A dart's matrix is dense (no mirror blocks): valences 3 to :data:`MAP_FACES`; its map is not drawn."""
-    from symdecomp.verify.c1_sharp_blocks import MAP_FACES
+    from symdecomp.verify.c1_mirror_blocks import MAP_FACES
 
     if min(args.faces) < 3 or max(args.faces) > MAP_FACES:
         raise InvalidInputError(f"--k: a dart's valence is 3 to {MAP_FACES}, got {args.faces[0]}:{args.faces[-1]}")
@@ -302,7 +302,7 @@ def _check_dart_faces(args) -> None:
 
 def _refuse_dense_past_map_faces(args, faces: int) -> None:
     """What only the dense matrices give (a corner's --angle, the map --plot draws) is refused past their faces."""
-    from symdecomp.verify.c1_sharp_blocks import MAP_FACES
+    from symdecomp.verify.c1_mirror_blocks import MAP_FACES
 
     if faces <= MAP_FACES:
         return

@@ -65,6 +65,7 @@ from symdecomp.analysis.characteristic import (
     ring_layout,
 )
 from symdecomp.analysis.defective import jordan_block_size
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -72,7 +73,7 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["Eigen", "SpectralResult", "spectral_conditions", "ball_text", "float_down", "round_down", "real_at", "quadratic_roots",
+__all__ = ["block_root", "SpectralResult", "spectral_conditions", "ball_text", "float_down", "round_down", "real_at", "quadratic_roots",
            "exact_entry", "exact_charpoly", "frequency_zero_eigenvalues", "other_frequency_eigenvalues", "shared_root", "sibling_values"]
 
 _X = sp.Symbol("x")
@@ -104,25 +105,15 @@ def round_down(x: float, digits: int = 4) -> float:
     return math.floor(x * scale) / scale
 
 
-@dataclass(frozen=True)
-class Eigen:
-    """An eigenvalue (ball) of the 2-ring matrix with the frequency it comes from: a root of one frequency block.
-
-    Not :class:`~symdecomp.analysis.eigenvalue.Eigenvalue` (a distinct eigenvalue of the matrix, its multiplicity
-    algebraic): the test reasons block by block, and roots of different blocks that tie are what it must examine."""
-
-    value: flint.acb
-    frequency: int
-    #: Number of copies in the full matrix (frequencies ``j`` and ``n - j``).
-    multiplicity: int
-    #: A double root of the Eq. 43 block with a Jordan block (geometric multiplicity 1).
-    defective: bool = False
-    #: Index of the root within its block (0: the larger in modulus).
-    root: int = 0
-    #: One of two complex conjugate roots of the same block (real trace and determinant): equal moduli.
-    pair: bool = False
-    #: A double root of ``M_j`` (``j != 0``), shown exactly (discriminant 0 in ``Q(e^{2 pi i/n})``).
-    double: bool = False
+def block_root(value: flint.acb, frequency: int, multiplicity: int, n: int | None = None, *, index: int = 0,
+               conjugate: bool = False, defective: bool = False, double: bool = False) -> Eigenvalue:
+    """A root of the frequency block ``j`` (a ball), the one eigenvalue type: ``multiplicity`` counts its copies in the full
+    matrix (frequencies ``j`` and ``n - j``, both in ``frequencies`` when ``n`` is given and they differ); ``index``: 0 the
+    larger root of the block in modulus; ``defective``: a Jordan block of size 2. The test reasons block by block, and
+    roots of different blocks that tie are what it must examine."""
+    frequencies = (frequency,) if n is None or 2 * frequency % n == 0 else (frequency, n - frequency)
+    return Eigenvalue(value, "", multiplicity, frequencies=frequencies, index=index,
+                      jordan=(2,) if defective else None, conjugate=conjugate, double=double)
 
 
 @dataclass(frozen=True)
@@ -134,7 +125,7 @@ class SpectralResult:
     status: C1Verdict
     reason: str
     #: The subdominant eigenvalue (``None`` if not determined).
-    subdominant: Eigen | None = None
+    subdominant: Eigenvalue | None = None
     #: Lower bound of ``|lambda| - max |other eigenvalue|`` (``None`` unless ``status`` is ``C1``).
     gap: float | None = None
     #: Upper bound of the largest modulus of the other eigenvalues.
@@ -238,7 +229,7 @@ def _ball(x: Cyclotomic) -> flint.acb:
     return to_acb(x, flint.ctx.prec)
 
 
-def frequency_zero_eigenvalues(scheme: Scheme, n: int) -> tuple[list[Eigen], str | None]:
+def frequency_zero_eigenvalues(scheme: Scheme, n: int) -> tuple[list[Eigenvalue], str | None]:
     """The non-unit eigenvalues of the frequency-0 block (exact where it matters); a failure reason if 1 is not simple."""
     p, q = _frequency_zero_quotient(scheme, n)
     if q is None:
@@ -246,22 +237,22 @@ def frequency_zero_eigenvalues(scheme: Scheme, n: int) -> tuple[list[Eigen], str
     if sum(q[1:], q[0] + 1) == 0:
         return [], "the eigenvalue 1 is not simple: it is a double root of the frequency-0 block (Eq. 43)"
     if len(q) == 1:
-        return [Eigen(-_ball(q[0]), 0, 1)], None
+        return [block_root(-_ball(q[0]), 0, 1)], None
     b, c = q
     disc = b * b - 4 * c
     if disc == 0:
         mu = _rational(-b / 2)
         defective = mu is not None and jordan_block_size(scheme, n, mu) == 2  # Jordan blocks: rational roots only
-        return [Eigen(_ball(-b / 2), 0, 2, defective=defective)], None
+        return [block_root(_ball(-b / 2), 0, 2, defective=defective)], None
     r1, r2 = quadratic_roots(-_ball(b), _ball(c))
     real = _rational(disc)
     pair = real is not None and real < 0  # a rational negative discriminant: conjugate roots
     if not pair and disc == disc.conjugate():  # real: conjugate roots iff negative
         pair = bool(_ball(disc).real < 0)
-    return [Eigen(r1, 0, 1, root=0, pair=pair), Eigen(r2, 0, 1, root=1, pair=pair)], None
+    return [block_root(r1, 0, 1, index=0, conjugate=pair), block_root(r2, 0, 1, index=1, conjugate=pair)], None
 
 
-def other_frequency_eigenvalues(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigen], list[tuple[int | None, flint.arb]]]:
+def other_frequency_eigenvalues(scheme: Scheme, n: int, *, outer: bool = True) -> tuple[list[Eigenvalue], list[tuple[int | None, flint.arb]]]:
     """The eigenvalues of ``M_j`` (``0 < j <= n/2``) and the bounds of the outer blocks ``S_j`` (none with ``outer=False``).
 
     The outer bound is one entry ``(None, radius)`` for every frequency when the outer block has the
@@ -276,23 +267,23 @@ def other_frequency_eigenvalues(scheme: Scheme, n: int, *, outer: bool = True) -
         B = blocks(j, k1)
         mult = 1 if 2 * j == n else 2
         if k1 == 1:
-            eigen.append(Eigen(B[0, 0], j, mult))
+            eigen.append(block_root(B[0, 0], j, mult, n))
             continue
         t, d = B[0, 0] + B[1, 1], B[0, 0] * B[1, 1] - B[0, 1] * B[1, 0]
         disc = t * t - 4 * d
         if disc.real.contains(0) and disc.imag.contains(0) and _exact_discriminant_zero(scheme, n, j):
-            eigen.append(Eigen(t / 2, j, 2 * mult, double=True))  # exactly t/2, twice
+            eigen.append(block_root(t / 2, j, 2 * mult, n, double=True))  # exactly t/2, twice
             continue
         r1, r2 = quadratic_roots(t, d)
         pair = real and disc.real < 0  # real trace and determinant: the roots are conjugate
-        eigen += [Eigen(r1, j, mult, root=0, pair=pair), Eigen(r2, j, mult, root=1, pair=pair)]
+        eigen += [block_root(r1, j, mult, n, index=0, conjugate=pair), block_root(r2, j, mult, n, index=1, conjugate=pair)]
     if not outer:
         return eigen, []
     radius = outer_radius(scheme.lattice)
     return eigen, (outer_bounds(scheme, n) if radius is None else [(None, radius)])
 
 
-def _gap_bounds(scheme: Scheme, n: int, outer: list, others: list[Eigen]) -> list[flint.arb]:
+def _gap_bounds(scheme: Scheme, n: int, outer: list, others: list[Eigenvalue]) -> list[flint.arb]:
     """The outer bounds the reported gap is measured against: the per-frequency norm bounds, as the gap has always been.
 
     With the exact outer eigenvalues (``(None, radius)``) the norm bounds are computed only where
@@ -348,11 +339,11 @@ def shared_root(p1: tuple, p2: tuple):
     return _ball(root) if value == 0 else None
 
 
-def sibling_values(eigen: list[Eigen], e: Eigen) -> list[flint.acb]:
-    return [x.value for x in eigen if x.frequency == e.frequency and x.root != e.root and not x.double]
+def sibling_values(eigen: list[Eigenvalue], e: Eigenvalue) -> list[flint.acb]:
+    return [x.value for x in eigen if x.frequency == e.frequency and x.index != e.index and not x.double]
 
 
-def _exact_tie(scheme: Scheme, n: int, eigen: list[Eigen], dom: Eigen, e: Eigen) -> str | None:
+def _exact_tie(scheme: Scheme, n: int, eigen: list[Eigenvalue], dom: Eigenvalue, e: Eigenvalue) -> str | None:
     """``'equal'`` if ``e`` is exactly ``dom``'s value, ``'opposite'`` if it is exactly ``-dom``, ``None`` if not shown.
 
     Exact in ``Q(e^{2 pi i / n})``: the blocks' characteristic polynomials (for ``-dom`` the one of
@@ -379,10 +370,10 @@ def _exact_tie(scheme: Scheme, n: int, eigen: list[Eigen], dom: Eigen, e: Eigen)
     return None
 
 
-def _ties(scheme: Scheme, n: int, eigen: list[Eigen], dom: Eigen, top: flint.arb):
+def _ties(scheme: Scheme, n: int, eigen: list[Eigenvalue], dom: Eigenvalue, top: flint.arb):
     """The other eigenvalues whose modulus is not certainly below ``|dom|``, split by :func:`_exact_tie`."""
     # the conjugate of a non-real root of the same block has the same modulus: compare the pair as one
-    others = [e for e in eigen if e is not dom and not (dom.pair and e.pair and e.frequency == dom.frequency)]
+    others = [e for e in eigen if e is not dom and not (dom.conjugate and e.conjugate and e.frequency == dom.frequency)]
     close = [e for e in others if not abs(e.value) < top]
     kinds = {id(e): _exact_tie(scheme, n, eigen, dom, e) for e in close}
     split = {kind: [e for e in close if kinds[id(e)] == kind] for kind in ("equal", "opposite", None)}
@@ -426,12 +417,12 @@ def spectral_conditions(scheme: Scheme, n: int, *, one_ring: bool = False) -> Sp
         return SpectralResult(n, C1Verdict.NOT_C1, failure, dom)
     second = max([abs(e.value) for e in others] + _gap_bounds(scheme, n, outer, others), key=lambda x: x.upper())
     gap = float_down((top - second).lower())
-    if dom.pair:
+    if dom.conjugate:
         return SpectralResult(
             n, C1Verdict.NOT_C1, f"the largest eigenvalues after 1 are the complex conjugate pair {ball_text(dom.value)} at "
             f"frequency {dom.frequency}: the subdominant eigenvalue is not real", dom, gap, float(second.upper()),
         )
-    if dom.frequency == 0 or 2 * dom.frequency == n:
+    if dom.frequency == 0 or 2 * dom.frequencies[0] == n:
         return SpectralResult(n, C1Verdict.NOT_C1, _symmetric_failure(eigen, dom, n), dom, gap, float(second.upper()))
     return _real_subdominant(scheme, n, dom, gap, float(second.upper()))
 
@@ -451,7 +442,7 @@ def _outer_failure(j: int | None, bound: flint.arb, top: flint.arb, n: int) -> S
     )
 
 
-def _tie_failure(dom: Eigen, ties: dict, n: int) -> str | None:
+def _tie_failure(dom: Eigenvalue, ties: dict, n: int) -> str | None:
     """Why exact ties make ``lambda`` fail: multiplicity above 2, or a different eigenvalue of the same modulus."""
     lam = ball_text(dom.value)
     if ties["equal"]:
@@ -459,7 +450,7 @@ def _tie_failure(dom: Eigen, ties: dict, n: int) -> str | None:
         total = dom.multiplicity + sum(e.multiplicity for e in ties["equal"])
         return (f"the largest eigenvalue after 1, {lam}, is exactly the same at frequencies {where}: "
                 f"multiplicity {total}, not 2")
-    if dom.double and 0 < 2 * dom.frequency < n:
+    if dom.double and 0 < 2 * dom.frequencies[0] < n:
         return (f"the largest eigenvalue after 1, {lam}, is a double root of the frequency-{dom.frequency} block "
                 f"(discriminant exactly 0), so with its copy at the conjugate frequency it has multiplicity {dom.multiplicity}, not 2")
     if ties["opposite"]:
@@ -469,7 +460,7 @@ def _tie_failure(dom: Eigen, ties: dict, n: int) -> str | None:
     return None
 
 
-def _symmetric_failure(eigen: list[Eigen], dom: Eigen, n: int) -> str:
+def _symmetric_failure(eigen: list[Eigenvalue], dom: Eigenvalue, n: int) -> str:
     """Why a dominant eigenvalue at frequency 0 or ``n/2`` fails (its eigenvectors are the same up to sign in every sector)."""
     tangent = max((e for e in eigen if e.frequency == 1), key=lambda e: abs(e.value).mid())
     if dom.defective:
@@ -483,7 +474,7 @@ def _symmetric_failure(eigen: list[Eigen], dom: Eigen, n: int) -> str:
             f"exceeds the frequency-1 (tangent-plane) eigenvalue {ball_text(tangent.value)}")
 
 
-def _real_subdominant(scheme: Scheme, n: int, dom: Eigen, gap: float, second: float) -> SpectralResult:
+def _real_subdominant(scheme: Scheme, n: int, dom: Eigenvalue, gap: float, second: float) -> SpectralResult:
     """The verdict once ``dom`` (frequency ``0 < j < n/2``) is strictly dominant: C1 iff it is certainly real and simple."""
     if dom.value.imag.contains(0) and real_at(scheme, n):
         B = frequency_block(scheme, n, dom.frequency)

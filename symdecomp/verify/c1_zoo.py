@@ -31,12 +31,13 @@ import flint
 import sympy as sp
 
 from symdecomp.analysis.display import NotebookDisplay
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.errors import InvalidSchemeError, UnavailableError
 from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import J, M, N, StencilScheme
 from symdecomp.validate import check_bits, check_depth
 from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify_ring
-from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, round_down
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["DUAL_METHOD", "ZORIN_TOPOLOGY", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
@@ -168,7 +169,7 @@ def spline_route(scheme: StencilScheme) -> str | None:
     return None
 
 
-def _verdict(ring: RingCertificate, lam: Eigen, gap: float | None) -> tuple[C1Verdict, str]:
+def _verdict(ring: RingCertificate, lam: Eigenvalue, gap: float | None) -> tuple[C1Verdict, str]:
     """The verdict from the certified ring once the spectral conditions hold (as :func:`symdecomp.verify.c1.c1_test`)."""
     if ring.status == "changes":
         return C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({ring.where}): it is not regular"

@@ -90,7 +90,7 @@ def _characteristic(scheme: StencilScheme, n: int) -> SpectralResult | str | tup
     nb = zm.neighbourhood
     where, spoke = wedge_points(nb.mesh, nb.start, NET_DEPTH)
     s0, s1 = nb.labels[where[(1, 0)]][0], nb.labels[spoke][0]
-    rho = flint.acb(flint.fmpq(2 * spectral.subdominant.frequency * (s1 - s0), n)).exp_pi_i()
+    rho = flint.acb(flint.fmpq(2 * spectral.subdominant.frequencies[0] * (s1 - s0), n)).exp_pi_i()
     return spectral, WedgeNet({q: points[v] for q, v in where.items()}, rho)
 
 

@@ -3,14 +3,14 @@
 For each :class:`~symdecomp.analysis.mesh_kinds.NeighbourhoodKind` of a mesh (a few dozen in a mesh of a
 million faces) :func:`kind_verdict` gives the certified C1 verdict (Reif's test at a smooth vertex of valence
 ``n``, :func:`~symdecomp.verify.c1.c1_test`; Zorin's conditions per sector at a boundary, crease or corner
-vertex, :func:`~symdecomp.verify.c1_sharp.c1_sharp_test`) and, at smooth vertices, the curvature regime of
+vertex, :func:`~symdecomp.verify.c1_sector_matrix.c1_sharp_test`) and, at smooth vertices, the curvature regime of
 the artifact indicators (:func:`~symdecomp.verify.artifacts.artifact_indicators`: bounded, zero, unbounded).
 Where a test does not apply (a scheme with free parameters) the verdict is ``n/a`` and the reason is kept.
 
 **Darts** (one sharp edge ends at an interior vertex; OpenSubdiv keeps the smooth vertex rule there) get a verdict of
 their own (:func:`dart_verdict`). A semi-sharp dart is smooth from level ``ceil(s)`` on, so Reif's test at its valence
 decides, as for a semi-sharp crease (and so does the curvature regime at that valence). An infinitely sharp dart is
-judged by Reif's test on its closed fan cut by one sharp ray (:func:`~symdecomp.verify.c1_dart.c1_dart_test`): the
+judged by Reif's test on its closed fan cut by one sharp ray (:func:`~symdecomp.verify.c1_closed_fan.c1_dart_test`): the
 exact spectrum of its 1-ring matrix (``check --k N --dart --certify`` proves that spectrum; ``not-c1`` when the
 eigenvalue 1 is not simple and strictly dominant), then the characteristic map's regularity and winding number.
 
@@ -58,7 +58,7 @@ def _check_kind(kind) -> NeighbourhoodKind:
 
 def _c1(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
     from symdecomp.verify.c1 import c1_test
-    from symdecomp.verify.c1_sharp import c1_sharp_test
+    from symdecomp.verify.c1_sector_matrix import c1_sharp_test
 
     try:
         if kind.name == "smooth":
@@ -85,8 +85,8 @@ def dart_verdict(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
 
 
 def _dart_spectral(scheme: Scheme, kind: NeighbourhoodKind) -> tuple[str, str]:
-    """An infinitely sharp dart: Reif's test on its closed fan (:func:`~symdecomp.verify.c1_dart.c1_dart_test`)."""
-    from symdecomp.verify.c1_dart import c1_dart_test
+    """An infinitely sharp dart: Reif's test on its closed fan (:func:`~symdecomp.verify.c1_closed_fan.c1_dart_test`)."""
+    from symdecomp.verify.c1_closed_fan import c1_dart_test
 
     try:
         r = c1_dart_test(scheme, kind.faces)

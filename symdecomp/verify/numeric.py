@@ -428,7 +428,7 @@ class SharpNumericRow:
 
 def _matrix_values(scheme, vertex, prec: int) -> list:
     from symdecomp.schemes.sector import sharp_subdivision_matrix
-    from symdecomp.verify.c1_sharp_spectrum import ball_matrix
+    from symdecomp.verify.mirror_parts import ball_matrix
 
     S = sharp_subdivision_matrix(scheme, vertex)
     with flint.ctx.workprec(prec):

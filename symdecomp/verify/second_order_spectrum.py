@@ -33,13 +33,14 @@ weights outside the cyclotomic field raise :class:`~symdecomp.errors.NotApplicab
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import flint
 
 from symdecomp.algebra.cyclotomic import CyclotomicField
 from symdecomp.analysis.characteristic import check_applicable, outer_charpoly
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_limit, check_valence
@@ -55,41 +56,22 @@ from symdecomp.verify.c1_spectrum import (
 )
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["SecondOrderEigenvalue", "CurvatureResult", "second_order_eigenstructure", "dominant_frequency", "dominant_part"]
+__all__ = ["SquareComparison", "CurvatureResult", "second_order_eigenstructure", "dominant_frequency", "dominant_part"]
 
 #: Working precisions (bits): the second is tried only when the first leaves the regime undecided.
 PRECISIONS = (128, 512)
 
 
 @dataclass(frozen=True)
-class SecondOrderEigenvalue:
-    """An eigenvalue of the 2-ring matrix after ``1`` and ``lambda_1``, compared with ``lambda_1^2``.
+class SquareComparison:
+    """How an eigenvalue after ``1`` and ``lambda_1`` compares with ``lambda_1^2`` in modulus (the eigenvalue itself is an
+    :class:`~symdecomp.analysis.eigenvalue.Eigenvalue`: a root of one frequency block, those of several frequencies with
+    equal moduli kept apart, since which frequencies give ``mu`` is the regime's cause)."""
 
-    A root of one frequency block (as :class:`~symdecomp.verify.c1_spectrum.Eigen`) with the outcome of a comparison,
-    not a distinct eigenvalue of the matrix (:class:`~symdecomp.analysis.eigenvalue.Eigenvalue`): roots of several
-    frequencies with equal moduli are kept apart, since which frequencies give ``mu`` is the regime's cause.
-    """
-
-    #: An Arb ball around it.
-    value: flint.acb
-    #: Its frequency ``j <= n/2`` (``None``: the outer blocks, the same at every frequency).
-    frequency: int | None
-    #: Copies in the full matrix (frequencies ``j`` and ``n - j``; ``n`` for the outer blocks).
-    multiplicity: int
-    #: The paper's name of the frequency: elliptic (0), tangent (1), hyperbolic (2), ...
-    kind: str
     #: The sign of ``|value| - lambda_1^2`` (``None``: not decided).
-    comparison: int | None
-    #: ``comparison == 0`` was shown exactly (in the cyclotomic field).
+    sign: int | None
+    #: ``sign == 0`` was shown exactly (in the cyclotomic field).
     exact: bool = False
-    #: A double root of the frequency-0 block with a Jordan block.
-    defective: bool = False
-    #: One of a complex conjugate pair of the same block.
-    pair: bool = False
-
-    def as_json(self) -> dict:
-        return {"value": ball_text(self.value, 10), "frequency": self.frequency, "multiplicity": self.multiplicity,
-                "kind": self.kind, "comparison": self.comparison, "exact": self.exact, "complex": self.pair}
 
 
 @dataclass(frozen=True)
@@ -105,14 +87,30 @@ class CurvatureResult:
     #: The frequency of ``lambda_1`` (1 for the schemes in use).
     lambda1_frequency: int | None = None
     #: The eigenvalues of largest modulus after ``1`` and ``lambda_1`` (several when they are not separated).
-    mu: tuple[SecondOrderEigenvalue, ...] = ()
-    #: Every eigenvalue after ``1`` and ``lambda_1``, largest modulus first.
-    eigenvalues: tuple[SecondOrderEigenvalue, ...] = ()
+    mu: tuple[Eigenvalue, ...] = ()
+    #: Every eigenvalue after ``1`` and ``lambda_1``, largest modulus first: Arb balls, the block's frequency first in
+    #: ``frequencies`` (none for the outer blocks, the same at every frequency), copies in the full matrix.
+    eigenvalues: tuple[Eigenvalue, ...] = ()
+    #: Each eigenvalue's comparison with ``lambda_1^2``, in the order of ``eigenvalues``.
+    comparisons: tuple[SquareComparison, ...] = ()
+
+    def compared(self, e: Eigenvalue) -> SquareComparison:
+        """The comparison of ``e`` (one of ``eigenvalues``, or of ``mu``) with ``lambda_1^2``."""
+        return next(c for x, c in zip(self.eigenvalues, self.comparisons) if x is e)
+
+    def kind(self, e: Eigenvalue) -> str:
+        """The paper's name of ``e``'s frequency: elliptic (0), tangent (1), hyperbolic (2), ..."""
+        return frequency_kind(e.frequency, self.n)
+
+    def eigenvalue_json(self, e: Eigenvalue) -> dict:
+        c = self.compared(e)
+        return {"value": ball_text(e.value, 10), "frequency": e.frequency, "multiplicity": e.multiplicity,
+                "kind": self.kind(e), "comparison": c.sign, "exact": c.exact, "complex": e.conjugate}
 
     @property
     def cause(self) -> str:
         """The part of the surface that decides the regime: the kinds (frequencies) of ``mu``."""
-        return ", ".join(dict.fromkeys(e.kind for e in self.mu))
+        return ", ".join(dict.fromkeys(self.kind(e) for e in self.mu))
 
     @property
     def mu_multiplicity(self) -> int:
@@ -124,8 +122,8 @@ class CurvatureResult:
             "n": self.n, "regime": self.regime.value, "reason": self.reason, "cause": self.cause,
             "lambda1": None if lam is None else ball_text(lam, 10),
             "lambda1_squared": None if lam is None else ball_text(abs(lam) ** 2, 10),
-            "mu": [e.as_json() for e in self.mu], "mu_multiplicity": self.mu_multiplicity,
-            "eigenvalues": [e.as_json() for e in self.eigenvalues[:8]],
+            "mu": [self.eigenvalue_json(e) for e in self.mu], "mu_multiplicity": self.mu_multiplicity,
+            "eigenvalues": [self.eigenvalue_json(e) for e in self.eigenvalues[:8]],
         }
 
 
@@ -194,7 +192,7 @@ def _compare(modulus: flint.arb, lam_sq: flint.arb) -> int | None:
     return 1 if modulus > lam_sq else None
 
 
-def _eigenvalues(scheme: Scheme, n: int, dom) -> list[SecondOrderEigenvalue]:
+def _eigenvalues(scheme: Scheme, n: int, dom) -> list[tuple[Eigenvalue, SquareComparison]]:
     """Every eigenvalue after 1 and ``lambda_1`` (``dom``), compared with ``lambda_1^2`` (exactly on a tie)."""
     inner = frequency_zero_eigenvalues(scheme, n)[0] + other_frequency_eigenvalues(scheme, n, outer=False)[0]
     lam_sq = dom.value * dom.value
@@ -203,67 +201,67 @@ def _eigenvalues(scheme: Scheme, n: int, dom) -> list[SecondOrderEigenvalue]:
     others = [s * s for s in sibling_values(inner, dom)]
     out = []
     for e in inner:
-        if e.frequency == dom.frequency and e.root == dom.root:
+        if e.frequency == dom.frequency and e.index == dom.index:
             continue
         comparison, exact = _compare(abs(e.value), abs(lam_sq)), False
         defective = e.defective
         if comparison is None and e.double:
             exact, defective = _double_root_tie(scheme, n, e.frequency, square)
             comparison = 0 if exact else None
-        elif comparison is None and not e.pair:
+        elif comparison is None and not e.conjugate:
             q = exact_charpoly(scheme, n, e.frequency)
             exact = _exact_square_tie(square, others, lam_sq, q, e.value, sibling_values(inner, e))
             comparison = 0 if exact else None
-        out.append(SecondOrderEigenvalue(e.value, e.frequency, e.multiplicity, frequency_kind(e.frequency, n),
-                                         comparison, exact, defective, e.pair))
+        out.append((replace(e, text=ball_text(e.value, 10), jordan=(2,) if defective else None), SquareComparison(comparison, exact)))
     field = CyclotomicField(2 * n)
     for ball, rational, multiplicity in _outer_eigenvalues(scheme, n):
         comparison, exact = _compare(abs(ball), abs(lam_sq)), False
         if comparison is None and rational is not None:
             exact = _exact_square_tie(square, others, lam_sq, (field(-rational),), ball, [])
             comparison = 0 if exact else None
-        out.append(SecondOrderEigenvalue(ball, None, multiplicity, frequency_kind(None, n), comparison, exact))
-    return sorted(out, key=lambda e: -abs(e.value).mid())
+        out.append((Eigenvalue(ball, ball_text(ball, 10), multiplicity), SquareComparison(comparison, exact)))
+    return sorted(out, key=lambda e: -abs(e[0].value).mid())
 
 
-def _mu_text(mu: tuple[SecondOrderEigenvalue, ...], n: int) -> str:
+def _mu_text(mu: list[tuple[Eigenvalue, SquareComparison]], n: int) -> str:
     """``mu`` in words: its value(s), frequencies, multiplicity; complex, negative, or not separated."""
     parts = []
-    for e in mu:
-        where = "the outer blocks" if e.frequency is None else f"frequency {e.frequency} ({e.kind})"
-        note = ", complex" if e.pair else (", negative" if e.value.real < 0 else "")
+    for e, _ in mu:
+        where = "the outer blocks" if e.frequency is None else f"frequency {e.frequency} ({frequency_kind(e.frequency, n)})"
+        note = ", complex" if e.conjugate else (", negative" if e.value.real < 0 else "")
         parts.append(f"{ball_text(e.value)} at {where}, multiplicity {e.multiplicity}{note}")
     joined = "; ".join(parts)
-    if len(mu) > 1 and not all(e.exact for e in mu):
+    if len(mu) > 1 and not all(c.exact for _, c in mu):
         return f"mu not separated in modulus among: {joined}"
     return f"mu = {joined}" if len(mu) == 1 else f"mu at several frequencies (exactly equal moduli): {joined}"
 
 
-def _decide(n: int, dom, eigen: list[SecondOrderEigenvalue]) -> CurvatureResult:
+def _decide(n: int, dom, eigen: list[tuple[Eigenvalue, SquareComparison]]) -> CurvatureResult:
     top = eigen[0]
-    mu = tuple(e for e in eigen if not abs(e.value) < abs(top.value))
-    signs = [e.comparison for e in eigen]
+    mu = [(e, c) for e, c in eigen if not abs(e.value) < abs(top[0].value)]
+    signs = [c.sign for _, c in eigen]
     if 1 in signs:
         comparison = 1
     elif None in signs:
         comparison = None
     else:
         comparison = 0 if 0 in signs else -1
-    defective = any(e.defective and e.comparison == 0 for e in eigen)
+    defective = any(e.defective and c.sign == 0 for e, c in eigen)
     regime = curvature_regime(comparison, defective=defective)
     lam_sq = ball_text(abs(dom.value) ** 2)
     if comparison is None:
-        open_ = next(e for e in eigen if e.comparison is None)
+        open_ = next(e for e, c in eigen if c.sign is None)
         why = f"|{ball_text(open_.value)}| (frequency {open_.frequency}) is not separated from lambda_1^2 = {lam_sq}"
     else:
         rel = {1: ">", 0: "=", -1: "<"}[comparison]
         how = " (exactly)" if comparison == 0 else ""
         why = f"{_mu_text(mu, n)}; |mu| {rel} lambda_1^2 = {lam_sq}{how}"
-        if comparison == 1 and top.comparison != 1:  # pragma: no cover - the largest modulus decides first
+        if comparison == 1 and top[1].sign != 1:  # pragma: no cover - the largest modulus decides first
             why += " (another eigenvalue exceeds lambda_1^2)"
     if defective:
         why += "; mu has a Jordan block"
-    return CurvatureResult(n, regime, f"{REGIME_TEXT[regime]}: {why}", dom.value, dom.frequency, mu, tuple(eigen))
+    return CurvatureResult(n, regime, f"{REGIME_TEXT[regime]}: {why}", dom.value, dom.frequency, tuple(e for e, _ in mu),
+                           tuple(e for e, _ in eigen), tuple(c for _, c in eigen))
 
 
 @cached(maxsize=512, n=check_valence)
@@ -285,7 +283,7 @@ def second_order_eigenstructure(scheme: Scheme, n: int) -> CurvatureResult:
 
     >>> from symdecomp.schemes.loop import loop
     >>> r = second_order_eigenstructure(loop(), 5)
-    >>> r.regime.value, r.cause, r.mu[0].exact
+    >>> r.regime.value, r.cause, r.compared(r.mu[0]).exact
     ('bounded', 'elliptic', True)
     """
     n = check_scheme(scheme).fitting_valence(check_limit(check_valence(n), "second_order_eigenstructure(n)", "valence n"))

@@ -156,7 +156,7 @@ def _elliptic_eigenvalue(scheme: Scheme, n: int) -> Eigenvalue:
         raise _Undecided(failure)
     eigen = sorted(eigen, key=lambda e: -abs(e.value).mid())
     top = eigen[0]
-    if top.pair or not top.value.imag.contains(0):
+    if top.conjugate or not top.value.imag.contains(0):
         raise _Undecided(f"the largest frequency-0 eigenvalue after 1 is not real ({ball_text(top.value)}): no elliptic eigenfunction")
     if top.multiplicity != 1 or top.defective:
         raise _Undecided(f"the largest frequency-0 eigenvalue after 1, {ball_text(top.value)}, is a double root: its eigenfunction is not one")

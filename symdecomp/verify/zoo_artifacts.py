@@ -171,7 +171,7 @@ def _lambda1(n: int, values: tuple[Eigenvalue, ...]) -> tuple[Eigenvalue | None,
     lam = values[1]
     if exact_sign(lam, values[2], n) != 1:
         return None, f"lambda_1 = {lam.text} is not strictly dominant in modulus after 1"
-    if lam.multiplicity != 2 or set(lam.frequencies) != {1 % n, (n - 1) % n} or lam.value.imag != 0:  # type: ignore[attr-defined]
+    if lam.multiplicity != 2 or set(lam.frequencies) != {1 % n, (n - 1) % n} or lam.value.imag != 0:
         return None, f"lambda_1 = {lam.text} is not real and double at frequencies 1 and n - 1"
     return lam, ""
 

@@ -33,7 +33,7 @@ from symdecomp.schemes.neighbourhood import Neighbourhood
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.verify.c1_dual import DualNeighbourhood
-from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, float_down
+from symdecomp.verify.c1_spectrum import SpectralResult, block_root, float_down
 from symdecomp.verify.c1_zoo import ZooNeighbourhood
 from symdecomp.verify.result import C1Verdict
 
@@ -79,7 +79,7 @@ def spectral_conditions(spectrum: RingSpectrum, n: int) -> SpectralResult:
                               f"of one pair of frequencies j, n - j (its frequencies: {', '.join(map(str, pair))})",
                               second=float(bound))
     with flint.ctx.workprec(EIGENVECTOR_BITS):  # the exact value as a narrow ball: the eigenvector is solved with it
-        eigen = Eigen(flint.acb(compile_expression(sp.re(lam.exact), (), "arb")()), pair[0], 2)
+        eigen = block_root(flint.acb(compile_expression(sp.re(lam.exact), (), "arb")()), pair[0], 2, n)
     return SpectralResult(n, C1Verdict.C1, "spectral conditions hold", eigen, float_down(gap), float(bound))
 
 
@@ -109,12 +109,12 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     return ZooNeighbourhood(mesh, points, spectral)
 
 
-def characteristic_points(zm: ZooMatrix, subdominant: Eigen) -> dict[int, flint.acb] | None:
+def characteristic_points(zm: ZooMatrix, subdominant: Eigenvalue) -> dict[int, flint.acb] | None:
     """The characteristic map's control points on ``zm``'s neighbourhood, ``vertex -> complex ball`` (``X(s, c) =
     zeta^(j s) x_c``, module docstring; ``0`` at a centre vertex), or ``None`` if the eigenvector is not solved at this
     precision."""
     n, labels = zm.n, zm.neighbourhood.labels
-    j, lam = subdominant.frequency, subdominant.value
+    j, lam = subdominant.frequencies[0], subdominant.value
     with flint.ctx.workprec(EIGENVECTOR_BITS):  # the control points as narrow balls (the Jacobian's signs are decided on them)
         zeta = [flint.acb(flint.fmpq(2 * j * s, n)).exp_pi_i() for s in range(n)]
         block = zoo_blocks(zm).frequency_matrix()

@@ -81,7 +81,7 @@ def test_darts(capsys):
     """``c1 --dart --k A:B``: Reif's test on the dart's closed fan, the verdict of :func:`c1_dart_test`; bad valences and
     --plot are one-line errors (exit 2)."""
     from symdecomp.schemes.scheme import catmull_clark
-    from symdecomp.verify.c1_dart import c1_dart_test
+    from symdecomp.verify.c1_closed_fan import c1_dart_test
 
     assert main(["c1", "--dart", "--k", "3:4", "--json", "--quiet"]) == 0
     rows = json.loads(capsys.readouterr().out)["rows"]

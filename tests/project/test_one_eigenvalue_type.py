@@ -20,11 +20,8 @@ VALUE_FIELDS = {"value", "ball", "exact", "eigenvalue", "root"}
 #: The one type.
 THE_TYPE = ("analysis/eigenvalue.py", "Eigenvalue")
 
-#: Still there: the verify layer's own eigenvalue types, which are the verify-layer engineer's to absorb (issue 30).
-ALLOWED = {
-    ("verify/c1_spectrum.py", "Eigen"),  # the C1 test's eigenvalue with its frequency and pair
-    ("verify/second_order_spectrum.py", "SecondOrderEigenvalue"),  # the second-order eigenstructure's eigenvalue
-}
+#: Still there: none (the C1 test's roots of one frequency block and the second-order eigenvalues are ``Eigenvalue``).
+ALLOWED: set[tuple[str, str]] = set()
 
 
 def _fields(node: ast.ClassDef) -> set[str]:

@@ -395,3 +395,25 @@ def test_an_undecided_valence_makes_the_claim_undecided_not_an_error(monkeypatch
     monkeypatch.setattr(module, "c1_test", undecided_at_5)
     result = module._c1_reif(catmull_clark())
     assert result.status is Status.UNDECIDED and "n = 5" in str(result.evidence)
+
+
+@pytest.mark.parametrize("name", ["catmull-clark", "loop"])
+@pytest.mark.parametrize("n", [3, 4, 5, 6, 7])
+def test_the_block_roots_are_the_one_eigenvalue_type_and_count_the_one_ring(name, n):
+    """The roots of the frequency blocks (the one type, Eigenvalue) with the eigenvalue 1 are the whole 1-ring spectrum:
+    their copies add up to the size of the 1-ring matrix, each frequency k = 0..n-1 holding one block's roots."""
+    from collections import Counter
+
+    from symdecomp.analysis.eigenvalue import Eigenvalue
+    from symdecomp.schemes.files import load_scheme
+    from symdecomp.schemes.rings import ring_subdivision_matrix
+    from symdecomp.verify.c1_spectrum import frequency_zero_eigenvalues, other_frequency_eigenvalues
+
+    scheme = load_scheme(name)
+    with flint.ctx.workprec(128):
+        eigen = frequency_zero_eigenvalues(scheme, n)[0] + other_frequency_eigenvalues(scheme, n, outer=False)[0]
+    size = len(ring_subdivision_matrix(scheme, n, 1).labels)  # the 1-ring's points, from the mesh's rules
+    assert all(type(e) is Eigenvalue for e in eigen) and 1 + sum(e.multiplicity for e in eigen) == size
+    copies = Counter(k for e in eigen for k in e.frequencies for _ in range(e.multiplicity // len(e.frequencies)))
+    block = (size - 1) // n  # the 1-ring points per sector: each frequency's block has that many roots
+    assert copies == {k: block for k in range(n)}

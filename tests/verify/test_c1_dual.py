@@ -18,7 +18,7 @@ from symdecomp.algebra.compile import compile_expression
 from symdecomp.errors import InvalidMeshError, UnavailableError
 from symdecomp.schemes.stencils import J, KindRules, M, Rule, StencilScheme, Term
 from symdecomp.verify.c1_dual import DualNeighbourhood, biquadratic_to_bicubic, certify_ring, ring_patches
-from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, float_down
+from symdecomp.verify.c1_spectrum import SpectralResult, block_root, float_down
 from symdecomp.verify.c1_zoo import ZooNeighbourhood, c1_dual_test, c1_zoo, corner_weights, regular_corner_weights, spline_route
 from symdecomp.verify.result import C1Verdict
 
@@ -113,7 +113,7 @@ def spectral_result(n, eigen) -> SpectralResult:
     others = [e for e in rest if not (e[1] in (j, n - j) and e[0].overlaps(lam))]
     gap = abs(lam).lower() - max(abs(e[0]).upper() for e in others)
     assert len(one) == 1 and len(rest) - len(others) == 2 and gap > 0 and abs(lam.imag) < 1e-30
-    return SpectralResult(n, C1Verdict.C1, "spectral conditions hold", Eigen(lam, min(j, n - j), 2), float_down(gap))
+    return SpectralResult(n, C1Verdict.C1, "spectral conditions hold", block_root(lam, min(j, n - j), 2, n), float_down(gap))
 
 
 def eigenvector(B, lam):

@@ -16,7 +16,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.verify.c1_sharp import c1_sharp_test
+from symdecomp.verify.c1_sector_matrix import c1_sharp_test
 from symdecomp.verify.c1_spectrum import spectral_conditions
 from symdecomp.verify.result import C1Verdict
 

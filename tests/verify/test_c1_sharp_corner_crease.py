@@ -13,9 +13,10 @@ from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sharp import SharpRules
 from symdecomp.verify.c1 import c1_test
-from symdecomp.verify.c1_sharp import c1_sharp_test, injective_condition
-from symdecomp.verify.c1_sharp_spectrum import mirror_label, sector_eigenvalues, sector_matrices
+from symdecomp.verify.c1_sector_matrix import c1_sharp_test
+from symdecomp.verify.mirror_parts import mirror_label, sector_eigenvalues, sector_matrices
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import injective_condition
 
 CC, LOOP = catmull_clark(), loop()
 

@@ -1,7 +1,7 @@
 """The characteristic map of a sharp sector from the eigenvectors the blocks name, against the dense test (k = 1..12).
 
-The dense test (:func:`~symdecomp.verify.c1_sharp.c1_sharp_test`) finds the subdominant eigenvalues from the mirror
-parts' exact characteristic polynomials; the blocks route (:mod:`symdecomp.verify.c1_sharp_map`) takes them from the
+The dense test (:func:`~symdecomp.verify.c1_sector_matrix.c1_sharp_test`) finds the subdominant eigenvalues from the mirror
+parts' exact characteristic polynomials; the blocks route (:func:`symdecomp.verify.c1_mirror_blocks.map_from_blocks`) takes them from the
 blocks and names the part of each eigenvector by its block's mirror parity. Both must reach the same verdict with the
 same eigenvalues and the same certified opening of the sector's image.
 """
@@ -20,11 +20,10 @@ from symdecomp.analysis.mirror import crease_block
 from symdecomp.cli import main
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES
-from symdecomp.verify.c1_sharp import c1_sharp_test
-from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
-from symdecomp.verify.c1_sharp_fourier import FOURIER_METHOD
-from symdecomp.verify.c1_sharp_map import MAP_METHOD, block_parts
-from symdecomp.verify.c1_sharp_spectrum import NEAR, ball_matrix, mirror_label, sector_eigenvector, sector_matrices, sector_parts
+from symdecomp.verify.c1_mirror_blocks import MAP_METHOD, c1_mirror_blocks
+from symdecomp.verify.c1_sector_matrix import c1_sharp_test
+from symdecomp.verify.fourier_map import FOURIER_METHOD
+from symdecomp.verify.mirror_parts import NEAR, ball_matrix, block_parts, mirror_label, sector_eigenvector, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
 
 SCHEMES = {"cc": sd.catmull_clark, "loop": sd.loop, "cc-blz": lambda: load_scheme("catmull-clark-blz"),
@@ -57,7 +56,7 @@ def test_the_blocks_map_reaches_the_dense_verdict(name, kind, least):
     mapped = 0
     for k in range(1, 13):
         vertex = _vertex(kind, k, scheme.lattice)
-        blocks, dense = c1_sharp_blocks(scheme, vertex), c1_sharp_test(scheme, vertex)
+        blocks, dense = c1_mirror_blocks(scheme, vertex), c1_sharp_test(scheme, vertex)
         _same(blocks, dense)
         mapped += blocks.method in (MAP_METHOD, FOURIER_METHOD)  # from 8 faces on, the closed-form modes' map
     assert mapped >= least
@@ -90,14 +89,14 @@ def test_blz_is_certified_past_the_dense_tests_faces(monkeypatch):
     # the dense test reads at most 32 faces; the map from the blocks' eigenvectors reaches the sector matrix's limit (the
     # closed-form modes' route, taken from 8 faces on, switched off here), and the modes' map goes past it
     scheme = SCHEMES["cc-blz"]()
-    monkeypatch.setattr("symdecomp.verify.c1_sharp_blocks.applies", lambda *args: False)
-    r = c1_sharp_blocks(scheme, sd.SharpVertex.boundary(40, "quad"))
+    monkeypatch.setattr("symdecomp.verify.c1_mirror_blocks.applies", lambda *args: False)
+    r = c1_mirror_blocks(scheme, sd.SharpVertex.boundary(40, "quad"))
     assert r.verdict is C1Verdict.C1 and r.method == MAP_METHOD and r.lambdas == pytest.approx([0.5, 0.5])
     assert r.opening == pytest.approx(1.0, abs=1e-9) and r.jacobian_lower_bound > 0
-    past = c1_sharp_blocks(scheme, sd.SharpVertex.boundary(MAX_DENSE_FACES + 1, "quad"))
+    past = c1_mirror_blocks(scheme, sd.SharpVertex.boundary(MAX_DENSE_FACES + 1, "quad"))
     assert past.verdict is C1Verdict.UNDECIDED and f"built for at most {MAX_DENSE_FACES} faces" in past.reason
     monkeypatch.undo()
-    modes = c1_sharp_blocks(scheme, sd.SharpVertex.boundary(MAX_DENSE_FACES + 1, "quad"))
+    modes = c1_mirror_blocks(scheme, sd.SharpVertex.boundary(MAX_DENSE_FACES + 1, "quad"))
     assert modes.verdict is C1Verdict.C1 and modes.method == FOURIER_METHOD
 
 

@@ -14,7 +14,7 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.analysis.masks import ring_masks
 from symdecomp.errors import NotApplicableError
 from symdecomp.verify.artifacts import artifact_indicators
-from symdecomp.verify.second_order_spectrum import second_order_eigenstructure
+from symdecomp.verify.second_order_spectrum import SquareComparison, second_order_eigenstructure
 
 B, Z, U = CurvatureRegime.BOUNDED, CurvatureRegime.ZERO, CurvatureRegime.UNBOUNDED
 
@@ -37,10 +37,10 @@ def test_loop_outer_divergence_at_3_exact_elliptic_ties_at_4_5_hyperbolic_from_7
 def test_ties_are_exact_and_the_regular_valence_has_mu_three_times():
     for scheme, n in ((catmull_clark(), 4), (loop(), 6)):
         r = second_order_eigenstructure(scheme, n)
-        assert r.regime is B and all(e.exact and e.comparison == 0 for e in r.mu)
+        assert r.regime is B and all(r.compared(e) == SquareComparison(0, True) for e in r.mu)
         assert r.mu_multiplicity == 3 and {e.frequency for e in r.mu} == {0, 2}
     r = second_order_eigenstructure(loop(), 5)  # lambda_1^2 irrational: (3/8 + cos(2 pi/5)/4)^2, an exact tie all the same
-    assert r.mu[0].exact and not r.mu[0].value.contains(flint.fmpq(1, 4))
+    assert r.compared(r.mu[0]).exact and not r.mu[0].value.contains(flint.fmpq(1, 4))
 
 
 def _off_regular(alpha0, beta0, n0=3):
@@ -64,7 +64,7 @@ def _tuned_at_3():
 def test_a_vertex_rule_tuned_to_mu_equal_lambda_1_squared_turns_the_flat_spot_bounded():
     alpha, beta = _tuned_at_3()
     tuned = second_order_eigenstructure(_off_regular(alpha, beta), 3)
-    assert tuned.regime is B and tuned.mu[0].exact and tuned.mu[0].frequency == 0
+    assert tuned.regime is B and tuned.compared(tuned.mu[0]).exact and tuned.mu[0].frequency == 0
     assert second_order_eigenstructure(catmull_clark(), 3).regime is Z
     eps = sp.Rational(1, 1000)
     moved = {second_order_eigenstructure(_off_regular(alpha + d, beta), 3).regime for d in (eps, -eps)}

@@ -1,7 +1,7 @@
 """verify/mesh_verdicts.py at darts: a tagged mesh's dart vertices get a computed C1 verdict (``inspect --json``).
 
 A semi-sharp dart is smooth once its sharpness has decayed, so its verdict is Reif's test at its valence; an infinitely
-sharp dart's verdict comes from Reif's test on its closed fan (``verify/c1_dart.py``): the exact spectrum of its 1-ring
+sharp dart's verdict comes from Reif's test on its closed fan (``verify/c1_closed_fan.py``): the exact spectrum of its 1-ring
 matrix, checked here against sympy's own eigenvectors of the matrix built by exact refinement, then the map."""
 
 import json
@@ -16,7 +16,7 @@ from symdecomp.schemes.meshformats import encode_mesh
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex, exact_sharp_matrix
 from symdecomp.verify.c1 import c1_test
-from symdecomp.verify.c1_dart import c1_dart_test
+from symdecomp.verify.c1_closed_fan import c1_dart_test
 from symdecomp.verify.mesh_verdicts import kind_verdict
 from tests.analysis.test_mesh_limits import grid, idx
 

@@ -1,4 +1,4 @@
-"""verify/c1_dart.py: Reif's test at an infinitely sharp dart (one sharp edge ending at a smooth vertex).
+"""verify/c1_closed_fan.py: Reif's test at an infinitely sharp dart (one sharp edge ending at a smooth vertex).
 
 The spectral facts are checked against sympy on the exact matrix built by refinement; the characteristic map's verdict
 against mutations (an eigenvector of the wrong eigenvalue, another weight of the dart's vertex rule)."""
@@ -12,8 +12,8 @@ from symdecomp.errors import InvalidValenceError
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.verify.c1_dart import _shift, c1_dart_test, dart_map, dart_spectrum, dart_vectors
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_matrices
+from symdecomp.verify.c1_closed_fan import _shift, c1_dart_test, dart_map, dart_spectrum, dart_vectors
+from symdecomp.verify.mirror_parts import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.result import C1Verdict
 
 

@@ -1,5 +1,5 @@
-"""BLZ's subdominant eigenvectors in closed form (:mod:`symdecomp.verify.c1_sharp_modes`) and the map from them on a few
-faces per k (:mod:`symdecomp.verify.c1_sharp_fourier`), against the sector's exact matrix and the null-vector route."""
+"""BLZ's subdominant eigenvectors in closed form (:mod:`symdecomp.verify.fourier_modes`) and the map from them on a few
+faces per k (:mod:`symdecomp.verify.fourier_map`), against the sector's exact matrix and the null-vector route."""
 
 from __future__ import annotations
 
@@ -14,11 +14,10 @@ from symdecomp.analysis.mirror import with_near_edge
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.symbols import theta_k
-from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
-from symdecomp.verify.c1_sharp_fourier import FOURIER_METHOD, _ModeValues
-from symdecomp.verify.c1_sharp_map import MAP_METHOD
-from symdecomp.verify.c1_sharp_modes import FIELD, WINDOW, sector_modes
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, mirror_label, sector_matrices
+from symdecomp.verify.c1_mirror_blocks import MAP_METHOD, c1_mirror_blocks
+from symdecomp.verify.fourier_map import FOURIER_METHOD, _ModeValues
+from symdecomp.verify.fourier_modes import FIELD, WINDOW, sector_modes
+from symdecomp.verify.mirror_parts import ball_matrix, mirror_label, sector_matrices
 from symdecomp.verify.result import C1Verdict
 
 BLZ = ("catmull-clark-blz", "loop-blz")
@@ -61,7 +60,7 @@ def test_the_standard_rules_have_no_closed_form_modes():
     # tangent condition anyway from k = 5)
     with pytest.raises(NotApplicableError, match="1/2 has no eigenvector of Fourier form"):
         sector_modes(sd.catmull_clark())
-    assert c1_sharp_blocks(sd.catmull_clark(), sd.SharpVertex.boundary(100, "quad")).verdict is C1Verdict.NOT_C1
+    assert c1_mirror_blocks(sd.catmull_clark(), sd.SharpVertex.boundary(100, "quad")).verdict is C1Verdict.NOT_C1
 
 
 @pytest.mark.parametrize("name", BLZ)
@@ -69,10 +68,10 @@ def test_the_modes_route_reaches_the_null_vector_routes_verdict(name, monkeypatc
     scheme = load_scheme(name)
     for k in range(WINDOW, 13):
         vertex = sd.SharpVertex.boundary(k, scheme.lattice)
-        new = c1_sharp_blocks(scheme, vertex)
+        new = c1_mirror_blocks(scheme, vertex)
         with monkeypatch.context() as m:
-            m.setattr("symdecomp.verify.c1_sharp_blocks.applies", lambda *args: False)
-            old = c1_sharp_blocks(scheme, vertex)
+            m.setattr("symdecomp.verify.c1_mirror_blocks.applies", lambda *args: False)
+            old = c1_mirror_blocks(scheme, vertex)
         assert new.method == FOURIER_METHOD and old.method == MAP_METHOD
         assert new.verdict is old.verdict is C1Verdict.C1
         assert new.lambdas == pytest.approx(old.lambdas, abs=1e-15) and new.lambdas == pytest.approx([0.5, 0.5], abs=1e-15)
@@ -81,7 +80,7 @@ def test_the_modes_route_reaches_the_null_vector_routes_verdict(name, monkeypatc
 
 def test_both_sides_of_a_crease_are_certified():
     scheme = load_scheme("loop-blz")
-    r = c1_sharp_blocks(scheme, sd.SharpVertex.crease(300, 9, scheme.lattice))
+    r = c1_mirror_blocks(scheme, sd.SharpVertex.crease(300, 9, scheme.lattice))
     assert r.verdict is C1Verdict.C1 and r.method == FOURIER_METHOD and r.reason.count("closed-form modes") == 2
 
 
@@ -94,13 +93,13 @@ def test_a_mutated_near_edge_weight_is_neither_a_closed_form_nor_c1():
                                                                         sp.Rational(3, 8) - c / 4 + sp.Rational(1, 32)))
     with pytest.raises(NotApplicableError):
         sector_modes(bent)
-    assert c1_sharp_blocks(base, sd.SharpVertex.boundary(100, "quad")).verdict is C1Verdict.C1
-    assert c1_sharp_blocks(bent, sd.SharpVertex.boundary(100, "quad")).verdict is not C1Verdict.C1
+    assert c1_mirror_blocks(base, sd.SharpVertex.boundary(100, "quad")).verdict is C1Verdict.C1
+    assert c1_mirror_blocks(bent, sd.SharpVertex.boundary(100, "quad")).verdict is not C1Verdict.C1
 
 
 def test_a_face_that_reads_the_rays_is_not_taken_for_a_rotation(monkeypatch):
     # the rotation argument needs face g's nets to read Fourier values only: told that the nets read no face to either
     # side, the route takes a face next to the values of their own for g, the check sees it and the route refuses
-    monkeypatch.setattr("symdecomp.verify.c1_sharp_fourier.REACH", 0)
-    r = c1_sharp_blocks(load_scheme("catmull-clark-blz"), sd.SharpVertex.boundary(100, "quad"))
+    monkeypatch.setattr("symdecomp.verify.fourier_map.REACH", 0)
+    r = c1_mirror_blocks(load_scheme("catmull-clark-blz"), sd.SharpVertex.boundary(100, "quad"))
     assert r.verdict is C1Verdict.UNDECIDED and "reads values next to a sharp ray" in r.reason

@@ -1,11 +1,11 @@
-"""Certified C1 at boundary, crease and corner vertices: Zorin's conditions on each sector's characteristic map.
+"""Certified C1 at boundary, crease and corner vertices from each sector's exact matrix: Zorin's conditions on its characteristic map.
 
 **The conditions** (D. Zorin, *A method for analysis of C1-continuity of subdivision surfaces*, SIAM J.
 Numer. Anal. 37(5), 2000, and for piecewise smooth surfaces H. Biermann, A. Levin, D. Zorin,
 *Piecewise smooth subdivision surfaces with normal control*, SIGGRAPH 2000, and H. Biermann, S. Grundel,
 D. Zorin, *Smoothness of subdivision surfaces with boundary*, Constr. Approx. 42, 2015). A surface with
 boundary (or each side of an infinitely sharp crease, or a corner) is C1 at ``O`` for almost every control
-net when, for the 2-ring subdivision matrix of the sector (:mod:`.c1_sharp_spectrum`):
+net when, for the 2-ring subdivision matrix of the sector (:mod:`.mirror_parts`):
 
 1. 1 is a simple eigenvalue, and the next two, ``lambda_1 >= lambda_2``, are real, positive, each with
    its own eigenvector, and strictly larger in modulus than all others (at a boundary they may differ);
@@ -36,32 +36,15 @@ statements only: the standard rules fail at boundary vertices with many faces (h
 and at concave corners; with BLZ's near-edge rule the spectral conditions hold at every boundary ``k`` tried (1 to 16).
 Where that rule is not the smooth one it makes the points next to ``O`` at every level, so the ring's patches there are
 not splines (:func:`~symdecomp.schemes.sector_patch.modified_edges`); the map is then certified on the wider ring of
-:mod:`.c1_sharp_ring` (level-1 distance 2 to 4, genuine splines, checked exactly), and is C1 at every boundary ``k``
-tried and at convex corners (past 8 faces from BLZ's subdominant eigenvectors in closed form, :mod:`.c1_sharp_fourier`,
+:mod:`.sector_ring` (level-1 distance 2 to 4, genuine splines, checked exactly), and is C1 at every boundary ``k``
+tried and at convex corners (past 8 faces from BLZ's subdominant eigenvectors in closed form, :mod:`.fourier_map`,
 at every boundary to 10,000 faces tried). The argument below holds with that ring as ``R`` (inner arc at level-1 distance 2, outer
 at 4). Alone (the part
 of BLZ's concave-corner construction a ``[sharp]`` section can express) it does not make a concave corner C1.
 
-**Injectivity of an open sector** (the argument used here, in place of the interior winding number).
-Let ``K`` be the closed sector minus ``O`` and ``R`` one ring of it (a topological disk bounded by the
-inner arc ``g_in`` from ray 0 to ray ``k``, the outer arc ``g_out``, and the two ray segments).
-``chi(x / 2) = A chi(x)`` with ``A = diag(lambda_1, lambda_2)``. On each sharp ray the boundary values of an
-eigenvector are exactly linear along the ray and 0 at ``O`` (they lie in the kernel of ``C - 1/2`` for the
-curve block ``C``, or vanish; checked exactly), so ``chi`` maps each ray onto a segment of a ray from the
-origin, in a direction ``d_0`` or ``d_k`` (certified non-zero). Suppose ``chi`` is regular on ``R`` with
-Jacobian sign ``s``, and let ``Delta`` be the argument swept by ``chi(g_in)`` (rigorous: Bezier pieces in
-half-planes, :func:`~symdecomp.verify.bezier.curve_angle`). The closed curve ``chi(dR)`` sweeps
-``Delta_out - Delta_in`` (the ray segments sweep nothing); when that is certified ``0``, ``chi`` has no zero
-in ``R`` (each zero of a regular map counts ``s``). Then ``F = log chi`` has a continuous branch on ``K``
-(simply connected), a local homeomorphism mapping ray 0 onto the line ``arg = a_0`` and ray ``k`` onto
-``arg = a_0 + Delta`` (``|chi|`` runs from 0 to infinity along each ray, monotone by regularity). ``F`` is
-proper, and ``arg chi`` is bounded on ``K`` (``A`` keeps every quadrant), so over each of the two outer
-half-planes ``F`` is a covering with a constant number of sheets which is 0 far away: nothing of ``K`` maps
-outside the strip between the lines. Over the open strip ``F`` is a covering of a simply connected set,
-crossing a line adds one sheet for the boundary points, so ``F`` is a homeomorphism of ``K`` onto the strip
-when ``sign(Delta) = s`` (near ray 0 the inside of ``K`` lies on the strip's side). Hence ``chi`` is
-injective iff ``0 < s Delta < 2 pi``; ``s Delta < 0`` means the sector folds over its boundary (an inner
-point and a boundary point share an image) and ``s Delta > 2 pi`` means it overlaps itself: not injective.
+**Injectivity of an open sector**: ``chi`` is injective iff ``0 < s Delta < 2 pi``, ``s`` the Jacobian's sign and
+``Delta`` the argument swept by the image of the ring's inner arc, once the ring's boundary is certified to wind 0 times
+around the origin (the argument: :mod:`.sector_injectivity`).
 
 **Crease vertices** (infinitely sharp) are two sectors that do not read each other's points (checked
 exactly on the matrix): each is tested as above and both must pass. A semi-sharp crease is smooth from
@@ -84,24 +67,20 @@ from dataclasses import dataclass
 import flint
 import sympy as sp
 
-from symdecomp.algebra.triangle_bezier import bezier_indices
-from symdecomp.analysis.characteristic import SUBPATCH_FACES, TRIANGLES, triangle_patch_points
 from symdecomp.errors import NotApplicableError
-from symdecomp.schemes.box_spline import DEGREE
-from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, modified_edges, sector_net
+from symdecomp.schemes.sector_patch import ORIGIN, check_spline_sharp_rules, modified_edges
 from symdecomp.validate import check_bits, check_depth, check_type
-from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net, triangle_jacobian_net
-from symdecomp.verify.c1 import C1Result, box_nets, c1_test, place_text
-from symdecomp.verify.c1_sharp_ring import irregular_rows, ring_faces, wide_arcs, wide_nets
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_eigenvector, sector_matrices
-from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
+from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
+from symdecomp.verify.c1 import C1Result, c1_test, place_text
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
+from symdecomp.verify.mirror_parts import sector_eigenvalues, sector_eigenvector, sector_matrices
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
+from symdecomp.verify.sector_ring import arc_sweeps, irregular_rows, jacobian_sign, level_one_map, ring_faces, ring_nets, wide_nets
 
-__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "tangent_condition", "sector_map", "SectorFinding", "ring_nets",
-           "jacobian_sign", "arc_sweeps", "injective_condition"]
+__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "sector_map", "deciding_sector"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -121,7 +100,7 @@ class SharpC1Result(C1Result):
     lambdas: tuple | None = None
     #: The argument ``Delta / pi`` swept by the sector's image (its opening), when certified.
     opening: float | None = None
-    #: How the verdict was reached (:data:`SHARP_METHOD`, or the blocks route's, :mod:`.c1_sharp_blocks`).
+    #: How the verdict was reached (:data:`SHARP_METHOD`, or the blocks route's, :mod:`.c1_mirror_blocks`).
     method: str = SHARP_METHOD
 
     def as_json(self) -> dict:
@@ -139,51 +118,6 @@ def _describe(vertex: SharpVertex) -> str:
     if len(vertex.sectors) == 2:
         return f"crease {vertex.sectors[0]},{vertex.sectors[1]}"
     return "sharp vertex, sectors " + ",".join(map(str, vertex.sectors))
-
-
-@dataclass(frozen=True)
-class SectorFinding:
-    """What the test found in one sector (before it becomes a result)."""
-
-    verdict: C1Verdict
-    reason: str
-    spectral: SpectralResult
-    lambdas: tuple | None = None
-    sign: int | None = None
-    bound: float | None = None
-    depth: int | None = None
-    opening: float | None = None
-    #: How the map was certified, where a route other than the dense test's did it (``None``: the caller's method).
-    method: str | None = None
-    #: The blocks' verdict is final (an exact multiple subdominant eigenvalue): the dense test would find the same.
-    final: bool = False
-
-
-def _curve_eigenvalues(sm):
-    """The exact eigenvalues of the boundary curve block, or a reason why its structure is not the one the test uses."""
-    labels = [lab for lab in sm.labels if lab == ORIGIN or (lab[2] == 0 and lab[0] in (0, sm.k))]
-    index = {lab: i for i, lab in enumerate(sm.labels)}
-    ids = [index[lab] for lab in labels]
-    S = sm.matrix
-    if any(S[i, j] != 0 for i in ids for j in range(S.cols) if j not in ids):
-        return None, "the boundary points do not form an invariant curve (their new points read inside points)"
-    C = sp.Matrix([[S[i, j] for j in ids] for i in ids])
-    if not all(e.is_Rational for e in C):
-        return None, "the boundary curve's rules are not rational"
-    kernel = (C - sp.eye(len(ids)) / 2).nullspace()
-    pos = {lab: t for t, lab in enumerate(labels)}
-    for vec in kernel:
-        if vec[pos[ORIGIN]] != 0 or any(vec[pos[(r, 2, 0)]] != 2 * vec[pos[(r, 1, 0)]] for r in (0, sm.k)):
-            return None, "an eigenvector of the boundary curve for 1/2 is not linear along the sharp rays"
-    roots = [sp.Rational(r) for r in sp.roots(C.charpoly().as_expr(), multiple=True) if r.is_Rational]
-    if len(roots) != len(ids):
-        return None, "the boundary curve's eigenvalues are not rational"
-    return sorted(roots, reverse=True), None
-
-
-def _contains(ball: flint.acb, q: sp.Rational) -> bool:
-    """Whether ``q`` may be the eigenvalue in ``ball`` (if not, it certainly is not)."""
-    return ball.contains(flint.acb(flint.fmpq(int(q.p), int(q.q))))
 
 
 def _spectral(sm) -> tuple[SpectralResult, list]:
@@ -219,7 +153,7 @@ def _spectral(sm) -> tuple[SpectralResult, list]:
             return SpectralResult(k, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {ball_text(e[0])} is not shown positive: "
                                   "the test covers positive lambda_1, lambda_2 only"), top
     gap = float_down(abs(top[1][0]).lower() - abs(third[0]).upper())
-    sub = Eigen(top[0][0], 0, 1)
+    sub = block_root(top[0][0], 0, 1)
     return SpectralResult(k, C1Verdict.C1, f"lambda_1 = {lam[0]}, lambda_2 = {lam[1]}, real, gap >= {round_down(gap)}",
                           sub, gap, float(abs(third[0]).upper())), top
 
@@ -240,126 +174,16 @@ def _chi(sm, picks):
     vecs = [_real_vector(sm, p) for p in picks]
     if any(v is None for v in vecs):
         return None, None
-    R = ball_matrix(sm.refine.tolist(), sm.weight)
     index = {lab: i for i, lab in enumerate(sm.labels)}
-    fine = []
-    for v in vecs:
-        col = R * flint.acb_mat([[x] for x in v])
-        fine.append([col[i, 0].real for i in range(len(sm.fine_labels))])
-    chi = {lab: flint.acb(fine[0][i], fine[1][i]) for i, lab in enumerate(sm.fine_labels)}
+    chi = level_one_map(sm, vecs)
     dirs = []
     for r in (0, sm.k):
         d = flint.acb(vecs[0][index[(r, 1, 0)]], vecs[1][index[(r, 1, 0)]])
         dirs.append(d)
-        for j in range(1, 6):  # to distance 5: the wide ring's nets (:mod:`.c1_sharp_ring`) read that far
+        for j in range(1, 6):  # to distance 5: the wide ring's nets (:mod:`.sector_ring`) read that far
             chi[(r, j, 0)] = d * j / 2
     chi[ORIGIN] = flint.acb(0)
     return chi, tuple(dirs)
-
-
-def ring_nets(sm, chi) -> list:
-    """The Bezier nets (complex) of the ring's ``3 k`` sub-patches, face by face (quads ``4 x 4``; triangles, 15)."""
-    out = []
-    for s in range(sm.k):
-        if sm.lattice.handled("the sharp ring's nets", BICUBIC, BOX_SPLINE) == BICUBIC:
-            for a, b in SUBPATCH_FACES:
-                pts = [(a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
-                vals = sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__)
-                out.append(bspline_to_bezier([vals[4 * i: 4 * i + 4] for i in range(4)]))
-        else:
-            values = []
-            for t in TRIANGLES:
-                pts = triangle_patch_points(t)
-                values.append(dict(zip(pts, sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__))))
-            out += box_nets(values)
-    return out
-
-
-def jacobian_sign(sm, nets, max_depth: int):
-    """The Jacobian's sign on the ring's nets, certified by de Casteljau subdivision to ``max_depth`` (or where it fails)."""
-    if sm.lattice.handled("the sharp ring's Jacobian", BICUBIC, BOX_SPLINE) == BICUBIC:
-        return certify_sign([jacobian_net([[z.real for z in row] for row in net], [[z.imag for z in row] for row in net])
-                             for net in nets], max_depth)
-    return certify_sign_triangles([triangle_jacobian_net([z.real for z in net], [z.imag for z in net]) for net in nets],
-                                  DEGREE, 2 * max_depth)
-
-
-def arc_sweeps(sm, nets, wide: bool = False):
-    """``(Delta_in, Delta_out)``: the arguments swept by the images of the ring's inner and outer arcs (``None``: not decided)."""
-    inner, outer = wide_arcs(sm, nets) if wide else ([], [])
-    for s in range(0 if wide else sm.k):
-        p0, p1, p2 = nets[3 * s: 3 * s + 3]
-        if sm.lattice.handled("the sharp ring's arcs", BICUBIC, BOX_SPLINE) == BICUBIC:
-            inner += [[p0[0][j] for j in range(4)], [p2[i][0] for i in range(3, -1, -1)]]
-            outer += [[p0[3][j] for j in range(4)], [p1[3][j] for j in range(4)], [p1[i][3] for i in range(3, -1, -1)],
-                      [p2[i][3] for i in range(3, -1, -1)]]
-        else:
-            pos = {i: n for n, i in enumerate(bezier_indices(DEGREE))}
-            inner.append([p1[pos[(DEGREE - t, 0, t)]] for t in range(DEGREE + 1)])
-            outer += [[p[pos[(0, DEGREE - t, t)]] for t in range(DEGREE + 1)] for p in (p0, p2)]
-    totals = []
-    for curves in (inner, outer):
-        angles = [curve_angle(c) for c in curves]
-        totals.append(None if any(a is None for a in angles) else sum(angles, flint.arb(0)))
-    return tuple(totals)
-
-
-def _tangent(sm, picks) -> tuple[C1Verdict, str] | None:
-    """Condition 2: ``None`` if the boundary curves' tangents may be among the subdominant eigenvectors, else why not.
-
-    ``1/2`` is an eigenvalue of the curve block once per boundary curve (one at a boundary or crease, two at a
-    corner); an eigenvalue certainly not in the curve block has an eigenvector that vanishes on the boundary.
-    """
-    return tangent_condition(*_curve_eigenvalues(sm), picks)
-
-
-def tangent_condition(roots, problem: str | None, picks) -> tuple[C1Verdict, str] | None:
-    """:func:`_tangent` from the boundary curve's eigenvalues ``roots`` (or the ``problem`` why they are not read)."""
-    if problem:
-        raise NotApplicableError(f"the sector test does not apply: {problem}")
-    half = sp.Rational(1, 2)
-    curves = roots.count(half)
-    for value, _, _ in picks:
-        others = [q for q in set(roots) if q != half and _contains(value, q)]
-        if others:
-            return C1Verdict.UNDECIDED, f"lambda = {ball_text(value)} may be the boundary curve's eigenvalue {others[0]}"
-    maybe = sum(1 for value, _, _ in picks if _contains(value, half))
-    if maybe >= curves:
-        return None
-    lam = ", ".join(ball_text(v) for v, _, _ in picks)
-    what = ("the tangent of the boundary curve (eigenvalue 1/2 of the crease rules) is" if curves == 1 else
-            f"the tangents of the {curves} boundary curves (eigenvalue 1/2 of the crease rules, {curves} times) are")
-    return C1Verdict.NOT_C1, (f"{what} not in the tangent plane: of the subdominant eigenvalues {lam}, {maybe} may be 1/2, "
-                              "the others are not eigenvalues of the boundary curves, so their eigenvectors vanish there"
-                              + (" and the characteristic map collapses the sharp rays to O" if maybe == 0 else ""))
-
-
-def injective_condition(sm, vertex, sign, dirs, sweeps) -> tuple[C1Verdict, str, float | None]:
-    """Conditions 4 and 5 from the certified sweeps ``(Delta_in, Delta_out)`` and the Jacobian's ``sign`` (module docstring)."""
-    din, dout = sweeps
-    if din is None or dout is None:
-        return C1Verdict.UNDECIDED, "the argument swept by the ring's arcs is not certified (a curve may pass near 0)", None
-    two_pi = 2 * flint.arb.pi()
-    if not abs(dout - din) < two_pi:
-        return C1Verdict.UNDECIDED, "the ring's boundary is not shown to wind 0 times around O (a zero of chi in the ring?)", None
-    turn = din * sign
-    opening = float((turn / flint.arb.pi()).mid())
-    text = f"the sector's image opens by {ball_text(turn / flint.arb.pi(), 5)} pi (in the Jacobian's orientation)"
-    if turn < 0:
-        return C1Verdict.NOT_C1, f"{text} against the Jacobian's sign {sign}: the sector folds over its boundary", opening
-    if turn > two_pi:
-        return C1Verdict.NOT_C1, f"{text}, more than a full turn: the characteristic map overlaps itself", opening
-    if not (turn > 0 and turn < two_pi):
-        return C1Verdict.UNDECIDED, f"{text}: not separated from 0 or 2 pi", opening
-    if vertex.corner and vertex.angle is not None and vertex.angle != sp.pi:
-        concave = bool(vertex.angle > sp.pi)
-        if turn.contains(flint.arb.pi()):
-            return C1Verdict.UNDECIDED, f"{text}: convex or concave not decided", opening
-        if concave != bool(turn > flint.arb.pi()):
-            want, got = ("concave", "convex") if concave else ("convex", "concave")
-            return C1Verdict.NOT_C1, (f"{text}: a {got} sector, but the corner is {want} (angle {vertex.angle}); the surface "
-                                      "folds there (Biermann-Levin-Zorin's corner types)"), opening
-    return C1Verdict.C1, f"{text} and winds once between the sharp rays: injective", opening
 
 
 def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
@@ -370,7 +194,7 @@ def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
         spectral = SpectralResult(sm.k, C1Verdict.UNDECIDED, f"the spectrum is not certified at this precision ({exc})")
         return SectorFinding(C1Verdict.UNDECIDED, spectral.reason, spectral)
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
-    tangent = _tangent(sm, picks) if picks else None
+    tangent = tangent_condition(*curve_eigenvalues(sm), picks) if picks else None
     if tangent and tangent[0] is C1Verdict.NOT_C1:  # decided by lambda_1, lambda_2 alone, even if lambda_2 ties lambda_3
         return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:
@@ -382,7 +206,7 @@ def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
 
 def sector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, picks: list, max_depth: int) -> SectorFinding:
     """Conditions 3-5 on the sector ``sm`` of ``vertex``, once conditions 1 and 2 hold: the characteristic map of the two
-    subdominant eigenvectors (``picks``: ``(value, part, in_ring)``, :func:`~.c1_sharp_spectrum.sector_eigenvector`)."""
+    subdominant eigenvectors (``picks``: ``(value, part, in_ring)``, :func:`~.mirror_parts.sector_eigenvector`)."""
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
     wide = (why := modified_edges(scheme, vertex, sm.k)) is not None
     if wide and irregular_rows(sm):  # the spectral conditions hold; no ring of spline patches is known
@@ -434,16 +258,21 @@ def c1_sharp_test(scheme, vertex: SharpVertex, *, max_depth: int = 6, prec: int 
     return result
 
 
+def deciding_sector(vertex: SharpVertex, found: list[SectorFinding]) -> tuple[SectorFinding, str]:
+    """The finding that decides a vertex (the first of the worst verdict: not C1, undecided, C1) and the vertex's reason
+    (each side's, at a crease)."""
+    order = (C1Verdict.NOT_C1, C1Verdict.UNDECIDED, C1Verdict.C1)
+    key = min(found, key=lambda f: order.index(f.verdict))
+    if len(found) == 1:
+        return key, key.reason
+    return key, "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
+
+
 def _run(scheme, vertex: SharpVertex, max_depth: int, prec: int) -> SharpC1Result:
     with flint.ctx.workprec(prec):
         found = [_sector_test(scheme, vertex, i, max_depth) for i in range(len(vertex.sectors))]
-    order = (C1Verdict.NOT_C1, C1Verdict.UNDECIDED, C1Verdict.C1)
-    verdict = min((f.verdict for f in found), key=order.index)
-    key = next(f for f in found if f.verdict is verdict)
-    if len(found) == 1:
-        reason = key.reason
-    else:
-        reason = "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
+    key, reason = deciding_sector(vertex, found)
+    verdict = key.verdict
     return SharpC1Result(
         n=vertex.faces, scheme=scheme.name, verdict=verdict, reason=reason, spectral=key.spectral, jacobian_sign=key.sign,
         jacobian_lower_bound=key.bound, subdivision_depth=key.depth, max_depth=max_depth, precision=prec,

@@ -1,8 +1,15 @@
-"""A ring of genuine spline patches for sectors with a modified near-edge rule (Biermann-Levin-Zorin's).
+"""The ring of a sector's characteristic map: its Bezier nets, the Jacobian's sign on them, the sweeps of its arcs.
 
-With BLZ's rule for the smooth edges at ``O`` (:func:`~symdecomp.schemes.sector_patch.modified_edges`), every
+The sector tests (:mod:`.c1_sector_matrix`, :mod:`.c1_closed_fan`, the closed-form modes' :mod:`.fourier_map`) certify the map on one
+ring of patches around ``O``, face by face: the spline ring of ``3 k`` sub-patches at ``O`` (:func:`ring_nets`, the phantom
+points of :mod:`symdecomp.schemes.sector_patch` at the sharp rays), or, where a modified near-edge rule makes the patches
+at ``O`` non-splines, the wide ring below (:func:`wide_nets`); the Jacobian's sign by de Casteljau subdivision of its
+Bernstein-Bezier coefficients (:func:`jacobian_sign`) and the arguments swept by the images of the ring's inner and outer
+arcs (:func:`arc_sweeps`, what :mod:`.sector_injectivity` decides injectivity from).
+
+**The wide ring.** With BLZ's rule for the smooth edges at ``O`` (:func:`~symdecomp.schemes.sector_patch.modified_edges`), every
 level's points next to ``O`` are made by other weights than the spline's, so the level-1 patches at ``O``
-(:mod:`.c1_sharp`'s ring, lattice distance ``1..2``) are not splines. A level-1 patch ``[a, a + 1] x [b, b + 1]``
+(:func:`ring_nets`' ring, lattice distance ``1..2``) are not splines. A level-1 patch ``[a, a + 1] x [b, b + 1]``
 (quads, face chart of sector face ``s``) with ``max(a, b) >= 2`` is: its refinement reads only points at level-2
 distance ``>= 2 max(a, b) - 1 >= 3``, which the scheme makes by the regular rules (the tensor cubic B-spline's,
 with the phantom points of :mod:`symdecomp.schemes.sector_patch` across the sharp rays). That last statement is
@@ -10,7 +17,7 @@ with the phantom points of :mod:`symdecomp.schemes.sector_patch` across the shar
 3-ring) at level-1 distance ``>= 2`` with the regular rule through :func:`~symdecomp.schemes.sector_patch.sector_net`
 (the lattice is regular beyond, by translation). The ring used here is the twelve level-1 patches per face with
 ``2 <= max(a, b) <= 4`` side, i.e. the level-0 annulus between distance 1 and 2: ``chi(x / 2) = A chi(x)`` maps it
-onto its inner neighbour, so its scaled copies cover the sector, and the injectivity argument of :mod:`.c1_sharp`
+onto its inner neighbour, so its scaled copies cover the sector, and the injectivity argument of :mod:`.sector_injectivity`
 holds with this ``R`` (inner arc at level-1 distance 2, outer at 4).
 
 The nets need level-1 values up to distance 5: up to 3 from the exact refinement of the eigenvectors, beyond by
@@ -29,14 +36,15 @@ import flint
 import sympy as sp
 
 from symdecomp.algebra.triangle_bezier import bezier_indices
-from symdecomp.analysis.characteristic import triangle_patch_points
+from symdecomp.analysis.characteristic import SUBPATCH_FACES, TRIANGLES, triangle_patch_points
 from symdecomp.schemes.box_spline import DEGREE
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
 from symdecomp.schemes.sector_patch import ORIGIN, sector_net, sector_point
-from symdecomp.verify.bezier import bspline_to_bezier
+from symdecomp.verify.bezier import bspline_to_bezier, certify_sign, certify_sign_triangles, curve_angle, jacobian_net, triangle_jacobian_net
 from symdecomp.verify.c1 import box_nets
+from symdecomp.verify.mirror_parts import ball_matrix
 
-__all__ = ["ring_faces", "irregular_rows", "wide_nets", "wide_arcs"]
+__all__ = ["ring_faces", "irregular_rows", "wide_nets", "wide_arcs", "level_one_map", "ring_nets", "jacobian_sign", "arc_sweeps"]
 
 
 def ring_faces(lat) -> tuple:
@@ -176,3 +184,61 @@ def wide_arcs(sm, nets) -> tuple[list, list]:
         outer += [[net[(3, b)][3][j] for j in range(4)] for b in range(4)]
         outer += [[net[(a, 3)][i][3] for i in range(3, -1, -1)] for a in range(3, -1, -1)]
     return inner, outer
+
+
+def level_one_map(sm, vectors) -> dict:
+    """``{level-1 label: chi}`` (complex balls ``x + i y``) from the two real eigenvectors ``vectors`` (2-ring, matrix order,
+    real balls) refined once by the sector's exact refinement rows: the values the ring's nets read."""
+    R = ball_matrix(sm.refine.tolist(), sm.weight)
+    fine = []
+    for v in vectors:
+        col = R * flint.acb_mat([[flint.acb(x)] for x in v])
+        fine.append([col[i, 0].real for i in range(len(sm.fine_labels))])
+    return {lab: flint.acb(fine[0][i], fine[1][i]) for i, lab in enumerate(sm.fine_labels)}
+
+
+def ring_nets(sm, chi) -> list:
+    """The Bezier nets (complex) of the ring's ``3 k`` sub-patches, face by face (quads ``4 x 4``; triangles, 15)."""
+    out = []
+    for s in range(sm.k):
+        if sm.lattice.handled("the sharp ring's nets", BICUBIC, BOX_SPLINE) == BICUBIC:
+            for a, b in SUBPATCH_FACES:
+                pts = [(a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
+                vals = sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__)
+                out.append(bspline_to_bezier([vals[4 * i: 4 * i + 4] for i in range(4)]))
+        else:
+            values = []
+            for t in TRIANGLES:
+                pts = triangle_patch_points(t)
+                values.append(dict(zip(pts, sector_net(sm.lattice, sm.k, s, pts, chi.__getitem__))))
+            out += box_nets(values)
+    return out
+
+
+def jacobian_sign(sm, nets, max_depth: int):
+    """The Jacobian's sign on the ring's nets, certified by de Casteljau subdivision to ``max_depth`` (or where it fails)."""
+    if sm.lattice.handled("the sharp ring's Jacobian", BICUBIC, BOX_SPLINE) == BICUBIC:
+        return certify_sign([jacobian_net([[z.real for z in row] for row in net], [[z.imag for z in row] for row in net])
+                             for net in nets], max_depth)
+    return certify_sign_triangles([triangle_jacobian_net([z.real for z in net], [z.imag for z in net]) for net in nets],
+                                  DEGREE, 2 * max_depth)
+
+
+def arc_sweeps(sm, nets, wide: bool = False):
+    """``(Delta_in, Delta_out)``: the arguments swept by the images of the ring's inner and outer arcs (``None``: not decided)."""
+    inner, outer = wide_arcs(sm, nets) if wide else ([], [])
+    for s in range(0 if wide else sm.k):
+        p0, p1, p2 = nets[3 * s: 3 * s + 3]
+        if sm.lattice.handled("the sharp ring's arcs", BICUBIC, BOX_SPLINE) == BICUBIC:
+            inner += [[p0[0][j] for j in range(4)], [p2[i][0] for i in range(3, -1, -1)]]
+            outer += [[p0[3][j] for j in range(4)], [p1[3][j] for j in range(4)], [p1[i][3] for i in range(3, -1, -1)],
+                      [p2[i][3] for i in range(3, -1, -1)]]
+        else:
+            pos = {i: n for n, i in enumerate(bezier_indices(DEGREE))}
+            inner.append([p1[pos[(DEGREE - t, 0, t)]] for t in range(DEGREE + 1)])
+            outer += [[p[pos[(0, DEGREE - t, t)]] for t in range(DEGREE + 1)] for p in (p0, p2)]
+    totals = []
+    for curves in (inner, outer):
+        angles = [curve_angle(c) for c in curves]
+        totals.append(None if any(a is None for a in angles) else sum(angles, flint.arb(0)))
+    return tuple(totals)

@@ -23,6 +23,14 @@ separated from each other (equal or not, the eigenspace is spanned by the two ve
 **Real and simple.** An eigenvalue's ball that holds one eigenvalue (counted with multiplicity) and whose
 complex conjugate meets no other eigenvalue's ball is real: the conjugate of that eigenvalue is an
 eigenvalue of the real matrix in the conjugate ball, hence the same one.
+
+**Which part holds an eigenvector, from the blocks alone** (:func:`block_parts`, for the blocks' route that has no
+characteristic polynomial, :mod:`.c1_mirror_blocks`): a sine block ``j`` has the mode ``sin(pi j s/k)`` on the rays ``s``,
+and the mirror ``s -> k - s`` multiplies it by ``(-1)^(j + 1)``: even for ``j`` odd, odd for ``j`` even; an eigenvalue
+``q`` (rational) of the crease block has an odd eigenvector when ``(C - q) (0, 1, -1) = 0`` exactly and ``C - q`` has
+rank 2, an even one when ``C - q`` has rank 2 and the odd vector is not in its kernel. An eigenvalue the blocks count once
+in the whole matrix is simple in its part; a double one (BLZ's ``1/2``: the crease block's, odd, and sine block 1's,
+even) has one eigenvector in each part.
 """
 
 from __future__ import annotations
@@ -42,7 +50,7 @@ from symdecomp.schemes.lattice import Lattice
 from symdecomp.schemes.sector import SharpVertex, sharp_matrix_rows
 
 __all__ = ["NEAR", "SectorMatrices", "sector_matrices", "mirror_label", "Eigenpart", "sector_eigenvalues", "sector_eigenvector", "sector_parts",
-           "ball_matrix"]
+           "ball_matrix", "block_parts"]
 
 
 #: The near-edge rule's weight on the edge's other end, as a symbol where its value is irrational.
@@ -330,3 +338,41 @@ def sector_eigenvector(sm: SectorMatrices, part: Eigenpart, value: flint.acb, in
         for i, sign in terms:
             vec[i] = coord * sign
     return vec
+
+
+def _crease_parity(crease: sp.Matrix, value) -> str | None:
+    """The mirror part (``"even"``, ``"odd"``) of the crease block's eigenvector for ``value`` (``None``: not decided)."""
+    if value.key[0] != "q":
+        return None
+    q = sp.Rational(value.key[1].numerator, value.key[1].denominator)
+    shifted = crease - q * sp.eye(crease.rows)
+    if shifted.rank() != crease.rows - 1:
+        return None
+    odd = sp.Matrix([0, 1, -1])  # O and its two sharp neighbours: the mirror exchanges the neighbours
+    return "odd" if shifted * odd == sp.zeros(3, 1) else "even"
+
+
+def _parity(crease: sp.Matrix, value, block) -> str | None:
+    if block.block == "crease":
+        return _crease_parity(crease, value)
+    if block.block == "sine":
+        return "even" if block.j % 2 == 1 else "odd"
+    return None
+
+
+def block_parts(crease: sp.Matrix, picks: list) -> list[str] | None:
+    """The mirror part of each subdominant eigenvector (module docstring), ``picks`` holding ``(ball, Eigenvalue, _)``
+    (:class:`~symdecomp.analysis.eigenvalue.Eigenvalue` with its mirror blocks), ``crease`` the crease block.
+
+    ``None`` where the blocks do not name one part per eigenvector (a value of several blocks of one part, a face mode).
+    """
+    first, second = picks[0][1], picks[1][1]
+    if first is second:
+        if first.multiplicity != 2 or len(first.blocks) != 2:
+            return None
+        names = [_parity(crease, first, b) for b in first.blocks]
+        return names if None not in names and names[0] != names[1] else None
+    if any(v.multiplicity != 1 or len(v.blocks) != 1 for v in (first, second)):
+        return None
+    names = [_parity(crease, v, v.blocks[0]) for v in (first, second)]
+    return None if None in names else names

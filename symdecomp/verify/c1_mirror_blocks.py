@@ -1,7 +1,7 @@
 """Zorin's conditions at boundary, crease and corner vertices with many faces: the spectrum from the sector's blocks.
 
-The dense test (:mod:`.c1_sharp`) builds the sector's exact 2-ring matrix, whose size grows like ``k`` and whose
-exact spectrum costs far more; it is capped (:data:`MAP_FACES`). Here conditions 1 and 2 of :mod:`.c1_sharp` are read
+The dense test (:mod:`.c1_sector_matrix`) builds the sector's exact 2-ring matrix, whose size grows like ``k`` and whose
+exact spectrum costs far more; it is capped (:data:`MAP_FACES`). Here conditions 1 and 2 of :mod:`.c1_sector_matrix` are read
 from the blocks of the mirror decomposition, O(log k) per sector (:mod:`symdecomp.analysis.leading_values`):
 
 * **the 1-ring**: the sector's 2-ring matrix is block lower triangular, the new 1-ring reading only the old one, and
@@ -16,14 +16,14 @@ from the blocks of the mirror decomposition, O(log k) per sector (:mod:`symdecom
   ``k`` (:func:`~symdecomp.analysis.mirror.crease_block` has no ``k``): it is taken from the window's matrix.
 
 So ``lambda_1, lambda_2`` are the two largest of the 1-ring's leading values once both bounds are below
-``|lambda_2|``; then the spectral and tangent conditions are decided as in :mod:`.c1_sharp` (the same reasons). What
+``|lambda_2|``; then the spectral and tangent conditions are decided as in :mod:`.c1_sector_matrix` (the same reasons). What
 the blocks decide alone is a failure: a sector whose subdominant eigenvectors miss the tangent of a boundary curve,
 at any ``k``. A double subdominant eigenvalue is accepted in one case, BLZ's: one crease-block eigenvalue on its
 mirror-odd vector and one of a sine block ``j`` odd, whose mode is mirror-even, so one eigenvector in each part of the
 mirror's direct sum (checked exactly on the crease block). Where conditions 1 and 2 hold, conditions 3-5 are
-decided on the characteristic map: for that double ``1/2`` from :data:`~.c1_sharp_modes.WINDOW` faces on, from the
-eigenvectors in closed form on a few faces per sector (:mod:`.c1_sharp_fourier`, any ``k``); otherwise (or where that
-route does not decide) from the eigenvectors in the mirror parts the blocks name (:mod:`.c1_sharp_map`: no
+decided on the characteristic map: for that double ``1/2`` from :data:`~.fourier_modes.WINDOW` faces on, from the
+eigenvectors in closed form on a few faces per sector (:mod:`.fourier_map`, any ``k``); otherwise (or where that
+route does not decide) from the eigenvectors in the mirror parts the blocks name (:func:`map_from_blocks`: no
 characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces). An exact
 tie ``lambda_2 = lambda_3`` (one value of the blocks, its multiplicity exact; BLZ's corners) is final: the dense test
 finds the same multiple root, and is not run.
@@ -34,7 +34,7 @@ Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 >>> from symdecomp.schemes.scheme import catmull_clark
 >>> from symdecomp.schemes.sector import SharpVertex
->>> r = c1_sharp_blocks(catmull_clark(), SharpVertex.boundary(1000, "quad"))
+>>> r = c1_mirror_blocks(catmull_clark(), SharpVertex.boundary(1000, "quad"))
 >>> str(r.verdict), r.lambdas[0] > 0.65
 ('not-c1', True)
 """
@@ -55,16 +55,17 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
-from symdecomp.verify.c1_sharp import SectorFinding, SharpC1Result, _curve_eigenvalues, _describe, c1_sharp_test, tangent_condition
-from symdecomp.verify.c1_sharp_fourier import applies, fourier_map
-from symdecomp.verify.c1_sharp_map import MAP_METHOD, map_from_blocks
-from symdecomp.verify.c1_sharp_spectrum import sector_matrices
-from symdecomp.verify.c1_spectrum import Eigen, SpectralResult, ball_text, float_down, round_down
+from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
+from symdecomp.verify.c1_sector_matrix import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
+from symdecomp.verify.fourier_map import applies, fourier_map
+from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding
 
-__all__ = ["c1_sharp_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD"]
+__all__ = ["c1_mirror_blocks", "MAP_FACES", "WINDOW", "BLOCKS_METHOD", "MAP_METHOD", "map_from_blocks"]
 
-#: Most faces of a sector for which the dense test (:mod:`.c1_sharp`) is run where the blocks do not decide.
+#: Most faces of a sector for which the dense test (:mod:`.c1_sector_matrix`) is run where the blocks do not decide.
 MAP_FACES = 32
 #: Faces of the windows on which the outer block's rows and the boundary curve are read.
 WINDOW = 4
@@ -72,6 +73,10 @@ WINDOW = 4
 BLOCKS_METHOD = ("Zorin's conditions 1-2 from the sector's blocks: exact crease block and sine blocks j <= 3, a certified bound "
                  "of the other sine blocks and of the 2-ring's outer block; tangent of the boundary curve among the "
                  "subdominant eigenvalues")
+#: The method, as reported with each verdict whose map this route certified (:func:`map_from_blocks`).
+MAP_METHOD = ("Zorin's conditions 1-2 from the sector's blocks (certified leading values, exact multiplicities); the "
+              "subdominant eigenvectors as certified null vectors in the mirror parts the blocks name; Jacobian of the "
+              "sector's spline ring in Bernstein-Bezier form (Arb, de Casteljau); argument swept between the two sharp rays")
 
 
 @dataclass(frozen=True)
@@ -110,7 +115,7 @@ def _window(scheme, lattice, corner: bool) -> _Window:
     norms = [_outer_norm(sm) for sm in matrices]
     if norms[-1] != norms[-2]:
         raise NotApplicableError(f"the outer block's row sums differ at {WINDOW} and {WINDOW + 1} faces ({norms[-2]}, {norms[-1]})")
-    return _Window(max(norms), tuple(_curve_eigenvalues(sm) for sm in matrices[:WINDOW]))
+    return _Window(max(norms), tuple(curve_eigenvalues(sm) for sm in matrices[:WINDOW]))
 
 
 def _undecided(k: int, reason: str) -> SectorFinding:
@@ -181,11 +186,11 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
                                   "and positive"), picks
     gap = float_down(second.lower() - third)
     return SpectralResult(k, C1Verdict.C1, f"lambda_1 = {lam[0]}, lambda_2 = {lam[1]}, real, gap >= {round_down(gap)}",
-                          Eigen(top[0].ball, 0, 1), gap, float(third)), picks
+                          block_root(top[0].ball, 0, 1), gap, float(third)), picks
 
 
 def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:
-    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :mod:`.c1_sharp_map` (``max_depth``:
+    """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :func:`map_from_blocks` (``max_depth``:
     its deepest subdivision; ``None``: the blocks alone)."""
     lattice, k, corner = scheme.lattice, vertex.sectors[sector], vertex.corner
     window = _window(scheme, lattice, corner)
@@ -218,13 +223,8 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
 
 
 def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_depth: int) -> SharpC1Result:
-    order = (C1Verdict.NOT_C1, C1Verdict.UNDECIDED, C1Verdict.C1)
-    verdict = min((f.verdict for f in found), key=order.index)
-    key = next(f for f in found if f.verdict is verdict)
-    if len(found) == 1:
-        reason = key.reason
-    else:
-        reason = "; ".join(f"side {i + 1} ({k} faces): {f.reason}" for i, (k, f) in enumerate(zip(vertex.sectors, found)))
+    key, reason = deciding_sector(vertex, found)
+    verdict = key.verdict
     if verdict is C1Verdict.UNDECIDED and not all(f.final or f.verdict is C1Verdict.C1 for f in found):
         reason += f" (the dense test reads sectors of at most {MAP_FACES} faces)"
     mapped = key.sign is not None or key.depth is not None
@@ -235,10 +235,32 @@ def _blocks_result(scheme, vertex: SharpVertex, found: list[SectorFinding], max_
                          method=key.method or (MAP_METHOD if mapped else BLOCKS_METHOD))
 
 
-def c1_sharp_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,
+def map_from_blocks(scheme, vertex: SharpVertex, sector: int, spectral: SpectralResult, picks: list, crease: sp.Matrix,
+                    max_depth: int) -> SectorFinding:
+    """Conditions 3-5 in sector ``sector`` of ``vertex``, the spectral conditions holding by the blocks: each subdominant
+    eigenvector is the certified null vector of its mirror part's 1-ring block at the blocks' ball (the part the blocks
+    name, :func:`~.mirror_parts.block_parts`; the square solve proves the kernel has dimension at most 1), lifted to the
+    outer points by a certified solve (:func:`~.mirror_parts.sector_eigenvector`); then the dense test's own routine
+    (:func:`~.c1_sector_matrix.sector_map`). No characteristic polynomial (with BLZ's weights in ``cos(pi/k)`` the dense test's
+    costs minutes from about 30 faces on), but the sector's exact matrix: at most
+    :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces, the linear algebra in Arb cubic in ``k``."""
+    lambdas = tuple(float(p[0].real.mid()) for p in picks)
+    if vertex.faces > MAX_DENSE_FACES:
+        return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the spectral and tangent conditions hold (blocks), the "
+                             f"characteristic map is built for at most {MAX_DENSE_FACES} faces", spectral, lambdas)
+    names = block_parts(crease, picks)
+    sm = sector_matrices(scheme, vertex, sector)
+    parts = {p.name: p for p in sector_parts(sm)}
+    if names is None or not all(name in parts for name in names):
+        return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the blocks do not name the mirror part of each "
+                             "subdominant eigenvector", spectral, lambdas)
+    return sector_map(scheme, vertex, sm, spectral, [(p[0], parts[name], True) for p, name in zip(picks, names)], max_depth)
+
+
+def c1_mirror_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_faces: int = MAP_FACES,
                     certify_map: bool = True) -> SharpC1Result:
     """Zorin's test at a boundary, crease or corner vertex: the blocks first, then the characteristic map from the
-    eigenvectors they name (:mod:`.c1_sharp_map`; not with ``certify_map=False``), the dense test where these do not
+    eigenvectors they name (:func:`map_from_blocks`; not with ``certify_map=False``), the dense test where these do not
     decide and every sector has at most ``map_faces`` faces (module docstring)."""
     scheme, max_depth = check_scheme(scheme), check_depth(max_depth)
     sharp_sectors = not vertex.closed or (math.isinf(vertex.sharpness) and len(vertex.sectors) == 2)

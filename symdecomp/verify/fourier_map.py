@@ -1,21 +1,21 @@
 """The characteristic map of a sharp sector with many faces from the closed-form modes: a few faces per ``k``, not ``k``.
 
-Where the blocks (:mod:`.c1_sharp_blocks`) prove ``lambda_1 = lambda_2 = 1/2``, one eigenvector in each mirror part
+Where the blocks (:mod:`.c1_mirror_blocks`) prove ``lambda_1 = lambda_2 = 1/2``, one eigenvector in each mirror part
 (Biermann-Levin-Zorin's rules), the two eigenvectors are ``Re v`` and ``Im v`` of the closed form of
-:mod:`.c1_sharp_modes`: level-1 values of their own in the faces next to ray 0, mirror images ``-conj`` next to ray
+:mod:`.fourier_modes`: level-1 values of their own in the faces next to ray 0, mirror images ``-conj`` next to ray
 ``k``, and ``G(u, w) omega^s`` (``omega = e^(i pi/k)``) in every face between. So the characteristic map
 ``chi = Re v + i Im v = v`` is, on the faces between, the map of one face turned by ``omega^s``, and next to ray ``k``
-the mirror image ``chi(P p) = -conj(chi(p))`` of the map next to ray 0. Conditions 3-5 of :mod:`.c1_sharp` are then
+the mirror image ``chi(P p) = -conj(chi(p))`` of the map next to ray 0. Conditions 3-5 of :mod:`.c1_sector_matrix` are then
 decided on ``g + 1`` faces only (``g`` next to ray 0 and one face ``g`` between), in Arb, with the wide ring of
-:mod:`.c1_sharp_ring` (BLZ's modified edges make the level-1 patches at ``O`` non-splines):
+:mod:`.sector_ring` (BLZ's modified edges make the level-1 patches at ``O`` non-splines):
 
 * **regular**: a rotation keeps the Jacobian; the mirror reverses the domain's and the image's orientation, so it keeps
   the Jacobian's sign and modulus. The Jacobian's Bezier coefficients of the ``g + 1`` faces' nets decide every face
-  (:func:`~symdecomp.verify.c1_sharp.jacobian_sign`). That face ``g``'s nets read Fourier values only is *checked*
+  (:func:`~symdecomp.verify.sector_ring.jacobian_sign`). That face ``g``'s nets read Fourier values only is *checked*
   while they are built (each value read is recorded), not assumed;
 * **the sweeps**: the argument swept by a curve does not change under a rotation, and a mirrored curve run backwards
   sweeps the same angle, so ``Delta = 2 sum_(s < g) Delta_s + (k - 2 g) Delta_g`` for the inner and the outer arc;
-  then injectivity and the corner type as in :func:`~symdecomp.verify.c1_sharp.injective_condition`.
+  then injectivity and the corner type as in :func:`~symdecomp.verify.sector_injectivity.injective_condition`.
 
 With ``k <= 2 g + 1`` every face is checked one by one (the same nets, no symmetry used). The values come from the
 closed forms evaluated at ``tau = tan(pi/(2 k))`` in Arb: O(1) work per ``k``, where the dense route's eigenvectors
@@ -23,8 +23,8 @@ cost a solve cubic in ``k``.
 
 >>> from symdecomp.schemes.files import load_scheme
 >>> from symdecomp.schemes.sector import SharpVertex
->>> from symdecomp.verify.c1_sharp_blocks import c1_sharp_blocks
->>> r = c1_sharp_blocks(load_scheme("catmull-clark-blz"), SharpVertex.boundary(1000, "quad"))
+>>> from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
+>>> r = c1_mirror_blocks(load_scheme("catmull-clark-blz"), SharpVertex.boundary(1000, "quad"))
 >>> str(r.verdict), round(r.opening, 6)   # the half-disk's opening: pi
 ('c1', 1.0)
 """
@@ -43,13 +43,12 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.bezier import curve_angle
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp import SectorFinding, injective_condition, jacobian_sign
-from symdecomp.verify.c1_sharp_map import block_parts
-from symdecomp.verify.c1_sharp_modes import WINDOW, SectorModes, sector_modes
-from symdecomp.verify.c1_sharp_ring import ring_faces, wide_arcs, wide_nets
-from symdecomp.verify.c1_sharp_spectrum import mirror_label
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
+from symdecomp.verify.fourier_modes import WINDOW, SectorModes, sector_modes
+from symdecomp.verify.mirror_parts import block_parts, mirror_label
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
+from symdecomp.verify.sector_ring import jacobian_sign, ring_faces, wide_arcs, wide_nets
 
 __all__ = ["fourier_map", "FOURIER_METHOD", "applies", "REACH"]
 
@@ -132,7 +131,7 @@ class _ModeValues:
         if label == ORIGIN:
             return flint.acb(0)
         s, u, w = label
-        if w == 0 and s in (0, self.k):  # the sharp rays: exactly linear (:mod:`.c1_sharp_modes` checks it)
+        if w == 0 and s in (0, self.k):  # the sharp rays: exactly linear (:mod:`.fourier_modes` checks it)
             self.special = True
             d = self.direction if s == 0 else -self.direction.conjugate()
             return d * u / 2
@@ -188,7 +187,7 @@ def _sweeps(angles: list, k: int, explicit: bool):
 
 def fourier_map(scheme, vertex: SharpVertex, k: int, spectral: SpectralResult, picks: list, max_depth: int) -> SectorFinding:
     """Conditions 3-5 in a sector of ``k`` faces from the closed-form modes (module docstring); ``NotApplicableError``
-    where :func:`~.c1_sharp_modes.sector_modes` finds no closed form."""
+    where :func:`~.fourier_modes.sector_modes` finds no closed form."""
     lambdas = tuple(float(p[0].real.mid()) for p in picks)
     chi = _ModeValues(scheme, k)
     sector = _Sector(k, scheme.lattice)

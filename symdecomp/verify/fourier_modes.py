@@ -11,7 +11,7 @@ replace the regular ones; next to ray ``k`` the values are the mirror images, ``
 **The derivation** (:func:`sector_modes`, once per scheme) is exact in ``Q(i)(tau)``, ``tau = tan(pi/(2 k))``, where
 ``omega = (1 + i tau)/(1 - i tau)`` and ``cos(pi/k) = (1 - tau^2)/(1 + tau^2)`` (so BLZ's weights are rational in
 ``tau``). It reads the exact rows of a sector of :data:`WINDOW` faces (the near-edge weight as a symbol,
-:func:`~symdecomp.verify.c1_sharp_spectrum.sector_matrices`): the unknowns are the values in faces ``0..depth`` and
+:func:`~symdecomp.verify.mirror_parts.sector_matrices`): the unknowns are the values in faces ``0..depth`` and
 the Fourier amplitudes ``F``, the equations ``S v = v/2`` on the rows of faces ``0..depth + 2`` (the last ones read
 Fourier values only: the Fourier identity, the same in every face away from the rays), normalised by ``F(1, 0) = 1``.
 The system is solved exactly (sympy's ``DomainMatrix`` over ``QQ_I(tau)``); a unique solution is required, and
@@ -21,7 +21,7 @@ follow from the refinement rows the same way.
 **Why it holds for every k >= WINDOW.** A row reads its point's neighbours only, so the rows of faces
 ``0..depth + 2`` are the same at every ``k >= WINDOW`` (checked: identical at ``WINDOW`` and ``WINDOW + 1`` faces,
 entry by entry), and a row of a face away from both rays is the row one face over, shifted (checked at the window).
-The mirror commutes with the matrix (checked exactly by :func:`~symdecomp.verify.c1_sharp_spectrum.sector_parts`) and
+The mirror commutes with the matrix (checked exactly by :func:`~symdecomp.verify.mirror_parts.sector_parts`) and
 with the refinement to the 3-ring (checked entry by entry), and
 the Fourier amplitudes satisfy the mirror's relation ``F(w, u) = omega conj(F(u, w))`` (``F(u, 0)`` real; checked
 exactly), so the vector defined by the three pieces satisfies every row of the ``k``-sector: ``x = Re v`` and
@@ -47,7 +47,7 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.symbols import sector_faces, theta_k
-from symdecomp.verify.c1_sharp_spectrum import NEAR, mirror_label, sector_matrices, sector_parts
+from symdecomp.verify.mirror_parts import NEAR, mirror_label, sector_matrices, sector_parts
 
 __all__ = ["TAU", "FIELD", "OMEGA", "WINDOW", "SectorModes", "sector_modes"]
 

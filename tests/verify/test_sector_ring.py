@@ -7,10 +7,10 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.verify.c1_sharp import c1_sharp_test
-from symdecomp.verify.c1_sharp_ring import irregular_rows, ring_faces
-from symdecomp.verify.c1_sharp_spectrum import sector_matrices
+from symdecomp.verify.c1_sector_matrix import c1_sharp_test
+from symdecomp.verify.mirror_parts import sector_matrices
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_ring import irregular_rows, ring_faces
 
 
 @pytest.mark.parametrize("k", [3, 4, 5])

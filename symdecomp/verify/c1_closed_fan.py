@@ -2,7 +2,7 @@
 
 A dart is an interior vertex ``O`` of valence ``n`` where one infinitely sharp edge ends; OpenSubdiv keeps the smooth
 vertex rule at ``O`` and applies the crease rules on the sharp edge. The test works on the dart's 2-ring subdivision
-matrix (the one sector of :func:`~symdecomp.verify.c1_sharp_spectrum.sector_matrices` for
+matrix (the one sector of :func:`~symdecomp.verify.mirror_parts.sector_matrices` for
 ``SharpVertex.dart(n, lattice)``, the matrix ``check --dart`` certifies), in which the points of ray ``0`` are copies of
 those of ray ``n`` (checked exactly: their columns are zero, their rows and their refinement rows are ray ``n``'s). Reif's conditions
 (U. Reif, *A unified approach to subdivision algorithms near extraordinary vertices*, CAGD 12, 1995):
@@ -10,7 +10,7 @@ those of ray ``n`` (checked exactly: their columns are zero, their rows and thei
 1. *spectral*: 1 is a simple eigenvalue, the next two ``lambda_1 >= lambda_2`` are real, positive, with two
    eigenvectors, and strictly larger in modulus than every other eigenvalue. The exact 1-ring spectrum decides
    (:func:`~symdecomp.analysis.triangular_eigen.sharp_values`: rational factors, exact multiplicities, Arb balls), and the
-   2-ring's other eigenvalues (:func:`~symdecomp.verify.c1_sharp_spectrum.sector_eigenvalues`) are certified below
+   2-ring's other eigenvalues (:func:`~symdecomp.verify.mirror_parts.sector_eigenvalues`) are certified below
    ``|lambda_2|``;
 2. *regular*: the characteristic map ``chi`` of the two subdominant eigenvectors (exact rational null space when the
    pair is one rational eigenvalue twice, else a certified null vector of the ball matrix) on the ring of ``3 n``
@@ -23,7 +23,7 @@ those of ray ``n`` (checked exactly: their columns are zero, their rows and thei
    ring's inner boundary winds once around the origin (and the outer one as often: no zero in the ring), the
    arguments swept certified by :func:`~symdecomp.verify.bezier.curve_angle`.
 
-Catmull-Clark's darts of valence 3 to 8 are C1 (``tests/verify/test_c1_dart.py``); at valence 4 the pair is
+Catmull-Clark's darts of valence 3 to 8 are C1 (``tests/verify/test_c1_closed_fan.py``); at valence 4 the pair is
 ``1/2`` twice (the regular vertex's), elsewhere ``lambda_1`` is the smooth vertex's subdominant eigenvalue and
 ``lambda_2`` a new one below it. Loop's darts are tested where the dart's weights are rational (valences 3, 4, 6:
 C1); at other valences the exact spectrum is out of reach and the verdict is ``undecided`` with that reason.
@@ -47,35 +47,19 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import check_spline_sharp_rules
 from symdecomp.validate import check_bits, check_depth, check_valence
 from symdecomp.verify.c1 import place_text
-from symdecomp.verify.c1_sharp import SharpC1Result, arc_sweeps, jacobian_sign, ring_nets
-from symdecomp.verify.c1_sharp_spectrum import ball_matrix, sector_eigenvalues, sector_matrices
+from symdecomp.verify.c1_sector_matrix import SharpC1Result
 from symdecomp.verify.c1_spectrum import SpectralResult, round_down
+from symdecomp.verify.mirror_parts import ball_matrix, sector_eigenvalues, sector_matrices
 from symdecomp.verify.result import C1Verdict
+from symdecomp.verify.sector_injectivity import SectorFinding, closed_fan_condition
+from symdecomp.verify.sector_ring import arc_sweeps, jacobian_sign, level_one_map, ring_nets
 
-__all__ = ["DART_METHOD", "DartSpectrum", "DartMap", "c1_dart_test", "dart_spectrum", "dart_vectors", "dart_map"]
+__all__ = ["DART_METHOD", "DartSpectrum", "c1_dart_test", "dart_spectrum", "dart_vectors", "dart_map"]
 
 #: The method, as reported with each verdict.
 DART_METHOD = ("Reif's test on the dart's closed fan: exact spectrum of the 1-ring matrix and certified 2-ring remainder; "
                "Jacobian of the ring's bicubic sub-patches (phantom points at the sharp edge) in Bernstein-Bezier form "
                "(Arb, de Casteljau); winding number of the ring's boundary")
-
-
-@dataclass(frozen=True)
-class DartMap:
-    """What the characteristic map's part of the test found."""
-
-    #: ``c1``, ``not-c1`` or ``undecided``.
-    verdict: C1Verdict
-    #: Why, in words.
-    reason: str
-    #: The Jacobian's certified sign (``None``: not certified).
-    sign: int | None = None
-    #: A lower bound of ``|J|`` on the ring, when certified.
-    bound: float | None = None
-    #: The subdivision depth the sign needed.
-    depth: int | None = None
-    #: The winding number of the ring's inner boundary around the origin, when certified.
-    winding: int | None = None
 
 
 @dataclass(frozen=True)
@@ -167,47 +151,20 @@ def _shift(A, value) -> flint.acb_mat:
     return flint.acb_mat([[A[r, c] - (value if r == c else 0) for c in range(A.ncols())] for r in range(A.nrows())])
 
 
-def _chi(sm, vectors) -> dict:
-    """``{level-1 label: chi}`` (complex balls) from the two real eigenvectors (2-ring, matrix order)."""
-    R = ball_matrix(sm.refine.tolist(), sm.weight)
-    fine = []
-    for v in vectors:
-        col = R * flint.acb_mat([[flint.acb(x)] for x in v])
-        fine.append([col[i, 0].real for i in range(len(sm.fine_labels))])
-    return {lab: flint.acb(fine[0][i], fine[1][i]) for i, lab in enumerate(sm.fine_labels)}
-
-
-def _winding(total) -> int | None:
-    """The integer ``w`` with ``total = 2 pi w`` (a closed curve's swept argument), or ``None`` if not isolated."""
-    if total is None:
-        return None
-    ratio = total / (2 * flint.arb.pi())
-    w = round(float(ratio.mid()))
-    return w if abs(ratio - w) < 0.5 else None
-
-
-def dart_map(sm, vectors, *, max_depth: int = 6) -> DartMap:
+def dart_map(sm, vectors, *, max_depth: int = 6) -> SectorFinding:
     """Conditions 2 and 3 (module docstring) for the dart sector ``sm`` and two real eigenvectors (``vectors``)."""
-    nets = ring_nets(sm, _chi(sm, vectors))
+    nets = ring_nets(sm, level_one_map(sm, vectors))
     cert = jacobian_sign(sm, nets, max_depth)
     if cert.status == "changes":
-        return DartMap(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, face "
-                       f"{cert.where[0] // (len(nets) // sm.k)}): it is not regular", depth=cert.depth)
+        return SectorFinding(C1Verdict.NOT_C1, f"the Jacobian of the characteristic map changes sign ({place_text(cert.where)}, "
+                             f"face {cert.where[0] // (len(nets) // sm.k)}): it is not regular", depth=cert.depth)
     if cert.status == "undecided":
-        return DartMap(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}",
-                       depth=cert.depth)
+        return SectorFinding(C1Verdict.UNDECIDED, f"the Jacobian's sign is not certified at subdivision depth {cert.depth}",
+                             depth=cert.depth)
     sign = 1 if cert.status == "positive" else -1
-    inner, outer = (_winding(t) for t in arc_sweeps(sm, nets))
-    found = dict(sign=sign, bound=cert.lower_bound, depth=cert.depth)
-    if inner is None or outer is None or inner != outer:
-        return DartMap(C1Verdict.UNDECIDED, "the winding numbers of the ring's boundary curves are not certified equal", **found)
-    regular = f"the characteristic map is regular (|J| >= {round_down(cert.lower_bound)})"
-    if abs(inner) != 1:
-        return DartMap(C1Verdict.NOT_C1, f"{regular} but its ring winds {abs(inner)} times around O: not injective",
-                       winding=inner, **found)
-    if inner != sign:  # a regular map keeps the orientation: its boundary winds with the Jacobian's sign
-        return DartMap(C1Verdict.UNDECIDED, f"{regular} but its ring winds against the Jacobian's sign", winding=inner, **found)
-    return DartMap(C1Verdict.C1, f"{regular} and its ring winds once around O: injective", winding=inner, **found)
+    verdict, why, winding = closed_fan_condition(sign, arc_sweeps(sm, nets))
+    reason = why if winding is None else f"the characteristic map is regular (|J| >= {round_down(cert.lower_bound)}) {why}"
+    return SectorFinding(verdict, reason, sign=sign, bound=cert.lower_bound, depth=cert.depth, winding=winding)
 
 
 def _check_aliases(sm) -> None:
@@ -225,7 +182,7 @@ def _check_aliases(sm) -> None:
             raise NotApplicableError(f"the dart's refinement does not identify ray 0 with ray {sm.k} at distance {u}")
 
 
-def _result(scheme, n: int, spectrum: DartSpectrum, found: DartMap | None, max_depth: int, prec: int) -> SharpC1Result:
+def _result(scheme, n: int, spectrum: DartSpectrum, found: SectorFinding | None, max_depth: int, prec: int) -> SharpC1Result:
     verdict = spectrum.verdict if found is None else found.verdict
     reason = spectrum.reason if found is None else f"{spectrum.reason}; {found.reason}"
     lambdas = tuple(float(v.ball.real.mid()) for v in spectrum.pair) or None
@@ -252,7 +209,7 @@ def c1_dart_test(scheme, n: int, *, max_depth: int = 6, prec: int = 64) -> Sharp
     for bits in (prec, 2 * prec):
         with flint.ctx.workprec(bits):
             vectors = dart_vectors(sm, spectrum)
-            found = (DartMap(C1Verdict.UNDECIDED, "an eigenvector is not certified") if vectors is None
+            found = (SectorFinding(C1Verdict.UNDECIDED, "an eigenvector is not certified") if vectors is None
                      else dart_map(sm, vectors, max_depth=max_depth))
         if found.verdict is not C1Verdict.UNDECIDED:
             return _result(scheme, n, spectrum, found, max_depth, bits)

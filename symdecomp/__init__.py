@@ -123,7 +123,8 @@ nothing else.
                    at an interior vertex (1-ring closed forms or K-ring frequency factors), a boundary, crease, corner
                    or dart vertex (mirror blocks) or the neighbourhood of a StencilScheme of the zoo (``certify``; the
                    closed forms' symmetric functions, ``symmetric_functions``; the distinct values and multiplicities
-                   proved, ``multiplicities``; the O(n) route ``structural``; beyond n = 19 for the zoo from the
+                   proved, ``multiplicities``; the O(n) route ``structural``, and O(k) at a boundary, crease or corner vertex,
+                   ``sector_structural``; beyond n = 19 for the zoo from the
                    structural blocks, ``zoo_structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv at an interior vertex (Catmull-Clark or Loop by the lattice) or
                    a boundary, crease, corner or dart vertex (``oracle``; what it reports, ``comparisons``; the

@@ -44,6 +44,7 @@ whole fan), semi-sharp edges, corners given an angle, rules that read ``theta_k`
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 
@@ -62,7 +63,7 @@ from symdecomp.validate import check_digits
 from symdecomp.verify.certify import SharpCertificate, describe_vertex
 from symdecomp.verify.result import CrossCheckStatus
 
-__all__ = ["certify_sector", "applies", "METHOD"]
+__all__ = ["certify_sector", "applies", "default_route", "certify_vertex", "METHOD", "DENSE_UP_TO", "ROUTES"]
 
 #: What the certificate proves, as the ``check`` row's certificate column says it.
 METHOD = ("refined matrix = the mirror model, row by row ({entries} entries, exact in {field}); sine identity for every k; "
@@ -154,3 +155,29 @@ def applies(scheme: Scheme, vertex) -> bool:
     except NotApplicableError:
         return False
     return vertex.sharpness == math.inf
+
+
+#: The faces up to which ``check --certify --k`` takes the dense route by default (both routes run and agree there:
+#: ``tests/verify/test_sector_structural.py``); past them the dense route's characteristic polynomial (cubic in the
+#: faces, 13 s at 64) gives way to this one.
+DENSE_UP_TO = 16
+#: The certificates of a sharp vertex: ``structural`` (:func:`certify_sector`) and ``charpoly`` (the dense route,
+#: :func:`~symdecomp.verify.certify.certify_sharp`).
+ROUTES = ("structural", "charpoly")
+
+
+def default_route(scheme: Scheme, vertex) -> str:
+    """``charpoly`` up to :data:`DENSE_UP_TO` faces and where :func:`certify_sector` does not reach (darts, ...), else
+    ``structural``."""
+    return "structural" if vertex.faces > DENSE_UP_TO and applies(scheme, vertex) else "charpoly"
+
+
+def certify_vertex(vertex, *, scheme: Scheme, route: str | None = None) -> SharpCertificate:
+    """The certificate of ``vertex`` by ``route`` (default :func:`default_route`), vertex first for the shared pool
+    (:func:`symdecomp.parallel.ordered_map`; a vertex that travelled to a worker is given the scheme's own lattice object
+    again, which the refinement compares by identity)."""
+    from symdecomp.verify.certify import certify_sharp
+
+    vertex = dataclasses.replace(vertex, lattice=scheme.lattice.name)
+    route = route or default_route(scheme, vertex)
+    return certify_sector(scheme, vertex) if route == "structural" else certify_sharp(scheme, vertex)

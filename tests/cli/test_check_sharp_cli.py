@@ -23,7 +23,7 @@ def test_boundary_vertices_k_1_to_16_are_proved(capsys, scheme):
     code, out = _rows(capsys, ["check", "--k", "1:16", "--boundary", "--certify", "--scheme", scheme])
     assert code == 0 and out["summary"]["ok"] and out["summary"]["agree"] == 16
     for row in out["rows"]:
-        assert row["status"] == "agree" and row["route"] == "mirror" and row["multiplicities_certified"]
+        assert row["status"] == "agree" and row["route"] == "charpoly" and row["multiplicities_certified"]
         vertex = (sd.SharpVertex.boundary(row["n"], sd.QUAD if scheme == "catmull-clark" else sd.TRIANGLE))
         chi = sd.exact_sharp_matrix(sd.catmull_clark() if scheme == "catmull-clark" else sd.loop(), vertex).charpoly()
         # the distinct count is the squarefree part's degree; the multiplicities add up to the degree

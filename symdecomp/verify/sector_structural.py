@@ -138,7 +138,12 @@ def certify_sector(scheme: Scheme, vertex, *, digits: int = 20, matrix: tuple | 
                                 multiplicities_certified=False, distinct=0, multiplicities=(), values=(), **common,
                                 message=f"{name}: refuted: {where} (exact)")
     prec = max(256, 4 * digits + 64)
-    values, size = structural_values(scheme, vertex, prec=prec)
+    try:
+        values, size = structural_values(scheme, vertex, prec=prec)
+    except NotApplicableError as exc:  # the layout was read above: what is left is a pair of values not told apart
+        return SharpCertificate(status=CrossCheckStatus.UNDECIDED, method="refined matrix = the mirror model; values not joined",
+                                multiplicities_certified=False, distinct=0, multiplicities=(), values=(), **common,
+                                message=f"{name}: undecided: the rows are the model's, but {exc}")
     with flint.ctx.workprec(prec):
         texts = tuple(acb_text(v.ball, digits) for v in values)
     method = METHOD.format(entries=entries, field=_field(lay, irrational))

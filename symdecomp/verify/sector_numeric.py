@@ -25,7 +25,7 @@ import sympy as sp
 
 from symdecomp import symbols
 from symdecomp.algebra.numbers import to_sympy
-from symdecomp.analysis.mirror import THETA, THETA_K, crease_block, sine_block, vertex_layout
+from symdecomp.analysis.mirror import THETA, THETA_K, crease_block, sine_block, vertex_layout, vertex_of
 from symdecomp.analysis.sharp_structural import structural_values
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, sharp_matrix_rows
@@ -114,6 +114,8 @@ def polyline_deviation(scheme: Scheme, vertex) -> float:
 
 def numeric_sector(scheme: Scheme, vertex, *, dps: int = 50) -> SharpNumericRow:
     """The numeric check of ``vertex``: its eigenvalues up to :data:`DENSE_FACES` faces, else its polylines."""
+    scheme = check_scheme(scheme)
+    vertex = vertex_of(scheme, vertex)
     if vertex.faces <= DENSE_FACES:
         return numeric_sharp(scheme, vertex, dps=dps)
     values, size = structural_values(scheme, vertex)

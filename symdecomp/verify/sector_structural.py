@@ -53,7 +53,7 @@ import sympy as sp
 
 from symdecomp.algebra.cos_field import affine_in
 from symdecomp.algebra.numbers import to_sympy
-from symdecomp.analysis.mirror import sector_rows
+from symdecomp.analysis.mirror import sector_rows, vertex_of
 from symdecomp.analysis.sharp_structural import layout, structural_values
 from symdecomp.analysis.spectrum import acb_text
 from symdecomp.errors import NotApplicableError
@@ -128,6 +128,7 @@ def certify_sector(scheme: Scheme, vertex, *, digits: int = 20, matrix: tuple | 
     Raises :class:`~symdecomp.errors.NotApplicableError` where the route does not reach (module docstring).
     """
     scheme, digits = check_scheme(scheme), check_digits(digits)
+    vertex = vertex_of(scheme, vertex)
     lay, name = layout(scheme, vertex), describe_vertex(vertex)
     k = vertex.sectors[0]
     refined = sharp_matrix_rows(scheme, vertex) if matrix is None else tuple(matrix)

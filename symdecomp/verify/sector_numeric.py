@@ -46,7 +46,7 @@ CHUNK = 256
 
 def _float_matrix(rows: tuple):
     """The sparse rows as a scipy CSR matrix of doubles (each distinct exact weight converted once)."""
-    from scipy.sparse import csr_matrix
+    from scipy.sparse import csr_matrix  # type: ignore[import-untyped]  # SciPy ships no annotations
 
     cache: dict = {}
     data, cols, ptr = [], [], [0]

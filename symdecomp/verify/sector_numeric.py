@@ -81,8 +81,8 @@ def _sector_deviation(S, scheme: Scheme, lay, p: int, k: int) -> float:
     """The largest entry of ``S V - V B`` over the sector's polylines (module docstring), ``CHUNK`` frequencies at once."""
     block = _block_function(scheme, True)
     top = k if lay.quad else k - 1
-    a_rows = np.array([lay.a(p + i) for i in range(1, k)])
-    b_rows = np.array([lay.b(p + i) for i in range(k)]) if lay.quad else None
+    a_rows = np.array([lay.a(p + i) for i in range(1, k)], dtype=int)
+    b_rows = np.array([lay.b(p + i) for i in range(k)], dtype=int) if lay.quad else None
     worst = 0.0
     for j0 in range(1, top + 1, CHUNK):
         theta = np.pi * np.arange(j0, min(top, j0 + CHUNK - 1) + 1) / k

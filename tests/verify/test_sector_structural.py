@@ -116,6 +116,14 @@ def test_numeric_mode_past_the_dense_faces_compares_polylines(capsys):
     assert all(float(r["deviation"]) < sector_numeric.TOLERANCE for r in out["rows"][1:])
 
 
+@pytest.mark.parametrize("argv", [["--crease", "1"], ["--crease", "2", "--scheme", "loop-blz"], ["--corner"]])
+def test_polylines_of_every_sector_kind_agree_past_64_faces(capsys, argv):
+    """A one-face sector (no interior edge: no a-polyline) included."""
+    assert main(["check", "--k", "65", *argv, "--json", "--quiet", "--jobs", "1"]) == 0
+    row = json.loads(capsys.readouterr().out)["rows"][0]
+    assert row["compared"] == "polylines" and row["status"] == "agree" and float(row["deviation"]) < 1e-12
+
+
 def test_the_polylines_see_a_block_that_is_not_the_matrixs(monkeypatch):
     """The polylines' block read from the plain edge rule where BLZ's modified one acts: the check sees it."""
     vertex = sd.SharpVertex.boundary(80, sd.QUAD)

@@ -89,8 +89,8 @@ def register(sub) -> None:
                        "each K is proved, by the route --route names (charpoly: chi_S of the 1-ring matrix built by exact "
                        "refinement of the tagged mesh = the product of the mirror decomposition's blocks' characteristic "
                        f"polynomials, at most {MAX_FACES} faces; structural: O(K), the refined matrix = the mirror model row "
-                       "by row, exactly, so its spectrum is the blocks'; default: charpoly up to 16 faces and for darts, "
-                       "structural past them); without, numerically (not darts): the blocks' values against the matrix's "
+                       "by row, exactly, so its spectrum is the blocks'; default: charpoly for darts and, under rational rules, "
+                       "up to 16 faces; structural otherwise); without, numerically (not darts): the blocks' values against the matrix's "
                        f"eigenvalues to --dps/2 digits up to {MAX_FACES} faces, past them the refined matrix applied to "
                        "every sine polyline against its block in double precision; on --jobs workers either way")
     add_scheme_option(p, zoo=True)

@@ -3,9 +3,10 @@ blocks against the vertex's refined matrix, one row per vertex, on the shared po
 
 Certified (``--certify``), by one of two routes (``--route``, named in each row as ``check --n`` names its own):
 ``charpoly``, the dense route (``chi_S`` of the refined matrix equals the blocks' product, exactly: cubic in the faces,
-at most 64), the default up to :data:`~symdecomp.verify.sector_structural.DENSE_UP_TO` faces and for darts; and
-``structural``, O(k) (:mod:`symdecomp.verify.sector_structural`: the refined matrix is the mirror model row by row),
-the default past them, to 10,000 faces. Numeric (without ``--certify``, :mod:`symdecomp.verify.sector_numeric`): the
+at most 64), the default for darts and, under rational rules, up to
+:data:`~symdecomp.verify.sector_structural.DENSE_UP_TO` faces; and ``structural``, O(k)
+(:mod:`symdecomp.verify.sector_structural`: the refined matrix is the mirror model row by row), the default otherwise,
+to 10,000 faces. Numeric (without ``--certify``, :mod:`symdecomp.verify.sector_numeric`): the
 blocks' values against the refined matrix's eigenvalues while the matrix is small enough to solve densely, else the
 refined matrix applied to every sine polyline against its block, in double precision; each row says which.
 """
@@ -70,7 +71,7 @@ def _routes(args, vertices) -> list[str]:
         if route == "charpoly" and vertex.faces > MAX_DENSE_FACES:
             raise InvalidInputError(f"--route charpoly: {describe(vertex)} has {vertex.faces} faces; the dense route reads at "
                                     f"most {MAX_DENSE_FACES} (its characteristic polynomial is cubic in the faces); the "
-                                    "structural route (the default past 16 faces) reads up to 10000")
+                                    "structural route reads up to 10000")
         routes.append(route)
     return routes
 

@@ -163,9 +163,10 @@ def applies(scheme: Scheme, vertex) -> bool:
     return vertex.sharpness == math.inf
 
 
-#: The faces up to which ``check --certify --k`` takes the dense route by default (both routes run and agree there:
-#: ``tests/verify/test_sector_structural.py``); past them the dense route's characteristic polynomial (cubic in the
-#: faces, 13 s at 64) gives way to this one.
+#: The faces up to which ``check --certify --k`` takes the dense route by default under rational rules (both routes run
+#: and agree there: ``tests/verify/test_sector_structural.py``); past them the dense route's characteristic polynomial
+#: (cubic in the faces, 13 s at 64) gives way to this one. Rules with ``cos(theta_k)`` weights take this route at every
+#: size: their dense route works in ``Q(cos(pi/k))`` (minutes for ``check --k 1:16 --scheme catmull-clark-blz``).
 DENSE_UP_TO = 16
 #: The certificates of a sharp vertex: ``structural`` (:func:`certify_sector`) and ``charpoly`` (the dense route,
 #: :func:`~symdecomp.verify.certify.certify_sharp`).
@@ -173,9 +174,11 @@ ROUTES = ("structural", "charpoly")
 
 
 def default_route(scheme: Scheme, vertex) -> str:
-    """``charpoly`` up to :data:`DENSE_UP_TO` faces and where :func:`certify_sector` does not reach (darts, ...), else
-    ``structural``."""
-    return "structural" if vertex.faces > DENSE_UP_TO and applies(scheme, vertex) else "charpoly"
+    """``structural`` where :func:`certify_sector` reaches the vertex, except under rational rules up to
+    :data:`DENSE_UP_TO` faces; else ``charpoly`` (darts, ...)."""
+    reads_angle = scheme.sharp is not None and scheme.sharp.near_edge_centre is not None
+    small = vertex.faces <= DENSE_UP_TO and not reads_angle
+    return "structural" if not small and applies(scheme, vertex) else "charpoly"
 
 
 def certify_vertex(vertex, *, scheme: Scheme, route: str | None = None) -> SharpCertificate:

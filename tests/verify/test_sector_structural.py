@@ -78,6 +78,9 @@ def test_darts_and_semi_sharp_edges_are_out_of_this_routes_reach():
     assert sector_structural.default_route(CC, sd.SharpVertex.dart(40, sd.QUAD)) == "charpoly"
     assert sector_structural.default_route(CC, sd.SharpVertex.boundary(17, sd.QUAD)) == "structural"
     assert sector_structural.default_route(CC, sd.SharpVertex.boundary(16, sd.QUAD)) == "charpoly"
+    # cos(theta_k) weights: the dense route works in Q(cos(pi/k)), minutes at 16 faces; the structural one at every size
+    assert sector_structural.default_route(CC_BLZ, sd.SharpVertex.boundary(3, sd.QUAD)) == "structural"
+    assert sector_structural.default_route(CC_BLZ, sd.SharpVertex.dart(5, sd.QUAD)) == "charpoly"
 
 
 def test_check_takes_the_dense_route_up_to_16_faces_and_the_structural_one_past(capsys):

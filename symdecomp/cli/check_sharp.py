@@ -1,5 +1,6 @@
 """``symdecomp check --k A:B --boundary`` (and ``--corner``, ``--crease K2``, ``--dart``): the mirror decomposition's
-blocks against the vertex's refined matrix, one row per vertex, on the shared pool (``--jobs``, ``--executor``), in order.
+blocks against the vertex's refined matrix, one row per vertex, on the shared pool (``--jobs``, ``--executor``), in order
+(the first vertex is checked before the workers fork, so that the once-per-scheme sine identity is proved once).
 
 Certified (``--certify``), by one of two routes (``--route``, named in each row as ``check --n`` names its own):
 ``charpoly``, the dense route (``chi_S`` of the refined matrix equals the blocks' product, exactly: cubic in the faces,
@@ -114,7 +115,7 @@ def _run_certified(args, plot) -> int:
         _header(args, routes)
     asked = args.route or ("structural" if args.structural else None)
     results = ordered_map(certify_vertex, vertices, shared={"scheme": args.scheme, "route": asked}, jobs=args.jobs,
-                          executor=args.executor, cost=lambda v: v.faces)
+                          executor=args.executor, warm_up=True, cost=lambda v: v.faces)
     for r in progress(results, len(vertices), "certify", enabled=not args.quiet):
         rows.append(r)
         if not args.json:
@@ -161,7 +162,7 @@ def _run_numeric(args) -> int:
               "them the matrix applied to every sine polyline against its block, in double precision")
         print(f"{'K':>5}  {'status':<13} {'size':>5} {'distinct':>8}  {'compared':<10} {'vertex':<16} deviation")
     results = ordered_map(numeric_sector_row, vertices, shared={"scheme": args.scheme, "dps": args.dps}, jobs=args.jobs,
-                          executor=args.executor, cost=lambda v: v.faces)
+                          executor=args.executor, warm_up=True, cost=lambda v: v.faces)
     for r in progress(results, len(vertices), "check", enabled=not args.quiet):
         rows.append(r)
         if not args.json:

@@ -18,7 +18,12 @@ only route before this change, now reading the sector's sparse rows, which made 
 ``check --k`` (:func:`check_targets`): the certificate of a vertex of 10,000 faces by the structural route (the
 refined matrix's rows against the mirror model, O(k)), a range of sectors on the pool, and numeric mode's polylines at
 10,000 faces, each beside the dense route at k = 64 (``check --k 64 --route charpoly``, 13 s before this change; numeric:
-the dense eigenvalues at 64 faces), the largest vertex that route reads.
+the dense eigenvalues at 64 faces), the largest vertex that route reads. Measured in one run (``--check``, 2 cores, load
+average 0.2 to 0.8, fresh processes, start-up included): ``check --k 10000 --boundary --certify`` 9.4 s (BLZ's rules
+9.7 s; ``--k 9997 --crease 3 --scheme loop-blz`` 5.9 s), ``--k 1:200 --corner --certify --scheme catmull-clark-blz``
+7.1 s, beside the dense route at k = 64, 7.7 s; numeric ``check --k 10000 --boundary`` (polylines) 16.3 s beside the
+dense eigenvalues at 64 faces, 2.9 s. (Before this change ``--k 1:50 --corner --certify --scheme catmull-clark-blz`` with
+its 16 smallest vertices on the dense route took 368 s on a loaded machine.)
 
     python benchmarks/bench_sharp.py            # every target
     python benchmarks/bench_sharp.py --quick    # k = 200 and the dense route at k = 6
@@ -113,7 +118,7 @@ def check_targets(quick: bool = False) -> list[dict]:
     for argv, baseline in (
             (["--k", str(top), "--boundary", "--certify"], dense),
             (["--k", str(top), "--boundary", "--certify", "--scheme", "catmull-clark-blz"], dense),
-            (["--k", str(top), "--crease", "3", "--certify", "--scheme", "loop-blz"], dense),
+            (["--k", str(top - 3), "--crease", "3", "--certify", "--scheme", "loop-blz"], dense),  # K + K2 = top faces
             (["--k", f"1:{span}", "--corner", "--certify", "--scheme", "catmull-clark-blz"], dense),
             (["--k", str(top), "--boundary"], dense_numeric)):
         numeric = "--certify" not in argv

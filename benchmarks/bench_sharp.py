@@ -15,8 +15,19 @@ polynomial factored, over ``Q(cos(pi/k))`` for BLZ's rules) on a small vertex, `
 211 s before this change); for ``c1``, the dense test alone (:func:`~symdecomp.verify.c1_sector_matrix.c1_sharp_test`, the
 only route before this change, now reading the sector's sparse rows, which made it faster too) at ``k = 1..8``.
 
+``check --k`` (:func:`check_targets`): the certificate of a vertex of 10,000 faces by the structural route (the
+refined matrix's rows against the mirror model, O(k)), a range of sectors on the pool, and numeric mode's polylines at
+10,000 faces, each beside the dense route at k = 64 (``check --k 64 --route charpoly``, 13 s before this change; numeric:
+the dense eigenvalues at 64 faces), the largest vertex that route reads. Measured in one run (``--check``, 2 cores, load
+average 0.2 to 0.8, fresh processes, start-up included): ``check --k 10000 --boundary --certify`` 9.4 s (BLZ's rules
+9.7 s; ``--k 9997 --crease 3 --scheme loop-blz`` 5.9 s), ``--k 1:200 --corner --certify --scheme catmull-clark-blz``
+7.1 s, beside the dense route at k = 64, 7.7 s; numeric ``check --k 10000 --boundary`` (polylines) 16.3 s beside the
+dense eigenvalues at 64 faces, 2.9 s. (Before this change ``--k 1:50 --corner --certify --scheme catmull-clark-blz`` with
+its 16 smallest vertices on the dense route took 368 s on a loaded machine.)
+
     python benchmarks/bench_sharp.py            # every target
     python benchmarks/bench_sharp.py --quick    # k = 200 and the dense route at k = 6
+    python benchmarks/bench_sharp.py --check    # only check --k's rows (--quick: k = 1000, the dense route at k = 24)
 """
 
 from __future__ import annotations
@@ -66,7 +77,7 @@ def targets(quick: bool = False) -> list[dict]:
                      "seconds": _seconds("spectrum", str(k), *option, "--scheme", scheme),
                      "baseline": f"dense route, {dense_vertex} k = {small}",
                      "baseline_seconds": _dense_seconds(scheme, dense_vertex, small)})
-    return rows + c1_targets(quick)
+    return rows + c1_targets(quick) + check_targets(quick)
 
 
 def _dense_c1_seconds(scheme: str, vertex: str, faces: range) -> float:
@@ -97,11 +108,32 @@ def c1_targets(quick: bool = False) -> list[dict]:
     return rows
 
 
+def check_targets(quick: bool = False) -> list[dict]:
+    """``check --k`` past the dense route's 64 faces, beside the dense route at its largest vertex (``quick``: k = 1000,
+    the range 1:50, the dense route at k = 24)."""
+    top, span, small = (1000, 50, 24) if quick else (10_000, 200, 64)
+    dense = _seconds("check", "--k", str(small), "--boundary", "--certify", "--route", "charpoly", "--quiet")
+    dense_numeric = _seconds("check", "--k", str(small), "--boundary", "--quiet", "--jobs", "1")
+    rows = []
+    for argv, baseline in (
+            (["--k", str(top), "--boundary", "--certify"], dense),
+            (["--k", str(top), "--boundary", "--certify", "--scheme", "catmull-clark-blz"], dense),
+            (["--k", str(top - 3), "--crease", "3", "--certify", "--scheme", "loop-blz"], dense),  # K + K2 = top faces
+            (["--k", f"1:{span}", "--corner", "--certify", "--scheme", "catmull-clark-blz"], dense),
+            (["--k", str(top), "--boundary"], dense_numeric)):
+        numeric = "--certify" not in argv
+        rows.append({"target": "check " + " ".join(argv), "limit_seconds": None, "seconds": _seconds("check", *argv, "--quiet"),
+                     "baseline": f"check --k {small} --boundary" + ("" if numeric else " --certify --route charpoly")
+                     + (" (dense eigenvalues)" if numeric else " (dense route)"), "baseline_seconds": baseline})
+    return rows
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="k = 200 and the dense route at k = 6, for a smoke run")
+    parser.add_argument("--check", action="store_true", help="only check --k's rows")
     args = parser.parse_args(argv)
-    for row in targets(args.quick):
+    for row in (check_targets(args.quick) if args.check else targets(args.quick)):
         print(row)
     return 0
 

@@ -123,11 +123,13 @@ nothing else.
                    masks of a block-triangular matrix part by part, exact left eigenvectors (``triangular_masks``); how Jupyter
                    shows a result, delegating to the output layer (``display``)
 ``verify/``        cross-checks against the full matrices: numeric, at an interior vertex (1-ring or K-ring) or a
-                   boundary, crease or corner sector (``numeric``; certified Arb enclosures ``arb_numeric``), certified
+                   boundary, crease or corner sector (``numeric``; past the faces solved densely, the refined matrix on
+                   every sine polyline, ``sector_numeric``; certified Arb enclosures ``arb_numeric``), certified
                    at an interior vertex (1-ring closed forms or K-ring frequency factors), a boundary, crease, corner
                    or dart vertex (mirror blocks) or the neighbourhood of a StencilScheme of the zoo (``certify``; the
                    closed forms' symmetric functions, ``symmetric_functions``; the distinct values and multiplicities
-                   proved, ``multiplicities``; the O(n) route ``structural``; beyond n = 19 for the zoo from the
+                   proved, ``multiplicities``; the O(n) route ``structural``, and O(k) at a boundary, crease or corner vertex,
+                   ``sector_structural``; beyond n = 19 for the zoo from the
                    structural blocks, ``zoo_structural``), their results and
                    the C1 verdicts (``result``); OpenSubdiv at an interior vertex (Catmull-Clark or Loop by the lattice) or
                    a boundary, crease, corner or dart vertex (``oracle``; what it reports, ``comparisons``; the
@@ -209,7 +211,8 @@ nothing else.
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
                    ``evaldata_cmd`` (creases and BLZ's rules, ``evaldata_sector``; the zoo's faces, ``evaldata_dual``), ``inspect_cmd`` (its outputs
-                   ``inspect_outputs``, its per-vertex table ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``),
+                   ``inspect_outputs``, its per-vertex table ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``;
+                   check at boundary, crease, corner and dart vertices, ``check_sharp``),
                    shared argument types and output (``common``), output files written whole
                    (``files``), the options and output of boundary, crease, corner and dart vertices
                    (``sharp``), the commands spectrum, masks and check for a scheme of the zoo (``zoo``), and artifacts

@@ -50,7 +50,7 @@ from symdecomp.symbols import n as N
 from symdecomp.validate import check_int, check_type
 
 __all__ = ["THETA", "THETA_K", "SineBlock", "SectorDecomposition", "sharp_weights", "with_near_edge",
-           "mirror_stencils", "sine_block", "sine_identity", "crease_block", "sector_matrix", "sector_decomposition",
+           "mirror_stencils", "sine_block", "sine_identity", "crease_block", "sector_rows", "sector_matrix", "sector_decomposition",
            "sector_spectrum"]
 
 #: The frequency of a sine polyline: ``theta = pi j/k`` in a sector of ``k`` faces.
@@ -265,53 +265,72 @@ def vertex_layout(scheme: Scheme, vertex) -> _Layout:
     return _Layout(vertex.sectors, vertex.closed, corner, scheme.face_rule is not None, angle)
 
 
-def _add_interior(P: sp.Matrix, lay: _Layout, row: int, centre, stencil: dict, m: int) -> None:
-    P[row, 0] += centre
+def _add_interior(row: dict, lay: _Layout, centre, stencil: dict, m: int) -> None:
+    row[0] = row.get(0, 0) + centre
     for d, w in stencil["a"].items():
-        P[row, lay.a(m + d)] += w
+        row[lay.a(m + d)] = row.get(lay.a(m + d), 0) + w
     for d, w in stencil["b"].items():
-        P[row, lay.b(m + d)] += w
+        row[lay.b(m + d)] = row.get(lay.b(m + d), 0) + w
+
+
+def _centre_row(scheme: Scheme, lay: _Layout, rules) -> dict:
+    """Row ``O``: the crease block's first row, or at a dart the smooth vertex rule at valence ``n``."""
+    if len(lay.sharp) == 1:
+        v, n = scheme.vertex_rule, check_int(lay.faces, "faces around a dart", minimum=3)
+        row = {0: v.center.subs(N, n)}
+        for m in range(n):
+            row[lay.a(m)] = row.get(lay.a(m), 0) + v.each_a.subs(N, n)
+            if lay.quad:
+                row[lay.b(m)] = row.get(lay.b(m), 0) + v.each_b.subs(N, n)
+        return row
+    C = crease_block(scheme, len(lay.sharp), corner=lay.corner, rules=rules)
+    row = {0: C[0, 0]}
+    for r, m in enumerate(lay.sharp, 1):
+        row[lay.a(m)] = row.get(lay.a(m), 0) + C[0, r]
+    return row
+
+
+def sector_rows(scheme, vertex, rules=None) -> tuple[dict, ...]:
+    """The one-step matrix of the 1-ring of ``vertex`` assembled from the stencils, sparse: ``{column: weight}`` per row.
+
+    The model the blocks describe (:func:`sector_matrix` is it, dense). Order ``O, a_0..a_m, b_0..b_{f-1}`` (``a_0`` on
+    the first sharp edge). Interior points use the smooth stencils (BLZ's modified edge rule next to a sharp vertex
+    where the rules give it), with ``theta_k`` the sector angle over the sector's faces, evaluated once per sector; a
+    dart's ``O`` uses the smooth vertex rule at valence ``n``. O(faces) work and entries.
+    """
+    scheme = check_scheme(scheme)
+    lay = vertex_layout(scheme, vertex)
+    edge, face = mirror_stencils(scheme)
+    w = sharp_weights(scheme, rules)
+    rows: list[dict] = [{} for _ in range(lay.size)]
+    rows[0] = _centre_row(scheme, lay, rules)
+    for m in lay.sharp:
+        rows[lay.a(m)] = {0: w["crease_edge"], lay.a(m): 1 - w["crease_edge"]}
+    e = _edge_weights(scheme, edge, rules, modified=len(lay.sharp) > 1)
+    for p, k in zip(lay.starts, lay.sectors):
+        at = {THETA_K: lay.angle / k, symbols.sector_faces: k}
+        stencil = {"a": {d: sp.sympify(x, strict=True).subs(at) for d, x in e["a"].items()}, "b": e["b"]}
+        centre = sp.sympify(e["O"], strict=True).subs(at)
+        for i in range(1, k):
+            _add_interior(rows[lay.a(p + i)], lay, centre, stencil, p + i)
+        for i in range(k if lay.quad else 0):
+            _add_interior(rows[lay.b(p + i)], lay, face["O"], face, p + i)
+    return tuple(rows)
 
 
 def sector_matrix(scheme, vertex, rules=None) -> sp.Matrix:
-    """The exact one-step matrix of the 1-ring of ``vertex`` assembled from the stencils (the model the blocks describe).
-
-    Order ``O, a_0..a_m, b_0..b_{f-1}`` (``a_0`` on the first sharp edge). Interior points use the smooth stencils
-    (BLZ's modified edge rule next to a sharp vertex where the rules give it), with ``theta_k`` the sector angle
-    over the sector's faces; a dart's ``O`` uses the smooth vertex rule at valence ``n``.
-    """
+    """The exact one-step matrix of the 1-ring of ``vertex`` assembled from the stencils (the model the blocks describe):
+    :func:`sector_rows`, dense (for at most ``MAX_DENSE_FACES`` faces)."""
     from symdecomp.schemes.sector import MAX_DENSE_FACES
 
     scheme = check_scheme(scheme)
     lay = vertex_layout(scheme, vertex)
     if lay.faces > MAX_DENSE_FACES:
         raise InvalidInputError(f"vertex: {lay.faces} faces; the assembled matrix is built for at most {MAX_DENSE_FACES} faces")
-    edge, face = mirror_stencils(scheme)
-    w = sharp_weights(scheme, rules)
     P = sp.zeros(lay.size, lay.size)
-    sharp = lay.sharp
-    if len(sharp) == 1:  # a dart: the smooth vertex rule
-        v, n = scheme.vertex_rule, check_int(lay.faces, "faces around a dart", minimum=3)
-        P[0, 0] = v.center.subs(N, n)
-        for m in range(n):
-            P[0, lay.a(m)] += v.each_a.subs(N, n)
-            if lay.quad:
-                P[0, lay.b(m)] += v.each_b.subs(N, n)
-    else:
-        C = crease_block(scheme, len(sharp), corner=lay.corner, rules=rules)
-        P[0, 0] = C[0, 0]
-        for r, m in enumerate(sharp, 1):
-            P[0, lay.a(m)] += C[0, r]
-    for m in sharp:
-        P[lay.a(m), 0], P[lay.a(m), lay.a(m)] = w["crease_edge"], 1 - w["crease_edge"]
-    for p, k in zip(lay.starts, lay.sectors):
-        e = _edge_weights(scheme, edge, rules, modified=len(sharp) > 1)
-        at = {THETA_K: lay.angle / k, symbols.sector_faces: k}
-        for i in range(1, k):
-            _add_interior(P, lay, lay.a(p + i), sp.sympify(e["O"], strict=True).subs(at),
-                          {"a": {d: sp.sympify(x, strict=True).subs(at) for d, x in e["a"].items()}, "b": e["b"]}, p + i)
-        for i in range(k if lay.quad else 0):
-            _add_interior(P, lay, lay.b(p + i), face["O"], face, p + i)
+    for r, row in enumerate(sector_rows(scheme, vertex, rules)):
+        for c, x in row.items():
+            P[r, c] = x
     return P
 
 

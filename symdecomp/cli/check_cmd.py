@@ -24,7 +24,7 @@ from symdecomp.cli.common import (
 )
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
-from symdecomp.cli.sharp import add_sharp_options, sector_range
+from symdecomp.cli.sharp import MAX_FACES, MAX_STRUCTURAL_FACES, add_sharp_options, sector_range
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import MAX_DOUBLE_DIGITS, check_memory
 
@@ -84,11 +84,15 @@ def register(sub) -> None:
     add_pool_options(p)
     flag(p, "--json", help="print one JSON object: {rows: [...], summary: {...}}")
     which.add_argument("--k", dest="sectors", type=sector_range, action=Once, metavar="A:B",
-                       help="with --boundary, --corner, --crease K2 or --dart: the faces K of the vertex's "
-                       "sector, K or an inclusive range A:B (1 <= K <= 64); with --certify each K is proved: the mirror "
-                       "decomposition's blocks against the 1-ring matrix built by exact refinement of the tagged mesh "
-                       "(chi_S = the product of the blocks' characteristic polynomials, exactly); without, numerically "
-                       "(not darts): the blocks' values against the matrix's eigenvalues to --dps/2 digits, on --jobs workers")
+                       help="with --boundary, --corner, --crease K2 or --dart: the faces K of the vertex's sector, K or an "
+                       f"inclusive range A:B (1 <= K <= {MAX_STRUCTURAL_FACES}; darts at most {MAX_FACES}); with --certify "
+                       "each K is proved, by the route --route names (charpoly: chi_S of the 1-ring matrix built by exact "
+                       "refinement of the tagged mesh = the product of the mirror decomposition's blocks' characteristic "
+                       f"polynomials, at most {MAX_FACES} faces; structural: O(K), the refined matrix = the mirror model row "
+                       "by row, exactly, so its spectrum is the blocks'; default: charpoly for darts and, under rational rules, "
+                       "up to 16 faces; structural otherwise); without, numerically (not darts): the blocks' values against the matrix's "
+                       f"eigenvalues to --dps/2 digits up to {MAX_FACES} faces, past them the refined matrix applied to "
+                       "every sine polyline against its block in double precision; on --jobs workers either way")
     add_scheme_option(p, zoo=True)
     add_rings_option(p)
     add_sharp_options(p, count="--k", sharpness_help=SHARPNESS_HELP)
@@ -98,106 +102,10 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def _run_sharp(args, plot) -> int:
-    """``check --k A:B --boundary --certify`` (and --corner, --crease K2, --dart): one certified row per K."""
-    from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
-    from symdecomp.verify.certify import certify_sharp
-
-    refuse_semi_sharp(args)
-    if not args.certify:
-        return _run_sharp_numeric(args)
-    for option in ("--route", "--structural", "--solver", "--jobs", "--executor", "--dps"):
-        if given(args, option.lstrip("-")):
-            raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
-    refuse_sharp_options(args, "--rings")
-    vertices = [sharp_vertex(args, k) for k in args.sectors]  # every bad combination refused before the work
-    from symdecomp.analysis.triangular_eigen import sharp_matrix
-
-    for vertex in vertices:  # rules out of reach at some K: refused before the header
-        exact_only(args, vertex, lambda: sharp_matrix(args.scheme, vertex))  # noqa: B023 - called at once
-    start, rows = time.perf_counter(), []
-    if not args.json:
-        print(f"{args.scheme.name}: mirror decomposition vs full matrix, certified (exact): chi_S of the refined 1-ring "
-              "matrix = det(l - C) prod det(l - M(theta_j)) in Q[l] (Q(cos(pi/K))[l] for cos(theta_k) weights)")
-        print(f"{'K':>4}  {'status':<9} {'distinct':>8}  {'mult.':<9} {'vertex':<16} {'chi_S bits':>10}  certificate")
-    for vertex in progress(vertices, len(vertices), "certify", enabled=not args.quiet):
-        r = exact_only(args, vertex, lambda: certify_sharp(args.scheme, vertex))  # noqa: B023 - called at once
-        rows.append(r)
-        if not args.json:
-            line = (f"{r.n:>4}  {r.status.value:<9} {r.distinct:>8}  {'exact':<9} {r.vertex:<16} {r.height_bits:>10}  "
-                    f"{r.method}")
-            print(line if r.ok else f"{line}\n      {r.message}", flush=True)
-    elapsed = time.perf_counter() - start
-    failed = [r for r in rows if not r.ok]
-    counts = {st: sum(1 for r in rows if r.status.value == st) for st in ("agree", "disagree", "undecided")}
-    if args.json:
-        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertices[0]).split()[0], "rows": [r.as_json() for r in rows],
-                    "summary": {"mode": "certified", "route": "mirror", "sectors": len(rows), **counts,
-                                "seconds": round(elapsed, 3), "ok": not failed}})
-    else:
-        tally = ", ".join(f"{v} {k}" for k, v in counts.items() if v)
-        print(f"{len(rows)} vertices: {tally} ({elapsed:.2f} s)")
-        for r in failed:
-            print(f"FAILED {r.message}")
-    write_plot(plot, lambda: _figure(args.scheme.name, rows))
-    return 1 if failed else 0
-
-
-def refuse_semi_sharp(args) -> None:
-    """Refuse a finite ``--sharpness`` at once, before the header: both modes check the mirror decomposition, which a
-    semi-sharp vertex does not have (its matrix changes level by level; ``spectrum`` shows the levels)."""
-    import math
-
-    from symdecomp.cli.sharp import check_sharp_options
-
-    check_sharp_options(args)  # --sharpness without --crease or --dart: that line first
-    if args.sharpness != math.inf:
-        kind = "--dart" if args.dart else "--crease"
-        mode = "--certify" if args.certify else "numeric mode"
-        raise InvalidInputError(f"--sharpness {args.sharpness} with check {kind} ({mode}): check reads infinitely sharp edges "
-                                "only (the mirror decomposition it checks against needs them); spectrum and masks read a "
-                                "semi-sharp vertex level by level")
-
-
 def _figure(scheme: str, rows: list):
     from symdecomp.output.plotting.check_chart import check_figure
 
     return check_figure(scheme, [r.as_json() for r in rows])
-
-
-def _run_sharp_numeric(args) -> int:
-    """``check --k A:B --boundary`` (and --corner, --crease K2): the blocks against the refined matrix, numerically, on the pool."""
-    from symdecomp.analysis.block_values import structural_values
-    from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
-    from symdecomp.parallel import ordered_map
-    from symdecomp.verify.numeric import numeric_row
-
-    for option in ("--route", "--structural", "--solver"):
-        if given(args, option.lstrip("-")):
-            raise InvalidInputError(f"--k and {option} cannot be used together: {option} applies to interior valences (--n)")
-    refuse_sharp_options(args, "--rings")
-    vertices = [sharp_vertex(args, k) for k in args.sectors]
-    exact_only(args, vertices[0], lambda: structural_values(args.scheme, vertices[0]))  # darts, semi-sharp: refused here
-    start, rows = time.perf_counter(), []
-    if not args.json:
-        print(f"{args.scheme.name}: mirror decomposition's blocks vs the refined 1-ring matrix, numeric (to {args.dps // 2} "
-              f"digits, eigenvalues at {args.dps}; --certify proves it)")
-        print(f"{'K':>4}  {'status':<13} {'size':>5} {'distinct':>8}  vertex")
-    results = ordered_map(numeric_row, vertices, shared={"scheme": args.scheme, "dps": args.dps}, jobs=args.jobs,
-                          executor=args.executor)
-    for r in progress(results, len(vertices), "check", enabled=not args.quiet):
-        rows.append(r)
-        if not args.json:
-            line = f"{r.k:>4}  {r.status.value:<13} {r.size:>5} {r.distinct:>8}  {r.vertex}"
-            print(line if r.ok else f"{line}\n      {r.message}", flush=True)
-    failed = [r for r in rows if not r.ok]
-    if args.json:
-        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertices[0]).split()[0], "rows": [r.as_json() for r in rows],
-                    "summary": {"mode": "numeric", "route": "mirror", "sectors": len(rows), "dps": args.dps,
-                                "seconds": round(time.perf_counter() - start, 3), "ok": not failed}})
-    else:
-        print(f"{len(rows)} vertices: {len(rows) - len(failed)} agree ({time.perf_counter() - start:.2f} s)")
-    return 1 if failed else 0
 
 
 def _one(n, *, scheme, certified, dps, closed_forms, rings=None, method="charpoly", solver="mpmath"):
@@ -296,7 +204,9 @@ def _other_route(args, plot) -> int | None:
         if not sharp_given(args):
             raise InvalidInputError("--k: the faces of a sharp vertex's sector: give --boundary, --corner, --crease K2 or "
                                     "--dart (interior valences are --n A:B)")
-        return _run_sharp(args, plot)
+        from symdecomp.cli.check_sharp import run_sharp
+
+        return run_sharp(args, plot)
     return None
 
 

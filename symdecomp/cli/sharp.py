@@ -80,13 +80,16 @@ def faces_or_valence(limit: str):
 
 
 def sector_range(text: str) -> list[int]:
-    """argparse type of ``--k``: ``K`` or an inclusive range ``A:B`` of face counts, ``1 <= A <= B <= MAX_FACES``."""
+    """argparse type of ``check --k``: ``K`` or an inclusive range ``A:B`` of face counts, ``1 <= A <= B <=
+    MAX_STRUCTURAL_FACES`` (the blocks' routes; darts and the dense route are held to ``MAX_FACES`` per vertex by
+    :func:`sharp_vertex` and ``check``'s route)."""
     if text.count(":") > 1:
         raise argparse.ArgumentTypeError(f"expected K or A:B, got {text!r}")
     parts = text.split(":")
     lo, hi = (integer(p, "--k", minimum=1, noun="a face count: an integer") for p in (parts[0], parts[-1]))
-    if hi > MAX_FACES:
-        raise argparse.ArgumentTypeError(f"expected face counts <= {MAX_FACES}, got {hi} (the matrices are dense and exact)")
+    if hi > MAX_STRUCTURAL_FACES:
+        raise argparse.ArgumentTypeError(f"expected face counts <= {MAX_STRUCTURAL_FACES}, got {hi} (the blocks are O(k); "
+                                         f"darts at most {MAX_FACES})")
     if hi < lo:
         raise argparse.ArgumentTypeError(f"empty range {text!r}: {hi} < {lo}")
     return list(range(lo, hi + 1))

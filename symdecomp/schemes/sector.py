@@ -247,14 +247,14 @@ def _check_options(options) -> SharpOptions:
     return check_type(SharpOptions() if options is None else options, SharpOptions, "options")
 
 
-def _sparse_rows(scheme, vertex, rings, level, options) -> tuple[dict, ...]:
+def _sparse_rows(scheme, vertex, rings, level, options, limit: int = MAX_DENSE_FACES) -> tuple[dict, ...]:
     scheme, vertex, rings = check_scheme(scheme), _check_vertex(vertex), check_rings(rings)
     level, options = _check_level(level), _check_options(options)
     if vertex.lattice is not scheme.lattice:
         raise InvalidMeshError(f"scheme {scheme.name!r} lives on {scheme.lattice} meshes, the vertex on {vertex.lattice}")
-    if vertex.faces > MAX_DENSE_FACES:
-        raise InvalidInputError(f"vertex: {vertex.faces} faces; its exact matrix is built for at most {MAX_DENSE_FACES} faces "
-                                "(dense and exact)")
+    if vertex.faces > limit:
+        dense = "(dense and exact)" if limit == MAX_DENSE_FACES else "(sparse rows)"
+        raise InvalidInputError(f"vertex: {vertex.faces} faces; its exact matrix is built for at most {limit} faces {dense}")
     vertex = vertex.at_level(level)
     # one ring more than is read: whether a vertex of the K-ring is a sharp vertex (BLZ's rules ask) and its
     # rule's inputs are decided by its whole fan, which the (K + 1)-ring mesh holds
@@ -290,8 +290,11 @@ def sharp_subdivision_matrix(scheme, vertex: SharpVertex, *, rings: int = 1, lev
 
 def sharp_matrix_rows(scheme, vertex: SharpVertex, *, rings: int = 1, level: int = 0,
                       options: SharpOptions | None = None) -> tuple[dict, ...]:
-    """:func:`sharp_subdivision_matrix`'s rows, sparse: ``{column: exact weight}`` per row (only the entries that are read)."""
-    return _sparse_rows(scheme, vertex, rings, level, options)
+    """:func:`sharp_subdivision_matrix`'s rows, sparse: ``{column: exact weight}`` per row (only the entries that are read).
+
+    Sparse, so built for up to :data:`MAX_SECTOR_FACES` faces (the refinement is O(faces)), where the dense matrix stops at
+    :data:`MAX_DENSE_FACES`."""
+    return _sparse_rows(scheme, vertex, rings, level, options, MAX_SECTOR_FACES)
 
 
 def exact_sharp_matrix(scheme, vertex: SharpVertex, *, rings: int = 1, level: int = 0,

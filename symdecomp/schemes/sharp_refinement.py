@@ -200,6 +200,8 @@ class _Rules:
         self.edge_side = _as_weight(self.mesh_rules.edge_side)
         self.crease = tuple(_as_weight(w) for w in (self.sharp.crease_centre, self.sharp.crease_end, self.sharp.crease_edge))
         self._vertex_cache: dict[int, tuple] = {}
+        #: Per sharp vertex, its fan's ``{neighbour: edge index}`` and each edge's sector size (:func:`_near_edge`).
+        self.sectors: dict[int, tuple[dict, list]] = {}
 
     def vertex_weights(self, valence: int) -> tuple:
         if valence not in self._vertex_cache:
@@ -247,28 +249,40 @@ def _vertex_stencil(v: int, fan: VertexFan, sharpness: tuple, rules: _Rules) -> 
     return _mix(weight, mask, _vertex_mask(c_kind, v, fan, child, rules))
 
 
-def _sector(fan: VertexFan, sharp: list, i: int) -> int:
-    """The number of faces of the sector (between two sharp edges of the fan) that holds the smooth edge ``i``."""
+def _sectors(fan: VertexFan, sharp: list) -> list[int | None]:
+    """For each edge ``i`` of the fan, the number of faces of the sector (between two sharp edges of the fan) that holds
+    it, in one pass each way (O(edges); ``None`` where no sector holds it: the first edge of an open fan)."""
     m = len(fan.edges)
     if not fan.closed:
-        before = max(j for j in range(i) if j == 0 or is_sharp(sharp[j]))
-        after = min(j for j in range(i + 1, m) if j == m - 1 or is_sharp(sharp[j]))
-        return after - before
-    marks = [j for j in range(m) if is_sharp(sharp[j])]
-    if len(marks) < 2:
-        return m
-    before = max((j for j in marks if j < i), default=marks[-1] - m)
-    after = min((j for j in marks if j > i), default=marks[0] + m)
-    return after - before
+        marks = [j == 0 or j == m - 1 or is_sharp(sharp[j]) for j in range(m)]
+    else:
+        marks = [is_sharp(sharp[j]) for j in range(m)]
+        if sum(marks) < 2:
+            return [m] * m
+    first, last = marks.index(True), m - 1 - marks[::-1].index(True)
+    before: list[int | None] = [None] * m
+    after: list[int | None] = [None] * m
+    mark = last - m if fan.closed else None
+    for j in range(m):
+        before[j] = mark
+        mark = j if marks[j] else mark
+    mark = first + m if fan.closed else None
+    for j in reversed(range(m)):
+        after[j] = mark
+        mark = j if marks[j] else mark
+    return [None if b is None or a is None else a - b for b, a in zip(before, after)]
 
 
 def _near_edge(tagged: TaggedMesh, x: int, y: int, fans: dict, kinds: dict, rules: _Rules):
     """BLZ's ``(weight on x, weight on y)`` for the smooth edge ``(x, y)`` at the sharp vertex ``x`` (else ``None``)."""
     if kinds.get(x) not in (VertexRuleKind.CREASE, VertexRuleKind.CORNER):
         return None
-    fan = fans[x]
-    sharp = [tagged.sharpness(x, a) for a in fan.edges]
-    k = _sector(fan, sharp, fan.edges.index(y))
+    if x not in rules.sectors:  # once per vertex: a fan of k faces has k smooth edges
+        fan = fans[x]
+        rules.sectors[x] = ({a: i for i, a in enumerate(fan.edges)},
+                            _sectors(fan, [tagged.sharpness(x, a) for a in fan.edges]))
+    index, sizes = rules.sectors[x]
+    k = sizes[index[y]]
     theta = tagged.angles.get(x, sp.pi) / k
     return tuple(_as_weight(w) for w in rules.sharp.near_edge(theta, k))
 

@@ -308,7 +308,7 @@ def certify_sharp(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCertifica
     equal, chi, blocks = charpoly_check(scheme, vertex, matrix=S)
     distinct, multiplicities, texts = factored_values(chi, digits)
     common = dict(n=vertex.sectors[0], scheme=scheme.name, distinct=distinct, multiplicities=multiplicities, values=texts,
-                  height_bits=max(int(c.p).bit_length() for c in chi.coeffs()), route="mirror", vertex=describe_vertex(vertex))
+                  height_bits=max(int(c.p).bit_length() for c in chi.coeffs()), route="charpoly", vertex=describe_vertex(vertex))
     name = describe_vertex(vertex)
     if d.crease is not None:
         lay = vertex_layout(scheme, vertex)
@@ -368,7 +368,7 @@ def certify_sharp_field(scheme: Scheme, vertex, *, digits: int = 20) -> SharpCer
         texts = tuple(acb_text(v.ball, digits) for v in values)
     norm = norm_charpoly(S)
     common = dict(n=vertex.sectors[0], scheme=scheme.name, distinct=len(values), multiplicities=tuple(v.multiplicity for v in values),
-                  values=texts, height_bits=max(int(c).bit_length() for c in norm.numer().coeffs()), route="mirror", vertex=name)
+                  values=texts, height_bits=max(int(c).bit_length() for c in norm.numer().coeffs()), route="charpoly", vertex=name)
     idx = [0] + [lay.a(m) for m in lay.sharp]
     crease = FieldMatrix.from_sympy(sector_decomposition(scheme, vertex).crease.tolist(), S.weight)
     if S.submatrix(idx).rows != crease.rows:

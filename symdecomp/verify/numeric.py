@@ -416,6 +416,11 @@ class SharpNumericRow:
     dps: int
     #: What disagreed or could not be told apart (empty when they agree).
     message: str = ""
+    #: What was compared with the blocks: the matrix's ``eigenvalues`` (solved densely) or, past that, its action on the
+    #: sine ``polylines`` (:mod:`symdecomp.verify.sector_numeric`).
+    compared: str = "eigenvalues"
+    #: The largest deviation found, as text (``-`` where the comparison is a match of values to ``dps // 2`` digits).
+    deviation: str = "-"
 
     @property
     def ok(self) -> bool:
@@ -423,7 +428,8 @@ class SharpNumericRow:
 
     def as_json(self) -> dict:
         return {"k": self.k, "vertex": self.vertex, "status": self.status.value, "size": self.size,
-                "distinct": self.distinct, "dps": self.dps, "message": self.message}
+                "distinct": self.distinct, "dps": self.dps, "message": self.message, "compared": self.compared,
+                "deviation": self.deviation}
 
 
 def _matrix_values(scheme, vertex, prec: int) -> list:

@@ -23,7 +23,7 @@ def test_boundary_vertices_k_1_to_16_are_proved(capsys, scheme):
     code, out = _rows(capsys, ["check", "--k", "1:16", "--boundary", "--certify", "--scheme", scheme])
     assert code == 0 and out["summary"]["ok"] and out["summary"]["agree"] == 16
     for row in out["rows"]:
-        assert row["status"] == "agree" and row["route"] == "mirror" and row["multiplicities_certified"]
+        assert row["status"] == "agree" and row["route"] == "charpoly" and row["multiplicities_certified"]
         vertex = (sd.SharpVertex.boundary(row["n"], sd.QUAD if scheme == "catmull-clark" else sd.TRIANGLE))
         chi = sd.exact_sharp_matrix(sd.catmull_clark() if scheme == "catmull-clark" else sd.loop(), vertex).charpoly()
         # the distinct count is the squarefree part's degree; the multiplicities add up to the degree
@@ -81,14 +81,21 @@ def test_numeric_mode_finds_a_wrong_block(monkeypatch, capsys):
 @pytest.mark.parametrize("argv, words", [
     (["check"], "required"),
     (["check", "--k", "3", "--dart"], "a dart's symmetric part is not a small block"),
-    (["check", "--k", "3", "--boundary", "--solver", "flint"], "--solver applies to interior valences"),
+    (["check", "--k", "3", "--boundary", "--solver", "flint"], "--solver applies to interior valences (--n)"),
     (["check", "--k", "3", "--certify"], "give --boundary, --corner, --crease K2 or --dart"),
     (["check", "--n", "3", "--boundary", "--certify"], "--k A:B"),
     (["check", "--n", "3", "--k", "3"], "not allowed with argument"),
     (["check", "--k", "0:3", "--boundary", "--certify"], "--k"),
-    (["check", "--k", "3:65", "--boundary", "--certify"], "<= 64"),
+    (["check", "--k", "3:10001", "--boundary", "--certify"], "expected face counts <= 10000, got 10001"),
+    (["check", "--k", "65", "--dart", "--certify"], "the vertex has more than 64 faces"),
+    (["check", "--k", "70", "--boundary", "--certify", "--route", "charpoly"], "--route charpoly: boundary k=70 has 70 "
+     "faces; the dense route reads at most 64"),
+    (["check", "--k", "5", "--dart", "--certify", "--route", "structural"], "--route structural: dart n=5: the "
+     "structural route reads boundary, crease and corner vertices"),
+    (["check", "--k", "20", "--boundary", "--route", "structural"], "--route: give it with --certify"),
+    (["check", "--k", "20", "--boundary", "--certify", "--dps", "30"], "the certified check is exact"),
+    (["check", "--k", "20", "--boundary", "--certify", "--route", "charpoly", "--structural"], "--structural is --route"),
     (["check", "--k", "5:3", "--boundary", "--certify"], "empty range"),
-    (["check", "--k", "3", "--boundary", "--certify", "--route", "charpoly"], "--route applies to interior valences"),
     (["check", "--k", "3", "--boundary", "--certify", "--rings", "2"], "--rings: not available"),
     (["check", "--k", "3", "--crease", "3", "--sharpness", "1", "--certify"], "semi-sharp"),
 ])

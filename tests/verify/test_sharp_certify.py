@@ -22,7 +22,7 @@ CC, LOOP = sd.catmull_clark(), sd.loop()
 ])
 def test_the_decomposition_is_proved_with_exact_multiplicities(scheme, vertex):
     c = sd.certify_sharp(scheme, vertex)
-    assert c.ok and c.multiplicities_certified and c.route == "mirror"
+    assert c.ok and c.multiplicities_certified and c.route == "charpoly"
     chi = sd.exact_sharp_matrix(scheme, vertex).charpoly()
     assert sum(c.multiplicities) == chi.degree() and c.distinct == len(c.multiplicities) == len(c.values)
     assert c.as_json()["vertex"] == describe_vertex(vertex)

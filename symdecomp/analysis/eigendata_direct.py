@@ -144,7 +144,8 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     zeros = [arb(0)] * r
     vrows = {i: v0[i] + zeros if i < k0 else v1[i - k0] + wa[i - k0] for i in read if i < size}
     values = tuple(col.value for col in cols) + tuple(to_arb(nu) for nu in nus)
-    beyond = {idx: _sparse_times(p.sparse[idx], vrows, size) for sub in p.subpatches for idx in sub if idx >= size}
+    outside = sorted({idx for sub in p.subpatches for idx in sub if idx >= size})
+    beyond = dict(zip(outside, _sparse_times([p.sparse[idx] for idx in outside], vrows, size)))
     phi = []
     for sub in p.subpatches:
         table = [_av_row(vrows[idx], values, jordan) if idx < size else beyond[idx] for idx in sub]

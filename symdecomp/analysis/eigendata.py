@@ -44,7 +44,7 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb, to_fmpq, to_fraction
-from symdecomp.algebra.rounding import round_ball
+from symdecomp.algebra.rounding import round_ball, round_balls
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
 from symdecomp.analysis.fourier_patterns import LazyTable, trig_table
@@ -241,9 +241,9 @@ def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: li
     :func:`_replace_columns`) and rounded again; ``data`` then holds the sharper balls. ``inverse``:
     ``V^-1`` already rounded (row by row, None where it did not round), else rounded here."""
     size, width = data.size, data.phi[0].ncols()
-    values = [round_ball(v) for v in data.values]
-    inverse = [round_ball(x) for x in data.inverse.entries()] if inverse is None else inverse
-    phi = [round_ball(x) for t in data.phi for x in t.entries()]
+    values = round_balls(data.values)
+    inverse = round_balls(data.inverse.entries()) if inverse is None else inverse
+    phi = round_balls([x for t in data.phi for x in t.entries()])
     jordan = tuple((i, c, round_ball(g)) for i, c, g in data.jordan)
     if None in values or any(g is None for _, _, g in jordan):
         return None

@@ -35,7 +35,7 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb
-from symdecomp.algebra.rounding import round_ball, round_products, split_balls
+from symdecomp.algebra.rounding import round_ball, round_balls, round_products, split_balls
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.analysis.eigendata import (
     RoundedEigenData,
@@ -156,7 +156,7 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     lower_rows: list[list[flint.arb] | None] = [lower[i] + wia[i] for i in range(r)]
     ring_rows: list[list[flint.arb] | None] = [None] * k0
     inverse = _Cells(ring_rows + lower_rows, lambda i: cols[i].left + zeros)
-    rounded = _round_ring_rows(cols, size) + [round_ball(x) for row in lower_rows if row is not None for x in row]
+    rounded = _round_ring_rows(cols, size) + round_balls([x for row in lower_rows if row is not None for x in row])
     for i, j in lower_mirror_zeros(p, cols, g_rows) if not jordan else ():
         if rounded[i * size + j] is None and inverse[i, j].contains(0):  # exact by the symmetry
             inverse[i, j], rounded[i * size + j] = arb(0), 0.0
@@ -303,7 +303,7 @@ def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
         out[formed, :k0], certified[formed, :k0] = vals, ok
     flat: list[float | None] = [*out.ravel().tolist()]
     for i in set(range(k0)) - set(formed):
-        flat[i * size: i * size + k0] = [round_ball(x) for x in cols[i].left]
+        flat[i * size: i * size + k0] = round_balls(cols[i].left)
     for i, j in zip(*np.nonzero(~certified)):
         flat[i * size + j] = round_ball(cols[i].left_form.at(j))
     return flat

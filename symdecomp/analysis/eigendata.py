@@ -247,8 +247,8 @@ def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: li
     jordan = tuple((i, c, round_ball(g)) for i, c, g in data.jordan)
     if None in values or any(g is None for _, _, g in jordan):
         return None
-    bad_inverse = [divmod(q, size) for q, x in enumerate(inverse) if x is None]
-    bad_phi = [(q // (size * width), q // width % size, q % width) for q, x in enumerate(phi) if x is None]
+    bad_inverse = [divmod(q, size) for q, x in enumerate(inverse) if x is None] if None in inverse else []
+    bad_phi = [(q // (size * width), q // width % size, q % width) for q, x in enumerate(phi) if x is None] if None in phi else []
     if (bad_inverse or bad_phi) and p is not None:
         _sharpen_lower_block(p, data, bad_inverse)
         _sharpen_subpatch_zeros(p, data, bad_phi)

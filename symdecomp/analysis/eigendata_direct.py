@@ -179,13 +179,16 @@ def _wave_layout(cols: list[Any]) -> tuple[list[int], list[int], list[tuple[int,
     if not isinstance(table, list) or len(table) % 4:
         return None
     period = len(table)
-    for c in waves:
-        form = cols[c].left_form
-        j, shift, st = form.wave
-        expected = np.where(st < 0, -1, (2 * j * st + shift) % period)
-        if (form.table is not table or st is not steps and not np.array_equal(st, steps) or not np.array_equal(form.coef, coef)
-                or not np.array_equal(form.index, expected) or shift % period not in (0, period - period // 4)):
-            return None
+    forms = [cols[c].left_form for c in waves]
+    if any(f.table is not table or f.wave[2] is not steps and not np.array_equal(f.wave[2], steps)
+           or f.wave[1] % period not in (0, period - period // 4) for f in forms):
+        return None
+    # every wave's coefficients and indices checked at once against its frequency and shift
+    js, shifts = (np.array([f.wave[m] for f in forms], dtype=np.int64)[:, None] for m in (0, 1))
+    expected = np.where(steps[None, :] < 0, -1, (2 * js * steps[None, :] + shifts) % period)
+    if not (np.array_equal(np.stack([f.coef for f in forms]), np.broadcast_to(coef, (len(forms), len(coef))))
+            and np.array_equal(np.stack([f.index for f in forms]), expected)):
+        return None
     n, groups = period // 4, []
     for e in sorted(set(coef[steps >= 0].tolist())):
         for eps in (0, 1):
@@ -214,18 +217,19 @@ def _lower_by_waves(cols: list[Any], dmat: list[list[flint.arb]]) -> list[list[f
     table = cols[waves[0]].left_form.table
     period, k0 = len(table), len(cols)
     n, acb = period // 4, flint.acb
-    # per wave column: (frequency, 0 for the cosine's real part or 1 for the sine's imaginary part, its scalars)
-    terms = [(cols[c].left_form.wave[0], int(cols[c].left_form.wave[1] % period != 0), cols[c].left_form.scalars) for c in waves]
+    # per wave column: its slot among the real parts A_j (the cosine, j) and the imaginary parts B_j (the sine, n + j)
+    slots = [cols[c].left_form.wave[0] + (n if cols[c].left_form.wave[1] % period else 0) for c in waves]
+    scalars = {e: [cols[c].left_form.scalars[e] for c in waves] for e, _, _ in groups}
     half_step = [acb(table[(2 * j) % period], -table[(2 * j - n) % period]) for j in range(n)]  # e^(-i pi j/n)
-    out = []
+    out, zero = [], arb(0)
     for drow in dmat:
-        row = [arb(0)] * k0
+        row = [zero] * k0
         dw = [-drow[c] for c in waves]
         for e, eps, points in groups:
-            parts = [[arb(0)] * n, [arb(0)] * n]  # the real parts A_j and the imaginary parts B_j
-            for d, (j, part, scalars) in zip(dw, terms):
-                parts[part][j] += d * scalars[e]
-            coeffs = [acb(a, b) for a, b in zip(*parts)]
+            parts = [zero] * (2 * n)  # A_0..A_{n-1}, B_0..B_{n-1}
+            for d, x, slot in zip(dw, scalars[e], slots):
+                parts[slot] += d * x
+            coeffs = [acb(a, b) for a, b in zip(parts[:n], parts[n:])]
             if eps:  # the half step
                 coeffs = [x * h for x, h in zip(coeffs, half_step)]
             for p, value in zip(points.tolist(), acb.dft(coeffs)):

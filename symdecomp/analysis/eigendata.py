@@ -234,7 +234,6 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
 # correct rounding
 
 
-
 def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: list | None = None) -> RoundedEigenData | None:
     """Every entry correctly rounded, or None. With ``p``, entries that do not round are first
     sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`, then

@@ -95,7 +95,9 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
         for l, idx in enumerate(sub):
             if idx not in vanishing:
                 axes = _symmetric_axes(_vectors(p, idx, nus, w, g_rows), steps, period)
-                axes = {a for a in axes if kinds_kept.setdefault(a, _same_kinds(coef, steps, a, period))}
+                for a in axes - kinds_kept.keys():  # each axis's test once per valence
+                    kinds_kept[a] = _same_kinds(coef, steps, a, period)
+                axes = {a for a in axes if kinds_kept[a]}
                 odd = np.zeros(len(waves), dtype=bool)  # the waves antisymmetric about one of the axes
                 for a in axes:
                     odd |= (2 * js * a + shifts - p.n) % period == 0

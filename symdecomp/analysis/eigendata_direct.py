@@ -300,8 +300,10 @@ def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
         c = np.concatenate([split_balls(forms[0].table), np.zeros((3, 1))], axis=1)  # index -1: the exact 0
         width = max(len(f.scalars) for f in forms)
         s = np.zeros((3, len(forms), width))
+        split = split_balls([x for f in forms for x in f.scalars])  # all the forms' scalars in one pass
+        start = np.cumsum([0] + [len(f.scalars) for f in forms])
         for q, f in enumerate(forms):
-            s[:, q, : len(f.scalars)] = split_balls(f.scalars)
+            s[:, q, : len(f.scalars)] = split[:, start[q]: start[q + 1]]
         coef, index = np.stack([f.coef for f in forms]), np.stack([f.index for f in forms])
         vals, ok = round_products(s[:, np.arange(len(forms))[:, None], coef], c[:, index])
         out[formed, :k0], certified[formed, :k0] = vals, ok

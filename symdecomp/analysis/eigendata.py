@@ -60,7 +60,7 @@ __all__ = [
     "rounded_eigendata", "round_ball", "eigendata_cost", "check_eigendata_cost", "ZERO_PREC",
 ]  # NotDiagonalizableError, PrecisionError: from symdecomp.errors
 
-arb = flint.arb
+arb, acb = flint.arb, flint.acb
 
 
 @dataclass(frozen=True)
@@ -91,6 +91,10 @@ class RoundedEigenData:
     inverse: np.ndarray  # (K, K): inverse[i, j]
     phi: np.ndarray  # (3, K, P): phi[k, i, l], P = 16 (quads) or 12 (triangles)
     jordan: tuple = ()  # (i, c, gamma) as in PatchEigenData, gamma correctly rounded
+
+
+# ---------------------------------------------------------------------------------------------
+# assembly
 
 
 _REGULAR: dict = {}
@@ -224,6 +228,10 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
             row.append(arb(0))
         dmat.append(row)
     return dmat, jordan
+
+
+# ---------------------------------------------------------------------------------------------
+# correct rounding
 
 
 def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: list | None = None) -> RoundedEigenData | None:
@@ -473,23 +481,20 @@ def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int =
     return memory, seconds
 
 
-def _rounded_one(n: int, scheme: Scheme, then=None) -> tuple:
+def _rounded_one(n: int, scheme: Scheme) -> tuple[int, RoundedEigenData]:
     from symdecomp.analysis.eigendata_direct import rounded_valence  # it builds on this module
 
-    prec, data = rounded_valence(scheme, n)
-    return prec, data if then is None else then(data)
+    return rounded_valence(scheme, n)
 
 
-def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local", then=None):
+def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local"):
     """Yield ``(precision, RoundedEigenData)`` for the valences ``ns`` in order, on at most ``jobs`` processes.
 
     The pool is :func:`symdecomp.parallel.ordered_map` (``executor``: ``"local"``, ``"dask"`` or
     ``"dask=ADDRESS"``); the largest valences are handed out first, to keep every worker busy.
     Refused before any work when the memory estimate is beyond the limit (:func:`check_eigendata_cost`).
-    ``then``: a module-level function of the data, applied in the worker (a file's text, say), yielded instead.
     """
     ns = list(ns)
     if ns:
         check_eigendata_cost(scheme, max(ns), pool_size(jobs, len(ns)))
-    shared = {"scheme": scheme, "then": then}
-    yield from ordered_map(_rounded_one, ns, shared=shared, jobs=jobs, executor=executor, cost=lambda n: n)
+    yield from ordered_map(_rounded_one, ns, shared={"scheme": scheme}, jobs=jobs, executor=executor, cost=lambda n: n)

@@ -180,13 +180,10 @@ def run(args) -> int:
     show = not args.quiet
     precs, defective = [], []
 
-    def rounded(then=None):  # the valences as they come, in order; nothing holds the whole file
-        # then: json_valence for the JSON text, made in the workers beside the numbers (not after them, in this process)
-        pieces = rounded_eigendata(args.scheme, ns, args.jobs, args.executor, then=then)
-        for prec, r in progress(pieces, len(ns), "evaldata", enabled=show):
-            n, jordan = (r["n"], r.get("jordan")) if then else (r.n, r.jordan)  # a JSON entry, or the arrays
+    def rounded():  # the valences as they come, in order; nothing holds the whole file
+        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs, args.executor), len(ns), "evaldata", enabled=show):
             precs.append(prec)
-            defective.extend([n] if jordan else [])
+            defective.extend([r.n] if r.jordan else [])
             yield r
 
     def decimal():
@@ -199,7 +196,7 @@ def run(args) -> int:
     if args.format == "binary":
         size = write_output_file(args.out, binary_chunks(rounded(), ns[-1]))
     else:
-        entries = rounded(json_valence) if digits == FLOAT_DIGITS else decimal()
+        entries = map(json_valence, rounded()) if digits == FLOAT_DIGITS else decimal()
         size = write_output_file(args.out, json_chunks(entries, ns[-1], digits, args.scheme.name))
     summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": size, "precision_bits": max(precs)}
     summary["jordan_valences"] = defective

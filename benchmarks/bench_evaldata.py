@@ -19,9 +19,10 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
 Targets (issue 33): N = 3..128 for each scheme within 3 times the baseline's seconds (b), measured in
 the same run, and within 300 MB, still certified (issue 24's were 15 s and 300 MB). The file's own
 construction of the exact patch matrices is part of (a) and not of (b). Last measured (x86_64, 2 cores,
-load 9.1 to 9.9, (a) and (b) in one run): Catmull-Clark 22.1 s wall, 8.6 s CPU, 131 MB beside numpy's
-4.93 s, 1.59 s (4.5 times); Loop 16.1 s, 5.5 s, 89 MB beside 1.09 s, 0.40 s (14.8 times): met for memory,
-not for time (the guide's evaldata page says what is left). Run from the repository root::
+load 1.3, (a) and (b) in one run): Catmull-Clark 3.8 s wall, 6.8 s CPU, 105 MB beside numpy's 1.28 s,
+1.28 s (3.0 times wall: met, at the limit; 5.3 CPU); Loop, the command and the numpy child one after the
+other at load 1.5, 3.6 to 4.4 s wall, 90 MB beside 0.26 to 0.30 s (about 14 times: not met; the guide's
+evaldata page says what is left). Run from the repository root::
 
     python benchmarks/bench_evaldata.py           # N = 3..128
     python benchmarks/bench_evaldata.py --quick   # N = 3..24

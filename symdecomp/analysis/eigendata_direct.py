@@ -35,7 +35,7 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb
-from symdecomp.algebra.rounding import round_ball, round_products, split_balls
+from symdecomp.algebra.rounding import round_ball, round_balls, round_products, split_balls
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.analysis.eigendata import (
     RoundedEigenData,
@@ -144,7 +144,8 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     zeros = [arb(0)] * r
     vrows = {i: v0[i] + zeros if i < k0 else v1[i - k0] + wa[i - k0] for i in read if i < size}
     values = tuple(col.value for col in cols) + tuple(to_arb(nu) for nu in nus)
-    beyond = {idx: _sparse_times(p.sparse[idx], vrows, size) for sub in p.subpatches for idx in sub if idx >= size}
+    outside = sorted({idx for sub in p.subpatches for idx in sub if idx >= size})
+    beyond = dict(zip(outside, _sparse_times([p.sparse[idx] for idx in outside], vrows, size)))
     phi = []
     for sub in p.subpatches:
         table = [_av_row(vrows[idx], values, jordan) if idx < size else beyond[idx] for idx in sub]
@@ -155,7 +156,7 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     lower_rows: list[list[flint.arb] | None] = [lower[i] + wia[i] for i in range(r)]
     ring_rows: list[list[flint.arb] | None] = [None] * k0
     inverse = _Cells(ring_rows + lower_rows, lambda i: cols[i].left + zeros)
-    rounded = _round_ring_rows(cols, size) + [round_ball(x) for row in lower_rows if row is not None for x in row]
+    rounded = _round_ring_rows(cols, size) + round_balls([x for row in lower_rows if row is not None for x in row])
     for i, j in lower_mirror_zeros(p, cols, g_rows) if not jordan else ():
         if rounded[i * size + j] is None and inverse[i, j].contains(0):  # exact by the symmetry
             inverse[i, j], rounded[i * size + j] = arb(0), 0.0
@@ -178,13 +179,16 @@ def _wave_layout(cols: list[Any]) -> tuple[list[int], list[int], list[tuple[int,
     if not isinstance(table, list) or len(table) % 4:
         return None
     period = len(table)
-    for c in waves:
-        form = cols[c].left_form
-        j, shift, st = form.wave
-        expected = np.where(st < 0, -1, (2 * j * st + shift) % period)
-        if (form.table is not table or st is not steps and not np.array_equal(st, steps) or not np.array_equal(form.coef, coef)
-                or not np.array_equal(form.index, expected) or shift % period not in (0, period - period // 4)):
-            return None
+    forms = [cols[c].left_form for c in waves]
+    if any(f.table is not table or f.wave[2] is not steps and not np.array_equal(f.wave[2], steps)
+           or f.wave[1] % period not in (0, period - period // 4) for f in forms):
+        return None
+    # every wave's coefficients and indices checked at once against its frequency and shift
+    js, shifts = (np.array([f.wave[m] for f in forms], dtype=np.int64)[:, None] for m in (0, 1))
+    expected = np.where(steps[None, :] < 0, -1, (2 * js * steps[None, :] + shifts) % period)
+    if not (np.array_equal(np.stack([f.coef for f in forms]), np.broadcast_to(coef, (len(forms), len(coef))))
+            and np.array_equal(np.stack([f.index for f in forms]), expected)):
+        return None
     n, groups = period // 4, []
     for e in sorted(set(coef[steps >= 0].tolist())):
         for eps in (0, 1):
@@ -213,18 +217,19 @@ def _lower_by_waves(cols: list[Any], dmat: list[list[flint.arb]]) -> list[list[f
     table = cols[waves[0]].left_form.table
     period, k0 = len(table), len(cols)
     n, acb = period // 4, flint.acb
-    # per wave column: (frequency, 0 for the cosine's real part or 1 for the sine's imaginary part, its scalars)
-    terms = [(cols[c].left_form.wave[0], int(cols[c].left_form.wave[1] % period != 0), cols[c].left_form.scalars) for c in waves]
+    # per wave column: its slot among the real parts A_j (the cosine, j) and the imaginary parts B_j (the sine, n + j)
+    slots = [cols[c].left_form.wave[0] + (n if cols[c].left_form.wave[1] % period else 0) for c in waves]
+    scalars = {e: [cols[c].left_form.scalars[e] for c in waves] for e, _, _ in groups}
     half_step = [acb(table[(2 * j) % period], -table[(2 * j - n) % period]) for j in range(n)]  # e^(-i pi j/n)
-    out = []
+    out, zero = [], arb(0)
     for drow in dmat:
-        row = [arb(0)] * k0
+        row = [zero] * k0
         dw = [-drow[c] for c in waves]
         for e, eps, points in groups:
-            parts = [[arb(0)] * n, [arb(0)] * n]  # the real parts A_j and the imaginary parts B_j
-            for d, (j, part, scalars) in zip(dw, terms):
-                parts[part][j] += d * scalars[e]
-            coeffs = [acb(a, b) for a, b in zip(*parts)]
+            parts = [zero] * (2 * n)  # A_0..A_{n-1}, B_0..B_{n-1}
+            for d, x, slot in zip(dw, scalars[e], slots):
+                parts[slot] += d * x
+            coeffs = [acb(a, b) for a, b in zip(parts[:n], parts[n:])]
             if eps:  # the half step
                 coeffs = [x * h for x, h in zip(coeffs, half_step)]
             for p, value in zip(points.tolist(), acb.dft(coeffs)):
@@ -295,14 +300,16 @@ def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
         c = np.concatenate([split_balls(forms[0].table), np.zeros((3, 1))], axis=1)  # index -1: the exact 0
         width = max(len(f.scalars) for f in forms)
         s = np.zeros((3, len(forms), width))
+        split = split_balls([x for f in forms for x in f.scalars])  # all the forms' scalars in one pass
+        start = np.cumsum([0] + [len(f.scalars) for f in forms])
         for q, f in enumerate(forms):
-            s[:, q, : len(f.scalars)] = split_balls(f.scalars)
+            s[:, q, : len(f.scalars)] = split[:, start[q]: start[q + 1]]
         coef, index = np.stack([f.coef for f in forms]), np.stack([f.index for f in forms])
         vals, ok = round_products(s[:, np.arange(len(forms))[:, None], coef], c[:, index])
         out[formed, :k0], certified[formed, :k0] = vals, ok
     flat: list[float | None] = [*out.ravel().tolist()]
     for i in set(range(k0)) - set(formed):
-        flat[i * size: i * size + k0] = [round_ball(x) for x in cols[i].left]
+        flat[i * size: i * size + k0] = round_balls(cols[i].left)
     for i, j in zip(*np.nonzero(~certified)):
         flat[i * size + j] = round_ball(cols[i].left_form.at(j))
     return flat

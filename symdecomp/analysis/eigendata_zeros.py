@@ -21,9 +21,10 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+import flint
 import numpy as np
 
-from symdecomp.algebra.numbers import to_fraction
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.schemes.patch import PatchMatrices
 
 __all__ = ["mirror_zeros", "lower_mirror_zeros"]
@@ -37,13 +38,15 @@ def _functional(p: PatchMatrices, idx: int) -> tuple[dict, dict]:
     return {c: x for c, x in row.items() if c < k0}, {c - k0: x for c, x in row.items() if c >= k0}
 
 
-def _vectors(p: PatchMatrices, idx: int, nus, w: list[list[Fraction]], g_rows) -> list[dict]:
+def _vectors(p: PatchMatrices, idx: int, nus, w: list[list[flint.fmpq]], g_rows) -> list[dict]:
     """``[r_ring, h_nu, ...]``: the rational vectors on the 1-ring that must all be symmetric (zeros left out);
-    ``w``: the regular block's eigenvectors ``W``, rows of Fractions."""
+    ``w``: the regular block's eigenvectors ``W``, rows of ``fmpq``; ``g_rows``' weights ``fmpq`` too (FLINT's
+    rationals: several times faster than ``Fraction`` here; within one vector all entries are of one type, so
+    the symmetry's comparisons are exact)."""
     ring, outer = _functional(p, idx)
     h: dict = {}
     for r, nu in enumerate(nus):
-        c = sum((x * w[q][r] for q, x in outer.items()), Fraction(0))
+        c = sum((to_fmpq(x) * w[q][r] for q, x in outer.items()), flint.fmpq(0))
         if c:
             acc = h.setdefault(nu, {})
             for col, x in g_rows[r].items():
@@ -81,7 +84,8 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
         return []  # one layout of points for every wave, else nothing is claimed
     steps, coef = first.wave[2].tolist(), first.coef.tolist()
     period = 2 * p.n  # half steps around O
-    w = [[to_fraction(wmat[q, r]) for r in range(wmat.ncols())] for q in range(wmat.nrows())]
+    w = [[to_fmpq(wmat[q, r]) for r in range(wmat.ncols())] for q in range(wmat.nrows())]
+    g_rows = [{c: to_fmpq(x) for c, x in g.items()} for g in g_rows]
     columns = np.array([i for i, _ in waves], dtype=np.int64)
     js, shifts = (np.array([wave[m] for _, wave in waves], dtype=np.int64) for m in (0, 1))
     kinds_kept: dict[int, bool] = {}
@@ -91,7 +95,9 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
         for l, idx in enumerate(sub):
             if idx not in vanishing:
                 axes = _symmetric_axes(_vectors(p, idx, nus, w, g_rows), steps, period)
-                axes = {a for a in axes if kinds_kept.setdefault(a, _same_kinds(coef, steps, a, period))}
+                for a in axes - kinds_kept.keys():  # each axis's test once per valence
+                    kinds_kept[a] = _same_kinds(coef, steps, a, period)
+                axes = {a for a in axes if kinds_kept[a]}
                 odd = np.zeros(len(waves), dtype=bool)  # the waves antisymmetric about one of the axes
                 for a in axes:
                     odd |= (2 * js * a + shifts - p.n) % period == 0

@@ -102,8 +102,18 @@ class LazyTable:
 
 
 def trig_table(n: int) -> list:
-    """``cos(pi m/(2n))`` for ``m = 0..4n-1``: cos(pi m/n) is entry ``2m``, sin(pi m/n) entry ``2m - n``."""
-    return [_trig_pi(m, 2 * n, "cos") for m in range(4 * n)]
+    """``cos(pi m/(2n))`` for ``m = 0..4n-1``: cos(pi m/n) is entry ``2m``, sin(pi m/n) entry ``2m - n``.
+
+    Only the quarter ``m = 0..n`` is evaluated; the rest are its balls by ``cos(pi - x) = -cos(x)`` and
+    ``cos(2 pi - x) = cos(x)`` (exact: a negated ball holds the negated values).
+
+    >>> t = trig_table(5)
+    >>> all(t[m].overlaps(arb.cos_pi_fmpq(flint.fmpq(m, 10))) for m in range(20))
+    True
+    """
+    quarter = [_trig_pi(m, 2 * n, "cos") for m in range(n + 1)]
+    half = quarter + [-quarter[2 * n - m] for m in range(n + 1, 2 * n + 1)]
+    return half + [half[4 * n - m] for m in range(2 * n + 1, 4 * n)]
 
 
 def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> PatternForm:

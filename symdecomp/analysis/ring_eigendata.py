@@ -161,9 +161,11 @@ class _Column:
 
 
 
-def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
-    """The four eigenvectors of ``S`` at frequencies ``j`` and ``n - j`` (``0 < j < n/2``)."""
-    b_ee, b_ef, b_fe, b_ff = _block_entries(w, n, j, lambda m: table[(2 * m) % (4 * n)], to_arb)
+def _frequency_columns(w: dict, n: int, j: int, table: list, balls: dict | None = None) -> list[_Column]:
+    """The four eigenvectors of ``S`` at frequencies ``j`` and ``n - j`` (``0 < j < n/2``); ``balls``: ``w``'s
+    weights as balls (:func:`_weight_balls`, made once per valence), else converted here."""
+    balls = balls or _weight_balls(w)
+    b_ee, b_ef, b_fe, b_ff = _block_entries(balls, n, j, lambda m: table[(2 * m) % (4 * n)])
     roots = _real_eigenvalues(b_ee, b_ef, b_fe, b_ff, f"valence {n}, frequency {j}: complex eigenvalues (the data file holds real ones)")
     cols = []
     for lam in roots:
@@ -176,6 +178,11 @@ def _frequency_columns(w: dict, n: int, j: int, table: list) -> list[_Column]:
             left = _pattern(table, n, j, fn, 2 * y[0], 2 * y[1])
             cols.append(_Column(lam, right, left, None, check))
     return cols
+
+
+def _weight_balls(w: dict) -> dict:
+    """The circulant weights that :func:`_block_entries` reads, as balls."""
+    return {key: {k: to_arb(x) for k, x in w[key].items()} for key in ("ee", "ef", "fe", "ff")}
 
 
 def _real_eigenvalues(a00, a01, a10, a11, complex_message: str) -> tuple:
@@ -256,9 +263,9 @@ def _rational_columns(w: dict, n: int, j: int) -> list[_Column]:
 def quad_ring_columns(p: PatchMatrices, table) -> list:
     """The ``2n + 1`` eigenvectors of the 1-ring block: ``j = 0``, then 4 per ``0 < j < n/2``, then ``n/2``."""
     n, w = p.n, circulant_weights(p)
-    cols = _rational_columns(w, n, 0)
+    cols, balls = _rational_columns(w, n, 0), _weight_balls(w)
     for j in range(1, (n + 1) // 2):
-        cols += _frequency_columns(w, n, j, table)
+        cols += _frequency_columns(w, n, j, table, balls)
     if n % 2 == 0:
         cols += _rational_columns(w, n, n // 2)
     return cols

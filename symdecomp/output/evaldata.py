@@ -149,9 +149,9 @@ def json_valence(d: RoundedEigenData) -> dict:
     width = d.phi.shape[-1]
     entry = {
         "n": d.n,
-        "values": [repr(x) for x in d.values.tolist()],
-        "inverse": [repr(x) for x in d.inverse.ravel(order="F").tolist()],
-        "phi": [[repr(x) for x in d.phi[k].ravel(order="F").tolist()] for k in range(3)],
+        "values": list(map(repr, d.values.tolist())),
+        "inverse": list(map(repr, d.inverse.ravel(order="F").tolist())),
+        "phi": [list(map(repr, d.phi[k].ravel(order="F").tolist())) for k in range(3)],
     }
     if width == 12:
         entry["jordan"] = [{"row": i, "column": c, "value": repr(float(g))} for i, c, g in d.jordan]

@@ -111,11 +111,6 @@ class PatchMatrices:
     """
 
     n: int
-    #: ``K x K``: the control points after one refinement, in the same order (``None`` when the
-    #: centre's weights are irrational, e.g. Loop's ``cos(2 pi/n)``: see :attr:`sparse`).
-    matrix: flint.fmpq_mat | None
-    #: ``(K + extra) x K``: ``matrix`` followed by the further points the sub-patches need (Stam's A-bar).
-    extended: flint.fmpq_mat | None
     #: For k = 0, 1, 2, the rows of ``extended`` holding the control points of sub-patch k
     #: (quads: point ``l = a + 4 b`` at lattice ``corner + (a - 1, b - 1)``; triangles: point ``l``
     #: at ``corner + sigma BOX_POINTS[l]``, :data:`TRIANGLE_SUBPATCHES`).
@@ -129,6 +124,27 @@ class PatchMatrices:
     ring_size: int = 0
     #: The lattice (:data:`~symdecomp.schemes.lattice.QUAD` or :data:`~symdecomp.schemes.lattice.TRIANGLE`).
     lattice: Lattice = QUAD
+
+    @functools.cached_property
+    def extended(self) -> flint.fmpq_mat | None:
+        """``(K + extra) x K``: :attr:`matrix` followed by the further points the sub-patches need (Stam's A-bar);
+        ``None`` when the centre's weights are irrational (e.g. Loop's ``cos(2 pi/n)``: see :attr:`sparse`).
+        Made from :attr:`sparse` when first read (the eigen-data file reads only the sparse rows)."""
+        if not all(isinstance(w, Fraction) for row in self.sparse for w in row.values()):
+            return None
+        extended = flint.fmpq_mat(len(self.sparse), self.size)
+        for i, row in enumerate(self.sparse):
+            for j, w in row.items():
+                extended[i, j] = to_fmpq(w)
+        return extended
+
+    @functools.cached_property
+    def matrix(self) -> flint.fmpq_mat | None:
+        """``K x K``: the control points after one refinement, in the same order (``None`` as :attr:`extended`)."""
+        extended = self.extended
+        if extended is None:
+            return None
+        return flint.fmpq_mat([[extended[i, j] for j in range(self.size)] for i in range(self.size)])
 
     @property
     def mesh(self) -> str:
@@ -220,18 +236,10 @@ def _quad_by_refinement(scheme: Scheme, n: int) -> PatchMatrices:
 def _assemble(n: int, sparse: list[dict], subpatches, size: int, lat: Lattice) -> PatchMatrices:
     """The patch matrices from the sparse rows of the extended matrix (the ``size`` control points first).
 
-    The FLINT matrices exist when every weight is a Fraction (not when the centre's weights are
-    irrational: then :attr:`PatchMatrices.sparse` holds them exactly).
+    The FLINT matrices are made when first read, and exist when every weight is a Fraction (not when the
+    centre's weights are irrational: then :attr:`PatchMatrices.sparse` holds them exactly).
     """
-    matrix = extended = None
-    if all(isinstance(w, Fraction) for row in sparse for w in row.values()):
-        extended, matrix = flint.fmpq_mat(len(sparse), size), flint.fmpq_mat(size, size)
-        for i, row in enumerate(sparse):
-            for j, w in row.items():
-                extended[i, j] = to_fmpq(w)
-                if i < size:
-                    matrix[i, j] = extended[i, j]
-    return PatchMatrices(n, matrix, extended, subpatches, tuple(sparse), size, lat.one_ring_size(n), lat)
+    return PatchMatrices(n, subpatches, tuple(sparse), size, lat.one_ring_size(n), lat)
 
 
 # ---------------------------------------------------------------------------------------------

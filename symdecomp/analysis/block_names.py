@@ -13,11 +13,20 @@ its factor (:func:`exact_text`).
 
 from __future__ import annotations
 
+from collections.abc import Hashable, Sequence
+
+import flint
 import sympy as sp
 
-from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
 from symdecomp.analysis.mirror import sector_spectrum
-from symdecomp.errors import NotApplicableError
+from symdecomp.errors import InternalError, NotApplicableError
+from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.sector import SharpVertex
+
+#: Block names and closed forms of each eigenvalue, by the eigenvalue's key.
+Names = dict[Hashable, list[str]]
+Forms = dict[Hashable, list[sp.Expr]]
 
 __all__ = ["MAX_EXACT_TEXT", "block_names", "exact_text"]
 
@@ -26,36 +35,48 @@ __all__ = ["MAX_EXACT_TEXT", "block_names", "exact_text"]
 MAX_EXACT_TEXT = 90
 
 
-def exact_text(v: Eigenvalue, candidates: list) -> str:
+def exact_text(v: Eigenvalue, candidates: Sequence[sp.Expr]) -> str:
     """The exact form of ``v`` (a root of a rational factor) as text: its closed form where the factor has degree <= 2,
     else the shortest real closed form among ``candidates`` (the blocks' forms of that value) up to
     :data:`MAX_EXACT_TEXT` characters, else ``"root i of <polynomial>"``."""
     if v.factor.degree() <= 2:
-        return sp.sstr(v.exact)
+        return str(sp.sstr(v.exact))
     short = [c for c in candidates if len(sp.sstr(c)) <= MAX_EXACT_TEXT and not c.has(sp.I)]
     if short:
-        return sp.sstr(min(short, key=lambda c: len(sp.sstr(c))))
+        return str(sp.sstr(min(short, key=lambda c: len(sp.sstr(c)))))
     x = sp.Symbol("x")
     poly = sp.Poly([sp.Rational(int(c.p), int(c.q)) for c in reversed(v.factor.coeffs())], x).as_expr()
     return f"root {v.index} of {sp.sstr(poly)}"
 
 
-def block_names(scheme, vertex, values: list[Eigenvalue]) -> tuple[dict, dict] | None:
+def _centre(v: Eigenvalue) -> complex:
+    """The midpoint of ``v``'s certified ball, as a complex float (only to match values that differ by far more)."""
+    ball = v.ball
+    if not isinstance(ball, flint.acb):
+        raise InternalError(f"eigenvalue {v.text}: the dense route gives a certified ball, not {type(ball).__name__}")
+    return complex(float(ball.real.mid()), float(ball.imag.mid()))
+
+
+def block_names(scheme: Scheme, vertex: SharpVertex, values: list[Eigenvalue]) -> tuple[Names, Forms] | None:
     """``({key: [block names]}, {key: [closed forms]})`` from the mirror decomposition, or ``None`` where it does not apply
     or where its eigenvalues, matched by value, do not have the matrix's multiplicities."""
     try:
         spectrum = sector_spectrum(scheme, vertex)
     except NotApplicableError:
         return None
-    names: dict = {v.key: [] for v in values}
-    forms: dict = {v.key: [] for v in values}
-    counts: dict = {v.key: 0 for v in values}
+    names: Names = {v.key: [] for v in values}
+    forms: Forms = {v.key: [] for v in values}
+    counts: dict[Hashable, int] = {v.key: 0 for v in values}
+    centres = [(_centre(v), v) for v in values]
     for e in spectrum:
         z = complex(sp.N(e.value, 40))
-        best = min(values, key=lambda v: abs(complex(float(v.ball.real.mid()), float(v.ball.imag.mid())) - z))
-        if abs(complex(float(best.ball.real.mid()), float(best.ball.imag.mid())) - z) > 1e-12 * max(1.0, abs(z)):
+        centre, best = min(centres, key=lambda cv: abs(cv[0] - z))
+        if abs(centre - z) > 1e-12 * max(1.0, abs(z)):
             return None  # a block eigenvalue that is no eigenvalue of the matrix
-        name = e.blocks[0].name(vertex)
+        block = e.blocks[0]
+        if not isinstance(block, MirrorBlock):
+            raise InternalError(f"mirror eigenvalue {e.text}: its block is a {type(block).__name__}, not a MirrorBlock")
+        name = block.name(vertex)
         if name not in names[best.key]:
             names[best.key].append(name)
         forms[best.key].append(e.value)

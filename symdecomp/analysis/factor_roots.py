@@ -18,13 +18,17 @@ The interior vertex's ``K``-ring spectrum (:func:`~symdecomp.analysis.spectrum.r
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
 import flint
 import sympy as sp
 
 from symdecomp.algebra.compile import compile_expression
-from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value, matrix_rank
-from symdecomp.analysis.charpoly import COSK, Factor
-from symdecomp.errors import InvalidSchemeError
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, matrix_rank
+from symdecomp.analysis.charpoly import COSK, Factor, FrequencyFactors
+from symdecomp.analysis.frequency import RingBlocks
+from symdecomp.errors import InternalError, InvalidSchemeError
 from symdecomp.schemes.rings import CENTRE_WEIGHTS
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import lam as LAM
@@ -35,11 +39,15 @@ __all__ = ["FactorRoots", "overlap_clusters", "ball_hull", "exact_root", "centre
 
 W_O, W_A, W_B = CENTRE_WEIGHTS
 
+#: A root as the spectra hold it: ``(ball, frequency, factor index, root index)``.
+RootItem = tuple[flint.acb, int, int, int]
 
-def centre_values(scheme: Scheme, n: int) -> tuple[dict, dict]:
+
+def centre_values(scheme: Scheme, n: int) -> tuple[dict[sp.Symbol, sp.Expr], dict[sp.Symbol, Cyclotomic]]:
     """The centre weights at ``n``: exact sympy values and Cyclotomic values, by symbol."""
     v = scheme.vertex_rule
-    exact, field = {}, {}
+    exact: dict[sp.Symbol, sp.Expr] = {}
+    field: dict[sp.Symbol, Cyclotomic] = {}
     for s, w in ((W_A, v.each_a), (W_B, v.each_b)):
         exact[s] = sp.sympify(w, strict=True).subs(N, n)
         try:
@@ -49,37 +57,42 @@ def centre_values(scheme: Scheme, n: int) -> tuple[dict, dict]:
     return exact, field
 
 
-def _evaluator(expr: sp.Expr, variables):
+def _evaluator(expr: sp.Expr, variables: tuple[sp.Symbol, ...]) -> Callable[..., Any]:
     return compile_expression(sp.sympify(expr, strict=True), variables, "arb")
 
 
 class FactorRoots:
     """Roots of the factors at a frequency as Arb balls (closed forms compiled once)."""
 
-    def __init__(self, factors: tuple[Factor, ...], variables):
+    def __init__(self, factors: tuple[Factor, ...], variables: tuple[sp.Symbol, ...]):
         self.factors = factors
         self.variables = variables
-        self.closed = [[_evaluator(r, variables) for r in f.roots] if f.roots is not None else None for f in factors]
-        self.coeffs = [
+        self.closed: list[list[Callable[..., Any]] | None] = [
+            [_evaluator(r, variables) for r in f.roots] if f.roots is not None else None for f in factors
+        ]
+        self.coeffs: list[list[Callable[..., Any]] | None] = [
             None if f.roots is not None else [_evaluator(c, variables) for c in reversed(sp.Poly(f.poly, LAM).all_coeffs())]
             for f in factors
         ]
 
-    def at(self, args) -> list[tuple[object, int, int]]:
+    def at(self, args: Sequence[object]) -> list[tuple[flint.acb, int, int]]:
         """``[(ball, factor index, root index)]`` with each root repeated by the factor's exponent."""
-        out = []
+        out: list[tuple[flint.acb, int, int]] = []
         for i, f in enumerate(self.factors):
-            if self.closed[i] is not None:
-                balls = [g(*args) for g in self.closed[i]]
-            else:
-                poly = flint.acb_poly([flint.acb(c(*args)) for c in self.coeffs[i]])
+            closed, coeffs = self.closed[i], self.coeffs[i]
+            if closed is not None:
+                balls = [g(*args) for g in closed]
+            elif coeffs is not None:
+                poly = flint.acb_poly([flint.acb(c(*args)) for c in coeffs])
                 balls = list(poly.roots())
+            else:
+                raise InternalError(f"factor {i}: neither closed-form roots nor coefficients")
             for j, b in enumerate(balls):
                 out += [(flint.acb(b), i, j)] * f.exponent
         return out
 
 
-def overlap_clusters(items):
+def overlap_clusters(items: Sequence[RootItem]) -> list[list[int]]:
     """Group balls that overlap (transitively); items are ``(ball, ...)`` tuples."""
     order = sorted(range(len(items)), key=lambda i: (float(items[i][0].real.mid()), float(items[i][0].imag.mid())))
     groups: list[list[int]] = []
@@ -94,7 +107,7 @@ def overlap_clusters(items):
     return groups
 
 
-def exact_root(root: sp.Expr, k: int, n: int, weights: dict) -> sp.Expr:
+def exact_root(root: sp.Expr, k: int, n: int, weights: Mapping[sp.Symbol, sp.Expr]) -> sp.Expr:
     """A closed-form root at frequency ``k``: ``omega -> exp(2 pi i k/n)`` written with cosines."""
     expr = sp.sympify(root, strict=True).xreplace({N: sp.Integer(n), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n)), **weights})
     if not expr.has(OMEGA):
@@ -110,14 +123,15 @@ def exact_root(root: sp.Expr, k: int, n: int, weights: dict) -> sp.Expr:
     return expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * k / n)})
 
 
-def ball_hull(balls):
+def ball_hull(balls: Sequence[flint.acb]) -> flint.acb:
     """A ball (a square around the first midpoint) holding every ball of ``balls``."""
     centre = balls[0].mid()
     radius = max(((abs(b.mid() - centre) + b.rad()).upper() for b in balls), key=float)
     return flint.acb(flint.arb(centre.real, radius), flint.arb(centre.imag, radius))
 
 
-def jordan_sizes(blocks, ff, items, group, n, weights) -> tuple[int, ...] | None:
+def jordan_sizes(blocks: RingBlocks, ff: FrequencyFactors, items: Sequence[RootItem], group: Sequence[int], n: int,
+                 weights: Mapping[sp.Symbol, sp.Expr]) -> tuple[int, ...] | None:
     """Jordan block sizes of a cluster, exactly (ranks over ``Q(zeta_2n)``); ``None`` if not decidable.
 
     Frequencies are independent (different Fourier subspaces), so the blocks are those of each
@@ -150,7 +164,7 @@ def jordan_sizes(blocks, ff, items, group, n, weights) -> tuple[int, ...] | None
     return tuple(sorted(sizes, reverse=True))
 
 
-def jordan_partition(A, m: int) -> list[int]:
+def jordan_partition(A: list[list[Cyclotomic]], m: int) -> list[int]:
     """Jordan block sizes of the eigenvalue 0 of ``A`` (algebraic multiplicity ``m``) from exact ranks."""
     size = len(A)
     ranks, P = [size], [row[:] for row in A]

@@ -91,7 +91,7 @@ def structural_spectrum(scheme: StencilScheme, n: int, *, digits: int = 20, exac
             entries.append(Eigenvalue(
                 value=ball, text=acb_text(ball, digits), multiplicity=len(g), frequencies=tuple(sorted({m[0] for m in members})),
                 exact=_exact(factors, n, k, i, j, ball) if exact or jordan else None, factor=f.poly.xreplace(factors.atoms),
-                members=members, hull=ball_hull([items[x][0] for x in g])))  # type: ignore[no-untyped-call]
+                members=members, hull=ball_hull([items[x][0] for x in g])))
     size = st.class_count * n + st.has_centre
     spectrum = RingSpectrum(scheme.name, scheme.lattice, n, st.depth, size, digits, tuple(entries))
     if not jordan:

@@ -98,7 +98,7 @@ def spectrum_of_blocks(blocks: ZooBlocks, *, digits: int = 20, exact: bool = Tru
             w = flint.acb(flint.arb(flint.fmpq(2 * k, n))).exp_pi_i()
             at = {OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n))}
             items += [(b, k, i, j) for b, i, j in _roots_at(roots, (w, w.real, *g_balls), at, atoms, n, prec)]
-        groups = overlap_clusters(items)  # type: ignore[no-untyped-call]
+        groups = overlap_clusters(items)
         groups.sort(key=lambda g: (-float(items[g[0]][0].abs_upper()), -float(items[g[0]][0].real.mid())))
         entries = [_entry(items, g, zero, other, n, atoms, digits, exact) for g in groups]
     size = B0.shape[0] + K * (n - 1)
@@ -106,12 +106,12 @@ def spectrum_of_blocks(blocks: ZooBlocks, *, digits: int = 20, exact: bool = Tru
 
 
 def _roots_at(roots: FactorRoots, args: tuple[object, ...], at: dict[sp.Symbol, sp.Expr], atoms: dict[sp.Dummy, sp.Expr], n: int,
-              prec: int) -> list[tuple[object, int, int]]:
+              prec: int) -> list[tuple[flint.acb, int, int]]:
     """``[(ball, factor index, root index)]`` at one frequency (``args`` its Arb values, ``at`` its exact ones), each
     root repeated by the factor's exponent: closed forms evaluated, other roots isolated by Arb to ``2^(-prec/2)``, and a
     factor with a repeated root there split exactly (:func:`squarefree_roots`; root index ``-1``)."""
     tol = flint.arb(2) ** (-(prec // 2))
-    out: list[tuple[object, int, int]] = []
+    out: list[tuple[flint.acb, int, int]] = []
     for i, f in enumerate(roots.factors):
         closed, coeffs = roots.closed[i], roots.coeffs[i]
         if closed is not None:
@@ -162,7 +162,7 @@ def _reduced(value: sp.Expr, ball: flint.acb) -> sp.Expr:
     return min(sp.roots(p, _X), key=lambda r: abs(complex(r.evalf(30)) - mid))  # a rational quadratic's root: (a + sqrt(d))/b
 
 
-def _entry(items: list[tuple[object, int, int, int]], group: list[int], zero: tuple[Factor, ...], other: tuple[Factor, ...],
+def _entry(items: list[tuple[flint.acb, int, int, int]], group: list[int], zero: tuple[Factor, ...], other: tuple[Factor, ...],
            n: int, atoms: dict[sp.Dummy, sp.Expr], digits: int, exact: bool) -> Eigenvalue:
     b, k, i, j = items[group[0]]
     assert isinstance(b, flint.acb)
@@ -173,7 +173,7 @@ def _entry(items: list[tuple[object, int, int, int]], group: list[int], zero: tu
     return Eigenvalue(
         value=b, text=acb_text(b, digits), multiplicity=len(group), frequencies=tuple(sorted({items[x][1] for x in group})),
         exact=value, factor=f.poly.xreplace(atoms), jordan=None, members=tuple(sorted(items[x][1:] for x in group)),
-        hull=ball_hull([items[x][0] for x in group]),  # type: ignore[no-untyped-call]
+        hull=ball_hull([items[x][0] for x in group]),
     )
 
 

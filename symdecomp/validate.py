@@ -30,7 +30,7 @@ import os
 import sys
 from collections.abc import Callable, Iterable, Mapping
 from fractions import Fraction
-from typing import Any
+from typing import Any, ParamSpec, Protocol, TypeVar
 
 import sympy as sp
 
@@ -334,7 +334,21 @@ def check_rational(value, argument: str) -> Fraction:
     return Fraction(int(expr.p), int(expr.q))
 
 
-def cached(maxsize: int | None = None, **checks: Callable):
+_P = ParamSpec("_P")
+_R = TypeVar("_R", covariant=True)
+
+
+class CachedFunction(Protocol[_P, _R]):
+    """A function wrapped by :func:`cached`: called as the function, with ``functools.lru_cache``'s two methods."""
+
+    def __call__(self, *args: _P.args, **kwargs: _P.kwargs) -> _R: ...
+
+    def cache_clear(self) -> None: ...
+
+    def cache_info(self) -> Any: ...
+
+
+def cached(maxsize: int | None = None, **checks: Callable[..., Any]) -> Callable[[Callable[_P, _R]], CachedFunction[_P, _R]]:
     """A ``functools.lru_cache`` keyed on the checked arguments: the checks run before the lookup.
 
     A bare cache answers ``f(scheme, 5.0)`` from the entry of ``f(scheme, 5)`` (``5 == 5.0`` and
@@ -353,7 +367,7 @@ def cached(maxsize: int | None = None, **checks: Callable):
     symdecomp.errors.InvalidValenceError: valence n must be an integer >= 3, got 5.0 (float)
     """
 
-    def decorate(function):
+    def decorate(function: Callable[_P, _R]) -> CachedFunction[_P, _R]:
         names = list(inspect.signature(function).parameters)
         unknown = set(checks) - set(names)
         if unknown:  # pragma: no cover - a typo in a decorator
@@ -362,20 +376,20 @@ def cached(maxsize: int | None = None, **checks: Callable):
         where = tuple((names.index(name), name, check) for name, check in checks.items())
 
         @functools.wraps(function)
-        def checked(*args, **kwargs):
+        def checked(*args: Any, **kwargs: Any) -> Any:
             # by position or by keyword, without binding the signature (a hot path: a cache hit costs microseconds);
             # an argument left at its default is the function's own choice and needs no check
-            args = list(args)
+            values = list(args)
             for index, name, check in where:
-                if index < len(args):
-                    args[index] = check(args[index])
+                if index < len(values):
+                    values[index] = check(values[index])
                 elif name in kwargs:
                     kwargs[name] = check(kwargs[name])
-            return store(*args, **kwargs)
+            return store(*values, **kwargs)
 
-        checked.cache_clear = store.cache_clear
-        checked.cache_info = store.cache_info
-        return checked
+        checked.cache_clear = store.cache_clear  # type: ignore[attr-defined]
+        checked.cache_info = store.cache_info  # type: ignore[attr-defined]
+        return checked  # type: ignore[return-value]
 
     return decorate
 

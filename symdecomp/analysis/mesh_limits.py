@@ -269,7 +269,8 @@ def mesh_limits(mesh: PolygonMesh, scheme: Scheme, *, exact: bool = False, progr
     V = len(points)
     check_memory(120 * V + 1, f"{mesh.name}: the limit data of {V} vertices")
     limits, normals, tangents = np.full((V, 3), np.nan), np.full((V, 3), np.nan), np.full((V, 2, 3), np.nan)
-    masks, exact_limits, overflow = {}, {}, {}
+    masks: dict[NeighbourhoodKind, KindMasks | str] = {}
+    exact_limits, overflow = {}, {}
     largest = float(np.max(np.abs(points))) if V else 1.0
     scale = largest if largest > 1e100 or 0 < largest < 1e-100 else 1.0  # keep the products in the double range
     scaled = points / scale if scale != 1.0 else points

@@ -38,6 +38,7 @@ The patches are evaluated from these data by matrix powers, not eigenvectors (``
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -56,6 +57,9 @@ from symdecomp.validate import cached, check_type
 
 __all__ = ["SharpPatchData", "sharp_patch_data", "subpatch_points", "limit_mask", "exact_spectrum"]
 
+#: A sparse row over the 2-ring's points: ``{column: weight}``.
+Row = dict[int, Fraction]
+
 
 @dataclass(frozen=True)
 class SharpPatchData:
@@ -67,9 +71,9 @@ class SharpPatchData:
     #: The vertex: an open fan of one sector (``SharpVertex.boundary`` or ``.corner``).
     vertex: SharpVertex
     #: ``K x K`` rows of ``A`` as sparse ``{column: Fraction}``.
-    matrix: tuple[dict, ...]
+    matrix: tuple[Row, ...]
     #: ``patches[s][j]``: the rows (sparse ``{column: Fraction}``) of sub-patch ``j`` of face ``s``.
-    patches: tuple[tuple[tuple[dict, ...], ...], ...]
+    patches: tuple[tuple[tuple[Row, ...], ...], ...]
     #: The limit position mask (``K`` Fractions, summing to 1).
     limit: tuple[Fraction, ...]
     #: ``(factor, multiplicity, eigenvectors)``: the characteristic polynomial's irreducible factors over Q
@@ -108,15 +112,15 @@ def subpatch_points(lat: Lattice, j: int) -> tuple[tuple[int, int], ...]:
     return tuple((cu + sigma * bu, cv + sigma * bv) for bu, bv in BOX_POINTS)
 
 
-def _check_vertex(vertex) -> SharpVertex:
-    vertex = check_type(vertex, SharpVertex, "vertex", hint="SharpVertex.boundary(k, lattice) or .corner(k, lattice)")
+def _check_vertex(given: object) -> SharpVertex:
+    vertex: SharpVertex = check_type(given, SharpVertex, "vertex", hint="SharpVertex.boundary(k, lattice) or .corner(k, lattice)")
     if vertex.closed or len(vertex.sectors) != 1 or vertex.sharpness != float("inf"):
         raise NotApplicableError(f"{vertex!r}: evaluation data are for boundary and corner vertices (one open sector)")
     return vertex
 
 
-def _fmpq_rows(m: flint.fmpq_mat, columns: int) -> list[dict]:
-    rows = []
+def _fmpq_rows(m: flint.fmpq_mat, columns: int) -> list[Row]:
+    rows: list[Row] = []
     for i in range(m.nrows()):
         row = {c: to_fraction(m[i, c]) for c in range(m.ncols()) if m[i, c] != 0}
         if any(c >= columns for c in row):
@@ -125,7 +129,7 @@ def _fmpq_rows(m: flint.fmpq_mat, columns: int) -> list[dict]:
     return rows
 
 
-def limit_mask(rows, size: int) -> tuple[Fraction, ...]:
+def limit_mask(rows: Sequence[Row], size: int) -> tuple[Fraction, ...]:
     """The exact left eigenvector for 1 of the matrix with sparse ``rows``, summing to 1 (1 must be simple)."""
     shifted = [[Fraction(0)] * size for _ in range(size)]
     for i, row in enumerate(rows):
@@ -165,7 +169,7 @@ def sharp_patch_data(scheme: Scheme, vertex: SharpVertex) -> SharpPatchData:
         for j in range(3):
             sub = []
             for x, y in subpatch_points(vertex.lattice, j):
-                row: dict = {}
+                row: Row = {}
                 for w, lab in sector_point(vertex.lattice, vertex.faces, s, x, y):
                     for c, a in rows3[index3[lab]].items():
                         row[c] = row.get(c, 0) + w * a
@@ -175,7 +179,7 @@ def sharp_patch_data(scheme: Scheme, vertex: SharpVertex) -> SharpPatchData:
     return SharpPatchData(scheme.name, vertex, matrix, tuple(patches), limit_mask(matrix, size), exact_spectrum(matrix, size))
 
 
-def exact_spectrum(rows, size: int) -> tuple[tuple[tuple[int, ...], int, int], ...]:
+def exact_spectrum(rows: Sequence[Row], size: int) -> tuple[tuple[tuple[int, ...], int, int], ...]:
     """The factored characteristic polynomial of the matrix with sparse ``rows``, with eigenvectors per root (exact).
 
     A factor ``q`` of multiplicity ``e > 1`` has ``(size - rank q(A)) / deg q`` eigenvectors per root;
@@ -186,6 +190,7 @@ def exact_spectrum(rows, size: int) -> tuple[tuple[tuple[int, ...], int, int], .
         for c, w in row.items():
             a[i, c] = flint.fmpq(w.numerator, w.denominator)
     _, factors = a.charpoly().factor()
+    eye = flint.fmpq_mat(size, size, [int(i == j) for i in range(size) for j in range(size)])
     out = []
     for q, e in factors:
         coeffs = tuple(int(c) for c in q.numer().coeffs())
@@ -193,10 +198,8 @@ def exact_spectrum(rows, size: int) -> tuple[tuple[tuple[int, ...], int, int], .
             out.append((coeffs, 1, 1))
             continue
         value = flint.fmpq_mat(size, size)
-        for c in reversed(q.coeffs()):  # Horner: q(A)
-            value = value * a
-            for i in range(size):
-                value[i, i] += c
+        for coefficient in reversed(q.coeffs()):  # Horner: q(A)
+            value = value * a + eye * coefficient
         _, rank = value.rref()
         out.append((coeffs, e, (size - rank) // q.degree()))
     return tuple(sorted(out, key=lambda f: (len(f[0]), f[0], f[1])))

@@ -38,7 +38,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from symdecomp.analysis.mesh_limits import float_points, mesh_limits
+from symdecomp.analysis.mesh_limits import KindMasks, float_points, mesh_limits
 from symdecomp.errors import InternalError
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -248,6 +248,7 @@ def _groups(ours, scheme: Scheme):
         yield kind, ours.masks[kind], ours.kinds.rings[kind][0]
     for v, outcome in ours.kinds.outcomes.items():
         if outcome.eventual is not None:
+            masks: KindMasks | str
             try:
                 masks = kind_masks(scheme, outcome.eventual)
             except NotApplicableError as exc:

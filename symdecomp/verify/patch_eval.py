@@ -54,7 +54,7 @@ from symdecomp.analysis.masks import limit_masks_at
 from symdecomp.analysis.sector_evaldata import PREC, SectorEvalData, real_ball, sector_evaldata
 from symdecomp.analysis.sector_evaluation import evaluate as evaluate_data
 from symdecomp.analysis.subpatch_data import limit_mask, sharp_patch_data
-from symdecomp.errors import InvalidInputError
+from symdecomp.errors import InternalError, InvalidInputError
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, Lattice
 from symdecomp.schemes.mesh import QuadMesh, TriangleMesh, triangle_ring_labels, triangle_ring_mesh
 from symdecomp.schemes.patch import centre_weights, patch_mesh, position_mask, triangle_patch_rows
@@ -238,8 +238,10 @@ def numpy_baseline(scheme: Scheme, n: int):
     from symdecomp.schemes.patch import patch_matrices
 
     p = patch_matrices(scheme, n)
-    size = p.size
-    ext = np.array([[float(p.extended[i, j]) for j in range(size)] for i in range(size + 9)])
+    size, extended = p.size, p.extended
+    if extended is None:
+        raise InternalError(f"n = {n}: the patch matrices were built without the extended matrix")
+    ext = np.array([[float(extended[i, j]) for j in range(size)] for i in range(size + 9)])
     start = time.perf_counter()
     values, vectors = np.linalg.eig(ext[:size])
     inverse = np.linalg.inv(vectors)
@@ -328,7 +330,7 @@ def dyadic_check(scheme: Scheme, vertex: SharpVertex, *, levels=(1, 2, 3), seed:
     index, net = _random_net(vertex, seed)
     big = _rows(exact_sharp_matrix(scheme, vertex, rings=RINGS))
     coarse, coarse_f = net[:data.size], [[float(x) for x in p] for p in net[:data.size]]
-    cases = [(0, 0, 0, 1, data.limit, net)]
+    cases: list[tuple[int, int, int, int, tuple[Fraction, ...] | None, list[list[Fraction]]]] = [(0, 0, 0, 1, data.limit, net)]
     refined, done = net, 0
     for m in sorted(set(levels)):
         while done < m:

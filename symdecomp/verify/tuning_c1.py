@@ -27,6 +27,7 @@ import dataclasses
 import sympy as sp
 
 from symdecomp.analysis.tuning_region import TuningRegion, tuning_region, witness_scheme
+from symdecomp.errors import InternalError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.validate import cached, check_valence
 from symdecomp.verify.c1 import c1_test
@@ -43,6 +44,8 @@ def certified_tuning_region(scheme: Scheme, n: int) -> TuningRegion:
         return dataclasses.replace(region, witness_verdict="not-c1",
                                    witness_reason="no vertex weights put the frequency-0 eigenvalues below lambda_1")
     result = c1_test(concrete, region.n)
+    if region.witness is None:
+        raise InternalError(f"n = {region.n}: a witness scheme was built without the region's witness point")
     point = ", ".join(f"{p} = {sp.sstr(v)}" for p, v in zip(region.parameters, region.witness))
     if region.n == scheme.lattice.regular_valence:
         point = f"{scheme.lattice.reference().name}'s vertex weights (O has the regular valence)"

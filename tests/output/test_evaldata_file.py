@@ -16,12 +16,12 @@ import pytest
 from symdecomp import validate
 from symdecomp.algebra.rounding import round_ball_decimal
 from symdecomp.analysis.eigendata import (
-    _round_all,
     certified_eigendata,
     eigendata_cost,
     patch_eigendata,
     rounded_eigendata,
 )
+from symdecomp.analysis.eigendata_sharpen import _round_all
 from symdecomp.cli import main
 from symdecomp.cli.files import write_output_file as write_atomic
 from symdecomp.errors import ResourceLimitError

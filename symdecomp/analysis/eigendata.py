@@ -268,9 +268,12 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
 
 
 #: Calibration of :func:`eigendata_cost` (x86_64, 2026-12): a process with the package loaded; peak
-#: bytes per entry of the ``K x K`` matrices of one valence (256 bits); CPU seconds per valence,
-#: ``a K^2 + b K^3``; per number written at ``D > 17`` digits (1200-bit balls).
-_BASE_BYTES, _ENTRY_BYTES, _SECONDS, _DECIMAL_SECONDS = 120 << 20, 1600, (9e-6, 3e-8), 3e-5
+#: bytes per entry of the ``K x K`` matrices of one valence (256 bits); CPU seconds per valence of the file's
+#: path (:mod:`symdecomp.analysis.eigendata_direct`), ``a K + b K^2 + c K^3``, fitted to Catmull-Clark and Loop at
+#: N = 3..128, 256 and 500 (the cubic term is Catmull-Clark's past N = 128; Loop stays below it); CPU seconds per
+#: valence of the dense path at ``D > 17`` digits, ``a K^2 + b K^3`` at 256 bits, and per number written (1200-bit balls).
+_BASE_BYTES, _ENTRY_BYTES = 120 << 20, 1600
+_SECONDS, _DENSE_SECONDS, _DECIMAL_SECONDS = (2e-4, 2e-7, 4e-9), (9e-6, 3e-8), 3e-5
 
 
 def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
@@ -287,11 +290,12 @@ def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -
     if digits > 17:  # balls of max(1200, 3.33 D + 64) bits, one process, a text per number
         scale = max(ZERO_PREC, 3.33 * digits + 64) / 256
         peak = _BASE_BYTES + (_ENTRY_BYTES * scale + 2 * (digits + 60)) * sizes[-1] ** 2
-        seconds = sum(scale * (_SECONDS[0] * k * k + _SECONDS[1] * k**3) for k in sizes)
+        seconds = sum(scale * (_DENSE_SECONDS[0] * k * k + _DENSE_SECONDS[1] * k**3) for k in sizes)
         return int(peak), seconds + _DECIMAL_SECONDS * scale * 256 / ZERO_PREC * sum(numbers)
     peak = _BASE_BYTES * (1 + (workers if workers > 1 else 0)) + workers * _ENTRY_BYTES * sizes[-1] ** 2
     held = 8 * sum(numbers) if workers > 1 else 0
-    seconds = sum(_SECONDS[0] * k * k + _SECONDS[1] * k**3 for k in sizes) / workers
+    a, b, c = _SECONDS
+    seconds = sum(a * k + b * k * k + c * k**3 for k in sizes) / workers
     return int(peak + held), seconds
 
 

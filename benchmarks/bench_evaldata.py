@@ -19,10 +19,11 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
 Targets (issue 33): N = 3..128 for each scheme within 3 times the baseline's seconds (b), measured in
 the same run, and within 300 MB, still certified (issue 24's were 15 s and 300 MB). The file's own
 construction of the exact patch matrices is part of (a) and not of (b). Last measured (x86_64, 2 cores,
-load 1.3, (a) and (b) in one run): Catmull-Clark 3.8 s wall, 6.8 s CPU, 105 MB beside numpy's 1.28 s,
-1.28 s (3.0 times wall: met, at the limit; 5.3 CPU); Loop, the command and the numpy child one after the
-other at load 1.5, 3.6 to 4.4 s wall, 90 MB beside 0.26 to 0.30 s (about 14 times: not met; the guide's
-evaldata page says what is left). Run from the repository root::
+load 3.1 at the start, one run of this benchmark, with a test run started beside it, so the wall-clock
+figures carry extra load; the CPU figures less so): Catmull-Clark 5.6 s wall, 4.8 s CPU, 105 MB beside
+numpy's 1.43 s, 1.07 s (3.9 times wall, 4.5 CPU: not met; the run before this code: 3.0 wall, 5.3 CPU, at load 1.3);
+Loop 6.5 s wall, 3.0 s CPU, 85 MB beside 0.70 s, 0.28 s (9.3 times wall, 10.6 CPU: not met; before: about 14 and 13). The guide's
+evaldata page says what is left. Run from the repository root::
 
     python benchmarks/bench_evaldata.py           # N = 3..128
     python benchmarks/bench_evaldata.py --quick   # N = 3..24

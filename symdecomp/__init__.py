@@ -91,11 +91,12 @@ nothing else.
                    once (``zoo_structure``), their factors for every n (``zoo_large``) and spectra at large n
                    (``zoo_large_spectrum``);
                    what the curvature regimes at the vertex mean (``curvature_regime``: mu against lambda_1^2); the patch's certified eigen-data
-                   (``eigendata``; its 1-ring columns by frequency on every lattice,
-                   ``ring_eigendata``; the trig table and the Fourier patterns they are made of, ``fourier_patterns``;
+                   (``eigendata``; the 1-ring block's eigenvector columns by frequency on every lattice,
+                   ``eigendata_columns``; the trig table and the Fourier patterns they are made of, ``fourier_patterns``;
                    the file's valences rounded straight from those columns,
                    ``eigendata_direct``; the tables' zeros a mirror symmetry makes exact,
-                   ``eigendata_zeros``) and exact evaluation on either lattice (``evaluation``), at an interior and at a
+                   ``eigendata_zeros``; every entry correctly rounded, those that do not round at the working precision
+                   sharpened alone, ``eigendata_sharpen``) and exact evaluation on either lattice (``evaluation``), at an interior and at a
                    boundary or corner vertex (the latter's sub-patch data by exact refinement, ``subpatch_data``; the regular
                    patch's basis on each lattice, ``regular_basis``); the
                    extraordinary vertices of a modeller's mesh, limit frames and 1-ring components

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from functools import cache, lru_cache
+from functools import cache, lru_cache, reduce
 
 import flint
 import mpmath
@@ -26,7 +26,7 @@ import sympy as sp
 from symdecomp.algebra.numbers import to_fmpq, to_fraction
 from symdecomp.errors import InvalidInputError, InvalidTypeError
 
-__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "matrix_rank", "to_acb"]
+__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "CyclotomicFunction", "matrix_rank", "to_acb"]
 
 
 @cache
@@ -251,6 +251,78 @@ def _walk(e: sp.Expr, K: CyclotomicField, leaves: dict) -> Cyclotomic:
         return out
     if isinstance(e, sp.Pow) and e.exp.is_Integer:
         return _walk(e.base, K, leaves) ** int(e.exp)
+    raise ValueError(f"{e} is not a rational function of roots of unity")
+
+
+class CyclotomicFunction:
+    """An expression of :func:`cyclotomic_value`'s kind in one symbol, read once and then evaluated exactly at many
+    values of the symbol without sympy: the trigonometric terms' arguments (over ``pi``) become rational functions
+    of the symbol (FLINT polynomials), the rest a tree of field operations. ``f(x, field)`` is
+    ``cyclotomic_value(expr, {symbol: x}, field=field)`` (``x`` an int or Fraction); raises ``ValueError`` when the
+    expression is not of that kind (when read), or a term is not in ``field`` or its argument not defined at ``x``.
+
+    >>> from sympy import cos, pi, Symbol
+    >>> m = Symbol("m")
+    >>> f = CyclotomicFunction((cos(2*pi/m) + 1) / 4, m)
+    >>> f(5, CyclotomicField(10)) == cyclotomic_value((cos(2*pi/m) + 1) / 4, {m: 5}, field=CyclotomicField(10))
+    True
+    """
+
+    def __init__(self, expr, symbol: sp.Symbol):
+        expr = sp.sympify(expr, strict=True)
+        trig = sorted(expr.atoms(sp.cos, sp.sin, sp.exp), key=sp.default_sort_key)
+        leaves: dict = {symbol: 0}
+        self._terms = []  # (kind, numerator, denominator) of each term's argument over pi, a rational function of symbol
+        for t in trig:
+            arg = t.args[0] if not isinstance(t, sp.exp) else t.args[0] / sp.I
+            num, den = sp.fraction(sp.cancel(arg / sp.pi))
+            self._terms.append((type(t), _rational_poly(num, symbol, t), _rational_poly(den, symbol, t)))
+            leaves[t] = len(leaves)
+        self._tree = _tree(expr, leaves)
+
+    def __call__(self, x, field: CyclotomicField) -> Cyclotomic:
+        at = flint.fmpq(x.numerator, x.denominator) if isinstance(x, Fraction) else flint.fmpq(int(x))
+        env = [field(to_fraction(at))]
+        for kind, num, den in self._terms:
+            d = den(at)
+            if d == 0:
+                raise ValueError(f"a trigonometric term's argument is not defined at {x}")
+            r = num(at) / d
+            p, q = int(r.p), int(r.q)
+            if field.N % (2 * q):
+                raise ValueError(f"exp(i pi {r}) is not in Q(zeta_{field.N})")
+            z = field.zeta(p * (field.N // (2 * q)))  # exp(i r pi)
+            env.append(z if kind is sp.exp else (z + z.conjugate()) / 2 if kind is sp.cos else (z - z.conjugate()) / (2 * field.i))
+        return self._tree(env, field)
+
+
+def _rational_poly(e: sp.Expr, symbol: sp.Symbol, term) -> flint.fmpq_poly:
+    if e.free_symbols - {symbol} or not e.is_polynomial(symbol):
+        raise ValueError(f"{term} is not a cosine, sine or exponential of a rational multiple of pi")
+    coeffs = sp.Poly(e, symbol).all_coeffs()[::-1]
+    if not all(c.is_Rational for c in coeffs):
+        raise ValueError(f"{term} is not a cosine, sine or exponential of a rational multiple of pi")
+    return flint.fmpq_poly([to_fmpq(to_fraction(c)) for c in coeffs])
+
+
+def _tree(e: sp.Expr, leaves: dict):
+    """``e`` as a function ``(env, field) -> Cyclotomic``, ``env[leaves[x]]`` the value of a leaf ``x`` (as :func:`_walk`)."""
+    if e in leaves:
+        i = leaves[e]
+        return lambda env, K: env[i]
+    if e.is_Rational:
+        f = to_fraction(e)
+        return lambda env, K: K(f)
+    if e is sp.I:
+        return lambda env, K: K.i
+    parts = [_tree(a, leaves) for a in e.args]
+    if isinstance(e, sp.Add):
+        return lambda env, K: sum((part(env, K) for part in parts), K(0))
+    if isinstance(e, sp.Mul):
+        return lambda env, K: reduce(lambda x, part: x * part(env, K), parts, K(1))
+    if isinstance(e, sp.Pow) and e.exp.is_Integer:
+        base, k = parts[0], int(e.exp)
+        return lambda env, K: base(env, K) ** k
     raise ValueError(f"{e} is not a rational function of roots of unity")
 
 

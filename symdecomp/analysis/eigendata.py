@@ -2,7 +2,7 @@
 
 Written for the (2N+8)-point Catmull-Clark patch below; Loop's (N+6)-point patch
 (:mod:`symdecomp.schemes.patch`) shares the whole assembly with its own 1-ring columns
-(:mod:`symdecomp.analysis.ring_eigendata`) and a 5 x 5 regular block, and where its matrix
+(:mod:`symdecomp.analysis.eigendata_columns`) and a 5 x 5 regular block, and where its matrix
 is not diagonalizable (N = 3) keeps the Jordan pairs (:attr:`PatchEigenData.jordan`) instead of
 refusing.
 
@@ -44,11 +44,11 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb, to_fmpq, to_fraction
-from symdecomp.algebra.rounding import round_ball, round_balls
+from symdecomp.algebra.rounding import round_ball
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.algebra.small_eigen import rational_eigen as _rational_eigen
-from symdecomp.analysis.fourier_patterns import LazyTable, trig_table
-from symdecomp.analysis.ring_eigendata import RING_EIGEN
+from symdecomp.analysis.eigendata_columns import RING_EIGEN
+from symdecomp.analysis.fourier_patterns import trig_table
 from symdecomp.errors import NotDiagonalizableError, PrecisionError
 from symdecomp.parallel import ordered_map, pool_size
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
@@ -174,7 +174,7 @@ def _av_row(v_row: list, values, jordan) -> list:
 
 
 def _ring_columns(p: PatchMatrices, prec: int) -> list:
-    """The eigenvectors of the 1-ring block, frequency by frequency (:mod:`symdecomp.analysis.ring_eigendata`)."""
+    """The eigenvectors of the 1-ring block, frequency by frequency (:mod:`symdecomp.analysis.eigendata_columns`)."""
     return p.lattice.select(RING_EIGEN, "ring eigen-data columns").columns(p, trig_table(p.n), prec)
 
 
@@ -230,188 +230,9 @@ def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[
     return dmat, jordan
 
 
-# ---------------------------------------------------------------------------------------------
-# correct rounding
-
-
-def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: list | None = None) -> RoundedEigenData | None:
-    """Every entry correctly rounded, or None. With ``p``, entries that do not round are first
-    sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`, then
-    :func:`_replace_columns`) and rounded again; ``data`` then holds the sharper balls. ``inverse``:
-    ``V^-1`` already rounded (row by row, None where it did not round), else rounded here."""
-    size, width = data.size, data.phi[0].ncols()
-    values = round_balls(data.values)
-    inverse = round_balls(data.inverse.entries()) if inverse is None else inverse
-    phi = round_balls([x for t in data.phi for x in t.entries()])
-    jordan = tuple((i, c, round_ball(g)) for i, c, g in data.jordan)
-    if None in values or any(g is None for _, _, g in jordan):
-        return None
-    bad_inverse = [divmod(q, size) for q, x in enumerate(inverse) if x is None] if None in inverse else []
-    bad_phi = [(q // (size * width), q // width % size, q % width) for q, x in enumerate(phi) if x is None] if None in phi else []
-    if (bad_inverse or bad_phi) and p is not None:
-        _sharpen_lower_block(p, data, bad_inverse)
-        _sharpen_subpatch_zeros(p, data, bad_phi)
-        bad_inverse, bad_phi = _reround(data, inverse, phi, bad_inverse, bad_phi)
-        if (bad_inverse or bad_phi) and _replace_columns(p, data, bad_inverse, bad_phi):
-            rows = {i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi}
-            _reround(data, inverse, phi, [(i, j) for i in rows for j in range(size)],
-                     [(k, i, l) for k in range(3) for i in rows for l in range(width)])
-    if None in inverse or None in phi:
-        return None
-    return RoundedEigenData(
-        data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, width), jordan
-    )
-
-
-def _reround(data: PatchEigenData, inverse: list, phi: list, bad_inverse, bad_phi) -> tuple[list, list]:
-    """Round the listed entries of ``data`` again into the flat lists; return those that still do not round."""
-    size, width = data.size, data.phi[0].ncols()
-    for i, j in bad_inverse:
-        inverse[i * size + j] = round_ball(data.inverse[i, j])
-    for k, i, l in bad_phi:
-        phi[(k * size + i) * width + l] = round_ball(data.phi[k][i, l])
-    return ([(i, j) for i, j in bad_inverse if inverse[i * size + j] is None],
-            [(k, i, l) for k, i, l in bad_phi if phi[(k * size + i) * width + l] is None])
-
-
-#: The precision of :func:`_replace_columns`: a ball around an exact 0 rounds (to 0.0) only
-#: inside ``(-2^-1075, 2^-1075)``.
+#: The precision at which an exact 0 is proved (a ball around it rounds to 0.0 only inside
+#: ``(-2^-1075, 2^-1075)``): the sharpening steps' (:mod:`symdecomp.analysis.eigendata_sharpen`).
 ZERO_PREC = 1200
-
-
-def _replace_columns(p: PatchMatrices, data: PatchEigenData, bad_inverse, bad_phi) -> bool:
-    """Replace, in ``data``, the eigenvectors whose entries do not round by the same ones at :data:`ZERO_PREC` bits.
-
-    For each 1-ring eigenvector ``i`` with an entry that did not round (in row ``i`` of ``V^-1``
-    or of a sub-patch table), its frequency group alone is solved again at ``ZERO_PREC`` bits
-    (:attr:`~symdecomp.analysis.ring_eigendata.RingEigen.group`: ``O(N)`` work) and column ``i``
-    of ``V``, row ``i`` of ``V^-1`` and row ``i`` of the three sub-patch tables are taken from it
-    together. That keeps ``V^-1 A V`` diagonal: an eigenvector scaled otherwise comes with its left
-    eigenvector scaled inversely, and the other columns do not change. False, and ``data``
-    unchanged, when ``A`` has Jordan pairs (their ``gamma`` depends on the scaling), an entry
-    outside those rows does not round, or the precision does not suffice; the caller then
-    recomputes everything.
-    """
-    k0, size = p.ring_size, data.size
-    rows = sorted({i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi})
-    if data.jordan or any(i >= k0 for i in rows):
-        return False
-    new = {}
-    with flint.ctx.workprec(ZERO_PREC):
-        ring, table, pieces = p.lattice.select(RING_EIGEN, "ring eigen-data columns"), LazyTable(p.n), _column_pieces(p)
-        w = ring.weights(p)
-        for i in rows:
-            try:
-                cols, off = ring.group(p, w, table, i, ZERO_PREC)
-            except _NeedPrecision:
-                return False
-            column = _column_at(p, cols[off], *pieces)
-            if column is None:
-                return False
-            new[i] = (cols[off].left, *column)
-    for i, (left, vcol, phi_rows) in new.items():
-        for j in range(size):
-            data.inverse[i, j] = left[j] if j < k0 else arb(0)
-            data.vectors[j, i] = vcol[j]
-        for k, row in enumerate(phi_rows):
-            for l, x in enumerate(row):
-                data.phi[k][i, l] = x
-    return True
-
-
-def _column_pieces(p: PatchMatrices) -> tuple:
-    """What :func:`_column_at` needs of the regular block, at the current precision: ``nus``, ``W`` as balls, ``W^-1 S11``."""
-    nus, wmat, winv = _regular_part(p)
-    return nus, flint.arb_mat(wmat), _g_rows(p, winv)
-
-
-def _column_at(p: PatchMatrices, col, nus, wa, g_rows) -> tuple | None:
-    """``(V column, sub-patch rows)`` of the patch eigenvector that extends the 1-ring eigenvector ``col``
-    (``[u0; W D]``, ``D_r = (W^-1 S11 u0)_r/(lam - nu_r)``), or None where ``lam = nu_r`` is not decided
-    or is a Jordan pair. ``O(N)`` work: the column alone, at the current precision."""
-    size, d = p.size, []
-    for r, nu in enumerate(nus):
-        gap = col.value - to_arb(nu)
-        coeff = sum((to_arb(x) * col.right[c] for c, x in g_rows[r].items()), arb(0))
-        if not gap.contains(0):
-            d.append(coeff / gap)
-        elif col.exact_check is not None and col.exact_check(nu, g_rows[r]):
-            d.append(arb(0))
-        else:
-            return None
-    vcol = list(col.right) + (wa * flint.arb_mat([[x] for x in d])).entries()
-    at = lambda idx: col.value * vcol[idx] if idx < size else sum((to_arb(x) * vcol[c] for c, x in p.sparse[idx].items()), arb(0))  # noqa: E731
-    return vcol, [[at(idx) for idx in rows] for rows in p.subpatches]
-
-
-def _sharpen_lower_block(p: PatchMatrices, data: PatchEigenData, entries) -> None:
-    """Replace the balls of ``V^-1``'s lower-left block that do not round by their exact rational values.
-
-    Row ``r`` of that block is ``-D V0^-1 = -g_r (S - nu_r)^-1`` (``g = W^-1 S11``; the sum of
-    ``u_c l_c/(lam_c - nu_r)`` over the eigenvectors of ``S`` is the resolvent), an exact
-    rational row when ``S`` is rational and ``nu_r`` not one of its eigenvalues: one exact solve.
-    Entries that cancel to 0 by symmetry are the ones that need this (a ball around 0 rounds to
-    0.0 only inside ``(-2^-1075, 2^-1075)``, i.e. at over 1075 bits). Anything else is left alone.
-    """
-    k0, size = p.ring_size, p.size
-    bad = {(i, j) for i, j in entries if i >= k0 and j < k0}
-    if not bad or any(not isinstance(w, Fraction) for row in p.sparse[:k0] for w in row.values()):
-        return
-    nus, _, winv = _regular_part(p)
-    S = flint.fmpq_mat(k0, k0)
-    for i in range(k0):
-        for c, x in p.sparse[i].items():
-            S[i, c] = to_fmpq(x)
-    for r in sorted({i - k0 for i, _ in bad}):
-        g = flint.fmpq_mat(k0, 1)
-        for i in range(size - k0):
-            for c, x in p.sparse[k0 + i].items():
-                if c < k0:
-                    g[c, 0] -= winv[r, i] * to_fmpq(x)
-        M = S.transpose()
-        for i in range(k0):
-            M[i, i] -= to_fmpq(nus[r])
-        try:
-            y = M.solve(g)
-        except ZeroDivisionError:  # nu_r is an eigenvalue of S: leave it to the working precision
-            continue
-        for i, j in bad:
-            if i == k0 + r:
-                data.inverse[i, j] = arb(y[j, 0])
-
-
-def _sharpen_subpatch_zeros(p: PatchMatrices, data: PatchEigenData, bad, prec: int = 1200) -> None:
-    """Replace the sub-patch table balls around 0 that do not round by exact zeros, where 1200 bits prove them 0.
-
-    ``bad``: the entries ``(k, i, l)`` that did not round. Entry ``(k, i, l)`` is linear in the
-    eigenvector ``v_i``, so whether it is 0 does not depend on the scaling: the column alone is
-    recomputed at ``prec`` bits (:func:`_column_at`), and an entry is replaced only when its new
-    ball lies inside ``(-2^-1075, 2^-1075)``; everything else is left to the caller. Quads only.
-    """
-    if not p.lattice.select(RING_EIGEN, "ring eigen-data columns").sharpen or data.jordan:
-        return
-    k0 = p.ring_size
-    if not bad or any(i >= k0 or not data.phi[k][i, l].contains(0) for k, i, l in bad):
-        return
-    tiny = arb(2) ** -1075
-    with flint.ctx.workprec(prec):
-        ring, table, pieces = p.lattice.select(RING_EIGEN, "ring eigen-data columns"), LazyTable(p.n), _column_pieces(p)
-        w = ring.weights(p)
-        for i in sorted({i for _, i, _ in bad}):
-            try:
-                cols, off = ring.group(p, w, table, i, prec)
-            except _NeedPrecision:
-                return
-            column = _column_at(p, cols[off], *pieces)
-            if column is None:
-                return
-            for k, i2, l in bad:
-                if i2 != i:
-                    continue
-                val = column[1][k][l]
-                if not (val.contains(0) and abs(val) < tiny):
-                    return
-                data.phi[k][i, l] = arb(0)
 
 
 def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int = 1 << 14) -> tuple[PatchEigenData, RoundedEigenData]:
@@ -419,15 +240,17 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
 
     Symmetries make some entries exactly 0, and a ball around 0 rounds to 0.0 only inside
     ``(-2^-1075, 2^-1075)``. Those in ``V^-1``'s lower-left block are computed exactly instead
-    (:func:`_sharpen_lower_block`), and those in the sub-patch tables are proved 0 column by
-    column at 1200 bits (:func:`_sharpen_subpatch_zeros`), so Catmull-Clark rounds at the 256-bit
+    (:mod:`symdecomp.analysis.eigendata_sharpen`), and those in the sub-patch tables are proved 0 column by
+    column at 1200 bits, so Catmull-Clark rounds at the 256-bit
     start; anything left (Loop's cyclotomic 1-ring) is taken, eigenvector by eigenvector, from one
-    solve at 1200 bits (:func:`_replace_columns`), and only what still does not round (Loop's
+    solve at 1200 bits, and only what still does not round (Loop's
     Jordan pairs at N = 3) makes the next try a whole one at 1200 bits.
 
     Every float64 returned is the correctly rounded value of the exact number, whose Arb ball
     is returned too. Raises :class:`PrecisionError` past ``max_prec`` bits (both ``16..MAX_BITS``).
     """
+    from symdecomp.analysis.eigendata_sharpen import _round_all  # it builds on this module
+
     check_scheme(scheme)
     n, prec, max_prec = check_valence(n), check_bits(prec), check_bits(max_prec, "max_prec")
     while True:
@@ -445,9 +268,12 @@ def certified_eigendata(scheme: Scheme, n: int, prec: int = 256, max_prec: int =
 
 
 #: Calibration of :func:`eigendata_cost` (x86_64, 2026-12): a process with the package loaded; peak
-#: bytes per entry of the ``K x K`` matrices of one valence (256 bits); CPU seconds per valence,
-#: ``a K^2 + b K^3``; per number written at ``D > 17`` digits (1200-bit balls).
-_BASE_BYTES, _ENTRY_BYTES, _SECONDS, _DECIMAL_SECONDS = 120 << 20, 1600, (9e-6, 3e-8), 3e-5
+#: bytes per entry of the ``K x K`` matrices of one valence (256 bits); CPU seconds per valence of the file's
+#: path (:mod:`symdecomp.analysis.eigendata_direct`), ``a K + b K^2 + c K^3``, fitted to Catmull-Clark and Loop at
+#: N = 3..128, 256 and 500 (the cubic term is Catmull-Clark's past N = 128; Loop stays below it); CPU seconds per
+#: valence of the dense path at ``D > 17`` digits, ``a K^2 + b K^3`` at 256 bits, and per number written (1200-bit balls).
+_BASE_BYTES, _ENTRY_BYTES = 120 << 20, 1600
+_SECONDS, _DENSE_SECONDS, _DECIMAL_SECONDS = (2e-4, 2e-7, 4e-9), (9e-6, 3e-8), 3e-5
 
 
 def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
@@ -464,11 +290,12 @@ def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -
     if digits > 17:  # balls of max(1200, 3.33 D + 64) bits, one process, a text per number
         scale = max(ZERO_PREC, 3.33 * digits + 64) / 256
         peak = _BASE_BYTES + (_ENTRY_BYTES * scale + 2 * (digits + 60)) * sizes[-1] ** 2
-        seconds = sum(scale * (_SECONDS[0] * k * k + _SECONDS[1] * k**3) for k in sizes)
+        seconds = sum(scale * (_DENSE_SECONDS[0] * k * k + _DENSE_SECONDS[1] * k**3) for k in sizes)
         return int(peak), seconds + _DECIMAL_SECONDS * scale * 256 / ZERO_PREC * sum(numbers)
     peak = _BASE_BYTES * (1 + (workers if workers > 1 else 0)) + workers * _ENTRY_BYTES * sizes[-1] ** 2
     held = 8 * sum(numbers) if workers > 1 else 0
-    seconds = sum(_SECONDS[0] * k * k + _SECONDS[1] * k**3 for k in sizes) / workers
+    a, b, c = _SECONDS
+    seconds = sum(a * k + b * k * k + c * k**3 for k in sizes) / workers
     return int(peak + held), seconds
 
 

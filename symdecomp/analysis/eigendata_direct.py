@@ -43,13 +43,13 @@ from symdecomp.analysis.eigendata import (
     _outer_coefficients,
     _regular_part,
     _ring_columns,
-    _round_all,
     _sparse_times,
     certified_eigendata,
 )
+from symdecomp.analysis.eigendata_columns import RING_EIGEN
+from symdecomp.analysis.eigendata_sharpen import _round_all
 from symdecomp.analysis.eigendata_zeros import lower_mirror_zeros, mirror_zeros
 from symdecomp.analysis.fourier_patterns import LazyTable
-from symdecomp.analysis.ring_eigendata import RING_EIGEN
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -250,7 +250,7 @@ def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dic
     applied to ``-g_r`` (``g = W^-1 S11``): it does not depend on how the eigenvectors are scaled, so the
     columns at the higher precision give the same exact entries. Zeros of the symmetries round (to 0.0)
     only at over 1075 bits; this costs ``O(N)`` balls for the columns and for each row, ``O(N)`` per entry,
-    where the exact solve of :func:`~symdecomp.analysis.eigendata._sharpen_lower_block` is ``O(N^3)``.
+    where the exact solve of :func:`~symdecomp.analysis.eigendata_sharpen._sharpen_lower_block` is ``O(N^3)``.
     """
     from symdecomp.analysis.eigendata import ZERO_PREC, _g_rows
 

@@ -2,7 +2,7 @@
 
 A pattern of frequency ``j`` on the 1-ring is a scalar times ``cos(pi m/(2n))`` for an index ``m`` per
 point (:class:`PatternForm`); the table holds those cosines once per valence (:func:`trig_table`, or
-:class:`LazyTable` where a few entries are read). :mod:`symdecomp.analysis.ring_eigendata` builds the
+:class:`LazyTable` where a few entries are read). :mod:`symdecomp.analysis.eigendata_columns` builds the
 eigenvectors from them, and the data file rounds them from their factors or sums them as waves.
 """
 

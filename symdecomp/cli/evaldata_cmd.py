@@ -159,7 +159,7 @@ def _run_sharp(args, kind: str) -> int:
 
 def run(args) -> int:
     from symdecomp.analysis.eigendata import check_eigendata_cost
-    from symdecomp.output.evaldata import binary_chunks, decimal_valence, json_chunks, json_valence
+    from symdecomp.output.evaldata import binary_chunks, decimal_valence, json_chunks, json_valence_text
 
     if is_stencil_scheme(args.scheme):  # a scheme of the zoo: the data of its extraordinary faces, or why there are none
         from symdecomp.cli.evaldata_dual import run_dual
@@ -196,7 +196,7 @@ def run(args) -> int:
     if args.format == "binary":
         size = write_output_file(args.out, binary_chunks(rounded(), ns[-1]))
     else:
-        entries = map(json_valence, rounded()) if digits == FLOAT_DIGITS else decimal()
+        entries = map(json_valence_text, rounded()) if digits == FLOAT_DIGITS else decimal()
         size = write_output_file(args.out, json_chunks(entries, ns[-1], digits, args.scheme.name))
     summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": size, "precision_bits": max(precs)}
     summary["jordan_valences"] = defective

@@ -56,6 +56,7 @@ import json
 import re
 import struct
 from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
 from fractions import Fraction
 
 import flint
@@ -68,7 +69,8 @@ from symdecomp.validate import FLOAT_DIGITS
 
 __all__ = [
     "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "read_binary", "json_chunks",
-    "json_valence", "decimal_valence", "read_json", "sharp_entry", "sharp_json_chunks", "read_sharp_json", "load_document",
+    "json_valence", "json_valence_text", "EncodedValence",
+    "decimal_valence", "read_json", "sharp_entry", "sharp_json_chunks", "read_sharp_json", "load_document",
     "document_chunks",
 ]
 
@@ -160,6 +162,49 @@ def json_valence(d: RoundedEigenData) -> dict:
     return entry
 
 
+@dataclass(frozen=True)
+class EncodedValence:
+    """One valence of the JSON form already written as text (:func:`json_valence_text`)."""
+
+    n: int
+    """The valence."""
+    loop: bool
+    """Whether it has Loop's layout (a ``"jordan"`` list)."""
+    text: str
+    """``json.dumps(json_valence(d), separators=(",", ":"))``, character for character."""
+
+
+def _array_texts(arrays: list[np.ndarray]) -> list[str]:
+    """Each array's float64s as a JSON array of their shortest round-trip strings (``repr``), the arrays in turn.
+
+    Each distinct float64 (by its bits: ``-0.0`` is not ``0.0``) is formatted once; the tables repeat few values
+    (a mirror's and the rotations' copies), about one in ten is distinct. The strings need no escaping, so each
+    array is joined at once instead of each string quoted by the JSON encoder.
+    """
+    flat = [np.ascontiguousarray(a, dtype="<f8").ravel() for a in arrays]
+    bits, where = np.unique(np.concatenate(flat).view("<i8"), return_inverse=True)
+    texts = np.array(list(map(float.__repr__, bits.view("<f8").tolist())), dtype=object)[where.ravel()].tolist()
+    out, start = [], 0
+    for a in flat:
+        out.append('["' + '","'.join(texts[start:start + a.size]) + '"]' if a.size else "[]")
+        start += a.size
+    return out
+
+
+def json_valence_text(d: RoundedEigenData) -> EncodedValence:
+    """:func:`json_valence` as its compact JSON text, written in bulk (the same characters as ``json.dumps`` of it)."""
+    width = d.phi.shape[-1]
+    if width != 12 and d.jordan:
+        raise EvalDataFileError(f"valence {d.n}: the Catmull-Clark layout has no place for a Jordan block")
+    values, inverse, *phi = _array_texts([d.values, np.asarray(d.inverse).T, *(np.asarray(d.phi[k]).T for k in range(3))])
+    parts = [f'{{"n":{int(d.n)},"values":', values, ',"inverse":', inverse, f',"phi":[{",".join(phi)}]']
+    if width == 12:
+        pairs = ",".join(f'{{"row":{int(i)},"column":{int(c)},"value":"{float(g)!r}"}}' for i, c, g in d.jordan)
+        parts.append(f',"jordan":[{pairs}]')
+    parts.append("}")
+    return EncodedValence(int(d.n), width == 12, "".join(parts))
+
+
 def decimal_valence(scheme, n: int, digits: int, max_prec: int = 1 << 14) -> tuple[int, dict]:
     """``(precision, entry)``: one valence of the JSON form at ``digits > 17`` significant digits.
 
@@ -201,25 +246,26 @@ def _decimal_entry(d: PatchEigenData, digits: int) -> dict | None:
 
 
 def json_chunks(entries: Iterable[dict], nmax: int, digits: int, scheme: str | None = None) -> Iterator[str]:
-    """The JSON document piece by piece, one valence per line, from :func:`json_valence` entries (or the
-    decimal ones of :func:`decimal_valence`) for ``3..nmax`` in order.
+    """The JSON document piece by piece, one valence per line, from :func:`json_valence` entries (or their text,
+    :func:`json_valence_text`, or the decimal ones of :func:`decimal_valence`) for ``3..nmax`` in order.
 
     The format (Catmull-Clark or Loop) follows from the first valence: 12 box-spline coefficients
     per sub-patch (Loop, with ``"jordan"``) or 16 (Catmull-Clark).
     """
     ns = []
     for entry in entries:
-        ns.append(entry["n"])
-        if entry["n"] != len(ns) + 2:
+        encoded = isinstance(entry, EncodedValence)
+        ns.append(entry.n if encoded else entry["n"])
+        if ns[-1] != len(ns) + 2:
             _check_sequence(ns)
         if len(ns) == 1:
-            loop = "jordan" in entry
+            loop = entry.loop if encoded else "jordan" in entry
             head = {"format": LOOP_FORMAT, "scheme": scheme} if loop else {"format": FORMAT}
             head.update({"nmax": nmax, "digits": digits})
             if loop:
                 head["layout"] = LOOP_LAYOUT
             yield json.dumps(head)[:-1] + ', "valences": [\n'
-        yield ("" if len(ns) == 1 else ",\n") + json.dumps(entry, separators=(",", ":"))
+        yield ("" if len(ns) == 1 else ",\n") + (entry.text if encoded else json.dumps(entry, separators=(",", ":")))
     if not ns or ns[-1] != nmax:
         _check_sequence(ns + [nmax + 1] if ns else [])
     yield "\n]}\n"

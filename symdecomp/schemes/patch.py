@@ -62,7 +62,7 @@ from fractions import Fraction
 import flint
 import sympy as sp
 
-from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, CyclotomicFunction, cyclotomic_value, to_acb
 from symdecomp.algebra.numbers import to_fmpq, to_fraction
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, SymdecompError
 from symdecomp.schemes.box_spline import BOX_POINTS
@@ -285,10 +285,22 @@ def _triangle_subpatch_rows(n: int, labels) -> tuple[tuple[int, ...], ...]:
     return tuple(out)
 
 
-def _exact_weight(expr: sp.Expr, n: int):
-    """A centre weight at valence ``n``: a Fraction, or an element of a cyclotomic field (exact)."""
+@functools.lru_cache(maxsize=256)
+def _weight_function(expr: sp.Expr) -> CyclotomicFunction | None:
+    """A centre weight read once as a function of the valence (None where it is not of that kind: then
+    :func:`~symdecomp.algebra.cyclotomic.cyclotomic_value` says why, at the valence)."""
     try:
-        x = cyclotomic_value(expr, {N: n}, field=CyclotomicField(2 * n))
+        return CyclotomicFunction(expr, N)
+    except ValueError:
+        return None
+
+
+def _exact_weight(expr: sp.Expr, n: int):
+    """A centre weight at valence ``n``: a Fraction, or an element of a cyclotomic field (exact); sympy reads each
+    weight once (:func:`_weight_function`), not once per valence."""
+    field, f = CyclotomicField(2 * n), _weight_function(expr)
+    try:
+        x = f(n, field) if f is not None else cyclotomic_value(expr, {N: n}, field=field)
     except ValueError as exc:
         raise InvalidSchemeError(f"the centre weight {expr} at valence {n} is not in a cyclotomic field: {exc}") from None
     if x.poly.degree() <= 0:

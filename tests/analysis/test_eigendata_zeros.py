@@ -15,8 +15,8 @@ import pytest
 from symdecomp.algebra.rounding import round_ball
 from symdecomp.analysis import eigendata_direct
 from symdecomp.analysis.eigendata import _g_rows, _regular_part, _ring_columns
+from symdecomp.analysis.eigendata_columns import _rational_columns, circulant_weights
 from symdecomp.analysis.eigendata_zeros import lower_mirror_zeros, mirror_zeros
-from symdecomp.analysis.ring_eigendata import _rational_columns, circulant_weights
 from symdecomp.schemes.loop import loop, loop_warren
 from symdecomp.schemes.patch import patch_matrices
 from symdecomp.schemes.scheme import catmull_clark

@@ -16,12 +16,12 @@ import pytest
 from symdecomp import validate
 from symdecomp.algebra.rounding import round_ball_decimal
 from symdecomp.analysis.eigendata import (
-    _round_all,
     certified_eigendata,
     eigendata_cost,
     patch_eigendata,
     rounded_eigendata,
 )
+from symdecomp.analysis.eigendata_sharpen import _round_all
 from symdecomp.cli import main
 from symdecomp.cli.files import write_output_file as write_atomic
 from symdecomp.errors import ResourceLimitError
@@ -155,6 +155,18 @@ def test_the_estimate_refuses_before_any_work(tmp_path, capsys):
     assert not out.exists()
     memory, seconds = eigendata_cost(CC, 1000, 2)
     assert memory > 16 << 30 and seconds > 3600  # beyond the limit on every machine (at most 16 GiB)
+
+
+def test_the_time_estimate_counts_the_valences_as_the_file_path_costs_them():
+    """The direct path's cost per valence is about linear in K up to N = 128 and cubic beyond (Catmull-Clark): the
+    estimate is a sum over the valences of ``a K + b K^2 + c K^3``, split over the processes, and the dense path at
+    ``D > 17`` digits costs more than the float64 file at every size."""
+    for scheme in (CC, LOOP):
+        one = [eigendata_cost(scheme, n, 1)[1] for n in range(3, 131)]
+        steps = [b - a for a, b in zip(one, one[1:])]
+        assert all(x < y for x, y in zip(steps, steps[1:]))  # each valence costs more than the one before
+        assert eigendata_cost(scheme, 128, 2)[1] == pytest.approx(one[125] / 2)
+        assert eigendata_cost(scheme, 128, 1, digits=20)[1] > one[125]
 
 
 def test_the_estimate_follows_the_limit_in_the_api_and_the_command(tmp_path, monkeypatch, capsys):

@@ -65,3 +65,25 @@ def test_both_ways_to_the_one_ring_rows_are_compared():
     the 1-ring's edges) and refined at n (an edge rule in n)."""
     fixed = {name: patch._ring_rules_fixed(make()) for name, make in SCHEMES.items()}
     assert fixed["catmull-clark"] and fixed["loop"] and not fixed["n-dependent-edge"]
+
+
+@pytest.mark.parametrize(("name", "read_once"), [
+    ("catmull-clark", True), ("loop", True), ("n-dependent-edge", True),
+    ("loop-warren", False),  # a Piecewise in n: substituted by sympy at each valence, as before
+])
+def test_centre_weights_are_read_once_and_equal_sympy_s_substitution(name, read_once):
+    """The vertex rule's weights are read by sympy once (``CyclotomicFunction``), not substituted at every valence,
+    where they are rational functions of n and of cosines of rational multiples of pi; either way they equal
+    the substitution exactly at every valence."""
+    import sympy as sp
+
+    from symdecomp.algebra.cyclotomic import CyclotomicField, cyclotomic_value
+    from symdecomp.symbols import n as N
+
+    rule = SCHEMES[name]().vertex_rule
+    for w in (rule.center, rule.each_a):
+        expr = sp.sympify(w, strict=True)
+        assert (patch._weight_function(expr) is not None) == read_once
+        for n in (3, 4, 7, 12, 31):
+            exact = patch._exact_weight(expr, n)
+            assert (cyclotomic_value(expr, {N: n}, field=CyclotomicField(2 * n)) - exact).poly == 0

@@ -245,7 +245,7 @@ def _decimal_entry(d: PatchEigenData, digits: int) -> dict | None:
     return entry
 
 
-def json_chunks(entries: Iterable[dict], nmax: int, digits: int, scheme: str | None = None) -> Iterator[str]:
+def json_chunks(entries: Iterable[dict | EncodedValence], nmax: int, digits: int, scheme: str | None = None) -> Iterator[str]:
     """The JSON document piece by piece, one valence per line, from :func:`json_valence` entries (or their text,
     :func:`json_valence_text`, or the decimal ones of :func:`decimal_valence`) for ``3..nmax`` in order.
 

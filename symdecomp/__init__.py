@@ -51,7 +51,7 @@ nothing else.
                    the rules (Section 3, ``refinement``), K-ring matrices by exact refinement
                    (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), the rules at
                    boundaries, creases and corners and OpenSubdiv's sharpness arithmetic (``sharp``),
-                   refinement of meshes with tagged sharp edges and vertices (``sharp_refinement``),
+                   refinement of meshes with tagged sharp edges and vertices (``tagged_refinement``),
                    a boundary, crease, corner or dart vertex and its exact subdivision matrix
                    (``sector``), the regular patches next to a sharp ray with phantom points
                    (``sector_patch``), schemes from TOML

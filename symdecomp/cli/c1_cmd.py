@@ -26,9 +26,9 @@ from symdecomp.cli.common import (
     progress,
     valence_range,
 )
+from symdecomp.cli.element import named_element, route, sharpness
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
-from symdecomp.cli.sharp import sharpness
 from symdecomp.errors import InvalidInputError
 
 if TYPE_CHECKING:
@@ -191,7 +191,7 @@ def _zoo_one(n: int, scheme, max_depth: int) -> _Row:
     return _Row(r.n, r.verdict, r.reason, r.as_json())
 
 
-def _run_zoo(args, plot) -> int:
+def _run_zoo(args, items: None, plot) -> int:
     """A scheme of the zoo (stencils): :func:`~symdecomp.verify.c1_zoo.c1_zoo` per valence (the route its model allows)."""
     from symdecomp.verify.result import C1Verdict
 
@@ -313,17 +313,21 @@ def _refuse_dense_past_map_faces(args, faces: int) -> None:
 
 
 def run(args) -> int:
-    from symdecomp.schemes.stencils import StencilScheme
-    from symdecomp.verify.result import C1Verdict
-
+    """``c1``: the route of the element the arguments name (:data:`ROUTES`), after c1's own sector options (``--k``,
+    ``--crease K1,K2``, ``--angle``) are read and checked."""
     items = _sharp_items(args)
     plot = check_plot(args)
-    if isinstance(args.scheme, StencilScheme):
-        if items is not None:
-            raise InvalidInputError(f"--{items[0][0]}: sharp vertices are not tested for {args.scheme.name!r} (a scheme of the zoo)")
-        return _run_zoo(args, plot)
-    if items is not None:
-        return _run_sharp(args, items, plot)
+    return route("c1", ROUTES, named_element(args))(args, items, plot)
+
+
+def _refuse_zoo_sector(args, items: list[tuple], plot) -> int:
+    raise InvalidInputError(f"--{items[0][0]}: sharp vertices are not tested for {args.scheme.name!r} (a scheme of the zoo)")
+
+
+def _run_vertex(args, items: None, plot) -> int:
+    """Reif's test at interior valences (--n), or C1 for every valence (--every-n)."""
+    from symdecomp.verify.result import C1Verdict
+
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
         return _run_every_n(args)
 
@@ -379,3 +383,7 @@ def _run_every_n(args) -> int:
             print(f"  [{step.status}] {where}: {step.text}")
         print(f"{result.status}: {result.summary}")
     return 0 if result.status in ("proved", "verified") else 1
+
+
+#: The route of each kind of element (:mod:`symdecomp.cli.element`), each given the arguments, c1's sector items and --plot.
+ROUTES = {"vertex": _run_vertex, "sector": _run_sharp, "zoo": _run_zoo, "zoo sector": _refuse_zoo_sector}

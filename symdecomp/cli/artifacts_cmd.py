@@ -91,8 +91,8 @@ def _figure(scheme: str, rows: list[dict[str, object]]) -> object:
 
 
 def run(args) -> int:
-    """``artifacts``: the route of the element the arguments name (:data:`ROUTES`)."""
-    return route("artifacts", ROUTES, named_element(args))(args)
+    """``artifacts``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
+    return route("artifacts", ROUTES_BY_KIND, named_element(args))(args)
 
 
 def _run_vertex(args) -> int:
@@ -189,4 +189,4 @@ def _run_zoo(args: argparse.Namespace) -> int:
 
 
 #: The route of each kind of element (:mod:`symdecomp.cli.element`).
-ROUTES = {"vertex": _run_vertex, "zoo": _run_zoo}
+ROUTES_BY_KIND = {"vertex": _run_vertex, "zoo": _run_zoo}

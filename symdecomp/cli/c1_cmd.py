@@ -313,11 +313,11 @@ def _refuse_dense_past_map_faces(args, faces: int) -> None:
 
 
 def run(args) -> int:
-    """``c1``: the route of the element the arguments name (:data:`ROUTES`), after c1's own sector options (``--k``,
+    """``c1``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`), after c1's own sector options (``--k``,
     ``--crease K1,K2``, ``--angle``) are read and checked."""
     items = _sharp_items(args)
     plot = check_plot(args)
-    return route("c1", ROUTES, named_element(args))(args, items, plot)
+    return route("c1", ROUTES_BY_KIND, named_element(args))(args, items, plot)
 
 
 def _refuse_zoo_sector(args, items: list[tuple], plot) -> int:
@@ -386,4 +386,4 @@ def _run_every_n(args) -> int:
 
 
 #: The route of each kind of element (:mod:`symdecomp.cli.element`), each given the arguments, c1's sector items and --plot.
-ROUTES = {"vertex": _run_vertex, "sector": _run_sharp, "zoo": _run_zoo, "zoo sector": _refuse_zoo_sector}
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sharp, "zoo": _run_zoo, "zoo sector": _refuse_zoo_sector}

@@ -200,10 +200,10 @@ def _check_options(args, rings) -> None:
 
 
 def run(args, *, closed_forms: ClosedForms | None = None) -> int:
-    """Run the checks of the element the arguments name (:data:`ROUTES`); ``closed_forms`` replaces the derived closed
+    """Run the checks of the element the arguments name (:data:`ROUTES_BY_KIND`); ``closed_forms`` replaces the derived closed
     forms of an interior vertex's (tests inject wrong ones)."""
     plot = check_plot(args)
-    return route("check", ROUTES, named_element(args))(args, plot, closed_forms)
+    return route("check", ROUTES_BY_KIND, named_element(args))(args, plot, closed_forms)
 
 
 def _run_sector(args, plot, closed_forms: ClosedForms | None = None) -> int:
@@ -366,4 +366,4 @@ def _check_figure(name: str, rows: list[dict[str, Any]]) -> Any:
 
 
 #: The route of each kind of element (:mod:`symdecomp.cli.element`); the zoo's engine refuses a sharp option itself.
-ROUTES = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}

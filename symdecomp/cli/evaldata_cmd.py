@@ -26,7 +26,7 @@ the sector evaluation data (format ``sector-evaldata``, :mod:`symdecomp.output.s
 :mod:`symdecomp.cli.evaldata_formats`.
 
 The element (interior vertex, sector, a zoo scheme's face) is read once (:mod:`symdecomp.cli.element`) and routed by
-:data:`ROUTES`.
+:data:`ROUTES_BY_KIND`.
 """
 
 from __future__ import annotations
@@ -161,12 +161,14 @@ def _run_sharp(args, kind: str) -> int:
 
 
 def run(args) -> int:
-    """``evaldata``: the route of the element the arguments name (:data:`ROUTES`)."""
-    return route("evaldata", ROUTES, named_element(args))(args)
+    """``evaldata``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
+    return route("evaldata", ROUTES_BY_KIND, named_element(args))(args)
 
 
 def _run_sector(args) -> int:
-    return _run_sharp(args, _sharp_kind(args))
+    kind = _sharp_kind(args)  # two kinds, or --n with one: one line
+    assert kind is not None  # a sector element names its kind
+    return _run_sharp(args, kind)
 
 
 def _run_zoo(args) -> int:  # a scheme of the zoo: the data of its extraordinary faces, or why there are none
@@ -223,4 +225,4 @@ def _run_vertex(args) -> int:
 
 
 #: The route of each kind of element (:mod:`symdecomp.cli.element`); a zoo scheme's faces refuse a sharp option themselves.
-ROUTES = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}

@@ -191,8 +191,8 @@ def _run_zoo(args) -> int:
 
 
 def run(args) -> int:
-    """``masks``: the route of the element the arguments name (:data:`ROUTES`)."""
-    return route("masks", ROUTES, named_element(args))(args)
+    """``masks``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
+    return route("masks", ROUTES_BY_KIND, named_element(args))(args)
 
 
 def _run_vertex(args) -> int:
@@ -226,4 +226,4 @@ def _run_vertex(args) -> int:
 
 
 #: The route of each kind of element (:mod:`symdecomp.cli.element`); the zoo's engine refuses a sharp option itself.
-ROUTES = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}

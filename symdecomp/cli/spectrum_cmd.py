@@ -124,9 +124,9 @@ def _print_entries(spectrum) -> None:
 
 
 def run(args) -> int:
-    """``spectrum``: the route of the element the arguments name (:data:`ROUTES`)."""
+    """``spectrum``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
     plot = check_plot(args)
-    return route("spectrum", ROUTES, named_element(args))(args, plot)
+    return route("spectrum", ROUTES_BY_KIND, named_element(args))(args, plot)
 
 
 def _run_vertex(args, plot) -> int:
@@ -178,4 +178,4 @@ def _zoo_figure(scheme, spectrum):
 
 
 #: The route of each kind of element (:mod:`symdecomp.cli.element`); the zoo's engine refuses a sharp option itself.
-ROUTES = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}

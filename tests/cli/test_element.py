@@ -47,8 +47,8 @@ def test_the_element_is_read_from_the_scheme_and_the_sharp_options(argv, kind, t
 def test_every_command_routes_by_its_table_of_kinds(command):
     """Each command module has one table, keys among the kinds, values its own functions, and no per-kind if-chain."""
     module = _module(command)
-    assert set(module.ROUTES) <= set(KINDS) and "vertex" in module.ROUTES
-    assert all(inspect.getmodule(f) is module for f in module.ROUTES.values())
+    assert set(module.ROUTES_BY_KIND) <= set(KINDS) and "vertex" in module.ROUTES_BY_KIND
+    assert all(inspect.getmodule(f) is module for f in module.ROUTES_BY_KIND.values())
     source = inspect.getsource(module)
     assert re.findall(r"is_stencil_scheme\(|sharp_given\(|isinstance\(args\.scheme", source) == []
 
@@ -56,7 +56,7 @@ def test_every_command_routes_by_its_table_of_kinds(command):
 def test_a_kind_without_a_route_is_refused_naming_the_command_and_the_kind():
     element = Element(catmull_clark(), "sector", ("--boundary",))
     with pytest.raises(InvalidInputError) as exc:
-        route("artifacts", _module("artifacts").ROUTES, element)
+        route("artifacts", _module("artifacts").ROUTES_BY_KIND, element)
     assert str(exc.value) == ("artifacts: a boundary, crease, corner or dart vertex (--boundary) is not answered by artifacts "
                               "(--scheme catmull-clark); it answers an interior vertex; the extraordinary vertex or face of a "
                               "scheme of the zoo")
@@ -64,7 +64,7 @@ def test_a_kind_without_a_route_is_refused_naming_the_command_and_the_kind():
 
 def test_on_the_command_line_the_refusal_is_one_line_and_exit_status_2(monkeypatch, capsys):
     """A command whose table loses a route refuses that kind at once: no traceback, no other route taken."""
-    monkeypatch.delitem(_module("spectrum").ROUTES, "zoo")
+    monkeypatch.delitem(_module("spectrum").ROUTES_BY_KIND, "zoo")
     assert main(["spectrum", "5", "--scheme", "doo-sabin"]) == 2
     captured = capsys.readouterr()
     assert captured.out == ""
@@ -76,6 +76,6 @@ def test_on_the_command_line_the_refusal_is_one_line_and_exit_status_2(monkeypat
 def test_a_new_route_is_one_entry_in_the_table(monkeypatch, capsys):
     """The table is the dispatch: an entry put in for a kind is what the command runs for it."""
     seen = []
-    monkeypatch.setitem(_module("artifacts").ROUTES, "vertex", lambda args: seen.append(args.valences) or 0)
+    monkeypatch.setitem(_module("artifacts").ROUTES_BY_KIND, "vertex", lambda args: seen.append(args.valences) or 0)
     assert main(["artifacts", "--n", "3:4"]) == 0
     assert seen == [[3, 4]] and capsys.readouterr().out == ""

@@ -83,6 +83,12 @@ class Element:
     kind: str
     #: The sharp options given (``("--crease",)``; empty for an interior element).
     tags: tuple[str, ...]
+    #: The centre: ``"vertex"``, or ``"face"`` for a dual scheme of the zoo (Doo-Sabin: an ``n``-sided face).
+    centre: str = "vertex"
+    #: The valences, sides or face counts named (``N``, ``--n A:B``, ``--k A:B``; empty for ``--every-n``).
+    sizes: tuple[int, ...] = ()
+    #: The ring depth asked (``--rings K``; 1: the 1-ring, or a zoo scheme's smallest invariant neighbourhood).
+    depth: int = 1
 
     @property
     def words(self) -> str:
@@ -94,11 +100,18 @@ def named_element(args: argparse.Namespace) -> Element:
     """The :class:`Element` the arguments name (the one place that reads which kind of element a command is asked about)."""
     from symdecomp.schemes.stencils import StencilScheme
 
+    from symdecomp.schemes.topology import topology_of
+
     scheme = args.scheme
     tags = tuple(option for dest, option in SHARP_OPTIONS.items() if given(args, dest))
+    named = next((getattr(args, dest) for dest in ("n", "valences", "sectors", "faces")
+                  if isinstance(getattr(args, dest, None), (int, list))), [])
+    sizes = tuple(named) if isinstance(named, list) else (named,)
+    depth = int(getattr(args, "rings", 1))
     if isinstance(scheme, StencilScheme):
-        return Element(scheme, "zoo sector" if tags else "zoo", tags)
-    return Element(scheme, "sector" if tags else "vertex", tags)
+        centre = "vertex" if tags else topology_of(scheme).centre
+        return Element(scheme, "zoo sector" if tags else "zoo", tags, centre, sizes, depth)
+    return Element(scheme, "sector" if tags else "vertex", tags, "vertex", sizes, depth)
 
 
 def route(command: str, routes: Mapping[str, Route], element: Element) -> Route:

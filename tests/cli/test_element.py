@@ -43,6 +43,21 @@ def test_the_element_is_read_from_the_scheme_and_the_sharp_options(argv, kind, t
     assert element.words == KINDS[kind]
 
 
+@pytest.mark.parametrize(("argv", "centre", "sizes", "depth"), [
+    (["spectrum", "5"], "vertex", (5,), 1),
+    (["spectrum", "7", "--scheme", "loop", "--rings", "2"], "vertex", (7,), 2),
+    (["check", "--k", "3:5", "--boundary"], "vertex", (3, 4, 5), 1),
+    (["c1", "--every-n"], "vertex", (), 1),
+    (["evaldata", "--n", "3:4", "--scheme", "doo-sabin", "--out", "x.json"], "face", (3, 4), 1),
+    (["masks", "6", "--scheme", "midedge", "--rings", "2"], "face", (6,), 2),
+    (["check", "--n", "3:4", "--scheme", "sqrt3", "--certify"], "vertex", (3, 4), 1),
+])
+def test_the_element_knows_its_centre_sizes_and_depth(argv, centre, sizes, depth):
+    """Doo-Sabin and mid-edge are dual: their element is an n-sided face; sqrt(3) is primal, a vertex."""
+    element = named_element(build_parser().parse_args(argv))
+    assert (element.centre, element.sizes, element.depth) == (centre, sizes, depth)
+
+
 @pytest.mark.parametrize("command", sorted(COMMANDS))
 def test_every_command_routes_by_its_table_of_kinds(command):
     """Each command module has one table, keys among the kinds, values its own functions, and no per-kind if-chain."""

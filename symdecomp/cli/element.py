@@ -99,7 +99,6 @@ class Element:
 def named_element(args: argparse.Namespace) -> Element:
     """The :class:`Element` the arguments name (the one place that reads which kind of element a command is asked about)."""
     from symdecomp.schemes.stencils import StencilScheme
-
     from symdecomp.schemes.topology import topology_of
 
     scheme = args.scheme

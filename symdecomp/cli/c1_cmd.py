@@ -26,7 +26,7 @@ from symdecomp.cli.common import (
     progress,
     valence_range,
 )
-from symdecomp.cli.element import named_element, route, sharpness
+from symdecomp.cli.element import named_element, route, sector_vertex, sharpness
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError
@@ -230,28 +230,31 @@ def _run_valences(args, one, method, title: str = "Reif's test") -> list:
 
 
 def _vertex(item: tuple, scheme: Scheme):
-    """The :class:`~symdecomp.schemes.sector.SharpVertex` of one item of :func:`_sharp_items`."""
-    from symdecomp.schemes.sector import SharpVertex
-
+    """The :class:`~symdecomp.schemes.sector.SharpVertex` of one item of :func:`_sharp_items`
+    (:func:`symdecomp.cli.element.sector_vertex`)."""
     kind, faces, angle, sharpness = item
-    lat = scheme.lattice
-    if kind == "crease":
-        return SharpVertex.crease(faces[0], faces[1], lat, sharpness)
-    if kind == "corner":
-        return SharpVertex.corner(faces, lat, angle)
-    if kind == "dart":
-        return SharpVertex.dart(faces, lat)
-    return SharpVertex.boundary(faces, lat)
+    return sector_vertex(kind, faces, scheme.lattice, angle=angle, sharpness=math.inf if sharpness is None else sharpness)
+
+
+def _closed_fan(item: tuple, scheme: Scheme, max_depth: int):
+    from symdecomp.verify.c1_closed_fan import c1_dart_test
+
+    return c1_dart_test(scheme, item[1], max_depth=max_depth)
+
+
+def _mirror_blocks(item: tuple, scheme: Scheme, max_depth: int):
+    from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
+
+    return c1_mirror_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
+
+
+#: The test of each sharp vertex, named by the symmetry it reads: a dart's closed fan (Reif's test), else the sector's
+#: mirror blocks (Zorin's conditions).
+SECTOR_TESTS = {"boundary": _mirror_blocks, "corner": _mirror_blocks, "crease": _mirror_blocks, "dart": _closed_fan}
 
 
 def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
-    from symdecomp.verify.c1_closed_fan import c1_dart_test
-    from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
-
-    if item[0] == "dart":
-        r = c1_dart_test(scheme, item[1], max_depth=max_depth)
-    else:
-        r = c1_mirror_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
+    r = SECTOR_TESTS[item[0]](item, scheme, max_depth)
     return _Row(r.n, r.verdict, r.reason, r.as_json(), r.vertex)
 
 

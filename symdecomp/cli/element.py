@@ -45,7 +45,7 @@ from symdecomp.cli.common import LIMITS, SHARP_OPTIONS, Once, flag, given, integ
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import check_memory
 
-__all__ = ["KINDS", "Element", "named_element", "route", "ring_depth", "steps_note",
+__all__ = ["KINDS", "Element", "named_element", "route", "ring_depth", "steps_note", "SECTOR_VERTICES", "sector_vertex",
            "sharpness", "add_sharp_options", "check_sharp_options", "sharp_vertex", "check_rules_at", "faces_or_valence",
            "sector_range", "refuse_sharp_options", "describe", "exact_only"]
 
@@ -228,8 +228,6 @@ def sharp_vertex(args, k: int, *, structural: bool = False):
     ``structural``: the command reads boundary, corner and infinitely sharp crease vertices by the mirror decomposition's
     blocks (O(k)), so they may have up to :data:`MAX_STRUCTURAL_FACES` faces; darts and semi-sharp creases stay dense.
     """
-    from symdecomp.schemes.sector import SharpVertex
-
     check_sharp_options(args)
     named = [option for dest, option in SHARP_OPTIONS.items() if given(args, dest)]
     wide = structural and named[0] != "--dart" and args.sharpness == math.inf
@@ -237,21 +235,32 @@ def sharp_vertex(args, k: int, *, structural: bool = False):
     if k > limit or getattr(args, "crease", None) and k + args.crease > limit:
         raise InvalidInputError(f"the vertex has more than {limit} faces " + ("(the blocks are O(k))" if wide else
                                 "(the matrices are dense and exact)"))
-    lat = args.scheme.lattice
-    if named[0] == "--boundary":
-        vertex = SharpVertex.boundary(k, lat)
-    elif named[0] == "--corner":
-        vertex = SharpVertex.corner(k, lat)
-    elif named[0] == "--crease":
-        vertex = SharpVertex.crease(k, args.crease, lat, sharpness=args.sharpness)
-    elif k < 3:
+    if named[0] == "--dart" and k < 3:
         raise InvalidInputError(f"--dart: a dart is an interior vertex of valence K >= 3, got K = {k}")
-    else:
-        vertex = SharpVertex.dart(k, lat, sharpness=args.sharpness)
+    faces = (k, args.crease) if named[0] == "--crease" else k
+    vertex = sector_vertex(named[0], faces, args.scheme.lattice, sharpness=args.sharpness)
     check_rules_at(args.scheme, vertex)
     if named[0] == "--dart":
         check_memory(int(BYTES_AT_16_FACES * (vertex.faces / 16) ** 4), f"{describe(vertex)}: the exact analysis")
     return vertex
+
+
+#: The sharp vertex each tag names (:class:`~symdecomp.schemes.sector.SharpVertex`'s constructors), from its faces
+#: (``K``; a crease's ``(K1, K2)``), lattice, corner angle (``None``: BLZ's ``pi/k``) and sharpness.
+SECTOR_VERTICES: dict[str, Callable[..., Any]] = {
+    "boundary": lambda cls, faces, lat, angle, sharpness: cls.boundary(faces, lat),
+    "corner": lambda cls, faces, lat, angle, sharpness: cls.corner(faces, lat, angle),
+    "crease": lambda cls, faces, lat, angle, sharpness: cls.crease(faces[0], faces[1], lat, sharpness),
+    "dart": lambda cls, faces, lat, angle, sharpness: cls.dart(faces, lat, sharpness),
+}
+
+
+def sector_vertex(tag: str, faces, lattice, *, angle=None, sharpness=math.inf):
+    """The :class:`~symdecomp.schemes.sector.SharpVertex` the tag names (``boundary`` or ``--boundary``, ...;
+    :data:`SECTOR_VERTICES`), the one place a command builds one."""
+    from symdecomp.schemes.sector import SharpVertex
+
+    return SECTOR_VERTICES[tag.lstrip("-")](SharpVertex, faces, lattice, angle, sharpness)
 
 
 def refuse_sharp_options(args, *names: str) -> None:

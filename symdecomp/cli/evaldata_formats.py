@@ -23,6 +23,7 @@ import argparse
 from collections.abc import Iterator
 
 from symdecomp.cli.common import given, print_json, progress
+from symdecomp.cli.element import sector_vertex
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.errors import EvalDataFileError, InvalidInputError, NotApplicableError
 
@@ -45,7 +46,6 @@ def run_sector(args: argparse.Namespace, kind: str) -> int:
     """Write the sector evaluation data of the vertices ``kind`` with ``args.faces`` faces (module docstring)."""
     from symdecomp.analysis.sector_evaldata import sector_evaldata
     from symdecomp.output.sector_evaldata import SECTOR_FORMAT, sector_entry, sector_json_chunks
-    from symdecomp.schemes.sector import SharpVertex
 
     scheme, ks, lat = args.scheme, args.faces, args.scheme.lattice
     if kind == "crease" and ks[0] < 2:
@@ -54,7 +54,7 @@ def run_sector(args: argparse.Namespace, kind: str) -> int:
     if kind == "crease" and ks[-1] > MAX_CREASE_FACES:
         raise InvalidInputError(f"--k {ks[-1]}: --crease takes at most {MAX_CREASE_FACES} faces on each side (the exact "
                                 "eigen-decomposition of its 2-ring of 12K + 1 points grows like the cube of K)")
-    vertices = [SharpVertex.crease(k, k, lat) if kind == "crease" else getattr(SharpVertex, kind)(k, lat) for k in ks]
+    vertices = [sector_vertex(kind, (k, k) if kind == "crease" else k, lat) for k in ks]  # a crease: K faces on each side
     check_output_file(args.out)
     sizes: list[int] = []
     exact: list[bool] = []

@@ -94,3 +94,17 @@ def test_a_new_route_is_one_entry_in_the_table(monkeypatch, capsys):
     monkeypatch.setitem(_module("artifacts").ROUTES_BY_KIND, "vertex", lambda args: seen.append(args.valences) or 0)
     assert main(["artifacts", "--n", "3:4"]) == 0
     assert seen == [[3, 4]] and capsys.readouterr().out == ""
+
+
+@pytest.mark.parametrize(("tag", "faces", "sectors", "closed", "corner"), [
+    ("--boundary", 4, (4,), False, False),
+    ("corner", 2, (2,), False, True),
+    ("--crease", (2, 3), (2, 3), True, False),
+    ("dart", 5, (5,), True, False),
+])
+def test_a_sharp_vertex_is_built_from_its_tag_in_one_place(tag, faces, sectors, closed, corner):
+    """A boundary's fan is open, a crease's and a dart's closed (a dart: one sector around the whole fan)."""
+    from symdecomp.cli.element import sector_vertex
+
+    vertex = sector_vertex(tag, faces, "quad")
+    assert (vertex.sectors, vertex.closed, vertex.corner, vertex.faces) == (sectors, closed, corner, sum(sectors))

@@ -51,7 +51,7 @@ nothing else.
                    the rules (Section 3, ``refinement``), K-ring matrices by exact refinement
                    (``rings``), the 1-ring and its 2n-gon (Eq. 10-13, ``ring``), the rules at
                    boundaries, creases and corners and OpenSubdiv's sharpness arithmetic (``sharp``),
-                   refinement of meshes with tagged sharp edges and vertices (``sharp_refinement``),
+                   refinement of meshes with tagged sharp edges and vertices (``tagged_refinement``),
                    a boundary, crease, corner or dart vertex and its exact subdivision matrix
                    (``sector``), the regular patches next to a sharp ray with phantom points
                    (``sector_patch``), schemes from TOML
@@ -211,13 +211,12 @@ nothing else.
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
-                   ``evaldata_cmd`` (creases and BLZ's rules, ``evaldata_sector``; the zoo's faces, ``evaldata_dual``), ``inspect_cmd`` (its outputs
-                   ``inspect_outputs``, its per-vertex table ``inspect_vertices``), ``refine_cmd``, ``design_cmd``, ``report_cmd``;
-                   check at boundary, crease, corner and dart vertices, ``check_sharp``),
-                   shared argument types and output (``common``), output files written whole
-                   (``files``), the options and output of boundary, crease, corner and dart vertices
-                   (``sharp``), the commands spectrum, masks and check for a scheme of the zoo (``zoo``), and artifacts
-                   (``artifacts_zoo``),
+                   ``evaldata_cmd`` (the files of a sector's and a dual scheme's faces' data, ``evaldata_formats``),
+                   ``inspect_cmd`` (its outputs ``inspect_outputs``, its per-vertex table ``inspect_vertices``), ``refine_cmd``,
+                   ``design_cmd``, ``report_cmd``; check's rows against the mirror decomposition, ``check_mirror``),
+                   the extraordinary element the user named, read and validated once, its kinds and each command's
+                   table from kind to route (``element``), shared argument types and output (``common``), output files
+                   written whole (``files``),
                    the one shape of every command's JSON output and its JSON Schema
                    (``json_envelope``), the one progress display of long commands (``progress``), the
                    option --plot FILE of the commands that draw (``plot_file``)

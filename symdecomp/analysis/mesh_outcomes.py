@@ -17,7 +17,7 @@ subject:
   on decide: the verdicts are the eventual kind's.
 * **spectrum**: a neighbourhood the sector model does not take (an interior vertex of valence 2; under ``edge-only``
   a boundary vertex of one face, where OpenSubdiv applies the crease rule): the exact 1-ring matrix from OpenSubdiv's
-  rules (:func:`~symdecomp.schemes.sharp_refinement.sharp_stencils` on the vertex's fan, cut out of the mesh) and
+  rules (:func:`~symdecomp.schemes.tagged_refinement.sharp_stencils` on the vertex's fan, cut out of the mesh) and
   its exact eigenvalues decide what they can: ``not-c1`` when 1 is not a simple dominant eigenvalue, else
   ``undecided`` with the spectrum (no characteristic map test here for these fans).
 
@@ -155,7 +155,7 @@ def spectrum_verdict(scheme, outcome: Outcome) -> tuple[str, str]:
     from symdecomp.algebra.numbers import to_sympy
     from symdecomp.errors import InvalidSchemeError, InvalidValenceError
     from symdecomp.schemes.sharp import SharpOptions
-    from symdecomp.schemes.sharp_refinement import TaggedMesh, sharp_stencils
+    from symdecomp.schemes.tagged_refinement import TaggedMesh, sharp_stencils
 
     faces, closed, edge_sharpness, vertex_sharpness, boundary = outcome.fan
     mesh, outer, edges = _fan_mesh(scheme.lattice, faces, closed)

@@ -5,7 +5,7 @@ sharpness) is refined by the rules its tags give for :attr:`~symdecomp.analysis.
 and is of its eventual kind from then on. :func:`transient_frame` cuts the vertex's 2-ring out of the mesh (the
 faces at its 1-ring's vertices: every point of the child's 2-ring is computed from it, Chaikin's edge rule included,
 which looks at both ends of an edge), refines it exactly with OpenSubdiv's semantics
-(:func:`~symdecomp.schemes.sharp_refinement.refine_tagged`), cuts the child's 2-ring out again, level by level, and
+(:func:`~symdecomp.schemes.tagged_refinement.refine_tagged`), cuts the child's 2-ring out again, level by level, and
 applies the eventual kind's masks (:func:`~symdecomp.analysis.mesh_limits.kind_masks`) to the child's ordered 1-ring.
 The kind found at the last level is checked to be the eventual kind the decay predicted.
 
@@ -41,8 +41,8 @@ def _options(mesh):
 
 
 def _piece(source, v: int, real_boundary: frozenset, edge_sharpness, vertex_sharpness):
-    """The 2-ring of ``v`` in ``source`` (a local mesh) as a :class:`~symdecomp.schemes.sharp_refinement.TaggedMesh`."""
-    from symdecomp.schemes.sharp_refinement import TaggedMesh
+    """The 2-ring of ``v`` in ``source`` (a local mesh) as a :class:`~symdecomp.schemes.tagged_refinement.TaggedMesh`."""
+    from symdecomp.schemes.tagged_refinement import TaggedMesh
 
     ring = {x for fi in source.faces_of(v) for x in source.faces[fi]}
     faces = {fi for x in ring for fi in source.faces_of(x)}
@@ -85,7 +85,7 @@ def _level0(mesh, lattice, v: int):
 def _ordered_ring(tagged, v: int, boundary: str):
     """The child's kind (as :mod:`~symdecomp.analysis.mesh_kinds` names it) and its 1-ring in the masks' order."""
     from symdecomp.analysis.mesh_kinds import _kind_of
-    from symdecomp.schemes.sharp_refinement import vertex_fan
+    from symdecomp.schemes.tagged_refinement import vertex_fan
 
     fan = vertex_fan(tagged, v)
     sharp = [tagged.sharpness(v, a) for a in fan.edges]
@@ -104,7 +104,7 @@ def transient_frame(mesh, scheme, v: int, outcome) -> tuple[np.ndarray, np.ndarr
     """``(limit, unit normal, the two tangents)`` of the transient vertex ``v`` (module docstring), or why not."""
     from symdecomp.analysis.mesh_limits import apply_masks, kind_masks
     from symdecomp.errors import NotApplicableError
-    from symdecomp.schemes.sharp_refinement import refine_tagged
+    from symdecomp.schemes.tagged_refinement import refine_tagged
 
     options = _options(mesh)
     tagged = _level0(mesh, scheme.lattice, v)

@@ -220,7 +220,7 @@ def ball_at(v: Eigenvalue, prec: int):
 def near_weight(scheme, vertex, k: int):
     """The near-edge rule's weight on the edge's other end in a sector of ``k`` faces, when it is irrational (else ``None``).
 
-    BLZ's ``theta_k = pi/k``, or ``angle/k`` at a corner given its angle (:mod:`symdecomp.schemes.sharp_refinement`).
+    BLZ's ``theta_k = pi/k``, or ``angle/k`` at a corner given its angle (:mod:`symdecomp.schemes.tagged_refinement`).
     """
     rules = scheme.sharp
     if rules is None or rules.near_edge_centre is None:

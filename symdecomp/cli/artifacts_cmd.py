@@ -9,6 +9,8 @@ The table is a list of columns (:data:`symdecomp.output.artifact_table.COLUMNS`,
 
 from __future__ import annotations
 
+import argparse
+
 from symdecomp.cli.common import (
     ARTIFACTS_COST,
     LIMITS,
@@ -17,15 +19,17 @@ from symdecomp.cli.common import (
     add_scheme_option,
     estimate_seconds,
     flag,
-    is_stencil_scheme,
     print_json,
     progress,
     valence_range,
 )
+from symdecomp.cli.element import named_element, route, steps_note
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
+from symdecomp.errors import InvalidInputError
 from symdecomp.parallel import ordered_map
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.stencils import StencilScheme
 
 __all__ = ["register", "run"]
 
@@ -80,20 +84,21 @@ def _one(n: int, scheme: Scheme) -> dict:
     return artifact_indicators(scheme, n).as_json()
 
 
-def _figure(scheme: str, rows: list[dict]):
+def _figure(scheme: str, rows: list[dict[str, object]]) -> object:
     from symdecomp.output.plotting.regime_chart import regime_figure
 
     return regime_figure(scheme, rows)
 
 
 def run(args) -> int:
-    from symdecomp.errors import InvalidInputError
+    """``artifacts``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
+    return route("artifacts", ROUTES_BY_KIND, named_element(args))(args)
+
+
+def _run_vertex(args) -> int:
+    """``artifacts --n A:B`` (or ``--every-n``) at an interior vertex: the indicators per valence."""
     from symdecomp.output.artifact_table import table
 
-    if is_stencil_scheme(args.scheme):  # a scheme of the zoo: its engine (symdecomp.cli.artifacts_zoo)
-        from symdecomp.cli.artifacts_zoo import run_zoo_artifacts
-
-        return run_zoo_artifacts(args, check_plot(args))
     if args.every_n and args.valences is not None:
         raise InvalidInputError("--every-n and --n cannot be used together: --every-n covers every valence")
     if args.every_n:
@@ -128,3 +133,60 @@ def _run_every_n(args) -> int:
             where = f"n >= {first}" if last is None else f"n = {first}..{last}"
             print(f"  [{step.status}] {where}: {step.text}")
     return 0 if result.first_proved is not None else 1
+
+
+def _zoo_one(n: int, scheme: StencilScheme) -> dict[str, object]:
+    from symdecomp.verify.zoo_artifacts import zoo_artifacts
+
+    return zoo_artifacts(scheme, n).as_json()
+
+
+#: An exact form longer than this is shown by its decimal value in the text (``--json`` has both).
+_SHORT = 40
+
+
+def _short(exact: object, value: object) -> str:
+    return str(exact) if exact is not None and len(str(exact)) <= _SHORT else str(value or "-")
+
+
+def _mu_text(curvature: dict[str, object]) -> str:
+    mu = curvature["mu"]
+    assert isinstance(mu, list)
+    return "; ".join(f"{_short(m['exact'], m['value'])} ({m['kind']})" for m in mu) or "-"
+
+
+def _print_zoo(name: str, scheme: StencilScheme, rows: list[dict[str, object]]) -> None:
+    print(f"{name}: curvature regime and density at the extraordinary element, valences {rows[0]['n']}..{rows[-1]['n']}"
+          f"{steps_note(scheme)}")
+    for r in rows:
+        c = r["curvature"]
+        assert isinstance(c, dict)
+        lam, square = _short(c["lambda1_exact"], c["lambda1"]), _short(c["lambda1_squared"], None)
+        print(f"n = {r['n']:>3}: {c['regime']}; lambda_1 = {lam}, lambda_1^2 = {square}, "
+              f"mu = {_mu_text(c)}; density {r['density']} (regular lambda_1 {r['regular_lambda1'] or '-'}); {c['reason']}")
+    print(str(rows[0]["not_computed"]))
+
+
+def _run_zoo(args: argparse.Namespace) -> int:
+    """``artifacts --n A:B --scheme <zoo scheme>`` on the smallest invariant neighbourhood. Exit 1 if a regime is undecided."""
+    plot = check_plot(args)
+    name = args.scheme.name
+    if args.every_n:
+        raise InvalidInputError(f"--every-n: the curvature regime for every n is not derived for {name!r} (a scheme of the zoo); "
+                                "give --n A:B")
+    if args.valences is None:
+        raise InvalidInputError("give --n A:B (the valences)")
+    rows = ordered_map(_zoo_one, args.valences, shared={"scheme": args.scheme}, jobs=args.jobs,
+                       executor=args.executor, warm_up=True)
+    results: list[dict[str, object]] = list(progress(rows, len(args.valences), "artifacts", enabled=not args.quiet))
+    write_plot(plot, lambda: _figure(name, results))
+    if args.json:
+        print_json(args, results)
+    else:
+        _print_zoo(name, args.scheme, results)
+    undecided = [r for r in results if isinstance(r["curvature"], dict) and r["curvature"]["regime"] == "undecided"]
+    return 1 if undecided else 0
+
+
+#: The route of each kind of element (:mod:`symdecomp.cli.element`).
+ROUTES_BY_KIND = {"vertex": _run_vertex, "zoo": _run_zoo}

@@ -26,9 +26,9 @@ from symdecomp.cli.common import (
     progress,
     valence_range,
 )
+from symdecomp.cli.element import named_element, route, sector_vertex, sharpness
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
-from symdecomp.cli.sharp import sharpness
 from symdecomp.errors import InvalidInputError
 
 if TYPE_CHECKING:
@@ -191,7 +191,7 @@ def _zoo_one(n: int, scheme, max_depth: int) -> _Row:
     return _Row(r.n, r.verdict, r.reason, r.as_json())
 
 
-def _run_zoo(args, plot) -> int:
+def _run_zoo(args, items: None, plot) -> int:
     """A scheme of the zoo (stencils): :func:`~symdecomp.verify.c1_zoo.c1_zoo` per valence (the route its model allows)."""
     from symdecomp.verify.result import C1Verdict
 
@@ -230,28 +230,31 @@ def _run_valences(args, one, method, title: str = "Reif's test") -> list:
 
 
 def _vertex(item: tuple, scheme: Scheme):
-    """The :class:`~symdecomp.schemes.sector.SharpVertex` of one item of :func:`_sharp_items`."""
-    from symdecomp.schemes.sector import SharpVertex
-
+    """The :class:`~symdecomp.schemes.sector.SharpVertex` of one item of :func:`_sharp_items`
+    (:func:`symdecomp.cli.element.sector_vertex`)."""
     kind, faces, angle, sharpness = item
-    lat = scheme.lattice
-    if kind == "crease":
-        return SharpVertex.crease(faces[0], faces[1], lat, sharpness)
-    if kind == "corner":
-        return SharpVertex.corner(faces, lat, angle)
-    if kind == "dart":
-        return SharpVertex.dart(faces, lat)
-    return SharpVertex.boundary(faces, lat)
+    return sector_vertex(kind, faces, scheme.lattice, angle=angle, sharpness=math.inf if sharpness is None else sharpness)
+
+
+def _closed_fan(item: tuple, scheme: Scheme, max_depth: int):
+    from symdecomp.verify.c1_closed_fan import c1_dart_test
+
+    return c1_dart_test(scheme, item[1], max_depth=max_depth)
+
+
+def _mirror_blocks(item: tuple, scheme: Scheme, max_depth: int):
+    from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
+
+    return c1_mirror_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
+
+
+#: The test of each sharp vertex, named by the symmetry it reads: a dart's closed fan (Reif's test), else the sector's
+#: mirror blocks (Zorin's conditions).
+SECTOR_TESTS = {"boundary": _mirror_blocks, "corner": _mirror_blocks, "crease": _mirror_blocks, "dart": _closed_fan}
 
 
 def _sharp_one(item: tuple, scheme: Scheme, max_depth: int) -> _Row:
-    from symdecomp.verify.c1_closed_fan import c1_dart_test
-    from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
-
-    if item[0] == "dart":
-        r = c1_dart_test(scheme, item[1], max_depth=max_depth)
-    else:
-        r = c1_mirror_blocks(scheme, _vertex(item, scheme), max_depth=max_depth)
+    r = SECTOR_TESTS[item[0]](item, scheme, max_depth)
     return _Row(r.n, r.verdict, r.reason, r.as_json(), r.vertex)
 
 
@@ -313,17 +316,21 @@ def _refuse_dense_past_map_faces(args, faces: int) -> None:
 
 
 def run(args) -> int:
-    from symdecomp.schemes.stencils import StencilScheme
-    from symdecomp.verify.result import C1Verdict
-
+    """``c1``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`), after c1's own sector options (``--k``,
+    ``--crease K1,K2``, ``--angle``) are read and checked."""
     items = _sharp_items(args)
     plot = check_plot(args)
-    if isinstance(args.scheme, StencilScheme):
-        if items is not None:
-            raise InvalidInputError(f"--{items[0][0]}: sharp vertices are not tested for {args.scheme.name!r} (a scheme of the zoo)")
-        return _run_zoo(args, plot)
-    if items is not None:
-        return _run_sharp(args, items, plot)
+    return route("c1", ROUTES_BY_KIND, named_element(args))(args, items, plot)
+
+
+def _refuse_zoo_sector(args, items: list[tuple], plot) -> int:
+    raise InvalidInputError(f"--{items[0][0]}: sharp vertices are not tested for {args.scheme.name!r} (a scheme of the zoo)")
+
+
+def _run_vertex(args, items: None, plot) -> int:
+    """Reif's test at interior valences (--n), or C1 for every valence (--every-n)."""
+    from symdecomp.verify.result import C1Verdict
+
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
         return _run_every_n(args)
 
@@ -379,3 +386,7 @@ def _run_every_n(args) -> int:
             print(f"  [{step.status}] {where}: {step.text}")
         print(f"{result.status}: {result.summary}")
     return 0 if result.status in ("proved", "verified") else 1
+
+
+#: The route of each kind of element (:mod:`symdecomp.cli.element`), each given the arguments, c1's sector items and --plot.
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sharp, "zoo": _run_zoo, "zoo sector": _refuse_zoo_sector}

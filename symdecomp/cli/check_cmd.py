@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import time
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from symdecomp.cli.common import (
     LIMITS,
@@ -15,16 +15,23 @@ from symdecomp.cli.common import (
     flag,
     general_path,
     given,
-    is_stencil_scheme,
     print_json,
     progress,
     refuse_together,
-    sharp_given,
     valence_range,
+)
+from symdecomp.cli.element import (
+    MAX_FACES,
+    MAX_STRUCTURAL_FACES,
+    add_sharp_options,
+    named_element,
+    ring_depth,
+    route,
+    sector_range,
+    steps_note,
 )
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
-from symdecomp.cli.sharp import MAX_FACES, MAX_STRUCTURAL_FACES, add_sharp_options, sector_range
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import MAX_DOUBLE_DIGITS, check_memory
 
@@ -32,6 +39,7 @@ if TYPE_CHECKING:
     from symdecomp.analysis.closed_forms import ClosedForms
     from symdecomp.parallel import Executor
     from symdecomp.schemes.scheme import Scheme
+    from symdecomp.schemes.stencils import StencilScheme
 
 __all__ = ["register", "run", "check_valences", "ROUTES", "SOLVERS"]
 
@@ -191,33 +199,30 @@ def _check_options(args, rings) -> None:
         check_memory(STRUCTURAL_BYTES_PER_VALENCE * (rings or 1) ** 2 * top, f"the structural certificate at n = {top}")
 
 
-def _other_route(args, plot) -> int | None:
-    """The exit code of the zoo's engine (a StencilScheme) or of the sharp route (a sector's faces); ``None`` otherwise."""
-    if is_stencil_scheme(args.scheme):
-        from symdecomp.cli.zoo import run_zoo_check
-
-        return run_zoo_check(args, plot)
-    if args.sectors is not None or sharp_given(args):
-        if args.sectors is None:
-            raise InvalidInputError("--n: valences of interior vertices; give the faces of a boundary, crease, corner or "
-                                    "dart vertex's sector with --k A:B")
-        if not sharp_given(args):
-            raise InvalidInputError("--k: the faces of a sharp vertex's sector: give --boundary, --corner, --crease K2 or "
-                                    "--dart (interior valences are --n A:B)")
-        from symdecomp.cli.check_sharp import run_sharp
-
-        return run_sharp(args, plot)
-    return None
-
-
 def run(args, *, closed_forms: ClosedForms | None = None) -> int:
-    """Run the checks; ``closed_forms`` replaces the derived closed forms (tests inject wrong ones)."""
+    """Run the checks of the element the arguments name (:data:`ROUTES_BY_KIND`); ``closed_forms`` replaces the derived closed
+    forms of an interior vertex's (tests inject wrong ones)."""
+    plot = check_plot(args)
+    return route("check", ROUTES_BY_KIND, named_element(args))(args, plot, closed_forms)
+
+
+def _run_sector(args, plot, closed_forms: ClosedForms | None = None) -> int:
+    """``check --k A:B`` with a sharp vertex's option: the mirror decomposition (:mod:`symdecomp.cli.check_mirror`)."""
+    from symdecomp.cli.check_mirror import run_mirror
+
+    if args.sectors is None:
+        raise InvalidInputError("--n: valences of interior vertices; give the faces of a boundary, crease, corner or "
+                                "dart vertex's sector with --k A:B")
+    return run_mirror(args, plot)
+
+
+def _run_vertex(args, plot, closed_forms: ClosedForms | None = None) -> int:
+    """``check --n A:B``: the closed forms (or the K-ring frequency matrices) against the full matrix, per valence."""
     from symdecomp.verify.result import CrossCheckStatus
 
-    plot = check_plot(args)
-    routed = _other_route(args, plot)
-    if routed is not None:
-        return routed
+    if args.sectors is not None:
+        raise InvalidInputError("--k: the faces of a sharp vertex's sector: give --boundary, --corner, --crease K2 or "
+                                "--dart (interior valences are --n A:B)")
     rings = args.rings if general_path(args) else None
     args.route_note = ""
     if args.certify:
@@ -295,3 +300,70 @@ def _print_row(args, r) -> None:
         line = (f"{r.n:>4}  {r.status.value:<13} {len(r.matches):>8}  {mpmath.nstr(r.max_deviation, 3):>13}  "
                 f"{mpmath.nstr(r.max_spread, 3):>10}  {','.join(map(str, r.precisions))}")
     print(line if r.ok else f"{line}\n      {r.message}", flush=True)
+
+
+class _Certified(NamedTuple):
+    """What the command prints of one valence's certificate of a scheme of the zoo (made in a worker)."""
+
+    ok: bool
+    message: str
+    json: dict[str, Any]
+
+
+def _certify_zoo_one(n: int, scheme: StencilScheme, depth: int | None) -> _Certified:
+    from symdecomp.verify.certify import certify_zoo
+
+    c = certify_zoo(scheme, n, depth, digits=20)
+    return _Certified(c.ok, c.message, c.as_json())
+
+
+#: The options of the check of a scheme of the zoo that it has no use for, with the reason.
+_NOT_FOR_THE_ZOO = {
+    "dps": "the certified check is exact and has no precision",
+    "solver": "numeric mode's eigen-solver; a scheme of the zoo is checked with --certify only",
+    "route": "the zoo's certificate chooses its route itself (the structural blocks read once for every n, past the valences "
+             "they are read at, else the dense characteristic polynomial)",
+    "structural": "the zoo's certificate chooses its route itself (see --route)",
+}
+
+
+def _run_zoo(args, plot, closed_forms: ClosedForms | None = None) -> int:
+    """``check --n A:B --certify --scheme <zoo scheme>``: one certificate per valence, on the pool (--jobs, --executor)."""
+    from symdecomp.parallel import ordered_map
+
+    if not args.certify:
+        raise InvalidInputError(f"--scheme {args.scheme.name}: a scheme of the zoo is checked with --certify (the blocks "
+                                "against the full matrix, exactly)")
+    for option, why in _NOT_FOR_THE_ZOO.items():
+        if given(args, option):
+            raise InvalidInputError(f"--{option}: not used for --scheme {args.scheme.name} (a scheme of the zoo): {why}")
+    depth = ring_depth(args)
+    start = time.perf_counter()
+    work = ordered_map(_certify_zoo_one, args.valences, shared={"scheme": args.scheme, "depth": depth}, jobs=args.jobs,
+                       executor=args.executor, warm_up=True)
+    rows = []
+    for row in progress(work, len(args.valences), "certify", enabled=not args.quiet):
+        rows.append(row)
+        if not args.json:
+            print(row.message)
+    failed = [r for r in rows if not r.ok]
+    summary = {"mode": "certified", "route": "zoo", "valences": len(rows), "ok": not failed,
+               "seconds": round(time.perf_counter() - start, 3)}
+    write_plot(plot, lambda: _check_figure(args.scheme.name, [r.json for r in rows]))
+    if args.json:
+        print_json(args, {"scheme": args.scheme.name, "rings": args.rings, "rows": [r.json for r in rows], "summary": summary})
+    else:
+        print(f"{len(rows)} valences: {len(rows) - len(failed)} agree{steps_note(args.scheme)}")
+        for r in failed:
+            print(f"FAILED {r.message}")
+    return 1 if failed else 0
+
+
+def _check_figure(name: str, rows: list[dict[str, Any]]) -> Any:
+    from symdecomp.output.plotting.check_chart import check_figure
+
+    return check_figure(name, rows)
+
+
+#: The route of each kind of element (:mod:`symdecomp.cli.element`); the zoo's engine refuses a sharp option itself.
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}

@@ -177,7 +177,7 @@ def given(args, dest: str) -> bool:
     return dest in getattr(args, "_given", set())
 
 
-#: The options that name a boundary, crease, corner or dart vertex (:mod:`symdecomp.cli.sharp`), by destination.
+#: The options that name a boundary, crease, corner or dart vertex (:mod:`symdecomp.cli.element`), by destination.
 SHARP_OPTIONS = {"boundary": "--boundary", "corner": "--corner", "crease": "--crease", "dart": "--dart"}
 
 
@@ -372,7 +372,7 @@ def closed_form_obstacle(scheme: Scheme) -> str | None:
 
 
 def is_stencil_scheme(scheme) -> bool:
-    """Whether ``scheme`` is a scheme of the zoo (a StencilScheme): the commands hand it to the zoo's engine (``symdecomp.cli.zoo``)."""
+    """Whether ``scheme`` is a scheme of the zoo (a StencilScheme): its engine answers (the commands' routes, :mod:`symdecomp.cli.element`)."""
     from symdecomp.schemes.stencils import StencilScheme
 
     return isinstance(scheme, StencilScheme)
@@ -400,7 +400,7 @@ def check_scheme_valences(args) -> None:
     the stencils must fit and every weight must be defined and real
     (:meth:`~symdecomp.schemes.scheme.Scheme.fitting_valence`); the error names the valence and the weight.
     """
-    from symdecomp.cli.sharp import check_sharp_options  # the sharp options' own checks (imported late: it imports this)
+    from symdecomp.cli.element import check_sharp_options  # the sharp options' own checks (imported late: it imports this)
 
     scheme = getattr(args, "scheme", None)
     valences = getattr(args, "valences", None) or getattr(args, "n", None)

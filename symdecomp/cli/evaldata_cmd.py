@@ -19,11 +19,14 @@ with K faces, K in the range, as JSON of exact rationals (format ``sharp-patches
 ``{"out", "format", "scheme", "kind", "k", "bytes", "sizes"}``.
 
 ``--scheme doo-sabin --n A:B`` (a scheme of the zoo): the data of its extraordinary faces, or one line saying why
-there are none (:mod:`symdecomp.cli.evaldata_dual`).
+there are none (:mod:`symdecomp.cli.evaldata_formats`).
 
 ``--crease --k A:B`` (crease vertices with K faces on each side), and ``--boundary``/``--corner`` under BLZ's rules:
 the sector evaluation data (format ``sector-evaldata``, :mod:`symdecomp.output.sector_evaldata`), written by
-:mod:`symdecomp.cli.evaldata_sector`.
+:mod:`symdecomp.cli.evaldata_formats`.
+
+The element (interior vertex, sector, a zoo scheme's face) is read once (:mod:`symdecomp.cli.element`) and routed by
+:data:`ROUTES_BY_KIND`.
 """
 
 from __future__ import annotations
@@ -37,11 +40,11 @@ from symdecomp.cli.common import (
     face_range,
     flag,
     given,
-    is_stencil_scheme,
     print_json,
     progress,
     valence_range,
 )
+from symdecomp.cli.element import named_element, route
 from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import EvalDataFileError, InvalidInputError
@@ -78,7 +81,7 @@ def register(sub) -> None:
                    "D > 17 = the exact value correctly rounded to D significant digits (slower, one process)")
     add_pool_options(p, default_jobs=2)  # the binary file and JSON at 17 digits; JSON at D > 17 digits runs in this process
     flag(p, "--json", help="print a JSON summary")
-    add_scheme_option(p, zoo=True)  # a scheme of the zoo: its faces' data (symdecomp.cli.evaldata_dual)
+    add_scheme_option(p, zoo=True)  # a scheme of the zoo: its faces' data (symdecomp.cli.evaldata_formats)
     add_quiet_option(p)
     p.set_defaults(func=run)
 
@@ -133,7 +136,7 @@ def _run_sharp(args, kind: str) -> int:
     from symdecomp.schemes.sector import SharpVertex
 
     if kind == "crease" or getattr(args.scheme.sharp, "near_edge_centre", None) is not None:  # creases, BLZ's rules
-        from symdecomp.cli.evaldata_sector import run_sector
+        from symdecomp.cli.evaldata_formats import run_sector
 
         return run_sector(args, kind)
     scheme, ks = args.scheme, args.faces
@@ -158,16 +161,27 @@ def _run_sharp(args, kind: str) -> int:
 
 
 def run(args) -> int:
+    """``evaldata``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
+    return route("evaldata", ROUTES_BY_KIND, named_element(args))(args)
+
+
+def _run_sector(args) -> int:
+    kind = _sharp_kind(args)  # two kinds, or --n with one: one line
+    assert kind is not None  # a sector element names its kind
+    return _run_sharp(args, kind)
+
+
+def _run_zoo(args) -> int:  # a scheme of the zoo: the data of its extraordinary faces, or why there are none
+    from symdecomp.cli.evaldata_formats import run_dual
+
+    return run_dual(args)
+
+
+def _run_vertex(args) -> int:
     from symdecomp.analysis.eigendata import check_eigendata_cost
     from symdecomp.output.evaldata import binary_chunks, decimal_valence, json_chunks, json_valence_text
 
-    if is_stencil_scheme(args.scheme):  # a scheme of the zoo: the data of its extraordinary faces, or why there are none
-        from symdecomp.cli.evaldata_dual import run_dual
-
-        return run_dual(args)
-    kind = _sharp_kind(args)
-    if kind is not None:
-        return _run_sharp(args, kind)
+    _sharp_kind(args)  # --k without a kind, or no --n: one line
     _refuse_ignored(args)
     ns = args.n
     if ns[0] != 3:
@@ -208,3 +222,7 @@ def run(args) -> int:
         if defective:  # the matrix has no eigenvector basis there: the file carries its Jordan pairs
             print(f"not diagonalizable at N = {', '.join(map(str, defective))}: the file holds the Jordan pairs (\"jordan\") for those valences")
     return 0
+
+
+#: The route of each kind of element (:mod:`symdecomp.cli.element`); a zoo scheme's faces refuse a sharp option themselves.
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}

@@ -29,11 +29,20 @@ from symdecomp.cli.common import (
     digits,
     flag,
     general_path,
-    is_stencil_scheme,
     print_json,
-    sharp_given,
 )
-from symdecomp.cli.sharp import add_sharp_options, faces_or_valence
+from symdecomp.cli.element import (
+    add_sharp_options,
+    describe,
+    exact_only,
+    faces_or_valence,
+    named_element,
+    refuse_sharp_options,
+    ring_depth,
+    route,
+    sharp_vertex,
+    steps_note,
+)
 from symdecomp.errors import SymdecompError
 
 
@@ -113,18 +122,84 @@ def _run_general(args, certified: bool, why: str) -> int:
     return _finish(args, data, certified, why)
 
 
+def _block_names(scheme, vertex) -> dict:
+    """``{eigenvalue key: "block, block"}`` from the spectrum's names (mirror blocks, or parts of the matrix)."""
+    from symdecomp.analysis.spectrum import sharp_spectrum
+
+    return {e.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
+
+
+def _print_mask(mask, names, digits: int, blocks: dict) -> None:
+    exact = mask.exact()
+    print(f"{mask.name} (eigenvalue {_value(mask, digits)}, {blocks.get(mask.eigenvalue.key, mask.eigenvalue.part)}):")
+    for i, (name, text) in enumerate(zip(names, mask.texts(digits))):
+        closed = "" if exact is None or exact[i].is_Integer or len(str(exact[i])) > 60 else f"  = {exact[i]}"
+        print(f"  {name}: {text}{closed}")
+
+
+def _value(mask, digits: int) -> str:
+    from symdecomp.analysis.spectrum import acb_text
+
+    return acb_text(mask.eigenvalue.ball, digits)
+
+
+def _run_sector(args) -> int:
+    """``symdecomp masks K --boundary`` (and ``--corner``, ``--crease K2``, ``--dart``): print the masks, exit 1 when the
+    tangents are not the tangent plane's."""
+    from symdecomp.analysis.masks import sharp_masks
+    from symdecomp.analysis.spectrum import acb_text
+
+    refuse_sharp_options(args, "--rings")
+    vertex = sharp_vertex(args, args.n)
+    masks = exact_only(args, vertex, lambda: sharp_masks(args.scheme, vertex))
+    blocks = _block_names(args.scheme, vertex)
+    value, where = acb_text(masks.subdominant.ball, args.digits), blocks.get(masks.subdominant.key, masks.subdominant.part)
+    if args.json:
+        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
+                    "position": masks.position.as_json(masks.names, args.digits),
+                    "tangents": [t.as_json(masks.names, args.digits) for t in masks.tangents],
+                    "subdominant": {"value": value, "blocks": where}, "tangent_plane": masks.tangent_plane,
+                    "reason": masks.reason})
+    else:
+        print(f"{args.scheme.name}, {describe(vertex)} ({vertex.lattice} mesh): subdominant eigenvalue {value} ({where}); "
+              f"{masks.reason}")
+        for mask in (masks.position, *masks.tangents):
+            _print_mask(mask, masks.names, args.digits, blocks)
+    if not masks.tangent_plane:
+        print(f"symdecomp masks: {describe(vertex)}: the tangent masks are not the tangent plane's ({masks.reason})",
+              file=sys.stderr)
+    return 0 if masks.tangent_plane else 1
+
+
+def _run_zoo(args) -> int:
+    """``masks N --scheme <zoo scheme>``: position and tangent masks by orbit class."""
+    from symdecomp.analysis.zoo_masks import zoo_masks
+
+    data = zoo_masks(args.scheme, args.n, ring_depth(args), digits=args.digits)
+    if args.json:
+        print_json(args, data)
+        return 0
+    print(f"{data['scheme']}, n = {data['n']}, neighbourhood of depth {data['rings']}{steps_note(args.scheme)}: "
+          f"subdominant eigenvalue {data['subdominant']}")
+    for title, mask in [("position", data["position"]), ("tangent 1", data["tangents"][0]), ("tangent 2", data["tangents"][1])]:
+        print(f"{title}:")
+        if "O" in mask:
+            print(f"  centre: {mask['O']}")
+        for key, weights in mask["classes"].items():
+            print(f"  class {key}, sectors 0..{args.n - 1}: {', '.join(weights)}")
+    return 0
+
+
 def run(args) -> int:
+    """``masks``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
+    return route("masks", ROUTES_BY_KIND, named_element(args))(args)
+
+
+def _run_vertex(args) -> int:
+    """``masks N``: an interior vertex, from the closed forms where they apply, else the any-scheme route."""
     from symdecomp.analysis.masks import limit_masks, limit_masks_at
     from symdecomp.analysis.tangent import complex_at
 
-    if is_stencil_scheme(args.scheme):
-        from symdecomp.cli.zoo import run_zoo_masks
-
-        return run_zoo_masks(args)
-    if sharp_given(args):
-        from symdecomp.cli.sharp import run_sharp_masks
-
-        return run_sharp_masks(args)
     certified, why, one_simple = _subdominance(args)
     if not one_simple:
         print(f"symdecomp masks: at n = {args.n}, {args.scheme.name}: {why}; no limit position mask is defined, and no "
@@ -148,3 +223,7 @@ def run(args) -> int:
         for i, (a, b) in enumerate(zip(mask["a"], mask["b"])):
             print(f"  a_{i}: {a:<{args.digits + 8}} b_{i}: {b}")
     return _finish(args, data, certified, why)
+
+
+#: The route of each kind of element (:mod:`symdecomp.cli.element`); the zoo's engine refuses a sharp option itself.
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}

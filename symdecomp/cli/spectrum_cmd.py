@@ -9,12 +9,21 @@ from symdecomp.cli.common import (
     digits,
     flag,
     general_path,
-    is_stencil_scheme,
     print_json,
-    sharp_given,
+)
+from symdecomp.cli.element import (
+    add_sharp_options,
+    describe,
+    exact_only,
+    faces_or_valence,
+    named_element,
+    refuse_sharp_options,
+    ring_depth,
+    route,
+    sharp_vertex,
+    steps_note,
 )
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
-from symdecomp.cli.sharp import add_sharp_options, faces_or_valence
 from symdecomp.errors import InvalidInputError
 
 #: Above this valence the any-scheme route leaves out the exact expressions unless --exact is given.
@@ -50,9 +59,9 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def _run_sharp(args, plot) -> int:
+def _run_sector(args, plot) -> int:
+    """``spectrum K --boundary`` (``--corner``, ``--crease K2``, ``--dart``): the exact eigenvalues, level by level."""
     from symdecomp.analysis.spectrum import sharp_levels
-    from symdecomp.cli.sharp import describe, exact_only, refuse_sharp_options, sharp_vertex
 
     refuse_sharp_options(args, "--rings", "--exact")
     vertex = sharp_vertex(args, args.n, structural=True)
@@ -98,6 +107,13 @@ def _run_general(args, plot) -> int:
         return 0
     print(f"{spectrum.scheme} ({spectrum.mesh} mesh), valence n = {spectrum.n}, {spectrum.rings}-ring: "
           f"{spectrum.size} eigenvalues, {len(spectrum.eigenvalues)} distinct")
+    _print_entries(spectrum)
+    return 0
+
+
+def _print_entries(spectrum) -> None:
+    """The table of a spectrum by frequency blocks (any scheme, or the zoo's engine): value, multiplicity, Jordan
+    blocks, frequencies and the exact value where known."""
     width = max(len(e.text) for e in spectrum.eigenvalues)
     print(f"{'value':<{width}}  mult  jordan  frequencies k; exact")
     for e in spectrum.eigenvalues:
@@ -105,19 +121,18 @@ def _run_general(args, plot) -> int:
         ks = ", ".join(map(str, e.frequencies)) if len(e.frequencies) <= 8 else f"{len(e.frequencies)} frequencies"
         exact = "" if e.exact is None else f"; {e.exact}"
         print(f"{e.text:<{width}}  {e.multiplicity:>4}  {jordan:>6}  {ks}{exact}")
-    return 0
 
 
 def run(args) -> int:
+    """``spectrum``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
+    plot = check_plot(args)
+    return route("spectrum", ROUTES_BY_KIND, named_element(args))(args, plot)
+
+
+def _run_vertex(args, plot) -> int:
+    """``spectrum N``: an interior vertex, from the closed forms on the paper's 1-ring, else the any-scheme route."""
     from symdecomp.analysis.spectrum import closed_form_spectrum
 
-    plot = check_plot(args)
-    if is_stencil_scheme(args.scheme):
-        from symdecomp.cli.zoo import run_zoo_spectrum
-
-        return run_zoo_spectrum(args, plot)
-    if sharp_given(args):
-        return _run_sharp(args, plot)
     if general_path(args):
         return _run_general(args, plot)
     if args.exact:
@@ -134,3 +149,33 @@ def run(args) -> int:
     for e in spectrum.eigenvalues:
         print(f"{e.text:<{width}}  {e.multiplicity:>4}  {', '.join(map(str, e.frequencies))}")
     return 0
+
+
+def _run_zoo(args, plot) -> int:
+    """``spectrum N --scheme <zoo scheme>``: the engine's spectrum on the neighbourhood of the vertex or face."""
+    from symdecomp.analysis.zoo_spectrum import zoo_spectrum
+
+    spectrum = zoo_spectrum(args.scheme, args.n, ring_depth(args), digits=args.digits)
+    write_plot(plot, lambda: _zoo_figure(args.scheme, spectrum))
+    if args.json:
+        print_json(args, spectrum.as_json())
+        return 0
+    print(f"{spectrum.scheme} ({args.scheme.topology}, {spectrum.mesh} mesh), n = {spectrum.n}, neighbourhood of depth "
+          f"{spectrum.rings}{steps_note(args.scheme)}: {spectrum.size} eigenvalues, {len(spectrum.eigenvalues)} distinct")
+    _print_entries(spectrum)
+    return 0
+
+
+def _zoo_figure(scheme, spectrum):
+    """``spectrum --plot``: the eigenvalues by the frequency block they come from, titled as the text's first line."""
+    import textwrap
+
+    from symdecomp.output.plotting.spectrum_chart import spectrum_figure
+
+    title = textwrap.fill(f"{spectrum.scheme} ({scheme.topology}, {spectrum.mesh} mesh), n = {spectrum.n}, neighbourhood of depth "
+                          f"{spectrum.rings}{steps_note(scheme)}: {len(spectrum.eigenvalues)} distinct eigenvalues by frequency", 90)
+    return spectrum_figure(spectrum, title=title, xlabel="frequency k (the block B(omega^k) of the neighbourhood's orbit labelling)")
+
+
+#: The route of each kind of element (:mod:`symdecomp.cli.element`); the zoo's engine refuses a sharp option itself.
+ROUTES_BY_KIND = {"vertex": _run_vertex, "sector": _run_sector, "zoo": _run_zoo, "zoo sector": _run_zoo}

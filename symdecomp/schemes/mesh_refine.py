@@ -1,7 +1,7 @@
 """Whole meshes refined exactly by a scheme, sharpness tags and all (``symdecomp refine``).
 
 :func:`refine_mesh` takes ``steps`` exact steps of a scheme on a :class:`~symdecomp.schemes.meshfile.PolygonMesh`:
-each step is :func:`~symdecomp.schemes.sharp_refinement.refine_tagged` (every vertex, edge and face point by the
+each step is :func:`~symdecomp.schemes.tagged_refinement.refine_tagged` (every vertex, edge and face point by the
 rule its own tags and valence give, OpenSubdiv's semantics, boundary interpolation from the mesh's tags), after a
 first exact Catmull-Clark step on a mesh with faces other than quads
 (:func:`~symdecomp.schemes.polygon_step.catmull_clark_polygon_step`). The result's coordinates are exact
@@ -46,7 +46,7 @@ class RefinedMesh:
 
 def _tagged(mesh: PolygonMesh, lattice):
     from symdecomp.schemes.sharp import SharpOptions
-    from symdecomp.schemes.sharp_refinement import TaggedMesh
+    from symdecomp.schemes.tagged_refinement import TaggedMesh
 
     tags = mesh.tags
     if tags.holes:
@@ -71,7 +71,7 @@ def _result(tagged, steps: int) -> RefinedMesh:
 def refine_mesh(mesh: PolygonMesh, scheme: Scheme, steps: int, *, progress=None) -> RefinedMesh:
     """``steps`` exact steps of ``scheme`` on ``mesh`` (module docstring); ``progress(iterable, total)`` wraps the steps."""
     from symdecomp.schemes.polygon_step import catmull_clark_polygon_step
-    from symdecomp.schemes.sharp_refinement import refine_tagged
+    from symdecomp.schemes.tagged_refinement import refine_tagged
 
     if not isinstance(mesh, PolygonMesh):
         raise InvalidMeshError(f"mesh must be a PolygonMesh, got {type(mesh).__name__}")

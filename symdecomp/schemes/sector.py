@@ -16,7 +16,7 @@ face of ``O``), the points ``(s, u, v)`` labelled as in :mod:`symdecomp.schemes.
 edge ray ``s``, ``v`` along ray ``s + 1``), and on an open fan the last ray's points ``(f, u, 0)``.
 
 :func:`sharp_subdivision_matrix` refines the tagged ``K``-ring mesh once with the scheme's rules for the whole
-mesh, sharp ones included (:mod:`symdecomp.schemes.sharp_refinement`: every vertex with the rule its own tags
+mesh, sharp ones included (:mod:`symdecomp.schemes.tagged_refinement`: every vertex with the rule its own tags
 and valence give, OpenSubdiv's semantics), and reads the new ``K``-ring: row ``i`` is the stencil of the new
 point at label ``i``. ``level`` is the refinement level at which the matrix is taken: semi-sharp edges have
 lost ``level`` of their sharpness (every sharp edge of the neighbourhood has the same sharpness, so uniform
@@ -49,7 +49,7 @@ from symdecomp.schemes.lattice import Lattice, lattice
 from symdecomp.schemes.rings import MAX_RINGS, check_rings
 from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sharp import SharpOptions, check_sharpness, decrement
-from symdecomp.schemes.sharp_refinement import TaggedMesh, sharp_stencils
+from symdecomp.schemes.tagged_refinement import TaggedMesh, sharp_stencils
 from symdecomp.validate import INPUT_LIMITS, cached, check_int, check_levels, check_memory, check_type
 
 __all__ = ["SharpVertex", "sharp_subdivision_matrix", "sharp_matrix_rows", "exact_sharp_matrix", "MAX_SECTOR_FACES", "MAX_DENSE_FACES", "MAX_LEVEL"]
@@ -279,7 +279,7 @@ def sharp_subdivision_matrix(scheme, vertex: SharpVertex, *, rings: int = 1, lev
 
     Built by one exact refinement of the tagged ring mesh with the rules of the whole mesh (the scheme's
     smooth rules at every vertex's own valence, its :class:`~symdecomp.schemes.sharp.SharpRules` at sharp
-    features, OpenSubdiv's semantics: :mod:`symdecomp.schemes.sharp_refinement`), at refinement ``level``
+    features, OpenSubdiv's semantics: :mod:`symdecomp.schemes.tagged_refinement`), at refinement ``level``
     (semi-sharp sharpness decayed ``level`` times). Rows and columns in :meth:`SharpVertex.ring_labels` order;
     ``options``: boundary interpolation and creasing method (:class:`~symdecomp.schemes.sharp.SharpOptions`).
     """

@@ -3,7 +3,7 @@
 Each row of :data:`SIGNATURES` is one finding of the issue (an internal error, a run past two minutes), with what is
 due instead: one line naming the input, exit status 2 (the package's error in the API), at once. Every row of items 7,
 11 and 12 failed on the main branch the issue was filed against; the rows of item 21 keep the sharp options' checks
-where they moved (``symdecomp.cli.sharp.check_sharp_options``).
+where they moved (``symdecomp.cli.element.check_sharp_options``).
 """
 
 import os

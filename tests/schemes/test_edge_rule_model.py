@@ -99,9 +99,9 @@ def test_an_edge_between_two_vertices_of_one_valence_needs_a_symmetric_rule():
     assert symmetric.edge_weights(5)[0] == symmetric.edge_weights(5)[1]
 
 
-def test_sharp_refinement_refuses_an_edge_rule_in_n():
+def test_tagged_refinement_refuses_an_edge_rule_in_n():
     from symdecomp.schemes.sharp import SharpOptions
-    from symdecomp.schemes.sharp_refinement import _Rules
+    from symdecomp.schemes.tagged_refinement import _Rules
 
     with pytest.raises(InvalidSchemeError, match="depends on the valence n"):
         _Rules(SYMMETRIC_IN_N, SharpOptions())

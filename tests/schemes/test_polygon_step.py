@@ -12,7 +12,7 @@ from symdecomp.schemes.mesh_tags import MeshTags
 from symdecomp.schemes.meshfile import PolygonMesh
 from symdecomp.schemes.polygon_step import catmull_clark_polygon_step
 from symdecomp.schemes.scheme import catmull_clark
-from symdecomp.schemes.sharp_refinement import TaggedMesh, refine_tagged
+from symdecomp.schemes.tagged_refinement import TaggedMesh, refine_tagged
 from tests.analysis.test_mesh_limits import grid
 
 

@@ -1,5 +1,5 @@
 """The rules at sharp features: SharpRules, the [sharp] section of scheme files, BLZ's shipped rules, and
-OpenSubdiv's sharpness arithmetic (symdecomp.schemes.sharp, symdecomp.schemes.sharp_refinement)."""
+OpenSubdiv's sharpness arithmetic (symdecomp.schemes.sharp, symdecomp.schemes.tagged_refinement)."""
 
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ from symdecomp.schemes.sharp import (
     child_edge_sharpnesses,
     standard_sharp_rules,
 )
-from symdecomp.schemes.sharp_refinement import TaggedMesh, refine_tagged
+from symdecomp.schemes.tagged_refinement import TaggedMesh, refine_tagged
 from symdecomp.symbols import theta_k
 
 CC, LOOP = sd.catmull_clark(), sd.loop()

@@ -14,7 +14,7 @@ The numbers behind the figures come from the package; nothing is typed in:
   have a Jordan block instead, decided exactly; the figure then draws the chain's generalised eigenvector.
 * :func:`sector_characteristic_map`: the image of the sector's faces under two eigenvectors of its ``rings``-ring
   matrix (:func:`symdecomp.schemes.sector.sharp_subdivision_matrix`), refined ``levels`` times by the tagged
-  refinement of the whole mesh (:func:`symdecomp.schemes.sharp_refinement.refine_tagged`).
+  refinement of the whole mesh (:func:`symdecomp.schemes.tagged_refinement.refine_tagged`).
 * :func:`subdominant_eigenvalues`: the two largest eigenvalues below the dominant 1 of the exact 1-ring matrix.
 
 The figures: :func:`sector_polylines_figure` (part 1 of notebook 10), :func:`corner_maps_figure` (part 2),
@@ -40,7 +40,7 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.output.plotting._mpl import label_axes, new_figure
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.schemes.sector import SharpVertex, sharp_subdivision_matrix
-from symdecomp.schemes.sharp_refinement import refine_tagged
+from symdecomp.schemes.tagged_refinement import refine_tagged
 from symdecomp.validate import cached, check_int, check_levels, check_type
 
 __all__ = [
@@ -314,7 +314,7 @@ def sector_characteristic_map(scheme: Scheme, vertex, *, rings: int = 3, levels:
     (the vertex's angle, ``pi`` if it has none; the mirror axis of the sector on the x axis); when ``lambda_1`` is
     multiple both come from its eigenspace (a complex fit). ``SectorMap.spectrum`` is the whole ``rings``-ring
     matrix's. These values on the tagged ``rings``-ring mesh are refined ``levels`` times with the scheme's rules
-    (:func:`~symdecomp.schemes.sharp_refinement.refine_tagged`); the refined faces of the sector's own ``k`` faces
+    (:func:`~symdecomp.schemes.tagged_refinement.refine_tagged`); the refined faces of the sector's own ``k`` faces
     (those within ``2**levels`` rings of ``O``) are the map's image. (A modified rule at a sharp vertex needs to know
     whether each edge's ends are sharp, which a cut-out ring cannot tell at its rim: each level loses one more ring
     there, hence 3 rings by default.)

@@ -21,13 +21,13 @@ from symdecomp.cli.common import given, print_json, progress, refuse_together
 from symdecomp.cli.plot_file import write_plot
 from symdecomp.errors import InvalidInputError
 
-__all__ = ["run_sharp", "refuse_semi_sharp"]
+__all__ = ["run_mirror", "refuse_semi_sharp"]
 
 
 def refuse_semi_sharp(args) -> None:
     """Refuse a finite ``--sharpness`` at once, before the header: both modes check the mirror decomposition, which a
     semi-sharp vertex does not have (its matrix changes level by level; ``spectrum`` shows the levels)."""
-    from symdecomp.cli.sharp import check_sharp_options
+    from symdecomp.cli.element import check_sharp_options
 
     check_sharp_options(args)  # --sharpness without --crease or --dart: that line first
     if args.sharpness != math.inf:
@@ -38,9 +38,9 @@ def refuse_semi_sharp(args) -> None:
                                 "semi-sharp vertex level by level")
 
 
-def run_sharp(args, plot) -> int:
+def run_mirror(args, plot) -> int:
     """``check --k A:B`` with a sharp vertex's option: certified or numeric rows, exit 1 if any vertex is not proved."""
-    from symdecomp.cli.sharp import refuse_sharp_options
+    from symdecomp.cli.element import refuse_sharp_options
 
     refuse_semi_sharp(args)
     refuse_sharp_options(args, "--rings")
@@ -56,7 +56,7 @@ def run_sharp(args, plot) -> int:
 
 def _routes(args, vertices) -> list[str]:
     """Each vertex's certificate (``--route`` or the default), a vertex out of the asked route's reach refused in one line."""
-    from symdecomp.cli.sharp import describe
+    from symdecomp.cli.element import describe
     from symdecomp.schemes.sector import MAX_DENSE_FACES
     from symdecomp.verify.sector_structural import applies, default_route
 
@@ -81,7 +81,7 @@ def _precheck(args, vertices, routes) -> None:
     """Rules out of a route's reach (irrational weights over two fields, a bare theta_k, ...): one line before the header."""
     from symdecomp.analysis.block_values import block_values, layout
     from symdecomp.analysis.triangular_eigen import sharp_matrix
-    from symdecomp.cli.sharp import exact_only
+    from symdecomp.cli.element import exact_only
 
     dense = [v for v, r in zip(vertices, routes) if r == "charpoly"]
     for vertex in dense:
@@ -103,7 +103,7 @@ def _header(args, routes) -> None:
 
 
 def _run_certified(args, plot) -> int:
-    from symdecomp.cli.sharp import describe, sharp_vertex
+    from symdecomp.cli.element import describe, sharp_vertex
     from symdecomp.parallel import ordered_map
     from symdecomp.verify.sector_structural import certify_vertex
 
@@ -149,7 +149,7 @@ def _figure(scheme: str, rows: list):
 def _run_numeric(args) -> int:
     """The blocks against the refined matrix, numerically, on the pool (:mod:`symdecomp.verify.sector_numeric`)."""
     from symdecomp.analysis.block_values import structural_values
-    from symdecomp.cli.sharp import describe, exact_only, sharp_vertex
+    from symdecomp.cli.element import describe, exact_only, sharp_vertex
     from symdecomp.parallel import ordered_map
     from symdecomp.verify.sector_numeric import DENSE_FACES, numeric_sector_row
 

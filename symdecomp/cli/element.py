@@ -1,6 +1,21 @@
-"""Boundary, crease, corner and dart vertices on the command line: the options ``spectrum``, ``masks`` and ``check`` share.
+"""The extraordinary element the user named on the command line, built and validated once, and each command's routes.
 
-The vertex is named by one option (why these names: a user says "a boundary vertex with 5 faces", so
+A command that analyses one element (``spectrum``, ``masks``, ``check``, ``c1``, ``artifacts``, ``evaldata``) asks
+:func:`named_element` for it: the scheme and the *kind* of element, read once from the arguments. The kinds
+(:data:`KINDS`):
+
+* ``vertex``: an interior vertex of valence ``n`` of a scheme of edge, face and vertex rules (the paper's route, or the
+  any-scheme route on triangles and ``--rings K``);
+* ``sector``: a boundary, crease, corner or dart vertex of such a scheme, its fan of ``K`` faces cut by sharp edges;
+* ``zoo``: the extraordinary vertex or ``n``-sided face of a scheme of the zoo (a StencilScheme), at its ring depth;
+* ``zoo sector``: a sharp option given with a scheme of the zoo (whose engine reads interior elements only).
+
+Each command keeps one table from kind to the function that answers it (its *routes*, data as symfem keeps its
+reference cells), and :func:`route` looks the element up there: a command module has no if-chain over the kinds, and
+a kind a command has no route for is refused in one line naming the command and the kind. A new kind is one entry in
+:data:`KINDS` (and where :func:`named_element` recognises it); a command's new route is one entry in its table.
+
+The sharp vertex is named by one option (why these names: a user says "a boundary vertex with 5 faces", so
 ``spectrum 5 --boundary``; ``--crease K2`` takes the second sector's faces because a crease vertex has two
 sectors and the positional argument is the first; ``--corner`` and ``--dart`` are the tags OpenSubdiv and
 modellers use):
@@ -22,14 +37,17 @@ from __future__ import annotations
 
 import argparse
 import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
 
-from symdecomp.cli.common import LIMITS, SHARP_OPTIONS, Once, flag, given, integer, positive_int, print_json
+from symdecomp.cli.common import LIMITS, SHARP_OPTIONS, Once, flag, given, integer, positive_int
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import check_memory
 
-__all__ = ["sharpness", "add_sharp_options", "check_sharp_options", "sharp_vertex", "check_rules_at", "faces_or_valence",
-           "sector_range", "refuse_sharp_options", "describe",
-           "run_sharp_masks", "exact_only"]
+__all__ = ["KINDS", "Element", "named_element", "route", "ring_depth", "steps_note", "SECTOR_VERTICES", "sector_vertex",
+           "sharpness", "add_sharp_options", "check_sharp_options", "sharp_vertex", "check_rules_at", "faces_or_valence",
+           "sector_range", "refuse_sharp_options", "describe", "exact_only"]
 
 #: Most faces around a sharp vertex on the command line (the matrices are dense and exact; a row of the limits table).
 MAX_FACES = LIMITS["--boundary, --corner, --crease, --dart: faces"][0]
@@ -41,6 +59,85 @@ MAX_FACES = LIMITS["--boundary, --corner, --crease, --dart: faces"][0]
 BYTES_AT_16_FACES = 28 << 20
 #: Most faces where a command reads the vertex by the mirror decomposition's blocks (boundary, corner, crease).
 MAX_STRUCTURAL_FACES = LIMITS["--boundary, --corner, --crease: faces by the blocks"][0]
+
+
+#: The kinds of extraordinary element a command can be asked about, each with the words an error line names it by.
+KINDS = {
+    "vertex": "an interior vertex",
+    "sector": "a boundary, crease, corner or dart vertex",
+    "zoo": "the extraordinary vertex or face of a scheme of the zoo",
+    "zoo sector": "a boundary, crease, corner or dart vertex of a scheme of the zoo",
+}
+
+#: A command's route: the function that answers one kind of element, given the arguments (and its ``--plot`` target).
+Route = Callable[..., int]
+
+
+@dataclass(frozen=True)
+class Element:
+    """The extraordinary element the user named: the scheme and the kind (:data:`KINDS`), read once from the arguments."""
+
+    #: The scheme (a :class:`~symdecomp.schemes.scheme.Scheme` or a :class:`~symdecomp.schemes.stencils.StencilScheme`).
+    scheme: Any
+    #: The kind, a key of :data:`KINDS`.
+    kind: str
+    #: The sharp options given (``("--crease",)``; empty for an interior element).
+    tags: tuple[str, ...]
+    #: The centre: ``"vertex"``, or ``"face"`` for a dual scheme of the zoo (Doo-Sabin: an ``n``-sided face).
+    centre: str = "vertex"
+    #: The valences, sides or face counts named (``N``, ``--n A:B``, ``--k A:B``; empty for ``--every-n``).
+    sizes: tuple[int, ...] = ()
+    #: The ring depth asked (``--rings K``; 1: the 1-ring, or a zoo scheme's smallest invariant neighbourhood).
+    depth: int = 1
+
+    @property
+    def words(self) -> str:
+        """The kind in words, as an error line names it."""
+        return KINDS[self.kind]
+
+
+def named_element(args: argparse.Namespace) -> Element:
+    """The :class:`Element` the arguments name (the one place that reads which kind of element a command is asked about)."""
+    from symdecomp.schemes.stencils import StencilScheme
+    from symdecomp.schemes.topology import topology_of
+
+    scheme = args.scheme
+    tags = tuple(option for dest, option in SHARP_OPTIONS.items() if given(args, dest))
+    named = next((getattr(args, dest) for dest in ("n", "valences", "sectors", "faces")
+                  if isinstance(getattr(args, dest, None), (int, list))), [])
+    sizes = tuple(named) if isinstance(named, list) else (named,)
+    depth = int(getattr(args, "rings", 1))
+    if isinstance(scheme, StencilScheme):
+        centre = "vertex" if tags else topology_of(scheme).centre
+        return Element(scheme, "zoo sector" if tags else "zoo", tags, centre, sizes, depth)
+    return Element(scheme, "sector" if tags else "vertex", tags, "vertex", sizes, depth)
+
+
+def route(command: str, routes: Mapping[str, Route], element: Element) -> Route:
+    """The function of ``routes`` (a command's table, kind -> function) that answers ``element``; a kind the table has no
+    route for is refused in one line naming the command and the kind."""
+    try:
+        return routes[element.kind]
+    except KeyError:
+        where = f" ({', '.join(element.tags)})" if element.tags else ""
+        answered = "; ".join(KINDS[kind] for kind in routes)
+        raise InvalidInputError(f"{command}: {element.words}{where} is not answered by {command} (--scheme "
+                                f"{element.scheme.name}); it answers {answered}") from None
+
+
+def ring_depth(args: argparse.Namespace) -> int | None:
+    """The ring depth of a scheme of the zoo's neighbourhood (``--rings K``; ``None``: the smallest invariant one); a sharp
+    option is refused in one line (the zoo's engine reads interior vertices and faces)."""
+    if any(given(args, dest) for dest in SHARP_OPTIONS):
+        raise InvalidInputError(f"--scheme {args.scheme.name}: boundary, crease, corner and dart vertices are not analysed "
+                                "for schemes of the zoo (interior vertices and faces only)")
+    rings = int(getattr(args, "rings", 1))
+    return None if rings == 1 else rings
+
+
+def steps_note(scheme: Any) -> str:
+    """``", over 2 steps (...)"`` for a scheme whose lattice returns after more than one step (sqrt(3)), else ``""``."""
+    return f", over {scheme.steps} steps (the lattice returns after {scheme.steps})" if scheme.steps > 1 else ""
 
 
 def sharpness(text: str):
@@ -131,8 +228,6 @@ def sharp_vertex(args, k: int, *, structural: bool = False):
     ``structural``: the command reads boundary, corner and infinitely sharp crease vertices by the mirror decomposition's
     blocks (O(k)), so they may have up to :data:`MAX_STRUCTURAL_FACES` faces; darts and semi-sharp creases stay dense.
     """
-    from symdecomp.schemes.sector import SharpVertex
-
     check_sharp_options(args)
     named = [option for dest, option in SHARP_OPTIONS.items() if given(args, dest)]
     wide = structural and named[0] != "--dart" and args.sharpness == math.inf
@@ -140,21 +235,32 @@ def sharp_vertex(args, k: int, *, structural: bool = False):
     if k > limit or getattr(args, "crease", None) and k + args.crease > limit:
         raise InvalidInputError(f"the vertex has more than {limit} faces " + ("(the blocks are O(k))" if wide else
                                 "(the matrices are dense and exact)"))
-    lat = args.scheme.lattice
-    if named[0] == "--boundary":
-        vertex = SharpVertex.boundary(k, lat)
-    elif named[0] == "--corner":
-        vertex = SharpVertex.corner(k, lat)
-    elif named[0] == "--crease":
-        vertex = SharpVertex.crease(k, args.crease, lat, sharpness=args.sharpness)
-    elif k < 3:
+    if named[0] == "--dart" and k < 3:
         raise InvalidInputError(f"--dart: a dart is an interior vertex of valence K >= 3, got K = {k}")
-    else:
-        vertex = SharpVertex.dart(k, lat, sharpness=args.sharpness)
+    faces = (k, args.crease) if named[0] == "--crease" else k
+    vertex = sector_vertex(named[0], faces, args.scheme.lattice, sharpness=args.sharpness)
     check_rules_at(args.scheme, vertex)
     if named[0] == "--dart":
         check_memory(int(BYTES_AT_16_FACES * (vertex.faces / 16) ** 4), f"{describe(vertex)}: the exact analysis")
     return vertex
+
+
+#: The sharp vertex each tag names (:class:`~symdecomp.schemes.sector.SharpVertex`'s constructors), from its faces
+#: (``K``; a crease's ``(K1, K2)``), lattice, corner angle (``None``: BLZ's ``pi/k``) and sharpness.
+SECTOR_VERTICES: dict[str, Callable[..., Any]] = {
+    "boundary": lambda cls, faces, lat, angle, sharpness: cls.boundary(faces, lat),
+    "corner": lambda cls, faces, lat, angle, sharpness: cls.corner(faces, lat, angle),
+    "crease": lambda cls, faces, lat, angle, sharpness: cls.crease(faces[0], faces[1], lat, sharpness),
+    "dart": lambda cls, faces, lat, angle, sharpness: cls.dart(faces, lat, sharpness),
+}
+
+
+def sector_vertex(tag: str, faces, lattice, *, angle=None, sharpness=math.inf):
+    """The :class:`~symdecomp.schemes.sector.SharpVertex` the tag names (``boundary`` or ``--boundary``, ...;
+    :data:`SECTOR_VERTICES`), the one place a command builds one."""
+    from symdecomp.schemes.sector import SharpVertex
+
+    return SECTOR_VERTICES[tag.lstrip("-")](SharpVertex, faces, lattice, angle, sharpness)
 
 
 def refuse_sharp_options(args, *names: str) -> None:
@@ -171,57 +277,6 @@ def describe(vertex) -> str:
     from symdecomp.verify.certify import describe_vertex
 
     return describe_vertex(vertex)
-
-
-def _block_names(scheme, vertex) -> dict:
-    """``{eigenvalue key: "block, block"}`` from the spectrum's names (mirror blocks, or parts of the matrix)."""
-    from symdecomp.analysis.spectrum import sharp_spectrum
-
-    return {e.key: ", ".join(e.blocks) for e in sharp_spectrum(scheme, vertex, digits=8).entries}
-
-
-def _print_mask(mask, names, digits: int, blocks: dict) -> None:
-    exact = mask.exact()
-    print(f"{mask.name} (eigenvalue {_value(mask, digits)}, {blocks.get(mask.eigenvalue.key, mask.eigenvalue.part)}):")
-    for i, (name, text) in enumerate(zip(names, mask.texts(digits))):
-        closed = "" if exact is None or exact[i].is_Integer or len(str(exact[i])) > 60 else f"  = {exact[i]}"
-        print(f"  {name}: {text}{closed}")
-
-
-def _value(mask, digits: int) -> str:
-    from symdecomp.analysis.spectrum import acb_text
-
-    return acb_text(mask.eigenvalue.ball, digits)
-
-
-def run_sharp_masks(args) -> int:
-    """``symdecomp masks K --boundary`` (and ``--corner``, ``--crease K2``, ``--dart``): print the masks, exit 1 when the
-    tangents are not the tangent plane's."""
-    import sys
-
-    from symdecomp.analysis.masks import sharp_masks
-    from symdecomp.analysis.spectrum import acb_text
-
-    refuse_sharp_options(args, "--rings")
-    vertex = sharp_vertex(args, args.n)
-    masks = exact_only(args, vertex, lambda: sharp_masks(args.scheme, vertex))
-    blocks = _block_names(args.scheme, vertex)
-    value, where = acb_text(masks.subdominant.ball, args.digits), blocks.get(masks.subdominant.key, masks.subdominant.part)
-    if args.json:
-        print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
-                    "position": masks.position.as_json(masks.names, args.digits),
-                    "tangents": [t.as_json(masks.names, args.digits) for t in masks.tangents],
-                    "subdominant": {"value": value, "blocks": where}, "tangent_plane": masks.tangent_plane,
-                    "reason": masks.reason})
-    else:
-        print(f"{args.scheme.name}, {describe(vertex)} ({vertex.lattice} mesh): subdominant eigenvalue {value} ({where}); "
-              f"{masks.reason}")
-        for mask in (masks.position, *masks.tangents):
-            _print_mask(mask, masks.names, args.digits, blocks)
-    if not masks.tangent_plane:
-        print(f"symdecomp masks: {describe(vertex)}: the tangent masks are not the tangent plane's ({masks.reason})",
-              file=sys.stderr)
-    return 0 if masks.tangent_plane else 1
 
 
 def exact_only(args, vertex, compute):

@@ -41,6 +41,10 @@ __all__ = ["register", "run"]
 #: cos(2 pi/n) where the exact signs close, else open).
 EVERY_N_CERTIFIED = 64
 
+#: The same for a dual scheme of the zoo (Doo-Sabin): its test at one valence costs more than O(n) (the engine's exact
+#: spectrum of the ring around the n-gon), and its spectral conditions are proved for every n from n = 16 on.
+ZOO_EVERY_N_CERTIFIED = 32
+
 #: How a verdict is printed (by its value, so that the table needs no import of the verify layer).
 LABELS = {"c1": "C1 certified", "not-c1": "not C1", "undecided": "undecided"}
 
@@ -77,7 +81,9 @@ def register(sub) -> None:
     flag(p, "--every-n", dest="every_n",
          help="C1 for every valence: the spectral conditions as statements in t = cos(2 pi j/n) decided for every n "
          f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}, the "
-         "characteristic map regular and injective for every n by exact signs of its nets in cos(2 pi/n); says "
+         "characteristic map regular and injective for every n by exact signs of its nets in cos(2 pi/n) (a dual scheme of "
+         f"the zoo with the biquadratic regular part, e.g. doo-sabin: the n-gon's weights' symbol for every n, the dual test "
+         f"at n = 3..{ZOO_EVERY_N_CERTIFIED}); says "
          "which part is proved, verified or open, and the first valence where C1 fails (--json: the steps)")
     flag(p, "--boundary", help="test boundary vertices with K faces (--k): the crease rules on the boundary, the scheme's "
          "[sharp] rules (default: the cubic B-spline's 3/4, 1/8 and 1/2; a file may give Biermann-Levin-Zorin's near-edge "
@@ -196,8 +202,13 @@ def _run_zoo(args, plot) -> int:
     from symdecomp.verify.result import C1Verdict
 
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
-        raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} (a scheme "
-                                "of the zoo); give --n A:B")
+        from symdecomp.verify.c1_zoo import spline_route
+
+        reason = spline_route(args.scheme)
+        if reason is not None:
+            raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
+                                    f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
+        return _run_every_n(args, _zoo_one, ZOO_EVERY_N_CERTIFIED)
     results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
     write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
@@ -359,16 +370,20 @@ def _run_sharp(args, items: list[tuple], plot) -> int:
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 
 
-def _run_every_n(args) -> int:
+def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED) -> int:
+    """``--every-n``: :func:`~symdecomp.verify.c1_every_n.c1_every_n`, or for a dual scheme of the zoo (``one`` is
+    :func:`_zoo_one`) :func:`~symdecomp.verify.c1_dual_every_n.c1_dual_every_n`; ``one(n)`` at ``3..last`` on the pool."""
     from symdecomp.parallel import ordered_map
+    from symdecomp.verify.c1_dual_every_n import c1_dual_every_n
     from symdecomp.verify.c1_every_n import c1_every_n
 
     scheme = args.scheme
-    valences = list(range(max(3, scheme.minimum_valence()), EVERY_N_CERTIFIED + 1))
-    rows = ordered_map(_one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,
+    valences = list(range(3 if one is _zoo_one else max(3, scheme.minimum_valence()), last + 1))
+    rows = ordered_map(one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
     by_n = {r.n: r for r in progress(rows, len(valences), "c1", enabled=not args.quiet)}
-    result = c1_every_n(scheme, EVERY_N_CERTIFIED, certify=lambda k: by_n[k] if k in by_n else _one(k, scheme, args.depth))
+    route = c1_dual_every_n if one is _zoo_one else c1_every_n
+    result = route(scheme, last, certify=lambda k: by_n[k] if k in by_n else one(k, scheme, args.depth))
     if args.json:
         print_json(args, {**result.as_json(), "rows": [by_n[k].json for k in sorted(by_n) if k <= result.certified[1] + 1]})
     else:

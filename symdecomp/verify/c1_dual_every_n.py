@@ -144,7 +144,7 @@ def _first_failure(expr: sp.Expr, start: int) -> int | None:
     return next((k for k in candidates if denominator.eval(k) == 0 or exact_sign(e.subs(N, k)) <= 0), None)
 
 
-def _step(name: str, text: str, facts: list[sp.Expr], start: int, formulas) -> EveryNStep:
+def _step(name: str, text: str, facts: list[sp.Expr], start: int, formulas: tuple[tuple[str, object], ...]) -> EveryNStep:
     """A step that holds when every fact is positive for ``n >= start``; failed with the first valence that breaks one."""
     shown = [_positive(f, start) for f in facts]
     if all(s is True for s in shown):
@@ -179,15 +179,19 @@ def dual_spectral_every_n(scheme: StencilScheme) -> tuple[EveryNStep, ...]:
                         f"sigma(1) = {lam} and sigma(-1) = {sp_.first_conjugate} are not one real value: the frequency-1 "
                         "eigenvalue is not real and double", "proved" if equal else "failed", (start, None), "real-distinct",
                         formulas)]
+    zero = sp.simplify(sp_.zero - 1)
+    steps.append(EveryNStep("the n-gon's eigenvalue at frequency 0 is sigma(0) = 1 for every n (the weights sum to 1)"
+                            if zero == 0 else f"sigma(0) = {sp_.zero} is not 1: the weights do not sum to 1",
+                            "proved" if zero == 0 else "failed", (start, None), "frequency-zero", ((r"\sigma(0) - 1", zero),)))
+    if not equal:
+        return tuple(steps) + tuple(EveryNStep(f"{what}: not asked, lambda_1 is not real", "open", (start, None), name)
+                                    for name, what in (("dominant", "lambda_1 above the other frequencies"),
+                                                       ("bounds", "lambda_1 < 1 and above the outer blocks")))
     squares = [sp.expand(lam**2 - sp.re(v) ** 2 - sp.im(v) ** 2) for _, v in sp_.others]
     listed = ", ".join(f"{k}: {v}" for k, v in sp_.others)
     steps.append(_step("dominant", f"lambda_1 = {lam} is positive and larger in modulus than the n-gon's eigenvalue at every "
                        f"other frequency ({listed})", [lam, *squares], start,
                        tuple((rf"\lambda_1^2 - |\sigma|^2\ ({k})", s) for (k, _), s in zip(sp_.others, squares))))
-    zero = sp.simplify(sp_.zero - 1)
-    steps.append(EveryNStep("the n-gon's eigenvalue at frequency 0 is sigma(0) = 1 for every n (the weights sum to 1)"
-                            if zero == 0 else f"sigma(0) = {sp_.zero} is not 1: the weights do not sum to 1",
-                            "proved" if zero == 0 else "failed", (start, None), "frequency-zero", ((r"\sigma(0) - 1", zero),)))
     radius = _outer_radius(sp_)
     first = max(start, sp_.outer_start)
     if radius is None:
@@ -205,7 +209,7 @@ def _map_open(lo: int, last: int) -> UniformMapResult:
 
 
 def c1_dual_every_n(scheme: StencilScheme, last: int = 64, *, progress: Callable[[int], None] | None = None,
-                    certify: Callable | None = None, max_depth: int = 6) -> EveryNResult:
+                    certify: Callable[[int], object] | None = None, max_depth: int = 6) -> EveryNResult:
     """C1 for every valence (module docstring): the spectral conditions for every ``n``, the dual test at ``3..last``
     (``certify(n)``: a :class:`~symdecomp.verify.c1_zoo.ZooC1Result`; by default :func:`~symdecomp.verify.c1_zoo.c1_zoo`)."""
     from symdecomp.verify.c1_zoo import c1_zoo

@@ -40,6 +40,7 @@ from symdecomp.analysis.characteristic import outer_charpoly
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached
@@ -239,7 +240,7 @@ def _fails_from(scheme: Scheme, first: int, certify) -> EveryNStep | None:
     return None
 
 
-def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None] | None = None, certify=None,
+def c1_every_n(scheme: Scheme | StencilScheme, last: int = 64, *, progress: Callable[[int], None] | None = None, certify=None,
                spectral_steps: Callable[[], tuple[EveryNStep, ...]] | None = None, map_every_n=None, fails_from=None,
                first: int | None = None) -> EveryNResult:
     """C1 for every valence as far as it is shown (module docstring): the spectral conditions for every ``n``, Reif's

@@ -1,0 +1,131 @@
+"""C1 for every valence of a dual scheme with the biquadratic regular part (issue 30: Doo-Sabin C1 at every n).
+
+Each of Reif's spectral conditions is decided from the n-gon's weights for every n; every condition flips when the
+weights change (variant files below), with the first valence where it fails computed; the n-gon's eigenvalues are
+compared with the spectrum of the explicit matrix (the zoo's engine, :mod:`symdecomp.analysis.zoo_matrix`) in FLINT.
+"""
+
+from __future__ import annotations
+
+import flint
+import pytest
+import sympy as sp
+
+from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.errors import NotAffineError, NotApplicableError
+from symdecomp.schemes.stencil_files import load_zoo, stencil_scheme_from_text
+from symdecomp.schemes.stencils import N
+from symdecomp.schemes.zoo_literature import FAMILIES
+from symdecomp.verify.c1_dual_every_n import MAP_OPEN, c1_dual_every_n, dual_spectral_every_n, ngon_spectrum
+
+DOO_SABIN = "KroneckerDelta(j, 0)/4 + (3 + 2*cos(2*pi*j/m))/(4*m)"
+
+
+def variant(extra: str, name: str = "variant") -> str:
+    """A Doo-Sabin file whose n-gon weights get ``extra`` (a multiple of ``m - 4``: the quads keep the B-spline's)."""
+    return (f'name = "{name}"\nmesh = "quad"\ntopology = "dual"\n\n[[corner]]\n'
+            f'terms = [{{walk = "", weight = "{DOO_SABIN} + {extra}", over = "face"}}]\n')
+
+
+def scheme(extra: str):
+    return stencil_scheme_from_text(variant(extra))
+
+
+def spectrum(scheme, n: int) -> dict:
+    """``{eigenvalue: multiplicity}`` of the engine's explicit matrix at ``n`` (3 or 6: rational entries), exactly in FLINT."""
+    rows = zoo_matrix(scheme, n).matrix.tolist()
+    exact = flint.fmpq_mat([[flint.fmpq(int(sp.Rational(e).p), int(sp.Rational(e).q)) for e in row] for row in rows])
+    factors = exact.charpoly().factor()[1]
+    assert all(f.degree() == 1 for f, _ in factors)  # every eigenvalue rational here
+    return {sp.Rational(-f[0] / f[1]): k for f, k in factors}
+
+
+def steps(s) -> dict:
+    return {step.name: step for step in dual_spectral_every_n(s)}
+
+
+def test_doo_sabin_spectral_conditions_are_proved_for_every_n():
+    """lambda_1 = 1/2 (double), 1/4 at the other frequencies, sigma(0) = 1, the outer blocks 1/4, 1/8, 1/16."""
+    sp_ = ngon_spectrum(load_zoo("doo-sabin"))
+    assert (sp_.first, sp_.first_conjugate, sp_.zero) == (sp.Rational(1, 2), sp.Rational(1, 2), 1)
+    assert sp_.others == (("every other k", sp.Rational(1, 4)),) and sp_.start == 3
+    x = sp.Symbol("x")
+    assert sp.Poly(sp_.outer, x).all_roots() == [sp.Rational(1, 16), sp.Rational(1, 8), sp.Rational(1, 4)]
+    found = steps(load_zoo("doo-sabin"))
+    assert [(k, s.status, s.valences) for k, s in found.items()] == [
+        ("real-distinct", "proved", (3, None)), ("frequency-zero", "proved", (3, None)), ("dominant", "proved", (3, None)),
+        ("bounds", "proved", (16, None))]
+    # the literature's values (zoo_literature: the Fourier transform of Doo and Sabin's weights) are the derived ones
+    facts = FAMILIES["doo-sabin"]
+    assert facts.subdominant == sp_.first and facts.multiplicity == 2 and facts.rest_at_most == sp_.others[0][1]
+
+
+@pytest.mark.parametrize("n", [3, 6])
+def test_the_symbol_is_the_spectrum_of_the_explicit_matrix(n):
+    """The engine's explicit matrix at n, in FLINT: its eigenvalues are 1, lambda_1 = sigma(1) twice, and the n-gon's
+    other values and the outer roots, nothing else."""
+    ds = load_zoo("doo-sabin")
+    sp_, x = ngon_spectrum(ds), sp.Symbol("x")
+    values = spectrum(ds, n)
+    assert values[sp_.zero] == 1 and values[sp_.first] == 2
+    assert set(values) == {sp_.zero, sp_.first, *(v for _, v in sp_.others), *sp.Poly(sp_.outer, x).all_roots()}
+
+
+def test_dominance_flips_at_a_computed_valence_and_the_matrix_agrees():
+    """A frequency-2 weight: sigma(+-2) = 1/4 + (n - 4)/8 reaches lambda_1 = 1/2 at n = 6, computed; the matrix agrees."""
+    s = scheme("(m - 4)*cos(4*pi*j/m)/(4*m)")
+    sp_ = ngon_spectrum(s)
+    others = dict(sp_.others)
+    assert sorted(others) == ["every other k", "k = -2", "k = 2"] and sp_.start == 5
+    assert all(sp.simplify(others[k] - (sp.Rational(1, 4) + (N - 4) / 8)) == 0 for k in ("k = -2", "k = 2"))
+    dominant = steps(s)["dominant"]
+    assert dominant.status == "failed" and dominant.valences == (6, None) and dominant.text.endswith("it fails at n = 6")
+    # at n = 6 the explicit matrix has 1/2 four times (frequencies +-1 and +-2): lambda_1 is not strictly dominant
+    assert spectrum(s, 6)[sp.Rational(1, 2)] == 4
+    # the per-valence test agrees: it does not certify n = 6
+    assert c1_dual_every_n(s, last=6).failure == 6
+
+
+@pytest.mark.parametrize("extra, name, status, text", [
+    ("(m - 4)*sin(2*pi*j/m)/(8*m)", "real-distinct", "failed", "are not one real value"),
+    ("(m - 4)*cos(2*pi*j/m)/(32*m)", "bounds", "failed", "it fails at n = 36"),
+])
+def test_each_condition_flips_when_the_weights_change(extra, name, status, text):
+    found = steps(scheme(extra))
+    assert found[name].status == status and text in found[name].text
+    # the conditions the change leaves alone stay proved; with lambda_1 not real the comparisons are not asked
+    later = ("dominant", "bounds") if name == "real-distinct" else ()
+    assert all(s.status == "proved" for k, s in found.items() if k not in (name, *later))
+    assert all(found[k].status == "open" and found[k].text.endswith("lambda_1 is not real") for k in later)
+
+
+def test_weights_that_do_not_sum_to_one_are_refused_at_the_door():
+    """sigma(0) = 1 (frequency-zero) is the file's affinity: a variant that breaks it is one line when it is read."""
+    with pytest.raises(NotAffineError) as info:
+        scheme("(m - 4)/(16*m)")
+    assert str(info.value) == "<scheme>: [[corner]] 1: not affine: the weights sum to (m + 12)/16, not 1"
+
+
+def test_a_weight_with_no_symbol_stops_at_per_valence():
+    """A weight that is no trigonometric polynomial in j has no closed-form symbol: the verdict rests on n = 3..last."""
+    s = scheme("(m - 4)*(j*(m - j) - (m**2 - 1)/6)/m**4")  # sums to 0 over j: still affine
+    with pytest.raises(NotApplicableError, match="not c"):
+        ngon_spectrum(s)
+    r = c1_dual_every_n(s, last=4)
+    assert r.status == "verified" and r.steps[0].name == "spectral" and r.steps[0].status == "open"
+    assert "spectral conditions are not proved for every n" in r.summary
+
+
+def test_doo_sabin_every_n_is_verified_with_the_map_open():
+    """Spectral conditions for every n (bounds from n = 16), the dual test at 3..16, the map open beyond: verified."""
+    r = c1_dual_every_n(load_zoo("doo-sabin"), last=16)
+    assert r.status == "verified" and r.certified == (3, 16)
+    assert [s.name for s in r.steps] == ["real-distinct", "frequency-zero", "dominant", "bounds", "reif-per-valence", "map-open"]
+    assert r.summary == ("C1 certified for n = 3..16; the spectral conditions hold for every n >= 3 (proved); the "
+                         "characteristic map is open beyond n = 16")
+    assert MAP_OPEN in r.steps[-1].text
+
+
+def test_a_scheme_whose_regular_part_is_not_biquadratic_is_refused():
+    with pytest.raises(NotApplicableError, match="not the biquadratic B-spline's"):
+        ngon_spectrum(load_zoo("midedge"))

@@ -153,10 +153,13 @@ def _step(name: str, text: str, facts: list[sp.Expr], start: int, formulas: tupl
         which = next(f for f, s in zip(facts, shown) if s is None)
         return EveryNStep(f"{text}: not decided for every n ({which} is neither a rational function of n nor a polynomial "
                           "in t = cos(2 pi/n)); the valences are tested one by one", "open", (start, None), name, formulas)
-    failures = [k for f, s in zip(facts, shown) if s is False for k in [_first_failure(f, start)] if k is not None]
-    first = min(failures, default=None)
-    where = f"it fails at n = {first}" if first is not None else f"not shown for every n >= {start}"
-    return EveryNStep(f"{text}: {where}", "failed", (first or start, None), name, formulas)
+    failures = sorted((k, f) for f, s in zip(facts, shown) if s is False for k in [_first_failure(f, start)] if k is not None)
+    if not failures:
+        return EveryNStep(f"{text}: not shown for every n >= {start}", "failed", (start, None), name, formulas)
+    first, fact = failures[0]
+    beyond = _positive(-fact, first + 1) is True  # negative at every valence after the first failure
+    where = f"it fails at n = {first}" + (" and at every n after it" if beyond else "")
+    return EveryNStep(f"{text}: {where}", "failed", (first, None if beyond else first), name, formulas)
 
 
 def _outer_radius(spectrum: NgonSpectrum) -> sp.Expr | None:

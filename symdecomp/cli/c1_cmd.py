@@ -45,6 +45,16 @@ EVERY_N_CERTIFIED = 64
 #: spectrum of the ring around the n-gon), and its spectral conditions are proved for every n from n = 16 on.
 ZOO_EVERY_N_CERTIFIED = 32
 
+#: --every-n's help.
+EVERY_N_HELP = (
+    "C1 for every valence: the spectral conditions as statements in t = cos(2 pi j/n) decided for every n "
+    f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}, the "
+    "characteristic map regular and injective for every n by exact signs of its nets in cos(2 pi/n) (a dual scheme of "
+    "the zoo with the biquadratic regular part, e.g. doo-sabin: the n-gon's weights' symbol for every n, the dual test "
+    f"at n = 3..{ZOO_EVERY_N_CERTIFIED}); says which part is proved, verified or open, and the first valence where C1 "
+    "fails (--json: the steps)"
+)
+
 #: How a verdict is printed (by its value, so that the table needs no import of the verify layer).
 LABELS = {"c1": "C1 certified", "not-c1": "not C1", "undecided": "undecided"}
 
@@ -78,13 +88,7 @@ def register(sub) -> None:
     p.add_argument("--n", dest="valences", type=_valences, action=_ValencesOnce, metavar="A:B",
                    help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]}); an open "
                    "range A: is --every-n; or a sharp vertex with --boundary, --corner or --crease")
-    flag(p, "--every-n", dest="every_n",
-         help="C1 for every valence: the spectral conditions as statements in t = cos(2 pi j/n) decided for every n "
-         f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}, the "
-         "characteristic map regular and injective for every n by exact signs of its nets in cos(2 pi/n) (a dual scheme of "
-         f"the zoo with the biquadratic regular part, e.g. doo-sabin: the n-gon's weights' symbol for every n, the dual test "
-         f"at n = 3..{ZOO_EVERY_N_CERTIFIED}); says "
-         "which part is proved, verified or open, and the first valence where C1 fails (--json: the steps)")
+    flag(p, "--every-n", dest="every_n", help=EVERY_N_HELP)
     flag(p, "--boundary", help="test boundary vertices with K faces (--k): the crease rules on the boundary, the scheme's "
          "[sharp] rules (default: the cubic B-spline's 3/4, 1/8 and 1/2; a file may give Biermann-Levin-Zorin's near-edge "
          "rule in theta_k = pi/k)")

@@ -5,9 +5,11 @@ from __future__ import annotations
 
 import json
 
+import jsonschema
 import pytest
 
 from symdecomp.cli import c1_cmd, main
+from symdecomp.cli.json_envelope import json_schema
 
 DOO_SABIN = "KroneckerDelta(j, 0)/4 + (3 + 2*cos(2*pi*j/m))/(4*m)"
 
@@ -39,6 +41,7 @@ def test_a_variant_that_breaks_dominance_is_refuted_at_the_computed_valence(tmp_
     path = write(tmp_path, f"{DOO_SABIN} + (m - 4)*cos(4*pi*j/m)/(4*m)")
     assert main(["c1", "--every-n", "--scheme", path, "--json", "--quiet", "--jobs", "1"]) == 1
     data = json.loads(capsys.readouterr().out)
+    jsonschema.validate(data, json_schema())  # the one envelope, its step names among the schema's
     assert data["status"] == "refuted" and data["failure"] == 6 and data["certified"] == [3, 5]
     steps = {s["name"]: s for s in data["steps"]}
     assert steps["dominant"]["status"] == "failed" and steps["dominant"]["valences"] == [6, None]

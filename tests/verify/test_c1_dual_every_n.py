@@ -130,3 +130,16 @@ def test_doo_sabin_every_n_is_verified_with_the_map_open():
 def test_a_scheme_whose_regular_part_is_not_biquadratic_is_refused():
     with pytest.raises(NotApplicableError, match="not the biquadratic B-spline's"):
         ngon_spectrum(load_zoo("midedge"))
+
+
+def test_the_dual_test_certifies_doo_sabin_where_the_exact_form_of_one_half_is_long():
+    """At n = 15 the engine's exact form of lambda_1 = 1/2 is a long sum of roots of unity whose imaginary part sympy
+    does not reduce to 0; the matrix is real and lambda_1 strictly dominant, so its conjugate is itself: real (it was
+    refuted as 'not a real double eigenvalue' before, against the symbol's proof for every n)."""
+    from symdecomp.verify.c1_zoo import c1_zoo
+    from symdecomp.verify.zoo_characteristic import engine_neighbourhood
+
+    r = c1_zoo(load_zoo("doo-sabin"), 15, neighbourhood=engine_neighbourhood)
+    assert r.verdict == "c1" and r.frequency == 1 and r.winding_number == 1
+    assert r.spectral is not None and r.spectral.subdominant is not None
+    assert r.spectral.subdominant.value.contains(flint.acb(flint.fmpq(1, 2)))

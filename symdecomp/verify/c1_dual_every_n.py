@@ -41,6 +41,7 @@ from symdecomp.algebra.valence_signs import positive_from, sign_on_interval
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import N, StencilScheme
+from symdecomp.validate import check_int, check_type
 from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, c1_every_n
 from symdecomp.verify.c1_uniform import UniformMapResult, t_lower_bound
 
@@ -77,6 +78,7 @@ def ngon_spectrum(scheme: StencilScheme) -> NgonSpectrum:
     from symdecomp.analysis.zoo_structure import READ_AT, zoo_structure
     from symdecomp.verify.c1_zoo import corner_weights, spline_route
 
+    check_type(scheme, StencilScheme, "scheme", hint="a scheme of the zoo, e.g. load_zoo('doo-sabin')")
     reason = spline_route(scheme)
     if reason is not None:
         raise NotApplicableError(f"scheme {scheme.name!r}: {reason.split('; ')[0]}")
@@ -217,6 +219,9 @@ def c1_dual_every_n(scheme: StencilScheme, last: int = 64, *, progress: Callable
     (``certify(n)``: a :class:`~symdecomp.verify.c1_zoo.ZooC1Result`; by default :func:`~symdecomp.verify.c1_zoo.c1_zoo`)."""
     from symdecomp.verify.c1_zoo import c1_zoo
     from symdecomp.verify.zoo_characteristic import engine_neighbourhood
+
+    check_type(scheme, StencilScheme, "scheme", hint="a scheme of the zoo, e.g. load_zoo('doo-sabin')")
+    last = check_int(last, "last", minimum=3)
 
     def spectral() -> tuple[EveryNStep, ...]:
         return dual_spectral_every_n(scheme)

@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.errors import NotAffineError, NotApplicableError
+from symdecomp.errors import InvalidInputError, InvalidTypeError, NotAffineError, NotApplicableError
 from symdecomp.schemes.stencil_files import load_zoo, stencil_scheme_from_text
 from symdecomp.schemes.stencils import N
 from symdecomp.schemes.zoo_literature import FAMILIES
@@ -125,6 +125,13 @@ def test_doo_sabin_every_n_is_verified_with_the_map_open():
     assert r.summary == ("C1 certified for n = 3..16; the spectral conditions hold for every n >= 3 (proved); the "
                          "characteristic map is open beyond n = 16")
     assert MAP_OPEN in r.steps[-1].text
+
+
+def test_bad_arguments_are_one_line_errors():
+    with pytest.raises(InvalidTypeError, match="scheme"):
+        c1_dual_every_n("doo-sabin")
+    with pytest.raises(InvalidInputError, match="last"):
+        c1_dual_every_n(load_zoo("doo-sabin"), last=2)
 
 
 def test_a_scheme_whose_regular_part_is_not_biquadratic_is_refused():

@@ -24,9 +24,10 @@ is computed (a threshold), and where a value is neither (``n`` and ``t`` mixed, 
 polynomial in ``j``) the step says so and the verdict stops at the valences tested one by one.
 
 The characteristic map is certified per valence by the dual test (:func:`~symdecomp.verify.c1_zoo.c1_zoo`, Reif's test on
-the ring of biquadratic patches); its nets as exact functions of ``t`` (the uniform argument of
-:mod:`symdecomp.verify.c1_uniform` for bicubic nets) are not derived for the biquadratic ring, so beyond the valences
-tested the map is open and the verdict is at most ``verified`` (:func:`~symdecomp.verify.c1_every_n.c1_every_n`).
+the ring of biquadratic patches) at ``n = 3..last``, and for every ``n`` from the valence the blocks are read at by
+exact signs in ``t = cos(2 pi/n)`` (:mod:`symdecomp.verify.c1_dual_uniform`); where that argument does not close (or
+``last`` stops short of it) the map is open beyond ``last`` and the verdict is at most ``verified``
+(:func:`~symdecomp.verify.c1_every_n.c1_every_n`).
 """
 
 from __future__ import annotations
@@ -45,11 +46,7 @@ from symdecomp.validate import check_int, check_type
 from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, c1_every_n
 from symdecomp.verify.c1_uniform import UniformMapResult, t_lower_bound
 
-__all__ = ["NgonSpectrum", "ngon_spectrum", "dual_spectral_every_n", "c1_dual_every_n", "MAP_OPEN"]
-
-#: Why the characteristic map is open beyond the valences tested one by one.
-MAP_OPEN = ("the biquadratic ring's control nets are not derived as exact functions of t = cos(2 pi/n) (the uniform "
-            "argument is written for bicubic and box-spline nets)")
+__all__ = ["NgonSpectrum", "ngon_spectrum", "dual_spectral_every_n", "c1_dual_every_n"]
 
 
 @dataclass(frozen=True)
@@ -209,8 +206,13 @@ def dual_spectral_every_n(scheme: StencilScheme) -> tuple[EveryNStep, ...]:
     return tuple(steps)
 
 
-def _map_open(lo: int, last: int) -> UniformMapResult:
-    return UniformMapResult("open", last + 1, t_lower_bound(last + 1), (MAP_OPEN,), 0)
+def _uniform_map(scheme: StencilScheme) -> UniformMapResult:
+    """The map for every ``n`` from the valence the blocks are read at (:mod:`symdecomp.verify.c1_dual_uniform`); asked
+    only once the spectral conditions are proved, so the valences below it are certified one by one."""
+    from symdecomp.analysis.zoo_structure import READ_AT
+    from symdecomp.verify.c1_dual_uniform import dual_uniform_map
+
+    return dual_uniform_map(scheme, ngon_spectrum(scheme).first, READ_AT)
 
 
 def c1_dual_every_n(scheme: StencilScheme, last: int = 64, *, progress: Callable[[int], None] | None = None,
@@ -227,5 +229,6 @@ def c1_dual_every_n(scheme: StencilScheme, last: int = 64, *, progress: Callable
         return dual_spectral_every_n(scheme)
 
     certify = certify or (lambda k: c1_zoo(scheme, k, neighbourhood=engine_neighbourhood, max_depth=max_depth))
-    return c1_every_n(scheme, last, progress=progress, certify=certify, spectral_steps=spectral, map_every_n=_map_open,
+    return c1_every_n(scheme, last, progress=progress, certify=certify, spectral_steps=spectral,
+                      map_every_n=lambda lo, last: _uniform_map(scheme),
                       first=3)

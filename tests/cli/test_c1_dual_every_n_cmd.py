@@ -22,7 +22,8 @@ def write(tmp_path, weight: str) -> str:
 
 
 def test_doo_sabin_every_n_in_text(monkeypatch, capsys):
-    """The spectral conditions proved for every n (the bounds from n = 16), the dual test at n = 3..15, the map open."""
+    """The spectral conditions proved for every n (the bounds from n = 16), the dual test at n = 3..15, the map for every
+    n >= 16: C1 proved for every n."""
     monkeypatch.setattr(c1_cmd, "ZOO_EVERY_N_CERTIFIED", 15)
     assert main(["c1", "--every-n", "--scheme", "doo-sabin", "--quiet", "--jobs", "1"]) == 0
     out = capsys.readouterr().out.splitlines()
@@ -30,9 +31,12 @@ def test_doo_sabin_every_n_in_text(monkeypatch, capsys):
     assert out[1].startswith("  [proved] n >= 3: the n-gon's eigenvalue at frequency 1 is its weights' symbol sigma(1) = 1/2")
     assert out[4].startswith("  [proved] n >= 16: lambda_1 < 1 and lambda_1 > 1/4")
     assert out[5].startswith("  [verified] n = 3..15: Reif's test at each n = 3..15")
-    assert out[6].startswith("  [open] n >= 16: n > 15: regularity and injectivity of the characteristic map are open")
-    assert out[-1] == ("verified: C1 certified for n = 3..15; the spectral conditions hold for every n >= 3 (proved); the "
-                       "characteristic map is open beyond n = 15")
+    assert all(line.startswith("  [proved] n >= 16: ") for line in out[6:9])
+    assert "the characteristic map is regular for every n >= 16" in out[7]
+    assert out[8].endswith("the boundary winds once, the map is injective")
+    assert out[-1] == ("proved: C1 for every n >= 3: the spectral conditions proved for every n, the characteristic map "
+                       "regular and injective for every n >= 16 (exact signs in t = cos(2 pi/n)), Reif's test certified at "
+                       "n = 3..15")
 
 
 def test_a_variant_that_breaks_dominance_is_refuted_at_the_computed_valence(tmp_path, monkeypatch, capsys):

@@ -16,7 +16,8 @@ from symdecomp.errors import InvalidInputError, InvalidTypeError, NotAffineError
 from symdecomp.schemes.stencil_files import load_zoo, stencil_scheme_from_text
 from symdecomp.schemes.stencils import N
 from symdecomp.schemes.zoo_literature import FAMILIES
-from symdecomp.verify.c1_dual_every_n import MAP_OPEN, c1_dual_every_n, dual_spectral_every_n, ngon_spectrum
+from symdecomp.verify.c1_dual_every_n import c1_dual_every_n, dual_spectral_every_n, ngon_spectrum
+from symdecomp.verify.c1_dual_uniform import dual_uniform_map
 
 DOO_SABIN = "KroneckerDelta(j, 0)/4 + (3 + 2*cos(2*pi*j/m))/(4*m)"
 
@@ -117,14 +118,26 @@ def test_a_weight_with_no_symbol_stops_at_per_valence():
     assert "spectral conditions are not proved for every n" in r.summary
 
 
-def test_doo_sabin_every_n_is_verified_with_the_map_open():
-    """Spectral conditions for every n (bounds from n = 16), the dual test at 3..16, the map open beyond: verified."""
-    r = c1_dual_every_n(load_zoo("doo-sabin"), last=16)
-    assert r.status == "verified" and r.certified == (3, 16)
-    assert [s.name for s in r.steps] == ["real-distinct", "frequency-zero", "dominant", "bounds", "reif-per-valence", "map-open"]
-    assert r.summary == ("C1 certified for n = 3..16; the spectral conditions hold for every n >= 3 (proved); the "
-                         "characteristic map is open beyond n = 16")
-    assert MAP_OPEN in r.steps[-1].text
+def test_doo_sabin_is_c1_at_every_n():
+    """Peters and Reif's verdict, computed: the spectral conditions for every n (the bounds from n = 16), the dual test
+    at n = 3..15, the characteristic map regular and injective for every n >= 16 by exact signs in t: proved."""
+    r = c1_dual_every_n(load_zoo("doo-sabin"), last=15)
+    assert r.status == "proved" and r.certified == (3, 15)
+    assert [(s.name, s.status, s.valences) for s in r.steps][-4:] == [
+        ("reif-per-valence", "verified", (3, 15)), ("map-scale", "proved", (16, None)),
+        ("map-regular", "proved", (16, None)), ("map-injective", "proved", (16, None))]
+    assert r.summary == ("C1 for every n >= 3: the spectral conditions proved for every n, the characteristic map regular "
+                         "and injective for every n >= 16 (exact signs in t = cos(2 pi/n)), Reif's test certified at n = 3..15")
+    assert r.uniform is not None and r.uniform.coefficients == 108 + 8
+
+
+def test_the_map_stays_open_where_the_valences_stop_short_or_lambda_depends_on_n():
+    r = c1_dual_every_n(load_zoo("doo-sabin"), last=5)
+    assert r.status == "verified" and r.steps[-1].name == "map-open"  # the bounds hold from n = 16: not asked
+    s = scheme("(m - 4)*cos(2*pi*j/m)/(4*m**2)")  # lambda_1 = 1/2 + (n - 4)/(8 n): every spectral condition holds
+    assert all(step.status == "proved" for step in dual_spectral_every_n(s))
+    result = dual_uniform_map(s, ngon_spectrum(s).first, 16)
+    assert result.status == "open" and result.facts[0].startswith("lambda_1 = ") and "is not a rational constant" in result.facts[0]
 
 
 def test_bad_arguments_are_one_line_errors():

@@ -163,3 +163,18 @@ def test_the_dual_test_certifies_doo_sabin_where_the_exact_form_of_one_half_is_l
     assert r.verdict == "c1" and r.frequency == 1 and r.winding_number == 1
     assert r.spectral is not None and r.spectral.subdominant is not None
     assert r.spectral.subdominant.value.contains(flint.acb(flint.fmpq(1, 2)))
+
+
+def test_the_map_argument_fails_where_lambda_is_below_the_outer_eigenvalues():
+    """The same nets solved with lambda = 1/5 < 1/4 (an outer eigenvalue): the Jacobian's first Bezier coefficient is
+    not positive (its value at the limit t = 1 is negative), so the map is open; with 1/2 every sign holds."""
+    from symdecomp.verify.bezier import jacobian_net
+    from symdecomp.verify.c1_dual import biquadratic_to_bicubic
+    from symdecomp.verify.c1_dual_uniform import dual_ring
+
+    ds = load_zoo("doo-sabin")
+    low = dual_uniform_map(ds, sp.Rational(1, 5), 16)
+    assert low.status == "open" and low.facts[0].startswith("Bezier coefficient 0 of the Jacobian is not shown positive")
+    X, Y, _ = dual_ring(ds, sp.Rational(1, 5), 16).patches[0]
+    assert jacobian_net(biquadratic_to_bicubic(X), biquadratic_to_bicubic(Y))[0][0](1) < 0
+    assert dual_uniform_map(ds, sp.Rational(1, 2), 16).status == "proved"

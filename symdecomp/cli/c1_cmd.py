@@ -42,7 +42,8 @@ __all__ = ["register", "run"]
 EVERY_N_CERTIFIED = 64
 
 #: The same for a dual scheme of the zoo (Doo-Sabin): its test at one valence costs more than O(n) (the engine's exact
-#: spectrum of the ring around the n-gon), and its spectral conditions are proved for every n from n = 16 on.
+#: spectrum of the ring around the n-gon); the proof for every n starts at n = 16 (the blocks' reading), the valences
+#: above it are a cross-check.
 ZOO_EVERY_N_CERTIFIED = 32
 
 #: --every-n's help.

@@ -88,7 +88,7 @@ def dual_ring(scheme: StencilScheme, lam: sp.Expr, first: int) -> DualRing:
     from symdecomp.analysis.zoo_blocks import signed_offset
     from symdecomp.verify.c1_dual import DualNeighbourhood, ring_patches
 
-    if not sp.sympify(lam).is_Rational:
+    if not sp.sympify(lam, strict=True).is_Rational:
         raise NotApplicableError(f"lambda_1 = {lam} is not a rational constant: the eigenvector is not solved for every n here")
     rows, zm, K = _outer_rows(scheme, first)
     for n in (first + 1, first + 2):

@@ -382,6 +382,8 @@ def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED) -> int:
     from symdecomp.verify.c1_dual_every_n import c1_dual_every_n
     from symdecomp.verify.c1_every_n import c1_every_n
 
+    if given(args, "plot"):
+        raise InvalidInputError("--plot: --every-n draws no figure (its verdict is a proof, not a map); give --n A:B to draw")
     scheme = args.scheme
     valences = list(range(3 if one is _zoo_one else max(3, scheme.minimum_valence()), last + 1))
     rows = ordered_map(one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,

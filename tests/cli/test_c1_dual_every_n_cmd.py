@@ -70,3 +70,13 @@ def test_a_zoo_scheme_outside_the_route_is_refused_with_the_reason(capsys):
     (err,) = capsys.readouterr().err.strip().splitlines()
     assert err.startswith("symdecomp: error: --every-n: the spectral conditions for every n are not derived for 'midedge' "
                           "(a scheme of the zoo: its regular corner weights")
+
+
+@pytest.mark.parametrize("scheme", ["doo-sabin", "catmull-clark"])
+def test_every_n_with_plot_is_one_line(scheme, tmp_path, capsys):
+    """--every-n draws nothing: --plot is refused, not silently ignored, and no file is written."""
+    target = tmp_path / "map.png"
+    assert main(["c1", "--every-n", "--scheme", scheme, "--plot", str(target)]) == 2
+    (err,) = capsys.readouterr().err.strip().splitlines()
+    assert err == "symdecomp: error: --plot: --every-n draws no figure (its verdict is a proof, not a map); give --n A:B to draw"
+    assert not target.exists()

@@ -54,6 +54,8 @@ class DualRing:
     scale: sp.Rational
     #: Per patch of sector 0: the ``3 x 3`` control nets ``X`` and ``Y`` (``fmpq_poly`` in ``t``) and its hole sides.
     patches: tuple[tuple[Net, Net, tuple[str, ...]], ...]
+    #: The eigenvector by class (the engine's classes), Laurent polynomials in ``omega``: ``x_c omega^s`` at ``(s, c)``.
+    eigenvector: tuple[sp.Expr, ...] = ()
 
 
 def _outer_rows(scheme: StencilScheme, n: int) -> tuple[dict[int, sp.Matrix], ZooMatrix, int]:
@@ -113,7 +115,7 @@ def dual_ring(scheme: StencilScheme, lam: sp.Expr, first: int) -> DualRing:
         nets = [[_in_t(x[nb.labels[v][1]] * OMEGA ** signed_offset(nb.labels[v][0], first)) for v in row] for row in p.grid]
         patches.append((tuple(tuple(a for a, _ in row) for row in nets), tuple(tuple(b for _, b in row) for row in nets),
                         p.hole_sides))
-    return DualRing(first, scale, tuple(patches))
+    return DualRing(first, scale, tuple(patches), tuple(x))
 
 
 def dual_uniform_map(scheme: StencilScheme, lam: sp.Expr, first: int) -> UniformMapResult:

@@ -178,3 +178,24 @@ def test_the_map_argument_fails_where_lambda_is_below_the_outer_eigenvalues():
     X, Y, _ = dual_ring(ds, sp.Rational(1, 5), 16).patches[0]
     assert jacobian_net(biquadratic_to_bicubic(X), biquadratic_to_bicubic(Y))[0][0](1) < 0
     assert dual_uniform_map(ds, sp.Rational(1, 2), 16).status == "proved"
+
+
+def test_the_eigenvector_for_every_n_is_the_engines_at_a_valence():
+    """At n = 20 the engine's characteristic points (its eigenvector, solved numerically per valence) are one complex
+    multiple of x_c(omega) omega^s, the eigenvector solved once in omega, at every labelled vertex."""
+    import cmath
+    import math
+
+    from symdecomp.symbols import omega
+    from symdecomp.verify.c1_dual_uniform import dual_ring
+    from symdecomp.verify.zoo_characteristic import engine_neighbourhood
+
+    ds, n = load_zoo("doo-sabin"), 20
+    x = dual_ring(ds, sp.Rational(1, 2), 16).eigenvector
+    nb = engine_neighbourhood(ds, n)
+    w = cmath.exp(2j * math.pi / n)
+    ours = {v: complex(sp.N(x[c].subs(omega, w) * w**s)) for v, (s, c) in nb.mesh.labels.items() if v in nb.points}
+    theirs = {v: complex(float(z.real.mid()), float(z.imag.mid())) for v, z in nb.points.items()}
+    corner = next(v for v, (s, c) in nb.mesh.labels.items() if (s, c) == (0, 0))
+    scale = theirs[corner] / ours[corner]
+    assert len(ours) > 8 * n and max(abs(theirs[v] - scale * ours[v]) for v in ours) < 1e-12

@@ -15,9 +15,11 @@ test (:mod:`symdecomp.verify.c1_dual`):
   ``(X, Y)`` is the map stretched by ``1/s`` across the real axis, its Jacobian the true one over ``s > 0``.
 * **Regular**: every Bezier coefficient of the Jacobian of sector 0's patches (the ring's patches are its rotations)
   is a polynomial in ``t``, positive on ``[t_0, 1]`` (:func:`~symdecomp.verify.c1_uniform.t_lower_bound`; Sturm
-  sequences in FLINT). **Injective**: the control points of sector 0's inner boundary lie in the closed wedge between
-  the rays of corner 0 and corner 1 of the ``n``-gon (``Y >= 0``, ``X - t Y >= 0``), none at 0
-  (``X^2 + (1 - t^2) Y^2 > 0``): each sector's piece sweeps ``2 pi/n``, the boundary winds once.
+  sequences in FLINT). **Injective**: sector 0's inner boundary (the patches' sides that face the hole, the hole on
+  their left) is one chain from a point ``A`` on the ray of the ``n``-gon's corner 0 to ``omega A`` (exact identities
+  of its end points), and its control points lie in the closed wedge between the rays of corners 0 and 1
+  (``Y >= 0``, ``X - t Y >= 0``), none at 0 (``X^2 + (1 - t^2) Y^2 > 0``): with its rotations the boundary closes
+  counter-clockwise, each sector's piece sweeping ``2 pi/n``: it winds once, the sign of the Jacobian.
 
 The patches' grids and their orbit labels are read from the engine's mesh at ``N0``; the neighbourhood of a sector is
 the same at every larger ``n``. Below ``N0`` the valences are certified one by one.
@@ -42,6 +44,8 @@ __all__ = ["DualRing", "dual_ring", "dual_uniform_map"]
 T = sp.Symbol("t")
 #: A 3 x 3 net of polynomials in ``t``.
 Net = tuple[tuple[flint.fmpq_poly, ...], ...]
+#: A side of a bicubic net: its control points ``(X, Y)``.
+Piece = list[tuple[flint.fmpq_poly, flint.fmpq_poly]]
 
 
 @dataclass(frozen=True)
@@ -118,6 +122,22 @@ def dual_ring(scheme: StencilScheme, lam: sp.Expr, first: int) -> DualRing:
     return DualRing(first, scale, tuple(patches), tuple(x))
 
 
+def _from_ray_to_rotated_ray(pieces: list[Piece]) -> bool:
+    """Whether sector 0's boundary pieces (control points ``(X, Y)``, the hole on their left) join into one chain from a
+    point ``A = X_A`` on the real axis (``Y_A = 0``) to ``omega A`` (``X = t X_A``, ``Y = X_A``), exactly: the rotated
+    copies then close the boundary counter-clockwise, sector after sector."""
+    t = flint.fmpq_poly([0, 1])
+    piece = next((p for p in pieces if not any(q[-1] == p[0] for q in pieces)), None)
+    chain: list[Piece] = []
+    while piece is not None and len(chain) < len(pieces):
+        chain.append(piece)
+        piece = next((p for p in pieces if p[0] == chain[-1][-1]), None)
+    if len(chain) != len(pieces) or piece is not None:
+        return False
+    (xa, ya), (xb, yb) = chain[0][0], chain[-1][-1]
+    return bool(ya.is_zero() and xb == t * xa and yb == xa)
+
+
 def dual_uniform_map(scheme: StencilScheme, lam: sp.Expr, first: int) -> UniformMapResult:
     """Regularity and injectivity of the characteristic map for every ``n >= first`` (module docstring); ``open`` with the
     part that is not shown."""
@@ -130,18 +150,21 @@ def dual_uniform_map(scheme: StencilScheme, lam: sp.Expr, first: int) -> Uniform
     except NotApplicableError as exc:
         return UniformMapResult("open", first, low, (str(exc),), 0)
     t = flint.fmpq_poly([0, 1])
-    coefficients, points = [], []
+    coefficients: list[flint.fmpq_poly] = []
+    pieces: list[Piece] = []
     for X, Y, sides in ring.patches:
         x, y = biquadratic_to_bicubic(X), biquadratic_to_bicubic(Y)
         coefficients += [c for row in jacobian_net(x, y) for c in row]  # type: ignore[no-untyped-call]  # bezier's nets are untyped
-        points += [(a, b) for side in sides for a, b in zip(_SIDES[side](x), _SIDES[side](y))]
+        pieces += [list(zip(_SIDES[side](x), _SIDES[side](y))) for side in sides]
+    points = [p for piece in pieces for p in piece]
     interval = f"t = cos(2 pi/n) in [{low}, 1] (every n >= {first}, and the limit n -> oo at t = 1)"
     bad = next((k for k, c in enumerate(coefficients) if not positive_on(c, low, 1)), None)
     if bad is not None:
         return UniformMapResult("open", first, low, (f"Bezier coefficient {bad} of the Jacobian is not shown positive for "
                                                      f"{interval} (no subdivision is tried)",), bad)
-    in_wedge = all(positive_on(b, low, 1, strict=False) and positive_on(a - t * b, low, 1, strict=False)
-                   and positive_on(a * a + (1 - t * t) * b * b, low, 1) for a, b in points)
+    in_wedge = _from_ray_to_rotated_ray(pieces) and all(
+        positive_on(b, low, 1, strict=False) and positive_on(a - t * b, low, 1, strict=False)
+        and positive_on(a * a + (1 - t * t) * b * b, low, 1) for a, b in points)
     facts = (
         f"the frequency-1 eigenvector for every n >= {first}: the n-gon's Fourier mode and (lambda_1 I - B(omega))^(-1) "
         f"C(omega) on the outer classes, det(lambda_1 I - B(omega)) = {ring.scale} (blocks read at n = {first}, checked "
@@ -149,8 +172,9 @@ def dual_uniform_map(scheme: StencilScheme, lam: sp.Expr, first: int) -> Uniform
         f"all {len(coefficients)} Bezier coefficients of the Jacobian of sector 0's biquadratic patches (raised to bicubic, "
         f"stretched by 1/sin(2 pi/n)) are positive polynomials in t on [{low}, 1] (Sturm sequences): the characteristic map "
         f"is regular for every n >= {first}",
-        f"the {len(points)} control points of sector 0's inner boundary lie in the closed wedge between the rays of the "
-        f"n-gon's corners 0 and 1, none at 0, for every t in [{low}, 1]: the boundary winds once, the map is injective"
+        f"sector 0's inner boundary runs from a point A on the ray of the n-gon's corner 0 to omega A, and its "
+        f"{len(points)} control points lie in the closed wedge between the rays of corners 0 and 1, none at 0, for every t "
+        f"in [{low}, 1]: each sector's piece sweeps 2 pi/n, the boundary winds once, the map is injective"
         if in_wedge else "the inner boundary's control points are not shown to lie in sector 0's wedge: injectivity open",
     )
     return UniformMapResult("proved" if in_wedge else "open", first, low, facts, len(coefficients) + len(points))

@@ -140,7 +140,9 @@ nothing else.
                    Loop side ``opensubdiv.loop``, boundaries, creases and corners
                    ``opensubdiv.sharp``); certified C1 by Reif's test (``c1``,
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``; for every valence, its spectral conditions proved
-                   in n and the map per valence, ``c1_every_n``; the characteristic map for every n >= N0 by exact signs in
+                   in n and the map per valence, ``c1_every_n``; a dual scheme's with the biquadratic regular part, from its n-gon's
+                   weights' symbol, ``c1_dual_every_n``, its ring of biquadratic patches for every n >= N0 by exact signs in t,
+                   ``c1_dual_uniform``; the characteristic map for every n >= N0 by exact signs in
                    t = cos(2 pi/n), ``c1_uniform``; the curvature regime for every
                    valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``; the part that dominates on fine
                    rings for every valence, ``dominance_every_n``); at a sector between sharp rays (boundary, crease

@@ -41,6 +41,21 @@ __all__ = ["register", "run"]
 #: cos(2 pi/n) where the exact signs close, else open).
 EVERY_N_CERTIFIED = 64
 
+#: The same for a dual scheme of the zoo (Doo-Sabin): its test at one valence costs more than O(n) (the engine's exact
+#: spectrum of the ring around the n-gon); the proof for every n starts at n = 16 (the blocks' reading), the valences
+#: above it are a cross-check.
+ZOO_EVERY_N_CERTIFIED = 32
+
+#: --every-n's help.
+EVERY_N_HELP = (
+    "C1 for every valence: the spectral conditions as statements in t = cos(2 pi j/n) decided for every n "
+    f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}, the "
+    "characteristic map regular and injective for every n by exact signs of its nets in cos(2 pi/n) (a dual scheme of "
+    "the zoo with the biquadratic regular part, e.g. doo-sabin: the n-gon's weights' symbol for every n, the dual test "
+    f"at n = 3..{ZOO_EVERY_N_CERTIFIED}); says which part is proved, verified or open, and the first valence where C1 "
+    "fails (--json: the steps)"
+)
+
 #: How a verdict is printed (by its value, so that the table needs no import of the verify layer).
 LABELS = {"c1": "C1 certified", "not-c1": "not C1", "undecided": "undecided"}
 
@@ -74,11 +89,7 @@ def register(sub) -> None:
     p.add_argument("--n", dest="valences", type=_valences, action=_ValencesOnce, metavar="A:B",
                    help=f"valences to test: an inclusive range A:B or a single N (at most {LIMITS['c1'][0]}); an open "
                    "range A: is --every-n; or a sharp vertex with --boundary, --corner or --crease")
-    flag(p, "--every-n", dest="every_n",
-         help="C1 for every valence: the spectral conditions as statements in t = cos(2 pi j/n) decided for every n "
-         f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}, the "
-         "characteristic map regular and injective for every n by exact signs of its nets in cos(2 pi/n); says "
-         "which part is proved, verified or open, and the first valence where C1 fails (--json: the steps)")
+    flag(p, "--every-n", dest="every_n", help=EVERY_N_HELP)
     flag(p, "--boundary", help="test boundary vertices with K faces (--k): the crease rules on the boundary, the scheme's "
          "[sharp] rules (default: the cubic B-spline's 3/4, 1/8 and 1/2; a file may give Biermann-Levin-Zorin's near-edge "
          "rule in theta_k = pi/k)")
@@ -196,8 +207,13 @@ def _run_zoo(args, items: None, plot) -> int:
     from symdecomp.verify.result import C1Verdict
 
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
-        raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} (a scheme "
-                                "of the zoo); give --n A:B")
+        from symdecomp.verify.c1_zoo import spline_route
+
+        reason = spline_route(args.scheme)
+        if reason is not None:
+            raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
+                                    f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
+        return _run_every_n(args, _zoo_one, ZOO_EVERY_N_CERTIFIED)
     results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
     write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
@@ -366,16 +382,22 @@ def _run_sharp(args, items: list[tuple], plot) -> int:
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 
 
-def _run_every_n(args) -> int:
+def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED) -> int:
+    """``--every-n``: :func:`~symdecomp.verify.c1_every_n.c1_every_n`, or for a dual scheme of the zoo (``one`` is
+    :func:`_zoo_one`) :func:`~symdecomp.verify.c1_dual_every_n.c1_dual_every_n`; ``one(n)`` at ``3..last`` on the pool."""
     from symdecomp.parallel import ordered_map
+    from symdecomp.verify.c1_dual_every_n import c1_dual_every_n
     from symdecomp.verify.c1_every_n import c1_every_n
 
+    if given(args, "plot"):
+        raise InvalidInputError("--plot: --every-n draws no figure (its verdict is a proof, not a map); give --n A:B to draw")
     scheme = args.scheme
-    valences = list(range(max(3, scheme.minimum_valence()), EVERY_N_CERTIFIED + 1))
-    rows = ordered_map(_one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,
+    valences = list(range(3 if one is _zoo_one else max(3, scheme.minimum_valence()), last + 1))
+    rows = ordered_map(one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
     by_n = {r.n: r for r in progress(rows, len(valences), "c1", enabled=not args.quiet)}
-    result = c1_every_n(scheme, EVERY_N_CERTIFIED, certify=lambda k: by_n[k] if k in by_n else _one(k, scheme, args.depth))
+    route = c1_dual_every_n if one is _zoo_one else c1_every_n
+    result = route(scheme, last, certify=lambda k: by_n[k] if k in by_n else one(k, scheme, args.depth))
     if args.json:
         print_json(args, {**result.as_json(), "rows": [by_n[k].json for k in sorted(by_n) if k <= result.certified[1] + 1]})
     else:

@@ -66,7 +66,9 @@ FAMILIES: dict[str, FamilyFacts] = {f.name: f for f in (
         "alpha_k = (3 + 2 cos(2 pi k/N))/(4N) and the circulant one-ring matrix S_lk = alpha_(k-l) diagonalized by the "
         "discrete Fourier transform",
         sp.Rational(1, 2), 2, sp.Rational(1, 4), "3 and up (n-gons)",
-        "C1 at the centre of an extraordinary face (the issue cites Peters and Reif 1998; not read here)",
+        "C1 at the centre of an extraordinary face, every n (the issue cites J. Peters and U. Reif, 1998, Analysis of "
+        "algorithms generalizing B-spline subdivision; not read here: c1 --every-n proves C1 for every n from the weights: "
+        "the spectral conditions by the symbol, the characteristic map by exact signs in cos(2 pi/n) from n = 16)",
         "the Fourier transform of the weights: 1 at frequency 0, 1/4 + 1/4 = 1/2 at frequencies 1 and n - 1, 1/4 at the "
         "others; the regular quads around the n-gon add eigenvalues of at most 1/4"),
     FamilyFacts(

@@ -66,7 +66,7 @@ def jacobian_net(x, y):
     yu = [[3 * (y[i + 1][k] - y[i][k]) for k in range(4)] for i in range(3)]
     xv = [[3 * (x[i][k + 1] - x[i][k]) for k in range(3)] for i in range(4)]
     yv = [[3 * (y[i][k + 1] - y[i][k]) for k in range(3)] for i in range(4)]
-    out = [[flint.arb(0) for _ in range(6)] for _ in range(6)]
+    out = [[0 * x[0][0] for _ in range(6)] for _ in range(6)]  # Arb balls, or exact polynomials (c1_uniform)
     for i in range(3):
         for k in range(4):
             for i2 in range(4):

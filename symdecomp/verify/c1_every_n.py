@@ -40,6 +40,7 @@ from symdecomp.analysis.characteristic import outer_charpoly
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import InvalidInputError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
+from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached
@@ -239,15 +240,20 @@ def _fails_from(scheme: Scheme, first: int, certify) -> EveryNStep | None:
     return None
 
 
-def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None] | None = None, certify=None) -> EveryNResult:
+def c1_every_n(scheme: Scheme | StencilScheme, last: int = 64, *, progress: Callable[[int], None] | None = None, certify=None,
+               spectral_steps: Callable[[], tuple[EveryNStep, ...]] | None = None, map_every_n=None, fails_from=None,
+               first: int | None = None) -> EveryNResult:
     """C1 for every valence as far as it is shown (module docstring): the spectral conditions for every ``n``, Reif's
-    test at ``n = 3..last`` (``certify(n)``: a :class:`~symdecomp.verify.c1.C1Result`; by default :func:`c1_test`)."""
+    test at ``n = 3..last`` (``certify(n)``: a :class:`~symdecomp.verify.c1.C1Result`; by default :func:`c1_test`).
+
+    Another route (a dual scheme's, :mod:`symdecomp.verify.c1_dual_every_n`) gives its own ``spectral_steps()``, its
+    ``map_every_n(lo, last)`` (a :class:`UniformMapResult`), ``fails_from(k, certify)`` and ``first`` valence."""
     from symdecomp.verify.c1 import c1_test
 
     certify = certify or (lambda k: c1_test(scheme, k))
-    lo = max(3, scheme.minimum_valence())
+    lo = max(3, scheme.minimum_valence()) if first is None else first
     try:
-        spectral = spectral_every_n(scheme)
+        spectral = spectral_steps() if spectral_steps else spectral_every_n(scheme)
     except NotApplicableError as exc:
         spectral = (EveryNStep(str(exc), "open", (lo, None), "spectral"),)
     for k in range(lo, last + 1):
@@ -259,13 +265,13 @@ def c1_every_n(scheme: Scheme, last: int = 64, *, progress: Callable[[int], None
             if r.verdict != "not-c1":
                 return EveryNResult(scheme.name, "undecided", f"Reif's test is undecided at n = {k}", spectral + (step,),
                                     (lo, k - 1))
-            tail = _fails_from(scheme, k, certify)
+            tail = fails_from(k, certify) if fails_from else None if map_every_n else _fails_from(scheme, k, certify)
             summary = (f"C1 holds exactly for n = {lo}..{k - 1} (certified) and fails for every n >= {k}: the exact threshold"
                        if tail is not None and k > lo else f"C1 fails at n = {k}: {r.reason}")
             return EveryNResult(scheme.name, "refuted", summary, spectral + (step,) + ((tail,) if tail else ()), (lo, k - 1), k)
     tail = max((s.valences[0] for s in spectral if s.status == "proved"), default=lo)
     spectral_ok = all(s.status == "proved" for s in spectral) and tail <= last + 1
-    uniform = _uniform_map(scheme, lo, last) if spectral_ok else None
+    uniform = (map_every_n or (lambda lo, last: _uniform_map(scheme, lo, last)))(lo, last) if spectral_ok else None
     steps = spectral + (
         EveryNStep(f"Reif's test at each n = {lo}..{last}: the spectral conditions and a regular, injective characteristic "
                    "map, certified (Arb balls; exact at frequency 0)", "verified", (lo, last), "reif-per-valence"),

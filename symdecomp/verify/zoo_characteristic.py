@@ -51,11 +51,13 @@ def _ball(e: Eigenvalue) -> flint.acb:
     return e.value
 
 
-def spectral_conditions(spectrum: RingSpectrum, n: int) -> SpectralResult:
+def spectral_conditions(spectrum: RingSpectrum, n: int, *, real_matrix: bool = False) -> SpectralResult:
     """Reif's spectral conditions from a certified spectrum by frequency (one eigenvalue type: ``Eigenvalue``).
 
     ``1`` must be exactly an eigenvalue (its exact form is 1), simple, at frequency 0; the subdominant eigenvalue
     exactly real, of multiplicity 2 from one pair of frequencies ``j, n - j``, with a certified gap to the rest.
+    Real: its exact form's imaginary part is 0 as sympy writes it, or (``real_matrix``: the matrix is real) its
+    conjugate, an eigenvalue of the same modulus, is no other eigenvalue (the certified gap): it is itself.
     """
     values = list(spectrum.eigenvalues)
     ones = [e for e in values if e.exact is not None and e.exact == 1]
@@ -73,7 +75,7 @@ def spectral_conditions(spectrum: RingSpectrum, n: int) -> SpectralResult:
     if lam.exact is None and lam.multiplicity == 2 and len(pair) == 2 and pair[0] + pair[1] == n:
         return SpectralResult(n, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {lam.text} has no exact form here, so it "
                               "is not shown real (nor is the eigenvector solved with it)", second=float(bound))
-    real = lam.exact is not None and sp.im(lam.exact) == 0
+    real = lam.exact is not None and (sp.im(lam.exact) == 0 or real_matrix and _ball(lam).imag.contains(0))
     if lam.multiplicity != 2 or len(pair) != 2 or pair[0] + pair[1] != n or not real:
         return SpectralResult(n, C1Verdict.NOT_C1, f"the subdominant eigenvalue {lam.text} is not a real double eigenvalue "
                               f"of one pair of frequencies j, n - j (its frequencies: {', '.join(map(str, pair))})",
@@ -96,7 +98,8 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     """The local mesh with its orbit labels, the spectral conditions and the characteristic map at valence ``n``."""
     zm = zoo_matrix(scheme, n, C1_DEPTH)
     nb = zm.neighbourhood
-    spectral = spectral_conditions(zoo_spectrum(scheme, n, C1_DEPTH, jordan=False), n)
+    real = all(e.is_real for e in set(zm.matrix))  # the conjugate of an eigenvalue is one (spectral_conditions)
+    spectral = spectral_conditions(zoo_spectrum(scheme, n, C1_DEPTH, jordan=False), n, real_matrix=real)
     labelled = set(nb.order)
     faces = tuple(tuple(f) for f in nb.mesh.faces if set(f) <= labelled)
     mesh = DualNeighbourhood(faces, _centre_face(nb), dict(nb.labels))

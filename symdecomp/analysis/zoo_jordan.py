@@ -6,7 +6,8 @@ are numbers of a cyclotomic field ``Q(zeta_12n)`` (rationals, cosines of rationa
 the sizes follow from exact ranks of the powers of ``B_k - lambda I``
 (:func:`~symdecomp.analysis.factor_roots.jordan_partition`, over
 :class:`~symdecomp.algebra.cyclotomic.CyclotomicField`); the ranks also prove that the value has the
-multiplicity the balls gave it at that frequency. Otherwise (a radical, a root of a factor of degree > 2
+multiplicity the balls gave it at that frequency (a radical sympy wrote a cosine with is read back as that cosine,
+:func:`~symdecomp.analysis.zoo_roots.cosine_form`). Otherwise (another radical, a root of a factor of degree > 2
 repeated at one frequency) the structure is left unknown (``None``).
 
 >>> import sympy as sp
@@ -32,6 +33,7 @@ from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.factor_roots import jordan_partition
 from symdecomp.analysis.spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import ZooBlocks
+from symdecomp.analysis.zoo_roots import cosine_form
 
 __all__ = ["with_jordan"]
 
@@ -50,8 +52,8 @@ def _sizes(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField) -> tuple[in
             return None
         B = blocks.frequency_zero_matrix() if k == 0 else blocks.frequency_matrix(sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)))
         try:
-            value = cyclotomic_value(e.exact, field=field)
-            A = [[cyclotomic_value(B[r, c], field=field) - (value if r == c else 0) for c in range(B.shape[1])]
+            value = cyclotomic_value(cosine_form(e.exact, n), field=field)
+            A = [[cyclotomic_value(cosine_form(B[r, c], n), field=field) - (value if r == c else 0) for c in range(B.shape[1])]
                  for r in range(B.shape[0])]
         except ValueError:
             return None

@@ -35,18 +35,21 @@ from symdecomp.analysis.spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import ZooBlocks
 from symdecomp.analysis.zoo_roots import cosine_form
 
-__all__ = ["with_jordan"]
+__all__ = ["with_jordan", "jordan_by_frequency"]
 
 
-def _sizes(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField) -> tuple[int, ...] | None:
+def jordan_by_frequency(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField | None = None) -> dict[int, tuple[int, ...]] | None:
+    """``{k: Jordan block sizes of e in B_k}`` at each of ``e``'s frequencies, exactly (module docstring), or ``None``
+    where that is not decided."""
+    field = field or CyclotomicField(12 * blocks.n)
     by_k: dict[int, int] = {}
     for k, _, _ in e.members:
         by_k[k] = by_k.get(k, 0) + 1
-    sizes: list[int] = []
+    out: dict[int, tuple[int, ...]] = {}
     n = blocks.n
     for k, m in sorted(by_k.items()):
         if m == 1:  # a simple root at its frequency: one block of size 1
-            sizes.append(1)
+            out[k] = (1,)
             continue
         if e.exact is None:
             return None
@@ -60,8 +63,13 @@ def _sizes(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField) -> tuple[in
         found = jordan_partition(A, m)
         if sum(found) != m:
             return None  # the value's multiplicity at k is not what the balls said: leave it undecided
-        sizes += found
-    return tuple(sorted(sizes, reverse=True))
+        out[k] = tuple(found)
+    return out
+
+
+def _sizes(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField) -> tuple[int, ...] | None:
+    by_k = jordan_by_frequency(blocks, e, field)
+    return None if by_k is None else tuple(sorted((s for sizes in by_k.values() for s in sizes), reverse=True))
 
 
 def with_jordan(blocks: ZooBlocks, spectrum: RingSpectrum) -> RingSpectrum:

@@ -42,7 +42,7 @@ from symdecomp.analysis.charpoly import COSK
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
-from symdecomp.analysis.zoo_jordan import with_jordan
+from symdecomp.analysis.zoo_jordan import jordan_by_frequency, with_jordan
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks, zoo_spectrum
 from symdecomp.schemes.stencils import StencilScheme
@@ -182,6 +182,9 @@ def _defective(blocks: ZooBlocks, e: Eigenvalue) -> tuple[int, ...] | None:
     or an entry is not a number of that field), unless the engine's Jordan structure says there is no block."""
     if e.jordan is not None and max(e.jordan) == 1:
         return ()
+    exact = jordan_by_frequency(blocks, e)  # the engine's cyclotomic ranks, frequency by frequency
+    if exact is not None:
+        return tuple(k for k, sizes in exact.items() if max(sizes) > 1)
     n, by_k = blocks.n, Counter(k for k, _, _ in e.members)
     if e.exact is None or not by_k:
         return None

@@ -112,3 +112,11 @@ def test_a_larger_neighbourhood_adds_nothing_above_mu(name):
     large = zoo_artifacts(load_zoo(name), 5, small.depth + 1)
     assert large.depth == small.depth + 1 and (large.regime, large.reason) == (small.regime, small.reason)
     assert [m.eigenvalue.exact for m in large.mu] == [m.eigenvalue.exact for m in small.mu]
+
+
+@pytest.mark.parametrize(("name", "n"), [("doo-sabin", 10), ("doo-sabin", 16), ("doo-sabin", 20), ("modified-butterfly", 12)])
+def test_the_regime_where_sympy_writes_cosines_as_radicals(name, n):
+    """At these valences the blocks' entries hold radicals (cos(pi/8) = sqrt(sqrt(2)/4 + 1/2)): the tie with lambda_1^2
+    and its Jordan blocks are still decided exactly (n = 16 was undecided, n = 20 took minutes), as the reference says."""
+    a = _agrees(name, n)
+    assert a.regime is not CurvatureRegime.UNDECIDED and a.mu[0].comparison == 0

@@ -1,8 +1,12 @@
 """Artifacts for a scheme of the zoo (a StencilScheme): density and the curvature regime, from the engine's spectrum.
 
 Everything is read from the certified spectrum by frequency (:func:`symdecomp.analysis.zoo_spectrum.zoo_spectrum`,
-over the steps that return the lattice to itself: two for sqrt(3)), on the neighbourhood of the given depth (default:
-the smallest invariant one):
+over the steps that return the lattice to itself: two for sqrt(3)), on the neighbourhood of the given depth. The
+default is the neighbourhood the C1 test reads (:data:`~symdecomp.verify.zoo_characteristic.C1_DEPTH` rings: the
+characteristic map's ring and the control points it depends on), or the smallest invariant one if that is larger: a
+smaller invariant neighbourhood misses eigenvalues of points the surface near the centre depends on (sqrt(3)'s 1-ring
+is invariant over two steps, but at n = 3 its second ring adds ``2/81 + sqrt(7)/162``, larger than
+``lambda_1^2 = 1/81``: the curvature is unbounded there, not bounded as the 1-ring alone says):
 
 * ``lambda_1``: the eigenvalue of largest modulus after ``1``; the test applies when ``1`` is simple, ``lambda_1`` is
   real, double, at frequencies ``1`` and ``n - 1``, and strictly dominant in modulus (Reif's spectral conditions),
@@ -49,6 +53,7 @@ from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_type, check_valence
+from symdecomp.verify.zoo_characteristic import C1_DEPTH
 
 __all__ = ["NOT_COMPUTED", "ZooMu", "ZooArtifacts", "zoo_artifacts", "exact_sign"]
 
@@ -235,6 +240,8 @@ def zoo_artifacts(scheme: StencilScheme, n: int, depth: int | None = None) -> Zo
     check_type(scheme, StencilScheme, "scheme", hint="a StencilScheme")
     n = check_valence(n)
     zm = zoo_matrix(scheme, n, depth)
+    if depth is None and zm.depth < C1_DEPTH:  # the points the surface near the centre depends on (module docstring)
+        zm = zoo_matrix(scheme, n, C1_DEPTH)
     blocks = zoo_blocks(zm)
     spectrum = with_jordan(blocks, spectrum_of_blocks(blocks, depth=zm.depth, mesh=scheme.lattice))
     values = spectrum.eigenvalues

@@ -42,13 +42,15 @@ from sympy import QQ
 from sympy.polys.matrices import DomainMatrix
 
 from symdecomp.algebra.compile import compile_expression
+from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.charpoly import COSK
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_jordan import jordan_by_frequency, with_jordan
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks, zoo_spectrum
+from symdecomp.analysis.zoo_roots import cosine_form
+from symdecomp.analysis.zoo_spectrum import COSINE_FORM_UP_TO, spectrum_of_blocks, zoo_spectrum
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
@@ -82,6 +84,25 @@ def _is_root(e: Eigenvalue, c: sp.Expr, n: int) -> bool:
     return bool(ks)
 
 
+def _real_sign(ball: flint.acb) -> int | None:
+    return 1 if ball.real > 0 else -1 if ball.real < 0 else None
+
+
+def _exact_zero(d: sp.Expr, valences: tuple[int, ...]) -> bool:
+    """Whether the real number ``d`` is exactly 0: in a cyclotomic field when it is one's (the radicals sympy wrote
+    cosines with read back, :func:`~symdecomp.analysis.zoo_roots.cosine_form`), else by its minimal polynomial."""
+    d = sp.expand(d)
+    if d == 0:
+        return True
+    form = d
+    for n in dict.fromkeys(valences):
+        form = cosine_form(form, n) if n <= COSINE_FORM_UP_TO else form
+    try:
+        return not cyclotomic_value(form).poly
+    except ValueError:
+        return sp.Poly(sp.minimal_polynomial(d, _X), _X) == sp.Poly(_X, _X)
+
+
 def exact_sign(a: Eigenvalue | None, b: Eigenvalue | None, n: int, *, square: bool = False, n_b: int | None = None) -> int | None:
     """The sign of ``|a| - |b|`` (``|b|^2`` with ``square``) from the certified balls; a tie shown exactly where both
     values are exact and real (the difference's minimal polynomial is ``x``), or where one is exact and the value it
@@ -103,6 +124,10 @@ def exact_sign(a: Eigenvalue | None, b: Eigenvalue | None, n: int, *, square: bo
     p, q = a.exact, b.exact
     real = [p is not None and p.is_real, q is not None and q.is_real]
     if p is not None and q is not None and real == [True, True]:
+        signs = [_real_sign(u), _real_sign(v)]
+        if None not in signs:  # |p| and |q| without Abs: the balls give the signs
+            d = signs[0] * p - (q ** 2 if square else signs[1] * q)
+            return 0 if _exact_zero(d, (n, n if n_b is None else n_b)) else None
         d = sp.Abs(p) - (q ** 2 if square else sp.Abs(q))
         return 0 if sp.Poly(sp.minimal_polynomial(d, _X), _X) == sp.Poly(_X, _X) else None
     if p is not None and real[0] and (v.real > 0 or v.real < 0):  # |b| (or |b|^2) = |a|: b is sqrt(|a|) (or |a|), b's sign

@@ -6,7 +6,8 @@ are numbers of a cyclotomic field ``Q(zeta_12n)`` (rationals, cosines of rationa
 the sizes follow from exact ranks of the powers of ``B_k - lambda I``
 (:func:`~symdecomp.analysis.factor_roots.jordan_partition`, over
 :class:`~symdecomp.algebra.cyclotomic.CyclotomicField`); the ranks also prove that the value has the
-multiplicity the balls gave it at that frequency. Otherwise (a radical, a root of a factor of degree > 2
+multiplicity the balls gave it at that frequency (a radical sympy wrote a cosine with is read back as that cosine,
+:func:`~symdecomp.analysis.zoo_roots.cosine_form`). Otherwise (another radical, a root of a factor of degree > 2
 repeated at one frequency) the structure is left unknown (``None``).
 
 >>> import sympy as sp
@@ -32,34 +33,43 @@ from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.factor_roots import jordan_partition
 from symdecomp.analysis.spectrum import RingSpectrum
 from symdecomp.analysis.zoo_blocks import ZooBlocks
+from symdecomp.analysis.zoo_roots import cosine_form
 
-__all__ = ["with_jordan"]
+__all__ = ["with_jordan", "jordan_by_frequency"]
 
 
-def _sizes(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField) -> tuple[int, ...] | None:
+def jordan_by_frequency(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField | None = None) -> dict[int, tuple[int, ...]] | None:
+    """``{k: Jordan block sizes of e in B_k}`` at each of ``e``'s frequencies, exactly (module docstring), or ``None``
+    where that is not decided."""
+    field = field or CyclotomicField(12 * blocks.n)
     by_k: dict[int, int] = {}
     for k, _, _ in e.members:
         by_k[k] = by_k.get(k, 0) + 1
-    sizes: list[int] = []
+    out: dict[int, tuple[int, ...]] = {}
     n = blocks.n
     for k, m in sorted(by_k.items()):
         if m == 1:  # a simple root at its frequency: one block of size 1
-            sizes.append(1)
+            out[k] = (1,)
             continue
         if e.exact is None:
             return None
         B = blocks.frequency_zero_matrix() if k == 0 else blocks.frequency_matrix(sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)))
         try:
-            value = cyclotomic_value(e.exact, field=field)
-            A = [[cyclotomic_value(B[r, c], field=field) - (value if r == c else 0) for c in range(B.shape[1])]
+            value = cyclotomic_value(cosine_form(e.exact, n), field=field)
+            A = [[cyclotomic_value(cosine_form(B[r, c], n), field=field) - (value if r == c else 0) for c in range(B.shape[1])]
                  for r in range(B.shape[0])]
         except ValueError:
             return None
         found = jordan_partition(A, m)
         if sum(found) != m:
             return None  # the value's multiplicity at k is not what the balls said: leave it undecided
-        sizes += found
-    return tuple(sorted(sizes, reverse=True))
+        out[k] = tuple(found)
+    return out
+
+
+def _sizes(blocks: ZooBlocks, e: Eigenvalue, field: CyclotomicField) -> tuple[int, ...] | None:
+    by_k = jordan_by_frequency(blocks, e, field)
+    return None if by_k is None else tuple(sorted((s for sizes in by_k.values() for s in sizes), reverse=True))
 
 
 def with_jordan(blocks: ZooBlocks, spectrum: RingSpectrum) -> RingSpectrum:

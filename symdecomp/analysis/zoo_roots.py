@@ -7,6 +7,11 @@ where Arb's root finder cannot converge. Its coefficients there are exact number
 ``p = prod_i s_i^i`` with squarefree, pairwise coprime ``s_i`` (Yun's algorithm, gcds in ``Q(zeta_L)[x]``),
 and the roots of each ``s_i`` are isolated by Arb with the multiplicity ``i``.
 
+sympy writes ``cos(r pi)`` for some ``r`` as radicals (``cos(pi/8) = sqrt(sqrt(2)/4 + 1/2)``, ``cos(2 pi/5) = (sqrt(5) -
+1)/4``), which a cyclotomic field does not read; :func:`cosine_form` writes each such radical back as the cosines it
+came from (each identity is sympy's own evaluation of a cosine, solved for its one new radical), so that the values
+at valences such as 5, 8, 10, 12 and 16 are numbers of ``Q(zeta_L)`` again.
+
 >>> import sympy as sp
 >>> x = sp.Symbol("x")
 >>> [(r.real.mid().str(3), m) for r, m in squarefree_roots([1, -1, sp.Rational(1, 4)], 8)]  # (x - 1/2)^2
@@ -15,6 +20,8 @@ and the roots of each ``s_i`` are isolated by Arb with the multiplicity ``i``.
 
 from __future__ import annotations
 
+import functools
+
 import flint
 import sympy as sp
 
@@ -22,7 +29,7 @@ from symdecomp.algebra.cos_field import _divmod, _gcd
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
 from symdecomp.algebra.number_field import FieldElement
 
-__all__ = ["squarefree_roots"]
+__all__ = ["squarefree_roots", "cosine_form"]
 
 Poly = list[FieldElement]
 
@@ -75,3 +82,51 @@ def squarefree_roots(coefficients: list[sp.Expr], order: int, *, prec: int = 128
             poly = flint.acb_poly([to_acb(Cyclotomic(field, c.poly), prec) for c in s])
             out += [(flint.acb(r), multiplicity) for r in poly.roots()]
     return out
+
+
+def _radicals(e: sp.Expr) -> set[sp.Expr]:
+    return {p for p in e.atoms(sp.Pow) if not p.exp.is_Integer and not p.free_symbols}
+
+
+@functools.lru_cache(maxsize=32)
+def _radical_cosines(n: int) -> dict[sp.Expr, sp.Expr]:
+    """``{radical: its value in cosines}`` for the radicals sympy writes ``cos(a pi/L)`` with, ``L`` a small
+    denominator or ``n``, ``2n``: each cosine whose evaluation has one radical not yet known gives that radical."""
+    values = []
+    for L in sorted({2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, n, 2 * n}):
+        for a in range(1, L):
+            e = sp.cos(sp.pi * sp.Rational(a, L))
+            if _radicals(e):
+                values.append((e, sp.cos(sp.pi * sp.Rational(a, L), evaluate=False)))
+    known: dict[sp.Expr, sp.Expr] = {}
+    found = True
+    while found:
+        found = False
+        for e, cosine in values:
+            unknown = [p for p in _radicals(e) if p not in known]
+            if len(unknown) != 1:
+                continue
+            d = sp.Dummy("r")
+            linear = sp.expand(e.xreplace({unknown[0]: d}).xreplace(known))
+            slope = sp.diff(linear, d)
+            if slope == 0 or slope.has(d):
+                continue
+            known[unknown[0]] = (cosine - sp.expand(linear - slope * d)) / slope
+            found = True
+    return known
+
+
+def cosine_form(value: sp.Expr, n: int) -> sp.Expr:
+    """``value`` with the radicals sympy writes cosines with replaced by those cosines (module docstring); ``value``
+    unchanged when it has a radical that is not one of them.
+
+    >>> cosine_form(sp.sqrt(5) / 4 - sp.Rational(1, 4), 5)  # cos(2 pi/5)
+    -1/2 + cos(pi/5)
+    """
+    radicals = _radicals(sp.sympify(value, strict=True))
+    if not radicals:
+        return value
+    known = _radical_cosines(n)
+    if not radicals <= set(known):
+        return value
+    return sp.expand(value.xreplace(known))

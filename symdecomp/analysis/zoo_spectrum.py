@@ -33,14 +33,18 @@ from symdecomp.analysis.factor_roots import FactorRoots, ball_hull, exact_root, 
 from symdecomp.analysis.spectrum import RingSpectrum, acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.analysis.zoo_roots import squarefree_roots
+from symdecomp.analysis.zoo_roots import cosine_form, squarefree_roots
 from symdecomp.errors import NotApplicableError, PrecisionError
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_digits, check_type, check_valence
 
-__all__ = ["zoo_spectrum", "spectrum_of_blocks", "irrational_atoms", "structural_applies"]
+__all__ = ["zoo_spectrum", "spectrum_of_blocks", "irrational_atoms", "structural_applies", "COSINE_FORM_UP_TO"]
+
+#: The valences whose exact values are read back from sympy's radicals to cosines (past them the structural route's
+#: values are cosines already, and the table of radicals would cost O(n) cosine evaluations).
+COSINE_FORM_UP_TO = 64
 
 
 def irrational_atoms(exprs: Iterable[sp.Expr]) -> dict[sp.Dummy, sp.Expr]:
@@ -142,13 +146,15 @@ def _arb_value(value: sp.Expr) -> flint.acb:
 _X = sp.Dummy("x")
 
 
-def _reduced(value: sp.Expr, ball: flint.acb) -> sp.Expr:
+def _reduced(value: sp.Expr, ball: flint.acb, n: int = 0) -> sp.Expr:
     """``value`` as a rational when it is one (exactly, in a cyclotomic field); a complex form of a real value (``exp(i
-    ...)`` terms) as a quadratic surd when its minimal polynomial has degree 2 (the root nearest ``ball``: they are apart)."""
+    ...)`` terms) as a quadratic surd when its minimal polynomial has degree 2 (the root nearest ``ball``: they are apart).
+    At a valence ``n`` up to :data:`COSINE_FORM_UP_TO`, the radicals sympy wrote cosines with are read back as those
+    cosines first (:func:`~symdecomp.analysis.zoo_roots.cosine_form`: ``cos(pi/8)``, not ``sqrt(sqrt(2)/4 + 1/2)``)."""
     if value.is_Rational:
         return value
-    try:
-        x = cyclotomic_value(value)  # exact in Q(zeta_N) (no radicals): rational when its reduced polynomial is constant
+    try:  # exact in Q(zeta_N): rational when its reduced polynomial is constant
+        x = cyclotomic_value(cosine_form(value, n) if 0 < n <= COSINE_FORM_UP_TO else value)
     except ValueError:
         x = None
     if x is not None and x.poly.degree() <= 0:
@@ -169,9 +175,10 @@ def _entry(items: list[tuple[flint.acb, int, int, int]], group: list[int], zero:
     f = (zero if k == 0 else other)[i]
     value = None
     if exact and f.roots is not None and j >= 0:
-        value = _reduced(sp.expand(exact_root(f.roots[j], k, n, atoms)), b)
-    return Eigenvalue(
-        value=b, text=acb_text(b, digits), multiplicity=len(group), frequencies=tuple(sorted({items[x][1] for x in group})),
+        value = _reduced(sp.expand(exact_root(f.roots[j], k, n, atoms)), b, n)
+    shown = b if not isinstance(value, sp.Rational) else flint.acb(flint.fmpq(int(value.p), int(value.q)))
+    return Eigenvalue(  # a rational value is shown as itself (0, not the midpoint of a ball around it)
+        value=b, text=acb_text(shown, digits), multiplicity=len(group), frequencies=tuple(sorted({items[x][1] for x in group})),
         exact=value, factor=f.poly.xreplace(atoms), jordan=None, members=tuple(sorted(items[x][1:] for x in group)),
         hull=ball_hull([items[x][0] for x in group]),
     )

@@ -40,13 +40,17 @@ from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["DUAL_METHOD", "ZORIN_TOPOLOGY", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
+__all__ = ["DUAL_METHOD", "NO_METHOD", "ZORIN_TOPOLOGY", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
            "corner_weights", "spline_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
 DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-spline patches (the vertices one face from "
                "the centre n-gon): Jacobian in Bernstein-Bezier form (raised to bicubic), one strict sign in interval "
                "arithmetic with de Casteljau subdivision; injective by winding number 1 of the ring's inner boundary")
+
+#: The method line of a scheme that neither test applies to (its verdicts are ``undecided``, each with the reason).
+NO_METHOD = ("none applies: Reif's test needs a spline patch this package evaluates (a dual quad scheme whose regular part is "
+             "the biquadratic B-spline), and Zorin's test, which needs none, is written for one primal step on triangles")
 
 #: The topology Zorin's test (:mod:`symdecomp.verify.c1_zorin`) is written for: one primal step.
 ZORIN_TOPOLOGY = "primal"
@@ -224,7 +228,7 @@ def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilSch
         return c1_zorin_test(scheme, n, min_depth=min(4, deepest), max_depth=deepest)
     if reason is not None:
         return ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason=reason, max_depth=max_depth,
-                           precision=prec)
+                           precision=prec, method=NO_METHOD)
     if neighbourhood is None:
         raise UnavailableError(f"c1 for {scheme.name!r} needs the zoo engine's neighbourhood at valence {n}, which is not "
                                "available in this installation")

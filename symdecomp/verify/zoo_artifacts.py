@@ -1,8 +1,12 @@
 """Artifacts for a scheme of the zoo (a StencilScheme): density and the curvature regime, from the engine's spectrum.
 
 Everything is read from the certified spectrum by frequency (:func:`symdecomp.analysis.zoo_spectrum.zoo_spectrum`,
-over the steps that return the lattice to itself: two for sqrt(3)), on the neighbourhood of the given depth (default:
-the smallest invariant one):
+over the steps that return the lattice to itself: two for sqrt(3)), on the neighbourhood of the given depth. The
+default is the neighbourhood the C1 test reads (:data:`~symdecomp.verify.zoo_characteristic.C1_DEPTH` rings: the
+characteristic map's ring and the control points it depends on), or the smallest invariant one if that is larger: a
+smaller invariant neighbourhood misses eigenvalues of points the surface near the centre depends on (sqrt(3)'s 1-ring
+is invariant over two steps, but at n = 3 its second ring adds ``2/81 + sqrt(7)/162``, larger than
+``lambda_1^2 = 1/81``: the curvature is unbounded there, not bounded as the 1-ring alone says):
 
 * ``lambda_1``: the eigenvalue of largest modulus after ``1``; the test applies when ``1`` is simple, ``lambda_1`` is
   real, double, at frequencies ``1`` and ``n - 1``, and strictly dominant in modulus (Reif's spectral conditions),
@@ -38,17 +42,20 @@ from sympy import QQ
 from sympy.polys.matrices import DomainMatrix
 
 from symdecomp.algebra.compile import compile_expression
+from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.charpoly import COSK
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
-from symdecomp.analysis.zoo_jordan import with_jordan
+from symdecomp.analysis.zoo_jordan import jordan_by_frequency, with_jordan
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.analysis.zoo_spectrum import spectrum_of_blocks, zoo_spectrum
+from symdecomp.analysis.zoo_roots import cosine_form
+from symdecomp.analysis.zoo_spectrum import COSINE_FORM_UP_TO, spectrum_of_blocks, zoo_spectrum
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_type, check_valence
+from symdecomp.verify.zoo_characteristic import C1_DEPTH
 
 __all__ = ["NOT_COMPUTED", "ZooMu", "ZooArtifacts", "zoo_artifacts", "exact_sign"]
 
@@ -77,6 +84,25 @@ def _is_root(e: Eigenvalue, c: sp.Expr, n: int) -> bool:
     return bool(ks)
 
 
+def _real_sign(ball: flint.acb) -> int | None:
+    return 1 if ball.real > 0 else -1 if ball.real < 0 else None
+
+
+def _exact_zero(d: sp.Expr, valences: tuple[int, ...]) -> bool:
+    """Whether the real number ``d`` is exactly 0: in a cyclotomic field when it is one's (the radicals sympy wrote
+    cosines with read back, :func:`~symdecomp.analysis.zoo_roots.cosine_form`), else by its minimal polynomial."""
+    d = sp.expand(d)
+    if d == 0:
+        return True
+    form = d
+    for n in dict.fromkeys(valences):
+        form = cosine_form(form, n) if n <= COSINE_FORM_UP_TO else form
+    try:
+        return not cyclotomic_value(form).poly
+    except ValueError:
+        return bool(sp.Poly(sp.minimal_polynomial(d, _X), _X) == sp.Poly(_X, _X))
+
+
 def exact_sign(a: Eigenvalue | None, b: Eigenvalue | None, n: int, *, square: bool = False, n_b: int | None = None) -> int | None:
     """The sign of ``|a| - |b|`` (``|b|^2`` with ``square``) from the certified balls; a tie shown exactly where both
     values are exact and real (the difference's minimal polynomial is ``x``), or where one is exact and the value it
@@ -98,6 +124,10 @@ def exact_sign(a: Eigenvalue | None, b: Eigenvalue | None, n: int, *, square: bo
     p, q = a.exact, b.exact
     real = [p is not None and p.is_real, q is not None and q.is_real]
     if p is not None and q is not None and real == [True, True]:
+        signs = [_real_sign(u), _real_sign(v)]
+        if None not in signs:  # |p| and |q| without Abs: the balls give the signs
+            d = signs[0] * p - (q ** 2 if square else signs[1] * q)
+            return 0 if _exact_zero(d, (n, n if n_b is None else n_b)) else None
         d = sp.Abs(p) - (q ** 2 if square else sp.Abs(q))
         return 0 if sp.Poly(sp.minimal_polynomial(d, _X), _X) == sp.Poly(_X, _X) else None
     if p is not None and real[0] and (v.real > 0 or v.real < 0):  # |b| (or |b|^2) = |a|: b is sqrt(|a|) (or |a|), b's sign
@@ -182,6 +212,9 @@ def _defective(blocks: ZooBlocks, e: Eigenvalue) -> tuple[int, ...] | None:
     or an entry is not a number of that field), unless the engine's Jordan structure says there is no block."""
     if e.jordan is not None and max(e.jordan) == 1:
         return ()
+    exact = jordan_by_frequency(blocks, e)  # the engine's cyclotomic ranks, frequency by frequency
+    if exact is not None:
+        return tuple(k for k, sizes in exact.items() if max(sizes) > 1)
     n, by_k = blocks.n, Counter(k for k, _, _ in e.members)
     if e.exact is None or not by_k:
         return None
@@ -232,6 +265,8 @@ def zoo_artifacts(scheme: StencilScheme, n: int, depth: int | None = None) -> Zo
     check_type(scheme, StencilScheme, "scheme", hint="a StencilScheme")
     n = check_valence(n)
     zm = zoo_matrix(scheme, n, depth)
+    if depth is None and zm.depth < C1_DEPTH:  # the points the surface near the centre depends on (module docstring)
+        zm = zoo_matrix(scheme, n, C1_DEPTH)
     blocks = zoo_blocks(zm)
     spectrum = with_jordan(blocks, spectrum_of_blocks(blocks, depth=zm.depth, mesh=scheme.lattice))
     values = spectrum.eigenvalues

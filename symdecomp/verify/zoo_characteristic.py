@@ -76,6 +76,9 @@ def spectral_conditions(spectrum: RingSpectrum, n: int, *, real_matrix: bool = F
         return SpectralResult(n, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {lam.text} has no exact form here, so it "
                               "is not shown real (nor is the eigenvector solved with it)", second=float(bound))
     real = lam.exact is not None and (sp.im(lam.exact) == 0 or real_matrix and _ball(lam).imag.contains(0))
+    if lam.multiplicity == 2 and len(pair) == 2 and pair[0] + pair[1] == n and not real and _ball(lam).imag.contains(0):
+        return SpectralResult(n, C1Verdict.UNDECIDED, f"the subdominant eigenvalue {lam.text} is not shown real: its exact "
+                              "form does not reduce to a real number here, and its ball meets the real axis", second=float(bound))
     if lam.multiplicity != 2 or len(pair) != 2 or pair[0] + pair[1] != n or not real:
         return SpectralResult(n, C1Verdict.NOT_C1, f"the subdominant eigenvalue {lam.text} is not a real double eigenvalue "
                               f"of one pair of frequencies j, n - j (its frequencies: {', '.join(map(str, pair))})",

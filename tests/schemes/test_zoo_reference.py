@@ -40,14 +40,25 @@ def test_the_reference_has_the_literature_s_eigenvalues(name, n):
 
 
 @pytest.mark.parametrize("n", range(3, 9))
-def test_doo_sabin_s_ngon_block_is_1_half_half_and_quarters(n):
-    # the n-gon's own points map among themselves: their block is the circulant of the weights
-    matrix = ref.dual_matrix(n, ref.doo_sabin_weights)[0]
-    labels = ref.dual_matrix(n, ref.doo_sabin_weights)[1]
+def test_doo_sabin_s_ngon_block_is_the_fourier_transform_of_its_weights(n):
+    # the n-gon's own points map among themselves: their block is the circulant of the weights, so its eigenvalues
+    # are the weights' discrete Fourier transform (derived here, not typed in)
+    matrix, labels = ref.dual_matrix(n, ref.doo_sabin_weights)
     ngon = [i for i, (_, a, b) in enumerate(labels) if a == b == 0]
-    block = matrix[np.ix_(ngon, ngon)]
-    expected = sorted([1.0, 0.5, 0.5] + [0.25] * (n - 3), reverse=True)
-    assert np.allclose(sorted(np.linalg.eigvals(block).real, reverse=True), expected, atol=1e-12)
+    block = np.linalg.eigvals(matrix[np.ix_(ngon, ngon)])
+    transform = np.fft.fft(ref.doo_sabin_weights(n))
+    assert np.allclose(sorted(block.real, reverse=True), sorted(transform.real, reverse=True), atol=1e-12)
+    assert np.allclose(block.imag, 0, atol=1e-12) and np.allclose(transform.imag, 0, atol=1e-12)
+
+
+@pytest.mark.parametrize("n", range(3, 9))
+def test_doo_sabin_s_transform_is_doo_and_sabin_s_1_half_quarter(n):
+    # a separate check against the source's closed form (D. Doo and M. Sabin, 1978, Behaviour of recursive division
+    # surfaces near extraordinary points: 1, then 1/2 twice, then 1/4), as FAMILIES["doo-sabin"] records it
+    transform = sorted(np.fft.fft(ref.doo_sabin_weights(n)).real, reverse=True)
+    facts = FAMILIES["doo-sabin"]
+    literature = [1.0] + [float(facts.subdominant)] * facts.multiplicity + [float(facts.rest_at_most)] * (n - 3)
+    assert np.allclose(transform, literature, atol=1e-12)
 
 
 # A walker over the reference meshes: the shipped files' terms applied as the stencil model defines its walks.

@@ -191,6 +191,33 @@ def sqrt3_matrix(n: int) -> np.ndarray:
     return full[:, keep]
 
 
+def sqrt3_two_ring_matrix(n: int) -> np.ndarray:
+    """Two sqrt(3) steps on the 2-ring: the 1-ring of :func:`sqrt3_matrix`, then ``(s, 2, 0)`` (the neighbour of
+    ``p_s`` opposite the centre, three places round its ring of six) and ``(s, 1, 1)`` (the neighbour ``p_s`` and
+    ``p_(s+1)`` share besides the centre), found the same way round the new centre and its new ring."""
+    mesh = Mesh(triangle_disk(n, 6))
+    points = _unit(mesh.vertices)
+    once, points1 = _sqrt3_step(mesh, points)
+    twice, points2 = _sqrt3_step(once, points1)
+    triangles = {f: i for i, f in enumerate(once.faces)}
+
+    def two_ring(m: Mesh, centre, ring: list) -> list:
+        beyond = [m.ring(p, centre)[3] for p in ring]
+        shared = [next(u for u in m.ring(ring[s], centre) if u != centre and u not in ring and u in m.ring(ring[(s + 1) % n], centre))
+                  for s in range(n)]
+        return [centre, *ring, *beyond, *shared]
+
+    old = two_ring(mesh, CENTRE, [(s, 1, 0) for s in range(n)])
+    new_ring = [("f", triangles[(("v", CENTRE), ("f", mesh.left[((s, 1, 0), CENTRE)]), ("f", mesh.left[(CENTRE, (s, 1, 0))]))])
+                for s in range(n)]
+    new = two_ring(twice, ("v", ("v", CENTRE)), new_ring)
+    assert old[1 + n:1 + 2 * n] == [(s, 2, 0) for s in range(n)] and old[1 + 2 * n:] == [(s, 1, 1) for s in range(n)]
+    full = np.array([points2[v] for v in new])
+    keep = [mesh.vertices.index(v) for v in old]
+    assert np.abs(np.delete(full, keep, axis=1)).max() < 1e-15, "the 2-ring is not closed under two steps"
+    return full[:, keep]
+
+
 def _butterfly_weights(k: int) -> list[float]:
     """Zorin, Schroeder and Sweldens' weights s_j on the neighbours of an end of valence k != 6 (e_0 the other end)."""
     if k == 3:

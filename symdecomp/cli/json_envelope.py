@@ -30,8 +30,9 @@ __all__ = ["ENVELOPE_KEYS", "envelope", "json_inputs", "json_schema", "print_jso
 #: The keys every command's ``--json`` object starts with.
 ENVELOPE_KEYS = ("command", "inputs", "version")
 
-#: Parsed arguments that are the parser's bookkeeping, not the command's inputs.
-_NOT_INPUTS = {"func", "command", "_given", "json"}
+#: Parsed arguments that are the parser's bookkeeping, not the command's inputs (with every name starting with ``_``,
+#: such as the marker a parser sets for the sharp options it has).
+_NOT_INPUTS = {"func", "command", "json"}
 
 
 def _as_json(value):
@@ -52,7 +53,7 @@ def _as_json(value):
 
 def json_inputs(args) -> dict:
     """The command's inputs: every parsed argument (defaults included) as JSON, in the parser's order."""
-    return {key: _as_json(value) for key, value in vars(args).items() if key not in _NOT_INPUTS}
+    return {key: _as_json(value) for key, value in vars(args).items() if key not in _NOT_INPUTS and not key.startswith("_")}
 
 
 def envelope(command: str, inputs: dict, results) -> dict:

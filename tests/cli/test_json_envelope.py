@@ -114,6 +114,13 @@ def test_inputs_are_json_a_scheme_by_name_and_inf_as_text(capsys):
     assert inputs["depth"] == 0 and inputs["valences"] is None
 
 
+def test_inputs_hold_no_parser_bookkeeping(capsys):
+    """A parser's markers (names starting with ``_``: the sharp options' own) are not the user's inputs."""
+    assert main(["spectrum", "5", "--json"]) == 0
+    inputs = json.loads(capsys.readouterr().out)["inputs"]
+    assert [k for k in inputs if k.startswith("_")] == [] and inputs["boundary"] is False
+
+
 def test_a_long_list_is_printed_one_row_per_line_and_reads_back_the_same(capsys):
     """A top-level list past ROWS_PER_LINE (25,000 vertices of a scan) is printed one compact row per line: the
     indenting encoder is pure Python; the object read back is the one given."""

@@ -19,10 +19,10 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
 Targets (issue 33): N = 3..128 for each scheme within 3 times the baseline's seconds (b), measured in
 the same run, and within 300 MB, still certified (issue 24's were 15 s and 300 MB). The file's own
 construction of the exact patch matrices is part of (a) and not of (b). Last measured (x86_64, 2 cores,
-load 3.1 at the start, one run of this benchmark, with a test run started beside it, so the wall-clock
-figures carry extra load; the CPU figures less so): Catmull-Clark 5.6 s wall, 4.8 s CPU, 105 MB beside
-numpy's 1.43 s, 1.07 s (3.9 times wall, 4.5 CPU: not met; the run before this code: 3.0 wall, 5.3 CPU, at load 1.3);
-Loop 6.5 s wall, 3.0 s CPU, 85 MB beside 0.70 s, 0.28 s (9.3 times wall, 10.6 CPU: not met; before: about 14 and 13). The guide's
+load 0.3 at the start, nothing else running, one run of this benchmark): Catmull-Clark 3.6 s wall, 6.3 s CPU,
+105 MB beside numpy's 1.18 s (3.0 times wall, 5.4 CPU: at the limit, just over it); Loop 1.6 s wall, 2.5 s CPU,
+86 MB beside numpy's 0.26 s (6.3 times wall, 9.7 CPU: not met; about 0.6 s of it is the start-up, sympy's import).
+The guide's
 evaldata page says what is left. Run from the repository root::
 
     python benchmarks/bench_evaldata.py           # N = 3..128

@@ -1,0 +1,45 @@
+"""The paper's claims for a scheme of the zoo: which apply, and why the others do not.
+
+The checks of the registry compute with the 1-ring primal model (:class:`~symdecomp.schemes.scheme.Scheme`);
+a scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model by
+:data:`~symdecomp.claims.applicability.ZOO_REQUIREMENTS` first, and the first unmet requirement is the
+``not applicable`` reason. A claim whose statement is not tied to the 1-ring (the circulant structure of the
+subdivision matrix, C1 at the extraordinary element, the spectrum of the full matrix) is named with the
+command of the zoo engine that answers it for this scheme (:data:`ENGINE_COMMANDS`), since its check is
+written for 1-ring primal schemes only.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+from symdecomp.claims.applicability import ZOO_REQUIREMENTS
+from symdecomp.claims.registry import CheckResult, Status, Text, Verbatim, get_claim
+from symdecomp.schemes.stencils import StencilScheme
+
+__all__ = ["ENGINE_COMMANDS", "zoo_claim_result"]
+
+#: The claim modules whose statements hold beyond the 1-ring: what they state, and the command that answers it.
+ENGINE_COMMANDS = {
+    "symdecomp.claims.s2_circulants": ("the subdivision matrix is block-circulant round the extraordinary element", "spectrum"),
+    "symdecomp.claims.s5_1_tangent_c1": ("C1 at the extraordinary element", "c1"),
+    "symdecomp.claims.s6_full_spectrum": ("the spectrum of the full subdivision matrix", "check"),
+}
+
+
+def zoo_claim_result(label: str, scheme: StencilScheme) -> CheckResult:
+    """The ``not applicable`` result of the claim ``label`` for a zoo scheme, with the reason computed from the scheme."""
+    claim = get_claim(label)
+    if claim.module in ENGINE_COMMANDS:
+        what, command = ENGINE_COMMANDS[claim.module]
+        reason = Text("the statement (", what, ") applies to the zoo scheme ", Verbatim(repr(scheme.name)),
+                      ", but its check is written for 1-ring primal schemes only; the zoo engine's result is in ",
+                      Verbatim(f"{command} --scheme {scheme.name}"))
+    else:
+        reason = next((r for r in (req.unmet(scheme) for req in ZOO_REQUIREMENTS) if r is not None), None)
+        if reason is None:
+            reason = Text("the zoo scheme ", Verbatim(repr(scheme.name)), " meets the 1-ring primal model, but the check "
+                          "computes with rules given in the 1-ring format (edge, face and vertex weights); give the "
+                          "scheme in that format")
+    result = CheckResult(Status.NOT_APPLICABLE, Text(str(reason)))
+    return dataclasses.replace(result, parameter=claim.parameter)

@@ -29,9 +29,9 @@ def register(sub) -> None:
         "Each row also gives the scope of its verdict (every n, range of n, single case; every k, range of k for "
         "the claims about sectors of k faces at sharp vertices), and the last line counts "
         "the verdicts established for every n (proved, or an erratum whose correction is proved for every n with an "
-        "exact counterexample). A scheme of the zoo lists every claim as well: each is 'not applicable', with the "
-        "reason computed from the scheme (its topology, support or lattice), or with the zoo command that answers "
-        "the statement for it.",
+        "exact counterexample). A scheme of the zoo lists every claim as well: those of Section 2, which involve no "
+        "scheme, are checked; the others are 'not applicable', with the reason computed from the scheme (its "
+        "topology, support or lattice), or with the zoo command that answers the statement for it.",
     )
     flag(p, "--json", help="print the one JSON shape (docs: File formats, --json) with one row per claim: {label, section, title, "
          "status, scope, evidence, ...}")
@@ -80,7 +80,7 @@ def run(args) -> int:
     if isinstance(args.scheme, Scheme):
         checked = check_claims([c.label for c in claims], args.scheme, budget=args.budget, jobs=args.jobs, executor=args.executor)
     else:  # a scheme of the zoo: each claim's applicability, from the scheme's model
-        checked = (zoo_claim_result(c.label, args.scheme) for c in claims)
+        checked = (zoo_claim_result(c.label, args.scheme, budget=args.budget) for c in claims)
     for c, r in zip(claims, progress(checked, len(claims), "checking claims", enabled=not (args.no_progress or args.quiet or args.json))):
         results.append(r)
         row = {

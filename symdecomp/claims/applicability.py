@@ -37,8 +37,8 @@ from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text, Verbatim
 from symdecomp.errors import InvalidSchemeError
-from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.lattice import lattice
+from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.schemes.topology import topology_of

@@ -198,8 +198,8 @@ class Text:
     #: The words and objects, in reading order.
     parts: tuple
 
-    def __init__(self, *parts):
-        flat = []
+    def __init__(self, *parts: object) -> None:
+        flat: list[object] = []
         for part in parts:
             flat.extend(part.parts if isinstance(part, Text) else (part,))
         object.__setattr__(self, "parts", tuple(flat))

@@ -30,10 +30,19 @@ ENGINE_COMMANDS = {
 }
 
 
+def _first_unmet(scheme: StencilScheme) -> str | Text | None:
+    """The reason of the first zoo requirement ``scheme`` does not meet, or ``None``."""
+    for requirement in ZOO_REQUIREMENTS:  # the zoo's requirements take either model of a scheme (applicability)
+        if (reason := requirement.unmet(scheme)) is not None:  # type: ignore[arg-type]
+            return reason
+    return None
+
+
 def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None = None) -> CheckResult:
     """The result of the claim ``label`` for a zoo scheme: checked when it involves no scheme, else ``not applicable``
     with the reason computed from the scheme."""
     claim = get_claim(label)
+    reason: str | Text
     if claim.module in SCHEME_FREE:
         result = check_claim(label, budget=budget)  # the check reads no scheme: its verdict is the same for every one
         return dataclasses.replace(result, evidence=Text("the statement involves no scheme: ", result.evidence))
@@ -43,10 +52,9 @@ def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None 
                       ", but its check is written for 1-ring primal schemes only; the zoo engine's result is in ",
                       Verbatim(f"{command} --scheme {scheme.name}"))
     else:
-        reason = next((r for r in (req.unmet(scheme) for req in ZOO_REQUIREMENTS) if r is not None), None)
-        if reason is None:
-            reason = Text("the zoo scheme ", Verbatim(repr(scheme.name)), " meets the 1-ring primal model, but the check "
-                          "computes with rules given in the 1-ring format (edge, face and vertex weights); give the "
-                          "scheme in that format")
+        unmet = _first_unmet(scheme)
+        reason = unmet if unmet is not None else Text(
+            "the zoo scheme ", Verbatim(repr(scheme.name)), " meets the 1-ring primal model, but the check computes with "
+            "rules given in the 1-ring format (edge, face and vertex weights); give the scheme in that format")
     result = CheckResult(Status.NOT_APPLICABLE, Text(str(reason)))
     return dataclasses.replace(result, parameter=claim.parameter)

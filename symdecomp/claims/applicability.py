@@ -24,7 +24,7 @@ The paper's claims are about the ``(2n+1)``-point 1-ring of a vertex of a quad m
 step. A scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that
 model, from its data, by :data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them):
 
-* :data:`PAPER_LATTICE`: the lattice is one the paper's statements are about (quad meshes);
+* :data:`QUAD_MESHES`: the lattice is one the paper's statements are about (quad meshes);
 * :data:`PRIMAL_VERTEX`: the step is primal and the extraordinary element is a vertex;
 * :data:`ONE_RING_SUPPORT`: every rule's walks cross at most one edge from the anchor's faces.
 """
@@ -47,7 +47,7 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import sin_jtheta as SIN
 
 __all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH", "closed_form_obstacle",
-           "PAPER_LATTICE", "PRIMAL_VERTEX", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS"]
+           "QUAD_MESHES", "PRIMAL_VERTEX", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS"]
 
 
 def _block_term(scheme: Scheme, symbol) -> tuple[str, sp.Expr] | None:
@@ -162,13 +162,13 @@ def _walk_beyond_one_ring(scheme: Scheme | StencilScheme) -> Text | None:
 
 
 #: The paper's lattice (quad meshes), asked of the lattice object.
-PAPER_LATTICE = Requirement("a quad mesh", _off_paper_lattice)
+QUAD_MESHES = Requirement("a quad mesh", _off_paper_lattice)
 #: A primal step, centred on an extraordinary vertex.
 PRIMAL_VERTEX = Requirement("a primal step at an extraordinary vertex", _not_primal_vertex)
 #: Rules whose stencils stay in the 1-ring (walks crossing at most one edge).
 ONE_RING_SUPPORT = Requirement("rules on the 1-ring", _walk_beyond_one_ring)
 #: What a scheme of the zoo is tested against before any claim of the paper, in order.
-ZOO_REQUIREMENTS = (PRIMAL_VERTEX, ONE_RING_SUPPORT, PAPER_LATTICE)
+ZOO_REQUIREMENTS = (PRIMAL_VERTEX, ONE_RING_SUPPORT, QUAD_MESHES)
 
 
 def closed_form_obstacle(scheme: Scheme) -> str | None:

@@ -12,7 +12,7 @@ import jsonschema
 import pytest
 
 from symdecomp.claims import Status, all_claims, check_claim
-from symdecomp.claims.applicability import ONE_RING_SUPPORT, PAPER_LATTICE, PRIMAL_VERTEX, ZOO_REQUIREMENTS
+from symdecomp.claims.applicability import ONE_RING_SUPPORT, PRIMAL_VERTEX, QUAD_MESHES, ZOO_REQUIREMENTS
 from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, SCHEME_FREE, zoo_claim_result
 from symdecomp.cli import main
 from symdecomp.cli.json_envelope import json_schema
@@ -20,7 +20,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.scheme import catmull_clark
 from tests.analysis.zoo_engine_schemes import catmull_clark_stencils, doo_sabin_stencils, loop_stencils
 
-#: The shipped zoo schemes and the requirement each meets last before failing: the table of the issue.
+#: The shipped zoo schemes and the first zoo requirement each does not meet: the table of the issue.
 FIRST_UNMET = {"doo-sabin": PRIMAL_VERTEX, "midedge": PRIMAL_VERTEX, "sqrt3": PRIMAL_VERTEX,
                "modified-butterfly": ONE_RING_SUPPORT}
 
@@ -66,8 +66,8 @@ def test_each_requirement_s_verdict_flips_with_the_scheme():
     assert PRIMAL_VERTEX.unmet(cc) is None
     assert PRIMAL_VERTEX.unmet(dataclasses.replace(cc, topology="dual")) is not None  # one field changed, nothing else
     assert ONE_RING_SUPPORT.unmet(loop_stencils()) is None and ONE_RING_SUPPORT.unmet(primal_file) is not None
-    assert PAPER_LATTICE.unmet(cc) is None and PAPER_LATTICE.unmet(loop_stencils()) is not None
-    assert PAPER_LATTICE.unmet(doo_sabin_stencils()) is None  # Doo-Sabin is on quads: its topology is what fails
+    assert QUAD_MESHES.unmet(cc) is None and QUAD_MESHES.unmet(loop_stencils()) is not None
+    assert QUAD_MESHES.unmet(doo_sabin_stencils()) is None  # Doo-Sabin is on quads: its topology is what fails
     assert all(req.unmet(catmull_clark()) is None for req in ZOO_REQUIREMENTS)  # the 1-ring primal model meets them all
 
 

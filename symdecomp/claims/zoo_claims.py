@@ -26,7 +26,7 @@ SCHEME_FREE = ("symdecomp.claims.s2_background", "symdecomp.claims.s2_circulants
 #: The claim modules whose statements hold beyond the 1-ring: what they state, and the command that answers it.
 ENGINE_COMMANDS = {
     "symdecomp.claims.s5_1_tangent_c1": ("C1 at the extraordinary element", "c1"),
-    "symdecomp.claims.s6_full_spectrum": ("the spectrum of the full subdivision matrix", "check"),
+    "symdecomp.claims.s6_full_spectrum": ("the spectrum of the full subdivision matrix", "check --certify"),
 }
 
 
@@ -50,7 +50,7 @@ def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None 
         what, command = ENGINE_COMMANDS[claim.module]
         reason = Text("the statement (", what, ") applies to the zoo scheme ", Verbatim(repr(scheme.name)),
                       ", but its check is written for 1-ring primal schemes only; the zoo engine's result is in ",
-                      Verbatim(f"{command} --scheme {scheme.name}"))
+                      Verbatim(f"{command} --scheme {scheme.name} --n N"))
     else:
         unmet = _first_unmet(scheme)
         reason = unmet if unmet is not None else Text(

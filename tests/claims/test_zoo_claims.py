@@ -48,7 +48,7 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
             assert row["evidence"].startswith("the statement involves no scheme: ")
         elif c.module in ENGINE_COMMANDS:
             assert row["status"] == Status.NOT_APPLICABLE.value
-            assert row["evidence"].endswith(f"{ENGINE_COMMANDS[c.module][1]} --scheme {name}")
+            assert row["evidence"].endswith(f"{ENGINE_COMMANDS[c.module][1]} --scheme {name} --n N")
         else:
             assert (row["status"], row["evidence"]) == (Status.NOT_APPLICABLE.value, reason)
 

@@ -60,7 +60,6 @@ def section(text: str) -> str:
 def run(args) -> int:
     from symdecomp.claims import Status, all_claims, scope_summary
     from symdecomp.claims.batch import check_claims
-    from symdecomp.claims.zoo_claims import zoo_claim_result
     from symdecomp.schemes.scheme import Scheme
 
     if isinstance(args.scheme, Scheme):
@@ -77,10 +76,7 @@ def run(args) -> int:
             raise InvalidInputError(f"no claim labelled {', '.join(sorted(unknown))}")
         claims = [c for c in claims if c.label in wanted]
     rows, results = [], []
-    if isinstance(args.scheme, Scheme):
-        checked = check_claims([c.label for c in claims], args.scheme, budget=args.budget, jobs=args.jobs, executor=args.executor)
-    else:  # a scheme of the zoo: each claim's applicability, from the scheme's model
-        checked = (zoo_claim_result(c.label, args.scheme, budget=args.budget) for c in claims)
+    checked = check_claims([c.label for c in claims], args.scheme, budget=args.budget, jobs=args.jobs, executor=args.executor)
     for c, r in zip(claims, progress(checked, len(claims), "checking claims", enabled=not (args.no_progress or args.quiet or args.json))):
         results.append(r)
         row = {

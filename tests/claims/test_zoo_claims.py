@@ -13,6 +13,7 @@ import pytest
 
 from symdecomp.claims import Status, all_claims, check_claim
 from symdecomp.claims.applicability import ONE_RING_SUPPORT, PRIMAL_VERTEX, QUAD_MESHES, ZOO_REQUIREMENTS
+from symdecomp.claims.batch import check_claims
 from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, SCHEME_FREE, zoo_claim_result
 from symdecomp.cli import main
 from symdecomp.cli.json_envelope import json_schema
@@ -95,3 +96,11 @@ def test_a_malformed_zoo_file_is_one_line_and_exit_2(tmp_path, capsys):
     assert main(["claims", "--scheme", str(path)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "--scheme" in err
+
+
+def test_the_api_answers_a_zoo_scheme_as_the_command_does():
+    scheme = load_scheme("modified-butterfly")
+    label = next(c.label for c in all_claims() if c.module not in SCHEME_FREE and c.module not in ENGINE_COMMANDS)
+    result = check_claim(label, scheme)
+    assert (result.status, str(result.evidence)) == (Status.NOT_APPLICABLE, str(ONE_RING_SUPPORT.unmet(scheme)))
+    assert [r.status for r in check_claims([label], scheme, jobs=2)] == [Status.NOT_APPLICABLE]

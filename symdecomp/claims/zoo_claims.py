@@ -48,7 +48,7 @@ def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None 
         return dataclasses.replace(result, evidence=Text("the statement involves no scheme: ", result.evidence))
     if claim.module in ENGINE_COMMANDS:
         what, command = ENGINE_COMMANDS[claim.module]
-        reason = Text("the statement (", what, ") applies to the zoo scheme ", Verbatim(repr(scheme.name)),
+        reason = Text("the question the claim answers (", what, ") applies to the zoo scheme ", Verbatim(repr(scheme.name)),
                       ", but its check is written for 1-ring primal schemes only; the zoo engine's result is in ",
                       Verbatim(f"{command} --scheme {scheme.name} --n N"))
     else:

@@ -18,6 +18,7 @@ from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, SCHEME_FREE, zoo_claim_
 from symdecomp.cli import main
 from symdecomp.cli.json_envelope import json_schema
 from symdecomp.schemes.files import load_scheme
+from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from tests.analysis.zoo_engine_schemes import catmull_clark_stencils, doo_sabin_stencils, loop_stencils
 
@@ -52,6 +53,13 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
             assert row["evidence"].endswith(f"{ENGINE_COMMANDS[c.module][1]} --scheme {name} --n N")
         else:
             assert (row["status"], row["evidence"]) == (Status.NOT_APPLICABLE.value, reason)
+
+
+def test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes():
+    for c in all_claims():
+        if c.module in SCHEME_FREE:
+            a, b = check_claim(c.label, catmull_clark()), check_claim(c.label, loop())
+            assert (a.status, str(a.evidence)) == (b.status, str(b.evidence))
 
 
 def test_the_reasons_name_the_scheme_s_own_data():

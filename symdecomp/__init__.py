@@ -184,7 +184,8 @@ nothing else.
                    many claims at once on the shared pool (``batch``); what several checks share: the requirements a claim declares
                    (``applicability``), computed evidence (``evidence``), comparisons valence by valence for rules in n
                    (``per_valence``), the paper's notation
-                   (``notation``), example CB-matrices (``cb_examples``)
+                   (``notation``), example CB-matrices (``cb_examples``); which claims apply to a scheme of
+                   the zoo, and why the others do not (``zoo_claims``)
 ``output/``        LaTeX (``latex``, one entry point aslatex; formulas that fit the page,
                    ``texlayout``), results in a notebook: short HTML tables and LaTeX (``display``),
                    the artifact table's columns (``artifact_table``), the zoo's families derived

@@ -19,6 +19,14 @@ meet one (instead of failing inside sympy, or repeating the same guard in every 
   valence, certified balls) need every weight to be a number at each valence.
 * :data:`WHOLE_MESH`: the supports of Section 3 live on whole quad meshes, so the 1-ring rules must
   be rules of the mesh (:func:`symdecomp.schemes.mesh.mesh_rules`).
+
+The paper's claims are about the ``(2n+1)``-point 1-ring of a vertex of a quad mesh refined by a primal
+step. A scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that
+model, from its data, by :data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them):
+
+* :data:`QUAD_MESHES`: the lattice is one the paper's statements are about (quad meshes);
+* :data:`PRIMAL_VERTEX`: the step is primal and the extraordinary element is a vertex;
+* :data:`ONE_RING_SUPPORT`: every rule's walks cross at most one edge from the anchor's faces.
 """
 
 from __future__ import annotations
@@ -29,13 +37,17 @@ from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text, Verbatim
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.scheme import Scheme
+from symdecomp.schemes.stencils import StencilScheme
+from symdecomp.schemes.topology import topology_of
 from symdecomp.symbols import cos_jtheta as C
 from symdecomp.symbols import n as N
 from symdecomp.symbols import sin_jtheta as SIN
 
-__all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH", "closed_form_obstacle"]
+__all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH", "closed_form_obstacle",
+           "QUAD_MESHES", "PRIMAL_VERTEX", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS"]
 
 
 def _block_term(scheme: Scheme, symbol) -> tuple[str, sp.Expr] | None:
@@ -110,6 +122,53 @@ FACE_NEIGHBOURS = Requirement("a quad mesh (face neighbours b_i)", _no_face_rule
 NO_FREE_PARAMETERS = Requirement("no free parameters", _free_parameters)
 #: Rules of a whole quad mesh (Section 3's supports).
 WHOLE_MESH = Requirement("rules of a whole quad mesh", _not_mesh_rules)
+
+
+_ONE_RING = "the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a primal step"
+
+
+def _off_paper_lattice(scheme: Scheme | StencilScheme) -> Text | None:
+    """Why the scheme's lattice is not the paper's (quad meshes), or ``None``."""
+    if lattice(scheme.lattice).paper_claims:
+        return None
+    return Text("the scheme ", Verbatim(repr(scheme.name)), f" subdivides {lattice(scheme.lattice)} meshes; ", _ONE_RING)
+
+
+def _not_primal_vertex(scheme: Scheme | StencilScheme) -> Text | None:
+    """Why the scheme's extraordinary element is not a vertex of a primal step, or ``None``."""
+    if not isinstance(scheme, StencilScheme):
+        return None  # a Scheme is the 1-ring primal model itself
+    topology = topology_of(scheme)
+    if topology.name == "primal":
+        return None
+    if topology.centre == "face":
+        return Text("the extraordinary element is an n-sided face of a dual scheme (", Verbatim(repr(scheme.name)),
+                    " makes a new point per face corner); ", _ONE_RING)
+    return Text("the scheme ", Verbatim(repr(scheme.name)), f" has the {topology.name.replace('sqrt', '√')} topology "
+                f"(analysed over {scheme.steps} steps), not a primal step; ", _ONE_RING)
+
+
+def _walk_beyond_one_ring(scheme: Scheme | StencilScheme) -> Text | None:
+    """The first walk of a rule that crosses two or more edges (its stencil leaves the 1-ring), or ``None``."""
+    if not isinstance(scheme, StencilScheme):
+        return None
+    for kind in scheme.kinds:
+        for rule in kind.rules:
+            for term in rule.terms:
+                if term.walk.count("twin") >= 2:
+                    return Text(f"the {kind.kind} rule reaches two rings out (its walk ", Verbatim(repr(" ".join(term.walk))),
+                                " crosses two edges); ", _ONE_RING)
+    return None
+
+
+#: The paper's lattice (quad meshes), asked of the lattice object.
+QUAD_MESHES = Requirement("a quad mesh", _off_paper_lattice)
+#: A primal step, centred on an extraordinary vertex.
+PRIMAL_VERTEX = Requirement("a primal step at an extraordinary vertex", _not_primal_vertex)
+#: Rules whose stencils stay in the 1-ring (walks crossing at most one edge).
+ONE_RING_SUPPORT = Requirement("rules on the 1-ring", _walk_beyond_one_ring)
+#: What a scheme of the zoo is tested against before any claim of the paper, in order.
+ZOO_REQUIREMENTS = (PRIMAL_VERTEX, ONE_RING_SUPPORT, QUAD_MESHES)
 
 
 def closed_form_obstacle(scheme: Scheme) -> str | None:

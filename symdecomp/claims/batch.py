@@ -84,10 +84,11 @@ def check_claims(labels: Iterable[str], scheme=None, *, budget: float | None = D
     """:func:`~symdecomp.claims.registry.check_claim` for each label, in order, on at most ``jobs`` processes."""
     from symdecomp.parallel import ordered_map
     from symdecomp.schemes.scheme import catmull_clark, check_scheme
+    from symdecomp.schemes.stencils import StencilScheme
 
     labels = [get_claim(label).label for label in labels]
-    scheme = catmull_clark() if scheme is None else check_scheme(scheme)
-    if jobs == 1:
+    scheme = catmull_clark() if scheme is None else scheme if isinstance(scheme, StencilScheme) else check_scheme(scheme)
+    if jobs == 1 or isinstance(scheme, StencilScheme):  # a zoo scheme's rows are read from its model: no pool
         yield from (check_claim(label, scheme, budget=budget) for label in labels)
         return
     items = work_items(labels)

@@ -74,6 +74,7 @@ from symdecomp.claims.guards import DEFAULT_BUDGET, BudgetExceeded, at_parameter
 from symdecomp.claims.order import BEYOND, module_ranks, section_key, section_modules
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
 from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
+from symdecomp.schemes.stencils import StencilScheme
 
 __all__ = [
     "Text", "Verbatim", "Status", "Scope", "erratum_scope", "ScopeSummary", "scope_summary", "Step", "CheckResult", "Claim",
@@ -198,8 +199,8 @@ class Text:
     #: The words and objects, in reading order.
     parts: tuple
 
-    def __init__(self, *parts):
-        flat = []
+    def __init__(self, *parts: object) -> None:
+        flat: list[object] = []
         for part in parts:
             flat.extend(part.parts if isinstance(part, Text) else (part,))
         object.__setattr__(self, "parts", tuple(flat))
@@ -419,7 +420,8 @@ def get_claim(label: str) -> Claim:
     return REGISTRY[label]
 
 
-def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | None = DEFAULT_BUDGET) -> CheckResult:
+def check_claim(label: str, scheme: Scheme | StencilScheme | None = None, *,
+                budget: float | None = DEFAULT_BUDGET) -> CheckResult:
     """Check a claim for ``scheme`` (default: standard Catmull-Clark), once per scheme.
 
     A requirement the scheme does not meet, or a :class:`~symdecomp.errors.NotApplicableError` (or
@@ -429,10 +431,15 @@ def check_claim(label: str, scheme: Scheme | None = None, *, budget: float | Non
     limit) becomes ``undecided``, saying so. On a scheme with free parameters, a check that stops on
     them (a numeric comparison meeting a symbol) is ``not applicable`` with the reason, and a
     counterexample that is an expression in them is made concrete (:func:`unbound_parameters`).
+    A scheme of the zoo is answered by :func:`symdecomp.claims.zoo_claims.zoo_claim_result`.
     """
     if budget is not None and not (isinstance(budget, (int, float)) and not isinstance(budget, bool) and 0 < budget < 10**6):
         raise InvalidInputError(f"budget must be a number of seconds between 0 and 1e6, got {budget!r}")
     get_claim(label)
+    if isinstance(scheme, StencilScheme):
+        from symdecomp.claims.zoo_claims import zoo_claim_result  # imports this module
+
+        return zoo_claim_result(label, scheme, budget=budget)
     result = _check_claim(label, catmull_clark() if scheme is None else check_scheme(scheme), budget)
     return dataclasses.replace(result, parameter=get_claim(label).parameter)
 

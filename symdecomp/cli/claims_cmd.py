@@ -29,14 +29,16 @@ def register(sub) -> None:
         "Each row also gives the scope of its verdict (every n, range of n, single case; every k, range of k for "
         "the claims about sectors of k faces at sharp vertices), and the last line counts "
         "the verdicts established for every n (proved, or an erratum whose correction is proved for every n with an "
-        "exact counterexample).",
+        "exact counterexample). A scheme of the zoo lists every claim as well: those of Section 2, which involve no "
+        "scheme, are checked; the others are 'not applicable', with the reason computed from the scheme (its "
+        "topology, support or lattice), or with the zoo command that answers the statement for it.",
     )
     flag(p, "--json", help="print the one JSON shape (docs: File formats, --json) with one row per claim: {label, section, title, "
          "status, scope, evidence, ...}")
     p.add_argument("--section", type=section, action=Once, help="only the claims of this section of the paper (e.g. 5.1), or of the toolkit's "
                    "own claims beyond the paper (B, B.1)")
     p.add_argument("--label", action="append", help="only this claim (repeatable), e.g. --label 'Eq. 34'")
-    add_scheme_option(p)
+    add_scheme_option(p, zoo=True)
     add_budget_option(p)
     add_pool_options(p, items="claims")
     flag(p, "--no-progress", help="do not draw a progress bar on stderr (the same as --quiet)")
@@ -58,8 +60,10 @@ def section(text: str) -> str:
 def run(args) -> int:
     from symdecomp.claims import Status, all_claims, scope_summary
     from symdecomp.claims.batch import check_claims
+    from symdecomp.schemes.scheme import Scheme
 
-    refuse_non_quad(args.scheme, "claims")
+    if isinstance(args.scheme, Scheme):
+        refuse_non_quad(args.scheme, "claims")
     claims = all_claims()
     if args.section:
         claims = [c for c in claims if c.section == args.section or c.section.startswith(args.section + ".")]

@@ -1,0 +1,60 @@
+"""The paper's claims for a scheme of the zoo: which apply, and why the others do not.
+
+The checks of the registry compute with the 1-ring primal model (:class:`~symdecomp.schemes.scheme.Scheme`);
+a scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model by
+:data:`~symdecomp.claims.applicability.ZOO_REQUIREMENTS` first, and the first unmet requirement is the
+``not applicable`` reason. A claim whose statement is not tied to the 1-ring (C1 at the extraordinary
+element, the closed forms being the spectrum of the full matrix) is named with the command of the zoo engine
+that answers it for this scheme (:data:`ENGINE_COMMANDS`), since its check is written for 1-ring primal
+schemes only. The claims of Section 2 (n-gons, the Fourier matrix, circulants) involve no scheme
+(:data:`SCHEME_FREE`): they are checked as for any scheme, and say so.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+from symdecomp.claims.applicability import ZOO_REQUIREMENTS
+from symdecomp.claims.registry import CheckResult, Status, Text, Verbatim, check_claim, get_claim
+from symdecomp.schemes.stencils import StencilScheme
+
+__all__ = ["ENGINE_COMMANDS", "SCHEME_FREE", "zoo_claim_result"]
+
+#: The claim modules whose statements and checks involve no scheme (the background of Section 2).
+SCHEME_FREE = ("symdecomp.claims.s2_background", "symdecomp.claims.s2_circulants")
+
+#: The claim modules whose statements hold beyond the 1-ring: what they state, and the command that answers it.
+ENGINE_COMMANDS = {
+    "symdecomp.claims.s5_1_tangent_c1": ("C1 at the extraordinary element", "c1"),
+    "symdecomp.claims.s6_full_spectrum": ("the spectrum of the full subdivision matrix", "check --certify"),
+}
+
+
+def _first_unmet(scheme: StencilScheme) -> str | Text | None:
+    """The reason of the first zoo requirement ``scheme`` does not meet, or ``None``."""
+    for requirement in ZOO_REQUIREMENTS:  # the zoo's requirements take either model of a scheme (applicability)
+        if (reason := requirement.unmet(scheme)) is not None:  # type: ignore[arg-type]
+            return reason
+    return None
+
+
+def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None = None) -> CheckResult:
+    """The result of the claim ``label`` for a zoo scheme: checked when it involves no scheme, else ``not applicable``
+    with the reason computed from the scheme."""
+    claim = get_claim(label)
+    reason: str | Text
+    if claim.module in SCHEME_FREE:
+        result = check_claim(label, budget=budget)  # the check reads no scheme: its verdict is the same for every one
+        return dataclasses.replace(result, evidence=Text("the statement involves no scheme: ", result.evidence))
+    if claim.module in ENGINE_COMMANDS:
+        what, command = ENGINE_COMMANDS[claim.module]
+        reason = Text("the question the claim answers (", what, ") applies to the zoo scheme ", Verbatim(repr(scheme.name)),
+                      ", but its check is written for 1-ring primal schemes only; the zoo engine's result is in ",
+                      Verbatim(f"{command} --scheme {scheme.name} --n N"))
+    else:
+        unmet = _first_unmet(scheme)
+        reason = unmet if unmet is not None else Text(
+            "the zoo scheme ", Verbatim(repr(scheme.name)), " meets the 1-ring primal model, but the check computes with "
+            "rules given in the 1-ring format (edge, face and vertex weights); give the scheme in that format")
+    result = CheckResult(Status.NOT_APPLICABLE, Text(str(reason)))
+    return dataclasses.replace(result, parameter=claim.parameter)

@@ -1,0 +1,114 @@
+"""``claims --scheme <zoo scheme>`` (issue 30): every claim listed, its status computed from the scheme's model.
+
+The claims of Section 2 involve no scheme and keep the verdicts they have for every scheme; each other claim is
+``not applicable`` with the reason of the first zoo requirement the scheme does not meet (its topology, its
+support, its lattice), or, where the statement reaches beyond the 1-ring, with the zoo command that answers it.
+"""
+
+import dataclasses
+import json
+
+import jsonschema
+import pytest
+
+from symdecomp.claims import Status, all_claims, check_claim
+from symdecomp.claims.applicability import ONE_RING_SUPPORT, PRIMAL_VERTEX, QUAD_MESHES, ZOO_REQUIREMENTS
+from symdecomp.claims.batch import check_claims
+from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, SCHEME_FREE, zoo_claim_result
+from symdecomp.cli import main
+from symdecomp.cli.json_envelope import json_schema
+from symdecomp.schemes.files import load_scheme
+from symdecomp.schemes.loop import loop
+from symdecomp.schemes.scheme import catmull_clark
+from tests.analysis.zoo_engine_schemes import catmull_clark_stencils, doo_sabin_stencils, loop_stencils
+
+#: The shipped zoo schemes and the first zoo requirement each does not meet: the table of the issue.
+FIRST_UNMET = {"doo-sabin": PRIMAL_VERTEX, "midedge": PRIMAL_VERTEX, "sqrt3": PRIMAL_VERTEX,
+               "modified-butterfly": ONE_RING_SUPPORT}
+
+
+def _first_unmet(scheme):
+    return next(req for req in ZOO_REQUIREMENTS if req.unmet(scheme) is not None)
+
+
+@pytest.mark.parametrize("name", sorted(FIRST_UNMET))
+def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
+    assert main(["claims", "--scheme", name, "--json", "--no-progress"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    jsonschema.validate(data, json_schema())
+    rows = {r["label"]: r for r in data["rows"]}
+    claims = all_claims()
+    assert list(rows) == [c.label for c in claims]
+    scheme = load_scheme(name)
+    assert _first_unmet(scheme) is FIRST_UNMET[name]
+    reason = str(FIRST_UNMET[name].unmet(scheme))
+    for c in claims:
+        row = rows[c.label]
+        assert row["scheme"] == name
+        if c.module in SCHEME_FREE:  # no scheme in the statement: the verdict every scheme gets
+            assert row["status"] == check_claim(c.label).status.value
+            assert row["evidence"].startswith("the statement involves no scheme: ")
+        elif c.module in ENGINE_COMMANDS:
+            assert row["status"] == Status.NOT_APPLICABLE.value
+            assert row["evidence"].endswith(f"{ENGINE_COMMANDS[c.module][1]} --scheme {name} --n N")
+        else:
+            assert (row["status"], row["evidence"]) == (Status.NOT_APPLICABLE.value, reason)
+
+
+def test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes():
+    for c in all_claims():
+        if c.module in SCHEME_FREE:
+            a, b = check_claim(c.label, catmull_clark()), check_claim(c.label, loop())
+            assert (a.status, str(a.evidence)) == (b.status, str(b.evidence))
+
+
+def test_the_reasons_name_the_scheme_s_own_data():
+    assert "n-sided face of a dual scheme" in str(PRIMAL_VERTEX.unmet(load_scheme("doo-sabin")))
+    assert "√3 topology (analysed over 2 steps)" in str(PRIMAL_VERTEX.unmet(load_scheme("sqrt3")))
+    assert str(ONE_RING_SUPPORT.unmet(load_scheme("modified-butterfly"))).startswith("the edge rule reaches two rings out")
+
+
+def test_each_requirement_s_verdict_flips_with_the_scheme():
+    primal_file, dual_file = load_scheme("modified-butterfly"), load_scheme("doo-sabin")
+    assert PRIMAL_VERTEX.unmet(primal_file) is None and PRIMAL_VERTEX.unmet(dual_file) is not None
+    cc = catmull_clark_stencils()
+    assert PRIMAL_VERTEX.unmet(cc) is None
+    assert PRIMAL_VERTEX.unmet(dataclasses.replace(cc, topology="dual")) is not None  # one field changed, nothing else
+    assert ONE_RING_SUPPORT.unmet(loop_stencils()) is None and ONE_RING_SUPPORT.unmet(primal_file) is not None
+    assert QUAD_MESHES.unmet(cc) is None and QUAD_MESHES.unmet(loop_stencils()) is not None
+    assert QUAD_MESHES.unmet(doo_sabin_stencils()) is None  # Doo-Sabin is on quads: its topology is what fails
+    assert all(req.unmet(catmull_clark()) is None for req in ZOO_REQUIREMENTS)  # the 1-ring primal model meets them all
+
+
+def test_a_zoo_scheme_meeting_the_model_is_told_to_use_the_one_ring_format():
+    label = next(c.label for c in all_claims() if c.module not in SCHEME_FREE and c.module not in ENGINE_COMMANDS)
+    result = zoo_claim_result(label, catmull_clark_stencils())
+    assert result.status is Status.NOT_APPLICABLE
+    assert "meets the 1-ring primal model" in str(result.evidence)
+
+
+def test_the_summary_line_counts_add_up(capsys):
+    assert main(["claims", "--scheme", "sqrt3", "--no-progress"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    head, counts = lines[-2].split(": ", 1)
+    tally = {status: int(k) for k, status in (part.split(" ", 1) for part in counts.split(", "))}
+    assert head == f"{len(all_claims())} claims" and sum(tally.values()) == len(all_claims())
+    listed = [line for line in lines[:-2] if not line.startswith(" ")]
+    assert {s: sum(f"  {s}  " in line for line in listed) for s in tally} == tally
+    assert lines[-1].startswith(f"verdict for every n: {tally.get('proved', 0)} of {len(all_claims())} ")
+
+
+def test_a_malformed_zoo_file_is_one_line_and_exit_2(tmp_path, capsys):
+    path = tmp_path / "bad.toml"
+    path.write_text('name = "x"\nmesh = "quad"\ntopology = "nowhere"\n')
+    assert main(["claims", "--scheme", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "--scheme" in err
+
+
+def test_the_api_answers_a_zoo_scheme_as_the_command_does():
+    scheme = load_scheme("modified-butterfly")
+    label = next(c.label for c in all_claims() if c.module not in SCHEME_FREE and c.module not in ENGINE_COMMANDS)
+    result = check_claim(label, scheme)
+    assert (result.status, str(result.evidence)) == (Status.NOT_APPLICABLE, str(ONE_RING_SUPPORT.unmet(scheme)))
+    assert [r.status for r in check_claims([label], scheme, jobs=2)] == [Status.NOT_APPLICABLE]

@@ -46,6 +46,7 @@ from symdecomp.algebra.cyclotomic import cyclotomic_value
 from symdecomp.analysis.charpoly import COSK
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_jordan import jordan_by_frequency, with_jordan
 from symdecomp.analysis.zoo_matrix import zoo_matrix
@@ -176,6 +177,8 @@ class ZooArtifacts:
     #: The regular valence's ``lambda_1`` and the sign of ``lambda_1 -`` it (``-1`` dense, ``0`` regular, ``1`` sparse).
     regular_lambda1: Eigenvalue | None = None
     density: int | None = None
+    #: ``lambda_1^2`` as decimal text (the certified ball squared), as ``lambda_1`` is shown; empty when not applicable.
+    lambda1_squared_text: str = ""
 
     @property
     def density_text(self) -> str:
@@ -190,6 +193,7 @@ class ZooArtifacts:
                 "regime": self.regime.value, "reason": self.reason, "cause": ", ".join(dict.fromkeys(k for m in self.mu for k in m.kinds)),
                 "lambda1": None if lam is None else lam.text, "lambda1_exact": None if lam is None or lam.exact is None else str(lam.exact),
                 "lambda1_squared": None if self.lambda1_squared is None else str(self.lambda1_squared),
+                "lambda1_squared_value": self.lambda1_squared_text or None,
                 "mu": [m.as_json() for m in self.mu]},
         }
 
@@ -277,7 +281,10 @@ def zoo_artifacts(scheme: StencilScheme, n: int, depth: int | None = None) -> Zo
     regime, reason, mu = _decide(n, lam, values[2:], blocks)
     square = None if lam.exact is None else sp.expand(lam.exact ** 2)
     regular, density = _density(scheme, zm.neighbourhood.regular_valence, lam, n, spectrum.rings)
-    return ZooArtifacts(n, scheme.name, scheme.steps, spectrum.rings, regime, reason, lam, square, mu, regular, density)
+    with flint.ctx.workprec(4 * spectrum.digits + 64):  # the ball's own precision decides the digits shown
+        square_text = acb_text(lam.value * lam.value, spectrum.digits)
+    return ZooArtifacts(n, scheme.name, scheme.steps, spectrum.rings, regime, reason, lam, square, mu, regular, density,
+                        square_text)
 
 
 def _density(scheme: StencilScheme, regular_n: int, lam: Eigenvalue, n: int, depth: int) -> tuple[Eigenvalue | None, int | None]:

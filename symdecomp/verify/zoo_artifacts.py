@@ -33,6 +33,7 @@ the central surface) needs their patch and masks: :data:`NOT_COMPUTED` says so i
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from dataclasses import dataclass
 
@@ -42,7 +43,7 @@ from sympy import QQ
 from sympy.polys.matrices import DomainMatrix
 
 from symdecomp.algebra.compile import compile_expression
-from symdecomp.algebra.cyclotomic import cyclotomic_value
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
 from symdecomp.analysis.charpoly import COSK
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.eigenvalue import Eigenvalue
@@ -78,11 +79,50 @@ def _is_root(e: Eigenvalue, c: sp.Expr, n: int) -> bool:
             return False
     ks = [k for k in e.frequencies if k > 0] if free else [0]
     for k in ks:
-        at = {LAM: c, OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n))}
-        value = sp.expand(e.factor.xreplace(at))
-        if value != 0 and sp.Poly(sp.minimal_polynomial(value, _X), _X) != sp.Poly(_X, _X):
+        at = {OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n))}
+        factor = e.factor.xreplace(at)
+        decided = _root_at_square_root(factor, c, n)
+        if decided is None:
+            decided = _exact_zero(factor.xreplace({LAM: c}), (n,))  # in a cyclotomic field where it is one's number
+        if not decided:
             return False
     return bool(ks)
+
+
+def _cyclotomic(values: list[sp.Expr], n: int) -> list[Cyclotomic] | None:
+    """``values`` in one cyclotomic field (the radicals sympy wrote cosines with read back), or ``None``."""
+    forms = [cosine_form(sp.expand(v), n) if n <= COSINE_FORM_UP_TO else sp.expand(v) for v in values]
+    try:
+        order = math.lcm(*(cyclotomic_value(f).field.N for f in forms))
+        field = CyclotomicField(order)
+        return [cyclotomic_value(f, field=field) for f in forms]
+    except ValueError:
+        return None
+
+
+def _root_at_square_root(factor: sp.Expr, c: sp.Expr, n: int) -> bool | None:
+    """Whether ``c = s sqrt(q)`` (``s = +-1``, ``q`` a number of a cyclotomic field) is a root of ``factor`` in
+    ``lambda``, decided in that field: with ``f(lambda) = E(lambda^2) + lambda O(lambda^2)``, ``f(c) = E(q) + c O(q)``
+    is 0 exactly when ``O(q) = E(q) = 0``, or ``r = -E(q)/O(q)`` has ``r^2 = q`` and the sign ``s`` (then ``r = c``).
+    ``None`` when ``c`` is not of that form or a number is not of the field (the caller decides otherwise)."""
+    sign, root = (-1, -c) if c.could_extract_minus_sign() else (1, c)
+    if not (root.is_Pow and root.exp == sp.Rational(1, 2)):
+        return None
+    coeffs = sp.Poly(factor, LAM).all_coeffs()[::-1]  # a_0, a_1, ...
+    q = root.base
+    even = sum((a * q ** (i // 2) for i, a in enumerate(coeffs) if i % 2 == 0), sp.Integer(0))
+    odd = sum((a * q ** (i // 2) for i, a in enumerate(coeffs) if i % 2 == 1), sp.Integer(0))
+    values = _cyclotomic([even, odd, q], n)
+    if values is None:
+        return None
+    E, O, Q = values
+    if not O.poly:
+        return not E.poly
+    r = -E / O
+    if (r * r - Q).poly:
+        return False
+    ball = to_acb(r, 128)
+    return bool(ball.real > 0) if sign > 0 else bool(ball.real < 0)
 
 
 def _real_sign(ball: flint.acb) -> int | None:
@@ -90,7 +130,7 @@ def _real_sign(ball: flint.acb) -> int | None:
 
 
 def _exact_zero(d: sp.Expr, valences: tuple[int, ...]) -> bool:
-    """Whether the real number ``d`` is exactly 0: in a cyclotomic field when it is one's (the radicals sympy wrote
+    """Whether the number ``d`` is exactly 0: in a cyclotomic field when it is one's (the radicals sympy wrote
     cosines with read back, :func:`~symdecomp.analysis.zoo_roots.cosine_form`), else by its minimal polynomial."""
     d = sp.expand(d)
     if d == 0:

@@ -51,7 +51,7 @@ from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_jordan import jordan_by_frequency, with_jordan
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.analysis.zoo_roots import cosine_form
+from symdecomp.analysis.zoo_roots import cosine_form, real_cosine_form
 from symdecomp.analysis.zoo_spectrum import COSINE_FORM_UP_TO, spectrum_of_blocks, zoo_spectrum
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
@@ -319,12 +319,24 @@ def zoo_artifacts(scheme: StencilScheme, n: int, depth: int | None = None) -> Zo
         return ZooArtifacts(n, scheme.name, scheme.steps, spectrum.rings, CurvatureRegime.NOT_APPLICABLE,
                             f"{REGIME_TEXT[CurvatureRegime.NOT_APPLICABLE]}: {why}")
     regime, reason, mu = _decide(n, lam, values[2:], blocks)
-    square = None if lam.exact is None else sp.expand(lam.exact ** 2)
+    square = None if lam.exact is None else _square(lam.exact, n)
     regular, density = _density(scheme, zm.neighbourhood.regular_valence, lam, n, spectrum.rings)
     with flint.ctx.workprec(4 * spectrum.digits + 64):  # the ball's own precision decides the digits shown
         square_text = acb_text(lam.value * lam.value, spectrum.digits)
     return ZooArtifacts(n, scheme.name, scheme.steps, spectrum.rings, regime, reason, lam, square, mu, regular, density,
                         square_text)
+
+
+def _square(value: sp.Expr, n: int) -> sp.Expr:
+    """``value^2`` expanded, or as rational multiples of cosines where that is shorter
+    (:func:`~symdecomp.analysis.zoo_roots.real_cosine_form`: the products of cosines reduced in the real subfield)."""
+    square = sp.expand(value ** 2)
+    try:
+        x = cyclotomic_value(cosine_form(square, n) if n <= COSINE_FORM_UP_TO else square)
+    except ValueError:
+        return square
+    form = real_cosine_form(x)
+    return form if form is not None and sp.count_ops(form) < sp.count_ops(square) else square
 
 
 def _density(scheme: StencilScheme, regular_n: int, lam: Eigenvalue, n: int, depth: int) -> tuple[Eigenvalue | None, int | None]:

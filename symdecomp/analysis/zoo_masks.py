@@ -25,6 +25,7 @@ is the limit of the centre face, and the masks weigh the face's corners and the 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import flint
@@ -49,9 +50,26 @@ def _identity(size: int) -> flint.acb_mat:
     return flint.acb_mat([[flint.acb(int(r == c)) for c in range(size)] for r in range(size)])
 
 
-def _checked(y: list[flint.acb] | None, A: flint.acb_mat, n: int) -> list[flint.acb]:
+def _not_simple(blocks: ZooBlocks, lam: flint.acb, frequency: int, mesh: str, depth: int) -> str:
+    """Why ``y (B_k - lambda I) = 0`` has no single solution at frequency ``k``: the eigenvalue's multiplicity and
+    Jordan blocks in the whole spectrum (decided exactly, :func:`~symdecomp.analysis.zoo_jordan.with_jordan`)."""
+    from symdecomp.analysis.zoo_jordan import with_jordan
+
+    spectrum = with_jordan(blocks, spectrum_of_blocks(blocks, exact=True, depth=depth, mesh=mesh))
+    for e in spectrum.eigenvalues:
+        if frequency in e.frequencies and e.value.overlaps(lam):
+            shown = e.text if e.exact is None else sp.sstr(e.exact)
+            blocks_text = ("Jordan blocks of sizes " + "+".join(map(str, e.jordan)) if e.jordan and max(e.jordan) > 1
+                           else "no Jordan block larger than 1" if e.jordan else "Jordan blocks not decided")
+            return (f"the eigenvalue {shown} has multiplicity {e.multiplicity} (frequencies "
+                    f"{', '.join(map(str, e.frequencies))}) with {blocks_text}, so its left eigenvector at frequency "
+                    f"{frequency} is not one mask")
+    return f"the eigenvalue {acb_text(lam, 10)} is not isolated from the frequency-{frequency} block's others at this precision"
+
+
+def _checked(y: list[flint.acb] | None, A: flint.acb_mat, n: int, why: Callable[[], str]) -> list[flint.acb]:
     if y is None:
-        raise SymdecompError(f"n = {n}: no left eigenvector found for the masks (eigenvalue not simple?)")
+        raise SymdecompError(f"n = {n}: no masks: {why()}")
     residual = flint.acb_mat([y]) * A
     if not all(residual[0, c].contains(0) for c in range(A.ncols())):
         raise SymdecompError(f"n = {n}: the left eigenvector does not solve y (B - lambda I) = 0 (certified)")
@@ -109,9 +127,12 @@ def zoo_masks(scheme: StencilScheme, n: int, depth: int | None = None, *, digits
     with flint.ctx.workprec(prec):
         B0 = sp.Matrix(blocks.frequency_zero_matrix())
         A0 = acb_matrix(B0, (), ()) - _identity(B0.shape[0])
-        y0 = _checked(null_vector(A0.transpose(), first=0), A0, n)
+        def why(lam: flint.acb, k: int) -> Callable[[], str]:
+            return lambda: _not_simple(blocks, lam, k, scheme.lattice, zm.depth)
+
+        y0 = _checked(null_vector(A0.transpose(), first=0), A0, n, why(flint.acb(1), 0))
         A1 = B1 - lam1 * _identity(K)
-        y1 = _checked(null_vector(A1.transpose(), first=0), A1, n)
+        y1 = _checked(null_vector(A1.transpose(), first=0), A1, n, why(lam1, 1))
         total = sum(y0, flint.acb(0))
         position = [y / total for y in y0]
         tangent = [y / y1[0] for y in y1]

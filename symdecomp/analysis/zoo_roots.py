@@ -29,7 +29,7 @@ from symdecomp.algebra.cos_field import _divmod, _gcd
 from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
 from symdecomp.algebra.number_field import FieldElement
 
-__all__ = ["squarefree_roots", "cosine_form"]
+__all__ = ["squarefree_roots", "cosine_form", "real_cosine_form"]
 
 Poly = list[FieldElement]
 
@@ -130,3 +130,29 @@ def cosine_form(value: sp.Expr, n: int) -> sp.Expr:
     if not radicals <= set(known):
         return value
     return sp.expand(value.xreplace(known))
+
+
+def real_cosine_form(x: Cyclotomic) -> sp.Expr | None:
+    """A real number ``x`` of ``Q(zeta_N)`` as ``a_0 + sum_k a_k cos(2 pi k/N)``, ``k = 1 .. d - 1``, rational ``a_k``
+    (``d = phi(N)/2``: the cosines ``cos(2 pi k/N) = T_k(cos(2 pi/N))`` are a basis of the real subfield, so the form is
+    unique); ``None`` when ``x`` is not real (not its own conjugate). The cosines are left unevaluated, as
+    :func:`cosine_form` writes them.
+
+    >>> field = CyclotomicField(16)
+    >>> real_cosine_form(field.zeta(1) + field.zeta(-1) + field.zeta(2) / 2 + field.zeta(-2) / 2)
+    cos(pi/4) + 2*cos(pi/8)
+    """
+    if x != x.conjugate():
+        return None
+    field, N = x.field, x.field.N
+    size = max(1, field.phi.degree())
+    d = max(1, size // 2) if N > 2 else 1
+    columns = [(field.zeta(k) + field.zeta(-k)) / 2 if k else field(1) for k in range(d)]
+    def vector(c: Cyclotomic) -> list[sp.Rational]:
+        coeffs = c.poly.coeffs() + [0] * (size - len(c.poly.coeffs()))
+        return [sp.Rational(int(flint.fmpq(q).p), int(flint.fmpq(q).q)) for q in coeffs[:size]]
+    A = sp.Matrix([vector(c) for c in columns]).T
+    solution, params = A.gauss_jordan_solve(sp.Matrix(vector(x)))
+    assert not params, "the cosines are a basis of the real subfield"
+    return sp.Add(*(a * (sp.cos(sp.pi * sp.Rational(2 * k, N), evaluate=False) if k else 1)
+                    for k, a in enumerate(solution) if a != 0))

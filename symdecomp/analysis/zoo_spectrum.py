@@ -33,7 +33,7 @@ from symdecomp.analysis.factor_roots import FactorRoots, ball_hull, exact_root, 
 from symdecomp.analysis.spectrum import RingSpectrum, acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.analysis.zoo_roots import cosine_form, squarefree_roots
+from symdecomp.analysis.zoo_roots import cosine_form, real_cosine_form, squarefree_roots
 from symdecomp.errors import NotApplicableError, PrecisionError
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
@@ -148,7 +148,9 @@ _X = sp.Dummy("x")
 
 def _reduced(value: sp.Expr, ball: flint.acb, n: int = 0) -> sp.Expr:
     """``value`` as a rational when it is one (exactly, in a cyclotomic field); a complex form of a real value (``exp(i
-    ...)`` terms) as a quadratic surd when its minimal polynomial has degree 2 (the root nearest ``ball``: they are apart).
+    ...)`` terms) as a quadratic surd when its minimal polynomial has degree 2 (the root nearest ``ball``: they are apart),
+    else, when it is a number of a cyclotomic field, as rational multiples of cosines (:func:`~symdecomp.analysis.zoo_roots.
+    real_cosine_form`).
     At a valence ``n`` up to :data:`COSINE_FORM_UP_TO`, the radicals sympy wrote cosines with are read back as those
     cosines first (:func:`~symdecomp.analysis.zoo_roots.cosine_form`: ``cos(pi/8)``, not ``sqrt(sqrt(2)/4 + 1/2)``)."""
     if value.is_Rational:
@@ -159,11 +161,14 @@ def _reduced(value: sp.Expr, ball: flint.acb, n: int = 0) -> sp.Expr:
         x = None
     if x is not None and x.poly.degree() <= 0:
         return sp.Rational(int(x.poly[0].p), int(x.poly[0].q))
-    if not value.has(sp.I) or sp.count_ops(value) > 80:
-        return value  # real forms (cosines, radicals) are kept as they are; minimal polynomials of large ones cost minutes
+    cosines = real_cosine_form(x) if x is not None else None  # a real value of the field: rational cosines, no exponentials
+    if not value.has(sp.I):  # real forms (cosines, radicals) are kept unless the cosines' basis writes them shorter
+        return cosines if cosines is not None and sp.count_ops(cosines) < sp.count_ops(value) else value
+    if sp.count_ops(value) > 80:
+        return cosines if cosines is not None else value  # minimal polynomials of large ones cost minutes
     p = sp.Poly(sp.minimal_polynomial(value, _X), _X)
     if p.degree() > 2:
-        return value
+        return cosines if cosines is not None else value
     mid = complex(float(ball.real.mid()), float(ball.imag.mid()))
     return min(sp.roots(p, _X), key=lambda r: abs(complex(r.evalf(30)) - mid))  # a rational quadratic's root: (a + sqrt(d))/b
 

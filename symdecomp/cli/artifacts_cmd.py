@@ -161,7 +161,7 @@ def _print_zoo(name: str, scheme: StencilScheme, rows: list[dict[str, object]]) 
     for r in rows:
         c = r["curvature"]
         assert isinstance(c, dict)
-        lam, square = _short(c["lambda1_exact"], c["lambda1"]), _short(c["lambda1_squared"], None)
+        lam, square = _short(c["lambda1_exact"], c["lambda1"]), _short(c["lambda1_squared"], c["lambda1_squared_value"])
         print(f"n = {r['n']:>3}: {c['regime']}; lambda_1 = {lam}, lambda_1^2 = {square}, "
               f"mu = {_mu_text(c)}; density {r['density']} (regular lambda_1 {r['regular_lambda1'] or '-'}); {c['reason']}")
     print(str(rows[0]["not_computed"]))

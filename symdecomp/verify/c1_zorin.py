@@ -51,7 +51,7 @@ from symdecomp.validate import check_bits, check_int
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, float_down, round_down
 from symdecomp.verify.c1_zoo import ZooC1Result
 from symdecomp.verify.result import C1Verdict
-from symdecomp.verify.zoo_characteristic import characteristic_points, spectral_conditions
+from symdecomp.verify.zoo_characteristic import characteristic_points, real_matrix, spectral_conditions
 from symdecomp.verify.zorin_bounds import EDGES, RHOMBI, TRIANGLES, DifferenceBounds, Point, difference_bounds, hex_norm
 from symdecomp.verify.zorin_net import WedgeNet, grow, refine, wedge_points
 
@@ -81,7 +81,8 @@ def _widen(z: flint.acb, e: flint.arb) -> flint.acb:
 def _characteristic(scheme: StencilScheme, n: int) -> SpectralResult | str | tuple[SpectralResult, WedgeNet]:
     """``(spectral, level-0 net of radius NET_DEPTH)``, or the spectral result / a reason string when there is no map."""
     zm = zoo_matrix(scheme, n, NET_DEPTH)
-    spectral = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n)  # the smallest invariant depth
+    spectral = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n,  # the smallest invariant depth
+                                   real_matrix=real_matrix(zm))
     if spectral.status is not C1Verdict.C1 or spectral.subdominant is None:
         return spectral
     points = characteristic_points(zm, spectral.subdominant)

@@ -33,6 +33,7 @@ the central surface) needs their patch and masks: :data:`NOT_COMPUTED` says so i
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from dataclasses import dataclass
 
@@ -42,14 +43,15 @@ from sympy import QQ
 from sympy.polys.matrices import DomainMatrix
 
 from symdecomp.algebra.compile import compile_expression
-from symdecomp.algebra.cyclotomic import cyclotomic_value
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
 from symdecomp.analysis.charpoly import COSK
 from symdecomp.analysis.curvature_regime import REGIME_TEXT, CurvatureRegime, curvature_regime, frequency_kind
 from symdecomp.analysis.eigenvalue import Eigenvalue
+from symdecomp.analysis.spectrum import acb_text
 from symdecomp.analysis.zoo_blocks import ZooBlocks, zoo_blocks
 from symdecomp.analysis.zoo_jordan import jordan_by_frequency, with_jordan
 from symdecomp.analysis.zoo_matrix import zoo_matrix
-from symdecomp.analysis.zoo_roots import cosine_form
+from symdecomp.analysis.zoo_roots import cosine_form, real_cosine_form
 from symdecomp.analysis.zoo_spectrum import COSINE_FORM_UP_TO, spectrum_of_blocks, zoo_spectrum
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import lam as LAM
@@ -77,11 +79,50 @@ def _is_root(e: Eigenvalue, c: sp.Expr, n: int) -> bool:
             return False
     ks = [k for k in e.frequencies if k > 0] if free else [0]
     for k in ks:
-        at = {LAM: c, OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n))}
-        value = sp.expand(e.factor.xreplace(at))
-        if value != 0 and sp.Poly(sp.minimal_polynomial(value, _X), _X) != sp.Poly(_X, _X):
+        at = {OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(k, n)), COSK: sp.cos(2 * sp.pi * sp.Rational(k, n))}
+        factor = e.factor.xreplace(at)
+        decided = _root_at_square_root(factor, c, n)
+        if decided is None:
+            decided = _exact_zero(factor.xreplace({LAM: c}), (n,))  # in a cyclotomic field where it is one's number
+        if not decided:
             return False
     return bool(ks)
+
+
+def _cyclotomic(values: list[sp.Expr], n: int) -> list[Cyclotomic] | None:
+    """``values`` in one cyclotomic field (the radicals sympy wrote cosines with read back), or ``None``."""
+    forms = [cosine_form(sp.expand(v), n) if n <= COSINE_FORM_UP_TO else sp.expand(v) for v in values]
+    try:
+        order = math.lcm(*(cyclotomic_value(f).field.N for f in forms))
+        field = CyclotomicField(order)
+        return [cyclotomic_value(f, field=field) for f in forms]
+    except ValueError:
+        return None
+
+
+def _root_at_square_root(factor: sp.Expr, c: sp.Expr, n: int) -> bool | None:
+    """Whether ``c = s sqrt(q)`` (``s = +-1``, ``q`` a number of a cyclotomic field) is a root of ``factor`` in
+    ``lambda``, decided in that field: with ``f(lambda) = E(lambda^2) + lambda O(lambda^2)``, ``f(c) = E(q) + c O(q)``
+    is 0 exactly when ``O(q) = E(q) = 0``, or ``r = -E(q)/O(q)`` has ``r^2 = q`` and the sign ``s`` (then ``r = c``).
+    ``None`` when ``c`` is not of that form or a number is not of the field (the caller decides otherwise)."""
+    sign, root = (-1, -c) if c.could_extract_minus_sign() else (1, c)
+    if not (root.is_Pow and root.exp == sp.Rational(1, 2)):
+        return None
+    coeffs = sp.Poly(factor, LAM).all_coeffs()[::-1]  # a_0, a_1, ...
+    q = root.base
+    even = sum((a * q ** (i // 2) for i, a in enumerate(coeffs) if i % 2 == 0), sp.Integer(0))
+    odd = sum((a * q ** (i // 2) for i, a in enumerate(coeffs) if i % 2 == 1), sp.Integer(0))
+    values = _cyclotomic([even, odd, q], n)
+    if values is None:
+        return None
+    E, O, Q = values
+    if not O.poly:
+        return not E.poly
+    r = -E / O
+    if (r * r - Q).poly:
+        return False
+    ball = to_acb(r, 128)
+    return bool(ball.real > 0) if sign > 0 else bool(ball.real < 0)
 
 
 def _real_sign(ball: flint.acb) -> int | None:
@@ -89,7 +130,7 @@ def _real_sign(ball: flint.acb) -> int | None:
 
 
 def _exact_zero(d: sp.Expr, valences: tuple[int, ...]) -> bool:
-    """Whether the real number ``d`` is exactly 0: in a cyclotomic field when it is one's (the radicals sympy wrote
+    """Whether the number ``d`` is exactly 0: in a cyclotomic field when it is one's (the radicals sympy wrote
     cosines with read back, :func:`~symdecomp.analysis.zoo_roots.cosine_form`), else by its minimal polynomial."""
     d = sp.expand(d)
     if d == 0:
@@ -176,6 +217,8 @@ class ZooArtifacts:
     #: The regular valence's ``lambda_1`` and the sign of ``lambda_1 -`` it (``-1`` dense, ``0`` regular, ``1`` sparse).
     regular_lambda1: Eigenvalue | None = None
     density: int | None = None
+    #: ``lambda_1^2`` as decimal text (the certified ball squared), as ``lambda_1`` is shown; empty when not applicable.
+    lambda1_squared_text: str = ""
 
     @property
     def density_text(self) -> str:
@@ -190,6 +233,7 @@ class ZooArtifacts:
                 "regime": self.regime.value, "reason": self.reason, "cause": ", ".join(dict.fromkeys(k for m in self.mu for k in m.kinds)),
                 "lambda1": None if lam is None else lam.text, "lambda1_exact": None if lam is None or lam.exact is None else str(lam.exact),
                 "lambda1_squared": None if self.lambda1_squared is None else str(self.lambda1_squared),
+                "lambda1_squared_value": self.lambda1_squared_text or None,
                 "mu": [m.as_json() for m in self.mu]},
         }
 
@@ -275,9 +319,24 @@ def zoo_artifacts(scheme: StencilScheme, n: int, depth: int | None = None) -> Zo
         return ZooArtifacts(n, scheme.name, scheme.steps, spectrum.rings, CurvatureRegime.NOT_APPLICABLE,
                             f"{REGIME_TEXT[CurvatureRegime.NOT_APPLICABLE]}: {why}")
     regime, reason, mu = _decide(n, lam, values[2:], blocks)
-    square = None if lam.exact is None else sp.expand(lam.exact ** 2)
+    square = None if lam.exact is None else _square(lam.exact, n)
     regular, density = _density(scheme, zm.neighbourhood.regular_valence, lam, n, spectrum.rings)
-    return ZooArtifacts(n, scheme.name, scheme.steps, spectrum.rings, regime, reason, lam, square, mu, regular, density)
+    with flint.ctx.workprec(4 * spectrum.digits + 64):  # the ball's own precision decides the digits shown
+        square_text = acb_text(lam.value * lam.value, spectrum.digits)
+    return ZooArtifacts(n, scheme.name, scheme.steps, spectrum.rings, regime, reason, lam, square, mu, regular, density,
+                        square_text)
+
+
+def _square(value: sp.Expr, n: int) -> sp.Expr:
+    """``value^2`` expanded, or as rational multiples of cosines where that is shorter
+    (:func:`~symdecomp.analysis.zoo_roots.real_cosine_form`: the products of cosines reduced in the real subfield)."""
+    square = sp.expand(value ** 2)
+    try:
+        x = cyclotomic_value(cosine_form(square, n) if n <= COSINE_FORM_UP_TO else square)
+    except ValueError:
+        return square
+    form = real_cosine_form(x)
+    return form if form is not None and sp.count_ops(form) < sp.count_ops(square) else square
 
 
 def _density(scheme: StencilScheme, regular_n: int, lam: Eigenvalue, n: int, depth: int) -> tuple[Eigenvalue | None, int | None]:

@@ -37,7 +37,7 @@ from symdecomp.verify.c1_spectrum import SpectralResult, block_root, float_down
 from symdecomp.verify.c1_zoo import ZooNeighbourhood
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["C1_DEPTH", "engine_neighbourhood", "spectral_conditions", "characteristic_points"]
+__all__ = ["C1_DEPTH", "engine_neighbourhood", "spectral_conditions", "real_matrix", "characteristic_points"]
 
 #: The ring depth of the neighbourhood the C1 test reads (the patches one face from the centre and their control points).
 C1_DEPTH = 2
@@ -88,6 +88,12 @@ def spectral_conditions(spectrum: RingSpectrum, n: int, *, real_matrix: bool = F
     return SpectralResult(n, C1Verdict.C1, "spectral conditions hold", eigen, float_down(gap), float(bound))
 
 
+def real_matrix(zm: ZooMatrix) -> bool:
+    """Whether every entry of the engine's matrix is real (then the conjugate of an eigenvalue is one: the
+    ``real_matrix`` argument of :func:`spectral_conditions`)."""
+    return all(e.is_real for e in set(zm.matrix))
+
+
 def _centre_face(nb: Neighbourhood) -> tuple[int, ...]:
     """The centre ``n``-gon: the one face of ``n`` points of one class (the rotation permutes its corners)."""
     for face in nb.mesh.faces:
@@ -101,8 +107,7 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     """The local mesh with its orbit labels, the spectral conditions and the characteristic map at valence ``n``."""
     zm = zoo_matrix(scheme, n, C1_DEPTH)
     nb = zm.neighbourhood
-    real = all(e.is_real for e in set(zm.matrix))  # the conjugate of an eigenvalue is one (spectral_conditions)
-    spectral = spectral_conditions(zoo_spectrum(scheme, n, C1_DEPTH, jordan=False), n, real_matrix=real)
+    spectral = spectral_conditions(zoo_spectrum(scheme, n, C1_DEPTH, jordan=False), n, real_matrix=real_matrix(zm))
     labelled = set(nb.order)
     faces = tuple(tuple(f) for f in nb.mesh.faces if set(f) <= labelled)
     mesh = DualNeighbourhood(faces, _centre_face(nb), dict(nb.labels))

@@ -46,7 +46,7 @@ from symdecomp.validate import check_int, check_type, check_valence
 from symdecomp.verify.c1_dual import biquadratic_to_bicubic, ring_patches
 from symdecomp.verify.c1_zoo import spline_route
 from symdecomp.verify.result import C1Verdict
-from symdecomp.verify.zoo_characteristic import characteristic_points, engine_neighbourhood, spectral_conditions
+from symdecomp.verify.zoo_characteristic import characteristic_points, engine_neighbourhood, real_matrix, spectral_conditions
 
 __all__ = ["REFINEMENTS", "zoo_map_curves", "refined_net", "hole_boundary"]
 
@@ -94,10 +94,10 @@ def _patch_curves(scheme: StencilScheme, n: int, samples: int) -> Curves:
 
 def _net_curves(scheme: StencilScheme, n: int, refinements: int) -> Curves:
     """The control net refined by the scheme's rules (module docstring)."""
-    spectral = spectral_conditions(zoo_spectrum(scheme, n, jordan=False), n)
+    zm = zoo_matrix(scheme, n, min(MAX_DEPTH, zoo_matrix(scheme, n).depth + 1))  # a ring more: refining loses the outer one
+    spectral = spectral_conditions(zoo_spectrum(scheme, n, jordan=False), n, real_matrix=real_matrix(zm))
     if spectral.status is not C1Verdict.C1 or spectral.subdominant is None:
         raise _no_map(n, spectral.reason)
-    zm = zoo_matrix(scheme, n, min(MAX_DEPTH, zoo_matrix(scheme, n).depth + 1))  # a ring more: refining loses the outer one
     points = characteristic_points(zm, spectral.subdominant)
     if points is None:
         raise _no_map(n, "the subdominant eigenvector could not be solved in the frequency block at this precision")

@@ -1,0 +1,57 @@
+"""Time ``artifacts --n 64 --scheme sqrt3`` beside ``spectrum 64 --scheme sqrt3`` (issue 30).
+
+The target: the curvature regime of a zoo scheme at n = 64 in well under a minute (it ran past 3 minutes while the
+tie ``|mu| = lambda_1^2`` asked sympy for a minimal polynomial; it is decided in a cyclotomic field now,
+``verify/zoo_artifacts``). Measured: the whole command as a user runs it (start-up included), wall-clock. Beside it,
+the baseline measured in the same run: ``spectrum 64`` of the same scheme (its invariant 1-ring by the structural route;
+artifacts reads the 2-ring, the neighbourhood the C1 test reads).
+
+    python benchmarks/bench_zoo_artifacts.py            # n = 64
+    python benchmarks/bench_zoo_artifacts.py --quick    # n = 24
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import time
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+
+#: The target, seconds.
+ARTIFACTS_SECONDS = 30.0
+
+
+def _timed(*args: str) -> float:
+    t0 = time.perf_counter()
+    done = subprocess.run([sys.executable, *args], cwd=ROOT, capture_output=True, text=True, check=False)
+    seconds = time.perf_counter() - t0
+    if done.returncode not in (0, 1):  # 1: a regime undecided, still a full run
+        raise SystemExit(f"{' '.join(args[:4])} failed ({done.returncode}): {done.stderr.strip()[-300:]}")
+    return seconds
+
+
+def targets(quick: bool = False) -> list[dict]:
+    """``artifacts --n N --scheme sqrt3`` beside ``spectrum N --scheme sqrt3``."""
+    n = 24 if quick else 64
+    seconds = _timed("-m", "symdecomp", "artifacts", "--n", str(n), "--scheme", "sqrt3", "--json", "--quiet")
+    baseline = _timed("-m", "symdecomp", "spectrum", str(n), "--scheme", "sqrt3", "--json")
+    return [{"target": f"artifacts --n {n} --scheme sqrt3", "limit_seconds": None if quick else ARTIFACTS_SECONDS,
+             "seconds": seconds, "baseline": f"spectrum {n} --scheme sqrt3", "baseline_seconds": baseline}]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="n = 24")
+    args = parser.parse_args()
+    for row in targets(args.quick):
+        limit = row["limit_seconds"]
+        verdict = "" if limit is None else ("  (target met)" if row["seconds"] <= limit else "  (TARGET MISSED)")
+        print(f"{row['target']}: {row['seconds']:.1f} s, limit {limit or '-'} s{verdict}; "
+              f"{row['baseline']}: {row['baseline_seconds']:.1f} s")
+
+
+if __name__ == "__main__":
+    main()

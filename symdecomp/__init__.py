@@ -190,7 +190,8 @@ nothing else.
                    ``texlayout``), results in a notebook: short HTML tables and LaTeX (``display``),
                    the artifact table's columns (``artifact_table``), the zoo's families derived
                    by the engine, the file zoo.tex (``zoo_derivations``), C1 and the curvature regime
-                   for every valence as propositions, the file c1-every-n.tex (``every_n_derivations``),
+                   for every valence as propositions, the file c1-every-n.tex (``every_n_derivations``;
+                   Doo-Sabin's, an n-sided face, ``dual_every_n_derivations``),
                    the report of a zoo scheme (``report_zoo``), Stam's data file (``evaldata``), the
                    crease, boundary and corner data file (``sector_evaldata``), the data file of a dual scheme's faces
                    (``dual_evaldata``), meshes

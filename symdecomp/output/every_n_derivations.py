@@ -80,18 +80,20 @@ def _formulas(step: EveryNStep) -> str:
     return display_math(dict(step.formulas)) if step.formulas else ""
 
 
-def c1_statement(result: EveryNResult) -> str:
-    """The proposition C1 for every n as the proof's outcome allows it (package prose, ``$...$`` math)."""
+def c1_statement(result: EveryNResult, element: str = "vertex") -> str:
+    """The proposition C1 for every n as the proof's outcome allows it (package prose, ``$...$`` math); ``element``: the
+    extraordinary element (``"vertex"``, or ``"face"`` for a dual scheme)."""
     lo, hi = result.certified
+    at = f"at an extraordinary {element} of"
     if result.status == "proved":
-        return f"The surface is $C^1$ at an extraordinary vertex of every valence $n \\ge {lo}$."
+        return f"The surface is $C^1$ {at} every valence $n \\ge {lo}$."
     if result.status == "refuted":
         if any(s.name == "fails-from" for s in result.steps) and result.failure and result.failure > lo:
-            return (f"The surface is $C^1$ at an extraordinary vertex of valence $n = {lo}, \\dots, {hi}$ and at no valence "
+            return (f"The surface is $C^1$ {at} valence $n = {lo}, \\dots, {hi}$ and at no valence "
                     f"$n \\ge {result.failure}$: the exact threshold is $n = {result.failure}$.")
-        return f"The surface is not $C^1$ at an extraordinary vertex of valence $n = {result.failure}$."
+        return f"The surface is not $C^1$ {at} valence $n = {result.failure}$."
     if result.status == "verified":
-        return (f"The surface is $C^1$ at an extraordinary vertex of valence $n = {lo}, \\dots, {hi}$; beyond, the proof "
+        return (f"The surface is $C^1$ {at} valence $n = {lo}, \\dots, {hi}$; beyond, the proof "
                 "does not close (see the open step).")
     return f"Undecided: Reif's test certifies $n = {lo}, \\dots, {hi}$ and cannot decide the next valence."
 
@@ -270,13 +272,17 @@ def every_n_latex(scheme: Scheme, number: int = 1) -> str:
 
 
 def every_n_files(schemes: Iterable[Scheme] | None = None) -> Mapping[str, str]:
-    """``{"c1-every-n.tex": section}``: one subsection per scheme (default: Catmull-Clark and Loop)."""
+    """``{"c1-every-n.tex": section}``: one subsection per scheme (default: Catmull-Clark and Loop, then Doo-Sabin)."""
+    from symdecomp.output.dual_every_n_derivations import dual_every_n_latex
     from symdecomp.schemes.loop import loop
     from symdecomp.schemes.scheme import catmull_clark
+    from symdecomp.schemes.stencil_files import load_zoo
 
     chosen = tuple(schemes) if schemes is not None else (catmull_clark(), loop())
+    dual = () if schemes is not None else (load_zoo("doo-sabin"),)
     title = "Beyond the paper: \\texorpdfstring{C$^1$}{C1} and the curvature regime for every valence"
     body = "\n".join(every_n_latex(s, 2 * k + 1) for k, s in enumerate(chosen))
+    body += "".join("\n" + dual_every_n_latex(s, 2 * len(chosen) + k + 1) for k, s in enumerate(dual))
     intro = text_latex(
         "For each scheme: C$^1$ at an extraordinary vertex for every valence, as far as the exact argument in "
         "$t = \\cos(2\\pi j/n)$ closes, with Reif's test certified valence by valence below it; then the curvature regime "

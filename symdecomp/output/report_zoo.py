@@ -19,6 +19,7 @@ from symdecomp.analysis.zoo_spectrum import zoo_spectrum
 from symdecomp.claims import Verbatim
 from symdecomp.errors import InvalidSchemeError, InvalidTypeError
 from symdecomp.output.report import DIGITS, Paragraph, Report, Section, Table, check_valences
+from symdecomp.output.report_every_n import dual_every_n_section
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.verify.c1_zoo import c1_zoo
 from symdecomp.verify.zoo_characteristic import engine_neighbourhood
@@ -87,7 +88,7 @@ def zoo_c1_section(scheme: StencilScheme, valences: tuple[int, ...]) -> Section:
 CONTENTS = "its decomposition carried out by the zoo's engine, giving the scheme's spectrum and its $C^1$ verdicts"
 
 #: The sections of a zoo scheme's report, in order.
-ZOO_SECTIONS = (zoo_scheme_section, zoo_spectrum_section, zoo_c1_section)
+ZOO_SECTIONS = (zoo_scheme_section, zoo_spectrum_section, zoo_c1_section, dual_every_n_section)
 
 
 def build_zoo_report(scheme: StencilScheme, valences: Iterable[int], *,

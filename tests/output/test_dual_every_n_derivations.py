@@ -79,3 +79,32 @@ def test_the_derivations_file_ends_with_doo_sabin_after_the_primal_schemes():
     text = every_n_files()[EVERY_N_FILE]
     assert text.index("\\subsection*{loop}") < text.index("\\subsection*{doo-sabin}")
     assert _flat(text).endswith(_flat(dual_every_n_latex(load_zoo("doo-sabin"), 5)))
+
+
+def _report_section(scheme):
+    from symdecomp.output.report_every_n import DUAL_TITLE
+    from symdecomp.output.report_zoo import build_zoo_report
+
+    [section] = [s for s in build_zoo_report(scheme, [4]).sections if s.title == DUAL_TITLE]
+    return section
+
+
+def test_the_zoo_report_has_doo_sabins_section_with_the_proofs_steps():
+    from symdecomp.output.report_every_n import CERTIFIED
+
+    ds = load_zoo("doo-sabin")
+    section = _report_section(ds)
+    result = dual_every_n_proof(ds, CERTIFIED)
+    assert "at an extraordinary face of every valence $n \\ge 3$." in section.blocks[0].parts[1]
+    assert [(str(r[0]), r[1]) for r in section.blocks[1].rows] == [(s.name, s.status) for s in result.steps]
+
+
+def test_the_report_of_a_failing_variant_states_the_failure():
+    section = _report_section(stencil_scheme_from_text(variant("(m - 4)*cos(4*pi*j/m)/(4*m)")))
+    assert section.blocks[0].parts[1] == "The surface is not $C^1$ at an extraordinary face of valence $n = 6$."
+    assert ("dominant", "failed", "$n \\ge 6$") in [(str(r[0]), r[1], r[2]) for r in section.blocks[1].rows]
+
+
+def test_the_report_of_a_primal_zoo_scheme_says_why_not():
+    section = _report_section(load_zoo("sqrt3"))
+    assert str(section.blocks[0].parts[0]) == "Not applicable: " and "sqrt3" in str(section.blocks[0].parts[1])

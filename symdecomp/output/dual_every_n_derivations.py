@@ -88,7 +88,7 @@ def _jacobian_coefficients(scheme: StencilScheme, result: EveryNResult) -> list[
     ring = dual_ring(scheme, ngon_spectrum(scheme).first, result.uniform.first)
     out: list[flint.fmpq_poly] = []
     for X, Y, _ in ring.patches:
-        net = jacobian_net(biquadratic_to_bicubic(X), biquadratic_to_bicubic(Y))  # type: ignore[no-untyped-call]
+        net = jacobian_net(biquadratic_to_bicubic(X), biquadratic_to_bicubic(Y))
         out += [c for row in net for c in row]
     return out
 

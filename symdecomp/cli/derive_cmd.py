@@ -29,7 +29,8 @@ def register(sub) -> None:
         "longer correspond to a section are removed; other files in the directory are left alone. "
         "Exit status 1 if a check failed to run (status 'error'; the files are written all the same). main.tex also inputs "
         "c1-every-n.tex: for Catmull-Clark and Loop, C1 and the curvature regime for every valence as propositions, proved "
-        "with the steps of `symdecomp c1 --every-n` and `symdecomp artifacts --every-n`. It also writes "
+        "with the steps of `symdecomp c1 --every-n` and `symdecomp artifacts --every-n`, then Doo-Sabin's C1 for every "
+        "valence (the dual test certified valence by valence over the report's range). It also writes "
         "zoo.tex, a document of its own: the paper's decomposition applied to each shipped family of the zoo (the rules' "
         "symbols, the frequency blocks and their factored characteristic polynomials, the spectrum at a few valences).",
     )

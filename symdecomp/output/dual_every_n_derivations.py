@@ -53,7 +53,7 @@ def _dual_every_n_proof(scheme: StencilScheme, certified: int) -> EveryNResult:
 
 def _in_t(expr: sp.Expr) -> sp.Expr:
     """A value of the symbol with ``cos(2 pi p/n)`` as a polynomial in ``t`` (as the proof reads it), else as it is."""
-    from symdecomp.verify.c1_dual_every_n import _in_t as read_in_t
+    from symdecomp.verify.c1_dual_every_n import in_t as read_in_t
 
     found = read_in_t(expr)
     return expr if found is None else found.subs(sp.Symbol("t"), _T)
@@ -79,18 +79,11 @@ def _symbol_details(scheme: StencilScheme) -> str:
 
 def _jacobian_coefficients(scheme: StencilScheme, result: EveryNResult) -> list[flint.fmpq_poly]:
     """The Jacobian's Bezier coefficients of sector 0's patches, polynomials in ``t`` (as the map's proof forms them)."""
-    from symdecomp.verify.bezier import jacobian_net
-    from symdecomp.verify.c1_dual import biquadratic_to_bicubic
     from symdecomp.verify.c1_dual_every_n import ngon_spectrum
-    from symdecomp.verify.c1_dual_uniform import dual_ring
+    from symdecomp.verify.c1_dual_uniform import dual_ring, jacobian_coefficients
 
     assert result.uniform is not None  # asked only of a proved map step
-    ring = dual_ring(scheme, ngon_spectrum(scheme).first, result.uniform.first)
-    out: list[flint.fmpq_poly] = []
-    for X, Y, _ in ring.patches:
-        net = jacobian_net(biquadratic_to_bicubic(X), biquadratic_to_bicubic(Y))
-        out += [c for row in net for c in row]
-    return out
+    return jacobian_coefficients(dual_ring(scheme, ngon_spectrum(scheme).first, result.uniform.first))
 
 
 def _expr(q: flint.fmpq_poly) -> sp.Expr:

@@ -46,7 +46,7 @@ from symdecomp.validate import check_int, check_type
 from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, c1_every_n
 from symdecomp.verify.c1_uniform import UniformMapResult, t_lower_bound
 
-__all__ = ["NgonSpectrum", "ngon_spectrum", "dual_spectral_every_n", "c1_dual_every_n"]
+__all__ = ["NgonSpectrum", "ngon_spectrum", "dual_spectral_every_n", "c1_dual_every_n", "in_t"]
 
 
 @dataclass(frozen=True)
@@ -99,7 +99,7 @@ def ngon_spectrum(scheme: StencilScheme) -> NgonSpectrum:
     return NgonSpectrum(value(1), value(-1), value(0), others, start, sp.factor(outer.charpoly(X).as_expr()), st.valid_from)
 
 
-def _in_t(expr: sp.Expr) -> sp.Expr | None:
+def in_t(expr: sp.Expr) -> sp.Expr | None:
     """``expr`` with ``cos(2 pi p/n)`` as ``T_p(t)``: a rational function of ``n`` alone, or of ``t`` alone, else ``None``."""
     expr = sp.sympify(expr, strict=True).rewrite(sp.cos)
     subs = {}
@@ -114,7 +114,7 @@ def _in_t(expr: sp.Expr) -> sp.Expr | None:
 
 def _positive(expr: sp.Expr, start: int) -> bool | None:
     """Whether ``expr`` is positive at every valence ``n >= start``; ``None`` where that is not decidable here."""
-    e = _in_t(expr)
+    e = in_t(expr)
     if e is None:
         return None
     if not e.free_symbols:
@@ -132,7 +132,7 @@ def _positive(expr: sp.Expr, start: int) -> bool | None:
 
 def _first_failure(expr: sp.Expr, start: int) -> int | None:
     """The first valence ``n >= start`` where ``expr`` (a rational function of ``n``) is not positive, exactly."""
-    e = _in_t(expr)
+    e = in_t(expr)
     if e is None or e.has(T):
         return None
     if not e.has(N):

@@ -39,7 +39,7 @@ from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.verify.c1_uniform import UniformMapResult, t_lower_bound
 
-__all__ = ["DualRing", "dual_ring", "dual_uniform_map"]
+__all__ = ["DualRing", "dual_ring", "jacobian_coefficients", "dual_uniform_map"]
 
 T = sp.Symbol("t")
 #: A 3 x 3 net of polynomials in ``t``.
@@ -138,10 +138,21 @@ def _from_ray_to_rotated_ray(pieces: list[Piece]) -> bool:
     return bool(ya.is_zero() and xb == t * xa and yb == xa)
 
 
+def jacobian_coefficients(ring: DualRing) -> list[flint.fmpq_poly]:
+    """The Bezier coefficients of the Jacobian of sector 0's patches (raised to bicubic), polynomials in ``t``."""
+    from symdecomp.verify.bezier import jacobian_net
+    from symdecomp.verify.c1_dual import biquadratic_to_bicubic
+
+    out: list[flint.fmpq_poly] = []
+    for X, Y, _ in ring.patches:
+        net = jacobian_net(biquadratic_to_bicubic(X), biquadratic_to_bicubic(Y))  # type: ignore[no-untyped-call]  # bezier's nets are untyped
+        out += [c for row in net for c in row]
+    return out
+
+
 def dual_uniform_map(scheme: StencilScheme, lam: sp.Expr, first: int) -> UniformMapResult:
     """Regularity and injectivity of the characteristic map for every ``n >= first`` (module docstring); ``open`` with the
     part that is not shown."""
-    from symdecomp.verify.bezier import jacobian_net
     from symdecomp.verify.c1_dual import _SIDES, biquadratic_to_bicubic
 
     low = t_lower_bound(first)
@@ -150,11 +161,10 @@ def dual_uniform_map(scheme: StencilScheme, lam: sp.Expr, first: int) -> Uniform
     except NotApplicableError as exc:
         return UniformMapResult("open", first, low, (str(exc),), 0)
     t = flint.fmpq_poly([0, 1])
-    coefficients: list[flint.fmpq_poly] = []
+    coefficients = jacobian_coefficients(ring)
     pieces: list[Piece] = []
     for X, Y, sides in ring.patches:
         x, y = biquadratic_to_bicubic(X), biquadratic_to_bicubic(Y)
-        coefficients += [c for row in jacobian_net(x, y) for c in row]  # type: ignore[no-untyped-call]  # bezier's nets are untyped
         pieces += [list(zip(_SIDES[side](x), _SIDES[side](y))) for side in sides]
     points = [p for piece in pieces for p in piece]
     interval = f"t = cos(2 pi/n) in [{low}, 1] (every n >= {first}, and the limit n -> oo at t = 1)"

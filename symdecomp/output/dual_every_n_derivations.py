@@ -169,7 +169,7 @@ def _step_latex(step: EveryNStep, scheme: StencilScheme, result: EveryNResult) -
     else:  # an open or failed step says what was not shown, in the verify layer's words
         body = text_latex(Verbatim(step.text)) + "\n"
     if step.formulas:
-        body += display_math({_words(lhs): _in_t(sp.sympify(v)) for lhs, v in step.formulas})
+        body += display_math({_words(lhs): _in_t(sp.sympify(v, strict=True)) for lhs, v in step.formulas})
     if step.name == "real-distinct":
         body += _symbol_details(scheme)
     return head + body + _map_details(step, scheme, result)

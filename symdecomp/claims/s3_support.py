@@ -38,7 +38,7 @@ from symdecomp.analysis.support_window import (
 from symdecomp.analysis.support_window import (
     region as window_region,
 )
-from symdecomp.claims.applicability import WHOLE_MESH
+from symdecomp.claims.applicability import FACE_NEIGHBOURS, WHOLE_MESH
 from symdecomp.claims.notation import eq, gt
 from symdecomp.claims.notation import n as N
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim
@@ -109,7 +109,7 @@ def _relation_or_refutation(mesh, scheme: Scheme, verts, where: str, case: str, 
     title="The support relation is symmetric",
     statement="$P'$ is inside, on the boundary, or outside the support of $P$ if and only if $P$ is "
     "inside, on the boundary, or outside the support of $P'$, correspondingly.",
-    requires=(WHOLE_MESH,),
+    requires=(FACE_NEIGHBOURS, WHOLE_MESH),
 )
 def _symmetry(scheme: Scheme) -> CheckResult:
     # long: the symmetry check and its counterexample search share one loop over the valences.
@@ -196,7 +196,7 @@ def _window_asymmetry(w) -> str | None:
     title="Regular Catmull-Clark: 9 points inside, 25 inside or on the boundary",
     statement="In the regular case of the Catmull-Clark scheme nine points determine the continuous "
     "derivatives at $P$, and 25 points are needed to prove continuity.",
-    requires=(WHOLE_MESH,),
+    requires=(FACE_NEIGHBOURS, WHOLE_MESH),
 )
 def _regular_counts(scheme: Scheme) -> CheckResult:
     c = classify_support(ring_mesh(4, 5), 0, scheme, levels=2)
@@ -235,7 +235,7 @@ def _regular_counts(scheme: Scheme) -> CheckResult:
     statement="If $P'$ is outside the support of $P$, then it has no influence on the position or any of "
     "the continuous derivatives of $P$; this is also the case when $P'$ is on the boundary of the support "
     "of $P$.",
-    requires=(WHOLE_MESH,),
+    requires=(FACE_NEIGHBOURS, WHOLE_MESH),
 )
 def _boundary_influence(scheme: Scheme) -> CheckResult:
     # long: the exact refinement (the proof below FIRST_VALENCE) and the argument for every n give one verdict.
@@ -325,7 +325,7 @@ def _one_ring_closure(scheme: Scheme) -> str | None:
     title="Catmull-Clark: inside = 1-ring, boundary = boundary of the 2-ring",
     statement="For the Catmull-Clark scheme the vertices inside the support of $P$ are in its 1-ring "
     "neighbourhood, while the vertices on the boundary of the support are the boundary vertices of the 2-ring.",
-    requires=(WHOLE_MESH,),
+    requires=(FACE_NEIGHBOURS, WHOLE_MESH),
 )
 def _cc_support(scheme: Scheme) -> CheckResult:
     # long: one pass over the valences gathers the classification, the paper's counts and the

@@ -6,6 +6,7 @@ import sympy as sp
 
 from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.tuning import with_free_vertex_rule
+from symdecomp.claims.applicability import FACE_NEIGHBOURS
 from symdecomp.claims.notation import A, B, eq, ne, omega_2n, omega_n, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.schemes.scheme import Scheme
@@ -117,6 +118,7 @@ def _eq12_13(scheme: Scheme) -> CheckResult:
     title="Catmull-Clark on the 1-ring",
     statement="$a_i \\rightarrow \\frac38(a_i + O) + \\frac1{16}(a_{i-1} + b_{i-1} + b_i + a_{i+1})$ and "
     "$b_i \\rightarrow \\frac14(a_i + b_i + a_{i+1} + O)$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq14_15(scheme: Scheme) -> CheckResult:
     # Catmull-Clark's face point of the face (O, a_i, b_i, a_{i+1}) and edge point of the edge (O, a_i): the mean of
@@ -204,6 +206,7 @@ def _eq16(scheme: Scheme) -> CheckResult:
     section="4",
     title="Staged Catmull-Clark rules",
     statement="Eq. 14 decomposes into the steps Eq. 17, 18, 19 and Eq. 15 into Eq. 20, 21.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq17_21(scheme: Scheme) -> CheckResult:
     cc = scheme

@@ -11,7 +11,7 @@ from symdecomp.analysis.hyperbolic import hyperbolic_defect, hyperbolic_equality
 from symdecomp.analysis.reduction import subdivision_block_form
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, Verbatim, claim
-from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, NO_FREE_PARAMETERS, REAL_TANGENT_SPECTRUM
+from symdecomp.claims.applicability import COSINE_ONLY, FACE_NEIGHBOURS, MIRROR_SYMMETRIC, NO_FREE_PARAMETERS, REAL_TANGENT_SPECTRUM
 from symdecomp.claims.notation import A, M, eq, ge, j, lambda_1, lambda_2, listed, lt, ne, tup
 from symdecomp.claims.per_valence import depends_on_valence, largest_at_frequency_one
 from symdecomp.errors import InvalidInputError
@@ -218,6 +218,7 @@ def _nonzero_for_every_valence(scheme: Scheme, lo: int, initial=(1, 0, 0)):
     title="The coarse mesh of the basis function is only elliptic near O",
     statement=r"The coarse mesh of the basis function has only elliptic component near $O$: its 1-ring is planar, so "
     r"the components perpendicular to the tangent plane are zero.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _basis(scheme: Scheme) -> CheckResult:
     # long: the iteration, the argument for every n and its exceptional valences are one verdict.

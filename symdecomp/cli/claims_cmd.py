@@ -12,7 +12,6 @@ from symdecomp.cli.common import (
     flag,
     print_json,
     progress,
-    refuse_non_quad,
 )
 from symdecomp.cli.progress import add_quiet_option
 
@@ -29,9 +28,9 @@ def register(sub) -> None:
         "Each row also gives the scope of its verdict (every n, range of n, single case; every k, range of k for "
         "the claims about sectors of k faces at sharp vertices), and the last line counts "
         "the verdicts established for every n (proved, or an erratum whose correction is proved for every n with an "
-        "exact counterexample). A scheme of the zoo lists every claim as well: those of Section 2, which involve no "
-        "scheme, are checked; the others are 'not applicable', with the reason computed from the scheme (its "
-        "topology, support or lattice), or with the zoo command that answers the statement for it.",
+        "exact counterexample). A scheme of the zoo, or one on triangle meshes (loop), lists every claim as well: those "
+        "of Section 2, which involve no scheme, are checked; the others are 'not applicable', with the reason computed from the scheme (its "
+        "topology, support or lattice), or with the command that answers the statement for it.",
     )
     flag(p, "--json", help="print the one JSON shape (docs: File formats, --json) with one row per claim: {label, section, title, "
          "status, scope, evidence, ...}")
@@ -60,10 +59,7 @@ def section(text: str) -> str:
 def run(args) -> int:
     from symdecomp.claims import Status, all_claims, scope_summary
     from symdecomp.claims.batch import check_claims
-    from symdecomp.schemes.scheme import Scheme
 
-    if isinstance(args.scheme, Scheme):
-        refuse_non_quad(args.scheme, "claims")
     claims = all_claims()
     if args.section:
         claims = [c for c in claims if c.section == args.section or c.section.startswith(args.section + ".")]

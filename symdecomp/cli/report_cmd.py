@@ -33,7 +33,7 @@ def register(sub) -> None:
         "report",
         help="one document (PDF, HTML or LaTeX) with everything about a scheme",
         description="Write one deterministic document about SCHEME at the valences --n A:B: the paper's claims checked "
-        "for the scheme (quad schemes; as 'claims --scheme'), the spectrum with its closed forms ('spectrum'), the limit "
+        "for the scheme (as 'claims --scheme'), the spectrum with its closed forms ('spectrum'), the limit "
         "and tangent masks ('masks'), Reif's C1 test ('c1'), the curvature regime and artifact indicators with the "
         "elliptic height field ('artifacts'; 'Not applicable' with the reason for regular "
         "rules other than Catmull-Clark's and Loop's) and the figures of the characteristic map and of the eigen-polygons. "

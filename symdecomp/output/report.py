@@ -157,10 +157,6 @@ def scheme_section(inp: ReportInput) -> Section:
 
 def claims_section(inp: ReportInput) -> Section:
     """The claims of the paper checked for the scheme (``symdecomp claims --scheme``), one row each."""
-    if not inp.scheme.lattice.paper_claims:
-        return Section("The paper's claims", (_para(
-            f"Not applicable: the paper's claims are statements about quad meshes, and this scheme works on "
-            f"{inp.scheme.lattice} meshes. Its spectrum, masks and C1 test follow."),))
     claims = sorted(all_claims(), key=lambda c: c.sort_key())
     results = [check_claim(c.label, inp.scheme, budget=inp.budget) for c in claims]
     counts = {s: sum(r.status is s for r in results) for s in Status}

@@ -93,3 +93,25 @@ def test_moved_scheme_eq_39_and_the_n4_finding_agree_with_its_matrix():
         eigs = sorted((abs(e) for e in mpmath.eig(mpmath.matrix(S.tolist()))[0]), reverse=True)
     lam1 = _lambda1(moved, n)
     assert min(abs(e - lam1**2) for e in eigs) > 1e-4
+
+
+def test_a_triangle_mesh_scheme_gets_every_claim_checked_or_set_aside_with_its_reason(tmp_path, capsys):
+    """``claims --scheme loop`` lists every claim: those whose checks read Loop's model (Section 2, C1, the
+    curvature and sector claims) are checked, and those about the quad 1-ring's face neighbours ``b_i`` are not
+    applicable with that reason; no check breaks on a scheme without a face rule."""
+    from symdecomp.claims.applicability import FACE_NEIGHBOURS
+    from symdecomp.schemes.loop import loop
+    from symdecomp.schemes.scheme import catmull_clark
+
+    assert main(["claims", "--scheme", "loop", "--json", "--no-progress"]) == 0
+    rows = {r["label"]: r for r in json.loads(capsys.readouterr().out)["rows"]}
+    assert list(rows) == [c.label for c in all_claims()]
+    assert not [label for label, r in rows.items() if r["status"] == Status.ERROR.value]
+    assert rows["Loop's vertex weight"]["status"] == rows["Curvature regime: Loop"]["status"] == Status.PROVED.value
+    assert rows["C1 (Reif's test)"]["status"] == Status.PROVED.value and "loop" in rows["C1 (Reif's test)"]["evidence"]
+    reason = str(FACE_NEIGHBOURS.unmet(loop()))
+    staged = [c.label for c in all_claims() if FACE_NEIGHBOURS in c.requires]
+    assert len(staged) >= 7
+    for label in staged:  # each needs the face neighbours: set aside for Loop, checked for Catmull-Clark
+        assert (rows[label]["status"], rows[label]["evidence"]) == (Status.NOT_APPLICABLE.value, reason)
+        assert check_claim(label, catmull_clark()).status is not Status.NOT_APPLICABLE

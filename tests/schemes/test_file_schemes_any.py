@@ -223,7 +223,6 @@ def test_a_wide_quad_file_runs_through_every_command(tmp_path, capsys, text):
 
 
 @pytest.mark.parametrize("argv, why", [
-    (("claims",), "statements about quad meshes"),
     (("derive", "--out", "OUT"), "statements about quad meshes"),
     (("tune", "5"), "derived for quad meshes, not triangle meshes"),
     (("oracle", "--n", "5"), None),

@@ -266,3 +266,34 @@ def test_the_implementation_read_for_kobbelt_s_quad_scheme_has_a_face_point_per_
     # what NOT_SHIPPED says: the two pairs of opposite edge points give one face point on the regular lattice only
     gap = max(np.abs(one - other).max() for one, other in _implementation_face_points(n))
     assert (gap < 1e-12) if n == 4 else (gap > 1e-4), gap
+
+
+def test_at_a_regular_vertex_the_implementation_read_gives_the_tensor_product_four_point_face_point():
+    # what NOT_SHIPPED says the implementations read agree on: at valence 4 the face point built from new edge
+    # points is the four-point rule (-1, 9, 9, -1)/16 in each direction, 81/256, -9/256 and 1/256 on the 4 x 4 grid
+    # around the face; the virtual point at valence 4 must be the opposite neighbour for this to hold
+    from fractions import Fraction
+
+    mesh = ref.Mesh(ref.quad_disk(4, 4))
+    after = {(f[i], f[(i + 1) % 4]): f[(i + 2) % 4] for f in mesh.faces for i in range(4)}
+    directions = [(1, 0), (0, 1), (-1, 0), (0, -1)]
+
+    def plane(label):  # the valence-4 disk is the square grid: sector s spans directions s and s + 1
+        if label == ref.CENTRE:
+            return (0, 0)
+        s, a, b = label
+        return tuple(a * directions[s][i] + b * directions[(s + 1) % 4][i] for i in range(2))
+
+    one_d = {-1: Fraction(-1, 16), 0: Fraction(9, 16), 1: Fraction(9, 16), 2: Fraction(-1, 16)}
+    labels = list(ref._unit(mesh.vertices))
+    first_ring = [next(b for a, b in after if a == ref.CENTRE)]  # the neighbours counter-clockwise, as the helper
+    while (q := after[(first_ring[-1], after[(ref.CENTRE, first_ring[-1])])]) != first_ring[0]:
+        first_ring.append(q)
+    face_points = _implementation_face_points(4)
+    for q, (face_point, _) in zip(first_ring, face_points, strict=True):
+        c = after[(ref.CENTRE, q)]
+        corners = [plane(v) for v in (ref.CENTRE, q, c, after[(q, c)])]
+        x0, y0 = min(x for x, _ in corners), min(y for _, y in corners)
+        expected = [one_d.get(plane(v)[0] - x0, 0) * one_d.get(plane(v)[1] - y0, 0) for v in labels]
+        assert sum(w != 0 for w in expected) == 16 and sum(expected) == 1
+        assert np.allclose(face_point, [float(w) for w in expected], atol=1e-12), q

@@ -121,6 +121,8 @@ class UnshippedFamily:
     missing: str
     #: The texts that would state the missing rule, looked for and not at hand (named for the next reader, not cited).
     looked_for: tuple[str, ...] = ()
+    #: What is missing in one line, for the error a user gets who asks for the family by name.
+    summary: str = ""
 
 
 NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
@@ -167,5 +169,8 @@ NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
             "the chapter on interpolatory schemes",
             "Kobbelt's dissertation and habilitation",
             "Li, Ma and Bao 2005 past its abstract",
-        )),
+        ),
+        "its rule at an extraordinary vertex was not read in a text that states it as Kobbelt's (its regular rules, "
+        "the tensor product of the four-point scheme, are; symdecomp.schemes.zoo_literature.NOT_SHIPPED says what was "
+        "read)"),
 )}

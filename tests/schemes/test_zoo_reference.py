@@ -218,6 +218,7 @@ def test_the_guide_s_ngon_eigenvalues_are_the_fourier_transform_it_derives(n):
 
 def test_a_family_whose_rules_were_not_read_is_not_shipped():
     from symdecomp.errors import InvalidSchemeError
+    from symdecomp.schemes.files import load_scheme
     from symdecomp.schemes.stencil_files import ZOO_FILES
     from symdecomp.schemes.zoo_literature import NOT_SHIPPED
 
@@ -225,6 +226,9 @@ def test_a_family_whose_rules_were_not_read_is_not_shipped():
     for name in NOT_SHIPPED:
         with pytest.raises(InvalidSchemeError, match=f"unknown family of the zoo '{name}'"):
             load_zoo(name)
+        with pytest.raises(InvalidSchemeError, match=f"^'{name}' is not shipped: ") as refused:  # by name: the reason
+            load_scheme(name)
+        assert NOT_SHIPPED[name].summary and str(refused.value).endswith(NOT_SHIPPED[name].summary)
 
 
 def _implementation_face_points(n: int, w: float = 1.0):

@@ -231,6 +231,14 @@ def test_a_family_whose_rules_were_not_read_is_not_shipped():
         assert NOT_SHIPPED[name].summary and str(refused.value).endswith(NOT_SHIPPED[name].summary)
 
 
+def test_a_user_s_file_named_as_an_unshipped_family_is_read_as_a_file(tmp_path, monkeypatch):
+    from symdecomp.schemes.files import load_scheme
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "kobbelt-quad").write_text(_KOBBELT_REGULAR, encoding="utf-8")
+    assert load_scheme("kobbelt-quad").name == "kobbelt-quad-regular-part"
+
+
 def _implementation_face_points(n: int, w: float = 1.0):
     """The rules ``NOT_SHIPPED["kobbelt-quad"]`` read in an implementation, on a quad disk around a vertex of valence
     ``n``: each face at the centre's point along its one pair of opposite new edge points, and along the other."""

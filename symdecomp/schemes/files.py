@@ -177,6 +177,10 @@ def load_scheme(name_or_path: str | os.PathLike) -> Scheme | StencilScheme:
         text = resources.files("symdecomp.schemes").joinpath(SHIPPED_FILES[text_name]).read_text(encoding="utf-8")
         return scheme_from_text(text, source=SHIPPED_FILES[text_name], default_name=text_name)
     if not os.path.isfile(text_name):
+        from symdecomp.schemes.zoo_literature import NOT_SHIPPED
+
+        if text_name in NOT_SHIPPED:
+            raise InvalidSchemeError(f"{text_name!r} is not shipped: {NOT_SHIPPED[text_name].summary}")
         raise InvalidSchemeError(
             f"unknown scheme {text_name!r}: neither a known name ({', '.join([*SCHEMES, *stencil_files.ZOO_FILES])}) nor a readable file"
         )

@@ -121,6 +121,8 @@ class UnshippedFamily:
     missing: str
     #: The texts that would state the missing rule, looked for and not at hand (named for the next reader, not cited).
     looked_for: tuple[str, ...] = ()
+    #: What is missing in one line, for the error a user gets who asks for the family by name.
+    summary: str = ""
 
 
 NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
@@ -145,7 +147,11 @@ NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
         "- 4 w/((4 + w) n) sum_j r_j, with q the neighbours and r the faces' opposite corners (at n = 4 it is "
         "the opposite neighbour); a second implementation (a Blender add-on, Interpolating Subdivision for Quads, "
         "which cites nothing either) has no virtual point, takes any neighbour off the edge's faces at an "
-        "extraordinary end, and averages a face point over its two pairs of opposite edge points; the other public "
+        "extraordinary end, and averages a face point over its two pairs of opposite edge points; a third (the "
+        "repository daergoth/SubdivisionSandbox, a geometry mask for CGAL's primal quad refinement, citing nothing) "
+        "has the regular rules only: 9/16 and -1/16 on an edge, 81/256, -9/256 and 1/256 on the 16 points around a "
+        "face, the four-point rule in each direction (the first implementation's face point at valence 4 is this "
+        "stencil: tests/schemes/test_zoo_reference.py), and no rule at an extraordinary vertex; the other public "
         "code under Kobbelt's name read is his sqrt(3) scheme or Li, Ma and Bao's",
         "Kobbelt's own statement of the rule at an extraordinary vertex: his text was at hand only to its "
         "introduction's first paragraph, the one later paper read (Li, Ma and Bao, its abstract) keeps his surfaces "
@@ -163,5 +169,8 @@ NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
             "the chapter on interpolatory schemes",
             "Kobbelt's dissertation and habilitation",
             "Li, Ma and Bao 2005 past its abstract",
-        )),
+        ),
+        "its rule at an extraordinary vertex was not read in a text that states it as Kobbelt's (its regular rules, "
+        "the tensor product of the four-point scheme, are; symdecomp.schemes.zoo_literature.NOT_SHIPPED says what was "
+        "read)"),
 )}

@@ -103,6 +103,8 @@ MISUSE = [
     (["derive", "--out", "a", "--out", "b"], "more than once"),
     (["spectrum", "5", "--scheme", "butterfly"], "unknown scheme"),
     (["spectrum", "5", "--scheme", ""], "unknown scheme"),
+    (["spectrum", "5", "--scheme", "kobbelt-quad", "--json"], "'kobbelt-quad' is not shipped: its rule at an extraordinary"),
+    (["c1", "--n", "5", "--scheme", "kobbelt-quad"], "'kobbelt-quad' is not shipped"),
     (["spectrum", "5", "--bogus"], "unrecognized arguments"),
     (["spectrum", "5", "6"], "unrecognized arguments"),
     (["spectrum"], "required"),

@@ -19,6 +19,7 @@ extraordinary element is read off with this module's own identification of the n
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import numpy as np
 
@@ -273,6 +274,27 @@ def butterfly_matrix(n: int) -> np.ndarray:
     keep = [mesh.vertices.index(v) for v in labels]
     assert np.abs(np.delete(full, keep, axis=1)).max() < 1e-15, "the 2-ring is not closed under a step"
     return full[:, keep]
+
+
+def four_point_line_matrix(k: int, w: Fraction = Fraction(1, 16)) -> list[list[Fraction]]:
+    """The four-point scheme's step on the points ``-k..k`` of a line around a vertex, exactly.
+
+    A new point at an even index ``2l`` is the old point ``l`` (the scheme interpolates), at ``2l + 1`` it is
+    ``(1/2 + w)(p_l + p_(l+1)) - w (p_(l-1) + p_(l+2))``; the points ``-k..k`` are closed under a step for ``k >= 3``.
+    """
+    rows = [[Fraction(0)] * (2 * k + 1) for _ in range(2 * k + 1)]
+    for i in range(-k, k + 1):
+        if i % 2 == 0:
+            rows[i + k][i // 2 + k] = Fraction(1)
+            continue
+        for d, weight in ((-1, -w), (0, Fraction(1, 2) + w), (1, Fraction(1, 2) + w), (2, -w)):
+            rows[i + k][(i - 1) // 2 + d + k] += weight
+    return rows
+
+
+def tensor_product(a: list[list[Fraction]], b: list[list[Fraction]]) -> list[list[Fraction]]:
+    """The Kronecker product: the step of the tensor-product scheme on the grid of the two lines' points."""
+    return [[x * y for x in row_a for y in row_b] for row_a in a for row_b in b]
 
 
 def spectrum(matrix: np.ndarray) -> list[complex]:

@@ -79,6 +79,7 @@ def test_the_comparison_can_fail(monkeypatch):
     assert not iterate_hyperbolic_ring(CC, 5, steps=2).matches_prediction
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_basis_function_claim_with_a_cos_vertex_weight_keeps_the_range_and_says_why():
     # cos(2 pi/n) in the vertex rule: the resultants are not rational in n, so no every-n argument, but no error either
     import sympy as sp

@@ -4,6 +4,7 @@ with one weight moved by 1/64 gives statuses that agree with iterating that sche
 import json
 
 import mpmath
+import pytest
 import sympy as sp
 
 from symdecomp.analysis.tangent import tangent_eigenvalues
@@ -16,6 +17,7 @@ from tests.claims.test_mutations import MOVED
 from tests.schemes.test_scheme_files import CC_TOML
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_the_catmull_clark_file_gives_the_built_in_statuses(tmp_path, capsys):
     path = tmp_path / "cc.toml"
     path.write_text(CC_TOML)
@@ -95,6 +97,28 @@ def test_moved_scheme_eq_39_and_the_n4_finding_agree_with_its_matrix():
     assert min(abs(e - lam1**2) for e in eigs) > 1e-4
 
 
+def test_the_claims_about_face_neighbours_are_set_aside_for_a_triangle_scheme_with_that_reason(capsys):
+    """``claims --scheme loop`` runs (it used to refuse a triangle-mesh scheme): the claims about the quad 1-ring's
+    face neighbours ``b_i`` declare that requirement, so for Loop they are not applicable with that reason (they
+    raised on a scheme without a face rule), and for Catmull-Clark they are checked."""
+    from symdecomp.claims.applicability import FACE_NEIGHBOURS
+    from symdecomp.schemes.loop import loop
+    from symdecomp.schemes.scheme import catmull_clark
+
+    assert main(["claims", "--scheme", "loop", "--section", "3", "--json", "--no-progress"]) == 0
+    rows = json.loads(capsys.readouterr().out)["rows"]
+    reason = str(FACE_NEIGHBOURS.unmet(loop()))
+    assert "no face neighbours b_i" in reason and FACE_NEIGHBOURS.unmet(catmull_clark()) is None
+    assert rows and all((r["status"], r["evidence"]) == (Status.NOT_APPLICABLE.value, reason) for r in rows)
+    staged = [c.label for c in all_claims() if FACE_NEIGHBOURS in c.requires]
+    assert {"Eq. 14-15", "Eq. 17-21", "Section 5.3: basis function"} <= set(staged)
+    for label in staged:
+        assert (check_claim(label, loop()).status, str(check_claim(label, loop()).evidence)) == (Status.NOT_APPLICABLE, reason)
+    for label in ("Eq. 14-15", "Eq. 17-21"):  # the same claims on Catmull-Clark's quads are checked
+        assert check_claim(label, catmull_clark()).status is Status.PROVED
+
+
+@pytest.mark.slow  # 15-25 s: every claim for Loop
 def test_a_triangle_mesh_scheme_gets_every_claim_checked_or_set_aside_with_its_reason(tmp_path, capsys):
     """``claims --scheme loop`` lists every claim: those whose checks read Loop's model (Section 2, C1, the
     curvature and sector claims) are checked, and those about the quad 1-ring's face neighbours ``b_i`` are not

@@ -112,6 +112,7 @@ def test_a_defective_eigenvalue_has_no_single_component():
 # --- 3. the scope is what the computation covers ---------------------------------------------------------------------
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_remark_5_2_with_free_vertex_weights_is_a_range_not_every_n():
     # No wall-clock budget: the verdict is what is tested, and a loaded machine must not turn it into "undecided".
     r = check_claim("Remark 5.2", catmull_clark(alpha, beta), budget=None)

@@ -92,6 +92,7 @@ def test_scope_agrees_with_evidence_for_the_corpus(name, label):
     assert disagreements(label, check_claim(label, _scheme(name))) == []
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_one_file_one_scope_for_certified_refutations():
     """The issue's file (Catmull-Clark with a fixed centre at n = 7): C1 and the shape are refuted at n = 7 from certified
     comparisons, both as a single case (the shape said 'every n' from that one valence)."""

@@ -13,7 +13,7 @@ from symdecomp.analysis.zoo_roots import cosine_form
 from symdecomp.cli import main
 
 
-@pytest.mark.parametrize("n", [7, 24])
+@pytest.mark.parametrize("n", [7, pytest.param(24, marks=pytest.mark.slow)])
 def test_the_square_is_shown_and_is_lambda_1_squared(capsys, n) -> None:
     assert main(["artifacts", "--scheme", "sqrt3", "--n", str(n), "--json"]) == 0
     curvature = json.loads(capsys.readouterr().out)["rows"][0]["curvature"]

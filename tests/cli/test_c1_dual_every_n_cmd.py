@@ -21,6 +21,7 @@ def write(tmp_path, weight: str) -> str:
     return str(path)
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_doo_sabin_every_n_in_text(monkeypatch, capsys):
     """The spectral conditions proved for every n (the bounds from n = 16), the dual test at n = 3..15, the map for every
     n >= 16: C1 proved for every n."""

@@ -18,7 +18,7 @@ def _rows(capsys, argv):
     return code, json.loads(capsys.readouterr().out)
 
 
-@pytest.mark.parametrize("scheme", ["catmull-clark", "loop"])
+@pytest.mark.parametrize("scheme", [pytest.param("catmull-clark", marks=pytest.mark.slow), "loop"])
 def test_boundary_vertices_k_1_to_16_are_proved(capsys, scheme):
     code, out = _rows(capsys, ["check", "--k", "1:16", "--boundary", "--certify", "--scheme", scheme])
     assert code == 0 and out["summary"]["ok"] and out["summary"]["agree"] == 16

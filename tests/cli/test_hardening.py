@@ -218,6 +218,7 @@ def private_bridge(tmp_path, monkeypatch):
     return osd, osd_build
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_a_truncated_bridge_is_rebuilt(private_bridge):
     osd, osd_build = private_bridge
     library = osd_build.build()

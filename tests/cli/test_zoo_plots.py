@@ -66,6 +66,7 @@ def test_spectrum_plot_draws_every_family_the_same_bytes(schemes, fmt, tmp_path,
             assert b"neighbourhood of depth" in data  # the zoo's title (matplotlib keeps each text as a comment)
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_c1_plot_draws_every_family_the_same_bytes(schemes, tmp_path, capsys):
     """One valence: one map panel, the figure 2 x 3.7 by 7.2 inches."""
     for scheme in schemes:

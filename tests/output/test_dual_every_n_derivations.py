@@ -4,6 +4,7 @@ shows the computed objects (the n-gon's symbol, the outer eigenvalues, the Jacob
 from __future__ import annotations
 
 import flint
+import pytest
 import sympy as sp
 
 from symdecomp.output.dual_every_n_derivations import DUAL_CERTIFIED, dual_every_n_latex, dual_every_n_proof
@@ -25,6 +26,7 @@ def _flat(tex: str) -> str:
     return " ".join(tex.split())
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_doo_sabin_is_typeset_c1_for_every_n_from_the_proof():
     ds = load_zoo("doo-sabin")
     result = dual_every_n_proof(ds)
@@ -75,6 +77,7 @@ def test_a_variant_that_fails_dominance_gets_the_failing_statement():
     assert "\\item[dominant] failed, $n \\ge 6$." in tex and "it fails at n = 6 and at every n after it" in tex
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_the_derivations_file_ends_with_doo_sabin_after_the_primal_schemes():
     text = every_n_files()[EVERY_N_FILE]
     assert text.index("\\subsection*{loop}") < text.index("\\subsection*{doo-sabin}")

@@ -236,6 +236,7 @@ def _differences(expected: Path, actual: Path) -> list[str]:
     return sorted(name for name in a.keys() | b.keys() if a.get(name) != b.get(name))
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_derive_writes_the_files_and_removes_only_its_own_stale_ones(tmp_path, capsys):
     (tmp_path / "section-9.tex").write_text("stale")
     (tmp_path / "notes.tex").write_text("mine")
@@ -264,6 +265,7 @@ def temporary_claims(monkeypatch):
     yield
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_derive_prints_one_claim_and_reports_failed_checks(temporary_claims, tmp_path, capsys):
     assert main(["derive", "--label", "Eq. 998"]) == 0
     out = capsys.readouterr().out
@@ -278,6 +280,7 @@ def test_derive_prints_one_claim_and_reports_failed_checks(temporary_claims, tmp
     assert "\\section{Evolution of the eigencomponents}" in (tmp_path / "main.tex").read_text()
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_committed_derivations_match_the_registry(tmp_path):
     """Drift: regenerating gives the committed bytes (run `symdecomp derive` after changing a check)."""
     write_derivations(tmp_path)
@@ -327,6 +330,7 @@ def test_the_stress_document_compiles_and_nothing_runs_past_the_margin(tmp_path)
     assert (tmp_path / "main.pdf").stat().st_size > 0
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 @needs_tex
 def test_the_derivations_of_the_registry_compile(tmp_path):
     write_derivations(tmp_path)
@@ -377,6 +381,7 @@ def _ascii_math_in_findings(files: dict[str, str]) -> list[str]:
     return found
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_the_findings_of_the_registry_typeset_their_formulas(tmp_path):
     """Issue 10: no lambda_, omega^ or sqrt( as text in the findings of the regenerated document."""
     write_derivations(tmp_path)

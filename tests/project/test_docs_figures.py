@@ -63,6 +63,7 @@ def test_a_figure_that_cannot_be_drawn_yet_is_skipped_with_one_line_and_a_note(t
         EXT.figure_text("nope", {})
 
 
+@pytest.mark.slow  # over 10 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_a_figure_is_drawn_the_same_every_time_and_again_only_when_its_inputs_change(tmp_path):
     pytest.importorskip("matplotlib")
     figure = next(f for f in EXT.FIGURES if f.name == "tune-region")

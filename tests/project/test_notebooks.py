@@ -64,6 +64,7 @@ def test_notebook_is_thin(path):
             )
 
 
+@pytest.mark.slow  # 5-20 s each; CI's docs build executes every notebook too (raising on an error)
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_notebook_executes_from_a_clean_kernel(path, monkeypatch):
     monkeypatch.setenv("MPLBACKEND", "Agg")

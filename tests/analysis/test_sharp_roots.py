@@ -12,6 +12,7 @@ from symdecomp.cli import main
 from symdecomp.errors import NotApplicableError
 
 
+@pytest.mark.slow  # 5-9 s: the default run stays under 10 minutes on 2 cores; CI runs it with the slow tests
 def test_each_root_gets_the_ball_its_thirty_digit_value_lies_in():
     S = sd.exact_sharp_matrix(sd.catmull_clark(), sd.SharpVertex.dart(12, sd.QUAD))
     _, factors = S.charpoly().factor()

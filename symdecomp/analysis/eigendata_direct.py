@@ -197,7 +197,8 @@ def _wave_layout(cols: list[Any]) -> tuple[list[int], list[int], list[tuple[int,
                 if not np.array_equal(np.sort(steps[points]), 2 * np.arange(n) + eps):
                     return None
                 groups.append((e, eps, points[np.argsort(steps[points])]))
-    return waves, [c for c in range(len(cols)) if c not in set(waves)], groups
+    wave_set = set(waves)  # once: a set per column made this quadratic in N
+    return waves, [c for c in range(len(cols)) if c not in wave_set], groups
 
 
 def _lower_by_waves(cols: list[Any], dmat: list[list[flint.arb]]) -> list[list[flint.arb]] | None:
@@ -217,21 +218,26 @@ def _lower_by_waves(cols: list[Any], dmat: list[list[flint.arb]]) -> list[list[f
     table = cols[waves[0]].left_form.table
     period, k0 = len(table), len(cols)
     n, acb = period // 4, flint.acb
-    # per wave column: its slot among the real parts A_j (the cosine, j) and the imaginary parts B_j (the sine, n + j)
-    slots = [cols[c].left_form.wave[0] + (n if cols[c].left_form.wave[1] % period else 0) for c in waves]
-    scalars = {e: [cols[c].left_form.scalars[e] for c in waves] for e, _, _ in groups}
+    # per wave column and group: its coefficient's slot j and its complex factor, ``x`` (the cosine, A_j) or ``i x``
+    # (the sine, B_j), times the half step ``e^(-i pi j/n)`` where the group's points sit at odd half steps
+    slots = [cols[c].left_form.wave[0] for c in waves]
+    sine = [bool(cols[c].left_form.wave[1] % period) for c in waves]
     half_step = [acb(table[(2 * j) % period], -table[(2 * j - n) % period]) for j in range(n)]  # e^(-i pi j/n)
+    factors = {}
+    for e, eps, _ in groups:
+        xs = [cols[c].left_form.scalars[e] for c in waves]
+        zs = [acb(0, x) if s else acb(x) for x, s in zip(xs, sine)]
+        factors[(e, eps)] = [z * half_step[j] for z, j in zip(zs, slots)] if eps else zs
     out, zero = [], arb(0)
     for drow in dmat:
         row = [zero] * k0
         dw = [-drow[c] for c in waves]
         for e, eps, points in groups:
-            parts = [zero] * (2 * n)  # A_0..A_{n-1}, B_0..B_{n-1}
-            for d, x, slot in zip(dw, scalars[e], slots):
-                parts[slot] += d * x
-            coeffs = [acb(a, b) for a, b in zip(parts[:n], parts[n:])]
-            if eps:  # the half step
-                coeffs = [x * h for x, h in zip(coeffs, half_step)]
+            coeffs: list[Any] = [None] * n  # (A_j + i B_j) e^(-i pi j eps/n), j = 0..n-1
+            for d, z, j in zip(dw, factors[(e, eps)], slots):
+                term = z * d
+                coeffs[j] = term if coeffs[j] is None else coeffs[j] + term
+            coeffs = [acb(0) if x is None else x for x in coeffs]
             for p, value in zip(points.tolist(), acb.dft(coeffs)):
                 row[p] = value.real
         out.append(row)

@@ -36,9 +36,10 @@ caller; :func:`certified_eigendata` raises it until every entry rounds correctly
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import flint
 import numpy as np
@@ -308,20 +309,27 @@ def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int =
     return memory, seconds
 
 
-def _rounded_one(n: int, scheme: Scheme) -> tuple[int, RoundedEigenData]:
+def _rounded_one(n: int, scheme: Scheme, encode: Callable | None = None) -> tuple[int, Any]:
     from symdecomp.analysis.eigendata_direct import rounded_valence  # it builds on this module
 
-    return rounded_valence(scheme, n)
+    prec, rounded = rounded_valence(scheme, n)
+    return prec, rounded if encode is None else encode(rounded)
 
 
-def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local"):
+def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local", encode: Callable | None = None):
     """Yield ``(precision, RoundedEigenData)`` for the valences ``ns`` in order, on at most ``jobs`` processes.
 
     The pool is :func:`symdecomp.parallel.ordered_map` (``executor``: ``"local"``, ``"dask"`` or
     ``"dask=ADDRESS"``); the largest valences are handed out first, to keep every worker busy.
+    ``encode``: a module-level function of a :class:`RoundedEigenData` (the file's text or bytes of the valence),
+    applied where the valence is computed, and its result yielded instead: the workers write the file's pieces
+    in parallel, and the largest valences, done first, do not wait to be encoded one by one at the end.
     Refused before any work when the memory estimate is beyond the limit (:func:`check_eigendata_cost`).
     """
+    from symdecomp.analysis import eigendata_direct  # noqa: F401 - imported once here, before the workers fork
+
     ns = list(ns)
     if ns:
         check_eigendata_cost(scheme, max(ns), pool_size(jobs, len(ns)))
-    yield from ordered_map(_rounded_one, ns, shared={"scheme": scheme}, jobs=jobs, executor=executor, cost=lambda n: n)
+    shared = {"scheme": scheme} if encode is None else {"scheme": scheme, "encode": encode}
+    yield from ordered_map(_rounded_one, ns, shared=shared, jobs=jobs, executor=executor, cost=lambda n: n)

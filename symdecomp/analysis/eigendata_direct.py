@@ -123,9 +123,10 @@ def _read_rows(p: PatchMatrices, g_rows: list[dict[int, object]]) -> set[int]:
     return rows
 
 
-def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None]]:
+def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, np.ndarray]:
     """The balls of ``values``, ``V^-1`` (its 1-ring rows made only where read) and the sub-patch tables at
-    ``prec`` bits (inside its ``workprec``), and ``V^-1`` rounded (:func:`_round_ring_rows`, then the lower block)."""
+    ``prec`` bits (inside its ``workprec``), and ``V^-1`` rounded (:func:`_round_ring_rows`, then the lower block),
+    flat, row-major, NaN where an entry did not round (a correctly rounded entry is finite)."""
     from symdecomp.analysis.eigendata import _g_rows
 
     k0, size = p.ring_size, p.size
@@ -156,13 +157,14 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, list[float | None
     lower_rows: list[list[flint.arb] | None] = [lower[i] + wia[i] for i in range(r)]
     ring_rows: list[list[flint.arb] | None] = [None] * k0
     inverse = _Cells(ring_rows + lower_rows, lambda i: cols[i].left + zeros)
-    rounded = _round_ring_rows(cols, size) + round_balls([x for row in lower_rows if row is not None for x in row])
+    lower_rounded = np.array(round_balls([x for row in lower_rows if row is not None for x in row]), dtype=float)
+    rounded = np.concatenate([_round_ring_rows(cols, size).ravel(), lower_rounded])  # NaN: not rounded (None)
     for i, j in lower_mirror_zeros(p, cols, g_rows) if not jordan else ():
-        if rounded[i * size + j] is None and inverse[i, j].contains(0):  # exact by the symmetry
+        if np.isnan(rounded[i * size + j]) and inverse[i, j].contains(0):  # exact by the symmetry
             inverse[i, j], rounded[i * size + j] = arb(0), 0.0
-    bad = [(i, j) for i in range(k0, size) for j in range(k0) if rounded[i * size + j] is None]
+    bad = [(i, j) for i in range(k0, size) for j in range(k0) if np.isnan(rounded[i * size + j])]
     for (i, j), x in _lower_at_zero_prec(p, bad).items():
-        inverse[i, j], rounded[i * size + j] = x, round_ball(x)
+        inverse[i, j], rounded[i * size + j] = x, round_ball(x)  # None (not rounded) is stored as NaN
     return _DirectData(p.n, prec, values, inverse, tuple(phi), tuple(jordan), _Unused()), rounded
 
 
@@ -288,8 +290,9 @@ def _lower_at_zero_prec(p: PatchMatrices, entries: list[tuple[int, int]]) -> dic
     return out
 
 
-def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
-    """The 1-ring rows of ``V^-1`` rounded, row-major (``size`` per row, None where an entry does not round).
+def _round_ring_rows(cols: list[Any], size: int) -> np.ndarray:
+    """The 1-ring rows of ``V^-1`` rounded, ``k0 x size`` (NaN where an entry does not round: a correctly rounded
+    entry is finite), kept as an array from the products to the file.
 
     Rows kept as :class:`~symdecomp.analysis.fourier_patterns.PatternForm` s (a scalar times a cosine of the
     trig table) are rounded all at once from their factors (:func:`~symdecomp.algebra.rounding.round_products`),
@@ -313,12 +316,12 @@ def _round_ring_rows(cols: list[Any], size: int) -> list[float | None]:
         coef, index = np.stack([f.coef for f in forms]), np.stack([f.index for f in forms])
         vals, ok = round_products(s[:, np.arange(len(forms))[:, None], coef], c[:, index])
         out[formed, :k0], certified[formed, :k0] = vals, ok
-    flat: list[float | None] = [*out.ravel().tolist()]
     for i in set(range(k0)) - set(formed):
-        flat[i * size: i * size + k0] = round_balls(cols[i].left)
+        out[i, :k0] = np.array(round_balls(cols[i].left), dtype=float)  # None -> NaN
     for i, j in zip(*np.nonzero(~certified)):
-        flat[i * size + j] = round_ball(cols[i].left_form.at(j))
-    return flat
+        x = round_ball(cols[i].left_form.at(j))
+        out[i, j] = np.nan if x is None else x
+    return out
 
 
 def rounded_valence(scheme: Scheme, n: int, prec: int = 256) -> tuple[int, RoundedEigenData]:

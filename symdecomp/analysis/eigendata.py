@@ -277,11 +277,16 @@ _BASE_BYTES, _ENTRY_BYTES = 120 << 20, 1600
 _SECONDS, _DENSE_SECONDS, _DECIMAL_SECONDS = (2e-4, 2e-7, 4e-9), (9e-6, 3e-8), 3e-5
 
 
-def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
+#: Bytes of JSON text a number at most: a quoted shortest round-trip float64 and its comma (``"-1.2345678901234567e-100",``).
+_TEXT_BYTES = 27
+
+
+def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17, text: bool = False) -> tuple[int, float]:
     """``(bytes, seconds)``: the estimated peak memory and wall-clock time of the data file for valences ``3..nmax``.
 
     ``jobs`` processes each hold one valence at a time (finished valences wait for their turn in
-    the main process); ``digits > 17``: the decimal JSON form, from wider balls, one process.
+    the main process: 8 bytes a number, or as JSON text with ``text``, :data:`_TEXT_BYTES`);
+    ``digits > 17``: the decimal JSON form, from wider balls, one process.
     """
     p = patch_matrices(scheme, 3)
     extra, width = p.size - p.ring_size, len(p.subpatches[0])
@@ -294,16 +299,16 @@ def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -
         seconds = sum(scale * (_DENSE_SECONDS[0] * k * k + _DENSE_SECONDS[1] * k**3) for k in sizes)
         return int(peak), seconds + _DECIMAL_SECONDS * scale * 256 / ZERO_PREC * sum(numbers)
     peak = _BASE_BYTES * (1 + (workers if workers > 1 else 0)) + workers * _ENTRY_BYTES * sizes[-1] ** 2
-    held = 8 * sum(numbers) if workers > 1 else 0
+    held = (_TEXT_BYTES if text else 8) * sum(numbers) if workers > 1 else 0
     a, b, c = _SECONDS
     seconds = sum(a * k + b * k * k + c * k**3 for k in sizes) / workers
     return int(peak + held), seconds
 
 
-def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
+def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17, text: bool = False) -> tuple[int, float]:
     """:func:`eigendata_cost`, refused (:class:`~symdecomp.errors.ResourceLimitError`, naming the estimate)
     when the memory exceeds the limit of :func:`symdecomp.validate.check_memory`."""
-    memory, seconds = eigendata_cost(scheme, nmax, jobs, digits)
+    memory, seconds = eigendata_cost(scheme, nmax, jobs, digits, text)
     hours = f"{seconds / 3600:.1f} h" if seconds > 3600 else f"{seconds:.0f} s"
     check_memory(memory, f"the eigen-data for valences 3..{nmax} ({jobs} processes; about {hours} of computing)")
     return memory, seconds

@@ -189,7 +189,8 @@ def _run_vertex(args) -> int:
     if args.format == "binary" and not args.scheme.lattice.paper_claims:
         raise EvalDataFileError(f"--format binary: the binary layout is Stam's Catmull-Clark file; for --scheme {args.scheme.name} use --format json")
     digits = args.digits if args.format == "json" else FLOAT_DIGITS
-    memory, seconds = check_eigendata_cost(args.scheme, ns[-1], pool_size(args.jobs, len(ns)) if digits == FLOAT_DIGITS else 1, digits)
+    jobs = pool_size(args.jobs, len(ns)) if digits == FLOAT_DIGITS else 1
+    memory, seconds = check_eigendata_cost(args.scheme, ns[-1], jobs, digits, text=args.format == "json")  # the waiting text
     check_output_file(args.out)
     show = not args.quiet
     precs, defective = [], []

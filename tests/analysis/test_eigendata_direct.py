@@ -72,6 +72,24 @@ def test_a_low_precision_leaves_entries_unrounded_and_they_come_out_the_same(nam
         assert _same_bits(a, b)
 
 
+@pytest.mark.parametrize(("n", "count"), [(101, 5), (21, 2), (16, 3)])
+def test_two_transforms_in_one_give_the_real_parts_of_each(n, count):
+    """The real parts of Arb's DFT of each vector, and of two at once through Hermitian parts (lengths with a
+    prime factor from 7), are overlapping balls narrower than 2^-200 (an odd vector out is transformed alone)."""
+    import flint
+
+    from symdecomp.analysis.eigendata_direct import _real_parts_of_dfts
+
+    with flint.ctx.workprec(256):
+        vectors = [[flint.acb(flint.fmpq(j * j - 3 * v, 7 + v), flint.fmpq(5 - j, 3 + j + v)) for j in range(n)]
+                   for v in range(count)]
+        packed = _real_parts_of_dfts(vectors)
+        alone = [[x.real for x in flint.acb.dft(vector)] for vector in vectors]
+    assert len(packed) == count
+    for got, want in zip(packed, alone):
+        assert all(a.overlaps(b) and a.rad() < 2.0**-200 for a, b in zip(got, want))
+
+
 def test_the_command_writes_the_whole_valences_bytes(tmp_path):
     out = tmp_path / "cc.dat"
     assert main(["evaldata", "--n", "3:9", "--out", str(out), "--quiet", "--jobs", "1"]) == 0

@@ -68,6 +68,8 @@ def round_balls(balls) -> list[float | None]:
     >>> with flint.ctx.workprec(200):
     ...     round_balls([arb(1) / 3, arb(0), arb("0.5 +/- 0.1")]) == [1 / 3, 0.0, None]
     True
+    >>> round_balls([arb(0), arb("0 +/- 1e-400"), arb("0 +/- 1e-300")])  # exact; inside (-2^-1075, 2^-1075); not
+    [0.0, 0.0, None]
     """
     balls = list(balls)
     hi = [float(x) for x in balls]
@@ -75,7 +77,9 @@ def round_balls(balls) -> list[float | None]:
     with np.errstate(invalid="ignore"):
         gap = np.minimum(np.nextafter(ahi, _INF) - ahi, ahi - np.nextafter(ahi, 0.0)) * (0.5 - 2.0**-21)
     gap[~((ahi > 2.0**-1020) & (ahi < 2.0**1020))] = -1.0  # 0, subnormal, huge or not finite: round_ball decides
-    return [m if g > 0 and abs(x - m) < g else round_ball(x) for x, m, g in zip(balls, hi, gap.tolist())]
+    # an exact 0 (a symmetry's, set exactly) is 0.0 at once, without round_ball's test of a ball around 0
+    return [m if g > 0 and abs(x - m) < g else 0.0 if m == 0.0 and x.is_zero() else round_ball(x)
+            for x, m, g in zip(balls, hi, gap.tolist())]
 
 
 def round_ball_decimal(x: arb, digits: int) -> str | None:

@@ -36,9 +36,10 @@ caller; :func:`certified_eigendata` raises it until every entry rounds correctly
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import flint
 import numpy as np
@@ -276,11 +277,16 @@ _BASE_BYTES, _ENTRY_BYTES = 120 << 20, 1600
 _SECONDS, _DENSE_SECONDS, _DECIMAL_SECONDS = (2e-4, 2e-7, 4e-9), (9e-6, 3e-8), 3e-5
 
 
-def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
+#: Bytes of JSON text a number at most: a quoted shortest round-trip float64 and its comma (``"-1.2345678901234567e-100",``).
+_TEXT_BYTES = 27
+
+
+def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17, text: bool = False) -> tuple[int, float]:
     """``(bytes, seconds)``: the estimated peak memory and wall-clock time of the data file for valences ``3..nmax``.
 
     ``jobs`` processes each hold one valence at a time (finished valences wait for their turn in
-    the main process); ``digits > 17``: the decimal JSON form, from wider balls, one process.
+    the main process: 8 bytes a number, or as JSON text with ``text``, :data:`_TEXT_BYTES`);
+    ``digits > 17``: the decimal JSON form, from wider balls, one process.
     """
     p = patch_matrices(scheme, 3)
     extra, width = p.size - p.ring_size, len(p.subpatches[0])
@@ -293,35 +299,42 @@ def eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -
         seconds = sum(scale * (_DENSE_SECONDS[0] * k * k + _DENSE_SECONDS[1] * k**3) for k in sizes)
         return int(peak), seconds + _DECIMAL_SECONDS * scale * 256 / ZERO_PREC * sum(numbers)
     peak = _BASE_BYTES * (1 + (workers if workers > 1 else 0)) + workers * _ENTRY_BYTES * sizes[-1] ** 2
-    held = 8 * sum(numbers) if workers > 1 else 0
+    held = (_TEXT_BYTES if text else 8) * sum(numbers) if workers > 1 else 0
     a, b, c = _SECONDS
     seconds = sum(a * k + b * k * k + c * k**3 for k in sizes) / workers
     return int(peak + held), seconds
 
 
-def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17) -> tuple[int, float]:
+def check_eigendata_cost(scheme: Scheme, nmax: int, jobs: int = 1, digits: int = 17, text: bool = False) -> tuple[int, float]:
     """:func:`eigendata_cost`, refused (:class:`~symdecomp.errors.ResourceLimitError`, naming the estimate)
     when the memory exceeds the limit of :func:`symdecomp.validate.check_memory`."""
-    memory, seconds = eigendata_cost(scheme, nmax, jobs, digits)
+    memory, seconds = eigendata_cost(scheme, nmax, jobs, digits, text)
     hours = f"{seconds / 3600:.1f} h" if seconds > 3600 else f"{seconds:.0f} s"
     check_memory(memory, f"the eigen-data for valences 3..{nmax} ({jobs} processes; about {hours} of computing)")
     return memory, seconds
 
 
-def _rounded_one(n: int, scheme: Scheme) -> tuple[int, RoundedEigenData]:
+def _rounded_one(n: int, scheme: Scheme, encode: Callable | None = None) -> tuple[int, Any]:
     from symdecomp.analysis.eigendata_direct import rounded_valence  # it builds on this module
 
-    return rounded_valence(scheme, n)
+    prec, rounded = rounded_valence(scheme, n)
+    return prec, rounded if encode is None else encode(rounded)
 
 
-def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local"):
+def rounded_eigendata(scheme: Scheme, ns, jobs: int = 1, executor="local", encode: Callable | None = None):
     """Yield ``(precision, RoundedEigenData)`` for the valences ``ns`` in order, on at most ``jobs`` processes.
 
     The pool is :func:`symdecomp.parallel.ordered_map` (``executor``: ``"local"``, ``"dask"`` or
     ``"dask=ADDRESS"``); the largest valences are handed out first, to keep every worker busy.
+    ``encode``: a module-level function of a :class:`RoundedEigenData` (the file's text or bytes of the valence),
+    applied where the valence is computed, and its result yielded instead: the workers write the file's pieces
+    in parallel, and the largest valences, done first, do not wait to be encoded one by one at the end.
     Refused before any work when the memory estimate is beyond the limit (:func:`check_eigendata_cost`).
     """
+    from symdecomp.analysis import eigendata_direct  # noqa: F401 - imported once here, before the workers fork
+
     ns = list(ns)
     if ns:
         check_eigendata_cost(scheme, max(ns), pool_size(jobs, len(ns)))
-    yield from ordered_map(_rounded_one, ns, shared={"scheme": scheme}, jobs=jobs, executor=executor, cost=lambda n: n)
+    shared = {"scheme": scheme} if encode is None else {"scheme": scheme, "encode": encode}
+    yield from ordered_map(_rounded_one, ns, shared=shared, jobs=jobs, executor=executor, cost=lambda n: n)

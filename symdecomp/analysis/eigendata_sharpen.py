@@ -35,21 +35,27 @@ Entry: TypeAlias = tuple[int, int]
 TableEntry: TypeAlias = tuple[int, int, int]
 
 
-def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: list[float | None] | None = None) -> RoundedEigenData | None:
+def _round_all(data: PatchEigenData, p: PatchMatrices | None = None,
+               inverse: list[float | None] | np.ndarray | None = None) -> RoundedEigenData | None:
     """Every entry correctly rounded, or None. With ``p``, entries that do not round are first
     sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`, then
     :func:`_replace_columns`) and rounded again; ``data`` then holds the sharper balls. ``inverse``:
-    ``V^-1`` already rounded (row by row, None where it did not round), else rounded here."""
+    ``V^-1`` already rounded, row-major (a list with None, or an array with NaN, where it did not round),
+    else rounded here."""
     size, width = data.size, data.phi[0].ncols()
     values = round_balls(data.values)
+    if isinstance(inverse, np.ndarray) and np.isnan(inverse).any():  # NaN: not rounded; an array stays one only whole
+        inverse = [None if x != x else x for x in inverse.tolist()]
     inverse = round_balls(data.inverse.entries()) if inverse is None else inverse
     phi = round_balls([x for t in data.phi for x in t.entries()])
     jordan = tuple((i, c, round_ball(g)) for i, c, g in data.jordan)
     if None in values or any(g is None for _, _, g in jordan):
         return None
-    bad_inverse = [divmod(q, size) for q, x in enumerate(inverse) if x is None] if None in inverse else []
+    whole = isinstance(inverse, np.ndarray)  # every entry rounded (above)
+    bad_inverse = [divmod(q, size) for q, x in enumerate(inverse) if x is None] if not whole and None in inverse else []
     bad_phi = [(q // (size * width), q // width % size, q % width) for q, x in enumerate(phi) if x is None] if None in phi else []
     if (bad_inverse or bad_phi) and p is not None:
+        inverse = inverse.tolist() if isinstance(inverse, np.ndarray) else inverse  # rows may be replaced: a list again
         _sharpen_lower_block(p, data, bad_inverse)
         _sharpen_subpatch_zeros(p, data, bad_phi)
         bad_inverse, bad_phi = _reround(data, inverse, phi, bad_inverse, bad_phi)
@@ -57,7 +63,7 @@ def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: li
             rows = {i for i, _ in bad_inverse} | {i for _, i, _ in bad_phi}
             _reround(data, inverse, phi, [(i, j) for i in rows for j in range(size)],
                      [(k, i, l) for k in range(3) for i in rows for l in range(width)])
-    if None in inverse or None in phi:
+    if (not isinstance(inverse, np.ndarray) and None in inverse) or None in phi:
         return None
     return RoundedEigenData(
         data.n, np.array(values), np.array(inverse).reshape(size, size), np.array(phi).reshape(3, size, width), jordan

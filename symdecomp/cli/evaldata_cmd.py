@@ -179,7 +179,7 @@ def _run_zoo(args) -> int:  # a scheme of the zoo: the data of its extraordinary
 
 def _run_vertex(args) -> int:
     from symdecomp.analysis.eigendata import check_eigendata_cost
-    from symdecomp.output.evaldata import binary_chunks, decimal_valence, json_chunks, json_valence_text
+    from symdecomp.output.evaldata import binary_chunks, binary_valence, decimal_valence, json_chunks, json_valence_text
 
     _sharp_kind(args)  # --k without a kind, or no --n: one line
     _refuse_ignored(args)
@@ -189,13 +189,17 @@ def _run_vertex(args) -> int:
     if args.format == "binary" and not args.scheme.lattice.paper_claims:
         raise EvalDataFileError(f"--format binary: the binary layout is Stam's Catmull-Clark file; for --scheme {args.scheme.name} use --format json")
     digits = args.digits if args.format == "json" else FLOAT_DIGITS
-    memory, seconds = check_eigendata_cost(args.scheme, ns[-1], pool_size(args.jobs, len(ns)) if digits == FLOAT_DIGITS else 1, digits)
+    jobs = pool_size(args.jobs, len(ns)) if digits == FLOAT_DIGITS else 1
+    memory, seconds = check_eigendata_cost(args.scheme, ns[-1], jobs, digits, text=args.format == "json")  # the waiting text
     check_output_file(args.out)
     show = not args.quiet
     precs, defective = [], []
 
-    def rounded():  # the valences as they come, in order; nothing holds the whole file
-        for prec, r in progress(rounded_eigendata(args.scheme, ns, args.jobs, args.executor), len(ns), "evaldata", enabled=show):
+    encode = binary_valence if args.format == "binary" else json_valence_text  # in the workers, in parallel
+
+    def rounded():  # the valences as they come, in order, each already the file's piece; nothing holds the whole file
+        valences = rounded_eigendata(args.scheme, ns, args.jobs, args.executor, encode=encode)
+        for prec, r in progress(valences, len(ns), "evaldata", enabled=show):
             precs.append(prec)
             defective.extend([r.n] if r.jordan else [])
             yield r
@@ -210,7 +214,7 @@ def _run_vertex(args) -> int:
     if args.format == "binary":
         size = write_output_file(args.out, binary_chunks(rounded(), ns[-1]))
     else:
-        entries = map(json_valence_text, rounded()) if digits == FLOAT_DIGITS else decimal()
+        entries = rounded() if digits == FLOAT_DIGITS else decimal()
         size = write_output_file(args.out, json_chunks(entries, ns[-1], digits, args.scheme.name))
     summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": size, "precision_bits": max(precs)}
     summary["jordan_valences"] = defective

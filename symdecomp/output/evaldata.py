@@ -68,7 +68,7 @@ from symdecomp.errors import EvalDataFileError, PrecisionError, SymdecompError
 from symdecomp.validate import FLOAT_DIGITS
 
 __all__ = [
-    "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "read_binary", "json_chunks",
+    "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "binary_valence", "BinaryValence", "read_binary", "json_chunks",
     "json_valence", "json_valence_text", "EncodedValence",
     "decimal_valence", "read_json", "sharp_entry", "sharp_json_chunks", "read_sharp_json", "load_document",
     "document_chunks",
@@ -99,21 +99,39 @@ def binary_bytes(data: Iterable[RoundedEigenData]) -> bytes:
     return b"".join(binary_chunks(data, data[-1].n))
 
 
-def binary_chunks(data: Iterable[RoundedEigenData], nmax: int) -> Iterator[bytes]:
-    """The binary file piece by piece: ``Nmax``, then one piece per valence as ``data`` yields it (3..nmax in order)."""
+@dataclass(frozen=True)
+class BinaryValence:
+    """One valence of the binary file already written as its bytes (:func:`binary_valence`)."""
+
+    n: int
+    """The valence."""
+    data: bytes
+    """The valence's piece of the file: eigenvalues, ``V^-1`` and the three sub-patch tables, little-endian."""
+    jordan: bool = False
+    """Always False: a valence with Jordan pairs has no binary layout (:func:`binary_valence` refuses it)."""
+
+
+def binary_valence(d: RoundedEigenData) -> BinaryValence:
+    """One valence's piece of the binary file (made where the valence is computed: a worker process, in parallel)."""
+    if d.phi.shape[-1] != 16 or d.jordan:
+        raise EvalDataFileError(f"valence {d.n}: not Catmull-Clark data of a diagonalizable matrix; the binary layout cannot hold it")
+    return BinaryValence(int(d.n), b"".join([
+        np.asarray(d.values, "<f8").tobytes(),
+        np.asarray(d.inverse, "<f8").ravel(order="F").tobytes(),
+        *(np.asarray(d.phi[k], "<f8").ravel(order="F").tobytes() for k in range(3)),
+    ]))
+
+
+def binary_chunks(data: Iterable[RoundedEigenData | BinaryValence], nmax: int) -> Iterator[bytes]:
+    """The binary file piece by piece: ``Nmax``, then one piece per valence as ``data`` yields it (3..nmax in order;
+    the arrays, or their bytes from :func:`binary_valence`)."""
     yield struct.pack("<i", nmax)
     ns = []
     for d in data:
         ns.append(d.n)
         if d.n != len(ns) + 2:
             _check_sequence(ns)
-        if d.phi.shape[-1] != 16 or d.jordan:
-            raise EvalDataFileError(f"valence {d.n}: not Catmull-Clark data of a diagonalizable matrix; the binary layout cannot hold it")
-        yield b"".join([
-            np.asarray(d.values, "<f8").tobytes(),
-            np.asarray(d.inverse, "<f8").ravel(order="F").tobytes(),
-            *(np.asarray(d.phi[k], "<f8").ravel(order="F").tobytes() for k in range(3)),
-        ])
+        yield (d if isinstance(d, BinaryValence) else binary_valence(d)).data
     if not ns or ns[-1] != nmax:
         _check_sequence(ns + [nmax + 1] if ns else [])
 
@@ -172,6 +190,8 @@ class EncodedValence:
     """Whether it has Loop's layout (a ``"jordan"`` list)."""
     text: str
     """``json.dumps(json_valence(d), separators=(",", ":"))``, character for character."""
+    jordan: bool = False
+    """Whether the valence carries Jordan pairs (its matrix is not diagonalizable)."""
 
 
 def _array_texts(arrays: list[np.ndarray]) -> list[str]:
@@ -202,7 +222,7 @@ def json_valence_text(d: RoundedEigenData) -> EncodedValence:
         pairs = ",".join(f'{{"row":{int(i)},"column":{int(c)},"value":"{float(g)!r}"}}' for i, c, g in d.jordan)
         parts.append(f',"jordan":[{pairs}]')
     parts.append("}")
-    return EncodedValence(int(d.n), width == 12, "".join(parts))
+    return EncodedValence(int(d.n), width == 12, "".join(parts), bool(d.jordan))
 
 
 def decimal_valence(scheme, n: int, digits: int, max_prec: int = 1 << 14) -> tuple[int, dict]:

@@ -53,6 +53,43 @@ def test_entries_that_do_not_round_are_sharpened_alone():
     assert certified_eigendata(cc, 4)[0].prec == 1200
 
 
+@pytest.mark.parametrize(("name", "n"), [("catmull-clark", 5), ("catmull-clark", 9), ("loop", 9)])
+def test_a_low_precision_leaves_entries_unrounded_and_they_come_out_the_same(name, n):
+    """At 64 bits some entries of ``V^-1`` do not round (they are NaN in the rounded array, never a value); the
+    valence then comes out of the sharpening steps or the whole route with the same float64s as at 256 bits."""
+    import flint
+
+    from symdecomp.analysis.eigendata_direct import _direct
+    from symdecomp.schemes.patch import patch_matrices
+
+    scheme = SCHEMES[name]
+    with flint.ctx.workprec(64):
+        _, inverse = _direct(patch_matrices(scheme, n), 64)
+    assert np.isnan(inverse).any() and np.isfinite(inverse[~np.isnan(inverse)]).all()
+    _, low = rounded_valence(scheme, n, 64)
+    _, slow = certified_eigendata(scheme, n)
+    for a, b in ((low.values, slow.values), (low.inverse, slow.inverse), (low.phi, slow.phi)):
+        assert _same_bits(a, b)
+
+
+@pytest.mark.parametrize(("n", "count"), [(101, 5), (21, 2), (16, 3)])
+def test_two_transforms_in_one_give_the_real_parts_of_each(n, count):
+    """The real parts of Arb's DFT of each vector, and of two at once through Hermitian parts (lengths with a
+    prime factor from 7), are overlapping balls narrower than 2^-200 (an odd vector out is transformed alone)."""
+    import flint
+
+    from symdecomp.analysis.eigendata_direct import _real_parts_of_dfts
+
+    with flint.ctx.workprec(256):
+        vectors = [[flint.acb(flint.fmpq(j * j - 3 * v, 7 + v), flint.fmpq(5 - j, 3 + j + v)) for j in range(n)]
+                   for v in range(count)]
+        packed = _real_parts_of_dfts(vectors)
+        alone = [[x.real for x in flint.acb.dft(vector)] for vector in vectors]
+    assert len(packed) == count
+    for got, want in zip(packed, alone):
+        assert all(a.overlaps(b) and a.rad() < 2.0**-200 for a, b in zip(got, want))
+
+
 def test_the_command_writes_the_whole_valences_bytes(tmp_path):
     out = tmp_path / "cc.dat"
     assert main(["evaldata", "--n", "3:9", "--out", str(out), "--quiet", "--jobs", "1"]) == 0

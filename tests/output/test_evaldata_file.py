@@ -169,6 +169,19 @@ def test_the_time_estimate_counts_the_valences_as_the_file_path_costs_them():
         assert eigendata_cost(scheme, 128, 1, digits=20)[1] > one[125]
 
 
+def test_the_estimate_counts_the_json_text_waiting_in_the_main_process():
+    """With workers, the finished valences wait in the main process as the file's pieces: JSON text takes more than the
+    8 bytes of a float64 a number, and the estimate with ``text`` counts at least what the text takes."""
+    from symdecomp.output.evaldata import json_valence_text
+
+    arrays = [d for _, d in rounded_eigendata(LOOP, range(3, 21))]
+    numbers = sum(d.values.size + d.inverse.size + d.phi.size for d in arrays)
+    text = sum(len(json_valence_text(d).text) for d in arrays)
+    extra = eigendata_cost(LOOP, 20, 2, text=True)[0] - eigendata_cost(LOOP, 20, 2)[0]
+    assert 8 * numbers < text <= 8 * numbers + extra
+    assert eigendata_cost(LOOP, 20, 1, text=True) == eigendata_cost(LOOP, 20, 1)  # one process: nothing waits
+
+
 def test_the_estimate_follows_the_limit_in_the_api_and_the_command(tmp_path, monkeypatch, capsys):
     memory, _ = eigendata_cost(LOOP, 10, 1)
     monkeypatch.setattr(validate, "MEMORY_LIMIT", memory - 1)

@@ -25,7 +25,7 @@ def test_bulk_text_is_the_encoder_s(scheme, n, loop, jordan):
     ((_, d),) = rounded_eigendata(scheme, [n])
     encoded = evaldata.json_valence_text(d)
     assert encoded.text == _dumped(d)
-    assert (encoded.n, encoded.loop, bool(d.jordan)) == (n, loop, jordan)
+    assert (encoded.n, encoded.loop, encoded.jordan) == (n, loop, jordan)
 
 
 def test_signed_zeros_and_neighbouring_doubles_keep_their_own_text():
@@ -52,3 +52,25 @@ def test_the_document_from_texts_is_the_document_from_entries():
     data = [d for _, d in rounded_eigendata(sd.loop(), [3, 4])]
     from_texts = "".join(evaldata.json_chunks(map(evaldata.json_valence_text, data), 4, 17, "loop"))
     assert from_texts == "".join(evaldata.json_chunks(map(evaldata.json_valence, data), 4, 17, "loop"))
+
+
+
+def test_json_pieces_encoded_in_the_workers_are_those_of_the_arrays():
+    """Two worker processes encode the valences where they compute them: the same text as the arrays computed in
+    this process and encoded here, in the valences' order, with the Jordan pairs of Loop's N = 3 flagged."""
+    ns = [3, 4, 5, 6]
+    arrays = [d for _, d in rounded_eigendata(sd.loop(), ns)]
+    pieces = [piece for _, piece in rounded_eigendata(sd.loop(), ns, jobs=2, encode=evaldata.json_valence_text)]
+    assert [(piece.n, piece.jordan) for piece in pieces] == [(3, True), (4, False), (5, False), (6, False)]
+    assert [piece.text for piece in pieces] == [_dumped(d) for d in arrays]
+
+
+def test_binary_pieces_encoded_in_the_workers_make_the_file_of_the_arrays():
+    ns = [3, 4, 5, 6]
+    arrays = [d for _, d in rounded_eigendata(sd.catmull_clark(), ns)]
+    pieces = [piece for _, piece in rounded_eigendata(sd.catmull_clark(), ns, jobs=2, encode=evaldata.binary_valence)]
+    assert [piece.n for piece in pieces] == ns
+    assert b"".join(evaldata.binary_chunks(pieces, 6)) == evaldata.binary_bytes(arrays)
+    d = arrays[0]
+    with pytest.raises(EvalDataFileError, match="valence 3: not Catmull-Clark data of a diagonalizable matrix"):
+        evaldata.binary_valence(RoundedEigenData(3, d.values, d.inverse, d.phi, ((0, 1, 1.0),)))

@@ -3,10 +3,14 @@
 Targets (issue 33): ``spectrum 1000 --boundary --scheme catmull-clark-blz`` within 5 s, the same for corners,
 creases and Loop's rules (the structural route: the mirror decomposition's blocks, O(k)); ``c1 --boundary --k
 1:1000`` within 60 s, the same for corners and Loop (the spectral and tangent conditions from the blocks, O(log k)
-per k; where they hold, the characteristic map from the eigenvectors in the mirror parts the blocks name, cubic in k
-in Arb, up to 64 faces; past that BLZ's sectors are undecided, so BLZ's rows are the whole range 1:K and miss the
-target: 4 min 9 s of wall clock for ``--boundary --k 1:1000 --scheme catmull-clark-blz`` on a loaded 2-core machine,
-1..64 certified C1 and 65..1000 undecided, against about 78 s per k at k = 30..40 and 1..32 only certified before).
+per k; where they hold, the characteristic map: for BLZ's boundary sectors from the subdominant eigenvectors in closed
+form, Fourier modes between the sharp rays, read on a few faces per k). Last measured (:func:`c1_targets` alone, one
+run, 2 cores at load 3 to 4 from other jobs, so these are pessimistic): ``c1 --boundary --k 1:1000`` 19.1 s for
+Catmull-Clark, 8.2 s for Loop, 64.3 s for ``catmull-clark-blz`` (all 1000 certified C1; just over the target at that
+load, 4 min 9 s with 65..1000 undecided before the closed-form modes) and 40.3 s for ``loop-blz``; ``--corner`` 19.1 s
+(Catmull-Clark), 7.1 s (Loop), 9.1 s (``catmull-clark-blz``: undecided from k = 2 on, its eigenvalue 1/2 is triple, so
+Zorin's condition that lambda_2 be strictly dominant fails and the test does not apply); each dense test at k = 1..8
+2.1 to 4.2 s.
 Every figure is the wall-clock time of the command in a fresh process (start-up included), so it depends on what else
 the machine runs: ``run.py`` prints the load. ``claims`` has its own file (``bench_claims.py``).
 
@@ -95,7 +99,7 @@ def c1_targets(quick: bool = False) -> list[dict]:
     """``c1 --k 1:K`` at boundary and corner vertices (``K = 1000``; ``quick``: 100, BLZ's 1:24), beside the dense test at
     k = 1..8."""
     top, limit, small = (100, None, range(1, 7)) if quick else (1000, 60.0, range(1, 9))
-    blz = 24 if quick else top  # BLZ's maps to 64 faces: minutes
+    blz = 24 if quick else top
     rows = []
     for scheme, vertex, last in (("catmull-clark", "boundary", top), ("catmull-clark", "corner", top), ("loop", "boundary", top),
                                  ("loop", "corner", top), ("catmull-clark-blz", "boundary", blz),

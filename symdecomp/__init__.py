@@ -206,7 +206,8 @@ nothing else.
                    shape chart (``plotting.shape``), the figures the commands draw with --plot: the characteristic
                    map and its certified bounds (``plotting.c1_figures``; a zoo scheme's map, its spline patches or
                    its control net refined by its rules, ``plotting.zoo_maps``), eigenvalues by frequency or block
-                   (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), the
+                   (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), C1 for every
+                   valence, the proof's lambda_1(n) beside the certified valences (``plotting.every_n_chart``), the
                    cross-check's agreement by valence (``plotting.check_chart``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
                    one scheme in one document (``report``: its sections; C1 and the regime for every valence,

@@ -119,7 +119,9 @@ def register(sub) -> None:
     add_quiet_option(p)
     add_plot_option(p, "the characteristic map at the first, the last and a middle vertex, over the certified bounds of its "
                     "Jacobian and of the spectral gap at every vertex, coloured by verdict (a scheme of the zoo: its spline "
-                    "patches, or its control net refined by its own rules, the panel saying which)")
+                    "patches, or its control net refined by its own rules, the panel saying which); with --every-n the "
+                    "proof's lambda_1(n) as a curve beside each certified valence's lambda_1, its bound on the other "
+                    "eigenvalues and its Jacobian bound")
     p.set_defaults(func=run)
 
 
@@ -213,7 +215,7 @@ def _run_zoo(args, items: None, plot) -> int:
         if reason is not None:
             raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
                                     f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
-        return _run_every_n(args, _zoo_one, ZOO_EVERY_N_CERTIFIED)
+        return _run_every_n(args, _zoo_one, ZOO_EVERY_N_CERTIFIED, plot)
     results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
     write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
@@ -348,7 +350,7 @@ def _run_vertex(args, items: None, plot) -> int:
     from symdecomp.verify.result import C1Verdict
 
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
-        return _run_every_n(args)
+        return _run_every_n(args, plot=plot)
 
     results = _run_valences(args, _one, lambda results: args.scheme.lattice.c1_method)
     write_plot(plot, lambda: _figure(args.scheme, results))
@@ -382,15 +384,14 @@ def _run_sharp(args, items: list[tuple], plot) -> int:
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 
 
-def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED) -> int:
+def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None) -> int:
     """``--every-n``: :func:`~symdecomp.verify.c1_every_n.c1_every_n`, or for a dual scheme of the zoo (``one`` is
-    :func:`_zoo_one`) :func:`~symdecomp.verify.c1_dual_every_n.c1_dual_every_n`; ``one(n)`` at ``3..last`` on the pool."""
+    :func:`_zoo_one`) :func:`~symdecomp.verify.c1_dual_every_n.c1_dual_every_n`; ``one(n)`` at ``3..last`` on the pool.
+    ``--plot``: the proof's ``lambda_1(n)`` beside the certified valences (:mod:`symdecomp.output.plotting.every_n_chart`)."""
     from symdecomp.parallel import ordered_map
-    from symdecomp.verify.c1_dual_every_n import c1_dual_every_n
-    from symdecomp.verify.c1_every_n import c1_every_n
+    from symdecomp.verify.c1_dual_every_n import c1_dual_every_n, ngon_spectrum
+    from symdecomp.verify.c1_every_n import c1_every_n, lambda_one
 
-    if given(args, "plot"):
-        raise InvalidInputError("--plot: --every-n draws no figure (its verdict is a proof, not a map); give --n A:B to draw")
     scheme = args.scheme
     valences = list(range(3 if one is _zoo_one else max(3, scheme.minimum_valence()), last + 1))
     rows = ordered_map(one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,
@@ -407,7 +408,15 @@ def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED) -> int:
             where = f"n >= {first}" if last is None else f"n = {first}..{last}" if last > first else f"n = {first}"
             print(f"  [{step.status}] {where}: {step.text}")
         print(f"{result.status}: {result.summary}")
+    write_plot(plot, lambda: _every_n_figure(result, [by_n[k].json for k in sorted(by_n)],
+                                             ngon_spectrum(scheme).first if one is _zoo_one else lambda_one(scheme)))
     return 0 if result.status in ("proved", "verified") else 1
+
+
+def _every_n_figure(result, rows: list[dict], lam):
+    from symdecomp.output.plotting.every_n_chart import every_n_figure
+
+    return every_n_figure(result, rows, lam)
 
 
 #: The route of each kind of element (:mod:`symdecomp.cli.element`), each given the arguments, c1's sector items and --plot.

@@ -46,7 +46,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached
 from symdecomp.verify.c1_uniform import UniformMapResult
 
-__all__ = ["EveryNStep", "EveryNResult", "spectral_every_n", "c1_every_n"]
+__all__ = ["EveryNStep", "EveryNResult", "spectral_every_n", "c1_every_n", "lambda_one"]
 
 T = sp.Symbol("t", real=True)  # cos(2 pi j/n)
 HALF = sp.Rational(-1, 2)  # t_1 = cos(2 pi/n) at n = 3
@@ -179,6 +179,31 @@ def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNS
                       f"and the signs of {len(tail.facts)} rational functions of n (Proposition 5.1's tail bound)",
                       "proved", (tail.start, None), "frequency-zero",
                       tuple((f"f_{{{k}}}(n)", fact) for k, fact in enumerate(dict.fromkeys(tail.facts), 1)))
+
+
+def lambda_one(scheme: Scheme) -> sp.Expr | None:
+    """``lambda_1`` as a closed form in ``n``: the dominant eigenvalue of the frequency-1 block ``M(t)`` (the larger root
+    of ``x^2 - tr x + det`` for a 2 x 2 block) at ``t = cos(2 pi/n)``; ``None`` where ``M`` is not a function of ``t``
+    alone (free parameters, an edge rule in ``n``).
+
+    >>> from symdecomp.schemes.loop import loop
+    >>> lambda_one(loop())
+    cos(2*pi/n)/4 + 3/8
+    """
+    if scheme.parameters:
+        return None
+    M = sp.Matrix(one_ring_matrices(scheme)[0])
+    if M.has(N):
+        return None
+    try:
+        if M.rows == 1:
+            lam = _in_t(M[0, 0])
+        else:
+            tr, det = _in_t(M.trace()), _in_t(M.det())
+            lam = (tr + sp.sqrt(sp.expand(tr**2 - 4 * det))) / 2
+    except NotApplicableError:
+        return None
+    return lam.subs(T, sp.cos(2 * sp.pi / N))
 
 
 def spectral_every_n(scheme: Scheme) -> tuple[EveryNStep, ...]:

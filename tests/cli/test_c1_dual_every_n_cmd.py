@@ -44,7 +44,9 @@ def test_a_variant_that_breaks_dominance_is_refuted_at_the_computed_valence(tmp_
     """sigma(+-2) = 1/4 + (n - 4)/8 reaches lambda_1 = 1/2 at n = 6: the step says so, the dual test fails there."""
     monkeypatch.setattr(c1_cmd, "ZOO_EVERY_N_CERTIFIED", 7)
     path = write(tmp_path, f"{DOO_SABIN} + (m - 4)*cos(4*pi*j/m)/(4*m)")
-    assert main(["c1", "--every-n", "--scheme", path, "--json", "--quiet", "--jobs", "1"]) == 1
+    plot = tmp_path / "every-n.svg"
+    assert main(["c1", "--every-n", "--scheme", path, "--json", "--quiet", "--jobs", "1", "--plot", str(plot)]) == 1
+    assert plot.read_bytes().startswith(b"<?xml")  # a refutation is drawn too: lambda_1(n) and the valences tested
     data = json.loads(capsys.readouterr().out)
     jsonschema.validate(data, json_schema())  # the one envelope, its step names among the schema's
     assert data["status"] == "refuted" and data["failure"] == 6 and data["certified"] == [3, 5]
@@ -74,10 +76,11 @@ def test_a_zoo_scheme_outside_the_route_is_refused_with_the_reason(capsys):
 
 
 @pytest.mark.parametrize("scheme", ["doo-sabin", "catmull-clark"])
-def test_every_n_with_plot_is_one_line(scheme, tmp_path, capsys):
-    """--every-n draws nothing: --plot is refused, not silently ignored, and no file is written."""
-    target = tmp_path / "map.png"
+def test_every_n_with_a_bad_plot_target_is_one_line_before_the_work(scheme, tmp_path, capsys):
+    """--every-n draws (the proof's lambda_1(n) beside the certified valences); a target it cannot write is refused
+    before any valence is tested, in one line, and nothing is written."""
+    target = tmp_path / "map.txt"
     assert main(["c1", "--every-n", "--scheme", scheme, "--plot", str(target)]) == 2
     (err,) = capsys.readouterr().err.strip().splitlines()
-    assert err == "symdecomp: error: --plot: --every-n draws no figure (its verdict is a proof, not a map); give --n A:B to draw"
+    assert err.startswith("symdecomp: error: ") and "--plot" in err and ".txt" in err
     assert not target.exists()

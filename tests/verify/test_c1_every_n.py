@@ -83,8 +83,29 @@ def test_a_failure_at_one_valence_is_a_concrete_refutation():
     assert r.status == "refuted" and r.failure == 5 and r.steps[0].status == "open"  # M depends on n: no argument in t
 
 
-def test_the_command(capsys):
-    assert main(["c1", "--every-n", "--scheme", "loop", "--json"]) == 0
+@pytest.mark.parametrize(("scheme", "regular"), [(catmull_clark(), 4), (loop(), 6)], ids=["catmull-clark", "loop"])
+def test_lambda_one_in_n_is_the_certified_lambda_at_each_valence(scheme, regular):
+    """The closed form the --every-n figure draws is the eigenvalue Reif's test certifies, valence by valence."""
+    from symdecomp.symbols import n as N
+    from symdecomp.verify.c1 import c1_test
+    from symdecomp.verify.c1_every_n import lambda_one
+
+    lam = lambda_one(scheme)
+    assert lam.free_symbols == {N}
+    for k in range(3, 9):
+        assert abs(float(lam.subs(N, k)) - c1_test(scheme, k).as_json()["lambda"]) < 1e-12
+    assert sp.simplify(lam.subs(N, regular) - sp.Rational(1, 2)) == 0  # the regular valence: the spline's 1/2
+    from tests.schemes.test_scheme_files import CC_TOML
+
+    free = scheme_from_text(CC_TOML.replace('name = "catmull-clark"', 'name = "free"\nparameters = ["alpha"]')
+                            .replace('a = "3/(2*n**2)"', 'a = "alpha"'))
+    assert free.parameters and lambda_one(free) is None  # free parameters: no closed form
+
+
+def test_the_command(capsys, tmp_path):
+    plot = tmp_path / "every-n.png"
+    assert main(["c1", "--every-n", "--scheme", "loop", "--json", "--plot", str(plot)]) == 0
+    assert plot.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")  # the proof's lambda_1(n) beside the certified valences
     data = json.loads(capsys.readouterr().out)
     assert data["status"] == "proved" and data["certified"] == [3, 64]
     assert [s["status"] for s in data["steps"]] == ["proved", "proved", "proved", "verified", "proved", "proved", "proved"]

@@ -3,7 +3,7 @@
 :func:`refine_figure` takes the points and faces the command writes (the exact points as doubles) and the control
 mesh it read, and draws them in 3-D from a fixed direction (:data:`VIEW`) with a fixed light
 (:data:`~symdecomp.output.plotting.meshes.LIGHT`), so that the picture is the same every run. A refined mesh of more
-than :data:`MAX_REFINED_FACES` faces is drawn from an even sample of them (every ``s``-th face; the title says so), and
+than :data:`MAX_REFINED_FACES` faces is drawn from an even sample of them (one face in ``s``; the title says so), and
 a control mesh of more than that many faces the same way, rather than spending minutes on a picture.
 """
 
@@ -56,6 +56,6 @@ def refine_figure(points: Any, faces: Sequence[Sequence[int]], control_points: A
     ax.add_collection3d(Line3DCollection(segments, colors=[(0.45, 0.45, 0.45, 0.6)], linewidths=0.8, label="control mesh"))
     equal_axes(ax, np.vstack([points, control]))
     ax.view_init(*VIEW)
-    drawn = "" if step == 1 else f"\n({len(polygons)} of the {len(faces)} faces drawn: every {step}th, at most {MAX_REFINED_FACES})"
+    drawn = "" if step == 1 else f"\n({len(polygons)} of the {len(faces)} faces drawn: one in {step}, at most {MAX_REFINED_FACES})"
     ax.set_title(title + drawn, fontsize=10)
     return fig

@@ -40,10 +40,9 @@ def _steps(text: str) -> int:
     return value
 
 
-def _max_drawn() -> int:
-    from symdecomp.output.plotting.refine_figure import MAX_REFINED_FACES  # numpy only: --help stays without matplotlib
-
-    return MAX_REFINED_FACES
+#: Most faces --plot draws (:data:`symdecomp.output.plotting.refine_figure.MAX_REFINED_FACES`, named here so that
+#: ``--help`` imports no figure module).
+MAX_DRAWN_FACES = 8192
 
 
 def register(sub) -> None:
@@ -61,7 +60,7 @@ def register(sub) -> None:
     p.add_argument("--format", choices=FORMATS, action=Once, default=None, help="the input format, if not its extension")
     p.add_argument("--out", action=Once, required=True, metavar="FILE", help="the refined mesh: .obj or .ply")
     flag(p, "--json", help='print {"mesh", "scheme", "steps", "vertices", "faces", "creases", "out", "bytes"}')
-    add_plot_option(p, f"the refined mesh (its faces shaded, the control mesh's edges light; at most {_max_drawn()} faces: "
+    add_plot_option(p, f"the refined mesh (its faces shaded, the control mesh's edges light; at most {MAX_DRAWN_FACES} faces: "
                     "an even sample of a larger mesh, as the title says)")
     add_quiet_option(p)
     p.set_defaults(func=run)

@@ -61,6 +61,13 @@ def test_refine_draws_an_even_sample_past_its_limit_and_says_so(tmp_path, capsys
     assert "(68 of the 136 faces drawn: one in 2, at most 100)" in ax.get_title()
 
 
+def test_the_help_names_the_limit_the_figure_draws():
+    from symdecomp.cli.refine_cmd import MAX_DRAWN_FACES
+    from symdecomp.output.plotting.refine_figure import MAX_REFINED_FACES
+
+    assert MAX_DRAWN_FACES == MAX_REFINED_FACES
+
+
 def _line(ax, label: str) -> np.ndarray:
     (line,) = [line for line in ax.get_lines() if line.get_label() == label]
     return np.array(line.get_data_3d(), dtype=float).T

@@ -1,4 +1,4 @@
-"""``--plot FILE`` on c1, spectrum, artifacts and check (issue 34, item 1): the same bytes every run, in the format of
+"""``--plot FILE`` on c1, spectrum, artifacts, check, refine and design (issue 34, item 1): the same bytes every run, in the format of
 the extension, refused before the work for a bad target, one line when matplotlib is missing."""
 
 from __future__ import annotations

@@ -208,7 +208,9 @@ nothing else.
                    its control net refined by its rules, ``plotting.zoo_maps``), eigenvalues by frequency or block
                    (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), C1 for every
                    valence, the proof's lambda_1(n) beside the certified valences (``plotting.every_n_chart``), the
-                   cross-check's agreement by valence (``plotting.check_chart``),
+                   cross-check's agreement by valence (``plotting.check_chart``), a refined mesh over its control
+                   mesh (``plotting.refine_figure``), a designed net with its limit point, normal and tangents
+                   (``plotting.design_figure``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
                    one scheme in one document (``report``: its sections; C1 and the regime for every valence,
                    ``report_every_n``; as LaTeX and PDF,

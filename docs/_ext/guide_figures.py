@@ -35,7 +35,7 @@ class Figure:
 
     #: The picture's name: ``NAME.png`` in :data:`FIGURE_DIR`, the argument of ``symdecomp-figure``.
     name: str
-    #: The arguments after ``symdecomp``; ``{out}`` is the image file, ``{dir}`` a folder for commands that write several.
+    #: The arguments after ``symdecomp``; ``{out}`` is the image file, ``{dir}`` a folder (it exists) for commands that write several.
     argv: tuple[str, ...]
     #: With ``{dir}``: the file of that folder to show.
     pick: str = ""
@@ -51,7 +51,7 @@ class Figure:
         return [ROOT / a for a in self.argv if "/" in a and (ROOT / a).is_file()]
 
 
-#: The pictures of the guide, by page. The last four wait for ``--plot`` on their commands.
+#: The pictures of the guide, by page (each drawn by its command's ``--plot``, or ``--figures``).
 FIGURES = (
     Figure("inspect-vertex", ("inspect", "notebooks/data/valences-3-5-6.obj", "--figures", "{dir}"), pick="vertex-11.png",
            caption="symdecomp inspect notebooks/data/valences-3-5-6.obj --figures DIR: vertex 11 (valence 5), its 1-ring, "
@@ -70,6 +70,12 @@ FIGURES = (
            caption="symdecomp artifacts --n 3:8 --plot FILE: the curvature regime over the valence"),
     Figure("check", ("check", "--n", "3:16", "--plot", "{out}"),
            caption="symdecomp check --n 3:16 --plot FILE: the closed forms against the full matrix"),
+    Figure("refine", ("refine", "notebooks/data/valences-3-5-6.obj", "--steps", "2", "--out", "{dir}/refined.obj", "--plot", "{out}"),
+           caption="symdecomp refine notebooks/data/valences-3-5-6.obj --steps 2 --out refined.obj --plot FILE: the refined "
+           "mesh over its control mesh"),
+    Figure("design", ("design", "--n", "5", "--normal", "1,1,2", "--elliptic", "1/2", "--out", "{dir}/ring.obj", "--plot", "{out}"),
+           caption="symdecomp design --n 5 --normal 1,1,2 --elliptic 1/2 --out ring.obj --plot FILE: the 2-ring it writes, "
+           "its limit point, normal and tangent directions"),
 )
 
 
@@ -100,6 +106,7 @@ def draw(figure: Figure, target: Path) -> Path:
     with tempfile.TemporaryDirectory() as work:
         drawn = Path(work) / "figure.png"
         folder = Path(work) / "figures"
+        folder.mkdir()  # for the files a command writes beside its figure (refine's and design's --out mesh)
         argv = [a.format(out=drawn, dir=folder) for a in figure.argv]
         env = dict(os.environ, MPLBACKEND="Agg", PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
         run = subprocess.run([sys.executable, "-m", "symdecomp", *argv], cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)

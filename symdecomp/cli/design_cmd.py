@@ -29,6 +29,10 @@ exact on the exact net: the position (Catmull-Clark: always; Loop: at valences 3
 normal (without ``--hyperbolic``, and with it at even valences), the tangent direction; the amounts are measured to
 double precision.
 
+``--plot FILE`` also draws the net it writes: the faces around the vertex (the 2-ring), the centre ``O``, its 1-ring,
+and the limit point, normal and tangent directions it prints (:mod:`symdecomp.output.plotting.design_figure`). The
+target is checked before any work; naming the ``--out`` file is refused.
+
 JSON (``--json``): ``{"scheme", "n", "vertex", "ring", "out", "format", "position_exact": ["x", "y", "z"],
 "position", "tangents", "normal", "normal_exact", "tangent_exact", "elliptic", "hyperbolic", "angle", "change"}``
 (``normal_exact``/``tangent_exact`` null where there was no target; ``change`` the Euclidean norm of the
@@ -41,6 +45,7 @@ import argparse
 from fractions import Fraction
 
 from symdecomp.cli.common import Once, flag, integer, print_json, scheme_by_name, valence
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.validate import MESH_FORMATS as FORMATS
 
 __all__ = ["register", "run"]
@@ -100,6 +105,8 @@ def register(sub) -> None:
          "decimals in full, up to ~55 digits), so that the file's limit is exactly the one computed; by default the position "
          "is printed as decimals and each coordinate written as the shortest decimal that reads back as its double")
     flag(p, "--json", help="print the achieved values as JSON")
+    add_plot_option(p, "the net it writes around the vertex (its 2-ring), the centre, and the limit point, normal and tangent "
+                    "directions it reports (not the --out file)")
     p.set_defaults(func=run)
 
 
@@ -208,6 +215,7 @@ def run(args) -> int:
     mode = _mode(args)
     out = check_output_file(args.out)
     fmt = mesh_format(out, args.format)
+    plot = _check_plot(args, out)
     if mode == "new":
         scheme = args.scheme if args.scheme is not None else catmull_clark()
         amounts = {k: getattr(args, k) for k in ("elliptic", "hyperbolic", "angle") if getattr(args, k) is not None}
@@ -223,4 +231,24 @@ def run(args) -> int:
     write_output_file(out, encode_mesh(written, fmt))
     data = _report(result, out, fmt)
     print_json(args, data) if args.json else _print(data, bool(args.exact))
+    write_plot(plot, lambda: _figure(written, result, data))
     return 0
+
+
+def _check_plot(args, out):
+    """``--plot``'s target, refused before any work (:func:`~symdecomp.cli.plot_file.check_plot`) and when it is ``--out``."""
+    from symdecomp.errors import InvalidInputError
+
+    plot = check_plot(args)
+    if plot is not None and plot.path.resolve() == out.resolve():
+        raise InvalidInputError(f"--plot {args.plot}: the same file as --out; the figure and the mesh need two files")
+    return plot
+
+
+def _figure(written, result, data: dict):
+    """The written net (its doubles) and the limit frame ``data`` reports, as printed."""
+    from symdecomp.output.plotting.design_figure import design_figure
+
+    title = f"{data['scheme']}, valence {data['n']}: vertex {data['vertex']}" + (", redesigned" if data["change"] else "")
+    return design_figure(written.points_array, written.faces, result.ring, data["position"], data["normal"],
+                         data["tangents"], title)

@@ -9,6 +9,11 @@ computed exactly and written as doubles with ``repr`` precision (a double reads 
 
 The scheme: ``--scheme`` (a name or a TOML file), else Catmull-Clark for quads or a mixed mesh and Loop for
 triangles. ``--json`` prints ``{"mesh", "scheme", "steps", "vertices", "faces", "creases", "out", "bytes"}``.
+
+``--plot FILE`` also draws the refined mesh it writes, its faces shaded and the control mesh's edges light, from a
+fixed view (:mod:`symdecomp.output.plotting.refine_figure`; at most
+:data:`~symdecomp.output.plotting.refine_figure.MAX_REFINED_FACES` faces, an even sample of a larger mesh, as the
+title says). The target is checked before the mesh is read.
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ import sys
 
 from symdecomp.cli.common import Once, flag, integer, print_json, progress, scheme_by_name
 from symdecomp.cli.files import check_output_file, write_output_file
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError
 from symdecomp.validate import MESH_FORMATS as FORMATS
@@ -32,6 +38,11 @@ def _steps(text: str) -> int:
     if value > MAX_STEPS:
         raise argparse.ArgumentTypeError(f"expected a number of steps <= {MAX_STEPS}, got {value} (each step multiplies the faces by 4)")
     return value
+
+
+#: Most faces --plot draws (:data:`symdecomp.output.plotting.refine_figure.MAX_REFINED_FACES`, named here so that
+#: ``--help`` imports no figure module).
+MAX_DRAWN_FACES = 8192
 
 
 def register(sub) -> None:
@@ -49,6 +60,8 @@ def register(sub) -> None:
     p.add_argument("--format", choices=FORMATS, action=Once, default=None, help="the input format, if not its extension")
     p.add_argument("--out", action=Once, required=True, metavar="FILE", help="the refined mesh: .obj or .ply")
     flag(p, "--json", help='print {"mesh", "scheme", "steps", "vertices", "faces", "creases", "out", "bytes"}')
+    add_plot_option(p, f"the refined mesh (its faces shaded, the control mesh's edges light; at most {MAX_DRAWN_FACES} faces: "
+                    "an even sample of a larger mesh, as the title says)")
     add_quiet_option(p)
     p.set_defaults(func=run)
 
@@ -73,6 +86,7 @@ def run(args) -> int:
     check_output_file(args.out, "--out")
     if not str(args.out).lower().endswith((".obj", ".ply")):
         raise InvalidInputError(f"--out {args.out}: give a .obj or .ply file name (the format follows the extension)")
+    plot = check_plot(args)
     from symdecomp.schemes.meshformats import read_mesh
 
     mesh = read_mesh(args.mesh, args.format, progress=None if args.quiet else lambda xs, total, what: progress(xs, total, f"refine {what}"))
@@ -91,6 +105,7 @@ def run(args) -> int:
                   f"{len(refined.corners)} corners and the boundary interpolation ({mesh.tags.interpolate_boundary}) "
                   "are not in it (write .obj to keep them)", file=sys.stderr)
     written = write_output_file(args.out, content, "--out")
+    write_plot(plot, lambda: _figure(mesh, scheme, args.steps, points, refined.faces))
     summary = {"mesh": mesh.name, "scheme": scheme.name, "steps": args.steps, "vertices": len(refined.points),
                "faces": len(refined.faces), "creases": len(refined.creases), "out": str(args.out), "bytes": written}
     if args.json:
@@ -99,3 +114,11 @@ def run(args) -> int:
         print(f"{mesh.name}: {args.steps} step(s) of {scheme.name}: {len(refined.points)} vertices, {len(refined.faces)} faces"
               f"{f', {len(refined.creases)} crease edges' if refined.creases else ''} -> {args.out} ({written} bytes)")
     return 0
+
+
+def _figure(mesh, scheme, steps: int, points, faces):
+    """The refined mesh as written (``points``: its doubles) over the control mesh ``mesh``."""
+    from symdecomp.output.plotting.refine_figure import refine_figure
+
+    return refine_figure(points, faces, mesh.points_array, mesh.faces,
+                         f"{mesh.name}: {steps} step(s) of {scheme.name}, {len(faces)} faces")

@@ -1,4 +1,4 @@
-"""``--plot FILE`` on c1, spectrum, artifacts and check (issue 34, item 1): the same bytes every run, in the format of
+"""``--plot FILE`` on c1, spectrum, artifacts, check, refine and design (issue 34, item 1): the same bytes every run, in the format of
 the extension, refused before the work for a bad target, one line when matplotlib is missing."""
 
 from __future__ import annotations
@@ -6,6 +6,7 @@ from __future__ import annotations
 import pytest
 
 from symdecomp.cli import main
+from tests.cli.test_inspect_cmd import MODEL
 
 pytest.importorskip("matplotlib")
 
@@ -20,6 +21,10 @@ CASES = {
     "check": ["check", "--n", "3:5"],
     "check --certify": ["check", "--n", "3:5", "--certify"],
     "check --boundary": ["check", "--boundary", "--k", "1:3", "--certify"],
+    "refine": ["refine", str(MODEL), "--steps", "2", "--out", "{tmp}/refined.obj"],
+    "design": ["design", "--n", "5", "--normal", "1,1,2", "--position", "1,2,3", "--elliptic", "1/2", "--hyperbolic", "1/4",
+               "--out", "{tmp}/ring.obj"],
+    "design --mesh": ["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--out", "{tmp}/model.obj"],
 }
 
 #: How each format's file starts.
@@ -30,6 +35,7 @@ MAGIC = {"png": b"\x89PNG\r\n\x1a\n", "svg": b"<?xml", "pdf": b"%PDF-"}
 @pytest.mark.parametrize("argv", CASES.values(), ids=CASES.keys())
 def test_two_runs_draw_the_same_bytes(argv, fmt, tmp_path, capsys):
     files = [tmp_path / f"first.{fmt}", tmp_path / f"second.{fmt}"]
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]  # the mesh a command writes with its figure
     for path in files:
         assert main([*argv, "--plot", str(path)]) == 0
         assert capsys.readouterr().out  # the text is printed as without --plot
@@ -63,9 +69,14 @@ def _refuse(monkeypatch, where: str) -> None:
     (["artifacts", "--n", "3"], "symdecomp.cli.artifacts_cmd.ordered_map"),
     (["check", "--n", "3"], "symdecomp.cli.check_cmd.check_valences"),
     (["check", "--boundary", "--k", "2", "--certify"], "symdecomp.verify.certify.certify_sharp"),
+    (["refine", str(MODEL), "--out", "{tmp}/refined.obj"], "symdecomp.schemes.meshformats.read_mesh"),
+    (["design", "--n", "5", "--normal", "0,0,1", "--out", "{tmp}/ring.obj"], "symdecomp.analysis.design.design_ring"),
+    (["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--out", "{tmp}/model.obj"],
+     "symdecomp.schemes.meshformats.read_mesh"),
 ])
 def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypatch, capsys):
     _refuse(monkeypatch, work)
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]
     assert main([*argv, "--plot", str(tmp_path / "figure.jpg")]) == 2
     assert capsys.readouterr().err == (f"symdecomp: error: --plot {tmp_path / 'figure.jpg'}: the file name must end in .png, "
                                        ".svg or .pdf (the format of the figure)\n")
@@ -76,6 +87,7 @@ def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypat
     assert main([*argv, "--plot", str(tmp_path / "dir.svg")]) == 2
     assert "is a directory" in capsys.readouterr().err
     assert not (tmp_path / "figure.jpg").exists() and list((tmp_path / "dir.svg").iterdir()) == []
+    assert not list(tmp_path.glob("*.obj"))  # refine and design wrote no mesh
 
 
 def test_without_matplotlib_one_line_and_exit_3_before_the_work(tmp_path, monkeypatch, capsys):

@@ -15,9 +15,11 @@ from symdecomp.output.plotting import (
     cbmatrix,
     characteristic,
     check_chart,
+    design_figure,
     elliptic,
     meshes,
     polygons,
+    refine_figure,
     regime_chart,
     spectrum_chart,
     tangent,
@@ -26,4 +28,5 @@ from symdecomp.output.plotting import (
 )
 
 __all__ = ["polygons", "tangent", "elliptic", "cbmatrix", "characteristic", "meshes", "tuning", "boundary", "c1_figures",
-           "spectrum_chart", "regime_chart", "check_chart", "zoo_maps"]
+           "spectrum_chart", "regime_chart", "check_chart", "zoo_maps",
+           "refine_figure", "design_figure"]

@@ -18,13 +18,14 @@ colours, at most :data:`MAX_DRAWN_FACES` faces: a larger mesh is drawn from an e
 from __future__ import annotations
 
 import io
+from typing import Any
 
 import numpy as np
 
 from symdecomp.algebra.polygons import decompose
 from symdecomp.output.plotting._mpl import label_axes, new_figure
 
-__all__ = ["vertex_figure", "colored_mesh_figure", "png_bytes"]
+__all__ = ["vertex_figure", "colored_mesh_figure", "png_bytes", "equal_axes", "even_sample", "shaded_colors"]
 
 
 def _ring_polygon(points: np.ndarray, n: int) -> np.ndarray:
@@ -80,19 +81,17 @@ def vertex_figure(report, points):
 MAX_DRAWN_FACES = 20000
 
 
-def colored_mesh_figure(points, faces, colors, title: str):
-    """The mesh seen from a fixed direction, each face coloured by the mean of its vertices' ``colors`` (uint8 RGB)."""
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+def even_sample(count: int, limit: int) -> int:
+    """The step of an even sample of at most ``limit`` of ``count`` faces (every step-th face; 1: all of them).
 
-    points = np.asarray(points, dtype=float)
-    colors = np.asarray(colors, dtype=float) / 255
-    step = max(1, len(faces) // MAX_DRAWN_FACES)
-    chosen = faces[::step]
-    polygons = [points[list(f)] for f in chosen]
-    face_colors = [colors[list(f)].mean(axis=0) for f in chosen]
-    fig = new_figure(7, 6)
-    ax = fig.add_subplot(projection="3d")
-    ax.add_collection3d(Poly3DCollection(polygons, facecolors=face_colors, edgecolors=(0, 0, 0, 0.15), linewidths=0.2))
+    >>> even_sample(100, 100), even_sample(101, 100), even_sample(10 ** 6, 20000)
+    (1, 2, 50)
+    """
+    return max(1, -(-count // limit))
+
+
+def equal_axes(ax: Any, points: np.ndarray) -> None:
+    """A 3-D axes around ``points`` with the same scale on the three axes (a cube), without axes drawn."""
     low, high = points.min(axis=0), points.max(axis=0)
     centre, half = (low + high) / 2, float((high - low).max()) / 2 or 1.0
     ax.set_xlim(centre[0] - half, centre[0] + half)
@@ -100,6 +99,35 @@ def colored_mesh_figure(points, faces, colors, title: str):
     ax.set_zlim(centre[2] - half, centre[2] + half)
     ax.set_box_aspect((1, 1, 1))
     ax.set_axis_off()
+
+
+#: The direction the shading of :func:`shaded_colors` is lit from (a fixed light: the same picture every run).
+LIGHT = np.array([1.0, -1.0, 2.0]) / np.sqrt(6.0)
+
+
+def shaded_colors(polygons: list[np.ndarray], base: tuple[float, float, float]) -> np.ndarray:
+    """An RGB colour per face: ``base`` darkened by the angle between the face's normal (Newell's) and :data:`LIGHT`,
+    either side of the face lit alike (``0.35`` of ``base`` facing away, all of it facing the light)."""
+    normals = np.array([np.cross(p, np.roll(p, -1, axis=0)).sum(axis=0) for p in polygons]).reshape(-1, 3)
+    lengths = np.linalg.norm(normals, axis=1)
+    cosine = np.abs(normals @ LIGHT) / np.where(lengths > 0, lengths, 1.0)
+    return np.outer(0.35 + 0.65 * cosine, np.asarray(base))
+
+
+def colored_mesh_figure(points, faces, colors, title: str):
+    """The mesh seen from a fixed direction, each face coloured by the mean of its vertices' ``colors`` (uint8 RGB)."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    points = np.asarray(points, dtype=float)
+    colors = np.asarray(colors, dtype=float) / 255
+    step = even_sample(len(faces), MAX_DRAWN_FACES)
+    chosen = faces[::step]
+    polygons = [points[list(f)] for f in chosen]
+    face_colors = [colors[list(f)].mean(axis=0) for f in chosen]
+    fig = new_figure(7, 6)
+    ax = fig.add_subplot(projection="3d")
+    ax.add_collection3d(Poly3DCollection(polygons, facecolors=face_colors, edgecolors=(0, 0, 0, 0.15), linewidths=0.2))
+    equal_axes(ax, points)
     ax.set_title(title + ("" if step == 1 else f" (every {step}th face drawn)"))
     return fig
 

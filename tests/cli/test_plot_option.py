@@ -1,4 +1,4 @@
-"""``--plot FILE`` on c1, spectrum, artifacts and check (issue 34, item 1): the same bytes every run, in the format of
+"""``--plot FILE`` on c1, spectrum, artifacts, check, masks and charpoly (issue 34, item 1): the same bytes every run, in the format of
 the extension, refused before the work for a bad target, one line when matplotlib is missing."""
 
 from __future__ import annotations
@@ -20,6 +20,8 @@ CASES = {
     "check": ["check", "--n", "3:5"],
     "check --certify": ["check", "--n", "3:5", "--certify"],
     "check --boundary": ["check", "--boundary", "--k", "1:3", "--certify"],
+    "charpoly": ["charpoly", "5"],
+    "charpoly --scheme loop": ["charpoly", "7", "--scheme", "loop"],
 }
 
 #: How each format's file starts.
@@ -63,6 +65,8 @@ def _refuse(monkeypatch, where: str) -> None:
     (["artifacts", "--n", "3"], "symdecomp.cli.artifacts_cmd.ordered_map"),
     (["check", "--n", "3"], "symdecomp.cli.check_cmd.check_valences"),
     (["check", "--boundary", "--k", "2", "--certify"], "symdecomp.verify.certify.certify_sharp"),
+    (["charpoly", "5"], "symdecomp.analysis.charpoly.closed_form_characteristic_polynomial"),
+    (["charpoly", "5", "--rings", "2"], "symdecomp.analysis.charpoly.ring_charpoly_exact"),
 ])
 def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypatch, capsys):
     _refuse(monkeypatch, work)

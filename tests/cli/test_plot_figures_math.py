@@ -73,3 +73,54 @@ def test_free_weights_are_refused_before_the_work(tmp_path, monkeypatch, capsys)
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--free-weights and --plot" in err and "no roots to draw" in err
     assert not (tmp_path / "roots.png").exists()
+
+
+def _weights(fig) -> list[list[float]]:
+    """Each panel's drawn weights (the colours of its points), the centre first."""
+    return [list(ax.collections[0].get_array()) for ax in fig.axes if ax.get_title()]
+
+
+@pytest.mark.parametrize("argv, points", [
+    (["masks", "5"], 11),
+    (["masks", "7", "--scheme", "loop"], 8),
+    (["masks", "5", "--rings", "2"], 1 + 5 * 6),
+])
+def test_masks_draw_a_position_mask_summing_to_one_and_tangents_summing_to_zero(argv, points, tmp_path, monkeypatch,
+                                                                                capsys):
+    figures = _drawn(monkeypatch, "symdecomp.cli.masks_cmd")
+    assert main([*argv, "--plot", str(tmp_path / "masks.png")]) == 0
+    capsys.readouterr()
+    position, *tangents = _weights(figures[0])
+    assert len(position) == points and all(len(t) == points for t in tangents)
+    assert abs(sum(position) - 1) < 1e-12  # the printed decimals (20 digits) rounded to floats
+    assert all(abs(sum(t)) < 1e-12 for t in tangents)
+    assert abs(tangents[0][1] - 1) < 1e-15 and abs(tangents[1][1]) < 1e-15  # the scaling: cos 0 = 1, sin 0 = 0 on a_0
+
+
+def test_masks_draw_each_weight_at_its_point_of_the_regular_fan(tmp_path, monkeypatch, capsys):
+    """The tangent masks are cos and sin of the angle on a_i: the point a_i drawn at that angle, its weight its x (resp.
+    y) coordinate."""
+    figures = _drawn(monkeypatch, "symdecomp.cli.masks_cmd")
+    assert main(["masks", "7", "--plot", str(tmp_path / "masks.png")]) == 0
+    capsys.readouterr()
+    axes = [ax for ax in figures[0].axes if ax.get_title()]  # the panels, not their colour bars
+    for k, ax in enumerate(axes[1:]):
+        offsets, weights = ax.collections[0].get_offsets(), ax.collections[0].get_array()
+        for (x, y), w in list(zip(offsets, weights))[1:8]:  # a_0..a_6, on the unit circle
+            assert abs(math.hypot(x, y) - 1) < 1e-12 and abs((x, y)[k] - w) < 1e-12
+
+
+@pytest.mark.parametrize("argv, why", [
+    (["masks", "2", "--boundary"], "boundary, crease, corner or dart"),
+    (["masks", "5", "--scheme", "doo-sabin"], "orbit class"),
+])
+def test_masks_plot_refused_where_not_drawn_before_the_work(argv, why, tmp_path, monkeypatch, capsys):
+    def boom(*args, **kwargs):
+        raise AssertionError("the work started")
+
+    monkeypatch.setattr("symdecomp.analysis.masks.sharp_masks", boom)
+    monkeypatch.setattr("symdecomp.analysis.zoo_masks.zoo_masks", boom)
+    assert main([*argv, "--plot", str(tmp_path / "masks.png")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("symdecomp: error: --plot: ") and why in err
+    assert not (tmp_path / "masks.png").exists()

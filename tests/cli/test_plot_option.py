@@ -20,6 +20,8 @@ CASES = {
     "check": ["check", "--n", "3:5"],
     "check --certify": ["check", "--n", "3:5", "--certify"],
     "check --boundary": ["check", "--boundary", "--k", "1:3", "--certify"],
+    "masks": ["masks", "5"],
+    "masks --scheme loop --rings 2": ["masks", "6", "--scheme", "loop", "--rings", "2"],
     "charpoly": ["charpoly", "5"],
     "charpoly --scheme loop": ["charpoly", "7", "--scheme", "loop"],
 }
@@ -65,6 +67,7 @@ def _refuse(monkeypatch, where: str) -> None:
     (["artifacts", "--n", "3"], "symdecomp.cli.artifacts_cmd.ordered_map"),
     (["check", "--n", "3"], "symdecomp.cli.check_cmd.check_valences"),
     (["check", "--boundary", "--k", "2", "--certify"], "symdecomp.verify.certify.certify_sharp"),
+    (["masks", "5"], "symdecomp.cli.masks_cmd.lambda_1_subdominance"),
     (["charpoly", "5"], "symdecomp.analysis.charpoly.closed_form_characteristic_polynomial"),
     (["charpoly", "5", "--rings", "2"], "symdecomp.analysis.charpoly.ring_charpoly_exact"),
 ])

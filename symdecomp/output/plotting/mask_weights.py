@@ -5,9 +5,10 @@ origin, the point ``(s, u, v)`` of sector ``s`` (:meth:`~symdecomp.schemes.latti
 ``a_s = (s, 1, 0)``, ``b_s = (s, 1, 1)``) at ``u d_s + v d_(s+1)`` with ``d_s`` the unit vector at the
 angle ``2 pi s/n``: the lattice coordinates of a sector laid on the fan of ``n`` equal angles. Each
 weight is drawn by colour (a diverging map, symmetric about 0) and by marker area (its modulus), and
-written beside its point (its decimal to four digits and, where given and short, its exact value), one
-panel per mask. The weights are the ones the command prints (:class:`MaskPanel`, built by
-:mod:`symdecomp.cli.masks_cmd` from the same results); nothing here computes a mask.
+written beside its point (its decimal to four digits and, where given and short, its exact value; the
+point's name too in a small neighbourhood; no text past :data:`LABELLED_POINTS` points), one panel per
+mask. The weights are the ones the command prints (:class:`MaskPanel`, built by :mod:`symdecomp.cli.masks_cmd`
+from the same results); nothing here computes a mask.
 """
 
 from __future__ import annotations
@@ -22,6 +23,8 @@ __all__ = ["MaskPoint", "MaskPanel", "point_position", "mask_figure"]
 
 #: Past this many points per panel the weights are shown by colour and size only (their text would overlap).
 LABELLED_POINTS = 48
+#: Past this many points per panel a weight's text goes without the point's name.
+NAMED_POINTS = 21
 
 
 @dataclass(frozen=True)
@@ -80,8 +83,10 @@ def _panel(ax: Any, panel: MaskPanel, n: int, fig: Any) -> None:
     dots = ax.scatter([q[0] for q in xy], [q[1] for q in xy], c=weights, cmap="coolwarm", vmin=-top, vmax=top,
                       s=[12 + 220 * abs(w) / top for w in weights], edgecolors="0.3", linewidths=0.5, zorder=2)
     if len(panel.points) <= LABELLED_POINTS:
+        named = len(panel.points) <= NAMED_POINTS
         for p, (x, y) in zip(panel.points, xy):
-            ax.annotate(f"{p.name}: {_note(p)}", (x, y), xytext=(4, 4), textcoords="offset points", fontsize=6)
+            text = f"{p.name}: {_note(p)}" if named else _note(p)
+            ax.annotate(text, (x, y), xytext=(4, 4), textcoords="offset points", fontsize=6)
     fig.colorbar(dots, ax=ax, shrink=0.7, label="weight")
     ax.set_aspect("equal")
     ax.margins(0.25)

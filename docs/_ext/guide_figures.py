@@ -51,7 +51,7 @@ class Figure:
         return [ROOT / a for a in self.argv if "/" in a and (ROOT / a).is_file()]
 
 
-#: The pictures of the guide, by page. The last four wait for ``--plot`` on their commands.
+#: The pictures of the guide, by page, each drawn by its command while the site is built.
 FIGURES = (
     Figure("inspect-vertex", ("inspect", "notebooks/data/valences-3-5-6.obj", "--figures", "{dir}"), pick="vertex-11.png",
            caption="symdecomp inspect notebooks/data/valences-3-5-6.obj --figures DIR: vertex 11 (valence 5), its 1-ring, "
@@ -70,6 +70,10 @@ FIGURES = (
            caption="symdecomp artifacts --n 3:8 --plot FILE: the curvature regime over the valence"),
     Figure("check", ("check", "--n", "3:16", "--plot", "{out}"),
            caption="symdecomp check --n 3:16 --plot FILE: the closed forms against the full matrix"),
+    Figure("masks", ("masks", "5", "--plot", "{out}"),
+           caption="symdecomp masks 5 --plot FILE: the limit position and tangent masks on the 1-ring"),
+    Figure("charpoly", ("charpoly", "5", "--plot", "{out}"),
+           caption="symdecomp charpoly 5 --plot FILE: the roots of the characteristic polynomial"),
 )
 
 

@@ -2,8 +2,8 @@
 
 The polynomial is the one ``symdecomp charpoly`` prints: exact coefficients, rational (the closed form at a
 valence) or algebraic (the product form at a valence whose centre weights hold cosines, e.g. Loop's). Its
-squarefree decomposition is exact (FLINT's ``fmpq_poly.factor_squarefree`` over Q, sympy's ``sqf_list`` over the
-coefficients' number field); each squarefree factor's roots are isolated as certified Arb balls (FLINT's
+factors are exact (FLINT's irreducible factors over Q, sympy's squarefree ``sqf_list`` over the coefficients'
+number field); each factor's roots are isolated as certified Arb balls (FLINT's
 ``complex_roots`` over Q; ``acb_poly.roots`` over a number field, its coefficients evaluated as balls), at a
 precision scoped with ``flint.ctx.workprec``. An isolation that does not converge raises
 :class:`~symdecomp.errors.SymdecompError` instead of returning balls that may overlap.
@@ -32,10 +32,16 @@ __all__ = ["PolynomialRoots", "polynomial_roots"]
 class PolynomialRoots:
     """The distinct roots of an exact polynomial as certified balls, each with its multiplicity."""
 
-    #: ``(ball, multiplicity)`` for each distinct root; the balls are pairwise disjoint.
+    #: ``(ball, multiplicity)`` for each distinct root: each ball holds exactly one root of its factor (an irreducible
+    #: factor over Q, a squarefree one over a number field), and distinct factors share no root.
     roots: tuple[tuple[flint.acb, int], ...]
-    #: Whether 1 is a root (decided exactly: the polynomial vanishes at 1).
-    one_is_root: bool
+    #: The index in :attr:`roots` of the root 1, decided exactly (``None``: 1 is not a root).
+    one: int | None
+
+    @property
+    def one_is_root(self) -> bool:
+        """Whether 1 is a root."""
+        return self.one is not None
 
     @property
     def degree(self) -> int:
@@ -46,32 +52,47 @@ class PolynomialRoots:
     def lambda_1(self) -> flint.arb | None:
         """An upper bound of the largest modulus of the roots once the root 1 is taken away once (``None``: 1 is not a
         root, or no root is left): ``lambda_1``, the radius of the circle ``charpoly --plot`` draws."""
-        if not self.one_is_root:
+        if self.one is None:
             return None
-        left = [z for z, m in self.roots if m > 1 or not z.contains(1)]
+        left = [z for i, (z, m) in enumerate(self.roots) if i != self.one or m > 1]
         return max((abs(z).upper() for z in left), key=float, default=None)
 
 
-def _rational_roots(coefficients: Sequence[sp.Rational]) -> list[tuple[flint.acb, int]]:
+def _rational_roots(coefficients: Sequence[sp.Rational]) -> tuple[list[tuple[flint.acb, int]], int | None]:
+    """The roots of the irreducible factors over Q (FLINT: factoring first is far faster than isolating the roots of
+    the whole polynomial, e.g. 1 s against 50 s at degree 601), and the index of the root 1."""
     poly = flint.fmpq_poly([flint.fmpq(int(c.p), int(c.q)) for c in reversed(coefficients)])
-    # FLINT returns (ball, multiplicity) pairs; its type stubs say balls
-    return [cast(tuple[flint.acb, int], pair) for pair in cast(list[Any], poly.complex_roots())]
+    out: list[tuple[flint.acb, int]] = []
+    one = None
+    for factor, m in cast(list[Any], poly.factor()[1]):
+        if factor.degree() == 1 and factor(1) == 0:
+            one = len(out)
+        # FLINT returns (ball, multiplicity) pairs (1 on an irreducible factor); its type stubs say balls
+        out.extend((cast(tuple[flint.acb, int], pair)[0], int(m)) for pair in cast(list[Any], factor.complex_roots()))
+    return out, one
 
 
-def _algebraic_roots(coefficients: Sequence[sp.Expr], variable: sp.Symbol, digits: int) -> tuple[list[tuple[flint.acb, int]], bool]:
-    """The roots over the coefficients' number field, and whether 1 is one (exact arithmetic in that field)."""
+def _algebraic_roots(coefficients: Sequence[sp.Expr], variable: sp.Symbol, digits: int) -> tuple[list[tuple[flint.acb, int]], int | None]:
+    """The roots of the squarefree factors over the coefficients' number field, and the index of the root 1 (exact
+    arithmetic in that field decides which factor holds it; of its isolated balls, the one containing 1)."""
     from symdecomp.algebra.compile import compile_expression
 
     poly = sp.Poly(list(coefficients), variable, extension=True)
     out: list[tuple[flint.acb, int]] = []
+    one = None
     for factor, m in poly.sqf_list()[1]:
         balls = [flint.acb(compile_expression(c, (), "arb")()) for c in reversed(factor.all_coeffs())]
         try:
             roots = flint.acb_poly(balls).roots(tol=flint.arb(10) ** -digits)  # refined to about ``digits`` digits
         except ValueError as exc:  # not isolated at this precision: say so, never guess
             raise SymdecompError(f"the roots of a degree-{factor.degree()} factor were not isolated ({exc})") from None
+        if factor.eval(1) == 0:
+            at_one = [i for i, z in enumerate(roots) if z.contains(1)]
+            if len(at_one) != 1:
+                raise SymdecompError(f"the root 1 of a degree-{factor.degree()} factor was not told from its other roots")
+            one = len(out) + at_one[0]
         out.extend((z, int(m)) for z in roots)
-    return out, poly.eval(1) == 0
+    return out, one
 
 
 def polynomial_roots(coefficients: Sequence[sp.Expr], *, digits: int = 30) -> PolynomialRoots:
@@ -81,7 +102,7 @@ def polynomial_roots(coefficients: Sequence[sp.Expr], *, digits: int = 30) -> Po
         raise SymdecompError("a polynomial of degree at least 1 (its leading coefficient nonzero) has roots")
     with flint.ctx.workprec(int(3.33 * digits) + 64):
         if all(isinstance(c, sp.Rational) for c in coefficients):
-            roots, one_is_root = _rational_roots(coefficients), sum(coefficients, sp.Integer(0)) == 0
+            roots, one = _rational_roots(coefficients)
         else:
-            roots, one_is_root = _algebraic_roots(coefficients, sp.Dummy("x"), digits)
-    return PolynomialRoots(tuple(roots), one_is_root)
+            roots, one = _algebraic_roots(coefficients, sp.Dummy("x"), digits)
+    return PolynomialRoots(tuple(roots), one)

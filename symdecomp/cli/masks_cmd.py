@@ -91,6 +91,7 @@ def _panels(args, data, exact_position=None) -> list:
     def exact(k: int) -> str | None:
         return None if exact_position is None or len(str(exact_position[k])) > 12 else str(exact_position[k])
 
+    names = {f"{u},{v}": name for name, (u, v) in args.scheme.lattice.one_ring_classes}  # a_i, and b_i on quads
     panels = []
     for k, (title, mask) in enumerate([("position", data["position"]), ("tangent 1", data["tangents"][0]),
                                        ("tangent 2", data["tangents"][1])]):
@@ -98,7 +99,8 @@ def _panels(args, data, exact_position=None) -> list:
         if "classes" in mask:
             for key, weights in mask["classes"].items():
                 u, v = (int(x) for x in key.split(","))
-                points += [MaskPoint(f"({key})_{s}", (s, u, v), w) for s, w in enumerate(weights)]
+                name = names.get(key, f"({key})")
+                points += [MaskPoint(f"{name}_{s}", (s, u, v), w) for s, w in enumerate(weights)]
         else:
             for j, name in enumerate(("a", "b")):
                 points += [MaskPoint(f"{name}_{s}", (s, 1, j), w, exact(1 + j) if k == 0 else None)

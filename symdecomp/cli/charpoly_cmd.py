@@ -1,4 +1,9 @@
-"""``symdecomp charpoly N``: the characteristic polynomial of the valence-N subdivision matrix, in closed form."""
+"""``symdecomp charpoly N``: the characteristic polynomial of the valence-N subdivision matrix, in closed form.
+
+``--plot FILE`` draws the printed polynomial's roots, certified from its exact coefficients
+(:mod:`symdecomp.analysis.polynomial_roots`, :mod:`symdecomp.output.plotting.charpoly_roots`); with ``--free-weights``
+(coefficients in alpha, beta) it is refused before any work.
+"""
 
 from __future__ import annotations
 

@@ -15,6 +15,9 @@ certified at this valence on the 1-ring (:func:`~symdecomp.verify.c1_spectrum.sp
 ``lambda_1`` real, of multiplicity 2, strictly larger in modulus than every other eigenvalue; exact where
 balls tie). Otherwise the tangent masks are eigenvectors of ``lambda_1`` but not of the tangent plane: the
 output says why and the exit status is 1.
+
+``--plot FILE`` draws the printed masks on the fan's points (:mod:`symdecomp.output.plotting.mask_weights`) at an
+interior vertex; at a sharp vertex and for a scheme of the zoo it is refused before any work (:data:`PLOT_REFUSALS`).
 """
 
 from __future__ import annotations

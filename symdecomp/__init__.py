@@ -77,7 +77,7 @@ nothing else.
                    ``ellipses``, ``hyperbolic``), limit masks (``masks``, of any scheme and K-ring, and at sharp vertices), tuning (``tuning``; the
                    regions of free vertex weights by curvature regime, ``tuning_region``),
                    the characteristic polynomial (Section 6, and its factors and product form for any K-ring, ``charpoly``;
-                   ``reduction``), Jordan
+                   ``reduction``; its certified roots with multiplicities, ``polynomial_roots``), Jordan
                    blocks (``defective``), supports (Section 3, ``support``; for every n from one
                    window of sectors, ``support_window``), rings iterated step by step
                    (``evolution``), the 2-ring matrix by frequency and the characteristic map's
@@ -208,9 +208,10 @@ nothing else.
                    its control net refined by its rules, ``plotting.zoo_maps``), eigenvalues by frequency or block
                    (``plotting.spectrum_chart``), the curvature regime over n (``plotting.regime_chart``), C1 for every
                    valence, the proof's lambda_1(n) beside the certified valences (``plotting.every_n_chart``), the
-                   cross-check's agreement by valence (``plotting.check_chart``), a refined mesh over its control
-                   mesh (``plotting.refine_figure``), a designed net with its limit point, normal and tangents
-                   (``plotting.design_figure``),
+                   cross-check's agreement by valence (``plotting.check_chart``), the limit masks' weights on the
+                   neighbourhood (``plotting.mask_weights``), the characteristic polynomial's roots
+                   (``plotting.charpoly_roots``), a refined mesh over its control mesh (``plotting.refine_figure``),
+                   a designed net with its limit point, normal and tangents (``plotting.design_figure``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
                    one scheme in one document (``report``: its sections; C1 and the regime for every valence,
                    ``report_every_n``; as LaTeX and PDF,

@@ -76,6 +76,10 @@ FIGURES = (
     Figure("design", ("design", "--n", "5", "--normal", "1,1,2", "--elliptic", "1/2", "--out", "{dir}/ring.obj", "--plot", "{out}"),
            caption="symdecomp design --n 5 --normal 1,1,2 --elliptic 1/2 --out ring.obj --plot FILE: the 2-ring it writes, "
            "its limit point, normal and tangent directions"),
+    Figure("masks", ("masks", "5", "--plot", "{out}"),
+           caption="symdecomp masks 5 --plot FILE: the limit position and tangent masks on the 1-ring"),
+    Figure("charpoly", ("charpoly", "5", "--plot", "{out}"),
+           caption="symdecomp charpoly 5 --plot FILE: the roots of the characteristic polynomial"),
 )
 
 

@@ -431,6 +431,12 @@ def product_identity(scheme: Scheme, n: int, rings: int = 1, *, blocks: RingBloc
 
 def ring_charpoly(scheme: Scheme, n: int, rings: int = 1) -> dict:
     """JSON-ready: the product form, the polynomial at ``n`` (exact coefficients) and whether they agree."""
+    return ring_charpoly_exact(scheme, n, rings)[0]
+
+
+def ring_charpoly_exact(scheme: Scheme, n: int, rings: int = 1) -> tuple[dict, tuple[sp.Expr, ...]]:
+    """:func:`ring_charpoly` and the exact coefficients it prints (sympy numbers, highest degree first): what
+    ``charpoly --plot`` finds the roots of."""
     identity = product_identity(scheme, n, rings)
     S, free, corners, matches = identity.matrix, identity.free, identity.corners, identity.failure is None
     polys = [[sp.Rational(int(c.p), int(c.q)) for c in chi.coeffs()] for chi in identity.chis]
@@ -445,4 +451,4 @@ def ring_charpoly(scheme: Scheme, n: int, rings: int = 1) -> dict:
         "polynomial": str(polynomial), "coefficients": [str(c) for c in reversed(coeffs)],
         "matches_matrix": bool(matches),
         "method": f"chi_S = product at {S.size} points" + (f" for {len(corners)} values of the centre weights" if free else ""),
-    }
+    }, tuple(reversed(coeffs))

@@ -15,6 +15,9 @@ certified at this valence on the 1-ring (:func:`~symdecomp.verify.c1_spectrum.sp
 ``lambda_1`` real, of multiplicity 2, strictly larger in modulus than every other eigenvalue; exact where
 balls tie). Otherwise the tangent masks are eigenvectors of ``lambda_1`` but not of the tangent plane: the
 output says why and the exit status is 1.
+
+``--plot FILE`` draws the printed masks on the fan's points (:mod:`symdecomp.output.plotting.mask_weights`) at an
+interior vertex; at a sharp vertex and for a scheme of the zoo it is refused before any work (:data:`PLOT_REFUSALS`).
 """
 
 from __future__ import annotations
@@ -43,7 +46,8 @@ from symdecomp.cli.element import (
     sharp_vertex,
     steps_note,
 )
-from symdecomp.errors import SymdecompError
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
+from symdecomp.errors import InvalidInputError, SymdecompError
 
 
 def register(sub) -> None:
@@ -68,7 +72,56 @@ def register(sub) -> None:
     add_scheme_option(p, zoo=True)
     add_rings_option(p)
     add_sharp_options(p)
+    add_plot_option(p, "each mask (position, tangent 1, tangent 2) on the neighbourhood's points, each point where it "
+                    "sits in the regular picture of the fan, its weight by colour and size and written beside it (an "
+                    "interior vertex of a 1-ring scheme, any --rings; not a sharp vertex nor a scheme of the zoo)")
     p.set_defaults(func=run)
+
+
+#: Why ``--plot`` is refused, by kind of element (:mod:`symdecomp.cli.element`): before any work.
+PLOT_REFUSALS = {
+    "sector": "a boundary, crease, corner or dart vertex's masks are not drawn (only an interior vertex's fan is)",
+    "zoo": "a scheme of the zoo's masks are printed by orbit class, which has no place in the regular picture drawn",
+    "zoo sector": "a scheme of the zoo's masks are printed by orbit class, which has no place in the regular picture drawn",
+}
+
+
+def _panels(args, data, exact_position=None) -> list:
+    """The masks as printed (``data``: ``O`` and ``a``/``b`` lists, or ``classes`` by ``"u,v"``), as figure panels;
+    ``exact_position``: the position mask's exact weights ``(O, a_i, b_i)``, written beside the decimals."""
+    from symdecomp.output.plotting.mask_weights import MaskPanel, MaskPoint
+
+    def exact(k: int) -> str | None:
+        return None if exact_position is None or len(str(exact_position[k])) > 12 else str(exact_position[k])
+
+    names = {f"{u},{v}": name for name, (u, v) in args.scheme.lattice.one_ring_classes}  # a_i, and b_i on quads
+    panels = []
+    for k, (title, mask) in enumerate([("position", data["position"]), ("tangent 1", data["tangents"][0]),
+                                       ("tangent 2", data["tangents"][1])]):
+        points = [MaskPoint("O", (0, 0, 0), mask["O"], exact(0) if k == 0 else None)]
+        if "classes" in mask:
+            for key, weights in mask["classes"].items():
+                u, v = (int(x) for x in key.split(","))
+                name = names.get(key, f"({key})")
+                points += [MaskPoint(f"{name}_{s}", (s, u, v), w) for s, w in enumerate(weights)]
+        else:
+            for j, name in enumerate(("a", "b")):
+                points += [MaskPoint(f"{name}_{s}", (s, 1, j), w, exact(1 + j) if k == 0 else None)
+                           for s, w in enumerate(mask[name])]
+        panels.append(MaskPanel(title, tuple(points)))
+    return panels
+
+
+def _draw(args, plot, data, certified: bool, exact_position=None) -> None:
+    """``masks --plot``: the printed masks on the fan (:mod:`symdecomp.output.plotting.mask_weights`)."""
+    from symdecomp.output.plotting.mask_weights import mask_figure
+
+    if plot is None:
+        return
+    rings = f", {args.rings}-ring" if args.rings != 1 else ""
+    what = "subdominant" if certified else "NOT certified subdominant"
+    title = f"{args.scheme.name}, valence n = {args.n}{rings}: limit masks (lambda_1 = {data['subdominant']}, {what})"
+    write_plot(plot, lambda: mask_figure(_panels(args, data, exact_position), args.n, title))
 
 
 def _subdominance(args) -> tuple[bool, str, bool]:
@@ -106,10 +159,11 @@ def _finish(args, data, certified: bool, why: str) -> int:
     return 0 if certified else 1
 
 
-def _run_general(args, certified: bool, why: str) -> int:
+def _run_general(args, certified: bool, why: str, plot=None) -> int:
     from symdecomp.analysis.masks import ring_masks
 
     data = ring_masks(args.scheme, args.n, args.rings, digits=args.digits)
+    _draw(args, plot, data, certified)
     if args.json:
         print_json(args, {**data, "lambda_1_subdominant": certified, "subdominance": why})
         return _finish(args, data, certified, why)
@@ -191,11 +245,19 @@ def _run_zoo(args) -> int:
 
 
 def run(args) -> int:
-    """``masks``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
-    return route("masks", ROUTES_BY_KIND, named_element(args))(args)
+    """``masks``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`); ``--plot`` is refused first
+    where the masks are not drawn, then checked, before any work."""
+    element = named_element(args)
+    answer = route("masks", ROUTES_BY_KIND, element)
+    if getattr(args, "plot", None) is not None and element.kind in PLOT_REFUSALS:
+        raise InvalidInputError(f"--plot: {PLOT_REFUSALS[element.kind]}")
+    plot = check_plot(args)
+    if plot is not None:  # the kinds left after PLOT_REFUSALS: an interior vertex
+        return _run_vertex(args, plot)
+    return answer(args)
 
 
-def _run_vertex(args) -> int:
+def _run_vertex(args, plot=None) -> int:
     """``masks N``: an interior vertex, from the closed forms where they apply, else the any-scheme route."""
     from symdecomp.analysis.masks import limit_masks, limit_masks_at
     from symdecomp.analysis.tangent import complex_at
@@ -207,8 +269,10 @@ def _run_vertex(args) -> int:
         return 1
     # no closed forms (or real closed forms for a complex lambda_1): the any-scheme route, from Arb balls
     if general_path(args) or closed_form_obstacle(args.scheme) or complex_at(args.scheme, args.n):
-        return _run_general(args, certified, why)
-    data = limit_masks_at(args.scheme, args.n).as_json(args.digits)
+        return _run_general(args, certified, why, plot)
+    at = limit_masks_at(args.scheme, args.n)
+    data = at.as_json(args.digits)
+    _draw(args, plot, data, certified, at.position[:1] + at.position[1 : 1 + args.n][:1] + at.position[1 + args.n :][:1])
     if args.json:
         print_json(args, {**data, "lambda_1_subdominant": certified, "subdominance": why})
         return _finish(args, data, certified, why)

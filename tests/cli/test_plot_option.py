@@ -1,5 +1,6 @@
-"""``--plot FILE`` on c1, spectrum, artifacts, check, refine and design (issue 34, item 1): the same bytes every run, in the format of
-the extension, refused before the work for a bad target, one line when matplotlib is missing."""
+"""``--plot FILE`` on c1, spectrum, artifacts, check, masks, charpoly, refine and design (issue 34, item 1): the
+same bytes every run, in the format of the extension, refused before the work for a bad target, one line when
+matplotlib is missing."""
 
 from __future__ import annotations
 
@@ -25,6 +26,10 @@ CASES = {
     "design": ["design", "--n", "5", "--normal", "1,1,2", "--position", "1,2,3", "--elliptic", "1/2", "--hyperbolic", "1/4",
                "--out", "{tmp}/ring.obj"],
     "design --mesh": ["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--out", "{tmp}/model.obj"],
+    "masks": ["masks", "5"],
+    "masks --scheme loop --rings 2": ["masks", "6", "--scheme", "loop", "--rings", "2"],
+    "charpoly": ["charpoly", "5"],
+    "charpoly --scheme loop": ["charpoly", "7", "--scheme", "loop"],
 }
 
 #: How each format's file starts.
@@ -73,6 +78,9 @@ def _refuse(monkeypatch, where: str) -> None:
     (["design", "--n", "5", "--normal", "0,0,1", "--out", "{tmp}/ring.obj"], "symdecomp.analysis.design.design_ring"),
     (["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--out", "{tmp}/model.obj"],
      "symdecomp.schemes.meshformats.read_mesh"),
+    (["masks", "5"], "symdecomp.cli.masks_cmd.lambda_1_subdominance"),
+    (["charpoly", "5"], "symdecomp.analysis.charpoly.closed_form_characteristic_polynomial"),
+    (["charpoly", "5", "--rings", "2"], "symdecomp.analysis.charpoly.ring_charpoly_exact"),
 ])
 def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypatch, capsys):
     _refuse(monkeypatch, work)

@@ -210,7 +210,7 @@ TABLE = [
     ("Eq. 22", printed("s4_components", "PRINTED_EQ22", (Q(7, 10), {-1: Q(1, 10), 0: Q(1, 10)})), R),
     ("Eq. 23", printed("s4_components", "PRINTED_EQ23", (Q(8, 10), {0: Q(1, 10), 1: Q(1, 10)})), R),
     ("Eq. 24", printed("s4_one_ring", "PRINTED_B_OVER_A", sp.exp(2 * sp.pi * sp.I * sp.Symbol("j", integer=True) / n)), R),
-    ("Eq. 25-30", printed("s5_1_tangent", "PRINTED_CIRCULANTS", {"alpha": {0: Q(1, 2), 1: Q(1, 4), -1: Q(1, 4)},
+    ("Eq. 25-30", printed("s5_1_staged", "PRINTED_CIRCULANTS", {"alpha": {0: Q(1, 2), 1: Q(1, 4), -1: Q(1, 4)},
                                                                  "beta": {0: Q(1, 2), -1: Q(1, 2)}, "gamma": {0: Q(1, 2), 1: Q(1, 2)}}), R),
     ("Eq. 31-32", "moved", R),
     ("Eq. 31-32", "tuned", P),
@@ -239,9 +239,9 @@ TABLE = [
     # Section 5.2
     ("Proposition 5.2", "asymmetric", R),
     ("Proposition 5.2", "moved", P),
-    ("Eq. 40", printed("s5_2_elliptic", "PRINTED_AXES", lambda w1, w2: (abs(w1) + 2 * abs(w2), abs(abs(w1) - abs(w2)))), R),
-    ("Eq. 41", printed("s5_2_elliptic", "PRINTED_B_FACTOR", (1 + 1 / n) * sp.exp(sp.pi * sp.I / n)), R),
-    ("Eq. 41", printed("s5_2_elliptic", "PRINTED_B_FACTOR", sp.exp(sp.pi * sp.I / (2 * n))), P),  # any rotation keeps it
+    ("Eq. 40", printed("s5_2_ellipses", "PRINTED_AXES", lambda w1, w2: (abs(w1) + 2 * abs(w2), abs(abs(w1) - abs(w2)))), R),
+    ("Eq. 41", printed("s5_2_ellipses", "PRINTED_B_FACTOR", (1 + 1 / n) * sp.exp(sp.pi * sp.I / n)), R),
+    ("Eq. 41", printed("s5_2_ellipses", "PRINTED_B_FACTOR", sp.exp(sp.pi * sp.I / (2 * n))), P),  # any rotation keeps it
     ("Eq. 42", "asymmetric", R),
     ("Eq. 42", "moved", P),
     ("Eq. 43", "moved", R),

@@ -174,7 +174,8 @@ nothing else.
                    OpenSubdiv's (``oracle_mesh``)
 ``claims/``        the paper's claims, one module per section (``s2_background``,
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
-                   ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_elliptic``, ``s5_3_hyperbolic``,
+                   ``s5_1_staged``, ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_ellipses``, ``s5_2_elliptic``,
+                   ``s5_3_hyperbolic``,
                    ``s6_cb_matrices``, ``s6_cb_subdivision``, ``s6_closing``,
                    ``s6_full_spectrum``), the toolkit's own claims beyond the paper (curvature and
                    shape, ``b1_curvature``; boundary and crease vertices, ``b2_mirror``) and their registry

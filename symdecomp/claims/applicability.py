@@ -13,6 +13,11 @@ meet one (instead of failing inside sympy, or repeating the same guard in every 
 * :data:`REAL_TANGENT_SPECTRUM`: checks that order the two eigenvalues of ``M_j`` (the dominant one, the
   other one) need them real at every frequency: the discriminant of ``M_j`` nonnegative for every ``c`` in
   ``[-1, 1]`` (exactly: no root of odd multiplicity inside, and positive somewhere).
+* :data:`REAL_SUBDOMINANT` (:func:`rotating_subdominant`): checks that compare ``lambda_1`` (the eigenvalue of the
+  frequency-1 block ``M(omega)``, on either lattice) with real numbers, as ``lambda_1^2``, need it real: rules whose
+  ``M(omega)`` has the same trace and determinant at ``omega`` and ``1/omega`` (mirror symmetric), otherwise the
+  frequencies ``j`` and ``n - j`` carry complex conjugate eigenvalues (the characteristic map rotates); the reason
+  names the term that changes.
 * :data:`FACE_NEIGHBOURS`: statements about the ``(2n+1)``-point 1-ring of a quad mesh (the matrix of
   Eq. 43, ``M_j`` of order 2) need a face rule.
 * :data:`NO_FREE_PARAMETERS`: checks that compute with the scheme's numbers (exact matrices at a
@@ -34,9 +39,11 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.algebra.valence_signs import sign_on_interval
+from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text, Verbatim
 from symdecomp.errors import InvalidSchemeError
+from symdecomp.expressions import identically_zero
 from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.refinement import mesh_rules
 from symdecomp.schemes.scheme import Scheme
@@ -44,9 +51,11 @@ from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.schemes.topology import topology_of
 from symdecomp.symbols import cos_jtheta as C
 from symdecomp.symbols import n as N
+from symdecomp.symbols import omega as OMEGA
 from symdecomp.symbols import sin_jtheta as SIN
 
 __all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH", "closed_form_obstacle",
+           "REAL_SUBDOMINANT", "rotating_subdominant",
            "QUAD_MESHES", "PRIMAL_VERTEX", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS"]
 
 
@@ -85,6 +94,20 @@ def _complex_tangent_spectrum(scheme: Scheme) -> Text | None:
                 "discriminant of M_j is ", d, ", negative for some c = cos(j pi/n) in [-1, 1]")
 
 
+def rotating_subdominant(scheme: Scheme) -> Text | None:
+    """Why ``lambda_1`` of ``scheme`` is complex (rules not mirror symmetric), or ``None``; either lattice.
+
+    The frequency-1 block ``M(omega)`` (:func:`~symdecomp.analysis.frequency.one_ring_matrices`) of a mirror-symmetric
+    scheme has the same trace and determinant at ``omega`` and ``1/omega``; otherwise the term that changes is named."""
+    M, _ = one_ring_matrices(scheme)
+    for name, term in (("trace", sp.expand(M.trace())), ("determinant", sp.expand(M.det()))):
+        if not identically_zero(term - term.subs(OMEGA, 1 / OMEGA)):
+            return Text("the check compares lambda_1 with real numbers, which needs mirror-symmetric rules; for the scheme ",
+                        Verbatim(repr(scheme.name)), " the ", name, " of the frequency-1 block M(omega) is ", term,
+                        ", not the same at omega and 1/omega, so lambda_1 is complex")
+    return None
+
+
 def _no_face_rule(scheme: Scheme) -> str | None:
     """Why a scheme without face neighbours is outside a statement about the quad 1-ring, or ``None``."""
     if scheme.face_rule is None:
@@ -116,6 +139,8 @@ MIRROR_SYMMETRIC = Requirement("mirror-symmetric rules", _mirror_asymmetry)
 COSINE_ONLY = Requirement("edge and face rules that do not depend on n", _valence_in_blocks)
 #: Real eigenvalues of ``M_j`` at every frequency (checks that order them).
 REAL_TANGENT_SPECTRUM = Requirement("real eigenvalues of M_j", _complex_tangent_spectrum)
+#: A real ``lambda_1``: the frequency-1 block's trace and determinant the same at ``omega`` and ``1/omega``.
+REAL_SUBDOMINANT = Requirement("mirror-symmetric rules (a real lambda_1)", rotating_subdominant)
 #: A face rule: the quad 1-ring ``(O, a_i, b_i)`` of the paper.
 FACE_NEIGHBOURS = Requirement("a quad mesh (face neighbours b_i)", _no_face_rule)
 #: No free parameters: every weight is a number at each valence.

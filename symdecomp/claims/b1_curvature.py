@@ -26,9 +26,9 @@ import sympy as sp
 
 from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
-from symdecomp.claims.applicability import NO_FREE_PARAMETERS
+from symdecomp.claims.applicability import NO_FREE_PARAMETERS, REAL_SUBDOMINANT, rotating_subdominant
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
-from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, Verbatim, claim
+from symdecomp.claims.registry import CheckResult, Requirement, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -130,6 +130,14 @@ def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
     return wanted.own_or_reference(scheme)
 
 
+def real_lambda1_on(*lattices: Lattice) -> Requirement:
+    """:data:`~symdecomp.claims.applicability.REAL_SUBDOMINANT` of each scheme the check reads (the scheme on its own
+    lattice, the reference scheme on the others, :func:`_on`): the regimes compare mu with lambda_1^2, a real number only
+    for a real lambda_1 (a rotating characteristic map has no tangent plane, so no curvature or shape to speak of)."""
+    return Requirement(REAL_SUBDOMINANT.name,
+                       lambda scheme: next(filter(None, (rotating_subdominant(_on(scheme, x)) for x in lattices)), None))
+
+
 @claim(
     "Curvature regime: Catmull-Clark",
     section="B.1",
@@ -137,7 +145,7 @@ def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
     statement=r"For Catmull-Clark surfaces the curvature at an extraordinary vertex tends to zero at $n = 3$ "
     r"($|\mu| < \lambda_1^2$, $\mu$ elliptic), is bounded at $n = 4$, and is unbounded for every $n \ge 5$, caused by "
     r"the hyperbolic (frequency 2) eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004); Peters, Reif, CAGD 21 (2004)).",
-    requires=(NO_FREE_PARAMETERS,),
+    requires=(NO_FREE_PARAMETERS, real_lambda1_on(QUAD)),
 )
 def _catmull_clark(scheme: Scheme) -> CheckResult:
     return check_regimes(_on(scheme, QUAD), CATMULL_CLARK)
@@ -151,7 +159,7 @@ def _catmull_clark(scheme: Scheme) -> CheckResult:
     r"eigenvalue $1/8$ exceeds $\lambda_1^2 = 1/16$), bounded at $n = 4, 5$ (Loop's vertex weight puts the elliptic "
     r"eigenvalue at $\lambda_1^2$) and at $n = 6$, and unbounded for every $n \ge 7$, caused by the hyperbolic "
     r"eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004)).",
-    requires=(NO_FREE_PARAMETERS,),
+    requires=(NO_FREE_PARAMETERS, real_lambda1_on(TRIANGLE)),
 )
 def _loop(scheme: Scheme) -> CheckResult:
     return check_regimes(_on(scheme, TRIANGLE), LOOP)
@@ -163,6 +171,7 @@ def _loop(scheme: Scheme) -> CheckResult:
     title="Loop's weight makes the elliptic eigenvalue exactly $\\lambda_1^2$",
     statement=r"Loop's vertex weight $\beta(n) = (5/8 - (3/8 + \cos(2\pi/n)/4)^2)/n$ makes the frequency-0 (elliptic) "
     r"eigenvalue equal to $\lambda_1^2$ at every valence (Loop 1987; Peters, Reif 2004).",
+    requires=(real_lambda1_on(TRIANGLE),),
 )
 def _loop_weight(scheme: Scheme) -> CheckResult:
     s = _on(scheme, TRIANGLE)
@@ -286,7 +295,7 @@ def _argument(first: int, text: str) -> tuple[Step, ...]:
     r"$n \ge 5$ and for Loop at every $n \ge 7$, so the hyperbolic part dominates on fine rings even for convex input; "
     r"for Loop at $n = 4, 5$ the elliptic part dominates, and the two tie at the regular valence (Karciauskas, Peters, "
     r"Reif, CAGD 21 (2004)).",
-    requires=(NO_FREE_PARAMETERS,),
+    requires=(NO_FREE_PARAMETERS, real_lambda1_on(QUAD, TRIANGLE)),
 )
 def _shape(scheme: Scheme) -> CheckResult:
     quad = check_dominance(_on(scheme, QUAD), QUAD.select(DOMINANCE, "the printed dominance"))

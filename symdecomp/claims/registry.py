@@ -382,7 +382,8 @@ class Claim:
 REGISTRY: dict[str, Claim] = {}
 
 
-def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (), parameter: str = "n"):
+def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (),
+          parameter: str = "n") -> Callable[[Callable[[Scheme], CheckResult]], Callable[[Scheme], CheckResult]]:
     """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``."""
 
     def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:

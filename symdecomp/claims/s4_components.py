@@ -10,6 +10,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.algebra.circulant import generating_polynomial, mode_eigenvalue_derivation
+from symdecomp.claims.applicability import FACE_NEIGHBOURS
 from symdecomp.claims.notation import n
 from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
 from symdecomp.claims.s4_one_ring import EQ18
@@ -38,6 +39,7 @@ def _rhs(printed, point) -> sp.Expr:
     title="Eq. 18 on the sums of the components",
     statement="Eq. 18 can be written $\\sum_j a_i^j \\rightarrow \\frac{8}{10}\\sum_j a_i^j + \\frac{1}{10}"
     "(\\sum_j b_{i-1}^j + \\sum_j b_i^j)$, $j = 0, \\dots, 2n-1$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq22(scheme: Scheme) -> CheckResult:
     on_a, on_b = PRINTED_EQ22
@@ -63,6 +65,7 @@ def _eq22(scheme: Scheme) -> CheckResult:
     title="Eq. 18 split into the components",
     statement="Eq. 22 decomposes into $a_i^j \\rightarrow \\frac{8}{10} a_i^j + \\frac{1}{10}(b_{i-1}^j + b_i^j)$, "
     "$i = 0, \\dots, n-1$, $j = 0, \\dots, 2n-1$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq23(scheme: Scheme) -> CheckResult:
     per_component = _rhs(PRINTED_EQ23, lambda base, k: base[I_ + k, J_])

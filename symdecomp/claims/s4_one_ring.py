@@ -38,6 +38,7 @@ def PRINTED_COMPONENT_VERTEX(j, k, size):
     title="The 1-ring as a $2n$-gon and its decomposition",
     statement="The 1-ring is the $2n$-gon $P = (a_0, b_0, \\dots, a_{n-1}, b_{n-1})$ (Eq. 10), a sum of $2n$ regular "
     "planar $2n$-gons $z_j v_j$ (Eq. 11).",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq10_11(scheme: Scheme) -> CheckResult:
     import random
@@ -87,6 +88,7 @@ def PRINTED_RING_POSITION(vertex: str, i):
     title="$A^j$ and $B^j$ are regular $n$-gons",
     statement="If $z_j v_j = (a_0^j, b_0^j, \\dots, a_{n-1}^j, b_{n-1}^j)$ is a component of Eq. 11, then "
     "$A^j = (a_i^j)$ and $B^j = (b_i^j)$ are planar regular $n$-gons.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq12_13(scheme: Scheme) -> CheckResult:
     # Vertex k of the 2n-gon z_j v_j is z_j omega_2n^(j k) (Eq. 11); a_i^j and b_i^j sit where Eq. 10 puts them.
@@ -165,6 +167,7 @@ PRINTED_VERTEX_CENTER = 1 - alpha - beta
     section="4",
     title="Vertex rule",
     statement="$O \\rightarrow (1-\\alpha-\\beta) O + \\alpha \\sum_i a_i + \\beta \\sum_i b_i$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq16(scheme: Scheme) -> CheckResult:
     printed_sum = sp.factor(sp.expand(PRINTED_VERTEX_CENTER + n * alpha + n * beta - 1))
@@ -245,6 +248,7 @@ def _eq17_21(scheme: Scheme) -> CheckResult:
     title="$A^j$, $B^j$ stay planar on parallel planes",
     statement="$A^j$ and $B^j$ remain planar polygons on parallel planes throughout the subdivision process, "
     "$j = 0, \\dots, 2n-1$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _prop41(scheme: Scheme) -> CheckResult:
     cc = with_free_vertex_rule(scheme)
@@ -296,6 +300,7 @@ def _prop41(scheme: Scheme) -> CheckResult:
     section="4",
     title="$A^j$ and $A^{2n-j}$ stay coplanar",
     statement="$A^j$ and $A^{2n-j}$ remain coplanar throughout the subdivision process.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _prop42(scheme: Scheme) -> CheckResult:
     cc = with_free_vertex_rule(scheme)
@@ -327,6 +332,7 @@ def _prop42(scheme: Scheme) -> CheckResult:
     section="4",
     title="$O$ and the centres of $A^j$, $B^j$ stay collinear",
     statement="The vertex $O$ and the centres of the polygons $A^j, B^j$ remain collinear throughout the subdivision process.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _prop43(scheme: Scheme) -> CheckResult:
     cc = with_free_vertex_rule(scheme)
@@ -357,6 +363,7 @@ PRINTED_B_OVER_A = sp.exp(sp.pi * sp.I * J / n)
     section="4",
     title="$B^j = \\omega_{2n}^j A^j$",
     statement="$B^j = \\omega_{2n}^j A^j$, $j = 1, \\dots, n-1$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq24(scheme: Scheme) -> CheckResult:
     b_ij = Z * sp.exp(2 * sp.pi * sp.I * J * (2 * I_ROW + 1) / (2 * n))

@@ -1,16 +1,16 @@
-"""Section 5.1 (Tangent plane properties): Eq. 25-39, Proposition 5.1, Remark 5.1."""
+"""Section 5.1 (Tangent plane properties): Eq. 33-39, Proposition 5.1, Remark 5.1 (Eq. 25-32, the staged rules, are in
+:mod:`symdecomp.claims.s5_1_staged`)."""
 
 from __future__ import annotations
 
 import sympy as sp
 
-from symdecomp.algebra.circulant import mode_eigenvalue_derivation
 from symdecomp.algebra.valence_signs import sign_on_interval
 from symdecomp.analysis.components import ZETA, initial_vector_condition, root_of_unity_orders
 from symdecomp.analysis.dominance import tail_bound
 from symdecomp.analysis.frequency import per_frequency_matrix
 from symdecomp.analysis.tangent import eigenvector_second_component, invariant_ratio, invariant_ratio_at, invariant_ratio_limit, tangent_eigenvalues
-from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM
+from symdecomp.claims.applicability import COSINE_ONLY, FACE_NEIGHBOURS, MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM
 from symdecomp.claims.evidence import (
     at_valence,
     dominant_vs_frequency_zero,
@@ -25,9 +25,7 @@ from symdecomp.claims.notation import A, B, cos_j_theta, eq, ge, gt, j, lambda_1
 from symdecomp.claims.notation import M as Mk
 from symdecomp.claims.per_valence import depends_on_valence, largest_at_frequency_one
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, Verbatim, claim, is_zero
-from symdecomp.claims.s4_one_ring import EQ17, EQ18, EQ19, EQ20, EQ21
 from symdecomp.schemes.scheme import Scheme
-from symdecomp.schemes.shift_stencil import composed_stages
 from symdecomp.symbols import cos_jtheta as COS
 from symdecomp.symbols import lam, n, omega
 
@@ -36,77 +34,13 @@ C = COS
 S = sp.Symbol
 
 
-#: The circulants of Eq. 25-30 as printed, as offsets (``c_{n-1}`` is offset -1).
-PRINTED_CIRCULANTS = {
-    "alpha": {0: R(3, 4), 1: R(1, 8), -1: R(1, 8)},
-    "beta": {0: R(1, 2), -1: R(1, 2)},
-    "gamma": {0: R(1, 2), 1: R(1, 2)},
-}
-
-
-@claim(
-    "Eq. 25-30",
-    section="5.1",
-    title="The three circulants of the staged rules",
-    statement="The steps Eq. 17, 18, 20 involve $C_\\alpha = circ(3/4, 1/8, 0, \\dots, 0, 1/8)$, "
-    "$C_\\beta = circ(1/2, 0, \\dots, 0, 1/2)$, $C_\\gamma = circ(1/2, 1/2, 0, \\dots, 0)$, with eigenvalues "
-    "$\\lambda^\\alpha_j, \\lambda^\\beta_j, \\lambda^\\gamma_j$.",
-)
-def _eq25_30(scheme: Scheme) -> CheckResult:
-    printed = PRINTED_CIRCULANTS
-    eig = {k: mode_eigenvalue_derivation(v)[1] for k, v in printed.items()}
-    # the steps: Eq. 17 acts on the a's by C_alpha; Eq. 18 reads (b_{i-1} + b_i)/10 = (1/5) C_beta B; Eq. 20 reads
-    # (a_i + a_{i+1})/3 = (2/3) C_gamma A.
-    checks = [
-        sp.expand(EQ17.a - eig["alpha"]),
-        sp.expand(EQ18.b - R(1, 5) * eig["beta"]),
-        sp.expand(EQ20.a - R(2, 3) * eig["gamma"]),
-    ]
-    ok = all(c == 0 for c in checks)
-    return CheckResult(
-        Status.PROVED if ok else Status.REFUTED,
-        Text(
-            "with circ's convention (entry ", S("c_s-r"), "), ", S("C_alpha"), " is Eq. 17, ", S("C_beta"), " (",
-            S("c_0"), " = ", S("c_n-1"), " = ", R(1, 2), ") reads ", S("b_i"), " and ", S("b_i-1"), " as in Eq. 18, ",
-            S("C_gamma"), " reads ", S("a_i"), " and ", S("a_i+1"), " as in Eq. 20; their eigenvalues from Prop. 2.1, for every ", n,
-        ),
-        counterexample=None if ok else Text("the differences ", sp.Tuple(*checks)),
-        steps=tuple(Step(f"$\\lambda^\\{k}_j$ (Prop. 2.1, $\\omega = \\omega_n^j$):", v) for k, v in eig.items()),
-    )
-
-
-@claim(
-    "Eq. 31-32",
-    section="5.1",
-    title="The substitutions on $A^j$ and $B^j$",
-    statement="$A^j \\rightarrow \\frac58(\\frac45\\lambda^\\alpha_j A^j + \\frac15\\lambda^\\beta_j B^j)$ and "
-    "$B^j \\rightarrow \\frac34(\\frac23\\lambda^\\gamma_j A^j + \\frac13 B^j)$.",
-)
-def _eq31_32(scheme: Scheme) -> CheckResult:
-    la = R(3, 4) + (omega + 1 / omega) / 8
-    lb = (1 + 1 / omega) / 2
-    lg = (1 + omega) / 2
-    printed = sp.Matrix([[R(5, 8) * R(4, 5) * la, R(5, 8) * R(1, 5) * lb], [R(3, 4) * R(2, 3) * lg, R(3, 4) * R(1, 3)]])
-    # the same from composing the staged rules Eq. 17-19 and Eq. 20-21 (O drops out for omega != 1)
-    a, b = composed_stages((EQ17, EQ18, EQ19), (EQ20, EQ21))
-    staged = sp.Matrix([[a.a, a.b], [b.a, b.b]])
-    derived = per_frequency_matrix(scheme)
-    ok = is_zero(printed - staged) and is_zero(staged - derived)
-    return CheckResult(
-        Status.PROVED if ok else Status.REFUTED,
-        "the printed combinations equal the staged rules composed, and the matrix derived from Eq. 14-15, for every n"
-        if ok else "the printed combinations are not the matrix derived from this scheme's rules",
-        counterexample=None if ok else Text("printed minus derived: ", (printed - derived).applyfunc(sp.expand)),
-        steps=(Step("Eq. 31-32 as a matrix on $(A^j, B^j)$:", printed), Step("Derived from the scheme's rules:", derived)),
-    )
-
-
 @claim(
     "Eq. 33",
     section="5.1",
     title="The per-frequency matrix $M_j$",
     statement="$M_j = \\begin{pmatrix} \\frac38 + \\frac{1}{16}(\\omega_n^j + \\omega_n^{-j}) & \\frac1{16}(1 + \\omega_n^{-j}) "
     "\\\\ \\frac14(1 + \\omega_n^j) & \\frac14 \\end{pmatrix}$",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq33(scheme: Scheme) -> CheckResult:
     printed = sp.Matrix([[R(3, 8) + (omega + 1 / omega) / 16, (1 + 1 / omega) / 16], [(1 + omega) / 4, R(1, 4)]])
@@ -129,6 +63,7 @@ def _eq33(scheme: Scheme) -> CheckResult:
     title="Eigenvalues of $M_j$",
     statement="$\\lambda_{1,2} = \\frac14 + \\frac18\\cos^2 j\\theta \\pm \\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta}$, "
     "$\\theta = \\pi/n$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq34(scheme: Scheme) -> CheckResult:
     ev = tangent_eigenvalues(scheme)
@@ -178,6 +113,7 @@ PRINTED_EIGENVECTOR = (1 + omega) / 4 / (lam - R(1, 4))
     title="Eigenvectors of $M_j$",
     statement="The eigenvector of $M_j$ for $\\lambda_{1,2}$ is generated by "
     "$(1, \\frac{\\frac14(1 + \\omega_n^j)}{\\lambda_{1,2} - \\frac14})^T$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq35_37(scheme: Scheme) -> CheckResult:
     M = per_frequency_matrix(scheme)
@@ -239,6 +175,7 @@ def _eq35_37(scheme: Scheme) -> CheckResult:
     title="The initial vector is on no single eigenvector",
     statement="$\\det\\begin{pmatrix} 1 & \\frac{\\frac14(1+\\omega_n^j)}{\\lambda_{1,2} - \\frac14} \\\\ 1 & \\omega_{2n}^j\\end{pmatrix} \\ne 0$: "
     "the initial vector $(1, \\omega_{2n}^j)^T$ always has a component on the dominant eigenvector of $M_j$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq38(scheme: Scheme) -> CheckResult:
     cond, points = start_points(scheme)
@@ -294,7 +231,7 @@ def _eq38(scheme: Scheme) -> CheckResult:
     section="5.1",
     title="$A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues",
     statement="The regular convex components $A^1, B^1, A^{2n-1}, B^{2n-1}$ have the largest eigenvalues.",
-    requires=(MIRROR_SYMMETRIC,),
+    requires=(FACE_NEIGHBOURS, MIRROR_SYMMETRIC),
 )
 def _prop51(scheme: Scheme) -> CheckResult:
     if depends_on_valence(scheme):  # n in M_j beside c: valence by valence, n substituted first
@@ -353,7 +290,7 @@ def _prop51(scheme: Scheme) -> CheckResult:
     title="$A^{n-1}, B^{n-1}, A^{n+1}, B^{n+1}$ are filtered out",
     statement="The components $A^{n-1}, B^{n-1}, A^{n+1}, B^{n+1}$ are also convex regular but they are filtered out by "
     "the subdivision scheme in the same way as the non-convex components.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM),
+    requires=(FACE_NEIGHBOURS, MIRROR_SYMMETRIC, COSINE_ONLY, REAL_TANGENT_SPECTRUM),
 )
 def _rem51(scheme: Scheme) -> CheckResult:
     # Component j = n + 1 moves by M(omega_n^(n+1)) = M_1 from (1, zeta), zeta = omega_2n^(n+1) = -omega_2n, of
@@ -412,7 +349,7 @@ PRINTED_RATIO = (1 + omega) / 4 / (C / 4 * sp.sqrt(1 + C**2 / 4) + C**2 / 8)
     title="The invariant ratio",
     statement="In the limit the ratio $r$ of $A^j, B^j$ given by $A^j = r B^j$ is "
     "$\\frac{\\frac14(1 + \\omega_n^j)}{\\frac14\\cos j\\theta\\sqrt{1 + \\frac14\\cos^2 j\\theta} + \\frac18\\cos^2 j\\theta}$.",
-    requires=(COSINE_ONLY,),
+    requires=(FACE_NEIGHBOURS, COSINE_ONLY),
 )
 def _eq39(scheme: Scheme) -> CheckResult:
     derived = invariant_ratio(scheme)  # B/A on the dominant eigenvector
@@ -457,7 +394,7 @@ def _eq39(scheme: Scheme) -> CheckResult:
     section="5.1",
     title="The invariant ratio at $n = 4$",
     statement="For $n = 4$ and $j = 1$ the ratio is $1 + i$: $B^1$ is $A^1$ scaled by $\\sqrt2$ and rotated by $\\pi/4$.",
-    requires=(COSINE_ONLY,),
+    requires=(FACE_NEIGHBOURS, COSINE_ONLY),
 )
 def _eq39_n4(scheme: Scheme) -> CheckResult:
     value = invariant_ratio_at(scheme, 4, 1)
@@ -479,7 +416,7 @@ def _eq39_n4(scheme: Scheme) -> CheckResult:
     section="5.1",
     title="The invariant ratio for large $n$",
     statement="For large $n$ and $j = 1$ the ratio tends towards $4/(\\sqrt5 + 1)$.",
-    requires=(COSINE_ONLY,),
+    requires=(FACE_NEIGHBOURS, COSINE_ONLY),
 )
 def _eq39_limit(scheme: Scheme) -> CheckResult:
     value = invariant_ratio_limit(scheme, 1)

@@ -1,12 +1,10 @@
-"""Section 5.2, elliptic properties: Eq. 40-45, Proposition 5.2, Remark 5.2, the Example."""
+"""Section 5.2, elliptic properties: Eq. 42-45, Proposition 5.2, Remark 5.2, the Example (Eq. 40-41, the ellipse of the
+component, are in :mod:`symdecomp.claims.s5_2_ellipses`)."""
 
 from __future__ import annotations
 
-import random
-
 import sympy as sp
 
-from symdecomp.analysis.ellipses import ellipse_axes
 from symdecomp.analysis.elliptic import (
     MU,
     components_nonzero_every_n,
@@ -21,7 +19,7 @@ from symdecomp.analysis.elliptic import (
 from symdecomp.analysis.frequency import recursion_matrix
 from symdecomp.analysis.tuning import joint_obstruction, with_free_vertex_rule
 from symdecomp.claims import CheckResult, Scope, Status, Step, Text, claim, is_zero
-from symdecomp.claims.applicability import COSINE_ONLY, MIRROR_SYMMETRIC
+from symdecomp.claims.applicability import COSINE_ONLY, FACE_NEIGHBOURS, MIRROR_SYMMETRIC
 from symdecomp.claims.evidence import complex_elliptic_pair
 from symdecomp.claims.notation import A, B, M, eq, j, lambda_1, listed, ne, omega_2n, tup
 from symdecomp.schemes.scheme import Scheme
@@ -33,110 +31,13 @@ from symdecomp.symbols import n as N
 S = sp.Symbol
 
 
-def PRINTED_AXES(w1, w2):
-    """The axes of Eq. 40 as printed: ``l_1 = |w_1| + |w_(2n-1)|``, ``l_2 = ||w_1| - |w_(2n-1)||``."""
-    return abs(w1) + abs(w2), abs(abs(w1) - abs(w2))
-
-
-@claim(
-    "Eq. 40",
-    section="5.2",
-    title="Axes of the ellipse $E_a$",
-    statement=r"$A^1 + A^{2n-1}$ is inscribed on an ellipse with axes "
-    r"$l_1 = |w_1| + |w_{2n-1}|$, $l_2 = \bigl||w_1| - |w_{2n-1}|\bigr|$.",
-)
-def _eq40(scheme: Scheme) -> CheckResult:
-    # The polygon is L(v_1) with L(zeta) = w1 zeta + w2 conj(zeta), a real-linear map of the plane;
-    # it lies on L(unit circle), whose semi-axes are the singular values of L.
-    p1, q1, p2, q2 = sp.symbols("p1 q1 p2 q2", real=True)
-    # Real 2x2 matrix of L: zeta = x + i y -> (w1 + w2) x + i (w1 - w2) y.
-    w1, w2 = p1 + sp.I * q1, p2 + sp.I * q2
-    col_x = [sp.re(w1 + w2), sp.im(w1 + w2)]
-    col_y = [sp.re(sp.I * (w1 - w2)), sp.im(sp.I * (w1 - w2))]
-    L = sp.Matrix([[col_x[0], col_y[0]], [col_x[1], col_y[1]]])
-    G = L.T * L
-    l1, l2 = PRINTED_AXES(w1, w2)
-    # sigma_1^2 + sigma_2^2 = tr G and sigma_1 sigma_2 = |det L|: the printed axes must have the same invariants.
-    sum_sq = sp.simplify(sp.expand(G.trace() - (l1**2 + l2**2)))
-    prod_sq = sp.simplify(sp.expand(L.det() ** 2 - (l1 * l2) ** 2))
-    if not (is_zero(sum_sq) and is_zero(prod_sq)):
-        return CheckResult(
-            Status.REFUTED,
-            "the singular values differ from the printed axes",
-            counterexample=Text("invariants off by ", sum_sq, " and ", prod_sq),
-        )
-    # Cross-check on random rational 1-rings: Eq. 40 from the decomposition vs the singular values of [U W].
-    rng = random.Random(5)
-    worst = 0
-    for n in (3, 4, 5, 6):
-        ring = sp.Matrix(2 * n + 1, 3, lambda r, c: sp.Rational(rng.randint(-9, 9), rng.randint(1, 4)))
-        e = ellipse_axes(ring, 1, digits=40)
-        for a, b in zip(e.semi_axes, e.singular_values):
-            worst = max(worst, abs(sp.N(a - b, 40)))
-    if worst > sp.Float("1e-35"):
-        return CheckResult(Status.ERROR, Text("decomposition and singular values disagree by ", worst))
-    w_1, w_2, t = S("w_1"), S("w_2"), S("t", real=True)
-    return CheckResult(
-        Status.PROVED,
-        Text(
-            "the semi-axes of ", w_1 * sp.exp(sp.I * t) + w_2 * sp.exp(-sp.I * t), " are ", abs(w_1), " + ", abs(w_2),
-            " and ", abs(abs(w_1) - abs(w_2)), " (singular-value invariants match identically); ", S("l_1"), ", ",
-            S("l_2"), " are semi-axes (half-axes) for the unit-circumradius ", S("v_1"),
-            "; random rings of valence 3 to 6 agree to 35 digits",
-        ),
-        steps=(
-            Step("Real matrix of $\\zeta \\mapsto w_1\\zeta + w_2\\bar\\zeta$", L),
-            Step("$\\operatorname{tr}(L^TL) - 2(|w_1|^2+|w_2|^2)$", sum_sq),
-            Step("$\\det(L)^2 - (|w_1|^2-|w_2|^2)^2$", prod_sq),
-        ),
-    )
-
-
-#: The factor taking the a-part ``z_1`` of the component to its b-part as printed (Eq. 24 at ``j = 1``).
-PRINTED_B_FACTOR = sp.exp(sp.pi * sp.I / N)
-
-
-@claim(
-    "Eq. 41",
-    section="5.2",
-    title="Initially $E_a = E_b$",
-    statement=r"$A^1 = w_1 \vec{v_1}$, $A^{2n-1} = w_{2n-1}\vec{v_{n-1}}$; initially $E_a = E_b$, the ellipse of the "
-    r"2n-gonal regular convex component of Eq. 11.",
-)
-def _eq41(scheme: Scheme) -> CheckResult:
-    # z_1 = p + i q (p, q in R^3). A-pair: U = 2p, W = -2q; B-pair: z_1 times the printed factor (Eq. 24).
-    p = sp.Matrix(sp.symbols("p0:3", real=True))
-    q = sp.Matrix(sp.symbols("q0:3", real=True))
-    factor = sp.expand_complex(PRINTED_B_FACTOR.subs(N, S("n", positive=True, integer=True)))
-    # the factor's real and imaginary parts as symbols c, s bound by c^2 + s^2 = |factor|^2 (simplified: a small
-    # expression): each entry of G_b - G_a is reduced modulo that polynomial (a Groebner basis by itself), exact in
-    # Q[p, q, c, s] where simplify's trigonometry on the entries took a second
-    c, s = sp.symbols("c s", real=True)
-    modulus = sp.simplify(sp.re(factor) ** 2 + sp.im(factor) ** 2)
-    zb_re = p * c - q * s
-    zb_im = p * s + q * c
-    gram_a = 4 * (p * p.T + q * q.T)
-    gram_b = 4 * (zb_re * zb_re.T + zb_im * zb_im.T)
-    diff = (gram_b - gram_a).applyfunc(lambda e: sp.reduced(sp.expand(e), [s**2 + c**2 - modulus], s, c)[1])
-    if not is_zero(diff):
-        return CheckResult(Status.REFUTED, Text(S("E_b"), " differs from ", S("E_a")), counterexample=Text(diff))
-    U, W, t = S("U"), S("W"), S("t")
-    return CheckResult(
-        Status.PROVED,
-        Text(
-            "an ellipse ", U * sp.cos(t) + W * sp.sin(t), " is fixed by its matrix ", U * S("U^T") + W * S("W^T"),
-            "; for the b-part (", S("z_1"), " times ", PRINTED_B_FACTOR, ", a rotation) it is identical for every ring and ", N,
-        ),
-        steps=(Step("$G_b - G_a$ (zero)", diff),),
-    )
-
-
 @claim(
     "Proposition 5.2",
     section="5.2",
     title="The components $A^j$, $B^j$ are not rotated",
     statement=r"At each subdivision step $A^j \rightarrow r_A^j A^j$ and $B^j \rightarrow r_B^j B^j$ with "
     r"$r_A^j, r_B^j \in \mathbf{R}$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _prop52(scheme: Scheme) -> CheckResult:
     conj, imag = rotation_free_form(with_free_vertex_rule(scheme))
@@ -163,6 +64,7 @@ def _prop52(scheme: Scheme) -> CheckResult:
     section="5.2",
     title="The induction step of Proposition 5.2",
     statement=r"$M_j(r_1, r_2\omega_{2n}^j)^T = (r'_1, r'_2\omega_{2n}^j)^T$ with $r'_1, r'_2$ real.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq42(scheme: Scheme) -> CheckResult:
     conj, imag = rotation_free_form(scheme)
@@ -196,6 +98,7 @@ def _eq42(scheme: Scheme) -> CheckResult:
     title="The recursion matrix for $O$, $A^0$, $B^0$",
     statement=r"$\begin{pmatrix}1-\alpha-\beta & \alpha & \beta\\ 3/8 & 1/2 & 1/8\\ 1/4 & 1/2 & 1/4\end{pmatrix}$ "
     r"with $\alpha, \beta$ as in Eq. 16.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq43(scheme: Scheme) -> CheckResult:
     T = recursion_matrix(with_free_vertex_rule(scheme))
@@ -249,6 +152,7 @@ def _eq43(scheme: Scheme) -> CheckResult:
     title="Limit ratio of the plane distances",
     statement=r"If $(u_O, u_a, u_b)^T$ is the subdominant eigenvector, in the limit "
     r"$\frac{u_b-u_O}{u_a-u_O} = \frac{d_b}{d_a}$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq44(scheme: Scheme) -> CheckResult:
     free = with_free_vertex_rule(scheme)
@@ -307,7 +211,7 @@ def _eq44(scheme: Scheme) -> CheckResult:
     title="The regular case $n = 4$",
     statement=r"For $n=4$ the matrix of Eq. 43 is $\begin{pmatrix}9/16&3/8&1/16\\3/8&1/2&1/8\\1/4&1/2&1/4\end{pmatrix}$ "
     r"with subdominant eigenvalue $1/4$, eigenvector $(-2,1,4)^T$, $d_b/d_a = 2$, scale ratio $\sqrt2$.",
-    requires=(COSINE_ONLY,),
+    requires=(FACE_NEIGHBOURS, COSINE_ONLY),
 )
 def _eq45(scheme: Scheme) -> CheckResult:
     R = sp.Rational
@@ -367,6 +271,7 @@ def _eq45(scheme: Scheme) -> CheckResult:
     title="Two cases of initial input",
     statement=r"There are only two essentially different cases for the initial input, $(1,1,1)$ and $(0,1,1)$; in the "
     r"first there is no elliptic component, in the second it generally exists.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _remark52(scheme: Scheme) -> CheckResult:
     # long: the three inputs, the exact range and the argument for every n are one verdict.
@@ -458,7 +363,7 @@ def _remark52(scheme: Scheme) -> CheckResult:
     title="Catmull-Clark is nicely elliptic only at $n = 4$",
     statement=r"The Catmull-Clark scheme does not satisfy all these elliptic properties for all the valences $n$; it "
     r"does in the regular case $n = 4$.",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY),
+    requires=(FACE_NEIGHBOURS, MIRROR_SYMMETRIC, COSINE_ONLY),
 )
 def _example(scheme: Scheme) -> CheckResult:
     cond = nice_elliptic_conditions(scheme)

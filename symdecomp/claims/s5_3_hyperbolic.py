@@ -29,7 +29,7 @@ Sym = sp.Symbol
     title="Hyperbolic components have smaller eigenvalues",
     statement=r"The eigenvalues of $A^2, A^{2n-2}, B^2, B^{2n-2}$ are smaller than those related to tangent plane "
     r"continuity.",
-    requires=(MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM),
+    requires=(FACE_NEIGHBOURS, MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM),
 )
 def _smaller(scheme: Scheme) -> CheckResult:
     if depends_on_valence(scheme):  # n in M_j beside c: valence by valence
@@ -91,7 +91,7 @@ def _smaller(scheme: Scheme) -> CheckResult:
     title="Hyperbolic components must shrink with quadratic speed",
     statement=r"Similarly to the elliptic case, the hyperbolic components have to shrink with quadratic speed compared "
     r"to the tangent plane ($\lambda_2 = \lambda_1^2$).",
-    requires=(MIRROR_SYMMETRIC, COSINE_ONLY),
+    requires=(FACE_NEIGHBOURS, MIRROR_SYMMETRIC, COSINE_ONLY),
 )
 def _quadratic(scheme: Scheme) -> CheckResult:
     # The requirement is modelled on the regular case: the scheme meets it at n = 4 (checked exactly), and the
@@ -151,7 +151,7 @@ def _frequency_closure(scheme: Scheme):
     title="A 1-ring with only hyperbolic components",
     statement=r"Place $O$ on the plane of $A^1, A^{2n-1}, B^1, B^{2n-1}$ (the elliptic component becomes zero) and add "
     r"a combination of $\vec{v_2}, \vec{v_{2n-2}}$ on a plane perpendicular to the 1-ring.",
-    requires=(MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM, NO_FREE_PARAMETERS),  # an edge rule in n: each n substitutes it
+    requires=(FACE_NEIGHBOURS, MIRROR_SYMMETRIC, REAL_TANGENT_SPECTRUM, NO_FREE_PARAMETERS),  # an edge rule in n: each n substitutes it
 )
 def _construction(scheme: Scheme) -> CheckResult:
     cc = scheme

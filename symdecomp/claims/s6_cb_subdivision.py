@@ -11,7 +11,7 @@ from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, v
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.tuning import with_free_vertex_rule
-from symdecomp.claims.applicability import MIRROR_SYMMETRIC
+from symdecomp.claims.applicability import FACE_NEIGHBOURS, MIRROR_SYMMETRIC
 from symdecomp.claims.notation import eq, j, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.claims.s6_cb_matrices import _det, _nc
@@ -77,6 +77,7 @@ def _factored(cf, rho_p, rho_m) -> bool:
     section="6",
     title="Characteristic polynomial of S in closed form",
     statement=r"The eigenvalues of $S$ are the roots of $\det(S-xI)$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _eq51(scheme: Scheme) -> CheckResult:
     free = with_free_vertex_rule(scheme)
@@ -135,6 +136,7 @@ def _eq51(scheme: Scheme) -> CheckResult:
     section="6",
     title="The reduction S -> S'",
     statement=r"Adding all columns to the first and subtracting the first row from the others, the characteristic polynomial of $S$ equals that of $S'$ with lower-right block $\begin{pmatrix}C_1-A&C_2-B\\C_3-A&C_4-B\end{pmatrix}$, $a_{ij}=\alpha$, $b_{ij}=\beta$.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _s_prime(scheme: Scheme) -> CheckResult:
     free = with_free_vertex_rule(scheme)
@@ -192,6 +194,7 @@ def _s_prime(scheme: Scheme) -> CheckResult:
     section="6",
     title="alpha, beta change only two eigenvalues",
     statement=r"From Prop. 6.3 and the form of $S'$, the fine tuning parameters $\alpha,\beta$ of Eq. 16 affect only two eigenvalues of the subdivision matrix.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _two_eigenvalues(scheme: Scheme) -> CheckResult:
     free = with_free_vertex_rule(scheme)
@@ -246,7 +249,7 @@ def _certainly_above(value: sp.Expr, bound: sp.Expr) -> bool:
     section="6",
     title="Tuning does not interfere with tangent-plane properties",
     statement=r"Hence $\alpha,\beta$ affect only elliptic properties of Catmull-Clark without interfering with tangent plane or hyperbolic properties.",
-    requires=(MIRROR_SYMMETRIC,),  # an edge rule in n: lambda_1 is taken at each valence tried
+    requires=(FACE_NEIGHBOURS, MIRROR_SYMMETRIC),  # an edge rule in n: lambda_1 is taken at each valence tried
 )
 def _no_interference(scheme: Scheme) -> CheckResult:
     # the two weight-dependent eigenvalues are those of E_0; look for vertex weights that lift one above lambda_1

@@ -23,7 +23,7 @@ import sympy as sp
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.analysis.components import ZETA, root_of_unity_orders
 from symdecomp.analysis.frequency import ring_blocks
-from symdecomp.claims.applicability import NO_FREE_PARAMETERS
+from symdecomp.claims.applicability import FACE_NEIGHBOURS, NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim
 from symdecomp.schemes.rings import ring_subdivision_matrix
@@ -346,6 +346,7 @@ def _multiplicities_at(S: sp.Matrix, mu: sp.Expr) -> tuple[int, int]:
     title="Tuning holds whatever the multiplicities",
     statement=r"Furthermore, this property holds regardless of any a priori knowledge of the underlying algebraic or "
     r"geometric multiplicity of the subdivision matrix.",
+    requires=(FACE_NEIGHBOURS,),
 )
 def _multiplicities(scheme: Scheme) -> CheckResult:
     from symdecomp.analysis.charpoly import verify_closed_form

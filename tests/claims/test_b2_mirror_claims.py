@@ -76,3 +76,19 @@ def test_the_tangent_frequency_is_computed():
     r = b2.check_tangent(catmull_clark(), sp.pi / 3)  # Loop's frequency on quads: g(1/2) = -1/32
     assert r.status is Status.REFUTED and "-1/32" in str(r.counterexample)
     assert b2.check_tangent(loop(), sp.pi / 2).status is Status.REFUTED  # g(0) = -1/8 on Loop
+
+
+def test_the_standard_rules_claim_reads_the_standard_rules_not_a_schemes_own_modified_ones():
+    """loop-blz and catmull-clark-blz carry BLZ's modified edge rule: with it the first sine eigenvalue of M(pi/k) is the
+    boundary curve's 1/2 for every k (never above; that is the other claim). The statement is about the standard rules,
+    on which their smooth rules (Loop's, Catmull-Clark's) exceed 1/2 from k = 4, k = 3; it was refuted for loop-blz."""
+    from symdecomp.schemes.files import load_scheme
+
+    label = "Sector: standard rules' subdominant eigenvalue"
+    for name, first in (("loop-blz", 4), ("catmull-clark-blz", 3)):
+        scheme = load_scheme(name)
+        own = b2.first_exceeding(scheme)  # the scheme's own (modified) rules: 1/2 exactly, identically in c
+        assert (own.g, own.first) == (0, None), name
+        result = check_claim(label, scheme)
+        assert result.status is Status.PROVED and f"for every k >= {first}" in str(result.evidence), name
+    assert check_claim(label, MIDPOINT).status is Status.REFUTED  # a change of the smooth rules still flips it

@@ -77,3 +77,45 @@ def test_the_shape_claim_flips_with_the_vertex_rule_and_with_the_statement():
     assert r.status is Status.REFUTED and "n = 5" in str(r.counterexample) and "computed: the elliptic part" in str(r.counterexample)
     assert b1.check_dominance(loop(), b1.DOMINANCE[BICUBIC], (3, 8)).status is Status.REFUTED  # Loop's n = 5, 6 are not hyperbolic
     assert b1.check_dominance(loop(), b1.DOMINANCE[BOX_SPLINE], (3, 8)).status is Status.PROVED
+
+
+_LOOP_WITH_EDGE_WEIGHTS = """name = "loop-edge-{left}-{right}"
+mesh = "triangle"
+[edge]
+O = "3/8"
+a = {{ "-1" = "{left}", "0" = "3/8", "1" = "{right}" }}
+[vertex]
+beta = "(5/8 - (3/8 + cos(2*pi/n)/4)**2)/n"
+"""
+
+
+def test_loops_weight_needs_a_real_lambda_1_and_a_skewed_edge_rule_is_set_aside_not_refuted():
+    """Loop's edge rule with its two outer weights 3/16, 1/16 instead of 1/8, 1/8: lambda_1 = M(omega_n) is complex, so
+    comparing the elliptic eigenvalue with lambda_1^2 is no statement about the scheme (it was refuted with a complex
+    'counterexample'); the mirrored rule (the two weights averaged) is Loop's and the claim is proved for it."""
+    from symdecomp.analysis.frequency import one_ring_matrices
+    from symdecomp.schemes.files import scheme_from_text
+
+    skew = scheme_from_text(_LOOP_WITH_EDGE_WEIGHTS.format(left="3/16", right="1/16"))
+    lam1 = one_ring_matrices(skew)[0][0, 0].subs(symbols.omega, sp.exp(2 * sp.pi * sp.I / 5))
+    assert sp.simplify(sp.im(sp.expand_complex(lam1)) + sp.sin(2 * sp.pi / 5) / 8) == 0  # (1/16 - 3/16) sin(2 pi/5)
+    result = check_claim("Loop's vertex weight", skew)
+    assert result.status is Status.NOT_APPLICABLE and result.counterexample is None
+    assert "omega/16 + 3/8 + 3/(16*omega)" in str(result.evidence) and "lambda_1 is complex" in str(result.evidence)
+    mirrored = scheme_from_text(_LOOP_WITH_EDGE_WEIGHTS.format(left="1/8", right="1/8"))
+    assert check_claim("Loop's vertex weight", mirrored).status is Status.PROVED
+
+
+def test_a_rule_that_is_loops_only_at_the_regular_valence_has_no_curvature_or_shape_verdict_where_lambda_1_is_complex():
+    """Outer edge weights 1/8 -+ (n - 6)/64: Loop at n = 6 (its regular patches are the box spline), skewed at every other
+    valence. Reif's test refutes C1 there (lambda_1 is not real, computed); the regimes and the shape compare mu with
+    lambda_1^2 and are set aside with that reason (the shape was 'refuted': 'neither part' at n = 4)."""
+    from symdecomp.schemes.files import scheme_from_text
+
+    twist = scheme_from_text(_LOOP_WITH_EDGE_WEIGHTS.format(left="1/8 + (n - 6)/64", right="1/8 - (n - 6)/64"))
+    c1 = check_claim("C1 (Reif's test)", twist)
+    assert c1.status is Status.REFUTED and "not real" in str(c1.counterexample)
+    for label in ("Curvature regime: Loop", "Loop's vertex weight", "Shape: the valence decides"):
+        result = check_claim(label, twist)
+        assert result.status is Status.NOT_APPLICABLE and "lambda_1 is complex" in str(result.evidence), label
+    assert check_claim("Curvature at the regular valence", twist).status is Status.VERIFIED  # n = 6: Loop's own rules

@@ -19,6 +19,8 @@ import subprocess
 import sys
 import time
 
+from _targets import print_rows
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 #: The issue's target: seconds for ``artifacts --n 3:64`` per scheme.
@@ -57,11 +59,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="n = 3..16 instead of 3..64")
     args = parser.parse_args()
-    for row in targets(args.quick):
-        limit = row["limit_seconds"]
-        verdict = "" if limit is None else ("  (target met)" if row["seconds"] <= limit else "  (TARGET MISSED)")
-        print(f"{row['target']}: {row['seconds']:.1f} s, limit {limit or '-'} s{verdict}; "
-              f"{row['baseline']}: {row['baseline_seconds']:.1f} s")
+    print_rows(targets(args.quick))
 
 
 if __name__ == "__main__":

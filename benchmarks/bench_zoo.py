@@ -14,12 +14,8 @@ read and factored there), forced by giving the neighbourhood's depth. The explic
 from __future__ import annotations
 
 import argparse
-import os
-import subprocess
-import sys
-import time
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+from _targets import print_rows, timed
 
 #: The issue's targets, seconds per scheme.
 SPECTRUM_SECONDS = 10.0
@@ -41,26 +37,17 @@ else:
 """
 
 
-def _timed(*args: str) -> float:
-    t0 = time.perf_counter()
-    done = subprocess.run([sys.executable, *args], cwd=ROOT, capture_output=True, text=True, check=False)
-    seconds = time.perf_counter() - t0
-    if done.returncode != 0:
-        raise SystemExit(f"{' '.join(args[:4])} failed ({done.returncode}): {done.stderr.strip()[-300:]}")
-    return seconds
-
-
 def targets(quick: bool = False) -> list[dict]:
     """``spectrum N`` and ``check --n M --certify`` per scheme, beside the explicit route."""
     n, big = (32, 1000) if quick else (64, 10_000)
     out = []
     for name in SCHEMES:
-        seconds = _timed("-m", "symdecomp", "spectrum", str(n), "--scheme", name, "--json")
-        baseline = _timed("-c", _EXPLICIT, name, str(n), "spectrum")
+        seconds = timed("-m", "symdecomp", "spectrum", str(n), "--scheme", name, "--json")
+        baseline = timed("-c", _EXPLICIT, name, str(n), "spectrum")
         out.append({"target": f"spectrum {n} --scheme {name}", "limit_seconds": SPECTRUM_SECONDS if not quick else None,
                     "seconds": seconds, "baseline": f"the explicit route at n = {n}", "baseline_seconds": baseline})
-        seconds = _timed("-m", "symdecomp", "check", "--n", str(big), "--certify", "--scheme", name, "--json")
-        baseline = _timed("-c", _EXPLICIT, name, str(n), "certify")
+        seconds = timed("-m", "symdecomp", "check", "--n", str(big), "--certify", "--scheme", name, "--json")
+        baseline = timed("-c", _EXPLICIT, name, str(n), "certify")
         out.append({"target": f"check --n {big} --certify --scheme {name}", "limit_seconds": CERTIFY_SECONDS if not quick else None,
                     "seconds": seconds, "baseline": f"the explicit certificate at n = {n}", "baseline_seconds": baseline})
     return out
@@ -70,11 +57,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="n = 32 and the certificate at n = 1000")
     args = parser.parse_args()
-    for row in targets(args.quick):
-        limit = row["limit_seconds"]
-        verdict = "" if limit is None else ("  (target met)" if row["seconds"] <= limit else "  (TARGET MISSED)")
-        print(f"{row['target']}: {row['seconds']:.1f} s, limit {limit or '-'} s{verdict}; "
-              f"{row['baseline']}: {row['baseline_seconds']:.1f} s")
+    print_rows(targets(args.quick))
 
 
 if __name__ == "__main__":

@@ -13,31 +13,19 @@ artifacts reads the 2-ring, the neighbourhood the C1 test reads).
 from __future__ import annotations
 
 import argparse
-import os
-import subprocess
-import sys
-import time
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+from _targets import print_rows, timed
 
 #: The target, seconds.
 ARTIFACTS_SECONDS = 30.0
 
 
-def _timed(*args: str) -> float:
-    t0 = time.perf_counter()
-    done = subprocess.run([sys.executable, *args], cwd=ROOT, capture_output=True, text=True, check=False)
-    seconds = time.perf_counter() - t0
-    if done.returncode not in (0, 1):  # 1: a regime undecided, still a full run
-        raise SystemExit(f"{' '.join(args[:4])} failed ({done.returncode}): {done.stderr.strip()[-300:]}")
-    return seconds
-
-
 def targets(quick: bool = False) -> list[dict]:
     """``artifacts --n N --scheme sqrt3`` beside ``spectrum N --scheme sqrt3``."""
     n = 24 if quick else 64
-    seconds = _timed("-m", "symdecomp", "artifacts", "--n", str(n), "--scheme", "sqrt3", "--json", "--quiet")
-    baseline = _timed("-m", "symdecomp", "spectrum", str(n), "--scheme", "sqrt3", "--json")
+    # exit 1: a regime undecided, still a full run
+    seconds = timed("-m", "symdecomp", "artifacts", "--n", str(n), "--scheme", "sqrt3", "--json", "--quiet", ok=(0, 1))
+    baseline = timed("-m", "symdecomp", "spectrum", str(n), "--scheme", "sqrt3", "--json")
     return [{"target": f"artifacts --n {n} --scheme sqrt3", "limit_seconds": None if quick else ARTIFACTS_SECONDS,
              "seconds": seconds, "baseline": f"spectrum {n} --scheme sqrt3", "baseline_seconds": baseline}]
 
@@ -46,11 +34,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="n = 24")
     args = parser.parse_args()
-    for row in targets(args.quick):
-        limit = row["limit_seconds"]
-        verdict = "" if limit is None else ("  (target met)" if row["seconds"] <= limit else "  (TARGET MISSED)")
-        print(f"{row['target']}: {row['seconds']:.1f} s, limit {limit or '-'} s{verdict}; "
-              f"{row['baseline']}: {row['baseline_seconds']:.1f} s")
+    print_rows(targets(args.quick))
 
 
 if __name__ == "__main__":

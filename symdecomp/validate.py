@@ -109,6 +109,9 @@ DEFAULT_BUDGET = 60.0
 #: The largest valence of a report (:mod:`symdecomp.output.report`, ``symdecomp report --n``): its tables grow
 #: with every valence (2n + 1 eigenvalues, masks of 2n + 1 weights) and the eigen-polygon figure has n panels a row.
 MAX_REPORT_VALENCE = 16
+#: The most faces of a refined mesh ``symdecomp refine --plot`` draws (:mod:`symdecomp.output.plotting.refine_figure`):
+#: a larger mesh is drawn from an even sample of its faces, as the figure's title says (a picture, not minutes of drawing).
+MAX_REFINED_FACES = 8192
 
 #: Upper bounds of the API's entry points and why: ``name: (bound, reason)``. Each is enforced by its entry point
 #: (:func:`check_limit`), shared by the command that calls it, and listed with the command line's bounds in

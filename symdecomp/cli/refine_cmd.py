@@ -12,7 +12,7 @@ triangles. ``--json`` prints ``{"mesh", "scheme", "steps", "vertices", "faces", 
 
 ``--plot FILE`` also draws the refined mesh it writes, its faces shaded and the control mesh's edges light, from a
 fixed view (:mod:`symdecomp.output.plotting.refine_figure`; at most
-:data:`~symdecomp.output.plotting.refine_figure.MAX_REFINED_FACES` faces, an even sample of a larger mesh, as the
+:data:`~symdecomp.validate.MAX_REFINED_FACES` faces, an even sample of a larger mesh, as the
 title says). The target is checked before the mesh is read.
 """
 
@@ -26,6 +26,7 @@ from symdecomp.cli.files import check_output_file, write_output_file
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError
+from symdecomp.validate import MAX_REFINED_FACES
 from symdecomp.validate import MESH_FORMATS as FORMATS
 
 __all__ = ["register", "run"]
@@ -38,11 +39,6 @@ def _steps(text: str) -> int:
     if value > MAX_STEPS:
         raise argparse.ArgumentTypeError(f"expected a number of steps <= {MAX_STEPS}, got {value} (each step multiplies the faces by 4)")
     return value
-
-
-#: Most faces --plot draws (:data:`symdecomp.output.plotting.refine_figure.MAX_REFINED_FACES`, named here so that
-#: ``--help`` imports no figure module).
-MAX_DRAWN_FACES = 8192
 
 
 def register(sub) -> None:
@@ -60,7 +56,7 @@ def register(sub) -> None:
     p.add_argument("--format", choices=FORMATS, action=Once, default=None, help="the input format, if not its extension")
     p.add_argument("--out", action=Once, required=True, metavar="FILE", help="the refined mesh: .obj or .ply")
     flag(p, "--json", help='print {"mesh", "scheme", "steps", "vertices", "faces", "creases", "out", "bytes"}')
-    add_plot_option(p, f"the refined mesh (its faces shaded, the control mesh's edges light; at most {MAX_DRAWN_FACES} faces: "
+    add_plot_option(p, f"the refined mesh (its faces shaded, the control mesh's edges light; at most {MAX_REFINED_FACES} faces: "
                     "an even sample of a larger mesh, as the title says)")
     add_quiet_option(p)
     p.set_defaults(func=run)

@@ -61,11 +61,11 @@ def test_refine_draws_an_even_sample_past_its_limit_and_says_so(tmp_path, capsys
     assert "(68 of the 136 faces drawn: one in 2, at most 100)" in ax.get_title()
 
 
-def test_the_help_names_the_limit_the_figure_draws():
-    from symdecomp.cli.refine_cmd import MAX_DRAWN_FACES
+def test_the_help_names_the_limit_the_figure_draws(capsys):
     from symdecomp.output.plotting.refine_figure import MAX_REFINED_FACES
 
-    assert MAX_DRAWN_FACES == MAX_REFINED_FACES
+    assert main(["refine", "--help"]) == 0
+    assert f"at most {MAX_REFINED_FACES} faces" in " ".join(capsys.readouterr().out.split())
 
 
 def _line(ax, label: str) -> np.ndarray:

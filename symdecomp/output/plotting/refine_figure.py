@@ -16,11 +16,10 @@ import numpy as np
 
 from symdecomp.output.plotting._mpl import new_figure
 from symdecomp.output.plotting.meshes import equal_axes, even_sample, shaded_colors
+from symdecomp.validate import MAX_REFINED_FACES
 
 __all__ = ["MAX_REFINED_FACES", "VIEW", "refine_figure"]
 
-#: Most faces of the refined mesh :func:`refine_figure` draws (an even sample of a larger mesh's faces).
-MAX_REFINED_FACES = 8192
 
 #: The fixed view of the figures of meshes: elevation and azimuth in degrees.
 VIEW = (28.0, -60.0)

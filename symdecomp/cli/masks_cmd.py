@@ -272,7 +272,7 @@ def _run_vertex(args, plot=None) -> int:
         return _run_general(args, certified, why, plot)
     at = limit_masks_at(args.scheme, args.n)
     data = at.as_json(args.digits)
-    _draw(args, plot, data, certified, at.position[:1] + at.position[1 : 1 + args.n][:1] + at.position[1 + args.n :][:1])
+    _draw(args, plot, data, certified, (at.position[0], at.position[1], at.position[1 + args.n]))  # O, a_0, b_0
     if args.json:
         print_json(args, {**data, "lambda_1_subdominant": certified, "subdominance": why})
         return _finish(args, data, certified, why)

@@ -212,7 +212,8 @@ nothing else.
                    cross-check's agreement by valence (``plotting.check_chart``), the limit masks' weights on the
                    neighbourhood (``plotting.mask_weights``), the characteristic polynomial's roots
                    (``plotting.charpoly_roots``), a refined mesh over its control mesh (``plotting.refine_figure``),
-                   a designed net with its limit point, normal and tangents (``plotting.design_figure``),
+                   a designed net with its limit point, normal and tangents (``plotting.design_figure``), the
+                   oracle's disagreements level by level against the predicted rates (``plotting.oracle_chart``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
                    one scheme in one document (``report``: its sections; C1 and the regime for every valence,
                    ``report_every_n``; as LaTeX and PDF,

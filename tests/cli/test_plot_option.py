@@ -28,6 +28,8 @@ CASES = {
     "design --mesh": ["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--out", "{tmp}/model.obj"],
     "masks": ["masks", "5"],
     "masks --scheme loop --rings 2": ["masks", "6", "--scheme", "loop", "--rings", "2"],
+    "masks --scheme doo-sabin": ["masks", "4", "--scheme", "doo-sabin"],
+    "masks --crease": ["masks", "2", "--crease", "3"],
     "charpoly": ["charpoly", "5"],
     "charpoly --scheme loop": ["charpoly", "7", "--scheme", "loop"],
 }
@@ -79,6 +81,8 @@ def _refuse(monkeypatch, where: str) -> None:
     (["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--out", "{tmp}/model.obj"],
      "symdecomp.schemes.meshformats.read_mesh"),
     (["masks", "5"], "symdecomp.cli.masks_cmd.lambda_1_subdominance"),
+    (["masks", "5", "--scheme", "sqrt3"], "symdecomp.analysis.zoo_masks.zoo_masks"),
+    (["masks", "2", "--crease", "3"], "symdecomp.analysis.masks.sharp_masks"),
     (["charpoly", "5"], "symdecomp.analysis.charpoly.closed_form_characteristic_polynomial"),
     (["charpoly", "5", "--rings", "2"], "symdecomp.analysis.charpoly.ring_charpoly_exact"),
 ])

@@ -80,6 +80,31 @@ def test_a_dual_scheme_draws_its_decomposition_written(tmp_path, monkeypatch, ca
     assert _lines(figures[0])[0][1] == [1.0, 1.0]
 
 
+def test_a_crease_draws_its_decomposition_written(tmp_path, monkeypatch, capsys):
+    from symdecomp.output.sector_evaldata import read_sector_json
+
+    figures = _drawn(monkeypatch)
+    out = tmp_path / "crease.json"
+    assert main(["evaldata", "--crease", "--k", "2", "--out", str(out), "--quiet", "--plot", str(tmp_path / "e.png")]) == 0
+    capsys.readouterr()
+    written = {sectors[0]: [complex(float(z.real.mid()), float(z.imag.mid())) for b in d.decomposition for z in b.values]
+               for (_, sectors), d in read_sector_json(out).items()}
+    lines = _lines(figures[0])
+    assert lines == _expected(written) and lines[0] == ([2], [1.0])
+
+
+@pytest.mark.parametrize("argv, drawn", [
+    (["oracle"], ["'limit' row", "shrink rate", "epsilon"]),
+    (["evaldata"], ["eigenvalues of the data written", "one line per rank", "same file as --out"]),
+    (["masks"], ["sharp vertex's sectors", "zoo's neighbourhood", "n-gon's corners"]),
+])
+def test_help_names_what_is_drawn(argv, drawn, capsys):
+    assert main([*argv, "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    plot = text[text.index("--plot FILE"):]
+    assert all(words in plot for words in drawn)
+
+
 def test_nothing_is_gathered_without_plot(tmp_path, monkeypatch, capsys):
     def boom(*args, **kwargs):
         raise AssertionError("gathered without --plot")

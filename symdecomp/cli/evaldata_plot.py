@@ -16,8 +16,6 @@ import json
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from symdecomp.cli.plot_file import PlotTarget, check_plot, write_plot
 from symdecomp.errors import InvalidInputError
 
@@ -35,6 +33,8 @@ def check_evaldata_plot(args: Any) -> PlotTarget | None:
 def piece_values(piece: Any) -> list[complex]:
     """The eigenvalues of one valence of Stam's file as written: its binary piece (``2n + 8`` float64 first), its JSON
     text, or its decimal entry (``"values"``)."""
+    import numpy as np  # only when drawing: the command's parsers and --help load no numpy
+
     data = getattr(piece, "data", None)
     if isinstance(data, bytes):
         size = 2 * int(piece.n) + 8
@@ -46,6 +46,8 @@ def piece_values(piece: Any) -> list[complex]:
 
 def factor_roots(spectrum: Any) -> list[complex]:
     """The roots of the irreducible factors ``(coefficients, multiplicity, eigenvectors)`` written, constant term first."""
+    import numpy as np
+
     roots: list[complex] = []
     for factor, _, _ in spectrum:
         roots += [complex(z) for z in np.roots([float(c) for c in reversed(factor)])] if len(factor) > 1 else []

@@ -170,8 +170,8 @@ def _figure(args, results):
     """``oracle --plot``: the comparisons as printed (:mod:`symdecomp.output.plotting.oracle_chart`)."""
     from symdecomp.output.plotting.oracle_chart import oracle_figure
 
-    seeds = f"seed {args.seed}, {args.levels} levels"
-    return oracle_figure(results, f"{args.scheme.name} against OpenSubdiv, n = {results[0].n}..{results[-1].n} ({seeds})")
+    ns = f"{results[0].n}" if len(results) == 1 else f"{results[0].n}..{results[-1].n}"
+    return oracle_figure(results, f"{args.scheme.name} against OpenSubdiv, n = {ns} (seed {args.seed}, {args.levels} levels)")
 
 
 def _run_mesh(args) -> int:

@@ -212,7 +212,9 @@ nothing else.
                    cross-check's agreement by valence (``plotting.check_chart``), the limit masks' weights on the
                    neighbourhood (``plotting.mask_weights``), the characteristic polynomial's roots
                    (``plotting.charpoly_roots``), a refined mesh over its control mesh (``plotting.refine_figure``),
-                   a designed net with its limit point, normal and tangents (``plotting.design_figure``),
+                   a designed net with its limit point, normal and tangents (``plotting.design_figure``), the
+                   oracle's disagreements level by level against the predicted rates (``plotting.oracle_chart``), the
+                   eigenvalues of written evaluation data, one line per rank (``plotting.evaldata_chart``),
                    matplotlib loaded only when a figure is drawn (``plotting._mpl``); everything about
                    one scheme in one document (``report``: its sections; C1 and the regime for every valence,
                    ``report_every_n``; as LaTeX and PDF,
@@ -220,7 +222,8 @@ nothing else.
 ``cli/``           the symdecomp command, one module per subcommand (``claims_cmd``,
                    ``derive_cmd``, ``spectrum_cmd``, ``charpoly_cmd``, ``oracle_cmd``,
                    ``tune_cmd``, ``masks_cmd``, ``check_cmd``, ``c1_cmd``, ``artifacts_cmd``,
-                   ``evaldata_cmd`` (the files of a sector's and a dual scheme's faces' data, ``evaldata_formats``),
+                   ``evaldata_cmd`` (the files of a sector's and a dual scheme's faces' data, ``evaldata_formats``; the
+                   eigenvalues --plot draws, gathered as they are written, ``evaldata_plot``),
                    ``inspect_cmd`` (its outputs ``inspect_outputs``, its per-vertex table ``inspect_vertices``), ``refine_cmd``,
                    ``design_cmd``, ``report_cmd``; check's rows against the mirror decomposition, ``check_mirror``),
                    the extraordinary element the user named, read and validated once, its kinds and each command's

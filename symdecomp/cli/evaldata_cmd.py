@@ -25,6 +25,9 @@ there are none (:mod:`symdecomp.cli.evaldata_formats`).
 the sector evaluation data (format ``sector-evaldata``, :mod:`symdecomp.output.sector_evaldata`), written by
 :mod:`symdecomp.cli.evaldata_formats`.
 
+``--plot FILE``: the eigenvalues of the data written, one line per rank over the valences (or ``K``)
+(:mod:`symdecomp.cli.evaldata_plot`), gathered from the file's pieces as they are written, and only then.
+
 The element (interior vertex, sector, a zoo scheme's face) is read once (:mod:`symdecomp.cli.element`) and routed by
 :data:`ROUTES_BY_KIND`.
 """
@@ -45,7 +48,9 @@ from symdecomp.cli.common import (
     valence_range,
 )
 from symdecomp.cli.element import named_element, route
+from symdecomp.cli.evaldata_plot import EigenvaluesDrawn, check_evaldata_plot, factor_roots, piece_values
 from symdecomp.cli.files import check_output_file, write_output_file
+from symdecomp.cli.plot_file import add_plot_option
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import EvalDataFileError, InvalidInputError
 from symdecomp.parallel import pool_size
@@ -83,6 +88,10 @@ def register(sub) -> None:
     flag(p, "--json", help="print a JSON summary")
     add_scheme_option(p, zoo=True)  # a scheme of the zoo: its faces' data (symdecomp.cli.evaldata_formats)
     add_quiet_option(p)
+    add_plot_option(p, "the eigenvalues of the data written, one line per rank (the largest distinct eigenvalue, 1; "
+                    "the next, lambda_1; then mu, ...) against the valence n, or against K with --boundary, --corner and "
+                    "--crease (their factors' roots, or the decomposition's), by modulus where one is complex; not the "
+                    "same file as --out")
     p.set_defaults(func=run)
 
 
@@ -130,7 +139,7 @@ def _sharp_kind(args) -> str | None:
     return kinds[0]
 
 
-def _run_sharp(args, kind: str) -> int:
+def _run_sharp(args, kind: str, plot=None) -> int:
     from symdecomp.analysis.subpatch_data import sharp_patch_data
     from symdecomp.output.evaldata import SHARP_FORMAT, sharp_entry, sharp_json_chunks
     from symdecomp.schemes.sector import SharpVertex
@@ -138,19 +147,22 @@ def _run_sharp(args, kind: str) -> int:
     if kind == "crease" or getattr(args.scheme.sharp, "near_edge_centre", None) is not None:  # creases, BLZ's rules
         from symdecomp.cli.evaldata_formats import run_sector
 
-        return run_sector(args, kind)
+        return run_sector(args, kind, plot)
     scheme, ks = args.scheme, args.faces
     check_output_file(args.out)
     show = not args.quiet
     sizes = []
+    drawn = EigenvaluesDrawn(plot)
 
     def entries():
         for k in progress(ks, len(ks), "evaldata", enabled=show):
             data = sharp_patch_data(scheme, getattr(SharpVertex, kind)(k, scheme.lattice))
             sizes.append(data.size)
+            drawn.add(k, factor_roots, data.spectrum)
             yield sharp_entry(data)
 
     size = write_output_file(args.out, sharp_json_chunks(entries(), scheme.name, scheme.lattice.name))
+    drawn.write("K (faces)", f"{scheme.name}, {kind} vertices: eigenvalues of the data written (roots of its factors)")
     if args.json:
         print_json(args, {"out": args.out, "format": SHARP_FORMAT, "scheme": scheme.name, "kind": kind, "k": ks, "bytes": size,
                     "sizes": sizes})
@@ -161,23 +173,24 @@ def _run_sharp(args, kind: str) -> int:
 
 
 def run(args) -> int:
-    """``evaldata``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`)."""
-    return route("evaldata", ROUTES_BY_KIND, named_element(args))(args)
+    """``evaldata``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`), ``--plot`` checked first."""
+    answer = route("evaldata", ROUTES_BY_KIND, named_element(args))
+    return answer(args, check_evaldata_plot(args))
 
 
-def _run_sector(args) -> int:
+def _run_sector(args, plot=None) -> int:
     kind = _sharp_kind(args)  # two kinds, or --n with one: one line
     assert kind is not None  # a sector element names its kind
-    return _run_sharp(args, kind)
+    return _run_sharp(args, kind, plot)
 
 
-def _run_zoo(args) -> int:  # a scheme of the zoo: the data of its extraordinary faces, or why there are none
+def _run_zoo(args, plot=None) -> int:  # a scheme of the zoo: the data of its extraordinary faces, or why there are none
     from symdecomp.cli.evaldata_formats import run_dual
 
-    return run_dual(args)
+    return run_dual(args, plot)
 
 
-def _run_vertex(args) -> int:
+def _run_vertex(args, plot=None) -> int:
     from symdecomp.analysis.eigendata import check_eigendata_cost
     from symdecomp.output.evaldata import binary_chunks, binary_valence, decimal_valence, json_chunks, json_valence_text
 
@@ -194,6 +207,7 @@ def _run_vertex(args) -> int:
     check_output_file(args.out)
     show = not args.quiet
     precs, defective = [], []
+    drawn = EigenvaluesDrawn(plot)
 
     encode = binary_valence if args.format == "binary" else json_valence_text  # in the workers, in parallel
 
@@ -202,6 +216,7 @@ def _run_vertex(args) -> int:
         for prec, r in progress(valences, len(ns), "evaldata", enabled=show):
             precs.append(prec)
             defective.extend([r.n] if r.jordan else [])
+            drawn.add(r.n, piece_values, r)
             yield r
 
     def decimal():
@@ -209,6 +224,7 @@ def _run_vertex(args) -> int:
             prec, entry = decimal_valence(args.scheme, n, digits)
             precs.append(prec)
             defective.extend([n] if entry.get("jordan") else [])
+            drawn.add(n, piece_values, entry)
             yield entry
 
     if args.format == "binary":
@@ -216,6 +232,7 @@ def _run_vertex(args) -> int:
     else:
         entries = rounded() if digits == FLOAT_DIGITS else decimal()
         size = write_output_file(args.out, json_chunks(entries, ns[-1], digits, args.scheme.name))
+    drawn.write("valence n", f"{args.scheme.name}: eigenvalues of the data written, valences 3..{ns[-1]}")
     summary = {"out": args.out, "format": args.format, "nmax": ns[-1], "bytes": size, "precision_bits": max(precs)}
     summary["jordan_valences"] = defective
     summary["estimate"] = {"megabytes": round(memory / 2**20), "seconds": round(seconds, 1)}

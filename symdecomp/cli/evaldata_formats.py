@@ -24,7 +24,9 @@ from collections.abc import Iterator
 
 from symdecomp.cli.common import given, print_json, progress
 from symdecomp.cli.element import sector_vertex
+from symdecomp.cli.evaldata_plot import EigenvaluesDrawn, block_values
 from symdecomp.cli.files import check_output_file, write_output_file
+from symdecomp.cli.plot_file import PlotTarget
 from symdecomp.errors import EvalDataFileError, InvalidInputError, NotApplicableError
 
 __all__ = ["run_sector", "run_dual", "MAX_CREASE_FACES", "MAX_DUAL_SIDES"]
@@ -42,7 +44,7 @@ def _numbers(exact: list[bool]) -> str:
     return "exact rationals" if all(exact) else ("Arb balls" if not any(exact) else "exact rationals and Arb balls")
 
 
-def run_sector(args: argparse.Namespace, kind: str) -> int:
+def run_sector(args: argparse.Namespace, kind: str, plot: PlotTarget | None = None) -> int:
     """Write the sector evaluation data of the vertices ``kind`` with ``args.faces`` faces (module docstring)."""
     from symdecomp.analysis.sector_evaldata import sector_evaldata
     from symdecomp.output.sector_evaldata import SECTOR_FORMAT, sector_entry, sector_json_chunks
@@ -58,15 +60,19 @@ def run_sector(args: argparse.Namespace, kind: str) -> int:
     check_output_file(args.out)
     sizes: list[int] = []
     exact: list[bool] = []
+    drawn = EigenvaluesDrawn(plot)
 
     def entries() -> Iterator[dict[str, object]]:
-        for vertex in progress(vertices, len(vertices), "evaldata", enabled=not args.quiet):
+        for k, vertex in zip(ks, progress(vertices, len(vertices), "evaldata", enabled=not args.quiet)):
             data = sector_evaldata(scheme, vertex)
             sizes.append(data.size)
             exact.append(data.exact)
+            drawn.add(k, block_values, data.decomposition)
             yield sector_entry(data)
 
     size = write_output_file(args.out, sector_json_chunks(entries(), scheme.name, lat.name))
+    drawn.write("K (faces" + (" on each side)" if kind == "crease" else ")"),
+                f"{scheme.name}, {kind} vertices: eigenvalues of the decomposition written")
     if args.json:
         print_json(args, {"out": args.out, "format": SECTOR_FORMAT, "scheme": scheme.name, "kind": kind, "k": ks,
                           "bytes": size, "sizes": sizes, "exact": exact})
@@ -99,7 +105,7 @@ def _check_options(args: argparse.Namespace) -> list[int]:
     return list(args.n)
 
 
-def run_dual(args: argparse.Namespace) -> int:
+def run_dual(args: argparse.Namespace, plot: PlotTarget | None = None) -> int:
     """Write the evaluation data of the zoo scheme ``args.scheme``'s faces of ``args.n`` sides (module docstring)."""
     from symdecomp.analysis.dual_evaldata import dual_evaldata, spline_reason
     from symdecomp.output.dual_evaldata import DUAL_FORMAT, dual_entry, dual_json_chunks
@@ -113,17 +119,20 @@ def run_dual(args: argparse.Namespace) -> int:
     sizes: list[int] = []
     exact: list[bool] = []
     jordan: list[int] = []
+    drawn = EigenvaluesDrawn(plot)
 
     def entries() -> Iterator[dict[str, object]]:
         for n in progress(ns, len(ns), "evaldata", enabled=not args.quiet):
             data = dual_evaldata(scheme, n)
             sizes.append(data.size)
             exact.append(data.exact)
+            drawn.add(n, block_values, data.decomposition)
             if data.decomposition is not None and any(b.eigenvectors < b.multiplicity for b in data.decomposition):
                 jordan.append(n)
             yield dual_entry(data)
 
     size = write_output_file(args.out, dual_json_chunks(entries(), scheme.name, scheme.lattice))
+    drawn.write("n (sides of the face)", f"{scheme.name}: eigenvalues of the decomposition written, faces of n sides")
     if args.json:
         print_json(args, {"out": args.out, "format": DUAL_FORMAT, "scheme": scheme.name, "n": ns, "bytes": size,
                           "sizes": sizes, "exact": exact, "jordan": jordan})

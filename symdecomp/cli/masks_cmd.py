@@ -16,12 +16,15 @@ certified at this valence on the 1-ring (:func:`~symdecomp.verify.c1_spectrum.sp
 balls tie). Otherwise the tangent masks are eigenvectors of ``lambda_1`` but not of the tangent plane: the
 output says why and the exit status is 1.
 
-``--plot FILE`` draws the printed masks on the fan's points (:mod:`symdecomp.output.plotting.mask_weights`) at an
-interior vertex; at a sharp vertex and for a scheme of the zoo it is refused before any work (:data:`PLOT_REFUSALS`).
+``--plot FILE`` draws the printed masks on the neighbourhood's points (:mod:`symdecomp.output.plotting.mask_weights`),
+each where it sits in the regular picture: on the fan of an interior vertex, on a sharp vertex's sectors, on a zoo
+scheme's neighbourhood (a dual scheme's: the centre n-gon's corners and its rings). The target is checked before any
+work; where the command finds no mask, ``--plot`` says so in one line (exit code 2) and writes nothing.
 """
 
 from __future__ import annotations
 
+import math
 import sys
 
 from symdecomp.cli.common import (
@@ -47,7 +50,7 @@ from symdecomp.cli.element import (
     steps_note,
 )
 from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
-from symdecomp.errors import InvalidInputError, SymdecompError
+from symdecomp.errors import SymdecompError
 
 
 def register(sub) -> None:
@@ -72,18 +75,11 @@ def register(sub) -> None:
     add_scheme_option(p, zoo=True)
     add_rings_option(p)
     add_sharp_options(p)
-    add_plot_option(p, "each mask (position, tangent 1, tangent 2) on the neighbourhood's points, each point where it "
-                    "sits in the regular picture of the fan, its weight by colour and size and written beside it (an "
-                    "interior vertex of a 1-ring scheme, any --rings; not a sharp vertex nor a scheme of the zoo)")
+    add_plot_option(p, "each mask (position and the two tangents) on the neighbourhood's points, each point where it "
+                    "sits in the regular picture, its weight by colour and size and written beside it: the fan of an "
+                    "interior vertex (any --rings), a sharp vertex's sectors (--boundary, --corner, --crease, --dart), a "
+                    "scheme of the zoo's neighbourhood (a dual scheme's: the centre n-gon's corners and its rings)")
     p.set_defaults(func=run)
-
-
-#: Why ``--plot`` is refused, by kind of element (:mod:`symdecomp.cli.element`): before any work.
-PLOT_REFUSALS = {
-    "sector": "a boundary, crease, corner or dart vertex's masks are not drawn (only an interior vertex's fan is)",
-    "zoo": "a scheme of the zoo's masks are printed by orbit class, which has no place in the regular picture drawn",
-    "zoo sector": "a scheme of the zoo's masks are printed by orbit class, which has no place in the regular picture drawn",
-}
 
 
 def _panels(args, data, exact_position=None) -> list:
@@ -197,7 +193,34 @@ def _value(mask, digits: int) -> str:
     return acb_text(mask.eigenvalue.ball, digits)
 
 
-def _run_sector(args) -> int:
+def _sector_panels(vertex, masks, digits: int) -> list:
+    """A sharp vertex's printed masks as figure panels: each weight on its point ``(s, u, v)`` of the sectors, its exact
+    value beside it where short."""
+    from symdecomp.output.plotting.mask_weights import MaskPanel, MaskPoint
+
+    labels = vertex.ring_labels(1)  # the matrix order of masks.names
+    panels = []
+    for mask in (masks.position, *masks.tangents):
+        exact = mask.exact()
+        short = [None if exact is None or len(str(e)) > 12 else str(e) for e in (exact or [None] * len(labels))]
+        points = tuple(MaskPoint(name, label, text, e) for name, label, text, e in zip(masks.names, labels, mask.texts(digits), short))
+        panels.append(MaskPanel(mask.name, points))
+    return panels
+
+
+def _draw_sector(args, plot, vertex, masks, value: str) -> None:
+    """``masks K --boundary ... --plot``: the printed masks on the sharp vertex's sectors."""
+    from symdecomp.output.plotting.mask_weights import mask_figure, sector_rays
+
+    if plot is None:
+        return
+    span = float(vertex.angle) if vertex.angle is not None else math.pi / 2 if vertex.corner else None
+    rays = sector_rays(vertex.sectors, vertex.closed, span)
+    title = f"{args.scheme.name}, {describe(vertex)}: limit masks (subdominant eigenvalue {value})"
+    write_plot(plot, lambda: mask_figure(_sector_panels(vertex, masks, args.digits), vertex.faces, title, rays))
+
+
+def _run_sector(args, plot=None) -> int:
     """``symdecomp masks K --boundary`` (and ``--corner``, ``--crease K2``, ``--dart``): print the masks, exit 1 when the
     tangents are not the tangent plane's."""
     from symdecomp.analysis.masks import sharp_masks
@@ -208,6 +231,7 @@ def _run_sector(args) -> int:
     masks = exact_only(args, vertex, lambda: sharp_masks(args.scheme, vertex))
     blocks = _block_names(args.scheme, vertex)
     value, where = acb_text(masks.subdominant.ball, args.digits), blocks.get(masks.subdominant.key, masks.subdominant.part)
+    _draw_sector(args, plot, vertex, masks, value)
     if args.json:
         print_json(args, {"scheme": args.scheme.name, "vertex": describe(vertex), "lattice": vertex.lattice.name,
                     "position": masks.position.as_json(masks.names, args.digits),
@@ -225,11 +249,37 @@ def _run_sector(args) -> int:
     return 0 if masks.tangent_plane else 1
 
 
-def _run_zoo(args) -> int:
+def _zoo_panels(scheme, data: dict) -> list:
+    """A zoo scheme's printed masks as figure panels: the weight of class ``c`` in sector ``s`` (named ``c<c>_<s>``) on
+    its point of the neighbourhood, placed as in the regular picture (around a centre face: the primal face it is)."""
+    from symdecomp.output.plotting.mask_weights import MaskPanel, MaskPoint, neighbourhood_places
+    from symdecomp.schemes.lattice import lattice
+    from symdecomp.schemes.neighbourhood import neighbourhood
+    from symdecomp.schemes.topology import topology_of
+
+    n = data["n"]
+    nb = neighbourhood(lattice(scheme.lattice), n, data["rings"], centred=topology_of(scheme).centre)
+    places = neighbourhood_places(nb)
+    centre = 0 if nb.centre is None else 1
+    panels = []
+    for title, mask in [("position", data["position"]), ("tangent 1", data["tangents"][0]), ("tangent 2", data["tangents"][1])]:
+        points = [MaskPoint("O", (0, 0, 0), mask["O"], place=places[nb.order[0]])] if "O" in mask else []
+        for c, weights in enumerate(mask["classes"].values()):
+            points += [MaskPoint(f"c{c}_{s}", (s, 0, 0), w, place=places[nb.order[centre + c * n + s]])
+                       for s, w in enumerate(weights)]
+        panels.append(MaskPanel(title, tuple(points)))
+    return panels
+
+
+def _run_zoo(args, plot=None) -> int:
     """``masks N --scheme <zoo scheme>``: position and tangent masks by orbit class."""
     from symdecomp.analysis.zoo_masks import zoo_masks
+    from symdecomp.output.plotting.mask_weights import mask_figure
 
     data = zoo_masks(args.scheme, args.n, ring_depth(args), digits=args.digits)
+    title = (f"{data['scheme']}, n = {data['n']}, neighbourhood of depth {data['rings']}: limit masks (subdominant "
+             f"eigenvalue {data['subdominant']})")
+    write_plot(plot, lambda: mask_figure(_zoo_panels(args.scheme, data), data["n"], title))
     if args.json:
         print_json(args, data)
         return 0
@@ -245,16 +295,10 @@ def _run_zoo(args) -> int:
 
 
 def run(args) -> int:
-    """``masks``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`); ``--plot`` is refused first
-    where the masks are not drawn, then checked, before any work."""
-    element = named_element(args)
-    answer = route("masks", ROUTES_BY_KIND, element)
-    if getattr(args, "plot", None) is not None and element.kind in PLOT_REFUSALS:
-        raise InvalidInputError(f"--plot: {PLOT_REFUSALS[element.kind]}")
-    plot = check_plot(args)
-    if plot is not None:  # the kinds left after PLOT_REFUSALS: an interior vertex
-        return _run_vertex(args, plot)
-    return answer(args)
+    """``masks``: the route of the element the arguments name (:data:`ROUTES_BY_KIND`), ``--plot`` checked before any
+    work and handed to it."""
+    answer = route("masks", ROUTES_BY_KIND, named_element(args))
+    return answer(args, check_plot(args))
 
 
 def _run_vertex(args, plot=None) -> int:
@@ -263,6 +307,9 @@ def _run_vertex(args, plot=None) -> int:
     from symdecomp.analysis.tangent import complex_at
 
     certified, why, one_simple = _subdominance(args)
+    if not one_simple and plot is not None:
+        raise SymdecompError(f"--plot: at n = {args.n}, {args.scheme.name}: {why}; no limit position mask is defined, "
+                             "nothing to draw")
     if not one_simple:
         print(f"symdecomp masks: at n = {args.n}, {args.scheme.name}: {why}; no limit position mask is defined, and no "
               "tangent masks", file=sys.stderr)

@@ -8,6 +8,11 @@ crease and corner tags), as ``symdecomp inspect`` computes them, against OpenSub
 (:mod:`symdecomp.verify.oracle_mesh`; darts apart: OpenSubdiv gives them the smooth limit mask). The scheme is the
 mesh's (Catmull-Clark for quads and mixed meshes, after its first exact step; Loop for triangles) unless
 ``--scheme`` names one.
+
+``--plot FILE`` (valences, not ``--kind`` nor ``--mesh``): the printed comparisons drawn
+(:mod:`symdecomp.output.plotting.oracle_chart`): each limit row's disagreement level by level against its predicted
+rate, and the exact rows against double precision's epsilon. The target is checked before any work, and the figure
+written once the comparisons are done: without the OpenSubdiv bridge no file is written.
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ import re
 from fractions import Fraction
 
 from symdecomp.cli.common import LIMITS, Once, add_scheme_option, flag, integer, print_json, progress, valence_range
+from symdecomp.cli.plot_file import add_plot_option, check_plot, write_plot
 from symdecomp.cli.progress import add_quiet_option
 from symdecomp.errors import InvalidInputError, UnavailableError
 
@@ -62,6 +68,9 @@ def register(sub) -> None:
                         '[{"scheme", "kind", "k", "sharpness", "boundary", "creasing", "level", "agrees", '
                         '"checks": [{"name", "disagreement", "comparable", "agrees", "note"}]}]')
     add_quiet_option(p)
+    add_plot_option(p, "the comparisons of --n: for each 'limit' row its largest disagreement at every level on a log "
+                    "axis, one line per valence, beside the predicted shrink rate as a dashed reference line; the 'exact' "
+                    "rows as bars in units of double precision's epsilon, with their tolerance (not with --kind or --mesh)")
     p.set_defaults(func=run)
 
 
@@ -134,6 +143,9 @@ def run(args) -> int:
     if kinds is None and args.sharpness is not None:
         raise InvalidInputError("--sharpness: needs --kind or --boundary (it sets the sharpness of sharp vertices)")
     compare = _comparison(args.scheme)
+    if args.plot is not None and (kinds is not None or args.mesh_file is not None):
+        raise InvalidInputError(f"--plot: draws the comparisons of --n; not with {'--mesh' if args.mesh_file else '--kind'}")
+    plot = check_plot(args)
     load_bridge()  # BridgeUnavailableError: main() prints the one error line and exits with 3
     if args.mesh_file is not None:
         return _run_mesh(args)
@@ -150,7 +162,16 @@ def run(args) -> int:
                 seen = "" if p.observed_rate is None else f" (seen {p.observed_rate:.4f})"
                 flag = "" if p.agrees else "  <-- disagrees"
                 print(f"  {p.name:<30} {p.kind:<5} {p.disagreement:9.2e}{rate}{seen}{flag}")
+    write_plot(plot, lambda: _figure(args, results))
     return 0 if all(r.agrees for r in results) else 1
+
+
+def _figure(args, results):
+    """``oracle --plot``: the comparisons as printed (:mod:`symdecomp.output.plotting.oracle_chart`)."""
+    from symdecomp.output.plotting.oracle_chart import oracle_figure
+
+    ns = f"{results[0].n}" if len(results) == 1 else f"{results[0].n}..{results[-1].n}"
+    return oracle_figure(results, f"{args.scheme.name} against OpenSubdiv, n = {ns} (seed {args.seed}, {args.levels} levels)")
 
 
 def _run_mesh(args) -> int:

@@ -1,5 +1,5 @@
 """``--plot FILE``: the option of the commands that draw what they print or write (``c1``, ``spectrum``,
-``artifacts``, ``check``, ``masks``, ``charpoly``, ``refine``, ``design``).
+``artifacts``, ``check``, ``masks``, ``charpoly``, ``refine``, ``design``, ``oracle``, ``evaldata``).
 
 The format is the file's extension: ``.png``, ``.svg`` or ``.pdf``, written with the same bytes every
 run (:func:`symdecomp.output.plotting._mpl.figure_bytes`: fixed metadata, no dates, a fixed SVG

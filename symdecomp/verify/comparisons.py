@@ -49,6 +49,9 @@ class Prediction:
     observed_rate: float | None
     #: Whether the disagreement is within what the kind allows (see :func:`~symdecomp.verify.oracle.compare_with_opensubdiv`).
     agrees: bool
+    #: For ``"limit"`` rows: the disagreement at each level compared, in order (the last is ``disagreement``); what
+    #: ``oracle --plot`` draws against the predicted rate. Empty for ``"exact"`` rows.
+    errors: tuple[float, ...] = ()
 
     def as_json(self) -> dict:
         def enc(x):
@@ -115,7 +118,8 @@ def limit_row(name, predicted, observed, errors, rate, floor, levels) -> Predict
     """A ``"limit"`` row: it agrees when the last error is at most ``100 rate^levels + 1e-12``."""
     last = errors[-1]
     bound = 100.0 * rate**levels + 1e-12
-    return Prediction(name, "limit", predicted, observed, last, rate, rate_from(errors, floor), last <= bound)
+    return Prediction(name, "limit", predicted, observed, last, rate, rate_from(errors, floor), last <= bound,
+                      tuple(float(e) for e in errors))
 
 
 @dataclass(frozen=True)

@@ -108,19 +108,3 @@ def test_masks_draw_each_weight_at_its_point_of_the_regular_fan(tmp_path, monkey
         offsets, weights = ax.collections[0].get_offsets(), ax.collections[0].get_array()
         for (x, y), w in list(zip(offsets, weights))[1:8]:  # a_0..a_6, on the unit circle
             assert abs(math.hypot(x, y) - 1) < 1e-12 and abs((x, y)[k] - w) < 1e-12
-
-
-@pytest.mark.parametrize("argv, why", [
-    (["masks", "2", "--boundary"], "boundary, crease, corner or dart"),
-    (["masks", "5", "--scheme", "doo-sabin"], "orbit class"),
-])
-def test_masks_plot_refused_where_not_drawn_before_the_work(argv, why, tmp_path, monkeypatch, capsys):
-    def boom(*args, **kwargs):
-        raise AssertionError("the work started")
-
-    monkeypatch.setattr("symdecomp.analysis.masks.sharp_masks", boom)
-    monkeypatch.setattr("symdecomp.analysis.zoo_masks.zoo_masks", boom)
-    assert main([*argv, "--plot", str(tmp_path / "masks.png")]) == 2
-    err = capsys.readouterr().err
-    assert err.count("\n") == 1 and err.startswith("symdecomp: error: --plot: ") and why in err
-    assert not (tmp_path / "masks.png").exists()

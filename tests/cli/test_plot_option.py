@@ -30,6 +30,8 @@ CASES = {
     "masks --scheme loop --rings 2": ["masks", "6", "--scheme", "loop", "--rings", "2"],
     "charpoly": ["charpoly", "5"],
     "charpoly --scheme loop": ["charpoly", "7", "--scheme", "loop"],
+    "evaldata": ["evaldata", "--n", "3:4", "--out", "{tmp}/stam.bin", "--quiet"],
+    "evaldata --boundary": ["evaldata", "--boundary", "--k", "1:2", "--out", "{tmp}/sharp.json", "--quiet"],
 }
 
 #: How each format's file starts.
@@ -79,7 +81,10 @@ def _refuse(monkeypatch, where: str) -> None:
     (["design", "--mesh", str(MODEL), "--vertex", "11", "--normal", "0,0,1", "--out", "{tmp}/model.obj"],
      "symdecomp.schemes.meshformats.read_mesh"),
     (["masks", "5"], "symdecomp.cli.masks_cmd.lambda_1_subdominance"),
+    (["masks", "5", "--scheme", "sqrt3"], "symdecomp.analysis.zoo_masks.zoo_masks"),
+    (["masks", "2", "--crease", "3"], "symdecomp.analysis.masks.sharp_masks"),
     (["charpoly", "5"], "symdecomp.analysis.charpoly.closed_form_characteristic_polynomial"),
+    (["evaldata", "--n", "3:4", "--out", "{tmp}/stam.bin"], "symdecomp.cli.evaldata_cmd.rounded_eigendata"),
     (["charpoly", "5", "--rings", "2"], "symdecomp.analysis.charpoly.ring_charpoly_exact"),
 ])
 def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypatch, capsys):
@@ -95,7 +100,7 @@ def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypat
     assert main([*argv, "--plot", str(tmp_path / "dir.svg")]) == 2
     assert "is a directory" in capsys.readouterr().err
     assert not (tmp_path / "figure.jpg").exists() and list((tmp_path / "dir.svg").iterdir()) == []
-    assert not list(tmp_path.glob("*.obj"))  # refine and design wrote no mesh
+    assert not list(tmp_path.glob("*.obj")) and not list(tmp_path.glob("*.bin"))  # refine, design, evaldata wrote nothing
 
 
 def test_without_matplotlib_one_line_and_exit_3_before_the_work(tmp_path, monkeypatch, capsys):

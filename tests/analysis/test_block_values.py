@@ -46,6 +46,7 @@ def _same(dense, structural) -> None:
             assert set(hits[0].blocks) == set(d.blocks), d.text
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["cc", "loop"])
 @pytest.mark.parametrize("k", [*range(1, 7), pytest.param(7, marks=SLOW), pytest.param(8, marks=SLOW)])
 def test_structural_equals_dense_for_rational_rules(name, k):

@@ -112,6 +112,7 @@ def _predicted(scheme, n, j):
     return max((complex(sp.N(v, 30)) for v in E.eigenvals(multiple=True)), key=abs).real
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name, n", [("catmull-clark", 5), ("catmull-clark", 8), ("loop", 5), ("loop", 8)])
 def test_exact_refinement_keeps_position_and_normal_and_decays_the_amounts_by_their_eigenvalues(name, n):
     scheme = SCHEMES[name]

@@ -47,6 +47,7 @@ def test_the_sine_block_is_read_from_the_stencils_and_the_identity_vanishes():
         assert all(r == 0 for r in residual) and all(b == 0 for b in boundary)
 
 
+@pytest.mark.slow
 def test_the_sine_polylines_are_eigenvectors_of_the_assembled_matrix():
     """P * (a-part, b-part) = (a-part, b-part) * M(pi j/k), entry by entry, exactly (k = 5, j = 2)."""
     d = sector_decomposition(CC, 5)
@@ -122,6 +123,7 @@ def test_dart_antisymmetric_part_is_the_sine_blocks_at_2_pi_j_over_n():
     assert full(1) == 0
 
 
+@pytest.mark.slow
 def test_threshold_every_k_standard_and_modified():
     cc, lp = first_exceeding(CC), first_exceeding(LOOP)
     assert (cc.first, cc.g, cc.table) == (3, -C / 16, {2: "=", 3: ">"})

@@ -18,6 +18,7 @@ def _no_exponentials(exact: str) -> bool:
     return "exp(" not in exact and "I" not in exact and "**" not in exact and "sqrt(sqrt" not in exact
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [9, 11, 16, 19])
 def test_sqrt3_exact_values_are_cosines(capsys, n) -> None:
     assert main(["spectrum", str(n), "--scheme", "sqrt3", "--json"]) == 0

@@ -114,6 +114,7 @@ def test_doo_sabin_spectrum_is_the_refined_meshs(n):
     assert not left
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", VALENCES)
 def test_doo_sabin_leading_eigenvalues_are_the_centre_faces_symbols(n):
     """The centre face's corners map among themselves: its eigenvalues are ``sum_j w_j zeta^(jk)`` (k = 0, 1, n-1)."""
@@ -157,6 +158,7 @@ def _sqrt3_two_steps_by_hand(n: int) -> np.ndarray:
     return step2 @ step1
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", VALENCES)
 def test_sqrt3_is_analysed_over_two_steps(n):
     engine = zoo_spectrum(sqrt3_stencils(), n, digits=20)

@@ -58,6 +58,7 @@ def test_an_exact_zero_is_shown_as_zero():
     assert zero.text == "0.0" and zero.multiplicity == 9
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [20, 24])
 def test_doo_sabin_s_subdominant_eigenvalue_is_real_where_its_form_has_radicals(n):
     # the neighbourhood the C1 test reads is explicit at every n; its exact 1/2 was an unreduced complex form

@@ -54,6 +54,7 @@ def test_the_structural_blocks_hold_the_explicit_ones(name, n):
                 assert b.overlaps(a) and float(b.rad().abs_upper()) < 1e-30, (name, n, k, a, b)
 
 
+@pytest.mark.slow
 def test_a_centre_family_s_fourier_sum_is_its_symbol():
     st = zoo_structure(load_zoo("doo-sabin"))
     (symbol,) = st.symbols

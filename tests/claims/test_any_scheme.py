@@ -75,6 +75,7 @@ def test_moved_scheme_eq_34_and_prop_5_1_agree_with_its_matrix():
     assert str(sp.N(lam1, 12)) in counterexample and str(sp.N(printed, 12)) in counterexample
 
 
+@pytest.mark.slow
 def test_moved_scheme_eq_39_and_the_n4_finding_agree_with_its_matrix():
     moved = scheme_from_text(MOVED)
     n = 4

@@ -13,6 +13,7 @@ from symdecomp.errors import InvalidInputError
 LABELS = ["Eq. 1", "Eq. 35-37", "Section 5.3: smaller eigenvalues", "Eq. 34"]
 
 
+@pytest.mark.slow
 def test_pool_gives_the_words_and_verdicts_of_the_sequential_run():
     pooled = list(check_claims(LABELS, jobs=2))
     for label, r in zip(LABELS, pooled):

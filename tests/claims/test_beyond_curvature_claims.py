@@ -1,5 +1,6 @@
 """The toolkit's own claims beyond the paper (claims/b1_curvature.py): their order, file, and statuses that flip."""
 
+import pytest
 import sympy as sp
 
 from symdecomp import catmull_clark, loop, loop_warren, symbols
@@ -21,6 +22,7 @@ def test_the_beyond_sections_come_after_the_papers_in_their_own_file():
     assert sorted(["B.2", "B.1", "6", "5.10", "5.2", "2"], key=section_key) == ["2", "5.2", "5.10", "6", "B.1", "B.2"]
 
 
+@pytest.mark.slow
 def test_the_statuses_for_catmull_clark():
     results = [check_claim(label) for label in LABELS]
     # Loop's regime and its hyperbolic cause are proved for every n >= 7, Catmull-Clark's for every n >= 5 (its cause by
@@ -53,6 +55,7 @@ def test_another_printed_statement_is_refuted_and_the_right_one_verified():
     assert b1.check_regimes(loop_warren(), b1.LOOP, (3, 8)).status is Status.REFUTED  # Warren's weight: unbounded at n = 4
 
 
+@pytest.mark.slow
 def test_loops_weight_is_proved_and_warrens_refuted_exactly():
     assert b1._loop_weight(loop()).status is Status.PROVED
     r = b1._loop_weight(loop_warren())

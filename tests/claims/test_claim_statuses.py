@@ -102,6 +102,7 @@ EXPECTED = {
 }
 
 
+@pytest.mark.slow
 def test_the_table_is_the_registry():
     statuses = {c.label: check_claim(c.label).status for c in all_claims()}
     assert statuses == EXPECTED

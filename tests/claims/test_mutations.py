@@ -331,6 +331,7 @@ def _status(label, change, monkeypatch):
     return check_claim(label, scheme(change)).status
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("label, change, status", TABLE, ids=[f"{row[0]} / {row[1] if isinstance(row[1], str) else row[1][2]}" for row in TABLE])
 def test_the_change_gives_the_status(label, change, status, monkeypatch):
     assert _status(label, change, monkeypatch) is status

@@ -367,6 +367,7 @@ def test_complex_tangent_eigenvalues_make_the_ordering_claims_not_applicable(cap
     assert "is not real" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_complex_outer_eigenvalues_are_listed_not_compared():
     r = check_claim("Larger neighbourhoods (after Eq. 51)", _corpus("complex-outer"))
     assert r.status is Status.CORRECTED and "ring 2 adds the eigenvalues 1/16 + sqrt(2)*I/16, 1/16 - sqrt(2)*I/16" in str(r.evidence)

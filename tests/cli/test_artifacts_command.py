@@ -4,6 +4,8 @@ import json
 import subprocess
 import sys
 
+import pytest
+
 from symdecomp.cli import main
 from symdecomp.output.artifact_table import COLUMNS, Column, table
 
@@ -30,6 +32,7 @@ def test_a_column_is_one_entry():
     assert table(rows, [COLUMNS[0], Column("x", lambda r: r["x"])]) == "n   x\n3   a\n10  bcd"
 
 
+@pytest.mark.slow
 def test_bad_valences_are_one_line_and_exit_2():
     for bad in ("2:5", "5:3", "3.0", "x"):
         done = subprocess.run([sys.executable, "-m", "symdecomp", "artifacts", "--n", bad], capture_output=True, text=True)

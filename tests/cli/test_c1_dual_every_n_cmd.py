@@ -40,6 +40,7 @@ def test_doo_sabin_every_n_in_text(monkeypatch, capsys):
                        "n = 3..15")
 
 
+@pytest.mark.slow
 def test_a_variant_that_breaks_dominance_is_refuted_at_the_computed_valence(tmp_path, monkeypatch, capsys):
     """sigma(+-2) = 1/4 + (n - 4)/8 reaches lambda_1 = 1/2 at n = 6: the step says so, the dual test fails there."""
     monkeypatch.setattr(c1_cmd, "ZOO_EVERY_N_CERTIFIED", 7)

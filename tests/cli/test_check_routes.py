@@ -125,6 +125,7 @@ def test_structural_route_that_does_not_apply_falls_back_and_says_so(tmp_path, c
         assert len(err.splitlines()) == 1 and why in err and "Traceback" not in err
 
 
+@pytest.mark.slow
 def test_structural_route_proves_algebraic_centre_weights_exactly(tmp_path, capsys):
     """cos(2 pi/5) in the vertex rule: the dense route needs rational weights (one line, exit 2); the structural
     route compares E_0's characteristic polynomial with the closed forms in Q(zeta_10), and still refutes wrong ones."""
@@ -158,6 +159,7 @@ def test_bounds_and_options_are_refused_in_one_line(capsys, argv, why):
     assert code == 2 and len(err.splitlines()) == 1 and why in err, err
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scheme", [CC, load_scheme(str(CORPUS / "lopsided.toml"))], ids=lambda s: s.name)
 def test_flint_and_mpmath_numeric_routes_agree(scheme):
     for n in (4, 5, 6):

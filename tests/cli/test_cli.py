@@ -4,6 +4,8 @@ import json
 import subprocess
 import sys
 
+import pytest
+
 from symdecomp.cli import main
 
 
@@ -36,6 +38,7 @@ def test_spectrum_json_schema(capsys):
     assert data["eigenvalues"][0] == {"value": "1.0", "multiplicity": 1, "frequencies": [0]}
 
 
+@pytest.mark.slow
 def test_module_entry_point_and_broken_pipe():
     out = subprocess.run([sys.executable, "-m", "symdecomp", "spectrum", "5", "--digits", "8"], capture_output=True, text=True, check=True)
     assert out.stdout.startswith("catmull-clark, valence n = 5: 11 eigenvalues")

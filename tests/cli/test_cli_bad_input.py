@@ -147,6 +147,7 @@ def test_bad_invocation_is_one_line_and_exit_2(argv, word, capsys, tmp_path, mon
     assert not any(tmp_path.iterdir())
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "argv",
     [["spectrum", "5_0"], ["check", "--n", "3:1000000000"], ["derive", "--out", ""], ["claims", "--section", "9.9"]],

@@ -48,6 +48,7 @@ def _design(tmp_path, capsys, option: str, value: str) -> None:
         path.unlink()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("option", ["--elliptic", "--hyperbolic", "--angle"])
 @FAST
 @given(value=_NUMBER)
@@ -96,6 +97,7 @@ def _executor(capsys, address: str) -> None:
     assert scheme in ("tcp", "tls") and 0 < int(rest.rpartition(":")[2]) < 65536
 
 
+@pytest.mark.slow
 @FAST
 @given(address=_ADDRESS)
 def test_fuzzed_executor_addresses(capsys, address):

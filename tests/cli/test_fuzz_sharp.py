@@ -105,6 +105,7 @@ def _file(text: str) -> str:
     return str(path)
 
 
+@pytest.mark.slow
 @FAST
 @given(text=sharp_section(), argv=command(3))
 def test_sharp_sections_end_with_one_line_or_an_answer(text, argv, capsys):

@@ -167,6 +167,7 @@ def test_a_report_on_free_parameters_is_refused_before_any_section():
     assert check_values(scheme, (scheme_section, shape_section)) is None  # these say "not applicable" themselves
 
 
+@pytest.mark.slow
 def test_a_report_onto_a_fifo_without_a_reader_is_refused_before_the_work(tmp_path):
     fifo = tmp_path / "report.html"
     os.mkfifo(fifo)

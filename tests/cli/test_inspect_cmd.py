@@ -243,6 +243,7 @@ def test_artifact_indicators_not_applicable_say_why_once(capsys):
     assert lines[-1] == f"artifact indicators n/a at valence 3, 5, 6: {exc.value}"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(LEFT_OUT))
 def test_without_strict_the_rest_is_analysed_and_what_was_left_out_is_listed(tmp_path, name):
     """Issue 31: a mesh with bad elements is analysed around them, the elements listed in --json, exit status 1."""

@@ -198,6 +198,7 @@ def test_every_bound_has_a_case():
     assert not set(CASES) & set(FILE_CASES)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("key", sorted(CASES) + sorted(FILE_CASES))
 def test_each_bound_is_enforced_at_once(key, capsys, tmp_path):
     start = time.monotonic()

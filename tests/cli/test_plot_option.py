@@ -38,6 +38,7 @@ CASES = {
 MAGIC = {"png": b"\x89PNG\r\n\x1a\n", "svg": b"<?xml", "pdf": b"%PDF-"}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("fmt", ["png", "svg"])
 @pytest.mark.parametrize("argv", CASES.values(), ids=CASES.keys())
 def test_two_runs_draw_the_same_bytes(argv, fmt, tmp_path, capsys):

@@ -33,6 +33,7 @@ CASES = [(scheme, kind, k) for scheme in ("catmull-clark", "loop") for kind, k i
          [("boundary", 1), ("boundary", 4), ("boundary", 7), ("corner", 3), ("crease", 2), ("dart", 4)]]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scheme, kind, k", CASES)
 def test_the_printed_eigenvalues_multiply_to_the_determinant_of_the_refined_matrix(capsys, scheme, kind, k):
     argv = ["spectrum", str(k), "--scheme", scheme, "--json", "--digits", "30"] + (["--crease", "3"] if kind == "crease" else [f"--{kind}"])

@@ -32,6 +32,7 @@ def test_spectrum_json_is_the_engines(capsys):
     assert out["command"] == "spectrum" and out["eigenvalues"] == expected["eigenvalues"] and out["size"] == 20
 
 
+@pytest.mark.slow
 def test_spectrum_text_says_two_steps(capsys):
     assert main(["spectrum", "5", "--scheme", "sqrt3"]) == 0
     assert "over 2 steps" in capsys.readouterr().out

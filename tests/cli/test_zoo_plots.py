@@ -55,6 +55,7 @@ def _twice(argv: list[str], path, capsys) -> bytes:
     return out[0]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("fmt", ["png", "svg"])
 def test_spectrum_plot_draws_every_family_the_same_bytes(schemes, fmt, tmp_path, capsys):
     for scheme in schemes:
@@ -103,6 +104,7 @@ def test_a_bad_target_is_refused_before_the_work(argv, work, tmp_path, monkeypat
                                        ".svg or .pdf (the format of the figure)\n")
 
 
+@pytest.mark.slow
 def test_check_and_artifacts_plot_for_the_zoo(tmp_path, capsys):
     """``check --certify --plot`` (the certified chart: distinct eigenvalues proved per valence) and ``artifacts --plot``
     (the regime chart; the zoo's rows give lambda_1^2 exact) draw as for catmull-clark, the same bytes twice."""

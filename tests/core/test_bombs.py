@@ -267,6 +267,7 @@ def _run_bomb(tmp_path, k: int, text: str) -> None:
     assert out.stderr.count("\n") == 1 and "Traceback" not in out.stderr and out.stdout == ""
 
 
+@pytest.mark.slow
 def test_a_bomb_through_the_command_line_under_a_memory_limit(tmp_path):
     control = _limited(["spectrum", "5"], tmp_path)  # the limit leaves room for the command itself
     assert control.returncode == 0, control.stderr

@@ -289,6 +289,7 @@ def _interrupt(command, signum, tmp_path):
             proc.wait()
 
 
+@pytest.mark.slow
 @linux
 @needs_two_cpus
 @pytest.mark.parametrize("command, signum", [("evaldata", signal.SIGTERM), ("check", signal.SIGINT)])
@@ -317,6 +318,7 @@ def test_the_workers_of_a_killed_command_die_within_a_second_or_two(command, tmp
     assert _gone_within(processes, 3) == []
 
 
+@pytest.mark.slow
 @linux
 @needs_two_cpus
 def test_a_killed_program_leaves_no_temporary_file(tmp_path):

@@ -86,6 +86,7 @@ def test_other_objects_are_refused_in_one_line():
         ashtml({})
 
 
+@pytest.mark.slow
 def test_an_executed_notebook_shows_the_tables():
     nbformat = pytest.importorskip("nbformat")
     nbclient = pytest.importorskip("nbclient")

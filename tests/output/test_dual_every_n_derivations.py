@@ -50,6 +50,7 @@ def test_doo_sabin_is_typeset_c1_for_every_n_from_the_proof():
     assert f"There are {total} coefficients" in tex and f"{total} with 0 real roots" in tex
 
 
+@pytest.mark.slow
 def test_the_shown_coefficients_are_positive_on_the_interval():
     """J_0.. as typeset are polynomials in t, positive at the interval's ends and with no root inside (Sturm)."""
     from symdecomp.algebra.interval_signs import count_roots
@@ -67,6 +68,7 @@ def test_the_shown_coefficients_are_positive_on_the_interval():
         assert expr.subs(t, 1) > 0 and expr.subs(t, low) > 0 and count_roots(poly, low, 1) == 0
 
 
+@pytest.mark.slow
 def test_a_variant_that_fails_dominance_gets_the_failing_statement():
     """sigma(+-2) reaches lambda_1 = 1/2 at n = 6 (computed): not C1 there, and the failed step in the verify layer's words."""
     s = stencil_scheme_from_text(variant("(m - 4)*cos(4*pi*j/m)/(4*m)"))

@@ -199,6 +199,7 @@ def test_digits_below_a_double_are_refused(tmp_path, capsys):
     assert "--digits" in err and ">= 17" in err and len(err.strip().splitlines()) == 1
 
 
+@pytest.mark.slow
 def test_the_memory_estimate_is_not_below_the_measured_peak(tmp_path):
     """The estimate bounds what a run takes (peak resident memory of the command, measured) without being wild.
 

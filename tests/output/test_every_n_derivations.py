@@ -52,6 +52,7 @@ def document() -> str:
     return every_n_files()[EVERY_N_FILE]
 
 
+@pytest.mark.slow
 def test_the_committed_file_is_the_generated_one_and_main_inputs_it(document):
     """Drift: regenerating gives the committed bytes (`python -m symdecomp derive`); main.tex inputs it after the claims."""
     assert (ROOT / "derivations" / EVERY_N_FILE).read_text(encoding="utf-8") == document
@@ -92,6 +93,7 @@ def test_the_formulas_are_sympys_printing_of_the_computed_objects(document, name
     assert not re.search(r"(?<![\\\w])lambda_1|sqrt\(|\*\*", section)  # no ASCII math in the typeset proof
 
 
+@pytest.mark.slow
 def test_a_scheme_whose_c1_fails_from_n_10_gets_its_exact_threshold():
     """tests/corpus/tuned-at-ev.toml: C1 certified at 3..9, fails at every n >= 10 (the proof's fails-from step)."""
     scheme = load_scheme(str(CORPUS / "tuned-at-ev.toml"))

@@ -193,6 +193,7 @@ def test_status_and_scope_of_a_verified_claim():
     assert "\\status{verified}" in tex and "$n = 3, \\dots, 64$" in tex
 
 
+@pytest.mark.slow
 def test_the_document_mirrors_the_papers_sections_and_is_deterministic():
     pairs = stress_pairs()
     files = derivation_files(pairs)
@@ -210,6 +211,7 @@ def test_the_document_mirrors_the_papers_sections_and_is_deterministic():
     assert "\\claimheading{claim:proposition-5-9}{Proposition~5.9}" in files["section-5-1.tex"]
 
 
+@pytest.mark.slow
 def test_the_bytes_do_not_depend_on_the_hash_seed(tmp_path):
     """Printing order comes from sympy's sort keys, not from set or dict iteration order."""
     script = (
@@ -319,6 +321,7 @@ def _overfull(log: str) -> list[str]:
             if float(m.group(1)) > OVERFULL_TOLERANCE_PT]
 
 
+@pytest.mark.slow
 @needs_tex
 def test_the_stress_document_compiles_and_nothing_runs_past_the_margin(tmp_path):
     for name, text in derivation_files(stress_pairs()).items():

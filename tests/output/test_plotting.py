@@ -32,6 +32,7 @@ def _assert_labelled(fig):
             assert ax.get_zlabel(), f"3-D axes {ax.get_title()!r} has no z label"
 
 
+@pytest.mark.slow
 def test_invariant_ratios_exact_and_closed_form_agree():
     valences = range(3, 11)
     exact = np.array(tplots.invariant_ratios(CC, valences))

@@ -150,6 +150,7 @@ def hostile_report():
     return build_report(hostile, [3], sections=(scheme_section, c1_section, figures_section))
 
 
+@pytest.mark.slow
 def test_hostile_name_is_text_in_latex(hostile_report):
     tex, figures = report_latex(hostile_report)
     assert "\\input{" not in tex and "\\end{document} %" not in tex
@@ -165,6 +166,7 @@ def test_hostile_name_is_text_in_html(hostile_report):
     assert page.count("<!--") == page.count("-->")
 
 
+@pytest.mark.slow
 def test_html_twice_the_same():
     """Two builds, fresh figures each time: the same bytes (no random SVG ids, no dates)."""
     first = build_report(sd.loop(), [3], sections=(scheme_section, shape_section, figures_section))

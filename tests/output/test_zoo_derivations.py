@@ -36,6 +36,7 @@ def _corner_symbol():
     return term, symbol
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("m", [3, 4, 5, 6, 7])
 def test_doo_sabins_symbol_is_the_circulants_eigenvalue_at_each_face_size(m):
     """The closed form in m against the circulant of the corner weights, summed exactly at each m and frequency."""
@@ -47,6 +48,7 @@ def test_doo_sabins_symbol_is_the_circulants_eigenvalue_at_each_face_size(m):
     assert (symbol.at[0], symbol.at[1], symbol.at[-1], symbol.otherwise) == (1, sp.Rational(1, 2), sp.Rational(1, 2), sp.Rational(1, 4))
 
 
+@pytest.mark.slow
 def test_doo_sabins_corner_block_entry_is_the_symbol():
     """The corners of the n-gon are one orbit: the block's corner entry at omega = zeta^k is the rule's symbol."""
     _, symbol = _corner_symbol()
@@ -111,6 +113,7 @@ def test_the_document_has_one_section_per_shipped_family():
     assert committed.count("\\section{") == len(ZOO_FILES)
 
 
+@pytest.mark.slow
 def test_the_committed_zoo_document_is_what_derive_writes():
     """The file the byte-for-byte test regenerates (with the claims) is this generator's output."""
     assert (COMMITTED / ZOO_FILE).read_text(encoding="utf-8") == zoo_derivation_files()[ZOO_FILE]

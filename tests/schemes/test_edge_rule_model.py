@@ -55,6 +55,7 @@ def test_the_two_ring_matrix_reads_the_stencils_at_n_and_the_regular_rule_elsewh
     assert any(S[r, :] != R[r, :] for r in inner)  # ... and the 1-ring's are not (n = 4 aside)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [5, 6])
 def test_ring_blocks_spectrum_and_reifs_test_agree(n):
     from symdecomp.verify.c1 import c1_test
@@ -75,6 +76,7 @@ def test_ring_blocks_spectrum_and_reifs_test_agree(n):
         assert min(abs(complex(e) - complex(second.value.mid())) for e in eigs) < 1e-12
 
 
+@pytest.mark.slow
 def test_masks_and_one_ring_suffices_read_the_file():
     from symdecomp.analysis.masks import limit_masks_at
     from symdecomp.claims import Status, check_claim

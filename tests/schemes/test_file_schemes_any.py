@@ -172,6 +172,7 @@ def _matrix_eigenvalues(scheme, n):
         return sorted(values, key=lambda z: (round(float(z.real), 12), round(float(z.imag), 12)))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("text", [WIDE_TOML, WIDE_ASYMMETRIC], ids=["symmetric", "asymmetric"])
 def test_a_wide_quad_file_runs_through_every_command(tmp_path, capsys, text):
     import mpmath

@@ -128,6 +128,7 @@ def check_lenient(case) -> None:
             assert mesh.valence(v) >= 2
 
 
+@pytest.mark.slow
 @settings(max_examples=200, **SETTINGS)
 @given(face_lists())
 def test_lenient_reading_leaves_a_mesh_it_keeps_whole(case):

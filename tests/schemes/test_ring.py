@@ -20,6 +20,7 @@ def random_ring(n, seed, exact=True):
     return OneRing.from_points(g.normal(size=3), g.normal(size=(n, 3)), g.normal(size=(n, 3)))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [3, 4, 5])
 def test_eq24_on_a_random_ring_exactly(n):
     d = one_ring_decomposition(random_ring(n, n))

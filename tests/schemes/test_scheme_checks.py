@@ -45,6 +45,7 @@ def counts(monkeypatch):
     return seen
 
 
+@pytest.mark.slow
 def test_one_c1_run_validates_no_scheme_and_reads_the_rules_once(counts):
     from symdecomp.analysis import characteristic
     from symdecomp.analysis.frequency import ring_blocks

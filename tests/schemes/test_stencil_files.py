@@ -140,6 +140,7 @@ def test_a_rule_for_one_valence_is_affine_there_only():
         sf.stencil_scheme_from_text(head + rule.format("origin = 5\n"), source="s")
 
 
+@pytest.mark.slow
 def test_a_sum_without_a_closed_form_is_checked_valence_by_valence():
     # cos(pi j/n)**2 has no closed sum here: its sum over the ring is n/2 exactly at every n >= 2, checked at each n
     ok = '[[vertex]]\nterms = [{walk = "", weight = "1/2"}, {walk = "next", weight = "cos(pi*j/n)**2/n", over = "ring"}]\n'

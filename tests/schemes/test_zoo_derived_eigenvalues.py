@@ -63,6 +63,7 @@ CASES = [pytest.param(name, n, marks=pytest.mark.slow) if (name, n) == ("modifie
          for name in ("doo-sabin", "midedge", "modified-butterfly") for n in (3, 4, 5, 7, 8) if (name, n) != ("midedge", 3)]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("name", "n"), CASES)
 def test_the_engine_s_subdominant_eigenvalue_is_the_fourier_transform_of_the_file_s_weights(name, n):
     weights = _weights(name, n)
@@ -77,6 +78,7 @@ def test_the_engine_s_subdominant_eigenvalue_is_the_fourier_transform_of_the_fil
         assert any(2 in e.frequencies and e.exact is not None and _equal(e.exact, second) for e in spectrum.eigenvalues)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("name", "n"), CASES)
 def test_the_derived_value_is_the_literature_s_closed_form(name, n):
     """A separate, cited check: the closed form the source gives (``FAMILIES[name].source``) at this valence."""

@@ -72,6 +72,7 @@ def test_the_symbol_is_the_spectrum_of_the_explicit_matrix(n):
     assert set(values) == {sp_.zero, sp_.first, *(v for _, v in sp_.others), *sp.Poly(sp_.outer, x).all_roots()}
 
 
+@pytest.mark.slow
 def test_dominance_flips_at_a_computed_valence_and_the_matrix_agrees():
     """A frequency-2 weight: sigma(+-2) = 1/4 + (n - 4)/8 reaches lambda_1 = 1/2 at n = 6, computed; the matrix agrees."""
     s = scheme("(m - 4)*cos(4*pi*j/m)/(4*m)")
@@ -88,6 +89,7 @@ def test_dominance_flips_at_a_computed_valence_and_the_matrix_agrees():
     assert c1_dual_every_n(s, last=6).failure == 6
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("extra, name, status, text", [
     ("(m - 4)*sin(2*pi*j/m)/(8*m)", "real-distinct", "failed", "are not one real value"),
     ("(m - 4)*cos(2*pi*j/m)/(32*m)", "bounds", "failed", "it fails at n = 36 and at every n after it"),
@@ -118,6 +120,7 @@ def test_a_weight_with_no_symbol_stops_at_per_valence():
     assert "spectral conditions are not proved for every n" in r.summary
 
 
+@pytest.mark.slow
 def test_doo_sabin_is_c1_at_every_n():
     """Peters and Reif's verdict, computed: the spectral conditions for every n (the bounds from n = 16), the dual test
     at n = 3..15, the characteristic map regular and injective for every n >= 16 by exact signs in t: proved."""
@@ -131,6 +134,7 @@ def test_doo_sabin_is_c1_at_every_n():
     assert r.uniform is not None and r.uniform.coefficients == 108 + 8
 
 
+@pytest.mark.slow
 def test_the_map_stays_open_where_the_valences_stop_short_or_lambda_depends_on_n():
     r = c1_dual_every_n(load_zoo("doo-sabin"), last=5)
     assert r.status == "verified" and r.steps[-1].name == "map-open"  # the bounds hold from n = 16: not asked
@@ -152,6 +156,7 @@ def test_a_scheme_whose_regular_part_is_not_biquadratic_is_refused():
         ngon_spectrum(load_zoo("midedge"))
 
 
+@pytest.mark.slow
 def test_the_dual_test_certifies_doo_sabin_where_the_exact_form_of_one_half_is_long():
     """At n = 15 the engine's exact form of lambda_1 = 1/2 is a long sum of roots of unity whose imaginary part sympy
     does not reduce to 0; the matrix is real and lambda_1 strictly dominant, so its conjugate is itself: real (it was
@@ -165,6 +170,7 @@ def test_the_dual_test_certifies_doo_sabin_where_the_exact_form_of_one_half_is_l
     assert r.spectral.subdominant.value.contains(flint.acb(flint.fmpq(1, 2)))
 
 
+@pytest.mark.slow
 def test_the_map_argument_fails_where_lambda_is_below_the_outer_eigenvalues():
     """The same nets solved with lambda = 1/5 < 1/4 (an outer eigenvalue): the Jacobian's first Bezier coefficient is
     not positive (its value at the limit t = 1 is negative), so the map is open; with 1/2 every sign holds."""
@@ -180,6 +186,7 @@ def test_the_map_argument_fails_where_lambda_is_below_the_outer_eigenvalues():
     assert dual_uniform_map(ds, sp.Rational(1, 2), 16).status == "proved"
 
 
+@pytest.mark.slow
 def test_the_eigenvector_for_every_n_is_the_engines_at_a_valence():
     """At n = 20 the engine's characteristic points (its eigenvector, solved numerically per valence) are one complex
     multiple of x_c(omega) omega^s, the eigenvector solved once in omega, at every labelled vertex."""

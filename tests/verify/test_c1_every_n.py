@@ -102,6 +102,7 @@ def test_lambda_one_in_n_is_the_certified_lambda_at_each_valence(scheme, regular
     assert free.parameters and lambda_one(free) is None  # free parameters: no closed form
 
 
+@pytest.mark.slow
 def test_the_command(capsys, tmp_path):
     plot = tmp_path / "every-n.png"
     assert main(["c1", "--every-n", "--scheme", "loop", "--json", "--plot", str(plot)]) == 0

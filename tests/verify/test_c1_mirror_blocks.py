@@ -36,7 +36,7 @@ def _vertices(lattice):
         yield sd.SharpVertex.crease(k, 3, lattice)
 
 
-@pytest.mark.parametrize("name", ["cc", "loop", pytest.param("cc-blz", marks=pytest.mark.slow),
+@pytest.mark.parametrize("name", [pytest.param("cc", marks=pytest.mark.slow), "loop", pytest.param("cc-blz", marks=pytest.mark.slow),
                                   pytest.param("loop-blz", marks=pytest.mark.slow)])
 def test_the_blocks_fail_a_sector_exactly_where_the_dense_test_does_by_the_tangent(name):
     scheme = SCHEMES[name]()
@@ -83,6 +83,7 @@ def test_standard_rules_fail_at_many_faces_with_the_dominant_sine_block(name, ki
     assert r.lambdas == pytest.approx(lam, abs=1e-12)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["cc-blz", "loop-blz"])
 def test_past_map_faces_a_sector_the_blocks_pass_is_undecided_without_the_modes(name, monkeypatch):
     # BLZ's double 1/2: the crease block's mirror-odd tangent and the mirror-even sine block j = 1, one in each part;
@@ -97,6 +98,7 @@ def test_past_map_faces_a_sector_the_blocks_pass_is_undecided_without_the_modes(
     assert "the spectral and tangent conditions hold (blocks)" in r.reason and f"at most {MAP_FACES} faces" in r.reason
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["cc-blz", "loop-blz"])
 def test_the_blocks_spectral_verdict_at_blz_boundaries_is_the_dense_one(name):
     scheme = SCHEMES[name]()

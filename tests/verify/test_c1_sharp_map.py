@@ -46,7 +46,8 @@ def _same(blocks, dense) -> None:
 # decided by the map (least): BLZ's boundaries and creases at k = 2..12; BLZ's corners never (1/2 three times: the crease
 # block's two tangents and sine block 1, undecided by both routes); the standard rules at a few small k only (they fail by
 # the tangent from k = 5 at a boundary)
-@pytest.mark.parametrize("name, kind, least", [("cc-blz", "boundary", 11), ("loop-blz", "boundary", 11),
+@pytest.mark.parametrize("name, kind, least", [pytest.param("cc-blz", "boundary", 11, marks=pytest.mark.slow),
+                                               ("loop-blz", "boundary", 11),
                                                pytest.param("cc-blz", "corner", 0, marks=pytest.mark.slow),
                                                pytest.param("cc-blz", "crease", 11, marks=pytest.mark.slow),
                                                pytest.param("loop-blz", "corner", 0, marks=pytest.mark.slow),
@@ -85,6 +86,7 @@ def test_the_parts_the_blocks_name_hold_eigenvectors_of_the_sector(name):
             assert all((vec[index[mirror_label(lab, k)]] - sign * vec[i]).contains(0) for i, lab in enumerate(sm.labels))
 
 
+@pytest.mark.slow
 def test_blz_is_certified_past_the_dense_tests_faces(monkeypatch):
     # the dense test reads at most 32 faces; the map from the blocks' eigenvectors reaches the sector matrix's limit (the
     # closed-form modes' route, taken from 8 faces on, switched off here), and the modes' map goes past it

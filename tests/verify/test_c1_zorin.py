@@ -63,6 +63,7 @@ def test_the_regular_mask_is_read_from_the_rules_and_reproduces_linear_functions
         assert mask.get(turn(u)) == a
 
 
+@pytest.mark.slow
 def test_the_butterfly_interpolates_and_its_difference_scheme_contracts():
     mask = regular_mask(BUTTERFLY)
     assert {u: a for u, a in mask.items() if u[0] % 2 == 0 and u[1] % 2 == 0} == {(0, 0): 1}
@@ -106,6 +107,7 @@ def test_the_grown_net_is_the_eigenvector_extended_one_level_finer_is_lambda_tim
         assert max(abs(fine.values[q] - lam * net.values[q]).upper() for q in shared) < 1e-25
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [4, 5, 7, 8])
 def test_the_modified_butterfly_is_c1(n):
     r = c1_zoo(BUTTERFLY, n)
@@ -132,6 +134,7 @@ def test_a_shallow_refinement_says_the_bound_did_not_close():
     assert r.verdict is C1Verdict.UNDECIDED and r.reason.startswith("the bound did not close at m = 1: the Jacobian's sign is open")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [3, 5, 7])
 def test_loop_agrees_with_reifs_test(n):
     zorin, reif = c1_zorin_test(as_stencils(loop()), n), c1_test(loop(), n)
@@ -151,6 +154,7 @@ def test_c1_command_json(capsys):
     assert row["verdict"] == "c1" and row["method"] == ZORIN_METHOD and row["subdivision_depth"] == 4
 
 
+@pytest.mark.slow
 def test_a_butterfly_twisted_to_frequency_two_is_not_certified_at_a_shallow_depth():
     r = c1_zorin_test(_twisted(), 7, min_depth=4, max_depth=4)
     assert r.verdict is C1Verdict.UNDECIDED and r.reason.startswith("the bound did not close at m = 4")

@@ -1,5 +1,6 @@
 """The hyperbolic part dominates on fine rings for every n from a valence on (verify/dominance_every_n.py, issue 32)."""
 
+import pytest
 import sympy as sp
 
 from symdecomp import catmull_clark, loop, loop_warren, symbols
@@ -55,6 +56,7 @@ def test_the_claim_is_proved_and_flips_with_the_printed_first_n():
     assert r.status is Status.REFUTED and "n = 7: the statement says neither part" in str(r.counterexample)
 
 
+@pytest.mark.slow
 def test_a_vertex_weight_whose_dominance_changes_late_gets_the_first_valence_where_it_does():
     s = catmull_clark(sp.Rational(3, 2) / n**2 - (n - 4) / (40 * n**2), sp.Rational(1, 4) / n**2)
     assert hyperbolic_dominates_from(s, 5).status == "open"

@@ -22,6 +22,7 @@ def test_the_regular_face_mask_is_derived_and_is_the_centroid():
     assert {p: str(w) for p, w in mask.items()} == {(1, 1): "1/4", (-1, 1): "1/4", (1, -1): "1/4", (-1, -1): "1/4"}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [3, 4, 5, 6])
 def test_the_data_equal_exact_refinement_at_dyadic_parameters(n):
     result = dyadic_check(DOO_SABIN, n, levels=(1, 2, 3))
@@ -45,6 +46,7 @@ def _moved(m, row, exact):
     return out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [4, 5])
 def test_a_moved_weight_fails(n):
     data = dual_evaldata(DOO_SABIN, n)

@@ -55,6 +55,7 @@ def test_the_modes_closed_form_is_blz_s_polyline():
     assert modes.coarse[(1, 0)] == FIELD.one and modes.depth == 0
 
 
+@pytest.mark.slow
 def test_the_standard_rules_have_no_closed_form_modes():
     # lambda_1 is not 1/2 with the standard near-edge rule: only 0 solves the Fourier system (and the blocks fail the
     # tangent condition anyway from k = 5)
@@ -63,6 +64,7 @@ def test_the_standard_rules_have_no_closed_form_modes():
     assert c1_mirror_blocks(sd.catmull_clark(), sd.SharpVertex.boundary(100, "quad")).verdict is C1Verdict.NOT_C1
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", BLZ)
 def test_the_modes_route_reaches_the_null_vector_routes_verdict(name, monkeypatch):
     scheme = load_scheme(name)
@@ -84,6 +86,7 @@ def test_both_sides_of_a_crease_are_certified():
     assert r.verdict is C1Verdict.C1 and r.method == FOURIER_METHOD and r.reason.count("closed-form modes") == 2
 
 
+@pytest.mark.slow
 def test_a_mutated_near_edge_weight_is_neither_a_closed_form_nor_c1():
     # 1/32 more on the edge's far end: the sine block's eigenvalue leaves 1/2, the Fourier system has only 0, and the
     # verdict at 100 faces flips from C1

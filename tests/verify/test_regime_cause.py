@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+import pytest
 import sympy as sp
 
 from symdecomp.schemes.scheme import catmull_clark
@@ -52,6 +53,7 @@ b = "1/(4*n**2)"
 """
 
 
+@pytest.mark.slow
 def test_a_vertex_rule_in_cos_2pi_over_n_is_not_shown_rather_than_a_polynomial_error():
     """q's coefficients are not rational in n, so the signs in n do not apply: ``None`` (not shown), not sympy's
     PolynomialError; the rest of the regime's argument still runs."""

@@ -31,6 +31,7 @@ def _moved_blz(tmp_path):
     return load_scheme(path)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scheme, vertex", [
     (CC, sd.SharpVertex.boundary(1, sd.QUAD)), (CC, sd.SharpVertex.boundary(5, sd.QUAD)),
     (CC, sd.SharpVertex.corner(4, sd.QUAD)), (CC, sd.SharpVertex.crease(3, 5, sd.QUAD)),
@@ -83,6 +84,7 @@ def test_darts_and_semi_sharp_edges_are_out_of_this_routes_reach():
     assert sector_structural.default_route(CC_BLZ, sd.SharpVertex.dart(5, sd.QUAD)) == "charpoly"
 
 
+@pytest.mark.slow
 def test_check_takes_the_dense_route_up_to_16_faces_and_the_structural_one_past(capsys):
     """Faces K + K2: 15, 16 on the dense route, 17, 18 past it."""
     assert main(["check", "--k", "13:16", "--crease", "2", "--certify", "--json", "--quiet", "--jobs", "2"]) == 0

@@ -68,6 +68,7 @@ def _agrees(name: str, n: int):
     return a
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", range(3, 9))
 def test_sqrt3_curvature_by_valence_over_two_steps(n):
     a = _agrees("sqrt3", n)
@@ -105,6 +106,7 @@ def test_a_scheme_that_is_not_a_stencil_scheme_is_refused():
         zoo_artifacts("sqrt3", 3)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["doo-sabin", "sqrt3", "modified-butterfly"])
 def test_a_larger_neighbourhood_adds_nothing_above_mu(name):
     """One ring more only adds eigenvalues of smaller modulus: the regime and mu are those of the smallest neighbourhood."""
@@ -114,6 +116,7 @@ def test_a_larger_neighbourhood_adds_nothing_above_mu(name):
     assert [m.eigenvalue.exact for m in large.mu] == [m.eigenvalue.exact for m in small.mu]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("name", "n"), [("doo-sabin", 10), ("doo-sabin", 16), ("doo-sabin", 20), ("modified-butterfly", 12)])
 def test_the_regime_where_sympy_writes_cosines_as_radicals(name, n):
     """At these valences the blocks' entries hold radicals (cos(pi/8) = sqrt(sqrt(2)/4 + 1/2)): the tie with lambda_1^2

@@ -62,6 +62,7 @@ def test_the_derivation_is_kobbelt_s_closed_form(n):
     assert _zero(zero - lam**2), "Kobbelt's alpha_n makes frequency 0's second eigenvalue lambda_1^2"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", range(4, 11))
 def test_the_regime_by_valence_is_the_derived_one(n):
     lam, zero, two = _derived(n)

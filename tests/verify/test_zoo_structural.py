@@ -15,6 +15,7 @@ from symdecomp.verify.zoo_structural import structural_zoo_certificate
 FAMILIES = ("doo-sabin", "midedge", "sqrt3", "modified-butterfly")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", FAMILIES)
 def test_the_structural_certificate_is_the_explicit_one(name):
     """Beyond the reading, the explicit route (the whole matrix, block circulant entry by entry) and the structural

@@ -119,3 +119,34 @@ def test_a_rule_that_is_loops_only_at_the_regular_valence_has_no_curvature_or_sh
         result = check_claim(label, twist)
         assert result.status is Status.NOT_APPLICABLE and "lambda_1 is complex" in str(result.evidence), label
     assert check_claim("Curvature at the regular valence", twist).status is Status.VERIFIED  # n = 6: Loop's own rules
+
+
+TRIANGLE_WITH_FREE_W = """\
+name = "loop with free w"
+mesh = "triangle"
+parameters = ["w"]
+[edge]
+O = "3/8"
+a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }
+[vertex]
+beta = "w"
+"""
+
+
+def test_a_regime_claim_asks_its_requirements_of_the_scheme_it_reads():
+    """Catmull-Clark's regimes read Catmull-Clark for a triangle scheme: a triangle file with a free parameter gets the
+    verdict Loop gets (once 'not applicable' for parameters the check never reads); Loop's regimes read the file, so
+    they need values. On quads the other way round."""
+    from symdecomp.schemes.files import scheme_from_text
+    from tests.claims.test_one_model import CC_FACE_WITH
+
+    triangle, quad = scheme_from_text(TRIANGLE_WITH_FREE_W), scheme_from_text(CC_FACE_WITH.format(p="P"))
+    assert triangle.parameters and quad.parameters
+    for scheme, other_lattice_claim, reference, own_claim in (
+            (triangle, "Curvature regime: Catmull-Clark", loop(), "Curvature regime: Loop"),
+            (quad, "Curvature regime: Loop", catmull_clark(), "Curvature regime: Catmull-Clark")):
+        got, expected = check_claim(other_lattice_claim, scheme), check_claim(other_lattice_claim, reference)
+        assert got.status is Status.PROVED
+        assert (got.status, str(got.evidence)) == (expected.status, str(expected.evidence))
+        own = check_claim(own_claim, scheme)
+        assert own.status is Status.NOT_APPLICABLE and "has free parameters" in str(own.evidence)

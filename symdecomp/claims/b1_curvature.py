@@ -35,7 +35,7 @@ import sympy as sp
 
 from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
-from symdecomp.claims.applicability import NO_FREE_PARAMETERS, REAL_SUBDOMINANT
+from symdecomp.claims.applicability import MIRROR_SYMMETRIC, NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
 from symdecomp.claims.registry import CheckResult, Requirement, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE, Lattice
@@ -148,10 +148,10 @@ def read_on(requirement: Requirement, *lattices: Lattice) -> Requirement:
 
 
 def real_lambda1_on(*lattices: Lattice) -> Requirement:
-    """:data:`~symdecomp.claims.applicability.REAL_SUBDOMINANT` of each scheme the check reads (:func:`read_on`): the
+    """:data:`~symdecomp.claims.applicability.MIRROR_SYMMETRIC` of each scheme the check reads (:func:`read_on`): the
     regimes compare mu with lambda_1^2, a real number only for a real lambda_1 (a rotating characteristic map has no
     tangent plane, so no curvature or shape to speak of)."""
-    return read_on(REAL_SUBDOMINANT, *lattices)
+    return read_on(MIRROR_SYMMETRIC, *lattices)
 
 
 @claim(

@@ -101,7 +101,8 @@ def test_loops_weight_needs_a_real_lambda_1_and_a_skewed_edge_rule_is_set_aside_
     assert sp.simplify(sp.im(sp.expand_complex(lam1)) + sp.sin(2 * sp.pi / 5) / 8) == 0  # (1/16 - 3/16) sin(2 pi/5)
     result = check_claim("Loop's vertex weight", skew)
     assert result.status is Status.NOT_APPLICABLE and result.counterexample is None
-    assert "omega/16 + 3/8 + 3/(16*omega)" in str(result.evidence) and "lambda_1 is complex" in str(result.evidence)
+    # M(omega) = omega/16 + 3/8 + 3/(16 omega) in c = cos(j pi/n), s = sin(j pi/n): odd in s, so not the same at j and n - j
+    assert "c**2/2 - I*c*s/4 + 1/8" in str(result.evidence) and "the characteristic map rotates" in str(result.evidence)
     mirrored = scheme_from_text(_LOOP_WITH_EDGE_WEIGHTS.format(left="1/8", right="1/8"))
     assert check_claim("Loop's vertex weight", mirrored).status is Status.PROVED
 
@@ -117,7 +118,7 @@ def test_a_rule_that_is_loops_only_at_the_regular_valence_has_no_curvature_or_sh
     assert c1.status is Status.REFUTED and "not real" in str(c1.counterexample)
     for label in ("Curvature regime: Loop", "Loop's vertex weight", "Shape: the valence decides"):
         result = check_claim(label, twist)
-        assert result.status is Status.NOT_APPLICABLE and "lambda_1 is complex" in str(result.evidence), label
+        assert result.status is Status.NOT_APPLICABLE and "the characteristic map rotates" in str(result.evidence), label
     assert check_claim("Curvature at the regular valence", twist).status is Status.VERIFIED  # n = 6: Loop's own rules
 
 

@@ -4,20 +4,22 @@ Each is a :class:`~symdecomp.claims.registry.Requirement`; the registry tests a 
 before its check runs and reports ``not applicable``, with the reason, for a scheme that does not
 meet one (instead of failing inside sympy, or repeating the same guard in every check).
 
-* :data:`MIRROR_SYMMETRIC`: Section 5 writes its closed forms in ``c = cos(j pi/n)``, which needs
-  mirror-symmetric rules (the weight on ``a_{i+k}`` equal to that on ``a_{i-k}`` and so on, so that
-  ``M_j`` depends on ``c`` alone); the reason names the term that breaks it.
+* :data:`MIRROR_SYMMETRIC`: mirror-symmetric rules (the weight on ``a_{i+k}`` equal to that on ``a_{i-k}`` and so
+  on), on either lattice: the reflection ``i -> -i`` of the 1-ring is ``j -> n - j`` on the frequencies, ``omega ->
+  1/omega`` in the frequency block ``M(omega)`` (:func:`~symdecomp.analysis.frequency.one_ring_matrices`), ``s -> -s``
+  in ``c = cos(j pi/n)``, ``s = sin(j pi/n)``. Two kinds of check need it, and it is one requirement for both:
+  Section 5's closed forms in ``c`` alone (``M_j``'s trace and determinant free of ``s``), and the checks that compare
+  ``lambda_1`` with real numbers (``lambda_1^2`` in the curvature regimes: the frequencies ``j`` and ``n - j`` must
+  carry the same eigenvalues, ``M(omega)``'s characteristic polynomial real). Both are the same computation: the
+  trace and the determinant of ``M(omega)`` written in ``c`` and ``s`` (:func:`~symdecomp.analysis.frequency.laurent_to_cos`)
+  have no odd part in ``s``, which is their invariance under ``omega -> 1/omega``; the reason names the term that
+  has one.
 * :data:`COSINE_ONLY`: some checks order the eigenvalues of ``M_j`` or evaluate them in intervals from
   their closed forms in ``c`` alone, which needs edge and face rules that do not depend on the valence
   ``n`` (otherwise ``n`` enters ``M_j`` beside ``c``); the reason names the term.
 * :data:`REAL_TANGENT_SPECTRUM`: checks that order the two eigenvalues of ``M_j`` (the dominant one, the
   other one) need them real at every frequency: the discriminant of ``M_j`` nonnegative for every ``c`` in
   ``[-1, 1]`` (exactly: no root of odd multiplicity inside, and positive somewhere).
-* :data:`REAL_SUBDOMINANT` (:func:`rotating_subdominant`): checks that compare ``lambda_1`` (the eigenvalue of the
-  frequency-1 block ``M(omega)``, on either lattice) with real numbers, as ``lambda_1^2``, need it real: rules whose
-  ``M(omega)`` has the same trace and determinant at ``omega`` and ``1/omega`` (mirror symmetric), otherwise the
-  frequencies ``j`` and ``n - j`` carry complex conjugate eigenvalues (the characteristic map rotates); the reason
-  names the term that changes.
 * :data:`FACE_NEIGHBOURS`: statements about the ``(2n+1)``-point 1-ring of a quad mesh (the matrix of
   Eq. 43, ``M_j`` of order 2) need a face rule.
 * :data:`NO_FREE_PARAMETERS`: checks that compute with the scheme's numbers (exact matrices at a
@@ -39,7 +41,7 @@ from __future__ import annotations
 import sympy as sp
 
 from symdecomp.algebra.valence_signs import sign_on_interval
-from symdecomp.analysis.frequency import one_ring_matrices
+from symdecomp.analysis.frequency import laurent_to_cos, one_ring_matrices
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.claims.registry import Requirement, Text, Verbatim
 from symdecomp.errors import InvalidSchemeError
@@ -51,11 +53,9 @@ from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.schemes.topology import topology_of
 from symdecomp.symbols import cos_jtheta as C
 from symdecomp.symbols import n as N
-from symdecomp.symbols import omega as OMEGA
 from symdecomp.symbols import sin_jtheta as SIN
 
 __all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH", "closed_form_obstacle",
-           "REAL_SUBDOMINANT", "rotating_subdominant",
            "QUAD_MESHES", "PRIMAL_VERTEX", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS"]
 
 
@@ -66,11 +66,18 @@ def _block_term(scheme: Scheme, symbol) -> tuple[str, sp.Expr] | None:
 
 
 def _mirror_asymmetry(scheme: Scheme) -> Text | None:
-    """The trace or determinant of ``M_j`` when it depends on ``sin(j pi/n)``, else ``None``."""
-    if (term := _block_term(scheme, SIN)) is None:
-        return None
-    return Text("the closed forms of Section 5 are written in c = cos(j pi/n) and need mirror-symmetric rules; for this "
-                "scheme the ", term[0], " of M_j is ", term[1], " (s = sin(j pi/n))")
+    """The trace or determinant of the frequency block ``M_j``, in ``c`` and ``s``, when it has a part odd in
+    ``s = sin(j pi/n)`` (not the same at ``omega`` and ``1/omega``), else ``None``; either lattice."""
+    M, _ = one_ring_matrices(scheme)
+    for name, term in (("trace", M.trace()), ("determinant", M.det())):
+        in_c = laurent_to_cos(sp.expand(term))
+        if not identically_zero(sp.Poly(in_c, SIN).coeff_monomial(SIN)):
+            return Text("the rules are not mirror symmetric: for the scheme ", Verbatim(repr(scheme.name)), " the ", name,
+                        " of the frequency block M_j is ", in_c, " (s = sin(j pi/n)), not the same at the frequencies j and "
+                        "n - j: Section 5's closed forms need M_j in c = cos(j pi/n) alone, and a comparison of lambda_1 "
+                        "with real numbers needs M_j and M_(n-j) to have the same eigenvalues (they are conjugate: the "
+                        "characteristic map rotates)")
+    return None
 
 
 def _valence_in_blocks(scheme: Scheme) -> Text | None:
@@ -92,20 +99,6 @@ def _complex_tangent_spectrum(scheme: Scheme) -> Text | None:
         return None
     return Text("the check orders the two eigenvalues of M_j, and for this scheme they are complex at some frequencies: the "
                 "discriminant of M_j is ", d, ", negative for some c = cos(j pi/n) in [-1, 1]")
-
-
-def rotating_subdominant(scheme: Scheme) -> Text | None:
-    """Why ``lambda_1`` of ``scheme`` is complex (rules not mirror symmetric), or ``None``; either lattice.
-
-    The frequency-1 block ``M(omega)`` (:func:`~symdecomp.analysis.frequency.one_ring_matrices`) of a mirror-symmetric
-    scheme has the same trace and determinant at ``omega`` and ``1/omega``; otherwise the term that changes is named."""
-    M, _ = one_ring_matrices(scheme)
-    for name, term in (("trace", sp.expand(M.trace())), ("determinant", sp.expand(M.det()))):
-        if not identically_zero(term - term.subs(OMEGA, 1 / OMEGA)):
-            return Text("the check compares lambda_1 with real numbers, which needs mirror-symmetric rules; for the scheme ",
-                        Verbatim(repr(scheme.name)), " the ", name, " of the frequency-1 block M(omega) is ", term,
-                        ", not the same at omega and 1/omega, so lambda_1 is complex")
-    return None
 
 
 def _no_face_rule(scheme: Scheme) -> str | None:
@@ -133,14 +126,12 @@ def _not_mesh_rules(scheme: Scheme) -> str | None:
     return None
 
 
-#: Mirror-symmetric rules: ``M_j`` depends on ``c = cos(j pi/n)`` alone (Section 5's closed forms).
+#: Mirror-symmetric rules: ``M_j`` depends on ``c = cos(j pi/n)`` alone (Section 5's closed forms; a real ``lambda_1``).
 MIRROR_SYMMETRIC = Requirement("mirror-symmetric rules", _mirror_asymmetry)
 #: Edge and face rules free of ``n``: ``M_j`` depends on ``c`` alone (checks that order or bound its eigenvalues).
 COSINE_ONLY = Requirement("edge and face rules that do not depend on n", _valence_in_blocks)
 #: Real eigenvalues of ``M_j`` at every frequency (checks that order them).
 REAL_TANGENT_SPECTRUM = Requirement("real eigenvalues of M_j", _complex_tangent_spectrum)
-#: A real ``lambda_1``: the frequency-1 block's trace and determinant the same at ``omega`` and ``1/omega``.
-REAL_SUBDOMINANT = Requirement("mirror-symmetric rules (a real lambda_1)", rotating_subdominant)
 #: A face rule: the quad 1-ring ``(O, a_i, b_i)`` of the paper.
 FACE_NEIGHBOURS = Requirement("a quad mesh (face neighbours b_i)", _no_face_rule)
 #: No free parameters: every weight is a number at each valence.

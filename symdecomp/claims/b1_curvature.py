@@ -16,6 +16,15 @@ regimes by valence as those works describe them (flat spots at low valence for C
 from the hyperbolic part at high valence, Loop's vertex weight chosen so that the elliptic eigenvalue is
 ``lambda_1^2``), and each check computes them from the scheme's rules, so a different scheme or a
 different statement changes the status.
+
+What a statement about one scheme by name is about: "Curvature regime: Catmull-Clark" states the regimes of a
+scheme on quad meshes and "Curvature regime: Loop" (and "Loop's vertex weight") those of one on triangle meshes. A
+scheme on that lattice stands for the named one (its own rules are checked against the statement, as the paper's
+claims about Catmull-Clark take the quad scheme given); a scheme on another lattice has nothing to put there, so the
+check reads the lattice's reference scheme (:meth:`~symdecomp.schemes.lattice.Lattice.own_or_reference`), and the
+verdict is the named scheme's. What a check needs is therefore asked of the scheme it reads (:func:`read_on`): a
+triangle file with free parameters gets Catmull-Clark's verdict for Catmull-Clark's regimes, as every triangle file
+does, and "not applicable" for Loop's.
 """
 
 from __future__ import annotations
@@ -26,7 +35,7 @@ import sympy as sp
 
 from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
-from symdecomp.claims.applicability import NO_FREE_PARAMETERS, REAL_SUBDOMINANT, rotating_subdominant
+from symdecomp.claims.applicability import MIRROR_SYMMETRIC, NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
 from symdecomp.claims.registry import CheckResult, Requirement, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE, Lattice
@@ -130,12 +139,19 @@ def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
     return wanted.own_or_reference(scheme)
 
 
+def read_on(requirement: Requirement, *lattices: Lattice) -> Requirement:
+    """``requirement`` asked of each scheme the check reads (the scheme on its own lattice, the reference scheme on the
+    others, :func:`_on`), never of a scheme it does not read: a triangle file's free parameters do not stop a check of
+    Catmull-Clark's regimes, which reads Catmull-Clark for it."""
+    return Requirement(requirement.name,
+                       lambda scheme: next(filter(None, (requirement.unmet(_on(scheme, x)) for x in lattices)), None))
+
+
 def real_lambda1_on(*lattices: Lattice) -> Requirement:
-    """:data:`~symdecomp.claims.applicability.REAL_SUBDOMINANT` of each scheme the check reads (the scheme on its own
-    lattice, the reference scheme on the others, :func:`_on`): the regimes compare mu with lambda_1^2, a real number only
-    for a real lambda_1 (a rotating characteristic map has no tangent plane, so no curvature or shape to speak of)."""
-    return Requirement(REAL_SUBDOMINANT.name,
-                       lambda scheme: next(filter(None, (rotating_subdominant(_on(scheme, x)) for x in lattices)), None))
+    """:data:`~symdecomp.claims.applicability.MIRROR_SYMMETRIC` of each scheme the check reads (:func:`read_on`): the
+    regimes compare mu with lambda_1^2, a real number only for a real lambda_1 (a rotating characteristic map has no
+    tangent plane, so no curvature or shape to speak of)."""
+    return read_on(MIRROR_SYMMETRIC, *lattices)
 
 
 @claim(
@@ -145,7 +161,7 @@ def real_lambda1_on(*lattices: Lattice) -> Requirement:
     statement=r"For Catmull-Clark surfaces the curvature at an extraordinary vertex tends to zero at $n = 3$ "
     r"($|\mu| < \lambda_1^2$, $\mu$ elliptic), is bounded at $n = 4$, and is unbounded for every $n \ge 5$, caused by "
     r"the hyperbolic (frequency 2) eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004); Peters, Reif, CAGD 21 (2004)).",
-    requires=(NO_FREE_PARAMETERS, real_lambda1_on(QUAD)),
+    requires=(read_on(NO_FREE_PARAMETERS, QUAD), real_lambda1_on(QUAD)),
 )
 def _catmull_clark(scheme: Scheme) -> CheckResult:
     return check_regimes(_on(scheme, QUAD), CATMULL_CLARK)
@@ -159,7 +175,7 @@ def _catmull_clark(scheme: Scheme) -> CheckResult:
     r"eigenvalue $1/8$ exceeds $\lambda_1^2 = 1/16$), bounded at $n = 4, 5$ (Loop's vertex weight puts the elliptic "
     r"eigenvalue at $\lambda_1^2$) and at $n = 6$, and unbounded for every $n \ge 7$, caused by the hyperbolic "
     r"eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004)).",
-    requires=(NO_FREE_PARAMETERS, real_lambda1_on(TRIANGLE)),
+    requires=(read_on(NO_FREE_PARAMETERS, TRIANGLE), real_lambda1_on(TRIANGLE)),
 )
 def _loop(scheme: Scheme) -> CheckResult:
     return check_regimes(_on(scheme, TRIANGLE), LOOP)
@@ -295,7 +311,7 @@ def _argument(first: int, text: str) -> tuple[Step, ...]:
     r"$n \ge 5$ and for Loop at every $n \ge 7$, so the hyperbolic part dominates on fine rings even for convex input; "
     r"for Loop at $n = 4, 5$ the elliptic part dominates, and the two tie at the regular valence (Karciauskas, Peters, "
     r"Reif, CAGD 21 (2004)).",
-    requires=(NO_FREE_PARAMETERS, real_lambda1_on(QUAD, TRIANGLE)),
+    requires=(read_on(NO_FREE_PARAMETERS, QUAD, TRIANGLE), real_lambda1_on(QUAD, TRIANGLE)),
 )
 def _shape(scheme: Scheme) -> CheckResult:
     quad = check_dominance(_on(scheme, QUAD), QUAD.select(DOMINANCE, "the printed dominance"))

@@ -30,8 +30,8 @@ exact (:func:`erratum_scope`).
 
 Every claim is checked *for a scheme* (:func:`check_claim`, default Catmull-Clark): the printed
 statement of the paper is one input, the scheme the other, and the status follows from both.
-Statements that do not involve the scheme (Section 2, the CB-matrix algebra of Section 6) have the
-same status for every scheme.
+Statements that do not involve the scheme (:attr:`Claim.involves_no_scheme`: Section 2, the CB-matrix algebra of
+Section 6) have the same status for every scheme, of the zoo too.
 
 Registering a claim (later issues add modules ``symdecomp/claims/s*.py``, and ``b*.py`` for the toolkit's
 own claims beyond the paper, sections ``"B.<k>"`` after the paper's: :func:`section_key`; they are found
@@ -370,6 +370,13 @@ class Claim:
     parameter: str = "n"
     #: The module that registers it (a section's claims may come from several; see :meth:`sort_key`).
     module: str = ""
+    #: ``False`` when the check never reads the scheme it is given (``reads_scheme=False``; tested on a scheme that fails on any use).
+    reads_scheme: bool = True
+
+    @property
+    def involves_no_scheme(self) -> bool:
+        """The check reads no scheme and requires none (as a statement about the quad 1-ring would): one verdict for every scheme."""
+        return not self.reads_scheme and not self.requires
 
     def sort_key(self):
         """Paper order: by section (:func:`section_key`), then by the module's place in the canonical load order
@@ -383,15 +390,15 @@ REGISTRY: dict[str, Claim] = {}
 
 
 def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (),
-          parameter: str = "n") -> Callable[[Callable[[Scheme], CheckResult]], Callable[[Scheme], CheckResult]]:
-    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``."""
+          parameter: str = "n", reads_scheme: bool = True) -> Callable[[Callable[[Scheme], CheckResult]], Callable[[Scheme], CheckResult]]:
+    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires`` (:attr:`Claim.reads_scheme`)."""
 
     def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:
         if label in REGISTRY:
             raise ValueError(f"claim {label!r} is registered twice")
         module = check.__module__
         order = sum(1 for c in REGISTRY.values() if c.module == module)
-        REGISTRY[label] = Claim(label, section, title, statement, check, order, tuple(requires), parameter, module)
+        REGISTRY[label] = Claim(label, section, title, statement, check, order, tuple(requires), parameter, module, reads_scheme)
         return check
 
     return register

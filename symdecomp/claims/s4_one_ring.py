@@ -8,7 +8,7 @@ from symdecomp.analysis.frequency import per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.claims.applicability import FACE_NEIGHBOURS
 from symdecomp.claims.notation import A, B, eq, ne, omega_2n, omega_n, tup
-from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
+from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, Verbatim, claim, is_zero
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.schemes.shift_stencil import ShiftStencil, composed_stages, identity_b, then_b
 from symdecomp.symbols import alpha, beta, n, omega
@@ -34,7 +34,7 @@ def PRINTED_COMPONENT_VERTEX(j, k, size):
 
 @claim(
     "Eq. 10-11",
-    section="4",
+    section="4", reads_scheme=False,
     title="The 1-ring as a $2n$-gon and its decomposition",
     statement="The 1-ring is the $2n$-gon $P = (a_0, b_0, \\dots, a_{n-1}, b_{n-1})$ (Eq. 10), a sum of $2n$ regular "
     "planar $2n$-gons $z_j v_j$ (Eq. 11).",
@@ -84,7 +84,7 @@ def PRINTED_RING_POSITION(vertex: str, i):
 
 @claim(
     "Eq. 12-13",
-    section="4",
+    section="4", reads_scheme=False,
     title="$A^j$ and $B^j$ are regular $n$-gons",
     statement="If $z_j v_j = (a_0^j, b_0^j, \\dots, a_{n-1}^j, b_{n-1}^j)$ is a component of Eq. 11, then "
     "$A^j = (a_i^j)$ and $B^j = (b_i^j)$ are planar regular $n$-gons.",
@@ -173,7 +173,7 @@ def _eq16(scheme: Scheme) -> CheckResult:
     printed_sum = sp.factor(sp.expand(PRINTED_VERTEX_CENTER + n * alpha + n * beta - 1))
     corrected_center = 1 - n * alpha - n * beta
     corrected_sum = sp.expand(corrected_center + n * alpha + n * beta)
-    standard = scheme.vertex_rule
+    standard = scheme.vertex_rule  # the scheme's own weights, whatever its name
     std_center = sp.expand(corrected_center.subs({alpha: standard.each_a, beta: standard.each_b}))
     if printed_sum == 0:
         return CheckResult(Status.PROVED, "the printed rule is affine")
@@ -186,7 +186,8 @@ def _eq16(scheme: Scheme) -> CheckResult:
         Text(
             "as printed the weights sum to ", 1 + sp.UnevaluatedExpr(printed_sum), ", so the rule is not affine (not "
             "translation invariant) unless ", eq(alpha + beta, 0), "; with weight ", corrected_center, " on O it is, and "
-            "gives standard Catmull-Clark's ", std_center,
+            "the vertex rule of the scheme ", Verbatim(repr(scheme.name)), " (", eq(alpha, standard.each_a), ", ",
+            eq(beta, standard.each_b), ") gives O the weight ", std_center,
         ),
         scope=Scope.EVERY_N,
         counterexample=Text(
@@ -199,7 +200,8 @@ def _eq16(scheme: Scheme) -> CheckResult:
         steps=(
             Step("Sum of the printed weights minus one:", printed_sum),
             Step("Sum of the corrected weights:", corrected_sum),
-            Step("Corrected weight of $O$ at the standard $\\alpha = 3/(2n^2)$, $\\beta = 1/(4n^2)$:", std_center),
+            Step("The vertex weights $(\\alpha, \\beta)$ of the scheme's vertex rule:", sp.Tuple(standard.each_a, standard.each_b)),
+            Step("The corrected weight of $O$ at them:", std_center),
         ),
     )
 
@@ -360,7 +362,7 @@ PRINTED_B_OVER_A = sp.exp(sp.pi * sp.I * J / n)
 
 @claim(
     "Eq. 24",
-    section="4",
+    section="4", reads_scheme=False,
     title="$B^j = \\omega_{2n}^j A^j$",
     statement="$B^j = \\omega_{2n}^j A^j$, $j = 1, \\dots, n-1$.",
     requires=(FACE_NEIGHBOURS,),

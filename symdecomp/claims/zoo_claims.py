@@ -6,8 +6,10 @@ a scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is test
 ``not applicable`` reason. A claim whose statement is not tied to the 1-ring (C1 at the extraordinary
 element, the closed forms being the spectrum of the full matrix) is named with the command of the zoo engine
 that answers it for this scheme (:data:`ENGINE_COMMANDS`), since its check is written for 1-ring primal
-schemes only. The claims of Section 2 (n-gons, the Fourier matrix, circulants) involve no scheme
-(:data:`SCHEME_FREE`): they are checked as for any scheme, and say so.
+schemes only. A claim that involves no scheme (:attr:`~symdecomp.claims.registry.Claim.involves_no_scheme`: its check
+reads none and it requires nothing, as Section 2's n-gons, Fourier matrix and circulants and Section 6's CB-matrices)
+is checked as for any scheme, and says so: the same property decides it on the 1-ring route (a triangle scheme such
+as Loop), so the two routes agree on which claims involve no scheme.
 """
 
 from __future__ import annotations
@@ -18,10 +20,7 @@ from symdecomp.claims.applicability import ZOO_REQUIREMENTS
 from symdecomp.claims.registry import CheckResult, Status, Text, Verbatim, check_claim, get_claim
 from symdecomp.schemes.stencils import StencilScheme
 
-__all__ = ["ENGINE_COMMANDS", "SCHEME_FREE", "zoo_claim_result"]
-
-#: The claim modules whose statements and checks involve no scheme (the background of Section 2).
-SCHEME_FREE = ("symdecomp.claims.s2_background", "symdecomp.claims.s2_circulants")
+__all__ = ["ENGINE_COMMANDS", "zoo_claim_result"]
 
 #: The claim modules whose statements hold beyond the 1-ring: what they state, and the command that answers it.
 ENGINE_COMMANDS = {
@@ -43,7 +42,7 @@ def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None 
     with the reason computed from the scheme."""
     claim = get_claim(label)
     reason: str | Text
-    if claim.module in SCHEME_FREE:
+    if claim.involves_no_scheme:
         result = check_claim(label, budget=budget)  # the check reads no scheme: its verdict is the same for every one
         return dataclasses.replace(result, evidence=Text("the statement involves no scheme: ", result.evidence))
     if claim.module in ENGINE_COMMANDS:

@@ -29,8 +29,9 @@ def register(sub) -> None:
         "the claims about sectors of k faces at sharp vertices), and the last line counts "
         "the verdicts established for every n (proved, or an erratum whose correction is proved for every n with an "
         "exact counterexample). A scheme of the zoo, or one on triangle meshes (loop), lists every claim as well: those "
-        "of Section 2, which involve no scheme, are checked; the others are 'not applicable', with the reason computed from the scheme (its "
-        "topology, support or lattice), or with the command that answers the statement for it.",
+        "that involve no scheme (Section 2, Section 6's CB-matrices) are checked, with the verdict every scheme gets; a claim "
+        "that needs what the scheme lacks is 'not applicable', with the reason computed from the scheme (its topology, "
+        "support or lattice), or with the command that answers the statement for it.",
     )
     flag(p, "--json", help="print the one JSON shape (docs: File formats, --json) with one row per claim: {label, section, title, "
          "status, scope, evidence, ...}")

@@ -162,3 +162,20 @@ def test_statements_about_the_quad_2n_gon_are_no_verdict_about_a_triangle_scheme
         result = check_claim(label, triangle)
         assert (result.status, str(result.evidence)) == (Status.NOT_APPLICABLE, str(reason)), label
         assert check_claim(label, catmull_clark()).status is EXPECTED[label]
+
+
+def test_eq_16_names_the_vertex_weights_of_the_scheme_it_was_given():
+    """A quad file whose vertex rule is not Catmull-Clark's: the evidence names the file and the weight on O computed
+    from its own alpha = 1/(8n), beta = 1/(16n), 1 - n alpha - n beta = 13/16 (once it said "standard Catmull-Clark's")."""
+    from symdecomp.symbols import n
+    from tests.claims.test_one_model import OWN_REGULAR_VERTEX
+
+    scheme = scheme_from_text(OWN_REGULAR_VERTEX)
+    each_a, each_b = scheme.vertex_rule.each_a, scheme.vertex_rule.each_b
+    assert sp.simplify(1 - n * (each_a + each_b) - sp.Rational(13, 16)) == 0
+    evidence = str(check_claim("Eq. 16", scheme).evidence)
+    assert "Catmull-Clark" not in evidence
+    assert evidence.endswith(f"the vertex rule of the scheme {scheme.name!r} (alpha = 1/(8*n), beta = 1/(16*n)) gives O the "
+                             "weight 13/16")
+    assert str(check_claim("Eq. 16").evidence).endswith("the vertex rule of the scheme 'catmull-clark' (alpha = 3/(2*n**2), "
+                                                        "beta = 1/(4*n**2)) gives O the weight 1 - 7/(4*n)")

@@ -7,7 +7,7 @@ from symdecomp import catmull_clark, loop, loop_warren, symbols
 from symdecomp.claims import Scope, Status, all_claims, check_claim, section_key
 from symdecomp.claims import b1_curvature as b1
 from symdecomp.output.latex import section_file_name
-from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE
 
 LABELS = ["Curvature regime: Catmull-Clark", "Curvature regime: Loop", "Loop's vertex weight", "Curvature at the regular valence",
           "Shape: the valence decides"]
@@ -104,7 +104,8 @@ def test_loops_weight_needs_a_real_lambda_1_and_a_skewed_edge_rule_is_set_aside_
     assert sp.simplify(sp.im(sp.expand_complex(lam1)) + sp.sin(2 * sp.pi / 5) / 8) == 0  # (1/16 - 3/16) sin(2 pi/5)
     result = check_claim("Loop's vertex weight", skew)
     assert result.status is Status.NOT_APPLICABLE and result.counterexample is None
-    assert "omega/16 + 3/8 + 3/(16*omega)" in str(result.evidence) and "lambda_1 is complex" in str(result.evidence)
+    # M(omega) = omega/16 + 3/8 + 3/(16 omega) in c = cos(j pi/n), s = sin(j pi/n): odd in s, so not the same at j and n - j
+    assert "c**2/2 - I*c*s/4 + 1/8" in str(result.evidence) and "the characteristic map rotates" in str(result.evidence)
     mirrored = scheme_from_text(_LOOP_WITH_EDGE_WEIGHTS.format(left="1/8", right="1/8"))
     assert check_claim("Loop's vertex weight", mirrored).status is Status.PROVED
 
@@ -120,5 +121,35 @@ def test_a_rule_that_is_loops_only_at_the_regular_valence_has_no_curvature_or_sh
     assert c1.status is Status.REFUTED and "not real" in str(c1.counterexample)
     for label in ("Curvature regime: Loop", "Loop's vertex weight", "Shape: the valence decides"):
         result = check_claim(label, twist)
-        assert result.status is Status.NOT_APPLICABLE and "lambda_1 is complex" in str(result.evidence), label
+        assert result.status is Status.NOT_APPLICABLE and "the characteristic map rotates" in str(result.evidence), label
     assert check_claim("Curvature at the regular valence", twist).status is Status.VERIFIED  # n = 6: Loop's own rules
+
+
+TRIANGLE_WITH_FREE_W = """\
+name = "loop with free w"
+mesh = "triangle"
+parameters = ["w"]
+[edge]
+O = "3/8"
+a = { "-1" = "1/8", "0" = "3/8", "1" = "1/8" }
+[vertex]
+beta = "w"
+"""
+
+
+def test_a_regime_claim_asks_its_requirements_of_the_scheme_it_reads():
+    """Catmull-Clark's regimes read Catmull-Clark for a triangle scheme: a triangle file with a free parameter meets
+    their requirements, as Loop does (they were 'not applicable' for parameters the check never reads); Loop's regimes
+    read the file, so they need values. On quads the other way round."""
+    from symdecomp.claims import get_claim
+    from symdecomp.schemes.files import scheme_from_text
+    from tests.claims.test_one_model import CC_FACE_WITH
+
+    triangle, quad = scheme_from_text(TRIANGLE_WITH_FREE_W), scheme_from_text(CC_FACE_WITH.format(p="P"))
+    assert triangle.parameters and quad.parameters
+    for scheme, other_lattice_claim, own_claim in ((triangle, "Curvature regime: Catmull-Clark", "Curvature regime: Loop"),
+                                                    (quad, "Curvature regime: Loop", "Curvature regime: Catmull-Clark")):
+        assert [r.unmet(scheme) for r in get_claim(other_lattice_claim).requires] == [None, None]
+        own = check_claim(own_claim, scheme)
+        assert own.status is Status.NOT_APPLICABLE and "has free parameters" in str(own.evidence)
+    assert b1._on(triangle, QUAD) == catmull_clark() and b1._on(quad, TRIANGLE) == loop()  # what those checks read

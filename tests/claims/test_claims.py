@@ -143,10 +143,42 @@ def test_the_mirror_symmetry_requirement_names_the_term_with_sin():
     reason = MIRROR_SYMMETRIC.unmet(scheme("asymmetric"))
     assert any(isinstance(p, sp.Basic) and p.has(sin_jtheta) for p in reason.parts)
     assert "whole meshes" in str(WHOLE_MESH.unmet(scheme("moved")))
-    declared = {c.label for c in all_claims() if MIRROR_SYMMETRIC in c.requires}
+    # the requirement itself, asked of the scheme given (B.1's ask it of the scheme their check reads: b1_curvature.read_on)
+    declared = {c.label for c in all_claims() if any(r is MIRROR_SYMMETRIC for r in c.requires)}
     assert {"Proposition 5.1", "Remark 5.1", "Section 5.3: construction"} <= declared
     for label in declared:
         assert check_claim(label, scheme("asymmetric")).evidence == reason
+
+
+def test_one_mirror_symmetry_requirement_one_reason_on_either_lattice():
+    """Section 5's closed forms in c and the curvature regimes' real lambda_1 ask one requirement and give one reason (they
+    were two, with two computations and two texts); its verdict is the invariance of M(omega)'s trace and determinant
+    under omega -> 1/omega (the reflection j -> n - j), on quads and on triangles alike."""
+    from symdecomp.analysis.frequency import one_ring_matrices
+    from symdecomp.claims import applicability
+    from symdecomp.claims.applicability import MIRROR_SYMMETRIC
+    from symdecomp.expressions import identically_zero
+    from symdecomp.schemes.files import scheme_from_text
+    from symdecomp.schemes.loop import loop
+    from symdecomp.schemes.scheme import catmull_clark
+    from symdecomp.symbols import omega
+    from tests.claims.test_beyond_curvature_claims import _LOOP_WITH_EDGE_WEIGHTS
+    from tests.claims.test_mutations import scheme
+
+    assert not hasattr(applicability, "REAL_SUBDOMINANT")
+    skew = scheme_from_text(_LOOP_WITH_EDGE_WEIGHTS.format(left="3/16", right="1/16"))
+    twist = scheme_from_text(_LOOP_WITH_EDGE_WEIGHTS.format(left="1/8 + (n - 6)/64", right="1/8 - (n - 6)/64"))
+    panel = (catmull_clark(), scheme("asymmetric"), scheme("frequency two"), loop(), skew, twist)
+    for s in panel:
+        M, _ = one_ring_matrices(s)
+        mirrored = all(identically_zero(t - t.subs(omega, 1 / omega)) for t in (sp.expand(M.trace()), sp.expand(M.det())))
+        assert (MIRROR_SYMMETRIC.unmet(s) is None) is mirrored, s.name
+    assert [MIRROR_SYMMETRIC.unmet(s) is None for s in panel] == [True, False, True, True, False, False]
+    asymmetric = scheme("asymmetric")
+    reason = str(MIRROR_SYMMETRIC.unmet(asymmetric))
+    for label in ("Proposition 5.1", "Section 5.3: smaller eigenvalues", "Curvature regime: Catmull-Clark", "Shape: the valence decides"):
+        assert str(check_claim(label, asymmetric).evidence) == reason, label
+    assert str(check_claim("Loop's vertex weight", skew).evidence) == str(MIRROR_SYMMETRIC.unmet(skew))
 
 
 def test_claims_that_compute_with_numbers_are_not_applicable_to_a_scheme_with_free_parameters():

@@ -463,6 +463,11 @@ def _flipped_by_files() -> set:
             if isinstance(change, str) and change not in NOT_FILES and status not in (EXPECTED[label], NA)}
 
 
+def test_the_scheme_free_claims_are_those_declared_to_read_no_scheme():
+    """This table, typed by a reader of the checks, and the claims' own declaration (``reads_scheme=False``) agree."""
+    assert SCHEME_FREE == {c.label for c in all_claims() if not c.reads_scheme}
+
+
 def test_every_claim_is_flipped_by_a_file_or_has_a_reason():
     labels = {c.label for c in all_claims()}
     flipped = _flipped_by_files()

@@ -1,6 +1,7 @@
 """``claims --scheme <zoo scheme>`` (issue 30): every claim listed, its status computed from the scheme's model.
 
-The claims of Section 2 involve no scheme and keep the verdicts they have for every scheme; each other claim is
+The claims that involve no scheme (Section 2; Section 6's CB-matrices) keep the verdicts they have for every scheme,
+the same on both routes (a zoo scheme, a 1-ring scheme on triangles); each other claim is
 ``not applicable`` with the reason of the first zoo requirement the scheme does not meet (its topology, its
 support, its lattice), or, where the statement reaches beyond the 1-ring, with the zoo command that answers it.
 """
@@ -11,10 +12,10 @@ import json
 import jsonschema
 import pytest
 
-from symdecomp.claims import Status, all_claims, check_claim
+from symdecomp.claims import Status, all_claims, check_claim, scope_summary
 from symdecomp.claims.applicability import ONE_RING_SUPPORT, PRIMAL_VERTEX, QUAD_MESHES, ZOO_REQUIREMENTS
 from symdecomp.claims.batch import check_claims
-from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, SCHEME_FREE, zoo_claim_result
+from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, zoo_claim_result
 from symdecomp.cli import main
 from symdecomp.cli.json_envelope import json_schema
 from symdecomp.schemes.files import load_scheme
@@ -45,7 +46,7 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
     for c in claims:
         row = rows[c.label]
         assert row["scheme"] == name
-        if c.module in SCHEME_FREE:  # no scheme in the statement: the verdict every scheme gets
+        if c.involves_no_scheme:  # no scheme in the statement: the verdict every scheme gets
             assert row["status"] == check_claim(c.label).status.value
             assert row["evidence"].startswith("the statement involves no scheme: ")
         elif c.module in ENGINE_COMMANDS:
@@ -57,9 +58,37 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
 
 def test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes():
     for c in all_claims():
-        if c.module in SCHEME_FREE:
+        if c.involves_no_scheme:
             a, b = check_claim(c.label, catmull_clark()), check_claim(c.label, loop())
             assert (a.status, str(a.evidence)) == (b.status, str(b.evidence))
+
+
+class _Unreadable:
+    """A scheme that fails on any use: a check that runs with it read no scheme."""
+
+    def __getattribute__(self, name):
+        raise AssertionError(f"the check read scheme.{name}")
+
+
+def test_section_6_s_cb_matrix_claims_involve_no_scheme_on_both_routes():
+    """Proposition 6.1-6.3, Eq. 46-50 and Remark 6.1 are about CB-matrices in general: they involve no scheme, so the zoo
+    route checks them as the 1-ring route does for Loop (it said 'not applicable'); the table test above compares every
+    row with Catmull-Clark's, test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes Loop's."""
+    labels = {c.label for c in all_claims() if c.section == "6" and c.involves_no_scheme}
+    assert labels == {"Proposition 6.1", "Proposition 6.2", "Eq. 46", "Eq. 47", "Eq. 48", "Eq. 49", "Eq. 50", "Remark 6.1",
+                      "Proposition 6.3"}
+    cc, zoo = check_claim("Proposition 6.1"), check_claim("Proposition 6.1", load_scheme("doo-sabin"))
+    assert cc.status is Status.CORRECTED
+    assert (zoo.status, str(zoo.evidence)) == (cc.status, "the statement involves no scheme: " + str(cc.evidence))
+
+
+def test_a_claim_that_requires_nothing_and_does_not_declare_it_reads_no_scheme_reads_one():
+    """The declaration is complete: every claim without requirements that is not declared to read no scheme stops on a
+    scheme that fails on any use (the declared ones run on it: tests/claims/test_mutations.py)."""
+    for c in all_claims():
+        if c.reads_scheme and not c.requires:
+            with pytest.raises(AssertionError, match="the check read scheme"):
+                c.check(_Unreadable())
 
 
 def test_the_reasons_name_the_scheme_s_own_data():
@@ -81,7 +110,7 @@ def test_each_requirement_s_verdict_flips_with_the_scheme():
 
 
 def test_a_zoo_scheme_meeting_the_model_is_told_to_use_the_one_ring_format():
-    label = next(c.label for c in all_claims() if c.module not in SCHEME_FREE and c.module not in ENGINE_COMMANDS)
+    label = next(c.label for c in all_claims() if c.reads_scheme and c.module not in ENGINE_COMMANDS)
     result = zoo_claim_result(label, catmull_clark_stencils())
     assert result.status is Status.NOT_APPLICABLE
     assert "meets the 1-ring primal model" in str(result.evidence)
@@ -95,7 +124,8 @@ def test_the_summary_line_counts_add_up(capsys):
     assert head == f"{len(all_claims())} claims" and sum(tally.values()) == len(all_claims())
     listed = [line for line in lines[:-2] if not line.startswith(" ")]
     assert {s: sum(f"  {s}  " in line for line in listed) for s in tally} == tally
-    assert lines[-1].startswith(f"verdict for every n: {tally.get('proved', 0)} of {len(all_claims())} ")
+    sqrt3 = load_scheme("sqrt3")
+    assert lines[-1] == str(scope_summary(check_claim(c.label, sqrt3) for c in all_claims()))
 
 
 def test_a_malformed_zoo_file_is_one_line_and_exit_2(tmp_path, capsys):
@@ -108,7 +138,7 @@ def test_a_malformed_zoo_file_is_one_line_and_exit_2(tmp_path, capsys):
 
 def test_the_api_answers_a_zoo_scheme_as_the_command_does():
     scheme = load_scheme("modified-butterfly")
-    label = next(c.label for c in all_claims() if c.module not in SCHEME_FREE and c.module not in ENGINE_COMMANDS)
+    label = next(c.label for c in all_claims() if c.reads_scheme and c.module not in ENGINE_COMMANDS)
     result = check_claim(label, scheme)
     assert (result.status, str(result.evidence)) == (Status.NOT_APPLICABLE, str(ONE_RING_SUPPORT.unmet(scheme)))
     assert [r.status for r in check_claims([label], scheme, jobs=2)] == [Status.NOT_APPLICABLE]

@@ -30,8 +30,9 @@ exact (:func:`erratum_scope`).
 
 Every claim is checked *for a scheme* (:func:`check_claim`, default Catmull-Clark): the printed
 statement of the paper is one input, the scheme the other, and the status follows from both.
-Statements that do not involve the scheme (:attr:`Claim.involves_no_scheme`: Section 2, the CB-matrix algebra of
-Section 6) have the same status for every scheme, of the zoo too.
+Statements that do not involve the scheme (Section 2, the CB-matrix algebra of Section 6: their checks declare
+``reads_scheme=False`` and require nothing, :attr:`Claim.involves_no_scheme`) have the same status for every
+scheme, of the zoo too.
 
 Registering a claim (later issues add modules ``symdecomp/claims/s*.py``, and ``b*.py`` for the toolkit's
 own claims beyond the paper, sections ``"B.<k>"`` after the paper's: :func:`section_key`; they are found
@@ -370,12 +371,16 @@ class Claim:
     parameter: str = "n"
     #: The module that registers it (a section's claims may come from several; see :meth:`sort_key`).
     module: str = ""
-    #: ``False`` when the check never reads the scheme it is given (``reads_scheme=False``; tested on a scheme that fails on any use).
+    #: ``False`` when the check never reads the scheme it is given (declared with ``reads_scheme=False``; a test runs
+    #: each such check on an object that fails on any use): its verdict is that of the printed statement alone.
     reads_scheme: bool = True
 
     @property
     def involves_no_scheme(self) -> bool:
-        """The check reads no scheme and requires none (as a statement about the quad 1-ring would): one verdict for every scheme."""
+        """The check reads no scheme and the claim requires nothing of one: the same verdict for every scheme, a scheme
+        of the zoo or a 1-ring scheme on any lattice (the one test both routes ask, :func:`check_claim` and
+        :func:`~symdecomp.claims.zoo_claims.zoo_claim_result`). A check that reads no scheme but whose statement is
+        about the quad 1-ring declares that (``requires=``), and it is not applicable where the 1-ring is not the paper's."""
         return not self.reads_scheme and not self.requires
 
     def sort_key(self):
@@ -391,7 +396,8 @@ REGISTRY: dict[str, Claim] = {}
 
 def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (),
           parameter: str = "n", reads_scheme: bool = True) -> Callable[[Callable[[Scheme], CheckResult]], Callable[[Scheme], CheckResult]]:
-    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires`` (:attr:`Claim.reads_scheme`)."""
+    """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``;
+    ``reads_scheme=False`` declares that the check never reads the scheme it is given (:attr:`Claim.reads_scheme`)."""
 
     def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:
         if label in REGISTRY:

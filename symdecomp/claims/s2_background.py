@@ -71,7 +71,8 @@ def _singular_basis(last: int):
 
 @claim(
     "Eq. 1",
-    section="2", reads_scheme=False,
+    section="2",
+    reads_scheme=False,
     title="An $n$-gon is any $n$-tuple of points",
     statement="An $n$-gon is an $n$-tuple $P = (p_0, \\dots, p_{n-1})$ of points of $\\mathbf{R}^3$, with no restriction on "
     "their positions: it may intersect itself, degenerate, or collapse to a single point (and the decomposition of "
@@ -133,7 +134,8 @@ def _eq1(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 2-4",
-    section="2", reads_scheme=False,
+    section="2",
+    reads_scheme=False,
     title="The rows of $F_n$ are regular planar polygons",
     statement="The rows $v_0, \\dots, v_{n-1}$ of $F_n$ (Eq. 2), $\\omega_n = e^{2\\pi i/n}$ (Eq. 3), are regular planar $n$-gons.",
 )
@@ -163,7 +165,8 @@ def _eq2_4(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 5",
-    section="2", reads_scheme=False,
+    section="2",
+    reads_scheme=False,
     title="Decomposition into planar regular polygons",
     statement="Every $n$-gon $P$ in $\\mathbf{R}^3$ is $P = z_0 v_0 + \\dots + z_{n-1} v_{n-1}$ with the rows "
     "$v_j$ of $F_n$ (Eq. 4) a basis of $\\mathbf{C}^n$.",
@@ -203,7 +206,8 @@ def _eq5(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 6",
-    section="2", reads_scheme=False,
+    section="2",
+    reads_scheme=False,
     title="Coplanar pairs",
     statement="The decomposition of Eq. 5 can be chosen so that the pairs $\\{z_j v_j, z_{n-j} v_{n-j}\\}$, "
     "$j = 1, \\dots, \\lfloor (n-1)/2 \\rfloor$, are coplanar.",
@@ -258,7 +262,8 @@ def PRINTED_EIGENVALUE(coeffs):
 
 @claim(
     "Proposition 2.1",
-    section="2", reads_scheme=False,
+    section="2",
+    reads_scheme=False,
     title="Eigenvectors and eigenvalues of circulants",
     statement="The eigenvectors of any $n \\times n$ circulant $C$ are the rows of $F_n$; the eigenvalue on $v_k$ "
     "is $p(\\omega_n^k)$ with $p(z) = c_0 + c_1 z + \\dots + c_{n-1} z^{n-1}$ (Eq. 8, 9).",

@@ -44,7 +44,8 @@ def _omega_n() -> sp.Expr:
 
 @claim(
     "Eq. 7",
-    section="2", reads_scheme=False,
+    section="2",
+    reads_scheme=False,
     title="The circulant matrix",
     statement="$circ(c_0, \\dots, c_{n-1})$ has first row $(c_0, c_1, \\dots, c_{n-1})$, each row the previous one "
     "shifted right by one, last row $(c_1, c_2, \\dots, c_0)$.",
@@ -82,7 +83,8 @@ def _eq7(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 8",
-    section="2", reads_scheme=False,
+    section="2",
+    reads_scheme=False,
     title="The eigenvalues of a circulant",
     statement="The eigenvalue of $circ(c_0, \\dots, c_{n-1})$ on $v_k$ is $\\lambda_k = \\sum_{j=0}^{n-1} c_j e^{i 2\\pi jk/n}$.",
 )
@@ -119,7 +121,8 @@ def _eq8(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 9",
-    section="2", reads_scheme=False,
+    section="2",
+    reads_scheme=False,
     title="The generating polynomial",
     statement="$\\lambda_k$ of Eq. 8 is $p(\\omega_n^k)$ with $p(z) = c_0 + c_1 z + \\dots + c_{n-1} z^{n-1}$.",
 )

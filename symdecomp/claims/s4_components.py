@@ -35,7 +35,8 @@ def _rhs(printed, point) -> sp.Expr:
 
 @claim(
     "Eq. 22",
-    section="4", reads_scheme=False,
+    section="4",
+    reads_scheme=False,
     title="Eq. 18 on the sums of the components",
     statement="Eq. 18 can be written $\\sum_j a_i^j \\rightarrow \\frac{8}{10}\\sum_j a_i^j + \\frac{1}{10}"
     "(\\sum_j b_{i-1}^j + \\sum_j b_i^j)$, $j = 0, \\dots, 2n-1$.",
@@ -61,7 +62,8 @@ def _eq22(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 23",
-    section="4", reads_scheme=False,
+    section="4",
+    reads_scheme=False,
     title="Eq. 18 split into the components",
     statement="Eq. 22 decomposes into $a_i^j \\rightarrow \\frac{8}{10} a_i^j + \\frac{1}{10}(b_{i-1}^j + b_i^j)$, "
     "$i = 0, \\dots, n-1$, $j = 0, \\dots, 2n-1$.",

@@ -34,7 +34,8 @@ def PRINTED_COMPONENT_VERTEX(j, k, size):
 
 @claim(
     "Eq. 10-11",
-    section="4", reads_scheme=False,
+    section="4",
+    reads_scheme=False,
     title="The 1-ring as a $2n$-gon and its decomposition",
     statement="The 1-ring is the $2n$-gon $P = (a_0, b_0, \\dots, a_{n-1}, b_{n-1})$ (Eq. 10), a sum of $2n$ regular "
     "planar $2n$-gons $z_j v_j$ (Eq. 11).",
@@ -84,7 +85,8 @@ def PRINTED_RING_POSITION(vertex: str, i):
 
 @claim(
     "Eq. 12-13",
-    section="4", reads_scheme=False,
+    section="4",
+    reads_scheme=False,
     title="$A^j$ and $B^j$ are regular $n$-gons",
     statement="If $z_j v_j = (a_0^j, b_0^j, \\dots, a_{n-1}^j, b_{n-1}^j)$ is a component of Eq. 11, then "
     "$A^j = (a_i^j)$ and $B^j = (b_i^j)$ are planar regular $n$-gons.",
@@ -362,7 +364,8 @@ PRINTED_B_OVER_A = sp.exp(sp.pi * sp.I * J / n)
 
 @claim(
     "Eq. 24",
-    section="4", reads_scheme=False,
+    section="4",
+    reads_scheme=False,
     title="$B^j = \\omega_{2n}^j A^j$",
     statement="$B^j = \\omega_{2n}^j A^j$, $j = 1, \\dots, n-1$.",
     requires=(FACE_NEIGHBOURS,),

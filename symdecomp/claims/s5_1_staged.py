@@ -32,7 +32,8 @@ PRINTED_CIRCULANTS = {
 
 @claim(
     "Eq. 25-30",
-    section="5.1", reads_scheme=False,
+    section="5.1",
+    reads_scheme=False,
     title="The three circulants of the staged rules",
     statement="The steps Eq. 17, 18, 20 involve $C_\\alpha = circ(3/4, 1/8, 0, \\dots, 0, 1/8)$, "
     "$C_\\beta = circ(1/2, 0, \\dots, 0, 1/2)$, $C_\\gamma = circ(1/2, 1/2, 0, \\dots, 0)$, with eigenvalues "

@@ -25,7 +25,8 @@ def PRINTED_AXES(w1: sp.Expr, w2: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
 
 @claim(
     "Eq. 40",
-    section="5.2", reads_scheme=False,
+    section="5.2",
+    reads_scheme=False,
     title="Axes of the ellipse $E_a$",
     statement=r"$A^1 + A^{2n-1}$ is inscribed on an ellipse with axes "
     r"$l_1 = |w_1| + |w_{2n-1}|$, $l_2 = \bigl||w_1| - |w_{2n-1}|\bigr|$.",
@@ -84,7 +85,8 @@ PRINTED_B_FACTOR = sp.exp(sp.pi * sp.I / N)
 
 @claim(
     "Eq. 41",
-    section="5.2", reads_scheme=False,
+    section="5.2",
+    reads_scheme=False,
     title="Initially $E_a = E_b$",
     statement=r"$A^1 = w_1 \vec{v_1}$, $A^{2n-1} = w_{2n-1}\vec{v_{n-1}}$; initially $E_a = E_b$, the ellipse of the "
     r"2n-gonal regular convex component of Eq. 11.",

@@ -69,7 +69,8 @@ def _prop61_counterexample():
 
 @claim(
     "Proposition 6.1",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="Constant matrices",
     statement=r"Let $C$ be $n\times n$ with $c_{ij}=c$ for $0<i,j<n-1$. The only nonzero eigenvalue of $C$ is $nc$, with eigenvector $(1,\dots,1)$.",
 )
@@ -118,7 +119,8 @@ def _prop61(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Proposition 6.2",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="Eigenvectors of CB-matrices",
     statement=r"Let $B$ be a CB-matrix of $n\times n$ circulant blocks $C_{ij}$ of size $m$, $0<i,j<n-1$. If $v$ is an eigenvector of the circulants of order $m$, there is $\alpha$ with $V=(\alpha_0v,\dots,\alpha_{n-1}v)$ an eigenvector of $B$; $\alpha$ is an eigenvector of $E$, $e_{ij}$ the eigenvalue of $C_{ij}$ on $v$.",
 )
@@ -176,7 +178,8 @@ def _prop62(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 46",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="BV on the block vector",
     statement=r"$BV=B\begin{pmatrix}\alpha_0v\\\vdots\\\alpha_{n-1}v\end{pmatrix}$, with $V^T=(\alpha_0v,\dots,\alpha_{n-1}v)$ of Prop. 6.2.",
 )
@@ -218,7 +221,8 @@ PRINTED_FIRST_ROW_LAST = 1
 
 @claim(
     "Eq. 47",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="BV as a matrix of block products",
     statement=r"$BV=\begin{pmatrix}C_{0,0}v&\dots&C_{1,n-1}v\\\vdots&&\vdots\end{pmatrix}\begin{pmatrix}\alpha_0\\\vdots\\\alpha_{n-1}\end{pmatrix}$",
 )
@@ -257,7 +261,8 @@ def _eq47(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 48",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="Replacing C_ij v by e_ij v",
     statement=r"$BV=\begin{pmatrix}e_{0,0}v&\dots&e_{1,n-1}v\\\vdots&&\vdots\end{pmatrix}\begin{pmatrix}\alpha_0\\\vdots\\\alpha_{n-1}\end{pmatrix}$",
 )
@@ -297,7 +302,8 @@ def _eq48(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 49",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="BV = (E alpha) . (v, ..., v)",
     statement=r"$BV=E\begin{pmatrix}\alpha_0\\\vdots\\\alpha_{n-1}\end{pmatrix}.\begin{pmatrix}v\\\vdots\\v\end{pmatrix}$",
 )
@@ -324,7 +330,8 @@ def _eq49(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Eq. 50",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="BV = lambda V",
     statement=r"If $E\alpha=\lambda\alpha$ then $BV=\lambda\,\alpha.(v,\dots,v)^T=\lambda V$.",
 )
@@ -356,7 +363,8 @@ def _eq50(scheme: Scheme) -> CheckResult:
 
 @claim(
     "Remark 6.1",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="Full eigensystem when every E is diagonalizable",
     statement=r"The eigensystem of $B$ can be fully determined if all the matrices $E$ are diagonalizable.",
 )
@@ -408,7 +416,8 @@ def PRINTED_63_FACTOR(blocks: int, order: int) -> int:
 
 @claim(
     "Proposition 6.3",
-    section="6", reads_scheme=False,
+    section="6",
+    reads_scheme=False,
     title="Adding constant blocks",
     statement=r"$B$ with circulant blocks, $A$ with constant blocks $a_{ij}$ ($n\times n$ blocks of size $m$), $C=B+A$. If Remark 6.1 holds, the eigenvalues of $C$ and $B$ agree except for $n$ of them, found as the eigenvectors of $E_1+T$, $t_{ij}=na_{ij}$.",
 )

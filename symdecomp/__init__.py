@@ -176,10 +176,10 @@ nothing else.
                    ``s2_circulants``, ``s3_support``, ``s4_one_ring``, ``s4_components``,
                    ``s5_1_staged``, ``s5_1_tangent``, ``s5_1_tangent_c1``, ``s5_2_ellipses``, ``s5_2_elliptic``,
                    ``s5_3_hyperbolic``,
-                   ``s6_cb_matrices``, ``s6_cb_subdivision``, ``s6_closing``,
+                   ``s6_cb_matrices``, ``s6_cb_perturbation``, ``s6_cb_subdivision``, ``s6_closing``,
                    ``s6_full_spectrum``), the toolkit's own claims beyond the paper (curvature and
                    shape, ``b1_curvature``; boundary and crease vertices, ``b2_mirror``) and their registry
-                   (``registry``; their order, from the sources, ``order``); every claim is checked
+                   (``registry``; their order, from the sources, ``order``; the findings' prose with mathematics, ``text``); every claim is checked
                    for a scheme, within a time budget, and no verdict rests on a free parameter or an
                    undefined value (``guards``),
                    many claims at once on the shared pool (``batch``); what several checks share: the requirements a claim declares

@@ -69,6 +69,28 @@ def _singular_basis(last: int):
     return None
 
 
+def _not_a_basis() -> CheckResult:
+    """Eq. 1's verdict when the printed rows are not shown to be a basis for every n: refuted at the first valence
+    whose rows share two nodes (:func:`_singular_basis`), undecided if none up to 12 does."""
+    from symdecomp.symbols import n
+
+    x_m = sp.Symbol("x_m")
+    found = _singular_basis(12)
+    if found is None:
+        return CheckResult(Status.UNDECIDED, Text("the rows are not shown to be a basis for every ", n,
+                                                  ", and they are for n = 3..12"))
+    size, m, m2, value = found
+    gon = tuple(1 if k == m else 0 for k in range(size))
+    return CheckResult(
+        Status.REFUTED,
+        Text("the rows ", sp.Symbol("v_j"), " of ", sp.Symbol("F_n"), " as printed are not a basis of ", sp.Symbol("C^n"),
+             " for every ", n, ": not every n-tuple decomposes"),
+        counterexample=Text(eq(n, size), ": vertices ", m, " and ", m2, " of every row are equal (", eq(x_m, value),
+                            " for both), so every combination of the rows has ", eq(sp.Symbol(f"p_{m}"), sp.Symbol(f"p_{m2}")),
+                            ", and the degenerate polygon ", sp.Tuple(*gon), " has no decomposition"),
+    )
+
+
 @claim(
     "Eq. 1",
     section="2",
@@ -93,20 +115,7 @@ def _eq1(scheme: Scheme) -> CheckResult:
     )
     x_m = sp.Symbol("x_m")
     if not (vandermonde and ones and distinct):
-        found = _singular_basis(12)
-        if found is None:
-            return CheckResult(Status.UNDECIDED, Text("the rows are not shown to be a basis for every ", n,
-                                                      ", and they are for n = 3..12"))
-        size, m, m2, value = found
-        gon = tuple(1 if k == m else 0 for k in range(size))
-        return CheckResult(
-            Status.REFUTED,
-            Text("the rows ", sp.Symbol("v_j"), " of ", sp.Symbol("F_n"), " as printed are not a basis of ", sp.Symbol("C^n"),
-                 " for every ", n, ": not every n-tuple decomposes"),
-            counterexample=Text(eq(n, size), ": vertices ", m, " and ", m2, " of every row are equal (", eq(x_m, value),
-                                " for both), so every combination of the rows has ", eq(sp.Symbol(f"p_{m}"), sp.Symbol(f"p_{m2}")),
-                                ", and the degenerate polygon ", sp.Tuple(*gon), " has no decomposition"),
-        )
+        return _not_a_basis()
     last, kinds = 12, tuple(_special_polygons(3))
     if (failed := _first_not_rebuilt(last)) is not None:
         size, kind, P = failed

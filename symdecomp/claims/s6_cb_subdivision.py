@@ -12,9 +12,9 @@ from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first,
 from symdecomp.analysis.tangent import tangent_eigenvalues
 from symdecomp.analysis.tuning import with_free_vertex_rule
 from symdecomp.claims.applicability import FACE_NEIGHBOURS, MIRROR_SYMMETRIC
+from symdecomp.claims.cb_examples import _det, _nc
 from symdecomp.claims.notation import eq, j, lambda_1, listed, ne, tup
 from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
-from symdecomp.claims.s6_cb_matrices import _det, _nc
 from symdecomp.schemes.scheme import Scheme, subdivision_matrix
 from symdecomp.symbols import alpha as ALPHA
 from symdecomp.symbols import beta as BETA

@@ -267,7 +267,7 @@ TABLE = [
     ("Proposition 6.2", printed("s6_cb_matrices", "_printed_range", lambda i, j, size: True), P),
     ("Eq. 47", printed("s6_cb_matrices", "PRINTED_FIRST_ROW_LAST", 0), P),
     ("Eq. 48", printed("s6_cb_matrices", "PRINTED_FIRST_ROW_LAST", 0), P),
-    ("Proposition 6.3", printed("s6_cb_matrices", "PRINTED_63_FACTOR", lambda blocks, order: order), P),
+    ("Proposition 6.3", printed("s6_cb_perturbation", "PRINTED_63_FACTOR", lambda blocks, order: order), P),
     ("Tangent plane unaffected (after Eq. 51)", "asymmetric", NA),
     ("Eq. 51", "moved", P),
     ("Eq. 51", "wide", NA),

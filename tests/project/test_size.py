@@ -26,7 +26,7 @@ LONG_FUNCTIONS: set[str] = {
     "claims/s3_support.py:_boundary_influence",
     "claims/s5_2_elliptic.py:_remark52",
     "claims/s5_3_hyperbolic.py:_basis",
-    "claims/s6_cb_matrices.py:_prop63",
+    "claims/s6_cb_perturbation.py:_prop63",
 }
 
 

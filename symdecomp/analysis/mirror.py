@@ -41,6 +41,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp import symbols
+from symdecomp.algebra.trig_identity import reduced
 from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, Stencil, check_scheme
@@ -176,18 +177,9 @@ def _sine_identity(scheme, rules, modified: bool) -> tuple[sp.ImmutableMatrix, s
     if face is not None:
         new_b = sum((w * a(_I + d) for d, w in face["a"].items()), sp.Integer(0)) + face["b"].get(0, 0) * b(_I)
         rows.append(new_b - (M[1, 0] * A + M[1, 1] * B) * sp.sin(THETA * (_I + sp.Rational(1, 2))))
-    residual = sp.ImmutableMatrix([_trig_reduced(r) for r in rows])
+    residual = sp.ImmutableMatrix([reduced(sp.expand(sp.expand_trig(r))) for r in rows])
     boundary = sp.ImmutableMatrix([sp.sin(THETA * 0), sp.sin(THETA * _K).subs(THETA, sp.pi * _J / _K)])
     return residual, boundary
-
-
-def _trig_reduced(expr: sp.Expr) -> sp.Expr:
-    """``expr`` after sympy's trigonometric expansion: 0 when its sines and cosines, written as exponentials, expand
-    to 0 (an exact identity, a tenth of the time of ``simplify``), and ``simplify``'s form otherwise."""
-    expanded = sp.expand(sp.expand_trig(expr))
-    if sp.expand(expanded.rewrite(sp.exp)) == 0:
-        return sp.Integer(0)
-    return sp.simplify(expanded)
 
 
 def crease_block(scheme, count: int = 2, *, corner: bool = False, rules=None) -> sp.Matrix:

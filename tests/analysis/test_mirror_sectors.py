@@ -47,17 +47,6 @@ def test_the_sine_block_is_read_from_the_stencils_and_the_identity_vanishes():
         assert all(r == 0 for r in residual) and all(b == 0 for b in boundary)
 
 
-def test_a_sine_residual_is_zero_only_where_it_vanishes():
-    """The residual's reduction: 0 for an identity, and a residual that is not one is kept (simplify's form), so a
-    block that is not the stencils' answers as a non-zero residual."""
-    from symdecomp.analysis.mirror import _trig_reduced
-
-    x, i = sp.symbols("theta i")
-    assert _trig_reduced(sp.sin(i * x + x) - sp.sin(i * x) * sp.cos(x) - sp.cos(i * x) * sp.sin(x)) == 0
-    off = _trig_reduced(sp.sin(i * x + x) / 16 - sp.sin(i * x) / 16)
-    assert off != 0 and sp.simplify(off - (sp.sin(i * x + x) - sp.sin(i * x)) / 16) == 0
-
-
 def test_the_sine_polylines_are_eigenvectors_of_the_assembled_matrix():
     """P * (a-part, b-part) = (a-part, b-part) * M(pi j/k), entry by entry, exactly (k = 5, j = 2)."""
     d = sector_decomposition(CC, 5)

@@ -2,9 +2,11 @@
 
 Target: ``symdecomp claims`` within 10 s on two cores, with the same verdicts (the claims on the shared pool, the
 costliest handed out first, the claims that share a computation on one worker; the slowest symbolic steps done in
-FLINT or in sympy's polynomials over Q). The figure is the wall-clock time of the command in a fresh process (start-up
-included), so it depends on what else the machine runs (``run.py`` prints the load); the CPU seconds (user + system of
-the command and its workers) are printed beside it, a figure the load changes much less.
+FLINT or in sympy's polynomials over Q, trigonometric identities decided as exponential polynomials instead of by
+``simplify``, exact cyclotomic numbers written to sympy without a second expansion, the Loop patch refined in fmpq).
+The figure is the wall-clock time of the command in a fresh process (start-up included), so it depends on what else
+the machine runs (``run.py`` prints the load); the CPU seconds (user + system of the command and its workers) are
+printed beside it, a figure the load changes much less.
 
 Baseline, measured in the same run: ``claims --jobs 1`` (one process, every claim in turn, as before the pool). Both
 runs must print the same rows (label, status, scope, evidence, ...), byte for byte.

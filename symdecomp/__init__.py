@@ -26,7 +26,8 @@ nothing else.
                    tensor and triangular Bernstein polynomials in Arb (``bernstein``), signs of
                    rational functions of n for every n (``valence_signs``), of a rational polynomial on an
                    interval by Sturm sequences in FLINT (``interval_signs``), exact signs of real
-                   algebraic numbers (``algebraic_sign``),
+                   algebraic numbers (``algebraic_sign``), identities in sines and cosines decided as exponential
+                   polynomials (``trig_identity``),
                    exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``),
                    exact linear algebra over one real field Q(cos(pi/k)) (``cos_field``), the
                    eigen-decomposition of a rational matrix by the irreducible factors of its

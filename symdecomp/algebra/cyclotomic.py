@@ -161,10 +161,13 @@ class Cyclotomic:
         return (self - self.conjugate()) / (2 * self.field.i)
 
     def to_sympy(self) -> sp.Expr:
-        """As a sympy number: ``sum_k c_k (cos(2 pi k/N) + i sin(2 pi k/N))``, expanded."""
+        """As a sympy number: ``sum_k c_k (cos(2 pi k/N) + i sin(2 pi k/N))``, expanded.
+
+        No call to ``sp.expand``: each root is expanded once (:func:`_root_of_unity`), a rational times an expanded sum
+        is distributed by sympy as it is built, and a sum of expanded terms is expanded; ``expand`` would only walk the
+        result again (most of the time of a decomposition in exact arithmetic)."""
         N = self.field.N
-        terms = [sp.Rational(int(c.p), int(c.q)) * _root_of_unity(N, k) for k, c in enumerate(self.poly.coeffs()) if c != 0]
-        return sp.expand(sp.Add(*terms))
+        return sp.Add(*(sp.Rational(int(c.p), int(c.q)) * _root_of_unity(N, k) for k, c in enumerate(self.poly.coeffs()) if c != 0))
 
     def to_mpc(self):
         """As an mpmath number at the current working precision."""

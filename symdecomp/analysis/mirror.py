@@ -41,6 +41,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from symdecomp import symbols
+from symdecomp.algebra.trig_identity import reduced
 from symdecomp.analysis.eigenvalue import Eigenvalue, MirrorBlock
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError, NotApplicableError
 from symdecomp.schemes.scheme import Scheme, Stencil, check_scheme
@@ -176,7 +177,7 @@ def _sine_identity(scheme, rules, modified: bool) -> tuple[sp.ImmutableMatrix, s
     if face is not None:
         new_b = sum((w * a(_I + d) for d, w in face["a"].items()), sp.Integer(0)) + face["b"].get(0, 0) * b(_I)
         rows.append(new_b - (M[1, 0] * A + M[1, 1] * B) * sp.sin(THETA * (_I + sp.Rational(1, 2))))
-    residual = sp.ImmutableMatrix([sp.simplify(sp.expand(sp.expand_trig(r))) for r in rows])
+    residual = sp.ImmutableMatrix([reduced(sp.expand(sp.expand_trig(r))) for r in rows])
     boundary = sp.ImmutableMatrix([sp.sin(THETA * 0), sp.sin(THETA * _K).subs(THETA, sp.pi * _J / _K)])
     return residual, boundary
 

@@ -33,6 +33,7 @@ import re
 
 import sympy as sp
 
+from symdecomp.algebra.trig_identity import reduced
 from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.claims.applicability import MIRROR_SYMMETRIC, NO_FREE_PARAMETERS
@@ -194,7 +195,7 @@ def _loop_weight(scheme: Scheme) -> CheckResult:
     M, E0 = one_ring_matrices(s)
     elliptic = sp.expand(E0.trace() - 1)  # E_0 is 2 x 2 with the eigenvalue 1: the other one is its trace minus 1
     lam1 = M[0, 0].subs(OMEGA, sp.exp(2 * sp.pi * sp.I / N))
-    defect = sp.simplify(sp.expand((elliptic - lam1**2).rewrite(sp.cos)))
+    defect = reduced(sp.expand((elliptic - lam1**2).rewrite(sp.cos)))
     steps = (Step("The elliptic eigenvalue (trace of $E_0$ minus 1)", elliptic),
              Step("$\\lambda_1 = M(\\omega_n)$", sp.simplify(lam1.rewrite(sp.cos))),
              Step("The elliptic eigenvalue minus $\\lambda_1^2$", defect))

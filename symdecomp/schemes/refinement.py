@@ -69,6 +69,7 @@ from fractions import Fraction
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
+import flint
 import sympy as sp
 
 from symdecomp.algebra.cyclotomic import Cyclotomic
@@ -92,7 +93,7 @@ MAX_LEVELS = 64
 
 
 def _as_weight(w: sp.Expr):
-    if isinstance(w, (Fraction, Cyclotomic)):  # already exact numbers (a caller's own arithmetic)
+    if isinstance(w, (Fraction, Cyclotomic, flint.fmpq)):  # already exact numbers (a caller's own arithmetic)
         return w
     w = sp.sympify(w, strict=True)
     if w.is_Rational:
@@ -132,7 +133,7 @@ class MeshRules:
 
     def edge_weights(self, valence: int) -> tuple[sp.Expr, ...]:
         """:attr:`oriented` at this valence: the edge rule of an edge whose end ``O`` has this valence (the model)."""
-        return tuple(sp.sympify(w, strict=True).subs(N, valence) for w in self.oriented)
+        return _oriented_at(self.oriented, valence)
 
     @property
     def depends_on_valence(self) -> bool:
@@ -215,8 +216,16 @@ class TriangleMeshRules:
         v = self.scheme.vertex_rule
         return tuple(w.subs(N, valence) for w in (v.center, v.each_a))
 
-    edge_weights = MeshRules.edge_weights
+    def edge_weights(self, valence: int) -> tuple[sp.Expr, ...]:
+        """:attr:`oriented` at this valence, as :meth:`MeshRules.edge_weights`."""
+        return _oriented_at(self.oriented, valence)
+
     depends_on_valence = MeshRules.depends_on_valence
+
+
+def _oriented_at(oriented: tuple, valence: int) -> tuple[sp.Expr, ...]:
+    """An edge rule read from its end ``O`` (expressions in ``n``) at ``O``'s valence."""
+    return tuple(sp.sympify(w, strict=True).subs(N, valence) for w in oriented)
 
 
 def triangle_mesh_rules(scheme: Scheme) -> TriangleMeshRules:

@@ -42,3 +42,21 @@ def test_what_is_not_a_cyclotomic_number_is_refused():
         CyclotomicFunction(sp.cos(2 * sp.pi / x), x)(4, CyclotomicField(6))
     with pytest.raises(ValueError, match="not defined at 0"):
         CyclotomicFunction(sp.cos(2 * sp.pi / x), x)(0, CyclotomicField(6))
+
+
+@pytest.mark.parametrize("N", [3, 4, 5, 8, 12, 20, 24, 60])
+def test_to_sympy_is_expanded_and_the_number(N):
+    # to_sympy builds the sum without sp.expand: it must already be expanded, and be the number to_mpc gives
+    import mpmath
+
+    field = CyclotomicField(N)
+    zeta = field.root(N, 1)
+    for coeffs in ([1], [0, 1], [Fraction(3, 7), -2, 0, Fraction(1, 5)], [Fraction(k * k - 3, k + 1) for k in range(N)]):
+        x = field(0)
+        for k, c in enumerate(coeffs):
+            x = x + field(c) * zeta**k
+        value = x.to_sympy()
+        assert value == sp.expand(value)
+        with mpmath.workdps(40):
+            near = sp.N(value, 40)
+            assert abs(mpmath.mpc(str(sp.re(near)), str(sp.im(near))) - x.to_mpc()) < mpmath.mpf(10) ** -35

@@ -218,13 +218,28 @@ def _run_zoo(args, items: None, plot) -> int:
         from symdecomp.verify.c1_zoo import ZORIN_TOPOLOGY, spline_route
 
         reason = spline_route(args.scheme)
-        if reason is not None and (args.scheme.topology != ZORIN_TOPOLOGY or args.scheme.steps != 1):
+        if reason is not None and args.scheme.topology == ZORIN_TOPOLOGY and args.scheme.steps == 1:
+            reason = _zorin_every_n_refusal(args.scheme)
+        if reason is not None:
             raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
                                     f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
         return _run_every_n(args, _zoo_one, ZOO_EVERY_N_CERTIFIED if reason is None else ZORIN_EVERY_N_CERTIFIED, plot)
     results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
     write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+
+
+def _zorin_every_n_refusal(scheme) -> str | None:
+    """``None`` when the spectral conditions of a primal scheme of the zoo are read for every n from its structural
+    blocks (:mod:`symdecomp.verify.c1_zorin_every_n`), else why not (before any valence is tested)."""
+    from symdecomp.errors import InvalidSchemeError, NotApplicableError
+    from symdecomp.verify.c1_zorin_every_n import frequency_polynomials
+
+    try:
+        frequency_polynomials(scheme)
+    except (NotApplicableError, InvalidSchemeError) as exc:
+        return f"its blocks for every n are not read: {exc}"
+    return None
 
 
 def _zoo_figure(scheme, results: list[_Row]):

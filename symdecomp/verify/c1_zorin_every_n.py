@@ -300,7 +300,10 @@ def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callabl
     check_type(scheme, StencilScheme, "scheme", hint="a scheme of the zoo, e.g. load_zoo('modified-butterfly')")
     last = check_int(last, "last", minimum=3)
     certify = certify or (lambda k: c1_zoo(scheme, k, max_depth=max_depth))
-    spectral = zorin_spectral_every_n(scheme, per_valence=per_valence)
+    try:
+        spectral = zorin_spectral_every_n(scheme, per_valence=per_valence)
+    except NotApplicableError as exc:
+        spectral = (EveryNStep(f"the spectral conditions for every n are not read: {exc}", "open", (3, None), "spectral"),)
     result = c1_every_n(scheme, last, progress=progress, certify=certify, spectral_steps=lambda: spectral,
                         map_every_n=lambda lo, last: None, fails_from=lambda k, certify: None, first=3)
     steps = tuple(replace(s, text=f"Zorin's test at each n = {s.valences[0]}..{s.valences[1]}: the spectral conditions and "

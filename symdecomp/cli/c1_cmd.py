@@ -218,12 +218,13 @@ def _run_zoo(args, items: None, plot) -> int:
         from symdecomp.verify.c1_zoo import ZORIN_TOPOLOGY, spline_route
 
         reason = spline_route(args.scheme)
-        if reason is not None and args.scheme.topology == ZORIN_TOPOLOGY and args.scheme.steps == 1:
+        zorin = reason is not None and args.scheme.topology == ZORIN_TOPOLOGY and args.scheme.steps == 1
+        if zorin:
             reason = _zorin_every_n_refusal(args.scheme)
         if reason is not None:
             raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
                                     f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
-        return _run_every_n(args, _zoo_one, ZOO_EVERY_N_CERTIFIED if reason is None else ZORIN_EVERY_N_CERTIFIED, plot)
+        return _run_every_n(args, _zoo_one, ZORIN_EVERY_N_CERTIFIED if zorin else ZOO_EVERY_N_CERTIFIED, plot)
     results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
     write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1

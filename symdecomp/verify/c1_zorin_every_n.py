@@ -14,7 +14,7 @@ the valence ``N0`` the form holds from:
   ``< lambda_1`` (``lambda_1`` simple there, so double overall), for ``t = cos(2 pi/n)`` in ``[t_0, 1)``;
 * ``frequency-zero``: ``p_0 = (x - 1) r_0`` (the centre's row bordering the block) with every root of ``r_0`` of
   modulus ``< lambda_1`` (1 simple);
-* ``frequency-k``: at each other exceptional frequency (``k = +-2``) every root of ``p_k`` below ``lambda_1`` in
+* ``frequency-exceptional``: at each other exceptional frequency (``k = +-2``) every root of ``p_k`` below ``lambda_1`` in
   modulus, ``t = cos(2 pi/n)`` in ``[t_0, 1)``;
 * ``other-frequencies``: at every other frequency every root of ``p(x)`` below ``lambda_1``, for ``t`` in ``[-1, 1)``
   (``k = 3..n-3`` reach ``t <= cos(6 pi/n) < 1``).
@@ -282,7 +282,7 @@ def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True) -
             steps.append(_disc_step("frequency-one", f"k = {k}, besides lambda_1 (simple at this frequency)", r.as_expr(),
                                     lam, t0, k, start, reach))
         for k in (k for k in polys.at if abs(k) > 1):
-            steps.append(_disc_step(f"frequency-{k}", f"k = {k}", polys.at[k], lam, t0, k, start, reach))
+            steps.append(_disc_step("frequency-exceptional", f"k = {k}", polys.at[k], lam, t0, k, start, reach))
         steps.append(_disc_step("other-frequencies", f"every other k ({reach + 1} <= k <= n - {reach + 1}, "
                                 "t = cos(2 pi k/n) in [-1, 1))", polys.other, lam, sp.Integer(-1), None, start, reach))
     below = _per_valence(scheme, start) if per_valence else None

@@ -25,7 +25,8 @@ nothing else.
                    polynomials over a triangle in Bezier form (``triangle_bezier``), products of
                    tensor and triangular Bernstein polynomials in Arb (``bernstein``), signs of
                    rational functions of n for every n (``valence_signs``), of a rational polynomial on an
-                   interval by Sturm sequences in FLINT (``interval_signs``), exact signs of real
+                   interval by Sturm sequences in FLINT (``interval_signs``), every root of a polynomial with
+                   parameters in a disc as polynomial inequalities (Schur-Cohn, ``schur_cohn``), exact signs of real
                    algebraic numbers (``algebraic_sign``), identities in sines and cosines decided as exponential
                    polynomials (``trig_identity``),
                    exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``),
@@ -143,7 +144,9 @@ nothing else.
                    ``c1_spectrum``, Bernstein-Bezier nets ``bezier``; for every valence, its spectral conditions proved
                    in n and the map per valence, ``c1_every_n``; a dual scheme's with the biquadratic regular part, from its n-gon's
                    weights' symbol, ``c1_dual_every_n``, its ring of biquadratic patches for every n >= N0 by exact signs in t,
-                   ``c1_dual_uniform``; the characteristic map for every n >= N0 by exact signs in
+                   ``c1_dual_uniform``; a primal one's (the modified butterfly) from its structural blocks, the
+                   Schur-Cohn test in t = cos(2 pi k/n), with the map per valence by Zorin's test,
+                   ``c1_zorin_every_n``; the characteristic map for every n >= N0 by exact signs in
                    t = cos(2 pi/n), ``c1_uniform``; the curvature regime for every
                    valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``; the part that dominates on fine
                    rings for every valence, ``dominance_every_n``); at a sector between sharp rays (boundary, crease

@@ -46,13 +46,19 @@ EVERY_N_CERTIFIED = 64
 #: above it are a cross-check.
 ZOO_EVERY_N_CERTIFIED = 32
 
+#: The same for a primal scheme of the zoo (the modified butterfly): Zorin's test per valence, up to the first valence
+#: of the structural blocks its spectral conditions for every n are read from.
+ZORIN_EVERY_N_CERTIFIED = 16
+
 #: --every-n's help.
 EVERY_N_HELP = (
     "C1 for every valence: the spectral conditions as statements in t = cos(2 pi j/n) decided for every n "
     f"(Sturm sequences, the exact tail bound of Proposition 5.1), Reif's test at n = 3..{EVERY_N_CERTIFIED}, the "
     "characteristic map regular and injective for every n by exact signs of its nets in cos(2 pi/n) (a dual scheme of "
     "the zoo with the biquadratic regular part, e.g. doo-sabin: the n-gon's weights' symbol for every n, the dual test "
-    f"at n = 3..{ZOO_EVERY_N_CERTIFIED}); says which part is proved, verified or open, and the first valence where C1 "
+    f"at n = 3..{ZOO_EVERY_N_CERTIFIED}; a primal one, e.g. modified-butterfly: the blocks' characteristic polynomials "
+    f"by the Schur-Cohn test in cos(2 pi k/n), Zorin's test at n = 3..{ZORIN_EVERY_N_CERTIFIED}, the map not proved for "
+    "every n); says which part is proved, verified or open, and the first valence where C1 "
     "fails (--json: the steps)"
 )
 
@@ -209,16 +215,32 @@ def _run_zoo(args, items: None, plot) -> int:
     from symdecomp.verify.result import C1Verdict
 
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
-        from symdecomp.verify.c1_zoo import spline_route
+        from symdecomp.verify.c1_zoo import ZORIN_TOPOLOGY, spline_route
 
         reason = spline_route(args.scheme)
+        zorin = reason is not None and args.scheme.topology == ZORIN_TOPOLOGY and args.scheme.steps == 1
+        if zorin:
+            reason = _zorin_every_n_refusal(args.scheme)
         if reason is not None:
             raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
                                     f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
-        return _run_every_n(args, _zoo_one, ZOO_EVERY_N_CERTIFIED, plot)
+        return _run_every_n(args, _zoo_one, ZORIN_EVERY_N_CERTIFIED if zorin else ZOO_EVERY_N_CERTIFIED, plot)
     results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
     write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+
+
+def _zorin_every_n_refusal(scheme) -> str | None:
+    """``None`` when the spectral conditions of a primal scheme of the zoo are read for every n from its structural
+    blocks (:mod:`symdecomp.verify.c1_zorin_every_n`), else why not (before any valence is tested)."""
+    from symdecomp.errors import InvalidSchemeError, NotApplicableError
+    from symdecomp.verify.c1_zorin_every_n import frequency_polynomials
+
+    try:
+        frequency_polynomials(scheme)
+    except (NotApplicableError, InvalidSchemeError) as exc:
+        return f"its blocks for every n are not read: {exc}"
+    return None
 
 
 def _zoo_figure(scheme, results: list[_Row]):
@@ -386,18 +408,22 @@ def _run_sharp(args, items: list[tuple], plot) -> int:
 
 def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None) -> int:
     """``--every-n``: :func:`~symdecomp.verify.c1_every_n.c1_every_n`, or for a dual scheme of the zoo (``one`` is
-    :func:`_zoo_one`) :func:`~symdecomp.verify.c1_dual_every_n.c1_dual_every_n`; ``one(n)`` at ``3..last`` on the pool.
+    :func:`_zoo_one`) :func:`~symdecomp.verify.c1_dual_every_n.c1_dual_every_n`, for a primal one
+    :func:`~symdecomp.verify.c1_zorin_every_n.c1_zorin_every_n`; ``one(n)`` at ``3..last`` on the pool.
     ``--plot``: the proof's ``lambda_1(n)`` beside the certified valences (:mod:`symdecomp.output.plotting.every_n_chart`)."""
     from symdecomp.parallel import ordered_map
     from symdecomp.verify.c1_dual_every_n import c1_dual_every_n, ngon_spectrum
     from symdecomp.verify.c1_every_n import c1_every_n, lambda_one
+    from symdecomp.verify.c1_zoo import spline_route
+    from symdecomp.verify.c1_zorin_every_n import c1_zorin_every_n, zorin_lambda_one
 
     scheme = args.scheme
     valences = list(range(3 if one is _zoo_one else max(3, scheme.minimum_valence()), last + 1))
     rows = ordered_map(one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
     by_n = {r.n: r for r in progress(rows, len(valences), "c1", enabled=not args.quiet)}
-    route = c1_dual_every_n if one is _zoo_one else c1_every_n
+    zorin = one is _zoo_one and spline_route(scheme) is not None  # a primal scheme of the zoo: Zorin's test per valence
+    route = c1_zorin_every_n if zorin else c1_dual_every_n if one is _zoo_one else c1_every_n
     result = route(scheme, last, certify=lambda k: by_n[k] if k in by_n else one(k, scheme, args.depth))
     if args.json:
         print_json(args, {**result.as_json(), "rows": [by_n[k].json for k in sorted(by_n) if k <= result.certified[1] + 1]})
@@ -409,6 +435,7 @@ def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None) -> in
             print(f"  [{step.status}] {where}: {step.text}")
         print(f"{result.status}: {result.summary}")
     write_plot(plot, lambda: _every_n_figure(result, [by_n[k].json for k in sorted(by_n)],
+                                             zorin_lambda_one(scheme) if zorin else
                                              ngon_spectrum(scheme).first if one is _zoo_one else lambda_one(scheme)))
     return 0 if result.status in ("proved", "verified") else 1
 

@@ -1,0 +1,325 @@
+"""The spectral conditions of Zorin's test for every valence, from the structural blocks (primal schemes of the zoo).
+
+The matrix of a primal scheme of the zoo on its invariant neighbourhood depends on the valence ``n`` only through the
+rules at the centre (:mod:`symdecomp.analysis.zoo_structure`): at frequency ``k`` its block is ``B(omega)``, a
+Laurent polynomial matrix in ``omega = exp(2 pi i k/n)`` and the centre families' symbols ``sigma(k)``, which take
+one value at every frequency but a few exceptional ones (the modified butterfly's weights ``s_j`` are a cosine sum of
+frequencies ``0, +-1, +-2``; :mod:`symdecomp.analysis.zoo_symbols`). With the mirror symmetry the coefficients of
+``p_k(x) = det(x I - B_k)`` are polynomials in ``t = cos(2 pi k/n)``, and the conditions are, for every ``n`` from
+the valence ``N0`` the form holds from:
+
+* ``lambda-one``: ``lambda_1`` is a root of ``p_1`` that is a constant (the same for every ``n``), the largest such,
+  real and in ``(0, 1)``: derived from the factors of ``p_1``, never typed;
+* ``frequency-one``: at ``k = 1`` and ``k = -1``, ``p_k = (x - lambda_1) r_k`` with every root of ``r_k`` of modulus
+  ``< lambda_1`` (``lambda_1`` simple there, so double overall), for ``t = cos(2 pi/n)`` in ``[t_0, 1)``;
+* ``frequency-zero``: ``p_0 = (x - 1) r_0`` (the centre's row bordering the block) with every root of ``r_0`` of
+  modulus ``< lambda_1`` (1 simple);
+* ``frequency-exceptional``: at each other exceptional frequency (``k = +-2``) every root of ``p_k`` below ``lambda_1`` in
+  modulus, ``t = cos(2 pi/n)`` in ``[t_0, 1)``;
+* ``other-frequencies``: at every other frequency every root of ``p(x)`` below ``lambda_1``, for ``t`` in ``[-1, 1)``
+  (``k = 3..n-3`` reach ``t <= cos(6 pi/n) < 1``).
+
+Each "every root below ``lambda_1``" is the Schur-Cohn test of :func:`~symdecomp.algebra.schur_cohn.schur_cohn_conditions`
+on ``p(lambda_1 y)``: finitely many polynomials in ``t``, each shown positive on its range by Sturm sequences, on the
+half-open range where one vanishes only at ``t = 1`` (no frequency reaches it). Where one is not positive, the step
+fails with the computed witness: a ``t`` where it is not, and a valence ``n`` and frequency ``k`` where the block has an
+eigenvalue of modulus ``>= lambda_1`` (certified in Arb). The valences ``3..N0-1`` (``n = 3, 4`` have rules of
+their own) are the per-valence route's spectral conditions (:func:`~symdecomp.verify.zoo_characteristic.spectral_conditions`).
+
+This is the spectral half of C1. The characteristic map is certified per valence by Zorin's test
+(:mod:`symdecomp.verify.c1_zorin`) for ``n = 3..last`` and is **not** proved for every ``n`` here, so the verdict for
+every ``n`` (:func:`c1_zorin_every_n`) is ``undecided`` with that reason, never ``proved`` from the spectrum alone.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
+
+import flint
+import sympy as sp
+
+from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.algebra.schur_cohn import schur_cohn_conditions
+from symdecomp.algebra.valence_signs import positive_from, sign_on_interval
+from symdecomp.errors import NotApplicableError
+from symdecomp.schemes.lattice import lattice
+from symdecomp.schemes.stencils import N, StencilScheme
+from symdecomp.symbols import omega as OMEGA
+from symdecomp.validate import check_int, check_type
+from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, _in_t, c1_every_n
+from symdecomp.verify.c1_uniform import t_lower_bound
+
+if TYPE_CHECKING:
+    from symdecomp.analysis.zoo_structure import ZooStructure
+
+__all__ = ["FrequencyPolynomials", "frequency_polynomials", "zorin_lambda_one", "zorin_spectral_every_n", "c1_zorin_every_n"]
+
+X = sp.Symbol("x")
+
+
+class FrequencyPolynomials:
+    """``p_k(x) = det(x I - B_k)`` for every ``n >= start``: ``{k: p}`` at the exceptional frequencies (in ``x`` and
+    ``t = cos(2 pi/n)``; at ``k = 0`` the block bordered by the centre, in ``x`` and maybe ``n``) and ``other`` (in
+    ``x`` and ``t = cos(2 pi k/n)``) at every other ``k``."""
+
+    def __init__(self, at: dict[int, sp.Expr], other: sp.Expr, start: int) -> None:
+        self.at = at
+        self.other = other
+        self.start = start
+        #: The largest exceptional ``|k|``: every ``k`` with ``p < |k| < n - p`` is "other".
+        self.reach = max(abs(k) for k in at)
+
+
+#: How far the search for a valence where a failed condition shows goes beyond the first valence of the form.
+WITNESS_SEARCH = 64
+
+
+@dataclass(frozen=True)
+class Decision:
+    """One Schur-Cohn polynomial's sign on its range: ``proved`` positive, ``failed`` (with a witness) or ``open``."""
+
+    status: str
+    #: The half-open range, or the witness ``t`` and valence, in words.
+    note: str = ""
+    #: A valence where the block has an eigenvalue of modulus ``>= lambda_1`` (certified), when one was found.
+    n: int | None = None
+
+
+def _arb_value(poly: sp.Poly, t: flint.arb) -> flint.arb:
+    value = flint.arb(0)
+    for c in poly.all_coeffs():
+        value = value * t + flint.arb(to_fmpq(c))
+    return value
+
+
+def _search(poly: sp.Poly, start: int, frequency: int | None, reach: int) -> tuple[int, int] | None:
+    """``(n, k)``: a valence ``n >= start`` and frequency ``k`` in the range whose ``t`` makes ``poly`` negative (Arb)."""
+    with flint.ctx.workprec(128):
+        for n in range(start, start + WITNESS_SEARCH):
+            ks = range(reach + 1, n - reach) if frequency is None else (frequency,)
+            for k in ks:
+                t = flint.arb(flint.fmpq(2 * k, n)).cos_pi() if frequency is None else flint.arb(flint.fmpq(2, n)).cos_pi()
+                if _arb_value(poly, t) < 0:
+                    return n, k
+    return None
+
+
+def _witness_t(poly: sp.Poly, low: sp.Expr) -> sp.Expr:
+    """A ``t`` in ``[low, 1)`` where ``poly`` is not positive: a rational where one is found, else a root."""
+    if poly.eval(low) <= 0:
+        return low
+    roots = [r for r in poly.real_roots() if low <= r < 1]
+    for a, b in (iv for iv, _ in poly.intervals(eps=sp.Rational(1, 10**6))):
+        for x in (sp.Rational(a), sp.Rational(b)):
+            if low <= x < 1 and poly.eval(x) < 0:
+                return x
+    return roots[0]
+
+
+def decide_positive(expr: sp.Expr, low: sp.Expr, *, start: int, frequency: int | None, reach: int) -> Decision:
+    """``expr > 0`` for every ``t`` in ``[low, 1)`` (a polynomial in ``t``), or for every ``n >= start`` (a rational
+    function of ``n``, at ``k = 0``), exactly; where it is not, the witness (module docstring)."""
+    expr = sp.expand(expr)
+    if expr.has(N):
+        if expr.has(T):
+            return Decision("open", f"{expr} mixes n and t")
+        if positive_from(expr, N, start):
+            return Decision("proved")
+        bad = next((n for n in range(start, start + WITNESS_SEARCH) if expr.subs(N, n) <= 0), None)
+        return Decision("failed", f"{expr} <= 0 at n = {bad}" if bad else f"{expr} is not positive for every n >= {start}", bad)
+    if expr == 0:  # a root exactly on the circle |x| = lambda_1 at every t: every valence is a witness
+        k = reach + 1 if frequency is None else frequency
+        return Decision("failed", f"the Schur-Cohn polynomial is 0 for every t: a root of modulus exactly lambda_1 at every "
+                        f"n >= {start} (the first: n = {start}, k = {k})", start)
+    poly = sp.Poly(expr, T)
+    if sign_on_interval(expr, T, low, 1):
+        return Decision("proved")
+    if poly.eval(1) == 0 and poly.eval(low) > 0 and poly.count_roots(low, 1) == 1:
+        return Decision("proved", f"one of them vanishes at t = 1 only, which no frequency reaches: positive on [{low}, 1)")
+    t = _witness_t(poly, low)
+    found = _search(poly, start, frequency, reach)
+    where = (f"; at n = {found[0]}, k = {found[1]} (t = cos(2 pi {found[1] if frequency is None else 1}/{found[0]})) "
+             "the Schur-Cohn polynomial is negative (Arb)" if found else
+             f"; no valence n = {start}..{start + WITNESS_SEARCH - 1} has its t where it is negative")
+    return Decision("failed", f"the Schur-Cohn polynomial {sp.factor(expr)} is {'negative' if poly.eval(t) < 0 else '0'} "
+                    f"at t = {t}{where}", found[0] if found else None)
+
+
+def _sigma(st: ZooStructure, k: int | None) -> dict[sp.Symbol, sp.Expr]:
+    return {sig: (s.otherwise if k is None else s.value(k)).subs(s.size, N) for sig, s in zip(st.sigma, st.symbols)}
+
+
+def _coefficients_in_t(p: sp.Expr, what: str) -> sp.Expr:
+    """``p`` (in ``x``, Laurent in ``omega``, maybe ``cos(2 pi q/n)``) with each coefficient a polynomial in ``t``."""
+    from symdecomp.verify.c1_dual_every_n import in_t
+
+    out = sp.Integer(0)
+    for (power,), c in sp.Poly(sp.expand(p), X).terms():
+        try:
+            ct = in_t(_in_t(c))
+        except NotApplicableError as exc:
+            raise NotApplicableError(f"{what}: {exc}") from None
+        if ct is None or ct.has(N) or not sp.fraction(sp.cancel(ct))[1].is_number:
+            raise NotApplicableError(f"{what}: the coefficient {c} of det(x I - B) is no polynomial in t alone")
+        out += sp.expand(ct) * X**power
+    return sp.expand(out)
+
+
+def frequency_polynomials(scheme: StencilScheme) -> FrequencyPolynomials:
+    """``det(x I - B_k)`` from the scheme's structural blocks (module docstring); :class:`NotApplicableError` (one line)
+    where the blocks have no such form (a family that is no cosine sum, rules that are not mirror symmetric)."""
+    from symdecomp.analysis.zoo_structure import zoo_structure
+
+    check_type(scheme, StencilScheme, "scheme", hint="a scheme of the zoo, e.g. load_zoo('modified-butterfly')")
+    st = zoo_structure(scheme)
+    if not st.has_centre:
+        raise NotApplicableError(f"scheme {scheme.name!r}: no centre vertex (a dual scheme: c1_dual_every_n)")
+    B = sp.Matrix(st.block)
+    exceptional = sorted({k for s in st.symbols for k in s.at} | {-1, 0, 1}, key=lambda k: (abs(k), k))
+    at: dict[int, sp.Expr] = {}
+    for k in exceptional:
+        Bk = B.xreplace(_sigma(st, k)).subs(OMEGA, OMEGA**k)
+        if k == 0:
+            b = [sp.sympify(e, strict=True).xreplace(_sigma(st, 0)) for e in st.border]
+            K = st.class_count
+            Bk = sp.Matrix([[b[0], *b[1:K + 1]]] + [[b[K + 1 + c], *Bk.subs(OMEGA, 1)[c, :]] for c in range(K)])
+            at[0] = sp.expand(sp.factor(Bk.charpoly(X).as_expr()))
+        else:
+            at[k] = _coefficients_in_t(Bk.charpoly(X).as_expr(), f"frequency {k}")
+    other = _coefficients_in_t(B.xreplace(_sigma(st, None)).charpoly(X).as_expr(), "every other frequency")
+    return FrequencyPolynomials(at, other, st.valid_from)
+
+
+def _lambda_one(polys: FrequencyPolynomials) -> tuple[sp.Expr | None, EveryNStep]:
+    """``lambda_1``: the largest constant root of ``p_1`` (real, in ``(0, 1)``), or ``None`` with the reason."""
+    p1 = polys.at[1]
+    constant = [r for f, _ in sp.factor_list(p1, X)[1] if sp.degree(f, X) == 1 and not f.has(T)
+                for r in sp.solve(f, X)]
+    lam = max(constant, key=lambda r: abs(complex(r)), default=None)
+    where = (polys.start, None)
+    if lam is None or not lam.is_real or not (0 < lam < 1):
+        why = "no root of p_1 is the same for every n" if lam is None else f"the root {lam} is not real in (0, 1)"
+        return None, EveryNStep(f"lambda_1 from det(x I - B_1) = {sp.factor(p1)}: {why}", "open", where, "lambda-one",
+                                ((r"p_1(x)", p1),))
+    return lam, EveryNStep(f"lambda_1 = {lam}: the largest root of det(x I - B_1) = {sp.factor(p1)} that is the same for "
+                           "every n", "proved", where, "lambda-one", ((r"p_1(x)", p1), (r"\lambda_1", lam)))
+
+
+def _disc_step(name: str, what: str, poly: sp.Expr, lam: sp.Expr, low: sp.Expr, witness_k: int | None,
+               start: int, reach: int) -> EveryNStep:
+    """Every root of ``poly`` of modulus ``< lam`` on ``[low, 1)`` (Schur-Cohn, Sturm), or the computed witness."""
+    deltas = schur_cohn_conditions(sp.Poly(poly, X), lam)
+    formulas = tuple((rf"\delta_{{{j}}}(t)", d) for j, d in enumerate(deltas, 1))
+    results: list[Decision] = []
+    for d in deltas:
+        r = decide_positive(d, low, start=start, frequency=witness_k, reach=reach)
+        results.append(r)
+        if r.status != "proved":
+            break
+    notes = "; ".join(r.note for r in results if r.note)
+    constant = sp.Poly(poly, X).free_symbols <= {X}
+    free = " (no coefficient depends on t)" if constant else ""
+    text = (f"{what}: det(x I - B) = {sp.factor(poly)}{free}; every root below lambda_1 = {lam} in modulus: the "
+            f"{len(deltas)} Schur-Cohn polynomials of p({lam} y) are positive") + (f" ({notes})" if notes else "")
+    last = results[-1] if results else None
+    if last is None or last.status == "proved":
+        return EveryNStep(text, "proved", (start, None), name, formulas)
+    if last.status == "failed":
+        return EveryNStep(f"{what}: det(x I - B) = {sp.factor(poly)} has a root of modulus >= lambda_1 = {lam}: "
+                          f"{last.note}", "failed", (last.n, last.n) if last.n else (start, None), name, formulas)
+    return EveryNStep(f"{what}: {last.note}", "open", (start, None), name, formulas)
+
+
+def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
+    """The valences below the structural form's: the per-valence route's spectral conditions, exactly certified."""
+    from symdecomp.analysis.zoo_matrix import zoo_matrix
+    from symdecomp.analysis.zoo_spectrum import zoo_spectrum
+    from symdecomp.verify.result import C1Verdict
+    from symdecomp.verify.zoo_characteristic import real_matrix, spectral_conditions
+
+    if start <= 3:
+        return None
+    regular = lattice(scheme.lattice).regular_valence
+    for n in (n for n in range(3, start) if n != regular):
+        r = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n, real_matrix=real_matrix(zoo_matrix(scheme, n)))
+        if r.status is not C1Verdict.C1:
+            return EveryNStep(f"n = {n}: {r.reason}", "failed" if r.status is C1Verdict.NOT_C1 else "open", (n, n),
+                              "below-structural")
+    return EveryNStep(f"n = 3..{start - 1} but {regular} (below the structural form's first valence; n = 3, 4 have rules of "
+                      "their own): the spectral conditions certified valence by valence (exact factors of each block); "
+                      f"n = {regular} is the regular vertex, whose rules Zorin's test checks on their own", "verified",
+                      (3, start - 1), "below-structural")
+
+
+def zorin_lambda_one(scheme: StencilScheme) -> sp.Expr | None:
+    """``lambda_1`` for every ``n`` from the structural form (the ``lambda-one`` step), or ``None`` where it varies."""
+    try:
+        return _lambda_one(frequency_polynomials(scheme))[0]
+    except NotApplicableError:
+        return None
+
+
+def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True) -> tuple[EveryNStep, ...]:
+    """The spectral conditions for every ``n`` (module docstring), each step with its status and witness; without
+    ``per_valence`` the valences below the structural form are left to the caller (each costs an exact spectrum)."""
+    polys = frequency_polynomials(scheme)
+    start, reach = polys.start, polys.reach
+    lam, first = _lambda_one(polys)
+    steps = [first]
+    if lam is not None:
+        t0 = t_lower_bound(start)
+        p0, rest = sp.div(sp.Poly(polys.at[0], X), sp.Poly(X - 1, X))
+        if not rest.is_zero:
+            steps.append(EveryNStep(f"1 is not a root of det(x I - B_0) = {sp.factor(polys.at[0])}", "failed",
+                                    (start, None), "frequency-zero"))
+        else:
+            steps.append(_disc_step("frequency-zero", "k = 0, besides the eigenvalue 1", p0.as_expr(), lam, t0, 0, start,
+                                    reach))
+        for k in (1, -1):
+            r, rest = sp.div(sp.Poly(polys.at[k], X), sp.Poly(X - lam, X))
+            steps.append(_disc_step("frequency-one", f"k = {k}, besides lambda_1 (simple at this frequency)", r.as_expr(),
+                                    lam, t0, k, start, reach))
+        for k in (k for k in polys.at if abs(k) > 1):
+            steps.append(_disc_step("frequency-exceptional", f"k = {k}", polys.at[k], lam, t0, k, start, reach))
+        steps.append(_disc_step("other-frequencies", f"every other k ({reach + 1} <= k <= n - {reach + 1}, "
+                                "t = cos(2 pi k/n) in [-1, 1))", polys.other, lam, sp.Integer(-1), None, start, reach))
+    below = _per_valence(scheme, start) if per_valence else None
+    return tuple(steps) + ((below,) if below else ())
+
+
+def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callable[[int], None] | None = None,
+                     certify: Callable[[int], object] | None = None, max_depth: int = 6,
+                     per_valence: bool = True) -> EveryNResult:
+    """C1 for every valence as far as it is shown: the spectral steps for every ``n``, Zorin's test at ``3..last``
+    (``certify(n)``, by default :func:`~symdecomp.verify.c1_zoo.c1_zoo`); the map is not proved for every ``n``, so the
+    verdict is ``undecided`` (or ``refuted`` with a valence where a step or the test fails)."""
+    from symdecomp.verify.c1_zoo import c1_zoo
+
+    check_type(scheme, StencilScheme, "scheme", hint="a scheme of the zoo, e.g. load_zoo('modified-butterfly')")
+    last = check_int(last, "last", minimum=3)
+    certify = certify or (lambda k: c1_zoo(scheme, k, max_depth=max_depth))
+    try:
+        spectral = zorin_spectral_every_n(scheme, per_valence=per_valence)
+    except NotApplicableError as exc:
+        spectral = (EveryNStep(f"the spectral conditions for every n are not read: {exc}", "open", (3, None), "spectral"),)
+    result = c1_every_n(scheme, last, progress=progress, certify=certify, spectral_steps=lambda: spectral,
+                        map_every_n=lambda lo, last: None, fails_from=lambda k, certify: None, first=3)
+    steps = tuple(replace(s, text=f"Zorin's test at each n = {s.valences[0]}..{s.valences[1]}: the spectral conditions and "
+                          "a regular, injective characteristic map, certified (Arb balls)")
+                  if s.name == "reif-per-valence" else s for s in result.steps)
+    failed = [s for s in spectral if s.status == "failed"]
+    if result.status == "refuted" or result.status == "undecided" and result.certified[1] < last:
+        return replace(result, steps=steps)
+    if failed:
+        n = failed[0].valences[1]
+        return replace(result, steps=steps, status="refuted" if n is not None else "undecided", failure=n,
+                       summary=f"a spectral condition fails: {failed[0].text}")
+    shown = all(s.status in ("proved", "verified") for s in spectral)
+    spectral_text = ("the spectral conditions hold for every n (proved for n >= "
+                     f"{max(s.valences[0] for s in spectral)}, certified per valence below)" if shown else
+                     "the spectral conditions are not shown for every n")
+    return replace(result, steps=steps, status="undecided",
+                   summary=f"{spectral_text}; the characteristic map is certified by Zorin's test at n = 3..{last} only "
+                           "and not proved for every n, so C1 for every n is undecided")

@@ -1,0 +1,37 @@
+"""``symdecomp c1 --every-n --scheme modified-butterfly``: the spectral steps for every n in --json, and the verdict
+``undecided`` because the characteristic map is certified per valence only (issue 30).
+
+Zorin's test at each valence is covered by ``tests/verify/test_c1_zorin.py`` (a minute at n = 3); here the rows it
+would give are one certified row per valence, so that the test reads what the command builds around them.
+"""
+
+from __future__ import annotations
+
+import json
+
+import jsonschema
+import pytest
+
+from symdecomp.cli import c1_cmd, main
+from symdecomp.cli.json_envelope import json_schema
+from symdecomp.verify.result import C1Verdict
+
+
+def _certified(n: int, scheme, max_depth: int) -> c1_cmd._Row:
+    return c1_cmd._Row(n, C1Verdict.C1, "certified (a row of this test)", {"n": n, "verdict": "c1", "reason": "certified"})
+
+
+@pytest.mark.slow  # the valences below the structural form: an exact spectrum each (about a minute)
+def test_the_butterfly_every_n_json_carries_the_steps_and_is_undecided(monkeypatch, capsys):
+    monkeypatch.setattr(c1_cmd, "ZORIN_EVERY_N_CERTIFIED", 4)
+    monkeypatch.setattr(c1_cmd, "_zoo_one", _certified)
+    assert main(["c1", "--every-n", "--scheme", "modified-butterfly", "--quiet", "--jobs", "1", "--json"]) == 1
+    out = json.loads(capsys.readouterr().out)
+    jsonschema.validate(out, json_schema())
+    steps = {s["name"]: s for s in out["steps"]}
+    assert out["status"] == "undecided" and "not proved for every n" in out["summary"]
+    for name in ("lambda-one", "frequency-zero", "frequency-one", "frequency-exceptional", "other-frequencies"):
+        assert steps[name]["status"] == "proved" and steps[name]["valences"] == [16, None]
+    assert steps["below-structural"]["status"] == "verified" and steps["below-structural"]["valences"] == [3, 15]
+    assert steps["map-open"]["status"] == "open" and steps["map-open"]["valences"] == [5, None]
+    assert [r["n"] for r in out["rows"]] == [3, 4]

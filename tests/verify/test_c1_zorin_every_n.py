@@ -1,0 +1,138 @@
+"""The modified butterfly's spectral conditions for every valence (issue 30): derived from its structural blocks.
+
+The characteristic polynomials ``p_k(x)`` read once from the scheme are compared with the explicit matrix of the zoo's
+engine at ``n = 5..12`` (the product of the ``p_k`` at ``t = cos(2 pi k/n)`` over every ``k`` is its characteristic
+polynomial, in Arb); the Schur-Cohn polynomials are counted by Sturm sequences; changing the tension or the centre
+weights in a variant file flips a step, with the valence where it fails computed and checked on the explicit matrix.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import flint
+import pytest
+import sympy as sp
+
+import symdecomp.schemes as schemes
+from symdecomp.algebra.interval_signs import count_roots
+from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.algebra.schur_cohn import schur_cohn_conditions
+from symdecomp.analysis.zoo_matrix import zoo_matrix
+from symdecomp.errors import InvalidInputError
+from symdecomp.schemes.stencil_files import load_zoo, stencil_scheme_from_text
+from symdecomp.verify.c1_every_n import T
+from symdecomp.verify.c1_zorin_every_n import X, c1_zorin_every_n, frequency_polynomials, zorin_lambda_one, zorin_spectral_every_n
+
+BUTTERFLY = (Path(schemes.__file__).parent / "zoo" / "modified-butterfly.toml").read_text()
+DIGITS = 40
+
+
+def variant(old: str, new: str, name: str) -> object:
+    """The shipped file with ``old`` replaced by ``new`` (each must occur)."""
+    assert old in BUTTERFLY
+    return stencil_scheme_from_text(BUTTERFLY.replace(old, new).replace('"modified-butterfly"', f'"{name}"'))
+
+
+def _arb(e: sp.Expr) -> flint.arb:
+    return flint.arb(str(sp.N(e, DIGITS + 20)), flint.arb(10) ** -(DIGITS + 15))
+
+
+def _product_at(polys, n: int) -> flint.acb_poly:
+    """``prod_k p_k(x)`` at ``t = cos(2 pi k/n)`` (the exceptional ``k`` at ``cos(2 pi/n)``), in Arb."""
+    total = flint.acb_poly([1])
+    for k in range(n):
+        signed = k if k <= n // 2 else k - n
+        p, angle = (polys.at[signed], 1) if signed in polys.at else (polys.other, k)
+        t = sp.cos(2 * sp.pi * angle / n)
+        coefficients = [_arb(c.subs(T, t)) for c in reversed(sp.Poly(p, X).all_coeffs())]
+        total *= flint.acb_poly(coefficients)
+    return total
+
+
+@pytest.mark.parametrize("n", range(5, 13))
+def test_the_derived_polynomials_multiply_to_the_explicit_matrix_characteristic_polynomial(n):
+    if n == 6:
+        pytest.skip("n = 6 is the regular vertex: the centre rule is the regular one")
+    polys = frequency_polynomials(load_zoo("modified-butterfly"))
+    with flint.ctx.workprec(4 * DIGITS):
+        A = flint.acb_mat([[_arb(e) for e in row] for row in zoo_matrix(load_zoo("modified-butterfly"), n).matrix.tolist()])
+        explicit = A.charpoly()
+        derived = _product_at(polys, n)
+        assert explicit.degree() == derived.degree()
+        for a, b in zip(explicit.coeffs(), derived.coeffs()):
+            assert abs(a - b) < flint.arb(10) ** -DIGITS
+
+
+def test_the_butterfly_blocks_are_triangular_so_no_coefficient_depends_on_t():
+    polys = frequency_polynomials(load_zoo("modified-butterfly"))
+    assert sp.expand(polys.other - X**2 * (X - sp.Rational(1, 8))) == 0
+    assert sp.expand(polys.at[1] - X * (X - sp.Rational(1, 2)) * (X - sp.Rational(1, 8))) == 0
+    assert sp.expand(polys.at[0] - (X - 1) * X * (X - sp.Rational(1, 4)) * (X - sp.Rational(1, 8))) == 0
+    assert polys.start == 16 and zorin_lambda_one(load_zoo("modified-butterfly")) == sp.Rational(1, 2)
+
+
+def test_every_spectral_step_is_proved_and_the_schur_cohn_polynomials_have_no_root_in_range():
+    steps = zorin_spectral_every_n(load_zoo("modified-butterfly"), per_valence=False)
+    assert {s.name for s in steps} == {"lambda-one", "frequency-zero", "frequency-one", "frequency-exceptional",
+                                       "other-frequencies"}
+    assert all(s.status == "proved" and s.valences == (16, None) for s in steps)
+    for step in steps:
+        for _, delta in (f for f in step.formulas if f[0].startswith(r"\delta")):
+            poly = flint.fmpq_poly([to_fmpq(c) for c in reversed(sp.Poly(delta, T).all_coeffs())])
+            assert count_roots(poly, -1, 1) == 0 and delta.subs(T, 0) > 0
+
+
+def test_schur_cohn_against_the_roots():
+    # (x - t/2)(x + 1/4): inside the unit disc exactly for |t| < 2; delta_2 = 1 - (t/8)^2 changes sign at t = +-8 ...
+    deltas = schur_cohn_conditions(sp.Poly((X - T / 2) * (X + sp.Rational(1, 4)), X))
+    assert [sp.factor(d) for d in deltas][0] == sp.factor(1 - T**2 / 64)
+    # ... and the last condition vanishes where a root reaches the circle: t = 2 (the root 1) and t = -2
+    assert sp.expand(deltas[-1].subs(T, 2)) == 0 and sp.expand(deltas[-1].subs(T, -2)) == 0
+    assert all(sp.expand(d.subs(T, 1)) > 0 for d in deltas)
+    with pytest.raises(InvalidInputError, match="radius"):
+        schur_cohn_conditions(sp.Poly(X, X), -1)
+
+
+def test_a_tension_above_one_quarter_refutes_the_other_frequencies_with_a_computed_valence():
+    w = sp.Rational(3, 10)
+    text = BUTTERFLY.replace('weight = "1/8"', f'weight = "{2 * w}"').replace('weight = "-1/16"', f'weight = "{-w}"')
+    scheme = stencil_scheme_from_text(text.replace('"modified-butterfly"', '"tense"'))
+    steps = {s.name: s for s in zorin_spectral_every_n(scheme, per_valence=False)}
+    other = steps["other-frequencies"]
+    assert other.status == "failed" and other.valences == (16, 16)
+    assert "n = 16, k = 3" in other.text and "0 for every t" in other.text
+    # the explicit matrix at n = 16 has the eigenvalue 2w = 3/5 (the lambda_1 derived) more than twice
+    lam = next(v for k, v in steps["lambda-one"].formulas if k == r"\lambda_1")
+    assert lam == 2 * w
+    p = sp.Poly(zoo_matrix(scheme, 16).matrix.charpoly(X).as_expr(), X)
+    q, r = sp.div(p, sp.Poly((X - lam) ** 3, X))
+    assert r.is_zero
+
+
+@pytest.mark.slow
+def test_a_centre_weight_at_frequency_two_above_lambda_one_is_refuted_at_the_first_valence_of_the_form():
+    scheme = variant("cos(4*pi*j/n)/2", "3*cos(4*pi*j/n)/2", "twisted")
+    steps = {s.name: s for s in zorin_spectral_every_n(scheme, per_valence=False)}
+    assert steps["other-frequencies"].status == "proved"
+    assert steps["frequency-exceptional"].status == "failed" and steps["frequency-exceptional"].valences == (16, 16)
+    # sigma(2) = 3/4 is an eigenvalue of the explicit matrix at that valence: its characteristic polynomial vanishes there
+    assert zoo_matrix(scheme, 16).matrix.charpoly(X).as_expr().subs(X, sp.Rational(3, 4)) == 0
+
+
+@pytest.mark.slow
+def test_below_the_structural_form_each_valence_but_the_regular_one_is_certified():
+    below = zorin_spectral_every_n(load_zoo("modified-butterfly"))[-1]
+    assert below.name == "below-structural" and below.status == "verified" and below.valences == (3, 15)
+
+
+def test_the_every_n_verdict_is_undecided_because_the_map_is_certified_per_valence_only():
+    from types import SimpleNamespace
+
+    certified = SimpleNamespace(verdict="c1", reason="certified by the stub of this test")
+    result = c1_zorin_every_n(load_zoo("modified-butterfly"), 4, certify=lambda n: certified, per_valence=False)
+    assert result.status == "undecided"
+    assert "not proved for every n" in result.summary
+    names = [s.name for s in result.steps]
+    assert "map-open" in names and names.index("other-frequencies") < names.index("map-open")
+    assert "Zorin's test at each n = 3..4" in next(s.text for s in result.steps if s.name == "reif-per-valence")

@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import flint
+import mpmath
 import pytest
 import sympy as sp
 
@@ -50,7 +51,7 @@ def _product_at(polys, n: int) -> flint.acb_poly:
     return total
 
 
-@pytest.mark.parametrize("n", range(5, 13))
+@pytest.mark.parametrize("n", [5, 7, *(pytest.param(n, marks=pytest.mark.slow) for n in range(8, 13))])
 def test_the_derived_polynomials_multiply_to_the_explicit_matrix_characteristic_polynomial(n):
     if n == 6:
         pytest.skip("n = 6 is the regular vertex: the centre rule is the regular one")
@@ -94,6 +95,7 @@ def test_schur_cohn_against_the_roots():
         schur_cohn_conditions(sp.Poly(X, X), -1)
 
 
+@pytest.mark.slow
 def test_a_tension_above_one_quarter_refutes_the_other_frequencies_with_a_computed_valence():
     w = sp.Rational(3, 10)
     text = BUTTERFLY.replace('weight = "1/8"', f'weight = "{2 * w}"').replace('weight = "-1/16"', f'weight = "{-w}"')
@@ -105,9 +107,18 @@ def test_a_tension_above_one_quarter_refutes_the_other_frequencies_with_a_comput
     # the explicit matrix at n = 16 has the eigenvalue 2w = 3/5 (the lambda_1 derived) more than twice
     lam = next(v for k, v in steps["lambda-one"].formulas if k == r"\lambda_1")
     assert lam == 2 * w
-    p = sp.Poly(zoo_matrix(scheme, 16).matrix.charpoly(X).as_expr(), X)
-    q, r = sp.div(p, sp.Poly((X - lam) ** 3, X))
-    assert r.is_zero
+    assert _eigenvalues_near(zoo_matrix(scheme, 16).matrix, lam) >= 3
+
+
+def _eigenvalues_near(matrix: sp.Matrix, value: sp.Expr, digits: int = 40) -> int:
+    """How many eigenvalues of ``matrix`` (mpmath at ``digits`` digits) lie within ``10^(-digits/4)`` of ``value``: a
+    root of multiplicity ``m`` moves by about ``eps^(1/m)`` under rounding, far inside that radius for ``m <= 3``; sympy's
+    exact characteristic polynomial of the 49 x 49 matrix with cosines in it takes minutes."""
+    with mpmath.workdps(digits):
+        A = mpmath.matrix([[mpmath.mpf(str(sp.N(e, digits + 10))) for e in row] for row in matrix.tolist()])
+        eigenvalues = mpmath.eig(A, left=False, right=False)
+        target = mpmath.mpf(str(sp.N(value, digits + 10)))
+        return sum(1 for z in eigenvalues if abs(z - target) < mpmath.mpf(10) ** (-digits // 4))
 
 
 @pytest.mark.slow
@@ -117,7 +128,7 @@ def test_a_centre_weight_at_frequency_two_above_lambda_one_is_refuted_at_the_fir
     assert steps["other-frequencies"].status == "proved"
     assert steps["frequency-exceptional"].status == "failed" and steps["frequency-exceptional"].valences == (16, 16)
     # sigma(2) = 3/4 is an eigenvalue of the explicit matrix at that valence: its characteristic polynomial vanishes there
-    assert zoo_matrix(scheme, 16).matrix.charpoly(X).as_expr().subs(X, sp.Rational(3, 4)) == 0
+    assert _eigenvalues_near(zoo_matrix(scheme, 16).matrix, sp.Rational(3, 4)) >= 1
 
 
 @pytest.mark.slow

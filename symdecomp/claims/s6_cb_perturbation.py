@@ -81,7 +81,7 @@ def _prop63(scheme: Scheme) -> CheckResult:
     Kn, Tn, In, E_0, k_ = sp.Symbol("K"), _nc("T"), _nc("I"), _nc("E_0"), sp.Symbol("k")
     t_ij, a_ij = sp.Symbol("t_ij"), sp.Symbol("a_ij")
 
-    def rest_of(last):
+    def rest_of(last: sp.Expr) -> sp.Expr:
         return sp.Product(_det(x * In - _nc("E_k")), (k_, 1, last))
 
     return CheckResult(

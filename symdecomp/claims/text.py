@@ -8,6 +8,7 @@ registry (:mod:`symdecomp.claims.registry`) carries them in its results.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 from sympy.printing.str import StrPrinter
 
@@ -17,28 +18,28 @@ __all__ = ["Text", "Verbatim"]
 class _TextPrinter(StrPrinter):
     """sympy's ``str`` printer, with relations and intervals written as in prose (``x = 1``, ``[0, 1)``)."""
 
-    def _print_Relational(self, expr):
+    def _print_Relational(self, expr: Any) -> str:
         op = "=" if expr.rel_op == "==" else expr.rel_op
         return "%s %s %s" % (self._print(expr.lhs), op, self._print(expr.rhs))
 
-    def _print_MatrixBase(self, expr):
+    def _print_MatrixBase(self, expr: Any) -> str:
         return "[%s]" % ", ".join("[%s]" % ", ".join(self._print(e) for e in row) for row in expr.tolist())
 
-    def _print_Derivative(self, expr):
+    def _print_Derivative(self, expr: Any) -> str:
         variables = "".join(" d%s" % self._print(v) for v in expr.variables)
         return "d%s/%s" % (self._print(expr.expr), variables.strip())
 
-    def _print_Product(self, expr, name="prod"):
+    def _print_Product(self, expr: Any, name: str = "prod") -> str:
         limits = ", ".join("%s=%s..%s" % tuple(self._print(x) for x in lim) for lim in expr.limits)
         return "%s_{%s} %s" % (name, limits, self.parenthesize(expr.function, 50))
 
-    def _print_Sum(self, expr):
+    def _print_Sum(self, expr: Any) -> str:
         return self._print_Product(expr, "sum")
 
-    def _print_Abs(self, expr):
+    def _print_Abs(self, expr: Any) -> str:
         return "|%s|" % self._print(expr.args[0])
 
-    def _print_Interval(self, expr):
+    def _print_Interval(self, expr: Any) -> str:
         left = "(" if expr.left_open else "["
         right = ")" if expr.right_open else "]"
         return "%s%s, %s%s" % (left, self._print(expr.start), self._print(expr.end), right)
@@ -74,7 +75,7 @@ class Text:
     """
 
     #: The words and objects, in reading order.
-    parts: tuple
+    parts: tuple[object, ...]
 
     def __init__(self, *parts: object) -> None:
         flat: list[object] = []
@@ -88,8 +89,8 @@ class Text:
     def __bool__(self) -> bool:
         return bool(self.parts)
 
-    def __add__(self, other) -> Text:
+    def __add__(self, other: object) -> Text:
         return Text(self, other)
 
-    def __radd__(self, other) -> Text:
+    def __radd__(self, other: object) -> Text:
         return Text(other, self)

@@ -215,12 +215,10 @@ def _run_zoo(args, items: None, plot) -> int:
     from symdecomp.verify.result import C1Verdict
 
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
-        from symdecomp.verify.c1_zoo import ZORIN_TOPOLOGY, spline_route
+        from symdecomp.verify.c1_zoo import spline_route, zorin_route
 
-        reason = spline_route(args.scheme)
-        zorin = reason is not None and args.scheme.topology == ZORIN_TOPOLOGY and args.scheme.steps == 1
-        if zorin:
-            reason = _zorin_every_n_refusal(args.scheme)
+        zorin = zorin_route(args.scheme)
+        reason = _zorin_every_n_refusal(args.scheme) if zorin else spline_route(args.scheme)
         if reason is not None:
             raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
                                     f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
@@ -414,7 +412,7 @@ def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None) -> in
     from symdecomp.parallel import ordered_map
     from symdecomp.verify.c1_dual_every_n import c1_dual_every_n, ngon_spectrum
     from symdecomp.verify.c1_every_n import c1_every_n, lambda_one
-    from symdecomp.verify.c1_zoo import spline_route
+    from symdecomp.verify.c1_zoo import zorin_route
     from symdecomp.verify.c1_zorin_every_n import c1_zorin_every_n, zorin_lambda_one
 
     scheme = args.scheme
@@ -422,7 +420,7 @@ def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None) -> in
     rows = ordered_map(one, valences, shared={"scheme": scheme, "max_depth": args.depth}, jobs=args.jobs,
                        executor=args.executor, warm_up=True)
     by_n = {r.n: r for r in progress(rows, len(valences), "c1", enabled=not args.quiet)}
-    zorin = one is _zoo_one and spline_route(scheme) is not None  # a primal scheme of the zoo: Zorin's test per valence
+    zorin = one is _zoo_one and zorin_route(scheme)  # a primal scheme of the zoo: Zorin's test per valence
     route = c1_zorin_every_n if zorin else c1_dual_every_n if one is _zoo_one else c1_every_n
     result = route(scheme, last, certify=lambda k: by_n[k] if k in by_n else one(k, scheme, args.depth))
     if args.json:

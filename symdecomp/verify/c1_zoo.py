@@ -41,7 +41,7 @@ from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["DUAL_METHOD", "NO_METHOD", "ZORIN_TOPOLOGY", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
-           "corner_weights", "spline_route", "c1_dual_test", "c1_zoo"]
+           "corner_weights", "spline_route", "zorin_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
 DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-spline patches (the vertices one face from "
@@ -212,6 +212,13 @@ def c1_dual_test(neighbourhood: ZooNeighbourhood, *, scheme: str, n: int, max_de
                    winding_number=ring.winding_number)
 
 
+def zorin_route(scheme: StencilScheme) -> bool:
+    """Whether C1 of ``scheme`` is Zorin's test (no spline patch, :func:`spline_route`; one primal step on triangles):
+    the one test of :func:`c1_zoo` and of ``c1 --every-n``, which then reads the spectral conditions for every n from
+    the structural blocks (:mod:`symdecomp.verify.c1_zorin_every_n`)."""
+    return spline_route(scheme) is not None and scheme.topology == ZORIN_TOPOLOGY and scheme.steps == 1
+
+
 def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilScheme, int], ZooNeighbourhood] | None = None,
            max_depth: int = 6, prec: int = 64) -> ZooC1Result:
     """C1 at valence ``n`` for a zoo scheme: the dual route (:func:`c1_dual_test`), Zorin's test for a primal scheme
@@ -220,13 +227,12 @@ def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilSch
     ``neighbourhood(scheme, n)``: the zoo engine's local mesh, characteristic map and spectral conditions; without it
     a scheme the dual route applies to cannot be tested (:class:`~symdecomp.errors.UnavailableError`).
     """
-    reason = spline_route(scheme)
-    if reason is not None and scheme.topology == ZORIN_TOPOLOGY and scheme.steps == 1:
+    if zorin_route(scheme):
         from symdecomp.verify.c1_zorin import MAX_REFINEMENT, c1_zorin_test  # imported when this route runs
 
         deepest = min(max(max_depth, 1), MAX_REFINEMENT)
         return c1_zorin_test(scheme, n, min_depth=min(4, deepest), max_depth=deepest)
-    if reason is not None:
+    if (reason := spline_route(scheme)) is not None:
         return ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason=reason, max_depth=max_depth,
                            precision=prec, method=NO_METHOD)
     if neighbourhood is None:

@@ -169,6 +169,8 @@ NOT_SHIPPED: dict[str, UnshippedFamily] = {f.name: f for f in (
             "the chapter on interpolatory schemes",
             "Kobbelt's dissertation and habilitation",
             "Li, Ma and Bao 2005 past its abstract",
+            "W. Ma, 2005, Subdivision surfaces for CAD - an overview (Computer-Aided Design 37), past its abstract "
+            "and the opening of its introduction, which say nothing of the rule: a survey of schemes that may restate it",
         ),
         "its rule at an extraordinary vertex was not read in a text that states it as Kobbelt's (its regular rules, "
         "the tensor product of the four-point scheme, are; symdecomp.schemes.zoo_literature.NOT_SHIPPED says what was "

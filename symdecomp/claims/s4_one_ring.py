@@ -164,6 +164,18 @@ _SHIFT_FORM = sp.Tuple(sp.Symbol("w_O"), sp.Function("A")(sp.Symbol("omega")), s
 PRINTED_VERTEX_CENTER = 1 - alpha - beta
 
 
+def _unaffine_example(printed_sum, scheme: Scheme) -> dict:
+    """The first valence and vertex weights at which the printed weights do not sum to one: the scheme's own
+    weights at n = 3, 4, ..., else those of its lattice's reference scheme (Catmull-Clark), whose alpha + beta
+    never vanishes."""
+    for rules in (scheme.vertex_rule, scheme.lattice.reference().vertex_rule):
+        for valence in range(3, 13):
+            example = {n: valence, alpha: rules.each_a.subs(n, valence), beta: rules.each_b.subs(n, valence)}
+            if sp.expand(printed_sum.subs(example)) != 0:
+                return example
+    raise ValueError("no valence in 3..12 where the printed vertex weights fail to sum to one")
+
+
 @claim(
     "Eq. 16",
     section="4",
@@ -179,9 +191,7 @@ def _eq16(scheme: Scheme) -> CheckResult:
     std_center = sp.expand(corrected_center.subs({alpha: standard.each_a, beta: standard.each_b}))
     if printed_sum == 0:
         return CheckResult(Status.PROVED, "the printed rule is affine")
-    example = {n: 3, alpha: standard.each_a.subs(n, 3), beta: standard.each_b.subs(n, 3)}
-    if sp.expand(printed_sum.subs(example)) == 0:
-        example = {n: 3, alpha: sp.Rational(1, 6), beta: sp.Rational(1, 36)}
+    example = _unaffine_example(printed_sum, scheme)
     O, i = sp.Symbol("O"), sp.Symbol("i")
     return CheckResult(
         Status.CORRECTED,
@@ -193,7 +203,7 @@ def _eq16(scheme: Scheme) -> CheckResult:
         ),
         scope=Scope.EVERY_N,
         counterexample=Text(
-            eq(n, 3), " with the weights ", eq(alpha, example[alpha]), ", ", eq(beta, example[beta]),
+            eq(n, example[n]), " with the weights ", eq(alpha, example[alpha]), ", ", eq(beta, example[beta]),
             ": the printed weights sum to ", sp.expand((PRINTED_VERTEX_CENTER + n * alpha + n * beta).subs(example)),
         ),
         correction=Text(

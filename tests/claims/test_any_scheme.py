@@ -179,3 +179,21 @@ def test_eq_16_names_the_vertex_weights_of_the_scheme_it_was_given():
                              "weight 13/16")
     assert str(check_claim("Eq. 16").evidence).endswith("the vertex rule of the scheme 'catmull-clark' (alpha = 3/(2*n**2), "
                                                         "beta = 1/(4*n**2)) gives O the weight 1 - 7/(4*n)")
+
+
+def test_eq_16_counterexample_is_searched_where_the_schemes_weights_hide_the_error():
+    """A vertex rule with alpha = beta = 0 at n = 3 satisfies the printed rule there; the counterexample moves to the
+    first valence where the printed weights do not sum to one (n = 4, with the file's own weights), computed rather than
+    a typed fallback."""
+    from symdecomp.symbols import alpha, beta, n
+    from tests.claims.test_one_model import OWN_REGULAR_VERTEX
+
+    text = OWN_REGULAR_VERTEX.replace('a = "1/(8*n)"\nb = "1/(16*n)"', 'a = "(n - 3)/(8*n)"\nb = "(n - 3)/(16*n)"')
+    scheme = scheme_from_text(text)
+    assert scheme.vertex_rule.each_a.subs(n, 3) == 0 == scheme.vertex_rule.each_b.subs(n, 3)
+    counterexample = check_claim("Eq. 16", scheme).counterexample
+    exact = [p for p in counterexample.parts if isinstance(p, sp.Basic)]
+    printed_sum = 1 + (n - 1) * (alpha + beta)  # 1 - alpha - beta + n alpha + n beta
+    example = {n: 4, alpha: sp.Rational(1, 32), beta: sp.Rational(1, 64)}
+    assert sp.Eq(n, 4) in exact and sp.Eq(alpha, example[alpha]) in exact and sp.Eq(beta, example[beta]) in exact
+    assert printed_sum.subs(example) in exact and printed_sum.subs(example) == sp.Rational(73, 64)

@@ -48,7 +48,7 @@ from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import N, StencilScheme
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_int, check_type
-from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, _in_t, c1_every_n
+from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, c1_every_n, laurent_in_t
 from symdecomp.verify.c1_uniform import t_lower_bound
 
 if TYPE_CHECKING:
@@ -158,7 +158,7 @@ def _coefficients_in_t(p: sp.Expr, what: str) -> sp.Expr:
     out = sp.Integer(0)
     for (power,), c in sp.Poly(sp.expand(p), X).terms():
         try:
-            ct = in_t(_in_t(c))
+            ct = in_t(laurent_in_t(c))
         except NotApplicableError as exc:
             raise NotApplicableError(f"{what}: {exc}") from None
         if ct is None or ct.has(N) or not sp.fraction(sp.cancel(ct))[1].is_number:

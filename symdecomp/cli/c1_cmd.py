@@ -426,7 +426,7 @@ def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None) -> in
     if args.json:
         print_json(args, {**result.as_json(), "rows": [by_n[k].json for k in sorted(by_n) if k <= result.certified[1] + 1]})
     else:
-        print(f"{scheme.name}: C1 for every valence")
+        print(f"{scheme.name}: C1 for every valence? {result.status}")  # the question and the verdict, never the claim
         for step in result.steps:
             first, last = step.valences
             where = f"n >= {first}" if last is None else f"n = {first}..{last}" if last > first else f"n = {first}"

@@ -182,7 +182,7 @@ def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNS
     if tail is None:
         return EveryNStep("no exact tail bound for the eigenvalues of E_0 besides 1 (Proposition 5.1's argument does not "
                           "apply)", "open", (3, None), "frequency-zero")
-    return EveryNStep(f"for n >= {tail.start} the eigenvalues of E_0 besides 1 are below lambda_1: cos(pi/n) >= 1 - 5/n^2 "
+    return EveryNStep("the eigenvalues of E_0 besides 1 are below lambda_1: cos(pi/n) >= 1 - 5/n^2 "
                       f"and the signs of {len(tail.facts)} rational functions of n (Proposition 5.1's tail bound)",
                       "proved", (tail.start, None), "frequency-zero",
                       tuple((f"f_{{{k}}}(n)", fact) for k, fact in enumerate(dict.fromkeys(tail.facts), 1)))
@@ -293,7 +293,7 @@ def c1_every_n(scheme: Scheme | StencilScheme, last: int = 64, *, progress: Call
         if progress:
             progress(k)
         if r.verdict != "c1":
-            step = EveryNStep(f"n = {k}: {r.reason}", "failed" if r.verdict == "not-c1" else "open", (k, k), "reif-at-n")
+            step = EveryNStep(r.reason, "failed" if r.verdict == "not-c1" else "open", (k, k), "reif-at-n")
             if r.verdict != "not-c1":
                 return EveryNResult(scheme.name, "undecided", f"Reif's test is undecided at n = {k}", spectral + (step,),
                                     (lo, k - 1))
@@ -315,7 +315,7 @@ def c1_every_n(scheme: Scheme | StencilScheme, last: int = 64, *, progress: Call
                             f"t = cos(2 pi/n)), Reif's test certified at n = {lo}..{last}", steps, (lo, last), uniform=uniform)
     why = ("no bound on its control net that holds for every large n is derived" if uniform is None else
            f"{uniform.facts[-1]} (the nets' exact signs in t = cos(2 pi/n) for n >= {last + 1})")
-    steps += (EveryNStep(f"n > {last}: regularity and injectivity of the characteristic map are open: {why}", "open",
+    steps += (EveryNStep(f"regularity and injectivity of the characteristic map beyond the certified valences are open: {why}", "open",
                          (last + 1, None), "map-open"),)
     what = ("the spectral conditions hold for every n >= 3 (proved); " if spectral_ok else
             "the spectral conditions are not proved for every n; ")

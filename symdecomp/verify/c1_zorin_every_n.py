@@ -245,7 +245,7 @@ def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
     for n in (n for n in range(3, start) if n != regular):
         r = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n, real_matrix=real_matrix(zoo_matrix(scheme, n)))
         if r.status is not C1Verdict.C1:
-            return EveryNStep(f"n = {n}: {r.reason}", "failed" if r.status is C1Verdict.NOT_C1 else "open", (n, n),
+            return EveryNStep(r.reason, "failed" if r.status is C1Verdict.NOT_C1 else "open", (n, n),
                               "below-structural")
     return EveryNStep(f"n = 3..{start - 1} but {regular} (below the structural form's first valence; n = 3, 4 have rules of "
                       "their own): the spectral conditions certified valence by valence (exact factors of each block); "

@@ -163,5 +163,5 @@ def regime_every_n(scheme: Scheme, last: int = 16) -> RegimeEveryN:
     certified = EveryNStep(f"the regime at each n = {lo}..{last}, certified: " + ", ".join(f"{m}: {r}" for m, r in rows),
                            "verified", (lo, last))
     return RegimeEveryN(scheme.name, tuple(rows), None, (certified, EveryNStep(
-        f"n > {last}: no argument for every n (the unbounded regime is not shown from any n <= {last} on)", "open",
+        f"no argument for every n beyond the certified valences (the unbounded regime is not shown from any n <= {last} on)", "open",
         (last + 1, None))))

@@ -112,7 +112,7 @@ def test_the_command(capsys, tmp_path):
     assert [s["status"] for s in data["steps"]] == ["proved", "proved", "proved", "verified", "proved", "proved", "proved"]
     assert main(["c1", "--n", "3:"]) == 0
     out = capsys.readouterr().out
-    assert out.splitlines()[0] == "catmull-clark: C1 for every valence" and out.splitlines()[-1].startswith("proved: C1 for every n >= 3")
+    assert out.splitlines()[0] == "catmull-clark: C1 for every valence? proved" and out.splitlines()[-1].startswith("proved: C1 for every n >= 3")
     assert main(["c1", "--n", "5:"]) == 2
     assert "an open range starts at 3" in capsys.readouterr().err
     assert main(["c1", "--every-n", "--n", "5"]) == 2

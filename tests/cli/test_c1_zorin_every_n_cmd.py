@@ -60,3 +60,31 @@ def test_the_butterfly_every_n_text_asks_and_names_each_range_once(monkeypatch, 
     for line in steps:  # "[open] n >= 5: n > 4: ..." said the valences twice
         where, text = line.split("] ", 1)[1].split(": ", 1)
         assert where.startswith("n ") and not text.startswith(("n > ", "n >= ", "n = ", "for n ")), line
+
+
+def test_the_butterfly_every_n_computes_its_frequency_polynomials_once(monkeypatch, capsys, tmp_path):
+    """The blocks' characteristic polynomials are computed once in a run: the check before any valence, the proof and
+    the plot's lambda_1 read the same (they are not cached)."""
+    from matplotlib.figure import Figure
+
+    from symdecomp.verify import c1_zorin_every_n as zorin
+
+    _fast(monkeypatch)
+    calls: list[str] = []
+    computed = zorin.frequency_polynomials
+
+    def counted(scheme):
+        calls.append(scheme.name)
+        return computed(scheme)
+
+    def figure(result, rows, lam):
+        calls.append(f"lambda_1 = {lam}")
+        return Figure()
+
+    monkeypatch.setattr(zorin, "frequency_polynomials", counted)
+    monkeypatch.setattr(c1_cmd, "_every_n_figure", figure)
+    plot = tmp_path / "every-n.png"
+    assert main(["c1", "--every-n", "--scheme", "modified-butterfly", "--quiet", "--jobs", "1", "--plot", str(plot)]) == 1
+    assert calls == ["modified-butterfly", "lambda_1 = 1/2"]  # once; the plot's lambda_1 read from the same polynomials
+    assert plot.read_bytes().startswith(b"\x89PNG")
+    assert capsys.readouterr().out.splitlines()[0] == "modified-butterfly: C1 for every valence? undecided"

@@ -24,7 +24,9 @@ claims about Catmull-Clark take the quad scheme given); a scheme on another latt
 check reads the lattice's reference scheme (:meth:`~symdecomp.schemes.lattice.Lattice.own_or_reference`), and the
 verdict is the named scheme's. What a check needs is therefore asked of the scheme it reads (:func:`read_on`): a
 triangle file with free parameters gets Catmull-Clark's verdict for Catmull-Clark's regimes, as every triangle file
-does, and "not applicable" for Loop's.
+does, and "not applicable" for Loop's. Each claim also declares the lattices it reads the scheme on (``reads_on=``):
+:meth:`~symdecomp.claims.registry.Claim.reads_instead` is the one test both routes ask, so a scheme of the zoo on the
+other lattice (sqrt(3), the modified butterfly) gets the reference scheme's verdict as a 1-ring scheme does.
 """
 
 from __future__ import annotations
@@ -163,6 +165,7 @@ def real_lambda1_on(*lattices: Lattice) -> Requirement:
     r"($|\mu| < \lambda_1^2$, $\mu$ elliptic), is bounded at $n = 4$, and is unbounded for every $n \ge 5$, caused by "
     r"the hyperbolic (frequency 2) eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004); Peters, Reif, CAGD 21 (2004)).",
     requires=(read_on(NO_FREE_PARAMETERS, QUAD), real_lambda1_on(QUAD)),
+    reads_on=(QUAD,),
 )
 def _catmull_clark(scheme: Scheme) -> CheckResult:
     return check_regimes(_on(scheme, QUAD), CATMULL_CLARK)
@@ -177,6 +180,7 @@ def _catmull_clark(scheme: Scheme) -> CheckResult:
     r"eigenvalue at $\lambda_1^2$) and at $n = 6$, and unbounded for every $n \ge 7$, caused by the hyperbolic "
     r"eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004)).",
     requires=(read_on(NO_FREE_PARAMETERS, TRIANGLE), real_lambda1_on(TRIANGLE)),
+    reads_on=(TRIANGLE,),
 )
 def _loop(scheme: Scheme) -> CheckResult:
     return check_regimes(_on(scheme, TRIANGLE), LOOP)
@@ -189,6 +193,7 @@ def _loop(scheme: Scheme) -> CheckResult:
     statement=r"Loop's vertex weight $\beta(n) = (5/8 - (3/8 + \cos(2\pi/n)/4)^2)/n$ makes the frequency-0 (elliptic) "
     r"eigenvalue equal to $\lambda_1^2$ at every valence (Loop 1987; Peters, Reif 2004).",
     requires=(real_lambda1_on(TRIANGLE),),
+    reads_on=(TRIANGLE,),
 )
 def _loop_weight(scheme: Scheme) -> CheckResult:
     s = _on(scheme, TRIANGLE)
@@ -313,6 +318,7 @@ def _argument(first: int, text: str) -> tuple[Step, ...]:
     r"for Loop at $n = 4, 5$ the elliptic part dominates, and the two tie at the regular valence (Karciauskas, Peters, "
     r"Reif, CAGD 21 (2004)).",
     requires=(read_on(NO_FREE_PARAMETERS, QUAD, TRIANGLE), real_lambda1_on(QUAD, TRIANGLE)),
+    reads_on=(QUAD, TRIANGLE),
 )
 def _shape(scheme: Scheme) -> CheckResult:
     quad = check_dominance(_on(scheme, QUAD), QUAD.select(DOMINANCE, "the printed dominance"))

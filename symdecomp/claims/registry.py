@@ -74,6 +74,7 @@ from symdecomp.claims.guards import DEFAULT_BUDGET, BudgetExceeded, at_parameter
 from symdecomp.claims.order import BEYOND, module_ranks, section_key, section_modules
 from symdecomp.claims.text import Text, Verbatim
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
+from symdecomp.schemes.lattice import Lattice, lattice
 from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
 from symdecomp.schemes.stencils import StencilScheme
 
@@ -293,6 +294,20 @@ class Claim:
     #: ``False`` when the check never reads the scheme it is given (declared with ``reads_scheme=False``; a test runs
     #: each such check on an object that fails on any use): its verdict is that of the printed statement alone.
     reads_scheme: bool = True
+    #: The lattices on which the check reads the scheme it is given (declared with ``reads_on=``): given a scheme on
+    #: another lattice it reads these lattices' reference schemes instead (Catmull-Clark, Loop), so the verdict there
+    #: is theirs (:meth:`reads_instead`). Empty: the scheme given, on any lattice.
+    reads_on: tuple[Lattice, ...] = ()
+
+    def reads_instead(self, scheme: Scheme | StencilScheme) -> Scheme | None:
+        """The scheme the check reads in place of ``scheme`` (``scheme`` on a lattice outside :attr:`reads_on`: the
+        reference scheme of the first lattice it reads, and through it of the others), or ``None`` where it reads
+        ``scheme`` itself. The one test of both routes (:func:`check_claim` and
+        :func:`~symdecomp.claims.zoo_claims.zoo_claim_result`): a triangle scheme of the zoo gets Catmull-Clark's
+        regimes as Loop does."""
+        if not self.reads_on or lattice(scheme.lattice) in self.reads_on:
+            return None
+        return self.reads_on[0].reference()
 
     @property
     def involves_no_scheme(self) -> bool:
@@ -314,16 +329,19 @@ REGISTRY: dict[str, Claim] = {}
 
 
 def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (),
-          parameter: str = "n", reads_scheme: bool = True) -> Callable[[Callable[[Scheme], CheckResult]], Callable[[Scheme], CheckResult]]:
+          parameter: str = "n", reads_scheme: bool = True,
+          reads_on: tuple[Lattice, ...] = ()) -> Callable[[Callable[[Scheme], CheckResult]], Callable[[Scheme], CheckResult]]:
     """Decorator registering ``check`` as the check of the claim ``label``, for schemes meeting ``requires``;
-    ``reads_scheme=False`` declares that the check never reads the scheme it is given (:attr:`Claim.reads_scheme`)."""
+    ``reads_scheme=False`` declares that the check never reads the scheme it is given (:attr:`Claim.reads_scheme`),
+    ``reads_on`` the lattices on which it reads it (:attr:`Claim.reads_on`)."""
 
     def register(check: Callable[[Scheme], CheckResult]) -> Callable[[Scheme], CheckResult]:
         if label in REGISTRY:
             raise ValueError(f"claim {label!r} is registered twice")
         module = check.__module__
         order = sum(1 for c in REGISTRY.values() if c.module == module)
-        REGISTRY[label] = Claim(label, section, title, statement, check, order, tuple(requires), parameter, module, reads_scheme)
+        REGISTRY[label] = Claim(label, section, title, statement, check, order, tuple(requires), parameter, module, reads_scheme,
+                                tuple(reads_on))
         return check
 
     return register
@@ -373,7 +391,8 @@ def check_claim(label: str, scheme: Scheme | StencilScheme | None = None, *,
         from symdecomp.claims.zoo_claims import zoo_claim_result  # imports this module
 
         return zoo_claim_result(label, scheme, budget=budget)
-    result = _check_claim(label, catmull_clark() if scheme is None else check_scheme(scheme), budget)
+    scheme = catmull_clark() if scheme is None else check_scheme(scheme)
+    result = _check_claim(label, get_claim(label).reads_instead(scheme) or scheme, budget)
     return dataclasses.replace(result, parameter=get_claim(label).parameter)
 
 

@@ -9,7 +9,10 @@ that answers it for this scheme (:data:`ENGINE_COMMANDS`), since its check is wr
 schemes only. A claim that involves no scheme (:attr:`~symdecomp.claims.registry.Claim.involves_no_scheme`: its check
 reads none and it requires nothing, as Section 2's n-gons, Fourier matrix and circulants and Section 6's CB-matrices)
 is checked as for any scheme, and says so: the same property decides it on the 1-ring route (a triangle scheme such
-as Loop), so the two routes agree on which claims involve no scheme.
+as Loop), so the two routes agree on which claims involve no scheme. A claim whose check reads the scheme only on
+some lattices (:attr:`~symdecomp.claims.registry.Claim.reads_on`: "Curvature regime: Catmull-Clark" on quad meshes)
+reads a scheme of the zoo on another lattice as the 1-ring route reads Loop: through the lattice's reference scheme
+(:meth:`~symdecomp.claims.registry.Claim.reads_instead`, the one test of both routes), and has its verdict.
 """
 
 from __future__ import annotations
@@ -45,6 +48,12 @@ def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None 
     if claim.involves_no_scheme:
         result = check_claim(label, budget=budget)  # the check reads no scheme: its verdict is the same for every one
         return dataclasses.replace(result, evidence=Text("the statement involves no scheme: ", result.evidence))
+    if (instead := claim.reads_instead(scheme)) is not None:  # as on the 1-ring route: the scheme it reads is not this one
+        result = check_claim(label, instead, budget=budget)
+        return dataclasses.replace(result, evidence=Text(
+            "the statement is about a scheme on ", " and ".join(f"{x.name} meshes" for x in claim.reads_on), " and ",
+            Verbatim(repr(scheme.name)), f" is on {scheme.lattice} meshes, so the check reads ", Verbatim(instead.name),
+            f", as for every scheme on {scheme.lattice} meshes: ", result.evidence))
     if claim.module in ENGINE_COMMANDS:
         what, command = ENGINE_COMMANDS[claim.module]
         reason = Text("the question the claim answers (", what, ") applies to the zoo scheme ", Verbatim(repr(scheme.name)),

@@ -33,6 +33,7 @@ from symdecomp.errors import InvalidInputError
 
 if TYPE_CHECKING:
     from symdecomp.schemes.scheme import Scheme
+    from symdecomp.verify.c1_zorin_every_n import FrequencyPolynomials
     from symdecomp.verify.result import C1Verdict
 
 __all__ = ["register", "run"]
@@ -218,27 +219,27 @@ def _run_zoo(args, items: None, plot) -> int:
         from symdecomp.verify.c1_zoo import spline_route, zorin_route
 
         zorin = zorin_route(args.scheme)
-        reason = _zorin_every_n_refusal(args.scheme) if zorin else spline_route(args.scheme)
+        polys, reason = _zorin_polynomials(args.scheme) if zorin else (None, spline_route(args.scheme))
         if reason is not None:
             raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
                                     f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
-        return _run_every_n(args, _zoo_one, ZORIN_EVERY_N_CERTIFIED if zorin else ZOO_EVERY_N_CERTIFIED, plot)
+        return _run_every_n(args, _zoo_one, ZORIN_EVERY_N_CERTIFIED if zorin else ZOO_EVERY_N_CERTIFIED, plot, polys)
     results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
     write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 
 
-def _zorin_every_n_refusal(scheme) -> str | None:
-    """``None`` when the spectral conditions of a primal scheme of the zoo are read for every n from its structural
-    blocks (:mod:`symdecomp.verify.c1_zorin_every_n`), else why not (before any valence is tested)."""
+def _zorin_polynomials(scheme) -> tuple[FrequencyPolynomials | None, str | None]:
+    """``(polys, None)``: the blocks' characteristic polynomials of a primal scheme of the zoo for every n
+    (:func:`~symdecomp.verify.c1_zorin_every_n.frequency_polynomials`), read once here, before any valence is tested,
+    and handed to the proof and the plot; ``(None, why not)`` where they are not read."""
     from symdecomp.errors import InvalidSchemeError, NotApplicableError
     from symdecomp.verify.c1_zorin_every_n import frequency_polynomials
 
     try:
-        frequency_polynomials(scheme)
+        return frequency_polynomials(scheme), None
     except (NotApplicableError, InvalidSchemeError) as exc:
-        return f"its blocks for every n are not read: {exc}"
-    return None
+        return None, f"its blocks for every n are not read: {exc}"
 
 
 def _zoo_figure(scheme, results: list[_Row]):
@@ -404,11 +405,12 @@ def _run_sharp(args, items: list[tuple], plot) -> int:
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
 
 
-def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None) -> int:
+def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None, polys: FrequencyPolynomials | None = None) -> int:
     """``--every-n``: :func:`~symdecomp.verify.c1_every_n.c1_every_n`, or for a dual scheme of the zoo (``one`` is
     :func:`_zoo_one`) :func:`~symdecomp.verify.c1_dual_every_n.c1_dual_every_n`, for a primal one
     :func:`~symdecomp.verify.c1_zorin_every_n.c1_zorin_every_n`; ``one(n)`` at ``3..last`` on the pool.
-    ``--plot``: the proof's ``lambda_1(n)`` beside the certified valences (:mod:`symdecomp.output.plotting.every_n_chart`)."""
+    ``--plot``: the proof's ``lambda_1(n)`` beside the certified valences (:mod:`symdecomp.output.plotting.every_n_chart`).
+    ``polys``: a primal zoo scheme's blocks' polynomials, read once by :func:`_zorin_polynomials`."""
     from symdecomp.parallel import ordered_map
     from symdecomp.verify.c1_dual_every_n import c1_dual_every_n, ngon_spectrum
     from symdecomp.verify.c1_every_n import c1_every_n, lambda_one
@@ -421,19 +423,20 @@ def _run_every_n(args, one=_one, last: int = EVERY_N_CERTIFIED, plot=None) -> in
                        executor=args.executor, warm_up=True)
     by_n = {r.n: r for r in progress(rows, len(valences), "c1", enabled=not args.quiet)}
     zorin = one is _zoo_one and zorin_route(scheme)  # a primal scheme of the zoo: Zorin's test per valence
-    route = c1_zorin_every_n if zorin else c1_dual_every_n if one is _zoo_one else c1_every_n
-    result = route(scheme, last, certify=lambda k: by_n[k] if k in by_n else one(k, scheme, args.depth))
+    certify = lambda k: by_n[k] if k in by_n else one(k, scheme, args.depth)  # noqa: E731
+    result = (c1_zorin_every_n(scheme, last, certify=certify, polys=polys) if zorin else
+              (c1_dual_every_n if one is _zoo_one else c1_every_n)(scheme, last, certify=certify))
     if args.json:
         print_json(args, {**result.as_json(), "rows": [by_n[k].json for k in sorted(by_n) if k <= result.certified[1] + 1]})
     else:
-        print(f"{scheme.name}: C1 for every valence")
+        print(f"{scheme.name}: C1 for every valence? {result.status}")  # the question and the verdict, never the claim
         for step in result.steps:
             first, last = step.valences
             where = f"n >= {first}" if last is None else f"n = {first}..{last}" if last > first else f"n = {first}"
             print(f"  [{step.status}] {where}: {step.text}")
         print(f"{result.status}: {result.summary}")
     write_plot(plot, lambda: _every_n_figure(result, [by_n[k].json for k in sorted(by_n)],
-                                             zorin_lambda_one(scheme) if zorin else
+                                             zorin_lambda_one(scheme, polys) if zorin else
                                              ngon_spectrum(scheme).first if one is _zoo_one else lambda_one(scheme)))
     return 0 if result.status in ("proved", "verified") else 1
 

@@ -31,14 +31,13 @@ def check_evaldata_plot(args: Any) -> PlotTarget | None:
 
 
 def piece_values(piece: Any) -> list[complex]:
-    """The eigenvalues of one valence of Stam's file as written: its binary piece (``2n + 8`` float64 first), its JSON
-    text, or its decimal entry (``"values"``)."""
-    import numpy as np  # only when drawing: the command's parsers and --help load no numpy
-
+    """The eigenvalues of one valence of Stam's file as written: its binary piece (read by the file's own reader,
+    :func:`~symdecomp.output.evaldata.read_binary_valence`), its JSON text, or its decimal entry (``"values"``)."""
     data = getattr(piece, "data", None)
     if isinstance(data, bytes):
-        size = 2 * int(piece.n) + 8
-        return [complex(v) for v in np.frombuffer(data[:8 * size], "<f8")]
+        from symdecomp.output.evaldata import read_binary_valence  # only when drawing: --help loads no numpy
+
+        return [complex(v) for v in read_binary_valence(int(piece.n), data)[0].values]
     text = getattr(piece, "text", None)
     entry = json.loads(text) if isinstance(text, str) else piece
     return [complex(float(v)) for v in entry["values"]]

@@ -64,7 +64,9 @@ def register(sub) -> None:
                    help="with --kind: OpenSubdiv's creasing method for semi-sharp creases (default both)")
     flag(p, "--json",
                    help='print [{"n", "levels", "seed", "agrees", "predictions": [{"name", "kind", "predicted", '
-                        '"observed", "disagreement", "rate", "observed_rate", "agrees"}]}]; with --kind '
+                        '"observed", "disagreement", "rate", "observed_rate", "agrees", "per_level": [{"level", '
+                        '"disagreement"}] (a limit row\'s disagreement at each level compared, as --plot draws it)}]}]; '
+                        'with --kind '
                         '[{"scheme", "kind", "k", "sharpness", "boundary", "creasing", "level", "agrees", '
                         '"checks": [{"name", "disagreement", "comparable", "agrees", "note"}]}]')
     add_quiet_option(p)

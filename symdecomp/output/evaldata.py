@@ -68,7 +68,8 @@ from symdecomp.errors import EvalDataFileError, PrecisionError, SymdecompError
 from symdecomp.validate import FLOAT_DIGITS
 
 __all__ = [
-    "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "binary_valence", "BinaryValence", "read_binary", "json_chunks",
+    "EvalDataFileError", "FLOAT_DIGITS", "binary_bytes", "binary_chunks", "binary_valence", "BinaryValence", "read_binary",
+    "read_binary_valence", "json_chunks",
     "json_valence", "json_valence_text", "EncodedValence",
     "decimal_valence", "read_json", "sharp_entry", "sharp_json_chunks", "read_sharp_json", "load_document",
     "document_chunks",
@@ -151,17 +152,22 @@ def read_binary(path) -> dict[int, RoundedEigenData]:
         raise EvalDataFileError(f"{path}: {len(raw)} bytes, but Nmax = {nmax} needs {expected}")
     out, pos = {}, 4
     for n in range(3, nmax + 1):
-        k = 2 * n + 8
-
-        offset = pos
-        values = np.frombuffer(raw, "<f8", k, offset)
-        offset += 8 * k
-        inverse = np.frombuffer(raw, "<f8", k * k, offset).reshape((k, k), order="F")
-        offset += 8 * k * k
-        phi = np.stack([np.frombuffer(raw, "<f8", 16 * k, offset + 8 * 16 * k * i).reshape((k, 16), order="F") for i in range(3)])
-        pos = offset + 8 * 48 * k
-        out[n] = RoundedEigenData(n, values.astype(float), inverse.astype(float), phi.astype(float))
+        out[n], pos = read_binary_valence(n, raw, pos)
     return out
+
+
+def read_binary_valence(n: int, raw: bytes, offset: int = 0) -> tuple[RoundedEigenData, int]:
+    """Valence ``n``'s piece of the binary file (module docstring) read from ``raw`` at ``offset``: its arrays, and the
+    offset where the next piece starts. The one decoder of the layout :func:`binary_valence` writes."""
+    k = 2 * n + 8
+    if len(raw) < offset + 8 * k * (1 + k + 48):
+        raise EvalDataFileError(f"valence {n}: {len(raw) - offset} bytes, but its piece needs {8 * k * (1 + k + 48)}")
+    values = np.frombuffer(raw, "<f8", k, offset)
+    offset += 8 * k
+    inverse = np.frombuffer(raw, "<f8", k * k, offset).reshape((k, k), order="F")
+    offset += 8 * k * k
+    phi = np.stack([np.frombuffer(raw, "<f8", 16 * k, offset + 8 * 16 * k * i).reshape((k, 16), order="F") for i in range(3)])
+    return RoundedEigenData(n, values.astype(float), inverse.astype(float), phi.astype(float)), offset + 8 * 48 * k
 
 
 def json_valence(d: RoundedEigenData) -> dict:

@@ -46,7 +46,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached
 from symdecomp.verify.c1_uniform import UniformMapResult
 
-__all__ = ["EveryNStep", "EveryNResult", "spectral_every_n", "c1_every_n", "lambda_one"]
+__all__ = ["EveryNStep", "EveryNResult", "laurent_in_t", "spectral_every_n", "c1_every_n", "lambda_one"]
 
 T = sp.Symbol("t", real=True)  # cos(2 pi j/n)
 HALF = sp.Rational(-1, 2)  # t_1 = cos(2 pi/n) at n = 3
@@ -97,8 +97,15 @@ class EveryNResult:
                 "failure": self.failure, "steps": [s.as_json() for s in self.steps]}
 
 
-def _in_t(expr) -> sp.Expr:
-    """A Laurent polynomial in ``omega``, symmetric under ``omega -> 1/omega``, as a polynomial in ``t = cos(angle)``."""
+def laurent_in_t(expr) -> sp.Expr:
+    """A Laurent polynomial in ``omega``, symmetric under ``omega -> 1/omega``, as a polynomial in ``t = cos(angle)``
+    (``omega^k + omega^-k = 2 T_k(t)``); :class:`NotApplicableError` where it is not symmetric or not Laurent.
+    The one reading of the per-frequency blocks in ``t``, shared by the every-n routes.
+
+    >>> from symdecomp.symbols import omega
+    >>> laurent_in_t(3 + omega**2 + omega**-2)
+    4*t**2 + 1
+    """
     expr = sp.expand(sp.sympify(expr, strict=True))
     terms: dict[int, sp.Expr] = {}
     for term in sp.Add.make_args(expr):
@@ -121,7 +128,7 @@ def _positive(expr, lo, hi) -> bool:
 def _tangent_steps(M: sp.Matrix, radius: sp.Expr) -> list[EveryNStep]:
     """S1-S4 for a 1 x 1 or 2 x 2 ``M(t)``: ``(name, text, shown, formulas)`` per step (formulas: what the derivations print)."""
     if M.rows == 1:
-        lam = _in_t(M[0, 0])
+        lam = laurent_in_t(M[0, 0])
         checks = [
             ("monotone", f"the eigenvalue of M at t = cos(2 pi j/n) is {lam}, increasing in t (slope {sp.diff(lam, T)}) and "
              "positive on [-1, 1]: lambda_1 (t = cos(2 pi/n)) is double (j = 1, n - 1) and larger than every other frequency's",
@@ -131,7 +138,7 @@ def _tangent_steps(M: sp.Matrix, radius: sp.Expr) -> list[EveryNStep]:
              ((r"1 - \lambda(t)", 1 - lam), (r"\lambda(t) - \rho_S", lam - radius), (r"\rho_S", radius))),
         ]
     else:
-        tr, det = _in_t(M.trace()), _in_t(M.det())
+        tr, det = laurent_in_t(M.trace()), laurent_in_t(M.det())
         disc = sp.expand(tr**2 - 4 * det)
         d_tr, d_disc = sp.diff(tr, T), sp.diff(disc, T)
         increasing = _positive(d_tr, -1, 1) and (bool(sign_on_interval(d_disc, T, -1, 1, strict=False))
@@ -160,7 +167,7 @@ def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNS
     if M.rows == 1:
         other = sp.expand(E0.trace() - 1)  # E_0 is 2 x 2 with the eigenvalue 1
         # zero as a rational function of t = cos(2 pi/n) and n taken apart is zero for every n (no simplify needed)
-        identical = sp.cancel(other.subs(sp.cos(2 * sp.pi / N), T) - _in_t(M[0, 0]) ** 2) == 0
+        identical = sp.cancel(other.subs(sp.cos(2 * sp.pi / N), T) - laurent_in_t(M[0, 0]) ** 2) == 0
         lam1 = M[0, 0].subs(OMEGA, sp.exp(2 * sp.pi * sp.I / N))
         defect = 0 if identical else sp.simplify(sp.expand((other - lam1**2).rewrite(sp.cos)))
         if defect == 0:
@@ -175,7 +182,7 @@ def _frequency_zero_step(scheme: Scheme, M: sp.Matrix, E0: sp.Matrix) -> EveryNS
     if tail is None:
         return EveryNStep("no exact tail bound for the eigenvalues of E_0 besides 1 (Proposition 5.1's argument does not "
                           "apply)", "open", (3, None), "frequency-zero")
-    return EveryNStep(f"for n >= {tail.start} the eigenvalues of E_0 besides 1 are below lambda_1: cos(pi/n) >= 1 - 5/n^2 "
+    return EveryNStep("the eigenvalues of E_0 besides 1 are below lambda_1: cos(pi/n) >= 1 - 5/n^2 "
                       f"and the signs of {len(tail.facts)} rational functions of n (Proposition 5.1's tail bound)",
                       "proved", (tail.start, None), "frequency-zero",
                       tuple((f"f_{{{k}}}(n)", fact) for k, fact in enumerate(dict.fromkeys(tail.facts), 1)))
@@ -197,9 +204,9 @@ def lambda_one(scheme: Scheme) -> sp.Expr | None:
         return None
     try:
         if M.rows == 1:
-            lam = _in_t(M[0, 0])
+            lam = laurent_in_t(M[0, 0])
         else:
-            tr, det = _in_t(M.trace()), _in_t(M.det())
+            tr, det = laurent_in_t(M.trace()), laurent_in_t(M.det())
             lam = (tr + sp.sqrt(sp.expand(tr**2 - 4 * det))) / 2
     except NotApplicableError:
         return None
@@ -240,7 +247,7 @@ def _fails_from(scheme: Scheme, first: int, certify) -> EveryNStep | None:
     if M.has(N):  # an edge rule in n: lambda_1 has no limit of this form
         return None
     try:
-        tr, det = _in_t(M.trace()).subs(T, 1), _in_t(M.det()).subs(T, 1)
+        tr, det = laurent_in_t(M.trace()).subs(T, 1), laurent_in_t(M.det()).subs(T, 1)
         limit = max(sp.Poly(x**2 - tr * x + det if M.rows == 2 else x - tr, x).all_roots(), key=lambda r: float(r))
         q, rest = sp.div(sp.Poly(E0.charpoly(x).as_expr(), x), sp.Poly(x - 1, x))
         bound = rational_between(limit, limit + sp.Rational(1, 10**4))
@@ -286,7 +293,7 @@ def c1_every_n(scheme: Scheme | StencilScheme, last: int = 64, *, progress: Call
         if progress:
             progress(k)
         if r.verdict != "c1":
-            step = EveryNStep(f"n = {k}: {r.reason}", "failed" if r.verdict == "not-c1" else "open", (k, k), "reif-at-n")
+            step = EveryNStep(r.reason, "failed" if r.verdict == "not-c1" else "open", (k, k), "reif-at-n")
             if r.verdict != "not-c1":
                 return EveryNResult(scheme.name, "undecided", f"Reif's test is undecided at n = {k}", spectral + (step,),
                                     (lo, k - 1))
@@ -308,7 +315,7 @@ def c1_every_n(scheme: Scheme | StencilScheme, last: int = 64, *, progress: Call
                             f"t = cos(2 pi/n)), Reif's test certified at n = {lo}..{last}", steps, (lo, last), uniform=uniform)
     why = ("no bound on its control net that holds for every large n is derived" if uniform is None else
            f"{uniform.facts[-1]} (the nets' exact signs in t = cos(2 pi/n) for n >= {last + 1})")
-    steps += (EveryNStep(f"n > {last}: regularity and injectivity of the characteristic map are open: {why}", "open",
+    steps += (EveryNStep(f"regularity and injectivity of the characteristic map beyond the certified valences are open: {why}", "open",
                          (last + 1, None), "map-open"),)
     what = ("the spectral conditions hold for every n >= 3 (proved); " if spectral_ok else
             "the spectral conditions are not proved for every n; ")

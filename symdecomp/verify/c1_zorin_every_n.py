@@ -48,7 +48,7 @@ from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import N, StencilScheme
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_int, check_type
-from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, _in_t, c1_every_n
+from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, c1_every_n, laurent_in_t
 from symdecomp.verify.c1_uniform import t_lower_bound
 
 if TYPE_CHECKING:
@@ -158,7 +158,7 @@ def _coefficients_in_t(p: sp.Expr, what: str) -> sp.Expr:
     out = sp.Integer(0)
     for (power,), c in sp.Poly(sp.expand(p), X).terms():
         try:
-            ct = in_t(_in_t(c))
+            ct = in_t(laurent_in_t(c))
         except NotApplicableError as exc:
             raise NotApplicableError(f"{what}: {exc}") from None
         if ct is None or ct.has(N) or not sp.fraction(sp.cancel(ct))[1].is_number:
@@ -245,7 +245,7 @@ def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
     for n in (n for n in range(3, start) if n != regular):
         r = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n, real_matrix=real_matrix(zoo_matrix(scheme, n)))
         if r.status is not C1Verdict.C1:
-            return EveryNStep(f"n = {n}: {r.reason}", "failed" if r.status is C1Verdict.NOT_C1 else "open", (n, n),
+            return EveryNStep(r.reason, "failed" if r.status is C1Verdict.NOT_C1 else "open", (n, n),
                               "below-structural")
     return EveryNStep(f"n = 3..{start - 1} but {regular} (below the structural form's first valence; n = 3, 4 have rules of "
                       "their own): the spectral conditions certified valence by valence (exact factors of each block); "
@@ -253,18 +253,21 @@ def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
                       (3, start - 1), "below-structural")
 
 
-def zorin_lambda_one(scheme: StencilScheme) -> sp.Expr | None:
-    """``lambda_1`` for every ``n`` from the structural form (the ``lambda-one`` step), or ``None`` where it varies."""
+def zorin_lambda_one(scheme: StencilScheme, polys: FrequencyPolynomials | None = None) -> sp.Expr | None:
+    """``lambda_1`` for every ``n`` from the structural form (the ``lambda-one`` step), or ``None`` where it varies;
+    ``polys``: the scheme's :func:`frequency_polynomials` where the caller has them already."""
     try:
-        return _lambda_one(frequency_polynomials(scheme))[0]
+        return _lambda_one(polys or frequency_polynomials(scheme))[0]
     except NotApplicableError:
         return None
 
 
-def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True) -> tuple[EveryNStep, ...]:
+def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True,
+                           polys: FrequencyPolynomials | None = None) -> tuple[EveryNStep, ...]:
     """The spectral conditions for every ``n`` (module docstring), each step with its status and witness; without
-    ``per_valence`` the valences below the structural form are left to the caller (each costs an exact spectrum)."""
-    polys = frequency_polynomials(scheme)
+    ``per_valence`` the valences below the structural form are left to the caller (each costs an exact spectrum);
+    ``polys``: the scheme's :func:`frequency_polynomials` where the caller has them already (they are not cached)."""
+    polys = polys or frequency_polynomials(scheme)
     start, reach = polys.start, polys.reach
     lam, first = _lambda_one(polys)
     steps = [first]
@@ -291,17 +294,18 @@ def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True) -
 
 def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callable[[int], None] | None = None,
                      certify: Callable[[int], object] | None = None, max_depth: int = 6,
-                     per_valence: bool = True) -> EveryNResult:
+                     per_valence: bool = True, polys: FrequencyPolynomials | None = None) -> EveryNResult:
     """C1 for every valence as far as it is shown: the spectral steps for every ``n``, Zorin's test at ``3..last``
     (``certify(n)``, by default :func:`~symdecomp.verify.c1_zoo.c1_zoo`); the map is not proved for every ``n``, so the
-    verdict is ``undecided`` (or ``refuted`` with a valence where a step or the test fails)."""
+    verdict is ``undecided`` (or ``refuted`` with a valence where a step or the test fails). ``polys``: the scheme's
+    :func:`frequency_polynomials` where the caller has them already."""
     from symdecomp.verify.c1_zoo import c1_zoo
 
     check_type(scheme, StencilScheme, "scheme", hint="a scheme of the zoo, e.g. load_zoo('modified-butterfly')")
     last = check_int(last, "last", minimum=3)
     certify = certify or (lambda k: c1_zoo(scheme, k, max_depth=max_depth))
     try:
-        spectral = zorin_spectral_every_n(scheme, per_valence=per_valence)
+        spectral = zorin_spectral_every_n(scheme, per_valence=per_valence, polys=polys)
     except NotApplicableError as exc:
         spectral = (EveryNStep(f"the spectral conditions for every n are not read: {exc}", "open", (3, None), "spectral"),)
     result = c1_every_n(scheme, last, progress=progress, certify=certify, spectral_steps=lambda: spectral,

@@ -10,13 +10,14 @@ level's checks.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from symdecomp.verify.oracle import SharpCase
 
-__all__ = ["EXACT_TOLERANCE", "TOLERANCE", "Prediction", "ValenceComparison", "exact_row", "limit_row", "rate_from",
+__all__ = ["EXACT_TOLERANCE", "TOLERANCE", "Prediction", "ValenceComparison", "error_levels", "exact_row", "limit_row", "rate_from",
            "SharpCheck", "SharpResult"]
 
 
@@ -53,7 +54,10 @@ class Prediction:
     #: ``oracle --plot`` draws against the predicted rate. Empty for ``"exact"`` rows.
     errors: tuple[float, ...] = ()
 
-    def as_json(self) -> dict:
+    def as_json(self, levels: int | None = None) -> dict:
+        """The row as JSON; given the ``levels`` run, also ``"per_level"``: ``[{"level", "disagreement"}]`` of
+        :attr:`errors` (:func:`error_levels`), the numbers ``oracle --plot`` draws (empty for ``"exact"`` rows)."""
+
         def enc(x):
             if x is None:
                 return None
@@ -70,7 +74,19 @@ class Prediction:
             "rate": self.rate,
             "observed_rate": self.observed_rate,
             "agrees": self.agrees,
+            **({} if levels is None else {"per_level": [{"level": k, "disagreement": e} for k, e in
+                                                        zip(error_levels(self.errors, levels), self.errors)]}),
         }
+
+
+def error_levels(errors: Sequence[float], levels: int) -> list[int]:
+    """The level of each of a limit row's ``errors``: its last one is the last level run (the limit position starts at
+    level 0, a ratio or a shrink rate at level 1).
+
+    >>> error_levels([0.5, 0.25, 0.125], 2), error_levels([0.25, 0.125], 2)
+    ([0, 1, 2], [1, 2])
+    """
+    return list(range(levels - len(errors) + 1, levels + 1))
 
 
 @dataclass(frozen=True)
@@ -96,7 +112,7 @@ class ValenceComparison:
             "levels": self.levels,
             "seed": self.seed,
             "agrees": self.agrees,
-            "predictions": [p.as_json() for p in self.predictions],
+            "predictions": [p.as_json(self.levels) for p in self.predictions],
         }
 
 

@@ -36,7 +36,7 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
-from symdecomp.verify.c1_every_n import EveryNStep, T, _in_t, _tangent_steps
+from symdecomp.verify.c1_every_n import EveryNStep, T, _tangent_steps, laurent_in_t
 from symdecomp.verify.regime_cause import MAX_CERTIFIED, _start, hyperbolic_cause_on_quads
 
 __all__ = ["hyperbolic_dominates_from"]
@@ -96,7 +96,7 @@ def _beyond(expr: sp.Expr, first: int) -> sp.Expr | None:
 
 def _on_triangles(scheme: Scheme, first: int, M: sp.Matrix, E0: sp.Matrix) -> EveryNStep:
     """Triangles: ``lambda(t)`` increasing, ``lambda_2`` above the outer ring and above ``|e_0|`` (module docstring)."""
-    lam, x, outer = _in_t(M[0, 0]), sp.Symbol("x"), outer_charpoly(scheme.lattice)
+    lam, x, outer = laurent_in_t(M[0, 0]), sp.Symbol("x"), outer_charpoly(scheme.lattice)
     if outer is None:
         return _open(first, "the outer ring's eigenvalues are not known for this lattice")
     radius = max((abs(r) for r in sp.Poly(list(outer), x).all_roots()), key=float)

@@ -33,7 +33,7 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
 from symdecomp.validate import check_valence
-from symdecomp.verify.c1_every_n import EveryNStep, T, _in_t
+from symdecomp.verify.c1_every_n import EveryNStep, T, laurent_in_t
 
 __all__ = ["frequency_zero_below_hyperbolic", "hyperbolic_cause_on_quads"]
 
@@ -82,7 +82,7 @@ def frequency_zero_below_hyperbolic(scheme: Scheme) -> tuple[int, str] | None:
     if not all(e.is_rational_function(N) for e in (b, c)):  # e.g. cos(2 pi/n) in the vertex rule: no signs in n here
         return None
     t_n = 1 - 8 * sp.Rational(22, 7) ** 2 / N**2
-    tr, det = (_in_t(f).subs(T, t_n) for f in (M.trace(), M.det()))
+    tr, det = (laurent_in_t(f).subs(T, t_n) for f in (M.trace(), M.det()))
     D = sp.cancel(tr**2 - 4 * det)
     radius = max((abs(r) for r in sp.Poly(list(outer_charpoly(scheme.lattice)), x).all_roots()), key=float)
     # r^2 = tr r - det: each condition as U + V r, then r = (tr + sqrt(D))/2

@@ -32,7 +32,7 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
-from symdecomp.verify.c1_every_n import EveryNStep, T, _in_t
+from symdecomp.verify.c1_every_n import EveryNStep, T, laurent_in_t
 
 __all__ = ["RegimeEveryN", "unbounded_from", "regime_every_n"]
 
@@ -82,13 +82,13 @@ def unbounded_from(scheme: Scheme, first: int) -> EveryNStep | None:
     # a rational just below cos(2 pi/first) (and above cos(2 pi/(first - 1)), which is further below): the interval starts there
     s0 = rational_between(sp.cos(2 * sp.pi / first) - sp.Rational(1, 10**4), sp.cos(2 * sp.pi / first))
     if M.rows == 1:
-        lam = _in_t(M[0, 0])
+        lam = laurent_in_t(M[0, 0])
         f = sp.expand(lam.subs(T, 2 * s**2 - 1) - lam.subs(T, s) ** 2)
         if not (sign_on_interval(f, s, s0, 1) and sign_on_interval(lam.subs(T, s), s, s0, 1)):
             return None
         how = f"lambda_2 - lambda_1^2 = {f} > 0 for s = cos(2 pi/n) in [{s0}, 1] (Sturm sequences; lambda_1 > 0 there)"
     else:
-        tr, det = _in_t(M.trace()), _in_t(M.det())
+        tr, det = laurent_in_t(M.trace()), laurent_in_t(M.det())
         disc = sp.expand(tr**2 - 4 * det)
         if not sign_on_interval(disc, T, -1, 1, strict=False):
             return None
@@ -134,7 +134,7 @@ def hyperbolic_cause_from(scheme: Scheme, first: int) -> EveryNStep | None:
         return None
     if not all(step.status == "proved" for step in spectral_every_n(scheme)):
         return None
-    lam, s, x = _in_t(M[0, 0]), sp.Symbol("s", real=True), sp.Symbol("x")
+    lam, s, x = laurent_in_t(M[0, 0]), sp.Symbol("s", real=True), sp.Symbol("x")
     radius = max((abs(r) for r in sp.Poly(list(outer_charpoly(scheme.lattice)), x).all_roots()), key=float)
     s0 = rational_between(sp.cos(2 * sp.pi / first) - sp.Rational(1, 10**4), sp.cos(2 * sp.pi / first))
     if not (sign_on_interval(sp.diff(lam, T), T, -1, 1) and sign_on_interval(lam.subs(T, 2 * s**2 - 1) - radius, s, s0, 1)):
@@ -163,5 +163,5 @@ def regime_every_n(scheme: Scheme, last: int = 16) -> RegimeEveryN:
     certified = EveryNStep(f"the regime at each n = {lo}..{last}, certified: " + ", ".join(f"{m}: {r}" for m, r in rows),
                            "verified", (lo, last))
     return RegimeEveryN(scheme.name, tuple(rows), None, (certified, EveryNStep(
-        f"n > {last}: no argument for every n (the unbounded regime is not shown from any n <= {last} on)", "open",
+        f"no argument for every n beyond the certified valences (the unbounded regime is not shown from any n <= {last} on)", "open",
         (last + 1, None))))

@@ -49,6 +49,10 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
         if c.involves_no_scheme:  # no scheme in the statement: the verdict every scheme gets
             assert row["status"] == check_claim(c.label).status.value
             assert row["evidence"].startswith("the statement involves no scheme: ")
+        elif (instead := c.reads_instead(scheme)) is not None:  # read on another lattice: its reference's verdict
+            read = check_claim(c.label, instead)
+            assert row["status"] == read.status.value and row["evidence"].endswith(str(read.evidence))
+            assert row["evidence"].startswith("the statement is about a scheme on ")
         elif c.module in ENGINE_COMMANDS:
             assert row["status"] == Status.NOT_APPLICABLE.value
             assert row["evidence"].endswith(f"{ENGINE_COMMANDS[c.module][1]} --scheme {name} --n N")
@@ -142,3 +146,23 @@ def test_the_api_answers_a_zoo_scheme_as_the_command_does():
     result = check_claim(label, scheme)
     assert (result.status, str(result.evidence)) == (Status.NOT_APPLICABLE, str(ONE_RING_SUPPORT.unmet(scheme)))
     assert [r.status for r in check_claims([label], scheme, jobs=2)] == [Status.NOT_APPLICABLE]
+
+
+def test_a_claim_read_on_another_lattice_has_the_same_verdict_on_both_routes():
+    """"Curvature regime: Catmull-Clark" reads a triangle scheme's lattice-mate Catmull-Clark on the 1-ring route (Loop)
+    and, by the same test (Claim.reads_instead), on the zoo route (sqrt3, modified butterfly); it reads a quad scheme of
+    the zoo itself, which the 1-ring model does not fit. Loop's claims the other way round."""
+    by_label = {c.label: c for c in all_claims()}
+    cc_claim, loop_claim = by_label["Curvature regime: Catmull-Clark"], by_label["Curvature regime: Loop"]
+    sqrt3, butterfly, doo_sabin = (load_scheme(name) for name in ("sqrt3", "modified-butterfly", "doo-sabin"))
+    assert [cc_claim.reads_instead(s) for s in (catmull_clark(), doo_sabin)] == [None, None]
+    assert {cc_claim.reads_instead(s).name for s in (loop(), sqrt3, butterfly)} == {"catmull-clark"}
+    assert loop_claim.reads_instead(doo_sabin).name == "loop" and loop_claim.reads_instead(sqrt3) is None
+    primal, zoo = check_claim(cc_claim.label, loop()), check_claim(cc_claim.label, sqrt3)
+    assert primal.status is Status.PROVED and zoo.status is primal.status
+    assert str(zoo.evidence) == ("the statement is about a scheme on quad meshes and 'sqrt3' is on triangle meshes, so the "
+                                 "check reads catmull-clark, as for every scheme on triangle meshes: " + str(primal.evidence))
+    assert "for catmull-clark" in str(primal.evidence)
+    assert check_claim(cc_claim.label, doo_sabin).status is Status.NOT_APPLICABLE  # it would read Doo-Sabin's rules
+    assert check_claim(loop_claim.label, sqrt3).status is Status.NOT_APPLICABLE
+    assert check_claim(loop_claim.label, doo_sabin).status is check_claim(loop_claim.label, loop()).status

@@ -28,7 +28,7 @@ def test_doo_sabin_every_n_in_text(monkeypatch, capsys):
     monkeypatch.setattr(c1_cmd, "ZOO_EVERY_N_CERTIFIED", 15)
     assert main(["c1", "--every-n", "--scheme", "doo-sabin", "--quiet", "--jobs", "1"]) == 0
     out = capsys.readouterr().out.splitlines()
-    assert out[0] == "doo-sabin: C1 for every valence"
+    assert out[0] == "doo-sabin: C1 for every valence? proved"
     assert out[1].startswith("  [proved] n >= 3: the n-gon's eigenvalue at frequency 1 is its weights' symbol sigma(1) = 1/2")
     assert out[4].startswith("  [proved] n >= 16: lambda_1 < 1 and lambda_1 > 1/4")
     assert out[5].startswith("  [verified] n = 3..15: Reif's test at each n = 3..15")

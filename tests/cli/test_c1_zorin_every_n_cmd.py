@@ -35,3 +35,56 @@ def test_the_butterfly_every_n_json_carries_the_steps_and_is_undecided(monkeypat
     assert steps["below-structural"]["status"] == "verified" and steps["below-structural"]["valences"] == [3, 15]
     assert steps["map-open"]["status"] == "open" and steps["map-open"]["valences"] == [5, None]
     assert [r["n"] for r in out["rows"]] == [3, 4]
+
+
+def _fast(monkeypatch) -> None:
+    """The command's own work around the valences: Zorin's test per valence and the spectra below the structural form
+    (minutes) replaced by certified rows and nothing."""
+    from symdecomp.verify import c1_zorin_every_n as zorin
+
+    monkeypatch.setattr(zorin, "_per_valence", lambda scheme, start: None)
+    monkeypatch.setattr(c1_cmd, "ZORIN_EVERY_N_CERTIFIED", 4)
+    monkeypatch.setattr(c1_cmd, "_zoo_one", _certified)
+
+
+def test_the_butterfly_every_n_text_asks_and_names_each_range_once(monkeypatch, capsys):
+    """The title asks, with the verdict beside it (undecided), and no step repeats the valences it is printed under."""
+    _fast(monkeypatch)
+    assert main(["c1", "--every-n", "--scheme", "modified-butterfly", "--quiet", "--jobs", "1"]) == 1
+    out = capsys.readouterr().out.splitlines()
+    assert out[0] == "modified-butterfly: C1 for every valence? undecided"
+    assert out[-1].startswith("undecided: ") and "not proved for every n" in out[-1]
+    steps = [line for line in out if line.startswith("  [")]
+    assert "  [open] n >= 5: regularity and injectivity of the characteristic map beyond the certified valences are open" \
+        in [line.split(": no bound")[0] for line in steps]
+    for line in steps:  # "[open] n >= 5: n > 4: ..." said the valences twice
+        where, text = line.split("] ", 1)[1].split(": ", 1)
+        assert where.startswith("n ") and not text.startswith(("n > ", "n >= ", "n = ", "for n ")), line
+
+
+def test_the_butterfly_every_n_computes_its_frequency_polynomials_once(monkeypatch, capsys, tmp_path):
+    """The blocks' characteristic polynomials are computed once in a run: the check before any valence, the proof and
+    the plot's lambda_1 read the same (they are not cached)."""
+    from matplotlib.figure import Figure
+
+    from symdecomp.verify import c1_zorin_every_n as zorin
+
+    _fast(monkeypatch)
+    calls: list[str] = []
+    computed = zorin.frequency_polynomials
+
+    def counted(scheme):
+        calls.append(scheme.name)
+        return computed(scheme)
+
+    def figure(result, rows, lam):
+        calls.append(f"lambda_1 = {lam}")
+        return Figure()
+
+    monkeypatch.setattr(zorin, "frequency_polynomials", counted)
+    monkeypatch.setattr(c1_cmd, "_every_n_figure", figure)
+    plot = tmp_path / "every-n.png"
+    assert main(["c1", "--every-n", "--scheme", "modified-butterfly", "--quiet", "--jobs", "1", "--plot", str(plot)]) == 1
+    assert calls == ["modified-butterfly", "lambda_1 = 1/2"]  # once; the plot's lambda_1 read from the same polynomials
+    assert plot.read_bytes().startswith(b"\x89PNG")
+    assert capsys.readouterr().out.splitlines()[0] == "modified-butterfly: C1 for every valence? undecided"

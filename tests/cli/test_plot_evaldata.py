@@ -135,3 +135,24 @@ def test_plot_on_out_or_a_bad_target_is_one_line_before_the_work(argv, tmp_path,
     assert main(["evaldata", *argv, "--out", str(tmp_path / "d.json"), "--plot", str(tmp_path / "e.bmp")]) == 2
     assert capsys.readouterr().err.count("\n") == 1
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_plot_reads_a_binary_piece_through_the_files_reader(tmp_path, capsys):
+    """``piece_values`` of each valence's piece, as the command writes it, are the eigenvalues the file's reader gives
+    (one decoder of the layout); the pieces are the file's bytes after Nmax, and a short piece is refused."""
+    from symdecomp.cli.evaldata_plot import piece_values
+    from symdecomp.errors import EvalDataFileError
+    from symdecomp.output.evaldata import binary_valence, read_binary
+
+    out = tmp_path / "stam.bin"
+    assert main(["evaldata", "--n", "3:5", "--format", "binary", "--out", str(out), "--quiet"]) == 0
+    capsys.readouterr()
+    read = read_binary(out)
+    pieces = [binary_valence(read[n]) for n in (3, 4, 5)]
+    assert b"".join(p.data for p in pieces) == out.read_bytes()[4:]
+    for p in pieces:
+        values = piece_values(p)
+        assert values == [complex(v) for v in read[p.n].values] and len(values) == 2 * p.n + 8
+        assert max(values, key=abs) == 1.0  # affine invariance: the eigenvalue 1, the largest
+    with pytest.raises(EvalDataFileError, match="valence 4"):
+        piece_values(type(pieces[1])(4, pieces[1].data[:-8]))

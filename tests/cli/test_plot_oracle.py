@@ -7,10 +7,12 @@ from __future__ import annotations
 import json
 import math
 
+import jsonschema
 import pytest
 
 import symdecomp.verify.opensubdiv as osd
 from symdecomp.cli import main
+from symdecomp.cli.json_envelope import json_schema
 from symdecomp.output.plotting.oracle_chart import EPSILON
 
 pytest.importorskip("matplotlib")
@@ -40,7 +42,9 @@ def test_the_drawn_disagreements_are_the_printed_ones_shrinking_at_the_printed_r
     figures = _drawn(monkeypatch)
     assert main(["oracle", "--n", "5", "--levels", "5", "--scheme", scheme, "--json", "--quiet",
                  "--plot", str(tmp_path / "oracle.png")]) == 0
-    printed = {r["n"]: r for r in json.loads(capsys.readouterr().out)["rows"]}
+    out = json.loads(capsys.readouterr().out)
+    jsonschema.validate(out, json_schema())
+    printed = {r["n"]: r for r in out["rows"]}
     panels = {ax.get_title(): ax for ax in figures[0].axes if ax.get_visible()}
     limit_rows = [(n, p) for n, r in printed.items() for p in r["predictions"] if p["kind"] == "limit"]
     assert limit_rows
@@ -54,6 +58,10 @@ def test_the_drawn_disagreements_are_the_printed_ones_shrinking_at_the_printed_r
             assert any(abs(q - p["observed_rate"]) <= 1e-12 * p["observed_rate"] for q in ratios)
         assert all(abs(b / a - p["rate"]) <= 1e-12 for a, b in zip(reference, reference[1:]))  # the predicted slope
         assert reference[0] == measured[0]
+        # --json carries the same numbers the figure draws, level by level
+        assert [e["level"] for e in p["per_level"]] == list(lines[k].get_xdata())
+        assert [e["disagreement"] for e in p["per_level"]] == list(measured) and len(measured) >= 2
+    assert all(q["per_level"] == [] for r in printed.values() for q in r["predictions"] if q["kind"] == "exact")
     bars = panels["exact rows, against double precision"].containers
     exact = {(n, q["name"]): q["disagreement"] for n, r in printed.items() for q in r["predictions"] if q["kind"] == "exact"}
     drawn = {(math.floor(b.get_x() + 0.4 + 1e-9), c.get_label()): b.get_height() * EPSILON for c in bars for b in c.patches}

@@ -27,7 +27,7 @@ from symdecomp.output.texlayout import latex
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
-from symdecomp.verify.c1_every_n import _in_t
+from symdecomp.verify.c1_every_n import laurent_in_t
 from symdecomp.verify.c1_uniform import jacobian_coefficients
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -78,10 +78,10 @@ def test_the_formulas_are_sympys_printing_of_the_computed_objects(document, name
     scheme, section = SCHEMES[name], _section(document, name)
     M = sp.Matrix(one_ring_matrices(scheme)[0])
     if M.rows == 2:
-        disc = sp.factor(_in_t(M.trace()) ** 2 - 4 * _in_t(M.det()))
+        disc = sp.factor(laurent_in_t(M.trace()) ** 2 - 4 * laurent_in_t(M.det()))
         assert _flat("\\Delta(t) = " + latex(disc)) in section
     else:
-        assert _flat("\\lambda(t) = " + latex(_in_t(M[0, 0]))) in section
+        assert _flat("\\lambda(t) = " + latex(laurent_in_t(M[0, 0]))) in section
     nets = uniform_nets(scheme)
     count = len(jacobian_coefficients(nets, scheme.lattice))
     assert f"There are {count} coefficients; the Sturm counts of $(U, V)$" in section

@@ -76,5 +76,5 @@ def every_n_figure(result: EveryNResult, rows: list[dict[str, Any]], lam: sp.Exp
     bottom.set_xlabel("valence n")
     bottom.set_ylabel("|J| >= (certified)")
     bottom.grid(alpha=0.3)
-    fig.suptitle(f"{result.scheme}: C1 for every valence, {result.status}\n{_caption(result)}", fontsize=8, wrap=True)
+    fig.suptitle(f"{result.scheme}: C1 for every valence? {result.status}\n{_caption(result)}", fontsize=8, wrap=True)
     return fig

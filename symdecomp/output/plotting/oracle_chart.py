@@ -19,9 +19,9 @@ from collections.abc import Sequence
 from typing import Any
 
 from symdecomp.output.plotting._mpl import label_axes, new_figure
-from symdecomp.verify.comparisons import EXACT_TOLERANCE, ValenceComparison
+from symdecomp.verify.comparisons import EXACT_TOLERANCE, ValenceComparison, error_levels
 
-__all__ = ["EPSILON", "levels_drawn", "oracle_figure"]
+__all__ = ["EPSILON", "oracle_figure"]
 
 #: Double precision's machine epsilon, ``2^-52``: the unit of the exact rows' panel.
 EPSILON = sys.float_info.epsilon
@@ -30,22 +30,12 @@ EPSILON = sys.float_info.epsilon
 COLUMNS = 3
 
 
-def levels_drawn(errors: Sequence[float], levels: int) -> list[int]:
-    """The levels of a limit row's ``errors``: its last one is the last level run (the limit position starts at level 0,
-    a ratio or a shrink rate at level 1).
-
-    >>> levels_drawn([0.5, 0.25, 0.125], 2), levels_drawn([0.25, 0.125], 2)
-    ([0, 1, 2], [1, 2])
-    """
-    return list(range(levels - len(errors) + 1, levels + 1))
-
-
 def _limit_panel(ax: Any, name: str, results: Sequence[ValenceComparison]) -> None:
     for i, r in enumerate(results):
         for p in r.predictions:
             if p.name != name or p.kind != "limit" or not p.errors or p.rate is None:
                 continue
-            x = levels_drawn(p.errors, r.levels)
+            x = error_levels(p.errors, r.levels)  # the levels --json gives as "per_level"
             colour = f"C{i % 10}"
             ax.plot(x, list(p.errors), "o-", color=colour, ms=3, lw=1, label=f"n = {r.n}")
             ax.plot(x, [p.errors[0] * p.rate ** (k - x[0]) for k in x], "--", color=colour, lw=0.8,

@@ -19,14 +19,14 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
 Targets (issue 33): N = 3..128 for each scheme within 3 times the baseline's seconds (b), measured in
 the same run, and within 300 MB, still certified (issue 24's were 15 s and 300 MB). The file's own
 construction of the exact patch matrices is part of (a) and not of (b). Last measured (x86_64, 2 cores, shared
-with other jobs: load 2.0 at the start of the run, 3 to 5 during it; one run of this benchmark, after one of the code
-before this step at load 3.3): Catmull-Clark 8.5 s wall, 9.1 s CPU, 102 MB beside numpy's 1.79 s wall, 1.75 s CPU
-(4.8 times wall, 5.2 CPU; the code before: 3.8 and 4.9 at numpy's 4.5 s wall); Loop 6.8 s wall, 4.6 s CPU, 97 MB
-beside numpy's 0.67 s wall, 0.44 s CPU (10.1 times wall, 10.4 CPU; before: 6.6 and 10.3). Neither target is met in
-these runs: the load moves the wall-clock ratios more than this step's change (about 5 to 10 per cent of the
-valences' CPU, measured in one process), and Loop's start-up alone (about 0.6 s, most of it importing sympy, which
-the scheme's rules are written in) is over 2 of the 3 times numpy (0.26 s in a quiet run) that its target allows. The
-quiet run before this step (load 0.3): Catmull-Clark 3.6 s wall beside 1.18 s (3.0 times), Loop 1.6 s beside 0.26 s.
+with other jobs; one run of this benchmark for the code before the last step, load 3.9 at its start, then one for
+this code, load 4.7): Catmull-Clark 11.0 s and 15.2 s wall, 7.8 s CPU both, beside numpy's 2.08 s and 3.29 s wall
+(5.3 and 4.6 times wall; 5.2 and 4.8 times CPU), 102 and 103 MB; Loop 7.1 s and 5.8 s wall, 4.2 s and 4.0 s CPU,
+beside numpy's 0.77 s and 0.55 s (9.2 and 10.6 times wall; 10.9 times CPU both), 97 MB. Neither target is met;
+under that load the wall-clock ratios move more than the step (about 5 per cent of Catmull-Clark's valences'
+CPU, none of Loop's, measured alternately in one process). A quiet run earlier (load 0.3): Catmull-Clark 3.6 s
+wall beside 1.18 s (3.0 times), Loop 1.6 s beside 0.26 s. Loop's start-up (about 0.5 s of CPU, sympy most of it:
+the scheme's rules are sympy expressions) is about 2 of the 3 times numpy (0.26 s quiet) that its target allows.
 The guide's evaldata page says what is left. Run from the repository root::
 
     python benchmarks/bench_evaldata.py           # N = 3..128

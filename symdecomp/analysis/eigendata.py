@@ -201,12 +201,13 @@ def _g_rows(p: PatchMatrices, winv) -> list[dict]:
     return [{c: to_fraction(g_exact[i, c]) for c in range(k0) if g_exact[i, c] != 0} for i in range(r)]
 
 
-def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows) -> tuple[list, list]:
+def _outer_coefficients(p: PatchMatrices, cols, nus, winv, right_rows, g_rows: list[dict] | None = None) -> tuple[list, list]:
     """``(D, jordan)``: ``D[r][c] = (W^-1 S11 u_c)_r / (lam_c - nu_r)``; where ``lam_c = nu_r`` (decided
     exactly) ``D[r][c] = 0``, and a nonzero ``gamma = (W^-1 S11 u_c)_r`` is a Jordan pair ``(k0 + r, c, gamma)``
-    (triangle patches; a quad patch that is not diagonalizable is refused)."""
+    (triangle patches; a quad patch that is not diagonalizable is refused). ``g_rows``: :func:`_g_rows` of ``p``
+    and ``winv`` where the caller has made them already (they are exact: the same rows either way)."""
     n, k0 = p.n, p.ring_size
-    g_rows = _g_rows(p, winv)
+    g_rows = _g_rows(p, winv) if g_rows is None else g_rows
     dmat, jordan = [], []
     coeffs = _sparse_times(g_rows, right_rows, k0)
     for r, nu in enumerate(nus):

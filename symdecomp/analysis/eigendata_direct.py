@@ -136,7 +136,7 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, np.ndarray]:
     g_rows = _g_rows(p, winv)
     read = _read_rows(p, g_rows)
     v0 = {i: [col.right_at(i) for col in cols] for i in read if i < k0}
-    dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0)
+    dmat, jordan = _outer_coefficients(p, cols, nus, winv, v0, g_rows)
     lower = _lower_by_waves(cols, dmat)
     if lower is None:
         lower = (-(flint.arb_mat(dmat) * flint.arb_mat([col.left for col in cols]))).tolist()

@@ -72,13 +72,17 @@ class PatternForm:
 
 
 _PATTERN_INDEX: dict = {}
+#: The valence whose patterns :data:`_PATTERN_INDEX` holds: one comparison per call, where a scan of the keys made
+#: the lookups of a valence quadratic in ``N`` (about ``2N`` keys read for each of ``2N`` patterns).
+_PATTERN_VALENCE: list[int] = []
 
 
 def _pattern_index(n: int, j: int, shift: int) -> tuple[np.ndarray, np.ndarray]:
     """``(coef, index)`` of the pattern of frequency ``j`` on ``(O, e_0, f_0, ...)``, remembered for the last valence."""
     if (n, j, shift) not in _PATTERN_INDEX:
-        if any(key[0] != n for key in _PATTERN_INDEX):
+        if _PATTERN_VALENCE != [n]:
             _PATTERN_INDEX.clear()
+            _PATTERN_VALENCE[:] = [n]
         k = np.arange(n)
         index, coef = np.full(2 * n + 1, -1), np.zeros(2 * n + 1, dtype=np.int64)
         index[1::2] = (4 * j * k + shift) % (4 * n)

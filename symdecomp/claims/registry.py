@@ -63,7 +63,7 @@ import dataclasses
 import enum
 import importlib
 import traceback
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from functools import cache
 
@@ -79,7 +79,7 @@ from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
 from symdecomp.schemes.stencils import StencilScheme
 
 __all__ = [
-    "Text", "Verbatim", "Status", "Scope", "erratum_scope", "ScopeSummary", "scope_summary", "Step", "CheckResult", "Claim",
+    "Text", "Verbatim", "Status", "Scope", "erratum_scope", "ScopeSummary", "scope_summary", "Step", "LazySteps", "CheckResult", "Claim",
     "Requirement", "claim", "all_claims", "get_claim", "check_claim", "REGISTRY", "BEYOND", "section_key",
 ]
 
@@ -151,6 +151,60 @@ class Step:
     lhs: object = None
 
 
+class LazySteps(Sequence[Step]):
+    """Derivation steps built the first time they are read, for steps whose expressions cost more than the check.
+
+    ``CheckResult(..., steps=LazySteps(lambda: (Step(...), ...)))``: ``build`` is called once, when the steps are first
+    read (``derive``, a notebook), and never when only the verdict is (``claims`` on the pool drops the steps unread,
+    :mod:`symdecomp.claims.batch`); so ``build`` may compute only what is displayed, never what the verdict rests on. It
+    reads as the tuple it builds (compared, added and pickled as that tuple; pickling builds it: a closure does not pickle).
+    """
+
+    __slots__ = ("_build", "_steps")
+
+    def __init__(self, build: Callable[[], Iterable[Step]]):
+        self._build: Callable[[], Iterable[Step]] | None = build
+        self._steps: tuple[Step, ...] | None = None
+
+    @property
+    def built(self) -> bool:
+        """Whether the steps have been built (read) yet."""
+        return self._steps is not None
+
+    def _tuple(self) -> tuple[Step, ...]:
+        if self._steps is None:
+            assert self._build is not None
+            self._steps, self._build = tuple(self._build()), None
+        return self._steps
+
+    def __getitem__(self, index):
+        return self._tuple()[index]
+
+    def __len__(self) -> int:
+        return len(self._tuple())
+
+    def __iter__(self) -> Iterator[Step]:
+        return iter(self._tuple())
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, (tuple, LazySteps)) and self._tuple() == tuple(other)
+
+    def __hash__(self) -> int:
+        return hash(self._tuple())
+
+    def __add__(self, other) -> tuple[Step, ...]:
+        return self._tuple() + tuple(other)
+
+    def __radd__(self, other) -> tuple[Step, ...]:
+        return tuple(other) + self._tuple()
+
+    def __reduce__(self):
+        return tuple, (self._tuple(),)
+
+    def __repr__(self) -> str:
+        return f"LazySteps({self._steps!r})" if self.built else "LazySteps(<not built>)"
+
+
 @dataclass(frozen=True)
 class CheckResult(NotebookDisplay):
     """The outcome of checking one claim."""
@@ -159,8 +213,8 @@ class CheckResult(NotebookDisplay):
     status: Status
     #: One line saying how (the range of ``n`` checked, the identity that vanished, ...).
     evidence: str | Text
-    #: The derivation, as displayed steps.
-    steps: tuple[Step, ...] = ()
+    #: The derivation, as displayed steps (:class:`LazySteps` when they are built only if read).
+    steps: tuple[Step, ...] | LazySteps = ()
     #: For ``refuted``/``corrected``: a concrete counterexample, in words.
     counterexample: str | Text | None = None
     #: For ``corrected``: the corrected statement.

@@ -9,7 +9,7 @@ import sympy as sp
 from symdecomp.algebra.circulant import circ, generating_polynomial, mode_eigenvalue_derivation
 from symdecomp.algebra.polygons import decompose
 from symdecomp.claims.notation import eq, ge, j, listed, lt, n, ne, omega_n
-from symdecomp.claims.registry import CheckResult, Status, Step, Text, claim
+from symdecomp.claims.registry import CheckResult, LazySteps, Status, Step, Text, claim
 from symdecomp.schemes.scheme import Scheme
 
 W = sp.Symbol("w")
@@ -132,12 +132,12 @@ def _eq1(scheme: Scheme) -> CheckResult:
             + ", ".join(kinds) + " polygons rebuilt exactly for n = 3..",
             last, ", the collapsed ones with ", eq(sp.Symbol("z_j"), 0), " for every ", ne(j, 0),
         ),
-        steps=(
+        steps=LazySteps(lambda: (  # the displayed forms are simplified again: only when the steps are read
             Step("Row $j$ over the $j$-th power of the node $x_m$ of column $m$ (Vandermonde):",
                  sp.powsimp(PRINTED_VERTEX(j, M, n) / node(M) ** j, force=True)),
             Step("Ratio of the nodes of columns $m + d$ and $m$, $0 < d < n$:", sp.simplify(ratio)),
             Step("Its turn, free of $m$, strictly between 0 and 1:", turn),
-        ),
+        )),
     )
 
 

@@ -25,7 +25,7 @@ from symdecomp.algebra.circulant import circ, fourier_row
 from symdecomp.claims import cb_examples
 from symdecomp.claims.cb_examples import M_SYM, _banded_symbolic_identity, _blockwise_product_residues, _generic_cb, _kron, _nc, _random_cb
 from symdecomp.claims.notation import eq, tup
-from symdecomp.claims.registry import CheckResult, Scope, Status, Step, Text, claim, is_zero
+from symdecomp.claims.registry import CheckResult, LazySteps, Scope, Status, Step, Text, claim, is_zero
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 
@@ -249,7 +249,9 @@ def _eq47(scheme: Scheme) -> CheckResult:
             ", a typo for ", _nc("C_0,n-1"),
         ),
         scope=Scope.SINGLE_CASE,
-        steps=(Step("$BV-\\left(\\sum_q \\alpha_q C_{pq}v\\right)_p$ for generic blocks, generic $v$", sp.simplify(lhs - rhs).T),),
+        # simplifying the difference only displays it (ok has decided it): built when the steps are read
+        steps=LazySteps(lambda: (Step("$BV-\\left(\\sum_q \\alpha_q C_{pq}v\\right)_p$ for generic blocks, generic $v$",
+                                      sp.simplify(lhs - rhs).T),)),
         counterexample=Text("n = 3 blocks of order 3, generic entries: with C_{1,2} in the first row (as printed) the first block "
                             "row differs from BV by ", sp.simplify((lhs - printed)[0, 0])),
         correction="The (p, q) entry of the matrix in Eq. 47 is C_{p,q} v; its first row ends with C_{0,n-1} v.",

@@ -235,8 +235,7 @@ def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilSch
     if zorin_route(scheme):
         from symdecomp.verify.c1_zorin import MAX_REFINEMENT, c1_zorin_test  # imported when this route runs
 
-        deepest = min(max(max_depth, 1), MAX_REFINEMENT)
-        return c1_zorin_test(scheme, n, min_depth=min(4, deepest), max_depth=deepest)
+        return c1_zorin_test(scheme, n, max_depth=min(max(max_depth, 1), MAX_REFINEMENT))
     if (reason := spline_route(scheme)) is not None:
         return ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason=reason, max_depth=max_depth,
                            precision=prec, method=NO_METHOD)

@@ -57,7 +57,7 @@ from symdecomp.verify.zoo_characteristic import characteristic_points, real_matr
 from symdecomp.verify.zorin_bounds import EDGES, RHOMBI, TRIANGLES, DifferenceBounds, Point, difference_bounds, hex_norm
 from symdecomp.verify.zorin_net import WedgeNet, grow, refine, wedge_points
 
-__all__ = ["ZORIN_METHOD", "NET_DEPTH", "MAX_REFINEMENT", "c1_zorin_test"]
+__all__ = ["ZORIN_METHOD", "NET_DEPTH", "MAX_REFINEMENT", "FIRST_POINTS", "depths", "net_depth", "c1_zorin_test"]
 
 #: The method, as reported with each verdict of this route.
 ZORIN_METHOD = ("Zorin's test: the characteristic map's control net refined m times by the regular rules; the limit's "
@@ -68,6 +68,19 @@ ZORIN_METHOD = ("Zorin's test: the characteristic map's control net refined m ti
 NET_DEPTH = 4
 #: The deepest refinement tried (each level has four times the points of the one before).
 MAX_REFINEMENT = 7
+#: The refinement tried first is the deepest whose points per coarse point (``a^(2m)``) are at most this: ``m = 4``
+#: for one primal step (``a = 2``), ``m = 2`` for sqrt(3)'s two (``a = 3``).
+FIRST_POINTS = 4 ** 4
+
+
+def depths(bounds: DifferenceBounds, min_depth: int | None, max_depth: int) -> range:
+    """The refinements tried: ``min_depth`` (default: the deepest within :data:`FIRST_POINTS`) to ``max_depth``, both
+    capped where a level would have more points per coarse point than :data:`MAX_REFINEMENT` dyadic ones."""
+    a = bounds.dilation
+    deepest = max(m for m in range(1, MAX_REFINEMENT + 1) if m == 1 or a ** (2 * m) <= 4 ** MAX_REFINEMENT)
+    first = max(m for m in range(1, MAX_REFINEMENT + 1) if m == 1 or a ** (2 * m) <= FIRST_POINTS)
+    last = min(max_depth, deepest)
+    return range(min(first if min_depth is None else min_depth, last), last + 1)
 
 
 def _q(x: Fraction) -> flint.arb:
@@ -184,12 +197,14 @@ def _winding(net: WedgeNet, d: int, n: int, edge: int, error: flint.arb, node_er
     return lo if lo == hi else None
 
 
-def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int = 4, max_depth: int = 6,
+def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int | None = None, max_depth: int = 6,
                   prec: int = 128) -> ZooC1Result:
-    """Zorin's test at valence ``n`` (module docstring), refining ``m = min_depth..max_depth`` times until it decides."""
+    """Zorin's test at valence ``n`` (module docstring), refining ``m = min_depth..max_depth`` times until it decides
+    (:func:`depths`: by default from the deepest level of at most :data:`FIRST_POINTS` points per coarse point)."""
     prec = check_bits(prec)
     max_depth = check_int(max_depth, "max_depth", minimum=1, maximum=MAX_REFINEMENT)
-    min_depth = check_int(min_depth, "min_depth", minimum=1, maximum=max_depth)
+    if min_depth is not None:
+        min_depth = check_int(min_depth, "min_depth", minimum=1, maximum=max_depth)
     result = ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason="", max_depth=max_depth,
                          precision=prec, method=ZORIN_METHOD)
     try:
@@ -212,7 +227,7 @@ def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int = 4, max_dept
         if not isinstance(start, tuple):
             return replace(result, verdict=start.status, reason=start.reason, spectral=start)
         reason = "no depth tried"
-        for m in range(min_depth, max_depth + 1):
+        for m in depths(bounds, min_depth, max_depth):
             decided = _at_depth(start, n, bounds, m, result)
             if isinstance(decided, ZooC1Result):
                 return decided

@@ -155,7 +155,7 @@ def _dilation(places: Mapping[int, tuple[Fraction, Fraction]], near: int) -> int
 def regular_mask(scheme: StencilScheme) -> tuple[int, dict[Point, Fraction]]:
     """``(a, A)`` with ``(S p)(y) = sum_x A[y - a x] p(x)``, ``S`` the scheme's steps (module docstring)."""
     lat = lattice(scheme.lattice)
-    nb = neighbourhood(lat, lat.regular_valence, 3 + 2 * scheme.steps)
+    nb = neighbourhood(lat, lat.regular_valence, 3 + scheme.steps)
     pos0 = {v: (Fraction(p[0]), Fraction(p[1])) for v, p in unfold(nb.mesh, nb.start).items()}
     mesh, pos, rows = nb.mesh, pos0, None
     for _ in range(scheme.steps):  # the steps that return the lattice to itself

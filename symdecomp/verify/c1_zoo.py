@@ -51,7 +51,8 @@ DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-sp
 
 #: The method line of a scheme that neither test applies to (its verdicts are ``undecided``, each with the reason).
 NO_METHOD = ("none applies: Reif's test needs a spline patch this package evaluates (a dual quad scheme whose regular part is "
-             "the biquadratic B-spline), and Zorin's test, which needs none, is written for one primal step on triangles")
+             "the biquadratic B-spline), and Zorin's test, which needs none, is written for a net around a vertex of the "
+             "triangle lattice")
 
 #: The centre Zorin's test (:mod:`symdecomp.verify.c1_zorin`) is written for: a vertex (its net is sector 0 of a
 #: triangle lattice around it, refined by the steps that return the lattice to itself: one primal step, sqrt(3)'s two).
@@ -161,7 +162,7 @@ def spline_route(scheme: StencilScheme) -> str | None:
     """``None`` when the scheme's regular part is the biquadratic B-spline (the dual route applies), else the reason."""
     centre = topology_of(scheme).centre
     tail = (f"Zorin's test, which needs no spline patch, is written here for a net around a {ZORIN_CENTRE} of the triangle "
-            f"lattice, and this scheme's centre is a {centre} of the {scheme.lattice} lattice")
+            f"lattice{'' if centre == ZORIN_CENTRE else f', and this scheme centres on a {centre}'}")
     if scheme.interpolatory:
         return f"the scheme is interpolatory, so its regular part is no spline and Reif's test has no patch; {tail}"
     if scheme.topology != "dual":

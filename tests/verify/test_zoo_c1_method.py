@@ -11,4 +11,4 @@ def test_a_scheme_no_test_applies_to_is_not_reported_as_reif_s_spline_test():
     r = c1_zoo(load_zoo("midedge"), 5)
     assert r.verdict is C1Verdict.UNDECIDED and r.as_json()["method"] == NO_METHOD
     assert r.reason.endswith("Zorin's test, which needs no spline patch, is written here for a net around a vertex of the "
-                             "triangle lattice, and this scheme's centre is a face of the quad lattice")
+                             "triangle lattice, and this scheme centres on a face")

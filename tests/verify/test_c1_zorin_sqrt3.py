@@ -6,6 +6,7 @@ found not C1 by the spectral conditions, with the eigenvalue the 2 x 2 block of 
 from __future__ import annotations
 
 from fractions import Fraction
+from itertools import product
 
 import flint
 import pytest
@@ -33,6 +34,46 @@ def _variant(name: str, centre: str, ring: str) -> StencilScheme:
 def _lambda(n: int) -> float:
     """Kobbelt's subdominant eigenvalue of two steps, ``(2 + 2 cos(2 pi/n))/9``, from the 1-ring's frequency-1 block."""
     return float((2 + 2 * sp.cos(2 * sp.pi / n)) / 9)
+
+
+def _kobbelt_two_steps() -> dict[tuple[int, int], Fraction]:
+    """The regular two-step mask built here from Kobbelt's rules on the lattice, without the engine: the response to a
+    unit at the origin, in coordinates of the lattice refined by 1/3 (the triangle lattice ``x e_1 + y w``)."""
+    exact = sp.Rational((4 - 2 * sp.cos(2 * sp.pi / 6)) / 9)  # Kobbelt's alpha_n at n = 6
+    alpha = Fraction(int(exact.p), int(exact.q))
+    ring0 = [(1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1)]  # the six neighbours, counter-clockwise
+    ring1 = [(a[0] + b[0], a[1] + b[1]) for a, b in zip(ring0, ring0[1:] + ring0[:1])]  # 3 x the centroids around 0
+
+    def delta(v):
+        return Fraction(1) if v == (0, 0) else Fraction(0)
+
+    def level1(q):  # q in thirds: an old vertex (q = 0 mod 3), relaxed, or a centroid (the mean of its three corners)
+        if q[0] % 3 == 0 and q[1] % 3 == 0:
+            v = (q[0] // 3, q[1] // 3)
+            return (1 - alpha) * delta(v) + alpha / 6 * sum(delta((v[0] + d[0], v[1] + d[1])) for d in ring0)
+        corners = [(q[0] + d[0], q[1] + d[1]) for d in ring1 if (q[0] + d[0]) % 3 == 0 and (q[1] + d[1]) % 3 == 0]
+        assert len(corners) == 3
+        return sum(delta((c[0] // 3, c[1] // 3)) for c in corners) / 3
+
+    def on_level1(q):
+        return (q[0] - q[1]) % 3 == 0  # old vertices (0, 0) and centroids (1, 1), (2, 2) mod 3
+
+    mask = {}
+    for y in product(range(-10, 11), repeat=2):
+        if on_level1(y):  # the second step relaxes a level-1 vertex over its six level-1 neighbours
+            value = (1 - alpha) * level1(y) + alpha / 6 * sum(level1((y[0] + d[0], y[1] + d[1])) for d in ring1)
+        else:  # or puts a point at the centroid of a level-1 triangle: its three corners are unit steps away
+            corners = [(y[0] + d[0], y[1] + d[1]) for d in ring0 if on_level1((y[0] + d[0], y[1] + d[1]))]
+            assert len(corners) == 3
+            value = sum(level1(c) for c in corners) / 3
+        if value:
+            mask[y] = value
+    return mask
+
+
+def test_the_two_steps_are_kobbelts_rules_on_the_lattice_built_here():
+    a, mask = regular_mask(SQRT3)
+    assert (a, mask) == (3, _kobbelt_two_steps())
 
 
 def test_two_steps_refine_the_lattice_by_a_third_and_reproduce_linear_functions():

@@ -163,8 +163,9 @@ nothing else.
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
-                   map at one valence, ``zoo_characteristic``), Zorin's test where no spline patch exists (primal
-                   triangle schemes, the modified butterfly: ``c1_zorin``; the regular rules' difference bounds,
+                   map at one valence, ``zoo_characteristic``), Zorin's test where no spline patch exists (a vertex
+                   of the triangle lattice, over the steps that refine it by 1/a: the modified butterfly, a = 2;
+                   sqrt(3), two steps, a = 3: ``c1_zorin``; the regular rules' difference bounds,
                    ``zorin_bounds``; the characteristic net grown and refined by them, ``zorin_net``); dyadic limit positions for
                    the patch evaluator at an interior vertex or a boundary or corner sector and for the crease,
                    boundary and corner data (``patch_eval``), a dual scheme's face data (``dual_evaldata``); the tuning region with Reif's

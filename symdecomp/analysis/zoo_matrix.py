@@ -34,10 +34,12 @@ from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.schemes.topology import refine_step, topology_of
 from symdecomp.validate import check_int, check_type, check_valence
 
-__all__ = ["ZooMatrix", "zoo_matrix", "MAX_DEPTH"]
+__all__ = ["ZooMatrix", "zoo_matrix", "compose_rows", "MAX_DEPTH", "MAX_GIVEN_DEPTH"]
 
 #: The deepest neighbourhood the closure tries before giving up.
 MAX_DEPTH = 4
+#: The deepest neighbourhood asked for by depth (Zorin's test solves its net on one as deep as its regular stencils reach).
+MAX_GIVEN_DEPTH = 8
 
 
 @dataclass(frozen=True)
@@ -61,7 +63,8 @@ class ZooMatrix:
         return self.neighbourhood.depth
 
 
-def _compose(rows: dict[int, Row], previous: dict[int, Row] | None) -> dict[int, Row]:
+def compose_rows(rows: dict[int, Row], previous: dict[int, Row] | None) -> dict[int, Row]:
+    """The rows of a later step on the vertices before an earlier one (``previous``; ``None``: the identity)."""
     if previous is None:
         return rows
     out = {}
@@ -84,7 +87,7 @@ def _refined(scheme: StencilScheme, nb: Neighbourhood) -> tuple[HalfedgeMesh, in
         origin, tip = topology.track(mesh, start, step)
         if origin not in st.ids or tip not in st.ids or (st.ids[origin], st.ids[tip]) not in st.mesh.by_edge:
             return None
-        rows = _compose(st.rows, rows)
+        rows = compose_rows(st.rows, rows)
         mesh, start = st.mesh, st.mesh.by_edge[(st.ids[origin], st.ids[tip])]
     assert rows is not None  # a scheme has at least one step
     return mesh, start, rows
@@ -124,7 +127,7 @@ def zoo_matrix(scheme: StencilScheme, n: int, depth: int | None = None) -> ZooMa
     n = check_valence(n)
     lat = lattice_named(scheme.lattice)
     centred = topology_of(scheme).centre
-    depths = [check_int(depth, "depth", minimum=1, maximum=MAX_DEPTH)] if depth is not None else range(1, MAX_DEPTH + 1)
+    depths = [check_int(depth, "depth", minimum=1, maximum=MAX_GIVEN_DEPTH)] if depth is not None else range(1, MAX_DEPTH + 1)
     for d in depths:
         nb = neighbourhood(lat, n, d, centred=centred)
         S = _matrix_at(scheme, nb)

@@ -115,7 +115,8 @@ def register(sub) -> None:
                    help="sharpness of the crease for --crease (default inf; a finite S is semi-sharp)")
     p.add_argument("--depth", type=_depth, action=Once, default=6,
                    help="largest de Casteljau subdivision depth, 0 to 12 (default 6; a level splits a quad piece in "
-                   "four, a triangle twice); for the modified butterfly, refinements of the net in Zorin's test, capped at 7")
+                   "four, a triangle twice); for modified-butterfly and sqrt3, refinements of the net in Zorin's test, capped at 7 "
+                   "(at 4 for sqrt3, whose levels have nine times the points of the one before)")
     flag(p, "--json",
                    help='print the one JSON shape (docs: File formats, --json), one object per valence under "rows": '
                    '{"n", "verdict" (c1/not-c1/undecided), "reason", '

@@ -5,8 +5,9 @@ same :mod:`symdecomp.output.report_tex` and :mod:`symdecomp.output.report_html` 
 lattice, topology, steps and source), its spectrum at each valence through the zoo's engine
 (:func:`symdecomp.analysis.zoo_spectrum.zoo_spectrum`, as ``spectrum N --scheme``), and its C1 verdicts
 (:func:`symdecomp.verify.c1_zoo.c1_zoo` with the engine's neighbourhood, as ``c1 --scheme``: Reif's test on the
-biquadratic patches of a dual scheme, Zorin's test on the characteristic net of a primal triangle scheme without a spline
-patch, about a minute per valence for the modified butterfly, or undecided with the reason). The paper's claims,
+biquadratic patches of a dual scheme, Zorin's test on the characteristic net of a triangle scheme without a spline
+patch (the modified butterfly, about a minute per valence; sqrt(3) over its two steps, seconds), or undecided with the
+reason). The paper's claims,
 the masks' closed forms, the artifact indicators and the figures are about 1-ring primal schemes and are not part
 of it; the document says where the rest is (``masks``, ``check --certify``, the derivations' ``zoo.tex``).
 """
@@ -68,7 +69,7 @@ def zoo_spectrum_section(scheme: StencilScheme, valences: tuple[int, ...]) -> Se
 
 
 def zoo_c1_section(scheme: StencilScheme, valences: tuple[int, ...]) -> Section:
-    """The C1 verdict at each valence (``c1 --scheme``): Reif's test on the dual route, or undecided with the reason."""
+    """The C1 verdict at each valence (``c1 --scheme``): the test the scheme's model allows, or undecided with the reason."""
     rows = []
     method = ""
     for n in valences:

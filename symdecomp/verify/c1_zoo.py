@@ -35,12 +35,13 @@ from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.errors import InvalidSchemeError, UnavailableError
 from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import J, M, N, StencilScheme
+from symdecomp.schemes.topology import topology_of
 from symdecomp.validate import check_bits, check_depth
 from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify_ring
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down
 from symdecomp.verify.result import C1Verdict
 
-__all__ = ["DUAL_METHOD", "NO_METHOD", "ZORIN_TOPOLOGY", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
+__all__ = ["DUAL_METHOD", "NO_METHOD", "ZORIN_CENTRE", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
            "corner_weights", "spline_route", "zorin_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
@@ -50,10 +51,12 @@ DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-sp
 
 #: The method line of a scheme that neither test applies to (its verdicts are ``undecided``, each with the reason).
 NO_METHOD = ("none applies: Reif's test needs a spline patch this package evaluates (a dual quad scheme whose regular part is "
-             "the biquadratic B-spline), and Zorin's test, which needs none, is written for one primal step on triangles")
+             "the biquadratic B-spline), and Zorin's test, which needs none, is written for a net around a vertex of the "
+             "triangle lattice")
 
-#: The topology Zorin's test (:mod:`symdecomp.verify.c1_zorin`) is written for: one primal step.
-ZORIN_TOPOLOGY = "primal"
+#: The centre Zorin's test (:mod:`symdecomp.verify.c1_zorin`) is written for: a vertex (its net is sector 0 of a
+#: triangle lattice around it, refined by the steps that return the lattice to itself: one primal step, sqrt(3)'s two).
+ZORIN_CENTRE = "vertex"
 
 
 @dataclass(frozen=True)
@@ -157,7 +160,9 @@ def corner_weights(scheme: StencilScheme, sides: int, valence: int) -> tuple[sp.
 
 def spline_route(scheme: StencilScheme) -> str | None:
     """``None`` when the scheme's regular part is the biquadratic B-spline (the dual route applies), else the reason."""
-    tail = f"Zorin's test, which needs no spline patch, is written here for schemes of one {ZORIN_TOPOLOGY} step on triangles"
+    centre = topology_of(scheme).centre
+    tail = (f"Zorin's test, which needs no spline patch, is written here for a net around a {ZORIN_CENTRE} of the triangle "
+            f"lattice{'' if centre == ZORIN_CENTRE else f', and this scheme centres on a {centre}'}")
     if scheme.interpolatory:
         return f"the scheme is interpolatory, so its regular part is no spline and Reif's test has no patch; {tail}"
     if scheme.topology != "dual":
@@ -213,10 +218,11 @@ def c1_dual_test(neighbourhood: ZooNeighbourhood, *, scheme: str, n: int, max_de
 
 
 def zorin_route(scheme: StencilScheme) -> bool:
-    """Whether C1 of ``scheme`` is Zorin's test (no spline patch, :func:`spline_route`; one primal step on triangles):
+    """Whether C1 of ``scheme`` is Zorin's test (no spline patch, :func:`spline_route`; a vertex at the centre, the steps
+    that return the lattice to itself read by :func:`~symdecomp.verify.zorin_bounds.regular_mask`, which names what stops it):
     the one test of :func:`c1_zoo` and of ``c1 --every-n``, which then reads the spectral conditions for every n from
     the structural blocks (:mod:`symdecomp.verify.c1_zorin_every_n`)."""
-    return spline_route(scheme) is not None and scheme.topology == ZORIN_TOPOLOGY and scheme.steps == 1
+    return spline_route(scheme) is not None and topology_of(scheme).centre == ZORIN_CENTRE
 
 
 def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilScheme, int], ZooNeighbourhood] | None = None,
@@ -230,8 +236,7 @@ def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilSch
     if zorin_route(scheme):
         from symdecomp.verify.c1_zorin import MAX_REFINEMENT, c1_zorin_test  # imported when this route runs
 
-        deepest = min(max(max_depth, 1), MAX_REFINEMENT)
-        return c1_zorin_test(scheme, n, min_depth=min(4, deepest), max_depth=deepest)
+        return c1_zorin_test(scheme, n, max_depth=min(max(max_depth, 1), MAX_REFINEMENT))
     if (reason := spline_route(scheme)) is not None:
         return ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason=reason, max_depth=max_depth,
                            precision=prec, method=NO_METHOD)

@@ -1,4 +1,4 @@
-"""Certified C1 without a spline patch: Zorin's test on the characteristic map's control net (primal triangle schemes).
+"""Certified C1 without a spline patch: Zorin's test on the characteristic map's control net (schemes on triangles).
 
 D. Zorin, *A method for analysis of C1-continuity of subdivision surfaces*, SIAM J. Numer. Anal. 37(5) (2000),
 1677-1708, reduces C1 (Reif's sufficient condition, extended in D. Zorin, *Smoothness of subdivision on irregular
@@ -15,13 +15,15 @@ venue only); the test below is written from that statement, with bounds derived 
 
 1. Reif's spectral conditions on the engine's matrix (:func:`~symdecomp.verify.zoo_characteristic.spectral_conditions`);
 2. the characteristic map's control net: the subdominant eigenvector of the frequency block on the neighbourhood of
-   depth 4, grown outwards and refined ``m`` times by the scheme's own regular rules (:mod:`.zorin_net`);
+   depth 4 (deeper when the regular stencils reach further, :func:`net_depth`), grown outwards and refined ``m`` times
+   by the scheme's own regular rules (:mod:`.zorin_net`): the steps that return the lattice to itself, refining it by
+   ``1/a`` (``a = 2``: one primal step; ``a = 3``: sqrt(3)'s two steps, and ``lambda`` is then the two steps' eigenvalue);
 3. the linear approximation is close: on each level-``m`` triangle ``T`` of one sector of the ring
-   ``d <= |x| <= 2 d`` (level-``m`` graph distance; a fundamental domain of the scaling by ``lambda``),
-   ``d_e chi(x)`` lies within ``E = K_1 2^m M_m F`` of ``2^m D_e p^m(T)`` for the two edge directions ``e``, with
+   ``d <= |x| <= a d`` (level-``m`` graph distance; a fundamental domain of the scaling by ``lambda``),
+   ``d_e chi(x)`` lies within ``E = K_1 a^m M_m F`` of ``a^m D_e p^m(T)`` for the two edge directions ``e``, with
    ``M_m`` the largest rhombus difference near the ring and ``K_1``, ``F`` computed from the regular rules'
    difference scheme (:class:`~symdecomp.verify.zorin_bounds.DifferenceBounds`: ``F`` exists only when the
-   contraction closes, ``2^L nu_L < 1``);
+   contraction closes, ``a^L nu_L < 1``);
 4. regularity: the Jacobian ``Im(conj(d_1 chi) d_w chi)``, in Arb balls widened by ``E``, has one strict sign on every
    triangle (the other sectors are the same map rotated by ``rho``: the same Jacobian);
 5. injectivity: the ring's inner boundary (``|x| = d`` in sector 0) maps into a chain of balls that avoid 0; the angle
@@ -55,17 +57,30 @@ from symdecomp.verify.zoo_characteristic import characteristic_points, real_matr
 from symdecomp.verify.zorin_bounds import EDGES, RHOMBI, TRIANGLES, DifferenceBounds, Point, difference_bounds, hex_norm
 from symdecomp.verify.zorin_net import WedgeNet, grow, refine, wedge_points
 
-__all__ = ["ZORIN_METHOD", "NET_DEPTH", "MAX_REFINEMENT", "c1_zorin_test"]
+__all__ = ["ZORIN_METHOD", "NET_DEPTH", "MAX_REFINEMENT", "FIRST_POINTS", "depths", "net_depth", "c1_zorin_test"]
 
 #: The method, as reported with each verdict of this route.
 ZORIN_METHOD = ("Zorin's test: the characteristic map's control net refined m times by the regular rules; the limit's "
                 "derivatives within a bound of the net's differences (from the contraction of the regular rules' "
                 "difference scheme); the Jacobian's sign certified on every triangle of one sector's ring in interval "
                 "arithmetic; injective by the winding number of the ring's inner boundary; per valence")
-#: The depth of the engine's neighbourhood the eigenvector is solved on.
+#: The least depth of the engine's neighbourhood the eigenvector is solved on (:func:`net_depth`).
 NET_DEPTH = 4
 #: The deepest refinement tried (each level has four times the points of the one before).
 MAX_REFINEMENT = 7
+#: The refinement tried first is the deepest whose points per coarse point (``a^(2m)``) are at most this: ``m = 4``
+#: for one primal step (``a = 2``), ``m = 2`` for sqrt(3)'s two (``a = 3``).
+FIRST_POINTS = 4 ** 4
+
+
+def depths(bounds: DifferenceBounds, min_depth: int | None, max_depth: int) -> range:
+    """The refinements tried: ``min_depth`` (default: the deepest within :data:`FIRST_POINTS`) to ``max_depth``, both
+    capped where a level would have more points per coarse point than :data:`MAX_REFINEMENT` dyadic ones."""
+    a = bounds.dilation
+    deepest = max(m for m in range(1, MAX_REFINEMENT + 1) if m == 1 or a ** (2 * m) <= 4 ** MAX_REFINEMENT)
+    first = max(m for m in range(1, MAX_REFINEMENT + 1) if m == 1 or a ** (2 * m) <= FIRST_POINTS)
+    last = min(max_depth, deepest)
+    return range(min(first if min_depth is None else min_depth, last), last + 1)
 
 
 def _q(x: Fraction) -> flint.arb:
@@ -78,9 +93,15 @@ def _widen(z: flint.acb, e: flint.arb) -> flint.acb:
     return flint.acb(z.real + r, z.imag + r)
 
 
-def _characteristic(scheme: StencilScheme, n: int) -> SpectralResult | str | tuple[SpectralResult, WedgeNet]:
-    """``(spectral, level-0 net of radius NET_DEPTH)``, or the spectral result / a reason string when there is no map."""
-    zm = zoo_matrix(scheme, n, NET_DEPTH)
+def net_depth(bounds: DifferenceBounds) -> int:
+    """The depth the eigenvector is solved on: :data:`NET_DEPTH`, or deeper until the regular rules grow it."""
+    return max(NET_DEPTH, bounds.clear_radius - 1)
+
+
+def _characteristic(scheme: StencilScheme, n: int, depth: int = NET_DEPTH
+                    ) -> SpectralResult | str | tuple[SpectralResult, WedgeNet]:
+    """``(spectral, level-0 net of radius depth)``, or the spectral result / a reason string when there is no map."""
+    zm = zoo_matrix(scheme, n, depth)
     spectral = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n,  # the smallest invariant depth
                                    real_matrix=real_matrix(zm))
     if spectral.status is not C1Verdict.C1 or spectral.subdominant is None:
@@ -89,25 +110,26 @@ def _characteristic(scheme: StencilScheme, n: int) -> SpectralResult | str | tup
     if points is None:
         return "the subdominant eigenvector could not be solved in its frequency block at this precision"
     nb = zm.neighbourhood
-    where, spoke = wedge_points(nb.mesh, nb.start, NET_DEPTH)
+    where, spoke = wedge_points(nb.mesh, nb.start, depth)
     s0, s1 = nb.labels[where[(1, 0)]][0], nb.labels[spoke][0]
     rho = flint.acb(flint.fmpq(2 * spectral.subdominant.frequencies[0] * (s1 - s0), n)).exp_pi_i()
     return spectral, WedgeNet({q: points[v] for q, v in where.items()}, rho)
 
 
 def _level_net(net: WedgeNet, lam: flint.acb, bounds: DifferenceBounds, m: int) -> tuple[WedgeNet, int]:
-    """``(net, d)``: sector 0 of level ``m`` on the ring ``[d, 2d]`` widened by the margin."""
-    low = 0
+    """``(net, d)``: sector 0 of level ``m`` on the ring ``[d, a d]`` widened by the margin."""
+    a, low = bounds.dilation, 0
     for _ in range(m):
-        low = max(2 * low + bounds.reach, bounds.reach + 2)
+        low = max(a * low + bounds.reach, bounds.clear_radius)
     d = low + bounds.margin
-    need = 2 * d + bounds.margin + 1
+    need = a * d + bounds.margin + 1
     for _ in range(m):  # the level-0 radius whose m refinements reach ``need``
-        need = -(-(need + bounds.reach) // 2)
-    net, high = grow(net, NET_DEPTH, lam, bounds.mask, bounds.reach, max(need, NET_DEPTH))
+        need = -(-(need + bounds.reach) // a)
+    radius = net_depth(bounds)
+    net, high = grow(net, radius, lam, bounds, max(need, radius))
     low = 0
     for _ in range(m):
-        net, low, high = refine(net, low, high, bounds.mask, bounds.reach)
+        net, low, high = refine(net, low, high, bounds)
     return net, d
 
 
@@ -123,13 +145,13 @@ def _rhombus_bound(net: WedgeNet, inner: int, outer: int) -> flint.arb:
     return top
 
 
-def _triangles(d: int) -> Iterator[list[Point]]:
-    """Sector 0's level-``m`` triangles of the ring ``d <= |x| <= 2d``: their corners."""
-    for x in range(0, 2 * d + 1):
-        for y in range(0, 2 * d + 1 - x):
+def _triangles(d: int, a: int) -> Iterator[list[Point]]:
+    """Sector 0's level-``m`` triangles of the ring ``d <= |x| <= a d``: their corners."""
+    for x in range(0, a * d + 1):
+        for y in range(0, a * d + 1 - x):
             for corners in TRIANGLES.values():
                 pts = [(x + c[0], y + c[1]) for c in corners]
-                if all(d <= hex_norm(p) <= 2 * d for p in pts):
+                if all(d <= hex_norm(p) <= a * d for p in pts):
                     yield pts
 
 
@@ -141,14 +163,15 @@ def _edge_difference(net: WedgeNet, pts: list[Point], e: Point, scale: int) -> f
     raise AssertionError("a lattice triangle has an edge in each direction")  # pragma: no cover
 
 
-def _jacobian(net: WedgeNet, d: int, m: int, error: flint.arb) -> tuple[set[int], flint.arb | None, Point | None]:
+def _jacobian(net: WedgeNet, d: int, a: int, m: int, error: flint.arb
+              ) -> tuple[set[int], flint.arb | None, Point | None]:
     """``(signs seen, lower bound of |J|, a triangle where the sign is open)`` over sector 0's ring."""
     signs: set[int] = set()
     low: flint.arb | None = None
     open_at: Point | None = None
-    for pts in _triangles(d):
-        d1 = _widen(_edge_difference(net, pts, EDGES[0], 2 ** m), error)
-        dw = _widen(_edge_difference(net, pts, EDGES[1], 2 ** m), error)
+    for pts in _triangles(d, a):
+        d1 = _widen(_edge_difference(net, pts, EDGES[0], a ** m), error)
+        dw = _widen(_edge_difference(net, pts, EDGES[1], a ** m), error)
         jac = d1.real * dw.imag - d1.imag * dw.real
         if jac > 0 or jac < 0:
             signs.add(1 if jac > 0 else -1)
@@ -159,13 +182,13 @@ def _jacobian(net: WedgeNet, d: int, m: int, error: flint.arb) -> tuple[set[int]
     return signs, low, open_at
 
 
-def _winding(net: WedgeNet, d: int, n: int, m: int, error: flint.arb, node_error: flint.arb) -> int | None:
+def _winding(net: WedgeNet, d: int, n: int, edge: int, error: flint.arb, node_error: flint.arb) -> int | None:
     """The winding number of the ring's inner boundary around 0, or ``None`` when a piece may pass through 0."""
     angle = flint.arb(0)
     for t in range(d):
         a, b = (d - t, t), (d - t - 1, t + 1)
         pa, pb = _widen(net.value(a), node_error), _widen(net.value(b), node_error)
-        piece = pa + flint.arb(0.5, 0.5) * _widen(net.value(b) - net.value(a), error / 2 ** m)
+        piece = pa + flint.arb(0.5, 0.5) * _widen(net.value(b) - net.value(a), error / edge)
         if piece.real.contains(0) and piece.imag.contains(0):
             return None
         angle += (pb / pa).arg()
@@ -174,12 +197,14 @@ def _winding(net: WedgeNet, d: int, n: int, m: int, error: flint.arb, node_error
     return lo if lo == hi else None
 
 
-def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int = 4, max_depth: int = 6,
+def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int | None = None, max_depth: int = 6,
                   prec: int = 128) -> ZooC1Result:
-    """Zorin's test at valence ``n`` (module docstring), refining ``m = min_depth..max_depth`` times until it decides."""
+    """Zorin's test at valence ``n`` (module docstring), refining ``m = min_depth..max_depth`` times until it decides
+    (:func:`depths`: by default from the deepest level of at most :data:`FIRST_POINTS` points per coarse point)."""
     prec = check_bits(prec)
     max_depth = check_int(max_depth, "max_depth", minimum=1, maximum=MAX_REFINEMENT)
-    min_depth = check_int(min_depth, "min_depth", minimum=1, maximum=max_depth)
+    if min_depth is not None:
+        min_depth = check_int(min_depth, "min_depth", minimum=1, maximum=max_depth)
     result = ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason="", max_depth=max_depth,
                          precision=prec, method=ZORIN_METHOD)
     try:
@@ -187,21 +212,22 @@ def c1_zorin_test(scheme: StencilScheme, n: int, *, min_depth: int = 4, max_dept
     except InvalidSchemeError as exc:
         return replace(result, reason=f"the regular rules give no difference bound: {exc}")
     if not bounds.closes:
+        a = bounds.dilation
         return replace(result, reason=(f"the regular rules' difference scheme does not contract within {bounds.steps} steps "
-                                       f"(2^L nu_L = {float(2 ** bounds.steps * bounds.contraction[-1]):.4g} >= 1): "
+                                       f"({a}^L nu_L = {float(a ** bounds.steps * bounds.contraction[-1]):.4g} >= 1): "
                                        "no bound of the derivatives"))
     if n == lattice(scheme.lattice).regular_valence:  # the vertex is regular: the regular rules' C1 is the verdict
         return replace(result, verdict=C1Verdict.C1, reason=(
-            f"the vertex is regular and the regular rules' derivative scheme converges: 2^L nu_L = "
-            f"{2 ** bounds.steps * bounds.contraction[-1]} < 1 at L = {bounds.steps}"))
+            f"the vertex is regular and the regular rules' derivative scheme converges: {bounds.dilation}^L nu_L = "
+            f"{bounds.dilation ** bounds.steps * bounds.contraction[-1]} < 1 at L = {bounds.steps}"))
     with flint.ctx.workprec(prec):
-        start = _characteristic(scheme, n)
+        start = _characteristic(scheme, n, net_depth(bounds))
         if isinstance(start, str):
             return replace(result, reason=start)
         if not isinstance(start, tuple):
             return replace(result, verdict=start.status, reason=start.reason, spectral=start)
         reason = "no depth tried"
-        for m in range(min_depth, max_depth + 1):
+        for m in depths(bounds, min_depth, max_depth):
             decided = _at_depth(start, n, bounds, m, result)
             if isinstance(decided, ZooC1Result):
                 return decided
@@ -216,10 +242,11 @@ def _at_depth(start: tuple[SpectralResult, WedgeNet], n: int, bounds: Difference
     lam = spectral.subdominant
     assert lam is not None  # the spectral conditions hold: _characteristic returned a net
     net, d = _level_net(net0, lam.value, bounds, m)
-    M = _rhombus_bound(net, d - bounds.margin, 2 * d + bounds.margin)
-    error = _q(bounds.derivative) * 2 ** m * M * _q(bounds.derivative_factor())
+    a = bounds.dilation
+    M = _rhombus_bound(net, d - bounds.margin, a * d + bounds.margin)
+    error = _q(bounds.derivative) * a ** m * M * _q(bounds.derivative_factor())
     node_error = _q(bounds.position) * M * _q(bounds.position_factor())
-    signs, low_j, open_at = _jacobian(net, d, m, error)
+    signs, low_j, open_at = _jacobian(net, d, a, m, error)
     base = replace(result, spectral=spectral, frequency=lam.frequency, subdivision_depth=m)
     if len(signs) > 1:
         return replace(base, verdict=C1Verdict.NOT_C1, reason=(f"the Jacobian of the characteristic map has both signs on "
@@ -228,7 +255,7 @@ def _at_depth(start: tuple[SpectralResult, WedgeNet], n: int, bounds: Difference
         return (f"the bound did not close at m = {m}: the Jacobian's sign is open on the triangle at {open_at} "
                 f"(derivative error <= {float(error.upper()):.3g})")
     sign = signs.pop()
-    winding = _winding(net, d, n, m, error, node_error)
+    winding = _winding(net, d, n, a ** m, error, node_error)
     found = replace(base, jacobian_sign=sign, jacobian_lower_bound=float_down(low_j), winding_number=winding)
     if winding is None:
         return f"the winding number of the inner boundary is not certified at m = {m}"

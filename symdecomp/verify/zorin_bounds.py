@@ -1,10 +1,13 @@
 """How far a limit's derivatives can be from its control net's differences: the regular rules' difference bounds.
 
-The regular part of a primal scheme on triangles is read from the scheme itself (:func:`regular_mask`): one step on
-a regular patch of the engine (:func:`~symdecomp.schemes.topology.refine_step` at valence 6, every point regular),
-each new point placed where it refines (a vertex point on its vertex, an edge point at its edge's midpoint) in the
-lattice coordinates ``x e_1 + y w`` (``w`` the unit at 60 degrees), so that ``(S p)(y) = sum_x A[y - 2x] p(x)``. The
-bounds below are computed from ``A``, never typed in.
+The regular part of a scheme on triangles is read from the scheme itself (:func:`regular_mask`): the steps that return
+the lattice to itself (one primal step; sqrt(3)'s two, :attr:`~symdecomp.schemes.stencils.StencilScheme.steps`) on a
+regular patch of the engine (:func:`~symdecomp.schemes.topology.refine_step` at valence 6, every point regular),
+each new point placed where its rule puts a linear function (a vertex point on its vertex, an edge point at its
+edge's midpoint, a face point at the centroid) in the lattice coordinates ``x e_1 + y w`` (``w`` the unit at 60
+degrees). The new points are the lattice refined by ``1/a`` (``a = 2`` for a primal step, ``3`` for sqrt(3)'s two:
+triadic refinement; computed, and checked point by point), so that ``(S p)(y) = sum_x A[y - a x] p(x)``. The bounds
+below are computed from ``A`` and ``a``, never typed in; written below for ``a = 2``, they hold with ``a`` for 2.
 
 **Second differences.** A *rhombus* is two triangles sharing an edge; its difference is the sum of ``p`` at the
 two tips minus the sum at the shared edge's ends (three types by direction, :data:`RHOMBI`). They vanish exactly on
@@ -39,6 +42,7 @@ the constants here are derived by the linear programs above, not taken from the 
 
 from __future__ import annotations
 
+import math
 from collections import defaultdict
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -48,6 +52,7 @@ from itertools import product
 
 import sympy as sp
 
+from symdecomp.analysis.zoo_matrix import compose_rows
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.halfedge import HalfedgeMesh
 from symdecomp.schemes.lattice import lattice
@@ -71,6 +76,8 @@ RHOMBI: tuple[dict[Point, int], ...] = (
 EDGES: tuple[Point, ...] = ((1, 0), (0, 1), (-1, 1))
 #: A triangle of level ``k`` at ``q``: its corners' offsets (``up``: ``q, q + e_1, q + w``; ``down``: the other one).
 TRIANGLES: dict[str, tuple[Point, Point, Point]] = {"up": ((0, 0), (1, 0), (0, 1)), "down": ((1, 0), (1, 1), (0, 1))}
+#: The most fine positions (``a^(2r)``, each three linear programs) a contraction step ``r > 1`` is computed over.
+_POSITIONS = 64
 #: The largest denominator of the linear program's rounded coefficients.
 _DENOMINATOR = 1 << 20
 
@@ -120,28 +127,57 @@ def _weight(w: object) -> Fraction:
     return Fraction(int(value.p), int(value.q))
 
 
-def regular_mask(scheme: StencilScheme) -> dict[Point, Fraction]:
-    """``A`` with ``(S p)(y) = sum_x A[y - 2x] p(x)``: the scheme's rules on the regular lattice (module docstring)."""
+def _placed(rows: Mapping[int, Mapping[int, object]], pos: Mapping[int, tuple[Fraction, Fraction]]
+            ) -> dict[int, tuple[Fraction, Fraction]]:
+    """Each new point where its rule puts a linear function: the row's weights applied to the old points' places."""
+    out = {}
+    for i, row in rows.items():
+        if all(v in pos for v in row):
+            ws = [(_weight(w), pos[v]) for v, w in row.items()]
+            out[i] = (sum((w * p[0] for w, p in ws), Fraction(0)), sum((w * p[1] for w, p in ws), Fraction(0)))
+    return out
+
+
+def _dilation(places: Mapping[int, tuple[Fraction, Fraction]], near: int) -> int:
+    """``a``: the new points near the centre are exactly the lattice scaled by ``1/a`` (else the reason why not)."""
+    a = 1
+    for p in places.values():
+        a = math.lcm(a, p[0].denominator, p[1].denominator)
+    fine = {(int(p[0] * a), int(p[1] * a)) for p in places.values()}
+    wanted = {(x, y) for x in range(-near, near + 1) for y in range(-near, near + 1) if hex_norm((x, y)) <= near}
+    if a < 2 or not wanted <= fine:
+        missing = sorted(wanted - fine)[:1]
+        raise InvalidSchemeError(f"the new points are not the triangle lattice refined by an integer factor (factor {a}"
+                                 f"{', no point at ' + str(missing[0]) + '/' + str(a) if missing else ''})")
+    return a
+
+
+def regular_mask(scheme: StencilScheme) -> tuple[int, dict[Point, Fraction]]:
+    """``(a, A)`` with ``(S p)(y) = sum_x A[y - a x] p(x)``, ``S`` the scheme's steps (module docstring)."""
     lat = lattice(scheme.lattice)
-    nb = neighbourhood(lat, lat.regular_valence, 3)
-    pos = unfold(nb.mesh, nb.start)
-    step = refine_step(scheme, nb.mesh, regular=lat.regular_valence)
+    nb = neighbourhood(lat, lat.regular_valence, 3 + scheme.steps)
+    pos0 = {v: (Fraction(p[0]), Fraction(p[1])) for v, p in unfold(nb.mesh, nb.start).items()}
+    mesh, pos, rows = nb.mesh, pos0, None
+    for _ in range(scheme.steps):  # the steps that return the lattice to itself
+        step = refine_step(scheme, mesh, regular=lat.regular_valence)
+        pos, rows, mesh = _placed(step.rows, pos), compose_rows(step.rows, rows), step.mesh
+    assert rows is not None  # a scheme has at least one step
+    a = _dilation({i: p for i, p in pos.items() if _distance_q(p) <= 1}, 2)
     mask: dict[Point, Fraction] = {}
-    for (kind, x), i in step.ids.items():
-        if kind == "vertex":
-            y = (2 * pos[x][0], 2 * pos[x][1])
-        elif kind == "edge":
-            y = _add(pos[nb.mesh.origin[x]], pos[nb.mesh.tip(x)])
-        else:
-            raise InvalidSchemeError(f"scheme {scheme.name!r}: new {kind} points have no place on the triangle lattice here")
-        if hex_norm(y) > 2:
+    for i, p in pos.items():
+        y = (int(p[0] * a), int(p[1] * a))
+        if hex_norm(y) > a:  # one coarse cell around the centre: every kind of new point, its rule clear of the edge
             continue
-        for v, w in step.rows[i].items():
-            u = (y[0] - 2 * pos[v][0], y[1] - 2 * pos[v][1])
+        for v, w in rows[i].items():
+            u = (y[0] - a * int(pos0[v][0]), y[1] - a * int(pos0[v][1]))
             value = _weight(w)
-            if mask.setdefault(u, value) != value:
+            if value and mask.setdefault(u, value) != value:
                 raise InvalidSchemeError(f"scheme {scheme.name!r}: its regular rules are not the same at every point")
-    return mask
+    return a, mask
+
+
+def _distance_q(p: tuple[Fraction, Fraction]) -> Fraction:
+    return max(abs(p[0]), abs(p[1]), abs(p[0] + p[1]))
 
 
 def _divide(c: Functional, var: int) -> tuple[Functional, Functional]:
@@ -252,7 +288,9 @@ def _reach(g: list[Functional], centre: tuple[Fraction, Fraction]) -> Fraction:
 class DifferenceBounds:
     """The regular rules' bounds (module docstring), exact rationals."""
 
-    #: ``A``: ``(S p)(y) = sum_x A[y - 2x] p(x)``.
+    #: ``a``: the scheme's steps refine the lattice by ``1/a`` (2 for one primal step, 3 for sqrt(3)'s two).
+    dilation: int
+    #: ``A``: ``(S p)(y) = sum_x A[y - a x] p(x)``.
     mask: dict[Point, Fraction]
     #: ``L``: the number of steps of the contraction.
     steps: int
@@ -268,31 +306,38 @@ class DifferenceBounds:
     reach: int
 
     @property
+    def clear_radius(self) -> int:
+        """The smallest radius (fine graph distance) where a new point's rule is the regular one: its stencil reaches no
+        coarse point nearer the centre than one coarse edge (``reach + a``)."""
+        return self.reach + self.dilation
+
+    @property
     def closes(self) -> bool:
-        """``2^L nu_L < 1``: the derivatives converge (C1 on the regular lattice)."""
-        return bool(2 ** self.steps * self.contraction[-1] < 1)
+        """``a^L nu_L < 1``: the derivatives converge (C1 on the regular lattice)."""
+        return bool(self.dilation ** self.steps * self.contraction[-1] < 1)
 
     def derivative_factor(self) -> Fraction:
-        """``sum_(r < L) 2^r nu_r / (1 - 2^L nu_L)``: ``sum_(k >= m) 2^k M_k <= 2^m M_m`` times this."""
-        top = Fraction(2 ** self.steps) * self.contraction[-1]
-        return sum((Fraction(2 ** r) * self.contraction[r] for r in range(self.steps)), Fraction(0)) / (1 - top)
+        """``sum_(r < L) a^r nu_r / (1 - a^L nu_L)``: ``sum_(k >= m) a^k M_k <= a^m M_m`` times this."""
+        a = self.dilation
+        top = Fraction(a ** self.steps) * self.contraction[-1]
+        return sum((Fraction(a ** r) * self.contraction[r] for r in range(self.steps)), Fraction(0)) / (1 - top)
 
     def position_factor(self) -> Fraction:
         """``sum_(r < L) nu_r / (1 - nu_L)``: ``sum_(k >= m) M_k <= M_m`` times this."""
         return sum(self.contraction[: self.steps], Fraction(0)) / (1 - self.contraction[-1])
 
 
-def _power(mask: Mapping[Point, Fraction], previous: Mapping[Point, Fraction]) -> dict[Point, Fraction]:
-    """The mask of ``S^(r+1)`` from that of ``S^r``: ``A_(r+1)[u] = sum_v A[u - 2v] A_r[v]``."""
+def _power(mask: Mapping[Point, Fraction], previous: Mapping[Point, Fraction], a: int) -> dict[Point, Fraction]:
+    """The mask of ``S^(r+1)`` from that of ``S^r``: ``A_(r+1)[u] = sum_v A[u - a v] A_r[v]``."""
     out: dict[Point, Fraction] = defaultdict(Fraction)
-    for u, a in mask.items():
-        for v, b in previous.items():
-            out[(u[0] + 2 * v[0], u[1] + 2 * v[1])] += a * b
+    for u, x in mask.items():
+        for v, w in previous.items():
+            out[(u[0] + a * v[0], u[1] + a * v[1])] += x * w
     return {k: v for k, v in out.items() if v}
 
 
 def _refined(power: Mapping[Point, Fraction], size: int, terms: Mapping[Point, Fraction]) -> Functional:
-    """The functional ``p -> sum_y terms[y] (S^r p)(y)`` on the coarse points (``size = 2^r``)."""
+    """The functional ``p -> sum_y terms[y] (S^r p)(y)`` on the coarse points (``size = a^r``)."""
     c: Functional = defaultdict(Fraction)
     for y, s in terms.items():
         for u, a in power.items():
@@ -314,18 +359,35 @@ def _contraction(power: Mapping[Point, Fraction], size: int) -> tuple[Fraction, 
     return worst, reach
 
 
-def _derivative_bound(mask: Mapping[Point, Fraction]) -> tuple[Fraction, Fraction]:
-    """``(K_1, reach)``: the worst ``2 D_e p^(k+1)(T') - D_e p^k(T)`` over triangles, children and directions."""
+def _children(corners: tuple[Point, ...], a: int) -> list[tuple[Point, ...]]:
+    """The ``a^2`` triangles one level finer inside a triangle (its corners scaled by ``a``)."""
+    big = [(a * c[0], a * c[1]) for c in corners]
+
+    def inside(p: Point) -> bool:
+        return all((q[0] - o[0]) * (p[1] - o[1]) - (q[1] - o[1]) * (p[0] - o[0]) >= 0
+                   for o, q in zip(big, big[1:] + big[:1]))
+
+    low = (min(c[0] for c in big), min(c[1] for c in big))
+    out = []
+    for x, y in product(range(low[0] - 1, low[0] + a + 1), range(low[1] - 1, low[1] + a + 1)):
+        for shape in TRIANGLES.values():
+            pts = tuple((x + c[0], y + c[1]) for c in shape)
+            if all(inside(p) for p in pts):
+                out.append(pts)
+    assert len(out) == a * a  # a triangle refined by 1/a is a^2 triangles
+    return out
+
+
+def _derivative_bound(mask: Mapping[Point, Fraction], a: int) -> tuple[Fraction, Fraction]:
+    """``(K_1, reach)``: the worst ``a D_e p^(k+1)(T') - D_e p^k(T)`` over triangles, children and directions."""
     worst, reach = Fraction(0), Fraction(0)
     for corners in TRIANGLES.values():
-        children: list[tuple[Point, ...]] = [tuple(_add(corners[i], corners[k]) for k in range(3)) for i in range(3)]
-        children.append(tuple(_add(corners[k], corners[(k + 1) % 3]) for k in range(3)))  # and the middle one
         for e in EDGES:
             parent = _edge(corners, e)
-            for child in children:
+            for child in _children(corners, a):
                 fine = _edge(child, e)
-                terms = {fine[1]: Fraction(2), fine[0]: Fraction(-2)}
-                c = _combine(_refined(mask, 2, terms), {parent[1]: Fraction(-1), parent[0]: Fraction(1)})
+                terms = {fine[1]: Fraction(a), fine[0]: Fraction(-a)}
+                c = _combine(_refined(mask, a, terms), {parent[1]: Fraction(-1), parent[0]: Fraction(1)})
                 g = decompose(c)
                 worst, reach = max(worst, _norm(g)), max(reach, _reach(g, (Fraction(0), Fraction(0))) + 1)
     return worst, reach
@@ -343,24 +405,27 @@ def _edge(corners: tuple[Point, ...], e: Point) -> tuple[Point, Point]:
 
 @lru_cache(maxsize=16)
 def _bounds(key: str, scheme: StencilScheme, max_steps: int) -> DifferenceBounds:
-    mask = regular_mask(scheme)
+    a, mask = regular_mask(scheme)
     power: dict[Point, Fraction] = {(0, 0): Fraction(1)}
     contraction, margin = [Fraction(1)], Fraction(0)
-    k1, k1_reach = _derivative_bound(mask)
-    k0 = _norm(decompose(_combine(_refined(mask, 2, {(0, 0): Fraction(1)}), {(0, 0): Fraction(-1)})))
+    k1, k1_reach = _derivative_bound(mask, a)
+    k0 = _norm(decompose(_combine(_refined(mask, a, {(0, 0): Fraction(1)}), {(0, 0): Fraction(-1)})))
     reach = max(hex_norm(u) for u in mask)
     best = None
     for r in range(1, max_steps + 1):
-        power = _power(mask, power)
-        nu, fine_reach = _contraction(power, 2 ** r)
+        if r > 1 and a ** (2 * r) > _POSITIONS:
+            break  # the next step's fine positions would cost more than the factor it saves
+        power = _power(mask, power, a)
+        nu, fine_reach = _contraction(power, a ** r)
         contraction.append(nu)
-        margin = max(margin, fine_reach / (1 - Fraction(1, 2 ** r)), k1_reach)
-        found = DifferenceBounds(mask, r, tuple(contraction), k1, k0, int(-(-margin // 1)), reach)
+        margin = max(margin, fine_reach / (1 - Fraction(1, a ** r)), k1_reach)
+        found = DifferenceBounds(a, mask, r, tuple(contraction), k1, k0, int(-(-margin // 1)), reach)
         if found.closes and (best is None or found.derivative_factor() < best.derivative_factor()):
             best = found  # more steps: a smaller factor, a wider margin
     return best if best is not None else found
 
 
 def difference_bounds(scheme: StencilScheme, max_steps: int = 3) -> DifferenceBounds:
-    """The scheme's regular difference bounds (module docstring), ``L`` the first ``r <= max_steps`` that closes."""
+    """The scheme's regular difference bounds (module docstring): of ``L = 1..max_steps`` (those over at most 64 fine
+    positions), the one whose derivative factor is smallest among those that close."""
     return _bounds(repr(scheme), scheme, max_steps)

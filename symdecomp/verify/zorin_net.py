@@ -8,8 +8,9 @@ regular vertex leaves it opposite to where it came in). The neighbouring sectors
 each way, and the rotation by one sector multiplies ``X`` by ``rho = zeta^(j s)`` (read from the labels), so
 :class:`WedgeNet` holds sector 0 only and answers any point of the three wedges.
 
-One step of the regular rules (:class:`~symdecomp.verify.zorin_bounds.DifferenceBounds`' mask) makes the next
-level's points whose stencil keeps clear of the centre. Since ``S X = lambda X`` on the neighbourhood's labels, the
+One step of the regular rules (:class:`~symdecomp.verify.zorin_bounds.DifferenceBounds`' mask: the scheme's steps
+that return the lattice to itself, refining it by ``1/a``) makes the next level's points whose stencil keeps clear of
+the centre. Since ``S X = lambda X`` on the neighbourhood's labels, the
 level-1 values past the known radius, divided by ``lambda``, are the level-0 values there (:func:`grow`): the net is
 extended outwards as far as the test needs, then refined ``m`` times on an annulus (:func:`refine`).
 """
@@ -24,7 +25,7 @@ import flint
 
 from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.halfedge import HalfedgeMesh
-from symdecomp.verify.zorin_bounds import Point, turn
+from symdecomp.verify.zorin_bounds import DifferenceBounds, Point, turn
 
 __all__ = ["WedgeNet", "wedge_points", "grow", "refine"]
 
@@ -81,7 +82,7 @@ class WedgeNet:
                                  "the centre)")
 
 
-def _step(net: WedgeNet, mask: Mapping[Point, flint.fmpq], low: int, high: int) -> dict[Point, flint.acb]:
+def _step(net: WedgeNet, mask: Mapping[Point, flint.fmpq], a: int, low: int, high: int) -> dict[Point, flint.acb]:
     """The next level's sector-0 points with ``low <= |y| <= high``."""
     out = {}
     for x in range(1, high + 1):
@@ -89,10 +90,10 @@ def _step(net: WedgeNet, mask: Mapping[Point, flint.fmpq], low: int, high: int) 
             if x + y < low:
                 continue
             total = flint.acb(0)
-            for u, a in mask.items():
+            for u, w in mask.items():
                 d0, d1 = x - u[0], y - u[1]
-                if d0 % 2 == 0 and d1 % 2 == 0:
-                    total += a * net.value((d0 // 2, d1 // 2))
+                if d0 % a == 0 and d1 % a == 0:
+                    total += w * net.value((d0 // a, d1 // a))
             out[(x, y)] = total
     return out
 
@@ -101,23 +102,23 @@ def _fmpq_mask(mask: Mapping[Point, Fraction]) -> dict[Point, flint.fmpq]:
     return {u: flint.fmpq(a.numerator, a.denominator) for u, a in mask.items()}
 
 
-def grow(net: WedgeNet, radius: int, lam: flint.acb, mask: Mapping[Point, Fraction], reach: int,
-         target: int) -> tuple[WedgeNet, int]:
+def grow(net: WedgeNet, radius: int, lam: flint.acb, bounds: DifferenceBounds, target: int) -> tuple[WedgeNet, int]:
     """Extend a level-0 net known up to ``radius`` to at least ``target``: ``X = (S X) / lambda`` outside."""
-    fm = _fmpq_mask(mask)
+    fm, a, reach = _fmpq_mask(bounds.mask), bounds.dilation, bounds.reach
     while radius < target:
-        high = 2 * radius - reach
-        if high <= radius or radius + 1 < reach + 2:  # the new points keep their stencils clear of the centre
+        high = a * radius - reach
+        if high <= radius or radius + 1 < bounds.clear_radius:  # the new points keep their stencils clear of the centre
             raise InvalidSchemeError(f"the net of radius {radius} does not grow: the regular stencils reach {reach}")
-        new = _step(net, fm, radius + 1, high)
+        new = _step(net, fm, a, radius + 1, high)
         net = WedgeNet({**net.values, **{q: v / lam for q, v in new.items()}}, net.rho)
         radius = high
     return net, radius
 
 
-def refine(net: WedgeNet, low: int, high: int, mask: Mapping[Point, Fraction], reach: int) -> tuple[WedgeNet, int, int]:
+def refine(net: WedgeNet, low: int, high: int, bounds: DifferenceBounds) -> tuple[WedgeNet, int, int]:
     """One level finer on the annulus the old one ``[low, high]`` determines, away from the centre's stencils."""
-    new_low = max(2 * low + reach, reach + 2)
-    new_high = 2 * high - reach
-    return WedgeNet(_step(net, _fmpq_mask(mask), new_low, new_high), net.rho), new_low, new_high
+    a, reach = bounds.dilation, bounds.reach
+    new_low = max(a * low + reach, bounds.clear_radius)
+    new_high = a * high - reach
+    return WedgeNet(_step(net, _fmpq_mask(bounds.mask), a, new_low, new_high), net.rho), new_low, new_high
 

@@ -57,8 +57,11 @@ def test_the_dual_route_runs_on_the_engines_neighbourhood(zoo, capsys):
 
 def test_the_depth_help_names_zorins_refinement_cap(capsys):
     """``c1 --help`` states the cap Zorin's test puts on ``--depth`` as the test defines it (MAX_REFINEMENT)."""
-    from symdecomp.verify.c1_zorin import MAX_REFINEMENT
+    from types import SimpleNamespace
+
+    from symdecomp.verify.c1_zorin import MAX_REFINEMENT, depths
 
     assert main(["c1", "--help"]) == 0
     text = " ".join(capsys.readouterr().out.split())
-    assert f"in Zorin's test, capped at {MAX_REFINEMENT}" in text
+    triadic = depths(SimpleNamespace(dilation=3), None, MAX_REFINEMENT).stop - 1  # sqrt(3)'s two steps: a = 3
+    assert f"in Zorin's test, capped at {MAX_REFINEMENT} (at {triadic} for sqrt3," in text

@@ -34,10 +34,10 @@ def test_doo_sabin_is_c1_at_the_valences_of_the_report():
     assert [(r[0], r[1], r[2], r[3]) for r in rows] == [("3", "c1", "0.5", "1"), ("5", "c1", "0.5", "1")]
 
 
-def test_sqrt3_says_two_steps_and_c1_undecided_with_the_reason():
+def test_sqrt3_says_two_steps_and_c1_by_zorins_test():
     report = build_zoo_report(load_zoo("sqrt3"), [3])
     [row] = _table(report, "C1 at the extraordinary element").rows
-    assert row[1] == "undecided" and "sqrt3 on the triangle lattice" in row[4]
+    assert row[1] == "c1" and row[3] == "1" and str(row[4]).startswith("lambda = 0.111111 (frequency 1")  # (1/3)^2
     first = report.sections[0].blocks[0].parts
     assert "after 2 steps: the matrices, spectra and verdicts are those of 2 steps" in first[-1]
     spectrum = {row[1]: int(row[2]) for row in _table(report, "The spectrum").rows if row[0] == "3"}

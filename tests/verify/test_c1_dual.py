@@ -257,8 +257,8 @@ def test_the_route_is_read_from_the_scheme_model():
                                           "rules (it has edge))")
     triangles = doo_sabin_scheme("dual-triangles", lattice="triangle")
     assert spline_route(triangles).startswith("its regular corner weights (2/3, 1/6, 1/6) are not the biquadratic B-spline's")
-    assert spline_route(butterfly).endswith("Zorin's test, which needs no spline patch, is written here for schemes of one primal "
-                                            "step on triangles")
+    assert spline_route(butterfly).endswith("Zorin's test, which needs no spline patch, is written here for a net around a "
+                                            "vertex of the triangle lattice")
     r = c1_zoo(butterfly, 5)  # a primal scheme goes to Zorin's test, which reads its regular rules and names what is missing
     assert r.verdict is C1Verdict.UNDECIDED and r.reason == "the regular rules give no difference bound: a primal scheme needs [vertex] rules"
 

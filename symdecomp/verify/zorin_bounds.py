@@ -44,7 +44,7 @@ from __future__ import annotations
 
 import math
 from collections import defaultdict
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
@@ -57,10 +57,11 @@ from symdecomp.errors import InvalidSchemeError
 from symdecomp.schemes.halfedge import HalfedgeMesh
 from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.neighbourhood import neighbourhood
+from symdecomp.schemes.stencil_rows import Row
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.schemes.topology import refine_step
 
-__all__ = ["RHOMBI", "EDGES", "DifferenceBounds", "Point", "hex_norm", "turn", "unfold", "regular_mask", "decompose",
+__all__ = ["RHOMBI", "EDGES", "DifferenceBounds", "Point", "hex_norm", "turn", "unfold", "regular_mask", "regular_reach", "decompose",
            "difference_bounds"]
 
 Point = tuple[int, int]
@@ -152,8 +153,12 @@ def _dilation(places: Mapping[int, tuple[Fraction, Fraction]], near: int) -> int
     return a
 
 
-def regular_mask(scheme: StencilScheme) -> tuple[int, dict[Point, Fraction]]:
-    """``(a, A)`` with ``(S p)(y) = sum_x A[y - a x] p(x)``, ``S`` the scheme's steps (module docstring)."""
+@lru_cache(maxsize=16)
+def _regular_rows(scheme: StencilScheme) -> tuple[int, dict[int, tuple[Fraction, Fraction]], dict[int, tuple[Fraction, Fraction]],
+                                                  dict[int, Row]]:
+    """``(a, pos0, pos, rows)``: the scheme's steps composed on a regular neighbourhood, the old points' and the new
+    points' places, and the new points' rows on the old ones (entries that cancel to 0 kept: a row's keys are every
+    old point some path of the steps reads)."""
     lat = lattice(scheme.lattice)
     nb = neighbourhood(lat, lat.regular_valence, 3 + scheme.steps)
     pos0 = {v: (Fraction(p[0]), Fraction(p[1])) for v, p in unfold(nb.mesh, nb.start).items()}
@@ -163,17 +168,38 @@ def regular_mask(scheme: StencilScheme) -> tuple[int, dict[Point, Fraction]]:
         pos, rows, mesh = _placed(step.rows, pos), compose_rows(step.rows, rows), step.mesh
     assert rows is not None  # a scheme has at least one step
     a = _dilation({i: p for i, p in pos.items() if _distance_q(p) <= 1}, 2)
-    mask: dict[Point, Fraction] = {}
+    return a, pos0, pos, rows
+
+
+def _near_rows(scheme: StencilScheme) -> Iterator[tuple[int, Point, Row, dict[int, tuple[Fraction, Fraction]]]]:
+    """``(a, y, row, pos0)`` for each new point ``y`` within one coarse cell of the centre (every kind of new point, its
+    rule clear of the neighbourhood's edge)."""
+    a, pos0, pos, rows = _regular_rows(scheme)
     for i, p in pos.items():
         y = (int(p[0] * a), int(p[1] * a))
-        if hex_norm(y) > a:  # one coarse cell around the centre: every kind of new point, its rule clear of the edge
-            continue
-        for v, w in rows[i].items():
+        if hex_norm(y) <= a:
+            yield a, y, rows[i], pos0
+
+
+def regular_mask(scheme: StencilScheme) -> tuple[int, dict[Point, Fraction]]:
+    """``(a, A)`` with ``(S p)(y) = sum_x A[y - a x] p(x)``, ``S`` the scheme's steps (module docstring)."""
+    a = _regular_rows(scheme)[0]
+    mask: dict[Point, Fraction] = {}
+    for _, y, row, pos0 in _near_rows(scheme):
+        for v, w in row.items():
             u = (y[0] - a * int(pos0[v][0]), y[1] - a * int(pos0[v][1]))
             value = _weight(w)
             if value and mask.setdefault(u, value) != value:
                 raise InvalidSchemeError(f"scheme {scheme.name!r}: its regular rules are not the same at every point")
     return a, mask
+
+
+def regular_reach(scheme: StencilScheme) -> int:
+    """The largest ``|y - a x|`` over every old point ``x`` a new point ``y`` reads through some path of the steps, its
+    composed weight 0 or not: a new point farther than this from the centre reads no rule of the centre, even where
+    a two-step scheme's weights cancel (the nonzero mask alone would not show that)."""
+    return max(hex_norm((y[0] - a * int(pos0[v][0]), y[1] - a * int(pos0[v][1])))
+               for a, y, row, pos0 in _near_rows(scheme) for v in row)
 
 
 def _distance_q(p: tuple[Fraction, Fraction]) -> Fraction:
@@ -410,7 +436,7 @@ def _bounds(key: str, scheme: StencilScheme, max_steps: int) -> DifferenceBounds
     contraction, margin = [Fraction(1)], Fraction(0)
     k1, k1_reach = _derivative_bound(mask, a)
     k0 = _norm(decompose(_combine(_refined(mask, a, {(0, 0): Fraction(1)}), {(0, 0): Fraction(-1)})))
-    reach = max(hex_norm(u) for u in mask)
+    reach = max(max(hex_norm(u) for u in mask), regular_reach(scheme))
     best = None
     for r in range(1, max_steps + 1):
         if r > 1 and a ** (2 * r) > _POSITIONS:

@@ -137,3 +137,20 @@ def test_a_vertex_that_stays_where_it_is_gives_no_derivative_bound():
     assert r.verdict is C1Verdict.UNDECIDED
     assert r.reason == (f"the regular rules' difference scheme does not contract within {b.steps} steps (3^L nu_L = "
                         f"{float(3 ** b.steps * b.contraction[-1]):.4g} >= 1): no bound of the derivatives")
+
+
+def test_the_clear_radius_counts_paths_whose_weights_cancel(monkeypatch):
+    """A new point whose composed weight on an old point cancels to 0 still reads that point's rule through the steps:
+    the radius past which rules are regular counts it (the nonzero mask alone would stop short of it)."""
+    import symdecomp.verify.zorin_bounds as zb
+
+    a, pos0, pos, rows = zb._regular_rows(SQRT3)
+    assert zb.regular_reach(SQRT3) == max(zb.hex_norm(u) for u in regular_mask(SQRT3)[1]) == 5
+    centre = next(i for i, p in pos.items() if p == (0, 0))
+    far = max(pos0, key=lambda v: zb.hex_norm((int(pos0[v][0]), int(pos0[v][1]))))
+    reach = zb.hex_norm((a * int(pos0[far][0]), a * int(pos0[far][1])))
+    assert reach > 5
+    cancelled = {**rows, centre: {**rows[centre], far: sp.Integer(0)}}  # a path to ``far`` whose weights sum to 0
+    monkeypatch.setattr(zb, "_regular_rows", lambda scheme: (a, pos0, pos, cancelled))
+    assert zb.regular_reach(SQRT3) == reach
+    assert max(zb.hex_norm(u) for u in regular_mask(SQRT3)[1]) == 5

@@ -209,6 +209,11 @@ class StencilScheme:
                     if extra:
                         raise InvalidSchemeError(f"[{k.kind}]: a weight uses undeclared symbol {sorted(map(str, extra))[0]!r}")
 
+    @property
+    def own_valences(self) -> tuple[int, ...]:
+        """The valences some rule names (``origin = 3``): where the scheme has rules of their own, in order."""
+        return tuple(sorted({c for k in self.kinds for rule in k.rules for c in (rule.origin, rule.tip) if isinstance(c, int)}))
+
     def rules_of(self, kind: str) -> KindRules:
         """The rules of one kind of new point; an error naming the kind if the scheme has none."""
         for k in self.kinds:

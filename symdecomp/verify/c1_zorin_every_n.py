@@ -232,6 +232,19 @@ def _disc_step(name: str, what: str, poly: sp.Expr, lam: sp.Expr, low: sp.Expr, 
     return EveryNStep(f"{what}: {last.note}", "open", (start, None), name, formulas)
 
 
+def _own_rules(scheme: StencilScheme) -> str:
+    """``"; n = 3, 4 have rules of their own"`` for the valences the scheme's rules name (none: ``""``).
+
+    >>> from symdecomp.schemes.stencil_files import load_zoo
+    >>> _own_rules(load_zoo("modified-butterfly")), _own_rules(load_zoo("sqrt3"))
+    ('; n = 3, 4 have rules of their own', '')
+    """
+    own = scheme.own_valences
+    if not own:
+        return ""
+    return f"; n = {', '.join(map(str, own))} {'has rules of its' if len(own) == 1 else 'have rules of their'} own"
+
+
 def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
     """The valences below the structural form's: the per-valence route's spectral conditions, exactly certified."""
     from symdecomp.analysis.zoo_matrix import zoo_matrix
@@ -247,8 +260,8 @@ def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
         if r.status is not C1Verdict.C1:
             return EveryNStep(r.reason, "failed" if r.status is C1Verdict.NOT_C1 else "open", (n, n),
                               "below-structural")
-    return EveryNStep(f"n = 3..{start - 1} but {regular} (below the structural form's first valence; n = 3, 4 have rules of "
-                      "their own): the spectral conditions certified valence by valence (exact factors of each block); "
+    return EveryNStep(f"n = 3..{start - 1} but {regular} (below the structural form's first valence{_own_rules(scheme)}): "
+                      "the spectral conditions certified valence by valence (exact factors of each block); "
                       f"n = {regular} is the regular vertex, whose rules Zorin's test checks on their own", "verified",
                       (3, start - 1), "below-structural")
 

@@ -34,6 +34,7 @@ def test_doo_sabin_is_c1_at_the_valences_of_the_report():
     assert [(r[0], r[1], r[2], r[3]) for r in rows] == [("3", "c1", "0.5", "1"), ("5", "c1", "0.5", "1")]
 
 
+@pytest.mark.slow
 def test_sqrt3_says_two_steps_and_c1_by_zorins_test():
     report = build_zoo_report(load_zoo("sqrt3"), [3])
     [row] = _table(report, "C1 at the extraordinary element").rows

@@ -76,7 +76,7 @@ from symdecomp.claims.guards import DEFAULT_BUDGET, BudgetExceeded, at_parameter
 from symdecomp.claims.order import BEYOND, module_ranks, section_key, section_modules
 from symdecomp.claims.text import Text, Verbatim
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
-from symdecomp.schemes.lattice import Lattice, lattice
+from symdecomp.schemes.lattice import LATTICES, Lattice, lattice
 from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
 from symdecomp.schemes.stencils import StencilScheme
 
@@ -328,6 +328,13 @@ class Claim:
         return next((reason for requirement in self.requires for s in read if (reason := requirement.unmet(s)) is not None), None)
 
     @property
+    def lattices(self) -> tuple[Lattice, ...]:
+        """The lattices whose 1-ring the check computes with: of those it reads (:attr:`reads_on`; every lattice when it
+        declares none), each whose reference scheme meets the claim's requirements (:meth:`unmet`: a claim needing face
+        neighbours, quad meshes only; Loop's claims, triangle meshes); all of them if no reference does."""
+        return _lattices(self.label)
+
+    @property
     def involves_no_scheme(self) -> bool:
         """The check reads no scheme and the claim requires nothing of one: the same verdict for every scheme, a scheme
         of the zoo or a 1-ring scheme on any lattice (the one test both routes ask, :func:`check_claim` and
@@ -344,6 +351,14 @@ class Claim:
 
 
 REGISTRY: dict[str, Claim] = {}
+
+
+@cache
+def _lattices(label: str) -> tuple[Lattice, ...]:
+    """:attr:`Claim.lattices` of the registered claim ``label`` (computed once: it tests reference schemes)."""
+    c = REGISTRY[label]
+    candidates = c.reads_on or tuple(LATTICES.values())
+    return tuple(x for x in candidates if c.unmet(x.reference()) is None) or candidates
 
 
 def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (),

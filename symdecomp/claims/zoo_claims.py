@@ -3,7 +3,7 @@
 The checks of the registry compute with the 1-ring primal model (:class:`~symdecomp.schemes.scheme.Scheme`);
 a scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model by
 :data:`~symdecomp.claims.applicability.ZOO_REQUIREMENTS` first, then its lattice against the lattices whose
-1-ring the claim is about (:func:`claim_lattices`, computed from the claim's ``reads_on`` and requirements), and
+1-ring the claim is about (:attr:`~symdecomp.claims.registry.Claim.lattices`, from its ``reads_on`` and requirements), and
 the first mismatch is the ``not applicable`` reason: what the scheme has, and what the claim needs. A claim whose
 statement is not tied to the 1-ring (C1 at the extraordinary element, the closed forms being the spectrum of the
 full matrix) is named with the command of the zoo engine
@@ -20,14 +20,13 @@ reads a scheme of the zoo on another lattice as the 1-ring route reads Loop: thr
 from __future__ import annotations
 
 import dataclasses
-from functools import cache
 
 from symdecomp.claims.applicability import ZOO_REQUIREMENTS, one_ring_needed
 from symdecomp.claims.registry import CheckResult, Claim, Status, Text, Verbatim, check_claim, get_claim
-from symdecomp.schemes.lattice import LATTICES, Lattice, lattice
+from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import StencilScheme
 
-__all__ = ["ENGINE_COMMANDS", "claim_lattices", "zoo_claim_result"]
+__all__ = ["ENGINE_COMMANDS", "zoo_claim_result"]
 
 #: The claim modules whose statements hold beyond the 1-ring: what they state, and the command that answers it.
 ENGINE_COMMANDS = {
@@ -36,28 +35,14 @@ ENGINE_COMMANDS = {
 }
 
 
-def claim_lattices(claim: Claim) -> tuple[Lattice, ...]:
-    """The lattices whose 1-ring the claim's check computes with: of those it reads (:attr:`Claim.reads_on`; all, when it
-    declares none), each whose reference scheme meets the claim's requirements (a claim needing face neighbours: quad
-    meshes only; Loop's claims: triangle meshes); all of them if no reference meets them."""
-    return _claim_lattices(claim.label)
-
-
-@cache
-def _claim_lattices(label: str) -> tuple[Lattice, ...]:
-    claim = get_claim(label)
-    candidates = claim.reads_on or tuple(LATTICES.values())
-    return tuple(x for x in candidates if claim.unmet(x.reference()) is None) or candidates
-
-
 def _first_unmet(scheme: StencilScheme, claim: Claim) -> Text | None:
     """What ``scheme`` has that the claim's 1-ring model does not (the first zoo requirement it does not meet, or a
     lattice that is not the claim's), with what the claim needs (:func:`one_ring_needed`); ``None`` when it fits."""
-    needed = one_ring_needed(claim_lattices(claim), scheme)
+    needed = one_ring_needed(claim.lattices, scheme)
     for requirement in ZOO_REQUIREMENTS:  # the zoo's requirements take either model of a scheme (applicability)
         if (reason := requirement.unmet(scheme)) is not None:  # type: ignore[arg-type]
             return Text(reason, "; ", needed)
-    return needed if lattice(scheme.lattice) not in claim_lattices(claim) else None
+    return needed if lattice(scheme.lattice) not in claim.lattices else None
 
 
 def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None = None) -> CheckResult:

@@ -16,7 +16,7 @@ import pytest
 from symdecomp.claims import Status, all_claims, check_claim, scope_summary
 from symdecomp.claims.applicability import FACE_NEIGHBOURS, ONE_RING_SUPPORT, PRIMAL_VERTEX, ZOO_REQUIREMENTS
 from symdecomp.claims.batch import check_claims
-from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, claim_lattices, zoo_claim_result
+from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, zoo_claim_result
 from symdecomp.cli import main
 from symdecomp.cli.json_envelope import json_schema
 from symdecomp.schemes.files import load_scheme
@@ -61,7 +61,7 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
         else:  # what the scheme has, then what the claim needs, and the scheme's lattice where it is not the claim's
             assert row["status"] == Status.NOT_APPLICABLE.value
             assert row["evidence"].startswith(reason + "; the claim is about the (")
-            assert (f"'{name}' subdivides" in row["evidence"]) is (lattice(scheme.lattice) not in claim_lattices(c))
+            assert (f"'{name}' subdivides" in row["evidence"]) is (lattice(scheme.lattice) not in c.lattices)
 
 
 def test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes():
@@ -201,10 +201,10 @@ def test_a_triangle_scheme_is_told_what_each_claim_needs_not_a_quad_mesh_for_loo
 
 def test_the_claim_s_lattices_come_from_what_it_reads_and_requires():
     by_label = {c.label: c for c in all_claims()}
-    assert claim_lattices(by_label["Eq. 34"]) == (QUAD,)  # face neighbours: Loop does not meet it
-    assert claim_lattices(by_label["Curvature regime: Loop"]) == (TRIANGLE,)  # reads_on
-    assert claim_lattices(by_label["Curvature regime: Catmull-Clark"]) == (QUAD,)
-    assert claim_lattices(by_label["1-ring suffices (after Eq. 51)"]) == (QUAD, TRIANGLE)
+    assert by_label["Eq. 34"].lattices == (QUAD,)  # face neighbours: Loop does not meet it
+    assert by_label["Curvature regime: Loop"].lattices == (TRIANGLE,)  # reads_on
+    assert by_label["Curvature regime: Catmull-Clark"].lattices == (QUAD,)
+    assert by_label["1-ring suffices (after Eq. 51)"].lattices == (QUAD, TRIANGLE)
     triangle_stencils = loop_stencils()  # primal, 1-ring, on triangles: only its lattice misses a quad claim
     eq34 = zoo_claim_result("Eq. 34", triangle_stencils)
     assert str(eq34.evidence) == ("the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a primal "

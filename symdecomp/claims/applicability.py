@@ -27,11 +27,13 @@ meet one (instead of failing inside sympy, or repeating the same guard in every 
 * :data:`WHOLE_MESH`: the supports of Section 3 live on whole quad meshes, so the 1-ring rules must
   be rules of the mesh (:func:`symdecomp.schemes.mesh.mesh_rules`).
 
-The paper's claims are about the ``(2n+1)``-point 1-ring of a vertex of a quad mesh refined by a primal
-step. A scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that
-model, from its data, by :data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them):
+The claims' checks compute with the 1-ring of a vertex refined by a primal step: the paper's with the
+``(2n+1)``-point 1-ring of a quad mesh, others (Loop's) with the ``(n+1)``-point 1-ring of a triangle mesh. A
+scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model, from its
+data, by :data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them), and then its lattice
+against the claim's (:attr:`~symdecomp.claims.registry.Claim.lattices`); each reason says what the scheme has,
+and :func:`one_ring_needed` what the claim needs:
 
-* :data:`QUAD_MESHES`: the lattice is one the paper's statements are about (quad meshes);
 * :data:`PRIMAL_VERTEX`: the step is primal and the extraordinary element is a vertex;
 * :data:`ONE_RING_SUPPORT`: every rule's walks cross at most one edge from the anchor's faces.
 """
@@ -56,7 +58,7 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import sin_jtheta as SIN
 
 __all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH", "closed_form_obstacle",
-           "QUAD_MESHES", "PRIMAL_VERTEX", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS"]
+           "PRIMAL_VERTEX", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS", "one_ring_needed"]
 
 
 def _block_term(scheme: Scheme, symbol) -> tuple[str, sp.Expr] | None:
@@ -140,14 +142,20 @@ NO_FREE_PARAMETERS = Requirement("no free parameters", _free_parameters)
 WHOLE_MESH = Requirement("rules of a whole quad mesh", _not_mesh_rules)
 
 
-_ONE_RING = "the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a primal step"
+def one_ring_needed(lattices: tuple, scheme: Scheme | StencilScheme) -> Text:
+    """What a claim about the 1-ring of a vertex on ``lattices`` needs, in words computed from the lattices (the number
+    of 1-ring points from each lattice's kinds of neighbours: ``2n+1`` on quads, ``n+1`` on triangles), naming the
+    lattice ``scheme`` subdivides when it is not one of them."""
+    rings = " or ".join(f"the ({_ring_points(x)})-point 1-ring of a vertex of a {x} mesh" for x in lattices)
+    own = lattice(scheme.lattice)
+    other = () if own in lattices else (", and ", Verbatim(repr(scheme.name)), f" subdivides {own} meshes")
+    return Text("the claim is about ", rings, " refined by a primal step", *other)
 
 
-def _off_paper_lattice(scheme: Scheme | StencilScheme) -> Text | None:
-    """Why the scheme's lattice is not the paper's (quad meshes), or ``None``."""
-    if lattice(scheme.lattice).paper_claims:
-        return None
-    return Text("the scheme ", Verbatim(repr(scheme.name)), f" subdivides {lattice(scheme.lattice)} meshes; ", _ONE_RING)
+def _ring_points(x) -> str:
+    """``2n+1``, ``n+1``: the centre and one point per kind of 1-ring neighbour per sector."""
+    kinds = len(x.one_ring_classes)
+    return f"{kinds if kinds > 1 else ''}n+1"
 
 
 def _not_primal_vertex(scheme: Scheme | StencilScheme) -> Text | None:
@@ -159,9 +167,9 @@ def _not_primal_vertex(scheme: Scheme | StencilScheme) -> Text | None:
         return None
     if topology.centre == "face":
         return Text("the extraordinary element is an n-sided face of a dual scheme (", Verbatim(repr(scheme.name)),
-                    " makes a new point per face corner); ", _ONE_RING)
+                    " makes a new point per face corner)")
     return Text("the scheme ", Verbatim(repr(scheme.name)), f" has the {topology.name.replace('sqrt', '√')} topology "
-                f"(analysed over {scheme.steps} steps), not a primal step; ", _ONE_RING)
+                f"(analysed over {scheme.steps} steps), not a primal step")
 
 
 def _walk_beyond_one_ring(scheme: Scheme | StencilScheme) -> Text | None:
@@ -173,18 +181,17 @@ def _walk_beyond_one_ring(scheme: Scheme | StencilScheme) -> Text | None:
             for term in rule.terms:
                 if term.walk.count("twin") >= 2:
                     return Text(f"the {kind.kind} rule reaches two rings out (its walk ", Verbatim(repr(" ".join(term.walk))),
-                                " crosses two edges); ", _ONE_RING)
+                                " crosses two edges)")
     return None
 
 
-#: The paper's lattice (quad meshes), asked of the lattice object.
-QUAD_MESHES = Requirement("a quad mesh", _off_paper_lattice)
 #: A primal step, centred on an extraordinary vertex.
 PRIMAL_VERTEX = Requirement("a primal step at an extraordinary vertex", _not_primal_vertex)
 #: Rules whose stencils stay in the 1-ring (walks crossing at most one edge).
 ONE_RING_SUPPORT = Requirement("rules on the 1-ring", _walk_beyond_one_ring)
-#: What a scheme of the zoo is tested against before any claim of the paper, in order.
-ZOO_REQUIREMENTS = (PRIMAL_VERTEX, ONE_RING_SUPPORT, QUAD_MESHES)
+#: What a scheme of the zoo is tested against before any claim, in order (then its lattice against the claim's:
+#: :attr:`~symdecomp.claims.registry.Claim.lattices`).
+ZOO_REQUIREMENTS = (PRIMAL_VERTEX, ONE_RING_SUPPORT)
 
 
 def closed_form_obstacle(scheme: Scheme) -> str | None:

@@ -22,11 +22,15 @@ scheme on quad meshes and "Curvature regime: Loop" (and "Loop's vertex weight") 
 scheme on that lattice stands for the named one (its own rules are checked against the statement, as the paper's
 claims about Catmull-Clark take the quad scheme given); a scheme on another lattice has nothing to put there, so the
 check reads the lattice's reference scheme (:meth:`~symdecomp.schemes.lattice.Lattice.own_or_reference`), and the
-verdict is the named scheme's. What a check needs is therefore asked of the scheme it reads (:func:`read_on`): a
-triangle file with free parameters gets Catmull-Clark's verdict for Catmull-Clark's regimes, as every triangle file
-does, and "not applicable" for Loop's. Each claim also declares the lattices it reads the scheme on (``reads_on=``):
+verdict is the named scheme's. Each claim declares the lattices it reads the scheme on (``reads_on=``), and the
+registry asks what a check needs (``requires=``) of each scheme it reads
+(:meth:`~symdecomp.claims.registry.Claim.unmet`): a triangle file with free parameters gets Catmull-Clark's verdict
+for Catmull-Clark's regimes, as every triangle file does, and "not applicable" for Loop's.
 :meth:`~symdecomp.claims.registry.Claim.reads_instead` is the one test both routes ask, so a scheme of the zoo on the
-other lattice (sqrt(3), the modified butterfly) gets the reference scheme's verdict as a 1-ring scheme does.
+other lattice (sqrt(3), the modified butterfly) gets the reference scheme's verdict as a 1-ring scheme does. The
+regimes compare mu with lambda_1^2, a real number only for a real lambda_1, hence mirror-symmetric rules
+(:data:`~symdecomp.claims.applicability.MIRROR_SYMMETRIC`: a rotating characteristic map has no tangent plane, so no
+curvature or shape to speak of).
 """
 
 from __future__ import annotations
@@ -40,7 +44,7 @@ from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.claims.applicability import MIRROR_SYMMETRIC, NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
-from symdecomp.claims.registry import CheckResult, LazySteps, Requirement, Scope, Status, Step, Text, Verbatim, claim
+from symdecomp.claims.registry import CheckResult, LazySteps, Scope, Status, Step, Text, Verbatim, claim
 from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE, Lattice
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
@@ -142,21 +146,6 @@ def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
     return wanted.own_or_reference(scheme)
 
 
-def read_on(requirement: Requirement, *lattices: Lattice) -> Requirement:
-    """``requirement`` asked of each scheme the check reads (the scheme on its own lattice, the reference scheme on the
-    others, :func:`_on`), never of a scheme it does not read: a triangle file's free parameters do not stop a check of
-    Catmull-Clark's regimes, which reads Catmull-Clark for it."""
-    return Requirement(requirement.name,
-                       lambda scheme: next(filter(None, (requirement.unmet(_on(scheme, x)) for x in lattices)), None))
-
-
-def real_lambda1_on(*lattices: Lattice) -> Requirement:
-    """:data:`~symdecomp.claims.applicability.MIRROR_SYMMETRIC` of each scheme the check reads (:func:`read_on`): the
-    regimes compare mu with lambda_1^2, a real number only for a real lambda_1 (a rotating characteristic map has no
-    tangent plane, so no curvature or shape to speak of)."""
-    return read_on(MIRROR_SYMMETRIC, *lattices)
-
-
 @claim(
     "Curvature regime: Catmull-Clark",
     section="B.1",
@@ -164,7 +153,7 @@ def real_lambda1_on(*lattices: Lattice) -> Requirement:
     statement=r"For Catmull-Clark surfaces the curvature at an extraordinary vertex tends to zero at $n = 3$ "
     r"($|\mu| < \lambda_1^2$, $\mu$ elliptic), is bounded at $n = 4$, and is unbounded for every $n \ge 5$, caused by "
     r"the hyperbolic (frequency 2) eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004); Peters, Reif, CAGD 21 (2004)).",
-    requires=(read_on(NO_FREE_PARAMETERS, QUAD), real_lambda1_on(QUAD)),
+    requires=(NO_FREE_PARAMETERS, MIRROR_SYMMETRIC),
     reads_on=(QUAD,),
 )
 def _catmull_clark(scheme: Scheme) -> CheckResult:
@@ -179,7 +168,7 @@ def _catmull_clark(scheme: Scheme) -> CheckResult:
     r"eigenvalue $1/8$ exceeds $\lambda_1^2 = 1/16$), bounded at $n = 4, 5$ (Loop's vertex weight puts the elliptic "
     r"eigenvalue at $\lambda_1^2$) and at $n = 6$, and unbounded for every $n \ge 7$, caused by the hyperbolic "
     r"eigenvalue (Karciauskas, Peters, Reif, CAGD 21 (2004)).",
-    requires=(read_on(NO_FREE_PARAMETERS, TRIANGLE), real_lambda1_on(TRIANGLE)),
+    requires=(NO_FREE_PARAMETERS, MIRROR_SYMMETRIC),
     reads_on=(TRIANGLE,),
 )
 def _loop(scheme: Scheme) -> CheckResult:
@@ -192,7 +181,7 @@ def _loop(scheme: Scheme) -> CheckResult:
     title="Loop's weight makes the elliptic eigenvalue exactly $\\lambda_1^2$",
     statement=r"Loop's vertex weight $\beta(n) = (5/8 - (3/8 + \cos(2\pi/n)/4)^2)/n$ makes the frequency-0 (elliptic) "
     r"eigenvalue equal to $\lambda_1^2$ at every valence (Loop 1987; Peters, Reif 2004).",
-    requires=(real_lambda1_on(TRIANGLE),),
+    requires=(MIRROR_SYMMETRIC,),
     reads_on=(TRIANGLE,),
 )
 def _loop_weight(scheme: Scheme) -> CheckResult:
@@ -317,7 +306,7 @@ def _argument(first: int, text: str) -> tuple[Step, ...]:
     r"$n \ge 5$ and for Loop at every $n \ge 7$, so the hyperbolic part dominates on fine rings even for convex input; "
     r"for Loop at $n = 4, 5$ the elliptic part dominates, and the two tie at the regular valence (Karciauskas, Peters, "
     r"Reif, CAGD 21 (2004)).",
-    requires=(read_on(NO_FREE_PARAMETERS, QUAD, TRIANGLE), real_lambda1_on(QUAD, TRIANGLE)),
+    requires=(NO_FREE_PARAMETERS, MIRROR_SYMMETRIC),
     reads_on=(QUAD, TRIANGLE),
 )
 def _shape(scheme: Scheme) -> CheckResult:

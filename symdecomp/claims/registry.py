@@ -47,7 +47,9 @@ When a check does not apply to a scheme:
 
 * a claim declares the hypotheses its derivation needs (``requires=``, :class:`Requirement`; the shared
   ones are in :mod:`symdecomp.claims.applicability`); the registry tests them in order before running
-  the check, and the first one the scheme does not meet gives ``not applicable`` with its reason;
+  the check, of each scheme the check reads (:meth:`Claim.unmet`: a claim declaring ``reads_on=`` reads a
+  lattice's reference scheme where the scheme given is not on it), and the first one unmet gives
+  ``not applicable`` with its reason;
 * inside a check, :class:`~symdecomp.errors.NotApplicableError` (raised by an analysis whose
   hypotheses the scheme does not meet) gives ``not applicable`` with its message;
 * any other :class:`~symdecomp.errors.InvalidSchemeError` also gives ``not applicable``: the scheme was
@@ -74,7 +76,7 @@ from symdecomp.claims.guards import DEFAULT_BUDGET, BudgetExceeded, at_parameter
 from symdecomp.claims.order import BEYOND, module_ranks, section_key, section_modules
 from symdecomp.claims.text import Text, Verbatim
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
-from symdecomp.schemes.lattice import Lattice, lattice
+from symdecomp.schemes.lattice import LATTICES, Lattice, lattice
 from symdecomp.schemes.scheme import Scheme, catmull_clark, check_scheme
 from symdecomp.schemes.stencils import StencilScheme
 
@@ -319,8 +321,9 @@ class Requirement:
 
     #: A short name, e.g. ``"mirror-symmetric rules"``.
     name: str
-    #: ``None`` when the scheme meets the requirement, else the reason it does not.
-    unmet: Callable[[Scheme], str | Text | None] = field(repr=False, compare=False)
+    #: ``None`` when the scheme meets the requirement, else the reason it does not. Part of equality: two requirements
+    #: are equal when they test with the same function, never by name alone (two tests may share a name).
+    unmet: Callable[[Scheme], str | Text | None] = field(repr=False)
 
 
 @dataclass(frozen=True)
@@ -363,6 +366,28 @@ class Claim:
             return None
         return self.reads_on[0].reference()
 
+    def schemes_read(self, scheme: Scheme) -> tuple[Scheme, ...]:
+        """The schemes the check reads when given ``scheme``: on each lattice of :attr:`reads_on`, the scheme given (after
+        :meth:`reads_instead`) when it lives there, else that lattice's reference scheme (the shape claim, reading quad and
+        triangle meshes, given Loop reads Catmull-Clark and Loop); with no :attr:`reads_on`, the scheme given."""
+        given = self.reads_instead(scheme) or scheme
+        return tuple(x.own_or_reference(given) for x in self.reads_on) if self.reads_on else (given,)
+
+    def unmet(self, scheme: Scheme) -> str | Text | None:
+        """The reason of the first requirement (in the order of :attr:`requires`) that a scheme the check reads
+        (:meth:`schemes_read`) does not meet, or ``None``: a requirement is asked of what the check computes with, never
+        of a scheme it does not read. The one test of both routes (:func:`check_claim`, and through it
+        :func:`~symdecomp.claims.zoo_claims.zoo_claim_result`)."""
+        read = self.schemes_read(scheme)
+        return next((reason for requirement in self.requires for s in read if (reason := requirement.unmet(s)) is not None), None)
+
+    @property
+    def lattices(self) -> tuple[Lattice, ...]:
+        """The lattices whose 1-ring the check computes with: of those it reads (:attr:`reads_on`; every lattice when it
+        declares none), each whose reference scheme meets the claim's requirements (:meth:`unmet`: a claim needing face
+        neighbours, quad meshes only; Loop's claims, triangle meshes); all of them if no reference does."""
+        return _lattices(self.label)
+
     @property
     def involves_no_scheme(self) -> bool:
         """The check reads no scheme and the claim requires nothing of one: the same verdict for every scheme, a scheme
@@ -380,6 +405,14 @@ class Claim:
 
 
 REGISTRY: dict[str, Claim] = {}
+
+
+@cache
+def _lattices(label: str) -> tuple[Lattice, ...]:
+    """:attr:`Claim.lattices` of the registered claim ``label`` (computed once: it tests reference schemes)."""
+    c = REGISTRY[label]
+    candidates = c.reads_on or tuple(LATTICES.values())
+    return tuple(x for x in candidates if c.unmet(x.reference()) is None) or candidates
 
 
 def claim(label: str, *, section: str, title: str, statement: str, requires: tuple[Requirement, ...] = (),
@@ -463,9 +496,8 @@ def _check_claim(label: str, scheme: Scheme, budget: float | None) -> CheckResul
 def _run_check(label: str, scheme: Scheme) -> CheckResult:
     c = get_claim(label)
     try:
-        for requirement in c.requires:
-            if (reason := requirement.unmet(scheme)) is not None:
-                return CheckResult(Status.NOT_APPLICABLE, reason)
+        if (reason := c.unmet(scheme)) is not None:
+            return CheckResult(Status.NOT_APPLICABLE, reason)
         result = c.check(scheme)
     # NotApplicableError (the scheme does not meet the hypotheses of an analysis the check uses) is an
     # InvalidSchemeError; another one means the scheme is outside what the claim's derivation covers (module docstring).

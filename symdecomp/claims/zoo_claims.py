@@ -2,9 +2,11 @@
 
 The checks of the registry compute with the 1-ring primal model (:class:`~symdecomp.schemes.scheme.Scheme`);
 a scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model by
-:data:`~symdecomp.claims.applicability.ZOO_REQUIREMENTS` first, and the first unmet requirement is the
-``not applicable`` reason. A claim whose statement is not tied to the 1-ring (C1 at the extraordinary
-element, the closed forms being the spectrum of the full matrix) is named with the command of the zoo engine
+:data:`~symdecomp.claims.applicability.ZOO_REQUIREMENTS` first, then its lattice against the lattices whose
+1-ring the claim is about (:attr:`~symdecomp.claims.registry.Claim.lattices`, from its ``reads_on`` and requirements), and
+the first mismatch is the ``not applicable`` reason: what the scheme has, and what the claim needs. A claim whose
+statement is not tied to the 1-ring (C1 at the extraordinary element, the closed forms being the spectrum of the
+full matrix) is named with the command of the zoo engine
 that answers it for this scheme (:data:`ENGINE_COMMANDS`), since its check is written for 1-ring primal
 schemes only. A claim that involves no scheme (:attr:`~symdecomp.claims.registry.Claim.involves_no_scheme`: its check
 reads none and it requires nothing, as Section 2's n-gons, Fourier matrix and circulants and Section 6's CB-matrices)
@@ -19,8 +21,9 @@ from __future__ import annotations
 
 import dataclasses
 
-from symdecomp.claims.applicability import ZOO_REQUIREMENTS
-from symdecomp.claims.registry import CheckResult, Status, Text, Verbatim, check_claim, get_claim
+from symdecomp.claims.applicability import ZOO_REQUIREMENTS, one_ring_needed
+from symdecomp.claims.registry import CheckResult, Claim, Status, Text, Verbatim, check_claim, get_claim
+from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import StencilScheme
 
 __all__ = ["ENGINE_COMMANDS", "zoo_claim_result"]
@@ -32,12 +35,14 @@ ENGINE_COMMANDS = {
 }
 
 
-def _first_unmet(scheme: StencilScheme) -> str | Text | None:
-    """The reason of the first zoo requirement ``scheme`` does not meet, or ``None``."""
+def _first_unmet(scheme: StencilScheme, claim: Claim) -> Text | None:
+    """What ``scheme`` has that the claim's 1-ring model does not (the first zoo requirement it does not meet, or a
+    lattice that is not the claim's), with what the claim needs (:func:`one_ring_needed`); ``None`` when it fits."""
+    needed = one_ring_needed(claim.lattices, scheme)
     for requirement in ZOO_REQUIREMENTS:  # the zoo's requirements take either model of a scheme (applicability)
         if (reason := requirement.unmet(scheme)) is not None:  # type: ignore[arg-type]
-            return reason
-    return None
+            return Text(reason, "; ", needed)
+    return needed if lattice(scheme.lattice) not in claim.lattices else None
 
 
 def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None = None) -> CheckResult:
@@ -60,7 +65,7 @@ def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None 
                       ", but its check is written for 1-ring primal schemes only; the zoo engine's result is in ",
                       Verbatim(f"{command} --scheme {scheme.name} --n N"))
     else:
-        unmet = _first_unmet(scheme)
+        unmet = _first_unmet(scheme, claim)
         reason = unmet if unmet is not None else Text(
             "the zoo scheme ", Verbatim(repr(scheme.name)), " meets the 1-ring primal model, but the check computes with "
             "rules given in the 1-ring format (edge, face and vertex weights); give the scheme in that format")

@@ -46,7 +46,7 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import cached
 from symdecomp.verify.c1_uniform import UniformMapResult
 
-__all__ = ["EveryNStep", "EveryNResult", "laurent_in_t", "spectral_every_n", "c1_every_n", "lambda_one"]
+__all__ = ["EveryNStep", "EveryNResult", "laurent_in_t", "spectral_every_n", "c1_every_n", "lambda_one", "tangent_steps"]
 
 T = sp.Symbol("t", real=True)  # cos(2 pi j/n)
 HALF = sp.Rational(-1, 2)  # t_1 = cos(2 pi/n) at n = 3
@@ -125,8 +125,10 @@ def _positive(expr, lo, hi) -> bool:
         return False
 
 
-def _tangent_steps(M: sp.Matrix, radius: sp.Expr) -> list[EveryNStep]:
-    """S1-S4 for a 1 x 1 or 2 x 2 ``M(t)``: ``(name, text, shown, formulas)`` per step (formulas: what the derivations print)."""
+def tangent_steps(M: sp.Matrix, radius: sp.Expr) -> list[EveryNStep]:
+    """S1-S4 of :func:`spectral_every_n` for a 1 x 1 or 2 x 2 frequency block ``M(t)`` (``t = cos(2 pi j/n)``) and the
+    outer ring's spectral radius ``radius``: ``(name, text, shown, formulas)`` per step (formulas: what the derivations
+    print). Also read by :mod:`symdecomp.verify.dominance_every_n`, which needs the same tangent steps."""
     if M.rows == 1:
         lam = laurent_in_t(M[0, 0])
         checks = [
@@ -229,7 +231,7 @@ def _spectral_every_n(scheme: Scheme) -> tuple[EveryNStep, ...]:
     coeffs = outer_charpoly(scheme.lattice)
     x = sp.Symbol("x")
     radius = max((abs(r) for r in sp.Poly(list(coeffs), x).all_roots()), key=lambda r: float(r)) if coeffs else sp.Integer(0)
-    return tuple(_tangent_steps(sp.Matrix(M), radius)) + (_frequency_zero_step(scheme, sp.Matrix(M), sp.Matrix(E0)),)
+    return tuple(tangent_steps(sp.Matrix(M), radius)) + (_frequency_zero_step(scheme, sp.Matrix(M), sp.Matrix(E0)),)
 
 
 def _fails_from(scheme: Scheme, first: int, certify) -> EveryNStep | None:

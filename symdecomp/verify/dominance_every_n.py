@@ -36,7 +36,7 @@ from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.scheme import Scheme, check_scheme
 from symdecomp.symbols import n as N
-from symdecomp.verify.c1_every_n import EveryNStep, T, _tangent_steps, laurent_in_t
+from symdecomp.verify.c1_every_n import EveryNStep, T, laurent_in_t, tangent_steps
 from symdecomp.verify.regime_cause import MAX_CERTIFIED, _start, hyperbolic_cause_on_quads
 
 __all__ = ["hyperbolic_dominates_from"]
@@ -101,7 +101,7 @@ def _on_triangles(scheme: Scheme, first: int, M: sp.Matrix, E0: sp.Matrix) -> Ev
         return _open(first, "the outer ring's eigenvalues are not known for this lattice")
     radius = max((abs(r) for r in sp.Poly(list(outer), x).all_roots()), key=float)
     # S1-S4 of spectral_every_n; its S5 (E_0 below lambda_1) is not needed: e_0 < lambda_2 < lambda_1 is shown below
-    if not all(step.status == "proved" for step in _tangent_steps(M, radius)):
+    if not all(step.status == "proved" for step in tangent_steps(M, radius)):
         return _open(first, "the tangent steps (lambda(t) increasing, lambda_1 below 1 and above the outer ring) are not proved")
     e0 = _beyond(sp.expand(E0.trace() - 1), first)  # E_0 is 2 x 2 with the eigenvalue 1
     if e0 is None:

@@ -138,18 +138,52 @@ beta = "w"
 
 
 def test_a_regime_claim_asks_its_requirements_of_the_scheme_it_reads():
-    """Catmull-Clark's regimes read Catmull-Clark for a triangle scheme: a triangle file with a free parameter meets
-    their requirements, as Loop does (they were 'not applicable' for parameters the check never reads); Loop's regimes
-    read the file, so they need values. On quads the other way round."""
+    """Catmull-Clark's regimes read Catmull-Clark for a triangle scheme: a triangle file with a free parameter gets
+    Catmull-Clark's verdict, as Loop does (they were 'not applicable' for parameters the check never reads), while a quad
+    file with a free parameter is read itself and gets 'not applicable' naming that parameter; Loop's regimes the other
+    way round. The requirements are declared once and asked of each scheme the check reads (Claim.schemes_read)."""
     from symdecomp.claims import get_claim
+    from symdecomp.claims.applicability import MIRROR_SYMMETRIC, NO_FREE_PARAMETERS
     from symdecomp.schemes.files import scheme_from_text
     from tests.claims.test_one_model import CC_FACE_WITH
 
     triangle, quad = scheme_from_text(TRIANGLE_WITH_FREE_W), scheme_from_text(CC_FACE_WITH.format(p="P"))
-    assert triangle.parameters and quad.parameters
-    for scheme, other_lattice_claim, own_claim in ((triangle, "Curvature regime: Catmull-Clark", "Curvature regime: Loop"),
-                                                    (quad, "Curvature regime: Loop", "Curvature regime: Catmull-Clark")):
-        assert [r.unmet(scheme) for r in get_claim(other_lattice_claim).requires] == [None, None]
-        own = check_claim(own_claim, scheme)
-        assert own.status is Status.NOT_APPLICABLE and "has free parameters" in str(own.evidence)
+    assert [str(p) for p in triangle.parameters] == ["w"] and [str(p) for p in quad.parameters] == ["P"]
+    assert not hasattr(b1, "read_on") and not hasattr(b1, "real_lambda1_on")  # one concept: reads_on
+    for label, own_lattice, reference in (("Curvature regime: Catmull-Clark", quad, catmull_clark()),
+                                          ("Curvature regime: Loop", triangle, loop())):
+        c = get_claim(label)
+        assert c.requires == (NO_FREE_PARAMETERS, MIRROR_SYMMETRIC)
+        other = triangle if own_lattice is quad else quad
+        assert c.schemes_read(other) == (reference,) and c.schemes_read(own_lattice) == (own_lattice,)
+        assert c.unmet(other) is None
+        borrowed, theirs = check_claim(label, other), check_claim(label, reference)
+        assert borrowed.status is theirs.status and borrowed.status in (Status.PROVED, Status.VERIFIED), label
+        assert str(borrowed.evidence) == str(theirs.evidence)
+        own = check_claim(label, own_lattice)
+        name = str(own_lattice.parameters[0])
+        assert own.status is Status.NOT_APPLICABLE and f"has free parameters {name};" in str(own.evidence), label
+    shape = get_claim("Shape: the valence decides")  # reads both lattices: the scheme given on its own, the reference on the other
+    assert shape.schemes_read(triangle) == (catmull_clark(), triangle) and shape.schemes_read(quad) == (quad, loop())
+    for scheme, name in ((triangle, "w"), (quad, "P")):
+        result = check_claim(shape.label, scheme)
+        assert result.status is Status.NOT_APPLICABLE and f"has free parameters {name};" in str(result.evidence)
     assert b1._on(triangle, QUAD) == catmull_clark() and b1._on(quad, TRIANGLE) == loop()  # what those checks read
+
+
+def test_requirements_are_equal_only_when_they_test_with_the_same_function():
+    """Two requirements sharing a name but testing differently are not equal (equality was by name alone)."""
+    from symdecomp.claims import Requirement
+    from symdecomp.claims.applicability import NO_FREE_PARAMETERS
+
+    namesake = Requirement(NO_FREE_PARAMETERS.name, lambda scheme: None)
+    assert namesake != NO_FREE_PARAMETERS and len({namesake, NO_FREE_PARAMETERS}) == 2
+    assert Requirement(NO_FREE_PARAMETERS.name, NO_FREE_PARAMETERS.unmet) == NO_FREE_PARAMETERS
+    assert namesake.unmet(loop()) is None and NO_FREE_PARAMETERS.unmet(scheme_with_w := _free_w()) is not None
+    assert "w" in str(NO_FREE_PARAMETERS.unmet(scheme_with_w))
+
+
+def _free_w():
+    from symdecomp.schemes.files import scheme_from_text
+
+    return scheme_from_text(TRIANGLE_WITH_FREE_W)

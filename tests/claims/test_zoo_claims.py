@@ -3,7 +3,8 @@
 The claims that involve no scheme (Section 2; Section 6's CB-matrices) keep the verdicts they have for every scheme,
 the same on both routes (a zoo scheme, a 1-ring scheme on triangles); each other claim is
 ``not applicable`` with the reason of the first zoo requirement the scheme does not meet (its topology, its
-support, its lattice), or, where the statement reaches beyond the 1-ring, with the zoo command that answers it.
+support, then its lattice against the claim's), followed by what the claim needs, or, where the statement reaches
+beyond the 1-ring, with the zoo command that answers it.
 """
 
 import dataclasses
@@ -13,12 +14,13 @@ import jsonschema
 import pytest
 
 from symdecomp.claims import Status, all_claims, check_claim, scope_summary
-from symdecomp.claims.applicability import ONE_RING_SUPPORT, PRIMAL_VERTEX, QUAD_MESHES, ZOO_REQUIREMENTS
+from symdecomp.claims.applicability import FACE_NEIGHBOURS, ONE_RING_SUPPORT, PRIMAL_VERTEX, ZOO_REQUIREMENTS
 from symdecomp.claims.batch import check_claims
 from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, zoo_claim_result
 from symdecomp.cli import main
 from symdecomp.cli.json_envelope import json_schema
 from symdecomp.schemes.files import load_scheme
+from symdecomp.schemes.lattice import QUAD, TRIANGLE, lattice
 from symdecomp.schemes.loop import loop
 from symdecomp.schemes.scheme import catmull_clark
 from tests.analysis.zoo_engine_schemes import catmull_clark_stencils, doo_sabin_stencils, loop_stencils
@@ -56,8 +58,10 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
         elif c.module in ENGINE_COMMANDS:
             assert row["status"] == Status.NOT_APPLICABLE.value
             assert row["evidence"].endswith(f"{ENGINE_COMMANDS[c.module][1]} --scheme {name} --n N")
-        else:
-            assert (row["status"], row["evidence"]) == (Status.NOT_APPLICABLE.value, reason)
+        else:  # what the scheme has, then what the claim needs, and the scheme's lattice where it is not the claim's
+            assert row["status"] == Status.NOT_APPLICABLE.value
+            assert row["evidence"].startswith(reason + "; the claim is about the (")
+            assert (f"'{name}' subdivides" in row["evidence"]) is (lattice(scheme.lattice) not in c.lattices)
 
 
 def test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes():
@@ -108,8 +112,7 @@ def test_each_requirement_s_verdict_flips_with_the_scheme():
     assert PRIMAL_VERTEX.unmet(cc) is None
     assert PRIMAL_VERTEX.unmet(dataclasses.replace(cc, topology="dual")) is not None  # one field changed, nothing else
     assert ONE_RING_SUPPORT.unmet(loop_stencils()) is None and ONE_RING_SUPPORT.unmet(primal_file) is not None
-    assert QUAD_MESHES.unmet(cc) is None and QUAD_MESHES.unmet(loop_stencils()) is not None
-    assert QUAD_MESHES.unmet(doo_sabin_stencils()) is None  # Doo-Sabin is on quads: its topology is what fails
+    assert PRIMAL_VERTEX.unmet(doo_sabin_stencils()) is not None  # Doo-Sabin is on quads: its topology is what fails
     assert all(req.unmet(catmull_clark()) is None for req in ZOO_REQUIREMENTS)  # the 1-ring primal model meets them all
 
 
@@ -144,7 +147,7 @@ def test_the_api_answers_a_zoo_scheme_as_the_command_does():
     scheme = load_scheme("modified-butterfly")
     label = next(c.label for c in all_claims() if c.reads_scheme and c.module not in ENGINE_COMMANDS)
     result = check_claim(label, scheme)
-    assert (result.status, str(result.evidence)) == (Status.NOT_APPLICABLE, str(ONE_RING_SUPPORT.unmet(scheme)))
+    assert result.status is Status.NOT_APPLICABLE and str(result.evidence).startswith(str(ONE_RING_SUPPORT.unmet(scheme)) + "; ")
     assert [r.status for r in check_claims([label], scheme, jobs=2)] == [Status.NOT_APPLICABLE]
 
 
@@ -166,3 +169,44 @@ def test_a_claim_read_on_another_lattice_has_the_same_verdict_on_both_routes():
     assert check_claim(cc_claim.label, doo_sabin).status is Status.NOT_APPLICABLE  # it would read Doo-Sabin's rules
     assert check_claim(loop_claim.label, sqrt3).status is Status.NOT_APPLICABLE
     assert check_claim(loop_claim.label, doo_sabin).status is check_claim(loop_claim.label, loop()).status
+
+
+def _reasons(name, capsys):
+    assert main(["claims", "--scheme", name, "--json", "--no-progress"]) == 0
+    return {r["label"]: r["evidence"] for r in json.loads(capsys.readouterr().out)["rows"] if r["status"] == "not applicable"}
+
+
+@pytest.mark.parametrize("name", ["sqrt3", "modified-butterfly"])
+def test_a_triangle_scheme_is_told_what_each_claim_needs_not_a_quad_mesh_for_loop_s_claims(name, capsys):
+    """The reasons printed for a triangle scheme of the zoo: Loop's claims are about the triangle 1-ring (they told sqrt3
+    it needs 'the (2n+1)-point 1-ring of a vertex of a quad mesh'); the paper's quad 1-ring claims say so and name the
+    scheme's own lattice; a claim about either lattice names both."""
+    reasons = _reasons(name, capsys)
+    by_label = {c.label: c for c in all_claims()}
+    loop_claims = {"Curvature regime: Loop", "Loop's vertex weight"}
+    assert {label for label in loop_claims} <= set(reasons)
+    for label in loop_claims:
+        assert "the claim is about the (n+1)-point 1-ring of a vertex of a triangle mesh refined by a primal step" in reasons[label]
+        assert "quad" not in reasons[label] and "subdivides" not in reasons[label]
+    quad_ring = [label for label in reasons if FACE_NEIGHBOURS in by_label[label].requires and by_label[label].module not in ENGINE_COMMANDS]
+    assert "Eq. 34" in quad_ring
+    for label in quad_ring:
+        assert reasons[label].endswith("the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a "
+                                       f"primal step, and '{name}' subdivides triangle meshes")
+    either = reasons["1-ring suffices (after Eq. 51)"]
+    assert "(2n+1)-point 1-ring of a vertex of a quad mesh or the (n+1)-point 1-ring of a vertex of a triangle mesh" in either
+    own = str(ZOO_REQUIREMENTS[0 if name == "sqrt3" else 1].unmet(load_scheme(name)))
+    assert all(reason.startswith(own + "; ") for label, reason in reasons.items() if by_label[label].module not in ENGINE_COMMANDS)
+
+
+def test_the_claim_s_lattices_come_from_what_it_reads_and_requires():
+    by_label = {c.label: c for c in all_claims()}
+    assert by_label["Eq. 34"].lattices == (QUAD,)  # face neighbours: Loop does not meet it
+    assert by_label["Curvature regime: Loop"].lattices == (TRIANGLE,)  # reads_on
+    assert by_label["Curvature regime: Catmull-Clark"].lattices == (QUAD,)
+    assert by_label["1-ring suffices (after Eq. 51)"].lattices == (QUAD, TRIANGLE)
+    triangle_stencils = loop_stencils()  # primal, 1-ring, on triangles: only its lattice misses a quad claim
+    eq34 = zoo_claim_result("Eq. 34", triangle_stencils)
+    assert str(eq34.evidence) == ("the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a primal "
+                                  f"step, and {triangle_stencils.name!r} subdivides triangle meshes")
+    assert "meets the 1-ring primal model" in str(zoo_claim_result("Loop's vertex weight", triangle_stencils).evidence)

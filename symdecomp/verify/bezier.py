@@ -60,6 +60,13 @@ def bspline_to_bezier(net):
     return [[sum((_M[k][b] * rows[i][b] for b in range(4)), 0 * net[0][0]) / 36 for k in range(4)] for i in range(4)]
 
 
+#: ``(i, k, i2, k2, weight)`` of each product in :func:`jacobian_net`, in its order: the exact degree-raising weights
+#: ``C(2,i) C(3,i2) C(3,k) C(2,k2) / (C(5,i+i2) C(5,k+k2))``, computed once (every sector reads thousands of nets).
+_JACOBIAN_TERMS = tuple((i, k, i2, k2, flint.fmpq(comb(2, i) * comb(3, i2) * comb(3, k) * comb(2, k2),
+                                                  comb(5, i + i2) * comb(5, k + k2)))
+                        for i in range(3) for k in range(4) for i2 in range(4) for k2 in range(3))
+
+
 def jacobian_net(x, y):
     """The ``6 x 6`` Bernstein coefficients of ``x_u y_v - x_v y_u`` for bicubic Bezier nets ``x``, ``y``."""
     xu = [[3 * (x[i + 1][k] - x[i][k]) for k in range(4)] for i in range(3)]
@@ -67,13 +74,9 @@ def jacobian_net(x, y):
     xv = [[3 * (x[i][k + 1] - x[i][k]) for k in range(3)] for i in range(4)]
     yv = [[3 * (y[i][k + 1] - y[i][k]) for k in range(3)] for i in range(4)]
     out = [[0 * x[0][0] for _ in range(6)] for _ in range(6)]  # Arb balls, or exact polynomials (c1_uniform)
-    for i in range(3):
-        for k in range(4):
-            for i2 in range(4):
-                for k2 in range(3):
-                    w = flint.fmpq(comb(2, i) * comb(3, i2) * comb(3, k) * comb(2, k2), comb(5, i + i2) * comb(5, k + k2))
-                    # f = x_u (2,3) times g = y_v (3,2), minus y_u (2,3) times x_v (3,2)
-                    out[i + i2][k + k2] += w * (xu[i][k] * yv[i2][k2] - yu[i][k] * xv[i2][k2])
+    for i, k, i2, k2, w in _JACOBIAN_TERMS:
+        # f = x_u (2,3) times g = y_v (3,2), minus y_u (2,3) times x_v (3,2)
+        out[i + i2][k + k2] += w * (xu[i][k] * yv[i2][k2] - yu[i][k] * xv[i2][k2])
     return out
 
 

@@ -32,6 +32,7 @@ its 16 smallest vertices on the dense route took 368 s on a loaded machine.)
     python benchmarks/bench_sharp.py            # every target
     python benchmarks/bench_sharp.py --quick    # k = 200 and the dense route at k = 6
     python benchmarks/bench_sharp.py --check    # only check --k's rows (--quick: k = 1000, the dense route at k = 24)
+    python benchmarks/bench_sharp.py --c1       # only c1 --k's rows (--quick: K = 100, BLZ's 1:24)
 """
 
 from __future__ import annotations
@@ -136,8 +137,12 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="k = 200 and the dense route at k = 6, for a smoke run")
     parser.add_argument("--check", action="store_true", help="only check --k's rows")
+    parser.add_argument("--c1", action="store_true", help="only c1 --k's rows")
     args = parser.parse_args(argv)
-    for row in (check_targets(args.quick) if args.check else targets(args.quick)):
+    if args.check and args.c1:
+        parser.error("--check and --c1 cannot be used together: give one part, or neither for every target")
+    part = check_targets if args.check else c1_targets if args.c1 else targets
+    for row in part(args.quick):
         print(row)
     return 0
 

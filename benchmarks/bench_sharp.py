@@ -4,13 +4,18 @@ Targets (issue 33): ``spectrum 1000 --boundary --scheme catmull-clark-blz`` with
 creases and Loop's rules (the structural route: the mirror decomposition's blocks, O(k)); ``c1 --boundary --k
 1:1000`` within 60 s, the same for corners and Loop (the spectral and tangent conditions from the blocks, O(log k)
 per k; where they hold, the characteristic map: for BLZ's boundary sectors from the subdominant eigenvectors in closed
-form, Fourier modes between the sharp rays, read on a few faces per k). Last measured (:func:`c1_targets` alone, one
-run, 2 cores at load 3 to 4 from other jobs, so these are pessimistic): ``c1 --boundary --k 1:1000`` 19.1 s for
-Catmull-Clark, 8.2 s for Loop, 64.3 s for ``catmull-clark-blz`` (all 1000 certified C1; just over the target at that
-load, 4 min 9 s with 65..1000 undecided before the closed-form modes) and 40.3 s for ``loop-blz``; ``--corner`` 19.1 s
-(Catmull-Clark), 7.1 s (Loop), 9.1 s (``catmull-clark-blz``: undecided from k = 2 on, its eigenvalue 1/2 is triple, so
-Zorin's condition that lambda_2 be strictly dominant fails and the test does not apply); each dense test at k = 1..8
-2.1 to 4.2 s.
+form, Fourier modes between the sharp rays, read on a few faces per k). Last measured (``--c1``, one run, 2 cores at
+load 3 to 5 from other jobs, so these are pessimistic): ``c1 --boundary --k 1:1000`` 6.3 s for Catmull-Clark, 2.8 s
+for Loop, 31.4 s for ``catmull-clark-blz`` (all 1000 certified C1; 64.3 s in the run before, at load 3 to 4, and 4 min
+9 s with 65..1000 undecided before the closed-form modes) and 31.8 s for ``loop-blz`` (40.3 s before); ``--corner``
+9.6 s (Catmull-Clark), 3.8 s (Loop), 6.8 s (``catmull-clark-blz``: undecided from k = 2 on, its eigenvalue 1/2 is
+triple, so Zorin's condition that lambda_2 be strictly dominant fails and the test does not apply); each dense test at
+k = 1..8 1.1 to 4.5 s. Side by side with the code before, fresh processes at load 2: ``catmull-clark-blz`` boundary
+26.9 s (51.8 CPU seconds) before, 15.6 s (28.8) after; ``loop-blz`` 30.1 CPU seconds before, 24.0 after. Per ``k``
+(``catmull-clark-blz``, CPU) the closed-form route took 45 ms: the wide ring's nets 15, the Jacobian's certificate 20,
+the leading values 6; now 23 (6, 11, 4): each net point and stencil is resolved once, the crease block's eigenvalues
+and parities are derived once per scheme, the Bezier sums skip their exact zeros (the balls are bit for bit the same).
+Once per worker: the closed-form modes, about 2 s.
 Every figure is the wall-clock time of the command in a fresh process (start-up included), so it depends on what else
 the machine runs: ``run.py`` prints the load. ``claims`` has its own file (``bench_claims.py``).
 
@@ -32,6 +37,7 @@ its 16 smallest vertices on the dense route took 368 s on a loaded machine.)
     python benchmarks/bench_sharp.py            # every target
     python benchmarks/bench_sharp.py --quick    # k = 200 and the dense route at k = 6
     python benchmarks/bench_sharp.py --check    # only check --k's rows (--quick: k = 1000, the dense route at k = 24)
+    python benchmarks/bench_sharp.py --c1       # only c1 --k's rows (--quick: K = 100, BLZ's 1:24)
 """
 
 from __future__ import annotations
@@ -136,8 +142,12 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="k = 200 and the dense route at k = 6, for a smoke run")
     parser.add_argument("--check", action="store_true", help="only check --k's rows")
+    parser.add_argument("--c1", action="store_true", help="only c1 --k's rows")
     args = parser.parse_args(argv)
-    for row in (check_targets(args.quick) if args.check else targets(args.quick)):
+    if args.check and args.c1:
+        parser.error("--check and --c1 cannot be used together: give one part, or neither for every target")
+    part = check_targets if args.check else c1_targets if args.c1 else targets
+    for row in part(args.quick):
         print(row)
     return 0
 

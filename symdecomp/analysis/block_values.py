@@ -280,8 +280,15 @@ def _fraction(q) -> Fraction:
 
 
 def _crease_items(scheme, lay, prec: int) -> list[Eigenvalue]:
-    """The crease block's eigenvalues, exactly (FLINT), as items."""
-    block = crease_block(scheme, len(lay.sharp), corner=lay.corner)
+    """The crease block's eigenvalues, exactly (FLINT), as items (a new list: the caller adds the sectors' to it)."""
+    return list(_crease_eigenvalues(scheme, len(lay.sharp), lay.corner, prec))
+
+
+@functools.lru_cache(maxsize=32)
+def _crease_eigenvalues(scheme, count: int, corner: bool, prec: int) -> tuple[Eigenvalue, ...]:
+    """The crease block has no ``k`` (:func:`~symdecomp.analysis.mirror.crease_block`): its eigenvalues are derived once per
+    scheme, kind of vertex and precision, not once per sector."""
+    block = crease_block(scheme, count, corner=corner)
     if not all(sp.sympify(e, strict=True).is_Rational for e in block):
         raise NotApplicableError(f"scheme {scheme.name!r}: the crease block {block.tolist()} is not rational")
     S = flint.fmpq_mat([[flint.fmpq(int(e.p), int(e.q)) for e in row] for row in block.tolist()])
@@ -290,7 +297,7 @@ def _crease_items(scheme, lay, prec: int) -> list[Eigenvalue]:
         rational = -_fraction(v.factor[0]) if v.factor.degree() == 1 else None
         key = ("q", rational) if rational is not None else ("crease", v.key)
         out.append(_item(key, v.multiplicity, [MirrorBlock("crease")], sp.sstr(v.exact), rational, crease=v))
-    return out
+    return tuple(out)
 
 
 def _theta_text(j: int, k: int) -> str:

@@ -54,27 +54,52 @@ __all__ = [
 _M = ((1, 4, 1, 0), (0, 4, 2, 0), (0, 2, 4, 0), (0, 1, 4, 1))
 
 
+#: For each row ``i`` of ``M``, the ``(column, weight)`` of its nonzero entries, in order.
+_M_TERMS = tuple(tuple((a, m) for a, m in enumerate(row) if m) for row in _M)
+
+
+def _combine(terms, values):
+    """``sum(weight * values[a])`` over ``terms``, added in their order (the zero entries of ``M`` add exact zeros: left out)."""
+    a, m = terms[0]
+    total = m * values[a]
+    for a, m in terms[1:]:
+        total = total + m * values[a]
+    return total
+
+
 def bspline_to_bezier(net):
     """``M P M^T / 36`` for a ``4 x 4`` net of balls (real or complex)."""
-    rows = [[sum((_M[i][a] * net[a][k] for a in range(4)), 0 * net[0][0]) for k in range(4)] for i in range(4)]
-    return [[sum((_M[k][b] * rows[i][b] for b in range(4)), 0 * net[0][0]) / 36 for k in range(4)] for i in range(4)]
+    cols = [[net[a][k] for a in range(4)] for k in range(4)]
+    rows = [[_combine(terms, col) for col in cols] for terms in _M_TERMS]
+    return [[_combine(terms, row) / 36 for terms in _M_TERMS] for row in rows]
+
+
+#: For each of the ``6 x 6`` coefficients of :func:`jacobian_net` (row by row), the products that add up to it, in the
+#: order of the sum over ``i, k, i2, k2``: ``(x_u index, y_v index, weight)`` with the exact degree-raising weights
+#: ``C(2,i) C(3,i2) C(3,k) C(2,k2) / (C(5,i+i2) C(5,k+k2))``, computed once (every sector reads thousands of nets).
+_JACOBIAN_TERMS = tuple(
+    tuple((4 * i + k, 3 * i2 + k2, flint.fmpq(comb(2, i) * comb(3, i2) * comb(3, k) * comb(2, k2),
+                                              comb(5, i + i2) * comb(5, k + k2)))
+          for i in range(3) for k in range(4) for i2 in range(4) for k2 in range(3) if (i + i2, k + k2) == (a, b))
+    for a in range(6) for b in range(6))
 
 
 def jacobian_net(x, y):
-    """The ``6 x 6`` Bernstein coefficients of ``x_u y_v - x_v y_u`` for bicubic Bezier nets ``x``, ``y``."""
-    xu = [[3 * (x[i + 1][k] - x[i][k]) for k in range(4)] for i in range(3)]
-    yu = [[3 * (y[i + 1][k] - y[i][k]) for k in range(4)] for i in range(3)]
-    xv = [[3 * (x[i][k + 1] - x[i][k]) for k in range(3)] for i in range(4)]
-    yv = [[3 * (y[i][k + 1] - y[i][k]) for k in range(3)] for i in range(4)]
-    out = [[0 * x[0][0] for _ in range(6)] for _ in range(6)]  # Arb balls, or exact polynomials (c1_uniform)
-    for i in range(3):
-        for k in range(4):
-            for i2 in range(4):
-                for k2 in range(3):
-                    w = flint.fmpq(comb(2, i) * comb(3, i2) * comb(3, k) * comb(2, k2), comb(5, i + i2) * comb(5, k + k2))
-                    # f = x_u (2,3) times g = y_v (3,2), minus y_u (2,3) times x_v (3,2)
-                    out[i + i2][k + k2] += w * (xu[i][k] * yv[i2][k2] - yu[i][k] * xv[i2][k2])
-    return out
+    """The ``6 x 6`` Bernstein coefficients of ``x_u y_v - x_v y_u`` for bicubic Bezier nets ``x``, ``y``
+    (Arb balls, or exact polynomials: :mod:`symdecomp.verify.c1_uniform`)."""
+    xu = [3 * (x[i + 1][k] - x[i][k]) for i in range(3) for k in range(4)]
+    yu = [3 * (y[i + 1][k] - y[i][k]) for i in range(3) for k in range(4)]
+    xv = [3 * (x[i][k + 1] - x[i][k]) for i in range(4) for k in range(3)]
+    yv = [3 * (y[i][k + 1] - y[i][k]) for i in range(4) for k in range(3)]
+    flat = []
+    for terms in _JACOBIAN_TERMS:
+        total = None
+        for p, q, w in terms:
+            # f = x_u (2,3) times g = y_v (3,2), minus y_u (2,3) times x_v (3,2)
+            term = w * (xu[p] * yv[q] - yu[p] * xv[q])
+            total = term if total is None else total + term
+        flat.append(total)
+    return [flat[6 * a: 6 * a + 6] for a in range(6)]
 
 
 def _split_1d(coeffs):

@@ -138,7 +138,14 @@ def _in_two_parts(crease: sp.Matrix, value) -> bool:
         return False
     if value.key[0] != "q":
         return False
-    q = sp.Rational(value.key[1].numerator, value.key[1].denominator)
+    return _odd_simple(sp.ImmutableMatrix(crease), value.key[1])
+
+
+@functools.lru_cache(maxsize=64)
+def _odd_simple(crease: sp.ImmutableMatrix, value: Fraction) -> bool:
+    """Whether ``value`` is a simple eigenvalue of the crease block with the mirror-odd eigenvector (exact; decided once
+    per block and value, not per sector)."""
+    q = sp.Rational(value.numerator, value.denominator)
     odd = sp.Matrix([0, 1, -1])  # O and its two sharp neighbours: the mirror exchanges the neighbours
     shifted = crease - q * sp.eye(3)
     return shifted * odd == sp.zeros(3, 1) and shifted.rank() == 2

@@ -35,7 +35,9 @@ even) has one eigenvector in each part.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
+from fractions import Fraction
 
 import flint
 import sympy as sp
@@ -344,7 +346,13 @@ def _crease_parity(crease: sp.Matrix, value) -> str | None:
     """The mirror part (``"even"``, ``"odd"``) of the crease block's eigenvector for ``value`` (``None``: not decided)."""
     if value.key[0] != "q":
         return None
-    q = sp.Rational(value.key[1].numerator, value.key[1].denominator)
+    return _rational_parity(sp.ImmutableMatrix(crease), value.key[1])
+
+
+@functools.lru_cache(maxsize=64)
+def _rational_parity(crease: sp.ImmutableMatrix, value: Fraction) -> str | None:
+    """:func:`_crease_parity` at a rational ``value``, decided once per crease block and value (every sector asks)."""
+    q = sp.Rational(value.numerator, value.denominator)
     shifted = crease - q * sp.eye(crease.rows)
     if shifted.rank() != crease.rows - 1:
         return None

@@ -32,6 +32,8 @@ between distance 2 and 4 (``u + v``), box-spline patches of their 12-point nets,
 
 from __future__ import annotations
 
+import functools
+
 import flint
 import sympy as sp
 
@@ -96,14 +98,35 @@ def _stencil(lat, X: int, Y: int) -> dict:
     return out | {(p[0] + a, p[1] + b): _EIGHTH for a, b in _OPPOSITE[d]}
 
 
-def _regular(lat, k: int, label, value):
-    """The regular rule (with phantoms across the sharp rays) for the level-1 ``label`` from level-0 ``value``."""
+@functools.lru_cache(maxsize=256)
+def _ball_stencil(lat, X: int, Y: int) -> tuple:
+    """:func:`_stencil` as ``((chart point, weight), ...)`` with exact Arb weights, read once per chart point and lattice."""
+    return tuple(((x, y), flint.acb(flint.fmpq(int(w.p), int(w.q)))) for (x, y), w in _stencil(lat, X, Y).items())
+
+
+def _regular(lat, k: int, label, point):
+    """The regular rule (with phantoms across the sharp rays) for the level-1 ``label`` from the level-0 values
+    ``point(s, x, y)`` of face ``s``'s chart points."""
     s, X, Y = _chart(k, label)
     total = None
-    for (x, y), w in _stencil(lat, X, Y).items():
-        term = sector_net(lat, k, s, [(x, y)], value)[0] * flint.acb(flint.fmpq(int(w.p), int(w.q)))
+    for (x, y), w in _ball_stencil(lat, X, Y):
+        term = point(s, x, y) * w
         total = term if total is None else total + term
     return total
+
+
+def _net_points(lat, k: int, value):
+    """``point(s, u, v)``: :func:`~symdecomp.schemes.sector_patch.sector_net` of one chart point of face ``s``, each point
+    resolved once (neighbouring patches and stencils share their points)."""
+    cache: dict = {}
+
+    def point(s: int, u: int, v: int):
+        key = (s, u, v)
+        if key not in cache:
+            cache[key] = sector_net(lat, k, s, [(u, v)], value)[0]
+        return cache[key]
+
+    return point
 
 
 def irregular_rows(sm, distance: int = 2) -> list:
@@ -143,23 +166,25 @@ def wide_nets(sm, chi, lambdas, sectors=None) -> list:
         z = chi[label]
         return type(z)(z.real / l1, z.imag / l2)
 
+    coarse_point = _net_points(sm.lattice, sm.k, coarse)
+
     def value(label):
         if label not in cache:
-            cache[label] = chi[label] if label in chi else _regular(sm.lattice, sm.k, label, coarse)
+            cache[label] = chi[label] if label in chi else _regular(sm.lattice, sm.k, label, coarse_point)
         return cache[label]
 
+    point = _net_points(sm.lattice, sm.k, value)
     out, faces = [], ring_faces(sm.lattice)
     for s in range(sm.k) if sectors is None else sectors:
         if sm.lattice.handled("the wide ring's nets", BICUBIC, BOX_SPLINE) == BOX_SPLINE:
             values = []
             for t in faces:
                 pts = triangle_patch_points(t)
-                values.append(dict(zip(pts, sector_net(sm.lattice, sm.k, s, pts, value))))
+                values.append({p: point(s, *p) for p in pts})
             out += box_nets(values, faces)
             continue
         for a, b in faces:
-            pts = [(a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
-            vals = sector_net(sm.lattice, sm.k, s, pts, value)
+            vals = [point(s, a - 1 + i, b - 1 + j) for i in range(4) for j in range(4)]
             out.append(bspline_to_bezier([vals[4 * i: 4 * i + 4] for i in range(4)]))
     return out
 

@@ -164,3 +164,15 @@ def test_each_block_names_itself_at_its_vertex():
     sines = {f"sine j={j} (theta = {sp.sstr(sp.pi * j / k)}), sector {s_ + 1}" for s_, k in enumerate((3, 4)) for j in range(1, k)}
     assert sines <= names and "crease" in names
     assert {"last mode j=3 (b_i = (-1)^i), sector 1", "last mode j=4 (b_i = (-1)^i), sector 2"} <= names
+
+
+def test_crease_values_read_once_are_not_shared_between_vertices():
+    """The crease block's eigenvalues are derived once per scheme and kind of vertex; each vertex still gets its own list
+    of items (a shared one, grown by one vertex's sine blocks, would count them again at the next)."""
+    scheme = SCHEMES["cc-blz"]
+    vertices = [sd.SharpVertex.boundary(k, scheme.lattice) for k in (5, 9, 5)] + [sd.SharpVertex.crease(4, 6, scheme.lattice)]
+    first, second, again, crease = [structural_values(scheme, v) for v in vertices]
+    for values, size in (first, second, again, crease):
+        assert sum(v.multiplicity for v in values) == size  # every eigenvalue of the matrix, each once
+    assert [(v.key, v.multiplicity, v.exact) for v in again[0]] == [(v.key, v.multiplicity, v.exact) for v in first[0]]
+    assert second[1] - first[1] == 4 * 2  # four more faces, an edge point and a face point each (1-ring, quads)

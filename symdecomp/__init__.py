@@ -184,7 +184,8 @@ nothing else.
                    ``s6_cb_matrices``, ``s6_cb_perturbation``, ``s6_cb_subdivision``, ``s6_closing``,
                    ``s6_full_spectrum``), the toolkit's own claims beyond the paper (curvature and
                    shape, ``b1_curvature``; boundary and crease vertices, ``b2_mirror``) and their registry
-                   (``registry``; their order, from the sources, ``order``; the findings' prose with mathematics, ``text``); every claim is checked
+                   (``registry``; their order, from the sources, ``order``; the findings' prose with mathematics, ``text``;
+                   the derivations' displayed steps, ``steps``); every claim is checked
                    for a scheme, within a time budget, and no verdict rests on a free parameter or an
                    undefined value (``guards``),
                    many claims at once on the shared pool (``batch``); what several checks share: the requirements a claim declares

@@ -146,8 +146,9 @@ nothing else.
                    weights' symbol, ``c1_dual_every_n``, its ring of biquadratic patches for every n >= N0 by exact signs in t,
                    ``c1_dual_uniform``; a primal one's (the modified butterfly) from its structural blocks, the
                    Schur-Cohn test in t = cos(2 pi k/n), with the map per valence by Zorin's test,
-                   ``c1_zorin_every_n``; the characteristic map for every n >= N0 by exact signs in
-                   t = cos(2 pi/n), ``c1_uniform``; the curvature regime for every
+                   ``c1_zorin_every_n``; where lambda_1 depends on n (sqrt(3)), lambda_1 = lambda(t) rational in
+                   t = cos(2 pi/n) and every other frequency's roots below it by exact signs, ``zorin_lambda_in_t``;
+                   the characteristic map for every n >= N0 by exact signs in t = cos(2 pi/n), ``c1_uniform``; the curvature regime for every
                    valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``; the part that dominates on fine
                    rings for every valence, ``dominance_every_n``); at a sector between sharp rays (boundary, crease
                    and corner vertices) by Zorin's conditions, at a dart's closed fan cut by one sharp ray by Reif's,

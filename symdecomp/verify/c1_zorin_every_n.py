@@ -106,6 +106,15 @@ def _search(poly: sp.Poly, start: int, frequency: int | None, reach: int) -> tup
     return None
 
 
+def _search_mixed(expr: sp.Expr, start: int) -> int | None:
+    """A valence ``n >= start`` where ``expr`` (in ``n`` and ``t``) is negative at ``t = cos(2 pi/n)`` (Arb)."""
+    with flint.ctx.workprec(128):
+        for n in range(start, start + WITNESS_SEARCH):
+            if _arb_value(sp.Poly(sp.cancel(expr.subs(N, n)), T), flint.arb(flint.fmpq(2, n)).cos_pi()) < 0:
+                return n
+    return None
+
+
 def _witness_t(poly: sp.Poly, low: sp.Expr) -> sp.Expr:
     """A ``t`` in ``[low, 1)`` where ``poly`` is not positive: a rational where one is found, else a root."""
     if poly.eval(low) <= 0:
@@ -124,7 +133,9 @@ def decide_positive(expr: sp.Expr, low: sp.Expr, *, start: int, frequency: int |
     expr = sp.expand(expr)
     if expr.has(N):
         if expr.has(T):
-            return Decision("open", f"{expr} mixes n and t")
+            bad = _search_mixed(expr, start)
+            return (Decision("failed", f"the Schur-Cohn polynomial {sp.factor(expr)} is negative at n = {bad}, t = "
+                             f"cos(2 pi/{bad}) (Arb)", bad) if bad else Decision("open", f"{expr} mixes n and t"))
         if positive_from(expr, N, start):
             return Decision("proved")
         bad = next((n for n in range(start, start + WITNESS_SEARCH) if expr.subs(N, n) <= 0), None)
@@ -193,12 +204,18 @@ def frequency_polynomials(scheme: StencilScheme) -> FrequencyPolynomials:
 
 
 def _lambda_one(polys: FrequencyPolynomials) -> tuple[sp.Expr | None, EveryNStep]:
-    """``lambda_1``: the largest constant root of ``p_1`` (real, in ``(0, 1)``), or ``None`` with the reason."""
+    """``lambda_1``: the root of a factor of ``p_1`` linear in ``x`` largest at ``t_0`` (:func:`t_lower_bound`), either
+    the same for every ``n`` (real, in ``(0, 1)``) or rational in ``t`` (:mod:`symdecomp.verify.zorin_lambda_in_t`);
+    ``None`` with the reason."""
+    from symdecomp.verify.zorin_lambda_in_t import linear_roots, varying_lambda_one
+
     p1 = polys.at[1]
-    constant = [r for f, _ in sp.factor_list(p1, X)[1] if sp.degree(f, X) == 1 and not f.has(T)
-                for r in sp.solve(f, X)]
-    lam = max(constant, key=lambda r: abs(complex(r)), default=None)
+    t0 = t_lower_bound(polys.start)
+    roots = linear_roots(p1)
+    lam = max(roots, key=lambda r: (abs(complex(r.subs(T, t0))), abs(complex(r.subs(T, 1)))), default=None)
     where = (polys.start, None)
+    if lam is not None and lam.has(T):
+        return lam, varying_lambda_one(p1, lam, t0, polys.start)
     if lam is None or not lam.is_real or not (0 < lam < 1):
         why = "no root of p_1 is the same for every n" if lam is None else f"the root {lam} is not real in (0, 1)"
         return None, EveryNStep(f"lambda_1 from det(x I - B_1) = {sp.factor(p1)}: {why}", "open", where, "lambda-one",
@@ -210,7 +227,12 @@ def _lambda_one(polys: FrequencyPolynomials) -> tuple[sp.Expr | None, EveryNStep
 def _disc_step(name: str, what: str, poly: sp.Expr, lam: sp.Expr, low: sp.Expr, witness_k: int | None,
                start: int, reach: int) -> EveryNStep:
     """Every root of ``poly`` of modulus ``< lam`` on ``[low, 1)`` (Schur-Cohn, Sturm), or the computed witness."""
-    deltas = schur_cohn_conditions(sp.Poly(poly, X), lam)
+    if lam.has(T):  # lambda_1(t) > 0 on the range (the lambda-one step): the unit disc of the scaled polynomial
+        from symdecomp.verify.zorin_lambda_in_t import scaled_deltas
+
+        deltas = scaled_deltas(poly, lam)
+    else:
+        deltas = schur_cohn_conditions(sp.Poly(poly, X), lam)
     formulas = tuple((rf"\delta_{{{j}}}(t)", d) for j, d in enumerate(deltas, 1))
     results: list[Decision] = []
     for d in deltas:
@@ -221,8 +243,11 @@ def _disc_step(name: str, what: str, poly: sp.Expr, lam: sp.Expr, low: sp.Expr, 
     notes = "; ".join(r.note for r in results if r.note)
     constant = sp.Poly(poly, X).free_symbols <= {X}
     free = " (no coefficient depends on t)" if constant else ""
-    text = (f"{what}: det(x I - B) = {sp.factor(poly)}{free}; every root below lambda_1 = {lam} in modulus: the "
-            f"{len(deltas)} Schur-Cohn polynomials of p({lam} y) are positive") + (f" ({notes})" if notes else "")
+    scale = "lambda_1(t)" if lam.has(T) else lam
+    shown = (f"the {len(deltas)} Schur-Cohn polynomials of p({scale} y) are positive" if deltas else
+             "it has no root (degree 0)")
+    text = (f"{what}: det(x I - B) = {sp.factor(poly)}{free}; every root below lambda_1 = {lam} in modulus: "
+            f"{shown}") + (f" ({notes})" if notes else "")
     last = results[-1] if results else None
     if last is None or last.status == "proved":
         return EveryNStep(text, "proved", (start, None), name, formulas)
@@ -230,6 +255,15 @@ def _disc_step(name: str, what: str, poly: sp.Expr, lam: sp.Expr, low: sp.Expr, 
         return EveryNStep(f"{what}: det(x I - B) = {sp.factor(poly)} has a root of modulus >= lambda_1 = {lam}: "
                           f"{last.note}", "failed", (last.n, last.n) if last.n else (start, None), name, formulas)
     return EveryNStep(f"{what}: {last.note}", "open", (start, None), name, formulas)
+
+
+def _zero_in_t(p0: sp.Expr) -> sp.Expr:
+    """``det(x I - B_0)`` with each ``cos(2 pi q/n)`` as ``T_q(t)``, ``t = cos(2 pi/n)`` (as it is where it mixes them
+    with ``n``)."""
+    from symdecomp.verify.c1_dual_every_n import in_t
+
+    out = in_t(p0)
+    return p0 if out is None else sp.expand(out)
 
 
 def _own_rules(scheme: StencilScheme) -> str:
@@ -267,12 +301,14 @@ def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
 
 
 def zorin_lambda_one(scheme: StencilScheme, polys: FrequencyPolynomials | None = None) -> sp.Expr | None:
-    """``lambda_1`` for every ``n`` from the structural form (the ``lambda-one`` step), or ``None`` where it varies;
-    ``polys``: the scheme's :func:`frequency_polynomials` where the caller has them already."""
+    """``lambda_1`` for every ``n`` from the structural form (the ``lambda-one`` step): a constant, or a closed form in
+    ``n`` (``cos(2 pi/n)`` for ``t``), or ``None`` where none is derived; ``polys``: the scheme's
+    :func:`frequency_polynomials` where the caller has them already."""
     try:
-        return _lambda_one(polys or frequency_polynomials(scheme))[0]
+        lam = _lambda_one(polys or frequency_polynomials(scheme))[0]
     except NotApplicableError:
         return None
+    return None if lam is None else lam.subs(T, sp.cos(2 * sp.pi / N))
 
 
 def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True,
@@ -284,9 +320,12 @@ def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True,
     start, reach = polys.start, polys.reach
     lam, first = _lambda_one(polys)
     steps = [first]
+    if first.status != "proved":
+        lam = None
     if lam is not None:
         t0 = t_lower_bound(start)
-        p0, rest = sp.div(sp.Poly(polys.at[0], X), sp.Poly(X - 1, X))
+        at0 = _zero_in_t(polys.at[0]) if lam.has(T) else polys.at[0]
+        p0, rest = sp.div(sp.Poly(at0, X), sp.Poly(X - 1, X))
         if not rest.is_zero:
             steps.append(EveryNStep(f"1 is not a root of det(x I - B_0) = {sp.factor(polys.at[0])}", "failed",
                                     (start, None), "frequency-zero"))
@@ -299,8 +338,13 @@ def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True,
                                     lam, t0, k, start, reach))
         for k in (k for k in polys.at if abs(k) > 1):
             steps.append(_disc_step("frequency-exceptional", f"k = {k}", polys.at[k], lam, t0, k, start, reach))
-        steps.append(_disc_step("other-frequencies", f"every other k ({reach + 1} <= k <= n - {reach + 1}, "
-                                "t = cos(2 pi k/n) in [-1, 1))", polys.other, lam, sp.Integer(-1), None, start, reach))
+        if lam.has(T):
+            from symdecomp.verify.zorin_lambda_in_t import other_frequencies_in_t
+
+            steps.append(other_frequencies_in_t(polys.other, lam, t0, start, reach))
+        else:
+            steps.append(_disc_step("other-frequencies", f"every other k ({reach + 1} <= k <= n - {reach + 1}, "
+                                    "t = cos(2 pi k/n) in [-1, 1))", polys.other, lam, sp.Integer(-1), None, start, reach))
     below = _per_valence(scheme, start) if per_valence else None
     return tuple(steps) + ((below,) if below else ())
 

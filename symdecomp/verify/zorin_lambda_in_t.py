@@ -103,7 +103,7 @@ def other_frequencies_in_t(other: sp.Expr, lam: sp.Expr, t0: sp.Expr, start: int
     name, where = "other-frequencies", (start, None)
     what = f"every other k ({reach + 1} <= k <= n - {reach + 1}, s = cos(2 pi k/n) < t = cos(2 pi/n))"
     m, rest = _split(other, lam)
-    shown = sp.factor(other).subs(T, S)
+    shown = sp.factor(sp.expand(other).subs(T, S))
     slope = sp.cancel(sp.diff(lam, T))
     low = sp.cancel(lam.subs(T, t0))
     formulas: list[tuple[str, object]] = [(r"p(x; s)", shown), (r"m", sp.Integer(m)), (r"r(x; s)", rest.subs(T, S)),

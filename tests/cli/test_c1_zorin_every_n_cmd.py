@@ -10,10 +10,14 @@ from __future__ import annotations
 import json
 
 import jsonschema
+import numpy as np
 import pytest
 
+from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.cli import c1_cmd, main
 from symdecomp.cli.json_envelope import json_schema
+from symdecomp.schemes.stencil_files import load_zoo
+from symdecomp.symbols import n as N
 from symdecomp.verify.result import C1Verdict
 
 
@@ -88,3 +92,35 @@ def test_the_butterfly_every_n_computes_its_frequency_polynomials_once(monkeypat
     assert calls == ["modified-butterfly", "lambda_1 = 1/2"]  # once; the plot's lambda_1 read from the same polynomials
     assert plot.read_bytes().startswith(b"\x89PNG")
     assert capsys.readouterr().out.splitlines()[0] == "modified-butterfly: C1 for every valence? undecided"
+
+
+def test_the_sqrt3_every_n_json_proves_the_spectral_steps_with_lambda_one_in_t(monkeypatch, capsys, tmp_path):
+    """sqrt(3)'s lambda_1 depends on n: the steps are proved for every n >= 16 all the same, the map stays open, and the
+    plot draws the proof's lambda_1(n)."""
+    from matplotlib.figure import Figure
+
+    _fast(monkeypatch)
+    drawn: list[object] = []
+
+    def figure(result, rows, lam):
+        drawn.append(lam)
+        return Figure()
+
+    monkeypatch.setattr(c1_cmd, "_every_n_figure", figure)
+    plot = tmp_path / "every-n.png"
+    assert main(["c1", "--every-n", "--scheme", "sqrt3", "--quiet", "--jobs", "1", "--json", "--plot", str(plot)]) == 1
+    out = json.loads(capsys.readouterr().out)
+    jsonschema.validate(out, json_schema())
+    steps = {s["name"]: s for s in out["steps"]}
+    assert out["status"] == "undecided" and out["summary"].startswith("the spectral conditions hold for every n")
+    for name in ("lambda-one", "frequency-zero", "frequency-one", "other-frequencies"):
+        assert steps[name]["status"] == "proved" and steps[name]["valences"] == [16, None]
+    assert steps["map-open"]["status"] == "open"
+    (lam,) = drawn
+    assert abs(float(lam.subs(N, 16)) - zoo_subdominant(16)) < 1e-12
+
+
+def zoo_subdominant(valence: int) -> float:
+    """The explicit 1-ring matrix's second largest eigenvalue modulus at ``valence`` (numpy), the engine's own matrix."""
+    A = np.array(zoo_matrix(load_zoo("sqrt3"), valence).matrix.evalf(30).tolist(), dtype=float)
+    return float(sorted(abs(np.linalg.eigvals(A)), reverse=True)[1])

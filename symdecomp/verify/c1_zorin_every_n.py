@@ -8,8 +8,10 @@ frequencies ``0, +-1, +-2``; :mod:`symdecomp.analysis.zoo_symbols`). With the mi
 ``p_k(x) = det(x I - B_k)`` are polynomials in ``t = cos(2 pi k/n)``, and the conditions are, for every ``n`` from
 the valence ``N0`` the form holds from:
 
-* ``lambda-one``: ``lambda_1`` is a root of ``p_1`` that is a constant (the same for every ``n``), the largest such,
-  real and in ``(0, 1)``: derived from the factors of ``p_1``, never typed;
+* ``lambda-one``: ``lambda_1`` is the root of a factor of ``p_1`` linear in ``x``, derived from the factors of
+  ``p_1``, never typed: a constant (the same for every ``n``), real and in ``(0, 1)``, or a rational function
+  ``lambda(t)`` of ``t = cos(2 pi/n)`` (sqrt(3)), for which :mod:`symdecomp.verify.zorin_lambda_in_t` gives this step
+  and the other frequencies' (below ``lambda(t)`` at ``s = cos(2 pi k/n) < t``, another number than ``t``);
 * ``frequency-one``: at ``k = 1`` and ``k = -1``, ``p_k = (x - lambda_1) r_k`` with every root of ``r_k`` of modulus
   ``< lambda_1`` (``lambda_1`` simple there, so double overall), for ``t = cos(2 pi/n)`` in ``[t_0, 1)``;
 * ``frequency-zero``: ``p_0 = (x - 1) r_0`` (the centre's row bordering the block) with every root of ``r_0`` of
@@ -217,7 +219,8 @@ def _lambda_one(polys: FrequencyPolynomials) -> tuple[sp.Expr | None, EveryNStep
     if lam is not None and lam.has(T):
         return lam, varying_lambda_one(p1, lam, t0, polys.start)
     if lam is None or not lam.is_real or not (0 < lam < 1):
-        why = "no root of p_1 is the same for every n" if lam is None else f"the root {lam} is not real in (0, 1)"
+        why = ("no factor of p_1 is linear in x (no root the same for every n or rational in t)" if lam is None else
+               f"the root {lam} is not real in (0, 1)")
         return None, EveryNStep(f"lambda_1 from det(x I - B_1) = {sp.factor(p1)}: {why}", "open", where, "lambda-one",
                                 ((r"p_1(x)", p1),))
     return lam, EveryNStep(f"lambda_1 = {lam}: the largest root of det(x I - B_1) = {sp.factor(p1)} that is the same for "

@@ -19,7 +19,8 @@ factor of ``p_1`` is linear in ``x`` (sqrt(3): ``p_1 = x - (2 + 2 t)/9``), ``lam
   ``lambda(t) >= lambda(t_0)`` for ``t >= t_0`` (``lambda`` increasing on ``[t_0, 1]``).
 
 A sign not shown in the last step leaves it ``open`` with the reason (the bound ``lambda(t_0)`` is only sufficient); a
-Schur-Cohn polynomial of the exact steps that is negative gives a computed witness (:func:`decide_positive`).
+Schur-Cohn polynomial of the exact steps that is negative gives a computed witness
+(:func:`~symdecomp.verify.c1_zorin_every_n.decide_positive`).
 """
 
 from __future__ import annotations

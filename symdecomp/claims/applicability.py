@@ -30,9 +30,9 @@ meet one (instead of failing inside sympy, or repeating the same guard in every 
 The claims' checks compute with the 1-ring of a vertex refined by a primal step: the paper's with the
 ``(2n+1)``-point 1-ring of a quad mesh, others (Loop's) with the ``(n+1)``-point 1-ring of a triangle mesh. A
 scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model, from its
-data, by :data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them), and then its lattice
-against the claim's (:attr:`~symdecomp.claims.registry.Claim.lattices`); each reason says what the scheme has,
-and :func:`one_ring_needed` what the claim needs:
+data: first its lattice against the claim's (:attr:`~symdecomp.claims.registry.Claim.lattices`), then by
+:data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them); each reason says what the scheme
+has, and :func:`one_ring_needed` what the claim needs:
 
 * :data:`PRIMAL_VERTEX`: the step is primal and the extraordinary element is a vertex;
 * :data:`ONE_RING_SUPPORT`: every rule's walks cross at most one edge from the anchor's faces.
@@ -189,8 +189,8 @@ def _walk_beyond_one_ring(scheme: Scheme | StencilScheme) -> Text | None:
 PRIMAL_VERTEX = Requirement("a primal step at an extraordinary vertex", _not_primal_vertex)
 #: Rules whose stencils stay in the 1-ring (walks crossing at most one edge).
 ONE_RING_SUPPORT = Requirement("rules on the 1-ring", _walk_beyond_one_ring)
-#: What a scheme of the zoo is tested against before any claim, in order (then its lattice against the claim's:
-#: :attr:`~symdecomp.claims.registry.Claim.lattices`).
+#: What a scheme of the zoo on one of a claim's lattices (:attr:`~symdecomp.claims.registry.Claim.lattices`, tested
+#: first) is tested against, in order.
 ZOO_REQUIREMENTS = (PRIMAL_VERTEX, ONE_RING_SUPPORT)
 
 

@@ -41,7 +41,7 @@ def _first_unmet(scheme: StencilScheme, claim: Claim) -> Text | None:
     claim's (what the claim needs, naming the scheme's lattice: :func:`one_ring_needed`), the most basic reason, which
     no topology or support on that lattice could change; else the first zoo requirement it does not meet, with what the
     claim needs."""
-    needed = one_ring_needed(claim.lattices, scheme)
+    needed = one_ring_needed(claim.lattices, scheme, claim.parameter)
     if lattice(scheme.lattice) not in claim.lattices:
         return needed
     for requirement in ZOO_REQUIREMENTS:  # the zoo's requirements take either model of a scheme (applicability)

@@ -64,7 +64,8 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
                                                                                                        f"{scheme.lattice} meshes")
         else:  # on the claim's lattice: what the scheme has, then what the claim needs
             assert row["status"] == Status.NOT_APPLICABLE.value
-            assert row["evidence"].startswith(reason + "; the claim is about the (") and "subdivides" not in row["evidence"]
+            about = "a sector of k faces" if c.parameter == "k" else "the ("  # a sector claim's, or a vertex's 1-ring
+            assert row["evidence"].startswith(f"{reason}; the claim is about {about}") and "subdivides" not in row["evidence"]
 
 
 def test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes():
@@ -217,3 +218,24 @@ def test_the_claim_s_lattices_come_from_what_it_reads_and_requires():
     assert str(eq34.evidence) == ("the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a primal "
                                   f"step, and {triangle_stencils.name!r} subdivides triangle meshes")
     assert "meets the 1-ring primal model" in str(zoo_claim_result("Loop's vertex weight", triangle_stencils).evidence)
+
+
+def test_a_sector_claim_tells_a_zoo_scheme_it_is_about_a_sector_not_the_1_ring_of_a_vertex(capsys):
+    """The B.2 claims (parameter k) are about a sector of k faces between two sharp edges: the reason says so, with the
+    sector's point count on each lattice, which agrees with the sector model's 1-ring at every k tried (k = 1..8)."""
+    import re
+
+    from symdecomp.schemes.sector import SharpVertex
+
+    reasons = _reasons("doo-sabin", capsys)
+    sector = [c for c in all_claims() if c.parameter == "k"]
+    assert len(sector) == 6
+    for c in sector:
+        reason = reasons[c.label]
+        assert "1-ring of a vertex" not in reason and "a sector of k faces between two sharp edges of a quad mesh" in reason
+        counts = {x: (a, b) for x, a, b in re.findall(r"a (quad|triangle) mesh \(its \((\d*)k\+(\d+)\)-point 1-ring\)", reason)}
+        assert set(counts) == {"quad", "triangle"}
+        for name, (slope, offset) in counts.items():
+            for k in range(1, 9):
+                points = len(SharpVertex.boundary(k, lattice(name)).vertex_order())
+                assert points == int(slope or 1) * k + int(offset), (name, k)

@@ -7,10 +7,12 @@ A row is the dict each script's ``targets()`` returns (``target``, ``limit_secon
 
 from __future__ import annotations
 
+import argparse
 import os
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
@@ -33,3 +35,11 @@ def print_rows(rows: list[dict]) -> None:
         verdict = "" if limit is None else ("  (target met)" if row["seconds"] <= limit else "  (TARGET MISSED)")
         print(f"{row['target']}: {row['seconds']:.1f} s, limit {limit or '-'} s{verdict}; "
               f"{row['baseline']}: {row['baseline_seconds']:.1f} s")
+
+
+def main_with_quick(doc: str, targets: Callable[[bool], list[dict]], quick: str) -> None:
+    """The ``main()`` of a script whose output is its target rows: ``--help`` from the first line of ``doc`` (the
+    script's docstring), ``--quick`` (``quick`` says what it runs instead), then :func:`print_rows` of ``targets``."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help=quick)
+    print_rows(targets(parser.parse_args().quick))

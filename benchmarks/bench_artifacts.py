@@ -12,14 +12,13 @@ the regime reuses), so that the ratio shows what the second-order analysis adds.
 
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import subprocess
 import sys
 import time
 
-from _targets import print_rows
+from _targets import main_with_quick
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
@@ -56,10 +55,7 @@ def targets(quick: bool = False) -> list[dict]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="n = 3..16 instead of 3..64")
-    args = parser.parse_args()
-    print_rows(targets(args.quick))
+    main_with_quick(__doc__, targets, "n = 3..16 instead of 3..64")
 
 
 if __name__ == "__main__":

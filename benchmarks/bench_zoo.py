@@ -13,9 +13,7 @@ read and factored there), forced by giving the neighbourhood's depth. The explic
 
 from __future__ import annotations
 
-import argparse
-
-from _targets import print_rows, timed
+from _targets import main_with_quick, timed
 
 #: The issue's targets, seconds per scheme.
 SPECTRUM_SECONDS = 10.0
@@ -54,10 +52,7 @@ def targets(quick: bool = False) -> list[dict]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="n = 32 and the certificate at n = 1000")
-    args = parser.parse_args()
-    print_rows(targets(args.quick))
+    main_with_quick(__doc__, targets, "n = 32 and the certificate at n = 1000")
 
 
 if __name__ == "__main__":

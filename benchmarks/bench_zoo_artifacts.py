@@ -12,9 +12,7 @@ artifacts reads the 2-ring, the neighbourhood the C1 test reads).
 
 from __future__ import annotations
 
-import argparse
-
-from _targets import print_rows, timed
+from _targets import main_with_quick, timed
 
 #: The target, seconds.
 ARTIFACTS_SECONDS = 30.0
@@ -31,10 +29,7 @@ def targets(quick: bool = False) -> list[dict]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="n = 24")
-    args = parser.parse_args()
-    print_rows(targets(args.quick))
+    main_with_quick(__doc__, targets, "n = 24")
 
 
 if __name__ == "__main__":

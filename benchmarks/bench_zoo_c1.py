@@ -13,9 +13,7 @@ the dyadic depth it started from before the first depth was chosen by points per
 
 from __future__ import annotations
 
-import argparse
-
-from _targets import print_rows, timed
+from _targets import main_with_quick, timed
 
 #: The target, seconds for ``c1 --n 3:10 --scheme sqrt3 --jobs 1``.
 C1_SECONDS = 60.0
@@ -40,10 +38,7 @@ def targets(quick: bool = False) -> list[dict]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="n = 3..5, the baseline at n = 3")
-    args = parser.parse_args()
-    print_rows(targets(args.quick))
+    main_with_quick(__doc__, targets, "n = 3..5, the baseline at n = 3")
 
 
 if __name__ == "__main__":

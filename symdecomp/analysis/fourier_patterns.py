@@ -71,25 +71,26 @@ class PatternForm:
         return [arb(0) if i < 0 else scalars[c] * table[i] for c, i in zip(*self._pairs())]
 
 
-_PATTERN_INDEX: dict = {}
-#: The valence whose patterns :data:`_PATTERN_INDEX` holds: one comparison per call, where a scan of the keys made
-#: the lookups of a valence quadratic in ``N`` (about ``2N`` keys read for each of ``2N`` patterns).
-_PATTERN_VALENCE: list[int] = []
+#: The patterns of one valence, ``{n: {(j, shift): (coef, index)}}``: keyed by the valence, which it says once, and
+#: holding only the last one asked (a valence's lookups stay one dict read each, where a scan of mixed keys made them
+#: quadratic in ``N``: about ``2N`` keys read for each of ``2N`` patterns).
+_PATTERNS: dict[int, dict[tuple[int, int], tuple[np.ndarray, np.ndarray]]] = {}
 
 
 def _pattern_index(n: int, j: int, shift: int) -> tuple[np.ndarray, np.ndarray]:
     """``(coef, index)`` of the pattern of frequency ``j`` on ``(O, e_0, f_0, ...)``, remembered for the last valence."""
-    if (n, j, shift) not in _PATTERN_INDEX:
-        if _PATTERN_VALENCE != [n]:
-            _PATTERN_INDEX.clear()
-            _PATTERN_VALENCE[:] = [n]
+    if n not in _PATTERNS:
+        _PATTERNS.clear()
+        _PATTERNS[n] = {}
+    patterns = _PATTERNS[n]
+    if (j, shift) not in patterns:
         k = np.arange(n)
         index, coef = np.full(2 * n + 1, -1), np.zeros(2 * n + 1, dtype=np.int64)
         index[1::2] = (4 * j * k + shift) % (4 * n)
         index[2::2] = (2 * j * (2 * k + 1) + shift) % (4 * n)
         coef[2::2] = 1
-        _PATTERN_INDEX[(n, j, shift)] = coef, index
-    return _PATTERN_INDEX[(n, j, shift)]
+        patterns[(j, shift)] = coef, index
+    return patterns[(j, shift)]
 
 
 

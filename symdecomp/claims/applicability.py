@@ -28,11 +28,12 @@ meet one (instead of failing inside sympy, or repeating the same guard in every 
   be rules of the mesh (:func:`symdecomp.schemes.mesh.mesh_rules`).
 
 The claims' checks compute with the 1-ring of a vertex refined by a primal step: the paper's with the
-``(2n+1)``-point 1-ring of a quad mesh, others (Loop's) with the ``(n+1)``-point 1-ring of a triangle mesh. A
+``(2n+1)``-point 1-ring of a quad mesh, others (Loop's) with the ``(n+1)``-point 1-ring of a triangle mesh, and the
+sector claims (B.2, whose parameter is ``k``) with the 1-ring of a sector of ``k`` faces between two sharp edges. A
 scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model, from its
-data, by :data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them), and then its lattice
-against the claim's (:attr:`~symdecomp.claims.registry.Claim.lattices`); each reason says what the scheme has,
-and :func:`one_ring_needed` what the claim needs:
+data: first its lattice against the claim's (:attr:`~symdecomp.claims.registry.Claim.lattices`), then by
+:data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them); each reason says what the scheme
+has, and :func:`one_ring_needed` what the claim needs:
 
 * :data:`PRIMAL_VERTEX`: the step is primal and the extraordinary element is a vertex;
 * :data:`ONE_RING_SUPPORT`: every rule's walks cross at most one edge from the anchor's faces.
@@ -142,20 +143,36 @@ NO_FREE_PARAMETERS = Requirement("no free parameters", _free_parameters)
 WHOLE_MESH = Requirement("rules of a whole quad mesh", _not_mesh_rules)
 
 
-def one_ring_needed(lattices: tuple, scheme: Scheme | StencilScheme) -> Text:
-    """What a claim about the 1-ring of a vertex on ``lattices`` needs, in words computed from the lattices (the number
-    of 1-ring points from each lattice's kinds of neighbours: ``2n+1`` on quads, ``n+1`` on triangles), naming the
-    lattice ``scheme`` subdivides when it is not one of them."""
-    rings = " or ".join(f"the ({_ring_points(x)})-point 1-ring of a vertex of a {x} mesh" for x in lattices)
+def one_ring_needed(lattices: tuple, scheme: Scheme | StencilScheme, parameter: str = "n") -> Text:
+    """What a claim on ``lattices`` needs, in words computed from the lattices, naming the lattice ``scheme`` subdivides
+    when it is not one of them. ``parameter`` is the claim's (:attr:`~symdecomp.claims.registry.Claim.parameter`):
+    ``"n"``, the 1-ring of a vertex of valence ``n`` (``2n+1`` points on quads, ``n+1`` on triangles, from each
+    lattice's kinds of neighbours); ``"k"``, a sector of ``k`` faces between two sharp edges (``2k+2`` points on quads,
+    ``k+2`` on triangles, from the sector's own 1-ring, :class:`~symdecomp.schemes.sector.SharpVertex`)."""
+    if parameter == "k":
+        what = " or of ".join(f"a {x} mesh (its ({_sector_points(x)})-point 1-ring)" for x in lattices)
+        needed = f"a sector of k faces between two sharp edges of {what},"
+    else:
+        needed = " or ".join(f"the ({_ring_points(x)})-point 1-ring of a vertex of a {x} mesh" for x in lattices)
     own = lattice(scheme.lattice)
     other = () if own in lattices else (", and ", Verbatim(repr(scheme.name)), f" subdivides {own} meshes")
-    return Text("the claim is about ", rings, " refined by a primal step", *other)
+    return Text("the claim is about ", needed, " refined by a primal step", *other)
 
 
 def _ring_points(x) -> str:
     """``2n+1``, ``n+1``: the centre and one point per kind of 1-ring neighbour per sector."""
     kinds = len(x.one_ring_classes)
     return f"{kinds if kinds > 1 else ''}n+1"
+
+
+def _sector_points(x) -> str:
+    """``2k+2``, ``k+2``: the points of the 1-ring of a boundary sector of ``k`` faces on lattice ``x``, read from the
+    sector's model at ``k = 1, 2`` (its size is affine in ``k``: one more edge neighbour, and face neighbour, per face)."""
+    from symdecomp.schemes.sector import SharpVertex
+
+    one, two = (len(SharpVertex.boundary(k, x).vertex_order()) for k in (1, 2))
+    slope = two - one
+    return f"{slope if slope > 1 else ''}k+{one - slope}"
 
 
 def _not_primal_vertex(scheme: Scheme | StencilScheme) -> Text | None:
@@ -189,8 +206,8 @@ def _walk_beyond_one_ring(scheme: Scheme | StencilScheme) -> Text | None:
 PRIMAL_VERTEX = Requirement("a primal step at an extraordinary vertex", _not_primal_vertex)
 #: Rules whose stencils stay in the 1-ring (walks crossing at most one edge).
 ONE_RING_SUPPORT = Requirement("rules on the 1-ring", _walk_beyond_one_ring)
-#: What a scheme of the zoo is tested against before any claim, in order (then its lattice against the claim's:
-#: :attr:`~symdecomp.claims.registry.Claim.lattices`).
+#: What a scheme of the zoo on one of a claim's lattices (:attr:`~symdecomp.claims.registry.Claim.lattices`, tested
+#: first) is tested against, in order.
 ZOO_REQUIREMENTS = (PRIMAL_VERTEX, ONE_RING_SUPPORT)
 
 

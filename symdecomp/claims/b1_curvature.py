@@ -21,11 +21,13 @@ What a statement about one scheme by name is about: "Curvature regime: Catmull-C
 scheme on quad meshes and "Curvature regime: Loop" (and "Loop's vertex weight") those of one on triangle meshes. A
 scheme on that lattice stands for the named one (its own rules are checked against the statement, as the paper's
 claims about Catmull-Clark take the quad scheme given); a scheme on another lattice has nothing to put there, so the
-check reads the lattice's reference scheme (:meth:`~symdecomp.schemes.lattice.Lattice.own_or_reference`), and the
-verdict is the named scheme's. Each claim declares the lattices it reads the scheme on (``reads_on=``), and the
-registry asks what a check needs (``requires=``) of each scheme it reads
-(:meth:`~symdecomp.claims.registry.Claim.unmet`): a triangle file with free parameters gets Catmull-Clark's verdict
-for Catmull-Clark's regimes, as every triangle file does, and "not applicable" for Loop's.
+check is given the lattice's reference scheme, and the verdict is the named scheme's. Each claim declares the lattices
+it reads the scheme on (``reads_on=``) and the registry hands its check the scheme it reads, so a check reading one
+lattice computes with the scheme it is given and the shape claim, reading two, with
+:meth:`~symdecomp.claims.registry.Claim.schemes_read`: the fact is stated once, in the declaration. The registry
+asks what a check needs (``requires=``) of each scheme it reads (:meth:`~symdecomp.claims.registry.Claim.unmet`): a
+triangle file with free parameters gets Catmull-Clark's verdict for Catmull-Clark's regimes, as every triangle file
+does, and "not applicable" for Loop's.
 :meth:`~symdecomp.claims.registry.Claim.reads_instead` is the one test both routes ask, so a scheme of the zoo on the
 other lattice (sqrt(3), the modified butterfly) gets the reference scheme's verdict as a 1-ring scheme does. The
 regimes compare mu with lambda_1^2, a real number only for a real lambda_1, hence mirror-symmetric rules
@@ -44,8 +46,8 @@ from symdecomp.analysis.curvature_regime import CurvatureRegime
 from symdecomp.analysis.frequency import one_ring_matrices
 from symdecomp.claims.applicability import MIRROR_SYMMETRIC, NO_FREE_PARAMETERS
 from symdecomp.claims.notation import eq, gt, lambda_1, lt
-from symdecomp.claims.registry import CheckResult, LazySteps, Scope, Status, Step, Text, Verbatim, claim
-from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE, Lattice
+from symdecomp.claims.registry import CheckResult, LazySteps, Scope, Status, Step, Text, Verbatim, claim, get_claim
+from symdecomp.schemes.lattice import BICUBIC, BOX_SPLINE, QUAD, TRIANGLE
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
@@ -141,11 +143,6 @@ def _unbounded_for_every_n(scheme: Scheme, printed, hi: int):
     return ((step,) + ((cause,) if cause else ()), kind is None or cause is not None)
 
 
-def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
-    """``scheme`` if it lives on the ``wanted`` lattice, else that lattice's reference scheme (Catmull-Clark, Loop)."""
-    return wanted.own_or_reference(scheme)
-
-
 @claim(
     "Curvature regime: Catmull-Clark",
     section="B.1",
@@ -157,7 +154,7 @@ def _on(scheme: Scheme, wanted: Lattice) -> Scheme:
     reads_on=(QUAD,),
 )
 def _catmull_clark(scheme: Scheme) -> CheckResult:
-    return check_regimes(_on(scheme, QUAD), CATMULL_CLARK)
+    return check_regimes(scheme, CATMULL_CLARK)
 
 
 @claim(
@@ -172,7 +169,7 @@ def _catmull_clark(scheme: Scheme) -> CheckResult:
     reads_on=(TRIANGLE,),
 )
 def _loop(scheme: Scheme) -> CheckResult:
-    return check_regimes(_on(scheme, TRIANGLE), LOOP)
+    return check_regimes(scheme, LOOP)
 
 
 @claim(
@@ -185,8 +182,7 @@ def _loop(scheme: Scheme) -> CheckResult:
     reads_on=(TRIANGLE,),
 )
 def _loop_weight(scheme: Scheme) -> CheckResult:
-    s = _on(scheme, TRIANGLE)
-    M, E0 = one_ring_matrices(s)
+    M, E0 = one_ring_matrices(scheme)
     elliptic = sp.expand(E0.trace() - 1)  # E_0 is 2 x 2 with the eigenvalue 1: the other one is its trace minus 1
     lam1 = M[0, 0].subs(OMEGA, sp.exp(2 * sp.pi * sp.I / N))
     defect = reduced(sp.expand((elliptic - lam1**2).rewrite(sp.cos)))
@@ -194,14 +190,14 @@ def _loop_weight(scheme: Scheme) -> CheckResult:
                                Step("$\\lambda_1 = M(\\omega_n)$", sp.simplify(lam1.rewrite(sp.cos))),
                                Step("The elliptic eigenvalue minus $\\lambda_1^2$", defect)))
     if defect == 0:
-        return CheckResult(Status.PROVED, Text("for ", Verbatim(s.name), ", the elliptic eigenvalue minus ", lambda_1**2,
+        return CheckResult(Status.PROVED, Text("for ", Verbatim(scheme.name), ", the elliptic eigenvalue minus ", lambda_1**2,
                                                " simplifies to 0 for every n"), steps=steps)
     k = next((k for k in range(3, 65) if sp.simplify(defect.subs(N, k)) != 0), None)
     if k is None:
         return CheckResult(Status.UNDECIDED, Text("the difference ", defect, " does not simplify to 0 but vanishes for n = 3..64"),
                            steps=steps)
     at = sp.simplify(defect.subs(N, k))
-    return CheckResult(Status.REFUTED, Text("for ", Verbatim(s.name), " the elliptic eigenvalue is not ", lambda_1**2),
+    return CheckResult(Status.REFUTED, Text("for ", Verbatim(scheme.name), " the elliptic eigenvalue is not ", lambda_1**2),
                        counterexample=Text(f"n = {k}: the elliptic eigenvalue minus ", lambda_1**2, " is ", at), steps=steps)
 
 
@@ -297,8 +293,12 @@ def _argument(first: int, text: str) -> tuple[Step, ...]:
                  "(formulas in sympy's notation):"), Step(Verbatim(text)))
 
 
+#: The shape claim's label: its check reads the schemes the registry says it reads (:meth:`Claim.schemes_read`).
+SHAPE = "Shape: the valence decides"
+
+
 @claim(
-    "Shape: the valence decides",
+    SHAPE,
     section="B.1",
     title="Convex input does not stay convex: for $n \\ge 5$ (Catmull-Clark) and $n \\ge 7$ (Loop)",
     statement=r"For generic input the shape near an extraordinary vertex is decided by the valence, not by the mesh: "
@@ -310,14 +310,16 @@ def _argument(first: int, text: str) -> tuple[Step, ...]:
     reads_on=(QUAD, TRIANGLE),
 )
 def _shape(scheme: Scheme) -> CheckResult:
-    quad = check_dominance(_on(scheme, QUAD), QUAD.select(DOMINANCE, "the printed dominance"))
-    if quad.status not in (Status.VERIFIED, Status.PROVED):
-        return quad
-    tri = check_dominance(_on(scheme, TRIANGLE), TRIANGLE.select(DOMINANCE, "the printed dominance"))
-    if tri.status not in (Status.VERIFIED, Status.PROVED):
-        return tri
-    if quad.status is tri.status is Status.PROVED:
-        return CheckResult(Status.PROVED, Text(quad.evidence, "; and ", tri.evidence), steps=quad.steps + tri.steps)
-    ranges = [r.valences for r in (quad, tri) if r.valences is not None]
-    return CheckResult(Status.VERIFIED, Text(quad.evidence, "; and ", tri.evidence), steps=quad.steps + tri.steps,
+    results = []
+    for read in get_claim(SHAPE).schemes_read(scheme):  # one per lattice of reads_on, in its order
+        result = check_dominance(read, read.lattice.select(DOMINANCE, "the printed dominance"))
+        if result.status not in (Status.VERIFIED, Status.PROVED):
+            return result
+        results.append(result)
+    evidence = Text(*(part for i, r in enumerate(results) for part in (("; and ", r.evidence) if i else (r.evidence,))))
+    steps = tuple(step for r in results for step in r.steps)
+    if all(r.status is Status.PROVED for r in results):
+        return CheckResult(Status.PROVED, evidence, steps=steps)
+    ranges = [r.valences for r in results if r.valences is not None]
+    return CheckResult(Status.VERIFIED, evidence, steps=steps,
                        valences=(min(lo for lo, _ in ranges), max(hi for _, hi in ranges)))

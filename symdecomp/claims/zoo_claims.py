@@ -1,10 +1,11 @@
 """The paper's claims for a scheme of the zoo: which apply, and why the others do not.
 
 The checks of the registry compute with the 1-ring primal model (:class:`~symdecomp.schemes.scheme.Scheme`);
-a scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model by
-:data:`~symdecomp.claims.applicability.ZOO_REQUIREMENTS` first, then its lattice against the lattices whose
-1-ring the claim is about (:attr:`~symdecomp.claims.registry.Claim.lattices`, from its ``reads_on`` and requirements), and
-the first mismatch is the ``not applicable`` reason: what the scheme has, and what the claim needs. A claim whose
+a scheme of the zoo (:class:`~symdecomp.schemes.stencils.StencilScheme`) is tested against that model: first its
+lattice against the lattices whose 1-ring the claim is about (:attr:`~symdecomp.claims.registry.Claim.lattices`, from its
+``reads_on`` and requirements), the most basic mismatch, then by
+:data:`~symdecomp.claims.applicability.ZOO_REQUIREMENTS`, and the first mismatch is the ``not applicable`` reason:
+what the scheme has, and what the claim needs. A claim whose
 statement is not tied to the 1-ring (C1 at the extraordinary element, the closed forms being the spectrum of the
 full matrix) is named with the command of the zoo engine
 that answers it for this scheme (:data:`ENGINE_COMMANDS`), since its check is written for 1-ring primal
@@ -36,13 +37,17 @@ ENGINE_COMMANDS = {
 
 
 def _first_unmet(scheme: StencilScheme, claim: Claim) -> Text | None:
-    """What ``scheme`` has that the claim's 1-ring model does not (the first zoo requirement it does not meet, or a
-    lattice that is not the claim's), with what the claim needs (:func:`one_ring_needed`); ``None`` when it fits."""
-    needed = one_ring_needed(claim.lattices, scheme)
+    """Why ``scheme`` is outside the claim's 1-ring model, or ``None`` when it fits: first a lattice that is not the
+    claim's (what the claim needs, naming the scheme's lattice: :func:`one_ring_needed`), the most basic reason, which
+    no topology or support on that lattice could change; else the first zoo requirement it does not meet, with what the
+    claim needs."""
+    needed = one_ring_needed(claim.lattices, scheme, claim.parameter)
+    if lattice(scheme.lattice) not in claim.lattices:
+        return needed
     for requirement in ZOO_REQUIREMENTS:  # the zoo's requirements take either model of a scheme (applicability)
         if (reason := requirement.unmet(scheme)) is not None:  # type: ignore[arg-type]
             return Text(reason, "; ", needed)
-    return needed if lattice(scheme.lattice) not in claim.lattices else None
+    return None
 
 
 def zoo_claim_result(label: str, scheme: StencilScheme, *, budget: float | None = None) -> CheckResult:

@@ -307,8 +307,9 @@ def c1_every_n(scheme: Scheme | StencilScheme, last: int = 64, *, progress: Call
     spectral_ok = all(s.status == "proved" for s in spectral) and tail <= last + 1
     uniform = (map_every_n or (lambda lo, last: _uniform_map(scheme, lo, last)))(lo, last) if spectral_ok else None
     steps = spectral + (
-        EveryNStep(f"Reif's test at each n = {lo}..{last}: the spectral conditions and a regular, injective characteristic "
-                   "map, certified (Arb balls; exact at frequency 0)", "verified", (lo, last), "reif-per-valence"),
+        # the range is the step's valences, printed beside its text: the text says what holds at each of them
+        EveryNStep("Reif's test at each valence: the spectral conditions and a regular, injective characteristic map, "
+                   "certified (Arb balls; exact at frequency 0)", "verified", (lo, last), "reif-per-valence"),
     )
     if uniform is not None and uniform.status == "proved":
         steps += tuple(EveryNStep(fact, "proved", (uniform.first, None), name) for name, fact in zip(MAP_STEPS, uniform.facts))

@@ -370,8 +370,8 @@ def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callabl
         spectral = (EveryNStep(f"the spectral conditions for every n are not read: {exc}", "open", (3, None), "spectral"),)
     result = c1_every_n(scheme, last, progress=progress, certify=certify, spectral_steps=lambda: spectral,
                         map_every_n=lambda lo, last: None, fails_from=lambda k, certify: None, first=3)
-    steps = tuple(replace(s, text=f"Zorin's test at each n = {s.valences[0]}..{s.valences[1]}: the spectral conditions and "
-                          "a regular, injective characteristic map, certified (Arb balls)")
+    steps = tuple(replace(s, text="Zorin's test at each valence: the spectral conditions and a regular, injective "
+                          "characteristic map, certified (Arb balls)")
                   if s.name == "reif-per-valence" else s for s in result.steps)
     failed = [s for s in spectral if s.status == "failed"]
     if result.status == "refuted" or result.status == "undecided" and result.certified[1] < last:

@@ -58,10 +58,14 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
         elif c.module in ENGINE_COMMANDS:
             assert row["status"] == Status.NOT_APPLICABLE.value
             assert row["evidence"].endswith(f"{ENGINE_COMMANDS[c.module][1]} --scheme {name} --n N")
-        else:  # what the scheme has, then what the claim needs, and the scheme's lattice where it is not the claim's
+        elif lattice(scheme.lattice) not in c.lattices:  # the most basic reason first: the claim's 1-ring is on another lattice
             assert row["status"] == Status.NOT_APPLICABLE.value
-            assert row["evidence"].startswith(reason + "; the claim is about the (")
-            assert (f"'{name}' subdivides" in row["evidence"]) is (lattice(scheme.lattice) not in c.lattices)
+            assert row["evidence"].startswith("the claim is about the (") and row["evidence"].endswith(f"'{name}' subdivides "
+                                                                                                       f"{scheme.lattice} meshes")
+        else:  # on the claim's lattice: what the scheme has, then what the claim needs
+            assert row["status"] == Status.NOT_APPLICABLE.value
+            about = "a sector of k faces" if c.parameter == "k" else "the ("  # a sector claim's, or a vertex's 1-ring
+            assert row["evidence"].startswith(f"{reason}; the claim is about {about}") and "subdivides" not in row["evidence"]
 
 
 def test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes():
@@ -117,7 +121,8 @@ def test_each_requirement_s_verdict_flips_with_the_scheme():
 
 
 def test_a_zoo_scheme_meeting_the_model_is_told_to_use_the_one_ring_format():
-    label = next(c.label for c in all_claims() if c.reads_scheme and c.module not in ENGINE_COMMANDS)
+    label = next(c.label for c in all_claims()  # on its lattice: the reason is the scheme's support
+                 if c.reads_scheme and c.module not in ENGINE_COMMANDS and TRIANGLE in c.lattices and not c.reads_on)
     result = zoo_claim_result(label, catmull_clark_stencils())
     assert result.status is Status.NOT_APPLICABLE
     assert "meets the 1-ring primal model" in str(result.evidence)
@@ -145,7 +150,8 @@ def test_a_malformed_zoo_file_is_one_line_and_exit_2(tmp_path, capsys):
 
 def test_the_api_answers_a_zoo_scheme_as_the_command_does():
     scheme = load_scheme("modified-butterfly")
-    label = next(c.label for c in all_claims() if c.reads_scheme and c.module not in ENGINE_COMMANDS)
+    label = next(c.label for c in all_claims()  # on its lattice: the reason is the scheme's support
+                 if c.reads_scheme and c.module not in ENGINE_COMMANDS and TRIANGLE in c.lattices and not c.reads_on)
     result = check_claim(label, scheme)
     assert result.status is Status.NOT_APPLICABLE and str(result.evidence).startswith(str(ONE_RING_SUPPORT.unmet(scheme)) + "; ")
     assert [r.status for r in check_claims([label], scheme, jobs=2)] == [Status.NOT_APPLICABLE]
@@ -180,7 +186,8 @@ def _reasons(name, capsys):
 def test_a_triangle_scheme_is_told_what_each_claim_needs_not_a_quad_mesh_for_loop_s_claims(name, capsys):
     """The reasons printed for a triangle scheme of the zoo: Loop's claims are about the triangle 1-ring (they told sqrt3
     it needs 'the (2n+1)-point 1-ring of a vertex of a quad mesh'); the paper's quad 1-ring claims say so and name the
-    scheme's own lattice; a claim about either lattice names both."""
+    scheme's own lattice, the whole reason (its topology or support would not matter on triangles); a claim about
+    either lattice names both, after what the scheme has."""
     reasons = _reasons(name, capsys)
     by_label = {c.label: c for c in all_claims()}
     loop_claims = {"Curvature regime: Loop", "Loop's vertex weight"}
@@ -191,12 +198,13 @@ def test_a_triangle_scheme_is_told_what_each_claim_needs_not_a_quad_mesh_for_loo
     quad_ring = [label for label in reasons if FACE_NEIGHBOURS in by_label[label].requires and by_label[label].module not in ENGINE_COMMANDS]
     assert "Eq. 34" in quad_ring
     for label in quad_ring:
-        assert reasons[label].endswith("the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a "
-                                       f"primal step, and '{name}' subdivides triangle meshes")
+        assert reasons[label] == ("the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a "
+                                  f"primal step, and '{name}' subdivides triangle meshes")
     either = reasons["1-ring suffices (after Eq. 51)"]
     assert "(2n+1)-point 1-ring of a vertex of a quad mesh or the (n+1)-point 1-ring of a vertex of a triangle mesh" in either
     own = str(ZOO_REQUIREMENTS[0 if name == "sqrt3" else 1].unmet(load_scheme(name)))
-    assert all(reason.startswith(own + "; ") for label, reason in reasons.items() if by_label[label].module not in ENGINE_COMMANDS)
+    assert all(reason.startswith(own + "; ") for label, reason in reasons.items()
+               if by_label[label].module not in ENGINE_COMMANDS and TRIANGLE in by_label[label].lattices)
 
 
 def test_the_claim_s_lattices_come_from_what_it_reads_and_requires():
@@ -210,3 +218,24 @@ def test_the_claim_s_lattices_come_from_what_it_reads_and_requires():
     assert str(eq34.evidence) == ("the claim is about the (2n+1)-point 1-ring of a vertex of a quad mesh refined by a primal "
                                   f"step, and {triangle_stencils.name!r} subdivides triangle meshes")
     assert "meets the 1-ring primal model" in str(zoo_claim_result("Loop's vertex weight", triangle_stencils).evidence)
+
+
+def test_a_sector_claim_tells_a_zoo_scheme_it_is_about_a_sector_not_the_1_ring_of_a_vertex(capsys):
+    """The B.2 claims (parameter k) are about a sector of k faces between two sharp edges: the reason says so, with the
+    sector's point count on each lattice, which agrees with the sector model's 1-ring at every k tried (k = 1..8)."""
+    import re
+
+    from symdecomp.schemes.sector import SharpVertex
+
+    reasons = _reasons("doo-sabin", capsys)
+    sector = [c for c in all_claims() if c.parameter == "k"]
+    assert len(sector) == 6
+    for c in sector:
+        reason = reasons[c.label]
+        assert "1-ring of a vertex" not in reason and "a sector of k faces between two sharp edges of a quad mesh" in reason
+        counts = {x: (a, b) for x, a, b in re.findall(r"a (quad|triangle) mesh \(its \((\d*)k\+(\d+)\)-point 1-ring\)", reason)}
+        assert set(counts) == {"quad", "triangle"}
+        for name, (slope, offset) in counts.items():
+            for k in range(1, 9):
+                points = len(SharpVertex.boundary(k, lattice(name)).vertex_order())
+                assert points == int(slope or 1) * k + int(offset), (name, k)

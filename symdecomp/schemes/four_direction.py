@@ -29,8 +29,8 @@ spline (``1/2`` at its centre, ``1/8`` one step away, ``1/4`` at a cell's corner
 >>> zp = four_direction_patch((F(1, 2), F(1, 4), F(0), F(1, 4)))
 >>> zp.value((0, 0), (F(0), F(0))), zp.value((1, 0), (F(0), F(0))), zp.value((1, 1), (F(1, 2), F(1, 2)))
 (Fraction(1, 2), Fraction(1, 8), Fraction(1, 4))
->>> zp.dependent_translates
-True
+>>> zp.c1, zp.dependent_translates
+(True, True)
 >>> from symdecomp.errors import InvalidSchemeError
 >>> try:
 ...     four_direction_patch((F(9, 16), F(3, 16), F(1, 16), F(3, 16)))
@@ -41,7 +41,7 @@ its regular part is no continuous piecewise quadratic on the four-direction mesh
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cache
@@ -50,7 +50,7 @@ from typing import Any
 import flint
 
 from symdecomp.algebra.numbers import to_fraction
-from symdecomp.algebra.triangle_bezier import bernstein, bezier_indices
+from symdecomp.algebra.triangle_bezier import bernstein, bezier_derivative, bezier_indices, bezier_value
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
 
 __all__ = ["CORNERS", "OFFSETS", "FourDirectionPatch", "refinement_mask", "four_direction_patch"]
@@ -77,6 +77,9 @@ class FourDirectionPatch:
     #: ``coefficients[k][b]``: the six quadratic coefficients (:func:`~symdecomp.algebra.triangle_bezier.bezier_indices`
     #: order, corners (centre, ``r_k``, ``r_(k+1)``)) of ``phi(x - b)`` on triangle ``k``, ``b`` in :data:`OFFSETS` order.
     coefficients: tuple[tuple[tuple[Fraction, ...], ...], ...]
+    #: Whether the basis function is C1 (its gradient continuous across every edge; computed, not assumed): Reif's
+    #: test needs a C1 regular part.
+    c1: bool
     #: Whether the alternating net ``(-1)^(b_1 + b_2)`` gives the zero function: the translates are linearly dependent.
     dependent_translates: bool
 
@@ -232,4 +235,34 @@ def _patch(weights: tuple[Fraction, ...], vector: list[Fraction], unknowns: dict
         for k in range(4))
     dependent = all(sum((coefficients[k][m][i] * (1 - 2 * ((b[0] + b[1]) % 2)) for m, b in enumerate(OFFSETS)), Fraction(0)) == 0
                     for k in range(4) for i in range(6))
-    return FourDirectionPatch(weights, coefficients, dependent)
+    return FourDirectionPatch(weights, coefficients, _is_c1(phi), dependent)
+
+
+def _gradient(net: list[Fraction], k: int, u: Fraction, v: Fraction) -> tuple[Fraction, Fraction]:
+    """The ``(x, y)`` gradient of triangle ``k``'s quadratic at its parameters ``(u, v)``."""
+    du = bezier_value(bezier_derivative(net, 2, "u"), 1, u, v)
+    dv = bezier_value(bezier_derivative(net, 2, "v"), 1, u, v)
+    (ax, ay), (bx, by) = CORNERS[k], CORNERS[(k + 1) % 4]
+    det = ax * by - ay * bx
+    return (du * by - ay * dv) / det, (ax * dv - bx * du) / det
+
+
+#: The edges of the mesh as pairs of (cell step, triangle, parameters) that meet: the diagonal through ``r_(k+1)``
+#: between triangles ``k`` and ``k + 1`` of one cell, and the sides ``x = 1/2`` and ``y = 1/2`` with the next cell's.
+_ONE, _ZERO = Fraction(1), Fraction(0)
+_JOINS = tuple(
+    [(((0, 0), k, (_ZERO, _ZERO)), ((0, 0), (k + 1) % 4, (_ZERO, _ZERO))) for k in range(4)]
+    + [(((0, 0), k, (_ZERO, _ONE)), ((0, 0), (k + 1) % 4, (_ONE, _ZERO))) for k in range(4)]
+    + [(((0, 0), 0, (_ONE, _ZERO)), ((1, 0), 2, (_ZERO, _ONE))), (((0, 0), 0, (_ZERO, _ONE)), ((1, 0), 2, (_ONE, _ZERO))),
+       (((0, 0), 1, (_ONE, _ZERO)), ((0, 1), 3, (_ZERO, _ONE))), (((0, 0), 1, (_ZERO, _ONE)), ((0, 1), 3, (_ONE, _ZERO)))])
+
+
+def _is_c1(phi: Callable[[_Point], Fraction]) -> bool:
+    """Whether the piecewise quadratic ``phi`` has one gradient at both ends of every edge in the box (the gradient is
+    linear on each triangle, so then it is continuous along the whole edge)."""
+    def gradient(cell: tuple[int, int], k: int, at: tuple[Fraction, Fraction]) -> tuple[Fraction, Fraction]:
+        return _gradient([phi(_domain_point(cell, k, index)) for index in bezier_indices(2)], k, *at)
+
+    box = range(-_RADIUS - 1, _RADIUS + 1)
+    return all(gradient((p + a[0][0], q + a[0][1]), a[1], a[2]) == gradient((p + b[0][0], q + b[0][1]), b[1], b[2])
+               for p in box for q in box for a, b in _JOINS)

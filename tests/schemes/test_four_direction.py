@@ -113,6 +113,14 @@ def test_the_mask_of_the_midedge_rule():
     assert sorted(mask.values()).count(F(1, 2)) == 4
 
 
+def test_the_centroid_rule_is_a_c0_quadratic_and_is_found_not_c1(zp):
+    """All four corners at the face's centroid: a refinable piecewise quadratic here, but with a kink; ZP's has none."""
+    assert zp.c1
+    centroid = four_direction_patch((F(1, 4),) * 4)
+    assert not centroid.c1
+    assert all(sum(centroid.value(b, p) for b in OFFSETS) == 1 for p in POINTS)
+
+
 def test_dependent_translates(zp):
     """The ZP box spline's translates are linearly dependent (its directions are not unimodular)."""
     assert zp.dependent_translates

@@ -91,8 +91,8 @@ def certify_four_direction_ring(mesh: DualNeighbourhood, points: Mapping[Any, An
         if sign.where is not None:
             p, corners = sign.where
             v = patches[p // 4].vertex
-            where = (f"the patch of vertex {v!r} (orbit {mesh.labels.get(v, '?')}), triangle {p % 4}, piece with corners "
-                     f"{', '.join(f'({a:g}, {b:g})' for a, b in corners)}")
+            where = (f"the patch of vertex {v!r} (orbit {mesh.labels.get(v, '?')}), triangle {p % 4}, the piece with corners "
+                     f"{', '.join(f'({a:g}, {b:g})' for a, b in corners)} in the triangle's own parameters")
         return RingCertificate(sign.status, None, None, sign.depth, winding, len(patches), where)
     s = 1 if sign.status == "positive" else -1
     return RingCertificate("regular", s, sign.lower_bound, sign.depth, winding, len(patches))

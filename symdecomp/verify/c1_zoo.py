@@ -57,8 +57,8 @@ DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-sp
 
 #: The method line of a scheme that neither test applies to (its verdicts are ``undecided``, each with the reason).
 NO_METHOD = ("none applies: Reif's test needs a spline patch this package evaluates (a dual quad scheme whose regular part is "
-             "the biquadratic B-spline), and Zorin's test, which needs none, is written for a net around a vertex of the "
-             "triangle lattice")
+             "the biquadratic B-spline or a C1 piecewise quadratic on the four-direction mesh), and Zorin's test, which "
+             "needs none, is written for a net around a vertex of the triangle lattice")
 
 #: The centre Zorin's test (:mod:`symdecomp.verify.c1_zorin`) is written for: a vertex (its net is sector 0 of a
 #: triangle lattice around it, refined by the steps that return the lattice to itself: one primal step, sqrt(3)'s two).

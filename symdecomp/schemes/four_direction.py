@@ -53,7 +53,7 @@ from symdecomp.algebra.numbers import to_fraction
 from symdecomp.algebra.triangle_bezier import bernstein, bezier_derivative, bezier_indices, bezier_value
 from symdecomp.errors import InvalidInputError, InvalidSchemeError, InvalidTypeError
 
-__all__ = ["CORNERS", "OFFSETS", "FourDirectionPatch", "refinement_mask", "four_direction_patch"]
+__all__ = ["CORNERS", "OFFSETS", "FourDirectionPatch", "refinement_mask", "cell_triangle", "four_direction_patch"]
 
 #: The cell's corners ``r_0..r_3`` relative to its centre, counter-clockwise; triangle ``k`` is (centre, r_k, r_(k+1)).
 CORNERS = ((Fraction(1, 2), Fraction(-1, 2)), (Fraction(1, 2), Fraction(1, 2)), (Fraction(-1, 2), Fraction(1, 2)),
@@ -108,8 +108,13 @@ def refinement_mask(corner_weights: Sequence[Fraction]) -> dict[tuple[int, int],
     return mask
 
 
-def _locate(d: _Point) -> tuple[int, Fraction, Fraction]:
-    """The triangle ``k`` of the cell centred at 0 holding ``d`` and its coordinates ``(u, v)``: ``d = u r_k + v r_(k+1)``."""
+def cell_triangle(d: tuple[Any, Any]) -> tuple[int, Any, Any]:
+    """The triangle ``k`` of the cell centred at 0 holding ``d`` and its coordinates ``(u, v)``: ``d = u r_k + v r_(k+1)``
+    (exact for rationals; floats give floats)."""
+    return _locate(d)
+
+
+def _locate(d: tuple[Any, Any]) -> tuple[int, Any, Any]:
     x, y = d
     k = 0 if x >= abs(y) else 1 if y >= abs(x) else 2 if -x >= abs(y) else 3
     (ax, ay), (bx, by) = CORNERS[k], CORNERS[(k + 1) % 4]

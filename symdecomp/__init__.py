@@ -59,7 +59,9 @@ nothing else.
                    (``sector_patch``), schemes from TOML
                    files and by name (``files``), Loop's scheme (``loop``), Stam's patch
                    matrices, (2N+8)-point and Loop's (N+6)-point (``patch``), the regular Loop
-                   patch (quartic box spline) in Bezier form (``box_spline``), a modeller's polygon
+                   patch (quartic box spline) in Bezier form (``box_spline``), a dual quad scheme's regular
+                   patch derived from its corner rule as a piecewise quadratic on the four-direction mesh
+                   (Midedge: the Zwart-Powell box spline, ``four_direction``), a modeller's polygon
                    mesh validated with its 1-rings and extraordinary vertices (``meshfile``), the
                    checks of its faces in linear time, strict or lenient (``mesh_topology``), read
                    and written as OBJ, OFF and PLY (``meshformats``; OBJ with OpenSubdiv's tags,
@@ -162,7 +164,8 @@ nothing else.
                    test found (``sector_injectivity``); BLZ's subdominant eigenvectors as Fourier modes for every k
                    (``fourier_modes``) and the map from them on a few faces per k (``fourier_map``); for
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
-                   part is the biquadratic B-spline (``c1_dual``) and the route read from the scheme's model, or
+                   part is the biquadratic B-spline (``c1_dual``) or a piecewise quadratic on the four-direction
+                   mesh (Midedge, ``c1_four_direction``) and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
                    map at one valence, ``zoo_characteristic``), Zorin's test where no spline patch exists (a vertex
                    of the triangle lattice, over the steps that refine it by 1/a: the modified butterfly, a = 2;

@@ -49,7 +49,7 @@ from symdecomp.errors import InvalidInputError, InvalidMeshError
 from symdecomp.verify.bezier import certify_sign, curve_angle, jacobian_net
 
 __all__ = ["DualNeighbourhood", "RingPatch", "RingCertificate", "vertex_grid", "ring_patches", "biquadratic_to_bicubic",
-           "certify_ring"]
+           "control_ball", "winding_of", "certify_ring"]
 
 #: A quadratic B-spline span to its cubic Bezier points: B-spline to quadratic Bezier, then raised by one degree.
 _RAISE = ((3, 3, 0), (1, 5, 0), (0, 5, 1), (0, 3, 3))
@@ -160,7 +160,7 @@ def biquadratic_to_bicubic(values: Sequence[Sequence[Any]]) -> list[list[Any]]:
     return [[sum((_RAISE[k][b] * rows[i][b] for b in range(3)), 0 * values[0][0]) / d for k in range(4)] for i in range(4)]
 
 
-def _ball(value: Any, vertex: Any) -> flint.acb:
+def control_ball(value: Any, vertex: Any) -> flint.acb:
     """A control point as a complex ball: an ``acb``, or a pair ``(x, y)`` of exact rationals or ``arb`` balls."""
     if isinstance(value, flint.acb):
         return value
@@ -204,7 +204,8 @@ class RingCertificate:
     where: str | None = None
 
 
-def _winding(angle: flint.arb | None) -> int | None:
+def winding_of(angle: flint.arb | None) -> int | None:
+    """The winding number whose ``2 pi`` multiple is the swept ``angle``, if the ball holds one integer (else ``None``)."""
     if angle is None:
         return None
     w = angle / (2 * flint.arb.pi())
@@ -219,7 +220,7 @@ def certify_ring(mesh: DualNeighbourhood, points: Mapping[Any, Any], *, max_dept
     angle: flint.arb | None = flint.arb(0)
     for patch in patches:
         try:
-            values = [[_ball(points[v], v) for v in row] for row in patch.grid]
+            values = [[control_ball(points[v], v) for v in row] for row in patch.grid]
         except KeyError as e:
             raise InvalidMeshError(f"points: no control point for vertex {e.args[0]!r:.20}") from None
         net = biquadratic_to_bicubic(values)
@@ -229,7 +230,7 @@ def certify_ring(mesh: DualNeighbourhood, points: Mapping[Any, Any], *, max_dept
             piece = curve_angle(_SIDES[side](net))
             angle = None if angle is None or piece is None else angle + piece
     sign = certify_sign(nets, max_depth)
-    winding = _winding(angle)
+    winding = winding_of(angle)
     if sign.status in ("changes", "undecided"):
         where = None
         if sign.where is not None:

@@ -12,8 +12,12 @@ The route is decided by the scheme's model (:class:`~symdecomp.schemes.stencils.
   J. Numer. Anal. 37(5), 2000: bounds on the characteristic map's control net and its differences under refinement;
   :mod:`symdecomp.verify.c1_zorin`), per valence; its bounds are written for triangles, and a scheme on another
   lattice is ``undecided`` with the fact that stopped it;
-* any other scheme (sqrt(3)'s rotating steps; Midedge, dual but not the biquadratic B-spline's regular rule):
-  ``undecided``, naming what has no test here.
+* a dual scheme whose regular corner rule has a refinable piecewise quadratic on the four-direction mesh (Midedge:
+  the Zwart-Powell box spline, derived by :func:`~symdecomp.schemes.four_direction.four_direction_patch`): the same
+  test over that patch's triangles (:mod:`symdecomp.verify.c1_four_direction`). Its translates are linearly
+  dependent, so an eigenvector of the matrix may be the zero function: a spectrum that fails Reif's conditions is
+  then ``undecided`` (the condition is sufficient, not necessary), never ``not C1``;
+* any other scheme (sqrt(3)'s rotating steps): ``undecided``, naming what has no test here.
 
 :func:`c1_dual_test` takes what the zoo's engine computes at valence ``n`` (:class:`ZooNeighbourhood`: the explicit
 local mesh with orbit labels, the characteristic map's control points from the subdominant eigenvectors, and the
@@ -33,16 +37,18 @@ import sympy as sp
 from symdecomp.analysis.display import NotebookDisplay
 from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.errors import InvalidSchemeError, UnavailableError
+from symdecomp.schemes.four_direction import FourDirectionPatch, four_direction_patch
 from symdecomp.schemes.lattice import lattice
 from symdecomp.schemes.stencils import J, M, N, StencilScheme
 from symdecomp.schemes.topology import topology_of
 from symdecomp.validate import check_bits, check_depth
 from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify_ring
+from symdecomp.verify.c1_four_direction import FOUR_DIRECTION_METHOD, certify_four_direction_ring
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["DUAL_METHOD", "NO_METHOD", "ZORIN_CENTRE", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
-           "corner_weights", "spline_route", "zorin_route", "c1_dual_test", "c1_zoo"]
+           "corner_weights", "spline_route", "four_direction_route", "zorin_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
 DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-spline patches (the vertices one face from "
@@ -51,8 +57,8 @@ DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-sp
 
 #: The method line of a scheme that neither test applies to (its verdicts are ``undecided``, each with the reason).
 NO_METHOD = ("none applies: Reif's test needs a spline patch this package evaluates (a dual quad scheme whose regular part is "
-             "the biquadratic B-spline), and Zorin's test, which needs none, is written for a net around a vertex of the "
-             "triangle lattice")
+             "the biquadratic B-spline or a C1 piecewise quadratic on the four-direction mesh), and Zorin's test, which "
+             "needs none, is written for a net around a vertex of the triangle lattice")
 
 #: The centre Zorin's test (:mod:`symdecomp.verify.c1_zorin`) is written for: a vertex (its net is sector 0 of a
 #: triangle lattice around it, refined by the steps that return the lattice to itself: one primal step, sqrt(3)'s two).
@@ -198,23 +204,50 @@ def _verdict(ring: RingCertificate, lam: Eigenvalue, gap: float | None) -> tuple
     return C1Verdict.UNDECIDED, f"winding number {ring.winding_number} does not match the Jacobian's sign {ring.jacobian_sign}"
 
 
-def c1_dual_test(neighbourhood: ZooNeighbourhood, *, scheme: str, n: int, max_depth: int = 6,
-                 prec: int = 64) -> ZooC1Result:
-    """Reif's test on a dual quad neighbourhood whose regular part is the biquadratic B-spline (module docstring)."""
+def c1_dual_test(neighbourhood: ZooNeighbourhood, *, scheme: str, n: int, max_depth: int = 6, prec: int = 64,
+                 patch: FourDirectionPatch | None = None) -> ZooC1Result:
+    """Reif's test on a dual quad neighbourhood whose regular part is the biquadratic B-spline, or the four-direction
+    ``patch`` when one is given (module docstring)."""
     max_depth, prec = check_depth(max_depth), check_bits(prec)
     spectral, lam = neighbourhood.spectral, neighbourhood.spectral.subdominant
     result = ZooC1Result(n=n, scheme=scheme, verdict=spectral.status, reason=spectral.reason, spectral=spectral,
-                         max_depth=max_depth, precision=prec)
+                         max_depth=max_depth, precision=prec, method=DUAL_METHOD if patch is None else FOUR_DIRECTION_METHOD)
+    if spectral.status is C1Verdict.NOT_C1 and patch is not None and patch.dependent_translates:
+        return replace(result, verdict=C1Verdict.UNDECIDED, reason=(
+            f"{spectral.reason}; Reif's spectral conditions fail on the matrix, but the regular patch's translates are "
+            "linearly dependent (the alternating net gives the zero function), so an eigenvector may give no function: "
+            "not shown to be not C1"))
     if spectral.status is not C1Verdict.C1:
         return result
     if lam is None:
         return replace(result, verdict=C1Verdict.UNDECIDED, reason="the spectral conditions name no subdominant eigenvalue")
     with flint.ctx.workprec(prec):
-        ring = certify_ring(neighbourhood.mesh, neighbourhood.points, max_depth=max_depth)
+        ring = (certify_ring(neighbourhood.mesh, neighbourhood.points, max_depth=max_depth) if patch is None else
+                certify_four_direction_ring(neighbourhood.mesh, neighbourhood.points, patch, max_depth=max_depth))
     verdict, reason = _verdict(ring, lam, spectral.gap)
     return replace(result, verdict=verdict, reason=reason, frequency=lam.frequency, jacobian_sign=ring.jacobian_sign,
                    jacobian_lower_bound=ring.jacobian_lower_bound, subdivision_depth=ring.depth,
                    winding_number=ring.winding_number)
+
+
+def four_direction_route(scheme: StencilScheme) -> FourDirectionPatch | str:
+    """The regular patch of a dual scheme on the four-direction mesh derived from its regular corner rule
+    (:func:`~symdecomp.schemes.four_direction.four_direction_patch`), or why there is none."""
+    if scheme.topology != "dual":
+        return f"its steps are {scheme.topology}, not dual"
+    weights = regular_corner_weights(scheme)
+    if isinstance(weights, str):
+        return f"its regular rule cannot be read as a corner rule ({weights})"
+    if not all(isinstance(w, sp.Rational) for w in weights):
+        return f"its regular corner weights ({', '.join(map(str, weights))}) are not all rational"
+    try:
+        patch = four_direction_patch(weights)
+    except InvalidSchemeError as exc:
+        return str(exc)
+    if not patch.c1:
+        return (f"corner rule ({', '.join(map(str, patch.corner_weights))}): its regular part, a piecewise quadratic on the "
+                "four-direction mesh, is not C1 (its gradient jumps across an edge), so Reif's test does not apply")
+    return patch
 
 
 def zorin_route(scheme: StencilScheme) -> bool:
@@ -237,10 +270,15 @@ def c1_zoo(scheme: StencilScheme, n: int, *, neighbourhood: Callable[[StencilSch
         from symdecomp.verify.c1_zorin import MAX_REFINEMENT, c1_zorin_test  # imported when this route runs
 
         return c1_zorin_test(scheme, n, max_depth=min(max(max_depth, 1), MAX_REFINEMENT))
+    patch = None
     if (reason := spline_route(scheme)) is not None:
-        return ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason=reason, max_depth=max_depth,
-                           precision=prec, method=NO_METHOD)
+        found = four_direction_route(scheme) if scheme.topology == "dual" else reason
+        if isinstance(found, str):
+            reason = reason if found == reason else f"{reason}; nor on the four-direction mesh: {found}"
+            return ZooC1Result(n=n, scheme=scheme.name, verdict=C1Verdict.UNDECIDED, reason=reason, max_depth=max_depth,
+                               precision=prec, method=NO_METHOD)
+        patch = found
     if neighbourhood is None:
         raise UnavailableError(f"c1 for {scheme.name!r} needs the zoo engine's neighbourhood at valence {n}, which is not "
                                "available in this installation")
-    return c1_dual_test(neighbourhood(scheme, n), scheme=scheme.name, n=n, max_depth=max_depth, prec=prec)
+    return c1_dual_test(neighbourhood(scheme, n), scheme=scheme.name, n=n, max_depth=max_depth, prec=prec, patch=patch)

@@ -53,3 +53,18 @@ def test_doo_sabin_at_the_regular_valence_is_a_linear_map():
 def test_no_map_where_the_spectral_conditions_fail_says_why():
     with pytest.raises(NotApplicableError, match=r"^n = 3: the subdominant eigenvalue 0.25 is not a real double eigenvalue"):
         zoo_map_curves(load_zoo("midedge"), 3)
+
+
+def test_midedge_draws_its_four_direction_patches_linear_at_the_regular_valence():
+    """At n = 4 the box spline reproduces linear functions: every iso-parameter line is straight; at n = 5 the inner
+    boundary (the ring's sides facing the pentagon) goes once around the origin."""
+    curves = zoo_map_curves(load_zoo("midedge"), 4)
+    assert curves["drawn"] == "the ring of piecewise quadratic patches on the four-direction mesh" and len(curves["lines"]) > 10
+    for z in curves["lines"]:
+        d = z - z[0]
+        assert np.abs((d * np.conj(d[-1])).imag).max() < 1e-12 * np.abs(d[-1]) ** 2
+    inner = zoo_map_curves(load_zoo("midedge"), 5)["inner"]
+    assert len(inner) == 10  # two sides per sector
+    sweeps = [np.angle(z[1:] / z[:-1]) for z in inner]  # each side turns one way around the origin (drawn either way)
+    assert all((np.sign(w) == np.sign(w[0])).all() for w in sweeps)
+    assert abs(sum(abs(w.sum()) for w in sweeps) / (2 * np.pi) - 1) < 1e-9  # the ten sides go round once

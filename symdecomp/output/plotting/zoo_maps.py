@@ -10,7 +10,11 @@ says why). What is drawn from them depends on the scheme's model, never on its n
   (:func:`~symdecomp.verify.c1_dual.ring_patches`), each as its bicubic Bezier form
   (:func:`~symdecomp.verify.c1_dual.biquadratic_to_bicubic`): iso-parameter lines, and the sides that face the
   centre n-gon as the ring's inner boundary;
-* otherwise (interpolatory, mid-edge, sqrt(3), a user's file) the control net on the neighbourhood one ring deeper than
+* where the regular part is a C1 piecewise quadratic on the four-direction mesh derived from the corner rule
+  (:func:`~symdecomp.verify.c1_zoo.four_direction_route`: mid-edge's Zwart-Powell box spline), the same ring with
+  each cell's four quadratic triangles (:func:`~symdecomp.verify.c1_four_direction.triangle_nets`): iso-parameter
+  lines across the cell, and the sides that face the centre n-gon;
+* otherwise (interpolatory, sqrt(3), a user's file) the control net on the neighbourhood one ring deeper than
   the smallest invariant one (each step loses what the local mesh cannot compute), refined :data:`REFINEMENTS` times by
   the scheme's own rules (:func:`~symdecomp.schemes.topology.refine_step`, a multiple of the steps that return the
   lattice): the refined net's faces joined to the centre (a local mesh's step also computes islands far out), and the
@@ -29,22 +33,26 @@ the control net refined 3 times by the scheme's rules
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 import sympy as sp
 
+from symdecomp.algebra.triangle_bezier import bernstein
 from symdecomp.analysis.zoo_matrix import MAX_DEPTH, ZooMatrix, zoo_matrix
 from symdecomp.analysis.zoo_spectrum import zoo_spectrum
 from symdecomp.errors import NotApplicableError
 from symdecomp.output.plotting.characteristic import bicubic_points
 from symdecomp.output.plotting.spectrum_chart import as_complex
+from symdecomp.schemes.four_direction import OFFSETS, FourDirectionPatch, cell_triangle
 from symdecomp.schemes.halfedge import HalfedgeMesh
 from symdecomp.schemes.stencils import StencilScheme
 from symdecomp.schemes.topology import refine_step, topology_of
 from symdecomp.validate import check_int, check_type, check_valence
 from symdecomp.verify.c1_dual import biquadratic_to_bicubic, ring_patches
-from symdecomp.verify.c1_zoo import spline_route
+from symdecomp.verify.c1_four_direction import triangle_nets
+from symdecomp.verify.c1_zoo import four_direction_route, spline_route
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.zoo_characteristic import characteristic_points, engine_neighbourhood, real_matrix, spectral_conditions
 
@@ -70,6 +78,8 @@ def zoo_map_curves(scheme: StencilScheme, n: int, *, samples: int = 5, refinemen
     refinements = check_int(refinements, "refinements", minimum=1, maximum=5)
     if spline_route(scheme) is None:
         return _patch_curves(scheme, n, check_int(samples, "samples", minimum=2, maximum=64))
+    if scheme.topology == "dual" and isinstance(patch := four_direction_route(scheme), FourDirectionPatch):
+        return _four_direction_curves(scheme, n, check_int(samples, "samples", minimum=2, maximum=64), patch)
     return _net_curves(scheme, n, refinements)
 
 
@@ -90,6 +100,32 @@ def _patch_curves(scheme: StencilScheme, n: int, samples: int) -> Curves:
             lines += [bicubic_points(z, np.array([g]), t)[0], bicubic_points(z, t, np.array([g]))[:, 0]]
         inner += [bicubic_points(z, *_side(side, t)).ravel() for side in patch.hole_sides]
     return {"lines": lines, "inner": inner, "rays": [], "drawn": "the ring of biquadratic B-spline patches"}
+
+
+#: A side of the cell (``u0``: ``u = -1/2``, as :class:`~symdecomp.verify.c1_dual.RingPatch` names it) at ``t``.
+_CELL_SIDES: dict[str, Callable[[float], tuple[float, float]]] = {
+    "u0": lambda t: (-0.5, t), "u1": lambda t: (0.5, t), "v0": lambda t: (t, -0.5), "v1": lambda t: (t, 0.5)}
+
+
+def _four_direction_curves(scheme: StencilScheme, n: int, samples: int, patch: FourDirectionPatch) -> Curves:
+    """The ring of four-direction patches the C1 test certifies (module docstring)."""
+    nb = engine_neighbourhood(scheme, n)
+    if nb.spectral.status is not C1Verdict.C1 or not nb.points:
+        raise _no_map(n, nb.spectral.reason)
+    t, grid = np.linspace(-0.5, 0.5, 4 * samples + 1), np.linspace(-0.5, 0.5, samples)
+    lines, inner = [], []
+    for ring_patch in ring_patches(nb.mesh):
+        values = {b: nb.points[ring_patch.grid[1 + b[0]][1 + b[1]]] for b in OFFSETS}
+        nets = [[as_complex(c) for c in net] for net in triangle_nets(patch, values)]
+
+        def at(x: float, y: float, nets: list[list[complex]] = nets) -> complex:
+            k, u, v = cell_triangle((x, y))
+            return complex(sum(c * w for c, w in zip(nets[k], bernstein(2, u, v))))
+
+        for g in grid:
+            lines += [np.array([at(g, s) for s in t]), np.array([at(s, g) for s in t])]
+        inner += [np.array([at(*_CELL_SIDES[side](s)) for s in t]) for side in ring_patch.hole_sides]
+    return {"lines": lines, "inner": inner, "rays": [], "drawn": "the ring of piecewise quadratic patches on the four-direction mesh"}
 
 
 def _net_curves(scheme: StencilScheme, n: int, refinements: int) -> Curves:

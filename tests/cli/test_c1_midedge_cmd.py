@@ -1,0 +1,47 @@
+"""``symdecomp c1 --scheme midedge`` and a user's Midedge file whose corner rule is perturbed in pentagons only."""
+
+import json
+import math
+
+import pytest
+
+from symdecomp.cli import main
+
+VARIANT = """name = "midedge-variant"
+mesh = "quad"
+topology = "dual"
+steps = 1
+interpolatory = false
+source = "Midedge with the own corner's weight a in a pentagon"
+
+[[corner]]
+terms = [
+  {{walk = "", weight = "1/2 + KroneckerDelta(m, 5)*({a} - 1/2)"}},
+  {{walk = "next", weight = "1/4 - KroneckerDelta(m, 5)*({a} - 1/2)/2"}},
+  {{walk = "prev", weight = "1/4 - KroneckerDelta(m, 5)*({a} - 1/2)/2"}},
+]
+"""
+
+
+def test_midedge_is_certified_from_4_and_undecided_at_3(capsys):
+    assert main(["c1", "--scheme", "midedge", "--n", "3:6", "--json", "--quiet"]) == 1
+    rows = json.loads(capsys.readouterr().out)["rows"]
+    assert [(r["n"], r["verdict"]) for r in rows] == [(3, "undecided"), (4, "c1"), (5, "c1"), (6, "c1")]
+    for r in rows[1:]:  # 1/2 + cos(2 pi/n)/2 at frequency 1, a regular ring winding once
+        assert abs(r["lambda"] - (1 + math.cos(2 * math.pi / r["n"])) / 2) < 1e-12 and r["frequency"] == 1
+        assert r["winding_number"] == r["jacobian_sign"] == 1 and r["jacobian_lower_bound"] > 0
+    assert rows[0]["reason"].startswith("the subdominant eigenvalue 0.25 is not a real double eigenvalue")
+
+
+@pytest.mark.parametrize("a, verdict", [("3/4", "c1"), ("9/10", "not-c1")])
+def test_a_perturbed_pentagon_rule_changes_only_valence_5(a, verdict, tmp_path, capsys):
+    path = tmp_path / "variant.toml"
+    path.write_text(VARIANT.format(a=a))
+    assert main(["c1", "--scheme", str(path), "--n", "4:6", "--json", "--quiet"]) == (0 if verdict == "c1" else 1)
+    rows = {r["n"]: r for r in json.loads(capsys.readouterr().out)["rows"]}
+    assert rows[4]["verdict"] == rows[6]["verdict"] == "c1" and abs(rows[6]["lambda"] - 0.75) < 1e-12
+    assert rows[5]["verdict"] == verdict
+    if verdict == "c1":  # the pentagon's circulant: a + (1 - a) cos(2 pi/5)
+        assert abs(rows[5]["lambda"] - (0.75 + 0.25 * math.cos(2 * math.pi / 5))) < 1e-12
+    else:
+        assert rows[5]["reason"].startswith("the Jacobian of the characteristic map changes sign (the patch of vertex ")

@@ -155,12 +155,12 @@ def regime_every_n(scheme: Scheme, last: int = 16) -> RegimeEveryN:
         if regime is CurvatureRegime.NOT_APPLICABLE:
             raise NotApplicableError(f"scheme {scheme.name!r}: the curvature regime does not apply at n = {k}")
         if regime is CurvatureRegime.UNBOUNDED and k > lo and (step := unbounded_from(scheme, k)) is not None:
-            certified = EveryNStep(f"the regime at each n = {lo}..{k - 1}, certified (Arb balls; ties exact): "
+            certified = EveryNStep("the regime at each valence, certified (Arb balls; ties exact): "
                                    + ", ".join(f"{m}: {r}" for m, r in rows), "verified", (lo, k - 1))
             cause = hyperbolic_cause_from(scheme, k)  # which part makes it unbounded, where that is shown for every n
             return RegimeEveryN(scheme.name, tuple(rows), k, (certified, step) + ((cause,) if cause else ()))
         rows.append((k, regime.value))
-    certified = EveryNStep(f"the regime at each n = {lo}..{last}, certified: " + ", ".join(f"{m}: {r}" for m, r in rows),
+    certified = EveryNStep("the regime at each valence, certified: " + ", ".join(f"{m}: {r}" for m, r in rows),
                            "verified", (lo, last))
     return RegimeEveryN(scheme.name, tuple(rows), None, (certified, EveryNStep(
         f"no argument for every n beyond the certified valences (the unbounded regime is not shown from any n <= {last} on)", "open",

@@ -263,6 +263,8 @@ class CyclotomicFunction:
     of the symbol (FLINT polynomials), the rest a tree of field operations. ``f(x, field)`` is
     ``cyclotomic_value(expr, {symbol: x}, field=field)`` (``x`` an int or Fraction); raises ``ValueError`` when the
     expression is not of that kind (when read), or a term is not in ``field`` or its argument not defined at ``x``.
+    Symbols ``given`` stand for elements of the field passed after it, ``f(x, field, *values)`` (``omega`` as a root of
+    unity, say).
 
     >>> from sympy import cos, pi, Symbol
     >>> m = Symbol("m")
@@ -271,10 +273,10 @@ class CyclotomicFunction:
     True
     """
 
-    def __init__(self, expr, symbol: sp.Symbol):
+    def __init__(self, expr, symbol: sp.Symbol, given: tuple[sp.Symbol, ...] = ()):
         expr = sp.sympify(expr, strict=True)
         trig = sorted(expr.atoms(sp.cos, sp.sin, sp.exp), key=sp.default_sort_key)
-        leaves: dict = {symbol: 0}
+        leaves: dict = {symbol: 0, **{g: 1 + i for i, g in enumerate(given)}}
         self._terms = []  # (kind, numerator, denominator) of each term's argument over pi, a rational function of symbol
         for t in trig:
             arg = t.args[0] if not isinstance(t, sp.exp) else t.args[0] / sp.I
@@ -283,9 +285,9 @@ class CyclotomicFunction:
             leaves[t] = len(leaves)
         self._tree = _tree(expr, leaves)
 
-    def __call__(self, x, field: CyclotomicField) -> Cyclotomic:
+    def __call__(self, x, field: CyclotomicField, *given: Cyclotomic) -> Cyclotomic:
         at = flint.fmpq(x.numerator, x.denominator) if isinstance(x, Fraction) else flint.fmpq(int(x))
-        env = [field(to_fraction(at))]
+        env = [field(to_fraction(at)), *given]
         for kind, num, den in self._terms:
             d = den(at)
             if d == 0:

@@ -54,7 +54,7 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
-from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
+from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, CyclotomicFunction, cyclotomic_value, to_acb
 from symdecomp.analysis.characteristic import (
     check_applicable,
     frequency_block,
@@ -169,14 +169,34 @@ def quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
     return (a, b) if abs(a).mid() >= abs(b).mid() else (b, a)
 
 
+@lru_cache(maxsize=512)
+def _entry_function(expr: sp.Expr) -> CyclotomicFunction | None:
+    try:
+        return CyclotomicFunction(expr, N, (OMEGA,))
+    except ValueError:
+        return None
+
+
+@lru_cache(maxsize=64)
 def _field(n: int) -> CyclotomicField:
     """``Q(zeta_2n)`` (``= Q(zeta_n)`` for odd ``n``): holds ``omega_n^j`` and ``cos(2 pi k/n)``."""
     return CyclotomicField(2 * n)
 
 
 def exact_entry(expr, n: int, j: int = 0) -> Cyclotomic | None:
-    """An expression in ``n``, ``omega`` and ``cos``/``sin`` of rational multiples of pi at ``n``, ``omega = omega_n^j``."""
+    """An expression in ``n``, ``omega`` and ``cos``/``sin`` of rational multiples of pi at ``n``, ``omega = omega_n^j``.
+
+    Read once per expression into a :class:`~symdecomp.algebra.cyclotomic.CyclotomicFunction` of ``n`` with ``omega``
+    given as ``zeta_2n^(2j)`` (the same element of the field, without sympy at each valence and frequency); an
+    expression it cannot read or evaluate goes through :func:`~symdecomp.algebra.cyclotomic.cyclotomic_value`.
+    """
     expr = sp.sympify(expr, strict=True)
+    function, field = _entry_function(expr), _field(n)
+    if function is not None:
+        try:
+            return function(n, field, field.zeta(2 * j))
+        except (ValueError, ZeroDivisionError):
+            pass
     if expr.has(OMEGA):
         expr = expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(j, n))})
     try:

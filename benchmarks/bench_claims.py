@@ -15,6 +15,7 @@ Baseline, measured in the same run: ``claims --jobs 1`` (one process, every clai
 runs must print the same rows (label, status, scope, evidence, ...), byte for byte.
 
     python benchmarks/bench_claims.py
+    python benchmarks/bench_claims.py --against ../before --repeat 3   # the code before, run alternately with this one
 """
 
 from __future__ import annotations
@@ -29,13 +30,14 @@ import time
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 
-def _run(*argv: str) -> tuple[float, float, str]:
+def _run(*argv: str, root: str = ROOT) -> tuple[float, float, str]:
     """Wall-clock seconds, CPU seconds (user + system, the workers included) and the JSON output of
-    ``python -m symdecomp claims --json ...`` in a fresh process."""
+    ``python -m symdecomp claims --json ...`` in a fresh process, with the package of the checkout ``root``."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    done = subprocess.run([sys.executable, "-m", "symdecomp", "claims", "--json", *argv], cwd=ROOT, capture_output=True,
-                          text=True)
+    env = {**os.environ, "PYTHONPATH": os.path.abspath(root)}
+    done = subprocess.run([sys.executable, "-m", "symdecomp", "claims", "--json", *argv], cwd=root, capture_output=True,
+                          text=True, env=env)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
@@ -61,10 +63,41 @@ def targets(quick: bool = False) -> list[dict]:
              "baseline_seconds": base, "baseline_cpu_seconds": base_cpu, "load": os.getloadavg()[0]}]
 
 
+def side_by_side(before: str, repeat: int, schemes: tuple[str, ...] = ("catmull-clark", "loop")) -> list[dict]:
+    """``claims`` (the pool) of the checkout ``before`` and of this one, run alternately ``repeat`` times per scheme (so
+    that both meet the same load), with the rows compared: the median wall-clock and CPU seconds of each."""
+    import statistics
+
+    rows = []
+    for scheme in schemes:
+        runs: dict[str, list[tuple[float, float]]] = {"before": [], "after": []}
+        for _ in range(repeat):
+            for which, root in (("before", before), ("after", ROOT)):
+                wall, cpu, out = _run("--scheme", scheme, root=root)
+                runs[which].append((wall, cpu))
+                if which == "before":
+                    expected = _verdicts(out)
+                elif _verdicts(out) != expected:
+                    raise RuntimeError(f"claims --scheme {scheme}: this checkout's rows differ from those before")
+        rows.append({"scheme": scheme, **{f"{which}_{what}": statistics.median(x[i] for x in runs[which])
+                                          for which in runs for i, what in enumerate(("seconds", "cpu_seconds"))}})
+    return rows
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="section 5 only, for a smoke run")
+    parser.add_argument("--against", metavar="CHECKOUT", help="a checkout of the code before (a git worktree of main, "
+                        "say): its claims and this one's, run alternately, the median of each beside the other")
+    parser.add_argument("--repeat", type=int, default=3, help="runs of each with --against (default 3)")
     args = parser.parse_args(argv)
+    if args.against:
+        for row in side_by_side(args.against, args.repeat):
+            print(f"claims --scheme {row['scheme']}: before {row['before_seconds']:.2f} s wall, {row['before_cpu_seconds']:.2f} "
+                  f"s CPU; after {row['after_seconds']:.2f} s wall, {row['after_cpu_seconds']:.2f} s CPU (medians of "
+                  f"{args.repeat}, alternately); load average {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs; the same "
+                  "rows, byte for byte")
+        return 0
     for row in targets(args.quick):
         limit = row["limit_seconds"]
         print(f"{row['target']}: {row['seconds']:.2f} s wall, {row['cpu_seconds']:.2f} s CPU"

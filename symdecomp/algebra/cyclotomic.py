@@ -25,8 +25,11 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq, to_fraction
 from symdecomp.errors import InvalidInputError, InvalidTypeError
+from symdecomp.symbols import n as VALENCE
+from symdecomp.symbols import omega as OMEGA
 
-__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "CyclotomicFunction", "matrix_rank", "to_acb"]
+__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "CyclotomicFunction", "exact_entry", "valence_field", "matrix_rank",
+           "to_acb"]
 
 
 @cache
@@ -329,6 +332,42 @@ def _tree(e: sp.Expr, leaves: dict):
         base, k = parts[0], int(e.exp)
         return lambda env, K: base(env, K) ** k
     raise ValueError(f"{e} is not a rational function of roots of unity")
+
+
+@lru_cache(maxsize=512)
+def _entry_function(expr: sp.Expr) -> CyclotomicFunction | None:
+    try:
+        return CyclotomicFunction(expr, VALENCE, (OMEGA,))
+    except ValueError:
+        return None
+
+
+@lru_cache(maxsize=64)
+def valence_field(n: int) -> CyclotomicField:
+    """``Q(zeta_2n)`` (``= Q(zeta_n)`` for odd ``n``): holds ``omega_n^j`` and ``cos(2 pi k/n)``."""
+    return CyclotomicField(2 * n)
+
+
+def exact_entry(expr, n: int, j: int = 0) -> Cyclotomic | None:
+    """An expression in ``n``, ``omega`` and ``cos``/``sin`` of rational multiples of pi at ``n``, ``omega = omega_n^j``.
+
+    Read once per expression into a :class:`CyclotomicFunction` of ``n`` with ``omega``
+    given as ``zeta_2n^(2j)`` (the same element of the field, without sympy at each valence and frequency); an
+    expression it cannot read or evaluate goes through :func:`cyclotomic_value`.
+    """
+    expr = sp.sympify(expr, strict=True)
+    function, field = _entry_function(expr), valence_field(n)
+    if function is not None:
+        try:
+            return function(n, field, field.zeta(2 * j))
+        except (ValueError, ZeroDivisionError):
+            pass
+    if expr.has(OMEGA):
+        expr = expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(j, n))})
+    try:
+        return cyclotomic_value(expr, {VALENCE: n}, valence_field(n))
+    except ValueError:
+        return None
 
 
 def matrix_rank(rows: list[list[Cyclotomic]]) -> int:

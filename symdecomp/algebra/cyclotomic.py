@@ -28,7 +28,7 @@ from symdecomp.errors import InvalidInputError, InvalidTypeError
 from symdecomp.symbols import n as VALENCE
 from symdecomp.symbols import omega as OMEGA
 
-__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "CyclotomicFunction", "exact_entry", "valence_field", "matrix_rank",
+__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "CyclotomicFunction", "exact_entry", "matrix_rank",
            "to_acb"]
 
 
@@ -343,7 +343,7 @@ def _entry_function(expr: sp.Expr) -> CyclotomicFunction | None:
 
 
 @lru_cache(maxsize=64)
-def valence_field(n: int) -> CyclotomicField:
+def _valence_field(n: int) -> CyclotomicField:
     """``Q(zeta_2n)`` (``= Q(zeta_n)`` for odd ``n``): holds ``omega_n^j`` and ``cos(2 pi k/n)``."""
     return CyclotomicField(2 * n)
 
@@ -356,7 +356,7 @@ def exact_entry(expr, n: int, j: int = 0) -> Cyclotomic | None:
     expression it cannot read or evaluate goes through :func:`cyclotomic_value`.
     """
     expr = sp.sympify(expr, strict=True)
-    function, field = _entry_function(expr), valence_field(n)
+    function, field = _entry_function(expr), _valence_field(n)
     if function is not None:
         try:
             return function(n, field, field.zeta(2 * j))
@@ -365,7 +365,7 @@ def exact_entry(expr, n: int, j: int = 0) -> Cyclotomic | None:
     if expr.has(OMEGA):
         expr = expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(j, n))})
     try:
-        return cyclotomic_value(expr, {VALENCE: n}, valence_field(n))
+        return cyclotomic_value(expr, {VALENCE: n}, _valence_field(n))
     except ValueError:
         return None
 

@@ -193,7 +193,7 @@ def _charpoly(M: list[list[Cyclotomic]]) -> list[Cyclotomic]:
 def _frequency_zero_quotient(scheme: Scheme, n: int) -> tuple[list, list | None]:
     """``(p, q)``: the characteristic polynomial of the frequency-0 1-ring block (Eq. 43 on quads) and ``p / (x - 1)``.
 
-    Coefficient lists as in :func:`_charpoly`, exact in :func:`~symdecomp.algebra.cyclotomic.valence_field`; ``q`` is ``None`` if 1 is not a root.
+    Coefficient lists as in :func:`_charpoly`, exact in ``Q(zeta_2n)``; ``q`` is ``None`` if 1 is not a root.
     """
     E0 = one_ring_matrices(scheme)[1]
     entries = [[exact_entry(x, n) for x in row] for row in E0.tolist()]
@@ -285,7 +285,7 @@ def _gap_bounds(scheme: Scheme, n: int, outer: list, others: list[Eigenvalue]) -
 def exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | None:
     """``(c_1, .., c_k)``: the block of frequency ``j`` has ``det(x - M_j) = x^k + c_1 x^(k-1) + ..``, exactly.
 
-    The ``c_i`` lie in the cyclotomic field :func:`~symdecomp.algebra.cyclotomic.valence_field` (exact: an element is 0 iff its
+    The ``c_i`` lie in the cyclotomic field ``Q(zeta_2n)`` (exact: an element is 0 iff its
     reduced polynomial is). At ``j = 0`` the block is the quotient of the frequency-0 polynomial
     by ``x - 1``. ``None`` when a coefficient is not in the field.
     """

@@ -11,6 +11,22 @@ The figure is the wall-clock time of the command in a fresh process (start-up in
 the machine runs (``run.py`` prints the load); the CPU seconds (user + system of the command and its workers) are
 printed beside it, a figure the load changes much less.
 
+Where the CPU goes (``claims --jobs 1``'s order, one process, CPU seconds at load 5 to 6; before -> after the cuts of
+the second pass): C1 (Reif's test) 1.61 -> 1.24 (the ring layout's 3-ring blocks, checked against the refinement at two
+more valences with dense sympy matrices, now entry by entry and sparse; the exact 1-ring entries at each valence and
+frequency, now read once per expression into a ``CyclotomicFunction``); Curvature regime: Catmull-Clark 1.12 -> 0.93
+(the certified second-order structure per valence, the same exact entries; the hyperbolic cause's sympy ``cancel``);
+Eq. 51 0.91 -> 0.44 (the displayed closed form at n = 3..6, now reduced in FLINT as ``(a + b r)/d`` with ``r^2 = D``;
+left: the exact check against the matrix to n = 16); Remark 5.2 0.81 -> 0.29 (the elliptic components, sympy's
+``simplify`` of quotients of radicals, now exact in ``Q(sqrt d)``); Shape 0.67 (certified curvature per valence, Arb);
+Section 3: Catmull-Clark support 0.64 (exact mesh refinement in Fractions); Eq. 1 0.58 (exact polygon decompositions
+written to sympy); Eq. 50 0.55 and Eq. 46 0.53 (sympy's symbolic CB-matrix and block-matrix identities); 1-ring
+suffices 0.52 -> 0.39 (the K-ring blocks). In all 16.4 -> 14.9 CPU seconds in one process. Side by side with the code
+before (``--against``, medians of 3 alternated runs, at load 6 to 8 from other jobs, so the wall-clock figures are far
+above the target and say little): Catmull-Clark 19.4 -> 17.3 CPU seconds (45.8 -> 43.3 s wall), Loop 11.2 -> 10.3 (33.1
+-> 25.0 s wall), the same rows byte for byte. On an idle two-core machine the pool's wall time is about the start-up
+(1.2 s) plus half the CPU.
+
 Baseline, measured in the same run: ``claims --jobs 1`` (one process, every claim in turn, as before the pool). Both
 runs must print the same rows (label, status, scope, evidence, ...), byte for byte.
 

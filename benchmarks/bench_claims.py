@@ -24,8 +24,8 @@ written to sympy); Eq. 50 0.55 and Eq. 46 0.53 (sympy's symbolic CB-matrix and b
 suffices 0.52 -> 0.39 (the K-ring blocks). In all 16.4 -> 14.9 CPU seconds in one process. Side by side with the code
 before (``--against``, medians of 3 alternated runs, at load 6 to 8 from other jobs, so the wall-clock figures are far
 above the target and say little): Catmull-Clark 19.4 -> 17.3 CPU seconds (45.8 -> 43.3 s wall), Loop 11.2 -> 10.3 (33.1
--> 25.0 s wall), the same rows byte for byte. On an idle two-core machine the pool's wall time is about the start-up
-(1.2 s) plus half the CPU.
+-> 25.0 s wall), the same rows byte for byte. On an idle two-core machine the pool's wall time should be about the start-up
+(1.2 s) plus half the CPU (an estimate: no idle machine was at hand in this pass).
 
 Baseline, measured in the same run: ``claims --jobs 1`` (one process, every claim in turn, as before the pool). Both
 runs must print the same rows (label, status, scope, evidence, ...), byte for byte.

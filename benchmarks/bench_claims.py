@@ -11,10 +11,27 @@ The figure is the wall-clock time of the command in a fresh process (start-up in
 the machine runs (``run.py`` prints the load); the CPU seconds (user + system of the command and its workers) are
 printed beside it, a figure the load changes much less.
 
+Where the CPU goes (``claims --jobs 1``'s order, one process, CPU seconds at load 5 to 6; before -> after the cuts of
+the second pass): C1 (Reif's test) 1.61 -> 1.24 (the ring layout's 3-ring blocks, checked against the refinement at two
+more valences with dense sympy matrices, now entry by entry and sparse; the exact 1-ring entries at each valence and
+frequency, now read once per expression into a ``CyclotomicFunction``); Curvature regime: Catmull-Clark 1.12 -> 0.93
+(the certified second-order structure per valence, the same exact entries; the hyperbolic cause's sympy ``cancel``);
+Eq. 51 0.91 -> 0.44 (the displayed closed form at n = 3..6, now reduced in FLINT as ``(a + b r)/d`` with ``r^2 = D``;
+left: the exact check against the matrix to n = 16); Remark 5.2 0.81 -> 0.29 (the elliptic components, sympy's
+``simplify`` of quotients of radicals, now exact in ``Q(sqrt d)``); Shape 0.67 (certified curvature per valence, Arb);
+Section 3: Catmull-Clark support 0.64 (exact mesh refinement in Fractions); Eq. 1 0.58 (exact polygon decompositions
+written to sympy); Eq. 50 0.55 and Eq. 46 0.53 (sympy's symbolic CB-matrix and block-matrix identities); 1-ring
+suffices 0.52 -> 0.39 (the K-ring blocks). In all 16.4 -> 14.9 CPU seconds in one process. Side by side with the code
+before (``--against``, medians of 3 alternated runs, at load 6 to 8 from other jobs, so the wall-clock figures are far
+above the target and say little): Catmull-Clark 19.4 -> 17.3 CPU seconds (45.8 -> 43.3 s wall), Loop 11.2 -> 10.3 (33.1
+-> 25.0 s wall), the same rows byte for byte. On an idle two-core machine the pool's wall time should be about the start-up
+(1.2 s) plus half the CPU (an estimate: no idle machine was at hand in this pass).
+
 Baseline, measured in the same run: ``claims --jobs 1`` (one process, every claim in turn, as before the pool). Both
 runs must print the same rows (label, status, scope, evidence, ...), byte for byte.
 
     python benchmarks/bench_claims.py
+    python benchmarks/bench_claims.py --against ../before --repeat 3   # the code before, run alternately with this one
 """
 
 from __future__ import annotations
@@ -29,13 +46,14 @@ import time
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 
-def _run(*argv: str) -> tuple[float, float, str]:
+def _run(*argv: str, root: str = ROOT) -> tuple[float, float, str]:
     """Wall-clock seconds, CPU seconds (user + system, the workers included) and the JSON output of
-    ``python -m symdecomp claims --json ...`` in a fresh process."""
+    ``python -m symdecomp claims --json ...`` in a fresh process, with the package of the checkout ``root``."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    done = subprocess.run([sys.executable, "-m", "symdecomp", "claims", "--json", *argv], cwd=ROOT, capture_output=True,
-                          text=True)
+    env = {**os.environ, "PYTHONPATH": os.path.abspath(root)}
+    done = subprocess.run([sys.executable, "-m", "symdecomp", "claims", "--json", *argv], cwd=root, capture_output=True,
+                          text=True, env=env)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
@@ -61,10 +79,41 @@ def targets(quick: bool = False) -> list[dict]:
              "baseline_seconds": base, "baseline_cpu_seconds": base_cpu, "load": os.getloadavg()[0]}]
 
 
+def side_by_side(before: str, repeat: int, schemes: tuple[str, ...] = ("catmull-clark", "loop")) -> list[dict]:
+    """``claims`` (the pool) of the checkout ``before`` and of this one, run alternately ``repeat`` times per scheme (so
+    that both meet the same load), with the rows compared: the median wall-clock and CPU seconds of each."""
+    import statistics
+
+    rows = []
+    for scheme in schemes:
+        runs: dict[str, list[tuple[float, float]]] = {"before": [], "after": []}
+        for _ in range(repeat):
+            for which, root in (("before", before), ("after", ROOT)):
+                wall, cpu, out = _run("--scheme", scheme, root=root)
+                runs[which].append((wall, cpu))
+                if which == "before":
+                    expected = _verdicts(out)
+                elif _verdicts(out) != expected:
+                    raise RuntimeError(f"claims --scheme {scheme}: this checkout's rows differ from those before")
+        rows.append({"scheme": scheme, **{f"{which}_{what}": statistics.median(x[i] for x in runs[which])
+                                          for which in runs for i, what in enumerate(("seconds", "cpu_seconds"))}})
+    return rows
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="section 5 only, for a smoke run")
+    parser.add_argument("--against", metavar="CHECKOUT", help="a checkout of the code before (a git worktree of main, "
+                        "say): its claims and this one's, run alternately, the median of each beside the other")
+    parser.add_argument("--repeat", type=int, default=3, help="runs of each with --against (default 3)")
     args = parser.parse_args(argv)
+    if args.against:
+        for row in side_by_side(args.against, args.repeat):
+            print(f"claims --scheme {row['scheme']}: before {row['before_seconds']:.2f} s wall, {row['before_cpu_seconds']:.2f} "
+                  f"s CPU; after {row['after_seconds']:.2f} s wall, {row['after_cpu_seconds']:.2f} s CPU (medians of "
+                  f"{args.repeat}, alternately); load average {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs; the same "
+                  "rows, byte for byte")
+        return 0
     for row in targets(args.quick):
         limit = row["limit_seconds"]
         print(f"{row['target']}: {row['seconds']:.2f} s wall, {row['cpu_seconds']:.2f} s CPU"

@@ -25,8 +25,11 @@ import sympy as sp
 
 from symdecomp.algebra.numbers import to_fmpq, to_fraction
 from symdecomp.errors import InvalidInputError, InvalidTypeError
+from symdecomp.symbols import n as VALENCE
+from symdecomp.symbols import omega as OMEGA
 
-__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "CyclotomicFunction", "matrix_rank", "to_acb"]
+__all__ = ["CyclotomicField", "Cyclotomic", "cyclotomic_value", "CyclotomicFunction", "exact_entry", "matrix_rank",
+           "to_acb"]
 
 
 @cache
@@ -263,6 +266,8 @@ class CyclotomicFunction:
     of the symbol (FLINT polynomials), the rest a tree of field operations. ``f(x, field)`` is
     ``cyclotomic_value(expr, {symbol: x}, field=field)`` (``x`` an int or Fraction); raises ``ValueError`` when the
     expression is not of that kind (when read), or a term is not in ``field`` or its argument not defined at ``x``.
+    Symbols ``given`` stand for elements of the field passed after it, ``f(x, field, *values)`` (``omega`` as a root of
+    unity, say).
 
     >>> from sympy import cos, pi, Symbol
     >>> m = Symbol("m")
@@ -271,10 +276,10 @@ class CyclotomicFunction:
     True
     """
 
-    def __init__(self, expr, symbol: sp.Symbol):
+    def __init__(self, expr, symbol: sp.Symbol, given: tuple[sp.Symbol, ...] = ()):
         expr = sp.sympify(expr, strict=True)
         trig = sorted(expr.atoms(sp.cos, sp.sin, sp.exp), key=sp.default_sort_key)
-        leaves: dict = {symbol: 0}
+        leaves: dict = {symbol: 0, **{g: 1 + i for i, g in enumerate(given)}}
         self._terms = []  # (kind, numerator, denominator) of each term's argument over pi, a rational function of symbol
         for t in trig:
             arg = t.args[0] if not isinstance(t, sp.exp) else t.args[0] / sp.I
@@ -283,9 +288,9 @@ class CyclotomicFunction:
             leaves[t] = len(leaves)
         self._tree = _tree(expr, leaves)
 
-    def __call__(self, x, field: CyclotomicField) -> Cyclotomic:
+    def __call__(self, x, field: CyclotomicField, *given: Cyclotomic) -> Cyclotomic:
         at = flint.fmpq(x.numerator, x.denominator) if isinstance(x, Fraction) else flint.fmpq(int(x))
-        env = [field(to_fraction(at))]
+        env = [field(to_fraction(at)), *given]
         for kind, num, den in self._terms:
             d = den(at)
             if d == 0:
@@ -327,6 +332,42 @@ def _tree(e: sp.Expr, leaves: dict):
         base, k = parts[0], int(e.exp)
         return lambda env, K: base(env, K) ** k
     raise ValueError(f"{e} is not a rational function of roots of unity")
+
+
+@lru_cache(maxsize=512)
+def _entry_function(expr: sp.Expr) -> CyclotomicFunction | None:
+    try:
+        return CyclotomicFunction(expr, VALENCE, (OMEGA,))
+    except ValueError:
+        return None
+
+
+@lru_cache(maxsize=64)
+def _valence_field(n: int) -> CyclotomicField:
+    """``Q(zeta_2n)`` (``= Q(zeta_n)`` for odd ``n``): holds ``omega_n^j`` and ``cos(2 pi k/n)``."""
+    return CyclotomicField(2 * n)
+
+
+def exact_entry(expr, n: int, j: int = 0) -> Cyclotomic | None:
+    """An expression in ``n``, ``omega`` and ``cos``/``sin`` of rational multiples of pi at ``n``, ``omega = omega_n^j``.
+
+    Read once per expression into a :class:`CyclotomicFunction` of ``n`` with ``omega``
+    given as ``zeta_2n^(2j)`` (the same element of the field, without sympy at each valence and frequency); an
+    expression it cannot read or evaluate goes through :func:`cyclotomic_value`.
+    """
+    expr = sp.sympify(expr, strict=True)
+    function, field = _entry_function(expr), _valence_field(n)
+    if function is not None:
+        try:
+            return function(n, field, field.zeta(2 * j))
+        except (ValueError, ZeroDivisionError):
+            pass
+    if expr.has(OMEGA):
+        expr = expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(j, n))})
+    try:
+        return cyclotomic_value(expr, {VALENCE: n}, _valence_field(n))
+    except ValueError:
+        return None
 
 
 def matrix_rank(rows: list[list[Cyclotomic]]) -> int:

@@ -29,9 +29,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import flint
 import mpmath
 import sympy as sp
 
+from symdecomp.algebra.number_field import FieldElement, quadratic_element, quadratic_expression
+from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.algebra.valence_signs import integer_zeros
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
@@ -277,6 +280,8 @@ def elliptic_component(scheme: Scheme, n, initial, eigenvalue=None) -> sp.Expr |
     if n is not N:
         n = check_valence(n)
     mu = recursion_eigenvalues(scheme)[1].subs(N, n) if eigenvalue is None else eigenvalue
+    if n is not N and not scheme.parameters and (value := _component_in_field(scheme, n, initial, mu)) is not None:
+        return value
     x = sp.Matrix(initial)
     left = recursion_left_eigenvector(scheme, mu, n)
     right = recursion_eigenvector(scheme, mu, n)
@@ -293,6 +298,33 @@ def elliptic_component(scheme: Scheme, n, initial, eigenvalue=None) -> sp.Expr |
     if denominator == 0:  # a Jordan block: the eigenvector has no complement to project along
         return None
     return sp.simplify(left.dot(x) / denominator)
+
+
+def _component_in_field(scheme: Scheme, n: int, initial, mu) -> sp.Expr | None:
+    """:func:`elliptic_component`'s quotient ``(l . x)/(l . u)`` (the same closed-form eigenvectors) computed exactly in
+    ``Q(mu)`` when the Eq. 43 matrix is rational and ``mu = a + b sqrt(d)``; ``None`` outside that field, when the input
+    is not rational, or when ``l . u = 0`` (then the caller's exact null spaces decide)."""
+    field = quadratic_element(mu)
+    T = recursion_matrix(scheme, n)
+    if field is None or not all(e.is_Rational for e in T) or not all(sp.sympify(v, strict=True).is_Rational for v in initial):
+        return None
+    m, root = field
+
+    def const(q) -> FieldElement:
+        return FieldElement(flint.fmpq_poly([to_fmpq(q)]), m.modulus)
+
+    A = [[const(T[r, c]) - (m if r == c else const(0)) for c in range(3)] for r in range(3)]
+    left = _field_cross([A[r][1] for r in range(3)], [A[r][2] for r in range(3)])
+    right = _field_cross(A[1], A[2])
+    norm = sum((a * b for a, b in zip(left, right)), const(0))
+    if not norm:
+        return None
+    weight = sum((a * const(v) for a, v in zip(left, initial)), const(0))
+    return quadratic_expression(weight * norm.inverse(), root)
+
+
+def _field_cross(u, v) -> list:
+    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
 
 
 @dataclass(frozen=True)

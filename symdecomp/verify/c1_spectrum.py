@@ -54,7 +54,7 @@ from functools import lru_cache
 import flint
 import sympy as sp
 
-from symdecomp.algebra.cyclotomic import Cyclotomic, CyclotomicField, cyclotomic_value, to_acb
+from symdecomp.algebra.cyclotomic import Cyclotomic, exact_entry, to_acb
 from symdecomp.analysis.characteristic import (
     check_applicable,
     frequency_block,
@@ -169,22 +169,6 @@ def quadratic_roots(t: flint.acb, d: flint.acb) -> tuple[flint.acb, flint.acb]:
     return (a, b) if abs(a).mid() >= abs(b).mid() else (b, a)
 
 
-def _field(n: int) -> CyclotomicField:
-    """``Q(zeta_2n)`` (``= Q(zeta_n)`` for odd ``n``): holds ``omega_n^j`` and ``cos(2 pi k/n)``."""
-    return CyclotomicField(2 * n)
-
-
-def exact_entry(expr, n: int, j: int = 0) -> Cyclotomic | None:
-    """An expression in ``n``, ``omega`` and ``cos``/``sin`` of rational multiples of pi at ``n``, ``omega = omega_n^j``."""
-    expr = sp.sympify(expr, strict=True)
-    if expr.has(OMEGA):
-        expr = expr.xreplace({OMEGA: sp.exp(2 * sp.pi * sp.I * sp.Rational(j, n))})
-    try:
-        return cyclotomic_value(expr, {N: n}, _field(n))
-    except ValueError:
-        return None
-
-
 def _rational(x: Cyclotomic) -> sp.Rational | None:
     """``x`` as a rational, if it is one."""
     if x.poly.degree() > 0:
@@ -209,7 +193,7 @@ def _charpoly(M: list[list[Cyclotomic]]) -> list[Cyclotomic]:
 def _frequency_zero_quotient(scheme: Scheme, n: int) -> tuple[list, list | None]:
     """``(p, q)``: the characteristic polynomial of the frequency-0 1-ring block (Eq. 43 on quads) and ``p / (x - 1)``.
 
-    Coefficient lists as in :func:`_charpoly`, exact in :func:`_field`; ``q`` is ``None`` if 1 is not a root.
+    Coefficient lists as in :func:`_charpoly`, exact in ``Q(zeta_2n)``; ``q`` is ``None`` if 1 is not a root.
     """
     E0 = one_ring_matrices(scheme)[1]
     entries = [[exact_entry(x, n) for x in row] for row in E0.tolist()]
@@ -301,7 +285,7 @@ def _gap_bounds(scheme: Scheme, n: int, outer: list, others: list[Eigenvalue]) -
 def exact_charpoly(scheme: Scheme, n: int, j: int) -> tuple[Cyclotomic, ...] | None:
     """``(c_1, .., c_k)``: the block of frequency ``j`` has ``det(x - M_j) = x^k + c_1 x^(k-1) + ..``, exactly.
 
-    The ``c_i`` lie in the cyclotomic field :func:`_field` (exact: an element is 0 iff its
+    The ``c_i`` lie in the cyclotomic field ``Q(zeta_2n)`` (exact: an element is 0 iff its
     reduced polynomial is). At ``j = 0`` the block is the quotient of the frequency-0 polynomial
     by ``x - 1``. ``None`` when a coefficient is not in the field.
     """

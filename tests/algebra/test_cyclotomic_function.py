@@ -60,3 +60,17 @@ def test_to_sympy_is_expanded_and_the_number(N):
         with mpmath.workdps(40):
             near = sp.N(value, 40)
             assert abs(mpmath.mpc(str(sp.re(near)), str(sp.im(near))) - x.to_mpc()) < mpmath.mpf(10) ** -35
+
+
+def test_a_given_root_of_unity_is_the_exponential_substituted():
+    """``omega`` given as ``zeta_2n^(2j)`` gives what substituting ``exp(2 pi i j/n)`` gives (the C1 test's blocks)."""
+    from symdecomp.analysis.frequency import one_ring_matrices
+    from symdecomp.symbols import omega
+
+    M = one_ring_matrices(sd.loop())[0][0, 0] + one_ring_matrices(sd.catmull_clark())[0].det()
+    f = CyclotomicFunction(M, N, (omega,))
+    for n in (3, 5, 8):
+        field = CyclotomicField(2 * n)
+        for j in range(n):
+            substituted = M.xreplace({omega: sp.exp(2 * sp.pi * sp.I * sp.Rational(j, n))})
+            assert (f(n, field, field.zeta(2 * j)) - cyclotomic_value(substituted, {N: n}, field=field)).poly == 0

@@ -120,6 +120,18 @@ def test_remark_5_2_cases(n):
     assert elliptic_component(CC, n, (0, 1, 1)) != 0
 
 
+@pytest.mark.parametrize("scheme", [CC, catmull_clark(sp.Rational(1, 8) / N, sp.Rational(1, 32) / N)], ids=["cc", "tuned"])
+def test_component_in_the_quadratic_field_is_the_simplified_quotient(scheme):
+    """The component computed in ``Q(sqrt d)`` equals ``(l . x)/(l . u)`` simplified by sympy, exactly."""
+    from symdecomp.analysis.spectrum import recursion_eigenvalues
+
+    for n in (3, 5, 8):
+        mu = recursion_eigenvalues(scheme)[1].subs(N, n)
+        left, right = recursion_left_eigenvector(scheme, mu, n), recursion_eigenvector(scheme, mu, n)
+        for x in ((1, 1, 1), (0, 1, 1), (1, 0, 0), (0, 1, -1)):
+            value = elliptic_component(scheme, n, x)
+            assert value is not None and sp.simplify(value - left.dot(sp.Matrix(x)) / left.dot(right)) == 0
+
 def test_remark_5_2_third_case_at_n4():
     assert elliptic_component(CC, 4, (0, 1, -1)) == 0
     assert elliptic_component(CC, 5, (0, 1, -1)) != 0

@@ -79,6 +79,26 @@ def test_blocks_rebuild_the_refined_matrix_at_small_valences(name, rings):
         assert all(_zero(A[r, c] - B[r, c]) for r in range(S.size) for c in range(S.size))
 
 
+@pytest.mark.parametrize("name", ["loop", "catmull-clark"])
+def test_sparse_entries_are_the_dense_block_matrix_and_catch_a_changed_block(name):
+    """``RingBlocks.entries`` (the check of :func:`ring_blocks` at two more valences) is ``full_matrix`` entry by
+    entry, and the refinement's entries differ from blocks whose one offset weight was changed."""
+    from symdecomp.analysis.frequency import _refined_entries
+    from symdecomp.schemes.rings import CENTRE_WEIGHTS
+
+    blocks, symbols = ring_blocks(SCHEMES[name], 2), {s: s for s in CENTRE_WEIGHTS}
+    for n in (5, 16):
+        dense = blocks.full_matrix(n, symbols).subs(N, n)
+        sparse = blocks.entries(n, symbols)
+        assert sparse == {(r, c): dense[r, c] for r in range(dense.rows) for c in range(dense.cols) if dense[r, c] != 0}
+    S = ring_subdivision_matrix(SCHEMES[name], 16, 2, symbolic_centre=True)
+    assert _refined_entries(S) == blocks.entries(16, symbols)
+    (l, c), *rest = blocks.offsets[0][0]
+    changed = RingBlocks(blocks.scheme, blocks.lattice, blocks.rings, blocks.classes, blocks.centre, blocks.centre_row,
+                         blocks.centre_column, (((((l, c + sp.Rational(1, 64)), *rest), *blocks.offsets[0][1:]),
+                                                 *blocks.offsets[1:])), blocks.weights)
+    assert _refined_entries(S) != changed.entries(16, symbols)
+
 def test_loop_spectrum_at_seven_is_the_closed_forms():
     spectrum = ring_spectrum(loop(), 7, digits=30)
     beta7 = loop_beta().subs(N, 7)

@@ -35,7 +35,7 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb
-from symdecomp.algebra.rounding import round_ball, round_balls, round_products, split_balls
+from symdecomp.algebra.rounding import round_ball, round_balls, round_products, round_shared_balls, split_balls
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.analysis.eigendata import (
     RoundedEigenData,
@@ -364,7 +364,7 @@ def _round_ring_rows(cols: list[Any], size: int) -> np.ndarray:
         vals, ok = round_products(s[:, np.arange(len(forms))[:, None], coef], c[:, index])
         out[formed, :k0], certified[formed, :k0] = vals, ok
     for i in set(range(k0)) - set(formed):
-        out[i, :k0] = np.array(round_balls(cols[i].left), dtype=float)  # None -> NaN
+        out[i, :k0] = np.array(round_shared_balls(cols[i].left), dtype=float)  # None -> NaN; a period's balls repeat
     for i, j in zip(*np.nonzero(~certified)):
         x = round_ball(cols[i].left_form.at(j))
         out[i, j] = np.nan if x is None else x

@@ -19,7 +19,7 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb, to_fmpq
-from symdecomp.algebra.rounding import round_ball, round_balls
+from symdecomp.algebra.rounding import round_ball, round_balls, round_shared_balls
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.analysis.eigendata import ZERO_PREC, PatchEigenData, RoundedEigenData, _g_rows, _regular_part
 from symdecomp.analysis.eigendata_columns import RING_EIGEN
@@ -43,7 +43,7 @@ def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: li
     ``V^-1`` already rounded, row-major (a list with None, or an array with NaN, where it did not round),
     else rounded here; ``phi_rounded`` likewise the sub-patch tables, flat, NaN where an entry did not round."""
     size, width = data.size, data.phi[0].ncols()
-    values = round_balls(data.values)
+    values = round_shared_balls(data.values)  # a frequency's cosine and sine columns share their eigenvalue's ball
     if isinstance(inverse, np.ndarray) and np.isnan(inverse).any():  # NaN: not rounded; an array stays one only whole
         inverse = [None if x != x else x for x in inverse.tolist()]
     inverse = round_balls(data.inverse.entries()) if inverse is None else inverse

@@ -19,18 +19,20 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
 Targets (issue 33): N = 3..128 for each scheme within 3 times the baseline's seconds (b), measured in
 the same run, and within 300 MB, still certified (issue 24's were 15 s and 300 MB). The file's own
 construction of the exact patch matrices is part of (a) and not of (b). Last measured (x86_64, 2 cores, shared
-with other jobs; one run of this benchmark for the code before the last step, load 3.9 at its start, then one for
-this code, load 4.7): Catmull-Clark 11.0 s and 15.2 s wall, 7.8 s CPU both, beside numpy's 2.08 s and 3.29 s wall
-(5.3 and 4.6 times wall; 5.2 and 4.8 times CPU), 102 and 103 MB; Loop 7.1 s and 5.8 s wall, 4.2 s and 4.0 s CPU,
-beside numpy's 0.77 s and 0.55 s (9.2 and 10.6 times wall; 10.9 times CPU both), 97 MB. Neither target is met;
-under that load the wall-clock ratios move more than the step (about 5 per cent of Catmull-Clark's valences'
-CPU, none of Loop's, measured alternately in one process). A quiet run earlier (load 0.3): Catmull-Clark 3.6 s
-wall beside 1.18 s (3.0 times), Loop 1.6 s beside 0.26 s. Loop's start-up (about 0.5 s of CPU, sympy most of it:
-the scheme's rules are sympy expressions) is about 2 of the 3 times numpy (0.26 s quiet) that its target allows.
+with other jobs, load 6; ``--against`` main's worktree, two rounds, this code, main's code and numpy in turn):
+Catmull-Clark 7.3 s and 7.2 s CPU beside main's 7.7 s and 7.9 s and numpy's 1.54 s and 1.61 s (4.7 and 4.5 times
+numpy's CPU; main 5.0 and 4.9), 104 MB; Loop 4.0 s and 3.8 s CPU beside main's 3.9 s and 4.1 s and numpy's 0.37 s
+and 0.35 s (10.7 and 10.6 times; main 10.4 and 11.5), 97 MB; the files identical to main's. Neither target is met;
+at that load the wall-clock seconds (17-23 s for Catmull-Clark, numpy's 5 s) say nothing of the code. A quiet
+run earlier (load 0.3): Catmull-Clark 3.6 s wall beside 1.18 s (3.0 times), Loop 1.6 s beside 0.26 s. Loop's
+start-up (about 0.5 s of CPU, sympy most of it: the scheme's rules are sympy expressions) is about 2 of the 3
+times numpy (0.26 s quiet) that its target allows. ``--against CHECKOUT`` times another checkout's command
+alternately with this one's and numpy's and compares the two files byte for byte.
 The guide's evaldata page says what is left. Run from the repository root::
 
     python benchmarks/bench_evaldata.py           # N = 3..128
     python benchmarks/bench_evaldata.py --quick   # N = 3..24
+    python benchmarks/bench_evaldata.py --against ../main-checkout   # this code and another's, alternately
 """
 
 from __future__ import annotations

@@ -19,18 +19,20 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
 Targets (issue 33): N = 3..128 for each scheme within 3 times the baseline's seconds (b), measured in
 the same run, and within 300 MB, still certified (issue 24's were 15 s and 300 MB). The file's own
 construction of the exact patch matrices is part of (a) and not of (b). Last measured (x86_64, 2 cores, shared
-with other jobs; one run of this benchmark for the code before the last step, load 3.9 at its start, then one for
-this code, load 4.7): Catmull-Clark 11.0 s and 15.2 s wall, 7.8 s CPU both, beside numpy's 2.08 s and 3.29 s wall
-(5.3 and 4.6 times wall; 5.2 and 4.8 times CPU), 102 and 103 MB; Loop 7.1 s and 5.8 s wall, 4.2 s and 4.0 s CPU,
-beside numpy's 0.77 s and 0.55 s (9.2 and 10.6 times wall; 10.9 times CPU both), 97 MB. Neither target is met;
-under that load the wall-clock ratios move more than the step (about 5 per cent of Catmull-Clark's valences'
-CPU, none of Loop's, measured alternately in one process). A quiet run earlier (load 0.3): Catmull-Clark 3.6 s
-wall beside 1.18 s (3.0 times), Loop 1.6 s beside 0.26 s. Loop's start-up (about 0.5 s of CPU, sympy most of it:
-the scheme's rules are sympy expressions) is about 2 of the 3 times numpy (0.26 s quiet) that its target allows.
+with other jobs, load 6.6; ``--against`` main's worktree, two rounds, this code, main's code and numpy in turn):
+Catmull-Clark 7.1 s and 7.2 s CPU beside main's 8.0 s and 7.8 s and numpy's 1.60 s and 1.57 s (4.4 and 4.6 times
+numpy's CPU; main 5.0 both), 14.1 s and 12.5 s wall beside numpy's 2.56 s and 2.66 s (5.5 and 4.7 times; main
+6.6 and 5.0), 104 MB; Loop 4.0 s CPU both beside main's 4.2 s and 4.1 s and numpy's 0.39 s and 0.40 s (10.1 and
+10.0 times; main 10.7 and 10.3), 97 MB; the files identical to main's. Neither target is met. A quiet
+run of an earlier version (load 0.3): Catmull-Clark 3.6 s wall beside 1.18 s (3.0 times), Loop 1.6 s beside 0.26 s. Loop's
+start-up (about 0.5 s of CPU, sympy most of it: the scheme's rules are sympy expressions) is about 2 of the 3
+times numpy (0.26 s quiet) that its target allows. ``--against CHECKOUT`` times another checkout's command
+alternately with this one's and numpy's and compares the two files byte for byte.
 The guide's evaldata page says what is left. Run from the repository root::
 
     python benchmarks/bench_evaldata.py           # N = 3..128
     python benchmarks/bench_evaldata.py --quick   # N = 3..24
+    python benchmarks/bench_evaldata.py --against ../main-checkout   # this code and another's, alternately
 """
 
 from __future__ import annotations
@@ -70,13 +72,14 @@ LAUNCHER = (
 ONE_THREAD = {name: "1" for name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")}
 
 
-def _run_child(argv: list[str], extra_env: dict | None = None) -> tuple[float, float, float, str]:
+def _run_child(argv: list[str], extra_env: dict | None = None, root: str = ROOT) -> tuple[float, float, float, str]:
     """``(wall seconds, CPU seconds, peak MB, stdout)`` of ``python argv`` (with the processes it waited for:
-    the worker processes), started by :data:`LAUNCHER`; peak MB is the largest single process."""
+    the worker processes), started by :data:`LAUNCHER`; peak MB is the largest single process. ``root``: the
+    checkout whose code runs (``--against``'s, else this one)."""
     import json
 
-    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""), **(extra_env or {}))
-    out = subprocess.run([sys.executable, "-c", LAUNCHER, sys.executable, *argv], cwd=ROOT, env=env, capture_output=True, text=True)
+    env = dict(os.environ, PYTHONPATH=root + os.pathsep + os.environ.get("PYTHONPATH", ""), **(extra_env or {}))
+    out = subprocess.run([sys.executable, "-c", LAUNCHER, sys.executable, *argv], cwd=root, env=env, capture_output=True, text=True)
     code, wall, cpu, mb, stdout, stderr = json.loads(out.stdout)
     if code:
         raise RuntimeError(f"{' '.join(argv)} failed ({code}): {stderr.strip()}")
@@ -180,15 +183,54 @@ def targets(quick: bool = False) -> list[dict]:
     return out
 
 
+def against(other: str, rounds: int = 2, nmax: int = 128) -> list[dict]:
+    """The certified file for N = 3..nmax written by this code and by the checkout ``other`` (e.g. a worktree of the
+    main branch), alternately, ``rounds`` times each, with the numpy baseline beside them in each round (the three
+    in turn, so that a loaded machine's changes fall on all of them); the two files compared byte for byte."""
+    import filecmp
+
+    other = os.path.abspath(other)
+    out = []
+    with tempfile.TemporaryDirectory() as folder:
+        for name, fmt, file in CASES:
+            rows: dict[str, list] = {"this": [], "other": [], "numpy": []}
+            paths = {side: os.path.join(folder, f"{side}-{file}") for side in ("this", "other")}
+            for _ in range(rounds):
+                for side, root in (("this", ROOT), ("other", other)):
+                    argv = ["-m", "symdecomp", "evaldata", "--scheme", name, "--n", f"3:{nmax}", "--format", fmt, "--out", paths[side]]
+                    rows[side].append(_run_child(argv, root=root)[:3])
+                _, _, _, printed = _run_child([os.path.abspath(__file__), "--numpy-child", name, str(nmax)], ONE_THREAD)
+                rows["numpy"].append(tuple(float(x) for x in printed.split()[-2:]))
+            out.append({"case": f"evaldata --scheme {name} --n 3:{nmax} --format {fmt}", "rounds": rows,
+                        "same_bytes": filecmp.cmp(paths["this"], paths["other"], shallow=False)})
+    return out
+
+
+def _print_against(rows: list[dict], other: str) -> None:
+    for row in rows:
+        print(f"{row['case']}: this code beside {other}, round by round; the files are "
+              f"{'identical' if row['same_bytes'] else 'DIFFERENT'}")
+        for q, (this, that, base) in enumerate(zip(row["rounds"]["this"], row["rounds"]["other"], row["rounds"]["numpy"])):
+            print(f"  round {q + 1}: this {this[0]:.2f} s wall, {this[1]:.2f} s CPU, {this[2]:.0f} MB; other {that[0]:.2f} s wall, "
+                  f"{that[1]:.2f} s CPU, {that[2]:.0f} MB; numpy {base[0]:.2f} s wall, {base[1]:.2f} s CPU; ratios to numpy: "
+                  f"this {this[0] / base[0]:.1f} wall, {this[1] / base[1]:.1f} CPU; other {that[0] / base[0]:.1f} wall, "
+                  f"{that[1] / base[1]:.1f} CPU")
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="N = 3..24 instead of 3..128")
     parser.add_argument("--numpy-child", nargs=2, metavar=("SCHEME", "NMAX"), help=argparse.SUPPRESS)
+    parser.add_argument("--against", metavar="CHECKOUT", help="time this code and another checkout's (e.g. a worktree of "
+                        "the main branch) alternately, with numpy beside them, and compare their files byte for byte")
     args = parser.parse_args()
     if args.numpy_child:
         _baseline_main(args.numpy_child[0], int(args.numpy_child[1]))
         return 0
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, load {os.getloadavg()[0]:.1f}")
+    if args.against:
+        _print_against(against(args.against, nmax=24 if args.quick else 128), args.against)
+        return 0
     for t in targets(args.quick):
         print(f"{t['target']}: {t['seconds']:.1f} s wall, {t['cpu_seconds']:.1f} s CPU, {t['megabytes']:.0f} MB peak, "
               f"{t['file_bytes']} bytes; error on evaluated points {t['error_points']:.1e}")

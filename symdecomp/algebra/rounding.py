@@ -13,7 +13,7 @@ import math
 import flint
 import numpy as np
 
-__all__ = ["round_ball", "round_balls", "round_ball_decimal", "split_balls", "round_products", "TINY_EXPONENT"]
+__all__ = ["round_ball", "round_balls", "round_shared_balls", "round_ball_decimal", "split_balls", "round_products", "TINY_EXPONENT"]
 
 arb = flint.arb
 _TINY = None  # 2^-1075 as an Arb number, made on first use
@@ -80,6 +80,23 @@ def round_balls(balls) -> list[float | None]:
     # an exact 0 (a symmetry's, set exactly) is 0.0 at once, without round_ball's test of a ball around 0
     return [m if g > 0 and abs(x - m) < g else 0.0 if m == 0.0 and x.is_zero() else round_ball(x)
             for x, m, g in zip(balls, hi, gap.tolist())]
+
+
+def round_shared_balls(balls) -> list[float | None]:
+    """:func:`round_balls` of a list whose balls repeat the same objects (a period of balls shared by its
+    repetitions, as a rational eigenvector's are): each object rounded once.
+
+    >>> with flint.ctx.workprec(200):
+    ...     third = arb(1) / 3
+    ...     round_shared_balls([third, arb(1), third]) == [1 / 3, 1.0, 1 / 3]
+    True
+    """
+    balls = list(balls)
+    first: dict[int, arb] = {}
+    for x in balls:
+        first.setdefault(id(x), x)  # the objects stay alive in balls: their ids are theirs
+    rounded = dict(zip(first, round_balls(first.values())))
+    return [rounded[id(x)] for x in balls]
 
 
 def round_ball_decimal(x: arb, digits: int) -> str | None:

@@ -35,7 +35,7 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb
-from symdecomp.algebra.rounding import round_ball, round_balls, round_products, split_balls
+from symdecomp.algebra.rounding import round_ball, round_balls, round_products, round_shared_balls, split_balls
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.analysis.eigendata import (
     RoundedEigenData,
@@ -123,10 +123,11 @@ def _read_rows(p: PatchMatrices, g_rows: list[dict[int, object]]) -> set[int]:
     return rows
 
 
-def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, np.ndarray]:
+def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, np.ndarray, np.ndarray]:
     """The balls of ``values``, ``V^-1`` (its 1-ring rows made only where read) and the sub-patch tables at
-    ``prec`` bits (inside its ``workprec``), and ``V^-1`` rounded (:func:`_round_ring_rows`, then the lower block),
-    flat, row-major, NaN where an entry did not round (a correctly rounded entry is finite)."""
+    ``prec`` bits (inside its ``workprec``), ``V^-1`` rounded (:func:`_round_ring_rows`, then the lower block)
+    and the tables rounded (each point's row of ``A V`` once), flat, row-major, NaN where an entry did not round
+    (a correctly rounded entry is finite)."""
     from symdecomp.analysis.eigendata import _g_rows
 
     k0, size = p.ring_size, p.size
@@ -147,13 +148,16 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, np.ndarray]:
     values = tuple(col.value for col in cols) + tuple(to_arb(nu) for nu in nus)
     outside = sorted({idx for sub in p.subpatches for idx in sub if idx >= size})
     beyond = dict(zip(outside, _sparse_times([p.sparse[idx] for idx in outside], vrows, size)))
-    phi = []
-    for sub in p.subpatches:
-        table = [_av_row(vrows[idx], values, jordan) if idx < size else beyond[idx] for idx in sub]
-        phi.append(_Cells([list(row) for row in zip(*table)]))
+    # a point shared by sub-patches has one row of A V, made and rounded once (half the tables' entries are repeats)
+    points = sorted({idx for sub in p.subpatches for idx in sub})
+    av = {idx: _av_row(vrows[idx], values, jordan) if idx < size else beyond[idx] for idx in points}
+    phi = [_Cells([list(row) for row in zip(*[av[idx] for idx in sub])]) for sub in p.subpatches]
+    by_point = np.array(round_balls([x for idx in points for x in av[idx]]), dtype=float).reshape(len(points), size)
+    place = {idx: q for q, idx in enumerate(points)}
+    phi_rounded = np.stack([by_point[[place[idx] for idx in sub]].T for sub in p.subpatches])  # (3, K, P), NaN: not rounded
     for k, i, l in mirror_zeros(p, cols, nus, wmat, g_rows) if not jordan else ():
         if phi[k][i, l].contains(0):  # exact by the symmetry: the ball needs no 1200 bits to round to 0.0
-            phi[k][i, l] = arb(0)
+            phi[k][i, l], phi_rounded[k, i, l] = arb(0), 0.0
     lower_rows: list[list[flint.arb] | None] = [lower[i] + wia[i] for i in range(r)]
     ring_rows: list[list[flint.arb] | None] = [None] * k0
     inverse = _Cells(ring_rows + lower_rows, lambda i: cols[i].left + zeros)
@@ -165,7 +169,7 @@ def _direct(p: PatchMatrices, prec: int) -> tuple[_DirectData, np.ndarray]:
     bad = [(i, j) for i in range(k0, size) for j in range(k0) if np.isnan(rounded[i * size + j])]
     for (i, j), x in _lower_at_zero_prec(p, bad).items():
         inverse[i, j], rounded[i * size + j] = x, round_ball(x)  # None (not rounded) is stored as NaN
-    return _DirectData(p.n, prec, values, inverse, tuple(phi), tuple(jordan), _Unused()), rounded
+    return _DirectData(p.n, prec, values, inverse, tuple(phi), tuple(jordan), _Unused()), rounded, phi_rounded.ravel()
 
 
 def _wave_layout(cols: list[Any]) -> tuple[list[int], list[int], list[tuple[int, int, np.ndarray]]] | None:
@@ -360,7 +364,7 @@ def _round_ring_rows(cols: list[Any], size: int) -> np.ndarray:
         vals, ok = round_products(s[:, np.arange(len(forms))[:, None], coef], c[:, index])
         out[formed, :k0], certified[formed, :k0] = vals, ok
     for i in set(range(k0)) - set(formed):
-        out[i, :k0] = np.array(round_balls(cols[i].left), dtype=float)  # None -> NaN
+        out[i, :k0] = np.array(round_shared_balls(cols[i].left), dtype=float)  # None -> NaN; a period's balls repeat
     for i, j in zip(*np.nonzero(~certified)):
         x = round_ball(cols[i].left_form.at(j))
         out[i, j] = np.nan if x is None else x
@@ -380,8 +384,8 @@ def rounded_valence(scheme: Scheme, n: int, prec: int = 256) -> tuple[int, Round
     p = patch_matrices(scheme, n)
     try:
         with flint.ctx.workprec(prec):
-            data, inverse = _direct(p, prec)
-        rounded = _round_all(data, p, inverse)  # type: ignore[arg-type]  # the same fields, duck-typed
+            data, inverse, phi = _direct(p, prec)
+        rounded = _round_all(data, p, inverse, phi)  # type: ignore[arg-type]  # the same fields, duck-typed
     except (_NeedPrecision, PrecisionError):
         rounded = None
     if rounded is not None:

@@ -19,7 +19,7 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb, to_fmpq
-from symdecomp.algebra.rounding import round_ball, round_balls
+from symdecomp.algebra.rounding import round_ball, round_balls, round_shared_balls
 from symdecomp.algebra.small_eigen import NeedPrecision as _NeedPrecision
 from symdecomp.analysis.eigendata import ZERO_PREC, PatchEigenData, RoundedEigenData, _g_rows, _regular_part
 from symdecomp.analysis.eigendata_columns import RING_EIGEN
@@ -35,19 +35,22 @@ Entry: TypeAlias = tuple[int, int]
 TableEntry: TypeAlias = tuple[int, int, int]
 
 
-def _round_all(data: PatchEigenData, p: PatchMatrices | None = None,
-               inverse: list[float | None] | np.ndarray | None = None) -> RoundedEigenData | None:
+def _round_all(data: PatchEigenData, p: PatchMatrices | None = None, inverse: list[float | None] | np.ndarray | None = None,
+               phi_rounded: np.ndarray | None = None) -> RoundedEigenData | None:
     """Every entry correctly rounded, or None. With ``p``, entries that do not round are first
     sharpened (:func:`_sharpen_lower_block`, :func:`_sharpen_subpatch_zeros`, then
     :func:`_replace_columns`) and rounded again; ``data`` then holds the sharper balls. ``inverse``:
     ``V^-1`` already rounded, row-major (a list with None, or an array with NaN, where it did not round),
-    else rounded here."""
+    else rounded here; ``phi_rounded`` likewise the sub-patch tables, flat, NaN where an entry did not round."""
     size, width = data.size, data.phi[0].ncols()
-    values = round_balls(data.values)
+    values = round_shared_balls(data.values)  # a frequency's cosine and sine columns share their eigenvalue's ball
     if isinstance(inverse, np.ndarray) and np.isnan(inverse).any():  # NaN: not rounded; an array stays one only whole
         inverse = [None if x != x else x for x in inverse.tolist()]
     inverse = round_balls(data.inverse.entries()) if inverse is None else inverse
-    phi = round_balls([x for t in data.phi for x in t.entries()])
+    if phi_rounded is None:
+        phi = round_balls([x for t in data.phi for x in t.entries()])
+    else:
+        phi = [None if x != x else x for x in phi_rounded.tolist()]  # NaN: not rounded
     jordan = tuple((i, c, round_ball(g)) for i, c, g in data.jordan)
     if None in values or any(g is None for _, _, g in jordan):
         return None

@@ -80,7 +80,8 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
     if not waves:
         return []
     first = cols[waves[0][0]].right_form
-    if any(not np.array_equal(cols[i].right_form.coef, first.coef) or not np.array_equal(w[2], first.wave[2]) for i, w in waves):
+    same = lambda a, b: a is b or np.array_equal(a, b)  # noqa: E731 - the layouts are shared arrays: identity first
+    if any(not same(cols[i].right_form.coef, first.coef) or not same(w[2], first.wave[2]) for i, w in waves):
         return []  # one layout of points for every wave, else nothing is claimed
     steps, coef = first.wave[2].tolist(), first.coef.tolist()
     period = 2 * p.n  # half steps around O

@@ -71,27 +71,39 @@ class PatternForm:
         return [arb(0) if i < 0 else scalars[c] * table[i] for c, i in zip(*self._pairs())]
 
 
-#: The patterns of one valence, ``{n: {(j, shift): (coef, index)}}``: keyed by the valence, which it says once, and
-#: holding only the last one asked (a valence's lookups stay one dict read each, where a scan of mixed keys made them
-#: quadratic in ``N``: about ``2N`` keys read for each of ``2N`` patterns).
-_PATTERNS: dict[int, dict[tuple[int, int], tuple[np.ndarray, np.ndarray]]] = {}
+#: The patterns of one valence, ``{n: {shift: (coef, index)}}``: keyed by the valence and holding only the last one
+#: asked; one row of ``index`` per frequency, made in one numpy step (a few small arrays made per frequency and
+#: shift cost more than the rows).
+_PATTERNS: dict[int, dict[int, tuple[np.ndarray, np.ndarray]]] = {}
 
 
 def _pattern_index(n: int, j: int, shift: int) -> tuple[np.ndarray, np.ndarray]:
-    """``(coef, index)`` of the pattern of frequency ``j`` on ``(O, e_0, f_0, ...)``, remembered for the last valence."""
+    """``(coef, index)`` of the pattern of frequency ``j`` on ``(O, e_0, f_0, ...)``, remembered for the last valence
+    (read-only arrays: ``coef`` is one array for every ``j``, ``index`` a row of the valence's table)."""
+    if not 0 <= j < n:  # not a row of the table (the index is not periodic in j with period n)
+        coef, index = _pattern_rows(n, np.array([[j]]), shift)
+        return coef, index[0]
     if n not in _PATTERNS:
         _PATTERNS.clear()
         _PATTERNS[n] = {}
     patterns = _PATTERNS[n]
-    if (j, shift) not in patterns:
-        k = np.arange(n)
-        index, coef = np.full(2 * n + 1, -1), np.zeros(2 * n + 1, dtype=np.int64)
-        index[1::2] = (4 * j * k + shift) % (4 * n)
-        index[2::2] = (2 * j * (2 * k + 1) + shift) % (4 * n)
-        coef[2::2] = 1
-        patterns[(j, shift)] = coef, index
-    return patterns[(j, shift)]
+    if shift not in patterns:
+        coef, index = _pattern_rows(n, np.arange(n)[:, None], shift)
+        index.setflags(write=False)
+        coef.setflags(write=False)
+        patterns[shift] = coef, index
+    coef, index = patterns[shift]
+    return coef, index[j]
 
+
+def _pattern_rows(n: int, js: np.ndarray, shift: int) -> tuple[np.ndarray, np.ndarray]:
+    """``(coef, index)``: one ``index`` row per frequency in the column ``js``."""
+    k = np.arange(n)
+    index, coef = np.full((len(js), 2 * n + 1), -1, dtype=np.int64), np.zeros(2 * n + 1, dtype=np.int64)
+    index[:, 1::2] = (4 * js * k + shift) % (4 * n)
+    index[:, 2::2] = (2 * js * (2 * k + 1) + shift) % (4 * n)
+    coef[2::2] = 1
+    return coef, index
 
 
 class LazyTable:

@@ -11,7 +11,7 @@ from fractions import Fraction
 
 import flint
 
-from symdecomp.algebra.rounding import round_ball, round_balls
+from symdecomp.algebra.rounding import round_ball, round_balls, round_shared_balls
 
 
 def _ball(q: Fraction) -> flint.arb:
@@ -35,3 +35,16 @@ def test_a_ball_on_a_rounding_boundary_or_around_zero_is_not_rounded_as_a_guess(
         balls = [_ball(tie), _ball(tie) + flint.arb(0, 2.0**-80), flint.arb(0), flint.arb(0, 2.0**-1000),
                  _ball(Fraction(3, 2**1070))]
         assert round_balls(balls) == [round_ball(x) for x in balls] == [None, None, 0.0, None, float(Fraction(3, 2**1070))]
+
+
+def test_shared_balls_round_as_each_would_alone():
+    """A list repeating its ball objects (a rational eigenvector's period) rounds, object by object, to the exact
+    values' float64s, with None where a ball does not round, wherever the object repeats."""
+    rnd = random.Random(41)
+    values = [Fraction(rnd.randint(-10**30, 10**30), rnd.randint(1, 10**30)) for _ in range(40)]
+    tie = Fraction(1) + Fraction(1, 2**53)
+    with flint.ctx.workprec(256):
+        period = [_ball(q) for q in values] + [_ball(tie)]
+        balls = [flint.arb(0)] + period * 7
+        rounded = round_shared_balls(balls)
+    assert rounded == [0.0] + ([float(q) for q in values] + [None]) * 7

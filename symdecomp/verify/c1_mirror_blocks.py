@@ -58,6 +58,7 @@ from symdecomp.validate import check_depth
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
 from symdecomp.verify.c1_sector_matrix import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
+from symdecomp.verify.corner_jordan import HALF, JORDAN_FACES, corner_jordan
 from symdecomp.verify.fourier_map import applies, fourier_map
 from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
@@ -196,6 +197,16 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
                           block_root(top[0].ball, 0, 1), gap, float(third)), picks
 
 
+def _tie_reason(scheme, vertex: SharpVertex, k: int, reason: str, picks: list) -> str:
+    """An exact tie at a corner's ``1/2`` (BLZ's corners): the reason with the eigenvalue's Jordan structure, computed
+    exactly (:mod:`.corner_jordan`) up to :data:`~.corner_jordan.JORDAN_FACES` faces."""
+    if not vertex.corner or len(picks) < 2 or not picks[1][0].contains(flint.acb(HALF.numerator) / HALF.denominator):
+        return reason
+    if k > JORDAN_FACES:
+        return f"{reason}; the Jordan structure of 1/2 is computed for at most {JORDAN_FACES} faces"
+    return f"{reason}; {corner_jordan(scheme, k).reason()}"
+
+
 def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:
     """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :func:`map_from_blocks` (``max_depth``:
     its deepest subdivision; ``None``: the blocks alone)."""
@@ -209,7 +220,9 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
     if tangent and tangent[0] is C1Verdict.NOT_C1:
         return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:  # an exact tie is final: the dense test finds the same multiple eigenvalue
-        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas, final=_exact_tie(lead))
+        tie = _exact_tie(lead)
+        return SectorFinding(spectral.status, _tie_reason(scheme, vertex, k, spectral.reason, picks) if tie else spectral.reason,
+                             spectral, lambdas, final=tie)
     if tangent:
         return SectorFinding(tangent[0], tangent[1], spectral, lambdas)
     if max_depth is None:

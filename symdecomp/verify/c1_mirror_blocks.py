@@ -42,6 +42,7 @@ Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass
@@ -208,6 +209,17 @@ def _tie_reason(scheme, vertex: SharpVertex, k: int, reason: str, picks: list) -
     return f"{reason}; {corner_jordan(scheme, k).reason()}"
 
 
+def _with_jordan(scheme, vertex: SharpVertex, result: SharpC1Result) -> SharpC1Result:
+    """The dense test's undecided verdict at a corner given an angle, with the exact Jordan structure of ``1/2`` where
+    ``1/2`` is a multiple root there (:mod:`.corner_jordan`, at most :data:`~.corner_jordan.JORDAN_FACES` faces)."""
+    if not vertex.corner or result.verdict is not C1Verdict.UNDECIDED or vertex.faces > JORDAN_FACES:
+        return result
+    found = corner_jordan(scheme, vertex.faces, vertex.angle)
+    if found.generalized < 3:
+        return result
+    return dataclasses.replace(result, reason=f"{result.reason}; {found.reason()}")
+
+
 def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:
     """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :func:`map_from_blocks` (``max_depth``:
     its deepest subdivision; ``None``: the blocks alone)."""
@@ -288,7 +300,7 @@ def c1_mirror_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_fac
     if not sharp_sectors or vertex.angle is not None or vertex.lattice is not scheme.lattice:
         if vertex.angle is not None and max(vertex.sectors) > map_faces:
             raise NotApplicableError(f"a corner given an angle is tested on its dense matrices, at most {map_faces} faces")
-        return c1_sharp_test(scheme, vertex, max_depth=max_depth)
+        return _with_jordan(scheme, vertex, c1_sharp_test(scheme, vertex, max_depth=max_depth))
     try:
         with flint.ctx.workprec(64):
             found = [_sector(scheme, vertex, i, max_depth if certify_map else None) for i in range(len(vertex.sectors))]

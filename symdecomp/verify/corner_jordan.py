@@ -12,6 +12,10 @@ exact 2-ring matrix, entries in ``Q(cos(pi/k))``) this module computes, over tha
   sharp ray, nor ``O`` (:attr:`CornerJordan.chain_on_rays`). It must be so: the boundary curves read only their own
   points and have a simple ``1/2`` each, so no ``m 2^-m`` term can reach them.
 
+The block comes with BLZ's weight at ``theta_k = pi/k``, a corner of angle ``pi`` (what ``SharpVertex.corner`` takes
+without an angle): at a convex angle such as ``pi/2`` or ``3 pi/4`` the sine mode's eigenvalue is not ``1/2``, the
+two boundary tangents are the only eigenvectors, and Zorin's test decides (C1 at 2 and 3 faces).
+
 What it means for the limit surface (why the verdict stays *undecided*): ``S^m g = 2^-m g + m 2^(1-m) e``, so for
 data with a component ``c_g`` along ``g`` the level-``m`` net near ``O`` is ``m 2^(1-m) c_g e`` plus ``2^-m`` terms:
 the limit is dominated by the chain's eigenfunction ``f_e``, which vanishes on both boundary curves. Zorin's
@@ -142,9 +146,11 @@ def kernel(rows: Rows, mod: flint.fmpq_poly, weight: sp.Expr) -> list[list[Field
     return rational_left_eigenspace(M, 0, range(n))
 
 
-def corner_jordan(scheme: Scheme, k: int) -> CornerJordan:
-    """The structure of the eigenvalue ``1/2`` of a corner sector of ``k`` faces (module docstring)."""
-    sm = sector_matrices(scheme, SharpVertex.corner(k, scheme.lattice))  # type: ignore[operator]  # corner: a property and a constructor
+def corner_jordan(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> CornerJordan:
+    """The structure of the eigenvalue ``1/2`` of a corner sector of ``k`` faces (module docstring); ``angle``: the
+    corner's, for BLZ's ``theta_k = angle/k`` (``None``: ``pi``)."""
+    vertex = SharpVertex.corner(k, scheme.lattice, angle)  # type: ignore[operator]  # corner: a property and a constructor
+    sm = sector_matrices(scheme, vertex)
     A, mod = shifted_rows(sm, HALF)
     weight = sp.Integer(0) if sm.weight is None else sm.weight
     field = field_name(FieldMatrix((), mod, weight))

@@ -92,3 +92,17 @@ def test_the_command_line_states_the_jordan_block(capsys):
     for line in lines:
         assert "undecided" in line and "dim ker(S - I/2) = 2, dim ker(S - I/2)^2 = 3 (exact over Q)" in line
         assert "vanishes on both boundary curves" in line
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_the_block_is_the_angle_pi_s_and_a_convex_corner_has_none(name):
+    # theta_k = angle/k: at angle pi the sine mode joins 1/2 (the block); at pi/2 and 3 pi/4 only the two boundary
+    # tangents have 1/2, and Zorin's test decides
+    scheme = load_scheme(name)
+    assert corner_jordan(scheme, 3, sp.pi).block == 2
+    for angle in (sp.pi / 2, 3 * sp.pi / 4):
+        found = corner_jordan(scheme, 3, angle)
+        assert (found.eigenvectors, found.generalized, found.block) == (2, 2, 1)
+        assert c1_mirror_blocks(scheme, SharpVertex.corner(3, scheme.lattice, angle)).verdict is C1Verdict.C1
+    dense = c1_mirror_blocks(scheme, SharpVertex.corner(2, scheme.lattice, sp.pi))
+    assert dense.verdict is C1Verdict.UNDECIDED and "a Jordan block of size 2" in dense.reason

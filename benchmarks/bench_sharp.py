@@ -9,7 +9,9 @@ load 3 to 5 from other jobs, so these are pessimistic): ``c1 --boundary --k 1:10
 for Loop, 31.4 s for ``catmull-clark-blz`` (all 1000 certified C1; 64.3 s in the run before, at load 3 to 4, and 4 min
 9 s with 65..1000 undecided before the closed-form modes) and 31.8 s for ``loop-blz`` (40.3 s before); ``--corner``
 9.6 s (Catmull-Clark), 3.8 s (Loop), 6.8 s (``catmull-clark-blz``: undecided from k = 2 on, its eigenvalue 1/2 is
-triple, so Zorin's condition that lambda_2 be strictly dominant fails and the test does not apply); each dense test at
+triple with a Jordan block of size 2, so Zorin's condition that lambda_2 be strictly dominant fails and the test does
+not apply; the block is now computed for the reason, exact kernels in Q(cos(pi/k)) up to 12 faces: about 2 s at 8
+faces, not measured side by side here); each dense test at
 k = 1..8 1.1 to 4.5 s. Side by side with the code before, fresh processes at load 2: ``catmull-clark-blz`` boundary
 26.9 s (51.8 CPU seconds) before, 15.6 s (28.8) after; ``loop-blz`` 30.1 CPU seconds before, 24.0 after. Per ``k``
 (``catmull-clark-blz``, CPU) the closed-form route took 45 ms: the wide ring's nets 15, the Jacobian's certificate 20,

@@ -26,7 +26,8 @@ eigenvectors in closed form on a few faces per sector (:mod:`.fourier_map`, any 
 route does not decide) from the eigenvectors in the mirror parts the blocks name (:func:`map_from_blocks`: no
 characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces). An exact
 tie ``lambda_2 = lambda_3`` (one value of the blocks, its multiplicity exact; BLZ's corners) is final: the dense test
-finds the same multiple root, and is not run.
+finds the same multiple root, and is not run. At a corner's ``1/2`` the reason adds the root's Jordan structure,
+computed exactly (:mod:`.corner_jordan`: two eigenvectors and a block of size 2 at BLZ's corners).
 Everything else (other multiple subdominant eigenvalues, a map not certified) goes to the dense test up to
 :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
 rules where no closed form is found past the map's faces: the spectral and tangent conditions hold).
@@ -41,6 +42,7 @@ Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass
@@ -58,6 +60,7 @@ from symdecomp.validate import check_depth
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
 from symdecomp.verify.c1_sector_matrix import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
+from symdecomp.verify.corner_jordan import HALF, JORDAN_FACES, corner_jordan
 from symdecomp.verify.fourier_map import applies, fourier_map
 from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
@@ -196,6 +199,27 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
                           block_root(top[0].ball, 0, 1), gap, float(third)), picks
 
 
+def _tie_reason(scheme, vertex: SharpVertex, k: int, reason: str, picks: list) -> str:
+    """An exact tie at a corner's ``1/2`` (BLZ's corners): the reason with the eigenvalue's Jordan structure, computed
+    exactly (:mod:`.corner_jordan`) up to :data:`~.corner_jordan.JORDAN_FACES` faces."""
+    if not vertex.corner or len(picks) < 2 or not picks[1][0].contains(flint.acb(HALF.numerator) / HALF.denominator):
+        return reason
+    if k > JORDAN_FACES:
+        return f"{reason}; the Jordan structure of 1/2 is computed for at most {JORDAN_FACES} faces"
+    return f"{reason}; {corner_jordan(scheme, k).reason()}"
+
+
+def _with_jordan(scheme, vertex: SharpVertex, result: SharpC1Result) -> SharpC1Result:
+    """The dense test's undecided verdict at a corner given an angle, with the exact Jordan structure of ``1/2`` where
+    ``1/2`` is a multiple root there (:mod:`.corner_jordan`, at most :data:`~.corner_jordan.JORDAN_FACES` faces)."""
+    if not vertex.corner or result.verdict is not C1Verdict.UNDECIDED or vertex.faces > JORDAN_FACES:
+        return result
+    found = corner_jordan(scheme, vertex.faces, vertex.angle)
+    if found.generalized < 3:
+        return result
+    return dataclasses.replace(result, reason=f"{result.reason}; {found.reason()}")
+
+
 def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:
     """Conditions 1 and 2 in one sector of ``k`` faces (module docstring), then 3-5 by :func:`map_from_blocks` (``max_depth``:
     its deepest subdivision; ``None``: the blocks alone)."""
@@ -209,7 +233,9 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
     if tangent and tangent[0] is C1Verdict.NOT_C1:
         return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:  # an exact tie is final: the dense test finds the same multiple eigenvalue
-        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas, final=_exact_tie(lead))
+        tie = _exact_tie(lead)
+        return SectorFinding(spectral.status, _tie_reason(scheme, vertex, k, spectral.reason, picks) if tie else spectral.reason,
+                             spectral, lambdas, final=tie)
     if tangent:
         return SectorFinding(tangent[0], tangent[1], spectral, lambdas)
     if max_depth is None:
@@ -274,7 +300,7 @@ def c1_mirror_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_fac
     if not sharp_sectors or vertex.angle is not None or vertex.lattice is not scheme.lattice:
         if vertex.angle is not None and max(vertex.sectors) > map_faces:
             raise NotApplicableError(f"a corner given an angle is tested on its dense matrices, at most {map_faces} faces")
-        return c1_sharp_test(scheme, vertex, max_depth=max_depth)
+        return _with_jordan(scheme, vertex, c1_sharp_test(scheme, vertex, max_depth=max_depth))
     try:
         with flint.ctx.workprec(64):
             found = [_sector(scheme, vertex, i, max_depth if certify_map else None) for i in range(len(vertex.sectors))]

@@ -444,11 +444,13 @@ def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callabl
                           "a regular, injective characteristic map, certified (Arb balls)")
                   if s.name == "reif-per-valence" else s for s in result.steps)
     failed = [s for s in spectral if s.status == "failed"]
-    if result.status == "refuted" or result.status == "undecided" and result.certified[1] < last:
+    if result.status == "refuted":
         return replace(result, steps=steps)
-    if failed:  # each one refuted by the per-valence route at its valence (_against_per_valence)
+    if failed:  # each one refuted by the per-valence route at its valence (_against_per_valence), whatever 3..last gave
         n = failed[0].valences[0]
         return replace(result, steps=steps, status="refuted", failure=n, summary=f"C1 fails at n = {n}: {failed[0].text}")
+    if result.status == "undecided" and result.certified[1] < last:
+        return replace(result, steps=steps)
     refuted = _witness_beyond(spectral, last, certify)
     if refuted is not None:
         n, step, reason = refuted

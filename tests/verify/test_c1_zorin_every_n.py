@@ -135,6 +135,9 @@ def test_a_centre_weight_at_frequency_two_above_lambda_one_is_refuted_at_the_fir
     certified = SimpleNamespace(verdict="c1", reason="certified by the stub of this test")
     result = c1_zorin_every_n(scheme, 4, certify=lambda n: certified, per_valence=False)
     assert result.status == "refuted" and result.failure == 16 and result.summary.startswith("C1 fails at n = 16")
+    # a valence below where Zorin's test is undecided does not hide the counterexample at n = 16
+    open_at_3 = SimpleNamespace(verdict="undecided", reason="undecided by the stub of this test")
+    assert c1_zorin_every_n(scheme, 4, certify=lambda n: open_at_3, per_valence=False).failure == 16
     # sigma(2) = 3/4 is an eigenvalue of the explicit matrix at that valence: its characteristic polynomial vanishes there
     assert _eigenvalues_near(zoo_matrix(scheme, 16).matrix, sp.Rational(3, 4)) >= 1
 

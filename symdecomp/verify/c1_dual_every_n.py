@@ -144,7 +144,8 @@ def _first_failure(expr: sp.Expr, start: int) -> int | None:
 
 
 def _step(name: str, text: str, facts: list[sp.Expr], start: int, formulas: tuple[tuple[str, object], ...]) -> EveryNStep:
-    """A step that holds when every fact is positive for ``n >= start``; failed with the first valence that breaks one."""
+    """A step that holds when every fact is positive for ``n >= start``; failed with the first valence that breaks one
+    (computed), open where none is found."""
     shown = [_positive(f, start) for f in facts]
     if all(s is True for s in shown):
         return EveryNStep(text, "proved", (start, None), name, formulas)
@@ -154,7 +155,8 @@ def _step(name: str, text: str, facts: list[sp.Expr], start: int, formulas: tupl
                           "in t = cos(2 pi/n)); the valences are tested one by one", "open", (start, None), name, formulas)
     failures = sorted((k, f) for f, s in zip(facts, shown) if s is False for k in [_first_failure(f, start)] if k is not None)
     if not failures:
-        return EveryNStep(f"{text}: not shown for every n >= {start}", "failed", (start, None), name, formulas)
+        # a sign not shown with no valence where it fails computed: nothing is disproved
+        return EveryNStep(f"{text}: not shown for every n >= {start}", "open", (start, None), name, formulas)
     first, fact = failures[0]
     beyond = _positive(-fact, first + 1) is True  # negative at every valence after the first failure
     where = f"it fails at n = {first}" + (" and at every n after it" if beyond else "")

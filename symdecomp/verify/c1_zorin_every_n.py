@@ -23,14 +23,19 @@ the valence ``N0`` the form holds from:
 
 Each "every root below ``lambda_1``" is the Schur-Cohn test of :func:`~symdecomp.algebra.schur_cohn.schur_cohn_conditions`
 on ``p(lambda_1 y)``: finitely many polynomials in ``t``, each shown positive on its range by Sturm sequences, on the
-half-open range where one vanishes only at ``t = 1`` (no frequency reaches it). Where one is not positive, the step
-fails with the computed witness: a ``t`` where it is not, and a valence ``n`` and frequency ``k`` where the block has an
-eigenvalue of modulus ``>= lambda_1`` (certified in Arb). The valences ``3..N0-1`` (``n = 3, 4`` have rules of
+half-open range where one vanishes only at ``t = 1`` (no frequency reaches it). Where one is not positive, the
+computed witness is a ``t`` where it is not, and a valence ``n`` and frequency ``k`` where the block has an eigenvalue
+of modulus ``>= lambda_1`` (certified in Arb). That shows the proof's ``lambda_1`` is not the dominant eigenvalue at
+``n``, not that C1 fails (another eigenvalue may be the subdominant one of a C1 scheme): the step fails only where the
+per-valence route's spectral conditions refute C1 at that ``n`` (a dominant eigenvalue not real, not double, not of one
+pair of frequencies), citing them; otherwise it is ``open``, and :func:`c1_zorin_every_n` asks Zorin's test at a
+witness beyond the certified valences, refuting with that ``n`` where it fails. The valences ``3..N0-1`` (``n = 3, 4`` have rules of
 their own) are the per-valence route's spectral conditions (:func:`~symdecomp.verify.zoo_characteristic.spectral_conditions`).
 
 This is the spectral half of C1. The characteristic map is certified per valence by Zorin's test
 (:mod:`symdecomp.verify.c1_zorin`) for ``n = 3..last`` and is **not** proved for every ``n`` here, so the verdict for
-every ``n`` (:func:`c1_zorin_every_n`) is ``undecided`` with that reason, never ``proved`` from the spectrum alone.
+every ``n`` (:func:`c1_zorin_every_n`) is ``undecided`` with that reason, never ``proved`` from the spectrum alone, and
+``refuted`` only with a valence where the per-valence route refutes C1.
 """
 
 from __future__ import annotations
@@ -55,6 +60,7 @@ from symdecomp.verify.c1_uniform import t_lower_bound
 
 if TYPE_CHECKING:
     from symdecomp.analysis.zoo_structure import ZooStructure
+    from symdecomp.verify.c1_spectrum import SpectralResult
 
 __all__ = ["FrequencyPolynomials", "frequency_polynomials", "zorin_lambda_one", "zorin_spectral_every_n", "c1_zorin_every_n"]
 
@@ -282,18 +288,66 @@ def _own_rules(scheme: StencilScheme) -> str:
     return f"; n = {', '.join(map(str, own))} {'has rules of its' if len(own) == 1 else 'have rules of their'} own"
 
 
-def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
-    """The valences below the structural form's: the per-valence route's spectral conditions, exactly certified."""
+def _spectral_at(scheme: StencilScheme, n: int) -> SpectralResult:
+    """The per-valence route's spectral conditions at ``n`` (exact factors of each block, certified gap): a
+    :class:`~symdecomp.verify.c1_spectrum.SpectralResult`."""
     from symdecomp.analysis.zoo_matrix import zoo_matrix
     from symdecomp.analysis.zoo_spectrum import zoo_spectrum
-    from symdecomp.verify.result import C1Verdict
     from symdecomp.verify.zoo_characteristic import real_matrix, spectral_conditions
+
+    return spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n, real_matrix=real_matrix(zoo_matrix(scheme, n)))
+
+
+def _against_per_valence(scheme: StencilScheme, step: EveryNStep, seen: dict[int, SpectralResult]) -> EveryNStep:
+    """A failed step of the proof for every ``n`` against the per-valence route at its witness valence.
+
+    A root of modulus ``>= lambda_1`` shows that the proof's ``lambda_1`` (a root of a linear factor of ``p_1``) is not
+    the dominant eigenvalue there; it does not disprove C1 by itself: another eigenvalue (another root of ``p_1``,
+    another frequency) may be the subdominant one of a C1 scheme. The step stays ``failed`` only where C1 is refuted at
+    that valence: the per-valence route's spectral conditions fail (a dominant eigenvalue not real, not double, not of
+    one pair of frequencies ``j, n - j``), or they hold with ``j != 1`` (:func:`_winding`); otherwise it is ``open``
+    with what the per-valence route found. A step without a witness is checked at its first valence; ``seen``: the
+    spectral results by valence, computed once."""
+    from symdecomp.verify.result import C1Verdict
+
+    if step.status != "failed":
+        return step
+    n = step.valences[1] if step.valences[1] is not None else step.valences[0]
+    r = seen[n] = seen.get(n) or _spectral_at(scheme, n)
+    why = r.reason if r.status is C1Verdict.NOT_C1 else _winding(r) if r.status is C1Verdict.C1 else None
+    if why is not None:
+        return replace(step, text=f"{step.text}; at n = {n} the per-valence route refutes C1: {why}", valences=(n, n))
+    found = ("its spectral conditions hold (the subdominant eigenvalue is another one, of frequencies 1, n - 1)"
+             if r.status is C1Verdict.C1 else f"it is undecided ({r.reason})")
+    return replace(step, status="open", text=f"{step.text}; this shows that the proof's lambda_1 is not the dominant "
+                   f"eigenvalue at n = {n}, not that C1 fails: at n = {n} the per-valence route finds {found}",
+                   valences=(n, n) if step.valences[1] is not None else step.valences)
+
+
+def _winding(r: SpectralResult) -> str | None:
+    """Why a real double subdominant eigenvalue of frequencies ``j, n - j`` with ``j != 1`` excludes C1, or ``None``.
+
+    Its eigenvectors make the characteristic map commute with the rotation by one sector up to the rotation by
+    ``2 pi j/n``, so the image of a loop around the centre winds ``j`` times modulo ``n``: never ``+-1`` for
+    ``2 <= j <= n - 2``, and a regular, injective characteristic map, which C1 needs (Reif's and Zorin's necessary
+    condition), winds once."""
+    low = min(r.subdominant.frequencies) if r.subdominant is not None else 1
+    if low == 1:
+        return None
+    return (f"the subdominant eigenvalue (real, double) is of the frequencies {low}, {r.n - low}, not "
+            f"1, n - 1: its characteristic map winds {low} times modulo n = {r.n} around the centre, so it is not "
+            "injective, which C1 needs")
+
+
+def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
+    """The valences below the structural form's: the per-valence route's spectral conditions, exactly certified."""
+    from symdecomp.verify.result import C1Verdict
 
     if start <= 3:
         return None
     regular = lattice(scheme.lattice).regular_valence
     for n in (n for n in range(3, start) if n != regular):
-        r = spectral_conditions(zoo_spectrum(scheme, n, None, jordan=False), n, real_matrix=real_matrix(zoo_matrix(scheme, n)))
+        r = _spectral_at(scheme, n)
         if r.status is not C1Verdict.C1:
             return EveryNStep(r.reason, "failed" if r.status is C1Verdict.NOT_C1 else "open", (n, n),
                               "below-structural")
@@ -301,6 +355,19 @@ def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
                       "the spectral conditions certified valence by valence (exact factors of each block); "
                       f"n = {regular} is the regular vertex, whose rules Zorin's test checks on their own", "verified",
                       (3, start - 1), "below-structural")
+
+
+def _witness_beyond(spectral: tuple[EveryNStep, ...], last: int, certify: Callable[[int], object]
+                    ) -> tuple[int, EveryNStep, str] | None:
+    """``(n, step, reason)``: an open step's witness valence beyond ``last`` (the valences ``3..last`` are certified
+    already) where the per-valence test ``certify(n)`` refutes C1, the first such; ``None`` where none does."""
+    for step in spectral:
+        n = step.valences[1]
+        if step.status == "open" and n is not None and n == step.valences[0] and n > last:
+            r = certify(n)
+            if getattr(r, "verdict", None) == "not-c1":
+                return n, step, str(getattr(r, "reason", ""))
+    return None
 
 
 def zorin_lambda_one(scheme: StencilScheme, polys: FrequencyPolynomials | None = None) -> sp.Expr | None:
@@ -348,6 +415,8 @@ def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True,
         else:
             steps.append(_disc_step("other-frequencies", f"every other k ({reach + 1} <= k <= n - {reach + 1}, "
                                     "t = cos(2 pi k/n) in [-1, 1))", polys.other, lam, sp.Integer(-1), None, start, reach))
+    seen: dict[int, SpectralResult] = {}
+    steps = [_against_per_valence(scheme, s, seen) for s in steps]
     below = _per_valence(scheme, start) if per_valence else None
     return tuple(steps) + ((below,) if below else ())
 
@@ -357,7 +426,8 @@ def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callabl
                      per_valence: bool = True, polys: FrequencyPolynomials | None = None) -> EveryNResult:
     """C1 for every valence as far as it is shown: the spectral steps for every ``n``, Zorin's test at ``3..last``
     (``certify(n)``, by default :func:`~symdecomp.verify.c1_zoo.c1_zoo`); the map is not proved for every ``n``, so the
-    verdict is ``undecided`` (or ``refuted`` with a valence where a step or the test fails). ``polys``: the scheme's
+    verdict is ``undecided`` (or ``refuted`` with a valence where the per-valence route refutes C1: Zorin's test, or the
+    spectral conditions at a failed step's witness). ``polys``: the scheme's
     :func:`frequency_polynomials` where the caller has them already."""
     from symdecomp.verify.c1_zoo import c1_zoo
 
@@ -374,12 +444,19 @@ def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callabl
                           "characteristic map, certified (Arb balls)")
                   if s.name == "reif-per-valence" else s for s in result.steps)
     failed = [s for s in spectral if s.status == "failed"]
-    if result.status == "refuted" or result.status == "undecided" and result.certified[1] < last:
+    if result.status == "refuted":
         return replace(result, steps=steps)
-    if failed:
-        n = failed[0].valences[1]
-        return replace(result, steps=steps, status="refuted" if n is not None else "undecided", failure=n,
-                       summary=f"a spectral condition fails: {failed[0].text}")
+    if failed:  # each one refuted by the per-valence route at its valence (_against_per_valence), whatever 3..last gave
+        n = failed[0].valences[0]
+        return replace(result, steps=steps, status="refuted", failure=n, summary=f"C1 fails at n = {n}: {failed[0].text}")
+    if result.status == "undecided" and result.certified[1] < last:
+        return replace(result, steps=steps)
+    refuted = _witness_beyond(spectral, last, certify)
+    if refuted is not None:
+        n, step, reason = refuted
+        return replace(result, steps=steps + (EveryNStep(reason, "failed", (n, n), "zorin-at-witness"),), status="refuted",
+                       failure=n, summary=f"C1 fails at n = {n}, where Zorin's test refutes it ({reason}); the proof's step "
+                       f"{step.name} had found that valence: {step.text}")
     shown = all(s.status in ("proved", "verified") for s in spectral)
     spectral_text = ("the spectral conditions hold for every n (proved for n >= "
                      f"{max(s.valences[0] for s in spectral)}, certified per valence below)" if shown else

@@ -83,8 +83,12 @@ def spectral_conditions(spectrum: RingSpectrum, n: int, *, real_matrix: bool = F
         return SpectralResult(n, C1Verdict.NOT_C1, f"the subdominant eigenvalue {lam.text} is not a real double eigenvalue "
                               f"of one pair of frequencies j, n - j (its frequencies: {', '.join(map(str, pair))})",
                               second=float(bound))
+    # a root of a block with omega = exp(2 pi i j/n) in it has exp(i pi q) in its exact form, which the compiler takes as
+    # cos + i sin; the value is real (above), so the real part of its ball is the ball of the value
+    exact = sp.re(lam.exact.rewrite(sp.cos) if lam.exact.has(sp.exp) else lam.exact)
     with flint.ctx.workprec(EIGENVECTOR_BITS):  # the exact value as a narrow ball: the eigenvector is solved with it
-        eigen = block_root(flint.acb(compile_expression(sp.re(lam.exact), (), "arb")()), pair[0], 2, n)
+        value = compile_expression(exact, (), "arb")()
+        eigen = block_root(flint.acb(value.real if isinstance(value, flint.acb) else value), pair[0], 2, n)
     return SpectralResult(n, C1Verdict.C1, "spectral conditions hold", eigen, float_down(gap), float(bound))
 
 

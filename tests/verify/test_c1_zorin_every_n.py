@@ -9,6 +9,7 @@ weights in a variant file flips a step, with the valence where it fails computed
 from __future__ import annotations
 
 from pathlib import Path
+from types import SimpleNamespace
 
 import flint
 import mpmath
@@ -104,6 +105,8 @@ def test_a_tension_above_one_quarter_refutes_the_other_frequencies_with_a_comput
     other = steps["other-frequencies"]
     assert other.status == "failed" and other.valences == (16, 16)
     assert "n = 16, k = 3" in other.text and "0 for every t" in other.text
+    # it stays failed because the per-valence route refutes at that valence: 3/5 is not one pair's double eigenvalue
+    assert "at n = 16 the per-valence route refutes C1" in other.text and "not a real double eigenvalue" in other.text
     # the explicit matrix at n = 16 has the eigenvalue 2w = 3/5 (the lambda_1 derived) more than twice
     lam = next(v for k, v in steps["lambda-one"].formulas if k == r"\lambda_1")
     assert lam == 2 * w
@@ -127,8 +130,52 @@ def test_a_centre_weight_at_frequency_two_above_lambda_one_is_refuted_at_the_fir
     steps = {s.name: s for s in zorin_spectral_every_n(scheme, per_valence=False)}
     assert steps["other-frequencies"].status == "proved"
     assert steps["frequency-exceptional"].status == "failed" and steps["frequency-exceptional"].valences == (16, 16)
+    # the per-valence route refutes there: the subdominant pair is of the frequencies 2, 14, so the map winds twice
+    assert "of the frequencies 2, 14, not 1, n - 1" in steps["frequency-exceptional"].text
+    certified = SimpleNamespace(verdict="c1", reason="certified by the stub of this test")
+    result = c1_zorin_every_n(scheme, 4, certify=lambda n: certified, per_valence=False)
+    assert result.status == "refuted" and result.failure == 16 and result.summary.startswith("C1 fails at n = 16")
+    # a valence below where Zorin's test is undecided does not hide the counterexample at n = 16
+    open_at_3 = SimpleNamespace(verdict="undecided", reason="undecided by the stub of this test")
+    assert c1_zorin_every_n(scheme, 4, certify=lambda n: open_at_3, per_valence=False).failure == 16
     # sigma(2) = 3/4 is an eigenvalue of the explicit matrix at that valence: its characteristic polynomial vanishes there
     assert _eigenvalues_near(zoo_matrix(scheme, 16).matrix, sp.Rational(3, 4)) >= 1
+
+
+def _reaching() -> object:
+    """The butterfly with the extraordinary edge rule also reading the vertex two rings out along its spoke (weight 1/16,
+    taken from the centre's 3/4): the frequency-1 block gains ``x^2 - sigma(1) x - 1/16`` besides the tension's
+    linear factor."""
+    rule = 'origin = "irregular"\nterms = [\n  {walk = "", weight = "3/4"},'
+    return variant(rule, rule.replace('"3/4"', '"11/16"') + '\n  {walk = "next twin next twin next next", weight = "1/16"},',
+                   "reaching")
+
+
+@pytest.mark.slow
+def test_a_root_of_p1_above_the_proofs_lambda_one_leaves_c1_undecided_not_refuted():
+    scheme = _reaching()
+    polys = frequency_polynomials(scheme)
+    steps = {s.name: s for s in zorin_spectral_every_n(scheme, per_valence=False, polys=polys)}
+    lam = dict(steps["lambda-one"].formulas)[r"\lambda_1"]
+    roots = sp.Poly(polys.at[1], X).real_roots()
+    assert steps["lambda-one"].status == "proved" and lam in roots and max(roots) > lam  # a root of p_1 above lambda_1
+    one = steps["frequency-one"]
+    assert one.status == "open" and one.valences == (16, 16) and "not that C1 fails" in one.text
+    # the explicit matrix at n = 16: the largest root of p_1 is a double eigenvalue, and no eigenvalue besides 1 is larger
+    top = max(roots)
+    assert _eigenvalues_near(zoo_matrix(scheme, 16).matrix, top) == 2
+    with mpmath.workdps(DIGITS):
+        A = mpmath.matrix([[mpmath.mpf(str(sp.N(e, DIGITS + 10))) for e in row] for row in zoo_matrix(scheme, 16).matrix.tolist()])
+        moduli = sorted((abs(z) for z in mpmath.eig(A, left=False, right=False)), reverse=True)
+        assert abs(moduli[0] - 1) < mpmath.mpf(10) ** -30
+        assert abs(moduli[1] - mpmath.mpf(str(sp.N(top, DIGITS + 10)))) < mpmath.mpf(10) ** -30
+    certified = SimpleNamespace(verdict="c1", reason="certified by the stub of this test")
+    result = c1_zorin_every_n(scheme, 4, certify=lambda n: certified, per_valence=False, polys=polys)
+    assert result.status == "undecided" and result.failure is None
+    # a per-valence test that refutes at the witness valence (beyond the certified ones) is what refutes, cited with n
+    refuting = SimpleNamespace(verdict="not-c1", reason="refuted by the stub of this test")
+    cited = c1_zorin_every_n(scheme, 4, certify=lambda n: refuting if n == 16 else certified, per_valence=False, polys=polys)
+    assert cited.status == "refuted" and cited.failure == 16 and "refuted by the stub of this test" in cited.summary
 
 
 @pytest.mark.slow

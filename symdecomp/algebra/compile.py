@@ -10,6 +10,7 @@ from __future__ import annotations
 import functools
 import operator
 from collections.abc import Callable
+from typing import Any
 
 import flint
 import mpmath
@@ -74,13 +75,53 @@ _ARB_OPS = {
 }
 
 
+def _is_power_of_two(q: int) -> bool:
+    return q > 1 and q & (q - 1) == 0
+
+
+def _repeated_sqrt(sqrt: Callable, x: Any, times: int) -> Any:
+    for _ in range(times):
+        x = sqrt(x)
+    return x
+
+
+_SHOWN = 160  # characters of an unsupported subexpression an error line shows
+
+
+def _abbreviated(e: sp.Expr) -> str:
+    """The text of ``e`` for a one-line error: its head and the number of characters left out when it is long."""
+    text = str(e)
+    if len(text) <= _SHOWN:
+        return text
+    return f"{text[:_SHOWN]}... ({len(text) - _SHOWN} more characters; a {type(e).__name__})"
+
+
+def _power(exponent: sp.Expr, base: Callable, ops: dict) -> Callable | None:
+    """``base ** exponent`` for an integer exponent or one ``p/2**j``; None for any other exponent."""
+    if exponent == -sp.Rational(1, 2):
+        return lambda args: ops["const"](1, 1) / ops["sqrt"](base(args))
+    if exponent.is_Integer:
+        k = int(exponent)
+        return lambda args: ops["pow"](base(args), k)
+    if exponent.is_Rational and _is_power_of_two(int(exponent.q)):
+        # principal z**(p/2**j) = (sqrt applied j times to z)**p: the principal square root's argument lies
+        # in (-pi/2, pi/2], so log(sqrt(z)) = log(z)/2 and each step halves the principal logarithm
+        k, halvings = int(exponent.p), int(exponent.q).bit_length() - 1
+        if k == 1:
+            return lambda args: _repeated_sqrt(ops["sqrt"], base(args), halvings)
+        return lambda args: ops["pow"](_repeated_sqrt(ops["sqrt"], base(args), halvings), k)
+    return None
+
+
 def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: str = "mpmath") -> Callable:
     """Turn a sympy expression into a fast function of ``variables`` (mpmath or Arb).
 
     Rationals stay exact (``p/q`` at the working precision, or an exact Arb ball), so the Arb
     version is a rigorous enclosure; ``engine="fmpq"`` evaluates a rational function exactly
-    (``flint.fmpq``) and refuses square roots and the like. Supported: ``+ * **``, ``sqrt``, ``Abs``, ``cos``,
-    ``sin``, ``pi``, ``I``; anything else raises :class:`UnsupportedExpressionError`.
+    (``flint.fmpq``) and refuses square roots and the like. Supported: ``+ *``, ``**`` with an integer exponent
+    or one ``p/2**j`` (principal roots by repeated square roots), ``sqrt``, ``Abs``, ``cos``, ``sin``, ``pi``, ``I``;
+    anything else raises :class:`UnsupportedExpressionError`, whose one line shows at most the head of a long
+    subexpression.
 
     >>> x = sp.Symbol("x")
     >>> f = compile_expression(sp.sqrt(x**2 + 1) / 3, (x,))
@@ -108,19 +149,8 @@ def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: 
         if isinstance(e, sp.Mul):
             parts = [build(a) for a in e.args]
             return lambda args: ops["mul"]([f(args) for f in parts])
-        if isinstance(e, sp.Pow):
-            base = build(e.base)
-            if e.exp == sp.Rational(1, 2):
-                return lambda args: ops["sqrt"](base(args))
-            if e.exp == -sp.Rational(1, 2):
-                one = build(sp.Integer(1))
-                return lambda args: one(args) / ops["sqrt"](base(args))
-            if e.exp.is_Integer:
-                k = int(e.exp)
-                return lambda args: ops["pow"](base(args), k)
-            if e.exp.is_Rational and e.exp.q == 2:
-                k = int(e.exp.p)
-                return lambda args: ops["pow"](ops["sqrt"](base(args)), k)
+        if isinstance(e, sp.Pow) and (power := _power(e.exp, build(e.base), ops)) is not None:
+            return power
         if isinstance(e, sp.Abs):
             inner = build(e.args[0])
             return lambda args: ops["abs"](inner(args))
@@ -128,7 +158,7 @@ def compile_expression(expr: sp.Expr, variables: tuple[sp.Symbol, ...], engine: 
             inner = build(e.args[0])
             name = "cos" if isinstance(e, sp.cos) else "sin"
             return lambda args: ops[name](inner(args))
-        raise UnsupportedExpressionError(f"cannot evaluate {e} (in a closed form) with {engine}")
+        raise UnsupportedExpressionError(f"cannot evaluate {_abbreviated(e)} (in a closed form) with {engine}")
 
     f = build(sp.sympify(expr, strict=True))
     return lambda *args: f(args)

@@ -80,7 +80,7 @@ from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding, injective_condition
 from symdecomp.verify.sector_ring import arc_sweeps, irregular_rows, jacobian_sign, level_one_map, ring_faces, ring_nets, wide_nets
 
-__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "sector_map", "deciding_sector"]
+__all__ = ["SharpC1Result", "c1_sharp_test", "SHARP_METHOD", "sector_map", "vector_map", "deciding_sector"]
 
 #: The method, as reported with each verdict.
 SHARP_METHOD = ("Zorin's conditions per sector: spectrum of the sector's exact 2-ring matrix (mirror blocks; exact roots, or "
@@ -168,10 +168,9 @@ def _real_vector(sm, pick) -> list | None:
     return None if big.contains(0) else [x / big for x in vec]
 
 
-def _chi(sm, picks):
-    """``{level-1 label: chi}`` (complex balls ``x + i y``), the sharp rays' values exactly linear (module docstring),
-    and the ray directions ``(d_0, d_k)`` (``None`` if an eigenvector is not certified)."""
-    vecs = [_real_vector(sm, p) for p in picks]
+def _chi(sm, vecs):
+    """``{level-1 label: chi}`` (complex balls ``x + i y``) of the two real vectors ``vecs`` (``None``: not certified), the
+    sharp rays' values exactly linear (module docstring), and the ray directions ``(d_0, d_k)``."""
     if any(v is None for v in vecs):
         return None, None
     index = {lab: i for i, lab in enumerate(sm.labels)}
@@ -207,16 +206,23 @@ def _sector_test(scheme, vertex, sector: int, max_depth: int) -> SectorFinding:
 def sector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, picks: list, max_depth: int) -> SectorFinding:
     """Conditions 3-5 on the sector ``sm`` of ``vertex``, once conditions 1 and 2 hold: the characteristic map of the two
     subdominant eigenvectors (``picks``: ``(value, part, in_ring)``, :func:`~.mirror_parts.sector_eigenvector`)."""
-    lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
+    vecs = [_real_vector(sm, p) for p in picks]
+    return vector_map(scheme, vertex, sm, spectral, vecs, tuple(p[0].real for p in picks), max_depth)
+
+
+def vector_map(scheme, vertex: SharpVertex, sm, spectral: SpectralResult, vecs: list, values: tuple, max_depth: int) -> SectorFinding:
+    """Conditions 3-5 on the map of two real vectors ``vecs`` (real balls, matrix order; ``None``: not certified), each an
+    eigenvector of the sector's matrix for its eigenvalue in ``values`` (real balls: the wide ring's nets read them)."""
+    lambdas = tuple(float(v.mid()) for v in values) or None
     wide = (why := modified_edges(scheme, vertex, sm.k)) is not None
     if wide and irregular_rows(sm):  # the spectral conditions hold; no ring of spline patches is known
         return SectorFinding(C1Verdict.UNDECIDED, f"{spectral.reason}; the characteristic map is not certified: {why}", spectral, lambdas)
-    chi, dirs = _chi(sm, picks)
+    chi, dirs = _chi(sm, vecs)
     if chi is None:
         return SectorFinding(C1Verdict.UNDECIDED, "an eigenvector is not certified", spectral, lambdas)
     if any(d.contains(0) for d in dirs):
         return SectorFinding(C1Verdict.UNDECIDED, "a sharp ray's image is not shown to be non-degenerate", spectral, lambdas)
-    nets = wide_nets(sm, chi, tuple(p[0].real for p in picks)) if wide else ring_nets(sm, chi)
+    nets = wide_nets(sm, chi, values) if wide else ring_nets(sm, chi)
     cert = jacobian_sign(sm, nets, max_depth)
     if cert.status == "changes":
         per = len(ring_faces(sm.lattice)) if wide else 3

@@ -48,7 +48,7 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.mirror_parts import NEAR, SectorMatrices, sector_matrices
 
-__all__ = ["HALF", "JORDAN_FACES", "CornerJordan", "corner_jordan", "kernel", "shifted_rows"]
+__all__ = ["HALF", "JORDAN_FACES", "CornerJordan", "JordanChain", "corner_jordan", "jordan_chain", "kernel", "shifted_rows"]
 
 #: Sparse rows ``{i: {j: entry}}`` of a matrix over the field.
 Rows = dict[int, dict[int, FieldElement]]
@@ -146,23 +146,54 @@ def kernel(rows: Rows, mod: flint.fmpq_poly, weight: sp.Expr) -> list[list[Field
     return rational_left_eigenspace(M, 0, range(n))
 
 
-def corner_jordan(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> CornerJordan:
-    """The structure of the eigenvalue ``1/2`` of a corner sector of ``k`` faces (module docstring); ``angle``: the
-    corner's, for BLZ's ``theta_k = angle/k`` (``None``: ``pi``)."""
+@dataclass(frozen=True)
+class JordanChain:
+    """The generalized eigenspace of ``1/2`` at a corner sector, exact over the near-edge weight's field (matrix order)."""
+
+    #: The sector's exact matrices.
+    sm: SectorMatrices
+    #: ``Q[w]/(modulus)``, ``w`` the near-edge weight (``x`` when the matrix is rational).
+    modulus: flint.fmpq_poly
+    #: A basis of ``ker(S - I/2)``.
+    eigen: list[list[FieldElement]]
+    #: A basis of ``ker(S - I/2)^2``.
+    general: list[list[FieldElement]]
+    #: ``(g, e)`` with ``(S - I/2) g = e != 0`` (checked exactly; ``None``: no chain).
+    chain: tuple[list[FieldElement], list[FieldElement]] | None
+
+    def on_rays(self, vector: list[FieldElement]) -> bool:
+        """Whether ``vector`` is nonzero at ``O`` or at a point of a sharp ray."""
+        k = self.sm.k
+        return any(x for x, lab in zip(vector, self.sm.labels) if lab == ORIGIN or (lab[2] == 0 and lab[0] in (0, k)))
+
+    def partner(self) -> list[FieldElement] | None:
+        """An eigenvector ``e'`` of ``1/2`` independent of the chain's ``e``: one nonzero on a sharp ray (``e`` is not)."""
+        return next((x for x in self.eigen if self.on_rays(x)), None)
+
+
+def jordan_chain(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> JordanChain:
+    """The eigenvalue ``1/2`` of a corner sector of ``k`` faces, its kernels and chain computed and checked exactly (module
+    docstring); ``angle``: the corner's, for BLZ's ``theta_k = angle/k`` (``None``: ``pi``)."""
     vertex = SharpVertex.corner(k, scheme.lattice, angle)  # type: ignore[operator]  # corner: a property and a constructor
     sm = sector_matrices(scheme, vertex)
     A, mod = shifted_rows(sm, HALF)
     weight = sp.Integer(0) if sm.weight is None else sm.weight
-    field = field_name(FieldMatrix((), mod, weight))
     eigen = kernel(A, mod, weight)
     for x in eigen:  # the identity the count rests on
         if any(_times(A, x, mod)):
             raise NotApplicableError("a computed eigenvector for 1/2 does not satisfy (S - I/2) x = 0")
     general = kernel(_square(A, mod), mod, weight)
-    chain = next((e for e in (_times(A, g, mod) for g in general) if any(e)), None)
-    on_rays = None
-    if chain is not None:
-        if any(_times(A, chain, mod)):
-            raise NotApplicableError("(S - I/2)^2 g = 0 does not hold for a computed generalized eigenvector")
-        on_rays = any(x for x, lab in zip(chain, sm.labels) if lab == ORIGIN or (lab[2] == 0 and lab[0] in (0, k)))
-    return CornerJordan(k, field, len(eigen), len(general), on_rays)
+    chain = next(((g, e) for g, e in ((g, _times(A, g, mod)) for g in general) if any(e)), None)
+    if chain is not None and any(_times(A, chain[1], mod)):
+        raise NotApplicableError("(S - I/2)^2 g = 0 does not hold for a computed generalized eigenvector")
+    return JordanChain(sm, mod, eigen, general, chain)
+
+
+def corner_jordan(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> CornerJordan:
+    """The structure of the eigenvalue ``1/2`` of a corner sector of ``k`` faces (module docstring); ``angle``: the
+    corner's, for BLZ's ``theta_k = angle/k`` (``None``: ``pi``)."""
+    found = jordan_chain(scheme, k, angle)
+    weight = sp.Integer(0) if found.sm.weight is None else found.sm.weight
+    field = field_name(FieldMatrix((), found.modulus, weight))
+    on_rays = None if found.chain is None else found.on_rays(found.chain[1])
+    return CornerJordan(k, field, len(found.eigen), len(found.general), on_rays)

@@ -124,9 +124,10 @@ def chain_vectors(found: JordanChain) -> tuple[list[flint.arb] | None, list[flin
     return _ball_vector(found, partner), _ball_vector(found, found.chain[1])
 
 
-def jordan_sector(scheme: Scheme, vertex: SharpVertex, max_depth: int = 6) -> SectorFinding:
-    """The verdict at a corner ``vertex`` whose ``1/2`` has a Jordan block (module docstring), as a final finding."""
-    found = jordan_chain(scheme, vertex.faces, vertex.angle)
+def jordan_sector(scheme: Scheme, vertex: SharpVertex, max_depth: int = 6, found: JordanChain | None = None) -> SectorFinding:
+    """The verdict at a corner ``vertex`` whose ``1/2`` has a Jordan block (module docstring), as a final finding;
+    ``found``: the vertex's :func:`~.corner_jordan.jordan_chain`, if computed already."""
+    found = jordan_chain(scheme, vertex.faces, vertex.angle) if found is None else found
     spectral = jordan_spectrum(found)
     if spectral.status is not C1Verdict.C1:
         return SectorFinding(C1Verdict.UNDECIDED, spectral.reason, spectral, final=True, method=JORDAN_METHOD)

@@ -42,7 +42,6 @@ Darts, corners given an angle and semi-sharp creases are the dense test's alone.
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import math
 from dataclasses import dataclass
@@ -58,9 +57,10 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
+from symdecomp.verify.c1_corner_jordan import jordan_sector
 from symdecomp.verify.c1_sector_matrix import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
-from symdecomp.verify.corner_jordan import HALF, JORDAN_FACES, corner_jordan
+from symdecomp.verify.corner_jordan import HALF, JORDAN_FACES, corner_jordan, jordan_chain
 from symdecomp.verify.fourier_map import applies, fourier_map
 from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
@@ -199,25 +199,32 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
                           block_root(top[0].ball, 0, 1), gap, float(third)), picks
 
 
-def _tie_reason(scheme, vertex: SharpVertex, k: int, reason: str, picks: list) -> str:
-    """An exact tie at a corner's ``1/2`` (BLZ's corners): the reason with the eigenvalue's Jordan structure, computed
-    exactly (:mod:`.corner_jordan`) up to :data:`~.corner_jordan.JORDAN_FACES` faces."""
-    if not vertex.corner or len(picks) < 2 or not picks[1][0].contains(flint.acb(HALF.numerator) / HALF.denominator):
-        return reason
-    if k > JORDAN_FACES:
-        return f"{reason}; the Jordan structure of 1/2 is computed for at most {JORDAN_FACES} faces"
-    return f"{reason}; {corner_jordan(scheme, k).reason()}"
+def _tie_finding(scheme, vertex: SharpVertex, k: int, spectral: SpectralResult, picks: list, max_depth: int | None) -> SectorFinding:
+    """An exact tie (final): at a corner's ``1/2`` (BLZ's corners) up to :data:`~.corner_jordan.JORDAN_FACES` faces, the
+    Jordan block's own verdict (:mod:`.c1_corner_jordan`; with ``max_depth=None``, its structure in the reason only)."""
+    lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
+    reason = spectral.reason
+    if vertex.corner and len(picks) >= 2 and picks[1][0].contains(flint.acb(HALF.numerator) / HALF.denominator):
+        if k > JORDAN_FACES:
+            reason = f"{reason}; the Jordan structure of 1/2 is computed for at most {JORDAN_FACES} faces"
+        elif max_depth is None:
+            reason = f"{reason}; {corner_jordan(scheme, k).reason()}"
+        else:
+            return jordan_sector(scheme, SharpVertex.corner(k, vertex.lattice), max_depth)
+    return SectorFinding(spectral.status, reason, spectral, lambdas, final=True)
 
 
-def _with_jordan(scheme, vertex: SharpVertex, result: SharpC1Result) -> SharpC1Result:
-    """The dense test's undecided verdict at a corner given an angle, with the exact Jordan structure of ``1/2`` where
-    ``1/2`` is a multiple root there (:mod:`.corner_jordan`, at most :data:`~.corner_jordan.JORDAN_FACES` faces)."""
+def _with_jordan(scheme, vertex: SharpVertex, result: SharpC1Result, max_depth: int) -> SharpC1Result:
+    """The dense test's undecided verdict at a corner given an angle: where ``1/2`` has a Jordan block there (at most
+    :data:`~.corner_jordan.JORDAN_FACES` faces), the block's own verdict (:mod:`.c1_corner_jordan`)."""
     if not vertex.corner or result.verdict is not C1Verdict.UNDECIDED or vertex.faces > JORDAN_FACES:
         return result
-    found = corner_jordan(scheme, vertex.faces, vertex.angle)
-    if found.generalized < 3:
+    chain = jordan_chain(scheme, vertex.faces, vertex.angle)
+    if len(chain.general) < 3:
         return result
-    return dataclasses.replace(result, reason=f"{result.reason}; {found.reason()}")
+    with flint.ctx.workprec(64):
+        found = jordan_sector(scheme, vertex, max_depth, chain)
+    return _blocks_result(scheme, vertex, [found], max_depth)
 
 
 def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> SectorFinding:
@@ -233,9 +240,9 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
     if tangent and tangent[0] is C1Verdict.NOT_C1:
         return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:  # an exact tie is final: the dense test finds the same multiple eigenvalue
-        tie = _exact_tie(lead)
-        return SectorFinding(spectral.status, _tie_reason(scheme, vertex, k, spectral.reason, picks) if tie else spectral.reason,
-                             spectral, lambdas, final=tie)
+        if _exact_tie(lead):
+            return _tie_finding(scheme, vertex, k, spectral, picks, max_depth)
+        return SectorFinding(spectral.status, spectral.reason, spectral, lambdas)
     if tangent:
         return SectorFinding(tangent[0], tangent[1], spectral, lambdas)
     if max_depth is None:
@@ -300,7 +307,7 @@ def c1_mirror_blocks(scheme, vertex: SharpVertex, *, max_depth: int = 6, map_fac
     if not sharp_sectors or vertex.angle is not None or vertex.lattice is not scheme.lattice:
         if vertex.angle is not None and max(vertex.sectors) > map_faces:
             raise NotApplicableError(f"a corner given an angle is tested on its dense matrices, at most {map_faces} faces")
-        return _with_jordan(scheme, vertex, c1_sharp_test(scheme, vertex, max_depth=max_depth))
+        return _with_jordan(scheme, vertex, c1_sharp_test(scheme, vertex, max_depth=max_depth), max_depth)
     try:
         with flint.ctx.workprec(64):
             found = [_sector(scheme, vertex, i, max_depth if certify_map else None) for i in range(len(vertex.sectors))]

@@ -2,7 +2,8 @@
 
 The module counts ``ker(S - I/2)`` and ``ker(S - I/2)^2`` over ``Q(cos(pi/k))``; here the same facts are recomputed
 independently on the sector's matrix with sympy where it is rational (k = 2, 3), the chain is rebuilt and checked,
-and a mutated corner rule loses the block and changes the verdict.
+and a mutated corner rule loses the block and changes the verdict (from the block's certified C1, c1_corner_jordan, to
+Zorin's not C1).
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.symbols import theta_k
+from symdecomp.verify.c1_corner_jordan import JORDAN_METHOD
 from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
 from symdecomp.verify.corner_jordan import corner_jordan
 from symdecomp.verify.mirror_parts import sector_matrices
@@ -79,19 +81,19 @@ def test_a_mutated_corner_rule_loses_the_block_and_changes_the_verdict(name):
     vertex = SharpVertex.corner(3, scheme.lattice)
     assert corner_jordan(bent, 3).block == 1
     real = c1_mirror_blocks(scheme, vertex)
-    assert real.verdict is C1Verdict.UNDECIDED and "a Jordan block of size 2" in real.reason
+    assert real.verdict is C1Verdict.C1 and real.method == JORDAN_METHOD and "a Jordan block of size 2" in real.reason
     mutated = c1_mirror_blocks(bent, vertex)
-    assert mutated.verdict is not C1Verdict.UNDECIDED and "Jordan" not in mutated.reason
+    assert mutated.verdict is C1Verdict.NOT_C1 and "Jordan" not in mutated.reason  # a tangent misses the plane
 
 
 def test_the_command_line_states_the_jordan_block(capsys):
-    assert main(["c1", "--corner", "--k", "2:3", "--scheme", "loop-blz"]) == 1  # not every k is C1
+    assert main(["c1", "--corner", "--k", "2:3", "--scheme", "loop-blz"]) == 0  # every k is C1
     out = capsys.readouterr().out
     lines = [line for line in out.splitlines() if line.startswith("corner k = ")]
     assert len(lines) == 2
     for line in lines:
-        assert "undecided" in line and "dim ker(S - I/2) = 2, dim ker(S - I/2)^2 = 3 (exact over Q)" in line
-        assert "vanishes on both boundary curves" in line
+        assert "C1 certified" in line and "dim ker(S - I/2) = 2, dim ker(S - I/2)^2 = 3 (exact)" in line
+        assert "vanishes on both sharp rays" in line and "J(f_e', f_e)" in line
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -104,5 +106,5 @@ def test_the_block_is_the_angle_pi_s_and_a_convex_corner_has_none(name):
         found = corner_jordan(scheme, 3, angle)
         assert (found.eigenvectors, found.generalized, found.block) == (2, 2, 1)
         assert c1_mirror_blocks(scheme, SharpVertex.corner(3, scheme.lattice, angle)).verdict is C1Verdict.C1
-    dense = c1_mirror_blocks(scheme, SharpVertex.corner(2, scheme.lattice, sp.pi))
-    assert dense.verdict is C1Verdict.UNDECIDED and "a Jordan block of size 2" in dense.reason
+    dense = c1_mirror_blocks(scheme, SharpVertex.corner(2, scheme.lattice, sp.pi))  # the dense test's tie, then the block
+    assert dense.verdict is C1Verdict.C1 and dense.method == JORDAN_METHOD and "a Jordan block of size 2" in dense.reason

@@ -26,8 +26,10 @@ eigenvectors in closed form on a few faces per sector (:mod:`.fourier_map`, any 
 route does not decide) from the eigenvectors in the mirror parts the blocks name (:func:`map_from_blocks`: no
 characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces). An exact
 tie ``lambda_2 = lambda_3`` (one value of the blocks, its multiplicity exact; BLZ's corners) is final: the dense test
-finds the same multiple root, and is not run. At a corner's ``1/2`` the reason adds the root's Jordan structure,
-computed exactly (:mod:`.corner_jordan`: two eigenvectors and a block of size 2 at BLZ's corners).
+finds the same multiple root, and is not run. At a corner's ``1/2`` (BLZ's corners: two eigenvectors and a block of
+size 2, :mod:`.corner_jordan`) the block's own test decides, up to :data:`~.corner_jordan.JORDAN_FACES` faces
+(:mod:`.c1_corner_jordan`: the map of the chain's eigenvector and the other one), and so does it for the dense test's
+tie at a corner given the angle ``pi``.
 Everything else (other multiple subdominant eigenvalues, a map not certified) goes to the dense test up to
 :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
 rules where no closed form is found past the map's faces: the spectral and tangent conditions hold).

@@ -16,14 +16,13 @@ The block comes with BLZ's weight at ``theta_k = pi/k``, a corner of angle ``pi`
 without an angle): at a convex angle such as ``pi/2`` or ``3 pi/4`` the sine mode's eigenvalue is not ``1/2``, the
 two boundary tangents are the only eigenvectors, and Zorin's test decides (C1 at 2 and 3 faces).
 
-What it means for the limit surface (why the verdict stays *undecided*): ``S^m g = 2^-m g + m 2^(1-m) e``, so for
-data with a component ``c_g`` along ``g`` the level-``m`` net near ``O`` is ``m 2^(1-m) c_g e`` plus ``2^-m`` terms:
-the limit is dominated by the chain's eigenfunction ``f_e``, which vanishes on both boundary curves. Zorin's
-sufficient conditions (a strictly dominant ``lambda_1 = lambda_2`` with two eigenvectors and a regular injective
-characteristic map) do not apply. Expanding the normal, ``N_m = 2 m (c_g x c_e') J(f_e, f_e') + O(1)`` (``e'`` the
-other eigenvector, ``J`` the Jacobian determinant of the pair), so the surface is tangent-plane continuous at ``O`` where
-``J(f_e, f_e')`` keeps one strict sign on the sector, with the tangent plane spanned by ``c_g`` and ``c_e'``; that map,
-and the injectivity a C1 surface needs with the ``m``-stretched first coordinate, are not certified here.
+What it means for the limit surface: ``S^m g = 2^-m g + m 2^(1-m) e``, so for data with a component ``c_g`` along ``g``
+the level-``m`` net near ``O`` is ``m 2^(1-m) c_g e`` plus ``2^-m`` terms: the limit is dominated by the chain's
+eigenfunction ``f_e``, which vanishes on both boundary curves. Zorin's sufficient conditions (a strictly dominant
+``lambda_1 = lambda_2`` with two eigenvectors and a regular injective characteristic map) do not apply. Expanding the
+normal, ``N_m = 2 m (c_e' x c_g) J(f_e', f_e) + O(1)`` (``e'`` the other eigenvector, ``J`` the Jacobian determinant of
+the pair): :mod:`.c1_corner_jordan` certifies that pair's map and decides C1 from it (:class:`JordanChain` holds the
+exact vectors it reads).
 
 >>> from symdecomp.schemes.files import load_scheme
 >>> j = corner_jordan(load_scheme("catmull-clark-blz"), 2)
@@ -87,7 +86,7 @@ class CornerJordan:
                 f"{self.generalized} (exact over {self.field}), a Jordan block of size 2 whose eigenvector e = (S - I/2) g "
                 f"is nonzero only {where}; S^m g = 2^-m g + m 2^(1-m) e, so the limit at O is dominated by m 2^-m times "
                 "the chain's eigenfunction, which vanishes on both boundary curves: Zorin's conditions do not cover a "
-                "Jordan block, and the map (f_e, f_e') that decides the tangent plane is not built")
+                "Jordan block; the map (f_e', f_e) decides the tangent plane (c1_corner_jordan, not run here)")
 
 
 def _element(e: object, modulus: flint.fmpq_poly) -> FieldElement:

@@ -42,8 +42,7 @@ The spectral part is certified too: 1 is simple, ``1/2`` has multiplicity exactl
 sector's mirror parts meet it, and ``dim ker A^2 = 3`` is exact), every other eigenvalue is below ``1/2`` in modulus.
 
 >>> from symdecomp.schemes.files import load_scheme
->>> from symdecomp.schemes.scheme import Scheme
-from symdecomp.schemes.sector import SharpVertex
+>>> from symdecomp.schemes.sector import SharpVertex
 >>> found = jordan_sector(load_scheme("catmull-clark-blz"), SharpVertex.corner(2, "quad"))
 >>> str(found.verdict), found.sign is not None, round(found.opening, 6)
 ('c1', True, 1.0)

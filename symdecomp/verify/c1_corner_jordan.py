@@ -79,6 +79,9 @@ def jordan_spectrum(found: JordanChain) -> SpectralResult:
     if (len(found.eigen), len(found.general)) != (2, 3) or found.chain is None:
         return SpectralResult(k, C1Verdict.UNDECIDED, f"not the Jordan structure this route reads: dim ker(S - I/2) = "
                               f"{len(found.eigen)}, dim ker(S - I/2)^2 = {len(found.general)}")
+    if found.on_rays(found.chain[1]) or found.partner() is None:  # the half-plane argument needs f_e = 0 on both rays
+        return SpectralResult(k, C1Verdict.UNDECIDED, "the chain's eigenvector e is nonzero on a sharp ray (or no other "
+                              "eigenvector is): not the structure this route reads")
     values = [v[0] for v in sector_eigenvalues(found.sm)]
     half = flint.acb(HALF.numerator) / HALF.denominator
     one = [i for i, v in enumerate(values) if v.overlaps(flint.acb(1))]

@@ -16,6 +16,7 @@ from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.c1_corner_jordan import JORDAN_METHOD, chain_vectors, jordan_sector, jordan_spectrum
+from symdecomp.verify.c1_mirror_blocks import c1_mirror_blocks
 from symdecomp.verify.corner_jordan import jordan_chain
 from symdecomp.verify.result import C1Verdict
 
@@ -109,3 +110,14 @@ def test_a_sector_without_the_block_is_not_read_as_one(name):
     found = jordan_chain(load_scheme(name), 1)
     spectral = jordan_spectrum(found)
     assert spectral.status is C1Verdict.UNDECIDED and "dim ker(S - I/2)^2 = 2" in spectral.reason
+
+
+@pytest.mark.parametrize("name, k", [("catmull-clark", 2), ("loop", 3)])
+def test_the_standard_rules_regular_corner_has_the_block_too(name, k):
+    # the standard corner rule at the faces of a flat boundary (2 quads, 3 triangles): the sine mode has 1/2 as well
+    scheme = load_scheme(name)
+    found = jordan_chain(scheme, k)
+    assert (len(found.eigen), len(found.general)) == (2, 3) and not found.on_rays(found.chain[1])
+    result = c1_mirror_blocks(scheme, SharpVertex.corner(k, scheme.lattice))
+    assert result.verdict is C1Verdict.C1 and result.method == JORDAN_METHOD
+    assert len(jordan_chain(scheme, k + 1).general) == 2  # one face more: no block

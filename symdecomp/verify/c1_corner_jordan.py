@@ -7,8 +7,8 @@ two subdominant eigenvectors and do not cover this; the condition used here is d
 
 *What was checked in the literature*: the abstract of D. Zorin, *Smoothness of stationary subdivision on irregular
 meshes* (Constr. Approx. 16, 2000) says it derives necessary and sufficient conditions for tangent plane and ``C^k``
-continuity near extraordinary vertices, Jordan blocks included in its setting; its statements on Jordan blocks and
-J. Peters and U. Reif's chapter on them (*Subdivision Surfaces*, Springer 2008) could not be read here, so the argument
+continuity near extraordinary vertices and generalizes most earlier conditions; the paper's text, and J. Peters and
+U. Reif's treatment of Jordan blocks (*Subdivision Surfaces*, Springer 2008), could not be read here, so the argument
 below is this module's own and is not claimed to be theirs.
 
 **The expansion.** Write the control net as ``p = c_0 1 + c_e' e' + c_g g + c_e e + r`` (``c`` in ``R^3``, ``r`` in the
@@ -25,8 +25,8 @@ Jacobian in Bernstein-Bezier form, Arb, de Casteljau; the open sector's injectiv
 :mod:`.sector_injectivity`). Since ``J(f_e' + t f_e, f_e) = J(f_e', f_e)``, the choice of ``e'`` in ``ker A`` does not matter.
 
 * ``J`` changes sign on the ring: for every net with ``c_e' x c_g != 0`` the normals at the two places point to opposite
-  sides at every level: the surface turns over at ``O``, *not C1* (as a regular characteristic map is necessary in
-  Reif's and Zorin's setting).
+  sides at every level: the surface turns over at ``O``, *not C1* (the reading the sector test gives a characteristic
+  map whose Jacobian changes sign).
 * ``J`` has one strict sign and ``chi_J`` is injective: the normal converges to ``c_e' x c_g`` (up to ``O(1/m)``), the
   tangent plane is spanned by ``c_e'`` and ``c_g``; ``f_e`` vanishes on both rays, so ``chi_J`` maps them to opposite
   directions of one line and the sector onto a half-plane. In the tangent plane's coordinates the projection is

@@ -51,7 +51,7 @@ from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, 
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["DUAL_METHOD", "NO_METHOD", "ZORIN_CENTRE", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
-           "corner_weights", "spline_route", "four_direction_route", "zorin_route", "c1_dual_test", "c1_zoo"]
+           "corner_weights", "spline_route", "four_direction_route", "four_direction_every_n_gap", "zorin_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
 DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-spline patches (the vertices one face from "
@@ -285,6 +285,37 @@ def four_direction_route(scheme: StencilScheme) -> FourDirectionPatch | str:
         return (f"corner rule ({', '.join(map(str, patch.corner_weights))}): its regular part, a piecewise quadratic on the "
                 "four-direction mesh, is not C1 (its gradient jumps across an edge), so Reif's test does not apply")
     return patch
+
+
+def four_direction_every_n_gap(scheme: StencilScheme) -> str | None:
+    """Why ``c1 --every-n`` does not cover a scheme on the four-direction route (``None`` when it is not on it).
+
+    The every-n argument (:mod:`symdecomp.verify.c1_dual_every_n`, :mod:`symdecomp.verify.c1_dual_uniform`) is written
+    for the biquadratic B-spline's patches, and solves the frequency-1 eigenvector for every ``n`` only where
+    ``lambda_1 = sigma(1)``, the ``n``-gon's symbol at frequency 1, is a rational constant. The symbol is read from the
+    structural form of the matrix (:func:`~symdecomp.analysis.zoo_structure.zoo_structure`) and written in
+    ``t = cos(2 pi/n)`` (``omega^k + omega^-k = 2 T_k(t)``), so the reason names the computed ``lambda_1(t)``.
+    """
+    if scheme.topology != "dual" or isinstance(four_direction_route(scheme), str):
+        return None
+    from symdecomp.analysis.zoo_structure import zoo_structure
+    from symdecomp.symbols import omega
+
+    entry = sp.sympify(zoo_structure(scheme).block[0, 0], strict=True)
+    t = sp.Symbol("t")
+    real = sp.Integer(0)
+    for term in sp.Add.make_args(sp.expand(entry)):
+        a, k = term.as_coeff_exponent(omega)
+        if a.has(omega) or not k.is_Integer or a.free_symbols:
+            return (f"its regular part is the four-direction patch (certified valence by valence with --n A:B), but the "
+                    f"every-n argument is written for the biquadratic B-spline's patches, and the n-gon's block {entry} "
+                    "is not a Laurent polynomial in omega with constant coefficients")
+        real += a * sp.chebyshevt(abs(int(k)), t)
+    lam = sp.expand(real)
+    constant = "a constant" if lam.is_Rational else f"{lam} with t = cos(2 pi/n), varying with n"
+    return (f"its regular part is the four-direction patch (certified valence by valence with --n A:B), but the every-n "
+            f"argument is written for the biquadratic B-spline's patches and solves the eigenvector for every n only for a "
+            f"rational constant lambda_1, and here lambda_1 = sigma(1) is {constant} (the n-gon's block {entry})")
 
 
 def zorin_route(scheme: StencilScheme) -> bool:

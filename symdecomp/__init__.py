@@ -167,7 +167,9 @@ nothing else.
                    from the map of the chain's eigenvector and the other one (``c1_corner_jordan``); for
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) or a piecewise quadratic on the four-direction
-                   mesh (Midedge, ``c1_four_direction``) and the route read from the scheme's model, or
+                   mesh (Midedge, ``c1_four_direction``; where the matrix fails Reif's conditions, the spectrum on
+                   the functions that patch makes, its translates being dependent, ``c1_four_direction_quotient``)
+                   and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
                    map at one valence, ``zoo_characteristic``), Zorin's test where no spline patch exists (a vertex
                    of the triangle lattice, over the steps that refine it by 1/a: the modified butterfly, a = 2;

@@ -217,10 +217,12 @@ def _run_zoo(args, items: None, plot) -> int:
     from symdecomp.verify.result import C1Verdict
 
     if getattr(args, "every_n", False) or getattr(args, "open_range", False):
-        from symdecomp.verify.c1_zoo import spline_route, zorin_route
+        from symdecomp.verify.c1_zoo import four_direction_every_n_gap, spline_route, zorin_route
 
         zorin = zorin_route(args.scheme)
         polys, reason = _zorin_polynomials(args.scheme) if zorin else (None, spline_route(args.scheme))
+        if reason is not None and not zorin:
+            reason = four_direction_every_n_gap(args.scheme) or reason
         if reason is not None:
             raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
                                     f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")

@@ -15,8 +15,10 @@ The route is decided by the scheme's model (:class:`~symdecomp.schemes.stencils.
 * a dual scheme whose regular corner rule has a refinable piecewise quadratic on the four-direction mesh (Midedge:
   the Zwart-Powell box spline, derived by :func:`~symdecomp.schemes.four_direction.four_direction_patch`): the same
   test over that patch's triangles (:mod:`symdecomp.verify.c1_four_direction`). Its translates are linearly
-  dependent, so an eigenvector of the matrix may be the zero function: a spectrum that fails Reif's conditions is
-  then ``undecided`` (the condition is sufficient, not necessary), never ``not C1``;
+  dependent, so an eigenvector of the matrix may be the zero function: where the matrix fails Reif's conditions they
+  are redone on the functions the patch makes (:mod:`symdecomp.verify.c1_four_direction_quotient`, exact), and the
+  verdict is theirs (Midedge at n = 3: every eigenvector counts, and 1/4 has a Jordan block at frequencies 1, 2,
+  which Reif's test does not cover: ``undecided``, with the ring of the top of the chains as evidence);
 * any other scheme (sqrt(3)'s rotating steps): ``undecided``, naming what has no test here.
 
 :func:`c1_dual_test` takes what the zoo's engine computes at valence ``n`` (:class:`ZooNeighbourhood`: the explicit
@@ -44,11 +46,12 @@ from symdecomp.schemes.topology import topology_of
 from symdecomp.validate import check_bits, check_depth
 from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify_ring
 from symdecomp.verify.c1_four_direction import FOUR_DIRECTION_METHOD, certify_four_direction_ring
-from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, round_down
+from symdecomp.verify.c1_four_direction_quotient import quotient_test
+from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, round_down
 from symdecomp.verify.result import C1Verdict
 
 __all__ = ["DUAL_METHOD", "NO_METHOD", "ZORIN_CENTRE", "ZooNeighbourhood", "ZooC1Result", "biquadratic_corner_weights", "regular_corner_weights",
-           "corner_weights", "spline_route", "four_direction_route", "zorin_route", "c1_dual_test", "c1_zoo"]
+           "corner_weights", "spline_route", "four_direction_route", "four_direction_every_n_gap", "zorin_route", "c1_dual_test", "c1_zoo"]
 
 #: The method, as reported with each verdict of the dual route.
 DUAL_METHOD = ("Reif's test on the characteristic map's ring of biquadratic B-spline patches (the vertices one face from "
@@ -75,6 +78,11 @@ class ZooNeighbourhood:
     points: Mapping[Any, Any]
     #: Reif's spectral conditions, certified (the subdominant eigenvalue and its frequency).
     spectral: SpectralResult
+    #: The control points in the order of :attr:`matrix`'s rows and columns (empty when the engine gives no matrix).
+    order: tuple[Any, ...] = ()
+    #: The exact subdivision matrix on the neighbourhood (``None``: not given): the four-direction route reads the
+    #: spectrum on the functions its patch can make from it (:mod:`symdecomp.verify.c1_four_direction_quotient`).
+    matrix: Any = None
 
 
 @dataclass(frozen=True)
@@ -213,10 +221,12 @@ def c1_dual_test(neighbourhood: ZooNeighbourhood, *, scheme: str, n: int, max_de
     result = ZooC1Result(n=n, scheme=scheme, verdict=spectral.status, reason=spectral.reason, spectral=spectral,
                          max_depth=max_depth, precision=prec, method=DUAL_METHOD if patch is None else FOUR_DIRECTION_METHOD)
     if spectral.status is C1Verdict.NOT_C1 and patch is not None and patch.dependent_translates:
-        return replace(result, verdict=C1Verdict.UNDECIDED, reason=(
-            f"{spectral.reason}; Reif's spectral conditions fail on the matrix, but the regular patch's translates are "
-            "linearly dependent (the alternating net gives the zero function), so an eigenvector may give no function: "
-            "not shown to be not C1"))
+        if neighbourhood.matrix is None:
+            return replace(result, verdict=C1Verdict.UNDECIDED, reason=(
+                f"{spectral.reason}; Reif's spectral conditions fail on the matrix, but the regular patch's translates are "
+                "linearly dependent, so an eigenvector may give no function, and no matrix was given to tell: "
+                "not shown to be not C1"))
+        return _quotient_result(result, neighbourhood, patch)
     if spectral.status is not C1Verdict.C1:
         return result
     if lam is None:
@@ -228,6 +238,33 @@ def c1_dual_test(neighbourhood: ZooNeighbourhood, *, scheme: str, n: int, max_de
     return replace(result, verdict=verdict, reason=reason, frequency=lam.frequency, jacobian_sign=ring.jacobian_sign,
                    jacobian_lower_bound=ring.jacobian_lower_bound, subdivision_depth=ring.depth,
                    winding_number=ring.winding_number)
+
+
+def _quotient_result(result: ZooC1Result, neighbourhood: ZooNeighbourhood, patch: FourDirectionPatch) -> ZooC1Result:
+    """The verdict from the spectrum on the functions the four-direction patch makes
+    (:func:`~symdecomp.verify.c1_four_direction_quotient.quotient_test`) where the matrix fails Reif's conditions."""
+    found = quotient_test(neighbourhood.mesh, neighbourhood.order, neighbourhood.matrix, patch, result.n,
+                          max_depth=result.max_depth, prec=result.precision)
+    head = f"{result.reason} on the matrix, whose patch's translates are linearly dependent; {found.reason}"
+    if found.refuted:
+        return replace(result, verdict=C1Verdict.NOT_C1, reason=head)
+    ring = found.ring
+    if ring is None:
+        return replace(result, verdict=C1Verdict.UNDECIDED, reason=head)
+    shown = replace(result, frequency=found.frequency, jacobian_sign=ring.jacobian_sign,
+                    jacobian_lower_bound=ring.jacobian_lower_bound, subdivision_depth=ring.depth,
+                    winding_number=ring.winding_number)
+    value = found.spectrum.subdominant
+    if found.conditions_hold and value is not None and found.frequency is not None:
+        lam = block_root(flint.acb(flint.fmpq(value.numerator, value.denominator)), found.frequency, 2, result.n)
+        verdict, reason = _verdict(ring, lam, None)
+        return replace(shown, verdict=verdict, reason=f"{head}; {reason}")
+    evidence = ("its map is regular and winds once" if ring.status == "regular" and ring.winding_number == ring.jacobian_sign
+                else f"its map is not certified regular and injective ({ring.status}, winding {ring.winding_number})")
+    return replace(shown, verdict=C1Verdict.UNDECIDED, reason=(
+        f"{head}, and {evidence}; Reif's test needs a subdominant eigenvalue without Jordan blocks (a standard algorithm), "
+        "and the general classification (Peters and Reif, Subdivision Surfaces, 2008, Sect. 5.3) is not implemented: "
+        "not shown C1 or not C1"))
 
 
 def four_direction_route(scheme: StencilScheme) -> FourDirectionPatch | str:
@@ -248,6 +285,37 @@ def four_direction_route(scheme: StencilScheme) -> FourDirectionPatch | str:
         return (f"corner rule ({', '.join(map(str, patch.corner_weights))}): its regular part, a piecewise quadratic on the "
                 "four-direction mesh, is not C1 (its gradient jumps across an edge), so Reif's test does not apply")
     return patch
+
+
+def four_direction_every_n_gap(scheme: StencilScheme) -> str | None:
+    """Why ``c1 --every-n`` does not cover a scheme on the four-direction route (``None`` when it is not on it).
+
+    The every-n argument (:mod:`symdecomp.verify.c1_dual_every_n`, :mod:`symdecomp.verify.c1_dual_uniform`) is written
+    for the biquadratic B-spline's patches, and solves the frequency-1 eigenvector for every ``n`` only where
+    ``lambda_1 = sigma(1)``, the ``n``-gon's symbol at frequency 1, is a rational constant. The symbol is read from the
+    structural form of the matrix (:func:`~symdecomp.analysis.zoo_structure.zoo_structure`) and written in
+    ``t = cos(2 pi/n)`` (``omega^k + omega^-k = 2 T_k(t)``), so the reason names the computed ``lambda_1(t)``.
+    """
+    if scheme.topology != "dual" or isinstance(four_direction_route(scheme), str):
+        return None
+    from symdecomp.analysis.zoo_structure import zoo_structure
+    from symdecomp.symbols import omega
+
+    entry = sp.sympify(zoo_structure(scheme).block[0, 0], strict=True)
+    t = sp.Symbol("t")
+    real = sp.Integer(0)
+    for term in sp.Add.make_args(sp.expand(entry)):
+        a, k = term.as_coeff_exponent(omega)
+        if a.has(omega) or not k.is_Integer or a.free_symbols:
+            return (f"its regular part is the four-direction patch (certified valence by valence with --n A:B), but the "
+                    f"every-n argument is written for the biquadratic B-spline's patches, and the n-gon's block {entry} "
+                    "is not a Laurent polynomial in omega with constant coefficients")
+        real += a * sp.chebyshevt(abs(int(k)), t)
+    lam = sp.expand(real)
+    constant = "a constant" if lam.is_Rational else f"{lam} with t = cos(2 pi/n), varying with n"
+    return (f"its regular part is the four-direction patch (certified valence by valence with --n A:B), but the every-n "
+            f"argument is written for the biquadratic B-spline's patches and solves the eigenvector for every n only for a "
+            f"rational constant lambda_1, and here lambda_1 = sigma(1) is {constant} (the n-gon's block {entry})")
 
 
 def zorin_route(scheme: StencilScheme) -> bool:

@@ -116,12 +116,12 @@ def engine_neighbourhood(scheme: StencilScheme, n: int) -> ZooNeighbourhood:
     faces = tuple(tuple(f) for f in nb.mesh.faces if set(f) <= labelled)
     mesh = DualNeighbourhood(faces, _centre_face(nb), dict(nb.labels))
     if spectral.status is not C1Verdict.C1 or spectral.subdominant is None:
-        return ZooNeighbourhood(mesh, {}, spectral)
+        return ZooNeighbourhood(mesh, {}, spectral, tuple(nb.order), zm.matrix)
     points = characteristic_points(zm, spectral.subdominant)
     if points is None:
         return ZooNeighbourhood(mesh, {}, SpectralResult(n, C1Verdict.UNDECIDED, "the subdominant eigenvector could not be "
                                                          "solved in the frequency block at this precision"))
-    return ZooNeighbourhood(mesh, points, spectral)
+    return ZooNeighbourhood(mesh, points, spectral, tuple(nb.order), zm.matrix)
 
 
 def characteristic_points(zm: ZooMatrix, subdominant: Eigenvalue) -> dict[int, flint.acb] | None:

@@ -73,7 +73,9 @@ def test_a_zoo_scheme_outside_the_route_is_refused_with_the_reason(capsys):
     assert main(["c1", "--every-n", "--scheme", "midedge"]) == 2
     (err,) = capsys.readouterr().err.strip().splitlines()
     assert err.startswith("symdecomp: error: --every-n: the spectral conditions for every n are not derived for 'midedge' "
-                          "(a scheme of the zoo: its regular corner weights")
+                          "(a scheme of the zoo: its regular part is the four-direction patch")
+    # the n-gon's symbol at frequency 1, computed: 1/2 + cos(2 pi/n)/2 (c1 --n certifies it valence by valence)
+    assert "lambda_1 = sigma(1) is t/2 + 1/2 with t = cos(2 pi/n), varying with n" in err and err.endswith("give --n A:B")
 
 
 @pytest.mark.parametrize("scheme", ["doo-sabin", "catmull-clark"])

@@ -127,11 +127,13 @@ def test_the_centre_triangle_s_eigenvalue_decides_whether_the_map_folds(lam, ver
 
 
 def test_midedge_at_valence_3_is_undecided_with_the_computed_reason():
+    """Every eigenvector gives a nonzero function, and 1/4 has a Jordan block at frequencies 1, 2
+    (:mod:`tests.verify.test_c1_four_direction_quotient` checks the structure against sympy)."""
     r = c1_zoo(load_zoo("midedge"), 3, neighbourhood=engine_neighbourhood)
     assert r.verdict is C1Verdict.UNDECIDED
     assert r.reason.startswith("the subdominant eigenvalue 0.25 is not a real double eigenvalue of one pair of frequencies")
-    assert r.reason.endswith("the regular patch's translates are linearly dependent (the alternating net gives the zero "
-                             "function), so an eigenvector may give no function: not shown to be not C1")
+    assert "so every eigenvector counts" in r.reason and "Jordan blocks: 1 of size 2, 1 of size 1" in r.reason
+    assert r.reason.endswith("is not implemented: not shown C1 or not C1")
 
 
 def test_the_route_is_read_from_the_corner_rule():

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import platform
 import subprocess
 import sys
 import time
@@ -28,13 +29,22 @@ def timed(*args: str, ok: tuple[int, ...] = (0,)) -> float:
     return seconds
 
 
-def print_rows(rows: list[dict]) -> None:
-    """One line per target: its seconds, its limit and whether it is met, and the baseline's seconds beside it."""
+def print_rows(rows: list[dict], *, digits: int = 1) -> None:
+    """One line per target: its seconds, its limit and whether it is met, and the baseline's seconds beside it, with
+    their ratio (the baseline's seconds over the target's: above 1, the target is faster); ``digits`` after the point."""
     for row in rows:
-        limit = row["limit_seconds"]
-        verdict = "" if limit is None else ("  (target met)" if row["seconds"] <= limit else "  (TARGET MISSED)")
-        print(f"{row['target']}: {row['seconds']:.1f} s, limit {limit or '-'} s{verdict}; "
-              f"{row['baseline']}: {row['baseline_seconds']:.1f} s")
+        limit, seconds, base = row["limit_seconds"], row["seconds"], row["baseline_seconds"]
+        verdict = "" if limit is None else ("  (target met)" if seconds <= limit else "  (TARGET MISSED)")
+        ratio = f" (ratio {base / seconds:.1f})" if seconds else ""
+        print(f"{row['target']}: {seconds:.{digits}f} s, limit {limit or '-'} s{verdict}; "
+              f"{row['baseline']}: {base:.{digits}f} s{ratio}")
+
+
+def machine_line() -> str:
+    """The machine a reading was taken on, printed before the rows so that it can be judged: wall-clock figures depend
+    on the CPUs and on what else runs."""
+    return (f"machine: {platform.machine()}, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.2f} "
+            f"(wall-clock; other processes share the CPUs), Python {platform.python_version()}")
 
 
 def main_with_quick(doc: str, targets: Callable[[bool], list[dict]], quick: str) -> None:

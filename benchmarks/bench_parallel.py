@@ -26,6 +26,8 @@ import sys
 import tempfile
 import time
 
+from _targets import machine_line, print_rows
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 sys.path.insert(0, ROOT)
 
@@ -111,10 +113,8 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="small ranges")
     args = parser.parse_args()
-    print(f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f} at the start")
-    for row in targets(args.quick):
-        limit = "" if row["limit_seconds"] is None else f" (target <= {row['limit_seconds']} s)"
-        print(f"{row['target']}: {row['seconds']:.2f} s{limit}; {row['baseline']}: {row['baseline_seconds']:.2f} s")
+    print(machine_line())
+    print_rows(targets(args.quick), digits=2)
     return 0
 
 

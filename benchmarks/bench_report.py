@@ -20,6 +20,8 @@ import sys
 import tempfile
 import time
 
+from _targets import print_rows
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 #: The target: seconds for ``report catmull-clark --n 3:8``.
@@ -58,8 +60,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="loop at n = 3..5")
     args = parser.parse_args(argv)
-    for t in targets(args.quick):
-        print(f"{t['target']}: {t['seconds']:.1f} s (target {t['limit_seconds']} s); {t['baseline']}: {t['baseline_seconds']:.1f} s")
+    print_rows(targets(args.quick))
     return 0
 
 

@@ -29,7 +29,9 @@ nothing else.
                    parameters in a disc as polynomial inequalities (Schur-Cohn, ``schur_cohn``), exact signs of real
                    algebraic numbers (``algebraic_sign``), identities in sines and cosines decided as exponential
                    polynomials (``trig_identity``),
-                   exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``),
+                   exact left eigenspaces over Q(lambda) by rational linear algebra (``number_field``), a
+                   rational expression in one symbol and one square root as the polynomial it equals
+                   (``quadratic_extension``),
                    exact linear algebra over one real field Q(cos(pi/k)) (``cos_field``), the
                    eigen-decomposition of a rational matrix by the irreducible factors of its
                    characteristic polynomial (``primary_decomposition``)

@@ -94,6 +94,8 @@ def vector(value, argument: str, bound: int | None = MAX_MAGNITUDE) -> tuple:
 
 
 def cross(a, b):
+    """``a x b`` of two 3-vectors over any ring (sympy numbers, :class:`~symdecomp.algebra.number_field.FieldElement`,
+    ...): the one exact cross product (numpy's on arrays of floats)."""
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 

@@ -36,6 +36,7 @@ import sympy as sp
 from symdecomp.algebra.number_field import FieldElement, quadratic_element, quadratic_expression
 from symdecomp.algebra.numbers import to_fmpq
 from symdecomp.algebra.valence_signs import integer_zeros
+from symdecomp.analysis.design_input import cross
 from symdecomp.analysis.frequency import laurent_to_cos, per_frequency_matrix, recursion_matrix
 from symdecomp.analysis.spectrum import format_value, recursion_eigenvalues
 from symdecomp.analysis.tangent import tangent_eigenvalues
@@ -68,10 +69,6 @@ __all__ = [
 MU = sp.Symbol("MU")
 
 
-def _cross(u, v) -> sp.Matrix:
-    return sp.Matrix([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]])
-
-
 def recursion_eigenvector(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Matrix:
     """An eigenvector ``(u_O, u_a, u_b)`` of the Eq. 43 matrix for ``eigenvalue``.
 
@@ -81,7 +78,7 @@ def recursion_eigenvector(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Matrix:
     """
     T = recursion_matrix(scheme, n)
     A = sp.Matrix(T) - eigenvalue * sp.eye(3)
-    return _cross(A.row(1), A.row(2)).applyfunc(sp.expand)
+    return sp.Matrix(cross(A.row(1), A.row(2))).applyfunc(sp.expand)
 
 
 def recursion_left_eigenvector(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Matrix:
@@ -92,7 +89,7 @@ def recursion_left_eigenvector(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Matrix:
     """
     T = recursion_matrix(scheme, n)
     A = sp.Matrix(T) - eigenvalue * sp.eye(3)
-    return _cross(A.col(1), A.col(2)).applyfunc(sp.expand)
+    return sp.Matrix(cross(A.col(1), A.col(2))).applyfunc(sp.expand)
 
 
 def eq44_ratio(scheme: Scheme, eigenvalue=MU, n=N) -> sp.Expr:
@@ -314,17 +311,13 @@ def _component_in_field(scheme: Scheme, n: int, initial, mu) -> sp.Expr | None:
         return FieldElement(flint.fmpq_poly([to_fmpq(q)]), m.modulus)
 
     A = [[const(T[r, c]) - (m if r == c else const(0)) for c in range(3)] for r in range(3)]
-    left = _field_cross([A[r][1] for r in range(3)], [A[r][2] for r in range(3)])
-    right = _field_cross(A[1], A[2])
+    left = cross([A[r][1] for r in range(3)], [A[r][2] for r in range(3)])
+    right = cross(A[1], A[2])
     norm = sum((a * b for a, b in zip(left, right)), const(0))
     if not norm:
         return None
     weight = sum((a * const(v) for a, v in zip(left, initial)), const(0))
     return quadratic_expression(weight * norm.inverse(), root)
-
-
-def _field_cross(u, v) -> list:
-    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
 
 
 @dataclass(frozen=True)

@@ -35,7 +35,8 @@ data: first its lattice against the claim's (:attr:`~symdecomp.claims.registry.C
 :data:`ZOO_REQUIREMENTS` (a 1-ring primal :class:`Scheme` meets each of them); each reason says what the scheme
 has, and :func:`one_ring_needed` what the claim needs:
 
-* :data:`PRIMAL_VERTEX`: the step is primal and the extraordinary element is a vertex;
+* :data:`PRIMAL_VERTEX`: the step is primal and the extraordinary element is a vertex (for the sector claims,
+  :data:`PRIMAL_SECTOR`: the step is primal, so that it keeps the sector's vertex);
 * :data:`ONE_RING_SUPPORT`: every rule's walks cross at most one edge from the anchor's faces.
 """
 
@@ -59,7 +60,7 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import sin_jtheta as SIN
 
 __all__ = ["MIRROR_SYMMETRIC", "COSINE_ONLY", "REAL_TANGENT_SPECTRUM", "FACE_NEIGHBOURS", "NO_FREE_PARAMETERS", "WHOLE_MESH", "closed_form_obstacle",
-           "PRIMAL_VERTEX", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS", "one_ring_needed"]
+           "PRIMAL_VERTEX", "PRIMAL_SECTOR", "ONE_RING_SUPPORT", "ZOO_REQUIREMENTS", "one_ring_needed"]
 
 
 def _block_term(scheme: Scheme, symbol) -> tuple[str, sp.Expr] | None:
@@ -177,16 +178,31 @@ def _sector_points(x) -> str:
 
 def _not_primal_vertex(scheme: Scheme | StencilScheme) -> Text | None:
     """Why the scheme's extraordinary element is not a vertex of a primal step, or ``None``."""
-    if not isinstance(scheme, StencilScheme):
+    if not isinstance(scheme, StencilScheme) or (topology := topology_of(scheme)).name == "primal":
         return None  # a Scheme is the 1-ring primal model itself
-    topology = topology_of(scheme)
-    if topology.name == "primal":
-        return None
     if topology.centre == "face":
         return Text("the extraordinary element is an n-sided face of a dual scheme (", Verbatim(repr(scheme.name)),
                     " makes a new point per face corner)")
-    return Text("the scheme ", Verbatim(repr(scheme.name)), f" has the {topology.name.replace('sqrt', '√')} topology "
-                f"(analysed over {scheme.steps} steps), not a primal step")
+    return _not_primal_step(scheme)
+
+
+def _not_primal_sector(scheme: Scheme | StencilScheme) -> Text | None:
+    """Why a sector of the scheme between two sharp edges is not the sector model's (a sector of ``k`` faces around a
+    vertex that each primal step keeps, :class:`~symdecomp.schemes.sector.SharpVertex`), or ``None``."""
+    from symdecomp.schemes.sector import SharpVertex
+
+    if not isinstance(scheme, StencilScheme) or (topology := topology_of(scheme)).name == "primal":
+        return None
+    if topology.centre == "face":
+        centre = SharpVertex.boundary(1, lattice(scheme.lattice)).vertex_order()[0]
+        return Text(f"a sector of k faces is centred on its vertex {centre}, which a step of a dual scheme does not keep (",
+                    Verbatim(repr(scheme.name)), f" makes a new point per face corner, one in each face at {centre})")
+    return _not_primal_step(scheme)
+
+
+def _not_primal_step(scheme: StencilScheme) -> Text:
+    return Text("the scheme ", Verbatim(repr(scheme.name)), f" has the {topology_of(scheme).name.replace('sqrt', '√')} "
+                f"topology (analysed over {scheme.steps} steps), not a primal step")
 
 
 def _walk_beyond_one_ring(scheme: Scheme | StencilScheme) -> Text | None:
@@ -204,11 +220,14 @@ def _walk_beyond_one_ring(scheme: Scheme | StencilScheme) -> Text | None:
 
 #: A primal step, centred on an extraordinary vertex.
 PRIMAL_VERTEX = Requirement("a primal step at an extraordinary vertex", _not_primal_vertex)
+#: A primal step, at a sector of faces between two sharp edges around a vertex it keeps.
+PRIMAL_SECTOR = Requirement("a primal step at a sector of a sharp vertex", _not_primal_sector)
 #: Rules whose stencils stay in the 1-ring (walks crossing at most one edge).
 ONE_RING_SUPPORT = Requirement("rules on the 1-ring", _walk_beyond_one_ring)
 #: What a scheme of the zoo on one of a claim's lattices (:attr:`~symdecomp.claims.registry.Claim.lattices`, tested
-#: first) is tested against, in order.
-ZOO_REQUIREMENTS = (PRIMAL_VERTEX, ONE_RING_SUPPORT)
+#: first) is tested against, in order, by the claim's parameter (:attr:`~symdecomp.claims.registry.Claim.parameter`):
+#: ``"n"``, the 1-ring of a vertex; ``"k"``, a sector of ``k`` faces.
+ZOO_REQUIREMENTS = {"n": (PRIMAL_VERTEX, ONE_RING_SUPPORT), "k": (PRIMAL_SECTOR, ONE_RING_SUPPORT)}
 
 
 def closed_form_obstacle(scheme: Scheme) -> str | None:

@@ -4,11 +4,11 @@ Split from :mod:`symdecomp.claims.s6_cb_matrices` (the CB-matrix algebra), which
 
 from __future__ import annotations
 
-import flint
-import sympy as sp
-from sympy.polys.polyerrors import BasePolynomialError
+from collections.abc import Iterable
 
-from symdecomp.algebra.numbers import to_fmpq
+import sympy as sp
+
+from symdecomp.algebra.quadratic_extension import NotInExtension, polynomial_in
 from symdecomp.analysis.charpoly import closed_form_characteristic_polynomial, verify_closed_form
 from symdecomp.analysis.reduction import BorderedCBMatrix, add_columns_to_first, reduce_first_column, reduction_similarity, subdivision_block_form
 from symdecomp.analysis.tangent import tangent_eigenvalues
@@ -25,108 +25,42 @@ from symdecomp.symbols import n as N
 from symdecomp.symbols import omega as OMEGA
 
 
-def _displayed_expression_agrees(free: Scheme, expression: sp.Expr, valences) -> str | None:
-    """Expand the displayed closed form at each valence (vertex weights 0 and 1) and compare it with the matrix;
-    ``None`` when they agree, else where they differ."""
-    from symdecomp.analysis.charpoly import to_fmpq_poly
+def _displayed_expression_agrees(free: Scheme, expression: sp.Expr, valences: Iterable[int]) -> str | None:
+    """Expand the displayed closed form at each valence (vertex weights 0 and 1) exactly, in ``Q(lam)`` with its one
+    square root, and compare it with the matrix; ``None`` when they agree, else where they differ. Raises
+    :class:`~symdecomp.algebra.quadratic_extension.NotInExtension` for a form with more than one square root."""
     from symdecomp.schemes.full_matrix import characteristic_polynomial as matrix_characteristic_polynomial
     from symdecomp.symbols import lam
 
     for k in valences:
         for values in ({ALPHA: 0, BETA: 0}, {ALPHA: 1, BETA: 0}, {ALPHA: 0, BETA: 1}):
             subs = {N: k, **{p: v for p, v in values.items() if p in free.parameters}}
-            value = expression.subs(subs)
-            reduced = _reduced_in_flint(value, lam)
-            if not isinstance(reduced, flint.fmpq_poly):
-                poly = _one_root_polynomial(value, lam) or sp.Poly(sp.cancel(sp.expand(value)), lam)
-                reduced = to_fmpq_poly(poly.as_expr(), lam)
-            if reduced != matrix_characteristic_polynomial(free, k, values):
+            if polynomial_in(expression.subs(subs), lam) != matrix_characteristic_polynomial(free, k, values):
                 return f"n = {k}, alpha = {values[ALPHA]}, beta = {values[BETA]}"
     return None
 
 
-class _Unread(Exception):
-    """A node :func:`_reduced_in_flint` does not read (the sympy route decides)."""
-
-
-def _reduced_in_flint(value: sp.Expr, lam: sp.Symbol) -> flint.fmpq_poly | None | type[_Unread]:
-    """:func:`_one_root_polynomial` in FLINT: ``value`` walked as ``(a + b r)/d`` with ``a``, ``b``, ``d`` rational
-    polynomials in ``lam`` and ``r^2 = D``, the one square root's radicand (a quotient's denominator made free of ``r`` by
-    its conjugate); the polynomial ``a/d`` when ``b = 0`` and ``d`` divides ``a``, ``None`` when not, and ``_Unread`` for
-    an expression of another form (then sympy's reduction decides). About ten times faster than the sympy route."""
-    roots = {p for p in value.atoms(sp.Pow) if p.exp == sp.S.Half}
-    if len(roots) != 1:
-        return _Unread
-    (root,) = roots
+def _against_the_matrix(free: Scheme, expression: sp.Expr, concrete: bool) -> CheckResult | None:
+    """The finding when the closed form does not agree with the matrix (``concrete``: the evaluator's comparison for
+    n = 3..16), or when its displayed ``expression`` could not be expanded; ``None`` when both agree."""
     try:
-        D = _rational_poly(root.base, lam)
-        a, b, d = _walk(value, root, lam, D)
-    except (_Unread, ZeroDivisionError):
-        return _Unread
-    if not b.is_zero():
+        displayed = _displayed_expression_agrees(free, expression, range(3, 7))
+    except NotInExtension as unread:
+        if concrete:
+            return CheckResult(
+                Status.UNDECIDED,
+                f"the closed form equals the matrix's characteristic polynomial for n = 3..16, but the displayed "
+                f"expression was not expanded: it is not rational in lambda and one square root ({unread})",
+            )
+        displayed = None
+    if displayed is None and concrete:
         return None
-    quotient, rest = divmod(a, d)
-    return quotient if rest.is_zero() else None
-
-
-def _rational_poly(e: sp.Expr, lam: sp.Symbol) -> flint.fmpq_poly:
-    try:
-        poly = sp.Poly(e, lam, domain=sp.QQ)
-    except BasePolynomialError:
-        raise _Unread from None
-    return flint.fmpq_poly([to_fmpq(c) for c in reversed(poly.all_coeffs())])
-
-
-def _walk(e: sp.Expr, root: sp.Expr, lam: sp.Symbol, D: flint.fmpq_poly) -> tuple:
-    one, zero = flint.fmpq_poly([1]), flint.fmpq_poly([])
-    if e == root:
-        return zero, one, one
-    if e == lam:
-        return flint.fmpq_poly([0, 1]), zero, one
-    if e.is_Rational:
-        return flint.fmpq_poly([to_fmpq(e)]), zero, one
-    if isinstance(e, (sp.Add, sp.Mul)):
-        parts = [_walk(x, root, lam, D) for x in e.args]
-        out = parts[0]
-        for a2, b2, d2 in parts[1:]:
-            a1, b1, d1 = out
-            out = ((a1 * d2 + a2 * d1, b1 * d2 + b2 * d1, d1 * d2) if isinstance(e, sp.Add)
-                   else (a1 * a2 + b1 * b2 * D, a1 * b2 + a2 * b1, d1 * d2))
-        return out
-    if isinstance(e, sp.Pow) and e.exp.is_Integer:
-        a, b, d = _walk(e.base, root, lam, D)
-        k = int(e.exp)
-        if k < 0:  # 1/((a + b r)/d) = d (a - b r)/(a^2 - b^2 D)
-            norm = a * a - b * b * D
-            if norm.is_zero():
-                raise ZeroDivisionError
-            a, b, d, k = d * a, -(d * b), norm, -k
-        out = (one, zero, one)
-        for _ in range(k):
-            out = (out[0] * a + out[1] * b * D, out[0] * b + out[1] * a, out[2] * d)
-        return out
-    raise _Unread
-
-
-def _one_root_polynomial(value: sp.Expr, lam: sp.Symbol) -> sp.Poly | None:
-    """``value``, a rational expression in ``lam`` and one square root ``sqrt(D(lam))``, as the polynomial in ``lam`` it
-    equals, exactly: the root as a symbol ``r``, numerator and denominator reduced by ``r^2 = D`` over ``Q`` and divided;
-    ``None`` where it is not of that form (or ``r`` remains), left to sympy's ``cancel``."""
-    roots = {p for p in value.atoms(sp.Pow) if p.exp == sp.S.Half}
-    if len(roots) != 1:
-        return None
-    (root,) = roots
-    r = sp.Dummy("r")
-    try:
-        parts = [sp.Poly(part, r, lam, domain=sp.QQ) for part in sp.fraction(sp.together(value.xreplace({root: r})))]
-        square = sp.Poly(r**2 - root.base, r, lam, domain=sp.QQ)
-    except BasePolynomialError:  # another symbol, or a coefficient that is not rational
-        return None
-    numerator, denominator = (part.rem(square) for part in parts)
-    if numerator.degree(r) > 0 or denominator.degree(r) > 0 or denominator.is_zero:
-        return None
-    quotient, rest = sp.div(sp.Poly(numerator.as_expr(), lam, domain=sp.QQ), sp.Poly(denominator.as_expr(), lam, domain=sp.QQ))
-    return quotient if rest.is_zero else None
+    where = displayed if displayed is not None else "n = 3..16 (evaluator)"
+    return CheckResult(
+        Status.REFUTED,
+        "the closed form does not equal the characteristic polynomial of the matrix",
+        counterexample=Text("at ", where, " the displayed expression and det(xI - S) differ"),
+    )
 
 
 def _factored(cf, rho_p, rho_m) -> bool:
@@ -163,18 +97,12 @@ def _eq51(scheme: Scheme) -> CheckResult:
     concrete = all(verify_closed_form(free, n) for n in range(3, 17)) and all(
         verify_closed_form(scheme, n) for n in range(3, 17)
     )
-    displayed = _displayed_expression_agrees(free, cf.expression, range(3, 7))
     if not (factor_ok and combine_ok and sign == (-1) ** (N - 1)):
         return CheckResult(Status.ERROR, "a step of the closed form failed")
+    if (against_matrix := _against_the_matrix(free, cf.expression, concrete)) is not None:
+        return against_matrix
     x_ = sp.Symbol("x")
     rho_p_, rho_m_, c_p_, c_m_ = sp.symbols("rho_+ rho_- c_+ c_-")
-    if displayed is not None or not concrete:
-        where = displayed if displayed is not None else "n = 3..16 (evaluator)"
-        return CheckResult(
-            Status.REFUTED,
-            "the closed form does not equal the characteristic polynomial of the matrix",
-            counterexample=Text("at ", where, " the displayed expression and det(xI - S) differ"),
-        )
     return CheckResult(
         Status.PROVED,
         Text(

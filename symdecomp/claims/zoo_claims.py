@@ -44,7 +44,7 @@ def _first_unmet(scheme: StencilScheme, claim: Claim) -> Text | None:
     needed = one_ring_needed(claim.lattices, scheme, claim.parameter)
     if lattice(scheme.lattice) not in claim.lattices:
         return needed
-    for requirement in ZOO_REQUIREMENTS:  # the zoo's requirements take either model of a scheme (applicability)
+    for requirement in ZOO_REQUIREMENTS[claim.parameter]:  # the zoo's requirements take either model of a scheme (applicability)
         if (reason := requirement.unmet(scheme)) is not None:  # type: ignore[arg-type]
             return Text(reason, "; ", needed)
     return None

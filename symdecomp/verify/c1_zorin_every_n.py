@@ -57,10 +57,12 @@ from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_int, check_type
 from symdecomp.verify.c1_every_n import EveryNResult, EveryNStep, T, c1_every_n, laurent_in_t
 from symdecomp.verify.c1_uniform import t_lower_bound
+from symdecomp.verify.result import C1Verdict
 
 if TYPE_CHECKING:
     from symdecomp.analysis.zoo_structure import ZooStructure
     from symdecomp.verify.c1_spectrum import SpectralResult
+    from symdecomp.verify.c1_zoo import ZooC1Result
 
 __all__ = ["FrequencyPolynomials", "frequency_polynomials", "zorin_lambda_one", "zorin_spectral_every_n", "c1_zorin_every_n"]
 
@@ -357,7 +359,7 @@ def _per_valence(scheme: StencilScheme, start: int) -> EveryNStep | None:
                       (3, start - 1), "below-structural")
 
 
-def _witness_beyond(spectral: tuple[EveryNStep, ...], last: int, certify: Callable[[int], object]
+def _witness_beyond(spectral: tuple[EveryNStep, ...], last: int, certify: Callable[[int], ZooC1Result]
                     ) -> tuple[int, EveryNStep, str] | None:
     """``(n, step, reason)``: an open step's witness valence beyond ``last`` (the valences ``3..last`` are certified
     already) where the per-valence test ``certify(n)`` refutes C1, the first such; ``None`` where none does."""
@@ -365,8 +367,8 @@ def _witness_beyond(spectral: tuple[EveryNStep, ...], last: int, certify: Callab
         n = step.valences[1]
         if step.status == "open" and n is not None and n == step.valences[0] and n > last:
             r = certify(n)
-            if getattr(r, "verdict", None) == "not-c1":
-                return n, step, str(getattr(r, "reason", ""))
+            if r.verdict == C1Verdict.NOT_C1:
+                return n, step, r.reason
     return None
 
 
@@ -422,7 +424,7 @@ def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True,
 
 
 def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callable[[int], None] | None = None,
-                     certify: Callable[[int], object] | None = None, max_depth: int = 6,
+                     certify: Callable[[int], ZooC1Result] | None = None, max_depth: int = 6,
                      per_valence: bool = True, polys: FrequencyPolynomials | None = None) -> EveryNResult:
     """C1 for every valence as far as it is shown: the spectral steps for every ``n``, Zorin's test at ``3..last``
     (``certify(n)``, by default :func:`~symdecomp.verify.c1_zoo.c1_zoo`); the map is not proved for every ``n``, so the

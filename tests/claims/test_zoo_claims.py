@@ -14,7 +14,7 @@ import jsonschema
 import pytest
 
 from symdecomp.claims import Status, all_claims, check_claim, scope_summary
-from symdecomp.claims.applicability import FACE_NEIGHBOURS, ONE_RING_SUPPORT, PRIMAL_VERTEX, ZOO_REQUIREMENTS
+from symdecomp.claims.applicability import FACE_NEIGHBOURS, ONE_RING_SUPPORT, PRIMAL_SECTOR, PRIMAL_VERTEX, ZOO_REQUIREMENTS
 from symdecomp.claims.batch import check_claims
 from symdecomp.claims.zoo_claims import ENGINE_COMMANDS, zoo_claim_result
 from symdecomp.cli import main
@@ -30,8 +30,8 @@ FIRST_UNMET = {"doo-sabin": PRIMAL_VERTEX, "midedge": PRIMAL_VERTEX, "sqrt3": PR
                "modified-butterfly": ONE_RING_SUPPORT}
 
 
-def _first_unmet(scheme):
-    return next(req for req in ZOO_REQUIREMENTS if req.unmet(scheme) is not None)
+def _first_unmet(scheme, parameter="n"):
+    return next(req for req in ZOO_REQUIREMENTS[parameter] if req.unmet(scheme) is not None)
 
 
 @pytest.mark.parametrize("name", sorted(FIRST_UNMET))
@@ -44,7 +44,7 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
     assert list(rows) == [c.label for c in claims]
     scheme = load_scheme(name)
     assert _first_unmet(scheme) is FIRST_UNMET[name]
-    reason = str(FIRST_UNMET[name].unmet(scheme))
+    reasons = {p: str(_first_unmet(scheme, p).unmet(scheme)) for p in ZOO_REQUIREMENTS}  # a vertex's, a sector's
     for c in claims:
         row = rows[c.label]
         assert row["scheme"] == name
@@ -65,7 +65,7 @@ def test_the_table_of_statuses_of_each_shipped_zoo_scheme(name, capsys):
         else:  # on the claim's lattice: what the scheme has, then what the claim needs
             assert row["status"] == Status.NOT_APPLICABLE.value
             about = "a sector of k faces" if c.parameter == "k" else "the ("  # a sector claim's, or a vertex's 1-ring
-            assert row["evidence"].startswith(f"{reason}; the claim is about {about}") and "subdivides" not in row["evidence"]
+            assert row["evidence"].startswith(f"{reasons[c.parameter]}; the claim is about {about}") and "subdivides" not in row["evidence"]
 
 
 def test_the_scheme_free_claims_have_one_verdict_for_two_different_schemes():
@@ -105,6 +105,11 @@ def test_a_claim_that_requires_nothing_and_does_not_declare_it_reads_no_scheme_r
 
 def test_the_reasons_name_the_scheme_s_own_data():
     assert "n-sided face of a dual scheme" in str(PRIMAL_VERTEX.unmet(load_scheme("doo-sabin")))
+    # a sector claim is about a sector of k faces around a vertex, not about the n-sided face
+    sector = str(PRIMAL_SECTOR.unmet(load_scheme("doo-sabin")))
+    assert sector.startswith("a sector of k faces is centred on its vertex O, which a step of a dual scheme does not keep")
+    assert "n-sided face" not in sector and "'doo-sabin' makes a new point per face corner" in sector
+    assert str(PRIMAL_SECTOR.unmet(load_scheme("sqrt3"))) == str(PRIMAL_VERTEX.unmet(load_scheme("sqrt3")))
     assert "√3 topology (analysed over 2 steps)" in str(PRIMAL_VERTEX.unmet(load_scheme("sqrt3")))
     assert str(ONE_RING_SUPPORT.unmet(load_scheme("modified-butterfly"))).startswith("the edge rule reaches two rings out")
 
@@ -117,7 +122,8 @@ def test_each_requirement_s_verdict_flips_with_the_scheme():
     assert PRIMAL_VERTEX.unmet(dataclasses.replace(cc, topology="dual")) is not None  # one field changed, nothing else
     assert ONE_RING_SUPPORT.unmet(loop_stencils()) is None and ONE_RING_SUPPORT.unmet(primal_file) is not None
     assert PRIMAL_VERTEX.unmet(doo_sabin_stencils()) is not None  # Doo-Sabin is on quads: its topology is what fails
-    assert all(req.unmet(catmull_clark()) is None for req in ZOO_REQUIREMENTS)  # the 1-ring primal model meets them all
+    assert PRIMAL_SECTOR.unmet(cc) is None and PRIMAL_SECTOR.unmet(dataclasses.replace(cc, topology="dual")) is not None
+    assert all(req.unmet(catmull_clark()) is None for reqs in ZOO_REQUIREMENTS.values() for req in reqs)  # the 1-ring primal model meets them all
 
 
 def test_a_zoo_scheme_meeting_the_model_is_told_to_use_the_one_ring_format():
@@ -202,8 +208,8 @@ def test_a_triangle_scheme_is_told_what_each_claim_needs_not_a_quad_mesh_for_loo
                                   f"primal step, and '{name}' subdivides triangle meshes")
     either = reasons["1-ring suffices (after Eq. 51)"]
     assert "(2n+1)-point 1-ring of a vertex of a quad mesh or the (n+1)-point 1-ring of a vertex of a triangle mesh" in either
-    own = str(ZOO_REQUIREMENTS[0 if name == "sqrt3" else 1].unmet(load_scheme(name)))
-    assert all(reason.startswith(own + "; ") for label, reason in reasons.items()
+    own = {p: str(reqs[0 if name == "sqrt3" else 1].unmet(load_scheme(name))) for p, reqs in ZOO_REQUIREMENTS.items()}
+    assert all(reason.startswith(own[by_label[label].parameter] + "; ") for label, reason in reasons.items()
                if by_label[label].module not in ENGINE_COMMANDS and TRIANGLE in by_label[label].lattices)
 
 

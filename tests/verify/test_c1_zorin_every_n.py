@@ -9,7 +9,6 @@ weights in a variant file flips a step, with the valence where it fails computed
 from __future__ import annotations
 
 from pathlib import Path
-from types import SimpleNamespace
 
 import flint
 import mpmath
@@ -24,10 +23,17 @@ from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.stencil_files import load_zoo, stencil_scheme_from_text
 from symdecomp.verify.c1_every_n import T
+from symdecomp.verify.c1_zoo import ZooC1Result
 from symdecomp.verify.c1_zorin_every_n import X, c1_zorin_every_n, frequency_polynomials, zorin_lambda_one, zorin_spectral_every_n
+from symdecomp.verify.result import C1Verdict
 
 BUTTERFLY = (Path(schemes.__file__).parent / "zoo" / "modified-butterfly.toml").read_text()
 DIGITS = 40
+
+
+def stub(verdict: C1Verdict, reason: str):
+    """A per-valence test standing in for Zorin's: the same verdict at every valence, as the result type it returns."""
+    return lambda n: ZooC1Result(n, "stub", verdict, reason)
 
 
 def variant(old: str, new: str, name: str) -> object:
@@ -132,12 +138,12 @@ def test_a_centre_weight_at_frequency_two_above_lambda_one_is_refuted_at_the_fir
     assert steps["frequency-exceptional"].status == "failed" and steps["frequency-exceptional"].valences == (16, 16)
     # the per-valence route refutes there: the subdominant pair is of the frequencies 2, 14, so the map winds twice
     assert "of the frequencies 2, 14, not 1, n - 1" in steps["frequency-exceptional"].text
-    certified = SimpleNamespace(verdict="c1", reason="certified by the stub of this test")
-    result = c1_zorin_every_n(scheme, 4, certify=lambda n: certified, per_valence=False)
+    certified = stub(C1Verdict.C1, "certified by the stub of this test")
+    result = c1_zorin_every_n(scheme, 4, certify=certified, per_valence=False)
     assert result.status == "refuted" and result.failure == 16 and result.summary.startswith("C1 fails at n = 16")
     # a valence below where Zorin's test is undecided does not hide the counterexample at n = 16
-    open_at_3 = SimpleNamespace(verdict="undecided", reason="undecided by the stub of this test")
-    assert c1_zorin_every_n(scheme, 4, certify=lambda n: open_at_3, per_valence=False).failure == 16
+    open_at_3 = stub(C1Verdict.UNDECIDED, "undecided by the stub of this test")
+    assert c1_zorin_every_n(scheme, 4, certify=open_at_3, per_valence=False).failure == 16
     # sigma(2) = 3/4 is an eigenvalue of the explicit matrix at that valence: its characteristic polynomial vanishes there
     assert _eigenvalues_near(zoo_matrix(scheme, 16).matrix, sp.Rational(3, 4)) >= 1
 
@@ -169,12 +175,12 @@ def test_a_root_of_p1_above_the_proofs_lambda_one_leaves_c1_undecided_not_refute
         moduli = sorted((abs(z) for z in mpmath.eig(A, left=False, right=False)), reverse=True)
         assert abs(moduli[0] - 1) < mpmath.mpf(10) ** -30
         assert abs(moduli[1] - mpmath.mpf(str(sp.N(top, DIGITS + 10)))) < mpmath.mpf(10) ** -30
-    certified = SimpleNamespace(verdict="c1", reason="certified by the stub of this test")
-    result = c1_zorin_every_n(scheme, 4, certify=lambda n: certified, per_valence=False, polys=polys)
+    certified = stub(C1Verdict.C1, "certified by the stub of this test")
+    result = c1_zorin_every_n(scheme, 4, certify=certified, per_valence=False, polys=polys)
     assert result.status == "undecided" and result.failure is None
     # a per-valence test that refutes at the witness valence (beyond the certified ones) is what refutes, cited with n
-    refuting = SimpleNamespace(verdict="not-c1", reason="refuted by the stub of this test")
-    cited = c1_zorin_every_n(scheme, 4, certify=lambda n: refuting if n == 16 else certified, per_valence=False, polys=polys)
+    refuting = stub(C1Verdict.NOT_C1, "refuted by the stub of this test")
+    cited = c1_zorin_every_n(scheme, 4, certify=lambda n: refuting(n) if n == 16 else certified(n), per_valence=False, polys=polys)
     assert cited.status == "refuted" and cited.failure == 16 and "refuted by the stub of this test" in cited.summary
 
 
@@ -185,10 +191,8 @@ def test_below_the_structural_form_each_valence_but_the_regular_one_is_certified
 
 
 def test_the_every_n_verdict_is_undecided_because_the_map_is_certified_per_valence_only():
-    from types import SimpleNamespace
-
-    certified = SimpleNamespace(verdict="c1", reason="certified by the stub of this test")
-    result = c1_zorin_every_n(load_zoo("modified-butterfly"), 4, certify=lambda n: certified, per_valence=False)
+    certified = stub(C1Verdict.C1, "certified by the stub of this test")
+    result = c1_zorin_every_n(load_zoo("modified-butterfly"), 4, certify=certified, per_valence=False)
     assert result.status == "undecided"
     assert "not proved for every n" in result.summary
     names = [s.name for s in result.steps]

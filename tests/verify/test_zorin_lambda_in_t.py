@@ -9,8 +9,6 @@ scaled Schur-Cohn polynomials are checked on polynomials whose roots are known.
 
 from __future__ import annotations
 
-from types import SimpleNamespace
-
 import flint
 import mpmath
 import pytest
@@ -23,7 +21,9 @@ from symdecomp.symbols import n as N
 from symdecomp.verify.c1_every_n import T
 from symdecomp.verify.c1_uniform import t_lower_bound
 from symdecomp.verify.c1_zorin_every_n import X, c1_zorin_every_n, frequency_polynomials, zorin_lambda_one, zorin_spectral_every_n
+from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.zorin_lambda_in_t import linear_roots, other_frequencies_in_t, scaled_deltas
+from tests.verify.test_c1_zorin_every_n import stub
 
 SQRT3 = load_zoo("sqrt3")
 DIGITS = 40
@@ -97,10 +97,10 @@ def test_the_bad_vertex_weight_fails_frequency_zero_at_a_computed_valence_the_ex
     moduli = _moduli(bad, 16)
     lam = float(zorin_lambda_one(bad).subs(N, 16))
     assert abs(float(moduli[1]) - 49 / 81) < 1e-12 and float(moduli[1]) > lam + 0.1
-    certified = SimpleNamespace(verdict="c1", reason="certified by the stub of this test")
-    result = c1_zorin_every_n(bad, 4, certify=lambda n: certified, per_valence=False)
+    certified = stub(C1Verdict.C1, "certified by the stub of this test")
+    result = c1_zorin_every_n(bad, 4, certify=certified, per_valence=False)
     assert result.status == "refuted" and result.failure == 16
-    good = c1_zorin_every_n(SQRT3, 4, certify=lambda n: certified, per_valence=False)
+    good = c1_zorin_every_n(SQRT3, 4, certify=certified, per_valence=False)
     assert good.status == "undecided" and good.summary.startswith("the spectral conditions hold for every n")
 
 

@@ -49,7 +49,7 @@ from symdecomp.analysis.eigendata import (
 from symdecomp.analysis.eigendata_columns import RING_EIGEN
 from symdecomp.analysis.eigendata_sharpen import _round_all
 from symdecomp.analysis.eigendata_zeros import lower_mirror_zeros, mirror_zeros
-from symdecomp.analysis.fourier_patterns import LazyTable
+from symdecomp.analysis.fourier_patterns import LazyTable, TrigTable
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.patch import PatchMatrices, patch_matrices
 from symdecomp.schemes.scheme import Scheme, check_scheme
@@ -356,7 +356,8 @@ def _round_ring_rows(cols: list[Any], size: int) -> np.ndarray:
     certified = np.ones((k0, size), dtype=bool)
     if formed:
         forms = [cols[i].left_form for i in formed]
-        c = np.concatenate([split_balls(forms[0].table), np.zeros((3, 1))], axis=1)  # index -1: the exact 0
+        table = forms[0].table  # trig_table's splits a quarter of its balls; index -1 below: the exact 0
+        c = np.concatenate([table.split() if isinstance(table, TrigTable) else split_balls(table), np.zeros((3, 1))], axis=1)
         width = max(len(f.scalars) for f in forms)
         s = np.zeros((3, len(forms), width))
         split = split_balls([x for f in forms for x in f.scalars])  # all the forms' scalars in one pass

@@ -19,11 +19,11 @@ In one run, for Catmull-Clark (binary file) and for Loop (JSON, the default 17 d
 Targets (issue 33): N = 3..128 for each scheme within 3 times the baseline's seconds (b), measured in
 the same run, and within 300 MB, still certified (issue 24's were 15 s and 300 MB). The file's own
 construction of the exact patch matrices is part of (a) and not of (b). Last measured (x86_64, 2 cores, shared
-with other jobs, load 6.6; ``--against`` main's worktree, two rounds, this code, main's code and numpy in turn):
-Catmull-Clark 7.1 s and 7.2 s CPU beside main's 8.0 s and 7.8 s and numpy's 1.60 s and 1.57 s (4.4 and 4.6 times
-numpy's CPU; main 5.0 both), 14.1 s and 12.5 s wall beside numpy's 2.56 s and 2.66 s (5.5 and 4.7 times; main
-6.6 and 5.0), 104 MB; Loop 4.0 s CPU both beside main's 4.2 s and 4.1 s and numpy's 0.39 s and 0.40 s (10.1 and
-10.0 times; main 10.7 and 10.3), 97 MB; the files identical to main's. Neither target is met. A quiet
+with other jobs, load 9.9; ``--against`` main's code, two rounds, this code, main's code and numpy in turn):
+Catmull-Clark 7.9 s CPU both rounds beside main's 8.2 s and 8.4 s and numpy's 1.87 s and 1.89 s (4.2 times numpy's
+CPU both; main 4.4), 20.3 s and 28.3 s wall beside numpy's 6.3 s and 7.1 s (3.2 and 4.0 times; main 4.1 and 3.6),
+104 MB; Loop 4.5 s and 4.6 s CPU beside main's 4.7 s and 4.8 s and numpy's 0.43 s both (10.5 and 10.6 times; main
+11.0 and 11.2), 97-100 MB; the files identical to main's. Neither target is met. A quiet
 run of an earlier version (load 0.3): Catmull-Clark 3.6 s wall beside 1.18 s (3.0 times), Loop 1.6 s beside 0.26 s. Loop's
 start-up (about 0.5 s of CPU, sympy most of it: the scheme's rules are sympy expressions) is about 2 of the 3
 times numpy (0.26 s quiet) that its target allows. ``--against CHECKOUT`` times another checkout's command

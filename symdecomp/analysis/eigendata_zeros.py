@@ -54,9 +54,14 @@ def _vectors(p: PatchMatrices, idx: int, nus, w: list[list[flint.fmpq]], g_rows)
     return [ring] + [{c: x for c, x in v.items() if x} for v in h.values()]
 
 
-def _symmetric_axes(vectors: list[dict], steps: list[int], period: int) -> set[int]:
-    """The axes ``a`` (half steps, ``0..period - 1``) about which every vector is symmetric (``O`` is on every axis)."""
-    at = {s: c for c, s in enumerate(steps) if s >= 0}
+def _points_at(steps: list[int]) -> dict[int, int]:
+    """``{half step: point}`` of the 1-ring's points (``O``, at step -1, left out)."""
+    return {s: c for c, s in enumerate(steps) if s >= 0}
+
+
+def _symmetric_axes(vectors: list[dict], steps: list[int], period: int, at: dict[int, int]) -> set[int]:
+    """The axes ``a`` (half steps, ``0..period - 1``) about which every vector is symmetric (``O`` is on every axis);
+    ``at``: :func:`_points_at` of ``steps``."""
     support = sorted({c for v in vectors for c in v if c != 0})
     if not support:  # the entry reads the eigenvector at O only, where a wave is 0: any axis will do
         return {0}
@@ -89,15 +94,16 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
     g_rows = [{c: to_fmpq(x) for c, x in g.items()} for g in g_rows]
     columns = np.array([i for i, _ in waves], dtype=np.int64)
     js, shifts = (np.array([wave[m] for _, wave in waves], dtype=np.int64) for m in (0, 1))
+    at = _points_at(steps)  # once per valence: made per point it was a third of this function's time
     kinds_kept: dict[int, bool] = {}
     vanishing: dict[int, list[int]] = {}  # point -> the wave columns that vanish on it (points shared by sub-patches)
     out = []
     for k, sub in enumerate(p.subpatches):
         for l, idx in enumerate(sub):
             if idx not in vanishing:
-                axes = _symmetric_axes(_vectors(p, idx, nus, w, g_rows), steps, period)
+                axes = _symmetric_axes(_vectors(p, idx, nus, w, g_rows), steps, period, at)
                 for a in axes - kinds_kept.keys():  # each axis's test once per valence
-                    kinds_kept[a] = _same_kinds(coef, steps, a, period)
+                    kinds_kept[a] = _same_kinds(coef, steps, a, period, at)
                 axes = {a for a in axes if kinds_kept[a]}
                 odd = np.zeros(len(waves), dtype=bool)  # the waves antisymmetric about one of the axes
                 for a in axes:
@@ -107,9 +113,9 @@ def mirror_zeros(p: PatchMatrices, cols: list, nus, wmat, g_rows) -> list[tuple[
     return out
 
 
-def _same_kinds(coef: list, steps: list, a: int, period: int) -> bool:
-    """Whether the mirror about ``a`` maps every point of the 1-ring to one with the same scalar (the same kind)."""
-    at = {s: c for c, s in enumerate(steps) if s >= 0}
+def _same_kinds(coef: list, steps: list, a: int, period: int, at: dict[int, int]) -> bool:
+    """Whether the mirror about ``a`` maps every point of the 1-ring to one with the same scalar (the same kind);
+    ``at``: :func:`_points_at` of ``steps``."""
     return all((2 * a - s) % period in at and coef[at[(2 * a - s) % period]] == coef[c] for c, s in enumerate(steps) if s >= 0)
 
 
@@ -127,7 +133,7 @@ def lower_mirror_zeros(p: PatchMatrices, cols: list, g_rows) -> list[tuple[int, 
         return []
     steps = waves[0].wave[2].tolist()
     period, k0 = 2 * p.n, p.ring_size
-    at: dict[int, int] = {s: c for c, s in enumerate(steps) if s >= 0}
+    at = _points_at(steps)
     out = []
     for r, g in enumerate(g_rows):
         if g.get(0, 0) or not g:

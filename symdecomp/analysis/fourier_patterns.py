@@ -14,8 +14,9 @@ import flint
 import numpy as np
 
 from symdecomp.algebra.numbers import to_arb, to_fmpq
+from symdecomp.algebra.rounding import split_balls
 
-__all__ = ["PatternForm", "LazyTable", "trig_table"]
+__all__ = ["PatternForm", "LazyTable", "TrigTable", "trig_table"]
 
 arb = flint.arb
 
@@ -118,7 +119,7 @@ class LazyTable:
         return self.cache[m]
 
 
-def trig_table(n: int) -> list:
+def trig_table(n: int) -> TrigTable:
     """``cos(pi m/(2n))`` for ``m = 0..4n-1``: cos(pi m/n) is entry ``2m``, sin(pi m/n) entry ``2m - n``.
 
     Only the quarter ``m = 0..n`` is evaluated; the rest are its balls by ``cos(pi - x) = -cos(x)`` and
@@ -130,7 +131,34 @@ def trig_table(n: int) -> list:
     """
     quarter = [_trig_pi(m, 2 * n, "cos") for m in range(n + 1)]
     half = quarter + [-quarter[2 * n - m] for m in range(n + 1, 2 * n + 1)]
-    return half + [half[4 * n - m] for m in range(2 * n + 1, 4 * n)]
+    return TrigTable(n, half + [half[4 * n - m] for m in range(2 * n + 1, 4 * n)])
+
+
+class TrigTable(list):
+    """:func:`trig_table`'s balls (a list), which knows that they were made from the quarter ``m = 0..n``."""
+
+    def __init__(self, n: int, balls: list):
+        super().__init__(balls)
+        self.n = n
+
+    def split(self) -> np.ndarray:
+        """``split_balls(self)``, the quarter's balls split and the rest placed by the two symmetries the table was
+        made by: a ball's negation splits into the negated ``hi`` and ``lo`` and the same ``err`` (rounding to nearest
+        and Arb's midpoint rounding are symmetric about 0), so the bits are those of splitting every ball, in a
+        quarter of the Arb operations (the table is ``4n`` balls a valence, split for the 1-ring rows of ``V^-1``).
+
+        >>> t = trig_table(7)
+        >>> (t.split().view("u8") == split_balls(list(t)).view("u8")).all()
+        np.True_
+        """
+        n = self.n
+        quarter = split_balls(self[: n + 1])
+        m = np.arange(4 * n)
+        folded = np.where(m <= 2 * n, m, 4 * n - m)  # cos(2 pi - x) = cos(x)
+        negated = folded > n  # cos(pi - x) = -cos(x)
+        out = quarter[:, np.where(negated, 2 * n - folded, folded)]
+        out[:2, negated] = 0.0 - out[:2, negated]  # 0.0 - x: a zero lo stays +0.0, as float() of an exact 0 gives
+        return out
 
 
 def _pattern(table: list, n: int, j: int, fn: str, ce, cf) -> PatternForm:

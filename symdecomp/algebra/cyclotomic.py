@@ -23,7 +23,7 @@ import flint
 import mpmath
 import sympy as sp
 
-from symdecomp.algebra.numbers import to_fmpq, to_fraction
+from symdecomp.algebra.numbers import rational_poly, to_fmpq, to_fraction
 from symdecomp.errors import InvalidInputError, InvalidTypeError
 from symdecomp.symbols import n as VALENCE
 from symdecomp.symbols import omega as OMEGA
@@ -305,12 +305,10 @@ class CyclotomicFunction:
 
 
 def _rational_poly(e: sp.Expr, symbol: sp.Symbol, term) -> flint.fmpq_poly:
-    if e.free_symbols - {symbol} or not e.is_polynomial(symbol):
+    poly = rational_poly(e, symbol)
+    if poly is None:
         raise ValueError(f"{term} is not a cosine, sine or exponential of a rational multiple of pi")
-    coeffs = sp.Poly(e, symbol).all_coeffs()[::-1]
-    if not all(c.is_Rational for c in coeffs):
-        raise ValueError(f"{term} is not a cosine, sine or exponential of a rational multiple of pi")
-    return flint.fmpq_poly([to_fmpq(to_fraction(c)) for c in coeffs])
+    return poly
 
 
 def _tree(e: sp.Expr, leaves: dict):

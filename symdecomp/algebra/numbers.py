@@ -12,6 +12,7 @@ numeric cross-checks). Each function here takes any exact rational (``int``, ``F
 :func:`to_sympy`        sympy ``Rational`` (any other sympy object is returned as it is)
 :func:`to_arb`          ``flint.arb`` (exact when the denominator is a power of 2; an ``arb`` is returned as it is)
 :func:`to_mpf`          ``mpmath.mpf`` at the current mpmath precision
+:func:`rational_poly`   ``flint.fmpq_poly`` from a sympy polynomial with rational coefficients (else ``None``)
 ======================  =========================================================================
 
 Floats are refused (exact means exact): :class:`~symdecomp.errors.InvalidInputError` names the value.
@@ -30,7 +31,7 @@ import sympy as sp
 
 from symdecomp.errors import InvalidInputError
 
-__all__ = ["to_fraction", "to_fmpq", "to_sympy", "to_arb", "to_mpf", "numerator_denominator"]
+__all__ = ["to_fraction", "to_fmpq", "to_sympy", "to_arb", "to_mpf", "numerator_denominator", "rational_poly"]
 
 
 def numerator_denominator(x) -> tuple[int, int]:
@@ -90,3 +91,18 @@ def to_mpf(x) -> mpmath.mpf:
     """``x`` as an mpmath number, correctly rounded at the current mpmath precision."""
     p, q = numerator_denominator(x)
     return mpmath.mpf(p) / q
+
+
+def rational_poly(expr, symbol: sp.Symbol) -> flint.fmpq_poly | None:
+    """``expr`` (a sympy expression) as an ``fmpq_poly`` in ``symbol``; ``None`` where it is not a polynomial in ``symbol``
+    with rational coefficients (another symbol, a root, a negative power): the caller names the problem.
+
+    >>> x = sp.Symbol("x")
+    >>> rational_poly(sp.Rational(1, 2) * x**2 - 3, x), rational_poly(sp.sqrt(2) * x, x)
+    (1/2*x^2 + (-3), None)
+    """
+    try:
+        poly = sp.Poly(expr, symbol, domain=sp.QQ)
+    except sp.polys.polyerrors.BasePolynomialError:
+        return None
+    return flint.fmpq_poly([flint.fmpq(int(c.numerator), int(c.denominator)) for c in reversed(poly.all_coeffs())])

@@ -20,9 +20,8 @@ from __future__ import annotations
 
 import flint
 import sympy as sp
-from sympy.polys.polyerrors import BasePolynomialError
 
-from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.algebra.numbers import rational_poly, to_fmpq
 
 __all__ = ["NotInExtension", "polynomial_in"]
 
@@ -53,11 +52,10 @@ def polynomial_in(value: sp.Expr, symbol: sp.Symbol) -> flint.fmpq_poly | None:
 
 
 def _rational_poly(e: sp.Expr, symbol: sp.Symbol) -> flint.fmpq_poly:
-    try:
-        poly = sp.Poly(e, symbol, domain=sp.QQ)
-    except BasePolynomialError:
-        raise NotInExtension(f"{e} is not a rational polynomial in {symbol}") from None
-    return flint.fmpq_poly([to_fmpq(c) for c in reversed(poly.all_coeffs())])
+    poly = rational_poly(e, symbol)
+    if poly is None:
+        raise NotInExtension(f"{e} is not a rational polynomial in {symbol}")
+    return poly
 
 
 def _walk(e: sp.Expr, root: sp.Expr | None, symbol: sp.Symbol, D: flint.fmpq_poly) -> _Element:

@@ -53,7 +53,7 @@ from functools import lru_cache, partial
 import flint
 import sympy as sp
 
-from symdecomp.algebra.numbers import to_fmpq
+from symdecomp.algebra.numbers import rational_poly, to_fmpq
 from symdecomp.analysis.frequency import RingBlocks, per_frequency_matrix, ring_blocks
 from symdecomp.analysis.reduction import reduce_first_column, subdivision_block_form
 from symdecomp.errors import InternalError, InvalidInputError, NotApplicableError
@@ -157,13 +157,10 @@ def to_fmpq_poly(expr, variable: sp.Symbol = LAM) -> flint.fmpq_poly:
     free = expr.free_symbols - {variable}
     if free:
         raise InvalidInputError(f"cannot evaluate exactly: free symbols {sorted(map(str, free))} left; give their values")
-    poly = sp.Poly(expr, variable)
-    coeffs = []
-    for c in reversed(poly.all_coeffs()):
-        if not c.is_Rational:
-            raise InvalidInputError(f"coefficient {c} of {expr} is not rational")
-        coeffs.append(to_fmpq(c))
-    return flint.fmpq_poly(coeffs)
+    poly = rational_poly(expr, variable)
+    if poly is None:
+        raise InvalidInputError(f"{expr} is not a polynomial in {variable} with rational coefficients")
+    return poly
 
 
 @cached(scheme=check_scheme)

@@ -31,6 +31,7 @@ the net's growth beyond the neighbourhood and the refinement's difference bounds
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import flint
 import sympy as sp
@@ -39,6 +40,9 @@ from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.stencils import N, StencilScheme
 from symdecomp.symbols import omega as OMEGA
 from symdecomp.validate import check_int, check_type
+
+if TYPE_CHECKING:
+    from symdecomp.verify.c1_zorin_every_n import FrequencyPolynomials
 
 __all__ = ["EveryNEigenvector", "every_n_eigenvector", "holds_at", "remaining"]
 
@@ -100,20 +104,24 @@ def _frequency_one_block(scheme: StencilScheme, depth: int) -> tuple[sp.Matrix, 
     return B, st.valid_from
 
 
-def every_n_eigenvector(scheme: StencilScheme, depth: int | None = None) -> EveryNEigenvector:
+def every_n_eigenvector(scheme: StencilScheme, depth: int | None = None,
+                        polys: FrequencyPolynomials | None = None) -> EveryNEigenvector:
     """The closed form for every ``n`` (module docstring) on the neighbourhood of ``depth`` (default: Zorin's test's,
     :func:`~symdecomp.verify.c1_zorin.net_depth`); :class:`~symdecomp.errors.NotApplicableError` (one line) where it does
     not apply: no ``lambda_1`` constant for every ``n``, a ``det`` that is not a nonzero constant, ``x_0 = 1`` no
-    eigenvector."""
+    eigenvector. ``polys``: the scheme's :func:`~symdecomp.verify.c1_zorin_every_n.frequency_polynomials` where the
+    caller has them already."""
     from symdecomp.verify.c1_zorin import net_depth
     from symdecomp.verify.c1_zorin_every_n import zorin_lambda_one
     from symdecomp.verify.zorin_bounds import difference_bounds
 
     check_type(scheme, StencilScheme, "scheme", hint="a scheme of the zoo, e.g. load_zoo('modified-butterfly')")
-    depth = net_depth(difference_bounds(scheme)) if depth is None else check_int(depth, "depth", minimum=1)
-    lam = zorin_lambda_one(scheme)
+    if depth is not None:
+        depth = check_int(depth, "depth", minimum=1)
+    lam = zorin_lambda_one(scheme, polys)
     if lam is None or not lam.is_Rational:
         raise NotApplicableError(f"lambda_1 = {lam} is not a rational constant for every n: the eigenvector is not solved here")
+    depth = net_depth(difference_bounds(scheme)) if depth is None else depth
     B, first = _frequency_one_block(scheme, depth)
     K = B.rows
     shifted = lam * sp.eye(K - 1) - B[1:, 1:]

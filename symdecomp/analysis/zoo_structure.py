@@ -197,10 +197,11 @@ class ZooStructure:
         return flint.acb_mat(rows)
 
 
-def _read(scheme: StencilScheme, n0: int) -> tuple[Any, dict[int, sp.Matrix], tuple[_Family, ...], int]:
+def _read(scheme: StencilScheme, n0: int, depth: int | None = None
+          ) -> tuple[Any, dict[int, sp.Matrix], tuple[_Family, ...], int]:
     """The blocks read with markers, the centre's row by sector offset (``1 x K``), the marked terms, the depth."""
     marked, families = _marked(scheme, n0)
-    zm = zoo_matrix(marked, n0)
+    zm = zoo_matrix(marked, n0, depth)
     blocks, nb = zoo_blocks(zm), zm.neighbourhood
     row: dict[int, sp.Matrix] = {}
     if nb.centre is not None:
@@ -272,9 +273,10 @@ def _reach(n0: int, *offsets: int) -> None:
         raise NotApplicableError(f"the stencils reach {max(map(abs, offsets))} sectors, too far to read at n = {n0}")
 
 
-def _form(scheme: StencilScheme, n0: int) -> tuple[ZooStructure, Band, Groups, tuple[_Family, ...]]:
+def _form(scheme: StencilScheme, n0: int, depth: int | None = None
+          ) -> tuple[ZooStructure, Band, Groups, tuple[_Family, ...]]:
     """The structure read at ``n0``, with its band and groups (for the checks)."""
-    blocks, centre_row, families, depth = _read(scheme, n0)
+    blocks, centre_row, families, depth = _read(scheme, n0, depth)
     K = blocks.class_count
     band, groups = _groups(blocks.offsets, n0, families)
     _reach(n0, *(d for _, _, d in band), *(e for *_, e in groups))
@@ -285,7 +287,7 @@ def _form(scheme: StencilScheme, n0: int) -> tuple[ZooStructure, Band, Groups, t
     for (c, e, t, shift), parts in groups.items():
         coef = _whole(parts, n0, f"block ({c}, {e})")
         B[c, e] += _scalars(coef, families, N, n0) * OMEGA**shift * sigma.setdefault(t, sp.Symbol(f"sigma{t}"))
-    later = _read(scheme, n0 + 1)[0] if blocks.has_centre else None
+    later = _read(scheme, n0 + 1, depth)[0] if blocks.has_centre else None
     border = _border(blocks, later, centre_row, families, sigma, n0)
     fams = sorted(sigma)
     symbols = tuple(family_symbol(families[t].weight, families[t].size) for t in fams)
@@ -354,7 +356,7 @@ def _predicted(band: Band, groups: Groups, families: tuple[_Family, ...], n0: in
 
 def _check(scheme: StencilScheme, st: ZooStructure, band: Band, groups: Groups, families: tuple[_Family, ...], n: int) -> None:
     """The explicit matrix at ``n`` is, entry by entry and exactly, the form read at :attr:`ZooStructure.read_at`."""
-    explicit = zoo_blocks(zoo_matrix(scheme, n))
+    explicit = zoo_blocks(zoo_matrix(scheme, n, st.depth))
     K, n0 = st.class_count, st.read_at
     zero = sp.zeros(K, K)
     for d in {signed_offset(x, n) for x in range(n)}:
@@ -376,20 +378,23 @@ def _check(scheme: StencilScheme, st: ZooStructure, band: Band, groups: Groups, 
                                      f"read at n = {n0} (border entry {i}: {a} against {b})")
 
 
-def zoo_structure(scheme: StencilScheme, n0: int = READ_AT) -> ZooStructure:
+def zoo_structure(scheme: StencilScheme, n0: int = READ_AT, depth: int | None = None) -> ZooStructure:
     """The blocks of ``scheme`` for every valence from :attr:`ZooStructure.valid_from`, read at ``n0`` (the centre's entries
-    at ``n0 + 1`` too) and checked exactly at ``n0 + 2`` and ``n0 + 3`` against the explicit matrices.
+    at ``n0 + 1`` too) and checked exactly at ``n0 + 2`` and ``n0 + 3`` against the explicit matrices; ``depth``: the
+    neighbourhood's ring depth (default: the smallest invariant one, :func:`~symdecomp.analysis.zoo_matrix.zoo_matrix`).
 
     :class:`~symdecomp.errors.NotApplicableError` when the scheme's centre rules do not have the form (module
     docstring); :class:`~symdecomp.errors.InvalidSchemeError` when a check fails.
     """
     check_type(scheme, StencilScheme, "scheme", hint="a StencilScheme")
-    return _zoo_structure(scheme, check_int(n0, "n0", minimum=READ_AT))
+    if depth is not None:
+        depth = check_int(depth, "depth", minimum=1)
+    return _zoo_structure(scheme, check_int(n0, "n0", minimum=READ_AT), depth)
 
 
 @functools.lru_cache(maxsize=16)
-def _zoo_structure(scheme: StencilScheme, n0: int) -> ZooStructure:
-    st, band, groups, families = _form(scheme, n0)
+def _zoo_structure(scheme: StencilScheme, n0: int, depth: int | None = None) -> ZooStructure:
+    st, band, groups, families = _form(scheme, n0, depth)
     for n in (n0 + 2, n0 + 3):
         _check(scheme, st, band, groups, families, n)
     return st

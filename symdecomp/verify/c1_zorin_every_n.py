@@ -372,6 +372,18 @@ def _witness_beyond(spectral: tuple[EveryNStep, ...], last: int, certify: Callab
     return None
 
 
+def _map_open(scheme: StencilScheme, polys: FrequencyPolynomials | None) -> str:
+    """The open map step's text: what of the map part for every ``n`` is derived
+    (:mod:`symdecomp.verify.zorin_eigenvector_every_n`) and what remains."""
+    from symdecomp.verify.zorin_eigenvector_every_n import every_n_eigenvector, remaining
+
+    lead = "regularity and injectivity of the characteristic map beyond the certified valences are open: "
+    try:
+        return lead + remaining(every_n_eigenvector(scheme, polys=polys))
+    except NotApplicableError as exc:
+        return lead + f"the frequency-1 eigenvector on Zorin's neighbourhood has no closed form for every n here ({exc})"
+
+
 def zorin_lambda_one(scheme: StencilScheme, polys: FrequencyPolynomials | None = None) -> sp.Expr | None:
     """``lambda_1`` for every ``n`` from the structural form (the ``lambda-one`` step): a constant, or a closed form in
     ``n`` (``cos(2 pi/n)`` for ``t``), or ``None`` where none is derived; ``polys``: the scheme's
@@ -437,6 +449,7 @@ def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callabl
     last = check_int(last, "last", minimum=3)
     certify = certify or (lambda k: c1_zoo(scheme, k, max_depth=max_depth))
     try:
+        polys = polys or frequency_polynomials(scheme)
         spectral = zorin_spectral_every_n(scheme, per_valence=per_valence, polys=polys)
     except NotApplicableError as exc:
         spectral = (EveryNStep(f"the spectral conditions for every n are not read: {exc}", "open", (3, None), "spectral"),)
@@ -444,7 +457,8 @@ def c1_zorin_every_n(scheme: StencilScheme, last: int = 16, *, progress: Callabl
                         map_every_n=lambda lo, last: None, fails_from=lambda k, certify: None, first=3)
     steps = tuple(replace(s, text="Zorin's test at each valence: the spectral conditions and a regular, injective "
                           "characteristic map, certified (Arb balls)")
-                  if s.name == "reif-per-valence" else s for s in result.steps)
+                  if s.name == "reif-per-valence" else replace(s, text=_map_open(scheme, polys))
+                  if s.name == "map-open" else s for s in result.steps)
     failed = [s for s in spectral if s.status == "failed"]
     if result.status == "refuted":
         return replace(result, steps=steps)

@@ -18,7 +18,7 @@ extended outwards as far as the test needs, then refined ``m`` times on an annul
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 import flint
@@ -110,7 +110,7 @@ def grow(net: WedgeNet, radius: int, lam: flint.acb, bounds: DifferenceBounds, t
         if high <= radius or radius + 1 < bounds.clear_radius:  # the new points keep their stencils clear of the centre
             raise InvalidSchemeError(f"the net of radius {radius} does not grow: the regular stencils reach {reach}")
         new = _step(net, fm, a, radius + 1, high)
-        net = WedgeNet({**net.values, **{q: v / lam for q, v in new.items()}}, net.rho)
+        net = replace(net, values={**net.values, **{q: v / lam for q, v in new.items()}})  # a subclass stays one
         radius = high
     return net, radius
 
@@ -120,5 +120,5 @@ def refine(net: WedgeNet, low: int, high: int, bounds: DifferenceBounds) -> tupl
     a, reach = bounds.dilation, bounds.reach
     new_low = max(a * low + reach, bounds.clear_radius)
     new_high = a * high - reach
-    return WedgeNet(_step(net, _fmpq_mask(bounds.mask), a, new_low, new_high), net.rho), new_low, new_high
+    return replace(net, values=_step(net, _fmpq_mask(bounds.mask), a, new_low, new_high)), new_low, new_high
 

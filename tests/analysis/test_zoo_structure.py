@@ -54,6 +54,20 @@ def test_the_structural_blocks_hold_the_explicit_ones(name, n):
                 assert b.overlaps(a) and float(b.rad().abs_upper()) < 1e-30, (name, n, k, a, b)
 
 
+def test_the_structural_blocks_on_a_deeper_neighbourhood_hold_the_explicit_ones():
+    """Zorin's test reads the butterfly's eigenvector on depth 4, beyond the smallest invariant depth (2)."""
+    scheme, n = load_zoo("modified-butterfly"), READ_AT + 5
+    st = zoo_structure(scheme, depth=4)
+    assert (st.depth, st.class_count) == (4, 10) and zoo_structure(scheme).depth == 2
+    blocks = zoo_blocks(zoo_matrix(scheme, n, 4))
+    with flint.ctx.workprec(128):
+        for k in (0, 1, 2, 5):
+            explicit, structural = _explicit_block(blocks, k, n), st.frequency_block(n, k)
+            assert (explicit.nrows(), explicit.ncols()) == (structural.nrows(), structural.ncols())
+            for a, b in zip(explicit.entries(), structural.entries()):
+                assert b.overlaps(a) and float(b.rad().abs_upper()) < 1e-30, (k, a, b)
+
+
 @pytest.mark.slow
 def test_a_centre_family_s_fourier_sum_is_its_symbol():
     st = zoo_structure(load_zoo("doo-sabin"))

@@ -197,5 +197,9 @@ def test_the_every_n_verdict_is_undecided_because_the_map_is_certified_per_valen
     assert "not proved for every n" in result.summary
     names = [s.name for s in result.steps]
     assert "map-open" in names and names.index("other-frequencies") < names.index("map-open")
+    # the open map step says what of the map part is derived for every n (the eigenvector) and what remains
+    map_open = next(s for s in result.steps if s.name == "map-open")
+    assert "the frequency-1 eigenvector on the depth-4 neighbourhood is derived for every n >= 16" in map_open.text
+    assert "difference bounds are not yet exact signs in t" in map_open.text
     per_valence = next(s for s in result.steps if s.name == "reif-per-valence")
     assert per_valence.valences == (3, 4) and per_valence.text.startswith("Zorin's test at each valence: ")

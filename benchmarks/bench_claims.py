@@ -27,6 +27,26 @@ above the target and say little): Catmull-Clark 19.4 -> 17.3 CPU seconds (45.8 -
 -> 25.0 s wall), the same rows byte for byte. On an idle two-core machine the pool's wall time should be about the start-up
 (1.2 s) plus half the CPU (an estimate: no idle machine was at hand in this pass).
 
+Third pass (one process, ``claims --jobs 1``'s order, CPU seconds, load 5 to 7): Section 3: Catmull-Clark support 0.8 ->
+0.55 (refinement of a basis function, mostly zeros: a rational weight's term on a rational zero left out, a mesh's
+interior vertices found once); Section 5.2: Catmull-Clark example 0.73 -> 0.3 (its defects at n = 3, 5 read as digits
+without ``simplify``; n = 4 still simplified to an exact zero); Spectrum (Eq. 34, Eq. 43) 0.69 -> 0.65 (the charpoly's bit
+bound from the nonzero entries). Where the rest goes (top ten, CPU seconds): C1 (Reif's test) 1.34 (the ring layout's
+3-ring blocks and the every-n route's uniform map), Curvature regime: Catmull-Clark 0.98 (the second-order structure per
+valence, sympy ``cancel`` in the hyperbolic cause), Shape 0.72 (certified curvature Gram matrices per valence, Bernstein
+products), Eq. 1 0.66 (of which about 0.4 is sympy.physics.units, imported by the first ``simplify`` of a process; the
+rest the exact decompositions written to sympy), Eq. 50 0.61 and Remark 6.1 0.43 (sympy ``eigenvects`` of 2 x 2 blocks
+over Q(i): roots by factoring over an algebraic field), Eq. 46 0.59 (``block_collapse`` of symbolic block matrices),
+Spectrum 0.5 (FLINT charpolys and closed forms at n = 3..48), Proposition 6.2 0.47 (the lift identity, sympy matrix
+products), Eq. 51 0.45. Fixed costs: import 0.5 s, the claims registry (every section's module) 0.7 s, both before the
+workers fork; each worker pays sympy.physics.units (about 0.5 s) at its first ``simplify``. The first group of
+:data:`~symdecomp.claims.batch.GROUPS` costs 3.45 CPU-s together and 7.0 with each claim in its own process.
+Side by side (``--against`` main, alternately, the same rows byte for byte): Catmull-Clark 20.06 -> 19.38 CPU seconds
+(medians of 3, load about 5 with other jobs and a test run: 75 -> 87 s wall, which says nothing) and 19.26 -> 18.02
+(medians of 2, load 4.7: 34.8 -> 35.6 s wall); Loop 10.7 -> 10.8 and 11.05 -> 11.0 (unchanged: none of its costly claims
+was cut). The 10 s target is not reached: on an idle machine main took 12.4 s wall (18.8 CPU-s) in this pass, and
+these cuts save about 1 CPU-s, so about half a second of wall.
+
 Baseline, measured in the same run: ``claims --jobs 1`` (one process, every claim in turn, as before the pool). Both
 runs must print the same rows (label, status, scope, evidence, ...), byte for byte.
 

@@ -248,7 +248,8 @@ def _rational_charpoly(entries: dict, size: int, what: str) -> flint.fmpq_poly:
     ``chi_S(lambda) = d^-size chi_A(d lambda)`` for the balanced integer matrix ``A = d T S T^-1``.
     """
     A, d = _balanced_integer_matrix(entries, size)
-    bits = max(int(d).bit_length(), max((abs(int(A[r, c])).bit_length() for r in range(size) for c in range(size)), default=1))
+    # A is as sparse as the entries: the others are zeros, of no bits
+    bits = max(int(d).bit_length(), max((abs(int(A[r, c])).bit_length() for r, c in entries), default=1))
     check_memory(charpoly_memory(size, bits), f"the exact characteristic polynomial {what}")
     coeffs = A.charpoly().coeffs()
     size = len(coeffs) - 1

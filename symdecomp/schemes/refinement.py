@@ -1,10 +1,9 @@
 """Exact refinement of quad and triangle meshes by a scheme's rules (whole-mesh view of Eq. 14-16).
 
-The 1-ring rules of a :class:`~symdecomp.schemes.scheme.Scheme` say how the 1-ring of *one* vertex
-moves. On a whole quad mesh every vertex is the centre of its own 1-ring, so the three rules
-must be readable as rules *of the mesh*: one point per face, per edge and per vertex. This
-module derives those mesh rules from the scheme (:func:`mesh_rules`) and refuses schemes whose
-1-ring rules cannot be read that way (a face point that depends on which corner is called
+The 1-ring rules of a :class:`~symdecomp.schemes.scheme.Scheme` say how the 1-ring of *one* vertex moves. On a whole
+quad mesh every vertex is the centre of its own 1-ring, so the three rules must be readable as rules *of the mesh*:
+one point per face, per edge and per vertex. This module derives those mesh rules from the scheme (:func:`mesh_rules`)
+and refuses schemes whose 1-ring rules cannot be read that way (a face point that depends on which corner is called
 ``O``, an edge point that depends on which end is called ``O``):
 
 * face rule (Eq. 15) -> face point: the four corners of the face, which consistency forces to
@@ -32,9 +31,8 @@ arbitrarily large mesh containing this one would give there. Refining the ``R``-
 around a vertex gives the ``2R - 1``-ring mesh around it; in particular (``R = 1``) the new
 1-ring of a vertex depends only on its old 1-ring.
 
-Values at vertices (:mod:`symdecomp.schemes.mesh`) may be Fractions, sympy expressions or
-floats; rational weights are applied as ``Fraction`` so exact refinement of rational data
-stays fast.
+Values at vertices (:mod:`symdecomp.schemes.mesh`) may be Fractions, sympy expressions or floats; rational weights are
+applied as ``Fraction``, and their terms on rational zeros left out, so exact refinement of rational data stays fast.
 
 **Triangles.** A triangle scheme (on :data:`~symdecomp.schemes.lattice.TRIANGLE`, e.g.
 :func:`~symdecomp.schemes.loop.loop`) moves the 1-ring ``(O, a_0..a_{n-1})`` of a vertex by an edge
@@ -274,7 +272,9 @@ def _combine(terms: Iterable[tuple[object, tuple]]) -> tuple:
     terms = list(terms)
     if len({len(val) for _, val in terms}) != 1:
         raise InvalidMeshError("vertex values have different lengths")
-    return tuple(sum((w * val[k] for w, val in terms[1:]), terms[0][0] * terms[0][1][k]) for k in range(len(terms[0][1])))
+    # a rational zero times a rational weight adds nothing (after the first term, which fixes the sum's type)
+    rest = [(w, val) for w, val in terms[1:] if not (isinstance(w, Fraction) and all(type(x) in (Fraction, int) and x == 0 for x in val))]
+    return tuple(sum((w * val[k] for w, val in rest), terms[0][0] * terms[0][1][k]) for k in range(len(terms[0][1])))
 
 
 def point_stencils(mesh: QuadMesh, rules: MeshRules, vertex_weights: Callable | None = None,

@@ -80,3 +80,10 @@ def test_a_mutated_triangle_decides_valence_3(a, verdict, tmp_path, capsys):
         assert abs(row["lambda"] - (0.75 - 0.25 / 2)) < 1e-12 and row["winding_number"] == row["jacobian_sign"] == 1
     else:
         assert "Jordan blocks: 2 of size 1" in row["reason"] and row["reason"].endswith("fail on the functions")
+
+
+def test_the_method_line_names_each_route_with_its_valences(capsys):
+    assert main(["c1", "--scheme", "midedge", "--n", "3:4", "--quiet"]) == 0
+    method = capsys.readouterr().out.splitlines()[1]
+    assert method.startswith("method: the spectrum on the functions of the four-direction patch")
+    assert "winding once (n = 3); Reif's test on the characteristic map's ring" in method and method.endswith("(n = 4)")

@@ -8,9 +8,10 @@ after a simple 1, and those blocks exactly one pair of frequencies ``j, n - j``)
 :mod:`symdecomp.verify.c1_corner_jordan` does it for BLZ's corners.
 
 *What was read*: a search of stored public pages for Peters and Reif on Jordan blocks and generalized eigenvectors of
-subdivision matrices found none of their text, only textbook pages on Jordan chains (the convention ``N v_1 = 0,
-N v_2 = v_1``, ``N = A - lambda I``); J. Peters and U. Reif, *Subdivision Surfaces* (Springer 2008), Sect. 5.3, is
-not read here. The argument below is this module's own and is not claimed to be theirs.
+subdivision matrices found none of their text, only textbook pages on Jordan chains (e.g. *11.6 Jordan Form and
+Eigenanalysis*, a course text: the chain ``N v_1 = 0, N v_2 = v_1``, ``N = A - lambda I``, the convention used
+here); J. Peters and U. Reif, *Subdivision Surfaces* (Springer 2008), whose Sect. 5.3 the earlier undecided reason
+named, was not read. The argument below is this module's own and is not claimed to be theirs.
 
 **The expansion.** Let ``A = S - lambda I`` on the functions' quotient, ``g`` start a chain of length ``p`` in the
 class of frequencies ``j, n - j`` and ``e = A^(p-1) g`` (the chain's eigenvector). Then

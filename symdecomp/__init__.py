@@ -173,7 +173,9 @@ nothing else.
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) or a piecewise quadratic on the four-direction
                    mesh (Midedge, ``c1_four_direction``; where the matrix fails Reif's conditions, the spectrum on
-                   the functions that patch makes, its translates being dependent, ``c1_four_direction_quotient``)
+                   the functions that patch makes, its translates being dependent, ``c1_four_direction_quotient``; where
+                   its subdominant eigenvalue has one pair of Jordan chains, C1 from the map of the chains'
+                   eigenvectors, ``c1_four_direction_jordan``)
                    and the route read from the scheme's model, or
                    undecided with the reason (``c1_zoo``; the engine's mesh, spectral conditions and characteristic
                    map at one valence, ``zoo_characteristic``), Zorin's test where no spline patch exists (a vertex

@@ -227,9 +227,19 @@ def _run_zoo(args, items: None, plot) -> int:
             raise InvalidInputError(f"--every-n: the spectral conditions for every n are not derived for {args.scheme.name!r} "
                                     f"(a scheme of the zoo: {reason.split('; ')[0]}); give --n A:B")
         return _run_every_n(args, _zoo_one, ZORIN_EVERY_N_CERTIFIED if zorin else ZOO_EVERY_N_CERTIFIED, plot, polys)
-    results = _run_valences(args, _zoo_one, lambda results: results[0].json["method"], title="C1 by the test its model allows")
+    results = _run_valences(args, _zoo_one, _zoo_methods, title="C1 by the test its model allows")
     write_plot(plot, lambda: _zoo_figure(args.scheme, results))
     return 0 if all(r.verdict is C1Verdict.C1 for r in results) else 1
+
+
+def _zoo_methods(results: list) -> str:
+    """The method line: one method, or each with the valences it decided (Midedge: the Jordan chains at 3, Reif's from 4)."""
+    by_method: dict[str, list[int]] = {}
+    for r in results:
+        by_method.setdefault(r.json["method"], []).append(r.n)
+    if len(by_method) == 1:
+        return next(iter(by_method))
+    return "; ".join(f"{m} (n = {', '.join(map(str, ns))})" for m, ns in by_method.items())
 
 
 def _zorin_polynomials(scheme) -> tuple[FrequencyPolynomials | None, str | None]:

@@ -22,9 +22,9 @@ vectors vanish and redoes the spectral conditions on what remains, exactly (FLIN
   ``x`` (the real and imaginary parts of the complex one, up to a positive scale of the second) and Reif's test runs
   on it (:func:`~symdecomp.verify.c1_four_direction.certify_four_direction_ring`). Otherwise the Jordan structure of
   ``lambda`` by class is the reason; where the Jordan blocks of largest size ``p`` at ``lambda`` give a two
-  dimensional top space (``(S - lambda)^(p-1)`` of the generalized eigenspace) in one such class, the rings grow as
-  ``m^(p-1) lambda^m`` on that space, and the map of that space is certified too, as evidence: Reif's test as
-  implemented here requires no Jordan block, so the verdict stays undecided and says what was shown.
+  dimensional space of chain eigenvectors (``e = (S - lambda)^(p-1) g``, the image of the generalized eigenspace) in
+  one such class, the rings grow as ``m^(p-1) lambda^m`` on those ``e``, and the map of that pair is certified; the
+  outcome keeps the chain ``(g, e)``, and :mod:`symdecomp.verify.c1_four_direction_jordan` reads the verdict from it.
 """
 
 from __future__ import annotations
@@ -316,6 +316,12 @@ class QuotientOutcome:
     frequency: int | None = None
     #: ``True`` when the reason shows a failure of the spectral conditions with no Jordan block (not C1).
     refuted: bool = False
+    #: Where the largest Jordan blocks at the subdominant eigenvalue (size ``p >= 2``) are one pair of frequencies: a
+    #: chain's start ``g`` and its eigenvector ``e = (S - lambda)^(p-1) g``, on the control points (``order``), exact;
+    #: the certified ``ring`` is the map of ``e``.
+    chain: tuple[tuple[Fraction, ...], tuple[Fraction, ...]] | None = None
+    #: ``p``, the size of those blocks (1 when there is no chain).
+    chain_length: int = 1
 
 
 def _vanishing_text(spectrum: QuotientSpectrum) -> str:
@@ -348,7 +354,7 @@ def quotient_test(mesh: DualNeighbourhood, order: Sequence[Any], matrix: Any, pa
         return QuotientOutcome(spectrum, False, f"{found}: it is not positive, and Reif's test here needs a positive "
                                "subdominant eigenvalue")
     if top == 1 and len(jordan) == 1 and pair is not None:
-        ring = _ring(mesh, order, patch, Sq, Rq, lift, value, pair, 1, max_depth, prec)
+        ring, _ = _ring(mesh, order, patch, Sq, Rq, lift, value, pair, 1, max_depth, prec)
         return QuotientOutcome(spectrum, True, f"{found}: Reif's spectral conditions hold on the quotient", ring,
                                pair.frequencies[0])
     if top == 1:
@@ -358,10 +364,12 @@ def quotient_test(mesh: DualNeighbourhood, order: Sequence[Any], matrix: Any, pa
     if pair is None:
         return QuotientOutcome(spectrum, False, f"{found}: its largest Jordan blocks (size {top}) are not one pair of "
                                "frequencies j, n - j, so no characteristic map is defined; Reif's test does not apply")
-    ring = _ring(mesh, order, patch, Sq, Rq, lift, value, pair, top, max_depth, prec)
-    return QuotientOutcome(spectrum, False, f"{found}: the rings grow as m^{top - 1} ({value})^m on the top of its "
-                           f"longest Jordan chains (frequencies {', '.join(map(str, pair.frequencies))})", ring,
-                           pair.frequencies[0])
+    ring, chain = _ring(mesh, order, patch, Sq, Rq, lift, value, pair, top, max_depth, prec)
+    growth = f"m^{top - 1}" if top > 2 else "m"
+    return QuotientOutcome(spectrum, False, f"{found}: the rings grow as {growth} ({value})^m on the eigenvectors e = "
+                           f"(S - {value}){'' if top == 2 else f'^{top - 1}'} g of its longest Jordan chains (frequencies "
+                           f"{', '.join(map(str, pair.frequencies))})", ring, pair.frequencies[0], chain=chain,
+                           chain_length=top)
 
 
 def _blocks_of(count: JordanCount, size: int) -> int:
@@ -371,14 +379,16 @@ def _blocks_of(count: JordanCount, size: int) -> int:
 
 def _ring(mesh: DualNeighbourhood, order: Sequence[Any], patch: FourDirectionPatch, Sq: flint.fmpq_mat,
           Rq: flint.fmpq_mat, lift: flint.fmpq_mat, value: Fraction, pair: JordanCount, size: int, max_depth: int,
-          prec: int) -> RingCertificate:
-    """The ring of the planar map of ``(S - lambda)^(size-1) g`` for a generalized eigenvector ``g`` of the class that
-    starts a chain of ``size`` (for ``size`` 1: an eigenvector)."""
+          prec: int) -> tuple[RingCertificate, tuple[tuple[Fraction, ...], tuple[Fraction, ...]]]:
+    """The ring of the planar map of ``e = (S - lambda)^(size-1) g`` for a generalized eigenvector ``g`` of the class
+    that starts a chain of ``size`` (for ``size`` 1: an eigenvector, ``e = g``), with ``(g, e)`` on the control points:
+    ``e`` is what ``S^m`` multiplies by ``binomial(m, size - 1)`` (the leading term)."""
     shifted = Sq - _identity(Sq.nrows()) * flint.fmpq(value.numerator, value.denominator)
     phi = _class_projector(Rq, pair.frequency_class)
     lifted = shifted ** (size - 1)
-    tops = (lifted * _matrix([[c] for c in g], 1) for g in null_space(_stack([shifted ** size, phi])))
-    top = next(t for t in tops if any(e != 0 for e in t.entries()))  # g starts a chain of ``size``: its top is not 0
-    points = planar_points([top[i, 0] for i in range(top.nrows())], Rq, pair.frequency_class, order, lift)
+    starts = (_matrix([[c] for c in g], 1) for g in null_space(_stack([shifted ** size, phi])))
+    g, e = next((g, lifted * g) for g in starts if any(x != 0 for x in (lifted * g).entries()))  # g starts a chain of size
+    points = planar_points([e[i, 0] for i in range(e.nrows())], Rq, pair.frequency_class, order, lift)
+    chain = tuple(tuple(_fraction(x) for x in (lift * v).entries()) for v in (g, e))
     with flint.ctx.workprec(prec):
-        return certify_four_direction_ring(mesh, points, patch, max_depth=max_depth)
+        return certify_four_direction_ring(mesh, points, patch, max_depth=max_depth), (chain[0], chain[1])

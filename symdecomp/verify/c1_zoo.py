@@ -18,7 +18,8 @@ The route is decided by the scheme's model (:class:`~symdecomp.schemes.stencils.
   dependent, so an eigenvector of the matrix may be the zero function: where the matrix fails Reif's conditions they
   are redone on the functions the patch makes (:mod:`symdecomp.verify.c1_four_direction_quotient`, exact), and the
   verdict is theirs (Midedge at n = 3: every eigenvector counts, and 1/4 has a Jordan block at frequencies 1, 2,
-  which Reif's test does not cover: ``undecided``, with the ring of the top of the chains as evidence);
+  which Reif's test does not cover; the map of the chains' eigenvectors decides it,
+  :mod:`symdecomp.verify.c1_four_direction_jordan`: C1 for almost every net);
 * any other scheme (sqrt(3)'s rotating steps): ``undecided``, naming what has no test here.
 
 :func:`c1_dual_test` takes what the zoo's engine computes at valence ``n`` (:class:`ZooNeighbourhood`: the explicit
@@ -46,6 +47,7 @@ from symdecomp.schemes.topology import topology_of
 from symdecomp.validate import check_bits, check_depth
 from symdecomp.verify.c1_dual import DualNeighbourhood, RingCertificate, certify_ring
 from symdecomp.verify.c1_four_direction import FOUR_DIRECTION_METHOD, certify_four_direction_ring
+from symdecomp.verify.c1_four_direction_jordan import JORDAN_CHAIN_METHOD, jordan_chain_verdict
 from symdecomp.verify.c1_four_direction_quotient import quotient_test
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, round_down
 from symdecomp.verify.result import C1Verdict
@@ -259,11 +261,12 @@ def _quotient_result(result: ZooC1Result, neighbourhood: ZooNeighbourhood, patch
         lam = block_root(flint.acb(flint.fmpq(value.numerator, value.denominator)), found.frequency, 2, result.n)
         verdict, reason = _verdict(ring, lam, None)
         return replace(shown, verdict=verdict, reason=f"{head}; {reason}")
-    evidence = ("its map is regular and winds once" if ring.status == "regular" and ring.winding_number == ring.jacobian_sign
-                else f"its map is not certified regular and injective ({ring.status}, winding {ring.winding_number})")
+    chained = jordan_chain_verdict(found)
+    if chained is not None:
+        return replace(shown, verdict=chained[0], reason=f"{head}; {chained[1]}", method=JORDAN_CHAIN_METHOD)
     return replace(shown, verdict=C1Verdict.UNDECIDED, reason=(
-        f"{head}, and {evidence}; Reif's test needs a subdominant eigenvalue without Jordan blocks (a standard algorithm), "
-        "and the general classification (Peters and Reif, Subdivision Surfaces, 2008, Sect. 5.3) is not implemented: "
+        f"{head}; the map is certified ({ring.status}, winding {ring.winding_number}) but the spectral structure is not one "
+        "this package reads (Reif's test needs no Jordan block; the chain route one pair of longest chains): "
         "not shown C1 or not C1"))
 
 

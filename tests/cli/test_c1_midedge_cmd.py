@@ -23,16 +23,17 @@ terms = [
 """
 
 
-def test_midedge_is_certified_from_4_and_undecided_at_3(capsys):
-    assert main(["c1", "--scheme", "midedge", "--n", "3:6", "--json", "--quiet"]) == 1
+def test_midedge_is_certified_from_4_by_reif_and_at_3_by_the_jordan_chains(capsys):
+    assert main(["c1", "--scheme", "midedge", "--n", "3:6", "--json", "--quiet"]) == 0
     rows = json.loads(capsys.readouterr().out)["rows"]
-    assert [(r["n"], r["verdict"]) for r in rows] == [(3, "undecided"), (4, "c1"), (5, "c1"), (6, "c1")]
+    assert [(r["n"], r["verdict"]) for r in rows] == [(3, "c1"), (4, "c1"), (5, "c1"), (6, "c1")]
     for r in rows[1:]:  # 1/2 + cos(2 pi/n)/2 at frequency 1, a regular ring winding once
         assert abs(r["lambda"] - (1 + math.cos(2 * math.pi / r["n"])) / 2) < 1e-12 and r["frequency"] == 1
         assert r["winding_number"] == r["jacobian_sign"] == 1 and r["jacobian_lower_bound"] > 0
     assert rows[0]["reason"].startswith("the subdominant eigenvalue 0.25 is not a real double eigenvalue")
-    # no eigenvector gives the zero function; the top of 1/4's Jordan chains (frequencies 1, 2) maps regularly, once
+    # no eigenvector gives the zero function; the eigenvectors of 1/4's Jordan chains (frequencies 1, 2) map regularly, once
     assert "so every eigenvector counts" in rows[0]["reason"] and rows[0]["frequency"] == 1
+    assert rows[0]["reason"].endswith("C1 for every net with c_x x c_y != 0 (almost every control net)")
     assert rows[0]["winding_number"] == rows[0]["jacobian_sign"] == 1 and rows[0]["jacobian_lower_bound"] > 0
 
 
@@ -79,3 +80,10 @@ def test_a_mutated_triangle_decides_valence_3(a, verdict, tmp_path, capsys):
         assert abs(row["lambda"] - (0.75 - 0.25 / 2)) < 1e-12 and row["winding_number"] == row["jacobian_sign"] == 1
     else:
         assert "Jordan blocks: 2 of size 1" in row["reason"] and row["reason"].endswith("fail on the functions")
+
+
+def test_the_method_line_names_each_route_with_its_valences(capsys):
+    assert main(["c1", "--scheme", "midedge", "--n", "3:4", "--quiet"]) == 0
+    method = capsys.readouterr().out.splitlines()[1]
+    assert method.startswith("method: the spectrum on the functions of the four-direction patch")
+    assert "winding once (n = 3); Reif's test on the characteristic map's ring" in method and method.endswith("(n = 4)")

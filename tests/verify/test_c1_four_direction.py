@@ -17,6 +17,7 @@ from symdecomp.errors import InvalidMeshError
 from symdecomp.schemes.four_direction import four_direction_patch
 from symdecomp.schemes.stencil_files import load_zoo
 from symdecomp.verify.c1_four_direction import FOUR_DIRECTION_METHOD, certify_four_direction_ring
+from symdecomp.verify.c1_four_direction_jordan import JORDAN_CHAIN_METHOD
 from symdecomp.verify.c1_zoo import NO_METHOD, ZooNeighbourhood, c1_dual_test, c1_zoo, four_direction_route
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.zoo_characteristic import engine_neighbourhood
@@ -126,14 +127,17 @@ def test_the_centre_triangle_s_eigenvalue_decides_whether_the_map_folds(lam, ver
         assert r.reason.startswith("the Jacobian of the characteristic map changes sign (the patch of vertex (")
 
 
-def test_midedge_at_valence_3_is_undecided_with_the_computed_reason():
+def test_midedge_at_valence_3_is_c1_by_the_map_of_the_jordan_chains():
     """Every eigenvector gives a nonzero function, and 1/4 has a Jordan block at frequencies 1, 2
-    (:mod:`tests.verify.test_c1_four_direction_quotient` checks the structure against sympy)."""
+    (:mod:`tests.verify.test_c1_four_direction_quotient` checks the structure against sympy); the map of the chains'
+    eigenvectors is regular and winds once (:mod:`symdecomp.verify.c1_four_direction_jordan`)."""
     r = c1_zoo(load_zoo("midedge"), 3, neighbourhood=engine_neighbourhood)
-    assert r.verdict is C1Verdict.UNDECIDED
+    assert r.verdict is C1Verdict.C1 and r.method == JORDAN_CHAIN_METHOD
     assert r.reason.startswith("the subdominant eigenvalue 0.25 is not a real double eigenvalue of one pair of frequencies")
     assert "so every eigenvector counts" in r.reason and "Jordan blocks: 1 of size 2, 1 of size 1" in r.reason
-    assert r.reason.endswith("is not implemented: not shown C1 or not C1")
+    assert "the rings grow as m (1/4)^m on the eigenvectors e = (S - 1/4) g" in r.reason
+    assert r.reason.endswith("C1 for every net with c_x x c_y != 0 (almost every control net)")
+    assert r.winding_number == r.jacobian_sign and r.jacobian_lower_bound > 0.0065
 
 
 def test_the_route_is_read_from_the_corner_rule():

@@ -150,6 +150,9 @@ nothing else.
                    Schur-Cohn test in t = cos(2 pi k/n), with the map per valence by Zorin's test,
                    ``c1_zorin_every_n``; where lambda_1 depends on n (sqrt(3)), lambda_1 = lambda(t) rational in
                    t = cos(2 pi/n) and every other frequency's roots below it by exact signs, ``zorin_lambda_in_t``;
+                   where it is a constant algebraic number (the largest root of a factor of p_1 with rational
+                   coefficients), the Schur-Cohn steps in Q(lambda_1) by its minimal polynomial, norms and an
+                   isolating ball, ``zorin_lambda_algebraic``;
                    the characteristic map for every n >= N0 by exact signs in t = cos(2 pi/n), ``c1_uniform``; the curvature regime for every
                    valence, ``regime_every_n``, its hyperbolic cause on quads, ``regime_cause``; the part that dominates on fine
                    rings for every valence, ``dominance_every_n``); at a sector between sharp rays (boundary, crease

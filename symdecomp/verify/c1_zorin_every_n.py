@@ -212,21 +212,32 @@ def frequency_polynomials(scheme: StencilScheme) -> FrequencyPolynomials:
 
 
 def _lambda_one(polys: FrequencyPolynomials) -> tuple[sp.Expr | None, EveryNStep]:
-    """``lambda_1``: the root of a factor of ``p_1`` linear in ``x`` largest at ``t_0`` (:func:`t_lower_bound`), either
-    the same for every ``n`` (real, in ``(0, 1)``) or rational in ``t`` (:mod:`symdecomp.verify.zorin_lambda_in_t`);
-    ``None`` with the reason."""
+    """``lambda_1``: the root of ``p_1`` of largest modulus at ``t_0`` (:func:`t_lower_bound`) among the roots of its
+    factors linear in ``x`` (the same for every ``n``, or rational in ``t``:
+    :mod:`symdecomp.verify.zorin_lambda_in_t`) and of its factors with rational coefficients (a constant algebraic
+    number: :mod:`symdecomp.verify.zorin_lambda_algebraic`); ``None`` with the reason. The choice is a candidate: the
+    other steps prove every other root below it, or fail."""
+    from symdecomp.verify.zorin_lambda_algebraic import algebraic_lambda_one, constant_roots, larger_in_t
     from symdecomp.verify.zorin_lambda_in_t import linear_roots, varying_lambda_one
 
     p1 = polys.at[1]
     t0 = t_lower_bound(polys.start)
-    roots = linear_roots(p1)
+    roots = linear_roots(p1) + constant_roots(p1)
     lam = max(roots, key=lambda r: (abs(complex(r.subs(T, t0))), abs(complex(r.subs(T, 1)))), default=None)
     where = (polys.start, None)
+    beyond = larger_in_t(p1, lam if lam is not None else sp.Integer(0), t0)
+    if beyond is not None:
+        return None, EveryNStep(f"lambda_1 from det(x I - B_1) = {sp.factor(p1)}: its largest root is a root of the factor "
+                                f"{sp.factor(beyond)}, of degree {sp.degree(beyond, X)} in x with coefficients depending on "
+                                "t (algebraic over Q(t)): not handled", "open", where, "lambda-one", ((r"p_1(x)", p1),))
     if lam is not None and lam.has(T):
         return lam, varying_lambda_one(p1, lam, t0, polys.start)
-    if lam is None or not lam.is_real or not (0 < lam < 1):
-        why = ("no factor of p_1 is linear in x (no root the same for every n or rational in t)" if lam is None else
-               f"the root {lam} is not real in (0, 1)")
+    if lam is not None and not lam.is_Rational:
+        radius, step = algebraic_lambda_one(p1, lam, polys.start)
+        return (lam if radius is not None else None), step
+    if lam is None or not (0 < lam < 1):
+        why = ("p_1 has no factor linear in x or with rational coefficients" if lam is None else
+               f"the root {lam} is not in (0, 1)")
         return None, EveryNStep(f"lambda_1 from det(x I - B_1) = {sp.factor(p1)}: {why}", "open", where, "lambda-one",
                                 ((r"p_1(x)", p1),))
     return lam, EveryNStep(f"lambda_1 = {lam}: the largest root of det(x I - B_1) = {sp.factor(p1)} that is the same for "
@@ -234,25 +245,32 @@ def _lambda_one(polys: FrequencyPolynomials) -> tuple[sp.Expr | None, EveryNStep
 
 
 def _disc_step(name: str, what: str, poly: sp.Expr, lam: sp.Expr, low: sp.Expr, witness_k: int | None,
-               start: int, reach: int) -> EveryNStep:
-    """Every root of ``poly`` of modulus ``< lam`` on ``[low, 1)`` (Schur-Cohn, Sturm), or the computed witness."""
+               start: int, reach: int, *, divide: bool = False) -> EveryNStep:
+    """Every root of ``poly`` (divided by ``x - lam`` first where ``divide``) of modulus ``< lam`` on ``[low, 1)``
+    (Schur-Cohn, Sturm; in ``Q(lambda_1)`` for an irrational ``lam``), or the computed witness."""
+    from symdecomp.verify.zorin_lambda_algebraic import algebraic_radius, field_deltas, field_positive
+
+    radius = None if lam.is_Rational or lam.has(T) else algebraic_radius(lam)
+    if divide and radius is None:
+        poly = sp.div(sp.Poly(poly, X), sp.Poly(X - lam, X))[0].as_expr()
     if lam.has(T):  # lambda_1(t) > 0 on the range (the lambda-one step): the unit disc of the scaled polynomial
         from symdecomp.verify.zorin_lambda_in_t import scaled_deltas
 
         deltas = scaled_deltas(poly, lam)
     else:
-        deltas = schur_cohn_conditions(sp.Poly(poly, X), lam)
+        deltas = schur_cohn_conditions(sp.Poly(poly, X), lam) if radius is None else field_deltas(poly, radius, divide=divide)
     formulas = tuple((rf"\delta_{{{j}}}(t)", d) for j, d in enumerate(deltas, 1))
     results: list[Decision] = []
     for d in deltas:
-        r = decide_positive(d, low, start=start, frequency=witness_k, reach=reach)
+        r = (decide_positive(d, low, start=start, frequency=witness_k, reach=reach) if radius is None else
+             Decision(*field_positive(d, radius, low, start=start, frequency=witness_k, reach=reach)))
         results.append(r)
         if r.status != "proved":
             break
     notes = "; ".join(r.note for r in results if r.note)
     constant = sp.Poly(poly, X).free_symbols <= {X}
     free = " (no coefficient depends on t)" if constant else ""
-    scale = "lambda_1(t)" if lam.has(T) else lam
+    scale = "lambda_1(t)" if lam.has(T) else lam if radius is None else f"({lam})"
     shown = (f"the {len(deltas)} Schur-Cohn polynomials of p({scale} y) are positive" if deltas else
              "it has no root (degree 0)")
     text = (f"{what}: det(x I - B) = {sp.factor(poly)}{free}; every root below lambda_1 = {lam} in modulus: "
@@ -403,9 +421,8 @@ def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True,
             steps.append(_disc_step("frequency-zero", "k = 0, besides the eigenvalue 1", p0.as_expr(), lam, t0, 0, start,
                                     reach))
         for k in (1, -1):
-            r, rest = sp.div(sp.Poly(polys.at[k], X), sp.Poly(X - lam, X))
-            steps.append(_disc_step("frequency-one", f"k = {k}, besides lambda_1 (simple at this frequency)", r.as_expr(),
-                                    lam, t0, k, start, reach))
+            steps.append(_disc_step("frequency-one", f"k = {k}, besides lambda_1 (simple at this frequency)", polys.at[k],
+                                    lam, t0, k, start, reach, divide=True))
         for k in (k for k in polys.at if abs(k) > 1):
             steps.append(_disc_step("frequency-exceptional", f"k = {k}", polys.at[k], lam, t0, k, start, reach))
         if lam.has(T):

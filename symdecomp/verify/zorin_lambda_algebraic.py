@@ -25,6 +25,7 @@ handled here: where one holds the largest root the ``lambda-one`` step says so a
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import flint
 import sympy as sp
@@ -62,13 +63,18 @@ class AlgebraicRadius:
         """A certified real ball around ``lambda_1`` at ``prec`` bits: FLINT isolates the roots of the minimal
         polynomial (squarefree) in disjoint balls, and ``lambda_1``'s is the one nearest :attr:`near`."""
         with flint.ctx.workprec(prec):
-            pairs: list[tuple[flint.acb, int]] = _fmpq_poly(self.minimal).complex_roots()  # (ball, multiplicity)
-            ball: flint.arb = +min((r for r, _ in pairs), key=lambda r: abs(complex(r.mid()) - self.near)).real
+            ball: flint.arb = +min(_roots(self.minimal), key=lambda r: abs(complex(r.mid()) - self.near)).real
             return ball
 
 
 def _fmpq_poly(poly: sp.Poly) -> flint.fmpq_poly:
     return flint.fmpq_poly([to_fmpq(c) for c in reversed(poly.all_coeffs())])
+
+
+def _roots(poly: sp.Poly) -> list[flint.acb]:
+    """The complex roots of ``poly`` (rational coefficients) in disjoint certified balls at the working precision."""
+    pairs: Any = _fmpq_poly(poly).complex_roots()  # (ball, multiplicity) pairs; the stubs say balls
+    return [ball for ball, _ in pairs]
 
 
 def algebraic_radius(value: sp.Expr) -> AlgebraicRadius:
@@ -191,9 +197,8 @@ def larger_in_t(p1: sp.Expr, lam: sp.Expr, t0: sp.Expr) -> sp.Expr | None:
     for f in higher_factors_in_t(p1):
         for t in (t0, sp.Integer(1)):
             with flint.ctx.workprec(128):
-                roots: list[tuple[flint.acb, int]] = _fmpq_poly(sp.Poly(f.subs(T, t), X)).complex_roots()
                 bound = _value_ball(lam.subs(T, t))
-                if any(abs(r) > abs(bound) for r, _ in roots):
+                if any(abs(r) > abs(bound) for r in _roots(sp.Poly(f.subs(T, t), X))):
                     return f
     return None
 

@@ -162,6 +162,30 @@ def _witness(delta: sp.Expr, radius: AlgebraicRadius, start: int, frequency: int
     return None
 
 
+def _zero_free(delta: sp.Expr, norm: sp.Poly, radius: AlgebraicRadius, low: sp.Expr) -> bool:
+    """``delta(t, lambda_1) != 0`` for every ``t`` in ``[low, 1)``: it vanishes only at roots of its norm; each real
+    root of the norm in the range (isolated in FLINT's balls) is excluded where ``delta``'s Arb value there excludes 0
+    (a root of the norm that belongs to a conjugate of ``lambda_1``), ``t = 1`` where it is one (not in the range)."""
+    core = sp.Poly(sp.quo(norm, sp.gcd(norm, norm.diff(T))), T)  # squarefree: its roots are simple, isolated
+    one_is_root = core.eval(1) == 0
+    for prec in (128, 512, MAX_BITS):
+        with flint.ctx.workprec(prec):
+            lam, pending = flint.acb(radius.ball(prec)), []
+            for r in _roots(core):
+                if not r.imag.contains(0) or r.real > 1 or r.real < flint.arb(to_fmpq(low)):
+                    continue  # not real, or outside the range
+                if one_is_root and r.real.contains(1):
+                    continue  # the root t = 1 itself (the balls are disjoint): outside [low, 1)
+                value = flint.acb(0)
+                for (i, j), c in sp.Poly(delta, T, LAMBDA).terms():
+                    value += flint.acb(to_fmpq(c)) * r**i * lam**j
+                if value.contains(0):
+                    pending.append(r)
+            if not pending:
+                return True
+    return False
+
+
 def field_positive(delta: sp.Expr, radius: AlgebraicRadius, low: sp.Expr, *, start: int, frequency: int | None,
                    reach: int) -> tuple[str, str, int | None]:
     """``(status, note, n)``: ``delta(t, lambda_1) > 0`` for every ``t`` in ``[low, 1)`` is ``proved``, ``failed``
@@ -174,11 +198,10 @@ def field_positive(delta: sp.Expr, radius: AlgebraicRadius, low: sp.Expr, *, sta
                 f"(the first: n = {start}, k = {k})", start)
     if delta.has(T):
         norm = sp.Poly(sp.resultant(radius.minimal.as_expr(), delta, LAMBDA), T)
-        inside = norm.count_roots(low, 1) - (1 if norm.eval(1) == 0 else 0)
         at_low = _constant_sign(_reduce(delta.subs(T, low), radius), radius)
-        if inside == 0 and at_low > 0:
-            return ("proved", f"its norm over Q(lambda_1), {sp.factor(norm.as_expr())}, has no root in [{low}, 1), and "
-                    f"it is positive at t = {low}", None)
+        if at_low > 0 and _zero_free(delta, norm, radius, low):
+            return ("proved", f"its norm over Q(lambda_1), {sp.factor(norm.as_expr())}, has no root in [{low}, 1) where "
+                    f"it vanishes, and it is positive at t = {low}", None)
     elif _constant_sign(delta, radius) > 0:
         return "proved", "", None
     found = _witness(delta, radius, start, frequency, reach)

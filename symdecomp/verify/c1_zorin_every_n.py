@@ -8,10 +8,13 @@ frequencies ``0, +-1, +-2``; :mod:`symdecomp.analysis.zoo_symbols`). With the mi
 ``p_k(x) = det(x I - B_k)`` are polynomials in ``t = cos(2 pi k/n)``, and the conditions are, for every ``n`` from
 the valence ``N0`` the form holds from:
 
-* ``lambda-one``: ``lambda_1`` is the root of a factor of ``p_1`` linear in ``x``, derived from the factors of
-  ``p_1``, never typed: a constant (the same for every ``n``), real and in ``(0, 1)``, or a rational function
+* ``lambda-one``: ``lambda_1`` is the largest root of ``p_1`` among the roots of its factors linear in ``x`` and of
+  its factors with rational coefficients, derived from the factors of ``p_1``, never typed: a rational constant (the
+  same for every ``n``), real and in ``(0, 1)``; a constant algebraic number, for which
+  :mod:`symdecomp.verify.zorin_lambda_algebraic` runs the steps in ``Q(lambda_1)``; or a rational function
   ``lambda(t)`` of ``t = cos(2 pi/n)`` (sqrt(3)), for which :mod:`symdecomp.verify.zorin_lambda_in_t` gives this step
-  and the other frequencies' (below ``lambda(t)`` at ``s = cos(2 pi k/n) < t``, another number than ``t``);
+  and the other frequencies' (below ``lambda(t)`` at ``s = cos(2 pi k/n) < t``, another number than ``t``); a factor
+  of higher degree with coefficients in ``Q(t)`` holding a larger root leaves it ``open``, naming the factor;
 * ``frequency-one``: at ``k = 1`` and ``k = -1``, ``p_k = (x - lambda_1) r_k`` with every root of ``r_k`` of modulus
   ``< lambda_1`` (``lambda_1`` simple there, so double overall), for ``t = cos(2 pi/n)`` in ``[t_0, 1)``;
 * ``frequency-zero``: ``p_0 = (x - 1) r_0`` (the centre's row bordering the block) with every root of ``r_0`` of
@@ -319,7 +322,7 @@ def _spectral_at(scheme: StencilScheme, n: int) -> SpectralResult:
 def _against_per_valence(scheme: StencilScheme, step: EveryNStep, seen: dict[int, SpectralResult]) -> EveryNStep:
     """A failed step of the proof for every ``n`` against the per-valence route at its witness valence.
 
-    A root of modulus ``>= lambda_1`` shows that the proof's ``lambda_1`` (a root of a linear factor of ``p_1``) is not
+    A root of modulus ``>= lambda_1`` shows that the proof's ``lambda_1`` (a root of a factor of ``p_1``) is not
     the dominant eigenvalue there; it does not disprove C1 by itself: another eigenvalue (another root of ``p_1``,
     another frequency) may be the subdominant one of a C1 scheme. The step stays ``failed`` only where C1 is refuted at
     that valence: the per-valence route's spectral conditions fail (a dominant eigenvalue not real, not double, not of

@@ -152,6 +152,9 @@ nothing else.
                    Schur-Cohn test in t = cos(2 pi k/n), with the map per valence by Zorin's test,
                    ``c1_zorin_every_n``; where lambda_1 depends on n (sqrt(3)), lambda_1 = lambda(t) rational in
                    t = cos(2 pi/n) and every other frequency's roots below it by exact signs, ``zorin_lambda_in_t``;
+                   where it is a constant algebraic number (the largest root of a factor of p_1 with rational
+                   coefficients), the Schur-Cohn steps in Q(lambda_1) by its minimal polynomial, norms and an
+                   isolating ball, ``zorin_lambda_algebraic``;
                    the frequency-1 eigenvector on the neighbourhood Zorin's test reads, in closed form for every n
                    (Laurent polynomials in omega, stretched nets in t), ``zorin_eigenvector_every_n``; its stretched
                    net in the limit n -> oo, refined, and that limit map's Jacobian certified, ``zorin_limit_net``;

@@ -8,10 +8,13 @@ frequencies ``0, +-1, +-2``; :mod:`symdecomp.analysis.zoo_symbols`). With the mi
 ``p_k(x) = det(x I - B_k)`` are polynomials in ``t = cos(2 pi k/n)``, and the conditions are, for every ``n`` from
 the valence ``N0`` the form holds from:
 
-* ``lambda-one``: ``lambda_1`` is the root of a factor of ``p_1`` linear in ``x``, derived from the factors of
-  ``p_1``, never typed: a constant (the same for every ``n``), real and in ``(0, 1)``, or a rational function
+* ``lambda-one``: ``lambda_1`` is the largest root of ``p_1`` among the roots of its factors linear in ``x`` and of
+  its factors with rational coefficients, derived from the factors of ``p_1``, never typed: a rational constant (the
+  same for every ``n``), real and in ``(0, 1)``; a constant algebraic number, for which
+  :mod:`symdecomp.verify.zorin_lambda_algebraic` runs the steps in ``Q(lambda_1)``; or a rational function
   ``lambda(t)`` of ``t = cos(2 pi/n)`` (sqrt(3)), for which :mod:`symdecomp.verify.zorin_lambda_in_t` gives this step
-  and the other frequencies' (below ``lambda(t)`` at ``s = cos(2 pi k/n) < t``, another number than ``t``);
+  and the other frequencies' (below ``lambda(t)`` at ``s = cos(2 pi k/n) < t``, another number than ``t``); a factor
+  of higher degree with coefficients in ``Q(t)`` holding a larger root leaves it ``open``, naming the factor;
 * ``frequency-one``: at ``k = 1`` and ``k = -1``, ``p_k = (x - lambda_1) r_k`` with every root of ``r_k`` of modulus
   ``< lambda_1`` (``lambda_1`` simple there, so double overall), for ``t = cos(2 pi/n)`` in ``[t_0, 1)``;
 * ``frequency-zero``: ``p_0 = (x - 1) r_0`` (the centre's row bordering the block) with every root of ``r_0`` of
@@ -214,21 +217,32 @@ def frequency_polynomials(scheme: StencilScheme) -> FrequencyPolynomials:
 
 
 def _lambda_one(polys: FrequencyPolynomials) -> tuple[sp.Expr | None, EveryNStep]:
-    """``lambda_1``: the root of a factor of ``p_1`` linear in ``x`` largest at ``t_0`` (:func:`t_lower_bound`), either
-    the same for every ``n`` (real, in ``(0, 1)``) or rational in ``t`` (:mod:`symdecomp.verify.zorin_lambda_in_t`);
-    ``None`` with the reason."""
+    """``lambda_1``: the root of ``p_1`` of largest modulus at ``t_0`` (:func:`t_lower_bound`) among the roots of its
+    factors linear in ``x`` (the same for every ``n``, or rational in ``t``:
+    :mod:`symdecomp.verify.zorin_lambda_in_t`) and of its factors with rational coefficients (a constant algebraic
+    number: :mod:`symdecomp.verify.zorin_lambda_algebraic`); ``None`` with the reason. The choice is a candidate: the
+    other steps prove every other root below it, or fail."""
+    from symdecomp.verify.zorin_lambda_algebraic import algebraic_lambda_one, constant_roots, larger_in_t
     from symdecomp.verify.zorin_lambda_in_t import linear_roots, varying_lambda_one
 
     p1 = polys.at[1]
     t0 = t_lower_bound(polys.start)
-    roots = linear_roots(p1)
+    roots = linear_roots(p1) + constant_roots(p1)
     lam = max(roots, key=lambda r: (abs(complex(r.subs(T, t0))), abs(complex(r.subs(T, 1)))), default=None)
     where = (polys.start, None)
+    beyond = larger_in_t(p1, lam if lam is not None else sp.Integer(0), t0)
+    if beyond is not None:
+        return None, EveryNStep(f"lambda_1 from det(x I - B_1) = {sp.factor(p1)}: its largest root is a root of the factor "
+                                f"{sp.factor(beyond)}, of degree {sp.degree(beyond, X)} in x with coefficients depending on "
+                                "t (algebraic over Q(t)): not handled", "open", where, "lambda-one", ((r"p_1(x)", p1),))
     if lam is not None and lam.has(T):
         return lam, varying_lambda_one(p1, lam, t0, polys.start)
-    if lam is None or not lam.is_real or not (0 < lam < 1):
-        why = ("no factor of p_1 is linear in x (no root the same for every n or rational in t)" if lam is None else
-               f"the root {lam} is not real in (0, 1)")
+    if lam is not None and not lam.is_Rational:
+        radius, step = algebraic_lambda_one(p1, lam, polys.start)
+        return (lam if radius is not None else None), step
+    if lam is None or not (0 < lam < 1):
+        why = ("p_1 has no factor linear in x or with rational coefficients" if lam is None else
+               f"the root {lam} is not in (0, 1)")
         return None, EveryNStep(f"lambda_1 from det(x I - B_1) = {sp.factor(p1)}: {why}", "open", where, "lambda-one",
                                 ((r"p_1(x)", p1),))
     return lam, EveryNStep(f"lambda_1 = {lam}: the largest root of det(x I - B_1) = {sp.factor(p1)} that is the same for "
@@ -236,25 +250,32 @@ def _lambda_one(polys: FrequencyPolynomials) -> tuple[sp.Expr | None, EveryNStep
 
 
 def _disc_step(name: str, what: str, poly: sp.Expr, lam: sp.Expr, low: sp.Expr, witness_k: int | None,
-               start: int, reach: int) -> EveryNStep:
-    """Every root of ``poly`` of modulus ``< lam`` on ``[low, 1)`` (Schur-Cohn, Sturm), or the computed witness."""
+               start: int, reach: int, *, divide: bool = False) -> EveryNStep:
+    """Every root of ``poly`` (divided by ``x - lam`` first where ``divide``) of modulus ``< lam`` on ``[low, 1)``
+    (Schur-Cohn, Sturm; in ``Q(lambda_1)`` for an irrational ``lam``), or the computed witness."""
+    from symdecomp.verify.zorin_lambda_algebraic import algebraic_radius, field_deltas, field_positive
+
+    radius = None if lam.is_Rational or lam.has(T) else algebraic_radius(lam)
+    if divide and radius is None:
+        poly = sp.div(sp.Poly(poly, X), sp.Poly(X - lam, X))[0].as_expr()
     if lam.has(T):  # lambda_1(t) > 0 on the range (the lambda-one step): the unit disc of the scaled polynomial
         from symdecomp.verify.zorin_lambda_in_t import scaled_deltas
 
         deltas = scaled_deltas(poly, lam)
     else:
-        deltas = schur_cohn_conditions(sp.Poly(poly, X), lam)
+        deltas = schur_cohn_conditions(sp.Poly(poly, X), lam) if radius is None else field_deltas(poly, radius, divide=divide)
     formulas = tuple((rf"\delta_{{{j}}}(t)", d) for j, d in enumerate(deltas, 1))
     results: list[Decision] = []
     for d in deltas:
-        r = decide_positive(d, low, start=start, frequency=witness_k, reach=reach)
+        r = (decide_positive(d, low, start=start, frequency=witness_k, reach=reach) if radius is None else
+             Decision(*field_positive(d, radius, low, start=start, frequency=witness_k, reach=reach)))
         results.append(r)
         if r.status != "proved":
             break
     notes = "; ".join(r.note for r in results if r.note)
     constant = sp.Poly(poly, X).free_symbols <= {X}
     free = " (no coefficient depends on t)" if constant else ""
-    scale = "lambda_1(t)" if lam.has(T) else lam
+    scale = "lambda_1(t)" if lam.has(T) else lam if radius is None else f"({lam})"
     shown = (f"the {len(deltas)} Schur-Cohn polynomials of p({scale} y) are positive" if deltas else
              "it has no root (degree 0)")
     text = (f"{what}: det(x I - B) = {sp.factor(poly)}{free}; every root below lambda_1 = {lam} in modulus: "
@@ -303,7 +324,7 @@ def _spectral_at(scheme: StencilScheme, n: int) -> SpectralResult:
 def _against_per_valence(scheme: StencilScheme, step: EveryNStep, seen: dict[int, SpectralResult]) -> EveryNStep:
     """A failed step of the proof for every ``n`` against the per-valence route at its witness valence.
 
-    A root of modulus ``>= lambda_1`` shows that the proof's ``lambda_1`` (a root of a linear factor of ``p_1``) is not
+    A root of modulus ``>= lambda_1`` shows that the proof's ``lambda_1`` (a root of a factor of ``p_1``) is not
     the dominant eigenvalue there; it does not disprove C1 by itself: another eigenvalue (another root of ``p_1``,
     another frequency) may be the subdominant one of a C1 scheme. The step stays ``failed`` only where C1 is refuted at
     that valence: the per-valence route's spectral conditions fail (a dominant eigenvalue not real, not double, not of
@@ -417,9 +438,8 @@ def zorin_spectral_every_n(scheme: StencilScheme, *, per_valence: bool = True,
             steps.append(_disc_step("frequency-zero", "k = 0, besides the eigenvalue 1", p0.as_expr(), lam, t0, 0, start,
                                     reach))
         for k in (1, -1):
-            r, rest = sp.div(sp.Poly(polys.at[k], X), sp.Poly(X - lam, X))
-            steps.append(_disc_step("frequency-one", f"k = {k}, besides lambda_1 (simple at this frequency)", r.as_expr(),
-                                    lam, t0, k, start, reach))
+            steps.append(_disc_step("frequency-one", f"k = {k}, besides lambda_1 (simple at this frequency)", polys.at[k],
+                                    lam, t0, k, start, reach, divide=True))
         for k in (k for k in polys.at if abs(k) > 1):
             steps.append(_disc_step("frequency-exceptional", f"k = {k}", polys.at[k], lam, t0, k, start, reach))
         if lam.has(T):

@@ -126,3 +126,28 @@ def zoo_subdominant(valence: int) -> float:
     """The explicit 1-ring matrix's second largest eigenvalue modulus at ``valence`` (numpy), the engine's own matrix."""
     A = np.array(zoo_matrix(load_zoo("sqrt3"), valence).matrix.evalf(30).tolist(), dtype=float)
     return float(sorted(abs(np.linalg.eigvals(A)), reverse=True)[1])
+
+
+def test_a_variant_file_whose_largest_root_of_p1_is_irrational_gets_every_spectral_step_proved(monkeypatch, capsys, tmp_path):
+    """The butterfly with the extraordinary edge rule reading the vertex two rings out along its spoke, given as a file:
+    ``p_1 = (8 x - 1)(16 x^2 - 8 x - 1)/128``, ``lambda_1`` the quadratic's root ``(1 + sqrt 2)/4``, not ``1/8``."""
+    from pathlib import Path
+
+    import symdecomp.schemes as schemes
+
+    text = (Path(schemes.__file__).parent / "zoo" / "modified-butterfly.toml").read_text()
+    rule = 'origin = "irregular"\nterms = [\n  {walk = "", weight = "3/4"},'
+    assert rule in text
+    path = tmp_path / "reaching.toml"
+    path.write_text(text.replace(rule, rule.replace('"3/4"', '"11/16"') + '\n  {walk = "next twin next twin next next", '
+                                 'weight = "1/16"},').replace('"modified-butterfly"', '"reaching"'), encoding="utf-8")
+    _fast(monkeypatch)
+    assert main(["c1", "--every-n", "--scheme", str(path), "--quiet", "--jobs", "1", "--json"]) == 1
+    out = json.loads(capsys.readouterr().out)
+    jsonschema.validate(out, json_schema())
+    steps = {s["name"]: s for s in out["steps"]}
+    assert steps["lambda-one"]["text"].startswith("lambda_1 = 1/4 + sqrt(2)/4: the largest root of det(x I - B_1)")
+    assert "(16*x**2 - 8*x - 1)/16" in steps["lambda-one"]["text"]
+    for name in ("lambda-one", "frequency-zero", "frequency-one", "frequency-exceptional", "other-frequencies"):
+        assert steps[name]["status"] == "proved" and steps[name]["valences"] == [16, None]
+    assert out["status"] == "undecided" and out["summary"].startswith("the spectral conditions hold for every n")

@@ -22,7 +22,7 @@ from symdecomp.algebra.schur_cohn import schur_cohn_conditions
 from symdecomp.analysis.zoo_matrix import zoo_matrix
 from symdecomp.errors import InvalidInputError
 from symdecomp.schemes.stencil_files import load_zoo, stencil_scheme_from_text
-from symdecomp.verify.c1_every_n import T
+from symdecomp.verify.c1_every_n import EveryNStep, T
 from symdecomp.verify.c1_zoo import ZooC1Result
 from symdecomp.verify.c1_zorin_every_n import X, c1_zorin_every_n, frequency_polynomials, zorin_lambda_one, zorin_spectral_every_n
 from symdecomp.verify.result import C1Verdict
@@ -157,30 +157,111 @@ def _reaching() -> object:
                    "reaching")
 
 
+def _tense_reaching(w: sp.Rational) -> object:
+    """:func:`_reaching` with the tension ``w`` (edge weights ``2 w`` and ``-w``): ``p_1`` gains ``x - 2 w`` at every
+    frequency, which holds the largest root of ``p_1`` once ``2 w > (1 + sqrt 2)/4``."""
+    rule = 'origin = "irregular"\nterms = [\n  {walk = "", weight = "3/4"},'
+    text = BUTTERFLY.replace(rule, rule.replace('"3/4"', '"11/16"')
+                             + '\n  {walk = "next twin next twin next next", weight = "1/16"},')
+    text = text.replace('weight = "1/8"', f'weight = "{2 * w}"').replace('weight = "-1/16"', f'weight = "{-w}"')
+    return stencil_scheme_from_text(text.replace('"modified-butterfly"', '"tense-reaching"'))
+
+
 @pytest.mark.slow
-def test_a_root_of_p1_above_the_proofs_lambda_one_leaves_c1_undecided_not_refuted():
+def test_lambda_one_is_the_largest_root_of_p1_where_a_quadratic_factor_holds_it_and_the_spectral_part_is_proved():
     scheme = _reaching()
     polys = frequency_polynomials(scheme)
-    steps = {s.name: s for s in zorin_spectral_every_n(scheme, per_valence=False, polys=polys)}
-    lam = dict(steps["lambda-one"].formulas)[r"\lambda_1"]
+    steps = zorin_spectral_every_n(scheme, per_valence=False, polys=polys)
+    lam = dict(steps[0].formulas)[r"\lambda_1"]
     roots = sp.Poly(polys.at[1], X).real_roots()
-    assert steps["lambda-one"].status == "proved" and lam in roots and max(roots) > lam  # a root of p_1 above lambda_1
-    one = steps["frequency-one"]
+    # lambda_1 is the largest root of p_1, not the linear factor's 1/8: an irrational root of a quadratic factor
+    assert steps[0].name == "lambda-one" and sp.expand(lam - max(roots)) == 0 and not lam.is_Rational
+    assert sp.minimal_polynomial(lam, X) == 16 * X**2 - 8 * X - 1
+    assert all(s.status == "proved" for s in steps), [s.text for s in steps if s.status != "proved"]
+    # each step's roots against lambda_1 at one valence, in Arb: the largest modulus besides lambda_1 is below it
+    with flint.ctx.workprec(4 * DIGITS):
+        p1 = flint.acb_poly([_arb(c) for c in reversed(sp.Poly(polys.at[1], X).all_coeffs())])
+        moduli = sorted((abs(r) for r in p1.roots()), key=lambda b: b.mid())
+        assert moduli[-1].overlaps(_arb(lam)) and moduli[-2] < _arb(lam)
+    certified = stub(C1Verdict.C1, "certified by the stub of this test")
+    result = c1_zorin_every_n(scheme, 4, certify=certified, per_valence=False, polys=polys)
+    assert result.status == "undecided" and result.failure is None
+    assert result.summary.startswith("the spectral conditions hold for every n")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("n", [16, 20])
+def test_the_per_valence_route_finds_the_algebraic_lambda_one_as_the_double_subdominant_eigenvalue(n):
+    """The explicit matrix at ``n`` (exact factors of each block, certified gap): its subdominant eigenvalue is the
+    every-n proof's ``lambda_1 = (1 + sqrt 2)/4``, double, of the frequencies ``1, n - 1``."""
+    from symdecomp.verify.c1_zorin_every_n import _spectral_at
+    from symdecomp.verify.result import C1Verdict
+
+    scheme = _reaching()
+    lam = zorin_lambda_one(scheme)
+    r = _spectral_at(scheme, n)
+    assert r.status is C1Verdict.C1 and r.subdominant.multiplicity == 2 and set(r.subdominant.frequencies) == {1, n - 1}
+    with flint.ctx.workprec(4 * DIGITS):
+        assert flint.acb(r.subdominant.value).overlaps(flint.acb(_arb(lam)))
+        assert abs(flint.acb(r.subdominant.value).mid() - flint.acb(_arb(lam)).mid()) < flint.arb(10) ** -12
+
+
+@pytest.mark.slow
+def test_a_tension_that_moves_the_largest_root_of_p1_to_the_linear_factor_changes_lambda_one_and_refutes():
+    """Tension ``3/10``: ``3/5 < (1 + sqrt 2)/4``, the quadratic factor holds ``lambda_1`` and every step is proved;
+    tension ``8/25``: ``16/25`` is larger, the linear factor holds it, and it is a root at every frequency: refuted."""
+    below, above = _tense_reaching(sp.Rational(3, 10)), _tense_reaching(sp.Rational(8, 25))
+    lam_below, lam_above = zorin_lambda_one(below), zorin_lambda_one(above)
+    assert sp.minimal_polynomial(lam_below, X) == 16 * X**2 - 8 * X - 1 and lam_above == sp.Rational(16, 25)
+    assert all(s.status == "proved" for s in zorin_spectral_every_n(below, per_valence=False))
+    steps = {s.name: s for s in zorin_spectral_every_n(above, per_valence=False)}
+    other = steps["other-frequencies"]
+    assert other.status == "failed" and other.valences == (16, 16) and "at n = 16 the per-valence route refutes C1" in other.text
+    certified = stub(C1Verdict.C1, "certified by the stub of this test")
+    assert c1_zorin_every_n(below, 4, certify=certified, per_valence=False).status == "undecided"
+    assert c1_zorin_every_n(above, 4, certify=certified, per_valence=False).failure == 16
+    # 16/25 is an eigenvalue of the explicit matrix at n = 16 more than twice
+    assert _eigenvalues_near(zoo_matrix(above, 16).matrix, lam_above) >= 3
+
+
+@pytest.mark.slow
+def test_a_root_of_p1_above_a_linear_factors_root_is_no_refutation_where_the_per_valence_route_holds():
+    """The step run with the linear factor's root ``1/8`` as the radius (the old choice) fails at ``n = 16``; the
+    per-valence route there finds the spectral conditions holding, so the step is ``open``, never a refutation."""
+    from symdecomp.verify.c1_uniform import t_lower_bound
+    from symdecomp.verify.c1_zorin_every_n import _against_per_valence, _disc_step
+    from symdecomp.verify.zorin_lambda_in_t import linear_roots
+
+    scheme = _reaching()
+    polys = frequency_polynomials(scheme)
+    (linear,) = linear_roots(polys.at[1])
+    step = _disc_step("frequency-one", "k = 1", polys.at[1], linear, t_lower_bound(16), 1, 16, 2, divide=True)
+    assert linear == sp.Rational(1, 8) and step.status == "failed" and step.valences == (16, 16)
+    one = _against_per_valence(scheme, step, {})
     assert one.status == "open" and one.valences == (16, 16) and "not that C1 fails" in one.text
     # the explicit matrix at n = 16: the largest root of p_1 is a double eigenvalue, and no eigenvalue besides 1 is larger
-    top = max(roots)
+    top = max(sp.Poly(polys.at[1], X).real_roots())
     assert _eigenvalues_near(zoo_matrix(scheme, 16).matrix, top) == 2
     with mpmath.workdps(DIGITS):
         A = mpmath.matrix([[mpmath.mpf(str(sp.N(e, DIGITS + 10))) for e in row] for row in zoo_matrix(scheme, 16).matrix.tolist()])
         moduli = sorted((abs(z) for z in mpmath.eig(A, left=False, right=False)), reverse=True)
         assert abs(moduli[0] - 1) < mpmath.mpf(10) ** -30
         assert abs(moduli[1] - mpmath.mpf(str(sp.N(top, DIGITS + 10)))) < mpmath.mpf(10) ** -30
+    # the proof run with the old choice (the linear factor's 1/8) leaves the step open at n = 16, never refuted; a
+    # per-valence test that refutes at that witness valence (beyond the certified ones) is what refutes, cited with n
+    import symdecomp.verify.c1_zorin_every_n as every_n
+
+    def linear_choice(polys_):
+        return linear, EveryNStep(f"lambda_1 = {linear}", "proved", (16, None), "lambda-one", ())
+
     certified = stub(C1Verdict.C1, "certified by the stub of this test")
-    result = c1_zorin_every_n(scheme, 4, certify=certified, per_valence=False, polys=polys)
-    assert result.status == "undecided" and result.failure is None
-    # a per-valence test that refutes at the witness valence (beyond the certified ones) is what refutes, cited with n
     refuting = stub(C1Verdict.NOT_C1, "refuted by the stub of this test")
-    cited = c1_zorin_every_n(scheme, 4, certify=lambda n: refuting(n) if n == 16 else certified(n), per_valence=False, polys=polys)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(every_n, "_lambda_one", linear_choice)
+        result = c1_zorin_every_n(scheme, 4, certify=certified, per_valence=False, polys=polys)
+        assert result.status == "undecided" and result.failure is None
+        cited = c1_zorin_every_n(scheme, 4, certify=lambda n: refuting(n) if n == 16 else certified(n), per_valence=False,
+                                 polys=polys)
     assert cited.status == "refuted" and cited.failure == 16 and "refuted by the stub of this test" in cited.summary
 
 

@@ -150,7 +150,8 @@ nothing else.
                    weights' symbol, ``c1_dual_every_n``, its ring of biquadratic patches for every n >= N0 by exact signs in t,
                    ``c1_dual_uniform``; a primal one's (the modified butterfly) from its structural blocks, the
                    Schur-Cohn test in t = cos(2 pi k/n), with the map per valence by Zorin's test,
-                   ``c1_zorin_every_n``; where lambda_1 depends on n (sqrt(3)), lambda_1 = lambda(t) rational in
+                   ``c1_zorin_every_n``, each Schur-Cohn polynomial's sign for every valence or the valence that
+                   shows it fails, ``every_n_signs``; where lambda_1 depends on n (sqrt(3)), lambda_1 = lambda(t) rational in
                    t = cos(2 pi/n) and every other frequency's roots below it by exact signs, ``zorin_lambda_in_t``;
                    where it is a constant algebraic number (the largest root of a factor of p_1 with rational
                    coefficients), the Schur-Cohn steps in Q(lambda_1) by its minimal polynomial, norms and an

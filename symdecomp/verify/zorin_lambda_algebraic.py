@@ -35,6 +35,7 @@ from symdecomp.algebra.schur_cohn import schur_cohn_conditions
 from symdecomp.errors import PrecisionError
 from symdecomp.schemes.stencils import N
 from symdecomp.verify.c1_every_n import EveryNStep, T
+from symdecomp.verify.every_n_signs import WITNESS_SEARCH
 
 __all__ = ["LAMBDA", "AlgebraicRadius", "algebraic_radius", "constant_roots", "field_deltas", "field_positive",
            "higher_factors_in_t", "larger_in_t", "algebraic_lambda_one"]
@@ -44,8 +45,6 @@ X = sp.Symbol("x")
 LAMBDA = sp.Symbol("lambda_1", positive=True)
 #: The highest precision (bits) tried before a sign in ``Q(lambda_1)`` is reported as not separated.
 MAX_BITS = 1 << 12
-#: How far the search for a valence where a negative ``delta`` shows goes beyond the first valence of the form.
-WITNESS_SEARCH = 64
 
 
 @dataclass(frozen=True)

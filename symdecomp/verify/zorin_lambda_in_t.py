@@ -20,7 +20,7 @@ factor of ``p_1`` is linear in ``x`` (sqrt(3): ``p_1 = x - (2 + 2 t)/9``), ``lam
 
 A sign not shown in the last step leaves it ``open`` with the reason (the bound ``lambda(t_0)`` is only sufficient); a
 Schur-Cohn polynomial of the exact steps that is negative gives a computed witness
-(:func:`~symdecomp.verify.c1_zorin_every_n.decide_positive`).
+(:func:`~symdecomp.verify.every_n_signs.decide_positive`).
 """
 
 from __future__ import annotations

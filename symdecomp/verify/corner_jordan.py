@@ -48,13 +48,14 @@ from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.mirror_parts import NEAR, SectorMatrices, sector_matrices
 
 __all__ = ["HALF", "JORDAN_FACES", "CornerJordan", "JordanChain", "corner_jordan", "jordan_chain", "kernel", "shifted_rows",
-           "constant", "times", "square", "Rows"]
+           "constant", "times", "square", "Rows", "chain_structure"]
 
 #: Sparse rows ``{i: {j: entry}}`` of a matrix over the field.
 Rows = dict[int, dict[int, FieldElement]]
 #: The eigenvalue of the boundary curves' tangents at a corner.
 HALF = Fraction(1, 2)
-#: The most faces whose Jordan structure the C1 test computes (the exact kernels cost about ``k^3``: 2 s at 8 faces).
+#: The most faces whose Jordan structure the C1 test computes on the whole matrix (the exact kernels cost about ``k^3``: 2 s
+#: at 8 faces); past it, from the sector's blocks (:mod:`.corner_jordan_blocks`).
 JORDAN_FACES = 12
 
 
@@ -192,7 +193,12 @@ def jordan_chain(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> Jordan
 def corner_jordan(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> CornerJordan:
     """The structure of the eigenvalue ``1/2`` of a corner sector of ``k`` faces (module docstring); ``angle``: the
     corner's, for BLZ's ``theta_k = angle/k`` (``None``: ``pi``)."""
-    found = jordan_chain(scheme, k, angle)
+    return chain_structure(jordan_chain(scheme, k, angle))
+
+
+def chain_structure(found: JordanChain) -> CornerJordan:
+    """The structure of ``1/2`` that a computed chain shows (the whole matrix's, or the blocks' of :mod:`.corner_jordan_blocks`)."""
+    k = found.sm.k
     weight = sp.Integer(0) if found.sm.weight is None else found.sm.weight
     field = field_name(FieldMatrix((), found.modulus, weight))
     on_rays = None if found.chain is None else found.on_rays(found.chain[1])

@@ -13,11 +13,16 @@ import pytest
 import sympy as sp
 
 from symdecomp.algebra.number_field import FieldElement
+from symdecomp.analysis.leading_values import leading_values
 from symdecomp.analysis.mirror import with_near_edge
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
-from symdecomp.verify.corner_jordan import constant, jordan_chain
+from symdecomp.schemes.sector import SharpVertex
+from symdecomp.verify.c1_corner_jordan import JORDAN_METHOD, blocks_jordan_spectrum, jordan_spectrum
+from symdecomp.verify.c1_mirror_blocks import _window, c1_mirror_blocks
+from symdecomp.verify.corner_jordan import JORDAN_FACES, constant, jordan_chain
 from symdecomp.verify.corner_jordan_blocks import _rational, block_jordan_chain, sparse_kernel
+from symdecomp.verify.result import C1Verdict
 
 NAMES = ("catmull-clark-blz", "loop-blz")
 
@@ -92,3 +97,27 @@ def test_an_outer_entry_in_the_weight_is_refused():
     mod = flint.fmpq_poly([-2, 0, 1])
     with pytest.raises(NotApplicableError, match="outer block is not rational"):
         _rational(FieldElement(flint.fmpq_poly([0, 1]), mod))
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_c1_past_the_dense_cap_from_the_blocks(name):
+    scheme = load_scheme(name)
+    k = JORDAN_FACES + 4
+    found = c1_mirror_blocks(scheme, SharpVertex.corner(k, scheme.lattice))
+    assert found.verdict is C1Verdict.C1 and found.method == JORDAN_METHOD
+    assert "dim ker(S - I/2)^2 = 3 (exact)" in found.reason and "(blocks)" in found.reason
+    mutated = c1_mirror_blocks(_bent(name), SharpVertex.corner(k, scheme.lattice))
+    assert mutated.verdict is not C1Verdict.C1 or "Jordan" not in mutated.reason
+
+
+def test_the_blocks_spectral_bound_holds_the_whole_matrix_spectrum():
+    # at 12 faces both routes run: the largest modulus after 1 and 1/2, from the whole matrix's certified eigenvalue balls and
+    # from the blocks' leading values and bounds, is the same eigenvalue (a sine block's) to 12 digits, below 1/2
+    scheme, k = load_scheme("catmull-clark-blz"), JORDAN_FACES
+    whole = jordan_spectrum(jordan_chain(scheme, k))
+    lead = leading_values(scheme, SharpVertex.corner(k, scheme.lattice))
+    outer = _window(scheme, scheme.lattice, True).outer  # the outer block's bound, as c1_mirror_blocks reads it
+    bounds = [flint.arb(outer.numerator) / outer.denominator] + ([lead.tail] if lead.tail is not None else [])
+    blocks = blocks_jordan_spectrum(block_jordan_chain(scheme, k), lead.values, bounds)
+    assert whole.status is blocks.status is C1Verdict.C1
+    assert whole.second is not None and blocks.second is not None and abs(whole.second - blocks.second) < 1e-12 and blocks.second < 0.49

@@ -72,7 +72,8 @@ __all__ = ["JORDAN_METHOD", "jordan_sector", "jordan_spectrum", "blocks_jordan_s
 
 #: The method, as reported with each verdict of this route.
 JORDAN_METHOD = ("Jordan block of the subdominant 1/2 at a corner: exact kernels of (S - I/2) and (S - I/2)^2 over the "
-                 "near-edge weight's field, certified eigenvalue balls of the mirror parts; the Jacobian of the map "
+                 "near-edge weight's field (past 12 faces: of the 1-ring block, lifted by rational solves), certified "
+                 "eigenvalue balls of the mirror parts (past 12 faces: the blocks' leading values and bounds); the Jacobian of the map "
                  "(f_e', f_e) of the eigenvector e' and the chain's e = (S - I/2) g in Bernstein-Bezier form (Arb, de "
                  "Casteljau) and the argument swept between the two sharp rays")
 
@@ -153,12 +154,25 @@ def corner_jordan_text(found: JordanChain) -> str:
 
 
 def _ball_vector(found: JordanChain, vector: list[FieldElement]) -> list[flint.arb] | None:
-    """An exact vector over the field as real balls, scaled to 1 at its largest entry (``None``: zero not excluded)."""
-    weight = found.sm.weight
-    root = flint.acb(0) if weight is None else flint.acb(FieldMatrix((), found.modulus, weight).weight_ball(flint.ctx.prec))
-    vec = [element_ball(x, root).real for x in vector]
-    big = max(vec, key=lambda x: abs(x).mid())
-    return None if big.contains(0) else [x / big for x in vec]
+    """An exact vector over the field as real balls at the working precision, scaled to 1 at its largest entry (``None``:
+    zero not excluded). The entries are polynomials of degree up to ``phi(2k)/2 - 1`` in the weight with large rational
+    coefficients, whose evaluation cancels: it is done at up to 16 times the working precision, raised until every entry's
+    radius is below ``2^-(prec - 8)`` relative to the largest (then rounded)."""
+    weight, prec = found.sm.weight, flint.ctx.prec
+    vec: list[flint.arb] = []
+    for scale in (1, 2, 4, 8, 16):
+        with flint.ctx.workprec(scale * prec):
+            root = flint.acb(0) if weight is None else flint.acb(FieldMatrix((), found.modulus, weight).weight_ball(scale * prec))
+            vec = [element_ball(x, root).real for x in vector]
+            big = max(vec, key=lambda x: abs(x).mid())
+            if big.contains(0):
+                continue
+            vec = [x / big for x in vec]
+            if all(x.rad() < flint.arb(2) ** (8 - prec) for x in vec):
+                break
+    else:
+        return None
+    return [+x for x in vec]  # rounded to the working precision
 
 
 def chain_vectors(found: JordanChain) -> tuple[list[flint.arb] | None, list[flint.arb] | None]:

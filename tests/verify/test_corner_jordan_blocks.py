@@ -18,7 +18,7 @@ from symdecomp.analysis.mirror import with_near_edge
 from symdecomp.errors import NotApplicableError
 from symdecomp.schemes.files import load_scheme
 from symdecomp.schemes.sector import SharpVertex
-from symdecomp.verify.c1_corner_jordan import JORDAN_METHOD, blocks_jordan_spectrum, jordan_spectrum
+from symdecomp.verify.c1_corner_jordan import JORDAN_METHOD, blocks_jordan_spectrum, chain_vectors, jordan_spectrum
 from symdecomp.verify.c1_mirror_blocks import _window, c1_mirror_blocks
 from symdecomp.verify.corner_jordan import JORDAN_FACES, constant, jordan_chain
 from symdecomp.verify.corner_jordan_blocks import _rational, block_jordan_chain, sparse_kernel
@@ -121,3 +121,16 @@ def test_the_blocks_spectral_bound_holds_the_whole_matrix_spectrum():
     blocks = blocks_jordan_spectrum(block_jordan_chain(scheme, k), lead.values, bounds)
     assert whole.status is blocks.status is C1Verdict.C1
     assert whole.second is not None and blocks.second is not None and abs(whole.second - blocks.second) < 1e-12 and blocks.second < 0.49
+
+
+def test_the_chain_as_balls_at_64_faces():
+    # the entries are degree-15 polynomials in the weight with large coefficients: at 53 bits their evaluation loses every
+    # digit unless it is raised; the rounded balls agree with a 212-bit evaluation to 12 digits
+    found = block_jordan_chain(load_scheme("catmull-clark-blz"), 64)
+    with flint.ctx.workprec(53):
+        low = chain_vectors(found)
+    with flint.ctx.workprec(212):
+        high = chain_vectors(found)
+    for a, b in zip(low, high):
+        assert a is not None and b is not None
+        assert all(x.rad() < 1e-13 and abs(float(x.mid()) - float(y.mid())) < 1e-12 for x, y in zip(a, b))

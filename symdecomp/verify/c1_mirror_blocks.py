@@ -30,7 +30,8 @@ finds the same multiple root, and is not run. At a corner's ``1/2`` (BLZ's corne
 size 2, :mod:`.corner_jordan`) the block's own test decides (:mod:`.c1_corner_jordan`: the map of the chain's
 eigenvector and the other one): up to :data:`~.corner_jordan.JORDAN_FACES` faces from the whole matrix's kernels, past
 it from the 1-ring block's (:mod:`.corner_jordan_blocks`) with the spectral part from the blocks' leading values and
-bounds; and so does it for the dense test's tie at a corner given the angle ``pi`` (whole matrix, up to that cap).
+bounds, up to :data:`~.corner_jordan_blocks.BLOCK_JORDAN_FACES` faces (past it: undecided, the structure not
+computed); and so does it for the dense test's tie at a corner given the angle ``pi`` (whole matrix, up to that cap).
 Everything else (other multiple subdominant eigenvalues, a map not certified) goes to the dense test up to
 :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
 rules where no closed form is found past the map's faces: the spectral and tangent conditions hold).
@@ -64,7 +65,7 @@ from symdecomp.verify.c1_corner_jordan import blocks_jordan_spectrum, jordan_sec
 from symdecomp.verify.c1_sector_matrix import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
 from symdecomp.verify.corner_jordan import HALF, JORDAN_FACES, chain_structure, corner_jordan, jordan_chain
-from symdecomp.verify.corner_jordan_blocks import block_jordan_chain
+from symdecomp.verify.corner_jordan_blocks import BLOCK_JORDAN_FACES, block_jordan_chain
 from symdecomp.verify.fourier_map import applies, fourier_map
 from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
@@ -217,6 +218,9 @@ def _tie_finding(scheme, vertex: SharpVertex, k: int, spectral: SpectralResult, 
             if max_depth is None:
                 return SectorFinding(spectral.status, f"{reason}; {corner_jordan(scheme, k).reason()}", spectral, lambdas, final=True)
             return jordan_sector(scheme, corner, max_depth)
+        if k > BLOCK_JORDAN_FACES:
+            return SectorFinding(spectral.status, f"{reason}; the Jordan structure of 1/2 is computed for at most "
+                                 f"{BLOCK_JORDAN_FACES} faces", spectral, lambdas, final=True)
         found = block_jordan_chain(scheme, k)
         if max_depth is None:
             return SectorFinding(spectral.status, f"{reason}; {chain_structure(found).reason()}", spectral, lambdas, final=True)

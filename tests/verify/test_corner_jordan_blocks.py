@@ -21,7 +21,7 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.verify.c1_corner_jordan import JORDAN_METHOD, blocks_jordan_spectrum, chain_vectors, jordan_spectrum
 from symdecomp.verify.c1_mirror_blocks import _window, c1_mirror_blocks
 from symdecomp.verify.corner_jordan import JORDAN_FACES, constant, jordan_chain
-from symdecomp.verify.corner_jordan_blocks import _rational, block_jordan_chain, sparse_kernel
+from symdecomp.verify.corner_jordan_blocks import BLOCK_JORDAN_FACES, _rational, block_jordan_chain, sparse_kernel
 from symdecomp.verify.result import C1Verdict
 
 NAMES = ("catmull-clark-blz", "loop-blz")
@@ -134,3 +134,9 @@ def test_the_chain_as_balls_at_64_faces():
     for a, b in zip(low, high):
         assert a is not None and b is not None
         assert all(x.rad() < 1e-13 and abs(float(x.mid()) - float(y.mid())) < 1e-12 for x, y in zip(a, b))
+
+
+def test_past_the_blocks_cap_the_structure_is_not_computed():
+    scheme = load_scheme("catmull-clark-blz")
+    found = c1_mirror_blocks(scheme, SharpVertex.corner(BLOCK_JORDAN_FACES + 1, scheme.lattice))
+    assert found.verdict is C1Verdict.UNDECIDED and f"computed for at most {BLOCK_JORDAN_FACES} faces" in found.reason

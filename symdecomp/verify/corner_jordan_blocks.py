@@ -9,7 +9,10 @@ points hold only the regular and crease rules (``X``, ``U``; checked to be ratio
     ``(U - h) y(v) = y((T - h) v) - X v``    (``y(0) = 0``; the recursion stops because ``(T - h)^2 v = 0``),
 
 so that ``(S - h) (v, y(v)) = ((T - h) v, y((T - h) v))``: the chain ``A g = e`` on the 1-ring lifts to the chain on the
-2-ring. So the dimensions, the chain and the eigenvectors come from the ``(2k + 2)``-point 1-ring block (quads;
+2-ring. Where the three ``1/2``'s sit: all in ``T`` (``U - h`` is invertible), two in its mirror-even part (the crease
+block's even boundary tangent and sine block ``j = 1``, whose mode is even) and one in the odd part (the crease block's
+odd tangent, a plain eigenvector); the chain's ``e`` is mirror-even (the tests check it exactly), so the Jordan block
+joins the even tangent and the sine mode. So the dimensions, the chain and the eigenvectors come from the ``(2k + 2)``-point 1-ring block (quads;
 ``k + 2`` on triangles) and rational solves, not from the whole matrix. The kernels of ``T - h`` and ``(T - h)^2`` are
 computed by sparse elimination along the sector (columns by ray, ``O`` last): the 1-ring block is banded apart from
 ``O``'s column, so the work grows about linearly in ``k`` (times the field's degree), where the dense kernels of

@@ -22,6 +22,7 @@ from symdecomp.verify.c1_corner_jordan import JORDAN_METHOD, blocks_jordan_spect
 from symdecomp.verify.c1_mirror_blocks import _window, c1_mirror_blocks
 from symdecomp.verify.corner_jordan import JORDAN_FACES, constant, jordan_chain
 from symdecomp.verify.corner_jordan_blocks import BLOCK_JORDAN_FACES, _rational, block_jordan_chain, sparse_kernel
+from symdecomp.verify.mirror_parts import mirror_label
 from symdecomp.verify.result import C1Verdict
 
 NAMES = ("catmull-clark-blz", "loop-blz")
@@ -61,6 +62,9 @@ def test_the_block_chain_is_the_whole_matrix_chain(name, k):
     i = next(i for i, x in enumerate(e) if x)
     assert f[i] and not any(e[i] * y - f[i] * x for x, y in zip(e, f))  # e and f are proportional, f != 0
     assert not blocks.on_rays(f) and blocks.partner() is not None
+    index = {lab: i for i, lab in enumerate(blocks.sm.labels)}
+    mirror = [index[mirror_label(lab, k)] for lab in blocks.sm.labels]
+    assert not any(f[i] - f[mirror[i]] for i in range(len(f)))  # e is mirror-even: sine block 1's mode
 
 
 def test_the_block_chain_beyond_the_dense_cap():

@@ -15,8 +15,10 @@ odd tangent, a plain eigenvector); the chain's ``e`` is mirror-even (the tests c
 joins the even tangent and the sine mode. So the dimensions, the chain and the eigenvectors come from the ``(2k + 2)``-point 1-ring block (quads;
 ``k + 2`` on triangles) and rational solves, not from the whole matrix. The kernels of ``T - h`` and ``(T - h)^2`` are
 computed by sparse elimination along the sector (columns by ray, ``O`` last): the 1-ring block is banded apart from
-``O``'s column, so the work grows about linearly in ``k`` (times the field's degree), where the dense kernels of
-:mod:`.corner_jordan` grow like ``k^3``. Every lifted vector is checked on the whole matrix, exactly (``A e = 0``,
+``O``'s column, so the number of field operations grows about linearly in ``k``, where the dense kernels of
+:mod:`.corner_jordan` take ``k^3`` of them; each operation costs more as the field's degree ``phi(2k)/2`` and the
+coefficients grow, so the measured time still grows about like ``k^3`` (:data:`BLOCK_JORDAN_FACES`).
+Every lifted vector is checked on the whole matrix, exactly (``A e = 0``,
 ``A^2 g = 0``, ``A g = e != 0``), so a wrong lift raises instead of answering.
 
 >>> from symdecomp.schemes.files import load_scheme

@@ -11,7 +11,11 @@ for Loop, 31.4 s for ``catmull-clark-blz`` (all 1000 certified C1; 64.3 s in the
 9.6 s (Catmull-Clark), 3.8 s (Loop), 6.8 s (``catmull-clark-blz``: undecided from k = 2 on, its eigenvalue 1/2 is
 triple with a Jordan block of size 2, so Zorin's condition that lambda_2 be strictly dominant fails and the test does
 not apply; the block is now computed for the reason, exact kernels in Q(cos(pi/k)) up to 12 faces: about 2 s at 8
-faces, not measured side by side here); each dense test at
+faces, not measured side by side here; since then the block's own test certifies C1 at every k = 2..64, past 12 faces
+from the 1-ring block's kernels and the blocks' spectrum: ``c1 --corner --k 1:64`` 88.6 s wall, 101 CPU-s, for
+``catmull-clark-blz`` and 23.2 s (43.6 CPU-s) for ``loop-blz``, one run at load 1 to 2; one vertex 3 s at 48 faces,
+5 s at 64, 30 s at 128, growing about like k^3 with the field's degree, so the route stops at 64 faces and
+``--k 1:1000`` is not feasible through it; each dense test at
 k = 1..8 1.1 to 4.5 s. Side by side with the code before, fresh processes at load 2: ``catmull-clark-blz`` boundary
 26.9 s (51.8 CPU seconds) before, 15.6 s (28.8) after; ``loop-blz`` 30.1 CPU seconds before, 24.0 after. Per ``k``
 (``catmull-clark-blz``, CPU) the closed-form route took 45 ms: the wide ring's nets 15, the Jacobian's certificate 20,

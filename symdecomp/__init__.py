@@ -172,7 +172,8 @@ nothing else.
                    edges, its Jacobian and arcs, ``sector_ring``), its injectivity, open or closed, and what a sector
                    test found (``sector_injectivity``); BLZ's subdominant eigenvectors as Fourier modes for every k
                    (``fourier_modes``) and the map from them on a few faces per k (``fourier_map``); the
-                   eigenvalue 1/2 at BLZ's corners, a triple root with a Jordan block (``corner_jordan``), and C1 there
+                   eigenvalue 1/2 at BLZ's corners, a triple root with a Jordan block (``corner_jordan``; its chain
+                   from the 1-ring block and rational lifts for any k, ``corner_jordan_blocks``), and C1 there
                    from the map of the chain's eigenvector and the other one (``c1_corner_jordan``); for
                    the zoo's schemes, Reif's test on a dual neighbourhood whose regular
                    part is the biquadratic B-spline (``c1_dual``) or a piecewise quadratic on the four-direction

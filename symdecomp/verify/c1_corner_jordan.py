@@ -50,10 +50,15 @@ sector's mirror parts meet it, and ``dim ker A^2 = 3`` is exact), every other ei
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Sequence
+from typing import cast
+
 import flint
 
 from symdecomp.algebra.cos_field import FieldMatrix
 from symdecomp.algebra.number_field import FieldElement, element_ball
+from symdecomp.analysis.eigenvalue import Eigenvalue
 from symdecomp.schemes.scheme import Scheme
 from symdecomp.schemes.sector import SharpVertex
 from symdecomp.verify.c1_sector_matrix import vector_map
@@ -63,11 +68,12 @@ from symdecomp.verify.mirror_parts import sector_eigenvalues
 from symdecomp.verify.result import C1Verdict
 from symdecomp.verify.sector_injectivity import SectorFinding
 
-__all__ = ["JORDAN_METHOD", "jordan_sector", "jordan_spectrum", "chain_vectors"]
+__all__ = ["JORDAN_METHOD", "jordan_sector", "jordan_spectrum", "blocks_jordan_spectrum", "chain_vectors"]
 
 #: The method, as reported with each verdict of this route.
 JORDAN_METHOD = ("Jordan block of the subdominant 1/2 at a corner: exact kernels of (S - I/2) and (S - I/2)^2 over the "
-                 "near-edge weight's field, certified eigenvalue balls of the mirror parts; the Jacobian of the map "
+                 "near-edge weight's field (past 12 faces: of the 1-ring block, lifted by rational solves), certified "
+                 "eigenvalue balls of the mirror parts (past 12 faces: the blocks' leading values and bounds); the Jacobian of the map "
                  "(f_e', f_e) of the eigenvector e' and the chain's e = (S - I/2) g in Bernstein-Bezier form (Arb, de "
                  "Casteljau) and the argument swept between the two sharp rays")
 
@@ -76,12 +82,9 @@ def jordan_spectrum(found: JordanChain) -> SpectralResult:
     """The spectral part (module docstring): ``C1`` when 1 is simple, ``1/2`` has multiplicity 3 with one block of size 2,
     and every other eigenvalue is certified below ``1/2`` in modulus."""
     k = found.sm.k
-    if (len(found.eigen), len(found.general)) != (2, 3) or found.chain is None:
-        return SpectralResult(k, C1Verdict.UNDECIDED, f"not the Jordan structure this route reads: dim ker(S - I/2) = "
-                              f"{len(found.eigen)}, dim ker(S - I/2)^2 = {len(found.general)}")
-    if found.on_rays(found.chain[1]) or found.partner() is None:  # the half-plane argument needs f_e = 0 on both rays
-        return SpectralResult(k, C1Verdict.UNDECIDED, "the chain's eigenvector e is nonzero on a sharp ray (or no other "
-                              "eigenvector is): not the structure this route reads")
+    wrong = _chain_structure(found)
+    if wrong is not None:
+        return wrong
     values = [v[0] for v in sector_eigenvalues(found.sm)]
     half = flint.acb(HALF.numerator) / HALF.denominator
     one = [i for i, v in enumerate(values) if v.overlaps(flint.acb(1))]
@@ -102,6 +105,47 @@ def jordan_spectrum(found: JordanChain) -> SpectralResult:
                           float(top))
 
 
+def _chain_structure(found: JordanChain) -> SpectralResult | None:
+    """An undecided result where the exact kernels are not the structure this route reads (``None``: they are)."""
+    k = found.sm.k
+    if (len(found.eigen), len(found.general)) != (2, 3) or found.chain is None:
+        return SpectralResult(k, C1Verdict.UNDECIDED, f"not the Jordan structure this route reads: dim ker(S - I/2) = "
+                              f"{len(found.eigen)}, dim ker(S - I/2)^2 = {len(found.general)}")
+    if found.on_rays(found.chain[1]) or found.partner() is None:  # the half-plane argument needs f_e = 0 on both rays
+        return SpectralResult(k, C1Verdict.UNDECIDED, "the chain's eigenvector e is nonzero on a sharp ray (or no other "
+                              "eigenvector is): not the structure this route reads")
+    return None
+
+
+def blocks_jordan_spectrum(found: JordanChain, values: Sequence[Eigenvalue], bounds: Sequence[flint.arb]) -> SpectralResult:
+    """The spectral part from the sector's blocks (no eigenvalue of the whole matrix computed): ``values`` the blocks'
+    leading eigenvalues with their exact multiplicities (:func:`~symdecomp.analysis.leading_values.leading_values`),
+    ``bounds`` exact upper bounds of the modulus of every eigenvalue not among them (the other sine blocks, the 2-ring's
+    outer block). ``C1`` when 1 is one simple value, ``1/2`` one value of multiplicity 3 (with ``dim ker(S - I/2)^2 = 3``
+    exact: one Jordan block of size 2), and every other value and bound is below ``1/2``."""
+    k = found.sm.k
+    wrong = _chain_structure(found)
+    if wrong is not None:
+        return wrong
+    half = flint.acb(HALF.numerator) / HALF.denominator
+    balls = {id(v): cast(flint.acb, v.ball) for v in values}  # the leading values are balls (acb)
+    one = [v for v in values if balls[id(v)].overlaps(flint.acb(1))]
+    if len(one) != 1 or one[0].multiplicity != 1:
+        return SpectralResult(k, C1Verdict.UNDECIDED, "1 is not shown to be a simple eigenvalue", one_simple=False)
+    at_half = [v for v in values if balls[id(v)].overlaps(half)]
+    if len(at_half) != 1 or at_half[0].multiplicity != 3:
+        return SpectralResult(k, C1Verdict.UNDECIDED, "1/2 is not one value of the blocks with multiplicity 3")
+    rest = [abs(balls[id(v)]).upper() for v in values if v is not one[0] and v is not at_half[0]] + [b.upper() for b in bounds]
+    top = functools.reduce(lambda a, b: a if a > b else b, rest, flint.arb(0))
+    if not top < flint.arb(half.real):
+        return SpectralResult(k, C1Verdict.UNDECIDED, f"an eigenvalue other than 1 and 1/2 is not shown below 1/2 in modulus "
+                              f"(up to {ball_text(top)}, blocks)")
+    gap = float_down(half.real - top)
+    return SpectralResult(k, C1Verdict.C1, f"{corner_jordan_text(found)}; 1 simple, every other |lambda| <= "
+                          f"{ball_text(top)} (blocks), gap >= {round_down(gap)}", block_root(half, 0, 3, defective=True), gap,
+                          float(top))
+
+
 def corner_jordan_text(found: JordanChain) -> str:
     """The structure of ``1/2`` in a few words."""
     return (f"lambda = 1/2 is a triple root with dim ker(S - I/2) = {len(found.eigen)}, dim ker(S - I/2)^2 = "
@@ -110,12 +154,25 @@ def corner_jordan_text(found: JordanChain) -> str:
 
 
 def _ball_vector(found: JordanChain, vector: list[FieldElement]) -> list[flint.arb] | None:
-    """An exact vector over the field as real balls, scaled to 1 at its largest entry (``None``: zero not excluded)."""
-    weight = found.sm.weight
-    root = flint.acb(0) if weight is None else flint.acb(FieldMatrix((), found.modulus, weight).weight_ball(flint.ctx.prec))
-    vec = [element_ball(x, root).real for x in vector]
-    big = max(vec, key=lambda x: abs(x).mid())
-    return None if big.contains(0) else [x / big for x in vec]
+    """An exact vector over the field as real balls at the working precision, scaled to 1 at its largest entry (``None``:
+    zero not excluded). The entries are polynomials of degree up to ``phi(2k)/2 - 1`` in the weight with large rational
+    coefficients, whose evaluation cancels: it is done at up to 16 times the working precision, raised until every entry's
+    radius is below ``2^-(prec - 8)`` relative to the largest (then rounded)."""
+    weight, prec = found.sm.weight, flint.ctx.prec
+    vec: list[flint.arb] = []
+    for scale in (1, 2, 4, 8, 16):
+        with flint.ctx.workprec(scale * prec):
+            root = flint.acb(0) if weight is None else flint.acb(FieldMatrix((), found.modulus, weight).weight_ball(scale * prec))
+            vec = [element_ball(x, root).real for x in vector]
+            big = max(vec, key=lambda x: abs(x).mid())
+            if big.contains(0):
+                continue
+            vec = [x / big for x in vec]
+            if all(x.rad() < flint.arb(2) ** (8 - prec) for x in vec):
+                break
+    else:
+        return None
+    return [+x for x in vec]  # rounded to the working precision
 
 
 def chain_vectors(found: JordanChain) -> tuple[list[flint.arb] | None, list[flint.arb] | None]:
@@ -126,11 +183,13 @@ def chain_vectors(found: JordanChain) -> tuple[list[flint.arb] | None, list[flin
     return _ball_vector(found, partner), _ball_vector(found, found.chain[1])
 
 
-def jordan_sector(scheme: Scheme, vertex: SharpVertex, max_depth: int = 6, found: JordanChain | None = None) -> SectorFinding:
+def jordan_sector(scheme: Scheme, vertex: SharpVertex, max_depth: int = 6, found: JordanChain | None = None,
+                  spectral: SpectralResult | None = None) -> SectorFinding:
     """The verdict at a corner ``vertex`` whose ``1/2`` has a Jordan block (module docstring), as a final finding;
-    ``found``: the vertex's :func:`~.corner_jordan.jordan_chain`, if computed already."""
+    ``found``: the vertex's :func:`~.corner_jordan.jordan_chain` (or :func:`~.corner_jordan_blocks.block_jordan_chain`), if
+    computed already; ``spectral``: its spectral part, if computed already (:func:`blocks_jordan_spectrum`)."""
     found = jordan_chain(scheme, vertex.faces, vertex.angle) if found is None else found
-    spectral = jordan_spectrum(found)
+    spectral = jordan_spectrum(found) if spectral is None else spectral
     if spectral.status is not C1Verdict.C1:
         return SectorFinding(C1Verdict.UNDECIDED, spectral.reason, spectral, final=True, method=JORDAN_METHOD)
     half = flint.arb(HALF.numerator) / HALF.denominator

@@ -27,9 +27,11 @@ route does not decide) from the eigenvectors in the mirror parts the blocks name
 characteristic polynomial, the sector's matrix up to :data:`~symdecomp.schemes.sector.MAX_DENSE_FACES` faces). An exact
 tie ``lambda_2 = lambda_3`` (one value of the blocks, its multiplicity exact; BLZ's corners) is final: the dense test
 finds the same multiple root, and is not run. At a corner's ``1/2`` (BLZ's corners: two eigenvectors and a block of
-size 2, :mod:`.corner_jordan`) the block's own test decides, up to :data:`~.corner_jordan.JORDAN_FACES` faces
-(:mod:`.c1_corner_jordan`: the map of the chain's eigenvector and the other one), and so does it for the dense test's
-tie at a corner given the angle ``pi``.
+size 2, :mod:`.corner_jordan`) the block's own test decides (:mod:`.c1_corner_jordan`: the map of the chain's
+eigenvector and the other one): up to :data:`~.corner_jordan.JORDAN_FACES` faces from the whole matrix's kernels, past
+it from the 1-ring block's (:mod:`.corner_jordan_blocks`) with the spectral part from the blocks' leading values and
+bounds, up to :data:`~.corner_jordan_blocks.BLOCK_JORDAN_FACES` faces (past it: undecided, the structure not
+computed); and so does it for the dense test's tie at a corner given the angle ``pi`` (whole matrix, up to that cap).
 Everything else (other multiple subdominant eigenvalues, a map not certified) goes to the dense test up to
 :data:`MAP_FACES` faces, and past it the verdict is *undecided* with the blocks' finding as its reason (for BLZ's
 rules where no closed form is found past the map's faces: the spectral and tangent conditions hold).
@@ -59,10 +61,11 @@ from symdecomp.schemes.scheme import check_scheme
 from symdecomp.schemes.sector import MAX_DENSE_FACES, SharpVertex
 from symdecomp.validate import check_depth
 from symdecomp.verify.boundary_tangent import curve_eigenvalues, tangent_condition
-from symdecomp.verify.c1_corner_jordan import jordan_sector
+from symdecomp.verify.c1_corner_jordan import blocks_jordan_spectrum, jordan_sector
 from symdecomp.verify.c1_sector_matrix import SharpC1Result, _describe, c1_sharp_test, deciding_sector, sector_map
 from symdecomp.verify.c1_spectrum import SpectralResult, ball_text, block_root, float_down, round_down
-from symdecomp.verify.corner_jordan import HALF, JORDAN_FACES, corner_jordan, jordan_chain
+from symdecomp.verify.corner_jordan import HALF, JORDAN_FACES, chain_structure, corner_jordan, jordan_chain
+from symdecomp.verify.corner_jordan_blocks import BLOCK_JORDAN_FACES, block_jordan_chain
 from symdecomp.verify.fourier_map import applies, fourier_map
 from symdecomp.verify.mirror_parts import block_parts, sector_matrices, sector_parts
 from symdecomp.verify.result import C1Verdict
@@ -201,18 +204,28 @@ def _spectral(k: int, lead, outer: Fraction, crease: sp.Matrix) -> tuple[Spectra
                           block_root(top[0].ball, 0, 1), gap, float(third)), picks
 
 
-def _tie_finding(scheme, vertex: SharpVertex, k: int, spectral: SpectralResult, picks: list, max_depth: int | None) -> SectorFinding:
-    """An exact tie (final): at a corner's ``1/2`` (BLZ's corners) up to :data:`~.corner_jordan.JORDAN_FACES` faces, the
-    Jordan block's own verdict (:mod:`.c1_corner_jordan`; with ``max_depth=None``, its structure in the reason only)."""
+def _tie_finding(scheme, vertex: SharpVertex, k: int, spectral: SpectralResult, picks: list, max_depth: int | None,
+                 lead, outer: Fraction) -> SectorFinding:
+    """An exact tie (final): at a corner's ``1/2`` (BLZ's corners) the Jordan block's own verdict (:mod:`.c1_corner_jordan`;
+    with ``max_depth=None``, its structure in the reason only): up to :data:`~.corner_jordan.JORDAN_FACES` faces from the
+    whole matrix, past it from the blocks (the chain from the 1-ring block, :mod:`.corner_jordan_blocks`, and the spectral
+    part from ``lead``, the blocks' leading values, and ``outer``, the outer block's bound)."""
     lambdas = tuple(float(p[0].real.mid()) for p in picks) or None
     reason = spectral.reason
     if vertex.corner and len(picks) >= 2 and picks[1][0].contains(flint.acb(HALF.numerator) / HALF.denominator):
-        if k > JORDAN_FACES:
-            reason = f"{reason}; the Jordan structure of 1/2 is computed for at most {JORDAN_FACES} faces"
-        elif max_depth is None:
-            reason = f"{reason}; {corner_jordan(scheme, k).reason()}"
-        else:
-            return jordan_sector(scheme, SharpVertex.corner(k, vertex.lattice), max_depth)
+        corner = SharpVertex.corner(k, vertex.lattice)
+        if k <= JORDAN_FACES:
+            if max_depth is None:
+                return SectorFinding(spectral.status, f"{reason}; {corner_jordan(scheme, k).reason()}", spectral, lambdas, final=True)
+            return jordan_sector(scheme, corner, max_depth)
+        if k > BLOCK_JORDAN_FACES:
+            return SectorFinding(spectral.status, f"{reason}; the Jordan structure of 1/2 is computed for at most "
+                                 f"{BLOCK_JORDAN_FACES} faces", spectral, lambdas, final=True)
+        found = block_jordan_chain(scheme, k)
+        if max_depth is None:
+            return SectorFinding(spectral.status, f"{reason}; {chain_structure(found).reason()}", spectral, lambdas, final=True)
+        bounds = [flint.arb(outer.numerator) / outer.denominator] + ([lead.tail] if lead.tail is not None else [])
+        return jordan_sector(scheme, corner, max_depth, found, blocks_jordan_spectrum(found, lead.values, bounds))
     return SectorFinding(spectral.status, reason, spectral, lambdas, final=True)
 
 
@@ -243,7 +256,7 @@ def _sector(scheme, vertex: SharpVertex, sector: int, max_depth: int | None) -> 
         return SectorFinding(C1Verdict.NOT_C1, tangent[1], spectral, lambdas)
     if spectral.status is not C1Verdict.C1:  # an exact tie is final: the dense test finds the same multiple eigenvalue
         if _exact_tie(lead):
-            return _tie_finding(scheme, vertex, k, spectral, picks, max_depth)
+            return _tie_finding(scheme, vertex, k, spectral, picks, max_depth, lead, window.outer)
         return SectorFinding(spectral.status, spectral.reason, spectral, lambdas)
     if tangent:
         return SectorFinding(tangent[0], tangent[1], spectral, lambdas)

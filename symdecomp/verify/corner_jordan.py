@@ -47,13 +47,15 @@ from symdecomp.schemes.sector import SharpVertex
 from symdecomp.schemes.sector_patch import ORIGIN
 from symdecomp.verify.mirror_parts import NEAR, SectorMatrices, sector_matrices
 
-__all__ = ["HALF", "JORDAN_FACES", "CornerJordan", "JordanChain", "corner_jordan", "jordan_chain", "kernel", "shifted_rows"]
+__all__ = ["HALF", "JORDAN_FACES", "CornerJordan", "JordanChain", "corner_jordan", "jordan_chain", "kernel", "shifted_rows",
+           "constant", "times", "square", "Rows", "chain_structure"]
 
 #: Sparse rows ``{i: {j: entry}}`` of a matrix over the field.
 Rows = dict[int, dict[int, FieldElement]]
 #: The eigenvalue of the boundary curves' tangents at a corner.
 HALF = Fraction(1, 2)
-#: The most faces whose Jordan structure the C1 test computes (the exact kernels cost about ``k^3``: 2 s at 8 faces).
+#: The most faces whose Jordan structure the C1 test computes on the whole matrix (the exact kernels cost about ``k^3``: 2 s
+#: at 8 faces); past it, from the sector's blocks (:mod:`.corner_jordan_blocks`).
 JORDAN_FACES = 12
 
 
@@ -97,7 +99,7 @@ def _element(e: object, modulus: flint.fmpq_poly) -> FieldElement:
     return FieldElement(flint.fmpq_poly([to_fmpq(sp.Rational(c)) for c in coeffs]) % modulus, modulus)
 
 
-def _constant(q: Fraction | int, modulus: flint.fmpq_poly) -> FieldElement:
+def constant(q: Fraction | int, modulus: flint.fmpq_poly) -> FieldElement:
     return FieldElement(flint.fmpq_poly([to_fmpq(q)]) % modulus, modulus)
 
 
@@ -108,27 +110,27 @@ def shifted_rows(sm: SectorMatrices, value: Fraction) -> tuple[Rows, flint.fmpq_
     for (i, j), e in sm.matrix.todok().items():
         rows[i][j] = _element(e, mod)
     for i in rows:
-        rows[i][i] = rows[i].get(i, _constant(0, mod)) - _constant(value, mod)
+        rows[i][i] = rows[i].get(i, constant(0, mod)) - constant(value, mod)
     return rows, mod
 
 
-def _times(rows: Rows, vector: list[FieldElement], mod: flint.fmpq_poly) -> list[FieldElement]:
+def times(rows: Rows, vector: list[FieldElement], mod: flint.fmpq_poly) -> list[FieldElement]:
     out = []
     for i in range(len(rows)):
-        total = _constant(0, mod)
+        total = constant(0, mod)
         for j, x in rows[i].items():
             total = total + x * vector[j]
         out.append(total)
     return out
 
 
-def _square(rows: Rows, mod: flint.fmpq_poly) -> Rows:
+def square(rows: Rows, mod: flint.fmpq_poly) -> Rows:
     out: Rows = {}
     for i, row in rows.items():
         acc: dict[int, FieldElement] = {}
         for j, x in row.items():
             for c, y in rows[j].items():
-                acc[c] = acc.get(c, _constant(0, mod)) + x * y
+                acc[c] = acc.get(c, constant(0, mod)) + x * y
         out[i] = {c: v for c, v in acc.items() if v}
     return out
 
@@ -136,7 +138,7 @@ def _square(rows: Rows, mod: flint.fmpq_poly) -> Rows:
 def kernel(rows: Rows, mod: flint.fmpq_poly, weight: sp.Expr) -> list[list[FieldElement]]:
     """A basis over the field of ``{x : A x = 0}`` for sparse rows ``A`` (the left kernel of ``A^T``, exact)."""
     n = len(rows)
-    zero = _constant(0, mod)
+    zero = constant(0, mod)
     transposed = [[zero] * n for _ in range(n)]
     for i, row in rows.items():
         for j, x in row.items():
@@ -179,11 +181,11 @@ def jordan_chain(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> Jordan
     weight = sp.Integer(0) if sm.weight is None else sm.weight
     eigen = kernel(A, mod, weight)
     for x in eigen:  # the identity the count rests on
-        if any(_times(A, x, mod)):
+        if any(times(A, x, mod)):
             raise NotApplicableError("a computed eigenvector for 1/2 does not satisfy (S - I/2) x = 0")
-    general = kernel(_square(A, mod), mod, weight)
-    chain = next(((g, e) for g, e in ((g, _times(A, g, mod)) for g in general) if any(e)), None)
-    if chain is not None and any(_times(A, chain[1], mod)):
+    general = kernel(square(A, mod), mod, weight)
+    chain = next(((g, e) for g, e in ((g, times(A, g, mod)) for g in general) if any(e)), None)
+    if chain is not None and any(times(A, chain[1], mod)):
         raise NotApplicableError("(S - I/2)^2 g = 0 does not hold for a computed generalized eigenvector")
     return JordanChain(sm, mod, eigen, general, chain)
 
@@ -191,7 +193,12 @@ def jordan_chain(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> Jordan
 def corner_jordan(scheme: Scheme, k: int, angle: sp.Expr | None = None) -> CornerJordan:
     """The structure of the eigenvalue ``1/2`` of a corner sector of ``k`` faces (module docstring); ``angle``: the
     corner's, for BLZ's ``theta_k = angle/k`` (``None``: ``pi``)."""
-    found = jordan_chain(scheme, k, angle)
+    return chain_structure(jordan_chain(scheme, k, angle))
+
+
+def chain_structure(found: JordanChain) -> CornerJordan:
+    """The structure of ``1/2`` that a computed chain shows (the whole matrix's, or the blocks' of :mod:`.corner_jordan_blocks`)."""
+    k = found.sm.k
     weight = sp.Integer(0) if found.sm.weight is None else found.sm.weight
     field = field_name(FieldMatrix((), found.modulus, weight))
     on_rays = None if found.chain is None else found.on_rays(found.chain[1])
